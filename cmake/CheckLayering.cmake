@@ -1,0 +1,32 @@
+# Fails when an #include crosses the layers the wrong way (run as a CTest test with -P).
+# Allowed: predicates -> predicates; triangulation -> predicates, triangulation;
+# generators -> predicates, triangulation, generators; io -> triangulation/mesh*.hpp, io.
+# CGAL may appear only in tests/differential and bench/.
+set(allowed_predicates "predicates")
+set(allowed_triangulation "predicates|triangulation")
+set(allowed_generators "predicates|triangulation|generators")
+set(allowed_io "io|triangulation/mesh[23]\\.hpp|predicates/errors\\.hpp")
+set(failures "")
+foreach(layer predicates triangulation generators io)
+  file(GLOB_RECURSE files "${SOURCE_DIR}/${layer}/*.hpp" "${SOURCE_DIR}/${layer}/*.cpp"
+       "${SOURCE_DIR}/${layer}/*.ipp")
+  foreach(f ${files})
+    file(STRINGS "${f}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[\"<]")
+    foreach(line ${lines})
+      if(line MATCHES "#[ \t]*include[ \t]*\"([a-z_]+)/([^\"]+)\"")
+        set(target "${CMAKE_MATCH_1}/${CMAKE_MATCH_2}")
+        if(NOT target MATCHES "^(${allowed_${layer}})")
+          list(APPEND failures "${f}: ${line}")
+        endif()
+      endif()
+      if(line MATCHES "CGAL/")
+        list(APPEND failures "${f}: CGAL outside tests/bench: ${line}")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(failures)
+  list(JOIN failures "\n" text)
+  message(FATAL_ERROR "layering violations:\n${text}")
+endif()
+message(STATUS "layering: ok")

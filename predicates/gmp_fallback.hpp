@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+// Stage D of the predicates: exact signs in GMP integers for inputs outside the range where
+// expansion arithmetic is exact (huge, tiny or subnormal coordinates). Finite inputs only.
+#pragma once
+
+#include "predicates/sign.hpp"
+
+namespace exactmesh::predicates {
+
+Sign orient2d_gmp(const double* a, const double* b, const double* c);
+Sign orient3d_gmp(const double* a, const double* b, const double* c, const double* d);
+Sign incircle_gmp(const double* a, const double* b, const double* c, const double* d);
+Sign insphere_gmp(const double* a, const double* b, const double* c, const double* d,
+                  const double* e);
+
+}  // namespace exactmesh::predicates

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// Optional per-thread predicate counters: calls, and the stage each call ended in.
+// Compiled in only with EXACTMESH_PREDICATE_STATS; otherwise EM_STAT expands to nothing.
+#pragma once
+
+#include <cstdint>
+
+namespace exactmesh::predicates {
+
+/// Counters for one predicate. A call ends in exactly one stage, so
+/// calls == filter + exact_differences + expansion + gmp.
+struct StageCounts {
+    std::uint64_t calls = 0;
+    std::uint64_t filter = 0;             ///< certified by the floating-point filter (stage A)
+    std::uint64_t exact_differences = 0;  ///< differences were exact: short expansion (stage B)
+    std::uint64_t expansion = 0;          ///< full expansion arithmetic (stage C)
+    std::uint64_t gmp = 0;                ///< outside the expansion-safe range: GMP (stage D)
+};
+
+struct PredicateStats {
+    StageCounts orient2d, incircle, orient3d, insphere;
+};
+
+/// True when the library was built with EXACTMESH_PREDICATE_STATS.
+bool stats_enabled() noexcept;
+/// This thread's counters (all zero when stats are disabled).
+PredicateStats& thread_stats() noexcept;
+void reset_thread_stats() noexcept;
+
+}  // namespace exactmesh::predicates
+
+#if defined(EXACTMESH_PREDICATE_STATS)
+#define EM_STAT(pred, stage) (++::exactmesh::predicates::thread_stats().pred.stage)
+#else
+#define EM_STAT(pred, stage) ((void)0)
+#endif
