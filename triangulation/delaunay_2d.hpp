@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// The public face of 2D Delaunay construction: options, counters and the flat result shared by
+// bowyer_watson_2d, green_sibson_2d and tanemura_merriam_2d. All three break ties with the same
+// symbolic perturbation (predicates/sos.hpp, by input index), so for the same points they
+// return the same triangulation, whatever the algorithm or insertion order.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "triangulation/mesh2.hpp"
+
+namespace exactmesh::triangulation {
+
+enum class InsertionOrder { Given, Random, Brio };
+
+struct Delaunay2Options {
+    InsertionOrder order = InsertionOrder::Brio;
+    std::uint64_t seed = 1;
+};
+
+/// Work counters of one construction (predicate stage counts come from predicates/stats.hpp).
+struct Delaunay2Counters {
+    std::uint64_t points = 0;          ///< input points
+    std::uint64_t duplicates = 0;      ///< input points merged into an earlier identical one
+    std::uint64_t orient_calls = 0;    ///< orient2d evaluations made by the algorithm
+    std::uint64_t incircle_calls = 0;  ///< incircle evaluations made by the algorithm
+    std::uint64_t walk_steps = 0;      ///< triangles visited by point location
+    std::uint64_t cavity_triangles = 0;  ///< Bowyer-Watson: triangles removed, summed
+    std::uint64_t flips = 0;           ///< Green-Sibson: Lawson flips
+    std::uint64_t candidates = 0;      ///< Tanemura-Merriam: candidate points examined
+};
+
+/// The Delaunay triangulation in the caller's vertex numbering.
+struct Delaunay2Result {
+    std::vector<VertIdx> triangles;   ///< 3·#T input indices, counter-clockwise
+    std::vector<TriIdx> neighbors;    ///< 3·#T: triangle across edge (v[k], v[k+1]), kNone on the hull
+    std::vector<VertIdx> merged_into; ///< #V: the first input point with the same coordinates
+    Delaunay2Counters counters;
+};
+
+/// Throws InputError (NonFiniteCoordinate) naming the first NaN or infinite coordinate, or when
+/// there are more than kMaxPoints points or an odd number of coordinates.
+void validate_points_2d(std::span<const double> xy);
+
+/// Names accepted by the CLI, benches and tests: "bowyer-watson", "green-sibson", "tanemura-merriam".
+using Delaunay2Function = Delaunay2Result (*)(std::span<const double>, const Delaunay2Options&);
+Delaunay2Function delaunay_2d_algorithm(std::string_view name);
+
+}  // namespace exactmesh::triangulation

@@ -1,0 +1,241 @@
+// SPDX-License-Identifier: MIT
+// Shared machinery of the 2D Delaunay constructions (see delaunay_2d_core.hpp).
+#include "triangulation/delaunay_2d_core.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "predicates/errors.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/sos.hpp"
+#include "triangulation/spatial_sort.hpp"
+
+namespace exactmesh::triangulation {
+
+void validate_points_2d(std::span<const double> xy) {
+    if (xy.size() % 2 != 0) {
+        throw InputError("points: odd number of coordinates (" + std::to_string(xy.size()) + ")");
+    }
+    if (xy.size() / 2 > kMaxPoints) {
+        throw InputError("points: " + std::to_string(xy.size() / 2) + " points exceed the limit of " +
+                         std::to_string(kMaxPoints));
+    }
+    for (std::size_t i = 0; i < xy.size(); ++i) {
+        if (!std::isfinite(xy[i])) {
+            char value[32];
+            std::snprintf(value, sizeof value, "%.17g", xy[i]);
+            const auto v = static_cast<std::uint32_t>(i / 2);
+            throw NonFiniteCoordinate("point " + std::to_string(v) + ": non-finite " +
+                                          (i % 2 == 0 ? "x" : "y") + " coordinate " + value,
+                                      v);
+        }
+    }
+}
+
+namespace detail {
+
+Delaunay2Core::Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options) {
+    validate_points_2d(xy);
+    const std::uint32_t n = static_cast<std::uint32_t>(xy.size() / 2);
+    input_index = insertion_order_2d(xy, options.order, options.seed);
+    mesh.xy.resize(xy.size());
+    for (std::uint32_t v = 0; v < n; ++v) {
+        mesh.xy[2 * v] = xy[2 * input_index[v]];
+        mesh.xy[2 * v + 1] = xy[2 * input_index[v] + 1];
+    }
+    merged_into.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) merged_into[i] = i;
+    counters.points = n;
+    mesh.tv.reserve(6 * static_cast<std::size_t>(n) + 12);
+    mesh.twin.reserve(6 * static_cast<std::size_t>(n) + 12);
+}
+
+Sign Delaunay2Core::orient(VertIdx a, VertIdx b, VertIdx c) {
+    ++counters.orient_calls;
+    return predicates::orient2d(mesh.point(a), mesh.point(b), mesh.point(c));
+}
+
+Sign Delaunay2Core::incircle(VertIdx a, VertIdx b, VertIdx c, VertIdx d) {
+    ++counters.incircle_calls;
+    return predicates::incircle_sos(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d),
+                                    input_index[a], input_index[b], input_index[c],
+                                    input_index[d]);
+}
+
+bool Delaunay2Core::same_point(VertIdx a, VertIdx b) const {
+    const double* p = mesh.point(a);
+    const double* q = mesh.point(b);
+    return p[0] == q[0] && p[1] == q[1];
+}
+
+bool Delaunay2Core::strictly_between(VertIdx a, VertIdx b, VertIdx p) const {
+    const double* pa = mesh.point(a);
+    const double* pb = mesh.point(b);
+    const double* pp = mesh.point(p);
+    // Collinear: compare along x unless the segment is vertical. Exact comparisons.
+    const int k = pa[0] != pb[0] ? 0 : 1;
+    return (pa[k] < pp[k] && pp[k] < pb[k]) || (pb[k] < pp[k] && pp[k] < pa[k]);
+}
+
+bool Delaunay2Core::conflict(TriIdx t, VertIdx p) {
+    const VertIdx* v = &mesh.tv[3 * t];
+    for (int k = 0; k < 3; ++k) {
+        if (v[k] == kInfinite) {
+            const VertIdx a = v[(k + 1) % 3], b = v[(k + 2) % 3];
+            const Sign s = orient(a, b, p);
+            if (s != Sign::Zero) return s == Sign::Positive;
+            return strictly_between(a, b, p);
+        }
+    }
+    return incircle(v[0], v[1], v[2], p) == Sign::Positive;
+}
+
+std::uint32_t Delaunay2Core::random_offset() {
+    rng_state_ ^= rng_state_ << 13;
+    rng_state_ ^= rng_state_ >> 7;
+    rng_state_ ^= rng_state_ << 17;
+    return static_cast<std::uint32_t>(rng_state_ % 3);
+}
+
+bool Delaunay2Core::make_first_triangle(std::vector<bool>& skip) {
+    const std::uint32_t n = mesh.vertex_count();
+    skip.assign(n, false);
+    if (n == 0) return false;
+    const VertIdx v0 = 0;
+    VertIdx v1 = kNone, v2 = kNone;
+    for (VertIdx v = 1; v < n && v1 == kNone; ++v) {
+        if (!same_point(v0, v)) v1 = v;
+    }
+    if (v1 == kNone) return false;
+    for (VertIdx v = v1 + 1; v < n && v2 == kNone; ++v) {
+        if (orient(v0, v1, v) != Sign::Zero) v2 = v;
+    }
+    if (v2 == kNone) return false;
+    skip[v0] = skip[v1] = skip[v2] = true;
+    VertIdx a = v0, b = v1, c = v2;
+    if (orient(a, b, c) == Sign::Negative) std::swap(b, c);
+    const TriIdx f = mesh.new_triangle();
+    mesh.tv[3 * f] = a;
+    mesh.tv[3 * f + 1] = b;
+    mesh.tv[3 * f + 2] = c;
+    // One infinite triangle (q, p, inf) behind each finite edge p -> q; infinite triangle i
+    // lies behind edge i of f, and its edge (p -> inf) meets edge (inf -> p) of the one before.
+    TriIdx inf[3];
+    for (int k = 0; k < 3; ++k) {
+        inf[k] = mesh.new_triangle();
+        const VertIdx p = mesh.tv[3 * f + static_cast<unsigned>(k)];
+        const VertIdx q = mesh.tv[3 * f + static_cast<unsigned>((k + 1) % 3)];
+        mesh.tv[3 * inf[k]] = q;
+        mesh.tv[3 * inf[k] + 1] = p;
+        mesh.tv[3 * inf[k] + 2] = kInfinite;
+        mesh.link(3 * f + static_cast<unsigned>(k), 3 * inf[k]);
+    }
+    for (int k = 0; k < 3; ++k) {
+        // inf[k] = (q, p, inf) with p = f[k]; its edge p -> inf (local 1) meets edge inf -> p
+        // (local 2) of the infinite triangle whose first vertex is p, i.e. inf[k-1].
+        mesh.link(3 * inf[k] + 1, 3 * inf[(k + 2) % 3] + 2);
+    }
+    last_triangle = f;
+    return true;
+}
+
+TriIdx Delaunay2Core::locate(VertIdx p) {
+    TriIdx t = last_triangle;
+    if (mesh.is_dead(t)) {
+        for (t = 0; mesh.is_dead(t); ++t) {
+        }
+    }
+    if (mesh.is_infinite(t)) {
+        // Step to the finite neighbour across the hull edge.
+        for (int k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * t + static_cast<unsigned>(k);
+            if (mesh.tv[e] != kInfinite && mesh.tv[next_edge(e)] != kInfinite) {
+                t = triangle_of(mesh.twin[e]);
+                break;
+            }
+        }
+    }
+    for (;;) {
+        ++counters.walk_steps;
+        if (mesh.is_infinite(t)) break;  // entered across a hull edge that sees p: a conflict
+        const std::uint32_t r = random_offset();
+        bool moved = false;
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * t + (r + k) % 3;
+            if (orient(mesh.origin(e), mesh.destination(e), p) == Sign::Negative) {
+                t = triangle_of(mesh.twin[e]);
+                moved = true;
+                break;
+            }
+        }
+        if (!moved) break;
+    }
+    if (!mesh.is_infinite(t)) {
+        for (int k = 0; k < 3; ++k) {
+            const VertIdx v = mesh.tv[3 * t + static_cast<unsigned>(k)];
+            if (same_point(v, p)) {
+                merged_into[input_index[p]] = input_index[v];
+                ++counters.duplicates;
+                last_triangle = t;
+                return kNone;
+            }
+        }
+    }
+    last_triangle = t;
+    return t;
+}
+
+Delaunay2Result Delaunay2Core::result() const {
+    Delaunay2Result out;
+    out.merged_into = merged_into;
+    out.counters = counters;
+    const std::uint32_t slots = mesh.triangle_slots();
+    std::vector<TriIdx> output_index(slots, kNone);
+    TriIdx count = 0;
+    for (TriIdx t = 0; t < slots; ++t) {
+        if (!mesh.is_dead(t) && !mesh.is_infinite(t)) output_index[t] = count++;
+    }
+    out.triangles.resize(3 * static_cast<std::size_t>(count));
+    out.neighbors.resize(3 * static_cast<std::size_t>(count));
+    for (TriIdx t = 0; t < slots; ++t) {
+        const TriIdx o = output_index[t];
+        if (o == kNone) continue;
+        for (unsigned k = 0; k < 3; ++k) {
+            out.triangles[3 * o + k] = input_index[mesh.tv[3 * t + k]];
+            out.neighbors[3 * o + k] = output_index[triangle_of(mesh.twin[3 * t + k])];
+        }
+    }
+    // A merged point maps to the point kept in the mesh; report instead the smallest caller
+    // index of each group ("the first occurrence"), in merged_into and in the triangles.
+    std::vector<VertIdx> first(merged_into.size());
+    for (VertIdx i = 0; i < first.size(); ++i) first[i] = i;
+    for (VertIdx i = 0; i < first.size(); ++i) {
+        const VertIdx kept = merged_into[i];
+        if (i < first[kept]) first[kept] = i;
+    }
+    for (VertIdx i = 0; i < first.size(); ++i) out.merged_into[i] = first[merged_into[i]];
+    for (VertIdx& v : out.triangles) v = first[v];
+    return out;
+}
+
+Delaunay2Result Delaunay2Core::collinear_result() {
+    std::vector<VertIdx> by_point(mesh.vertex_count());
+    for (VertIdx v = 0; v < by_point.size(); ++v) by_point[v] = v;
+    std::sort(by_point.begin(), by_point.end(), [this](VertIdx a, VertIdx b) {
+        const double* p = mesh.point(a);
+        const double* q = mesh.point(b);
+        return p[0] < q[0] || (p[0] == q[0] && (p[1] < q[1] || (p[1] == q[1] && input_index[a] < input_index[b])));
+    });
+    for (std::size_t i = 1; i < by_point.size(); ++i) {
+        if (same_point(by_point[i - 1], by_point[i])) {
+            merged_into[input_index[by_point[i]]] = merged_into[input_index[by_point[i - 1]]];
+            ++counters.duplicates;
+        }
+    }
+    return result();
+}
+
+}  // namespace detail
+}  // namespace exactmesh::triangulation

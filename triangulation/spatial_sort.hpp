@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+// Insertion orders for incremental constructions: as given, uniformly random, and BRIO
+// (biased randomized insertion order [AmentaChoiRote03]) with each round sorted along a
+// Hilbert curve, so that consecutive points are close and walks stay short.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "triangulation/delaunay_2d.hpp"
+
+namespace exactmesh::triangulation {
+
+/// A permutation of 0..n-1 (n = xy.size()/2): the order in which to insert the points.
+std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
+                                              std::uint64_t seed);
+
+/// Sorts `indices` in place along a Hilbert curve over the bounding box of their points.
+void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indices);
+
+}  // namespace exactmesh::triangulation
