@@ -92,7 +92,7 @@ Delaunay2Result bowyer_watson_2d(std::span<const double> xy, const Delaunay2Opti
         if (t == kNone) continue;  // duplicate, merged
         insert_point(core, cavity, p, t, ++stamp);
     }
-    return core.result();
+    return core.take_result();
 }
 
 }  // namespace exactmesh::triangulation

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "predicates/errors.hpp"
+#include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
 #include "triangulation/spatial_sort.hpp"
@@ -59,6 +60,9 @@ Sign Delaunay2Core::orient(VertIdx a, VertIdx b, VertIdx c) {
 
 Sign Delaunay2Core::incircle(VertIdx a, VertIdx b, VertIdx c, VertIdx d) {
     ++counters.incircle_calls;
+    // The caller's indices are loaded only for the rare exact tie.
+    const Sign s = predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d));
+    if (s != Sign::Zero) return s;
     return predicates::incircle_sos(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d),
                                     input_index[a], input_index[b], input_index[c],
                                     input_index[d]);
@@ -187,36 +191,45 @@ TriIdx Delaunay2Core::locate(VertIdx p) {
     return t;
 }
 
-Delaunay2Result Delaunay2Core::result() const {
+Delaunay2Result Delaunay2Core::take_result() {
     Delaunay2Result out;
-    out.merged_into = merged_into;
     out.counters = counters;
+    // A merged point maps to the point kept in the mesh; report instead the smallest caller
+    // index of each group ("the first occurrence"), in merged_into and in the triangles.
+    std::vector<VertIdx>& first = input_index;  // reused: mesh vertex -> reported caller index
+    if (counters.duplicates > 0) {
+        std::vector<VertIdx> smallest(merged_into.size());
+        for (VertIdx i = 0; i < smallest.size(); ++i) smallest[i] = i;
+        for (VertIdx i = 0; i < smallest.size(); ++i) {
+            const VertIdx kept = merged_into[i];
+            if (i < smallest[kept]) smallest[kept] = i;
+        }
+        for (VertIdx i = 0; i < smallest.size(); ++i) merged_into[i] = smallest[merged_into[i]];
+        for (VertIdx& v : first) v = merged_into[v];
+    }
+    out.merged_into = std::move(merged_into);
+    // Number the finite triangles, then compact tv and twin in place (output index <= slot).
     const std::uint32_t slots = mesh.triangle_slots();
     std::vector<TriIdx> output_index(slots, kNone);
     TriIdx count = 0;
     for (TriIdx t = 0; t < slots; ++t) {
         if (!mesh.is_dead(t) && !mesh.is_infinite(t)) output_index[t] = count++;
     }
-    out.triangles.resize(3 * static_cast<std::size_t>(count));
-    out.neighbors.resize(3 * static_cast<std::size_t>(count));
     for (TriIdx t = 0; t < slots; ++t) {
         const TriIdx o = output_index[t];
         if (o == kNone) continue;
         for (unsigned k = 0; k < 3; ++k) {
-            out.triangles[3 * o + k] = input_index[mesh.tv[3 * t + k]];
-            out.neighbors[3 * o + k] = output_index[triangle_of(mesh.twin[3 * t + k])];
+            const VertIdx v = mesh.tv[3 * t + k];
+            const TriIdx neighbor = output_index[triangle_of(mesh.twin[3 * t + k])];
+            mesh.tv[3 * o + k] = first[v];
+            mesh.twin[3 * o + k] = neighbor;
         }
     }
-    // A merged point maps to the point kept in the mesh; report instead the smallest caller
-    // index of each group ("the first occurrence"), in merged_into and in the triangles.
-    std::vector<VertIdx> first(merged_into.size());
-    for (VertIdx i = 0; i < first.size(); ++i) first[i] = i;
-    for (VertIdx i = 0; i < first.size(); ++i) {
-        const VertIdx kept = merged_into[i];
-        if (i < first[kept]) first[kept] = i;
-    }
-    for (VertIdx i = 0; i < first.size(); ++i) out.merged_into[i] = first[merged_into[i]];
-    for (VertIdx& v : out.triangles) v = first[v];
+    mesh.tv.resize(3 * static_cast<std::size_t>(count));
+    mesh.twin.resize(3 * static_cast<std::size_t>(count));
+    out.triangles = std::move(mesh.tv);
+    out.neighbors = std::move(mesh.twin);
+    mesh = TriMesh2{};
     return out;
 }
 
@@ -234,7 +247,7 @@ Delaunay2Result Delaunay2Core::collinear_result() {
             ++counters.duplicates;
         }
     }
-    return result();
+    return take_result();
 }
 
 }  // namespace detail

@@ -47,8 +47,8 @@ public:
     /// in conflict with p. When p equals a vertex, records the duplicate and returns kNone.
     TriIdx locate(VertIdx p);
 
-    /// The finite triangles in the caller's numbering.
-    Delaunay2Result result() const;
+    /// The finite triangles in the caller's numbering; consumes the mesh.
+    Delaunay2Result take_result();
     /// The result for collinear input (no triangle): only duplicates are detected, by sorting.
     Delaunay2Result collinear_result();
 
