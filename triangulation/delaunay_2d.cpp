@@ -6,13 +6,15 @@
 
 #include "predicates/errors.hpp"
 #include "triangulation/bowyer_watson_2d.hpp"
+#include "triangulation/green_sibson_2d.hpp"
 
 namespace exactmesh::triangulation {
 
 Delaunay2Function delaunay_2d_algorithm(std::string_view name) {
     if (name == "bowyer-watson") return &bowyer_watson_2d;
+    if (name == "green-sibson") return &green_sibson_2d;
     throw InputError("unknown 2D Delaunay algorithm '" + std::string(name) +
-                     "' (known: bowyer-watson)");
+                     "' (known: bowyer-watson, green-sibson)");
 }
 
 }  // namespace exactmesh::triangulation
