@@ -7,14 +7,16 @@
 #include "predicates/errors.hpp"
 #include "triangulation/bowyer_watson_2d.hpp"
 #include "triangulation/green_sibson_2d.hpp"
+#include "triangulation/tanemura_merriam_2d.hpp"
 
 namespace exactmesh::triangulation {
 
 Delaunay2Function delaunay_2d_algorithm(std::string_view name) {
     if (name == "bowyer-watson") return &bowyer_watson_2d;
     if (name == "green-sibson") return &green_sibson_2d;
+    if (name == "tanemura-merriam") return &tanemura_merriam_2d;
     throw InputError("unknown 2D Delaunay algorithm '" + std::string(name) +
-                     "' (known: bowyer-watson, green-sibson)");
+                     "' (known: bowyer-watson, green-sibson, tanemura-merriam)");
 }
 
 }  // namespace exactmesh::triangulation

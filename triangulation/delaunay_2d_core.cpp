@@ -37,10 +37,14 @@ void validate_points_2d(std::span<const double> xy) {
 
 namespace detail {
 
-Delaunay2Core::Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options) {
+Delaunay2Core::Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options)
+    : Delaunay2Core(xy, (validate_points_2d(xy),
+                         insertion_order_2d(xy, options.order, options.seed))) {}
+
+Delaunay2Core::Delaunay2Core(std::span<const double> xy, std::vector<VertIdx> order) {
     validate_points_2d(xy);
     const std::uint32_t n = static_cast<std::uint32_t>(xy.size() / 2);
-    input_index = insertion_order_2d(xy, options.order, options.seed);
+    input_index = std::move(order);
     mesh.xy.resize(xy.size());
     for (std::uint32_t v = 0; v < n; ++v) {
         mesh.xy[2 * v] = xy[2 * input_index[v]];
@@ -220,7 +224,8 @@ Delaunay2Result Delaunay2Core::take_result() {
         if (o == kNone) continue;
         for (unsigned k = 0; k < 3; ++k) {
             const VertIdx v = mesh.tv[3 * t + k];
-            const TriIdx neighbor = output_index[triangle_of(mesh.twin[3 * t + k])];
+            const EdgeIdx across = mesh.twin[3 * t + k];
+            const TriIdx neighbor = across == kNone ? kNone : output_index[triangle_of(across)];
             mesh.tv[3 * o + k] = first[v];
             mesh.twin[3 * o + k] = neighbor;
         }

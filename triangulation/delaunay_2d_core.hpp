@@ -20,6 +20,8 @@ class Delaunay2Core {
 public:
     /// Validates the input, orders it (options.order) and copies it into mesh.xy.
     Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options);
+    /// Same, with mesh vertex v holding the caller's point order[v] (a permutation).
+    Delaunay2Core(std::span<const double> xy, std::vector<VertIdx> order);
 
     TriMesh2 mesh;
     std::vector<VertIdx> input_index;  ///< mesh vertex -> caller's index

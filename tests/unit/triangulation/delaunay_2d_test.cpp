@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+// The three 2D Delaunay constructions: exact validity, identical output (same perturbation),
+// degenerate inputs and bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "predicates/errors.hpp"
+#include "triangulation/bowyer_watson_2d.hpp"
+#include "triangulation/check_2d.hpp"
+#include "triangulation/green_sibson_2d.hpp"
+#include "triangulation/tanemura_merriam_2d.hpp"
+
+namespace em = exactmesh;
+namespace tri = exactmesh::triangulation;
+
+namespace {
+
+using Triangles = std::set<std::array<tri::VertIdx, 3>>;
+
+/// Triangles rotated to start at their smallest vertex: order-free comparison.
+Triangles canonical(const tri::Delaunay2Result& r) {
+    Triangles s;
+    for (std::size_t t = 0; t < r.triangles.size(); t += 3) {
+        std::array<tri::VertIdx, 3> a{r.triangles[t], r.triangles[t + 1], r.triangles[t + 2]};
+        std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
+        s.insert(a);
+    }
+    return s;
+}
+
+struct Named {
+    const char* name;
+    tri::Delaunay2Function build;
+};
+const Named kAlgorithms[] = {{"bowyer-watson", &tri::bowyer_watson_2d},
+                             {"green-sibson", &tri::green_sibson_2d},
+                             {"tanemura-merriam", &tri::tanemura_merriam_2d}};
+const tri::InsertionOrder kOrders[] = {tri::InsertionOrder::Given, tri::InsertionOrder::Random,
+                                       tri::InsertionOrder::Brio};
+
+bool has_duplicates(const std::vector<double>& xy) {
+    std::set<std::pair<double, double>> seen;
+    for (std::size_t i = 0; i < xy.size(); i += 2) {
+        if (!seen.insert({xy[i], xy[i + 1]}).second) return true;
+    }
+    return false;
+}
+
+/// Runs every algorithm and order on xy; all outputs must pass the exact Delaunay check and
+/// have the same triangle count; without duplicates they must be the same triangles.
+void expect_all_agree(const std::vector<double>& xy, const std::string& label) {
+    const bool duplicates = has_duplicates(xy);
+    const tri::Delaunay2Result reference = tri::bowyer_watson_2d(xy, {tri::InsertionOrder::Given, 1});
+    const Triangles expected = canonical(reference);
+    for (const Named& algorithm : kAlgorithms) {
+        for (const tri::InsertionOrder order : kOrders) {
+            const tri::Delaunay2Result r = algorithm.build(xy, {order, 7});
+            const tri::CheckReport report = tri::check_delaunay_2d(xy, r.triangles);
+            ASSERT_TRUE(report.ok) << label << " " << algorithm.name << ": " << report.problem;
+            ASSERT_EQ(r.triangles.size(), reference.triangles.size()) << label << " " << algorithm.name;
+            ASSERT_EQ(r.merged_into, reference.merged_into) << label << " " << algorithm.name;
+            if (!duplicates) {
+                ASSERT_EQ(canonical(r), expected) << label << " " << algorithm.name;
+            }
+            // Neighbours are mutual and share the edge.
+            for (std::size_t t = 0; t < r.triangles.size() / 3; ++t) {
+                for (unsigned k = 0; k < 3; ++k) {
+                    const tri::TriIdx u = r.neighbors[3 * t + k];
+                    if (u == tri::kNone) continue;
+                    const tri::VertIdx a = r.triangles[3 * t + k], b = r.triangles[3 * t + (k + 1) % 3];
+                    bool found = false;
+                    for (unsigned j = 0; j < 3; ++j) {
+                        found = found || (r.triangles[3 * u + j] == b &&
+                                          r.triangles[3 * u + (j + 1) % 3] == a &&
+                                          r.neighbors[3 * u + j] == t);
+                    }
+                    ASSERT_TRUE(found) << label << " " << algorithm.name << ": triangle " << t;
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+
+TEST(Triangulation_Delaunay2, AllAlgorithmsAgreeOnRandomPoints) {
+    std::mt19937_64 rng(2026);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int trial = 0; trial < 20; ++trial) {
+        std::vector<double> xy;
+        const int n = 3 + trial * 50;
+        for (int i = 0; i < 2 * n; ++i) xy.push_back(u(rng));
+        expect_all_agree(xy, "uniform trial " + std::to_string(trial));
+    }
+}
+
+TEST(Triangulation_Delaunay2, AllAlgorithmsAgreeOnDegenerateFamilies) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int trial = 0; trial < 30; ++trial) {
+        const int n = 3 + trial * 5;
+        std::vector<double> grid, circle, lines;
+        for (int i = 0; i < n; ++i) {  // small integer grid: cocircular quadruples, duplicates
+            grid.push_back(std::floor(u(rng) * 5));
+            grid.push_back(std::floor(u(rng) * 5));
+        }
+        // Exactly cocircular: the 12 lattice points of radius 5, and duplicates of them.
+        const int px[12] = {5, -5, 3, -3, 4, -4, 0, 0, 3, -3, 4, -4};
+        const int py[12] = {0, 0, 4, 4, 3, 3, 5, -5, -4, -4, -3, -3};
+        for (int i = 0; i < n; ++i) {
+            const int k = static_cast<int>(u(rng) * 12);
+            circle.push_back(px[k]);
+            circle.push_back(py[k]);
+        }
+        for (int i = 0; i < n; ++i) {  // points on two lines, many collinear
+            const double t = std::floor(u(rng) * 7);
+            lines.push_back(t);
+            lines.push_back(u(rng) < 0.5 ? t : 2.0);
+        }
+        expect_all_agree(grid, "grid trial " + std::to_string(trial));
+        expect_all_agree(circle, "circle trial " + std::to_string(trial));
+        expect_all_agree(lines, "lines trial " + std::to_string(trial));
+    }
+}
+
+TEST(Triangulation_Delaunay2, CocircularGridIsTheSameForEveryOrder) {
+    std::vector<double> xy;
+    for (int i = 0; i < 25; ++i) {
+        for (int j = 0; j < 25; ++j) {
+            xy.push_back(i);
+            xy.push_back(j);
+        }
+    }
+    expect_all_agree(xy, "25x25 grid");
+    const tri::Delaunay2Result r = tri::green_sibson_2d(xy);
+    EXPECT_EQ(r.triangles.size() / 3, 2u * 625 - 96 - 2);  // 2n - h - 2, h = 96 hull points
+}
+
+TEST(Triangulation_Delaunay2, NearCollinearByUlpsIsExact) {
+    std::vector<double> xy = {0.0, 0.0, 24.0, 24.0};
+    for (int i = 0; i < 16; ++i) {
+        for (int j = 0; j < 16; ++j) {
+            xy.push_back(0.5 + i * std::ldexp(1.0, -53));
+            xy.push_back(0.5 + j * std::ldexp(1.0, -53));
+        }
+    }
+    xy.push_back(12.0);
+    xy.push_back(12.0);
+    expect_all_agree(xy, "near-collinear ulp grid");
+}
+
+TEST(Triangulation_Delaunay2, CollinearPointsGiveNoTriangleAndMergeDuplicates) {
+    const std::vector<double> xy = {0, 0, 2, 2, 1, 1, 2, 2, 3, 3, 0, 0};
+    for (const Named& algorithm : kAlgorithms) {
+        const tri::Delaunay2Result r = algorithm.build(xy, {});
+        EXPECT_TRUE(r.triangles.empty()) << algorithm.name;
+        const std::vector<tri::VertIdx> merged = {0, 1, 2, 1, 4, 0};
+        EXPECT_EQ(r.merged_into, merged) << algorithm.name;
+        EXPECT_EQ(r.counters.duplicates, 2u) << algorithm.name;
+    }
+}
+
+TEST(Triangulation_Delaunay2, DuplicatesMapToFirstOccurrence) {
+    const std::vector<double> xy = {0, 0, 1, 0, 0, 1, 1, 0, 1, 1, 0, 0, 1, 1};
+    for (const Named& algorithm : kAlgorithms) {
+        for (const tri::InsertionOrder order : kOrders) {
+            const tri::Delaunay2Result r = algorithm.build(xy, {order, 3});
+            const std::vector<tri::VertIdx> merged = {0, 1, 2, 1, 4, 0, 4};
+            EXPECT_EQ(r.merged_into, merged) << algorithm.name;
+            EXPECT_EQ(r.triangles.size(), 6u) << algorithm.name;
+            for (const tri::VertIdx v : r.triangles) EXPECT_EQ(r.merged_into[v], v);
+        }
+    }
+}
+
+TEST(Triangulation_Delaunay2, TinyAndEmptyInputs) {
+    for (const Named& algorithm : kAlgorithms) {
+        EXPECT_TRUE(algorithm.build(std::vector<double>{}, {}).triangles.empty());
+        EXPECT_TRUE(algorithm.build(std::vector<double>{1, 2}, {}).triangles.empty());
+        EXPECT_TRUE(algorithm.build(std::vector<double>{1, 2, 3, 4}, {}).triangles.empty());
+        EXPECT_EQ(algorithm.build(std::vector<double>{0, 0, 1, 0, 0, 1}, {}).triangles.size(), 3u);
+    }
+}
+
+TEST(Triangulation_Delaunay2, HugeAndTinyMagnitudes) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (const double scale : {1e-300, 1e-150, 1e150, 1e300}) {
+        std::vector<double> xy;
+        for (int i = 0; i < 200; ++i) xy.push_back(u(rng) * scale);
+        expect_all_agree(xy, "scale " + std::to_string(scale));
+    }
+}
+
+TEST(Triangulation_Delaunay2, RejectsNonFiniteCoordinates) {
+    const double bad[] = {std::numeric_limits<double>::quiet_NaN(),
+                          std::numeric_limits<double>::infinity(),
+                          -std::numeric_limits<double>::infinity()};
+    for (const Named& algorithm : kAlgorithms) {
+        for (const double value : bad) {
+            const std::vector<double> xy = {0, 0, 1, 0, 0, 1, value, 0.5};
+            try {
+                algorithm.build(xy, {});
+                FAIL() << algorithm.name << " accepted " << value;
+            } catch (const em::NonFiniteCoordinate& e) {
+                EXPECT_EQ(e.vertex(), 3u);
+                EXPECT_NE(std::string(e.what()).find("point 3"), std::string::npos) << e.what();
+            }
+        }
+        EXPECT_THROW(algorithm.build(std::vector<double>{0, 0, 1}, {}), em::InputError);
+    }
+}
+
+TEST(Triangulation_Delaunay2, CheckRejectsNonDelaunayAndBrokenTopology) {
+    // A convex quadrilateral split by the wrong diagonal.
+    const std::vector<double> xy = {0, 0, 4, 0, 4, 1, 0, 1.5};
+    const std::vector<tri::VertIdx> good = tri::bowyer_watson_2d(xy).triangles;
+    EXPECT_TRUE(tri::check_delaunay_2d(xy, good).ok);
+    const std::vector<tri::VertIdx> diagonal02 = {0, 1, 2, 0, 2, 3};
+    const std::vector<tri::VertIdx> diagonal13 = {0, 1, 3, 1, 2, 3};
+    const bool first_is_delaunay = tri::check_delaunay_2d(xy, diagonal02).ok;
+    EXPECT_NE(first_is_delaunay, tri::check_delaunay_2d(xy, diagonal13).ok);
+    const tri::CheckReport clockwise = tri::check_topology_2d(xy, std::vector<tri::VertIdx>{0, 2, 1, 0, 3, 2});
+    EXPECT_FALSE(clockwise.ok);
+    EXPECT_EQ(clockwise.triangle, 0u);
+    const tri::CheckReport missing = tri::check_topology_2d(xy, std::vector<tri::VertIdx>{0, 1, 2});
+    EXPECT_FALSE(missing.ok);
+    EXPECT_NE(missing.problem.find("point 3"), std::string::npos) << missing.problem;
+}
