@@ -3,22 +3,47 @@
 #pragma once
 
 #include <cstdint>
-#include <source_location>
 #include <stdexcept>
 #include <string>
+#if __has_include(<source_location>)
+#include <source_location>
+#endif
 
 namespace exactmesh {
+
+#if defined(__cpp_lib_source_location)
+using SourceLocation = std::source_location;
+#else
+/// clang 14 with libstdc++ 12 has no std::source_location: the same interface from builtins.
+struct SourceLocation {
+    const char* file = "";
+    const char* function = "";
+    unsigned line_number = 0;
+    static constexpr SourceLocation current(const char* f = __builtin_FILE(),
+                                            const char* fn = __builtin_FUNCTION(),
+                                            unsigned l = __builtin_LINE()) noexcept {
+        SourceLocation s;
+        s.file = f;
+        s.function = fn;
+        s.line_number = l;
+        return s;
+    }
+    constexpr const char* file_name() const noexcept { return file; }
+    constexpr const char* function_name() const noexcept { return function; }
+    constexpr unsigned line() const noexcept { return line_number; }
+};
+#endif
 
 /// Base of every exactmesh exception; carries where it was raised.
 class Error : public std::runtime_error {
 public:
     explicit Error(const std::string& what,
-                   std::source_location where = std::source_location::current())
+                   SourceLocation where = SourceLocation::current())
         : std::runtime_error(what), where_(where) {}
-    const std::source_location& where() const noexcept { return where_; }
+    const SourceLocation& where() const noexcept { return where_; }
 
 private:
-    std::source_location where_;
+    SourceLocation where_;
 };
 
 /// Bad input: names the file, line and value when they are known.
@@ -31,7 +56,7 @@ public:
 class NonFiniteCoordinate : public InputError {
 public:
     NonFiniteCoordinate(const std::string& what, std::uint32_t vertex,
-                        std::source_location where = std::source_location::current())
+                        SourceLocation where = SourceLocation::current())
         : InputError(what, where), vertex_(vertex) {}
     std::uint32_t vertex() const noexcept { return vertex_; }
 

@@ -3,6 +3,7 @@
 // overflow and no underflow in any two_product. Internal to predicates/.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
@@ -14,34 +15,38 @@
 
 namespace exactmesh::predicates::detail {
 
-/// Exponent of the lowest set bit of a nonzero finite double (x is an odd multiple of 2^k).
+/// Exponent of the lowest set bit of a nonzero finite double (x is an odd multiple of 2^k),
+/// read from the bits: no libm call, no loop.
 inline int lowest_bit_exponent(double x) noexcept {
-    int exponent = 0;
-    const double mantissa = std::frexp(std::fabs(x), &exponent);  // x = m * 2^e, m in [0.5, 1)
-    auto integer = static_cast<std::uint64_t>(std::ldexp(mantissa, 53));  // exact: 53 bits
-    int k = exponent - 53;
-    while ((integer & 1u) == 0u) {
-        integer >>= 1;
-        ++k;
-    }
-    return k;
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    const auto biased = static_cast<int>((bits >> 52) & 0x7FFu);
+    std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
+    if (biased != 0) mantissa |= std::uint64_t{1} << 52;  // normal: implicit leading bit
+    const int unit = (biased == 0 ? 1 : biased) - 1075;    // exponent of the mantissa's last bit
+    return unit + std::countr_zero(mantissa);
+}
+
+/// 2^e for a normal exponent e, without a libm call.
+constexpr double power_of_two(int e) noexcept {
+    return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
 }
 
 /// True when every expansion operation of a degree-`degree` determinant in these coordinates is
 /// exact. Every intermediate value is an integer multiple of 2^(degree * q), q the lowest set bit
 /// over all coordinates, so no product underflows when degree * q >= -1074; magnitudes below
 /// 2^(1000/degree - 2) keep every term, and Veltkamp's split, far from overflow.
+/// A coordinate of magnitude >= 2^(53 - 1074/degree) has q >= -1074/degree already, so only
+/// smaller ones need their lowest bit read.
 inline bool expansion_safe(int degree, std::initializer_list<double> coordinates) noexcept {
-    const int max_exponent = 1000 / degree - 2;
-    const double max_magnitude = std::ldexp(1.0, max_exponent);
-    int lowest = std::numeric_limits<int>::max();
+    const double max_magnitude = power_of_two(1000 / degree - 2);
+    const double surely_fine = power_of_two(53 - 1074 / degree);
+    const int lowest_allowed = -(1074 / degree);
     for (const double x : coordinates) {
-        if (x == 0.0) continue;
-        if (!(std::fabs(x) <= max_magnitude)) return false;
-        const int k = lowest_bit_exponent(x);
-        if (k < lowest) lowest = k;
+        const double a = std::fabs(x);
+        if (!(a <= max_magnitude)) return false;
+        if (a < surely_fine && a != 0.0 && lowest_bit_exponent(x) < lowest_allowed) return false;
     }
-    return lowest == std::numeric_limits<int>::max() || degree * lowest >= -1074;
+    return true;
 }
 
 /// Throws GeometryError when a coordinate is NaN or infinite; predicates have no exact answer.

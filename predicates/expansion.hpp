@@ -148,6 +148,15 @@ Expansion<A + B> operator-(const Expansion<A>& e, const Expansion<B>& f) noexcep
     return e + (-f);
 }
 
+/// The same value with fewer components (the largest one nearly the whole value): worth it
+/// before an expansion is multiplied, since products cost in proportion to length.
+template <int A>
+Expansion<A> compressed(const Expansion<A>& e) noexcept {
+    Expansion<A> h;
+    h.length = compress(e.length, e.components.data(), h.components.data());
+    return h;
+}
+
 /// e * b exactly.
 template <int A>
 Expansion<2 * A> scale(const Expansion<A>& e, double b) noexcept {

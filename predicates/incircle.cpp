@@ -22,9 +22,10 @@ Expansion<8 * N> lift_times(const double* p, const Expansion<N>& m) noexcept {
     return scale_twice(m, p[0]) + scale_twice(m, p[1]);
 }
 
-/// Raw det [x y 1] over rows p, q, r (orient2d without differences).
+/// Raw det [x y 1] over rows p, q, r (orient2d without differences), compressed because it is
+/// multiplied next: its value has few significant bits compared with its 12 components.
 Expansion<12> det3_xy1(const double* p, const double* q, const double* r) noexcept {
-    return minor_xy(p, q) + minor_xy(q, r) + minor_xy(r, p);
+    return compressed(minor_xy(p, q) + minor_xy(q, r) + minor_xy(r, p));
 }
 
 }  // namespace

@@ -16,10 +16,10 @@ Expansion<4> minor_xy(const double* p, const double* q) noexcept {
     return exact_product(p[0], q[1]) - exact_product(q[0], p[1]);
 }
 
-/// det [p; q; r] of xyz rows, expanded along z.
+/// det [p; q; r] of xyz rows, expanded along z; compressed, since it is multiplied next.
 Expansion<24> det3_xyz(const double* p, const double* q, const double* r) noexcept {
-    return scale(minor_xy(q, r), p[2]) - scale(minor_xy(p, r), q[2]) +
-           scale(minor_xy(p, q), r[2]);
+    return compressed(scale(minor_xy(q, r), p[2]) - scale(minor_xy(p, r), q[2]) +
+                      scale(minor_xy(p, q), r[2]));
 }
 
 /// (px^2 + py^2 + pz^2) * m exactly, without rounding the lift.
@@ -31,7 +31,7 @@ Expansion<12 * N> lift_times(const double* p, const Expansion<N>& m) noexcept {
 /// Raw det [x y z 1] over rows p, q, r, s, given their four xyz minors.
 Expansion<96> det4_xyz1(const Expansion<24>& pqr, const Expansion<24>& pqs,
                         const Expansion<24>& prs, const Expansion<24>& qrs) noexcept {
-    return (pqr - pqs) + (prs - qrs);
+    return compressed((pqr - pqs) + (prs - qrs));
 }
 
 }  // namespace

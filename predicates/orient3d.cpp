@@ -18,9 +18,9 @@ Expansion<4> minor_xy(double px, double py, double qx, double qy) noexcept {
 
 /// det [p; q; r] of raw xyz rows, expanded along z.
 Expansion<24> det3_xyz(const double* p, const double* q, const double* r) noexcept {
-    return scale(minor_xy(q[0], q[1], r[0], r[1]), p[2]) -
-           scale(minor_xy(p[0], p[1], r[0], r[1]), q[2]) +
-           scale(minor_xy(p[0], p[1], q[0], q[1]), r[2]);
+    return compressed(scale(minor_xy(q[0], q[1], r[0], r[1]), p[2]) -
+                      scale(minor_xy(p[0], p[1], r[0], r[1]), q[2]) +
+                      scale(minor_xy(p[0], p[1], q[0], q[1]), r[2]));
 }
 
 }  // namespace

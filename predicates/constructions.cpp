@@ -1,0 +1,608 @@
+// SPDX-License-Identifier: MIT
+// Correctly rounded circumcenters and segment intersections: an expansion fast path certified by
+// exact midpoint sign tests [Shewchuk97 §2, Ziv91], and a GMP + MPFR exact path (see the header).
+// Every quotient num / den below comes from Cramer's rule on the bisector equations
+// 2 (p - q) . X = |p|^2 - |q|^2 (circumcenters) or from X = a + t (b - a) with orient2d(c, d, X)
+// = 0 (intersections), written in the raw doubles or in exact differences, so it is the exact
+// construction. Expansion safety of the translated forms: an exact difference p - p0 has no set
+// bit below those of p and p0 and is at most 2^332 (2D) or 2^249 (3D) in magnitude, which keeps
+// every sum and product below 2^1002, far from overflow, as in the raw forms.
+#include "predicates/constructions.hpp"
+
+#include <gmpxx.h>
+#include <mpfr.h>
+
+#include <bit>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <initializer_list>
+#include <limits>
+#include <source_location>
+#include <string>
+
+#include "predicates/errors.hpp"
+#include "predicates/exact_range.hpp"
+#include "predicates/expansion.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/orient3d.hpp"
+
+namespace exactmesh::predicates {
+
+namespace {
+
+thread_local ConstructionStats this_thread_stats;
+
+// ---------------------------------------------------------------------------------------------
+// Errors: every message names the construction, the problem and the points (%.17g round-trips).
+
+std::string format_points(std::initializer_list<const double*> points, int dimension) {
+    std::string text;
+    char value[40];
+    bool first_point = true;
+    for (const double* p : points) {
+        text += first_point ? "(" : ", (";
+        first_point = false;
+        for (int k = 0; k < dimension; ++k) {
+            std::snprintf(value, sizeof value, k == 0 ? "%.17g" : ", %.17g", p[k]);
+            text += value;
+        }
+        text += ')';
+    }
+    return text;
+}
+
+[[noreturn]] void fail(const char* construction, const char* problem,
+                       std::initializer_list<const double*> points, int dimension,
+                       std::source_location where = std::source_location::current()) {
+    throw GeometryError(
+        std::string(construction) + ": " + problem + ": " + format_points(points, dimension),
+        where);
+}
+
+void require_finite_points(const char* construction, std::initializer_list<const double*> points,
+                           int dimension) {
+    for (const double* p : points) {
+        for (int k = 0; k < dimension; ++k) {
+            if (!std::isfinite(p[k])) {
+                fail(construction, "non-finite coordinate", points, dimension);
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Exact path: GMP rationals, one rounding by MPFR.
+
+/// Narrows MPFR's exponent range to binary64's for the lifetime of the object and restores the
+/// caller's range afterwards (exceptions included). MPFR mantissas lie in [1/2, 1), so
+/// DBL_MAX = (1 - 2^-53) 2^1024 gives emax = 1024 and 2^-1074 = 2^-1 2^-1073 gives emin = -1073.
+/// Debian's MPFR is built with thread-local state, so other threads are not affected.
+class DoubleExponentRange {
+  public:
+    DoubleExponentRange() noexcept : emin_(mpfr_get_emin()), emax_(mpfr_get_emax()) {
+        mpfr_set_emin(-1073);
+        mpfr_set_emax(1024);
+    }
+    ~DoubleExponentRange() {
+        mpfr_set_emin(emin_);
+        mpfr_set_emax(emax_);
+    }
+    DoubleExponentRange(const DoubleExponentRange&) = delete;
+    DoubleExponentRange& operator=(const DoubleExponentRange&) = delete;
+
+  private:
+    mpfr_exp_t emin_;
+    mpfr_exp_t emax_;
+};
+
+/// v rounded to the nearest double, ties to even, subnormals rounded once (mpfr_subnormalize
+/// re-rounds with the ternary value of the first rounding, so there is no double rounding).
+/// Returns false when the rounded value is infinite (|v| >= DBL_MAX + ulp(DBL_MAX) / 2).
+bool round_to_double(const mpq_class& v, double& result) {
+    if (sgn(v) == 0) {
+        result = 0.0;
+        return true;
+    }
+    const DoubleExponentRange range;
+    mpfr_t x;
+    mpfr_init2(x, 53);
+    int ternary = mpfr_set_q(x, v.get_mpq_t(), MPFR_RNDN);
+    ternary = mpfr_subnormalize(x, ternary, MPFR_RNDN);
+    static_cast<void>(ternary);
+    const bool overflow = mpfr_inf_p(x) != 0;
+    result = mpfr_get_d(x, MPFR_RNDN);  // exact: x is a binary64 value now
+    mpfr_clear(x);
+    return !overflow;
+}
+
+mpq_class det3(const mpq_class m[3][3]) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+/// Finite, non-collinear input. Origin at c: 2 (p - c) . u = |p - c|^2 for p = a, b.
+std::array<double, 2> circumcenter2_rational(const double* a, const double* b, const double* c) {
+    const mpq_class ax = mpq_class(a[0]) - c[0], ay = mpq_class(a[1]) - c[1];
+    const mpq_class bx = mpq_class(b[0]) - c[0], by = mpq_class(b[1]) - c[1];
+    const mpq_class wa = ax * ax + ay * ay, wb = bx * bx + by * by;
+    const mpq_class twice_det = 2 * (ax * by - ay * bx);
+    const mpq_class x = c[0] + (wa * by - wb * ay) / twice_det;
+    const mpq_class y = c[1] + (ax * wb - bx * wa) / twice_det;
+    std::array<double, 2> result;
+    if (!round_to_double(x, result[0]) || !round_to_double(y, result[1])) {
+        fail("circumcenter", "the circumcenter overflows the double range", {a, b, c}, 2);
+    }
+    return result;
+}
+
+/// Finite, non-coplanar input. Origin at d; Cramer's rule on 2 P u = w, P's rows p - d.
+std::array<double, 3> circumcenter3_rational(const double* a, const double* b, const double* c,
+                                             const double* d) {
+    const double* rows[3] = {a, b, c};
+    mpq_class p[3][3], w[3];
+    for (int r = 0; r < 3; ++r) {
+        for (int k = 0; k < 3; ++k) p[r][k] = mpq_class(rows[r][k]) - d[k];
+        w[r] = p[r][0] * p[r][0] + p[r][1] * p[r][1] + p[r][2] * p[r][2];
+    }
+    const mpq_class twice_det = 2 * det3(p);
+    std::array<double, 3> result;
+    for (int k = 0; k < 3; ++k) {
+        mpq_class m[3][3];
+        for (int r = 0; r < 3; ++r) {
+            for (int j = 0; j < 3; ++j) m[r][j] = j == k ? w[r] : p[r][j];
+        }
+        const mpq_class coordinate = d[k] + det3(m) / twice_det;
+        if (!round_to_double(coordinate, result[static_cast<unsigned>(k)])) {
+            fail("circumcenter", "the circumcenter overflows the double range", {a, b, c, d}, 3);
+        }
+    }
+    return result;
+}
+
+/// orient2d(p, q, r) in rationals: (q - p) x (r - p).
+mpq_class orient2d_rational(const double* p, const double* q, const double* r) {
+    return (mpq_class(q[0]) - p[0]) * (mpq_class(r[1]) - p[1]) -
+           (mpq_class(q[1]) - p[1]) * (mpq_class(r[0]) - p[0]);
+}
+
+/// Non-parallel lines: X = a + t (b - a) with orient(c, d, X) = 0, which is affine in X, so
+/// t = o_a / (o_a - o_b) and X = (o_a b - o_b a) / (o_a - o_b), o_p = orient2d(c, d, p).
+std::array<double, 2> segment_intersection_rational(const double* a, const double* b,
+                                                    const double* c, const double* d) {
+    const mpq_class oa = orient2d_rational(c, d, a), ob = orient2d_rational(c, d, b);
+    const mpq_class den = oa - ob;
+    std::array<double, 2> result;
+    for (unsigned k = 0; k < 2; ++k) {
+        const mpq_class coordinate = (oa * b[k] - ob * a[k]) / den;
+        if (!round_to_double(coordinate, result[k])) {
+            // Unreachable for a point on [a, b]; kept so that no path can return infinity.
+            fail("segment_intersection", "the intersection overflows the double range",
+                 {a, b, c, d}, 2);
+        }
+    }
+    return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fast path: exact expansions for num and den, a double candidate, exact midpoint certification.
+
+/// e * 2, exact (no overflow in the expansion-safe range).
+template <int N>
+Expansion<N> twice(Expansion<N> e) noexcept {
+    for (int i = 0; i < e.length; ++i) e.components[static_cast<unsigned>(i)] *= 2.0;
+    return e;
+}
+
+/// p_u q_v - q_u p_v exactly.
+Expansion<4> minor_uv(const double* p, const double* q, int u, int v) noexcept {
+    return exact_product(p[u], q[v]) - exact_product(q[u], p[v]);
+}
+
+/// det [u v 1] over rows p, q, r, expanded along the column of ones.
+Expansion<12> det_uv1(const double* p, const double* q, const double* r, int u, int v) noexcept {
+    return minor_uv(p, q, u, v) + minor_uv(q, r, u, v) + minor_uv(r, p, u, v);
+}
+
+/// det [x y z] of rows p, q, r, expanded along z.
+Expansion<24> det_xyz(const double* p, const double* q, const double* r) noexcept {
+    return scale(minor_uv(q, r, 0, 1), p[2]) - scale(minor_uv(p, r, 0, 1), q[2]) +
+           scale(minor_uv(p, q, 0, 1), r[2]);
+}
+
+/// |p|^2 * e exactly in 2D, as p_x^2 e + p_y^2 e (no rounded square is ever formed).
+template <int A>
+Expansion<8 * A> times_norm2(const Expansion<A>& e, const double* p) noexcept {
+    return scale_twice(e, p[0]) + scale_twice(e, p[1]);
+}
+
+/// |p|^2 * e exactly in 3D.
+template <int A>
+Expansion<12 * A> times_norm3(const Expansion<A>& e, const double* p) noexcept {
+    return scale_twice(e, p[0]) + scale_twice(e, p[1]) + scale_twice(e, p[2]);
+}
+
+/// det [w u] over rows p, q (already translated) with w = |p|^2.
+Expansion<16> det_w_u(const double* p, const double* q, int u) noexcept {
+    return times_norm2(expansion_of(q[u]), p) - times_norm2(expansion_of(p[u]), q);
+}
+
+/// det [w u 1] over rows a, b, c with w = |p|^2, expanded along w.
+Expansion<48> det_w_u1(const double* a, const double* b, const double* c, int u) noexcept {
+    return times_norm2(exact_difference(b[u], c[u]), a) -
+           times_norm2(exact_difference(a[u], c[u]), b) +
+           times_norm2(exact_difference(a[u], b[u]), c);
+}
+
+/// det [w u v 1] over rows a, b, c, d with w = |p|^2, expanded along w.
+Expansion<576> det_w_uv1(const double* a, const double* b, const double* c, const double* d, int u,
+                         int v) noexcept {
+    return (times_norm3(det_uv1(b, c, d, u, v), a) - times_norm3(det_uv1(a, c, d, u, v), b)) +
+           (times_norm3(det_uv1(a, b, d, u, v), c) - times_norm3(det_uv1(a, b, c, u, v), d));
+}
+
+/// det [w u v] over rows p, q, r (already translated) with w = |p|^2, expanded along w.
+Expansion<144> det_w_uv(const double* p, const double* q, const double* r, int u, int v) noexcept {
+    return times_norm3(minor_uv(q, r, u, v), p) - times_norm3(minor_uv(p, r, u, v), q) +
+           times_norm3(minor_uv(p, q, u, v), r);
+}
+
+/// How a fast-path coordinate ended.
+enum class Certification { Certified, OutOfRange, Uncertified };
+
+struct Quotient {
+    Certification status = Certification::Uncertified;
+    double value = 0.0;
+    bool neighbour = false;  ///< certified at the neighbour of the first candidate
+};
+
+/// Below this magnitude the candidate's half-ulps are left to the exact path; far above the
+/// subnormal range, so halving an ulp is exact and never yields zero.
+constexpr double kMinCandidate = 0x1p-500;
+
+/// detail::expansion_safe's condition (|x| <= 2^(1000/degree - 2), degree * lowest set bit
+/// >= -1074) for the doubles the fast path derives itself, read from the bits instead of by
+/// exact_range.hpp's bit-by-bit loop, which runs 52 times on the powers of two (half-ulps)
+/// checked here. Subnormals are refused. Together with expansion_safe over the inputs this is
+/// expansion_safe over all values, since both bounds are checked value by value.
+bool derived_values_safe(int degree, std::initializer_list<double> values) noexcept {
+    const double max_magnitude = std::ldexp(1.0, 1000 / degree - 2);
+    for (const double x : values) {
+        if (x == 0.0) continue;
+        if (!(std::fabs(x) <= max_magnitude)) return false;  // NaN and infinity too
+        const auto bits = std::bit_cast<std::uint64_t>(x);
+        const int biased_exponent = static_cast<int>((bits >> 52) & 0x7ffu);
+        if (biased_exponent == 0) return false;
+        const std::uint64_t significand = (bits & ((std::uint64_t{1} << 52) - 1)) |
+                                          (std::uint64_t{1} << 52);  // x = significand 2^(e-1075)
+        const int lowest = biased_exponent - 1075 + std::countr_zero(significand);
+        if (degree * lowest < -1074) return false;
+    }
+    return true;
+}
+
+/// The double with the even significand among two adjacent doubles (one of them always is:
+/// adjacent significands are consecutive integers, or 2^53 - 1 and 2^52 across a binade).
+double even_of(double x, double y) noexcept {
+    return (std::bit_cast<std::uint64_t>(x) & 1u) == 0u ? x : y;
+}
+
+/// The exact quotient v = num / den, kept as q0 + residual / den with residual = num - q0 den
+/// exact, so that comparisons near q0 work on the small residual (one short expansion per test)
+/// rather than on num.
+template <int N, int D>
+struct ExactQuotient {
+    const Expansion<N>& num;
+    const Expansion<D>& den;
+    int den_sign;
+    int degree;
+    double q0;
+    Expansion<N + 2 * D> residual;
+
+    /// sign(v - (q + half)) exactly; q and half are expansion-safe (checked by the caller).
+    int side_of_midpoint(double q, double half) const noexcept {
+        // m - q0 = (q - q0) + half is usually one double (q is within a few ulps of q0);
+        // then v - m = (residual - (m - q0) den) / den.
+        double step, step_tail, offset, offset_tail;
+        two_diff(q, q0, step, step_tail);
+        two_sum(step, half, offset, offset_tail);
+        if (step_tail == 0.0 && offset_tail == 0.0 && derived_values_safe(degree, {offset})) {
+            return to_int((residual - scale(den, offset)).sign()) * den_sign;
+        }
+        return to_int((num - (scale(den, q) + scale(den, half))).sign()) * den_sign;
+    }
+};
+
+/// The double nearest to num / den (ties to even), certified, or the reason it is not.
+/// `degree` is the degree of num (and of den * candidate) in the inputs, whose expansion
+/// safety the caller has checked; every double that multiplies den here is checked too, which
+/// together with the inputs is exactly detail::expansion_safe over all of them.
+/// q is correct iff m_below < v < m_above, or v is a midpoint and q the even neighbour.
+template <int N, int D>
+Quotient certified_quotient(const Expansion<N>& num, const Expansion<D>& den, int degree) noexcept {
+    if (num.length == 0) return {Certification::Certified, 0.0, false};
+    const double q0 = num.approximate() / den.approximate();
+    // NaN and infinity fail both tests.
+    if (!(std::fabs(q0) >= kMinCandidate) || !derived_values_safe(degree, {q0})) {
+        return {Certification::OutOfRange, 0.0, false};
+    }
+    const ExactQuotient<N, D> v{num, den, to_int(den.sign()), degree, q0, num - scale(den, q0)};
+    if (v.residual.length == 0) return {Certification::Certified, q0, false};  // v == q0
+    // q0 carries up to about two ulps of error from the three roundings; the residual turns
+    // it into a double-double q0 + delta accurate to ~2^-100, whose rounding q is the nearest
+    // double unless v lies within that distance of a midpoint [Shewchuk97 §2.8, Ziv91].
+    double q = q0 + v.residual.approximate() / den.approximate();
+    // After a step to a neighbour, the midpoint between it and the previous candidate is
+    // already known to be on the right side, so only the far midpoint is tested.
+    bool below_known = false, above_known = false;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        const bool neighbour = attempt > 0;
+        if (!(std::fabs(q) >= kMinCandidate)) return {Certification::OutOfRange, 0.0, false};
+        const double below = std::nextafter(q, -std::numeric_limits<double>::infinity());
+        const double above = std::nextafter(q, std::numeric_limits<double>::infinity());
+        // Adjacent doubles differ by an exactly representable ulp; at a binade boundary the
+        // ulp below is half the ulp above, which these differences capture on their own.
+        const double half_below = (below - q) * 0.5, half_above = (above - q) * 0.5;
+        if (!derived_values_safe(degree, {q, half_below, half_above})) {
+            return {Certification::OutOfRange, 0.0, false};
+        }
+        if (!below_known) {
+            const int side = v.side_of_midpoint(q, half_below);
+            if (side == 0) return {Certification::Certified, even_of(below, q), neighbour};
+            if (side < 0) {
+                q = below;
+                above_known = true;
+                continue;
+            }
+        }
+        if (!above_known) {
+            const int side = v.side_of_midpoint(q, half_above);
+            if (side == 0) return {Certification::Certified, even_of(q, above), neighbour};
+            if (side > 0) {
+                q = above;
+                below_known = true;
+                continue;
+            }
+        }
+        return {Certification::Certified, q, neighbour};
+    }
+    return {Certification::Uncertified, 0.0, false};
+}
+
+/// Runs the fast path for each coordinate in turn and records the outcome. Returns true when
+/// every coordinate was certified; otherwise the caller takes the exact path.
+class FastPath {
+  public:
+    template <int N, int D>
+    bool certify(const Expansion<N>& num, const Expansion<D>& den, int degree, double& result) {
+        const Quotient quotient = certified_quotient(num, den, degree);
+        if (quotient.status == Certification::OutOfRange) status_ = Certification::OutOfRange;
+        if (quotient.status == Certification::Uncertified) status_ = Certification::Uncertified;
+        if (quotient.status != Certification::Certified) return false;
+        neighbour_steps_ += quotient.neighbour ? 1u : 0u;
+        result = quotient.value;
+        return true;
+    }
+    /// Counts a call whose coordinates were all certified.
+    void count_fast() const noexcept {
+        ++this_thread_stats.calls;
+        ++this_thread_stats.fast;
+        this_thread_stats.neighbour_steps += neighbour_steps_;
+    }
+    /// Counts a call that went to the exact path after a fast-path attempt.
+    void count_exact() const noexcept { count_exact_path(status_); }
+
+    static void count_exact_path(Certification reason) noexcept {
+        ++this_thread_stats.calls;
+        if (reason == Certification::Uncertified) {
+            ++this_thread_stats.exact_uncertified;
+        } else {
+            ++this_thread_stats.exact_range;
+        }
+    }
+
+  private:
+    Certification status_ = Certification::Certified;
+    std::uint64_t neighbour_steps_ = 0;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Input checks shared by the public functions and their _exact variants.
+
+void check_triangle(const double* a, const double* b, const double* c) {
+    require_finite_points("circumcenter", {a, b, c}, 2);
+    if (orient2d(a, b, c) == Sign::Zero) {
+        fail("circumcenter", "the points are collinear", {a, b, c}, 2);
+    }
+}
+
+void check_tetrahedron(const double* a, const double* b, const double* c, const double* d) {
+    require_finite_points("circumcenter", {a, b, c, d}, 3);
+    if (orient3d(a, b, c, d) == Sign::Zero) {
+        fail("circumcenter", "the points are coplanar", {a, b, c, d}, 3);
+    }
+}
+
+/// Accepts exactly the configurations documented in the header: the segments share one point
+/// and the lines are not parallel. With s_p = orient2d(c, d, p) and t_p = orient2d(a, b, p),
+/// that is s_a s_b <= 0 and t_c t_d <= 0, not both s_a and s_b zero.
+void check_segments(const double* a, const double* b, const double* c, const double* d) {
+    constexpr const char* kName = "segment_intersection";
+    require_finite_points(kName, {a, b, c, d}, 2);
+    if ((a[0] == b[0] && a[1] == b[1]) || (c[0] == d[0] && c[1] == d[1])) {
+        fail(kName, "a segment has zero length", {a, b, c, d}, 2);
+    }
+    const Sign sa = orient2d(c, d, a), sb = orient2d(c, d, b);
+    if (sa == Sign::Zero && sb == Sign::Zero) {
+        fail(kName, "the segments are collinear (parallel lines)", {a, b, c, d}, 2);
+    }
+    if (sa == sb) {
+        // Both endpoints strictly on one side of line cd: say whether that is because the
+        // lines are parallel ((b - a) x (d - c) == 0, exactly) or because they meet elsewhere.
+        const mpq_class cross = (mpq_class(b[0]) - a[0]) * (mpq_class(d[1]) - c[1]) -
+                                (mpq_class(b[1]) - a[1]) * (mpq_class(d[0]) - c[0]);
+        if (sgn(cross) == 0) fail(kName, "the lines are parallel", {a, b, c, d}, 2);
+        fail(kName, "the segments do not intersect", {a, b, c, d}, 2);
+    }
+    const Sign sc = orient2d(a, b, c), sd = orient2d(a, b, d);
+    if (sc != Sign::Zero && sc == sd) {
+        fail(kName, "the segments do not intersect", {a, b, c, d}, 2);
+    }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+std::array<double, 2> circumcenter(const double* a, const double* b, const double* c) {
+    check_triangle(a, b, c);
+    if (!detail::expansion_safe(3, {a[0], a[1], b[0], b[1], c[0], c[1]})) {
+        FastPath::count_exact_path(Certification::OutOfRange);
+        return circumcenter2_rational(a, b, c);
+    }
+    FastPath fast;
+    std::array<double, 2> result;
+    double pa[2], pb[2], tails[4];
+    two_diff(a[0], c[0], pa[0], tails[0]);
+    two_diff(a[1], c[1], pa[1], tails[1]);
+    two_diff(b[0], c[0], pb[0], tails[2]);
+    two_diff(b[1], c[1], pb[1], tails[3]);
+    if (tails[0] == 0.0 && tails[1] == 0.0 && tails[2] == 0.0 && tails[3] == 0.0) {
+        // Exact differences (Sterbenz: nearby points): X = c + (det [w' y], det [x w']) / 2D'
+        // over the translated rows a - c, b - c, with D' = det [x y] of those rows.
+        const Expansion<4> den = twice(minor_uv(pa, pb, 0, 1));
+        if (fast.certify(scale(den, c[0]) + det_w_u(pa, pb, 1), den, 3, result[0]) &&
+            fast.certify(scale(den, c[1]) - det_w_u(pa, pb, 0), den, 3, result[1])) {
+            fast.count_fast();
+            return result;
+        }
+    } else {
+        // x = det [w y 1] / (2 det [x y 1]), y = det [x w 1] / (2 det [x y 1]), w = |p|^2.
+        const Expansion<12> den = twice(det_uv1(a, b, c, 0, 1));
+        if (fast.certify(det_w_u1(a, b, c, 1), den, 3, result[0]) &&
+            fast.certify(-det_w_u1(a, b, c, 0), den, 3, result[1])) {
+            fast.count_fast();
+            return result;
+        }
+    }
+    fast.count_exact();
+    return circumcenter2_rational(a, b, c);
+}
+
+std::array<double, 3> circumcenter(const double* a, const double* b, const double* c,
+                                   const double* d) {
+    check_tetrahedron(a, b, c, d);
+    if (!detail::expansion_safe(
+            4, {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]})) {
+        FastPath::count_exact_path(Certification::OutOfRange);
+        return circumcenter3_rational(a, b, c, d);
+    }
+    FastPath fast;
+    std::array<double, 3> result;
+    // When every p - d is an exact double (Sterbenz: common for nearby points), the translated
+    // form X = d + det [w' u v] / (2 det P') is about four times shorter than the raw 4x4 form.
+    double translated[3][3];
+    bool exact_differences = true;
+    const double* rows[3] = {a, b, c};
+    for (unsigned r = 0; r < 3; ++r) {
+        for (unsigned k = 0; k < 3; ++k) {
+            double tail;
+            two_diff(rows[r][k], d[k], translated[r][k], tail);
+            exact_differences = exact_differences && tail == 0.0;
+        }
+    }
+    if (exact_differences) {
+        const double* pa = translated[0];
+        const double* pb = translated[1];
+        const double* pc = translated[2];
+        const Expansion<24> den = twice(det_xyz(pa, pb, pc));
+        if (fast.certify(scale(den, d[0]) + det_w_uv(pa, pb, pc, 1, 2), den, 4, result[0]) &&
+            fast.certify(scale(den, d[1]) - det_w_uv(pa, pb, pc, 0, 2), den, 4, result[1]) &&
+            fast.certify(scale(den, d[2]) + det_w_uv(pa, pb, pc, 0, 1), den, 4, result[2])) {
+            fast.count_fast();
+            return result;
+        }
+    } else {
+        // det [x y z 1] expanded along the column of ones (as in orient3d's stage C).
+        const Expansion<96> den =
+            twice((det_xyz(a, b, c) - det_xyz(a, b, d)) + (det_xyz(a, c, d) - det_xyz(b, c, d)));
+        if (fast.certify(det_w_uv1(a, b, c, d, 1, 2), den, 4, result[0]) &&
+            fast.certify(-det_w_uv1(a, b, c, d, 0, 2), den, 4, result[1]) &&
+            fast.certify(det_w_uv1(a, b, c, d, 0, 1), den, 4, result[2])) {
+            fast.count_fast();
+            return result;
+        }
+    }
+    fast.count_exact();
+    return circumcenter3_rational(a, b, c, d);
+}
+
+std::array<double, 2> segment_intersection(const double* a, const double* b, const double* c,
+                                           const double* d) {
+    check_segments(a, b, c, d);
+    if (!detail::expansion_safe(3, {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]})) {
+        FastPath::count_exact_path(Certification::OutOfRange);
+        return segment_intersection_rational(a, b, c, d);
+    }
+    FastPath fast;
+    std::array<double, 2> result;
+    // X = (o_a b - o_b a) / (o_a - o_b), o_p = orient2d(c, d, p) = det [x y 1] over c, d, p.
+    double pb[2], pc[2], pd[2];
+    bool exact_differences = true;
+    for (unsigned k = 0; k < 2; ++k) {
+        double tail_b, tail_c, tail_d;
+        two_diff(b[k], a[k], pb[k], tail_b);
+        two_diff(c[k], a[k], pc[k], tail_c);
+        two_diff(d[k], a[k], pd[k], tail_d);
+        exact_differences = exact_differences && tail_b == 0.0 && tail_c == 0.0 && tail_d == 0.0;
+    }
+    if (exact_differences) {
+        // Origin at a (p' = p - a exact): o_a = c' x d', o_a - o_b = b' x d' + c' x b', and
+        // X = a + o_a b' / (o_a - o_b).
+        const Expansion<4> oa = minor_uv(pc, pd, 0, 1);
+        const Expansion<8> den = minor_uv(pb, pd, 0, 1) + minor_uv(pc, pb, 0, 1);
+        if (fast.certify(scale(den, a[0]) + scale(oa, pb[0]), den, 3, result[0]) &&
+            fast.certify(scale(den, a[1]) + scale(oa, pb[1]), den, 3, result[1])) {
+            fast.count_fast();
+            return result;
+        }
+    } else {
+        const Expansion<12> oa = det_uv1(c, d, a, 0, 1), ob = det_uv1(c, d, b, 0, 1);
+        const Expansion<24> den = oa - ob;
+        if (fast.certify(scale(oa, b[0]) - scale(ob, a[0]), den, 3, result[0]) &&
+            fast.certify(scale(oa, b[1]) - scale(ob, a[1]), den, 3, result[1])) {
+            fast.count_fast();
+            return result;
+        }
+    }
+    fast.count_exact();
+    return segment_intersection_rational(a, b, c, d);
+}
+
+std::array<double, 2> circumcenter_exact(const double* a, const double* b, const double* c) {
+    check_triangle(a, b, c);
+    return circumcenter2_rational(a, b, c);
+}
+
+std::array<double, 3> circumcenter_exact(const double* a, const double* b, const double* c,
+                                         const double* d) {
+    check_tetrahedron(a, b, c, d);
+    return circumcenter3_rational(a, b, c, d);
+}
+
+std::array<double, 2> segment_intersection_exact(const double* a, const double* b, const double* c,
+                                                 const double* d) {
+    check_segments(a, b, c, d);
+    return segment_intersection_rational(a, b, c, d);
+}
+
+ConstructionStats& construction_stats() noexcept {
+    return this_thread_stats;
+}
+
+void reset_construction_stats() noexcept {
+    this_thread_stats = ConstructionStats{};
+}
+
+}  // namespace exactmesh::predicates

@@ -1,0 +1,688 @@
+// SPDX-License-Identifier: MIT
+// The four adaptive predicates, their _exact stages and their _filter stages against the GMP
+// reference (predicates/exact_reference.*): a million random cases each, then suites of exact
+// degeneracies, ulp perturbations and extreme magnitudes [Shewchuk97 §4; robust-predicates].
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "predicates/exact_reference.hpp"
+#include "predicates/incircle.hpp"
+#include "predicates/insphere.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/orient3d.hpp"
+
+namespace pr = exactmesh::predicates;
+using pr::Sign;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Case counts. EXACTMESH_TEST_SCALE (a positive float, default 1) scales the sampled counts, so
+// that a sanitizer build can run fewer; at 1 every predicate sees at least 10^6 random cases.
+
+double test_scale() {
+    const char* text = std::getenv("EXACTMESH_TEST_SCALE");
+    if (text == nullptr || *text == '\0') return 1.0;
+    char* end = nullptr;
+    const double s = std::strtod(text, &end);
+    return (end != text && std::isfinite(s) && s > 0.0) ? s : 1.0;
+}
+
+long scaled(long count) {
+    return std::max(1L, static_cast<long>(std::ceil(static_cast<double>(count) * test_scale())));
+}
+
+constexpr long kRandomCasesPerDistribution = 250000;  // four distributions: 10^6 per predicate
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// ---------------------------------------------------------------------------------------------
+// The predicates under test, each with its stages and both reference forms.
+
+using Args = const double* const*;
+
+struct Orient2d {
+    static constexpr int kPoints = 3, kDims = 2;
+    static constexpr const char* kName = "orient2d";
+    static Sign full(Args p) { return pr::orient2d(p[0], p[1], p[2]); }
+    static Sign exact(Args p) { return pr::orient2d_exact(p[0], p[1], p[2]); }
+    static std::optional<Sign> filter(Args p) { return pr::orient2d_filter(p[0], p[1], p[2]); }
+    static Sign reference(Args p) { return pr::reference::orient2d_differences(p[0], p[1], p[2]); }
+    static Sign reference_raw(Args p) { return pr::reference::orient2d(p[0], p[1], p[2]); }
+};
+
+struct Orient3d {
+    static constexpr int kPoints = 4, kDims = 3;
+    static constexpr const char* kName = "orient3d";
+    static Sign full(Args p) { return pr::orient3d(p[0], p[1], p[2], p[3]); }
+    static Sign exact(Args p) { return pr::orient3d_exact(p[0], p[1], p[2], p[3]); }
+    static std::optional<Sign> filter(Args p) {
+        return pr::orient3d_filter(p[0], p[1], p[2], p[3]);
+    }
+    static Sign reference(Args p) {
+        return pr::reference::orient3d_differences(p[0], p[1], p[2], p[3]);
+    }
+    static Sign reference_raw(Args p) { return pr::reference::orient3d(p[0], p[1], p[2], p[3]); }
+};
+
+struct Incircle {
+    static constexpr int kPoints = 4, kDims = 2;
+    static constexpr const char* kName = "incircle";
+    static Sign full(Args p) { return pr::incircle(p[0], p[1], p[2], p[3]); }
+    static Sign exact(Args p) { return pr::incircle_exact(p[0], p[1], p[2], p[3]); }
+    static std::optional<Sign> filter(Args p) {
+        return pr::incircle_filter(p[0], p[1], p[2], p[3]);
+    }
+    static Sign reference(Args p) {
+        return pr::reference::incircle_differences(p[0], p[1], p[2], p[3]);
+    }
+    static Sign reference_raw(Args p) { return pr::reference::incircle(p[0], p[1], p[2], p[3]); }
+};
+
+struct Insphere {
+    static constexpr int kPoints = 5, kDims = 3;
+    static constexpr const char* kName = "insphere";
+    static Sign full(Args p) { return pr::insphere(p[0], p[1], p[2], p[3], p[4]); }
+    static Sign exact(Args p) { return pr::insphere_exact(p[0], p[1], p[2], p[3], p[4]); }
+    static std::optional<Sign> filter(Args p) {
+        return pr::insphere_filter(p[0], p[1], p[2], p[3], p[4]);
+    }
+    static Sign reference(Args p) {
+        return pr::reference::insphere_differences(p[0], p[1], p[2], p[3], p[4]);
+    }
+    static Sign reference_raw(Args p) {
+        return pr::reference::insphere(p[0], p[1], p[2], p[3], p[4]);
+    }
+};
+
+// ---------------------------------------------------------------------------------------------
+// The harness: every case is compared with the reference through the adaptive predicate, the
+// filter (which may abstain but never disagree) and, at a chosen rate, the _exact stage and the
+// raw-coordinate form of the reference.
+
+enum class Expect { Any, Zero };
+
+template <class P>
+class Harness {
+  public:
+    static constexpr int kCoords = P::kPoints * P::kDims;
+    using Case = std::array<double, kCoords>;
+
+    /// exact_every: check P::exact on every k-th case; raw_every: check the raw reference too.
+    void begin_suite(std::string name, long exact_every, long raw_every) {
+        suite_ = std::move(name);
+        exact_every_ = exact_every;
+        raw_every_ = raw_every;
+        suite_cases_ = suite_zeros_ = suite_filtered_ = suite_exact_ = suite_raw_ = 0;
+        suite_start_ = std::chrono::steady_clock::now();
+    }
+
+    void end_suite() {
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start_).count();
+        std::printf(
+            "  %-9s %-52s %7ld cases, %5.1f%% zero, %5.1f%% filtered, %7ld exact, %5ld raw, %5.2f "
+            "s\n",
+            P::kName, suite_.c_str(), suite_cases_,
+            100.0 * static_cast<double>(suite_zeros_) /
+                static_cast<double>(std::max(1L, suite_cases_)),
+            100.0 * static_cast<double>(suite_filtered_) /
+                static_cast<double>(std::max(1L, suite_cases_)),
+            suite_exact_, suite_raw_, seconds);
+        total_cases_ += suite_cases_;
+    }
+
+    void check(const Case& c, Expect expect = Expect::Any) {
+        const double* p[P::kPoints];
+        for (int i = 0; i < P::kPoints; ++i) p[i] = c.data() + i * P::kDims;
+        const Sign ref = P::reference(p);
+        ++suite_cases_;
+        if (ref == Sign::Zero) ++suite_zeros_;
+        if (expect == Expect::Zero && ref != Sign::Zero)
+            fail(c, "reference (an exact zero)", ref, ref);
+        const Sign full = P::full(p);
+        if (full != ref) fail(c, P::kName, full, ref);
+        if (const std::optional<Sign> f = P::filter(p)) {
+            ++suite_filtered_;
+            if (*f != ref) fail(c, "filter", *f, ref);
+        }
+        if (exact_every_ > 0 && suite_cases_ % exact_every_ == 0) {
+            ++suite_exact_;
+            const Sign e = P::exact(p);
+            if (e != ref) fail(c, "exact", e, ref);
+        }
+        if (raw_every_ > 0 && suite_cases_ % raw_every_ == 0) {
+            ++suite_raw_;
+            const Sign raw = P::reference_raw(p);
+            if (raw != ref) fail(c, "raw-form reference vs difference form", raw, ref);
+        }
+    }
+
+    long total_cases() const { return total_cases_; }
+
+    void expect_no_disagreement() const {
+        std::string text;
+        for (const std::string& m : messages_) text += m + "\n";
+        EXPECT_EQ(failures_, 0) << failures_ << " disagreements; the first ones:\n" << text;
+    }
+
+  private:
+    void fail(const Case& c, const char* what, Sign got, Sign expected) {
+        ++failures_;
+        if (messages_.size() >= 12) return;
+        std::string m = "[" + suite_ + "] " + what + " gave " + std::to_string(pr::to_int(got)) +
+                        ", reference " + std::to_string(pr::to_int(expected)) + " for " + P::kName +
+                        "(";
+        char buffer[64];
+        for (int i = 0; i < kCoords; ++i) {
+            std::snprintf(buffer, sizeof buffer, "%s%a", i == 0 ? "" : ", ",
+                          c[static_cast<std::size_t>(i)]);
+            m += buffer;
+        }
+        messages_.push_back(m + ")");
+    }
+
+    std::string suite_;
+    long exact_every_ = 1, raw_every_ = 0;
+    long suite_cases_ = 0, suite_zeros_ = 0, suite_filtered_ = 0, suite_exact_ = 0, suite_raw_ = 0;
+    std::chrono::steady_clock::time_point suite_start_;
+    long total_cases_ = 0;
+    long failures_ = 0;
+    std::vector<std::string> messages_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Random distributions.
+
+using Rng = std::mt19937_64;
+
+double uniform(Rng& rng, double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng);
+}
+
+int uniform_int(Rng& rng, int lo, int hi) {
+    return std::uniform_int_distribution<int>(lo, hi)(rng);
+}
+
+/// +-[1,2) * 2^e with e uniform in [lo, hi]: magnitudes spread over many binades.
+double mixed_magnitude(Rng& rng, int lo, int hi) {
+    const double m = std::ldexp(uniform(rng, 1.0, 2.0), uniform_int(rng, lo, hi));
+    return (rng() & 1u) != 0u ? m : -m;
+}
+
+/// +-[1,10) * 10^e with e uniform in [lo, hi].
+double decimal_magnitude(Rng& rng, int lo, int hi) {
+    const double m = uniform(rng, 1.0, 10.0) * std::pow(10.0, uniform_int(rng, lo, hi));
+    return (rng() & 1u) != 0u ? m : -m;
+}
+
+/// A random subnormal (or zero) double with either sign.
+double subnormal(Rng& rng) {
+    const auto mantissa = static_cast<double>(rng() >> 12);  // < 2^52: below the normal range
+    const double x = std::ldexp(mantissa, -1074);
+    return (rng() & 1u) != 0u ? x : -x;
+}
+
+/// Points of a nearly degenerate configuration of P, rounded to doubles: c on the line ab,
+/// d on the circle through a, b, c, d on the plane abc, e on the sphere. The results are then
+/// scaled by a power of two and translated far away, so that the differences are inexact.
+template <class P>
+void near_degenerate(Rng& rng, typename Harness<P>::Case& c) {
+    constexpr int kDims = P::kDims;
+    if constexpr (P::kPoints == 3 || (P::kPoints == 4 && kDims == 3)) {
+        // The last point is an affine combination of the others.
+        for (int i = 0; i < (P::kPoints - 1) * kDims; ++i) c[i] = uniform(rng, -1.0, 1.0);
+        const double s = uniform(rng, -2.0, 2.0), t = uniform(rng, -2.0, 2.0);
+        const int last = (P::kPoints - 1) * kDims;
+        for (int k = 0; k < kDims; ++k) {
+            double v = c[k] + s * (c[kDims + k] - c[k]);
+            if (P::kPoints == 4) v += t * (c[2 * kDims + k] - c[k]);
+            c[last + k] = v;
+        }
+    } else {
+        // Every point on one circle or sphere.
+        const double r = uniform(rng, 0.1, 1.0);
+        double center[3];
+        for (double& x : center) x = uniform(rng, -1.0, 1.0);
+        std::normal_distribution<double> gauss;
+        for (int i = 0; i < P::kPoints; ++i) {
+            double u[3] = {gauss(rng), gauss(rng), kDims == 3 ? gauss(rng) : 0.0};
+            const double norm = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+            for (int k = 0; k < kDims; ++k) c[i * kDims + k] = center[k] + r * u[k] / norm;
+        }
+    }
+    const int e = uniform_int(rng, -30, 30);
+    double offset[3];
+    for (double& x : offset) x = std::ldexp(uniform(rng, -1.0, 1.0), uniform_int(rng, 0, 30));
+    for (int i = 0; i < P::kPoints * kDims; ++i) c[i] = std::ldexp(c[i], e) + offset[i % kDims];
+}
+
+template <class P>
+void run_random(Harness<P>& h, std::uint64_t seed) {
+    Rng rng(seed);
+    typename Harness<P>::Case c;
+    const long n = scaled(kRandomCasesPerDistribution);
+    // _exact on every 4th random case (it is checked on every degenerate case below); the raw
+    // reference on ~10^4 cases overall, to tie the fast difference form to the raw definition.
+    const long exact_every = 4, raw_every = 100;
+
+    h.begin_suite("random: uniform in [-1,1]", exact_every, raw_every);
+    for (long i = 0; i < n; ++i) {
+        for (double& x : c) x = uniform(rng, -1.0, 1.0);
+        h.check(c);
+    }
+    h.end_suite();
+
+    h.begin_suite("random: integers in [0, 2^20]", exact_every, raw_every);
+    for (long i = 0; i < n; ++i) {
+        for (double& x : c) x = static_cast<double>(uniform_int(rng, 0, 1 << 20));
+        h.check(c);
+    }
+    h.end_suite();
+
+    h.begin_suite("random: mixed magnitudes 2^-60..2^60", exact_every, raw_every);
+    for (long i = 0; i < n; ++i) {
+        for (double& x : c) x = mixed_magnitude(rng, -60, 60);
+        h.check(c);
+    }
+    h.end_suite();
+
+    h.begin_suite("random: near-degenerate, rounded, translated", exact_every, raw_every);
+    for (long i = 0; i < n; ++i) {
+        near_degenerate<P>(rng, c);
+        h.check(c);
+    }
+    h.end_suite();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Exact degenerate configurations: integer point sets, then scaled exactly.
+
+using Point = std::array<double, 3>;
+using PointSet = std::vector<Point>;
+
+/// Collinear integer points c + t*u, t in -3..3.
+std::vector<PointSet> collinear_sets() {
+    const std::array<std::array<int, 2>, 6> directions = {
+        {{1, 0}, {0, 1}, {1, 1}, {1, -1}, {3, 7}, {-5, 2}}};
+    const std::array<std::array<int, 2>, 2> offsets = {{{0, 0}, {7, -4}}};
+    std::vector<PointSet> sets;
+    for (const auto& u : directions) {
+        for (const auto& o : offsets) {
+            PointSet s;
+            for (int t = -3; t <= 3; ++t)
+                s.push_back({double(o[0] + t * u[0]), double(o[1] + t * u[1]), 0.0});
+            sets.push_back(s);
+        }
+    }
+    return sets;
+}
+
+/// Coplanar integer points c + s*u + t*v, s, t in -2..2.
+std::vector<PointSet> coplanar_sets() {
+    const std::array<std::array<std::array<int, 3>, 2>, 3> planes = {
+        {{{{1, 0, 0}, {0, 1, 0}}}, {{{1, 2, 3}, {-2, 0, 1}}}, {{{5, -3, 0}, {1, 1, 7}}}}};
+    const std::array<std::array<int, 3>, 2> offsets = {{{0, 0, 0}, {3, -8, 5}}};
+    std::vector<PointSet> sets;
+    for (const auto& plane : planes) {
+        for (const auto& o : offsets) {
+            PointSet s;
+            for (int a = -2; a <= 2; ++a) {
+                for (int b = -2; b <= 2; ++b) {
+                    Point p{};
+                    for (int k = 0; k < 3; ++k)
+                        p[k] = double(o[k] + a * plane[0][k] + b * plane[1][k]);
+                    s.push_back(p);
+                }
+            }
+            sets.push_back(s);
+        }
+    }
+    return sets;
+}
+
+/// Every lattice point on the circle of radius r about an integer center: r = 5, 25, 65 carry
+/// the Pythagorean triples (3,4,5), (7,24,25), (15,20,25), (16,63,65), (33,56,65), (25,60,65)...
+std::vector<PointSet> cocircular_sets() {
+    const std::array<int, 3> radii = {5, 25, 65};
+    const std::array<std::array<int, 2>, 3> centers = {{{0, 0}, {1, -2}, {1000, 7}}};
+    std::vector<PointSet> sets;
+    for (const int r : radii) {
+        for (const auto& c : centers) {
+            PointSet s;
+            for (int x = -r; x <= r; ++x) {
+                for (int y = -r; y <= r; ++y) {
+                    if (x * x + y * y == r * r)
+                        s.push_back({double(c[0] + x), double(c[1] + y), 0.0});
+                }
+            }
+            sets.push_back(s);
+        }
+    }
+    return sets;
+}
+
+/// Every lattice point on the sphere of radius r: r = 3 (1,2,2), r = 9 (1,4,8), (4,4,7), (3,6,6).
+std::vector<PointSet> cospherical_sets() {
+    const std::array<int, 2> radii = {3, 9};
+    const std::array<std::array<int, 3>, 2> centers = {{{0, 0, 0}, {-5, 2, 11}}};
+    std::vector<PointSet> sets;
+    for (const int r : radii) {
+        for (const auto& c : centers) {
+            PointSet s;
+            for (int x = -r; x <= r; ++x) {
+                for (int y = -r; y <= r; ++y) {
+                    for (int z = -r; z <= r; ++z) {
+                        if (x * x + y * y + z * z == r * r) {
+                            s.push_back({double(c[0] + x), double(c[1] + y), double(c[2] + z)});
+                        }
+                    }
+                }
+            }
+            sets.push_back(s);
+        }
+    }
+    return sets;
+}
+
+/// x * 2^k when that is exact (a finite double that scales back to x), else nullopt.
+std::optional<double> scale_exactly(double x, int k) {
+    const double y = std::ldexp(x, k);
+    if (!std::isfinite(y) || std::ldexp(y, -k) != x) return std::nullopt;
+    return y;
+}
+
+/// The set multiplied by odd * 2^k when every coordinate stays exact.
+std::optional<PointSet> scaled_set(const PointSet& s, double odd, int k) {
+    PointSet out = s;
+    for (Point& p : out) {
+        for (double& x : p) {
+            const std::optional<double> y = scale_exactly(x * odd, k);  // x * odd: small integers
+            if (!y) return std::nullopt;
+            x = *y;
+        }
+    }
+    return out;
+}
+
+/// Powers of two from the subnormal range to near overflow, and odd multipliers.
+constexpr std::array<int, 16> kScaleExponents = {-1074, -1040, -1000, -700, -520, -300, -160, -60,
+                                                 0,     40,    160,   300,  520,  700,  900,  1000};
+constexpr std::array<double, 4> kOddMultipliers = {1.0, 3.0, 1025.0, 65537.0};
+
+template <class P>
+typename Harness<P>::Case tuple_case(const PointSet& s, const std::array<std::size_t, 5>& idx) {
+    typename Harness<P>::Case c;
+    for (int i = 0; i < P::kPoints; ++i) {
+        for (int k = 0; k < P::kDims; ++k)
+            c[i * P::kDims + k] = s[idx[static_cast<std::size_t>(i)]][k];
+    }
+    return c;
+}
+
+/// Random tuples of distinct points from each exactly degenerate set, at every exact scale: the
+/// predicate must be exactly Zero. Then every coordinate of a few tuples moved by 1..4 ulps
+/// each way, which must match the reference (mostly nonzero, of either sign).
+template <class P>
+void run_exact_configurations(Harness<P>& h, Rng& rng, const std::string& name,
+                              const std::vector<PointSet>& sets, long tuples_per_set,
+                              long ulp_tuples_per_set) {
+    std::vector<PointSet> scaled_sets;
+    for (const PointSet& s : sets) {
+        for (const int k : kScaleExponents) {
+            for (const double odd : kOddMultipliers) {
+                if (std::optional<PointSet> t = scaled_set(s, odd, k)) scaled_sets.push_back(*t);
+            }
+        }
+    }
+    h.begin_suite(name + ": exact zeros at all scales", 1, 8);
+    for (const PointSet& s : scaled_sets) {
+        std::vector<std::size_t> order(s.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        for (long t = 0; t < tuples_per_set; ++t) {
+            std::shuffle(order.begin(), order.end(), rng);
+            std::array<std::size_t, 5> idx{};
+            std::copy_n(order.begin(), P::kPoints, idx.begin());
+            h.check(tuple_case<P>(s, idx), Expect::Zero);
+        }
+    }
+    h.end_suite();
+    if (ulp_tuples_per_set == 0) return;
+
+    h.begin_suite(name + ": one coordinate moved 1..4 ulps", 1, 8);
+    for (const PointSet& s : scaled_sets) {
+        std::vector<std::size_t> order(s.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        for (long t = 0; t < ulp_tuples_per_set; ++t) {
+            std::shuffle(order.begin(), order.end(), rng);
+            std::array<std::size_t, 5> idx{};
+            std::copy_n(order.begin(), P::kPoints, idx.begin());
+            const typename Harness<P>::Case base = tuple_case<P>(s, idx);
+            for (int i = 0; i < P::kPoints * P::kDims; ++i) {
+                for (const double direction : {-kInfinity, kInfinity}) {
+                    typename Harness<P>::Case c = base;
+                    for (int steps = 1; steps <= 4; ++steps) {
+                        c[i] = std::nextafter(c[i], direction);
+                        h.check(c);
+                    }
+                }
+            }
+        }
+    }
+    h.end_suite();
+}
+
+/// Tuples drawn from an integer grid {lo..hi}^dims (many exact zeros and repeated points),
+/// scaled by 2^k; `count` random tuples, or every tuple when count is 0.
+template <class P>
+void run_grid(Harness<P>& h, Rng& rng, int lo, int hi, int k, long count) {
+    const int side = hi - lo + 1;
+    long points = 1;
+    for (int d = 0; d < P::kDims; ++d) points *= side;
+    auto coordinate = [&](long point, int dim) {
+        for (int d = 0; d < dim; ++d) point /= side;
+        return std::ldexp(static_cast<double>(lo + static_cast<int>(point % side)), k);
+    };
+    char name[96];
+    std::snprintf(name, sizeof name, "integer grid [%d,%d]^%d * 2^%d%s", lo, hi, P::kDims, k,
+                  count == 0 ? ", all tuples" : "");
+    h.begin_suite(name, 1, 16);
+    typename Harness<P>::Case c;
+    auto fill = [&](const std::array<long, 5>& pt) {
+        for (int i = 0; i < P::kPoints; ++i) {
+            for (int d = 0; d < P::kDims; ++d) c[i * P::kDims + d] = coordinate(pt[i], d);
+        }
+        h.check(c);
+    };
+    if (count == 0) {
+        long total = 1;
+        for (int i = 0; i < P::kPoints; ++i) total *= points;
+        for (long n = 0; n < total; ++n) {
+            std::array<long, 5> pt{};
+            long rest = n;
+            for (int i = 0; i < P::kPoints; ++i) {
+                pt[i] = rest % points;
+                rest /= points;
+            }
+            fill(pt);
+        }
+    } else {
+        std::uniform_int_distribution<long> pick(0, points - 1);
+        for (long n = 0; n < count; ++n) {
+            std::array<long, 5> pt{};
+            for (int i = 0; i < P::kPoints; ++i) pt[i] = pick(rng);
+            fill(pt);
+        }
+    }
+    h.end_suite();
+}
+
+/// Random coordinates at extreme magnitudes: huge, tiny, both mixed in one case, subnormal,
+/// and small subnormal integers (exact degeneracies below the normal range).
+template <class P>
+void run_extreme_magnitudes(Harness<P>& h, Rng& rng, long count) {
+    typename Harness<P>::Case c;
+    h.begin_suite("random huge: |x| in 1e150..1e300", 1, 8);
+    for (long n = 0; n < count; ++n) {
+        for (double& x : c) x = decimal_magnitude(rng, 150, 299);
+        h.check(c);
+    }
+    h.end_suite();
+    h.begin_suite("random tiny: |x| in 1e-300..1e-150", 1, 8);
+    for (long n = 0; n < count; ++n) {
+        for (double& x : c) x = decimal_magnitude(rng, -300, -150);
+        h.check(c);
+    }
+    h.end_suite();
+    h.begin_suite("random mixed huge, tiny, unit, zero", 1, 8);
+    for (long n = 0; n < count; ++n) {
+        for (double& x : c) {
+            switch (uniform_int(rng, 0, 3)) {
+                case 0:
+                    x = decimal_magnitude(rng, 150, 299);
+                    break;
+                case 1:
+                    x = decimal_magnitude(rng, -300, -150);
+                    break;
+                case 2:
+                    x = uniform(rng, -1.0, 1.0);
+                    break;
+                default:
+                    x = 0.0;
+                    break;
+            }
+        }
+        h.check(c);
+    }
+    h.end_suite();
+    h.begin_suite("random subnormals", 1, 8);
+    for (long n = 0; n < count; ++n) {
+        for (double& x : c) x = subnormal(rng);
+        h.check(c);
+    }
+    h.end_suite();
+    h.begin_suite("random subnormal integers k * 2^-1074, |k| <= 3", 1, 8);
+    for (long n = 0; n < count; ++n) {
+        for (double& x : c) x = std::ldexp(static_cast<double>(uniform_int(rng, -3, 3)), -1074);
+        h.check(c);
+    }
+    h.end_suite();
+}
+
+/// The near-degenerate lattices: one point walked over a square grid of ulp offsets around a
+/// point of an exactly degenerate configuration, at scale 2^k. `base` is the degenerate case;
+/// coordinates `ix` and `iy` of it move by i * step_x and j * step_y for i, j in [lo, hi] (the
+/// steps are multiples of the ulp there, so every walked value is exact).
+template <class P>
+void run_ulp_lattice(Harness<P>& h, const char* name, typename Harness<P>::Case base, int ix,
+                     double step_x, int iy, double step_y, int lo, int hi, int k) {
+    char label[96];
+    std::snprintf(label, sizeof label, "%s, scale 2^%d", name, k);
+    h.begin_suite(label, 1, 64);
+    for (double& x : base) x = std::ldexp(x, k);
+    const double x0 = base[ix], y0 = base[iy];
+    for (int i = lo; i <= hi; ++i) {
+        for (int j = lo; j <= hi; ++j) {
+            typename Harness<P>::Case c = base;
+            c[ix] = x0 + std::ldexp(i * step_x, k);  // exact: a multiple of the ulp near x0
+            c[iy] = y0 + std::ldexp(j * step_y, k);
+            h.check(c);
+        }
+    }
+    h.end_suite();
+}
+
+}  // namespace
+
+TEST(Predicates_Orient2d, AgreesWithGmpOnRandomAndDegenerateInputs) {
+    Harness<Orient2d> h;
+    run_random(h, 0x2d2d2d2dULL);
+    Rng rng(2);
+    run_grid(h, rng, -3, 3, 0, 0);  // all 7^6 ordered triples of a 7x7 grid
+    run_grid(h, rng, -5, 5, -1074, scaled(20000));
+    run_grid(h, rng, -5, 5, 1000, scaled(20000));
+    run_exact_configurations(h, rng, "collinear", collinear_sets(), 40, 2);
+    // The classic: a = (0.5 + i 2^-53, 0.5 + j 2^-53) against b = (12, 12), c = (24, 24).
+    const Harness<Orient2d>::Case line = {0.5, 0.5, 12.0, 12.0, 24.0, 24.0};
+    for (const int k : {0, -1000, 900}) {
+        run_ulp_lattice(h, "near-collinear 256x256 ulp lattice", line, 0, 0x1p-53, 1, 0x1p-53, 0,
+                        255, k);
+    }
+    run_extreme_magnitudes(h, rng, scaled(20000));
+    std::printf("  orient2d total: %ld cases\n", h.total_cases());
+    h.expect_no_disagreement();
+}
+
+TEST(Predicates_Incircle, AgreesWithGmpOnRandomAndDegenerateInputs) {
+    Harness<Incircle> h;
+    run_random(h, 0x1c1c1c1cULL);
+    Rng rng(3);
+    run_grid(h, rng, -1, 2, 0, 0);  // all 16^4 ordered quadruples of a 4x4 grid
+    run_grid(h, rng, -4, 4, 0, scaled(100000));
+    run_grid(h, rng, -4, 4, -1074, scaled(10000));
+    run_grid(h, rng, -4, 4, 1000, scaled(10000));
+    run_exact_configurations(h, rng, "cocircular", cocircular_sets(), 20, 1);
+    run_exact_configurations(h, rng, "collinear", collinear_sets(), 10, 1);
+    // a walked around (-4, 3) on the circle x^2 + y^2 = 25 through b, c, d.
+    const Harness<Incircle>::Case circle = {-4.0, 3.0, 5.0, 0.0, 0.0, 5.0, -3.0, -4.0};
+    for (const int k : {0, -500, 500}) {
+        run_ulp_lattice(h, "near-cocircular 128x128 ulp lattice", circle, 0, 0x1p-50, 1, 0x1p-51,
+                        -64, 63, k);
+    }
+    run_extreme_magnitudes(h, rng, scaled(20000));
+    std::printf("  incircle total: %ld cases\n", h.total_cases());
+    h.expect_no_disagreement();
+}
+
+TEST(Predicates_Orient3d, AgreesWithGmpOnRandomAndDegenerateInputs) {
+    Harness<Orient3d> h;
+    run_random(h, 0x3d3d3d3dULL);
+    Rng rng(4);
+    run_grid(h, rng, -1, 1, 0, scaled(150000));
+    run_grid(h, rng, 0, 3, 0, scaled(100000));
+    run_grid(h, rng, -2, 2, -1074, scaled(10000));
+    run_grid(h, rng, -2, 2, 1000, scaled(10000));
+    run_exact_configurations(h, rng, "coplanar", coplanar_sets(), 20, 1);
+    // a walked around (0.5, 0.5, 0.5) on the plane x = z through b, c, d.
+    const Harness<Orient3d>::Case plane = {0.5,  0.5,  0.5,  12.0, 12.0, 12.0,
+                                           24.0, 24.0, 24.0, 1.0,  0.0,  1.0};
+    for (const int k : {0, -600, 600}) {
+        run_ulp_lattice(h, "near-coplanar 128x128 ulp lattice", plane, 0, 0x1p-53, 1, 0x1p-53, 0,
+                        127, k);
+    }
+    run_extreme_magnitudes(h, rng, scaled(10000));
+    std::printf("  orient3d total: %ld cases\n", h.total_cases());
+    h.expect_no_disagreement();
+}
+
+TEST(Predicates_Insphere, AgreesWithGmpOnRandomAndDegenerateInputs) {
+    Harness<Insphere> h;
+    run_random(h, 0x5f5f5f5fULL);
+    Rng rng(5);
+    run_grid(h, rng, -1, 1, 0, scaled(50000));
+    run_grid(h, rng, 0, 3, 0, scaled(50000));
+    run_grid(h, rng, -2, 2, -1074, scaled(5000));
+    run_grid(h, rng, -2, 2, 1000, scaled(5000));
+    run_exact_configurations(h, rng, "cospherical", cospherical_sets(), 10, 1);
+    run_exact_configurations(h, rng, "coplanar", coplanar_sets(), 5, 0);
+    // a walked around (1, 4, 8) on the sphere of radius 9 through b, c, d, e.
+    const Harness<Insphere>::Case sphere = {1.0, 4.0,  8.0, 9.0, 0.0, 0.0,  0.0, 9.0,
+                                            0.0, -4.0, 4.0, 7.0, 8.0, -1.0, 4.0};
+    for (const int k : {0, -400, 400}) {
+        run_ulp_lattice(h, "near-cospherical 64x64 ulp lattice", sphere, 0, 0x1p-52, 1, 0x1p-50,
+                        -32, 31, k);
+    }
+    run_extreme_magnitudes(h, rng, scaled(5000));
+    std::printf("  insphere total: %ld cases\n", h.total_cases());
+    h.expect_no_disagreement();
+}

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: MIT
+// Predicate stage counters (predicates/stats.hpp): every call ends in exactly one stage, and
+// degenerate inputs reach the exact stages. Only meaningful in a build with
+// EXACTMESH_PREDICATE_STATS (the `stats` preset); elsewhere the tests skip.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+#include "predicates/incircle.hpp"
+#include "predicates/insphere.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/orient3d.hpp"
+#include "predicates/stats.hpp"
+
+namespace pr = exactmesh::predicates;
+
+namespace {
+
+std::uint64_t stage_sum(const pr::StageCounts& c) {
+    return c.filter + c.exact_differences + c.expansion + c.gmp;
+}
+
+/// Runs each predicate over random points, an integer grid (exact zeros: exact differences),
+/// near-degenerate points with inexact differences (expansions) and huge ones (GMP).
+void exercise_all_stages() {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    double p[5][3];
+    for (int n = 0; n < 2000; ++n) {
+        for (auto& q : p) {
+            for (double& x : q) x = unit(rng);
+        }
+        pr::orient2d(p[0], p[1], p[2]);
+        pr::incircle(p[0], p[1], p[2], p[3]);
+        pr::orient3d(p[0], p[1], p[2], p[3]);
+        pr::insphere(p[0], p[1], p[2], p[3], p[4]);
+    }
+    std::uniform_int_distribution<int> small(-1, 1);
+    for (int n = 0; n < 2000; ++n) {
+        for (auto& q : p) {
+            for (double& x : q) x = small(rng);
+        }
+        pr::orient2d(p[0], p[1], p[2]);
+        pr::incircle(p[0], p[1], p[2], p[3]);
+        pr::orient3d(p[0], p[1], p[2], p[3]);
+        pr::insphere(p[0], p[1], p[2], p[3], p[4]);
+    }
+    for (int n = 0; n < 256; ++n) {
+        // The near-collinear grid: a few ulps off the line through (12,12), (24,24); differences
+        // from 0.1-ish coordinates are inexact.
+        const double a[3] = {0.5 + std::ldexp(n % 16, -53), 0.5 + std::ldexp(n / 16, -53), 0.5};
+        const double b[3] = {12.0, 12.0, 12.0}, c[3] = {24.0, 24.0, 24.0};
+        const double d[3] = {0.1 + 0.2, 0.1 + 0.2, 0.3}, e[3] = {1.0 / 3.0, 1.0 / 3.0, 0.7};
+        pr::orient2d(a, b, d);
+        pr::incircle(a, b, c, d);
+        pr::orient3d(a, b, c, d);
+        pr::insphere(a, b, c, d, e);
+        // Huge coordinates: outside the expansion-safe range, so GMP decides.
+        const double h[3] = {1e300, 1e300, 1e300}, g[3] = {-1e300, -1e300, -1e300};
+        const double o[3] = {0.0, 0.0, 0.0}, k[3] = {1e300, -1e300, 0.0};
+        pr::orient2d(h, g, o);
+        pr::incircle(h, g, o, k);
+        pr::orient3d(h, g, o, k);
+        pr::insphere(h, g, o, k, a);
+    }
+}
+
+void expect_consistent(const char* name, const pr::StageCounts& c) {
+    SCOPED_TRACE(name);
+    EXPECT_GT(c.calls, 0u);
+    EXPECT_EQ(c.calls, stage_sum(c))
+        << "filter " << c.filter << " + exact_differences " << c.exact_differences
+        << " + expansion " << c.expansion << " + gmp " << c.gmp;
+    EXPECT_GT(c.filter, 0u);
+    EXPECT_GT(c.exact_differences, 0u) << "the integer grid has exact differences";
+    EXPECT_GT(c.expansion, 0u) << "the near-collinear grid has inexact differences";
+    EXPECT_GT(c.gmp, 0u) << "1e300 coordinates are outside the expansion-safe range";
+}
+
+}  // namespace
+
+TEST(Predicates_Stats, CallsEqualTheSumOfStageCountsAndDegenerateInputsReachExactStages) {
+    if (!pr::stats_enabled()) {
+        GTEST_SKIP() << "predicate statistics are compiled out; configure with "
+                        "-DEXACTMESH_PREDICATE_STATS=ON (the `stats` preset) to run this test";
+    }
+    pr::reset_thread_stats();
+    exercise_all_stages();
+    const pr::PredicateStats s = pr::thread_stats();
+    expect_consistent("orient2d", s.orient2d);
+    expect_consistent("incircle", s.incircle);
+    expect_consistent("orient3d", s.orient3d);
+    expect_consistent("insphere", s.insphere);
+    pr::reset_thread_stats();
+    EXPECT_EQ(pr::thread_stats().orient2d.calls, 0u);
+}
+
+TEST(Predicates_Stats, CountersStayZeroWhenCompiledOut) {
+    if (pr::stats_enabled()) GTEST_SKIP() << "statistics are compiled in; covered above";
+    pr::reset_thread_stats();
+    exercise_all_stages();
+    EXPECT_EQ(pr::thread_stats().orient2d.calls, 0u);
+    EXPECT_EQ(pr::thread_stats().insphere.calls, 0u);
+}
