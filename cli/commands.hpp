@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// The subcommands of the `exactmesh` command, one file per family. Each adds itself to the
+// application; its callback runs the work and throws exactmesh::Error on failure.
+#pragma once
+
+namespace CLI {
+class App;
+}  // namespace CLI
+
+namespace exactmesh::cli {
+
+/// Exit statuses of `exactmesh` (also listed in its --help footer).
+inline constexpr int kExitSuccess = 0;
+inline constexpr int kExitCheckFailed = 1;    ///< `check` found the mesh invalid or not Delaunay
+inline constexpr int kExitBadInput = 2;       ///< bad input file, option or usage
+inline constexpr int kExitInternalError = 3;  ///< a bug in exactmesh or out of memory
+
+/// `exactmesh triangulate IN.node -o OUT[.ele|.msh|.vtu|.svg] [--algorithm A] [--order O]
+/// [--seed S] [--stats]`.
+void add_triangulate_command(CLI::App& app);
+
+/// `exactmesh check IN.node IN.ele`: sets `exit_status` to kExitCheckFailed when the mesh
+/// fails the exact Delaunay check.
+void add_check_command(CLI::App& app, int& exit_status);
+
+}  // namespace exactmesh::cli

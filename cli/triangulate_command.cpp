@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: MIT
+// `exactmesh triangulate`: .node in, Delaunay triangulation out (.ele + .neigh, .msh, .vtu or
+// .svg by the output's extension), optionally with work counters and the construction time.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "io/gmsh_format.hpp"
+#include "io/svg_picture.hpp"
+#include "io/triangle_format.hpp"
+#include "io/vtk_format.hpp"
+#include "predicates/errors.hpp"
+#include "predicates/stats.hpp"
+#include "triangulation/delaunay_2d.hpp"
+
+namespace exactmesh::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace tri = exactmesh::triangulation;
+
+enum class OutputFormat { Ele, Msh, Vtu, Svg };
+
+struct TriangulateArguments {
+    std::string input;
+    std::string output;
+    std::string algorithm = "bowyer-watson";
+    std::string order = "brio";
+    std::uint64_t seed = 1;
+    bool stats = false;
+};
+
+tri::InsertionOrder insertion_order(const std::string& name) {
+    if (name == "given") return tri::InsertionOrder::Given;
+    if (name == "random") return tri::InsertionOrder::Random;
+    if (name == "brio") return tri::InsertionOrder::Brio;
+    throw InputError("unknown insertion order '" + name + "' (known: given, random, brio)");
+}
+
+OutputFormat output_format(const fs::path& output) {
+    std::string extension = output.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension == ".ele") return OutputFormat::Ele;
+    if (extension == ".msh") return OutputFormat::Msh;
+    if (extension == ".vtu") return OutputFormat::Vtu;
+    if (extension == ".svg") return OutputFormat::Svg;
+    throw InputError(output.string() + ": unsupported output extension '" + extension +
+                     "' (use .ele, .msh, .vtu or .svg)");
+}
+
+void print_stage_counts(const char* name, const predicates::StageCounts& counts) {
+    const std::string prefix = std::string(name) + ".";
+    std::cout << prefix << "calls: " << counts.calls << '\n'
+              << prefix << "filter: " << counts.filter << '\n'
+              << prefix << "exact_differences: " << counts.exact_differences << '\n'
+              << prefix << "expansion: " << counts.expansion << '\n'
+              << prefix << "gmp: " << counts.gmp << '\n';
+}
+
+void print_stats(const tri::Delaunay2Counters& counters, const predicates::PredicateStats& stats,
+                 double construct_seconds) {
+    std::cout << "points: " << counters.points << '\n'
+              << "duplicates: " << counters.duplicates << '\n'
+              << "orient_calls: " << counters.orient_calls << '\n'
+              << "incircle_calls: " << counters.incircle_calls << '\n'
+              << "walk_steps: " << counters.walk_steps << '\n'
+              << "cavity_triangles: " << counters.cavity_triangles << '\n'
+              << "flips: " << counters.flips << '\n'
+              << "candidates: " << counters.candidates << '\n';
+    if (predicates::stats_enabled()) {
+        print_stage_counts("orient2d", stats.orient2d);
+        print_stage_counts("incircle", stats.incircle);
+    } else {
+        std::cout << "predicate_stages: compiled out (configure with "
+                     "-DEXACTMESH_PREDICATE_STATS=ON)\n";
+    }
+    std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << construct_seconds
+              << '\n';
+}
+
+void run_triangulate(const TriangulateArguments& arguments) {
+    const fs::path output = arguments.output;
+    const OutputFormat format = output_format(output);  // before any work: fail fast
+    const tri::Delaunay2Function construct = tri::delaunay_2d_algorithm(arguments.algorithm);
+    const io::NodeFile nodes = io::read_node(arguments.input);
+
+    const tri::Delaunay2Options options{insertion_order(arguments.order), arguments.seed};
+    predicates::reset_thread_stats();
+    const auto start = std::chrono::steady_clock::now();
+    const tri::Delaunay2Result result = construct(nodes.xy, options);
+    const auto stop = std::chrono::steady_clock::now();
+    const predicates::PredicateStats stats = predicates::thread_stats();
+    const double construct_seconds = std::chrono::duration<double>(stop - start).count();
+
+    switch (format) {
+        case OutputFormat::Ele: {
+            fs::path neigh = output;
+            neigh.replace_extension(".neigh");
+            io::write_ele(output, result.triangles, nodes.first_index);
+            io::write_neigh(neigh, result.neighbors, nodes.first_index);
+            std::cout << "output: " << output.string() << '\n'
+                      << "output: " << neigh.string() << '\n';
+            break;
+        }
+        case OutputFormat::Msh:
+            io::write_msh(output, nodes.xy, result.triangles);
+            std::cout << "output: " << output.string() << '\n';
+            break;
+        case OutputFormat::Vtu:
+            io::write_vtu(output, nodes.xy, result.triangles, nodes.first_index);
+            std::cout << "output: " << output.string() << '\n';
+            break;
+        case OutputFormat::Svg: {
+            io::SvgOptions svg;
+            svg.title =
+                fs::path(arguments.input).filename().string() + " (" + arguments.algorithm + ")";
+            io::write_svg(output, nodes.xy, result.triangles, svg);
+            std::cout << "output: " << output.string() << '\n';
+            break;
+        }
+    }
+    std::cout << "triangles: " << result.triangles.size() / 3 << '\n';
+    if (arguments.stats) print_stats(result.counters, stats, construct_seconds);
+}
+
+}  // namespace
+
+void add_triangulate_command(CLI::App& app) {
+    auto arguments = std::make_shared<TriangulateArguments>();
+    CLI::App* command = app.add_subcommand(
+        "triangulate", "Delaunay triangulation of the points of a Triangle .node file");
+    command->add_option("input", arguments->input, "Points: a Triangle .node file")
+        ->required()
+        ->type_name("IN.node");
+    command
+        ->add_option("-o,--output", arguments->output,
+                     "Output; the extension picks the format: .ele (and .neigh beside it), "
+                     ".msh (Gmsh 4.1), .vtu (VTK), .svg (picture)")
+        ->required()
+        ->type_name("OUT");
+    command->add_option("--algorithm", arguments->algorithm, "Construction algorithm")
+        ->check(CLI::IsMember({"bowyer-watson", "green-sibson", "tanemura-merriam"}))
+        ->capture_default_str();
+    command->add_option("--order", arguments->order, "Insertion order")
+        ->check(CLI::IsMember({"given", "random", "brio"}))
+        ->capture_default_str();
+    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
+        ->capture_default_str();
+    command->add_flag("--stats", arguments->stats,
+                      "Print work counters, predicate stages and construct_seconds (the "
+                      "construction alone, without file I/O)");
+    command->callback([arguments] { run_triangulate(*arguments); });
+}
+
+}  // namespace exactmesh::cli

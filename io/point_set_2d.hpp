@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+// Plain data exchanged with mesh files: a 2D point set with its per-vertex attributes and
+// markers (Triangle's .node), and a triangle list (.ele). Indices are 0-based in memory; the
+// file's own numbering base is kept so that outputs number things as the input did.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "triangulation/mesh2.hpp"
+
+namespace exactmesh::io {
+
+using triangulation::TriIdx;
+using triangulation::VertIdx;
+
+/// The content of a Triangle .node file.
+struct NodeFile {
+    std::vector<double> xy;             ///< 2·#V coordinates x0 y0 x1 y1 ..., in file order
+    std::uint32_t first_index = 0;      ///< number of the first vertex in the file: 0 or 1
+    std::uint32_t attribute_count = 0;  ///< attributes per vertex
+    std::vector<double> attributes;     ///< attribute_count·#V, vertex after vertex
+    bool has_markers = false;           ///< whether each vertex carries a boundary marker
+    std::vector<std::int32_t> markers;  ///< #V boundary markers when has_markers, else empty
+
+    std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xy.size() / 2); }
+};
+
+/// The content of a Triangle .ele file, vertex numbers made 0-based.
+struct EleFile {
+    std::vector<VertIdx> triangles;     ///< 3·#T 0-based vertex indices (the corners)
+    std::uint32_t first_index = 0;      ///< number of the first triangle in the file: 0 or 1
+    std::uint32_t attribute_count = 0;  ///< attributes per triangle
+    std::vector<double> attributes;     ///< attribute_count·#T
+
+    std::uint32_t triangle_count() const {
+        return static_cast<std::uint32_t>(triangles.size() / 3);
+    }
+};
+
+}  // namespace exactmesh::io

@@ -1,0 +1,297 @@
+// SPDX-License-Identifier: MIT
+// Triangle's .node / .ele / .neigh formats (see triangle_format.hpp). Stricter than Triangle
+// itself, which reads numbers with strtod/strtol and silently ignores whatever follows them.
+#include "io/triangle_format.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "io/text_file.hpp"
+
+namespace exactmesh::io {
+
+namespace {
+
+using triangulation::kMaxPoints;
+using triangulation::kNone;
+
+constexpr std::uint64_t kMaxAttributes = std::numeric_limits<std::uint32_t>::max() - 8;
+/// 3 corner slots per triangle must be addressable by a 32-bit index.
+constexpr std::uint64_t kMaxTriangles = (std::uint64_t{kNone} - 1) / 3;
+
+std::string plural(std::uint64_t n, const char* singular, const char* plural_form) {
+    return std::to_string(n) + " " + (n == 1 ? singular : plural_form);
+}
+
+/// "number, x, y, 2 attributes, marker": what a line must hold, for error messages.
+std::string field_names(const char* leading, std::uint64_t attributes, bool marker) {
+    std::string names = leading;
+    if (attributes > 0) names += ", " + plural(attributes, "attribute", "attributes");
+    if (marker) names += ", marker";
+    return names;
+}
+
+void expect_field_count(const TextLines& lines, std::uint64_t expected, const std::string& names) {
+    const std::size_t got = lines.fields().size();
+    if (got != expected) {
+        lines.fail_quoting_line("expected " + plural(expected, "field", "fields") + " (" + names +
+                                "), got " + std::to_string(got));
+    }
+}
+
+/// The number of the next record: the first one sets the base (0 or 1), the others follow.
+std::uint32_t expect_record_number(const TextLines& lines, std::string_view token, const char* what,
+                                   std::uint64_t position, std::uint32_t& first_index) {
+    const std::uint64_t number = lines.parse_unsigned(token, std::string(what) + " number",
+                                                      std::numeric_limits<std::uint32_t>::max());
+    if (position == 0) {
+        if (number > 1) {
+            lines.fail("first " + std::string(what) + " number must be 0 or 1, got " +
+                       std::to_string(number));
+        }
+        first_index = static_cast<std::uint32_t>(number);
+    } else if (number != first_index + position) {
+        lines.fail(std::string(what) + " number " + std::to_string(number) +
+                   " out of sequence, expected " + std::to_string(first_index + position));
+    }
+    return static_cast<std::uint32_t>(number);
+}
+
+void expect_end(TextLines& lines, std::uint64_t count, const char* what_plural) {
+    if (lines.next_data_line()) {
+        lines.fail_quoting_line("unexpected data after the " + std::to_string(count) +
+                                " announced " + what_plural);
+    }
+}
+
+/// Capacity to reserve for `announced` records: never trust a header past what the text
+/// could hold (every record needs at least a few bytes), so a lying header allocates nothing.
+std::size_t plausible(std::uint64_t announced, std::size_t text_size,
+                      std::size_t min_record_bytes) {
+    return static_cast<std::size_t>(
+        std::min<std::uint64_t>(announced, text_size / min_record_bytes));
+}
+
+}  // namespace
+
+NodeFile parse_node(std::string_view text, const std::string& file_name) {
+    TextLines lines(text, file_name);
+    if (!lines.next_data_line()) {
+        lines.fail_at_end(
+            "no header line (expected '<#vertices> <dimension=2> <#attributes> <#boundary "
+            "markers>')");
+    }
+    const auto& header = lines.fields();
+    if (header.size() > 4) {
+        lines.fail_quoting_line("header has " + std::to_string(header.size()) +
+                                " fields, expected at most 4 (#vertices, dimension, #attributes, "
+                                "#boundary markers)");
+    }
+    const std::uint64_t count = lines.parse_unsigned(header[0], "vertex count", kMaxPoints);
+    if (header.size() > 1) {
+        const std::uint64_t dimension =
+            lines.parse_unsigned(header[1], "dimension", std::numeric_limits<std::uint64_t>::max());
+        if (dimension != 2) lines.fail("dimension must be 2, got " + std::to_string(dimension));
+    }
+    NodeFile nodes;
+    if (header.size() > 2) {
+        nodes.attribute_count = static_cast<std::uint32_t>(
+            lines.parse_unsigned(header[2], "attribute count", kMaxAttributes));
+    }
+    if (header.size() > 3) {
+        const std::uint64_t markers = lines.parse_unsigned(
+            header[3], "boundary marker count", std::numeric_limits<std::uint64_t>::max());
+        if (markers > 1) {
+            lines.fail("boundary marker count must be 0 or 1, got " + std::to_string(markers));
+        }
+        nodes.has_markers = markers == 1;
+    }
+    const std::uint64_t expected =
+        3 + std::uint64_t{nodes.attribute_count} + (nodes.has_markers ? 1 : 0);
+    const std::string names = field_names("number, x, y", nodes.attribute_count, nodes.has_markers);
+
+    nodes.xy.reserve(2 * plausible(count, text.size(), 6));
+    std::string attribute_name;
+    for (std::uint64_t i = 0; i < count; ++i) {
+        if (!lines.next_data_line()) {
+            lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
+                              plural(count, "announced vertex", "announced vertices"));
+        }
+        expect_field_count(lines, expected, names);
+        const auto& fields = lines.fields();
+        expect_record_number(lines, fields[0], "vertex", i, nodes.first_index);
+        nodes.xy.push_back(lines.parse_finite_double(fields[1], "x coordinate"));
+        nodes.xy.push_back(lines.parse_finite_double(fields[2], "y coordinate"));
+        for (std::uint32_t a = 0; a < nodes.attribute_count; ++a) {
+            attribute_name = "attribute " + std::to_string(a + 1);
+            nodes.attributes.push_back(lines.parse_finite_double(fields[3 + a], attribute_name));
+        }
+        if (nodes.has_markers) {
+            nodes.markers.push_back(static_cast<std::int32_t>(lines.parse_signed(
+                fields.back(), "boundary marker", std::numeric_limits<std::int32_t>::min(),
+                std::numeric_limits<std::int32_t>::max())));
+        }
+    }
+    expect_end(lines, count, count == 1 ? "vertex" : "vertices");
+    return nodes;
+}
+
+NodeFile read_node(const std::filesystem::path& path) {
+    return parse_node(read_text_file(path), path.string());
+}
+
+std::string format_node(const NodeFile& nodes) {
+    const std::uint32_t count = nodes.vertex_count();
+    std::string out;
+    out.reserve(48 * std::size_t{count} + 64);
+    append_unsigned(out, count);
+    out += " 2 ";
+    append_unsigned(out, nodes.attribute_count);
+    out += nodes.has_markers ? " 1\n" : " 0\n";
+    for (std::uint32_t v = 0; v < count; ++v) {
+        append_unsigned(out, std::uint64_t{v} + nodes.first_index);
+        out += ' ';
+        append_double(out, nodes.xy[2 * std::size_t{v}]);
+        out += ' ';
+        append_double(out, nodes.xy[2 * std::size_t{v} + 1]);
+        for (std::uint32_t a = 0; a < nodes.attribute_count; ++a) {
+            out += ' ';
+            append_double(out, nodes.attributes[std::size_t{v} * nodes.attribute_count + a]);
+        }
+        if (nodes.has_markers) {
+            out += ' ';
+            append_signed(out, nodes.markers[v]);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+void write_node(const std::filesystem::path& path, const NodeFile& nodes) {
+    write_text_file(path, format_node(nodes));
+}
+
+EleFile parse_ele(std::string_view text, const std::string& file_name,
+                  std::uint32_t vertex_first_index, std::uint32_t vertex_count) {
+    TextLines lines(text, file_name);
+    if (!lines.next_data_line()) {
+        lines.fail_at_end(
+            "no header line (expected '<#triangles> <nodes per triangle=3> <#attributes>')");
+    }
+    const auto& header = lines.fields();
+    if (header.size() > 3) {
+        lines.fail_quoting_line("header has " + std::to_string(header.size()) +
+                                " fields, expected at most 3 (#triangles, nodes per triangle, "
+                                "#attributes)");
+    }
+    const std::uint64_t count = lines.parse_unsigned(header[0], "triangle count", kMaxTriangles);
+    std::uint64_t corners = 3;
+    if (header.size() > 1) {
+        corners = lines.parse_unsigned(header[1], "nodes per triangle",
+                                       std::numeric_limits<std::uint64_t>::max());
+        if (corners != 3 && corners != 6) {
+            lines.fail("nodes per triangle must be 3 (or 6 for quadratic triangles), got " +
+                       std::to_string(corners));
+        }
+    }
+    EleFile ele;
+    if (header.size() > 2) {
+        ele.attribute_count = static_cast<std::uint32_t>(
+            lines.parse_unsigned(header[2], "attribute count", kMaxAttributes));
+    }
+    const std::uint64_t expected = 1 + corners + ele.attribute_count;
+    const std::string names =
+        field_names(corners == 3 ? "number, v1, v2, v3" : "number, v1, v2, v3, v4, v5, v6",
+                    ele.attribute_count, false);
+    const std::uint64_t last_vertex =
+        std::uint64_t{vertex_first_index} + vertex_count;  // exclusive
+    const std::string numbering = vertex_count == 0 ? std::string("the node file has no vertices")
+                                                    : "the node file numbers its vertices " +
+                                                          std::to_string(vertex_first_index) +
+                                                          " to " + std::to_string(last_vertex - 1);
+
+    ele.triangles.reserve(3 * plausible(count, text.size(), 8));
+    std::string attribute_name;
+    for (std::uint64_t i = 0; i < count; ++i) {
+        if (!lines.next_data_line()) {
+            lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
+                              plural(count, "announced triangle", "announced triangles"));
+        }
+        expect_field_count(lines, expected, names);
+        const auto& fields = lines.fields();
+        expect_record_number(lines, fields[0], "triangle", i, ele.first_index);
+        for (std::uint64_t k = 0; k < corners; ++k) {
+            const std::uint64_t v = lines.parse_unsigned(fields[1 + k], "vertex number",
+                                                         std::numeric_limits<std::uint32_t>::max());
+            if (v < vertex_first_index || v >= last_vertex) {
+                lines.fail("vertex number " + std::to_string(v) + " out of range: " + numbering);
+            }
+            if (k < 3) ele.triangles.push_back(static_cast<VertIdx>(v - vertex_first_index));
+        }
+        for (std::uint32_t a = 0; a < ele.attribute_count; ++a) {
+            attribute_name = "attribute " + std::to_string(a + 1);
+            ele.attributes.push_back(
+                lines.parse_finite_double(fields[1 + corners + a], attribute_name));
+        }
+    }
+    expect_end(lines, count, count == 1 ? "triangle" : "triangles");
+    return ele;
+}
+
+EleFile read_ele(const std::filesystem::path& path, std::uint32_t vertex_first_index,
+                 std::uint32_t vertex_count) {
+    return parse_ele(read_text_file(path), path.string(), vertex_first_index, vertex_count);
+}
+
+std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_index) {
+    const std::size_t count = triangles.size() / 3;
+    std::string out;
+    out.reserve(32 * count + 32);
+    append_unsigned(out, count);
+    out += " 3 0\n";
+    for (std::size_t t = 0; t < count; ++t) {
+        append_unsigned(out, t + first_index);
+        for (std::size_t k = 0; k < 3; ++k) {
+            out += ' ';
+            append_unsigned(out, std::uint64_t{triangles[3 * t + k]} + first_index);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+void write_ele(const std::filesystem::path& path, std::span<const VertIdx> triangles,
+               std::uint32_t first_index) {
+    write_text_file(path, format_ele(triangles, first_index));
+}
+
+std::string format_neigh(std::span<const TriIdx> neighbors_across_edges,
+                         std::uint32_t first_index) {
+    const std::size_t count = neighbors_across_edges.size() / 3;
+    std::string out;
+    out.reserve(32 * count + 32);
+    append_unsigned(out, count);
+    out += " 3\n";
+    for (std::size_t t = 0; t < count; ++t) {
+        append_unsigned(out, t + first_index);
+        for (std::size_t i = 0; i < 3; ++i) {
+            // Opposite vertex i lies the edge (v[i+1], v[i+2]), stored in slot (i+1) % 3.
+            const TriIdx neighbor = neighbors_across_edges[3 * t + (i + 1) % 3];
+            out += ' ';
+            if (neighbor == kNone) {
+                out += "-1";
+            } else {
+                append_unsigned(out, std::uint64_t{neighbor} + first_index);
+            }
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+void write_neigh(const std::filesystem::path& path, std::span<const TriIdx> neighbors_across_edges,
+                 std::uint32_t first_index) {
+    write_text_file(path, format_neigh(neighbors_across_edges, first_index));
+}
+
+}  // namespace exactmesh::io

@@ -1,0 +1,178 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# End-to-end tests of the `exactmesh` command on the fixtures in tests/data.
+# Usage: cli_test.sh <exactmesh binary> <tests/data dir> <scratch dir> <case>
+set -uo pipefail
+
+exactmesh=$1
+data=$2
+work=$3
+case_name=$4
+rm -rf "$work" && mkdir -p "$work" || exit 1
+
+failures=0
+fail() {
+  echo "FAIL: $*" >&2
+  failures=$((failures + 1))
+}
+
+# run <expected status> <args...>: runs exactmesh, keeps stdout/stderr in $work/out, $work/err.
+run() {
+  local expected=$1
+  shift
+  "$exactmesh" "$@" >"$work/out" 2>"$work/err"
+  local status=$?
+  if [[ $status -ne $expected ]]; then
+    fail "exactmesh $* exited $status, expected $expected; stdout: $(cat "$work/out"); stderr: $(cat "$work/err")"
+    return 1
+  fi
+  return 0
+}
+
+# expect_error <status> <pattern> <args...>: exactly one stderr line, starting with
+# "exactmesh: error: " and matching the extended regex <pattern>; nothing else, no trace.
+expect_error() {
+  local status=$1 pattern=$2
+  shift 2
+  run "$status" "$@" || return
+  local lines
+  lines=$(wc -l <"$work/err")
+  if [[ $lines -ne 1 ]]; then
+    fail "exactmesh $*: expected one stderr line, got $lines: $(cat "$work/err")"
+  elif ! grep -Eq "^exactmesh: error: " "$work/err"; then
+    fail "exactmesh $*: stderr does not start with 'exactmesh: error: ': $(cat "$work/err")"
+  elif ! grep -Eq -- "$pattern" "$work/err"; then
+    fail "exactmesh $*: stderr does not match /$pattern/: $(cat "$work/err")"
+  fi
+}
+
+triangulate_all_algorithms() {
+  local node algorithm order base
+  for node in square_with_center one_based_comments duplicates kite; do
+    for algorithm in bowyer-watson green-sibson tanemura-merriam; do
+      for order in given random brio; do
+        base="$work/$node.$algorithm.$order"
+        run 0 triangulate "$data/$node.node" -o "$base.ele" --algorithm "$algorithm" \
+          --order "$order" --seed 3 || continue
+        [[ -s "$base.ele" ]] || fail "$base.ele missing"
+        [[ -s "$base.neigh" ]] || fail "$base.neigh missing"
+        run 0 check "$data/$node.node" "$base.ele" &&
+          grep -Eq '^ok: [0-9]+ triangles, exact Delaunay$' "$work/out" ||
+          fail "check did not accept $base.ele: $(cat "$work/out")"
+      done
+    done
+  done
+  # Triangle counts: 4 around the centre; 6 for the 1-based file; duplicates are not vertices.
+  head -n1 "$work/square_with_center.bowyer-watson.brio.ele" | grep -q '^4 3 0$' ||
+    fail "square_with_center: expected 4 triangles"
+  head -n1 "$work/one_based_comments.green-sibson.given.ele" | grep -q '^6 3 0$' ||
+    fail "one_based_comments: expected 6 triangles"
+  # 1-based input gives 1-based output: triangle 1 first, vertex numbers in 1..6, never 0.
+  sed -n 2p "$work/one_based_comments.bowyer-watson.brio.ele" | grep -q '^1 ' ||
+    fail "one_based_comments: first triangle is not numbered 1"
+  if awk 'NR > 1 && ($2 < 1 || $3 < 1 || $4 < 1 || $2 > 6 || $3 > 6 || $4 > 6)' \
+    "$work/one_based_comments.tanemura-merriam.random.ele" | grep -q .; then
+    fail "one_based_comments: vertex numbers outside 1..6"
+  fi
+  # Duplicates (vertices 5 and 6 repeat 1 and 4) never appear; 4 triangles.
+  head -n1 "$work/duplicates.bowyer-watson.brio.ele" | grep -q '^4 3 0$' ||
+    fail "duplicates: expected 4 triangles"
+  if awk 'NR > 1 && ($2 == 5 || $3 == 5 || $4 == 5 || $2 == 6 || $3 == 6 || $4 == 6)' \
+    "$work/duplicates.green-sibson.random.ele" | grep -q .; then
+    fail "duplicates: a repeated point is used instead of its first occurrence"
+  fi
+  # .neigh: same count, -1 on the hull; the square has 4 hull edges.
+  head -n1 "$work/square_with_center.tanemura-merriam.given.neigh" | grep -q '^4 3$' ||
+    fail "square_with_center.neigh header"
+  [[ $(tail -n +2 "$work/square_with_center.tanemura-merriam.given.neigh" | grep -o -- '-1' | wc -l) -eq 4 ]] ||
+    fail "square_with_center.neigh: expected 4 hull sides"
+}
+
+output_formats() {
+  run 0 triangulate "$data/square_with_center.node" -o "$work/square.msh" || return
+  [[ $(head -n2 "$work/square.msh" | tail -n1) == "4.1 0 8" ]] || fail "msh header"
+  grep -q '^2 1 2 4$' "$work/square.msh" || fail "msh: no block of 4 triangles (type 2)"
+  run 0 triangulate "$data/one_based_comments.node" -o "$work/ob.vtu" --algorithm green-sibson
+  grep -q 'NumberOfPoints="6" NumberOfCells="6"' "$work/ob.vtu" || fail "vtu counts"
+  grep -q '</VTKFile>' "$work/ob.vtu" || fail "vtu not closed"
+  run 0 triangulate "$data/duplicates.node" -o "$work/dup.svg" --algorithm tanemura-merriam
+  grep -q '<svg xmlns="http://www.w3.org/2000/svg"' "$work/dup.svg" || fail "svg header"
+  grep -q '</svg>' "$work/dup.svg" || fail "svg not closed"
+  # Upper-case extensions work; unknown ones are bad usage (exit 2) and write nothing.
+  run 0 triangulate "$data/kite.node" -o "$work/kite.ELE" && [[ -s "$work/kite.neigh" ]] ||
+    fail "upper-case .ELE"
+  expect_error 2 "unsupported output extension '\.off'" triangulate "$data/kite.node" -o "$work/kite.off"
+  [[ ! -e "$work/kite.off" ]] || fail "kite.off written despite the error"
+}
+
+stats() {
+  run 0 triangulate "$data/square_with_center.node" -o "$work/s.ele" --stats || return
+  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" ||
+    fail "--stats: no 'construct_seconds: T' line: $(cat "$work/out")"
+  local name
+  for name in points duplicates orient_calls incircle_calls walk_steps cavity_triangles flips candidates; do
+    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "--stats: no '$name: N' line"
+  done
+  grep -q '^points: 5$' "$work/out" || fail "--stats: points is not 5"
+  grep -Eq '^(orient2d\.calls: [0-9]+|predicate_stages: compiled out.*)$' "$work/out" ||
+    fail "--stats: neither predicate stage counters nor 'compiled out'"
+  # Every stdout line is "name: value".
+  if grep -Ev '^[a-z0-9_.]+: ' "$work/out" | grep -q .; then
+    fail "--stats: a line is not 'name: value': $(grep -Ev '^[a-z0-9_.]+: ' "$work/out")"
+  fi
+  run 0 triangulate "$data/duplicates.node" -o "$work/d.ele" --stats --algorithm green-sibson &&
+    grep -q '^duplicates: 2$' "$work/out" || fail "--stats: duplicates is not 2"
+}
+
+bad_input() {
+  expect_error 2 'nan\.node:[0-9]+: non-finite y coordinate .nan.' \
+    triangulate "$data/nan.node" -o "$work/x.ele"
+  expect_error 2 'truncated\.node:[0-9]+: file ends after 3 of 5 announced vertices' \
+    triangulate "$data/truncated.node" -o "$work/x.ele"
+  expect_error 2 'nan\.node:[0-9]+: non-finite' check "$data/nan.node" "$data/kite_delaunay.ele"
+  expect_error 2 'kite_bad_vertex\.ele:4: vertex number 9 out of range' \
+    check "$data/kite.node" "$data/kite_bad_vertex.ele"
+  expect_error 2 'missing\.node: cannot open for reading' triangulate "$work/missing.node" -o "$work/x.ele"
+  expect_error 2 'missing\.ele: cannot open for reading' check "$data/kite.node" "$work/missing.ele"
+  expect_error 2 'not expected: --bogus' triangulate "$data/kite.node" -o "$work/x.ele" --bogus
+  expect_error 2 'foo not in' triangulate "$data/kite.node" -o "$work/x.ele" --algorithm foo
+  expect_error 2 'foo not in' triangulate "$data/kite.node" -o "$work/x.ele" --order foo
+  expect_error 2 'output is required' triangulate "$data/kite.node"
+  expect_error 2 'subcommand is required'
+  expect_error 2 'not expected: frobnicate' frobnicate
+  expect_error 2 'cannot open for writing' triangulate "$data/kite.node" -o "$work/no/such/dir/x.ele"
+  # A directory or a binary file instead of a .node.
+  expect_error 2 'is a directory' triangulate "$data" -o "$work/x.ele"
+  printf '\x00\x01\x02garbage\n' >"$work/binary.node"
+  expect_error 2 'binary\.node:1: vertex count .\\x00\\x01\\x02garbage. is not' \
+    triangulate "$work/binary.node" -o "$work/x.ele"
+  # Help is not an error.
+  run 0 --help && grep -q 'triangulate' "$work/out" || fail "--help"
+}
+
+check_rejects_non_delaunay() {
+  run 1 check "$data/kite.node" "$data/kite_not_delaunay.ele" || return
+  [[ $(wc -l <"$work/out") -eq 1 ]] || fail "check: expected one line: $(cat "$work/out")"
+  grep -Eq '^not ok: .*kite_not_delaunay\.ele: triangle 1 \(1, 2, 3\): not Delaunay, vertex 4 lies inside its circumcircle$' \
+    "$work/out" || fail "check: wrong report: $(cat "$work/out")"
+  run 0 check "$data/kite.node" "$data/kite_delaunay.ele" &&
+    grep -q '^ok: 2 triangles, exact Delaunay$' "$work/out" || fail "check rejected kite_delaunay.ele"
+  # Clockwise triangle: named in the file's numbering too.
+  printf '2 3 0\n1 1 2 4\n2 2 4 3\n' >"$work/clockwise.ele"
+  run 1 check "$data/kite.node" "$work/clockwise.ele" &&
+    grep -q 'triangle 2 (2, 4, 3): not counter-clockwise' "$work/out" ||
+    fail "check: clockwise triangle not named: $(cat "$work/out")"
+}
+
+case "$case_name" in
+  triangulate_all_algorithms | output_formats | stats | bad_input | check_rejects_non_delaunay)
+    "$case_name" ;;
+  *)
+    echo "unknown case '$case_name'" >&2
+    exit 2 ;;
+esac
+if ((failures > 0)); then
+  echo "$case_name: $failures failure(s)" >&2
+  exit 1
+fi
+echo "$case_name: ok"
