@@ -124,7 +124,8 @@ private:
 
     static std::uint32_t clamp_index(double t, std::uint32_t count) {
         if (!(t > 0)) return 0;
-        return std::min(static_cast<std::uint32_t>(t), count - 1);
+        if (!(t < count)) return count - 1;  // before the cast: huge values do not convert
+        return static_cast<std::uint32_t>(t);
     }
     std::size_t cell_of(const double* p) const {
         return static_cast<std::size_t>(row(p[1] * scale_)) * columns_ + column(p[0] * scale_);
@@ -204,10 +205,14 @@ public:
                 if (bx != ax) {
                     const double slope = (by - ay) / (bx - ax);
                     const double l0 = ay + (x0 - ax) * slope, l1 = ay + (x1 - ax) * slope;
+                    // The line's rounding error grows with the values met (steep edges):
+                    // a relative slack far above it keeps the clip conservative.
+                    const double slack =
+                        margin + 1e-9 * (std::fabs(l0) + std::fabs(l1) + std::fabs(ay));
                     if (bx > ax) {
-                        y_lo = std::max(y_lo, std::min(l0, l1) - margin);
+                        y_lo = std::max(y_lo, std::min(l0, l1) - slack);
                     } else {
-                        y_hi = std::min(y_hi, std::max(l0, l1) + margin);
+                        y_hi = std::min(y_hi, std::max(l0, l1) + slack);
                     }
                 } else if ((by > ay && x0 > ax + margin) || (by < ay && x1 < ax - margin)) {
                     continue;
