@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-#include <source_location>
 #include <string>
 #include <utility>
 
@@ -17,7 +16,7 @@ namespace exactmesh::io {
 class FormatError : public InputError {
   public:
     FormatError(std::string file, std::uint64_t line, std::string problem,
-                std::source_location where = std::source_location::current())
+                SourceLocation where = SourceLocation::current())
         : InputError(compose(file, line, problem), where),
           file_(std::move(file)),
           line_(line),

@@ -18,7 +18,6 @@
 #include <cstdio>
 #include <initializer_list>
 #include <limits>
-#include <source_location>
 #include <string>
 
 #include "predicates/errors.hpp"
@@ -54,7 +53,7 @@ std::string format_points(std::initializer_list<const double*> points, int dimen
 
 [[noreturn]] void fail(const char* construction, const char* problem,
                        std::initializer_list<const double*> points, int dimension,
-                       std::source_location where = std::source_location::current()) {
+                       SourceLocation where = SourceLocation::current()) {
     throw GeometryError(
         std::string(construction) + ": " + problem + ": " + format_points(points, dimension),
         where);
