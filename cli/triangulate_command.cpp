@@ -64,6 +64,7 @@ void print_stage_counts(const char* name, const predicates::StageCounts& counts)
     std::cout << prefix << "calls: " << counts.calls << '\n'
               << prefix << "filter: " << counts.filter << '\n'
               << prefix << "exact_differences: " << counts.exact_differences << '\n'
+              << prefix << "adaptive: " << counts.adaptive << '\n'
               << prefix << "expansion: " << counts.expansion << '\n'
               << prefix << "gmp: " << counts.gmp << '\n';
 }

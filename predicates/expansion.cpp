@@ -4,67 +4,44 @@
 
 namespace exactmesh::predicates {
 
-namespace {
-inline double at(const double* p, int i) noexcept { return p[i]; }
-}  // namespace
-
 int expansion_sum(int elen, const double* e, int flen, const double* f, double* h) noexcept {
-    // Merge e and f by magnitude, then accumulate with two_sum. The merged order makes
-    // fast_two_sum valid for the first step; round-to-even makes the result nonoverlapping
-    // [Shewchuk97 Theorem 13].
-    if (elen == 0) {
-        for (int i = 0; i < flen; ++i) h[i] = f[i];
-        return flen;
-    }
-    if (flen == 0) {
-        for (int i = 0; i < elen; ++i) h[i] = e[i];
-        return elen;
+    // Merge e and f by magnitude while accumulating with two_sum; round-to-even keeps the
+    // result nonoverlapping [Shewchuk97 Theorem 13]. The merge choice and the zero
+    // elimination are written without branches: their outcome is data-dependent and
+    // unpredictable, and mispredictions dominated the exact stages' cost.
+    if (elen == 0 || flen == 0) {
+        const double* g = elen == 0 ? f : e;
+        const int n = elen == 0 ? flen : elen;
+        for (int i = 0; i < n; ++i) h[i] = g[i];
+        return n;
     }
     int ei = 0, fi = 0, hi = 0;
-    double enow = at(e, 0), fnow = at(f, 0);
-    double q, qnew, hh;
-    if ((fnow > enow) == (fnow > -enow)) {
-        q = enow;
-        ++ei;
-    } else {
-        q = fnow;
-        ++fi;
-    }
-    if (ei < elen && fi < flen) {
-        enow = e[ei];
-        fnow = f[fi];
-        if ((fnow > enow) == (fnow > -enow)) {
-            fast_two_sum(enow, q, qnew, hh);
-            ++ei;
-        } else {
-            fast_two_sum(fnow, q, qnew, hh);
-            ++fi;
-        }
+    auto take_next = [&]() {
+        const double enow = e[ei], fnow = f[fi];
+        const bool from_e = std::fabs(fnow) > std::fabs(enow);
+        ei += from_e ? 1 : 0;
+        fi += from_e ? 0 : 1;
+        return from_e ? enow : fnow;
+    };
+    double q = take_next();
+    double qnew, hh;
+    while (ei < elen && fi < flen) {
+        two_sum(q, take_next(), qnew, hh);
         q = qnew;
-        if (hh != 0.0) h[hi++] = hh;
-        while (ei < elen && fi < flen) {
-            enow = e[ei];
-            fnow = f[fi];
-            if ((fnow > enow) == (fnow > -enow)) {
-                two_sum(q, enow, qnew, hh);
-                ++ei;
-            } else {
-                two_sum(q, fnow, qnew, hh);
-                ++fi;
-            }
-            q = qnew;
-            if (hh != 0.0) h[hi++] = hh;
-        }
+        h[hi] = hh;
+        hi += hh != 0.0 ? 1 : 0;
     }
-    while (ei < elen) {
-        two_sum(q, e[ei++], qnew, hh);
+    for (; ei < elen; ++ei) {
+        two_sum(q, e[ei], qnew, hh);
         q = qnew;
-        if (hh != 0.0) h[hi++] = hh;
+        h[hi] = hh;
+        hi += hh != 0.0 ? 1 : 0;
     }
-    while (fi < flen) {
-        two_sum(q, f[fi++], qnew, hh);
+    for (; fi < flen; ++fi) {
+        two_sum(q, f[fi], qnew, hh);
         q = qnew;
-        if (hh != 0.0) h[hi++] = hh;
+        h[hi] = hh;
+        hi += hh != 0.0 ? 1 : 0;
     }
     if (q != 0.0 || hi == 0) h[hi++] = q;
     if (hi == 1 && h[0] == 0.0) return 0;
@@ -76,13 +53,16 @@ int scale_expansion(int elen, const double* e, double b, double* h) noexcept {
     int hi = 0;
     double q, hh, product1, product0, sum;
     two_product(e[0], b, q, hh);
-    if (hh != 0.0) h[hi++] = hh;
+    h[hi] = hh;
+    hi += hh != 0.0 ? 1 : 0;
     for (int i = 1; i < elen; ++i) {
         two_product(e[i], b, product1, product0);
         two_sum(q, product0, sum, hh);
-        if (hh != 0.0) h[hi++] = hh;
+        h[hi] = hh;
+        hi += hh != 0.0 ? 1 : 0;
         fast_two_sum(product1, sum, q, hh);
-        if (hh != 0.0) h[hi++] = hh;
+        h[hi] = hh;
+        hi += hh != 0.0 ? 1 : 0;
     }
     if (q != 0.0 || hi == 0) h[hi++] = q;
     if (hi == 1 && h[0] == 0.0) return 0;

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Exact stages of incircle [Shewchuk97 §4.5]: B when the coordinate differences are exact
-// (96 components), C over raw coordinates as det [x y x^2+y^2 1] (384 components), D in GMP.
+// Exact stages of incircle [Shewchuk97 §4.5]: B the exact determinant of the rounded
+// differences (96 components; exact when they are, else certified by an error bound), C its
+// first-order tail terms, then the raw-coordinate det [x y x^2+y^2 1] (384 components), and GMP
+// out of range.
 #include "predicates/incircle.hpp"
 
+#include "predicates/adaptive_bounds.hpp"
 #include "predicates/exact_range.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/gmp_fallback.hpp"
@@ -46,15 +49,43 @@ Sign incircle_exact(const double* a, const double* b, const double* c, const dou
             exact = exact && tail[2 * r + k] == 0.0;
         }
     }
+    // Stage B: det [p-d, |p-d|^2] of the rounded differences, exactly, along the lift column.
+    const double* ad = diff;
+    const double* bd = diff + 2;
+    const double* cd = diff + 4;
+    // Minors are compressed first (2x2 determinants rarely need more than 2 components), which
+    // halves the work of the lift products.
+    const auto det_b = (lift_times(ad, compressed(minor_xy(bd, cd))) -
+                        lift_times(bd, compressed(minor_xy(ad, cd)))) +
+                       lift_times(cd, compressed(minor_xy(ad, bd)));
     if (exact) {
-        // det [p-d, |p-d|^2] expanded along the lift column.
         EM_STAT(incircle, exact_differences);
-        const double* ad = diff;
-        const double* bd = diff + 2;
-        const double* cd = diff + 4;
-        return (lift_times(ad, minor_xy(bd, cd)) - lift_times(bd, minor_xy(ad, cd)) +
-                lift_times(cd, minor_xy(ad, bd)))
-            .sign();
+        return det_b.sign();
+    }
+    const double adx = ad[0], ady = ad[1], bdx = bd[0], bdy = bd[1], cdx = cd[0], cdy = cd[1];
+    const double adxt = tail[0], adyt = tail[1], bdxt = tail[2], bdyt = tail[3];
+    const double cdxt = tail[4], cdyt = tail[5];
+    const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy;
+    const double clift = cdx * cdx + cdy * cdy;
+    const double permanent = (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * alift +
+                             (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * blift +
+                             (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * clift;
+    double det = det_b.approximate();
+    if (adaptive::certified(det, adaptive::icc_errbound_b * permanent)) {
+        EM_STAT(incircle, adaptive);
+        return sign_of(det);
+    }
+    // Stage C: the first-order terms of the difference tails.
+    det += ((adx * adx + ady * ady) * ((bdx * cdyt + cdy * bdxt) - (bdy * cdxt + cdx * bdyt)) +
+            2.0 * (adx * adxt + ady * adyt) * (bdx * cdy - bdy * cdx)) +
+           ((bdx * bdx + bdy * bdy) * ((cdx * adyt + ady * cdxt) - (cdy * adxt + adx * cdyt)) +
+            2.0 * (bdx * bdxt + bdy * bdyt) * (cdx * ady - cdy * adx)) +
+           ((cdx * cdx + cdy * cdy) * ((adx * bdyt + bdy * adxt) - (ady * bdxt + bdx * adyt)) +
+            2.0 * (cdx * cdxt + cdy * cdyt) * (adx * bdy - ady * bdx));
+    if (adaptive::certified(det, adaptive::icc_errbound_c * permanent +
+                                     adaptive::result_errbound * std::fabs(det))) {
+        EM_STAT(incircle, adaptive);
+        return sign_of(det);
     }
     // det [x y w 1] over rows a, b, c, d, expanded along the lift column w.
     EM_STAT(incircle, expansion);

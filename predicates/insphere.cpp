@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Exact stages of insphere [Shewchuk97 §4.6]: B when the coordinate differences are exact
-// (1152 components), C over raw coordinates as det [x y z w 1] (5760 components), D in GMP.
+// Exact stages of insphere [Shewchuk97 §4.6]: B the exact determinant of the rounded
+// differences (1152 components; exact when they are, else certified by an error bound), then
+// the raw-coordinate det [x y z w 1] (5760 components), and GMP out of range.
 #include "predicates/insphere.hpp"
 
+#include "predicates/adaptive_bounds.hpp"
 #include "predicates/exact_range.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/gmp_fallback.hpp"
@@ -54,16 +56,30 @@ Sign insphere_exact(const double* a, const double* b, const double* c, const dou
             exact = exact && tail[3 * r + k] == 0.0;
         }
     }
+    // Stage B: det [p-e, |p-e|^2] of the rounded differences, exactly, along the lift column.
+    const double* ae = diff;
+    const double* be = diff + 3;
+    const double* ce = diff + 6;
+    const double* de = diff + 9;
+    const auto det_b = (lift_times(be, det3_xyz(ae, ce, de)) - lift_times(ae, det3_xyz(be, ce, de))) +
+                       (lift_times(de, det3_xyz(ae, be, ce)) - lift_times(ce, det3_xyz(ae, be, de)));
     if (exact) {
-        // det [p-e, |p-e|^2] over rows a, b, c, d, expanded along the lift column.
         EM_STAT(insphere, exact_differences);
-        const double* ae = diff;
-        const double* be = diff + 3;
-        const double* ce = diff + 6;
-        const double* de = diff + 9;
-        return ((lift_times(be, det3_xyz(ae, ce, de)) - lift_times(ae, det3_xyz(be, ce, de))) +
-                (lift_times(de, det3_xyz(ae, be, ce)) - lift_times(ce, det3_xyz(ae, be, de))))
-            .sign();
+        return det_b.sign();
+    }
+    // The permanent: each lift times the permanent of the other rows' xyz minor.
+    auto lift = [](const double* p) { return p[0] * p[0] + p[1] * p[1] + p[2] * p[2]; };
+    auto permanent3 = [](const double* p, const double* q, const double* r) {
+        return (std::fabs(p[0] * q[1]) + std::fabs(q[0] * p[1])) * std::fabs(r[2]) +
+               (std::fabs(q[0] * r[1]) + std::fabs(r[0] * q[1])) * std::fabs(p[2]) +
+               (std::fabs(r[0] * p[1]) + std::fabs(p[0] * r[1])) * std::fabs(q[2]);
+    };
+    const double permanent = lift(ae) * permanent3(be, ce, de) + lift(be) * permanent3(ae, ce, de) +
+                             lift(ce) * permanent3(ae, be, de) + lift(de) * permanent3(ae, be, ce);
+    const double det = det_b.approximate();
+    if (adaptive::certified(det, adaptive::isp_errbound_b * permanent)) {
+        EM_STAT(insphere, adaptive);
+        return sign_of(det);
     }
     // det [x y z w 1] over rows a..e, expanded along the lift column w:
     // -w_a O(bcde) + w_b O(acde) - w_c O(abde) + w_d O(abce) - w_e O(abcd).

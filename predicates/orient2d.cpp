@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Exact stages of orient2d [Shewchuk97 §4.3]: B when the coordinate differences are exact
-// (a 4-component expansion), C over raw coordinates (12 components), D in GMP.
+// Exact stages of orient2d [Shewchuk97 §4.3]: B the exact determinant of the rounded
+// differences (exact when they are, else certified by an error bound), C first-order tail terms,
+// then the exact raw-coordinate expansion (12 components), and GMP out of range.
 #include "predicates/orient2d.hpp"
 
+#include "predicates/adaptive_bounds.hpp"
 #include "predicates/exact_range.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/gmp_fallback.hpp"
@@ -29,9 +31,24 @@ Sign orient2d_exact(const double* a, const double* b, const double* c) {
     two_diff(b[0], c[0], bdx, bdx_tail);
     two_diff(a[1], c[1], ady, ady_tail);
     two_diff(b[1], c[1], bdy, bdy_tail);
+    // Stage B: the exact determinant of the rounded differences; exact when they are.
+    const auto det_b = exact_product(adx, bdy) - exact_product(ady, bdx);
     if (adx_tail == 0.0 && bdx_tail == 0.0 && ady_tail == 0.0 && bdy_tail == 0.0) {
         EM_STAT(orient2d, exact_differences);
-        return (exact_product(adx, bdy) - exact_product(ady, bdx)).sign();
+        return det_b.sign();
+    }
+    const double detsum = std::fabs(adx * bdy) + std::fabs(ady * bdx);
+    double det = det_b.approximate();
+    if (adaptive::certified(det, adaptive::ccw_errbound_b * detsum)) {
+        EM_STAT(orient2d, adaptive);
+        return sign_of(det);
+    }
+    // Stage C: add the first-order terms of the difference tails.
+    det += (adx * bdy_tail + bdy * adx_tail) - (ady * bdx_tail + bdx * ady_tail);
+    if (adaptive::certified(det, adaptive::ccw_errbound_c * detsum +
+                                     adaptive::result_errbound * std::fabs(det))) {
+        EM_STAT(orient2d, adaptive);
+        return sign_of(det);
     }
     // det [x y 1] over rows a, b, c = m(a,b) + m(b,c) + m(c,a): no differences, no tails.
     EM_STAT(orient2d, expansion);

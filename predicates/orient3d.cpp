@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Exact stages of orient3d [Shewchuk97 §4.4]: B when the coordinate differences are exact
-// (24 components), C over raw coordinates as det [x y z 1] (96 components), D in GMP.
+// Exact stages of orient3d [Shewchuk97 §4.4]: B the exact determinant of the rounded
+// differences (exact when they are, else certified by an error bound), C its first-order tail
+// terms, then the raw-coordinate det [x y z 1] (96 components), and GMP out of range.
 #include "predicates/orient3d.hpp"
 
+#include "predicates/adaptive_bounds.hpp"
 #include "predicates/exact_range.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/gmp_fallback.hpp"
@@ -42,9 +44,35 @@ Sign orient3d_exact(const double* a, const double* b, const double* c, const dou
             exact = exact && tail[3 * r + k] == 0.0;
         }
     }
+    // Stage B: det [a-d; b-d; c-d] of the rounded differences, exactly.
+    const auto det_b = det3_xyz(diff, diff + 3, diff + 6);
     if (exact) {
         EM_STAT(orient3d, exact_differences);
-        return det3_xyz(diff, diff + 3, diff + 6).sign();
+        return det_b.sign();
+    }
+    const double adx = diff[0], ady = diff[1], adz = diff[2], bdx = diff[3], bdy = diff[4];
+    const double bdz = diff[5], cdx = diff[6], cdy = diff[7], cdz = diff[8];
+    const double adxt = tail[0], adyt = tail[1], adzt = tail[2], bdxt = tail[3], bdyt = tail[4];
+    const double bdzt = tail[5], cdxt = tail[6], cdyt = tail[7], cdzt = tail[8];
+    const double permanent = (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * std::fabs(adz) +
+                             (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * std::fabs(bdz) +
+                             (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * std::fabs(cdz);
+    double det = det_b.approximate();
+    if (adaptive::certified(det, adaptive::o3d_errbound_b * permanent)) {
+        EM_STAT(orient3d, adaptive);
+        return sign_of(det);
+    }
+    // Stage C: the first-order terms of the difference tails (expansion along z).
+    det += (adz * ((bdx * cdyt + cdy * bdxt) - (bdy * cdxt + cdx * bdyt)) +
+            adzt * (bdx * cdy - bdy * cdx)) +
+           (bdz * ((cdx * adyt + ady * cdxt) - (cdy * adxt + adx * cdyt)) +
+            bdzt * (cdx * ady - cdy * adx)) +
+           (cdz * ((adx * bdyt + bdy * adxt) - (ady * bdxt + bdx * adyt)) +
+            cdzt * (adx * bdy - ady * bdx));
+    if (adaptive::certified(det, adaptive::o3d_errbound_c * permanent +
+                                     adaptive::result_errbound * std::fabs(det))) {
+        EM_STAT(orient3d, adaptive);
+        return sign_of(det);
     }
     // det [x y z 1] over rows a, b, c, d, expanded along the column of ones.
     EM_STAT(orient3d, expansion);

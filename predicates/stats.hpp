@@ -8,11 +8,12 @@
 namespace exactmesh::predicates {
 
 /// Counters for one predicate. A call ends in exactly one stage, so
-/// calls == filter + exact_differences + expansion + gmp.
+/// calls == filter + exact_differences + adaptive + expansion + gmp.
 struct StageCounts {
     std::uint64_t calls = 0;
     std::uint64_t filter = 0;             ///< certified by the floating-point filter (stage A)
-    std::uint64_t exact_differences = 0;  ///< differences were exact: short expansion (stage B)
+    std::uint64_t exact_differences = 0;  ///< differences were exact: stage B is the exact value
+    std::uint64_t adaptive = 0;           ///< certified by the error bound of stage B or C
     std::uint64_t expansion = 0;          ///< full expansion arithmetic (stage C)
     std::uint64_t gmp = 0;                ///< outside the expansion-safe range: GMP (stage D)
 };

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+// Error bounds of the adaptive stages B and C [Shewchuk97 §4.2-4.5, Lemmas 3-5 and the
+// bounds of predicates.c's *adapt routines], eps = 2^-53. Stage B: the determinant of the
+// rounded differences is exact, so only the rounding of the differences is bounded. Stage C:
+// first-order tail terms are added in floating point. Valid without underflow, which the
+// expansion-safe range check before these stages guarantees (proofs/invariants/filters.md).
+// Unlike the stage-A constants these are not re-proved in Gappa: they are Shewchuk's.
+#pragma once
+
+namespace exactmesh::predicates::adaptive {
+
+inline constexpr double kEpsilon = 0x1p-53;
+inline constexpr double result_errbound = (3.0 + 8.0 * kEpsilon) * kEpsilon;
+inline constexpr double ccw_errbound_b = (2.0 + 12.0 * kEpsilon) * kEpsilon;
+inline constexpr double ccw_errbound_c = (9.0 + 64.0 * kEpsilon) * kEpsilon * kEpsilon;
+inline constexpr double o3d_errbound_b = (3.0 + 28.0 * kEpsilon) * kEpsilon;
+inline constexpr double o3d_errbound_c = (26.0 + 288.0 * kEpsilon) * kEpsilon * kEpsilon;
+inline constexpr double icc_errbound_b = (4.0 + 48.0 * kEpsilon) * kEpsilon;
+inline constexpr double icc_errbound_c = (44.0 + 576.0 * kEpsilon) * kEpsilon * kEpsilon;
+inline constexpr double isp_errbound_b = (5.0 + 72.0 * kEpsilon) * kEpsilon;
+
+/// True when |det| certainly exceeds the error bound (the sign of det is then exact).
+inline bool certified(double det, double errbound) { return det >= errbound || -det >= errbound; }
+
+}  // namespace exactmesh::predicates::adaptive
