@@ -9,6 +9,7 @@
 #include <cfloat>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "predicates/sign.hpp"
 
@@ -163,6 +164,29 @@ Expansion<2 * A> scale(const Expansion<A>& e, double b) noexcept {
     Expansion<2 * A> h;
     h.length = scale_expansion(e.length, e.components.data(), b, h.components.data());
     return h;
+}
+
+/// e * f exactly: the sum of e scaled by each component of f. Compress both first: the cost is
+/// proportional to the product of their lengths.
+template <int A, int B>
+Expansion<2 * A * B> product(const Expansion<A>& e, const Expansion<B>& f) noexcept {
+    // Accumulate alternately into the result and a scratch buffer (no whole-array swaps).
+    Expansion<2 * A * B> result, scratch;
+    Expansion<2 * A> term;
+    double* sum = result.components.data();
+    double* next = scratch.components.data();
+    int length = 0;
+    for (int i = 0; i < f.length; ++i) {
+        term.length = scale_expansion(e.length, e.components.data(),
+                                      f.components[static_cast<unsigned>(i)], term.components.data());
+        length = expansion_sum(length, sum, term.length, term.components.data(), next);
+        std::swap(sum, next);
+    }
+    if (sum != result.components.data()) {
+        for (int i = 0; i < length; ++i) result.components[static_cast<unsigned>(i)] = sum[i];
+    }
+    result.length = length;
+    return result;
 }
 
 /// e * b * b exactly (b squared without forming b^2 as a double).

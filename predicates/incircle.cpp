@@ -19,10 +19,15 @@ Expansion<4> minor_xy(const double* p, const double* q) noexcept {
     return exact_product(p[0], q[1]) - exact_product(q[0], p[1]);
 }
 
-/// (px^2 + py^2) * m exactly, without rounding the lift.
+/// px^2 + py^2 exactly, compressed (usually 2 components).
+Expansion<4> lift(const double* p) noexcept {
+    return compressed(exact_product(p[0], p[0]) + exact_product(p[1], p[1]));
+}
+
+/// (px^2 + py^2) * m exactly, as a product of two short compressed expansions.
 template <int N>
 Expansion<8 * N> lift_times(const double* p, const Expansion<N>& m) noexcept {
-    return scale_twice(m, p[0]) + scale_twice(m, p[1]);
+    return product(lift(p), compressed(m));
 }
 
 /// Raw det [x y 1] over rows p, q, r (orient2d without differences), compressed because it is

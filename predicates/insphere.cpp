@@ -24,10 +24,16 @@ Expansion<24> det3_xyz(const double* p, const double* q, const double* r) noexce
                       scale(minor_xy(p, q), r[2]));
 }
 
-/// (px^2 + py^2 + pz^2) * m exactly, without rounding the lift.
+/// px^2 + py^2 + pz^2 exactly, compressed (usually 2 components).
+Expansion<6> lift(const double* p) noexcept {
+    return compressed(exact_product(p[0], p[0]) + exact_product(p[1], p[1]) +
+                      exact_product(p[2], p[2]));
+}
+
+/// (px^2 + py^2 + pz^2) * m exactly, as a product of two short compressed expansions.
 template <int N>
 Expansion<12 * N> lift_times(const double* p, const Expansion<N>& m) noexcept {
-    return scale_twice(m, p[0]) + scale_twice(m, p[1]) + scale_twice(m, p[2]);
+    return product(lift(p), compressed(m));
 }
 
 /// Raw det [x y z 1] over rows p, q, r, s, given their four xyz minors.
