@@ -91,6 +91,7 @@ Delaunay2Result bowyer_watson_2d(std::span<const double> xy, const Delaunay2Opti
         const TriIdx t = core.locate(p);
         if (t == kNone) continue;  // duplicate, merged
         insert_point(core, cavity, p, t, ++stamp);
+        core.note_inserted(p);
     }
     return core.take_result();
 }

@@ -16,9 +16,17 @@ namespace exactmesh::triangulation {
 
 enum class InsertionOrder { Given, Random, Brio };
 
+/// Where the visibility walk of each insertion starts. Walk: the last inserted point's triangle
+/// (enough for BRIO and other spatially coherent orders). Grid: jump first to a triangle made
+/// by a recent insertion nearby, found in a multi-level grid of the bounding box (a bucketing
+/// equivalent of the Delaunay hierarchy: O(1) expected steps for random orders, where the
+/// plain walk costs O(sqrt n) per point). Auto: Grid for InsertionOrder::Random, else Walk.
+enum class PointLocation { Auto, Walk, Grid };
+
 struct Delaunay2Options {
     InsertionOrder order = InsertionOrder::Brio;
     std::uint64_t seed = 1;
+    PointLocation location = PointLocation::Auto;
 };
 
 /// Work counters of one construction (predicate stage counts come from predicates/stats.hpp).

@@ -39,7 +39,63 @@ namespace detail {
 
 Delaunay2Core::Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options)
     : Delaunay2Core(xy, (validate_points_2d(xy),
-                         insertion_order_2d(xy, options.order, options.seed))) {}
+                         insertion_order_2d(xy, options.order, options.seed))) {
+    build_jump_grid(options);
+}
+
+void Delaunay2Core::build_jump_grid(const Delaunay2Options& options) {
+    const bool wanted = options.location == PointLocation::Grid ||
+                        (options.location == PointLocation::Auto &&
+                         options.order == InsertionOrder::Random);
+    const std::uint32_t n = mesh.vertex_count();
+    if (!wanted || n < 64) return;
+    double lo_x = mesh.xy[0], hi_x = lo_x, lo_y = mesh.xy[1], hi_y = lo_y;
+    for (std::uint32_t v = 1; v < n; ++v) {
+        lo_x = std::min(lo_x, mesh.xy[2 * v]);
+        hi_x = std::max(hi_x, mesh.xy[2 * v]);
+        lo_y = std::min(lo_y, mesh.xy[2 * v + 1]);
+        hi_y = std::max(hi_y, mesh.xy[2 * v + 1]);
+    }
+    // About one finest cell per two points; halves keep huge extents from overflowing.
+    int depth = 1;
+    while (depth < 15 && (std::uint64_t{1} << (2 * depth)) < n / 2) ++depth;
+    jump_.enabled = true;
+    jump_.depth = depth;
+    jump_.min_x = lo_x / 2;
+    jump_.min_y = lo_y / 2;
+    const double cells = static_cast<double>(std::uint32_t{1} << depth);
+    const double half_x = hi_x / 2 - lo_x / 2, half_y = hi_y / 2 - lo_y / 2;
+    jump_.scale_x = half_x > 0 ? cells / half_x : 0.0;
+    jump_.scale_y = half_y > 0 ? cells / half_y : 0.0;
+    std::uint32_t offset = 0;
+    for (int l = 0; l <= depth; ++l) {
+        jump_.level_offset.push_back(offset);
+        offset += std::uint32_t{1} << (2 * l);
+    }
+    jump_.triangle.assign(offset, kNone);
+}
+
+void Delaunay2Core::jump_cell(VertIdx p, std::uint32_t& ix, std::uint32_t& iy) const {
+    const std::uint32_t top = (std::uint32_t{1} << jump_.depth) - 1;
+    auto index = [top](double t) -> std::uint32_t {
+        if (!(t > 0)) return 0;
+        if (!(t < top)) return top;
+        return static_cast<std::uint32_t>(t);
+    };
+    ix = index((mesh.point(p)[0] / 2 - jump_.min_x) * jump_.scale_x);
+    iy = index((mesh.point(p)[1] / 2 - jump_.min_y) * jump_.scale_y);
+}
+
+void Delaunay2Core::note_inserted(VertIdx p) {
+    if (!jump_.enabled) return;
+    std::uint32_t ix, iy;
+    jump_cell(p, ix, iy);
+    for (int l = 0; l <= jump_.depth; ++l) {
+        const int shift = jump_.depth - l;
+        jump_.triangle[jump_.level_offset[static_cast<unsigned>(l)] + ((iy >> shift) << l) +
+                       (ix >> shift)] = last_triangle;
+    }
+}
 
 Delaunay2Core::Delaunay2Core(std::span<const double> xy, std::vector<VertIdx> order) {
     validate_points_2d(xy);
@@ -151,6 +207,20 @@ bool Delaunay2Core::make_first_triangle(std::vector<bool>& skip) {
 
 TriIdx Delaunay2Core::locate(VertIdx p) {
     TriIdx t = last_triangle;
+    if (jump_.enabled) {
+        // The finest level whose cell around p has seen an insertion whose triangle lives.
+        std::uint32_t ix, iy;
+        jump_cell(p, ix, iy);
+        for (int l = jump_.depth; l >= 0; --l) {
+            const int shift = jump_.depth - l;
+            const TriIdx candidate = jump_.triangle[jump_.level_offset[static_cast<unsigned>(l)] +
+                                                   ((iy >> shift) << l) + (ix >> shift)];
+            if (candidate != kNone && !mesh.is_dead(candidate)) {
+                t = candidate;
+                break;
+            }
+        }
+    }
     if (mesh.is_dead(t)) {
         for (t = 0; mesh.is_dead(t); ++t) {
         }

@@ -56,7 +56,23 @@ public:
 
     TriIdx last_triangle = kNone;
 
+    /// Records that the triangle last_triangle was made by inserting p (for grid location).
+    void note_inserted(VertIdx p);
+
 private:
+    /// Multi-level grid over the bounding box: for each cell of each level, a triangle made by
+    /// the last insertion inside it. Levels 0..depth_, level l has 2^l x 2^l cells.
+    struct JumpGrid {
+        bool enabled = false;
+        int depth = 0;
+        double min_x = 0, min_y = 0, scale_x = 0, scale_y = 0;
+        std::vector<std::uint32_t> level_offset;
+        std::vector<TriIdx> triangle;
+    } jump_;
+    void build_jump_grid(const Delaunay2Options& options);
+    /// Finest-level cell coordinates of point p.
+    void jump_cell(VertIdx p, std::uint32_t& ix, std::uint32_t& iy) const;
+
     std::uint64_t rng_state_ = 0x9E3779B97F4A7C15ull;
     std::uint32_t random_offset();
 };

@@ -137,6 +137,7 @@ Delaunay2Result green_sibson_2d(std::span<const double> xy, const Delaunay2Optio
         const TriIdx t = core.locate(p);
         if (t == kNone) continue;  // duplicate, merged
         inserter.insert(p, t);
+        core.note_inserted(p);
     }
     return core.take_result();
 }
