@@ -290,14 +290,9 @@ private:
 };
 
 /// Convex hull, counter-clockwise, every point on the boundary kept (collinear ones too), by
-/// Andrew's monotone chain with exact orientation. Requires at least 3 non-collinear points.
-std::vector<VertIdx> convex_hull(detail::Delaunay2Core& core, std::vector<VertIdx> points) {
-    const TriMesh2& mesh = core.mesh;
-    std::sort(points.begin(), points.end(), [&mesh](VertIdx a, VertIdx b) {
-        const double* p = mesh.point(a);
-        const double* q = mesh.point(b);
-        return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]);
-    });
+/// Andrew's monotone chain with exact orientation. `points` must be distinct and sorted by
+/// (x, y). Requires at least 3 non-collinear points.
+std::vector<VertIdx> convex_hull(detail::Delaunay2Core& core, const std::vector<VertIdx>& points) {
     std::vector<VertIdx> hull;
     auto chain = [&](auto first, auto last) {
         const std::size_t base = hull.size();
