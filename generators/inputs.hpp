@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Point-set generators shared by tests, benchmarks and `exactmesh fuzz`: uniform, Gaussian
 // clusters, integer grids, exactly cocircular points, near-collinear by a few ulps, duplicates,
-// huge and tiny magnitudes, and an adversarial insertion order (a sorted parabola).
+// huge and tiny magnitudes, and an adversarial insertion order (a parabola, sorted).
 // Every generator is deterministic for a given (n, seed).
 #pragma once
 
@@ -21,7 +21,8 @@ enum class Distribution {
     Duplicates,      ///< uniform, a third of the points repeating earlier ones exactly
     Huge,            ///< uniform scaled by 1e290 (products overflow)
     Tiny,            ///< uniform scaled by 1e-290, with some subnormal coordinates
-    Parabola,        ///< (t, t^2) sorted by t: quadratic for Bowyer-Watson in the given order
+    Parabola,        ///< (t, t^2) by increasing t; inserted backwards (decreasing t), each
+                     ///< Bowyer-Watson cavity holds all earlier triangles: Theta(n^2)
 };
 
 inline constexpr Distribution kAllDistributions[] = {

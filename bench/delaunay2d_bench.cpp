@@ -1,0 +1,551 @@
+// SPDX-License-Identifier: MIT
+// 2D Delaunay construction benchmarks: Bowyer-Watson, Green-Sibson (insert + Lawson flips) and
+// Tanemura-Merriam (gift-wrapping) against CGAL's Delaunay_triangulation_2<Epick>, same points,
+// same run [Watson81, GreenSibson78, Merriam92; DESIGN.md "Benchmarks and reports"].
+//
+// Names: BM_<algo>/<distribution>/<order>/<n>, algo in {bowyer_watson, green_sibson,
+// tanemura_merriam, cgal}, distribution in {uniform, gaussian}, order in {brio, random} (none for
+// tanemura_merriam, which orders nothing; brio for cgal, whose range constructor spatially sorts
+// the points itself), n = 2^10 ... 2^EXACTMESH_BENCH_MAX_LOG2 (default 20, at most 22; the
+// random order stops at 2^EXACTMESH_BENCH_RANDOM_MAX_LOG2, default 16: see
+// random_max_log2_points). Each (algo, distribution, order) family is fitted with
+// Complexity(oNLogN). The adversary, n = 2^8 ... 2^14: BM_bowyer_watson/parabola/given/<n>
+// inserts points (t, t^2) sorted by decreasing t as given (Theta(n^2), oNSquared), against
+// BM_bowyer_watson/parabola/random/<n>, the same points shuffled (oN), and
+// BM_bowyer_watson/parabola/ascending/<n>, by increasing t as generate_points_2d lists them
+// (oN; see PointOrder for why that order is not the adversary).
+//
+// Only the construction is timed: inputs are generated once per (distribution, n) with a pinned
+// seed and cached, CGAL's points are converted once, and the triangulation is destroyed with the
+// timer paused (the same for ours and CGAL's; a pause costs about a microsecond, under 1% even at
+// n = 2^10). The heap is kept warm unless EXACTMESH_BENCH_COLD_HEAP=1 (see cold_heap). Counters,
+// recorded by the first timed construction of each benchmark: walk_steps/pt, incircle_calls/pt,
+// orient_calls/pt, flips/pt, cavity/pt, candidates/pt (ours only), triangles/pt (both: a
+// cross-check), peak_bytes and peak_bytes/pt (both; see "Heap accounting").
+// scripts/delaunay_report.py turns the JSON into report/delaunay2d.md and plots.
+//
+// Helper mode (no benchmark runs): `delaunay2d_bench --write_node=<distribution>,<n>,<path>`
+// writes generate_points_2d(distribution, n, kInputSeed) as a Triangle .node file, which the
+// report pictures with `exactmesh triangulate <path> -o picture.svg`.
+#include <benchmark/benchmark.h>
+#include <malloc.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <new>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "generators/inputs.hpp"
+#include "io/triangle_format.hpp"
+#include "triangulation/delaunay_2d.hpp"
+
+#if defined(EXACTMESH_WITH_CGAL)
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/version.h>
+#endif
+
+#ifndef EXACTMESH_BENCH_BUILD_TYPE
+#define EXACTMESH_BENCH_BUILD_TYPE "unknown"
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Heap accounting: peak live heap bytes of one construction.
+//
+// Every operator new/delete of the process is replaced (below, at global scope) by malloc/free
+// plus a running count of live bytes, as reported by malloc_usable_size, and of its maximum.
+// A construction's peak memory is then (maximum during the construction) - (live bytes before
+// it), with the result still alive at the end, so the output counts as it should. This is exact,
+// deterministic and the same rule for both sides: our std::vectors and CGAL's
+// Compact_container blocks and spatial-sort copy all come from operator new.
+// Rejected alternatives: VmHWM (peak RSS) growth, even in a forked child, undercounts because
+// malloc keeps the memory freed by earlier benchmarks resident and hands it out again, and
+// counts in pages; mallinfo2() gives current bytes, not the peak; glibc 2.36 has no malloc
+// hooks; Google Benchmark's MemoryManager would rerun each construction up to 16 times.
+// Not counted: direct malloc calls (GMP limbs in the rare exact predicate stages, both sides).
+// The bookkeeping costs two relaxed atomic updates per allocation; both sides allocate O(log n)
+// times (geometric growth), so the timings do not notice it.
+
+namespace {
+
+constinit std::atomic<std::size_t> heap_live_bytes{0};
+constinit std::atomic<std::size_t> heap_peak_bytes{0};
+
+void note_allocation(void* block) noexcept {
+    const std::size_t bytes = malloc_usable_size(block);
+    const std::size_t live = heap_live_bytes.fetch_add(bytes, std::memory_order_relaxed) + bytes;
+    std::size_t peak = heap_peak_bytes.load(std::memory_order_relaxed);
+    while (live > peak &&
+           !heap_peak_bytes.compare_exchange_weak(peak, live, std::memory_order_relaxed)) {
+    }
+}
+
+void release(void* block) noexcept {
+    if (block == nullptr) return;
+    heap_live_bytes.fetch_sub(malloc_usable_size(block), std::memory_order_relaxed);
+    std::free(block);
+}
+
+void* try_allocate(std::size_t size) noexcept {
+    void* block = std::malloc(size == 0 ? 1 : size);
+    if (block != nullptr) note_allocation(block);
+    return block;
+}
+
+void* try_allocate_aligned(std::size_t size, std::align_val_t alignment) noexcept {
+    const auto align = static_cast<std::size_t>(alignment);
+    // aligned_alloc wants a size that is a multiple of the alignment.
+    const std::size_t rounded = size == 0 ? align : (size + align - 1) / align * align;
+    void* block = std::aligned_alloc(align, rounded);
+    if (block != nullptr) note_allocation(block);
+    return block;
+}
+
+void* allocate(std::size_t size) {
+    if (void* block = try_allocate(size)) return block;
+    throw std::bad_alloc();
+}
+
+void* allocate_aligned(std::size_t size, std::align_val_t alignment) {
+    if (void* block = try_allocate_aligned(size, alignment)) return block;
+    throw std::bad_alloc();
+}
+
+}  // namespace
+
+// All replaceable forms, so that no allocation bypasses the count whichever form a library uses.
+void* operator new(std::size_t size) {
+    return allocate(size);
+}
+void* operator new[](std::size_t size) {
+    return allocate(size);
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    return try_allocate(size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+    return try_allocate(size);
+}
+void* operator new(std::size_t size, std::align_val_t alignment) {
+    return allocate_aligned(size, alignment);
+}
+void* operator new[](std::size_t size, std::align_val_t alignment) {
+    return allocate_aligned(size, alignment);
+}
+void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+    return try_allocate_aligned(size, alignment);
+}
+void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+    return try_allocate_aligned(size, alignment);
+}
+void operator delete(void* block) noexcept {
+    release(block);
+}
+void operator delete[](void* block) noexcept {
+    release(block);
+}
+void operator delete(void* block, std::size_t) noexcept {
+    release(block);
+}
+void operator delete[](void* block, std::size_t) noexcept {
+    release(block);
+}
+void operator delete(void* block, const std::nothrow_t&) noexcept {
+    release(block);
+}
+void operator delete[](void* block, const std::nothrow_t&) noexcept {
+    release(block);
+}
+void operator delete(void* block, std::align_val_t) noexcept {
+    release(block);
+}
+void operator delete[](void* block, std::align_val_t) noexcept {
+    release(block);
+}
+void operator delete(void* block, std::size_t, std::align_val_t) noexcept {
+    release(block);
+}
+void operator delete[](void* block, std::size_t, std::align_val_t) noexcept {
+    release(block);
+}
+void operator delete(void* block, std::align_val_t, const std::nothrow_t&) noexcept {
+    release(block);
+}
+void operator delete[](void* block, std::align_val_t, const std::nothrow_t&) noexcept {
+    release(block);
+}
+
+namespace {
+
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
+using gen::Distribution;
+
+/// Pinned seeds: the points of every (distribution, n), and the random/BRIO shuffles.
+constexpr std::uint64_t kInputSeed = 20240601;
+constexpr std::uint64_t kOrderSeed = 1;
+
+int log2_from_environment(const char* variable, int fallback, int lo, int hi) {
+    int log2_points = fallback;
+    if (const char* text = std::getenv(variable)) log2_points = std::atoi(text);
+    return std::clamp(log2_points, lo, hi);
+}
+
+/// 2^10 ... 2^max points: EXACTMESH_BENCH_MAX_LOG2 (default 20), clamped to [10, 22].
+int max_log2_points() {
+    static const int value = log2_from_environment("EXACTMESH_BENCH_MAX_LOG2", 20, 10, 22);
+    return value;
+}
+
+/// The random insertion order stops earlier: EXACTMESH_BENCH_RANDOM_MAX_LOG2 (default 16, at
+/// most max_log2_points()). Our visibility walk starts from the last inserted point, and with
+/// no location structure (hierarchy, history DAG) a random order walks ~sqrt(n) triangles per
+/// point, Theta(n^1.5) in all: about 35 s per construction at 2^20 on the reference machine.
+int random_max_log2_points() {
+    static const int value = std::min(
+        log2_from_environment("EXACTMESH_BENCH_RANDOM_MAX_LOG2", 16, 10, 22), max_log2_points());
+    return value;
+}
+
+/// The heap regime of the timed constructions. Warm (default): malloc never returns memory to
+/// the kernel (no mmap for large blocks, no trimming), so every construction reuses resident
+/// pages, whatever ran before it. Cold (EXACTMESH_BENCH_COLD_HEAP=1): the heap is trimmed after
+/// each construction (timer paused) and large blocks are mmapped, so each construction pays
+/// its page faults, as a one-shot run does. Without fixing one or the other, glibc's adaptive
+/// mmap/trim thresholds made the regime depend on the benchmarks run before: on the reference
+/// VM, where a page fault is expensive, the same construction measured 1x or 2x.
+bool cold_heap() {
+    static const bool value = [] {
+        const char* text = std::getenv("EXACTMESH_BENCH_COLD_HEAP");
+        return text != nullptr && std::string_view(text) == "1";
+    }();
+    return value;
+}
+
+void set_heap_regime() {
+    if (cold_heap()) return;
+    mallopt(M_MMAP_MAX, 0);
+    mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
+}
+
+/// Called with the timer paused after each construction is destroyed.
+void after_construction() {
+    if (cold_heap()) malloc_trim(0);
+}
+
+std::string points_name(Distribution distribution) {
+    return std::string(gen::distribution_name(distribution));
+}
+
+/// How the generated points are listed. Reversed exists for the parabola: generate_points_2d
+/// lists it by increasing t >= 0, and in that order each new point lies outside every
+/// circumcircle (the fourth intersection of a circle through (a, a^2), (b, b^2), (c, c^2) with
+/// the parabola is at t = -(a + b + c) < 0, so the circle holds only t in (b, c) beyond a), so
+/// Bowyer-Watson's cavity is one hull triangle per point: linear. Listed by decreasing t, each
+/// new point lies in every circumcircle, (-(a + b + c), a) containing it: the cavity is the
+/// whole triangulation, Theta(n^2) in all, the classic adversary.
+enum class PointOrder { AsGenerated, Reversed };
+
+#if defined(EXACTMESH_WITH_CGAL)
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalDelaunay = CGAL::Delaunay_triangulation_2<Epick>;
+using CgalPoint = Epick::Point_2;
+#endif
+
+/// The points of one (distribution, n), and the same points as CGAL's (made on first use).
+struct Input {
+    std::vector<double> xy;
+#if defined(EXACTMESH_WITH_CGAL)
+    std::vector<CgalPoint> points;
+#endif
+};
+
+/// Cached per (distribution, point order, n). Benchmarks are registered distribution by
+/// distribution, so the cache keeps one distribution only: at 2^22 points the sizes of one
+/// distribution take ~260 MB with their CGAL copies.
+Input& input_for(Distribution distribution, PointOrder point_order, std::uint32_t n) {
+    using Key = std::tuple<Distribution, PointOrder, std::uint32_t>;
+    static std::map<Key, std::unique_ptr<Input>> cache;
+    const Key key{distribution, point_order, n};
+    if (auto found = cache.find(key); found != cache.end()) return *found->second;
+    if (!cache.empty() && std::get<0>(cache.begin()->first) != distribution) cache.clear();
+    auto input = std::make_unique<Input>();
+    input->xy = gen::generate_points_2d(distribution, n, kInputSeed);
+    if (point_order == PointOrder::Reversed) {
+        for (std::size_t i = 0, j = n == 0 ? 0 : n - 1; i < j; ++i, --j) {
+            std::swap(input->xy[2 * i], input->xy[2 * j]);
+            std::swap(input->xy[2 * i + 1], input->xy[2 * j + 1]);
+        }
+    }
+    return *cache.emplace(key, std::move(input)).first->second;
+}
+
+#if defined(EXACTMESH_WITH_CGAL)
+const std::vector<CgalPoint>& cgal_points_for(Distribution distribution, std::uint32_t n) {
+    Input& input = input_for(distribution, PointOrder::AsGenerated, n);
+    if (input.points.empty()) {
+        input.points.reserve(n);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            input.points.emplace_back(input.xy[2 * std::size_t{i}],
+                                      input.xy[2 * std::size_t{i} + 1]);
+        }
+    }
+    return input.points;
+}
+#endif
+
+/// What one construction measured: the first timed iteration of each benchmark instance records
+/// it (the heap bookkeeping runs anyway; reading it costs two atomic accesses), and the later
+/// iterations and repetitions reuse it, since the constructions are deterministic.
+struct Measurement {
+    bool done = false;
+    double peak_bytes = 0;
+    double triangles = 0;
+    bool has_counters = false;
+    tri::Delaunay2Counters counters;
+};
+
+using MeasurementKey = std::tuple<std::string, std::string, std::string, std::uint32_t>;
+
+Measurement& measurement_for(const std::string& algorithm, const std::string& points,
+                             const std::string& order, std::uint32_t n) {
+    static std::map<MeasurementKey, Measurement> table;
+    return table[MeasurementKey{algorithm, points, order, n}];
+}
+
+/// Starts a peak-heap measurement: returns the live bytes now, the base of the growth.
+std::size_t start_heap_measurement() {
+    const std::size_t before = heap_live_bytes.load(std::memory_order_relaxed);
+    heap_peak_bytes.store(before, std::memory_order_relaxed);
+    return before;
+}
+
+double heap_growth_since(std::size_t before) {
+    return static_cast<double>(heap_peak_bytes.load(std::memory_order_relaxed) - before);
+}
+
+void set_counters(benchmark::State& state, const Measurement& m, std::uint32_t n) {
+    const double points = static_cast<double>(n);
+    auto per_point = [points](std::uint64_t count) { return static_cast<double>(count) / points; };
+    if (m.has_counters) {
+        const tri::Delaunay2Counters& c = m.counters;
+        state.counters["walk_steps/pt"] = per_point(c.walk_steps);
+        state.counters["incircle_calls/pt"] = per_point(c.incircle_calls);
+        state.counters["orient_calls/pt"] = per_point(c.orient_calls);
+        state.counters["flips/pt"] = per_point(c.flips);
+        state.counters["cavity/pt"] = per_point(c.cavity_triangles);
+        state.counters["candidates/pt"] = per_point(c.candidates);
+        state.counters["duplicates"] = static_cast<double>(c.duplicates);
+    }
+    state.counters["triangles/pt"] = m.triangles / points;
+    state.counters["peak_bytes"] = m.peak_bytes;
+    state.counters["peak_bytes/pt"] = m.peak_bytes / points;
+    state.SetComplexityN(static_cast<std::int64_t>(n));
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+}
+
+/// One family of our benchmarks: an algorithm by its registry name ("bowyer-watson", ...), its
+/// points, and the insertion order passed to it (`order_label` names it in the benchmark).
+struct Family {
+    std::string algorithm;
+    Distribution distribution;
+    tri::InsertionOrder order;
+    std::string order_label;
+    PointOrder point_order = PointOrder::AsGenerated;
+};
+
+void bm_exactmesh(benchmark::State& state, const Family& family) {
+    const auto n = static_cast<std::uint32_t>(state.range(0));
+    const tri::Delaunay2Function construct = tri::delaunay_2d_algorithm(family.algorithm);
+    const Input& input = input_for(family.distribution, family.point_order, n);
+    const tri::Delaunay2Options options{family.order, kOrderSeed};
+    Measurement& m =
+        measurement_for(family.algorithm, points_name(family.distribution), family.order_label, n);
+
+    for (auto _ : state) {
+        const bool measure = !m.done;
+        const std::size_t heap_before = measure ? start_heap_measurement() : 0;
+        {
+            tri::Delaunay2Result result = construct(input.xy, options);
+            benchmark::DoNotOptimize(result.triangles.data());
+            benchmark::ClobberMemory();
+            state.PauseTiming();  // the destructor runs paused
+            if (measure) {
+                m.peak_bytes = heap_growth_since(heap_before);
+                m.counters = result.counters;
+                m.has_counters = true;
+                m.triangles = static_cast<double>(result.triangles.size() / 3);
+                m.done = true;
+            }
+        }
+        after_construction();
+        state.ResumeTiming();
+    }
+    set_counters(state, m, n);
+}
+
+#if defined(EXACTMESH_WITH_CGAL)
+/// CGAL's range constructor: copies the points, spatially sorts them (Hilbert, BRIO-like
+/// rounds) and inserts each from the previous one's face.
+void bm_cgal(benchmark::State& state, Distribution distribution) {
+    const auto n = static_cast<std::uint32_t>(state.range(0));
+    const std::vector<CgalPoint>& points = cgal_points_for(distribution, n);
+    Measurement& m = measurement_for("cgal", points_name(distribution), "brio", n);
+
+    for (auto _ : state) {
+        const bool measure = !m.done;
+        const std::size_t heap_before = measure ? start_heap_measurement() : 0;
+        {
+            CgalDelaunay dt(points.begin(), points.end());
+            benchmark::DoNotOptimize(dt.number_of_faces());
+            benchmark::ClobberMemory();
+            state.PauseTiming();  // the destructor runs paused
+            if (measure) {
+                m.peak_bytes = heap_growth_since(heap_before);
+                m.triangles = static_cast<double>(dt.number_of_faces());
+                m.done = true;
+            }
+        }
+        after_construction();
+        state.ResumeTiming();
+    }
+    set_counters(state, m, n);
+}
+#endif
+
+std::string algorithm_label(const std::string& registry_name) {
+    std::string label = registry_name;
+    std::replace(label.begin(), label.end(), '-', '_');
+    return label;
+}
+
+void register_family(const Family& family, int min_log2, int max_log2, benchmark::BigO complexity) {
+    const std::string name = "BM_" + algorithm_label(family.algorithm) + "/" +
+                             points_name(family.distribution) + "/" + family.order_label;
+    benchmark::RegisterBenchmark(name.c_str(), &bm_exactmesh, family)
+        ->RangeMultiplier(2)
+        ->Range(std::int64_t{1} << min_log2, std::int64_t{1} << max_log2)
+        ->Complexity(complexity)
+        ->Unit(benchmark::kMillisecond);
+}
+
+void register_all() {
+    using tri::InsertionOrder;
+    const int max_log2 = max_log2_points();
+    for (const Distribution distribution : {Distribution::Uniform, Distribution::Gaussian}) {
+        for (const char* algorithm : {"bowyer-watson", "green-sibson"}) {
+            register_family({algorithm, distribution, InsertionOrder::Brio, "brio"}, 10, max_log2,
+                            benchmark::oNLogN);
+            register_family({algorithm, distribution, InsertionOrder::Random, "random"}, 10,
+                            random_max_log2_points(), benchmark::oNLogN);
+        }
+        register_family({"tanemura-merriam", distribution, InsertionOrder::Given, "none"}, 10,
+                        max_log2, benchmark::oNLogN);
+#if defined(EXACTMESH_WITH_CGAL)
+        const std::string name = "BM_cgal/" + points_name(distribution) + "/brio";
+        benchmark::RegisterBenchmark(name.c_str(), &bm_cgal, distribution)
+            ->RangeMultiplier(2)
+            ->Range(std::int64_t{1} << 10, std::int64_t{1} << max_log2)
+            ->Complexity(benchmark::oNLogN)
+            ->Unit(benchmark::kMillisecond);
+#endif
+    }
+    // The adversary (see PointOrder): the parabola by decreasing t, inserted as given, against
+    // the same points shuffled; and, for the record, as generated (increasing t), in that order.
+    const Distribution parabola = Distribution::Parabola;
+    register_family(
+        {"bowyer-watson", parabola, InsertionOrder::Given, "given", PointOrder::Reversed}, 8, 14,
+        benchmark::oNSquared);
+    register_family(
+        {"bowyer-watson", parabola, InsertionOrder::Random, "random", PointOrder::Reversed}, 8, 14,
+        benchmark::oN);
+    register_family(
+        {"bowyer-watson", parabola, InsertionOrder::Given, "ascending", PointOrder::AsGenerated}, 8,
+        14, benchmark::oN);
+}
+
+/// --write_node=<distribution>,<n>,<path>: returns the exit status.
+int write_node(std::string_view spec) {
+    const std::size_t first = spec.find(',');
+    const std::size_t second = first == std::string_view::npos ? first : spec.find(',', first + 1);
+    if (second == std::string_view::npos) {
+        std::cerr << "delaunay2d_bench: --write_node wants <distribution>,<n>,<path>\n";
+        return 2;
+    }
+    try {
+        const Distribution distribution = gen::distribution_from_name(spec.substr(0, first));
+        const std::string count(spec.substr(first + 1, second - first - 1));
+        const auto n = static_cast<std::uint32_t>(std::stoul(count));
+        exactmesh::io::NodeFile nodes;
+        nodes.xy = gen::generate_points_2d(distribution, n, kInputSeed);
+        exactmesh::io::write_node(std::string(spec.substr(second + 1)), nodes);
+    } catch (const std::exception& error) {
+        std::cerr << "delaunay2d_bench: --write_node: " << error.what() << '\n';
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    constexpr std::string_view kWriteNode = "--write_node=";
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view argument = argv[i];
+        if (argument.starts_with(kWriteNode)) return write_node(argument.substr(kWriteNode.size()));
+    }
+
+    // A short default min_time keeps the suite within a few minutes (a construction of 2^20
+    // points runs once per repetition anyway); flags given on the command line come later and win.
+    std::vector<char*> args(argv, argv + argc);
+    std::string min_time = "--benchmark_min_time=0.1";
+    args.insert(args.begin() + 1, min_time.data());
+    int args_count = static_cast<int>(args.size());
+
+    set_heap_regime();
+    register_all();
+
+    benchmark::AddCustomContext("exactmesh_build_type", EXACTMESH_BENCH_BUILD_TYPE);
+    benchmark::AddCustomContext("exactmesh_max_log2_points", std::to_string(max_log2_points()));
+    benchmark::AddCustomContext("exactmesh_random_max_log2_points",
+                                std::to_string(random_max_log2_points()));
+    benchmark::AddCustomContext("exactmesh_heap", cold_heap() ? "cold" : "warm");
+    bool interleaved = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view argument = argv[i];
+        if (argument.starts_with("--benchmark_enable_random_interleaving")) {
+            interleaved = argument.ends_with("=true") || argument.ends_with("=1") ||
+                          argument == "--benchmark_enable_random_interleaving";
+        }
+    }
+    benchmark::AddCustomContext("exactmesh_interleaved", interleaved ? "yes" : "no");
+    benchmark::AddCustomContext("exactmesh_input_seed", std::to_string(kInputSeed));
+    benchmark::AddCustomContext("exactmesh_order_seed", std::to_string(kOrderSeed));
+    benchmark::AddCustomContext("exactmesh_peak_memory",
+                                "peak live heap bytes (operator new, malloc_usable_size)");
+#if defined(__clang__)
+    benchmark::AddCustomContext("exactmesh_compiler", "clang " __clang_version__);
+#elif defined(__GNUC__)
+    benchmark::AddCustomContext("exactmesh_compiler", "gcc " __VERSION__);
+#endif
+#if defined(EXACTMESH_WITH_CGAL)
+    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
+#endif
+
+    benchmark::Initialize(&args_count, args.data());
+    if (benchmark::ReportUnrecognizedArguments(args_count, args.data())) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
