@@ -11,7 +11,7 @@ namespace exactmesh::cli {
 
 /// Exit statuses of `exactmesh` (also listed in its --help footer).
 inline constexpr int kExitSuccess = 0;
-inline constexpr int kExitCheckFailed = 1;    ///< `check` found the mesh invalid or not Delaunay
+inline constexpr int kExitCheckFailed = 1;    ///< `check` or `fuzz` found a problem
 inline constexpr int kExitBadInput = 2;       ///< bad input file, option or usage
 inline constexpr int kExitInternalError = 3;  ///< a bug in exactmesh or out of memory
 
@@ -22,5 +22,9 @@ void add_triangulate_command(CLI::App& app);
 /// `exactmesh check IN.node IN.ele`: sets `exit_status` to kExitCheckFailed when the mesh
 /// fails the exact Delaunay check.
 void add_check_command(CLI::App& app, int& exit_status);
+
+/// `exactmesh fuzz --minutes M [--seed S] [--out DIR]`: sets `exit_status` to kExitCheckFailed
+/// when any case fails (each failing input is minimized and saved in DIR).
+void add_fuzz_command(CLI::App& app, int& exit_status);
 
 }  // namespace exactmesh::cli

@@ -34,11 +34,12 @@ int main(int argc, char** argv) {
         // No require_subcommand(): CLI11 would then report a misspelt subcommand as a missing
         // one; without it, `exactmesh frobnicate` is an unexpected argument, as it should be.
         app.footer(
-            "Exit status: 0 success, 1 `check` found a problem, 2 bad input or usage, "
+            "Exit status: 0 success, 1 `check` or `fuzz` found a problem, 2 bad input or usage, "
             "3 internal error.");
         int exit_status = kExitSuccess;
         add_triangulate_command(app);
         add_check_command(app, exit_status);
+        add_fuzz_command(app, exit_status);
         try {
             app.parse(argc, argv);
         } catch (const CLI::ParseError& error) {
@@ -48,7 +49,7 @@ int main(int argc, char** argv) {
         }
         if (app.get_subcommands().empty()) {
             return report_error(
-                "a subcommand is required: triangulate or check (see exactmesh --help)",
+                "a subcommand is required: triangulate, check or fuzz (see exactmesh --help)",
                 kExitBadInput);
         }
         return exit_status;

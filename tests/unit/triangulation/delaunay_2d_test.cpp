@@ -235,3 +235,130 @@ TEST(Triangulation_Delaunay2, CheckRejectsNonDelaunayAndBrokenTopology) {
     EXPECT_FALSE(missing.ok);
     EXPECT_NE(missing.problem.find("point 3"), std::string::npos) << missing.problem;
 }
+
+TEST(Triangulation_Check2, NoTrianglesPassOnlyForCollinearPoints) {
+    // Three points on y = x and one off it: a triangulation must have triangles.
+    const std::vector<double> off_line = {0, 0, 1, 1, 2, 2, 3, 2};
+    const std::vector<tri::VertIdx> none;
+    for (const tri::CheckReport& report :
+         {tri::check_topology_2d(off_line, none), tri::check_delaunay_2d(off_line, none)}) {
+        EXPECT_FALSE(report.ok);
+        EXPECT_EQ(report.problem, "no triangles, but points 0, 1, 3 are not collinear");
+        EXPECT_EQ(report.vertices, (std::vector<tri::VertIdx>{0, 1, 3}));
+        EXPECT_EQ(report.triangle, tri::kNone);
+    }
+    // Duplicates of the first point do not count as the second one.
+    const std::vector<double> repeated_first = {5, 5, 5, 5, 6, 5, 5, 6};
+    const tri::CheckReport repeated = tri::check_topology_2d(repeated_first, none);
+    EXPECT_FALSE(repeated.ok);
+    EXPECT_EQ(repeated.vertices, (std::vector<tri::VertIdx>{0, 2, 3})) << repeated.problem;
+    // Collinear points (with duplicates), fewer than three distinct points, no points: no
+    // triangle is right, and that is what every algorithm returns.
+    const std::vector<std::vector<double>> degenerate = {
+        {0, 0, 2, 2, 1, 1, 2, 2, 3, 3, 0, 0}, {0, 5, 0, 1, 0, 3}, {1, 1, 1, 1, 2, 3},
+        {1, 1, 1, 1}, {7, 7}, {}};
+    for (const std::vector<double>& xy : degenerate) {
+        EXPECT_TRUE(tri::check_delaunay_2d(xy, none).ok) << xy.size();
+        for (const Named& algorithm : kAlgorithms) {
+            const tri::Delaunay2Result r = algorithm.build(xy, {});
+            EXPECT_TRUE(r.triangles.empty()) << algorithm.name;
+            EXPECT_TRUE(tri::check_delaunay_2d(xy, r.triangles).ok) << algorithm.name;
+        }
+    }
+    // A triangulation that lost its only triangle is caught.
+    const std::vector<double> three = {0, 0, 1, 0, 0, 1};
+    EXPECT_TRUE(tri::check_delaunay_2d(three, tri::bowyer_watson_2d(three).triangles).ok);
+    EXPECT_FALSE(tri::check_delaunay_2d(three, none).ok);
+}
+
+TEST(Triangulation_Check2, MessagesUseTheCallersNumbering) {
+    // Kite: 0 (0,0), 1 (4,0), 2 (4,1), 3 (0,1.5); 1-based names are one more.
+    const std::vector<double> xy = {0, 0, 4, 0, 4, 1, 0, 1.5};
+    const tri::CheckNumbering one_based{1, 1};
+    const tri::CheckReport clockwise =
+        tri::check_topology_2d(xy, std::vector<tri::VertIdx>{0, 1, 2, 0, 3, 2}, one_based);
+    EXPECT_FALSE(clockwise.ok);
+    EXPECT_EQ(clockwise.triangle, 1u);  // the index stays 0-based
+    EXPECT_EQ(clockwise.problem, "triangle 2 (1, 4, 3): not counter-clockwise (orient2d <= 0)");
+    const tri::CheckReport zero_based =
+        tri::check_topology_2d(xy, std::vector<tri::VertIdx>{0, 1, 2, 0, 3, 2});
+    EXPECT_EQ(zero_based.problem, "triangle 1 (0, 3, 2): not counter-clockwise (orient2d <= 0)");
+
+    const tri::CheckReport missing =
+        tri::check_topology_2d(xy, std::vector<tri::VertIdx>{0, 1, 2}, one_based);
+    EXPECT_EQ(missing.problem, "point 4 is not a vertex of any triangle");
+    EXPECT_EQ(missing.vertices, (std::vector<tri::VertIdx>{3}));
+
+    // Vertex and triangle bases are independent.
+    const tri::CheckReport none = tri::check_topology_2d(xy, std::vector<tri::VertIdx>{}, {1, 0});
+    EXPECT_EQ(none.problem, "no triangles, but points 1, 2, 3 are not collinear");
+
+    // The non-Delaunay diagonal, named 1-based: the apex across the bad edge is reported.
+    const std::vector<tri::VertIdx> diagonal02 = {0, 1, 2, 0, 2, 3};
+    const std::vector<tri::VertIdx> diagonal13 = {0, 1, 3, 1, 2, 3};
+    const std::vector<tri::VertIdx>& bad =
+        tri::check_delaunay_2d(xy, diagonal02).ok ? diagonal13 : diagonal02;
+    const tri::CheckReport zero = tri::check_delaunay_2d(xy, bad);
+    const tri::CheckReport one = tri::check_delaunay_2d(xy, bad, {1, 1});
+    ASSERT_FALSE(zero.ok);
+    ASSERT_FALSE(one.ok);
+    ASSERT_EQ(zero.vertices.size(), 1u);
+    EXPECT_EQ(zero.triangle, one.triangle);
+    EXPECT_EQ(zero.vertices, one.vertices);
+    const tri::VertIdx* corners = &bad[3 * zero.triangle];
+    EXPECT_EQ(one.problem, "triangle " + std::to_string(zero.triangle + 1) + " (" +
+                               std::to_string(corners[0] + 1) + ", " +
+                               std::to_string(corners[1] + 1) + ", " +
+                               std::to_string(corners[2] + 1) + "): not Delaunay, vertex " +
+                               std::to_string(zero.vertices[0] + 1) +
+                               " lies inside its circumcircle");
+
+    // Vertex numbers past 2^32 - 1 in the caller's numbering print in full.
+    const tri::CheckReport out_of_range = tri::check_topology_2d(
+        xy, std::vector<tri::VertIdx>{0, 1, 4'000'000'000u}, {4'000'000'000u, 0});
+    EXPECT_NE(out_of_range.problem.find("8000000000"), std::string::npos) << out_of_range.problem;
+}
+
+TEST(Triangulation_Check2, RejectsABoundaryThatWindsTwice) {
+    // Five points on a circle and its centre (vertex 5); the fan around the centre along the
+    // pentagram 0-2-4-1-3 covers the disk twice: every triangle is counter-clockwise, each
+    // directed edge is used once, every boundary turn is a left turn, every point is a vertex
+    // and V - E + F = 6 - 10 + 5 = 1, yet the angle at the centre is 4 pi.
+    std::vector<double> xy;
+    for (int k = 0; k < 5; ++k) {
+        const double angle = 2 * 3.14159265358979323846 * k / 5;
+        xy.push_back(std::cos(angle));
+        xy.push_back(std::sin(angle));
+    }
+    xy.push_back(0);
+    xy.push_back(0);
+    const std::vector<tri::VertIdx> double_cover = {5, 0, 2, 5, 2, 4, 5, 4, 1, 5, 1, 3, 5, 3, 0};
+    const tri::CheckReport report = tri::check_topology_2d(xy, double_cover);
+    EXPECT_FALSE(report.ok);
+    EXPECT_NE(report.problem.find("winds around"), std::string::npos) << report.problem;
+    EXPECT_TRUE(tri::check_delaunay_2d(xy, tri::bowyer_watson_2d(xy).triangles).ok);
+}
+
+TEST(Triangulation_Delaunay2, GridLocationGivesTheSameTriangulationWithShortWalks) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<double> uniform, grid;
+    for (int i = 0; i < 4000; ++i) uniform.push_back(u(rng));
+    for (int i = 0; i < 40; ++i) {
+        for (int j = 0; j < 40; ++j) {
+            grid.push_back(i);
+            grid.push_back(j);
+        }
+    }
+    for (const std::vector<double>* xy : {&uniform, &grid}) {
+        for (const tri::InsertionOrder order : kOrders) {
+            const auto walk = tri::green_sibson_2d(*xy, {order, 3, tri::PointLocation::Walk});
+            const auto jump = tri::bowyer_watson_2d(*xy, {order, 3, tri::PointLocation::Grid});
+            EXPECT_TRUE(tri::check_delaunay_2d(*xy, jump.triangles).ok);
+            EXPECT_EQ(canonical(walk), canonical(jump));
+            // Jumping keeps walks short whatever the order (a plain walk in random order
+            // takes O(sqrt n) steps per point).
+            EXPECT_LT(jump.counters.walk_steps, 12 * jump.counters.points);
+        }
+    }
+}

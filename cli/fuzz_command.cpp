@@ -1,0 +1,545 @@
+// SPDX-License-Identifier: MIT
+// `exactmesh fuzz`: a timed differential and validity campaign over the input distributions of
+// generators/inputs. Per case, the three Delaunay constructions must each pass the exact check
+// (triangulation/check_2d), return mutual neighbours, agree with each other (same canonical
+// triangulation under the shared symbolic perturbation) and, on small inputs, with the naive
+// empty-circle oracle (tests/oracles). A failing input is minimized by delta debugging
+// [Zeller, Hildebrandt 2002, ddmin] and saved as a Triangle .node file with the commands that
+// replay it.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "generators/inputs.hpp"
+#include "io/triangle_format.hpp"
+#include "predicates/errors.hpp"
+#include "tests/oracles/naive_delaunay_2d.hpp"
+#include "triangulation/check_2d.hpp"
+#include "triangulation/delaunay_2d.hpp"
+
+namespace exactmesh::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
+using Clock = std::chrono::steady_clock;
+
+/// The oracle is O(n^4): it runs on inputs up to this size.
+constexpr std::size_t kOracleMaxPoints = 60;
+/// Largest near-collinear case (see make_case).
+constexpr std::uint32_t kNearCollinearMaxPoints = 2000;
+/// A minimization stops after the campaign's remaining time, but runs at least the minimum and
+/// at most the maximum, and keeps what it has then (a failure on 20000 points where every point
+/// matters would otherwise run for hours).
+constexpr std::chrono::seconds kMinimizeAtLeast{10};
+constexpr std::chrono::seconds kMinimizeAtMost{60};
+/// Failures past this many are counted and named in one line, not minimized nor saved: a
+/// systematic bug fails most cases, and one file per case would bury the first ones.
+constexpr std::uint64_t kMaxSavedFailures = 20;
+/// Files the failures are saved as: fuzz-failure-<case seed>.node.
+constexpr std::string_view kFilePrefix = "fuzz-failure-";
+/// Test-only: set to 1, drops the last triangle of green-sibson's output before the checks, so
+/// the tests can watch the failure path (minimization, file, commands) work.
+constexpr const char* kInjectFaultVariable = "EXACTMESH_FUZZ_INJECT_FAULT";
+constexpr std::size_t kFaultyAlgorithm = 1;
+
+struct FuzzArguments {
+    double minutes = 0;
+    std::uint64_t seed = 1;
+    std::string out = ".";
+};
+
+struct Algorithm {
+    const char* name;
+    tri::Delaunay2Function build;
+};
+const std::array<Algorithm, 3> kAlgorithms = {
+    Algorithm{"bowyer-watson", tri::delaunay_2d_algorithm("bowyer-watson")},
+    Algorithm{"green-sibson", tri::delaunay_2d_algorithm("green-sibson")},
+    Algorithm{"tanemura-merriam", tri::delaunay_2d_algorithm("tanemura-merriam")}};
+
+struct Order {
+    const char* name;
+    tri::InsertionOrder order;
+};
+constexpr std::array<Order, 3> kOrders = {Order{"given", tri::InsertionOrder::Given},
+                                          Order{"random", tri::InsertionOrder::Random},
+                                          Order{"brio", tri::InsertionOrder::Brio}};
+
+/// splitmix64 [Steele, Lea, Flood 2014]: one 64-bit state, good enough to pick case shapes.
+class CaseRandom {
+  public:
+    explicit CaseRandom(std::uint64_t seed) : state_(seed) {}
+    std::uint64_t next() {
+        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    }
+    /// Uniform in [lo, hi].
+    std::uint32_t between(std::uint32_t lo, std::uint32_t hi) {
+        return lo + static_cast<std::uint32_t>(next() % (std::uint64_t{hi} - lo + 1));
+    }
+    double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+
+  private:
+    std::uint64_t state_;
+};
+
+/// One case: the points and how each algorithm is run. Everything follows from the case seed.
+struct Case {
+    std::uint64_t seed = 0;
+    gen::Distribution distribution = gen::Distribution::Uniform;
+    std::vector<double> xy;
+    std::size_t reference = 0;            ///< the algorithm the other two are compared with
+    std::array<std::size_t, 3> orders{};  ///< index into kOrders, per algorithm
+
+    tri::Delaunay2Options options(std::size_t algorithm) const {
+        return tri::Delaunay2Options{kOrders[orders[algorithm]].order, seed};
+    }
+};
+
+Case make_case(std::uint64_t seed) {
+    CaseRandom random(seed);
+    Case c;
+    c.seed = seed;
+    c.distribution = gen::kAllDistributions[random.next() % std::size(gen::kAllDistributions)];
+    // Mostly small, where the oracle runs (skewed towards the smallest sizes: the oracle costs
+    // n^4 and tiny inputs are where degeneracies are dense), then medium, sometimes large.
+    const std::uint64_t size_class = random.next() % 20;
+    std::uint32_t n = 0;
+    if (size_class < 9) {
+        const double u = random.unit();
+        n = 3 + static_cast<std::uint32_t>(static_cast<double>(kOracleMaxPoints - 2) * u * u);
+    } else if (size_class < 18) {
+        n = random.between(static_cast<std::uint32_t>(kOracleMaxPoints) + 1, 300);
+    } else {
+        n = static_cast<std::uint32_t>(
+            std::lround(300.0 * std::pow(20000.0 / 300.0, random.unit())));
+        // Tanemura-Merriam is quadratic on near-collinear points (about 3.5 s for 2000 on this
+        // machine, 12 s for 4000): keep those cases from eating the campaign.
+        if (c.distribution == gen::Distribution::NearCollinear) {
+            n = std::min<std::uint32_t>(n, kNearCollinearMaxPoints);
+        }
+    }
+    c.reference = random.next() % kAlgorithms.size();
+    for (std::size_t& order : c.orders) order = random.next() % kOrders.size();
+    c.xy = gen::generate_points_2d(c.distribution, n, seed);
+    return c;
+}
+
+/// A failure, identified for the minimizer by (kind, algorithm, other).
+struct Failure {
+    std::string kind;  ///< exception, check, neighbors, count, merged_into, triangles, oracle
+    std::size_t algorithm = 0;         ///< the algorithm to blame (or compared)
+    std::optional<std::size_t> other;  ///< the reference, for the agreement kinds
+    std::string detail;
+
+    bool same_as(const Failure& f) const {
+        return kind == f.kind && algorithm == f.algorithm && other == f.other;
+    }
+    std::string describe() const {
+        std::string s = kind + ": " + kAlgorithms[algorithm].name;
+        if (other) s += std::string(" vs ") + kAlgorithms[*other].name;
+        return s + ": " + detail;
+    }
+};
+
+using Triangles = std::vector<std::array<tri::VertIdx, 3>>;
+
+Triangles canonical(const std::vector<tri::VertIdx>& triangles) {
+    Triangles out;
+    out.reserve(triangles.size() / 3);
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        std::array<tri::VertIdx, 3> a{triangles[t], triangles[t + 1], triangles[t + 2]};
+        std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
+        out.push_back(a);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+bool has_duplicate_points(std::span<const double> xy) {
+    std::vector<std::pair<double, double>> points;
+    points.reserve(xy.size() / 2);
+    for (std::size_t i = 0; i + 1 < xy.size(); i += 2) points.emplace_back(xy[i], xy[i + 1]);
+    std::sort(points.begin(), points.end());
+    return std::adjacent_find(points.begin(), points.end()) != points.end();
+}
+
+/// Empty when neighbour slot 3t+k names the triangle across edge (v[k], v[k+1]) and that
+/// triangle names t back, with kNone exactly on the hull edges; else the first problem.
+std::string check_neighbors(const tri::Delaunay2Result& r) {
+    const std::size_t count = r.triangles.size() / 3;
+    if (r.neighbors.size() != r.triangles.size()) {
+        return std::to_string(r.neighbors.size()) + " neighbour slots for " +
+               std::to_string(count) + " triangles";
+    }
+    for (std::size_t t = 0; t < count; ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const tri::TriIdx u = r.neighbors[3 * t + k];
+            if (u == tri::kNone) continue;
+            const tri::VertIdx a = r.triangles[3 * t + k], b = r.triangles[3 * t + (k + 1) % 3];
+            bool mutual = false;
+            for (unsigned j = 0; j < 3 && u < count; ++j) {
+                mutual = mutual ||
+                         (r.triangles[3 * u + j] == b && r.triangles[3 * u + (j + 1) % 3] == a &&
+                          r.neighbors[3 * u + j] == t);
+            }
+            if (!mutual) {
+                return "triangle " + std::to_string(t) + " names triangle " + std::to_string(u) +
+                       " across edge " + std::to_string(a) + "-" + std::to_string(b) +
+                       ", which does not name it back across that edge";
+            }
+        }
+    }
+    // Hull edges: as many kNone slots as edges without a reverse edge.
+    std::vector<std::pair<tri::VertIdx, tri::VertIdx>> edges;
+    edges.reserve(r.triangles.size());
+    for (std::size_t t = 0; t < count; ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            edges.emplace_back(r.triangles[3 * t + k], r.triangles[3 * t + (k + 1) % 3]);
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    std::size_t hull_edges = 0;
+    for (const auto& [a, b] : edges) {
+        if (!std::binary_search(edges.begin(), edges.end(), std::make_pair(b, a))) ++hull_edges;
+    }
+    const auto none =
+        static_cast<std::size_t>(std::count(r.neighbors.begin(), r.neighbors.end(), tri::kNone));
+    if (none != hull_edges) {
+        return std::to_string(none) + " hull slots (kNone) for " + std::to_string(hull_edges) +
+               " hull edges";
+    }
+    return {};
+}
+
+/// Runs the case's checks on xy. Without `target`, returns the first failure; with it, the
+/// first failure the same as `target` (the minimizer's question), skipping what cannot match.
+std::optional<Failure> find_failure(const Case& c, std::span<const double> xy, bool inject_fault,
+                                    const Failure* target = nullptr) {
+    std::array<std::optional<tri::Delaunay2Result>, 3> results;
+    std::array<std::size_t, 3> sequence{c.reference, (c.reference + 1) % 3, (c.reference + 2) % 3};
+    auto wanted = [target](const Failure& f) { return target == nullptr || f.same_as(*target); };
+    // First every algorithm on its own: it runs, and its output is a Delaunay triangulation.
+    for (const std::size_t a : sequence) {
+        try {
+            results[a] = kAlgorithms[a].build(xy, c.options(a));
+        } catch (const std::exception& error) {
+            const Failure f{"exception", a, std::nullopt, error.what()};
+            if (wanted(f)) return f;
+            continue;
+        } catch (...) {
+            const Failure f{"exception", a, std::nullopt, "an exception of unknown type"};
+            if (wanted(f)) return f;
+            continue;
+        }
+        tri::Delaunay2Result& r = *results[a];
+        if (inject_fault && a == kFaultyAlgorithm && !r.triangles.empty()) {
+            r.triangles.resize(r.triangles.size() - 3);
+            r.neighbors.resize(r.neighbors.size() - 3);
+        }
+        // Named as `exactmesh check` names them in the 1-based files this command writes.
+        const tri::CheckReport report = tri::check_delaunay_2d(xy, r.triangles, {1, 1});
+        if (!report.ok) {
+            const Failure f{"check", a, std::nullopt, report.problem};
+            if (wanted(f)) return f;
+            results[a].reset();  // compared with nothing: its failure is already known
+            continue;
+        }
+        if (std::string problem = check_neighbors(r); !problem.empty()) {
+            const Failure f{"neighbors", a, std::nullopt, std::move(problem)};
+            if (wanted(f)) return f;
+        }
+    }
+    // Then agreement with the reference: the same perturbation gives the same triangulation.
+    // With duplicate points only the counts are compared: which copy is inserted first decides
+    // the perturbation index of the point, and so may legitimately change cocircular ties.
+    const bool duplicates = has_duplicate_points(xy);
+    const std::size_t ref = c.reference;
+    for (const std::size_t a : {sequence[1], sequence[2]}) {
+        if (!results[ref] || !results[a]) continue;
+        const tri::Delaunay2Result& r = *results[a];
+        const tri::Delaunay2Result& expected = *results[ref];
+        if (r.triangles.size() != expected.triangles.size()) {
+            const Failure f{"count", a, ref,
+                            std::to_string(r.triangles.size() / 3) + " triangles instead of " +
+                                std::to_string(expected.triangles.size() / 3)};
+            if (wanted(f)) return f;
+        }
+        if (r.merged_into != expected.merged_into) {
+            std::size_t v = 0;
+            while (r.merged_into[v] == expected.merged_into[v]) ++v;
+            const Failure f{"merged_into", a, ref,
+                            "point " + std::to_string(v) + " merged into " +
+                                std::to_string(r.merged_into[v]) + " instead of " +
+                                std::to_string(expected.merged_into[v])};
+            if (wanted(f)) return f;
+        }
+        if (!duplicates && r.triangles.size() == expected.triangles.size()) {
+            const Triangles ours = canonical(r.triangles), theirs = canonical(expected.triangles);
+            if (ours != theirs) {
+                const auto [mine, other] = std::mismatch(ours.begin(), ours.end(), theirs.begin());
+                const Failure f{"triangles", a, ref,
+                                "different triangles, first (" + std::to_string((*mine)[0]) + ", " +
+                                    std::to_string((*mine)[1]) + ", " + std::to_string((*mine)[2]) +
+                                    ") instead of (" + std::to_string((*other)[0]) + ", " +
+                                    std::to_string((*other)[1]) + ", " +
+                                    std::to_string((*other)[2]) + ") (0-based)"};
+                if (wanted(f)) return f;
+            }
+        }
+    }
+    // Finally the brute-force definition, on small inputs.
+    if (xy.size() / 2 <= kOracleMaxPoints && (target == nullptr || target->kind == "oracle")) {
+        const oracles::NaiveDelaunay2 oracle = oracles::naive_delaunay_2d(xy);
+        for (const std::size_t a : sequence) {
+            if (!results[a]) continue;
+            std::string problem = oracles::compare_with_naive_delaunay_2d(
+                xy, results[a]->triangles, oracle, results[a]->merged_into);
+            if (problem.empty()) continue;
+            const Failure f{"oracle", a, std::nullopt, std::move(problem) + " (0-based)"};
+            if (wanted(f)) return f;
+        }
+    }
+    return std::nullopt;
+}
+
+struct Minimized {
+    std::vector<double> xy;
+    std::size_t evaluations = 0;
+    bool complete = true;  ///< false when the time budget ran out first
+};
+
+/// ddmin over points: remove chunks of n/2, n/4, ..., 1 points while the same failure persists;
+/// ends 1-minimal (no single point can go) unless the budget runs out.
+Minimized minimize(const Case& c, std::vector<double> xy, const Failure& failure, bool inject_fault,
+                   Clock::time_point give_up) {
+    Minimized out;
+    std::size_t n = xy.size() / 2;
+    std::size_t chunk = std::max<std::size_t>(n / 2, 1);
+    for (;;) {
+        bool removed = false;
+        for (std::size_t start = 0; start < n && n > 1;) {
+            if (Clock::now() > give_up) {
+                out.complete = false;
+                out.xy = std::move(xy);
+                return out;
+            }
+            const std::size_t stop = std::min(n, start + chunk);
+            std::vector<double> candidate;
+            candidate.reserve(2 * (n - (stop - start)));
+            candidate.insert(candidate.end(), xy.begin(),
+                             xy.begin() + static_cast<std::ptrdiff_t>(2 * start));
+            candidate.insert(candidate.end(), xy.begin() + static_cast<std::ptrdiff_t>(2 * stop),
+                             xy.end());
+            ++out.evaluations;
+            if (find_failure(c, candidate, inject_fault, &failure)) {
+                xy = std::move(candidate);
+                n = xy.size() / 2;
+                removed = true;
+            } else {
+                start = stop;
+            }
+        }
+        if (!removed) {
+            if (chunk == 1) break;
+            chunk /= 2;
+        } else {
+            chunk = std::max<std::size_t>(std::min(chunk, n / 2), 1);
+        }
+    }
+    out.xy = std::move(xy);
+    return out;
+}
+
+/// The text as one shell word: unchanged when it is plain, else in single quotes.
+std::string shell_word(const std::string& text) {
+    const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char ch) {
+        return std::isalnum(static_cast<unsigned char>(ch)) != 0 ||
+               std::string_view("-_./=+,:@%").find(ch) != std::string_view::npos;
+    });
+    if (plain) return text;
+    std::string quoted = "'";
+    for (const char ch : text) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return quoted + "'";
+}
+
+std::string triangulate_command(const std::string& node, const std::string& ele, const Case& c,
+                                std::size_t algorithm) {
+    return "exactmesh triangulate " + shell_word(node) + " -o " + shell_word(ele) +
+           " --algorithm " + kAlgorithms[algorithm].name + " --order " +
+           kOrders[c.orders[algorithm]].name + " --seed " + std::to_string(c.seed);
+}
+
+/// Minimizes the failing case, saves it in `out_dir` and prints the report and the commands.
+void report_failure(const Case& c, const Failure& failure, const fs::path& out_dir,
+                    bool inject_fault, Clock::time_point give_up) {
+    std::cout << "FAILURE: case seed " << c.seed << ", " << gen::distribution_name(c.distribution)
+              << ", " << c.xy.size() / 2 << " points: " << failure.describe() << '\n';
+    const Minimized small = minimize(c, c.xy, failure, inject_fault, give_up);
+    const std::optional<Failure> final_failure = find_failure(c, small.xy, inject_fault, &failure);
+    io::NodeFile nodes;
+    nodes.xy = small.xy;
+    nodes.first_index = 1;
+    const fs::path file = out_dir / (std::string(kFilePrefix) + std::to_string(c.seed) + ".node");
+    io::write_node(file, nodes);
+    std::cout << "  minimized to " << small.xy.size() / 2 << " points in " << small.evaluations
+              << " runs" << (small.complete ? "" : " (time budget spent: not 1-minimal)") << ": "
+              << (final_failure ? final_failure->detail : std::string("(no longer reproduces)"))
+              << '\n'
+              << "  saved: " << file.string() << '\n'
+              << "  reproduce:\n";
+    const std::string node = file.string();
+    if (failure.other) {
+        const std::size_t a = failure.algorithm, b = *failure.other;
+        const std::string ele_a = std::string("out-") + kAlgorithms[a].name + ".ele";
+        const std::string ele_b = std::string("out-") + kAlgorithms[b].name + ".ele";
+        std::cout << "    " << triangulate_command(node, ele_a, c, a) << '\n'
+                  << "    " << triangulate_command(node, ele_b, c, b) << '\n'
+                  << "    exactmesh check " << shell_word(node) << ' ' << shell_word(ele_a) << '\n'
+                  << "    exactmesh check " << shell_word(node) << ' ' << shell_word(ele_b) << '\n'
+                  << "  (then compare the two triangle sets: they should be equal)\n";
+    } else {
+        std::cout << "    " << triangulate_command(node, "out.ele", c, failure.algorithm) << '\n'
+                  << "    exactmesh check " << shell_word(node) << " out.ele\n";
+    }
+    // What `check` cannot see: it reads neither .neigh files nor the oracle's verdict.
+    if (failure.kind == "neighbors") {
+        std::cout << "  (check does not read neighbours: see out.neigh, Triangle's convention)\n";
+    } else if (failure.kind == "oracle") {
+        std::cout << "  (the naive empty-circle oracle, tests/oracles/naive_delaunay_2d.hpp, "
+                     "disagrees; check may pass)\n";
+    }
+    if (inject_fault) {
+        std::cout << "  (fault injected by " << kInjectFaultVariable << ": the commands run "
+                  << "without it)\n";
+    }
+    std::cout.flush();
+}
+
+std::string format_seconds(double seconds) {
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(1) << seconds << " s";
+    return text.str();
+}
+
+int run_fuzz(const FuzzArguments& arguments) {
+    // Bad arguments are reported before any work (exit 2 through InputError).
+    if (!std::isfinite(arguments.minutes) || arguments.minutes < 0 || arguments.minutes > 1e6) {
+        std::ostringstream value;
+        value << arguments.minutes;
+        throw InputError("--minutes must be a number of minutes between 0 and 1000000, not " +
+                         value.str());
+    }
+    const fs::path out_dir = arguments.out.empty() ? fs::path(".") : fs::path(arguments.out);
+    std::error_code error;
+    if (fs::exists(out_dir, error) && !fs::is_directory(out_dir, error)) {
+        throw InputError("--out " + out_dir.string() + ": not a directory");
+    }
+    if (!fs::exists(out_dir, error) && !fs::create_directories(out_dir, error)) {
+        throw InputError("--out " + out_dir.string() + ": cannot create the directory (" +
+                         error.message() + ")");
+    }
+    const char* inject = std::getenv(kInjectFaultVariable);
+    const bool inject_fault = inject != nullptr && std::string_view(inject) == "1";
+
+    const auto start = Clock::now();
+    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(arguments.minutes * 60.0));
+    auto last_progress = start;
+    std::uint64_t cases = 0, points = 0, failures = 0;
+    std::array<std::uint64_t, std::size(gen::kAllDistributions)> per_distribution{};
+    std::uint64_t seed = arguments.seed;
+    auto elapsed = [start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    while (Clock::now() < deadline) {
+        const Case c = make_case(seed);
+        const std::optional<Failure> failure = find_failure(c, c.xy, inject_fault);
+        ++cases;
+        points += c.xy.size() / 2;
+        ++per_distribution[static_cast<std::size_t>(c.distribution)];
+        if (failure) {
+            ++failures;
+            if (failures <= kMaxSavedFailures) {
+                const auto now = Clock::now();
+                const auto give_up = now + std::clamp<Clock::duration>(
+                                               deadline - now, kMinimizeAtLeast, kMinimizeAtMost);
+                report_failure(c, *failure, out_dir, inject_fault, give_up);
+            } else {
+                std::cout << "FAILURE: case seed " << c.seed << ": " << failure->describe()
+                          << " (not minimized: more than " << kMaxSavedFailures << " failures)\n";
+            }
+        }
+        if (Clock::now() - last_progress >= std::chrono::seconds(1)) {
+            last_progress = Clock::now();
+            std::cerr << "fuzz: " << format_seconds(elapsed()) << ", " << cases << " cases, "
+                      << points << " points, " << failures << " failures" << std::endl;
+        }
+        ++seed;
+    }
+    std::cout << "fuzz: " << cases << " cases";
+    if (cases > 0) std::cout << " (case seeds " << arguments.seed << ".." << seed - 1 << ")";
+    std::cout << ", " << points << " points, " << failures << " failures in "
+              << format_seconds(elapsed()) << '\n';
+    std::cout << "fuzz: cases per distribution:";
+    for (std::size_t d = 0; d < per_distribution.size(); ++d) {
+        std::cout << ' ' << gen::distribution_name(gen::kAllDistributions[d]) << ' '
+                  << per_distribution[d];
+    }
+    std::cout << '\n';
+    return failures > 0 ? kExitCheckFailed : kExitSuccess;
+}
+
+}  // namespace
+
+void add_fuzz_command(CLI::App& app, int& exit_status) {
+    auto arguments = std::make_shared<FuzzArguments>();
+    CLI::App* command = app.add_subcommand(
+        "fuzz",
+        "Timed differential campaign: random and degenerate point sets through all three "
+        "algorithms, each checked exactly, against the others and (n <= 60) against a naive "
+        "empty-circle oracle; failures are minimized and saved as .node files");
+    command->add_option("--minutes", arguments->minutes, "How long to run (fractions allowed)")
+        ->required()
+        ->type_name("M");
+    // CLI11 2.1 would read "-3" into an unsigned as 2^64 - 3: refuse the sign before conversion.
+    const CLI::Validator non_negative(
+        [](const std::string& text) {
+            return text.find('-') == std::string::npos ? std::string()
+                                                       : "must be a non-negative integer";
+        },
+        "", "non-negative");
+    command->add_option("--seed", arguments->seed, "First case seed (cases use seed, seed+1, ...)")
+        ->check(non_negative)
+        ->capture_default_str();
+    command
+        ->add_option("--out", arguments->out,
+                     "Directory for the minimized failing inputs, fuzz-failure-<seed>.node")
+        ->capture_default_str()
+        ->type_name("DIR");
+    command->callback([arguments, &exit_status] { exit_status = run_fuzz(*arguments); });
+}
+
+}  // namespace exactmesh::cli
