@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+// Exact validation of constrained Delaunay triangulations (see check_constrained_2d.hpp).
+#include "triangulation/check_constrained_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "predicates/incircle.hpp"
+#include "predicates/orient2d.hpp"
+
+namespace exactmesh::triangulation {
+
+namespace {
+
+using predicates::Sign;
+
+CheckReport fail(std::string problem, TriIdx t = kNone, std::vector<VertIdx> vertices = {}) {
+    return CheckReport{false, std::move(problem), t, std::move(vertices)};
+}
+
+}  // namespace
+
+CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
+                                          std::span<const VertIdx> segments, CheckNumbering numbering) {
+    const std::uint32_t n = mesh.vertex_count();
+    const TriIdx count = mesh.triangle_count();
+    const auto& tv = mesh.triangles;
+    auto vertex = [&](VertIdx v) { return std::to_string(std::uint64_t{v} + numbering.first_vertex); };
+    auto triangle = [&](TriIdx t) {
+        return "triangle " + std::to_string(std::uint64_t{t} + numbering.first_triangle) + " (" + vertex(tv[3 * t]) +
+               ", " + vertex(tv[3 * t + 1]) + ", " + vertex(tv[3 * t + 2]) + ")";
+    };
+    if (!mesh.constrained.empty() && mesh.constrained.size() != tv.size()) {
+        return fail("constraint flags: " + std::to_string(mesh.constrained.size()) + " for " +
+                    std::to_string(count) + " triangles");
+    }
+    // Topology: orientation, directed edges once.
+    std::unordered_map<std::uint64_t, EdgeIdx> edge_of;
+    edge_of.reserve(tv.size());
+    auto key = [](VertIdx a, VertIdx b) { return (std::uint64_t{a} << 32) | b; };
+    for (TriIdx t = 0; t < count; ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            if (tv[3 * t + k] >= n) return fail(triangle(t) + " names a vertex that does not exist", t);
+        }
+        if (predicates::orient2d(mesh.point(tv[3 * t]), mesh.point(tv[3 * t + 1]), mesh.point(tv[3 * t + 2])) !=
+            Sign::Positive) {
+            return fail(triangle(t) + " is not counter-clockwise (or is degenerate)", t);
+        }
+        for (unsigned k = 0; k < 3; ++k) {
+            const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3];
+            if (!edge_of.emplace(key(a, b), 3 * t + k).second) {
+                return fail("edge " + vertex(a) + " -> " + vertex(b) + " appears in two triangles (overlap)", t,
+                            {a, b});
+            }
+        }
+    }
+    // Flags symmetric; unconstrained interior edges locally Delaunay.
+    for (TriIdx t = 0; t < count; ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3], c = tv[3 * t + (k + 2) % 3];
+            const auto other = edge_of.find(key(b, a));
+            if (other == edge_of.end()) continue;
+            const EdgeIdx f = other->second;
+            const bool constrained = mesh.is_constrained(t, static_cast<int>(k));
+            if (constrained != mesh.is_constrained(triangle_of(f), static_cast<int>(f % 3))) {
+                return fail("edge " + vertex(a) + " - " + vertex(b) + " is constrained on one side only", t, {a, b});
+            }
+            if (constrained || a > b) continue;
+            const VertIdx d = tv[3 * triangle_of(f) + (f % 3 + 2) % 3];
+            if (predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d)) == Sign::Positive) {
+                return fail("unconstrained edge " + vertex(a) + " - " + vertex(b) + " is not locally Delaunay: vertex " +
+                                vertex(d) + " lies inside the circumcircle of " + triangle(t),
+                            t, {a, b, c, d});
+            }
+        }
+    }
+    // Segments: chains of constrained edges.
+    std::vector<std::vector<VertIdx>> constrained_neighbors(n);
+    for (TriIdx t = 0; t < count; ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            if (!mesh.is_constrained(t, static_cast<int>(k))) continue;
+            const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3];
+            auto& na = constrained_neighbors[a];
+            if (std::find(na.begin(), na.end(), b) == na.end()) na.push_back(b);
+            auto& nb = constrained_neighbors[b];
+            if (std::find(nb.begin(), nb.end(), a) == nb.end()) nb.push_back(a);
+        }
+    }
+    double extent = 0;
+    for (double c : mesh.xy) extent = std::max(extent, std::fabs(c));
+    const double tolerance = std::ldexp(extent, -40);
+    for (std::size_t s = 0; 2 * s + 1 < segments.size(); ++s) {
+        const VertIdx a = segments[2 * s], b = segments[2 * s + 1];
+        const std::string name = "segment " + std::to_string(s + numbering.first_vertex) +
+                                 " (" + vertex(a) + ", " + vertex(b) + ")";
+        if (a >= n || b >= n) return fail(name + " names a vertex that does not exist");
+        const double* pa = mesh.point(a);
+        const double* pb = mesh.point(b);
+        if (pa[0] == pb[0] && pa[1] == pb[1]) continue;
+        const long double dx = static_cast<long double>(pb[0]) - pa[0], dy = static_cast<long double>(pb[1]) - pa[1];
+        const long double length = std::sqrt(dx * dx + dy * dy);
+        auto along = [&](VertIdx v) {
+            return (static_cast<long double>(mesh.point(v)[0]) - pa[0]) * dx +
+                   (static_cast<long double>(mesh.point(v)[1]) - pa[1]) * dy;
+        };
+        auto near_line = [&](VertIdx v) {
+            if (predicates::orient2d(pa, pb, mesh.point(v)) == Sign::Zero) return true;
+            if (v < input_vertex_count) return false;
+            const long double cross = (static_cast<long double>(mesh.point(v)[0]) - pa[0]) * dy -
+                                      (static_cast<long double>(mesh.point(v)[1]) - pa[1]) * dx;
+            return std::fabs(static_cast<double>(cross / length)) <= tolerance;
+        };
+        VertIdx current = a;
+        std::uint32_t steps = 0;
+        while (current != b) {
+            VertIdx next = kNone;
+            for (const VertIdx w : constrained_neighbors[current]) {
+                if (w == b) {
+                    next = b;
+                    break;
+                }
+                if (along(w) > along(current) && near_line(w) && (next == kNone || along(w) < along(next))) next = w;
+            }
+            if (next == kNone || ++steps > n) {
+                return fail(name + " is missing: no constrained edge continues it from vertex " + vertex(current),
+                            kNone, {a, b, current});
+            }
+            current = next;
+        }
+    }
+    return {};
+}
+
+}  // namespace exactmesh::triangulation
