@@ -395,17 +395,23 @@ EleFile read_ele(const std::filesystem::path& path, std::uint32_t vertex_first_i
     return parse_ele(read_text_file(path), path.string(), vertex_first_index, vertex_count);
 }
 
-std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_index) {
+std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_index,
+                       std::span<const double> attributes) {
     const std::size_t count = triangles.size() / 3;
+    const bool with_attributes = !attributes.empty();
     std::string out;
     out.reserve(32 * count + 32);
     append_unsigned(out, count);
-    out += " 3 0\n";
+    out += with_attributes ? " 3 1\n" : " 3 0\n";
     for (std::size_t t = 0; t < count; ++t) {
         append_unsigned(out, t + first_index);
         for (std::size_t k = 0; k < 3; ++k) {
             out += ' ';
             append_unsigned(out, std::uint64_t{triangles[3 * t + k]} + first_index);
+        }
+        if (with_attributes) {
+            out += ' ';
+            append_double(out, attributes[t]);
         }
         out += '\n';
     }
@@ -413,8 +419,8 @@ std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_i
 }
 
 void write_ele(const std::filesystem::path& path, std::span<const VertIdx> triangles,
-               std::uint32_t first_index) {
-    write_text_file(path, format_ele(triangles, first_index));
+               std::uint32_t first_index, std::span<const double> attributes) {
+    write_text_file(path, format_ele(triangles, first_index, attributes));
 }
 
 std::string format_neigh(std::span<const TriIdx> neighbors_across_edges,

@@ -61,9 +61,12 @@ EleFile parse_ele(std::string_view text, const std::string& file_name,
 /// The .ele text: `#T 3 0`, then `<t> <v1> <v2> <v3>` (counter-clockwise, as given), triangles
 /// and vertices numbered from `first_index`, as Triangle numbers its output like its input.
 /// `triangles`: 3·#T 0-based vertex indices.
-std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_index);
+/// With `attributes` (one per triangle, e.g. regional attributes) the header says 1 attribute
+/// and each line ends with it.
+std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_index,
+                       std::span<const double> attributes = {});
 void write_ele(const std::filesystem::path& path, std::span<const VertIdx> triangles,
-               std::uint32_t first_index);
+               std::uint32_t first_index, std::span<const double> attributes = {});
 
 /// The .neigh text: `#T 3`, then `<t> <n1> <n2> <n3>`, neighbor i being the triangle OPPOSITE
 /// vertex i (Triangle's convention), -1 on the hull. `neighbors_across_edges` uses the

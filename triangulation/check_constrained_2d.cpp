@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "predicates/incircle.hpp"
@@ -24,7 +25,8 @@ CheckReport fail(std::string problem, TriIdx t = kNone, std::vector<VertIdx> ver
 }  // namespace
 
 CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
-                                          std::span<const VertIdx> segments, CheckNumbering numbering) {
+                                          std::span<const VertIdx> segments, std::span<const VertIdx> pieces,
+                                          CheckNumbering numbering) {
     const std::uint32_t n = mesh.vertex_count();
     const TriIdx count = mesh.triangle_count();
     const auto& tv = mesh.triangles;
@@ -77,18 +79,66 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
             }
         }
     }
-    // Segments: chains of constrained edges.
+    // Pieces: given, or the flagged edges.
     std::vector<std::vector<VertIdx>> constrained_neighbors(n);
-    for (TriIdx t = 0; t < count; ++t) {
-        for (unsigned k = 0; k < 3; ++k) {
-            if (!mesh.is_constrained(t, static_cast<int>(k))) continue;
-            const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3];
-            auto& na = constrained_neighbors[a];
-            if (std::find(na.begin(), na.end(), b) == na.end()) na.push_back(b);
-            auto& nb = constrained_neighbors[b];
-            if (std::find(nb.begin(), nb.end(), a) == nb.end()) nb.push_back(a);
+    auto add_piece = [&](VertIdx a, VertIdx b) {
+        auto& na = constrained_neighbors[a];
+        if (std::find(na.begin(), na.end(), b) == na.end()) na.push_back(b);
+        auto& nb = constrained_neighbors[b];
+        if (std::find(nb.begin(), nb.end(), a) == nb.end()) nb.push_back(a);
+    };
+    if (pieces.empty()) {
+        for (TriIdx t = 0; t < count; ++t) {
+            for (unsigned k = 0; k < 3; ++k) {
+                if (mesh.is_constrained(t, static_cast<int>(k))) add_piece(tv[3 * t + k], tv[3 * t + (k + 1) % 3]);
+            }
+        }
+    } else {
+        std::vector<std::vector<TriIdx>> triangles_at(n);
+        for (TriIdx t = 0; t < count; ++t) {
+            for (unsigned k = 0; k < 3; ++k) triangles_at[tv[3 * t + k]].push_back(t);
+        }
+        for (std::size_t p = 0; 2 * p + 1 < pieces.size(); ++p) {
+            const VertIdx a = pieces[2 * p], b = pieces[2 * p + 1];
+            const std::string name = "piece " + vertex(a) + " - " + vertex(b);
+            if (a >= n || b >= n || a == b) return fail(name + " is not an edge between two distinct vertices");
+            add_piece(a, b);
+            const auto e = edge_of.find(key(a, b));
+            const auto f = edge_of.find(key(b, a));
+            if (e != edge_of.end() || f != edge_of.end()) {
+                const EdgeIdx g = e != edge_of.end() ? e->second : f->second;
+                if (!mesh.is_constrained(triangle_of(g), static_cast<int>(g % 3))) {
+                    return fail(name + " is an edge of the mesh but not constrained", triangle_of(g), {a, b});
+                }
+                continue;
+            }
+            // Not an edge: it must stay outside the mesh at both ends.
+            for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
+                for (const TriIdx t : triangles_at[from]) {
+                    unsigned k = 0;
+                    while (tv[3 * t + k] != from) ++k;
+                    const VertIdx x = tv[3 * t + (k + 1) % 3], y = tv[3 * t + (k + 2) % 3];
+                    const Sign sx = predicates::orient2d(mesh.point(from), mesh.point(x), mesh.point(to));
+                    const Sign sy = predicates::orient2d(mesh.point(from), mesh.point(y), mesh.point(to));
+                    if (sx == Sign::Positive && sy == Sign::Negative) {
+                        return fail(name + " is not an edge of the mesh but enters " + triangle(t), t, {a, b});
+                    }
+                }
+            }
+        }
+        for (TriIdx t = 0; t < count; ++t) {
+            for (unsigned k = 0; k < 3; ++k) {
+                if (!mesh.is_constrained(t, static_cast<int>(k))) continue;
+                const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3];
+                const auto& na = constrained_neighbors[a];
+                if (std::find(na.begin(), na.end(), b) == na.end()) {
+                    return fail("constrained edge " + vertex(a) + " - " + vertex(b) + " is no piece of a segment", t,
+                                {a, b});
+                }
+            }
         }
     }
+    // Segments: chains of pieces.
     double extent = 0;
     for (double c : mesh.xy) extent = std::max(extent, std::fabs(c));
     const double tolerance = std::ldexp(extent, -40);
@@ -125,7 +175,7 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
                 if (along(w) > along(current) && near_line(w) && (next == kNone || along(w) < along(next))) next = w;
             }
             if (next == kNone || ++steps > n) {
-                return fail(name + " is missing: no constrained edge continues it from vertex " + vertex(current),
+                return fail(name + " is missing: no constrained piece continues it from vertex " + vertex(current),
                             kNone, {a, b, current});
             }
             current = next;

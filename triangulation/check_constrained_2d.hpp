@@ -20,11 +20,19 @@ namespace exactmesh::triangulation {
 /// @param mesh the triangulation; mesh.constrained flags the constrained edges (empty: none).
 /// @param input_vertex_count vertices [0, input_vertex_count) are the input's; the others were
 ///        added (segment intersections, midpoints) and may lie off a segment by rounding.
-/// @param segments 2·#S input segments (0-based). A chain from a to b may pass through input
-///        vertices exactly on the segment (exact orient2d) and through added vertices within
-///        2^-40 of the bounding box's size from its line (rounded constructions, possibly
-///        split again), each step moving strictly towards b. Zero-length segments are skipped.
+/// @param segments 2·#S input segments (0-based). Each must be covered by a chain of pieces from
+///        one endpoint to the other. A chain may pass through input vertices exactly on the
+///        segment (exact orient2d) and through added vertices within 2^-40 of the coordinates'
+///        largest magnitude from its line (rounded constructions, possibly split again), each
+///        step moving strictly towards b. Zero-length segments are skipped.
+/// @param pieces 2·#P constrained edges as the producer reports them (Cdt2Result::pieces), or
+///        empty: then the pieces are the flagged edges of the mesh, and every segment must be
+///        meshed (convex-hull outputs). With pieces given, parts of segments may lie in removed
+///        regions: each piece must be a flagged edge of the mesh, or not an edge of it and not
+///        entering any triangle at its endpoints; and every flagged edge must be a piece.
 CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
-                                          std::span<const VertIdx> segments, CheckNumbering numbering = {});
+                                          std::span<const VertIdx> segments,
+                                          std::span<const VertIdx> pieces = {},
+                                          CheckNumbering numbering = {});
 
 }  // namespace exactmesh::triangulation

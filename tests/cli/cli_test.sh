@@ -164,8 +164,54 @@ check_rejects_non_delaunay() {
     fail "check: clockwise triangle not named: $(cat "$work/out")"
 }
 
+cdt() {
+  local poly=$data/square_hole_diagonals.poly recovery
+  for recovery in swap cavity conforming; do
+    run 0 cdt "$poly" -o "$work/$recovery.ele" --recovery "$recovery" --stats || continue
+    for ext in ele neigh node poly; do [[ -s "$work/$recovery.$ext" ]] || fail "cdt: $recovery.$ext missing"; done
+    grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "cdt --stats: no construct_seconds"
+    grep -q '^intersections: 1$' "$work/out" || fail "cdt: intersections is not 1: $(cat "$work/out")"
+    grep -q 'warning: segments 6 and 5 cross; split at new vertex 9 (2, 2)' "$work/err" ||
+      fail "cdt: no crossing warning in the input's numbering: $(cat "$work/err")"
+    # The added vertex follows the input's 8 in the .node written beside the .ele.
+    head -n 1 "$work/$recovery.node" | grep -q '^9 2 ' || fail "cdt: $recovery.node does not hold 9 vertices"
+    run 0 check "$poly" "$work/$recovery.ele" &&
+      grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
+      fail "check rejected the $recovery output: $(cat "$work/out")"
+  done
+  run 0 cdt "$poly" -o "$work/cdt.svg" && grep -q '</svg>' "$work/cdt.svg" || fail "cdt: svg"
+  # A .node alone is a PSLG without segments.
+  run 0 cdt "$data/kite.node" -o "$work/kite.ele" || fail "cdt of a .node"
+  # The Delaunay triangulation of a flat rhombus lacks the long diagonal: named in the
+  # file's numbering.
+  printf '4 2 0 0\n1 0 0\n2 1 -0.2\n3 2 0\n4 1 0.2\n' >"$work/rhombus.node"
+  printf '0 2 0 0\n1 0\n1 1 3\n0\n' >"$work/rhombus.poly"
+  run 0 triangulate "$work/rhombus.node" -o "$work/rhombus_dt.ele" || return
+  run 1 check "$work/rhombus.poly" "$work/rhombus_dt.ele" &&
+    grep -q '^not ok: .*segment 1 (1, 3) is missing' "$work/out" || fail "check: missing segment: $(cat "$work/out")"
+  # A lone segment encloses nothing: as Triangle does, the exterior is eaten unless --convex-hull.
+  run 0 cdt "$work/rhombus.poly" -o "$work/rhombus_cdt.ele" && grep -q '^triangles: 0$' "$work/out" ||
+    fail "cdt: rhombus without --convex-hull: $(cat "$work/out")"
+  run 0 cdt "$work/rhombus.poly" -o "$work/rhombus_cdt.ele" --convex-hull && grep -q '^triangles: 2$' "$work/out" ||
+    fail "cdt: rhombus with --convex-hull: $(cat "$work/out")"
+  run 0 check "$work/rhombus.poly" "$work/rhombus_cdt.ele" || fail "check rejected the rhombus CDT: $(cat "$work/out")"
+  # Bad input: one line naming file, line and problem.
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 4\n0\n' >"$work/dangling.poly"
+  expect_error 2 'dangling\.poly:6: segment endpoint 4 names no vertex' cdt "$work/dangling.poly" -o "$work/x.ele"
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 nan\n0 0\n0\n' >"$work/nan.poly"
+  expect_error 2 'nan\.poly:4: non-finite y coordinate' cdt "$work/nan.poly" -o "$work/x.ele"
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 2\n1\n1 inf 0\n' >"$work/inf_hole.poly"
+  expect_error 2 'inf_hole\.poly:8: non-finite' cdt "$work/inf_hole.poly" -o "$work/x.ele"
+  expect_error 2 'magic not in' cdt "$poly" -o "$work/x.ele" --recovery magic
+  # Zero-length and repeated segments: dropped with a warning each, exit 0.
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 1\n2 1 2\n3 2 1\n0\n' >"$work/dropped.poly"
+  run 0 cdt "$work/dropped.poly" -o "$work/dropped.ele" --convex-hull &&
+    grep -q 'segment 1 has zero length' "$work/err" && grep -q 'segment 3 repeats segment 2' "$work/err" ||
+    fail "cdt: no warnings for dropped segments: $(cat "$work/err")"
+}
+
 case "$case_name" in
-  triangulate_all_algorithms | output_formats | stats | bad_input | check_rejects_non_delaunay)
+  triangulate_all_algorithms | output_formats | stats | bad_input | check_rejects_non_delaunay | cdt)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

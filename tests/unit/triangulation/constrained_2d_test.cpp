@@ -10,6 +10,7 @@
 #include <limits>
 #include <random>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -55,7 +56,8 @@ tri::Cdt2Result build(const Input& in, tri::SegmentRecovery recovery, bool remov
 /// segment present, and with the exterior kept, the convex-hull topology.
 void expect_valid(const Input& in, const tri::Cdt2Result& r, tri::SegmentRecovery recovery, bool hull,
                   const std::string& label) {
-    const auto report = tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments);
+    const auto report = tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments,
+                                                           hull ? std::span<const tri::VertIdx>{} : std::span(r.pieces));
     EXPECT_TRUE(report.ok) << label << ": " << report.problem;
     if (hull) {
         const auto topology = tri::check_topology_2d(r.mesh.xy, r.mesh.triangles);

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// Helpers shared by the construction commands (see output.hpp).
+#include "cli/output.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <iostream>
+#include <string>
+
+#include "predicates/errors.hpp"
+
+namespace exactmesh::cli {
+
+namespace {
+
+void print_stage_counts(const char* name, const predicates::StageCounts& counts) {
+    const std::string prefix = std::string(name) + ".";
+    std::cout << prefix << "calls: " << counts.calls << '\n'
+              << prefix << "filter: " << counts.filter << '\n'
+              << prefix << "exact_differences: " << counts.exact_differences << '\n'
+              << prefix << "adaptive: " << counts.adaptive << '\n'
+              << prefix << "expansion: " << counts.expansion << '\n'
+              << prefix << "gmp: " << counts.gmp << '\n';
+}
+
+}  // namespace
+
+OutputFormat output_format(const std::filesystem::path& output) {
+    std::string extension = output.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension == ".ele") return OutputFormat::Ele;
+    if (extension == ".msh") return OutputFormat::Msh;
+    if (extension == ".vtu") return OutputFormat::Vtu;
+    if (extension == ".svg") return OutputFormat::Svg;
+    throw InputError(output.string() + ": unsupported output extension '" + extension +
+                     "' (use .ele, .msh, .vtu or .svg)");
+}
+
+void print_predicate_stats(const predicates::PredicateStats& stats) {
+    if (predicates::stats_enabled()) {
+        print_stage_counts("orient2d", stats.orient2d);
+        print_stage_counts("incircle", stats.incircle);
+    } else {
+        std::cout << "predicate_stages: compiled out (configure with -DEXACTMESH_PREDICATE_STATS=ON)\n";
+    }
+}
+
+}  // namespace exactmesh::cli
