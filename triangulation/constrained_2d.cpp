@@ -23,6 +23,7 @@
 #include "predicates/constructions.hpp"
 #include "predicates/errors.hpp"
 #include "triangulation/delaunay_2d_core.hpp"
+#include "triangulation/green_sibson_2d.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -746,30 +747,32 @@ void CdtBuilder::assign_regions() {
 }
 
 void CdtBuilder::collect_output() {
+    // In place, as Delaunay2Core::take_result does: fresh output arrays would cost a page fault
+    // per 4 KiB, a third of the whole construction time at 10^6 points (perf, this machine).
     const std::uint32_t slots = mesh_.triangle_slots();
     const std::uint32_t vertices = mesh_.vertex_count();
     // Caller numbering: inputs as given (duplicates reported as the smallest equal index),
-    // added vertices after the inputs in creation order.
-    std::vector<VertIdx> smallest(input_count_);
-    for (VertIdx i = 0; i < input_count_; ++i) smallest[i] = i;
+    // added vertices after the inputs in creation order (their input_index already).
+    result_.merged_into.resize(input_count_);
+    for (VertIdx i = 0; i < input_count_; ++i) result_.merged_into[i] = i;
     for (VertIdx i = 0; i < input_count_; ++i) {
         const VertIdx kept = core_.merged_into[i];
-        smallest[kept] = std::min(smallest[kept], i);
+        result_.merged_into[kept] = std::min(result_.merged_into[kept], i);
     }
-    result_.merged_into.resize(input_count_);
-    for (VertIdx i = 0; i < input_count_; ++i) result_.merged_into[i] = smallest[core_.merged_into[i]];
-    std::vector<VertIdx> caller(vertices);
+    for (VertIdx i = 0; i < input_count_; ++i) result_.merged_into[i] = result_.merged_into[core_.merged_into[i]];
+    std::vector<VertIdx>& caller = core_.input_index;  // reused: mesh vertex -> output vertex
     for (VertIdx v = 0; v < vertices; ++v) {
-        const VertIdx c = core_.input_index[v];
-        caller[v] = c < input_count_ ? result_.merged_into[c] : c;
+        if (caller[v] < input_count_) caller[v] = result_.merged_into[caller[v]];
     }
     Triangulation2& out = result_.mesh;
+    out.xy.reserve(2 * std::size_t{vertices});
     out.xy.assign(pslg_.xy.begin(), pslg_.xy.end());
     out.xy.resize(2 * std::size_t{vertices});
     for (VertIdx v = input_count_; v < vertices; ++v) {
         out.xy[2 * std::size_t{caller[v]}] = mesh_.xy[2 * std::size_t{v}];
         out.xy[2 * std::size_t{caller[v]} + 1] = mesh_.xy[2 * std::size_t{v} + 1];
     }
+    mesh_.xy = {};
     // Pieces: every constrained edge once, including those inside removed regions.
     for (TriIdx t = 0; t < slots; ++t) {
         if (mesh_.is_dead(t)) continue;
@@ -793,20 +796,25 @@ void CdtBuilder::collect_output() {
         }
         index[t] = count++;
     }
-    out.triangles.resize(3 * std::size_t{count});
-    out.neighbors.resize(3 * std::size_t{count});
-    out.constrained.resize(3 * std::size_t{count});
     if (!attribute_.empty()) result_.triangle_attributes.resize(count);
+    out.constrained.resize(3 * std::size_t{count});
+    // Compaction: triangle t moves to index[t] <= t, so nothing unread is overwritten.
     for (TriIdx t = 0; t < slots; ++t) {
         const TriIdx o = index[t];
         if (o == kNone) continue;
         for (unsigned k = 0; k < 3; ++k) {
-            out.triangles[3 * o + k] = caller[mesh_.tv[3 * t + k]];
-            out.neighbors[3 * o + k] = index[triangle_of(mesh_.twin[3 * t + k])];
+            const VertIdx v = mesh_.tv[3 * t + k];
+            const EdgeIdx across = mesh_.twin[3 * t + k];
             out.constrained[3 * o + k] = segment_of_[3 * t + k] != kNone ? 1 : 0;
+            mesh_.tv[3 * o + k] = caller[v];
+            mesh_.twin[3 * o + k] = index[triangle_of(across)];
         }
         if (!attribute_.empty()) result_.triangle_attributes[o] = attribute_[t];
     }
+    mesh_.tv.resize(3 * std::size_t{count});
+    mesh_.twin.resize(3 * std::size_t{count});
+    out.triangles = std::move(mesh_.tv);
+    out.neighbors = std::move(mesh_.twin);
 }
 
 void CdtBuilder::collinear_output() {
@@ -856,21 +864,20 @@ Cdt2Result CdtBuilder::run() {
     c.segments = pslg_.segments.size() / 2;
     result_.input_vertex_count = input_count_;
     vertex_edge_.assign(input_count_, kNone);
-    std::vector<bool> skip;
-    if (!core_.make_first_triangle(skip)) {
+    // The Delaunay triangulation first (no constraint yet: plain Green-Sibson, which keeps
+    // no per-edge state), then the constraint and vertex maps in one pass.
+    if (!detail::green_sibson_insert_all(core_)) {
         collinear_output();
         return std::move(result_);
     }
+    segment_of_.reserve(mesh_.tv.capacity());
     segment_of_.assign(mesh_.tv.size(), kNone);
     for (TriIdx t = 0; t < mesh_.triangle_slots(); ++t) {
-        set(t, mesh_.tv[3 * t], mesh_.tv[3 * t + 1], mesh_.tv[3 * t + 2]);
-    }
-    for (VertIdx p = 0; p < input_count_; ++p) {
-        if (skip[p]) continue;
-        const TriIdx t = core_.locate(p);
-        if (t == kNone) continue;
-        insert_vertex(p, t);
-        core_.note_inserted(p);
+        if (mesh_.is_dead(t)) continue;
+        for (unsigned k = 0; k < 3; ++k) {
+            const VertIdx v = mesh_.tv[3 * t + k];
+            if (v != kInfinite) vertex_edge_[v] = 3 * t + k;
+        }
     }
     prepare_segments();
     while (!work_.empty()) {
@@ -884,6 +891,7 @@ Cdt2Result CdtBuilder::run() {
     c.duplicates = core_.counters.duplicates;
     c.orient_calls = core_.counters.orient_calls;
     c.incircle_calls = core_.counters.incircle_calls;
+    c.delaunay_flips += core_.counters.flips;
     c.walk_steps += core_.counters.walk_steps;
     collect_output();
     return std::move(result_);
