@@ -35,6 +35,9 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
         return "triangle " + std::to_string(std::uint64_t{t} + numbering.first_triangle) + " (" + vertex(tv[3 * t]) +
                ", " + vertex(tv[3 * t + 1]) + ", " + vertex(tv[3 * t + 2]) + ")";
     };
+    if (input_vertex_count > n) {
+        return fail(std::to_string(input_vertex_count) + " input vertices, but the mesh has only " + std::to_string(n));
+    }
     if (!mesh.constrained.empty() && mesh.constrained.size() != tv.size()) {
         return fail("constraint flags: " + std::to_string(mesh.constrained.size()) + " for " +
                     std::to_string(count) + " triangles");
@@ -142,6 +145,7 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
     double extent = 0;
     for (double c : mesh.xy) extent = std::max(extent, std::fabs(c));
     const double tolerance = std::ldexp(extent, -40);
+    std::vector<std::uint32_t> visited(n, 0);  // segment number + 1 of the last search that met v
     for (std::size_t s = 0; 2 * s + 1 < segments.size(); ++s) {
         const VertIdx a = segments[2 * s], b = segments[2 * s + 1];
         const std::string name = "segment " + std::to_string(s + numbering.first_vertex) +
@@ -158,27 +162,39 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
         };
         auto near_line = [&](VertIdx v) {
             if (predicates::orient2d(pa, pb, mesh.point(v)) == Sign::Zero) return true;
-            if (v < input_vertex_count) return false;
+            // Off the line: an added vertex (rounded), or an input vertex that a piece bent by
+            // a rounded crossing passes through exactly. Both lie within rounding of the line.
             const long double cross = (static_cast<long double>(mesh.point(v)[0]) - pa[0]) * dy -
                                       (static_cast<long double>(mesh.point(v)[1]) - pa[1]) * dx;
             return std::fabs(static_cast<double>(cross / length)) <= tolerance;
         };
-        VertIdx current = a;
-        std::uint32_t steps = 0;
-        while (current != b) {
-            VertIdx next = kNone;
+        // Depth-first search over constrained pieces moving strictly towards b (a DAG, so
+        // each vertex is expanded once): near-collinear vertices can offer several ways on.
+        std::vector<VertIdx> stack{a};
+        const auto stamp = static_cast<std::uint32_t>(s + 1);
+        visited[a] = stamp;
+        VertIdx farthest = a;
+        bool found = false;
+        while (!stack.empty() && !found) {
+            const VertIdx current = stack.back();
+            stack.pop_back();
+            if (along(current) > along(farthest)) farthest = current;
             for (const VertIdx w : constrained_neighbors[current]) {
                 if (w == b) {
-                    next = b;
+                    found = true;
                     break;
                 }
-                if (along(w) > along(current) && near_line(w) && (next == kNone || along(w) < along(next))) next = w;
+                if (visited[w] == stamp) continue;
+                if (along(w) > along(current) && near_line(w)) {
+                    visited[w] = stamp;
+                    stack.push_back(w);
+                }
             }
-            if (next == kNone || ++steps > n) {
-                return fail(name + " is missing: no constrained piece continues it from vertex " + vertex(current),
-                            kNone, {a, b, current});
-            }
-            current = next;
+        }
+        if (!found) {
+            return fail(name + " is missing: no chain of constrained pieces continues it beyond vertex " +
+                            vertex(farthest),
+                        kNone, {a, b, farthest});
         }
     }
     return {};

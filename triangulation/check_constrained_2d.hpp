@@ -22,9 +22,11 @@ namespace exactmesh::triangulation {
 ///        added (segment intersections, midpoints) and may lie off a segment by rounding.
 /// @param segments 2·#S input segments (0-based). Each must be covered by a chain of pieces from
 ///        one endpoint to the other. A chain may pass through input vertices exactly on the
-///        segment (exact orient2d) and through added vertices within 2^-40 of the coordinates'
-///        largest magnitude from its line (rounded constructions, possibly split again), each
-///        step moving strictly towards b. Zero-length segments are skipped.
+///        segment (exact orient2d), and through any vertex within 2^-40 of the coordinates'
+///        largest magnitude from its line: added vertices are rounded (and may be split
+///        again), and a piece between rounded vertices may pass exactly through an input
+///        vertex that is not exactly on the segment. Each step moves strictly towards b.
+///        Zero-length segments are skipped.
 /// @param pieces 2·#P constrained edges as the producer reports them (Cdt2Result::pieces), or
 ///        empty: then the pieces are the flagged edges of the mesh, and every segment must be
 ///        meshed (convex-hull outputs). With pieces given, parts of segments may lie in removed

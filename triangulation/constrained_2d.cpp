@@ -354,7 +354,9 @@ void CdtBuilder::insert_piece(const Piece& piece) {
                 mark(e, piece.segment);
                 return;
             }
-            if (x != kInfinite && y != kInfinite) {
+            if (x != kInfinite) {
+                // Every neighbour x is tested, also when a -> x borders the infinite vertex
+                // (a segment along the hull through a hull vertex).
                 const Sign sx = core_.orient(a, b, x);
                 if (sx == Sign::Zero && on_ray(a, b, x)) {
                     ++result_.counters.vertices_on_segments;
@@ -364,7 +366,8 @@ void CdtBuilder::insert_piece(const Piece& piece) {
                     work_.push_back({a, x, piece.segment});
                     return;
                 }
-                if (sx == Sign::Negative && entry == kNone && core_.orient(a, b, y) == Sign::Positive) {
+                if (y != kInfinite && sx == Sign::Negative && entry == kNone &&
+                    core_.orient(a, b, y) == Sign::Positive) {
                     entry = next_edge(e);
                 }
             }
@@ -444,6 +447,10 @@ void CdtBuilder::split_at_intersection(const Piece& piece, EdgeIdx h) {
                                    std::to_string(core_.input_index[candidate] + options_.first_index) + " (" +
                                    number_text(p[0]) + ", " + number_text(p[1]) + ")");
     }
+    // u - v, no longer constrained, may not be locally Delaunay (the new vertex need not be
+    // next to it): restore before recovering the four pieces.
+    std::vector<std::pair<VertIdx, VertIdx>> released{{u, v}};
+    restore_delaunay(released);
     work_.push_back({u, at, other});
     work_.push_back({at, v, other});
     work_.push_back({at, b, piece.segment});

@@ -339,7 +339,7 @@ TEST(CheckConstrained2d, RejectsMissingSegmentsNonDelaunayEdgesAndOneSidedFlags)
     const std::vector<tri::VertIdx> segment{0, 2};
     auto report = tri::check_constrained_delaunay_2d(delaunay, 4, segment);
     EXPECT_FALSE(report.ok);
-    EXPECT_NE(report.problem.find("segment 0 (0, 2) is missing"), std::string::npos) << report.problem;
+    EXPECT_NE(report.problem.find("segment 0 (0, 2) is missing: no chain of constrained pieces continues it beyond vertex 0"), std::string::npos) << report.problem;
     // The other diagonal without its flag is not locally Delaunay.
     tri::Triangulation2 forced = delaunay;
     forced.triangles = {0, 1, 2, 0, 2, 3};
@@ -354,4 +354,48 @@ TEST(CheckConstrained2d, RejectsMissingSegmentsNonDelaunayEdgesAndOneSidedFlags)
     forced.constrained = {0, 0, 1, 1, 0, 0};
     report = tri::check_constrained_delaunay_2d(forced, 4, segment);
     EXPECT_TRUE(report.ok) << report.problem;
+}
+
+// Regressions found by the CGAL differential campaign and the CDT corpus (minimized inputs).
+
+TEST(Constrained2d, HullSegmentThroughHullVertex) {
+    // (0,0)-(0,2) along the hull through (0,1): the half-edge a -> (0,1) borders the infinite
+    // vertex, and the vertex on the segment must still be found.
+    Input in{{0, 0, 0, 2, 0, 1, 1, 1}, {0, 1}, {}, {}};
+    for (const auto recovery : kRecoveries) {
+        const auto r = build(in, recovery);
+        expect_valid(in, r, recovery, true, tri::segment_recovery_name(recovery));
+        EXPECT_EQ(r.piece_segment.size(), 2u);
+    }
+}
+
+TEST(Constrained2d, PieceBentThroughAnInputVertex) {
+    // Two segments a few ulps from y = x cross; the rounded crossing v6 lies off segment 0, and
+    // the piece v6 -> 1 passes exactly through input vertex 0.
+    Input in{{0x1.b6a75ac694193p-1, 0x1.b6a75ac694191p-1, 0x1.a1f25e144f579p-1, 0x1.a1f25e144f577p-1,
+              0x1.53dab466f285ap+0, 0x1.53dab466f2857p+0, 0x1.8c20e6321e5c8p-1, 0x1.8c20e6321e5c8p-1,
+              0x1.3818b352f616ap+0, 0x1.3818b352f6169p+0, 0x1.079c186ee83d8p-1, 0x1.079c186ee83d5p-1},
+             {2, 1, 4, 5}, {}, {}};
+    for (const auto recovery : kRecoveries) {
+        expect_valid(in, build(in, recovery), recovery, true, tri::segment_recovery_name(recovery));
+    }
+}
+
+TEST(Constrained2d, ReleasedConstraintIsMadeDelaunayAgain) {
+    // Three segments a few ulps from y = x, crossing twice over: the constrained edge released
+    // at a crossing whose rounded point is not next to it must be flipped if not Delaunay.
+    Input in{{0x1.5804a971442eap+0, 0x1.5804a971442eep+0, 0x1.75b112c8b81efp+0, 0x1.75b112c8b81ebp+0,
+              0x1.4b6b40eea9bdp+0, 0x1.4b6b40eea9bd3p+0, 0x1.4e3751ad40fa8p+0, 0x1.4e3751ad40faap+0,
+              0x1.252a905a50e2dp+0, 0x1.252a905a50e2cp+0, 0x1.5711b8581add2p+0, 0x1.5711b8581add3p+0,
+              0x1.6145d6e125528p+0, 0x1.6145d6e125529p+0},
+             {1, 2, 4, 0, 3, 6}, {}, {}};
+    Triangles swap_triangles;
+    for (const auto recovery : kRecoveries) {
+        const auto r = build(in, recovery);
+        expect_valid(in, r, recovery, true, tri::segment_recovery_name(recovery));
+        if (recovery == tri::SegmentRecovery::Swap) swap_triangles = canonical(r.mesh);
+        if (recovery == tri::SegmentRecovery::Cavity) {
+            EXPECT_EQ(canonical(r.mesh), swap_triangles);
+        }
+    }
 }
