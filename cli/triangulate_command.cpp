@@ -36,6 +36,7 @@ struct TriangulateArguments {
     std::string output;
     std::string algorithm = "bowyer-watson";
     std::string order = "brio";
+    std::string location = "auto";
     std::uint64_t seed = 1;
     bool stats = false;
 };
@@ -45,6 +46,13 @@ tri::InsertionOrder insertion_order(const std::string& name) {
     if (name == "random") return tri::InsertionOrder::Random;
     if (name == "brio") return tri::InsertionOrder::Brio;
     throw InputError("unknown insertion order '" + name + "' (known: given, random, brio)");
+}
+
+tri::PointLocation point_location(const std::string& name) {
+    if (name == "auto") return tri::PointLocation::Auto;
+    if (name == "walk") return tri::PointLocation::Walk;
+    if (name == "grid") return tri::PointLocation::Grid;
+    throw InputError("unknown point location '" + name + "' (known: auto, walk, grid)");
 }
 
 OutputFormat output_format(const fs::path& output) {
@@ -96,7 +104,8 @@ void run_triangulate(const TriangulateArguments& arguments) {
     const tri::Delaunay2Function construct = tri::delaunay_2d_algorithm(arguments.algorithm);
     const io::NodeFile nodes = io::read_node(arguments.input);
 
-    const tri::Delaunay2Options options{insertion_order(arguments.order), arguments.seed};
+    const tri::Delaunay2Options options{insertion_order(arguments.order), arguments.seed,
+                                        point_location(arguments.location)};
     predicates::reset_thread_stats();
     const auto start = std::chrono::steady_clock::now();
     const tri::Delaunay2Result result = construct(nodes.xy, options);
@@ -155,6 +164,13 @@ void add_triangulate_command(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--order", arguments->order, "Insertion order")
         ->check(CLI::IsMember({"given", "random", "brio"}))
+        ->capture_default_str();
+    command
+        ->add_option("--location", arguments->location,
+                     "Point location of the incremental algorithms: walk from the last "
+                     "insertion, grid (jump to a recent insertion nearby, then walk), or auto "
+                     "(grid for the random order, else walk); tanemura-merriam locates nothing")
+        ->check(CLI::IsMember({"auto", "walk", "grid"}))
         ->capture_default_str();
     command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
         ->capture_default_str();

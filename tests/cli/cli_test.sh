@@ -124,6 +124,53 @@ stats() {
     grep -q '^duplicates: 2$' "$work/out" || fail "--stats: duplicates is not 2"
 }
 
+# canonical <file.ele>: its triangles as vertex triples rotated to start at the smallest
+# vertex (orientation kept), sorted: equal for equal triangulations in any listing order.
+canonical() {
+  awk 'NR > 1 { a = $2; b = $3; c = $4
+    if (b < a && b < c) { t = a; a = b; b = c; c = t }
+    else if (c < a && c < b) { t = c; c = b; b = a; a = t }
+    print a, b, c }' "$1" | sort
+}
+
+# --location: the same triangulation whatever the point location; on a random order the grid
+# walks far less than the plain walk from the last insertion (O(1) vs O(sqrt n) steps per
+# point), and auto picks the grid for the random order.
+point_location() {
+  local location
+  local -a steps=()
+  # 3000 points from the Park-Miller generator (products below 2^53: exact in awk's doubles),
+  # so the counters are deterministic.
+  awk 'BEGIN { n = 3000; s = 12345; print n, 2, 0, 0
+    for (i = 1; i <= n; i++) {
+      s = (s * 16807) % 2147483647; x = s / 2147483647
+      s = (s * 16807) % 2147483647; y = s / 2147483647
+      printf "%d %.17g %.17g\n", i, x, y } }' >"$work/random.node"
+  for location in auto walk grid; do
+    run 0 triangulate "$work/random.node" -o "$work/$location.ele" --algorithm green-sibson \
+      --order random --location "$location" --stats || return
+    steps[${#steps[@]}]=$(awk '/^walk_steps: / { print $2 }' "$work/out")
+    canonical "$work/$location.ele" >"$work/$location.triangles"
+    cmp -s "$work/auto.triangles" "$work/$location.triangles" ||
+      fail "--location $location: a different triangulation than --location auto"
+  done
+  run 0 check "$work/random.node" "$work/grid.ele" || fail "check rejected grid.ele"
+  # steps = (auto, walk, grid)
+  [[ ${steps[0]} -eq ${steps[2]} ]] ||
+    fail "--location auto (${steps[0]} walk steps) is not the grid (${steps[2]}) for --order random"
+  ((steps[2] * 3 < steps[1])) ||
+    fail "--location grid walked ${steps[2]} steps, not under a third of walk's ${steps[1]}"
+  run 0 triangulate "$work/random.node" -o "$work/b.ele" --algorithm bowyer-watson \
+    --order brio --location grid || return
+  run 0 triangulate "$work/random.node" -o "$work/t.ele" --algorithm tanemura-merriam \
+    --location walk || return
+  canonical "$work/b.ele" | cmp -s "$work/auto.triangles" - ||
+    fail "bowyer-watson --location grid: a different triangulation"
+  canonical "$work/t.ele" | cmp -s "$work/auto.triangles" - ||
+    fail "tanemura-merriam --location walk: a different triangulation"
+  expect_error 2 'foo not in' triangulate "$work/random.node" -o "$work/x.ele" --location foo
+}
+
 bad_input() {
   expect_error 2 'nan\.node:[0-9]+: non-finite y coordinate .nan.' \
     triangulate "$data/nan.node" -o "$work/x.ele"
@@ -211,7 +258,8 @@ cdt() {
 }
 
 case "$case_name" in
-  triangulate_all_algorithms | output_formats | stats | bad_input | check_rejects_non_delaunay | cdt)
+  triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
+    check_rejects_non_delaunay | cdt)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2
