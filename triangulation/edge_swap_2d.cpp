@@ -362,7 +362,7 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion) {
     });
 }
 
-void link_neighbors_2d(Triangulation2& mesh) {
+void link_neighbors_2d(Triangulation2& mesh, CheckNumbering numbering) {
     const std::size_t slots = mesh.triangles.size();
     if (slots % 3 != 0) throw InputError("triangle list length is not a multiple of 3");
     if (!mesh.constrained.empty() && mesh.constrained.size() != slots) {
@@ -371,34 +371,39 @@ void link_neighbors_2d(Triangulation2& mesh) {
     }
     validate_points_2d(mesh.xy);
     const std::uint32_t n = mesh.vertex_count();
+    auto vertex_name = [&](std::uint64_t v) { return std::to_string(v + numbering.first_vertex); };
+    auto triangle_name = [&](std::size_t t) {
+        return "triangle " + std::to_string(t + numbering.first_triangle);
+    };
     std::vector<std::pair<std::uint64_t, EdgeIdx>> directed;
     directed.reserve(slots);
-    for (std::size_t e = 0; e < slots; ++e) {
-        const std::size_t t = e / 3;
-        const VertIdx p = mesh.triangles[e];
-        const VertIdx q = mesh.triangles[3 * t + (e % 3 + 1) % 3];
-        if (p >= n) {
-            throw InputError("triangle " + std::to_string(t) + ": vertex " + std::to_string(p) +
-                             " out of range (" + std::to_string(n) + " vertices)");
-        }
-        if (e % 3 == 0) {
-            const VertIdx r = mesh.triangles[e + 2], s = mesh.triangles[e + 1];
-            if (s >= n || r >= n) continue;  // reported on their own slots
-            if (predicates::orient2d(mesh.point(p), mesh.point(s), mesh.point(r)) !=
-                Sign::Positive) {
-                throw InputError("triangle " + std::to_string(t) + " (" + std::to_string(p) +
-                                 ", " + std::to_string(s) + ", " + std::to_string(r) +
-                                 ") is not strictly counter-clockwise");
+    for (std::size_t t = 0; 3 * t < slots; ++t) {
+        const VertIdx p = mesh.triangles[3 * t], q = mesh.triangles[3 * t + 1],
+                      r = mesh.triangles[3 * t + 2];
+        for (const VertIdx v : {p, q, r}) {
+            if (v >= n) {
+                throw InputError(triangle_name(t) + ": vertex " + vertex_name(v) +
+                                 " out of range (" + std::to_string(n) + " vertices)");
             }
         }
-        directed.emplace_back((std::uint64_t{p} << 32) | q, static_cast<EdgeIdx>(e));
+        if (predicates::orient2d(mesh.point(p), mesh.point(q), mesh.point(r)) != Sign::Positive) {
+            throw InputError(triangle_name(t) + " (" + vertex_name(p) + ", " + vertex_name(q) +
+                             ", " + vertex_name(r) + ") is not strictly counter-clockwise");
+        }
+        for (unsigned k = 0; k < 3; ++k) {
+            const std::size_t e = 3 * t + k;
+            directed.emplace_back((std::uint64_t{mesh.triangles[e]} << 32) |
+                                      mesh.triangles[3 * t + (k + 1) % 3],
+                                  static_cast<EdgeIdx>(e));
+        }
     }
     std::sort(directed.begin(), directed.end());
     for (std::size_t i = 1; i < directed.size(); ++i) {
         if (directed[i].first == directed[i - 1].first) {
-            throw InputError("edge (" + std::to_string(directed[i].first >> 32) + ", " +
-                             std::to_string(directed[i].first & 0xFFFFFFFFu) +
-                             ") appears twice in the same direction");
+            throw InputError("edge (" + vertex_name(directed[i].first >> 32) + ", " +
+                             vertex_name(directed[i].first & 0xFFFFFFFFu) + ") of " +
+                             triangle_name(directed[i].second / 3) +
+                             " appears twice in the same direction (overlapping triangles)");
         }
     }
     mesh.neighbors.assign(slots, kNone);

@@ -22,6 +22,7 @@
 #include <span>
 #include <string_view>
 
+#include "triangulation/check_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
 
 namespace exactmesh::triangulation {
@@ -80,7 +81,8 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion);
 /// Fills mesh.neighbors from mesh.triangles (each undirected edge shared by at most two
 /// triangles, in opposite directions) and sizes mesh.constrained to match when it is not empty.
 /// @throws InputError naming the edge when a directed edge appears twice or a vertex index is
-///         out of range, or when a triangle is not strictly counter-clockwise (exact orient2d).
-void link_neighbors_2d(Triangulation2& mesh);
+///         out of range, or when a triangle is not strictly counter-clockwise (exact orient2d);
+///         messages number vertices and triangles from `numbering`'s bases (a file's own).
+void link_neighbors_2d(Triangulation2& mesh, CheckNumbering numbering = {});
 
 }  // namespace exactmesh::triangulation
