@@ -31,4 +31,10 @@ void add_check_command(CLI::App& app, int& exit_status);
 /// when any case fails (each failing input is minimized and saved in DIR).
 void add_fuzz_command(CLI::App& app, int& exit_status);
 
+/// `exactmesh swap IN.node IN.ele -o OUT.ele [--criterion C] [--data-cost abn|jnd] [--stats]`.
+void add_swap_command(CLI::App& app);
+
+/// `exactmesh min-max IN.node -o OUT.ele [--stats]`.
+void add_min_max_command(CLI::App& app);
+
 }  // namespace exactmesh::cli

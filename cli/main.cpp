@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
         add_cdt_command(app);
         add_check_command(app, exit_status);
         add_fuzz_command(app, exit_status);
+        add_swap_command(app);
+        add_min_max_command(app);
         try {
             app.parse(argc, argv);
         } catch (const CLI::ParseError& error) {
@@ -50,7 +52,8 @@ int main(int argc, char** argv) {
         }
         if (app.get_subcommands().empty()) {
             return report_error(
-                "a subcommand is required: triangulate, cdt, check or fuzz (see exactmesh --help)",
+                "a subcommand is required: triangulate, cdt, check, fuzz, swap or min-max (see "
+                "exactmesh --help)",
                 kExitBadInput);
         }
         return exit_status;
