@@ -395,3 +395,22 @@ TEST(Constrained2d_KnownBugs, DISABLED_PieceBentThroughVertexOffTheSegment) {
         EXPECT_TRUE(report.ok) << tri::segment_recovery_name(recovery) << ": " << report.problem;
     }
 }
+
+TEST(Constrained2d_KnownBugs, DISABLED_NotLocallyDelaunayAfterNearParallelCrossings) {
+    // Three segments a few ulps from the line y = x; 1-2 and 4-0 cross twice over with 3-6,
+    // at rounded intersections v7 and v8. Every insertion order and both recoveries return
+    // a triangulation in which the unconstrained edge 6-7 is not locally Delaunay (vertex 0
+    // lies inside the circumcircle of triangle (6, 7, 5)), and swap and cavity then differ.
+    // Minimised from the differential campaign's earlier near-collinear crossing distribution
+    // (seed 4, 158 points).
+    const CorpusInput in{{0x1.5804a971442eap+0, 0x1.5804a971442eep+0, 0x1.75b112c8b81efp+0, 0x1.75b112c8b81ebp+0,
+                          0x1.4b6b40eea9bdp+0, 0x1.4b6b40eea9bd3p+0, 0x1.4e3751ad40fa8p+0, 0x1.4e3751ad40faap+0,
+                          0x1.252a905a50e2dp+0, 0x1.252a905a50e2cp+0, 0x1.5711b8581add2p+0, 0x1.5711b8581add3p+0,
+                          0x1.6145d6e125528p+0, 0x1.6145d6e125529p+0},
+                         {1, 2, 4, 0, 3, 6}};
+    for (const auto recovery : {tri::SegmentRecovery::Swap, tri::SegmentRecovery::Cavity}) {
+        const tri::Cdt2Result r = build(in, recovery, false);
+        const auto report = tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments);
+        EXPECT_TRUE(report.ok) << tri::segment_recovery_name(recovery) << ": " << report.problem;
+    }
+}
