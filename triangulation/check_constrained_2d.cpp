@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -146,11 +147,35 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
     for (double c : mesh.xy) extent = std::max(extent, std::fabs(c));
     const double tolerance = std::ldexp(extent, -40);
     std::vector<std::uint32_t> visited(n, 0);  // segment number + 1 of the last search that met v
+    // A segment may name a duplicate point that no triangle uses: follow the copy that is used
+    // (a vertex of a triangle or of a piece) at the same coordinates.
+    std::vector<std::uint8_t> used(n, 0);
+    for (const VertIdx v : tv) used[v] = 1;
+    for (VertIdx v = 0; v < n; ++v) {
+        if (!constrained_neighbors[v].empty()) used[v] = 1;
+    }
+    std::unordered_map<std::uint64_t, VertIdx> used_at;  // hash of (x, y) -> a used vertex
+    auto point_hash = [&](VertIdx v) {
+        std::uint64_t hx, hy;
+        std::memcpy(&hx, mesh.point(v), 8);
+        std::memcpy(&hy, mesh.point(v) + 1, 8);
+        return hx * 0x9E3779B97F4A7C15ull ^ hy;
+    };
+    for (VertIdx v = 0; v < n; ++v) {
+        if (used[v]) used_at.emplace(point_hash(v), v);
+    }
+    auto canonical = [&](VertIdx v) {
+        if (used[v]) return v;
+        const auto it = used_at.find(point_hash(v));
+        if (it == used_at.end()) return v;
+        const VertIdx w = it->second;
+        return mesh.point(w)[0] == mesh.point(v)[0] && mesh.point(w)[1] == mesh.point(v)[1] ? w : v;
+    };
     for (std::size_t s = 0; 2 * s + 1 < segments.size(); ++s) {
-        const VertIdx a = segments[2 * s], b = segments[2 * s + 1];
-        const std::string name = "segment " + std::to_string(s + numbering.first_vertex) +
-                                 " (" + vertex(a) + ", " + vertex(b) + ")";
-        if (a >= n || b >= n) return fail(name + " names a vertex that does not exist");
+        const std::string name = "segment " + std::to_string(s + numbering.first_vertex) + " (" +
+                                 vertex(segments[2 * s]) + ", " + vertex(segments[2 * s + 1]) + ")";
+        if (segments[2 * s] >= n || segments[2 * s + 1] >= n) return fail(name + " names a vertex that does not exist");
+        const VertIdx a = canonical(segments[2 * s]), b = canonical(segments[2 * s + 1]);
         const double* pa = mesh.point(a);
         const double* pb = mesh.point(b);
         if (pa[0] == pb[0] && pa[1] == pb[1]) continue;

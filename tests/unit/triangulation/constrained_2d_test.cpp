@@ -399,3 +399,12 @@ TEST(Constrained2d, ReleasedConstraintIsMadeDelaunayAgain) {
         }
     }
 }
+
+TEST(CheckConstrained2d, SegmentNamingAnUnusedDuplicateFollowsTheKeptCopy) {
+    // Vertex 4 repeats vertex 2 and no triangle uses it; a segment naming it is still present.
+    Input in{{0, 0, 1, 0, 1, 1, 0, 1, 1, 1}, {0, 4}, {}, {}};
+    const auto r = build(in, tri::SegmentRecovery::Swap);
+    ASSERT_EQ(r.merged_into[4], 2u);
+    const auto report = tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments);
+    EXPECT_TRUE(report.ok) << report.problem;
+}
