@@ -174,7 +174,10 @@ TEST(Triangulation_EdgeSwap2, DelaunayFromEveryTriangulationOfSmallSets) {
     // triangulation: the claim "from any starting triangulation", exhaustively for small sets.
     std::mt19937_64 rng(5);
     std::vector<std::vector<double>> sets;
-    for (int i = 0; i < 60; ++i) sets.push_back(integer_points(5 + i % 4, i % 2 ? 6 : 1000, rng));
+    const int random_sets = std::max(4, static_cast<int>(60 * std::min(1.0, test_scale())));
+    for (int i = 0; i < random_sets; ++i) {
+        sets.push_back(integer_points(5 + i % 4, i % 2 ? 6 : 1000, rng));
+    }
     sets.push_back({0, 0, 1, 0, 2, 0, 0, 1, 1, 1, 2, 1, 0, 2, 1, 2, 2, 2});   // 3x3 grid
     sets.push_back({5, 0, 3, 4, 0, 5, -3, 4, -5, 0, -4, -3, 0, -5, 4, -3});    // cocircular
     std::size_t starts = 0;
@@ -187,7 +190,7 @@ TEST(Triangulation_EdgeSwap2, DelaunayFromEveryTriangulationOfSmallSets) {
             ++starts;
         });
     }
-    EXPECT_GT(starts, 1000u);
+    EXPECT_GT(starts, random_sets == 60 ? 1000u : 100u);
 }
 
 TEST(Triangulation_EdgeSwap2, MaxMinAngleReachesDelaunayInGeneralPosition) {
