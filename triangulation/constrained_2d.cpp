@@ -145,6 +145,15 @@ private:
         return v;
     }
 
+    /// Undoes add_vertex for a probe that no triangle uses (a located point, or a rounded
+    /// point equal to an existing vertex).
+    void remove_last_vertex() {
+        mesh_.xy.resize(mesh_.xy.size() - 2);
+        core_.input_index.pop_back();
+        core_.merged_into.pop_back();
+        vertex_edge_.pop_back();
+    }
+
     // ---- insertion with Lawson flips that never cross a constraint --------------------
     void insert_vertex(VertIdx p, TriIdx t);
     void split_triangle(TriIdx t, VertIdx p);
@@ -159,6 +168,14 @@ private:
     // ---- segments ----------------------------------------------------------------------
     void prepare_segments();
     void insert_piece(const Piece& piece);
+    /// The piece passes exactly through vertex v: recover its two parts instead (a warning).
+    void split_piece_at_vertex(const Piece& piece, VertIdx v) {
+        ++result_.counters.vertices_on_segments;
+        result_.warnings.push_back("segment " + segment_name(piece.segment) + " passes through " + vertex_name(v) +
+                                   "; split there");
+        work_.push_back({v, piece.b, piece.segment});
+        work_.push_back({piece.a, v, piece.segment});
+    }
     void split_at_intersection(const Piece& piece, EdgeIdx h);
     void recover_by_swaps(const Piece& piece, const std::vector<EdgeIdx>& crossed);
     void recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx>& crossed);
@@ -359,11 +376,7 @@ void CdtBuilder::insert_piece(const Piece& piece) {
                 // (a segment along the hull through a hull vertex).
                 const Sign sx = core_.orient(a, b, x);
                 if (sx == Sign::Zero && on_ray(a, b, x)) {
-                    ++result_.counters.vertices_on_segments;
-                    result_.warnings.push_back("segment " + segment_name(piece.segment) + " passes through " +
-                                               vertex_name(x) + "; split there");
-                    work_.push_back({x, b, piece.segment});
-                    work_.push_back({a, x, piece.segment});
+                    split_piece_at_vertex(piece, x);
                     return;
                 }
                 if (y != kInfinite && sx == Sign::Negative && entry == kNone &&
@@ -391,11 +404,7 @@ void CdtBuilder::insert_piece(const Piece& piece) {
         const Sign sw = core_.orient(a, b, w);
         ++result_.counters.walk_steps;
         if (sw == Sign::Zero) {
-            ++result_.counters.vertices_on_segments;
-            result_.warnings.push_back("segment " + segment_name(piece.segment) + " passes through " +
-                                       vertex_name(w) + "; split there");
-            work_.push_back({w, b, piece.segment});
-            work_.push_back({a, w, piece.segment});
+            split_piece_at_vertex(piece, w);
             return;
         }
         h = sw == Sign::Positive ? next_edge(f) : prev_edge(f);
@@ -427,10 +436,7 @@ void CdtBuilder::split_at_intersection(const Piece& piece, EdgeIdx h) {
     }
     segment_of_[h] = segment_of_[mesh_.twin[h]] = kNone;
     if (at != candidate) {
-        mesh_.xy.resize(mesh_.xy.size() - 2);
-        core_.input_index.pop_back();
-        core_.merged_into.pop_back();
-        vertex_edge_.pop_back();
+        remove_last_vertex();
         ++result_.counters.vertices_on_segments;
         result_.warnings.push_back("segments " + segment_name(piece.segment) + " and " +
                                    segment_name(other) + " cross at " + vertex_name(at) +
@@ -650,10 +656,7 @@ void CdtBuilder::conform() {
                 }
             }
             if (at != mid) {
-                mesh_.xy.resize(mesh_.xy.size() - 2);
-                core_.input_index.pop_back();
-                core_.merged_into.pop_back();
-                vertex_edge_.pop_back();
+                remove_last_vertex();
                 if (at == piece.a || at == piece.b) {
                     throw GeometryError("conforming Delaunay: segment " + segment_name(piece.segment) +
                                         " has a piece too short to split (adjacent doubles)");
@@ -684,10 +687,7 @@ void CdtBuilder::conform() {
 TriIdx CdtBuilder::locate_point(double x, double y) {
     const VertIdx probe = add_vertex(x, y);
     const TriIdx t = core_.walk_to(probe);
-    mesh_.xy.resize(mesh_.xy.size() - 2);
-    core_.input_index.pop_back();
-    core_.merged_into.pop_back();
-    vertex_edge_.pop_back();
+    remove_last_vertex();
     return t;
 }
 
