@@ -105,6 +105,7 @@ GridLayout grid_layout(std::span<const double> xy) {
         lo_y = std::min(lo_y, xy[2 * v + 1]);
         hi_y = std::max(hi_y, xy[2 * v + 1]);
     }
+    if (n == 0) lo_x = lo_y = hi_x = hi_y = 0;  // no point: a one-cell grid, no NaN extents
     GridLayout g;
     const double magnitude = std::max({std::fabs(lo_x), std::fabs(hi_x), std::fabs(lo_y),
                                        std::fabs(hi_y), 1e-300});

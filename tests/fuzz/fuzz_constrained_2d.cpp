@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -115,7 +116,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<tri::VertIdx> kept(segments);
     for (tri::VertIdx& v : kept) v = cdt[0].merged_into[v];  // the check follows kept copies
     for (std::size_t k = 0; k < 2; ++k) {
-        const auto report = tri::check_constrained_delaunay_2d(cdt[k].mesh, cdt[k].input_vertex_count, kept);
+        // Collinear input has no triangle to carry flags: the check then follows the pieces.
+        const auto report = tri::check_constrained_delaunay_2d(
+            cdt[k].mesh, cdt[k].input_vertex_count, kept,
+            cdt[k].mesh.triangles.empty() ? std::span<const tri::VertIdx>(cdt[k].pieces) : std::span<const tri::VertIdx>{});
         if (!report.ok) {
             fail(xy, segments, std::string(tri::segment_recovery_name(recoveries[k])) + ": " + report.problem);
         }
@@ -136,7 +140,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     const auto delaunay = tri::check_delaunay_2d(conforming.mesh.xy, conforming.mesh.triangles);
     if (!delaunay.ok) fail(xy, segments, "conforming is not Delaunay: " + delaunay.problem);
-    const auto report = tri::check_constrained_delaunay_2d(conforming.mesh, conforming.input_vertex_count, kept);
+    const auto report = tri::check_constrained_delaunay_2d(
+        conforming.mesh, conforming.input_vertex_count, kept,
+        conforming.mesh.triangles.empty() ? std::span<const tri::VertIdx>(conforming.pieces) : std::span<const tri::VertIdx>{});
     if (!report.ok) fail(xy, segments, "conforming: " + report.problem);
     return 0;
 }
