@@ -70,7 +70,7 @@ private:
 /// never a decision). Cell indices are monotone functions of the coordinates: a point in a
 /// column left of another's has the smaller x, exactly (the hull filter relies on it).
 struct GridLayout {
-    double scale = 1, min_x = 0, min_y = 0, cell = 1, inv_cell = 1;
+    double scale = 1, min_x = 0, min_y = 0, max_x = 0, max_y = 0, cell = 1, inv_cell = 1;
     std::uint32_t columns = 1, rows = 1;
 
     std::uint32_t column(double scaled_x) const { return clamp_index((scaled_x - min_x) * inv_cell, columns); }
@@ -114,7 +114,9 @@ GridLayout grid_layout(std::span<const double> xy) {
     g.scale = std::ldexp(1.0, -exponent);  // |scaled| < 1
     g.min_x = lo_x * g.scale;
     g.min_y = lo_y * g.scale;
-    const double width = hi_x * g.scale - g.min_x, height = hi_y * g.scale - g.min_y;
+    g.max_x = hi_x * g.scale;
+    g.max_y = hi_y * g.scale;
+    const double width = g.max_x - g.min_x, height = g.max_y - g.min_y;
     const double extent = std::max(width, height);
     const double max_cells = std::min(4.0 * static_cast<double>(n) + 64.0, 0x1p30);
     auto set_cell = [&](double cell) {
@@ -409,7 +411,7 @@ private:
             const double dx = c.ox < x0 ? x0 - c.ox : (c.ox > x1 ? c.ox - x1 : 0.0);
             const double dy = c.oy < y0 ? y0 - c.oy : (c.oy > y1 ? c.oy - y1 : 0.0);
             const double radius = c.r + c.widen;
-            if (dx * dx + dy * dy > radius * radius) return;
+            if (dx * dx + dy * dy > radius * radius * (1 + 0x1p-48)) return;
             // The corner farthest left of ab.
             const double ex = bx_ - ax_, ey = by_ - ay_;
             const double px = (ey < 0 ? x1 : x0) - ax_, py = (ex > 0 ? y1 : y0) - ay_;
@@ -481,10 +483,32 @@ private:
         if (maybe_left(c.ux - c.r, c.uy)) lo_x = std::min(lo_x, c.ox - c.r);
         if (maybe_left(c.ux, c.uy + c.r)) hi_y = std::max(hi_y, c.oy + c.r);
         if (maybe_left(c.ux, c.uy - c.r)) lo_y = std::min(lo_y, c.oy - c.r);
-        lo_i_ = std::max(lo_i_, layout_.column(lo_x - c.widen));
-        hi_i_ = std::min(hi_i_, layout_.column(hi_x + c.widen));
-        lo_j_ = std::max(lo_j_, layout_.row(lo_y - c.widen));
-        hi_j_ = std::min(hi_j_, layout_.row(hi_y + c.widen));
+        // Within the current box and the points' bounding box, the disk reaches only so far
+        // along each axis: clip the x range by the disk over the y range, then the y range
+        // over that x range (a circle far larger than the point set, through nearly collinear
+        // points, would otherwise span the whole grid).
+        const double w = c.widen, cell = layout_.cell;
+        lo_x = std::max({lo_x, layout_.min_x + lo_i_ * cell, layout_.min_x}) - w;
+        hi_x = std::min({hi_x, layout_.min_x + (hi_i_ + 1.0) * cell, layout_.max_x}) + w;
+        lo_y = std::max({lo_y, layout_.min_y + lo_j_ * cell, layout_.min_y}) - w;
+        hi_y = std::min({hi_y, layout_.min_y + (hi_j_ + 1.0) * cell, layout_.max_y}) + w;
+        const double radius2 = (c.r + w) * (c.r + w) * (1 + 0x1p-48);
+        auto half_chord = [radius2](double offset) {  // >= the true half chord at that offset
+            return std::sqrt(std::max(0.0, radius2 - offset * offset * (1 - 0x1p-48))) * (1 + 0x1p-48);
+        };
+        auto distance = [](double value, double lo, double hi) {
+            return value < lo ? lo - value : (value > hi ? value - hi : 0.0);
+        };
+        const double half_x = half_chord(distance(c.oy, lo_y, hi_y));
+        lo_x = std::max(lo_x, c.ox - half_x);
+        hi_x = std::min(hi_x, c.ox + half_x);
+        const double half_y = half_chord(distance(c.ox, lo_x, hi_x));
+        lo_y = std::max(lo_y, c.oy - half_y);
+        hi_y = std::min(hi_y, c.oy + half_y);
+        lo_i_ = std::max(lo_i_, layout_.column(lo_x - w));
+        hi_i_ = std::min(hi_i_, layout_.column(hi_x + w));
+        lo_j_ = std::max(lo_j_, layout_.row(lo_y - w));
+        hi_j_ = std::min(hi_j_, layout_.row(hi_y + w));
         boxed_ = true;
     }
 
@@ -510,14 +534,16 @@ private:
                 const double ox = o[0] * s, oy = o[1] * s;
                 out.ux = ox - ax_;
                 out.uy = oy - ay_;
-                absolute = 0x1p-51 * (std::fabs(ox) + std::fabs(oy));
+                absolute = 0x1p-51 * (std::fabs(ox) + std::fabs(oy)) + 0x1p-1000;
             } catch (const GeometryError&) {
                 return out;
             }
         }
         const double r = std::sqrt(out.ux * out.ux + out.uy * out.uy);
         // Underflowed coordinates are off by at most 2^-1075 each: 2^-1000 covers them.
-        out.slack = 1e-8 * r + 2 * absolute + 0x1p-1000;
+        // The double centre: 1e-8 r. The correctly rounded one: its absolute rounding, and
+        // a few units in the last place of r for forming u and r.
+        out.slack = (absolute > 0 ? 0x1p-48 : 1e-8) * r + 2 * absolute + 0x1p-1000;
         out.r = r;
         if (!std::isfinite(r) || !std::isfinite(out.slack)) return out;
         // Certainly outside: |e| > r + slack + 2^-53 (|e| + r); the factors on the squares
