@@ -7,7 +7,7 @@
 // tanemura_merriam, cgal}, distribution in {uniform, gaussian}, order in {brio, random} (none for
 // tanemura_merriam, which orders nothing; brio for cgal, whose range constructor spatially sorts
 // the points itself), n = 2^10 ... 2^EXACTMESH_BENCH_MAX_LOG2 (default 20, at most 22; the
-// random order stops at 2^EXACTMESH_BENCH_RANDOM_MAX_LOG2, default 16: see
+// random order up to 2^EXACTMESH_BENCH_RANDOM_MAX_LOG2, by default the same: see
 // random_max_log2_points). Each (algo, distribution, order) family is fitted with
 // Complexity(oNLogN). The adversary, n = 2^8 ... 2^14: BM_bowyer_watson/parabola/given/<n>
 // inserts points (t, t^2) sorted by decreasing t as given (Theta(n^2), oNSquared), against
@@ -208,13 +208,15 @@ int max_log2_points() {
     return value;
 }
 
-/// The random insertion order stops earlier: EXACTMESH_BENCH_RANDOM_MAX_LOG2 (default 16, at
-/// most max_log2_points()). Our visibility walk starts from the last inserted point, and with
-/// no location structure (hierarchy, history DAG) a random order walks ~sqrt(n) triangles per
-/// point, Theta(n^1.5) in all: about 35 s per construction at 2^20 on the reference machine.
+/// The random insertion order may stop earlier: EXACTMESH_BENCH_RANDOM_MAX_LOG2 (default and
+/// at most max_log2_points()). With the grid jump-and-walk location (PointLocation::Auto picks
+/// it for the random order) a random order walks O(1) triangles per point, so it runs to the
+/// largest size too; with the plain walk from the last insertion it cost ~sqrt(n) steps per
+/// point, Theta(n^1.5), about 35 s per construction at 2^20, and stopped at 2^16.
 int random_max_log2_points() {
-    static const int value = std::min(
-        log2_from_environment("EXACTMESH_BENCH_RANDOM_MAX_LOG2", 16, 10, 22), max_log2_points());
+    static const int value =
+        std::min(log2_from_environment("EXACTMESH_BENCH_RANDOM_MAX_LOG2", max_log2_points(), 10, 22),
+                 max_log2_points());
     return value;
 }
 

@@ -312,7 +312,8 @@ def counter_tables(res, out):
     out += table(["family", "N"] + COUNTERS, rows)
     out.append("")
     # The walk length shows the point-location cost that orders trade: BRIO keeps it O(1) per
-    # point, a random order without a location structure pays ~sqrt(n).
+    # point from the last insertion; a random order needs the grid jump-and-walk for that (the
+    # plain walk would pay ~sqrt(n)).
     for dist in DISTRIBUTIONS:
         fams = [f for f in FAMILIES if f[0] != "cgal" and f[1] != "none" and
                 res.sizes(f[0], dist, f[1])]
@@ -333,8 +334,9 @@ def tanemura_merriam_table(res, out):
     if not ns:
         return
     out.append("Tanemura-Merriam's candidate search by N (candidates/pt and incircle_calls/pt): "
-               "flat on uniform points; on Gaussian clusters its uniform grid, sized for two "
-               "points per cell over the bounding box, puts whole clusters into a few cells.")
+               "flat on uniform points; on Gaussian clusters its uniform grid, refined where "
+               "the points crowd but to at most 4 cells per point, still holds many points per "
+               "cell at small N (few, dense clusters in a large bounding box).")
     out.append("")
     rows = []
     for n in ns:
@@ -573,7 +575,8 @@ def main():
         f"CGAL {ctx.get('exactmesh_cgal', 'absent')}, {ctx.get('date', '?')}. N up to "
         f"2^{ctx.get('exactmesh_max_log2_points', '?')} (EXACTMESH_BENCH_MAX_LOG2); the random "
         f"order up to 2^{ctx.get('exactmesh_random_max_log2_points', '?')} "
-        f"(EXACTMESH_BENCH_RANDOM_MAX_LOG2), being Theta(n^1.5) (see walk steps below). "
+        f"(EXACTMESH_BENCH_RANDOM_MAX_LOG2), located by the grid jump-and-walk "
+        f"(see walk steps below). "
         f"Heap {ctx.get('exactmesh_heap', '?')} (warm: freed memory stays resident, so no "
         f"construction pays page faults; EXACTMESH_BENCH_COLD_HEAP=1 for cold); repetitions "
         f"{'randomly interleaved' if ctx.get('exactmesh_interleaved') == 'yes' else 'in sequence'}"
