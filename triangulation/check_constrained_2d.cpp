@@ -193,8 +193,8 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
                                       (static_cast<long double>(mesh.point(v)[1]) - pa[1]) * dx;
             return std::fabs(static_cast<double>(cross / length)) <= tolerance;
         };
-        // Depth-first search over constrained pieces moving strictly towards b (a DAG, so
-        // each vertex is expanded once): near-collinear vertices can offer several ways on.
+        // Depth-first search over constrained pieces never moving away from b, each vertex
+        // expanded once: near-collinear vertices can offer several ways on.
         std::vector<VertIdx> stack{a};
         const auto stamp = static_cast<std::uint32_t>(s + 1);
         visited[a] = stamp;
@@ -210,7 +210,9 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
                     break;
                 }
                 if (visited[w] == stamp) continue;
-                if (along(w) > along(current) && near_line(w)) {
+                // Not backwards (equal projections allowed: long double cannot separate points of very
+                // different magnitudes; the visited stamps keep the search finite).
+                if (along(w) >= along(current) && near_line(w)) {
                     visited[w] = stamp;
                     stack.push_back(w);
                 }

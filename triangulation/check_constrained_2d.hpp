@@ -25,7 +25,8 @@ namespace exactmesh::triangulation {
 ///        segment (exact orient2d), and through any vertex within 2^-40 of the coordinates'
 ///        largest magnitude from its line: added vertices are rounded (and may be split
 ///        again), and a piece between rounded vertices may pass exactly through an input
-///        vertex that is not exactly on the segment. Each step moves strictly towards b.
+///        vertex that is not exactly on the segment. No step moves away from b (projections
+///        in long double).
 ///        Zero-length segments are skipped.
 /// @param pieces 2·#P constrained edges as the producer reports them (Cdt2Result::pieces), or
 ///        empty: then the pieces are the flagged edges of the mesh, and every segment must be
