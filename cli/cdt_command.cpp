@@ -77,9 +77,7 @@ void run_cdt(const CdtArguments& arguments) {
     tri::Cdt2Options options;
     options.recovery = tri::segment_recovery_from_name(arguments.recovery);
     options.remove_exterior = !arguments.convex_hull;
-    options.order = arguments.order == "given"    ? tri::InsertionOrder::Given
-                    : arguments.order == "random" ? tri::InsertionOrder::Random
-                                                  : tri::InsertionOrder::Brio;
+    options.order = insertion_order(arguments.order);
     options.seed = arguments.seed;
     options.first_index = base;
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};

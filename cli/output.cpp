@@ -37,6 +37,13 @@ OutputFormat output_format(const std::filesystem::path& output) {
                      "' (use .ele, .msh, .vtu or .svg)");
 }
 
+triangulation::InsertionOrder insertion_order(const std::string& name) {
+    if (name == "given") return triangulation::InsertionOrder::Given;
+    if (name == "random") return triangulation::InsertionOrder::Random;
+    if (name == "brio") return triangulation::InsertionOrder::Brio;
+    throw InputError("unknown insertion order '" + name + "' (known: given, random, brio)");
+}
+
 void print_predicate_stats(const predicates::PredicateStats& stats) {
     if (predicates::stats_enabled()) {
         print_stage_counts("orient2d", stats.orient2d);
