@@ -189,7 +189,10 @@ private:
     std::vector<std::uint8_t> removed_;  // per triangle slot
     std::vector<double> attribute_;      // per triangle slot
     TriIdx locate_point(double x, double y);
-    void flood(TriIdx start, std::vector<std::uint8_t>& mark_value, std::uint8_t value);
+    /// Marks `value` on every triangle reached from start without crossing a constraint (or
+    /// into the infinite vertex); calls reached(t) for each one marked.
+    template <class Mark, class Reached>
+    void flood(TriIdx start, std::vector<Mark>& mark_value, Mark value, Reached reached);
     void remove_exterior_and_holes();
     void assign_regions();
     void collect_output();
@@ -691,9 +694,11 @@ TriIdx CdtBuilder::locate_point(double x, double y) {
     return t;
 }
 
-void CdtBuilder::flood(TriIdx start, std::vector<std::uint8_t>& mark_value, std::uint8_t value) {
+template <class Mark, class Reached>
+void CdtBuilder::flood(TriIdx start, std::vector<Mark>& mark_value, Mark value, Reached reached) {
     std::vector<TriIdx> stack{start};
     mark_value[start] = value;
+    reached(start);
     while (!stack.empty()) {
         const TriIdx t = stack.back();
         stack.pop_back();
@@ -703,6 +708,7 @@ void CdtBuilder::flood(TriIdx start, std::vector<std::uint8_t>& mark_value, std:
             const TriIdx u = triangle_of(mesh_.twin[e]);
             if (mark_value[u] == value || mesh_.is_infinite(u)) continue;
             mark_value[u] = value;
+            reached(u);
             stack.push_back(u);
         }
     }
@@ -719,7 +725,7 @@ void CdtBuilder::remove_exterior_and_holes() {
                 const EdgeIdx e = 3 * t + k;
                 if (mesh_.origin(e) == kInfinite || mesh_.destination(e) == kInfinite) continue;
                 const TriIdx inside = triangle_of(mesh_.twin[e]);
-                if (segment_of_[e] == kNone && !removed_[inside]) flood(inside, removed_, 1);
+                if (segment_of_[e] == kNone && !removed_[inside]) flood(inside, removed_, std::uint8_t{1}, [](TriIdx) {});
             }
         }
     }
@@ -730,7 +736,7 @@ void CdtBuilder::remove_exterior_and_holes() {
             result_.warnings.push_back("hole " + std::to_string(h + options_.first_index) + " lies outside the triangulation; ignored");
             continue;
         }
-        if (!removed_[t]) flood(t, removed_, 1);
+        if (!removed_[t]) flood(t, removed_, std::uint8_t{1}, [](TriIdx) {});
     }
 }
 
@@ -738,18 +744,16 @@ void CdtBuilder::assign_regions() {
     const std::size_t regions = pslg_.regions.size() / 4;
     if (regions == 0) return;
     attribute_.assign(mesh_.triangle_slots(), 0.0);
-    std::vector<std::uint8_t> seen(mesh_.triangle_slots(), 0);
+    // One stamp per region (region number + 1): each flood costs its own triangles only.
+    std::vector<std::uint32_t> seen(mesh_.triangle_slots(), 0);
     for (std::size_t r = 0; r < regions; ++r) {
         const TriIdx t = locate_point(pslg_.regions[4 * r], pslg_.regions[4 * r + 1]);
         if (mesh_.is_infinite(t) || removed_[t]) {
             result_.warnings.push_back("region " + std::to_string(r + options_.first_index) + " lies outside the domain; ignored");
             continue;
         }
-        std::fill(seen.begin(), seen.end(), 0);
-        flood(t, seen, 1);
-        for (TriIdx u = 0; u < seen.size(); ++u) {
-            if (seen[u]) attribute_[u] = pslg_.regions[4 * r + 2];
-        }
+        const double attribute = pslg_.regions[4 * r + 2];
+        flood(t, seen, static_cast<std::uint32_t>(r + 1), [&](TriIdx u) { attribute_[u] = attribute; });
     }
 }
 
