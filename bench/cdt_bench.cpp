@@ -17,12 +17,11 @@
 // both points again).
 //
 // Only the construction is timed; the result is destroyed with the timer paused. Counters
-// (first timed run): peak_bytes (see "Heap accounting", the rule of delaunay2d_bench), and for
+// (first timed run): peak_bytes (bench/heap_accounting.cpp, the rule of delaunay2d_bench), and for
 // ours crossed_edges, recovery_flips, delaunay_flips, cavity_triangles, conforming_splits,
 // triangles; triangles for CGAL too (a cross-check).
 #define CGAL_NO_CDT_2_WARNING  // Epick with Exact_intersections_tag warns on every intersection
 #include <benchmark/benchmark.h>
-#include <malloc.h>
 
 #include <atomic>
 #include <cstdint>
@@ -35,6 +34,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/heap_accounting.hpp"
 #include "generators/pslg_inputs.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -44,121 +44,10 @@
 #include <CGAL/version.h>
 #endif
 
-// ---------------------------------------------------------------------------------------------
-// Heap accounting: peak live heap bytes of one construction, exactly as in delaunay2d_bench.cpp
-// (every operator new/delete replaced by malloc/free plus a running count of live bytes by
-// malloc_usable_size, and of its maximum; peak = maximum during the construction - live bytes
-// before it, with the result still alive).
-
 namespace {
 
-constinit std::atomic<std::size_t> heap_live_bytes{0};
-constinit std::atomic<std::size_t> heap_peak_bytes{0};
-
-void note_allocation(void* block) noexcept {
-    const std::size_t bytes = malloc_usable_size(block);
-    const std::size_t live = heap_live_bytes.fetch_add(bytes, std::memory_order_relaxed) + bytes;
-    std::size_t peak = heap_peak_bytes.load(std::memory_order_relaxed);
-    while (live > peak &&
-           !heap_peak_bytes.compare_exchange_weak(peak, live, std::memory_order_relaxed)) {
-    }
-}
-
-void release(void* block) noexcept {
-    if (block == nullptr) return;
-    heap_live_bytes.fetch_sub(malloc_usable_size(block), std::memory_order_relaxed);
-    std::free(block);
-}
-
-void* try_allocate(std::size_t size) noexcept {
-    void* block = std::malloc(size == 0 ? 1 : size);
-    if (block != nullptr) note_allocation(block);
-    return block;
-}
-
-void* try_allocate_aligned(std::size_t size, std::align_val_t alignment) noexcept {
-    const auto align = static_cast<std::size_t>(alignment);
-    // aligned_alloc wants a size that is a multiple of the alignment.
-    const std::size_t rounded = size == 0 ? align : (size + align - 1) / align * align;
-    void* block = std::aligned_alloc(align, rounded);
-    if (block != nullptr) note_allocation(block);
-    return block;
-}
-
-void* allocate(std::size_t size) {
-    if (void* block = try_allocate(size)) return block;
-    throw std::bad_alloc();
-}
-
-void* allocate_aligned(std::size_t size, std::align_val_t alignment) {
-    if (void* block = try_allocate_aligned(size, alignment)) return block;
-    throw std::bad_alloc();
-}
-
-}  // namespace
-
-// All replaceable forms, so that no allocation bypasses the count whichever form a library uses.
-void* operator new(std::size_t size) {
-    return allocate(size);
-}
-void* operator new[](std::size_t size) {
-    return allocate(size);
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-    return try_allocate(size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-    return try_allocate(size);
-}
-void* operator new(std::size_t size, std::align_val_t alignment) {
-    return allocate_aligned(size, alignment);
-}
-void* operator new[](std::size_t size, std::align_val_t alignment) {
-    return allocate_aligned(size, alignment);
-}
-void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-    return try_allocate_aligned(size, alignment);
-}
-void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-    return try_allocate_aligned(size, alignment);
-}
-void operator delete(void* block) noexcept {
-    release(block);
-}
-void operator delete[](void* block) noexcept {
-    release(block);
-}
-void operator delete(void* block, std::size_t) noexcept {
-    release(block);
-}
-void operator delete[](void* block, std::size_t) noexcept {
-    release(block);
-}
-void operator delete(void* block, const std::nothrow_t&) noexcept {
-    release(block);
-}
-void operator delete[](void* block, const std::nothrow_t&) noexcept {
-    release(block);
-}
-void operator delete(void* block, std::align_val_t) noexcept {
-    release(block);
-}
-void operator delete[](void* block, std::align_val_t) noexcept {
-    release(block);
-}
-void operator delete(void* block, std::size_t, std::align_val_t) noexcept {
-    release(block);
-}
-void operator delete[](void* block, std::size_t, std::align_val_t) noexcept {
-    release(block);
-}
-void operator delete(void* block, std::align_val_t, const std::nothrow_t&) noexcept {
-    release(block);
-}
-void operator delete[](void* block, std::align_val_t, const std::nothrow_t&) noexcept {
-    release(block);
-}
-namespace {
+using exactmesh::bench::heap_growth_since;
+using exactmesh::bench::start_heap_measurement;
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
@@ -179,16 +68,6 @@ const gen::PslgInput& input(Workload w, std::uint32_t points, std::uint32_t segm
     return it->second;
 }
 
-std::size_t heap_mark() {
-    const std::size_t before = heap_live_bytes.load(std::memory_order_relaxed);
-    heap_peak_bytes.store(before, std::memory_order_relaxed);
-    return before;
-}
-
-double heap_growth_since(std::size_t before) {
-    return static_cast<double>(heap_peak_bytes.load(std::memory_order_relaxed) - before);
-}
-
 void BM_cdt_ours(benchmark::State& state, Workload w, tri::SegmentRecovery recovery) {
     const auto points = static_cast<std::uint32_t>(state.range(0));
     const auto segments = static_cast<std::uint32_t>(state.range(1));
@@ -202,7 +81,7 @@ void BM_cdt_ours(benchmark::State& state, Workload w, tri::SegmentRecovery recov
     tri::Cdt2Counters counters;
     double triangles = 0;
     for (auto _ : state) {
-        const std::size_t before = first ? heap_mark() : 0;
+        const std::size_t before = first ? start_heap_measurement() : 0;
         auto result = tri::constrained_delaunay_2d(pslg, options);
         if (first) {
             peak = heap_growth_since(before);
@@ -241,7 +120,7 @@ void BM_cdt_cgal(benchmark::State& state, Workload w) {
     bool first = true;
     double peak = 0, triangles = 0;
     for (auto _ : state) {
-        const std::size_t before = first ? heap_mark() : 0;
+        const std::size_t before = first ? start_heap_measurement() : 0;
         auto cdt = std::make_unique<CgalCdt>();
         cdt->insert_constraints(cgal_points.begin(), cgal_points.end(), constraints.begin(), constraints.end());
         if (first) {
