@@ -56,6 +56,8 @@ void print_stats(const tri::Cdt2Counters& c, const predicates::PredicateStats& s
               << "vertices_on_segments: " << c.vertices_on_segments << '\n'
               << "intersections: " << c.intersections << '\n'
               << "conforming_splits: " << c.conforming_splits << '\n'
+              << "conforming_bends: " << c.conforming_bends << '\n'
+              << "conforming_passes: " << c.conforming_passes << '\n'
               << "crossed_edges: " << c.crossed_edges << '\n'
               << "recovery_flips: " << c.recovery_flips << '\n'
               << "cavity_triangles: " << c.cavity_triangles << '\n'
@@ -71,6 +73,8 @@ void print_stats(const tri::Cdt2Counters& c, const predicates::PredicateStats& s
 void run_cdt(const CdtArguments& arguments) {
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
+    const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
+    refuse_to_overwrite_input(arguments.input, files);
     const io::PolyFile poly = read_input(arguments.input);
     const std::uint32_t base = poly.vertices.first_index;
 
@@ -99,10 +103,7 @@ void run_cdt(const CdtArguments& arguments) {
     const tri::Triangulation2& mesh = result.mesh;
     switch (format) {
         case OutputFormat::Ele: {
-            fs::path neigh = output, node = output, pieces = output;
-            neigh.replace_extension(".neigh");
-            node.replace_extension(".node");
-            pieces.replace_extension(".poly");
+            const fs::path &neigh = files[1], &node = files[2], &pieces = files[3];
             io::NodeFile vertices;
             vertices.xy = mesh.xy;
             vertices.first_index = base;

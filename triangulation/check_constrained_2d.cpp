@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -154,22 +155,23 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
     for (VertIdx v = 0; v < n; ++v) {
         if (!constrained_neighbors[v].empty()) used[v] = 1;
     }
-    std::unordered_map<std::uint64_t, VertIdx> used_at;  // hash of (x, y) -> a used vertex
-    auto point_hash = [&](VertIdx v) {
-        std::uint64_t hx, hy;
-        std::memcpy(&hx, mesh.point(v), 8);
-        std::memcpy(&hy, mesh.point(v) + 1, 8);
-        return hx * 0x9E3779B97F4A7C15ull ^ hy;
+    // Keyed by the exact bits of (x, y): a hash of them as the key let two points collide
+    // ((-1, -4) and (-4, -1): fuzz_constrained_2d, 2026-11-23).
+    std::map<std::pair<std::uint64_t, std::uint64_t>, VertIdx> used_at;
+    auto point_key = [&](VertIdx v) {
+        const double x = mesh.point(v)[0] + 0.0, y = mesh.point(v)[1] + 0.0;  // -0 as +0, as == compares
+        std::pair<std::uint64_t, std::uint64_t> k;
+        std::memcpy(&k.first, &x, 8);
+        std::memcpy(&k.second, &y, 8);
+        return k;
     };
     for (VertIdx v = 0; v < n; ++v) {
-        if (used[v]) used_at.emplace(point_hash(v), v);
+        if (used[v]) used_at.emplace(point_key(v), v);
     }
     auto canonical = [&](VertIdx v) {
         if (used[v]) return v;
-        const auto it = used_at.find(point_hash(v));
-        if (it == used_at.end()) return v;
-        const VertIdx w = it->second;
-        return mesh.point(w)[0] == mesh.point(v)[0] && mesh.point(w)[1] == mesh.point(v)[1] ? w : v;
+        const auto it = used_at.find(point_key(v));
+        return it == used_at.end() ? v : it->second;
     };
     for (std::size_t s = 0; 2 * s + 1 < segments.size(); ++s) {
         const std::string name = "segment " + std::to_string(s + numbering.first_vertex) + " (" +

@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <deque>
 #include <string>
 #include <unordered_map>
@@ -85,6 +84,7 @@ private:
     std::vector<TriIdx> flip_stack_;
     std::vector<std::uint8_t> in_cavity_;    // per triangle slot, scratch of recover_by_cavity
     std::vector<Piece> work_;
+    std::vector<std::array<VertIdx, 2>> segment_ends_;  // per input segment: its mesh vertices
     Cdt2Result result_;
     std::uint32_t input_count_ = 0;
     std::uint64_t work_done_ = 0;
@@ -181,7 +181,22 @@ private:
     void recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx>& crossed);
     void triangulate_pseudo_polygon(VertIdx u, VertIdx v, std::span<const VertIdx> chain,
                                     std::vector<std::array<VertIdx, 3>>& out);
+    /// A conforming piece to check (present: mark it) or, when encroached, to split.
+    struct SplitTask {
+        Piece piece;
+        bool encroached;
+    };
     void conform();
+    /// Splits a missing piece (concentric shell or midpoint), inserts the point, queues both
+    /// halves and every marked piece the insertion encroached.
+    void split_piece(const Piece& piece, std::vector<SplitTask>& tasks);
+    /// A vertex that a missing piece crosses exactly on it, or within rounding of its input
+    /// segment's line and between its ends (the nearest), or kNone.
+    VertIdx vertex_near_segment(const Piece& piece);
+    bool conforming_ = false;
+    VertIdx first_split_vertex_ = 0;           // vertices from here on are conforming splits
+    std::vector<std::uint32_t> segment_degree_;  // pieces at each earlier vertex
+    std::vector<Piece> encroached_;
     bool on_ray(VertIdx a, VertIdx b, VertIdx x) const;
     void guard();
 
@@ -274,9 +289,15 @@ void CdtBuilder::insert_vertex(VertIdx p, TriIdx t) {
 
 void CdtBuilder::flip_if_needed(TriIdx t1) {
     const EdgeIdx e = 3 * t1 + 1;
-    if (segment_of_[e] != kNone) return;
     const EdgeIdx f = mesh_.twin[e];
     const VertIdx q = apex(f);
+    if (segment_of_[e] != kNone) {
+        // Conforming: a marked piece the new vertex makes not locally Delaunay is split later.
+        if (conforming_ && q != kInfinite && !mesh_.is_infinite(t1) && core_.conflict(t1, q)) {
+            encroached_.push_back({mesh_.tv[3 * t1 + 1], mesh_.tv[3 * t1 + 2], segment_of_[e]});
+        }
+        return;
+    }
     if (q == kInfinite || !core_.conflict(t1, q)) return;
     ++result_.counters.delaunay_flips;
     const TriIdx t2 = triangle_of(f);
@@ -580,6 +601,7 @@ void CdtBuilder::recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx
 void CdtBuilder::prepare_segments() {
     const std::size_t count = pslg_.segments.size() / 2;
     const std::uint32_t n = input_count_;
+    segment_ends_.assign(count, {kNone, kNone});
     // Caller index -> mesh vertex, through duplicate merging.
     std::vector<VertIdx> mesh_of(n);
     for (VertIdx v = 0; v < n; ++v) mesh_of[core_.input_index[v]] = v;
@@ -607,6 +629,7 @@ void CdtBuilder::prepare_segments() {
         }
         const VertIdx i = pslg_.segments[2 * s], j = pslg_.segments[2 * s + 1];
         work_.push_back({mesh_of[core_.merged_into[i]], mesh_of[core_.merged_into[j]], s});
+        segment_ends_[s] = {work_.back().a, work_.back().b};
     }
     // Process in input order (the work list is a stack).
     std::sort(work_.begin(), work_.end(), [](const Piece& p, const Piece& q) { return p.segment > q.segment; });
@@ -630,59 +653,199 @@ void CdtBuilder::conform() {
     }
     std::fill(segment_of_.begin(), segment_of_.end(), kNone);
     restore_delaunay(edges);
-    std::vector<Piece> present;
-    while (!pieces.empty()) {
-        while (!pieces.empty()) {
-            const Piece piece = pieces.back();
-            pieces.pop_back();
-            guard();
-            if (find_edge(piece.a, piece.b) != kNone) {
-                present.push_back(piece);
-                continue;
-            }
-            const double* pa = mesh_.point(piece.a);
-            const double* pb = mesh_.point(piece.b);
-            double m[2];
-            for (int k = 0; k < 2; ++k) {
-                // Halving first is exact unless the halves are subnormal; then sum first
-                // (which cannot overflow at such magnitudes).
-                const bool tiny = std::fabs(pa[k]) < 0x1p-1000 || std::fabs(pb[k]) < 0x1p-1000;
-                m[k] = tiny ? (pa[k] + pb[k]) * 0.5 : pa[k] * 0.5 + pb[k] * 0.5;
-            }
-            const VertIdx mid = add_vertex(m[0], m[1]);
-            core_.last_triangle = triangle_of(vertex_edge_[piece.a]);
-            const TriIdx t = core_.walk_to(mid);
-            VertIdx at = mid;
-            if (!mesh_.is_infinite(t)) {
-                for (unsigned k = 0; k < 3; ++k) {
-                    if (core_.same_point(mesh_.tv[3 * t + k], mid)) at = mesh_.tv[3 * t + k];
-                }
-            }
-            if (at != mid) {
-                remove_last_vertex();
-                if (at == piece.a || at == piece.b) {
-                    throw GeometryError("conforming Delaunay: segment " + segment_name(piece.segment) +
-                                        " has a piece too short to split (adjacent doubles)");
-                }
-            } else {
-                const Cdt2Counters& c = result_.counters;
-                if (++result_.counters.conforming_splits > 64 * (c.points + c.segments + c.intersections) + 100000) {
-                    throw GeometryError("conforming Delaunay: more than " + std::to_string(c.conforming_splits - 1) +
-                                        " midpoint splits; stopped (small input angles?)");
-                }
-                insert_vertex(mid, t);
-            }
-            pieces.push_back({at, piece.b, piece.segment});
-            pieces.push_back({piece.a, at, piece.segment});
-        }
-        // A later midpoint can break a piece found earlier: check them all again.
-        std::vector<Piece> kept;
-        for (const Piece& piece : present) {
-            (find_edge(piece.a, piece.b) != kNone ? kept : pieces).push_back(piece);
-        }
-        present = std::move(kept);
+    // Every present piece is marked; Lawson flips never remove a marked edge but report it when
+    // a new vertex makes it not locally Delaunay (flip_if_needed), and such a piece is split
+    // instead. When the stack is empty, every unmarked edge is locally Delaunay by the flips and
+    // every marked one by its last check: the triangulation is Delaunay and holds every piece.
+    conforming_ = true;
+    first_split_vertex_ = mesh_.vertex_count();
+    segment_degree_.assign(first_split_vertex_, 0);
+    for (const Piece& piece : pieces) {
+        ++segment_degree_[piece.a];
+        ++segment_degree_[piece.b];
     }
-    for (const Piece& piece : present) mark(find_edge(piece.a, piece.b), piece.segment);
+    std::vector<SplitTask> tasks;
+    tasks.reserve(pieces.size());
+    for (const Piece& piece : pieces) tasks.push_back({piece, false});
+    for (;;) {
+        while (!tasks.empty()) {
+            const SplitTask task = tasks.back();
+            tasks.pop_back();
+            guard();
+            const Piece& piece = task.piece;
+            const EdgeIdx present = find_edge(piece.a, piece.b);
+            if (present != kNone) {
+                if (!task.encroached) {
+                    mark(present, piece.segment);
+                    continue;
+                }
+                if (locally_delaunay(present)) continue;
+                // Released and flipped (it is not locally Delaunay), then split like a missing piece.
+                segment_of_[present] = segment_of_[mesh_.twin[present]] = kNone;
+                std::vector<std::pair<VertIdx, VertIdx>> edge{{piece.a, piece.b}};
+                restore_delaunay(edge);
+            }
+            split_piece(piece, tasks);
+        }
+        // Safety net (normally finds nothing): every edge is checked once more; a marked one not
+        // locally Delaunay is split, an unmarked one flipped.
+        std::vector<std::pair<VertIdx, VertIdx>> unmarked;
+        for (EdgeIdx e = 0; e < segment_of_.size(); ++e) {
+            if (mesh_.is_dead(triangle_of(e))) continue;
+            const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
+            if (a == kInfinite || b == kInfinite || a > b || locally_delaunay(e)) continue;
+            if (segment_of_[e] != kNone) {
+                tasks.push_back({{a, b, segment_of_[e]}, true});
+            } else {
+                unmarked.emplace_back(a, b);
+            }
+        }
+        ++result_.counters.conforming_passes;
+        if (tasks.empty() && unmarked.empty()) break;
+        restore_delaunay(unmarked);
+    }
+    conforming_ = false;
+}
+
+VertIdx CdtBuilder::vertex_near_segment(const Piece& piece) {
+    const VertIdx a = piece.a, b = piece.b;
+    // The original segment's line, in long double (as check_constrained_delaunay_2d measures).
+    const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
+    const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
+    const long double dx = static_cast<long double>(s1[0]) - s0[0], dy = static_cast<long double>(s1[1]) - s0[1];
+    const long double length = std::sqrt(dx * dx + dy * dy);
+    const double magnitude = std::max({std::fabs(s0[0]), std::fabs(s0[1]), std::fabs(s1[0]), std::fabs(s1[1])});
+    const long double tolerance = std::ldexp(static_cast<long double>(magnitude), -46);
+    auto along = [&](VertIdx v) {
+        return (static_cast<long double>(mesh_.point(v)[0]) - s0[0]) * dx +
+               (static_cast<long double>(mesh_.point(v)[1]) - s0[1]) * dy;
+    };
+    const long double lo = std::min(along(a), along(b)), hi = std::max(along(a), along(b));
+    VertIdx best = kNone;
+    long double best_distance = tolerance;
+    auto consider = [&](VertIdx v) {
+        if (v == kInfinite || v == a || v == b) return;
+        const long double t = along(v);
+        if (!(t > lo && t < hi)) return;
+        const long double cross = (static_cast<long double>(mesh_.point(v)[0]) - s0[0]) * dy -
+                                  (static_cast<long double>(mesh_.point(v)[1]) - s0[1]) * dx;
+        const long double distance = std::fabs(cross / length);
+        if (distance <= best_distance) {
+            best_distance = distance;
+            best = v;
+        }
+    };
+    // The edges the piece crosses, as insert_piece walks them; a vertex exactly on the piece
+    // ends the walk (it is the answer).
+    EdgeIdx entry = kNone;
+    const EdgeIdx first = vertex_edge_[a];
+    EdgeIdx e = first;
+    do {
+        const VertIdx x = mesh_.destination(e), y = apex(e);
+        if (x != kInfinite) {
+            const Sign sx = core_.orient(a, b, x);
+            if (sx == Sign::Zero && on_ray(a, b, x)) return x;
+            if (y != kInfinite && sx == Sign::Negative && entry == kNone && core_.orient(a, b, y) == Sign::Positive) {
+                entry = next_edge(e);
+            }
+        }
+        e = mesh_.twin[prev_edge(e)];
+    } while (e != first);
+    if (entry == kNone) return kNone;  // not expected: the piece would be present
+    consider(mesh_.origin(entry));
+    consider(mesh_.destination(entry));
+    for (EdgeIdx h = entry;;) {
+        const EdgeIdx f = mesh_.twin[h];
+        const VertIdx w = apex(f);
+        if (w == b || w == kInfinite) break;
+        ++result_.counters.walk_steps;
+        const Sign sw = core_.orient(a, b, w);
+        if (sw == Sign::Zero) return w;
+        consider(w);
+        h = sw == Sign::Positive ? next_edge(f) : prev_edge(f);
+    }
+    return best;
+}
+
+void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) {
+    // A vertex the piece crosses within rounding of its segment (2^-46 of the segment's
+    // coordinates; the checker allows 2^-40) is where the piece bends: (6, 8) on a grid line
+    // whose other end is a rounded crossing at (7 - 2^-50, 7) in grid-lines seed 5, where new
+    // points would home in on it until no double is left between.
+    const VertIdx near = vertex_near_segment(piece);
+    if (near != kNone) {
+        ++result_.counters.conforming_bends;
+        tasks.push_back({{near, piece.b, piece.segment}, false});
+        tasks.push_back({{piece.a, near, piece.segment}, false});
+        return;
+    }
+    const double* pa = mesh_.point(piece.a);
+    const double* pb = mesh_.point(piece.b);
+    double m[2];
+    // Concentric shells [Ruppert95 §4; Shewchuk97 §3.4]: a piece with an end at a corner (an
+    // input vertex where two or more pieces meet) is split at the power of two nearest half its
+    // length, measured from that corner, so pieces of segments meeting there at a small angle
+    // end on common circles about it and stop encroaching on each other (fuzz input
+    // timeout-073fed0d: two segments at 1e-312 radians, 1,686 splits instead of over 100,000).
+    // When both ends are corners, the one with more pieces (tiny PSLG 8/20404630: an ulp-narrow
+    // angle at (1,1)); on a tie, at an intersection vertex or a split, and where the length is
+    // out of the comfortable double range, the correctly rounded midpoint, whose error is
+    // smaller (segments a few ulps apart: ReleasedConstraintIsMadeDelaunayAgain).
+    auto corner = [&](VertIdx v) { return v < input_count_ ? segment_degree_[v] : 0u; };
+    const std::uint32_t ca = corner(piece.a) >= 2 ? corner(piece.a) : 0, cb = corner(piece.b) >= 2 ? corner(piece.b) : 0;
+    const int apex_end = ca == cb ? -1 : (ca > cb ? 0 : 1);  // 0: piece.a, 1: piece.b
+    bool shell = false;
+    if (apex_end >= 0) {
+        const double* apex = apex_end == 0 ? pa : pb;
+        const double* far = apex_end == 0 ? pb : pa;
+        const double dx = far[0] - apex[0], dy = far[1] - apex[1];
+        const double length = std::hypot(dx, dy);
+        if (std::isfinite(dx) && std::isfinite(dy) && length > 0x1p-900 && length < 0x1p900) {
+            const double ratio = std::ldexp(1.0, static_cast<int>(std::lround(std::log2(length / 2)))) / length;
+            m[0] = apex[0] + dx * ratio;
+            m[1] = apex[1] + dy * ratio;
+            shell = true;
+        }
+    }
+    if (!shell) {
+        for (int k = 0; k < 2; ++k) {
+            // Halving first is exact unless the halves are subnormal; then sum first (which
+            // cannot overflow at such magnitudes).
+            const bool tiny = std::fabs(pa[k]) < 0x1p-1000 || std::fabs(pb[k]) < 0x1p-1000;
+            m[k] = tiny ? (pa[k] + pb[k]) * 0.5 : pa[k] * 0.5 + pb[k] * 0.5;
+        }
+    }
+    // Walk from the end nearer the split point (a corner can have a large fan of thin
+    // triangles: 60x fewer walk steps on fuzz input timeout-073fed0d than from the first end).
+    const double da = std::fabs(m[0] - pa[0]) + std::fabs(m[1] - pa[1]);
+    const double db = std::fabs(m[0] - pb[0]) + std::fabs(m[1] - pb[1]);
+    core_.last_triangle = triangle_of(vertex_edge_[da < db ? piece.a : piece.b]);
+    const VertIdx mid = add_vertex(m[0], m[1]);
+    const TriIdx t = core_.walk_to(mid);
+    VertIdx at = mid;
+    if (!mesh_.is_infinite(t)) {
+        for (unsigned k = 0; k < 3; ++k) {
+            if (core_.same_point(mesh_.tv[3 * t + k], mid)) at = mesh_.tv[3 * t + k];
+        }
+    }
+    if (at != mid) {
+        remove_last_vertex();
+        if (at == piece.a || at == piece.b) {
+            throw GeometryError("conforming Delaunay: segment " + segment_name(piece.segment) +
+                                " has a piece too short to split (adjacent doubles)");
+        }
+    } else {
+        const Cdt2Counters& c = result_.counters;
+        if (++result_.counters.conforming_splits > 64 * (c.points + c.segments + c.intersections) + 100000) {
+            throw GeometryError("conforming Delaunay: more than " + std::to_string(c.conforming_splits - 1) +
+                                " splits; stopped (small input angles?)");
+        }
+        encroached_.clear();
+        insert_vertex(mid, t);
+        for (const Piece& hit : encroached_) tasks.push_back({hit, true});
+    }
+    tasks.push_back({{at, piece.b, piece.segment}, false});
+    tasks.push_back({{piece.a, at, piece.segment}, false});
 }
 
 // ---------------------------------------------------------------------------------------------

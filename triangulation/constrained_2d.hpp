@@ -9,8 +9,9 @@
 //    restricted Delaunay triangulations", Computers & Graphics 21(2); Shewchuk-Brown 2015 §2]:
 //    the crossed triangles are removed and the two pseudo-polygons on either side of the
 //    segment are retriangulated, each by its own constrained Delaunay triangulation.
-//  - Conforming: missing segments are split at their midpoints (rounded to nearest) until the
-//    plain Delaunay triangulation contains every piece.
+//  - Conforming: a missing piece, or a present one a later vertex makes not locally Delaunay
+//    (encroached), is split (on a concentric shell about a corner [Ruppert95 §4], else at its
+//    rounded midpoint) until the plain Delaunay triangulation contains every piece.
 // Every incircle decision uses the same symbolic perturbation as delaunay_2d (predicates/sos),
 // so the constrained Delaunay triangulation is unique and the swap and cavity recoveries return
 // the same triangles. Segments that cross are split at their intersection, correctly rounded
@@ -64,7 +65,9 @@ struct Cdt2Counters {
     std::uint64_t cavity_triangles = 0;       ///< cavity recovery: triangles retriangulated
     std::uint64_t vertices_on_segments = 0;   ///< segments split at an input vertex they contain
     std::uint64_t intersections = 0;          ///< vertices added where segments cross
-    std::uint64_t conforming_splits = 0;      ///< vertices added at midpoints (conforming)
+    std::uint64_t conforming_splits = 0;      ///< conforming: vertices added on pieces (shell or midpoint)
+    std::uint64_t conforming_bends = 0;       ///< conforming: pieces split at a vertex within rounding of the segment
+    std::uint64_t conforming_passes = 0;      ///< conforming: final checks of every edge (normally 1)
     std::uint64_t removed_triangles = 0;      ///< exterior and hole triangles removed
     std::uint64_t orient_calls = 0;
     std::uint64_t incircle_calls = 0;

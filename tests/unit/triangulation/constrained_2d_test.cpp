@@ -319,6 +319,37 @@ TEST(Constrained2d, ConformingOutputIsDelaunayAndContainsTheSegments) {
     }
 }
 
+TEST(Constrained2d, ConformingSegmentsAtSubnormalAnglesTerminate) {
+    // libFuzzer timeouts (fuzz_constrained_2d, CI of 2026-11-23): two segments meeting at an
+    // angle near 1e-312 radians among subnormal abscissas; midpoint splitting ran past 100,000
+    // splits. Concentric shells and splits at vertices within rounding of a segment end it.
+    const Input cases[] = {
+        {{0x0.0000000ffffffp-1022, 0x1.1p+1, 0x1p-1007, -0x1.e8e8e8e8e8e8ep-791, -0x1.18e8e8e8e8e8ep-798,
+          0x0.00000008e8e8ep-1022, 0x0.000003f5602p-1022, 0, 0x0.0004010005bp-1022, -1},
+         {0, 4, 3, 4}, {}, {}},
+        {{0x1.0602000b9f513p-223, 0, 0x1p-1007, 0x1p-1007, -0x1.e8e8e8e8e2a8ep-791, -0x1p-799,
+          -0x1.e8e8e8e8e8e8ep-791, 0x0.08e8e8e8e8e8ep-1022, 0x0.03f02p-1022, 0},
+         {0, 4, 3, 0}, {}, {}},
+    };
+    for (const Input& in : cases) {
+        const auto r = build(in, tri::SegmentRecovery::Conforming);
+        expect_valid(in, r, tri::SegmentRecovery::Conforming, true, "subnormal angle");
+        EXPECT_LT(r.counters.conforming_splits, 5000u);
+    }
+}
+
+TEST(Constrained2d, ConformingPieceBendsAtAVertexWithinRoundingOfItsSegment) {
+    // Segment 1, (0, 2) - (2, 0), passes exactly through (1, 1), but segment 0, (0, 1.3) -
+    // (3, 1.8), crosses it first at a rounded point, so its piece from there to (2, 0) misses
+    // (1, 1) by rounding. Conforming recovery bends that piece at (1, 1) (as grid-lines seed 5
+    // needs) instead of homing in on (1, 1) with new points until no double is left between.
+    const Input in{{0, 2, 2, 0, 1, 1, 0, 1.3, 3, 1.8, 0, 0, 2, 2}, {3, 4, 0, 1}, {}, {}};
+    const auto r = build(in, tri::SegmentRecovery::Conforming);
+    expect_valid(in, r, tri::SegmentRecovery::Conforming, true, "bend");
+    EXPECT_EQ(r.counters.intersections, 1u);
+    EXPECT_EQ(r.counters.conforming_bends, 1u);
+}
+
 TEST(Constrained2d, HugeAndTinyCoordinates) {
     for (const double scale : {1e-300, 1e-150, 1e150, 1e300}) {
         Input in = random_non_crossing(40, 30, 5);
@@ -397,6 +428,16 @@ TEST(Constrained2d, ReleasedConstraintIsMadeDelaunayAgain) {
         if (recovery == tri::SegmentRecovery::Cavity) {
             EXPECT_EQ(canonical(r.mesh), swap_triangles);
         }
+    }
+}
+
+TEST(CheckConstrained2d, DuplicateLookupIsByCoordinatesNotByTheirHash) {
+    // fuzz_constrained_2d, 2026-11-23: vertex 4 repeats (-4, -1); the check looked the used copy
+    // up by a hash of the coordinates used as the key, and (-1, -4) hashed the same.
+    Input in{{-2, 2, -4, -4, -1, -4, -4, -1, -4, -1}, {0, 1, 1, 2, 2, 3, 3, 0, 4, 0}, {}, {}};
+    for (const auto recovery : kRecoveries) {
+        const auto r = build(in, recovery);
+        expect_valid(in, r, recovery, true, tri::segment_recovery_name(recovery));
     }
 }
 
