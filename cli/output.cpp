@@ -37,6 +37,28 @@ OutputFormat output_format(const std::filesystem::path& output) {
                      "' (use .ele, .msh, .vtu or .svg)");
 }
 
+std::vector<std::filesystem::path> output_files(const std::filesystem::path& output, OutputFormat format,
+                                                std::initializer_list<const char*> ele_companions) {
+    std::vector<std::filesystem::path> files{output};
+    if (format == OutputFormat::Ele) {
+        for (const char* extension : ele_companions) {
+            std::filesystem::path companion = output;
+            files.push_back(companion.replace_extension(extension));
+        }
+    }
+    return files;
+}
+
+void refuse_to_overwrite_input(const std::filesystem::path& input, const std::vector<std::filesystem::path>& outputs) {
+    std::error_code error;
+    for (const std::filesystem::path& output : outputs) {
+        if (std::filesystem::exists(output, error) && std::filesystem::equivalent(input, output, error)) {
+            throw InputError(output.string() + ": this output would overwrite the input file; choose another -o name "
+                             "(Triangle's convention: IN.1.ele)");
+        }
+    }
+}
+
 triangulation::InsertionOrder insertion_order(const std::string& name) {
     if (name == "given") return triangulation::InsertionOrder::Given;
     if (name == "random") return triangulation::InsertionOrder::Random;

@@ -250,9 +250,13 @@ cdt() {
   printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 2\n1\n1 inf 0\n' >"$work/inf_hole.poly"
   expect_error 2 'inf_hole\.poly:8: non-finite' cdt "$work/inf_hole.poly" -o "$work/x.ele"
   expect_error 2 'magic not in' cdt "$poly" -o "$work/x.ele" --recovery magic
+  # -o IN.ele beside IN.poly would write the result's .poly over the input: refused, input kept.
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n' >"$work/keep.poly"
+  expect_error 2 'keep\.poly: this output would overwrite the input file' cdt "$work/keep.poly" -o "$work/keep.ele"
+  grep -q '^3 0 1$' "$work/keep.poly" || fail "cdt: the input was modified"
   # Zero-length and repeated segments: dropped with a warning each, exit 0.
   printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 1\n2 1 2\n3 2 1\n0\n' >"$work/dropped.poly"
-  run 0 cdt "$work/dropped.poly" -o "$work/dropped.ele" --convex-hull &&
+  run 0 cdt "$work/dropped.poly" -o "$work/dropped_cdt.ele" --convex-hull &&
     grep -q 'segment 1 has zero length' "$work/err" && grep -q 'segment 3 repeats segment 2' "$work/err" ||
     fail "cdt: no warnings for dropped segments: $(cat "$work/err")"
 }
