@@ -767,6 +767,13 @@ VertIdx CdtBuilder::vertex_near_segment(const Piece& piece) {
     return best;
 }
 
+// Conforming split budget: 64 per input vertex, segment and crossing, plus 4,096. Every test
+// input needs far fewer (the CGAL campaign's most is 20 per feature... see the proof note §5);
+// two segments a few hundred binades long and 1e-312 apart need pieces as short as their gap
+// everywhere, which no budget covers: they stop with GeometryError in well under a second.
+constexpr std::uint64_t kSplitsPerFeature = 64;
+constexpr std::uint64_t kSplitsBase = 4096;
+
 void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) {
     // A vertex the piece crosses within rounding of its segment (2^-46 of the segment's
     // coordinates; the checker allows 2^-40) is where the piece bends: (6, 8) on a grid line
@@ -836,7 +843,7 @@ void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) 
         }
     } else {
         const Cdt2Counters& c = result_.counters;
-        if (++result_.counters.conforming_splits > 64 * (c.points + c.segments + c.intersections) + 100000) {
+        if (++result_.counters.conforming_splits > kSplitsPerFeature * (c.points + c.segments + c.intersections) + kSplitsBase) {
             throw GeometryError("conforming Delaunay: more than " + std::to_string(c.conforming_splits - 1) +
                                 " splits; stopped (small input angles?)");
         }
