@@ -1,15 +1,21 @@
 // SPDX-License-Identifier: MIT
 // `exactmesh check`: reads a .node and a .ele and runs the exact Delaunay check
-// (triangulation/check_2d), reporting in the files' own numbering.
+// (triangulation/check_2d), or a .poly and a .ele and runs the exact constrained Delaunay check
+// (triangulation/check_constrained_2d), reporting in the files' own numbering.
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <set>
 #include <string>
+#include <utility>
 
 #include "cli/commands.hpp"
 #include "io/triangle_format.hpp"
+#include "predicates/errors.hpp"
 #include "triangulation/check_2d.hpp"
+#include "triangulation/check_constrained_2d.hpp"
 
 namespace exactmesh::cli {
 
@@ -22,7 +28,60 @@ struct CheckArguments {
     std::string ele_path;
 };
 
+/// IN.poly against OUT.ele. The vertices are OUT.node's when it exists beside OUT.ele (it holds
+/// the added vertices after the input's), the constrained edges OUT.poly's when it exists (the
+/// pieces `exactmesh cdt` writes), else the input segments themselves.
+int run_constrained_check(const CheckArguments& arguments) {
+    namespace fs = std::filesystem;
+    const io::PolyFile input = io::read_poly(arguments.node_path);
+    fs::path node_path = arguments.ele_path, pieces_path = arguments.ele_path;
+    node_path.replace_extension(".node");
+    pieces_path.replace_extension(".poly");
+    tri::Triangulation2 mesh;
+    mesh.xy = input.vertices.xy;
+    if (fs::exists(node_path)) {
+        const io::NodeFile all = io::read_node(node_path);
+        for (std::size_t i = 0; i < input.vertices.xy.size(); ++i) {
+            if (i >= all.xy.size() || all.xy[i] != input.vertices.xy[i]) {
+                throw InputError(node_path.string() + ": vertex " + std::to_string(i / 2 + all.first_index) +
+                                 " differs from " + arguments.node_path + " (expected its vertices first)");
+            }
+        }
+        mesh.xy = all.xy;
+    }
+    const std::uint32_t base = input.vertices.first_index;
+    const io::EleFile ele = io::read_ele(arguments.ele_path, base, mesh.vertex_count());
+    mesh.triangles = ele.triangles;
+    std::vector<tri::VertIdx> constrained_edges = input.segments, pieces;
+    if (fs::exists(pieces_path) && !fs::equivalent(pieces_path, arguments.node_path)) {
+        pieces = io::read_poly(pieces_path).segments;
+        constrained_edges = pieces;
+    }
+    std::set<std::pair<tri::VertIdx, tri::VertIdx>> flagged;
+    for (std::size_t s = 0; s + 1 < constrained_edges.size(); s += 2) {
+        flagged.emplace(std::min(constrained_edges[s], constrained_edges[s + 1]),
+                        std::max(constrained_edges[s], constrained_edges[s + 1]));
+    }
+    mesh.constrained.resize(mesh.triangles.size());
+    for (std::size_t t = 0; t < ele.triangle_count(); ++t) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            const tri::VertIdx a = mesh.triangles[3 * t + k], b = mesh.triangles[3 * t + (k + 1) % 3];
+            mesh.constrained[3 * t + k] = flagged.count({std::min(a, b), std::max(a, b)}) ? 1 : 0;
+        }
+    }
+    const tri::CheckReport report = tri::check_constrained_delaunay_2d(
+        mesh, input.vertices.vertex_count(), input.segments, pieces, tri::CheckNumbering{base, ele.first_index});
+    if (report.ok) {
+        std::cout << "ok: " << ele.triangle_count() << " triangles, exact constrained Delaunay, "
+                  << input.segment_count() << " segments covered (parts in removed regions need not be edges)\n";
+        return kExitSuccess;
+    }
+    std::cout << "not ok: " << arguments.ele_path << ": " << report.problem << '\n';
+    return kExitCheckFailed;
+}
+
 int run_check(const CheckArguments& arguments) {
+    if (std::filesystem::path(arguments.node_path).extension() == ".poly") return run_constrained_check(arguments);
     const io::NodeFile nodes = io::read_node(arguments.node_path);
     const io::EleFile ele =
         io::read_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
@@ -41,10 +100,13 @@ int run_check(const CheckArguments& arguments) {
 void add_check_command(CLI::App& app, int& exit_status) {
     auto arguments = std::make_shared<CheckArguments>();
     CLI::App* command = app.add_subcommand(
-        "check", "Exact check that IN.ele is a Delaunay triangulation of the points of IN.node");
-    command->add_option("node", arguments->node_path, "Points: a Triangle .node file")
+        "check",
+        "Exact check that IN.ele is a Delaunay triangulation of the points of IN.node, or a "
+        "constrained Delaunay triangulation of IN.poly (vertices added by `exactmesh cdt` are read "
+        "from the .node beside IN.ele, its constrained edges from the .poly beside it)");
+    command->add_option("node", arguments->node_path, "Input: a Triangle .node or .poly file")
         ->required()
-        ->type_name("IN.node");
+        ->type_name("IN.node|IN.poly");
     command->add_option("ele", arguments->ele_path, "Triangles: a Triangle .ele file")
         ->required()
         ->type_name("IN.ele");

@@ -19,6 +19,10 @@ inline constexpr int kExitInternalError = 3;  ///< a bug in exactmesh or out of 
 /// [--seed S] [--stats]`.
 void add_triangulate_command(CLI::App& app);
 
+/// `exactmesh cdt IN.poly -o OUT [--recovery swap|cavity|conforming] [--convex-hull] [--order O]
+/// [--seed S] [--stats]`.
+void add_cdt_command(CLI::App& app);
+
 /// `exactmesh check IN.node IN.ele`: sets `exit_status` to kExitCheckFailed when the mesh
 /// fails the exact Delaunay check.
 void add_check_command(CLI::App& app, int& exit_status);
@@ -26,5 +30,11 @@ void add_check_command(CLI::App& app, int& exit_status);
 /// `exactmesh fuzz --minutes M [--seed S] [--out DIR]`: sets `exit_status` to kExitCheckFailed
 /// when any case fails (each failing input is minimized and saved in DIR).
 void add_fuzz_command(CLI::App& app, int& exit_status);
+
+/// `exactmesh swap IN.node IN.ele -o OUT.ele [--criterion C] [--data-cost abn|jnd] [--stats]`.
+void add_swap_command(CLI::App& app);
+
+/// `exactmesh min-max IN.node -o OUT.ele [--stats]`.
+void add_min_max_command(CLI::App& app);
 
 }  // namespace exactmesh::cli

@@ -3,8 +3,6 @@
 // .svg by the output's extension), optionally with work counters and the construction time.
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -14,6 +12,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/svg_picture.hpp"
 #include "io/triangle_format.hpp"
@@ -29,8 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 namespace tri = exactmesh::triangulation;
 
-enum class OutputFormat { Ele, Msh, Vtu, Svg };
-
 struct TriangulateArguments {
     std::string input;
     std::string output;
@@ -41,40 +38,11 @@ struct TriangulateArguments {
     bool stats = false;
 };
 
-tri::InsertionOrder insertion_order(const std::string& name) {
-    if (name == "given") return tri::InsertionOrder::Given;
-    if (name == "random") return tri::InsertionOrder::Random;
-    if (name == "brio") return tri::InsertionOrder::Brio;
-    throw InputError("unknown insertion order '" + name + "' (known: given, random, brio)");
-}
-
 tri::PointLocation point_location(const std::string& name) {
     if (name == "auto") return tri::PointLocation::Auto;
     if (name == "walk") return tri::PointLocation::Walk;
     if (name == "grid") return tri::PointLocation::Grid;
     throw InputError("unknown point location '" + name + "' (known: auto, walk, grid)");
-}
-
-OutputFormat output_format(const fs::path& output) {
-    std::string extension = output.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension == ".ele") return OutputFormat::Ele;
-    if (extension == ".msh") return OutputFormat::Msh;
-    if (extension == ".vtu") return OutputFormat::Vtu;
-    if (extension == ".svg") return OutputFormat::Svg;
-    throw InputError(output.string() + ": unsupported output extension '" + extension +
-                     "' (use .ele, .msh, .vtu or .svg)");
-}
-
-void print_stage_counts(const char* name, const predicates::StageCounts& counts) {
-    const std::string prefix = std::string(name) + ".";
-    std::cout << prefix << "calls: " << counts.calls << '\n'
-              << prefix << "filter: " << counts.filter << '\n'
-              << prefix << "exact_differences: " << counts.exact_differences << '\n'
-              << prefix << "adaptive: " << counts.adaptive << '\n'
-              << prefix << "expansion: " << counts.expansion << '\n'
-              << prefix << "gmp: " << counts.gmp << '\n';
 }
 
 void print_stats(const tri::Delaunay2Counters& counters, const predicates::PredicateStats& stats,
@@ -87,13 +55,7 @@ void print_stats(const tri::Delaunay2Counters& counters, const predicates::Predi
               << "cavity_triangles: " << counters.cavity_triangles << '\n'
               << "flips: " << counters.flips << '\n'
               << "candidates: " << counters.candidates << '\n';
-    if (predicates::stats_enabled()) {
-        print_stage_counts("orient2d", stats.orient2d);
-        print_stage_counts("incircle", stats.incircle);
-    } else {
-        std::cout << "predicate_stages: compiled out (configure with "
-                     "-DEXACTMESH_PREDICATE_STATS=ON)\n";
-    }
+    print_predicate_stats(stats);
     std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << construct_seconds
               << '\n';
 }

@@ -26,6 +26,20 @@ struct NodeFile {
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xy.size() / 2); }
 };
 
+/// The content of a Triangle .poly file: a planar straight-line graph. Vertex and segment
+/// numbers are 0-based in memory; `vertices.first_index` is the file's base for both.
+struct PolyFile {
+    NodeFile vertices;                    ///< the vertex section (or the .node file it names)
+    bool vertices_from_node_file = false; ///< the .poly announced 0 vertices: read from .node
+    std::vector<VertIdx> segments;        ///< 2·#S endpoint indices, 0-based
+    bool has_segment_markers = false;
+    std::vector<std::int32_t> segment_markers;  ///< #S when has_segment_markers
+    std::vector<double> holes;            ///< 2·#H points inside holes
+    std::vector<double> regions;          ///< 4·#R: x, y, attribute, maximum area (-1: none)
+
+    std::uint32_t segment_count() const { return static_cast<std::uint32_t>(segments.size() / 2); }
+};
+
 /// The content of a Triangle .ele file, vertex numbers made 0-based.
 struct EleFile {
     std::vector<VertIdx> triangles;     ///< 3·#T 0-based vertex indices (the corners)

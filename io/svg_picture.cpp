@@ -115,6 +115,18 @@ std::string format_svg(std::span<const double> xy, std::span<const VertIdx> tria
         }
         out += "\"/>\n";
     }
+    if (!options.segments.empty()) {
+        out += "<path fill=\"none\" stroke=\"#111111\" stroke-linecap=\"round\" stroke-width=\"";
+        append_fixed(out, 3 * stroke, 3);
+        out += "\" d=\"";
+        for (std::size_t s = 0; 2 * s + 1 < options.segments.size(); ++s) {
+            out += s == 0 ? "M" : "\nM";
+            append_point(out, frame, xy.data() + 2 * std::size_t{options.segments[2 * s]});
+            out += 'L';
+            append_point(out, frame, xy.data() + 2 * std::size_t{options.segments[2 * s + 1]});
+        }
+        out += "\"/>\n";
+    }
     if (options.draw_points && points > 0) {
         // Zero-length segments with round caps: one element for all dots, cheap to render.
         out += "<path fill=\"none\" stroke=\"#c0392b\" stroke-linecap=\"round\" stroke-width=\"";

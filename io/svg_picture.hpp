@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "io/point_set_2d.hpp"
 
@@ -16,6 +17,7 @@ struct SvgOptions {
     double width = 1000.0;    ///< length of the picture's longer side, in SVG user units
     bool draw_points = true;  ///< dots at the points (all of them, vertices or not)
     std::string title;        ///< shown by viewers as the picture's title; empty for none
+    std::vector<VertIdx> segments;  ///< 2·#S constrained edges, drawn thick above the triangles
 };
 
 /// The SVG text. `xy`: 2·#V finite coordinates; `triangles`: 3·#T 0-based vertex indices.

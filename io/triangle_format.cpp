@@ -72,15 +72,9 @@ std::size_t plausible(std::uint64_t announced, std::size_t text_size,
         std::min<std::uint64_t>(announced, text_size / min_record_bytes));
 }
 
-}  // namespace
-
-NodeFile parse_node(std::string_view text, const std::string& file_name) {
-    TextLines lines(text, file_name);
-    if (!lines.next_data_line()) {
-        lines.fail_at_end(
-            "no header line (expected '<#vertices> <dimension=2> <#attributes> <#boundary "
-            "markers>')");
-    }
+/// The vertex section shared by .node and .poly: the header on the current line, then the
+/// vertices. Returns the announced count.
+std::uint64_t parse_vertex_section(TextLines& lines, std::size_t text_size, NodeFile& nodes) {
     const auto& header = lines.fields();
     if (header.size() > 4) {
         lines.fail_quoting_line("header has " + std::to_string(header.size()) +
@@ -93,7 +87,6 @@ NodeFile parse_node(std::string_view text, const std::string& file_name) {
             lines.parse_unsigned(header[1], "dimension", std::numeric_limits<std::uint64_t>::max());
         if (dimension != 2) lines.fail("dimension must be 2, got " + std::to_string(dimension));
     }
-    NodeFile nodes;
     if (header.size() > 2) {
         nodes.attribute_count = static_cast<std::uint32_t>(
             lines.parse_unsigned(header[2], "attribute count", kMaxAttributes));
@@ -110,7 +103,7 @@ NodeFile parse_node(std::string_view text, const std::string& file_name) {
         3 + std::uint64_t{nodes.attribute_count} + (nodes.has_markers ? 1 : 0);
     const std::string names = field_names("number, x, y", nodes.attribute_count, nodes.has_markers);
 
-    nodes.xy.reserve(2 * plausible(count, text.size(), 6));
+    nodes.xy.reserve(2 * plausible(count, text_size, 6));
     std::string attribute_name;
     for (std::uint64_t i = 0; i < count; ++i) {
         if (!lines.next_data_line()) {
@@ -132,6 +125,20 @@ NodeFile parse_node(std::string_view text, const std::string& file_name) {
                 std::numeric_limits<std::int32_t>::max())));
         }
     }
+    return count;
+}
+
+}  // namespace
+
+NodeFile parse_node(std::string_view text, const std::string& file_name) {
+    TextLines lines(text, file_name);
+    if (!lines.next_data_line()) {
+        lines.fail_at_end(
+            "no header line (expected '<#vertices> <dimension=2> <#attributes> <#boundary "
+            "markers>')");
+    }
+    NodeFile nodes;
+    const std::uint64_t count = parse_vertex_section(lines, text.size(), nodes);
     expect_end(lines, count, count == 1 ? "vertex" : "vertices");
     return nodes;
 }
@@ -169,6 +176,151 @@ std::string format_node(const NodeFile& nodes) {
 
 void write_node(const std::filesystem::path& path, const NodeFile& nodes) {
     write_text_file(path, format_node(nodes));
+}
+
+PolyFile parse_poly(std::string_view text, const std::string& file_name,
+                    const std::filesystem::path& node_path) {
+    TextLines lines(text, file_name);
+    if (!lines.next_data_line()) {
+        lines.fail_at_end(
+            "no header line (expected '<#vertices> <dimension=2> <#attributes> <#boundary "
+            "markers>')");
+    }
+    PolyFile poly;
+    const std::uint64_t announced = parse_vertex_section(lines, text.size(), poly.vertices);
+    if (announced == 0) {
+        // Triangle's convention: the vertices live in the .node file of the same name. The
+        // first segment number then sets the base.
+        poly.vertices = read_node(node_path);
+        poly.vertices_from_node_file = true;
+    }
+    const std::uint32_t base = poly.vertices.first_index;
+    const std::uint64_t vertex_count = poly.vertices.vertex_count();
+    if (!lines.next_data_line()) {
+        lines.fail_at_end("file ends before the segment header ('<#segments> <#boundary markers>')");
+    }
+    {
+        const auto& header = lines.fields();
+        if (header.size() > 2) {
+            lines.fail_quoting_line("segment header has " + std::to_string(header.size()) +
+                                    " fields, expected at most 2 (#segments, #boundary markers)");
+        }
+        const std::uint64_t count = lines.parse_unsigned(header[0], "segment count", kMaxTriangles);
+        if (header.size() > 1) {
+            const std::uint64_t markers = lines.parse_unsigned(
+                header[1], "segment marker count", std::numeric_limits<std::uint64_t>::max());
+            if (markers > 1) {
+                lines.fail("segment marker count must be 0 or 1, got " + std::to_string(markers));
+            }
+            poly.has_segment_markers = markers == 1;
+        }
+        const std::uint64_t expected = 3 + (poly.has_segment_markers ? 1 : 0);
+        const std::string names = poly.has_segment_markers ? "number, endpoint, endpoint, marker"
+                                                           : "number, endpoint, endpoint";
+        poly.segments.reserve(2 * plausible(count, text.size(), 6));
+        std::uint32_t segment_base = base;
+        for (std::uint64_t i = 0; i < count; ++i) {
+            if (!lines.next_data_line()) {
+                lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
+                                  plural(count, "announced segment", "announced segments"));
+            }
+            expect_field_count(lines, expected, names);
+            const auto& fields = lines.fields();
+            expect_record_number(lines, fields[0], "segment", i, segment_base);
+            for (int k = 1; k <= 2; ++k) {
+                const std::uint64_t v = lines.parse_unsigned(fields[static_cast<std::size_t>(k)], "segment endpoint",
+                                                             std::numeric_limits<std::uint32_t>::max());
+                if (v < base || v >= base + vertex_count) {
+                    lines.fail("segment endpoint " + std::to_string(v) + " names no vertex: " +
+                               (vertex_count == 0 ? std::string("there are no vertices")
+                                                  : "the vertices are numbered " + std::to_string(base) + " to " +
+                                                        std::to_string(base + vertex_count - 1)));
+                }
+                poly.segments.push_back(static_cast<VertIdx>(v - base));
+            }
+            if (poly.has_segment_markers) {
+                poly.segment_markers.push_back(static_cast<std::int32_t>(
+                    lines.parse_signed(fields[3], "segment marker", std::numeric_limits<std::int32_t>::min(),
+                                       std::numeric_limits<std::int32_t>::max())));
+            }
+        }
+    }
+    if (!lines.next_data_line()) lines.fail_at_end("file ends before the hole count ('<#holes>')");
+    {
+        const auto& header = lines.fields();
+        if (header.size() != 1) lines.fail_quoting_line("hole header must hold one field, the number of holes");
+        const std::uint64_t count = lines.parse_unsigned(header[0], "hole count", kMaxTriangles);
+        std::uint32_t hole_base = base;
+        for (std::uint64_t i = 0; i < count; ++i) {
+            if (!lines.next_data_line()) {
+                lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
+                                  plural(count, "announced hole", "announced holes"));
+            }
+            expect_field_count(lines, 3, "number, x, y");
+            expect_record_number(lines, lines.fields()[0], "hole", i, hole_base);
+            poly.holes.push_back(lines.parse_finite_double(lines.fields()[1], "hole x coordinate"));
+            poly.holes.push_back(lines.parse_finite_double(lines.fields()[2], "hole y coordinate"));
+        }
+    }
+    if (lines.next_data_line()) {
+        const auto& header = lines.fields();
+        if (header.size() != 1) lines.fail_quoting_line("region header must hold one field, the number of regions");
+        const std::uint64_t count = lines.parse_unsigned(header[0], "region count", kMaxTriangles);
+        std::uint32_t region_base = base;
+        for (std::uint64_t i = 0; i < count; ++i) {
+            if (!lines.next_data_line()) {
+                lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
+                                  plural(count, "announced region", "announced regions"));
+            }
+            const auto& fields = lines.fields();
+            if (fields.size() != 4 && fields.size() != 5) {
+                lines.fail_quoting_line("expected 4 or 5 fields (number, x, y, attribute[, maximum area]), got " +
+                                        std::to_string(fields.size()));
+            }
+            expect_record_number(lines, fields[0], "region", i, region_base);
+            poly.regions.push_back(lines.parse_finite_double(fields[1], "region x coordinate"));
+            poly.regions.push_back(lines.parse_finite_double(fields[2], "region y coordinate"));
+            poly.regions.push_back(lines.parse_finite_double(fields[3], "region attribute"));
+            poly.regions.push_back(fields.size() == 5 ? lines.parse_finite_double(fields[4], "region maximum area")
+                                                      : -1.0);
+        }
+        expect_end(lines, count, count == 1 ? "region" : "regions");
+    }
+    return poly;
+}
+
+PolyFile read_poly(const std::filesystem::path& path) {
+    std::filesystem::path node_path = path;
+    node_path.replace_extension(".node");
+    return parse_poly(read_text_file(path), path.string(), node_path);
+}
+
+std::string format_poly(const NodeFile& vertices, std::span<const VertIdx> segments,
+                        std::span<const std::int32_t> segment_markers) {
+    std::string out = format_node(vertices);
+    const std::size_t count = segments.size() / 2;
+    const bool markers = !segment_markers.empty();
+    append_unsigned(out, count);
+    out += markers ? " 1\n" : " 0\n";
+    for (std::size_t s = 0; s < count; ++s) {
+        append_unsigned(out, s + vertices.first_index);
+        for (int k = 0; k < 2; ++k) {
+            out += ' ';
+            append_unsigned(out, std::uint64_t{segments[2 * s + static_cast<std::size_t>(k)]} + vertices.first_index);
+        }
+        if (markers) {
+            out += ' ';
+            append_signed(out, segment_markers[s]);
+        }
+        out += '\n';
+    }
+    out += "0\n";
+    return out;
+}
+
+void write_poly(const std::filesystem::path& path, const NodeFile& vertices, std::span<const VertIdx> segments,
+                std::span<const std::int32_t> segment_markers) {
+    write_text_file(path, format_poly(vertices, segments, segment_markers));
 }
 
 EleFile parse_ele(std::string_view text, const std::string& file_name,
@@ -243,17 +395,23 @@ EleFile read_ele(const std::filesystem::path& path, std::uint32_t vertex_first_i
     return parse_ele(read_text_file(path), path.string(), vertex_first_index, vertex_count);
 }
 
-std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_index) {
+std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_index,
+                       std::span<const double> attributes) {
     const std::size_t count = triangles.size() / 3;
+    const bool with_attributes = !attributes.empty();
     std::string out;
     out.reserve(32 * count + 32);
     append_unsigned(out, count);
-    out += " 3 0\n";
+    out += with_attributes ? " 3 1\n" : " 3 0\n";
     for (std::size_t t = 0; t < count; ++t) {
         append_unsigned(out, t + first_index);
         for (std::size_t k = 0; k < 3; ++k) {
             out += ' ';
             append_unsigned(out, std::uint64_t{triangles[3 * t + k]} + first_index);
+        }
+        if (with_attributes) {
+            out += ' ';
+            append_double(out, attributes[t]);
         }
         out += '\n';
     }
@@ -261,8 +419,8 @@ std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_i
 }
 
 void write_ele(const std::filesystem::path& path, std::span<const VertIdx> triangles,
-               std::uint32_t first_index) {
-    write_text_file(path, format_ele(triangles, first_index));
+               std::uint32_t first_index, std::span<const double> attributes) {
+    write_text_file(path, format_ele(triangles, first_index, attributes));
 }
 
 std::string format_neigh(std::span<const TriIdx> neighbors_across_edges,

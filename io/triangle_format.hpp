@@ -29,6 +29,25 @@ NodeFile parse_node(std::string_view text, const std::string& file_name);
 std::string format_node(const NodeFile& nodes);
 void write_node(const std::filesystem::path& path, const NodeFile& nodes);
 
+/// Reads a .poly file (Triangle's planar straight-line graph): a vertex section as in .node
+/// (a count of 0 means the vertices are in the .node file of the same name, read too), then
+/// `<#segments> <#markers 0|1>` and `<number> <endpoint> <endpoint> [marker]` lines, then
+/// `<#holes>` and `<number> <x> <y>` lines, then optionally `<#regions>` and
+/// `<number> <x> <y> <attribute> [<maximum area>]` lines. Segment endpoints must name
+/// existing vertices (in the file's numbering); numbers follow the vertices' base.
+/// @throws FormatError "file:line: problem" as read_node.
+PolyFile read_poly(const std::filesystem::path& path);
+/// read_poly on text in memory; `node_path` is read when the vertex count is 0.
+PolyFile parse_poly(std::string_view text, const std::string& file_name,
+                    const std::filesystem::path& node_path);
+
+/// .poly text with the vertices, `segments` (2·#S, 0-based, numbered like the vertices), no
+/// holes; segment markers when given (#S values).
+std::string format_poly(const NodeFile& vertices, std::span<const VertIdx> segments,
+                        std::span<const std::int32_t> segment_markers = {});
+void write_poly(const std::filesystem::path& path, const NodeFile& vertices,
+                std::span<const VertIdx> segments, std::span<const std::int32_t> segment_markers = {});
+
 /// Reads a .ele file: `<#triangles> <nodes per triangle 3|6> <#attributes>`, then
 /// `<number> <v1> <v2> <v3> [3 more nodes] [attributes...]`. Triangles are numbered
 /// consecutively from 0 or 1; vertex numbers must lie in the .node file's numbering
@@ -42,9 +61,12 @@ EleFile parse_ele(std::string_view text, const std::string& file_name,
 /// The .ele text: `#T 3 0`, then `<t> <v1> <v2> <v3>` (counter-clockwise, as given), triangles
 /// and vertices numbered from `first_index`, as Triangle numbers its output like its input.
 /// `triangles`: 3·#T 0-based vertex indices.
-std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_index);
+/// With `attributes` (one per triangle, e.g. regional attributes) the header says 1 attribute
+/// and each line ends with it.
+std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_index,
+                       std::span<const double> attributes = {});
 void write_ele(const std::filesystem::path& path, std::span<const VertIdx> triangles,
-               std::uint32_t first_index);
+               std::uint32_t first_index, std::span<const double> attributes = {});
 
 /// The .neigh text: `#T 3`, then `<t> <n1> <n2> <n3>`, neighbor i being the triangle OPPOSITE
 /// vertex i (Triangle's convention), -1 on the hull. `neighbors_across_edges` uses the

@@ -4,7 +4,8 @@
 // rounded differences is exact, so only the rounding of the differences is bounded. Stage C:
 // first-order tail terms are added in floating point. Valid without underflow, which the
 // expansion-safe range check before these stages guarantees (proofs/invariants/filters.md).
-// Unlike the stage-A constants these are not re-proved in Gappa: they are Shewchuk's.
+// Unlike the stage-A constants these are not re-proved in Gappa: B and C are Shewchuk's, the
+// two-term bounds are derived by hand in proofs/invariants/filters.md.
 #pragma once
 
 namespace exactmesh::predicates::adaptive {
@@ -18,6 +19,14 @@ inline constexpr double o3d_errbound_c = (26.0 + 288.0 * kEpsilon) * kEpsilon * 
 inline constexpr double icc_errbound_b = (4.0 + 48.0 * kEpsilon) * kEpsilon;
 inline constexpr double icc_errbound_c = (44.0 + 576.0 * kEpsilon) * kEpsilon * kEpsilon;
 inline constexpr double isp_errbound_b = (5.0 + 72.0 * kEpsilon) * kEpsilon;
+inline constexpr double isp_errbound_c = (71.0 + 1408.0 * kEpsilon) * kEpsilon * kEpsilon;
+
+// The two-term evaluation of stage B (predicates/two_term.hpp): |hi + lo - B| is at most 52 u^2
+// (incircle) and 147 u^2 (insphere) times the permanent, u = kEpsilon; the constants below
+// are more than twice that, so that the rounding of the permanent and of the bound itself, and
+// of fl(hi + lo), are covered (proofs/invariants/filters.md, "Two-term stage").
+inline constexpr double icc_errbound_two_term = 128.0 * kEpsilon * kEpsilon;
+inline constexpr double isp_errbound_two_term = 512.0 * kEpsilon * kEpsilon;
 
 /// True when |det| certainly exceeds the error bound (the sign of det is then exact).
 inline bool certified(double det, double errbound) { return det >= errbound || -det >= errbound; }

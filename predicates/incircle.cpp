@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: MIT
-// Exact stages of incircle [Shewchuk97 §4.5]: B the exact determinant of the rounded
-// differences (96 components; exact when they are, else certified by an error bound), C its
-// first-order tail terms, then the raw-coordinate det [x y x^2+y^2 1] (384 components), and GMP
-// out of range.
+// Exact stages of incircle [Shewchuk97 §4.5]: B the determinant of the rounded differences,
+// first in two terms (double-double, error below 128 u^2 of the permanent; the exact value when
+// the differences are exact, else certified by Shewchuk's B bound), C its first-order tail
+// corrections; then B as an exact expansion (exact differences) or the raw-coordinate
+// det [x y x^2+y^2 1] (384 components), and GMP out of range.
 #include "predicates/incircle.hpp"
 
 #include "predicates/adaptive_bounds.hpp"
 #include "predicates/exact_range.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/gmp_fallback.hpp"
+#include "predicates/two_term.hpp"
 
 namespace exactmesh::predicates {
 
@@ -36,6 +38,27 @@ Expansion<12> det3_xy1(const double* p, const double* q, const double* r) noexce
     return compressed(minor_xy(p, q) + minor_xy(q, r) + minor_xy(r, p));
 }
 
+/// Stage B exactly: det [p-d, |p-d|^2] over the rounded differences diff = (adx, ady, bdx, bdy,
+/// cdx, cdy), along the lift column. Minors are compressed first (2x2 determinants rarely need
+/// more than 2 components), which halves the work of the lift products.
+[[gnu::noinline]] Sign exact_stage_b(const double* diff) noexcept {
+    const double* ad = diff;
+    const double* bd = diff + 2;
+    const double* cd = diff + 4;
+    return ((lift_times(ad, compressed(minor_xy(bd, cd))) -
+             lift_times(bd, compressed(minor_xy(ad, cd)))) +
+            lift_times(cd, compressed(minor_xy(ad, bd))))
+        .sign();
+}
+
+/// det [x y w 1] over rows a, b, c, d, expanded along the lift column w.
+[[gnu::noinline]] Sign raw_expansion(const double* a, const double* b, const double* c,
+                                     const double* d) noexcept {
+    return ((lift_times(a, det3_xy1(b, c, d)) - lift_times(b, det3_xy1(a, c, d))) +
+            (lift_times(c, det3_xy1(a, b, d)) - lift_times(d, det3_xy1(a, b, c))))
+        .sign();
+}
+
 }  // namespace
 
 Sign incircle_exact(const double* a, const double* b, const double* c, const double* d) {
@@ -54,49 +77,50 @@ Sign incircle_exact(const double* a, const double* b, const double* c, const dou
             exact = exact && tail[2 * r + k] == 0.0;
         }
     }
-    // Stage B: det [p-d, |p-d|^2] of the rounded differences, exactly, along the lift column.
-    const double* ad = diff;
-    const double* bd = diff + 2;
-    const double* cd = diff + 4;
-    // Minors are compressed first (2x2 determinants rarely need more than 2 components), which
-    // halves the work of the lift products.
-    const auto det_b = (lift_times(ad, compressed(minor_xy(bd, cd))) -
-                        lift_times(bd, compressed(minor_xy(ad, cd)))) +
-                       lift_times(cd, compressed(minor_xy(ad, bd)));
-    if (exact) {
-        EM_STAT(incircle, exact_differences);
-        return det_b.sign();
-    }
-    const double adx = ad[0], ady = ad[1], bdx = bd[0], bdy = bd[1], cdx = cd[0], cdy = cd[1];
-    const double adxt = tail[0], adyt = tail[1], bdxt = tail[2], bdyt = tail[3];
-    const double cdxt = tail[4], cdyt = tail[5];
+    const double adx = diff[0], ady = diff[1], bdx = diff[2], bdy = diff[3];
+    const double cdx = diff[4], cdy = diff[5];
     const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy;
     const double clift = cdx * cdx + cdy * cdy;
     const double permanent = (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * alift +
                              (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * blift +
                              (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * clift;
-    double det = det_b.approximate();
-    if (adaptive::certified(det, adaptive::icc_errbound_b * permanent)) {
+    // Stage B in two terms: det [p-d, |p-d|^2] of the rounded differences to within
+    // icc_errbound_two_term * permanent (proofs/invariants/filters.md, "Two-term stage").
+    const detail::TwoTerm det_two_term = detail::incircle_stage_b(diff);
+    const double det_b = det_two_term.hi + det_two_term.lo;
+    const double two_term_bound = adaptive::icc_errbound_two_term * permanent;
+    if (exact) {
+        // The differences are exact, so stage B is the determinant itself.
+        if (adaptive::certified(det_b, two_term_bound)) {
+            EM_STAT(incircle, adaptive);
+            return sign_of(det_b);
+        }
+        EM_STAT(incircle, exact_differences);
+        return exact_stage_b(diff);
+    }
+    if (adaptive::certified(det_b, adaptive::icc_errbound_b * permanent + two_term_bound)) {
         EM_STAT(incircle, adaptive);
-        return sign_of(det);
+        return sign_of(det_b);
     }
     // Stage C: the first-order terms of the difference tails.
-    det += ((adx * adx + ady * ady) * ((bdx * cdyt + cdy * bdxt) - (bdy * cdxt + cdx * bdyt)) +
-            2.0 * (adx * adxt + ady * adyt) * (bdx * cdy - bdy * cdx)) +
-           ((bdx * bdx + bdy * bdy) * ((cdx * adyt + ady * cdxt) - (cdy * adxt + adx * cdyt)) +
-            2.0 * (bdx * bdxt + bdy * bdyt) * (cdx * ady - cdy * adx)) +
-           ((cdx * cdx + cdy * cdy) * ((adx * bdyt + bdy * adxt) - (ady * bdxt + bdx * adyt)) +
-            2.0 * (cdx * cdxt + cdy * cdyt) * (adx * bdy - ady * bdx));
-    if (adaptive::certified(det, adaptive::icc_errbound_c * permanent +
-                                     adaptive::result_errbound * std::fabs(det))) {
+    const double adxt = tail[0], adyt = tail[1], bdxt = tail[2], bdyt = tail[3];
+    const double cdxt = tail[4], cdyt = tail[5];
+    const double det_c =
+        det_b +
+        (((adx * adx + ady * ady) * ((bdx * cdyt + cdy * bdxt) - (bdy * cdxt + cdx * bdyt)) +
+          2.0 * (adx * adxt + ady * adyt) * (bdx * cdy - bdy * cdx)) +
+         ((bdx * bdx + bdy * bdy) * ((cdx * adyt + ady * cdxt) - (cdy * adxt + adx * cdyt)) +
+          2.0 * (bdx * bdxt + bdy * bdyt) * (cdx * ady - cdy * adx)) +
+         ((cdx * cdx + cdy * cdy) * ((adx * bdyt + bdy * adxt) - (ady * bdxt + bdx * adyt)) +
+          2.0 * (cdx * cdxt + cdy * cdyt) * (adx * bdy - ady * bdx)));
+    if (adaptive::certified(det_c, adaptive::icc_errbound_c * permanent +
+                                       adaptive::result_errbound * std::fabs(det_b) +
+                                       2.0 * two_term_bound)) {
         EM_STAT(incircle, adaptive);
-        return sign_of(det);
+        return sign_of(det_c);
     }
-    // det [x y w 1] over rows a, b, c, d, expanded along the lift column w.
     EM_STAT(incircle, expansion);
-    return ((lift_times(a, det3_xy1(b, c, d)) - lift_times(b, det3_xy1(a, c, d))) +
-            (lift_times(c, det3_xy1(a, b, d)) - lift_times(d, det3_xy1(a, b, c))))
-        .sign();
+    return raw_expansion(a, b, c, d);
 }
 
 }  // namespace exactmesh::predicates

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
-// Exact stages of insphere [Shewchuk97 §4.6]: B the exact determinant of the rounded
-// differences (1152 components; exact when they are, else certified by an error bound), then
-// the raw-coordinate det [x y z w 1] (5760 components), and GMP out of range.
+// Exact stages of insphere [Shewchuk97 §4.6]: B the determinant of the rounded differences,
+// first in two terms (double-double, error below 512 u^2 of the permanent; the exact value when
+// the differences are exact, else certified by Shewchuk's B bound), C its first-order tail
+// corrections [Shewchuk97, insphereadapt]; then B as an exact expansion (1152 components, exact
+// differences) or the raw-coordinate det [x y z w 1] (5760 components), and GMP out of range.
 #include "predicates/insphere.hpp"
 
 #include "predicates/adaptive_bounds.hpp"
 #include "predicates/exact_range.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/gmp_fallback.hpp"
+#include "predicates/two_term.hpp"
 
 namespace exactmesh::predicates {
 
@@ -42,6 +45,37 @@ Expansion<96> det4_xyz1(const Expansion<24>& pqr, const Expansion<24>& pqs,
     return compressed((pqr - pqs) + (prs - qrs));
 }
 
+/// Stage B exactly: det [p-e, |p-e|^2] over the rounded differences diff = (aex, aey, aez, ...,
+/// dez), along the lift column.
+[[gnu::noinline]] Sign exact_stage_b(const double* diff) noexcept {
+    const double* ae = diff;
+    const double* be = diff + 3;
+    const double* ce = diff + 6;
+    const double* de = diff + 9;
+    return ((lift_times(be, det3_xyz(ae, ce, de)) - lift_times(ae, det3_xyz(be, ce, de))) +
+            (lift_times(de, det3_xyz(ae, be, ce)) - lift_times(ce, det3_xyz(ae, be, de))))
+        .sign();
+}
+
+/// det [x y z w 1] over rows a..e, expanded along the lift column w:
+/// -w_a O(bcde) + w_b O(acde) - w_c O(abde) + w_d O(abce) - w_e O(abcd).
+[[gnu::noinline]] Sign raw_expansion(const double* a, const double* b, const double* c,
+                                     const double* d, const double* e) noexcept {
+    const auto abc = det3_xyz(a, b, c), abd = det3_xyz(a, b, d), abe = det3_xyz(a, b, e);
+    const auto acd = det3_xyz(a, c, d), ace = det3_xyz(a, c, e), ade = det3_xyz(a, d, e);
+    const auto bcd = det3_xyz(b, c, d), bce = det3_xyz(b, c, e), bde = det3_xyz(b, d, e);
+    const auto cde = det3_xyz(c, d, e);
+    const auto o_bcde = det4_xyz1(bcd, bce, bde, cde);
+    const auto o_acde = det4_xyz1(acd, ace, ade, cde);
+    const auto o_abde = det4_xyz1(abd, abe, ade, bde);
+    const auto o_abce = det4_xyz1(abc, abe, ace, bce);
+    const auto o_abcd = det4_xyz1(abc, abd, acd, bcd);
+    const auto sum = ((lift_times(b, o_acde) - lift_times(a, o_bcde)) +
+                      (lift_times(d, o_abce) - lift_times(c, o_abde))) -
+                     lift_times(e, o_abcd);
+    return sum.sign();
+}
+
 }  // namespace
 
 Sign insphere_exact(const double* a, const double* b, const double* c, const double* d,
@@ -62,17 +96,9 @@ Sign insphere_exact(const double* a, const double* b, const double* c, const dou
             exact = exact && tail[3 * r + k] == 0.0;
         }
     }
-    // Stage B: det [p-e, |p-e|^2] of the rounded differences, exactly, along the lift column.
-    const double* ae = diff;
-    const double* be = diff + 3;
-    const double* ce = diff + 6;
-    const double* de = diff + 9;
-    const auto det_b = (lift_times(be, det3_xyz(ae, ce, de)) - lift_times(ae, det3_xyz(be, ce, de))) +
-                       (lift_times(de, det3_xyz(ae, be, ce)) - lift_times(ce, det3_xyz(ae, be, de)));
-    if (exact) {
-        EM_STAT(insphere, exact_differences);
-        return det_b.sign();
-    }
+    const double aex = diff[0], aey = diff[1], aez = diff[2], bex = diff[3], bey = diff[4];
+    const double bez = diff[5], cex = diff[6], cey = diff[7], cez = diff[8], dex = diff[9];
+    const double dey = diff[10], dez = diff[11];
     // The permanent: each lift times the permanent of the other rows' xyz minor.
     auto lift = [](const double* p) { return p[0] * p[0] + p[1] * p[1] + p[2] * p[2]; };
     auto permanent3 = [](const double* p, const double* q, const double* r) {
@@ -80,29 +106,65 @@ Sign insphere_exact(const double* a, const double* b, const double* c, const dou
                (std::fabs(q[0] * r[1]) + std::fabs(r[0] * q[1])) * std::fabs(p[2]) +
                (std::fabs(r[0] * p[1]) + std::fabs(p[0] * r[1])) * std::fabs(q[2]);
     };
+    const double* ae = diff;
+    const double* be = diff + 3;
+    const double* ce = diff + 6;
+    const double* de = diff + 9;
     const double permanent = lift(ae) * permanent3(be, ce, de) + lift(be) * permanent3(ae, ce, de) +
                              lift(ce) * permanent3(ae, be, de) + lift(de) * permanent3(ae, be, ce);
-    const double det = det_b.approximate();
-    if (adaptive::certified(det, adaptive::isp_errbound_b * permanent)) {
-        EM_STAT(insphere, adaptive);
-        return sign_of(det);
+    // Stage B in two terms: det [p-e, |p-e|^2] of the rounded differences to within
+    // isp_errbound_two_term * permanent (proofs/invariants/filters.md, "Two-term stage").
+    const detail::TwoTerm det_two_term = detail::insphere_stage_b(diff);
+    const double det_b = det_two_term.hi + det_two_term.lo;
+    const double two_term_bound = adaptive::isp_errbound_two_term * permanent;
+    if (exact) {
+        // The differences are exact, so stage B is the determinant itself.
+        if (adaptive::certified(det_b, two_term_bound)) {
+            EM_STAT(insphere, adaptive);
+            return sign_of(det_b);
+        }
+        EM_STAT(insphere, exact_differences);
+        return exact_stage_b(diff);
     }
-    // det [x y z w 1] over rows a..e, expanded along the lift column w:
-    // -w_a O(bcde) + w_b O(acde) - w_c O(abde) + w_d O(abce) - w_e O(abcd).
+    if (adaptive::certified(det_b, adaptive::isp_errbound_b * permanent + two_term_bound)) {
+        EM_STAT(insphere, adaptive);
+        return sign_of(det_b);
+    }
+    // Stage C: the first-order terms of the difference tails [Shewchuk97, insphereadapt].
+    const double aext = tail[0], aeyt = tail[1], aezt = tail[2], bext = tail[3];
+    const double beyt = tail[4], bezt = tail[5], cext = tail[6], ceyt = tail[7];
+    const double cezt = tail[8], dext = tail[9], deyt = tail[10], dezt = tail[11];
+    const double ab3 = aex * bey - bex * aey, bc3 = bex * cey - cex * bey;
+    const double cd3 = cex * dey - dex * cey, da3 = dex * aey - aex * dey;
+    const double ac3 = aex * cey - cex * aey, bd3 = bex * dey - dex * bey;
+    const double abeps = (aex * beyt + bey * aext) - (aey * bext + bex * aeyt);
+    const double bceps = (bex * ceyt + cey * bext) - (bey * cext + cex * beyt);
+    const double cdeps = (cex * deyt + dey * cext) - (cey * dext + dex * ceyt);
+    const double daeps = (dex * aeyt + aey * dext) - (dey * aext + aex * deyt);
+    const double aceps = (aex * ceyt + cey * aext) - (aey * cext + cex * aeyt);
+    const double bdeps = (bex * deyt + dey * bext) - (bey * dext + dex * beyt);
+    const double det_c =
+        det_b +
+        ((((bex * bex + bey * bey + bez * bez) * ((cez * daeps + dez * aceps + aez * cdeps) +
+                                                  (cezt * da3 + dezt * ac3 + aezt * cd3)) +
+           (dex * dex + dey * dey + dez * dez) * ((aez * bceps - bez * aceps + cez * abeps) +
+                                                  (aezt * bc3 - bezt * ac3 + cezt * ab3))) -
+          ((aex * aex + aey * aey + aez * aez) * ((bez * cdeps - cez * bdeps + dez * bceps) +
+                                                  (bezt * cd3 - cezt * bd3 + dezt * bc3)) +
+           (cex * cex + cey * cey + cez * cez) * ((dez * abeps + aez * bdeps + bez * daeps) +
+                                                  (dezt * ab3 + aezt * bd3 + bezt * da3)))) +
+         2.0 * (((bex * bext + bey * beyt + bez * bezt) * (cez * da3 + dez * ac3 + aez * cd3) +
+                 (dex * dext + dey * deyt + dez * dezt) * (aez * bc3 - bez * ac3 + cez * ab3)) -
+                ((aex * aext + aey * aeyt + aez * aezt) * (bez * cd3 - cez * bd3 + dez * bc3) +
+                 (cex * cext + cey * ceyt + cez * cezt) * (dez * ab3 + aez * bd3 + bez * da3))));
+    if (adaptive::certified(det_c, adaptive::isp_errbound_c * permanent +
+                                       adaptive::result_errbound * std::fabs(det_b) +
+                                       2.0 * two_term_bound)) {
+        EM_STAT(insphere, adaptive);
+        return sign_of(det_c);
+    }
     EM_STAT(insphere, expansion);
-    const auto abc = det3_xyz(a, b, c), abd = det3_xyz(a, b, d), abe = det3_xyz(a, b, e);
-    const auto acd = det3_xyz(a, c, d), ace = det3_xyz(a, c, e), ade = det3_xyz(a, d, e);
-    const auto bcd = det3_xyz(b, c, d), bce = det3_xyz(b, c, e), bde = det3_xyz(b, d, e);
-    const auto cde = det3_xyz(c, d, e);
-    const auto o_bcde = det4_xyz1(bcd, bce, bde, cde);
-    const auto o_acde = det4_xyz1(acd, ace, ade, cde);
-    const auto o_abde = det4_xyz1(abd, abe, ade, bde);
-    const auto o_abce = det4_xyz1(abc, abe, ace, bce);
-    const auto o_abcd = det4_xyz1(abc, abd, acd, bcd);
-    const auto sum = ((lift_times(b, o_acde) - lift_times(a, o_bcde)) +
-                      (lift_times(d, o_abce) - lift_times(c, o_abde))) -
-                     lift_times(e, o_abcd);
-    return sum.sign();
+    return raw_expansion(a, b, c, d, e);
 }
 
 }  // namespace exactmesh::predicates

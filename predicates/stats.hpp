@@ -12,8 +12,8 @@ namespace exactmesh::predicates {
 struct StageCounts {
     std::uint64_t calls = 0;
     std::uint64_t filter = 0;             ///< certified by the floating-point filter (stage A)
-    std::uint64_t exact_differences = 0;  ///< differences were exact: stage B is the exact value
-    std::uint64_t adaptive = 0;           ///< certified by the error bound of stage B or C
+    std::uint64_t exact_differences = 0;  ///< differences were exact: stage B, exactly, decided
+    std::uint64_t adaptive = 0;           ///< certified by an error bound of stage B or C
     std::uint64_t expansion = 0;          ///< full expansion arithmetic (stage C)
     std::uint64_t gmp = 0;                ///< outside the expansion-safe range: GMP (stage D)
 };

@@ -206,6 +206,21 @@ bool Delaunay2Core::make_first_triangle(std::vector<bool>& skip) {
 }
 
 TriIdx Delaunay2Core::locate(VertIdx p) {
+    const TriIdx t = walk_to(p);
+    if (!mesh.is_infinite(t)) {
+        for (int k = 0; k < 3; ++k) {
+            const VertIdx v = mesh.tv[3 * t + static_cast<unsigned>(k)];
+            if (same_point(v, p)) {
+                merged_into[input_index[p]] = input_index[v];
+                ++counters.duplicates;
+                return kNone;
+            }
+        }
+    }
+    return t;
+}
+
+TriIdx Delaunay2Core::walk_to(VertIdx p) {
     TriIdx t = last_triangle;
     if (jump_.enabled) {
         // The finest level whose cell around p has seen an insertion whose triangle lives.
@@ -249,17 +264,6 @@ TriIdx Delaunay2Core::locate(VertIdx p) {
             }
         }
         if (!moved) break;
-    }
-    if (!mesh.is_infinite(t)) {
-        for (int k = 0; k < 3; ++k) {
-            const VertIdx v = mesh.tv[3 * t + static_cast<unsigned>(k)];
-            if (same_point(v, p)) {
-                merged_into[input_index[p]] = input_index[v];
-                ++counters.duplicates;
-                last_triangle = t;
-                return kNone;
-            }
-        }
     }
     last_triangle = t;
     return t;

@@ -48,6 +48,9 @@ public:
     /// Visibility walk [Devillers, Pion, Teillaud 2002] from the last visited triangle to one
     /// in conflict with p. When p equals a vertex, records the duplicate and returns kNone.
     TriIdx locate(VertIdx p);
+    /// The visibility walk alone: a triangle containing p (closed) or an infinite triangle
+    /// whose hull edge sees p; p may equal one of its vertices. Sets last_triangle.
+    TriIdx walk_to(VertIdx p);
 
     /// The finite triangles in the caller's numbering; consumes the mesh.
     Delaunay2Result take_result();

@@ -127,10 +127,9 @@ private:
 
 }  // namespace
 
-Delaunay2Result green_sibson_2d(std::span<const double> xy, const Delaunay2Options& options) {
-    detail::Delaunay2Core core(xy, options);
+bool detail::green_sibson_insert_all(Delaunay2Core& core) {
     std::vector<bool> skip;
-    if (!core.make_first_triangle(skip)) return core.collinear_result();
+    if (!core.make_first_triangle(skip)) return false;
     LawsonInserter inserter(core);
     for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
         if (skip[p]) continue;
@@ -139,6 +138,12 @@ Delaunay2Result green_sibson_2d(std::span<const double> xy, const Delaunay2Optio
         inserter.insert(p, t);
         core.note_inserted(p);
     }
+    return true;
+}
+
+Delaunay2Result green_sibson_2d(std::span<const double> xy, const Delaunay2Options& options) {
+    detail::Delaunay2Core core(xy, options);
+    if (!detail::green_sibson_insert_all(core)) return core.collinear_result();
     return core.take_result();
 }
 

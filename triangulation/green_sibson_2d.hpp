@@ -18,4 +18,12 @@ namespace exactmesh::triangulation {
 /// The Delaunay triangulation of xy (2·#V coordinates). Throws InputError on bad input.
 Delaunay2Result green_sibson_2d(std::span<const double> xy, const Delaunay2Options& options = {});
 
+namespace detail {
+class Delaunay2Core;
+/// Builds the Delaunay triangulation of core's points in core.mesh (insertion order as the core
+/// holds them). Returns false, leaving no triangle, when all points are collinear. For
+/// constructions that go on editing the mesh (constrained_2d).
+bool green_sibson_insert_all(Delaunay2Core& core);
+}  // namespace detail
+
 }  // namespace exactmesh::triangulation

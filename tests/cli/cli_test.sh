@@ -211,9 +211,139 @@ check_rejects_non_delaunay() {
     fail "check: clockwise triangle not named: $(cat "$work/out")"
 }
 
+cdt() {
+  local poly=$data/square_hole_diagonals.poly recovery
+  for recovery in swap cavity conforming; do
+    run 0 cdt "$poly" -o "$work/$recovery.ele" --recovery "$recovery" --stats || continue
+    for ext in ele neigh node poly; do [[ -s "$work/$recovery.$ext" ]] || fail "cdt: $recovery.$ext missing"; done
+    grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "cdt --stats: no construct_seconds"
+    grep -q '^intersections: 1$' "$work/out" || fail "cdt: intersections is not 1: $(cat "$work/out")"
+    grep -q 'warning: segments 6 and 5 cross; split at new vertex 9 (2, 2)' "$work/err" ||
+      fail "cdt: no crossing warning in the input's numbering: $(cat "$work/err")"
+    # The added vertex follows the input's 8 in the .node written beside the .ele.
+    head -n 1 "$work/$recovery.node" | grep -q '^9 2 ' || fail "cdt: $recovery.node does not hold 9 vertices"
+    run 0 check "$poly" "$work/$recovery.ele" &&
+      grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
+      fail "check rejected the $recovery output: $(cat "$work/out")"
+  done
+  run 0 cdt "$poly" -o "$work/cdt.svg" && grep -q '</svg>' "$work/cdt.svg" || fail "cdt: svg"
+  # A .node alone is a PSLG without segments.
+  run 0 cdt "$data/kite.node" -o "$work/kite.ele" || fail "cdt of a .node"
+  # The Delaunay triangulation of a flat rhombus lacks the long diagonal: named in the
+  # file's numbering.
+  printf '4 2 0 0\n1 0 0\n2 1 -0.2\n3 2 0\n4 1 0.2\n' >"$work/rhombus.node"
+  printf '0 2 0 0\n1 0\n1 1 3\n0\n' >"$work/rhombus.poly"
+  run 0 triangulate "$work/rhombus.node" -o "$work/rhombus_dt.ele" || return
+  run 1 check "$work/rhombus.poly" "$work/rhombus_dt.ele" &&
+    grep -q '^not ok: .*segment 1 (1, 3) is missing' "$work/out" || fail "check: missing segment: $(cat "$work/out")"
+  # A lone segment encloses nothing: as Triangle does, the exterior is eaten unless --convex-hull.
+  run 0 cdt "$work/rhombus.poly" -o "$work/rhombus_cdt.ele" && grep -q '^triangles: 0$' "$work/out" ||
+    fail "cdt: rhombus without --convex-hull: $(cat "$work/out")"
+  run 0 cdt "$work/rhombus.poly" -o "$work/rhombus_cdt.ele" --convex-hull && grep -q '^triangles: 2$' "$work/out" ||
+    fail "cdt: rhombus with --convex-hull: $(cat "$work/out")"
+  run 0 check "$work/rhombus.poly" "$work/rhombus_cdt.ele" || fail "check rejected the rhombus CDT: $(cat "$work/out")"
+  # Bad input: one line naming file, line and problem.
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 4\n0\n' >"$work/dangling.poly"
+  expect_error 2 'dangling\.poly:6: segment endpoint 4 names no vertex' cdt "$work/dangling.poly" -o "$work/x.ele"
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 nan\n0 0\n0\n' >"$work/nan.poly"
+  expect_error 2 'nan\.poly:4: non-finite y coordinate' cdt "$work/nan.poly" -o "$work/x.ele"
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 2\n1\n1 inf 0\n' >"$work/inf_hole.poly"
+  expect_error 2 'inf_hole\.poly:8: non-finite' cdt "$work/inf_hole.poly" -o "$work/x.ele"
+  expect_error 2 'magic not in' cdt "$poly" -o "$work/x.ele" --recovery magic
+  # -o IN.ele beside IN.poly would write the result's .poly over the input: refused, input kept.
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n' >"$work/keep.poly"
+  expect_error 2 'keep\.poly: this output would overwrite the input file' cdt "$work/keep.poly" -o "$work/keep.ele"
+  grep -q '^3 0 1$' "$work/keep.poly" || fail "cdt: the input was modified"
+  # Zero-length and repeated segments: dropped with a warning each, exit 0.
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 1\n2 1 2\n3 2 1\n0\n' >"$work/dropped.poly"
+  run 0 cdt "$work/dropped.poly" -o "$work/dropped_cdt.ele" --convex-hull &&
+    grep -q 'segment 1 has zero length' "$work/err" && grep -q 'segment 3 repeats segment 2' "$work/err" ||
+    fail "cdt: no warnings for dropped segments: $(cat "$work/err")"
+}
+
+# A scattered point set with one attribute (the data of the data-dependent criterion), written
+# by awk with a fixed seed, and its Delaunay triangulation as the common start.
+make_scattered() {
+  awk 'BEGIN { srand(7); print "60 2 1 0"; for (i = 1; i <= 60; i++) {
+    x = rand(); y = rand(); printf "%d %.17g %.17g %.17g\n", i, x, y, x * x - y } }' >"$work/scattered.node"
+  run 0 triangulate "$work/scattered.node" -o "$work/scattered.ele"
+}
+
+swap_criteria() {
+  # The kite split along its long diagonal: one Delaunay swap fixes it.
+  run 0 swap "$data/kite.node" "$data/kite_not_delaunay.ele" -o "$work/kite.ele" --stats || return
+  grep -q '^swaps: 1$' "$work/out" || fail "swap kite: expected 1 swap: $(cat "$work/out")"
+  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "swap --stats: no construct_seconds"
+  for name in edges_tested not_convex constrained swaps; do
+    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "swap --stats: no '$name: N' line"
+  done
+  run 0 check "$data/kite.node" "$work/kite.ele" || fail "swapped kite is not Delaunay"
+  make_scattered || return
+  local criterion
+  for criterion in delaunay max-min-angle min-max-angle min-length data-dependent; do
+    run 0 swap "$work/scattered.node" "$work/scattered.ele" -o "$work/$criterion.ele" \
+      --criterion "$criterion" --stats || continue
+    [[ $(head -n1 "$work/$criterion.ele") == "$(head -n1 "$work/scattered.ele")" ]] ||
+      fail "$criterion: triangle count changed"
+    if grep -Ev '^[a-z0-9_.]+: ' "$work/out" | grep -q .; then
+      fail "swap --stats: a line is not 'name: value'"
+    fi
+  done
+  run 0 swap "$work/scattered.node" "$work/scattered.ele" -o "$work/jnd.ele" \
+    --criterion data-dependent --data-cost jnd || fail "data-dependent jnd"
+  # Delaunay and max-min angle swapping from the Delaunay start change nothing.
+  cmp -s "$work/delaunay.ele" "$work/scattered.ele" || fail "delaunay swapping changed a Delaunay mesh"
+  run 0 check "$work/scattered.node" "$work/max-min-angle.ele" || fail "max-min-angle is not Delaunay"
+}
+
+min_max() {
+  # The local-optimum instance of tests/unit/triangulation/edge_swap_2d_test.cpp: min-max angle
+  # swapping from Delaunay stops at 126.87 degrees, edge cutting reaches 113.20.
+  printf '6 2 0 0\n0 17 12\n1 17 5\n2 7 16\n3 14 16\n4 10 2\n5 0 8\n' >"$work/local.node"
+  run 0 triangulate "$work/local.node" -o "$work/local.ele" || return
+  run 0 swap "$work/local.node" "$work/local.ele" -o "$work/swapped.ele" --criterion min-max-angle --stats &&
+    grep -q '^max_angle_degrees: 126\.869897' "$work/out" || fail "min-max-angle swapping: $(cat "$work/out")"
+  run 0 min-max "$work/local.node" -o "$work/optimal.ele" --stats || return
+  grep -q '^max_angle_degrees: 113\.198590' "$work/out" || fail "min-max: $(cat "$work/out")"
+  [[ $(head -n1 "$work/optimal.ele") == "$(head -n1 "$work/local.ele")" ]] || fail "min-max: triangle count"
+  for name in worst_triangles insertions candidates visited removed_edges; do
+    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "min-max --stats: no '$name: N' line"
+  done
+  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "min-max --stats: no construct_seconds"
+  # Collinear points: no triangle, still success; 1-based input gives 1-based output.
+  printf '3 2 0 0\n1 0 0\n2 1 1\n3 2 2\n' >"$work/line.node"
+  run 0 min-max "$work/line.node" -o "$work/line.ele" && [[ $(head -n1 "$work/line.ele") == "0 3 0" ]] ||
+    fail "min-max collinear"
+  run 0 min-max "$data/one_based_comments.node" -o "$work/ob.ele" &&
+    sed -n 2p "$work/ob.ele" | grep -q '^1 ' || fail "min-max: 1-based numbering"
+  run 0 check "$data/one_based_comments.node" "$work/ob.ele" || true  # valid mesh; maybe not Delaunay
+  grep -Eq '^(ok|not ok: .*not Delaunay.*)' "$work/out" || fail "min-max output is not a valid mesh: $(cat "$work/out")"
+}
+
+swap_bad_input() {
+  expect_error 2 'nan\.node:[0-9]+: non-finite y coordinate .nan.' \
+    swap "$data/nan.node" "$data/kite_delaunay.ele" -o "$work/x.ele"
+  expect_error 2 'nan\.node:[0-9]+: non-finite' min-max "$data/nan.node" -o "$work/x.ele"
+  expect_error 2 'kite_bad_vertex\.ele:4: vertex number 9 out of range' \
+    swap "$data/kite.node" "$data/kite_bad_vertex.ele" -o "$work/x.ele"
+  printf '2 3 0\n1 1 2 4\n2 2 4 3\n' >"$work/clockwise.ele"
+  expect_error 2 'clockwise\.ele: triangle 2 \(2, 4, 3\) is not strictly counter-clockwise' \
+    swap "$data/kite.node" "$work/clockwise.ele" -o "$work/x.ele"
+  printf '2 3 0\n1 1 2 4\n2 1 2 4\n' >"$work/twice.ele"
+  expect_error 2 'twice\.ele: edge \(1, 2\) of triangle 2 appears twice' \
+    swap "$data/kite.node" "$work/twice.ele" -o "$work/x.ele"
+  expect_error 2 'kite\.node: the data-dependent criterion reads the first vertex attribute' \
+    swap "$data/kite.node" "$data/kite_delaunay.ele" -o "$work/x.ele" --criterion data-dependent
+  expect_error 2 'foo not in' swap "$data/kite.node" "$data/kite_delaunay.ele" -o "$work/x.ele" --criterion foo
+  expect_error 2 'the output must be a \.ele file' swap "$data/kite.node" "$data/kite_delaunay.ele" -o "$work/x.vtu"
+  expect_error 2 'the output must be a \.ele file' min-max "$data/kite.node" -o "$work/x.svg"
+  expect_error 2 'missing\.ele: cannot open for reading' swap "$data/kite.node" "$work/missing.ele" -o "$work/x.ele"
+  expect_error 2 'output is required' min-max "$data/kite.node"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
-    check_rejects_non_delaunay)
+    check_rejects_non_delaunay | cdt | swap_criteria | min_max | swap_bad_input)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

@@ -443,3 +443,55 @@ TEST_F(Io_TriangleFormat, ErrorsAreInputErrors) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// .poly
+
+TEST_F(Io_TriangleFormat, PolyWithSegmentsHolesAndRegions) {
+    const fs::path path = write("domain.poly",
+                                "# a square with a hole\n"
+                                "4 2 0 1\n1 0 0 5\n2 4 0 5\n3 4 4 5\n4 0 4 5\n"
+                                "4 1\n1 1 2 7\n2 2 3 7\n3 3 4 7\n4 4 1 7\n"
+                                "1\n1 2 2\n"
+                                "2\n1 1 1 3.5 0.1\n2 3 3 -2\n");
+    const io::PolyFile poly = io::read_poly(path);
+    EXPECT_EQ(poly.vertices.vertex_count(), 4u);
+    EXPECT_EQ(poly.vertices.first_index, 1u);
+    EXPECT_EQ(poly.segments, (std::vector<io::VertIdx>{0, 1, 1, 2, 2, 3, 3, 0}));
+    EXPECT_EQ(poly.segment_markers, (std::vector<std::int32_t>{7, 7, 7, 7}));
+    EXPECT_EQ(poly.holes, (std::vector<double>{2, 2}));
+    EXPECT_EQ(poly.regions, (std::vector<double>{1, 1, 3.5, 0.1, 3, 3, -2, -1}));
+    // Round trip of vertices and segments.
+    const fs::path copy = dir_ / "copy.poly";
+    io::write_poly(copy, poly.vertices, poly.segments, poly.segment_markers);
+    const io::PolyFile again = io::read_poly(copy);
+    EXPECT_EQ(again.vertices.xy, poly.vertices.xy);
+    EXPECT_EQ(again.segments, poly.segments);
+    EXPECT_EQ(again.segment_markers, poly.segment_markers);
+}
+
+TEST_F(Io_TriangleFormat, PolyWithoutVerticesReadsTheNodeFile) {
+    write("shape.node", "3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n");
+    const fs::path path = write("shape.poly", "0 2 0 0\n3 0\n0 0 1\n1 1 2\n2 2 0\n0\n");
+    const io::PolyFile poly = io::read_poly(path);
+    EXPECT_TRUE(poly.vertices_from_node_file);
+    EXPECT_EQ(poly.vertices.vertex_count(), 3u);
+    EXPECT_EQ(poly.segment_count(), 3u);
+    EXPECT_TRUE(poly.holes.empty());
+}
+
+TEST_F(Io_TriangleFormat, PolyErrorsNameFileLineAndProblem) {
+    auto poly_error = [&](std::string_view content, std::uint64_t line, const std::string& problem) {
+        const fs::path path = write("bad.poly", content);
+        return expect_error([&] { io::read_poly(path); }, path, line, problem);
+    };
+    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 3\n0\n", 6, "segment endpoint 3 names no vertex"));
+    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n2 0\n0 0 1\n", 6, "file ends after 1 of 2 announced segments"));
+    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 1\n", 6, "before the hole count"));
+    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n0 0\n1\n0 nan 0\n", 7, "hole x coordinate"));
+    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n0 0\n0\n1\n0 1 1\n", 8, "expected 4 or 5 fields"));
+    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 3\n0 0 1\n0\n", 5, "segment marker count must be 0 or 1"));
+    // 0 vertices: the .node of the same name is read, and its absence is reported by name.
+    const fs::path path = write("bad.poly", "0 2 0 0\n0 0\n0\n");
+    EXPECT_TRUE(expect_error([&] { io::read_poly(path); }, dir_ / "bad.node", 0, "cannot open"));
+}

@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: MIT
+// `exactmesh cdt`: a .poly (or .node) in, its constrained (or conforming) Delaunay triangulation
+// out: .ele with .neigh, .node (input vertices, then added ones) and .poly (the constrained
+// edges, each marked with its input segment's number) beside it; or .msh, .vtu, .svg.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "io/gmsh_format.hpp"
+#include "io/svg_picture.hpp"
+#include "io/triangle_format.hpp"
+#include "io/vtk_format.hpp"
+#include "predicates/stats.hpp"
+#include "triangulation/constrained_2d.hpp"
+
+namespace exactmesh::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace tri = exactmesh::triangulation;
+
+struct CdtArguments {
+    std::string input;
+    std::string output;
+    std::string recovery = "swap";
+    std::string order = "brio";
+    std::uint64_t seed = 1;
+    bool convex_hull = false;
+    bool stats = false;
+};
+
+/// The input as a PSLG: a .poly, or a .node (points only).
+io::PolyFile read_input(const fs::path& input) {
+    if (input.extension() == ".node") {
+        io::PolyFile poly;
+        poly.vertices = io::read_node(input);
+        return poly;
+    }
+    return io::read_poly(input);
+}
+
+void print_stats(const tri::Cdt2Counters& c, const predicates::PredicateStats& stats, double seconds) {
+    std::cout << "points: " << c.points << '\n'
+              << "duplicates: " << c.duplicates << '\n'
+              << "segments: " << c.segments << '\n'
+              << "dropped_segments: " << c.dropped_segments << '\n'
+              << "vertices_on_segments: " << c.vertices_on_segments << '\n'
+              << "intersections: " << c.intersections << '\n'
+              << "conforming_splits: " << c.conforming_splits << '\n'
+              << "conforming_bends: " << c.conforming_bends << '\n'
+              << "conforming_passes: " << c.conforming_passes << '\n'
+              << "crossed_edges: " << c.crossed_edges << '\n'
+              << "recovery_flips: " << c.recovery_flips << '\n'
+              << "cavity_triangles: " << c.cavity_triangles << '\n'
+              << "delaunay_flips: " << c.delaunay_flips << '\n'
+              << "removed_triangles: " << c.removed_triangles << '\n'
+              << "orient_calls: " << c.orient_calls << '\n'
+              << "incircle_calls: " << c.incircle_calls << '\n'
+              << "walk_steps: " << c.walk_steps << '\n';
+    print_predicate_stats(stats);
+    std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
+}
+
+void run_cdt(const CdtArguments& arguments) {
+    const fs::path output = arguments.output;
+    const OutputFormat format = output_format(output);
+    const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
+    refuse_to_overwrite_input(arguments.input, files);
+    const io::PolyFile poly = read_input(arguments.input);
+    const std::uint32_t base = poly.vertices.first_index;
+
+    tri::Cdt2Options options;
+    options.recovery = tri::segment_recovery_from_name(arguments.recovery);
+    options.remove_exterior = !arguments.convex_hull;
+    options.order = insertion_order(arguments.order);
+    options.seed = arguments.seed;
+    options.first_index = base;
+    const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
+
+    predicates::reset_thread_stats();
+    const auto start = std::chrono::steady_clock::now();
+    const tri::Cdt2Result result = tri::constrained_delaunay_2d(pslg, options);
+    const auto stop = std::chrono::steady_clock::now();
+    const predicates::PredicateStats stats = predicates::thread_stats();
+
+    constexpr std::size_t kShownWarnings = 10;
+    for (std::size_t i = 0; i < result.warnings.size() && i < kShownWarnings; ++i) {
+        std::cerr << "exactmesh: warning: " << result.warnings[i] << '\n';
+    }
+    if (result.warnings.size() > kShownWarnings) {
+        std::cerr << "exactmesh: warning: " << result.warnings.size() - kShownWarnings << " more warnings\n";
+    }
+
+    const tri::Triangulation2& mesh = result.mesh;
+    switch (format) {
+        case OutputFormat::Ele: {
+            const fs::path &neigh = files[1], &node = files[2], &pieces = files[3];
+            io::NodeFile vertices;
+            vertices.xy = mesh.xy;
+            vertices.first_index = base;
+            std::vector<std::int32_t> markers;
+            for (const std::uint32_t s : result.piece_segment) markers.push_back(static_cast<std::int32_t>(s + base));
+            io::write_ele(output, mesh.triangles, base, result.triangle_attributes);
+            io::write_neigh(neigh, mesh.neighbors, base);
+            io::write_node(node, vertices);
+            io::write_poly(pieces, vertices, result.pieces, markers);
+            for (const fs::path& p : {output, neigh, node, pieces}) std::cout << "output: " << p.string() << '\n';
+            break;
+        }
+        case OutputFormat::Msh:
+            io::write_msh(output, mesh.xy, mesh.triangles);
+            std::cout << "output: " << output.string() << '\n';
+            break;
+        case OutputFormat::Vtu:
+            io::write_vtu(output, mesh.xy, mesh.triangles, base);
+            std::cout << "output: " << output.string() << '\n';
+            break;
+        case OutputFormat::Svg: {
+            io::SvgOptions svg;
+            svg.title = fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")";
+            svg.segments = result.pieces;
+            io::write_svg(output, mesh.xy, mesh.triangles, svg);
+            std::cout << "output: " << output.string() << '\n';
+            break;
+        }
+    }
+    std::cout << "vertices: " << mesh.vertex_count() << '\n' << "triangles: " << mesh.triangle_count() << '\n';
+    if (arguments.stats) {
+        print_stats(result.counters, stats, std::chrono::duration<double>(stop - start).count());
+    }
+}
+
+}  // namespace
+
+void add_cdt_command(CLI::App& app) {
+    auto arguments = std::make_shared<CdtArguments>();
+    CLI::App* command = app.add_subcommand(
+        "cdt", "Constrained (or conforming) Delaunay triangulation of a Triangle .poly file");
+    command->add_option("input", arguments->input, "A Triangle .poly file (or a .node: points only)")
+        ->required()
+        ->type_name("IN.poly");
+    command
+        ->add_option("-o,--output", arguments->output,
+                     "Output; the extension picks the format: .ele (with .neigh, .node and .poly "
+                     "beside it), .msh (Gmsh 4.1), .vtu (VTK), .svg (picture)")
+        ->required()
+        ->type_name("OUT");
+    command->add_option("--recovery", arguments->recovery,
+                        "Segment recovery: swap (Sloan's edge swapping), cavity (retriangulate the "
+                        "crossed polygons), conforming (split at midpoints; the result is Delaunay)")
+        ->check(CLI::IsMember({"swap", "cavity", "conforming"}))
+        ->capture_default_str();
+    command->add_flag("--convex-hull", arguments->convex_hull,
+                      "Keep the triangles outside the segments (Triangle's -c); holes are still removed");
+    command->add_option("--order", arguments->order, "Vertex insertion order")
+        ->check(CLI::IsMember({"given", "random", "brio"}))
+        ->capture_default_str();
+    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")->capture_default_str();
+    command->add_flag("--stats", arguments->stats,
+                      "Print work counters, predicate stages and construct_seconds (the construction "
+                      "alone, without file I/O)");
+    command->callback([arguments] { run_cdt(*arguments); });
+}
+
+}  // namespace exactmesh::cli

@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: MIT
+// `exactmesh swap`: Lawson edge swapping of a given triangulation (.node + .ele) under one
+// criterion (triangulation/edge_swap_2d), and `exactmesh min-max`: the min-max angle
+// triangulation of a .node's points by edge cutting (triangulation/edge_cutting_2d).
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "io/triangle_format.hpp"
+#include "predicates/errors.hpp"
+#include "triangulation/edge_cutting_2d.hpp"
+#include "triangulation/edge_swap_2d.hpp"
+
+namespace exactmesh::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace tri = exactmesh::triangulation;
+
+struct SwapArguments {
+    std::string node_path;
+    std::string ele_path;
+    std::string output;
+    std::string criterion = "delaunay";
+    std::string data_cost = "abn";
+    bool stats = false;
+};
+
+struct MinMaxArguments {
+    std::string node_path;
+    std::string output;
+    bool stats = false;
+};
+
+void require_ele_output(const fs::path& output) {
+    if (output.extension() != ".ele") {
+        throw InputError(output.string() + ": the output must be a .ele file");
+    }
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The largest angle of the triangles, in degrees (for the report only: not a decision).
+double largest_angle_degrees(const tri::Triangulation2& mesh) {
+    double largest = 0;
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const double* o = mesh.point(mesh.triangles[3 * t + k]);
+            const double* p = mesh.point(mesh.triangles[3 * t + (k + 1) % 3]);
+            const double* q = mesh.point(mesh.triangles[3 * t + (k + 2) % 3]);
+            const double ux = p[0] - o[0], uy = p[1] - o[1], vx = q[0] - o[0], vy = q[1] - o[1];
+            largest = std::max(largest, std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy));
+        }
+    }
+    return largest * 180.0 / 3.14159265358979323846;
+}
+
+void print_seconds(double seconds) {
+    std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
+}
+
+void run_swap(const SwapArguments& arguments) {
+    const fs::path output = arguments.output;
+    require_ele_output(output);
+    const tri::SwapCriterion criterion = tri::swap_criterion_from_name(arguments.criterion);
+    const io::NodeFile nodes = io::read_node(arguments.node_path);
+    const io::EleFile ele = io::read_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
+    std::vector<double> values;
+    if (criterion == tri::SwapCriterion::DataDependent) {
+        if (nodes.attribute_count == 0) {
+            throw InputError(arguments.node_path +
+                             ": the data-dependent criterion reads the first vertex attribute, "
+                             "and this file declares none");
+        }
+        for (std::uint32_t v = 0; v < nodes.vertex_count(); ++v) {
+            values.push_back(nodes.attributes[std::size_t{v} * nodes.attribute_count]);
+        }
+    }
+    tri::Triangulation2 mesh;
+    mesh.xy = nodes.xy;
+    mesh.triangles = ele.triangles;
+    try {
+        tri::link_neighbors_2d(mesh, tri::CheckNumbering{nodes.first_index, ele.first_index});
+    } catch (const InputError& error) {
+        throw InputError(arguments.ele_path + ": " + error.what());
+    }
+    const auto start = std::chrono::steady_clock::now();
+    tri::EdgeSwapCounters counters;
+    switch (criterion) {
+        case tri::SwapCriterion::Delaunay: counters = tri::swap_edges_2d(mesh, tri::Delaunay{}); break;
+        case tri::SwapCriterion::MaxMinAngle: counters = tri::swap_edges_2d(mesh, tri::MaxMinAngle{}); break;
+        case tri::SwapCriterion::MinMaxAngle: counters = tri::swap_edges_2d(mesh, tri::MinMaxAngle{}); break;
+        case tri::SwapCriterion::MinTotalLength:
+            counters = tri::swap_edges_2d(mesh, tri::MinTotalLength{});
+            break;
+        case tri::SwapCriterion::DataDependent: {
+            const tri::DataCost cost = arguments.data_cost == "jnd"
+                                           ? tri::DataCost::JumpInNormalDerivatives
+                                           : tri::DataCost::AngleBetweenNormals;
+            counters = tri::swap_edges_2d(mesh, tri::DataDependent{values, cost});
+            break;
+        }
+    }
+    const double seconds = seconds_since(start);
+    io::write_ele(output, mesh.triangles, ele.first_index);
+    std::cout << "output: " << output.string() << '\n'
+              << "triangles: " << mesh.triangle_count() << '\n';
+    if (arguments.stats) {
+        std::cout << "criterion: " << arguments.criterion << '\n'
+                  << "edges_tested: " << counters.edges_tested << '\n'
+                  << "not_convex: " << counters.not_convex << '\n'
+                  << "constrained: " << counters.constrained << '\n'
+                  << "swaps: " << counters.swaps << '\n'
+                  << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
+                  << '\n';
+        print_seconds(seconds);
+    }
+}
+
+void run_min_max(const MinMaxArguments& arguments) {
+    const fs::path output = arguments.output;
+    require_ele_output(output);
+    const io::NodeFile nodes = io::read_node(arguments.node_path);
+    const auto start = std::chrono::steady_clock::now();
+    tri::EdgeCuttingCounters counters;
+    const tri::Triangulation2 mesh = tri::min_max_angle_triangulation_2d(nodes.xy, &counters);
+    const double seconds = seconds_since(start);
+    io::write_ele(output, mesh.triangles, nodes.first_index);
+    std::cout << "output: " << output.string() << '\n'
+              << "triangles: " << mesh.triangle_count() << '\n';
+    if (arguments.stats) {
+        std::cout << "worst_triangles: " << counters.worst_triangles << '\n'
+                  << "insertions: " << counters.insertions << '\n'
+                  << "candidates: " << counters.candidates << '\n'
+                  << "visited: " << counters.visited << '\n'
+                  << "removed_edges: " << counters.removed_edges << '\n'
+                  << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
+                  << '\n';
+        print_seconds(seconds);
+    }
+}
+
+}  // namespace
+
+void add_swap_command(CLI::App& app) {
+    auto arguments = std::make_shared<SwapArguments>();
+    CLI::App* command = app.add_subcommand(
+        "swap", "Lawson edge swapping of a triangulation (IN.node + IN.ele) under one criterion");
+    command->add_option("node", arguments->node_path, "Points: a Triangle .node file")
+        ->required()
+        ->type_name("IN.node");
+    command->add_option("ele", arguments->ele_path, "Triangles: a Triangle .ele file (counter-clockwise)")
+        ->required()
+        ->type_name("IN.ele");
+    command->add_option("-o,--output", arguments->output, "Output triangles (.ele)")
+        ->required()
+        ->type_name("OUT.ele");
+    command
+        ->add_option("--criterion", arguments->criterion,
+                     "delaunay (SoS incircle), max-min-angle, min-max-angle, min-length (shorter "
+                     "diagonal), data-dependent (Dyn-Levin-Rippa, on the first vertex attribute)")
+        ->check(CLI::IsMember({"delaunay", "max-min-angle", "min-max-angle", "min-length",
+                               "data-dependent"}))
+        ->capture_default_str();
+    command
+        ->add_option("--data-cost", arguments->data_cost,
+                     "data-dependent edge cost: abn (angle between normals) or jnd (jump in "
+                     "normal derivatives)")
+        ->check(CLI::IsMember({"abn", "jnd"}))
+        ->capture_default_str();
+    command->add_flag("--stats", arguments->stats,
+                      "Print counters and construct_seconds (the swapping alone, without I/O)");
+    command->callback([arguments] { run_swap(*arguments); });
+}
+
+void add_min_max_command(CLI::App& app) {
+    auto arguments = std::make_shared<MinMaxArguments>();
+    CLI::App* command = app.add_subcommand(
+        "min-max", "Min-max angle triangulation of the points of IN.node (edge cutting, exact)");
+    command->add_option("node", arguments->node_path, "Points: a Triangle .node file")
+        ->required()
+        ->type_name("IN.node");
+    command->add_option("-o,--output", arguments->output, "Output triangles (.ele)")
+        ->required()
+        ->type_name("OUT.ele");
+    command->add_flag("--stats", arguments->stats,
+                      "Print counters and construct_seconds (Delaunay start + edge cutting, "
+                      "without I/O)");
+    command->callback([arguments] { run_min_max(*arguments); });
+}
+
+}  // namespace exactmesh::cli

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+// Exact comparisons of triangle angles and of edge lengths, the decisions behind the angle and
+// length criteria of edge_swap_2d and edge_cutting_2d. An angle is never computed: the corner
+// angle at o of a counter-clockwise triangle (o, p, q) lies in (0, pi), where the cotangent
+// dot(p-o, q-o) / cross(p-o, q-o) is strictly decreasing, so theta1 < theta2 exactly when
+// dot1 * cross2 - dot2 * cross1 > 0 (cross > 0 by orientation): a degree-4 polynomial sign.
+// Stages as in predicates/: a floating-point filter with a forward error bound (derived below,
+// in angles_2d.cpp), then expansion arithmetic on exact differences [Shewchuk97 §2], then GMP.
+#pragma once
+
+#include "predicates/sign.hpp"
+
+namespace exactmesh::triangulation {
+
+/// The corner of triangle (o, p, q) at o, the triangle given counter-clockwise: the angle
+/// from ray o->p to ray o->q. Pointers to 2 doubles each (finite).
+struct Corner {
+    const double* o;
+    const double* p;
+    const double* q;
+};
+
+/// Sign of angle(a) - angle(b), exact.
+/// @pre orient2d(a.o, a.p, a.q) > 0 and orient2d(b.o, b.p, b.q) > 0 (each triangle strictly
+///      counter-clockwise), coordinates finite. With a degenerate corner the result is
+///      meaningless but the call is still safe.
+predicates::Sign compare_angles(const Corner& a, const Corner& b);
+
+/// Sign of |p1 - q1|^2 - |p2 - q2|^2, exact (finite coordinates).
+predicates::Sign compare_lengths(const double* p1, const double* q1, const double* p2,
+                                 const double* q2);
+
+/// The largest corner of the strictly counter-clockwise triangle (a, b, c): the corner opposite
+/// its longest side (law of sines), found with compare_lengths; ties go to the earliest of
+/// the corners at a, b, c.
+Corner largest_corner(const double* a, const double* b, const double* c);
+
+/// The smallest corner (opposite the shortest side); ties go to the earliest of a, b, c.
+Corner smallest_corner(const double* a, const double* b, const double* c);
+
+}  // namespace exactmesh::triangulation

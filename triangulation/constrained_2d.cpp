@@ -1,0 +1,1094 @@
+// SPDX-License-Identifier: MIT
+// Constrained and conforming Delaunay triangulation (see constrained_2d.hpp).
+//
+// State: the Delaunay2Core mesh (infinite vertex, twin half-edges) plus, per half-edge, the
+// input segment it carries (kNone when unconstrained; both halves of an edge agree), and per
+// vertex one half-edge leaving it, so a segment's walk starts in O(degree). Every operation
+// that rewrites triangles writes all of its vertices again, which keeps vertex_edge_ exact.
+//
+// A segment is processed as a stack of pieces (a, b, segment). A piece whose walk meets a
+// vertex on it, or a constrained edge across it, is split there and its parts pushed back;
+// otherwise the crossed edges are removed by the chosen recovery. Local indices in the walk:
+// crossed half-edge h runs from x (right of a->b) to y (left of a->b).
+#include "triangulation/constrained_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+#include "predicates/constructions.hpp"
+#include "predicates/errors.hpp"
+#include "triangulation/delaunay_2d_core.hpp"
+#include "triangulation/green_sibson_2d.hpp"
+
+namespace exactmesh::triangulation {
+
+using predicates::Sign;
+
+SegmentRecovery segment_recovery_from_name(std::string_view name) {
+    if (name == "swap") return SegmentRecovery::Swap;
+    if (name == "cavity") return SegmentRecovery::Cavity;
+    if (name == "conforming") return SegmentRecovery::Conforming;
+    throw InputError("unknown segment recovery '" + std::string(name) +
+                     "' (expected swap, cavity or conforming)");
+}
+
+const char* segment_recovery_name(SegmentRecovery recovery) {
+    switch (recovery) {
+        case SegmentRecovery::Swap: return "swap";
+        case SegmentRecovery::Cavity: return "cavity";
+        case SegmentRecovery::Conforming: return "conforming";
+    }
+    return "?";
+}
+
+namespace {
+
+std::string number_text(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+void require_finite_items(std::span<const double> values, std::size_t stride, const char* what) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) {
+            throw InputError(std::string(what) + " " + std::to_string(i / stride) + ": non-finite value " +
+                             number_text(values[i]));
+        }
+    }
+}
+
+struct Piece {
+    VertIdx a, b;          // mesh vertices
+    std::uint32_t segment;  // input segment
+};
+
+class CdtBuilder {
+public:
+    CdtBuilder(const Pslg& pslg, const Cdt2Options& options)
+        : pslg_(pslg), options_(options), core_(pslg.xy, delaunay_options(options)), mesh_(core_.mesh) {}
+
+    Cdt2Result run();
+
+private:
+    const Pslg& pslg_;
+    const Cdt2Options& options_;
+    detail::Delaunay2Core core_;
+    TriMesh2& mesh_;
+    std::vector<std::uint32_t> segment_of_;  // per half-edge
+    std::vector<EdgeIdx> vertex_edge_;       // per mesh vertex
+    std::vector<TriIdx> flip_stack_;
+    std::vector<std::uint8_t> in_cavity_;    // per triangle slot, scratch of recover_by_cavity
+    std::vector<Piece> work_;
+    std::vector<std::array<VertIdx, 2>> segment_ends_;  // per input segment: its mesh vertices
+    Cdt2Result result_;
+    std::uint32_t input_count_ = 0;
+    std::uint64_t work_done_ = 0;
+
+    static Delaunay2Options delaunay_options(const Cdt2Options& o) {
+        Delaunay2Options d;
+        d.order = o.order;
+        d.seed = o.seed;
+        return d;
+    }
+
+    // ---- mesh editing -------------------------------------------------------------------
+    TriIdx new_triangle() {
+        const TriIdx t = mesh_.new_triangle();
+        if (segment_of_.size() < mesh_.tv.size()) segment_of_.resize(mesh_.tv.size(), kNone);
+        return t;
+    }
+    void set(TriIdx t, VertIdx a, VertIdx b, VertIdx c) {
+        const VertIdx v[3] = {a, b, c};
+        for (unsigned k = 0; k < 3; ++k) {
+            mesh_.tv[3 * t + k] = v[k];
+            if (v[k] != kInfinite) vertex_edge_[v[k]] = 3 * t + k;
+        }
+    }
+    /// Links a new half-edge to a surviving outer one, keeping its constraint.
+    void link_outer(EdgeIdx e, EdgeIdx outer, std::uint32_t segment) {
+        mesh_.link(e, outer);
+        segment_of_[e] = segment;
+    }
+    void link_inner(EdgeIdx e, EdgeIdx f, std::uint32_t segment = kNone) {
+        mesh_.link(e, f);
+        segment_of_[e] = segment_of_[f] = segment;
+    }
+    void mark(EdgeIdx e, std::uint32_t segment) {
+        const std::uint32_t s = std::min(segment_of_[e], segment);
+        segment_of_[e] = segment_of_[mesh_.twin[e]] = s;
+    }
+    VertIdx apex(EdgeIdx e) const { return mesh_.tv[prev_edge(e)]; }
+
+    /// The half-edge u -> v, or kNone.
+    EdgeIdx find_edge(VertIdx u, VertIdx v) const {
+        const EdgeIdx first = vertex_edge_[u];
+        EdgeIdx e = first;
+        do {
+            if (mesh_.destination(e) == v) return e;
+            e = mesh_.twin[prev_edge(e)];
+        } while (e != first);
+        return kNone;
+    }
+
+    VertIdx add_vertex(double x, double y) {
+        mesh_.xy.push_back(x);
+        mesh_.xy.push_back(y);
+        const VertIdx v = mesh_.vertex_count() - 1;
+        core_.input_index.push_back(v);  // added vertices follow the inputs in the output
+        core_.merged_into.push_back(static_cast<VertIdx>(core_.merged_into.size()));
+        vertex_edge_.push_back(kNone);
+        return v;
+    }
+
+    /// Undoes add_vertex for a probe that no triangle uses (a located point, or a rounded
+    /// point equal to an existing vertex).
+    void remove_last_vertex() {
+        mesh_.xy.resize(mesh_.xy.size() - 2);
+        core_.input_index.pop_back();
+        core_.merged_into.pop_back();
+        vertex_edge_.pop_back();
+    }
+
+    // ---- insertion with Lawson flips that never cross a constraint --------------------
+    void insert_vertex(VertIdx p, TriIdx t);
+    void split_triangle(TriIdx t, VertIdx p);
+    void split_edge(EdgeIdx e, VertIdx p);
+    void flip_if_needed(TriIdx t1);  // t1 = (p, u, v), tests edge u -> v
+    /// Flips the edge of e (u -> v, apexes x and y) to x - y; returns the half-edge y -> x.
+    EdgeIdx flip(EdgeIdx e);
+    /// Lawson flips from the given edges until every unconstrained one is locally Delaunay.
+    void restore_delaunay(std::vector<std::pair<VertIdx, VertIdx>>& edges);
+    bool locally_delaunay(EdgeIdx e);
+
+    // ---- segments ----------------------------------------------------------------------
+    void prepare_segments();
+    void insert_piece(const Piece& piece);
+    /// The piece passes exactly through vertex v: recover its two parts instead (a warning).
+    void split_piece_at_vertex(const Piece& piece, VertIdx v) {
+        ++result_.counters.vertices_on_segments;
+        result_.warnings.push_back("segment " + segment_name(piece.segment) + " passes through " + vertex_name(v) +
+                                   "; split there");
+        work_.push_back({v, piece.b, piece.segment});
+        work_.push_back({piece.a, v, piece.segment});
+    }
+    void split_at_intersection(const Piece& piece, EdgeIdx h);
+    void recover_by_swaps(const Piece& piece, const std::vector<EdgeIdx>& crossed);
+    void recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx>& crossed);
+    void triangulate_pseudo_polygon(VertIdx u, VertIdx v, std::span<const VertIdx> chain,
+                                    std::vector<std::array<VertIdx, 3>>& out);
+    /// A conforming piece to check (present: mark it) or, when encroached, to split.
+    struct SplitTask {
+        Piece piece;
+        bool encroached;
+    };
+    void conform();
+    /// Splits a missing piece (concentric shell or midpoint), inserts the point, queues both
+    /// halves and every marked piece the insertion encroached.
+    void split_piece(const Piece& piece, std::vector<SplitTask>& tasks);
+    /// A vertex that a missing piece crosses exactly on it, or within rounding of its input
+    /// segment's line and between its ends (the nearest), or kNone.
+    VertIdx vertex_near_segment(const Piece& piece);
+    bool conforming_ = false;
+    VertIdx first_split_vertex_ = 0;           // vertices from here on are conforming splits
+    std::vector<std::uint32_t> segment_degree_;  // pieces at each earlier vertex
+    std::vector<Piece> encroached_;
+    bool on_ray(VertIdx a, VertIdx b, VertIdx x) const;
+    void guard();
+
+    // ---- domain --------------------------------------------------------------------------
+    std::vector<std::uint8_t> removed_;  // per triangle slot
+    std::vector<double> attribute_;      // per triangle slot
+    TriIdx locate_point(double x, double y);
+    /// Marks `value` on every triangle reached from start without crossing a constraint (or
+    /// into the infinite vertex); calls reached(t) for each one marked.
+    template <class Mark, class Reached>
+    void flood(TriIdx start, std::vector<Mark>& mark_value, Mark value, Reached reached);
+    void remove_exterior_and_holes();
+    void assign_regions();
+    void collect_output();
+    void collinear_output();
+
+    std::string vertex_name(VertIdx v) const {
+        return "vertex " + std::to_string(core_.input_index[v] + options_.first_index);
+    }
+    std::string segment_name(std::uint32_t s) const { return std::to_string(s + options_.first_index); }
+};
+
+// ---------------------------------------------------------------------------------------------
+
+void CdtBuilder::split_triangle(TriIdx t, VertIdx p) {
+    const VertIdx a = mesh_.tv[3 * t], b = mesh_.tv[3 * t + 1], c = mesh_.tv[3 * t + 2];
+    const EdgeIdx x = mesh_.twin[3 * t], y = mesh_.twin[3 * t + 1], z = mesh_.twin[3 * t + 2];
+    const std::uint32_t sx = segment_of_[3 * t], sy = segment_of_[3 * t + 1], sz = segment_of_[3 * t + 2];
+    const TriIdx t1 = t, t2 = new_triangle(), t3 = new_triangle();
+    set(t1, p, a, b);
+    set(t2, p, b, c);
+    set(t3, p, c, a);
+    link_outer(3 * t1 + 1, x, sx);
+    link_outer(3 * t2 + 1, y, sy);
+    link_outer(3 * t3 + 1, z, sz);
+    link_inner(3 * t1 + 2, 3 * t2);
+    link_inner(3 * t2 + 2, 3 * t3);
+    link_inner(3 * t3 + 2, 3 * t1);
+    flip_stack_.insert(flip_stack_.end(), {t1, t2, t3});
+    core_.last_triangle = t1;
+}
+
+void CdtBuilder::split_edge(EdgeIdx e, VertIdx p) {
+    const EdgeIdx f = mesh_.twin[e];
+    const TriIdx t = triangle_of(e), u = triangle_of(f);
+    const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
+    const VertIdx c = apex(e), d = apex(f);
+    const EdgeIdx bc = mesh_.twin[next_edge(e)], ca = mesh_.twin[prev_edge(e)];
+    const EdgeIdx ad = mesh_.twin[next_edge(f)], db = mesh_.twin[prev_edge(f)];
+    const std::uint32_t sbc = segment_of_[next_edge(e)], sca = segment_of_[prev_edge(e)];
+    const std::uint32_t sad = segment_of_[next_edge(f)], sdb = segment_of_[prev_edge(f)];
+    const std::uint32_t split = segment_of_[e];  // both halves of a split segment keep it
+    const TriIdx t1 = t, t2 = u, t3 = new_triangle(), t4 = new_triangle();
+    set(t1, p, b, c);
+    set(t2, p, c, a);
+    set(t3, p, a, d);
+    set(t4, p, d, b);
+    link_outer(3 * t1 + 1, bc, sbc);
+    link_outer(3 * t2 + 1, ca, sca);
+    link_outer(3 * t3 + 1, ad, sad);
+    link_outer(3 * t4 + 1, db, sdb);
+    link_inner(3 * t1 + 2, 3 * t2);
+    link_inner(3 * t2 + 2, 3 * t3, split);  // a - p
+    link_inner(3 * t3 + 2, 3 * t4);
+    link_inner(3 * t4 + 2, 3 * t1, split);  // b - p
+    flip_stack_.insert(flip_stack_.end(), {t1, t2, t3, t4});
+    core_.last_triangle = t1;
+}
+
+void CdtBuilder::insert_vertex(VertIdx p, TriIdx t) {
+    flip_stack_.clear();
+    int on_edge = -1;
+    if (!mesh_.is_infinite(t)) {
+        for (int k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * t + static_cast<unsigned>(k);
+            if (core_.orient(mesh_.origin(e), mesh_.destination(e), p) == Sign::Zero) on_edge = k;
+        }
+    }
+    if (on_edge < 0) {
+        split_triangle(t, p);
+    } else {
+        split_edge(3 * t + static_cast<unsigned>(on_edge), p);
+    }
+    while (!flip_stack_.empty()) {
+        const TriIdx t1 = flip_stack_.back();
+        flip_stack_.pop_back();
+        flip_if_needed(t1);
+    }
+}
+
+void CdtBuilder::flip_if_needed(TriIdx t1) {
+    const EdgeIdx e = 3 * t1 + 1;
+    const EdgeIdx f = mesh_.twin[e];
+    const VertIdx q = apex(f);
+    if (segment_of_[e] != kNone) {
+        // Conforming: a marked piece the new vertex makes not locally Delaunay is split later.
+        if (conforming_ && q != kInfinite && !mesh_.is_infinite(t1) && core_.conflict(t1, q)) {
+            encroached_.push_back({mesh_.tv[3 * t1 + 1], mesh_.tv[3 * t1 + 2], segment_of_[e]});
+        }
+        return;
+    }
+    if (q == kInfinite || !core_.conflict(t1, q)) return;
+    ++result_.counters.delaunay_flips;
+    const TriIdx t2 = triangle_of(f);
+    const VertIdx p = mesh_.tv[3 * t1], u = mesh_.tv[3 * t1 + 1], v = mesh_.tv[3 * t1 + 2];
+    const EdgeIdx vp = mesh_.twin[3 * t1 + 2];
+    const std::uint32_t svp = segment_of_[3 * t1 + 2];
+    const EdgeIdx uq = mesh_.twin[next_edge(f)], qv = mesh_.twin[prev_edge(f)];
+    const std::uint32_t suq = segment_of_[next_edge(f)], sqv = segment_of_[prev_edge(f)];
+    set(t1, p, u, q);
+    set(t2, p, q, v);
+    link_outer(3 * t1 + 1, uq, suq);
+    link_outer(3 * t2 + 1, qv, sqv);
+    link_outer(3 * t2 + 2, vp, svp);
+    link_inner(3 * t1 + 2, 3 * t2);
+    flip_stack_.push_back(t1);
+    flip_stack_.push_back(t2);
+}
+
+EdgeIdx CdtBuilder::flip(EdgeIdx e) {
+    const EdgeIdx f = mesh_.twin[e];
+    const TriIdx t1 = triangle_of(e), t2 = triangle_of(f);
+    const VertIdx u = mesh_.origin(e), v = mesh_.destination(e), x = apex(e), y = apex(f);
+    const EdgeIdx vx = mesh_.twin[next_edge(e)], xu = mesh_.twin[prev_edge(e)];
+    const EdgeIdx uy = mesh_.twin[next_edge(f)], yv = mesh_.twin[prev_edge(f)];
+    const std::uint32_t svx = segment_of_[next_edge(e)], sxu = segment_of_[prev_edge(e)];
+    const std::uint32_t suy = segment_of_[next_edge(f)], syv = segment_of_[prev_edge(f)];
+    // Quadrilateral u, y, v, x counter-clockwise: (x, u, y) and (y, v, x).
+    set(t1, x, u, y);
+    set(t2, y, v, x);
+    link_outer(3 * t1, xu, sxu);
+    link_outer(3 * t1 + 1, uy, suy);
+    link_outer(3 * t2, yv, syv);
+    link_outer(3 * t2 + 1, vx, svx);
+    link_inner(3 * t1 + 2, 3 * t2 + 2);
+    return 3 * t1 + 2;
+}
+
+bool CdtBuilder::locally_delaunay(EdgeIdx e) {
+    const EdgeIdx f = mesh_.twin[e];
+    const TriIdx t = triangle_of(e);
+    if (mesh_.is_infinite(t) || mesh_.is_infinite(triangle_of(f))) return true;  // hull: fixed
+    return !core_.conflict(t, apex(f));
+}
+
+void CdtBuilder::restore_delaunay(std::vector<std::pair<VertIdx, VertIdx>>& edges) {
+    while (!edges.empty()) {
+        const auto [u, v] = edges.back();
+        edges.pop_back();
+        const EdgeIdx e = find_edge(u, v);
+        if (e == kNone || segment_of_[e] != kNone || locally_delaunay(e)) continue;
+        ++result_.counters.delaunay_flips;
+        const VertIdx x = apex(e), y = apex(mesh_.twin[e]);
+        flip(e);
+        edges.insert(edges.end(), {{x, u}, {u, y}, {y, v}, {v, x}});
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+
+bool CdtBuilder::on_ray(VertIdx a, VertIdx b, VertIdx x) const {
+    // a, b, x collinear: is x on the side of a where b is? Exact coordinate comparisons along
+    // a coordinate in which a and b differ.
+    const double* pa = mesh_.point(a);
+    const double* pb = mesh_.point(b);
+    const double* px = mesh_.point(x);
+    const int k = pa[0] != pb[0] ? 0 : 1;
+    return pb[k] > pa[k] ? px[k] > pa[k] : px[k] < pa[k];
+}
+
+void CdtBuilder::guard() {
+    // Every legitimate step is paid for by an input segment, a vertex or a split; a run that
+    // exceeds this budget is looping on rounded intersections: report instead of hanging.
+    const Cdt2Counters& c = result_.counters;
+    const std::uint64_t budget =
+        64 * (c.segments + c.points + c.intersections + c.vertices_on_segments + c.conforming_splits) + 100000;
+    if (++work_done_ > budget) {
+        throw GeometryError("constrained_delaunay_2d: segment recovery did not converge after " +
+                            std::to_string(work_done_) + " steps (please report the input)");
+    }
+}
+
+void CdtBuilder::insert_piece(const Piece& piece) {
+    const VertIdx a = piece.a, b = piece.b;
+    if (a == b) return;
+    guard();
+    // The star of a: the edge a -> b, a vertex on the segment, or the triangle whose angle at a
+    // the segment enters.
+    EdgeIdx entry = kNone;
+    {
+        const EdgeIdx first = vertex_edge_[a];
+        EdgeIdx e = first;
+        do {
+            const VertIdx x = mesh_.destination(e), y = apex(e);
+            if (x == b) {
+                mark(e, piece.segment);
+                return;
+            }
+            if (x != kInfinite) {
+                // Every neighbour x is tested, also when a -> x borders the infinite vertex
+                // (a segment along the hull through a hull vertex).
+                const Sign sx = core_.orient(a, b, x);
+                if (sx == Sign::Zero && on_ray(a, b, x)) {
+                    split_piece_at_vertex(piece, x);
+                    return;
+                }
+                if (y != kInfinite && sx == Sign::Negative && entry == kNone &&
+                    core_.orient(a, b, y) == Sign::Positive) {
+                    entry = next_edge(e);
+                }
+            }
+            e = mesh_.twin[prev_edge(e)];
+        } while (e != first);
+    }
+    EM_ASSERT(entry != kNone);
+    // Walk to b through the crossed edges.
+    std::vector<EdgeIdx> crossed;
+    EdgeIdx h = entry;
+    for (;;) {
+        if (segment_of_[h] != kNone) {
+            split_at_intersection(piece, h);
+            return;
+        }
+        crossed.push_back(h);
+        const EdgeIdx f = mesh_.twin[h];
+        const VertIdx w = apex(f);
+        if (w == b) break;
+        EM_ASSERT(w != kInfinite);
+        const Sign sw = core_.orient(a, b, w);
+        ++result_.counters.walk_steps;
+        if (sw == Sign::Zero) {
+            split_piece_at_vertex(piece, w);
+            return;
+        }
+        h = sw == Sign::Positive ? next_edge(f) : prev_edge(f);
+    }
+    result_.counters.crossed_edges += crossed.size();
+    if (options_.recovery == SegmentRecovery::Cavity) {
+        recover_by_cavity(piece, crossed);
+    } else {
+        recover_by_swaps(piece, crossed);
+    }
+}
+
+void CdtBuilder::split_at_intersection(const Piece& piece, EdgeIdx h) {
+    const VertIdx a = piece.a, b = piece.b;
+    const VertIdx u = mesh_.origin(h), v = mesh_.destination(h);
+    const std::uint32_t other = segment_of_[h];
+    const auto p = predicates::segment_intersection(mesh_.point(a), mesh_.point(b), mesh_.point(u),
+                                                    mesh_.point(v));
+    // The rounded point may equal a vertex (then both segments bend through it).
+    const VertIdx candidate = add_vertex(p[0], p[1]);
+    core_.last_triangle = triangle_of(h);
+    const TriIdx t = core_.walk_to(candidate);
+    VertIdx at = candidate;
+    if (!mesh_.is_infinite(t)) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const VertIdx w = mesh_.tv[3 * t + k];
+            if (core_.same_point(w, candidate)) at = w;
+        }
+    }
+    segment_of_[h] = segment_of_[mesh_.twin[h]] = kNone;
+    if (at != candidate) {
+        remove_last_vertex();
+        ++result_.counters.vertices_on_segments;
+        result_.warnings.push_back("segments " + segment_name(piece.segment) + " and " +
+                                   segment_name(other) + " cross at " + vertex_name(at) +
+                                   "; both split there");
+    } else {
+        const std::uint64_t segments = result_.counters.segments;
+        if (++result_.counters.intersections > segments * (segments + 1) / 2 + 1000) {
+            throw GeometryError("constrained_delaunay_2d: more segment intersections than pairs of "
+                                "segments; recovery is looping (please report the input)");
+        }
+        insert_vertex(candidate, t);
+        result_.warnings.push_back("segments " + segment_name(piece.segment) + " and " + segment_name(other) +
+                                   " cross; split at new vertex " +
+                                   std::to_string(core_.input_index[candidate] + options_.first_index) + " (" +
+                                   number_text(p[0]) + ", " + number_text(p[1]) + ")");
+    }
+    // u - v, no longer constrained, may not be locally Delaunay (the new vertex need not be
+    // next to it): restore before recovering the four pieces.
+    std::vector<std::pair<VertIdx, VertIdx>> released{{u, v}};
+    restore_delaunay(released);
+    work_.push_back({u, at, other});
+    work_.push_back({at, v, other});
+    work_.push_back({at, b, piece.segment});
+    work_.push_back({a, at, piece.segment});
+}
+
+void CdtBuilder::recover_by_swaps(const Piece& piece, const std::vector<EdgeIdx>& crossed) {
+    const VertIdx a = piece.a, b = piece.b;
+    std::deque<std::pair<VertIdx, VertIdx>> pending;
+    for (const EdgeIdx h : crossed) pending.emplace_back(mesh_.origin(h), mesh_.destination(h));
+    std::vector<std::pair<VertIdx, VertIdx>> created;
+    std::uint64_t stalled = 0;
+    while (!pending.empty()) {
+        const auto [u, v] = pending.front();
+        pending.pop_front();
+        const EdgeIdx e = find_edge(u, v);
+        EM_ASSERT(e != kNone);
+        const VertIdx x = apex(e), y = apex(mesh_.twin[e]);
+        // Strictly convex quadrilateral: the other diagonal x - y crosses u - v.
+        const Sign su = core_.orient(x, y, u), sv = core_.orient(x, y, v);
+        if (su == Sign::Zero || sv == Sign::Zero || su == sv) {
+            pending.emplace_back(u, v);
+            // Sloan's lemma: among the crossed edges one is always flippable.
+            EM_ASSERT(++stalled <= pending.size() + 1);
+            continue;
+        }
+        stalled = 0;
+        flip(e);
+        ++result_.counters.recovery_flips;
+        const Sign sx = x == a || x == b ? Sign::Zero : core_.orient(a, b, x);
+        const Sign sy = y == a || y == b ? Sign::Zero : core_.orient(a, b, y);
+        if (sx != Sign::Zero && sy != Sign::Zero && sx != sy) {
+            pending.emplace_back(x, y);
+        } else {
+            created.emplace_back(x, y);
+        }
+    }
+    const EdgeIdx ab = find_edge(a, b);
+    EM_ASSERT(ab != kNone);
+    mark(ab, piece.segment);
+    restore_delaunay(created);
+}
+
+void CdtBuilder::triangulate_pseudo_polygon(VertIdx u, VertIdx v, std::span<const VertIdx> chain,
+                                            std::vector<std::array<VertIdx, 3>>& out) {
+    // Polygon u, v, chain[0], ..., chain[k-1], left of u -> v. The apex whose circle through
+    // u and v holds no other chain vertex: one pass suffices, since every circle through u, v
+    // met later has a smaller cap on this side of the line.
+    if (chain.empty()) return;
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < chain.size(); ++i) {
+        if (core_.incircle(u, v, chain[best], chain[i]) == Sign::Positive) best = i;
+    }
+    const VertIdx c = chain[best];
+    out.push_back({u, v, c});
+    triangulate_pseudo_polygon(c, v, chain.subspan(0, best), out);
+    triangulate_pseudo_polygon(u, c, chain.subspan(best + 1), out);
+}
+
+void CdtBuilder::recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx>& crossed) {
+    const VertIdx a = piece.a, b = piece.b;
+    // The crossed triangles, the chains left (upper) and right (lower) of a -> b, and the
+    // cavity's boundary half-edges seen from outside, keyed by their (origin, destination).
+    std::vector<TriIdx> cavity;
+    cavity.push_back(triangle_of(crossed.front()));
+    for (const EdgeIdx h : crossed) cavity.push_back(triangle_of(mesh_.twin[h]));
+    std::vector<VertIdx> upper, lower;  // from a's side to b's side
+    for (const EdgeIdx h : crossed) {
+        const VertIdx x = mesh_.origin(h), y = mesh_.destination(h);
+        if (lower.empty() || lower.back() != x) lower.push_back(x);
+        if (upper.empty() || upper.back() != y) upper.push_back(y);
+    }
+    std::unordered_map<std::uint64_t, std::pair<EdgeIdx, std::uint32_t>> boundary;
+    auto key = [](VertIdx p, VertIdx q) { return (std::uint64_t{p} << 32) | q; };
+    if (in_cavity_.size() < mesh_.triangle_slots()) in_cavity_.resize(mesh_.triangle_slots(), 0);
+    for (const TriIdx t : cavity) in_cavity_[t] = 1;
+    for (const TriIdx t : cavity) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx g = 3 * t + k;
+            if (in_cavity_[triangle_of(mesh_.twin[g])]) continue;
+            boundary[key(mesh_.origin(g), mesh_.destination(g))] = {mesh_.twin[g], segment_of_[g]};
+        }
+    }
+    for (const TriIdx t : cavity) in_cavity_[t] = 0;
+    result_.counters.cavity_triangles += cavity.size();
+    std::vector<std::array<VertIdx, 3>> triangles;
+    std::vector<VertIdx> chain(upper.rbegin(), upper.rend());  // left of a -> b, from b back to a
+    triangulate_pseudo_polygon(a, b, chain, triangles);
+    chain.assign(lower.begin(), lower.end());  // left of b -> a, from a back to b
+    triangulate_pseudo_polygon(b, a, chain, triangles);
+    EM_ASSERT(triangles.size() == cavity.size());
+    for (const TriIdx t : cavity) mesh_.kill_triangle(t);
+    std::unordered_map<std::uint64_t, EdgeIdx> open;  // new half-edges awaiting their twin
+    for (const auto& tri : triangles) {
+        const TriIdx t = new_triangle();
+        set(t, tri[0], tri[1], tri[2]);
+        for (unsigned k = 0; k < 3; ++k) {
+            const VertIdx p = tri[k], q = tri[(k + 1) % 3];
+            const EdgeIdx e = 3 * t + k;
+            const auto outer = boundary.find(key(p, q));
+            if (outer != boundary.end()) {
+                link_outer(e, outer->second.first, outer->second.second);
+                continue;
+            }
+            const auto twin = open.find(key(q, p));
+            if (twin != open.end()) {
+                link_inner(e, twin->second);
+                open.erase(twin);
+            } else {
+                open.emplace(key(p, q), e);
+            }
+        }
+    }
+    EM_ASSERT(open.empty());
+    mark(find_edge(a, b), piece.segment);
+}
+
+void CdtBuilder::prepare_segments() {
+    const std::size_t count = pslg_.segments.size() / 2;
+    const std::uint32_t n = input_count_;
+    segment_ends_.assign(count, {kNone, kNone});
+    // Caller index -> mesh vertex, through duplicate merging.
+    std::vector<VertIdx> mesh_of(n);
+    for (VertIdx v = 0; v < n; ++v) mesh_of[core_.input_index[v]] = v;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
+    keyed.reserve(count);
+    for (std::size_t s = 0; s < count; ++s) {
+        const VertIdx i = pslg_.segments[2 * s], j = pslg_.segments[2 * s + 1];
+        const VertIdx a = mesh_of[core_.merged_into[i]], b = mesh_of[core_.merged_into[j]];
+        if (a == b) {
+            ++result_.counters.dropped_segments;
+            result_.warnings.push_back("segment " + segment_name(static_cast<std::uint32_t>(s)) + " has zero length (vertices " +
+                                       std::to_string(i + options_.first_index) + " and " +
+                                       std::to_string(j + options_.first_index) + "); ignored");
+            continue;
+        }
+        keyed.emplace_back((std::uint64_t{std::min(a, b)} << 32) | std::max(a, b), static_cast<std::uint32_t>(s));
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t k = 0; k < keyed.size(); ++k) {
+        const std::uint32_t s = keyed[k].second;
+        if (k > 0 && keyed[k - 1].first == keyed[k].first) {
+            ++result_.counters.dropped_segments;
+            result_.warnings.push_back("segment " + segment_name(s) + " repeats segment " + segment_name(keyed[k - 1].second) + "; ignored");
+            continue;
+        }
+        const VertIdx i = pslg_.segments[2 * s], j = pslg_.segments[2 * s + 1];
+        work_.push_back({mesh_of[core_.merged_into[i]], mesh_of[core_.merged_into[j]], s});
+        segment_ends_[s] = {work_.back().a, work_.back().b};
+    }
+    // Process in input order (the work list is a stack).
+    std::sort(work_.begin(), work_.end(), [](const Piece& p, const Piece& q) { return p.segment > q.segment; });
+}
+
+void CdtBuilder::conform() {
+    // 1. Pieces as the constrained triangulation found them (crossings and vertices on
+    //    segments already split); 2. forget the constraints and make the triangulation
+    //    Delaunay; 3. split missing pieces at their midpoints until all are edges.
+    std::vector<Piece> pieces;
+    std::vector<std::pair<VertIdx, VertIdx>> edges;
+    for (TriIdx t = 0; t < mesh_.triangle_slots(); ++t) {
+        if (mesh_.is_dead(t)) continue;
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * t + k;
+            const VertIdx p = mesh_.origin(e), q = mesh_.destination(e);
+            if (p == kInfinite || q == kInfinite || p > q) continue;
+            edges.emplace_back(p, q);
+            if (segment_of_[e] != kNone) pieces.push_back({p, q, segment_of_[e]});
+        }
+    }
+    std::fill(segment_of_.begin(), segment_of_.end(), kNone);
+    restore_delaunay(edges);
+    // Every present piece is marked; Lawson flips never remove a marked edge but report it when
+    // a new vertex makes it not locally Delaunay (flip_if_needed), and such a piece is split
+    // instead. When the stack is empty, every unmarked edge is locally Delaunay by the flips and
+    // every marked one by its last check: the triangulation is Delaunay and holds every piece.
+    conforming_ = true;
+    first_split_vertex_ = mesh_.vertex_count();
+    segment_degree_.assign(first_split_vertex_, 0);
+    for (const Piece& piece : pieces) {
+        ++segment_degree_[piece.a];
+        ++segment_degree_[piece.b];
+    }
+    std::vector<SplitTask> tasks;
+    tasks.reserve(pieces.size());
+    for (const Piece& piece : pieces) tasks.push_back({piece, false});
+    for (;;) {
+        while (!tasks.empty()) {
+            const SplitTask task = tasks.back();
+            tasks.pop_back();
+            guard();
+            const Piece& piece = task.piece;
+            const EdgeIdx present = find_edge(piece.a, piece.b);
+            if (present != kNone) {
+                if (!task.encroached) {
+                    mark(present, piece.segment);
+                    continue;
+                }
+                if (locally_delaunay(present)) continue;
+                // Released and flipped (it is not locally Delaunay), then split like a missing piece.
+                segment_of_[present] = segment_of_[mesh_.twin[present]] = kNone;
+                std::vector<std::pair<VertIdx, VertIdx>> edge{{piece.a, piece.b}};
+                restore_delaunay(edge);
+            }
+            split_piece(piece, tasks);
+        }
+        // Safety net (normally finds nothing): every edge is checked once more; a marked one not
+        // locally Delaunay is split, an unmarked one flipped.
+        std::vector<std::pair<VertIdx, VertIdx>> unmarked;
+        for (EdgeIdx e = 0; e < segment_of_.size(); ++e) {
+            if (mesh_.is_dead(triangle_of(e))) continue;
+            const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
+            if (a == kInfinite || b == kInfinite || a > b || locally_delaunay(e)) continue;
+            if (segment_of_[e] != kNone) {
+                tasks.push_back({{a, b, segment_of_[e]}, true});
+            } else {
+                unmarked.emplace_back(a, b);
+            }
+        }
+        ++result_.counters.conforming_passes;
+        if (tasks.empty() && unmarked.empty()) break;
+        restore_delaunay(unmarked);
+    }
+    conforming_ = false;
+}
+
+VertIdx CdtBuilder::vertex_near_segment(const Piece& piece) {
+    const VertIdx a = piece.a, b = piece.b;
+    // The original segment's line, in long double (as check_constrained_delaunay_2d measures).
+    const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
+    const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
+    const long double dx = static_cast<long double>(s1[0]) - s0[0], dy = static_cast<long double>(s1[1]) - s0[1];
+    const long double length = std::sqrt(dx * dx + dy * dy);
+    const double magnitude = std::max({std::fabs(s0[0]), std::fabs(s0[1]), std::fabs(s1[0]), std::fabs(s1[1])});
+    const long double tolerance = std::ldexp(static_cast<long double>(magnitude), -46);
+    auto along = [&](VertIdx v) {
+        return (static_cast<long double>(mesh_.point(v)[0]) - s0[0]) * dx +
+               (static_cast<long double>(mesh_.point(v)[1]) - s0[1]) * dy;
+    };
+    const long double lo = std::min(along(a), along(b)), hi = std::max(along(a), along(b));
+    VertIdx best = kNone;
+    long double best_distance = tolerance;
+    auto consider = [&](VertIdx v) {
+        if (v == kInfinite || v == a || v == b) return;
+        const long double t = along(v);
+        if (!(t > lo && t < hi)) return;
+        const long double cross = (static_cast<long double>(mesh_.point(v)[0]) - s0[0]) * dy -
+                                  (static_cast<long double>(mesh_.point(v)[1]) - s0[1]) * dx;
+        const long double distance = std::fabs(cross / length);
+        if (distance <= best_distance) {
+            best_distance = distance;
+            best = v;
+        }
+    };
+    // The edges the piece crosses, as insert_piece walks them; a vertex exactly on the piece
+    // ends the walk (it is the answer).
+    EdgeIdx entry = kNone;
+    const EdgeIdx first = vertex_edge_[a];
+    EdgeIdx e = first;
+    do {
+        const VertIdx x = mesh_.destination(e), y = apex(e);
+        if (x != kInfinite) {
+            const Sign sx = core_.orient(a, b, x);
+            if (sx == Sign::Zero && on_ray(a, b, x)) return x;
+            if (y != kInfinite && sx == Sign::Negative && entry == kNone && core_.orient(a, b, y) == Sign::Positive) {
+                entry = next_edge(e);
+            }
+        }
+        e = mesh_.twin[prev_edge(e)];
+    } while (e != first);
+    if (entry == kNone) return kNone;  // not expected: the piece would be present
+    consider(mesh_.origin(entry));
+    consider(mesh_.destination(entry));
+    for (EdgeIdx h = entry;;) {
+        const EdgeIdx f = mesh_.twin[h];
+        const VertIdx w = apex(f);
+        if (w == b || w == kInfinite) break;
+        ++result_.counters.walk_steps;
+        const Sign sw = core_.orient(a, b, w);
+        if (sw == Sign::Zero) return w;
+        consider(w);
+        h = sw == Sign::Positive ? next_edge(f) : prev_edge(f);
+    }
+    return best;
+}
+
+void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) {
+    // A vertex the piece crosses within rounding of its segment (2^-46 of the segment's
+    // coordinates; the checker allows 2^-40) is where the piece bends: (6, 8) on a grid line
+    // whose other end is a rounded crossing at (7 - 2^-50, 7) in grid-lines seed 5, where new
+    // points would home in on it until no double is left between.
+    const VertIdx near = vertex_near_segment(piece);
+    if (near != kNone) {
+        ++result_.counters.conforming_bends;
+        tasks.push_back({{near, piece.b, piece.segment}, false});
+        tasks.push_back({{piece.a, near, piece.segment}, false});
+        return;
+    }
+    const double* pa = mesh_.point(piece.a);
+    const double* pb = mesh_.point(piece.b);
+    double m[2];
+    // Concentric shells [Ruppert95 §4; Shewchuk97 §3.4]: a piece with an end at a corner (an
+    // input vertex where two or more pieces meet) is split at the power of two nearest half its
+    // length, measured from that corner, so pieces of segments meeting there at a small angle
+    // end on common circles about it and stop encroaching on each other (fuzz input
+    // timeout-073fed0d: two segments at 1e-312 radians, 1,686 splits instead of over 100,000).
+    // When both ends are corners, the one with more pieces (tiny PSLG 8/20404630: an ulp-narrow
+    // angle at (1,1)); on a tie, at an intersection vertex or a split, and where the length is
+    // out of the comfortable double range, the correctly rounded midpoint, whose error is
+    // smaller (segments a few ulps apart: ReleasedConstraintIsMadeDelaunayAgain).
+    auto corner = [&](VertIdx v) { return v < input_count_ ? segment_degree_[v] : 0u; };
+    const std::uint32_t ca = corner(piece.a) >= 2 ? corner(piece.a) : 0, cb = corner(piece.b) >= 2 ? corner(piece.b) : 0;
+    const int apex_end = ca == cb ? -1 : (ca > cb ? 0 : 1);  // 0: piece.a, 1: piece.b
+    bool shell = false;
+    if (apex_end >= 0) {
+        const double* apex = apex_end == 0 ? pa : pb;
+        const double* far = apex_end == 0 ? pb : pa;
+        const double dx = far[0] - apex[0], dy = far[1] - apex[1];
+        const double length = std::hypot(dx, dy);
+        if (std::isfinite(dx) && std::isfinite(dy) && length > 0x1p-900 && length < 0x1p900) {
+            const double ratio = std::ldexp(1.0, static_cast<int>(std::lround(std::log2(length / 2)))) / length;
+            m[0] = apex[0] + dx * ratio;
+            m[1] = apex[1] + dy * ratio;
+            shell = true;
+        }
+    }
+    if (!shell) {
+        for (int k = 0; k < 2; ++k) {
+            // Halving first is exact unless the halves are subnormal; then sum first (which
+            // cannot overflow at such magnitudes).
+            const bool tiny = std::fabs(pa[k]) < 0x1p-1000 || std::fabs(pb[k]) < 0x1p-1000;
+            m[k] = tiny ? (pa[k] + pb[k]) * 0.5 : pa[k] * 0.5 + pb[k] * 0.5;
+        }
+    }
+    // Walk from the end nearer the split point (a corner can have a large fan of thin
+    // triangles: 60x fewer walk steps on fuzz input timeout-073fed0d than from the first end).
+    const double da = std::fabs(m[0] - pa[0]) + std::fabs(m[1] - pa[1]);
+    const double db = std::fabs(m[0] - pb[0]) + std::fabs(m[1] - pb[1]);
+    core_.last_triangle = triangle_of(vertex_edge_[da < db ? piece.a : piece.b]);
+    const VertIdx mid = add_vertex(m[0], m[1]);
+    const TriIdx t = core_.walk_to(mid);
+    VertIdx at = mid;
+    if (!mesh_.is_infinite(t)) {
+        for (unsigned k = 0; k < 3; ++k) {
+            if (core_.same_point(mesh_.tv[3 * t + k], mid)) at = mesh_.tv[3 * t + k];
+        }
+    }
+    if (at != mid) {
+        remove_last_vertex();
+        if (at == piece.a || at == piece.b) {
+            throw GeometryError("conforming Delaunay: segment " + segment_name(piece.segment) +
+                                " has a piece too short to split (adjacent doubles)");
+        }
+    } else {
+        const Cdt2Counters& c = result_.counters;
+        if (++result_.counters.conforming_splits > 64 * (c.points + c.segments + c.intersections) + 100000) {
+            throw GeometryError("conforming Delaunay: more than " + std::to_string(c.conforming_splits - 1) +
+                                " splits; stopped (small input angles?)");
+        }
+        encroached_.clear();
+        insert_vertex(mid, t);
+        for (const Piece& hit : encroached_) tasks.push_back({hit, true});
+    }
+    tasks.push_back({{at, piece.b, piece.segment}, false});
+    tasks.push_back({{piece.a, at, piece.segment}, false});
+}
+
+// ---------------------------------------------------------------------------------------------
+
+TriIdx CdtBuilder::locate_point(double x, double y) {
+    const VertIdx probe = add_vertex(x, y);
+    const TriIdx t = core_.walk_to(probe);
+    remove_last_vertex();
+    return t;
+}
+
+template <class Mark, class Reached>
+void CdtBuilder::flood(TriIdx start, std::vector<Mark>& mark_value, Mark value, Reached reached) {
+    std::vector<TriIdx> stack{start};
+    mark_value[start] = value;
+    reached(start);
+    while (!stack.empty()) {
+        const TriIdx t = stack.back();
+        stack.pop_back();
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * t + k;
+            if (segment_of_[e] != kNone) continue;
+            const TriIdx u = triangle_of(mesh_.twin[e]);
+            if (mark_value[u] == value || mesh_.is_infinite(u)) continue;
+            mark_value[u] = value;
+            reached(u);
+            stack.push_back(u);
+        }
+    }
+}
+
+void CdtBuilder::remove_exterior_and_holes() {
+    removed_.assign(mesh_.triangle_slots(), 0);
+    const bool any_segment = std::any_of(segment_of_.begin(), segment_of_.end(),
+                                         [](std::uint32_t s) { return s != kNone; });
+    if (options_.remove_exterior && any_segment) {
+        for (TriIdx t = 0; t < mesh_.triangle_slots(); ++t) {
+            if (mesh_.is_dead(t) || !mesh_.is_infinite(t)) continue;
+            for (unsigned k = 0; k < 3; ++k) {
+                const EdgeIdx e = 3 * t + k;
+                if (mesh_.origin(e) == kInfinite || mesh_.destination(e) == kInfinite) continue;
+                const TriIdx inside = triangle_of(mesh_.twin[e]);
+                if (segment_of_[e] == kNone && !removed_[inside]) flood(inside, removed_, std::uint8_t{1}, [](TriIdx) {});
+            }
+        }
+    }
+    const std::size_t holes = pslg_.holes.size() / 2;
+    for (std::size_t h = 0; h < holes; ++h) {
+        const TriIdx t = locate_point(pslg_.holes[2 * h], pslg_.holes[2 * h + 1]);
+        if (mesh_.is_infinite(t)) {
+            result_.warnings.push_back("hole " + std::to_string(h + options_.first_index) + " lies outside the triangulation; ignored");
+            continue;
+        }
+        if (!removed_[t]) flood(t, removed_, std::uint8_t{1}, [](TriIdx) {});
+    }
+}
+
+void CdtBuilder::assign_regions() {
+    const std::size_t regions = pslg_.regions.size() / 4;
+    if (regions == 0) return;
+    attribute_.assign(mesh_.triangle_slots(), 0.0);
+    // One stamp per region (region number + 1): each flood costs its own triangles only.
+    std::vector<std::uint32_t> seen(mesh_.triangle_slots(), 0);
+    for (std::size_t r = 0; r < regions; ++r) {
+        const TriIdx t = locate_point(pslg_.regions[4 * r], pslg_.regions[4 * r + 1]);
+        if (mesh_.is_infinite(t) || removed_[t]) {
+            result_.warnings.push_back("region " + std::to_string(r + options_.first_index) + " lies outside the domain; ignored");
+            continue;
+        }
+        const double attribute = pslg_.regions[4 * r + 2];
+        flood(t, seen, static_cast<std::uint32_t>(r + 1), [&](TriIdx u) { attribute_[u] = attribute; });
+    }
+}
+
+void CdtBuilder::collect_output() {
+    // In place, as Delaunay2Core::take_result does: fresh output arrays would cost a page fault
+    // per 4 KiB, a third of the whole construction time at 10^6 points (perf, this machine).
+    const std::uint32_t slots = mesh_.triangle_slots();
+    const std::uint32_t vertices = mesh_.vertex_count();
+    // Caller numbering: inputs as given (duplicates reported as the smallest equal index),
+    // added vertices after the inputs in creation order (their input_index already).
+    result_.merged_into.resize(input_count_);
+    for (VertIdx i = 0; i < input_count_; ++i) result_.merged_into[i] = i;
+    for (VertIdx i = 0; i < input_count_; ++i) {
+        const VertIdx kept = core_.merged_into[i];
+        result_.merged_into[kept] = std::min(result_.merged_into[kept], i);
+    }
+    for (VertIdx i = 0; i < input_count_; ++i) result_.merged_into[i] = result_.merged_into[core_.merged_into[i]];
+    std::vector<VertIdx>& caller = core_.input_index;  // reused: mesh vertex -> output vertex
+    for (VertIdx v = 0; v < vertices; ++v) {
+        if (caller[v] < input_count_) caller[v] = result_.merged_into[caller[v]];
+    }
+    Triangulation2& out = result_.mesh;
+    out.xy.reserve(2 * std::size_t{vertices});
+    out.xy.assign(pslg_.xy.begin(), pslg_.xy.end());
+    out.xy.resize(2 * std::size_t{vertices});
+    for (VertIdx v = input_count_; v < vertices; ++v) {
+        out.xy[2 * std::size_t{caller[v]}] = mesh_.xy[2 * std::size_t{v}];
+        out.xy[2 * std::size_t{caller[v]} + 1] = mesh_.xy[2 * std::size_t{v} + 1];
+    }
+    mesh_.xy = {};
+    // Pieces: every constrained edge once, including those inside removed regions.
+    for (TriIdx t = 0; t < slots; ++t) {
+        if (mesh_.is_dead(t)) continue;
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * t + k;
+            if (segment_of_[e] == kNone) continue;
+            const VertIdx p = caller[mesh_.origin(e)], q = caller[mesh_.destination(e)];
+            if (p < q) {
+                result_.pieces.insert(result_.pieces.end(), {p, q});
+                result_.piece_segment.push_back(segment_of_[e]);
+            }
+        }
+    }
+    std::vector<TriIdx> index(slots, kNone);
+    TriIdx count = 0;
+    for (TriIdx t = 0; t < slots; ++t) {
+        if (mesh_.is_dead(t) || mesh_.is_infinite(t)) continue;
+        if (removed_[t]) {
+            ++result_.counters.removed_triangles;
+            continue;
+        }
+        index[t] = count++;
+    }
+    if (!attribute_.empty()) result_.triangle_attributes.resize(count);
+    out.constrained.resize(3 * std::size_t{count});
+    // Compaction: triangle t moves to index[t] <= t, so nothing unread is overwritten.
+    for (TriIdx t = 0; t < slots; ++t) {
+        const TriIdx o = index[t];
+        if (o == kNone) continue;
+        for (unsigned k = 0; k < 3; ++k) {
+            const VertIdx v = mesh_.tv[3 * t + k];
+            const EdgeIdx across = mesh_.twin[3 * t + k];
+            out.constrained[3 * o + k] = segment_of_[3 * t + k] != kNone ? 1 : 0;
+            mesh_.tv[3 * o + k] = caller[v];
+            mesh_.twin[3 * o + k] = index[triangle_of(across)];
+        }
+        if (!attribute_.empty()) result_.triangle_attributes[o] = attribute_[t];
+    }
+    mesh_.tv.resize(3 * std::size_t{count});
+    mesh_.twin.resize(3 * std::size_t{count});
+    out.triangles = std::move(mesh_.tv);
+    out.neighbors = std::move(mesh_.twin);
+}
+
+void CdtBuilder::collinear_output() {
+    // No triangle: every distinct point lies on one line. Pieces: each segment split at the
+    // vertices strictly inside it, found by sorting the distinct points along the line.
+    Delaunay2Result points = core_.collinear_result();
+    result_.merged_into = std::move(points.merged_into);
+    result_.mesh.xy.assign(pslg_.xy.begin(), pslg_.xy.end());
+    std::vector<VertIdx> order;
+    for (VertIdx i = 0; i < input_count_; ++i) {
+        if (result_.merged_into[i] == i) order.push_back(i);
+    }
+    const double* xy = pslg_.xy.data();
+    std::sort(order.begin(), order.end(), [xy](VertIdx p, VertIdx q) {
+        return xy[2 * p] < xy[2 * q] || (xy[2 * p] == xy[2 * q] && xy[2 * p + 1] < xy[2 * q + 1]);
+    });
+    std::vector<std::uint32_t> rank(input_count_);
+    for (std::uint32_t r = 0; r < order.size(); ++r) rank[order[r]] = r;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
+    for (std::size_t s = 0; s < pslg_.segments.size() / 2; ++s) {
+        std::uint32_t i = rank[result_.merged_into[pslg_.segments[2 * s]]];
+        std::uint32_t j = rank[result_.merged_into[pslg_.segments[2 * s + 1]]];
+        if (i == j) {
+            ++result_.counters.dropped_segments;
+            result_.warnings.push_back("segment " + segment_name(static_cast<std::uint32_t>(s)) + " has zero length; ignored");
+            continue;
+        }
+        if (i > j) std::swap(i, j);
+        for (std::uint32_t r = i; r < j; ++r) keyed.emplace_back((std::uint64_t{r} << 32) | (r + 1), s);
+        if (j > i + 1) ++result_.counters.vertices_on_segments;
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t k = 0; k < keyed.size(); ++k) {
+        if (k > 0 && keyed[k - 1].first == keyed[k].first) continue;
+        result_.pieces.push_back(order[keyed[k].first >> 32]);
+        result_.pieces.push_back(order[keyed[k].first & 0xFFFFFFFFu]);
+        result_.piece_segment.push_back(keyed[k].second);
+    }
+    result_.counters.points = input_count_;
+    result_.counters.duplicates = points.counters.duplicates;
+}
+
+Cdt2Result CdtBuilder::run() {
+    input_count_ = mesh_.vertex_count();
+    Cdt2Counters& c = result_.counters;
+    c.points = input_count_;
+    c.segments = pslg_.segments.size() / 2;
+    result_.input_vertex_count = input_count_;
+    vertex_edge_.assign(input_count_, kNone);
+    // The Delaunay triangulation first (no constraint yet: plain Green-Sibson, which keeps
+    // no per-edge state), then the constraint and vertex maps in one pass.
+    if (!detail::green_sibson_insert_all(core_)) {
+        collinear_output();
+        return std::move(result_);
+    }
+    segment_of_.reserve(mesh_.tv.capacity());
+    segment_of_.assign(mesh_.tv.size(), kNone);
+    for (TriIdx t = 0; t < mesh_.triangle_slots(); ++t) {
+        if (mesh_.is_dead(t)) continue;
+        for (unsigned k = 0; k < 3; ++k) {
+            const VertIdx v = mesh_.tv[3 * t + k];
+            if (v != kInfinite) vertex_edge_[v] = 3 * t + k;
+        }
+    }
+    prepare_segments();
+    while (!work_.empty()) {
+        const Piece piece = work_.back();
+        work_.pop_back();
+        insert_piece(piece);
+    }
+    if (options_.recovery == SegmentRecovery::Conforming) conform();
+    remove_exterior_and_holes();
+    assign_regions();
+    c.duplicates = core_.counters.duplicates;
+    c.orient_calls = core_.counters.orient_calls;
+    c.incircle_calls = core_.counters.incircle_calls;
+    c.delaunay_flips += core_.counters.flips;
+    c.walk_steps += core_.counters.walk_steps;
+    collect_output();
+    return std::move(result_);
+}
+
+}  // namespace
+
+Cdt2Result constrained_delaunay_2d(const Pslg& pslg, const Cdt2Options& options) {
+    validate_points_2d(pslg.xy);
+    const std::size_t n = pslg.xy.size() / 2;
+    if (pslg.segments.size() % 2 != 0) throw InputError("segments: odd number of endpoint indices");
+    for (std::size_t i = 0; i < pslg.segments.size(); ++i) {
+        if (pslg.segments[i] >= n) {
+            throw InputError("segment " + std::to_string(i / 2) + ": vertex " + std::to_string(pslg.segments[i]) +
+                             " does not exist (" + std::to_string(n) + " vertices)");
+        }
+    }
+    if (pslg.holes.size() % 2 != 0) throw InputError("holes: odd number of coordinates");
+    if (pslg.regions.size() % 4 != 0) throw InputError("regions: expected 4 numbers per region");
+    require_finite_items(pslg.holes, 2, "hole");
+    require_finite_items(pslg.regions, 4, "region");
+    CdtBuilder builder(pslg, options);
+    return builder.run();
+}
+
+}  // namespace exactmesh::triangulation
