@@ -3,6 +3,7 @@
 #include "triangulation/tanemura_merriam_2d.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -73,8 +74,12 @@ struct GridLayout {
     double scale = 1, min_x = 0, min_y = 0, max_x = 0, max_y = 0, cell = 1, inv_cell = 1;
     std::uint32_t columns = 1, rows = 1;
 
-    std::uint32_t column(double scaled_x) const { return clamp_index((scaled_x - min_x) * inv_cell, columns); }
-    std::uint32_t row(double scaled_y) const { return clamp_index((scaled_y - min_y) * inv_cell, rows); }
+    std::uint32_t column(double scaled_x) const {
+        return clamp_index((scaled_x - min_x) * inv_cell, columns);
+    }
+    std::uint32_t row(double scaled_y) const {
+        return clamp_index((scaled_y - min_y) * inv_cell, rows);
+    }
     std::size_t cell_count() const { return static_cast<std::size_t>(columns) * rows; }
     std::size_t cell_of(const double* p) const {
         return static_cast<std::size_t>(row(p[1] * scale)) * columns + column(p[0] * scale);
@@ -107,8 +112,8 @@ GridLayout grid_layout(std::span<const double> xy) {
     }
     if (n == 0) lo_x = lo_y = hi_x = hi_y = 0;  // no point: a one-cell grid, no NaN extents
     GridLayout g;
-    const double magnitude = std::max({std::fabs(lo_x), std::fabs(hi_x), std::fabs(lo_y),
-                                       std::fabs(hi_y), 1e-300});
+    const double magnitude =
+        std::max({std::fabs(lo_x), std::fabs(hi_x), std::fabs(lo_y), std::fabs(hi_y), 1e-300});
     int exponent = 0;
     std::frexp(magnitude, &exponent);
     g.scale = std::ldexp(1.0, -exponent);  // |scaled| < 1
@@ -144,10 +149,11 @@ GridLayout grid_layout(std::span<const double> xy) {
 }
 
 /// The points grouped by grid cell, cells in row-major order, each cell's points by increasing
-/// caller index; duplicates removed. Row-major suits the sweep of the front (see RowQueue): the
-/// points it meets lie in a band of rows, a few contiguous ranges of memory.
+/// caller index (until kd_forest reorders the crowded cells); duplicates removed. Row-major
+/// suits the sweep of the front (see RowQueue): the points it meets lie in a band of rows, a
+/// few contiguous ranges of memory.
 struct CellOrder {
-    std::vector<VertIdx> order;  ///< mesh vertex -> caller's index: distinct points, then duplicates
+    std::vector<VertIdx> order;  ///< mesh vertex -> caller's index: distinct, then duplicates
     std::uint32_t distinct = 0;  ///< the first `distinct` mesh vertices are distinct points
     std::vector<std::pair<VertIdx, VertIdx>> duplicates;  ///< (caller's index, the one it equals)
     std::vector<std::uint32_t> start;  ///< cell c holds mesh vertices start[c] .. start[c + 1] - 1
@@ -240,13 +246,92 @@ struct PointGrid {
     bool empty(std::size_t c) const { return start[c] == start[c + 1]; }
 };
 
+/// A cell holding more points than this gets a kd-tree. A cluster far smaller than the cells
+/// (a dense spot in a wide bounding box, or points spread over many magnitudes, which all but
+/// the largest collapse into the cells around zero) would otherwise put all of its points in
+/// every search near it: O(k^2) for k points. About two points per cell on uniform input
+/// (Poisson: more than 32 has probability about 1e-25), so uniform input never builds one.
+constexpr std::uint32_t kCrowdedCell = 32;
+/// Points per kd-tree leaf.
+constexpr std::uint32_t kLeafSize = 8;
+
+/// kd-trees over the crowded cells, all nodes in one array. A node covers the mesh vertices
+/// first .. last - 1 and holds their bounding box exactly (input doubles, never scaled, so
+/// any magnitude is represented); an inner node's children are node + 1 (the points below
+/// `split` along `axis`, by the median) and `right`, a leaf has right = kNone. Depth is at
+/// most log2(k / kLeafSize) + 1 whatever the distribution.
+struct KdForest {
+    struct Node {
+        double lo_x, lo_y, hi_x, hi_y;
+        double split;
+        std::uint32_t first, last, right, axis;
+    };
+    std::vector<Node> nodes;
+    std::vector<std::pair<std::size_t, std::uint32_t>> roots;  ///< (cell, root node), by cell
+
+    std::uint32_t root_of(std::size_t cell) const {
+        const auto it =
+            std::lower_bound(roots.begin(), roots.end(), std::make_pair(cell, std::uint32_t{0}));
+        EM_ASSERT(it != roots.end() && it->first == cell);
+        return it->second;
+    }
+};
+
+/// The kd-tree over order[first .. last) (caller's indices of distinct points), reordering
+/// that range so each node's points are contiguous; returns the root's index.
+std::uint32_t build_kd_tree(KdForest& forest, std::span<const double> xy,
+                            std::vector<VertIdx>& order, std::uint32_t first, std::uint32_t last) {
+    const auto node = static_cast<std::uint32_t>(forest.nodes.size());
+    forest.nodes.push_back({INFINITY, INFINITY, -INFINITY, -INFINITY, 0, first, last, kNone, 0});
+    KdForest::Node box = forest.nodes[node];
+    for (std::uint32_t k = first; k < last; ++k) {
+        const double* p = &xy[2 * std::size_t{order[k]}];
+        box.lo_x = std::min(box.lo_x, p[0]);
+        box.hi_x = std::max(box.hi_x, p[0]);
+        box.lo_y = std::min(box.lo_y, p[1]);
+        box.hi_y = std::max(box.hi_y, p[1]);
+    }
+    if (last - first > kLeafSize) {
+        // Split the wider side (halved: the full extent may overflow) at the median; ties by
+        // the other coordinate, so distinct points order strictly.
+        box.axis = 0.5 * box.hi_x - 0.5 * box.lo_x >= 0.5 * box.hi_y - 0.5 * box.lo_y ? 0 : 1;
+        const unsigned axis = box.axis;
+        const std::uint32_t mid = first + (last - first) / 2;
+        std::nth_element(order.begin() + first, order.begin() + mid, order.begin() + last,
+                         [&xy, axis](VertIdx u, VertIdx v) {
+                             const double* p = &xy[2 * std::size_t{u}];
+                             const double* q = &xy[2 * std::size_t{v}];
+                             return p[axis] < q[axis] ||
+                                    (p[axis] == q[axis] && p[1 - axis] < q[1 - axis]);
+                         });
+        box.split = xy[2 * std::size_t{order[mid]} + axis];
+        forest.nodes[node] = box;
+        build_kd_tree(forest, xy, order, first, mid);  // node + 1
+        forest.nodes[node].right = build_kd_tree(forest, xy, order, mid, last);
+    } else {
+        forest.nodes[node] = box;
+    }
+    return node;
+}
+
+/// kd-trees for the crowded cells of `cells` (reordering their points within the cells).
+KdForest kd_forest(std::span<const double> xy, CellOrder& cells) {
+    KdForest forest;
+    for (std::size_t c = 0; c + 1 < cells.start.size(); ++c) {
+        if (cells.start[c + 1] - cells.start[c] <= kCrowdedCell) continue;
+        forest.roots.emplace_back(
+            c, build_kd_tree(forest, xy, cells.order, cells.start[c], cells.start[c + 1]));
+    }
+    return forest;
+}
+
 /// The open edges still to wrap, by the grid row of their midpoint, the lowest row first. Any
 /// open edge may be wrapped next (its third vertex does not depend on the order), and this
 /// order makes the front sweep the grid upwards: the points and cells searched lie in a band
 /// of a few rows, which stays in cache (a depth-first order wandered over the whole grid and
 /// missed the cache on most candidates). An edge closed before its turn is skipped then.
 class RowQueue {
-public:
+  public:
     explicit RowQueue(std::uint32_t rows) : head_(rows, kNone) {}
 
     void push(std::uint32_t row, VertIdx a, VertIdx b) {
@@ -275,7 +360,7 @@ public:
         return true;
     }
 
-private:
+  private:
     struct Node {
         VertIdx a, b;
         std::uint32_t next;
@@ -286,95 +371,116 @@ private:
     std::uint32_t current_ = 0;
 };
 
-/// floor(log2 |p - q|), or one more, for p != q. A difference of doubles is exact when it is
-/// subnormal and overflows only when |p| and |q| exceed 2^1022, where halving them is exact.
+/// 2^k, exactly, for -1022 <= k <= 1023 (built from its bits: std::ldexp is a library call).
+double power_of_two(int k) {
+    return std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
+}
+
+/// floor(log2 |x|) for finite x != 0 (read from the bits when x is normal); INT_MIN for 0.
+int exponent_of(double x) {
+    const auto biased = static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
+    if (biased != 0) return biased - 1023;
+    return x == 0 ? std::numeric_limits<int>::min() : std::ilogb(x);
+}
+
+/// floor(log2 |p - q|), or one more; INT_MIN when p == q. A difference of doubles is exact
+/// when it is subnormal and overflows only when |p| and |q| exceed 2^1022, where halving
+/// them is exact.
 int difference_exponent(double p, double q) {
     const double d = p - q;
-    if (std::isfinite(d)) return std::ilogb(d);  // FP_ILOGB0, below any other, when p == q
-    return std::ilogb(0.5 * p - 0.5 * q) + 1;
+    if (std::isfinite(d)) return exponent_of(d);
+    return exponent_of(0.5 * p - 0.5 * q) + 1;
 }
 
 /// The circle through a, b and the current best third vertex, relative to a: centre
-/// a + (ux, uy), radius r; `slack` bounds the error of the centre and of r. outer2 and inner2
-/// are the squared distances from the centre beyond (below) which a point is certainly outside
-/// (inside) the true circle; `absolute` is the part of the centre's error not relative to r.
-/// The candidate test uses it in the edge's frame (see GiftWrapper::frame_), where r >= 2^-53
-/// and r <= 2^400, so no square under- or overflows; cells_ holds it in grid units, with the
-/// absolute centre (ox, oy), `widen`, which bounds the distance from the computed circle to
-/// the true one including the absolute rounding, and `tolerance`, the slack of a cross
-/// product with ab for points within `widen`.
+/// a + (ux, uy), radius r; `slack` bounds the error of the centre and of r (at least twice the
+/// centre's error sigma); `absolute` is the part of the centre's error not relative to r.
+/// Candidates are tested in the edge's frame (see GiftWrapper::frame_), where r >= 2^-53 and
+/// r <= 2^400, so no square under- or overflows: first |w - u|^2 against outer2 and inner2
+/// (w = d - a), which put d certainly outside or inside; then, between the two, the power
+/// r^2 - |w - u|^2 = 2 w.u - |w|^2 (the circle passes through a, so |u| = r), positive inside.
+/// The power's computed error is below |w| (2 sigma + 22 u (r + |w|)) + 2^-1015 r, u = 2^-53:
+/// the centre's error times 2|w|, w's own rounding (u |w| per coordinate plus underflow) times
+/// 2r + 2|w|, and about 7u relative roundings of products and sums; power_slack and
+/// power_absolute bound it as |w|_1 (power_slack + 2^-46 |w|_1) + power_absolute. Unlike
+/// |w - u|^2 against r^2, whose error is relative to r^2, this is relative to |w| r: a point
+/// near a on a huge circle (an edge from a cluster to a far point) is decided at its own scale.
+/// cells_ holds the circle in grid units, with the absolute centre (ox, oy), `widen`, which
+/// bounds the distance from the computed circle to the true one including the absolute
+/// rounding, and `tolerance`, the slack of a cross product with ab for points within `widen`.
 struct Circle {
     bool bounded = false;
     double ux = 0, uy = 0, r = 0, slack = 0, absolute = 0, outer2 = 0, inner2 = -1;
+    double power_slack = 0, power_absolute = 0;
     double ox = 0, oy = 0, widen = 0, tolerance = 0;  // set by GiftWrapper::refresh_cells
 };
 
 class GiftWrapper {
 public:
-    GiftWrapper(detail::Delaunay2Core& core, const PointGrid& grid)
-        : core_(core), mesh_(core.mesh), grid_(grid), layout_(grid.layout) {}
+  GiftWrapper(detail::Delaunay2Core& core, const PointGrid& grid, const KdForest& forest)
+      : core_(core), mesh_(core.mesh), grid_(grid), layout_(grid.layout), forest_(forest) {}
 
-    /// The point c left of a -> b whose perturbed circle through a, b, c is empty.
-    /// Circles through a and b form a pencil whose parts left of ab are nested, so once a
-    /// candidate is known only its circle's part left of ab (the lens) can hold a better one,
-    /// and a better candidate only shrinks the lens. Cells are searched in square rings
-    /// around a start point, nearest first, each ring clipped to the cells that may meet the
-    /// current lens, until the rings hold all of those. Candidates are filtered in double
-    /// precision with error bounds (outside the circle by more than the bound: not better;
-    /// inside by more, and certainly left of ab: better); only the rest go to the exact
-    /// predicates.
-    VertIdx third_vertex(VertIdx a, VertIdx b) {
-        const double s = layout_.scale;
-        a_ = a;
-        b_ = b;
-        pa_ = mesh_.point(a);
-        pb_ = mesh_.point(b);
-        ax_ = pa_[0] * s;
-        ay_ = pa_[1] * s;
-        bx_ = pb_[0] * s;
-        by_ = pb_[1] * s;
-        // The frame of this edge: b - a has its larger coordinate in [1, 2) (unless clamped:
-        // in [2^-52, 8) at the ends of the double range). If a * frame_ overflows (a huge
-        // coordinate, the edge tiny), fb is NaN and so is every circle: exact tests only.
-        const int m = std::clamp(std::max(difference_exponent(pb_[0], pa_[0]),
-                                          difference_exponent(pb_[1], pa_[1])),
-                                 -1022, 1022);
-        frame_ = std::ldexp(1.0, -m);
-        frame_to_grid_ = s / frame_;
-        fax_ = pa_[0] * frame_;
-        fay_ = pa_[1] * frame_;
-        fbx_ = pb_[0] * frame_ - fax_;
-        fby_ = pb_[1] * frame_ - fay_;
-        best_ = kNone;
-        circle_ = cells_ = {};
-        stale_ = boxed_ = false;
-        lo_i_ = lo_j_ = 0;
-        hi_i_ = grid_.columns() - 1;
-        hi_j_ = grid_.rows() - 1;
-        // Start left of the midpoint, at the apex of the right isosceles triangle on ab but at
-        // most a cell away from ab: on evenly spread points the first candidate found there
-        // is nearly always the answer (about 1.05 circles per triangle on uniform points), and
-        // the third vertex of a long edge (on the hull) lies close to it.
-        const double length = std::fabs(bx_ - ax_) + std::fabs(by_ - ay_);
-        const double offset = std::min(0.5, layout_.cell / length);
-        const double qx = (ax_ + bx_) / 2 - (by_ - ay_) * offset;
-        const double qy = (ay_ + by_) / 2 + (bx_ - ax_) * offset;
-        const std::uint32_t i0 = layout_.column(qx), j0 = layout_.row(qy);
-        // Rings, each clipped to the cell box of the current lens, until the square of rings
-        // seen holds the box.
-        const std::uint32_t max_ring = std::max(grid_.columns(), grid_.rows());
-        visit_cell(i0, j0);
-        for (std::uint32_t r = 1;; ++r) {
-            if (stale_) refresh_cells();
-            if (boxed_ && lo_i_ + (r - 1) >= i0 && hi_i_ <= i0 + (r - 1) && lo_j_ + (r - 1) >= j0 &&
-                hi_j_ <= j0 + (r - 1)) {
-                break;
-            }
-            if (r > max_ring) break;
-            visit_ring(i0, j0, r);
-        }
-        EM_ASSERT(best_ != kNone);
-        return best_;
+  /// The point c left of a -> b whose perturbed circle through a, b, c is empty.
+  /// Circles through a and b form a pencil whose parts left of ab are nested, so once a
+  /// candidate is known only its circle's part left of ab (the lens) can hold a better one,
+  /// and a better candidate only shrinks the lens. Cells are searched in square rings
+  /// around a start point, nearest first, each ring clipped to the cells that may meet the
+  /// current lens, until the rings hold all of those. Candidates are filtered in double
+  /// precision with error bounds (outside the circle by more than the bound: not better;
+  /// inside by more, and certainly left of ab: better); only the rest go to the exact
+  /// predicates.
+  VertIdx third_vertex(VertIdx a, VertIdx b) {
+      const double s = layout_.scale;
+      a_ = a;
+      b_ = b;
+      pa_ = mesh_.point(a);
+      pb_ = mesh_.point(b);
+      ax_ = pa_[0] * s;
+      ay_ = pa_[1] * s;
+      bx_ = pb_[0] * s;
+      by_ = pb_[1] * s;
+      // The frame of this edge: b - a has its larger coordinate in [1, 2) (unless clamped:
+      // in [2^-52, 8) at the ends of the double range). If a * frame_ overflows (a huge
+      // coordinate, the edge tiny), fb is NaN and so is every circle: exact tests only.
+      const int m = std::clamp(
+          std::max(difference_exponent(pb_[0], pa_[0]), difference_exponent(pb_[1], pa_[1])), -1022,
+          1022);
+      frame_ = power_of_two(-m);
+      frame_to_grid_ = s / frame_;
+      fax_ = pa_[0] * frame_;
+      fay_ = pa_[1] * frame_;
+      fbx_ = pb_[0] * frame_ - fax_;
+      fby_ = pb_[1] * frame_ - fay_;
+      best_ = kNone;
+      circle_ = cells_ = {};
+      stale_ = boxed_ = false;
+      lo_i_ = lo_j_ = 0;
+      hi_i_ = grid_.columns() - 1;
+      hi_j_ = grid_.rows() - 1;
+      // Start left of the midpoint, at the apex of the right isosceles triangle on ab but at
+      // most a cell away from ab: on evenly spread points the first candidate found there
+      // is nearly always the answer (about 1.05 circles per triangle on uniform points), and
+      // the third vertex of a long edge (on the hull) lies close to it.
+      const double length = std::fabs(bx_ - ax_) + std::fabs(by_ - ay_);
+      const double offset = std::min(0.5, layout_.cell / length);
+      const double qx = (ax_ + bx_) / 2 - (by_ - ay_) * offset;
+      const double qy = (ay_ + by_) / 2 + (bx_ - ax_) * offset;
+      const std::uint32_t i0 = layout_.column(qx), j0 = layout_.row(qy);
+      // Rings, each clipped to the cell box of the current lens, until the square of rings
+      // seen holds the box.
+      const std::uint32_t max_ring = std::max(grid_.columns(), grid_.rows());
+      visit_cell(i0, j0);
+      for (std::uint32_t r = 1;; ++r) {
+          if (stale_) refresh_cells();
+          if (boxed_ && lo_i_ + (r - 1) >= i0 && hi_i_ <= i0 + (r - 1) && lo_j_ + (r - 1) >= j0 &&
+              hi_j_ <= j0 + (r - 1)) {
+              break;
+          }
+          if (r > max_ring) break;
+          visit_ring(i0, j0, r);
+      }
+      EM_ASSERT(best_ != kNone);
+      return best_;
     }
 
 private:
@@ -382,6 +488,7 @@ private:
     TriMesh2& mesh_;
     const PointGrid& grid_;
     const GridLayout& layout_;
+    const KdForest& forest_;
     // The current search.
     VertIdx a_ = kNone, b_ = kNone, best_ = kNone;
     const double* pa_ = nullptr;
@@ -395,6 +502,9 @@ private:
     // outside", which picked wrong triangles and sent the front round a vertex forever.)
     // fa = a * frame_, fb = b * frame_ - fa; frame_to_grid_ = layout_.scale / frame_.
     double frame_ = 1, frame_to_grid_ = 1, fax_ = 0, fay_ = 0, fbx_ = 0, fby_ = 0;
+    // The start point in input coordinates (the apex of the right isosceles triangle on ab,
+    // left of it): kd-trees visit the child on its side first.
+    double qx_ = 0, qy_ = 0;
     Circle circle_;
     // The cells that may meet the lens: columns lo_i_..hi_i_, rows lo_j_..hi_j_, narrowed from
     // the whole grid (boxed_ once narrowed) by the circle cells_, which is circle_ as it was at
@@ -407,8 +517,159 @@ private:
 
     void visit_cell(std::uint32_t i, std::uint32_t j) {
         const std::size_t c = grid_.index(i, j);
-        const std::uint32_t last = grid_.start[c + 1];
-        for (std::uint32_t d = grid_.start[c]; d < last; ++d) consider(d);
+        const std::uint32_t first = grid_.start[c], last = grid_.start[c + 1];
+        if (last - first > kCrowdedCell) {
+            visit_crowded_cell(c);
+            return;
+        }
+        for (std::uint32_t d = first; d < last; ++d) consider(d);
+    }
+
+    /// Through its kd-tree. Kept out of line, as visit_tree: crowded cells are rare, and
+    /// inlined they pushed the hot path of the grid search out of line (10% slower).
+    [[gnu::noinline]] void visit_crowded_cell(std::size_t c) {
+        // Halves first, so that no sum of two coordinates overflows (an infinite q only makes
+        // the visiting order arbitrary).
+        qx_ = (0.5 * pa_[0] + 0.5 * pb_[0]) + (0.5 * pa_[1] - 0.5 * pb_[1]);
+        qy_ = (0.5 * pa_[1] + 0.5 * pb_[1]) + (0.5 * pb_[0] - 0.5 * pa_[0]);
+        visit_tree(forest_.root_of(c));
+    }
+
+    /// The points of kd-tree node `node` that may be better, the child on q's side first.
+    /// Recursion depth is the tree's, at most about 30.
+    [[gnu::noinline]] void visit_tree(std::uint32_t node) {
+        const KdForest::Node& k = forest_.nodes[node];
+        if (!may_hold_better(k)) return;
+        if (k.right == kNone) {
+            for (std::uint32_t d = k.first; d < k.last; ++d) consider(d);
+            return;
+        }
+        const bool q_right = (k.axis == 0 ? qx_ : qy_) >= k.split;
+        visit_tree(q_right ? k.right : node + 1);
+        visit_tree(q_right ? node + 1 : k.right);
+    }
+
+    /// False when the node's box lies certainly right of ab, or certainly outside the current
+    /// circle. Both in the edge's frame, the box's corners computed as the candidate test
+    /// computes points (so the bound outer2 holds for the box's nearest point as for a
+    /// candidate: a rounding of 2^-53 relative to its offset from a, plus underflow). A corner
+    /// that overflows the frame is at least 2^971 from a: an infinite distance is right to
+    /// prune, and an infinite or NaN cross product prunes nothing.
+    bool may_hold_better(const KdForest::Node& k) const {
+        const double x0 = k.lo_x * frame_ - fax_, x1 = k.hi_x * frame_ - fax_;
+        const double y0 = k.lo_y * frame_ - fay_, y1 = k.hi_y * frame_ - fay_;
+        // The corner farthest left of ab; the cross product's error is below 5u |fb|_1 |p|_1
+        // for the roundings of fb, p and the products, plus 2^-1072 (|fb|_1 + |p|_1) for
+        // underflow (a component of fb that underflowed to zero included); |fb|_1 <= 16.
+        const double px = fby_ < 0 ? x1 : x0, py = fbx_ > 0 ? y1 : y0;
+        const double reach = std::fabs(x0) + std::fabs(x1) + std::fabs(y0) + std::fabs(y1);
+        const double tolerance =
+            0x1p-48 * (std::fabs(fbx_) + std::fabs(fby_)) * reach + 0x1p-1066 * (16 + reach);
+        if (fbx_ * py - fby_ * px < -tolerance) return false;
+        if (!circle_.bounded) return true;
+        const Circle& c = circle_;
+        const double dx = c.ux < x0 ? x0 - c.ux : (c.ux > x1 ? c.ux - x1 : 0.0);
+        const double dy = c.uy < y0 ? y0 - c.uy : (c.uy > y1 ? c.uy - y1 : 0.0);
+        if (dx * dx + dy * dy > c.outer2) return false;
+        // The power over the box is at most 2 max(p.u) - min |p|^2, from each of a, b and c: a
+        // box near one of them, small against a huge circle, is decided at its own scale (an
+        // edge from a far point to a cluster, whose circle passes through the cluster as a
+        // straight line would).
+        for (unsigned from = 0; from < 3; ++from) {
+            const OnCircle o = on_circle(from);
+            const double px0 = k.lo_x * frame_ - o.x, px1 = k.hi_x * frame_ - o.x;
+            const double py0 = k.lo_y * frame_ - o.y, py1 = k.hi_y * frame_ - o.y;
+            const double cx = o.centre_x, cy = o.centre_y;
+            const double mx = px0 > 0 ? px0 : (px1 < 0 ? px1 : 0.0);
+            const double my = py0 > 0 ? py0 : (py1 < 0 ? py1 : 0.0);
+            const double power =
+                2 * ((cx > 0 ? px1 : px0) * cx + (cy > 0 ? py1 : py0) * cy) - (mx * mx + my * my);
+            const double span = std::fabs(px0) + std::fabs(px1) + std::fabs(py0) + std::fabs(py1);
+            if (power < -(span * (c.power_slack + 0x1p-46 * span) + c.power_absolute)) return false;
+            if (span < 0x1p-900) {
+                // A box near this point, far below the edge's length: its offsets may have
+                // underflowed in the frame; the same test from input coordinates.
+                const ScaledPower scaled = scaled_power(from, k.lo_x, k.hi_x, k.lo_y, k.hi_y);
+                if (scaled.value < -scaled.bound) return false;
+            }
+        }
+        return true;
+    }
+
+    /// Point `from` of the circle (0, 1, 2: a, b, c) as the frame has it (its coordinates
+    /// times frame_) and the circle's centre relative to it. Relative to b or c the centre
+    /// has the error of u plus that of fb or of c - a (u |b - a| + underflow <= 3u r), within
+    /// the slack.
+    struct OnCircle {
+        double x, y, centre_x, centre_y;
+    };
+    OnCircle on_circle(unsigned from) const {
+        if (from == 0) return {fax_, fay_, circle_.ux, circle_.uy};
+        if (from == 1)
+            return {pb_[0] * frame_, pb_[1] * frame_, circle_.ux - fbx_, circle_.uy - fby_};
+        const double* pc = mesh_.point(best_);
+        const double cx = pc[0] * frame_, cy = pc[1] * frame_;
+        return {cx, cy, circle_.ux - (cx - fax_), circle_.uy - (cy - fay_)};
+    }
+
+    /// The power test (see Circle) of candidate d near the circle (neither beyond outer2 nor
+    /// within inner2): from a, b and c in the frame, then from them in input coordinates (for
+    /// offsets that underflowed in the frame). -1 certainly outside, +1 certainly inside, 0
+    /// undecided. Rare but for points within about 2^-40 of the circle and for clusters far
+    /// below the edge's length.
+    [[gnu::noinline]] int near_circle(const double* pd) const {
+        for (unsigned from = 0; from < 3; ++from) {
+            const OnCircle o = on_circle(from);
+            const double vx = pd[0] * frame_ - o.x, vy = pd[1] * frame_ - o.y;
+            const double power = 2 * (vx * o.centre_x + vy * o.centre_y) - (vx * vx + vy * vy);
+            const double reach = std::fabs(vx) + std::fabs(vy);
+            const double bound =
+                reach * (circle_.power_slack + 0x1p-46 * reach) + circle_.power_absolute;
+            if (power < -bound) return -1;
+            if (power > bound) return 1;
+        }
+        for (unsigned from = 0; from < 3; ++from) {
+            const ScaledPower scaled = scaled_power(from, pd[0], pd[0], pd[1], pd[1]);
+            if (scaled.value < -scaled.bound) return -1;
+            if (scaled.value > scaled.bound) return 1;
+        }
+        return 0;
+    }
+
+    /// The power test (see Circle) of the box [x0, x1] x [y0, y1] in input coordinates (a point
+    /// when x0 == x1 and y0 == y1) from point `from` of the circle (0, 1, 2: a, b, c), taken
+    /// from the input coordinates: their offsets from that point (exact when subnormal, one
+    /// rounding otherwise) scaled by 2^-e to below 2 in magnitude, so that no offset small
+    /// against the edge underflows. With x = offset 2^-e and rho = frame_ 2^e (so w = x rho),
+    /// value = 2 max(x.u) - rho min |x|^2 is the frame's power divided by rho; its error
+    /// bound, divided the same way, is |x|_1 (power_slack + 2^-46 rho |x|_1) plus underflow
+    /// below 2^-1070, within power_absolute (r >= 2^-53). A value below -bound puts the whole
+    /// box certainly outside; a point's value above +bound puts it certainly inside.
+    struct ScaledPower {
+        double value, bound;
+    };
+    ScaledPower scaled_power(unsigned from, double x0, double x1, double y0, double y1) const {
+        const double* o = from == 0 ? pa_ : (from == 1 ? pb_ : mesh_.point(best_));
+        double vx0 = x0 - o[0], vx1 = x1 - o[0], vy0 = y0 - o[1], vy1 = y1 - o[1];
+        const double m = std::max({std::fabs(vx0), std::fabs(vx1), std::fabs(vy0), std::fabs(vy1)});
+        // At the point itself, or an offset that overflowed: undecided.
+        if (!(m > 0) || !(m <= std::numeric_limits<double>::max())) return {0, INFINITY};
+        const int e = std::ilogb(m);
+        vx0 = std::ldexp(vx0, -e);
+        vx1 = std::ldexp(vx1, -e);
+        vy0 = std::ldexp(vy0, -e);
+        vy1 = std::ldexp(vy1, -e);
+        const double rho = std::ldexp(frame_, e);
+        const OnCircle on = on_circle(from);
+        const double cx = on.centre_x, cy = on.centre_y;
+        const double mx = vx0 > 0 ? vx0 : (vx1 < 0 ? vx1 : 0.0),
+                     my = vy0 > 0 ? vy0 : (vy1 < 0 ? vy1 : 0.0);
+        const double value =
+            2 * ((cx > 0 ? vx1 : vx0) * cx + (cy > 0 ? vy1 : vy0) * cy) - (mx * mx + my * my) * rho;
+        const double span =
+            std::max(std::fabs(vx0), std::fabs(vx1)) + std::max(std::fabs(vy0), std::fabs(vy1));
+        return {value,
+                span * (circle_.power_slack + 0x1p-46 * rho * span) + circle_.power_absolute};
     }
 
     /// The cells of the square ring at Chebyshev distance r from (i0, j0) that lie in the
@@ -418,13 +679,15 @@ private:
         const long long lo_j = static_cast<long long>(j0) - r, hi_j = static_cast<long long>(j0) + r;
         for (const long long j : {lo_j, hi_j}) {
             if (j < lo_j_ || j > hi_j_) continue;
-            for (long long i = std::max<long long>(lo_i, lo_i_); i <= std::min<long long>(hi_i, hi_i_); ++i) {
+            for (long long i = std::max<long long>(lo_i, lo_i_);
+                 i <= std::min<long long>(hi_i, hi_i_); ++i) {
                 visit_cell_if_near(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
             }
         }
         for (const long long i : {lo_i, hi_i}) {
             if (i < lo_i_ || i > hi_i_) continue;
-            for (long long j = std::max<long long>(lo_j + 1, lo_j_); j <= std::min<long long>(hi_j - 1, hi_j_); ++j) {
+            for (long long j = std::max<long long>(lo_j + 1, lo_j_);
+                 j <= std::min<long long>(hi_j - 1, hi_j_); ++j) {
                 visit_cell_if_near(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
             }
         }
@@ -453,11 +716,14 @@ private:
     /// True when d lies strictly left of a -> b (exact: the filter, then the exact stages).
     bool left_of_edge(const double* pd) {
         ++core_.counters.orient_calls;
-        if (const auto sign = predicates::orient2d_filter(pa_, pb_, pd)) return *sign == Sign::Positive;
+        if (const auto sign = predicates::orient2d_filter(pa_, pb_, pd))
+            return *sign == Sign::Positive;
         return predicates::orient2d_exact(pa_, pb_, pd) == Sign::Positive;
     }
 
-    void consider(VertIdx d) {
+    /// Takes d if it is left of ab and better than the current best. Inlined by force: the
+    /// per-candidate call, once visit_tree also calls it, cost about 5%.
+    [[gnu::always_inline]] void consider(VertIdx d) {
         if (d == a_ || d == b_) return;
         ++core_.counters.candidates;
         const double* pd = mesh_.point(d);
@@ -470,12 +736,14 @@ private:
             // length, plus underflow below 2^-1073 (covered by the slack). A product d * frame_
             // that overflows puts d at least 2^971 from a, certainly outside (r <= 2^400); one
             // that meets an overflowed a * frame_ gives NaN, which no bound passes: exact test.
-            const double ex = (pd[0] * frame_ - fax_) - circle_.ux;
-            const double ey = (pd[1] * frame_ - fay_) - circle_.uy;
+            const double wx = pd[0] * frame_ - fax_, wy = pd[1] * frame_ - fay_;
+            const double ex = wx - circle_.ux, ey = wy - circle_.uy;
             const double dist2 = ex * ex + ey * ey;
             if (dist2 > circle_.outer2) return;  // certainly outside: not better
+            const int verdict = dist2 < circle_.inner2 ? 1 : near_circle(pd);
+            if (verdict < 0) return;  // certainly outside
             if (!left_of_edge(pd)) return;
-            if (dist2 < circle_.inner2) {
+            if (verdict > 0) {
                 take(d);  // certainly inside, so the perturbed test is positive too
                 return;
             }
@@ -518,8 +786,9 @@ private:
         // computed: the shift plus a relative rounding error far above the true one, plus the
         // underflow of a and b in grid units (2^-1075 per coordinate, which can turn the
         // direction of a very short edge around; points p here lie within 4 + r + widen + cell).
-        c.tolerance = (2 * c.widen + 1e-9 * (c.r + layout_.cell)) * (std::fabs(ex) + std::fabs(ey)) +
-                      0x1p-1070 * (4 + c.r + c.widen + layout_.cell);
+        c.tolerance =
+            (2 * c.widen + 1e-9 * (c.r + layout_.cell)) * (std::fabs(ex) + std::fabs(ey)) +
+            0x1p-1070 * (4 + c.r + c.widen + layout_.cell);
         double lo_x = std::min(ax_, bx_), hi_x = std::max(ax_, bx_);
         double lo_y = std::min(ay_, by_), hi_y = std::max(ay_, by_);
         auto maybe_left = [&](double px, double py) { return ex * py - ey * px > -c.tolerance; };
@@ -538,7 +807,8 @@ private:
         hi_y = std::min({hi_y, layout_.min_y + (hi_j_ + 1.0) * cell, layout_.max_y}) + w;
         const double radius2 = (c.r + w) * (c.r + w) * (1 + 0x1p-48);
         auto half_chord = [radius2](double offset) {  // >= the true half chord at that offset
-            return std::sqrt(std::max(0.0, radius2 - offset * offset * (1 - 0x1p-48))) * (1 + 0x1p-48);
+            return std::sqrt(std::max(0.0, radius2 - offset * offset * (1 - 0x1p-48))) *
+                   (1 + 0x1p-48);
         };
         auto distance = [](double value, double lo, double hi) {
             return value < lo ? lo - value : (value > hi ? value - hi : 0.0);
@@ -581,7 +851,8 @@ private:
                 out.uy = oy - fay_;
                 // The centre's rounding (2^-53 relative, or 2^-1075 if subnormal, times the
                 // frame) and the underflow of the products.
-                absolute = 0x1p-51 * (std::fabs(ox) + std::fabs(oy)) + 0x1p-1073 * frame_ + 0x1p-1000;
+                absolute =
+                    0x1p-51 * (std::fabs(ox) + std::fabs(oy)) + 0x1p-1073 * frame_ + 0x1p-1000;
             } catch (const GeometryError&) {
                 return out;
             }
@@ -595,13 +866,16 @@ private:
         // Beyond 2^400 (three points collinear to 2^-400 or so) the squares would overflow:
         // such a circle, or a non-finite one, is left to the exact predicates.
         if (!(r <= 0x1p400) || !(out.slack <= 0x1p401)) return out;
-        // Certainly outside: |e| > r + slack + 2^-53 (|e| + r); the factors on the squares
-        // cover the rounding of dist2 and of these bounds, and (r and the inner bound being
-        // above 2^-400) its underflow.
+        // Certainly outside: |e| > r + slack + 2^-53 (|e| + r); certainly inside: |e| below
+        // r - slack - 2^-53 (|e| + r). The factors on the squares cover the rounding of dist2
+        // and of these bounds, and (r and the inner bound being above 2^-400) its underflow.
+        // The power's bound: see Circle (the slack is at least twice sigma).
         const double outer = r * (1 + 0x1p-50) + out.slack;
         const double inner = r * (1 - 0x1p-50) - out.slack;
         out.outer2 = outer * outer * (1 + 0x1p-40);
         out.inner2 = inner > 0x1p-400 ? inner * inner * (1 - 0x1p-40) : -1.0;
+        out.power_slack = 2 * out.slack + 0x1p-46 * r;
+        out.power_absolute = 0x1p-1000 * r;
         out.absolute = absolute;
         out.bounded = true;
         return out;
@@ -680,14 +954,16 @@ std::vector<VertIdx> hull_candidates(const detail::Delaunay2Core& core, const Po
 }  // namespace
 
 Delaunay2Result tanemura_merriam_2d(std::span<const double> xy, const Delaunay2Options&) {
-    // Vertices grouped by grid cell, cells along a Hilbert curve: the points of a cell are a
+    // Vertices grouped by grid cell, cells in row-major order: the points of a cell are a
     // contiguous range of mesh vertices and neighbouring cells are mostly close in memory (the
-    // candidate search is memory-bound otherwise). Gift wrapping needs distinct points, so
-    // duplicates (found within cells) go last and stay out of the grid.
+    // candidate search is memory-bound otherwise); a crowded cell's range is in kd-tree order.
+    // Gift wrapping needs distinct points, so duplicates (found within cells) go last and stay
+    // out of the grid.
     validate_points_2d(xy);
     PointGrid grid;
     grid.layout = grid_layout(xy);
     CellOrder cells = cell_order(xy, grid.layout);
+    const KdForest forest = kd_forest(xy, cells);
     grid.start = std::move(cells.start);
     detail::Delaunay2Core core(xy, std::move(cells.order));
     std::vector<bool> skip;
@@ -703,7 +979,7 @@ Delaunay2Result tanemura_merriam_2d(std::span<const double> xy, const Delaunay2O
     }
     const std::uint32_t n = mesh.vertex_count();
     const std::vector<VertIdx> hull = convex_hull(core, hull_candidates(core, grid));
-    GiftWrapper wrapper(core, grid);
+    GiftWrapper wrapper(core, grid, forest);
     // Front: directed edges whose left side is still empty, mapped to the half-edge on their
     // right (kNone for hull edges, whose right side is the outside).
     OpenEdges open(n);

@@ -386,15 +386,18 @@ TEST(Triangulation_TanemuraMerriam2, WideRangeFuzzInputFromTheRevertedRewrite) {
     // a wrong third vertex, and a front that went round vertex 4 forever. The circles are now
     // computed in a frame scaled to the edge.
     const std::vector<double> xy = {
-        0x1.0000000000000p+2,   0x1.0000000000000p+0,   0x1.e611c0029472dp+1,  0x1.0ab7803156ed2p+1,
-        0x1.9bc788585f663p+1,   0x1.82b2f9ff6123ap+1,   0x1.2b29dd02f316dp+1,  0x1.6cb3fffffff08p-552,
-        0x1.0d262400d7be2p-360, 0x1.0b85a3ff46dcbp+777, 0x1.5b1f8400fe5cap+437, -0x1.d27773fc6e9d5p+731,
-        0x1.1d52e400f1574p+201, -0x1.38479bfe9da59p-744, -0x1.5f594400b2704p+410, 0x1.ae622bff8cf77p-215,
-        0x1.f866c4004a266p-1012, 0x1.08a8abfff2ec6p-1010, 0x1.f866e3ff8d1eap-1012, -0x1.dd614bfff2ec6p+972,
-        -0x1.5f59c3fdcb857p+410, -0x1.b986cbff8cf77p+163, 0x1.1d546bfe28998p+201, 0x1.708eabfe9da59p-465,
-        0x1.5b180bff64e09p+437, -0x1.a4eea3fc6e9d5p+438, 0x1.0d250bffe2ae9p-360, -0x1.170b63ff46dcbp+529,
-        -0x1.f3164bfffcb94p+259, 0x1.d961a4002b29dp-81, -0x1.5f65cbffaf7c4p-935, 0x1.c24844009bc78p-1,
-        0x1.94728bff0565fp-1021, 0x1.ddbd0400e611cp+555};
+        0x1.0000000000000p+2,    0x1.0000000000000p+0,    0x1.e611c0029472dp+1,
+        0x1.0ab7803156ed2p+1,    0x1.9bc788585f663p+1,    0x1.82b2f9ff6123ap+1,
+        0x1.2b29dd02f316dp+1,    0x1.6cb3fffffff08p-552,  0x1.0d262400d7be2p-360,
+        0x1.0b85a3ff46dcbp+777,  0x1.5b1f8400fe5cap+437,  -0x1.d27773fc6e9d5p+731,
+        0x1.1d52e400f1574p+201,  -0x1.38479bfe9da59p-744, -0x1.5f594400b2704p+410,
+        0x1.ae622bff8cf77p-215,  0x1.f866c4004a266p-1012, 0x1.08a8abfff2ec6p-1010,
+        0x1.f866e3ff8d1eap-1012, -0x1.dd614bfff2ec6p+972, -0x1.5f59c3fdcb857p+410,
+        -0x1.b986cbff8cf77p+163, 0x1.1d546bfe28998p+201,  0x1.708eabfe9da59p-465,
+        0x1.5b180bff64e09p+437,  -0x1.a4eea3fc6e9d5p+438, 0x1.0d250bffe2ae9p-360,
+        -0x1.170b63ff46dcbp+529, -0x1.f3164bfffcb94p+259, 0x1.d961a4002b29dp-81,
+        -0x1.5f65cbffaf7c4p-935, 0x1.c24844009bc78p-1,    0x1.94728bff0565fp-1021,
+        0x1.ddbd0400e611cp+555};
     expect_tanemura_merriam_matches(xy, "fuzz input");
     expect_all_agree(xy, "fuzz input");
     const tri::Delaunay2Result r = tri::tanemura_merriam_2d(xy);
@@ -420,7 +423,8 @@ TEST(Triangulation_TanemuraMerriam2, ClustersFarBelowTheLargestCoordinate) {
                 xy.push_back(std::ldexp(u(rng), large));
                 xy.push_back(std::ldexp(u(rng), large));
             }
-            const std::string label = "2^" + std::to_string(small) + " and 2^" + std::to_string(large);
+            const std::string label =
+                "2^" + std::to_string(small) + " and 2^" + std::to_string(large);
             expect_tanemura_merriam_matches(xy, label);
         }
     }
@@ -466,7 +470,37 @@ TEST(Triangulation_TanemuraMerriam2, SortedParabolaMatchesGreenSibson) {
         }
         expect_tanemura_merriam_matches(xy, "parabola n " + std::to_string(n));
         std::vector<double> reversed;
-        for (int i = n - 1; i >= 0; --i) reversed.insert(reversed.end(), {xy[2 * i], xy[2 * i + 1]});
+        for (int i = n - 1; i >= 0; --i)
+            reversed.insert(reversed.end(), {xy[2 * i], xy[2 * i + 1]});
         expect_tanemura_merriam_matches(reversed, "reversed parabola n " + std::to_string(n));
+    }
+}
+
+TEST(Triangulation_TanemuraMerriam2, DenseClusterInAWideBoundingBoxStaysLinear) {
+    // 2000 points in a square 2^-40 or 2^-1000 wide beside four points about 1 or 2^600 apart:
+    // the whole cluster falls in one grid cell, which gets a kd-tree. Without it every search
+    // in the cluster looked at all 2000 points; with it about 30 per point. The edges from the
+    // far points to the cluster have circles 2^600 times the cluster's size, decided in
+    // double from input coordinates (the power test), not by the exact incircle.
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (const int small : {-40, -1000}) {
+        for (const int large : {0, 600}) {
+            std::vector<double> xy;
+            for (int i = 0; i < 2000; ++i) {
+                xy.push_back(std::ldexp(u(rng), small));
+                xy.push_back(std::ldexp(u(rng), small));
+            }
+            for (int i = 0; i < 4; ++i) {
+                xy.push_back(std::ldexp(u(rng) - 0.5, large));
+                xy.push_back(std::ldexp(u(rng) - 0.5, large));
+            }
+            const std::string label =
+                "2^" + std::to_string(small) + " and 2^" + std::to_string(large);
+            expect_tanemura_merriam_matches(xy, label);
+            const tri::Delaunay2Result r = tri::tanemura_merriam_2d(xy);
+            EXPECT_LT(r.counters.candidates, 60u * 2004u) << label;
+            EXPECT_LT(r.counters.incircle_calls, 100u) << label;
+        }
     }
 }
