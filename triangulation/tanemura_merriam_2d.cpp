@@ -250,9 +250,12 @@ struct PointGrid {
 /// (a dense spot in a wide bounding box, or points spread over many magnitudes, which all but
 /// the largest collapse into the cells around zero) would otherwise put all of its points in
 /// every search near it: O(k^2) for k points. About two points per cell on uniform input
-/// (Poisson: more than 32 has probability about 1e-25), so uniform input never builds one.
-constexpr std::uint32_t kCrowdedCell = 32;
-/// Points per kd-tree leaf.
+/// (Poisson: more than 64 is beyond 1e-60), so uniform input never builds one. Below some
+/// hundreds of points a scan beats the tree (Gaussian clusters at 2^12 points, delaunay2d_bench:
+/// 4.5 ms with 64, as without trees; 5.5 ms with 32, 6.7 ms with 8, though they look at 30%
+/// to 70% fewer candidates).
+constexpr std::uint32_t kCrowdedCell = 64;
+/// Points per kd-tree leaf (16: 20-30% slower on a 2^-10 cluster of 200,000 points).
 constexpr std::uint32_t kLeafSize = 8;
 
 /// kd-trees over the crowded cells, all nodes in one array. A node covers the mesh vertices
@@ -331,7 +334,7 @@ KdForest kd_forest(std::span<const double> xy, CellOrder& cells) {
 /// of a few rows, which stays in cache (a depth-first order wandered over the whole grid and
 /// missed the cache on most candidates). An edge closed before its turn is skipped then.
 class RowQueue {
-  public:
+public:
     explicit RowQueue(std::uint32_t rows) : head_(rows, kNone) {}
 
     void push(std::uint32_t row, VertIdx a, VertIdx b) {
@@ -360,7 +363,7 @@ class RowQueue {
         return true;
     }
 
-  private:
+private:
     struct Node {
         VertIdx a, b;
         std::uint32_t next;
@@ -417,70 +420,70 @@ struct Circle {
 
 class GiftWrapper {
 public:
-  GiftWrapper(detail::Delaunay2Core& core, const PointGrid& grid, const KdForest& forest)
-      : core_(core), mesh_(core.mesh), grid_(grid), layout_(grid.layout), forest_(forest) {}
+    GiftWrapper(detail::Delaunay2Core& core, const PointGrid& grid, const KdForest& forest)
+        : core_(core), mesh_(core.mesh), grid_(grid), layout_(grid.layout), forest_(forest) {}
 
-  /// The point c left of a -> b whose perturbed circle through a, b, c is empty.
-  /// Circles through a and b form a pencil whose parts left of ab are nested, so once a
-  /// candidate is known only its circle's part left of ab (the lens) can hold a better one,
-  /// and a better candidate only shrinks the lens. Cells are searched in square rings
-  /// around a start point, nearest first, each ring clipped to the cells that may meet the
-  /// current lens, until the rings hold all of those. Candidates are filtered in double
-  /// precision with error bounds (outside the circle by more than the bound: not better;
-  /// inside by more, and certainly left of ab: better); only the rest go to the exact
-  /// predicates.
-  VertIdx third_vertex(VertIdx a, VertIdx b) {
-      const double s = layout_.scale;
-      a_ = a;
-      b_ = b;
-      pa_ = mesh_.point(a);
-      pb_ = mesh_.point(b);
-      ax_ = pa_[0] * s;
-      ay_ = pa_[1] * s;
-      bx_ = pb_[0] * s;
-      by_ = pb_[1] * s;
-      // The frame of this edge: b - a has its larger coordinate in [1, 2) (unless clamped:
-      // in [2^-52, 8) at the ends of the double range). If a * frame_ overflows (a huge
-      // coordinate, the edge tiny), fb is NaN and so is every circle: exact tests only.
-      const int m = std::clamp(
-          std::max(difference_exponent(pb_[0], pa_[0]), difference_exponent(pb_[1], pa_[1])), -1022,
-          1022);
-      frame_ = power_of_two(-m);
-      frame_to_grid_ = s / frame_;
-      fax_ = pa_[0] * frame_;
-      fay_ = pa_[1] * frame_;
-      fbx_ = pb_[0] * frame_ - fax_;
-      fby_ = pb_[1] * frame_ - fay_;
-      best_ = kNone;
-      circle_ = cells_ = {};
-      stale_ = boxed_ = false;
-      lo_i_ = lo_j_ = 0;
-      hi_i_ = grid_.columns() - 1;
-      hi_j_ = grid_.rows() - 1;
-      // Start left of the midpoint, at the apex of the right isosceles triangle on ab but at
-      // most a cell away from ab: on evenly spread points the first candidate found there
-      // is nearly always the answer (about 1.05 circles per triangle on uniform points), and
-      // the third vertex of a long edge (on the hull) lies close to it.
-      const double length = std::fabs(bx_ - ax_) + std::fabs(by_ - ay_);
-      const double offset = std::min(0.5, layout_.cell / length);
-      const double qx = (ax_ + bx_) / 2 - (by_ - ay_) * offset;
-      const double qy = (ay_ + by_) / 2 + (bx_ - ax_) * offset;
-      const std::uint32_t i0 = layout_.column(qx), j0 = layout_.row(qy);
-      // Rings, each clipped to the cell box of the current lens, until the square of rings
-      // seen holds the box.
-      const std::uint32_t max_ring = std::max(grid_.columns(), grid_.rows());
-      visit_cell(i0, j0);
-      for (std::uint32_t r = 1;; ++r) {
-          if (stale_) refresh_cells();
-          if (boxed_ && lo_i_ + (r - 1) >= i0 && hi_i_ <= i0 + (r - 1) && lo_j_ + (r - 1) >= j0 &&
-              hi_j_ <= j0 + (r - 1)) {
-              break;
-          }
-          if (r > max_ring) break;
-          visit_ring(i0, j0, r);
-      }
-      EM_ASSERT(best_ != kNone);
-      return best_;
+    /// The point c left of a -> b whose perturbed circle through a, b, c is empty.
+    /// Circles through a and b form a pencil whose parts left of ab are nested, so once a
+    /// candidate is known only its circle's part left of ab (the lens) can hold a better one,
+    /// and a better candidate only shrinks the lens. Cells are searched in square rings
+    /// around a start point, nearest first, each ring clipped to the cells that may meet the
+    /// current lens, until the rings hold all of those. Candidates are filtered in double
+    /// precision with error bounds (outside the circle by more than the bound: not better;
+    /// inside by more, and certainly left of ab: better); only the rest go to the exact
+    /// predicates.
+    VertIdx third_vertex(VertIdx a, VertIdx b) {
+        const double s = layout_.scale;
+        a_ = a;
+        b_ = b;
+        pa_ = mesh_.point(a);
+        pb_ = mesh_.point(b);
+        ax_ = pa_[0] * s;
+        ay_ = pa_[1] * s;
+        bx_ = pb_[0] * s;
+        by_ = pb_[1] * s;
+        // The frame of this edge: b - a has its larger coordinate in [1, 2) (unless clamped:
+        // in [2^-52, 8) at the ends of the double range). If a * frame_ overflows (a huge
+        // coordinate, the edge tiny), fb is NaN and so is every circle: exact tests only.
+        const int m = std::clamp(
+            std::max(difference_exponent(pb_[0], pa_[0]), difference_exponent(pb_[1], pa_[1])),
+            -1022, 1022);
+        frame_ = power_of_two(-m);
+        frame_to_grid_ = s / frame_;
+        fax_ = pa_[0] * frame_;
+        fay_ = pa_[1] * frame_;
+        fbx_ = pb_[0] * frame_ - fax_;
+        fby_ = pb_[1] * frame_ - fay_;
+        best_ = kNone;
+        circle_ = cells_ = {};
+        stale_ = boxed_ = false;
+        lo_i_ = lo_j_ = 0;
+        hi_i_ = grid_.columns() - 1;
+        hi_j_ = grid_.rows() - 1;
+        // Start left of the midpoint, at the apex of the right isosceles triangle on ab but at
+        // most a cell away from ab: on evenly spread points the first candidate found there
+        // is nearly always the answer (about 1.05 circles per triangle on uniform points), and
+        // the third vertex of a long edge (on the hull) lies close to it.
+        const double length = std::fabs(bx_ - ax_) + std::fabs(by_ - ay_);
+        const double offset = std::min(0.5, layout_.cell / length);
+        const double qx = (ax_ + bx_) / 2 - (by_ - ay_) * offset;
+        const double qy = (ay_ + by_) / 2 + (bx_ - ax_) * offset;
+        const std::uint32_t i0 = layout_.column(qx), j0 = layout_.row(qy);
+        // Rings, each clipped to the cell box of the current lens, until the square of rings
+        // seen holds the box.
+        const std::uint32_t max_ring = std::max(grid_.columns(), grid_.rows());
+        visit_cell(i0, j0);
+        for (std::uint32_t r = 1;; ++r) {
+            if (stale_) refresh_cells();
+            if (boxed_ && lo_i_ + (r - 1) >= i0 && hi_i_ <= i0 + (r - 1) && lo_j_ + (r - 1) >= j0 &&
+                hi_j_ <= j0 + (r - 1)) {
+                break;
+            }
+            if (r > max_ring) break;
+            visit_ring(i0, j0, r);
+        }
+        EM_ASSERT(best_ != kNone);
+        return best_;
     }
 
 private:
@@ -574,7 +577,9 @@ private:
         // The power over the box is at most 2 max(p.u) - min |p|^2, from each of a, b and c: a
         // box near one of them, small against a huge circle, is decided at its own scale (an
         // edge from a far point to a cluster, whose circle passes through the cluster as a
-        // straight line would).
+        // straight line would). A box not that small is resolved by the distance test above
+        // as well as by this one (to about the slack, 1e-8 r), so it is spared the cost.
+        if (!((x1 - x0) + (y1 - y0) < 0x1p-20 * c.r)) return true;
         for (unsigned from = 0; from < 3; ++from) {
             const OnCircle o = on_circle(from);
             const double px0 = k.lo_x * frame_ - o.x, px1 = k.hi_x * frame_ - o.x;
@@ -675,8 +680,10 @@ private:
     /// The cells of the square ring at Chebyshev distance r from (i0, j0) that lie in the
     /// current cell box and may meet the lens. The box may narrow while the ring is visited.
     void visit_ring(std::uint32_t i0, std::uint32_t j0, std::uint32_t r) {
-        const long long lo_i = static_cast<long long>(i0) - r, hi_i = static_cast<long long>(i0) + r;
-        const long long lo_j = static_cast<long long>(j0) - r, hi_j = static_cast<long long>(j0) + r;
+        const long long lo_i = static_cast<long long>(i0) - r,
+                        hi_i = static_cast<long long>(i0) + r;
+        const long long lo_j = static_cast<long long>(j0) - r,
+                        hi_j = static_cast<long long>(j0) + r;
         for (const long long j : {lo_j, hi_j}) {
             if (j < lo_j_ || j > hi_j_) continue;
             for (long long i = std::max<long long>(lo_i, lo_i_);

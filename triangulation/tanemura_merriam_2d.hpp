@@ -6,7 +6,7 @@
 // open edge or open a new one. A uniform grid of about two points per cell (finer where the
 // points crowd) finds candidates: square rings of cells around a start point just left of
 // ab, each clipped to the cells of the current best circle's part left of ab, until the
-// rings hold all of them. A cell that still holds more than 32 points (a cluster far smaller
+// rings hold all of them. A cell that still holds more than 64 points (a cluster far smaller
 // than the bounding box, or coordinates spread over many magnitudes) is searched through a
 // kd-tree of exact bounding boxes instead. Candidates and boxes are decided in double
 // precision where the error bounds make it certain, in a frame scaled by a power of two to
