@@ -146,7 +146,10 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
     // Segments: chains of pieces.
     double extent = 0;
     for (double c : mesh.xy) extent = std::max(extent, std::fabs(c));
-    const double tolerance = std::ldexp(extent, -40);
+    // Relative to the coordinates, floored by the absolute rounding error of a subnormal result
+    // (half of 2^-1074 per coordinate): at subnormal extents 2^-40 of it rounds to 0 and a
+    // rounded split point (5e-324 off a segment of length 1e-312: fuzz, 2026-11-23) would fail.
+    const double tolerance = std::max(std::ldexp(extent, -40), 0x1p-1070);
     std::vector<std::uint32_t> visited(n, 0);  // segment number + 1 of the last search that met v
     // A segment may name a duplicate point that no triangle uses: follow the copy that is used
     // (a vertex of a triangle or of a piece) at the same coordinates.

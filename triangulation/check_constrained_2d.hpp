@@ -23,7 +23,7 @@ namespace exactmesh::triangulation {
 /// @param segments 2·#S input segments (0-based). Each must be covered by a chain of pieces from
 ///        one endpoint to the other. A chain may pass through input vertices exactly on the
 ///        segment (exact orient2d), and through any vertex within 2^-40 of the coordinates'
-///        largest magnitude from its line: added vertices are rounded (and may be split
+///        largest magnitude (at least 2^-1070) from its line: added vertices are rounded (and may be split
 ///        again), and a piece between rounded vertices may pass exactly through an input
 ///        vertex that is not exactly on the segment. No step moves away from b (projections
 ///        in long double).

@@ -353,6 +353,16 @@ TEST(Constrained2d, ConformingNearlyOverlappingSegmentsStopAtTheSplitBudget) {
     }
 }
 
+TEST(Constrained2d, ConformingSplitsOfASubnormalSegmentPassTheCheck) {
+    // fuzz_constrained_2d, 2026-11-23: split points of a segment 1.4e-312 long are rounded by up
+    // to half of 2^-1074; the check's tolerance (2^-40 of the extent) rounded to 0 there.
+    const Input in{{3.844e-321, 0, 0, 8.087e-320, 0, 1.35807730622e-312, 0, 1.35675105885e-312,
+                    1.35675105885e-312, 1.3587404299e-312, 0, 1.35675105885e-312},
+                   {0, 4, 2, 0}, {}, {}};
+    const auto r = build(in, tri::SegmentRecovery::Conforming);
+    expect_valid(in, r, tri::SegmentRecovery::Conforming, true, "subnormal segment");
+}
+
 TEST(Constrained2d, ConformingPieceBendsAtAVertexWithinRoundingOfItsSegment) {
     // Segment 1, (0, 2) - (2, 0), passes exactly through (1, 1), but segment 0, (0, 1.3) -
     // (3, 1.8), crosses it first at a rounded point, so its piece from there to (2, 0) misses
