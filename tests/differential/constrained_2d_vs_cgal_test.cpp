@@ -42,6 +42,7 @@
 #include "triangulation/check_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d.hpp"
+#include "tests/support/test_scale.hpp"
 
 namespace tri = exactmesh::triangulation;
 namespace gen = exactmesh::generators;
@@ -57,10 +58,7 @@ using CgalCdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_i
 /// coordinate magnitude of the input.
 constexpr double kMaxUlps = 8;
 
-double test_scale() {
-    const char* s = std::getenv("EXACTMESH_TEST_SCALE");
-    return s ? std::atof(s) : 1.0;
-}
+using exactmesh::testing::test_scale;
 
 using Edge = std::pair<tri::VertIdx, tri::VertIdx>;
 using Triangle = std::array<tri::VertIdx, 3>;

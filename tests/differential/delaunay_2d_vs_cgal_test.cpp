@@ -24,6 +24,7 @@
 #include "triangulation/check_2d.hpp"
 #include "triangulation/green_sibson_2d.hpp"
 #include "triangulation/tanemura_merriam_2d.hpp"
+#include "tests/support/test_scale.hpp"
 
 namespace tri = exactmesh::triangulation;
 namespace gen = exactmesh::generators;
@@ -35,10 +36,7 @@ using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb>;
 using CgalDelaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
 
-double test_scale() {
-    const char* s = std::getenv("EXACTMESH_TEST_SCALE");
-    return s ? std::atof(s) : 1.0;
-}
+using exactmesh::testing::test_scale;
 
 /// CGAL's finite triangles, vertices mapped to our duplicate representatives.
 std::vector<tri::VertIdx> cgal_triangles(const std::vector<double>& xy,

@@ -21,6 +21,7 @@
 #include "predicates/insphere.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
+#include "tests/support/test_scale.hpp"
 
 namespace pr = exactmesh::predicates;
 using pr::Sign;
@@ -31,13 +32,7 @@ namespace {
 // Case counts. EXACTMESH_TEST_SCALE (a positive float, default 1) scales the sampled counts, so
 // that a sanitizer build can run fewer; at 1 every predicate sees at least 10^6 random cases.
 
-double test_scale() {
-    const char* text = std::getenv("EXACTMESH_TEST_SCALE");
-    if (text == nullptr || *text == '\0') return 1.0;
-    char* end = nullptr;
-    const double s = std::strtod(text, &end);
-    return (end != text && std::isfinite(s) && s > 0.0) ? s : 1.0;
-}
+using exactmesh::testing::test_scale;
 
 long scaled(long count) {
     return std::max(1L, static_cast<long>(std::ceil(static_cast<double>(count) * test_scale())));

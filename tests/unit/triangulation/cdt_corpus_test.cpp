@@ -56,6 +56,7 @@
 #include "triangulation/check_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d.hpp"
+#include "tests/support/test_scale.hpp"
 
 namespace tri = exactmesh::triangulation;
 namespace fs = std::filesystem;
@@ -159,10 +160,7 @@ tri::Cdt2Result build(const CorpusInput& in, tri::SegmentRecovery recovery, bool
     return tri::constrained_delaunay_2d(tri::Pslg{in.xy, in.segments, {}, {}}, options);
 }
 
-double test_scale() {
-    const char* s = std::getenv("EXACTMESH_TEST_SCALE");
-    return s ? std::atof(s) : 1.0;
-}
+using exactmesh::testing::test_scale;
 
 /// Comparison (1): exact validity of every recovery, swap == cavity. Returns the swap result.
 /// Conforming runs with the hull kept only (the domain adds nothing to it). debug2's 10000-gon

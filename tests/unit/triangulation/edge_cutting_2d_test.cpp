@@ -23,6 +23,8 @@
 #include "triangulation/check_2d.hpp"
 #include "triangulation/edge_cutting_2d.hpp"
 #include "triangulation/edge_swap_2d.hpp"
+#include "tests/support/test_scale.hpp"
+#include "tests/support/integer_points_2d.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;
@@ -54,20 +56,9 @@ std::size_t expect_optimal(const std::vector<double>& xy) {
 }
 
 /// EXACTMESH_TEST_SCALE (default 1) scales the number of random sets (sanitizer runs use 0.02).
-double test_scale() {
-    const char* text = std::getenv("EXACTMESH_TEST_SCALE");
-    return text == nullptr ? 1.0 : std::max(0.0, std::atof(text));
-}
+using exactmesh::testing::test_scale;
 
-std::vector<double> integer_points(std::uint32_t n, std::uint32_t range, std::mt19937_64& rng) {
-    std::vector<double> xy;
-    std::set<std::pair<double, double>> seen;
-    while (xy.size() < 2 * std::size_t{n}) {
-        const auto x = static_cast<double>(rng() % range), y = static_cast<double>(rng() % range);
-        if (seen.insert({x, y}).second) xy.insert(xy.end(), {x, y});
-    }
-    return xy;
-}
+using exactmesh::testing::integer_points;
 
 }  // namespace
 

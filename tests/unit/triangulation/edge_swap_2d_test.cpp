@@ -26,6 +26,8 @@
 #include "triangulation/check_2d.hpp"
 #include "triangulation/edge_cutting_2d.hpp"
 #include "triangulation/edge_swap_2d.hpp"
+#include "tests/support/test_scale.hpp"
+#include "tests/support/integer_points_2d.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;
@@ -36,10 +38,7 @@ namespace {
 using Triangles = std::set<std::array<tri::VertIdx, 3>>;
 
 /// EXACTMESH_TEST_SCALE (default 1) scales the sizes of the larger cases.
-double test_scale() {
-    const char* text = std::getenv("EXACTMESH_TEST_SCALE");
-    return text == nullptr ? 1.0 : std::max(0.0, std::atof(text));
-}
+using exactmesh::testing::test_scale;
 
 Triangles canonical(std::span<const tri::VertIdx> triangles) {
     Triangles s;
@@ -83,16 +82,7 @@ std::vector<double> uniform(std::uint32_t n, std::uint64_t seed) {
     return em::generators::generate_points_2d(em::generators::Distribution::Uniform, n, seed);
 }
 
-/// Random integer points in [0, range)^2 without repeats (degeneracies are frequent).
-std::vector<double> integer_points(std::uint32_t n, std::uint32_t range, std::mt19937_64& rng) {
-    std::vector<double> xy;
-    std::set<std::pair<double, double>> seen;
-    while (xy.size() < 2 * std::size_t{n}) {
-        const auto x = static_cast<double>(rng() % range), y = static_cast<double>(rng() % range);
-        if (seen.insert({x, y}).second) xy.insert(xy.end(), {x, y});
-    }
-    return xy;
-}
+using exactmesh::testing::integer_points;
 
 /// Delaunay swapping from the sweep triangulation gives delaunay_2d's triangles exactly.
 void expect_sweep_swaps_to_delaunay(const std::vector<double>& xy, const std::string& label) {
