@@ -121,31 +121,32 @@ Sign compare_lengths(const double* p1, const double* q1, const double* p2, const
         .sign();
 }
 
-Corner largest_corner(const double* a, const double* b, const double* c) {
+namespace {
+
+/// The corner opposite the longest side (`longer` = Positive) or the shortest (Negative): side
+/// lengths order the angles of a triangle.
+Corner corner_opposite_extreme_side(const double* a, const double* b, const double* c, Sign longer) {
     // Side opposite a is bc, opposite b is ca, opposite c is ab.
     Corner best{a, b, c};
     const double* best_p = b;
     const double* best_q = c;
-    if (compare_lengths(c, a, best_p, best_q) == Sign::Positive) {
+    if (compare_lengths(c, a, best_p, best_q) == longer) {
         best = {b, c, a};
         best_p = c;
         best_q = a;
     }
-    if (compare_lengths(a, b, best_p, best_q) == Sign::Positive) best = {c, a, b};
+    if (compare_lengths(a, b, best_p, best_q) == longer) best = {c, a, b};
     return best;
 }
 
+}  // namespace
+
+Corner largest_corner(const double* a, const double* b, const double* c) {
+    return corner_opposite_extreme_side(a, b, c, Sign::Positive);
+}
+
 Corner smallest_corner(const double* a, const double* b, const double* c) {
-    Corner best{a, b, c};
-    const double* best_p = b;
-    const double* best_q = c;
-    if (compare_lengths(c, a, best_p, best_q) == Sign::Negative) {
-        best = {b, c, a};
-        best_p = c;
-        best_q = a;
-    }
-    if (compare_lengths(a, b, best_p, best_q) == Sign::Negative) best = {c, a, b};
-    return best;
+    return corner_opposite_extreme_side(a, b, c, Sign::Negative);
 }
 
 }  // namespace exactmesh::triangulation
