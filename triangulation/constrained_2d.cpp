@@ -167,6 +167,15 @@ private:
 
     // ---- segments ----------------------------------------------------------------------
     void prepare_segments();
+    /// How the segment a -> b leaves vertex a: the half-edge a -> b itself, else a neighbour
+    /// exactly on the ray a -> b, else the edge (of the triangle whose angle at a the segment
+    /// enters) that it crosses first; each kNone when absent.
+    struct StarExit {
+        EdgeIdx edge = kNone;
+        VertIdx on_ray = kNone;
+        EdgeIdx entry = kNone;
+    };
+    StarExit star_exit(VertIdx a, VertIdx b);
     void insert_piece(const Piece& piece);
     /// The piece passes exactly through vertex v: recover its two parts instead (a warning).
     void split_piece_at_vertex(const Piece& piece, VertIdx v) {
@@ -379,38 +388,48 @@ void CdtBuilder::guard() {
     }
 }
 
+CdtBuilder::StarExit CdtBuilder::star_exit(VertIdx a, VertIdx b) {
+    StarExit exit;
+    const EdgeIdx first = vertex_edge_[a];
+    EdgeIdx e = first;
+    do {
+        const VertIdx x = mesh_.destination(e), y = apex(e);
+        if (x == b) {
+            exit.edge = e;
+            return exit;
+        }
+        if (x != kInfinite) {
+            // Every neighbour x is tested, also when a -> x borders the infinite vertex (a
+            // segment along the hull through a hull vertex).
+            const Sign sx = core_.orient(a, b, x);
+            if (sx == Sign::Zero && on_ray(a, b, x)) {
+                exit.on_ray = x;
+                return exit;
+            }
+            if (y != kInfinite && sx == Sign::Negative && exit.entry == kNone &&
+                core_.orient(a, b, y) == Sign::Positive) {
+                exit.entry = next_edge(e);
+            }
+        }
+        e = mesh_.twin[prev_edge(e)];
+    } while (e != first);
+    return exit;
+}
+
 void CdtBuilder::insert_piece(const Piece& piece) {
     const VertIdx a = piece.a, b = piece.b;
     if (a == b) return;
     guard();
-    // The star of a: the edge a -> b, a vertex on the segment, or the triangle whose angle at a
-    // the segment enters.
-    EdgeIdx entry = kNone;
-    {
-        const EdgeIdx first = vertex_edge_[a];
-        EdgeIdx e = first;
-        do {
-            const VertIdx x = mesh_.destination(e), y = apex(e);
-            if (x == b) {
-                mark(e, piece.segment);
-                return;
-            }
-            if (x != kInfinite) {
-                // Every neighbour x is tested, also when a -> x borders the infinite vertex
-                // (a segment along the hull through a hull vertex).
-                const Sign sx = core_.orient(a, b, x);
-                if (sx == Sign::Zero && on_ray(a, b, x)) {
-                    split_piece_at_vertex(piece, x);
-                    return;
-                }
-                if (y != kInfinite && sx == Sign::Negative && entry == kNone &&
-                    core_.orient(a, b, y) == Sign::Positive) {
-                    entry = next_edge(e);
-                }
-            }
-            e = mesh_.twin[prev_edge(e)];
-        } while (e != first);
+    const StarExit exit = star_exit(a, b);
+    if (exit.edge != kNone) {
+        mark(exit.edge, piece.segment);
+        return;
     }
+    if (exit.on_ray != kNone) {
+        split_piece_at_vertex(piece, exit.on_ray);
+        return;
+    }
+    const EdgeIdx entry = exit.entry;
     EM_ASSERT(entry != kNone);
     // Walk to b through the crossed edges.
     std::vector<EdgeIdx> crossed;
@@ -737,20 +756,9 @@ VertIdx CdtBuilder::vertex_near_segment(const Piece& piece) {
     };
     // The edges the piece crosses, as insert_piece walks them; a vertex exactly on the piece
     // ends the walk (it is the answer).
-    EdgeIdx entry = kNone;
-    const EdgeIdx first = vertex_edge_[a];
-    EdgeIdx e = first;
-    do {
-        const VertIdx x = mesh_.destination(e), y = apex(e);
-        if (x != kInfinite) {
-            const Sign sx = core_.orient(a, b, x);
-            if (sx == Sign::Zero && on_ray(a, b, x)) return x;
-            if (y != kInfinite && sx == Sign::Negative && entry == kNone && core_.orient(a, b, y) == Sign::Positive) {
-                entry = next_edge(e);
-            }
-        }
-        e = mesh_.twin[prev_edge(e)];
-    } while (e != first);
+    const StarExit exit = star_exit(a, b);
+    if (exit.on_ray != kNone) return exit.on_ray;
+    const EdgeIdx entry = exit.entry;
     if (entry == kNone) return kNone;  // not expected: the piece would be present
     consider(mesh_.origin(entry));
     consider(mesh_.destination(entry));
