@@ -72,10 +72,11 @@ class Delaunay3Core {
     std::uint32_t next_stamp();
     void grow_stamps();
 
-    /// The finite tetrahedra in the caller's numbering; consumes the mesh.
-    Delaunay3Result take_result(std::span<const double> xyz);
+    /// The finite tetrahedra in the caller's numbering, and the points back in the caller's
+    /// order (moved, not copied); consumes the mesh.
+    Delaunay3Result take_result();
     /// The result for coplanar input (no tetrahedron): only duplicates are detected, by sorting.
-    Delaunay3Result coplanar_result(std::span<const double> xyz);
+    Delaunay3Result coplanar_result();
 
     TetIdx last_tet = kNone;
 

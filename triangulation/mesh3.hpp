@@ -17,12 +17,15 @@
 //                 v1                 tetrahedron t' across it (twin face slots, never kNone)
 //
 // Replacing vertex k of a tetrahedron by a point q gives orient3d(face k, q): positive when q
-// lies on vk's side of face k. An infinite tetrahedron has kInfinite as one vertex, at any slot
-// m; its finite face (opposite m) is a convex-hull face, oriented so that orient3d of the
-// tetrahedron with kInfinite replaced by q is positive exactly when q lies strictly outside the
-// hull across that face. Dead tetrahedra (recycled) have tv[4t] == kNone.
+// lies on vk's side of face k. An infinite tetrahedron has kInfinite as its vertex v3 (always
+// slot 3: the constructions only ever replace one vertex of a tetrahedron by a new point, and
+// a tetrahedron whose slot 3 is replaced becomes finite); its finite face 3 is a convex-hull
+// face, oriented so that orient3d of the tetrahedron with kInfinite replaced by q is positive
+// exactly when q lies strictly outside the hull across that face. Dead tetrahedra (recycled)
+// have tv[4t] == kNone.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -44,6 +47,9 @@ inline constexpr std::uint32_t kMaxTetSlots = 0x3FFFFFFFu;
 /// The vertices of face k (opposite vertex k) in the order that sees vertex k positively.
 inline constexpr unsigned kFaceVertex[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
 
+/// The slot of kInfinite in an infinite tetrahedron.
+inline constexpr unsigned kInfiniteSlot = 3;
+
 inline constexpr TetIdx tet_of(FaceIdx f) {
     return f >> 2;
 }
@@ -62,10 +68,7 @@ struct TetMesh3 {
     const double* point(VertIdx v) const { return xyz.data() + 3 * static_cast<std::size_t>(v); }
 
     bool is_dead(TetIdx t) const { return tv[4 * std::size_t{t}] == kNone; }
-    bool is_infinite(TetIdx t) const {
-        const VertIdx* v = &tv[4 * std::size_t{t}];
-        return v[0] == kInfinite || v[1] == kInfinite || v[2] == kInfinite || v[3] == kInfinite;
-    }
+    bool is_infinite(TetIdx t) const { return tv[4 * std::size_t{t} + 3] == kInfinite; }
     /// The slot of vertex v in tetrahedron t, or 4 when t does not hold v.
     unsigned slot_of(TetIdx t, VertIdx v) const {
         const VertIdx* w = &tv[4 * std::size_t{t}];
@@ -74,19 +77,28 @@ struct TetMesh3 {
 
     /// A slot for a new tetrahedron (recycled when possible); the caller fills tv and adj.
     TetIdx new_tet() {
-        if (!free_tets.empty()) {
-            const TetIdx t = free_tets.back();
-            free_tets.pop_back();
-            return t;
-        }
-        const TetIdx t = tet_slots();
-        if (t >= kMaxTetSlots) {
+        if (free_tets.empty()) add_slots();
+        const TetIdx t = free_tets.back();
+        free_tets.pop_back();
+        return t;
+    }
+
+    /// Appends a batch of dead slots to the free list, lowest first to be handed out, so that
+    /// slots are used in order and no per-tetrahedron resize runs in the hot loop.
+    void add_slots() {
+        const TetIdx first = tet_slots();
+        // Within the reserved capacity when there is room: a reallocation would copy both
+        // arrays (and lose the huge-page advice of delaunay_3d_core).
+        const std::size_t room = (tv.capacity() - tv.size()) / 4;
+        std::uint32_t batch = std::max<std::uint32_t>(64, first / 16);
+        if (room >= 64 && room < batch) batch = static_cast<std::uint32_t>(room);
+        if (std::uint64_t{first} + batch > kMaxTetSlots) {
             throw InputError("tetrahedralization: more than " + std::to_string(kMaxTetSlots) +
                              " tetrahedra (32-bit face slots)");
         }
-        tv.resize(tv.size() + 4, kNone);
-        adj.resize(adj.size() + 4, kNone);
-        return t;
+        tv.resize(tv.size() + 4 * std::size_t{batch}, kNone);
+        adj.resize(adj.size() + 4 * std::size_t{batch}, kNone);
+        for (std::uint32_t i = batch; i-- > 0;) free_tets.push_back(first + i);
     }
 
     void kill_tet(TetIdx t) {
