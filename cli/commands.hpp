@@ -19,12 +19,16 @@ inline constexpr int kExitInternalError = 3;  ///< a bug in exactmesh or out of 
 /// [--seed S] [--stats]`.
 void add_triangulate_command(CLI::App& app);
 
+/// `exactmesh tetrahedralize IN.node -o OUT[.ele|.msh|.vtu] [--algorithm A] [--order O]
+/// [--seed S] [--stats]`.
+void add_tetrahedralize_command(CLI::App& app);
+
 /// `exactmesh cdt IN.poly -o OUT [--recovery swap|cavity|conforming] [--convex-hull] [--order O]
 /// [--seed S] [--stats]`.
 void add_cdt_command(CLI::App& app);
 
 /// `exactmesh check IN.node IN.ele`: sets `exit_status` to kExitCheckFailed when the mesh
-/// fails the exact Delaunay check.
+/// fails the exact Delaunay check (2D, or 3D when IN.node declares dimension 3).
 void add_check_command(CLI::App& app, int& exit_status);
 
 /// `exactmesh fuzz --minutes M [--seed S] [--out DIR]`: sets `exit_status` to kExitCheckFailed

@@ -66,8 +66,11 @@ triangulation::InsertionOrder insertion_order(const std::string& name) {
     throw InputError("unknown insertion order '" + name + "' (known: given, random, brio)");
 }
 
-void print_predicate_stats(const predicates::PredicateStats& stats) {
-    if (predicates::stats_enabled()) {
+void print_predicate_stats(const predicates::PredicateStats& stats, int dimension) {
+    if (predicates::stats_enabled() && dimension == 3) {
+        print_stage_counts("orient3d", stats.orient3d);
+        print_stage_counts("insphere", stats.insphere);
+    } else if (predicates::stats_enabled()) {
         print_stage_counts("orient2d", stats.orient2d);
         print_stage_counts("incircle", stats.incircle);
     } else {

@@ -32,7 +32,8 @@ void refuse_to_overwrite_input(const std::filesystem::path& input, const std::ve
 /// @throws InputError naming the unknown order and the known ones.
 triangulation::InsertionOrder insertion_order(const std::string& name);
 
-/// `name.calls: N` ... one line per stage, or a note when the counters are compiled out.
-void print_predicate_stats(const predicates::PredicateStats& stats);
+/// `name.calls: N` ... one line per stage of the predicates of that dimension (orient2d and
+/// incircle, or orient3d and insphere), or a note when the counters are compiled out.
+void print_predicate_stats(const predicates::PredicateStats& stats, int dimension = 2);
 
 }  // namespace exactmesh::cli
