@@ -10,31 +10,15 @@ namespace exactmesh::triangulation {
 
 namespace {
 
-/// Grows the cavity of p from `seed` (in conflict) breadth first: the conflict region of a
-/// point is connected [Watson81], so every tetrahedron in it is reached. A tetrahedron tested
-/// and found outside keeps its own mark, so it is tested once even when several cavity faces
-/// touch it.
-void grow_cavity(detail::Delaunay3Core& core, std::vector<TetIdx>& cavity, TetIdx seed, VertIdx p,
-                 std::uint32_t inside, std::uint32_t outside) {
-    TetMesh3& mesh = core.mesh;
-    cavity.clear();
-    cavity.push_back(seed);
-    core.stamp[seed] = inside;
-    for (std::size_t i = 0; i < cavity.size(); ++i) {
-        const TetIdx c = cavity[i];
-        for (unsigned k = 0; k < 4; ++k) {
-            const TetIdx u = tet_of(mesh.adj[4 * std::size_t{c} + k]);
-            const std::uint32_t mark = core.stamp[u];
-            if (mark == inside || mark == outside) continue;
-            if (core.conflict(u, p)) {
-                core.stamp[u] = inside;
-                cavity.push_back(u);
-            } else {
-                core.stamp[u] = outside;
-            }
-        }
-    }
-}
+/// Marks of the cavity search, kept in the high bits of vertex slot 1 of a tetrahedron (vertex
+/// indices stay below kMaxPoints3 = 2^26, and slot 1 never holds kInfinite or kNone in a live
+/// tetrahedron): the mark is then read from the cache line the conflict test loads anyway,
+/// where a separate mark array cost a second cache miss per tested neighbour. Inside marks
+/// vanish when the cavity's slots are rewritten; outside marks are cleared after each insertion.
+constexpr VertIdx kInsideMark = 1u << 31;
+constexpr VertIdx kOutsideMark = 1u << 30;
+static_assert(kVertexBits == kOutsideMark - 1 && kMaxPoints3 <= kOutsideMark,
+              "vertex indices must leave the two mark bits free");
 
 /// For slots j != k of a tetrahedron: the other two slots.
 struct OtherTwo {
@@ -52,53 +36,44 @@ constexpr OtherTwo kOtherTwo[4][4] = {{{}, other_two(0, 1), other_two(0, 2), oth
                                       {other_two(2, 0), other_two(2, 1), {}, other_two(2, 3)},
                                       {other_two(3, 0), other_two(3, 1), other_two(3, 2), {}}};
 
-/// Joins p to every boundary face of the cavity: boundary face k of cavity tetrahedron c gives
-/// the new tetrahedron c with vertex k replaced by p (positive: the cavity is star-shaped from
-/// p). The new tetrahedra's faces through p pair up along the edges of the cavity's boundary
-/// (a triangulated sphere around p): each edge (a, b) is met by exactly two of them, matched in
-/// a small open-addressing table keyed by the edge and cleared by a generation count. New
-/// tetrahedra take other slots than the cavity's (from the free list: the previous cavity's),
-/// so the cavity stays readable until it is freed at the end.
-class CavityStar {
+/// One insertion: the cavity of tetrahedra in conflict with p, then its star from p.
+///
+/// Cavity: grown breadth first from a tetrahedron in conflict; the conflict region of a point
+/// is connected [Watson81], so every tetrahedron in it is reached. A tetrahedron tested and
+/// found outside keeps its mark (and is listed), so it is tested once even when several cavity
+/// faces touch it.
+///
+/// Star: boundary face k of cavity tetrahedron c gives the new tetrahedron c with vertex k
+/// replaced by p (positive: the cavity is star-shaped from p). The new tetrahedra's faces
+/// through p pair up along the edges of the cavity's boundary (a triangulated sphere around
+/// p): each edge (a, b) is met by exactly two of them, matched in a small open-addressing table
+/// keyed by the edge and cleared by a generation count. The boundary faces are listed (with
+/// their new vertices) before anything is written, so the new tetrahedra take the cavity's
+/// slots first (there are always more of them: a cavity of C tetrahedra has 2C + 2 boundary
+/// faces), then fresh ones.
+///
+/// Whether a neighbour is in conflict, and whether a face is on the boundary, are coin tosses
+/// for the branch predictor: both are recorded without a branch (the entry is written
+/// unconditionally, the count advances by the outcome).
+class CavityInserter {
   public:
-    void build(detail::Delaunay3Core& core, const std::vector<TetIdx>& cavity, std::uint32_t inside,
-               VertIdx p) {
-        TetMesh3& mesh = core.mesh;
-        boundary_.clear();
-        for (const TetIdx c : cavity) {
-            for (unsigned k = 0; k < 4; ++k) {
-                const FaceIdx outside = mesh.adj[4 * std::size_t{c} + k];
-                if (core.stamp[tet_of(outside)] != inside) boundary_.push_back({c, k, outside});
-            }
-        }
-        prepare_table(3 * boundary_.size());
-        TetIdx first = kNone;
-        for (const Face& f : boundary_) {
-            const TetIdx t = mesh.new_tet();
-            if (first == kNone) first = t;
-            const VertIdx* cv = &mesh.tv[4 * std::size_t{f.c}];
-            VertIdx* w = &mesh.tv[4 * std::size_t{t}];
-            w[0] = cv[0];
-            w[1] = cv[1];
-            w[2] = cv[2];
-            w[3] = cv[3];
-            w[f.k] = p;
-            mesh.link(4 * t + f.k, f.outside);
-            for (unsigned j = 0; j < 4; ++j) {
-                if (j == f.k) continue;
-                const OtherTwo e = kOtherTwo[j][f.k];
-                glue(mesh, detail::edge_key(cv[e.a], cv[e.b]), 4 * t + j);
-            }
-        }
-        for (const TetIdx c : cavity) mesh.kill_tet(c);
-        core.grow_stamps();
-        core.last_tet = first;
+    explicit CavityInserter(detail::Delaunay3Core& core) : core_(core), mesh_(core.mesh) {}
+
+    void insert(VertIdx p, TetIdx seed) {
+        grow(seed, p);
+        core_.counters.cavity_tets += cavity_count_;
+        star(p);
     }
 
   private:
+    detail::Delaunay3Core& core_;
+    TetMesh3& mesh_;
+    std::vector<TetIdx> cavity_, outside_;
+    std::size_t cavity_count_ = 0, outside_count_ = 0;
+
     struct Face {
-        TetIdx c;
-        unsigned k;
+        VertIdx v[4];  ///< the new tetrahedron
+        unsigned k;    ///< the slot of p in it: its face towards the outside
         FaceIdx outside;
     };
     struct Slot {
@@ -110,6 +85,93 @@ class CavityStar {
     std::vector<Slot> table_;
     std::uint32_t generation_ = 0;
     unsigned shift_ = 64;
+    FaceIdx scratch_ = kNone;
+
+    /// Room for `count` more entries after `used` (grown, never shrunk: no clearing per call).
+    template <class T>
+    static void ensure(std::vector<T>& v, std::size_t used, std::size_t count) {
+        if (v.size() < used + count) v.resize(2 * (used + count) + 64);
+    }
+
+    void grow(TetIdx seed, VertIdx p) {
+        ensure(cavity_, 0, 1);
+        cavity_[0] = seed;
+        cavity_count_ = 1;
+        outside_count_ = 0;
+        mesh_.tv[4 * std::size_t{seed} + 1] |= kInsideMark;
+        // The neighbours are scattered in memory: their lines are requested one cavity
+        // tetrahedron ahead (the adjacency of a tetrahedron is requested when it joins the
+        // cavity), so the misses overlap the insphere tests of the tetrahedron at hand.
+        request_neighbours(seed);
+        for (std::size_t i = 0; i < cavity_count_; ++i) {
+            const TetIdx c = cavity_[i];
+            if (i + 1 < cavity_count_) request_neighbours(cavity_[i + 1]);
+            ensure(cavity_, cavity_count_, 4);
+            ensure(outside_, outside_count_, 4);
+            for (unsigned k = 0; k < 4; ++k) {
+                const TetIdx u = tet_of(mesh_.adj[4 * std::size_t{c} + k]);
+                VertIdx& marked = mesh_.tv[4 * std::size_t{u} + 1];
+                if (marked & (kInsideMark | kOutsideMark)) continue;
+                const bool in = core_.conflict(u, p);
+                marked |= in ? kInsideMark : kOutsideMark;
+                cavity_[cavity_count_] = u;
+                cavity_count_ += in ? 1 : 0;
+                outside_[outside_count_] = u;
+                outside_count_ += in ? 0 : 1;
+                __builtin_prefetch(&mesh_.adj[4 * std::size_t{u}]);
+            }
+        }
+    }
+
+    void request_neighbours(TetIdx c) const {
+        for (unsigned k = 0; k < 4; ++k) {
+            __builtin_prefetch(
+                &mesh_.tv[4 * std::size_t{tet_of(mesh_.adj[4 * std::size_t{c} + k])}]);
+        }
+    }
+
+    void star(VertIdx p) {
+        ensure(boundary_, 0, 4 * cavity_count_);
+        std::size_t faces = 0;
+        for (std::size_t i = 0; i < cavity_count_; ++i) {
+            const TetIdx c = cavity_[i];
+            const VertIdx* cv = &mesh_.tv[4 * std::size_t{c}];
+            const VertIdx v[4] = {cv[0], cv[1] & kVertexBits, cv[2], cv[3]};
+            for (unsigned k = 0; k < 4; ++k) {
+                const FaceIdx outside = mesh_.adj[4 * std::size_t{c} + k];
+                Face& f = boundary_[faces];
+                f.v[0] = v[0];
+                f.v[1] = v[1];
+                f.v[2] = v[2];
+                f.v[3] = v[3];
+                f.v[k] = p;
+                f.k = k;
+                f.outside = outside;
+                faces += (mesh_.tv[4 * std::size_t{tet_of(outside)} + 1] & kInsideMark) ? 0 : 1;
+            }
+        }
+        prepare_table(3 * faces);
+        for (std::size_t i = 0; i < faces; ++i) {
+            const Face& f = boundary_[i];
+            const TetIdx t = i < cavity_count_ ? cavity_[i] : mesh_.new_tet();
+            VertIdx* w = &mesh_.tv[4 * std::size_t{t}];
+            w[0] = f.v[0];
+            w[1] = f.v[1];
+            w[2] = f.v[2];
+            w[3] = f.v[3];
+            mesh_.link(4 * t + f.k, f.outside);
+            for (unsigned j = 0; j < 4; ++j) {
+                if (j == f.k) continue;
+                const OtherTwo e = kOtherTwo[j][f.k];
+                glue(detail::edge_key(f.v[e.a], f.v[e.b]), 4 * t + j);
+            }
+        }
+        for (std::size_t i = faces; i < cavity_count_; ++i) mesh_.kill_tet(cavity_[i]);
+        for (std::size_t i = 0; i < outside_count_; ++i) {
+            mesh_.tv[4 * std::size_t{outside_[i]} + 1] &= ~kOutsideMark;
+        }
+        core_.last_tet = cavity_[0];
+    }
 
     void prepare_table(std::size_t entries) {
         if (table_.size() < 2 * entries) {
@@ -129,20 +191,21 @@ class CavityStar {
         }
     }
 
-    void glue(TetMesh3& mesh, std::uint64_t key, FaceIdx face) {
+    /// The first face of an edge is stored, the second is linked with it. Which of the two
+    /// happens is a coin toss for the branch predictor, so both are done without a branch:
+    /// the stores go to a scratch word when there is nothing to link (the new face's own twin
+    /// is then overwritten when its partner arrives).
+    void glue(std::uint64_t key, FaceIdx face) {
         const std::size_t mask = table_.size() - 1;
-        for (std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_);;
-             h = (h + 1) & mask) {
-            Slot& slot = table_[h];
-            if (slot.generation != generation_) {
-                slot = {key, face, generation_};
-                return;
-            }
-            if (slot.key == key) {
-                mesh.link(slot.face, face);
-                return;
-            }
-        }
+        std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_);
+        while (table_[h].generation == generation_ && table_[h].key != key) h = (h + 1) & mask;
+        Slot& slot = table_[h];
+        const bool first = slot.generation != generation_;
+        const FaceIdx partner = slot.face;
+        FaceIdx* partner_twin = first ? &scratch_ : &mesh_.adj[partner];
+        *partner_twin = face;
+        mesh_.adj[face] = partner;
+        slot = {key, face, generation_};
     }
 };
 
@@ -153,17 +216,12 @@ Delaunay3Result bowyer_watson_3d(std::span<const double> xyz, const Delaunay3Opt
     std::vector<bool> skip;
     // Fewer than four non-coplanar points: no tetrahedron, duplicates still merged.
     if (!core.make_first_tet(skip)) return core.coplanar_result();
-    std::vector<TetIdx> cavity;
-    CavityStar star;
+    CavityInserter inserter(core);
     for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
         if (skip[p]) continue;
         const detail::Delaunay3Core::Location where = core.locate(p);
         if (where.tet == kNone) continue;  // duplicate, merged
-        const std::uint32_t inside = core.next_stamp();
-        const std::uint32_t outside = core.next_stamp();
-        grow_cavity(core, cavity, where.tet, p, inside, outside);
-        core.counters.cavity_tets += cavity.size();
-        star.build(core, cavity, inside, p);
+        inserter.insert(p, where.tet);
     }
     return core.take_result();
 }

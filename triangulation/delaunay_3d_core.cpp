@@ -80,10 +80,8 @@ Delaunay3Core::Delaunay3Core(std::span<const double> xyz, const Delaunay3Options
     const std::size_t expected = 7 * std::size_t{n} + 64;
     mesh.tv.reserve(4 * expected);
     mesh.adj.reserve(4 * expected);
-    stamp.reserve(expected);
     advise_huge_pages(mesh.tv.data(), mesh.tv.capacity() * sizeof(VertIdx));
     advise_huge_pages(mesh.adj.data(), mesh.adj.capacity() * sizeof(FaceIdx));
-    advise_huge_pages(stamp.data(), stamp.capacity() * sizeof(std::uint32_t));
 }
 
 Sign Delaunay3Core::orient(VertIdx a, VertIdx b, VertIdx c, VertIdx d) {
@@ -97,20 +95,14 @@ Sign Delaunay3Core::orient_replacing(TetIdx t, unsigned k, VertIdx p) {
     return orient(v[f[0]], v[f[1]], v[f[2]], p);
 }
 
-Sign Delaunay3Core::insphere(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p) {
-    ++counters.insphere_calls;
-    const Sign s = predicates::insphere(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d),
-                                        mesh.point(p));
-    if (s != Sign::Zero) return s;
-    // The caller's indices are loaded only for the rare exact tie.
+Sign Delaunay3Core::insphere_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p) {
     return predicates::insphere_sos(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d),
                                     mesh.point(p), input_index[a], input_index[b], input_index[c],
                                     input_index[d], input_index[p]);
 }
 
-bool Delaunay3Core::conflict(TetIdx t, VertIdx p) {
+bool Delaunay3Core::conflict_infinite(TetIdx t, VertIdx p) {
     const VertIdx* v = &mesh.tv[4 * std::size_t{t}];
-    if (v[3] != kInfinite) return insphere(v[0], v[1], v[2], v[3], p) == Sign::Positive;
     constexpr unsigned m = kInfiniteSlot;
     const Sign side = orient_replacing(t, m, p);
     if (side != Sign::Zero) return side == Sign::Positive;
@@ -119,8 +111,9 @@ bool Delaunay3Core::conflict(TetIdx t, VertIdx p) {
     // perturbed insphere with x decides "inside the perturbed circumcircle" (x's own
     // perturbation term is orient3d(face, p) = 0 and drops out). t with kInfinite replaced by
     // x is negative; swapping two of its finite vertices makes it positive.
+    // (The tetrahedron behind may carry a cavity mark in its slot 1: masked.)
     const FaceIdx behind = mesh.adj[4 * std::size_t{t} + m];
-    const VertIdx x = mesh.tv[behind];
+    const VertIdx x = mesh.tv[behind] & kVertexBits;
     return insphere(v[1], v[0], v[2], x, p) == Sign::Positive;
 }
 

@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "predicates/insphere.hpp"
 #include "predicates/sign.hpp"
 #include "triangulation/delaunay_3d.hpp"
 #include "triangulation/mesh3.hpp"
@@ -34,11 +35,21 @@ class Delaunay3Core {
     /// lies on the same side of face k as that vertex.
     Sign orient_replacing(TetIdx t, unsigned k, VertIdx p);
     /// Perturbed insphere of four finite mesh vertices (positively oriented) and p: never Zero.
-    Sign insphere(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p);
+    /// Inline: the filter decides almost every call; the exact tie goes out of line.
+    Sign insphere(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p) {
+        ++counters.insphere_calls;
+        const Sign s = predicates::insphere(mesh.point(a), mesh.point(b), mesh.point(c),
+                                            mesh.point(d), mesh.point(p));
+        return s != Sign::Zero ? s : insphere_tie(a, b, c, d, p);
+    }
     /// True when p lies in the perturbed circumsphere of t. For an infinite tetrahedron: p lies
     /// strictly beyond its hull face, or in the face's plane and inside its perturbed
     /// circumcircle (the limit of the circumspheres as the fourth vertex goes to infinity).
-    bool conflict(TetIdx t, VertIdx p);
+    bool conflict(TetIdx t, VertIdx p) {
+        const VertIdx* v = &mesh.tv[4 * std::size_t{t}];
+        if (v[3] != kInfinite) return insphere(v[0], v[1], v[2], v[3], p) == Sign::Positive;
+        return conflict_infinite(t, p);
+    }
     bool same_point(VertIdx a, VertIdx b) const;
 
     /// Builds the first tetrahedron and its four infinite neighbours from the first four
@@ -81,6 +92,10 @@ class Delaunay3Core {
     TetIdx last_tet = kNone;
 
   private:
+    /// insphere_sos by the caller's indices, for an exact tie.
+    Sign insphere_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p);
+    bool conflict_infinite(TetIdx t, VertIdx p);
+
     /// One boundary face of a region to star: the new tetrahedron's vertices, the slot of p in
     /// it (the face slot that faces outward), and the outside twin of that face.
     struct StarFace {

@@ -47,6 +47,10 @@ inline constexpr std::uint32_t kMaxTetSlots = 0x3FFFFFFFu;
 /// The vertices of face k (opposite vertex k) in the order that sees vertex k positively.
 inline constexpr unsigned kFaceVertex[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
 
+/// Bowyer-Watson's cavity search marks tetrahedra in the high bits of vertex slot 1 (see
+/// bowyer_watson_3d.cpp); a vertex read from another tetrahedron meanwhile is masked with this.
+inline constexpr std::uint32_t kVertexBits = 0x3FFFFFFFu;
+
 /// The slot of kInfinite in an infinite tetrahedron.
 inline constexpr unsigned kInfiniteSlot = 3;
 
