@@ -82,6 +82,7 @@ class CavityInserter {
         std::uint32_t generation;
     };
     std::vector<Face> boundary_;
+    std::vector<std::uint8_t> face_mask_;  ///< per cavity tetrahedron: its boundary faces
     std::vector<Slot> table_;
     std::uint32_t generation_ = 0;
     unsigned shift_ = 64;
@@ -132,11 +133,13 @@ class CavityInserter {
 
     void star(VertIdx p) {
         ensure(boundary_, 0, 4 * cavity_count_);
+        ensure(face_mask_, 0, cavity_count_);
         std::size_t faces = 0;
         for (std::size_t i = 0; i < cavity_count_; ++i) {
             const TetIdx c = cavity_[i];
             const VertIdx* cv = &mesh_.tv[4 * std::size_t{c}];
             const VertIdx v[4] = {cv[0], cv[1] & kVertexBits, cv[2], cv[3]};
+            unsigned mask = 0;
             for (unsigned k = 0; k < 4; ++k) {
                 const FaceIdx outside = mesh_.adj[4 * std::size_t{c} + k];
                 Face& f = boundary_[faces];
@@ -147,23 +150,43 @@ class CavityInserter {
                 f.v[k] = p;
                 f.k = k;
                 f.outside = outside;
-                faces += (mesh_.tv[4 * std::size_t{tet_of(outside)} + 1] & kInsideMark) ? 0 : 1;
+                const unsigned on_boundary =
+                    (mesh_.tv[4 * std::size_t{tet_of(outside)} + 1] & kInsideMark) ? 0u : 1u;
+                mask |= on_boundary << k;
+                faces += on_boundary;
             }
+            face_mask_[i] = static_cast<std::uint8_t>(mask);
         }
         prepare_table(3 * faces);
-        for (std::size_t i = 0; i < faces; ++i) {
-            const Face& f = boundary_[i];
-            const TetIdx t = i < cavity_count_ ? cavity_[i] : mesh_.new_tet();
-            VertIdx* w = &mesh_.tv[4 * std::size_t{t}];
-            w[0] = f.v[0];
-            w[1] = f.v[1];
-            w[2] = f.v[2];
-            w[3] = f.v[3];
-            mesh_.link(4 * t + f.k, f.outside);
-            for (unsigned j = 0; j < 4; ++j) {
-                if (j == f.k) continue;
-                const OtherTwo e = kOtherTwo[j][f.k];
-                glue(detail::edge_key(f.v[e.a], f.v[e.b]), 4 * t + j);
+        // Per cavity tetrahedron c, its boundary faces are consecutive. Two of them, k and j,
+        // meet along the edge of c they share: the new tetrahedra c[k := p] and c[j := p] are
+        // glued directly (face j of one to face k of the other); only edges leading into the
+        // cavity (face j of c interior) go through the edge table.
+        std::size_t next = 0;
+        for (std::size_t i = 0; i < cavity_count_; ++i) {
+            const unsigned mask = face_mask_[i];
+            TetIdx made[4];
+            for (unsigned k = 0; k < 4; ++k) {
+                if (!(mask & (1u << k))) continue;
+                const Face& f = boundary_[next];
+                const TetIdx t = next < cavity_count_ ? cavity_[next] : mesh_.new_tet();
+                ++next;
+                made[k] = t;
+                VertIdx* w = &mesh_.tv[4 * std::size_t{t}];
+                w[0] = f.v[0];
+                w[1] = f.v[1];
+                w[2] = f.v[2];
+                w[3] = f.v[3];
+                mesh_.link(4 * t + k, f.outside);
+                for (unsigned j = 0; j < 4; ++j) {
+                    if (j == k) continue;
+                    if (mask & (1u << j)) {
+                        if (j < k) mesh_.link(4 * t + j, 4 * made[j] + k);
+                    } else {
+                        const OtherTwo e = kOtherTwo[j][k];
+                        glue(detail::edge_key(f.v[e.a], f.v[e.b]), 4 * t + j);
+                    }
+                }
             }
         }
         for (std::size_t i = faces; i < cavity_count_; ++i) mesh_.kill_tet(cavity_[i]);
