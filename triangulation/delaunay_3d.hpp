@@ -39,7 +39,8 @@ struct Delaunay3Counters {
     std::uint64_t flips_2_3 = 0;       ///< Green-Sibson flips
     std::uint64_t flips_3_2 = 0;
     std::uint64_t flips_4_4 = 0;
-    std::uint64_t unflippable = 0;  ///< Green-Sibson: non-Delaunay faces left for later
+    std::uint64_t unflippable = 0;  ///< Green-Sibson: non-Delaunay link faces not flippable when
+                                    ///< met, tried again later (counted each time)
 };
 
 /// The Delaunay tetrahedralization in the caller's vertex numbering. When fewer than four

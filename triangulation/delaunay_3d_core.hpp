@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Shared machinery of the 3D Delaunay constructions (internal to triangulation/): the points in
 // insertion order, the exact conflict test with the infinite vertex, the remembering visibility
-// walk, the first tetrahedron, the star of a point over a region (the retetrahedralization both
-// Bowyer-Watson's cavities and Green-Sibson's splits and flips are made of), and the conversion
-// to the caller's numbering.
+// walk, the first tetrahedron, the star of a point over a region (the retetrahedralization
+// Green-Sibson's splits and flips are made of; Bowyer-Watson stars its cavities with its own,
+// specialised copy), and the conversion to the caller's numbering.
 #pragma once
 
 #include <cstdint>

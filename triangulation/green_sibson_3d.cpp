@@ -146,7 +146,10 @@ class FlipInserter {
                 if (mesh_.is_dead(t)) continue;
                 const unsigned i = mesh_.slot_of(t, p);
                 if (i == 4) continue;  // the slot was recycled for a tetrahedron without p
-                if (try_flip(t, i, p) == Outcome::Unflippable) deferred_.push_back(t);
+                if (try_flip(t, i, p) == Outcome::Unflippable) {
+                    deferred_.push_back(t);
+                    ++core_.counters.unflippable;
+                }
             }
             if (deferred_.empty()) return;
             const std::uint64_t flips = flip_count();
@@ -155,7 +158,6 @@ class FlipInserter {
             EM_ASSERT(flips != flips_at_retry);
             flips_at_retry = flips;
             stack_.swap(deferred_);
-            ++core_.counters.unflippable;
         }
     }
 

@@ -387,9 +387,16 @@ TEST(Triangulation_Delaunay3, CountersReportTheWork) {
     EXPECT_GT(gs.counters.flips_2_3, 1000u);
     EXPECT_GT(gs.counters.flips_3_2, 100u);
     EXPECT_EQ(gs.counters.cavity_tets, 0u);
-    // A grid exercises the splits on faces and edges and the 4-4 flips.
-    const tri::Delaunay3Result grid = tri::green_sibson_3d(cubic_grid(6, 1), {});
+    // A grid in random order exercises the splits on faces and edges, the 4-4 flips and the
+    // faces found unflippable and tried again (the output is checked in
+    // CubicGridsAreMassivelyCospherical).
+    const tri::Delaunay3Result grid =
+        tri::green_sibson_3d(cubic_grid(6, 1), {tri::InsertionOrder::Random, 1});
+    EXPECT_GT(grid.counters.splits_2_6, 0u);
+    EXPECT_GT(grid.counters.splits_edge, 0u);
     EXPECT_GT(grid.counters.flips_4_4, 0u);
+    EXPECT_GT(grid.counters.unflippable, 0u);
+    EXPECT_TRUE(tri::check_delaunay_3d(grid.mesh).ok);
 }
 
 TEST(Triangulation_Delaunay3, HilbertOrderIsAPermutationAndLocal) {
