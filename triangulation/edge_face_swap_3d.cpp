@@ -316,14 +316,11 @@ EdgeFaceSwapCounters swap_faces_3d(FlipMesh3& mesh, SwapCriterion3 criterion) {
         }
         apply(mesh, plan, created);
         count_flip(counters, plan.kind);
+        // Every face of the new tetrahedra, the ones between them too: a face between two new
+        // tetrahedra is where a later 4-4 swap through them is seen from (its other faces see
+        // other point sets), and the swap that would undo this one is simply never preferred.
         for (const TetIdx t : created) {
-            for (unsigned k = 0; k < 4; ++k) {
-                const FacetIdx g = 4 * t + k;
-                const FacetIdx twin = mesh.adj[g];
-                if (twin == kNone) continue;
-                if (std::find(created.begin(), created.end(), twin / 4) != created.end()) continue;
-                push(g);
-            }
+            for (unsigned k = 0; k < 4; ++k) push(4 * t + k);
         }
     }
     if (criterion == SwapCriterion3::Delaunay) {

@@ -10,7 +10,7 @@
 // the three tetrahedra xyzd, xyze, xyde, the 3-2 swap removes xy; if d, e, x, y are coplanar
 // (de meets xy) the 4-4 swap (xy interior, four tetrahedra) or the 2-2 swap (xy on the boundary,
 // two) turns xy into de. The swap is made when the criterion strictly prefers the new
-// tetrahedra, and the outer faces of the new tetrahedra are queued; the loop ends when no face
+// tetrahedra, and the faces of the new tetrahedra are queued; the loop ends when no face
 // wants a swap. Criteria:
 //  - Delaunay: insphere_sos(abcd, e) > 0 (the same decision for all four kinds): lifted
 //    lower, so the loop reaches the Delaunay tetrahedralization when it does not stall; in 3D
