@@ -51,14 +51,7 @@ namespace {
 
 using predicates::Sign;
 
-/// A swap found at a face: the tetrahedra it removes and the ones it makes.
-struct FlipPlan {
-    FlipKind3 kind = FlipKind3::None;
-    std::array<TetIdx, 4> old{};
-    unsigned old_count = 0;
-    std::array<Tet, 4> made{};
-    unsigned made_count = 0;
-};
+using FlipPlan = FlipPlan3;
 
 Sign orient(const FlipMesh3& mesh, const Tet& t) {
     return predicates::orient3d(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3]));
@@ -150,7 +143,7 @@ bool plan_44(const FlipMesh3& mesh, const FaceConfig& q, VertIdx x, VertIdx y, V
 
 /// The valid swap at the interior face of facet f, if any (at most one exists for the five
 /// points; the order of the tries does not matter).
-bool plan_flip(const FlipMesh3& mesh, FacetIdx f, FlipPlan& plan, EdgeFaceSwapCounters* counters) {
+bool plan_flip(const FlipMesh3& mesh, FacetIdx f, FlipPlan& plan, std::uint64_t* edges_examined) {
     const FaceConfig q = face_config(mesh, f);
     const Tet t23[3] = {{q.a, q.b, q.e, q.d}, {q.b, q.c, q.e, q.d}, {q.c, q.a, q.e, q.d}};
     Sign s[3];
@@ -169,10 +162,10 @@ bool plan_flip(const FlipMesh3& mesh, FacetIdx f, FlipPlan& plan, EdgeFaceSwapCo
     for (int i = 0; i < 3; ++i) {
         const VertIdx x = face[i], y = face[(i + 1) % 3], z = face[(i + 2) % 3];
         if (s[i] == Sign::Negative) {
-            if (counters != nullptr) ++counters->edges_examined;
+            if (edges_examined != nullptr) ++*edges_examined;
             if (plan_32(mesh, q, x, y, z, plan)) return true;
         } else if (s[i] == Sign::Zero && zeros == 1) {
-            if (counters != nullptr) ++counters->edges_examined;
+            if (edges_examined != nullptr) ++*edges_examined;
             if (plan_44(mesh, q, x, y, z, plan)) return true;
         }
     }
@@ -266,6 +259,13 @@ std::string_view swap_criterion_3d_name(SwapCriterion3 criterion) {
     return "unknown";
 }
 
+bool plan_flip_3d(const FlipMesh3& mesh, FacetIdx f, FlipPlan3& plan, std::uint64_t* edges_examined) {
+    if (mesh.is_dead(f / 4) || mesh.adj[f] == kNone) return false;
+    return plan_flip(mesh, f, plan, edges_examined);
+}
+
+void apply_flip_3d(FlipMesh3& mesh, const FlipPlan3& plan, std::vector<TetIdx>& created) { apply(mesh, plan, created); }
+
 bool locally_delaunay_sos(const FlipMesh3& mesh, FacetIdx f) {
     EM_ASSERT(mesh.adj[f] != kNone);
     return !delaunay_wants(mesh, f);
@@ -303,12 +303,12 @@ EdgeFaceSwapCounters swap_faces_3d(FlipMesh3& mesh, SwapCriterion3 criterion) {
         ++counters.faces_examined;
         if (criterion == SwapCriterion3::Delaunay) {
             if (!delaunay_wants(mesh, f)) continue;
-            if (!plan_flip(mesh, f, plan, &counters)) {
+            if (!plan_flip(mesh, f, plan, &counters.edges_examined)) {
                 ++counters.not_flippable;
                 continue;
             }
         } else {
-            if (!plan_flip(mesh, f, plan, &counters)) {
+            if (!plan_flip(mesh, f, plan, &counters.edges_examined)) {
                 ++counters.not_flippable;
                 continue;
             }

@@ -23,7 +23,9 @@
 // Works on any tetrahedralization (convex hull or not): the domain and its boundary never change.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <vector>
 #include <string_view>
 
 #include "triangulation/flip_mesh_3d.hpp"
@@ -69,6 +71,22 @@ EdgeFaceSwapCounters swap_faces_3d(Tetrahedralization3& mesh, SwapCriterion3 cri
 /// any criterion says (test and bench scaffolding: scrambling a Delaunay mesh). Returns the
 /// kind made, None when the face has no valid swap.
 FlipKind3 flip_face_3d(FlipMesh3& mesh, FacetIdx f);
+
+/// A swap found at a face: the tetrahedra it removes and the positive ones it makes.
+struct FlipPlan3 {
+    FlipKind3 kind = FlipKind3::None;
+    std::array<TetIdx, 4> old{};
+    unsigned old_count = 0;
+    std::array<Tet, 4> made{};
+    unsigned made_count = 0;
+};
+
+/// The valid swap at the interior face of facet f (at most one exists), into `plan`; false
+/// when there is none. `edges_examined`, when given, counts the edge rings walked.
+bool plan_flip_3d(const FlipMesh3& mesh, FacetIdx f, FlipPlan3& plan, std::uint64_t* edges_examined = nullptr);
+
+/// Makes a planned swap; the new tetrahedra's slots go to `created`.
+void apply_flip_3d(FlipMesh3& mesh, const FlipPlan3& plan, std::vector<TetIdx>& created);
 
 /// Whether the interior face of facet f is locally Delaunay by insphere_sos (never a tie).
 bool locally_delaunay_sos(const FlipMesh3& mesh, FacetIdx f);

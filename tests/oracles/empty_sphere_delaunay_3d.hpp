@@ -20,21 +20,24 @@ namespace exactmesh::oracles {
 /// Each tetrahedron's vertex indices sorted increasingly.
 using TetSet = std::set<std::array<std::uint32_t, 4>>;
 
-inline TetSet empty_sphere_delaunay_3d(std::span<const double> xyz) {
+/// Over the vertices in `active` only (increasing indices into xyz, which stay the SoS ranks).
+inline TetSet empty_sphere_delaunay_3d(std::span<const double> xyz, const std::vector<std::uint32_t>& active) {
     using predicates::Sign;
-    const auto n = static_cast<std::uint32_t>(xyz.size() / 3);
     auto p = [&](std::uint32_t v) { return xyz.data() + 3 * std::size_t{v}; };
     TetSet out;
-    for (std::uint32_t a = 0; a < n; ++a) {
-        for (std::uint32_t b = a + 1; b < n; ++b) {
-            for (std::uint32_t c = b + 1; c < n; ++c) {
-                for (std::uint32_t d = c + 1; d < n; ++d) {
+    const std::size_t n = active.size();
+    for (std::size_t ia = 0; ia < n; ++ia) {
+        for (std::size_t ib = ia + 1; ib < n; ++ib) {
+            for (std::size_t ic = ib + 1; ic < n; ++ic) {
+                for (std::size_t id = ic + 1; id < n; ++id) {
+                    const std::uint32_t a = active[ia], b = active[ib], c = active[ic], d = active[id];
                     const Sign s = predicates::orient3d(p(a), p(b), p(c), p(d));
                     if (s == Sign::Zero) continue;
                     std::array<std::uint32_t, 4> t{a, b, c, d};
                     if (s == Sign::Negative) std::swap(t[0], t[1]);
                     bool empty = true;
-                    for (std::uint32_t e = 0; e < n && empty; ++e) {
+                    for (std::size_t ie = 0; ie < n && empty; ++ie) {
+                        const std::uint32_t e = active[ie];
                         if (e == a || e == b || e == c || e == d) continue;
                         empty = predicates::insphere_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), t[0], t[1], t[2],
                                                          t[3], e) != Sign::Positive;
@@ -45,6 +48,12 @@ inline TetSet empty_sphere_delaunay_3d(std::span<const double> xyz) {
         }
     }
     return out;
+}
+
+inline TetSet empty_sphere_delaunay_3d(std::span<const double> xyz) {
+    std::vector<std::uint32_t> all(xyz.size() / 3);
+    for (std::uint32_t v = 0; v < all.size(); ++v) all[v] = v;
+    return empty_sphere_delaunay_3d(xyz, all);
 }
 
 /// The tetrahedra of a flat list (4 per tetrahedron), each sorted.
