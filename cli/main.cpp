@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
         add_fuzz_command(app, exit_status);
         add_swap_command(app);
         add_min_max_command(app);
+        add_swap3d_command(app);
         try {
             app.parse(argc, argv);
         } catch (const CLI::ParseError& error) {
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
         }
         if (app.get_subcommands().empty()) {
             return report_error(
-                "a subcommand is required: triangulate, cdt, check, fuzz, swap or min-max (see "
+                "a subcommand is required: triangulate, cdt, check, fuzz, swap, min-max or swap3d (see "
                 "exactmesh --help)",
                 kExitBadInput);
         }

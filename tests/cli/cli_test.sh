@@ -341,9 +341,60 @@ swap_bad_input() {
   expect_error 2 'output is required' min-max "$data/kite.node"
 }
 
+swap3d_criteria() {
+  # Two tetrahedra on a face whose far apex is inside the near sphere: one 2-3 swap, Delaunay.
+  run 0 swap3d "$data/pair.node" "$data/pair.ele" -o "$work/pair.ele" --stats || return
+  grep -q '^flips_23: 1$' "$work/out" || fail "swap3d pair: expected one 2-3 swap: $(cat "$work/out")"
+  grep -q '^stalled_faces: 0$' "$work/out" || fail "swap3d pair: stalled: $(cat "$work/out")"
+  grep -q '^tetrahedra: 3$' "$work/out" || fail "swap3d pair: expected 3 tetrahedra"
+  [[ $(head -n1 "$work/pair.ele") == "3 4 0" ]] || fail "swap3d pair: .ele header $(head -n1 "$work/pair.ele")"
+  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "swap3d --stats: no construct_seconds"
+  for name in faces_examined edges_examined flips_23 flips_32 flips_44 flips_22 not_flippable; do
+    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "swap3d --stats: no '$name: N' line"
+  done
+  # The output reads back (TetGen orientation round trip) and swapping it again changes nothing.
+  run 0 swap3d "$data/pair.node" "$work/pair.ele" -o "$work/again.ele" --stats || return
+  grep -q '^flips_23: 0$' "$work/out" || fail "swap3d: second pass swapped: $(cat "$work/out")"
+  cmp -s "$work/pair.ele" "$work/again.ele" || fail "swap3d: second pass changed the mesh"
+  # The stall instance of tests/unit/triangulation/edge_face_swap_3d_test.cpp: 1-based files,
+  # Delaunay swapping stops with 6 faces not locally Delaunay and no valid swap.
+  run 0 swap3d "$data/stall7.node" "$data/stall7_placing.ele" -o "$work/stall.ele" --stats --quality || return
+  grep -q '^stalled_faces: 6$' "$work/out" || fail "swap3d stall: $(cat "$work/out")"
+  sed -n 2p "$work/stall.ele" | grep -q '^1 ' || fail "swap3d: 1-based input must give 1-based output"
+  for name in min_dihedral_degrees max_dihedral_degrees min_volume_edge mean_volume_edge max_radius_edge slivers; do
+    grep -Eq "^$name: [0-9.e+-]+$" "$work/out" || fail "swap3d --quality: no '$name: value' line"
+  done
+  [[ $(grep -c '^dihedral_degrees\[' "$work/out") -eq 18 ]] || fail "swap3d --quality: expected 18 histogram bins"
+  for criterion in max-min-dihedral min-max-dihedral volume-edge; do
+    run 0 swap3d "$data/stall7.node" "$data/stall7_placing.ele" -o "$work/$criterion.ele" --criterion "$criterion" \
+      --stats --quality || continue
+    grep -q "^criterion: $criterion$" "$work/out" || fail "swap3d: criterion line for $criterion"
+    ! grep -q '^stalled_faces' "$work/out" || fail "swap3d: stalled_faces is a Delaunay counter"
+    if grep -Ev '^[a-z_0-9]+(\[[0-9]+,[0-9]+[])])?: [^ ]+$' "$work/out" | grep -q .; then
+      fail "swap3d --stats --quality: a line is not 'name: value'"
+    fi
+  done
+}
+
+swap3d_bad_input() {
+  expect_error 2 'nan3d\.node:[0-9]+: non-finite z coordinate' \
+    swap3d "$data/nan3d.node" "$data/pair.ele" -o "$work/x.ele"
+  expect_error 2 'planar\.node:1: dimension must be 3' swap3d "$data/planar.node" "$data/pair.ele" -o "$work/x.ele"
+  expect_error 2 'pair_bad_node\.ele:3: node number 9 out of range' \
+    swap3d "$data/pair.node" "$data/pair_bad_node.ele" -o "$work/x.ele"
+  expect_error 2 'pair_inverted\.ele: tetrahedron 0 \(1, 0, 3, 2\) is negatively oriented' \
+    swap3d "$data/pair.node" "$data/pair_inverted.ele" -o "$work/x.ele"
+  expect_error 2 'pair_overlap\.ele: face .* is shared by 3 tetrahedra' \
+    swap3d "$data/pair.node" "$data/pair_overlap.ele" -o "$work/x.ele"
+  expect_error 2 'foo not in' swap3d "$data/pair.node" "$data/pair.ele" -o "$work/x.ele" --criterion foo
+  expect_error 2 'the output must be a \.ele file' swap3d "$data/pair.node" "$data/pair.ele" -o "$work/x.node"
+  expect_error 2 'missing\.ele: cannot open for reading' swap3d "$data/pair.node" "$work/missing.ele" -o "$work/x.ele"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
-    check_rejects_non_delaunay | cdt | swap_criteria | min_max | swap_bad_input)
+    check_rejects_non_delaunay | cdt | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
+    swap3d_bad_input)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2
