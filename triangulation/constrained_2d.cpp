@@ -959,7 +959,10 @@ bool CdtBuilder::build() {
         insert_piece(piece);
     }
     if (options_.recovery == SegmentRecovery::Conforming) conform();
-    if (enclose_in_box_) enclose_in_box();
+    if (enclose_in_box_) {
+        bend_through_near_vertices();
+        enclose_in_box();
+    }
     remove_exterior_and_holes();
     assign_regions();
     domain_marked_ = true;

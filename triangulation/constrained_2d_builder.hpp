@@ -254,8 +254,15 @@ private:
     void drain_flip_stack();
     /// The exact fan test of split_constrained_edge: p strictly inside both triangles' star.
     bool star_contains(VertIdx p, VertIdx a, VertIdx b, VertIdx c, VertIdx d);
-    /// Splits the constrained edge e at its apex w (within rounding of the segment).
+    /// The half-edge (e or its twin) whose apex lies within rounding of e's segment, strictly
+    /// between e's ends; kNone if neither.
+    EdgeIdx near_apex(EdgeIdx e) const;
+    /// The chain u - w - v replaces u - v = g, w the apex of g's triangle; returns w.
+    VertIdx bend_through_apex(EdgeIdx g);
+    /// bend_through_apex(near_apex(e)), or GeometryError when there is no such apex.
     VertIdx bend_at_apex(EdgeIdx e);
+    /// Before refinement: every vertex within rounding of a segment becomes a vertex of it.
+    void bend_through_near_vertices();
 
     std::string vertex_name(VertIdx v) const {
         return "vertex " + std::to_string(core_.input_index[v] + options_.first_index);

@@ -14,6 +14,7 @@
 #include "triangulation/constrained_triangulation_2d.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
@@ -172,31 +173,47 @@ VertIdx CdtBuilder::split_constrained_edge(EdgeIdx e, double x, double y) {
     // The enclosing box keeps every segment off the convex hull.
     EM_ASSERT(c != kInfinite && d != kInfinite);
     const std::uint32_t segment = segment_of_[e];
-    const VertIdx p = add_vertex(x, y);
-    if (core_.same_point(p, a) || core_.same_point(p, b)) {
+    // The point, then the point moved 1, 1, 2, 2, 3, 3 ulps per coordinate to either side of the
+    // line (left first): when a neighbouring triangle is a sliver (a vertex within ulps of the
+    // piece), the point fits on its other side.
+    const double* pa = mesh_.point(a);
+    const double* pb = mesh_.point(b);
+    const double nx = pa[1] - pb[1], ny = pb[0] - pa[0];  // left normal of a -> b
+    for (int attempt = 0; attempt < 7; ++attempt) {
+        double px = x, py = y;
+        const double side = attempt % 2 == 1 ? 1.0 : -1.0;
+        for (int step = 0; step < (attempt + 1) / 2; ++step) {
+            if (nx != 0) px = std::nextafter(px, side * nx > 0 ? INFINITY : -INFINITY);
+            if (ny != 0) py = std::nextafter(py, side * ny > 0 ? INFINITY : -INFINITY);
+        }
+        const VertIdx p = add_vertex(px, py);
+        if (core_.same_point(p, a) || core_.same_point(p, b)) {
+            remove_last_vertex();
+            if (attempt > 0) continue;
+            throw GeometryError("segment " + std::to_string(segment + options_.first_index) + ": its piece " +
+                                point_text(mesh_.point(a)) + " - " + point_text(mesh_.point(b)) +
+                                " is too short to split (adjacent doubles)");
+        }
+        const Sign s = core_.orient(a, b, p);
+        // On the line (between a and b), or off it but inside the quadrilateral a, d, b, c and
+        // seeing its four sides: the same four triangles (p, b, c), (p, c, a), (p, a, d),
+        // (p, d, b); off the line, the pieces a - p - b bend by the rounding of p.
+        if ((s == Sign::Zero && core_.strictly_between(a, b, p)) || (s != Sign::Zero && star_contains(p, a, b, c, d))) {
+            flip_stack_.clear();
+            split_edge(e, p);
+            drain_flip_stack();
+            ++edit_counters_.edge_splits;
+            return p;
+        }
         remove_last_vertex();
-        throw GeometryError("segment " + std::to_string(segment + options_.first_index) + ": its piece " +
-                            point_text(mesh_.point(a)) + " - " + point_text(mesh_.point(b)) +
-                            " is too short to split (adjacent doubles)");
     }
-    const Sign s = core_.orient(a, b, p);
-    // On the line (between a and b), or off it but inside the quadrilateral a, d, b, c and
-    // seeing its four sides: the same four triangles (p, b, c), (p, c, a), (p, a, d), (p, d, b);
-    // off the line, the pieces a - p - b bend by the rounding of p.
-    if ((s == Sign::Zero && core_.strictly_between(a, b, p)) || (s != Sign::Zero && star_contains(p, a, b, c, d))) {
-        flip_stack_.clear();
-        split_edge(e, p);
-        drain_flip_stack();
-        ++edit_counters_.edge_splits;
-        return p;
-    }
-    remove_last_vertex();
     return bend_at_apex(e);
 }
 
-VertIdx CdtBuilder::bend_at_apex(EdgeIdx e) {
-    // The apex nearest the segment's line, if within 2^-46 of the coordinates' magnitude and
-    // between the edge's ends (the tolerance of conforming bends; the checker allows 2^-40).
+EdgeIdx CdtBuilder::near_apex(EdgeIdx e) const {
+    // The apex (of e's triangle or its twin's) nearest the segment's line, if within 2^-46 of
+    // the coordinates' magnitude and strictly between the edge's ends along the segment (the
+    // tolerance of conforming bends; the checker allows 2^-40); long double arithmetic.
     const std::uint32_t segment = segment_of_[e];
     const double* s0 = mesh_.point(segment_ends_[segment][0]);
     const double* s1 = mesh_.point(segment_ends_[segment][1]);
@@ -228,27 +245,64 @@ VertIdx CdtBuilder::bend_at_apex(EdgeIdx e) {
             best = side;
         }
     }
-    if (best == kNone) {
-        throw GeometryError("segment " + std::to_string(segment + options_.first_index) + ": its piece " +
-                            point_text(mesh_.point(a)) + " - " + point_text(mesh_.point(b)) +
-                            " cannot be split there: the point is not within rounding of the piece, or a "
-                            "neighbouring triangle is too thin");
-    }
-    // Triangle (u, v, w) of `best`: the chain u - w - v replaces u - v, and the triangle moves to
-    // the other side of the constraint.
-    const EdgeIdx g = best, h = mesh_.twin[best];
+    return best;
+}
+
+VertIdx CdtBuilder::bend_through_apex(EdgeIdx g) {
+    // Triangle (u, v, w) of g: the chain u - w - v replaces u - v, and the triangle moves to the
+    // other side of the constraint.
+    const std::uint32_t segment = segment_of_[g];
+    const EdgeIdx h = mesh_.twin[g];
     const VertIdx u = mesh_.origin(g), v = mesh_.destination(g), w = apex(g);
     const TriIdx t = triangle_of(g);
     mark(next_edge(g), segment);
     mark(prev_edge(g), segment);
     segment_of_[g] = segment_of_[h] = kNone;
-    const TriIdx other = triangle_of(h);
-    put_on_side(t, side_of(other));
-    touched_.push_back(t);
+    put_on_side(t, side_of(triangle_of(h)));
+    if (domain_marked_) touched_.push_back(t);
     std::vector<std::pair<VertIdx, VertIdx>> released{{u, v}};
     restore_delaunay(released);
-    ++edit_counters_.edge_bends;
     return w;
+}
+
+VertIdx CdtBuilder::bend_at_apex(EdgeIdx e) {
+    const EdgeIdx best = near_apex(e);
+    if (best == kNone) {
+        throw GeometryError("segment " + std::to_string(segment_of_[e] + options_.first_index) + ": its piece " +
+                            point_text(mesh_.point(mesh_.origin(e))) + " - " +
+                            point_text(mesh_.point(mesh_.destination(e))) +
+                            " cannot be split: features within rounding of it (finer than double precision "
+                            "resolves)");
+    }
+    ++edit_counters_.edge_bends;
+    return bend_through_apex(best);
+}
+
+void CdtBuilder::bend_through_near_vertices() {
+    // Every piece whose neighbouring triangle has its apex within rounding of the segment (a
+    // vertex a few ulps off it) bends through that vertex, as the conforming recovery bends:
+    // else refinement would have to resolve the ulp-wide gap between them.
+    std::vector<std::pair<VertIdx, VertIdx>> pieces;
+    for (EdgeIdx e = 0; e < segment_of_.size(); ++e) {
+        if (segment_of_[e] == kNone || mesh_.is_dead(triangle_of(e))) continue;
+        if (mesh_.origin(e) < mesh_.destination(e)) pieces.emplace_back(mesh_.origin(e), mesh_.destination(e));
+    }
+    while (!pieces.empty()) {
+        const auto [a, b] = pieces.back();
+        pieces.pop_back();
+        const EdgeIdx e = find_edge(a, b);
+        if (e == kNone || segment_of_[e] == kNone) continue;
+        const EdgeIdx side = near_apex(e);
+        if (side == kNone) continue;
+        const std::uint32_t segment = segment_of_[e];
+        const VertIdx w = bend_through_apex(side);
+        ++result_.counters.conforming_bends;
+        result_.warnings.push_back("vertex " + std::to_string(core_.input_index[w] + options_.first_index) +
+                                   " lies within rounding of segment " + std::to_string(segment + options_.first_index) +
+                                   "; the segment bends through it");
+        pieces.emplace_back(a, w);
+        pieces.emplace_back(w, b);
+    }
 }
 
 }  // namespace detail
