@@ -37,7 +37,8 @@ using tri::VertIdx;
 struct BadTriangle {
     double key;  // larger is worse
     TriIdx t;
-    std::uint32_t version;
+    std::uint32_t version : 31;
+    std::uint32_t too_big : 1;  // an edge longer than the size (else only skinny)
     bool operator<(const BadTriangle& other) const { return key < other.key; }
 };
 
@@ -82,10 +83,25 @@ private:
     void process_touched();
     void evaluate(TriIdx t);
     bool encroached_from(EdgeIdx e);  // the apex of e's triangle encroaches e
+    struct SplitPoint {
+        double x = 0, y = 0;
+        VertIdx apex = kNone;  // a concentric-shell split about this vertex
+        int shell = 0;         // at distance 2^shell
+    };
+    /// Where piece e splits: its midpoint, or a concentric shell about its one corner end.
+    SplitPoint split_point(EdgeIdx e) const;
     void split_piece(const PieceToSplit& piece);
+    bool leave_at_small_angle(EdgeIdx e, double shortest_edge) const;
+    std::vector<double> small_apex_angle_;    // per initial vertex: the smallest angle between its
+                                              // pieces (radians) when below 60 degrees, else 0
     bool small_angle_rule(VertIdx u, VertIdx v) const;
+    void find_small_input_angles();
     void spend_budget();
     const double* point(VertIdx v) const { return mesh_.point(v); }
+    double squared_distance(VertIdx u, VertIdx v) const {
+        const double dx = point(u)[0] - point(v)[0], dy = point(u)[1] - point(v)[1];
+        return dx * dx + dy * dy;
+    }
 };
 
 void Refiner::check_domain_and_budget() {
@@ -128,6 +144,35 @@ void Refiner::check_domain_and_budget() {
     budget_ = static_cast<std::uint64_t>(std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
 }
 
+void Refiner::find_small_input_angles() {
+    // Sectors of the domain about each vertex between two consecutive pieces: from each piece
+    // v -> w with a domain triangle on its left, turn counter-clockwise about v through domain
+    // triangles, summing their angles at v, up to the next piece. A sector below 60 degrees is a
+    // small input angle (measured inside the domain: a sharp notch of a hole is none).
+    small_apex_angle_.assign(initial_vertices_, 0.0);
+    auto corner_angle = [&](VertIdx o, VertIdx p, VertIdx q) {
+        const double ux = point(p)[0] - point(o)[0], uy = point(p)[1] - point(o)[1];
+        const double wx = point(q)[0] - point(o)[0], wy = point(q)[1] - point(o)[1];
+        return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+    };
+    for (EdgeIdx e = 0; e < mesh_.tv.size(); ++e) {
+        if (cdt_.segment_of(e) == kNone || !cdt_.in_domain(tri::triangle_of(e))) continue;
+        const VertIdx v = mesh_.origin(e);
+        double sector = 0;
+        EdgeIdx g = e;  // v -> w in a domain triangle
+        for (std::size_t turns = 0; turns < mesh_.tv.size(); ++turns) {
+            const EdgeIdx back = tri::prev_edge(g);  // x -> v
+            sector += corner_angle(v, mesh_.destination(g), mesh_.origin(back));
+            if (cdt_.segment_of(back) != kNone || sector >= 3.14159265358979323846 / 3) break;
+            g = mesh_.twin[back];  // v -> x in the next triangle counter-clockwise
+        }
+        if (sector < 3.14159265358979323846 / 3) {
+            double& angle = small_apex_angle_[v];
+            angle = angle == 0 ? std::max(sector, 1e-300) : std::min(angle, sector);
+        }
+    }
+}
+
 bool Refiner::small_angle_rule(VertIdx u, VertIdx v) const {
     // Both ends on the same concentric shell about the same apex, on different segments.
     const SegmentVertex* su = u < on_segment_.size() ? &on_segment_[u] : nullptr;
@@ -144,13 +189,14 @@ void Refiner::evaluate(TriIdx t) {
         const double dx = p[(k + 1) % 3][0] - p[k][0], dy = p[(k + 1) % 3][1] - p[k][1];
         length2[k] = dx * dx + dy * dy;
     }
-    double key = 0;
+    double size_key = 0;
     if (options_.size.bounded()) {
         for (int k = 0; k < 3; ++k) {
             const double s = options_.size(0.5 * (p[k][0] + p[(k + 1) % 3][0]), 0.5 * (p[k][1] + p[(k + 1) % 3][1]));
-            key = std::max(key, length2[k] / (s * s));
+            size_key = std::max(size_key, length2[k] / (s * s));
         }
     }
+    double key = size_key;
     if (sine2_bound_ > 0) {
         // sin^2 of the smallest angle: (2 area)^2 over the product of the two longer edges'
         // squared lengths (the smallest angle lies between them).
@@ -171,7 +217,7 @@ void Refiner::evaluate(TriIdx t) {
         }
     }
     if (key > 1) {
-        bad_.push({key, t, version_[t]});
+        bad_.push({key, t, version_[t] & 0x7FFFFFFFu, size_key > 1 ? 1u : 0u});
         ++counters_.bad_triangles;
     }
 }
@@ -238,19 +284,9 @@ void Refiner::spend_budget() {
     }
 }
 
-void Refiner::split_piece(const PieceToSplit& piece) {
-    const EdgeIdx e = cdt_.find_edge(piece.a, piece.b);
-    if (e == kNone) return;  // already split
-    const std::uint32_t segment = cdt_.segment_of(e);
-    EM_ASSERT(segment != kNone);
-    if (!piece.forced) {
-        // Still encroached from a domain side? (The apex may have changed since.)
-        const bool left = cdt_.in_domain(tri::triangle_of(e)) && encroached_from(e);
-        const EdgeIdx f = mesh_.twin[e];
-        if (!left && !(cdt_.in_domain(tri::triangle_of(f)) && encroached_from(f))) return;
-    }
-    spend_budget();
+Refiner::SplitPoint Refiner::split_point(EdgeIdx e) const {
     const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
+    const std::uint32_t segment = cdt_.segment_of(e);
     // Parameters along the input segment s0 -> s1 (long double): every split point is computed
     // from the segment itself, so rounding never accumulates along it.
     const auto ends = cdt_.segment_ends(segment);
@@ -265,25 +301,68 @@ void Refiner::split_piece(const PieceToSplit& piece) {
     auto corner = [&](VertIdx v) { return v < initial_vertices_ && degree_[v] >= 2; };
     const long double ta = parameter(a), tb = parameter(b);
     long double t = 0.5L * (ta + tb);
-    VertIdx apex = kNone;
-    int shell = 0;
+    SplitPoint split;
     if (corner(a) != corner(b)) {
         // Concentric shells: the power of two nearest half the piece's length, from the apex.
-        apex = corner(a) ? a : b;
-        const long double t_apex = apex == a ? ta : tb, t_far = apex == a ? tb : ta;
+        split.apex = corner(a) ? a : b;
+        const long double t_apex = split.apex == a ? ta : tb, t_far = split.apex == a ? tb : ta;
         const long double length = std::fabs(t_far - t_apex) * std::sqrt(length2);
-        shell = static_cast<int>(std::lround(std::log2(static_cast<double>(length / 2))));
-        const long double distance = std::ldexp(1.0L, shell);
+        split.shell = static_cast<int>(std::lround(std::log2(static_cast<double>(length / 2))));
+        const long double distance = std::ldexp(1.0L, split.shell);
         t = t_apex + (t_far > t_apex ? 1 : -1) * distance / std::sqrt(length2);
     }
-    const double x = static_cast<double>(s0[0] + t * dx), y = static_cast<double>(s0[1] + t * dy);
+    split.x = static_cast<double>(s0[0] + t * dx);
+    split.y = static_cast<double>(s0[1] + t * dy);
+    return split;
+}
+
+bool Refiner::leave_at_small_angle(EdgeIdx e, double shortest_edge) const {
+    // Shewchuk's rule for small input angles [Shewchuk00 "Mesh generation for domains with small
+    // angles" §3]: a piece at an apex of a small input angle is not split for a rejected
+    // circumcenter when the new vertex would lie closer to an existing vertex (across the small
+    // angle, or on the piece) than the skinny triangle's shortest edge: splitting would only
+    // make smaller skinny triangles towards the apex, without end.
+    // The new vertex's distance to its nearest neighbour ("insertion radius") is taken as the
+    // distance to the piece's ends and to its two apexes, and to where the cluster's other
+    // segments will be split next (the same shell, the smallest angle phi at the apex away):
+    // 2 d sin(phi / 2) at distance d from the apex.
+    const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
+    auto apex_angle = [&](VertIdx v) { return v < initial_vertices_ ? small_apex_angle_[v] : 0.0; };
+    if (apex_angle(a) == 0 && apex_angle(b) == 0) return false;
+    const SplitPoint m = split_point(e);
+    double radius = INFINITY;
+    for (const VertIdx v : {a, b, mesh_.tv[tri::prev_edge(e)], mesh_.tv[tri::prev_edge(mesh_.twin[e])]}) {
+        if (v == tri::kInfinite) continue;
+        radius = std::min(radius, std::hypot(point(v)[0] - m.x, point(v)[1] - m.y));
+    }
+    for (const VertIdx v : {a, b}) {
+        if (apex_angle(v) == 0) continue;
+        const double d = std::hypot(point(v)[0] - m.x, point(v)[1] - m.y);
+        radius = std::min(radius, 2 * d * std::sin(apex_angle(v) / 2));
+    }
+    return radius < shortest_edge;
+}
+
+void Refiner::split_piece(const PieceToSplit& piece) {
+    const EdgeIdx e = cdt_.find_edge(piece.a, piece.b);
+    // Already split (a - b may be an edge again, unconstrained, beside a piece bent by rounding).
+    if (e == kNone || cdt_.segment_of(e) == kNone) return;
+    const std::uint32_t segment = cdt_.segment_of(e);
+    if (!piece.forced) {
+        // Still encroached from a domain side? (The apex may have changed since.)
+        const bool left = cdt_.in_domain(tri::triangle_of(e)) && encroached_from(e);
+        const EdgeIdx f = mesh_.twin[e];
+        if (!left && !(cdt_.in_domain(tri::triangle_of(f)) && encroached_from(f))) return;
+    }
+    spend_budget();
+    const SplitPoint m = split_point(e);
     const std::uint32_t before = mesh_.vertex_count();
-    const VertIdx v = cdt_.split_constrained_edge(e, x, y);
+    const VertIdx v = cdt_.split_constrained_edge(e, m.x, m.y);
     if (v >= before) {
         ++counters_.segment_splits;
         if (on_segment_.size() <= v) on_segment_.resize(v + 1);
-        on_segment_[v] = {segment, apex, shell};
-        if (apex != kNone) ++counters_.shell_splits;
+        on_segment_[v] = {segment, m.apex, m.shell};
+        if (m.apex != kNone) ++counters_.shell_splits;
     } else {
         ++counters_.segment_bends;
     }
@@ -300,6 +379,8 @@ RefinementResult2 Refiner::run() {
         if (mesh_.is_dead(tri::triangle_of(e)) || cdt_.segment_of(e) == kNone) continue;
         ++degree_[mesh_.origin(e)];
     }
+    // Apexes of small input angles: two pieces at a vertex less than 60 degrees apart.
+    find_small_input_angles();
     if (options_.min_angle > 0) {
         const double s = std::sin(options_.min_angle * 3.14159265358979323846 / 180.0);
         sine2_bound_ = s * s;
@@ -316,9 +397,9 @@ RefinementResult2 Refiner::run() {
         if (bad_.empty()) break;
         const BadTriangle top = bad_.top();
         bad_.pop();
-        if (top.version != version_[top.t] || !cdt_.in_domain(top.t)) continue;  // rewritten since
+        if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t)) continue;  // rewritten since
         spend_budget();
-        const VertIdx* v = &mesh_.tv[3 * top.t];
+        const VertIdx v[3] = {mesh_.tv[3 * top.t], mesh_.tv[3 * top.t + 1], mesh_.tv[3 * top.t + 2]};
         const auto c = predicates::circumcenter(point(v[0]), point(v[1]), point(v[2]));
         const tri::CavityInsertion outcome = cdt_.insert_in_cavity(top.t, c[0], c[1]);
         switch (outcome) {
@@ -326,13 +407,24 @@ RefinementResult2 Refiner::run() {
                 ++counters_.circumcenters;
                 process_touched();
                 break;
-            case tri::CavityInsertion::Encroaches:
+            case tri::CavityInsertion::Encroaches: {
                 ++counters_.rejected_circumcenters;
+                const double shortest = std::sqrt(std::min(
+                    {squared_distance(v[0], v[1]), squared_distance(v[1], v[2]), squared_distance(v[2], v[0])}));
+                bool split = false;
                 for (const EdgeIdx e : cdt_.encroached_edges()) {
+                    // Only skinny triangles are left at small angles; too big ones are split.
+                    if (!top.too_big && leave_at_small_angle(e, shortest)) continue;
                     pieces_.push_back({mesh_.origin(e), mesh_.destination(e), true});
+                    split = true;
                 }
-                bad_.push(top);  // still bad unless the splits rewrite it
+                if (split) {
+                    bad_.push(top);  // still bad unless the splits rewrite it
+                } else {
+                    ++counters_.small_angle_skips;  // left skinny at a small input angle
+                }
                 break;
+            }
             case tri::CavityInsertion::Duplicate:
             case tri::CavityInsertion::NotInConflict:
             case tri::CavityInsertion::Outside:

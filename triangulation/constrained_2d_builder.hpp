@@ -252,6 +252,10 @@ private:
     ConstrainedTriangulation2Counters edit_counters_;
     /// Lawson flips from flip_stack_ (after split_triangle or split_edge).
     void drain_flip_stack();
+    /// One attempt of split_constrained_edge at (x, y): true (and the new vertex) when the point
+    /// lies on e or inside the quadrilateral of e's two triangles; the edges to check for
+    /// Lawson flips are appended to `check`. Else nothing changes.
+    bool try_split_at(EdgeIdx e, double x, double y, std::vector<std::pair<VertIdx, VertIdx>>& check, VertIdx& vertex);
     /// The exact fan test of split_constrained_edge: p strictly inside both triangles' star.
     bool star_contains(VertIdx p, VertIdx a, VertIdx b, VertIdx c, VertIdx d);
     /// The half-edge (e or its twin) whose apex lies within rounding of e's segment, strictly

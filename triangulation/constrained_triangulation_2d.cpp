@@ -166,48 +166,101 @@ bool CdtBuilder::star_contains(VertIdx p, VertIdx a, VertIdx b, VertIdx c, VertI
            core_.orient(a, d, p) == Sign::Positive && core_.orient(d, b, p) == Sign::Positive;
 }
 
-VertIdx CdtBuilder::split_constrained_edge(EdgeIdx e, double x, double y) {
-    EM_ASSERT(domain_marked_ && segment_of_[e] != kNone);
+bool CdtBuilder::try_split_at(EdgeIdx e, double x, double y, std::vector<std::pair<VertIdx, VertIdx>>& check,
+                              VertIdx& vertex) {
     const EdgeIdx f = mesh_.twin[e];
     const VertIdx a = mesh_.origin(e), b = mesh_.destination(e), c = apex(e), d = apex(f);
-    // The enclosing box keeps every segment off the convex hull.
-    EM_ASSERT(c != kInfinite && d != kInfinite);
+    const VertIdx p = add_vertex(x, y);
+    if (core_.same_point(p, a) || core_.same_point(p, b)) {
+        remove_last_vertex();
+        return false;
+    }
+    const Sign s = core_.orient(a, b, p);
+    if (s == Sign::Zero && core_.strictly_between(a, b, p)) {
+        // On the line: the four triangles (p, b, c), (p, c, a), (p, a, d), (p, d, b), then
+        // Lawson's flips of the edges opposite p (the spokes are locally Delaunay).
+        split_edge(e, p);
+        flip_stack_.clear();
+        check.insert(check.end(), {{b, c}, {c, a}, {a, d}, {d, b}});
+        vertex = p;
+        return true;
+    }
+    if (s != Sign::Zero && star_contains(p, a, b, c, d)) {
+        // Off the line, inside the quadrilateral a, d, b, c and seeing its four sides: the same
+        // four triangles, the pieces a - p - b bent by the rounding of p. p lies inside one of
+        // the two old triangles only, so the spokes p - c and p - d are checked too.
+        split_edge(e, p);
+        flip_stack_.clear();
+        check.insert(check.end(), {{b, c}, {c, a}, {a, d}, {d, b}, {p, c}, {p, d}});
+        vertex = p;
+        return true;
+    }
+    remove_last_vertex();
+    return false;
+}
+
+VertIdx CdtBuilder::split_constrained_edge(EdgeIdx e, double x, double y) {
+    EM_ASSERT(domain_marked_ && segment_of_[e] != kNone);
+    const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
     const std::uint32_t segment = segment_of_[e];
-    // The point, then the point moved 1, 1, 2, 2, 3, 3 ulps per coordinate to either side of the
-    // line (left first): when a neighbouring triangle is a sliver (a vertex within ulps of the
-    // piece), the point fits on its other side.
-    const double* pa = mesh_.point(a);
-    const double* pb = mesh_.point(b);
-    const double nx = pa[1] - pb[1], ny = pb[0] - pa[0];  // left normal of a -> b
-    for (int attempt = 0; attempt < 7; ++attempt) {
-        double px = x, py = y;
-        const double side = attempt % 2 == 1 ? 1.0 : -1.0;
-        for (int step = 0; step < (attempt + 1) / 2; ++step) {
-            if (nx != 0) px = std::nextafter(px, side * nx > 0 ? INFINITY : -INFINITY);
-            if (ny != 0) py = std::nextafter(py, side * ny > 0 ? INFINITY : -INFINITY);
-        }
-        const VertIdx p = add_vertex(px, py);
-        if (core_.same_point(p, a) || core_.same_point(p, b)) {
-            remove_last_vertex();
-            if (attempt > 0) continue;
+    {
+        const double* pa = mesh_.point(a);
+        const double* pb = mesh_.point(b);
+        if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1])) {
             throw GeometryError("segment " + std::to_string(segment + options_.first_index) + ": its piece " +
-                                point_text(mesh_.point(a)) + " - " + point_text(mesh_.point(b)) +
-                                " is too short to split (adjacent doubles)");
+                                point_text(pa) + " - " + point_text(pb) + " is too short to split (adjacent doubles)");
         }
-        const Sign s = core_.orient(a, b, p);
-        // On the line (between a and b), or off it but inside the quadrilateral a, d, b, c and
-        // seeing its four sides: the same four triangles (p, b, c), (p, c, a), (p, a, d),
-        // (p, d, b); off the line, the pieces a - p - b bend by the rounding of p.
-        if ((s == Sign::Zero && core_.strictly_between(a, b, p)) || (s != Sign::Zero && star_contains(p, a, b, c, d))) {
-            flip_stack_.clear();
-            split_edge(e, p);
-            drain_flip_stack();
-            ++edit_counters_.edge_splits;
-            return p;
+    }
+    const double nx = mesh_.point(a)[1] - mesh_.point(b)[1], ny = mesh_.point(b)[0] - mesh_.point(a)[0];  // left normal
+    std::vector<std::pair<VertIdx, VertIdx>> check;
+    const std::uint64_t flips_before = result_.counters.delaunay_flips;
+    // A neighbouring triangle may be a sliver: its apex within ulps of the line of a - b (the next
+    // vertex of the same bent segment, on the exterior side where nothing breaks up such slivers).
+    // Then the point, moved 1, 1, 2, 2, 3, 3 ulps per coordinate to either side of the line, may
+    // fit; else the sliver's free edge that the point lies beyond is flipped away (a temporary
+    // flip: Lawson's flips from every edge involved restore the constrained Delaunay property).
+    for (int round = 0; round < 8; ++round) {
+        e = find_edge(a, b);
+        for (int attempt = 0; attempt < 7; ++attempt) {
+            double px = x, py = y;
+            const double side = attempt % 2 == 1 ? 1.0 : -1.0;
+            for (int step = 0; step < (attempt + 1) / 2; ++step) {
+                if (nx != 0) px = std::nextafter(px, side * nx > 0 ? INFINITY : -INFINITY);
+                if (ny != 0) py = std::nextafter(py, side * ny > 0 ? INFINITY : -INFINITY);
+            }
+            VertIdx vertex = kNone;
+            if (try_split_at(e, px, py, check, vertex)) {
+                restore_delaunay(check);
+                edit_counters_.split_flips += result_.counters.delaunay_flips - flips_before;
+                ++edit_counters_.edge_splits;
+                return vertex;
+            }
+        }
+        // The free edge of a side triangle (not a - b) that the point lies beyond, if flippable.
+        const VertIdx p = add_vertex(x, y);
+        EdgeIdx blocking = kNone;
+        for (const EdgeIdx g : {next_edge(e), prev_edge(e), next_edge(mesh_.twin[e]), prev_edge(mesh_.twin[e])}) {
+            if (segment_of_[g] != kNone || core_.orient(mesh_.origin(g), mesh_.destination(g), p) == Sign::Positive) {
+                continue;
+            }
+            const VertIdx u = mesh_.origin(g), v = mesh_.destination(g), w1 = apex(g), w2 = apex(mesh_.twin[g]);
+            if (w1 == kInfinite || w2 == kInfinite) continue;
+            const Sign su = core_.orient(w1, w2, u), sv = core_.orient(w1, w2, v);
+            if (su != Sign::Zero && sv != Sign::Zero && su != sv) {
+                blocking = g;
+                break;
+            }
         }
         remove_last_vertex();
+        if (blocking == kNone) break;
+        const VertIdx u = mesh_.origin(blocking), v = mesh_.destination(blocking);
+        const VertIdx w1 = apex(blocking), w2 = apex(mesh_.twin[blocking]);
+        ++result_.counters.delaunay_flips;
+        flip(blocking);
+        check.insert(check.end(), {{w1, w2}, {u, w2}, {w2, v}, {v, w1}, {w1, u}});
     }
-    return bend_at_apex(e);
+    restore_delaunay(check);
+    return bend_at_apex(find_edge(a, b));
 }
 
 EdgeIdx CdtBuilder::near_apex(EdgeIdx e) const {

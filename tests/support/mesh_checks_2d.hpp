@@ -72,10 +72,12 @@ struct MeshCheck {
 
 /// The checks above. `input_vertex_count`, `segments`, `pieces` as check_constrained_delaunay_2d
 /// takes them; `size` may be empty (no size ratio).
+/// `closed_loops`: the segments form closed loops only (the even-odd test applies); false for
+/// inputs with dangling (slit) segments, which skip the outside test.
 inline MeshCheck check_quality_mesh(const triangulation::Triangulation2& mesh, std::uint32_t input_vertex_count,
                                     std::span<const double> input_xy, std::span<const std::uint32_t> segments,
                                     std::span<const std::uint32_t> pieces,
-                                    const std::function<double(double, double)>& size = {}) {
+                                    const std::function<double(double, double)>& size = {}, bool closed_loops = true) {
     MeshCheck r;
     const auto report = triangulation::check_constrained_delaunay_2d(mesh, input_vertex_count, segments, pieces);
     if (!report.ok) {
@@ -102,7 +104,7 @@ inline MeshCheck check_quality_mesh(const triangulation::Triangulation2& mesh, s
         const double* p[3];
         for (int k = 0; k < 3; ++k) p[k] = mesh.point(mesh.triangles[3 * t + static_cast<unsigned>(k)]);
         const double cx = (p[0][0] + p[1][0] + p[2][0]) / 3, cy = (p[0][1] + p[1][1] + p[2][1]) / 3;
-        if (!inside_by_segments(cx, cy, input_xy, segments) &&
+        if (closed_loops && !inside_by_segments(cx, cy, input_xy, segments) &&
             distance_to_segments(cx, cy, input_xy, segments) > tolerance) {
             r.ok = false;
             r.problem = "triangle " + std::to_string(t) + " lies outside the domain";

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "generators/delaunay_refinement_2d.hpp"
+#include "generators/pslg_inputs.hpp"
 #include "generators/sample_domains.hpp"
 #include "predicates/errors.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
@@ -49,7 +50,7 @@ struct Refined {
     em::testing::MeshCheck check;
 };
 
-Refined refine(const Input& in, double min_angle, const gen::SizeFunction& size = {}) {
+Refined refine(const Input& in, double min_angle, const gen::SizeFunction& size = {}, bool closed_loops = true) {
     gen::RefinementOptions2 options;
     options.min_angle = min_angle;
     options.size = size;
@@ -57,7 +58,8 @@ Refined refine(const Input& in, double min_angle, const gen::SizeFunction& size 
     const auto& m = r.result.mesh;
     std::function<double(double, double)> s;
     if (size.bounded()) s = [&size](double x, double y) { return size(x, y); };
-    r.check = em::testing::check_quality_mesh(m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces, s);
+    r.check = em::testing::check_quality_mesh(m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces, s,
+                                              closed_loops);
     return r;
 }
 
@@ -274,5 +276,73 @@ TEST(Generators_DelaunayRefinement, BudgetStopsWithGeometryError) {
         FAIL() << "no GeometryError";
     } catch (const em::GeometryError& error) {
         EXPECT_NE(std::string(error.what()).find("more than 100 Steiner points"), std::string::npos) << error.what();
+    }
+}
+
+TEST(Generators_DelaunayRefinement, TinyInputAnglesDoNotRefineTowardsTheirApex) {
+    // Two inner segments from (0.2, 0.5) at 1, 0.3 and 0.05 degrees apart, in the unit square.
+    // Regression: circumcenters of skinny triangles at the apex split its pieces on ever smaller
+    // shells down to the resolution of doubles (min angle 14.9 at 1 degree: rounded points);
+    // Shewchuk's rule for rejected circumcenters at small angles stops that.
+    for (const double degrees : {1.0, 0.3, 0.05}) {
+        const double t = std::tan(degrees * std::numbers::pi / 180);
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {0.2, 0.5, 0.9, 0.5, 0.9, 0.5 + 0.7 * t});
+        in.segments.insert(in.segments.end(), {4, 5, 4, 6});
+        const Refined r = refine(in, 20.7, {}, false);  // slits: no even-odd test
+        ASSERT_TRUE(r.check.ok) << degrees << ": " << r.check.problem;
+        // The apex keeps its small angle (no rounded points around it), and the mesh stays small.
+        EXPECT_NEAR(r.check.min_angle, degrees, 1e-6) << degrees;
+        EXPECT_LT(r.result.mesh.mesh.triangle_count(), 20000u) << degrees;
+        EXPECT_GT(r.result.counters.small_angle_skips, 0u) << degrees;
+        double closest = INFINITY;  // no vertex crowds the apex
+        const tri::Triangulation2& m = r.result.mesh.mesh;
+        for (tri::VertIdx v = 0; v < m.vertex_count(); ++v) {
+            if (v == 4) continue;
+            closest = std::min(closest, std::hypot(m.point(v)[0] - 0.2, m.point(v)[1] - 0.5));
+        }
+        EXPECT_GT(closest, 1e-3) << degrees;
+    }
+}
+
+TEST(Generators_DelaunayRefinement, RandomPslgsGiveValidMeshesOrAClearError) {
+    // The constrained Delaunay test distributions (crossings, overlaps, duplicates, small angles):
+    // every run ends with a valid mesh, or with GeometryError only where the constrained
+    // triangulation itself holds features at the resolution of doubles (grid-lines: a rounded
+    // crossing one ulp from a lattice vertex), or InputError when nothing is enclosed.
+    std::size_t meshed = 0;
+    for (const auto d : gen::kAllPslgDistributions) {
+        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+            const gen::PslgInput p = gen::generate_pslg(d, 60, 30, seed);
+            const Input in{p.xy, p.segments, p.holes, {}};
+            gen::RefinementOptions2 options;
+            try {
+                const auto result = gen::delaunay_refinement_2d(in.pslg(), options);
+                const auto report = tri::check_constrained_delaunay_2d(
+                    result.mesh.mesh, result.mesh.input_vertex_count, in.segments, result.mesh.pieces);
+                EXPECT_TRUE(report.ok) << gen::pslg_distribution_name(d) << " seed " << seed << ": " << report.problem;
+                ++meshed;
+            } catch (const em::InputError&) {
+            } catch (const em::GeometryError& error) {
+                EXPECT_EQ(d, gen::PslgDistribution::GridLines) << seed << ": " << error.what();
+            }
+        }
+    }
+    EXPECT_GT(meshed, 10u);
+}
+
+TEST(Generators_DelaunayRefinement, UlpWideFeatureOfTheTriangulationIsReported) {
+    // grid-lines seed 10: a piece of an overlapping diagonal, bent at a rounded crossing, crosses
+    // y = 4 at (2 - 2^-51, 4), one ulp from the lattice vertex (2, 4): no mesh can resolve that gap.
+    const gen::PslgInput p = gen::generate_pslg(gen::PslgDistribution::GridLines, 60, 30, 10);
+    const Input in{p.xy, p.segments, p.holes, {}};
+    try {
+        gen::delaunay_refinement_2d(in.pslg());
+        FAIL() << "no GeometryError";
+    } catch (const em::GeometryError& error) {
+        const std::string what = error.what();
+        EXPECT_TRUE(what.find("too short to split") != std::string::npos ||
+                    what.find("finer than double precision") != std::string::npos)
+            << what;
     }
 }
