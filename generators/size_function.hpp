@@ -55,6 +55,8 @@ public:
     }
     /// False for the "none" function (no size criterion).
     bool bounded() const { return kind_ != Kind::None; }
+    /// True for a uniform size (then the size is the same everywhere).
+    bool is_uniform() const { return kind_ == Kind::Uniform; }
     /// s * factor (factor finite and > 0).
     SizeFunction scaled(double factor) const;
     /// One line: "uniform 0.1", "sources: 2 point, 1 line, cap 0.5", the analytic description.
