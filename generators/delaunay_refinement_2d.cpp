@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <queue>
 #include <string>
 #include <vector>
 
@@ -35,11 +34,43 @@ using tri::TriIdx;
 using tri::VertIdx;
 
 struct BadTriangle {
-    double key;  // larger is worse
+    float key;  // larger is worse
     TriIdx t;
     std::uint32_t version : 31;
     std::uint32_t too_big : 1;  // an edge longer than the size (else only skinny)
-    bool operator<(const BadTriangle& other) const { return key < other.key; }
+};
+
+/// Bad triangles by priority, worst first: too big ones before skinny ones (as CGAL's mesher),
+/// each by its key, in buckets of a sixteenth of a binade (keys within 4.4% of each other share
+/// a bucket), last in first out within a bucket (the triangles an insertion just made are
+/// neighbours: their memory is warm). O(1) per push and pop, against O(log n) cache-missing
+/// steps of a binary heap over all bad triangles.
+class BadTriangleQueue {
+public:
+    void push(const BadTriangle& b) {
+        const std::size_t k = bucket(b);
+        buckets_[k].push_back(b);
+        top_ = std::max(top_, k);
+        ++size_;
+    }
+    bool empty() const { return size_ == 0; }
+    BadTriangle pop() {
+        while (buckets_[top_].empty()) --top_;
+        const BadTriangle b = buckets_[top_].back();
+        buckets_[top_].pop_back();
+        --size_;
+        return b;
+    }
+
+private:
+    static constexpr std::size_t kPerLevel = 1024;  // keys 1 .. 2^64 in steps of 2^(1/16)
+    std::vector<BadTriangle> buckets_[2 * kPerLevel];
+    std::size_t top_ = 0;
+    std::size_t size_ = 0;
+    static std::size_t bucket(const BadTriangle& b) {
+        const double level = std::log2(std::max(1.0, static_cast<double>(b.key))) * 16;
+        return (b.too_big ? kPerLevel : 0) + std::min<std::size_t>(kPerLevel - 1, static_cast<std::size_t>(level));
+    }
 };
 
 struct PieceToSplit {
@@ -66,7 +97,7 @@ private:
     tri::ConstrainedTriangulation2 cdt_;
     const tri::TriMesh2& mesh_;  // the triangulation's, valid across edits
     RefinementCounters2 counters_;
-    std::priority_queue<BadTriangle> bad_;
+    BadTriangleQueue bad_;
     std::vector<PieceToSplit> pieces_;
     std::vector<std::uint32_t> version_;      // per triangle slot
     std::vector<std::uint32_t> seen_;         // per triangle slot: batch stamp of process_touched
@@ -122,16 +153,12 @@ void Refiner::check_domain_and_budget() {
         throw InputError("delaunay refinement: the segments enclose no region (every triangle is outside the "
                          "domain: is the boundary closed, and is a hole point inside the outer boundary?)");
     }
-    if (options_.max_steiner_points != 0) {
-        budget_ = options_.max_steiner_points;
-        return;
-    }
     // Automatic: at least 10^6, 64 per input feature, and 16 times the element count the size
-    // function asks for over the domain's bounding box (a 512 x 512 sample of 2.31 / s^2, the
+    // function asks for over the domain's bounding box (a 64 x 64 sample of 2.31 / s^2, the
     // equilateral triangles of edge s per unit area).
     double estimate = 0;
     if (options_.size.bounded()) {
-        constexpr int kSamples = 512;
+        constexpr int kSamples = 64;
         const double dx = (hi_x - lo_x) / kSamples, dy = (hi_y - lo_y) / kSamples;
         for (int i = 0; i < kSamples; ++i) {
             for (int j = 0; j < kSamples; ++j) {
@@ -140,8 +167,16 @@ void Refiner::check_domain_and_budget() {
             }
         }
     }
+    // Room for the expected mesh (about half as many vertices as triangles), capped: a hint.
+    const double expected_vertices = std::min(0.6 * estimate, 2e8) + static_cast<double>(mesh_.vertex_count());
+    cdt_.reserve(static_cast<std::uint32_t>(expected_vertices));
+    version_.reserve(static_cast<std::size_t>(2 * expected_vertices));
+    seen_.reserve(static_cast<std::size_t>(2 * expected_vertices));
+    on_segment_.reserve(static_cast<std::size_t>(expected_vertices));
     const double features = static_cast<double>(initial_vertices_) + static_cast<double>(mesh_.triangle_slots());
-    budget_ = static_cast<std::uint64_t>(std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
+    budget_ = options_.max_steiner_points != 0
+                  ? options_.max_steiner_points
+                  : static_cast<std::uint64_t>(std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
 }
 
 void Refiner::find_small_input_angles() {
@@ -217,7 +252,7 @@ void Refiner::evaluate(TriIdx t) {
         }
     }
     if (key > 1) {
-        bad_.push({key, t, version_[t] & 0x7FFFFFFFu, size_key > 1 ? 1u : 0u});
+        bad_.push({static_cast<float>(std::min(key, 1e30)), t, version_[t] & 0x7FFFFFFFu, size_key > 1 ? 1u : 0u});
         ++counters_.bad_triangles;
     }
 }
@@ -395,8 +430,7 @@ RefinementResult2 Refiner::run() {
             split_piece(piece);
         }
         if (bad_.empty()) break;
-        const BadTriangle top = bad_.top();
-        bad_.pop();
+        const BadTriangle top = bad_.pop();
         if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t)) continue;  // rewritten since
         spend_budget();
         const VertIdx v[3] = {mesh_.tv[3 * top.t], mesh_.tv[3 * top.t + 1], mesh_.tv[3 * top.t + 2]};

@@ -69,6 +69,7 @@ public:
     std::span<const TriIdx> touched() const { return touched_; }
     void clear_touched() { touched_.clear(); }
     const ConstrainedTriangulation2Counters& edit_counters() const { return edit_counters_; }
+    void reserve(std::uint32_t vertices);
 
 private:
     Pslg pslg_;

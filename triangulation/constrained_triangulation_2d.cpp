@@ -37,6 +37,20 @@ std::string point_text(const double* p) {
 
 }  // namespace
 
+void CdtBuilder::reserve(std::uint32_t vertices) {
+    const std::size_t v = vertices, slots = 2 * v + 8;  // triangles (finite and infinite) ~ 2 V
+    mesh_.xy.reserve(2 * v);
+    mesh_.tv.reserve(3 * slots);
+    mesh_.twin.reserve(3 * slots);
+    segment_of_.reserve(3 * slots);
+    vertex_edge_.reserve(v);
+    core_.input_index.reserve(v);
+    core_.merged_into.reserve(v);
+    removed_.reserve(slots);
+    if (!attribute_.empty()) attribute_.reserve(slots);
+    cavity_stamp_.reserve(slots);
+}
+
 void CdtBuilder::drain_flip_stack() {
     const std::uint64_t before = result_.counters.delaunay_flips;
     while (!flip_stack_.empty()) {
@@ -412,6 +426,7 @@ VertIdx ConstrainedTriangulation2::split_constrained_edge(EdgeIdx e, double x, d
 }
 std::span<const TriIdx> ConstrainedTriangulation2::touched() const { return builder_->touched(); }
 void ConstrainedTriangulation2::clear_touched() { builder_->clear_touched(); }
+void ConstrainedTriangulation2::reserve(std::uint32_t vertices) { builder_->reserve(vertices); }
 const ConstrainedTriangulation2Counters& ConstrainedTriangulation2::counters() const { return builder_->edit_counters(); }
 
 Cdt2Result ConstrainedTriangulation2::take_result() && {

@@ -116,6 +116,10 @@ public:
     /// @throws GeometryError when (x, y) equals a or b, or no split is possible.
     VertIdx split_constrained_edge(EdgeIdx e, double x, double y);
 
+    /// Room for about `vertices` vertices in all (and their triangles), so that a refinement
+    /// that knows its output size does not pay for repeated growth. Only a hint.
+    void reserve(std::uint32_t vertices);
+
     /// Every triangle slot written by edits since the last clear_touched() (with repeats;
     /// some may be dead or rewritten again since): where to look for new bad triangles and
     /// newly encroached edges.
