@@ -125,7 +125,7 @@ private:
     bool leave_at_small_angle(EdgeIdx e, double shortest_edge) const;
     std::vector<double> small_apex_angle_;    // per initial vertex: the smallest angle between its
                                               // pieces (radians) when below 60 degrees, else 0
-    bool small_angle_rule(VertIdx u, VertIdx v) const;
+    bool small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const;
     void find_small_input_angles();
     void spend_budget();
     const double* point(VertIdx v) const { return mesh_.point(v); }
@@ -167,8 +167,9 @@ void Refiner::check_domain_and_budget() {
             }
         }
     }
-    // Room for the expected mesh (about half as many vertices as triangles), capped: a hint.
-    const double expected_vertices = std::min(0.6 * estimate, 2e8) + static_cast<double>(mesh_.vertex_count());
+    // Room for the expected mesh, capped: a hint. Refinement makes about twice the ideal count
+    // of equilateral triangles, with half as many vertices as triangles.
+    const double expected_vertices = std::min(1.1 * estimate, 2e8) + static_cast<double>(mesh_.vertex_count());
     cdt_.reserve(static_cast<std::uint32_t>(expected_vertices));
     version_.reserve(static_cast<std::size_t>(2 * expected_vertices));
     seen_.reserve(static_cast<std::size_t>(2 * expected_vertices));
@@ -208,12 +209,17 @@ void Refiner::find_small_input_angles() {
     }
 }
 
-bool Refiner::small_angle_rule(VertIdx u, VertIdx v) const {
-    // Both ends on the same concentric shell about the same apex, on different segments.
+bool Refiner::small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const {
+    // Both ends of the shortest edge u - v on the same concentric shell about the same apex,
+    // on different segments, and the third vertex w that apex: the triangle's smallest angle is
+    // the input angle itself. A skinny triangle spanning the angle further out (w on a shell
+    // farther away) is split: the midpoints between shells make the angle's wedge into
+    // triangles no worse than the input angle, and never approach the apex (its own pieces are
+    // split on shells only, and rejected circumcenters do not split them: leave_at_small_angle).
     const SegmentVertex* su = u < on_segment_.size() ? &on_segment_[u] : nullptr;
     const SegmentVertex* sv = v < on_segment_.size() ? &on_segment_[v] : nullptr;
     if (su == nullptr || sv == nullptr || su->apex == kNone) return false;
-    return su->apex == sv->apex && su->shell == sv->shell && su->segment != sv->segment;
+    return su->apex == sv->apex && su->shell == sv->shell && su->segment != sv->segment && w == su->apex;
 }
 
 void Refiner::evaluate(TriIdx t) {
@@ -243,7 +249,7 @@ void Refiner::evaluate(TriIdx t) {
         const double product = length2[(shortest + 1) % 3] * length2[(shortest + 2) % 3];
         const double sine2 = cross * cross / product;
         if (sine2 < sine2_bound_) {
-            if (small_angle_rule(v[shortest], v[(shortest + 1) % 3])) {
+            if (small_angle_rule(v[shortest], v[(shortest + 1) % 3], v[(shortest + 2) % 3])) {
                 ++counters_.small_angle_skips;
             } else {
                 key = std::max(key, sine2 > 0 ? sine2_bound_ / sine2 : INFINITY);
