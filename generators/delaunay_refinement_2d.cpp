@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Delaunay refinement (see delaunay_refinement_2d.hpp).
 //
-// State beside the ConstrainedTriangulation2: a binary heap of bad triangles (key, slot,
+// State beside the ConstrainedTriangulation2: a bucketed queue of bad triangles (key, slot,
 // version), where a slot's version grows whenever an edit writes the slot, so stale entries are
 // recognised in O(1); a stack of pieces to split (by their two vertices, so a piece already
 // split is simply not found); per vertex, for Steiner points on segments, the segment and, for
@@ -233,7 +233,14 @@ void Refiner::evaluate(TriIdx t) {
     double size_key = 0;
     if (options_.size.bounded()) {
         for (int k = 0; k < 3; ++k) {
-            const double s = options_.size(0.5 * (p[k][0] + p[(k + 1) % 3][0]), 0.5 * (p[k][1] + p[(k + 1) % 3][1]));
+            const double mx = 0.5 * (p[k][0] + p[(k + 1) % 3][0]), my = 0.5 * (p[k][1] + p[(k + 1) % 3][1]);
+            const double s = options_.size(mx, my);
+            if (!(s > 0)) {
+                char where[96];
+                std::snprintf(where, sizeof where, "(%.17g, %.17g)", mx, my);
+                throw InputError("size function: not a number > 0 at " + std::string(where) + " (" +
+                                 options_.size.describe() + ")");
+            }
             size_key = std::max(size_key, length2[k] / (s * s));
         }
     }

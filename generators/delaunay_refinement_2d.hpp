@@ -12,17 +12,21 @@
 //    angle below theta_min, or an edge longer than the size function at its midpoint) gets its
 //    circumcenter, correctly rounded (predicates/constructions), inserted by Bowyer-Watson; a
 //    circumcenter that encroaches pieces is not inserted, and those pieces are split instead.
-//  - A skinny triangle whose shortest edge joins points of two segments on the same shell about
-//    their shared apex is not split [Miller-Pav-Walkington03; Shewchuk02 §3.4]: the small input
-//    angle it subtends cannot be improved, and splitting it would not terminate.
+//  - Small input angles (below 60 degrees, inside the domain): the skinny triangle at such an
+//    apex (its shortest edge joins the two segments on one shell, its third vertex the apex)
+//    keeps the input angle and is not split [Miller-Pav-Walkington03]; a rejected circumcenter
+//    of a skinny triangle does not split a piece at the apex when the new vertex would lie
+//    closer to another than the triangle's shortest edge [Shewchuk00: "Mesh generation for
+//    domains with small angles", SoCG]: refinement never descends into the apex.
 // Guarantee (proofs/invariants/delaunay_refinement.md): for theta_min <= arcsin(1/(2 sqrt 2)) =
 // 20.7 degrees and no two segments meeting at less than 60 degrees the refinement terminates,
 // and then every triangle has every angle >= theta_min and every edge no longer than the size
-// at its midpoint. With smaller input angles it terminates too (shells and the rule above) and
-// the angle bound holds away from them. Above 20.7 degrees (up to 34) there is no proof: a
-// budget of Steiner points stops a run that does not terminate, with a GeometryError.
-// Cost: O(n log n + m log m) expected for m output vertices in practice (a binary heap of bad
-// triangles, cavities of O(1) expected size). Predicates: orient2d, incircle (SoS),
+// at its midpoint. With smaller input angles it terminates in every test (the rules above; no
+// proof here) and the angle bound holds away from them. Above 20.7 degrees (up to 34) there is
+// no proof either: a budget of Steiner points stops a run that does not terminate, with a
+// GeometryError.
+// Cost: O(n log n + m) for m output vertices in practice (O(1) bucketed queue operations,
+// cavities of O(1) expected size; the initial constrained triangulation O(n log n)). Predicates: orient2d, incircle (SoS),
 // corner_dot_sign (encroachment); construction: circumcenter.
 #pragma once
 

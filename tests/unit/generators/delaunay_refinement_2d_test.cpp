@@ -346,3 +346,9 @@ TEST(Generators_DelaunayRefinement, UlpWideFeatureOfTheTriangulationIsReported) 
             << what;
     }
 }
+
+TEST(Generators_DelaunayRefinement, NonPositiveSizeIsAnInputError) {
+    gen::RefinementOptions2 options;
+    options.size = gen::SizeFunction::analytic([](double x, double) { return x - 0.5; }, "x - 0.5");
+    EXPECT_THROW(gen::delaunay_refinement_2d(polygon({0, 0, 1, 0, 1, 1, 0, 1}).pslg(), options), em::InputError);
+}
