@@ -23,6 +23,10 @@ void add_triangulate_command(CLI::App& app);
 /// [--seed S] [--stats]`.
 void add_cdt_command(CLI::App& app);
 
+/// `exactmesh mesh IN.poly|--domain NAME -o OUT [--generator G] [--min-angle DEG]
+/// [--size NUM|FILE] [--max-steiner N] [--quality] [--stats]`.
+void add_mesh_command(CLI::App& app);
+
 /// `exactmesh check IN.node IN.ele`: sets `exit_status` to kExitCheckFailed when the mesh
 /// fails the exact Delaunay check.
 void add_check_command(CLI::App& app, int& exit_status);

@@ -29,7 +29,7 @@ int report_error(std::string_view message, int status) {
 int main(int argc, char** argv) {
     using namespace exactmesh::cli;
     try {
-        CLI::App app{"exactmesh: robust 2D Delaunay and constrained Delaunay triangulation with exact predicates",
+        CLI::App app{"exactmesh: robust 2D Delaunay and constrained Delaunay triangulation and quality meshing with exact predicates",
                      "exactmesh"};
         // No require_subcommand(): CLI11 would then report a misspelt subcommand as a missing
         // one; without it, `exactmesh frobnicate` is an unexpected argument, as it should be.
@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
         int exit_status = kExitSuccess;
         add_triangulate_command(app);
         add_cdt_command(app);
+        add_mesh_command(app);
         add_check_command(app, exit_status);
         add_fuzz_command(app, exit_status);
         add_swap_command(app);
@@ -53,7 +54,7 @@ int main(int argc, char** argv) {
         }
         if (app.get_subcommands().empty()) {
             return report_error(
-                "a subcommand is required: triangulate, cdt, check, fuzz, swap, min-max or swap3d (see "
+                "a subcommand is required: triangulate, cdt, mesh, check, fuzz, swap, min-max or swap3d (see "
                 "exactmesh --help)",
                 kExitBadInput);
         }

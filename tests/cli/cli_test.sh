@@ -391,9 +391,71 @@ swap3d_bad_input() {
   expect_error 2 'missing\.ele: cannot open for reading' swap3d "$data/pair.node" "$work/missing.ele" -o "$work/x.ele"
 }
 
+# `exactmesh mesh`: each built-in domain in each format, a .poly with an angle and size bound
+# (checked as constrained Delaunay by `check`, min angle from --quality), a size file, and the
+# error lines: unimplemented and unknown generators, bounds, files, open and broken domains.
+mesh() {
+  local domain ext
+  for domain in square-with-holes naca0012 key; do
+    run 0 mesh --domain "$domain" -o "$work/$domain.ele" --quality --stats || continue
+    for ext in ele neigh node poly; do [[ -s "$work/$domain.$ext" ]] || fail "mesh: $domain.$ext missing"; done
+    grep -Eq '^triangles: [1-9][0-9]{3,}$' "$work/out" || fail "mesh $domain: too few triangles: $(cat "$work/out")"
+    grep -Eq '^quality.min_angle: [0-9]+\.[0-9]+$' "$work/out" || fail "mesh $domain: no quality.min_angle"
+    grep -Eq '^quality.size_conformity: min [0-9.]+ median [0-9.]+ max (0\.[0-9]+|1\.0000[0-9]*) ' "$work/out" ||
+      fail "mesh $domain: size conformity above 1: $(grep size_conformity "$work/out")"
+    grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "mesh $domain --stats: no construct_seconds"
+    grep -Eq '^steiner_points: [1-9][0-9]*$' "$work/out" || fail "mesh $domain --stats: no steiner_points"
+  done
+  # No small input angle in square-with-holes: every angle at least the bound.
+  run 0 mesh --domain square-with-holes -o "$work/swh.vtu" --min-angle 30 --quality &&
+    awk '/^quality.min_angle:/ { exit !($2 >= 30) }' "$work/out" || fail "mesh: min angle below 30: $(cat "$work/out")"
+  for ext in msh vtu svg; do
+    run 0 mesh --domain key -o "$work/key.$ext" && [[ -s "$work/key.$ext" ]] || fail "mesh: key.$ext"
+  done
+  grep -q '</svg>' "$work/key.svg" || fail "mesh: svg not closed"
+  # A .poly (1-based, a hole, crossing diagonals): valid constrained Delaunay, angles >= 28.
+  run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/square.ele" --min-angle 28 --size 0.3 --quality || return
+  awk '/^quality.min_angle:/ { exit !($2 >= 28) }' "$work/out" || fail "mesh: min angle below 28: $(cat "$work/out")"
+  grep -q 'warning: segments 6 and 5 cross' "$work/err" || fail "mesh: no crossing warning: $(cat "$work/err")"
+  run 0 check "$data/square_hole_diagonals.poly" "$work/square.ele" &&
+    grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
+    fail "check rejected the mesh: $(cat "$work/out")"
+  # A size file: a point source at the centre, capped.
+  printf '# size\nuniform 0.5\npoint 2 2 0.05 0.5 1.5\n' >"$work/size.txt"
+  run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/graded.ele" --size "$work/size.txt" --quality &&
+    grep -Eq '^quality.size_conformity: .* max (0\.[0-9]+|1\.0000[0-9]*) ' "$work/out" ||
+    fail "mesh: graded size not met: $(cat "$work/out")"
+  # Errors: one line each.
+  local name
+  for name in quadtree advancing-front advancing-front-delaunay frontal; do
+    expect_error 2 "not implemented yet: $name" mesh --domain key -o "$work/x.ele" --generator "$name"
+  done
+  expect_error 2 "unknown generator 'magic'" mesh --domain key -o "$work/x.ele" --generator magic
+  expect_error 2 "unknown domain 'moon'" mesh --domain moon -o "$work/x.ele"
+  expect_error 2 'minimum angle 40 is outside \[0, 34\]' mesh --domain key -o "$work/x.ele" --min-angle 40
+  expect_error 2 'either an input \.poly file or --domain' mesh "$data/square_hole_diagonals.poly" --domain key -o "$work/x.ele"
+  expect_error 2 'either an input \.poly file or --domain' mesh -o "$work/x.ele"
+  printf 'point 1 2 3\n' >"$work/bad_size.txt"
+  expect_error 2 'bad_size\.txt:1: point takes 5 numbers' mesh --domain key -o "$work/x.ele" --size "$work/bad_size.txt"
+  expect_error 2 "--size 'nowhere' is neither a number > 0 nor a readable size file" \
+    mesh --domain key -o "$work/x.ele" --size nowhere
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 2 3\n0\n' >"$work/open.poly"
+  expect_error 2 'the segments enclose no region' mesh "$work/open.poly" -o "$work/x.ele"
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 nan\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/nan.poly"
+  expect_error 2 'nan\.poly:4: non-finite y coordinate' mesh "$work/nan.poly" -o "$work/x.ele"
+  expect_error 2 'more than 50 Steiner points' mesh --domain key -o "$work/x.ele" --max-steiner 50
+  # A self-intersecting boundary (a bow tie): split where it crosses, a warning, a valid mesh.
+  printf '4 2 0 0\n1 0 0\n2 2 2\n3 2 0\n4 0 2\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/bowtie.poly"
+  run 0 mesh "$work/bowtie.poly" -o "$work/bowtie.1.ele" &&
+    grep -q 'cross; split at new vertex 5 (1, 1)' "$work/err" || fail "mesh: bow tie: $(cat "$work/err")"
+  run 0 check "$work/bowtie.poly" "$work/bowtie.1.ele" || fail "check rejected the bow tie mesh: $(cat "$work/out")"
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/keep.poly"
+  expect_error 2 'keep\.poly: this output would overwrite the input file' mesh "$work/keep.poly" -o "$work/keep.ele"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
-    check_rejects_non_delaunay | cdt | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
+    check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
     swap3d_bad_input)
     "$case_name" ;;
   *)
