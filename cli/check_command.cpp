@@ -85,8 +85,8 @@ int run_constrained_check(const CheckArguments& arguments) {
 
 /// IN.node of dimension 3 against a TetGen .ele.
 int run_check_3d(const CheckArguments& arguments) {
-    const io::NodeFile3 nodes = io::read_node_3d(arguments.node_path);
-    const io::TetFile ele = io::read_ele_3d(arguments.ele_path, nodes.first_index, nodes.vertex_count());
+    const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.node_path);
+    const io::TetgenEleFile ele = io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
     const tri::Check3Report report =
         tri::check_delaunay_3d(nodes.xyz, ele.tets, {}, tri::Check3Numbering{nodes.first_index, ele.first_index});
     if (report.ok) {

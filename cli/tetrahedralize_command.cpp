@@ -67,7 +67,7 @@ void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
     }
     refuse_to_overwrite_input(arguments.input, output_files(output, format, {".face", ".neigh"}));
     const tri::Delaunay3Function construct = tri::delaunay_3d_algorithm(arguments.algorithm);
-    const io::NodeFile3 nodes = io::read_node_3d(arguments.input);
+    const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
 
     const tri::Delaunay3Options options{insertion_order(arguments.order), arguments.seed};
     predicates::reset_thread_stats();
@@ -88,9 +88,9 @@ void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
             fs::path face = output, neigh = output;
             face.replace_extension(".face");
             neigh.replace_extension(".neigh");
-            io::write_ele_3d(output, mesh.tets, nodes.first_index);
-            io::write_boundary_faces(face, mesh.tets, mesh.neighbors, nodes.first_index);
-            io::write_neigh_3d(neigh, mesh.neighbors, nodes.first_index);
+            io::write_tetgen_ele(output, mesh.tets, nodes.first_index);
+            io::write_tetgen_boundary_faces(face, mesh.tets, mesh.neighbors, nodes.first_index);
+            io::write_tetgen_neigh(neigh, mesh.neighbors, nodes.first_index);
             std::cout << "output: " << output.string() << '\n'
                       << "output: " << face.string() << '\n'
                       << "output: " << neigh.string() << '\n';

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// TetGen's .node / .ele / .face / .neigh formats (see tetgen_format.hpp).
+// TetGen's .node / .ele / .face / .neigh formats (see tetgen_format.hpp). The vertex section and
+// the record plumbing are shared with Triangle's formats (io/records).
 #include "io/tetgen_format.hpp"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 
 #include "io/records.hpp"
 #include "io/text_file.hpp"
+#include "triangulation/mesh3.hpp"
 
 namespace exactmesh::io {
 
@@ -16,7 +18,6 @@ namespace {
 using detail::expect_end;
 using detail::expect_field_count;
 using detail::expect_record_number;
-using detail::field_names;
 using detail::plausible;
 using detail::plural;
 using triangulation::kNone;
@@ -24,23 +25,22 @@ using triangulation::kNone;
 /// 4 face slots per tetrahedron must be addressable by a 32-bit index.
 constexpr std::uint64_t kMaxTets = triangulation::kMaxTetSlots;
 
-/// triangulation/'s corner order <-> TetGen's: the first two corners swapped (an involution).
-constexpr unsigned kTetGenCorner[4] = {1, 0, 2, 3};
+/// exactmesh's corner order <-> TetGen's: the last two corners swapped (an involution).
+constexpr unsigned kTetGenCorner[4] = {0, 1, 3, 2};
 
 }  // namespace
 
-NodeFile3 parse_node_3d(std::string_view text, const std::string& file_name) {
+TetgenNodeFile parse_tetgen_node(std::string_view text, const std::string& file_name) {
     TextLines lines(text, file_name);
     if (!lines.next_data_line()) {
         lines.fail_at_end(
-            "no header line (expected '<#vertices> <dimension=3> <#attributes> <#boundary "
-            "markers>')");
+            "no header line (expected '<#points> <dimension=3> <#attributes> <#boundary markers>')");
     }
     detail::VertexSection section;
     const std::uint64_t count =
         detail::parse_vertex_section(lines, text.size(), 3, "a 3D TetGen file", section);
     expect_end(lines, count, count == 1 ? "vertex" : "vertices");
-    NodeFile3 nodes;
+    TetgenNodeFile nodes;
     nodes.xyz = std::move(section.coordinates);
     nodes.first_index = section.first_index;
     nodes.attribute_count = section.attribute_count;
@@ -50,57 +50,27 @@ NodeFile3 parse_node_3d(std::string_view text, const std::string& file_name) {
     return nodes;
 }
 
-NodeFile3 read_node_3d(const std::filesystem::path& path) {
-    return parse_node_3d(read_text_file(path), path.string());
+TetgenNodeFile read_tetgen_node(const std::filesystem::path& path) {
+    return parse_tetgen_node(read_text_file(path), path.string());
 }
 
 unsigned read_node_dimension(const std::filesystem::path& path) {
     return detail::node_dimension(read_text_file(path), path.string());
 }
 
-std::string format_node_3d(const NodeFile3& nodes) {
-    const std::uint32_t count = nodes.vertex_count();
-    std::string out;
-    out.reserve(72 * std::size_t{count} + 64);
-    append_unsigned(out, count);
-    out += " 3 ";
-    append_unsigned(out, nodes.attribute_count);
-    out += nodes.has_markers ? " 1\n" : " 0\n";
-    for (std::uint32_t v = 0; v < count; ++v) {
-        append_unsigned(out, std::uint64_t{v} + nodes.first_index);
-        for (std::size_t c = 0; c < 3; ++c) {
-            out += ' ';
-            append_double(out, nodes.xyz[3 * std::size_t{v} + c]);
-        }
-        for (std::uint32_t a = 0; a < nodes.attribute_count; ++a) {
-            out += ' ';
-            append_double(out, nodes.attributes[std::size_t{v} * nodes.attribute_count + a]);
-        }
-        if (nodes.has_markers) {
-            out += ' ';
-            append_signed(out, nodes.markers[v]);
-        }
-        out += '\n';
-    }
-    return out;
-}
-
-void write_node_3d(const std::filesystem::path& path, const NodeFile3& nodes) {
-    write_text_file(path, format_node_3d(nodes));
-}
-
-TetFile parse_ele_3d(std::string_view text, const std::string& file_name,
-                     std::uint32_t vertex_first_index, std::uint32_t vertex_count) {
+TetgenEleFile parse_tetgen_ele(std::string_view text, const std::string& file_name,
+                               std::uint32_t vertex_first_index, std::uint32_t vertex_count) {
     TextLines lines(text, file_name);
     if (!lines.next_data_line()) {
         lines.fail_at_end(
-            "no header line (expected '<#tetrahedra> <nodes per tetrahedron=4> <#attributes>')");
+            "no header line (expected '<#tetrahedra> <nodes per tetrahedron=4> <region attribute "
+            "0|1>')");
     }
     const auto& header = lines.fields();
     if (header.size() > 3) {
         lines.fail_quoting_line("header has " + std::to_string(header.size()) +
                                 " fields, expected at most 3 (#tetrahedra, nodes per tetrahedron, "
-                                "#attributes)");
+                                "region attribute)");
     }
     const std::uint64_t count = lines.parse_unsigned(header[0], "tetrahedron count", kMaxTets);
     std::uint64_t corners = 4;
@@ -109,27 +79,25 @@ TetFile parse_ele_3d(std::string_view text, const std::string& file_name,
                                        std::numeric_limits<std::uint64_t>::max());
         if (corners != 4 && corners != 10) {
             lines.fail("nodes per tetrahedron must be 4 (or 10 for quadratic tetrahedra), got " +
-                       std::to_string(corners) +
-                       (corners == 3 ? " (a 2D Triangle .ele file?)" : ""));
+                       std::to_string(corners) + (corners == 3 ? " (a 2D Triangle .ele file?)" : ""));
         }
     }
-    TetFile ele;
+    TetgenEleFile ele;
     if (header.size() > 2) {
-        ele.attribute_count = static_cast<std::uint32_t>(
-            lines.parse_unsigned(header[2], "attribute count", detail::kMaxAttributes));
+        const std::uint64_t region = lines.parse_unsigned(
+            header[2], "region attribute flag", std::numeric_limits<std::uint64_t>::max());
+        if (region > 1) lines.fail("region attribute flag must be 0 or 1, got " + std::to_string(region));
+        ele.has_region = region == 1;
     }
-    const std::uint64_t expected = 1 + corners + ele.attribute_count;
-    const std::string names =
-        field_names(corners == 4 ? "number, v1, v2, v3, v4" : "number, v1, ..., v10",
-                    ele.attribute_count, false);
-    const std::uint64_t last_vertex =
-        std::uint64_t{vertex_first_index} + vertex_count;  // exclusive
-    const std::string numbering = vertex_count == 0 ? std::string("the node file has no vertices")
-                                                    : "the node file numbers its vertices " +
+    const std::uint64_t expected = 1 + corners + (ele.has_region ? 1 : 0);
+    const std::string names = std::string(corners == 4 ? "number, 4 nodes" : "number, 10 nodes") +
+                              (ele.has_region ? ", region" : "");
+    const std::uint64_t last = std::uint64_t{vertex_first_index} + vertex_count;  // exclusive
+    const std::string numbering = vertex_count == 0 ? std::string("the node file has no points")
+                                                    : "the node file numbers its points " +
                                                           std::to_string(vertex_first_index) +
-                                                          " to " + std::to_string(last_vertex - 1);
+                                                          " to " + std::to_string(last - 1);
     ele.tets.reserve(4 * plausible(count, text.size(), 10));
-    std::string attribute_name;
     for (std::uint64_t i = 0; i < count; ++i) {
         if (!lines.next_data_line()) {
             lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
@@ -138,32 +106,52 @@ TetFile parse_ele_3d(std::string_view text, const std::string& file_name,
         expect_field_count(lines, expected, names);
         const auto& fields = lines.fields();
         expect_record_number(lines, fields[0], "tetrahedron", i, ele.first_index);
-        VertIdx corner[4];
+        std::uint32_t corner[4];
         for (std::uint64_t k = 0; k < corners; ++k) {
-            const std::uint64_t v = lines.parse_unsigned(fields[1 + k], "vertex number",
+            const std::uint64_t v = lines.parse_unsigned(fields[1 + k], "node number",
                                                          std::numeric_limits<std::uint32_t>::max());
-            if (v < vertex_first_index || v >= last_vertex) {
-                lines.fail("vertex number " + std::to_string(v) + " out of range: " + numbering);
+            if (v < vertex_first_index || v >= last) {
+                lines.fail("node number " + std::to_string(v) + " out of range: " + numbering);
             }
-            if (k < 4) corner[k] = static_cast<VertIdx>(v - vertex_first_index);
+            if (k < 4) corner[k] = static_cast<std::uint32_t>(v - vertex_first_index);
         }
         for (const unsigned k : kTetGenCorner) ele.tets.push_back(corner[k]);
-        for (std::uint32_t a = 0; a < ele.attribute_count; ++a) {
-            attribute_name = "attribute " + std::to_string(a + 1);
-            ele.attributes.push_back(
-                lines.parse_finite_double(fields[1 + corners + a], attribute_name));
+        if (ele.has_region) {
+            ele.regions.push_back(lines.parse_finite_double(fields.back(), "region attribute"));
         }
     }
     expect_end(lines, count, count == 1 ? "tetrahedron" : "tetrahedra");
     return ele;
 }
 
-TetFile read_ele_3d(const std::filesystem::path& path, std::uint32_t vertex_first_index,
-                    std::uint32_t vertex_count) {
-    return parse_ele_3d(read_text_file(path), path.string(), vertex_first_index, vertex_count);
+TetgenEleFile read_tetgen_ele(const std::filesystem::path& path, std::uint32_t vertex_first_index,
+                              std::uint32_t vertex_count) {
+    return parse_tetgen_ele(read_text_file(path), path.string(), vertex_first_index, vertex_count);
 }
 
-std::string format_ele_3d(std::span<const VertIdx> tets, std::uint32_t first_index) {
+std::string format_tetgen_node(std::span<const double> xyz, std::uint32_t first_index) {
+    const std::size_t count = xyz.size() / 3;
+    std::string out;
+    out.reserve(64 * count + 32);
+    append_unsigned(out, count);
+    out += " 3 0 0\n";
+    for (std::size_t v = 0; v < count; ++v) {
+        append_unsigned(out, v + first_index);
+        for (std::size_t c = 0; c < 3; ++c) {
+            out += ' ';
+            append_double(out, xyz[3 * v + c]);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+void write_tetgen_node(const std::filesystem::path& path, std::span<const double> xyz,
+                       std::uint32_t first_index) {
+    write_text_file(path, format_tetgen_node(xyz, first_index));
+}
+
+std::string format_tetgen_ele(std::span<const std::uint32_t> tets, std::uint32_t first_index) {
     const std::size_t count = tets.size() / 4;
     std::string out;
     out.reserve(48 * count + 32);
@@ -180,16 +168,17 @@ std::string format_ele_3d(std::span<const VertIdx> tets, std::uint32_t first_ind
     return out;
 }
 
-void write_ele_3d(const std::filesystem::path& path, std::span<const VertIdx> tets,
-                  std::uint32_t first_index) {
-    write_text_file(path, format_ele_3d(tets, first_index));
+void write_tetgen_ele(const std::filesystem::path& path, std::span<const std::uint32_t> tets,
+                      std::uint32_t first_index) {
+    write_text_file(path, format_tetgen_ele(tets, first_index));
 }
 
-std::string format_boundary_faces(std::span<const VertIdx> tets, std::span<const TetIdx> neighbors,
-                                  std::uint32_t first_index) {
+std::string format_tetgen_boundary_faces(std::span<const std::uint32_t> tets,
+                                         std::span<const std::uint32_t> neighbors,
+                                         std::uint32_t first_index) {
     const std::size_t count = tets.size() / 4;
     std::size_t faces = 0;
-    for (std::size_t f = 0; f < neighbors.size(); ++f) faces += neighbors[f] == kNone ? 1 : 0;
+    for (const std::uint32_t n : neighbors) faces += n == kNone ? 1 : 0;
     std::string out;
     out.reserve(40 * faces + 32);
     append_unsigned(out, faces);
@@ -211,12 +200,12 @@ std::string format_boundary_faces(std::span<const VertIdx> tets, std::span<const
     return out;
 }
 
-void write_boundary_faces(const std::filesystem::path& path, std::span<const VertIdx> tets,
-                          std::span<const TetIdx> neighbors, std::uint32_t first_index) {
-    write_text_file(path, format_boundary_faces(tets, neighbors, first_index));
+void write_tetgen_boundary_faces(const std::filesystem::path& path, std::span<const std::uint32_t> tets,
+                                 std::span<const std::uint32_t> neighbors, std::uint32_t first_index) {
+    write_text_file(path, format_tetgen_boundary_faces(tets, neighbors, first_index));
 }
 
-std::string format_neigh_3d(std::span<const TetIdx> neighbors, std::uint32_t first_index) {
+std::string format_tetgen_neigh(std::span<const std::uint32_t> neighbors, std::uint32_t first_index) {
     const std::size_t count = neighbors.size() / 4;
     std::string out;
     out.reserve(48 * count + 32);
@@ -225,7 +214,7 @@ std::string format_neigh_3d(std::span<const TetIdx> neighbors, std::uint32_t fir
     for (std::size_t t = 0; t < count; ++t) {
         append_unsigned(out, t + first_index);
         for (const unsigned k : kTetGenCorner) {
-            const TetIdx neighbor = neighbors[4 * t + k];
+            const std::uint32_t neighbor = neighbors[4 * t + k];
             out += ' ';
             if (neighbor == kNone) {
                 out += "-1";
@@ -238,9 +227,9 @@ std::string format_neigh_3d(std::span<const TetIdx> neighbors, std::uint32_t fir
     return out;
 }
 
-void write_neigh_3d(const std::filesystem::path& path, std::span<const TetIdx> neighbors,
-                    std::uint32_t first_index) {
-    write_text_file(path, format_neigh_3d(neighbors, first_index));
+void write_tetgen_neigh(const std::filesystem::path& path, std::span<const std::uint32_t> neighbors,
+                        std::uint32_t first_index) {
+    write_text_file(path, format_tetgen_neigh(neighbors, first_index));
 }
 
 }  // namespace exactmesh::io

@@ -458,7 +458,7 @@ tetrahedralize_bad_input() {
   expect_error 2 'output is required' tetrahedralize "$data/cube_center.node"
   # check: a TetGen .ele naming a vertex the .node lacks; a 2D .ele against a 3D .node.
   printf '1 4 0\n1 1 2 3 10\n' >"$work/bad_vertex.ele"
-  expect_error 2 'bad_vertex\.ele:2: vertex number 10 out of range' check "$data/cube_center.node" "$work/bad_vertex.ele"
+  expect_error 2 'bad_vertex\.ele:2: node number 10 out of range' check "$data/cube_center.node" "$work/bad_vertex.ele"
   expect_error 2 'nodes per tetrahedron must be 4' check "$data/cube_center.node" "$data/kite_delaunay.ele"
 }
 
@@ -483,11 +483,123 @@ check_rejects_non_delaunay_3d() {
     fail "check: one tetrahedron: $(cat "$work/out")"
 }
 
+swap3d_criteria() {
+  # Two tetrahedra on a face whose far apex is inside the near sphere: one 2-3 swap, Delaunay.
+  run 0 swap3d "$data/pair.node" "$data/pair.ele" -o "$work/pair.ele" --stats || return
+  grep -q '^flips_23: 1$' "$work/out" || fail "swap3d pair: expected one 2-3 swap: $(cat "$work/out")"
+  grep -q '^stalled_faces: 0$' "$work/out" || fail "swap3d pair: stalled: $(cat "$work/out")"
+  grep -q '^tetrahedra: 3$' "$work/out" || fail "swap3d pair: expected 3 tetrahedra"
+  [[ $(head -n1 "$work/pair.ele") == "3 4 0" ]] || fail "swap3d pair: .ele header $(head -n1 "$work/pair.ele")"
+  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "swap3d --stats: no construct_seconds"
+  for name in faces_examined edges_examined flips_23 flips_32 flips_44 flips_22 not_flippable; do
+    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "swap3d --stats: no '$name: N' line"
+  done
+  # The output reads back (TetGen orientation round trip) and swapping it again changes nothing.
+  run 0 swap3d "$data/pair.node" "$work/pair.ele" -o "$work/again.ele" --stats || return
+  grep -q '^flips_23: 0$' "$work/out" || fail "swap3d: second pass swapped: $(cat "$work/out")"
+  cmp -s "$work/pair.ele" "$work/again.ele" || fail "swap3d: second pass changed the mesh"
+  # The stall instance of tests/unit/triangulation/edge_face_swap_3d_test.cpp: 1-based files,
+  # Delaunay swapping stops with 6 faces not locally Delaunay and no valid swap.
+  run 0 swap3d "$data/stall7.node" "$data/stall7_placing.ele" -o "$work/stall.ele" --stats --quality || return
+  grep -q '^stalled_faces: 6$' "$work/out" || fail "swap3d stall: $(cat "$work/out")"
+  sed -n 2p "$work/stall.ele" | grep -q '^1 ' || fail "swap3d: 1-based input must give 1-based output"
+  for name in min_dihedral_degrees max_dihedral_degrees min_volume_edge mean_volume_edge max_radius_edge slivers; do
+    grep -Eq "^$name: [0-9.e+-]+$" "$work/out" || fail "swap3d --quality: no '$name: value' line"
+  done
+  [[ $(grep -c '^dihedral_degrees\[' "$work/out") -eq 18 ]] || fail "swap3d --quality: expected 18 histogram bins"
+  for criterion in max-min-dihedral min-max-dihedral volume-edge; do
+    run 0 swap3d "$data/stall7.node" "$data/stall7_placing.ele" -o "$work/$criterion.ele" --criterion "$criterion" \
+      --stats --quality || continue
+    grep -q "^criterion: $criterion$" "$work/out" || fail "swap3d: criterion line for $criterion"
+    ! grep -q '^stalled_faces' "$work/out" || fail "swap3d: stalled_faces is a Delaunay counter"
+    if grep -Ev '^[a-z_0-9]+(\[[0-9]+,[0-9]+[])])?: [^ ]+$' "$work/out" | grep -q .; then
+      fail "swap3d --stats --quality: a line is not 'name: value'"
+    fi
+  done
+}
+
+swap3d_bad_input() {
+  expect_error 2 'nan3d\.node:[0-9]+: non-finite z coordinate' \
+    swap3d "$data/nan3d.node" "$data/pair.ele" -o "$work/x.ele"
+  expect_error 2 'planar\.node:1: dimension must be 3' swap3d "$data/planar.node" "$data/pair.ele" -o "$work/x.ele"
+  expect_error 2 'pair_bad_node\.ele:3: node number 9 out of range' \
+    swap3d "$data/pair.node" "$data/pair_bad_node.ele" -o "$work/x.ele"
+  expect_error 2 'pair_inverted\.ele: tetrahedron 0 \(1, 0, 3, 2\) is negatively oriented' \
+    swap3d "$data/pair.node" "$data/pair_inverted.ele" -o "$work/x.ele"
+  expect_error 2 'pair_overlap\.ele: face .* is shared by 3 tetrahedra' \
+    swap3d "$data/pair.node" "$data/pair_overlap.ele" -o "$work/x.ele"
+  expect_error 2 'foo not in' swap3d "$data/pair.node" "$data/pair.ele" -o "$work/x.ele" --criterion foo
+  expect_error 2 'the output must be a \.ele file' swap3d "$data/pair.node" "$data/pair.ele" -o "$work/x.node"
+  expect_error 2 'missing\.ele: cannot open for reading' swap3d "$data/pair.node" "$work/missing.ele" -o "$work/x.ele"
+}
+
+# `exactmesh mesh`: each built-in domain in each format, a .poly with an angle and size bound
+# (checked as constrained Delaunay by `check`, min angle from --quality), a size file, and the
+# error lines: unimplemented and unknown generators, bounds, files, open and broken domains.
+mesh() {
+  local domain ext
+  for domain in square-with-holes naca0012 key; do
+    run 0 mesh --domain "$domain" -o "$work/$domain.ele" --quality --stats || continue
+    for ext in ele neigh node poly; do [[ -s "$work/$domain.$ext" ]] || fail "mesh: $domain.$ext missing"; done
+    grep -Eq '^triangles: [1-9][0-9]{3,}$' "$work/out" || fail "mesh $domain: too few triangles: $(cat "$work/out")"
+    grep -Eq '^quality.min_angle: [0-9]+\.[0-9]+$' "$work/out" || fail "mesh $domain: no quality.min_angle"
+    grep -Eq '^quality.size_conformity: min [0-9.]+ median [0-9.]+ max (0\.[0-9]+|1\.0000[0-9]*) ' "$work/out" ||
+      fail "mesh $domain: size conformity above 1: $(grep size_conformity "$work/out")"
+    grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "mesh $domain --stats: no construct_seconds"
+    grep -Eq '^steiner_points: [1-9][0-9]*$' "$work/out" || fail "mesh $domain --stats: no steiner_points"
+  done
+  # No small input angle in square-with-holes: every angle at least the bound.
+  run 0 mesh --domain square-with-holes -o "$work/swh.vtu" --min-angle 30 --quality &&
+    awk '/^quality.min_angle:/ { exit !($2 >= 30) }' "$work/out" || fail "mesh: min angle below 30: $(cat "$work/out")"
+  for ext in msh vtu svg; do
+    run 0 mesh --domain key -o "$work/key.$ext" && [[ -s "$work/key.$ext" ]] || fail "mesh: key.$ext"
+  done
+  grep -q '</svg>' "$work/key.svg" || fail "mesh: svg not closed"
+  # A .poly (1-based, a hole, crossing diagonals): valid constrained Delaunay, angles >= 28.
+  run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/square.ele" --min-angle 28 --size 0.3 --quality || return
+  awk '/^quality.min_angle:/ { exit !($2 >= 28) }' "$work/out" || fail "mesh: min angle below 28: $(cat "$work/out")"
+  grep -q 'warning: segments 6 and 5 cross' "$work/err" || fail "mesh: no crossing warning: $(cat "$work/err")"
+  run 0 check "$data/square_hole_diagonals.poly" "$work/square.ele" &&
+    grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
+    fail "check rejected the mesh: $(cat "$work/out")"
+  # A size file: a point source at the centre, capped.
+  printf '# size\nuniform 0.5\npoint 2 2 0.05 0.5 1.5\n' >"$work/size.txt"
+  run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/graded.ele" --size "$work/size.txt" --quality &&
+    grep -Eq '^quality.size_conformity: .* max (0\.[0-9]+|1\.0000[0-9]*) ' "$work/out" ||
+    fail "mesh: graded size not met: $(cat "$work/out")"
+  # Errors: one line each.
+  local name
+  for name in quadtree advancing-front advancing-front-delaunay frontal; do
+    expect_error 2 "not implemented yet: $name" mesh --domain key -o "$work/x.ele" --generator "$name"
+  done
+  expect_error 2 "unknown generator 'magic'" mesh --domain key -o "$work/x.ele" --generator magic
+  expect_error 2 "unknown domain 'moon'" mesh --domain moon -o "$work/x.ele"
+  expect_error 2 'minimum angle 40 is outside \[0, 34\]' mesh --domain key -o "$work/x.ele" --min-angle 40
+  expect_error 2 'either an input \.poly file or --domain' mesh "$data/square_hole_diagonals.poly" --domain key -o "$work/x.ele"
+  expect_error 2 'either an input \.poly file or --domain' mesh -o "$work/x.ele"
+  printf 'point 1 2 3\n' >"$work/bad_size.txt"
+  expect_error 2 'bad_size\.txt:1: point takes 5 numbers' mesh --domain key -o "$work/x.ele" --size "$work/bad_size.txt"
+  expect_error 2 "--size 'nowhere' is neither a number > 0 nor a readable size file" \
+    mesh --domain key -o "$work/x.ele" --size nowhere
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 2 3\n0\n' >"$work/open.poly"
+  expect_error 2 'the segments enclose no region' mesh "$work/open.poly" -o "$work/x.ele"
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 nan\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/nan.poly"
+  expect_error 2 'nan\.poly:4: non-finite y coordinate' mesh "$work/nan.poly" -o "$work/x.ele"
+  expect_error 2 'more than 50 Steiner points' mesh --domain key -o "$work/x.ele" --max-steiner 50
+  # A self-intersecting boundary (a bow tie): split where it crosses, a warning, a valid mesh.
+  printf '4 2 0 0\n1 0 0\n2 2 2\n3 2 0\n4 0 2\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/bowtie.poly"
+  run 0 mesh "$work/bowtie.poly" -o "$work/bowtie.1.ele" &&
+    grep -q 'cross; split at new vertex 5 (1, 1)' "$work/err" || fail "mesh: bow tie: $(cat "$work/err")"
+  run 0 check "$work/bowtie.poly" "$work/bowtie.1.ele" || fail "check rejected the bow tie mesh: $(cat "$work/out")"
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/keep.poly"
+  expect_error 2 'keep\.poly: this output would overwrite the input file' mesh "$work/keep.poly" -o "$work/keep.ele"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
-    check_rejects_non_delaunay | cdt | swap_criteria | min_max | swap_bad_input | \
-    tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | tetrahedralize_bad_input | \
-    check_rejects_non_delaunay_3d)
+    check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
+    swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
+    tetrahedralize_bad_input | check_rejects_non_delaunay_3d)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

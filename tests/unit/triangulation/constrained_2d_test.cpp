@@ -338,6 +338,21 @@ TEST(Constrained2d, ConformingSegmentsAtSubnormalAnglesTerminate) {
     }
 }
 
+TEST(Constrained2d, ConformingNearlyOverlappingSegmentsStopAtTheSplitBudget) {
+    // libFuzzer timeout (2026-11-23): segments (0, 2^465) - (1e-312, 0) and (2e-317, 2^641) -
+    // (3e-322, -2^769) run side by side about 1e-312 apart over 2^465: conforming would need
+    // pieces as short as that gap all along. The split budget stops it with GeometryError (4,672
+    // splits, under a second in release); swap and cavity recovery are unaffected.
+    const Input in{{0, 0x1.03ffp+465, 0, 0, 0x0.00000003ffp-1022, 0x1p+641, 0x0.000000000004p-1022,
+                    -0x1.00000004p+769, 0x0.000400000003fp-1022, 0, 0x1.0003ffp-511, 0x0.000003e3e0000p-1022},
+                   {0, 4, 2, 3}, {}, {}};
+    EXPECT_THROW(build(in, tri::SegmentRecovery::Conforming), em::GeometryError);
+    for (const auto recovery : {tri::SegmentRecovery::Swap, tri::SegmentRecovery::Cavity}) {
+        const auto r = build(in, recovery);
+        expect_valid(in, r, recovery, true, tri::segment_recovery_name(recovery));
+    }
+}
+
 TEST(Constrained2d, ConformingPieceBendsAtAVertexWithinRoundingOfItsSegment) {
     // Segment 1, (0, 2) - (2, 0), passes exactly through (1, 1), but segment 0, (0, 1.3) -
     // (3, 1.8), crosses it first at a rounded point, so its piece from there to (2, 0) misses

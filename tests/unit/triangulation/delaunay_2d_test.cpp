@@ -362,3 +362,145 @@ TEST(Triangulation_Delaunay2, GridLocationGivesTheSameTriangulationWithShortWalk
         }
     }
 }
+
+namespace {
+
+/// Tanemura-Merriam against Green-Sibson on xy: the exact check, then the same triangles
+/// (same perturbation), and no more than 2n - 5 triangles' worth of work per point.
+void expect_tanemura_merriam_matches(const std::vector<double>& xy, const std::string& label) {
+    const tri::Delaunay2Result reference = tri::green_sibson_2d(xy);
+    const tri::Delaunay2Result r = tri::tanemura_merriam_2d(xy);
+    const tri::CheckReport report = tri::check_delaunay_2d(xy, r.triangles);
+    ASSERT_TRUE(report.ok) << label << ": " << report.problem;
+    EXPECT_EQ(r.merged_into, reference.merged_into) << label;
+    EXPECT_EQ(canonical(r), canonical(reference)) << label;
+}
+
+}  // namespace
+
+TEST(Triangulation_TanemuraMerriam2, WideRangeFuzzInputFromTheRevertedRewrite) {
+    // tests/data/fuzz/delaunay_2d_tm_hang.bin (fuzz_delaunay_2d, raw mode: 17 points, bits
+    // copied as doubles) spelled out. Edge 10 -> 13 of the grid-cell order, about 2^529 long
+    // among coordinates up to 2^972, had its circle computed in grid units, where its squared
+    // lengths (2^-888 and 2^-1126) underflow: radius 0, every candidate "certainly outside",
+    // a wrong third vertex, and a front that went round vertex 4 forever. The circles are now
+    // computed in a frame scaled to the edge.
+    const std::vector<double> xy = {
+        0x1.0000000000000p+2,    0x1.0000000000000p+0,    0x1.e611c0029472dp+1,
+        0x1.0ab7803156ed2p+1,    0x1.9bc788585f663p+1,    0x1.82b2f9ff6123ap+1,
+        0x1.2b29dd02f316dp+1,    0x1.6cb3fffffff08p-552,  0x1.0d262400d7be2p-360,
+        0x1.0b85a3ff46dcbp+777,  0x1.5b1f8400fe5cap+437,  -0x1.d27773fc6e9d5p+731,
+        0x1.1d52e400f1574p+201,  -0x1.38479bfe9da59p-744, -0x1.5f594400b2704p+410,
+        0x1.ae622bff8cf77p-215,  0x1.f866c4004a266p-1012, 0x1.08a8abfff2ec6p-1010,
+        0x1.f866e3ff8d1eap-1012, -0x1.dd614bfff2ec6p+972, -0x1.5f59c3fdcb857p+410,
+        -0x1.b986cbff8cf77p+163, 0x1.1d546bfe28998p+201,  0x1.708eabfe9da59p-465,
+        0x1.5b180bff64e09p+437,  -0x1.a4eea3fc6e9d5p+438, 0x1.0d250bffe2ae9p-360,
+        -0x1.170b63ff46dcbp+529, -0x1.f3164bfffcb94p+259, 0x1.d961a4002b29dp-81,
+        -0x1.5f65cbffaf7c4p-935, 0x1.c24844009bc78p-1,    0x1.94728bff0565fp-1021,
+        0x1.ddbd0400e611cp+555};
+    expect_tanemura_merriam_matches(xy, "fuzz input");
+    expect_all_agree(xy, "fuzz input");
+    const tri::Delaunay2Result r = tri::tanemura_merriam_2d(xy);
+    EXPECT_EQ(r.triangles.size() / 3, 28u);
+    // Each search looks at every point at most once: 17 points, 28 triangles.
+    EXPECT_LE(r.counters.candidates, 28u * 17u);
+}
+
+TEST(Triangulation_TanemuraMerriam2, ClustersFarBelowTheLargestCoordinate) {
+    // Random clusters at 2^-600, 2^-1000 (subnormal products) and at subnormal coordinates,
+    // each beside a few points near 2^400 and 2^1000: in grid units (the largest coordinate
+    // scaled to 1) a cluster's edges are far below the square root of the smallest double.
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (const int small : {-600, -1000, -1070}) {
+        for (const int large : {400, 1000}) {
+            std::vector<double> xy;
+            for (int i = 0; i < 60; ++i) {
+                xy.push_back(std::ldexp(std::round(u(rng) * 64), small));
+                xy.push_back(std::ldexp(std::round(u(rng) * 64), small));
+            }
+            for (int i = 0; i < 6; ++i) {
+                xy.push_back(std::ldexp(u(rng), large));
+                xy.push_back(std::ldexp(u(rng), large));
+            }
+            const std::string label =
+                "2^" + std::to_string(small) + " and 2^" + std::to_string(large);
+            expect_tanemura_merriam_matches(xy, label);
+        }
+    }
+}
+
+TEST(Triangulation_TanemuraMerriam2, CocircularSetsMatchGreenSibson) {
+    // All integer points of x^2 + y^2 = 5^2 13^2 17^2 (one circle: every quadruple cocircular,
+    // decided by the perturbation alone), with and without its centre, and shifted copies.
+    const int radius = 5 * 13 * 17;
+    std::vector<double> circle;
+    for (int x = -radius; x <= radius; ++x) {
+        const int rest = radius * radius - x * x;
+        const auto y = static_cast<int>(std::lround(std::sqrt(static_cast<double>(rest))));
+        if (y * y != rest) continue;
+        circle.insert(circle.end(), {static_cast<double>(x), static_cast<double>(y)});
+        if (y != 0) circle.insert(circle.end(), {static_cast<double>(x), -static_cast<double>(y)});
+    }
+    ASSERT_GT(circle.size() / 2, 100u);
+    expect_tanemura_merriam_matches(circle, "one circle");
+    std::vector<double> centred = circle;
+    centred.insert(centred.end(), {0.0, 0.0});
+    expect_tanemura_merriam_matches(centred, "one circle and its centre");
+    std::vector<double> shifted;
+    for (int copy = 0; copy < 4; ++copy) {
+        for (std::size_t i = 0; i < circle.size(); i += 2) {
+            shifted.push_back(circle[i] + copy * 1500.0);
+            shifted.push_back(circle[i + 1] + (copy % 2) * 700.0);
+        }
+    }
+    expect_tanemura_merriam_matches(shifted, "four overlapping circles");
+}
+
+TEST(Triangulation_TanemuraMerriam2, SortedParabolaMatchesGreenSibson) {
+    // (t, t^2) by increasing t: the triangulation is a fan from the first point (a circle
+    // through three points of a parabola meets it again at minus their sum), so every front
+    // edge's third vertex is the farthest point and its lens holds the whole arc.
+    for (const int n : {64, 1000}) {
+        std::vector<double> xy;
+        for (int i = 0; i < n; ++i) {
+            const double t = static_cast<double>(i) / n;
+            xy.push_back(t);
+            xy.push_back(t * t);
+        }
+        expect_tanemura_merriam_matches(xy, "parabola n " + std::to_string(n));
+        std::vector<double> reversed;
+        for (int i = n - 1; i >= 0; --i)
+            reversed.insert(reversed.end(), {xy[2 * i], xy[2 * i + 1]});
+        expect_tanemura_merriam_matches(reversed, "reversed parabola n " + std::to_string(n));
+    }
+}
+
+TEST(Triangulation_TanemuraMerriam2, DenseClusterInAWideBoundingBoxStaysLinear) {
+    // 2000 points in a square 2^-40 or 2^-1000 wide beside four points about 1 or 2^600 apart:
+    // the whole cluster falls in one grid cell, which gets a kd-tree. Without it every search
+    // in the cluster looked at all 2000 points; with it about 30 per point. The edges from the
+    // far points to the cluster have circles 2^600 times the cluster's size, decided in
+    // double from input coordinates (the power test), not by the exact incircle.
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (const int small : {-40, -1000}) {
+        for (const int large : {0, 600}) {
+            std::vector<double> xy;
+            for (int i = 0; i < 2000; ++i) {
+                xy.push_back(std::ldexp(u(rng), small));
+                xy.push_back(std::ldexp(u(rng), small));
+            }
+            for (int i = 0; i < 4; ++i) {
+                xy.push_back(std::ldexp(u(rng) - 0.5, large));
+                xy.push_back(std::ldexp(u(rng) - 0.5, large));
+            }
+            const std::string label =
+                "2^" + std::to_string(small) + " and 2^" + std::to_string(large);
+            expect_tanemura_merriam_matches(xy, label);
+            const tri::Delaunay2Result r = tri::tanemura_merriam_2d(xy);
+            EXPECT_LT(r.counters.candidates, 60u * 2004u) << label;
+            EXPECT_LT(r.counters.incircle_calls, 100u) << label;
+        }
+    }
+}
