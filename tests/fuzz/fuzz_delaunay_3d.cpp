@@ -25,15 +25,13 @@
 #include <vector>
 
 #include "predicates/errors.hpp"
-#include "predicates/orient3d.hpp"
-#include "predicates/sos.hpp"
+#include "tests/oracles/empty_sphere_delaunay_3d.hpp"
 #include "triangulation/check_3d.hpp"
 #include "triangulation/delaunay_3d.hpp"
 
 namespace {
 
 namespace tri = exactmesh::triangulation;
-using exactmesh::predicates::Sign;
 
 constexpr std::size_t kMaxPoints = 160;
 /// Raw bit patterns put coordinates at every magnitude, where every predicate ends in GMP.
@@ -159,31 +157,6 @@ bool has_duplicates(const std::vector<double>& xyz) {
     return false;
 }
 
-/// Every non-flat 4-subset whose perturbed circumsphere holds no other point (distinct points).
-Tets naive_delaunay(const std::vector<double>& xyz) {
-    const auto n = static_cast<tri::VertIdx>(xyz.size() / 3);
-    auto p = [&xyz](tri::VertIdx v) { return xyz.data() + 3 * std::size_t{v}; };
-    Tets out;
-    for (tri::VertIdx a = 0; a < n; ++a)
-        for (tri::VertIdx b = a + 1; b < n; ++b)
-            for (tri::VertIdx c = b + 1; c < n; ++c)
-                for (tri::VertIdx d = c + 1; d < n; ++d) {
-                    const Sign o = exactmesh::predicates::orient3d(p(a), p(b), p(c), p(d));
-                    if (o == Sign::Zero) continue;
-                    tri::VertIdx w[4] = {a, b, c, d};
-                    if (o == Sign::Negative) std::swap(w[2], w[3]);
-                    bool empty = true;
-                    for (tri::VertIdx q = 0; q < n && empty; ++q) {
-                        if (q == a || q == b || q == c || q == d) continue;
-                        empty = exactmesh::predicates::insphere_sos(p(w[0]), p(w[1]), p(w[2]),
-                                                                    p(w[3]), p(q), w[0], w[1], w[2],
-                                                                    w[3], q) == Sign::Negative;
-                    }
-                    if (empty) out.insert({a, b, c, d});
-                }
-    return out;
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -249,7 +222,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                           ": another insertion order gives other tetrahedra");
         }
         if (xyz.size() / 3 <= kOracleMaxPoints &&
-            canonical(results[0].mesh.tets) != naive_delaunay(xyz)) {
+            canonical(results[0].mesh.tets) != exactmesh::oracles::empty_sphere_delaunay_3d(xyz)) {
             fail(xyz, "the tetrahedra differ from the naive empty-sphere oracle");
         }
     }

@@ -19,6 +19,7 @@
 #include "predicates/insphere.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/sos.hpp"
+#include "tests/oracles/empty_sphere_delaunay_3d.hpp"
 #include "triangulation/bowyer_watson_3d.hpp"
 #include "triangulation/check_3d.hpp"
 #include "triangulation/green_sibson_3d.hpp"
@@ -89,34 +90,11 @@ tri::Delaunay3Result expect_all_agree(const std::vector<double>& xyz, const std:
     return reference;
 }
 
-/// The perturbed Delaunay tetrahedralization by brute force: every 4-subset that is not flat
-/// and whose perturbed circumsphere (insphere_sos by index) contains no other point. Unique,
-/// so it is exactly what the algorithms must return (points must be distinct).
+/// The perturbed Delaunay tetrahedralization by brute force (tests/oracles): every non-flat
+/// 4-subset whose perturbed circumsphere holds no other point. Unique, so it is exactly what
+/// the algorithms must return (points must be distinct).
 Tets naive_delaunay(const std::vector<double>& xyz) {
-    const auto n = static_cast<tri::VertIdx>(xyz.size() / 3);
-    auto p = [&xyz](tri::VertIdx v) { return xyz.data() + 3 * std::size_t{v}; };
-    Tets out;
-    for (tri::VertIdx a = 0; a < n; ++a) {
-        for (tri::VertIdx b = a + 1; b < n; ++b) {
-            for (tri::VertIdx c = b + 1; c < n; ++c) {
-                for (tri::VertIdx d = c + 1; d < n; ++d) {
-                    const Sign o = em::predicates::orient3d(p(a), p(b), p(c), p(d));
-                    if (o == Sign::Zero) continue;
-                    tri::VertIdx w[4] = {a, b, c, d};
-                    if (o == Sign::Negative) std::swap(w[2], w[3]);
-                    bool empty = true;
-                    for (tri::VertIdx q = 0; q < n && empty; ++q) {
-                        if (q == a || q == b || q == c || q == d) continue;
-                        empty = em::predicates::insphere_sos(p(w[0]), p(w[1]), p(w[2]), p(w[3]),
-                                                             p(q), w[0], w[1], w[2], w[3],
-                                                             q) == Sign::Negative;
-                    }
-                    if (empty) out.insert({a, b, c, d});
-                }
-            }
-        }
-    }
-    return out;
+    return exactmesh::oracles::empty_sphere_delaunay_3d(xyz);
 }
 
 std::vector<double> uniform_points(std::size_t n, std::uint64_t seed, double lo = -1,
