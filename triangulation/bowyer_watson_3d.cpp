@@ -49,8 +49,8 @@ constexpr OtherTwo kOtherTwo[4][4] = {{{}, other_two(0, 1), other_two(0, 2), oth
 /// p): each edge (a, b) is met by exactly two of them, matched in a small open-addressing table
 /// keyed by the edge and cleared by a generation count. The boundary faces are listed (with
 /// their new vertices) before anything is written, so the new tetrahedra take the cavity's
-/// slots first (there are always more of them: a cavity of C tetrahedra has 2C + 2 boundary
-/// faces), then fresh ones.
+/// slots first, then fresh ones (a cavity has more boundary faces than tetrahedra, about
+/// 2C + 2 for C tetrahedra, except in degenerate configurations: leftover slots are freed).
 ///
 /// Whether a neighbour is in conflict, and whether a face is on the boundary, are coin tosses
 /// for the branch predictor: both are recorded without a branch (the entry is written
