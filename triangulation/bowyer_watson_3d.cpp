@@ -238,7 +238,7 @@ Delaunay3Result bowyer_watson_3d(std::span<const double> xyz, const Delaunay3Opt
     detail::Delaunay3Core core(xyz, options);
     std::vector<bool> skip;
     // Fewer than four non-coplanar points: no tetrahedron, duplicates still merged.
-    if (!core.make_first_tet(skip)) return core.coplanar_result();
+    if (!core.make_first_tet(skip)) return core.coplanar_result(xyz);
     CavityInserter inserter(core);
     for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
         if (skip[p]) continue;
@@ -246,7 +246,7 @@ Delaunay3Result bowyer_watson_3d(std::span<const double> xyz, const Delaunay3Opt
         if (where.tet == kNone) continue;  // duplicate, merged
         inserter.insert(p, where.tet);
     }
-    return core.take_result();
+    return core.take_result(xyz);
 }
 
 }  // namespace exactmesh::triangulation

@@ -352,30 +352,9 @@ void Delaunay3Core::replace_by_star(const std::vector<TetIdx>& region, std::uint
     if (!created.empty()) last_tet = created.front();
 }
 
-Delaunay3Result Delaunay3Core::take_result() {
+Delaunay3Result Delaunay3Core::take_result(std::span<const double> xyz) {
     Delaunay3Result out;
     out.counters = counters;
-    // The points back in the caller's order, in place (no second copy of them): the point of
-    // mesh vertex v goes to position input_index[v]; each cycle of the permutation is carried
-    // round once.
-    const std::uint32_t n = mesh.vertex_count();
-    {
-        std::vector<bool> done(n, false);
-        double* points = mesh.xyz.data();
-        for (VertIdx start = 0; start < n; ++start) {
-            if (done[start]) continue;
-            double carry[3] = {points[3 * std::size_t{start}], points[3 * std::size_t{start} + 1],
-                               points[3 * std::size_t{start} + 2]};
-            VertIdx at = start;
-            do {
-                const VertIdx next = input_index[at];
-                for (std::size_t c = 0; c < 3; ++c)
-                    std::swap(carry[c], points[3 * std::size_t{next} + c]);
-                done[next] = true;
-                at = next;
-            } while (at != start);
-        }
-    }
     // A merged point maps to the point kept in the mesh; report instead the smallest caller
     // index of each group ("the first occurrence"), in merged_into and in the tetrahedra.
     std::vector<VertIdx>& first = input_index;  // reused: mesh vertex -> reported caller index
@@ -413,12 +392,14 @@ Delaunay3Result Delaunay3Core::take_result() {
     out.mesh.tets = std::move(mesh.tv);
     out.mesh.neighbors = std::move(mesh.adj);
     std::vector<std::uint32_t>().swap(stamp);
-    out.mesh.xyz = std::move(mesh.xyz);
+    // The caller's points, copied in order: a sequential copy is cheaper than carrying the
+    // insertion-ordered copy back through the permutation (a random scatter).
     mesh = TetMesh3{};
+    out.mesh.xyz.assign(xyz.begin(), xyz.end());
     return out;
 }
 
-Delaunay3Result Delaunay3Core::coplanar_result() {
+Delaunay3Result Delaunay3Core::coplanar_result(std::span<const double> xyz) {
     std::vector<VertIdx> by_point(mesh.vertex_count());
     for (VertIdx v = 0; v < by_point.size(); ++v) by_point[v] = v;
     std::sort(by_point.begin(), by_point.end(), [this](VertIdx a, VertIdx b) {
@@ -435,7 +416,7 @@ Delaunay3Result Delaunay3Core::coplanar_result() {
             ++counters.duplicates;
         }
     }
-    Delaunay3Result out = take_result();
+    Delaunay3Result out = take_result(xyz);
     out.coplanar = true;
     return out;
 }

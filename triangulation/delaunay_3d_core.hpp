@@ -83,11 +83,11 @@ class Delaunay3Core {
     std::uint32_t next_stamp();
     void grow_stamps();
 
-    /// The finite tetrahedra in the caller's numbering, and the points back in the caller's
-    /// order (moved, not copied); consumes the mesh.
-    Delaunay3Result take_result();
+    /// The finite tetrahedra in the caller's numbering, with a copy of the caller's points
+    /// `xyz`; consumes the mesh.
+    Delaunay3Result take_result(std::span<const double> xyz);
     /// The result for coplanar input (no tetrahedron): only duplicates are detected, by sorting.
-    Delaunay3Result coplanar_result();
+    Delaunay3Result coplanar_result(std::span<const double> xyz);
 
     TetIdx last_tet = kNone;
 

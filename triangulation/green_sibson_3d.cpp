@@ -232,7 +232,7 @@ Delaunay3Result green_sibson_3d(std::span<const double> xyz, const Delaunay3Opti
     detail::Delaunay3Core core(xyz, options);
     std::vector<bool> skip;
     // Fewer than four non-coplanar points: no tetrahedron, duplicates still merged.
-    if (!core.make_first_tet(skip)) return core.coplanar_result();
+    if (!core.make_first_tet(skip)) return core.coplanar_result(xyz);
     FlipInserter inserter(core);
     for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
         if (skip[p]) continue;
@@ -240,7 +240,7 @@ Delaunay3Result green_sibson_3d(std::span<const double> xyz, const Delaunay3Opti
         if (where.tet == kNone) continue;  // duplicate, merged
         inserter.insert(p, where);
     }
-    return core.take_result();
+    return core.take_result(xyz);
 }
 
 }  // namespace exactmesh::triangulation
