@@ -14,10 +14,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
-#include "io/gmsh_format.hpp"
-#include "io/svg_picture.hpp"
 #include "io/triangle_format.hpp"
-#include "io/vtk_format.hpp"
 #include "predicates/stats.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -92,47 +89,10 @@ void run_cdt(const CdtArguments& arguments) {
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();
 
-    constexpr std::size_t kShownWarnings = 10;
-    for (std::size_t i = 0; i < result.warnings.size() && i < kShownWarnings; ++i) {
-        std::cerr << "exactmesh: warning: " << result.warnings[i] << '\n';
-    }
-    if (result.warnings.size() > kShownWarnings) {
-        std::cerr << "exactmesh: warning: " << result.warnings.size() - kShownWarnings << " more warnings\n";
-    }
-
+    print_warnings(result.warnings);
+    write_constrained_result(result, files, format, base,
+                             fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")");
     const tri::Triangulation2& mesh = result.mesh;
-    switch (format) {
-        case OutputFormat::Ele: {
-            const fs::path &neigh = files[1], &node = files[2], &pieces = files[3];
-            io::NodeFile vertices;
-            vertices.xy = mesh.xy;
-            vertices.first_index = base;
-            std::vector<std::int32_t> markers;
-            for (const std::uint32_t s : result.piece_segment) markers.push_back(static_cast<std::int32_t>(s + base));
-            io::write_ele(output, mesh.triangles, base, result.triangle_attributes);
-            io::write_neigh(neigh, mesh.neighbors, base);
-            io::write_node(node, vertices);
-            io::write_poly(pieces, vertices, result.pieces, markers);
-            for (const fs::path& p : {output, neigh, node, pieces}) std::cout << "output: " << p.string() << '\n';
-            break;
-        }
-        case OutputFormat::Msh:
-            io::write_msh(output, mesh.xy, mesh.triangles);
-            std::cout << "output: " << output.string() << '\n';
-            break;
-        case OutputFormat::Vtu:
-            io::write_vtu(output, mesh.xy, mesh.triangles, base);
-            std::cout << "output: " << output.string() << '\n';
-            break;
-        case OutputFormat::Svg: {
-            io::SvgOptions svg;
-            svg.title = fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")";
-            svg.segments = result.pieces;
-            io::write_svg(output, mesh.xy, mesh.triangles, svg);
-            std::cout << "output: " << output.string() << '\n';
-            break;
-        }
-    }
     std::cout << "vertices: " << mesh.vertex_count() << '\n' << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {
         print_stats(result.counters, stats, std::chrono::duration<double>(stop - start).count());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `exactmesh check`: reads a .node and a .ele and runs the exact Delaunay check
-// (triangulation/check_2d), or a .poly and a .ele and runs the exact constrained Delaunay check
+// (triangulation/check_2d, or check_3d for a TetGen .node of dimension 3 and its .ele), or a
+// .poly and a .ele and runs the exact constrained Delaunay check
 // (triangulation/check_constrained_2d), reporting in the files' own numbering.
 #include <CLI/CLI.hpp>
 
@@ -12,9 +13,11 @@
 #include <utility>
 
 #include "cli/commands.hpp"
+#include "io/tetgen_format.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/errors.hpp"
 #include "triangulation/check_2d.hpp"
+#include "triangulation/check_3d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 
 namespace exactmesh::cli {
@@ -80,8 +83,23 @@ int run_constrained_check(const CheckArguments& arguments) {
     return kExitCheckFailed;
 }
 
+/// IN.node of dimension 3 against a TetGen .ele.
+int run_check_3d(const CheckArguments& arguments) {
+    const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.node_path);
+    const io::TetgenEleFile ele = io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
+    const tri::Check3Report report =
+        tri::check_delaunay_3d(nodes.xyz, ele.tets, {}, tri::Check3Numbering{nodes.first_index, ele.first_index});
+    if (report.ok) {
+        std::cout << "ok: " << ele.tet_count() << " tetrahedra, exact Delaunay\n";
+        return kExitSuccess;
+    }
+    std::cout << "not ok: " << arguments.ele_path << ": " << report.problem << '\n';
+    return kExitCheckFailed;
+}
+
 int run_check(const CheckArguments& arguments) {
     if (std::filesystem::path(arguments.node_path).extension() == ".poly") return run_constrained_check(arguments);
+    if (io::read_node_dimension(arguments.node_path) == 3) return run_check_3d(arguments);
     const io::NodeFile nodes = io::read_node(arguments.node_path);
     const io::EleFile ele =
         io::read_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
@@ -101,13 +119,14 @@ void add_check_command(CLI::App& app, int& exit_status) {
     auto arguments = std::make_shared<CheckArguments>();
     CLI::App* command = app.add_subcommand(
         "check",
-        "Exact check that IN.ele is a Delaunay triangulation of the points of IN.node, or a "
+        "Exact check that IN.ele is a Delaunay triangulation (a Delaunay tetrahedralization when IN.node has "
+        "dimension 3) of the points of IN.node, or a "
         "constrained Delaunay triangulation of IN.poly (vertices added by `exactmesh cdt` are read "
         "from the .node beside IN.ele, its constrained edges from the .poly beside it)");
     command->add_option("node", arguments->node_path, "Input: a Triangle .node or .poly file")
         ->required()
         ->type_name("IN.node|IN.poly");
-    command->add_option("ele", arguments->ele_path, "Triangles: a Triangle .ele file")
+    command->add_option("ele", arguments->ele_path, "Triangles: a Triangle .ele file (tetrahedra: a TetGen .ele file)")
         ->required()
         ->type_name("IN.ele");
     command->callback([arguments, &exit_status] { exit_status = run_check(*arguments); });

@@ -19,12 +19,20 @@ inline constexpr int kExitInternalError = 3;  ///< a bug in exactmesh or out of 
 /// [--seed S] [--stats]`.
 void add_triangulate_command(CLI::App& app);
 
+/// `exactmesh tetrahedralize IN.node -o OUT[.ele|.msh|.vtu] [--algorithm A] [--order O]
+/// [--seed S] [--stats]`.
+void add_tetrahedralize_command(CLI::App& app);
+
 /// `exactmesh cdt IN.poly -o OUT [--recovery swap|cavity|conforming] [--convex-hull] [--order O]
 /// [--seed S] [--stats]`.
 void add_cdt_command(CLI::App& app);
 
+/// `exactmesh mesh IN.poly|--domain NAME -o OUT [--generator G] [--min-angle DEG]
+/// [--size NUM|FILE] [--max-steiner N] [--quality] [--stats]`.
+void add_mesh_command(CLI::App& app);
+
 /// `exactmesh check IN.node IN.ele`: sets `exit_status` to kExitCheckFailed when the mesh
-/// fails the exact Delaunay check.
+/// fails the exact Delaunay check (2D, or 3D when IN.node declares dimension 3).
 void add_check_command(CLI::App& app, int& exit_status);
 
 /// `exactmesh fuzz --minutes M [--seed S] [--out DIR]`: sets `exit_status` to kExitCheckFailed
@@ -36,5 +44,8 @@ void add_swap_command(CLI::App& app);
 
 /// `exactmesh min-max IN.node -o OUT.ele [--stats]`.
 void add_min_max_command(CLI::App& app);
+
+/// `exactmesh swap3d IN.node IN.ele -o OUT.ele [--criterion C] [--quality] [--stats]` (TetGen files).
+void add_swap3d_command(CLI::App& app);
 
 }  // namespace exactmesh::cli

@@ -29,7 +29,8 @@ int report_error(std::string_view message, int status) {
 int main(int argc, char** argv) {
     using namespace exactmesh::cli;
     try {
-        CLI::App app{"exactmesh: robust 2D Delaunay and constrained Delaunay triangulation with exact predicates",
+        CLI::App app{"exactmesh: robust 2D Delaunay and constrained Delaunay triangulation, quality meshing and "
+                     "3D Delaunay tetrahedralization with exact predicates",
                      "exactmesh"};
         // No require_subcommand(): CLI11 would then report a misspelt subcommand as a missing
         // one; without it, `exactmesh frobnicate` is an unexpected argument, as it should be.
@@ -38,11 +39,14 @@ int main(int argc, char** argv) {
             "3 internal error.");
         int exit_status = kExitSuccess;
         add_triangulate_command(app);
+        add_tetrahedralize_command(app);
         add_cdt_command(app);
+        add_mesh_command(app);
         add_check_command(app, exit_status);
         add_fuzz_command(app, exit_status);
         add_swap_command(app);
         add_min_max_command(app);
+        add_swap3d_command(app);
         try {
             app.parse(argc, argv);
         } catch (const CLI::ParseError& error) {
@@ -52,7 +56,8 @@ int main(int argc, char** argv) {
         }
         if (app.get_subcommands().empty()) {
             return report_error(
-                "a subcommand is required: triangulate, cdt, check, fuzz, swap or min-max (see "
+                "a subcommand is required: triangulate, tetrahedralize, cdt, mesh, check, fuzz, swap, "
+                "min-max or swap3d (see "
                 "exactmesh --help)",
                 kExitBadInput);
         }

@@ -7,6 +7,10 @@
 #include <iostream>
 #include <string>
 
+#include "io/gmsh_format.hpp"
+#include "io/svg_picture.hpp"
+#include "io/triangle_format.hpp"
+#include "io/vtk_format.hpp"
 #include "predicates/errors.hpp"
 
 namespace exactmesh::cli {
@@ -66,8 +70,54 @@ triangulation::InsertionOrder insertion_order(const std::string& name) {
     throw InputError("unknown insertion order '" + name + "' (known: given, random, brio)");
 }
 
-void print_predicate_stats(const predicates::PredicateStats& stats) {
-    if (predicates::stats_enabled()) {
+void write_constrained_result(const triangulation::Cdt2Result& result, const std::vector<std::filesystem::path>& files,
+                              OutputFormat format, std::uint32_t base, const std::string& svg_title) {
+    namespace fs = std::filesystem;
+    const triangulation::Triangulation2& mesh = result.mesh;
+    const fs::path& output = files[0];
+    switch (format) {
+        case OutputFormat::Ele: {
+            const fs::path &neigh = files[1], &node = files[2], &pieces = files[3];
+            io::NodeFile vertices;
+            vertices.xy = mesh.xy;
+            vertices.first_index = base;
+            std::vector<std::int32_t> markers;
+            for (const std::uint32_t s : result.piece_segment) markers.push_back(static_cast<std::int32_t>(s + base));
+            io::write_ele(output, mesh.triangles, base, result.triangle_attributes);
+            io::write_neigh(neigh, mesh.neighbors, base);
+            io::write_node(node, vertices);
+            io::write_poly(pieces, vertices, result.pieces, markers);
+            for (const fs::path& p : {output, neigh, node, pieces}) std::cout << "output: " << p.string() << '\n';
+            return;
+        }
+        case OutputFormat::Msh: io::write_msh(output, mesh.xy, mesh.triangles); break;
+        case OutputFormat::Vtu: io::write_vtu(output, mesh.xy, mesh.triangles, base); break;
+        case OutputFormat::Svg: {
+            io::SvgOptions svg;
+            svg.title = svg_title;
+            svg.segments = result.pieces;
+            io::write_svg(output, mesh.xy, mesh.triangles, svg);
+            break;
+        }
+    }
+    std::cout << "output: " << output.string() << '\n';
+}
+
+void print_warnings(const std::vector<std::string>& warnings) {
+    constexpr std::size_t kShownWarnings = 10;
+    for (std::size_t i = 0; i < warnings.size() && i < kShownWarnings; ++i) {
+        std::cerr << "exactmesh: warning: " << warnings[i] << '\n';
+    }
+    if (warnings.size() > kShownWarnings) {
+        std::cerr << "exactmesh: warning: " << warnings.size() - kShownWarnings << " more warnings\n";
+    }
+}
+
+void print_predicate_stats(const predicates::PredicateStats& stats, int dimension) {
+    if (predicates::stats_enabled() && dimension == 3) {
+        print_stage_counts("orient3d", stats.orient3d);
+        print_stage_counts("insphere", stats.insphere);
+    } else if (predicates::stats_enabled()) {
         print_stage_counts("orient2d", stats.orient2d);
         print_stage_counts("incircle", stats.incircle);
     } else {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "predicates/stats.hpp"
+#include "triangulation/constrained_2d.hpp"
 #include "triangulation/delaunay_2d.hpp"
 
 namespace exactmesh::cli {
@@ -32,7 +33,18 @@ void refuse_to_overwrite_input(const std::filesystem::path& input, const std::ve
 /// @throws InputError naming the unknown order and the known ones.
 triangulation::InsertionOrder insertion_order(const std::string& name);
 
-/// `name.calls: N` ... one line per stage, or a note when the counters are compiled out.
-void print_predicate_stats(const predicates::PredicateStats& stats);
+/// Writes a constrained triangulation (`cdt`, `mesh`) to `files` (output_files(output, format,
+/// {".neigh", ".node", ".poly"})): .ele with .neigh, .node (every vertex) and .poly (the pieces,
+/// each marked with its input segment's number); or .msh, .vtu, .svg (with the pieces drawn).
+/// Numbers vertices, triangles and segments from `base`; prints "output: <file>" per file.
+void write_constrained_result(const triangulation::Cdt2Result& result, const std::vector<std::filesystem::path>& files,
+                              OutputFormat format, std::uint32_t base, const std::string& svg_title);
+
+/// Prints the first 10 warnings as "exactmesh: warning: ..." on stderr, then how many more.
+void print_warnings(const std::vector<std::string>& warnings);
+
+/// `name.calls: N` ... one line per stage of the predicates of that dimension (orient2d and
+/// incircle, or orient3d and insphere), or a note when the counters are compiled out.
+void print_predicate_stats(const predicates::PredicateStats& stats, int dimension = 2);
 
 }  // namespace exactmesh::cli

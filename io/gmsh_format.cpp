@@ -6,9 +6,16 @@
 
 namespace exactmesh::io {
 
-std::string format_msh(std::span<const double> xy, std::span<const VertIdx> triangles) {
-    const std::size_t nodes = xy.size() / 2;
-    const std::size_t elements = triangles.size() / 3;
+namespace {
+
+/// One block of nodes on entity (entity_dim, 1) and one block of elements of `element_type`
+/// with `corners` nodes each, written in the order `corner_order`. `coordinates`: dimension
+/// values per node (z = 0 appended in 2D).
+std::string format_msh_cells(std::span<const double> coordinates, unsigned dimension,
+                             std::span<const VertIdx> cells, unsigned corners,
+                             const unsigned* corner_order, int entity_dim, int element_type) {
+    const std::size_t nodes = coordinates.size() / dimension;
+    const std::size_t elements = cells.size() / corners;
     std::string out;
     out.reserve(56 * nodes + 40 * elements + 256);
     out += "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
@@ -23,7 +30,9 @@ std::string format_msh(std::span<const double> xy, std::span<const VertIdx> tria
         append_unsigned(out, nodes);
         out += " 1 ";
         append_unsigned(out, nodes);
-        out += "\n2 1 0 ";
+        out += '\n';
+        append_unsigned(out, static_cast<std::uint64_t>(entity_dim));
+        out += " 1 0 ";
         append_unsigned(out, nodes);
         out += '\n';
         for (std::size_t v = 0; v < nodes; ++v) {
@@ -31,16 +40,17 @@ std::string format_msh(std::span<const double> xy, std::span<const VertIdx> tria
             out += '\n';
         }
         for (std::size_t v = 0; v < nodes; ++v) {
-            append_double(out, xy[2 * v]);
-            out += ' ';
-            append_double(out, xy[2 * v + 1]);
-            out += " 0\n";
+            for (unsigned c = 0; c < dimension; ++c) {
+                if (c > 0) out += ' ';
+                append_double(out, coordinates[dimension * v + c]);
+            }
+            out += dimension == 2 ? " 0\n" : "\n";
         }
     }
     out += "$EndNodes\n";
 
     // numEntityBlocks numElements minElementTag maxElementTag, then
-    // entityDim entityTag elementType(2 = 3-node triangle) numElementsInBlock.
+    // entityDim entityTag elementType numElementsInBlock.
     out += "$Elements\n";
     if (elements == 0) {
         out += "0 0 0 0\n";
@@ -49,20 +59,46 @@ std::string format_msh(std::span<const double> xy, std::span<const VertIdx> tria
         append_unsigned(out, elements);
         out += " 1 ";
         append_unsigned(out, elements);
-        out += "\n2 1 2 ";
+        out += '\n';
+        append_unsigned(out, static_cast<std::uint64_t>(entity_dim));
+        out += " 1 ";
+        append_unsigned(out, static_cast<std::uint64_t>(element_type));
+        out += ' ';
         append_unsigned(out, elements);
         out += '\n';
         for (std::size_t t = 0; t < elements; ++t) {
             append_unsigned(out, t + 1);
-            for (std::size_t k = 0; k < 3; ++k) {
+            for (std::size_t k = 0; k < corners; ++k) {
                 out += ' ';
-                append_unsigned(out, std::uint64_t{triangles[3 * t + k]} + 1);
+                append_unsigned(out, std::uint64_t{cells[corners * t + corner_order[k]]} + 1);
             }
             out += '\n';
         }
     }
     out += "$EndElements\n";
     return out;
+}
+
+constexpr unsigned kTriangleOrder[3] = {0, 1, 2};
+/// Gmsh's tetrahedron has a positive Jacobian det[v1 - v0, v2 - v0, v3 - v0] > 0, the opposite
+/// of triangulation/'s orient3d > 0: the first two corners swapped.
+constexpr unsigned kTetOrder[4] = {1, 0, 2, 3};
+constexpr int kGmshTriangle = 2;
+constexpr int kGmshTetrahedron = 4;
+
+}  // namespace
+
+std::string format_msh(std::span<const double> xy, std::span<const VertIdx> triangles) {
+    return format_msh_cells(xy, 2, triangles, 3, kTriangleOrder, 2, kGmshTriangle);
+}
+
+std::string format_msh_3d(std::span<const double> xyz, std::span<const VertIdx> tets) {
+    return format_msh_cells(xyz, 3, tets, 4, kTetOrder, 3, kGmshTetrahedron);
+}
+
+void write_msh_3d(const std::filesystem::path& path, std::span<const double> xyz,
+                  std::span<const VertIdx> tets) {
+    write_text_file(path, format_msh_3d(xyz, tets));
 }
 
 void write_msh(const std::filesystem::path& path, std::span<const double> xy,

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Gmsh MSH 4.1 ASCII output [Gmsh reference manual, "MSH file format"]: all points as nodes of
-// one surface entity, triangles as 3-node elements (element type 2). No $Entities section: it
-// is optional, and Gmsh then treats entity 1 as a discrete surface.
+// one entity, triangles as 3-node elements (element type 2) on a surface, or tetrahedra as
+// 4-node elements (type 4) in a volume. No $Entities section: it is optional, and Gmsh then
+// treats entity 1 as a discrete surface or volume.
 #pragma once
 
 #include <filesystem>
@@ -18,5 +19,12 @@ namespace exactmesh::io {
 std::string format_msh(std::span<const double> xy, std::span<const VertIdx> triangles);
 void write_msh(const std::filesystem::path& path, std::span<const double> xy,
                std::span<const VertIdx> triangles);
+
+/// The .msh text of a tetrahedralization. `xyz`: 3·#V coordinates; `tets`: 4·#T 0-based vertex
+/// indices with orient3d > 0 (triangulation/'s convention), written with Gmsh's positive
+/// Jacobian (first two corners swapped). Node v has tag v + 1, tetrahedron t tag t + 1.
+std::string format_msh_3d(std::span<const double> xyz, std::span<const VertIdx> tets);
+void write_msh_3d(const std::filesystem::path& path, std::span<const double> xyz,
+                  std::span<const VertIdx> tets);
 
 }  // namespace exactmesh::io

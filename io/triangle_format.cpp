@@ -6,125 +6,37 @@
 #include <algorithm>
 #include <limits>
 
+#include "io/records.hpp"
 #include "io/text_file.hpp"
 
 namespace exactmesh::io {
 
 namespace {
 
+using detail::expect_end;
+using detail::expect_field_count;
+using detail::expect_record_number;
+using detail::field_names;
+using detail::kMaxAttributes;
+using detail::plausible;
+using detail::plural;
 using triangulation::kMaxPoints;
 using triangulation::kNone;
 
-constexpr std::uint64_t kMaxAttributes = std::numeric_limits<std::uint32_t>::max() - 8;
 /// 3 corner slots per triangle must be addressable by a 32-bit index.
 constexpr std::uint64_t kMaxTriangles = (std::uint64_t{kNone} - 1) / 3;
 
-std::string plural(std::uint64_t n, const char* singular, const char* plural_form) {
-    return std::to_string(n) + " " + (n == 1 ? singular : plural_form);
-}
-
-/// "number, x, y, 2 attributes, marker": what a line must hold, for error messages.
-std::string field_names(const char* leading, std::uint64_t attributes, bool marker) {
-    std::string names = leading;
-    if (attributes > 0) names += ", " + plural(attributes, "attribute", "attributes");
-    if (marker) names += ", marker";
-    return names;
-}
-
-void expect_field_count(const TextLines& lines, std::uint64_t expected, const std::string& names) {
-    const std::size_t got = lines.fields().size();
-    if (got != expected) {
-        lines.fail_quoting_line("expected " + plural(expected, "field", "fields") + " (" + names +
-                                "), got " + std::to_string(got));
-    }
-}
-
-/// The number of the next record: the first one sets the base (0 or 1), the others follow.
-std::uint32_t expect_record_number(const TextLines& lines, std::string_view token, const char* what,
-                                   std::uint64_t position, std::uint32_t& first_index) {
-    const std::uint64_t number = lines.parse_unsigned(token, std::string(what) + " number",
-                                                      std::numeric_limits<std::uint32_t>::max());
-    if (position == 0) {
-        if (number > 1) {
-            lines.fail("first " + std::string(what) + " number must be 0 or 1, got " +
-                       std::to_string(number));
-        }
-        first_index = static_cast<std::uint32_t>(number);
-    } else if (number != first_index + position) {
-        lines.fail(std::string(what) + " number " + std::to_string(number) +
-                   " out of sequence, expected " + std::to_string(first_index + position));
-    }
-    return static_cast<std::uint32_t>(number);
-}
-
-void expect_end(TextLines& lines, std::uint64_t count, const char* what_plural) {
-    if (lines.next_data_line()) {
-        lines.fail_quoting_line("unexpected data after the " + std::to_string(count) +
-                                " announced " + what_plural);
-    }
-}
-
-/// Capacity to reserve for `announced` records: never trust a header past what the text
-/// could hold (every record needs at least a few bytes), so a lying header allocates nothing.
-std::size_t plausible(std::uint64_t announced, std::size_t text_size,
-                      std::size_t min_record_bytes) {
-    return static_cast<std::size_t>(
-        std::min<std::uint64_t>(announced, text_size / min_record_bytes));
-}
-
-/// The vertex section shared by .node and .poly: the header on the current line, then the
-/// vertices. Returns the announced count.
+/// The 2D vertex section into a NodeFile.
 std::uint64_t parse_vertex_section(TextLines& lines, std::size_t text_size, NodeFile& nodes) {
-    const auto& header = lines.fields();
-    if (header.size() > 4) {
-        lines.fail_quoting_line("header has " + std::to_string(header.size()) +
-                                " fields, expected at most 4 (#vertices, dimension, #attributes, "
-                                "#boundary markers)");
-    }
-    const std::uint64_t count = lines.parse_unsigned(header[0], "vertex count", kMaxPoints);
-    if (header.size() > 1) {
-        const std::uint64_t dimension =
-            lines.parse_unsigned(header[1], "dimension", std::numeric_limits<std::uint64_t>::max());
-        if (dimension != 2) lines.fail("dimension must be 2, got " + std::to_string(dimension));
-    }
-    if (header.size() > 2) {
-        nodes.attribute_count = static_cast<std::uint32_t>(
-            lines.parse_unsigned(header[2], "attribute count", kMaxAttributes));
-    }
-    if (header.size() > 3) {
-        const std::uint64_t markers = lines.parse_unsigned(
-            header[3], "boundary marker count", std::numeric_limits<std::uint64_t>::max());
-        if (markers > 1) {
-            lines.fail("boundary marker count must be 0 or 1, got " + std::to_string(markers));
-        }
-        nodes.has_markers = markers == 1;
-    }
-    const std::uint64_t expected =
-        3 + std::uint64_t{nodes.attribute_count} + (nodes.has_markers ? 1 : 0);
-    const std::string names = field_names("number, x, y", nodes.attribute_count, nodes.has_markers);
-
-    nodes.xy.reserve(2 * plausible(count, text_size, 6));
-    std::string attribute_name;
-    for (std::uint64_t i = 0; i < count; ++i) {
-        if (!lines.next_data_line()) {
-            lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
-                              plural(count, "announced vertex", "announced vertices"));
-        }
-        expect_field_count(lines, expected, names);
-        const auto& fields = lines.fields();
-        expect_record_number(lines, fields[0], "vertex", i, nodes.first_index);
-        nodes.xy.push_back(lines.parse_finite_double(fields[1], "x coordinate"));
-        nodes.xy.push_back(lines.parse_finite_double(fields[2], "y coordinate"));
-        for (std::uint32_t a = 0; a < nodes.attribute_count; ++a) {
-            attribute_name = "attribute " + std::to_string(a + 1);
-            nodes.attributes.push_back(lines.parse_finite_double(fields[3 + a], attribute_name));
-        }
-        if (nodes.has_markers) {
-            nodes.markers.push_back(static_cast<std::int32_t>(lines.parse_signed(
-                fields.back(), "boundary marker", std::numeric_limits<std::int32_t>::min(),
-                std::numeric_limits<std::int32_t>::max())));
-        }
-    }
+    detail::VertexSection section;
+    const std::uint64_t count =
+        detail::parse_vertex_section(lines, text_size, 2, "a 2D Triangle file", section);
+    nodes.xy = std::move(section.coordinates);
+    nodes.first_index = section.first_index;
+    nodes.attribute_count = section.attribute_count;
+    nodes.attributes = std::move(section.attributes);
+    nodes.has_markers = section.has_markers;
+    nodes.markers = std::move(section.markers);
     return count;
 }
 

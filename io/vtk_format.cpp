@@ -7,13 +7,23 @@
 namespace exactmesh::io {
 
 namespace {
-constexpr int kVtkTriangle = 5;
-}  // namespace
 
-std::string format_vtu(std::span<const double> xy, std::span<const VertIdx> triangles,
-                       std::uint32_t first_index) {
-    const std::size_t points = xy.size() / 2;
-    const std::size_t cells = triangles.size() / 3;
+constexpr int kVtkTriangle = 5;
+constexpr int kVtkTetra = 10;
+constexpr unsigned kTriangleOrder[3] = {0, 1, 2};
+/// VTK_TETRA: (0, 1, 2) by the right-hand rule has its normal towards point 3, i.e.
+/// det[p1 - p0, p2 - p0, p3 - p0] > 0, the opposite of triangulation/'s orient3d > 0: the first
+/// two corners swapped.
+constexpr unsigned kTetOrder[4] = {1, 0, 2, 3};
+
+/// `coordinates`: dimension values per point (z = 0 appended in 2D); `cells`: `corners` indices
+/// each, written in `corner_order`, as VTK cells of `cell_type`.
+std::string format_vtu_cells(std::span<const double> coordinates, unsigned dimension,
+                             std::span<const VertIdx> cells_in, unsigned corners,
+                             const unsigned* corner_order, int cell_type,
+                             std::uint32_t first_index) {
+    const std::size_t points = coordinates.size() / dimension;
+    const std::size_t cells = cells_in.size() / corners;
     std::string out;
     out.reserve(64 * points + 48 * cells + 1024);
     out += "<?xml version=\"1.0\"?>\n";
@@ -36,37 +46,55 @@ std::string format_vtu(std::span<const double> xy, std::span<const VertIdx> tria
     out += "      <Points>\n";
     out += "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
     for (std::size_t v = 0; v < points; ++v) {
-        append_double(out, xy[2 * v]);
-        out += ' ';
-        append_double(out, xy[2 * v + 1]);
-        out += " 0\n";
+        for (unsigned c = 0; c < dimension; ++c) {
+            if (c > 0) out += ' ';
+            append_double(out, coordinates[dimension * v + c]);
+        }
+        out += dimension == 2 ? " 0\n" : "\n";
     }
     out += "        </DataArray>\n      </Points>\n";
 
     out += "      <Cells>\n";
     out += "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
     for (std::size_t t = 0; t < cells; ++t) {
-        for (std::size_t k = 0; k < 3; ++k) {
+        for (std::size_t k = 0; k < corners; ++k) {
             if (k > 0) out += ' ';
-            append_unsigned(out, triangles[3 * t + k]);
+            append_unsigned(out, cells_in[corners * t + corner_order[k]]);
         }
         out += '\n';
     }
     out += "        </DataArray>\n";
     out += "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
     for (std::size_t t = 0; t < cells; ++t) {
-        append_unsigned(out, 3 * (t + 1));
+        append_unsigned(out, corners * (t + 1));
         out += '\n';
     }
     out += "        </DataArray>\n";
     out += "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
     for (std::size_t t = 0; t < cells; ++t) {
-        append_unsigned(out, kVtkTriangle);
+        append_unsigned(out, static_cast<std::uint64_t>(cell_type));
         out += '\n';
     }
     out += "        </DataArray>\n      </Cells>\n";
     out += "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
     return out;
+}
+
+}  // namespace
+
+std::string format_vtu(std::span<const double> xy, std::span<const VertIdx> triangles,
+                       std::uint32_t first_index) {
+    return format_vtu_cells(xy, 2, triangles, 3, kTriangleOrder, kVtkTriangle, first_index);
+}
+
+std::string format_vtu_3d(std::span<const double> xyz, std::span<const VertIdx> tets,
+                          std::uint32_t first_index) {
+    return format_vtu_cells(xyz, 3, tets, 4, kTetOrder, kVtkTetra, first_index);
+}
+
+void write_vtu_3d(const std::filesystem::path& path, std::span<const double> xyz,
+                  std::span<const VertIdx> tets, std::uint32_t first_index) {
+    write_text_file(path, format_vtu_3d(xyz, tets, first_index));
 }
 
 void write_vtu(const std::filesystem::path& path, std::span<const double> xy,

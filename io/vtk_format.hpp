@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // VTK XML UnstructuredGrid (.vtu) ASCII output [VTK file formats, "XML File Formats"]: points
-// with z = 0, triangles as VTK_TRIANGLE cells (type 5), and each point's number in the input
-// file as the point array "node_number", so ParaView shows the input's own numbering.
+// (z = 0 in 2D), triangles as VTK_TRIANGLE cells (type 5) or tetrahedra as VTK_TETRA cells
+// (type 10), and each point's number in the input file as the point array "node_number", so
+// ParaView shows the input's own numbering.
 #pragma once
 
 #include <cstdint>
@@ -19,5 +20,13 @@ std::string format_vtu(std::span<const double> xy, std::span<const VertIdx> tria
                        std::uint32_t first_index);
 void write_vtu(const std::filesystem::path& path, std::span<const double> xy,
                std::span<const VertIdx> triangles, std::uint32_t first_index);
+
+/// The .vtu text of a tetrahedralization. `xyz`: 3·#V coordinates; `tets`: 4·#T 0-based vertex
+/// indices with orient3d > 0 (triangulation/'s convention), written in VTK's orientation (first
+/// two corners swapped); node_number = index + first_index.
+std::string format_vtu_3d(std::span<const double> xyz, std::span<const VertIdx> tets,
+                          std::uint32_t first_index);
+void write_vtu_3d(const std::filesystem::path& path, std::span<const double> xyz,
+                  std::span<const VertIdx> tets, std::uint32_t first_index);
 
 }  // namespace exactmesh::io

@@ -407,6 +407,114 @@ class FastPath {
 };
 
 // ---------------------------------------------------------------------------------------------
+// Stage 0 of the 2D circumcenter (exact differences only): double-double arithmetic with a
+// proven error bound, certified when the exact value cannot lie beyond either midpoint of the
+// candidate; else the expansion fast path decides. With u = 2^-53, for the differences
+// p = a - c, q = b - c (exact doubles), H = (p_x q_y - p_y q_x) and N = |p|^2 q_y - |q|^2 p_y
+// (x; y alike with N = |q|^2 p_x - |p|^2 q_x), every product is split exactly (two_product)
+// and every sum of the exact parts is rounded at most twice, which bounds
+//  - |H~ - H| <= 3.1 u^2 P_H,  P_H = |p_x q_y| + |p_y q_x|           (three roundings of tails)
+//  - |N~ - N| <= 11 u^2 P_N,   P_N = |p|^2 |q_y| + |q|^2 |p_y|       (norms 3.1, products 3.2,
+//                                                                     difference 4.3)
+//  - the dd quotient Q~ of N~ / H~: |Q~ - N~/H~| <= 25 u^2 |Q|        (one remainder step)
+//  - x~ = c + Q~ / 2: one more rounding, u^2 (|x| + |Q| / 2),
+// so |x~ - x| <= u^2 (13 |Q| + (5.5 P_N + 1.6 |Q| P_H) / |H| + 2 |x|) to first order; the
+// filter uses E = 2^-100 (|Q| + (P_N + |Q| P_H) / |H| + |x|), over four times that, which also
+// covers the second-order terms and the rounding of E itself. x~ = x_hi + x_lo with x_lo at
+// most half an ulp of x_hi; x_hi is the correctly rounded x when |x_lo| + E stays below both
+// half-ulps about x_hi. Range: every nonzero difference in [2^-300, 2^300] (no product or
+// error term underflows or overflows), |H| >= 2^-500 and > 2^-40 P_H, |Q| and |x_hi| in
+// [2^-400, 2^400] (so |N| >= 2^-900: every error term above stays normal); else no filter.
+
+namespace {
+
+struct DoubleDouble {
+    double hi, lo;
+};
+
+bool in_filter_range(double v) noexcept {
+    const double m = std::fabs(v);
+    return m == 0.0 || (m >= 0x1p-300 && m <= 0x1p300);
+}
+
+/// a b + c d (sign +1) or a b - c d (sign -1), as hi + lo within 3.1 u^2 (|ab| + |cd|).
+DoubleDouble sum_of_products(double a, double b, double c, double d, double sign) noexcept {
+    double p, pe, q, qe, s, se;
+    two_product(a, b, p, pe);
+    two_product(c, d, q, qe);
+    two_sum(p, sign * q, s, se);
+    const double tail = se + (pe + sign * qe);
+    DoubleDouble r;
+    two_sum(s, tail, r.hi, r.lo);
+    return r;
+}
+
+/// (A_hi + A_lo) b, within 3.2 u^2 |A b| beyond A's own error times |b|.
+DoubleDouble times(const DoubleDouble& a, double b) noexcept {
+    double m, me;
+    two_product(a.hi, b, m, me);
+    DoubleDouble r;
+    two_sum(m, me + a.lo * b, r.hi, r.lo);
+    return r;
+}
+
+DoubleDouble minus(const DoubleDouble& x, const DoubleDouble& y) noexcept {
+    double s, se;
+    two_sum(x.hi, -y.hi, s, se);
+    DoubleDouble r;
+    two_sum(s, se + (x.lo - y.lo), r.hi, r.lo);
+    return r;
+}
+
+/// One coordinate: c + N / (2 H); false when not certified (then nothing is known).
+bool certify_dd(double c, const DoubleDouble& n, double pn, const DoubleDouble& h, double ph, double& result) noexcept {
+    // Q = N / H: q1 from the high parts, one exact-ish remainder step.
+    const double q1 = n.hi / h.hi;
+    if (!(std::fabs(q1) >= 0x1p-400 && std::fabs(q1) <= 0x1p400)) return false;
+    double p, pe;
+    two_product(q1, h.hi, p, pe);
+    const double remainder = ((n.hi - p) - pe) + (n.lo - q1 * h.lo);
+    const double q2 = remainder / h.hi;
+    double q_hi, q_lo;
+    two_sum(q1, q2, q_hi, q_lo);
+    // x = c + Q / 2 (halving is exact in range).
+    double s, se;
+    two_sum(c, 0.5 * q_hi, s, se);
+    double x_hi, x_lo;
+    two_sum(s, se + 0.5 * q_lo, x_hi, x_lo);
+    if (!(std::fabs(x_hi) >= 0x1p-400 && std::fabs(x_hi) <= 0x1p400)) return false;
+    const double abs_q = std::fabs(q_hi), abs_h = std::fabs(h.hi);
+    const double bound = 0x1p-100 * (abs_q + (pn + abs_q * ph) / abs_h + std::fabs(x_hi));
+    const double half_up = 0.5 * (std::nextafter(x_hi, INFINITY) - x_hi);
+    const double half_down = 0.5 * (x_hi - std::nextafter(x_hi, -INFINITY));
+    if (!(std::fabs(x_lo) + bound < 0.999 * std::min(half_up, half_down))) return false;
+    result = x_hi;
+    return true;
+}
+
+/// Stage 0 for exact differences p = a - c, q = b - c; true with both coordinates certified.
+bool circumcenter2_double_double(const double* p, const double* q, const double* c,
+                                 std::array<double, 2>& result) noexcept {
+    for (const double v : {p[0], p[1], q[0], q[1]}) {
+        if (!in_filter_range(v)) return false;
+    }
+    const DoubleDouble h = sum_of_products(p[0], q[1], p[1], q[0], -1.0);
+    const double ph = std::fabs(p[0] * q[1]) + std::fabs(p[1] * q[0]);
+    // Nearly collinear (the bound's 1 / |H| grows) or |H| small enough that |N| = |Q H| could
+    // leave the normal range: the exact stages decide.
+    if (!(std::fabs(h.hi) > 0x1p-40 * ph) || !(std::fabs(h.hi) >= 0x1p-500)) return false;
+    const DoubleDouble p_norm = sum_of_products(p[0], p[0], p[1], p[1], 1.0);
+    const DoubleDouble q_norm = sum_of_products(q[0], q[0], q[1], q[1], 1.0);
+    const DoubleDouble nx = minus(times(p_norm, q[1]), times(q_norm, p[1]));
+    const double pnx = p_norm.hi * std::fabs(q[1]) + q_norm.hi * std::fabs(p[1]);
+    const DoubleDouble ny = minus(times(q_norm, p[0]), times(p_norm, q[0]));
+    const double pny = q_norm.hi * std::fabs(p[0]) + p_norm.hi * std::fabs(q[0]);
+    return certify_dd(c[0], nx, pnx, h, ph, result[0]) && certify_dd(c[1], ny, pny, h, ph, result[1]);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
 // Input checks shared by the public functions and their _exact variants.
 
 void check_triangle(const double* a, const double* b, const double* c) {
@@ -470,6 +578,12 @@ std::array<double, 2> circumcenter(const double* a, const double* b, const doubl
     if (tails[0] == 0.0 && tails[1] == 0.0 && tails[2] == 0.0 && tails[3] == 0.0) {
         // Exact differences (Sterbenz: nearby points): X = c + (det [w' y], det [x w']) / 2D'
         // over the translated rows a - c, b - c, with D' = det [x y] of those rows.
+        if (circumcenter2_double_double(pa, pb, c, result)) {
+            ++this_thread_stats.calls;
+            ++this_thread_stats.fast;
+            ++this_thread_stats.double_double;
+            return result;
+        }
         const Expansion<4> den = twice(minor_uv(pa, pb, 0, 1));
         if (fast.certify(scale(den, c[0]) + det_w_u(pa, pb, 1), den, 3, result[0]) &&
             fast.certify(scale(den, c[1]) - det_w_u(pa, pb, 0), den, 3, result[1])) {

@@ -10,6 +10,10 @@
 // exact), ~50k in 3D (~22k); the exact path ~48k (2D) and ~190k (3D). Segments as 2D.
 //
 // Paths, per call (all coordinates of one point take the same path):
+//  - Stage 0 (2D circumcenters whose differences to c are exact doubles): double-double
+//    arithmetic with a proven error bound (constructions.cpp), accepted when the exact value
+//    cannot lie beyond a midpoint of the candidate: ~20x cheaper than the fast path below,
+//    which decides whatever it leaves.
 //  - Fast path, when detail::expansion_safe(degree, inputs) holds: |coordinates| <= 2^331 (2D,
 //    degree 3) or 2^248 (3D, degree 4) and no product of `degree` factors underflows. Each
 //    coordinate is num / den with num, den determinants in the raw doubles (degree 3 over 2 in
@@ -74,6 +78,7 @@ std::array<double, 2> segment_intersection_exact(const double* a, const double* 
 struct ConstructionStats {
     std::uint64_t calls = 0;
     std::uint64_t fast = 0;               ///< every coordinate certified on the fast path
+    std::uint64_t double_double = 0;      ///< of those, by the double-double stage (2D, exact differences)
     std::uint64_t neighbour_steps = 0;    ///< coordinates certified at q's neighbour, not q
     std::uint64_t exact_range = 0;        ///< inputs or result outside the expansion-safe range
     std::uint64_t exact_uncertified = 0;  ///< in range, but neither q nor its neighbour certified

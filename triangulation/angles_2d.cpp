@@ -13,6 +13,8 @@
 //    filter uses 16u = 2^-49.
 //  - Lengths: E = |p1 - q1|^2 - |p2 - q2|^2, k = 5 (2 for the squared difference, the product,
 //    the sum, the final difference): gamma_5 / (1 - u)^5 < 6u; the filter uses 8u = 2^-50.
+//  - Dot products: E = (p - o) . (q - o), k = 3 (the difference, the product, the sum):
+//    gamma_3 / (1 - u)^3 < 4u; the filter uses 8u = 2^-50 too.
 // The window: every nonzero computed difference has magnitude in [2^-200, 2^200]. A computed
 // difference of doubles is zero only when the exact one is (gradual underflow), and then every
 // nonzero monomial lies in [2^-800, 2^803] and every partial sum is a nonzero multiple of an
@@ -36,6 +38,7 @@ constexpr double kWindowLow = 0x1p-200;
 constexpr double kWindowHigh = 0x1p200;
 constexpr double kAngleFilter = 0x1p-49;
 constexpr double kLengthFilter = 0x1p-50;
+constexpr double kDotFilter = 0x1p-50;
 
 bool in_window(double d) {
     const double a = std::fabs(d);
@@ -76,7 +79,27 @@ Sign compare_lengths_gmp(const double* p1, const double* q1, const double* p2, c
     return predicates::reference::sign_of(x1 * x1 + y1 * y1 - (x2 * x2 + y2 * y2));
 }
 
+Sign corner_dot_sign_gmp(const double* o, const double* p, const double* q) {
+    using predicates::reference::exact;
+    const mpq_class ux = exact(p[0]) - exact(o[0]), uy = exact(p[1]) - exact(o[1]);
+    const mpq_class vx = exact(q[0]) - exact(o[0]), vy = exact(q[1]) - exact(o[1]);
+    return predicates::reference::sign_of(ux * vx + uy * vy);
+}
+
 }  // namespace
+
+Sign corner_dot_sign(const double* o, const double* p, const double* q) {
+    const Difference u = difference(p, o), v = difference(q, o);
+    if (!(in_window(u.x) && in_window(u.y) && in_window(v.x) && in_window(v.y))) {
+        return corner_dot_sign_gmp(o, p, q);
+    }
+    const double xx = u.x * v.x, yy = u.y * v.y;
+    const double e = xx + yy;
+    if (std::fabs(e) > kDotFilter * (std::fabs(xx) + std::fabs(yy))) return predicates::sign_of(e);
+    if (!(u.exact && v.exact)) return corner_dot_sign_gmp(o, p, q);
+    using predicates::exact_product;
+    return (exact_product(u.x, v.x) + exact_product(u.y, v.y)).sign();
+}
 
 Sign compare_angles(const Corner& a, const Corner& b) {
     const Difference ua = difference(a.p, a.o), va = difference(a.q, a.o);

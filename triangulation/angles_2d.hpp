@@ -4,6 +4,7 @@
 // angle at o of a counter-clockwise triangle (o, p, q) lies in (0, pi), where the cotangent
 // dot(p-o, q-o) / cross(p-o, q-o) is strictly decreasing, so theta1 < theta2 exactly when
 // dot1 * cross2 - dot2 * cross1 > 0 (cross > 0 by orientation): a degree-4 polynomial sign.
+// The same stages decide the sign of a dot product (right-angle and diametral-circle tests).
 // Stages as in predicates/: a floating-point filter with a forward error bound (derived below,
 // in angles_2d.cpp), then expansion arithmetic on exact differences [Shewchuk97 §2], then GMP.
 #pragma once
@@ -29,6 +30,12 @@ predicates::Sign compare_angles(const Corner& a, const Corner& b);
 /// Sign of |p1 - q1|^2 - |p2 - q2|^2, exact (finite coordinates).
 predicates::Sign compare_lengths(const double* p1, const double* q1, const double* p2,
                                  const double* q2);
+
+/// Sign of the dot product (p - o) . (q - o), exact (finite coordinates): Positive when the
+/// angle at o is acute, Zero when it is right (or o equals p or q), Negative when obtuse. So o
+/// lies in the closed disk with diameter pq (Thales) exactly when the result is not Positive:
+/// the encroachment test of Delaunay refinement [Ruppert95 §3].
+predicates::Sign corner_dot_sign(const double* o, const double* p, const double* q);
 
 /// The largest corner of the strictly counter-clockwise triangle (a, b, c): the corner opposite
 /// its longest side (law of sines), found with compare_lengths; ties go to the earliest of

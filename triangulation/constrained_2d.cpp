@@ -1,10 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Constrained and conforming Delaunay triangulation (see constrained_2d.hpp).
-//
-// State: the Delaunay2Core mesh (infinite vertex, twin half-edges) plus, per half-edge, the
-// input segment it carries (kNone when unconstrained; both halves of an edge agree), and per
-// vertex one half-edge leaving it, so a segment's walk starts in O(degree). Every operation
-// that rewrites triangles writes all of its vertices again, which keeps vertex_edge_ exact.
+// Constrained and conforming Delaunay triangulation (see constrained_2d.hpp); the builder's
+// state is described in constrained_2d_builder.hpp.
 //
 // A segment is processed as a stack of pieces (a, b, segment). A piece whose walk meets a
 // vertex on it, or a constrained edge across it, is split there and its parts pushed back;
@@ -21,6 +17,7 @@
 
 #include "predicates/constructions.hpp"
 #include "predicates/errors.hpp"
+#include "triangulation/constrained_2d_builder.hpp"
 #include "triangulation/delaunay_2d_core.hpp"
 #include "triangulation/green_sibson_2d.hpp"
 
@@ -62,171 +59,10 @@ void require_finite_items(std::span<const double> values, std::size_t stride, co
     }
 }
 
-struct Piece {
-    VertIdx a, b;          // mesh vertices
-    std::uint32_t segment;  // input segment
-};
+}  // namespace
 
-class CdtBuilder {
-public:
-    CdtBuilder(const Pslg& pslg, const Cdt2Options& options)
-        : pslg_(pslg), options_(options), core_(pslg.xy, delaunay_options(options)), mesh_(core_.mesh) {}
+namespace detail {
 
-    Cdt2Result run();
-
-private:
-    const Pslg& pslg_;
-    const Cdt2Options& options_;
-    detail::Delaunay2Core core_;
-    TriMesh2& mesh_;
-    std::vector<std::uint32_t> segment_of_;  // per half-edge
-    std::vector<EdgeIdx> vertex_edge_;       // per mesh vertex
-    std::vector<TriIdx> flip_stack_;
-    std::vector<std::uint8_t> in_cavity_;    // per triangle slot, scratch of recover_by_cavity
-    std::vector<Piece> work_;
-    std::vector<std::array<VertIdx, 2>> segment_ends_;  // per input segment: its mesh vertices
-    Cdt2Result result_;
-    std::uint32_t input_count_ = 0;
-    std::uint64_t work_done_ = 0;
-
-    static Delaunay2Options delaunay_options(const Cdt2Options& o) {
-        Delaunay2Options d;
-        d.order = o.order;
-        d.seed = o.seed;
-        return d;
-    }
-
-    // ---- mesh editing -------------------------------------------------------------------
-    TriIdx new_triangle() {
-        const TriIdx t = mesh_.new_triangle();
-        if (segment_of_.size() < mesh_.tv.size()) segment_of_.resize(mesh_.tv.size(), kNone);
-        return t;
-    }
-    void set(TriIdx t, VertIdx a, VertIdx b, VertIdx c) {
-        const VertIdx v[3] = {a, b, c};
-        for (unsigned k = 0; k < 3; ++k) {
-            mesh_.tv[3 * t + k] = v[k];
-            if (v[k] != kInfinite) vertex_edge_[v[k]] = 3 * t + k;
-        }
-    }
-    /// Links a new half-edge to a surviving outer one, keeping its constraint.
-    void link_outer(EdgeIdx e, EdgeIdx outer, std::uint32_t segment) {
-        mesh_.link(e, outer);
-        segment_of_[e] = segment;
-    }
-    void link_inner(EdgeIdx e, EdgeIdx f, std::uint32_t segment = kNone) {
-        mesh_.link(e, f);
-        segment_of_[e] = segment_of_[f] = segment;
-    }
-    void mark(EdgeIdx e, std::uint32_t segment) {
-        const std::uint32_t s = std::min(segment_of_[e], segment);
-        segment_of_[e] = segment_of_[mesh_.twin[e]] = s;
-    }
-    VertIdx apex(EdgeIdx e) const { return mesh_.tv[prev_edge(e)]; }
-
-    /// The half-edge u -> v, or kNone.
-    EdgeIdx find_edge(VertIdx u, VertIdx v) const {
-        const EdgeIdx first = vertex_edge_[u];
-        EdgeIdx e = first;
-        do {
-            if (mesh_.destination(e) == v) return e;
-            e = mesh_.twin[prev_edge(e)];
-        } while (e != first);
-        return kNone;
-    }
-
-    VertIdx add_vertex(double x, double y) {
-        mesh_.xy.push_back(x);
-        mesh_.xy.push_back(y);
-        const VertIdx v = mesh_.vertex_count() - 1;
-        core_.input_index.push_back(v);  // added vertices follow the inputs in the output
-        core_.merged_into.push_back(static_cast<VertIdx>(core_.merged_into.size()));
-        vertex_edge_.push_back(kNone);
-        return v;
-    }
-
-    /// Undoes add_vertex for a probe that no triangle uses (a located point, or a rounded
-    /// point equal to an existing vertex).
-    void remove_last_vertex() {
-        mesh_.xy.resize(mesh_.xy.size() - 2);
-        core_.input_index.pop_back();
-        core_.merged_into.pop_back();
-        vertex_edge_.pop_back();
-    }
-
-    // ---- insertion with Lawson flips that never cross a constraint --------------------
-    void insert_vertex(VertIdx p, TriIdx t);
-    void split_triangle(TriIdx t, VertIdx p);
-    void split_edge(EdgeIdx e, VertIdx p);
-    void flip_if_needed(TriIdx t1);  // t1 = (p, u, v), tests edge u -> v
-    /// Flips the edge of e (u -> v, apexes x and y) to x - y; returns the half-edge y -> x.
-    EdgeIdx flip(EdgeIdx e);
-    /// Lawson flips from the given edges until every unconstrained one is locally Delaunay.
-    void restore_delaunay(std::vector<std::pair<VertIdx, VertIdx>>& edges);
-    bool locally_delaunay(EdgeIdx e);
-
-    // ---- segments ----------------------------------------------------------------------
-    void prepare_segments();
-    /// How the segment a -> b leaves vertex a: the half-edge a -> b itself, else a neighbour
-    /// exactly on the ray a -> b, else the edge (of the triangle whose angle at a the segment
-    /// enters) that it crosses first; each kNone when absent.
-    struct StarExit {
-        EdgeIdx edge = kNone;
-        VertIdx on_ray = kNone;
-        EdgeIdx entry = kNone;
-    };
-    StarExit star_exit(VertIdx a, VertIdx b);
-    void insert_piece(const Piece& piece);
-    /// The piece passes exactly through vertex v: recover its two parts instead (a warning).
-    void split_piece_at_vertex(const Piece& piece, VertIdx v) {
-        ++result_.counters.vertices_on_segments;
-        result_.warnings.push_back("segment " + segment_name(piece.segment) + " passes through " + vertex_name(v) +
-                                   "; split there");
-        work_.push_back({v, piece.b, piece.segment});
-        work_.push_back({piece.a, v, piece.segment});
-    }
-    void split_at_intersection(const Piece& piece, EdgeIdx h);
-    void recover_by_swaps(const Piece& piece, const std::vector<EdgeIdx>& crossed);
-    void recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx>& crossed);
-    void triangulate_pseudo_polygon(VertIdx u, VertIdx v, std::span<const VertIdx> chain,
-                                    std::vector<std::array<VertIdx, 3>>& out);
-    /// A conforming piece to check (present: mark it) or, when encroached, to split.
-    struct SplitTask {
-        Piece piece;
-        bool encroached;
-    };
-    void conform();
-    /// Splits a missing piece (concentric shell or midpoint), inserts the point, queues both
-    /// halves and every marked piece the insertion encroached.
-    void split_piece(const Piece& piece, std::vector<SplitTask>& tasks);
-    /// A vertex that a missing piece crosses exactly on it, or within rounding of its input
-    /// segment's line and between its ends (the nearest), or kNone.
-    VertIdx vertex_near_segment(const Piece& piece);
-    bool conforming_ = false;
-    VertIdx first_split_vertex_ = 0;           // vertices from here on are conforming splits
-    std::vector<std::uint32_t> segment_degree_;  // pieces at each earlier vertex
-    std::vector<Piece> encroached_;
-    bool on_ray(VertIdx a, VertIdx b, VertIdx x) const;
-    void guard();
-
-    // ---- domain --------------------------------------------------------------------------
-    std::vector<std::uint8_t> removed_;  // per triangle slot
-    std::vector<double> attribute_;      // per triangle slot
-    TriIdx locate_point(double x, double y);
-    /// Marks `value` on every triangle reached from start without crossing a constraint (or
-    /// into the infinite vertex); calls reached(t) for each one marked.
-    template <class Mark, class Reached>
-    void flood(TriIdx start, std::vector<Mark>& mark_value, Mark value, Reached reached);
-    void remove_exterior_and_holes();
-    void assign_regions();
-    void collect_output();
-    void collinear_output();
-
-    std::string vertex_name(VertIdx v) const {
-        return "vertex " + std::to_string(core_.input_index[v] + options_.first_index);
-    }
-    std::string segment_name(std::uint32_t s) const { return std::to_string(s + options_.first_index); }
-};
 
 // ---------------------------------------------------------------------------------------------
 
@@ -235,6 +71,8 @@ void CdtBuilder::split_triangle(TriIdx t, VertIdx p) {
     const EdgeIdx x = mesh_.twin[3 * t], y = mesh_.twin[3 * t + 1], z = mesh_.twin[3 * t + 2];
     const std::uint32_t sx = segment_of_[3 * t], sy = segment_of_[3 * t + 1], sz = segment_of_[3 * t + 2];
     const TriIdx t1 = t, t2 = new_triangle(), t3 = new_triangle();
+    put_on_side(t2, side_of(t));
+    put_on_side(t3, side_of(t));
     set(t1, p, a, b);
     set(t2, p, b, c);
     set(t3, p, c, a);
@@ -258,7 +96,12 @@ void CdtBuilder::split_edge(EdgeIdx e, VertIdx p) {
     const std::uint32_t sbc = segment_of_[next_edge(e)], sca = segment_of_[prev_edge(e)];
     const std::uint32_t sad = segment_of_[next_edge(f)], sdb = segment_of_[prev_edge(f)];
     const std::uint32_t split = segment_of_[e];  // both halves of a split segment keep it
+    // Slot u takes a triangle on t's side: the sides are read first.
+    const Side side_t = side_of(t), side_u = side_of(u);
     const TriIdx t1 = t, t2 = u, t3 = new_triangle(), t4 = new_triangle();
+    put_on_side(t2, side_t);
+    put_on_side(t3, side_u);
+    put_on_side(t4, side_u);
     set(t1, p, b, c);
     set(t2, p, c, a);
     set(t3, p, a, d);
@@ -865,6 +708,38 @@ void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) 
 
 // ---------------------------------------------------------------------------------------------
 
+void CdtBuilder::enclose_in_box() {
+    // Corners one bounding-box size beyond the bounding box of every vertex: each of the
+    // triangulation's hull edges, segments included, becomes interior (Lawson insertion with
+    // the infinite vertex, as Green-Sibson inserts outside the hull; constraints never flip).
+    const std::uint32_t n = mesh_.vertex_count();
+    double lo_x = mesh_.xy[0], hi_x = lo_x, lo_y = mesh_.xy[1], hi_y = lo_y;
+    for (VertIdx v = 1; v < n; ++v) {
+        lo_x = std::min(lo_x, mesh_.xy[2 * v]);
+        hi_x = std::max(hi_x, mesh_.xy[2 * v]);
+        lo_y = std::min(lo_y, mesh_.xy[2 * v + 1]);
+        hi_y = std::max(hi_y, mesh_.xy[2 * v + 1]);
+    }
+    const double margin = std::max(hi_x - lo_x, hi_y - lo_y);
+    const double corners[4][2] = {{lo_x - margin, lo_y - margin},
+                                  {hi_x + margin, lo_y - margin},
+                                  {hi_x + margin, hi_y + margin},
+                                  {lo_x - margin, hi_y + margin}};
+    for (const auto& corner : corners) {
+        if (!std::isfinite(margin) || !std::isfinite(corner[0]) || !std::isfinite(corner[1])) {
+            throw GeometryError("coordinates too large to enclose the domain in a box (within a factor 3 of the "
+                                "largest double)");
+        }
+    }
+    box_first_ = n;
+    for (const auto& corner : corners) {
+        const VertIdx p = add_vertex(corner[0], corner[1]);
+        const TriIdx t = core_.walk_to(p);
+        EM_ASSERT(mesh_.is_infinite(t));
+        insert_vertex(p, t);
+    }
+}
+
 TriIdx CdtBuilder::locate_point(double x, double y) {
     const VertIdx probe = add_vertex(x, y);
     const TriIdx t = core_.walk_to(probe);
@@ -953,11 +828,19 @@ void CdtBuilder::collect_output() {
     for (VertIdx v = 0; v < vertices; ++v) {
         if (caller[v] < input_count_) caller[v] = result_.merged_into[caller[v]];
     }
+    // The enclosing box's corners (all in removed triangles) are not output; the vertices added
+    // after them close the gap.
+    std::uint32_t output_vertices = vertices;
+    if (box_first_ != kNone) {
+        for (VertIdx v = box_first_; v < vertices; ++v) caller[v] = v < box_first_ + 4 ? kNone : v - 4;
+        output_vertices -= 4;
+    }
     Triangulation2& out = result_.mesh;
-    out.xy.reserve(2 * std::size_t{vertices});
+    out.xy.reserve(2 * std::size_t{output_vertices});
     out.xy.assign(pslg_.xy.begin(), pslg_.xy.end());
-    out.xy.resize(2 * std::size_t{vertices});
+    out.xy.resize(2 * std::size_t{output_vertices});
     for (VertIdx v = input_count_; v < vertices; ++v) {
+        if (caller[v] == kNone) continue;
         out.xy[2 * std::size_t{caller[v]}] = mesh_.xy[2 * std::size_t{v}];
         out.xy[2 * std::size_t{caller[v]} + 1] = mesh_.xy[2 * std::size_t{v} + 1];
     }
@@ -1046,7 +929,7 @@ void CdtBuilder::collinear_output() {
     result_.counters.duplicates = points.counters.duplicates;
 }
 
-Cdt2Result CdtBuilder::run() {
+bool CdtBuilder::build() {
     input_count_ = mesh_.vertex_count();
     Cdt2Counters& c = result_.counters;
     c.points = input_count_;
@@ -1056,8 +939,8 @@ Cdt2Result CdtBuilder::run() {
     // The Delaunay triangulation first (no constraint yet: plain Green-Sibson, which keeps
     // no per-edge state), then the constraint and vertex maps in one pass.
     if (!detail::green_sibson_insert_all(core_)) {
-        collinear_output();
-        return std::move(result_);
+        collinear_ = true;
+        return false;
     }
     segment_of_.reserve(mesh_.tv.capacity());
     segment_of_.assign(mesh_.tv.size(), kNone);
@@ -1075,8 +958,22 @@ Cdt2Result CdtBuilder::run() {
         insert_piece(piece);
     }
     if (options_.recovery == SegmentRecovery::Conforming) conform();
+    if (enclose_in_box_) {
+        bend_through_near_vertices();
+        enclose_in_box();
+    }
     remove_exterior_and_holes();
     assign_regions();
+    domain_marked_ = true;
+    return true;
+}
+
+Cdt2Result CdtBuilder::finish() {
+    if (collinear_) {
+        collinear_output();
+        return std::move(result_);
+    }
+    Cdt2Counters& c = result_.counters;
     c.duplicates = core_.counters.duplicates;
     c.orient_calls = core_.counters.orient_calls;
     c.incircle_calls = core_.counters.incircle_calls;
@@ -1086,9 +983,9 @@ Cdt2Result CdtBuilder::run() {
     return std::move(result_);
 }
 
-}  // namespace
+}  // namespace detail
 
-Cdt2Result constrained_delaunay_2d(const Pslg& pslg, const Cdt2Options& options) {
+void validate_pslg(const Pslg& pslg) {
     validate_points_2d(pslg.xy);
     const std::size_t n = pslg.xy.size() / 2;
     if (pslg.segments.size() % 2 != 0) throw InputError("segments: odd number of endpoint indices");
@@ -1102,8 +999,13 @@ Cdt2Result constrained_delaunay_2d(const Pslg& pslg, const Cdt2Options& options)
     if (pslg.regions.size() % 4 != 0) throw InputError("regions: expected 4 numbers per region");
     require_finite_items(pslg.holes, 2, "hole");
     require_finite_items(pslg.regions, 4, "region");
-    CdtBuilder builder(pslg, options);
-    return builder.run();
+}
+
+Cdt2Result constrained_delaunay_2d(const Pslg& pslg, const Cdt2Options& options) {
+    validate_pslg(pslg);
+    detail::CdtBuilder builder(pslg, options);
+    builder.build();
+    return builder.finish();
 }
 
 }  // namespace exactmesh::triangulation

@@ -90,6 +90,11 @@ struct Cdt2Result {
     Cdt2Counters counters;
 };
 
+/// Validates a PSLG as constrained_delaunay_2d does before any work.
+/// @throws InputError naming the offending item: a non-finite coordinate (vertex, hole or
+///         region), a segment index out of range, more than kMaxPoints vertices.
+void validate_pslg(const Pslg& pslg);
+
 /// @throws InputError naming the offending item: a non-finite coordinate (vertex, hole or
 ///         region), a segment index out of range, more than kMaxPoints vertices.
 /// @throws GeometryError if segment recovery fails to converge (a bug: reported, never a hang).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// BRIO rounds [AmentaChoiRote03] and a Hilbert-curve sort over a 2^16 x 2^16 grid. The grid
-// only orders points; no geometric decision depends on it, so quantisation is harmless.
+// BRIO rounds [AmentaChoiRote03] and a Hilbert-curve sort over a 2^16 x 2^16 grid (2D) or a
+// 2^10 x 2^10 x 2^10 grid (3D, Skilling's transpose algorithm [Skilling04]). The grid only
+// orders points; no geometric decision depends on it, so quantisation is harmless.
 #include "triangulation/spatial_sort.hpp"
 
 #include <algorithm>
@@ -90,6 +91,89 @@ void sort_by_keys(std::span<const std::uint32_t> keys, std::span<std::uint32_t> 
     }
 }
 
+/// Hilbert index of cell (x, y, z) of a 2^bits grid per axis: Skilling's transpose algorithm
+/// ("Programming the Hilbert curve", AIP Conf. Proc. 707, 2004), then the bits interleaved.
+std::uint32_t hilbert_key_3d(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+    constexpr int kBits = 10;
+    std::uint32_t axes[3] = {x, y, z};
+    // Inverse undo of the excess work, from the top bit down.
+    for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1) {
+        const std::uint32_t p = q - 1;
+        for (int i = 0; i < 3; ++i) {
+            if (axes[i] & q) {
+                axes[0] ^= p;  // invert
+            } else {
+                const std::uint32_t t = (axes[0] ^ axes[i]) & p;  // exchange
+                axes[0] ^= t;
+                axes[i] ^= t;
+            }
+        }
+    }
+    // Gray encode.
+    axes[1] ^= axes[0];
+    axes[2] ^= axes[1];
+    std::uint32_t t = 0;
+    for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1) {
+        if (axes[2] & q) t ^= q - 1;
+    }
+    for (std::uint32_t& a : axes) a ^= t;
+    std::uint32_t key = 0;
+    for (int bit = kBits - 1; bit >= 0; --bit) {
+        for (const std::uint32_t a : axes) key = (key << 1) | ((a >> bit) & 1u);
+    }
+    return key;
+}
+
+/// 3D Hilbert keys of all points on a 2^10 grid per axis over their bounding box.
+std::vector<std::uint32_t> hilbert_keys_3d(std::span<const double> xyz) {
+    const std::size_t n = xyz.size() / 3;
+    std::vector<std::uint32_t> keys(n);
+    if (n == 0) return keys;
+    double lo[3] = {xyz[0], xyz[1], xyz[2]}, hi[3] = {xyz[0], xyz[1], xyz[2]};
+    for (std::size_t i = 1; i < n; ++i) {
+        for (std::size_t c = 0; c < 3; ++c) {
+            lo[c] = std::min(lo[c], xyz[3 * i + c]);
+            hi[c] = std::max(hi[c], xyz[3 * i + c]);
+        }
+    }
+    // Halves keep huge extents (up to the double range) from overflowing.
+    double half[3];
+    for (std::size_t c = 0; c < 3; ++c) half[c] = hi[c] / 2 - lo[c] / 2;
+    auto cell = [](double v, double low, double half_span) -> std::uint32_t {
+        if (!(half_span > 0)) return 0;
+        const double t = (v / 2 - low / 2) / half_span;
+        return static_cast<std::uint32_t>(std::clamp(t, 0.0, 1.0) * 1023.0);
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        keys[i] = hilbert_key_3d(cell(xyz[3 * i], lo[0], half[0]), cell(xyz[3 * i + 1], lo[1], half[1]),
+                                 cell(xyz[3 * i + 2], lo[2], half[2]));
+    }
+    return keys;
+}
+
+/// A random permutation of 0..n-1, or the identity for the given order.
+std::vector<std::uint32_t> shuffled(std::size_t n, InsertionOrder order, std::uint64_t seed) {
+    std::vector<std::uint32_t> perm(n);
+    std::iota(perm.begin(), perm.end(), 0u);
+    if (order == InsertionOrder::Given) return perm;
+    std::mt19937_64 rng(seed);
+    std::shuffle(perm.begin(), perm.end(), rng);
+    return perm;
+}
+
+/// BRIO: rounds [0, n/2^k) ... [n/4, n/2), [n/2, n) of the shuffled `perm`, each sorted by key;
+/// the first round stays small (at most 64 points) and random.
+void sort_brio_rounds(std::span<const std::uint32_t> keys, std::vector<std::uint32_t>& perm) {
+    std::vector<std::uint64_t> keyed, scratch;
+    std::size_t end = perm.size();
+    while (end > 64) {
+        const std::size_t begin = end / 2;
+        sort_by_keys(keys, std::span<std::uint32_t>(perm).subspan(begin, end - begin), keyed,
+                     scratch);
+        end = begin;
+    }
+}
+
 }  // namespace
 
 void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indices) {
@@ -111,24 +195,34 @@ void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indice
 
 std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
                                               std::uint64_t seed) {
-    std::vector<std::uint32_t> perm(xy.size() / 2);
-    std::iota(perm.begin(), perm.end(), 0u);
-    if (order == InsertionOrder::Given) return perm;
-    std::mt19937_64 rng(seed);
-    std::shuffle(perm.begin(), perm.end(), rng);
-    if (order == InsertionOrder::Random) return perm;
-    // BRIO: rounds [0, n/2^k) ... [n/4, n/2), [n/2, n), each sorted along the Hilbert curve;
-    // the first round stays small (at most 64 points) and random.
-    const std::vector<std::uint32_t> keys = hilbert_keys(xy);
-    std::vector<std::uint64_t> keyed, scratch;
-    std::size_t end = perm.size();
-    while (end > 64) {
-        const std::size_t begin = end / 2;
-        sort_by_keys(keys, std::span<std::uint32_t>(perm).subspan(begin, end - begin), keyed,
-                     scratch);
-        end = begin;
-    }
+    std::vector<std::uint32_t> perm = shuffled(xy.size() / 2, order, seed);
+    if (order != InsertionOrder::Brio) return perm;
+    sort_brio_rounds(hilbert_keys(xy), perm);
     return perm;
+}
+
+std::vector<std::uint32_t> insertion_order_3d(std::span<const double> xyz, InsertionOrder order,
+                                              std::uint64_t seed) {
+    std::vector<std::uint32_t> perm = shuffled(xyz.size() / 3, order, seed);
+    if (order != InsertionOrder::Brio) return perm;
+    sort_brio_rounds(hilbert_keys_3d(xyz), perm);
+    return perm;
+}
+
+void hilbert_sort_3d(std::span<const double> xyz, std::span<std::uint32_t> indices) {
+    if (indices.size() < 2) return;
+    std::vector<double> subset(3 * indices.size());
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+        for (std::size_t c = 0; c < 3; ++c) subset[3 * k + c] = xyz[3 * std::size_t{indices[k]} + c];
+    }
+    const std::vector<std::uint32_t> keys = hilbert_keys_3d(subset);
+    std::vector<std::uint32_t> local(indices.size());
+    std::iota(local.begin(), local.end(), 0u);
+    std::vector<std::uint64_t> keyed, scratch;
+    sort_by_keys(keys, local, keyed, scratch);
+    std::vector<std::uint32_t> sorted(indices.size());
+    for (std::size_t k = 0; k < indices.size(); ++k) sorted[k] = indices[local[k]];
+    std::copy(sorted.begin(), sorted.end(), indices.begin());
 }
 
 }  // namespace exactmesh::triangulation

@@ -341,9 +341,265 @@ swap_bad_input() {
   expect_error 2 'output is required' min-max "$data/kite.node"
 }
 
+# canonical_tets <file.ele>: each tetrahedron's vertices sorted, the lines sorted: equal for
+# equal tetrahedralizations in any listing order.
+canonical_tets() {
+  awk 'NR > 1 { n = split($2 " " $3 " " $4 " " $5, v, " ")
+    for (i = 1; i <= 4; i++) for (j = i + 1; j <= 4; j++) if (v[j] < v[i]) { t = v[i]; v[i] = v[j]; v[j] = t }
+    print v[1], v[2], v[3], v[4] }' "$1" | sort
+}
+
+# 300 points of a 6 x 6 x 6 integer grid (massively cospherical) and a random cloud, from awk
+# with fixed seeds: every algorithm and order gives the same tetrahedra (shared perturbation)
+# that `check` accepts, numbered like the 1-based input.
+tetrahedralize_all() {
+  awk 'BEGIN { print 216, 3, 0, 0; n = 0
+    for (x = 0; x < 6; x++) for (y = 0; y < 6; y++) for (z = 0; z < 6; z++) printf "%d %d %d %d\n", ++n, x, y, z }' \
+    >"$work/grid.node"
+  awk 'BEGIN { srand(11); print 300, 3, 0, 0
+    for (i = 1; i <= 300; i++) printf "%d %.17g %.17g %.17g\n", i, rand(), rand(), rand() }' >"$work/cloud.node"
+  local node algorithm order base reference
+  for node in grid cloud cube_center; do
+    local path="$work/$node.node"
+    [[ $node == cube_center ]] && path="$data/cube_center.node"
+    reference=""
+    for algorithm in bowyer-watson green-sibson; do
+      for order in given random brio; do
+        base="$work/$node.$algorithm.$order"
+        run 0 tetrahedralize "$path" -o "$base.ele" --algorithm "$algorithm" --order "$order" --seed 5 || continue
+        for ext in ele face neigh; do [[ -s "$base.$ext" ]] || fail "$base.$ext missing"; done
+        run 0 check "$path" "$base.ele" && grep -Eq '^ok: [0-9]+ tetrahedra, exact Delaunay$' "$work/out" ||
+          fail "check did not accept $base.ele: $(cat "$work/out")"
+        canonical_tets "$base.ele" >"$base.tets"
+        if [[ -z $reference ]]; then
+          reference="$base.tets"
+        else
+          cmp -s "$reference" "$base.tets" || fail "$node: $algorithm $order differs from $reference"
+        fi
+      done
+    done
+  done
+  # The cube and its centre: 12 tetrahedra (a cone over the 12 face triangles), 12 hull faces,
+  # 1-based like the input (tetrahedron 1 first, vertices 1..9).
+  head -n1 "$work/cube_center.bowyer-watson.brio.ele" | grep -q '^12 4 0$' || fail "cube_center: expected 12 tetrahedra"
+  head -n1 "$work/cube_center.green-sibson.given.face" | grep -q '^12 0$' || fail "cube_center: expected 12 hull faces"
+  sed -n 2p "$work/cube_center.bowyer-watson.brio.ele" | grep -q '^1 ' || fail "cube_center: first tetrahedron is not 1"
+  if awk 'NR > 1 { for (i = 2; i <= 5; i++) if ($i < 1 || $i > 9) bad = 1 } END { exit !bad }' \
+    "$work/cube_center.green-sibson.random.ele"; then
+    fail "cube_center: vertex numbers outside 1..9"
+  fi
+  [[ $(tail -n +2 "$work/cube_center.bowyer-watson.given.neigh" | grep -o -- '-1' | wc -l) -eq 12 ]] ||
+    fail "cube_center.neigh: expected 12 hull sides"
+  # Every unit cube of the grid is cut into tetrahedra: 6 x volume sums to 6 x 125.
+  awk 'NR == FNR { if (FNR > 1) { x[$1] = $2; y[$1] = $3; z[$1] = $4 }; next }
+    FNR > 1 { a = $2; b = $3; c = $4; d = $5
+      ux = x[b] - x[a]; uy = y[b] - y[a]; uz = z[b] - z[a]
+      vx = x[c] - x[a]; vy = y[c] - y[a]; vz = z[c] - z[a]
+      wx = x[d] - x[a]; wy = y[d] - y[a]; wz = z[d] - z[a]
+      det = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)
+      if (det <= 0) bad++
+      sum += det }
+    END { if (bad > 0 || sum != 750) { print "volume", sum, "non-positive", bad; exit 1 } }' \
+    "$work/grid.node" "$work/grid.green-sibson.brio.ele" >"$work/volume" ||
+    fail "grid: TetGen-oriented volumes: $(cat "$work/volume")"
+}
+
+tetrahedralize_formats() {
+  run 0 tetrahedralize "$data/cube_center.node" -o "$work/cube.msh" || return
+  [[ $(head -n2 "$work/cube.msh" | tail -n1) == "4.1 0 8" ]] || fail "msh header"
+  grep -q '^3 1 4 12$' "$work/cube.msh" || fail "msh: no block of 12 tetrahedra (type 4) in a volume"
+  run 0 tetrahedralize "$data/cube_center.node" -o "$work/cube.vtu" --algorithm green-sibson
+  grep -q 'NumberOfPoints="9" NumberOfCells="12"' "$work/cube.vtu" || fail "vtu counts"
+  grep -q '</VTKFile>' "$work/cube.vtu" || fail "vtu not closed"
+  expect_error 2 'svg pictures are 2D only' tetrahedralize "$data/cube_center.node" -o "$work/cube.svg"
+  [[ ! -e "$work/cube.svg" ]] || fail "cube.svg written despite the error"
+  expect_error 2 "unsupported output extension '\.off'" tetrahedralize "$data/cube_center.node" -o "$work/x.off"
+  # -o beside the input would overwrite it with the .face or .neigh of the result: refused.
+  cp "$data/cube_center.node" "$work/keep.node"
+  printf '1 0\n' >"$work/keep.face"
+  expect_error 2 'keep\.face: this output would overwrite the input file' tetrahedralize "$work/keep.face" -o "$work/keep.ele"
+}
+
+tetrahedralize_stats() {
+  run 0 tetrahedralize "$data/cube_center.node" -o "$work/s.ele" --stats --algorithm green-sibson || return
+  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" ||
+    fail "--stats: no 'construct_seconds: T' line: $(cat "$work/out")"
+  local name
+  for name in points duplicates orient_calls insphere_calls walk_steps cavity_tets outside_hull splits_1_4 \
+    splits_2_6 splits_edge flips_2_3 flips_3_2 flips_4_4 unflippable; do
+    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "--stats: no '$name: N' line"
+  done
+  grep -q '^points: 9$' "$work/out" || fail "--stats: points is not 9"
+  grep -Eq '^(orient3d\.calls: [0-9]+|predicate_stages: compiled out.*)$' "$work/out" ||
+    fail "--stats: neither orient3d stage counters nor 'compiled out'"
+  if grep -Ev '^[a-z0-9_.]+: ' "$work/out" | grep -q .; then
+    fail "--stats: a line is not 'name: value': $(grep -Ev '^[a-z0-9_.]+: ' "$work/out")"
+  fi
+  # Duplicates are merged into their first copy and counted.
+  printf '6 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 1 0 0\n5 -0 0 0\n' >"$work/dup.node"
+  run 0 tetrahedralize "$work/dup.node" -o "$work/dup.ele" --stats && grep -q '^duplicates: 2$' "$work/out" ||
+    fail "--stats: duplicates is not 2: $(cat "$work/out")"
+  if awk 'NR > 1 { for (i = 2; i <= 5; i++) if ($i > 3) bad = 1 } END { exit !bad }' "$work/dup.ele"; then
+    fail "dup.ele uses a repeated point instead of its first copy"
+  fi
+}
+
+tetrahedralize_bad_input() {
+  printf '3 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 nan 0\n' >"$work/nan.node"
+  expect_error 2 'nan\.node:4: non-finite y coordinate .nan.' tetrahedralize "$work/nan.node" -o "$work/x.ele"
+  expect_error 2 'kite\.node:[0-9]+: dimension must be 3, got 2' tetrahedralize "$data/kite.node" -o "$work/x.ele"
+  printf '4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n' >"$work/short.node"
+  expect_error 2 'short\.node:4: file ends after 3 of 4 announced vertices' tetrahedralize "$work/short.node" -o "$work/x.ele"
+  printf '5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 1 1 0\n5 2 3 0\n' >"$work/flat.node"
+  expect_error 2 'flat\.node: all 5 points lie in one plane' tetrahedralize "$work/flat.node" -o "$work/x.ele"
+  [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
+  expect_error 2 'foo not in' tetrahedralize "$data/cube_center.node" -o "$work/x.ele" --algorithm foo
+  expect_error 2 'tanemura-merriam not in' tetrahedralize "$data/cube_center.node" -o "$work/x.ele" --algorithm tanemura-merriam
+  expect_error 2 'output is required' tetrahedralize "$data/cube_center.node"
+  # check: a TetGen .ele naming a vertex the .node lacks; a 2D .ele against a 3D .node.
+  printf '1 4 0\n1 1 2 3 10\n' >"$work/bad_vertex.ele"
+  expect_error 2 'bad_vertex\.ele:2: node number 10 out of range' check "$data/cube_center.node" "$work/bad_vertex.ele"
+  expect_error 2 'nodes per tetrahedron must be 4' check "$data/cube_center.node" "$data/kite_delaunay.ele"
+}
+
+check_rejects_non_delaunay_3d() {
+  # Five points: a triangle and two apexes whose segment pierces it. The Delaunay
+  # tetrahedralization has 2 tetrahedra; the 3 around the apexes' edge are valid, not Delaunay.
+  printf '5 3 0 0\n1 0 0 0\n2 4 0 0\n3 0 4 0\n4 1 1 10\n5 1 1 -10\n' >"$work/five.node"
+  run 0 tetrahedralize "$work/five.node" -o "$work/five.ele" || return
+  head -n1 "$work/five.ele" | grep -q '^2 4 0$' || fail "five: expected 2 tetrahedra"
+  # TetGen orientation (positive volume): (4, 5, a, b) for the edges ab of triangle 1-2-3.
+  printf '3 4 0\n1 4 5 2 1\n2 4 5 3 2\n3 4 5 1 3\n' >"$work/flipped.ele"
+  run 1 check "$work/five.node" "$work/flipped.ele" || return
+  grep -Eq '^not ok: .*flipped\.ele: tetrahedron [1-3] \(.*\): not Delaunay, vertex [0-9] lies inside its circumsphere$' \
+    "$work/out" || fail "check: wrong report: $(cat "$work/out")"
+  # The same tetrahedra inside out are named as such.
+  printf '3 4 0\n1 5 4 2 1\n2 4 5 3 2\n3 4 5 1 3\n' >"$work/inverted.ele"
+  run 1 check "$work/five.node" "$work/inverted.ele" &&
+    grep -q 'tetrahedron 1 (.*): not positively oriented' "$work/out" || fail "check: inverted: $(cat "$work/out")"
+  # A missing tetrahedron leaves the boundary open.
+  printf '1 4 0\n1 1 2 3 4\n' >"$work/one.ele"
+  run 1 check "$work/five.node" "$work/one.ele" && grep -q 'point 5 is not a vertex' "$work/out" ||
+    fail "check: one tetrahedron: $(cat "$work/out")"
+}
+
+swap3d_criteria() {
+  # Two tetrahedra on a face whose far apex is inside the near sphere: one 2-3 swap, Delaunay.
+  run 0 swap3d "$data/pair.node" "$data/pair.ele" -o "$work/pair.ele" --stats || return
+  grep -q '^flips_23: 1$' "$work/out" || fail "swap3d pair: expected one 2-3 swap: $(cat "$work/out")"
+  grep -q '^stalled_faces: 0$' "$work/out" || fail "swap3d pair: stalled: $(cat "$work/out")"
+  grep -q '^tetrahedra: 3$' "$work/out" || fail "swap3d pair: expected 3 tetrahedra"
+  [[ $(head -n1 "$work/pair.ele") == "3 4 0" ]] || fail "swap3d pair: .ele header $(head -n1 "$work/pair.ele")"
+  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "swap3d --stats: no construct_seconds"
+  for name in faces_examined edges_examined flips_23 flips_32 flips_44 flips_22 not_flippable; do
+    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "swap3d --stats: no '$name: N' line"
+  done
+  # The output reads back (TetGen orientation round trip) and swapping it again changes nothing.
+  run 0 swap3d "$data/pair.node" "$work/pair.ele" -o "$work/again.ele" --stats || return
+  grep -q '^flips_23: 0$' "$work/out" || fail "swap3d: second pass swapped: $(cat "$work/out")"
+  cmp -s "$work/pair.ele" "$work/again.ele" || fail "swap3d: second pass changed the mesh"
+  # The stall instance of tests/unit/triangulation/edge_face_swap_3d_test.cpp: 1-based files,
+  # Delaunay swapping stops with 6 faces not locally Delaunay and no valid swap.
+  run 0 swap3d "$data/stall7.node" "$data/stall7_placing.ele" -o "$work/stall.ele" --stats --quality || return
+  grep -q '^stalled_faces: 6$' "$work/out" || fail "swap3d stall: $(cat "$work/out")"
+  sed -n 2p "$work/stall.ele" | grep -q '^1 ' || fail "swap3d: 1-based input must give 1-based output"
+  for name in min_dihedral_degrees max_dihedral_degrees min_volume_edge mean_volume_edge max_radius_edge slivers; do
+    grep -Eq "^$name: [0-9.e+-]+$" "$work/out" || fail "swap3d --quality: no '$name: value' line"
+  done
+  [[ $(grep -c '^dihedral_degrees\[' "$work/out") -eq 18 ]] || fail "swap3d --quality: expected 18 histogram bins"
+  for criterion in max-min-dihedral min-max-dihedral volume-edge; do
+    run 0 swap3d "$data/stall7.node" "$data/stall7_placing.ele" -o "$work/$criterion.ele" --criterion "$criterion" \
+      --stats --quality || continue
+    grep -q "^criterion: $criterion$" "$work/out" || fail "swap3d: criterion line for $criterion"
+    ! grep -q '^stalled_faces' "$work/out" || fail "swap3d: stalled_faces is a Delaunay counter"
+    if grep -Ev '^[a-z_0-9]+(\[[0-9]+,[0-9]+[])])?: [^ ]+$' "$work/out" | grep -q .; then
+      fail "swap3d --stats --quality: a line is not 'name: value'"
+    fi
+  done
+}
+
+swap3d_bad_input() {
+  expect_error 2 'nan3d\.node:[0-9]+: non-finite z coordinate' \
+    swap3d "$data/nan3d.node" "$data/pair.ele" -o "$work/x.ele"
+  expect_error 2 'planar\.node:1: dimension must be 3' swap3d "$data/planar.node" "$data/pair.ele" -o "$work/x.ele"
+  expect_error 2 'pair_bad_node\.ele:3: node number 9 out of range' \
+    swap3d "$data/pair.node" "$data/pair_bad_node.ele" -o "$work/x.ele"
+  expect_error 2 'pair_inverted\.ele: tetrahedron 0 \(1, 0, 3, 2\) is negatively oriented' \
+    swap3d "$data/pair.node" "$data/pair_inverted.ele" -o "$work/x.ele"
+  expect_error 2 'pair_overlap\.ele: face .* is shared by 3 tetrahedra' \
+    swap3d "$data/pair.node" "$data/pair_overlap.ele" -o "$work/x.ele"
+  expect_error 2 'foo not in' swap3d "$data/pair.node" "$data/pair.ele" -o "$work/x.ele" --criterion foo
+  expect_error 2 'the output must be a \.ele file' swap3d "$data/pair.node" "$data/pair.ele" -o "$work/x.node"
+  expect_error 2 'missing\.ele: cannot open for reading' swap3d "$data/pair.node" "$work/missing.ele" -o "$work/x.ele"
+}
+
+# `exactmesh mesh`: each built-in domain in each format, a .poly with an angle and size bound
+# (checked as constrained Delaunay by `check`, min angle from --quality), a size file, and the
+# error lines: unimplemented and unknown generators, bounds, files, open and broken domains.
+mesh() {
+  local domain ext
+  for domain in square-with-holes naca0012 key; do
+    run 0 mesh --domain "$domain" -o "$work/$domain.ele" --quality --stats || continue
+    for ext in ele neigh node poly; do [[ -s "$work/$domain.$ext" ]] || fail "mesh: $domain.$ext missing"; done
+    grep -Eq '^triangles: [1-9][0-9]{3,}$' "$work/out" || fail "mesh $domain: too few triangles: $(cat "$work/out")"
+    grep -Eq '^quality.min_angle: [0-9]+\.[0-9]+$' "$work/out" || fail "mesh $domain: no quality.min_angle"
+    grep -Eq '^quality.size_conformity: min [0-9.]+ median [0-9.]+ max (0\.[0-9]+|1\.0000[0-9]*) ' "$work/out" ||
+      fail "mesh $domain: size conformity above 1: $(grep size_conformity "$work/out")"
+    grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "mesh $domain --stats: no construct_seconds"
+    grep -Eq '^steiner_points: [1-9][0-9]*$' "$work/out" || fail "mesh $domain --stats: no steiner_points"
+  done
+  # No small input angle in square-with-holes: every angle at least the bound.
+  run 0 mesh --domain square-with-holes -o "$work/swh.vtu" --min-angle 30 --quality &&
+    awk '/^quality.min_angle:/ { exit !($2 >= 30) }' "$work/out" || fail "mesh: min angle below 30: $(cat "$work/out")"
+  for ext in msh vtu svg; do
+    run 0 mesh --domain key -o "$work/key.$ext" && [[ -s "$work/key.$ext" ]] || fail "mesh: key.$ext"
+  done
+  grep -q '</svg>' "$work/key.svg" || fail "mesh: svg not closed"
+  # A .poly (1-based, a hole, crossing diagonals): valid constrained Delaunay, angles >= 28.
+  run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/square.ele" --min-angle 28 --size 0.3 --quality || return
+  awk '/^quality.min_angle:/ { exit !($2 >= 28) }' "$work/out" || fail "mesh: min angle below 28: $(cat "$work/out")"
+  grep -q 'warning: segments 6 and 5 cross' "$work/err" || fail "mesh: no crossing warning: $(cat "$work/err")"
+  run 0 check "$data/square_hole_diagonals.poly" "$work/square.ele" &&
+    grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
+    fail "check rejected the mesh: $(cat "$work/out")"
+  # A size file: a point source at the centre, capped.
+  printf '# size\nuniform 0.5\npoint 2 2 0.05 0.5 1.5\n' >"$work/size.txt"
+  run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/graded.ele" --size "$work/size.txt" --quality &&
+    grep -Eq '^quality.size_conformity: .* max (0\.[0-9]+|1\.0000[0-9]*) ' "$work/out" ||
+    fail "mesh: graded size not met: $(cat "$work/out")"
+  # Errors: one line each.
+  local name
+  for name in quadtree advancing-front advancing-front-delaunay frontal; do
+    expect_error 2 "not implemented yet: $name" mesh --domain key -o "$work/x.ele" --generator "$name"
+  done
+  expect_error 2 "unknown generator 'magic'" mesh --domain key -o "$work/x.ele" --generator magic
+  expect_error 2 "unknown domain 'moon'" mesh --domain moon -o "$work/x.ele"
+  expect_error 2 'minimum angle 40 is outside \[0, 34\]' mesh --domain key -o "$work/x.ele" --min-angle 40
+  expect_error 2 'either an input \.poly file or --domain' mesh "$data/square_hole_diagonals.poly" --domain key -o "$work/x.ele"
+  expect_error 2 'either an input \.poly file or --domain' mesh -o "$work/x.ele"
+  printf 'point 1 2 3\n' >"$work/bad_size.txt"
+  expect_error 2 'bad_size\.txt:1: point takes 5 numbers' mesh --domain key -o "$work/x.ele" --size "$work/bad_size.txt"
+  expect_error 2 "--size 'nowhere' is neither a number > 0 nor a readable size file" \
+    mesh --domain key -o "$work/x.ele" --size nowhere
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 2 3\n0\n' >"$work/open.poly"
+  expect_error 2 'the segments enclose no region' mesh "$work/open.poly" -o "$work/x.ele"
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 nan\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/nan.poly"
+  expect_error 2 'nan\.poly:4: non-finite y coordinate' mesh "$work/nan.poly" -o "$work/x.ele"
+  expect_error 2 'more than 50 Steiner points' mesh --domain key -o "$work/x.ele" --max-steiner 50
+  # A self-intersecting boundary (a bow tie): split where it crosses, a warning, a valid mesh.
+  printf '4 2 0 0\n1 0 0\n2 2 2\n3 2 0\n4 0 2\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/bowtie.poly"
+  run 0 mesh "$work/bowtie.poly" -o "$work/bowtie.1.ele" &&
+    grep -q 'cross; split at new vertex 5 (1, 1)' "$work/err" || fail "mesh: bow tie: $(cat "$work/err")"
+  run 0 check "$work/bowtie.poly" "$work/bowtie.1.ele" || fail "check rejected the bow tie mesh: $(cat "$work/out")"
+  printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/keep.poly"
+  expect_error 2 'keep\.poly: this output would overwrite the input file' mesh "$work/keep.poly" -o "$work/keep.ele"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
-    check_rejects_non_delaunay | cdt | swap_criteria | min_max | swap_bad_input)
+    check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
+    swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
+    tetrahedralize_bad_input | check_rejects_non_delaunay_3d)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

@@ -4,6 +4,7 @@
 // for being the double nearest to the exact value, ties to even; plus exact cases, errors, the
 // MPFR exponent range being restored, and the fast-path certification rate.
 #include "predicates/constructions.hpp"
+#include "predicates/orient2d.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -750,3 +751,34 @@ TEST(Predicates_Constructions, FastPathCertifiesNearlyAllRandomInputs) {
 }
 
 }  // namespace
+
+TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTriangles) {
+    // Small triangles (as a mesh generator makes them) at magnitudes from 1e-3 to 1e6, well
+    // shaped and skinny: the double-double stage certifies nearly all and every result equals
+    // the exact path's; where it cannot certify (skinny, near a midpoint) the later stages do.
+    Inputs in(314159);
+    pr::reset_construction_stats();
+    int calls = 0;
+    for (const double offset : {1e-3, 0.5, 1.0, 3.0, 1e3, 1e6}) {
+        for (const double spread : {1e-9, 1e-4, 1e-1}) {
+            for (int i = 0; i < 4000; ++i) {
+                const auto near = [&] { return offset + in.uniform() * spread; };
+                P2 a = in.point<2>(near), b = in.point<2>(near), c = in.point<2>(near);
+                if (i % 4 == 3) {  // skinny: c close to the segment ab
+                    const double t = in.uniform(0.0, 1.0);
+                    c = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]) + spread * 1e-3};
+                }
+                if (pr::orient2d(a.data(), b.data(), c.data()) == pr::Sign::Zero) continue;
+                ++calls;
+                ASSERT_EQ(pr::circumcenter(a.data(), b.data(), c.data()), pr::circumcenter_exact(a.data(), b.data(), c.data()))
+                    << offset << " " << spread << " " << i;
+            }
+        }
+    }
+    const pr::ConstructionStats& s = pr::construction_stats();
+    std::printf("[ stats    ] mesh-like: calls %llu double-double %llu fast %llu\n",
+                static_cast<unsigned long long>(s.calls), static_cast<unsigned long long>(s.double_double),
+                static_cast<unsigned long long>(s.fast));
+    EXPECT_EQ(s.calls, static_cast<std::uint64_t>(calls));
+    EXPECT_GE(static_cast<double>(s.double_double), 0.9 * calls);
+}

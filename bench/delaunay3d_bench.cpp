@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: MIT
+// 3D Delaunay construction benchmarks: Bowyer-Watson and Green-Sibson (BRIO order) against
+// CGAL's Delaunay_triangulation_3<Epick> built from a range (sequential; CGAL spatially sorts
+// the points itself), same points, same run [Watson81, Joe91; DESIGN.md "Benchmarks"].
+//
+// Names: BM_<algo>/<distribution>/<n>, algo in {bowyer_watson, green_sibson, cgal},
+// distribution in {uniform, gaussian}, n = 10^3, 3·10^3, ..., up to EXACTMESH_BENCH3_MAX_POINTS
+// (default 10^6). Each family is fitted with Complexity(oNLogN). Only the construction is
+// timed: inputs are generated once per (distribution, n) with a pinned seed, CGAL's points are
+// converted once, and the result is destroyed with the timer paused (the same for both).
+// Counters, from the first timed construction of each benchmark: walk_steps/pt,
+// insphere_calls/pt, orient_calls/pt, cavity/pt, flips/pt (ours), tets/pt (both: a cross-check),
+// peak_bytes and peak_bytes/pt (both: peak live heap during the construction, with the result
+// alive at the end; bench/heap_accounting.cpp).
+//
+// The heap is kept warm (malloc never returns memory to the kernel), as in delaunay2d_bench,
+// unless EXACTMESH_BENCH_COLD_HEAP=1. On a shared machine compare the CPU column: it counts only
+// this process's time. The ratio reported in the README comes from
+//   delaunay3d_bench --benchmark_filter='uniform/1000000' --benchmark_repetitions=3
+//                    --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+#include <malloc.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "bench/heap_accounting.hpp"
+#include "generators/inputs_3d.hpp"
+#include "triangulation/delaunay_3d.hpp"
+
+#if defined(EXACTMESH_WITH_CGAL)
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/version.h>
+#endif
+
+#ifndef EXACTMESH_BENCH_BUILD_TYPE
+#define EXACTMESH_BENCH_BUILD_TYPE "unknown"
+#endif
+
+namespace {
+
+using exactmesh::bench::heap_growth_since;
+using exactmesh::bench::start_heap_measurement;
+
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
+using gen::Distribution3;
+
+constexpr std::uint64_t kInputSeed = 20240601;
+constexpr std::uint64_t kOrderSeed = 1;
+
+/// 10^3, 3·10^3, 10^4, ... up to EXACTMESH_BENCH3_MAX_POINTS (default 10^6).
+std::vector<std::int64_t> sizes() {
+    std::int64_t max_points = 1000000;
+    if (const char* text = std::getenv("EXACTMESH_BENCH3_MAX_POINTS")) {
+        max_points = std::clamp<std::int64_t>(std::atoll(text), 1000, 4000000);
+    }
+    std::vector<std::int64_t> out;
+    for (std::int64_t n = 1000; n <= max_points; n *= 10) {
+        out.push_back(n);
+        if (3 * n <= max_points) out.push_back(3 * n);
+    }
+    return out;
+}
+
+bool cold_heap() {
+    const char* text = std::getenv("EXACTMESH_BENCH_COLD_HEAP");
+    return text != nullptr && std::string_view(text) == "1";
+}
+
+struct Input {
+    std::vector<double> xyz;
+#if defined(EXACTMESH_WITH_CGAL)
+    std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> points;
+#endif
+};
+
+/// Cached per (distribution, n); one distribution at a time.
+Input& input_for(Distribution3 distribution, std::uint32_t n) {
+    static std::map<std::pair<Distribution3, std::uint32_t>, std::unique_ptr<Input>> cache;
+    const auto key = std::pair{distribution, n};
+    if (auto found = cache.find(key); found != cache.end()) return *found->second;
+    if (!cache.empty() && cache.begin()->first.first != distribution) cache.clear();
+    auto input = std::make_unique<Input>();
+    input->xyz = gen::generate_points_3d(distribution, n, kInputSeed);
+    return *cache.emplace(key, std::move(input)).first->second;
+}
+
+struct Measurement {
+    bool done = false;
+    double peak_bytes = 0;
+    double tets = 0;
+    bool has_counters = false;
+    tri::Delaunay3Counters counters;
+};
+
+Measurement& measurement_for(const std::string& algorithm, Distribution3 distribution,
+                             std::uint32_t n) {
+    static std::map<std::tuple<std::string, Distribution3, std::uint32_t>, Measurement> table;
+    return table[{algorithm, distribution, n}];
+}
+
+void set_counters(benchmark::State& state, const Measurement& m, std::uint32_t n) {
+    const double points = static_cast<double>(n);
+    auto per_point = [points](std::uint64_t count) { return static_cast<double>(count) / points; };
+    if (m.has_counters) {
+        const tri::Delaunay3Counters& c = m.counters;
+        state.counters["walk_steps/pt"] = per_point(c.walk_steps);
+        state.counters["insphere_calls/pt"] = per_point(c.insphere_calls);
+        state.counters["orient_calls/pt"] = per_point(c.orient_calls);
+        state.counters["cavity/pt"] = per_point(c.cavity_tets);
+        state.counters["flips/pt"] = per_point(c.flips_2_3 + c.flips_3_2 + c.flips_4_4);
+    }
+    state.counters["tets/pt"] = m.tets / points;
+    state.counters["peak_bytes"] = m.peak_bytes;
+    state.counters["peak_bytes/pt"] = m.peak_bytes / points;
+    state.SetComplexityN(static_cast<std::int64_t>(n));
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+}
+
+void bm_exactmesh(benchmark::State& state, const std::string& algorithm,
+                  Distribution3 distribution) {
+    const auto n = static_cast<std::uint32_t>(state.range(0));
+    const tri::Delaunay3Function construct = tri::delaunay_3d_algorithm(algorithm);
+    const Input& input = input_for(distribution, n);
+    const tri::Delaunay3Options options{tri::InsertionOrder::Brio, kOrderSeed};
+    Measurement& m = measurement_for(algorithm, distribution, n);
+    for (auto _ : state) {
+        const bool measure = !m.done;
+        const std::size_t heap_before = measure ? start_heap_measurement() : 0;
+        {
+            tri::Delaunay3Result result = construct(input.xyz, options);
+            benchmark::DoNotOptimize(result.mesh.tets.data());
+            benchmark::ClobberMemory();
+            state.PauseTiming();  // the destructor runs paused
+            if (measure) {
+                m.peak_bytes = heap_growth_since(heap_before);
+                m.counters = result.counters;
+                m.has_counters = true;
+                m.tets = static_cast<double>(result.mesh.tet_count());
+                m.done = true;
+            }
+        }
+        if (cold_heap()) malloc_trim(0);
+        state.ResumeTiming();
+    }
+    set_counters(state, m, n);
+}
+
+#if defined(EXACTMESH_WITH_CGAL)
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalDelaunay = CGAL::Delaunay_triangulation_3<Epick>;
+
+void bm_cgal(benchmark::State& state, Distribution3 distribution) {
+    const auto n = static_cast<std::uint32_t>(state.range(0));
+    Input& input = input_for(distribution, n);
+    if (input.points.empty()) {
+        for (std::uint32_t i = 0; i < n; ++i) {
+            input.points.emplace_back(input.xyz[3 * std::size_t{i}],
+                                      input.xyz[3 * std::size_t{i} + 1],
+                                      input.xyz[3 * std::size_t{i} + 2]);
+        }
+    }
+    Measurement& m = measurement_for("cgal", distribution, n);
+    for (auto _ : state) {
+        const bool measure = !m.done;
+        const std::size_t heap_before = measure ? start_heap_measurement() : 0;
+        {
+            CgalDelaunay dt(input.points.begin(), input.points.end());
+            benchmark::DoNotOptimize(dt.number_of_cells());
+            benchmark::ClobberMemory();
+            state.PauseTiming();
+            if (measure) {
+                m.peak_bytes = heap_growth_since(heap_before);
+                m.tets = static_cast<double>(dt.number_of_finite_cells());
+                m.done = true;
+            }
+        }
+        if (cold_heap()) malloc_trim(0);
+        state.ResumeTiming();
+    }
+    set_counters(state, m, n);
+}
+#endif
+
+void register_all() {
+    const std::vector<std::int64_t> ns = sizes();
+    auto apply = [&ns](benchmark::internal::Benchmark* b) {
+        for (const std::int64_t n : ns) b->Arg(n);
+        b->Complexity(benchmark::oNLogN)->Unit(benchmark::kMillisecond);
+    };
+    for (const Distribution3 distribution : {Distribution3::Uniform, Distribution3::Gaussian}) {
+        const std::string points(gen::distribution_name(distribution));
+        for (const char* algorithm : {"bowyer-watson", "green-sibson"}) {
+            std::string label = algorithm;
+            std::replace(label.begin(), label.end(), '-', '_');
+            apply(benchmark::RegisterBenchmark(("BM_" + label + "/" + points).c_str(),
+                                               &bm_exactmesh, std::string(algorithm),
+                                               distribution));
+        }
+#if defined(EXACTMESH_WITH_CGAL)
+        apply(benchmark::RegisterBenchmark(("BM_cgal/" + points).c_str(), &bm_cgal, distribution));
+#endif
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<char*> args(argv, argv + argc);
+    std::string min_time = "--benchmark_min_time=0.1";
+    args.insert(args.begin() + 1, min_time.data());
+    int args_count = static_cast<int>(args.size());
+    if (!cold_heap()) {
+        mallopt(M_MMAP_MAX, 0);
+        mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
+    }
+    register_all();
+    benchmark::AddCustomContext("exactmesh_build_type", EXACTMESH_BENCH_BUILD_TYPE);
+    benchmark::AddCustomContext("exactmesh_heap", cold_heap() ? "cold" : "warm");
+    benchmark::AddCustomContext("exactmesh_input_seed", std::to_string(kInputSeed));
+    benchmark::AddCustomContext("exactmesh_peak_memory",
+                                "peak live heap bytes (operator new, malloc_usable_size)");
+#if defined(EXACTMESH_WITH_CGAL)
+    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
+#endif
+    benchmark::Initialize(&args_count, args.data());
+    if (benchmark::ReportUnrecognizedArguments(args_count, args.data())) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+// `exactmesh mesh`: a quality mesh of a domain (a .poly, or a built-in sample domain) by one of
+// the 2D mesh generators of issue 6, written as .ele (with .neigh, .node, .poly), .msh, .vtu or
+// .svg; --quality prints the shared quality report, --stats the generator's counters.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "generators/delaunay_refinement_2d.hpp"
+#include "generators/quality_2d.hpp"
+#include "generators/sample_domains.hpp"
+#include "generators/size_function.hpp"
+#include "io/triangle_format.hpp"
+#include "predicates/errors.hpp"
+#include "predicates/stats.hpp"
+
+namespace exactmesh::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
+
+/// The generators of issue 6; only delaunay-refinement exists so far.
+constexpr const char* kGenerators[] = {"delaunay-refinement", "quadtree", "advancing-front",
+                                       "advancing-front-delaunay", "frontal"};
+
+struct MeshArguments {
+    std::string input;
+    std::string domain;
+    std::string output;
+    std::string generator = "delaunay-refinement";
+    double min_angle = gen::kGuaranteedMinAngle;
+    std::string size;
+    std::uint64_t max_steiner = 0;
+    bool quality = false;
+    bool stats = false;
+};
+
+/// --size: a number (uniform), else a size file (generators/size_function.hpp).
+gen::SizeFunction read_size(const std::string& text) {
+    double uniform = 0;
+    if (gen::parse_uniform_size(text, uniform)) return gen::SizeFunction::uniform(uniform);
+    std::ifstream file(text);
+    if (!file) {
+        throw InputError("--size '" + text + "' is neither a number > 0 nor a readable size file");
+    }
+    std::ostringstream content;
+    content << file.rdbuf();
+    return gen::parse_size_sources(content.str(), text);
+}
+
+void print_stats(const gen::RefinementCounters2& c, const tri::Cdt2Counters& cdt,
+                 const predicates::PredicateStats& stats, double seconds) {
+    std::cout << "points: " << cdt.points << '\n'
+              << "duplicates: " << cdt.duplicates << '\n'
+              << "segments: " << cdt.segments << '\n'
+              << "intersections: " << cdt.intersections << '\n'
+              << "steiner_points: " << c.steiner_points() << '\n'
+              << "circumcenters: " << c.circumcenters << '\n'
+              << "segment_splits: " << c.segment_splits << '\n'
+              << "shell_splits: " << c.shell_splits << '\n'
+              << "segment_bends: " << c.segment_bends << '\n'
+              << "rejected_circumcenters: " << c.rejected_circumcenters << '\n'
+              << "bad_triangles_queued: " << c.bad_triangles << '\n'
+              << "small_angle_skips: " << c.small_angle_skips << '\n'
+              << "unsplittable: " << c.unsplittable << '\n'
+              << "cavity_triangles: " << c.cavity_triangles << '\n'
+              << "delaunay_flips: " << c.flips << '\n'
+              << "circumcenter_exact_path: " << c.circumcenter_exact << '\n'
+              << "orient_calls: " << c.orient_calls << '\n'
+              << "incircle_calls: " << c.incircle_calls << '\n'
+              << "encroachment_tests: " << c.encroachment_tests << '\n';
+    print_predicate_stats(stats);
+    std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
+}
+
+void run_mesh(const MeshArguments& arguments) {
+    bool known = false;
+    for (const char* name : kGenerators) known |= arguments.generator == name;
+    if (!known) {
+        throw InputError("unknown generator '" + arguments.generator +
+                         "' (known: delaunay-refinement; not implemented yet: quadtree, advancing-front, "
+                         "advancing-front-delaunay, frontal)");
+    }
+    if (arguments.generator != "delaunay-refinement") {
+        throw InputError("not implemented yet: " + arguments.generator + " (issue 6; use --generator delaunay-refinement)");
+    }
+    if (arguments.input.empty() == arguments.domain.empty()) {
+        throw InputError("give either an input .poly file or --domain NAME (not both)");
+    }
+    const fs::path output = arguments.output;
+    const OutputFormat format = output_format(output);
+    const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
+
+    gen::SizeFunction size = arguments.size.empty() ? gen::SizeFunction() : read_size(arguments.size);
+    io::PolyFile poly;
+    std::string title;
+    if (!arguments.domain.empty()) {
+        const gen::SampleDomain domain = gen::sample_domain_from_name(arguments.domain);
+        if (!size.bounded()) size = gen::sample_domain_size(domain);
+        gen::DomainPslg pslg = gen::sample_domain(domain, size);
+        poly.vertices.xy = std::move(pslg.xy);
+        poly.segments = std::move(pslg.segments);
+        poly.holes = std::move(pslg.holes);
+        title = arguments.domain;
+    } else {
+        refuse_to_overwrite_input(arguments.input, files);
+        poly = io::read_poly(arguments.input);
+        title = fs::path(arguments.input).filename().string();
+    }
+    const std::uint32_t base = poly.vertices.first_index;
+
+    gen::RefinementOptions2 options;
+    options.min_angle = arguments.min_angle;
+    options.size = size;
+    options.max_steiner_points = arguments.max_steiner;
+    options.cdt.first_index = base;
+    const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
+
+    predicates::reset_thread_stats();
+    const auto start = std::chrono::steady_clock::now();
+    const gen::RefinementResult2 result = gen::delaunay_refinement_2d(pslg, options);
+    const auto stop = std::chrono::steady_clock::now();
+    const predicates::PredicateStats stats = predicates::thread_stats();
+    const double seconds = std::chrono::duration<double>(stop - start).count();
+
+    print_warnings(result.mesh.warnings);
+    if (result.counters.unsplittable > 0) {
+        std::cerr << "exactmesh: warning: " << result.counters.unsplittable
+                  << " bad triangles are too small to split in double precision; left as they are\n";
+    }
+    char label[64];
+    std::snprintf(label, sizeof label, " (delaunay-refinement, %g degrees)", arguments.min_angle);
+    write_constrained_result(result.mesh, files, format, base, title + label);
+    const tri::Triangulation2& mesh = result.mesh.mesh;
+    std::cout << "vertices: " << mesh.vertex_count() << '\n' << "triangles: " << mesh.triangle_count() << '\n';
+    if (arguments.quality) {
+        gen::QualityReport2 report = gen::quality_report_2d(mesh.xy, mesh.triangles, size);
+        report.seconds = seconds;
+        std::cout << gen::quality_report_text(report);
+    }
+    if (arguments.stats) print_stats(result.counters, result.mesh.counters, stats, seconds);
+}
+
+}  // namespace
+
+void add_mesh_command(CLI::App& app) {
+    auto arguments = std::make_shared<MeshArguments>();
+    CLI::App* command = app.add_subcommand(
+        "mesh", "Quality mesh of a domain: a Triangle .poly file, or a built-in sample domain (--domain)");
+    command->add_option("input", arguments->input, "A Triangle .poly file (segments enclose the domain; holes)")
+        ->type_name("IN.poly");
+    command->add_option("--domain", arguments->domain,
+                        "A built-in domain instead of IN.poly: square-with-holes, naca0012, key (its curves "
+                        "discretized by --size, else by the domain's own size function)")
+        ->type_name("NAME");
+    command
+        ->add_option("-o,--output", arguments->output,
+                     "Output; the extension picks the format: .ele (with .neigh, .node and .poly "
+                     "beside it), .msh (Gmsh 4.1), .vtu (VTK), .svg (picture)")
+        ->required()
+        ->type_name("OUT");
+    command->add_option("--generator", arguments->generator,
+                        "delaunay-refinement (Ruppert/Shewchuk, circumcenter insertion). Not implemented yet, "
+                        "each an error: quadtree, advancing-front, advancing-front-delaunay, frontal")
+        ->capture_default_str();
+    command->add_option("--min-angle", arguments->min_angle,
+                        "Every angle at least this many degrees, away from small input angles; proven to "
+                        "terminate up to 20.7 (input angles >= 60), accepted up to 34; 0: no angle criterion")
+        ->capture_default_str();
+    command->add_option("--size", arguments->size,
+                        "Target edge length: a number (uniform), or a size file of lines 'uniform H', "
+                        "'point X Y S RBAR GAMMA', 'line X0 Y0 X1 Y1 S RBAR GAMMA' (source formula "
+                        "s = min(H, sum s_k [1 + (d_k / rbar_k)^gamma_k]))")
+        ->type_name("NUM|FILE");
+    command->add_option("--max-steiner", arguments->max_steiner,
+                        "Stop with an error after this many Steiner points (0: automatic)")
+        ->capture_default_str();
+    command->add_flag("--quality", arguments->quality,
+                      "Print the quality report: angles, angle histogram, radius-edge ratio, size conformity");
+    command->add_flag("--stats", arguments->stats,
+                      "Print work counters, predicate stages and construct_seconds (the generator alone, "
+                      "without file I/O)");
+    command->callback([arguments] { run_mesh(*arguments); });
+}
+
+}  // namespace exactmesh::cli

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+// `exactmesh swap3d`: edge-face swapping of a given tetrahedralization (TetGen .node + .ele)
+// under one criterion (triangulation/edge_face_swap_3d), with counters and a quality report
+// (triangulation/quality_3d).
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "io/tetgen_format.hpp"
+#include "predicates/errors.hpp"
+#include "triangulation/edge_face_swap_3d.hpp"
+#include "triangulation/quality_3d.hpp"
+
+namespace exactmesh::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace tri = exactmesh::triangulation;
+
+struct Swap3dArguments {
+    std::string node_path;
+    std::string ele_path;
+    std::string output;
+    std::string criterion = "delaunay";
+    bool quality = false;
+    bool stats = false;
+};
+
+void print_quality(const tri::Tetrahedralization3& mesh) {
+    const tri::QualityStats3 q = tri::quality_stats_3d(mesh);
+    std::cout << std::setprecision(10) << "min_dihedral_degrees: " << q.min_dihedral_degrees << '\n'
+              << "max_dihedral_degrees: " << q.max_dihedral_degrees << '\n'
+              << "min_volume_edge: " << q.min_volume_edge << '\n'
+              << "mean_volume_edge: " << q.mean_volume_edge << '\n'
+              << "max_radius_edge: " << q.max_radius_edge << '\n'
+              << "slivers: " << q.slivers << '\n';
+    for (std::size_t b = 0; b < q.dihedral_histogram.size(); ++b) {
+        const auto lo = static_cast<int>(static_cast<double>(b) * q.histogram_bin_degrees);
+        const auto hi = static_cast<int>(static_cast<double>(b + 1) * q.histogram_bin_degrees);
+        std::cout << "dihedral_degrees[" << lo << "," << hi << (b + 1 == q.dihedral_histogram.size() ? "]" : ")")
+                  << ": " << q.dihedral_histogram[b] << '\n';
+    }
+}
+
+void run_swap3d(const Swap3dArguments& arguments) {
+    const fs::path output = arguments.output;
+    if (output.extension() != ".ele") throw InputError(output.string() + ": the output must be a .ele file");
+    const tri::SwapCriterion3 criterion = tri::swap_criterion_3d_from_name(arguments.criterion);
+    const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.node_path);
+    const io::TetgenEleFile ele = io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
+    tri::Tetrahedralization3 mesh;
+    mesh.xyz = nodes.xyz;
+    mesh.tets = ele.tets;
+    try {
+        tri::link_neighbors_3d(mesh, nodes.first_index, ele.first_index);
+    } catch (const InputError& error) {
+        throw InputError(arguments.ele_path + ": " + error.what());
+    }
+    const auto start = std::chrono::steady_clock::now();
+    tri::FlipMesh3 work = tri::make_flip_mesh_3d(mesh);
+    const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(work, criterion);
+    mesh = tri::to_tetrahedralization_3d(work);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    io::write_tetgen_ele(output, mesh.tets, ele.first_index);
+    std::cout << "output: " << output.string() << '\n' << "tetrahedra: " << mesh.tet_count() << '\n';
+    if (arguments.stats) {
+        std::cout << "criterion: " << tri::swap_criterion_3d_name(criterion) << '\n'
+                  << "faces_examined: " << counters.faces_examined << '\n'
+                  << "edges_examined: " << counters.edges_examined << '\n'
+                  << "flips_23: " << counters.flips_23 << '\n'
+                  << "flips_32: " << counters.flips_32 << '\n'
+                  << "flips_44: " << counters.flips_44 << '\n'
+                  << "flips_22: " << counters.flips_22 << '\n'
+                  << "not_flippable: " << counters.not_flippable << '\n';
+        if (criterion == tri::SwapCriterion3::Delaunay) std::cout << "stalled_faces: " << counters.stalled_faces << '\n';
+        std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n' << std::defaultfloat;
+    }
+    if (arguments.quality) print_quality(mesh);
+}
+
+}  // namespace
+
+void add_swap3d_command(CLI::App& app) {
+    auto arguments = std::make_shared<Swap3dArguments>();
+    CLI::App* command = app.add_subcommand(
+        "swap3d", "Edge-face swapping of a tetrahedralization (IN.node + IN.ele, TetGen formats) under one criterion");
+    command->add_option("node", arguments->node_path, "Points: a TetGen .node file")->required()->type_name("IN.node");
+    command->add_option("ele", arguments->ele_path, "Tetrahedra: a TetGen .ele file (TetGen's orientation)")
+        ->required()
+        ->type_name("IN.ele");
+    command->add_option("-o,--output", arguments->output, "Output tetrahedra (.ele)")->required()->type_name("OUT.ele");
+    command
+        ->add_option("--criterion", arguments->criterion,
+                     "delaunay (SoS insphere), max-min-dihedral, min-max-dihedral, volume-edge (max-min of "
+                     "6 sqrt(2) V / l_rms^3)")
+        ->check(CLI::IsMember({"delaunay", "max-min-dihedral", "min-max-dihedral", "volume-edge"}))
+        ->capture_default_str();
+    command->add_flag("--quality", arguments->quality,
+                      "Print the output's quality: dihedral extremes and 10-degree histogram, volume-edge, "
+                      "radius-edge, slivers (min dihedral < 5 degrees with radius-edge <= 2)");
+    command->add_flag("--stats", arguments->stats, "Print counters and construct_seconds (the swapping alone, without I/O)");
+    command->callback([arguments] { run_swap3d(*arguments); });
+}
+
+}  // namespace exactmesh::cli

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+// `exactmesh tetrahedralize`: TetGen .node in, Delaunay tetrahedralization out (.ele with .face
+// and .neigh beside it, .msh or .vtu by the output's extension), optionally with work counters
+// and the construction time.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "cli/output.hpp"
+#include "io/gmsh_format.hpp"
+#include "io/tetgen_format.hpp"
+#include "io/vtk_format.hpp"
+#include "predicates/errors.hpp"
+#include "predicates/stats.hpp"
+#include "triangulation/delaunay_3d.hpp"
+
+namespace exactmesh::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace tri = exactmesh::triangulation;
+
+struct TetrahedralizeArguments {
+    std::string input;
+    std::string output;
+    std::string algorithm = "bowyer-watson";
+    std::string order = "brio";
+    std::uint64_t seed = 1;
+    bool stats = false;
+};
+
+void print_stats(const tri::Delaunay3Counters& counters, const predicates::PredicateStats& stats,
+                 double construct_seconds) {
+    std::cout << "points: " << counters.points << '\n'
+              << "duplicates: " << counters.duplicates << '\n'
+              << "orient_calls: " << counters.orient_calls << '\n'
+              << "insphere_calls: " << counters.insphere_calls << '\n'
+              << "walk_steps: " << counters.walk_steps << '\n'
+              << "cavity_tets: " << counters.cavity_tets << '\n'
+              << "outside_hull: " << counters.outside_hull << '\n'
+              << "splits_1_4: " << counters.splits_1_4 << '\n'
+              << "splits_2_6: " << counters.splits_2_6 << '\n'
+              << "splits_edge: " << counters.splits_edge << '\n'
+              << "flips_2_3: " << counters.flips_2_3 << '\n'
+              << "flips_3_2: " << counters.flips_3_2 << '\n'
+              << "flips_4_4: " << counters.flips_4_4 << '\n'
+              << "unflippable: " << counters.unflippable << '\n';
+    print_predicate_stats(stats, 3);
+    std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << construct_seconds
+              << '\n';
+}
+
+void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
+    const fs::path output = arguments.output;
+    const OutputFormat format = output_format(output);  // before any work: fail fast
+    if (format == OutputFormat::Svg) {
+        throw InputError(output.string() +
+                         ": .svg pictures are 2D only; write tetrahedra as .ele, .msh or .vtu");
+    }
+    refuse_to_overwrite_input(arguments.input, output_files(output, format, {".face", ".neigh"}));
+    const tri::Delaunay3Function construct = tri::delaunay_3d_algorithm(arguments.algorithm);
+    const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
+
+    const tri::Delaunay3Options options{insertion_order(arguments.order), arguments.seed};
+    predicates::reset_thread_stats();
+    const auto start = std::chrono::steady_clock::now();
+    const tri::Delaunay3Result result = construct(nodes.xyz, options);
+    const auto stop = std::chrono::steady_clock::now();
+    const predicates::PredicateStats stats = predicates::thread_stats();
+    const double construct_seconds = std::chrono::duration<double>(stop - start).count();
+    if (result.coplanar) {
+        throw tri::CoplanarPoints(
+            arguments.input + ": all " + std::to_string(nodes.vertex_count()) +
+            " points lie in one plane (or fewer than 4 are distinct): no tetrahedralization");
+    }
+
+    const tri::Tetrahedralization3& mesh = result.mesh;
+    switch (format) {
+        case OutputFormat::Ele: {
+            fs::path face = output, neigh = output;
+            face.replace_extension(".face");
+            neigh.replace_extension(".neigh");
+            io::write_tetgen_ele(output, mesh.tets, nodes.first_index);
+            io::write_tetgen_boundary_faces(face, mesh.tets, mesh.neighbors, nodes.first_index);
+            io::write_tetgen_neigh(neigh, mesh.neighbors, nodes.first_index);
+            std::cout << "output: " << output.string() << '\n'
+                      << "output: " << face.string() << '\n'
+                      << "output: " << neigh.string() << '\n';
+            break;
+        }
+        case OutputFormat::Msh:
+            io::write_msh_3d(output, nodes.xyz, mesh.tets);
+            std::cout << "output: " << output.string() << '\n';
+            break;
+        case OutputFormat::Vtu:
+            io::write_vtu_3d(output, nodes.xyz, mesh.tets, nodes.first_index);
+            std::cout << "output: " << output.string() << '\n';
+            break;
+        case OutputFormat::Svg:
+            break;  // refused above
+    }
+    std::cout << "tetrahedra: " << mesh.tet_count() << '\n';
+    if (arguments.stats) print_stats(result.counters, stats, construct_seconds);
+}
+
+}  // namespace
+
+void add_tetrahedralize_command(CLI::App& app) {
+    auto arguments = std::make_shared<TetrahedralizeArguments>();
+    CLI::App* command = app.add_subcommand(
+        "tetrahedralize", "Delaunay tetrahedralization of the points of a TetGen .node file");
+    command->add_option("input", arguments->input, "Points: a TetGen .node file (dimension 3)")
+        ->required()
+        ->type_name("IN.node");
+    command
+        ->add_option("-o,--output", arguments->output,
+                     "Output; the extension picks the format: .ele (TetGen; .face and .neigh "
+                     "beside it), .msh (Gmsh 4.1), .vtu (VTK)")
+        ->required()
+        ->type_name("OUT");
+    command->add_option("--algorithm", arguments->algorithm, "Construction algorithm")
+        ->check(CLI::IsMember({"bowyer-watson", "green-sibson"}))
+        ->capture_default_str();
+    command->add_option("--order", arguments->order, "Insertion order")
+        ->check(CLI::IsMember({"given", "random", "brio"}))
+        ->capture_default_str();
+    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
+        ->capture_default_str();
+    command->add_flag("--stats", arguments->stats,
+                      "Print work counters, predicate stages and construct_seconds (the "
+                      "construction alone, without file I/O)");
+    command->callback([arguments] { run_tetrahedralize(*arguments); });
+}
+
+}  // namespace exactmesh::cli

@@ -1,0 +1,510 @@
+// SPDX-License-Identifier: MIT
+// Delaunay refinement (see delaunay_refinement_2d.hpp).
+//
+// State beside the ConstrainedTriangulation2: a bucketed queue of bad triangles (key, slot,
+// version), where a slot's version grows whenever an edit writes the slot, so stale entries are
+// recognised in O(1); a stack of pieces to split (by their two vertices, so a piece already
+// split is simply not found); per vertex, for Steiner points on segments, the segment and, for
+// shell splits, the apex and the shell's exponent (the rule of Miller, Pav and Walkington).
+// Loop: split every queued piece (each split queues the pieces its new triangles encroach and
+// its bad triangles), then take the worst bad triangle: insert its circumcenter, or, when the
+// circumcenter encroaches pieces, queue them and the triangle again.
+#include "generators/delaunay_refinement_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "predicates/constructions.hpp"
+#include "predicates/errors.hpp"
+#include "triangulation/angles_2d.hpp"
+#include "triangulation/constrained_triangulation_2d.hpp"
+
+namespace exactmesh::generators {
+
+namespace {
+
+namespace tri = exactmesh::triangulation;
+using predicates::Sign;
+using tri::EdgeIdx;
+using tri::kNone;
+using tri::TriIdx;
+using tri::VertIdx;
+
+struct BadTriangle {
+    float key;  // larger is worse
+    TriIdx t;
+    std::uint32_t version : 31;
+    std::uint32_t too_big : 1;  // an edge longer than the size (else only skinny)
+};
+
+/// Bad triangles by priority, worst first: too big ones before skinny ones (as CGAL's mesher),
+/// each by its key, in buckets of a sixteenth of a binade (keys within 4.4% of each other share
+/// a bucket), last in first out within a bucket (the triangles an insertion just made are
+/// neighbours: their memory is warm). O(1) per push and pop, against O(log n) cache-missing
+/// steps of a binary heap over all bad triangles.
+class BadTriangleQueue {
+public:
+    void push(const BadTriangle& b) {
+        const std::size_t k = bucket(b);
+        buckets_[k].push_back(b);
+        top_ = std::max(top_, k);
+        ++size_;
+    }
+    bool empty() const { return size_ == 0; }
+    BadTriangle pop() {
+        while (buckets_[top_].empty()) --top_;
+        const BadTriangle b = buckets_[top_].back();
+        buckets_[top_].pop_back();
+        --size_;
+        return b;
+    }
+
+private:
+    static constexpr std::size_t kPerLevel = 1024;  // keys 1 .. 2^64 in steps of 2^(1/16)
+    std::vector<BadTriangle> buckets_[2 * kPerLevel];
+    std::size_t top_ = 0;
+    std::size_t size_ = 0;
+    static std::size_t bucket(const BadTriangle& b) {
+        const double level = std::log2(std::max(1.0, static_cast<double>(b.key))) * 16;
+        return (b.too_big ? kPerLevel : 0) + std::min<std::size_t>(kPerLevel - 1, static_cast<std::size_t>(level));
+    }
+};
+
+struct PieceToSplit {
+    VertIdx a, b;
+    bool forced;  // a rejected circumcenter encroaches it: split without testing the apexes
+};
+
+/// Steiner points on segments: which segment, and for shell splits the apex and the shell.
+struct SegmentVertex {
+    std::uint32_t segment = kNone;
+    VertIdx apex = kNone;
+    int shell = 0;
+};
+
+class Refiner {
+public:
+    Refiner(const tri::Pslg& pslg, const RefinementOptions2& options)
+        : options_(options), cdt_(pslg, options.cdt), mesh_(cdt_.mesh()) {}
+
+    RefinementResult2 run();
+
+private:
+    const RefinementOptions2& options_;
+    tri::ConstrainedTriangulation2 cdt_;
+    const tri::TriMesh2& mesh_;  // the triangulation's, valid across edits
+    RefinementCounters2 counters_;
+    BadTriangleQueue bad_;
+    std::vector<PieceToSplit> pieces_;
+    std::vector<std::uint32_t> version_;      // per triangle slot
+    std::vector<std::uint32_t> seen_;         // per triangle slot: batch stamp of process_touched
+    std::uint32_t batch_ = 0;
+    std::vector<SegmentVertex> on_segment_;   // per vertex
+    std::vector<std::uint32_t> degree_;       // per initial vertex: constrained edges at it
+    VertIdx initial_vertices_ = 0;
+    double sine2_bound_ = 0;                  // sin^2(min_angle); 0: no angle criterion
+    std::uint64_t budget_ = 0;
+
+    void check_domain_and_budget();
+    void initial_queue();
+    /// Triangles written by the last edit: new versions; bad ones and encroached pieces queued.
+    void process_touched();
+    void evaluate(TriIdx t);
+    bool encroached_from(EdgeIdx e);  // the apex of e's triangle encroaches e
+    struct SplitPoint {
+        double x = 0, y = 0;
+        VertIdx apex = kNone;  // a concentric-shell split about this vertex
+        int shell = 0;         // at distance 2^shell
+    };
+    /// Where piece e splits: its midpoint, or a concentric shell about its one corner end.
+    SplitPoint split_point(EdgeIdx e) const;
+    void split_piece(const PieceToSplit& piece);
+    bool leave_at_small_angle(EdgeIdx e, double shortest_edge) const;
+    std::vector<double> small_apex_angle_;    // per initial vertex: the smallest angle between its
+                                              // pieces (radians) when below 60 degrees, else 0
+    bool small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const;
+    void find_small_input_angles();
+    void spend_budget();
+    const double* point(VertIdx v) const { return mesh_.point(v); }
+    double squared_distance(VertIdx u, VertIdx v) const {
+        const double dx = point(u)[0] - point(v)[0], dy = point(u)[1] - point(v)[1];
+        return dx * dx + dy * dy;
+    }
+};
+
+void Refiner::check_domain_and_budget() {
+    std::uint64_t inside = 0;
+    double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
+    for (TriIdx t = 0; t < mesh_.triangle_slots(); ++t) {
+        if (!cdt_.in_domain(t)) continue;
+        ++inside;
+        for (unsigned k = 0; k < 3; ++k) {
+            const double* p = point(mesh_.tv[3 * t + k]);
+            lo_x = std::min(lo_x, p[0]);
+            hi_x = std::max(hi_x, p[0]);
+            lo_y = std::min(lo_y, p[1]);
+            hi_y = std::max(hi_y, p[1]);
+        }
+    }
+    if (inside == 0) {
+        throw InputError("delaunay refinement: the segments enclose no region (every triangle is outside the "
+                         "domain: is the boundary closed, and is a hole point inside the outer boundary?)");
+    }
+    // Automatic: at least 10^6, 64 per input feature, and 16 times the element count the size
+    // function asks for over the domain's bounding box (a 64 x 64 sample of 2.31 / s^2, the
+    // equilateral triangles of edge s per unit area).
+    double estimate = 0;
+    if (options_.size.bounded()) {
+        constexpr int kSamples = 64;
+        const double dx = (hi_x - lo_x) / kSamples, dy = (hi_y - lo_y) / kSamples;
+        for (int i = 0; i < kSamples; ++i) {
+            for (int j = 0; j < kSamples; ++j) {
+                const double s = options_.size(lo_x + (i + 0.5) * dx, lo_y + (j + 0.5) * dy);
+                if (s > 0) estimate += 2.31 * dx * dy / (s * s);
+            }
+        }
+    }
+    // Room for the expected mesh, capped: a hint. Refinement makes about twice the ideal count
+    // of equilateral triangles, with half as many vertices as triangles.
+    const double expected_vertices = std::min(1.1 * estimate, 2e8) + static_cast<double>(mesh_.vertex_count());
+    cdt_.reserve(static_cast<std::uint32_t>(expected_vertices));
+    version_.reserve(static_cast<std::size_t>(2 * expected_vertices));
+    seen_.reserve(static_cast<std::size_t>(2 * expected_vertices));
+    on_segment_.reserve(static_cast<std::size_t>(expected_vertices));
+    const double features = static_cast<double>(initial_vertices_) + static_cast<double>(mesh_.triangle_slots());
+    budget_ = options_.max_steiner_points != 0
+                  ? options_.max_steiner_points
+                  : static_cast<std::uint64_t>(std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
+}
+
+void Refiner::find_small_input_angles() {
+    // Sectors of the domain about each vertex between two consecutive pieces: from each piece
+    // v -> w with a domain triangle on its left, turn counter-clockwise about v through domain
+    // triangles, summing their angles at v, up to the next piece. A sector below 60 degrees is a
+    // small input angle (measured inside the domain: a sharp notch of a hole is none).
+    small_apex_angle_.assign(initial_vertices_, 0.0);
+    auto corner_angle = [&](VertIdx o, VertIdx p, VertIdx q) {
+        const double ux = point(p)[0] - point(o)[0], uy = point(p)[1] - point(o)[1];
+        const double wx = point(q)[0] - point(o)[0], wy = point(q)[1] - point(o)[1];
+        return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+    };
+    for (EdgeIdx e = 0; e < mesh_.tv.size(); ++e) {
+        if (cdt_.segment_of(e) == kNone || !cdt_.in_domain(tri::triangle_of(e))) continue;
+        const VertIdx v = mesh_.origin(e);
+        double sector = 0;
+        EdgeIdx g = e;  // v -> w in a domain triangle
+        for (std::size_t turns = 0; turns < mesh_.tv.size(); ++turns) {
+            const EdgeIdx back = tri::prev_edge(g);  // x -> v
+            sector += corner_angle(v, mesh_.destination(g), mesh_.origin(back));
+            if (cdt_.segment_of(back) != kNone || sector >= 3.14159265358979323846 / 3) break;
+            g = mesh_.twin[back];  // v -> x in the next triangle counter-clockwise
+        }
+        if (sector < 3.14159265358979323846 / 3) {
+            double& angle = small_apex_angle_[v];
+            angle = angle == 0 ? std::max(sector, 1e-300) : std::min(angle, sector);
+        }
+    }
+}
+
+bool Refiner::small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const {
+    // Both ends of the shortest edge u - v on the same concentric shell about the same apex,
+    // on different segments, and the third vertex w that apex: the triangle's smallest angle is
+    // the input angle itself. A skinny triangle spanning the angle further out (w on a shell
+    // farther away) is split: the midpoints between shells make the angle's wedge into
+    // triangles no worse than the input angle, and never approach the apex (its own pieces are
+    // split on shells only, and rejected circumcenters do not split them: leave_at_small_angle).
+    const SegmentVertex* su = u < on_segment_.size() ? &on_segment_[u] : nullptr;
+    const SegmentVertex* sv = v < on_segment_.size() ? &on_segment_[v] : nullptr;
+    if (su == nullptr || sv == nullptr || su->apex == kNone) return false;
+    return su->apex == sv->apex && su->shell == sv->shell && su->segment != sv->segment && w == su->apex;
+}
+
+void Refiner::evaluate(TriIdx t) {
+    const VertIdx v[3] = {mesh_.tv[3 * t], mesh_.tv[3 * t + 1], mesh_.tv[3 * t + 2]};
+    const double* p[3] = {point(v[0]), point(v[1]), point(v[2])};
+    double length2[3];  // edge k: v[k] - v[k+1]
+    for (int k = 0; k < 3; ++k) {
+        const double dx = p[(k + 1) % 3][0] - p[k][0], dy = p[(k + 1) % 3][1] - p[k][1];
+        length2[k] = dx * dx + dy * dy;
+    }
+    double size_key = 0;
+    if (options_.size.bounded()) {
+        for (int k = 0; k < 3; ++k) {
+            const double mx = 0.5 * (p[k][0] + p[(k + 1) % 3][0]), my = 0.5 * (p[k][1] + p[(k + 1) % 3][1]);
+            const double s = options_.size(mx, my);
+            if (!(s > 0)) {
+                char where[96];
+                std::snprintf(where, sizeof where, "(%.17g, %.17g)", mx, my);
+                throw InputError("size function: not a number > 0 at " + std::string(where) + " (" +
+                                 options_.size.describe() + ")");
+            }
+            size_key = std::max(size_key, length2[k] / (s * s));
+        }
+    }
+    double key = size_key;
+    if (sine2_bound_ > 0) {
+        // sin^2 of the smallest angle: (2 area)^2 over the product of the two longer edges'
+        // squared lengths (the smallest angle lies between them).
+        int shortest = 0;
+        for (int k = 1; k < 3; ++k) {
+            if (length2[k] < length2[shortest]) shortest = k;
+        }
+        const double cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+        const double product = length2[(shortest + 1) % 3] * length2[(shortest + 2) % 3];
+        const double sine2 = cross * cross / product;
+        if (sine2 < sine2_bound_) {
+            if (small_angle_rule(v[shortest], v[(shortest + 1) % 3], v[(shortest + 2) % 3])) {
+                ++counters_.small_angle_skips;
+            } else {
+                key = std::max(key, sine2 > 0 ? sine2_bound_ / sine2 : INFINITY);
+                if (key <= 1) key = 1 + 1e-9;  // bad, even if only just
+            }
+        }
+    }
+    if (key > 1) {
+        bad_.push({static_cast<float>(std::min(key, 1e30)), t, version_[t] & 0x7FFFFFFFu, size_key > 1 ? 1u : 0u});
+        ++counters_.bad_triangles;
+    }
+}
+
+bool Refiner::encroached_from(EdgeIdx e) {
+    // e lies in a domain triangle; its apex encroaches e when it lies in the closed diametral
+    // circle of e (a right or obtuse angle).
+    ++counters_.encroachment_tests;
+    const VertIdx a = mesh_.origin(e), b = mesh_.destination(e), w = mesh_.tv[tri::prev_edge(e)];
+    return tri::corner_dot_sign(point(w), point(a), point(b)) != Sign::Positive;
+}
+
+void Refiner::process_touched() {
+    if (++batch_ == 0) {
+        std::fill(seen_.begin(), seen_.end(), 0u);
+        batch_ = 1;
+    }
+    const std::uint32_t slots = mesh_.triangle_slots();
+    if (version_.size() < slots) {
+        version_.resize(slots, 0);
+        seen_.resize(slots, 0);
+    }
+    for (const TriIdx t : cdt_.touched()) {
+        if (seen_[t] == batch_) continue;
+        seen_[t] = batch_;
+        ++version_[t];
+        if (!cdt_.in_domain(t)) continue;
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * t + k;
+            if (cdt_.segment_of(e) != kNone && encroached_from(e)) {
+                pieces_.push_back({mesh_.origin(e), mesh_.destination(e), false});
+            }
+        }
+        evaluate(t);
+    }
+    cdt_.clear_touched();
+}
+
+void Refiner::initial_queue() {
+    const std::uint32_t slots = mesh_.triangle_slots();
+    version_.assign(slots, 0);
+    seen_.assign(slots, 0);
+    for (TriIdx t = 0; t < slots; ++t) {
+        if (!cdt_.in_domain(t)) continue;
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * t + k;
+            if (cdt_.segment_of(e) != kNone && encroached_from(e)) {
+                pieces_.push_back({mesh_.origin(e), mesh_.destination(e), false});
+            }
+        }
+        evaluate(t);
+    }
+    cdt_.clear_touched();
+}
+
+void Refiner::spend_budget() {
+    if (counters_.steiner_points() >= budget_) {
+        char angle[32];
+        std::snprintf(angle, sizeof angle, "%g", options_.min_angle);
+        throw GeometryError("delaunay refinement: more than " + std::to_string(budget_) +
+                            " Steiner points; stopped (termination is proven up to 20.7 degrees away from "
+                            "input angles below 60 degrees; minimum angle " + angle +
+                            " may be unreachable here: lower --min-angle, or raise --max-steiner)");
+    }
+}
+
+Refiner::SplitPoint Refiner::split_point(EdgeIdx e) const {
+    const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
+    const std::uint32_t segment = cdt_.segment_of(e);
+    // Parameters along the input segment s0 -> s1 (long double): every split point is computed
+    // from the segment itself, so rounding never accumulates along it.
+    const auto ends = cdt_.segment_ends(segment);
+    const double* s0 = point(ends[0]);
+    const double* s1 = point(ends[1]);
+    const long double dx = static_cast<long double>(s1[0]) - s0[0], dy = static_cast<long double>(s1[1]) - s0[1];
+    const long double length2 = dx * dx + dy * dy;
+    auto parameter = [&](VertIdx v) {
+        return ((static_cast<long double>(point(v)[0]) - s0[0]) * dx + (static_cast<long double>(point(v)[1]) - s0[1]) * dy) /
+               length2;
+    };
+    auto corner = [&](VertIdx v) { return v < initial_vertices_ && degree_[v] >= 2; };
+    const long double ta = parameter(a), tb = parameter(b);
+    long double t = 0.5L * (ta + tb);
+    SplitPoint split;
+    if (corner(a) != corner(b)) {
+        // Concentric shells: the power of two nearest half the piece's length, from the apex.
+        split.apex = corner(a) ? a : b;
+        const long double t_apex = split.apex == a ? ta : tb, t_far = split.apex == a ? tb : ta;
+        const long double length = std::fabs(t_far - t_apex) * std::sqrt(length2);
+        split.shell = static_cast<int>(std::lround(std::log2(static_cast<double>(length / 2))));
+        const long double distance = std::ldexp(1.0L, split.shell);
+        t = t_apex + (t_far > t_apex ? 1 : -1) * distance / std::sqrt(length2);
+    }
+    split.x = static_cast<double>(s0[0] + t * dx);
+    split.y = static_cast<double>(s0[1] + t * dy);
+    return split;
+}
+
+bool Refiner::leave_at_small_angle(EdgeIdx e, double shortest_edge) const {
+    // Shewchuk's rule for small input angles [Shewchuk00 "Mesh generation for domains with small
+    // angles" §3]: a piece at an apex of a small input angle is not split for a rejected
+    // circumcenter when the new vertex would lie closer to an existing vertex (across the small
+    // angle, or on the piece) than the skinny triangle's shortest edge: splitting would only
+    // make smaller skinny triangles towards the apex, without end.
+    // The new vertex's distance to its nearest neighbour ("insertion radius") is taken as the
+    // distance to the piece's ends and to its two apexes, and to where the cluster's other
+    // segments will be split next (the same shell, the smallest angle phi at the apex away):
+    // 2 d sin(phi / 2) at distance d from the apex.
+    const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
+    auto apex_angle = [&](VertIdx v) { return v < initial_vertices_ ? small_apex_angle_[v] : 0.0; };
+    if (apex_angle(a) == 0 && apex_angle(b) == 0) return false;
+    const SplitPoint m = split_point(e);
+    double radius = INFINITY;
+    for (const VertIdx v : {a, b, mesh_.tv[tri::prev_edge(e)], mesh_.tv[tri::prev_edge(mesh_.twin[e])]}) {
+        if (v == tri::kInfinite) continue;
+        radius = std::min(radius, std::hypot(point(v)[0] - m.x, point(v)[1] - m.y));
+    }
+    for (const VertIdx v : {a, b}) {
+        if (apex_angle(v) == 0) continue;
+        const double d = std::hypot(point(v)[0] - m.x, point(v)[1] - m.y);
+        radius = std::min(radius, 2 * d * std::sin(apex_angle(v) / 2));
+    }
+    return radius < shortest_edge;
+}
+
+void Refiner::split_piece(const PieceToSplit& piece) {
+    const EdgeIdx e = cdt_.find_edge(piece.a, piece.b);
+    // Already split (a - b may be an edge again, unconstrained, beside a piece bent by rounding).
+    if (e == kNone || cdt_.segment_of(e) == kNone) return;
+    const std::uint32_t segment = cdt_.segment_of(e);
+    if (!piece.forced) {
+        // Still encroached from a domain side? (The apex may have changed since.)
+        const bool left = cdt_.in_domain(tri::triangle_of(e)) && encroached_from(e);
+        const EdgeIdx f = mesh_.twin[e];
+        if (!left && !(cdt_.in_domain(tri::triangle_of(f)) && encroached_from(f))) return;
+    }
+    spend_budget();
+    const SplitPoint m = split_point(e);
+    const std::uint32_t before = mesh_.vertex_count();
+    const VertIdx v = cdt_.split_constrained_edge(e, m.x, m.y);
+    if (v >= before) {
+        ++counters_.segment_splits;
+        if (on_segment_.size() <= v) on_segment_.resize(v + 1);
+        on_segment_[v] = {segment, m.apex, m.shell};
+        if (m.apex != kNone) ++counters_.shell_splits;
+    } else {
+        ++counters_.segment_bends;
+    }
+    process_touched();
+}
+
+RefinementResult2 Refiner::run() {
+    if (cdt_.collinear()) {
+        throw InputError("delaunay refinement: the points are collinear; the segments enclose no region");
+    }
+    initial_vertices_ = mesh_.vertex_count();
+    degree_.assign(initial_vertices_, 0);
+    for (EdgeIdx e = 0; e < mesh_.tv.size(); ++e) {
+        if (mesh_.is_dead(tri::triangle_of(e)) || cdt_.segment_of(e) == kNone) continue;
+        ++degree_[mesh_.origin(e)];
+    }
+    // Apexes of small input angles: two pieces at a vertex less than 60 degrees apart.
+    find_small_input_angles();
+    if (options_.min_angle > 0) {
+        const double s = std::sin(options_.min_angle * 3.14159265358979323846 / 180.0);
+        sine2_bound_ = s * s;
+    }
+    check_domain_and_budget();
+    predicates::reset_construction_stats();
+    initial_queue();
+    for (;;) {
+        while (!pieces_.empty()) {
+            const PieceToSplit piece = pieces_.back();
+            pieces_.pop_back();
+            split_piece(piece);
+        }
+        if (bad_.empty()) break;
+        const BadTriangle top = bad_.pop();
+        if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t)) continue;  // rewritten since
+        spend_budget();
+        const VertIdx v[3] = {mesh_.tv[3 * top.t], mesh_.tv[3 * top.t + 1], mesh_.tv[3 * top.t + 2]};
+        const auto c = predicates::circumcenter(point(v[0]), point(v[1]), point(v[2]));
+        const tri::CavityInsertion outcome = cdt_.insert_in_cavity(top.t, c[0], c[1]);
+        switch (outcome) {
+            case tri::CavityInsertion::Inserted:
+                ++counters_.circumcenters;
+                process_touched();
+                break;
+            case tri::CavityInsertion::Encroaches: {
+                ++counters_.rejected_circumcenters;
+                const double shortest = std::sqrt(std::min(
+                    {squared_distance(v[0], v[1]), squared_distance(v[1], v[2]), squared_distance(v[2], v[0])}));
+                bool split = false;
+                for (const EdgeIdx e : cdt_.encroached_edges()) {
+                    // Only skinny triangles are left at small angles; too big ones are split.
+                    if (!top.too_big && leave_at_small_angle(e, shortest)) continue;
+                    pieces_.push_back({mesh_.origin(e), mesh_.destination(e), true});
+                    split = true;
+                }
+                if (split) {
+                    bad_.push(top);  // still bad unless the splits rewrite it
+                } else {
+                    ++counters_.small_angle_skips;  // left skinny at a small input angle
+                }
+                break;
+            }
+            case tri::CavityInsertion::Duplicate:
+            case tri::CavityInsertion::NotInConflict:
+            case tri::CavityInsertion::Outside:
+                // A triangle so small that its rounded circumcenter is one of its vertices (or
+                // leaves its circle): nothing to insert; it stays, counted.
+                ++counters_.unsplittable;
+                break;
+        }
+    }
+    const tri::ConstrainedTriangulation2Counters& edits = cdt_.counters();
+    counters_.cavity_triangles = edits.cavity_triangles;
+    counters_.circumcenter_exact = predicates::construction_stats().exact_range +
+                                   predicates::construction_stats().exact_uncertified;
+    RefinementResult2 result;
+    result.mesh = std::move(cdt_).take_result();
+    counters_.flips = result.mesh.counters.delaunay_flips;
+    counters_.orient_calls = result.mesh.counters.orient_calls;
+    counters_.incircle_calls = result.mesh.counters.incircle_calls;
+    result.counters = counters_;
+    return result;
+}
+
+}  // namespace
+
+RefinementResult2 delaunay_refinement_2d(const tri::Pslg& pslg, const RefinementOptions2& options) {
+    if (!(options.min_angle >= 0 && options.min_angle <= kMaxMinAngle)) {
+        char angle[32];
+        std::snprintf(angle, sizeof angle, "%g", options.min_angle);
+        throw InputError(std::string("minimum angle ") + angle + " is outside [0, 34] degrees (Delaunay refinement "
+                         "terminates provably up to 20.7 and in practice up to about 33)");
+    }
+    Refiner refiner(pslg, options);
+    return refiner.run();
+}
+
+}  // namespace exactmesh::generators

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// Delaunay refinement (Steiner triangulation) of a PSLG domain: Ruppert's algorithm with
+// Shewchuk's improvements [Ruppert95: "A Delaunay refinement algorithm for quality 2-dimensional
+// mesh generation", J. Algorithms 18(3); Shewchuk02: "Delaunay refinement algorithms for
+// triangular mesh generation", CGTA 22; Miller-Pav-Walkington03: "When and why Ruppert's
+// algorithm works", IMR; seed material, issue 6 generator 3].
+//  - The constrained Delaunay triangulation of the domain (ConstrainedTriangulation2) is kept
+//    throughout; segments are split first whenever a vertex lies in the closed diametral circle
+//    of one of their pieces (encroachment), at the midpoint, or on a concentric shell (the power
+//    of two nearest half its length) about an input vertex where segments meet [Ruppert95 §4].
+//  - Then the worst bad triangle (radius-edge ratio above B = 1 / (2 sin theta_min), i.e. an
+//    angle below theta_min, or an edge longer than the size function at its midpoint) gets its
+//    circumcenter, correctly rounded (predicates/constructions), inserted by Bowyer-Watson; a
+//    circumcenter that encroaches pieces is not inserted, and those pieces are split instead.
+//  - Small input angles (below 60 degrees, inside the domain): the skinny triangle at such an
+//    apex (its shortest edge joins the two segments on one shell, its third vertex the apex)
+//    keeps the input angle and is not split [Miller-Pav-Walkington03]; a rejected circumcenter
+//    of a skinny triangle does not split a piece at the apex when the new vertex would lie
+//    closer to another than the triangle's shortest edge [Shewchuk00: "Mesh generation for
+//    domains with small angles", SoCG]: refinement never descends into the apex.
+// Guarantee (proofs/invariants/delaunay_refinement.md): for theta_min <= arcsin(1/(2 sqrt 2)) =
+// 20.7 degrees and no two segments meeting at less than 60 degrees the refinement terminates,
+// and then every triangle has every angle >= theta_min and every edge no longer than the size
+// at its midpoint. With smaller input angles it terminates in every test (the rules above; no
+// proof here) and the angle bound holds away from them. Above 20.7 degrees (up to 34) there is
+// no proof either: a budget of Steiner points stops a run that does not terminate, with a
+// GeometryError.
+// Cost: O(n log n + m) for m output vertices in practice (O(1) bucketed queue operations,
+// cavities of O(1) expected size; the initial constrained triangulation O(n log n)). Predicates: orient2d, incircle (SoS),
+// corner_dot_sign (encroachment); construction: circumcenter.
+#pragma once
+
+#include <cstdint>
+
+#include "generators/size_function.hpp"
+#include "triangulation/constrained_2d.hpp"
+
+namespace exactmesh::generators {
+
+/// 20.7 degrees: arcsin(1 / (2 sqrt 2)), the largest angle bound with a termination proof.
+inline constexpr double kGuaranteedMinAngle = 20.7;
+/// The largest angle bound accepted (no proof; in practice Delaunay refinement stops
+/// terminating a little above 33 degrees on most domains).
+inline constexpr double kMaxMinAngle = 34.0;
+
+struct RefinementOptions2 {
+    /// Every angle of the mesh at least this (degrees), away from small input angles; 0 turns
+    /// the angle criterion off. At most kMaxMinAngle.
+    double min_angle = kGuaranteedMinAngle;
+    /// Every edge at most as long as the size at its midpoint (none: no size criterion).
+    SizeFunction size;
+    /// Stop with GeometryError after this many Steiner points (0: automatic, at least 10^6 and
+    /// 16 times the element count the size function asks for).
+    std::uint64_t max_steiner_points = 0;
+    /// The initial constrained Delaunay triangulation (recovery Swap or Cavity).
+    triangulation::Cdt2Options cdt;
+};
+
+struct RefinementCounters2 {
+    std::uint64_t circumcenters = 0;           ///< Steiner points inserted at circumcenters
+    std::uint64_t segment_splits = 0;          ///< Steiner points inserted on segments
+    std::uint64_t shell_splits = 0;            ///< of those, on concentric shells
+    std::uint64_t segment_bends = 0;           ///< pieces split at an existing vertex within rounding
+    std::uint64_t rejected_circumcenters = 0;  ///< circumcenters not inserted (they encroached)
+    std::uint64_t encroachment_tests = 0;      ///< corner_dot_sign calls of the refinement
+    std::uint64_t bad_triangles = 0;           ///< bad triangles queued (with repeats)
+    std::uint64_t small_angle_skips = 0;       ///< skinny triangles left at small input angles
+    std::uint64_t unsplittable = 0;            ///< bad triangles whose circumcenter rounds onto a vertex
+    std::uint64_t cavity_triangles = 0;        ///< triangles replaced by circumcenter insertions
+    std::uint64_t flips = 0;                   ///< Lawson flips (initial triangulation and splits)
+    std::uint64_t circumcenter_exact = 0;      ///< circumcenters that needed the exact path
+    std::uint64_t orient_calls = 0;
+    std::uint64_t incircle_calls = 0;
+    std::uint64_t steiner_points() const { return circumcenters + segment_splits; }
+};
+
+struct RefinementResult2 {
+    /// The mesh in the caller's numbering: input vertices first (as constrained_delaunay_2d
+    /// numbers them), then added ones; exterior and holes removed; pieces and warnings.
+    triangulation::Cdt2Result mesh;
+    RefinementCounters2 counters;
+};
+
+/// Refines the domain the PSLG's segments enclose (holes and exterior removed as
+/// constrained_delaunay_2d removes them).
+/// @throws InputError on bad input (as constrained_delaunay_2d), a min_angle outside
+///         [0, kMaxMinAngle], or when the segments enclose no region.
+/// @throws GeometryError when the Steiner point budget is exhausted, or a piece becomes too
+///         short to split in double precision.
+RefinementResult2 delaunay_refinement_2d(const triangulation::Pslg& pslg, const RefinementOptions2& options = {});
+
+}  // namespace exactmesh::generators

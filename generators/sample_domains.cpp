@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: MIT
+// Built-in sample domains (see sample_domains.hpp).
+#include "generators/sample_domains.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <string>
+
+#include "predicates/errors.hpp"
+
+namespace exactmesh::generators {
+
+namespace {
+
+using Point = std::array<double, 2>;
+using Curve = std::function<Point(double)>;
+
+/// Points of curve(u), u in [u0, u1], both ends included, spaced so that the integral of
+/// ds / size between neighbours is equal and at most 1 (at least min_pieces pieces). The
+/// integral is taken over a fine polyline of the curve (at least 8 samples per piece).
+std::vector<Point> discretize(const Curve& curve, double u0, double u1, const SizeFunction& size, int min_pieces) {
+    int samples = 4096;
+    for (;;) {
+        std::vector<double> u(static_cast<std::size_t>(samples) + 1), cumulative(u.size(), 0.0);
+        Point previous = curve(u0);
+        u[0] = u0;
+        for (int i = 1; i <= samples; ++i) {
+            u[static_cast<std::size_t>(i)] = u0 + (u1 - u0) * i / samples;
+            const Point p = curve(u[static_cast<std::size_t>(i)]);
+            const double s = size(0.5 * (p[0] + previous[0]), 0.5 * (p[1] + previous[1]));
+            const double ds = std::hypot(p[0] - previous[0], p[1] - previous[1]);
+            cumulative[static_cast<std::size_t>(i)] = cumulative[static_cast<std::size_t>(i) - 1] + (std::isfinite(s) ? ds / s : 0.0);
+            previous = p;
+        }
+        const double total = cumulative.back();
+        const int pieces = std::max(min_pieces, static_cast<int>(std::ceil(total - 1e-9)));
+        if (pieces * 8 > samples && samples < (1 << 24)) {
+            samples = std::min(1 << 24, pieces * 16);
+            continue;
+        }
+        std::vector<Point> points{curve(u0)};
+        std::size_t i = 0;
+        for (int k = 1; k < pieces; ++k) {
+            const double target = total > 0 ? total * k / pieces : 0.0;
+            double parameter;
+            if (total > 0) {
+                while (i + 1 < cumulative.size() && cumulative[i + 1] < target) ++i;
+                const double span = cumulative[i + 1] - cumulative[i];
+                const double f = span > 0 ? (target - cumulative[i]) / span : 0.0;
+                parameter = u[i] + f * (u[i + 1] - u[i]);
+            } else {
+                parameter = u0 + (u1 - u0) * k / pieces;
+            }
+            points.push_back(curve(parameter));
+        }
+        points.push_back(curve(u1));
+        return points;
+    }
+}
+
+class Builder {
+public:
+    DomainPslg pslg;
+
+    std::uint32_t vertex(Point p) {
+        pslg.xy.push_back(p[0]);
+        pslg.xy.push_back(p[1]);
+        return static_cast<std::uint32_t>(pslg.xy.size() / 2 - 1);
+    }
+    void segment(std::uint32_t a, std::uint32_t b) {
+        pslg.segments.push_back(a);
+        pslg.segments.push_back(b);
+    }
+    /// A closed polygon through the points (first not repeated at the end).
+    void loop(const std::vector<Point>& points) {
+        const std::uint32_t first = static_cast<std::uint32_t>(pslg.xy.size() / 2);
+        for (const Point& p : points) vertex(p);
+        const auto n = static_cast<std::uint32_t>(points.size());
+        for (std::uint32_t k = 0; k < n; ++k) segment(first + k, first + (k + 1) % n);
+    }
+    void circle_hole(Point centre, double radius, const SizeFunction& size) {
+        auto points = discretize(
+            [&](double u) { return Point{centre[0] + radius * std::cos(u), centre[1] + radius * std::sin(u)}; }, 0.0,
+            2 * std::numbers::pi, size, 8);
+        points.pop_back();  // u = 2 pi is u = 0
+        loop(points);
+        pslg.holes.insert(pslg.holes.end(), {centre[0], centre[1]});
+    }
+};
+
+DomainPslg square_with_holes(const SizeFunction& size) {
+    Builder b;
+    b.loop({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+    b.circle_hole({0.3, 0.3}, 0.12, size);
+    b.circle_hole({0.7, 0.62}, 0.16, size);
+    // A diamond (a square turned 45 degrees): right angles, its corners on the axes' lines.
+    b.loop({{0.3, 0.62}, {0.4, 0.72}, {0.3, 0.82}, {0.2, 0.72}});
+    b.pslg.holes.insert(b.pslg.holes.end(), {0.3, 0.72});
+    return std::move(b.pslg);
+}
+
+DomainPslg naca0012(const SizeFunction& size) {
+    Builder b;
+    b.loop({{-1.5, -2}, {2.5, -2}, {2.5, 2}, {-1.5, 2}});
+    // From the trailing edge (x = 1) to the leading edge (x = 0) on both surfaces, with
+    // x = (1 + cos beta) / 2, which gives the fine sampling its cosine clustering at both ends.
+    auto surface = [&](double sign) {
+        return discretize(
+            [sign](double beta) {
+                const double x = 0.5 * (1 + std::cos(beta));
+                return Point{x, sign * naca_thickness(0.12, x)};
+            },
+            0.0, std::numbers::pi, size, 16);
+    };
+    std::vector<Point> upper = surface(1.0), lower = surface(-1.0);
+    // Exactly (1, 0) and (0, 0) at the ends, shared by both surfaces.
+    std::vector<Point> loop{{1.0, 0.0}};
+    for (std::size_t k = 1; k + 1 < upper.size(); ++k) loop.push_back(upper[k]);
+    loop.push_back({0.0, 0.0});
+    for (std::size_t k = lower.size() - 2; k >= 1; --k) loop.push_back(lower[k]);
+    b.loop(loop);
+    b.pslg.holes.insert(b.pslg.holes.end(), {0.3, 0.0});
+    return std::move(b.pslg);
+}
+
+DomainPslg key(const SizeFunction& size) {
+    Builder b;
+    // The ring: radius 0.5 about the origin, cut by the shaft y = +-0.1 at x = sqrt(0.24).
+    const double r = 0.5, h = 0.1, cut = std::sqrt(r * r - h * h);
+    const double a0 = std::asin(h / r);
+    std::vector<Point> outline{{cut, h}, {2.0, h}, {2.0, -h}};
+    // Teeth on the lower side of the shaft, from the tip back to the ring: a square tooth, the
+    // sharp one (tip angle 2 atan(0.022 / 0.25) = 10.06 degrees), a trapezoid.
+    const std::vector<Point> teeth{{1.9, -h},   {1.9, -0.25}, {1.75, -0.25}, {1.75, -h},    {1.422, -h},
+                                   {1.4, -0.35}, {1.378, -h},  {1.2, -h},     {1.15, -0.22}, {1.0, -0.22},
+                                   {0.95, -h}};
+    outline.insert(outline.end(), teeth.begin(), teeth.end());
+    // The ring's outer arc from angle -a0 down through pi back to a0 - 2 pi, i.e. (cut, -h) to
+    // (cut, h) the long way round; both ends are already there.
+    const auto arc = discretize([r](double u) { return Point{r * std::cos(u), r * std::sin(u)}; }, -a0,
+                                a0 - 2 * std::numbers::pi, size, 16);
+    outline.push_back({cut, -h});
+    for (std::size_t k = 1; k + 1 < arc.size(); ++k) outline.push_back(arc[k]);
+    b.loop(outline);
+    b.circle_hole({0.0, 0.0}, 0.2, size);
+    return std::move(b.pslg);
+}
+
+}  // namespace
+
+double naca_thickness(double t, double x) {
+    return 5 * t * (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x - 0.1036 * x * x * x * x);
+}
+
+std::string_view sample_domain_name(SampleDomain d) {
+    switch (d) {
+        case SampleDomain::SquareWithHoles: return "square-with-holes";
+        case SampleDomain::Naca0012: return "naca0012";
+        case SampleDomain::Key: return "key";
+    }
+    return "?";
+}
+
+SampleDomain sample_domain_from_name(std::string_view name) {
+    for (const SampleDomain d : kAllSampleDomains) {
+        if (sample_domain_name(d) == name) return d;
+    }
+    throw InputError("unknown domain '" + std::string(name) + "' (known: square-with-holes, naca0012, key)");
+}
+
+SizeFunction sample_domain_size(SampleDomain d) {
+    switch (d) {
+        case SampleDomain::SquareWithHoles: return SizeFunction::uniform(0.025);
+        case SampleDomain::Naca0012:
+            // A line source along the chord: 0.01 on the airfoil, 0.01 (1 + (d / 0.1)^1.5) away
+            // from it (0.9 at the far field's nearest side), capped at 0.5.
+            return SizeFunction::sources({}, {{0.0, 0.0, 1.0, 0.0, 0.01, 0.1, 1.5}}, 0.5);
+        case SampleDomain::Key: return SizeFunction::uniform(0.02);
+    }
+    return {};
+}
+
+DomainPslg sample_domain(SampleDomain d, const SizeFunction& size) {
+    const SizeFunction& s = size.bounded() ? size : sample_domain_size(d);
+    switch (d) {
+        case SampleDomain::SquareWithHoles: return square_with_holes(s);
+        case SampleDomain::Naca0012: return naca0012(s);
+        case SampleDomain::Key: return key(s);
+    }
+    return {};
+}
+
+}  // namespace exactmesh::generators

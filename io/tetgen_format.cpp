@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: MIT
+// TetGen's .node / .ele / .face / .neigh formats (see tetgen_format.hpp). The vertex section and
+// the record plumbing are shared with Triangle's formats (io/records).
+#include "io/tetgen_format.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+#include "io/records.hpp"
+#include "io/text_file.hpp"
+#include "triangulation/mesh3.hpp"
+
+namespace exactmesh::io {
+
+namespace {
+
+using detail::expect_end;
+using detail::expect_field_count;
+using detail::expect_record_number;
+using detail::plausible;
+using detail::plural;
+using triangulation::kNone;
+
+/// 4 face slots per tetrahedron must be addressable by a 32-bit index.
+constexpr std::uint64_t kMaxTets = triangulation::kMaxTetSlots;
+
+/// exactmesh's corner order <-> TetGen's: the last two corners swapped (an involution).
+constexpr unsigned kTetGenCorner[4] = {0, 1, 3, 2};
+
+}  // namespace
+
+TetgenNodeFile parse_tetgen_node(std::string_view text, const std::string& file_name) {
+    TextLines lines(text, file_name);
+    if (!lines.next_data_line()) {
+        lines.fail_at_end(
+            "no header line (expected '<#points> <dimension=3> <#attributes> <#boundary markers>')");
+    }
+    detail::VertexSection section;
+    const std::uint64_t count =
+        detail::parse_vertex_section(lines, text.size(), 3, "a 3D TetGen file", section);
+    expect_end(lines, count, count == 1 ? "vertex" : "vertices");
+    TetgenNodeFile nodes;
+    nodes.xyz = std::move(section.coordinates);
+    nodes.first_index = section.first_index;
+    nodes.attribute_count = section.attribute_count;
+    nodes.attributes = std::move(section.attributes);
+    nodes.has_markers = section.has_markers;
+    nodes.markers = std::move(section.markers);
+    return nodes;
+}
+
+TetgenNodeFile read_tetgen_node(const std::filesystem::path& path) {
+    return parse_tetgen_node(read_text_file(path), path.string());
+}
+
+unsigned read_node_dimension(const std::filesystem::path& path) {
+    return detail::node_dimension(read_text_file(path), path.string());
+}
+
+TetgenEleFile parse_tetgen_ele(std::string_view text, const std::string& file_name,
+                               std::uint32_t vertex_first_index, std::uint32_t vertex_count) {
+    TextLines lines(text, file_name);
+    if (!lines.next_data_line()) {
+        lines.fail_at_end(
+            "no header line (expected '<#tetrahedra> <nodes per tetrahedron=4> <region attribute "
+            "0|1>')");
+    }
+    const auto& header = lines.fields();
+    if (header.size() > 3) {
+        lines.fail_quoting_line("header has " + std::to_string(header.size()) +
+                                " fields, expected at most 3 (#tetrahedra, nodes per tetrahedron, "
+                                "region attribute)");
+    }
+    const std::uint64_t count = lines.parse_unsigned(header[0], "tetrahedron count", kMaxTets);
+    std::uint64_t corners = 4;
+    if (header.size() > 1) {
+        corners = lines.parse_unsigned(header[1], "nodes per tetrahedron",
+                                       std::numeric_limits<std::uint64_t>::max());
+        if (corners != 4 && corners != 10) {
+            lines.fail("nodes per tetrahedron must be 4 (or 10 for quadratic tetrahedra), got " +
+                       std::to_string(corners) + (corners == 3 ? " (a 2D Triangle .ele file?)" : ""));
+        }
+    }
+    TetgenEleFile ele;
+    if (header.size() > 2) {
+        const std::uint64_t region = lines.parse_unsigned(
+            header[2], "region attribute flag", std::numeric_limits<std::uint64_t>::max());
+        if (region > 1) lines.fail("region attribute flag must be 0 or 1, got " + std::to_string(region));
+        ele.has_region = region == 1;
+    }
+    const std::uint64_t expected = 1 + corners + (ele.has_region ? 1 : 0);
+    const std::string names = std::string(corners == 4 ? "number, 4 nodes" : "number, 10 nodes") +
+                              (ele.has_region ? ", region" : "");
+    const std::uint64_t last = std::uint64_t{vertex_first_index} + vertex_count;  // exclusive
+    const std::string numbering = vertex_count == 0 ? std::string("the node file has no points")
+                                                    : "the node file numbers its points " +
+                                                          std::to_string(vertex_first_index) +
+                                                          " to " + std::to_string(last - 1);
+    ele.tets.reserve(4 * plausible(count, text.size(), 10));
+    for (std::uint64_t i = 0; i < count; ++i) {
+        if (!lines.next_data_line()) {
+            lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
+                              plural(count, "announced tetrahedron", "announced tetrahedra"));
+        }
+        expect_field_count(lines, expected, names);
+        const auto& fields = lines.fields();
+        expect_record_number(lines, fields[0], "tetrahedron", i, ele.first_index);
+        std::uint32_t corner[4];
+        for (std::uint64_t k = 0; k < corners; ++k) {
+            const std::uint64_t v = lines.parse_unsigned(fields[1 + k], "node number",
+                                                         std::numeric_limits<std::uint32_t>::max());
+            if (v < vertex_first_index || v >= last) {
+                lines.fail("node number " + std::to_string(v) + " out of range: " + numbering);
+            }
+            if (k < 4) corner[k] = static_cast<std::uint32_t>(v - vertex_first_index);
+        }
+        for (const unsigned k : kTetGenCorner) ele.tets.push_back(corner[k]);
+        if (ele.has_region) {
+            ele.regions.push_back(lines.parse_finite_double(fields.back(), "region attribute"));
+        }
+    }
+    expect_end(lines, count, count == 1 ? "tetrahedron" : "tetrahedra");
+    return ele;
+}
+
+TetgenEleFile read_tetgen_ele(const std::filesystem::path& path, std::uint32_t vertex_first_index,
+                              std::uint32_t vertex_count) {
+    return parse_tetgen_ele(read_text_file(path), path.string(), vertex_first_index, vertex_count);
+}
+
+std::string format_tetgen_node(std::span<const double> xyz, std::uint32_t first_index) {
+    const std::size_t count = xyz.size() / 3;
+    std::string out;
+    out.reserve(64 * count + 32);
+    append_unsigned(out, count);
+    out += " 3 0 0\n";
+    for (std::size_t v = 0; v < count; ++v) {
+        append_unsigned(out, v + first_index);
+        for (std::size_t c = 0; c < 3; ++c) {
+            out += ' ';
+            append_double(out, xyz[3 * v + c]);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+void write_tetgen_node(const std::filesystem::path& path, std::span<const double> xyz,
+                       std::uint32_t first_index) {
+    write_text_file(path, format_tetgen_node(xyz, first_index));
+}
+
+std::string format_tetgen_ele(std::span<const std::uint32_t> tets, std::uint32_t first_index) {
+    const std::size_t count = tets.size() / 4;
+    std::string out;
+    out.reserve(48 * count + 32);
+    append_unsigned(out, count);
+    out += " 4 0\n";
+    for (std::size_t t = 0; t < count; ++t) {
+        append_unsigned(out, t + first_index);
+        for (const unsigned k : kTetGenCorner) {
+            out += ' ';
+            append_unsigned(out, std::uint64_t{tets[4 * t + k]} + first_index);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+void write_tetgen_ele(const std::filesystem::path& path, std::span<const std::uint32_t> tets,
+                      std::uint32_t first_index) {
+    write_text_file(path, format_tetgen_ele(tets, first_index));
+}
+
+std::string format_tetgen_boundary_faces(std::span<const std::uint32_t> tets,
+                                         std::span<const std::uint32_t> neighbors,
+                                         std::uint32_t first_index) {
+    const std::size_t count = tets.size() / 4;
+    std::size_t faces = 0;
+    for (const std::uint32_t n : neighbors) faces += n == kNone ? 1 : 0;
+    std::string out;
+    out.reserve(40 * faces + 32);
+    append_unsigned(out, faces);
+    out += " 0\n";
+    std::size_t number = first_index;
+    for (std::size_t t = 0; t < count; ++t) {
+        for (unsigned k = 0; k < 4; ++k) {
+            if (neighbors[4 * t + k] != kNone) continue;
+            append_unsigned(out, number++);
+            // kFaceVertex[k] sees corner k (inside) on its positive orient3d side: seen from
+            // outside, counter-clockwise.
+            for (const unsigned c : triangulation::kFaceVertex[k]) {
+                out += ' ';
+                append_unsigned(out, std::uint64_t{tets[4 * t + c]} + first_index);
+            }
+            out += '\n';
+        }
+    }
+    return out;
+}
+
+void write_tetgen_boundary_faces(const std::filesystem::path& path, std::span<const std::uint32_t> tets,
+                                 std::span<const std::uint32_t> neighbors, std::uint32_t first_index) {
+    write_text_file(path, format_tetgen_boundary_faces(tets, neighbors, first_index));
+}
+
+std::string format_tetgen_neigh(std::span<const std::uint32_t> neighbors, std::uint32_t first_index) {
+    const std::size_t count = neighbors.size() / 4;
+    std::string out;
+    out.reserve(48 * count + 32);
+    append_unsigned(out, count);
+    out += " 4\n";
+    for (std::size_t t = 0; t < count; ++t) {
+        append_unsigned(out, t + first_index);
+        for (const unsigned k : kTetGenCorner) {
+            const std::uint32_t neighbor = neighbors[4 * t + k];
+            out += ' ';
+            if (neighbor == kNone) {
+                out += "-1";
+            } else {
+                append_unsigned(out, std::uint64_t{neighbor} + first_index);
+            }
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+void write_tetgen_neigh(const std::filesystem::path& path, std::span<const std::uint32_t> neighbors,
+                        std::uint32_t first_index) {
+    write_text_file(path, format_tetgen_neigh(neighbors, first_index));
+}
+
+}  // namespace exactmesh::io

@@ -1,0 +1,354 @@
+// SPDX-License-Identifier: MIT
+// Delaunay refinement: every output is constrained Delaunay with every segment a chain of
+// pieces (exact check), has no triangle outside the domain and is closed by pieces; the angle
+// bound holds on domains without small input angles (20.7 with its proof, up to 33 without),
+// and away from a 5- and a 10-degree input angle; every edge is at most the size at its
+// midpoint; degenerate inputs (points on segments, duplicates, tiny features beside big ones,
+// crossing segments, a vertex a few ulps off a segment) terminate with valid meshes; regions
+// keep their attributes; bad input and an exhausted budget raise the documented errors.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "generators/delaunay_refinement_2d.hpp"
+#include "generators/pslg_inputs.hpp"
+#include "generators/sample_domains.hpp"
+#include "predicates/errors.hpp"
+#include "tests/support/mesh_checks_2d.hpp"
+
+namespace em = exactmesh;
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
+
+namespace {
+
+struct Input {
+    std::vector<double> xy;
+    std::vector<std::uint32_t> segments;
+    std::vector<double> holes;
+    std::vector<double> regions;
+    tri::Pslg pslg() const { return {xy, segments, holes, regions}; }
+};
+
+Input from_domain(const gen::DomainPslg& d) { return {d.xy, d.segments, d.holes, {}}; }
+
+/// A closed polygon's input (vertices in order).
+Input polygon(std::vector<double> xy) {
+    Input in;
+    in.xy = std::move(xy);
+    const auto n = static_cast<std::uint32_t>(in.xy.size() / 2);
+    for (std::uint32_t k = 0; k < n; ++k) in.segments.insert(in.segments.end(), {k, (k + 1) % n});
+    return in;
+}
+
+struct Refined {
+    gen::RefinementResult2 result;
+    em::testing::MeshCheck check;
+};
+
+Refined refine(const Input& in, double min_angle, const gen::SizeFunction& size = {}, bool closed_loops = true) {
+    gen::RefinementOptions2 options;
+    options.min_angle = min_angle;
+    options.size = size;
+    Refined r{gen::delaunay_refinement_2d(in.pslg(), options), {}};
+    const auto& m = r.result.mesh;
+    std::function<double(double, double)> s;
+    if (size.bounded()) s = [&size](double x, double y) { return size(x, y); };
+    r.check = em::testing::check_quality_mesh(m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces, s,
+                                              closed_loops);
+    return r;
+}
+
+constexpr double kAngleSlack = 1e-9;  // degrees: the bad-triangle test and atan2 both round
+
+}  // namespace
+
+TEST(Generators_DelaunayRefinement, SquareWithHolesMeetsEveryAngleBound) {
+    // No input angle below 60 degrees: the bound holds everywhere (proven at 20.7).
+    const Input in = from_domain(gen::sample_domain(gen::SampleDomain::SquareWithHoles));
+    for (const double angle : {20.7, 25.0, 30.0, 33.0}) {
+        const Refined r = refine(in, angle);
+        ASSERT_TRUE(r.check.ok) << angle << ": " << r.check.problem;
+        EXPECT_GE(r.check.min_angle, angle - kAngleSlack) << angle;
+        EXPECT_EQ(r.result.counters.small_angle_skips, 0u) << angle;
+        EXPECT_EQ(r.result.counters.unsplittable, 0u) << angle;
+        EXPECT_GT(r.result.counters.steiner_points(), 0u) << angle;
+    }
+}
+
+TEST(Generators_DelaunayRefinement, SampleDomainsWithTheirSizeFunctions) {
+    for (const gen::SampleDomain d : gen::kAllSampleDomains) {
+        const gen::SizeFunction size = gen::sample_domain_size(d);
+        const Input in = from_domain(gen::sample_domain(d, size));
+        const Refined r = refine(in, 20.7, size);
+        const std::string name(gen::sample_domain_name(d));
+        ASSERT_TRUE(r.check.ok) << name << ": " << r.check.problem;
+        // Size conformity: the refinement splits every triangle with an edge longer than the
+        // size at its midpoint, so the bound is 1 (up to the rounding of the two evaluations).
+        EXPECT_LE(r.check.max_size_ratio, 1 + 1e-9) << name;
+        EXPECT_GT(r.result.mesh.mesh.triangle_count(), 1000u) << name;
+        if (d != gen::SampleDomain::Key) {
+            EXPECT_GE(r.check.min_angle, 20.7 - kAngleSlack) << name;
+        }
+    }
+}
+
+TEST(Generators_DelaunayRefinement, KeyAngleBoundHoldsAwayFromItsTenDegreeTooth) {
+    const Input in = from_domain(gen::sample_domain(gen::SampleDomain::Key));
+    const Refined r = refine(in, 20.7, gen::sample_domain_size(gen::SampleDomain::Key));
+    ASSERT_TRUE(r.check.ok) << r.check.problem;
+    const tri::Triangulation2& m = r.result.mesh.mesh;
+    std::size_t near_tooth = 0;
+    for (std::uint32_t t = 0; t < m.triangle_count(); ++t) {
+        bool in_tooth = false;  // a vertex in the sharp tooth (below the shaft, 1.37 < x < 1.43)
+        for (int k = 0; k < 3; ++k) {
+            const double* p = m.point(m.triangles[3 * t + static_cast<unsigned>(k)]);
+            in_tooth |= p[1] < -0.1 + 1e-12 && p[0] > 1.37 && p[0] < 1.43;
+        }
+        const double angle = em::testing::triangle_min_angle(m, t);
+        if (in_tooth) {
+            near_tooth += angle < 20.7 - kAngleSlack;
+        } else {
+            EXPECT_GE(angle, 20.7 - kAngleSlack) << "triangle " << t;
+        }
+    }
+    EXPECT_GT(near_tooth, 0u);  // the 10-degree tip cannot be improved
+    EXPECT_GT(r.result.counters.small_angle_skips, 0u);
+    EXPECT_LT(r.check.min_angle, 10.1);
+}
+
+TEST(Generators_DelaunayRefinement, FiveDegreeInputAngleTerminates) {
+    // A wedge of 5 degrees at the origin opening into a square: A, B, (3, 0), (3, 2), (2, 2), D.
+    const double c = 2 * std::cos(5 * std::numbers::pi / 180), s = 2 * std::sin(5 * std::numbers::pi / 180);
+    const Input in = polygon({0, 0, 2, 0, 3, 0, 3, 2, 2, 2, c, s});
+    for (const double angle : {20.7, 30.0}) {
+        const Refined r = refine(in, angle, gen::SizeFunction::uniform(0.2));
+        ASSERT_TRUE(r.check.ok) << r.check.problem;
+        const tri::Triangulation2& m = r.result.mesh.mesh;
+        std::size_t checked = 0;
+        for (std::uint32_t t = 0; t < m.triangle_count(); ++t) {
+            bool away = true;  // every vertex beyond the wedge's mouth (distance 2.05 from the apex)
+            for (int k = 0; k < 3; ++k) {
+                const double* p = m.point(m.triangles[3 * t + static_cast<unsigned>(k)]);
+                away &= std::hypot(p[0], p[1]) > 2.05;
+            }
+            if (!away) continue;
+            ++checked;
+            EXPECT_GE(em::testing::triangle_min_angle(m, t), angle - kAngleSlack) << angle << ", triangle " << t;
+        }
+        EXPECT_GT(checked, 50u);
+        EXPECT_LT(r.check.min_angle, 5.01);
+    }
+}
+
+TEST(Generators_DelaunayRefinement, DegenerateInputs) {
+    struct Case {
+        const char* name;
+        Input in;
+    };
+    std::vector<Case> cases;
+    // Collinear points on the boundary (input vertices on the square's sides: split there).
+    {
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {0.25, 0, 0.5, 0, 0.75, 0, 1, 0.3});
+        cases.push_back({"points on segments", in});
+    }
+    // Duplicate vertices, a duplicated segment and one given through the copies.
+    {
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {1, 0, 1, 1});  // vertices 4, 5 repeat 1, 2
+        in.segments.insert(in.segments.end(), {4, 5, 0, 1});
+        cases.push_back({"duplicates", in});
+    }
+    // A tiny square hole (1e-4) next to a big domain, and a free vertex 1e-6 above a segment.
+    {
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        const double a = 0.3, w = 1e-4;
+        in.xy.insert(in.xy.end(), {a, a, a + w, a, a + w, a + w, a, a + w, 0.6, 1e-6});
+        in.segments.insert(in.segments.end(), {4, 5, 5, 6, 6, 7, 7, 4});
+        in.holes = {a + w / 2, a + w / 2};
+        cases.push_back({"tiny features", in});
+    }
+    // A vertex a few ulps off a skew segment's line (0, 0) - (1, 0.3).
+    {
+        Input in = polygon({0, 0, 1, 0.3, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {0.5, std::nextafter(0.15, 1.0)});
+        cases.push_back({"vertex ulps off a segment", in});
+    }
+    for (const Case& c : cases) {
+        for (const double angle : {20.7, 28.0}) {
+            const Refined r = refine(c.in, angle);
+            ASSERT_TRUE(r.check.ok) << c.name << " at " << angle << ": " << r.check.problem;
+            EXPECT_GE(r.check.min_angle, angle - kAngleSlack) << c.name << " at " << angle;
+        }
+    }
+}
+
+TEST(Generators_DelaunayRefinement, CrossingSegmentsAreSplitAndWarned) {
+    // A square with a bow-tie of two crossing inner segments (not closing anything themselves).
+    Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+    in.xy.insert(in.xy.end(), {0.2, 0.2, 0.8, 0.8, 0.2, 0.8, 0.8, 0.2});
+    in.segments.insert(in.segments.end(), {4, 5, 6, 7});
+    gen::RefinementOptions2 options;
+    const auto result = gen::delaunay_refinement_2d(in.pslg(), options);
+    EXPECT_EQ(result.mesh.counters.intersections, 1u);
+    EXPECT_FALSE(result.mesh.warnings.empty());
+    const auto report = tri::check_constrained_delaunay_2d(result.mesh.mesh, result.mesh.input_vertex_count,
+                                                           in.segments, result.mesh.pieces);
+    EXPECT_TRUE(report.ok) << report.problem;
+    double smallest = 180;
+    for (std::uint32_t t = 0; t < result.mesh.mesh.triangle_count(); ++t) {
+        smallest = std::min(smallest, em::testing::triangle_min_angle(result.mesh.mesh, t));
+    }
+    EXPECT_GE(smallest, 20.7 - kAngleSlack);  // the crossing makes 90-degree angles
+}
+
+TEST(Generators_DelaunayRefinement, RegionsKeepTheirAttributes) {
+    // Two regions split by an inner segment x = 0.5: attribute 1 left, 2 right. Every new
+    // triangle must take the attribute of the side it lies on.
+    Input in = polygon({0, 0, 0.5, 0, 1, 0, 1, 1, 0.5, 1, 0, 1});
+    in.segments.insert(in.segments.end(), {1, 4});
+    in.regions = {0.25, 0.5, 1.0, -1, 0.75, 0.5, 2.0, -1};
+    gen::RefinementOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.05);
+    const auto result = gen::delaunay_refinement_2d(in.pslg(), options);
+    const tri::Triangulation2& m = result.mesh.mesh;
+    ASSERT_EQ(result.mesh.triangle_attributes.size(), m.triangle_count());
+    ASSERT_GT(m.triangle_count(), 500u);
+    for (std::uint32_t t = 0; t < m.triangle_count(); ++t) {
+        double cx = 0;
+        for (int k = 0; k < 3; ++k) cx += m.point(m.triangles[3 * t + static_cast<unsigned>(k)])[0] / 3;
+        EXPECT_EQ(result.mesh.triangle_attributes[t], cx < 0.5 ? 1.0 : 2.0) << t;
+    }
+}
+
+TEST(Generators_DelaunayRefinement, UniformSizeBoundsEveryEdge) {
+    const Input in = polygon({0, 0, 2, 0, 2, 1, 0, 1});
+    for (const double h : {0.3, 0.05}) {
+        const gen::SizeFunction size = gen::SizeFunction::uniform(h);
+        const Refined r = refine(in, 20.7, size);
+        ASSERT_TRUE(r.check.ok) << r.check.problem;
+        EXPECT_LE(r.check.max_size_ratio, 1 + 1e-9);
+        // About 2 / (sqrt(3) / 4 h^2) equilateral triangles; refinement lands within a factor 3.
+        const double ideal = 2 / (std::sqrt(3.0) / 4 * h * h);
+        EXPECT_GT(r.result.mesh.mesh.triangle_count(), ideal / 3) << h;
+        EXPECT_LT(r.result.mesh.mesh.triangle_count(), ideal * 3) << h;
+    }
+}
+
+TEST(Generators_DelaunayRefinement, ZeroAngleMeansSizeOnly) {
+    const Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+    const Refined r = refine(in, 0, gen::SizeFunction::uniform(0.1));
+    ASSERT_TRUE(r.check.ok) << r.check.problem;
+    EXPECT_LE(r.check.max_size_ratio, 1 + 1e-9);
+}
+
+TEST(Generators_DelaunayRefinement, BadInputIsReported) {
+    // Segments that close no region.
+    Input open;
+    open.xy = {0, 0, 1, 0, 1, 1};
+    open.segments = {0, 1, 1, 2};
+    EXPECT_THROW(gen::delaunay_refinement_2d(open.pslg()), em::InputError);
+    // Collinear points.
+    Input line = polygon({0, 0, 1, 0, 2, 0});
+    EXPECT_THROW(gen::delaunay_refinement_2d(line.pslg()), em::InputError);
+    // NaN.
+    Input nan = polygon({0, 0, 1, 0, std::nan(""), 1});
+    EXPECT_THROW(gen::delaunay_refinement_2d(nan.pslg()), em::InputError);
+    // Angle bound out of range.
+    gen::RefinementOptions2 options;
+    options.min_angle = 35;
+    EXPECT_THROW(gen::delaunay_refinement_2d(polygon({0, 0, 1, 0, 0, 1}).pslg(), options), em::InputError);
+    options.min_angle = -1;
+    EXPECT_THROW(gen::delaunay_refinement_2d(polygon({0, 0, 1, 0, 0, 1}).pslg(), options), em::InputError);
+}
+
+TEST(Generators_DelaunayRefinement, BudgetStopsWithGeometryError) {
+    gen::RefinementOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.01);
+    options.max_steiner_points = 100;
+    try {
+        gen::delaunay_refinement_2d(polygon({0, 0, 1, 0, 1, 1, 0, 1}).pslg(), options);
+        FAIL() << "no GeometryError";
+    } catch (const em::GeometryError& error) {
+        EXPECT_NE(std::string(error.what()).find("more than 100 Steiner points"), std::string::npos) << error.what();
+    }
+}
+
+TEST(Generators_DelaunayRefinement, TinyInputAnglesDoNotRefineTowardsTheirApex) {
+    // Two inner segments from (0.2, 0.5) at 1, 0.3 and 0.05 degrees apart, in the unit square.
+    // Regression: circumcenters of skinny triangles at the apex split its pieces on ever smaller
+    // shells down to the resolution of doubles (min angle 14.9 at 1 degree: rounded points);
+    // Shewchuk's rule for rejected circumcenters at small angles stops that.
+    for (const double degrees : {1.0, 0.3, 0.05}) {
+        const double t = std::tan(degrees * std::numbers::pi / 180);
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {0.2, 0.5, 0.9, 0.5, 0.9, 0.5 + 0.7 * t});
+        in.segments.insert(in.segments.end(), {4, 5, 4, 6});
+        const Refined r = refine(in, 20.7, {}, false);  // slits: no even-odd test
+        ASSERT_TRUE(r.check.ok) << degrees << ": " << r.check.problem;
+        // The apex keeps its small angle (no rounded points around it), and the mesh stays small.
+        EXPECT_NEAR(r.check.min_angle, degrees, 1e-6) << degrees;
+        EXPECT_LT(r.result.mesh.mesh.triangle_count(), 20000u) << degrees;
+        EXPECT_GT(r.result.counters.small_angle_skips, 0u) << degrees;
+        double closest = INFINITY;  // no vertex crowds the apex
+        const tri::Triangulation2& m = r.result.mesh.mesh;
+        for (tri::VertIdx v = 0; v < m.vertex_count(); ++v) {
+            if (v == 4) continue;
+            closest = std::min(closest, std::hypot(m.point(v)[0] - 0.2, m.point(v)[1] - 0.5));
+        }
+        EXPECT_GT(closest, 1e-3) << degrees;
+    }
+}
+
+TEST(Generators_DelaunayRefinement, RandomPslgsGiveValidMeshesOrAClearError) {
+    // The constrained Delaunay test distributions (crossings, overlaps, duplicates, small angles):
+    // every run ends with a valid mesh, or with GeometryError only where the constrained
+    // triangulation itself holds features at the resolution of doubles (grid-lines: a rounded
+    // crossing one ulp from a lattice vertex), or InputError when nothing is enclosed.
+    std::size_t meshed = 0;
+    for (const auto d : gen::kAllPslgDistributions) {
+        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+            const gen::PslgInput p = gen::generate_pslg(d, 60, 30, seed);
+            const Input in{p.xy, p.segments, p.holes, {}};
+            gen::RefinementOptions2 options;
+            try {
+                const auto result = gen::delaunay_refinement_2d(in.pslg(), options);
+                const auto report = tri::check_constrained_delaunay_2d(
+                    result.mesh.mesh, result.mesh.input_vertex_count, in.segments, result.mesh.pieces);
+                EXPECT_TRUE(report.ok) << gen::pslg_distribution_name(d) << " seed " << seed << ": " << report.problem;
+                ++meshed;
+            } catch (const em::InputError&) {
+            } catch (const em::GeometryError& error) {
+                EXPECT_EQ(d, gen::PslgDistribution::GridLines) << seed << ": " << error.what();
+            }
+        }
+    }
+    EXPECT_GT(meshed, 10u);
+}
+
+TEST(Generators_DelaunayRefinement, UlpWideFeatureOfTheTriangulationIsReported) {
+    // grid-lines seed 10: a piece of an overlapping diagonal, bent at a rounded crossing, crosses
+    // y = 4 at (2 - 2^-51, 4), one ulp from the lattice vertex (2, 4): no mesh can resolve that gap.
+    const gen::PslgInput p = gen::generate_pslg(gen::PslgDistribution::GridLines, 60, 30, 10);
+    const Input in{p.xy, p.segments, p.holes, {}};
+    try {
+        gen::delaunay_refinement_2d(in.pslg());
+        FAIL() << "no GeometryError";
+    } catch (const em::GeometryError& error) {
+        const std::string what = error.what();
+        EXPECT_TRUE(what.find("too short to split") != std::string::npos ||
+                    what.find("finer than double precision") != std::string::npos)
+            << what;
+    }
+}
+
+TEST(Generators_DelaunayRefinement, NonPositiveSizeIsAnInputError) {
+    gen::RefinementOptions2 options;
+    options.size = gen::SizeFunction::analytic([](double x, double) { return x - 0.5; }, "x - 0.5");
+    EXPECT_THROW(gen::delaunay_refinement_2d(polygon({0, 0, 1, 0, 1, 1, 0, 1}).pslg(), options), em::InputError);
+}

@@ -1,0 +1,262 @@
+// SPDX-License-Identifier: MIT
+// Exact dihedral-angle and volume-edge comparisons (see angles_3d.hpp).
+//
+// Filter. Every polynomial is evaluated in long double (64-bit significand, u = 2^-64, exponent
+// range to 2^16383 on x86-64) from the coordinate differences, alongside its "magnitude": the
+// same expression evaluated on the absolute values with every subtraction made an addition, and
+// the number k of roundings any of its monomials goes through (a difference of two doubles is
+// one; a sum adds one to the larger count of its operands; a product adds the two counts and
+// one). By the standard forward error analysis of sums of products [Higham, "Accuracy and
+// Stability of Numerical Algorithms", §3.1], |fl(E) - E| <= gamma_k M with M the exact
+// magnitude, and the computed magnitude is at least M (1 - u)^k (nonnegative terms only), so
+// |fl(E) - E| <= gamma_k / (1 - u)^k fl(M) <= (k + 1) u fl(M) for k <= 100; the filter
+// certifies the sign when |fl(E)| > 2 (k + 1) u fl(M) (the factor 2 absorbs the rounding of the
+// bound itself). The counts stay below 60 here.
+// The window: every nonzero difference has magnitude in [2^-500, 2^500]. Then no operation
+// overflows (degree <= 16: below 2^8100 with every term count) and none underflows: a nonzero
+// sum of two long doubles is at least 2^-64 times the smaller operand, and the deepest
+// expression has fewer than 30 sums on any path, so every nonzero intermediate exceeds
+// 2^(-16*500 - 64*30) > 2^-10000, far above the smallest normal 2^-16382. Outside the window,
+// when long double is not the 80-bit format, or when the filter is inconclusive: GMP rationals.
+#include "triangulation/angles_3d.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "predicates/exact_reference.hpp"
+
+namespace exactmesh::triangulation {
+
+namespace {
+
+using predicates::Sign;
+
+constexpr bool kLongDoubleFilter = std::numeric_limits<long double>::digits >= 64 &&
+                                   std::numeric_limits<long double>::max_exponent >= 16384;
+constexpr long double kUnit = std::numeric_limits<long double>::epsilon() / 2;  // 2^-64
+constexpr long double kWindowLow = 0x1p-500L;
+constexpr long double kWindowHigh = 0x1p500L;
+
+/// A value with its magnitude and rounding count (header comment).
+struct Approx {
+    long double value;
+    long double magnitude;
+    int roundings;
+};
+
+Approx operator+(const Approx& a, const Approx& b) {
+    return {a.value + b.value, a.magnitude + b.magnitude, std::max(a.roundings, b.roundings) + 1};
+}
+Approx operator-(const Approx& a, const Approx& b) {
+    return {a.value - b.value, a.magnitude + b.magnitude, std::max(a.roundings, b.roundings) + 1};
+}
+Approx operator*(const Approx& a, const Approx& b) {
+    return {a.value * b.value, a.magnitude * b.magnitude, a.roundings + b.roundings + 1};
+}
+
+/// The certified sign, or Zero with `certain` false when the filter cannot tell.
+Sign filtered_sign(const Approx& a, bool& certain) {
+    if (a.magnitude == 0) return Sign::Zero;  // every monomial vanishes: exactly zero
+    const long double bound = 2 * static_cast<long double>(a.roundings + 1) * kUnit * a.magnitude;
+    if (a.value > bound) return Sign::Positive;
+    if (a.value < -bound) return Sign::Negative;
+    certain = false;
+    return Sign::Zero;
+}
+
+struct Vector3 {
+    Approx x, y, z;
+};
+
+/// p - o in long double; `in_window` turns false when a nonzero difference leaves the window.
+Vector3 difference(const double* p, const double* o, bool& in_window) {
+    Vector3 r;
+    Approx* c[3] = {&r.x, &r.y, &r.z};
+    for (int i = 0; i < 3; ++i) {
+        const long double d = static_cast<long double>(p[i]) - static_cast<long double>(o[i]);
+        const long double m = std::fabs(d);
+        if (m != 0 && (m < kWindowLow || m > kWindowHigh)) in_window = false;
+        *c[i] = {d, m, 1};
+    }
+    return r;
+}
+
+Vector3 cross(const Vector3& a, const Vector3& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+Approx dot(const Vector3& a, const Vector3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+/// The pieces of a dihedral angle: d = n1 . n2 and N = |n1|^2 |n2|^2.
+struct DihedralTerms {
+    Approx d, norms;
+};
+
+DihedralTerms dihedral_terms(const Dihedral& a, bool& in_window) {
+    unsigned k = 0;
+    while (k == a.i || k == a.j) ++k;
+    unsigned l = k + 1;
+    while (l == a.i || l == a.j) ++l;
+    const double* o = a.p[a.i];
+    const Vector3 e = difference(a.p[a.j], o, in_window);
+    const Vector3 u = difference(a.p[k], o, in_window);
+    const Vector3 w = difference(a.p[l], o, in_window);
+    const Vector3 n1 = cross(e, u), n2 = cross(e, w);
+    return {dot(n1, n2), dot(n1, n1) * dot(n2, n2)};
+}
+
+using predicates::reference::exact;
+
+struct ExactVector {
+    mpq_class x, y, z;
+};
+ExactVector exact_difference(const double* p, const double* o) {
+    return {exact(p[0]) - exact(o[0]), exact(p[1]) - exact(o[1]), exact(p[2]) - exact(o[2])};
+}
+ExactVector exact_cross(const ExactVector& a, const ExactVector& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+mpq_class exact_dot(const ExactVector& a, const ExactVector& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+void exact_dihedral_terms(const Dihedral& a, mpq_class& d, mpq_class& norms) {
+    unsigned k = 0;
+    while (k == a.i || k == a.j) ++k;
+    unsigned l = k + 1;
+    while (l == a.i || l == a.j) ++l;
+    const double* o = a.p[a.i];
+    const ExactVector e = exact_difference(a.p[a.j], o);
+    const ExactVector n1 = exact_cross(e, exact_difference(a.p[k], o));
+    const ExactVector n2 = exact_cross(e, exact_difference(a.p[l], o));
+    d = exact_dot(n1, n2);
+    norms = exact_dot(n1, n1) * exact_dot(n2, n2);
+}
+
+/// sign(cos a - cos b) from the signs of d_a, d_b and of X = d_a^2 N_b - d_b^2 N_a.
+Sign cosine_order(Sign da, Sign db, Sign x) {
+    if (da != db) return to_int(da) > to_int(db) ? Sign::Positive : Sign::Negative;
+    if (da == Sign::Zero) return Sign::Zero;
+    return da == Sign::Positive ? x : -x;
+}
+
+/// D = 6 x volume and L = sum of squared edge lengths.
+struct VolumeEdgeTerms {
+    Approx volume6, lengths;
+};
+
+VolumeEdgeTerms volume_edge_terms(const TetCorners& p, bool& in_window) {
+    const Vector3 a = difference(p[1], p[0], in_window);
+    const Vector3 b = difference(p[2], p[0], in_window);
+    const Vector3 c = difference(p[3], p[0], in_window);
+    const Vector3 bc = difference(p[2], p[1], in_window);
+    const Vector3 bd = difference(p[3], p[1], in_window);
+    const Vector3 cd = difference(p[3], p[2], in_window);
+    // orient3d(p0, p1, p2, p3) = det[p0 - p3; p1 - p3; p2 - p3] = -det[a; b; c].
+    const Approx det = dot(a, cross(b, c));
+    const Approx volume6{-det.value, det.magnitude, det.roundings};
+    return {volume6, ((dot(a, a) + dot(b, b)) + (dot(c, c) + dot(bc, bc))) + (dot(bd, bd) + dot(cd, cd))};
+}
+
+void exact_volume_edge_terms(const TetCorners& p, mpq_class& volume6, mpq_class& lengths) {
+    const ExactVector a = exact_difference(p[1], p[0]), b = exact_difference(p[2], p[0]),
+                      c = exact_difference(p[3], p[0]), bc = exact_difference(p[2], p[1]),
+                      bd = exact_difference(p[3], p[1]), cd = exact_difference(p[3], p[2]);
+    volume6 = -exact_dot(a, exact_cross(b, c));
+    lengths = exact_dot(a, a) + exact_dot(b, b) + exact_dot(c, c) + exact_dot(bc, bc) + exact_dot(bd, bd) +
+              exact_dot(cd, cd);
+}
+
+constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+}  // namespace
+
+Sign compare_dihedral(const Dihedral& a, const Dihedral& b) {
+    if constexpr (kLongDoubleFilter) {
+        bool in_window = true;
+        const DihedralTerms ta = dihedral_terms(a, in_window);
+        const DihedralTerms tb = dihedral_terms(b, in_window);
+        if (in_window) {
+            bool certain = true;
+            const Sign da = filtered_sign(ta.d, certain);
+            const Sign db = filtered_sign(tb.d, certain);
+            Sign x = Sign::Zero;
+            if (certain && da == db && da != Sign::Zero) {
+                x = filtered_sign(ta.d * ta.d * tb.norms - tb.d * tb.d * ta.norms, certain);
+            }
+            if (certain) return -cosine_order(da, db, x);
+        }
+    }
+    mpq_class da, na, db, nb;
+    exact_dihedral_terms(a, da, na);
+    exact_dihedral_terms(b, db, nb);
+    const Sign sa = predicates::reference::sign_of(da), sb = predicates::reference::sign_of(db);
+    const Sign x = predicates::reference::sign_of(da * da * nb - db * db * na);
+    return -cosine_order(sa, sb, x);
+}
+
+Dihedral smallest_dihedral(const TetCorners& p) {
+    Dihedral best{p, 0, 1};
+    for (int e = 1; e < 6; ++e) {
+        const Dihedral candidate{p, kEdges[e][0], kEdges[e][1]};
+        if (compare_dihedral(candidate, best) == Sign::Negative) best = candidate;
+    }
+    return best;
+}
+
+Dihedral largest_dihedral(const TetCorners& p) {
+    Dihedral best{p, 0, 1};
+    for (int e = 1; e < 6; ++e) {
+        const Dihedral candidate{p, kEdges[e][0], kEdges[e][1]};
+        if (compare_dihedral(candidate, best) == Sign::Positive) best = candidate;
+    }
+    return best;
+}
+
+Sign compare_volume_edge(const TetCorners& a, const TetCorners& b) {
+    if constexpr (kLongDoubleFilter) {
+        bool in_window = true;
+        const VolumeEdgeTerms ta = volume_edge_terms(a, in_window);
+        const VolumeEdgeTerms tb = volume_edge_terms(b, in_window);
+        if (in_window) {
+            bool certain = true;
+            const Approx la3 = ta.lengths * ta.lengths * ta.lengths;
+            const Approx lb3 = tb.lengths * tb.lengths * tb.lengths;
+            const Sign s = filtered_sign(ta.volume6 * ta.volume6 * lb3 - tb.volume6 * tb.volume6 * la3, certain);
+            if (certain) return s;
+        }
+    }
+    mpq_class va, la, vb, lb;
+    exact_volume_edge_terms(a, va, la);
+    exact_volume_edge_terms(b, vb, lb);
+    return predicates::reference::sign_of(va * va * lb * lb * lb - vb * vb * la * la * la);
+}
+
+long double dihedral_radians(const Dihedral& a) {
+    unsigned k = 0;
+    while (k == a.i || k == a.j) ++k;
+    unsigned l = k + 1;
+    while (l == a.i || l == a.j) ++l;
+    auto diff = [](const double* p, const double* o) {
+        return std::array<long double, 3>{static_cast<long double>(p[0]) - o[0], static_cast<long double>(p[1]) - o[1],
+                                          static_cast<long double>(p[2]) - o[2]};
+    };
+    auto crs = [](const std::array<long double, 3>& x, const std::array<long double, 3>& y) {
+        return std::array<long double, 3>{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
+                                          x[0] * y[1] - x[1] * y[0]};
+    };
+    auto dt = [](const std::array<long double, 3>& x, const std::array<long double, 3>& y) {
+        return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+    };
+    const auto e = diff(a.p[a.j], a.p[a.i]), u = diff(a.p[k], a.p[a.i]), w = diff(a.p[l], a.p[a.i]);
+    // |n1 x n2| = |e| |det(e, u, w)| (since (e x u) x (e x w) = det(e, u, w) e).
+    const long double sine = std::sqrt(dt(e, e)) * std::fabs(dt(e, crs(u, w)));
+    return std::atan2(sine, dt(crs(e, u), crs(e, w)));
+}
+
+long double volume_edge_quality(const TetCorners& p) {
+    bool in_window = true;
+    const VolumeEdgeTerms t = volume_edge_terms(p, in_window);
+    const long double l = t.lengths.value;
+    if (!(l > 0)) return 0;
+    return 12.0L * std::sqrt(3.0L) * t.volume6.value / (l * std::sqrt(l));
+}
+
+}  // namespace exactmesh::triangulation

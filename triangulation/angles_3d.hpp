@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Exact comparisons of tetrahedron dihedral angles and of the volume-edge quality, the
+// decisions behind the quality criteria of edge_face_swap_3d. Nothing is compared after
+// rounding: the dihedral angle at edge (pi, pj) of a tetrahedron with other vertices pk, pl is
+// the angle between n1 = e x u and n2 = e x w (e = pj - pi, u = pk - pi, w = pl - pi), whose
+// cosine d / sqrt(N) (d = n1 . n2, N = |n1|^2 |n2|^2) is strictly decreasing on (0, pi); so
+// theta1 < theta2 exactly when d1 / sqrt(N1) > d2 / sqrt(N2), decided from the signs of d1, d2
+// and of d1^2 N2 - d2^2 N1 (degree 16 in coordinate differences). The volume-edge quality
+// q = 12 sqrt(3) D / L^(3/2) (D = 6 x volume, L = sum of the squared edge lengths; 1 for the
+// regular tetrahedron, 0 when flat) compares by the sign of D1^2 L2^3 - D2^2 L1^3 (degree 12).
+// Stages: long double evaluation with a running forward error bound (angles_3d.cpp), then GMP.
+#pragma once
+
+#include <array>
+
+#include "predicates/sign.hpp"
+
+namespace exactmesh::triangulation {
+
+/// Four corner pointers (3 doubles each, finite) of a tetrahedron, positively oriented.
+using TetCorners = std::array<const double*, 4>;
+
+/// The dihedral angle of tetrahedron `p` at its edge (p[i], p[j]), i != j.
+struct Dihedral {
+    TetCorners p;
+    unsigned i, j;
+};
+
+/// Sign of angle(a) - angle(b), exact. @pre both tetrahedra non-degenerate.
+predicates::Sign compare_dihedral(const Dihedral& a, const Dihedral& b);
+
+/// The smallest (largest) of the six dihedral angles of `p`; ties go to the first edge in the
+/// order (0,1), (0,2), (0,3), (1,2), (1,3), (2,3).
+Dihedral smallest_dihedral(const TetCorners& p);
+Dihedral largest_dihedral(const TetCorners& p);
+
+/// Sign of q(a) - q(b) for the volume-edge quality, exact. @pre both positively oriented.
+predicates::Sign compare_volume_edge(const TetCorners& a, const TetCorners& b);
+
+/// The dihedral angle in radians, rounded (reports and statistics, never decisions):
+/// atan2(|e| |det(e, u, w)|, n1 . n2) in long double.
+long double dihedral_radians(const Dihedral& a);
+
+/// q = 12 sqrt(3) D / L^(3/2) in long double (1 for the regular tetrahedron), rounded.
+long double volume_edge_quality(const TetCorners& p);
+
+}  // namespace exactmesh::triangulation
