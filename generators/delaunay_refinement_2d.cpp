@@ -167,17 +167,19 @@ void Refiner::check_domain_and_budget() {
             }
         }
     }
-    // Room for the expected mesh, capped: a hint. Refinement makes about twice the ideal count
-    // of equilateral triangles, with half as many vertices as triangles.
-    const double expected_vertices = std::min(1.1 * estimate, 2e8) + static_cast<double>(mesh_.vertex_count());
-    cdt_.reserve(static_cast<std::uint32_t>(expected_vertices));
-    version_.reserve(static_cast<std::size_t>(2 * expected_vertices));
-    seen_.reserve(static_cast<std::size_t>(2 * expected_vertices));
-    on_segment_.reserve(static_cast<std::size_t>(expected_vertices));
     const double features = static_cast<double>(initial_vertices_) + static_cast<double>(mesh_.triangle_slots());
     budget_ = options_.max_steiner_points != 0
                   ? options_.max_steiner_points
                   : static_cast<std::uint64_t>(std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
+    // Room for the expected mesh: refinement makes about twice the ideal count of equilateral
+    // triangles, with half as many vertices as triangles. A hint only, so capped at the budget
+    // and at 2^21 vertices (about 200 MB reserved); beyond that the arrays grow as they go.
+    const double expected_vertices = std::min({1.1 * estimate, static_cast<double>(budget_), 0x1p21}) +
+                                     static_cast<double>(mesh_.vertex_count());
+    cdt_.reserve(static_cast<std::uint32_t>(expected_vertices));
+    version_.reserve(static_cast<std::size_t>(2 * expected_vertices));
+    seen_.reserve(static_cast<std::size_t>(2 * expected_vertices));
+    on_segment_.reserve(static_cast<std::size_t>(expected_vertices));
 }
 
 void Refiner::find_small_input_angles() {

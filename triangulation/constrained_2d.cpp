@@ -771,7 +771,9 @@ void CdtBuilder::remove_exterior_and_holes() {
     removed_.assign(mesh_.triangle_slots(), 0);
     const bool any_segment = std::any_of(segment_of_.begin(), segment_of_.end(),
                                          [](std::uint32_t s) { return s != kNone; });
-    if (options_.remove_exterior && any_segment) {
+    // Without a segment the exterior is nothing (the convex hull is kept, as Triangle keeps it),
+    // except around an enclosing box, whose triangles are never the domain.
+    if (options_.remove_exterior && (any_segment || enclose_in_box_)) {
         for (TriIdx t = 0; t < mesh_.triangle_slots(); ++t) {
             if (mesh_.is_dead(t) || !mesh_.is_infinite(t)) continue;
             for (unsigned k = 0; k < 3; ++k) {

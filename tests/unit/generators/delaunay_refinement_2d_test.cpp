@@ -352,3 +352,15 @@ TEST(Generators_DelaunayRefinement, NonPositiveSizeIsAnInputError) {
     options.size = gen::SizeFunction::analytic([](double x, double) { return x - 0.5; }, "x - 0.5");
     EXPECT_THROW(gen::delaunay_refinement_2d(polygon({0, 0, 1, 0, 1, 1, 0, 1}).pslg(), options), em::InputError);
 }
+
+TEST(Generators_DelaunayRefinement, NoSegmentEnclosesNothing) {
+    // Fuzz input: every segment has zero length (dropped), so nothing is enclosed; the box
+    // around the input must not become the domain (it did: triangles named a box corner).
+    Input in;
+    in.xy = {2, 2, 2, 2, 2, 2, 2, 4, 3, -3, -3, -2};
+    in.segments = {3, 3, 3, 3};
+    EXPECT_THROW(gen::delaunay_refinement_2d(in.pslg()), em::InputError);
+    Input points_only;
+    points_only.xy = {0, 0, 1, 0, 0, 1, 1, 1};
+    EXPECT_THROW(gen::delaunay_refinement_2d(points_only.pslg()), em::InputError);
+}
