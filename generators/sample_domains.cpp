@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "generators/domain_boundary_2d.hpp"
 #include "predicates/errors.hpp"
 
 namespace exactmesh::generators {
@@ -16,50 +17,6 @@ namespace exactmesh::generators {
 namespace {
 
 using Point = std::array<double, 2>;
-using Curve = std::function<Point(double)>;
-
-/// Points of curve(u), u in [u0, u1], both ends included, spaced so that the integral of
-/// ds / size between neighbours is equal and at most 1 (at least min_pieces pieces). The
-/// integral is taken over a fine polyline of the curve (at least 8 samples per piece).
-std::vector<Point> discretize(const Curve& curve, double u0, double u1, const SizeFunction& size, int min_pieces) {
-    int samples = 4096;
-    for (;;) {
-        std::vector<double> u(static_cast<std::size_t>(samples) + 1), cumulative(u.size(), 0.0);
-        Point previous = curve(u0);
-        u[0] = u0;
-        for (int i = 1; i <= samples; ++i) {
-            u[static_cast<std::size_t>(i)] = u0 + (u1 - u0) * i / samples;
-            const Point p = curve(u[static_cast<std::size_t>(i)]);
-            const double s = size(0.5 * (p[0] + previous[0]), 0.5 * (p[1] + previous[1]));
-            const double ds = std::hypot(p[0] - previous[0], p[1] - previous[1]);
-            cumulative[static_cast<std::size_t>(i)] = cumulative[static_cast<std::size_t>(i) - 1] + (std::isfinite(s) ? ds / s : 0.0);
-            previous = p;
-        }
-        const double total = cumulative.back();
-        const int pieces = std::max(min_pieces, static_cast<int>(std::ceil(total - 1e-9)));
-        if (pieces * 8 > samples && samples < (1 << 24)) {
-            samples = std::min(1 << 24, pieces * 16);
-            continue;
-        }
-        std::vector<Point> points{curve(u0)};
-        std::size_t i = 0;
-        for (int k = 1; k < pieces; ++k) {
-            const double target = total > 0 ? total * k / pieces : 0.0;
-            double parameter;
-            if (total > 0) {
-                while (i + 1 < cumulative.size() && cumulative[i + 1] < target) ++i;
-                const double span = cumulative[i + 1] - cumulative[i];
-                const double f = span > 0 ? (target - cumulative[i]) / span : 0.0;
-                parameter = u[i] + f * (u[i + 1] - u[i]);
-            } else {
-                parameter = u0 + (u1 - u0) * k / pieces;
-            }
-            points.push_back(curve(parameter));
-        }
-        points.push_back(curve(u1));
-        return points;
-    }
-}
 
 class Builder {
 public:
@@ -82,7 +39,7 @@ public:
         for (std::uint32_t k = 0; k < n; ++k) segment(first + k, first + (k + 1) % n);
     }
     void circle_hole(Point centre, double radius, const SizeFunction& size) {
-        auto points = discretize(
+        auto points = discretize_curve(
             [&](double u) { return Point{centre[0] + radius * std::cos(u), centre[1] + radius * std::sin(u)}; }, 0.0,
             2 * std::numbers::pi, size, 8);
         points.pop_back();  // u = 2 pi is u = 0
@@ -108,7 +65,7 @@ DomainPslg naca0012(const SizeFunction& size) {
     // From the trailing edge (x = 1) to the leading edge (x = 0) on both surfaces, with
     // x = (1 + cos beta) / 2, which gives the fine sampling its cosine clustering at both ends.
     auto surface = [&](double sign) {
-        return discretize(
+        return discretize_curve(
             [sign](double beta) {
                 const double x = 0.5 * (1 + std::cos(beta));
                 return Point{x, sign * naca_thickness(0.12, x)};
@@ -140,7 +97,7 @@ DomainPslg key(const SizeFunction& size) {
     outline.insert(outline.end(), teeth.begin(), teeth.end());
     // The ring's outer arc from angle -a0 down through pi back to a0 - 2 pi, i.e. (cut, -h) to
     // (cut, h) the long way round; both ends are already there.
-    const auto arc = discretize([r](double u) { return Point{r * std::cos(u), r * std::sin(u)}; }, -a0,
+    const auto arc = discretize_curve([r](double u) { return Point{r * std::cos(u), r * std::sin(u)}; }, -a0,
                                 a0 - 2 * std::numbers::pi, size, 16);
     outline.push_back({cut, -h});
     for (std::size_t k = 1; k + 1 < arc.size(); ++k) outline.push_back(arc[k]);

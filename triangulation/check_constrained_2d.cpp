@@ -26,9 +26,11 @@ CheckReport fail(std::string problem, TriIdx t = kNone, std::vector<VertIdx> ver
 
 }  // namespace
 
-CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
-                                          std::span<const VertIdx> segments, std::span<const VertIdx> pieces,
-                                          CheckNumbering numbering) {
+namespace detail {
+
+CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
+                                      std::span<const VertIdx> segments, std::span<const VertIdx> pieces,
+                                      CheckNumbering numbering, bool delaunay) {
     const std::uint32_t n = mesh.vertex_count();
     const TriIdx count = mesh.triangle_count();
     const auto& tv = mesh.triangles;
@@ -64,7 +66,7 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
             }
         }
     }
-    // Flags symmetric; unconstrained interior edges locally Delaunay.
+    // Flags symmetric; unconstrained interior edges locally Delaunay (when asked).
     for (TriIdx t = 0; t < count; ++t) {
         for (unsigned k = 0; k < 3; ++k) {
             const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3], c = tv[3 * t + (k + 2) % 3];
@@ -75,7 +77,7 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
             if (constrained != mesh.is_constrained(triangle_of(f), static_cast<int>(f % 3))) {
                 return fail("edge " + vertex(a) + " - " + vertex(b) + " is constrained on one side only", t, {a, b});
             }
-            if (constrained || a > b) continue;
+            if (!delaunay || constrained || a > b) continue;
             const VertIdx d = tv[3 * triangle_of(f) + (f % 3 + 2) % 3];
             if (predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d)) == Sign::Positive) {
                 return fail("unconstrained edge " + vertex(a) + " - " + vertex(b) + " is not locally Delaunay: vertex " +
@@ -230,6 +232,14 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
         }
     }
     return {};
+}
+
+}  // namespace detail
+
+CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
+                                          std::span<const VertIdx> segments, std::span<const VertIdx> pieces,
+                                          CheckNumbering numbering) {
+    return detail::check_constrained_mesh_2d(mesh, input_vertex_count, segments, pieces, numbering, true);
 }
 
 }  // namespace exactmesh::triangulation

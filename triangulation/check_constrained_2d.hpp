@@ -38,4 +38,12 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint3
                                           std::span<const VertIdx> pieces = {},
                                           CheckNumbering numbering = {});
 
+namespace detail {
+/// check_constrained_delaunay_2d; with delaunay false, without the locally-Delaunay test
+/// (check_conforming_mesh_2d adds its own tests).
+CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
+                                      std::span<const VertIdx> segments, std::span<const VertIdx> pieces,
+                                      CheckNumbering numbering, bool delaunay);
+}  // namespace detail
+
 }  // namespace exactmesh::triangulation

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Checks of a 2D quality mesh of a PSLG domain, for the generator tests (ours and CGAL's
-// output alike): exact constrained Delaunay with every segment a chain of pieces (triangulation/
+// output alike): exact constrained Delaunay (or, for generators that do not promise it, exact
+// validity without folds: check_conforming_mesh_2d) with every segment a chain of pieces (triangulation/
 // check_constrained_2d), no triangle outside the domain (its centroid inside by the even-odd
 // rule against the input segments, decided with exact orient2d, or within the rounding a piece
 // may bend by from a segment), the triangulated region closed
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "predicates/orient2d.hpp"
+#include "triangulation/check_conforming_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
 
@@ -74,15 +76,20 @@ struct MeshCheck {
 /// takes them; `size` may be empty (no size ratio).
 /// `closed_loops`: the segments form closed loops only (the even-odd test applies); false for
 /// inputs with dangling (slit) segments, which skip the outside test.
+/// `delaunay`: false for generators whose meshes need not be Delaunay (quadtree, advancing
+/// front): then check_conforming_mesh_2d (no fold at any vertex) replaces the Delaunay check.
 inline MeshCheck check_quality_mesh(const triangulation::Triangulation2& mesh, std::uint32_t input_vertex_count,
                                     std::span<const double> input_xy, std::span<const std::uint32_t> segments,
                                     std::span<const std::uint32_t> pieces,
-                                    const std::function<double(double, double)>& size = {}, bool closed_loops = true) {
+                                    const std::function<double(double, double)>& size = {}, bool closed_loops = true,
+                                    bool delaunay = true) {
     MeshCheck r;
-    const auto report = triangulation::check_constrained_delaunay_2d(mesh, input_vertex_count, segments, pieces);
+    const auto report =
+        delaunay ? triangulation::check_constrained_delaunay_2d(mesh, input_vertex_count, segments, pieces)
+                 : triangulation::check_conforming_mesh_2d(mesh, input_vertex_count, segments, pieces);
     if (!report.ok) {
         r.ok = false;
-        r.problem = "not constrained Delaunay: " + report.problem;
+        r.problem = (delaunay ? "not constrained Delaunay: " : "not a valid mesh of the domain: ") + report.problem;
         return r;
     }
     if (mesh.triangle_count() == 0) {

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// The domain's boundary as the frontal and quadtree generators start from it (issue 6):
+//  - the constrained Delaunay triangulation of the input PSLG (duplicates merged, crossing
+//    segments split, exterior and holes removed as Triangle's -p does): the domain itself, kept
+//    for exact point-in-domain queries;
+//  - its boundary pieces split so that each is about as long as the size function wants: the
+//    integral of ds / s over each piece is equal along a piece of the input and at most 1 (whole
+//    pieces), new points by linear interpolation, rounded (within 2^-52 relative of the line,
+//    which the checks allow);
+//  - the directed front: every piece with the domain on its left (both directions for a slit:
+//    a segment with the domain on both sides).
+// Also discretize_curve, the same spacing rule along any parametric curve (sample domains).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "generators/size_function.hpp"
+#include "triangulation/constrained_2d.hpp"
+
+namespace exactmesh::generators {
+
+/// Exact point-in-domain queries over a triangulation of the domain: a uniform grid of buckets
+/// holding the triangles whose bounding box meets them, then exact orient2d tests.
+class DomainLocator2 {
+public:
+    DomainLocator2() = default;
+    explicit DomainLocator2(const triangulation::Triangulation2& mesh);
+    /// A triangle of `mesh` (the one given to the constructor, unchanged) containing (x, y)
+    /// (closed), or kNone when no triangle does.
+    triangulation::TriIdx locate(const triangulation::Triangulation2& mesh, double x, double y) const;
+
+private:
+    double x0_ = 0, y0_ = 0, cell_ = 1;
+    std::uint32_t columns_ = 0, rows_ = 0;
+    std::vector<std::uint32_t> start_;  // CSR over the cells
+    std::vector<triangulation::TriIdx> triangles_;
+    bool cell_of(double x, double y, std::uint32_t& column, std::uint32_t& row) const;
+};
+
+struct DomainBoundary2 {
+    /// The constrained Delaunay triangulation of the input PSLG (constrained_delaunay_2d:
+    /// duplicates merged, crossings split, exterior and holes removed): the domain.
+    triangulation::Cdt2Result cdt;
+    /// 2·#V: cdt.mesh.xy (input vertices keep their numbers, crossings after them), then the
+    /// points added on the boundary so that each boundary edge is about the size's length.
+    std::vector<double> xy;
+    std::uint32_t input_vertex_count = 0;
+    /// 2·#E directed boundary edges with the domain on their left (a slit gives both
+    /// directions); the initial front of the frontal generators.
+    std::vector<triangulation::VertIdx> front;
+    std::vector<std::uint32_t> front_segment;  ///< #E: the input segment of each front edge
+    /// 2·#P: the boundary pieces (each once, undirected) and their input segment.
+    std::vector<triangulation::VertIdx> pieces;
+    std::vector<std::uint32_t> piece_segment;
+    /// Over cdt.mesh (built last: the boundary must not move afterwards).
+    DomainLocator2 locator;
+};
+
+/// @param size the target edge length (unbounded: the pieces of the CDT are kept as they are).
+/// @throws InputError as constrained_delaunay_2d; InputError when the segments enclose no region.
+DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg, const SizeFunction& size,
+                                           const triangulation::Cdt2Options& cdt = {});
+
+/// True when (x, y) lies in the domain (closed), by exact orient2d tests on the CDT.
+bool in_domain(const DomainBoundary2& boundary, double x, double y);
+
+using Curve2 = std::function<std::array<double, 2>(double)>;
+
+/// Points of curve(u), u in [u0, u1], both ends included, spaced so that the integral of
+/// ds / size between neighbours is equal and at most 1 (at least min_pieces pieces); the
+/// integral is taken over a polyline of at least 8 samples per piece. An unbounded size gives
+/// min_pieces pieces equal in u.
+std::vector<std::array<double, 2>> discretize_curve(const Curve2& curve, double u0, double u1,
+                                                    const SizeFunction& size, int min_pieces);
+
+}  // namespace exactmesh::generators
