@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "generators/delaunay_refinement_2d.hpp"
+#include "generators/laplacian_smoothing_2d.hpp"
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
 #include "generators/size_function.hpp"
@@ -44,6 +45,7 @@ struct MeshArguments {
     double min_angle = gen::kGuaranteedMinAngle;
     std::string size;
     std::uint64_t max_steiner = 0;
+    std::uint32_t smooth = 0;
     bool quality = false;
     bool stats = false;
 };
@@ -84,6 +86,16 @@ void print_stats(const gen::RefinementCounters2& c, const tri::Cdt2Counters& cdt
               << "encroachment_tests: " << c.encroachment_tests << '\n';
     print_predicate_stats(stats);
     std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
+}
+
+void print_smoothing_stats(const gen::SmoothingCounters2& c, double seconds) {
+    std::cout << "smoothing_sweeps: " << c.sweeps << '\n'
+              << "smoothing_free_vertices: " << c.free_vertices << '\n'
+              << "smoothing_moves: " << c.moves << '\n'
+              << "smoothing_undone: " << c.undone << '\n'
+              << "smoothing_swaps: " << c.swaps << '\n'
+              << "smoothing_largest_move: " << c.largest_move << '\n'
+              << "smooth_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
 }
 
 void run_mesh(const MeshArguments& arguments) {
@@ -136,6 +148,19 @@ void run_mesh(const MeshArguments& arguments) {
     const predicates::PredicateStats stats = predicates::thread_stats();
     const double seconds = std::chrono::duration<double>(stop - start).count();
 
+    // Optional Laplacian smoothing, timed and reported apart from the generator.
+    gen::RefinementResult2 final_result = result;
+    gen::SmoothingCounters2 smoothing;
+    double smooth_seconds = 0;
+    if (arguments.smooth > 0) {
+        gen::SmoothingOptions2 smoothing_options;
+        smoothing_options.iterations = arguments.smooth;
+        const auto smooth_start = std::chrono::steady_clock::now();
+        smoothing = gen::laplacian_smoothing_2d(final_result.mesh.mesh, final_result.mesh.input_vertex_count,
+                                                smoothing_options);
+        smooth_seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - smooth_start).count();
+    }
     print_warnings(result.mesh.warnings);
     if (result.counters.unsplittable > 0) {
         std::cerr << "exactmesh: warning: " << result.counters.unsplittable
@@ -143,15 +168,24 @@ void run_mesh(const MeshArguments& arguments) {
     }
     char label[64];
     std::snprintf(label, sizeof label, " (delaunay-refinement, %g degrees)", arguments.min_angle);
-    write_constrained_result(result.mesh, files, format, base, title + label);
-    const tri::Triangulation2& mesh = result.mesh.mesh;
+    write_constrained_result(final_result.mesh, files, format, base, title + label);
+    const tri::Triangulation2& mesh = final_result.mesh.mesh;
     std::cout << "vertices: " << mesh.vertex_count() << '\n' << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.quality) {
         gen::QualityReport2 report = gen::quality_report_2d(mesh.xy, mesh.triangles, size);
         report.seconds = seconds;
         std::cout << gen::quality_report_text(report);
+        if (arguments.smooth > 0) {
+            const tri::Triangulation2& unsmoothed = result.mesh.mesh;
+            const gen::QualityReport2 before = gen::quality_report_2d(unsmoothed.xy, unsmoothed.triangles, size);
+            std::cout << "smoothing.min_angle_before: " << before.min_angle << '\n'
+                      << "smoothing.mean_min_angle_before: " << before.mean_min_angle << '\n';
+        }
     }
-    if (arguments.stats) print_stats(result.counters, result.mesh.counters, stats, seconds);
+    if (arguments.stats) {
+        print_stats(result.counters, result.mesh.counters, stats, seconds);
+        if (arguments.smooth > 0) print_smoothing_stats(smoothing, smooth_seconds);
+    }
 }
 
 }  // namespace
@@ -187,6 +221,11 @@ void add_mesh_command(CLI::App& app) {
         ->type_name("NUM|FILE");
     command->add_option("--max-steiner", arguments->max_steiner,
                         "Stop with an error after this many Steiner points (0: automatic)")
+        ->capture_default_str();
+    command->add_option("--smooth", arguments->smooth,
+                        "Laplacian smoothing sweeps after the generator (Jacobi formula, a move that would "
+                        "invert a triangle undone, Delaunay re-swapping after each sweep; boundary and input "
+                        "vertices fixed); timed apart as smooth_seconds")
         ->capture_default_str();
     command->add_flag("--quality", arguments->quality,
                       "Print the quality report: angles, angle histogram, radius-edge ratio, size conformity");

@@ -19,8 +19,8 @@ using Point = std::array<double, 2>;
 namespace {
 
 /// discretize_curve with a first sample count (doubled until there are 8 samples per piece).
-std::vector<Point> spaced_points(const Curve2& curve, double u0, double u1, const SizeFunction& size, int min_pieces,
-                                 int samples) {
+std::vector<Point> spaced_points(const Curve2& curve, double u0, double u1,
+                                 const SizeFunction& size, int min_pieces, int samples) {
     for (;;) {
         std::vector<double> u(static_cast<std::size_t>(samples) + 1), cumulative(u.size(), 0.0);
         Point previous = curve(u0);
@@ -36,10 +36,11 @@ std::vector<Point> spaced_points(const Curve2& curve, double u0, double u1, cons
         }
         const double total = cumulative.back();
         if (!std::isfinite(total) || total > double{1 << 30}) {
-            throw InputError("boundary discretization: the size function asks for more than 2^30 pieces on one "
-                             "curve or segment (size " +
-                             std::to_string(size(curve(u0)[0], curve(u0)[1])) + " near (" +
-                             std::to_string(curve(u0)[0]) + ", " + std::to_string(curve(u0)[1]) + "))");
+            throw InputError(
+                "boundary discretization: the size function asks for more than 2^30 pieces on one "
+                "curve or segment (size " +
+                std::to_string(size(curve(u0)[0], curve(u0)[1])) + " near (" +
+                std::to_string(curve(u0)[0]) + ", " + std::to_string(curve(u0)[1]) + "))");
         }
         const int pieces = std::max(min_pieces, static_cast<int>(std::ceil(total - 1e-9)));
         if (pieces * 8 > samples && samples < (1 << 24)) {
@@ -66,12 +67,14 @@ std::vector<Point> spaced_points(const Curve2& curve, double u0, double u1, cons
     }
 }
 
-std::uint64_t edge_key(tri::VertIdx a, tri::VertIdx b) { return (std::uint64_t{a} << 32) | b; }
+std::uint64_t edge_key(tri::VertIdx a, tri::VertIdx b) {
+    return (std::uint64_t{a} << 32) | b;
+}
 
 }  // namespace
 
-std::vector<Point> discretize_curve(const Curve2& curve, double u0, double u1, const SizeFunction& size,
-                                    int min_pieces) {
+std::vector<Point> discretize_curve(const Curve2& curve, double u0, double u1,
+                                    const SizeFunction& size, int min_pieces) {
     return spaced_points(curve, u0, u1, size, min_pieces, 4096);
 }
 
@@ -89,7 +92,8 @@ DomainLocator2::DomainLocator2(const tri::Triangulation2& mesh) {
     }
     // About one triangle per cell; widths in long double so that extents near the largest
     // double do not overflow.
-    const long double width = static_cast<long double>(x1) - x0_, height = static_cast<long double>(y1) - y0_;
+    const long double width = static_cast<long double>(x1) - x0_,
+                      height = static_cast<long double>(y1) - y0_;
     const long double extent = std::max(width, height);
     const double cells = std::max(1.0, std::sqrt(static_cast<double>(count)));
     cell_ = static_cast<double>(extent / cells);
@@ -97,12 +101,14 @@ DomainLocator2::DomainLocator2(const tri::Triangulation2& mesh) {
     columns_ = static_cast<std::uint32_t>(std::clamp<long double>(width / cell_, 0, 4095)) + 1;
     rows_ = static_cast<std::uint32_t>(std::clamp<long double>(height / cell_, 0, 4095)) + 1;
     start_.assign(std::size_t{columns_} * rows_ + 1, 0);
-    auto range = [&](tri::TriIdx t, std::uint32_t& c0, std::uint32_t& c1, std::uint32_t& r0, std::uint32_t& r1) {
+    auto range = [&](tri::TriIdx t, std::uint32_t& c0, std::uint32_t& c1, std::uint32_t& r0,
+                     std::uint32_t& r1) {
         c0 = r0 = std::numeric_limits<std::uint32_t>::max();
         c1 = r1 = 0;
         for (unsigned k = 0; k < 3; ++k) {
             std::uint32_t c, r;
-            cell_of(mesh.point(mesh.triangles[3 * t + k])[0], mesh.point(mesh.triangles[3 * t + k])[1], c, r);
+            cell_of(mesh.point(mesh.triangles[3 * t + k])[0],
+                    mesh.point(mesh.triangles[3 * t + k])[1], c, r);
             c0 = std::min(c0, c), c1 = std::max(c1, c), r0 = std::min(r0, r), r1 = std::max(r1, r);
         }
     };
@@ -131,8 +137,10 @@ DomainLocator2::DomainLocator2(const tri::Triangulation2& mesh) {
 }
 
 bool DomainLocator2::cell_of(double x, double y, std::uint32_t& column, std::uint32_t& row) const {
-    const long double fx = (static_cast<long double>(x) - x0_) / cell_, fy = (static_cast<long double>(y) - y0_) / cell_;
-    if (!(fx >= -1e-9L) || !(fy >= -1e-9L) || !(fx < columns_ + 1e-9L) || !(fy < rows_ + 1e-9L)) return false;
+    const long double fx = (static_cast<long double>(x) - x0_) / cell_,
+                      fy = (static_cast<long double>(y) - y0_) / cell_;
+    if (!(fx >= -1e-9L) || !(fy >= -1e-9L) || !(fx < columns_ + 1e-9L) || !(fy < rows_ + 1e-9L))
+        return false;
     column = static_cast<std::uint32_t>(std::clamp<long double>(fx, 0, columns_ - 1));
     row = static_cast<std::uint32_t>(std::clamp<long double>(fy, 0, rows_ - 1));
     return true;
@@ -145,7 +153,8 @@ tri::TriIdx DomainLocator2::locate(const tri::Triangulation2& mesh, double x, do
     const double p[2] = {x, y};
     // The point's cell; a point on a cell's border may be in a triangle listed only beside it.
     for (std::uint32_t r = row > 0 ? row - 1 : 0; r <= std::min(row + 1, rows_ - 1); ++r) {
-        for (std::uint32_t c = column > 0 ? column - 1 : 0; c <= std::min(column + 1, columns_ - 1); ++c) {
+        for (std::uint32_t c = column > 0 ? column - 1 : 0; c <= std::min(column + 1, columns_ - 1);
+             ++c) {
             const std::size_t cell = std::size_t{r} * columns_ + c;
             for (std::uint32_t i = start_[cell]; i < start_[cell + 1]; ++i) {
                 const tri::TriIdx t = triangles_[i];
@@ -170,38 +179,53 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
                                            const tri::Cdt2Options& cdt_options) {
     tri::Cdt2Options options = cdt_options;
     options.remove_exterior = true;
-    if (options.recovery == tri::SegmentRecovery::Conforming) options.recovery = tri::SegmentRecovery::Swap;
+    if (options.recovery == tri::SegmentRecovery::Conforming)
+        options.recovery = tri::SegmentRecovery::Swap;
     DomainBoundary2 boundary;
     boundary.cdt = tri::constrained_delaunay_2d(pslg, options);
     const tri::Triangulation2& mesh = boundary.cdt.mesh;
     if (mesh.triangle_count() == 0) {
-        throw InputError("the segments enclose no region (every triangle is outside the segments or in a hole)");
+        throw InputError(
+            "the segments enclose no region (every triangle is outside the segments or in a hole)");
     }
     boundary.xy = mesh.xy;
     boundary.input_vertex_count = boundary.cdt.input_vertex_count;
     std::unordered_set<std::uint64_t> directed;
     directed.reserve(mesh.triangles.size());
     for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
-        for (unsigned k = 0; k < 3; ++k) directed.insert(edge_key(mesh.triangles[3 * t + k], mesh.triangles[3 * t + (k + 1) % 3]));
+        for (unsigned k = 0; k < 3; ++k)
+            directed.insert(
+                edge_key(mesh.triangles[3 * t + k], mesh.triangles[3 * t + (k + 1) % 3]));
     }
     const auto& pieces = boundary.cdt.pieces;
     for (std::size_t p = 0; 2 * p + 1 < pieces.size(); ++p) {
         const tri::VertIdx a = pieces[2 * p], b = pieces[2 * p + 1];
         const std::uint32_t segment = boundary.cdt.piece_segment[p];
-        const bool left = directed.count(edge_key(a, b)) != 0, right = directed.count(edge_key(b, a)) != 0;
+        const bool left = directed.count(edge_key(a, b)) != 0,
+                   right = directed.count(edge_key(b, a)) != 0;
         std::vector<tri::VertIdx> chain{a};
         if (left || right) {
             // Split by the size function along the straight piece; the first sample count
             // estimated from the sizes at the ends and the middle.
-            const Point pa{mesh.point(a)[0], mesh.point(a)[1]}, pb{mesh.point(b)[0], mesh.point(b)[1]};
+            const Point pa{mesh.point(a)[0], mesh.point(a)[1]},
+                pb{mesh.point(b)[0], mesh.point(b)[1]};
             const Curve2 line = [&](double u) {
-                return u == 1.0 ? pb : Point{pa[0] + u * (pb[0] - pa[0]), pa[1] + u * (pb[1] - pa[1])};
+                return u == 1.0 ? pb
+                                : Point{pa[0] + u * (pb[0] - pa[0]), pa[1] + u * (pb[1] - pa[1])};
             };
             const double length = std::hypot(pb[0] - pa[0], pb[1] - pa[1]);
             const double smallest = std::min({size(pa[0], pa[1]), size(pb[0], pb[1]),
                                               size(0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]))});
             const double estimate = std::isfinite(smallest) ? length / smallest : 0.0;
-            const int samples = static_cast<int>(std::clamp(16 * estimate + 16, 16.0, double{1 << 24}));
+            if (!(estimate <= double{1 << 30})) {
+                throw InputError(
+                    "boundary discretization: the size function asks for more than 2^30 pieces on "
+                    "segment " +
+                    std::to_string(segment + options.first_index) + " (size " +
+                    std::to_string(smallest) + " along a length " + std::to_string(length) + ")");
+            }
+            const int samples =
+                static_cast<int>(std::clamp(16 * estimate + 16, 16.0, double{1 << 24}));
             const std::vector<Point> points = spaced_points(line, 0.0, 1.0, size, 1, samples);
             for (std::size_t k = 1; k + 1 < points.size(); ++k) {
                 if ((points[k][0] == points[k - 1][0] && points[k][1] == points[k - 1][1]) ||

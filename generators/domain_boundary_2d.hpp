@@ -25,14 +25,15 @@ namespace exactmesh::generators {
 /// Exact point-in-domain queries over a triangulation of the domain: a uniform grid of buckets
 /// holding the triangles whose bounding box meets them, then exact orient2d tests.
 class DomainLocator2 {
-public:
+  public:
     DomainLocator2() = default;
     explicit DomainLocator2(const triangulation::Triangulation2& mesh);
     /// A triangle of `mesh` (the one given to the constructor, unchanged) containing (x, y)
     /// (closed), or kNone when no triangle does.
-    triangulation::TriIdx locate(const triangulation::Triangulation2& mesh, double x, double y) const;
+    triangulation::TriIdx locate(const triangulation::Triangulation2& mesh, double x,
+                                 double y) const;
 
-private:
+  private:
     double x0_ = 0, y0_ = 0, cell_ = 1;
     std::uint32_t columns_ = 0, rows_ = 0;
     std::vector<std::uint32_t> start_;  // CSR over the cells
@@ -61,7 +62,8 @@ struct DomainBoundary2 {
 
 /// @param size the target edge length (unbounded: the pieces of the CDT are kept as they are).
 /// @throws InputError as constrained_delaunay_2d; InputError when the segments enclose no region.
-DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg, const SizeFunction& size,
+DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
+                                           const SizeFunction& size,
                                            const triangulation::Cdt2Options& cdt = {});
 
 /// True when (x, y) lies in the domain (closed), by exact orient2d tests on the CDT.

@@ -16,9 +16,10 @@ namespace tri = exactmesh::triangulation;
 tri::Cdt2Result domain_mesh_result(const DomainBoundary2& boundary, std::vector<double> xy,
                                    std::vector<tri::VertIdx> triangles) {
     if (xy.size() < boundary.xy.size() || triangles.size() % 3 != 0) {
-        throw InternalError("domain_mesh_result: " + std::to_string(xy.size() / 2) + " vertices (the boundary has " +
-                            std::to_string(boundary.xy.size() / 2) + "), " + std::to_string(triangles.size()) +
-                            " triangle indices");
+        throw InternalError("domain_mesh_result: " + std::to_string(xy.size() / 2) +
+                            " vertices (the boundary has " +
+                            std::to_string(boundary.xy.size() / 2) + "), " +
+                            std::to_string(triangles.size()) + " triangle indices");
     }
     const auto n = static_cast<tri::VertIdx>(xy.size() / 2);
     auto key = [](tri::VertIdx a, tri::VertIdx b) { return (std::uint64_t{a} << 32) | b; };
@@ -26,10 +27,12 @@ tri::Cdt2Result domain_mesh_result(const DomainBoundary2& boundary, std::vector<
     edge_of.reserve(triangles.size());
     for (std::size_t e = 0; e < triangles.size(); ++e) {
         const tri::VertIdx a = triangles[e], b = triangles[e - e % 3 + (e + 1) % 3];
-        if (a >= n || b >= n) throw InternalError("domain_mesh_result: a triangle names a vertex that does not exist");
+        if (a >= n || b >= n)
+            throw InternalError(
+                "domain_mesh_result: a triangle names a vertex that does not exist");
         if (!edge_of.emplace(key(a, b), static_cast<tri::EdgeIdx>(e)).second) {
-            throw InternalError("domain_mesh_result: edge " + std::to_string(a) + " -> " + std::to_string(b) +
-                                " is in two triangles");
+            throw InternalError("domain_mesh_result: edge " + std::to_string(a) + " -> " +
+                                std::to_string(b) + " is in two triangles");
         }
     }
     std::unordered_set<std::uint64_t> piece_set;

@@ -18,7 +18,8 @@ namespace exactmesh::generators {
 ///         input_vertex_count, merged_into, pieces and piece_segment from the boundary, the CDT's
 ///         warnings and counters.
 /// @throws InternalError when two triangles share a directed edge or an index is out of range.
-triangulation::Cdt2Result domain_mesh_result(const DomainBoundary2& boundary, std::vector<double> xy,
+triangulation::Cdt2Result domain_mesh_result(const DomainBoundary2& boundary,
+                                             std::vector<double> xy,
                                              std::vector<triangulation::VertIdx> triangles);
 
 }  // namespace exactmesh::generators

@@ -26,16 +26,18 @@ int half_of(const double* v, const double* a) {
 }  // namespace
 
 CheckReport check_conforming_mesh_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
-                                     std::span<const VertIdx> segments, std::span<const VertIdx> pieces,
-                                     CheckNumbering numbering) {
+                                     std::span<const VertIdx> segments,
+                                     std::span<const VertIdx> pieces, CheckNumbering numbering) {
     // Topology, flags and segment chains first (vertex indices are valid after it).
-    CheckReport report =
-        detail::check_constrained_mesh_2d(mesh, input_vertex_count, segments, pieces, numbering, false);
+    CheckReport report = detail::check_constrained_mesh_2d(mesh, input_vertex_count, segments,
+                                                           pieces, numbering, false);
     if (!report.ok) return report;
     const std::uint32_t n = mesh.vertex_count();
     const TriIdx count = mesh.triangle_count();
     const auto& tv = mesh.triangles;
-    auto vertex = [&](VertIdx v) { return std::to_string(std::uint64_t{v} + numbering.first_vertex); };
+    auto vertex = [&](VertIdx v) {
+        return std::to_string(std::uint64_t{v} + numbering.first_vertex);
+    };
     auto key = [](VertIdx a, VertIdx b) { return (std::uint64_t{a} << 32) | b; };
 
     // The edges leaving each vertex (CSR), each neighbour once.
@@ -43,7 +45,8 @@ CheckReport check_conforming_mesh_2d(const Triangulation2& mesh, std::uint32_t i
     std::unordered_set<std::uint64_t> directed;
     directed.reserve(tv.size());
     for (TriIdx t = 0; t < count; ++t) {
-        for (unsigned k = 0; k < 3; ++k) directed.insert(key(tv[3 * t + k], tv[3 * t + (k + 1) % 3]));
+        for (unsigned k = 0; k < 3; ++k)
+            directed.insert(key(tv[3 * t + k], tv[3 * t + (k + 1) % 3]));
     }
     std::unordered_set<std::uint64_t> undirected;
     undirected.reserve(tv.size());
@@ -82,8 +85,9 @@ CheckReport check_conforming_mesh_2d(const Triangulation2& mesh, std::uint32_t i
             if (next != it && half_of(pv, mesh.point(*it)) == half_of(pv, mesh.point(*next)) &&
                 predicates::orient2d(pv, mesh.point(*it), mesh.point(*next)) == Sign::Zero) {
                 return CheckReport{false,
-                                   "edges " + vertex(v) + " - " + vertex(*it) + " and " + vertex(v) + " - " +
-                                       vertex(*next) + " leave vertex " + vertex(v) + " in the same direction (overlap)",
+                                   "edges " + vertex(v) + " - " + vertex(*it) + " and " +
+                                       vertex(v) + " - " + vertex(*next) + " leave vertex " +
+                                       vertex(v) + " in the same direction (overlap)",
                                    kNone,
                                    {v, *it, *next}};
             }
@@ -94,16 +98,18 @@ CheckReport check_conforming_mesh_2d(const Triangulation2& mesh, std::uint32_t i
     // corners around v do not overlap.
     for (TriIdx t = 0; t < count; ++t) {
         for (unsigned k = 0; k < 3; ++k) {
-            const VertIdx v = tv[3 * t + k], a = tv[3 * t + (k + 1) % 3], b = tv[3 * t + (k + 2) % 3];
+            const VertIdx v = tv[3 * t + k], a = tv[3 * t + (k + 1) % 3],
+                          b = tv[3 * t + (k + 2) % 3];
             const std::uint32_t degree = start[v + 1] - start[v];
             const std::uint32_t pa = position.at(key(v, a)), pb = position.at(key(v, b));
             if ((pa + 1) % degree != pb) {
                 const VertIdx inside = ray[start[v] + (pa + 1) % degree];
                 return CheckReport{false,
-                                   "the triangles around vertex " + vertex(v) + " overlap: edge " + vertex(v) +
-                                       " - " + vertex(inside) + " lies inside the corner of triangle " +
-                                       std::to_string(std::uint64_t{t} + numbering.first_triangle) + " (" +
-                                       vertex(v) + ", " + vertex(a) + ", " + vertex(b) + ")",
+                                   "the triangles around vertex " + vertex(v) + " overlap: edge " +
+                                       vertex(v) + " - " + vertex(inside) +
+                                       " lies inside the corner of triangle " +
+                                       std::to_string(std::uint64_t{t} + numbering.first_triangle) +
+                                       " (" + vertex(v) + ", " + vertex(a) + ", " + vertex(b) + ")",
                                    t,
                                    {v, a, b, inside}};
             }
@@ -128,12 +134,14 @@ CheckReport check_conforming_mesh_2d(const Triangulation2& mesh, std::uint32_t i
     for (TriIdx t = 0; t < count; ++t) {
         for (unsigned k = 0; k < 3; ++k) {
             const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3];
-            if (directed.count(key(b, a)) || piece_set.count(key(std::min(a, b), std::max(a, b)))) continue;
-            return CheckReport{false,
-                               "edge " + vertex(a) + " - " + vertex(b) +
-                                   " bounds the mesh (a triangle on one side only) but is no piece of a segment",
-                               t,
-                               {a, b}};
+            if (directed.count(key(b, a)) || piece_set.count(key(std::min(a, b), std::max(a, b))))
+                continue;
+            return CheckReport{
+                false,
+                "edge " + vertex(a) + " - " + vertex(b) +
+                    " bounds the mesh (a triangle on one side only) but is no piece of a segment",
+                t,
+                {a, b}};
         }
     }
     return {};

@@ -26,7 +26,8 @@ namespace exactmesh::triangulation {
 
 /// The arguments as check_constrained_delaunay_2d takes them (pieces empty: the flagged edges).
 CheckReport check_conforming_mesh_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
-                                     std::span<const VertIdx> segments, std::span<const VertIdx> pieces = {},
+                                     std::span<const VertIdx> segments,
+                                     std::span<const VertIdx> pieces = {},
                                      CheckNumbering numbering = {});
 
 }  // namespace exactmesh::triangulation

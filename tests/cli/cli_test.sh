@@ -567,6 +567,14 @@ mesh() {
   run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/graded.ele" --size "$work/size.txt" --quality &&
     grep -Eq '^quality.size_conformity: .* max (0\.[0-9]+|1\.0000[0-9]*) ' "$work/out" ||
     fail "mesh: graded size not met: $(cat "$work/out")"
+  # Smoothing: reported apart, the result still exact constrained Delaunay, mean quality up.
+  run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/smooth.ele" --size 0.3 --smooth 3 --quality --stats || return
+  grep -Eq '^smooth_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "mesh --smooth: no smooth_seconds: $(cat "$work/out")"
+  awk '/^quality.mean_min_angle:/ { after = $2 } /^smoothing.mean_min_angle_before:/ { before = $2 }
+       END { exit !(after > before) }' "$work/out" || fail "mesh --smooth: mean quality not better: $(cat "$work/out")"
+  run 0 check "$data/square_hole_diagonals.poly" "$work/smooth.ele" &&
+    grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
+    fail "check rejected the smoothed mesh: $(cat "$work/out")"
   # Errors: one line each.
   local name
   for name in quadtree advancing-front advancing-front-delaunay frontal; do

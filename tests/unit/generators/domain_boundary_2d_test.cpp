@@ -43,7 +43,8 @@ double length(const gen::DomainBoundary2& b, tri::VertIdx u, tri::VertIdx v) {
 TEST(DomainBoundary2, PiecesFollowAUniformSizeAndTheFrontHasTheDomainOnItsLeft) {
     const Input in = square_with_hole_and_slit();
     const double h = 0.07;
-    const gen::DomainBoundary2 b = gen::discretize_domain_boundary(in.pslg(), gen::SizeFunction::uniform(h));
+    const gen::DomainBoundary2 b =
+        gen::discretize_domain_boundary(in.pslg(), gen::SizeFunction::uniform(h));
     EXPECT_EQ(b.input_vertex_count, 10u);
     ASSERT_EQ(b.pieces.size() / 2, b.piece_segment.size());
     ASSERT_EQ(b.front.size() / 2, b.front_segment.size());
@@ -84,14 +85,16 @@ TEST(DomainBoundary2, GradedSizesGiveShorterPiecesWhereTheSizeIsSmall) {
     const gen::DomainBoundary2 b = gen::discretize_domain_boundary(in.pslg(), size);
     for (std::size_t p = 0; p < b.piece_segment.size(); ++p) {
         const tri::VertIdx u = b.pieces[2 * p], v = b.pieces[2 * p + 1];
-        const double mx = 0.5 * (b.xy[2 * u] + b.xy[2 * v]), my = 0.5 * (b.xy[2 * u + 1] + b.xy[2 * v + 1]);
+        const double mx = 0.5 * (b.xy[2 * u] + b.xy[2 * v]),
+                     my = 0.5 * (b.xy[2 * u + 1] + b.xy[2 * v + 1]);
         // Integral of ds / s at most 1 per piece: the length is at most the largest size along it
         // (the size grows by at most the piece's length times its gradient, 0.1 here).
         EXPECT_LE(length(b, u, v), size(mx, my) * 1.2) << "piece " << p;
     }
     // Near the source corner the pieces are about 0.01.
     double shortest = 1;
-    for (std::size_t p = 0; p < b.piece_segment.size(); ++p) shortest = std::min(shortest, length(b, b.pieces[2 * p], b.pieces[2 * p + 1]));
+    for (std::size_t p = 0; p < b.piece_segment.size(); ++p)
+        shortest = std::min(shortest, length(b, b.pieces[2 * p], b.pieces[2 * p + 1]));
     EXPECT_LT(shortest, 0.015);
 }
 
@@ -103,7 +106,8 @@ TEST(DomainBoundary2, UnboundedSizeKeepsTheCdtPiecesAndTheResultIsAValidMesh) {
     const tri::Cdt2Result r = gen::domain_mesh_result(b, b.xy, b.cdt.mesh.triangles);
     EXPECT_EQ(r.mesh.neighbors, b.cdt.mesh.neighbors);
     EXPECT_EQ(r.mesh.constrained, b.cdt.mesh.constrained);
-    const auto report = tri::check_conforming_mesh_2d(r.mesh, r.input_vertex_count, in.segments, r.pieces);
+    const auto report =
+        tri::check_conforming_mesh_2d(r.mesh, r.input_vertex_count, in.segments, r.pieces);
     EXPECT_TRUE(report.ok) << report.problem;
     // A repeated directed edge is an internal error.
     std::vector<tri::VertIdx> twice = b.cdt.mesh.triangles;
@@ -115,7 +119,8 @@ TEST(DomainBoundary2, SampleDomainsKeepCurvedPointsAndCrossingSegmentsAreSplit) 
     for (const gen::SampleDomain d : gen::kAllSampleDomains) {
         const gen::DomainPslg domain = gen::sample_domain(d);
         const tri::Pslg pslg{domain.xy, domain.segments, domain.holes, {}};
-        const gen::DomainBoundary2 b = gen::discretize_domain_boundary(pslg, gen::sample_domain_size(d));
+        const gen::DomainBoundary2 b =
+            gen::discretize_domain_boundary(pslg, gen::sample_domain_size(d));
         // The curve points are input vertices: kept with their numbers and coordinates.
         for (std::size_t i = 0; i < domain.xy.size(); ++i) EXPECT_EQ(b.xy[i], domain.xy[i]);
         EXPECT_GE(b.front.size(), domain.segments.size());
@@ -124,7 +129,8 @@ TEST(DomainBoundary2, SampleDomainsKeepCurvedPointsAndCrossingSegmentsAreSplit) 
     Input in;
     in.xy = {0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 3, 3, 1, 3, 3, 1};
     in.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 6, 7};
-    const gen::DomainBoundary2 b = gen::discretize_domain_boundary(in.pslg(), gen::SizeFunction::uniform(0.5));
+    const gen::DomainBoundary2 b =
+        gen::discretize_domain_boundary(in.pslg(), gen::SizeFunction::uniform(0.5));
     EXPECT_FALSE(b.cdt.warnings.empty());
     EXPECT_GT(b.xy.size() / 2, 8u);
 }
@@ -132,11 +138,13 @@ TEST(DomainBoundary2, SampleDomainsKeepCurvedPointsAndCrossingSegmentsAreSplit) 
 TEST(DomainBoundary2, BadInputIsAnInputError) {
     Input nan = square_with_hole_and_slit();
     nan.xy[3] = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_THROW(gen::discretize_domain_boundary(nan.pslg(), gen::SizeFunction::uniform(0.1)), exactmesh::InputError);
+    EXPECT_THROW(gen::discretize_domain_boundary(nan.pslg(), gen::SizeFunction::uniform(0.1)),
+                 exactmesh::InputError);
     Input open;  // a polyline encloses nothing
     open.xy = {0, 0, 1, 0, 1, 1};
     open.segments = {0, 1, 1, 2};
-    EXPECT_THROW(gen::discretize_domain_boundary(open.pslg(), gen::SizeFunction::uniform(0.1)), exactmesh::InputError);
+    EXPECT_THROW(gen::discretize_domain_boundary(open.pslg(), gen::SizeFunction::uniform(0.1)),
+                 exactmesh::InputError);
     // A size asking for more than 2^30 pieces.
     const Input square = square_with_hole_and_slit();
     EXPECT_THROW(gen::discretize_domain_boundary(square.pslg(), gen::SizeFunction::uniform(1e-12)),

@@ -28,7 +28,8 @@ std::vector<tri::VertIdx> flagged(tri::Triangulation2& m, std::vector<tri::VertI
     for (std::size_t e = 0; e < m.triangles.size(); ++e) {
         const tri::VertIdx a = m.triangles[e], b = m.triangles[e - e % 3 + (e + 1) % 3];
         for (std::size_t p = 0; p + 1 < pieces.size(); p += 2) {
-            if ((pieces[p] == a && pieces[p + 1] == b) || (pieces[p] == b && pieces[p + 1] == a)) m.constrained[e] = 1;
+            if ((pieces[p] == a && pieces[p + 1] == b) || (pieces[p] == b && pieces[p + 1] == a))
+                m.constrained[e] = 1;
         }
     }
     return pieces;
@@ -41,7 +42,8 @@ std::vector<tri::VertIdx> boundary_pieces(tri::Triangulation2& m) {
     for (std::size_t e = 0; e < t.size(); ++e) {
         const tri::VertIdx a = t[e], b = t[e - e % 3 + (e + 1) % 3];
         bool twin = false;
-        for (std::size_t f = 0; f < t.size(); ++f) twin |= t[f] == b && t[f - f % 3 + (f + 1) % 3] == a;
+        for (std::size_t f = 0; f < t.size(); ++f)
+            twin |= t[f] == b && t[f - f % 3 + (f + 1) % 3] == a;
         if (!twin) pieces.insert(pieces.end(), {a, b});
     }
     return flagged(m, pieces);
@@ -113,7 +115,8 @@ TEST(CheckConformingMesh2, RefusesABoundaryEdgeThatIsNoPiece) {
 
 TEST(CheckConformingMesh2, RefusesClockwiseTrianglesAndMissingSegments) {
     auto clockwise = mesh_of({0, 0, 0, 1, 1, 0}, {0, 1, 2});
-    EXPECT_FALSE(tri::check_conforming_mesh_2d(clockwise, 3, {}, flagged(clockwise, {0, 1, 1, 2, 2, 0})).ok);
+    EXPECT_FALSE(
+        tri::check_conforming_mesh_2d(clockwise, 3, {}, flagged(clockwise, {0, 1, 1, 2, 2, 0})).ok);
     // The square split along 0 - 2; segment 1 - 3 (the other diagonal) is not in it.
     auto square = mesh_of({0, 0, 1, 0, 1, 1, 0, 1}, {0, 1, 2, 0, 2, 3});
     const std::vector<tri::VertIdx> segments{1, 3};
