@@ -102,12 +102,14 @@ void run_mesh(const MeshArguments& arguments) {
     bool known = false;
     for (const char* name : kGenerators) known |= arguments.generator == name;
     if (!known) {
-        throw InputError("unknown generator '" + arguments.generator +
-                         "' (known: delaunay-refinement; not implemented yet: quadtree, advancing-front, "
-                         "advancing-front-delaunay, frontal)");
+        throw InputError(
+            "unknown generator '" + arguments.generator +
+            "' (known: delaunay-refinement; not implemented yet: quadtree, advancing-front, "
+            "advancing-front-delaunay, frontal)");
     }
     if (arguments.generator != "delaunay-refinement") {
-        throw InputError("not implemented yet: " + arguments.generator + " (issue 6; use --generator delaunay-refinement)");
+        throw InputError("not implemented yet: " + arguments.generator +
+                         " (issue 6; use --generator delaunay-refinement)");
     }
     if (arguments.input.empty() == arguments.domain.empty()) {
         throw InputError("give either an input .poly file or --domain NAME (not both)");
@@ -116,7 +118,8 @@ void run_mesh(const MeshArguments& arguments) {
     const OutputFormat format = output_format(output);
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
 
-    gen::SizeFunction size = arguments.size.empty() ? gen::SizeFunction() : read_size(arguments.size);
+    gen::SizeFunction size =
+        arguments.size.empty() ? gen::SizeFunction() : read_size(arguments.size);
     io::PolyFile poly;
     std::string title;
     if (!arguments.domain.empty()) {
@@ -156,28 +159,31 @@ void run_mesh(const MeshArguments& arguments) {
         gen::SmoothingOptions2 smoothing_options;
         smoothing_options.iterations = arguments.smooth;
         const auto smooth_start = std::chrono::steady_clock::now();
-        smoothing = gen::laplacian_smoothing_2d(final_result.mesh.mesh, final_result.mesh.input_vertex_count,
-                                                smoothing_options);
+        smoothing = gen::laplacian_smoothing_2d(
+            final_result.mesh.mesh, final_result.mesh.input_vertex_count, smoothing_options);
         smooth_seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - smooth_start).count();
     }
     print_warnings(result.mesh.warnings);
     if (result.counters.unsplittable > 0) {
-        std::cerr << "exactmesh: warning: " << result.counters.unsplittable
-                  << " bad triangles are too small to split in double precision; left as they are\n";
+        std::cerr
+            << "exactmesh: warning: " << result.counters.unsplittable
+            << " bad triangles are too small to split in double precision; left as they are\n";
     }
     char label[64];
     std::snprintf(label, sizeof label, " (delaunay-refinement, %g degrees)", arguments.min_angle);
     write_constrained_result(final_result.mesh, files, format, base, title + label);
     const tri::Triangulation2& mesh = final_result.mesh.mesh;
-    std::cout << "vertices: " << mesh.vertex_count() << '\n' << "triangles: " << mesh.triangle_count() << '\n';
+    std::cout << "vertices: " << mesh.vertex_count() << '\n'
+              << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.quality) {
         gen::QualityReport2 report = gen::quality_report_2d(mesh.xy, mesh.triangles, size);
         report.seconds = seconds;
         std::cout << gen::quality_report_text(report);
         if (arguments.smooth > 0) {
             const tri::Triangulation2& unsmoothed = result.mesh.mesh;
-            const gen::QualityReport2 before = gen::quality_report_2d(unsmoothed.xy, unsmoothed.triangles, size);
+            const gen::QualityReport2 before =
+                gen::quality_report_2d(unsmoothed.xy, unsmoothed.triangles, size);
             std::cout << "smoothing.min_angle_before: " << before.min_angle << '\n'
                       << "smoothing.mean_min_angle_before: " << before.mean_min_angle << '\n';
         }
@@ -193,12 +199,17 @@ void run_mesh(const MeshArguments& arguments) {
 void add_mesh_command(CLI::App& app) {
     auto arguments = std::make_shared<MeshArguments>();
     CLI::App* command = app.add_subcommand(
-        "mesh", "Quality mesh of a domain: a Triangle .poly file, or a built-in sample domain (--domain)");
-    command->add_option("input", arguments->input, "A Triangle .poly file (segments enclose the domain; holes)")
+        "mesh",
+        "Quality mesh of a domain: a Triangle .poly file, or a built-in sample domain (--domain)");
+    command
+        ->add_option("input", arguments->input,
+                     "A Triangle .poly file (segments enclose the domain; holes)")
         ->type_name("IN.poly");
-    command->add_option("--domain", arguments->domain,
-                        "A built-in domain instead of IN.poly: square-with-holes, naca0012, key (its curves "
-                        "discretized by --size, else by the domain's own size function)")
+    command
+        ->add_option("--domain", arguments->domain,
+                     "A built-in domain instead of IN.poly: square-with-holes, naca0012, key, "
+                     "three-element (its curves "
+                     "discretized by --size, else by the domain's own size function)")
         ->type_name("NAME");
     command
         ->add_option("-o,--output", arguments->output,
@@ -206,32 +217,42 @@ void add_mesh_command(CLI::App& app) {
                      "beside it), .msh (Gmsh 4.1), .vtu (VTK), .svg (picture)")
         ->required()
         ->type_name("OUT");
-    command->add_option("--generator", arguments->generator,
-                        "delaunay-refinement (Ruppert/Shewchuk, circumcenter insertion). Not implemented yet, "
-                        "each an error: quadtree, advancing-front, advancing-front-delaunay, frontal")
+    command
+        ->add_option(
+            "--generator", arguments->generator,
+            "delaunay-refinement (Ruppert/Shewchuk, circumcenter insertion). Not implemented yet, "
+            "each an error: quadtree, advancing-front, advancing-front-delaunay, frontal")
         ->capture_default_str();
-    command->add_option("--min-angle", arguments->min_angle,
-                        "Every angle at least this many degrees, away from small input angles; proven to "
-                        "terminate up to 20.7 (input angles >= 60), accepted up to 34; 0: no angle criterion")
+    command
+        ->add_option(
+            "--min-angle", arguments->min_angle,
+            "Every angle at least this many degrees, away from small input angles; proven to "
+            "terminate up to 20.7 (input angles >= 60), accepted up to 34; 0: no angle criterion")
         ->capture_default_str();
-    command->add_option("--size", arguments->size,
-                        "Target edge length: a number (uniform), or a size file of lines 'uniform H', "
-                        "'point X Y S RBAR GAMMA', 'line X0 Y0 X1 Y1 S RBAR GAMMA' (source formula "
-                        "s = min(H, sum s_k [1 + (d_k / rbar_k)^gamma_k]))")
+    command
+        ->add_option("--size", arguments->size,
+                     "Target edge length: a number (uniform), or a size file of lines 'uniform H', "
+                     "'point X Y S RBAR GAMMA', 'line X0 Y0 X1 Y1 S RBAR GAMMA' (source formula "
+                     "s = min(H, sum s_k [1 + (d_k / rbar_k)^gamma_k]))")
         ->type_name("NUM|FILE");
-    command->add_option("--max-steiner", arguments->max_steiner,
-                        "Stop with an error after this many Steiner points (0: automatic)")
+    command
+        ->add_option("--max-steiner", arguments->max_steiner,
+                     "Stop with an error after this many Steiner points (0: automatic)")
         ->capture_default_str();
-    command->add_option("--smooth", arguments->smooth,
-                        "Laplacian smoothing sweeps after the generator (Jacobi formula, a move that would "
-                        "invert a triangle undone, Delaunay re-swapping after each sweep; boundary and input "
-                        "vertices fixed); timed apart as smooth_seconds")
+    command
+        ->add_option(
+            "--smooth", arguments->smooth,
+            "Laplacian smoothing sweeps after the generator (Jacobi formula, a move that would "
+            "invert a triangle undone, Delaunay re-swapping after each sweep; boundary and input "
+            "vertices fixed); timed apart as smooth_seconds")
         ->capture_default_str();
-    command->add_flag("--quality", arguments->quality,
-                      "Print the quality report: angles, angle histogram, radius-edge ratio, size conformity");
-    command->add_flag("--stats", arguments->stats,
-                      "Print work counters, predicate stages and construct_seconds (the generator alone, "
-                      "without file I/O)");
+    command->add_flag(
+        "--quality", arguments->quality,
+        "Print the quality report: angles, angle histogram, radius-edge ratio, size conformity");
+    command->add_flag(
+        "--stats", arguments->stats,
+        "Print work counters, predicate stages and construct_seconds (the generator alone, "
+        "without file I/O)");
     command->callback([arguments] { run_mesh(*arguments); });
 }
 

@@ -19,7 +19,7 @@ namespace {
 using Point = std::array<double, 2>;
 
 class Builder {
-public:
+  public:
     DomainPslg pslg;
 
     std::uint32_t vertex(Point p) {
@@ -40,8 +40,10 @@ public:
     }
     void circle_hole(Point centre, double radius, const SizeFunction& size) {
         auto points = discretize_curve(
-            [&](double u) { return Point{centre[0] + radius * std::cos(u), centre[1] + radius * std::sin(u)}; }, 0.0,
-            2 * std::numbers::pi, size, 8);
+            [&](double u) {
+                return Point{centre[0] + radius * std::cos(u), centre[1] + radius * std::sin(u)};
+            },
+            0.0, 2 * std::numbers::pi, size, 8);
         points.pop_back();  // u = 2 pi is u = 0
         loop(points);
         pslg.holes.insert(pslg.holes.end(), {centre[0], centre[1]});
@@ -91,14 +93,17 @@ DomainPslg key(const SizeFunction& size) {
     std::vector<Point> outline{{cut, h}, {2.0, h}, {2.0, -h}};
     // Teeth on the lower side of the shaft, from the tip back to the ring: a square tooth, the
     // sharp one (tip angle 2 atan(0.022 / 0.25) = 10.06 degrees), a trapezoid.
-    const std::vector<Point> teeth{{1.9, -h},   {1.9, -0.25}, {1.75, -0.25}, {1.75, -h},    {1.422, -h},
-                                   {1.4, -0.35}, {1.378, -h},  {1.2, -h},     {1.15, -0.22}, {1.0, -0.22},
-                                   {0.95, -h}};
+    const std::vector<Point> teeth{{1.9, -h},     {1.9, -0.25}, {1.75, -0.25}, {1.75, -h},
+                                   {1.422, -h},   {1.4, -0.35}, {1.378, -h},   {1.2, -h},
+                                   {1.15, -0.22}, {1.0, -0.22}, {0.95, -h}};
     outline.insert(outline.end(), teeth.begin(), teeth.end());
     // The ring's outer arc from angle -a0 down through pi back to a0 - 2 pi, i.e. (cut, -h) to
     // (cut, h) the long way round; both ends are already there.
-    const auto arc = discretize_curve([r](double u) { return Point{r * std::cos(u), r * std::sin(u)}; }, -a0,
-                                a0 - 2 * std::numbers::pi, size, 16);
+    const auto arc = discretize_curve(
+        [r](double u) {
+            return Point{r * std::cos(u), r * std::sin(u)};
+        },
+        -a0, a0 - 2 * std::numbers::pi, size, 16);
     outline.push_back({cut, -h});
     for (std::size_t k = 1; k + 1 < arc.size(); ++k) outline.push_back(arc[k]);
     b.loop(outline);
@@ -106,17 +111,83 @@ DomainPslg key(const SizeFunction& size) {
     return std::move(b.pslg);
 }
 
+/// A NACA 4412 element: chord c with its leading edge at `le`, rotated by `deflection` degrees
+/// clockwise (trailing edge down) about the leading edge; a closed loop, a hole point inside.
+void naca4412_element(Builder& b, Point le, double chord, double deflection,
+                      const SizeFunction& size) {
+    const double angle = -deflection * std::numbers::pi / 180, c = std::cos(angle),
+                 s = std::sin(angle);
+    auto place = [=](Point local) {
+        return Point{le[0] + chord * (c * local[0] - s * local[1]),
+                     le[1] + chord * (s * local[0] + c * local[1])};
+    };
+    auto surface = [&](bool upper) {
+        return discretize_curve(
+            [=](double beta) { return place(naca4_point(0.04, 0.4, 0.12, beta, upper)); }, 0.0,
+            std::numbers::pi, size, 16);
+    };
+    const std::vector<Point> upper = surface(true), lower = surface(false);
+    // Trailing edge and leading edge shared by both surfaces.
+    std::vector<Point> loop{upper.front()};
+    for (std::size_t k = 1; k + 1 < upper.size(); ++k) loop.push_back(upper[k]);
+    loop.push_back(upper.back());
+    for (std::size_t k = lower.size() - 2; k >= 1; --k) loop.push_back(lower[k]);
+    b.loop(loop);
+    // On the camber line at 30 % of the chord: inside the section.
+    const Point inside = place({0.3, 0.04 / (0.4 * 0.4) * (2 * 0.4 * 0.3 - 0.3 * 0.3)});
+    b.pslg.holes.insert(b.pslg.holes.end(), {inside[0], inside[1]});
+}
+
+DomainPslg three_element(const SizeFunction& size) {
+    Builder b;
+    b.loop({{-2, -2.5}, {3, -2.5}, {3, 2.5}, {-2, 2.5}});
+    // Slat: trailing edge at (0.03, 0.045), above the main element's nose, drooped 25 degrees.
+    const double droop = 25 * std::numbers::pi / 180;
+    naca4412_element(b, {0.03 - 0.15 * std::cos(droop), 0.045 - 0.15 * std::sin(droop)}, 0.15, -25,
+                     size);
+    naca4412_element(b, {0.0, 0.0}, 1.0, 0.0, size);
+    naca4412_element(b, {0.92, -0.03}, 0.3, 20.0, size);
+    return std::move(b.pslg);
+}
+
 }  // namespace
 
+std::array<double, 2> naca4_point(double m, double p, double t, double beta, bool upper) {
+    const double x = 0.5 * (1 + std::cos(beta));
+    double yc = 0, slope = 0;
+    if (m > 0 && p > 0) {
+        if (x < p) {
+            yc = m / (p * p) * (2 * p * x - x * x);
+            slope = 2 * m / (p * p) * (p - x);
+        } else {
+            yc = m / ((1 - p) * (1 - p)) * ((1 - 2 * p) + 2 * p * x - x * x);
+            slope = 2 * m / ((1 - p) * (1 - p)) * (p - x);
+        }
+    }
+    const double yt = naca_thickness(t, x), theta = std::atan(slope);
+    // Exactly (1, 0) and (0, 0) at the trailing and leading edges (y_t = 0 there).
+    if (beta == 0.0) return {1.0, 0.0};
+    if (x == 0.0) return {0.0, 0.0};
+    return upper ? std::array<double, 2>{x - yt * std::sin(theta), yc + yt * std::cos(theta)}
+                 : std::array<double, 2>{x + yt * std::sin(theta), yc - yt * std::cos(theta)};
+}
+
 double naca_thickness(double t, double x) {
-    return 5 * t * (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x - 0.1036 * x * x * x * x);
+    return 5 * t *
+           (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x -
+            0.1036 * x * x * x * x);
 }
 
 std::string_view sample_domain_name(SampleDomain d) {
     switch (d) {
-        case SampleDomain::SquareWithHoles: return "square-with-holes";
-        case SampleDomain::Naca0012: return "naca0012";
-        case SampleDomain::Key: return "key";
+        case SampleDomain::SquareWithHoles:
+            return "square-with-holes";
+        case SampleDomain::Naca0012:
+            return "naca0012";
+        case SampleDomain::Key:
+            return "key";
+        case SampleDomain::ThreeElement:
+            return "three-element";
     }
     return "?";
 }
@@ -125,17 +196,26 @@ SampleDomain sample_domain_from_name(std::string_view name) {
     for (const SampleDomain d : kAllSampleDomains) {
         if (sample_domain_name(d) == name) return d;
     }
-    throw InputError("unknown domain '" + std::string(name) + "' (known: square-with-holes, naca0012, key)");
+    throw InputError("unknown domain '" + std::string(name) +
+                     "' (known: square-with-holes, naca0012, key, three-element)");
 }
 
 SizeFunction sample_domain_size(SampleDomain d) {
     switch (d) {
-        case SampleDomain::SquareWithHoles: return SizeFunction::uniform(0.025);
+        case SampleDomain::SquareWithHoles:
+            return SizeFunction::uniform(0.025);
         case SampleDomain::Naca0012:
             // A line source along the chord: 0.01 on the airfoil, 0.01 (1 + (d / 0.1)^1.5) away
             // from it (0.9 at the far field's nearest side), capped at 0.5.
             return SizeFunction::sources({}, {{0.0, 0.0, 1.0, 0.0, 0.01, 0.1, 1.5}}, 0.5);
-        case SampleDomain::Key: return SizeFunction::uniform(0.02);
+        case SampleDomain::Key:
+            return SizeFunction::uniform(0.02);
+        case SampleDomain::ThreeElement:
+            // One line source from the slat's nose to the flap's trailing edge (the source
+            // formula sums its sources, so one per element would coarsen each by the others):
+            // 0.004 on the elements, 0.004 (1 + (d / 0.1)^1.5) away from them, capped at 0.5.
+            return SizeFunction::sources({}, {{-0.106, -0.018, 1.202, -0.133, 0.004, 0.1, 1.5}},
+                                         0.5);
     }
     return {};
 }
@@ -143,9 +223,14 @@ SizeFunction sample_domain_size(SampleDomain d) {
 DomainPslg sample_domain(SampleDomain d, const SizeFunction& size) {
     const SizeFunction& s = size.bounded() ? size : sample_domain_size(d);
     switch (d) {
-        case SampleDomain::SquareWithHoles: return square_with_holes(s);
-        case SampleDomain::Naca0012: return naca0012(s);
-        case SampleDomain::Key: return key(s);
+        case SampleDomain::SquareWithHoles:
+            return square_with_holes(s);
+        case SampleDomain::Naca0012:
+            return naca0012(s);
+        case SampleDomain::Key:
+            return key(s);
+        case SampleDomain::ThreeElement:
+            return three_element(s);
     }
     return {};
 }
