@@ -535,7 +535,7 @@ swap3d_bad_input() {
 
 # `exactmesh mesh`: each built-in domain in each format, a .poly with an angle and size bound
 # (checked as constrained Delaunay by `check`, min angle from --quality), a size file, and the
-# error lines: unimplemented and unknown generators, bounds, files, open and broken domains.
+# error lines: unknown generators, bounds, files, open and broken domains.
 mesh() {
   local domain ext
   for domain in square-with-holes naca0012 key; do
@@ -576,10 +576,6 @@ mesh() {
     grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
     fail "check rejected the smoothed mesh: $(cat "$work/out")"
   # Errors: one line each.
-  local name
-  for name in quadtree advancing-front advancing-front-delaunay frontal; do
-    expect_error 2 "not implemented yet: $name" mesh --domain key -o "$work/x.ele" --generator "$name"
-  done
   expect_error 2 "unknown generator 'magic'" mesh --domain key -o "$work/x.ele" --generator magic
   expect_error 2 "unknown domain 'moon'" mesh --domain moon -o "$work/x.ele"
   expect_error 2 'minimum angle 40 is outside \[0, 34\]' mesh --domain key -o "$work/x.ele" --min-angle 40
