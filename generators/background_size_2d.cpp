@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Background size mesh (see background_size_2d.hpp). Point location reuses DomainLocator2 (a
-// bucket grid of triangles, exact orient2d); the nearest boundary edge of a point outside the
-// mesh is found by a ring search over a second bucket grid, stopped by a lower bound on the
-// distance to the cells not yet searched.
+// Background size mesh (see background_size_2d.hpp). Point location: a bucket grid of
+// triangles, exact orient2d; the nearest boundary edge of a point outside the mesh: a ring
+// search over a second bucket grid, stopped by a lower bound on the distance to the cells not
+// yet searched.
 #include "generators/background_size_2d.hpp"
 
 #include <algorithm>
@@ -138,48 +138,59 @@ BackgroundSizeMesh2::BackgroundSizeMesh2(std::vector<double> xy, std::vector<dou
     mesh_.xy = std::move(xy);
     mesh_.triangles = std::move(triangles);
     sizes_ = std::move(sizes);
-    locator_ = DomainLocator2(mesh_);
+    fill(triangle_buckets_, count, 3, mesh_.triangles.data(), 0.5);
+    fill(edge_buckets_, boundary_.size() / 2, 2, boundary_.data(), 1.0);
+}
 
-    // The boundary edges' grid: about one edge per cell over the box of the used vertices.
+std::uint32_t BackgroundSizeMesh2::Buckets::column(double x) const {
+    const long double f = (static_cast<long double>(x) - x0) / cell;
+    return static_cast<std::uint32_t>(std::clamp<long double>(f, 0, columns - 1));
+}
+
+std::uint32_t BackgroundSizeMesh2::Buckets::row(double y) const {
+    const long double f = (static_cast<long double>(y) - y0) / cell;
+    return static_cast<std::uint32_t>(std::clamp<long double>(f, 0, rows - 1));
+}
+
+void BackgroundSizeMesh2::fill(Buckets& b, std::size_t count, std::size_t per_item,
+                               const std::uint32_t* vertices, double per_cell) {
+    // The box of the used vertices, about per_cell items per cell (widths in long double so
+    // that extents near the largest double do not overflow).
     double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
-    bx0_ = by0_ = std::numeric_limits<double>::infinity();
+    b.x0 = b.y0 = std::numeric_limits<double>::infinity();
     for (const std::uint32_t v : mesh_.triangles) {
-        bx0_ = std::min(bx0_, mesh_.point(v)[0]), by0_ = std::min(by0_, mesh_.point(v)[1]);
+        b.x0 = std::min(b.x0, mesh_.point(v)[0]), b.y0 = std::min(b.y0, mesh_.point(v)[1]);
         x1 = std::max(x1, mesh_.point(v)[0]), y1 = std::max(y1, mesh_.point(v)[1]);
     }
-    const long double width = static_cast<long double>(x1) - bx0_,
-                      height = static_cast<long double>(y1) - by0_;
-    const double cells = std::max(1.0, std::sqrt(static_cast<double>(boundary_.size() / 2)));
-    bcell_ = static_cast<double>(std::max(width, height) / cells);
-    if (!(bcell_ > 0) || !std::isfinite(bcell_)) bcell_ = std::numeric_limits<double>::max();
-    bcolumns_ = static_cast<std::uint32_t>(std::clamp<long double>(width / bcell_, 0, 2047)) + 1;
-    brows_ = static_cast<std::uint32_t>(std::clamp<long double>(height / bcell_, 0, 2047)) + 1;
-    auto cell_index = [&](double value, double origin, std::uint32_t n) {
-        const long double f = (static_cast<long double>(value) - origin) / bcell_;
-        return static_cast<std::uint32_t>(std::clamp<long double>(f, 0, n - 1));
-    };
-    bstart_.assign(std::size_t{bcolumns_} * brows_ + 1, 0);
+    const long double width = static_cast<long double>(x1) - b.x0,
+                      height = static_cast<long double>(y1) - b.y0;
+    const double cells = std::max(1.0, std::sqrt(static_cast<double>(count) / per_cell));
+    b.cell = static_cast<double>(std::max(width, height) / cells);
+    if (!(b.cell > 0) || !std::isfinite(b.cell)) b.cell = std::numeric_limits<double>::max();
+    b.columns = static_cast<std::uint32_t>(std::clamp<long double>(width / b.cell, 0, 4095)) + 1;
+    b.rows = static_cast<std::uint32_t>(std::clamp<long double>(height / b.cell, 0, 4095)) + 1;
+    b.start.assign(std::size_t{b.columns} * b.rows + 1, 0);
     for (int pass = 0; pass < 2; ++pass) {
-        std::vector<std::uint32_t> fill;
+        std::vector<std::uint32_t> next;
         if (pass == 1) {
-            for (std::size_t i = 1; i < bstart_.size(); ++i) bstart_[i] += bstart_[i - 1];
-            bedges_.resize(bstart_.back());
-            fill.assign(bstart_.begin(), bstart_.end() - 1);
+            for (std::size_t i = 1; i < b.start.size(); ++i) b.start[i] += b.start[i - 1];
+            b.items.resize(b.start.back());
+            next.assign(b.start.begin(), b.start.end() - 1);
         }
-        for (std::size_t e = 0; e < boundary_.size() / 2; ++e) {
-            const double* a = mesh_.point(boundary_[2 * e]);
-            const double* b = mesh_.point(boundary_[2 * e + 1]);
-            const std::uint32_t c0 = cell_index(std::min(a[0], b[0]), bx0_, bcolumns_);
-            const std::uint32_t c1 = cell_index(std::max(a[0], b[0]), bx0_, bcolumns_);
-            const std::uint32_t r0 = cell_index(std::min(a[1], b[1]), by0_, brows_);
-            const std::uint32_t r1 = cell_index(std::max(a[1], b[1]), by0_, brows_);
+        for (std::size_t item = 0; item < count; ++item) {
+            std::uint32_t c0 = b.columns, c1 = 0, r0 = b.rows, r1 = 0;
+            for (std::size_t k = 0; k < per_item; ++k) {
+                const double* p = mesh_.point(vertices[per_item * item + k]);
+                c0 = std::min(c0, b.column(p[0])), c1 = std::max(c1, b.column(p[0]));
+                r0 = std::min(r0, b.row(p[1])), r1 = std::max(r1, b.row(p[1]));
+            }
             for (std::uint32_t r = r0; r <= r1; ++r) {
                 for (std::uint32_t c = c0; c <= c1; ++c) {
-                    const std::size_t cell = std::size_t{r} * bcolumns_ + c;
+                    const std::size_t cell = std::size_t{r} * b.columns + c;
                     if (pass == 0) {
-                        ++bstart_[cell + 1];
+                        ++b.start[cell + 1];
                     } else {
-                        bedges_[fill[cell]++] = static_cast<std::uint32_t>(e);
+                        b.items[next[cell]++] = static_cast<std::uint32_t>(item);
                     }
                 }
             }
@@ -188,7 +199,27 @@ BackgroundSizeMesh2::BackgroundSizeMesh2(std::vector<double> xy, std::vector<dou
 }
 
 tri::TriIdx BackgroundSizeMesh2::locate(double x, double y) const {
-    return locator_.locate(mesh_, x, y);
+    const Buckets& b = triangle_buckets_;
+    if (!std::isfinite(x) || !std::isfinite(y)) return tri::kNone;
+    const double p[2] = {x, y};
+    // Outside the box no triangle can contain the point (exact comparisons); inside, the
+    // point's cell lists every triangle whose box holds it.
+    if (x < b.x0 || y < b.y0 || x > b.x0 + b.columns * b.cell || y > b.y0 + b.rows * b.cell)
+        return tri::kNone;
+    const std::size_t cell = std::size_t{b.row(y)} * b.columns + b.column(x);
+    for (std::uint32_t i = b.start[cell]; i < b.start[cell + 1]; ++i) {
+        const tri::TriIdx t = b.items[i];
+        const std::uint32_t* v = &mesh_.triangles[3 * std::size_t{t}];
+        if (predicates::orient2d(mesh_.point(v[0]), mesh_.point(v[1]), p) !=
+                predicates::Sign::Negative &&
+            predicates::orient2d(mesh_.point(v[1]), mesh_.point(v[2]), p) !=
+                predicates::Sign::Negative &&
+            predicates::orient2d(mesh_.point(v[2]), mesh_.point(v[0]), p) !=
+                predicates::Sign::Negative) {
+            return t;
+        }
+    }
+    return tri::kNone;
 }
 
 double BackgroundSizeMesh2::interpolate(tri::TriIdx t, double x, double y) const {
@@ -210,20 +241,19 @@ double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
     // q' = the nearest point of the grid's box to q. For every point p of the box,
     // |q - p|^2 >= |q - q'|^2 + |q' - p|^2 (projection onto a convex set), and a cell k rings
     // away from q's cell is at least (k - 1) cells from q'.
-    const double qx = std::clamp(x, bx0_, bx0_ + bcolumns_ * bcell_);
-    const double qy = std::clamp(y, by0_, by0_ + brows_ * bcell_);
+    const Buckets& g = edge_buckets_;
+    const double qx = std::clamp(x, g.x0, g.x0 + g.columns * g.cell);
+    const double qy = std::clamp(y, g.y0, g.y0 + g.rows * g.cell);
     const double outside2 = (x - qx) * (x - qx) + (y - qy) * (y - qy);
-    const auto column = static_cast<std::int64_t>(
-        std::clamp<long double>((static_cast<long double>(qx) - bx0_) / bcell_, 0, bcolumns_ - 1));
-    const auto row = static_cast<std::int64_t>(
-        std::clamp<long double>((static_cast<long double>(qy) - by0_) / bcell_, 0, brows_ - 1));
+    const auto column = static_cast<std::int64_t>(g.column(qx));
+    const auto row = static_cast<std::int64_t>(g.row(qy));
     double best2 = std::numeric_limits<double>::infinity(), value = 0;
     auto visit = [&](std::int64_t c, std::int64_t r) {
-        if (c < 0 || r < 0 || c >= bcolumns_ || r >= brows_) return;
+        if (c < 0 || r < 0 || c >= g.columns || r >= g.rows) return;
         const std::size_t cell =
-            static_cast<std::size_t>(r) * bcolumns_ + static_cast<std::size_t>(c);
-        for (std::uint32_t i = bstart_[cell]; i < bstart_[cell + 1]; ++i) {
-            const std::uint32_t e = bedges_[i];
+            static_cast<std::size_t>(r) * g.columns + static_cast<std::size_t>(c);
+        for (std::uint32_t i = g.start[cell]; i < g.start[cell + 1]; ++i) {
+            const std::uint32_t e = g.items[i];
             const std::uint32_t va = boundary_[2 * std::size_t{e}],
                                 vb = boundary_[2 * std::size_t{e} + 1];
             const double* a = mesh_.point(va);
@@ -239,10 +269,10 @@ double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
             }
         }
     };
-    const std::int64_t rings = std::max(bcolumns_, brows_);
+    const std::int64_t rings = std::max(g.columns, g.rows);
     for (std::int64_t k = 0; k <= rings; ++k) {
         if (k >= 1) {
-            const double gap = static_cast<double>(k - 1) * bcell_;
+            const double gap = static_cast<double>(k - 1) * g.cell;
             if (outside2 + gap * gap > best2) break;
         }
         if (k == 0) {

@@ -7,7 +7,9 @@
 // Invariants: every triangle strictly counter-clockwise (exact orient2d), no directed edge in
 // two triangles; the value at any point lies between the smallest and largest vertex size.
 // Cost: O(V + T) to build (two bucket grids); a query O(1) expected on meshes of bounded
-// triangle size ratio (the triangles listed in the 3 x 3 cells about the point). Predicates:
+// triangle size ratio (the triangles listed in the point's cell: every triangle is listed in
+// each cell its bounding box meets, and cells are found by one monotone rounding, so the
+// containing triangle is always among them). Predicates:
 // orient2d (validation, and every inside decision: a point is inside a closed triangle when no
 // orient2d is negative); the interpolation and the nearest point are plain double arithmetic.
 #pragma once
@@ -16,7 +18,6 @@
 #include <string>
 #include <vector>
 
-#include "generators/domain_boundary_2d.hpp"
 #include "predicates/errors.hpp"
 #include "triangulation/triangulation_2d.hpp"
 
@@ -62,15 +63,21 @@ class BackgroundSizeMesh2 {
     const std::vector<std::uint32_t>& boundary_edges() const { return boundary_; }
 
   private:
+    /// A uniform grid over the mesh's box, each cell listing the items (triangles or boundary
+    /// edges) whose bounding box meets it (CSR).
+    struct Buckets {
+        double x0 = 0, y0 = 0, cell = 1;
+        std::uint32_t columns = 1, rows = 1;
+        std::vector<std::uint32_t> start, items;
+        std::uint32_t column(double x) const;
+        std::uint32_t row(double y) const;
+    };
     triangulation::Triangulation2 mesh_;  // xy and triangles only
     std::vector<double> sizes_;
-    DomainLocator2 locator_;
-    // Boundary edges by bucket: a uniform grid over the mesh's box, each cell listing the edges
-    // whose bounding box meets it (CSR).
     std::vector<std::uint32_t> boundary_;
-    double bx0_ = 0, by0_ = 0, bcell_ = 1;
-    std::uint32_t bcolumns_ = 1, brows_ = 1;
-    std::vector<std::uint32_t> bstart_, bedges_;
+    Buckets triangle_buckets_, edge_buckets_;
+    void fill(Buckets& b, std::size_t count, std::size_t per_item, const std::uint32_t* vertices,
+              double per_cell);
     double interpolate(triangulation::TriIdx t, double x, double y) const;
     double nearest_boundary_value(double x, double y) const;
 };

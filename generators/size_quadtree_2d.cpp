@@ -265,19 +265,28 @@ SizeQuadtree2::SizeQuadtree2(const std::function<double(double, double)>& field,
 }
 
 std::uint32_t SizeQuadtree2::descend(double x, double y, double& fx, double& fy) const {
-    // The fractions of the root square, then of each cell on the way down: doubling and
-    // dropping the integer part is exact.
-    fx = (std::clamp(x, box_.x0, box_.x1) - x0_) / side_;
-    fy = (std::clamp(y, box_.y0, box_.y1) - y0_) / side_;
-    fx = std::clamp(fx, 0.0, 1.0), fy = std::clamp(fy, 0.0, 1.0);
+    // The fractions of the root square in 52-bit fixed point (exact: a fraction in [0, 1) has
+    // no bits below 2^-53 that matter at depth <= 30); each level reads one bit of each, without
+    // a branch, and the bits left over are the position in the leaf.
+    constexpr int kBits = 52;
+    constexpr std::uint64_t kTop = (std::uint64_t{1} << kBits) - 1;
+    double u = (std::clamp(x, box_.x0, box_.x1) - x0_) / side_,
+           v = (std::clamp(y, box_.y0, box_.y1) - y0_) / side_;
+    u = u >= 0 ? std::min(u, 1.0) : 0.0, v = v >= 0 ? std::min(v, 1.0) : 0.0;  // NaN -> 0
+    const std::uint64_t ix = std::min(kTop, static_cast<std::uint64_t>(std::ldexp(u, kBits)));
+    const std::uint64_t iy = std::min(kTop, static_cast<std::uint64_t>(std::ldexp(v, kBits)));
     std::uint32_t n = 0;
+    int shift = kBits - 1;
     while (nodes_[n].child != kNone) {
-        fx *= 2, fy *= 2;
-        const bool right = fx >= 1, up = fy >= 1;
-        if (right) fx -= 1;
-        if (up) fy -= 1;
-        n = nodes_[n].child + (right ? 1u : 0u) + (up ? 2u : 0u);
+        n = nodes_[n].child +
+            static_cast<std::uint32_t>(((ix >> shift) & 1) | (((iy >> shift) & 1) << 1));
+        --shift;
     }
+    const std::uint64_t mask = (std::uint64_t{1} << (shift + 1)) - 1;
+    fx = std::ldexp(static_cast<double>(ix & mask), -(shift + 1));
+    fy = std::ldexp(static_cast<double>(iy & mask), -(shift + 1));
+    if (u == 1.0 && ((ix & mask) == mask)) fx = 1.0;  // the box's right side
+    if (v == 1.0 && ((iy & mask) == mask)) fy = 1.0;
     return nodes_[n].leaf;
 }
 
