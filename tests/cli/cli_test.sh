@@ -562,6 +562,15 @@ mesh() {
   run 0 check "$data/square_hole_diagonals.poly" "$work/square.ele" &&
     grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
     fail "check rejected the mesh: $(cat "$work/out")"
+  # check --conforming: the same mesh is a valid mesh of the domain; one triangle turned
+  # clockwise is not (exit 1, naming it); --conforming without a .poly is an input error.
+  run 0 check --conforming "$data/square_hole_diagonals.poly" "$work/square.ele" &&
+    grep -q '^ok: [0-9]* triangles, exact valid mesh' "$work/out" || fail "check --conforming: $(cat "$work/out")"
+  awk 'NR == 2 { t = $2; $2 = $3; $3 = t } { print }' "$work/square.ele" >"$work/folded.ele"
+  cp "$work/square.node" "$work/folded.node" && cp "$work/square.poly" "$work/folded.poly"
+  run 1 check --conforming "$data/square_hole_diagonals.poly" "$work/folded.ele" &&
+    grep -q '^not ok: .*folded\.ele: ' "$work/out" || fail "check --conforming accepted a clockwise triangle: $(cat "$work/out")"
+  expect_error 2 '--conforming needs an IN\.poly' check --conforming "$data/kite.node" "$data/kite_delaunay.ele"
   # A size file: a point source at the centre, capped.
   printf '# size\nuniform 0.5\npoint 2 2 0.05 0.5 1.5\n' >"$work/size.txt"
   run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/graded.ele" --size "$work/size.txt" --quality &&
