@@ -592,8 +592,15 @@ mesh() {
   expect_error 2 'either an input \.poly file or --domain' mesh -o "$work/x.ele"
   printf 'point 1 2 3\n' >"$work/bad_size.txt"
   expect_error 2 'bad_size\.txt:1: point takes 5 numbers' mesh --domain key -o "$work/x.ele" --size "$work/bad_size.txt"
-  expect_error 2 "--size 'nowhere' is neither a number > 0 nor a readable size file" \
+  expect_error 2 "--size 'nowhere' is neither a number > 0, a readable size file, nor an expression in x and y: " \
     mesh --domain key -o "$work/x.ele" --size nowhere
+  expect_error 2 "--size '0.1 \\+\\* x' is neither .*: " mesh --domain key -o "$work/x.ele" --size '0.1 +* x'
+  expect_error 2 'size' mesh --domain key -o "$work/x.ele" --size '-1'
+  # A size expression in x and y: graded towards x = 4, every edge within it.
+  run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/expr.ele" --size '0.02 + 0.1 * abs(4 - x)' --quality &&
+    grep -Eq '^quality.size_conformity: .* max (0\.[0-9]+|1\.0000[0-9]*) ' "$work/out" &&
+    awk '/^quality.triangles:/ { exit !($2 > 1000) }' "$work/out" ||
+    fail "mesh --size EXPR: $(cat "$work/out") $(cat "$work/err")"
   printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 2 3\n0\n' >"$work/open.poly"
   expect_error 2 'the segments enclose no region' mesh "$work/open.poly" -o "$work/x.ele"
   printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 nan\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/nan.poly"
