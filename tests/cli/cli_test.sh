@@ -538,7 +538,7 @@ swap3d_bad_input() {
 # error lines: unknown generators, bounds, files, open and broken domains.
 mesh() {
   local domain ext
-  for domain in square-with-holes naca0012 key; do
+  for domain in square-with-holes naca0012 key three-element; do
     run 0 mesh --domain "$domain" -o "$work/$domain.ele" --quality --stats || continue
     for ext in ele neigh node poly; do [[ -s "$work/$domain.$ext" ]] || fail "mesh: $domain.$ext missing"; done
     grep -Eq '^triangles: [1-9][0-9]{3,}$' "$work/out" || fail "mesh $domain: too few triangles: $(cat "$work/out")"
