@@ -74,6 +74,9 @@ struct SmoothingOptions {
     double length = 0;
     /// The conjugate gradient iteration stops at ||r||_2 <= residual * ||b||_2.
     double residual = 1e-10;
+    /// Keep the field's value at the nodes where it has a local minimum (the sources' own
+    /// places: a point source's apex, the nodes along a line source) as Dirichlet values.
+    bool pin_minima = true;
 };
 
 class BackgroundSizeMesh2;

@@ -1,24 +1,31 @@
 // SPDX-License-Identifier: MIT
 // Elliptic smoothing of a size field on a background grid (issue 6, "an elliptic (Laplace/
 // Poisson) smoothing of a source field on a background grid"): the field s0 (e.g. point and
-// line sources, whose sum and cap have kinks and may grow faster than a mesh can grade) sampled
-// at the nodes of an NX x NY grid over a box, then
-//  1. gradient-limited: s1 = the largest grid function <= s0 with |s1_i - s1_j| <= g h_ij for
-//     grid neighbours i, j (h_ij the spacing), by Dijkstra's order from the smallest value
-//     [Borouchaki-Hecht-Frey97: "Mesh gradation control", IJNME 43; the H-correction];
-//  2. smoothed: s solves the screened Poisson equation s - L^2 Lap_h s = s1 (the 5-point
-//     Laplacian with zero flux at the box's sides) by conjugate gradients to a stated residual
-//     [Saad03 §6.7], so kinks of s1 are rounded over a length about L;
-//  3. bilinear between the nodes; outside the box, the value at the nearest point of the box.
-// Invariants (exact solution; the solver's residual perturbs them by about that much, and the
-// nodes are clamped to the range exactly): min s0 <= s <= max s0 over the nodes, since
-// (I - L^2 Lap_h) is an M-matrix with unit row sums; |ds/dx| <= g and |ds/dy| <= g in every
-// cell (so |grad s| <= sqrt(2) g), since the x-differences of s solve the same kind of system
-// with the x-differences of s1 as right-hand side (and likewise in y).
-// Cost: N = NX · NY field evaluations, O(N log N) for step 1, O(N sqrt(kappa)) for step 2 with
+// line sources, whose min, sum and cap have kinks and may grow faster than a mesh can grade)
+// sampled at the nodes of an NX x NY grid over a box, then
+//  1. gradient-limited: s1 = H(s0), H(f) the largest grid function <= f with
+//     |H_i - H_j| <= g h_ij for grid neighbours i, j (h_ij their spacing), by Dijkstra's order
+//     from the smallest value [Borouchaki-Hecht-Frey97: "Mesh gradation control", IJNME 43];
+//  2. smoothed: s2 solves the screened Poisson equation s - L^2 Lap_h s = s1 (5-point
+//     Laplacian, zero flux at the box's sides) with s2 = s1 (Dirichlet) at the nodes where s1
+//     has a local minimum (<= its grid neighbours, < one of them: where a source dominates), by
+//     conjugate gradients to a stated residual [Saad03 §6.7]; kinks of s1 are rounded over a
+//     length about L;
+//  3. s = H(s2): a pinned minimum may leave a dip steeper than g, which this limits again (only
+//     there; elsewhere s2's slopes are already at most g, see below, and H changes nothing);
+//  4. bilinear between the nodes; outside the box, the value at the nearest point of the box.
+// Guarantees: |s_i - s_j| <= g h_ij on every grid edge (step 3, up to one rounding), so
+// |ds/dx| <= g and |ds/dy| <= g in every cell and |grad s| <= sqrt(2) g; min s0 <= s <= max s0
+// (H only lowers and never below the smallest value; the smoothing is an M-matrix system with
+// unit row sums, clamped to s1's range against the residual); s <= s0 at the pinned minima (the
+// mesh is never coarser than asked at a source). Without pins, the x-differences of s2 solve the
+// same kind of system with those of s1 as right-hand side (zero flux makes the operators
+// commute), so s2 keeps s1's slope bound and step 3 is the identity.
+// Cost: N = NX · NY field evaluations, O(N log N) for H, O(N sqrt(kappa)) for the solve with
 // kappa <= 1 + 8 L^2 / h^2; a query O(1). Predicates: none (a size field, no combinatorics).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -45,11 +52,13 @@ class SmoothedSizeGrid2 {
     double gradation() const { return gradation_; }
     double length() const { return length_; }
     const SizeBox& box() const { return box_; }
-    /// NX · NY node values, row by row (node (i, j) at i + NX j): the smoothed field, the raw
-    /// field s0 and the gradient-limited s1.
+    /// NX · NY node values, row by row (node (i, j) at i + NX j): the final field s, the raw
+    /// field s0 and the gradient-limited s1; pinned(k): node k kept s1 in the smoothing.
     const std::vector<double>& values() const { return values_; }
     const std::vector<double>& raw_values() const { return raw_; }
     const std::vector<double>& limited_values() const { return limited_; }
+    bool pinned(std::size_t k) const { return pinned_[k] != 0; }
+    std::size_t pinned_count() const;
     int iterations() const { return iterations_; }  ///< conjugate gradient iterations
     double residual() const { return residual_; }   ///< the final ||r||_2 / ||b||_2
 
@@ -58,6 +67,7 @@ class SmoothedSizeGrid2 {
     std::uint32_t nx_ = 2, ny_ = 2;
     double hx_ = 1, hy_ = 1, gradation_ = 0, length_ = 0;
     std::vector<double> values_, raw_, limited_;
+    std::vector<char> pinned_;
     int iterations_ = 0;
     double residual_ = 0;
 };

@@ -309,13 +309,41 @@ DomainPslg boundary_loops_domain(std::span<const BoundaryLoop2> loops, const Siz
         const std::string name = "boundary loop " + std::to_string(l) + ": ";
         std::vector<double> points;
         try {
-            if (loop.spline) {
+            if (loop.spline && loop.corners.empty()) {
                 const CubicSpline2 spline(loop.xy, true);
                 const int pieces = min_pieces > 0
                                        ? min_pieces
                                        : std::max(8, 2 * static_cast<int>(spline.point_count()));
                 for (const Point& p : spline.discretize(size, pieces))
                     points.insert(points.end(), {p[0], p[1]});
+            } else if (loop.spline) {
+                // One open spline from each corner to the next, round the loop; each piece's
+                // last point is the next piece's first.
+                if (loop.xy.size() % 2 != 0) throw InputError("odd number of coordinates");
+                const std::size_t n = loop.xy.size() / 2;
+                for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+                    if (loop.corners[k] >= n || (k > 0 && loop.corners[k] <= loop.corners[k - 1])) {
+                        throw InputError("corner " + std::to_string(k) + " (" +
+                                         std::to_string(loop.corners[k]) +
+                                         ") is not an increasing control point number below " +
+                                         std::to_string(n));
+                    }
+                }
+                for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+                    const std::size_t from = loop.corners[k],
+                                      to = loop.corners[(k + 1) % loop.corners.size()];
+                    std::vector<double> piece;
+                    for (std::size_t i = from;; i = (i + 1) % n) {
+                        piece.insert(piece.end(), {loop.xy[2 * i], loop.xy[2 * i + 1]});
+                        if (piece.size() > 2 && i == to) break;
+                    }
+                    const CubicSpline2 spline(std::move(piece), false);
+                    const int pieces =
+                        min_pieces > 0 ? min_pieces : 2 * static_cast<int>(spline.point_count());
+                    std::vector<Point> along = spline.discretize(size, pieces);
+                    along.pop_back();
+                    for (const Point& p : along) points.insert(points.end(), {p[0], p[1]});
+                }
             } else {
                 points = loop.xy;
                 if (points.size() % 2 != 0) throw InputError("odd number of coordinates");

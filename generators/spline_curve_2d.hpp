@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -67,10 +68,15 @@ struct BoundaryLoop2 {
     std::vector<double> xy;  ///< 2·#P: spline control points or polygon vertices, in order
     bool spline = true;      ///< a closed cubic spline through them; false: the polygon
     bool hole = false;       ///< the loop bounds a hole (containing no other loop)
+    /// Spline loops: the control points (0-based, increasing) where the loop has a corner (a
+    /// sharp trailing edge): the loop is then an open natural spline from each corner to the
+    /// next, round the loop. Empty: one periodic spline.
+    std::vector<std::uint32_t> corners;
 };
 
 /// The PSLG of closed loops: each spline loop discretized by `size` (at least min_pieces pieces;
-/// 0: two per control point, at least 8), each polygon side one segment; a hole point inside
+/// 0: two per control point, at least 8; with corners, per piece between corners, 0: two per
+/// control point of the piece), each polygon side one segment; a hole point inside
 /// each hole loop (the centroid of the largest triangle of the loop's constrained Delaunay
 /// triangulation, checked inside by exact orient2d).
 /// @throws InputError on a bad loop (as CubicSpline2; a polygon with fewer than 3 vertices,

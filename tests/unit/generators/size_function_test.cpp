@@ -359,10 +359,13 @@ TEST(Generators_SizeFunction, QuadtreeErrors) {
 // ---- smoothing ----
 
 TEST(Generators_SizeFunction, SmoothedFieldHasBoundedGradientAndStaysInRange) {
-    // Two point sources of slope 0.5 (s / rbar = 0.01 / 0.02) capped at 0.2: cones with kinks at
-    // their apexes, where they meet, and along the cap's contour.
-    const gen::SizeFunction raw = gen::SizeFunction::sources(
-        {{0.3, 0.5, 0.01, 0.02, 1}, {0.6, 0.55, 0.01, 0.02, 1}}, {}, 0.2);
+    // The min of two cones of slope 0.5 and a cap: kinks at the apexes, along the ridge where
+    // the cones meet and along the cap's contour, and slopes above the gradation asked for.
+    const auto cones = [](double x, double y) {
+        return std::min({0.2, 0.01 + 0.5 * std::hypot(x - 0.3, y - 0.5),
+                         0.01 + 0.5 * std::hypot(x - 0.6, y - 0.55)});
+    };
+    const gen::SizeFunction raw = gen::SizeFunction::analytic(cones, "two cones");
     gen::SmoothingOptions options;
     options.nx = 121;
     options.ny = 101;
@@ -377,6 +380,21 @@ TEST(Generators_SizeFunction, SmoothedFieldHasBoundedGradientAndStaysInRange) {
     const auto [lo, hi] = std::minmax_element(s0.begin(), s0.end());
     // Per cell |ds/dx| and |ds/dy| (the bilinear derivatives are means of node differences),
     // and the largest change of slope between neighbouring cells (a kink's measure).
+    // Kinks away from the pinned minima (the apexes stay cones, of slope g): nodes more than
+    // 3 cells from every pin.
+    std::vector<char> near_pin(s.size(), 0);
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        if (!g.pinned(k)) continue;
+        const auto pi = static_cast<std::int64_t>(k % g.nx()),
+                   pj = static_cast<std::int64_t>(k / g.nx());
+        for (std::int64_t j = std::max<std::int64_t>(0, pj - 3);
+             j <= std::min<std::int64_t>(g.ny() - 1, pj + 3); ++j) {
+            for (std::int64_t i = std::max<std::int64_t>(0, pi - 3);
+                 i <= std::min<std::int64_t>(g.nx() - 1, pi + 3); ++i) {
+                near_pin[static_cast<std::size_t>(i + g.nx() * j)] = 1;
+            }
+        }
+    }
     auto slopes = [&](const std::vector<double>& v, double& steepest, double& kink) {
         steepest = kink = 0;
         for (std::uint32_t j = 0; j < g.ny(); ++j) {
@@ -384,7 +402,7 @@ TEST(Generators_SizeFunction, SmoothedFieldHasBoundedGradientAndStaysInRange) {
                 const std::size_t k = i + std::size_t{g.nx()} * j;
                 const double dx = (v[k + 1] - v[k]) / g.hx();
                 steepest = std::max(steepest, std::fabs(dx));
-                if (i + 2 < g.nx())
+                if (i + 2 < g.nx() && !near_pin[k] && !near_pin[k + 1] && !near_pin[k + 2])
                     kink = std::max(kink, std::fabs((v[k + 2] - v[k + 1]) / g.hx() - dx));
             }
         }
@@ -402,7 +420,8 @@ TEST(Generators_SizeFunction, SmoothedFieldHasBoundedGradientAndStaysInRange) {
         "smoothing: raw slope %.3f, kink %.3f; smoothed slope %.3f, kink %.3f; %d CG iterations\n",
         raw_steepest, raw_kink, steepest, kink, g.iterations());
     EXPECT_GT(raw_steepest, 0.45);
-    EXPECT_LE(steepest, options.gradation * (1 + 1e-6));  // |ds/dx|, |ds/dy| <= g in every cell
+    EXPECT_EQ(g.pinned_count(), 2u);                       // the apexes
+    EXPECT_LE(steepest, options.gradation * (1 + 1e-12));  // |ds/dx|, |ds/dy| <= g in every cell
     EXPECT_LT(kink, raw_kink / 4);
     for (const double v : s) {
         ASSERT_GE(v, *lo);
@@ -425,9 +444,22 @@ TEST(Generators_SizeFunction, SmoothedFieldHasBoundedGradientAndStaysInRange) {
     }
     EXPECT_EQ(f(0, 0), s[0]);
     EXPECT_EQ(f(5, 5), s.back());
-    EXPECT_NE(f.describe().find(") on a 121 x 101 grid, gradation 0.2, length 0.02"),
-              std::string::npos)
-        << f.describe();
+    EXPECT_EQ(f.describe(), "smoothed (two cones) on a 121 x 101 grid, gradation 0.2, length 0.02");
+    // The apexes are pinned: the size there is the raw one.
+    EXPECT_EQ(f(0.3, 0.5), 0.01);
+    EXPECT_EQ(f(0.6, 0.55), 0.01);
+    // Unpinned, the smoothing lifts them by about g L, and the slope bound holds without the
+    // second limit (the differences' own maximum principle).
+    options.pin_minima = false;
+    const gen::SizeFunction lifted = gen::SizeFunction::smoothed(raw, box, options);
+    const gen::SmoothedSizeGrid2& h = *lifted.smoothing_grid();
+    double free_steepest, free_kink;
+    slopes(h.values(), free_steepest, free_kink);
+    std::printf("smoothing without pins: apex %.5f (raw 0.01), slope %.3f, kink %.3f\n",
+                lifted(0.3, 0.5), free_steepest, free_kink);
+    EXPECT_GT(lifted(0.3, 0.5), 0.011);
+    EXPECT_LE(free_steepest, options.gradation * (1 + 1e-12));
+    EXPECT_EQ(h.pinned_count(), 0u);
 }
 
 TEST(Generators_SizeFunction, SmoothingErrors) {

@@ -233,27 +233,71 @@ TEST(Generators_SplineCurve2, BadLoopsAreInputErrors) {
         return std::string("no error");
     };
     EXPECT_EQ(message({}).rfind("boundary loops: no loop", 0), 0u);
-    gen::BoundaryLoop2 two{{0, 0, 1, 0}, false, false};
+    gen::BoundaryLoop2 two{{0, 0, 1, 0}, false, false, {}};
     EXPECT_EQ(message({two}).rfind("boundary loop 0: a polygon needs at least 3 vertices", 0), 0u);
-    gen::BoundaryLoop2 repeated{{0, 0, 1, 0, 1, 0, 0, 1}, false, false};
+    gen::BoundaryLoop2 repeated{{0, 0, 1, 0, 1, 0, 0, 1}, false, false, {}};
     EXPECT_EQ(message({repeated}).rfind("boundary loop 0: vertices 1 and 2 coincide", 0), 0u);
-    gen::BoundaryLoop2 spline_two{{0, 0, 1, 0}, true, false};
+    gen::BoundaryLoop2 spline_two{{0, 0, 1, 0}, true, false, {}};
     EXPECT_EQ(
         message({spline_two}).rfind("boundary loop 0: spline: a closed spline needs at least 3", 0),
         0u);
     // Two overlapping circles cross; a figure eight crosses itself; a square touching a
     // triangle's corner touches.
-    const gen::BoundaryLoop2 a{flower(8, 0, 0, 1, 0, 1), true, false},
-        b{flower(8, 1, 0, 1, 0, 1), true, false};
+    const gen::BoundaryLoop2 a{flower(8, 0, 0, 1, 0, 1), true, false, {}},
+        b{flower(8, 1, 0, 1, 0, 1), true, false, {}};
     EXPECT_EQ(message({a, b}).rfind("boundary loops: segments ", 0), 0u) << message({a, b});
-    const gen::BoundaryLoop2 eight{{0, 0, 1, 1, 1, 0, 0, 1}, false, false};
+    const gen::BoundaryLoop2 eight{{0, 0, 1, 1, 1, 0, 0, 1}, false, false, {}};
     EXPECT_NE(message({eight}).find("cross or touch"), std::string::npos);
-    const gen::BoundaryLoop2 square{{0, 0, 1, 0, 1, 1, 0, 1}, false, false};
-    const gen::BoundaryLoop2 corner{{1, 1, 2, 1, 2, 2}, false, true};
+    const gen::BoundaryLoop2 square{{0, 0, 1, 0, 1, 1, 0, 1}, false, false, {}};
+    const gen::BoundaryLoop2 corner{{1, 1, 2, 1, 2, 2}, false, true, {}};
     EXPECT_NE(message({square, corner}).find("cross or touch"), std::string::npos);
     const gen::BoundaryLoop2 fold{
-        {0, 0, 2, 0, 1, 0, 1, 1}, false, false};  // folds back along y = 0
+        {0, 0, 2, 0, 1, 0, 1, 1}, false, false, {}};  // folds back along y = 0
     EXPECT_NE(message({fold}).find("cross or touch"), std::string::npos);
-    const gen::BoundaryLoop2 inner{{0.2, 0.2, 0.8, 0.2, 0.5, 0.8}, false, true};
+    const gen::BoundaryLoop2 inner{{0.2, 0.2, 0.8, 0.2, 0.5, 0.8}, false, true, {}};
     EXPECT_EQ(message({square, inner}), "no error");
+}
+
+TEST(Generators_SplineCurve2, CornersSplitALoopIntoOpenSplines) {
+    // A teardrop: a round nose and a sharp tail at control point 0 (1, 0).
+    std::vector<double> xy;
+    for (int i = 0; i < 12; ++i) {
+        const double theta = 2 * std::numbers::pi * i / 12;
+        xy.insert(xy.end(), {std::cos(theta), 0.4 * std::sin(theta) * (1 - std::cos(theta)) / 2});
+    }
+    gen::BoundaryLoop2 tail{xy, true, false, {0}};
+    const gen::DomainPslg d =
+        gen::boundary_loops_domain(std::vector{tail}, gen::SizeFunction::uniform(0.05));
+    ASSERT_GT(d.xy.size() / 2, 40u);
+    EXPECT_EQ(d.xy[0], 1.0);  // the corner itself
+    EXPECT_EQ(d.xy[1], 0.0);
+    // Both sides leave the corner along their own tangent: a corner, not a C1 join.
+    const std::size_t n = d.xy.size() / 2;
+    const double ax = d.xy[2] - 1, ay = d.xy[3], bx = d.xy[2 * (n - 1)] - 1,
+                 by = d.xy[2 * (n - 1) + 1];
+    const double angle =
+        std::acos((ax * bx + ay * by) / (std::hypot(ax, ay) * std::hypot(bx, by))) * 180 /
+        std::numbers::pi;
+    EXPECT_LT(angle, 150);
+    // Two corners: the points of both corners are in the PSLG.
+    gen::BoundaryLoop2 two{xy, true, false, {0, 6}};
+    const gen::DomainPslg d2 =
+        gen::boundary_loops_domain(std::vector{two}, gen::SizeFunction::uniform(0.05));
+    bool found = false;
+    for (std::size_t i = 0; i < d2.xy.size() / 2; ++i)
+        found = found || (d2.xy[2 * i] == xy[12] && d2.xy[2 * i + 1] == xy[13]);
+    EXPECT_TRUE(found);
+    gen::RefinementOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.05);
+    options.min_angle = 0;  // the tail's own angle is small
+    const auto refined = gen::delaunay_refinement_2d({d.xy, d.segments, d.holes, {}}, options);
+    const auto check = em::testing::check_quality_mesh(
+        refined.mesh.mesh, refined.mesh.input_vertex_count, d.xy, d.segments, refined.mesh.pieces);
+    EXPECT_TRUE(check.ok) << check.problem;
+    gen::BoundaryLoop2 bad{xy, true, false, {3, 3}};
+    EXPECT_THROW(gen::boundary_loops_domain(std::vector{bad}, gen::SizeFunction::uniform(0.05)),
+                 em::InputError);
+    gen::BoundaryLoop2 out{xy, true, false, {12}};
+    EXPECT_THROW(gen::boundary_loops_domain(std::vector{out}, gen::SizeFunction::uniform(0.05)),
+                 em::InputError);
 }
