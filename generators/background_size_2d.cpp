@@ -138,6 +138,16 @@ BackgroundSizeMesh2::BackgroundSizeMesh2(std::vector<double> xy, std::vector<dou
     mesh_.xy = std::move(xy);
     mesh_.triangles = std::move(triangles);
     sizes_ = std::move(sizes);
+    boxes_.resize(4 * count);
+    for (std::size_t t = 0; t < count; ++t) {
+        const double* a = mesh_.point(mesh_.triangles[3 * t]);
+        const double* b = mesh_.point(mesh_.triangles[3 * t + 1]);
+        const double* c = mesh_.point(mesh_.triangles[3 * t + 2]);
+        boxes_[4 * t] = std::min({a[0], b[0], c[0]}),
+                   boxes_[4 * t + 1] = std::min({a[1], b[1], c[1]});
+        boxes_[4 * t + 2] = std::max({a[0], b[0], c[0]}),
+                       boxes_[4 * t + 3] = std::max({a[1], b[1], c[1]});
+    }
     fill(triangle_buckets_, count, 3, mesh_.triangles.data(), 0.5);
     fill(edge_buckets_, boundary_.size() / 2, 2, boundary_.data(), 1.0);
 }
@@ -209,6 +219,9 @@ tri::TriIdx BackgroundSizeMesh2::locate(double x, double y) const {
     const std::size_t cell = std::size_t{b.row(y)} * b.columns + b.column(x);
     for (std::uint32_t i = b.start[cell]; i < b.start[cell + 1]; ++i) {
         const tri::TriIdx t = b.items[i];
+        // The triangle's box first (exact comparisons: a point outside it is outside).
+        const double* box = &boxes_[4 * std::size_t{t}];
+        if (x < box[0] || x > box[2] || y < box[1] || y > box[3]) continue;
         const std::uint32_t* v = &mesh_.triangles[3 * std::size_t{t}];
         if (predicates::orient2d(mesh_.point(v[0]), mesh_.point(v[1]), p) !=
                 predicates::Sign::Negative &&

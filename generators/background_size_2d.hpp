@@ -75,6 +75,7 @@ class BackgroundSizeMesh2 {
     triangulation::Triangulation2 mesh_;  // xy and triangles only
     std::vector<double> sizes_;
     std::vector<std::uint32_t> boundary_;
+    std::vector<double> boxes_;  // 4·#T: each triangle's x0, y0, x1, y1
     Buckets triangle_buckets_, edge_buckets_;
     void fill(Buckets& b, std::size_t count, std::size_t per_item, const std::uint32_t* vertices,
               double per_cell);

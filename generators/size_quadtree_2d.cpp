@@ -6,6 +6,7 @@
 #include "generators/size_quadtree_2d.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -265,16 +266,18 @@ SizeQuadtree2::SizeQuadtree2(const std::function<double(double, double)>& field,
 }
 
 std::uint32_t SizeQuadtree2::descend(double x, double y, double& fx, double& fy) const {
-    // The fractions of the root square in 52-bit fixed point (exact: a fraction in [0, 1) has
-    // no bits below 2^-53 that matter at depth <= 30); each level reads one bit of each, without
-    // a branch, and the bits left over are the position in the leaf.
+    // The fractions of the root square in 52-bit fixed point (truncated below 2^-52; a depth of
+    // at most 30 reads only the top 30 bits, so the leaf is the one the rounded fraction lies
+    // in); each level reads one bit of each, without a branch, and the bits left over are the
+    // position in the leaf.
     constexpr int kBits = 52;
     constexpr std::uint64_t kTop = (std::uint64_t{1} << kBits) - 1;
     double u = (std::clamp(x, box_.x0, box_.x1) - x0_) / side_,
            v = (std::clamp(y, box_.y0, box_.y1) - y0_) / side_;
     u = u >= 0 ? std::min(u, 1.0) : 0.0, v = v >= 0 ? std::min(v, 1.0) : 0.0;  // NaN -> 0
-    const std::uint64_t ix = std::min(kTop, static_cast<std::uint64_t>(std::ldexp(u, kBits)));
-    const std::uint64_t iy = std::min(kTop, static_cast<std::uint64_t>(std::ldexp(v, kBits)));
+    constexpr double kScale = 4503599627370496.0;                              // 2^52
+    const std::uint64_t ix = std::min(kTop, static_cast<std::uint64_t>(u * kScale));
+    const std::uint64_t iy = std::min(kTop, static_cast<std::uint64_t>(v * kScale));
     std::uint32_t n = 0;
     int shift = kBits - 1;
     while (nodes_[n].child != kNone) {
@@ -283,8 +286,10 @@ std::uint32_t SizeQuadtree2::descend(double x, double y, double& fx, double& fy)
         --shift;
     }
     const std::uint64_t mask = (std::uint64_t{1} << (shift + 1)) - 1;
-    fx = std::ldexp(static_cast<double>(ix & mask), -(shift + 1));
-    fy = std::ldexp(static_cast<double>(iy & mask), -(shift + 1));
+    // 2^-(shift + 1) from its exponent bits (shift + 1 in [22, 52]: a normal number).
+    const double unit = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - (shift + 1)) << 52);
+    fx = static_cast<double>(ix & mask) * unit;
+    fy = static_cast<double>(iy & mask) * unit;
     if (u == 1.0 && ((ix & mask) == mask)) fx = 1.0;  // the box's right side
     if (v == 1.0 && ((iy & mask) == mask)) fy = 1.0;
     return nodes_[n].leaf;
