@@ -12,9 +12,9 @@
 //    (generators/background_size_2d.hpp);
 //  - quadtree: a 2:1 balanced quadtree refined where another size field varies, bilinear in
 //    its leaves (generators/size_quadtree_2d.hpp);
-//  - smoothed: another size field with its gradient limited and then smoothed by a screened
-//    Poisson (elliptic) equation on a background grid, bilinear between the grid's nodes
-//    (generators/size_smoothing_2d.hpp).
+//  - smoothed: another size field on a background grid, its gradient limited, smoothed by a
+//    screened Poisson (elliptic) equation with its local minima kept, limited again, bilinear
+//    between the grid's nodes (generators/size_smoothing_2d.hpp).
 // Every kind can be scaled by a constant factor (benchmarks reach a target element count that
 // way). The text form (`--size NUM|FILE`) is documented at parse_size_sources.
 #pragma once
