@@ -4,23 +4,25 @@
 // line sources, whose min, sum and cap have kinks and may grow faster than a mesh can grade)
 // sampled at the nodes of an NX x NY grid over a box, then
 //  1. gradient-limited: s1 = H(s0), H(f) the largest grid function <= f with
-//     |H_i - H_j| <= g h_ij for grid neighbours i, j (h_ij their spacing), by Dijkstra's order
-//     from the smallest value [Borouchaki-Hecht-Frey97: "Mesh gradation control", IJNME 43];
+//     |H_i - H_j| <= g |x_i - x_j| for the nodes j of a 16-neighbour stencil about i (axis,
+//     diagonal and knight moves: round cones, where 4 neighbours give diamonds), by Dijkstra's
+//     order from the smallest value [Borouchaki-Hecht-Frey97: "Mesh gradation control", IJNME
+//     43; Borgefors86 for the stencil];
 //  2. smoothed: s2 solves the screened Poisson equation s - L^2 Lap_h s = s1 (5-point
 //     Laplacian, zero flux at the box's sides) with s2 = s1 (Dirichlet) at the nodes where s1
 //     has a local minimum (<= its grid neighbours, < one of them: where a source dominates), by
 //     conjugate gradients to a stated residual [Saad03 §6.7]; kinks of s1 are rounded over a
 //     length about L;
-//  3. s = H(s2): a pinned minimum may leave a dip steeper than g, which this limits again (only
-//     there; elsewhere s2's slopes are already at most g, see below, and H changes nothing);
+//  3. s = H(s2): a pinned minimum may leave a dip steeper than g, which this limits again
+//     (elsewhere s2's axis slopes are already at most g, see below);
 //  4. bilinear between the nodes; outside the box, the value at the nearest point of the box.
-// Guarantees: |s_i - s_j| <= g h_ij on every grid edge (step 3, up to one rounding), so
-// |ds/dx| <= g and |ds/dy| <= g in every cell and |grad s| <= sqrt(2) g; min s0 <= s <= max s0
-// (H only lowers and never below the smallest value; the smoothing is an M-matrix system with
-// unit row sums, clamped to s1's range against the residual); s <= s0 at the pinned minima (the
-// mesh is never coarser than asked at a source). Without pins, the x-differences of s2 solve the
-// same kind of system with those of s1 as right-hand side (zero flux makes the operators
-// commute), so s2 keeps s1's slope bound and step 3 is the identity.
+// Guarantees (proofs/invariants/size_fields_2d.md): |s_i - s_j| <= g h_ij on every grid edge
+// (step 3, up to one rounding), so |ds/dx| <= g and |ds/dy| <= g in every cell and
+// |grad s| <= sqrt(2) g; min s0 <= s <= max s0 (H only lowers and never below the smallest
+// value; the smoothing is an M-matrix system with unit row sums, clamped to s1's range against
+// the residual); s <= s0 at the pinned minima (the mesh is never coarser than asked at a
+// source). Without pins, the x-differences of s2 solve the same kind of system with those of s1
+// as right-hand side (zero flux makes the operators commute), so s2 keeps s1's axis-slope bound.
 // Cost: N = NX · NY field evaluations, O(N log N) for H, O(N sqrt(kappa)) for the solve with
 // kappa <= 1 + 8 L^2 / h^2; a query O(1). Predicates: none (a size field, no combinatorics).
 #pragma once
