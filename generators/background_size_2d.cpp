@@ -174,11 +174,33 @@ void BackgroundSizeMesh2::fill(Buckets& b, std::size_t count, std::size_t per_it
     }
     const long double width = static_cast<long double>(x1) - b.x0,
                       height = static_cast<long double>(y1) - b.y0;
-    const double cells = std::max(1.0, std::sqrt(static_cast<double>(count) / per_cell));
-    b.cell = static_cast<double>(std::max(width, height) / cells);
-    if (!(b.cell > 0) || !std::isfinite(b.cell)) b.cell = std::numeric_limits<double>::max();
-    b.columns = static_cast<std::uint32_t>(std::clamp<long double>(width / b.cell, 0, 4095)) + 1;
-    b.rows = static_cast<std::uint32_t>(std::clamp<long double>(height / b.cell, 0, 4095)) + 1;
+    // Coarser while the lists would hold more than 16 entries per item (long slivers meet
+    // many cells; a fan of them would otherwise need memory quadratic in their number).
+    auto range = [&](std::size_t item, std::uint32_t& c0, std::uint32_t& c1, std::uint32_t& r0,
+                     std::uint32_t& r1) {
+        c0 = b.columns, c1 = 0, r0 = b.rows, r1 = 0;
+        for (std::size_t k = 0; k < per_item; ++k) {
+            const double* p = mesh_.point(vertices[per_item * item + k]);
+            c0 = std::min(c0, b.column(p[0])), c1 = std::max(c1, b.column(p[0]));
+            r0 = std::min(r0, b.row(p[1])), r1 = std::max(r1, b.row(p[1]));
+        }
+    };
+    for (double cells = std::max(1.0, std::sqrt(static_cast<double>(count) / per_cell));;
+         cells = std::max(1.0, cells / 2)) {
+        b.cell = static_cast<double>(std::max(width, height) / cells);
+        if (!(b.cell > 0) || !std::isfinite(b.cell)) b.cell = std::numeric_limits<double>::max();
+        b.columns =
+            static_cast<std::uint32_t>(std::clamp<long double>(width / b.cell, 0, 4095)) + 1;
+        b.rows = static_cast<std::uint32_t>(std::clamp<long double>(height / b.cell, 0, 4095)) + 1;
+        if (cells == 1.0) break;
+        std::uint64_t total = 0;
+        for (std::size_t item = 0; item < count; ++item) {
+            std::uint32_t c0, c1, r0, r1;
+            range(item, c0, c1, r0, r1);
+            total += std::uint64_t{c1 - c0 + 1} * (r1 - r0 + 1);
+        }
+        if (total <= 16 * std::uint64_t{count} + 4096) break;
+    }
     b.start.assign(std::size_t{b.columns} * b.rows + 1, 0);
     for (int pass = 0; pass < 2; ++pass) {
         std::vector<std::uint32_t> next;
@@ -188,12 +210,8 @@ void BackgroundSizeMesh2::fill(Buckets& b, std::size_t count, std::size_t per_it
             next.assign(b.start.begin(), b.start.end() - 1);
         }
         for (std::size_t item = 0; item < count; ++item) {
-            std::uint32_t c0 = b.columns, c1 = 0, r0 = b.rows, r1 = 0;
-            for (std::size_t k = 0; k < per_item; ++k) {
-                const double* p = mesh_.point(vertices[per_item * item + k]);
-                c0 = std::min(c0, b.column(p[0])), c1 = std::max(c1, b.column(p[0]));
-                r0 = std::min(r0, b.row(p[1])), r1 = std::max(r1, b.row(p[1]));
-            }
+            std::uint32_t c0, c1, r0, r1;
+            range(item, c0, c1, r0, r1);
             for (std::uint32_t r = r0; r <= r1; ++r) {
                 for (std::uint32_t c = c0; c <= c1; ++c) {
                     const std::size_t cell = std::size_t{r} * b.columns + c;

@@ -79,9 +79,9 @@ SmoothedSizeGrid2::SmoothedSizeGrid2(const std::function<double(double, double)>
           std::isfinite(box.x1 - box.x0) && std::isfinite(box.y1 - box.y0))) {
         throw InputError("size smoothing: the box must be finite with x0 < x1 and y0 < y1");
     }
-    if (nx_ < 2 || ny_ < 2 || std::uint64_t{nx_} * ny_ > (std::uint64_t{1} << 26)) {
+    if (nx_ < 2 || ny_ < 2 || std::uint64_t{nx_} * ny_ > (std::uint64_t{1} << 24)) {
         throw InputError(
-            "size smoothing: the grid must have 2 to 2^26 nodes, at least 2 each way (got " +
+            "size smoothing: the grid must have at most 2^24 nodes, at least 2 each way (got " +
             std::to_string(nx_) + " x " + std::to_string(ny_) + ")");
     }
     if (!(options.gradation > 0) || std::isnan(options.gradation)) {

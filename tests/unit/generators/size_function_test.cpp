@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <string>
 #include <utility>
@@ -22,6 +23,7 @@
 #include "generators/size_quadtree_2d.hpp"
 #include "generators/size_smoothing_2d.hpp"
 #include "predicates/errors.hpp"
+#include "predicates/orient2d.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;
@@ -191,6 +193,40 @@ TEST(Generators_SizeFunction, BackgroundMeshNearestPointOfANonConvexMesh) {
     EXPECT_NEAR(f(1.5, 0.5), 2.0, 1e-15);  // inside
     // Far away, the far corner.
     EXPECT_NEAR(f(100, -100), 3.0, 1e-15);
+}
+
+TEST(Generators_SizeFunction, BackgroundMeshOfLongSliversLocatesEveryPoint) {
+    // A fan of 5,000 slivers from the centre to a circle: most meet many buckets (the grid
+    // coarsens instead of listing each in thousands of cells). Every point of the polygon is
+    // found, by the exact tests, in a triangle that does contain it.
+    const int n = 5000;
+    std::vector<double> xy = {0, 0}, sizes = {1};
+    std::vector<std::uint32_t> triangles;
+    for (int k = 0; k < n; ++k) {
+        const double theta = 2 * std::numbers::pi * k / n;
+        xy.insert(xy.end(), {std::cos(theta), std::sin(theta)});
+        sizes.push_back(linear(std::cos(theta), std::sin(theta)));
+        triangles.insert(triangles.end(), {0, static_cast<std::uint32_t>(k + 1),
+                                           static_cast<std::uint32_t>((k + 1) % n + 1)});
+    }
+    sizes[0] = linear(0, 0);
+    const gen::SizeFunction f = gen::SizeFunction::background_mesh(xy, sizes, triangles);
+    std::mt19937_64 random(9);
+    std::uniform_real_distribution<double> u(-0.99, 0.99);
+    for (int k = 0; k < 20000; ++k) {
+        const double x = u(random), y = u(random);
+        if (std::hypot(x, y) > 0.99) continue;
+        const auto t = f.background_mesh()->locate(x, y);
+        ASSERT_NE(t, em::triangulation::kNone) << x << " " << y;
+        const double p[2] = {x, y};
+        for (int e = 0; e < 3; ++e) {
+            ASSERT_NE(em::predicates::orient2d(
+                          &xy[2 * triangles[3 * t + static_cast<unsigned>(e)]],
+                          &xy[2 * triangles[3 * t + static_cast<unsigned>((e + 1) % 3)]], p),
+                      em::predicates::Sign::Negative);
+        }
+        ASSERT_NEAR(f(x, y), linear(x, y), 1e-12);
+    }
 }
 
 TEST(Generators_SizeFunction, BackgroundMeshErrorsNameTheItem) {
