@@ -16,6 +16,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
+#include "cli/size_expression.hpp"
 #include "generators/laplacian_smoothing_2d.hpp"
 #include "generators/mesh_generators_2d.hpp"
 #include "generators/quality_2d.hpp"
@@ -46,14 +47,13 @@ struct MeshArguments {
     bool stats = false;
 };
 
-/// --size: a number (uniform), else a size file (generators/size_function.hpp).
+/// --size: a number (uniform), else a size file (generators/size_function.hpp) when one of
+/// that name exists, else an expression in x and y (cli/size_expression.hpp).
 gen::SizeFunction read_size(const std::string& text) {
     double uniform = 0;
     if (gen::parse_uniform_size(text, uniform)) return gen::SizeFunction::uniform(uniform);
     std::ifstream file(text);
-    if (!file) {
-        throw InputError("--size '" + text + "' is neither a number > 0 nor a readable size file");
-    }
+    if (!file) return size_from_expression(text);
     std::ostringstream content;
     content << file.rdbuf();
     return gen::parse_size_sources(content.str(), text);
@@ -206,10 +206,12 @@ void add_mesh_command(CLI::App& app) {
         ->capture_default_str();
     command
         ->add_option("--size", arguments->size,
-                     "Target edge length: a number (uniform), or a size file of lines 'uniform H', "
+                     "Target edge length: a number (uniform); a size file of lines 'uniform H', "
                      "'point X Y S RBAR GAMMA', 'line X0 Y0 X1 Y1 S RBAR GAMMA' (source formula "
-                     "s = min(H, sum s_k [1 + (d_k / rbar_k)^gamma_k]))")
-        ->type_name("NUM|FILE");
+                     "s = min(H, sum s_k [1 + (d_k / rbar_k)^gamma_k])); or an expression in x and "
+                     "y (muParser: + - * / ^ sqrt exp log sin cos abs min max _pi), e.g. "
+                     "'0.01 + 0.1 * sqrt(x^2 + y^2)'")
+        ->type_name("NUM|FILE|EXPR");
     command
         ->add_option("--max-steiner", arguments->max_steiner,
                      "Stop with an error after this many Steiner points (0: automatic)")

@@ -228,7 +228,8 @@ def pictures(cli, res, out_dir, out):
             svg = f"mesh_{domain}_{g}.svg"
             done = subprocess.run([cli, "mesh", "--domain", domain, "--generator", g, "-o",
                                    os.path.join(out_dir, svg)], capture_output=True, text=True)
-            row.append(f"[svg]({svg})" if done.returncode == 0 else f"error: {done.stderr.strip()}")
+            row.append(f'<a href="{svg}"><img src="{svg}" width="220"></a>' if done.returncode == 0
+                       else f"error: {done.stderr.strip()}")
         rows.append(row)
     out.append("### Pictures (each domain at its own size function)\n")
     out.append(table(["domain"] + generators, rows))
