@@ -12,8 +12,8 @@
 // theta_min but below the polish angle are kept aside (candidates); when the loop ends, they
 // are queued with the polish angle as the bound and the loop runs again with a Steiner point
 // limit; if it is reached, the queue keeps only what is bad for theta_min and the loop ends the
-// proven way. Sizes at edge midpoints are kept per half-edge (forgotten when the slot is
-// rewritten): a new triangle evaluates the size of its new edges only.
+// proven way. Sizes at edge midpoints (unless uniform) are kept per half-edge (forgotten when the
+// slot is rewritten): a new triangle evaluates the size of its new edges only.
 #include "generators/delaunay_refinement_2d.hpp"
 
 #include <algorithm>
@@ -116,8 +116,9 @@ class Refiner {
     BadTriangleQueue bad_;
     std::vector<PieceToSplit> pieces_;
     std::vector<std::uint32_t> version_;  // per triangle slot
-    std::vector<double> edge_size_;       // per half-edge: the size at its midpoint; 0: unknown
-    std::vector<std::uint32_t> seen_;     // per triangle slot: batch stamp of process_touched
+    bool cache_sizes_ = false;         // a size function dearer than a constant: edge_size_ is kept
+    std::vector<double> edge_size_;    // per half-edge: the size at its midpoint; 0: unknown
+    std::vector<std::uint32_t> seen_;  // per triangle slot: batch stamp of process_touched
     std::uint32_t batch_ = 0;
     std::vector<SegmentVertex> on_segment_;  // per vertex
     std::vector<std::uint32_t> degree_;      // per initial vertex: constrained edges at it
@@ -217,7 +218,7 @@ void Refiner::check_domain_and_budget() {
     cdt_.reserve(static_cast<std::uint32_t>(expected_vertices));
     version_.reserve(static_cast<std::size_t>(2 * expected_vertices));
     seen_.reserve(static_cast<std::size_t>(2 * expected_vertices));
-    edge_size_.reserve(static_cast<std::size_t>(6 * expected_vertices));
+    if (cache_sizes_) edge_size_.reserve(static_cast<std::size_t>(6 * expected_vertices));
     on_segment_.reserve(static_cast<std::size_t>(expected_vertices));
 }
 
@@ -279,10 +280,13 @@ void Refiner::evaluate(TriIdx t) {
             // triangle on either side is not rewritten (a cavity's boundary edges, and each new
             // spoke for its second triangle, need no new evaluation).
             const EdgeIdx e = 3 * t + static_cast<EdgeIdx>(k);
-            double s = edge_size_[e];
-            if (!(s > 0)) {
-                const EdgeIdx f = mesh_.twin[e];
-                s = f < edge_size_.size() ? edge_size_[f] : 0.0;
+            double s = 0;
+            if (cache_sizes_) {
+                s = edge_size_[e];
+                if (!(s > 0)) {
+                    const EdgeIdx f = mesh_.twin[e];
+                    s = f < edge_size_.size() ? edge_size_[f] : 0.0;
+                }
             }
             if (!(s > 0)) {
                 const double mx = 0.5 * (p[k][0] + p[(k + 1) % 3][0]),
@@ -295,7 +299,7 @@ void Refiner::evaluate(TriIdx t) {
                                      " (" + options_.size.describe() + ")");
                 }
             }
-            edge_size_[e] = s;
+            if (cache_sizes_) edge_size_[e] = s;
             size_key = std::max(size_key, length2[k] / (s * s));
         }
     }
@@ -346,19 +350,24 @@ void Refiner::process_touched() {
         version_.resize(slots, 0);
         seen_.resize(slots, 0);
     }
-    if (edge_size_.size() < 3 * std::size_t{slots}) edge_size_.resize(3 * std::size_t{slots}, 0.0);
-    // First every rewritten slot forgets its edges' sizes, then the triangles are evaluated
-    // (a new triangle may take the size its new neighbour has just found).
-    for (const TriIdx t : cdt_.touched()) {
-        if (seen_[t] == batch_) continue;
-        seen_[t] = batch_;
-        ++version_[t];
-        edge_size_[3 * t] = edge_size_[3 * t + 1] = edge_size_[3 * t + 2] = 0.0;
+    if (cache_sizes_) {
+        if (edge_size_.size() < 3 * std::size_t{slots}) {
+            edge_size_.resize(3 * std::size_t{slots}, 0.0);
+        }
+        // First every rewritten slot forgets its edges' sizes, then the triangles are evaluated
+        // (a new triangle may take the size its new neighbour has just found).
+        for (const TriIdx t : cdt_.touched()) {
+            if (seen_[t] == batch_) continue;
+            seen_[t] = batch_;
+            ++version_[t];
+            edge_size_[3 * t] = edge_size_[3 * t + 1] = edge_size_[3 * t + 2] = 0.0;
+        }
+        next_batch();
     }
-    next_batch();
     for (const TriIdx t : cdt_.touched()) {
         if (seen_[t] == batch_) continue;
         seen_[t] = batch_;
+        if (!cache_sizes_) ++version_[t];
         if (!cdt_.in_domain(t)) continue;
         for (unsigned k = 0; k < 3; ++k) {
             const EdgeIdx e = 3 * t + k;
@@ -375,7 +384,7 @@ void Refiner::initial_queue() {
     const std::uint32_t slots = mesh_.triangle_slots();
     version_.assign(slots, 0);
     seen_.assign(slots, 0);
-    edge_size_.assign(3 * std::size_t{slots}, 0.0);
+    if (cache_sizes_) edge_size_.assign(3 * std::size_t{slots}, 0.0);
     for (TriIdx t = 0; t < slots; ++t) {
         if (!cdt_.in_domain(t)) continue;
         for (unsigned k = 0; k < 3; ++k) {
@@ -613,6 +622,7 @@ RefinementResult2 Refiner::run() {
         const double s = std::sin(options_.min_angle * 3.14159265358979323846 / 180.0);
         sine2_bound_ = s * s;
     }
+    cache_sizes_ = options_.size.bounded() && !options_.size.is_uniform();
     check_domain_and_budget();
     asked_sine2_ = sine2_bound_;
     if (options_.min_angle > 0) {
