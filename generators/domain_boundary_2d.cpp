@@ -151,21 +151,29 @@ tri::TriIdx DomainLocator2::locate(const tri::Triangulation2& mesh, double x, do
     std::uint32_t column, row;
     if (!cell_of(x, y, column, row)) return tri::kNone;
     const double p[2] = {x, y};
-    // The point's cell; a point on a cell's border may be in a triangle listed only beside it.
+    const auto search = [&](std::uint32_t c, std::uint32_t r) -> tri::TriIdx {
+        const std::size_t cell = std::size_t{r} * columns_ + c;
+        for (std::uint32_t i = start_[cell]; i < start_[cell + 1]; ++i) {
+            const tri::TriIdx t = triangles_[i];
+            bool inside = true;
+            for (unsigned k = 0; k < 3 && inside; ++k) {
+                inside = predicates::orient2d(mesh.point(mesh.triangles[3 * t + k]),
+                                              mesh.point(mesh.triangles[3 * t + (k + 1) % 3]),
+                                              p) != predicates::Sign::Negative;
+            }
+            if (inside) return t;
+        }
+        return tri::kNone;
+    };
+    // The point's own cell first: cell_of is monotone in x and in y, so a triangle containing
+    // the point has its box's cells around the point's cell and is listed there. The cells
+    // beside it only when that fails (a point outside, or on a border: kept as a safeguard).
+    if (const tri::TriIdx t = search(column, row); t != tri::kNone) return t;
     for (std::uint32_t r = row > 0 ? row - 1 : 0; r <= std::min(row + 1, rows_ - 1); ++r) {
         for (std::uint32_t c = column > 0 ? column - 1 : 0; c <= std::min(column + 1, columns_ - 1);
              ++c) {
-            const std::size_t cell = std::size_t{r} * columns_ + c;
-            for (std::uint32_t i = start_[cell]; i < start_[cell + 1]; ++i) {
-                const tri::TriIdx t = triangles_[i];
-                bool inside = true;
-                for (unsigned k = 0; k < 3 && inside; ++k) {
-                    inside = predicates::orient2d(mesh.point(mesh.triangles[3 * t + k]),
-                                                  mesh.point(mesh.triangles[3 * t + (k + 1) % 3]),
-                                                  p) != predicates::Sign::Negative;
-                }
-                if (inside) return t;
-            }
+            if (c == column && r == row) continue;
+            if (const tri::TriIdx t = search(c, r); t != tri::kNone) return t;
         }
     }
     return tri::kNone;
