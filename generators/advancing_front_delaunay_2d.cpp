@@ -229,8 +229,12 @@ class AdvancingFront {
                     close_by_cdt();
                     return;
                 }
-                if (close_edge(e, 2.0, 1.0) ||
-                    (++counters_.widened_searches, close_edge(e, 4.0, 0.5))) {
+                // A thin triangle (smallest angle below 15 degrees) is taken only when neither
+                // the usual attempt nor a wider one with the new point at half height finds a
+                // better one.
+                if (close_edge(e, 2.0, 1.0, kThinSine) ||
+                    (++counters_.widened_searches, close_edge(e, 4.0, 0.5, kThinSine)) ||
+                    close_edge(e, 2.0, 1.0, 0.0)) {
                     progress = true;
                 } else {
                     ++counters_.postponed_edges;
@@ -256,6 +260,9 @@ class AdvancingFront {
 
   private:
     static constexpr std::uint64_t kMaxRounds = 1000;
+    static constexpr double kThinSine = 0.25881904510252074;  // sin(15 degrees)
+    static constexpr double kMaxHeight = 1.4;
+    static constexpr double kLaggingFront = 2.0;
     struct FrontEdge {
         VertIdx a, b;
         bool alive;
@@ -334,7 +341,7 @@ class AdvancingFront {
 
     /// Tries to close front edge e: the new point at `height` times the ideal height, candidates
     /// within `radius` times the new triangle's size of the edge's midpoint.
-    bool close_edge(std::uint32_t e, double radius, double height) {
+    bool close_edge(std::uint32_t e, double radius, double height, double thin_sine) {
         const VertIdx a = edges_[e].a, b = edges_[e].b;
         const double ax = point(a)[0], ay = point(a)[1], bx = point(b)[0], by = point(b)[1];
         const double l = std::hypot(bx - ax, by - ay);
@@ -342,13 +349,17 @@ class AdvancingFront {
         const double nx = -(by - ay) / l, ny = (bx - ax) / l;  // unit normal into the domain
         // The circumradius bound h / sqrt(3) (an equilateral triangle of the local size h),
         // the size taken at the centroid of the equilateral triangle on ab; the apex on the
-        // bisector beyond the circumcentre, its height kept within [l / 2, 1.1 l] (right isosceles
-        // to 49 degrees at the apex) so that the triangle is never a sliver.
+        // bisector beyond the circumcentre, its height kept within [l / 2, 1.1 l] (right
+        // isosceles to 49 degrees at the apex) so that the triangle is never a sliver; up to
+        // kMaxHeight l (39 degrees) where the size is over kLaggingFront times the edge, so that
+        // a front behind a fast-growing size catches up (else it meets coarse boundary pieces
+        // with fine edges, and the triangles between them are thin).
         double h = checked_size(options_.size, mx + 0.29 * l * nx, my + 0.29 * l * ny);
         if (!std::isfinite(h)) h = l;
         const double r = std::max(h / std::sqrt(3.0), 0.5 * l);
+        const double highest = h > kLaggingFront * l ? kMaxHeight : 1.1;
         const double d = height * std::clamp(r + std::sqrt(std::max(0.0, r * r - 0.25 * l * l)),
-                                             0.5 * l, 1.1 * l);
+                                             0.5 * l, highest * l);
         const double side = std::sqrt(d * d + 0.25 * l * l);
         const double px = mx + d * nx, py = my + d * ny;
         const auto new_index = static_cast<VertIdx>(xy_.size() / 2);
@@ -394,6 +405,8 @@ class AdvancingFront {
             const bool is_new = c.v == new_index;
             if (is_new && !acceptable_placement(e, px, py, tolerance)) {
                 ++counters_.rejected_placements;
+            } else if (thin_sine > 0 && smallest_sine(a, b, c) < thin_sine) {
+                ++counters_.thin_skipped;
             } else if (visible(e, c, is_new)) {
                 form_triangle(e, c, is_new, side);
                 return true;
@@ -404,6 +417,22 @@ class AdvancingFront {
             candidates_.pop_back();
         }
         return false;
+    }
+
+    /// The sine of the smallest angle of triangle (a, b, c) (double precision: a preference,
+    /// not a validity decision).
+    double smallest_sine(VertIdx a, VertIdx b, const Candidate& c) const {
+        const double* pa = point(a);
+        const double* pb = point(b);
+        const double ux = pb[0] - pa[0], uy = pb[1] - pa[1], vx = c.x - pa[0], vy = c.y - pa[1];
+        const double wx = c.x - pb[0], wy = c.y - pb[1];
+        const double ab = std::sqrt(ux * ux + uy * uy), ac = std::sqrt(vx * vx + vy * vy),
+                     bc = std::sqrt(wx * wx + wy * wy);
+        const double twice_area = std::fabs(ux * vy - uy * vx);
+        // The smallest angle is opposite the shortest side: sin = 2 area / (product of the
+        // other two).
+        const double longest_pair = std::max({ab * ac, ab * bc, ac * bc});
+        return longest_pair > 0 ? twice_area / longest_pair : 0.0;
     }
 
     /// The placement rule (a tolerance, not a validity decision): (px, py) in the domain, no
@@ -659,6 +688,7 @@ std::vector<std::pair<std::string, std::uint64_t>> counter_list(
             {"existing_points", c.existing_points},
             {"rejected_candidates", c.rejected_candidates},
             {"rejected_placements", c.rejected_placements},
+            {"thin_skipped", c.thin_skipped},
             {"postponed_edges", c.postponed_edges},
             {"rounds", c.rounds},
             {"widened_searches", c.widened_searches},

@@ -53,6 +53,7 @@ struct AdvancingFrontDelaunayCounters2 {
     std::uint64_t existing_points = 0;      ///< triangles closed with a front point
     std::uint64_t rejected_candidates = 0;  ///< Delaunay candidates refused as not visible
     std::uint64_t rejected_placements = 0;  ///< new points not placed (outside, too close)
+    std::uint64_t thin_skipped = 0;         ///< candidates passed over for a thin triangle
     std::uint64_t postponed_edges = 0;      ///< front edges that could not be closed when taken
     std::uint64_t rounds = 0;               ///< passes over the postponed edges
     std::uint64_t widened_searches = 0;     ///< edges retried with a wider candidate radius
