@@ -669,8 +669,10 @@ AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
     if (budget == 0) {
         const double estimate = estimated_elements(boundary.cdt.mesh, options.size);
         if (!(estimate <= double{1 << 30})) {
-            throw InputError("advancing front Delaunay: the size function asks for about " +
-                             std::to_string(estimate) + " triangles, more than 2^30");
+            throw InputError(
+                "advancing front Delaunay: the size function asks for about " +
+                std::to_string(estimate) +
+                " triangles, more than 2^30 (or it is not > 0 somewhere in the domain)");
         }
         budget = static_cast<std::uint64_t>(8 * estimate) + 100000;
     }

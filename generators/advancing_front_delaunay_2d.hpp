@@ -6,14 +6,17 @@
 //  - The front starts as the discretized boundary (domain_boundary_2d: the domain on its left,
 //    slits both ways); the shortest front edge ab is taken first (a heap).
 //  - A candidate point p is placed ahead of ab on its bisector so that the circumradius of abp
-//    meets the bound from the local size (h / sqrt 3, an equilateral triangle of side h), kept
+//    meets the bound from the local size (h / sqrt 3, an equilateral triangle of side h; its
+//    height within [l / 2, 1.1 l] for an edge of length l, 1.4 l where h > 2 l), kept
 //    only when it is in the domain and not too close to front points or edges (a tolerance of
 //    the placement, never of a decision).
 //  - The triangle is abc for the c, among the nearby front points and p, left of ab whose circle
 //    through a, b, c contains none of the other candidates (exact incircle with the repository's
 //    SoS tie-break): the Tanemura-Merriam step. It is accepted only when no front point lies in
 //    the closed triangle and no front edge enters the open triangle (exact orient2d tests);
-//    otherwise c leaves the candidate set and the next Delaunay candidate is tried.
+//    otherwise c leaves the candidate set and the next Delaunay candidate is tried. A thin
+//    triangle (smallest angle below 15 degrees, a preference in double precision) is passed
+//    over until a wider search with the new point at half height finds nothing better.
 //  - An edge with no acceptable candidate is postponed to the next round; a round that closes
 //    no triangle, or an exhausted point budget, ends with the constrained Delaunay triangulation
 //    of the remaining front (triangulation/constrained_2d), counted.
