@@ -126,6 +126,12 @@ class LooseQuadtree {
     std::vector<std::uint32_t> stack_;
 };
 
+/// |(dx, dy)| < radius, in units of the radius (no overflow or underflow of the squares).
+bool shorter_than(double dx, double dy, double radius) {
+    const double x = dx / radius, y = dy / radius;
+    return x * x + y * y < 1.0;
+}
+
 std::uint64_t edge_key(VertIdx a, VertIdx b) {
     return (std::uint64_t{a} << 32) | b;
 }
@@ -175,9 +181,10 @@ double estimated_elements(const tri::Triangulation2& mesh, const SizeFunction& s
                                              std::hypot(p[0] - p[4], p[1] - p[5])});
             if (piece.depth == 8 || longest <= 8 * h || !std::isfinite(h) ||
                 samples > (std::uint64_t{1} << 18)) {
-                const double area =
-                    0.5 * std::fabs((p[2] - p[0]) * (p[5] - p[1]) - (p[3] - p[1]) * (p[4] - p[0]));
-                total += std::isfinite(h) ? area / (kEquilateral * h * h) : 1.0;
+                // The area in units of h squared (no overflow or underflow).
+                const double area = 0.5 * std::fabs((p[2] - p[0]) / h * ((p[5] - p[1]) / h) -
+                                                    (p[3] - p[1]) / h * ((p[4] - p[0]) / h));
+                total += std::isfinite(h) ? area / kEquilateral : 1.0;
                 continue;
             }
             const double a[2] = {0.5 * (p[0] + p[2]), 0.5 * (p[1] + p[3])};
@@ -356,11 +363,13 @@ class AdvancingFront {
         // with fine edges, and the triangles between them are thin).
         double h = checked_size(options_.size, mx + 0.29 * l * nx, my + 0.29 * l * ny);
         if (!std::isfinite(h)) h = l;
-        const double r = std::max(h / std::sqrt(3.0), 0.5 * l);
+        // In units of l (no overflow or underflow of the squares).
+        const double r = std::max(h / l / std::sqrt(3.0), 0.5);
         const double highest = h > kLaggingFront * l ? kMaxHeight : 1.1;
-        const double d = height * std::clamp(r + std::sqrt(std::max(0.0, r * r - 0.25 * l * l)),
-                                             0.5 * l, highest * l);
-        const double side = std::sqrt(d * d + 0.25 * l * l);
+        const double height_in_l =
+            height * std::clamp(r + std::sqrt(std::max(0.0, r * r - 0.25)), 0.5, highest);
+        const double d = height_in_l * l;
+        const double side = std::sqrt(height_in_l * height_in_l + 0.25) * l;
         const double px = mx + d * nx, py = my + d * ny;
         const auto new_index = static_cast<VertIdx>(xy_.size() / 2);
 
@@ -384,7 +393,7 @@ class AdvancingFront {
         for (const VertIdx v : near_points_) {
             if (v == a || v == b) continue;
             const double vx = point(v)[0] - mx, vy = point(v)[1] - my;
-            if (vx * vx + vy * vy > reach * reach) continue;
+            if (!shorter_than(vx, vy, reach)) continue;
             if (orient(point(a), point(b), point(v)) != Sign::Positive) continue;
             candidates_.push_back({v, point(v)[0], point(v)[1]});
         }
@@ -424,8 +433,11 @@ class AdvancingFront {
     double smallest_sine(VertIdx a, VertIdx b, const Candidate& c) const {
         const double* pa = point(a);
         const double* pb = point(b);
-        const double ux = pb[0] - pa[0], uy = pb[1] - pa[1], vx = c.x - pa[0], vy = c.y - pa[1];
-        const double wx = c.x - pb[0], wy = c.y - pb[1];
+        // In units of |ab| (no overflow or underflow of the products).
+        const double unit = std::hypot(pb[0] - pa[0], pb[1] - pa[1]);
+        const double ux = (pb[0] - pa[0]) / unit, uy = (pb[1] - pa[1]) / unit;
+        const double vx = (c.x - pa[0]) / unit, vy = (c.y - pa[1]) / unit;
+        const double wx = (c.x - pb[0]) / unit, wy = (c.y - pb[1]) / unit;
         const double ab = std::sqrt(ux * ux + uy * uy), ac = std::sqrt(vx * vx + vy * vy),
                      bc = std::sqrt(wx * wx + wy * wy);
         const double twice_area = std::fabs(ux * vy - uy * vx);
@@ -441,18 +453,17 @@ class AdvancingFront {
     /// contains the box of radius `tolerance` about the point.
     bool acceptable_placement(std::uint32_t e, double px, double py, double tolerance) {
         for (const VertIdx v : near_points_) {
-            const double vx = point(v)[0] - px, vy = point(v)[1] - py;
-            if (vx * vx + vy * vy < tolerance * tolerance) return false;
+            if (shorter_than(point(v)[0] - px, point(v)[1] - py, tolerance)) return false;
         }
         for (const std::uint32_t f : near_edges_) {
             if (f == e) continue;
             const double* u = point(edges_[f].a);
             const double* w = point(edges_[f].b);
-            const double dx = w[0] - u[0], dy = w[1] - u[1];
-            const double t =
-                std::clamp(((px - u[0]) * dx + (py - u[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
-            const double ex = px - (u[0] + t * dx), ey = py - (u[1] + t * dy);
-            if (ex * ex + ey * ey < 0.25 * tolerance * tolerance) return false;
+            // In units of the tolerance (no overflow or underflow of the squares).
+            const double ux = (u[0] - px) / tolerance, uy = (u[1] - py) / tolerance;
+            const double dx = (w[0] - u[0]) / tolerance, dy = (w[1] - u[1]) / tolerance;
+            const double t = std::clamp(-(ux * dx + uy * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+            if (shorter_than(ux + t * dx, uy + t * dy, 0.5)) return false;
         }
         return in_domain(boundary_, px, py);
     }

@@ -6,7 +6,7 @@
 // polygon, a tiny feature, a sharp angle); edges that are not locally Delaunay are counted and
 // reported; size conformity is bounded; the mean smallest angle beats Delaunay refinement's at
 // 20.7 degrees with the same size; an exhausted point budget ends in a valid closure; runs are
-// deterministic; bad input raises InputError.
+// deterministic and the same at scales 2^-990 and 2^990; bad input raises InputError.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -295,6 +295,22 @@ TEST(Generators_AdvancingFrontDelaunay, RunsAreDeterministic) {
     ASSERT_FALSE(names.empty());
     EXPECT_EQ(names.front().first, "triangles");
     EXPECT_EQ(names.front().second, first.result.counters.triangles);
+}
+
+TEST(Generators_AdvancingFrontDelaunay, PowerOfTwoScalesGiveTheSameTriangles) {
+    // Every placement quantity is computed in units of the edge, the tolerance or the size, so
+    // no square overflows or underflows: near the ends of the double range the mesh is valid
+    // and the same as at scale 1 (scaling by 2^k is exact).
+    const Input unit = polygon({0, 0, 1, 0, 1, 1, 0, 1, 0.2, 0.7});
+    const Meshed reference = mesh(unit, gen::SizeFunction::uniform(0.05));
+    ASSERT_TRUE(reference.check.ok) << reference.check.problem;
+    for (const int k : {-990, 990}) {
+        Input in = unit;
+        for (double& v : in.xy) v = std::ldexp(v, k);
+        const Meshed r = mesh(in, gen::SizeFunction::uniform(std::ldexp(0.05, k)));
+        ASSERT_TRUE(r.check.ok) << k << ": " << r.check.problem;
+        EXPECT_EQ(r.result.mesh.mesh.triangles, reference.result.mesh.mesh.triangles) << k;
+    }
 }
 
 TEST(Generators_AdvancingFrontDelaunay, BadInputIsAnInputError) {
