@@ -223,6 +223,7 @@ class AdvancingFront {
         for (VertIdx v = 0; v < degree_.size(); ++v) {
             if (degree_[v] > 0) points_.insert(v, point_box(point(v)), hint[v]);
         }
+        check_initial_front();
     }
 
     void run() {
@@ -535,6 +536,43 @@ class AdvancingFront {
             }
         }
         return true;
+    }
+
+    /// I2 for the initial front (proofs/invariants/advancing_front_delaunay_2d.md): the pieces
+    /// of a triangulation cross nothing, but the boundary's split points are rounded, and beside
+    /// a feature at the resolution of doubles one may land on another piece or make its pieces
+    /// cross one: no front can close there, so that is reported before any work.
+    void check_initial_front() {
+        for (std::uint32_t e = 0; e < edges_.size(); ++e) {
+            const VertIdx a = edges_[e].a, b = edges_[e].b;
+            Box box = point_box(point(a));
+            box.add(point(b)[0], point(b)[1]);
+            found_.clear();
+            points_.query(box, found_);
+            for (const VertIdx v : found_) {
+                if (v != a && v != b && on_segment(point(a), point(b), point(v))) {
+                    throw GeometryError(
+                        "advancing front Delaunay: the discretized boundary puts vertex " +
+                        std::to_string(v) + " on the piece " + std::to_string(a) + " - " +
+                        std::to_string(b) +
+                        " (a feature at the resolution of doubles; no front can close there)");
+                }
+            }
+            wide_edges_.clear();
+            edges_tree_.query(box, wide_edges_);
+            for (const std::uint32_t f : wide_edges_) {
+                const VertIdx x = edges_[f].a, y = edges_[f].b;
+                if (x == a || x == b || y == a || y == b) continue;
+                if (cross_properly(point(a), point(b), point(x), point(y))) {
+                    throw GeometryError(
+                        "advancing front Delaunay: the discretized boundary's pieces " +
+                        std::to_string(a) + " - " + std::to_string(b) + " and " +
+                        std::to_string(x) + " - " + std::to_string(y) +
+                        " cross (rounded split points beside a feature at the resolution of "
+                        "doubles)");
+                }
+            }
+        }
     }
 
     bool on_segment(const double* u, const double* w, const double* p) {

@@ -79,7 +79,9 @@ struct AdvancingFrontDelaunayResult2 {
 /// constrained_delaunay_2d removes them).
 /// @throws InputError on bad input (as constrained_delaunay_2d), an unbounded size, a
 ///         placement tolerance outside (0, 1), or when the segments enclose no region.
-/// @throws GeometryError when the remaining front cannot be closed (the closure needs points).
+/// @throws GeometryError when the discretized boundary touches itself (its rounded split points
+///         beside a feature at the resolution of doubles), or the remaining front cannot be
+///         closed without new points.
 AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
     const triangulation::Pslg& pslg, const AdvancingFrontDelaunayOptions2& options);
 
