@@ -11,12 +11,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "generators/delaunay_refinement_2d.hpp"
+#include "generators/pslg_inputs.hpp"
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
 #include "predicates/errors.hpp"
@@ -286,6 +288,41 @@ TEST(Generators_FrontalDelaunay, PointsTooCloseToAVertexAreRejected) {
     EXPECT_EQ(result.counters.forced_accepts,
               result.counters.rejected_too_close + result.counters.rejected_outside +
                   result.counters.rejected_encroach + result.counters.rejected_no_conflict);
+}
+
+TEST(Generators_FrontalDelaunay, RandomPslgsGiveValidMeshesOrAClearError) {
+    // The constrained Delaunay test distributions (crossings, overlaps, duplicates, small
+    // angles), at a uniform size of a twentieth of their extent: every run ends with an exact
+    // constrained Delaunay mesh, or InputError when nothing is enclosed, or GeometryError only
+    // where the triangulation itself holds features at the resolution of doubles (grid-lines).
+    std::size_t meshed = 0;
+    for (const auto d : gen::kAllPslgDistributions) {
+        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+            const gen::PslgInput p = gen::generate_pslg(d, 60, 30, seed);
+            const Input in{p.xy, p.segments, p.holes, {}};
+            double lo = INFINITY, hi = -INFINITY;
+            for (const double v : in.xy) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+            if (!(hi > lo)) continue;
+            gen::FrontalDelaunayOptions2 options;
+            options.size = gen::SizeFunction::uniform((hi - lo) / 20);
+            try {
+                const auto result = gen::frontal_delaunay_2d(in.pslg(), options);
+                const auto report = tri::check_constrained_delaunay_2d(
+                    result.mesh.mesh, result.mesh.input_vertex_count, in.segments,
+                    result.mesh.pieces);
+                EXPECT_TRUE(report.ok)
+                    << gen::pslg_distribution_name(d) << " seed " << seed << ": " << report.problem;
+                ++meshed;
+            } catch (const em::InputError&) {
+            } catch (const em::GeometryError& error) {
+                EXPECT_EQ(d, gen::PslgDistribution::GridLines) << seed << ": " << error.what();
+            }
+        }
+    }
+    EXPECT_GT(meshed, 10u);
 }
 
 TEST(Generators_FrontalDelaunay, RegionsKeepTheirAttributes) {
