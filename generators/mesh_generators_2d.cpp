@@ -5,6 +5,7 @@
 
 #include <array>
 
+#include "generators/frontal_delaunay_2d.hpp"
 #include "predicates/errors.hpp"
 
 namespace exactmesh::generators {
@@ -46,11 +47,24 @@ MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& opti
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
+MeshRun2 run_frontal_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
+    FrontalDelaunayOptions2 frontal;
+    frontal.size = options.size;
+    frontal.max_steiner_points = options.max_steiner_points;
+    frontal.cdt = options.cdt;
+    FrontalDelaunayResult2 result = frontal_delaunay_2d(pslg, frontal);
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
 constexpr std::array kGenerators{
     MeshGenerator2{"delaunay-refinement",
                    "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
                    "split first; guaranteed minimum angle",
                    true, false, &run_delaunay_refinement},
+    MeshGenerator2{"frontal-delaunay",
+                   "Rebay: points placed from the boundary inwards on the front edges' "
+                   "bisectors, inserted by Bowyer-Watson; needs a size",
+                   true, true, &run_frontal_delaunay},
 };
 
 }  // namespace
