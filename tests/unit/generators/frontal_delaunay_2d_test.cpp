@@ -272,6 +272,19 @@ TEST(Generators_FrontalDelaunay, PointsOutsideAFlatTriangleAreRejectedAndTheirTr
     }
 }
 
+TEST(Generators_FrontalDelaunay, PointsEncroachingAPieceAreRejected) {
+    // A channel 0.05 high whose size grows from 0.01 at the bottom wall to 0.06 at the top: the
+    // top wall's pieces are longer than the channel is high, and front points from below land
+    // in their diametral circles.
+    const Input in = polygon({0, 0, 1, 0, 1, 0.05, 0, 0.05});
+    const Meshed r = mesh(
+        in, gen::SizeFunction::analytic([](double, double y) { return 0.01 + y; }, "0.01 + y"));
+    ASSERT_TRUE(r.check.ok) << r.check.problem;
+    expect_consistent(in, r, "graded channel");
+    EXPECT_GT(r.result.counters.rejected_encroach, 0u);
+    EXPECT_EQ(r.result.counters.rejected_outside, 0u);
+}
+
 TEST(Generators_FrontalDelaunay, PointsTooCloseToAVertexAreRejected) {
     // With the closeness limit at 0.9 times the size, merging fronts reject points; each
     // rejection accepts its triangle and the mesh stays valid.
