@@ -4,9 +4,10 @@
 // keep their numbers; the counters add up (every output triangle accepted by the radius
 // criterion or after a rejected point); edges stay within a measured bound of the size; the
 // mean of the triangles' smallest angles beats Delaunay refinement's (20.7 degrees, same size)
-// on every sample domain; degenerate inputs (points on segments, a tiny feature, a sharp angle,
-// a triangle, a slit) give valid meshes; bad input and an exhausted budget raise the
-// documented errors.
+// on every sample domain; degenerate inputs (points on segments, duplicates, crossing segments,
+// a tiny feature, a sharp angle, a triangle, a slit, the random PSLG distributions) give valid
+// meshes; points outside, encroaching or too close are rejected and their triangles accepted;
+// bad input and an exhausted budget raise the documented errors.
 #include "generators/frontal_delaunay_2d.hpp"
 
 #include <gtest/gtest.h>
@@ -218,6 +219,7 @@ TEST(Generators_FrontalDelaunay, DegenerateInputs) {
     struct Case {
         const char* name;
         Input in;
+        bool closed_loops = true;  // false: inner segments that close nothing (no even-odd test)
     };
     std::vector<Case> cases;
     {
@@ -233,6 +235,20 @@ TEST(Generators_FrontalDelaunay, DegenerateInputs) {
         in.holes = {a + w / 2, a + w / 2};
         cases.push_back({"tiny hole", in});
     }
+    // Duplicate vertices, a duplicated segment and one given through the copies.
+    {
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {1, 0, 1, 1});  // vertices 4, 5 repeat 1, 2
+        in.segments.insert(in.segments.end(), {4, 5, 0, 1});
+        cases.push_back({"duplicates", in});
+    }
+    // Two crossing inner segments (split at their correctly rounded intersection).
+    {
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {0.2, 0.3, 0.8, 0.7, 0.2, 0.7, 0.8, 0.3});
+        in.segments.insert(in.segments.end(), {4, 5, 6, 7});
+        cases.push_back({"crossing segments", in, false});
+    }
     // A sharp input angle: a 5-degree wedge.
     {
         const double angle = 5.0 * 3.14159265358979323846 / 180;
@@ -247,10 +263,14 @@ TEST(Generators_FrontalDelaunay, DegenerateInputs) {
     }
     for (const Case& c : cases) {
         for (const double h : {0.2, 0.05}) {
-            const Meshed r = mesh(c.in, gen::SizeFunction::uniform(h));
+            const Meshed r = mesh(c.in, gen::SizeFunction::uniform(h), c.closed_loops);
             ASSERT_TRUE(r.check.ok) << c.name << " at " << h << ": " << r.check.problem;
             expect_consistent(c.in, r, c.name);
             EXPECT_LE(r.check.max_size_ratio, kSizeRatioBound) << c.name << " at " << h;
+            if (!c.closed_loops) {
+                EXPECT_EQ(r.result.mesh.counters.intersections, 1u) << c.name;
+                EXPECT_FALSE(r.result.mesh.warnings.empty()) << c.name;
+            }
         }
     }
 }
