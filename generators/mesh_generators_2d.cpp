@@ -61,7 +61,7 @@ constexpr std::array kGenerators{
                    "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
                    "split first; guaranteed minimum angle",
                    true, false, &run_delaunay_refinement},
-    MeshGenerator2{"frontal-delaunay",
+    MeshGenerator2{"frontal",
                    "Rebay: points placed from the boundary inwards on the front edges' "
                    "bisectors, inserted by Bowyer-Watson; needs a size",
                    true, true, &run_frontal_delaunay},
