@@ -239,7 +239,7 @@ class QuadtreeMesher {
                            const std::vector<VertIdx>& chords);
     double smallest_size(std::uint32_t n) const;
     bool separates(std::uint32_t n, const std::vector<std::uint32_t>& list);
-    void refine(std::uint32_t n, const std::vector<std::uint32_t>& list);
+    void refine(std::uint32_t n, const std::vector<std::uint32_t>& list, bool inside);
     void split_counted(std::uint32_t n);
     void balance();
     void distribute(std::uint32_t n, const std::vector<std::uint32_t>& list);
@@ -352,15 +352,18 @@ void QuadtreeMesher::split_counted(std::uint32_t n) {
 
 /// Top-down: `list` holds the obstacles meeting node n's grown box (so the children's lists
 /// are filtered from it: their grown boxes lie inside n's, rounding being monotone).
-void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& list) {
+/// `inside`: n is known to lie inside the domain (its parent's list was empty and it did).
+void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& list, bool inside) {
     const int level = tree_.nodes[n].level;
     if (level >= tree_.limit) return;
     const double side = tree_.side(level);
-    if (list.empty()) {
-        // Wholly inside or wholly outside the domain: nothing to mesh outside.
+    if (list.empty() && !inside) {
+        // Wholly inside or wholly outside the domain (it meets no chord): nothing to mesh
+        // outside; inside, so are its descendants.
         const Box b = tree_.cell(n);
         ++counters_.domain_queries;
         if (!in_domain(boundary_, 0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1))) return;
+        inside = true;
     }
     bool split = side > options_.cell_factor * smallest_size(n);
     if (split) {
@@ -387,7 +390,7 @@ void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& l
         for (const std::uint32_t o : list) {
             if (meets(obstacles_[o], g, counters_.box_tests)) child_list.push_back(o);
         }
-        refine(c, child_list);
+        refine(c, child_list, inside);
     }
 }
 
@@ -541,20 +544,59 @@ void QuadtreeMesher::replace_pieces(std::vector<std::vector<VertIdx>>& chains) {
 
 /// Kept: no obstacle meets the leaf's grown box and its centre is in the domain. The closed
 /// leaf then lies in the domain's interior (it is connected and meets no piece, no chord).
+/// Side-adjacent leaves that both meet no obstacle lie on the same side of the domain's
+/// boundary (their union is connected and meets no chord), so one exact point location per
+/// connected group of them decides them all.
 void QuadtreeMesher::classify() {
     distribute_all();
     kept_.assign(tree_.nodes.size(), 0);
+    std::vector<std::uint8_t> decided(tree_.nodes.size(), 0);
+    constexpr int kSteps[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+    auto clear = [&](std::uint32_t m) {
+        return tree_.nodes[m].leaf() && leaf_begin_[m] == leaf_end_[m];
+    };
+    std::vector<std::uint32_t> group;
     for (std::uint32_t n = 0; n < tree_.nodes.size(); ++n) {
         if (!tree_.nodes[n].leaf()) continue;
         ++counters_.leaves;
         counters_.depth =
             std::max(counters_.depth, static_cast<std::uint32_t>(tree_.nodes[n].level));
-        if (leaf_begin_[n] != leaf_end_[n]) continue;
+        if (!clear(n) || decided[n]) continue;
         const Box b = tree_.cell(n);
         ++counters_.domain_queries;
-        if (in_domain(boundary_, 0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1))) {
-            kept_[n] = 1;
-            ++counters_.kept_leaves;
+        const std::uint8_t inside = in_domain(boundary_, 0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1));
+        group.assign(1, n);
+        decided[n] = 1;
+        while (!group.empty()) {
+            const std::uint32_t m = group.back();
+            group.pop_back();
+            kept_[m] = inside;
+            counters_.kept_leaves += inside;
+            const Node c = tree_.nodes[m];
+            for (int s = 0; s < 4; ++s) {
+                const std::int64_t ni = std::int64_t{c.i} + kSteps[s][0],
+                                   nj = std::int64_t{c.j} + kSteps[s][1];
+                const std::uint32_t f = tree_.leaf_or_finer(c.level, ni, nj);
+                if (f == kNoNode) continue;
+                std::uint32_t across[4] = {f, kNoNode, kNoNode, kNoNode};
+                if (!tree_.nodes[f].leaf()) {
+                    // Finer across: the two children along the side (leaves: balanced).
+                    const std::uint32_t first = tree_.nodes[f].child;
+                    for (std::uint32_t k = 0; k < 4; ++k) across[k] = first + k;
+                }
+                for (const std::uint32_t g : across) {
+                    if (g == kNoNode || decided[g] || !clear(g)) continue;
+                    const Box gb = tree_.cell(g), mb = tree_.cell(m);
+                    const bool touch =
+                        gb.x0 <= mb.x1 && mb.x0 <= gb.x1 && gb.y0 <= mb.y1 && mb.y0 <= gb.y1;
+                    const bool side_contact = (gb.x0 == mb.x1 || gb.x1 == mb.x0)
+                                                  ? (gb.y0 < mb.y1 && mb.y0 < gb.y1)
+                                                  : (gb.x0 < mb.x1 && mb.x0 < gb.x1);
+                    if (!touch || !side_contact) continue;
+                    decided[g] = 1;
+                    group.push_back(g);
+                }
+            }
         }
     }
 }
@@ -968,7 +1010,7 @@ QuadtreeResult2 QuadtreeMesher::run() {
     collect_obstacles(chords_xy, chords);
     std::vector<std::uint32_t> all(obstacles_.size());
     std::iota(all.begin(), all.end(), 0u);
-    refine(0, all);
+    refine(0, all, false);
     balance();
     split_pieces();
     collect_obstacles(chords_xy, chords);
