@@ -710,15 +710,17 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
         for (const tri::TriIdx u : ct.touched()) work.push_back(u);
         ct.clear_touched();
     }
-    if (ct.counters().edge_bends > 0) {
-        throw GeometryError(
-            "quadtree: the band's refinement bent a boundary piece at a vertex "
-            "within rounding of it");
-    }
+    // A segment bent through a vertex within rounding of it (the constructor's and
+    // split_constrained_edge's rule for ulp-wide gaps) may share a piece with another segment,
+    // and the pieces would no longer tell the chains apart: then the band keeps its plain CDT.
+    const bool bent = ct.counters().edge_bends > 0;
     tri::Cdt2Result result = std::move(ct).take_result();
-    if (!result.warnings.empty()) {
-        throw GeometryError("quadtree: the band's triangulation bent a segment (" +
-                            result.warnings.front() + ")");
+    if (bent || !result.warnings.empty()) {
+        warnings.push_back(
+            "quadtree: vertices within rounding of the band's segments; the band "
+            "is not refined");
+        counters_.band_circumcenters = counters_.band_piece_splits = counters_.band_rejected = 0;
+        return tri::constrained_delaunay_2d(band, cdt);
     }
     return result;
 }
@@ -936,11 +938,14 @@ QuadtreeResult2 QuadtreeMesher::assemble() {
             chain.push_back(boundary_.pieces[2 * std::size_t{p}]);
             VertIdx previous = tri::kNone;
             while (chain.back() != boundary_.pieces[2 * std::size_t{p} + 1]) {
-                const std::vector<VertIdx>& around = next[chain.back()];
-                const VertIdx v =
-                    around.size() == 2 && around[0] == previous ? around[1] : around[0];
-                if (around.empty() || around.size() > 2 || chain.size() > parts[k].size())
-                    throw InternalError("quadtree: a split boundary piece is no chain");
+                const auto around = next.find(chain.back());
+                if (around == next.end() || around->second.size() > 2 ||
+                    chain.size() > parts[k].size()) {
+                    throw InternalError("quadtree: boundary piece " + std::to_string(p) +
+                                        " is no chain of the band's pieces");
+                }
+                const std::vector<VertIdx>& ends = around->second;
+                const VertIdx v = ends.size() == 2 && ends[0] == previous ? ends[1] : ends[0];
                 previous = chain.back();
                 chain.push_back(v);
             }
@@ -976,6 +981,11 @@ QuadtreeResult2 QuadtreeMesher::run() {
     }
     max_leaves_ = o.max_leaves == 0 ? std::uint64_t{1} << 24 : o.max_leaves;
     boundary_ = discretize_domain_boundary(pslg_, o.size, o.cdt);
+    if (boundary_.front.empty()) {
+        throw InputError(
+            "quadtree: no segment bounds the domain (a PSLG without segments is "
+            "its convex hull, with no boundary pieces to mesh against)");
+    }
 
     // Pieces with the domain on a side (the front lists them); isolated vertices: used by a
     // domain triangle, on no such piece.
