@@ -237,6 +237,8 @@ class QuadtreeMesher {
     Obstacle obstacle(VertIdx a, VertIdx b, const std::vector<double>& xy) const;
     void collect_obstacles(const std::vector<double>& chords_xy,
                            const std::vector<VertIdx>& chords);
+    tri::TriIdx walk_from_ = 0;  // the domain CDT triangle of the last query
+    bool inside_domain(double x, double y);
     double smallest_size(std::uint32_t n) const;
     bool separates(std::uint32_t n, const std::vector<std::uint32_t>& list);
     void refine(std::uint32_t n, const std::vector<std::uint32_t>& list, bool inside);
@@ -320,6 +322,36 @@ bool QuadtreeMesher::separates(std::uint32_t n, const std::vector<std::uint32_t>
     return false;
 }
 
+/// in_domain by a visibility walk in the domain's CDT from the last query's triangle (queries
+/// come in tree order, so walks are short), exact orient2d; a walk that leaves the domain or
+/// runs long falls back to the bucket locator. Either way the answer is exact.
+bool QuadtreeMesher::inside_domain(double x, double y) {
+    ++counters_.domain_queries;
+    const tri::Triangulation2& mesh = boundary_.cdt.mesh;
+    const double p[2] = {x, y};
+    tri::TriIdx t = walk_from_;
+    for (int step = 0; step < 256; ++step) {
+        // Across an edge the point lies beyond, preferring one with a triangle behind it.
+        tri::TriIdx next = tri::kNone;
+        bool beyond = false;
+        for (unsigned k = 0; k < 3 && next == tri::kNone; ++k) {
+            if (predicates::orient2d(mesh.point(mesh.triangles[3 * t + k]),
+                                     mesh.point(mesh.triangles[3 * t + (k + 1) % 3]),
+                                     p) == Sign::Negative) {
+                beyond = true;
+                next = mesh.neighbors[3 * t + k];
+            }
+        }
+        if (!beyond) {
+            walk_from_ = t;
+            return true;
+        }
+        if (next == tri::kNone) break;  // only beyond the domain's boundary from here
+        t = next;
+    }
+    return in_domain(boundary_, x, y);
+}
+
 double QuadtreeMesher::smallest_size(std::uint32_t n) const {
     const Box b = tree_.cell(n);
     const double xs[3] = {b.x0, 0.5 * (b.x0 + b.x1), b.x1},
@@ -361,8 +393,7 @@ void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& l
         // Wholly inside or wholly outside the domain (it meets no chord): nothing to mesh
         // outside; inside, so are its descendants.
         const Box b = tree_.cell(n);
-        ++counters_.domain_queries;
-        if (!in_domain(boundary_, 0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1))) return;
+        if (!inside_domain(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1))) return;
         inside = true;
     }
     bool split = side > options_.cell_factor * smallest_size(n);
@@ -563,8 +594,7 @@ void QuadtreeMesher::classify() {
             std::max(counters_.depth, static_cast<std::uint32_t>(tree_.nodes[n].level));
         if (!clear(n) || decided[n]) continue;
         const Box b = tree_.cell(n);
-        ++counters_.domain_queries;
-        const std::uint8_t inside = in_domain(boundary_, 0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1));
+        const std::uint8_t inside = inside_domain(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1));
         group.assign(1, n);
         decided[n] = 1;
         while (!group.empty()) {
@@ -871,8 +901,7 @@ QuadtreeResult2 QuadtreeMesher::assemble() {
                         !(distance_to(o, px, py) < options_.corner_clearance * o.length);
             }
             if (clear) {
-                ++counters_.domain_queries;
-                clear = in_domain(boundary_, px, py);
+                clear = inside_domain(px, py);
                 if (!clear) continue;  // outside: not a drop
             }
             if (!clear) {
