@@ -239,9 +239,11 @@ class QuadtreeMesher {
                            const std::vector<VertIdx>& chords);
     tri::TriIdx walk_from_ = 0;  // the domain CDT triangle of the last query
     bool inside_domain(double x, double y);
-    double smallest_size(std::uint32_t n) const;
+    double size_at(double x, double y) const;
+    void sample_sizes(std::uint32_t n, double grid[3][3]) const;
     bool separates(std::uint32_t n, const std::vector<std::uint32_t>& list);
-    void refine(std::uint32_t n, const std::vector<std::uint32_t>& list, bool inside);
+    void refine(std::uint32_t n, const std::vector<std::uint32_t>& list, bool inside,
+                const std::array<double, 4>& corners);
     void split_counted(std::uint32_t n);
     void balance();
     void distribute(std::uint32_t n, const std::vector<std::uint32_t>& list);
@@ -352,22 +354,27 @@ bool QuadtreeMesher::inside_domain(double x, double y) {
     return in_domain(boundary_, x, y);
 }
 
-double QuadtreeMesher::smallest_size(std::uint32_t n) const {
+double QuadtreeMesher::size_at(double x, double y) const {
+    const double s = options_.size(x, y);
+    if (!(s > 0)) {
+        throw InputError("quadtree: the size function is " + number_text(s) + " at (" +
+                         number_text(x) + ", " + number_text(y) + "); it must be > 0");
+    }
+    return s;
+}
+
+/// The size at the 3 x 3 grid of node n's corners, side midpoints and centre (grid[row][col],
+/// row 0 at the bottom), the corners given.
+void QuadtreeMesher::sample_sizes(std::uint32_t n, double grid[3][3]) const {
     const Box b = tree_.cell(n);
     const double xs[3] = {b.x0, 0.5 * (b.x0 + b.x1), b.x1},
                  ys[3] = {b.y0, 0.5 * (b.y0 + b.y1), b.y1};
-    double smallest = std::numeric_limits<double>::infinity();
-    for (const double sx : xs) {
-        for (const double sy : ys) {
-            const double s = options_.size(sx, sy);
-            if (!(s > 0)) {
-                throw InputError("quadtree: the size function is " + number_text(s) + " at (" +
-                                 number_text(sx) + ", " + number_text(sy) + "); it must be > 0");
-            }
-            smallest = std::min(smallest, s);
+    for (int row = 0; row < 3; ++row) {
+        for (int col = 0; col < 3; ++col) {
+            if (row != 1 && col != 1) continue;  // a corner: given
+            grid[row][col] = size_at(xs[col], ys[row]);
         }
     }
-    return smallest;
 }
 
 void QuadtreeMesher::split_counted(std::uint32_t n) {
@@ -385,7 +392,9 @@ void QuadtreeMesher::split_counted(std::uint32_t n) {
 /// Top-down: `list` holds the obstacles meeting node n's grown box (so the children's lists
 /// are filtered from it: their grown boxes lie inside n's, rounding being monotone).
 /// `inside`: n is known to lie inside the domain (its parent's list was empty and it did).
-void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& list, bool inside) {
+/// `corners`: the size at n's corners (SW, SE, NW, NE), sampled by its parent.
+void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& list, bool inside,
+                            const std::array<double, 4>& corners) {
     const int level = tree_.nodes[n].level;
     if (level >= tree_.limit) return;
     const double side = tree_.side(level);
@@ -396,7 +405,13 @@ void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& l
         if (!inside_domain(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1))) return;
         inside = true;
     }
-    bool split = side > options_.cell_factor * smallest_size(n);
+    double grid[3][3];
+    grid[0][0] = corners[0], grid[0][2] = corners[1], grid[2][0] = corners[2],
+    grid[2][2] = corners[3];
+    sample_sizes(n, grid);
+    double smallest = grid[0][0];
+    for (const auto& row : grid) smallest = std::min({smallest, row[0], row[1], row[2]});
+    bool split = side > options_.cell_factor * smallest;
     if (split) {
         ++counters_.size_splits;
     } else {
@@ -421,7 +436,9 @@ void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& l
         for (const std::uint32_t o : list) {
             if (meets(obstacles_[o], g, counters_.box_tests)) child_list.push_back(o);
         }
-        refine(c, child_list, inside);
+        const unsigned col = (c - first) & 1, row = (c - first) >> 1;
+        refine(c, child_list, inside,
+               {grid[row][col], grid[row][col + 1], grid[row + 1][col], grid[row + 1][col + 1]});
     }
 }
 
@@ -1049,7 +1066,10 @@ QuadtreeResult2 QuadtreeMesher::run() {
     collect_obstacles(chords_xy, chords);
     std::vector<std::uint32_t> all(obstacles_.size());
     std::iota(all.begin(), all.end(), 0u);
-    refine(0, all, false);
+    const Box root = tree_.cell(0);
+    refine(0, all, false,
+           {size_at(root.x0, root.y0), size_at(root.x1, root.y0), size_at(root.x0, root.y1),
+            size_at(root.x1, root.y1)});
     balance();
     split_pieces();
     collect_obstacles(chords_xy, chords);
