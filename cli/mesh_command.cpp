@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "cli/size_expression.hpp"
+#include "generators/domain_boundary_2d.hpp"
 #include "generators/laplacian_smoothing_2d.hpp"
 #include "generators/mesh_generators_2d.hpp"
 #include "generators/quality_2d.hpp"
@@ -109,10 +110,6 @@ void run_mesh(const MeshArguments& arguments) {
     }
     const std::uint32_t base = poly.vertices.first_index;
 
-    if (generator.needs_size && !size.bounded()) {
-        throw InputError("the " + arguments.generator +
-                         " generator needs a size: give --size NUM|FILE");
-    }
     gen::MeshOptions2 options;
     options.min_angle = arguments.min_angle;
     options.size = size;
@@ -122,6 +119,12 @@ void run_mesh(const MeshArguments& arguments) {
 
     predicates::reset_thread_stats();
     const auto start = std::chrono::steady_clock::now();
+    // A generator that needs a size and was given none takes the input's own spacing (timed:
+    // it is part of the construction).
+    if (generator.needs_size && !size.bounded()) {
+        size = gen::size_from_boundary(pslg, options.cdt);
+        options.size = size;
+    }
     const gen::MeshRun2 result = generator.run(pslg, options);
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();

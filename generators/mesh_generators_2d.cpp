@@ -5,6 +5,8 @@
 
 #include <array>
 
+#include "generators/advancing_front_delaunay_2d.hpp"
+#include "generators/frontal_delaunay_2d.hpp"
 #include "generators/quadtree_mesh_2d.hpp"
 #include "predicates/errors.hpp"
 
@@ -55,6 +57,30 @@ MeshRun2 run_quadtree(const tri::Pslg& pslg, const MeshOptions2& options) {
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
+MeshRun2 run_advancing_front_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
+    AdvancingFrontDelaunayOptions2 front;
+    front.size = options.size;
+    front.max_new_points = options.max_steiner_points;
+    front.cdt = options.cdt;
+    AdvancingFrontDelaunayResult2 result = advancing_front_delaunay_2d(pslg, front);
+    if (result.counters.closure_triangles > 0) {
+        result.mesh.warnings.push_back(
+            std::to_string(result.counters.closure_front_edges) +
+            " front edges were left to the closure (constrained Delaunay, no new points): " +
+            std::to_string(result.counters.closure_triangles) + " triangles");
+    }
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
+MeshRun2 run_frontal_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
+    FrontalDelaunayOptions2 frontal;
+    frontal.size = options.size;
+    frontal.max_steiner_points = options.max_steiner_points;
+    frontal.cdt = options.cdt;
+    FrontalDelaunayResult2 result = frontal_delaunay_2d(pslg, frontal);
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
 constexpr std::array kGenerators{
     MeshGenerator2{"delaunay-refinement",
                    "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
@@ -64,6 +90,14 @@ constexpr std::array kGenerators{
                    "Yerry-Shephard/Baehmann: balanced quadtree leaves as 45-45-90 templates, "
                    "the band along the boundary by a refined constrained Delaunay triangulation",
                    false, true, &run_quadtree},
+    MeshGenerator2{"advancing-front-delaunay",
+                   "Mavriplis: shortest front edge first, a point at the circumradius bound, the "
+                   "Tanemura-Merriam (Delaunay) choice among nearby front points; needs a size",
+                   false, true, &run_advancing_front_delaunay},
+    MeshGenerator2{"frontal",
+                   "Rebay: points placed from the boundary inwards on the front edges' "
+                   "bisectors, inserted by Bowyer-Watson; needs a size",
+                   true, true, &run_frontal_delaunay},
 };
 
 }  // namespace

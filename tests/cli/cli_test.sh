@@ -584,6 +584,29 @@ mesh() {
   run 0 check "$data/square_hole_diagonals.poly" "$work/smooth.ele" &&
     grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
     fail "check rejected the smoothed mesh: $(cat "$work/out")"
+  # Every generator of the registry: a .poly with crossing diagonals and a hole at a given size,
+  # checked exactly (constrained Delaunay, or a valid mesh for the conforming generators), and
+  # the key domain with its counters and construct_seconds; without --size a generator that
+  # needs one takes the input's spacing.
+  local generator kind
+  for generator in delaunay-refinement:delaunay frontal:delaunay advancing-front-delaunay:conforming; do
+    kind=${generator#*:}
+    generator=${generator%%:*}
+    run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/$generator.ele" --generator "$generator" --size 0.3 \
+      --quality || continue
+    awk '/^quality.triangles:/ { exit !($2 > 100) }' "$work/out" || fail "mesh --generator $generator: $(cat "$work/out")"
+    if [[ $kind == delaunay ]]; then
+      run 0 check "$data/square_hole_diagonals.poly" "$work/$generator.ele" &&
+        grep -q '^ok: .* exact constrained Delaunay' "$work/out" || fail "check $generator: $(cat "$work/out")"
+    else
+      run 0 check --conforming "$data/square_hole_diagonals.poly" "$work/$generator.ele" &&
+        grep -q '^ok: .* exact valid mesh' "$work/out" || fail "check --conforming $generator: $(cat "$work/out")"
+    fi
+    run 0 mesh --domain key -o "$work/key-$generator.vtu" --generator "$generator" --stats &&
+      grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "mesh --domain key --generator $generator --stats"
+    run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/$generator-own.ele" --generator "$generator" ||
+      fail "mesh --generator $generator without --size"
+  done
   # Errors: one line each.
   expect_error 2 "unknown generator 'magic'" mesh --domain key -o "$work/x.ele" --generator magic
   expect_error 2 "unknown domain 'moon'" mesh --domain moon -o "$work/x.ele"
