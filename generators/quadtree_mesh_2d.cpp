@@ -2,8 +2,9 @@
 // Quadtree mesh generation (see quadtree_mesh_2d.hpp for the method and its references).
 // Phases: the domain's boundary (discretize_domain_boundary); the tree refined top-down, each
 // node carrying the pieces that meet its grown box; 2:1 balance; graded bisection of long
-// pieces; classification (kept leaves); templates; the band's constrained Delaunay
-// triangulation; assembly (domain_mesh_result).
+// pieces; classification (kept leaves); templates; the band (its leaves' far corners, its
+// constrained Delaunay triangulation, circumcenters of its bad triangles); assembly
+// (domain_mesh_result).
 #include "generators/quadtree_mesh_2d.hpp"
 
 #include <algorithm>
@@ -899,7 +900,9 @@ QuadtreeResult2 QuadtreeMesher::assemble() {
         if (!tree_.nodes[n].leaf() || kept_[n] || leaf_begin_[n] == leaf_end_[n]) continue;
         const Node c = tree_.nodes[n];
         const std::uint64_t step = std::uint64_t{1} << (grid - c.level);
-        const double reach = options_.corner_clearance * tree_.side(c.level);
+        // At most the list's margin, so that the list holds every obstacle the box can meet.
+        const double reach =
+            std::min(options_.corner_clearance, options_.clearance) * tree_.side(c.level);
         for (int k = 0; k < 4; ++k) {
             const std::uint64_t gi = (std::uint64_t{c.i} + (k & 1)) * step,
                                 gj = (std::uint64_t{c.j} + (k >> 1)) * step;

@@ -219,6 +219,49 @@ TEST(Generators_Quadtree2, DegenerateInputs) {
     }
 }
 
+TEST(Generators_Quadtree2, EveryOptionRangeGivesValidMeshes) {
+    // The knobs at the ends of their ranges: validity never depends on them (quality does).
+    struct Variant {
+        double cell_factor, boundary_factor, clearance, corner_clearance, piece_factor, band_angle;
+    };
+    const Variant variants[] = {{0.70710678118654752, 1, 0.5, 0.5, 2, 28},
+                                {16, 16, 1.0 / 16, 0.5, 0, 0},
+                                {0.25, 0.25, 4, 1.0 / 16, 64, 30},
+                                {1, 1, 1, 0, 1, 20}};
+    const gen::SizeFunction naca_size = gen::sample_domain_size(gen::SampleDomain::Naca0012);
+    const Input naca = from_domain(gen::sample_domain(gen::SampleDomain::Naca0012, naca_size));
+    const Input slit = square_with_hole_and_slit();
+    const auto slit_size = gen::SizeFunction::sources({{0.3, 0.5, 0.005, 0.05, 1.0}}, {}, 0.08);
+    for (const Variant& v : variants) {
+        for (const bool airfoil : {true, false}) {
+            const Input& in = airfoil ? naca : slit;
+            gen::QuadtreeOptions2 options;
+            options.size = airfoil ? naca_size : slit_size;
+            options.cell_factor = v.cell_factor;
+            options.boundary_factor = v.boundary_factor;
+            options.clearance = v.clearance;
+            options.corner_clearance = v.corner_clearance;
+            options.piece_factor = v.piece_factor;
+            options.band_min_angle = v.band_angle;
+            const gen::QuadtreeResult2 r = gen::quadtree_mesh_2d(in.pslg(), options);
+            const auto check =
+                em::testing::check_quality_mesh(r.mesh.mesh, r.mesh.input_vertex_count, in.xy,
+                                                in.segments, r.mesh.pieces, {}, airfoil, false);
+            EXPECT_TRUE(check.ok) << (airfoil ? "naca0012" : "hole+slit") << " clearance "
+                                  << v.clearance << ": " << check.problem;
+            if (v.band_angle == 0) {
+                EXPECT_EQ(r.counters.band_circumcenters, 0u);
+            }
+            if (v.piece_factor == 0) {
+                EXPECT_EQ(r.counters.piece_splits, 0u);
+            }
+            if (v.corner_clearance == 0) {
+                EXPECT_EQ(r.counters.band_corners, 0u);
+            }
+        }
+    }
+}
+
 TEST(Generators_Quadtree2, PslgDistributionsGiveValidMeshes) {
     // Crossings split at rounded points (some an ulp from input vertices: the band stays an
     // unrefined CDT there), collinear overlaps, segments ulps apart, duplicates, holes; a size
