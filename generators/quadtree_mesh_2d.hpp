@@ -53,8 +53,10 @@ struct QuadtreeOptions2 {
     /// side; the rest is the band the CDT triangulates. In [1/16, 4].
     double clearance = 0.5;
     /// A corner of a band leaf (one not kept) inside the domain becomes a vertex of the band
-    /// when no piece comes within this times the leaf's side; nearer corners are dropped (the
-    /// drop-or-warp step; dropping keeps every vertex exact). 0 adds none. 0 or in [1/16, 1/2].
+    /// when no piece comes within this (at most clearance) times the leaf's side (exact box
+    /// test) nor within this times the piece's own length (a shape choice in doubles); nearer
+    /// corners are dropped (the drop-or-warp step; dropping keeps every vertex exact). 0 adds
+    /// none. 0 or in [1/16, 1/2].
     double corner_clearance = 0.5;
     /// A boundary piece is bisected while it is longer than this times the side of the smallest
     /// leaf a quarter of its length into the domain from its ends and midpoint; 0 turns piece
