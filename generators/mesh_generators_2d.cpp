@@ -29,7 +29,9 @@ std::vector<std::pair<std::string, std::uint64_t>> counter_list(const Refinement
             {"circumcenter_exact_path", c.circumcenter_exact},
             {"orient_calls", c.orient_calls},
             {"incircle_calls", c.incircle_calls},
-            {"encroachment_tests", c.encroachment_tests}};
+            {"encroachment_tests", c.encroachment_tests},
+            {"polish_points", c.polish_points},
+            {"polish_stopped", c.polish_stopped}};
 }
 
 namespace {
@@ -37,6 +39,7 @@ namespace {
 MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& options) {
     RefinementOptions2 refinement;
     refinement.min_angle = options.min_angle;
+    refinement.polish_angle = options.polish_angle;
     refinement.size = options.size;
     refinement.max_steiner_points = options.max_steiner_points;
     refinement.cdt = options.cdt;
