@@ -7,6 +7,7 @@
 
 #include "generators/advancing_front_delaunay_2d.hpp"
 #include "generators/frontal_delaunay_2d.hpp"
+#include "generators/quadtree_mesh_2d.hpp"
 #include "predicates/errors.hpp"
 
 namespace exactmesh::generators {
@@ -51,6 +52,14 @@ MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& opti
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
+MeshRun2 run_quadtree(const tri::Pslg& pslg, const MeshOptions2& options) {
+    QuadtreeOptions2 quadtree;
+    quadtree.size = options.size;
+    quadtree.cdt = options.cdt;
+    QuadtreeResult2 result = quadtree_mesh_2d(pslg, quadtree);
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
 MeshRun2 run_advancing_front_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
     AdvancingFrontDelaunayOptions2 front;
     front.size = options.size;
@@ -80,6 +89,10 @@ constexpr std::array kGenerators{
                    "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
                    "split first; guaranteed minimum angle",
                    true, false, &run_delaunay_refinement},
+    MeshGenerator2{"quadtree",
+                   "Yerry-Shephard/Baehmann: balanced quadtree leaves as 45-45-90 templates, "
+                   "the band along the boundary by a refined constrained Delaunay triangulation",
+                   false, true, &run_quadtree},
     MeshGenerator2{"advancing-front-delaunay",
                    "Mavriplis: shortest front edge first, a point at the circumradius bound, the "
                    "Tanemura-Merriam (Delaunay) choice among nearby front points; needs a size",
