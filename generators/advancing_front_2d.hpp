@@ -13,8 +13,9 @@
 //    off by the shape of their triangle; the first acceptable one c makes triangle abc.
 //  - Acceptable: abc strictly counter-clockwise, no front vertex in the closed triangle, neither
 //    new edge crossing or touching a front edge away from shared ends (exact orient2d and dot
-//    signs); a new point must also lie in the domain and a fraction of delta away from front
-//    vertices and edges (placement only, in double precision).
+//    signs), so the triangle lies in the unmeshed region, inside the domain; a new point must
+//    also lie a fraction of delta away from front vertices and edges (placement only, in
+//    double precision).
 //  - An edge with no acceptable candidate is postponed and retried (more candidates, points
 //    nearer ab), then with every front vertex in widening boxes, which always succeeds: the
 //    constrained Delaunay triangle on ab inside the unmeshed region is acceptable. Past a
@@ -47,7 +48,7 @@ struct AdvancingFrontOptions2 {
     /// Front vertices within reuse_radius delta of the ideal apex are tried before it.
     double reuse_radius = 0.65;
     /// Front vertices within search_radius delta are tried after it (retries: twice that).
-    double search_radius = 2.0;
+    double search_radius = 1.0;
     /// A new point at least min_vertex_distance delta from every front vertex and
     /// min_edge_distance delta from every front edge (retries: half of each).
     double min_vertex_distance = 0.5;

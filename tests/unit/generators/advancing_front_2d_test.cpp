@@ -326,3 +326,31 @@ TEST(Generators_AdvancingFront, CounterListNamesEveryCounter) {
     EXPECT_GT(r.counters.containment_tests, 0u);
     EXPECT_GT(r.counters.orient_calls, r.counters.crossing_tests);
 }
+
+TEST(Generators_AdvancingFront, TheWideSearchAloneTriangulatesTheBoundary) {
+    // No new point is ever placeable and no first-attempt vertex has the shape asked for: every
+    // triangle comes from the wide search over existing front vertices, which always finds one
+    // (the constrained Delaunay triangle on the edge), so the closure is never needed.
+    gen::AdvancingFrontOptions2 options;
+    options.min_vertex_distance = 1e3;
+    options.min_edge_distance = 1e3;
+    options.min_shape = 1;
+    options.local_attempts = 1;
+    std::vector<Input> inputs{square_with_hole_and_slit()};
+    for (const gen::SampleDomain d : gen::kAllSampleDomains)
+        inputs.push_back(from_domain(gen::sample_domain(d)));
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        const Input& in = inputs[i];
+        options.size = gen::SizeFunction::uniform(i == 0 ? 0.05 : 0.2);
+        const gen::AdvancingFrontResult2 r = gen::advancing_front_2d(in.pslg(), options);
+        const auto check =
+            em::testing::check_quality_mesh(r.mesh.mesh, r.mesh.input_vertex_count, in.xy,
+                                            in.segments, r.mesh.pieces, {}, i != 0, false);
+        ASSERT_TRUE(check.ok) << i << ": " << check.problem;
+        EXPECT_EQ(r.counters.new_points, 0u) << i;
+        EXPECT_EQ(r.counters.closure_triangles, 0u) << i;
+        EXPECT_GT(r.counters.wide_searches, r.counters.triangles / 2) << i;
+        EXPECT_EQ(r.counters.triangles, r.mesh.mesh.triangle_count()) << i;
+        EXPECT_EQ(r.counters.triangles, r.counters.reused_points) << i;
+    }
+}
