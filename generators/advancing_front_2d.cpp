@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <queue>
 #include <string>
 #include <unordered_map>
@@ -179,6 +180,12 @@ struct Candidate {
     double key;
     VertIdx v;
 };
+
+/// A candidate's order key, never NaN (a rounded-to-zero denominator or an overflow puts the
+/// candidate last instead of breaking the sort's ordering).
+double sort_key(double key) {
+    return std::isnan(key) ? std::numeric_limits<double>::infinity() : key;
+}
 
 class AdvancingFront {
   public:
@@ -577,11 +584,15 @@ class AdvancingFront {
             return std::sqrt(std::max(0.0, delta * delta - 0.25 * length * length));
         };
         // The size near the triangle: at the midpoint first, then at the centroid of the
-        // triangle that size gives.
+        // triangle that size gives (kept only when > 0 there: that centroid may lie outside the
+        // domain, where the size need not be defined).
         double delta = side_of(local_size(mx, my));
         double height = height_of(delta);
-        delta = side_of(local_size(mx + nx * height / 3, my + ny * height / 3));
-        height = height_of(delta);
+        const double centroid_size = options_.size(mx + nx * height / 3, my + ny * height / 3);
+        if (centroid_size > 0) {
+            delta = side_of(centroid_size);
+            height = height_of(delta);
+        }
         const double px = mx + nx * height, py = my + ny * height;
         const std::uint32_t attempts = edges_[e].attempts;
         if (attempts >= options_.local_attempts) return wide_search(e, std::max(length, delta));
@@ -599,9 +610,9 @@ class AdvancingFront {
             const double s = shape(point(a), point(b), point(v));
             if (!retry && s < options_.min_shape) continue;
             if (distance <= options_.reuse_radius * delta) {
-                candidates_.push_back({distance, v});
+                candidates_.push_back({sort_key(distance), v});
             } else {
-                farther.push_back({-s, v});
+                farther.push_back({sort_key(-s), v});
             }
         }
         auto by_key = [](const Candidate& p, const Candidate& q) {
@@ -622,11 +633,11 @@ class AdvancingFront {
         // A retry: every front vertex near by and new points ever nearer ab (with ever smaller
         // distances to the front), best shape first.
         candidates_.insert(candidates_.end(), farther.begin(), farther.end());
-        for (Candidate& c : candidates_) c.key = -shape(point(a), point(b), point(c.v));
+        for (Candidate& c : candidates_) c.key = sort_key(-shape(point(a), point(b), point(c.v)));
         constexpr std::array<double, 4> kHeights{1.0, 0.6, 0.35, 0.2}, kSlack{1.0, 0.5, 0.5, 0.25};
         for (std::uint32_t k = 0; k < kHeights.size(); ++k) {
             const double q[2] = {mx + nx * height * kHeights[k], my + ny * height * kHeights[k]};
-            candidates_.push_back({-shape(point(a), point(b), q), kNone - 1 - k});
+            candidates_.push_back({sort_key(-shape(point(a), point(b), q)), kNone - 1 - k});
         }
         std::sort(candidates_.begin(), candidates_.end(), by_key);
         for (const Candidate& c : candidates_) {
@@ -668,7 +679,7 @@ class AdvancingFront {
                 // The circumcenter of abv is m + t n: t = (|v - m|^2 - |ab|^2 / 4) / (2 (v - m).n).
                 const double vx = point(v)[0] - mx, vy = point(v)[1] - my;
                 const double along = vx * nx + vy * ny;
-                candidates_.push_back({(vx * vx + vy * vy - quarter) / (2 * along), v});
+                candidates_.push_back({sort_key((vx * vx + vy * vy - quarter) / (2 * along)), v});
             }
             std::sort(candidates_.begin(), candidates_.end(),
                       [](const Candidate& p, const Candidate& q) {
