@@ -250,6 +250,19 @@ TEST(Generators_AdvancingFront, DegenerateInputs) {
         expect_good("5-degree wedge", m, 4.9, 54);  // measured 4.96 (the input angle), 54.1
     }
     {
+        // A boundary vertex one ulp below the top side's line, and a hole whose corner is 1e-15
+        // from the bottom side: exact decisions at ulp scale.
+        Input in;
+        add_loop(in, {0, 0, 1, 0, 1, 1, 0.5, std::nextafter(1.0, 0.0), 0, 1});
+        add_loop(in, {0.4, 1e-15, 0.6, 0.3, 0.3, 0.3});
+        in.holes = {0.43, 0.25};
+        const Meshed m = mesh(in, h);
+        report("ulp-scale features", m);
+        ASSERT_TRUE(m.check.ok) << m.check.problem;
+        EXPECT_EQ(m.result.counters.closure_triangles, 0u);
+        EXPECT_GT(m.quality.mean_min_angle, 50);
+    }
+    {
         // A triangle domain, coarse and fine.
         for (const double size : {0.6, 0.02}) {
             Input in;
