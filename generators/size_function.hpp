@@ -57,6 +57,13 @@ public:
     bool bounded() const { return kind_ != Kind::None; }
     /// True for a uniform size (then the size is the same everywhere).
     bool is_uniform() const { return kind_ == Kind::Uniform; }
+    /// True for point and line sources (point_sources(), line_sources(), cap(), factor() then
+    /// give the whole function: factor * min(cap, sum of the sources)).
+    bool is_sources() const { return kind_ == Kind::Sources; }
+    /// H: the uniform size (uniform), the cap of the sources (+infinity for none).
+    double cap() const { return cap_; }
+    /// The constant factor of scaled() (1 unless scaled).
+    double factor() const { return factor_; }
     /// s * factor (factor finite and > 0).
     SizeFunction scaled(double factor) const;
     /// One line: "uniform 0.1", "sources: 2 point, 1 line, cap 0.5", the analytic description.
