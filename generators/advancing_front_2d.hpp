@@ -59,7 +59,8 @@ struct AdvancingFrontOptions2 {
     /// Attempts with local candidates before an edge searches every front vertex (>= 1).
     std::uint32_t local_attempts = 2;
     /// Close the front by its constrained Delaunay triangulation after this many triangles
-    /// (0: automatic, 16 times the count the size function asks for, at least 2^20).
+    /// (0: automatic, 8 times the count the size function asks for on the domain, plus 4 per
+    /// boundary edge and 4096).
     std::uint64_t max_triangles = 0;
     /// The initial constrained Delaunay triangulation of the PSLG (domain_boundary_2d).
     triangulation::Cdt2Options cdt;
