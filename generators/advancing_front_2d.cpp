@@ -5,8 +5,8 @@
 // (a removed edge is marked dead, its slot never reused), each alive edge listed in its tail's
 // out-list (the front edges leaving a vertex: one, or more where the front pinches) and in a
 // loose quadtree; a min-heap of (squared length, edge); the edges postponed in this round.
-// A round drains the heap; the postponed edges (then the whole front) go back into it with one
-// attempt more, so each retry sees the front its neighbours left.
+// A round drains the heap; then the postponed edges (by then the whole front) go back into it
+// with one attempt more, so each retry sees the front its neighbours left.
 #include "generators/advancing_front_2d.hpp"
 
 #include <algorithm>

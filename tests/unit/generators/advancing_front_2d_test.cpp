@@ -3,7 +3,8 @@
 // counter-clockwise triangles, no fold, closed by pieces, every segment a chain of pieces; no
 // triangle outside the domain), on the four sample domains with their size functions, a square
 // with a hole and a slit, graded sizes, and degenerate inputs (collinear vertices on segments, a
-// tiny notch, nearly touching holes, a 5-degree wedge, a triangle); the mesh's boundary is
+// tiny notch, nearly touching holes, a 5-degree wedge, ulp-scale features, a triangle); the
+// wide search alone (no new point) triangulates every sample boundary; the mesh's boundary is
 // exactly the discretized boundary (slit pieces with a triangle on both sides); edges follow the
 // size within the measured bounds; the closure by constrained Delaunay triangulation (forced by
 // a small budget) still gives a valid mesh; bad input raises InputError.
