@@ -291,8 +291,9 @@ class AdvancingFront {
 
     /// The triangle count the size asks for on triangle (p, q, r): area / (area of an
     /// equilateral triangle at the smallest size sampled at its corners and centroid), the
-    /// triangle split in four while it is wider than 8 such sizes (at most 10 levels), so that
-    /// a small size inside a large triangle of the domain's CDT is not missed.
+    /// triangle split in four while it is wider than 8 such sizes and holds more than 16 (at
+    /// most 8 levels), so that a small size inside a large triangle of the domain's CDT is not
+    /// missed (a sliver of the CDT stops splitting when its count is small).
     double triangle_estimate(const std::array<double, 2>& p, const std::array<double, 2>& q,
                              const std::array<double, 2>& r, int depth) const {
         const double area =
@@ -304,7 +305,8 @@ class AdvancingFront {
         const double width =
             std::max({std::hypot(q[0] - p[0], q[1] - p[1]), std::hypot(r[0] - q[0], r[1] - q[1]),
                       std::hypot(p[0] - r[0], p[1] - r[1])});
-        if (depth >= 10 || width <= 8 * h) return area / (0.43 * h * h);
+        const double count = area / (0.43 * h * h);
+        if (depth >= 8 || width <= 8 * h || count <= 16) return count;
         auto mid = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
             return std::array<double, 2>{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
         };
