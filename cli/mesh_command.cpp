@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "cli/size_expression.hpp"
+#include "generators/domain_boundary_2d.hpp"
 #include "generators/laplacian_smoothing_2d.hpp"
 #include "generators/mesh_generators_2d.hpp"
 #include "generators/quality_2d.hpp"
@@ -40,6 +41,7 @@ struct MeshArguments {
     std::string output;
     std::string generator = "delaunay-refinement";
     double min_angle = gen::kGuaranteedMinAngle;
+    double polish_angle = -1;
     std::string size;
     std::uint64_t max_steiner = 0;
     std::uint32_t smooth = 0;
@@ -109,12 +111,9 @@ void run_mesh(const MeshArguments& arguments) {
     }
     const std::uint32_t base = poly.vertices.first_index;
 
-    if (generator.needs_size && !size.bounded()) {
-        throw InputError("the " + arguments.generator +
-                         " generator needs a size: give --size NUM|FILE");
-    }
     gen::MeshOptions2 options;
     options.min_angle = arguments.min_angle;
+    options.polish_angle = arguments.polish_angle;
     options.size = size;
     options.max_steiner_points = arguments.max_steiner;
     options.cdt.first_index = base;
@@ -122,6 +121,12 @@ void run_mesh(const MeshArguments& arguments) {
 
     predicates::reset_thread_stats();
     const auto start = std::chrono::steady_clock::now();
+    // A generator that needs a size and was given none takes the input's own spacing (timed:
+    // it is part of the construction).
+    if (generator.needs_size && !size.bounded()) {
+        size = gen::size_from_boundary(pslg, options.cdt);
+        options.size = size;
+    }
     const gen::MeshRun2 result = generator.run(pslg, options);
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();
@@ -203,6 +208,13 @@ void add_mesh_command(CLI::App& app) {
             "--min-angle", arguments->min_angle,
             "Every angle at least this many degrees, away from small input angles; proven to "
             "terminate up to 20.7 (input angles >= 60), accepted up to 34; 0: no angle criterion")
+        ->capture_default_str();
+    command
+        ->add_option("--polish-angle", arguments->polish_angle,
+                     "delaunay-refinement: after the refinement to --min-angle, refine triangles "
+                     "below this angle too, worst first, within 10% more points (no guarantee: "
+                     "when that budget runs out the --min-angle mesh is finished as usual); "
+                     "negative: min(--min-angle + 10, 32); 0: off")
         ->capture_default_str();
     command
         ->add_option("--size", arguments->size,

@@ -9,6 +9,8 @@
 #include <string>
 
 #include "generators/advancing_front_2d.hpp"
+#include "generators/advancing_front_delaunay_2d.hpp"
+#include "generators/frontal_delaunay_2d.hpp"
 #include "predicates/errors.hpp"
 
 namespace exactmesh::generators {
@@ -30,7 +32,9 @@ std::vector<std::pair<std::string, std::uint64_t>> counter_list(const Refinement
             {"circumcenter_exact_path", c.circumcenter_exact},
             {"orient_calls", c.orient_calls},
             {"incircle_calls", c.incircle_calls},
-            {"encroachment_tests", c.encroachment_tests}};
+            {"encroachment_tests", c.encroachment_tests},
+            {"polish_points", c.polish_points},
+            {"polish_stopped", c.polish_stopped}};
 }
 
 namespace {
@@ -38,6 +42,7 @@ namespace {
 MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& options) {
     RefinementOptions2 refinement;
     refinement.min_angle = options.min_angle;
+    refinement.polish_angle = options.polish_angle;
     refinement.size = options.size;
     refinement.max_steiner_points = options.max_steiner_points;
     refinement.cdt = options.cdt;
@@ -66,6 +71,30 @@ MeshRun2 run_advancing_front(const tri::Pslg& pslg, const MeshOptions2& options)
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
+MeshRun2 run_advancing_front_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
+    AdvancingFrontDelaunayOptions2 front;
+    front.size = options.size;
+    front.max_new_points = options.max_steiner_points;
+    front.cdt = options.cdt;
+    AdvancingFrontDelaunayResult2 result = advancing_front_delaunay_2d(pslg, front);
+    if (result.counters.closure_triangles > 0) {
+        result.mesh.warnings.push_back(
+            std::to_string(result.counters.closure_front_edges) +
+            " front edges were left to the closure (constrained Delaunay, no new points): " +
+            std::to_string(result.counters.closure_triangles) + " triangles");
+    }
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
+MeshRun2 run_frontal_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
+    FrontalDelaunayOptions2 frontal;
+    frontal.size = options.size;
+    frontal.max_steiner_points = options.max_steiner_points;
+    frontal.cdt = options.cdt;
+    FrontalDelaunayResult2 result = frontal_delaunay_2d(pslg, frontal);
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
 constexpr std::array kGenerators{
     MeshGenerator2{"delaunay-refinement",
                    "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
@@ -75,6 +104,14 @@ constexpr std::array kGenerators{
                    "Lo/Peraire/Lohner: shortest front edge first, apex on its median at the local "
                    "size or a nearby front vertex, exact acceptance tests; needs a size",
                    false, true, &run_advancing_front},
+    MeshGenerator2{"advancing-front-delaunay",
+                   "Mavriplis: shortest front edge first, a point at the circumradius bound, the "
+                   "Tanemura-Merriam (Delaunay) choice among nearby front points; needs a size",
+                   false, true, &run_advancing_front_delaunay},
+    MeshGenerator2{"frontal",
+                   "Rebay: points placed from the boundary inwards on the front edges' "
+                   "bisectors, inserted by Bowyer-Watson; needs a size",
+                   true, true, &run_frontal_delaunay},
 };
 
 }  // namespace

@@ -551,6 +551,12 @@ mesh() {
   # No small input angle in square-with-holes: every angle at least the bound.
   run 0 mesh --domain square-with-holes -o "$work/swh.vtu" --min-angle 30 --quality &&
     awk '/^quality.min_angle:/ { exit !($2 >= 30) }' "$work/out" || fail "mesh: min angle below 30: $(cat "$work/out")"
+  # The polish (on by default: min(20.7 + 10, 32)) lifts square-with-holes to 30.7; off, it adds nothing.
+  run 0 mesh --domain square-with-holes -o "$work/polish.ele" --quality --stats &&
+    awk '/^quality.min_angle:/ { a = $2 } /^polish_points:/ { p = $2 } END { exit !(a >= 30.7 && p > 0) }' "$work/out" ||
+    fail "mesh: the polish did not reach 30.7: $(cat "$work/out")"
+  run 0 mesh --domain square-with-holes -o "$work/nopolish.ele" --polish-angle 0 --stats &&
+    grep -q '^polish_points: 0$' "$work/out" || fail "mesh --polish-angle 0: $(cat "$work/out")"
   for ext in msh vtu svg; do
     run 0 mesh --domain key -o "$work/key.$ext" && [[ -s "$work/key.$ext" ]] || fail "mesh: key.$ext"
   done
@@ -584,10 +590,35 @@ mesh() {
   run 0 check "$data/square_hole_diagonals.poly" "$work/smooth.ele" &&
     grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
     fail "check rejected the smoothed mesh: $(cat "$work/out")"
+  # Every generator of the registry: a .poly with crossing diagonals and a hole at a given size,
+  # checked exactly (constrained Delaunay, or a valid mesh for the conforming generators), and
+  # the key domain with its counters and construct_seconds; without --size a generator that
+  # needs one takes the input's spacing.
+  local generator kind
+  for generator in delaunay-refinement:delaunay frontal:delaunay advancing-front:conforming \
+    advancing-front-delaunay:conforming; do
+    kind=${generator#*:}
+    generator=${generator%%:*}
+    run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/$generator.ele" --generator "$generator" --size 0.3 \
+      --quality || continue
+    awk '/^quality.triangles:/ { exit !($2 > 100) }' "$work/out" || fail "mesh --generator $generator: $(cat "$work/out")"
+    if [[ $kind == delaunay ]]; then
+      run 0 check "$data/square_hole_diagonals.poly" "$work/$generator.ele" &&
+        grep -q '^ok: .* exact constrained Delaunay' "$work/out" || fail "check $generator: $(cat "$work/out")"
+    else
+      run 0 check --conforming "$data/square_hole_diagonals.poly" "$work/$generator.ele" &&
+        grep -q '^ok: .* exact valid mesh' "$work/out" || fail "check --conforming $generator: $(cat "$work/out")"
+    fi
+    run 0 mesh --domain key -o "$work/key-$generator.vtu" --generator "$generator" --stats &&
+      grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "mesh --domain key --generator $generator --stats"
+    run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/$generator-own.ele" --generator "$generator" ||
+      fail "mesh --generator $generator without --size"
+  done
   # Errors: one line each.
   expect_error 2 "unknown generator 'magic'" mesh --domain key -o "$work/x.ele" --generator magic
   expect_error 2 "unknown domain 'moon'" mesh --domain moon -o "$work/x.ele"
   expect_error 2 'minimum angle 40 is outside \[0, 34\]' mesh --domain key -o "$work/x.ele" --min-angle 40
+  expect_error 2 'polish angle 40' mesh --domain key -o "$work/x.ele" --polish-angle 40
   expect_error 2 'either an input \.poly file or --domain' mesh "$data/square_hole_diagonals.poly" --domain key -o "$work/x.ele"
   expect_error 2 'either an input \.poly file or --domain' mesh -o "$work/x.ele"
   printf 'point 1 2 3\n' >"$work/bad_size.txt"
