@@ -1,34 +1,48 @@
 // SPDX-License-Identifier: MIT
-// 2D mesh generation benchmarks: our Delaunay refinement (generators/delaunay_refinement_2d)
-// against CGAL's Delaunay_mesher_2 (with EXACTMESH_WITH_CGAL), same run, same inputs, same
-// criteria [Ruppert95, Shewchuk02; DESIGN.md "Benchmarks and reports"; issue 6].
+// 2D mesh generation benchmarks: every generator of the registry (generators/mesh_generators_2d)
+// against CGAL's Delaunay_mesher_2 (with EXACTMESH_WITH_CGAL) and Gmsh's Delaunay and
+// Frontal-Delaunay algorithms (the `gmsh` program, when found), same run, same domains, same
+// size function [Ruppert95, Shewchuk02, Rebay93, Mavriplis97; DESIGN.md "Benchmarks and
+// reports"; issue 6].
 //
-// Names: BM_mesh_<ours|cgal>/<domain>/<angle>/<target triangles>. Domains: the built-in
-// sample domains (generators/sample_domains), each with its own size function scaled by a
-// constant so that the mesh has about the target number of triangles (10^4, 10^5, 10^6); the
-// boundary is discretized by the same scaled size function, once, outside the timed loop, and
-// both meshers get that PSLG. Angle bound 20.7 degrees (the proven one; CGAL's default shape
-// bound 0.125 = sin^2(20.7)), and 30 degrees at 10^5. Size: every edge at most the size at its
-// midpoint for both (CGAL: Delaunay_mesh_size_criteria_2 with the size function evaluated as
-// ours does, tests/support/cgal_mesh_2d.hpp). Timed: everything from the PSLG to the finished
-// mesh (ours: constrained Delaunay, refinement and the flat output; CGAL: point and constraint
-// insertion, refinement). One iteration per repetition; run with --benchmark_repetitions=3 for
-// medians of 3 (the default here).
+// Names: BM_mesh/<mesher>/<domain>/<angle>/<target triangles>; mesher is a registry name, `cgal`,
+// `gmsh-delaunay` or `gmsh-frontal`; angle the minimum-angle bound given (20.7, the proven one,
+// and 30 at 10^5 for delaunay-refinement and CGAL, whose shape bound is sin^2 of it), `none` for
+// meshers without an angle criterion. Domains: the built-in sample domains
+// (generators/sample_domains), each with its own size function scaled by a constant so that
+// Delaunay refinement makes about the target number of triangles (10^4, 10^5, 10^6; the largest
+// is capped by EXACTMESH_MESH_BENCH_MAX_TRIANGLES). The boundary is discretized by that size
+// once, outside the timed loop, and every mesher gets the same PSLG and size function: CGAL
+// through Delaunay_mesh_size_criteria_2 evaluating it at edge midpoints as ours does
+// (tests/support/cgal_mesh_2d.hpp), Gmsh through a .geo of the same points and segments with a
+// background field equal to it (Distance fields to the sources, MathEval of the source formula,
+// Min with the cap).
+// Timed: ours and CGAL everything from the PSLG to the finished mesh, in process (CPU time);
+// Gmsh its own "Done meshing 2D" CPU time (file reading, 1D meshing of the segments and writing
+// excluded), reported as manual time. One iteration per repetition, 3 repetitions.
 //
-// Counters: triangles (in the domain), items_per_second (triangles per second), min_angle
-// (degrees, over the mesh), steiner_points (ours), max_size_ratio (longest edge over the size at
-// its midpoint).
+// Counters: triangles, items_per_second (triangles per second), min_angle, mean_min_angle
+// (mean of the triangles' smallest angles), max_size_ratio / median_size_ratio (edge length over
+// the size at its midpoint), angle_hist_<k> (fraction of corners in [10k, 10k + 10) degrees),
+// and the generator's own counters (steiner_points etc.).
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
-#include <numbers>
+#include <sstream>
+#include <stdexcept>
 #include <string>
-#include <tuple>
 #include <utility>
+#include <vector>
 
-#include "generators/delaunay_refinement_2d.hpp"
+#include "generators/mesh_generators_2d.hpp"
+#include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
 
 #if defined(EXACTMESH_WITH_CGAL)
@@ -37,15 +51,18 @@
 
 namespace {
 
+namespace fs = std::filesystem;
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 
 struct Workload {
     gen::SizeFunction size;
     gen::DomainPslg pslg;
+    tri::Pslg view() const { return {pslg.xy, pslg.segments, pslg.holes, {}}; }
 };
 
-/// The triangle count of our mesh of domain d with its own size function at 20.7 degrees.
+/// The triangle count of Delaunay refinement of domain d with its own size function at 20.7
+/// degrees: the calibration that maps a target count to a size factor.
 double calibration(gen::SampleDomain d) {
     static std::map<int, double> cache;
     auto it = cache.find(static_cast<int>(d));
@@ -54,8 +71,10 @@ double calibration(gen::SampleDomain d) {
         const gen::DomainPslg pslg = gen::sample_domain(d, size);
         gen::RefinementOptions2 options;
         options.size = size;
-        const auto r = gen::delaunay_refinement_2d(tri::Pslg{pslg.xy, pslg.segments, pslg.holes, {}}, options);
-        it = cache.emplace(static_cast<int>(d), static_cast<double>(r.mesh.mesh.triangle_count())).first;
+        const auto r =
+            gen::delaunay_refinement_2d(tri::Pslg{pslg.xy, pslg.segments, pslg.holes, {}}, options);
+        it = cache.emplace(static_cast<int>(d), static_cast<double>(r.mesh.mesh.triangle_count()))
+                 .first;
     }
     return it->second;
 }
@@ -75,86 +94,343 @@ const Workload& workload(gen::SampleDomain d, std::int64_t target) {
     return it->second;
 }
 
-struct MeshStats {
-    double min_angle = 180, max_size_ratio = 0;
-};
-
-MeshStats measure(const tri::Triangulation2& m, const gen::SizeFunction& size) {
-    MeshStats s;
-    for (std::uint32_t t = 0; t < m.triangle_count(); ++t) {
-        for (int k = 0; k < 3; ++k) {
-            const double* o = m.point(m.triangles[3 * t + static_cast<unsigned>(k)]);
-            const double* a = m.point(m.triangles[3 * t + static_cast<unsigned>((k + 1) % 3)]);
-            const double* b = m.point(m.triangles[3 * t + static_cast<unsigned>((k + 2) % 3)]);
-            const double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
-            s.min_angle = std::min(s.min_angle, std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 /
-                                                    std::numbers::pi);
-            s.max_size_ratio = std::max(s.max_size_ratio, std::hypot(ux, uy) / size(0.5 * (o[0] + a[0]), 0.5 * (o[1] + a[1])));
-        }
+void report_quality(benchmark::State& state, std::span<const double> xy,
+                    std::span<const tri::VertIdx> triangles, const gen::SizeFunction& size) {
+    const gen::QualityReport2 q = gen::quality_report_2d(xy, triangles, size);
+    state.SetItemsProcessed(static_cast<std::int64_t>(q.triangles) * state.iterations());
+    state.counters["triangles"] = static_cast<double>(q.triangles);
+    state.counters["min_angle"] = q.min_angle;
+    state.counters["mean_min_angle"] = q.mean_min_angle;
+    state.counters["max_size_ratio"] = q.size_ratio_max;
+    state.counters["median_size_ratio"] = q.size_ratio_median;
+    std::uint64_t corners = 0;
+    for (const std::uint64_t n : q.angle_histogram) corners += n;
+    for (std::size_t k = 0; k < q.angle_histogram.size(); ++k) {
+        state.counters["angle_hist_" + std::to_string(k)] =
+            corners == 0 ? 0.0
+                         : static_cast<double>(q.angle_histogram[k]) / static_cast<double>(corners);
     }
-    return s;
 }
 
-void BM_mesh_ours(benchmark::State& state, gen::SampleDomain d, double angle) {
+void BM_mesh_generator(benchmark::State& state, const gen::MeshGenerator2* generator,
+                       gen::SampleDomain d, double angle) {
     const Workload& w = workload(d, state.range(0));
-    const tri::Pslg pslg{w.pslg.xy, w.pslg.segments, w.pslg.holes, {}};
-    gen::RefinementOptions2 options;
+    gen::MeshOptions2 options;
     options.min_angle = angle;
     options.size = w.size;
-    double triangles = 0, steiner = 0;
-    MeshStats stats;
+    gen::MeshRun2 run;
     for (auto _ : state) {
-        auto result = gen::delaunay_refinement_2d(pslg, options);
-        state.PauseTiming();
-        triangles = result.mesh.mesh.triangle_count();
-        steiner = static_cast<double>(result.counters.steiner_points());
-        stats = measure(result.mesh.mesh, w.size);
-        { auto drop = std::move(result); }
-        state.ResumeTiming();
+        try {
+            run = generator->run(w.view(), options);
+        } catch (const std::exception& error) {
+            state.SkipWithError(error.what());
+            return;
+        }
     }
-    state.SetItemsProcessed(static_cast<std::int64_t>(triangles) * state.iterations());
-    state.counters["triangles"] = triangles;
-    state.counters["steiner_points"] = steiner;
-    state.counters["min_angle"] = stats.min_angle;
-    state.counters["max_size_ratio"] = stats.max_size_ratio;
+    report_quality(state, run.mesh.mesh.xy, run.mesh.mesh.triangles, w.size);
+    for (const auto& [name, value] : run.counters) {
+        if (name == "steiner_points" || name == "points_inserted" || name == "new_points") {
+            state.counters[name] = static_cast<double>(value);
+        }
+    }
 }
 
 #if defined(EXACTMESH_WITH_CGAL)
 void BM_mesh_cgal(benchmark::State& state, gen::SampleDomain d, double angle) {
     const Workload& w = workload(d, state.range(0));
-    double triangles = 0;
-    MeshStats stats;
+    tri::Triangulation2 flat;
     for (auto _ : state) {
-        auto mesh = exactmesh::testing::cgal_delaunay_mesh_2d(w.pslg.xy, w.pslg.segments, w.pslg.holes, angle, w.size);
+        auto mesh = exactmesh::testing::cgal_delaunay_mesh_2d(w.pslg.xy, w.pslg.segments,
+                                                              w.pslg.holes, angle, w.size);
         state.PauseTiming();
         std::vector<std::uint32_t> pieces;
-        const tri::Triangulation2 flat = exactmesh::testing::cgal_mesh_triangulation(mesh, pieces);
-        triangles = flat.triangle_count();
-        stats = measure(flat, w.size);
+        flat = exactmesh::testing::cgal_mesh_triangulation(mesh, pieces);
         { auto drop = std::move(mesh); }
         state.ResumeTiming();
     }
-    state.SetItemsProcessed(static_cast<std::int64_t>(triangles) * state.iterations());
-    state.counters["triangles"] = triangles;
-    state.counters["min_angle"] = stats.min_angle;
-    state.counters["max_size_ratio"] = stats.max_size_ratio;
+    report_quality(state, flat.xy, flat.triangles, w.size);
 }
 #endif
 
+// ---- Gmsh as a process -------------------------------------------------------------------
+
+/// The size function as Gmsh fields: Distance fields to each source, one MathEval of the source
+/// formula, Min with the cap; the whole times the factor. Returns the background field's
+/// number, or 0 when the size is of a kind Gmsh cannot be given (analytic).
+int write_gmsh_size_field(std::ostream& geo, const gen::SizeFunction& size, int first_point,
+                          int first_line) {
+    char buffer[1024];
+    const double f = size.factor();
+    if (size.is_uniform()) {
+        std::snprintf(buffer, sizeof buffer, "Field[1] = MathEval; Field[1].F = \"%.17g\";\n",
+                      f * size.cap());
+        geo << buffer << "Background Field = 1;\n";
+        return 1;
+    }
+    if (!size.is_sources()) return 0;
+    int field = 0, point = first_point, line = first_line;
+    std::string sum;
+    auto term = [&](int distance_field, double s, double radius, double exponent) {
+        std::snprintf(buffer, sizeof buffer, "%s%.17g*(1+(F%d/%.17g)^%.17g)",
+                      sum.empty() ? "" : "+", f * s, distance_field, radius, exponent);
+        sum += buffer;
+    };
+    for (const gen::PointSource& p : size.point_sources()) {
+        ++field;
+        std::snprintf(
+            buffer, sizeof buffer,
+            "Point(%d) = {%.17g, %.17g, 0};\nField[%d] = Distance; Field[%d].PointsList = {%d};\n",
+            point, p.x, p.y, field, field, point);
+        geo << buffer;
+        ++point;
+        term(field, p.size, p.radius, p.exponent);
+    }
+    for (const gen::LineSource& l : size.line_sources()) {
+        ++field;
+        std::snprintf(
+            buffer, sizeof buffer,
+            "Point(%d) = {%.17g, %.17g, 0};\nPoint(%d) = {%.17g, %.17g, 0};\nLine(%d) = {%d, %d};\n"
+            "Field[%d] = Distance; Field[%d].CurvesList = {%d}; Field[%d].NumPointsPerCurve = "
+            "4000;\n",
+            point, l.x0, l.y0, point + 1, l.x1, l.y1, line, point, point + 1, field, field, line,
+            field);
+        geo << buffer;
+        point += 2;
+        ++line;
+        term(field, l.size, l.radius, l.exponent);
+    }
+    const int sources = ++field;
+    geo << "Field[" << sources << "] = MathEval; Field[" << sources << "].F = \"" << sum << "\";\n";
+    if (!std::isfinite(size.cap())) {
+        geo << "Background Field = " << sources << ";\n";
+        return sources;
+    }
+    const int cap = ++field;
+    std::snprintf(buffer, sizeof buffer, "Field[%d] = MathEval; Field[%d].F = \"%.17g\";\n", cap,
+                  cap, f * size.cap());
+    geo << buffer;
+    const int min = ++field;
+    geo << "Field[" << min << "] = Min; Field[" << min << "].FieldsList = {" << sources << ", "
+        << cap << "};\n"
+        << "Background Field = " << min << ";\n";
+    return min;
+}
+
+/// A .geo of the PSLG: one Point per vertex, one Line per segment, one Curve Loop per closed
+/// chain of segments (the sample domains are closed loops), the loop with the largest bounding
+/// box the outer one, the others holes; the size as a background field.
+std::string gmsh_geo(const Workload& w, int algorithm) {
+    const auto& xy = w.pslg.xy;
+    const auto& seg = w.pslg.segments;
+    const std::size_t n = xy.size() / 2, m = seg.size() / 2;
+    std::ostringstream geo;
+    geo.precision(17);
+    for (std::size_t v = 0; v < n; ++v)
+        geo << "Point(" << v + 1 << ") = {" << xy[2 * v] << ", " << xy[2 * v + 1] << ", 0};\n";
+    for (std::size_t s = 0; s < m; ++s)
+        geo << "Line(" << s + 1 << ") = {" << seg[2 * s] + 1 << ", " << seg[2 * s + 1] + 1
+            << "};\n";
+    std::vector<std::vector<std::size_t>> at(n);
+    for (std::size_t s = 0; s < m; ++s) {
+        at[seg[2 * s]].push_back(s);
+        at[seg[2 * s + 1]].push_back(s);
+    }
+    std::vector<bool> used(m, false);
+    std::vector<std::vector<long>> loops;
+    std::vector<double> extents;
+    for (std::size_t first = 0; first < m; ++first) {
+        if (used[first]) continue;
+        std::vector<long> loop;
+        double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+        std::size_t s = first;
+        std::uint32_t from = seg[2 * s];
+        while (true) {
+            used[s] = true;
+            const bool forward = seg[2 * s] == from;
+            loop.push_back(forward ? static_cast<long>(s + 1) : -static_cast<long>(s + 1));
+            const std::uint32_t to = forward ? seg[2 * s + 1] : seg[2 * s];
+            x0 = std::min(x0, xy[2 * to]), x1 = std::max(x1, xy[2 * to]);
+            y0 = std::min(y0, xy[2 * to + 1]), y1 = std::max(y1, xy[2 * to + 1]);
+            std::size_t next = m;
+            for (const std::size_t t : at[to]) {
+                if (!used[t]) next = t;
+            }
+            if (next == m) break;
+            s = next;
+            from = to;
+        }
+        loops.push_back(std::move(loop));
+        extents.push_back((x1 - x0) * (y1 - y0));
+    }
+    std::size_t outer = 0;
+    for (std::size_t k = 1; k < loops.size(); ++k) {
+        if (extents[k] > extents[outer]) outer = k;
+    }
+    std::vector<std::size_t> order{outer};
+    for (std::size_t k = 0; k < loops.size(); ++k) {
+        if (k != outer) order.push_back(k);
+    }
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        geo << "Curve Loop(" << k + 1 << ") = {";
+        for (std::size_t i = 0; i < loops[order[k]].size(); ++i)
+            geo << (i ? ", " : "") << loops[order[k]][i];
+        geo << "};\n";
+    }
+    geo << "Plane Surface(1) = {";
+    for (std::size_t k = 0; k < order.size(); ++k) geo << (k ? ", " : "") << k + 1;
+    geo << "};\n";
+    if (write_gmsh_size_field(geo, w.size, static_cast<int>(n + 1), static_cast<int>(m + 1)) == 0) {
+        throw std::runtime_error("this size function cannot be given to Gmsh");
+    }
+    geo << "Mesh.MeshSizeExtendFromBoundary = 0;\nMesh.MeshSizeFromPoints = 0;\n"
+           "Mesh.MeshSizeFromCurvature = 0;\nMesh.Algorithm = "
+        << algorithm << ";\n";
+    return geo.str();
+}
+
+struct GmshMesh {
+    double cpu_seconds = 0;
+    std::vector<double> xy;
+    std::vector<tri::VertIdx> triangles;
+};
+
+/// Reads the triangles (element type 2) of an ASCII MSH 2.2 file, oriented counter-clockwise.
+void read_msh2(const fs::path& file, GmshMesh& mesh) {
+    std::ifstream in(file);
+    std::string line;
+    std::map<long, tri::VertIdx> index;
+    while (std::getline(in, line)) {
+        if (line == "$Nodes") {
+            std::size_t count = 0;
+            in >> count;
+            for (std::size_t i = 0; i < count; ++i) {
+                long id;
+                double x, y, z;
+                in >> id >> x >> y >> z;
+                index[id] = static_cast<tri::VertIdx>(mesh.xy.size() / 2);
+                mesh.xy.push_back(x);
+                mesh.xy.push_back(y);
+            }
+        } else if (line == "$Elements") {
+            std::size_t count = 0;
+            in >> count;
+            std::getline(in, line);
+            for (std::size_t i = 0; i < count; ++i) {
+                std::getline(in, line);
+                std::istringstream fields(line);
+                long id, type, tags;
+                fields >> id >> type >> tags;
+                for (long k = 0; k < tags; ++k) fields >> id;
+                if (type != 2) continue;
+                long a, b, c;
+                fields >> a >> b >> c;
+                const tri::VertIdx v[3] = {index.at(a), index.at(b), index.at(c)};
+                const double* p = &mesh.xy[2 * v[0]];
+                const double* q = &mesh.xy[2 * v[1]];
+                const double* r = &mesh.xy[2 * v[2]];
+                const bool ccw = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]) > 0;
+                mesh.triangles.insert(mesh.triangles.end(),
+                                      {v[0], ccw ? v[1] : v[2], ccw ? v[2] : v[1]});
+            }
+        }
+    }
+}
+
+/// Runs `gmsh` on the workload (algorithm 5: Delaunay, 6: Frontal-Delaunay), one thread.
+GmshMesh run_gmsh(const Workload& w, int algorithm) {
+    static const fs::path dir = [] {
+        fs::path d =
+            fs::temp_directory_path() / ("exactmesh_mesh_bench_" + std::to_string(getpid()));
+        fs::create_directories(d);
+        return d;
+    }();
+    const fs::path geo = dir / "domain.geo", msh = dir / "domain.msh", log = dir / "gmsh.log";
+    std::ofstream(geo) << gmsh_geo(w, algorithm);
+    const std::string command = "gmsh '" + geo.string() + "' -2 -nt 1 -format msh2 -o '" +
+                                msh.string() + "' -v 4 > '" + log.string() + "' 2>&1";
+    if (std::system(command.c_str()) != 0)
+        throw std::runtime_error("gmsh failed (see " + log.string() + ")");
+    GmshMesh mesh;
+    std::ifstream text(log);
+    std::string line;
+    bool timed = false;
+    while (std::getline(text, line)) {
+        const auto at = line.find("Done meshing 2D (Wall ");
+        const auto cpu = line.find("CPU ");
+        if (at != std::string::npos && cpu != std::string::npos) {
+            mesh.cpu_seconds = std::stod(line.substr(cpu + 4));
+            timed = true;
+        }
+    }
+    if (!timed)
+        throw std::runtime_error("no 'Done meshing 2D' line from gmsh (see " + log.string() + ")");
+    read_msh2(msh, mesh);
+    return mesh;
+}
+
+bool have_gmsh() {
+    return std::system("gmsh --version > /dev/null 2>&1") == 0;
+}
+
+void BM_mesh_gmsh(benchmark::State& state, int algorithm, gen::SampleDomain d) {
+    const Workload& w = workload(d, state.range(0));
+    GmshMesh mesh;
+    for (auto _ : state) {
+        try {
+            mesh = run_gmsh(w, algorithm);
+        } catch (const std::exception& error) {
+            state.SkipWithError(error.what());
+            return;
+        }
+        state.SetIterationTime(mesh.cpu_seconds);
+    }
+    report_quality(state, mesh.xy, mesh.triangles, w.size);
+}
+
+std::int64_t max_triangles() {
+    const char* text = std::getenv("EXACTMESH_MESH_BENCH_MAX_TRIANGLES");
+    return text ? std::atoll(text) : 1000000;
+}
+
 void register_all() {
+    const bool gmsh = have_gmsh();
     for (const gen::SampleDomain d : gen::kAllSampleDomains) {
-        for (const double angle : {20.7, 30.0}) {
-            for (const std::int64_t target : {10000, 100000, 1000000}) {
-                if (angle == 30.0 && target != 100000) continue;
-                char suffix[96];
-                std::snprintf(suffix, sizeof suffix, "%s/%g", std::string(gen::sample_domain_name(d)).c_str(), angle);
-                auto configure = [&](benchmark::internal::Benchmark* b) {
-                    b->Arg(target)->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(false)->Unit(benchmark::kMillisecond);
-                };
-                configure(benchmark::RegisterBenchmark((std::string("BM_mesh_ours/") + suffix).c_str(), BM_mesh_ours, d, angle));
+        const std::string domain(gen::sample_domain_name(d));
+        for (const std::int64_t target : {10000, 100000, 1000000}) {
+            if (target > max_triangles()) continue;
+            auto configure = [&](benchmark::internal::Benchmark* b) {
+                b->Arg(target)->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(false)->Unit(
+                    benchmark::kMillisecond);
+                return b;
+            };
+            for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) {
+                const bool angled = g.name == "delaunay-refinement";
+                for (const double angle : {20.7, 30.0}) {
+                    if (angle == 30.0 && (!angled || target != 100000)) continue;
+                    char name[160];
+                    std::snprintf(name, sizeof name, "BM_mesh/%s/%s/%s",
+                                  std::string(g.name).c_str(), domain.c_str(),
+                                  angled ? (angle == 30.0 ? "30" : "20.7") : "none");
+                    configure(benchmark::RegisterBenchmark(name, BM_mesh_generator, &g, d, angle));
+                }
+            }
 #if defined(EXACTMESH_WITH_CGAL)
-                configure(benchmark::RegisterBenchmark((std::string("BM_mesh_cgal/") + suffix).c_str(), BM_mesh_cgal, d, angle));
+            for (const double angle : {20.7, 30.0}) {
+                if (angle == 30.0 && target != 100000) continue;
+                const std::string name =
+                    "BM_mesh/cgal/" + domain + (angle == 30.0 ? "/30" : "/20.7");
+                configure(benchmark::RegisterBenchmark(name.c_str(), BM_mesh_cgal, d, angle));
+            }
 #endif
+            if (gmsh) {
+                configure(
+                    benchmark::RegisterBenchmark(
+                        ("BM_mesh/gmsh-delaunay/" + domain + "/none").c_str(), BM_mesh_gmsh, 5, d))
+                    ->UseManualTime();
+                configure(
+                    benchmark::RegisterBenchmark(
+                        ("BM_mesh/gmsh-frontal/" + domain + "/none").c_str(), BM_mesh_gmsh, 6, d))
+                    ->UseManualTime();
             }
         }
     }

@@ -2,7 +2,9 @@
 // `exactmesh check`: reads a .node and a .ele and runs the exact Delaunay check
 // (triangulation/check_2d, or check_3d for a TetGen .node of dimension 3 and its .ele), or a
 // .poly and a .ele and runs the exact constrained Delaunay check
-// (triangulation/check_constrained_2d), reporting in the files' own numbering.
+// (triangulation/check_constrained_2d), or with --conforming the exact validity of a mesh of
+// the domain that need not be Delaunay (triangulation/check_conforming_2d: the quadtree and
+// advancing-front generators' meshes), reporting in the files' own numbering.
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -18,6 +20,7 @@
 #include "predicates/errors.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/check_3d.hpp"
+#include "triangulation/check_conforming_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 
 namespace exactmesh::cli {
@@ -29,6 +32,7 @@ namespace tri = exactmesh::triangulation;
 struct CheckArguments {
     std::string node_path;
     std::string ele_path;
+    bool conforming = false;  ///< a .poly mesh checked for validity only, not Delaunay
 };
 
 /// IN.poly against OUT.ele. The vertices are OUT.node's when it exists beside OUT.ele (it holds
@@ -46,8 +50,9 @@ int run_constrained_check(const CheckArguments& arguments) {
         const io::NodeFile all = io::read_node(node_path);
         for (std::size_t i = 0; i < input.vertices.xy.size(); ++i) {
             if (i >= all.xy.size() || all.xy[i] != input.vertices.xy[i]) {
-                throw InputError(node_path.string() + ": vertex " + std::to_string(i / 2 + all.first_index) +
-                                 " differs from " + arguments.node_path + " (expected its vertices first)");
+                throw InputError(node_path.string() + ": vertex " +
+                                 std::to_string(i / 2 + all.first_index) + " differs from " +
+                                 arguments.node_path + " (expected its vertices first)");
             }
         }
         mesh.xy = all.xy;
@@ -68,15 +73,25 @@ int run_constrained_check(const CheckArguments& arguments) {
     mesh.constrained.resize(mesh.triangles.size());
     for (std::size_t t = 0; t < ele.triangle_count(); ++t) {
         for (std::size_t k = 0; k < 3; ++k) {
-            const tri::VertIdx a = mesh.triangles[3 * t + k], b = mesh.triangles[3 * t + (k + 1) % 3];
+            const tri::VertIdx a = mesh.triangles[3 * t + k],
+                               b = mesh.triangles[3 * t + (k + 1) % 3];
             mesh.constrained[3 * t + k] = flagged.count({std::min(a, b), std::max(a, b)}) ? 1 : 0;
         }
     }
-    const tri::CheckReport report = tri::check_constrained_delaunay_2d(
-        mesh, input.vertices.vertex_count(), input.segments, pieces, tri::CheckNumbering{base, ele.first_index});
+    const tri::CheckNumbering numbering{base, ele.first_index};
+    const tri::CheckReport report =
+        arguments.conforming
+            ? tri::check_conforming_mesh_2d(mesh, input.vertices.vertex_count(), input.segments,
+                                            pieces, numbering)
+            : tri::check_constrained_delaunay_2d(mesh, input.vertices.vertex_count(),
+                                                 input.segments, pieces, numbering);
     if (report.ok) {
-        std::cout << "ok: " << ele.triangle_count() << " triangles, exact constrained Delaunay, "
-                  << input.segment_count() << " segments covered (parts in removed regions need not be edges)\n";
+        std::cout << "ok: " << ele.triangle_count() << " triangles, "
+                  << (arguments.conforming
+                          ? "exact valid mesh (no fold, boundary on the segments), "
+                          : "exact constrained Delaunay, ")
+                  << input.segment_count()
+                  << " segments covered (parts in removed regions need not be edges)\n";
         return kExitSuccess;
     }
     std::cout << "not ok: " << arguments.ele_path << ": " << report.problem << '\n';
@@ -86,9 +101,10 @@ int run_constrained_check(const CheckArguments& arguments) {
 /// IN.node of dimension 3 against a TetGen .ele.
 int run_check_3d(const CheckArguments& arguments) {
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.node_path);
-    const io::TetgenEleFile ele = io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
-    const tri::Check3Report report =
-        tri::check_delaunay_3d(nodes.xyz, ele.tets, {}, tri::Check3Numbering{nodes.first_index, ele.first_index});
+    const io::TetgenEleFile ele =
+        io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
+    const tri::Check3Report report = tri::check_delaunay_3d(
+        nodes.xyz, ele.tets, {}, tri::Check3Numbering{nodes.first_index, ele.first_index});
     if (report.ok) {
         std::cout << "ok: " << ele.tet_count() << " tetrahedra, exact Delaunay\n";
         return kExitSuccess;
@@ -98,7 +114,10 @@ int run_check_3d(const CheckArguments& arguments) {
 }
 
 int run_check(const CheckArguments& arguments) {
-    if (std::filesystem::path(arguments.node_path).extension() == ".poly") return run_constrained_check(arguments);
+    if (std::filesystem::path(arguments.node_path).extension() == ".poly")
+        return run_constrained_check(arguments);
+    if (arguments.conforming)
+        throw InputError("--conforming needs an IN.poly (the domain's segments)");
     if (io::read_node_dimension(arguments.node_path) == 3) return run_check_3d(arguments);
     const io::NodeFile nodes = io::read_node(arguments.node_path);
     const io::EleFile ele =
@@ -119,16 +138,24 @@ void add_check_command(CLI::App& app, int& exit_status) {
     auto arguments = std::make_shared<CheckArguments>();
     CLI::App* command = app.add_subcommand(
         "check",
-        "Exact check that IN.ele is a Delaunay triangulation (a Delaunay tetrahedralization when IN.node has "
+        "Exact check that IN.ele is a Delaunay triangulation (a Delaunay tetrahedralization when "
+        "IN.node has "
         "dimension 3) of the points of IN.node, or a "
         "constrained Delaunay triangulation of IN.poly (vertices added by `exactmesh cdt` are read "
         "from the .node beside IN.ele, its constrained edges from the .poly beside it)");
     command->add_option("node", arguments->node_path, "Input: a Triangle .node or .poly file")
         ->required()
         ->type_name("IN.node|IN.poly");
-    command->add_option("ele", arguments->ele_path, "Triangles: a Triangle .ele file (tetrahedra: a TetGen .ele file)")
+    command
+        ->add_option("ele", arguments->ele_path,
+                     "Triangles: a Triangle .ele file (tetrahedra: a TetGen .ele file)")
         ->required()
         ->type_name("IN.ele");
+    command->add_flag(
+        "--conforming", arguments->conforming,
+        "With IN.poly: check a mesh that need not be Delaunay (quadtree, advancing front): "
+        "strictly counter-clockwise triangles, no fold at any vertex, every boundary edge a piece "
+        "of a segment, every segment a chain of edges");
     command->callback([arguments, &exit_status] { exit_status = run_check(*arguments); });
 }
 

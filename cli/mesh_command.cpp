@@ -16,8 +16,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
-#include "generators/delaunay_refinement_2d.hpp"
+#include "cli/size_expression.hpp"
+#include "generators/domain_boundary_2d.hpp"
 #include "generators/laplacian_smoothing_2d.hpp"
+#include "generators/mesh_generators_2d.hpp"
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
 #include "generators/size_function.hpp"
@@ -33,10 +35,6 @@ namespace fs = std::filesystem;
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 
-/// The generators of issue 6; only delaunay-refinement exists so far.
-constexpr const char* kGenerators[] = {"delaunay-refinement", "quadtree", "advancing-front",
-                                       "advancing-front-delaunay", "frontal"};
-
 struct MeshArguments {
     std::string input;
     std::string domain;
@@ -50,40 +48,26 @@ struct MeshArguments {
     bool stats = false;
 };
 
-/// --size: a number (uniform), else a size file (generators/size_function.hpp).
+/// --size: a number (uniform), else a size file (generators/size_function.hpp) when one of
+/// that name exists, else an expression in x and y (cli/size_expression.hpp).
 gen::SizeFunction read_size(const std::string& text) {
     double uniform = 0;
     if (gen::parse_uniform_size(text, uniform)) return gen::SizeFunction::uniform(uniform);
     std::ifstream file(text);
-    if (!file) {
-        throw InputError("--size '" + text + "' is neither a number > 0 nor a readable size file");
-    }
+    if (!file) return size_from_expression(text);
     std::ostringstream content;
     content << file.rdbuf();
     return gen::parse_size_sources(content.str(), text);
 }
 
-void print_stats(const gen::RefinementCounters2& c, const tri::Cdt2Counters& cdt,
-                 const predicates::PredicateStats& stats, double seconds) {
+void print_stats(const gen::MeshRun2& run, const predicates::PredicateStats& stats,
+                 double seconds) {
+    const tri::Cdt2Counters& cdt = run.mesh.counters;
     std::cout << "points: " << cdt.points << '\n'
               << "duplicates: " << cdt.duplicates << '\n'
               << "segments: " << cdt.segments << '\n'
-              << "intersections: " << cdt.intersections << '\n'
-              << "steiner_points: " << c.steiner_points() << '\n'
-              << "circumcenters: " << c.circumcenters << '\n'
-              << "segment_splits: " << c.segment_splits << '\n'
-              << "shell_splits: " << c.shell_splits << '\n'
-              << "segment_bends: " << c.segment_bends << '\n'
-              << "rejected_circumcenters: " << c.rejected_circumcenters << '\n'
-              << "bad_triangles_queued: " << c.bad_triangles << '\n'
-              << "small_angle_skips: " << c.small_angle_skips << '\n'
-              << "unsplittable: " << c.unsplittable << '\n'
-              << "cavity_triangles: " << c.cavity_triangles << '\n'
-              << "delaunay_flips: " << c.flips << '\n'
-              << "circumcenter_exact_path: " << c.circumcenter_exact << '\n'
-              << "orient_calls: " << c.orient_calls << '\n'
-              << "incircle_calls: " << c.incircle_calls << '\n'
-              << "encroachment_tests: " << c.encroachment_tests << '\n';
+              << "intersections: " << cdt.intersections << '\n';
+    for (const auto& [name, value] : run.counters) std::cout << name << ": " << value << '\n';
     print_predicate_stats(stats);
     std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
 }
@@ -99,18 +83,7 @@ void print_smoothing_stats(const gen::SmoothingCounters2& c, double seconds) {
 }
 
 void run_mesh(const MeshArguments& arguments) {
-    bool known = false;
-    for (const char* name : kGenerators) known |= arguments.generator == name;
-    if (!known) {
-        throw InputError(
-            "unknown generator '" + arguments.generator +
-            "' (known: delaunay-refinement; not implemented yet: quadtree, advancing-front, "
-            "advancing-front-delaunay, frontal)");
-    }
-    if (arguments.generator != "delaunay-refinement") {
-        throw InputError("not implemented yet: " + arguments.generator +
-                         " (issue 6; use --generator delaunay-refinement)");
-    }
+    const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(arguments.generator);
     if (arguments.input.empty() == arguments.domain.empty()) {
         throw InputError("give either an input .poly file or --domain NAME (not both)");
     }
@@ -137,7 +110,7 @@ void run_mesh(const MeshArguments& arguments) {
     }
     const std::uint32_t base = poly.vertices.first_index;
 
-    gen::RefinementOptions2 options;
+    gen::MeshOptions2 options;
     options.min_angle = arguments.min_angle;
     options.size = size;
     options.max_steiner_points = arguments.max_steiner;
@@ -146,13 +119,19 @@ void run_mesh(const MeshArguments& arguments) {
 
     predicates::reset_thread_stats();
     const auto start = std::chrono::steady_clock::now();
-    const gen::RefinementResult2 result = gen::delaunay_refinement_2d(pslg, options);
+    // A generator that needs a size and was given none takes the input's own spacing (timed:
+    // it is part of the construction).
+    if (generator.needs_size && !size.bounded()) {
+        size = gen::size_from_boundary(pslg, options.cdt);
+        options.size = size;
+    }
+    const gen::MeshRun2 result = generator.run(pslg, options);
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();
     const double seconds = std::chrono::duration<double>(stop - start).count();
 
     // Optional Laplacian smoothing, timed and reported apart from the generator.
-    gen::RefinementResult2 final_result = result;
+    gen::MeshRun2 final_result = result;
     gen::SmoothingCounters2 smoothing;
     double smooth_seconds = 0;
     if (arguments.smooth > 0) {
@@ -165,13 +144,13 @@ void run_mesh(const MeshArguments& arguments) {
             std::chrono::duration<double>(std::chrono::steady_clock::now() - smooth_start).count();
     }
     print_warnings(result.mesh.warnings);
-    if (result.counters.unsplittable > 0) {
-        std::cerr
-            << "exactmesh: warning: " << result.counters.unsplittable
-            << " bad triangles are too small to split in double precision; left as they are\n";
-    }
     char label[64];
-    std::snprintf(label, sizeof label, " (delaunay-refinement, %g degrees)", arguments.min_angle);
+    if (generator.name == "delaunay-refinement") {
+        std::snprintf(label, sizeof label, " (%s, %g degrees)", arguments.generator.c_str(),
+                      arguments.min_angle);
+    } else {
+        std::snprintf(label, sizeof label, " (%s)", arguments.generator.c_str());
+    }
     write_constrained_result(final_result.mesh, files, format, base, title + label);
     const tri::Triangulation2& mesh = final_result.mesh.mesh;
     std::cout << "vertices: " << mesh.vertex_count() << '\n'
@@ -189,7 +168,7 @@ void run_mesh(const MeshArguments& arguments) {
         }
     }
     if (arguments.stats) {
-        print_stats(result.counters, result.mesh.counters, stats, seconds);
+        print_stats(result, stats, seconds);
         if (arguments.smooth > 0) print_smoothing_stats(smoothing, smooth_seconds);
     }
 }
@@ -217,12 +196,11 @@ void add_mesh_command(CLI::App& app) {
                      "beside it), .msh (Gmsh 4.1), .vtu (VTK), .svg (picture)")
         ->required()
         ->type_name("OUT");
-    command
-        ->add_option(
-            "--generator", arguments->generator,
-            "delaunay-refinement (Ruppert/Shewchuk, circumcenter insertion). Not implemented yet, "
-            "each an error: quadtree, advancing-front, advancing-front-delaunay, frontal")
-        ->capture_default_str();
+    std::string generator_help = "The mesh generator:";
+    for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) {
+        generator_help += "\n  " + std::string(g.name) + ": " + std::string(g.summary);
+    }
+    command->add_option("--generator", arguments->generator, generator_help)->capture_default_str();
     command
         ->add_option(
             "--min-angle", arguments->min_angle,
@@ -231,10 +209,12 @@ void add_mesh_command(CLI::App& app) {
         ->capture_default_str();
     command
         ->add_option("--size", arguments->size,
-                     "Target edge length: a number (uniform), or a size file of lines 'uniform H', "
+                     "Target edge length: a number (uniform); a size file of lines 'uniform H', "
                      "'point X Y S RBAR GAMMA', 'line X0 Y0 X1 Y1 S RBAR GAMMA' (source formula "
-                     "s = min(H, sum s_k [1 + (d_k / rbar_k)^gamma_k]))")
-        ->type_name("NUM|FILE");
+                     "s = min(H, sum s_k [1 + (d_k / rbar_k)^gamma_k])); or an expression in x and "
+                     "y (muParser: + - * / ^ sqrt exp log sin cos abs min max _pi), e.g. "
+                     "'0.01 + 0.1 * sqrt(x^2 + y^2)'")
+        ->type_name("NUM|FILE|EXPR");
     command
         ->add_option("--max-steiner", arguments->max_steiner,
                      "Stop with an error after this many Steiner points (0: automatic)")

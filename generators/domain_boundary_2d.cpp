@@ -151,24 +151,76 @@ tri::TriIdx DomainLocator2::locate(const tri::Triangulation2& mesh, double x, do
     std::uint32_t column, row;
     if (!cell_of(x, y, column, row)) return tri::kNone;
     const double p[2] = {x, y};
-    // The point's cell; a point on a cell's border may be in a triangle listed only beside it.
+    const auto search = [&](std::uint32_t c, std::uint32_t r) -> tri::TriIdx {
+        const std::size_t cell = std::size_t{r} * columns_ + c;
+        for (std::uint32_t i = start_[cell]; i < start_[cell + 1]; ++i) {
+            const tri::TriIdx t = triangles_[i];
+            bool inside = true;
+            for (unsigned k = 0; k < 3 && inside; ++k) {
+                inside = predicates::orient2d(mesh.point(mesh.triangles[3 * t + k]),
+                                              mesh.point(mesh.triangles[3 * t + (k + 1) % 3]),
+                                              p) != predicates::Sign::Negative;
+            }
+            if (inside) return t;
+        }
+        return tri::kNone;
+    };
+    // The point's own cell first: cell_of is monotone in x and in y, so a triangle containing
+    // the point has its box's cells around the point's cell and is listed there. The cells
+    // beside it only when that fails (a point outside, or on a border: kept as a safeguard).
+    if (const tri::TriIdx t = search(column, row); t != tri::kNone) return t;
     for (std::uint32_t r = row > 0 ? row - 1 : 0; r <= std::min(row + 1, rows_ - 1); ++r) {
         for (std::uint32_t c = column > 0 ? column - 1 : 0; c <= std::min(column + 1, columns_ - 1);
              ++c) {
-            const std::size_t cell = std::size_t{r} * columns_ + c;
-            for (std::uint32_t i = start_[cell]; i < start_[cell + 1]; ++i) {
-                const tri::TriIdx t = triangles_[i];
-                bool inside = true;
-                for (unsigned k = 0; k < 3 && inside; ++k) {
-                    inside = predicates::orient2d(mesh.point(mesh.triangles[3 * t + k]),
-                                                  mesh.point(mesh.triangles[3 * t + (k + 1) % 3]),
-                                                  p) != predicates::Sign::Negative;
-                }
-                if (inside) return t;
-            }
+            if (c == column && r == row) continue;
+            if (const tri::TriIdx t = search(c, r); t != tri::kNone) return t;
         }
     }
     return tri::kNone;
+}
+
+SizeFunction size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& cdt) {
+    tri::Cdt2Options options = cdt;
+    options.remove_exterior = true;
+    const tri::Cdt2Result domain = tri::constrained_delaunay_2d(pslg, options);
+    const tri::Triangulation2& mesh = domain.mesh;
+    if (mesh.triangle_count() == 0) throw InputError("the segments enclose no region");
+    // Per vertex: the summed length and count of the pieces at it, then of all its edges.
+    const std::size_t n = mesh.vertex_count();
+    std::vector<double> piece_sum(n, 0), edge_sum(n, 0);
+    std::vector<std::uint32_t> piece_count(n, 0), edge_count(n, 0);
+    auto length = [&](tri::VertIdx a, tri::VertIdx b) {
+        return std::hypot(mesh.xy[2 * b] - mesh.xy[2 * a], mesh.xy[2 * b + 1] - mesh.xy[2 * a + 1]);
+    };
+    for (std::size_t p = 0; p + 1 < domain.pieces.size(); p += 2) {
+        const double l = length(domain.pieces[p], domain.pieces[p + 1]);
+        for (const tri::VertIdx v : {domain.pieces[p], domain.pieces[p + 1]}) {
+            piece_sum[v] += l;
+            ++piece_count[v];
+        }
+    }
+    for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+        const tri::VertIdx a = mesh.triangles[e];
+        const tri::VertIdx b = mesh.triangles[e % 3 == 2 ? e - 2 : e + 1];
+        edge_sum[a] += length(a, b);
+        ++edge_count[a];
+    }
+    // The background mesh holds the vertices some triangle uses (merged duplicates and points
+    // outside the domain are left out), renumbered densely.
+    std::vector<std::uint32_t> dense(n, tri::kNone);
+    std::vector<double> xy, sizes;
+    std::vector<std::uint32_t> triangles;
+    triangles.reserve(mesh.triangles.size());
+    for (const tri::VertIdx v : mesh.triangles) {
+        if (dense[v] == tri::kNone) {
+            dense[v] = static_cast<std::uint32_t>(sizes.size());
+            xy.insert(xy.end(), {mesh.xy[2 * v], mesh.xy[2 * v + 1]});
+            sizes.push_back(piece_count[v] > 0 ? piece_sum[v] / piece_count[v]
+                                               : edge_sum[v] / edge_count[v]);
+        }
+        triangles.push_back(dense[v]);
+    }
+    return SizeFunction::background_mesh(std::move(xy), std::move(sizes), std::move(triangles));
 }
 
 bool in_domain(const DomainBoundary2& boundary, double x, double y) {

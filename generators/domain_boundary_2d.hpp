@@ -66,6 +66,15 @@ DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
                                            const SizeFunction& size,
                                            const triangulation::Cdt2Options& cdt = {});
 
+/// The size a generator uses when the caller gives none (Gmsh's "extend from the boundary"):
+/// the domain's constrained Delaunay triangulation as a background mesh
+/// (SizeFunction::background_mesh), each vertex sized by the mean length of the pieces at it (of
+/// its edges when no piece ends there), linear in between, so the input's own spacing sets the
+/// mesh's.
+/// @throws InputError as constrained_delaunay_2d; InputError when the segments enclose no region.
+SizeFunction size_from_boundary(const triangulation::Pslg& pslg,
+                                const triangulation::Cdt2Options& cdt = {});
+
 /// True when (x, y) lies in the domain (closed), by exact orient2d tests on the CDT.
 bool in_domain(const DomainBoundary2& boundary, double x, double y);
 

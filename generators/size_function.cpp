@@ -13,6 +13,9 @@
 #include <sstream>
 #include <utility>
 
+#include "generators/background_size_2d.hpp"
+#include "generators/size_quadtree_2d.hpp"
+#include "generators/size_smoothing_2d.hpp"
 #include "predicates/errors.hpp"
 
 namespace exactmesh::generators {
@@ -23,6 +26,13 @@ std::string number_text(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.17g", value);
     return text;
+}
+
+/// The shortest text that reads back as `value`.
+std::string short_number(double value) {
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    return std::string(text, result.ptr);
 }
 
 void require_positive(double value, const std::string& what) {
@@ -67,12 +77,15 @@ SizeFunction SizeFunction::uniform(double h) {
     return f;
 }
 
-SizeFunction SizeFunction::sources(std::vector<PointSource> points, std::vector<LineSource> lines, double cap) {
-    if (!(cap > 0) || std::isnan(cap)) throw InputError("size cap must be > 0 (got " + number_text(cap) + ")");
+SizeFunction SizeFunction::sources(std::vector<PointSource> points, std::vector<LineSource> lines,
+                                   double cap) {
+    if (!(cap > 0) || std::isnan(cap))
+        throw InputError("size cap must be > 0 (got " + number_text(cap) + ")");
     for (std::size_t k = 0; k < points.size(); ++k) {
         const PointSource& p = points[k];
         const std::string name = "point source " + std::to_string(k + 1);
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw InputError(name + ": non-finite position");
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+            throw InputError(name + ": non-finite position");
         require_positive(p.size, name + ": size");
         require_positive(p.radius, name + ": radius");
         require_exponent(p.exponent, name + ": exponent");
@@ -80,7 +93,8 @@ SizeFunction SizeFunction::sources(std::vector<PointSource> points, std::vector<
     for (std::size_t k = 0; k < lines.size(); ++k) {
         const LineSource& l = lines[k];
         const std::string name = "line source " + std::to_string(k + 1);
-        if (!std::isfinite(l.x0) || !std::isfinite(l.y0) || !std::isfinite(l.x1) || !std::isfinite(l.y1)) {
+        if (!std::isfinite(l.x0) || !std::isfinite(l.y0) || !std::isfinite(l.x1) ||
+            !std::isfinite(l.y1)) {
             throw InputError(name + ": non-finite end point");
         }
         require_positive(l.size, name + ": size");
@@ -99,16 +113,60 @@ SizeFunction SizeFunction::sources(std::vector<PointSource> points, std::vector<
     return f;
 }
 
-SizeFunction SizeFunction::analytic(std::function<double(double, double)> function, std::string description) {
+SizeFunction SizeFunction::analytic(std::function<double(double, double)> function,
+                                    std::string description) {
     SizeFunction f;
     f.kind_ = Kind::Analytic;
-    f.analytic_ = std::make_shared<const std::function<double(double, double)>>(std::move(function));
+    f.analytic_ =
+        std::make_shared<const std::function<double(double, double)>>(std::move(function));
     f.description_ = std::move(description);
     return f;
 }
 
+SizeFunction SizeFunction::background_mesh(std::vector<double> xy, std::vector<double> sizes,
+                                           std::vector<std::uint32_t> triangles) {
+    SizeFunction f;
+    f.kind_ = Kind::Background;
+    f.background_ = std::make_shared<const BackgroundSizeMesh2>(std::move(xy), std::move(sizes),
+                                                                std::move(triangles));
+    return f;
+}
+
+SizeFunction SizeFunction::quadtree(const SizeFunction& field, const SizeBox& box,
+                                    const QuadtreeSizeOptions& options) {
+    if (!field.bounded()) throw InputError("size quadtree: the size field is unbounded (none)");
+    SizeFunction f;
+    f.kind_ = Kind::Quadtree;
+    f.quadtree_ = std::make_shared<const SizeQuadtree2>(
+        [&field](double x, double y) { return field(x, y); }, box, options);
+    f.description_ = field.describe();
+    return f;
+}
+
+SizeFunction SizeFunction::smoothed(const SizeFunction& field, const SizeBox& box,
+                                    const SmoothingOptions& options) {
+    if (!field.bounded()) throw InputError("size smoothing: the size field is unbounded (none)");
+    SizeFunction f;
+    f.kind_ = Kind::Smoothed;
+    f.smoothed_ = std::make_shared<const SmoothedSizeGrid2>(
+        [&field](double x, double y) { return field(x, y); }, box, options);
+    f.description_ = field.describe();
+    return f;
+}
+
 double SizeFunction::evaluate(double x, double y) const {
-    if (kind_ == Kind::Analytic) return (*analytic_)(x, y);
+    switch (kind_) {
+        case Kind::Analytic:
+            return (*analytic_)(x, y);
+        case Kind::Background:
+            return (*background_)(x, y);
+        case Kind::Quadtree:
+            return (*quadtree_)(x, y);
+        case Kind::Smoothed:
+            return (*smoothed_)(x, y);
+        default:
+            break;
+    }
     double s = 0.0;
     for (const PointSource& p : points_) {
         const double dx = x - p.x, dy = y - p.y;
@@ -130,21 +188,43 @@ SizeFunction SizeFunction::scaled(double factor) const {
 std::string SizeFunction::describe() const {
     std::string text;
     switch (kind_) {
-        case Kind::None: return "none";
-        case Kind::Uniform: return "uniform " + number_text(factor_ * cap_);
+        case Kind::None:
+            return "none";
+        case Kind::Uniform:
+            return "uniform " + number_text(factor_ * cap_);
         case Kind::Sources:
-            text = "sources: " + std::to_string(points_.size()) + " point, " + std::to_string(lines_.size()) + " line";
+            text = "sources: " + std::to_string(points_.size()) + " point, " +
+                   std::to_string(lines_.size()) + " line";
             if (std::isfinite(cap_)) text += ", cap " + number_text(cap_);
             break;
-        case Kind::Analytic: text = description_; break;
+        case Kind::Analytic:
+            text = description_;
+            break;
+        case Kind::Background:
+            text = "background mesh: " + std::to_string(background_->vertex_count()) +
+                   " vertices, " + std::to_string(background_->triangle_count()) + " triangles";
+            break;
+        case Kind::Quadtree:
+            text = "quadtree of (" + description_ +
+                   "): " + std::to_string(quadtree_->leaf_count()) + " leaves, depth " +
+                   std::to_string(quadtree_->depth());
+            break;
+        case Kind::Smoothed:
+            text = "smoothed (" + description_ + ") on a " + std::to_string(smoothed_->nx()) +
+                   " x " + std::to_string(smoothed_->ny()) + " grid, gradation " +
+                   short_number(smoothed_->gradation()) + ", length " +
+                   short_number(smoothed_->length());
+            break;
     }
     if (factor_ != 1.0) text += ", scaled by " + number_text(factor_);
     return text;
 }
 
 bool parse_uniform_size(std::string_view text, double& size) {
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
+        text.remove_prefix(1);
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+        text.remove_suffix(1);
     if (text.empty()) return false;
     double value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -154,15 +234,138 @@ bool parse_uniform_size(std::string_view text, double& size) {
     return true;
 }
 
-SizeFunction parse_size_sources(std::string_view text, std::string_view name) {
+namespace {
+
+/// The parser's state: what the lines said, with the line of each item for later errors.
+struct SizeText {
     std::vector<PointSource> points;
     std::vector<LineSource> lines;
     double cap = std::numeric_limits<double>::infinity();
-    bool have_cap = false;
+    int cap_line = 0, source_line = 0;
+    SizeBox box;
+    int box_line = 0;
+    QuadtreeSizeOptions quadtree;
+    int quadtree_line = 0;
+    SmoothingOptions smoothing;
+    int smooth_line = 0;
+    std::vector<double> xy, sizes;
+    std::vector<std::uint32_t> triangles;
+    std::vector<int> vertex_lines, triangle_lines;
+};
+
+std::uint32_t grid_count(double value, const char* what) {
+    if (!(value >= 2 && value <= 16384 && value == std::floor(value))) {
+        throw InputError(std::string(what) + " must be an integer in [2, 16384] (got " +
+                         number_text(value) + ")");
+    }
+    return static_cast<std::uint32_t>(value);
+}
+
+std::uint32_t vertex_number(double value) {
+    if (!(value >= 0 && value < 4294967295.0 && value == std::floor(value))) {
+        throw InputError("'" + number_text(value) + "' is not a vertex number (an integer >= 0)");
+    }
+    return static_cast<std::uint32_t>(value);
+}
+
+void parse_item(SizeText& t, const std::string& keyword, const std::vector<double>& values,
+                int number, const std::string& where) {
+    auto expect = [&](std::size_t low, std::size_t high, const char* form) {
+        if (values.size() < low || values.size() > high) {
+            const std::string count = low == high
+                                          ? std::to_string(low)
+                                          : std::to_string(low) + " to " + std::to_string(high);
+            throw InputError(where + keyword + " takes " + count + " numbers (" + form + "), got " +
+                             std::to_string(values.size()));
+        }
+    };
+    const bool mesh_item = keyword == "vertex" || keyword == "triangle";
+    const bool source_item = keyword == "uniform" || keyword == "point" || keyword == "line";
+    if ((mesh_item && t.source_line != 0) || (source_item && !t.vertex_lines.empty())) {
+        throw InputError(
+            "sources (uniform, point, line) and a background mesh (vertex, triangle) do not mix "
+            "(line " +
+            std::to_string(mesh_item ? t.source_line : t.vertex_lines.front()) + ")");
+    }
+    if (keyword == "uniform") {
+        expect(1, 1, "H");
+        if (t.cap_line != 0) throw InputError("a second uniform line");
+        require_positive(values[0], "uniform size");
+        t.cap = values[0];
+        t.cap_line = number;
+    } else if (keyword == "point") {
+        expect(5, 5, "X Y S RBAR GAMMA");
+        t.points.push_back({values[0], values[1], values[2], values[3], values[4]});
+        SizeFunction::sources({t.points.back()}, {});  // validates this one
+    } else if (keyword == "line") {
+        expect(7, 7, "X0 Y0 X1 Y1 S RBAR GAMMA");
+        t.lines.push_back(
+            {values[0], values[1], values[2], values[3], values[4], values[5], values[6]});
+        SizeFunction::sources({}, {t.lines.back()});
+    } else if (keyword == "vertex") {
+        expect(3, 3, "X Y S");
+        require_positive(values[2], "vertex size");
+        t.xy.insert(t.xy.end(), {values[0], values[1]});
+        t.sizes.push_back(values[2]);
+        t.vertex_lines.push_back(number);
+    } else if (keyword == "triangle") {
+        expect(3, 3, "I J K");
+        for (const double v : values) t.triangles.push_back(vertex_number(v));
+        t.triangle_lines.push_back(number);
+    } else if (keyword == "box") {
+        expect(4, 4, "X0 Y0 X1 Y1");
+        if (t.box_line != 0) throw InputError("a second box line");
+        if (!(values[0] < values[2] && values[1] < values[3]))
+            throw InputError("box needs X0 < X1 and Y0 < Y1");
+        t.box = {values[0], values[1], values[2], values[3]};
+        t.box_line = number;
+    } else if (keyword == "quadtree") {
+        expect(0, 2, "[TOL [FACTOR]]");
+        if (t.quadtree_line != 0 || t.smooth_line != 0)
+            throw InputError("at most one quadtree or smooth line");
+        if (!values.empty()) t.quadtree.tolerance = values[0];
+        if (values.size() > 1) t.quadtree.cell_factor = values[1];
+        t.quadtree_line = number;
+    } else if (keyword == "smooth") {
+        expect(2, 4, "NX NY [GRADE [LENGTH]]");
+        if (t.quadtree_line != 0 || t.smooth_line != 0)
+            throw InputError("at most one quadtree or smooth line");
+        t.smoothing.nx = grid_count(values[0], "NX");
+        t.smoothing.ny = grid_count(values[1], "NY");
+        if (values.size() > 2) t.smoothing.gradation = values[2];
+        if (values.size() > 3) t.smoothing.length = values[3];
+        t.smooth_line = number;
+    } else {
+        throw InputError(
+            "unknown item '" + keyword +
+            "' (expected uniform, point, line, vertex, triangle, box, quadtree or smooth)");
+    }
+    if (source_item) t.source_line = t.source_line != 0 ? t.source_line : number;
+}
+
+std::string at_line(std::string_view name, int line) {
+    return std::string(name) + ":" + std::to_string(line) + ": ";
+}
+
+/// Rethrows the error of building a quadtree or a smoothing grid with its line in front.
+[[noreturn]] void rethrow_at(const std::string& where) {
+    try {
+        throw;
+    } catch (const GeometryError& error) {
+        throw GeometryError(where + error.what());
+    } catch (const InputError& error) {
+        throw InputError(where + error.what());
+    }
+}
+
+}  // namespace
+
+SizeFunction parse_size_sources(std::string_view text, std::string_view name) {
+    SizeText t;
     std::istringstream in{std::string(text)};
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {
-        const std::string where = std::string(name) + ":" + std::to_string(number) + ": ";
+        const std::string where = at_line(name, number);
         if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
         std::istringstream words(line);
         std::string keyword;
@@ -171,46 +374,63 @@ SizeFunction parse_size_sources(std::string_view text, std::string_view name) {
         std::string word;
         while (words >> word) {
             double value = 0;
-            const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+            const auto [end, error] =
+                std::from_chars(word.data(), word.data() + word.size(), value);
             if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(value)) {
                 throw InputError(where + "'" + word + "' is not a finite number");
             }
             values.push_back(value);
         }
-        auto expect = [&](std::size_t count, const char* form) {
-            if (values.size() != count) {
-                throw InputError(where + keyword + " takes " + std::to_string(count) + " numbers (" + form + "), got " +
-                                 std::to_string(values.size()));
-            }
-        };
         try {
-            if (keyword == "uniform") {
-                expect(1, "H");
-                if (have_cap) throw InputError("a second uniform line");
-                require_positive(values[0], "uniform size");
-                cap = values[0];
-                have_cap = true;
-            } else if (keyword == "point") {
-                expect(5, "X Y S RBAR GAMMA");
-                points.push_back({values[0], values[1], values[2], values[3], values[4]});
-                SizeFunction::sources({points.back()}, {});  // validates this one
-            } else if (keyword == "line") {
-                expect(7, "X0 Y0 X1 Y1 S RBAR GAMMA");
-                lines.push_back({values[0], values[1], values[2], values[3], values[4], values[5], values[6]});
-                SizeFunction::sources({}, {lines.back()});
-            } else {
-                throw InputError("unknown item '" + keyword + "' (expected uniform, point or line)");
-            }
+            parse_item(t, keyword, values, number, where);
         } catch (const InputError& error) {
             const std::string message = error.what();
             if (message.rfind(where, 0) == 0) throw;
             throw InputError(where + message);
         }
     }
-    if (points.empty() && lines.empty() && !have_cap) {
-        throw InputError(std::string(name) + ": no size given (expected uniform, point or line lines)");
+    SizeFunction field;
+    if (!t.vertex_lines.empty() || !t.triangle_lines.empty()) {
+        if (t.triangle_lines.empty()) {
+            throw InputError(at_line(name, t.vertex_lines.back()) +
+                             "vertex lines but no triangle line");
+        }
+        try {
+            field = SizeFunction::background_mesh(std::move(t.xy), std::move(t.sizes),
+                                                  std::move(t.triangles));
+        } catch (const BackgroundMeshError& error) {
+            using Item = BackgroundMeshError::Item;
+            if (error.item() == Item::Vertex) {
+                throw InputError(at_line(name, t.vertex_lines[error.index()]) + "vertex " +
+                                 std::to_string(error.index()) + ": " + error.detail());
+            }
+            if (error.item() == Item::Triangle) {
+                throw InputError(at_line(name, t.triangle_lines[error.index()]) + "triangle " +
+                                 std::to_string(error.index()) + ": " + error.detail());
+            }
+            throw InputError(std::string(name) + ": background mesh: " + error.detail());
+        }
+    } else {
+        if (t.points.empty() && t.lines.empty() && t.cap_line == 0) {
+            throw InputError(std::string(name) +
+                             ": no size given (expected uniform, point or line lines, or vertex "
+                             "and triangle lines)");
+        }
+        field = SizeFunction::sources(std::move(t.points), std::move(t.lines), t.cap);
     }
-    return SizeFunction::sources(std::move(points), std::move(lines), cap);
+    const int directive = t.quadtree_line != 0 ? t.quadtree_line : t.smooth_line;
+    if (directive == 0) return field;
+    const std::string where = at_line(name, directive);
+    if (t.box_line == 0) {
+        throw InputError(where + (t.quadtree_line != 0 ? "quadtree" : "smooth") +
+                         " needs a box line (box X0 Y0 X1 Y1)");
+    }
+    try {
+        if (t.quadtree_line != 0) return SizeFunction::quadtree(field, t.box, t.quadtree);
+        return SizeFunction::smoothed(field, t.box, t.smoothing);
+    } catch (const Error&) {
+        rethrow_at(where);
+    }
 }
 
 }  // namespace exactmesh::generators

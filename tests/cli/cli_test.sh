@@ -535,10 +535,10 @@ swap3d_bad_input() {
 
 # `exactmesh mesh`: each built-in domain in each format, a .poly with an angle and size bound
 # (checked as constrained Delaunay by `check`, min angle from --quality), a size file, and the
-# error lines: unimplemented and unknown generators, bounds, files, open and broken domains.
+# error lines: unknown generators, bounds, files, open and broken domains.
 mesh() {
   local domain ext
-  for domain in square-with-holes naca0012 key; do
+  for domain in square-with-holes naca0012 key three-element; do
     run 0 mesh --domain "$domain" -o "$work/$domain.ele" --quality --stats || continue
     for ext in ele neigh node poly; do [[ -s "$work/$domain.$ext" ]] || fail "mesh: $domain.$ext missing"; done
     grep -Eq '^triangles: [1-9][0-9]{3,}$' "$work/out" || fail "mesh $domain: too few triangles: $(cat "$work/out")"
@@ -562,6 +562,15 @@ mesh() {
   run 0 check "$data/square_hole_diagonals.poly" "$work/square.ele" &&
     grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
     fail "check rejected the mesh: $(cat "$work/out")"
+  # check --conforming: the same mesh is a valid mesh of the domain; one triangle turned
+  # clockwise is not (exit 1, naming it); --conforming without a .poly is an input error.
+  run 0 check --conforming "$data/square_hole_diagonals.poly" "$work/square.ele" &&
+    grep -q '^ok: [0-9]* triangles, exact valid mesh' "$work/out" || fail "check --conforming: $(cat "$work/out")"
+  awk 'NR == 2 { t = $2; $2 = $3; $3 = t } { print }' "$work/square.ele" >"$work/folded.ele"
+  cp "$work/square.node" "$work/folded.node" && cp "$work/square.poly" "$work/folded.poly"
+  run 1 check --conforming "$data/square_hole_diagonals.poly" "$work/folded.ele" &&
+    grep -q '^not ok: .*folded\.ele: ' "$work/out" || fail "check --conforming accepted a clockwise triangle: $(cat "$work/out")"
+  expect_error 2 '--conforming needs an IN\.poly' check --conforming "$data/kite.node" "$data/kite_delaunay.ele"
   # A size file: a point source at the centre, capped.
   printf '# size\nuniform 0.5\npoint 2 2 0.05 0.5 1.5\n' >"$work/size.txt"
   run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/graded.ele" --size "$work/size.txt" --quality &&
@@ -575,11 +584,30 @@ mesh() {
   run 0 check "$data/square_hole_diagonals.poly" "$work/smooth.ele" &&
     grep -q '^ok: [0-9]* triangles, exact constrained Delaunay' "$work/out" ||
     fail "check rejected the smoothed mesh: $(cat "$work/out")"
-  # Errors: one line each.
-  local name
-  for name in quadtree advancing-front advancing-front-delaunay frontal; do
-    expect_error 2 "not implemented yet: $name" mesh --domain key -o "$work/x.ele" --generator "$name"
+  # Every generator of the registry: a .poly with crossing diagonals and a hole at a given size,
+  # checked exactly (constrained Delaunay, or a valid mesh for the conforming generators), and
+  # the key domain with its counters and construct_seconds; without --size a generator that
+  # needs one takes the input's spacing.
+  local generator kind
+  for generator in delaunay-refinement:delaunay frontal:delaunay advancing-front-delaunay:conforming; do
+    kind=${generator#*:}
+    generator=${generator%%:*}
+    run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/$generator.ele" --generator "$generator" --size 0.3 \
+      --quality || continue
+    awk '/^quality.triangles:/ { exit !($2 > 100) }' "$work/out" || fail "mesh --generator $generator: $(cat "$work/out")"
+    if [[ $kind == delaunay ]]; then
+      run 0 check "$data/square_hole_diagonals.poly" "$work/$generator.ele" &&
+        grep -q '^ok: .* exact constrained Delaunay' "$work/out" || fail "check $generator: $(cat "$work/out")"
+    else
+      run 0 check --conforming "$data/square_hole_diagonals.poly" "$work/$generator.ele" &&
+        grep -q '^ok: .* exact valid mesh' "$work/out" || fail "check --conforming $generator: $(cat "$work/out")"
+    fi
+    run 0 mesh --domain key -o "$work/key-$generator.vtu" --generator "$generator" --stats &&
+      grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "mesh --domain key --generator $generator --stats"
+    run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/$generator-own.ele" --generator "$generator" ||
+      fail "mesh --generator $generator without --size"
   done
+  # Errors: one line each.
   expect_error 2 "unknown generator 'magic'" mesh --domain key -o "$work/x.ele" --generator magic
   expect_error 2 "unknown domain 'moon'" mesh --domain moon -o "$work/x.ele"
   expect_error 2 'minimum angle 40 is outside \[0, 34\]' mesh --domain key -o "$work/x.ele" --min-angle 40
@@ -587,8 +615,15 @@ mesh() {
   expect_error 2 'either an input \.poly file or --domain' mesh -o "$work/x.ele"
   printf 'point 1 2 3\n' >"$work/bad_size.txt"
   expect_error 2 'bad_size\.txt:1: point takes 5 numbers' mesh --domain key -o "$work/x.ele" --size "$work/bad_size.txt"
-  expect_error 2 "--size 'nowhere' is neither a number > 0 nor a readable size file" \
+  expect_error 2 "--size 'nowhere' is neither a number > 0, a readable size file, nor an expression in x and y: " \
     mesh --domain key -o "$work/x.ele" --size nowhere
+  expect_error 2 "--size '0.1 \\+\\* x' is neither .*: " mesh --domain key -o "$work/x.ele" --size '0.1 +* x'
+  expect_error 2 'size' mesh --domain key -o "$work/x.ele" --size '-1'
+  # A size expression in x and y: graded towards x = 4, every edge within it.
+  run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/expr.ele" --size '0.02 + 0.1 * abs(4 - x)' --quality &&
+    grep -Eq '^quality.size_conformity: .* max (0\.[0-9]+|1\.0000[0-9]*) ' "$work/out" &&
+    awk '/^quality.triangles:/ { exit !($2 > 1000) }' "$work/out" ||
+    fail "mesh --size EXPR: $(cat "$work/out") $(cat "$work/err")"
   printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 2 3\n0\n' >"$work/open.poly"
   expect_error 2 'the segments enclose no region' mesh "$work/open.poly" -o "$work/x.ele"
   printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 nan\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/nan.poly"

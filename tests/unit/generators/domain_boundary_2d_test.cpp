@@ -152,3 +152,31 @@ TEST(DomainBoundary2, BadInputIsAnInputError) {
 }
 
 }  // namespace
+
+TEST(DomainBoundary2, SizeFromBoundaryFollowsTheInputSpacing) {
+    // The unit square with its bottom side in ten segments of 0.1: the bottom's inner vertices
+    // get 0.1, its corners the mean of 0.1 and 1, the top corners 1; linear in between.
+    Input in;
+    for (int i = 0; i <= 10; ++i) in.xy.insert(in.xy.end(), {0.1 * i, 0.0});
+    in.xy.insert(in.xy.end(), {1, 1, 0, 1});
+    for (std::uint32_t i = 0; i < 10; ++i) in.segments.insert(in.segments.end(), {i, i + 1});
+    in.segments.insert(in.segments.end(), {10, 11, 11, 12, 12, 0});
+    const gen::SizeFunction size = gen::size_from_boundary(in.pslg());
+    ASSERT_TRUE(size.bounded());
+    EXPECT_NEAR(size(0.5, 0), 0.1, 1e-12);
+    EXPECT_NEAR(size(0.25, 0), 0.1, 1e-12);
+    EXPECT_NEAR(size(0, 0), 0.55, 1e-12);
+    EXPECT_NEAR(size(1, 1), 1.0, 1e-12);
+    EXPECT_NEAR(size(0.5, 1), 1.0, 1e-12);
+    // Inside, between the two: no smaller than the bottom's, no larger than the top's.
+    for (double y = 0.05; y < 1; y += 0.1) {
+        const double s = size(0.5, y);
+        EXPECT_GE(s, 0.1 - 1e-12);
+        EXPECT_LE(s, 1.0 + 1e-12);
+    }
+    // No enclosed region: an InputError.
+    Input open;
+    open.xy = {0, 0, 1, 0, 1, 1};
+    open.segments = {0, 1, 1, 2};
+    EXPECT_THROW(gen::size_from_boundary(open.pslg()), exactmesh::InputError);
+}

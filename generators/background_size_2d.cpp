@@ -1,0 +1,327 @@
+// SPDX-License-Identifier: MIT
+// Background size mesh (see background_size_2d.hpp). Point location: a bucket grid of
+// triangles, exact orient2d; the nearest boundary edge of a point outside the mesh: a ring
+// search over a second bucket grid, stopped by a lower bound on the distance to the cells not
+// yet searched.
+#include "generators/background_size_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <utility>
+
+#include "predicates/orient2d.hpp"
+
+namespace exactmesh::generators {
+
+namespace tri = triangulation;
+
+namespace {
+
+std::string number_text(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+std::string item_prefix(BackgroundMeshError::Item item, std::size_t index) {
+    switch (item) {
+        case BackgroundMeshError::Item::Vertex:
+            return "vertex " + std::to_string(index) + ": ";
+        case BackgroundMeshError::Item::Triangle:
+            return "triangle " + std::to_string(index) + ": ";
+        case BackgroundMeshError::Item::Mesh:
+            break;
+    }
+    return "";
+}
+
+}  // namespace
+
+BackgroundMeshError::BackgroundMeshError(Item item, std::size_t index, const std::string& detail,
+                                         SourceLocation where)
+    : InputError("background mesh: " + item_prefix(item, index) + detail, where),
+      item_(item),
+      index_(index),
+      detail_(detail) {}
+
+BackgroundSizeMesh2::BackgroundSizeMesh2(std::vector<double> xy, std::vector<double> sizes,
+                                         std::vector<std::uint32_t> triangles) {
+    using Item = BackgroundMeshError::Item;
+    if (xy.size() % 2 != 0) throw BackgroundMeshError(Item::Mesh, 0, "odd number of coordinates");
+    const std::size_t vertices = xy.size() / 2;
+    if (vertices >= tri::kNone)
+        throw BackgroundMeshError(Item::Mesh, 0, "more than 2^32 - 2 vertices");
+    if (sizes.size() != vertices) {
+        throw BackgroundMeshError(
+            Item::Mesh, 0,
+            std::to_string(vertices) + " vertices but " + std::to_string(sizes.size()) + " sizes");
+    }
+    if (triangles.size() % 3 != 0)
+        throw BackgroundMeshError(Item::Mesh, 0, "triangle indices not a multiple of 3");
+    if (triangles.empty()) throw BackgroundMeshError(Item::Mesh, 0, "no triangle");
+    if (triangles.size() / 3 >= tri::kNone)
+        throw BackgroundMeshError(Item::Mesh, 0, "more than 2^32 - 2 triangles");
+    for (std::size_t v = 0; v < vertices; ++v) {
+        if (!std::isfinite(xy[2 * v]) || !std::isfinite(xy[2 * v + 1])) {
+            throw BackgroundMeshError(Item::Vertex, v,
+                                      "non-finite coordinate (" + number_text(xy[2 * v]) + ", " +
+                                          number_text(xy[2 * v + 1]) + ")");
+        }
+        if (!(std::isfinite(sizes[v]) && sizes[v] > 0)) {
+            throw BackgroundMeshError(
+                Item::Vertex, v,
+                "size must be a finite number > 0 (got " + number_text(sizes[v]) + ")");
+        }
+    }
+    const std::size_t count = triangles.size() / 3;
+    for (std::size_t t = 0; t < count; ++t) {
+        const std::uint32_t* v = &triangles[3 * t];
+        const std::string names = " (" + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " +
+                                  std::to_string(v[2]) + ")";
+        for (int k = 0; k < 3; ++k) {
+            if (v[k] >= vertices) {
+                throw BackgroundMeshError(Item::Triangle, t,
+                                          "vertex index " + std::to_string(v[k]) +
+                                              " out of range (" + std::to_string(vertices) +
+                                              " vertices)");
+            }
+        }
+        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) {
+            throw BackgroundMeshError(Item::Triangle, t, "repeats a vertex" + names);
+        }
+        const predicates::Sign sign =
+            predicates::orient2d(&xy[2 * v[0]], &xy[2 * v[1]], &xy[2 * v[2]]);
+        if (sign == predicates::Sign::Negative)
+            throw BackgroundMeshError(Item::Triangle, t, "inverted (clockwise)" + names);
+        if (sign == predicates::Sign::Zero)
+            throw BackgroundMeshError(Item::Triangle, t, "degenerate (collinear vertices)" + names);
+    }
+    // Directed edges, sorted: a repeat means two triangles on the same side of one edge; an
+    // edge whose reverse is absent bounds the mesh.
+    struct Directed {
+        std::uint64_t key;
+        std::uint32_t triangle;
+    };
+    std::vector<Directed> edges;
+    edges.reserve(triangles.size());
+    for (std::size_t t = 0; t < count; ++t) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::uint64_t a = triangles[3 * t + k], b = triangles[3 * t + (k + 1) % 3];
+            edges.push_back({a << 32 | b, static_cast<std::uint32_t>(t)});
+        }
+    }
+    std::sort(edges.begin(), edges.end(), [](const Directed& p, const Directed& q) {
+        return p.key != q.key ? p.key < q.key : p.triangle < q.triangle;
+    });
+    for (std::size_t i = 1; i < edges.size(); ++i) {
+        if (edges[i].key == edges[i - 1].key) {
+            throw BackgroundMeshError(Item::Triangle, edges[i].triangle,
+                                      "overlaps triangle " + std::to_string(edges[i - 1].triangle) +
+                                          " (both have the edge " +
+                                          std::to_string(edges[i].key >> 32) + " -> " +
+                                          std::to_string(edges[i].key & 0xFFFFFFFFu) + ")");
+        }
+    }
+    for (const Directed& e : edges) {
+        const std::uint64_t reverse = (e.key & 0xFFFFFFFFu) << 32 | e.key >> 32;
+        const bool found =
+            std::binary_search(edges.begin(), edges.end(), Directed{reverse, 0},
+                               [](const Directed& p, const Directed& q) { return p.key < q.key; });
+        if (!found) {
+            boundary_.push_back(static_cast<std::uint32_t>(e.key >> 32));
+            boundary_.push_back(static_cast<std::uint32_t>(e.key & 0xFFFFFFFFu));
+        }
+    }
+
+    mesh_.xy = std::move(xy);
+    mesh_.triangles = std::move(triangles);
+    sizes_ = std::move(sizes);
+    boxes_.resize(4 * count);
+    for (std::size_t t = 0; t < count; ++t) {
+        const double* a = mesh_.point(mesh_.triangles[3 * t]);
+        const double* b = mesh_.point(mesh_.triangles[3 * t + 1]);
+        const double* c = mesh_.point(mesh_.triangles[3 * t + 2]);
+        boxes_[4 * t] = std::min({a[0], b[0], c[0]}),
+                   boxes_[4 * t + 1] = std::min({a[1], b[1], c[1]});
+        boxes_[4 * t + 2] = std::max({a[0], b[0], c[0]}),
+                       boxes_[4 * t + 3] = std::max({a[1], b[1], c[1]});
+    }
+    fill(triangle_buckets_, count, 3, mesh_.triangles.data(), 0.5);
+    fill(edge_buckets_, boundary_.size() / 2, 2, boundary_.data(), 1.0);
+}
+
+std::uint32_t BackgroundSizeMesh2::Buckets::column(double x) const {
+    const long double f = (static_cast<long double>(x) - x0) / cell;
+    return static_cast<std::uint32_t>(std::clamp<long double>(f, 0, columns - 1));
+}
+
+std::uint32_t BackgroundSizeMesh2::Buckets::row(double y) const {
+    const long double f = (static_cast<long double>(y) - y0) / cell;
+    return static_cast<std::uint32_t>(std::clamp<long double>(f, 0, rows - 1));
+}
+
+void BackgroundSizeMesh2::fill(Buckets& b, std::size_t count, std::size_t per_item,
+                               const std::uint32_t* vertices, double per_cell) {
+    // The box of the used vertices, about per_cell items per cell (widths in long double so
+    // that extents near the largest double do not overflow).
+    double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
+    b.x0 = b.y0 = std::numeric_limits<double>::infinity();
+    for (const std::uint32_t v : mesh_.triangles) {
+        b.x0 = std::min(b.x0, mesh_.point(v)[0]), b.y0 = std::min(b.y0, mesh_.point(v)[1]);
+        x1 = std::max(x1, mesh_.point(v)[0]), y1 = std::max(y1, mesh_.point(v)[1]);
+    }
+    const long double width = static_cast<long double>(x1) - b.x0,
+                      height = static_cast<long double>(y1) - b.y0;
+    // Coarser while the lists would hold more than 16 entries per item (long slivers meet
+    // many cells; a fan of them would otherwise need memory quadratic in their number).
+    auto range = [&](std::size_t item, std::uint32_t& c0, std::uint32_t& c1, std::uint32_t& r0,
+                     std::uint32_t& r1) {
+        c0 = b.columns, c1 = 0, r0 = b.rows, r1 = 0;
+        for (std::size_t k = 0; k < per_item; ++k) {
+            const double* p = mesh_.point(vertices[per_item * item + k]);
+            c0 = std::min(c0, b.column(p[0])), c1 = std::max(c1, b.column(p[0]));
+            r0 = std::min(r0, b.row(p[1])), r1 = std::max(r1, b.row(p[1]));
+        }
+    };
+    for (double cells = std::max(1.0, std::sqrt(static_cast<double>(count) / per_cell));;
+         cells = std::max(1.0, cells / 2)) {
+        b.cell = static_cast<double>(std::max(width, height) / cells);
+        if (!(b.cell > 0) || !std::isfinite(b.cell)) b.cell = std::numeric_limits<double>::max();
+        b.columns =
+            static_cast<std::uint32_t>(std::clamp<long double>(width / b.cell, 0, 4095)) + 1;
+        b.rows = static_cast<std::uint32_t>(std::clamp<long double>(height / b.cell, 0, 4095)) + 1;
+        if (cells == 1.0) break;
+        std::uint64_t total = 0;
+        for (std::size_t item = 0; item < count; ++item) {
+            std::uint32_t c0, c1, r0, r1;
+            range(item, c0, c1, r0, r1);
+            total += std::uint64_t{c1 - c0 + 1} * (r1 - r0 + 1);
+        }
+        if (total <= 16 * std::uint64_t{count} + 4096) break;
+    }
+    b.start.assign(std::size_t{b.columns} * b.rows + 1, 0);
+    for (int pass = 0; pass < 2; ++pass) {
+        std::vector<std::uint32_t> next;
+        if (pass == 1) {
+            for (std::size_t i = 1; i < b.start.size(); ++i) b.start[i] += b.start[i - 1];
+            b.items.resize(b.start.back());
+            next.assign(b.start.begin(), b.start.end() - 1);
+        }
+        for (std::size_t item = 0; item < count; ++item) {
+            std::uint32_t c0, c1, r0, r1;
+            range(item, c0, c1, r0, r1);
+            for (std::uint32_t r = r0; r <= r1; ++r) {
+                for (std::uint32_t c = c0; c <= c1; ++c) {
+                    const std::size_t cell = std::size_t{r} * b.columns + c;
+                    if (pass == 0) {
+                        ++b.start[cell + 1];
+                    } else {
+                        b.items[next[cell]++] = static_cast<std::uint32_t>(item);
+                    }
+                }
+            }
+        }
+    }
+}
+
+tri::TriIdx BackgroundSizeMesh2::locate(double x, double y) const {
+    const Buckets& b = triangle_buckets_;
+    if (!std::isfinite(x) || !std::isfinite(y)) return tri::kNone;
+    const double p[2] = {x, y};
+    // Outside the box no triangle can contain the point (exact comparisons); inside, the
+    // point's cell lists every triangle whose box holds it.
+    if (x < b.x0 || y < b.y0 || x > b.x0 + b.columns * b.cell || y > b.y0 + b.rows * b.cell)
+        return tri::kNone;
+    const std::size_t cell = std::size_t{b.row(y)} * b.columns + b.column(x);
+    for (std::uint32_t i = b.start[cell]; i < b.start[cell + 1]; ++i) {
+        const tri::TriIdx t = b.items[i];
+        // The triangle's box first (exact comparisons: a point outside it is outside).
+        const double* box = &boxes_[4 * std::size_t{t}];
+        if (x < box[0] || x > box[2] || y < box[1] || y > box[3]) continue;
+        const std::uint32_t* v = &mesh_.triangles[3 * std::size_t{t}];
+        if (predicates::orient2d(mesh_.point(v[0]), mesh_.point(v[1]), p) !=
+                predicates::Sign::Negative &&
+            predicates::orient2d(mesh_.point(v[1]), mesh_.point(v[2]), p) !=
+                predicates::Sign::Negative &&
+            predicates::orient2d(mesh_.point(v[2]), mesh_.point(v[0]), p) !=
+                predicates::Sign::Negative) {
+            return t;
+        }
+    }
+    return tri::kNone;
+}
+
+double BackgroundSizeMesh2::interpolate(tri::TriIdx t, double x, double y) const {
+    const std::uint32_t* v = &mesh_.triangles[3 * std::size_t{t}];
+    const double* a = mesh_.point(v[0]);
+    const double* b = mesh_.point(v[1]);
+    const double* c = mesh_.point(v[2]);
+    const double area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    // Barycentric coordinates of (x, y): the sub-areas opposite b and c over the whole.
+    const double lb = ((c[0] - a[0]) * (y - a[1]) - (c[1] - a[1]) * (x - a[0])) / -area;
+    const double lc = ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])) / area;
+    const double sa = sizes_[v[0]], sb = sizes_[v[1]], sc = sizes_[v[2]];
+    const double s = sa + lb * (sb - sa) + lc * (sc - sa);
+    // The point is inside (exactly); rounding may carry s a few ulps past the vertex values.
+    return std::clamp(s, std::min({sa, sb, sc}), std::max({sa, sb, sc}));
+}
+
+double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
+    // q' = the nearest point of the grid's box to q. For every point p of the box,
+    // |q - p|^2 >= |q - q'|^2 + |q' - p|^2 (projection onto a convex set), and a cell k rings
+    // away from q's cell is at least (k - 1) cells from q'.
+    const Buckets& g = edge_buckets_;
+    const double qx = std::clamp(x, g.x0, g.x0 + g.columns * g.cell);
+    const double qy = std::clamp(y, g.y0, g.y0 + g.rows * g.cell);
+    const double outside2 = (x - qx) * (x - qx) + (y - qy) * (y - qy);
+    const auto column = static_cast<std::int64_t>(g.column(qx));
+    const auto row = static_cast<std::int64_t>(g.row(qy));
+    double best2 = std::numeric_limits<double>::infinity(), value = 0;
+    auto visit = [&](std::int64_t c, std::int64_t r) {
+        if (c < 0 || r < 0 || c >= g.columns || r >= g.rows) return;
+        const std::size_t cell =
+            static_cast<std::size_t>(r) * g.columns + static_cast<std::size_t>(c);
+        for (std::uint32_t i = g.start[cell]; i < g.start[cell + 1]; ++i) {
+            const std::uint32_t e = g.items[i];
+            const std::uint32_t va = boundary_[2 * std::size_t{e}],
+                                vb = boundary_[2 * std::size_t{e} + 1];
+            const double* a = mesh_.point(va);
+            const double* b = mesh_.point(vb);
+            const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
+            const double t = std::clamp(((x - a[0]) * dx + (y - a[1]) * dy) / length2, 0.0, 1.0);
+            const double ex = x - (a[0] + t * dx), ey = y - (a[1] + t * dy), d2 = ex * ex + ey * ey;
+            if (d2 < best2) {
+                best2 = d2;
+                value =
+                    std::clamp(sizes_[va] + t * (sizes_[vb] - sizes_[va]),
+                               std::min(sizes_[va], sizes_[vb]), std::max(sizes_[va], sizes_[vb]));
+            }
+        }
+    };
+    const std::int64_t rings = std::max(g.columns, g.rows);
+    for (std::int64_t k = 0; k <= rings; ++k) {
+        if (k >= 1) {
+            const double gap = static_cast<double>(k - 1) * g.cell;
+            if (outside2 + gap * gap > best2) break;
+        }
+        if (k == 0) {
+            visit(column, row);
+            continue;
+        }
+        for (std::int64_t c = column - k; c <= column + k; ++c)
+            visit(c, row - k), visit(c, row + k);
+        for (std::int64_t r = row - k + 1; r <= row + k - 1; ++r)
+            visit(column - k, r), visit(column + k, r);
+    }
+    return value;
+}
+
+double BackgroundSizeMesh2::operator()(double x, double y) const {
+    const tri::TriIdx t = locate(x, y);
+    if (t != tri::kNone) return interpolate(t, x, y);
+    return nearest_boundary_value(x, y);
+}
+
+}  // namespace exactmesh::generators

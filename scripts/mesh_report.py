@@ -1,0 +1,275 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Markdown report and plots of 2D mesh generation from mesh_bench's JSON.
+
+Usage:
+  mesh_bench --benchmark_out=mesh_bench.json --benchmark_out_format=json
+  scripts/mesh_report.py mesh_bench.json --out-dir report [--cli build/release/cli/exactmesh]
+
+Reads benchmarks named BM_mesh/<mesher>/<domain>/<angle>/<target>[/...] (raw repetitions; the
+medians are computed here: CPU time for ours and CGAL, the manual time for Gmsh, which is Gmsh's
+own CPU time of its 2D meshing) and writes into --out-dir:
+  mesh.md                 per domain and target: triangles, median time, triangles per second,
+                          throughput relative to CGAL, minimum and mean minimum angle, size
+                          conformity; the fitted exponent of time vs triangles per mesher;
+                          the goals of issue 6 (Delaunay refinement >= 2x CGAL's throughput with
+                          an equal or better minimum angle; frontal generators' mean quality
+                          above Delaunay refinement's);
+  mesh_histograms.png     the corner-angle histograms of every mesher, one panel per domain, at
+                          the target nearest 10^5;
+  mesh_throughput.png     triangles per second vs triangles, one panel per domain;
+  mesh_<domain>_<generator>.svg (with --cli): each generator on each sample domain at the
+                          domain's own size, drawn by `exactmesh mesh`.
+Exits 1 when a benchmark reported an error, after writing.
+"""
+
+import argparse
+import json
+import math
+import os
+import statistics
+import subprocess
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
+
+SECONDS_PER_UNIT = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
+PEERS = ["cgal", "gmsh-delaunay", "gmsh-frontal"]
+FRONTAL = ["advancing-front", "advancing-front-delaunay", "frontal"]
+
+
+class Results:
+    def __init__(self, data):
+        self.runs = defaultdict(list)  # (mesher, domain, angle, target) -> [benchmark dicts]
+        self.errors = []
+        for b in data["benchmarks"]:
+            if b.get("run_type") == "aggregate":
+                continue
+            parts = b["name"].split("/")
+            if len(parts) < 5 or parts[0] != "BM_mesh":
+                continue
+            key = (parts[1], parts[2], parts[3], int(parts[4]))
+            if b.get("error_occurred"):
+                self.errors.append(f"{b['name']}: {b.get('error_message', '')}")
+                continue
+            self.runs[key].append(b)
+
+    def keys(self):
+        return sorted(self.runs)
+
+    def meshers(self):
+        names = sorted({k[0] for k in self.runs})
+        ours = [n for n in names if n not in PEERS]
+        return ours + [p for p in PEERS if p in names]
+
+    def domains(self):
+        order = ["square-with-holes", "naca0012", "key", "three-element"]
+        found = {k[1] for k in self.runs}
+        return [d for d in order if d in found] + sorted(found - set(order))
+
+    def seconds(self, key):
+        runs = self.runs[key]
+        field = "real_time" if key[0].startswith("gmsh") else "cpu_time"
+        return statistics.median(r[field] * SECONDS_PER_UNIT[r["time_unit"]] for r in runs)
+
+    def counter(self, key, name):
+        return self.runs[key][0].get(name)
+
+    def find(self, mesher, domain, target, angle=None):
+        for k in self.runs:
+            if k[0] == mesher and k[1] == domain and k[3] == target and (angle is None or k[2] == angle):
+                return k
+        return None
+
+
+def fmt(value, digits=2):
+    if value is None:
+        return "—"
+    return f"{value:.{digits}f}"
+
+
+def table(header, rows):
+    lines = ["| " + " | ".join(header) + " |", "|" + "|".join("---" if i == 0 else "---:" for i in range(len(header))) + "|"]
+    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(lines) + "\n"
+
+
+def throughput(res, key):
+    return res.counter(key, "triangles") / res.seconds(key)
+
+
+def domain_tables(res, out):
+    for domain in res.domains():
+        out.append(f"### {domain}\n")
+        rows = []
+        for key in [k for k in res.keys() if k[1] == domain]:
+            mesher, _, angle, target = key
+            cgal = res.find("cgal", domain, target, angle if angle != "none" else "20.7")
+            rel = throughput(res, key) / throughput(res, cgal) if cgal else None
+            rows.append([f"{mesher}", angle, f"{target:,}", f"{int(res.counter(key, 'triangles')):,}",
+                         fmt(res.seconds(key) * 1e3, 1), f"{throughput(res, key) / 1e3:,.0f}k",
+                         fmt(rel), fmt(res.counter(key, "min_angle")), fmt(res.counter(key, "mean_min_angle")),
+                         fmt(res.counter(key, "median_size_ratio")), fmt(res.counter(key, "max_size_ratio"))])
+        rows.sort(key=lambda r: (int(r[2].replace(",", "")), res.meshers().index(r[0]), r[1]))
+        out.append(table(["mesher", "angle bound", "target", "triangles", "ms (median)", "triangles/s",
+                          "throughput / CGAL", "min angle", "mean min angle", "size ratio median", "size ratio max"],
+                         rows))
+        out.append("")
+
+
+def slope(points):
+    xs = [math.log(n) for n, _ in points]
+    ys = [math.log(t) for _, t in points]
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    den = sum((x - mx) ** 2 for x in xs)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / den if den > 0 else None
+
+
+def exponent_table(res, out):
+    out.append("### Fitted complexity: time ~ triangles^k (least squares over the targets)\n")
+    rows = []
+    for mesher in res.meshers():
+        row = [mesher]
+        for domain in res.domains():
+            pts = [(res.counter(k, "triangles"), res.seconds(k)) for k in res.keys()
+                   if k[0] == mesher and k[1] == domain and k[2] in ("20.7", "none")]
+            row.append(fmt(slope(pts)) if len(pts) >= 2 else "—")
+        rows.append(row)
+    out.append(table(["mesher"] + res.domains(), rows))
+    out.append("")
+
+
+def goals(res, out):
+    out.append("### Goals of issue 6\n")
+    rows = []
+    for key in res.keys():
+        mesher, domain, angle, target = key
+        if mesher != "delaunay-refinement":
+            continue
+        cgal = res.find("cgal", domain, target, angle)
+        if not cgal:
+            continue
+        speed = throughput(res, key) / throughput(res, cgal)
+        ours_angle, cgal_angle = res.counter(key, "min_angle"), res.counter(cgal, "min_angle")
+        rows.append([domain, angle, f"{target:,}", fmt(speed), fmt(ours_angle), fmt(cgal_angle),
+                     "yes" if speed >= 2 and ours_angle >= cgal_angle - 1e-9 else
+                     ("speed only" if speed >= 2 else "no")])
+    out.append("Delaunay refinement against CGAL's Delaunay_mesher_2 (same PSLG, size and angle bound): "
+               "throughput ratio (ours / CGAL, triangles per second) and minimum angles.\n")
+    out.append(table(["domain", "angle bound", "target", "throughput ours / CGAL", "min angle ours",
+                      "min angle CGAL", ">= 2x and angle >= CGAL's"], rows))
+    out.append("")
+    rows = []
+    for key in res.keys():
+        mesher, domain, angle, target = key
+        if mesher not in FRONTAL:
+            continue
+        refinement = res.find("delaunay-refinement", domain, target, "20.7")
+        if not refinement:
+            continue
+        ours, dr = res.counter(key, "mean_min_angle"), res.counter(refinement, "mean_min_angle")
+        rows.append([mesher, domain, f"{target:,}", fmt(ours), fmt(dr), "yes" if ours > dr else "no"])
+    out.append("Frontal generators against Delaunay refinement (20.7 degrees) on the same size function: "
+               "mean of the triangles' smallest angles.\n")
+    out.append(table(["generator", "domain", "target", "mean min angle", "Delaunay refinement", "better"], rows))
+    out.append("")
+
+
+def plot_histograms(res, path):
+    domains = res.domains()
+    fig, axes = plt.subplots(1, len(domains), figsize=(4.2 * len(domains), 3.6), squeeze=False)
+    for ax, domain in zip(axes[0], domains):
+        targets = sorted({k[3] for k in res.keys() if k[1] == domain})
+        target = min(targets, key=lambda t: abs(math.log(t / 1e5)))
+        for mesher in res.meshers():
+            key = res.find(mesher, domain, target, None if mesher not in ("delaunay-refinement", "cgal") else "20.7")
+            if not key:
+                continue
+            hist = [res.counter(key, f"angle_hist_{k}") or 0 for k in range(18)]
+            ax.plot([10 * k + 5 for k in range(18)], hist, marker=".", label=mesher)
+        ax.set_title(f"{domain}, ~{target:,} triangles")
+        ax.set_xlabel("corner angle (degrees)")
+        ax.set_xlim(0, 130)
+    axes[0][0].set_ylabel("fraction of corners")
+    axes[0][-1].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def plot_throughput(res, path):
+    domains = res.domains()
+    fig, axes = plt.subplots(1, len(domains), figsize=(4.2 * len(domains), 3.6), squeeze=False)
+    for ax, domain in zip(axes[0], domains):
+        for mesher in res.meshers():
+            pts = sorted((res.counter(k, "triangles"), throughput(res, k)) for k in res.keys()
+                         if k[0] == mesher and k[1] == domain and k[2] in ("20.7", "none"))
+            if pts:
+                ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker="o", label=mesher)
+        ax.set_title(domain)
+        ax.set_xlabel("triangles")
+    axes[0][0].set_ylabel("triangles per second")
+    axes[0][-1].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def pictures(cli, res, out_dir, out):
+    generators = [m for m in res.meshers() if m not in PEERS]
+    rows = []
+    for domain in res.domains():
+        row = [domain]
+        for g in generators:
+            svg = f"mesh_{domain}_{g}.svg"
+            done = subprocess.run([cli, "mesh", "--domain", domain, "--generator", g, "-o",
+                                   os.path.join(out_dir, svg)], capture_output=True, text=True)
+            row.append(f'<a href="{svg}"><img src="{svg}" width="220"></a>' if done.returncode == 0
+                       else f"error: {done.stderr.strip()}")
+        rows.append(row)
+    out.append("### Pictures (each domain at its own size function)\n")
+    out.append(table(["domain"] + generators, rows))
+    out.append("")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("json")
+    parser.add_argument("--out-dir", default="report")
+    parser.add_argument("--cli")
+    args = parser.parse_args()
+    with open(args.json) as f:
+        data = json.load(f)
+    res = Results(data)
+    os.makedirs(args.out_dir, exist_ok=True)
+    out = ["# 2D mesh generation\n",
+           f"From `{os.path.basename(args.json)}` (host {data['context'].get('host_name', '?')}, "
+           f"{data['context'].get('num_cpus', '?')} CPUs, {data['context'].get('date', '')}). Medians of the "
+           "repetitions: CPU time for ours and CGAL, Gmsh's own CPU time of its 2D meshing for Gmsh "
+           "(1D meshing, file reading and writing excluded). Every mesher gets the same PSLG and size "
+           "function; ours and CGAL's Delaunay refinement also the angle bound.\n"]
+    goals(res, out)
+    exponent_table(res, out)
+    out.append("![angle histograms](mesh_histograms.png)\n")
+    out.append("![throughput](mesh_throughput.png)\n")
+    domain_tables(res, out)
+    if args.cli:
+        pictures(args.cli, res, args.out_dir, out)
+    if res.errors:
+        out.append("### Errors\n")
+        out += [f"- {e}" for e in res.errors]
+    plot_histograms(res, os.path.join(args.out_dir, "mesh_histograms.png"))
+    plot_throughput(res, os.path.join(args.out_dir, "mesh_throughput.png"))
+    with open(os.path.join(args.out_dir, "mesh.md"), "w") as f:
+        f.write("\n".join(out) + "\n")
+    for e in res.errors:
+        print(f"mesh_report: {e}", file=sys.stderr)
+    return 1 if res.errors else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

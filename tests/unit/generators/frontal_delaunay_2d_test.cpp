@@ -1,0 +1,426 @@
+// SPDX-License-Identifier: MIT
+// Frontal Delaunay (Rebay): every output is exact constrained Delaunay with every segment a
+// chain of pieces, has no triangle outside the domain and is closed by pieces; input vertices
+// keep their numbers; the counters add up (every output triangle accepted by the radius
+// criterion or after a rejected point); edges stay within a measured bound of the size; the
+// mean of the triangles' smallest angles beats Delaunay refinement's (20.7 degrees, same size)
+// on every sample domain; degenerate inputs (points on segments, duplicates, crossing segments,
+// a tiny feature, a sharp angle, a triangle, a slit, the random PSLG distributions) give valid
+// meshes; points outside, encroaching or too close are rejected and their triangles accepted;
+// bad input and an exhausted budget raise the documented errors.
+#include "generators/frontal_delaunay_2d.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "generators/delaunay_refinement_2d.hpp"
+#include "generators/pslg_inputs.hpp"
+#include "generators/quality_2d.hpp"
+#include "generators/sample_domains.hpp"
+#include "predicates/errors.hpp"
+#include "tests/support/mesh_checks_2d.hpp"
+
+namespace em = exactmesh;
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
+
+namespace {
+
+struct Input {
+    std::vector<double> xy;
+    std::vector<std::uint32_t> segments;
+    std::vector<double> holes;
+    std::vector<double> regions;
+    tri::Pslg pslg() const { return {xy, segments, holes, regions}; }
+};
+
+Input from_domain(const gen::DomainPslg& d) {
+    return {d.xy, d.segments, d.holes, {}};
+}
+
+Input polygon(std::vector<double> xy) {
+    Input in;
+    in.xy = std::move(xy);
+    const auto n = static_cast<std::uint32_t>(in.xy.size() / 2);
+    for (std::uint32_t k = 0; k < n; ++k) in.segments.insert(in.segments.end(), {k, (k + 1) % n});
+    return in;
+}
+
+struct Meshed {
+    gen::FrontalDelaunayResult2 result;
+    em::testing::MeshCheck check;
+    gen::QualityReport2 quality;
+};
+
+/// Size conformity measured over every test here: the longest edge over the size at its
+/// midpoint stays below this (boundary pieces are at most 1 by the discretization; interior
+/// edges of accepted triangles are at most 2 R <= 2 sqrt(3/2) / sqrt 3 = sqrt 2 times the size
+/// at the centroid; measured at most 1.40 on the sample domains, 1.41 with the sources).
+constexpr double kSizeRatioBound = 1.5;
+
+Meshed mesh(const Input& in, const gen::SizeFunction& size, bool closed_loops = true) {
+    gen::FrontalDelaunayOptions2 options;
+    options.size = size;
+    Meshed r{gen::frontal_delaunay_2d(in.pslg(), options), {}, {}};
+    const auto& m = r.result.mesh;
+    r.check = em::testing::check_quality_mesh(
+        m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces,
+        [&size](double x, double y) { return size(x, y); }, closed_loops, true);
+    r.quality = gen::quality_report_2d(m.mesh.xy, m.mesh.triangles, size);
+    return r;
+}
+
+/// The counters describe the mesh: each output triangle accepted by the criterion or forced,
+/// every vertex the input's, the boundary's or an inserted one; input vertices unmoved.
+void expect_consistent(const Input& in, const Meshed& r, const std::string& name) {
+    const auto& c = r.result.counters;
+    const auto& m = r.result.mesh;
+    EXPECT_EQ(c.accepted_triangles + c.forced_triangles, m.mesh.triangle_count()) << name;
+    EXPECT_LE(c.forced_triangles, c.forced_accepts) << name;
+    EXPECT_EQ(m.mesh.xy.size() / 2,
+              in.xy.size() / 2 + m.counters.intersections + c.boundary_points + c.points_inserted)
+        << name;
+    EXPECT_EQ(m.input_vertex_count, in.xy.size() / 2) << name;
+    for (std::size_t i = 0; i < in.xy.size(); ++i) EXPECT_EQ(m.mesh.xy[i], in.xy[i]) << name;
+    EXPECT_EQ(m.piece_segment.size() * 2, m.pieces.size()) << name;
+    for (const std::uint32_t s : m.piece_segment) EXPECT_LT(s, in.segments.size() / 2) << name;
+}
+
+}  // namespace
+
+TEST(Generators_FrontalDelaunay,
+     SampleDomainsAreConstrainedDelaunayWithBetterMeanAngleThanRefinement) {
+    for (const gen::SampleDomain d : gen::kAllSampleDomains) {
+        const gen::SizeFunction size = gen::sample_domain_size(d);
+        const Input in = from_domain(gen::sample_domain(d, size));
+        const std::string name(gen::sample_domain_name(d));
+        const Meshed r = mesh(in, size);
+        ASSERT_TRUE(r.check.ok) << name << ": " << r.check.problem;
+        expect_consistent(in, r, name);
+        EXPECT_GT(r.result.mesh.mesh.triangle_count(), 1000u) << name;
+        EXPECT_GT(r.result.counters.points_inserted, 0u) << name;
+        EXPECT_LE(r.check.max_size_ratio, kSizeRatioBound) << name;
+        // The quality goal: a higher mean smallest angle than Delaunay refinement at
+        // its guaranteed bound with the same size function.
+        gen::RefinementOptions2 refinement;
+        refinement.size = size;
+        refinement.min_angle = gen::kGuaranteedMinAngle;
+        const auto refined = gen::delaunay_refinement_2d(in.pslg(), refinement);
+        const gen::QualityReport2 q =
+            gen::quality_report_2d(refined.mesh.mesh.xy, refined.mesh.mesh.triangles, size);
+        EXPECT_GT(r.quality.mean_min_angle, q.mean_min_angle) << name;
+        std::printf(
+            "%s: frontal %llu triangles, mean min angle %.2f, min %.2f, max size ratio %.3f, "
+            "forced %llu (accepts %llu: encroach %llu, outside %llu, close %llu); refinement %llu "
+            "triangles, mean min angle %.2f, min %.2f, max size ratio %.3f\n",
+            name.c_str(), static_cast<unsigned long long>(r.quality.triangles),
+            r.quality.mean_min_angle, r.quality.min_angle, r.quality.size_ratio_max,
+            static_cast<unsigned long long>(r.result.counters.forced_triangles),
+            static_cast<unsigned long long>(r.result.counters.forced_accepts),
+            static_cast<unsigned long long>(r.result.counters.rejected_encroach),
+            static_cast<unsigned long long>(r.result.counters.rejected_outside),
+            static_cast<unsigned long long>(r.result.counters.rejected_too_close),
+            static_cast<unsigned long long>(q.triangles), q.mean_min_angle, q.min_angle,
+            q.size_ratio_max);
+    }
+}
+
+TEST(Generators_FrontalDelaunay, SquareWithAHoleAndASlit) {
+    // The unit square, a square hole, and a slit (a dangling segment with the domain on both
+    // sides) from the boundary into the interior.
+    Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+    in.xy.insert(in.xy.end(), {0.6, 0.6, 0.8, 0.6, 0.8, 0.8, 0.6, 0.8, 0.3, 0.0, 0.3, 0.45});
+    in.segments.insert(in.segments.end(), {4, 5, 5, 6, 6, 7, 7, 4, 8, 9});
+    in.holes = {0.7, 0.7};
+    for (const double h : {0.1, 0.03}) {
+        const Meshed r = mesh(in, gen::SizeFunction::uniform(h), false);
+        ASSERT_TRUE(r.check.ok) << h << ": " << r.check.problem;
+        expect_consistent(in, r, "hole and slit");
+        EXPECT_LE(r.check.max_size_ratio, kSizeRatioBound) << h;
+        // No triangle inside the hole (its centroid by the even-odd rule over the hole alone).
+        const auto& m = r.result.mesh.mesh;
+        for (tri::TriIdx t = 0; t < m.triangle_count(); ++t) {
+            double cx = 0, cy = 0;
+            for (unsigned k = 0; k < 3; ++k) {
+                cx += m.point(m.triangles[3 * t + k])[0] / 3;
+                cy += m.point(m.triangles[3 * t + k])[1] / 3;
+            }
+            EXPECT_FALSE(cx > 0.6 && cx < 0.8 && cy > 0.6 && cy < 0.8) << t;
+        }
+        // The slit is a chain of pieces with triangles on both sides of each.
+        std::uint64_t slit_pieces = 0;
+        for (std::size_t p = 0; p < r.result.mesh.piece_segment.size(); ++p) {
+            if (r.result.mesh.piece_segment[p] == 8) ++slit_pieces;
+        }
+        EXPECT_GE(slit_pieces, static_cast<std::uint64_t>(0.45 / h)) << h;
+    }
+}
+
+TEST(Generators_FrontalDelaunay, GradedPointAndLineSources) {
+    // A point source (size 0.002 at (0.5, 0.5), growing linearly over 0.05) and, separately, a
+    // line source (0.004 along a diagonal, growing as d^1.5 over 0.1), both capped at 0.1.
+    const Input in = polygon({0, 0, 2, 0, 2, 1, 0, 1});
+    struct Case {
+        const char* name;
+        gen::SizeFunction size;
+        double fx, fy;  // the finest point
+        double cx, cy;  // a far corner, where the size is above 0.06
+    };
+    const Case cases[] = {
+        {"point source", gen::SizeFunction::sources({{0.5, 0.5, 0.002, 0.05, 1.0}}, {}, 0.1), 0.5,
+         0.5, 2, 0},
+        {"line source",
+         gen::SizeFunction::sources({}, {{1.2, 0.2, 1.8, 0.8, 0.004, 0.1, 1.5}}, 0.1), 1.5, 0.5, 0,
+         1},
+    };
+    for (const Case& c : cases) {
+        const Meshed r = mesh(in, c.size);
+        ASSERT_TRUE(r.check.ok) << c.name << ": " << r.check.problem;
+        expect_consistent(in, r, c.name);
+        EXPECT_LE(r.check.max_size_ratio, kSizeRatioBound) << c.name;
+        // Grading: edges at the source are short, edges in the far corner at least a third of
+        // the size there.
+        const auto& m = r.result.mesh.mesh;
+        double near = 0, far = INFINITY;
+        std::uint64_t near_edges = 0, far_edges = 0;
+        for (tri::TriIdx t = 0; t < m.triangle_count(); ++t) {
+            for (unsigned k = 0; k < 3; ++k) {
+                const double* a = m.point(m.triangles[3 * t + k]);
+                const double* b = m.point(m.triangles[3 * t + (k + 1) % 3]);
+                const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+                if (std::hypot(a[0] - c.fx, a[1] - c.fy) < 0.01) {
+                    near = std::max(near, length);
+                    ++near_edges;
+                }
+                if (std::hypot(a[0] - c.cx, a[1] - c.cy) < 0.1) {
+                    far = std::min(far, length);
+                    ++far_edges;
+                }
+            }
+        }
+        EXPECT_GT(near_edges, 10u) << c.name;
+        EXPECT_GT(far_edges, 3u) << c.name;
+        EXPECT_LT(near, 0.02) << c.name;
+        EXPECT_GT(far, 0.06 / 3) << c.name;
+        EXPECT_GT(r.quality.mean_min_angle, 45.0) << c.name;
+        std::printf(
+            "%s: %llu triangles, mean min angle %.2f, min %.2f, size ratio max %.3f median %.3f\n",
+            c.name, static_cast<unsigned long long>(r.quality.triangles), r.quality.mean_min_angle,
+            r.quality.min_angle, r.quality.size_ratio_max, r.quality.size_ratio_median);
+    }
+}
+
+TEST(Generators_FrontalDelaunay, DegenerateInputs) {
+    struct Case {
+        const char* name;
+        Input in;
+        bool closed_loops = true;  // false: inner segments that close nothing (no even-odd test)
+    };
+    std::vector<Case> cases;
+    {
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {0.25, 0, 0.5, 0, 0.75, 0, 1, 0.3});
+        cases.push_back({"collinear vertices on segments", in});
+    }
+    {
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        const double a = 0.3, w = 1e-4;
+        in.xy.insert(in.xy.end(), {a, a, a + w, a, a + w, a + w, a, a + w});
+        in.segments.insert(in.segments.end(), {4, 5, 5, 6, 6, 7, 7, 4});
+        in.holes = {a + w / 2, a + w / 2};
+        cases.push_back({"tiny hole", in});
+    }
+    // Duplicate vertices, a duplicated segment and one given through the copies.
+    {
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {1, 0, 1, 1});  // vertices 4, 5 repeat 1, 2
+        in.segments.insert(in.segments.end(), {4, 5, 0, 1});
+        cases.push_back({"duplicates", in});
+    }
+    // Two crossing inner segments (split at their correctly rounded intersection).
+    {
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {0.2, 0.3, 0.8, 0.7, 0.2, 0.7, 0.8, 0.3});
+        in.segments.insert(in.segments.end(), {4, 5, 6, 7});
+        cases.push_back({"crossing segments", in, false});
+    }
+    // A sharp input angle: a 5-degree wedge.
+    {
+        const double angle = 5.0 * 3.14159265358979323846 / 180;
+        cases.push_back({"sharp angle", polygon({0, 0, 1, 0, std::cos(angle), std::sin(angle)})});
+    }
+    cases.push_back({"triangle", polygon({0, 0, 1, 0, 0.3, 0.8})});
+    // A vertex a few ulps off a skew segment's line.
+    {
+        Input in = polygon({0, 0, 1, 0.3, 1, 1, 0, 1});
+        in.xy.insert(in.xy.end(), {0.5, std::nextafter(0.15, 1.0)});
+        cases.push_back({"vertex ulps off a segment", in});
+    }
+    for (const Case& c : cases) {
+        for (const double h : {0.2, 0.05}) {
+            const Meshed r = mesh(c.in, gen::SizeFunction::uniform(h), c.closed_loops);
+            ASSERT_TRUE(r.check.ok) << c.name << " at " << h << ": " << r.check.problem;
+            expect_consistent(c.in, r, c.name);
+            EXPECT_LE(r.check.max_size_ratio, kSizeRatioBound) << c.name << " at " << h;
+            if (!c.closed_loops) {
+                EXPECT_EQ(r.result.mesh.counters.intersections, 1u) << c.name;
+                EXPECT_FALSE(r.result.mesh.warnings.empty()) << c.name;
+            }
+        }
+    }
+}
+
+TEST(Generators_FrontalDelaunay, PointsOutsideAFlatTriangleAreRejectedAndTheirTrianglesAccepted) {
+    // A triangle 50 times longer than high, meshed at sizes far above its height: the front's
+    // points would fall beyond the opposite side; their triangles are accepted as they are.
+    const Input in = polygon({0, 0, 1, 0, 0.5, 0.02});
+    for (const double h : {0.1, 0.05}) {
+        const Meshed r = mesh(in, gen::SizeFunction::uniform(h));
+        ASSERT_TRUE(r.check.ok) << h << ": " << r.check.problem;
+        expect_consistent(in, r, "flat triangle");
+        const auto& c = r.result.counters;
+        EXPECT_GT(c.rejected_outside, 0u) << h;
+        EXPECT_GT(c.forced_triangles, 0u) << h;
+        EXPECT_EQ(c.forced_accepts, c.rejected_outside + c.rejected_encroach +
+                                        c.rejected_too_close + c.rejected_no_conflict)
+            << h;
+    }
+}
+
+TEST(Generators_FrontalDelaunay, PointsEncroachingAPieceAreRejected) {
+    // A channel 0.05 high whose size grows from 0.01 at the bottom wall to 0.06 at the top: the
+    // top wall's pieces are longer than the channel is high, and front points from below land
+    // in their diametral circles.
+    const Input in = polygon({0, 0, 1, 0, 1, 0.05, 0, 0.05});
+    const Meshed r = mesh(
+        in, gen::SizeFunction::analytic([](double, double y) { return 0.01 + y; }, "0.01 + y"));
+    ASSERT_TRUE(r.check.ok) << r.check.problem;
+    expect_consistent(in, r, "graded channel");
+    EXPECT_GT(r.result.counters.rejected_encroach, 0u);
+    EXPECT_EQ(r.result.counters.rejected_outside, 0u);
+}
+
+TEST(Generators_FrontalDelaunay, PointsTooCloseToAVertexAreRejected) {
+    // With the closeness limit at 0.9 times the size, merging fronts reject points; each
+    // rejection accepts its triangle and the mesh stays valid.
+    const Input in = from_domain(gen::sample_domain(gen::SampleDomain::SquareWithHoles));
+    gen::FrontalDelaunayOptions2 options;
+    options.size = gen::sample_domain_size(gen::SampleDomain::SquareWithHoles);
+    options.min_distance = 0.9;
+    const auto result = gen::frontal_delaunay_2d(in.pslg(), options);
+    const auto& m = result.mesh;
+    const auto check =
+        em::testing::check_quality_mesh(m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces);
+    ASSERT_TRUE(check.ok) << check.problem;
+    EXPECT_GT(result.counters.rejected_too_close, 0u);
+    EXPECT_EQ(result.counters.forced_accepts,
+              result.counters.rejected_too_close + result.counters.rejected_outside +
+                  result.counters.rejected_encroach + result.counters.rejected_no_conflict);
+}
+
+TEST(Generators_FrontalDelaunay, RandomPslgsGiveValidMeshesOrAClearError) {
+    // The constrained Delaunay test distributions (crossings, overlaps, duplicates, small
+    // angles), at a uniform size of a twentieth of their extent: every run ends with an exact
+    // constrained Delaunay mesh, or InputError when nothing is enclosed, or GeometryError only
+    // where the triangulation itself holds features at the resolution of doubles (grid-lines).
+    std::size_t meshed = 0;
+    for (const auto d : gen::kAllPslgDistributions) {
+        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+            const gen::PslgInput p = gen::generate_pslg(d, 60, 30, seed);
+            const Input in{p.xy, p.segments, p.holes, {}};
+            double lo = INFINITY, hi = -INFINITY;
+            for (const double v : in.xy) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+            if (!(hi > lo)) continue;
+            gen::FrontalDelaunayOptions2 options;
+            options.size = gen::SizeFunction::uniform((hi - lo) / 20);
+            try {
+                const auto result = gen::frontal_delaunay_2d(in.pslg(), options);
+                const auto report = tri::check_constrained_delaunay_2d(
+                    result.mesh.mesh, result.mesh.input_vertex_count, in.segments,
+                    result.mesh.pieces);
+                EXPECT_TRUE(report.ok)
+                    << gen::pslg_distribution_name(d) << " seed " << seed << ": " << report.problem;
+                ++meshed;
+            } catch (const em::InputError&) {
+            } catch (const em::GeometryError& error) {
+                EXPECT_EQ(d, gen::PslgDistribution::GridLines) << seed << ": " << error.what();
+            }
+        }
+    }
+    EXPECT_GT(meshed, 10u);
+}
+
+TEST(Generators_FrontalDelaunay, RegionsKeepTheirAttributes) {
+    // Two regions split by an inner segment x = 0.5.
+    Input in = polygon({0, 0, 0.5, 0, 1, 0, 1, 1, 0.5, 1, 0, 1});
+    in.segments.insert(in.segments.end(), {1, 4});
+    in.regions = {0.25, 0.5, 1.0, 0, 0.75, 0.5, 2.0, 0};
+    const Meshed r = mesh(in, gen::SizeFunction::uniform(0.1), false);
+    ASSERT_TRUE(r.check.ok) << r.check.problem;
+    const auto& m = r.result.mesh;
+    ASSERT_EQ(m.triangle_attributes.size(), m.mesh.triangle_count());
+    for (tri::TriIdx t = 0; t < m.mesh.triangle_count(); ++t) {
+        double cx = 0;
+        for (unsigned k = 0; k < 3; ++k) cx += m.mesh.point(m.mesh.triangles[3 * t + k])[0] / 3;
+        EXPECT_EQ(m.triangle_attributes[t], cx < 0.5 ? 1.0 : 2.0) << t;
+    }
+}
+
+TEST(Generators_FrontalDelaunay, BadInputIsAnInputError) {
+    const Input square = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+    gen::FrontalDelaunayOptions2 options;
+    EXPECT_THROW(gen::frontal_delaunay_2d(square.pslg(), options), em::InputError);  // no size
+    options.size = gen::SizeFunction::uniform(0.1);
+    options.acceptance = 0.5;
+    EXPECT_THROW(gen::frontal_delaunay_2d(square.pslg(), options), em::InputError);
+    options.acceptance = 1.5;
+    options.min_distance = 1.0;
+    EXPECT_THROW(gen::frontal_delaunay_2d(square.pslg(), options), em::InputError);
+    options.min_distance = 0.5;
+    Input nan = square;
+    nan.xy[2] = std::nan("");
+    EXPECT_THROW(gen::frontal_delaunay_2d(nan.pslg(), options), em::InputError);
+    Input open = square;
+    open.segments.resize(6);  // three sides: nothing enclosed
+    EXPECT_THROW(gen::frontal_delaunay_2d(open.pslg(), options), em::InputError);
+    Input out_of_range = square;
+    out_of_range.segments[1] = 9;
+    EXPECT_THROW(gen::frontal_delaunay_2d(out_of_range.pslg(), options), em::InputError);
+    options.size = gen::SizeFunction::analytic([](double x, double) { return x < 0.5 ? 0.1 : 0.0; },
+                                               "zero right");
+    EXPECT_THROW(gen::frontal_delaunay_2d(square.pslg(), options), em::InputError);
+}
+
+TEST(Generators_FrontalDelaunay, BudgetStopsWithGeometryError) {
+    const Input square = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+    gen::FrontalDelaunayOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.01);
+    options.max_steiner_points = 100;
+    EXPECT_THROW(gen::frontal_delaunay_2d(square.pslg(), options), em::GeometryError);
+}
+
+TEST(Generators_FrontalDelaunay, CounterListNamesEveryCounter) {
+    const Input square = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+    gen::FrontalDelaunayOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.1);
+    const auto result = gen::frontal_delaunay_2d(square.pslg(), options);
+    const auto list = gen::counter_list(result.counters);
+    ASSERT_FALSE(list.empty());
+    bool found = false;
+    for (const auto& [name, value] : list) {
+        if (name == "points_inserted") {
+            found = true;
+            EXPECT_EQ(value, result.counters.points_inserted);
+        }
+    }
+    EXPECT_TRUE(found);
+    EXPECT_GT(result.counters.points_inserted, 20u);
+}
