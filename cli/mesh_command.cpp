@@ -41,6 +41,7 @@ struct MeshArguments {
     std::string output;
     std::string generator = "delaunay-refinement";
     double min_angle = gen::kGuaranteedMinAngle;
+    double polish_angle = -1;
     std::string size;
     std::uint64_t max_steiner = 0;
     std::uint32_t smooth = 0;
@@ -112,6 +113,7 @@ void run_mesh(const MeshArguments& arguments) {
 
     gen::MeshOptions2 options;
     options.min_angle = arguments.min_angle;
+    options.polish_angle = arguments.polish_angle;
     options.size = size;
     options.max_steiner_points = arguments.max_steiner;
     options.cdt.first_index = base;
@@ -206,6 +208,13 @@ void add_mesh_command(CLI::App& app) {
             "--min-angle", arguments->min_angle,
             "Every angle at least this many degrees, away from small input angles; proven to "
             "terminate up to 20.7 (input angles >= 60), accepted up to 34; 0: no angle criterion")
+        ->capture_default_str();
+    command
+        ->add_option("--polish-angle", arguments->polish_angle,
+                     "delaunay-refinement: after the refinement to --min-angle, refine triangles "
+                     "below this angle too, worst first, within 10% more points (no guarantee: "
+                     "when that budget runs out the --min-angle mesh is finished as usual); "
+                     "negative: min(--min-angle + 10, 32); 0: off")
         ->capture_default_str();
     command
         ->add_option("--size", arguments->size,

@@ -8,12 +8,18 @@
 // shell splits, the apex and the shell's exponent (the rule of Miller, Pav and Walkington).
 // Loop: split every queued piece (each split queues the pieces its new triangles encroach and
 // its bad triangles), then take the worst bad triangle: insert its circumcenter, or, when the
-// circumcenter encroaches pieces, queue them and the triangle again.
+// circumcenter encroaches pieces, queue them and the triangle again. Triangles good for
+// theta_min but below the polish angle are kept aside (candidates); when the loop ends, they
+// are queued with the polish angle as the bound and the loop runs again with a Steiner point
+// limit; if it is reached, the queue keeps only what is bad for theta_min and the loop ends the
+// proven way. Sizes at edge midpoints (unless uniform) are kept per half-edge (forgotten when the
+// slot is rewritten): a new triangle evaluates the size of its new edges only.
 #include "generators/delaunay_refinement_2d.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -46,7 +52,7 @@ struct BadTriangle {
 /// neighbours: their memory is warm). O(1) per push and pop, against O(log n) cache-missing
 /// steps of a binary heap over all bad triangles.
 class BadTriangleQueue {
-public:
+  public:
     void push(const BadTriangle& b) {
         const std::size_t k = bucket(b);
         buckets_[k].push_back(b);
@@ -54,6 +60,11 @@ public:
         ++size_;
     }
     bool empty() const { return size_ == 0; }
+    void clear() {
+        for (auto& b : buckets_) b.clear();
+        top_ = 0;
+        size_ = 0;
+    }
     BadTriangle pop() {
         while (buckets_[top_].empty()) --top_;
         const BadTriangle b = buckets_[top_].back();
@@ -62,14 +73,19 @@ public:
         return b;
     }
 
-private:
+  private:
     static constexpr std::size_t kPerLevel = 1024;  // keys 1 .. 2^64 in steps of 2^(1/16)
     std::vector<BadTriangle> buckets_[2 * kPerLevel];
     std::size_t top_ = 0;
     std::size_t size_ = 0;
     static std::size_t bucket(const BadTriangle& b) {
-        const double level = std::log2(std::max(1.0, static_cast<double>(b.key))) * 16;
-        return (b.too_big ? kPerLevel : 0) + std::min<std::size_t>(kPerLevel - 1, static_cast<std::size_t>(level));
+        // The key's exponent and its four leading fraction bits: 16 buckets per binade,
+        // monotone in the key (keys are at least 1, so the float's bits from 1.0 up).
+        const float key = std::max(1.0f, b.key);
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &key, sizeof bits);
+        const std::size_t level = (bits - 0x3F800000u) >> 19;
+        return (b.too_big ? kPerLevel : 0) + std::min<std::size_t>(kPerLevel - 1, level);
     }
 };
 
@@ -86,28 +102,47 @@ struct SegmentVertex {
 };
 
 class Refiner {
-public:
+  public:
     Refiner(const tri::Pslg& pslg, const RefinementOptions2& options)
         : options_(options), cdt_(pslg, options.cdt), mesh_(cdt_.mesh()) {}
 
     RefinementResult2 run();
 
-private:
+  private:
     const RefinementOptions2& options_;
     tri::ConstrainedTriangulation2 cdt_;
     const tri::TriMesh2& mesh_;  // the triangulation's, valid across edits
     RefinementCounters2 counters_;
     BadTriangleQueue bad_;
     std::vector<PieceToSplit> pieces_;
-    std::vector<std::uint32_t> version_;      // per triangle slot
-    std::vector<std::uint32_t> seen_;         // per triangle slot: batch stamp of process_touched
+    std::vector<std::uint32_t> version_;  // per triangle slot
+    bool cache_sizes_ = false;         // a size function dearer than a constant: edge_size_ is kept
+    std::vector<double> edge_size_;    // per half-edge: the size at its midpoint; 0: unknown
+    std::vector<std::uint32_t> seen_;  // per triangle slot: batch stamp of process_touched
     std::uint32_t batch_ = 0;
-    std::vector<SegmentVertex> on_segment_;   // per vertex
-    std::vector<std::uint32_t> degree_;       // per initial vertex: constrained edges at it
+    std::vector<SegmentVertex> on_segment_;  // per vertex
+    std::vector<std::uint32_t> degree_;      // per initial vertex: constrained edges at it
     VertIdx initial_vertices_ = 0;
-    double sine2_bound_ = 0;                  // sin^2(min_angle); 0: no angle criterion
+    double sine2_bound_ = 0;  // sin^2(min_angle); 0: no angle criterion
     std::uint64_t budget_ = 0;
 
+    double asked_sine2_ = 0;  // sin^2(min_angle), also while polishing
+    /// Refines until no triangle is bad (true) or `limit` Steiner points exist (false).
+    bool refine(std::uint64_t limit);
+    /// The polish: refinement to the polish angle within its budget, then (if that ran out)
+    /// back to min_angle.
+    void polish();
+    /// Every domain triangle evaluated again (the bound changed); stale entries dropped.
+    void requeue_for_asked_bound();
+    void next_batch() {
+        if (++batch_ == 0) {
+            std::fill(seen_.begin(), seen_.end(), 0u);
+            batch_ = 1;
+        }
+    }
+    std::vector<BadTriangle> polish_;  // candidates of the polish (with stale entries)
+    double polish_sine2_ = 0;          // sin^2(polish angle); 0: no polish
+    bool below_asked_bound(TriIdx t) const;
     void check_domain_and_budget();
     void initial_queue();
     /// Triangles written by the last edit: new versions; bad ones and encroached pieces queued.
@@ -123,8 +158,8 @@ private:
     SplitPoint split_point(EdgeIdx e) const;
     void split_piece(const PieceToSplit& piece);
     bool leave_at_small_angle(EdgeIdx e, double shortest_edge) const;
-    std::vector<double> small_apex_angle_;    // per initial vertex: the smallest angle between its
-                                              // pieces (radians) when below 60 degrees, else 0
+    std::vector<double> small_apex_angle_;  // per initial vertex: the smallest angle between its
+                                            // pieces (radians) when below 60 degrees, else 0
     bool small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const;
     void find_small_input_angles();
     void spend_budget();
@@ -150,8 +185,9 @@ void Refiner::check_domain_and_budget() {
         }
     }
     if (inside == 0) {
-        throw InputError("delaunay refinement: the segments enclose no region (every triangle is outside the "
-                         "domain: is the boundary closed, and is a hole point inside the outer boundary?)");
+        throw InputError(
+            "delaunay refinement: the segments enclose no region (every triangle is outside the "
+            "domain: is the boundary closed, and is a hole point inside the outer boundary?)");
     }
     // Automatic: at least 10^6, 64 per input feature, and 16 times the element count the size
     // function asks for over the domain's bounding box (a 64 x 64 sample of 2.31 / s^2, the
@@ -167,18 +203,22 @@ void Refiner::check_domain_and_budget() {
             }
         }
     }
-    const double features = static_cast<double>(initial_vertices_) + static_cast<double>(mesh_.triangle_slots());
+    const double features =
+        static_cast<double>(initial_vertices_) + static_cast<double>(mesh_.triangle_slots());
     budget_ = options_.max_steiner_points != 0
                   ? options_.max_steiner_points
-                  : static_cast<std::uint64_t>(std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
+                  : static_cast<std::uint64_t>(
+                        std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
     // Room for the expected mesh: refinement makes about twice the ideal count of equilateral
     // triangles, with half as many vertices as triangles. A hint only, so capped at the budget
     // and at 2^21 vertices (about 200 MB reserved); beyond that the arrays grow as they go.
-    const double expected_vertices = std::min({1.1 * estimate, static_cast<double>(budget_), 0x1p21}) +
-                                     static_cast<double>(mesh_.vertex_count());
+    const double expected_vertices =
+        std::min({1.1 * estimate, static_cast<double>(budget_), 0x1p21}) +
+        static_cast<double>(mesh_.vertex_count());
     cdt_.reserve(static_cast<std::uint32_t>(expected_vertices));
     version_.reserve(static_cast<std::size_t>(2 * expected_vertices));
     seen_.reserve(static_cast<std::size_t>(2 * expected_vertices));
+    if (cache_sizes_) edge_size_.reserve(static_cast<std::size_t>(6 * expected_vertices));
     on_segment_.reserve(static_cast<std::size_t>(expected_vertices));
 }
 
@@ -221,7 +261,8 @@ bool Refiner::small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const {
     const SegmentVertex* su = u < on_segment_.size() ? &on_segment_[u] : nullptr;
     const SegmentVertex* sv = v < on_segment_.size() ? &on_segment_[v] : nullptr;
     if (su == nullptr || sv == nullptr || su->apex == kNone) return false;
-    return su->apex == sv->apex && su->shell == sv->shell && su->segment != sv->segment && w == su->apex;
+    return su->apex == sv->apex && su->shell == sv->shell && su->segment != sv->segment &&
+           w == su->apex;
 }
 
 void Refiner::evaluate(TriIdx t) {
@@ -235,14 +276,30 @@ void Refiner::evaluate(TriIdx t) {
     double size_key = 0;
     if (options_.size.bounded()) {
         for (int k = 0; k < 3; ++k) {
-            const double mx = 0.5 * (p[k][0] + p[(k + 1) % 3][0]), my = 0.5 * (p[k][1] + p[(k + 1) % 3][1]);
-            const double s = options_.size(mx, my);
-            if (!(s > 0)) {
-                char where[96];
-                std::snprintf(where, sizeof where, "(%.17g, %.17g)", mx, my);
-                throw InputError("size function: not a number > 0 at " + std::string(where) + " (" +
-                                 options_.size.describe() + ")");
+            // The size at the edge's midpoint, kept per half-edge: an edge keeps it while its
+            // triangle on either side is not rewritten (a cavity's boundary edges, and each new
+            // spoke for its second triangle, need no new evaluation).
+            const EdgeIdx e = 3 * t + static_cast<EdgeIdx>(k);
+            double s = 0;
+            if (cache_sizes_) {
+                s = edge_size_[e];
+                if (!(s > 0)) {
+                    const EdgeIdx f = mesh_.twin[e];
+                    s = f < edge_size_.size() ? edge_size_[f] : 0.0;
+                }
             }
+            if (!(s > 0)) {
+                const double mx = 0.5 * (p[k][0] + p[(k + 1) % 3][0]),
+                             my = 0.5 * (p[k][1] + p[(k + 1) % 3][1]);
+                s = options_.size(mx, my);
+                if (!(s > 0)) {
+                    char where[96];
+                    std::snprintf(where, sizeof where, "(%.17g, %.17g)", mx, my);
+                    throw InputError("size function: not a number > 0 at " + std::string(where) +
+                                     " (" + options_.size.describe() + ")");
+                }
+            }
+            if (cache_sizes_) edge_size_[e] = s;
             size_key = std::max(size_key, length2[k] / (s * s));
         }
     }
@@ -254,20 +311,26 @@ void Refiner::evaluate(TriIdx t) {
         for (int k = 1; k < 3; ++k) {
             if (length2[k] < length2[shortest]) shortest = k;
         }
-        const double cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+        const double cross =
+            (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
         const double product = length2[(shortest + 1) % 3] * length2[(shortest + 2) % 3];
         const double sine2 = cross * cross / product;
-        if (sine2 < sine2_bound_) {
+        if (sine2 < sine2_bound_ || sine2 < polish_sine2_) {
             if (small_angle_rule(v[shortest], v[(shortest + 1) % 3], v[(shortest + 2) % 3])) {
-                ++counters_.small_angle_skips;
-            } else {
+                if (sine2 < asked_sine2_) ++counters_.small_angle_skips;
+            } else if (sine2 < sine2_bound_) {
                 key = std::max(key, sine2 > 0 ? sine2_bound_ / sine2 : INFINITY);
                 if (key <= 1) key = 1 + 1e-9;  // bad, even if only just
+            } else if (key <= 1) {
+                // Good, but below the polish bound: a candidate of the polish.
+                polish_.push_back(
+                    {static_cast<float>(polish_sine2_ / sine2), t, version_[t] & 0x7FFFFFFFu, 0u});
             }
         }
     }
     if (key > 1) {
-        bad_.push({static_cast<float>(std::min(key, 1e30)), t, version_[t] & 0x7FFFFFFFu, size_key > 1 ? 1u : 0u});
+        bad_.push({static_cast<float>(std::min(key, 1e30)), t, version_[t] & 0x7FFFFFFFu,
+                   size_key > 1 ? 1u : 0u});
         ++counters_.bad_triangles;
     }
 }
@@ -281,19 +344,30 @@ bool Refiner::encroached_from(EdgeIdx e) {
 }
 
 void Refiner::process_touched() {
-    if (++batch_ == 0) {
-        std::fill(seen_.begin(), seen_.end(), 0u);
-        batch_ = 1;
-    }
+    next_batch();
     const std::uint32_t slots = mesh_.triangle_slots();
     if (version_.size() < slots) {
         version_.resize(slots, 0);
         seen_.resize(slots, 0);
     }
+    if (cache_sizes_) {
+        if (edge_size_.size() < 3 * std::size_t{slots}) {
+            edge_size_.resize(3 * std::size_t{slots}, 0.0);
+        }
+        // First every rewritten slot forgets its edges' sizes, then the triangles are evaluated
+        // (a new triangle may take the size its new neighbour has just found).
+        for (const TriIdx t : cdt_.touched()) {
+            if (seen_[t] == batch_) continue;
+            seen_[t] = batch_;
+            ++version_[t];
+            edge_size_[3 * t] = edge_size_[3 * t + 1] = edge_size_[3 * t + 2] = 0.0;
+        }
+        next_batch();
+    }
     for (const TriIdx t : cdt_.touched()) {
         if (seen_[t] == batch_) continue;
         seen_[t] = batch_;
-        ++version_[t];
+        if (!cache_sizes_) ++version_[t];
         if (!cdt_.in_domain(t)) continue;
         for (unsigned k = 0; k < 3; ++k) {
             const EdgeIdx e = 3 * t + k;
@@ -310,6 +384,7 @@ void Refiner::initial_queue() {
     const std::uint32_t slots = mesh_.triangle_slots();
     version_.assign(slots, 0);
     seen_.assign(slots, 0);
+    if (cache_sizes_) edge_size_.assign(3 * std::size_t{slots}, 0.0);
     for (TriIdx t = 0; t < slots; ++t) {
         if (!cdt_.in_domain(t)) continue;
         for (unsigned k = 0; k < 3; ++k) {
@@ -327,10 +402,11 @@ void Refiner::spend_budget() {
     if (counters_.steiner_points() >= budget_) {
         char angle[32];
         std::snprintf(angle, sizeof angle, "%g", options_.min_angle);
-        throw GeometryError("delaunay refinement: more than " + std::to_string(budget_) +
-                            " Steiner points; stopped (termination is proven up to 20.7 degrees away from "
-                            "input angles below 60 degrees; minimum angle " + angle +
-                            " may be unreachable here: lower --min-angle, or raise --max-steiner)");
+        throw GeometryError(
+            "delaunay refinement: more than " + std::to_string(budget_) +
+            " Steiner points; stopped (termination is proven up to 20.7 degrees away from "
+            "input angles below 60 degrees; minimum angle " +
+            angle + " may be unreachable here: lower --min-angle, or raise --max-steiner)");
     }
 }
 
@@ -342,10 +418,12 @@ Refiner::SplitPoint Refiner::split_point(EdgeIdx e) const {
     const auto ends = cdt_.segment_ends(segment);
     const double* s0 = point(ends[0]);
     const double* s1 = point(ends[1]);
-    const long double dx = static_cast<long double>(s1[0]) - s0[0], dy = static_cast<long double>(s1[1]) - s0[1];
+    const long double dx = static_cast<long double>(s1[0]) - s0[0],
+                      dy = static_cast<long double>(s1[1]) - s0[1];
     const long double length2 = dx * dx + dy * dy;
     auto parameter = [&](VertIdx v) {
-        return ((static_cast<long double>(point(v)[0]) - s0[0]) * dx + (static_cast<long double>(point(v)[1]) - s0[1]) * dy) /
+        return ((static_cast<long double>(point(v)[0]) - s0[0]) * dx +
+                (static_cast<long double>(point(v)[1]) - s0[1]) * dy) /
                length2;
     };
     auto corner = [&](VertIdx v) { return v < initial_vertices_ && degree_[v] >= 2; };
@@ -381,7 +459,8 @@ bool Refiner::leave_at_small_angle(EdgeIdx e, double shortest_edge) const {
     if (apex_angle(a) == 0 && apex_angle(b) == 0) return false;
     const SplitPoint m = split_point(e);
     double radius = INFINITY;
-    for (const VertIdx v : {a, b, mesh_.tv[tri::prev_edge(e)], mesh_.tv[tri::prev_edge(mesh_.twin[e])]}) {
+    for (const VertIdx v :
+         {a, b, mesh_.tv[tri::prev_edge(e)], mesh_.tv[tri::prev_edge(mesh_.twin[e])]}) {
         if (v == tri::kInfinite) continue;
         radius = std::min(radius, std::hypot(point(v)[0] - m.x, point(v)[1] - m.y));
     }
@@ -419,9 +498,117 @@ void Refiner::split_piece(const PieceToSplit& piece) {
     process_touched();
 }
 
+bool Refiner::refine(std::uint64_t limit) {
+    for (;;) {
+        while (!pieces_.empty()) {
+            const PieceToSplit piece = pieces_.back();
+            pieces_.pop_back();
+            split_piece(piece);
+        }
+        if (bad_.empty()) return true;
+        if (counters_.steiner_points() >= limit) return false;
+        const BadTriangle top = bad_.pop();
+        if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t))
+            continue;  // rewritten since
+        spend_budget();
+        const VertIdx v[3] = {mesh_.tv[3 * top.t], mesh_.tv[3 * top.t + 1],
+                              mesh_.tv[3 * top.t + 2]};
+        const auto c = predicates::circumcenter(point(v[0]), point(v[1]), point(v[2]));
+        const tri::CavityInsertion outcome = cdt_.insert_in_cavity(top.t, c[0], c[1]);
+        switch (outcome) {
+            case tri::CavityInsertion::Inserted:
+                ++counters_.circumcenters;
+                process_touched();
+                break;
+            case tri::CavityInsertion::Encroaches: {
+                ++counters_.rejected_circumcenters;
+                const double shortest =
+                    std::sqrt(std::min({squared_distance(v[0], v[1]), squared_distance(v[1], v[2]),
+                                        squared_distance(v[2], v[0])}));
+                bool split = false;
+                for (const EdgeIdx e : cdt_.encroached_edges()) {
+                    // Only skinny triangles are left at small angles; too big ones are split.
+                    if (!top.too_big && leave_at_small_angle(e, shortest)) continue;
+                    pieces_.push_back({mesh_.origin(e), mesh_.destination(e), true});
+                    split = true;
+                }
+                if (split) {
+                    bad_.push(top);  // still bad unless the splits rewrite it
+                } else if (below_asked_bound(top.t)) {
+                    ++counters_.small_angle_skips;  // left skinny at a small input angle
+                }
+                break;
+            }
+            case tri::CavityInsertion::Duplicate:
+            case tri::CavityInsertion::NotInConflict:
+            case tri::CavityInsertion::Outside:
+                // A triangle so small that its rounded circumcenter is one of its vertices (or
+                // leaves its circle): nothing to insert; it stays, counted (when it is bad for the
+                // bound asked for, not only for the polish's).
+                if (top.too_big || below_asked_bound(top.t)) ++counters_.unsplittable;
+                break;
+        }
+    }
+}
+
+bool Refiner::below_asked_bound(TriIdx t) const {
+    const double* p[3] = {point(mesh_.tv[3 * t]), point(mesh_.tv[3 * t + 1]),
+                          point(mesh_.tv[3 * t + 2])};
+    double length2[3];
+    for (int k = 0; k < 3; ++k) {
+        const double dx = p[(k + 1) % 3][0] - p[k][0], dy = p[(k + 1) % 3][1] - p[k][1];
+        length2[k] = dx * dx + dy * dy;
+    }
+    std::sort(length2, length2 + 3);
+    const double cross =
+        (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+    return cross * cross < asked_sine2_ * length2[1] * length2[2];
+}
+
+void Refiner::requeue_for_asked_bound() {
+    // The queue holds every triangle bad for the polish bound (and stale entries): those still
+    // current and bad for min_angle (or too big) are evaluated again, with keys for min_angle.
+    std::vector<TriIdx> keep;
+    while (!bad_.empty()) {
+        const BadTriangle b = bad_.pop();
+        if (b.version != (version_[b.t] & 0x7FFFFFFFu) || !cdt_.in_domain(b.t)) continue;
+        if (b.too_big || below_asked_bound(b.t)) keep.push_back(b.t);
+    }
+    next_batch();
+    for (const TriIdx t : keep) {
+        if (seen_[t] == batch_) continue;  // queued twice (a rejected circumcenter requeues)
+        seen_[t] = batch_;
+        evaluate(t);
+    }
+}
+
+void Refiner::polish() {
+    if (polish_sine2_ <= sine2_bound_) return;
+    sine2_bound_ = polish_sine2_;
+    polish_sine2_ = 0;  // no more candidates
+    for (const BadTriangle& b : polish_) {
+        if (b.version != (version_[b.t] & 0x7FFFFFFFu) || !cdt_.in_domain(b.t)) continue;
+        bad_.push(b);
+        ++counters_.bad_triangles;
+    }
+    polish_ = {};
+    const std::uint64_t before = counters_.steiner_points();
+    const auto extra =
+        static_cast<std::uint64_t>(options_.polish_fraction * static_cast<double>(before)) + 64;
+    const bool done = refine(std::min(before + extra, budget_));  // never the budget's error
+    counters_.polish_points = counters_.steiner_points() - before;
+    sine2_bound_ = asked_sine2_;
+    if (done) return;
+    // The polish's budget is spent: back to min_angle (the proven refinement, from here).
+    ++counters_.polish_stopped;
+    requeue_for_asked_bound();
+    refine(UINT64_MAX);
+}
+
 RefinementResult2 Refiner::run() {
     if (cdt_.collinear()) {
-        throw InputError("delaunay refinement: the points are collinear; the segments enclose no region");
+        throw InputError(
+            "delaunay refinement: the points are collinear; the segments enclose no region");
     }
     initial_vertices_ = mesh_.vertex_count();
     degree_.assign(initial_vertices_, 0);
@@ -435,54 +622,20 @@ RefinementResult2 Refiner::run() {
         const double s = std::sin(options_.min_angle * 3.14159265358979323846 / 180.0);
         sine2_bound_ = s * s;
     }
+    cache_sizes_ = options_.size.bounded() && !options_.size.is_uniform();
     check_domain_and_budget();
+    asked_sine2_ = sine2_bound_;
+    if (options_.min_angle > 0) {
+        const double polish = options_.polish_angle < 0
+                                  ? std::min(kMaxPolishAngle, options_.min_angle + 10)
+                                  : options_.polish_angle;
+        const double s = std::sin(polish * 3.14159265358979323846 / 180.0);
+        if (polish > options_.min_angle) polish_sine2_ = s * s;
+    }
     predicates::reset_construction_stats();
     initial_queue();
-    for (;;) {
-        while (!pieces_.empty()) {
-            const PieceToSplit piece = pieces_.back();
-            pieces_.pop_back();
-            split_piece(piece);
-        }
-        if (bad_.empty()) break;
-        const BadTriangle top = bad_.pop();
-        if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t)) continue;  // rewritten since
-        spend_budget();
-        const VertIdx v[3] = {mesh_.tv[3 * top.t], mesh_.tv[3 * top.t + 1], mesh_.tv[3 * top.t + 2]};
-        const auto c = predicates::circumcenter(point(v[0]), point(v[1]), point(v[2]));
-        const tri::CavityInsertion outcome = cdt_.insert_in_cavity(top.t, c[0], c[1]);
-        switch (outcome) {
-            case tri::CavityInsertion::Inserted:
-                ++counters_.circumcenters;
-                process_touched();
-                break;
-            case tri::CavityInsertion::Encroaches: {
-                ++counters_.rejected_circumcenters;
-                const double shortest = std::sqrt(std::min(
-                    {squared_distance(v[0], v[1]), squared_distance(v[1], v[2]), squared_distance(v[2], v[0])}));
-                bool split = false;
-                for (const EdgeIdx e : cdt_.encroached_edges()) {
-                    // Only skinny triangles are left at small angles; too big ones are split.
-                    if (!top.too_big && leave_at_small_angle(e, shortest)) continue;
-                    pieces_.push_back({mesh_.origin(e), mesh_.destination(e), true});
-                    split = true;
-                }
-                if (split) {
-                    bad_.push(top);  // still bad unless the splits rewrite it
-                } else {
-                    ++counters_.small_angle_skips;  // left skinny at a small input angle
-                }
-                break;
-            }
-            case tri::CavityInsertion::Duplicate:
-            case tri::CavityInsertion::NotInConflict:
-            case tri::CavityInsertion::Outside:
-                // A triangle so small that its rounded circumcenter is one of its vertices (or
-                // leaves its circle): nothing to insert; it stays, counted.
-                ++counters_.unsplittable;
-                break;
-        }
-    }
+    refine(UINT64_MAX);
+    polish();
     const tri::ConstrainedTriangulation2Counters& edits = cdt_.counters();
     counters_.cavity_triangles = edits.cavity_triangles;
     counters_.circumcenter_exact = predicates::construction_stats().exact_range +
@@ -502,8 +655,21 @@ RefinementResult2 delaunay_refinement_2d(const tri::Pslg& pslg, const Refinement
     if (!(options.min_angle >= 0 && options.min_angle <= kMaxMinAngle)) {
         char angle[32];
         std::snprintf(angle, sizeof angle, "%g", options.min_angle);
-        throw InputError(std::string("minimum angle ") + angle + " is outside [0, 34] degrees (Delaunay refinement "
+        throw InputError(std::string("minimum angle ") + angle +
+                         " is outside [0, 34] degrees (Delaunay refinement "
                          "terminates provably up to 20.7 and in practice up to about 33)");
+    }
+    if (std::isnan(options.polish_angle) || options.polish_angle > kMaxMinAngle) {
+        char angle[32];
+        std::snprintf(angle, sizeof angle, "%g", options.polish_angle);
+        throw InputError(std::string("polish angle ") + angle +
+                         " is above 34 degrees or not a number (negative: automatic)");
+    }
+    if (!(options.polish_fraction >= 0 && std::isfinite(options.polish_fraction))) {
+        char fraction[32];
+        std::snprintf(fraction, sizeof fraction, "%g", options.polish_fraction);
+        throw InputError(std::string("polish fraction ") + fraction +
+                         " is not a finite number >= 0");
     }
     Refiner refiner(pslg, options);
     return refiner.run();

@@ -4,8 +4,7 @@
 
 #include <algorithm>
 #include <string>
-#include <unordered_map>
-#include <unordered_set>
+#include <vector>
 
 #include "predicates/errors.hpp"
 
@@ -22,34 +21,61 @@ tri::Cdt2Result domain_mesh_result(const DomainBoundary2& boundary, std::vector<
                             std::to_string(triangles.size()) + " triangle indices");
     }
     const auto n = static_cast<tri::VertIdx>(xy.size() / 2);
-    auto key = [](tri::VertIdx a, tri::VertIdx b) { return (std::uint64_t{a} << 32) | b; };
-    std::unordered_map<std::uint64_t, tri::EdgeIdx> edge_of;
-    edge_of.reserve(triangles.size());
-    for (std::size_t e = 0; e < triangles.size(); ++e) {
-        const tri::VertIdx a = triangles[e], b = triangles[e - e % 3 + (e + 1) % 3];
-        if (a >= n || b >= n)
+    // Half-edges bucketed by origin vertex (counting sort), each bucket sorted by destination:
+    // a twin is a binary search in one vertex's bucket, a repeated directed edge two equal
+    // neighbours in it (O(n log degree); a hash map of every half-edge was a third of the
+    // quadtree generator's time).
+    const std::size_t count = triangles.size();
+    auto destination = [&](std::size_t e) { return triangles[e - e % 3 + (e + 1) % 3]; };
+    std::vector<std::uint32_t> start(std::size_t{n} + 1, 0);
+    for (std::size_t e = 0; e < count; ++e) {
+        if (triangles[e] >= n)
             throw InternalError(
                 "domain_mesh_result: a triangle names a vertex that does not exist");
-        if (!edge_of.emplace(key(a, b), static_cast<tri::EdgeIdx>(e)).second) {
-            throw InternalError("domain_mesh_result: edge " + std::to_string(a) + " -> " +
-                                std::to_string(b) + " is in two triangles");
+        ++start[triangles[e] + 1];
+    }
+    for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+    std::vector<tri::EdgeIdx> bucket(count);
+    {
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t e = 0; e < count; ++e)
+            bucket[fill[triangles[e]]++] = static_cast<tri::EdgeIdx>(e);
+    }
+    auto by_destination = [&](tri::EdgeIdx e, tri::EdgeIdx f) {
+        return destination(e) < destination(f);
+    };
+    for (std::size_t v = 0; v < n; ++v) {
+        const auto first = bucket.begin() + start[v], last = bucket.begin() + start[v + 1];
+        std::sort(first, last, by_destination);
+        const auto twice = std::adjacent_find(first, last, [&](tri::EdgeIdx e, tri::EdgeIdx f) {
+            return destination(e) == destination(f);
+        });
+        if (twice != last) {
+            throw InternalError("domain_mesh_result: edge " + std::to_string(v) + " -> " +
+                                std::to_string(destination(*twice)) + " is in two triangles");
         }
     }
-    std::unordered_set<std::uint64_t> piece_set;
-    piece_set.reserve(boundary.pieces.size());
-    for (std::size_t p = 0; 2 * p + 1 < boundary.pieces.size(); ++p) {
-        const tri::VertIdx a = boundary.pieces[2 * p], b = boundary.pieces[2 * p + 1];
-        piece_set.insert(key(std::min(a, b), std::max(a, b)));
-    }
+    // The half-edge a -> b, or kNone.
+    auto find = [&](tri::VertIdx a, tri::VertIdx b) {
+        const auto first = bucket.begin() + start[a], last = bucket.begin() + start[a + 1];
+        const auto it =
+            std::partition_point(first, last, [&](tri::EdgeIdx e) { return destination(e) < b; });
+        return it != last && destination(*it) == b ? *it : tri::kNone;
+    };
     tri::Cdt2Result result;
     tri::Triangulation2& mesh = result.mesh;
-    mesh.neighbors.assign(triangles.size(), tri::kNone);
-    mesh.constrained.assign(triangles.size(), 0);
-    for (std::size_t e = 0; e < triangles.size(); ++e) {
-        const tri::VertIdx a = triangles[e], b = triangles[e - e % 3 + (e + 1) % 3];
-        const auto twin = edge_of.find(key(b, a));
-        if (twin != edge_of.end()) mesh.neighbors[e] = static_cast<tri::TriIdx>(twin->second / 3);
-        mesh.constrained[e] = piece_set.count(key(std::min(a, b), std::max(a, b))) ? 1 : 0;
+    mesh.neighbors.assign(count, tri::kNone);
+    mesh.constrained.assign(count, 0);
+    for (std::size_t e = 0; e < count; ++e) {
+        const tri::EdgeIdx twin = find(destination(e), triangles[e]);
+        if (twin != tri::kNone) mesh.neighbors[e] = static_cast<tri::TriIdx>(twin / 3);
+    }
+    for (std::size_t p = 0; 2 * p + 1 < boundary.pieces.size(); ++p) {
+        const tri::VertIdx a = boundary.pieces[2 * p], b = boundary.pieces[2 * p + 1];
+        if (a >= n || b >= n) continue;
+        for (const tri::EdgeIdx e : {find(a, b), find(b, a)}) {
+            if (e != tri::kNone) mesh.constrained[e] = 1;
+        }
     }
     mesh.xy = std::move(xy);
     mesh.triangles = std::move(triangles);

@@ -7,6 +7,7 @@
 
 #include "generators/advancing_front_delaunay_2d.hpp"
 #include "generators/frontal_delaunay_2d.hpp"
+#include "generators/quadtree_mesh_2d.hpp"
 #include "predicates/errors.hpp"
 
 namespace exactmesh::generators {
@@ -28,7 +29,9 @@ std::vector<std::pair<std::string, std::uint64_t>> counter_list(const Refinement
             {"circumcenter_exact_path", c.circumcenter_exact},
             {"orient_calls", c.orient_calls},
             {"incircle_calls", c.incircle_calls},
-            {"encroachment_tests", c.encroachment_tests}};
+            {"encroachment_tests", c.encroachment_tests},
+            {"polish_points", c.polish_points},
+            {"polish_stopped", c.polish_stopped}};
 }
 
 namespace {
@@ -36,6 +39,7 @@ namespace {
 MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& options) {
     RefinementOptions2 refinement;
     refinement.min_angle = options.min_angle;
+    refinement.polish_angle = options.polish_angle;
     refinement.size = options.size;
     refinement.max_steiner_points = options.max_steiner_points;
     refinement.cdt = options.cdt;
@@ -45,6 +49,14 @@ MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& opti
             std::to_string(result.counters.unsplittable) +
             " bad triangles are too small to split in double precision; left as they are");
     }
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
+MeshRun2 run_quadtree(const tri::Pslg& pslg, const MeshOptions2& options) {
+    QuadtreeOptions2 quadtree;
+    quadtree.size = options.size;
+    quadtree.cdt = options.cdt;
+    QuadtreeResult2 result = quadtree_mesh_2d(pslg, quadtree);
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
@@ -77,6 +89,10 @@ constexpr std::array kGenerators{
                    "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
                    "split first; guaranteed minimum angle",
                    true, false, &run_delaunay_refinement},
+    MeshGenerator2{"quadtree",
+                   "Yerry-Shephard/Baehmann: balanced quadtree leaves as 45-45-90 templates, "
+                   "the band along the boundary by a refined constrained Delaunay triangulation",
+                   false, true, &run_quadtree},
     MeshGenerator2{"advancing-front-delaunay",
                    "Mavriplis: shortest front edge first, a point at the circumradius bound, the "
                    "Tanemura-Merriam (Delaunay) choice among nearby front points; needs a size",

@@ -24,8 +24,9 @@ namespace exactmesh::generators {
 struct MeshOptions2 {
     SizeFunction size;
     double min_angle = kGuaranteedMinAngle;  ///< degrees (Delaunay refinement)
-    std::uint64_t max_steiner_points = 0;    ///< 0: the generator's automatic budget
-    triangulation::Cdt2Options cdt;          ///< numbering, recovery of the initial CDT
+    double polish_angle = -1;  ///< Delaunay refinement's polish (RefinementOptions2), -1: automatic
+    std::uint64_t max_steiner_points = 0;  ///< 0: the generator's automatic budget
+    triangulation::Cdt2Options cdt;        ///< numbering, recovery of the initial CDT
 };
 
 /// A generator's mesh (caller's numbering, pieces, warnings) and its work counters in the order

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Size functions (see size_function.hpp). The source term (d / rbar)^gamma is evaluated without
-// pow for gamma 0, 1 and 2 (gamma 2 of a point source needs no square root either): the
+// pow for gamma 0, 1, 1.5 and 2 (gamma 2 of a point source needs no square root either): the
 // refinement evaluates the size at three edge midpoints per new triangle.
 #include "generators/size_function.hpp"
 
@@ -53,6 +53,7 @@ double growth(double d2, double radius, double exponent) {
     if (exponent == 0.0) return 1.0;
     const double ratio = std::sqrt(d2) / radius;
     if (exponent == 1.0) return ratio;
+    if (exponent == 1.5) return ratio * std::sqrt(ratio);  // the sample airfoils' grading
     return std::pow(ratio, exponent);
 }
 

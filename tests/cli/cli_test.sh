@@ -551,6 +551,12 @@ mesh() {
   # No small input angle in square-with-holes: every angle at least the bound.
   run 0 mesh --domain square-with-holes -o "$work/swh.vtu" --min-angle 30 --quality &&
     awk '/^quality.min_angle:/ { exit !($2 >= 30) }' "$work/out" || fail "mesh: min angle below 30: $(cat "$work/out")"
+  # The polish (on by default: min(20.7 + 10, 32)) lifts square-with-holes to 30.7; off, it adds nothing.
+  run 0 mesh --domain square-with-holes -o "$work/polish.ele" --quality --stats &&
+    awk '/^quality.min_angle:/ { a = $2 } /^polish_points:/ { p = $2 } END { exit !(a >= 30.7 && p > 0) }' "$work/out" ||
+    fail "mesh: the polish did not reach 30.7: $(cat "$work/out")"
+  run 0 mesh --domain square-with-holes -o "$work/nopolish.ele" --polish-angle 0 --stats &&
+    grep -q '^polish_points: 0$' "$work/out" || fail "mesh --polish-angle 0: $(cat "$work/out")"
   for ext in msh vtu svg; do
     run 0 mesh --domain key -o "$work/key.$ext" && [[ -s "$work/key.$ext" ]] || fail "mesh: key.$ext"
   done
@@ -589,7 +595,7 @@ mesh() {
   # the key domain with its counters and construct_seconds; without --size a generator that
   # needs one takes the input's spacing.
   local generator kind
-  for generator in delaunay-refinement:delaunay frontal:delaunay advancing-front-delaunay:conforming; do
+  for generator in delaunay-refinement:delaunay frontal:delaunay advancing-front-delaunay:conforming quadtree:conforming; do
     kind=${generator#*:}
     generator=${generator%%:*}
     run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/$generator.ele" --generator "$generator" --size 0.3 \
@@ -611,6 +617,7 @@ mesh() {
   expect_error 2 "unknown generator 'magic'" mesh --domain key -o "$work/x.ele" --generator magic
   expect_error 2 "unknown domain 'moon'" mesh --domain moon -o "$work/x.ele"
   expect_error 2 'minimum angle 40 is outside \[0, 34\]' mesh --domain key -o "$work/x.ele" --min-angle 40
+  expect_error 2 'polish angle 40' mesh --domain key -o "$work/x.ele" --polish-angle 40
   expect_error 2 'either an input \.poly file or --domain' mesh "$data/square_hole_diagonals.poly" --domain key -o "$work/x.ele"
   expect_error 2 'either an input \.poly file or --domain' mesh -o "$work/x.ele"
   printf 'point 1 2 3\n' >"$work/bad_size.txt"

@@ -1,0 +1,326 @@
+// SPDX-License-Identifier: MIT
+// Quadtree meshes: on the four sample domains with their own sizes, the unit square with a hole
+// and a slit, graded point and line sources, and degenerate inputs (collinear vertices on
+// segments, a feature much smaller than the size, two holes nearly touching, a triangle, an
+// isolated vertex), every mesh passes check_quality_mesh without the Delaunay test (exact
+// validity: counter-clockwise, no fold, closed by pieces, segments as chains of pieces, no
+// triangle outside the domain), input vertices keep their coordinates, every edge is at most
+// kSizeBound times the size at its midpoint and every angle at least kMinAngle degrees (the
+// bounds measured here, with room); template triangles are exactly 45-45-90; bad input raises
+// InputError.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "generators/pslg_inputs.hpp"
+#include "generators/quadtree_mesh_2d.hpp"
+#include "generators/sample_domains.hpp"
+#include "predicates/errors.hpp"
+#include "tests/support/mesh_checks_2d.hpp"
+#include "triangulation/check_conforming_2d.hpp"
+
+namespace em = exactmesh;
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
+
+namespace {
+
+/// Measured over every mesh below with the default options: largest edge / size at its
+/// midpoint 1.217 (square-with-holes: a band edge where the boundary meets the leaves
+/// obliquely; template edges are at most the size); smallest angle 24.47 degrees (three-element,
+/// in the band), the key's 10-degree tooth apart. The bounds leave a little room.
+constexpr double kSizeBound = 1.25;
+constexpr double kMinAngle = 24.0;
+
+struct Input {
+    std::vector<double> xy;
+    std::vector<std::uint32_t> segments;
+    std::vector<double> holes;
+    tri::Pslg pslg() const { return {xy, segments, holes, {}}; }
+};
+
+Input from_domain(const gen::DomainPslg& d) {
+    return {d.xy, d.segments, d.holes};
+}
+
+/// A closed polygon (vertices in order) appended to `in`.
+void add_loop(Input& in, const std::vector<double>& xy) {
+    const auto first = static_cast<std::uint32_t>(in.xy.size() / 2);
+    const auto n = static_cast<std::uint32_t>(xy.size() / 2);
+    in.xy.insert(in.xy.end(), xy.begin(), xy.end());
+    for (std::uint32_t k = 0; k < n; ++k)
+        in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % n});
+}
+
+/// The unit square with a square hole [0.4, 0.6]^2 and a slit from (0.1, 0.5) to (0.3, 0.5).
+Input square_with_hole_and_slit() {
+    Input in;
+    add_loop(in, {0, 0, 1, 0, 1, 1, 0, 1});
+    add_loop(in, {0.4, 0.4, 0.6, 0.4, 0.6, 0.6, 0.4, 0.6});
+    in.xy.insert(in.xy.end(), {0.1, 0.5, 0.3, 0.5});
+    in.segments.insert(in.segments.end(), {8, 9});
+    in.holes = {0.5, 0.5};
+    return in;
+}
+
+struct Meshed {
+    gen::QuadtreeResult2 result;
+    em::testing::MeshCheck check;
+};
+
+Meshed mesh(const Input& in, const gen::SizeFunction& size, bool closed_loops = true) {
+    gen::QuadtreeOptions2 options;
+    options.size = size;
+    Meshed m{gen::quadtree_mesh_2d(in.pslg(), options), {}};
+    const tri::Cdt2Result& r = m.result.mesh;
+    m.check = em::testing::check_quality_mesh(
+        r.mesh, r.input_vertex_count, in.xy, in.segments, r.pieces,
+        [&size](double x, double y) { return size(x, y); }, closed_loops, false);
+    return m;
+}
+
+/// The checks every mesh passes; `what` names the input in failures; `min_angle` below
+/// kMinAngle where the input has a smaller angle.
+void expect_good(const Meshed& m, const Input& in, const char* what, double min_angle = kMinAngle) {
+    EXPECT_TRUE(m.check.ok) << what << ": " << m.check.problem;
+    const tri::Cdt2Result& r = m.result.mesh;
+    // Input vertices keep their numbers (and coordinates).
+    for (std::size_t i = 0; i < in.xy.size(); ++i) EXPECT_EQ(r.mesh.xy[i], in.xy[i]) << what;
+    EXPECT_LE(m.check.max_size_ratio, kSizeBound) << what;
+    EXPECT_GE(m.check.min_angle, min_angle) << what;
+    const gen::QuadtreeCounters2& c = m.result.counters;
+    EXPECT_EQ(c.template_triangles + c.band_triangles, r.mesh.triangle_count()) << what;
+    std::printf(
+        "%-28s %7u triangles (%6llu template, %6llu band), leaves %llu, kept %llu, "
+        "min angle %.2f, max edge/size %.3f\n",
+        what, r.mesh.triangle_count(), static_cast<unsigned long long>(c.template_triangles),
+        static_cast<unsigned long long>(c.band_triangles),
+        static_cast<unsigned long long>(c.leaves), static_cast<unsigned long long>(c.kept_leaves),
+        m.check.min_angle, m.check.max_size_ratio);
+}
+
+TEST(Generators_Quadtree2, SampleDomainsWithTheirOwnSizes) {
+    for (const gen::SampleDomain d : gen::kAllSampleDomains) {
+        const gen::SizeFunction size = gen::sample_domain_size(d);
+        const Input in = from_domain(gen::sample_domain(d, size));
+        const Meshed m = mesh(in, size);
+        // The key's sharp tooth has a 10-degree input angle, which no mesh can beat.
+        expect_good(m, in, std::string(gen::sample_domain_name(d)).c_str(),
+                    d == gen::SampleDomain::Key ? 9.5 : kMinAngle);
+        EXPECT_GT(m.result.counters.kept_leaves, m.result.counters.leaves / 2);
+        EXPECT_GT(m.result.counters.template_triangles, m.result.mesh.mesh.triangle_count() / 2);
+        if (!size.is_uniform()) {
+            EXPECT_GT(m.result.counters.fan_leaves, 0u);  // graded: hanging midpoints
+        }
+    }
+}
+
+TEST(Generators_Quadtree2, SquareWithHoleAndSlitUniformAndGraded) {
+    const Input in = square_with_hole_and_slit();
+    expect_good(mesh(in, gen::SizeFunction::uniform(0.05), false), in, "hole+slit uniform 0.05");
+    expect_good(mesh(in, gen::SizeFunction::uniform(0.013), false), in, "hole+slit uniform 0.013");
+    const auto point = gen::SizeFunction::sources({{0.0, 0.0, 0.005, 0.05, 1.0}}, {}, 0.1);
+    expect_good(mesh(in, point, false), in, "hole+slit point source");
+    const auto line = gen::SizeFunction::sources({}, {{0.1, 0.9, 0.9, 0.1, 0.004, 0.1, 1.5}}, 0.2);
+    expect_good(mesh(in, line, false), in, "hole+slit line source");
+    // The slit is carried: its pieces are constrained edges with triangles on both sides.
+    const Meshed m = mesh(in, gen::SizeFunction::uniform(0.05), false);
+    std::size_t slit_pieces = 0;
+    for (std::size_t p = 0; p < m.result.mesh.piece_segment.size(); ++p)
+        slit_pieces += m.result.mesh.piece_segment[p] == 8;
+    EXPECT_GE(slit_pieces, 4u);
+}
+
+TEST(Generators_Quadtree2, TemplatesAreRightIsoscelesAndTheTreeIsBalanced) {
+    // A notch 1e-4 wide in a square meshed at 0.05: leaves 2^-14 at the notch, so that
+    // balancing splits coarser ones around it.
+    Input in;
+    add_loop(in, {0, 0, 0.5, 0, 0.5, 1e-4, 0.5001, 1e-4, 0.5001, 0, 1, 0, 1, 1, 0, 1});
+    const Meshed m = mesh(in, gen::SizeFunction::uniform(0.05));
+    expect_good(m, in, "notch, templates");
+    EXPECT_GE(m.result.counters.depth, 13u);
+    const gen::QuadtreeCounters2& c = m.result.counters;
+    EXPECT_GT(c.balance_splits, 0u);
+    EXPECT_GT(c.fan_leaves, 0u);
+    // Count exact right isosceles triangles (legs axis-aligned or diagonal, equal, at right
+    // angles): at least the template triangles.
+    const tri::Triangulation2& t = m.result.mesh.mesh;
+    std::uint64_t right_isosceles = 0;
+    for (std::uint32_t k = 0; k < t.triangle_count(); ++k) {
+        for (int corner = 0; corner < 3; ++corner) {
+            const double* o = t.point(t.triangles[3 * k + static_cast<unsigned>(corner)]);
+            const double* a = t.point(t.triangles[3 * k + static_cast<unsigned>((corner + 1) % 3)]);
+            const double* b = t.point(t.triangles[3 * k + static_cast<unsigned>((corner + 2) % 3)]);
+            const double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
+            // b - o is a - o turned by +90 degrees (exact: dyadic coordinates).
+            if (wx == -uy && wy == ux) {
+                ++right_isosceles;
+                break;
+            }
+        }
+    }
+    EXPECT_GE(right_isosceles, c.template_triangles);
+    EXPECT_GT(c.template_triangles, t.triangle_count() / 2);
+}
+
+TEST(Generators_Quadtree2, DegenerateInputs) {
+    {
+        // Collinear vertices on the square's sides (each side three segments on one line).
+        Input in;
+        add_loop(in, {0, 0, 0.3, 0, 0.7, 0, 1, 0, 1, 0.5, 1, 1, 0.5, 1, 0, 1, 0, 0.25, 0, 0.5});
+        expect_good(mesh(in, gen::SizeFunction::uniform(0.04)), in, "collinear vertices");
+    }
+    {
+        // A notch 1e-4 wide and deep in the bottom side, size 0.05.
+        Input in;
+        add_loop(in, {0, 0, 0.5, 0, 0.5, 1e-4, 0.5001, 1e-4, 0.5001, 0, 1, 0, 1, 1, 0, 1});
+        const Meshed m = mesh(in, gen::SizeFunction::uniform(0.05));
+        expect_good(m, in, "tiny notch");
+        EXPECT_GT(m.result.counters.boundary_splits, 0u);
+        EXPECT_GT(m.result.counters.piece_splits, 0u);
+    }
+    {
+        // Two square holes 1e-3 apart.
+        Input in;
+        add_loop(in, {0, 0, 1, 0, 1, 1, 0, 1});
+        add_loop(in, {0.2, 0.3, 0.4995, 0.3, 0.4995, 0.7, 0.2, 0.7});
+        add_loop(in, {0.5005, 0.3, 0.8, 0.3, 0.8, 0.7, 0.5005, 0.7});
+        in.holes = {0.3, 0.5, 0.7, 0.5};
+        expect_good(mesh(in, gen::SizeFunction::uniform(0.03)), in, "holes nearly touching");
+    }
+    {
+        // A triangle, larger and smaller than the size; an isolated vertex inside.
+        Input in;
+        add_loop(in, {0, 0, 1, 0.1, 0.3, 0.8});
+        expect_good(mesh(in, gen::SizeFunction::uniform(0.05)), in, "triangle");
+        expect_good(mesh(in, gen::SizeFunction::uniform(0.02)), in, "triangle 0.02");
+        Input small = in;
+        expect_good(mesh(small, gen::SizeFunction::uniform(5.0)), small, "triangle, size 5");
+        in.xy.insert(in.xy.end(), {0.4, 0.3});
+        const Meshed m = mesh(in, gen::SizeFunction::uniform(0.05));
+        expect_good(m, in, "triangle + isolated vertex");
+        bool used = false;
+        for (const auto v : m.result.mesh.mesh.triangles) used = used || v == 3;
+        EXPECT_TRUE(used);
+    }
+    {
+        // Far from the origin: the depth limit follows the coordinates' magnitude.
+        Input in;
+        add_loop(in, {1e6, 1e6, 1e6 + 1, 1e6, 1e6 + 1, 1e6 + 1, 1e6, 1e6 + 1});
+        const Meshed m = mesh(in, gen::SizeFunction::uniform(0.05));
+        expect_good(m, in, "offset square");
+        EXPECT_LT(m.result.counters.depth_limit, 28u);
+    }
+}
+
+TEST(Generators_Quadtree2, EveryOptionRangeGivesValidMeshes) {
+    // The knobs at the ends of their ranges: validity never depends on them (quality does).
+    struct Variant {
+        double cell_factor, boundary_factor, clearance, corner_clearance, piece_factor, band_angle;
+    };
+    const Variant variants[] = {{0.70710678118654752, 1, 0.5, 0.5, 2, 28},
+                                {16, 16, 1.0 / 16, 0.5, 0, 0},
+                                {0.25, 0.25, 4, 1.0 / 16, 64, 30},
+                                {1, 1, 1, 0, 1, 20}};
+    const gen::SizeFunction naca_size = gen::sample_domain_size(gen::SampleDomain::Naca0012);
+    const Input naca = from_domain(gen::sample_domain(gen::SampleDomain::Naca0012, naca_size));
+    const Input slit = square_with_hole_and_slit();
+    const auto slit_size = gen::SizeFunction::sources({{0.3, 0.5, 0.005, 0.05, 1.0}}, {}, 0.08);
+    for (const Variant& v : variants) {
+        for (const bool airfoil : {true, false}) {
+            const Input& in = airfoil ? naca : slit;
+            gen::QuadtreeOptions2 options;
+            options.size = airfoil ? naca_size : slit_size;
+            options.cell_factor = v.cell_factor;
+            options.boundary_factor = v.boundary_factor;
+            options.clearance = v.clearance;
+            options.corner_clearance = v.corner_clearance;
+            options.piece_factor = v.piece_factor;
+            options.band_min_angle = v.band_angle;
+            const gen::QuadtreeResult2 r = gen::quadtree_mesh_2d(in.pslg(), options);
+            const auto check =
+                em::testing::check_quality_mesh(r.mesh.mesh, r.mesh.input_vertex_count, in.xy,
+                                                in.segments, r.mesh.pieces, {}, airfoil, false);
+            EXPECT_TRUE(check.ok) << (airfoil ? "naca0012" : "hole+slit") << " clearance "
+                                  << v.clearance << ": " << check.problem;
+            if (v.band_angle == 0) {
+                EXPECT_EQ(r.counters.band_circumcenters, 0u);
+            }
+            if (v.piece_factor == 0) {
+                EXPECT_EQ(r.counters.piece_splits, 0u);
+            }
+            if (v.corner_clearance == 0) {
+                EXPECT_EQ(r.counters.band_corners, 0u);
+            }
+        }
+    }
+}
+
+TEST(Generators_Quadtree2, PslgDistributionsGiveValidMeshes) {
+    // Crossings split at rounded points (some an ulp from input vertices: the band stays an
+    // unrefined CDT there), collinear overlaps, segments ulps apart, duplicates, holes; a size
+    // a tenth of the extent. Every mesh is valid, or the segments enclose nothing.
+    int meshed = 0;
+    for (const gen::PslgDistribution d : gen::kAllPslgDistributions) {
+        for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+            const gen::PslgInput p = gen::generate_pslg(d, 300, 100, seed);
+            const auto [lo, hi] = std::minmax_element(p.xy.begin(), p.xy.end());
+            gen::QuadtreeOptions2 options;
+            options.size = gen::SizeFunction::uniform(0.1 * (*hi - *lo));
+            const tri::Pslg pslg{p.xy, p.segments, p.holes, {}};
+            const std::string what =
+                std::string(gen::pslg_distribution_name(d)) + " seed " + std::to_string(seed);
+            try {
+                const gen::QuadtreeResult2 r = gen::quadtree_mesh_2d(pslg, options);
+                const auto report = tri::check_conforming_mesh_2d(
+                    r.mesh.mesh, r.mesh.input_vertex_count, p.segments, r.mesh.pieces);
+                EXPECT_TRUE(report.ok) << what << ": " << report.problem;
+                ++meshed;
+            } catch (const em::InputError& e) {
+                EXPECT_NE(std::string(e.what()).find("enclose no region"), std::string::npos)
+                    << what << ": " << e.what();
+            }
+        }
+    }
+    EXPECT_GE(meshed, 6);
+}
+
+TEST(Generators_Quadtree2, BadInputIsAnInputError) {
+    Input in = square_with_hole_and_slit();
+    gen::QuadtreeOptions2 options;
+    EXPECT_THROW(gen::quadtree_mesh_2d(in.pslg(), options), em::InputError);  // unbounded size
+    options.size = gen::SizeFunction::uniform(0.1);
+    Input nan = in;
+    nan.xy[5] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(gen::quadtree_mesh_2d(nan.pslg(), options), em::InputError);
+    Input open;  // a polyline encloses nothing
+    open.xy = {0, 0, 1, 0, 1, 1};
+    open.segments = {0, 1, 1, 2};
+    EXPECT_THROW(gen::quadtree_mesh_2d(open.pslg(), options), em::InputError);
+    Input points;  // no segment: the convex hull, no boundary to mesh against
+    points.xy = {0, 0, 1, 0, 1, 1, 0, 1};
+    EXPECT_THROW(gen::quadtree_mesh_2d(points.pslg(), options), em::InputError);
+    gen::QuadtreeOptions2 bad = options;
+    bad.clearance = 0;
+    EXPECT_THROW(gen::quadtree_mesh_2d(in.pslg(), bad), em::InputError);
+    bad = options;
+    bad.cell_factor = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(gen::quadtree_mesh_2d(in.pslg(), bad), em::InputError);
+    // A budget of leaves the size needs more than.
+    bad = options;
+    bad.size = gen::SizeFunction::uniform(1e-3);
+    bad.max_leaves = 1000;
+    EXPECT_THROW(gen::quadtree_mesh_2d(in.pslg(), bad), em::InputError);
+    // A size function that is not positive.
+    bad = options;
+    bad.size = gen::SizeFunction::analytic([](double x, double) { return x - 0.5; }, "x - 0.5");
+    EXPECT_THROW(gen::quadtree_mesh_2d(in.pslg(), bad), em::InputError);
+}
+
+}  // namespace
