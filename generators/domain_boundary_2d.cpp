@@ -151,15 +151,17 @@ class PieceRegion {
     }
 
     /// p strictly between a and b along the piece's longer axis, and within 3 steps per
-    /// coordinate (step_) of a point on the line a - b or beyond it from the left (exact).
-    bool hugs(const double* p) const {
+    /// coordinate (step_) of a point on the line a - b or beyond it from the given side (exact).
+    bool hugs(const double* p, bool from_left) const {
         const Point q{p[0], p[1]};
         if (!before(a_, q) || !before(q, b_)) return false;
+        const predicates::Sign side =
+            from_left ? predicates::Sign::Positive : predicates::Sign::Negative;
         for (int i = -3; i <= 3; ++i) {
             for (int j = -3; j <= 3; ++j) {
                 const Point r = moved(p, i, j);
                 if (std::isfinite(r[0]) && std::isfinite(r[1]) &&
-                    orient(a_.data(), b_.data(), r.data()) != predicates::Sign::Positive)
+                    orient(a_.data(), b_.data(), r.data()) != side)
                     return true;
             }
         }
@@ -427,18 +429,16 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
     // from the sizes at the ends and the middle.
     const auto spaced = [&](tri::VertIdx u, tri::VertIdx v, std::uint32_t segment) {
         const Point pa{mesh.point(u)[0], mesh.point(u)[1]}, pb{mesh.point(v)[0], mesh.point(v)[1]};
-        // From the nearer end, so that the rounding error is that of the point's own offset
-        // from it (1 - t is exact for t >= 1/2); the difference of the ends taken as two
-        // products when it overflows (ends near the largest double).
+        // Linear interpolation (the difference of the ends taken as two products when it
+        // overflows: ends near the largest double).
         const auto offset = [](double from, double to, double t) {
             const double d = to - from;
             return std::isfinite(d) ? t * d : t * to - t * from;
         };
         const Curve2 line = [&](double t) {
-            if (t == 1.0) return pb;
-            if (t <= 0.5)
-                return Point{pa[0] + offset(pa[0], pb[0], t), pa[1] + offset(pa[1], pb[1], t)};
-            return Point{pb[0] + offset(pb[0], pa[0], 1 - t), pb[1] + offset(pb[1], pa[1], 1 - t)};
+            return t == 1.0
+                       ? pb
+                       : Point{pa[0] + offset(pa[0], pb[0], t), pa[1] + offset(pa[1], pb[1], t)};
         };
         const double length = std::hypot(pb[0] - pa[0], pb[1] - pa[1]);
         const double smallest = std::min({size(pa[0], pa[1]), size(pb[0], pb[1]),
@@ -465,7 +465,7 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
     std::vector<tri::VertIdx> chain;
     struct Part {
         tri::VertIdx u, v;
-        tri::TriIdx left;
+        tri::TriIdx left;  // the domain triangle beside u - v
     };
     std::vector<Part> parts;
     for (std::size_t p = 0; 2 * p + 1 < pieces.size(); ++p) {
@@ -493,24 +493,31 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
             // ConstrainedTriangulation2 bends a segment at a vertex within rounding of it, and
             // continues along the triangle's other sides (the sliver is left out); that needs
             // c's sides free (no piece, no other bend) and the triangles beyond them unbent.
-            const tri::VertIdx u = left ? a : b, w = left ? b : a;
-            chain.assign(1, u);
-            parts.assign(1, Part{u, w, left ? left_triangle : right_triangle});
+            // Parts run from a to b; the domain triangle of part u -> v is on the left of u -> v
+            // when the piece's is on the left of a -> b, else on its right.
+            const auto domain_triangle = [&](tri::VertIdx u, tri::VertIdx v) {
+                return left ? left_of(u, v) : left_of(v, u);
+            };
+            parts.assign(1, Part{a, b, left ? left_triangle : right_triangle});
             while (!parts.empty()) {
                 const Part part = parts.back();
                 parts.pop_back();
                 const std::vector<Point> points = spaced(part.u, part.v, segment);
                 if (points.size() > 2) {
-                    const tri::VertIdx c = third_vertex(mesh, part.left, part.u, part.v);
-                    const PieceRegion region(points.front(), points.back(), mesh.point(c), nullptr);
+                    const tri::VertIdx c = left ? third_vertex(mesh, part.left, part.u, part.v)
+                                                : third_vertex(mesh, part.left, part.v, part.u);
+                    const PieceRegion region(points.front(), points.back(),
+                                             left ? mesh.point(c) : nullptr,
+                                             left ? nullptr : mesh.point(c));
                     std::size_t missed = 0;
                     std::vector<Point> kept = region.place(points, missed);
-                    const tri::TriIdx before_c = left_of(part.u, c), after_c = left_of(c, part.v);
+                    const tri::TriIdx before_c = domain_triangle(part.u, c),
+                                      after_c = domain_triangle(c, part.v);
                     if (missed > 0 && before_c != tri::kNone && after_c != tri::kNone &&
                         !bent_around[part.left] && !bent_around[before_c] &&
                         !bent_around[after_c] && !piece_keys.count(undirected_key(part.u, c)) &&
                         !piece_keys.count(undirected_key(c, part.v)) &&
-                        region.hugs(mesh.point(c))) {
+                        region.hugs(mesh.point(c), left)) {
                         bent_around[part.left] = true;
                         piece_keys.insert(undirected_key(part.u, c));
                         piece_keys.insert(undirected_key(c, part.v));
@@ -522,7 +529,6 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
                 }
                 chain.push_back(part.v);
             }
-            if (!left) std::reverse(chain.begin(), chain.end());
         } else {
             chain.push_back(b);  // outside the domain (a dangling segment in a hole): kept whole
         }
