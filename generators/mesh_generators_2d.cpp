@@ -3,8 +3,12 @@
 // generator's own options.
 #include "generators/mesh_generators_2d.hpp"
 
+#include <algorithm>
 #include <array>
+#include <limits>
+#include <string>
 
+#include "generators/advancing_front_2d.hpp"
 #include "generators/advancing_front_delaunay_2d.hpp"
 #include "generators/frontal_delaunay_2d.hpp"
 #include "generators/quadtree_mesh_2d.hpp"
@@ -60,6 +64,22 @@ MeshRun2 run_quadtree(const tri::Pslg& pslg, const MeshOptions2& options) {
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
+MeshRun2 run_advancing_front(const tri::Pslg& pslg, const MeshOptions2& options) {
+    AdvancingFrontOptions2 front;
+    front.size = options.size;
+    // The shared budget counts Steiner points; a triangle adds about half a point.
+    front.max_triangles =
+        std::min(options.max_steiner_points, std::numeric_limits<std::uint64_t>::max() / 2) * 2;
+    front.cdt = options.cdt;
+    AdvancingFrontResult2 result = advancing_front_2d(pslg, front);
+    if (result.counters.closure_triangles > 0) {
+        result.mesh.warnings.push_back(
+            "the triangle budget ran out: " + std::to_string(result.counters.closure_triangles) +
+            " triangles close the front by its constrained Delaunay triangulation");
+    }
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
 MeshRun2 run_advancing_front_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
     AdvancingFrontDelaunayOptions2 front;
     front.size = options.size;
@@ -93,6 +113,10 @@ constexpr std::array kGenerators{
                    "Yerry-Shephard/Baehmann: balanced quadtree leaves as 45-45-90 templates, "
                    "the band along the boundary by a refined constrained Delaunay triangulation",
                    false, true, &run_quadtree},
+    MeshGenerator2{"advancing-front",
+                   "Lo/Peraire/Lohner: shortest front edge first, apex on its median at the local "
+                   "size or a nearby front vertex, exact acceptance tests; needs a size",
+                   false, true, &run_advancing_front},
     MeshGenerator2{"advancing-front-delaunay",
                    "Mavriplis: shortest front edge first, a point at the circumradius bound, the "
                    "Tanemura-Merriam (Delaunay) choice among nearby front points; needs a size",

@@ -595,7 +595,8 @@ mesh() {
   # the key domain with its counters and construct_seconds; without --size a generator that
   # needs one takes the input's spacing.
   local generator kind
-  for generator in delaunay-refinement:delaunay frontal:delaunay advancing-front-delaunay:conforming quadtree:conforming; do
+  for generator in delaunay-refinement:delaunay quadtree:conforming advancing-front:conforming \
+    advancing-front-delaunay:conforming frontal:delaunay; do
     kind=${generator#*:}
     generator=${generator%%:*}
     run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/$generator.ele" --generator "$generator" --size 0.3 \

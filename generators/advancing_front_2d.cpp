@@ -1,0 +1,859 @@
+// SPDX-License-Identifier: MIT
+// Advancing front (see advancing_front_2d.hpp).
+//
+// State: the points (the boundary's first, new ones appended); the front edges in one vector
+// (a removed edge is marked dead, its slot never reused), each alive edge listed in its tail's
+// out-list (the front edges leaving a vertex: one, or more where the front pinches) and in a
+// loose quadtree; a min-heap of (squared length, edge); the edges postponed in this round.
+// A round drains the heap; then the postponed edges (by then the whole front) go back into it
+// with one attempt more, so each retry sees the front its neighbours left.
+#include "generators/advancing_front_2d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "generators/domain_boundary_2d.hpp"
+#include "generators/domain_mesh_2d.hpp"
+#include "predicates/errors.hpp"
+#include "predicates/orient2d.hpp"
+#include "triangulation/angles_2d.hpp"
+
+namespace exactmesh::generators {
+
+namespace {
+
+namespace tri = exactmesh::triangulation;
+using predicates::Sign;
+using tri::kNone;
+using tri::VertIdx;
+using EdgeId = std::uint32_t;
+
+/// A closed axis-parallel box.
+struct Box {
+    double x0, y0, x1, y1;
+};
+
+bool boxes_meet(const Box& p, const Box& q) {
+    return p.x0 <= q.x1 && q.x0 <= p.x1 && p.y0 <= q.y1 && q.y0 <= p.y1;
+}
+
+bool box_holds(const Box& box, const double* p) {
+    return box.x0 <= p[0] && p[0] <= box.x1 && box.y0 <= p[1] && p[1] <= box.y1;
+}
+
+/// A loose quadtree of front edges [Ulrich00, "Loose octrees", Game Programming Gems §4.11]: an
+/// edge of extent e (the larger side of its bounding box) lives in the deepest node whose cell
+/// is at least 2e wide (or at the deepest level), the one holding its first end point; a node's
+/// loose cell (its cell grown by one cell on each side) then holds the bounding box of every
+/// edge it lists. Computed relative to a root square whose side is a power of two, so cell
+/// bounds are exact and the roundings (of the offsets from the root corner, within 2^-52 of the
+/// side) stay far below the half cell of slack left (a cell is at least 2^-48 of the side).
+/// Queries are conservative: the caller filters the edges they return by their exact bounding
+/// boxes.
+class EdgeQuadtree {
+  public:
+    EdgeQuadtree(double x0, double y0, double side) : x0_(x0), y0_(y0), side_(side) {
+        nodes_.emplace_back();
+        for (std::uint32_t level = 0; level <= kMaxLevel; ++level)
+            cell_[level] = std::ldexp(side, -static_cast<int>(level));
+    }
+
+    void insert(EdgeId e, const double* a, const double* b) {
+        const double extent = std::max(std::fabs(b[0] - a[0]), std::fabs(b[1] - a[1]));
+        std::uint32_t level = 0;
+        double cell = side_;
+        while (level < kMaxLevel && 0.25 * cell >= extent) {
+            cell *= 0.5;
+            ++level;
+        }
+        const double cells = std::ldexp(1.0, static_cast<int>(level));
+        const auto index = [&](double offset) {
+            return static_cast<std::uint64_t>(
+                std::clamp(std::floor(offset / cell), 0.0, cells - 1));
+        };
+        const std::uint64_t ix = index(a[0] - x0_), iy = index(a[1] - y0_);
+        std::uint32_t node = 0;
+        ++nodes_[0].count;
+        for (std::uint32_t l = 1; l <= level; ++l) {
+            const std::uint64_t cx = ix >> (level - l), cy = iy >> (level - l);
+            const std::size_t slot = (cx & 1) + 2 * (cy & 1);
+            std::uint32_t child = nodes_[node].child[slot];
+            if (child == kNone) {
+                child = static_cast<std::uint32_t>(nodes_.size());
+                Node fresh;
+                fresh.parent = node;
+                fresh.level = l;
+                fresh.ix = cx;
+                fresh.iy = cy;
+                nodes_.push_back(fresh);
+                nodes_[node].child[slot] = child;
+            }
+            node = child;
+            ++nodes_[node].count;
+        }
+        if (e >= node_of_.size()) {
+            node_of_.resize(std::size_t{e} + 1, kNone);
+            next_.resize(node_of_.size(), kNone);
+            prev_.resize(node_of_.size(), kNone);
+        }
+        node_of_[e] = node;
+        prev_[e] = kNone;
+        next_[e] = nodes_[node].first;
+        if (next_[e] != kNone) prev_[next_[e]] = e;
+        nodes_[node].first = e;
+    }
+
+    void remove(EdgeId e) {
+        const std::uint32_t node = node_of_[e];
+        if (prev_[e] != kNone) {
+            next_[prev_[e]] = next_[e];
+        } else {
+            nodes_[node].first = next_[e];
+        }
+        if (next_[e] != kNone) prev_[next_[e]] = prev_[e];
+        node_of_[e] = kNone;
+        for (std::uint32_t n = node; n != kNone; n = nodes_[n].parent) --nodes_[n].count;
+    }
+
+    /// Calls visit(e) for every stored edge whose bounding box may meet `box` (a superset).
+    template <class Visit>
+    void query(const Box& box, Visit&& visit) {
+        const double qx0 = box.x0 - x0_, qx1 = box.x1 - x0_, qy0 = box.y0 - y0_, qy1 = box.y1 - y0_;
+        stack_.clear();
+        if (nodes_[0].count > 0) stack_.push_back(0);
+        while (!stack_.empty()) {
+            const Node& node = nodes_[stack_.back()];
+            stack_.pop_back();
+            const double cell = cell_[node.level];
+            const double lx = static_cast<double>(node.ix) * cell,
+                         ly = static_cast<double>(node.iy) * cell;
+            if (lx - cell > qx1 || lx + 2 * cell < qx0 || ly - cell > qy1 || ly + 2 * cell < qy0) {
+                continue;
+            }
+            for (EdgeId e = node.first; e != kNone; e = next_[e]) visit(e);
+            for (const std::uint32_t child : node.child) {
+                if (child != kNone && nodes_[child].count > 0) stack_.push_back(child);
+            }
+        }
+    }
+
+  private:
+    static constexpr std::uint32_t kMaxLevel = 48;
+    struct Node {
+        std::array<std::uint32_t, 4> child{kNone, kNone, kNone, kNone};
+        std::uint32_t parent = kNone;
+        std::uint32_t first = kNone;  // the edges listed here (next_/prev_ chain)
+        std::uint32_t count = 0;      // edges in the subtree
+        std::uint32_t level = 0;
+        std::uint64_t ix = 0, iy = 0;
+    };
+    double x0_, y0_, side_;
+    std::array<double, kMaxLevel + 1> cell_{};  // cell widths by level
+    std::vector<Node> nodes_;
+    std::vector<std::uint32_t> node_of_, next_, prev_;
+    std::vector<std::uint32_t> stack_;
+};
+
+struct FrontEdge {
+    VertIdx a, b;
+    EdgeId next_out = kNone;  // the next front edge leaving a
+    std::uint32_t attempts = 0;
+    bool alive = true;
+};
+
+/// The front edges and vertices near a base edge: every alive front edge whose bounding box
+/// meets `box`, and their end points inside it.
+struct Neighbourhood {
+    Box box{};
+    std::vector<EdgeId> edges;
+    std::vector<VertIdx> vertices;
+};
+
+struct Candidate {
+    double key;
+    VertIdx v;
+};
+
+/// A candidate's order key, never NaN (a rounded-to-zero denominator or an overflow puts the
+/// candidate last instead of breaking the sort's ordering).
+double sort_key(double key) {
+    return std::isnan(key) ? std::numeric_limits<double>::infinity() : key;
+}
+
+class AdvancingFront {
+  public:
+    AdvancingFront(const DomainBoundary2& boundary, const AdvancingFrontOptions2& options,
+                   AdvancingFrontCounters2& counters)
+        : boundary_(boundary),
+          options_(options),
+          counters_(counters),
+          xy_(boundary.xy),
+          quadtree_(make_quadtree(boundary.xy)) {
+        out_head_.assign(xy_.size() / 2, kNone);
+        stamp_.assign(xy_.size() / 2, 0);
+        tested_.assign(xy_.size() / 2, 0);
+        for (std::size_t e = 0; 2 * e + 1 < boundary.front.size(); ++e)
+            add_edge(boundary.front[2 * e], boundary.front[2 * e + 1]);
+        check_initial_front();
+        budget_ = options.max_triangles != 0 ? options.max_triangles : automatic_budget();
+    }
+
+    void run() {
+        std::vector<EdgeId> postponed;
+        std::uint64_t round_start = 0;
+        for (;;) {
+            while (!heap_.empty()) {
+                const EdgeId e = heap_.top().second;
+                heap_.pop();
+                if (!edges_[e].alive) continue;
+                if (triangles_.size() / 3 >= budget_ || xy_.size() / 2 >= tri::kMaxPoints) {
+                    close_front();
+                    return;
+                }
+                if (!advance(e)) {
+                    ++edges_[e].attempts;
+                    ++counters_.postponed_edges;
+                    postponed.push_back(e);
+                }
+            }
+            std::erase_if(postponed, [&](EdgeId e) { return !edges_[e].alive; });
+            if (postponed.empty()) return;
+            const bool progress = triangles_.size() / 3 > round_start;
+            const bool exhausted = std::all_of(postponed.begin(), postponed.end(), [&](EdgeId e) {
+                return edges_[e].attempts > options_.local_attempts;
+            });
+            // Never expected (the wide search always succeeds), but a front that stopped
+            // moving is closed rather than retried forever.
+            if (!progress && exhausted) {
+                close_front();
+                return;
+            }
+            round_start = triangles_.size() / 3;
+            for (const EdgeId e : postponed) push(e);
+            postponed.clear();
+        }
+    }
+
+    std::vector<double> take_points() { return std::move(xy_); }
+    std::vector<VertIdx> take_triangles() { return std::move(triangles_); }
+
+  private:
+    const DomainBoundary2& boundary_;
+    const AdvancingFrontOptions2& options_;
+    AdvancingFrontCounters2& counters_;
+    std::vector<double> xy_;
+    std::vector<VertIdx> triangles_;
+    std::vector<FrontEdge> edges_;
+    std::vector<EdgeId> out_head_;
+    double root_side_ = 0;  // before quadtree_: make_quadtree sets it
+    EdgeQuadtree quadtree_;
+    std::priority_queue<std::pair<double, EdgeId>, std::vector<std::pair<double, EdgeId>>,
+                        std::greater<>>
+        heap_;
+    std::uint64_t alive_edges_ = 0;
+    std::uint64_t budget_ = 0;
+    std::vector<std::uint32_t> stamp_, tested_;
+    std::uint32_t stamp_value_ = 0, tested_value_ = 0;
+    Neighbourhood near_;
+    std::vector<Candidate> candidates_;
+
+    const double* point(VertIdx v) const { return xy_.data() + 2 * std::size_t{v}; }
+
+    Sign orient(VertIdx a, VertIdx b, VertIdx c) {
+        ++counters_.orient_calls;
+        return predicates::orient2d(point(a), point(b), point(c));
+    }
+
+    EdgeQuadtree make_quadtree(const std::vector<double>& xy) {
+        double x0 = xy[0], y0 = xy[1], x1 = xy[0], y1 = xy[1];
+        for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
+            x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]);
+            y0 = std::min(y0, xy[i + 1]), y1 = std::max(y1, xy[i + 1]);
+        }
+        const double extent = std::max(x1 - x0, y1 - y0);
+        if (!std::isfinite(extent) || extent >= std::ldexp(1.0, 1020)) {
+            throw InputError(
+                "advancing front: the domain's extent overflows a double (coordinates from " +
+                std::to_string(x0) + " to " + std::to_string(x1) + ")");
+        }
+        // The smallest power of two above the extent (a degenerate extent cannot occur: the
+        // domain has area).
+        root_side_ = std::ldexp(1.0, std::ilogb(std::max(extent, std::ldexp(1.0, -1000))) + 1);
+        return EdgeQuadtree(x0, y0, root_side_);
+    }
+
+    /// The triangle count the size asks for on triangle (p, q, r): area / (area of an
+    /// equilateral triangle at the smallest size sampled at its corners and centroid), the
+    /// triangle split in four while it is wider than 8 such sizes and holds more than 16 (at
+    /// most 8 levels), so that a small size inside a large triangle of the domain's CDT is not
+    /// missed (a sliver of the CDT stops splitting when its count is small).
+    double triangle_estimate(const std::array<double, 2>& p, const std::array<double, 2>& q,
+                             const std::array<double, 2>& r, int depth) const {
+        const double area =
+            0.5 * std::fabs((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
+        const double h = std::min(
+            {options_.size(p[0], p[1]), options_.size(q[0], q[1]), options_.size(r[0], r[1]),
+             options_.size((p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3)});
+        if (!(h > 0) || !std::isfinite(h) || !(area > 0)) return 0;
+        const double width =
+            std::max({std::hypot(q[0] - p[0], q[1] - p[1]), std::hypot(r[0] - q[0], r[1] - q[1]),
+                      std::hypot(p[0] - r[0], p[1] - r[1])});
+        const double count = area / (0.43 * h * h);
+        if (depth >= 8 || width <= 8 * h || count <= 16) return count;
+        auto mid = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
+            return std::array<double, 2>{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
+        };
+        const auto pq = mid(p, q), qr = mid(q, r), rp = mid(r, p);
+        return triangle_estimate(p, pq, rp, depth + 1) + triangle_estimate(pq, q, qr, depth + 1) +
+               triangle_estimate(rp, qr, r, depth + 1) + triangle_estimate(pq, qr, rp, depth + 1);
+    }
+
+    /// 8 times the triangle count the size function asks for (triangle_estimate over the
+    /// domain's CDT) plus 4 per boundary edge and 4096: a front that makes that many has run
+    /// away (ever smaller triangles), and its closure ends the run.
+    std::uint64_t automatic_budget() const {
+        const tri::Triangulation2& mesh = boundary_.cdt.mesh;
+        double estimate = 0;
+        for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+            std::array<std::array<double, 2>, 3> corner;
+            for (unsigned k = 0; k < 3; ++k) {
+                const double* p = mesh.point(mesh.triangles[3 * t + k]);
+                corner[k] = {p[0], p[1]};
+            }
+            estimate += triangle_estimate(corner[0], corner[1], corner[2], 0);
+        }
+        const double budget =
+            8 * estimate + 4 * static_cast<double>(boundary_.front.size() / 2) + 4096;
+        return static_cast<std::uint64_t>(std::min(budget, 1e15));
+    }
+
+    double local_size(double x, double y) const {
+        const double h = options_.size(x, y);
+        if (!(h > 0)) {
+            throw InputError("advancing front: the size function is " + std::to_string(h) +
+                             " at (" + std::to_string(x) + ", " + std::to_string(y) + "), not > 0");
+        }
+        return h;
+    }
+
+    // ---- the front ----------------------------------------------------------------------
+
+    void push(EdgeId e) {
+        const double* a = point(edges_[e].a);
+        const double* b = point(edges_[e].b);
+        const double dx = b[0] - a[0], dy = b[1] - a[1];
+        heap_.push({dx * dx + dy * dy, e});
+    }
+
+    void add_edge(VertIdx a, VertIdx b) {
+        const auto e = static_cast<EdgeId>(edges_.size());
+        edges_.push_back({a, b, out_head_[a], 0, true});
+        out_head_[a] = e;
+        quadtree_.insert(e, point(a), point(b));
+        push(e);
+        ++alive_edges_;
+        counters_.max_front_edges = std::max(counters_.max_front_edges, alive_edges_);
+    }
+
+    void kill_edge(EdgeId e) {
+        FrontEdge& edge = edges_[e];
+        edge.alive = false;
+        EdgeId* link = &out_head_[edge.a];
+        while (*link != e) link = &edges_[*link].next_out;
+        *link = edge.next_out;
+        quadtree_.remove(e);
+        --alive_edges_;
+    }
+
+    /// The alive front edge u -> v, or kNone.
+    EdgeId find_out(VertIdx u, VertIdx v) const {
+        for (EdgeId e = out_head_[u]; e != kNone; e = edges_[e].next_out) {
+            if (edges_[e].b == v) return e;
+        }
+        return kNone;
+    }
+
+    Box edge_box(EdgeId e) const {
+        const double* a = point(edges_[e].a);
+        const double* b = point(edges_[e].b);
+        return {std::min(a[0], b[0]), std::min(a[1], b[1]), std::max(a[0], b[0]),
+                std::max(a[1], b[1])};
+    }
+
+    /// near_: the alive front edges whose bounding box meets `box` (exact), their end points
+    /// in the box.
+    void gather(const Box& box) {
+        ++counters_.front_queries;
+        near_.box = box;
+        near_.edges.clear();
+        near_.vertices.clear();
+        if (++stamp_value_ == 0) {
+            std::fill(stamp_.begin(), stamp_.end(), 0);
+            stamp_value_ = 1;
+        }
+        quadtree_.query(box, [&](EdgeId e) {
+            if (!boxes_meet(edge_box(e), box)) return;
+            near_.edges.push_back(e);
+            for (const VertIdx v : {edges_[e].a, edges_[e].b}) {
+                if (stamp_[v] != stamp_value_ && box_holds(box, point(v))) {
+                    stamp_[v] = stamp_value_;
+                    near_.vertices.push_back(v);
+                }
+            }
+        });
+    }
+
+    /// The initial front comes from the CDT's pieces, split at rounded points: check that no
+    /// two of its edges meet away from shared ends (an ulp-wide bend could, in principle).
+    void check_initial_front() {
+        for (EdgeId e = 0; e < edges_.size(); ++e) {
+            gather(edge_box(e));
+            for (const EdgeId f : near_.edges) {
+                if (f > e && edges_meet(edges_[e].a, edges_[e].b, edges_[f].a, edges_[f].b)) {
+                    throw GeometryError(
+                        "advancing front: boundary pieces " + std::to_string(edges_[e].a) + "-" +
+                        std::to_string(edges_[e].b) + " and " + std::to_string(edges_[f].a) + "-" +
+                        std::to_string(edges_[f].b) + " meet away from their ends after rounding");
+                }
+            }
+        }
+    }
+
+    // ---- exact tests ------------------------------------------------------------------------
+
+    /// Do segments s0-s1 and t0-t1 (distinct vertices at distinct points) meet anywhere but at
+    /// a shared end? The same segment does not count (a slit's other side).
+    bool edges_meet(VertIdx s0, VertIdx s1, VertIdx t0, VertIdx t1) {
+        ++counters_.crossing_tests;
+        if ((s0 == t0 && s1 == t1) || (s0 == t1 && s1 == t0)) return false;
+        if (s0 == t0 || s0 == t1 || s1 == t0 || s1 == t1) {
+            // Sharing end o: they overlap exactly when collinear and leaving o the same way.
+            const VertIdx o = (s0 == t0 || s0 == t1) ? s0 : s1;
+            const VertIdx s = o == s0 ? s1 : s0, t = o == t0 ? t1 : t0;
+            return orient(o, s, t) == Sign::Zero &&
+                   triangulation::corner_dot_sign(point(o), point(s), point(t)) == Sign::Positive;
+        }
+        const Sign o1 = orient(s0, s1, t0), o2 = orient(s0, s1, t1);
+        if (o1 == o2 && o1 != Sign::Zero) return false;
+        const Sign o3 = orient(t0, t1, s0), o4 = orient(t0, t1, s1);
+        if (o3 == o4 && o3 != Sign::Zero) return false;
+        if (o1 == Sign::Zero && o2 == Sign::Zero) {
+            // Collinear: their lexicographic extents overlap?
+            auto less = [&](VertIdx u, VertIdx v) {
+                return point(u)[0] < point(v)[0] ||
+                       (point(u)[0] == point(v)[0] && point(u)[1] < point(v)[1]);
+            };
+            const VertIdx slo = less(s0, s1) ? s0 : s1, shi = slo == s0 ? s1 : s0;
+            const VertIdx tlo = less(t0, t1) ? t0 : t1, thi = tlo == t0 ? t1 : t0;
+            return !less(shi, tlo) && !less(thi, slo);
+        }
+        return true;
+    }
+
+    bool in_closed_triangle(VertIdx w, VertIdx a, VertIdx b, VertIdx c) {
+        ++counters_.containment_tests;
+        return orient(a, b, w) != Sign::Negative && orient(b, c, w) != Sign::Negative &&
+               orient(c, a, w) != Sign::Negative;
+    }
+
+    struct Matches {
+        EdgeId bc = kNone, ca = kNone;
+    };
+
+    /// May triangle (a, b, c) be cut off the front at base edge a -> b? Every test exact; near_
+    /// must hold every front edge whose bounding box meets the triangle's.
+    bool acceptable(EdgeId base, VertIdx c, Matches& m) {
+        const VertIdx a = edges_[base].a, b = edges_[base].b;
+        if (!box_holds(near_.box, point(c))) return false;  // outside what near_ covers
+        if (orient(a, b, c) != Sign::Positive) return false;
+        m.bc = find_out(b, c);
+        m.ca = find_out(c, a);
+        // Front edge c -> b without b -> c: the triangle would lie on its meshed side.
+        if (m.bc == kNone && find_out(c, b) != kNone) return false;
+        if (m.ca == kNone && find_out(a, c) != kNone) return false;
+        const double* pa = point(a);
+        const double* pb = point(b);
+        const double* pc = point(c);
+        const Box box{std::min({pa[0], pb[0], pc[0]}), std::min({pa[1], pb[1], pc[1]}),
+                      std::max({pa[0], pb[0], pc[0]}), std::max({pa[1], pb[1], pc[1]})};
+        for (const EdgeId f : near_.edges) {
+            if (f == base || f == m.bc || f == m.ca || !boxes_meet(edge_box(f), box)) continue;
+            const VertIdx u = edges_[f].a, v = edges_[f].b;
+            for (const VertIdx w : {u, v}) {
+                if (w != a && w != b && w != c && in_closed_triangle(w, a, b, c)) return false;
+            }
+            if (m.bc == kNone && edges_meet(b, c, u, v)) return false;
+            if (m.ca == kNone && edges_meet(c, a, u, v)) return false;
+        }
+        return true;
+    }
+
+    /// Cuts triangle (a, b, c) off the front.
+    void take(EdgeId base, VertIdx c, const Matches& m, bool new_point) {
+        const VertIdx a = edges_[base].a, b = edges_[base].b;
+        triangles_.insert(triangles_.end(), {a, b, c});
+        ++counters_.triangles;
+        ++(new_point ? counters_.new_points : counters_.reused_points);
+        kill_edge(base);
+        if (m.bc != kNone) {
+            kill_edge(m.bc);
+        } else {
+            add_edge(c, b);
+        }
+        if (m.ca != kNone) {
+            kill_edge(m.ca);
+        } else {
+            add_edge(a, c);
+        }
+    }
+
+    // ---- candidates ---------------------------------------------------------------------
+
+    /// Squared distance from (x, y) to segment u-v (double precision: placement only).
+    double distance2_to_edge(double x, double y, EdgeId e) const {
+        const double* u = point(edges_[e].a);
+        const double* v = point(edges_[e].b);
+        const double dx = v[0] - u[0], dy = v[1] - u[1], length2 = dx * dx + dy * dy;
+        const double t =
+            length2 > 0 ? std::clamp(((x - u[0]) * dx + (y - u[1]) * dy) / length2, 0.0, 1.0) : 0.0;
+        const double ex = x - (u[0] + t * dx), ey = y - (u[1] + t * dy);
+        return ex * ex + ey * ey;
+    }
+
+    /// May a new point go at (x, y): `slack` times the option distances (times delta) away
+    /// from the front vertices and edges near it (ab's own ends and ab excepted)? Whether it
+    /// lies in the domain needs no test of its own: a triangle the exact tests accept lies in
+    /// the unmeshed region, which is inside the domain (a point-location per candidate cost a
+    /// fifth of the run on naca0012, the domain's CDT having long thin triangles).
+    bool placeable(EdgeId base, double x, double y, double delta, double slack) const {
+        if (!std::isfinite(x) || !std::isfinite(y)) return false;
+        const double vertex_gap = slack * options_.min_vertex_distance * delta;
+        const double edge_gap = slack * options_.min_edge_distance * delta;
+        for (const VertIdx w : near_.vertices) {
+            if (w == edges_[base].a || w == edges_[base].b) continue;
+            const double dx = point(w)[0] - x, dy = point(w)[1] - y;
+            if (dx * dx + dy * dy < vertex_gap * vertex_gap) return false;
+        }
+        for (const EdgeId f : near_.edges) {
+            if (f != base && distance2_to_edge(x, y, f) < edge_gap * edge_gap) return false;
+        }
+        return true;
+    }
+
+    /// Tries a new point at (x, y) as the apex.
+    bool try_point(EdgeId base, double x, double y, double delta, double slack) {
+        if (!placeable(base, x, y, delta, slack)) {
+            ++counters_.rejected_candidates;
+            return false;
+        }
+        const auto c = static_cast<VertIdx>(xy_.size() / 2);
+        xy_.push_back(x);
+        xy_.push_back(y);
+        out_head_.push_back(kNone);
+        stamp_.push_back(0);
+        tested_.push_back(0);
+        Matches m;
+        if (acceptable(base, c, m)) {
+            take(base, c, m, true);
+            return true;
+        }
+        xy_.resize(xy_.size() - 2);
+        out_head_.pop_back();
+        stamp_.pop_back();
+        tested_.pop_back();
+        ++counters_.rejected_candidates;
+        return false;
+    }
+
+    bool try_vertex(EdgeId base, VertIdx c) {
+        Matches m;
+        if (acceptable(base, c, m)) {
+            take(base, c, m, false);
+            return true;
+        }
+        ++counters_.rejected_candidates;
+        return false;
+    }
+
+    /// 4 sqrt(3) area / (sum of squared sides) of (a, b, c): 1 equilateral, 0 degenerate.
+    static double shape(const double* p, const double* q, const double* r) {
+        const double cross = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+        const double sides = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) +
+                             (r[0] - q[0]) * (r[0] - q[0]) + (r[1] - q[1]) * (r[1] - q[1]) +
+                             (p[0] - r[0]) * (p[0] - r[0]) + (p[1] - r[1]) * (p[1] - r[1]);
+        return sides > 0 ? 2 * std::sqrt(3.0) * cross / sides : 0;
+    }
+
+    /// One attempt at base edge e: local candidates on the first attempts, then the wide
+    /// search. True when a triangle was cut.
+    bool advance(EdgeId e) {
+        const VertIdx a = edges_[e].a, b = edges_[e].b;
+        const double* pa = point(a);
+        const double* pb = point(b);
+        const double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
+        const double length = std::hypot(dx, dy);
+        const double mx = 0.5 * pa[0] + 0.5 * pb[0], my = 0.5 * pa[1] + 0.5 * pb[1];
+        const double nx = -dy / length, ny = dx / length;  // unit normal into the front's left
+        auto side_of = [&](double h) {
+            return std::clamp(h, options_.min_side_ratio * length,
+                              options_.max_side_ratio * length);
+        };
+        auto height_of = [&](double delta) {
+            return std::sqrt(std::max(0.0, delta * delta - 0.25 * length * length));
+        };
+        // The size near the triangle: at the midpoint first, then at the centroid of the
+        // triangle that size gives (kept only when > 0 there: that centroid may lie outside the
+        // domain, where the size need not be defined).
+        double delta = side_of(local_size(mx, my));
+        double height = height_of(delta);
+        const double centroid_size = options_.size(mx + nx * height / 3, my + ny * height / 3);
+        if (centroid_size > 0) {
+            delta = side_of(centroid_size);
+            height = height_of(delta);
+        }
+        const double px = mx + nx * height, py = my + ny * height;
+        const std::uint32_t attempts = edges_[e].attempts;
+        if (attempts >= options_.local_attempts) return wide_search(e, std::max(length, delta));
+
+        const bool retry = attempts > 0;
+        const double reach = options_.search_radius * delta * (retry ? 2 : 1);
+        gather({std::min({pa[0], pb[0], px}) - reach, std::min({pa[1], pb[1], py}) - reach,
+                std::max({pa[0], pb[0], px}) + reach, std::max({pa[1], pb[1], py}) + reach});
+        // Front vertices near the ideal point, nearest first; the others later by shape.
+        candidates_.clear();
+        std::vector<Candidate> farther;
+        for (const VertIdx v : near_.vertices) {
+            if (v == a || v == b || orient(a, b, v) != Sign::Positive) continue;
+            const double distance = std::hypot(point(v)[0] - px, point(v)[1] - py);
+            const double s = shape(point(a), point(b), point(v));
+            if (!retry && s < options_.min_shape) continue;
+            if (distance <= options_.reuse_radius * delta) {
+                candidates_.push_back({sort_key(distance), v});
+            } else {
+                farther.push_back({sort_key(-s), v});
+            }
+        }
+        auto by_key = [](const Candidate& p, const Candidate& q) {
+            return p.key < q.key || (p.key == q.key && p.v < q.v);
+        };
+        std::sort(candidates_.begin(), candidates_.end(), by_key);
+        if (!retry) {
+            for (const Candidate& c : candidates_) {
+                if (try_vertex(e, c.v)) return true;
+            }
+            if (try_point(e, px, py, delta, 1.0)) return true;
+            std::sort(farther.begin(), farther.end(), by_key);
+            for (const Candidate& c : farther) {
+                if (try_vertex(e, c.v)) return true;
+            }
+            return false;
+        }
+        // A retry: every front vertex near by and new points ever nearer ab (with ever smaller
+        // distances to the front), best shape first.
+        candidates_.insert(candidates_.end(), farther.begin(), farther.end());
+        for (Candidate& c : candidates_) c.key = sort_key(-shape(point(a), point(b), point(c.v)));
+        constexpr std::array<double, 4> kHeights{1.0, 0.6, 0.35, 0.2}, kSlack{1.0, 0.5, 0.5, 0.25};
+        for (std::uint32_t k = 0; k < kHeights.size(); ++k) {
+            const double q[2] = {mx + nx * height * kHeights[k], my + ny * height * kHeights[k]};
+            candidates_.push_back({sort_key(-shape(point(a), point(b), q)), kNone - 1 - k});
+        }
+        std::sort(candidates_.begin(), candidates_.end(), by_key);
+        for (const Candidate& c : candidates_) {
+            if (c.v < kNone - kHeights.size()) {
+                if (try_vertex(e, c.v)) return true;
+            } else {
+                const std::uint32_t k = kNone - 1 - c.v;
+                if (try_point(e, mx + nx * height * kHeights[k], my + ny * height * kHeights[k],
+                              delta, kSlack[k]))
+                    return true;
+            }
+        }
+        return false;
+    }
+
+    /// Every front vertex left of ab in boxes around it that double until they cover the
+    /// domain, best (smallest circumcircle bulge beyond ab: Delaunay-like) first. One of them
+    /// is acceptable: the apex of the constrained Delaunay triangle on ab inside the unmeshed
+    /// region (proofs/invariants/advancing_front_2d.md).
+    bool wide_search(EdgeId e, double reach) {
+        const VertIdx a = edges_[e].a, b = edges_[e].b;
+        const double* pa = point(a);
+        const double* pb = point(b);
+        const double mx = 0.5 * pa[0] + 0.5 * pb[0], my = 0.5 * pa[1] + 0.5 * pb[1];
+        const double nx = -(pb[1] - pa[1]), ny = pb[0] - pa[0];
+        const double quarter = 0.25 * (nx * nx + ny * ny);
+        if (++tested_value_ == 0) {
+            std::fill(tested_.begin(), tested_.end(), 0);
+            tested_value_ = 1;
+        }
+        for (;;) {
+            gather({std::min(pa[0], pb[0]) - reach, std::min(pa[1], pb[1]) - reach,
+                    std::max(pa[0], pb[0]) + reach, std::max(pa[1], pb[1]) + reach});
+            candidates_.clear();
+            for (const VertIdx v : near_.vertices) {
+                if (v == a || v == b || tested_[v] == tested_value_) continue;
+                tested_[v] = tested_value_;
+                if (orient(a, b, v) != Sign::Positive) continue;
+                // The circumcenter of abv is m + t n: t = (|v - m|^2 - |ab|^2 / 4) / (2 (v - m).n).
+                const double vx = point(v)[0] - mx, vy = point(v)[1] - my;
+                const double along = vx * nx + vy * ny;
+                candidates_.push_back({sort_key((vx * vx + vy * vy - quarter) / (2 * along)), v});
+            }
+            std::sort(candidates_.begin(), candidates_.end(),
+                      [](const Candidate& p, const Candidate& q) {
+                          return p.key < q.key || (p.key == q.key && p.v < q.v);
+                      });
+            for (const Candidate& c : candidates_) {
+                if (try_vertex(e, c.v)) {
+                    ++counters_.wide_searches;
+                    return true;
+                }
+            }
+            if (reach > 2 * root_side_) return false;
+            reach *= 2;
+        }
+    }
+
+    // ---- closure ------------------------------------------------------------------------
+
+    /// Triangulates what the front encloses by the constrained Delaunay triangulation of its
+    /// edges: the triangles reached from the left side of a front edge without crossing one.
+    void close_front() {
+        std::vector<VertIdx> local(xy_.size() / 2, kNone), global;
+        std::vector<double> xy;
+        std::vector<VertIdx> segments, directed;
+        auto local_of = [&](VertIdx v) {
+            if (local[v] == kNone) {
+                local[v] = static_cast<VertIdx>(global.size());
+                global.push_back(v);
+                xy.insert(xy.end(), {point(v)[0], point(v)[1]});
+            }
+            return local[v];
+        };
+        for (EdgeId e = 0; e < edges_.size(); ++e) {
+            if (!edges_[e].alive) continue;
+            const VertIdx u = local_of(edges_[e].a), v = local_of(edges_[e].b);
+            directed.insert(directed.end(), {u, v});
+            // A slit's two sides are one segment.
+            if (edges_[e].a < edges_[e].b || find_out(edges_[e].b, edges_[e].a) == kNone)
+                segments.insert(segments.end(), {u, v});
+        }
+        if (directed.empty()) return;
+        ++counters_.closure_runs;
+        tri::Cdt2Options options = options_.cdt;
+        options.remove_exterior = false;
+        options.recovery = tri::SegmentRecovery::Swap;
+        const tri::Pslg pslg{xy, segments, {}, {}};
+        const tri::Cdt2Result cdt = tri::constrained_delaunay_2d(pslg, options);
+        const tri::Triangulation2& mesh = cdt.mesh;
+        if (mesh.vertex_count() != global.size()) {
+            throw InternalError("advancing front: the closure's CDT added vertices (front edges " +
+                                std::to_string(directed.size() / 2) + ")");
+        }
+        std::unordered_map<std::uint64_t, tri::TriIdx> left_of;
+        left_of.reserve(mesh.triangles.size());
+        for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+            for (unsigned k = 0; k < 3; ++k) {
+                left_of[(std::uint64_t{mesh.triangles[3 * t + k]} << 32) |
+                        mesh.triangles[3 * t + (k + 1) % 3]] = t;
+            }
+        }
+        std::vector<std::uint8_t> inside(mesh.triangle_count(), 0);
+        std::vector<tri::TriIdx> stack;
+        for (std::size_t i = 0; i + 1 < directed.size(); i += 2) {
+            const auto found = left_of.find((std::uint64_t{directed[i]} << 32) | directed[i + 1]);
+            if (found == left_of.end()) {
+                throw InternalError("advancing front: front edge " +
+                                    std::to_string(global[directed[i]]) + " -> " +
+                                    std::to_string(global[directed[i + 1]]) +
+                                    " is not an edge of the closure's CDT");
+            }
+            if (!inside[found->second]) {
+                inside[found->second] = 1;
+                stack.push_back(found->second);
+            }
+        }
+        while (!stack.empty()) {
+            const tri::TriIdx t = stack.back();
+            stack.pop_back();
+            for (int k = 0; k < 3; ++k) {
+                const tri::TriIdx n = mesh.neighbors[3 * std::size_t{t} + static_cast<unsigned>(k)];
+                if (n != kNone && !mesh.is_constrained(t, k) && !inside[n]) {
+                    inside[n] = 1;
+                    stack.push_back(n);
+                }
+            }
+        }
+        for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+            if (!inside[t]) continue;
+            for (unsigned k = 0; k < 3; ++k)
+                triangles_.push_back(global[mesh.triangles[3 * t + k]]);
+            ++counters_.closure_triangles;
+            ++counters_.triangles;
+        }
+        for (EdgeId e = 0; e < edges_.size(); ++e) {
+            if (edges_[e].alive) kill_edge(e);
+        }
+    }
+};
+
+void validate(const AdvancingFrontOptions2& o) {
+    auto positive = [](double v) { return std::isfinite(v) && v > 0; };
+    if (!o.size.bounded()) {
+        throw InputError("advancing front: a size function is required (the size is unbounded)");
+    }
+    if (!positive(o.min_side_ratio) || !positive(o.max_side_ratio) || o.min_side_ratio <= 0.5 ||
+        o.max_side_ratio < o.min_side_ratio) {
+        throw InputError("advancing front: side ratios must satisfy 0.5 < min (" +
+                         std::to_string(o.min_side_ratio) + ") <= max (" +
+                         std::to_string(o.max_side_ratio) + ")");
+    }
+    if (!positive(o.reuse_radius) || !positive(o.search_radius) || !(o.min_vertex_distance >= 0) ||
+        !(o.min_edge_distance >= 0) || !std::isfinite(o.min_vertex_distance) ||
+        !std::isfinite(o.min_edge_distance) || !(o.min_shape >= 0 && o.min_shape <= 1)) {
+        throw InputError(
+            "advancing front: reuse and search radii must be finite and > 0, distances finite "
+            "and >= 0, min_shape in [0, 1]");
+    }
+    if (o.local_attempts == 0) {
+        throw InputError("advancing front: local_attempts must be at least 1");
+    }
+}
+
+}  // namespace
+
+AdvancingFrontResult2 advancing_front_2d(const tri::Pslg& pslg,
+                                         const AdvancingFrontOptions2& options) {
+    validate(options);
+    const DomainBoundary2 boundary = discretize_domain_boundary(pslg, options.size, options.cdt);
+    AdvancingFrontResult2 result;
+    AdvancingFront front(boundary, options, result.counters);
+    front.run();
+    result.mesh = domain_mesh_result(boundary, front.take_points(), front.take_triangles());
+    return result;
+}
+
+std::vector<std::pair<std::string, std::uint64_t>> counter_list(const AdvancingFrontCounters2& c) {
+    return {{"triangles", c.triangles},
+            {"new_points", c.new_points},
+            {"reused_points", c.reused_points},
+            {"rejected_candidates", c.rejected_candidates},
+            {"crossing_tests", c.crossing_tests},
+            {"containment_tests", c.containment_tests},
+            {"postponed_edges", c.postponed_edges},
+            {"wide_searches", c.wide_searches},
+            {"front_queries", c.front_queries},
+            {"max_front_edges", c.max_front_edges},
+            {"closure_runs", c.closure_runs},
+            {"closure_triangles", c.closure_triangles},
+            {"orient_calls", c.orient_calls}};
+}
+
+}  // namespace exactmesh::generators
