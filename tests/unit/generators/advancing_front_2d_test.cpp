@@ -22,6 +22,7 @@
 
 #include "generators/advancing_front_2d.hpp"
 #include "generators/domain_boundary_2d.hpp"
+#include "generators/pslg_inputs.hpp"
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
 #include "predicates/errors.hpp"
@@ -208,6 +209,27 @@ TEST(Generators_AdvancingFront, GradedSizesFromPointAndLineSources) {
         }
     }
     EXPECT_GT(near, 3u);
+}
+
+TEST(Generators_AdvancingFront, GridLinesBesideFeaturesAtTheResolutionOfDoubles) {
+    // Rounded crossings one ulp from lattice vertices: before discretize_domain_boundary kept
+    // its split points in the triangles beside their piece, some landed on other pieces there
+    // and these seeds ended in a GeometryError. Now each gives a valid mesh (dangling segments:
+    // no closed-loop test).
+    for (const std::uint64_t seed : {11, 14, 16, 25, 41, 54}) {
+        const gen::PslgInput p =
+            gen::generate_pslg(gen::PslgDistribution::GridLines,
+                               60 + 20 * static_cast<std::uint32_t>(seed % 5), 30, seed);
+        double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+        for (std::size_t i = 0; i + 1 < p.xy.size(); i += 2) {
+            x0 = std::min(x0, p.xy[i]), x1 = std::max(x1, p.xy[i]);
+            y0 = std::min(y0, p.xy[i + 1]), y1 = std::max(y1, p.xy[i + 1]);
+        }
+        const Meshed m = mesh({p.xy, p.segments, p.holes},
+                              gen::SizeFunction::uniform(std::max(x1 - x0, y1 - y0) / 30), false);
+        EXPECT_TRUE(m.check.ok) << "seed " << seed << ": " << m.check.problem;
+        EXPECT_GT(m.result.mesh.mesh.triangle_count(), 0u) << "seed " << seed;
+    }
 }
 
 TEST(Generators_AdvancingFront, DegenerateInputs) {
