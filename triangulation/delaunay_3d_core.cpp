@@ -218,12 +218,22 @@ Delaunay3Core::Location Delaunay3Core::walk_to(VertIdx p) {
         for (t = 0; mesh.is_dead(t); ++t) {
         }
     }
+    const VertIdx* const tv = mesh.tv.data();
+    const FaceIdx* const adj = mesh.adj.data();
+    const double* const q = mesh.point(p);
     // The face we came through has p strictly on this side: the walk does not test it again.
     FaceIdx entered = kNone;
-    if (mesh.is_infinite(t)) t = tet_of(mesh.adj[4 * std::size_t{t} + kInfiniteSlot]);
+    if (tv[4 * std::size_t{t} + kInfiniteSlot] == kInfinite) {
+        t = tet_of(adj[4 * std::size_t{t} + kInfiniteSlot]);
+    }
     for (;;) {
         ++counters.walk_steps;
-        if (mesh.is_infinite(t)) break;  // crossed a hull face that sees p
+        const VertIdx* v = &tv[4 * std::size_t{t}];
+        if (v[kInfiniteSlot] == kInfinite) break;  // crossed a hull face that sees p
+        // orient3d inline (the filter decides almost every call): the tetrahedron's corners
+        // are looked up once for its faces.
+        const double* corner[4] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                   mesh.point(v[3])};
         const std::uint32_t r = random_offset();
         unsigned zeros = 0;
         bool moved = false;
@@ -231,9 +241,12 @@ Delaunay3Core::Location Delaunay3Core::walk_to(VertIdx p) {
             const unsigned k = (r + i) & 3u;
             const FaceIdx f = 4 * t + k;
             if (f == entered) continue;
-            const Sign s = orient_replacing(t, k, p);
+            ++counters.orient_calls;
+            const unsigned* face = kFaceVertex[k];
+            const Sign s =
+                predicates::orient3d(corner[face[0]], corner[face[1]], corner[face[2]], q);
             if (s == Sign::Negative) {
-                entered = mesh.adj[f];
+                entered = adj[f];
                 t = tet_of(entered);
                 moved = true;
                 break;

@@ -91,22 +91,32 @@ void sort_by_keys(std::span<const std::uint32_t> keys, std::span<std::uint32_t> 
     }
 }
 
+/// Spreads the 10 low bits of x to every third bit (bit b to bit 3b).
+std::uint32_t spread_3(std::uint32_t x) {
+    x &= 0x3FFu;
+    x = (x | x << 16) & 0x030000FFu;
+    x = (x | x << 8) & 0x0300F00Fu;
+    x = (x | x << 4) & 0x030C30C3u;
+    x = (x | x << 2) & 0x09249249u;
+    return x;
+}
+
 /// Hilbert index of cell (x, y, z) of a 2^bits grid per axis: Skilling's transpose algorithm
-/// ("Programming the Hilbert curve", AIP Conf. Proc. 707, 2004), then the bits interleaved.
+/// ("Programming the Hilbert curve", AIP Conf. Proc. 707, 2004), then the bits interleaved
+/// (x's bit highest at each level). Branch-free: the choice between inverting and exchanging
+/// depends on coordinate bits, a coin toss for the branch predictor.
 std::uint32_t hilbert_key_3d(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
     constexpr int kBits = 10;
     std::uint32_t axes[3] = {x, y, z};
-    // Inverse undo of the excess work, from the top bit down.
+    // Inverse undo of the excess work, from the top bit down: invert the low bits of axis 0
+    // when bit q of axis i is set, else exchange them with those of axis i (a no-op for i = 0).
     for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1) {
         const std::uint32_t p = q - 1;
         for (int i = 0; i < 3; ++i) {
-            if (axes[i] & q) {
-                axes[0] ^= p;  // invert
-            } else {
-                const std::uint32_t t = (axes[0] ^ axes[i]) & p;  // exchange
-                axes[0] ^= t;
-                axes[i] ^= t;
-            }
+            const std::uint32_t set = 0u - ((axes[i] & q) != 0 ? 1u : 0u);
+            const std::uint32_t t = (axes[0] ^ axes[i]) & p & ~set;
+            axes[0] ^= (p & set) | t;
+            axes[i] ^= t;
         }
     }
     // Gray encode.
@@ -114,14 +124,10 @@ std::uint32_t hilbert_key_3d(std::uint32_t x, std::uint32_t y, std::uint32_t z) 
     axes[2] ^= axes[1];
     std::uint32_t t = 0;
     for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1) {
-        if (axes[2] & q) t ^= q - 1;
+        t ^= (q - 1) & (0u - ((axes[2] & q) != 0 ? 1u : 0u));
     }
     for (std::uint32_t& a : axes) a ^= t;
-    std::uint32_t key = 0;
-    for (int bit = kBits - 1; bit >= 0; --bit) {
-        for (const std::uint32_t a : axes) key = (key << 1) | ((a >> bit) & 1u);
-    }
-    return key;
+    return spread_3(axes[0]) << 2 | spread_3(axes[1]) << 1 | spread_3(axes[2]);
 }
 
 /// 3D Hilbert keys of all points on a 2^10 grid per axis over their bounding box.
@@ -145,8 +151,9 @@ std::vector<std::uint32_t> hilbert_keys_3d(std::span<const double> xyz) {
         return static_cast<std::uint32_t>(std::clamp(t, 0.0, 1.0) * 1023.0);
     };
     for (std::size_t i = 0; i < n; ++i) {
-        keys[i] = hilbert_key_3d(cell(xyz[3 * i], lo[0], half[0]), cell(xyz[3 * i + 1], lo[1], half[1]),
-                                 cell(xyz[3 * i + 2], lo[2], half[2]));
+        keys[i] =
+            hilbert_key_3d(cell(xyz[3 * i], lo[0], half[0]), cell(xyz[3 * i + 1], lo[1], half[1]),
+                           cell(xyz[3 * i + 2], lo[2], half[2]));
     }
     return keys;
 }
@@ -213,7 +220,8 @@ void hilbert_sort_3d(std::span<const double> xyz, std::span<std::uint32_t> indic
     if (indices.size() < 2) return;
     std::vector<double> subset(3 * indices.size());
     for (std::size_t k = 0; k < indices.size(); ++k) {
-        for (std::size_t c = 0; c < 3; ++c) subset[3 * k + c] = xyz[3 * std::size_t{indices[k]} + c];
+        for (std::size_t c = 0; c < 3; ++c)
+            subset[3 * k + c] = xyz[3 * std::size_t{indices[k]} + c];
     }
     const std::vector<std::uint32_t> keys = hilbert_keys_3d(subset);
     std::vector<std::uint32_t> local(indices.size());
