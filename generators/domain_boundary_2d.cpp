@@ -1,11 +1,20 @@
 // SPDX-License-Identifier: MIT
 // The domain's discretized boundary and point-in-domain queries (see domain_boundary_2d.hpp).
+// Split points are placed where the chains of different pieces cannot meet: on the piece, or
+// strictly inside the triangle (a, b, g) of a domain triangle (a, b, c) beside piece a - b, g its
+// rounded centroid (the CDT's triangles are disjoint, and so are the three parts of one), with
+// coordinates strictly monotone along the piece (PieceRegion); a sliver too thin for the rounded
+// points bends the chain at its third vertex, as ConstrainedTriangulation2 bends a segment at a
+// vertex within rounding. Invariants: the pieces form a PSLG whose pieces meet only at shared
+// ends, the front has the domain on its left. O(n) for n output points (a few orient2d each,
+// 49 more for a point moved); predicates: orient2d only.
 #include "generators/domain_boundary_2d.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "predicates/errors.hpp"
@@ -69,6 +78,159 @@ std::vector<Point> spaced_points(const Curve2& curve, double u0, double u1,
 
 std::uint64_t edge_key(tri::VertIdx a, tri::VertIdx b) {
     return (std::uint64_t{a} << 32) | b;
+}
+
+std::uint64_t undirected_key(tri::VertIdx a, tri::VertIdx b) {
+    return a < b ? edge_key(a, b) : edge_key(b, a);
+}
+
+predicates::Sign orient(const double* a, const double* b, const double* c) {
+    return predicates::orient2d(a, b, c);
+}
+
+/// The spacing of doubles at the larger magnitude of u and v (at least the smallest subnormal).
+double unit_in_last_place(double u, double v) {
+    const double m = std::max(std::abs(u), std::abs(v));
+    return std::max(std::nextafter(m, std::numeric_limits<double>::infinity()) - m,
+                    std::numeric_limits<double>::denorm_min());
+}
+
+/// Where the split points of one boundary piece a - b may go so that the discretized boundary
+/// stays a valid PSLG: on the open segment a - b, or strictly inside the triangle (a, b, g) of a
+/// domain triangle (a, b, c) beside the piece, g its rounded centroid (when strictly inside it;
+/// else that side holds no split point). Those open triangles are pairwise disjoint over all
+/// pieces (the CDT's triangles do not overlap; the three of one triangle share only g's spokes),
+/// so the chains of different pieces meet only at their ends; a chain whose coordinate along
+/// the piece's longer axis is strictly monotone is simple; a link from one side to the other
+/// crosses the line a - b strictly between a and b. Every test is an exact orient2d sign.
+class PieceRegion {
+  public:
+    /// left_c, right_c: the third vertex of the domain triangle on the left of a -> b (on its
+    /// right), or nullptr.
+    PieceRegion(const Point& a, const Point& b, const double* left_c, const double* right_c)
+        : a_(a), b_(b) {
+        axis_ = std::abs(b[0] - a[0]) >= std::abs(b[1] - a[1]) ? 0 : 1;
+        increasing_ = b[axis_] > a[axis_];
+        step_ = {unit_in_last_place(a[0], b[0]), unit_in_last_place(a[1], b[1])};
+        corner(0, a_, b_, left_c);
+        corner(1, b_, a_, right_c);
+    }
+
+    /// The inner points of `points` (points.front() is a, points.back() b), each moved by at
+    /// most 3 units in the last place of the ends' coordinates (step_) into the region when it
+    /// rounded outside; a point that no such move places is left out (a longer piece there)
+    /// and counted in `missed`.
+    std::vector<Point> place(const std::vector<Point>& points, std::size_t& missed) const {
+        std::vector<Point> kept;
+        Point last = a_;
+        int last_side = 0;
+        missed = 0;
+        for (std::size_t k = 1; k + 1 < points.size(); ++k) {
+            const Point& p = points[k];
+            bool placed = false;
+            for (int ring = 0; ring <= 3 && !placed && std::isfinite(p[0]) && std::isfinite(p[1]);
+                 ++ring) {
+                for (int i = -ring; i <= ring && !placed; ++i) {
+                    for (int j = -ring; j <= ring && !placed; ++j) {
+                        if (std::max(std::abs(i), std::abs(j)) != ring) continue;
+                        const Point q = moved(p.data(), i, j);
+                        if (!std::isfinite(q[0]) || !std::isfinite(q[1])) continue;
+                        if (!before(last, q) || !before(q, b_)) continue;
+                        const int s = side(q);
+                        if (s == kNowhere || !links(last, last_side, q, s)) continue;
+                        kept.push_back(q);
+                        last = q;
+                        last_side = s;
+                        placed = true;
+                    }
+                }
+            }
+            if (!placed) ++missed;
+        }
+        return kept;  // the link to b is always valid: b is a corner of both regions
+    }
+
+    /// p strictly between a and b along the piece's longer axis, and within 3 steps per
+    /// coordinate (step_) of a point on the line a - b or beyond it from the given side (exact).
+    bool hugs(const double* p, bool from_left) const {
+        const Point q{p[0], p[1]};
+        if (!before(a_, q) || !before(q, b_)) return false;
+        const predicates::Sign side =
+            from_left ? predicates::Sign::Positive : predicates::Sign::Negative;
+        for (int i = -3; i <= 3; ++i) {
+            for (int j = -3; j <= 3; ++j) {
+                const Point r = moved(p, i, j);
+                if (std::isfinite(r[0]) && std::isfinite(r[1]) &&
+                    orient(a_.data(), b_.data(), r.data()) != side)
+                    return true;
+            }
+        }
+        return false;
+    }
+
+  private:
+    static constexpr int kNowhere = 2;
+    Point a_, b_;
+    std::array<Point, 2> g_{};
+    std::array<bool, 2> has_{false, false};
+    std::array<double, 2> step_{};  // the spacing of doubles at the piece's ends
+    std::size_t axis_ = 0;
+    bool increasing_ = true;
+
+    /// p moved by i, j steps (rounded; whatever it gives is tested exactly).
+    Point moved(const double* p, int i, int j) const {
+        return {p[0] + i * step_[0], p[1] + j * step_[1]};
+    }
+
+    void corner(std::size_t which, const Point& u, const Point& v, const double* c) {
+        if (c == nullptr) return;
+        g_[which] = {u[0] / 3 + v[0] / 3 + c[0] / 3, u[1] / 3 + v[1] / 3 + c[1] / 3};
+        const double* g = g_[which].data();
+        has_[which] = orient(u.data(), v.data(), g) == predicates::Sign::Positive &&
+                      orient(v.data(), c, g) == predicates::Sign::Positive &&
+                      orient(c, u.data(), g) == predicates::Sign::Positive;
+    }
+
+    /// p strictly before q along the piece's longer axis.
+    bool before(const Point& p, const Point& q) const {
+        return increasing_ ? p[axis_] < q[axis_] : p[axis_] > q[axis_];
+    }
+
+    /// 0 on the line a - b (strictly between a and b when the caller checked `before`), 1 in
+    /// the left open triangle, -1 in the right one, else kNowhere.
+    int side(const Point& p) const {
+        using predicates::Sign;
+        const Sign o = orient(a_.data(), b_.data(), p.data());
+        if (o == Sign::Zero) return 0;
+        if (o == Sign::Positive) {
+            return has_[0] && orient(b_.data(), g_[0].data(), p.data()) == Sign::Positive &&
+                           orient(g_[0].data(), a_.data(), p.data()) == Sign::Positive
+                       ? 1
+                       : kNowhere;
+        }
+        return has_[1] && orient(a_.data(), g_[1].data(), p.data()) == Sign::Positive &&
+                       orient(g_[1].data(), b_.data(), p.data()) == Sign::Positive
+                   ? -1
+                   : kNowhere;
+    }
+
+    /// The link p - q stays in the region: within one side, or across the open segment a - b.
+    bool links(const Point& p, int p_side, const Point& q, int q_side) const {
+        if (p_side * q_side != -1) return true;
+        const predicates::Sign sa = orient(p.data(), q.data(), a_.data()),
+                               sb = orient(p.data(), q.data(), b_.data());
+        return sa != predicates::Sign::Zero && sb != predicates::Sign::Zero && sa != sb;
+    }
+};
+
+/// The vertex of triangle t other than u and v.
+tri::VertIdx third_vertex(const tri::Triangulation2& mesh, tri::TriIdx t, tri::VertIdx u,
+                          tri::VertIdx v) {
+    for (unsigned k = 0; k < 3; ++k) {
+        const tri::VertIdx w = mesh.triangles[3 * t + k];
+        if (w != u && w != v) return w;
+    }
+    throw InternalError("boundary discretization: a degenerate triangle");
 }
 
 }  // namespace
@@ -242,54 +404,134 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
     }
     boundary.xy = mesh.xy;
     boundary.input_vertex_count = boundary.cdt.input_vertex_count;
-    std::unordered_set<std::uint64_t> directed;
+    // Directed edge -> the (domain) triangle on its left.
+    std::unordered_map<std::uint64_t, tri::TriIdx> directed;
     directed.reserve(mesh.triangles.size());
     for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
         for (unsigned k = 0; k < 3; ++k)
-            directed.insert(
-                edge_key(mesh.triangles[3 * t + k], mesh.triangles[3 * t + (k + 1) % 3]));
+            directed.emplace(
+                edge_key(mesh.triangles[3 * t + k], mesh.triangles[3 * t + (k + 1) % 3]), t);
     }
+    const auto left_of = [&](tri::VertIdx u, tri::VertIdx v) {
+        const auto found = directed.find(edge_key(u, v));
+        return found == directed.end() ? tri::kNone : found->second;
+    };
     const auto& pieces = boundary.cdt.pieces;
+    // The CDT's pieces and the sides of the triangles bent around (below), undirected; the
+    // triangles bent around (left out of the discretized domain).
+    std::unordered_set<std::uint64_t> piece_keys;
+    piece_keys.reserve(pieces.size());
+    for (std::size_t p = 0; 2 * p + 1 < pieces.size(); ++p)
+        piece_keys.insert(undirected_key(pieces[2 * p], pieces[2 * p + 1]));
+    std::vector<bool> bent_around(mesh.triangle_count(), false);
+
+    // Points along u - v spaced by the size (ends included); the first sample count estimated
+    // from the sizes at the ends and the middle.
+    const auto spaced = [&](tri::VertIdx u, tri::VertIdx v, std::uint32_t segment) {
+        const Point pa{mesh.point(u)[0], mesh.point(u)[1]}, pb{mesh.point(v)[0], mesh.point(v)[1]};
+        // Linear interpolation (the difference of the ends taken as two products when it
+        // overflows: ends near the largest double).
+        const auto offset = [](double from, double to, double t) {
+            const double d = to - from;
+            return std::isfinite(d) ? t * d : t * to - t * from;
+        };
+        const Curve2 line = [&](double t) {
+            return t == 1.0
+                       ? pb
+                       : Point{pa[0] + offset(pa[0], pb[0], t), pa[1] + offset(pa[1], pb[1], t)};
+        };
+        const double length = std::hypot(pb[0] - pa[0], pb[1] - pa[1]);
+        const double smallest = std::min({size(pa[0], pa[1]), size(pb[0], pb[1]),
+                                          size(0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]))});
+        const double estimate = std::isfinite(smallest) ? length / smallest : 0.0;
+        if (!(estimate <= double{1 << 30})) {
+            throw InputError(
+                "boundary discretization: the size function asks for more than 2^30 pieces on "
+                "segment " +
+                std::to_string(segment + options.first_index) + " (size " +
+                std::to_string(smallest) + " along a length " + std::to_string(length) + ")");
+        }
+        const int samples = static_cast<int>(std::clamp(16 * estimate + 16, 16.0, double{1 << 24}));
+        return spaced_points(line, 0.0, 1.0, size, 1, samples);
+    };
+    const auto append = [&](std::vector<tri::VertIdx>& chain, const std::vector<Point>& kept) {
+        for (const Point& q : kept) {
+            chain.push_back(static_cast<tri::VertIdx>(boundary.xy.size() / 2));
+            boundary.xy.push_back(q[0]);
+            boundary.xy.push_back(q[1]);
+        }
+    };
+
+    std::vector<tri::VertIdx> chain;
+    struct Part {
+        tri::VertIdx u, v;
+        tri::TriIdx left;  // the domain triangle beside u - v
+    };
+    std::vector<Part> parts;
     for (std::size_t p = 0; 2 * p + 1 < pieces.size(); ++p) {
         const tri::VertIdx a = pieces[2 * p], b = pieces[2 * p + 1];
         const std::uint32_t segment = boundary.cdt.piece_segment[p];
-        const bool left = directed.count(edge_key(a, b)) != 0,
-                   right = directed.count(edge_key(b, a)) != 0;
-        std::vector<tri::VertIdx> chain{a};
-        if (left || right) {
-            // Split by the size function along the straight piece; the first sample count
-            // estimated from the sizes at the ends and the middle.
-            const Point pa{mesh.point(a)[0], mesh.point(a)[1]},
-                pb{mesh.point(b)[0], mesh.point(b)[1]};
-            const Curve2 line = [&](double u) {
-                return u == 1.0 ? pb
-                                : Point{pa[0] + u * (pb[0] - pa[0]), pa[1] + u * (pb[1] - pa[1])};
+        const tri::TriIdx left_triangle = left_of(a, b), right_triangle = left_of(b, a);
+        const bool left = left_triangle != tri::kNone, right = right_triangle != tri::kNone;
+        chain.assign(1, a);
+        if (left && right) {
+            // A slit: split points on either side, across the piece.
+            const std::vector<Point> points = spaced(a, b, segment);
+            if (points.size() > 2) {
+                const PieceRegion region(points.front(), points.back(),
+                                         mesh.point(third_vertex(mesh, left_triangle, a, b)),
+                                         mesh.point(third_vertex(mesh, right_triangle, b, a)));
+                std::size_t missed = 0;
+                append(chain, region.place(points, missed));
+            }
+            chain.push_back(b);
+        } else if (left || right) {
+            // The domain on one side: split points on the piece or on that side. When some
+            // point cannot be placed (the triangle there is a sliver: its third vertex c lies
+            // within 3 units in the last place of the piece's line, between its ends; hugs)
+            // the chain bends at c instead, as
+            // ConstrainedTriangulation2 bends a segment at a vertex within rounding of it, and
+            // continues along the triangle's other sides (the sliver is left out); that needs
+            // c's sides free (no piece, no other bend) and the triangles beyond them unbent.
+            // Parts run from a to b; the domain triangle of part u -> v is on the left of u -> v
+            // when the piece's is on the left of a -> b, else on its right.
+            const auto domain_triangle = [&](tri::VertIdx u, tri::VertIdx v) {
+                return left ? left_of(u, v) : left_of(v, u);
             };
-            const double length = std::hypot(pb[0] - pa[0], pb[1] - pa[1]);
-            const double smallest = std::min({size(pa[0], pa[1]), size(pb[0], pb[1]),
-                                              size(0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]))});
-            const double estimate = std::isfinite(smallest) ? length / smallest : 0.0;
-            if (!(estimate <= double{1 << 30})) {
-                throw InputError(
-                    "boundary discretization: the size function asks for more than 2^30 pieces on "
-                    "segment " +
-                    std::to_string(segment + options.first_index) + " (size " +
-                    std::to_string(smallest) + " along a length " + std::to_string(length) + ")");
-            }
-            const int samples =
-                static_cast<int>(std::clamp(16 * estimate + 16, 16.0, double{1 << 24}));
-            const std::vector<Point> points = spaced_points(line, 0.0, 1.0, size, 1, samples);
-            for (std::size_t k = 1; k + 1 < points.size(); ++k) {
-                if ((points[k][0] == points[k - 1][0] && points[k][1] == points[k - 1][1]) ||
-                    (points[k][0] == pb[0] && points[k][1] == pb[1])) {
-                    continue;  // rounding merged two points: one piece fewer
+            parts.assign(1, Part{a, b, left ? left_triangle : right_triangle});
+            while (!parts.empty()) {
+                const Part part = parts.back();
+                parts.pop_back();
+                const std::vector<Point> points = spaced(part.u, part.v, segment);
+                if (points.size() > 2) {
+                    const tri::VertIdx c = left ? third_vertex(mesh, part.left, part.u, part.v)
+                                                : third_vertex(mesh, part.left, part.v, part.u);
+                    const PieceRegion region(points.front(), points.back(),
+                                             left ? mesh.point(c) : nullptr,
+                                             left ? nullptr : mesh.point(c));
+                    std::size_t missed = 0;
+                    std::vector<Point> kept = region.place(points, missed);
+                    const tri::TriIdx before_c = domain_triangle(part.u, c),
+                                      after_c = domain_triangle(c, part.v);
+                    if (missed > 0 && before_c != tri::kNone && after_c != tri::kNone &&
+                        !bent_around[part.left] && !bent_around[before_c] &&
+                        !bent_around[after_c] && !piece_keys.count(undirected_key(part.u, c)) &&
+                        !piece_keys.count(undirected_key(c, part.v)) &&
+                        region.hugs(mesh.point(c), left)) {
+                        bent_around[part.left] = true;
+                        piece_keys.insert(undirected_key(part.u, c));
+                        piece_keys.insert(undirected_key(c, part.v));
+                        parts.push_back(Part{c, part.v, after_c});
+                        parts.push_back(Part{part.u, c, before_c});
+                        continue;
+                    }
+                    append(chain, kept);
                 }
-                chain.push_back(static_cast<tri::VertIdx>(boundary.xy.size() / 2));
-                boundary.xy.push_back(points[k][0]);
-                boundary.xy.push_back(points[k][1]);
+                chain.push_back(part.v);
             }
+        } else {
+            chain.push_back(b);  // outside the domain (a dangling segment in a hole): kept whole
         }
-        chain.push_back(b);
         for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
             boundary.pieces.insert(boundary.pieces.end(), {chain[k], chain[k + 1]});
             boundary.piece_segment.push_back(segment);

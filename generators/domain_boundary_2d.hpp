@@ -5,10 +5,14 @@
 //    for exact point-in-domain queries;
 //  - its boundary pieces split so that each is about as long as the size function wants: the
 //    integral of ds / s over each piece is equal along a piece of the input and at most 1 (whole
-//    pieces), new points by linear interpolation, rounded (within 2^-52 relative of the line,
-//    which the checks allow);
+//    pieces), new points by linear interpolation, rounded, then kept exactly on the piece or
+//    strictly inside a domain triangle beside it (moved by up to 3 units in the last place when
+//    they rounded outside), so that the pieces always form a valid PSLG: two pieces meet only at
+//    a shared end, whatever features at the resolution of doubles the input has. Beside a sliver
+//    (a vertex within 3 units in the last place of a piece) the piece bends at that vertex, the
+//    sliver left out; a point that has no place is left out (a longer piece there);
 //  - the directed front: every piece with the domain on its left (both directions for a slit:
-//    a segment with the domain on both sides).
+//    a segment with the domain on both sides); every new point lies in the domain.
 // Also discretize_curve, the same spacing rule along any parametric curve (sample domains).
 #pragma once
 
@@ -53,7 +57,9 @@ struct DomainBoundary2 {
     /// directions); the initial front of the frontal generators.
     std::vector<triangulation::VertIdx> front;
     std::vector<std::uint32_t> front_segment;  ///< #E: the input segment of each front edge
-    /// 2·#P: the boundary pieces (each once, undirected) and their input segment.
+    /// 2·#P: the boundary pieces (each once, undirected) and their input segment: each piece
+    /// a - b of cdt is a chain of them from a to b through new points (and, bent around a
+    /// sliver, through the sliver's third vertex); pieces meet only at shared ends (exact).
     std::vector<triangulation::VertIdx> pieces;
     std::vector<std::uint32_t> piece_segment;
     /// Over cdt.mesh (built last: the boundary must not move afterwards).

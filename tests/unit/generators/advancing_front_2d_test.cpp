@@ -22,6 +22,7 @@
 
 #include "generators/advancing_front_2d.hpp"
 #include "generators/domain_boundary_2d.hpp"
+#include "generators/pslg_inputs.hpp"
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
 #include "predicates/errors.hpp"
@@ -126,8 +127,9 @@ TEST(Generators_AdvancingFront, SampleDomainsWithTheirSizeFunctions) {
     // No angle guarantee: the smallest angles sit where fronts meet and move by degrees when
     // the size function changes in its last bits (naca0012: 22.1 before, 17.3 after the gamma
     // 1.5 source term became r sqrt(r)). Measured 17-22 (key 9.8, beside its 10-degree tooth);
-    // the floor asserted is 15. Mean minimum angles 56.4, 47.6, 55.7, 50.5.
-    const double min_angles[] = {15, 15, 9.5, 15}, means[] = {56, 47, 55, 50};
+    // the floor asserted is 15. Mean minimum angles 56.4, 47.6, 55.7, 50.5 (square-with-holes
+    // 55.96 once boundary split points that rounded outside the domain moved one ulp in).
+    const double min_angles[] = {15, 15, 9.5, 15}, means[] = {55.5, 47, 55, 50};
     std::size_t i = 0;
     for (const gen::SampleDomain d : gen::kAllSampleDomains) {
         const gen::SizeFunction size = gen::sample_domain_size(d);
@@ -209,6 +211,27 @@ TEST(Generators_AdvancingFront, GradedSizesFromPointAndLineSources) {
     EXPECT_GT(near, 3u);
 }
 
+TEST(Generators_AdvancingFront, GridLinesBesideFeaturesAtTheResolutionOfDoubles) {
+    // Rounded crossings one ulp from lattice vertices: before discretize_domain_boundary kept
+    // its split points in the triangles beside their piece, some landed on other pieces there
+    // and these seeds ended in a GeometryError. Now each gives a valid mesh (dangling segments:
+    // no closed-loop test).
+    for (const std::uint64_t seed : {11, 14, 16, 25, 41, 54}) {
+        const gen::PslgInput p =
+            gen::generate_pslg(gen::PslgDistribution::GridLines,
+                               60 + 20 * static_cast<std::uint32_t>(seed % 5), 30, seed);
+        double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+        for (std::size_t i = 0; i + 1 < p.xy.size(); i += 2) {
+            x0 = std::min(x0, p.xy[i]), x1 = std::max(x1, p.xy[i]);
+            y0 = std::min(y0, p.xy[i + 1]), y1 = std::max(y1, p.xy[i + 1]);
+        }
+        const Meshed m = mesh({p.xy, p.segments, p.holes},
+                              gen::SizeFunction::uniform(std::max(x1 - x0, y1 - y0) / 30), false);
+        EXPECT_TRUE(m.check.ok) << "seed " << seed << ": " << m.check.problem;
+        EXPECT_GT(m.result.mesh.mesh.triangle_count(), 0u) << "seed " << seed;
+    }
+}
+
 TEST(Generators_AdvancingFront, DegenerateInputs) {
     const gen::SizeFunction h = gen::SizeFunction::uniform(0.05);
     {
@@ -250,7 +273,8 @@ TEST(Generators_AdvancingFront, DegenerateInputs) {
         add_loop(in, {0, 0, 2, 0, 3, 0, 3, 2, 2, 2, c, s});
         const Meshed m = mesh(in, gen::SizeFunction::uniform(0.1));
         report("5-degree wedge", m);
-        expect_good("5-degree wedge", m, 4.9, 54);  // measured 4.96 (the input angle), 54.1
+        // Measured 4.96 (the input angle), 54.1; 53.9 with boundary points moved one ulp in.
+        expect_good("5-degree wedge", m, 4.9, 53.5);
     }
     {
         // A boundary vertex one ulp below the top side's line, and a hole whose corner is 1e-15
@@ -272,8 +296,10 @@ TEST(Generators_AdvancingFront, DegenerateInputs) {
             add_loop(in, {0, 0, 1, 0, 0.3, 0.8});
             const Meshed m = mesh(in, gen::SizeFunction::uniform(size));
             report("triangle " + std::to_string(size), m);
-            // Measured 48.8 (4 triangles) and 28.4, 57.3.
-            expect_good("triangle", m, size > 0.1 ? 48 : 28, size > 0.1 ? 48 : 57);
+            // Measured 48.8 (4 triangles) and 28.4, 57.3; 25.0, 57.6 once the boundary points
+            // that rounded outside the domain moved one ulp in (no angle guarantee: a front
+            // meeting moves by degrees with the last bits of its points).
+            expect_good("triangle", m, size > 0.1 ? 48 : 24, size > 0.1 ? 48 : 57);
         }
     }
 }

@@ -17,6 +17,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "generators/advancing_front_delaunay_2d.hpp"
@@ -315,45 +316,43 @@ TEST(Generators_AdvancingFrontDelaunay, PowerOfTwoScalesGiveTheSameTriangles) {
     }
 }
 
-TEST(Generators_AdvancingFrontDelaunay, RandomPslgsGiveValidMeshesOrAClearError) {
+TEST(Generators_AdvancingFrontDelaunay, RandomPslgsGiveValidMeshes) {
     // The constrained Delaunay test distributions (crossings, overlaps, duplicates, dangling
     // segments, small angles, features at the resolution of doubles), a uniform size of a
-    // thirtieth of the extent: every run ends with an exactly valid mesh, InputError when
-    // nothing is enclosed, or GeometryError when the discretized boundary touches itself.
-    std::size_t meshed = 0, closed = 0, refused = 0;
-    for (const auto d : gen::kAllPslgDistributions) {
-        for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-            const gen::PslgInput p =
-                gen::generate_pslg(d, 60 + 20 * static_cast<std::uint32_t>(seed % 5), 30, seed);
-            const Input in{p.xy, p.segments, p.holes};
-            double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-            for (std::size_t i = 0; i + 1 < in.xy.size(); i += 2) {
-                x0 = std::min(x0, in.xy[i]), x1 = std::max(x1, in.xy[i]);
-                y0 = std::min(y0, in.xy[i + 1]), y1 = std::max(y1, in.xy[i + 1]);
-            }
-            const double extent = std::max(x1 - x0, y1 - y0);
-            if (!(extent > 0)) continue;
-            const std::string name =
-                std::string(gen::pslg_distribution_name(d)) + " seed " + std::to_string(seed);
-            try {
-                const Meshed r = mesh(in, gen::SizeFunction::uniform(extent / 30), false);
-                EXPECT_TRUE(r.check.ok) << name << ": " << r.check.problem;
-                ++meshed;
-                closed += r.result.counters.closure_triangles > 0 ? 1 : 0;
-            } catch (const em::InputError&) {
-            } catch (const em::GeometryError& error) {
-                // Only beside features at the resolution of doubles (rounded crossings one ulp
-                // from lattice vertices), where the boundary's rounded split points land on
-                // other pieces; reported before any work.
-                EXPECT_EQ(d, gen::PslgDistribution::GridLines) << name << ": " << error.what();
-                EXPECT_NE(std::string(error.what()).find("discretized boundary"), std::string::npos)
-                    << name << ": " << error.what();
-                ++refused;
-            }
+    // thirtieth of the extent: every run ends with an exactly valid mesh, or InputError when
+    // nothing is enclosed. The grid-lines seeds 11, 14, 16, 25, 41 and 54 put rounded split
+    // points of the boundary on other pieces before discretize_domain_boundary kept them in the
+    // triangles beside their piece (the initial front touched itself: a GeometryError).
+    std::size_t meshed = 0, closed = 0;
+    std::vector<std::pair<gen::PslgDistribution, std::uint64_t>> runs;
+    for (const auto d : gen::kAllPslgDistributions)
+        for (std::uint64_t seed = 1; seed <= 12; ++seed) runs.emplace_back(d, seed);
+    for (const std::uint64_t seed : {14, 16, 25, 41, 54})
+        runs.emplace_back(gen::PslgDistribution::GridLines, seed);
+    for (const auto& [d, seed] : runs) {
+        const gen::PslgInput p =
+            gen::generate_pslg(d, 60 + 20 * static_cast<std::uint32_t>(seed % 5), 30, seed);
+        const Input in{p.xy, p.segments, p.holes};
+        double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+        for (std::size_t i = 0; i + 1 < in.xy.size(); i += 2) {
+            x0 = std::min(x0, in.xy[i]), x1 = std::max(x1, in.xy[i]);
+            y0 = std::min(y0, in.xy[i + 1]), y1 = std::max(y1, in.xy[i + 1]);
+        }
+        const double extent = std::max(x1 - x0, y1 - y0);
+        if (!(extent > 0)) continue;
+        const std::string name =
+            std::string(gen::pslg_distribution_name(d)) + " seed " + std::to_string(seed);
+        try {
+            const Meshed r = mesh(in, gen::SizeFunction::uniform(extent / 30), false);
+            EXPECT_TRUE(r.check.ok) << name << ": " << r.check.problem;
+            ++meshed;
+            closed += r.result.counters.closure_triangles > 0 ? 1 : 0;
+        } catch (const em::InputError&) {
+        } catch (const em::GeometryError& error) {
+            ADD_FAILURE() << name << ": " << error.what();
         }
     }
-    std::printf("[afd] random PSLGs: %zu meshed, %zu of them with a closure, %zu refused\n", meshed,
-                closed, refused);
+    std::printf("[afd] random PSLGs: %zu meshed, %zu of them with a closure\n", meshed, closed);
     EXPECT_GT(meshed, 10u);
 }
 
