@@ -289,48 +289,12 @@ class AdvancingFront {
         return EdgeQuadtree(x0, y0, root_side_);
     }
 
-    /// The triangle count the size asks for on triangle (p, q, r): area / (area of an
-    /// equilateral triangle at the smallest size sampled at its corners and centroid), the
-    /// triangle split in four while it is wider than 8 such sizes and holds more than 16 (at
-    /// most 8 levels), so that a small size inside a large triangle of the domain's CDT is not
-    /// missed (a sliver of the CDT stops splitting when its count is small).
-    double triangle_estimate(const std::array<double, 2>& p, const std::array<double, 2>& q,
-                             const std::array<double, 2>& r, int depth) const {
-        const double area =
-            0.5 * std::fabs((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
-        const double h = std::min(
-            {options_.size(p[0], p[1]), options_.size(q[0], q[1]), options_.size(r[0], r[1]),
-             options_.size((p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3)});
-        if (!(h > 0) || !std::isfinite(h) || !(area > 0)) return 0;
-        const double width =
-            std::max({std::hypot(q[0] - p[0], q[1] - p[1]), std::hypot(r[0] - q[0], r[1] - q[1]),
-                      std::hypot(p[0] - r[0], p[1] - r[1])});
-        const double count = area / (0.43 * h * h);
-        if (depth >= 8 || width <= 8 * h || count <= 16) return count;
-        auto mid = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
-            return std::array<double, 2>{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
-        };
-        const auto pq = mid(p, q), qr = mid(q, r), rp = mid(r, p);
-        return triangle_estimate(p, pq, rp, depth + 1) + triangle_estimate(pq, q, qr, depth + 1) +
-               triangle_estimate(rp, qr, r, depth + 1) + triangle_estimate(pq, qr, rp, depth + 1);
-    }
-
-    /// 8 times the triangle count the size function asks for (triangle_estimate over the
-    /// domain's CDT) plus 4 per boundary edge and 4096: a front that makes that many has run
+    /// 8 times the triangle count the size function asks for (expected_triangle_count over
+    /// the domain's CDT) plus 4 per boundary edge and 4096: a front that makes that many has run
     /// away (ever smaller triangles), and its closure ends the run.
     std::uint64_t automatic_budget() const {
-        const tri::Triangulation2& mesh = boundary_.cdt.mesh;
-        double estimate = 0;
-        for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
-            std::array<std::array<double, 2>, 3> corner;
-            for (unsigned k = 0; k < 3; ++k) {
-                const double* p = mesh.point(mesh.triangles[3 * t + k]);
-                corner[k] = {p[0], p[1]};
-            }
-            estimate += triangle_estimate(corner[0], corner[1], corner[2], 0);
-        }
-        const double budget =
-            8 * estimate + 4 * static_cast<double>(boundary_.front.size() / 2) + 4096;
+        const double budget = 8 * expected_triangle_count(boundary_, options_.size) +
+                              4 * static_cast<double>(boundary_.front.size() / 2) + 4096;
         return static_cast<std::uint64_t>(std::min(budget, 1e15));
     }
 

@@ -202,6 +202,9 @@ void Refiner::check_domain_and_budget() {
                 if (s > 0) estimate += 2.31 * dx * dy / (s * s);
             }
         }
+        // Subnormal boxes: dx * dy and s * s both underflow to 0 (0 / 0); the estimate is then
+        // unknown and the floor of 10^6 decides (a NaN would reach an integer conversion).
+        if (std::isnan(estimate)) estimate = 0;
     }
     const double features =
         static_cast<double>(initial_vertices_) + static_cast<double>(mesh_.triangle_slots());

@@ -11,6 +11,7 @@
 #include "generators/domain_boundary_2d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -339,6 +340,49 @@ tri::TriIdx DomainLocator2::locate(const tri::Triangulation2& mesh, double x, do
         }
     }
     return tri::kNone;
+}
+
+namespace {
+
+/// expected_triangle_count on one triangle (p, q, r), splitting it as documented there.
+double triangle_estimate(const SizeFunction& size, const std::array<double, 2>& p,
+                         const std::array<double, 2>& q, const std::array<double, 2>& r,
+                         int depth) {
+    const double area =
+        0.5 * std::fabs((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
+    const double h = std::min({size(p[0], p[1]), size(q[0], q[1]), size(r[0], r[1]),
+                               size((p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3)});
+    if (!(h > 0) || !std::isfinite(h) || !(area > 0)) return 0;
+    const double width =
+        std::max({std::hypot(q[0] - p[0], q[1] - p[1]), std::hypot(r[0] - q[0], r[1] - q[1]),
+                  std::hypot(p[0] - r[0], p[1] - r[1])});
+    const double count = area / (0.43 * h * h);
+    if (depth >= 8 || width <= 8 * h || count <= 16) return count;
+    auto mid = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
+        return std::array<double, 2>{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
+    };
+    const auto pq = mid(p, q), qr = mid(q, r), rp = mid(r, p);
+    return triangle_estimate(size, p, pq, rp, depth + 1) +
+           triangle_estimate(size, pq, q, qr, depth + 1) +
+           triangle_estimate(size, rp, qr, r, depth + 1) +
+           triangle_estimate(size, pq, qr, rp, depth + 1);
+}
+
+}  // namespace
+
+double expected_triangle_count(const DomainBoundary2& boundary, const SizeFunction& size) {
+    if (!size.bounded()) return 0;
+    const tri::Triangulation2& mesh = boundary.cdt.mesh;
+    double estimate = 0;
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        std::array<std::array<double, 2>, 3> corner;
+        for (unsigned k = 0; k < 3; ++k) {
+            const double* p = mesh.point(mesh.triangles[3 * t + k]);
+            corner[k] = {p[0], p[1]};
+        }
+        estimate += triangle_estimate(size, corner[0], corner[1], corner[2], 0);
+    }
+    return estimate;
 }
 
 SizeFunction size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& cdt) {

@@ -81,6 +81,14 @@ DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
 SizeFunction size_from_boundary(const triangulation::Pslg& pslg,
                                 const triangulation::Cdt2Options& cdt = {});
 
+/// The number of triangles the size function asks for on the domain (the generators' automatic
+/// budgets): over the triangles of boundary.cdt, area / (area of an equilateral triangle at the
+/// smallest size sampled at the corners and the centroid), a triangle split in four while it is
+/// wider than 8 such sizes and holds more than 16 (at most 8 levels), so that a small size inside
+/// a large triangle of the CDT is not missed. A rough estimate (double precision), 0 for an
+/// unbounded size.
+double expected_triangle_count(const DomainBoundary2& boundary, const SizeFunction& size);
+
 /// True when (x, y) lies in the domain (closed), by exact orient2d tests on the CDT.
 bool in_domain(const DomainBoundary2& boundary, double x, double y);
 

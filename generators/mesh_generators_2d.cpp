@@ -60,6 +60,8 @@ MeshRun2 run_quadtree(const tri::Pslg& pslg, const MeshOptions2& options) {
     QuadtreeOptions2 quadtree;
     quadtree.size = options.size;
     quadtree.cdt = options.cdt;
+    // The shared budget counts Steiner points; a leaf adds about one vertex.
+    quadtree.max_leaves = options.max_steiner_points;
     QuadtreeResult2 result = quadtree_mesh_2d(pslg, quadtree);
     return {std::move(result.mesh), counter_list(result.counters)};
 }

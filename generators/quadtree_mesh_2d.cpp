@@ -383,9 +383,11 @@ void QuadtreeMesher::split_counted(std::uint32_t n) {
     if (leaf_count_ > max_leaves_) {
         const Box b = tree_.cell(n);
         throw InputError("quadtree: more than " + std::to_string(max_leaves_) +
-                         " leaves (the size function asks for too many elements; size " +
+                         " leaves: splitting a leaf of side " + number_text(b.x1 - b.x0) + " at (" +
+                         number_text(b.x0) + ", " + number_text(b.y0) + "), size " +
                          number_text(options_.size(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1))) +
-                         " near (" + number_text(b.x0) + ", " + number_text(b.y0) + "))");
+                         " (boundary features far finer than the size, or a size asking for too "
+                         "many elements)");
     }
     tree_.split(n);
 }
@@ -1028,8 +1030,16 @@ QuadtreeResult2 QuadtreeMesher::run() {
             "clearance in [1/16, 4], corner_clearance 0 or in [1/16, 1/2], band_min_angle in [0, "
             "30], piece_factor 0 or in [1, 64]");
     }
-    max_leaves_ = o.max_leaves == 0 ? std::uint64_t{1} << 24 : o.max_leaves;
     boundary_ = discretize_domain_boundary(pslg_, o.size, o.cdt);
+    // Automatic: 64 leaves per triangle the size asks for and per boundary piece (features
+    // between segments refine far below the size: crossings at small angles need thousands),
+    // at least 2^16, at most 2^24. A domain whose features are far finer than any such count
+    // (a sliver of width 1e-299) stops here in milliseconds, not after 2^24 leaves.
+    max_leaves_ = o.max_leaves != 0 ? o.max_leaves
+                                    : static_cast<std::uint64_t>(std::clamp(
+                                          64 * (expected_triangle_count(boundary_, o.size) +
+                                                static_cast<double>(boundary_.pieces.size() / 2)),
+                                          0x1p16, 0x1p24));
     if (boundary_.front.empty()) {
         throw InputError(
             "quadtree: no segment bounds the domain (a PSLG without segments is "

@@ -67,7 +67,8 @@ struct QuadtreeOptions2 {
     /// triangle's shortest edge; outline edges are never split); 0 leaves the band's CDT as it
     /// is. In [0, 30].
     double band_min_angle = 28.0;
-    /// InputError when the tree would have more leaves (0: automatic, 2^24).
+    /// InputError when the tree would have more leaves (0: automatic, 64 per triangle the size
+    /// asks for (expected_triangle_count) and per boundary piece, in [2^16, 2^24]).
     std::uint64_t max_leaves = 0;
     /// The domain's constrained Delaunay triangulation and the band's (recovery Swap or Cavity).
     triangulation::Cdt2Options cdt;

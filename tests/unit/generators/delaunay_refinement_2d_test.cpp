@@ -21,6 +21,7 @@
 #include "generators/sample_domains.hpp"
 #include "predicates/errors.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
+#include "triangulation/check_constrained_2d.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;
@@ -429,6 +430,29 @@ TEST(Generators_DelaunayRefinement, UlpWideFeatureOfTheTriangulationIsReported) 
         EXPECT_TRUE(what.find("too short to split") != std::string::npos ||
                     what.find("finer than double precision") != std::string::npos)
             << what;
+    }
+}
+
+TEST(Generators_DelaunayRefinement, SubnormalDomainWithASizeRefinesOrFailsClearly) {
+    // fuzz_mesh_generators_2d (tests/data/fuzz/mesh_generators_2d_refinement_subnormal_box.bin):
+    // a quadrilateral with its diagonals at coordinates up to 7.3e-304, size 2^-5 of that: the
+    // budget's estimate was 0 / 0 (the box's area and the size's square both underflow), a NaN
+    // converted to an integer (undefined; UBSan reported it). The estimate is now unknown and the
+    // floor decides. Sizes near 2^-1009 with the input angles of these subnormal points are out
+    // of reach: the run ends at the given budget with a GeometryError.
+    const std::vector<double> xy = {7.291122019556398e-304, 2.91412e-318, 0.0,
+                                    5.299808824e-315,       0.0,          8.34403226921083e-309,
+                                    5.299808824e-315,       0.0};
+    const Input in{xy, {0, 1, 1, 2, 2, 3, 3, 0, 0, 2, 1, 3}, {}, {}};
+    gen::RefinementOptions2 options;
+    options.size = gen::SizeFunction::uniform(std::ldexp(7.291122019556398e-304, -5));
+    options.max_steiner_points = 5000;
+    try {
+        gen::delaunay_refinement_2d(in.pslg(), options);
+        ADD_FAILURE() << "refined within 5000 Steiner points";
+    } catch (const em::GeometryError& e) {
+        EXPECT_NE(std::string(e.what()).find("more than 5000 Steiner points"), std::string::npos)
+            << e.what();
     }
 }
 

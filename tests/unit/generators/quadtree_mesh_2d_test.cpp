@@ -323,4 +323,23 @@ TEST(Generators_Quadtree2, BadInputIsAnInputError) {
     EXPECT_THROW(gen::quadtree_mesh_2d(in.pslg(), bad), em::InputError);
 }
 
+TEST(Generators_Quadtree2, SliverFarThinnerThanTheSizeStopsAtTheAutomaticLeafBudget) {
+    // fuzz_mesh_generators_2d found it (tests/data/fuzz/mesh_generators_2d_quadtree_sliver.bin):
+    // a quadrilateral of length 1 and width 2.4e-299 at size 1/8. Separating its sides takes
+    // leaves of side ~1e-299 along its whole length; the automatic budget (2^16 here, not 2^24)
+    // makes that an InputError naming the leaf, instead of 16M leaves (29 s) first.
+    Input in;
+    in.xy = {0, 0, 1, 0, 1, 2.3891548633682403e-299, 5.376769579332696e-299, 3.81e-321};
+    in.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+    gen::QuadtreeOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.125);
+    try {
+        gen::quadtree_mesh_2d(in.pslg(), options);
+        ADD_FAILURE() << "the sliver was meshed";
+    } catch (const em::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("more than 65536 leaves"), std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace
