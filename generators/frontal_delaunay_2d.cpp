@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <queue>
 #include <string>
 #include <vector>
@@ -45,6 +46,16 @@ struct ActiveEntry {
 };
 
 constexpr double kSqrt3 = 1.7320508075688772;
+
+/// A power of two near the largest of `magnitudes` (1 when it is 0, not finite or subnormal): the
+/// measures below divide their differences by it, which is exact, so that squares and products
+/// of differences near 1e300 do not overflow (nor change where they did not).
+double scale_of(std::initializer_list<double> magnitudes) {
+    double m = 0;
+    for (const double v : magnitudes) m = std::max(m, std::fabs(v));
+    if (!std::isnormal(m)) return 1;
+    return std::ldexp(1.0, std::ilogb(m));
+}
 
 std::string point_text(double x, double y) {
     char text[96];
@@ -159,16 +170,19 @@ void Frontal::set_budget() {
 void Frontal::classify(TriIdx t) {
     const double* p[3] = {point(mesh_.tv[3 * t]), point(mesh_.tv[3 * t + 1]),
                           point(mesh_.tv[3 * t + 2])};
-    // R = abc / (4 area), in the differences from p0 (a measure, not a decision).
-    const double ax = p[1][0] - p[0][0], ay = p[1][1] - p[0][1];
-    const double bx = p[2][0] - p[0][0], by = p[2][1] - p[0][1];
-    const double cx = p[2][0] - p[1][0], cy = p[2][1] - p[1][1];
+    // R = abc / (4 area), in the differences from p0 over their scale (a measure, not a
+    // decision): R = radius * scale.
+    double ax = p[1][0] - p[0][0], ay = p[1][1] - p[0][1];
+    double bx = p[2][0] - p[0][0], by = p[2][1] - p[0][1];
+    double cx = p[2][0] - p[1][0], cy = p[2][1] - p[1][1];
+    const double scale = scale_of({ax, ay, bx, by, cx, cy});
+    ax /= scale, ay /= scale, bx /= scale, by /= scale, cx /= scale, cy /= scale;
     const double area2 = std::fabs(ax * by - ay * bx);
     const double product =
         std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by) * (cx * cx + cy * cy));
     const double radius = area2 > 0 ? product / (2 * area2) : INFINITY;
     const double s = size_at((p[0][0] + p[1][0] + p[2][0]) / 3, (p[0][1] + p[1][1] + p[2][1]) / 3);
-    const double key = radius * kSqrt3 / s;  // R / f, f = s / sqrt 3
+    const double key = radius * kSqrt3 / s * scale;  // R / f, f = s / sqrt 3
     key_[t] = std::isnan(key) ? INFINITY : key;
     status_[t] = key_[t] <= options_.acceptance ? Status::Accepted : Status::Waiting;
 }
@@ -231,7 +245,7 @@ void Frontal::process_touched() {
 
 EdgeIdx Frontal::front_edge(TriIdx t) const {
     EdgeIdx best = kNone;
-    double best_length2 = INFINITY;
+    double best_length = INFINITY;
     for (unsigned k = 0; k < 3; ++k) {
         const EdgeIdx e = 3 * t + k;
         if (cdt_.segment_of(e) == kNone &&
@@ -239,9 +253,11 @@ EdgeIdx Frontal::front_edge(TriIdx t) const {
             continue;
         const double* a = point(mesh_.origin(e));
         const double* b = point(mesh_.destination(e));
-        const double length2 = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
-        if (length2 < best_length2) {
-            best_length2 = length2;
+        const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+        // Any front edge beats none, whatever its length (infinite where the difference of
+        // coordinates overflows): kNone would take t off the front.
+        if (best == kNone || length < best_length) {
+            best_length = length;
             best = e;
         }
     }
@@ -252,19 +268,21 @@ std::array<double, 2> Frontal::place(EdgeIdx e) const {
     const double* a = point(mesh_.origin(e));
     const double* b = point(mesh_.destination(e));
     const double* c = point(mesh_.tv[tri::prev_edge(e)]);  // the apex
+    // In the differences over their scale (exact, as in classify): the point is M + d scale n.
     const double mx = 0.5 * (a[0] + b[0]), my = 0.5 * (a[1] + b[1]);
-    const double ex = b[0] - a[0], ey = b[1] - a[1];
+    const double scale = scale_of({b[0] - a[0], b[1] - a[1]});
+    const double ex = (b[0] - a[0]) / scale, ey = (b[1] - a[1]) / scale;
     const double length = std::hypot(ex, ey);
     const double p = 0.5 * length;
     const double nx = -ey / length,
                  ny = ex / length;  // the inward normal: the triangle is on e's left
     // The circumcenter relative to M: on the bisector at signed distance q (towards the apex);
     // the circle through a, b, c has q = (|c - m|^2 - p^2) / (2 (c - m) . n).
-    const double wx = c[0] - mx, wy = c[1] - my;
+    const double wx = (c[0] - mx) / scale, wy = (c[1] - my) / scale;
     const double height = wx * nx + wy * ny;  // > 0: the apex is on the left
     const double q = (wx * wx + wy * wy - p * p) / (2 * height);
     const double radius = std::hypot(p, q);
-    const double f = size_at(mx, my) / kSqrt3;  // the ideal circumradius at M
+    const double f = size_at(mx, my) / kSqrt3 / scale;  // the ideal circumradius at M
     double d;
     if (q >= p) {
         // Rebay: rho between p (the diametral circle of the edge) and (p^2 + q^2) / (2q) (the
@@ -278,7 +296,7 @@ std::array<double, 2> Frontal::place(EdgeIdx e) const {
         const double rho = std::max(f, p);
         d = std::min(rho + std::sqrt(std::max(0.0, rho * rho - p * p)), 0.5 * (q + radius));
     }
-    return {mx + d * nx, my + d * ny};
+    return {mx + d * scale * nx, my + d * scale * ny};
 }
 
 bool Frontal::too_close(TriIdx t, double x, double y, double limit) {

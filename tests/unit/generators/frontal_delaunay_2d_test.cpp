@@ -443,3 +443,56 @@ TEST(Generators_FrontalDelaunay, CounterListNamesEveryCounter) {
     EXPECT_TRUE(found);
     EXPECT_GT(result.counters.points_inserted, 20u);
 }
+
+TEST(Generators_FrontalDelaunay, HugeCrossingQuadrilateralEndsInAValidMesh) {
+    // fuzz_mesh_generators_2d (tests/data/fuzz/mesh_generators_2d_frontal_empty_front.bin): a
+    // unit square crossed by a quadrilateral reaching down to -2.7e302, size 1.4e302. Squared
+    // edge lengths overflowed: front_edge found no front edge shorter than infinity, so step took
+    // each active triangle off the front as if its accepted neighbours had gone, and the run
+    // ended with waiting triangles (InternalError). Now the measures are scaled: every triangle
+    // of the boundary's triangulation meets the radius criterion.
+    Input in;
+    in.xy = {0x0p+0,
+             0x0p+0,
+             0x1p+0,
+             0x0p+0,
+             0x1p+0,
+             0x1p+0,
+             0x0p+0,
+             0x1p+0,
+             0x1.999999999999ap-2,
+             -0x1.999999999999ap+1006,
+             0x1.3323333333333p-1,
+             0x1.999999999999ap-2,
+             0x1.3333333333333p-1,
+             0x1.3333333333333p-1,
+             0x1.999999999999ap-2,
+             0x1.3333333333333p-1};
+    in.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+    // The crossing loops overlap: the even-odd outside test does not apply.
+    const Meshed r = mesh(in, gen::SizeFunction::uniform(0x1.999999999999ap+1003), false);
+    ASSERT_TRUE(r.check.ok) << r.check.problem;
+    expect_consistent(in, r, "huge crossing quadrilateral");
+    EXPECT_EQ(r.result.counters.forced_accepts, 0u);
+    EXPECT_EQ(r.result.counters.forced_triangles, 0u);
+    EXPECT_EQ(r.result.counters.accepted_triangles, r.result.mesh.mesh.triangle_count());
+    EXPECT_LE(r.check.max_size_ratio, kSizeRatioBound);
+}
+
+TEST(Generators_FrontalDelaunay, A1e300SquareIsTheUnitSquareScaled) {
+    // The same overflow on a plain square of side 2^996 (about 6.7e299) at a tenth of that
+    // (InternalError before). Scaling by a power of two is exact in every predicate and every
+    // measure now, so the mesh is the unit square's, every coordinate times 2^996.
+    const Input unit = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+    const Input huge = polygon({0, 0, 0x1p996, 0, 0x1p996, 0x1p996, 0, 0x1p996});
+    const Meshed a = mesh(unit, gen::SizeFunction::uniform(0.1));
+    const Meshed b = mesh(huge, gen::SizeFunction::uniform(std::ldexp(0.1, 996)));
+    ASSERT_TRUE(a.check.ok) << a.check.problem;
+    ASSERT_TRUE(b.check.ok) << b.check.problem;
+    expect_consistent(huge, b, "2^996 square");
+    EXPECT_GT(b.result.counters.points_inserted, 0u);
+    EXPECT_EQ(b.result.mesh.mesh.triangles, a.result.mesh.mesh.triangles);
+    ASSERT_EQ(b.result.mesh.mesh.xy.size(), a.result.mesh.mesh.xy.size());
+    for (std::size_t i = 0; i < a.result.mesh.mesh.xy.size(); ++i)
+        EXPECT_EQ(b.result.mesh.mesh.xy[i], std::ldexp(a.result.mesh.mesh.xy[i], 996)) << i;
+}
