@@ -190,22 +190,8 @@ void Refiner::check_domain_and_budget() {
             "domain: is the boundary closed, and is a hole point inside the outer boundary?)");
     }
     // Automatic: at least 10^6, 64 per input feature, and 16 times the element count the size
-    // function asks for over the domain's bounding box (a 64 x 64 sample of 2.31 / s^2, the
-    // equilateral triangles of edge s per unit area).
-    double estimate = 0;
-    if (options_.size.bounded()) {
-        constexpr int kSamples = 64;
-        const double dx = (hi_x - lo_x) / kSamples, dy = (hi_y - lo_y) / kSamples;
-        for (int i = 0; i < kSamples; ++i) {
-            for (int j = 0; j < kSamples; ++j) {
-                const double s = options_.size(lo_x + (i + 0.5) * dx, lo_y + (j + 0.5) * dy);
-                if (s > 0) estimate += 2.31 * dx * dy / (s * s);
-            }
-        }
-        // Subnormal boxes: dx * dy and s * s both underflow to 0 (0 / 0); the estimate is then
-        // unknown and the floor of 10^6 decides (a NaN would reach an integer conversion).
-        if (std::isnan(estimate)) estimate = 0;
-    }
+    // function asks for over the domain's bounding box (equilateral_count_in_box).
+    const double estimate = equilateral_count_in_box(options_.size, lo_x, lo_y, hi_x, hi_y);
     const double features =
         static_cast<double>(initial_vertices_) + static_cast<double>(mesh_.triangle_slots());
     budget_ = options_.max_steiner_points != 0

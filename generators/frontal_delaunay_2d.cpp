@@ -138,16 +138,8 @@ void Frontal::set_budget() {
         hi_y = std::max(hi_y, boundary_.xy[i + 1]);
     }
     // As Delaunay refinement: at least 10^6, 64 per boundary vertex, and 16 times the element
-    // count the size asks for over the bounding box (a 64 x 64 sample of 2.31 / s^2).
-    constexpr int kSamples = 64;
-    const double dx = (hi_x - lo_x) / kSamples, dy = (hi_y - lo_y) / kSamples;
-    double estimate = 0;
-    for (int i = 0; i < kSamples; ++i) {
-        for (int j = 0; j < kSamples; ++j) {
-            const double s = options_.size(lo_x + (i + 0.5) * dx, lo_y + (j + 0.5) * dy);
-            if (s > 0 && std::isfinite(s)) estimate += 2.31 * dx * dy / (s * s);
-        }
-    }
+    // count the size asks for over the bounding box (equilateral_count_in_box).
+    const double estimate = equilateral_count_in_box(options_.size, lo_x, lo_y, hi_x, hi_y);
     const double vertices = static_cast<double>(mesh_.vertex_count());
     budget_ = options_.max_steiner_points != 0
                   ? options_.max_steiner_points

@@ -434,4 +434,19 @@ SizeFunction parse_size_sources(std::string_view text, std::string_view name) {
     }
 }
 
+double equilateral_count_in_box(const SizeFunction& size, double x0, double y0, double x1,
+                                double y1) {
+    if (!size.bounded()) return 0;
+    constexpr int kSamples = 64;
+    const double dx = (x1 - x0) / kSamples, dy = (y1 - y0) / kSamples;
+    double estimate = 0;
+    for (int i = 0; i < kSamples; ++i) {
+        for (int j = 0; j < kSamples; ++j) {
+            const double s = size(x0 + (i + 0.5) * dx, y0 + (j + 0.5) * dy);
+            if (s > 0 && std::isfinite(s)) estimate += 2.31 * dx * dy / (s * s);
+        }
+    }
+    return std::isnan(estimate) ? 0 : estimate;
+}
+
 }  // namespace exactmesh::generators

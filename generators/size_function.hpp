@@ -161,6 +161,13 @@ class SizeFunction {
     double evaluate(double x, double y) const;
 };
 
+/// The number of equilateral triangles of edge s(x, y) that cover the box [x0, x1] x [y0, y1]:
+/// a 64 x 64 sample of 2.31 / s^2 times the cell's area (the generators' automatic budgets and
+/// reservations; a rough estimate in double precision). 0 for an unbounded size, and when the
+/// estimate is unknown (a subnormal box, where the cells' areas and s^2 underflow to 0 / 0).
+double equilateral_count_in_box(const SizeFunction& size, double x0, double y0, double x1,
+                                double y1);
+
 /// `--size` text: a number (a uniform size), else the content of a size file. The file holds
 /// one item per line; `#` starts a comment; blank lines are ignored:
 ///     uniform H                        the cap H (alone: s = H everywhere)
