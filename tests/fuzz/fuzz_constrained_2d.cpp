@@ -5,25 +5,23 @@
 // check_delaunay_2d, or stop with GeometryError (its documented split budget). Non-finite
 // coordinates must raise NonFiniteCoordinate. Anything else is __builtin_trap().
 //
-// Input layout: byte 0 is the mode (raw doubles; small lattice integers, exactly collinear and
-// cocircular everywhere; a lattice moved by -2..2 ulps), byte 1 the segment count (0..31),
-// then two index bytes per segment (taken modulo the point count), then the coordinates,
-// 8 bytes each (at most 2·kMaxPoints, an odd last one dropped).
+// Input layout (fuzz_pslg.hpp with a 2-byte header): byte 0 the mode, byte 1 the segment count,
+// then two index bytes per segment, then the coordinates, 8 bytes each (at most 2·kMaxPoints).
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
 #include <exception>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
+#include "tests/fuzz/fuzz_pslg.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d.hpp"
@@ -37,12 +35,7 @@ constexpr std::size_t kMaxPoints = 48;
 
 [[noreturn]] void fail(const std::vector<double>& xy, const std::vector<tri::VertIdx>& segments,
                        const std::string& what) {
-    std::fprintf(stderr, "fuzz_constrained_2d: %s\npoints (%zu):", what.c_str(), xy.size() / 2);
-    for (std::size_t i = 0; i + 1 < xy.size(); i += 2) std::fprintf(stderr, " (%a, %a)", xy[i], xy[i + 1]);
-    std::fprintf(stderr, "\nsegments:");
-    for (std::size_t s = 0; s + 1 < segments.size(); s += 2) std::fprintf(stderr, " %u-%u", segments[s], segments[s + 1]);
-    std::fprintf(stderr, "\n");
-    __builtin_trap();
+    exactmesh::fuzz::fail_pslg(xy, segments, "fuzz_constrained_2d: %s\n", what.c_str());
 }
 
 std::vector<std::array<tri::VertIdx, 3>> canonical(const tri::Triangulation2& m) {
@@ -59,32 +52,10 @@ std::vector<std::array<tri::VertIdx, 3>> canonical(const tri::Triangulation2& m)
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    if (size < 2) return 0;
-    const std::uint8_t mode = data[0] % 3;
-    const std::size_t segment_count = data[1] % 32;
-    std::size_t at = 2;
-    if (size < at + 2 * segment_count) return 0;
-    std::vector<std::uint8_t> ends(data + at, data + at + 2 * segment_count);
-    at += 2 * segment_count;
-    const std::size_t doubles = std::min((size - at) / 8, 2 * kMaxPoints) & ~std::size_t{1};
-    std::vector<double> xy(doubles);
-    if (doubles > 0) std::memcpy(xy.data(), data + at, doubles * sizeof(double));
-    for (double& v : xy) {
-        std::uint64_t bits;
-        std::memcpy(&bits, &v, sizeof bits);
-        if (mode == 1) v = static_cast<double>(static_cast<int>(bits % 9) - 4);  // lattice -4..4
-        if (mode == 2) {
-            v = static_cast<double>(bits % 9) + 16;
-            for (int k = static_cast<int>((bits >> 8) % 5) - 2; k != 0; k += k > 0 ? -1 : 1) {
-                v = std::nextafter(v, k > 0 ? INFINITY : -INFINITY);
-            }
-        }
-    }
-    const std::size_t n = xy.size() / 2;
-    std::vector<tri::VertIdx> segments;
-    if (n > 0) {
-        for (const std::uint8_t e : ends) segments.push_back(static_cast<tri::VertIdx>(e % n));
-    }
+    const std::optional<exactmesh::fuzz::FuzzPslg> input = exactmesh::fuzz::decode_pslg(data, size, 2, kMaxPoints);
+    if (!input) return 0;
+    const std::vector<double>& xy = input->xy;
+    const std::vector<tri::VertIdx>& segments = input->segments;
     const tri::Pslg pslg{xy, segments, {}, {}};
     auto options = [](tri::SegmentRecovery recovery) {
         tri::Cdt2Options o;

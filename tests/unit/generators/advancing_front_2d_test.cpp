@@ -27,6 +27,7 @@
 #include "generators/sample_domains.hpp"
 #include "predicates/errors.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
+#include "tests/support/pslg_fixtures_2d.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;
@@ -34,35 +35,10 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-struct Input {
-    std::vector<double> xy;
-    std::vector<std::uint32_t> segments;
-    std::vector<double> holes;
-    tri::Pslg pslg() const { return {xy, segments, holes, {}}; }
-};
-
-Input from_domain(const gen::DomainPslg& d) {
-    return {d.xy, d.segments, d.holes};
-}
-
-/// A closed polygon (vertices in order), appended to `in`.
-void add_loop(Input& in, const std::vector<double>& xy) {
-    const auto first = static_cast<std::uint32_t>(in.xy.size() / 2);
-    const auto n = static_cast<std::uint32_t>(xy.size() / 2);
-    in.xy.insert(in.xy.end(), xy.begin(), xy.end());
-    for (std::uint32_t k = 0; k < n; ++k)
-        in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % n});
-}
-
-/// The unit square with a square hole [0.4, 0.6]^2 and a slit from (0.1, 0.5) to (0.3, 0.5)
-/// (as tests/unit/generators/domain_boundary_2d_test.cpp).
-Input square_with_hole_and_slit() {
-    Input in;
-    in.xy = {0, 0, 1, 0, 1, 1, 0, 1, 0.4, 0.4, 0.6, 0.4, 0.6, 0.6, 0.4, 0.6, 0.1, 0.5, 0.3, 0.5};
-    in.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4, 8, 9};
-    in.holes = {0.5, 0.5};
-    return in;
-}
+using exactmesh::testing::Input;
+using exactmesh::testing::from_domain;
+using exactmesh::testing::add_loop;
+using exactmesh::testing::square_with_hole_and_slit;
 
 struct Meshed {
     gen::AdvancingFrontResult2 result;
@@ -225,7 +201,7 @@ TEST(Generators_AdvancingFront, GridLinesBesideFeaturesAtTheResolutionOfDoubles)
             x0 = std::min(x0, p.xy[i]), x1 = std::max(x1, p.xy[i]);
             y0 = std::min(y0, p.xy[i + 1]), y1 = std::max(y1, p.xy[i + 1]);
         }
-        const Meshed m = mesh({p.xy, p.segments, p.holes},
+        const Meshed m = mesh({p.xy, p.segments, p.holes, {}},
                               gen::SizeFunction::uniform(std::max(x1 - x0, y1 - y0) / 30), false);
         EXPECT_TRUE(m.check.ok) << "seed " << seed << ": " << m.check.problem;
         EXPECT_GT(m.result.mesh.mesh.triangle_count(), 0u) << "seed " << seed;

@@ -28,6 +28,7 @@
 #include "predicates/errors.hpp"
 #include "predicates/incircle.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
+#include "tests/support/pslg_fixtures_2d.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;
@@ -35,24 +36,9 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-struct Input {
-    std::vector<double> xy;
-    std::vector<std::uint32_t> segments;
-    std::vector<double> holes;
-    tri::Pslg pslg() const { return {xy, segments, holes, {}}; }
-};
-
-Input from_domain(const gen::DomainPslg& d) {
-    return {d.xy, d.segments, d.holes};
-}
-
-Input polygon(std::vector<double> xy) {
-    Input in;
-    in.xy = std::move(xy);
-    const auto n = static_cast<std::uint32_t>(in.xy.size() / 2);
-    for (std::uint32_t k = 0; k < n; ++k) in.segments.insert(in.segments.end(), {k, (k + 1) % n});
-    return in;
-}
+using exactmesh::testing::Input;
+using exactmesh::testing::from_domain;
+using exactmesh::testing::polygon;
 
 /// Interior edges (a triangle on both sides, not a piece) whose opposite vertex lies strictly
 /// inside the other triangle's circumcircle (exact incircle): not locally Delaunay.
@@ -332,7 +318,7 @@ TEST(Generators_AdvancingFrontDelaunay, RandomPslgsGiveValidMeshes) {
     for (const auto& [d, seed] : runs) {
         const gen::PslgInput p =
             gen::generate_pslg(d, 60 + 20 * static_cast<std::uint32_t>(seed % 5), 30, seed);
-        const Input in{p.xy, p.segments, p.holes};
+        const Input in{p.xy, p.segments, p.holes, {}};
         double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
         for (std::size_t i = 0; i + 1 < in.xy.size(); i += 2) {
             x0 = std::min(x0, in.xy[i]), x1 = std::max(x1, in.xy[i]);

@@ -25,6 +25,7 @@
 #include "generators/sample_domains.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
+#include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/check_conforming_2d.hpp"
 
 namespace gen = exactmesh::generators;
@@ -32,21 +33,8 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-struct Input {
-    std::vector<double> xy;
-    std::vector<std::uint32_t> segments;
-    std::vector<double> holes;
-    tri::Pslg pslg() const { return {xy, segments, holes, {}}; }
-};
-
-/// The unit square with a square hole [0.4, 0.6]^2 and a slit from (0.1, 0.5) to (0.3, 0.5).
-Input square_with_hole_and_slit() {
-    Input in;
-    in.xy = {0, 0, 1, 0, 1, 1, 0, 1, 0.4, 0.4, 0.6, 0.4, 0.6, 0.6, 0.4, 0.6, 0.1, 0.5, 0.3, 0.5};
-    in.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4, 8, 9};
-    in.holes = {0.5, 0.5};
-    return in;
-}
+using exactmesh::testing::Input;
+using exactmesh::testing::square_with_hole_and_slit;
 
 double length(const gen::DomainBoundary2& b, tri::VertIdx u, tri::VertIdx v) {
     return std::hypot(b.xy[2 * v] - b.xy[2 * u], b.xy[2 * v + 1] - b.xy[2 * u + 1]);

@@ -24,6 +24,7 @@
 #include "generators/sample_domains.hpp"
 #include "predicates/errors.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
+#include "tests/support/pslg_fixtures_2d.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;
@@ -31,25 +32,9 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-struct Input {
-    std::vector<double> xy;
-    std::vector<std::uint32_t> segments;
-    std::vector<double> holes;
-    std::vector<double> regions;
-    tri::Pslg pslg() const { return {xy, segments, holes, regions}; }
-};
-
-Input from_domain(const gen::DomainPslg& d) {
-    return {d.xy, d.segments, d.holes, {}};
-}
-
-Input polygon(std::vector<double> xy) {
-    Input in;
-    in.xy = std::move(xy);
-    const auto n = static_cast<std::uint32_t>(in.xy.size() / 2);
-    for (std::uint32_t k = 0; k < n; ++k) in.segments.insert(in.segments.end(), {k, (k + 1) % n});
-    return in;
-}
+using exactmesh::testing::Input;
+using exactmesh::testing::from_domain;
+using exactmesh::testing::polygon;
 
 struct Meshed {
     gen::FrontalDelaunayResult2 result;

@@ -23,6 +23,7 @@
 #include "generators/sample_domains.hpp"
 #include "predicates/errors.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
+#include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/check_conforming_2d.hpp"
 
 namespace em = exactmesh;
@@ -38,36 +39,10 @@ namespace {
 constexpr double kSizeBound = 1.25;
 constexpr double kMinAngle = 24.0;
 
-struct Input {
-    std::vector<double> xy;
-    std::vector<std::uint32_t> segments;
-    std::vector<double> holes;
-    tri::Pslg pslg() const { return {xy, segments, holes, {}}; }
-};
-
-Input from_domain(const gen::DomainPslg& d) {
-    return {d.xy, d.segments, d.holes};
-}
-
-/// A closed polygon (vertices in order) appended to `in`.
-void add_loop(Input& in, const std::vector<double>& xy) {
-    const auto first = static_cast<std::uint32_t>(in.xy.size() / 2);
-    const auto n = static_cast<std::uint32_t>(xy.size() / 2);
-    in.xy.insert(in.xy.end(), xy.begin(), xy.end());
-    for (std::uint32_t k = 0; k < n; ++k)
-        in.segments.insert(in.segments.end(), {first + k, first + (k + 1) % n});
-}
-
-/// The unit square with a square hole [0.4, 0.6]^2 and a slit from (0.1, 0.5) to (0.3, 0.5).
-Input square_with_hole_and_slit() {
-    Input in;
-    add_loop(in, {0, 0, 1, 0, 1, 1, 0, 1});
-    add_loop(in, {0.4, 0.4, 0.6, 0.4, 0.6, 0.6, 0.4, 0.6});
-    in.xy.insert(in.xy.end(), {0.1, 0.5, 0.3, 0.5});
-    in.segments.insert(in.segments.end(), {8, 9});
-    in.holes = {0.5, 0.5};
-    return in;
-}
+using exactmesh::testing::Input;
+using exactmesh::testing::from_domain;
+using exactmesh::testing::add_loop;
+using exactmesh::testing::square_with_hole_and_slit;
 
 struct Meshed {
     gen::QuadtreeResult2 result;

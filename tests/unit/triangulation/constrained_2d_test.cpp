@@ -16,6 +16,7 @@
 
 #include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
+#include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d.hpp"
@@ -37,13 +38,7 @@ Triangles canonical(const tri::Triangulation2& m) {
     return s;
 }
 
-struct Input {
-    std::vector<double> xy;
-    std::vector<tri::VertIdx> segments;
-    std::vector<double> holes;
-    std::vector<double> regions;
-    tri::Pslg pslg() const { return {xy, segments, holes, regions}; }
-};
+using exactmesh::testing::Input;
 
 tri::Cdt2Result build(const Input& in, tri::SegmentRecovery recovery, bool remove_exterior = false) {
     tri::Cdt2Options options;

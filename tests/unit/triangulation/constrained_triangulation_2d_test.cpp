@@ -15,6 +15,7 @@
 #include <gmpxx.h>
 
 #include "predicates/errors.hpp"
+#include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/angles_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d.hpp"
@@ -25,12 +26,7 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-struct Input {
-    std::vector<double> xy;
-    std::vector<tri::VertIdx> segments;
-    std::vector<double> holes;
-    tri::Pslg pslg() const { return {xy, segments, holes, {}}; }
-};
+using exactmesh::testing::Input;
 
 /// The unit square with a square hole [0.4, 0.6]^2 and a skew segment inside.
 Input square_with_hole() {
