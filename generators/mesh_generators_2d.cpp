@@ -150,7 +150,7 @@ void check_size_budget(const tri::Pslg& pslg, const MeshOptions2& options, bool 
             (given ? "--max-steiner budget of about " + number_text(budget) + " triangles"
                    : "automatic budget of " + number_text(budget) +
                          " triangles (raise it with --max-steiner)") +
-            ": give a larger size");
+            (given ? ": give a larger size or raise --max-steiner" : ": give a larger size"));
     }
 }
 
