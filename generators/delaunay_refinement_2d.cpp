@@ -391,11 +391,18 @@ void Refiner::spend_budget() {
     if (counters_.steiner_points() >= budget_) {
         char angle[32];
         std::snprintf(angle, sizeof angle, "%g", options_.min_angle);
+        // Two causes look alike here: gaps or strips far narrower than the domain (nested
+        // squares 1e-5 apart need millions of points at any angle), and an angle the input's
+        // small angles make unreachable; name both, the budget first.
         throw GeometryError(
             "delaunay refinement: more than " + std::to_string(budget_) +
-            " Steiner points; stopped (termination is proven up to 20.7 degrees away from "
-            "input angles below 60 degrees; minimum angle " +
-            angle + " may be unreachable here: lower --min-angle, or raise --max-steiner)");
+            " Steiner points; stopped (" +
+            (options_.max_steiner_points != 0 ? "the --max-steiner budget"
+                                              : "the automatic budget") +
+            ": raise --max-steiner if the domain has gaps or strips far narrower than its "
+            "extent, which need that many points; or, termination being proven up to 20.7 "
+            "degrees away from input angles below 60 degrees, minimum angle " +
+            angle + " may be unreachable here: lower --min-angle)");
     }
 }
 

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -40,7 +42,122 @@ std::vector<std::pair<std::string, std::uint64_t>> counter_list(const Refinement
 
 namespace {
 
+std::string number_text(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+/// The samples of minimum_triangle_count: each checked, counted against a fixed budget of
+/// evaluations (about 10 ms of a parsed expression) beyond one pass over the domain.
+class SizeSampler {
+  public:
+    SizeSampler(const SizeFunction& size, double stop_above)
+        : size_(size), stop_above_(stop_above) {}
+
+    double at(double x, double y) {
+        ++evaluations_;
+        const double s = size_(x, y);
+        if (!(s > 0) || !std::isfinite(s)) {
+            throw InputError("the size function (" + size_.describe() + ") is " + number_text(s) +
+                             " at (" + number_text(x) + ", " + number_text(y) +
+                             "), inside the domain: a size must be finite and > 0 everywhere "
+                             "in the domain");
+        }
+        return s;
+    }
+
+    /// The triangle (p, q, r) at the largest of the sizes sampled at its corners sp, sq, sr
+    /// and its centroid; split in four while those differ by more than a factor 2.
+    double triangle(const std::array<double, 2>& p, const std::array<double, 2>& q,
+                    const std::array<double, 2>& r, double sp, double sq, double sr, int depth) {
+        const double sc = at((p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3);
+        const double lo = std::min({sp, sq, sr, sc}), hi = std::max({sp, sq, sr, sc});
+        if (hi > 2 * lo && depth < 12 && evaluations_ < kSplitEvaluations &&
+            total_ <= stop_above_) {
+            auto mid = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
+                return std::array<double, 2>{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
+            };
+            const auto pq = mid(p, q), qr = mid(q, r), rp = mid(r, p);
+            const double spq = at(pq[0], pq[1]), sqr = at(qr[0], qr[1]), srp = at(rp[0], rp[1]);
+            return triangle(p, pq, rp, sp, spq, srp, depth + 1) +
+                   triangle(pq, q, qr, spq, sq, sqr, depth + 1) +
+                   triangle(rp, qr, r, srp, sqr, sr, depth + 1) +
+                   triangle(pq, qr, rp, spq, sqr, srp, depth + 1);
+        }
+        // Twice the area over hi^2, with the sides divided by hi first: no square of a
+        // coordinate (2^600 or 2^-600) is formed; an overflow means an enormous count.
+        const double ux = (q[0] - p[0]) / hi, uy = (q[1] - p[1]) / hi;
+        const double vx = (r[0] - p[0]) / hi, vy = (r[1] - p[1]) / hi;
+        double count = std::fabs(ux * vy - uy * vx) / (2 * kEquilateralArea);
+        if (std::isnan(count)) count = std::numeric_limits<double>::infinity();
+        return count;
+    }
+
+    void add(double count) { total_ += count; }
+    double total() const { return total_; }
+
+  private:
+    static constexpr double kEquilateralArea = 0.4330127018922193;  // sqrt(3) / 4
+    static constexpr std::uint64_t kSplitEvaluations = 1u << 18;
+    const SizeFunction& size_;
+    double stop_above_;
+    double total_ = 0;
+    std::uint64_t evaluations_ = 0;
+};
+
+}  // namespace
+
+double minimum_triangle_count(const tri::Triangulation2& domain, const SizeFunction& size,
+                              double stop_above) {
+    if (!size.bounded()) return 0;
+    SizeSampler sampler(size, stop_above);
+    // One sample per vertex of a domain triangle, shared by its triangles.
+    std::vector<double> at_vertex(domain.vertex_count(), 0);
+    for (const tri::VertIdx v : domain.triangles) {
+        if (at_vertex[v] == 0) at_vertex[v] = sampler.at(domain.xy[2 * v], domain.xy[2 * v + 1]);
+    }
+    for (tri::TriIdx t = 0; t < domain.triangle_count() && sampler.total() <= stop_above; ++t) {
+        std::array<std::array<double, 2>, 3> corner;
+        std::array<double, 3> s;
+        for (unsigned k = 0; k < 3; ++k) {
+            const tri::VertIdx v = domain.triangles[3 * t + k];
+            corner[k] = {domain.xy[2 * v], domain.xy[2 * v + 1]};
+            s[k] = at_vertex[v];
+        }
+        sampler.add(sampler.triangle(corner[0], corner[1], corner[2], s[0], s[1], s[2], 0));
+    }
+    return sampler.total();
+}
+
+void check_size_budget(const tri::Pslg& pslg, const MeshOptions2& options, bool hard_budget) {
+    if (!options.size.bounded()) return;
+    tri::Cdt2Options cdt = options.cdt;
+    cdt.remove_exterior = true;
+    const tri::Cdt2Result domain = tri::constrained_delaunay_2d(pslg, cdt);
+    const double inputs = static_cast<double>(pslg.xy.size() / 2);
+    const bool given = hard_budget && options.max_steiner_points != 0;
+    // A triangulation of V vertices has fewer than 2V triangles.
+    const double budget = given ? 2 * (static_cast<double>(options.max_steiner_points) + inputs)
+                                : kAutomaticTriangleBudget;
+    const double estimate = minimum_triangle_count(domain.mesh, options.size, budget);
+    if (estimate > budget) {
+        throw InputError(
+            "the size (" + options.size.describe() + ") asks for " +
+            (estimate > 1e300 ? std::string("far more than 1e300")
+                              : "about " + number_text(estimate) + " or more") +
+            " triangles over the domain, more than the " +
+            (given ? "--max-steiner budget of about " + number_text(budget) + " triangles"
+                   : "automatic budget of " + number_text(budget) +
+                         " triangles (raise it with --max-steiner)") +
+            (given ? ": give a larger size or raise --max-steiner" : ": give a larger size"));
+    }
+}
+
+namespace {
+
 MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& options) {
+    check_size_budget(pslg, options, true);
     RefinementOptions2 refinement;
     refinement.min_angle = options.min_angle;
     refinement.polish_angle = options.polish_angle;
@@ -57,6 +174,7 @@ MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& opti
 }
 
 MeshRun2 run_quadtree(const tri::Pslg& pslg, const MeshOptions2& options) {
+    check_size_budget(pslg, options, true);
     QuadtreeOptions2 quadtree;
     quadtree.size = options.size;
     quadtree.cdt = options.cdt;
@@ -67,6 +185,7 @@ MeshRun2 run_quadtree(const tri::Pslg& pslg, const MeshOptions2& options) {
 }
 
 MeshRun2 run_advancing_front(const tri::Pslg& pslg, const MeshOptions2& options) {
+    check_size_budget(pslg, options, false);
     AdvancingFrontOptions2 front;
     front.size = options.size;
     // The shared budget counts Steiner points; a triangle adds about half a point.
@@ -83,6 +202,7 @@ MeshRun2 run_advancing_front(const tri::Pslg& pslg, const MeshOptions2& options)
 }
 
 MeshRun2 run_advancing_front_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
+    check_size_budget(pslg, options, false);
     AdvancingFrontDelaunayOptions2 front;
     front.size = options.size;
     front.max_new_points = options.max_steiner_points;
@@ -98,6 +218,7 @@ MeshRun2 run_advancing_front_delaunay(const tri::Pslg& pslg, const MeshOptions2&
 }
 
 MeshRun2 run_frontal_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
+    check_size_budget(pslg, options, true);
     FrontalDelaunayOptions2 frontal;
     frontal.size = options.size;
     frontal.max_steiner_points = options.max_steiner_points;

@@ -50,6 +50,29 @@ std::span<const MeshGenerator2> mesh_generators_2d();
 /// @throws InputError naming the unknown generator and the known ones.
 const MeshGenerator2& find_mesh_generator_2d(std::string_view name);
 
+/// A lower estimate of the number of triangles a mesh of the domain at `size` has: the integral
+/// of 1 / s^2 over the domain (the triangles of its constrained Delaunay triangulation
+/// `domain`) divided by the area of the equilateral triangle of edge 1 (sqrt(3) / 4), each
+/// triangle taken at the largest size sampled at its corners and centroid (split in four, up
+/// to a fixed number of samples, where those vary by more than 2). Computed in units of the
+/// size, so no square of a coordinate overflows or underflows; +infinity when the count
+/// overflows. Sampling stops once the estimate exceeds `stop_above`.
+/// @throws InputError naming the size function and the point where a sample is 0, negative,
+///         NaN or infinite.
+double minimum_triangle_count(const triangulation::Triangulation2& domain, const SizeFunction& size,
+                              double stop_above);
+
+/// The budget every generator of the registry checks before meshing (issue 11): with a size,
+/// the minimum_triangle_count over the domain must stay within 2^26 triangles (automatic
+/// budget) or, for the generators whose budget is a hard limit (Delaunay refinement, quadtree,
+/// frontal), within the triangles options.max_steiner_points Steiner points can make.
+/// @throws InputError naming the size, the estimate and the budget, at once.
+void check_size_budget(const triangulation::Pslg& pslg, const MeshOptions2& options,
+                       bool hard_budget);
+
+/// The automatic triangle budget of check_size_budget.
+inline constexpr double kAutomaticTriangleBudget = 0x1p26;
+
 /// The counters of a Delaunay refinement run, named as `exactmesh mesh --stats` prints them.
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const RefinementCounters2& c);
 

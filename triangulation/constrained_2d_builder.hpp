@@ -144,14 +144,26 @@ private:
     }
     VertIdx apex(EdgeIdx e) const { return mesh_.tv[prev_edge(e)]; }
 
-    /// The half-edge u -> v, or kNone.
+    /// The half-edge u -> v, or kNone. Walks the stars of u and v in step, so the cost is
+    /// O(min(degree u, degree v)): refinement between nested squares 1e-5 apart builds fans of
+    /// thousands of slivers at one vertex, and a lookup of each fan edge from its centre made
+    /// restoring Delaunay after a boundary split quadratic (issue 11: minutes for 12 vertices).
     EdgeIdx find_edge(VertIdx u, VertIdx v) const {
-        const EdgeIdx first = vertex_edge_[u];
-        EdgeIdx e = first;
-        do {
-            if (mesh_.destination(e) == v) return e;
-            e = mesh_.twin[prev_edge(e)];
-        } while (e != first);
+        const EdgeIdx first_u = vertex_edge_[u], first_v = vertex_edge_[v];
+        EdgeIdx e = first_u, f = first_v;
+        bool u_done = false, v_done = false;
+        while (!u_done || !v_done) {
+            if (!u_done) {
+                if (mesh_.destination(e) == v) return e;
+                e = mesh_.twin[prev_edge(e)];
+                u_done = e == first_u;
+            }
+            if (!v_done) {
+                if (mesh_.destination(f) == u) return mesh_.twin[f];
+                f = mesh_.twin[prev_edge(f)];
+                v_done = f == first_v;
+            }
+        }
         return kNone;
     }
 

@@ -636,7 +636,7 @@ mesh() {
   expect_error 2 'the segments enclose no region' mesh "$work/open.poly" -o "$work/x.ele"
   printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 nan\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$work/nan.poly"
   expect_error 2 'nan\.poly:4: non-finite y coordinate' mesh "$work/nan.poly" -o "$work/x.ele"
-  expect_error 2 'more than 50 Steiner points' mesh --domain key -o "$work/x.ele" --max-steiner 50
+  expect_error 2 'more than 50 Steiner points|more than the --max-steiner budget' mesh --domain key -o "$work/x.ele" --max-steiner 50
   # A self-intersecting boundary (a bow tie): split where it crosses, a warning, a valid mesh.
   printf '4 2 0 0\n1 0 0\n2 2 2\n3 2 0\n4 0 2\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/bowtie.poly"
   run 0 mesh "$work/bowtie.poly" -o "$work/bowtie.1.ele" &&
@@ -646,11 +646,29 @@ mesh() {
   expect_error 2 'keep\.poly: this output would overwrite the input file' mesh "$work/keep.poly" -o "$work/keep.ele"
 }
 
+# Impossible sizes (issue 11): refused at once with exit 2, naming the size and the estimate,
+# never "out of memory" (exit 3) nor --min-angle; a size that is 0 in the domain names the point.
+mesh_impossible_sizes() {
+  printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/unit.poly"
+  printf 'uniform 1e-300\n' >"$work/tiny.size"
+  local generator
+  for generator in delaunay-refinement quadtree advancing-front advancing-front-delaunay frontal; do
+    expect_error 2 'the size \(uniform 1e-300\) asks for far more than 1e300 triangles.*--max-steiner' \
+      mesh "$work/unit.poly" --generator "$generator" --size 1e-300 -o "$work/a.ele"
+    expect_error 2 'asks for about 1.1547e\+14 or more triangles' \
+      mesh "$work/unit.poly" --generator "$generator" --size 1e-7 -o "$work/b.ele"
+    expect_error 2 'the size function \(expression x\) is 0 at \(0, 0\)' \
+      mesh "$work/unit.poly" --generator "$generator" --size x -o "$work/c.ele"
+    expect_error 2 'the size \(uniform 1e-300\) asks for' \
+      mesh "$work/unit.poly" --generator "$generator" --size "$work/tiny.size" -o "$work/d.ele"
+  done
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
     swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
-    tetrahedralize_bad_input | check_rejects_non_delaunay_3d)
+    tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2
