@@ -37,7 +37,7 @@ struct CdtArguments {
 
 /// The input as a PSLG: a .poly, or a .node (points only).
 io::PolyFile read_input(const fs::path& input) {
-    if (input.extension() == ".node") {
+    if (io::has_extension(input, ".node")) {
         io::PolyFile poly;
         poly.vertices = io::read_node(input);
         return poly;
@@ -71,7 +71,7 @@ void run_cdt(const CdtArguments& arguments) {
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
-    refuse_to_overwrite_input(arguments.input, files);
+    refuse_to_overwrite_inputs({arguments.input, io::poly_node_path(arguments.input)}, files);
     const io::PolyFile poly = read_input(arguments.input);
     const std::uint32_t base = poly.vertices.first_index;
 
@@ -90,8 +90,10 @@ void run_cdt(const CdtArguments& arguments) {
     const predicates::PredicateStats stats = predicates::thread_stats();
 
     print_warnings(result.warnings);
-    write_constrained_result(result, files, format, base,
+    io::OutputSet set;
+    stage_constrained_result(set, result, files, format, base,
                              fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")");
+    commit_outputs(set);
     const tri::Triangulation2& mesh = result.mesh;
     std::cout << "vertices: " << mesh.vertex_count() << '\n' << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {

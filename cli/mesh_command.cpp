@@ -7,11 +7,9 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "cli/commands.hpp"
@@ -23,6 +21,7 @@
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
 #include "generators/size_function.hpp"
+#include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/stats.hpp"
@@ -49,16 +48,18 @@ struct MeshArguments {
     bool stats = false;
 };
 
-/// --size: a number (uniform), else a size file (generators/size_function.hpp) when one of
-/// that name exists, else an expression in x and y (cli/size_expression.hpp).
+/// The longest size file read (a background mesh of about a million lines).
+constexpr std::size_t kMaxSizeFileBytes = std::size_t{64} << 20;
+
+/// --size: a number (uniform), else a size file (generators/size_function.hpp) when a file of
+/// that name exists (one that exists but cannot be read is reported as such, not as a bad
+/// expression), else an expression in x and y (cli/size_expression.hpp).
 gen::SizeFunction read_size(const std::string& text) {
     double uniform = 0;
     if (gen::parse_uniform_size(text, uniform)) return gen::SizeFunction::uniform(uniform);
-    std::ifstream file(text);
-    if (!file) return size_from_expression(text);
-    std::ostringstream content;
-    content << file.rdbuf();
-    return gen::parse_size_sources(content.str(), text);
+    std::error_code error;
+    if (!fs::exists(text, error)) return size_from_expression(text);
+    return gen::parse_size_sources(io::read_text_file(text, kMaxSizeFileBytes), text);
 }
 
 void print_stats(const gen::MeshRun2& run, const predicates::PredicateStats& stats,
@@ -91,6 +92,13 @@ void run_mesh(const MeshArguments& arguments) {
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
+    if (!arguments.input.empty()) {
+        std::vector<fs::path> inputs{arguments.input, io::poly_node_path(arguments.input)};
+        if (!arguments.size.empty()) inputs.emplace_back(arguments.size);
+        refuse_to_overwrite_inputs(inputs, files);
+    } else if (!arguments.size.empty()) {
+        refuse_to_overwrite_inputs({arguments.size}, files);
+    }
 
     gen::SizeFunction size =
         arguments.size.empty() ? gen::SizeFunction() : read_size(arguments.size);
@@ -105,7 +113,6 @@ void run_mesh(const MeshArguments& arguments) {
         poly.holes = std::move(pslg.holes);
         title = arguments.domain;
     } else {
-        refuse_to_overwrite_input(arguments.input, files);
         poly = io::read_poly(arguments.input);
         title = fs::path(arguments.input).filename().string();
     }
@@ -153,7 +160,9 @@ void run_mesh(const MeshArguments& arguments) {
     } else {
         std::snprintf(label, sizeof label, " (%s)", arguments.generator.c_str());
     }
-    write_constrained_result(final_result.mesh, files, format, base, title + label);
+    io::OutputSet set;
+    stage_constrained_result(set, final_result.mesh, files, format, base, title + label);
+    commit_outputs(set);
     const tri::Triangulation2& mesh = final_result.mesh.mesh;
     std::cout << "vertices: " << mesh.vertex_count() << '\n'
               << "triangles: " << mesh.triangle_count() << '\n';

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "io/tetgen_format.hpp"
 #include "predicates/errors.hpp"
 #include "triangulation/edge_face_swap_3d.hpp"
@@ -51,7 +52,8 @@ void print_quality(const tri::Tetrahedralization3& mesh) {
 
 void run_swap3d(const Swap3dArguments& arguments) {
     const fs::path output = arguments.output;
-    if (output.extension() != ".ele") throw InputError(output.string() + ": the output must be a .ele file");
+    require_ele_output(output);
+    refuse_to_overwrite_inputs({arguments.node_path, arguments.ele_path}, {output});
     const tri::SwapCriterion3 criterion = tri::swap_criterion_3d_from_name(arguments.criterion);
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.node_path);
     const io::TetgenEleFile ele = io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
@@ -68,8 +70,10 @@ void run_swap3d(const Swap3dArguments& arguments) {
     const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(work, criterion);
     mesh = tri::to_tetrahedralization_3d(work);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    io::write_tetgen_ele(output, mesh.tets, ele.first_index);
-    std::cout << "output: " << output.string() << '\n' << "tetrahedra: " << mesh.tet_count() << '\n';
+    io::OutputSet set;
+    set.stage(output, io::format_tetgen_ele(mesh.tets, ele.first_index));
+    commit_outputs(set);
+    std::cout << "tetrahedra: " << mesh.tet_count() << '\n';
     if (arguments.stats) {
         std::cout << "criterion: " << tri::swap_criterion_3d_name(criterion) << '\n'
                   << "faces_examined: " << counters.faces_examined << '\n'

@@ -63,6 +63,8 @@ void print_stats(const tri::Delaunay2Counters& counters, const predicates::Predi
 void run_triangulate(const TriangulateArguments& arguments) {
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);  // before any work: fail fast
+    const std::vector<fs::path> files = output_files(output, format, {".neigh"});
+    refuse_to_overwrite_inputs({arguments.input}, files);
     const tri::Delaunay2Function construct = tri::delaunay_2d_algorithm(arguments.algorithm);
     const io::NodeFile nodes = io::read_node(arguments.input);
 
@@ -75,33 +77,22 @@ void run_triangulate(const TriangulateArguments& arguments) {
     const predicates::PredicateStats stats = predicates::thread_stats();
     const double construct_seconds = std::chrono::duration<double>(stop - start).count();
 
+    io::OutputSet set;
     switch (format) {
-        case OutputFormat::Ele: {
-            fs::path neigh = output;
-            neigh.replace_extension(".neigh");
-            io::write_ele(output, result.triangles, nodes.first_index);
-            io::write_neigh(neigh, result.neighbors, nodes.first_index);
-            std::cout << "output: " << output.string() << '\n'
-                      << "output: " << neigh.string() << '\n';
+        case OutputFormat::Ele:
+            set.stage(files[0], io::format_ele(result.triangles, nodes.first_index));
+            set.stage(files[1], io::format_neigh(result.neighbors, nodes.first_index));
             break;
-        }
-        case OutputFormat::Msh:
-            io::write_msh(output, nodes.xy, result.triangles);
-            std::cout << "output: " << output.string() << '\n';
-            break;
-        case OutputFormat::Vtu:
-            io::write_vtu(output, nodes.xy, result.triangles, nodes.first_index);
-            std::cout << "output: " << output.string() << '\n';
-            break;
+        case OutputFormat::Msh: set.stage(output, io::format_msh(nodes.xy, result.triangles)); break;
+        case OutputFormat::Vtu: set.stage(output, io::format_vtu(nodes.xy, result.triangles, nodes.first_index)); break;
         case OutputFormat::Svg: {
             io::SvgOptions svg;
-            svg.title =
-                fs::path(arguments.input).filename().string() + " (" + arguments.algorithm + ")";
-            io::write_svg(output, nodes.xy, result.triangles, svg);
-            std::cout << "output: " << output.string() << '\n';
+            svg.title = fs::path(arguments.input).filename().string() + " (" + arguments.algorithm + ")";
+            set.stage(output, io::format_svg(nodes.xy, result.triangles, svg));
             break;
         }
     }
+    commit_outputs(set);
     std::cout << "triangles: " << result.triangles.size() / 3 << '\n';
     if (arguments.stats) print_stats(result.counters, stats, construct_seconds);
 }

@@ -191,7 +191,7 @@ bad_input() {
   # A directory or a binary file instead of a .node.
   expect_error 2 'is a directory' triangulate "$data" -o "$work/x.ele"
   printf '\x00\x01\x02garbage\n' >"$work/binary.node"
-  expect_error 2 'binary\.node:1: vertex count .\\x00\\x01\\x02garbage. is not' \
+  expect_error 2 'binary\.node:1: a NUL byte at column 1' \
     triangulate "$work/binary.node" -o "$work/x.ele"
   # Help is not an error.
   run 0 --help && grep -q 'triangulate' "$work/out" || fail "--help"
