@@ -85,7 +85,8 @@ void run_cdt(const CdtArguments& arguments) {
 
     predicates::reset_thread_stats();
     const auto start = std::chrono::steady_clock::now();
-    const tri::Cdt2Result result = tri::constrained_delaunay_2d(pslg, options);
+    const tri::Cdt2Result result =
+        locating_mark_points(poly, arguments.input, [&] { return tri::constrained_delaunay_2d(pslg, options); });
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();
 

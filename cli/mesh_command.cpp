@@ -130,11 +130,12 @@ void run_mesh(const MeshArguments& arguments) {
     const auto start = std::chrono::steady_clock::now();
     // A generator that needs a size and was given none takes the input's own spacing (timed:
     // it is part of the construction).
+    const std::string file = arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
     if (generator.needs_size && !size.bounded()) {
-        size = gen::size_from_boundary(pslg, options.cdt);
+        size = locating_mark_points(poly, file, [&] { return gen::size_from_boundary(pslg, options.cdt); });
         options.size = size;
     }
-    const gen::MeshRun2 result = generator.run(pslg, options);
+    const gen::MeshRun2 result = locating_mark_points(poly, file, [&] { return generator.run(pslg, options); });
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();
     const double seconds = std::chrono::duration<double>(stop - start).count();

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <string>
 
+#include "io/format_error.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/svg_picture.hpp"
 #include "io/triangle_format.hpp"
@@ -82,6 +83,13 @@ void commit_outputs(io::OutputSet& set) {
 
 void require_ele_output(const std::filesystem::path& output) {
     if (!io::has_extension(output, ".ele")) throw InputError(output.string() + ": the output must be a .ele file");
+}
+
+void rethrow_at_line(const triangulation::AmbiguousMarkPoint& error, const io::PolyFile& poly, const std::string& file) {
+    const bool hole = error.kind() == triangulation::AmbiguousMarkPoint::Kind::Hole;
+    const std::vector<std::uint64_t>& lines = hole ? poly.hole_lines : poly.region_lines;
+    const std::uint64_t line = error.index() < lines.size() ? lines[error.index()] : 0;
+    throw io::FormatError(file, line, error.what());
 }
 
 triangulation::InsertionOrder insertion_order(const std::string& name) {

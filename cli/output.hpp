@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "io/point_set_2d.hpp"
 #include "io/text_file.hpp"
 #include "predicates/stats.hpp"
 #include "triangulation/constrained_2d.hpp"
@@ -46,6 +47,21 @@ void commit_outputs(io::OutputSet& set);
 /// The output extension check of swap, swap3d and min-max (any case: .ELE is a .ele).
 /// @throws InputError naming the file when it does not end in .ele.
 void require_ele_output(const std::filesystem::path& output);
+
+/// Rethrows `error` as an io::FormatError located at the line of its hole or region in `file`
+/// (the .poly it was read from), so the message names the file and the line.
+[[noreturn]] void rethrow_at_line(const triangulation::AmbiguousMarkPoint& error, const io::PolyFile& poly,
+                                  const std::string& file);
+
+/// `work()`, with a hole or region point on a segment or a vertex reported at its line of `file`.
+template <class Work>
+auto locating_mark_points(const io::PolyFile& poly, const std::string& file, Work&& work) {
+    try {
+        return work();
+    } catch (const triangulation::AmbiguousMarkPoint& error) {
+        rethrow_at_line(error, poly, file);
+    }
+}
 
 /// The insertion order named by --order (given, random, brio).
 /// @throws InputError naming the unknown order and the known ones.
