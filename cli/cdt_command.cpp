@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -74,6 +75,7 @@ void run_cdt(const CdtArguments& arguments) {
     refuse_to_overwrite_inputs({arguments.input, io::poly_node_path(arguments.input)}, files);
     const io::PolyFile poly = read_input(arguments.input);
     const std::uint32_t base = poly.vertices.first_index;
+    warn_unused_region_areas(poly, arguments.input, "cdt adds no vertices; `exactmesh mesh` refines to --size");
 
     tri::Cdt2Options options;
     options.recovery = tri::segment_recovery_from_name(arguments.recovery);
@@ -127,7 +129,10 @@ void add_cdt_command(CLI::App& app) {
     command->add_option("--order", arguments->order, "Vertex insertion order")
         ->check(CLI::IsMember({"given", "random", "brio"}))
         ->capture_default_str();
-    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")->capture_default_str();
+    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")->check(CLI::Validator(
+            [](std::string& text) { return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max()); },
+            "UINT64"))
+        ->capture_default_str();
     command->add_flag("--stats", arguments->stats,
                       "Print work counters, predicate stages and construct_seconds (the construction "
                       "alone, without file I/O)");

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <iomanip>
@@ -24,6 +25,7 @@
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/errors.hpp"
+#include "predicates/number_text.hpp"
 #include "predicates/stats.hpp"
 
 namespace exactmesh::cli {
@@ -46,7 +48,13 @@ struct MeshArguments {
     std::uint32_t smooth = 0;
     bool quality = false;
     bool stats = false;
+    bool angles_given = false;  ///< --min-angle or --polish-angle on the command line
 };
+
+/// The most --smooth sweeps: Laplacian smoothing converges within tens of sweeps, and each
+/// costs a pass over the mesh and a Delaunay re-swap.
+constexpr std::uint32_t kMaxSmoothSweeps = 1000;
+
 
 /// The longest size file read (a background mesh of about a million lines).
 constexpr std::size_t kMaxSizeFileBytes = std::size_t{64} << 20;
@@ -86,6 +94,16 @@ void print_smoothing_stats(const gen::SmoothingCounters2& c, double seconds) {
 
 void run_mesh(const MeshArguments& arguments) {
     const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(arguments.generator);
+    if (arguments.angles_given && generator.name != "delaunay-refinement") {
+        // An option a generator would silently ignore is refused, so that --min-angle 30 never
+        // looks as if it had been honoured.
+        throw InputError("--min-angle and --polish-angle apply to --generator delaunay-refinement only; " +
+                         std::string(generator.name) + " has no angle criterion");
+    }
+    if (!std::isfinite(arguments.min_angle) || !std::isfinite(arguments.polish_angle)) {
+        throw InputError("--min-angle and --polish-angle must be finite numbers (got " +
+                         format_number(arguments.min_angle) + " and " + format_number(arguments.polish_angle) + ")");
+    }
     if (arguments.input.empty() == arguments.domain.empty()) {
         throw InputError("give either an input .poly file or --domain NAME (not both)");
     }
@@ -115,6 +133,8 @@ void run_mesh(const MeshArguments& arguments) {
     } else {
         poly = io::read_poly(arguments.input);
         title = fs::path(arguments.input).filename().string();
+        warn_unused_region_areas(poly, arguments.input,
+                                 "exactmesh sizes triangles by --size only; give a size file or expression instead");
     }
     const std::uint32_t base = poly.vertices.first_index;
 
@@ -216,12 +236,13 @@ void add_mesh_command(CLI::App& app) {
     command
         ->add_option(
             "--min-angle", arguments->min_angle,
-            "Every angle at least this many degrees, away from small input angles; proven to "
-            "terminate up to 20.7 (input angles >= 60), accepted up to 34; 0: no angle criterion")
+            "delaunay-refinement only (the other generators refuse it): every angle at least this "
+            "many degrees, away from small input angles; proven to terminate up to 20.7 (input "
+            "angles >= 60), accepted in [0, 34]; 0: no angle criterion")
         ->capture_default_str();
     command
         ->add_option("--polish-angle", arguments->polish_angle,
-                     "delaunay-refinement: after the refinement to --min-angle, refine triangles "
+                     "delaunay-refinement only: after the refinement to --min-angle, refine triangles "
                      "below this angle too, worst first, within 10% more points (no guarantee: "
                      "when that budget runs out the --min-angle mesh is finished as usual); "
                      "negative: min(--min-angle + 10, 32); 0: off")
@@ -236,14 +257,18 @@ void add_mesh_command(CLI::App& app) {
         ->type_name("NUM|FILE|EXPR");
     command
         ->add_option("--max-steiner", arguments->max_steiner,
-                     "Stop with an error after this many Steiner points (0: automatic)")
+                     "Stop with an error after this many Steiner points (0: automatic; at most " +
+                         std::to_string(tri::kMaxPoints) + ")")
+        ->check(CLI::Validator([](std::string& text) { return check_unsigned_text(text, tri::kMaxPoints); }, "UINT"))
         ->capture_default_str();
     command
         ->add_option(
             "--smooth", arguments->smooth,
             "Laplacian smoothing sweeps after the generator (Jacobi formula, a move that would "
             "invert a triangle undone, Delaunay re-swapping after each sweep; boundary and input "
-            "vertices fixed); timed apart as smooth_seconds")
+            "vertices fixed); stops early after a sweep that moves no vertex; at most " +
+                std::to_string(kMaxSmoothSweeps) + "; timed apart as smooth_seconds")
+        ->check(CLI::Validator([](std::string& text) { return check_unsigned_text(text, kMaxSmoothSweeps); }, "UINT"))
         ->capture_default_str();
     command->add_flag(
         "--quality", arguments->quality,
@@ -252,7 +277,10 @@ void add_mesh_command(CLI::App& app) {
         "--stats", arguments->stats,
         "Print work counters, predicate stages and construct_seconds (the generator alone, "
         "without file I/O)");
-    command->callback([arguments] { run_mesh(*arguments); });
+    command->callback([arguments, command] {
+        arguments->angles_given = command->count("--min-angle") + command->count("--polish-angle") > 0;
+        run_mesh(*arguments);
+    });
 }
 
 }  // namespace exactmesh::cli

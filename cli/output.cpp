@@ -3,6 +3,7 @@
 #include "cli/output.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cctype>
 #include <iostream>
 #include <string>
@@ -92,6 +93,18 @@ void rethrow_at_line(const triangulation::AmbiguousMarkPoint& error, const io::P
     throw io::FormatError(file, line, error.what());
 }
 
+std::string check_unsigned_text(const std::string& text, std::uint64_t max) {
+    std::uint64_t value = 0;
+    const char* const end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, value);
+    if (!text.empty() && text[0] == '-') return "'" + text + "' is negative (expected an integer in [0, " + std::to_string(max) + "])";
+    if (error == std::errc::result_out_of_range || (error == std::errc{} && stop == end && value > max)) {
+        return "'" + text + "' is too large (at most " + std::to_string(max) + ")";
+    }
+    if (error != std::errc{} || stop != end) return "'" + text + "' is not an integer in [0, " + std::to_string(max) + "]";
+    return "";
+}
+
 triangulation::InsertionOrder insertion_order(const std::string& name) {
     if (name == "given") return triangulation::InsertionOrder::Given;
     if (name == "random") return triangulation::InsertionOrder::Random;
@@ -126,6 +139,16 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
             svg.title = svg_title;
             svg.segments = result.pieces;
             set.stage(output, io::format_svg(mesh.xy, mesh.triangles, svg));
+            return;
+        }
+    }
+}
+
+void warn_unused_region_areas(const io::PolyFile& poly, const std::string& file, const std::string& why) {
+    for (std::size_t r = 0; r < poly.regions.size() / 4; ++r) {
+        if (poly.regions[4 * r + 3] > 0) {
+            print_warnings({file + ":" + std::to_string(poly.region_lines[r]) + ": region maximum areas are not applied (" +
+                            why + ")"});
             return;
         }
     }

@@ -63,6 +63,11 @@ auto locating_mark_points(const io::PolyFile& poly, const std::string& file, Wor
     }
 }
 
+/// The check of an integer option (--seed, --max-steiner, --smooth) as a CLI11 validator
+/// body: "" when `text` is a whole decimal integer in [0, max], else the reason. CLI11's own
+/// conversion to an unsigned type wraps "-1" to 2^64 - 1 and saturates larger numbers.
+std::string check_unsigned_text(const std::string& text, std::uint64_t max);
+
 /// The insertion order named by --order (given, random, brio).
 /// @throws InputError naming the unknown order and the known ones.
 triangulation::InsertionOrder insertion_order(const std::string& name);
@@ -74,6 +79,10 @@ triangulation::InsertionOrder insertion_order(const std::string& name);
 void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
                               std::uint32_t base, const std::string& svg_title);
+
+/// Region maximum areas (Triangle's -a per region) are read but not applied: warns once, at the
+/// first region that gives one, with `why`.
+void warn_unused_region_areas(const io::PolyFile& poly, const std::string& file, const std::string& why);
 
 /// Prints the first 10 warnings as "exactmesh: warning: ..." on stderr, then how many more.
 void print_warnings(const std::vector<std::string>& warnings);

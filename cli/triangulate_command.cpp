@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -126,6 +127,9 @@ void add_triangulate_command(CLI::App& app) {
         ->check(CLI::IsMember({"auto", "walk", "grid"}))
         ->capture_default_str();
     command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
+        ->check(CLI::Validator(
+            [](std::string& text) { return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max()); },
+            "UINT64"))
         ->capture_default_str();
     command->add_flag("--stats", arguments->stats,
                       "Print work counters, predicate stages and construct_seconds (the "
