@@ -15,6 +15,7 @@
 #include "cli/output.hpp"
 #include "io/tetgen_format.hpp"
 #include "predicates/errors.hpp"
+#include "triangulation/check_3d.hpp"
 #include "triangulation/edge_face_swap_3d.hpp"
 #include "triangulation/quality_3d.hpp"
 
@@ -57,6 +58,15 @@ void run_swap3d(const Swap3dArguments& arguments) {
     const tri::SwapCriterion3 criterion = tri::swap_criterion_3d_from_name(arguments.criterion);
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.node_path);
     const io::TetgenEleFile ele = io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
+    // The same exact validation as `exactmesh check` (positive orientation, faces shared by at
+    // most two tetrahedra, a closed convex boundary): overlapping tetrahedra would otherwise be
+    // swapped into a "result".
+    if (const tri::Check3Report report = tri::check_tetrahedralization_3d(
+            nodes.xyz, ele.tets, {}, tri::Check3Numbering{nodes.first_index, ele.first_index});
+        !report.ok) {
+        throw InputError(arguments.ele_path + ": not a tetrahedralization of the points of " + arguments.node_path +
+                         ": " + report.problem);
+    }
     tri::Tetrahedralization3 mesh;
     mesh.xyz = nodes.xyz;
     mesh.tets = ele.tets;

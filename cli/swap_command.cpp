@@ -17,6 +17,7 @@
 #include "cli/output.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/errors.hpp"
+#include "triangulation/check_2d.hpp"
 #include "triangulation/edge_cutting_2d.hpp"
 #include "triangulation/edge_swap_2d.hpp"
 
@@ -82,6 +83,15 @@ void run_swap(const SwapArguments& arguments) {
         for (std::uint32_t v = 0; v < nodes.vertex_count(); ++v) {
             values.push_back(nodes.attributes[std::size_t{v} * nodes.attribute_count]);
         }
+    }
+    // The same exact validation as `exactmesh check` (orientation, each edge once, one convex
+    // boundary winding once, every point a vertex): overlapping triangles or a fan that winds
+    // twice would otherwise be swapped into a "result".
+    if (const tri::CheckReport report = tri::check_topology_2d(
+            nodes.xy, ele.triangles, tri::CheckNumbering{nodes.first_index, ele.first_index});
+        !report.ok) {
+        throw InputError(arguments.ele_path + ": not a triangulation of the points of " + arguments.node_path +
+                         ": " + report.problem);
     }
     tri::Triangulation2 mesh;
     mesh.xy = nodes.xy;

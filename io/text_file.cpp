@@ -284,14 +284,14 @@ bool TextLines::next_data_line() {
     std::string_view line;
     while (next_raw_line(line)) {
         ++line_number_;
+        if (const auto nul = line.find('\0'); nul != std::string_view::npos) {
+            fail("a NUL byte at column " + std::to_string(nul + 1) + " (binary data, not a text mesh file)");
+        }
         if (line.size() > kMaxLineBytes) {
             fail("line longer than " + std::to_string(kMaxLineBytes) + " bytes (not a text mesh file?)");
         }
         if (line_number_ == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // UTF-8 BOM
         raw_line_ = line;
-        if (const auto nul = line.find('\0'); nul != std::string_view::npos) {
-            fail("a NUL byte at column " + std::to_string(nul + 1) + " (binary data, not a text mesh file)");
-        }
         const std::size_t comment = line.find('#');
         if (comment != std::string_view::npos) line = line.substr(0, comment);
         fields_.clear();
