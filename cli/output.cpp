@@ -64,8 +64,8 @@ void refuse_to_overwrite_inputs(const std::vector<std::filesystem::path>& inputs
             std::error_code error;
             if (!std::filesystem::exists(output, error) || !std::filesystem::exists(input, error)) continue;
             if (std::filesystem::equivalent(input, output, error) && !error) {
-                throw InputError(output.string() + ": this output is the input file " + input.string() +
-                                 " (writing it would destroy the input); choose another -o name "
+                throw InputError(output.string() + ": this output would overwrite the input file " + input.string() +
+                                 "; choose another -o name "
                                  "(Triangle's convention: IN.1.ele)");
             }
         }

@@ -58,6 +58,14 @@ void run_swap3d(const Swap3dArguments& arguments) {
     const tri::SwapCriterion3 criterion = tri::swap_criterion_3d_from_name(arguments.criterion);
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.node_path);
     const io::TetgenEleFile ele = io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
+    tri::Tetrahedralization3 mesh;
+    mesh.xyz = nodes.xyz;
+    mesh.tets = ele.tets;
+    try {
+        tri::link_neighbors_3d(mesh, nodes.first_index, ele.first_index);
+    } catch (const InputError& error) {
+        throw InputError(arguments.ele_path + ": " + error.what());
+    }
     // The same exact validation as `exactmesh check` (positive orientation, faces shared by at
     // most two tetrahedra, a closed convex boundary): overlapping tetrahedra would otherwise be
     // swapped into a "result".
@@ -66,14 +74,6 @@ void run_swap3d(const Swap3dArguments& arguments) {
         !report.ok) {
         throw InputError(arguments.ele_path + ": not a tetrahedralization of the points of " + arguments.node_path +
                          ": " + report.problem);
-    }
-    tri::Tetrahedralization3 mesh;
-    mesh.xyz = nodes.xyz;
-    mesh.tets = ele.tets;
-    try {
-        tri::link_neighbors_3d(mesh, nodes.first_index, ele.first_index);
-    } catch (const InputError& error) {
-        throw InputError(arguments.ele_path + ": " + error.what());
     }
     const auto start = std::chrono::steady_clock::now();
     tri::FlipMesh3 work = tri::make_flip_mesh_3d(mesh);

@@ -84,6 +84,14 @@ void run_swap(const SwapArguments& arguments) {
             values.push_back(nodes.attributes[std::size_t{v} * nodes.attribute_count]);
         }
     }
+    tri::Triangulation2 mesh;
+    mesh.xy = nodes.xy;
+    mesh.triangles = ele.triangles;
+    try {
+        tri::link_neighbors_2d(mesh, tri::CheckNumbering{nodes.first_index, ele.first_index});
+    } catch (const InputError& error) {
+        throw InputError(arguments.ele_path + ": " + error.what());
+    }
     // The same exact validation as `exactmesh check` (orientation, each edge once, one convex
     // boundary winding once, every point a vertex): overlapping triangles or a fan that winds
     // twice would otherwise be swapped into a "result".
@@ -92,14 +100,6 @@ void run_swap(const SwapArguments& arguments) {
         !report.ok) {
         throw InputError(arguments.ele_path + ": not a triangulation of the points of " + arguments.node_path +
                          ": " + report.problem);
-    }
-    tri::Triangulation2 mesh;
-    mesh.xy = nodes.xy;
-    mesh.triangles = ele.triangles;
-    try {
-        tri::link_neighbors_2d(mesh, tri::CheckNumbering{nodes.first_index, ele.first_index});
-    } catch (const InputError& error) {
-        throw InputError(arguments.ele_path + ": " + error.what());
     }
     const auto start = std::chrono::steady_clock::now();
     tri::EdgeSwapCounters counters;
