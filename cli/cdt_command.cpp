@@ -75,7 +75,8 @@ void run_cdt(const CdtArguments& arguments) {
     refuse_to_overwrite_inputs({arguments.input, io::poly_node_path(arguments.input)}, files);
     const io::PolyFile poly = read_input(arguments.input);
     const std::uint32_t base = poly.vertices.first_index;
-    warn_unused_region_areas(poly, arguments.input, "cdt adds no vertices; `exactmesh mesh` refines to --size");
+    warn_unused_region_areas(poly, arguments.input,
+                             "cdt adds no vertices; `exactmesh mesh` refines to --size");
 
     tri::Cdt2Options options;
     options.recovery = tri::segment_recovery_from_name(arguments.recovery);
@@ -87,15 +88,16 @@ void run_cdt(const CdtArguments& arguments) {
 
     predicates::reset_thread_stats();
     const auto start = std::chrono::steady_clock::now();
-    const tri::Cdt2Result result =
-        locating_mark_points(poly, arguments.input, [&] { return tri::constrained_delaunay_2d(pslg, options); });
+    const tri::Cdt2Result result = locating_mark_points(
+        poly, arguments.input, [&] { return tri::constrained_delaunay_2d(pslg, options); });
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();
 
     print_warnings(result.warnings);
     io::OutputSet set;
-    stage_constrained_result(set, result, files, format, base,
-                             fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")");
+    stage_constrained_result(
+        set, result, files, format, base,
+        fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")");
     commit_outputs(set);
     const tri::Triangulation2& mesh = result.mesh;
     std::cout << "vertices: " << mesh.vertex_count() << '\n' << "triangles: " << mesh.triangle_count() << '\n';
@@ -129,8 +131,11 @@ void add_cdt_command(CLI::App& app) {
     command->add_option("--order", arguments->order, "Vertex insertion order")
         ->check(CLI::IsMember({"given", "random", "brio"}))
         ->capture_default_str();
-    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")->check(CLI::Validator(
-            [](std::string& text) { return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max()); },
+    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max());
+            },
             "UINT64"))
         ->capture_default_str();
     command->add_flag("--stats", arguments->stats,

@@ -115,8 +115,7 @@ int run_check_3d(const CheckArguments& arguments) {
 }
 
 int run_check(const CheckArguments& arguments) {
-    if (io::has_extension(arguments.node_path, ".poly"))
-        return run_constrained_check(arguments);
+    if (io::has_extension(arguments.node_path, ".poly")) return run_constrained_check(arguments);
     if (arguments.conforming)
         throw InputError("--conforming needs an IN.poly (the domain's segments)");
     if (io::read_node_dimension(arguments.node_path) == 3) return run_check_3d(arguments);

@@ -55,7 +55,6 @@ struct MeshArguments {
 /// costs a pass over the mesh and a Delaunay re-swap.
 constexpr std::uint32_t kMaxSmoothSweeps = 1000;
 
-
 /// The longest size file read (a background mesh of about a million lines).
 constexpr std::size_t kMaxSizeFileBytes = std::size_t{64} << 20;
 
@@ -97,12 +96,14 @@ void run_mesh(const MeshArguments& arguments) {
     if (arguments.angles_given && generator.name != "delaunay-refinement") {
         // An option a generator would silently ignore is refused, so that --min-angle 30 never
         // looks as if it had been honoured.
-        throw InputError("--min-angle and --polish-angle apply to --generator delaunay-refinement only; " +
-                         std::string(generator.name) + " has no angle criterion");
+        throw InputError(
+            "--min-angle and --polish-angle apply to --generator delaunay-refinement only; " +
+            std::string(generator.name) + " has no angle criterion");
     }
     if (!std::isfinite(arguments.min_angle) || !std::isfinite(arguments.polish_angle)) {
         throw InputError("--min-angle and --polish-angle must be finite numbers (got " +
-                         format_number(arguments.min_angle) + " and " + format_number(arguments.polish_angle) + ")");
+                         format_number(arguments.min_angle) + " and " +
+                         format_number(arguments.polish_angle) + ")");
     }
     if (arguments.input.empty() == arguments.domain.empty()) {
         throw InputError("give either an input .poly file or --domain NAME (not both)");
@@ -133,8 +134,9 @@ void run_mesh(const MeshArguments& arguments) {
     } else {
         poly = io::read_poly(arguments.input);
         title = fs::path(arguments.input).filename().string();
-        warn_unused_region_areas(poly, arguments.input,
-                                 "exactmesh sizes triangles by --size only; give a size file or expression instead");
+        warn_unused_region_areas(
+            poly, arguments.input,
+            "exactmesh sizes triangles by --size only; give a size file or expression instead");
     }
     const std::uint32_t base = poly.vertices.first_index;
 
@@ -150,12 +152,15 @@ void run_mesh(const MeshArguments& arguments) {
     const auto start = std::chrono::steady_clock::now();
     // A generator that needs a size and was given none takes the input's own spacing (timed:
     // it is part of the construction).
-    const std::string file = arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
+    const std::string file =
+        arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
     if (generator.needs_size && !size.bounded()) {
-        size = locating_mark_points(poly, file, [&] { return gen::size_from_boundary(pslg, options.cdt); });
+        size = locating_mark_points(poly, file,
+                                    [&] { return gen::size_from_boundary(pslg, options.cdt); });
         options.size = size;
     }
-    const gen::MeshRun2 result = locating_mark_points(poly, file, [&] { return generator.run(pslg, options); });
+    const gen::MeshRun2 result =
+        locating_mark_points(poly, file, [&] { return generator.run(pslg, options); });
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();
     const double seconds = std::chrono::duration<double>(stop - start).count();
@@ -241,11 +246,12 @@ void add_mesh_command(CLI::App& app) {
             "angles >= 60), accepted in [0, 34]; 0: no angle criterion")
         ->capture_default_str();
     command
-        ->add_option("--polish-angle", arguments->polish_angle,
-                     "delaunay-refinement only: after the refinement to --min-angle, refine triangles "
-                     "below this angle too, worst first, within 10% more points (no guarantee: "
-                     "when that budget runs out the --min-angle mesh is finished as usual); "
-                     "negative: min(--min-angle + 10, 32); 0: off")
+        ->add_option(
+            "--polish-angle", arguments->polish_angle,
+            "delaunay-refinement only: after the refinement to --min-angle, refine triangles "
+            "below this angle too, worst first, within 10% more points (no guarantee: "
+            "when that budget runs out the --min-angle mesh is finished as usual); "
+            "negative: min(--min-angle + 10, 32); 0: off")
         ->capture_default_str();
     command
         ->add_option("--size", arguments->size,
@@ -259,7 +265,8 @@ void add_mesh_command(CLI::App& app) {
         ->add_option("--max-steiner", arguments->max_steiner,
                      "Stop with an error after this many Steiner points (0: automatic; at most " +
                          std::to_string(tri::kMaxPoints) + ")")
-        ->check(CLI::Validator([](std::string& text) { return check_unsigned_text(text, tri::kMaxPoints); }, "UINT"))
+        ->check(CLI::Validator(
+            [](std::string& text) { return check_unsigned_text(text, tri::kMaxPoints); }, "UINT"))
         ->capture_default_str();
     command
         ->add_option(
@@ -268,7 +275,8 @@ void add_mesh_command(CLI::App& app) {
             "invert a triangle undone, Delaunay re-swapping after each sweep; boundary and input "
             "vertices fixed); stops early after a sweep that moves no vertex; at most " +
                 std::to_string(kMaxSmoothSweeps) + "; timed apart as smooth_seconds")
-        ->check(CLI::Validator([](std::string& text) { return check_unsigned_text(text, kMaxSmoothSweeps); }, "UINT"))
+        ->check(CLI::Validator(
+            [](std::string& text) { return check_unsigned_text(text, kMaxSmoothSweeps); }, "UINT"))
         ->capture_default_str();
     command->add_flag(
         "--quality", arguments->quality,
@@ -278,7 +286,8 @@ void add_mesh_command(CLI::App& app) {
         "Print work counters, predicate stages and construct_seconds (the generator alone, "
         "without file I/O)");
     command->callback([arguments, command] {
-        arguments->angles_given = command->count("--min-angle") + command->count("--polish-angle") > 0;
+        arguments->angles_given =
+            command->count("--min-angle") + command->count("--polish-angle") > 0;
         run_mesh(*arguments);
     });
 }

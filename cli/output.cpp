@@ -3,8 +3,8 @@
 #include "cli/output.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cctype>
+#include <charconv>
 #include <iostream>
 #include <string>
 
@@ -62,9 +62,11 @@ void refuse_to_overwrite_inputs(const std::vector<std::filesystem::path>& inputs
             // equivalent() follows links on both sides and compares the files themselves (device
             // and inode), so a link to the input or a hard link is refused too.
             std::error_code error;
-            if (!std::filesystem::exists(output, error) || !std::filesystem::exists(input, error)) continue;
+            if (!std::filesystem::exists(output, error) || !std::filesystem::exists(input, error))
+                continue;
             if (std::filesystem::equivalent(input, output, error) && !error) {
-                throw InputError(output.string() + ": this output would overwrite the input file " + input.string() +
+                throw InputError(output.string() + ": this output would overwrite the input file " +
+                                 input.string() +
                                  "; choose another -o name "
                                  "(Triangle's convention: IN.1.ele)");
             }
@@ -79,14 +81,17 @@ bool is_existing_file(const std::filesystem::path& path) {
 
 void commit_outputs(io::OutputSet& set) {
     set.commit();
-    for (const std::filesystem::path& file : set.targets()) std::cout << "output: " << file.string() << '\n';
+    for (const std::filesystem::path& file : set.targets())
+        std::cout << "output: " << file.string() << '\n';
 }
 
 void require_ele_output(const std::filesystem::path& output) {
-    if (!io::has_extension(output, ".ele")) throw InputError(output.string() + ": the output must be a .ele file");
+    if (!io::has_extension(output, ".ele"))
+        throw InputError(output.string() + ": the output must be a .ele file");
 }
 
-void rethrow_at_line(const triangulation::AmbiguousMarkPoint& error, const io::PolyFile& poly, const std::string& file) {
+void rethrow_at_line(const triangulation::AmbiguousMarkPoint& error, const io::PolyFile& poly,
+                     const std::string& file) {
     const bool hole = error.kind() == triangulation::AmbiguousMarkPoint::Kind::Hole;
     const std::vector<std::uint64_t>& lines = hole ? poly.hole_lines : poly.region_lines;
     const std::uint64_t line = error.index() < lines.size() ? lines[error.index()] : 0;
@@ -97,11 +102,15 @@ std::string check_unsigned_text(const std::string& text, std::uint64_t max) {
     std::uint64_t value = 0;
     const char* const end = text.data() + text.size();
     const auto [stop, error] = std::from_chars(text.data(), end, value);
-    if (!text.empty() && text[0] == '-') return "'" + text + "' is negative (expected an integer in [0, " + std::to_string(max) + "])";
-    if (error == std::errc::result_out_of_range || (error == std::errc{} && stop == end && value > max)) {
+    if (!text.empty() && text[0] == '-')
+        return "'" + text + "' is negative (expected an integer in [0, " + std::to_string(max) +
+               "])";
+    if (error == std::errc::result_out_of_range ||
+        (error == std::errc{} && stop == end && value > max)) {
         return "'" + text + "' is too large (at most " + std::to_string(max) + ")";
     }
-    if (error != std::errc{} || stop != end) return "'" + text + "' is not an integer in [0, " + std::to_string(max) + "]";
+    if (error != std::errc{} || stop != end)
+        return "'" + text + "' is not an integer in [0, " + std::to_string(max) + "]";
     return "";
 }
 
@@ -132,8 +141,12 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
             set.stage(pieces, io::format_poly(vertices, result.pieces, markers));
             return;
         }
-        case OutputFormat::Msh: set.stage(output, io::format_msh(mesh.xy, mesh.triangles)); return;
-        case OutputFormat::Vtu: set.stage(output, io::format_vtu(mesh.xy, mesh.triangles, base)); return;
+        case OutputFormat::Msh:
+            set.stage(output, io::format_msh(mesh.xy, mesh.triangles));
+            return;
+        case OutputFormat::Vtu:
+            set.stage(output, io::format_vtu(mesh.xy, mesh.triangles, base));
+            return;
         case OutputFormat::Svg: {
             io::SvgOptions svg;
             svg.title = svg_title;
@@ -144,11 +157,12 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
     }
 }
 
-void warn_unused_region_areas(const io::PolyFile& poly, const std::string& file, const std::string& why) {
+void warn_unused_region_areas(const io::PolyFile& poly, const std::string& file,
+                              const std::string& why) {
     for (std::size_t r = 0; r < poly.regions.size() / 4; ++r) {
         if (poly.regions[4 * r + 3] > 0) {
-            print_warnings({file + ":" + std::to_string(poly.region_lines[r]) + ": region maximum areas are not applied (" +
-                            why + ")"});
+            print_warnings({file + ":" + std::to_string(poly.region_lines[r]) +
+                            ": region maximum areas are not applied (" + why + ")"});
             return;
         }
     }

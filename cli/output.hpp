@@ -50,8 +50,8 @@ void require_ele_output(const std::filesystem::path& output);
 
 /// Rethrows `error` as an io::FormatError located at the line of its hole or region in `file`
 /// (the .poly it was read from), so the message names the file and the line.
-[[noreturn]] void rethrow_at_line(const triangulation::AmbiguousMarkPoint& error, const io::PolyFile& poly,
-                                  const std::string& file);
+[[noreturn]] void rethrow_at_line(const triangulation::AmbiguousMarkPoint& error,
+                                  const io::PolyFile& poly, const std::string& file);
 
 /// `work()`, with a hole or region point on a segment or a vertex reported at its line of `file`.
 template <class Work>
@@ -72,7 +72,8 @@ std::string check_unsigned_text(const std::string& text, std::uint64_t max);
 /// @throws InputError naming the unknown order and the known ones.
 triangulation::InsertionOrder insertion_order(const std::string& name);
 
-/// Stages a constrained triangulation (`cdt`, `mesh`) into `set` for `files` (output_files(output, format,
+/// Stages a constrained triangulation (`cdt`, `mesh`) into `set` for `files` (output_files(output,
+/// format,
 /// {".neigh", ".node", ".poly"})): .ele with .neigh, .node (every vertex) and .poly (the pieces,
 /// each marked with its input segment's number); or .msh, .vtu, .svg (with the pieces drawn).
 /// Numbers vertices, triangles and segments from `base`. Nothing is in place until commit.
@@ -82,7 +83,8 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
 
 /// Region maximum areas (Triangle's -a per region) are read but not applied: warns once, at the
 /// first region that gives one, with `why`.
-void warn_unused_region_areas(const io::PolyFile& poly, const std::string& file, const std::string& why);
+void warn_unused_region_areas(const io::PolyFile& poly, const std::string& file,
+                              const std::string& why);
 
 /// Prints the first 10 warnings as "exactmesh: warning: ..." on stderr, then how many more.
 void print_warnings(const std::vector<std::string>& warnings);

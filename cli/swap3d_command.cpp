@@ -72,8 +72,8 @@ void run_swap3d(const Swap3dArguments& arguments) {
     if (const tri::Check3Report report = tri::check_tetrahedralization_3d(
             nodes.xyz, ele.tets, {}, tri::Check3Numbering{nodes.first_index, ele.first_index});
         !report.ok) {
-        throw InputError(arguments.ele_path + ": not a tetrahedralization of the points of " + arguments.node_path +
-                         ": " + report.problem);
+        throw InputError(arguments.ele_path + ": not a tetrahedralization of the points of " +
+                         arguments.node_path + ": " + report.problem);
     }
     const auto start = std::chrono::steady_clock::now();
     tri::FlipMesh3 work = tri::make_flip_mesh_3d(mesh);

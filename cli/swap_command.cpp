@@ -98,8 +98,8 @@ void run_swap(const SwapArguments& arguments) {
     if (const tri::CheckReport report = tri::check_topology_2d(
             nodes.xy, ele.triangles, tri::CheckNumbering{nodes.first_index, ele.first_index});
         !report.ok) {
-        throw InputError(arguments.ele_path + ": not a triangulation of the points of " + arguments.node_path +
-                         ": " + report.problem);
+        throw InputError(arguments.ele_path + ": not a triangulation of the points of " +
+                         arguments.node_path + ": " + report.problem);
     }
     const auto start = std::chrono::steady_clock::now();
     tri::EdgeSwapCounters counters;

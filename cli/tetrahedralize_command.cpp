@@ -89,12 +89,18 @@ void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
     switch (format) {
         case OutputFormat::Ele:
             set.stage(files[0], io::format_tetgen_ele(mesh.tets, nodes.first_index));
-            set.stage(files[1], io::format_tetgen_boundary_faces(mesh.tets, mesh.neighbors, nodes.first_index));
+            set.stage(files[1], io::format_tetgen_boundary_faces(mesh.tets, mesh.neighbors,
+                                                                 nodes.first_index));
             set.stage(files[2], io::format_tetgen_neigh(mesh.neighbors, nodes.first_index));
             break;
-        case OutputFormat::Msh: set.stage(output, io::format_msh_3d(nodes.xyz, mesh.tets)); break;
-        case OutputFormat::Vtu: set.stage(output, io::format_vtu_3d(nodes.xyz, mesh.tets, nodes.first_index)); break;
-        case OutputFormat::Svg: break;  // refused above
+        case OutputFormat::Msh:
+            set.stage(output, io::format_msh_3d(nodes.xyz, mesh.tets));
+            break;
+        case OutputFormat::Vtu:
+            set.stage(output, io::format_vtu_3d(nodes.xyz, mesh.tets, nodes.first_index));
+            break;
+        case OutputFormat::Svg:
+            break;  // refused above
     }
     commit_outputs(set);
     std::cout << "tetrahedra: " << mesh.tet_count() << '\n';
@@ -124,7 +130,9 @@ void add_tetrahedralize_command(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
         ->check(CLI::Validator(
-            [](std::string& text) { return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max()); },
+            [](std::string& text) {
+                return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max());
+            },
             "UINT64"))
         ->capture_default_str();
     command->add_flag("--stats", arguments->stats,

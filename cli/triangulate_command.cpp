@@ -84,11 +84,16 @@ void run_triangulate(const TriangulateArguments& arguments) {
             set.stage(files[0], io::format_ele(result.triangles, nodes.first_index));
             set.stage(files[1], io::format_neigh(result.neighbors, nodes.first_index));
             break;
-        case OutputFormat::Msh: set.stage(output, io::format_msh(nodes.xy, result.triangles)); break;
-        case OutputFormat::Vtu: set.stage(output, io::format_vtu(nodes.xy, result.triangles, nodes.first_index)); break;
+        case OutputFormat::Msh:
+            set.stage(output, io::format_msh(nodes.xy, result.triangles));
+            break;
+        case OutputFormat::Vtu:
+            set.stage(output, io::format_vtu(nodes.xy, result.triangles, nodes.first_index));
+            break;
         case OutputFormat::Svg: {
             io::SvgOptions svg;
-            svg.title = fs::path(arguments.input).filename().string() + " (" + arguments.algorithm + ")";
+            svg.title =
+                fs::path(arguments.input).filename().string() + " (" + arguments.algorithm + ")";
             set.stage(output, io::format_svg(nodes.xy, result.triangles, svg));
             break;
         }
@@ -128,7 +133,9 @@ void add_triangulate_command(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
         ->check(CLI::Validator(
-            [](std::string& text) { return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max()); },
+            [](std::string& text) {
+                return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max());
+            },
             "UINT64"))
         ->capture_default_str();
     command->add_flag("--stats", arguments->stats,

@@ -23,7 +23,9 @@ namespace exactmesh::generators {
 
 namespace {
 
-std::string number_text(double value) { return format_number(value); }
+std::string number_text(double value) {
+    return format_number(value);
+}
 
 /// The shortest text that reads back as `value`.
 std::string short_number(double value) {

@@ -51,8 +51,8 @@ void expect_end(TextLines& lines, std::uint64_t count, const char* what_plural) 
     }
 }
 
-std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension,
-                                   const char* format, VertexSection& section) {
+std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension, const char* format,
+                                   VertexSection& section) {
     const auto& header = lines.fields();
     if (header.size() > 4) {
         lines.fail_quoting_line("header has " + std::to_string(header.size()) +

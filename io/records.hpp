@@ -45,8 +45,8 @@ struct VertexSection {
 /// Parses the header on the current line (`<#vertices> [<dimension>] [<#attributes>]
 /// [<#markers 0|1>]`; an omitted dimension is `dimension`, another one is an error naming
 /// `format`), then the vertices. Returns the announced count.
-std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension,
-                                   const char* format, VertexSection& section);
+std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension, const char* format,
+                                   VertexSection& section);
 
 /// The dimension field of a .node header (2 when omitted, as Triangle reads it), for callers
 /// that dispatch on it; reads the header line only; fails as the readers do on a missing or

@@ -37,8 +37,7 @@ TetgenNodeFile parse_tetgen_node_lines(TextLines& lines) {
             "no header line (expected '<#points> <dimension=3> <#attributes> <#boundary markers>')");
     }
     detail::VertexSection section;
-    const std::uint64_t count =
-        detail::parse_vertex_section(lines, 3, "a 3D TetGen file", section);
+    const std::uint64_t count = detail::parse_vertex_section(lines, 3, "a 3D TetGen file", section);
     expect_end(lines, count, count == 1 ? "vertex" : "vertices");
     TetgenNodeFile nodes;
     nodes.xyz = std::move(section.coordinates);

@@ -95,9 +95,11 @@ std::string read_text_file(const std::filesystem::path& path, std::size_t max_by
                               std::to_string(max_bytes) + " this file may hold");
     }
     errno = 0;
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(path.c_str(), "rb"), &std::fclose);
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(path.c_str(), "rb"),
+                                                       &std::fclose);
     if (!in) {
-        throw FormatError(path.string(), 0, std::string("cannot open for reading: ") + std::strerror(errno));
+        throw FormatError(path.string(), 0,
+                          std::string("cannot open for reading: ") + std::strerror(errno));
     }
     std::string text;
     char chunk[1 << 16];
@@ -105,8 +107,9 @@ std::string read_text_file(const std::filesystem::path& path, std::size_t max_by
         const std::size_t got = std::fread(chunk, 1, sizeof chunk, in.get());
         // A device or pipe has no size: stop at the limit as we read it.
         if (text.size() + got > max_bytes) {
-            throw FormatError(path.string(), 0,
-                              "is longer than the " + std::to_string(max_bytes) + " bytes this file may hold");
+            throw FormatError(
+                path.string(), 0,
+                "is longer than the " + std::to_string(max_bytes) + " bytes this file may hold");
         }
         text.append(chunk, got);
         if (got < sizeof chunk) break;
@@ -123,14 +126,17 @@ void write_text_file(const std::filesystem::path& path, std::string_view text) {
 
 namespace {
 
-std::string system_message(int error) { return error != 0 ? std::strerror(error) : "unknown error"; }
+std::string system_message(int error) {
+    return error != 0 ? std::strerror(error) : "unknown error";
+}
 
 /// Writes `text` to an open file and closes it, checking every step (a full disk shows in the
 /// write, the flush or the close). Returns 0 or the errno of the first failure.
 int write_and_close(std::FILE* file, std::string_view text) {
     errno = 0;
     int error = 0;
-    if (!text.empty() && std::fwrite(text.data(), 1, text.size(), file) != text.size()) error = errno;
+    if (!text.empty() && std::fwrite(text.data(), 1, text.size(), file) != text.size())
+        error = errno;
     if (error == 0 && std::fflush(file) != 0) error = errno;
     if (std::fclose(file) != 0 && error == 0) error = errno;
     if (error == 0 && errno != 0 && std::ferror(file) != 0) error = errno;
@@ -159,7 +165,8 @@ void OutputSet::stage(const std::filesystem::path& target, std::string_view text
     file.target = fs::is_symlink(target, ec) ? fs::weakly_canonical(target, ec) : target;
     if (ec) file.target = target;
     const fs::file_status status = fs::status(file.target, ec);
-    if (fs::is_directory(status)) throw FormatError(file.shown, 0, "is a directory, cannot write the output there");
+    if (fs::is_directory(status))
+        throw FormatError(file.shown, 0, "is a directory, cannot write the output there");
     if (fs::exists(status) && !fs::is_regular_file(status)) {
         // A device or a pipe cannot be replaced by a rename (and /dev/null must stay a device).
         file.direct_text = std::string(text);
@@ -181,12 +188,14 @@ void OutputSet::stage(const std::filesystem::path& target, std::string_view text
     if (out == nullptr) {
         const int error = errno;
         throw FormatError(file.shown, 0,
-                          "cannot open for writing: " + system_message(error) + " (creating a temporary file in " +
+                          "cannot open for writing: " + system_message(error) +
+                              " (creating a temporary file in " +
                               (directory.empty() ? std::string(".") : directory.string()) + ")");
     }
     staged_.push_back(file);  // from here the destructor removes the temporary on failure
     if (const int error = write_and_close(out, text); error != 0) {
-        throw FormatError(file.shown, 0, "write error: " + system_message(error) + " (the old file is unchanged)");
+        throw FormatError(file.shown, 0,
+                          "write error: " + system_message(error) + " (the old file is unchanged)");
     }
     if (fs::is_regular_file(status)) {
         // Keep the old file's permissions (a replaced file keeps its mode, as an editor does).
@@ -211,7 +220,9 @@ void OutputSet::commit() {
         if (file.temporary.empty()) continue;
         std::error_code ec;
         std::filesystem::rename(file.temporary, file.target, ec);
-        if (ec) throw FormatError(file.shown, 0, "cannot move the finished file into place: " + ec.message());
+        if (ec)
+            throw FormatError(file.shown, 0,
+                              "cannot move the finished file into place: " + ec.message());
     }
     committed_ = true;
 }
@@ -285,12 +296,15 @@ bool TextLines::next_data_line() {
     while (next_raw_line(line)) {
         ++line_number_;
         if (const auto nul = line.find('\0'); nul != std::string_view::npos) {
-            fail("a NUL byte at column " + std::to_string(nul + 1) + " (binary data, not a text mesh file)");
+            fail("a NUL byte at column " + std::to_string(nul + 1) +
+                 " (binary data, not a text mesh file)");
         }
         if (line.size() > kMaxLineBytes) {
-            fail("line longer than " + std::to_string(kMaxLineBytes) + " bytes (not a text mesh file?)");
+            fail("line longer than " + std::to_string(kMaxLineBytes) +
+                 " bytes (not a text mesh file?)");
         }
-        if (line_number_ == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // UTF-8 BOM
+        if (line_number_ == 1 && line.substr(0, 3) == "\xEF\xBB\xBF")
+            line.remove_prefix(3);  // UTF-8 BOM
         raw_line_ = line;
         const std::size_t comment = line.find('#');
         if (comment != std::string_view::npos) line = line.substr(0, comment);
@@ -324,7 +338,8 @@ void TextLines::fail_at_end(const std::string& problem) const {
     throw FormatError(file_name_, line_number_ == 0 ? 1 : line_number_, problem);
 }
 
-std::size_t TextLines::plausible_records(std::uint64_t announced, std::size_t min_record_bytes) const {
+std::size_t TextLines::plausible_records(std::uint64_t announced,
+                                         std::size_t min_record_bytes) const {
     return static_cast<std::size_t>(std::min<std::uint64_t>(
         {announced, size_hint_ / min_record_bytes, std::uint64_t{kMaxReservedRecords}}));
 }
@@ -394,7 +409,9 @@ bool has_extension(const std::filesystem::path& path, std::string_view extension
     const std::string actual = path.extension().string();
     return actual.size() == extension.size() &&
            std::equal(actual.begin(), actual.end(), extension.begin(), [](char a, char b) {
-               const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
+               const auto lower = [](char c) {
+                   return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+               };
                return lower(a) == lower(b);
            });
 }

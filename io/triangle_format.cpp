@@ -214,8 +214,9 @@ std::filesystem::path poly_node_path(const std::filesystem::path& poly_path) {
     lower.replace_extension(".node");
     upper.replace_extension(".NODE");
     const std::string extension = poly_path.extension().string();
-    const bool upper_case = extension.size() > 1 &&
-                            std::none_of(extension.begin(), extension.end(), [](char c) { return c >= 'a' && c <= 'z'; });
+    const bool upper_case =
+        extension.size() > 1 && std::none_of(extension.begin(), extension.end(),
+                                             [](char c) { return c >= 'a' && c <= 'z'; });
     std::error_code ec;
     return upper_case && std::filesystem::exists(upper, ec) ? upper : lower;
 }

@@ -50,7 +50,8 @@ class Issue11 : public ::testing::Test {
     /// Every entry of the directory: no temporary may be left behind.
     std::vector<std::string> entries() const {
         std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
+        for (const auto& entry : fs::directory_iterator(dir_))
+            names.push_back(entry.path().filename().string());
         std::sort(names.begin(), names.end());
         return names;
     }
@@ -101,12 +102,14 @@ TEST_F(Issue11, issue_11_disk_full_keeps_old_outputs) {
         set.stage(neigh, "new neigh\n");
         set.commit();
     });
-    EXPECT_NE(message.find("out.neigh: write error: No space left on device"), std::string::npos) << message;
+    EXPECT_NE(message.find("out.neigh: write error: No space left on device"), std::string::npos)
+        << message;
     EXPECT_EQ(content(ele), "old ele\n");
     EXPECT_EQ(entries(), (std::vector<std::string>{"out.ele", "out.neigh"}));
     // The single-file writers go through the same path.
-    EXPECT_NE(error_of([&] { io::write_text_file("/dev/full", "x\n"); }).find("No space left on device"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of([&] { io::write_text_file("/dev/full", "x\n"); }).find("No space left on device"),
+        std::string::npos);
 }
 
 // A set that succeeds replaces every file and follows a link to its target (the link stays).
@@ -141,30 +144,40 @@ TEST_F(Issue11, issue_11_binary_and_endless_inputs_fail_on_line_one) {
     // Not a timing assertion: the reader read at most one chunk, which the error proves by
     // naming line 1; the clock is printed for the record only.
     std::cout << "sparse 3 GB file rejected after "
-              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+              << " s\n";
     const fs::path long_line = write("long.node", std::string(io::kMaxLineBytes + 10, '7'));
     const std::string too_long = error_of([&] { io::read_node(long_line); });
-    EXPECT_NE(too_long.find("long.node:1: line longer than 1048576 bytes"), std::string::npos) << too_long;
+    EXPECT_NE(too_long.find("long.node:1: line longer than 1048576 bytes"), std::string::npos)
+        << too_long;
 }
 
 // A header that promises 2^30 vertices (or segments, triangles) allocates for the records that
 // come, not for the promise: the error is the truncation, at the last line.
 TEST_F(Issue11, issue_11_lying_header_counts_do_not_allocate) {
-    const std::string node = error_of([&] { io::parse_node("1073741823 2 0 0\n0 0 0\n1 1 0\n", "lie.node"); });
+    const std::string node =
+        error_of([&] { io::parse_node("1073741823 2 0 0\n0 0 0\n1 1 0\n", "lie.node"); });
     EXPECT_EQ(node, "lie.node:3: file ends after 2 of 1073741823 announced vertices");
     const fs::path ele = write("lie.ele", "1431655764 3 0\n0 0 1 2\n");
-    EXPECT_EQ(error_of([&] { io::read_ele(ele, 0, 3); }),
-              (dir_ / "lie.ele").string() + ":2: file ends after 1 of 1431655764 announced triangles");
+    EXPECT_EQ(
+        error_of([&] { io::read_ele(ele, 0, 3); }),
+        (dir_ / "lie.ele").string() + ":2: file ends after 1 of 1431655764 announced triangles");
 }
 
 // A UTF-8 byte order mark (as Windows editors write) used to be read as part of the count.
 TEST_F(Issue11, issue_11_byte_order_mark_is_skipped) {
-    const io::NodeFile nodes = io::read_node(write("bom.node", "\xEF\xBB\xBF" "3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n"));
+    const io::NodeFile nodes = io::read_node(write("bom.node",
+                                                   "\xEF\xBB\xBF"
+                                                   "3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n"));
     EXPECT_EQ(nodes.vertex_count(), 3u);
     EXPECT_EQ(nodes.xy[2], 1.0);
     // Only at the start of the file: elsewhere it is still not a number.
-    EXPECT_NE(error_of([] { io::parse_node("1 2 0 0\n\xEF\xBB\xBF" "0 0 0\n", "mid.node"); })
-                  .find("mid.node:2: vertex number '\\xef\\xbb\\xbf0' is not a non-negative integer"),
+    EXPECT_NE(error_of([] {
+                  io::parse_node(
+                      "1 2 0 0\n\xEF\xBB\xBF"
+                      "0 0 0\n",
+                      "mid.node");
+              }).find("mid.node:2: vertex number '\\xef\\xbb\\xbf0' is not a non-negative integer"),
               std::string::npos);
 }
 
@@ -174,14 +187,16 @@ TEST_F(Issue11, issue_11_extensions_in_any_case) {
     EXPECT_TRUE(io::has_extension("x.Poly", ".poly"));
     EXPECT_FALSE(io::has_extension("x.polyx", ".poly"));
     write("shape.NODE", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n");
-    const io::PolyFile poly = io::read_poly(write("shape.POLY", "0 2 0 0\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n"));
+    const io::PolyFile poly =
+        io::read_poly(write("shape.POLY", "0 2 0 0\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n"));
     EXPECT_EQ(poly.vertices.vertex_count(), 3u);
     EXPECT_EQ(poly.segment_count(), 3u);
 }
 
 /// The unit square 1..4 (1-based), with the given hole and region lines.
 io::PolyFile square_with(const std::string& holes_and_regions) {
-    return io::parse_poly("4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n" + holes_and_regions,
+    return io::parse_poly("4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n" +
+                              holes_and_regions,
                           "square.poly", "square.node");
 }
 
@@ -190,7 +205,8 @@ std::string ambiguity(const io::PolyFile& poly) {
     tri::Cdt2Options options;
     options.first_index = poly.vertices.first_index;
     try {
-        tri::constrained_delaunay_2d(tri::Pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions}, options);
+        tri::constrained_delaunay_2d(
+            tri::Pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions}, options);
     } catch (const tri::AmbiguousMarkPoint& error) {
         return error.what();
     }
@@ -202,21 +218,24 @@ std::string ambiguity(const io::PolyFile& poly) {
 // segment or vertex, in the file's numbering, with the line the .poly reader recorded.
 TEST_F(Issue11, issue_11_hole_on_segment_or_vertex_is_an_error) {
     const io::PolyFile on_segment = square_with("1\n1 0.5 0\n");
-    EXPECT_EQ(ambiguity(on_segment),
-              "hole 1 at (0.5, 0) lies on segment 1: which side is the hole is ambiguous; move the point "
-              "strictly inside the hole");
+    EXPECT_EQ(
+        ambiguity(on_segment),
+        "hole 1 at (0.5, 0) lies on segment 1: which side is the hole is ambiguous; move the point "
+        "strictly inside the hole");
     EXPECT_EQ(on_segment.hole_lines, (std::vector<std::uint64_t>{12}));
-    EXPECT_EQ(ambiguity(square_with("1\n1 1 1\n")),
-              "hole 1 at (1, 1) lies on vertex 3: which side is the hole is ambiguous; move the point "
-              "strictly inside the hole");
+    EXPECT_EQ(
+        ambiguity(square_with("1\n1 1 1\n")),
+        "hole 1 at (1, 1) lies on vertex 3: which side is the hole is ambiguous; move the point "
+        "strictly inside the hole");
     // On the inner diagonal's line but beyond its end: not on the segment, and inside: fine.
     EXPECT_EQ(ambiguity(square_with("1\n1 0.25 0.25\n")), "");
     // Outside the domain on the line of a hull segment, beyond its end: ignored as before.
     EXPECT_EQ(ambiguity(square_with("1\n1 2 0\n")), "");
     // A region point on a segment is as ambiguous.
-    EXPECT_EQ(ambiguity(square_with("0\n1\n1 1 0.5 7\n")),
-              "region 1 at (1, 0.5) lies on segment 2: which side is the region is ambiguous; move the "
-              "point strictly inside it");
+    EXPECT_EQ(
+        ambiguity(square_with("0\n1\n1 1 0.5 7\n")),
+        "region 1 at (1, 0.5) lies on segment 2: which side is the region is ambiguous; move the "
+        "point strictly inside it");
     // Exactly: a hole 2^-1074 off the segment is inside, decided by exact orient2d.
     EXPECT_EQ(ambiguity(square_with("1\n1 0.5 4.9406564584124654e-324\n")), "");
 }
