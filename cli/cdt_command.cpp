@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -37,7 +38,7 @@ struct CdtArguments {
 
 /// The input as a PSLG: a .poly, or a .node (points only).
 io::PolyFile read_input(const fs::path& input) {
-    if (input.extension() == ".node") {
+    if (io::has_extension(input, ".node")) {
         io::PolyFile poly;
         poly.vertices = io::read_node(input);
         return poly;
@@ -71,9 +72,11 @@ void run_cdt(const CdtArguments& arguments) {
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
-    refuse_to_overwrite_input(arguments.input, files);
+    refuse_to_overwrite_inputs({arguments.input, io::poly_node_path(arguments.input)}, files);
     const io::PolyFile poly = read_input(arguments.input);
     const std::uint32_t base = poly.vertices.first_index;
+    warn_unused_region_areas(poly, arguments.input,
+                             "cdt adds no vertices; `exactmesh mesh` refines to --size");
 
     tri::Cdt2Options options;
     options.recovery = tri::segment_recovery_from_name(arguments.recovery);
@@ -85,13 +88,17 @@ void run_cdt(const CdtArguments& arguments) {
 
     predicates::reset_thread_stats();
     const auto start = std::chrono::steady_clock::now();
-    const tri::Cdt2Result result = tri::constrained_delaunay_2d(pslg, options);
+    const tri::Cdt2Result result = locating_mark_points(
+        poly, arguments.input, [&] { return tri::constrained_delaunay_2d(pslg, options); });
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();
 
     print_warnings(result.warnings);
-    write_constrained_result(result, files, format, base,
-                             fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")");
+    io::OutputSet set;
+    stage_constrained_result(
+        set, result, files, format, base,
+        fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")");
+    commit_outputs(set);
     const tri::Triangulation2& mesh = result.mesh;
     std::cout << "vertices: " << mesh.vertex_count() << '\n' << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {
@@ -124,7 +131,13 @@ void add_cdt_command(CLI::App& app) {
     command->add_option("--order", arguments->order, "Vertex insertion order")
         ->check(CLI::IsMember({"given", "random", "brio"}))
         ->capture_default_str();
-    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")->capture_default_str();
+    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max());
+            },
+            "UINT64"))
+        ->capture_default_str();
     command->add_flag("--stats", arguments->stats,
                       "Print work counters, predicate stages and construct_seconds (the construction "
                       "alone, without file I/O)");

@@ -16,6 +16,7 @@
 
 #include "cli/commands.hpp"
 #include "io/tetgen_format.hpp"
+#include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/errors.hpp"
 #include "triangulation/check_2d.hpp"
@@ -114,8 +115,7 @@ int run_check_3d(const CheckArguments& arguments) {
 }
 
 int run_check(const CheckArguments& arguments) {
-    if (std::filesystem::path(arguments.node_path).extension() == ".poly")
-        return run_constrained_check(arguments);
+    if (io::has_extension(arguments.node_path, ".poly")) return run_constrained_check(arguments);
     if (arguments.conforming)
         throw InputError("--conforming needs an IN.poly (the domain's segments)");
     if (io::read_node_dimension(arguments.node_path) == 3) return run_check_3d(arguments);

@@ -14,10 +14,44 @@
 
 namespace {
 
-/// Prints `message` as a single line (embedded newlines folded) and returns `status`.
+/// The length of the valid UTF-8 sequence at `text[i]` that is not a C1 control (U+0080 to
+/// U+009F, which some terminals obey), or 0.
+std::size_t utf8_length(std::string_view text, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char c = byte(i);
+    const std::size_t length = c >= 0xF0 && c <= 0xF4  ? 4
+                               : c >= 0xE0             ? 3
+                               : c >= 0xC2 && c < 0xE0 ? 2
+                                                       : 0;
+    if (length == 0 || c >= 0xF5 || i + length > text.size()) return 0;
+    for (std::size_t k = 1; k < length; ++k) {
+        if ((byte(i + k) & 0xC0) != 0x80) return 0;
+    }
+    if (c == 0xC2 && byte(i + 1) < 0xA0) return 0;  // C1 control
+    return length;
+}
+
+/// Prints `message` as a single line and returns `status`. Newlines fold to spaces; every other
+/// control byte and every byte outside valid UTF-8 is printed as \xNN, so a message that quotes
+/// a binary file (a size file, a file name) never writes raw bytes to the terminal.
 int report_error(std::string_view message, int status) {
+    static constexpr char kHex[] = "0123456789abcdef";
     std::string line = "exactmesh: error: ";
-    for (const char c : message) line += (c == '\n' || c == '\r') ? ' ' : c;
+    for (std::size_t i = 0; i < message.size(); ++i) {
+        const auto c = static_cast<unsigned char>(message[i]);
+        if (c == '\n' || c == '\r') {
+            line += ' ';
+        } else if (c >= 0x20 && c < 0x7f) {
+            line += static_cast<char>(c);
+        } else if (const std::size_t length = c >= 0x80 ? utf8_length(message, i) : 0; length > 0) {
+            line.append(message.substr(i, length));
+            i += length - 1;
+        } else {
+            line += "\\x";
+            line += kHex[c >> 4];
+            line += kHex[c & 0xF];
+        }
+    }
     while (!line.empty() && line.back() == ' ') line.pop_back();
     std::cout.flush();
     std::cerr << line << '\n';

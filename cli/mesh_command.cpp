@@ -5,13 +5,12 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "cli/commands.hpp"
@@ -23,8 +22,10 @@
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
 #include "generators/size_function.hpp"
+#include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/errors.hpp"
+#include "predicates/number_text.hpp"
 #include "predicates/stats.hpp"
 
 namespace exactmesh::cli {
@@ -47,18 +48,25 @@ struct MeshArguments {
     std::uint32_t smooth = 0;
     bool quality = false;
     bool stats = false;
+    bool angles_given = false;  ///< --min-angle or --polish-angle on the command line
 };
 
-/// --size: a number (uniform), else a size file (generators/size_function.hpp) when one of
-/// that name exists, else an expression in x and y (cli/size_expression.hpp).
+/// The most --smooth sweeps: Laplacian smoothing converges within tens of sweeps, and each
+/// costs a pass over the mesh and a Delaunay re-swap.
+constexpr std::uint32_t kMaxSmoothSweeps = 1000;
+
+/// The longest size file read (a background mesh of about a million lines).
+constexpr std::size_t kMaxSizeFileBytes = std::size_t{64} << 20;
+
+/// --size: a number (uniform), else a size file (generators/size_function.hpp) when a file of
+/// that name exists (one that exists but cannot be read is reported as such, not as a bad
+/// expression), else an expression in x and y (cli/size_expression.hpp).
 gen::SizeFunction read_size(const std::string& text) {
     double uniform = 0;
     if (gen::parse_uniform_size(text, uniform)) return gen::SizeFunction::uniform(uniform);
-    std::ifstream file(text);
-    if (!file) return size_from_expression(text);
-    std::ostringstream content;
-    content << file.rdbuf();
-    return gen::parse_size_sources(content.str(), text);
+    std::error_code error;
+    if (!fs::exists(text, error)) return size_from_expression(text);
+    return gen::parse_size_sources(io::read_text_file(text, kMaxSizeFileBytes), text);
 }
 
 void print_stats(const gen::MeshRun2& run, const predicates::PredicateStats& stats,
@@ -85,12 +93,31 @@ void print_smoothing_stats(const gen::SmoothingCounters2& c, double seconds) {
 
 void run_mesh(const MeshArguments& arguments) {
     const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(arguments.generator);
+    if (arguments.angles_given && generator.name != "delaunay-refinement") {
+        // An option a generator would silently ignore is refused, so that --min-angle 30 never
+        // looks as if it had been honoured.
+        throw InputError(
+            "--min-angle and --polish-angle apply to --generator delaunay-refinement only; " +
+            std::string(generator.name) + " has no angle criterion");
+    }
+    if (!std::isfinite(arguments.min_angle) || !std::isfinite(arguments.polish_angle)) {
+        throw InputError("--min-angle and --polish-angle must be finite numbers (got " +
+                         format_number(arguments.min_angle) + " and " +
+                         format_number(arguments.polish_angle) + ")");
+    }
     if (arguments.input.empty() == arguments.domain.empty()) {
         throw InputError("give either an input .poly file or --domain NAME (not both)");
     }
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
+    if (!arguments.input.empty()) {
+        std::vector<fs::path> inputs{arguments.input, io::poly_node_path(arguments.input)};
+        if (!arguments.size.empty()) inputs.emplace_back(arguments.size);
+        refuse_to_overwrite_inputs(inputs, files);
+    } else if (!arguments.size.empty()) {
+        refuse_to_overwrite_inputs({arguments.size}, files);
+    }
 
     gen::SizeFunction size =
         arguments.size.empty() ? gen::SizeFunction() : read_size(arguments.size);
@@ -105,9 +132,11 @@ void run_mesh(const MeshArguments& arguments) {
         poly.holes = std::move(pslg.holes);
         title = arguments.domain;
     } else {
-        refuse_to_overwrite_input(arguments.input, files);
         poly = io::read_poly(arguments.input);
         title = fs::path(arguments.input).filename().string();
+        warn_unused_region_areas(
+            poly, arguments.input,
+            "exactmesh sizes triangles by --size only; give a size file or expression instead");
     }
     const std::uint32_t base = poly.vertices.first_index;
 
@@ -123,11 +152,15 @@ void run_mesh(const MeshArguments& arguments) {
     const auto start = std::chrono::steady_clock::now();
     // A generator that needs a size and was given none takes the input's own spacing (timed:
     // it is part of the construction).
+    const std::string file =
+        arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
     if (generator.needs_size && !size.bounded()) {
-        size = gen::size_from_boundary(pslg, options.cdt);
+        size = locating_mark_points(poly, file,
+                                    [&] { return gen::size_from_boundary(pslg, options.cdt); });
         options.size = size;
     }
-    const gen::MeshRun2 result = generator.run(pslg, options);
+    const gen::MeshRun2 result =
+        locating_mark_points(poly, file, [&] { return generator.run(pslg, options); });
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();
     const double seconds = std::chrono::duration<double>(stop - start).count();
@@ -153,7 +186,9 @@ void run_mesh(const MeshArguments& arguments) {
     } else {
         std::snprintf(label, sizeof label, " (%s)", arguments.generator.c_str());
     }
-    write_constrained_result(final_result.mesh, files, format, base, title + label);
+    io::OutputSet set;
+    stage_constrained_result(set, final_result.mesh, files, format, base, title + label);
+    commit_outputs(set);
     const tri::Triangulation2& mesh = final_result.mesh.mesh;
     std::cout << "vertices: " << mesh.vertex_count() << '\n'
               << "triangles: " << mesh.triangle_count() << '\n';
@@ -206,15 +241,17 @@ void add_mesh_command(CLI::App& app) {
     command
         ->add_option(
             "--min-angle", arguments->min_angle,
-            "Every angle at least this many degrees, away from small input angles; proven to "
-            "terminate up to 20.7 (input angles >= 60), accepted up to 34; 0: no angle criterion")
+            "delaunay-refinement only (the other generators refuse it): every angle at least this "
+            "many degrees, away from small input angles; proven to terminate up to 20.7 (input "
+            "angles >= 60), accepted in [0, 34]; 0: no angle criterion")
         ->capture_default_str();
     command
-        ->add_option("--polish-angle", arguments->polish_angle,
-                     "delaunay-refinement: after the refinement to --min-angle, refine triangles "
-                     "below this angle too, worst first, within 10% more points (no guarantee: "
-                     "when that budget runs out the --min-angle mesh is finished as usual); "
-                     "negative: min(--min-angle + 10, 32); 0: off")
+        ->add_option(
+            "--polish-angle", arguments->polish_angle,
+            "delaunay-refinement only: after the refinement to --min-angle, refine triangles "
+            "below this angle too, worst first, within 10% more points (no guarantee: "
+            "when that budget runs out the --min-angle mesh is finished as usual); "
+            "negative: min(--min-angle + 10, 32); 0: off")
         ->capture_default_str();
     command
         ->add_option("--size", arguments->size,
@@ -226,14 +263,20 @@ void add_mesh_command(CLI::App& app) {
         ->type_name("NUM|FILE|EXPR");
     command
         ->add_option("--max-steiner", arguments->max_steiner,
-                     "Stop with an error after this many Steiner points (0: automatic)")
+                     "Stop with an error after this many Steiner points (0: automatic; at most " +
+                         std::to_string(tri::kMaxPoints) + ")")
+        ->check(CLI::Validator(
+            [](std::string& text) { return check_unsigned_text(text, tri::kMaxPoints); }, "UINT"))
         ->capture_default_str();
     command
         ->add_option(
             "--smooth", arguments->smooth,
             "Laplacian smoothing sweeps after the generator (Jacobi formula, a move that would "
             "invert a triangle undone, Delaunay re-swapping after each sweep; boundary and input "
-            "vertices fixed); timed apart as smooth_seconds")
+            "vertices fixed); stops early after a sweep that moves no vertex; at most " +
+                std::to_string(kMaxSmoothSweeps) + "; timed apart as smooth_seconds")
+        ->check(CLI::Validator(
+            [](std::string& text) { return check_unsigned_text(text, kMaxSmoothSweeps); }, "UINT"))
         ->capture_default_str();
     command->add_flag(
         "--quality", arguments->quality,
@@ -242,7 +285,11 @@ void add_mesh_command(CLI::App& app) {
         "--stats", arguments->stats,
         "Print work counters, predicate stages and construct_seconds (the generator alone, "
         "without file I/O)");
-    command->callback([arguments] { run_mesh(*arguments); });
+    command->callback([arguments, command] {
+        arguments->angles_given =
+            command->count("--min-angle") + command->count("--polish-angle") > 0;
+        run_mesh(*arguments);
+    });
 }
 
 }  // namespace exactmesh::cli

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <iostream>
 #include <string>
 
+#include "io/format_error.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/svg_picture.hpp"
 #include "io/triangle_format.hpp"
@@ -53,14 +55,63 @@ std::vector<std::filesystem::path> output_files(const std::filesystem::path& out
     return files;
 }
 
-void refuse_to_overwrite_input(const std::filesystem::path& input, const std::vector<std::filesystem::path>& outputs) {
-    std::error_code error;
+void refuse_to_overwrite_inputs(const std::vector<std::filesystem::path>& inputs,
+                                const std::vector<std::filesystem::path>& outputs) {
     for (const std::filesystem::path& output : outputs) {
-        if (std::filesystem::exists(output, error) && std::filesystem::equivalent(input, output, error)) {
-            throw InputError(output.string() + ": this output would overwrite the input file; choose another -o name "
-                             "(Triangle's convention: IN.1.ele)");
+        for (const std::filesystem::path& input : inputs) {
+            // equivalent() follows links on both sides and compares the files themselves (device
+            // and inode), so a link to the input or a hard link is refused too.
+            std::error_code error;
+            if (!std::filesystem::exists(output, error) || !std::filesystem::exists(input, error))
+                continue;
+            if (std::filesystem::equivalent(input, output, error) && !error) {
+                throw InputError(output.string() + ": this output would overwrite the input file " +
+                                 input.string() +
+                                 "; choose another -o name "
+                                 "(Triangle's convention: IN.1.ele)");
+            }
         }
     }
+}
+
+bool is_existing_file(const std::filesystem::path& path) {
+    std::error_code error;
+    return std::filesystem::exists(path, error) && !std::filesystem::is_directory(path, error);
+}
+
+void commit_outputs(io::OutputSet& set) {
+    set.commit();
+    for (const std::filesystem::path& file : set.targets())
+        std::cout << "output: " << file.string() << '\n';
+}
+
+void require_ele_output(const std::filesystem::path& output) {
+    if (!io::has_extension(output, ".ele"))
+        throw InputError(output.string() + ": the output must be a .ele file");
+}
+
+void rethrow_at_line(const triangulation::AmbiguousMarkPoint& error, const io::PolyFile& poly,
+                     const std::string& file) {
+    const bool hole = error.kind() == triangulation::AmbiguousMarkPoint::Kind::Hole;
+    const std::vector<std::uint64_t>& lines = hole ? poly.hole_lines : poly.region_lines;
+    const std::uint64_t line = error.index() < lines.size() ? lines[error.index()] : 0;
+    throw io::FormatError(file, line, error.what());
+}
+
+std::string check_unsigned_text(const std::string& text, std::uint64_t max) {
+    std::uint64_t value = 0;
+    const char* const end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, value);
+    if (!text.empty() && text[0] == '-')
+        return "'" + text + "' is negative (expected an integer in [0, " + std::to_string(max) +
+               "])";
+    if (error == std::errc::result_out_of_range ||
+        (error == std::errc{} && stop == end && value > max)) {
+        return "'" + text + "' is too large (at most " + std::to_string(max) + ")";
+    }
+    if (error != std::errc{} || stop != end)
+        return "'" + text + "' is not an integer in [0, " + std::to_string(max) + "]";
+    return "";
 }
 
 triangulation::InsertionOrder insertion_order(const std::string& name) {
@@ -70,8 +121,9 @@ triangulation::InsertionOrder insertion_order(const std::string& name) {
     throw InputError("unknown insertion order '" + name + "' (known: given, random, brio)");
 }
 
-void write_constrained_result(const triangulation::Cdt2Result& result, const std::vector<std::filesystem::path>& files,
-                              OutputFormat format, std::uint32_t base, const std::string& svg_title) {
+void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
+                              const std::vector<std::filesystem::path>& files, OutputFormat format,
+                              std::uint32_t base, const std::string& svg_title) {
     namespace fs = std::filesystem;
     const triangulation::Triangulation2& mesh = result.mesh;
     const fs::path& output = files[0];
@@ -83,24 +135,37 @@ void write_constrained_result(const triangulation::Cdt2Result& result, const std
             vertices.first_index = base;
             std::vector<std::int32_t> markers;
             for (const std::uint32_t s : result.piece_segment) markers.push_back(static_cast<std::int32_t>(s + base));
-            io::write_ele(output, mesh.triangles, base, result.triangle_attributes);
-            io::write_neigh(neigh, mesh.neighbors, base);
-            io::write_node(node, vertices);
-            io::write_poly(pieces, vertices, result.pieces, markers);
-            for (const fs::path& p : {output, neigh, node, pieces}) std::cout << "output: " << p.string() << '\n';
+            set.stage(output, io::format_ele(mesh.triangles, base, result.triangle_attributes));
+            set.stage(neigh, io::format_neigh(mesh.neighbors, base));
+            set.stage(node, io::format_node(vertices));
+            set.stage(pieces, io::format_poly(vertices, result.pieces, markers));
             return;
         }
-        case OutputFormat::Msh: io::write_msh(output, mesh.xy, mesh.triangles); break;
-        case OutputFormat::Vtu: io::write_vtu(output, mesh.xy, mesh.triangles, base); break;
+        case OutputFormat::Msh:
+            set.stage(output, io::format_msh(mesh.xy, mesh.triangles));
+            return;
+        case OutputFormat::Vtu:
+            set.stage(output, io::format_vtu(mesh.xy, mesh.triangles, base));
+            return;
         case OutputFormat::Svg: {
             io::SvgOptions svg;
             svg.title = svg_title;
             svg.segments = result.pieces;
-            io::write_svg(output, mesh.xy, mesh.triangles, svg);
-            break;
+            set.stage(output, io::format_svg(mesh.xy, mesh.triangles, svg));
+            return;
         }
     }
-    std::cout << "output: " << output.string() << '\n';
+}
+
+void warn_unused_region_areas(const io::PolyFile& poly, const std::string& file,
+                              const std::string& why) {
+    for (std::size_t r = 0; r < poly.regions.size() / 4; ++r) {
+        if (poly.regions[4 * r + 3] > 0) {
+            print_warnings({file + ":" + std::to_string(poly.region_lines[r]) +
+                            ": region maximum areas are not applied (" + why + ")"});
+            return;
+        }
+    }
 }
 
 void print_warnings(const std::vector<std::string>& warnings) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Helpers shared by the construction commands: the output format named by a file extension,
-// the --order option, and the predicate stage counters printed by --stats.
+// all-or-nothing output sets (io::OutputSet) and the refusal of outputs that are inputs, the
+// --order option, and the predicate stage counters printed by --stats.
 #pragma once
 
 #include <filesystem>
@@ -8,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "io/point_set_2d.hpp"
+#include "io/text_file.hpp"
 #include "predicates/stats.hpp"
 #include "triangulation/constrained_2d.hpp"
 #include "triangulation/delaunay_2d.hpp"
@@ -25,20 +28,63 @@ OutputFormat output_format(const std::filesystem::path& output);
 std::vector<std::filesystem::path> output_files(const std::filesystem::path& output, OutputFormat format,
                                                 std::initializer_list<const char*> ele_companions);
 
-/// @throws InputError when one of `outputs` is the input file (an `-o IN.ele` next to IN.poly
-/// would overwrite IN.poly with the .poly of the result), before any work is done.
-void refuse_to_overwrite_input(const std::filesystem::path& input, const std::vector<std::filesystem::path>& outputs);
+/// @throws InputError when one of `outputs` resolves to one of `inputs` (the same file by
+/// std::filesystem::equivalent, so through links, hard links and `./` spellings: `swap IN.node
+/// IN.ele -o IN.ele`, or an `-o IN.ele` next to IN.poly that would overwrite IN.poly with the
+/// .poly of the result), before any work is done. Inputs that do not exist are skipped.
+void refuse_to_overwrite_inputs(const std::vector<std::filesystem::path>& inputs,
+                                const std::vector<std::filesystem::path>& outputs);
+
+/// Whether `path` names an existing file (not a directory): for optional inputs such as the
+/// .node companion of a .poly, or a --size file.
+bool is_existing_file(const std::filesystem::path& path);
+
+/// Moves every file of `set` into place (io::OutputSet::commit) and prints "output: <file>"
+/// for each, in order. Every command writes its outputs through one set: a failing companion
+/// or a full disk then leaves every previous output as it was.
+void commit_outputs(io::OutputSet& set);
+
+/// The output extension check of swap, swap3d and min-max (any case: .ELE is a .ele).
+/// @throws InputError naming the file when it does not end in .ele.
+void require_ele_output(const std::filesystem::path& output);
+
+/// Rethrows `error` as an io::FormatError located at the line of its hole or region in `file`
+/// (the .poly it was read from), so the message names the file and the line.
+[[noreturn]] void rethrow_at_line(const triangulation::AmbiguousMarkPoint& error,
+                                  const io::PolyFile& poly, const std::string& file);
+
+/// `work()`, with a hole or region point on a segment or a vertex reported at its line of `file`.
+template <class Work>
+auto locating_mark_points(const io::PolyFile& poly, const std::string& file, Work&& work) {
+    try {
+        return work();
+    } catch (const triangulation::AmbiguousMarkPoint& error) {
+        rethrow_at_line(error, poly, file);
+    }
+}
+
+/// The check of an integer option (--seed, --max-steiner, --smooth) as a CLI11 validator
+/// body: "" when `text` is a whole decimal integer in [0, max], else the reason. CLI11's own
+/// conversion to an unsigned type wraps "-1" to 2^64 - 1 and saturates larger numbers.
+std::string check_unsigned_text(const std::string& text, std::uint64_t max);
 
 /// The insertion order named by --order (given, random, brio).
 /// @throws InputError naming the unknown order and the known ones.
 triangulation::InsertionOrder insertion_order(const std::string& name);
 
-/// Writes a constrained triangulation (`cdt`, `mesh`) to `files` (output_files(output, format,
+/// Stages a constrained triangulation (`cdt`, `mesh`) into `set` for `files` (output_files(output,
+/// format,
 /// {".neigh", ".node", ".poly"})): .ele with .neigh, .node (every vertex) and .poly (the pieces,
 /// each marked with its input segment's number); or .msh, .vtu, .svg (with the pieces drawn).
-/// Numbers vertices, triangles and segments from `base`; prints "output: <file>" per file.
-void write_constrained_result(const triangulation::Cdt2Result& result, const std::vector<std::filesystem::path>& files,
-                              OutputFormat format, std::uint32_t base, const std::string& svg_title);
+/// Numbers vertices, triangles and segments from `base`. Nothing is in place until commit.
+void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
+                              const std::vector<std::filesystem::path>& files, OutputFormat format,
+                              std::uint32_t base, const std::string& svg_title);
+
+/// Region maximum areas (Triangle's -a per region) are read but not applied: warns once, at the
+/// first region that gives one, with `why`.
+void warn_unused_region_areas(const io::PolyFile& poly, const std::string& file,
+                              const std::string& why);
 
 /// Prints the first 10 warnings as "exactmesh: warning: ..." on stderr, then how many more.
 void print_warnings(const std::vector<std::string>& warnings);

@@ -12,8 +12,10 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "io/tetgen_format.hpp"
 #include "predicates/errors.hpp"
+#include "triangulation/check_3d.hpp"
 #include "triangulation/edge_face_swap_3d.hpp"
 #include "triangulation/quality_3d.hpp"
 
@@ -51,7 +53,8 @@ void print_quality(const tri::Tetrahedralization3& mesh) {
 
 void run_swap3d(const Swap3dArguments& arguments) {
     const fs::path output = arguments.output;
-    if (output.extension() != ".ele") throw InputError(output.string() + ": the output must be a .ele file");
+    require_ele_output(output);
+    refuse_to_overwrite_inputs({arguments.node_path, arguments.ele_path}, {output});
     const tri::SwapCriterion3 criterion = tri::swap_criterion_3d_from_name(arguments.criterion);
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.node_path);
     const io::TetgenEleFile ele = io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
@@ -63,13 +66,24 @@ void run_swap3d(const Swap3dArguments& arguments) {
     } catch (const InputError& error) {
         throw InputError(arguments.ele_path + ": " + error.what());
     }
+    // The same exact validation as `exactmesh check` (positive orientation, faces shared by at
+    // most two tetrahedra, a closed convex boundary): overlapping tetrahedra would otherwise be
+    // swapped into a "result".
+    if (const tri::Check3Report report = tri::check_tetrahedralization_3d(
+            nodes.xyz, ele.tets, {}, tri::Check3Numbering{nodes.first_index, ele.first_index});
+        !report.ok) {
+        throw InputError(arguments.ele_path + ": not a tetrahedralization of the points of " +
+                         arguments.node_path + ": " + report.problem);
+    }
     const auto start = std::chrono::steady_clock::now();
     tri::FlipMesh3 work = tri::make_flip_mesh_3d(mesh);
     const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(work, criterion);
     mesh = tri::to_tetrahedralization_3d(work);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    io::write_tetgen_ele(output, mesh.tets, ele.first_index);
-    std::cout << "output: " << output.string() << '\n' << "tetrahedra: " << mesh.tet_count() << '\n';
+    io::OutputSet set;
+    set.stage(output, io::format_tetgen_ele(mesh.tets, ele.first_index));
+    commit_outputs(set);
+    std::cout << "tetrahedra: " << mesh.tet_count() << '\n';
     if (arguments.stats) {
         std::cout << "criterion: " << tri::swap_criterion_3d_name(criterion) << '\n'
                   << "faces_examined: " << counters.faces_examined << '\n'

@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/output.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/errors.hpp"
+#include "triangulation/check_2d.hpp"
 #include "triangulation/edge_cutting_2d.hpp"
 #include "triangulation/edge_swap_2d.hpp"
 
@@ -40,12 +42,6 @@ struct MinMaxArguments {
     std::string output;
     bool stats = false;
 };
-
-void require_ele_output(const fs::path& output) {
-    if (output.extension() != ".ele") {
-        throw InputError(output.string() + ": the output must be a .ele file");
-    }
-}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -73,6 +69,7 @@ void print_seconds(double seconds) {
 void run_swap(const SwapArguments& arguments) {
     const fs::path output = arguments.output;
     require_ele_output(output);
+    refuse_to_overwrite_inputs({arguments.node_path, arguments.ele_path}, {output});
     const tri::SwapCriterion criterion = tri::swap_criterion_from_name(arguments.criterion);
     const io::NodeFile nodes = io::read_node(arguments.node_path);
     const io::EleFile ele = io::read_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
@@ -95,6 +92,15 @@ void run_swap(const SwapArguments& arguments) {
     } catch (const InputError& error) {
         throw InputError(arguments.ele_path + ": " + error.what());
     }
+    // The same exact validation as `exactmesh check` (orientation, each edge once, one convex
+    // boundary winding once, every point a vertex): overlapping triangles or a fan that winds
+    // twice would otherwise be swapped into a "result".
+    if (const tri::CheckReport report = tri::check_topology_2d(
+            nodes.xy, ele.triangles, tri::CheckNumbering{nodes.first_index, ele.first_index});
+        !report.ok) {
+        throw InputError(arguments.ele_path + ": not a triangulation of the points of " +
+                         arguments.node_path + ": " + report.problem);
+    }
     const auto start = std::chrono::steady_clock::now();
     tri::EdgeSwapCounters counters;
     switch (criterion) {
@@ -113,9 +119,10 @@ void run_swap(const SwapArguments& arguments) {
         }
     }
     const double seconds = seconds_since(start);
-    io::write_ele(output, mesh.triangles, ele.first_index);
-    std::cout << "output: " << output.string() << '\n'
-              << "triangles: " << mesh.triangle_count() << '\n';
+    io::OutputSet set;
+    set.stage(output, io::format_ele(mesh.triangles, ele.first_index));
+    commit_outputs(set);
+    std::cout << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {
         std::cout << "criterion: " << arguments.criterion << '\n'
                   << "edges_tested: " << counters.edges_tested << '\n'
@@ -131,14 +138,16 @@ void run_swap(const SwapArguments& arguments) {
 void run_min_max(const MinMaxArguments& arguments) {
     const fs::path output = arguments.output;
     require_ele_output(output);
+    refuse_to_overwrite_inputs({arguments.node_path}, {output});
     const io::NodeFile nodes = io::read_node(arguments.node_path);
     const auto start = std::chrono::steady_clock::now();
     tri::EdgeCuttingCounters counters;
     const tri::Triangulation2 mesh = tri::min_max_angle_triangulation_2d(nodes.xy, &counters);
     const double seconds = seconds_since(start);
-    io::write_ele(output, mesh.triangles, nodes.first_index);
-    std::cout << "output: " << output.string() << '\n'
-              << "triangles: " << mesh.triangle_count() << '\n';
+    io::OutputSet set;
+    set.stage(output, io::format_ele(mesh.triangles, nodes.first_index));
+    commit_outputs(set);
+    std::cout << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {
         std::cout << "worst_triangles: " << counters.worst_triangles << '\n'
                   << "insertions: " << counters.insertions << '\n'

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -65,7 +66,8 @@ void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
         throw InputError(output.string() +
                          ": .svg pictures are 2D only; write tetrahedra as .ele, .msh or .vtu");
     }
-    refuse_to_overwrite_input(arguments.input, output_files(output, format, {".face", ".neigh"}));
+    const std::vector<fs::path> files = output_files(output, format, {".face", ".neigh"});
+    refuse_to_overwrite_inputs({arguments.input}, files);
     const tri::Delaunay3Function construct = tri::delaunay_3d_algorithm(arguments.algorithm);
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
 
@@ -83,30 +85,24 @@ void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
     }
 
     const tri::Tetrahedralization3& mesh = result.mesh;
+    io::OutputSet set;
     switch (format) {
-        case OutputFormat::Ele: {
-            fs::path face = output, neigh = output;
-            face.replace_extension(".face");
-            neigh.replace_extension(".neigh");
-            io::write_tetgen_ele(output, mesh.tets, nodes.first_index);
-            io::write_tetgen_boundary_faces(face, mesh.tets, mesh.neighbors, nodes.first_index);
-            io::write_tetgen_neigh(neigh, mesh.neighbors, nodes.first_index);
-            std::cout << "output: " << output.string() << '\n'
-                      << "output: " << face.string() << '\n'
-                      << "output: " << neigh.string() << '\n';
+        case OutputFormat::Ele:
+            set.stage(files[0], io::format_tetgen_ele(mesh.tets, nodes.first_index));
+            set.stage(files[1], io::format_tetgen_boundary_faces(mesh.tets, mesh.neighbors,
+                                                                 nodes.first_index));
+            set.stage(files[2], io::format_tetgen_neigh(mesh.neighbors, nodes.first_index));
             break;
-        }
         case OutputFormat::Msh:
-            io::write_msh_3d(output, nodes.xyz, mesh.tets);
-            std::cout << "output: " << output.string() << '\n';
+            set.stage(output, io::format_msh_3d(nodes.xyz, mesh.tets));
             break;
         case OutputFormat::Vtu:
-            io::write_vtu_3d(output, nodes.xyz, mesh.tets, nodes.first_index);
-            std::cout << "output: " << output.string() << '\n';
+            set.stage(output, io::format_vtu_3d(nodes.xyz, mesh.tets, nodes.first_index));
             break;
         case OutputFormat::Svg:
             break;  // refused above
     }
+    commit_outputs(set);
     std::cout << "tetrahedra: " << mesh.tet_count() << '\n';
     if (arguments.stats) print_stats(result.counters, stats, construct_seconds);
 }
@@ -133,6 +129,11 @@ void add_tetrahedralize_command(CLI::App& app) {
         ->check(CLI::IsMember({"given", "random", "brio"}))
         ->capture_default_str();
     command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max());
+            },
+            "UINT64"))
         ->capture_default_str();
     command->add_flag("--stats", arguments->stats,
                       "Print work counters, predicate stages and construct_seconds (the "

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -63,6 +64,8 @@ void print_stats(const tri::Delaunay2Counters& counters, const predicates::Predi
 void run_triangulate(const TriangulateArguments& arguments) {
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);  // before any work: fail fast
+    const std::vector<fs::path> files = output_files(output, format, {".neigh"});
+    refuse_to_overwrite_inputs({arguments.input}, files);
     const tri::Delaunay2Function construct = tri::delaunay_2d_algorithm(arguments.algorithm);
     const io::NodeFile nodes = io::read_node(arguments.input);
 
@@ -75,33 +78,27 @@ void run_triangulate(const TriangulateArguments& arguments) {
     const predicates::PredicateStats stats = predicates::thread_stats();
     const double construct_seconds = std::chrono::duration<double>(stop - start).count();
 
+    io::OutputSet set;
     switch (format) {
-        case OutputFormat::Ele: {
-            fs::path neigh = output;
-            neigh.replace_extension(".neigh");
-            io::write_ele(output, result.triangles, nodes.first_index);
-            io::write_neigh(neigh, result.neighbors, nodes.first_index);
-            std::cout << "output: " << output.string() << '\n'
-                      << "output: " << neigh.string() << '\n';
+        case OutputFormat::Ele:
+            set.stage(files[0], io::format_ele(result.triangles, nodes.first_index));
+            set.stage(files[1], io::format_neigh(result.neighbors, nodes.first_index));
             break;
-        }
         case OutputFormat::Msh:
-            io::write_msh(output, nodes.xy, result.triangles);
-            std::cout << "output: " << output.string() << '\n';
+            set.stage(output, io::format_msh(nodes.xy, result.triangles));
             break;
         case OutputFormat::Vtu:
-            io::write_vtu(output, nodes.xy, result.triangles, nodes.first_index);
-            std::cout << "output: " << output.string() << '\n';
+            set.stage(output, io::format_vtu(nodes.xy, result.triangles, nodes.first_index));
             break;
         case OutputFormat::Svg: {
             io::SvgOptions svg;
             svg.title =
                 fs::path(arguments.input).filename().string() + " (" + arguments.algorithm + ")";
-            io::write_svg(output, nodes.xy, result.triangles, svg);
-            std::cout << "output: " << output.string() << '\n';
+            set.stage(output, io::format_svg(nodes.xy, result.triangles, svg));
             break;
         }
     }
+    commit_outputs(set);
     std::cout << "triangles: " << result.triangles.size() / 3 << '\n';
     if (arguments.stats) print_stats(result.counters, stats, construct_seconds);
 }
@@ -135,6 +132,11 @@ void add_triangulate_command(CLI::App& app) {
         ->check(CLI::IsMember({"auto", "walk", "grid"}))
         ->capture_default_str();
     command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max());
+            },
+            "UINT64"))
         ->capture_default_str();
     command->add_flag("--stats", arguments->stats,
                       "Print work counters, predicate stages and construct_seconds (the "

@@ -22,6 +22,7 @@
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/domain_mesh_2d.hpp"
 #include "predicates/errors.hpp"
+#include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/angles_2d.hpp"
 
@@ -301,8 +302,8 @@ class AdvancingFront {
     double local_size(double x, double y) const {
         const double h = options_.size(x, y);
         if (!(h > 0)) {
-            throw InputError("advancing front: the size function is " + std::to_string(h) +
-                             " at (" + std::to_string(x) + ", " + std::to_string(y) + "), not > 0");
+            throw InputError("advancing front: the size function is " + format_number(h) + " at (" +
+                             format_number(x) + ", " + format_number(y) + "), not > 0");
         }
         return h;
     }

@@ -14,6 +14,7 @@
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/domain_mesh_2d.hpp"
 #include "predicates/errors.hpp"
+#include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
 
@@ -139,8 +140,8 @@ std::uint64_t edge_key(VertIdx a, VertIdx b) {
 double checked_size(const SizeFunction& size, double x, double y) {
     const double h = size(x, y);
     if (!(h > 0)) {
-        throw InputError("advancing front Delaunay: the size function is " + std::to_string(h) +
-                         " at (" + std::to_string(x) + ", " + std::to_string(y) +
+        throw InputError("advancing front Delaunay: the size function is " + format_number(h) +
+                         " at (" + format_number(x) + ", " + format_number(y) +
                          "); it must be > 0");
     }
     return h;

@@ -19,6 +19,7 @@
 #include <unordered_set>
 
 #include "predicates/errors.hpp"
+#include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
 
 namespace exactmesh::generators {
@@ -49,8 +50,8 @@ std::vector<Point> spaced_points(const Curve2& curve, double u0, double u1,
             throw InputError(
                 "boundary discretization: the size function asks for more than 2^30 pieces on one "
                 "curve or segment (size " +
-                std::to_string(size(curve(u0)[0], curve(u0)[1])) + " near (" +
-                std::to_string(curve(u0)[0]) + ", " + std::to_string(curve(u0)[1]) + "))");
+                format_number(size(curve(u0)[0], curve(u0)[1])) + " near (" +
+                format_number(curve(u0)[0]) + ", " + format_number(curve(u0)[1]) + "))");
         }
         const int pieces = std::max(min_pieces, static_cast<int>(std::ceil(total - 1e-9)));
         if (pieces * 8 > samples && samples < (1 << 24)) {
@@ -493,7 +494,7 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
                 "boundary discretization: the size function asks for more than 2^30 pieces on "
                 "segment " +
                 std::to_string(segment + options.first_index) + " (size " +
-                std::to_string(smallest) + " along a length " + std::to_string(length) + ")");
+                format_number(smallest) + " along a length " + format_number(length) + ")");
         }
         const int samples = static_cast<int>(std::clamp(16 * estimate + 16, 16.0, double{1 << 24}));
         return spaced_points(line, 0.0, 1.0, size, 1, samples);

@@ -69,6 +69,7 @@ SmoothingCounters2 laplacian_smoothing_2d(tri::Triangulation2& mesh, std::uint32
     for (std::uint32_t v = 0; v < std::min(n, fixed_below); ++v) fixed[v] = 1;
     std::vector<double> target(2 * std::size_t{n});
     for (std::uint32_t sweep = 0; sweep < options.iterations; ++sweep) {
+        const std::uint64_t moves_before = counters.moves;
         // Connectivity changes with the swaps: the stars are rebuilt per sweep.
         const Stars stars = build_stars(mesh);
         for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
@@ -86,15 +87,25 @@ SmoothingCounters2 laplacian_smoothing_2d(tri::Triangulation2& mesh, std::uint32
             const std::uint32_t first = stars.neighbor_start[v], last = stars.neighbor_start[v + 1];
             if (fixed[v] || first == last) continue;
             ++free_vertices;
-            double sx = 0, sy = 0;
+            double sx = 0, sy = 0, radius = 0;
+            const double* p = mesh.point(v);
             for (std::uint32_t i = first; i < last; ++i) {
-                sx += mesh.point(stars.neighbors[i])[0];
-                sy += mesh.point(stars.neighbors[i])[1];
+                const double* q = mesh.point(stars.neighbors[i]);
+                sx += q[0];
+                sy += q[1];
+                radius = std::max({radius, std::fabs(q[0] - p[0]), std::fabs(q[1] - p[1])});
             }
             const double count = last - first;
-            const double* p = mesh.point(v);
             target[2 * v] = p[0] + options.relaxation * (sx / count - p[0]);
             target[2 * v + 1] = p[1] + options.relaxation * (sy / count - p[1]);
+            // Converged: a move below 2^-30 of the star's size is rounding noise of the centroid
+            // (the Jacobi iteration approaches its fixed point geometrically and would go on
+            // moving by ulps forever). Relative to the star, so the rule is scale-invariant.
+            if (std::max(std::fabs(target[2 * v] - p[0]), std::fabs(target[2 * v + 1] - p[1])) <=
+                radius * 0x1p-30) {
+                target[2 * v] = p[0];
+                target[2 * v + 1] = p[1];
+            }
         }
         counters.free_vertices = free_vertices;
         // Moves one by one, each kept only if its whole star stays counter-clockwise.
@@ -129,8 +140,12 @@ SmoothingCounters2 laplacian_smoothing_2d(tri::Triangulation2& mesh, std::uint32
                 std::max(counters.largest_move, std::hypot(p[0] - old_x, p[1] - old_y));
         }
         ++counters.sweeps;
-        if (options.delaunay_swap)
-            counters.swaps += tri::swap_edges_2d(mesh, tri::Delaunay{}).swaps;
+        std::uint64_t swaps = 0;
+        if (options.delaunay_swap) swaps = tri::swap_edges_2d(mesh, tri::Delaunay{}).swaps;
+        counters.swaps += swaps;
+        // A sweep that moved nothing and swapped nothing leaves the mesh as it was: every later
+        // sweep would compute the same targets and refuse or skip the same moves.
+        if (counters.moves == moves_before && swaps == 0) break;
     }
     return counters;
 }

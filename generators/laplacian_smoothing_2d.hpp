@@ -22,7 +22,8 @@
 namespace exactmesh::generators {
 
 struct SmoothingOptions2 {
-    std::uint32_t iterations = 1;  ///< Jacobi sweeps (each followed by Delaunay swapping)
+    std::uint32_t iterations = 1;  ///< at most this many Jacobi sweeps (each followed by
+                                   ///< Delaunay swapping); stops after one that changes nothing
     double relaxation = 1.0;       ///< omega in (0, 1]: 1 moves to the neighbours' centroid
     bool delaunay_swap = true;     ///< swap edges to (constrained) Delaunay after each sweep
 };

@@ -17,15 +17,14 @@
 #include "generators/size_quadtree_2d.hpp"
 #include "generators/size_smoothing_2d.hpp"
 #include "predicates/errors.hpp"
+#include "predicates/number_text.hpp"
 
 namespace exactmesh::generators {
 
 namespace {
 
 std::string number_text(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
+    return format_number(value);
 }
 
 /// The shortest text that reads back as `value`.

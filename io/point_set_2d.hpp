@@ -36,6 +36,8 @@ struct PolyFile {
     std::vector<std::int32_t> segment_markers;  ///< #S when has_segment_markers
     std::vector<double> holes;            ///< 2·#H points inside holes
     std::vector<double> regions;          ///< 4·#R: x, y, attribute, maximum area (-1: none)
+    std::vector<std::uint64_t> hole_lines;    ///< #H: the line of each hole (for messages)
+    std::vector<std::uint64_t> region_lines;  ///< #R: the line of each region
 
     std::uint32_t segment_count() const { return static_cast<std::uint32_t>(segments.size() / 2); }
 };

@@ -51,14 +51,8 @@ void expect_end(TextLines& lines, std::uint64_t count, const char* what_plural) 
     }
 }
 
-std::size_t plausible(std::uint64_t announced, std::size_t text_size,
-                      std::size_t min_record_bytes) {
-    return static_cast<std::size_t>(
-        std::min<std::uint64_t>(announced, text_size / min_record_bytes));
-}
-
-std::uint64_t parse_vertex_section(TextLines& lines, std::size_t text_size, unsigned dimension,
-                                   const char* format, VertexSection& section) {
+std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension, const char* format,
+                                   VertexSection& section) {
     const auto& header = lines.fields();
     if (header.size() > 4) {
         lines.fail_quoting_line("header has " + std::to_string(header.size()) +
@@ -93,7 +87,7 @@ std::uint64_t parse_vertex_section(TextLines& lines, std::size_t text_size, unsi
                                           section.attribute_count, section.has_markers);
     static constexpr const char* kAxis[3] = {"x coordinate", "y coordinate", "z coordinate"};
 
-    section.coordinates.reserve(dimension * plausible(count, text_size, 2 + 2 * dimension));
+    section.coordinates.reserve(dimension * lines.plausible_records(count, 2 + 2 * dimension));
     std::string attribute_name;
     for (std::uint64_t i = 0; i < count; ++i) {
         if (!lines.next_data_line()) {
@@ -120,8 +114,7 @@ std::uint64_t parse_vertex_section(TextLines& lines, std::size_t text_size, unsi
     return count;
 }
 
-unsigned node_dimension(std::string_view text, const std::string& file_name) {
-    TextLines lines(text, file_name);
+unsigned node_dimension(TextLines& lines) {
     if (!lines.next_data_line()) {
         lines.fail_at_end(
             "no header line (expected '<#vertices> <dimension> <#attributes> <#boundary "

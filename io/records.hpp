@@ -32,10 +32,6 @@ std::uint32_t expect_record_number(const TextLines& lines, std::string_view toke
 /// Fails when data follows the `count` announced records.
 void expect_end(TextLines& lines, std::uint64_t count, const char* what_plural);
 
-/// Capacity to reserve for `announced` records: never trust a header past what the text
-/// could hold (every record needs at least a few bytes), so a lying header allocates nothing.
-std::size_t plausible(std::uint64_t announced, std::size_t text_size, std::size_t min_record_bytes);
-
 /// The vertex section of a .node or .poly file, in `dimension` coordinates per vertex.
 struct VertexSection {
     std::vector<double> coordinates;  ///< dimension·#V, in file order
@@ -49,11 +45,12 @@ struct VertexSection {
 /// Parses the header on the current line (`<#vertices> [<dimension>] [<#attributes>]
 /// [<#markers 0|1>]`; an omitted dimension is `dimension`, another one is an error naming
 /// `format`), then the vertices. Returns the announced count.
-std::uint64_t parse_vertex_section(TextLines& lines, std::size_t text_size, unsigned dimension,
-                                   const char* format, VertexSection& section);
+std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension, const char* format,
+                                   VertexSection& section);
 
 /// The dimension field of a .node header (2 when omitted, as Triangle reads it), for callers
-/// that dispatch on it; fails as the readers do on a missing or malformed header.
-unsigned node_dimension(std::string_view text, const std::string& file_name);
+/// that dispatch on it; reads the header line only; fails as the readers do on a missing or
+/// malformed header.
+unsigned node_dimension(TextLines& lines);
 
 }  // namespace exactmesh::io::detail

@@ -18,7 +18,6 @@ namespace {
 using detail::expect_end;
 using detail::expect_field_count;
 using detail::expect_record_number;
-using detail::plausible;
 using detail::plural;
 using triangulation::kNone;
 
@@ -30,15 +29,15 @@ constexpr unsigned kTetGenCorner[4] = {0, 1, 3, 2};
 
 }  // namespace
 
-TetgenNodeFile parse_tetgen_node(std::string_view text, const std::string& file_name) {
-    TextLines lines(text, file_name);
+namespace {
+
+TetgenNodeFile parse_tetgen_node_lines(TextLines& lines) {
     if (!lines.next_data_line()) {
         lines.fail_at_end(
             "no header line (expected '<#points> <dimension=3> <#attributes> <#boundary markers>')");
     }
     detail::VertexSection section;
-    const std::uint64_t count =
-        detail::parse_vertex_section(lines, text.size(), 3, "a 3D TetGen file", section);
+    const std::uint64_t count = detail::parse_vertex_section(lines, 3, "a 3D TetGen file", section);
     expect_end(lines, count, count == 1 ? "vertex" : "vertices");
     TetgenNodeFile nodes;
     nodes.xyz = std::move(section.coordinates);
@@ -50,17 +49,8 @@ TetgenNodeFile parse_tetgen_node(std::string_view text, const std::string& file_
     return nodes;
 }
 
-TetgenNodeFile read_tetgen_node(const std::filesystem::path& path) {
-    return parse_tetgen_node(read_text_file(path), path.string());
-}
-
-unsigned read_node_dimension(const std::filesystem::path& path) {
-    return detail::node_dimension(read_text_file(path), path.string());
-}
-
-TetgenEleFile parse_tetgen_ele(std::string_view text, const std::string& file_name,
-                               std::uint32_t vertex_first_index, std::uint32_t vertex_count) {
-    TextLines lines(text, file_name);
+TetgenEleFile parse_tetgen_ele_lines(TextLines& lines, std::uint32_t vertex_first_index,
+                                     std::uint32_t vertex_count) {
     if (!lines.next_data_line()) {
         lines.fail_at_end(
             "no header line (expected '<#tetrahedra> <nodes per tetrahedron=4> <region attribute "
@@ -97,7 +87,7 @@ TetgenEleFile parse_tetgen_ele(std::string_view text, const std::string& file_na
                                                     : "the node file numbers its points " +
                                                           std::to_string(vertex_first_index) +
                                                           " to " + std::to_string(last - 1);
-    ele.tets.reserve(4 * plausible(count, text.size(), 10));
+    ele.tets.reserve(4 * lines.plausible_records(count, 10));
     for (std::uint64_t i = 0; i < count; ++i) {
         if (!lines.next_data_line()) {
             lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
@@ -124,9 +114,33 @@ TetgenEleFile parse_tetgen_ele(std::string_view text, const std::string& file_na
     return ele;
 }
 
+}  // namespace
+
+TetgenNodeFile parse_tetgen_node(std::string_view text, const std::string& file_name) {
+    TextLines lines(text, file_name);
+    return parse_tetgen_node_lines(lines);
+}
+
+TetgenNodeFile read_tetgen_node(const std::filesystem::path& path) {
+    TextLines lines(path);
+    return parse_tetgen_node_lines(lines);
+}
+
+unsigned read_node_dimension(const std::filesystem::path& path) {
+    TextLines lines(path);
+    return detail::node_dimension(lines);
+}
+
+TetgenEleFile parse_tetgen_ele(std::string_view text, const std::string& file_name,
+                               std::uint32_t vertex_first_index, std::uint32_t vertex_count) {
+    TextLines lines(text, file_name);
+    return parse_tetgen_ele_lines(lines, vertex_first_index, vertex_count);
+}
+
 TetgenEleFile read_tetgen_ele(const std::filesystem::path& path, std::uint32_t vertex_first_index,
                               std::uint32_t vertex_count) {
-    return parse_tetgen_ele(read_text_file(path), path.string(), vertex_first_index, vertex_count);
+    TextLines lines(path);
+    return parse_tetgen_ele_lines(lines, vertex_first_index, vertex_count);
 }
 
 std::string format_tetgen_node(std::span<const double> xyz, std::uint32_t first_index) {

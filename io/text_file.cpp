@@ -2,12 +2,14 @@
 // Reading, tokenizing and number conversion shared by the io/ text formats (see text_file.hpp).
 #include "io/text_file.hpp"
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <system_error>
 
@@ -82,47 +84,227 @@ bool decimal_text_is_huge(std::string_view token) {
 
 }  // namespace
 
-std::string read_text_file(const std::filesystem::path& path) {
+std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes) {
+    TextLines probe(path);  // the same open errors as the streamed readers
+    (void)probe;
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        throw FormatError(path.string(), 0, "is a directory, expected a file");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > max_bytes) {
+        throw FormatError(path.string(), 0,
+                          "is " + std::to_string(size) + " bytes long, more than the " +
+                              std::to_string(max_bytes) + " this file may hold");
     }
     errno = 0;
-    std::ifstream in(path, std::ios::binary);
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(path.c_str(), "rb"),
+                                                       &std::fclose);
     if (!in) {
-        const int error = errno;
         throw FormatError(path.string(), 0,
-                          std::string("cannot open for reading: ") +
-                              (error != 0 ? std::strerror(error) : "unknown error"));
+                          std::string("cannot open for reading: ") + std::strerror(errno));
     }
-    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) throw FormatError(path.string(), 0, "read error");
+    std::string text;
+    char chunk[1 << 16];
+    for (;;) {
+        const std::size_t got = std::fread(chunk, 1, sizeof chunk, in.get());
+        // A device or pipe has no size: stop at the limit as we read it.
+        if (text.size() + got > max_bytes) {
+            throw FormatError(
+                path.string(), 0,
+                "is longer than the " + std::to_string(max_bytes) + " bytes this file may hold");
+        }
+        text.append(chunk, got);
+        if (got < sizeof chunk) break;
+    }
+    if (std::ferror(in.get())) throw FormatError(path.string(), 0, "read error");
     return text;
 }
 
 void write_text_file(const std::filesystem::path& path, std::string_view text) {
+    OutputSet set;
+    set.stage(path, text);
+    set.commit();
+}
+
+namespace {
+
+std::string system_message(int error) {
+    return error != 0 ? std::strerror(error) : "unknown error";
+}
+
+/// Writes `text` to an open file and closes it, checking every step (a full disk shows in the
+/// write, the flush or the close). Returns 0 or the errno of the first failure.
+int write_and_close(std::FILE* file, std::string_view text) {
     errno = 0;
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (!out) {
-        const int error = errno;
-        throw FormatError(path.string(), 0,
-                          std::string("cannot open for writing: ") +
-                              (error != 0 ? std::strerror(error) : "unknown error"));
+    int error = 0;
+    if (!text.empty() && std::fwrite(text.data(), 1, text.size(), file) != text.size())
+        error = errno;
+    if (error == 0 && std::fflush(file) != 0) error = errno;
+    if (std::fclose(file) != 0 && error == 0) error = errno;
+    if (error == 0 && errno != 0 && std::ferror(file) != 0) error = errno;
+    return error;
+}
+
+}  // namespace
+
+OutputSet::~OutputSet() {
+    if (committed_) return;
+    for (const Staged& file : staged_) {
+        std::error_code ignored;
+        if (!file.temporary.empty()) std::filesystem::remove(file.temporary, ignored);
     }
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (!out) throw FormatError(path.string(), 0, "write error (disk full?)");
+}
+
+void OutputSet::stage(const std::filesystem::path& target, std::string_view text) {
+    namespace fs = std::filesystem;
+    static std::atomic<std::uint64_t> counter{0};
+    Staged file;
+    file.shown = target.string();
+    targets_.push_back(target);
+    std::error_code ec;
+    // Through a link, write beside the file it names and rename onto that file: renaming onto
+    // the link itself would replace the link with a copy.
+    file.target = fs::is_symlink(target, ec) ? fs::weakly_canonical(target, ec) : target;
+    if (ec) file.target = target;
+    const fs::file_status status = fs::status(file.target, ec);
+    if (fs::is_directory(status))
+        throw FormatError(file.shown, 0, "is a directory, cannot write the output there");
+    if (fs::exists(status) && !fs::is_regular_file(status)) {
+        // A device or a pipe cannot be replaced by a rename (and /dev/null must stay a device).
+        file.direct_text = std::string(text);
+        staged_.push_back(std::move(file));
+        return;
+    }
+    const fs::path directory = file.target.parent_path();
+    // Built by appending: `"." + std::string&&` trips GCC 12's -Wrestrict false positive.
+    std::string name(1, '.');
+    name += file.target.filename().string();
+    name += ".exactmesh-";
+    name += std::to_string(::getpid());
+    name += '-';
+    name += std::to_string(counter++);
+    name += ".tmp";
+    file.temporary = directory.empty() ? fs::path(name) : directory / name;
+    errno = 0;
+    std::FILE* out = std::fopen(file.temporary.c_str(), "wbx");
+    if (out == nullptr) {
+        const int error = errno;
+        throw FormatError(file.shown, 0,
+                          "cannot open for writing: " + system_message(error) +
+                              " (creating a temporary file in " +
+                              (directory.empty() ? std::string(".") : directory.string()) + ")");
+    }
+    staged_.push_back(file);  // from here the destructor removes the temporary on failure
+    if (const int error = write_and_close(out, text); error != 0) {
+        throw FormatError(file.shown, 0,
+                          "write error: " + system_message(error) + " (the old file is unchanged)");
+    }
+    if (fs::is_regular_file(status)) {
+        // Keep the old file's permissions (a replaced file keeps its mode, as an editor does).
+        fs::permissions(file.temporary, status.permissions(), fs::perm_options::replace, ec);
+    }
+}
+
+void OutputSet::commit() {
+    for (const Staged& file : staged_) {
+        if (!file.temporary.empty()) continue;
+        errno = 0;
+        std::FILE* out = std::fopen(file.target.c_str(), "wb");
+        if (out == nullptr) {
+            const int error = errno;
+            throw FormatError(file.shown, 0, "cannot open for writing: " + system_message(error));
+        }
+        if (const int error = write_and_close(out, file.direct_text); error != 0) {
+            throw FormatError(file.shown, 0, "write error: " + system_message(error));
+        }
+    }
+    for (const Staged& file : staged_) {
+        if (file.temporary.empty()) continue;
+        std::error_code ec;
+        std::filesystem::rename(file.temporary, file.target, ec);
+        if (ec)
+            throw FormatError(file.shown, 0,
+                              "cannot move the finished file into place: " + ec.message());
+    }
+    committed_ = true;
 }
 
 TextLines::TextLines(std::string_view text, std::string file_name)
-    : text_(text), file_name_(std::move(file_name)) {}
+    : text_(text), size_hint_(text.size()), file_name_(std::move(file_name)) {}
+
+TextLines::TextLines(const std::filesystem::path& path) : file_name_(path.string()) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        throw FormatError(file_name_, 0, "is a directory, expected a file");
+    }
+    errno = 0;
+    file_.reset(std::fopen(path.c_str(), "rb"));
+    if (!file_) {
+        const int error = errno;
+        throw FormatError(file_name_, 0, "cannot open for reading: " + system_message(error));
+    }
+    const auto size = std::filesystem::file_size(path, ec);
+    size_hint_ = ec ? 0 : size;
+}
+
+bool TextLines::read_chunk() {
+    if (at_file_end_) return false;
+    constexpr std::size_t kChunk = std::size_t{1} << 16;
+    const std::size_t old_size = buffer_.size();
+    buffer_.resize(old_size + kChunk);
+    const std::size_t got = std::fread(buffer_.data() + old_size, 1, kChunk, file_.get());
+    buffer_.resize(old_size + got);
+    if (got < kChunk) {
+        if (std::ferror(file_.get())) fail("read error after this line");
+        at_file_end_ = true;
+    }
+    return got > 0;
+}
+
+bool TextLines::next_raw_line(std::string_view& line) {
+    if (!file_) {
+        if (next_offset_ >= text_.size()) return false;
+        const std::size_t end = std::min(text_.find('\n', next_offset_), text_.size());
+        line = text_.substr(next_offset_, end - next_offset_);
+        next_offset_ = end + 1;
+        return true;
+    }
+    std::size_t scanned = buffer_offset_;
+    for (;;) {
+        const std::size_t end = buffer_.find('\n', scanned);
+        if (end != std::string::npos) {
+            line = std::string_view(buffer_).substr(buffer_offset_, end - buffer_offset_);
+            buffer_offset_ = end + 1;
+            return true;
+        }
+        if (buffer_.size() - buffer_offset_ > kMaxLineBytes) {
+            line = std::string_view(buffer_).substr(buffer_offset_);  // the caller reports it
+            return true;
+        }
+        buffer_.erase(0, buffer_offset_);
+        buffer_offset_ = 0;
+        scanned = buffer_.size();
+        if (!read_chunk()) {
+            if (buffer_.empty()) return false;
+            line = buffer_;
+            buffer_offset_ = buffer_.size();
+            return true;
+        }
+    }
+}
 
 bool TextLines::next_data_line() {
-    while (next_offset_ < text_.size()) {
-        const std::size_t end = std::min(text_.find('\n', next_offset_), text_.size());
-        std::string_view line = text_.substr(next_offset_, end - next_offset_);
-        next_offset_ = end + 1;
+    std::string_view line;
+    while (next_raw_line(line)) {
         ++line_number_;
+        if (const auto nul = line.find('\0'); nul != std::string_view::npos) {
+            fail("a NUL byte at column " + std::to_string(nul + 1) +
+                 " (binary data, not a text mesh file)");
+        }
+        if (line.size() > kMaxLineBytes) {
+            fail("line longer than " + std::to_string(kMaxLineBytes) +
+                 " bytes (not a text mesh file?)");
+        }
+        if (line_number_ == 1 && line.substr(0, 3) == "\xEF\xBB\xBF")
+            line.remove_prefix(3);  // UTF-8 BOM
         raw_line_ = line;
         const std::size_t comment = line.find('#');
         if (comment != std::string_view::npos) line = line.substr(0, comment);
@@ -152,11 +334,14 @@ void TextLines::fail_quoting_line(const std::string& problem) const {
 }
 
 void TextLines::fail_at_end(const std::string& problem) const {
-    // The last line of the text, counting a final line without its newline.
-    std::uint64_t lines = 0;
-    for (const char c : text_) lines += c == '\n' ? 1 : 0;
-    if (!text_.empty() && text_.back() != '\n') ++lines;
-    throw FormatError(file_name_, lines == 0 ? 1 : lines, problem);
+    // At the end, line_number_ counts every line, a final one without its newline included.
+    throw FormatError(file_name_, line_number_ == 0 ? 1 : line_number_, problem);
+}
+
+std::size_t TextLines::plausible_records(std::uint64_t announced,
+                                         std::size_t min_record_bytes) const {
+    return static_cast<std::size_t>(std::min<std::uint64_t>(
+        {announced, size_hint_ / min_record_bytes, std::uint64_t{kMaxReservedRecords}}));
 }
 
 std::uint64_t TextLines::parse_unsigned(std::string_view token, std::string_view what,
@@ -218,6 +403,17 @@ double TextLines::parse_finite_double(std::string_view token, std::string_view w
     }
     if (!std::isfinite(value)) fail("non-finite " + std::string(what) + " " + quoted(token));
     return value;
+}
+
+bool has_extension(const std::filesystem::path& path, std::string_view extension) {
+    const std::string actual = path.extension().string();
+    return actual.size() == extension.size() &&
+           std::equal(actual.begin(), actual.end(), extension.begin(), [](char a, char b) {
+               const auto lower = [](char c) {
+                   return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+               };
+               return lower(a) == lower(b);
+           });
 }
 
 std::string printable(std::string_view text, std::size_t max_length) {

@@ -18,7 +18,6 @@ using detail::expect_field_count;
 using detail::expect_record_number;
 using detail::field_names;
 using detail::kMaxAttributes;
-using detail::plausible;
 using detail::plural;
 using triangulation::kMaxPoints;
 using triangulation::kNone;
@@ -27,10 +26,10 @@ using triangulation::kNone;
 constexpr std::uint64_t kMaxTriangles = (std::uint64_t{kNone} - 1) / 3;
 
 /// The 2D vertex section into a NodeFile.
-std::uint64_t parse_vertex_section(TextLines& lines, std::size_t text_size, NodeFile& nodes) {
+std::uint64_t parse_vertex_section(TextLines& lines, NodeFile& nodes) {
     detail::VertexSection section;
     const std::uint64_t count =
-        detail::parse_vertex_section(lines, text_size, 2, "a 2D Triangle file", section);
+        detail::parse_vertex_section(lines, 2, "a 2D Triangle file", section);
     nodes.xy = std::move(section.coordinates);
     nodes.first_index = section.first_index;
     nodes.attribute_count = section.attribute_count;
@@ -40,23 +39,28 @@ std::uint64_t parse_vertex_section(TextLines& lines, std::size_t text_size, Node
     return count;
 }
 
-}  // namespace
-
-NodeFile parse_node(std::string_view text, const std::string& file_name) {
-    TextLines lines(text, file_name);
+NodeFile parse_node_lines(TextLines& lines) {
     if (!lines.next_data_line()) {
         lines.fail_at_end(
             "no header line (expected '<#vertices> <dimension=2> <#attributes> <#boundary "
             "markers>')");
     }
     NodeFile nodes;
-    const std::uint64_t count = parse_vertex_section(lines, text.size(), nodes);
+    const std::uint64_t count = parse_vertex_section(lines, nodes);
     expect_end(lines, count, count == 1 ? "vertex" : "vertices");
     return nodes;
 }
 
+}  // namespace
+
+NodeFile parse_node(std::string_view text, const std::string& file_name) {
+    TextLines lines(text, file_name);
+    return parse_node_lines(lines);
+}
+
 NodeFile read_node(const std::filesystem::path& path) {
-    return parse_node(read_text_file(path), path.string());
+    TextLines lines(path);
+    return parse_node_lines(lines);
 }
 
 std::string format_node(const NodeFile& nodes) {
@@ -90,16 +94,16 @@ void write_node(const std::filesystem::path& path, const NodeFile& nodes) {
     write_text_file(path, format_node(nodes));
 }
 
-PolyFile parse_poly(std::string_view text, const std::string& file_name,
-                    const std::filesystem::path& node_path) {
-    TextLines lines(text, file_name);
+namespace {
+
+PolyFile parse_poly_lines(TextLines& lines, const std::filesystem::path& node_path) {
     if (!lines.next_data_line()) {
         lines.fail_at_end(
             "no header line (expected '<#vertices> <dimension=2> <#attributes> <#boundary "
             "markers>')");
     }
     PolyFile poly;
-    const std::uint64_t announced = parse_vertex_section(lines, text.size(), poly.vertices);
+    const std::uint64_t announced = parse_vertex_section(lines, poly.vertices);
     if (announced == 0) {
         // Triangle's convention: the vertices live in the .node file of the same name. The
         // first segment number then sets the base.
@@ -129,7 +133,7 @@ PolyFile parse_poly(std::string_view text, const std::string& file_name,
         const std::uint64_t expected = 3 + (poly.has_segment_markers ? 1 : 0);
         const std::string names = poly.has_segment_markers ? "number, endpoint, endpoint, marker"
                                                            : "number, endpoint, endpoint";
-        poly.segments.reserve(2 * plausible(count, text.size(), 6));
+        poly.segments.reserve(2 * lines.plausible_records(count, 6));
         std::uint32_t segment_base = base;
         for (std::uint64_t i = 0; i < count; ++i) {
             if (!lines.next_data_line()) {
@@ -170,6 +174,7 @@ PolyFile parse_poly(std::string_view text, const std::string& file_name,
             }
             expect_field_count(lines, 3, "number, x, y");
             expect_record_number(lines, lines.fields()[0], "hole", i, hole_base);
+            poly.hole_lines.push_back(lines.line_number());
             poly.holes.push_back(lines.parse_finite_double(lines.fields()[1], "hole x coordinate"));
             poly.holes.push_back(lines.parse_finite_double(lines.fields()[2], "hole y coordinate"));
         }
@@ -190,6 +195,7 @@ PolyFile parse_poly(std::string_view text, const std::string& file_name,
                                         std::to_string(fields.size()));
             }
             expect_record_number(lines, fields[0], "region", i, region_base);
+            poly.region_lines.push_back(lines.line_number());
             poly.regions.push_back(lines.parse_finite_double(fields[1], "region x coordinate"));
             poly.regions.push_back(lines.parse_finite_double(fields[2], "region y coordinate"));
             poly.regions.push_back(lines.parse_finite_double(fields[3], "region attribute"));
@@ -201,10 +207,29 @@ PolyFile parse_poly(std::string_view text, const std::string& file_name,
     return poly;
 }
 
+}  // namespace
+
+std::filesystem::path poly_node_path(const std::filesystem::path& poly_path) {
+    std::filesystem::path lower = poly_path, upper = poly_path;
+    lower.replace_extension(".node");
+    upper.replace_extension(".NODE");
+    const std::string extension = poly_path.extension().string();
+    const bool upper_case =
+        extension.size() > 1 && std::none_of(extension.begin(), extension.end(),
+                                             [](char c) { return c >= 'a' && c <= 'z'; });
+    std::error_code ec;
+    return upper_case && std::filesystem::exists(upper, ec) ? upper : lower;
+}
+
+PolyFile parse_poly(std::string_view text, const std::string& file_name,
+                    const std::filesystem::path& node_path) {
+    TextLines lines(text, file_name);
+    return parse_poly_lines(lines, node_path);
+}
+
 PolyFile read_poly(const std::filesystem::path& path) {
-    std::filesystem::path node_path = path;
-    node_path.replace_extension(".node");
-    return parse_poly(read_text_file(path), path.string(), node_path);
+    TextLines lines(path);
+    return parse_poly_lines(lines, poly_node_path(path));
 }
 
 std::string format_poly(const NodeFile& vertices, std::span<const VertIdx> segments,
@@ -235,9 +260,10 @@ void write_poly(const std::filesystem::path& path, const NodeFile& vertices, std
     write_text_file(path, format_poly(vertices, segments, segment_markers));
 }
 
-EleFile parse_ele(std::string_view text, const std::string& file_name,
-                  std::uint32_t vertex_first_index, std::uint32_t vertex_count) {
-    TextLines lines(text, file_name);
+namespace {
+
+EleFile parse_ele_lines(TextLines& lines, std::uint32_t vertex_first_index,
+                        std::uint32_t vertex_count) {
     if (!lines.next_data_line()) {
         lines.fail_at_end(
             "no header line (expected '<#triangles> <nodes per triangle=3> <#attributes>')");
@@ -274,7 +300,7 @@ EleFile parse_ele(std::string_view text, const std::string& file_name,
                                                           std::to_string(vertex_first_index) +
                                                           " to " + std::to_string(last_vertex - 1);
 
-    ele.triangles.reserve(3 * plausible(count, text.size(), 8));
+    ele.triangles.reserve(3 * lines.plausible_records(count, 8));
     std::string attribute_name;
     for (std::uint64_t i = 0; i < count; ++i) {
         if (!lines.next_data_line()) {
@@ -302,9 +328,18 @@ EleFile parse_ele(std::string_view text, const std::string& file_name,
     return ele;
 }
 
+}  // namespace
+
+EleFile parse_ele(std::string_view text, const std::string& file_name,
+                  std::uint32_t vertex_first_index, std::uint32_t vertex_count) {
+    TextLines lines(text, file_name);
+    return parse_ele_lines(lines, vertex_first_index, vertex_count);
+}
+
 EleFile read_ele(const std::filesystem::path& path, std::uint32_t vertex_first_index,
                  std::uint32_t vertex_count) {
-    return parse_ele(read_text_file(path), path.string(), vertex_first_index, vertex_count);
+    TextLines lines(path);
+    return parse_ele_lines(lines, vertex_first_index, vertex_count);
 }
 
 std::string format_ele(std::span<const VertIdx> triangles, std::uint32_t first_index,

@@ -37,6 +37,9 @@ void write_node(const std::filesystem::path& path, const NodeFile& nodes);
 /// existing vertices (in the file's numbering); numbers follow the vertices' base.
 /// @throws FormatError "file:line: problem" as read_node.
 PolyFile read_poly(const std::filesystem::path& path);
+/// The .node file a .poly with no vertices of its own names: the same name with the extension
+/// .node (.NODE when the .poly's extension is upper case and that file exists).
+std::filesystem::path poly_node_path(const std::filesystem::path& poly_path);
 /// read_poly on text in memory; `node_path` is read when the vertex count is 0.
 PolyFile parse_poly(std::string_view text, const std::string& file_name,
                     const std::filesystem::path& node_path);

@@ -17,6 +17,8 @@
 
 #include "predicates/constructions.hpp"
 #include "predicates/errors.hpp"
+#include "predicates/number_text.hpp"
+#include "predicates/orient2d.hpp"
 #include "triangulation/constrained_2d_builder.hpp"
 #include "triangulation/delaunay_2d_core.hpp"
 #include "triangulation/green_sibson_2d.hpp"
@@ -767,6 +769,47 @@ void CdtBuilder::flood(TriIdx start, std::vector<Mark>& mark_value, Mark value, 
     }
 }
 
+void CdtBuilder::require_off_boundary(AmbiguousMarkPoint::Kind kind, std::size_t index, double x,
+                                      double y, TriIdx t) {
+    // The walk put the point in t, or across a hull edge of it (an infinite t): a point on a
+    // segment or a vertex lies on the closure of one of t's finite edges, so three exact
+    // orientations (plus the bounding box, for the hull edge's line beyond it) find it.
+    const double point[2] = {x, y};
+    const std::string name =
+        std::string(kind == AmbiguousMarkPoint::Kind::Hole ? "hole " : "region ") +
+        std::to_string(index + options_.first_index) + " at (" + format_number(x) + ", " +
+        format_number(y) + ")";
+    const char* consequence =
+        kind == AmbiguousMarkPoint::Kind::Hole
+            ? "which side is the hole is ambiguous; move the point strictly inside the hole"
+            : "which side is the region is ambiguous; move the point strictly inside it";
+    for (unsigned k = 0; k < 3; ++k) {
+        const EdgeIdx e = 3 * t + k;
+        const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
+        for (const VertIdx v : {a, b}) {
+            if (v == kInfinite || mesh_.xy[2 * v] != x || mesh_.xy[2 * v + 1] != y) continue;
+            const VertIdx caller = core_.input_index[v];
+            const std::string vertex =
+                caller < input_count_ ? "vertex " + std::to_string(caller + options_.first_index)
+                                      : std::string("a vertex added where segments cross");
+            throw AmbiguousMarkPoint(name + " lies on " + vertex + ": " + consequence, kind, index);
+        }
+        if (a == kInfinite || b == kInfinite || segment_of_[e] == kNone) continue;
+        const double* pa = mesh_.point(a);
+        const double* pb = mesh_.point(b);
+        if (x < std::min(pa[0], pb[0]) || x > std::max(pa[0], pb[0]) ||
+            y < std::min(pa[1], pb[1]) || y > std::max(pa[1], pb[1])) {
+            continue;
+        }
+        if (predicates::orient2d(pa, pb, point) == Sign::Zero) {
+            throw AmbiguousMarkPoint(name + " lies on segment " +
+                                         std::to_string(segment_of_[e] + options_.first_index) +
+                                         ": " + consequence,
+                                     kind, index);
+        }
+    }
+}
+
 void CdtBuilder::remove_exterior_and_holes() {
     removed_.assign(mesh_.triangle_slots(), 0);
     const bool any_segment = std::any_of(segment_of_.begin(), segment_of_.end(),
@@ -787,6 +830,8 @@ void CdtBuilder::remove_exterior_and_holes() {
     const std::size_t holes = pslg_.holes.size() / 2;
     for (std::size_t h = 0; h < holes; ++h) {
         const TriIdx t = locate_point(pslg_.holes[2 * h], pslg_.holes[2 * h + 1]);
+        require_off_boundary(AmbiguousMarkPoint::Kind::Hole, h, pslg_.holes[2 * h],
+                             pslg_.holes[2 * h + 1], t);
         if (mesh_.is_infinite(t)) {
             result_.warnings.push_back("hole " + std::to_string(h + options_.first_index) + " lies outside the triangulation; ignored");
             continue;
@@ -803,6 +848,8 @@ void CdtBuilder::assign_regions() {
     std::vector<std::uint32_t> seen(mesh_.triangle_slots(), 0);
     for (std::size_t r = 0; r < regions; ++r) {
         const TriIdx t = locate_point(pslg_.regions[4 * r], pslg_.regions[4 * r + 1]);
+        require_off_boundary(AmbiguousMarkPoint::Kind::Region, r, pslg_.regions[4 * r],
+                             pslg_.regions[4 * r + 1], t);
         if (mesh_.is_infinite(t) || removed_[t]) {
             result_.warnings.push_back("region " + std::to_string(r + options_.first_index) + " lies outside the domain; ignored");
             continue;

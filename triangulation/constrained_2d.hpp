@@ -24,6 +24,7 @@
 #include <string_view>
 #include <vector>
 
+#include "predicates/errors.hpp"
 #include "triangulation/delaunay_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
 
@@ -90,13 +91,33 @@ struct Cdt2Result {
     Cdt2Counters counters;
 };
 
+/// A hole or region point that lies exactly on a segment or on a vertex (exact orient2d): the
+/// side it names is ambiguous (a hole there would remove either side, often the whole domain),
+/// so it is an input error, the same for `cdt` and every mesh generator (they all mark their
+/// domain through constrained_delaunay_2d). what() names the point (in the input's numbering,
+/// Cdt2Options::first_index) and the segment or vertex; kind() and index() (0-based) let a
+/// caller add the file and line.
+class AmbiguousMarkPoint : public InputError {
+  public:
+    enum class Kind { Hole, Region };
+    AmbiguousMarkPoint(const std::string& what, Kind kind, std::size_t index)
+        : InputError(what), kind_(kind), index_(index) {}
+    Kind kind() const noexcept { return kind_; }
+    std::size_t index() const noexcept { return index_; }
+
+  private:
+    Kind kind_;
+    std::size_t index_;
+};
+
 /// Validates a PSLG as constrained_delaunay_2d does before any work.
 /// @throws InputError naming the offending item: a non-finite coordinate (vertex, hole or
 ///         region), a segment index out of range, more than kMaxPoints vertices.
 void validate_pslg(const Pslg& pslg);
 
 /// @throws InputError naming the offending item: a non-finite coordinate (vertex, hole or
-///         region), a segment index out of range, more than kMaxPoints vertices.
+///         region), a segment index out of range, more than kMaxPoints vertices;
+///         AmbiguousMarkPoint for a hole or region point on a segment or a vertex.
 /// @throws GeometryError if segment recovery fails to converge (a bug: reported, never a hang).
 Cdt2Result constrained_delaunay_2d(const Pslg& pslg, const Cdt2Options& options = {});
 

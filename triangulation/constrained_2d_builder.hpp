@@ -249,6 +249,10 @@ private:
     /// into the infinite vertex); calls reached(t) for each one marked.
     template <class Mark, class Reached>
     void flood(TriIdx start, std::vector<Mark>& mark_value, Mark value, Reached reached);
+    /// Throws AmbiguousMarkPoint when hole or region `index` at (x, y), located in triangle t,
+    /// lies on a segment or a vertex (which side it marks would be the walk's choice).
+    void require_off_boundary(AmbiguousMarkPoint::Kind kind, std::size_t index, double x, double y,
+                              TriIdx t);
     void remove_exterior_and_holes();
     void assign_regions();
     void collect_output();

@@ -191,7 +191,7 @@ bad_input() {
   # A directory or a binary file instead of a .node.
   expect_error 2 'is a directory' triangulate "$data" -o "$work/x.ele"
   printf '\x00\x01\x02garbage\n' >"$work/binary.node"
-  expect_error 2 'binary\.node:1: vertex count .\\x00\\x01\\x02garbage. is not' \
+  expect_error 2 'binary\.node:1: a NUL byte at column 1' \
     triangulate "$work/binary.node" -o "$work/x.ele"
   # Help is not an error.
   run 0 --help && grep -q 'triangulate' "$work/out" || fail "--help"
@@ -339,6 +339,107 @@ swap_bad_input() {
   expect_error 2 'the output must be a \.ele file' min-max "$data/kite.node" -o "$work/x.svg"
   expect_error 2 'missing\.ele: cannot open for reading' swap "$data/kite.node" "$work/missing.ele" -o "$work/x.ele"
   expect_error 2 'output is required' min-max "$data/kite.node"
+}
+
+# Issue 11, hostile inputs: one case per finding (each runs in well under a second).
+
+# A companion that cannot be written (a directory), or a disk that fills (/dev/full behind a
+# link), leaves every previous output byte-identical and no temporary file behind.
+hostile_data_loss() {
+  printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/square.poly"
+  run 0 cdt "$work/square.poly" -o "$work/out.ele" || return
+  local before
+  before=$(cat "$work/out.ele" "$work/out.neigh" "$work/out.poly" | md5sum)
+  rm "$work/out.node" && mkdir "$work/out.node"
+  expect_error 2 'out\.node: is a directory' cdt "$work/square.poly" -o "$work/out.ele" --order given
+  [[ $(cat "$work/out.ele" "$work/out.neigh" "$work/out.poly" | md5sum) == "$before" ]] ||
+    fail "a failing companion changed the previous outputs"
+  if [[ -e /dev/full ]]; then
+    run 0 triangulate "$data/kite.node" -o "$work/tri.ele" || return
+    before=$(md5sum <"$work/tri.ele")
+    rm "$work/tri.neigh" && ln -s /dev/full "$work/tri.neigh"
+    expect_error 2 'tri\.neigh: write error: No space left on device' \
+      triangulate "$data/square_with_center.node" -o "$work/tri.ele"
+    [[ $(md5sum <"$work/tri.ele") == "$before" ]] || fail "a full disk changed the previous .ele"
+  fi
+  ! compgen -G "$work/.*.tmp" >/dev/null || fail "a temporary file was left: $(ls -a "$work")"
+}
+
+# Outputs that resolve to an input (the same path, a link, a hard link) are refused at once.
+hostile_refuse_inputs() {
+  cp "$data/kite.node" "$work/k.node" && cp "$data/kite_delaunay.ele" "$work/k.ele"
+  local before
+  before=$(md5sum <"$work/k.ele")
+  expect_error 2 'k\.ele: this output would overwrite the input file' swap "$work/k.node" "$work/k.ele" -o "$work/./k.ele"
+  ln -s k.node "$work/link.ele"
+  expect_error 2 'link\.ele: this output would overwrite the input file' triangulate "$work/k.node" -o "$work/link.ele"
+  ln "$work/k.ele" "$work/hard.ele"
+  expect_error 2 'hard\.ele: this output would overwrite the input file' swap "$work/k.node" "$work/k.ele" -o "$work/hard.ele"
+  [[ $(md5sum <"$work/k.ele") == "$before" ]] || fail "an input was changed"
+  cmp -s "$work/k.node" "$data/kite.node" || fail "k.node was changed"
+}
+
+# /dev/zero and a binary file fail on line 1 at once; a byte order mark is skipped; extensions
+# in any case.
+hostile_reading() {
+  expect_error 2 '/dev/zero:1: a NUL byte at column 1' triangulate /dev/zero -o "$work/x.ele"
+  printf '\xef\xbb\xbf4 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n' >"$work/bom.NODE"
+  run 0 triangulate "$work/bom.NODE" -o "$work/bom.ELE" && grep -q '^triangles: 2$' "$work/out" ||
+    fail "a .NODE with a byte order mark: $(cat "$work/out" "$work/err")"
+  [[ -s $work/bom.neigh ]] || fail "no .neigh beside bom.ELE"
+}
+
+# A hole point on a segment or a vertex: one error naming the file, the line, the hole and the
+# segment or vertex, the same for cdt and every generator.
+hostile_holes() {
+  local square='4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n'
+  printf "$square"'1\n1 0.5 0\n' >"$work/on_segment.poly"
+  printf "$square"'1\n1 1 1\n' >"$work/on_vertex.poly"
+  expect_error 2 'on_segment\.poly:12: hole 1 at \(0\.5, 0\) lies on segment 1' cdt "$work/on_segment.poly" -o "$work/x.ele"
+  local generator
+  for generator in delaunay-refinement quadtree advancing-front advancing-front-delaunay frontal; do
+    expect_error 2 'on_vertex\.poly:12: hole 1 at \(1, 1\) lies on vertex 3' \
+      mesh "$work/on_vertex.poly" -o "$work/x.ele" --generator "$generator" --size 0.25
+  done
+}
+
+# swap and swap3d validate their input as check does: two overlapping triangles that share no
+# edge (each counter-clockwise) were swapped into a "result".
+hostile_swap_validation() {
+  printf '6 2 0 0\n0 0 0\n1 4 0\n2 0 4\n3 1 1\n4 5 1\n5 1 5\n' >"$work/two.node"
+  printf '2 3 0\n0 0 1 2\n1 3 4 5\n' >"$work/overlap.ele"
+  expect_error 2 'overlap\.ele: not a triangulation of the points of .*two\.node' \
+    swap "$work/two.node" "$work/overlap.ele" -o "$work/x.ele"
+  [[ ! -e $work/x.ele ]] || fail "swap wrote an output for an invalid input"
+}
+
+# Options: integers checked on their text, angles only for the generator that uses them,
+# smoothing bounded and stopping early.
+hostile_options() {
+  expect_error 2 "--seed: '-1' is negative" triangulate "$data/kite.node" -o "$work/x.ele" --seed -1
+  expect_error 2 "--seed: '99999999999999999999' is too large" cdt "$data/square_hole_diagonals.poly" -o "$work/x.ele" --seed 99999999999999999999
+  expect_error 2 "--max-steiner: '-1' is negative" mesh --domain key -o "$work/x.ele" --max-steiner -1
+  expect_error 2 "--smooth: '4000000000' is too large \(at most 1000\)" mesh --domain key -o "$work/x.ele" --smooth 4000000000
+  expect_error 2 'apply to --generator delaunay-refinement only; quadtree' mesh --domain key -o "$work/x.ele" --generator quadtree --min-angle 30
+  expect_error 2 'must be finite numbers \(got NaN' mesh --domain key -o "$work/x.ele" --min-angle nan
+  expect_error 2 'minimum angle 89 is outside' mesh --domain key -o "$work/x.ele" --min-angle 89
+  printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/square.poly"
+  run 0 mesh "$work/square.poly" -o "$work/s.ele" --size 0.1 --smooth 1000 --stats || return
+  local sweeps
+  sweeps=$(awk '/^smoothing_sweeps:/ { print $2 }' "$work/out")
+  [[ -n $sweeps && $sweeps -lt 1000 ]] || fail "smoothing did not stop early: $sweeps sweeps"
+  printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n1\n1 0.5 0.5 1 0.01\n' >"$work/area.poly"
+  run 0 mesh "$work/area.poly" -o "$work/a.ele" && grep -q 'area\.poly:13: region maximum areas are not applied' "$work/err" ||
+    fail "no warning for an unused region area: $(cat "$work/err")"
+}
+
+# Messages: raw bytes of a size file are escaped; an unreadable size file is reported as such.
+hostile_messages() {
+  printf 'uniform \x1b[31mred\x07\n' >"$work/binary.size"
+  expect_error 2 'binary\.size:1: .\\x1b\[31mred\\x07. is not a finite number' mesh --domain key -o "$work/x.ele" --size "$work/binary.size"
+  grep -q $'\x1b' "$work/err" && fail "an escape byte reached the terminal"
+  mkdir "$work/dir.size"
+  expect_error 2 'dir\.size: is a directory' mesh --domain key -o "$work/x.ele" --size "$work/dir.size"
 }
 
 # canonical_tets <file.ele>: each tetrahedron's vertices sorted, the lines sorted: equal for
@@ -668,7 +769,8 @@ case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
     swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
-    tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes)
+    tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
+    hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2
