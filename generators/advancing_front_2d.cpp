@@ -65,8 +65,11 @@ class EdgeQuadtree {
             cell_[level] = std::ldexp(side, -static_cast<int>(level));
     }
 
-    void insert(EdgeId e, const double* a, const double* b) {
-        const double extent = std::max(std::fabs(b[0] - a[0]), std::fabs(b[1] - a[1]));
+    /// `min_extent`: list the edge no deeper than an edge that long would go (a point, a = b,
+    /// is listed at the level of its local size rather than at the deepest level).
+    void insert(EdgeId e, const double* a, const double* b, double min_extent = 0) {
+        const double extent =
+            std::max({std::fabs(b[0] - a[0]), std::fabs(b[1] - a[1]), min_extent});
         std::uint32_t level = 0;
         double cell = side_;
         while (level < kMaxLevel && 0.25 * cell >= extent) {
@@ -169,11 +172,12 @@ struct FrontEdge {
 };
 
 /// The front edges and vertices near a base edge: every alive front edge whose bounding box
-/// meets `box`, and their end points inside it.
+/// meets `box`, their end points inside it and the free vertices (no front edge yet) inside it.
 struct Neighbourhood {
     Box box{};
     std::vector<EdgeId> edges;
-    std::vector<VertIdx> vertices;
+    std::vector<VertIdx> vertices;  ///< the free ones included
+    std::vector<VertIdx> free;
 };
 
 struct Candidate {
@@ -195,12 +199,22 @@ class AdvancingFront {
           options_(options),
           counters_(counters),
           xy_(boundary.xy),
-          quadtree_(make_quadtree(boundary.xy)) {
+          quadtree_(make_quadtree(boundary.xy)),
+          free_tree_(quadtree_) {  // empty, over the same root square
         out_head_.assign(xy_.size() / 2, kNone);
         stamp_.assign(xy_.size() / 2, 0);
         tested_.assign(xy_.size() / 2, 0);
         for (std::size_t e = 0; 2 * e + 1 < boundary.front.size(); ++e)
             add_edge(boundary.front[2 * e], boundary.front[2 * e + 1]);
+        // The free input vertices are front vertices without edges (a front loop of length 0,
+        // as a slit is one of width 0): candidates like any front vertex, and points that no
+        // triangle may cover, until a triangle takes them in.
+        free_.assign(xy_.size() / 2, 0);
+        for (const VertIdx v : boundary.free_vertices) {
+            const double h = options_.size(point(v)[0], point(v)[1]);
+            free_[v] = 1;
+            free_tree_.insert(v, point(v), point(v), std::isfinite(h) && h > 0 ? h : 0.0);
+        }
         check_initial_front();
         budget_ = options.max_triangles != 0 ? options.max_triangles : automatic_budget();
     }
@@ -254,6 +268,8 @@ class AdvancingFront {
     std::vector<EdgeId> out_head_;
     double root_side_ = 0;  // before quadtree_: make_quadtree sets it
     EdgeQuadtree quadtree_;
+    EdgeQuadtree free_tree_;          // the free vertices not yet taken in, by vertex number
+    std::vector<std::uint8_t> free_;  // 1 for those vertices
     std::priority_queue<std::pair<double, EdgeId>, std::vector<std::pair<double, EdgeId>>,
                         std::greater<>>
         heap_;
@@ -358,6 +374,7 @@ class AdvancingFront {
         near_.box = box;
         near_.edges.clear();
         near_.vertices.clear();
+        near_.free.clear();
         if (++stamp_value_ == 0) {
             std::fill(stamp_.begin(), stamp_.end(), 0);
             stamp_value_ = 1;
@@ -370,6 +387,12 @@ class AdvancingFront {
                     stamp_[v] = stamp_value_;
                     near_.vertices.push_back(v);
                 }
+            }
+        });
+        free_tree_.query(box, [&](VertIdx v) {
+            if (box_holds(box, point(v))) {
+                near_.vertices.push_back(v);
+                near_.free.push_back(v);
             }
         });
     }
@@ -456,6 +479,10 @@ class AdvancingFront {
             if (m.bc == kNone && edges_meet(b, c, u, v)) return false;
             if (m.ca == kNone && edges_meet(c, a, u, v)) return false;
         }
+        // A free vertex in the closed triangle would be left out of the mesh (or on an edge).
+        for (const VertIdx w : near_.free) {
+            if (w != c && box_holds(box, point(w)) && in_closed_triangle(w, a, b, c)) return false;
+        }
         return true;
     }
 
@@ -465,6 +492,10 @@ class AdvancingFront {
         triangles_.insert(triangles_.end(), {a, b, c});
         ++counters_.triangles;
         ++(new_point ? counters_.new_points : counters_.reused_points);
+        if (c < free_.size() && free_[c] != 0) {  // new points come after the free vertices
+            free_[c] = 0;
+            free_tree_.remove(c);
+        }
         kill_edge(base);
         if (m.bc != kNone) {
             kill_edge(m.bc);
@@ -710,6 +741,10 @@ class AdvancingFront {
                 segments.insert(segments.end(), {u, v});
         }
         if (directed.empty()) return;
+        // The free vertices not taken in yet lie inside the front (no triangle covers one).
+        for (const VertIdx v : boundary_.free_vertices) {
+            if (free_[v] != 0) local_of(v);
+        }
         ++counters_.closure_runs;
         tri::Cdt2Options options = options_.cdt;
         options.remove_exterior = false;

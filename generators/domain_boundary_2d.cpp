@@ -593,6 +593,16 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
         throw InputError("boundary discretization: " + std::to_string(boundary.xy.size() / 2) +
                          " boundary points, too many for 32-bit vertex numbers");
     }
+    // Vertices of domain triangles that no front edge reaches.
+    std::vector<std::uint8_t> on_front(boundary.xy.size() / 2, 0);
+    for (const tri::VertIdx v : boundary.front) on_front[v] = 1;
+    for (const tri::VertIdx v : mesh.triangles) {
+        if (on_front[v] == 0) {
+            on_front[v] = 1;
+            boundary.free_vertices.push_back(v);
+        }
+    }
+    std::sort(boundary.free_vertices.begin(), boundary.free_vertices.end());
     boundary.locator = DomainLocator2(boundary.cdt.mesh);
     return boundary;
 }
