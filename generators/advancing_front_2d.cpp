@@ -267,6 +267,10 @@ class AdvancingFront {
     std::vector<FrontEdge> edges_;
     std::vector<EdgeId> out_head_;
     double root_side_ = 0;  // before quadtree_: make_quadtree sets it
+    // Squared lengths and shapes (placement choices) are taken on differences scaled by
+    // 2^shift_ = 1 / root_side_ (exact): no overflow or underflow, and the same choices, bit
+    // for bit, for a domain scaled by a power of two. Set by make_quadtree.
+    int shift_ = 0;
     EdgeQuadtree quadtree_;
     EdgeQuadtree free_tree_;          // the free vertices not yet taken in, by vertex number
     std::vector<std::uint8_t> free_;  // 1 for those vertices
@@ -281,6 +285,9 @@ class AdvancingFront {
     std::vector<Candidate> candidates_;
 
     const double* point(VertIdx v) const { return xy_.data() + 2 * std::size_t{v}; }
+
+    /// A difference of coordinates in the scaled units (see shift_).
+    double scaled(double d) const { return std::ldexp(d, shift_); }
 
     Sign orient(VertIdx a, VertIdx b, VertIdx c) {
         ++counters_.orient_calls;
@@ -302,6 +309,7 @@ class AdvancingFront {
         // The smallest power of two above the extent (a degenerate extent cannot occur: the
         // domain has area).
         root_side_ = std::ldexp(1.0, std::ilogb(std::max(extent, std::ldexp(1.0, -1000))) + 1);
+        shift_ = -std::ilogb(root_side_);
         return EdgeQuadtree(x0, y0, root_side_);
     }
 
@@ -328,7 +336,7 @@ class AdvancingFront {
     void push(EdgeId e) {
         const double* a = point(edges_[e].a);
         const double* b = point(edges_[e].b);
-        const double dx = b[0] - a[0], dy = b[1] - a[1];
+        const double dx = scaled(b[0] - a[0]), dy = scaled(b[1] - a[1]);
         heap_.push({dx * dx + dy * dy, e});
     }
 
@@ -511,14 +519,18 @@ class AdvancingFront {
 
     // ---- candidates ---------------------------------------------------------------------
 
-    /// Squared distance from (x, y) to segment u-v (double precision: placement only).
+    /// Squared distance from (x, y) to segment u-v in the scaled units (double precision:
+    /// placement only).
     double distance2_to_edge(double x, double y, EdgeId e) const {
         const double* u = point(edges_[e].a);
         const double* v = point(edges_[e].b);
-        const double dx = v[0] - u[0], dy = v[1] - u[1], length2 = dx * dx + dy * dy;
+        const double dx = v[0] - u[0], dy = v[1] - u[1];
+        const double sx = scaled(dx), sy = scaled(dy), length2 = sx * sx + sy * sy;
         const double t =
-            length2 > 0 ? std::clamp(((x - u[0]) * dx + (y - u[1]) * dy) / length2, 0.0, 1.0) : 0.0;
-        const double ex = x - (u[0] + t * dx), ey = y - (u[1] + t * dy);
+            length2 > 0
+                ? std::clamp((scaled(x - u[0]) * sx + scaled(y - u[1]) * sy) / length2, 0.0, 1.0)
+                : 0.0;
+        const double ex = scaled(x - (u[0] + t * dx)), ey = scaled(y - (u[1] + t * dy));
         return ex * ex + ey * ey;
     }
 
@@ -529,11 +541,11 @@ class AdvancingFront {
     /// fifth of the run on naca0012, the domain's CDT having long thin triangles).
     bool placeable(EdgeId base, double x, double y, double delta, double slack) const {
         if (!std::isfinite(x) || !std::isfinite(y)) return false;
-        const double vertex_gap = slack * options_.min_vertex_distance * delta;
-        const double edge_gap = slack * options_.min_edge_distance * delta;
+        const double vertex_gap = scaled(slack * options_.min_vertex_distance * delta);
+        const double edge_gap = scaled(slack * options_.min_edge_distance * delta);
         for (const VertIdx w : near_.vertices) {
             if (w == edges_[base].a || w == edges_[base].b) continue;
-            const double dx = point(w)[0] - x, dy = point(w)[1] - y;
+            const double dx = scaled(point(w)[0] - x), dy = scaled(point(w)[1] - y);
             if (dx * dx + dy * dy < vertex_gap * vertex_gap) return false;
         }
         for (const EdgeId f : near_.edges) {
@@ -577,13 +589,22 @@ class AdvancingFront {
         return false;
     }
 
-    /// 4 sqrt(3) area / (sum of squared sides) of (a, b, c): 1 equilateral, 0 degenerate.
+    /// 4 sqrt(3) area / (sum of squared sides) of (a, b, c): 1 equilateral, 0 degenerate. On
+    /// the sides scaled by a power of two to a largest component in [1, 2) (scale-free).
     static double shape(const double* p, const double* q, const double* r) {
-        const double cross = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
-        const double sides = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) +
-                             (r[0] - q[0]) * (r[0] - q[0]) + (r[1] - q[1]) * (r[1] - q[1]) +
-                             (p[0] - r[0]) * (p[0] - r[0]) + (p[1] - r[1]) * (p[1] - r[1]);
-        return sides > 0 ? 2 * std::sqrt(3.0) * cross / sides : 0;
+        double side[3][2] = {
+            {q[0] - p[0], q[1] - p[1]}, {r[0] - q[0], r[1] - q[1]}, {p[0] - r[0], p[1] - r[1]}};
+        double largest = 0;
+        for (const auto& d : side) largest = std::max({largest, std::fabs(d[0]), std::fabs(d[1])});
+        if (!(largest > 0) || !std::isfinite(largest)) return 0;
+        const int shift = -std::ilogb(largest);
+        for (auto& d : side) d[0] = std::ldexp(d[0], shift), d[1] = std::ldexp(d[1], shift);
+        // (q - p) x (r - p), with r - p = -side[2].
+        const double cross = side[0][1] * side[2][0] - side[0][0] * side[2][1];
+        const double sides = side[0][0] * side[0][0] + side[0][1] * side[0][1] +
+                             side[1][0] * side[1][0] + side[1][1] * side[1][1] +
+                             side[2][0] * side[2][0] + side[2][1] * side[2][1];
+        return 2 * std::sqrt(3.0) * cross / sides;
     }
 
     /// One attempt at base edge e: local candidates on the first attempts, then the wide
@@ -600,8 +621,11 @@ class AdvancingFront {
             return std::clamp(h, options_.min_side_ratio * length,
                               options_.max_side_ratio * length);
         };
+        // Scaled by the power of two at the edge's length (scale-free, exact).
+        const int shift = -std::ilogb(length);
         auto height_of = [&](double delta) {
-            return std::sqrt(std::max(0.0, delta * delta - 0.25 * length * length));
+            const double d = std::ldexp(delta, shift), l = std::ldexp(length, shift);
+            return std::ldexp(std::sqrt(std::max(0.0, d * d - 0.25 * l * l)), -shift);
         };
         // The size near the triangle: at the midpoint first, then at the centroid of the
         // triangle that size gives (kept only when > 0 there: that centroid may lie outside the
@@ -682,7 +706,7 @@ class AdvancingFront {
         const double* pa = point(a);
         const double* pb = point(b);
         const double mx = 0.5 * pa[0] + 0.5 * pb[0], my = 0.5 * pa[1] + 0.5 * pb[1];
-        const double nx = -(pb[1] - pa[1]), ny = pb[0] - pa[0];
+        const double nx = scaled(-(pb[1] - pa[1])), ny = scaled(pb[0] - pa[0]);
         const double quarter = 0.25 * (nx * nx + ny * ny);
         if (++tested_value_ == 0) {
             std::fill(tested_.begin(), tested_.end(), 0);
@@ -697,7 +721,7 @@ class AdvancingFront {
                 tested_[v] = tested_value_;
                 if (orient(a, b, v) != Sign::Positive) continue;
                 // The circumcenter of abv is m + t n: t = (|v - m|^2 - |ab|^2 / 4) / (2 (v - m).n).
-                const double vx = point(v)[0] - mx, vy = point(v)[1] - my;
+                const double vx = scaled(point(v)[0] - mx), vy = scaled(point(v)[1] - my);
                 const double along = vx * nx + vy * ny;
                 candidates_.push_back({sort_key((vx * vx + vy * vy - quarter) / (2 * along)), v});
             }
