@@ -80,12 +80,16 @@ int run_constrained_check(const CheckArguments& arguments) {
         }
     }
     const tri::CheckNumbering numbering{base, ele.first_index};
-    const tri::CheckReport report =
+    tri::CheckReport report =
         arguments.conforming
             ? tri::check_conforming_mesh_2d(mesh, input.vertices.vertex_count(), input.segments,
                                             pieces, numbering)
             : tri::check_constrained_delaunay_2d(mesh, input.vertices.vertex_count(),
                                                  input.segments, pieces, numbering);
+    // Every input vertex in the meshed region is a mesh vertex (check_conforming_mesh_2d
+    // includes it).
+    if (report.ok && !arguments.conforming)
+        report = tri::check_input_vertices_kept_2d(mesh, input.vertices.xy, numbering);
     if (report.ok) {
         std::cout << "ok: " << ele.triangle_count() << " triangles, "
                   << (arguments.conforming

@@ -66,8 +66,11 @@ class EdgeQuadtree {
             cell_[level] = std::ldexp(side, -static_cast<int>(level));
     }
 
-    void insert(EdgeId e, const double* a, const double* b) {
-        const double extent = std::max(std::fabs(b[0] - a[0]), std::fabs(b[1] - a[1]));
+    /// `min_extent`: list the edge no deeper than an edge that long would go (a point, a = b,
+    /// is listed at the level of its local size rather than at the deepest level).
+    void insert(EdgeId e, const double* a, const double* b, double min_extent = 0) {
+        const double extent =
+            std::max({std::fabs(b[0] - a[0]), std::fabs(b[1] - a[1]), min_extent});
         std::uint32_t level = 0;
         double cell = side_;
         while (level < kMaxLevel && 0.25 * cell >= extent) {
@@ -170,11 +173,12 @@ struct FrontEdge {
 };
 
 /// The front edges and vertices near a base edge: every alive front edge whose bounding box
-/// meets `box`, and their end points inside it.
+/// meets `box`, their end points inside it and the free vertices (no front edge yet) inside it.
 struct Neighbourhood {
     Box box{};
     std::vector<EdgeId> edges;
-    std::vector<VertIdx> vertices;
+    std::vector<VertIdx> vertices;  ///< the free ones included
+    std::vector<VertIdx> free;
 };
 
 struct Candidate {
@@ -196,12 +200,22 @@ class AdvancingFront {
           options_(options),
           counters_(counters),
           xy_(boundary.xy),
-          quadtree_(make_quadtree(boundary.xy)) {
+          quadtree_(make_quadtree(boundary.xy)),
+          free_tree_(quadtree_) {  // empty, over the same root square
         out_head_.assign(xy_.size() / 2, kNone);
         stamp_.assign(xy_.size() / 2, 0);
         tested_.assign(xy_.size() / 2, 0);
         for (std::size_t e = 0; 2 * e + 1 < boundary.front.size(); ++e)
             add_edge(boundary.front[2 * e], boundary.front[2 * e + 1]);
+        // The free input vertices are front vertices without edges (a front loop of length 0,
+        // as a slit is one of width 0): candidates like any front vertex, and points that no
+        // triangle may cover, until a triangle takes them in.
+        free_.assign(xy_.size() / 2, 0);
+        for (const VertIdx v : boundary.free_vertices) {
+            const double h = options_.size(point(v)[0], point(v)[1]);
+            free_[v] = 1;
+            free_tree_.insert(v, point(v), point(v), std::isfinite(h) && h > 0 ? h : 0.0);
+        }
         check_initial_front();
         budget_ = options.max_triangles != 0 ? options.max_triangles : automatic_budget();
     }
@@ -254,7 +268,13 @@ class AdvancingFront {
     std::vector<FrontEdge> edges_;
     std::vector<EdgeId> out_head_;
     double root_side_ = 0;  // before quadtree_: make_quadtree sets it
+    // Squared lengths and shapes (placement choices) are taken on differences scaled by
+    // 2^shift_ = 1 / root_side_ (exact): no overflow or underflow, and the same choices, bit
+    // for bit, for a domain scaled by a power of two. Set by make_quadtree.
+    int shift_ = 0;
     EdgeQuadtree quadtree_;
+    EdgeQuadtree free_tree_;          // the free vertices not yet taken in, by vertex number
+    std::vector<std::uint8_t> free_;  // 1 for those vertices
     std::priority_queue<std::pair<double, EdgeId>, std::vector<std::pair<double, EdgeId>>,
                         std::greater<>>
         heap_;
@@ -266,6 +286,9 @@ class AdvancingFront {
     std::vector<Candidate> candidates_;
 
     const double* point(VertIdx v) const { return xy_.data() + 2 * std::size_t{v}; }
+
+    /// A difference of coordinates in the scaled units (see shift_).
+    double scaled(double d) const { return std::ldexp(d, shift_); }
 
     Sign orient(VertIdx a, VertIdx b, VertIdx c) {
         ++counters_.orient_calls;
@@ -287,6 +310,7 @@ class AdvancingFront {
         // The smallest power of two above the extent (a degenerate extent cannot occur: the
         // domain has area).
         root_side_ = std::ldexp(1.0, std::ilogb(std::max(extent, std::ldexp(1.0, -1000))) + 1);
+        shift_ = -std::ilogb(root_side_);
         return EdgeQuadtree(x0, y0, root_side_);
     }
 
@@ -313,7 +337,7 @@ class AdvancingFront {
     void push(EdgeId e) {
         const double* a = point(edges_[e].a);
         const double* b = point(edges_[e].b);
-        const double dx = b[0] - a[0], dy = b[1] - a[1];
+        const double dx = scaled(b[0] - a[0]), dy = scaled(b[1] - a[1]);
         heap_.push({dx * dx + dy * dy, e});
     }
 
@@ -359,6 +383,7 @@ class AdvancingFront {
         near_.box = box;
         near_.edges.clear();
         near_.vertices.clear();
+        near_.free.clear();
         if (++stamp_value_ == 0) {
             std::fill(stamp_.begin(), stamp_.end(), 0);
             stamp_value_ = 1;
@@ -371,6 +396,12 @@ class AdvancingFront {
                     stamp_[v] = stamp_value_;
                     near_.vertices.push_back(v);
                 }
+            }
+        });
+        free_tree_.query(box, [&](VertIdx v) {
+            if (box_holds(box, point(v))) {
+                near_.vertices.push_back(v);
+                near_.free.push_back(v);
             }
         });
     }
@@ -457,6 +488,10 @@ class AdvancingFront {
             if (m.bc == kNone && edges_meet(b, c, u, v)) return false;
             if (m.ca == kNone && edges_meet(c, a, u, v)) return false;
         }
+        // A free vertex in the closed triangle would be left out of the mesh (or on an edge).
+        for (const VertIdx w : near_.free) {
+            if (w != c && box_holds(box, point(w)) && in_closed_triangle(w, a, b, c)) return false;
+        }
         return true;
     }
 
@@ -466,6 +501,10 @@ class AdvancingFront {
         triangles_.insert(triangles_.end(), {a, b, c});
         ++counters_.triangles;
         ++(new_point ? counters_.new_points : counters_.reused_points);
+        if (c < free_.size() && free_[c] != 0) {  // new points come after the free vertices
+            free_[c] = 0;
+            free_tree_.remove(c);
+        }
         kill_edge(base);
         if (m.bc != kNone) {
             kill_edge(m.bc);
@@ -481,14 +520,18 @@ class AdvancingFront {
 
     // ---- candidates ---------------------------------------------------------------------
 
-    /// Squared distance from (x, y) to segment u-v (double precision: placement only).
+    /// Squared distance from (x, y) to segment u-v in the scaled units (double precision:
+    /// placement only).
     double distance2_to_edge(double x, double y, EdgeId e) const {
         const double* u = point(edges_[e].a);
         const double* v = point(edges_[e].b);
-        const double dx = v[0] - u[0], dy = v[1] - u[1], length2 = dx * dx + dy * dy;
+        const double dx = v[0] - u[0], dy = v[1] - u[1];
+        const double sx = scaled(dx), sy = scaled(dy), length2 = sx * sx + sy * sy;
         const double t =
-            length2 > 0 ? std::clamp(((x - u[0]) * dx + (y - u[1]) * dy) / length2, 0.0, 1.0) : 0.0;
-        const double ex = x - (u[0] + t * dx), ey = y - (u[1] + t * dy);
+            length2 > 0
+                ? std::clamp((scaled(x - u[0]) * sx + scaled(y - u[1]) * sy) / length2, 0.0, 1.0)
+                : 0.0;
+        const double ex = scaled(x - (u[0] + t * dx)), ey = scaled(y - (u[1] + t * dy));
         return ex * ex + ey * ey;
     }
 
@@ -499,11 +542,11 @@ class AdvancingFront {
     /// fifth of the run on naca0012, the domain's CDT having long thin triangles).
     bool placeable(EdgeId base, double x, double y, double delta, double slack) const {
         if (!std::isfinite(x) || !std::isfinite(y)) return false;
-        const double vertex_gap = slack * options_.min_vertex_distance * delta;
-        const double edge_gap = slack * options_.min_edge_distance * delta;
+        const double vertex_gap = scaled(slack * options_.min_vertex_distance * delta);
+        const double edge_gap = scaled(slack * options_.min_edge_distance * delta);
         for (const VertIdx w : near_.vertices) {
             if (w == edges_[base].a || w == edges_[base].b) continue;
-            const double dx = point(w)[0] - x, dy = point(w)[1] - y;
+            const double dx = scaled(point(w)[0] - x), dy = scaled(point(w)[1] - y);
             if (dx * dx + dy * dy < vertex_gap * vertex_gap) return false;
         }
         for (const EdgeId f : near_.edges) {
@@ -547,13 +590,22 @@ class AdvancingFront {
         return false;
     }
 
-    /// 4 sqrt(3) area / (sum of squared sides) of (a, b, c): 1 equilateral, 0 degenerate.
+    /// 4 sqrt(3) area / (sum of squared sides) of (a, b, c): 1 equilateral, 0 degenerate. On
+    /// the sides scaled by a power of two to a largest component in [1, 2) (scale-free).
     static double shape(const double* p, const double* q, const double* r) {
-        const double cross = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
-        const double sides = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) +
-                             (r[0] - q[0]) * (r[0] - q[0]) + (r[1] - q[1]) * (r[1] - q[1]) +
-                             (p[0] - r[0]) * (p[0] - r[0]) + (p[1] - r[1]) * (p[1] - r[1]);
-        return sides > 0 ? 2 * std::sqrt(3.0) * cross / sides : 0;
+        double side[3][2] = {
+            {q[0] - p[0], q[1] - p[1]}, {r[0] - q[0], r[1] - q[1]}, {p[0] - r[0], p[1] - r[1]}};
+        double largest = 0;
+        for (const auto& d : side) largest = std::max({largest, std::fabs(d[0]), std::fabs(d[1])});
+        if (!(largest > 0) || !std::isfinite(largest)) return 0;
+        const int shift = -std::ilogb(largest);
+        for (auto& d : side) d[0] = std::ldexp(d[0], shift), d[1] = std::ldexp(d[1], shift);
+        // (q - p) x (r - p), with r - p = -side[2].
+        const double cross = side[0][1] * side[2][0] - side[0][0] * side[2][1];
+        const double sides = side[0][0] * side[0][0] + side[0][1] * side[0][1] +
+                             side[1][0] * side[1][0] + side[1][1] * side[1][1] +
+                             side[2][0] * side[2][0] + side[2][1] * side[2][1];
+        return 2 * std::sqrt(3.0) * cross / sides;
     }
 
     /// One attempt at base edge e: local candidates on the first attempts, then the wide
@@ -570,8 +622,11 @@ class AdvancingFront {
             return std::clamp(h, options_.min_side_ratio * length,
                               options_.max_side_ratio * length);
         };
+        // Scaled by the power of two at the edge's length (scale-free, exact).
+        const int shift = -std::ilogb(length);
         auto height_of = [&](double delta) {
-            return std::sqrt(std::max(0.0, delta * delta - 0.25 * length * length));
+            const double d = std::ldexp(delta, shift), l = std::ldexp(length, shift);
+            return std::ldexp(std::sqrt(std::max(0.0, d * d - 0.25 * l * l)), -shift);
         };
         // The size near the triangle: at the midpoint first, then at the centroid of the
         // triangle that size gives (kept only when > 0 there: that centroid may lie outside the
@@ -652,7 +707,7 @@ class AdvancingFront {
         const double* pa = point(a);
         const double* pb = point(b);
         const double mx = 0.5 * pa[0] + 0.5 * pb[0], my = 0.5 * pa[1] + 0.5 * pb[1];
-        const double nx = -(pb[1] - pa[1]), ny = pb[0] - pa[0];
+        const double nx = scaled(-(pb[1] - pa[1])), ny = scaled(pb[0] - pa[0]);
         const double quarter = 0.25 * (nx * nx + ny * ny);
         if (++tested_value_ == 0) {
             std::fill(tested_.begin(), tested_.end(), 0);
@@ -667,7 +722,7 @@ class AdvancingFront {
                 tested_[v] = tested_value_;
                 if (orient(a, b, v) != Sign::Positive) continue;
                 // The circumcenter of abv is m + t n: t = (|v - m|^2 - |ab|^2 / 4) / (2 (v - m).n).
-                const double vx = point(v)[0] - mx, vy = point(v)[1] - my;
+                const double vx = scaled(point(v)[0] - mx), vy = scaled(point(v)[1] - my);
                 const double along = vx * nx + vy * ny;
                 candidates_.push_back({sort_key((vx * vx + vy * vy - quarter) / (2 * along)), v});
             }
@@ -711,6 +766,10 @@ class AdvancingFront {
                 segments.insert(segments.end(), {u, v});
         }
         if (directed.empty()) return;
+        // The free vertices not taken in yet lie inside the front (no triangle covers one).
+        for (const VertIdx v : boundary_.free_vertices) {
+            if (free_[v] != 0) local_of(v);
+        }
         ++counters_.closure_runs;
         tri::Cdt2Options options = options_.cdt;
         options.remove_exterior = false;

@@ -224,6 +224,15 @@ class AdvancingFront {
         for (VertIdx v = 0; v < degree_.size(); ++v) {
             if (degree_[v] > 0) points_.insert(v, point_box(point(v)), hint[v]);
         }
+        // The free input vertices are front points without edges (a front loop of length 0):
+        // candidates like any front point, and points no triangle may cover (visible), until a
+        // triangle takes them in; the closure triangulates the ones left.
+        free_.assign(degree_.size(), 0);
+        for (const VertIdx v : boundary.free_vertices) {
+            const double h = options_.size(point(v)[0], point(v)[1]);
+            free_[v] = 1;
+            points_.insert(v, point_box(point(v)), std::isfinite(h) && h > 0 ? h : 0.0);
+        }
         check_initial_front();
     }
 
@@ -291,6 +300,7 @@ class AdvancingFront {
     std::vector<FrontEdge> edges_;
     std::unordered_map<std::uint64_t, std::uint32_t> edge_of_;
     std::vector<std::uint32_t> degree_;  // live front edges at each vertex
+    std::vector<std::uint8_t> free_;     // 1: a free vertex no triangle has taken in yet
     LooseQuadtree points_, edges_tree_;
     std::priority_queue<std::pair<double, std::uint32_t>,
                         std::vector<std::pair<double, std::uint32_t>>, std::greater<>>
@@ -596,10 +606,12 @@ class AdvancingFront {
             xy_.push_back(c.x);
             xy_.push_back(c.y);
             degree_.push_back(0);
+            free_.push_back(0);
             points_.insert(c.v, point_box(point(c.v)), side);
             ++counters_.new_points;
         } else {
             ++counters_.existing_points;
+            free_[c.v] = 0;
         }
         triangles_.insert(triangles_.end(), {a, b, c.v});
         ++counters_.triangles;
@@ -642,6 +654,13 @@ class AdvancingFront {
         }
         counters_.closure_front_edges = front.size();
         if (front.empty()) return;
+        // The free vertices not taken in yet lie inside the front (no triangle covers one).
+        for (const VertIdx v : boundary_.free_vertices) {
+            if (free_[v] == 0) continue;
+            local[v] = static_cast<VertIdx>(global.size());
+            global.push_back(v);
+            xy.insert(xy.end(), {point(v)[0], point(v)[1]});
+        }
         tri::Cdt2Options options = options_.cdt;
         options.remove_exterior = false;
         if (options.recovery == tri::SegmentRecovery::Conforming)

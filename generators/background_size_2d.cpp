@@ -258,10 +258,20 @@ double BackgroundSizeMesh2::interpolate(tri::TriIdx t, double x, double y) const
     const double* a = mesh_.point(v[0]);
     const double* b = mesh_.point(v[1]);
     const double* c = mesh_.point(v[2]);
-    const double area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    // The vectors from a scaled exactly by the power of two that brings the triangle's box to
+    // [1, 2): the areas neither overflow nor underflow, and a mesh scaled by 2^k interpolates
+    // the same, bit for bit (scale invariance of the generators' default size).
+    const double* box = &boxes_[4 * std::size_t{t}];
+    const double extent = std::max(box[2] - box[0], box[3] - box[1]);
+    const int shift = extent > 0 && std::isfinite(extent) ? -std::ilogb(extent) : 0;
+    const auto scaled = [shift](double d) { return std::ldexp(d, shift); };
+    const double bx = scaled(b[0] - a[0]), by = scaled(b[1] - a[1]);
+    const double cx = scaled(c[0] - a[0]), cy = scaled(c[1] - a[1]);
+    const double px = scaled(x - a[0]), py = scaled(y - a[1]);
+    const double area = bx * cy - by * cx;
     // Barycentric coordinates of (x, y): the sub-areas opposite b and c over the whole.
-    const double lb = ((c[0] - a[0]) * (y - a[1]) - (c[1] - a[1]) * (x - a[0])) / -area;
-    const double lc = ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])) / area;
+    const double lb = (cx * py - cy * px) / -area;
+    const double lc = (bx * py - by * px) / area;
     const double sa = sizes_[v[0]], sb = sizes_[v[1]], sc = sizes_[v[2]];
     const double s = sa + lb * (sb - sa) + lc * (sc - sa);
     // The point is inside (exactly); rounding may carry s a few ulps past the vertex values.
@@ -272,10 +282,15 @@ double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
     // q' = the nearest point of the grid's box to q. For every point p of the box,
     // |q - p|^2 >= |q - q'|^2 + |q' - p|^2 (projection onto a convex set), and a cell k rings
     // away from q's cell is at least (k - 1) cells from q'.
+    // Distances in units of 2^-shift, the power of two at the cell width: the squares neither
+    // overflow nor underflow, and a mesh scaled by 2^k finds the same edge, bit for bit.
     const Buckets& g = edge_buckets_;
+    const int shift = std::isfinite(g.cell) && g.cell > 0 ? -std::ilogb(g.cell) : 0;
+    const auto scaled = [shift](double d) { return std::ldexp(d, shift); };
     const double qx = std::clamp(x, g.x0, g.x0 + g.columns * g.cell);
     const double qy = std::clamp(y, g.y0, g.y0 + g.rows * g.cell);
-    const double outside2 = (x - qx) * (x - qx) + (y - qy) * (y - qy);
+    const double ox = scaled(x - qx), oy = scaled(y - qy);
+    const double outside2 = ox * ox + oy * oy;
     const auto column = static_cast<std::int64_t>(g.column(qx));
     const auto row = static_cast<std::int64_t>(g.row(qy));
     double best2 = std::numeric_limits<double>::infinity(), value = 0;
@@ -289,9 +304,12 @@ double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
                                 vb = boundary_[2 * std::size_t{e} + 1];
             const double* a = mesh_.point(va);
             const double* b = mesh_.point(vb);
-            const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
-            const double t = std::clamp(((x - a[0]) * dx + (y - a[1]) * dy) / length2, 0.0, 1.0);
-            const double ex = x - (a[0] + t * dx), ey = y - (a[1] + t * dy), d2 = ex * ex + ey * ey;
+            const double dx = b[0] - a[0], dy = b[1] - a[1];
+            const double sx = scaled(dx), sy = scaled(dy), length2 = sx * sx + sy * sy;
+            const double t =
+                std::clamp((scaled(x - a[0]) * sx + scaled(y - a[1]) * sy) / length2, 0.0, 1.0);
+            const double ex = scaled(x - (a[0] + t * dx)), ey = scaled(y - (a[1] + t * dy));
+            const double d2 = ex * ex + ey * ey;
             if (d2 < best2) {
                 best2 = d2;
                 value =
@@ -303,7 +321,7 @@ double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
     const std::int64_t rings = std::max(g.columns, g.rows);
     for (std::int64_t k = 0; k <= rings; ++k) {
         if (k >= 1) {
-            const double gap = static_cast<double>(k - 1) * g.cell;
+            const double gap = static_cast<double>(k - 1) * scaled(g.cell);
             if (outside2 + gap * gap > best2) break;
         }
         if (k == 0) {

@@ -39,6 +39,48 @@ using tri::kNone;
 using tri::TriIdx;
 using tri::VertIdx;
 
+/// Scale invariance (a PSLG scaled by 2^k, |k| <= 600, is refined the same way, scaled): every
+/// squared length, area and quality measure is taken on edge vectors first scaled exactly by a
+/// power of two, to a largest component in [1, 2). No product then overflows or underflows, and
+/// the scaled vectors, so the keys and decisions, are the same bit for bit at every scale.
+struct ScaledTriangle {
+    double edge[3][2];  ///< edge k: p[k+1] - p[k], scaled
+    double length2[3];  ///< their squared lengths
+    double cross;       ///< (p1 - p0) x (p2 - p0), scaled twice (twice the area)
+    int shift;          ///< the scaling: 2^shift
+};
+
+ScaledTriangle scaled_triangle(const double* const p[3]) {
+    ScaledTriangle r;
+    double largest = 0;
+    for (int k = 0; k < 3; ++k) {
+        r.edge[k][0] = p[(k + 1) % 3][0] - p[k][0];
+        r.edge[k][1] = p[(k + 1) % 3][1] - p[k][1];
+        largest = std::max({largest, std::fabs(r.edge[k][0]), std::fabs(r.edge[k][1])});
+    }
+    r.shift = largest > 0 && std::isfinite(largest) ? -std::ilogb(largest) : 0;
+    for (int k = 0; k < 3; ++k) {
+        r.edge[k][0] = std::ldexp(r.edge[k][0], r.shift);
+        r.edge[k][1] = std::ldexp(r.edge[k][1], r.shift);
+        r.length2[k] = r.edge[k][0] * r.edge[k][0] + r.edge[k][1] * r.edge[k][1];
+    }
+    // p2 - p0 = -edge[2].
+    r.cross = r.edge[0][1] * r.edge[2][0] - r.edge[0][0] * r.edge[2][1];
+    return r;
+}
+
+/// The angle at o between o -> p and o -> q (radians, [0, pi]), on scaled vectors.
+double corner_radians(const double* o, const double* p, const double* q) {
+    double ux = p[0] - o[0], uy = p[1] - o[1], wx = q[0] - o[0], wy = q[1] - o[1];
+    const double largest = std::max({std::fabs(ux), std::fabs(uy), std::fabs(wx), std::fabs(wy)});
+    if (largest > 0 && std::isfinite(largest)) {
+        const int shift = -std::ilogb(largest);
+        ux = std::ldexp(ux, shift), uy = std::ldexp(uy, shift);
+        wx = std::ldexp(wx, shift), wy = std::ldexp(wy, shift);
+    }
+    return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+}
+
 struct BadTriangle {
     float key;  // larger is worse
     TriIdx t;
@@ -164,10 +206,6 @@ class Refiner {
     void find_small_input_angles();
     void spend_budget();
     const double* point(VertIdx v) const { return mesh_.point(v); }
-    double squared_distance(VertIdx u, VertIdx v) const {
-        const double dx = point(u)[0] - point(v)[0], dy = point(u)[1] - point(v)[1];
-        return dx * dx + dy * dy;
-    }
 };
 
 void Refiner::check_domain_and_budget() {
@@ -218,9 +256,7 @@ void Refiner::find_small_input_angles() {
     // small input angle (measured inside the domain: a sharp notch of a hole is none).
     small_apex_angle_.assign(initial_vertices_, 0.0);
     auto corner_angle = [&](VertIdx o, VertIdx p, VertIdx q) {
-        const double ux = point(p)[0] - point(o)[0], uy = point(p)[1] - point(o)[1];
-        const double wx = point(q)[0] - point(o)[0], wy = point(q)[1] - point(o)[1];
-        return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+        return corner_radians(point(o), point(p), point(q));
     };
     for (EdgeIdx e = 0; e < mesh_.tv.size(); ++e) {
         if (cdt_.segment_of(e) == kNone || !cdt_.in_domain(tri::triangle_of(e))) continue;
@@ -257,11 +293,8 @@ bool Refiner::small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const {
 void Refiner::evaluate(TriIdx t) {
     const VertIdx v[3] = {mesh_.tv[3 * t], mesh_.tv[3 * t + 1], mesh_.tv[3 * t + 2]};
     const double* p[3] = {point(v[0]), point(v[1]), point(v[2])};
-    double length2[3];  // edge k: v[k] - v[k+1]
-    for (int k = 0; k < 3; ++k) {
-        const double dx = p[(k + 1) % 3][0] - p[k][0], dy = p[(k + 1) % 3][1] - p[k][1];
-        length2[k] = dx * dx + dy * dy;
-    }
+    const ScaledTriangle scaled = scaled_triangle(p);
+    const double* length2 = scaled.length2;  // edge k: v[k] - v[k+1], scaled
     double size_key = 0;
     if (options_.size.bounded()) {
         for (int k = 0; k < 3; ++k) {
@@ -289,7 +322,8 @@ void Refiner::evaluate(TriIdx t) {
                 }
             }
             if (cache_sizes_) edge_size_[e] = s;
-            size_key = std::max(size_key, length2[k] / (s * s));
+            const double scaled_size = std::ldexp(s, scaled.shift);  // in the scaled units
+            size_key = std::max(size_key, length2[k] / (scaled_size * scaled_size));
         }
     }
     double key = size_key;
@@ -300,8 +334,7 @@ void Refiner::evaluate(TriIdx t) {
         for (int k = 1; k < 3; ++k) {
             if (length2[k] < length2[shortest]) shortest = k;
         }
-        const double cross =
-            (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+        const double cross = scaled.cross;
         const double product = length2[(shortest + 1) % 3] * length2[(shortest + 2) % 3];
         const double sine2 = cross * cross / product;
         if (sine2 < sine2_bound_ || sine2 < polish_sine2_) {
@@ -431,7 +464,14 @@ Refiner::SplitPoint Refiner::split_point(EdgeIdx e) const {
         split.apex = corner(a) ? a : b;
         const long double t_apex = split.apex == a ? ta : tb, t_far = split.apex == a ? tb : ta;
         const long double length = std::fabs(t_far - t_apex) * std::sqrt(length2);
-        split.shell = static_cast<int>(std::lround(std::log2(static_cast<double>(length / 2))));
+        // Nearest in the geometric sense (log2 rounded), decided exactly on the mantissa m in
+        // [1/2, 1) (frexp): 2^(e - 1) when m < 1/sqrt(2), that is when m^2 - 1/2 < 0 (one fma,
+        // whose rounding keeps the sign), else 2^e. So the shell moves by exactly k when the
+        // input is scaled by 2^k (lround(log2) saw a tie, or not, by the last bit of log2 at
+        // lengths like a square's diagonal).
+        int exponent = 0;
+        const double mantissa = std::frexp(static_cast<double>(length / 2), &exponent);
+        split.shell = std::fma(mantissa, mantissa, -0.5) < 0 ? exponent - 1 : exponent;
         const long double distance = std::ldexp(1.0L, split.shell);
         t = t_apex + (t_far > t_apex ? 1 : -1) * distance / std::sqrt(length2);
     }
@@ -518,9 +558,12 @@ bool Refiner::refine(std::uint64_t limit) {
                 break;
             case tri::CavityInsertion::Encroaches: {
                 ++counters_.rejected_circumcenters;
-                const double shortest =
-                    std::sqrt(std::min({squared_distance(v[0], v[1]), squared_distance(v[1], v[2]),
-                                        squared_distance(v[2], v[0])}));
+                // sqrt of the smallest squared length (as the rules were tuned), scaled.
+                const double* p[3] = {point(v[0]), point(v[1]), point(v[2])};
+                const ScaledTriangle scaled = scaled_triangle(p);
+                const double shortest = std::ldexp(
+                    std::sqrt(std::min({scaled.length2[0], scaled.length2[1], scaled.length2[2]})),
+                    -scaled.shift);
                 bool split = false;
                 for (const EdgeIdx e : cdt_.encroached_edges()) {
                     // Only skinny triangles are left at small angles; too big ones are split.
@@ -550,15 +593,10 @@ bool Refiner::refine(std::uint64_t limit) {
 bool Refiner::below_asked_bound(TriIdx t) const {
     const double* p[3] = {point(mesh_.tv[3 * t]), point(mesh_.tv[3 * t + 1]),
                           point(mesh_.tv[3 * t + 2])};
-    double length2[3];
-    for (int k = 0; k < 3; ++k) {
-        const double dx = p[(k + 1) % 3][0] - p[k][0], dy = p[(k + 1) % 3][1] - p[k][1];
-        length2[k] = dx * dx + dy * dy;
-    }
+    const ScaledTriangle scaled = scaled_triangle(p);
+    double length2[3] = {scaled.length2[0], scaled.length2[1], scaled.length2[2]};
     std::sort(length2, length2 + 3);
-    const double cross =
-        (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
-    return cross * cross < asked_sine2_ * length2[1] * length2[2];
+    return scaled.cross * scaled.cross < asked_sine2_ * length2[1] * length2[2];
 }
 
 void Refiner::requeue_for_asked_bound() {

@@ -349,15 +349,21 @@ namespace {
 double triangle_estimate(const SizeFunction& size, const std::array<double, 2>& p,
                          const std::array<double, 2>& q, const std::array<double, 2>& r,
                          int depth) {
-    const double area =
-        0.5 * std::fabs((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
     const double h = std::min({size(p[0], p[1]), size(q[0], q[1]), size(r[0], r[1]),
                                size((p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3)});
-    if (!(h > 0) || !std::isfinite(h) || !(area > 0)) return 0;
+    if (!(h > 0) || !std::isfinite(h)) return 0;
+    // Lengths scaled exactly by the power of two that brings h to [1, 2): no product
+    // overflows or underflows at any scale, and the count is the same at every scale.
+    const int shift = -std::ilogb(h);
+    const auto scaled = [shift](double d) { return std::ldexp(d, shift); };
+    const double area = 0.5 * std::fabs(scaled(q[0] - p[0]) * scaled(r[1] - p[1]) -
+                                        scaled(q[1] - p[1]) * scaled(r[0] - p[0]));
+    if (!(area > 0)) return 0;
+    const double scaled_h = scaled(h);
     const double width =
         std::max({std::hypot(q[0] - p[0], q[1] - p[1]), std::hypot(r[0] - q[0], r[1] - q[1]),
                   std::hypot(p[0] - r[0], p[1] - r[1])});
-    const double count = area / (0.43 * h * h);
+    const double count = area / (0.43 * scaled_h * scaled_h);
     if (depth >= 8 || width <= 8 * h || count <= 16) return count;
     auto mid = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
         return std::array<double, 2>{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
@@ -594,6 +600,16 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
         throw InputError("boundary discretization: " + std::to_string(boundary.xy.size() / 2) +
                          " boundary points, too many for 32-bit vertex numbers");
     }
+    // Vertices of domain triangles that no front edge reaches.
+    std::vector<std::uint8_t> on_front(boundary.xy.size() / 2, 0);
+    for (const tri::VertIdx v : boundary.front) on_front[v] = 1;
+    for (const tri::VertIdx v : mesh.triangles) {
+        if (on_front[v] == 0) {
+            on_front[v] = 1;
+            boundary.free_vertices.push_back(v);
+        }
+    }
+    std::sort(boundary.free_vertices.begin(), boundary.free_vertices.end());
     boundary.locator = DomainLocator2(boundary.cdt.mesh);
     return boundary;
 }

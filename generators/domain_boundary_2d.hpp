@@ -62,6 +62,11 @@ struct DomainBoundary2 {
     /// sliver, through the sliver's third vertex); pieces meet only at shared ends (exact).
     std::vector<triangulation::VertIdx> pieces;
     std::vector<std::uint32_t> piece_segment;
+    /// The vertices of the domain on no front edge (ascending): input vertices strictly inside
+    /// the domain with no segment at them. Every generator keeps them; the advancing fronts
+    /// treat them as front vertices without edges (candidates, and points no triangle may
+    /// cover) until a triangle takes them in.
+    std::vector<triangulation::VertIdx> free_vertices;
     /// Over cdt.mesh (built last: the boundary must not move afterwards).
     DomainLocator2 locator;
 };

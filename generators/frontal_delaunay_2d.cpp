@@ -300,7 +300,11 @@ std::array<double, 2> Frontal::place(EdgeIdx e) const {
 }
 
 bool Frontal::too_close(TriIdx t, double x, double y, double limit) {
-    const double limit2 = limit * limit;
+    // Distances in units of the power of two at the limit (no overflow or underflow of the
+    // squares: the same decision at every scale).
+    const int shift = limit > 0 && std::isfinite(limit) ? -std::ilogb(limit) : 0;
+    const double scaled_limit = std::ldexp(limit, shift);
+    const double limit2 = scaled_limit * scaled_limit;
     const double xq[2] = {x, y};
     const std::uint32_t stamp = next_stamp();
     stack_.assign(1, t);
@@ -311,7 +315,7 @@ bool Frontal::too_close(TriIdx t, double x, double y, double limit) {
         stack_.pop_back();
         for (unsigned k = 0; k < 3; ++k) {
             const double* v = point(mesh_.tv[3 * u + k]);
-            const double dx = v[0] - x, dy = v[1] - y;
+            const double dx = std::ldexp(v[0] - x, shift), dy = std::ldexp(v[1] - y, shift);
             if (dx * dx + dy * dy < limit2) close = true;
             const EdgeIdx e = 3 * u + k;
             if (cdt_.segment_of(e) != kNone) continue;

@@ -57,10 +57,18 @@ struct Obstacle {
 };
 
 /// Distance from (x, y) to the segment (double precision: shape choices only).
+/// The parameter t is taken on vectors scaled by a power of two to the segment's extent (no
+/// overflow or underflow of the products: the same t at every scale).
 double distance_to(const Obstacle& s, double x, double y) {
-    const double dx = s.b[0] - s.a[0], dy = s.b[1] - s.a[1], length2 = dx * dx + dy * dy;
-    const double t =
-        length2 > 0 ? std::clamp(((x - s.a[0]) * dx + (y - s.a[1]) * dy) / length2, 0.0, 1.0) : 0.0;
+    const double dx = s.b[0] - s.a[0], dy = s.b[1] - s.a[1];
+    const double extent = std::max(std::fabs(dx), std::fabs(dy));
+    double t = 0.0;
+    if (extent > 0 && std::isfinite(extent)) {
+        const int shift = -std::ilogb(extent);
+        const double ux = std::ldexp(dx, shift), uy = std::ldexp(dy, shift);
+        const double wx = std::ldexp(x - s.a[0], shift), wy = std::ldexp(y - s.a[1], shift);
+        t = std::clamp((wx * ux + wy * uy) / (ux * ux + uy * uy), 0.0, 1.0);
+    }
     return std::hypot(x - (s.a[0] + t * dx), y - (s.a[1] + t * dy));
 }
 
@@ -686,13 +694,21 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
     auto bad = [&](tri::TriIdx t) {
         const double* p[3] = {mesh.point(mesh.tv[3 * t]), mesh.point(mesh.tv[3 * t + 1]),
                               mesh.point(mesh.tv[3 * t + 2])};
+        // On the edge vectors scaled exactly by a power of two to a largest component in
+        // [1, 2): no product overflows or underflows, the same decision at every scale.
+        double edge[3][2], largest = 0;
+        for (int k = 0; k < 3; ++k) {
+            edge[k][0] = p[(k + 1) % 3][0] - p[k][0], edge[k][1] = p[(k + 1) % 3][1] - p[k][1];
+            largest = std::max({largest, std::fabs(edge[k][0]), std::fabs(edge[k][1])});
+        }
+        const int shift = largest > 0 && std::isfinite(largest) ? -std::ilogb(largest) : 0;
         double l2[3];
         for (int k = 0; k < 3; ++k) {
-            const double dx = p[(k + 1) % 3][0] - p[k][0], dy = p[(k + 1) % 3][1] - p[k][1];
-            l2[k] = dx * dx + dy * dy;
+            edge[k][0] = std::ldexp(edge[k][0], shift), edge[k][1] = std::ldexp(edge[k][1], shift);
+            l2[k] = edge[k][0] * edge[k][0] + edge[k][1] * edge[k][1];
         }
-        const double area2 =
-            (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+        // (p1 - p0) x (p2 - p0), with p2 - p0 = -edge[2].
+        const double area2 = edge[0][1] * edge[2][0] - edge[0][0] * edge[2][1];
         const double shortest = std::min({l2[0], l2[1], l2[2]});
         // sin^2(min angle) = l^2 area2^2 / (l0 l1 l2) (area2 = 2A; 4R^2 = l0 l1 l2 / area2^2).
         return shortest * area2 * area2 < sine2 * l2[0] * l2[1] * l2[2];

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The quality report (see quality_2d.hpp). Corner angles from atan2(|cross|, dot), which is
-// accurate to an ulp or so over the whole range (acos of a cosine is not, near 0 and 180).
+// accurate to an ulp or so over the whole range (acos of a cosine is not, near 0 and 180), on
+// the corner's edge vectors first scaled exactly by a power of two to a largest component in
+// [1, 2): no product overflows or underflows at any scale, and a mesh scaled by 2^k reports the
+// same angles, bit for bit.
 #include "generators/quality_2d.hpp"
 
 #include <algorithm>
@@ -13,6 +16,18 @@
 namespace exactmesh::generators {
 
 namespace {
+
+/// The corner angle at o of (o, p, q) in degrees, scale-free (see the top of the file).
+double corner_degrees(const double* o, const double* p, const double* q) {
+    double ux = p[0] - o[0], uy = p[1] - o[1], wx = q[0] - o[0], wy = q[1] - o[1];
+    const double largest = std::max({std::fabs(ux), std::fabs(uy), std::fabs(wx), std::fabs(wy)});
+    if (largest > 0 && std::isfinite(largest)) {
+        const int shift = -std::ilogb(largest);
+        ux = std::ldexp(ux, shift), uy = std::ldexp(uy, shift);
+        wx = std::ldexp(wx, shift), wy = std::ldexp(wy, shift);
+    }
+    return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * (180.0 / std::numbers::pi);
+}
 
 double median_of(std::vector<double>& values) {
     if (values.empty()) return 0;
@@ -35,7 +50,7 @@ QualityReport2 quality_report_2d(std::span<const double> xy, std::span<const tri
     const std::size_t count = triangles.size() / 3;
     r.triangles = count;
     if (count == 0) return r;
-    constexpr double kDegrees = 180.0 / std::numbers::pi;
+    constexpr double kDegrees = 180.0 / std::numbers::pi;  // for the sine of the smallest angle
     std::vector<std::uint8_t> used(xy.size() / 2, 0);
     std::vector<double> radius_edge;
     radius_edge.reserve(count);
@@ -51,8 +66,7 @@ QualityReport2 quality_report_2d(std::span<const double> xy, std::span<const tri
             const double* o = &xy[2 * std::size_t{v[k]}];
             const double* p = &xy[2 * std::size_t{v[(k + 1) % 3]}];
             const double* q = &xy[2 * std::size_t{v[(k + 2) % 3]}];
-            const double ux = p[0] - o[0], uy = p[1] - o[1], wx = q[0] - o[0], wy = q[1] - o[1];
-            const double angle = std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * kDegrees;
+            const double angle = corner_degrees(o, p, q);
             smallest = std::min(smallest, angle);
             r.min_angle = std::min(r.min_angle, angle);
             r.max_angle = std::max(r.max_angle, angle);

@@ -46,7 +46,15 @@ void require_exponent(double value, const std::string& what) {
     }
 }
 
-/// (d / radius)^exponent from the squared distance d2.
+/// Scale invariance: distances and radii are first scaled exactly by the power of two that
+/// brings the radius to [1, 2) (2^radius_shift), so that no square overflows or underflows and
+/// a size function scaled with its domain by a power of two gives the same values, scaled, bit
+/// for bit (and the values of unscaled inputs are those of the plain formula).
+int radius_shift(double radius) {
+    return std::isfinite(radius) && radius > 0 ? -std::ilogb(radius) : 0;
+}
+
+/// (d / radius)^exponent from the squared distance d2, both scaled by radius_shift.
 double growth(double d2, double radius, double exponent) {
     if (exponent == 2.0) return d2 / (radius * radius);
     if (exponent == 0.0) return 1.0;
@@ -56,12 +64,18 @@ double growth(double d2, double radius, double exponent) {
     return std::pow(ratio, exponent);
 }
 
-double squared_distance_to_segment(double x, double y, const LineSource& l) {
+/// The squared distance from (x, y) to the segment, scaled by 2^(2 shift).
+double squared_distance_to_segment(double x, double y, const LineSource& l, int shift) {
     const double dx = l.x1 - l.x0, dy = l.y1 - l.y0;
-    const double length2 = dx * dx + dy * dy;
+    const double sx = std::ldexp(dx, shift), sy = std::ldexp(dy, shift);
+    const double length2 = sx * sx + sy * sy;
     double t = 0.0;
-    if (length2 > 0) t = std::clamp(((x - l.x0) * dx + (y - l.y0) * dy) / length2, 0.0, 1.0);
-    const double ex = x - (l.x0 + t * dx), ey = y - (l.y0 + t * dy);
+    if (length2 > 0)
+        t = std::clamp(
+            (std::ldexp(x - l.x0, shift) * sx + std::ldexp(y - l.y0, shift) * sy) / length2, 0.0,
+            1.0);
+    const double ex = std::ldexp(x - (l.x0 + t * dx), shift),
+                 ey = std::ldexp(y - (l.y0 + t * dy), shift);
     return ex * ex + ey * ey;
 }
 
@@ -169,11 +183,14 @@ double SizeFunction::evaluate(double x, double y) const {
     }
     double s = 0.0;
     for (const PointSource& p : points_) {
-        const double dx = x - p.x, dy = y - p.y;
-        s += p.size * (1.0 + growth(dx * dx + dy * dy, p.radius, p.exponent));
+        const int shift = radius_shift(p.radius);
+        const double dx = std::ldexp(x - p.x, shift), dy = std::ldexp(y - p.y, shift);
+        s += p.size * (1.0 + growth(dx * dx + dy * dy, std::ldexp(p.radius, shift), p.exponent));
     }
     for (const LineSource& l : lines_) {
-        s += l.size * (1.0 + growth(squared_distance_to_segment(x, y, l), l.radius, l.exponent));
+        const int shift = radius_shift(l.radius);
+        s += l.size * (1.0 + growth(squared_distance_to_segment(x, y, l, shift),
+                                    std::ldexp(l.radius, shift), l.exponent));
     }
     return std::min(s, cap_);
 }
@@ -442,7 +459,8 @@ double equilateral_count_in_box(const SizeFunction& size, double x0, double y0, 
     for (int i = 0; i < kSamples; ++i) {
         for (int j = 0; j < kSamples; ++j) {
             const double s = size(x0 + (i + 0.5) * dx, y0 + (j + 0.5) * dy);
-            if (s > 0 && std::isfinite(s)) estimate += 2.31 * dx * dy / (s * s);
+            // In units of s (no overflow or underflow of the squares at any scale).
+            if (s > 0 && std::isfinite(s)) estimate += 2.31 * (dx / s) * (dy / s);
         }
     }
     return std::isnan(estimate) ? 0 : estimate;

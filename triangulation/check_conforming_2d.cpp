@@ -25,6 +25,75 @@ int half_of(const double* v, const double* a) {
 
 }  // namespace
 
+CheckReport check_input_vertices_kept_2d(const Triangulation2& mesh,
+                                         std::span<const double> input_xy,
+                                         CheckNumbering numbering) {
+    const std::size_t inputs = input_xy.size() / 2;
+    auto vertex = [&](std::size_t v) { return std::to_string(v + numbering.first_vertex); };
+    if (inputs > mesh.vertex_count()) {
+        return CheckReport{false,
+                           "the mesh has " + std::to_string(mesh.vertex_count()) +
+                               " vertices, fewer than the " + std::to_string(inputs) +
+                               " input vertices",
+                           kNone,
+                           {}};
+    }
+    for (std::size_t v = 0; v < inputs; ++v) {
+        const double* p = mesh.point(static_cast<VertIdx>(v));
+        if (p[0] != input_xy[2 * v] || p[1] != input_xy[2 * v + 1]) {
+            return CheckReport{false,
+                               "input vertex " + vertex(v) + " has moved in the mesh",
+                               kNone,
+                               {static_cast<VertIdx>(v)}};
+        }
+    }
+    std::vector<std::uint8_t> used(inputs, 0);
+    for (const VertIdx v : mesh.triangles) {
+        if (v < inputs) used[v] = 1;
+    }
+    // The unused input vertices sorted by x: a triangle tests those in its x-range.
+    std::vector<VertIdx> unused;
+    for (std::size_t v = 0; v < inputs; ++v) {
+        if (used[v] == 0) unused.push_back(static_cast<VertIdx>(v));
+    }
+    if (unused.empty()) return {};
+    auto x_of = [&](VertIdx v) { return mesh.point(v)[0]; };
+    std::sort(unused.begin(), unused.end(), [&](VertIdx a, VertIdx b) {
+        return x_of(a) < x_of(b) || (x_of(a) == x_of(b) && a < b);
+    });
+    const TriIdx count = mesh.triangle_count();
+    for (TriIdx t = 0; t < count; ++t) {
+        const double* c[3] = {mesh.point(mesh.triangles[3 * t]),
+                              mesh.point(mesh.triangles[3 * t + 1]),
+                              mesh.point(mesh.triangles[3 * t + 2])};
+        const double x0 = std::min({c[0][0], c[1][0], c[2][0]});
+        const double x1 = std::max({c[0][0], c[1][0], c[2][0]});
+        const double y0 = std::min({c[0][1], c[1][1], c[2][1]});
+        const double y1 = std::max({c[0][1], c[1][1], c[2][1]});
+        auto it = std::partition_point(unused.begin(), unused.end(),
+                                       [&](VertIdx v) { return x_of(v) < x0; });
+        for (; it != unused.end() && x_of(*it) <= x1; ++it) {
+            const double* p = mesh.point(*it);
+            if (p[1] < y0 || p[1] > y1) continue;
+            bool corner = false;
+            for (const double* q : c) corner = corner || (q[0] == p[0] && q[1] == p[1]);
+            if (corner) continue;
+            // Counter-clockwise triangles (checked before): inside when no side has p right.
+            if (predicates::orient2d(c[0], c[1], p) != Sign::Negative &&
+                predicates::orient2d(c[1], c[2], p) != Sign::Negative &&
+                predicates::orient2d(c[2], c[0], p) != Sign::Negative) {
+                return CheckReport{false,
+                                   "input vertex " + vertex(*it) + " lies in triangle " +
+                                       std::to_string(std::uint64_t{t} + numbering.first_triangle) +
+                                       " but is no vertex of the mesh (an input vertex left out)",
+                                   t,
+                                   {*it}};
+            }
+        }
+    }
+    return {};
+}
+
 CheckReport check_conforming_mesh_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
                                      std::span<const VertIdx> segments,
                                      std::span<const VertIdx> pieces, CheckNumbering numbering) {
@@ -144,7 +213,9 @@ CheckReport check_conforming_mesh_2d(const Triangulation2& mesh, std::uint32_t i
                 {a, b}};
         }
     }
-    return {};
+    return check_input_vertices_kept_2d(
+        mesh, std::span<const double>(mesh.xy).first(2 * std::size_t{input_vertex_count}),
+        numbering);
 }
 
 }  // namespace exactmesh::triangulation

@@ -8,7 +8,8 @@
 //    two edges leave the vertex in the same direction);
 //  - every edge with a triangle on one side only is a piece of a segment (the mesh is closed by
 //    the boundary);
-//  - every input segment is a chain of pieces, as check_constrained_delaunay_2d tests it.
+//  - every input segment is a chain of pieces, as check_constrained_delaunay_2d tests it;
+//  - every input vertex in the meshed region is a mesh vertex (check_input_vertices_kept_2d).
 // Why this is enough (proofs/invariants/conforming_mesh_2d.md): the first two make the map from
 // the mesh to the plane locally injective, so each point off the mesh's boundary is covered as
 // many times as the boundary winds around it; the third puts that boundary on the segments.
@@ -23,6 +24,16 @@
 #include "triangulation/triangulation_2d.hpp"
 
 namespace exactmesh::triangulation {
+
+/// Every input vertex (the first input_xy.size() / 2 vertices of the mesh, in the input's
+/// numbering) is kept: its coordinates in the mesh are the input's, exactly, and when no
+/// triangle uses it, it lies in no closed triangle of the mesh (it is outside the meshed region:
+/// in a hole or outside the domain) unless a corner of that triangle has its coordinates (a
+/// merged duplicate). Exact orient2d tests; the unused vertices are bucketed by x, so the cost
+/// is O((V + T) log V) plus the tests of the unused vertices in each triangle's x-range.
+CheckReport check_input_vertices_kept_2d(const Triangulation2& mesh,
+                                         std::span<const double> input_xy,
+                                         CheckNumbering numbering = {});
 
 /// The arguments as check_constrained_delaunay_2d takes them (pieces empty: the flagged edges).
 CheckReport check_conforming_mesh_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,

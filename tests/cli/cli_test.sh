@@ -696,10 +696,18 @@ mesh() {
   # the key domain with its counters and construct_seconds; without --size a generator that
   # needs one takes the input's spacing.
   local generator kind
+  # Free vertices of a .node beside its .poly (the .poly announces 0 vertices; 5-7 are on no
+  # segment): every generator keeps them (issue 11), and check verifies that every input vertex
+  # in the domain is a mesh vertex.
+  printf '7 2 0 0\n1 0 0\n2 3 0\n3 3 2\n4 0 2\n5 1 1\n6 2 0.5\n7 2.9 1.9\n' >"$work/free.node"
+  printf '0 2 0 0\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/free.poly"
   for generator in delaunay-refinement:delaunay quadtree:conforming advancing-front:conforming \
     advancing-front-delaunay:conforming frontal:delaunay; do
     kind=${generator#*:}
     generator=${generator%%:*}
+    run 0 mesh "$work/free.poly" -o "$work/free-$generator.ele" --generator "$generator" --size 0.3 &&
+      run 0 check $([[ $kind == delaunay ]] || echo --conforming) "$work/free.poly" "$work/free-$generator.ele" &&
+      grep -q '^ok: ' "$work/out" || fail "mesh --generator $generator, free vertices: $(cat "$work/out")"
     run 0 mesh "$data/square_hole_diagonals.poly" -o "$work/$generator.ele" --generator "$generator" --size 0.3 \
       --quality || continue
     awk '/^quality.triangles:/ { exit !($2 > 100) }' "$work/out" || fail "mesh --generator $generator: $(cat "$work/out")"

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Checks of a 2D quality mesh of a PSLG domain, for the generator tests (ours and CGAL's
 // output alike): exact constrained Delaunay (or, for generators that do not promise it, exact
-// validity without folds: check_conforming_mesh_2d) with every segment a chain of pieces (triangulation/
-// check_constrained_2d), no triangle outside the domain (its centroid inside by the even-odd
-// rule against the input segments, decided with exact orient2d, or within the rounding a piece
-// may bend by from a segment), the triangulated region closed
-// by pieces only (every edge with one triangle is a piece), and the smallest angle and longest
-// edge-to-size ratio. Test support, not a library algorithm.
+// validity without folds: check_conforming_mesh_2d) with every segment a chain of pieces
+// (triangulation/ check_constrained_2d), no triangle outside the domain (its centroid inside by the
+// even-odd rule against the input segments, decided with exact orient2d, or within the rounding a
+// piece may bend by from a segment), the triangulated region closed by pieces only (every edge with
+// one triangle is a piece), every input vertex in the meshed region a mesh vertex at its input
+// coordinates (check_input_vertices_kept_2d: no generator may drop a free vertex inside the
+// domain), and the smallest angle and longest edge-to-size ratio. Test support, not a library
+// algorithm.
 #pragma once
 
 #include <algorithm>
@@ -90,6 +92,13 @@ inline MeshCheck check_quality_mesh(const triangulation::Triangulation2& mesh, s
     if (!report.ok) {
         r.ok = false;
         r.problem = (delaunay ? "not constrained Delaunay: " : "not a valid mesh of the domain: ") + report.problem;
+        return r;
+    }
+    const auto kept = triangulation::check_input_vertices_kept_2d(
+        mesh, input_xy.first(std::min(input_xy.size(), 2 * std::size_t{input_vertex_count})));
+    if (!kept.ok) {
+        r.ok = false;
+        r.problem = "input vertices not kept: " + kept.problem;
         return r;
     }
     if (mesh.triangle_count() == 0) {
