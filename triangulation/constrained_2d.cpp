@@ -788,6 +788,16 @@ void CdtBuilder::require_off_boundary(AmbiguousMarkPoint::Kind kind, std::size_t
         const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
         for (const VertIdx v : {a, b}) {
             if (v == kInfinite || mesh_.xy[2 * v] != x || mesh_.xy[2 * v + 1] != y) continue;
+            // A vertex no segment ends at (a free vertex) has one side only: every triangle
+            // around it floods to the others without crossing a constraint.
+            bool on_segment_end = false;
+            const EdgeIdx first = vertex_edge_[v];
+            EdgeIdx around = first;
+            do {
+                on_segment_end = on_segment_end || segment_of_[around] != kNone;
+                around = mesh_.twin[prev_edge(around)];
+            } while (around != first);
+            if (!on_segment_end) continue;
             const VertIdx caller = core_.input_index[v];
             const std::string vertex =
                 caller < input_count_ ? "vertex " + std::to_string(caller + options_.first_index)

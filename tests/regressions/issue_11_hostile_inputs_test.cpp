@@ -238,6 +238,20 @@ TEST_F(Issue11, issue_11_hole_on_segment_or_vertex_is_an_error) {
         "point strictly inside it");
     // Exactly: a hole 2^-1074 off the segment is inside, decided by exact orient2d.
     EXPECT_EQ(ambiguity(square_with("1\n1 0.5 4.9406564584124654e-324\n")), "");
+    // On a free vertex (no segment ends there) every triangle around it is on one side: not
+    // ambiguous; the hole is the whole square.
+    const io::PolyFile free_vertex = io::parse_poly(
+        "5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0.5 0.5\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n"
+        "1\n1 0.5 0.5\n",
+        "square.poly", "square.node");
+    EXPECT_EQ(ambiguity(free_vertex), "");
+    tri::Cdt2Options options;
+    options.first_index = free_vertex.vertices.first_index;
+    const tri::Cdt2Result hole_everywhere =
+        tri::constrained_delaunay_2d(tri::Pslg{free_vertex.vertices.xy, free_vertex.segments,
+                                               free_vertex.holes, free_vertex.regions},
+                                     options);
+    EXPECT_TRUE(hole_everywhere.mesh.triangles.empty());
 }
 
 // Messages at extreme scales printed std::to_string's 300-digit fixed point, "inf" or "-nan".
