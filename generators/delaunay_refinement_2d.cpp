@@ -25,6 +25,7 @@
 
 #include "predicates/constructions.hpp"
 #include "predicates/errors.hpp"
+#include "predicates/power_of_two.hpp"
 #include "triangulation/angles_2d.hpp"
 #include "triangulation/constrained_triangulation_2d.hpp"
 
@@ -58,10 +59,11 @@ ScaledTriangle scaled_triangle(const double* const p[3]) {
         r.edge[k][1] = p[(k + 1) % 3][1] - p[k][1];
         largest = std::max({largest, std::fabs(r.edge[k][0]), std::fabs(r.edge[k][1])});
     }
-    r.shift = largest > 0 && std::isfinite(largest) ? -std::ilogb(largest) : 0;
+    r.shift = predicates::unit_shift(largest);
+    const predicates::PowerOfTwo unit(r.shift);
     for (int k = 0; k < 3; ++k) {
-        r.edge[k][0] = std::ldexp(r.edge[k][0], r.shift);
-        r.edge[k][1] = std::ldexp(r.edge[k][1], r.shift);
+        r.edge[k][0] = unit(r.edge[k][0]);
+        r.edge[k][1] = unit(r.edge[k][1]);
         r.length2[k] = r.edge[k][0] * r.edge[k][0] + r.edge[k][1] * r.edge[k][1];
     }
     // p2 - p0 = -edge[2].
@@ -73,11 +75,8 @@ ScaledTriangle scaled_triangle(const double* const p[3]) {
 double corner_radians(const double* o, const double* p, const double* q) {
     double ux = p[0] - o[0], uy = p[1] - o[1], wx = q[0] - o[0], wy = q[1] - o[1];
     const double largest = std::max({std::fabs(ux), std::fabs(uy), std::fabs(wx), std::fabs(wy)});
-    if (largest > 0 && std::isfinite(largest)) {
-        const int shift = -std::ilogb(largest);
-        ux = std::ldexp(ux, shift), uy = std::ldexp(uy, shift);
-        wx = std::ldexp(wx, shift), wy = std::ldexp(wy, shift);
-    }
+    const predicates::PowerOfTwo unit(predicates::unit_shift(largest));
+    ux = unit(ux), uy = unit(uy), wx = unit(wx), wy = unit(wy);
     return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
 }
 
@@ -322,7 +321,8 @@ void Refiner::evaluate(TriIdx t) {
                 }
             }
             if (cache_sizes_) edge_size_[e] = s;
-            const double scaled_size = std::ldexp(s, scaled.shift);  // in the scaled units
+            const double scaled_size =
+                predicates::PowerOfTwo(scaled.shift)(s);  // in the scaled units
             size_key = std::max(size_key, length2[k] / (scaled_size * scaled_size));
         }
     }

@@ -68,13 +68,16 @@ class SizeSampler {
     }
 
     /// The triangle (p, q, r) at the largest of the sizes sampled at its corners sp, sq, sr
-    /// and its centroid; split in four while those differ by more than a factor 2.
+    /// and its centroid; split in four while those differ by more than a factor 2 and the
+    /// triangle at the smallest of them would count for at least 2^-12 of the budget: only
+    /// such a triangle can move the estimate toward the budget, and splitting every graded
+    /// triangle resolved the whole size field (an airfoil's check cost as much as meshing it).
     double triangle(const std::array<double, 2>& p, const std::array<double, 2>& q,
                     const std::array<double, 2>& r, double sp, double sq, double sr, int depth) {
         const double sc = at((p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3);
         const double lo = std::min({sp, sq, sr, sc}), hi = std::max({sp, sq, sr, sc});
         if (hi > 2 * lo && depth < 12 && evaluations_ < kSplitEvaluations &&
-            total_ <= stop_above_) {
+            total_ <= stop_above_ && count_at(p, q, r, lo) >= 0x1p-12 * stop_above_) {
             auto mid = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
                 return std::array<double, 2>{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
             };
@@ -85,13 +88,18 @@ class SizeSampler {
                    triangle(rp, qr, r, srp, sqr, sr, depth + 1) +
                    triangle(pq, qr, rp, spq, sqr, srp, depth + 1);
         }
-        // Twice the area over hi^2, with the sides divided by hi first: no square of a
-        // coordinate (2^600 or 2^-600) is formed; an overflow means an enormous count.
-        const double ux = (q[0] - p[0]) / hi, uy = (q[1] - p[1]) / hi;
-        const double vx = (r[0] - p[0]) / hi, vy = (r[1] - p[1]) / hi;
-        double count = std::fabs(ux * vy - uy * vx) / (2 * kEquilateralArea);
-        if (std::isnan(count)) count = std::numeric_limits<double>::infinity();
-        return count;
+        return count_at(p, q, r, hi);
+    }
+
+    /// Equilateral triangles of side s in (p, q, r): twice the area over s^2, with the sides
+    /// divided by s first, so no square of a coordinate (2^600 or 2^-600) is formed; an
+    /// overflow means an enormous count.
+    static double count_at(const std::array<double, 2>& p, const std::array<double, 2>& q,
+                           const std::array<double, 2>& r, double s) {
+        const double ux = (q[0] - p[0]) / s, uy = (q[1] - p[1]) / s;
+        const double vx = (r[0] - p[0]) / s, vy = (r[1] - p[1]) / s;
+        const double count = std::fabs(ux * vy - uy * vx) / (2 * kEquilateralArea);
+        return std::isnan(count) ? std::numeric_limits<double>::infinity() : count;
     }
 
     void add(double count) { total_ += count; }

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -18,6 +19,7 @@
 #include "generators/size_smoothing_2d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/number_text.hpp"
+#include "predicates/power_of_two.hpp"
 
 namespace exactmesh::generators {
 
@@ -47,14 +49,14 @@ void require_exponent(double value, const std::string& what) {
 }
 
 /// Scale invariance: distances and radii are first scaled exactly by the power of two that
-/// brings the radius to [1, 2) (2^radius_shift), so that no square overflows or underflows and
-/// a size function scaled with its domain by a power of two gives the same values, scaled, bit
-/// for bit (and the values of unscaled inputs are those of the plain formula).
-int radius_shift(double radius) {
-    return std::isfinite(radius) && radius > 0 ? -std::ilogb(radius) : 0;
+/// brings the radius to [1, 2), so that no square overflows or underflows and a size function
+/// scaled with its domain by a power of two gives the same values, scaled, bit for bit (and the
+/// values of unscaled inputs are those of the plain formula).
+predicates::PowerOfTwo radius_unit(double radius) {
+    return predicates::PowerOfTwo(radius > 0 ? predicates::unit_shift(radius) : 0);
 }
 
-/// (d / radius)^exponent from the squared distance d2, both scaled by radius_shift.
+/// (d / radius)^exponent from the squared distance d2, both in the radius' unit (radius_unit).
 double growth(double d2, double radius, double exponent) {
     if (exponent == 2.0) return d2 / (radius * radius);
     if (exponent == 0.0) return 1.0;
@@ -64,18 +66,16 @@ double growth(double d2, double radius, double exponent) {
     return std::pow(ratio, exponent);
 }
 
-/// The squared distance from (x, y) to the segment, scaled by 2^(2 shift).
-double squared_distance_to_segment(double x, double y, const LineSource& l, int shift) {
+/// The squared distance from (x, y) to the segment, in the radius' unit, squared.
+double squared_distance_to_segment(double x, double y, const LineSource& l,
+                                   const predicates::PowerOfTwo& unit) {
     const double dx = l.x1 - l.x0, dy = l.y1 - l.y0;
-    const double sx = std::ldexp(dx, shift), sy = std::ldexp(dy, shift);
+    const double sx = unit(dx), sy = unit(dy);
     const double length2 = sx * sx + sy * sy;
     double t = 0.0;
     if (length2 > 0)
-        t = std::clamp(
-            (std::ldexp(x - l.x0, shift) * sx + std::ldexp(y - l.y0, shift) * sy) / length2, 0.0,
-            1.0);
-    const double ex = std::ldexp(x - (l.x0 + t * dx), shift),
-                 ey = std::ldexp(y - (l.y0 + t * dy), shift);
+        t = std::clamp((unit(x - l.x0) * sx + unit(y - l.y0) * sy) / length2, 0.0, 1.0);
+    const double ex = unit(x - (l.x0 + t * dx)), ey = unit(y - (l.y0 + t * dy));
     return ex * ex + ey * ey;
 }
 
@@ -183,14 +183,14 @@ double SizeFunction::evaluate(double x, double y) const {
     }
     double s = 0.0;
     for (const PointSource& p : points_) {
-        const int shift = radius_shift(p.radius);
-        const double dx = std::ldexp(x - p.x, shift), dy = std::ldexp(y - p.y, shift);
-        s += p.size * (1.0 + growth(dx * dx + dy * dy, std::ldexp(p.radius, shift), p.exponent));
+        const predicates::PowerOfTwo unit = radius_unit(p.radius);
+        const double dx = unit(x - p.x), dy = unit(y - p.y);
+        s += p.size * (1.0 + growth(dx * dx + dy * dy, unit(p.radius), p.exponent));
     }
     for (const LineSource& l : lines_) {
-        const int shift = radius_shift(l.radius);
-        s += l.size * (1.0 + growth(squared_distance_to_segment(x, y, l, shift),
-                                    std::ldexp(l.radius, shift), l.exponent));
+        const predicates::PowerOfTwo unit = radius_unit(l.radius);
+        s += l.size *
+             (1.0 + growth(squared_distance_to_segment(x, y, l, unit), unit(l.radius), l.exponent));
     }
     return std::min(s, cap_);
 }
