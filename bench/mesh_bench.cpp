@@ -27,11 +27,15 @@
 //  - Gmsh: a .geo of the same points and segments; a uniform size through its mesh-size options
 //    (Mesh.MeshSizeMin = Mesh.MeshSizeMax = h), a graded one as a background mesh (a .pos view of
 //    the size at the vertices of a Delaunay refinement of the domain's bounding box at the size,
-//    as a PostView background field: what `-bgm` and `Background Mesh View` set up), both
-//    compiled lookups and neither interpreted in the timed
-//    region; MeshSizeFromPoints, MeshSizeFromCurvature and MeshSizeExtendFromBoundary are off in
-//    both. Its label says which, with the background's triangle count and how closely its linear
-//    interpolation follows the size function.
+//    as a PostView background field: what `-bgm` and `Background Mesh View` set up), nothing
+//    interpreted in the timed region (the view is read with the .geo; each size query is an
+//    octree search in compiled code). EXACTMESH_MESH_BENCH_GMSH_SIZE=formula gives a graded size
+//    as before instead (MathEval of the source formula over sampled Distance fields, interpreted
+//    at every query), for comparison: on a busy 2-core machine the view was not cheaper for
+//    Gmsh (naca0012 at 10^5: about 450-490 ms against 390-460 ms, uniform domains of the same
+//    size about 410 ms). MeshSizeFromPoints, MeshSizeFromCurvature and
+//    MeshSizeExtendFromBoundary are off in every case. The label says which, with the
+//    background's triangle count and how closely its linear interpolation follows the size.
 // Timed: ours and CGAL everything from the PSLG to the finished mesh, in process (CPU time; the
 // previous iteration's mesh is destroyed with the timer paused, on both sides); Gmsh its own
 // "Done meshing 2D" CPU time (file reading, 1D meshing of the segments and writing excluded),
@@ -259,8 +263,7 @@ struct GmshSize {
 /// vertices, at the background's centroids and edge midpoints: a few percent, at the kink where
 /// the sources meet the cap (min(cap, sources) is concave there, so the view is below the size,
 /// never above it by more than the sources' own curvature allows).
-/// Interpreting a MathEval formula and sampling Distance fields at every size query would time
-/// Gmsh's field machinery instead of its meshing.
+/// EXACTMESH_MESH_BENCH_GMSH_SIZE=formula: the interpreted fields of write_gmsh_size_field.
 const GmshSize& gmsh_size(const Workload& w, const fs::path& dir) {
     static std::map<const Workload*, GmshSize> cache;
     if (const auto it = cache.find(&w); it != cache.end()) return it->second;

@@ -282,12 +282,15 @@ def gmsh_sizes(res, out):
     if not rows:
         return
     out.append("### How Gmsh is given the size\n")
-    out.append("Outside Gmsh's timed region, and compiled lookups only (no MathEval formula interpreted per "
-               "query): a uniform size through Mesh.MeshSizeMin = Mesh.MeshSizeMax; a graded one as a background "
-               "mesh, a .pos view of the size at the vertices of a Delaunay refinement of the domain's bounding "
-               "box at the size itself, as a PostView background field (the error is linear interpolation's, "
-               "largest at the kink where the sources meet the cap). MeshSizeFromPoints, MeshSizeFromCurvature "
-               "and MeshSizeExtendFromBoundary are off.\n")
+    out.append("Prepared outside Gmsh's timed region: a uniform size through Mesh.MeshSizeMin = "
+               "Mesh.MeshSizeMax (no size field at all); a graded one as a background mesh, a .pos view of the "
+               "size at the vertices of a Delaunay refinement of the domain's bounding box at the size itself, "
+               "as a PostView background field, looked up (compiled code, an octree search) at every size query "
+               "(the error is linear interpolation's, largest at the kink where the sources meet the cap); or, "
+               "with EXACTMESH_MESH_BENCH_GMSH_SIZE=formula, as MathEval of the source formula over sampled "
+               "Distance fields, interpreted at every query. MeshSizeFromPoints, MeshSizeFromCurvature and "
+               "MeshSizeExtendFromBoundary are off. The table says which each domain got; on a graded domain "
+               "Gmsh's time includes its size lookups either way, where ours evaluates the compiled formula.\n")
     out.append(table(["domain", "target", "size input (both Gmsh algorithms)"], rows))
     out.append("")
 
