@@ -15,9 +15,13 @@
 //
 // The heap is kept warm (malloc never returns memory to the kernel), as in delaunay2d_bench,
 // unless EXACTMESH_BENCH_COLD_HEAP=1. On a shared machine compare the CPU column: it counts only
-// this process's time. The ratio reported in the README comes from
-//   delaunay3d_bench --benchmark_filter='uniform/1000000' --benchmark_repetitions=3
+// this process's time. The ratios reported in the README (uniform and Gaussian, 10^6 points)
+// come from
+//   delaunay3d_bench --benchmark_filter='(bowyer_watson|cgal)/(uniform|gaussian)/1000000$'
+//                    --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true
 //                    --benchmark_report_aggregates_only=true
+// (the README's command; scripts/run runs every algorithm and size with the same repetitions
+// and interleaving, keeping the individual repetitions for its report).
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 

@@ -3,28 +3,52 @@
 // against CGAL's Delaunay_mesher_2 (with EXACTMESH_WITH_CGAL) and Gmsh's Delaunay and
 // Frontal-Delaunay algorithms (the `gmsh` program, when found), same run, same domains, same
 // size function [Ruppert95, Shewchuk02, Rebay93, Mavriplis97; DESIGN.md "Benchmarks and
-// reports"; issue 6].
+// reports"; issues 6 and 11].
 //
 // Names: BM_mesh/<mesher>/<domain>/<angle>/<target triangles>; mesher is a registry name, `cgal`,
-// `gmsh-delaunay` or `gmsh-frontal`; angle the minimum-angle bound given (20.7, the proven one,
-// and 30 at 10^5 for delaunay-refinement and CGAL, whose shape bound is sin^2 of it), `none` for
-// meshers without an angle criterion. Domains: the built-in sample domains
-// (generators/sample_domains), each with its own size function scaled by a constant so that
-// Delaunay refinement makes about the target number of triangles (10^4, 10^5, 10^6; the largest
-// is capped by EXACTMESH_MESH_BENCH_MAX_TRIANGLES). The boundary is discretized by that size
-// once, outside the timed loop, and every mesher gets the same PSLG and size function: CGAL
-// through Delaunay_mesh_size_criteria_2 evaluating it at edge midpoints as ours does
-// (tests/support/cgal_mesh_2d.hpp), Gmsh through a .geo of the same points and segments with a
-// background field equal to it (Distance fields to the sources, MathEval of the source formula,
-// Min with the cap).
-// Timed: ours and CGAL everything from the PSLG to the finished mesh, in process (CPU time);
-// Gmsh its own "Done meshing 2D" CPU time (file reading, 1D meshing of the segments and writing
-// excluded), reported as manual time. One iteration per repetition, 3 repetitions.
+// `gmsh-delaunay` or `gmsh-frontal`. <angle> is the minimum-angle bound given, in like-for-like
+// pairs of Delaunay refinement and CGAL:
+//   delaunay-refinement  <t>        bound t, polish off (polish_angle 0)
+//                        <t>p<P>    bound t, then its polish to P = min(t + 10, 32) (the default)
+//   cgal                 <t>, <P>   CGAL's bound t or P (sin^2 of it is its shape bound)
+// with t = 20.7 (the proven bound) at every target and t = 30 at 10^5 (and a quick target), so
+// "ours <t> vs cgal <t>" compares the refinements and "ours <t>p<P> vs cgal <P>" the polished mesh
+// with CGAL asked for the angle the polish aims at; `none` for meshers without an angle criterion.
+// Domains: the built-in sample domains (generators/sample_domains), each with its own size function
+// scaled by a constant so that Delaunay refinement (default options) makes about the target number
+// of triangles (10^4, 10^5, 10^6; the largest is capped by EXACTMESH_MESH_BENCH_MAX_TRIANGLES, and
+// a cap below 10^4 is the only target: a quick check of the pipeline). The boundary is discretized
+// by that size once, outside the timed loop, and every mesher gets the same PSLG and size function:
+//  - ours: the SizeFunction (Delaunay refinement keeps the size at each edge's midpoint per
+//    half-edge while its triangles live);
+//  - CGAL: Delaunay_mesh_size_criteria_2 when the size is uniform, else the same criteria with
+//    the size function at edge midpoints, memoized per edge in the faces as ours
+//    (tests/support/cgal_mesh_2d.hpp), so both pay the same for the size function;
+//  - Gmsh: a .geo of the same points and segments; a uniform size through its mesh-size options
+//    (Mesh.MeshSizeMin = Mesh.MeshSizeMax = h), a graded one as a background mesh (a .pos view of
+//    the size at the vertices of a Delaunay refinement of the domain's bounding box at the size,
+//    as a PostView background field: what `-bgm` and `Background Mesh View` set up), nothing
+//    interpreted in the timed region (the view is read with the .geo; each size query is an
+//    octree search in compiled code). EXACTMESH_MESH_BENCH_GMSH_SIZE=formula gives a graded size
+//    as before instead (MathEval of the source formula over sampled Distance fields, interpreted
+//    at every query), for comparison: on a busy 2-core machine the view was not cheaper for
+//    Gmsh (naca0012 at 10^5: about 450-490 ms against 390-460 ms, uniform domains of the same
+//    size about 410 ms). MeshSizeFromPoints, MeshSizeFromCurvature and
+//    MeshSizeExtendFromBoundary are off in every case. The label says which, with the
+//    background's triangle count and how closely its linear interpolation follows the size.
+// Timed: ours and CGAL everything from the PSLG to the finished mesh, in process (CPU time; the
+// previous iteration's mesh is destroyed with the timer paused, on both sides); Gmsh its own
+// "Done meshing 2D" CPU time (file reading, 1D meshing of the segments and writing excluded),
+// reported as manual time. Each repetition runs iterations for at least
+// EXACTMESH_MESH_BENCH_MIN_TIME seconds (default 0.5: a 10^4 mesh takes 6-30 ms, one iteration
+// is noise) and there are EXACTMESH_MESH_BENCH_REPETITIONS repetitions (default 5), reported
+// individually (the report takes medians and the spread); run with
+// --benchmark_enable_random_interleaving=true so that a burst of load spreads over all meshers.
 //
 // Counters: triangles, items_per_second (triangles per second), min_angle, mean_min_angle
 // (mean of the triangles' smallest angles), max_size_ratio / median_size_ratio (edge length over
 // the size at its midpoint), angle_hist_<k> (fraction of corners in [10k, 10k + 10) degrees),
-// and the generator's own counters (steiner_points etc.).
+// and the generator's own counters (steiner_points etc.), all of the last iteration's mesh.
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -112,24 +136,31 @@ void report_quality(benchmark::State& state, std::span<const double> xy,
     }
 }
 
+/// polish: Delaunay refinement's polish angle (0: off; ignored by the other generators).
 void BM_mesh_generator(benchmark::State& state, const gen::MeshGenerator2* generator,
-                       gen::SampleDomain d, double angle) {
+                       gen::SampleDomain d, double angle, double polish) {
     const Workload& w = workload(d, state.range(0));
     gen::MeshOptions2 options;
     options.min_angle = angle;
+    options.polish_angle = polish;
     options.size = w.size;
     gen::MeshRun2 run;
     for (auto _ : state) {
+        gen::MeshRun2 next;
         try {
-            run = generator->run(w.view(), options);
+            next = generator->run(w.view(), options);
         } catch (const std::exception& error) {
             state.SkipWithError(error.what());
             return;
         }
+        state.PauseTiming();
+        run = std::move(next);  // frees the previous mesh untimed, as for CGAL
+        state.ResumeTiming();
     }
     report_quality(state, run.mesh.mesh.xy, run.mesh.mesh.triangles, w.size);
     for (const auto& [name, value] : run.counters) {
-        if (name == "steiner_points" || name == "points_inserted" || name == "new_points") {
+        if (name == "steiner_points" || name == "points_inserted" || name == "new_points" ||
+            name == "polish_points") {
             state.counters[name] = static_cast<double>(value);
         }
     }
@@ -138,25 +169,27 @@ void BM_mesh_generator(benchmark::State& state, const gen::MeshGenerator2* gener
 #if defined(EXACTMESH_WITH_CGAL)
 void BM_mesh_cgal(benchmark::State& state, gen::SampleDomain d, double angle) {
     const Workload& w = workload(d, state.range(0));
-    tri::Triangulation2 flat;
+    exactmesh::testing::CgalMesh last;
     for (auto _ : state) {
         auto mesh = exactmesh::testing::cgal_delaunay_mesh_2d(w.pslg.xy, w.pslg.segments,
                                                               w.pslg.holes, angle, w.size);
         state.PauseTiming();
-        std::vector<std::uint32_t> pieces;
-        flat = exactmesh::testing::cgal_mesh_triangulation(mesh, pieces);
-        { auto drop = std::move(mesh); }
+        last = std::move(mesh);  // frees the previous mesh untimed
         state.ResumeTiming();
     }
+    std::vector<std::uint32_t> pieces;
+    const tri::Triangulation2 flat = exactmesh::testing::cgal_mesh_triangulation(last, pieces);
     report_quality(state, flat.xy, flat.triangles, w.size);
 }
 #endif
 
 // ---- Gmsh as a process -------------------------------------------------------------------
 
-/// The size function as Gmsh fields: Distance fields to each source, one MathEval of the source
-/// formula, Min with the cap; the whole times the factor. Returns the background field's
-/// number, or 0 when the size is of a kind Gmsh cannot be given (analytic).
+/// The size function as interpreted Gmsh fields (EXACTMESH_MESH_BENCH_GMSH_SIZE=formula, for
+/// comparison: what this bench gave Gmsh before issue 11): Distance fields to each source
+/// (sampled, 4000 points per line), one MathEval of the source formula, Min with the cap; the
+/// whole times the factor. Returns the background field's number, or 0 when the size is of a
+/// kind Gmsh cannot be given this way (analytic).
 int write_gmsh_size_field(std::ostream& geo, const gen::SizeFunction& size, int first_point,
                           int first_line) {
     char buffer[1024];
@@ -216,10 +249,108 @@ int write_gmsh_size_field(std::ostream& geo, const gen::SizeFunction& size, int 
     return min;
 }
 
+/// How Gmsh is given the size: .geo lines (after the surface) and a one-line description.
+struct GmshSize {
+    std::string geo;
+    std::string label;
+};
+
+/// The size function as Gmsh input, outside its timed region: a uniform size by its mesh-size
+/// options; any other as a background mesh, a .pos view (written into dir once per workload) of
+/// the size at the vertices of our Delaunay refinement of the PSLG's bounding box (2% margin) at
+/// the size itself: edges as long as the mesh's, so the view resolves the size as finely as the
+/// mesh can. The label gives the largest relative error of linear interpolation between the
+/// vertices, at the background's centroids and edge midpoints: a few percent, at the kink where
+/// the sources meet the cap (min(cap, sources) is concave there, so the view is below the size,
+/// never above it by more than the sources' own curvature allows).
+/// EXACTMESH_MESH_BENCH_GMSH_SIZE=formula: the interpreted fields of write_gmsh_size_field.
+const GmshSize& gmsh_size(const Workload& w, const fs::path& dir) {
+    static std::map<const Workload*, GmshSize> cache;
+    if (const auto it = cache.find(&w); it != cache.end()) return it->second;
+    char buffer[512];
+    GmshSize out;
+    if (w.size.is_uniform()) {
+        const double h = w.size(0, 0);
+        std::snprintf(buffer, sizeof buffer,
+                      "Mesh.MeshSizeMin = %.17g;\nMesh.MeshSizeMax = %.17g;\n", h, h);
+        out.geo = buffer;
+        out.label = "uniform: Mesh.MeshSizeMin = Mesh.MeshSizeMax";
+        return cache.emplace(&w, std::move(out)).first->second;
+    }
+    if (const char* how = std::getenv("EXACTMESH_MESH_BENCH_GMSH_SIZE");
+        how != nullptr && std::string(how) == "formula") {
+        std::ostringstream geo;
+        geo.precision(17);
+        const auto n = static_cast<int>(w.pslg.xy.size() / 2);
+        const auto m = static_cast<int>(w.pslg.segments.size() / 2);
+        if (write_gmsh_size_field(geo, w.size, n + 1, m + 1) == 0) {
+            throw std::runtime_error("this size function cannot be given to Gmsh as a formula");
+        }
+        out.geo = geo.str();
+        out.label = "formula: MathEval of the source formula over sampled Distance fields";
+        return cache.emplace(&w, std::move(out)).first->second;
+    }
+    const auto& xy = w.pslg.xy;
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (std::size_t v = 0; v + 1 < xy.size(); v += 2) {
+        x0 = std::min(x0, xy[v]), x1 = std::max(x1, xy[v]);
+        y0 = std::min(y0, xy[v + 1]), y1 = std::max(y1, xy[v + 1]);
+    }
+    const double margin = 0.02 * std::max(x1 - x0, y1 - y0);
+    x0 -= margin, x1 += margin, y0 -= margin, y1 += margin;
+    const std::vector<double> box{x0, y0, x1, y0, x1, y1, x0, y1};
+    const std::vector<tri::VertIdx> sides{0, 1, 1, 2, 2, 3, 3, 0};
+    gen::RefinementOptions2 options;
+    options.size = w.size;
+    options.polish_angle = 0;
+    const tri::Triangulation2 bg =
+        gen::delaunay_refinement_2d(tri::Pslg{box, sides, {}, {}}, options).mesh.mesh;
+    std::vector<double> at(bg.xy.size() / 2);
+    for (std::size_t v = 0; v < at.size(); ++v) at[v] = w.size(bg.xy[2 * v], bg.xy[2 * v + 1]);
+    double worst = 0;
+    auto check = [&](double x, double y, double interpolated) {
+        const double s = w.size(x, y);
+        worst = std::max(worst, std::abs(interpolated - s) / s);
+    };
+    for (std::size_t t = 0; t < bg.triangles.size(); t += 3) {
+        const tri::VertIdx v[3] = {bg.triangles[t], bg.triangles[t + 1], bg.triangles[t + 2]};
+        check((bg.xy[2 * v[0]] + bg.xy[2 * v[1]] + bg.xy[2 * v[2]]) / 3,
+              (bg.xy[2 * v[0] + 1] + bg.xy[2 * v[1] + 1] + bg.xy[2 * v[2] + 1]) / 3,
+              (at[v[0]] + at[v[1]] + at[v[2]]) / 3);
+        for (int k = 0; k < 3; ++k) {
+            const tri::VertIdx p = v[k], q = v[(k + 1) % 3];
+            check(0.5 * (bg.xy[2 * p] + bg.xy[2 * q]), 0.5 * (bg.xy[2 * p + 1] + bg.xy[2 * q + 1]),
+                  0.5 * (at[p] + at[q]));
+        }
+    }
+    const fs::path pos = dir / ("size_" + std::to_string(cache.size()) + ".pos");
+    std::ofstream file(pos);
+    file << "View \"size\" {\n";
+    for (std::size_t t = 0; t < bg.triangles.size(); t += 3) {
+        const tri::VertIdx v[3] = {bg.triangles[t], bg.triangles[t + 1], bg.triangles[t + 2]};
+        std::snprintf(buffer, sizeof buffer,
+                      "ST(%.17g,%.17g,0,%.17g,%.17g,0,%.17g,%.17g,0){%.17g,%.17g,%.17g};\n",
+                      bg.xy[2 * v[0]], bg.xy[2 * v[0] + 1], bg.xy[2 * v[1]], bg.xy[2 * v[1] + 1],
+                      bg.xy[2 * v[2]], bg.xy[2 * v[2] + 1], at[v[0]], at[v[1]], at[v[2]]);
+        file << buffer;
+    }
+    file << "};\n";
+    if (!file) throw std::runtime_error("cannot write " + pos.string());
+    out.geo = "Merge \"" + pos.string() +
+              "\";\nField[1] = PostView;\nField[1].ViewIndex = 0;\n"
+              "Background Field = 1;\n";
+    std::snprintf(buffer, sizeof buffer,
+                  "background mesh: .pos view of %zu triangles, interpolation within %.1f%% of "
+                  "the size",
+                  bg.triangles.size() / 3, 100 * worst);
+    out.label = buffer;
+    return cache.emplace(&w, std::move(out)).first->second;
+}
+
 /// A .geo of the PSLG: one Point per vertex, one Line per segment, one Curve Loop per closed
 /// chain of segments (the sample domains are closed loops), the loop with the largest bounding
-/// box the outer one, the others holes; the size as a background field.
-std::string gmsh_geo(const Workload& w, int algorithm) {
+/// box the outer one, the others holes; the size as gmsh_size gives it.
+std::string gmsh_geo(const Workload& w, const GmshSize& size, int algorithm) {
     const auto& xy = w.pslg.xy;
     const auto& seg = w.pslg.segments;
     const std::size_t n = xy.size() / 2, m = seg.size() / 2;
@@ -279,9 +410,7 @@ std::string gmsh_geo(const Workload& w, int algorithm) {
     geo << "Plane Surface(1) = {";
     for (std::size_t k = 0; k < order.size(); ++k) geo << (k ? ", " : "") << k + 1;
     geo << "};\n";
-    if (write_gmsh_size_field(geo, w.size, static_cast<int>(n + 1), static_cast<int>(m + 1)) == 0) {
-        throw std::runtime_error("this size function cannot be given to Gmsh");
-    }
+    geo << size.geo;
     geo << "Mesh.MeshSizeExtendFromBoundary = 0;\nMesh.MeshSizeFromPoints = 0;\n"
            "Mesh.MeshSizeFromCurvature = 0;\nMesh.Algorithm = "
         << algorithm << ";\n";
@@ -336,20 +465,35 @@ void read_msh2(const fs::path& file, GmshMesh& mesh) {
     }
 }
 
-/// Runs `gmsh` on the workload (algorithm 5: Delaunay, 6: Frontal-Delaunay), one thread.
-GmshMesh run_gmsh(const Workload& w, int algorithm) {
+/// The directory of Gmsh's files (removed by main at the end).
+const fs::path& gmsh_dir() {
     static const fs::path dir = [] {
         fs::path d =
             fs::temp_directory_path() / ("exactmesh_mesh_bench_" + std::to_string(getpid()));
         fs::create_directories(d);
         return d;
     }();
+    return dir;
+}
+bool gmsh_dir_used = false;
+
+/// Runs `gmsh` on the workload (algorithm 5: Delaunay, 6: Frontal-Delaunay), one thread.
+GmshMesh run_gmsh(const Workload& w, const GmshSize& size, int algorithm) {
+    const fs::path& dir = gmsh_dir();
     const fs::path geo = dir / "domain.geo", msh = dir / "domain.msh", log = dir / "gmsh.log";
-    std::ofstream(geo) << gmsh_geo(w, algorithm);
+    std::ofstream(geo) << gmsh_geo(w, size, algorithm);
     const std::string command = "gmsh '" + geo.string() + "' -2 -nt 1 -format msh2 -o '" +
                                 msh.string() + "' -v 4 > '" + log.string() + "' 2>&1";
-    if (std::system(command.c_str()) != 0)
-        throw std::runtime_error("gmsh failed (see " + log.string() + ")");
+    if (std::system(command.c_str()) != 0) {
+        // The directory goes at exit: the message carries the log's last error lines.
+        std::ifstream text(log);
+        std::string line, errors;
+        while (std::getline(text, line)) {
+            if (line.find("Error") != std::string::npos)
+                errors += (errors.empty() ? "" : " | ") + line;
+        }
+        throw std::runtime_error("gmsh failed: " + errors.substr(0, 600));
+    }
     GmshMesh mesh;
     std::ifstream text(log);
     std::string line;
@@ -375,9 +519,18 @@ bool have_gmsh() {
 void BM_mesh_gmsh(benchmark::State& state, int algorithm, gen::SampleDomain d) {
     const Workload& w = workload(d, state.range(0));
     GmshMesh mesh;
+    gmsh_dir_used = true;
+    const GmshSize* size = nullptr;
+    try {
+        size = &gmsh_size(w, gmsh_dir());
+    } catch (const std::exception& error) {
+        state.SkipWithError(error.what());
+        return;
+    }
+    state.SetLabel("size: " + size->label);
     for (auto _ : state) {
         try {
-            mesh = run_gmsh(w, algorithm);
+            mesh = run_gmsh(w, *size, algorithm);
         } catch (const std::exception& error) {
             state.SkipWithError(error.what());
             return;
@@ -387,39 +540,67 @@ void BM_mesh_gmsh(benchmark::State& state, int algorithm, gen::SampleDomain d) {
     report_quality(state, mesh.xy, mesh.triangles, w.size);
 }
 
-std::int64_t max_triangles() {
-    const char* text = std::getenv("EXACTMESH_MESH_BENCH_MAX_TRIANGLES");
-    return text ? std::atoll(text) : 1000000;
+double env_number(const char* name, double fallback) {
+    const char* text = std::getenv(name);
+    return text ? std::atof(text) : fallback;
+}
+
+std::string angle_name(double angle) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", angle);
+    return text;
 }
 
 void register_all() {
     const bool gmsh = have_gmsh();
+    const auto max_triangles =
+        static_cast<std::int64_t>(env_number("EXACTMESH_MESH_BENCH_MAX_TRIANGLES", 1e6));
+    const double min_time = env_number("EXACTMESH_MESH_BENCH_MIN_TIME", 0.5);
+    const int repetitions = static_cast<int>(env_number("EXACTMESH_MESH_BENCH_REPETITIONS", 5));
     for (const gen::SampleDomain d : gen::kAllSampleDomains) {
         const std::string domain(gen::sample_domain_name(d));
+        // A cap below 10^4 is itself the only target (a quick check of the whole pipeline).
+        std::vector<std::int64_t> targets;
         for (const std::int64_t target : {10000, 100000, 1000000}) {
-            if (target > max_triangles()) continue;
+            if (target <= max_triangles) targets.push_back(target);
+        }
+        if (targets.empty() && max_triangles > 0) targets.push_back(max_triangles);
+        for (const std::int64_t target : targets) {
             auto configure = [&](benchmark::internal::Benchmark* b) {
-                b->Arg(target)->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(false)->Unit(
-                    benchmark::kMillisecond);
+                b->Arg(target)
+                    ->MinTime(min_time)
+                    ->Repetitions(repetitions)
+                    ->ReportAggregatesOnly(false)
+                    ->Unit(benchmark::kMillisecond);
                 return b;
             };
+            // The angle bounds of the like-for-like pairs (see the names above).
+            std::vector<double> bounds{gen::kGuaranteedMinAngle};
+            if (target == 100000 || target < 10000) bounds.push_back(30.0);
             for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) {
-                const bool angled = g.name == "delaunay-refinement";
-                for (const double angle : {20.7, 30.0}) {
-                    if (angle == 30.0 && (!angled || target != 100000)) continue;
-                    char name[160];
-                    std::snprintf(name, sizeof name, "BM_mesh/%s/%s/%s",
-                                  std::string(g.name).c_str(), domain.c_str(),
-                                  angled ? (angle == 30.0 ? "30" : "20.7") : "none");
-                    configure(benchmark::RegisterBenchmark(name, BM_mesh_generator, &g, d, angle));
+                const std::string prefix = "BM_mesh/" + std::string(g.name) + "/" + domain + "/";
+                if (g.name != "delaunay-refinement") {
+                    configure(benchmark::RegisterBenchmark((prefix + "none").c_str(),
+                                                           BM_mesh_generator, &g, d,
+                                                           gen::kGuaranteedMinAngle, -1.0));
+                    continue;
+                }
+                for (const double angle : bounds) {
+                    const double polish = std::min(gen::kMaxPolishAngle, angle + 10);
+                    configure(benchmark::RegisterBenchmark((prefix + angle_name(angle)).c_str(),
+                                                           BM_mesh_generator, &g, d, angle, 0.0));
+                    configure(benchmark::RegisterBenchmark(
+                        (prefix + angle_name(angle) + "p" + angle_name(polish)).c_str(),
+                        BM_mesh_generator, &g, d, angle, polish));
                 }
             }
 #if defined(EXACTMESH_WITH_CGAL)
-            for (const double angle : {20.7, 30.0}) {
-                if (angle == 30.0 && target != 100000) continue;
-                const std::string name =
-                    "BM_mesh/cgal/" + domain + (angle == 30.0 ? "/30" : "/20.7");
-                configure(benchmark::RegisterBenchmark(name.c_str(), BM_mesh_cgal, d, angle));
+            for (const double angle : bounds) {
+                const double polish = std::min(gen::kMaxPolishAngle, angle + 10);
+                for (const double bound : {angle, polish}) {
+                    const std::string name = "BM_mesh/cgal/" + domain + "/" + angle_name(bound);
+                    configure(benchmark::RegisterBenchmark(name.c_str(), BM_mesh_cgal, d, bound));
+                }
             }
 #endif
             if (gmsh) {
@@ -445,5 +626,9 @@ int main(int argc, char** argv) {
     benchmark::AddCustomContext("exactmesh_build_type", EXACTMESH_BENCH_BUILD_TYPE);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
+    if (gmsh_dir_used) {
+        std::error_code ignored;
+        fs::remove_all(gmsh_dir(), ignored);
+    }
     return 0;
 }
