@@ -41,6 +41,7 @@
 #include <utility>
 #include <vector>
 
+#include "generators/graded_boundary_size_2d.hpp"
 #include "generators/mesh_generators_2d.hpp"
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
@@ -387,6 +388,28 @@ void BM_mesh_gmsh(benchmark::State& state, int algorithm, gen::SampleDomain d) {
     report_quality(state, mesh.xy, mesh.triangles, w.size);
 }
 
+/// Issue 11's plain input: a polygon of 10^4 vertices cos/sin(2 pi k / 10^4), meshed as
+/// `exactmesh mesh circ.poly` does without --size: Delaunay refinement with none, the other
+/// generators with the graded default (generators/graded_boundary_size_2d.hpp), built inside the
+/// timed region as the command does. Name: BM_mesh/<mesher>/near-circle-10000/default.
+void BM_mesh_near_circle(benchmark::State& state, const gen::MeshGenerator2* generator) {
+    std::vector<double> xy;
+    std::vector<std::uint32_t> segments;
+    for (std::uint32_t k = 0; k < 10000; ++k) {
+        const double t = 2 * 3.14159265358979323846 * k / 10000;
+        xy.insert(xy.end(), {std::cos(t), std::sin(t)});
+        segments.insert(segments.end(), {k, (k + 1) % 10000});
+    }
+    const tri::Pslg pslg{xy, segments, {}, {}};
+    gen::MeshOptions2 options;
+    gen::MeshRun2 run;
+    for (auto _ : state) {
+        if (generator->needs_size) options.size = gen::graded_size_from_boundary(pslg);
+        run = generator->run(pslg, options);
+    }
+    report_quality(state, run.mesh.mesh.xy, run.mesh.mesh.triangles, options.size);
+}
+
 std::int64_t max_triangles() {
     const char* text = std::getenv("EXACTMESH_MESH_BENCH_MAX_TRIANGLES");
     return text ? std::atoll(text) : 1000000;
@@ -433,6 +456,14 @@ void register_all() {
                     ->UseManualTime();
             }
         }
+    }
+    for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) {
+        benchmark::RegisterBenchmark(
+            ("BM_mesh/" + std::string(g.name) + "/near-circle-10000/default").c_str(),
+            BM_mesh_near_circle, &g)
+            ->Iterations(1)
+            ->Repetitions(3)
+            ->Unit(benchmark::kMillisecond);
     }
 }
 
