@@ -10,7 +10,9 @@
 // Delaunay construction included, a negligible share), n = 2^7 ... 2^12, fitted against
 // N^2 log N (the paper's bound) with a user complexity. Distributions: uniform in the unit
 // square, and `disk`: uniform in the unit disk with 1/8 of the points on its circle (a hull with
-// no nearly straight corner, so that the largest angle sits inside and many cuts happen).
+// no nearly straight corner, so that the largest angle sits inside and many cuts happen);
+// edge cutting also on `circle`: n points cos/sin(2 pi k / n), where every ear has the same
+// angle up to rounding and cuts succeed or fail on near-ties (issue 11: 400 points took 28 s).
 // Counters (first timed run): swaps/pt, tested/pt; insertions/pt, candidates/pt, visited/pt.
 // The fitted exponent: the slope of log(real_time) on log(n) over the JSON, e.g.
 //   edge_swap_bench --benchmark_format=json > swap.json
@@ -37,16 +39,23 @@ namespace {
 namespace tri = exactmesh::triangulation;
 constexpr std::uint64_t kSeed = 20240611;
 
-enum class Points { Uniform, Disk };
+enum class Points { Uniform, Disk, Circle };
 
 std::vector<double> make_points(Points kind, std::uint32_t n) {
     if (kind == Points::Uniform) {
-        return exactmesh::generators::generate_points_2d(exactmesh::generators::Distribution::Uniform,
-                                                         n, kSeed);
+        return exactmesh::generators::generate_points_2d(
+            exactmesh::generators::Distribution::Uniform, n, kSeed);
+    }
+    std::vector<double> xy;
+    if (kind == Points::Circle) {
+        for (std::uint32_t k = 0; k < n; ++k) {
+            const double angle = 2 * 3.14159265358979323846 * k / n;
+            xy.insert(xy.end(), {std::cos(angle), std::sin(angle)});
+        }
+        return xy;
     }
     std::mt19937_64 rng(kSeed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::vector<double> xy;
     const std::uint32_t on_circle = std::max<std::uint32_t>(8, n / 8);
     for (std::uint32_t i = 0; i < on_circle; ++i) {
         const double angle = 2 * 3.14159265358979323846 * (i + 0.5 * unit(rng)) / on_circle;
@@ -73,7 +82,8 @@ const tri::Triangulation2& sweep_start(Points kind, std::uint32_t n) {
     const auto key = std::make_pair(static_cast<int>(kind), n);
     auto it = cache.find(key);
     if (it == cache.end()) {
-        it = cache.emplace(key, exactmesh::testing::sweep_triangulation_2d(make_points(kind, n))).first;
+        it = cache.emplace(key, exactmesh::testing::sweep_triangulation_2d(make_points(kind, n)))
+                 .first;
     }
     return it->second;
 }
@@ -135,15 +145,15 @@ double n2_log_n(benchmark::IterationCount n) {
 }
 
 void register_all() {
-    const std::pair<Points, const char*> kinds[] = {{Points::Uniform, "uniform"}, {Points::Disk, "disk"}};
+    const std::pair<Points, const char*> kinds[] = {{Points::Uniform, "uniform"},
+                                                    {Points::Disk, "disk"}};
     for (const auto& [kind, name] : kinds) {
         const std::string suffix = std::string("/") + name;
         auto swap_family = [&](const std::string& family, auto criterion) {
             const Points k = kind;
-            benchmark::RegisterBenchmark(("BM_swap_" + family + suffix).c_str(),
-                                         [k, criterion](benchmark::State& state) {
-                                             swap_benchmark(state, k, criterion);
-                                         })
+            benchmark::RegisterBenchmark(
+                ("BM_swap_" + family + suffix).c_str(),
+                [k, criterion](benchmark::State& state) { swap_benchmark(state, k, criterion); })
                 ->RangeMultiplier(2)
                 ->Range(1 << 10, 1 << 14)
                 ->Unit(benchmark::kMillisecond)
@@ -157,7 +167,8 @@ void register_all() {
         swap_family("data_jnd", tri::DataDependent{{}, tri::DataCost::JumpInNormalDerivatives});
         const Points k = kind;
         for (const bool from_sweep : {true, false}) {
-            const std::string family = from_sweep ? "BM_edge_cutting_from_sweep" : "BM_edge_cutting_from_delaunay";
+            const std::string family =
+                from_sweep ? "BM_edge_cutting_from_sweep" : "BM_edge_cutting_from_delaunay";
             benchmark::RegisterBenchmark((family + suffix).c_str(),
                                          [k, from_sweep](benchmark::State& state) {
                                              edge_cutting_benchmark(state, k, from_sweep);
@@ -168,6 +179,13 @@ void register_all() {
                 ->Complexity(n2_log_n);
         }
     }
+    benchmark::RegisterBenchmark(
+        "BM_edge_cutting_from_delaunay/circle",
+        [](benchmark::State& state) { edge_cutting_benchmark(state, Points::Circle, false); })
+        ->RangeMultiplier(2)
+        ->Range(1 << 7, 1 << 12)
+        ->Unit(benchmark::kMillisecond)
+        ->Complexity(n2_log_n);
 }
 
 }  // namespace

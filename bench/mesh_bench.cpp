@@ -65,6 +65,7 @@
 #include <utility>
 #include <vector>
 
+#include "generators/graded_boundary_size_2d.hpp"
 #include "generators/mesh_generators_2d.hpp"
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
@@ -551,6 +552,28 @@ std::string angle_name(double angle) {
     return text;
 }
 
+/// Issue 11's plain input: a polygon of 10^4 vertices cos/sin(2 pi k / 10^4), meshed as
+/// `exactmesh mesh circ.poly` does without --size: Delaunay refinement with none, the other
+/// generators with the graded default (generators/graded_boundary_size_2d.hpp), built inside the
+/// timed region as the command does. Name: BM_mesh/<mesher>/near-circle-10000/default.
+void BM_mesh_near_circle(benchmark::State& state, const gen::MeshGenerator2* generator) {
+    std::vector<double> xy;
+    std::vector<std::uint32_t> segments;
+    for (std::uint32_t k = 0; k < 10000; ++k) {
+        const double t = 2 * 3.14159265358979323846 * k / 10000;
+        xy.insert(xy.end(), {std::cos(t), std::sin(t)});
+        segments.insert(segments.end(), {k, (k + 1) % 10000});
+    }
+    const tri::Pslg pslg{xy, segments, {}, {}};
+    gen::MeshOptions2 options;
+    gen::MeshRun2 run;
+    for (auto _ : state) {
+        if (generator->needs_size) options.size = gen::graded_size_from_boundary(pslg);
+        run = generator->run(pslg, options);
+    }
+    report_quality(state, run.mesh.mesh.xy, run.mesh.mesh.triangles, options.size);
+}
+
 void register_all() {
     const bool gmsh = have_gmsh();
     const auto max_triangles =
@@ -614,6 +637,15 @@ void register_all() {
                     ->UseManualTime();
             }
         }
+    }
+    for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) {
+        benchmark::RegisterBenchmark(
+            ("BM_mesh/" + std::string(g.name) + "/near-circle-10000/default").c_str(),
+            BM_mesh_near_circle, &g)
+            ->MinTime(min_time)
+            ->Repetitions(repetitions)
+            ->ReportAggregatesOnly(false)
+            ->Unit(benchmark::kMillisecond);
     }
 }
 

@@ -17,6 +17,7 @@
 #include "cli/output.hpp"
 #include "cli/size_expression.hpp"
 #include "generators/domain_boundary_2d.hpp"
+#include "generators/graded_boundary_size_2d.hpp"
 #include "generators/laplacian_smoothing_2d.hpp"
 #include "generators/mesh_generators_2d.hpp"
 #include "generators/quality_2d.hpp"
@@ -150,13 +151,13 @@ void run_mesh(const MeshArguments& arguments) {
 
     predicates::reset_thread_stats();
     const auto start = std::chrono::steady_clock::now();
-    // A generator that needs a size and was given none takes the input's own spacing (timed:
-    // it is part of the construction).
+    // A generator that needs a size and was given none takes the input's own spacing at its
+    // vertices, graded away from them (timed: it is part of the construction).
     const std::string file =
         arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
     if (generator.needs_size && !size.bounded()) {
-        size = locating_mark_points(poly, file,
-                                    [&] { return gen::size_from_boundary(pslg, options.cdt); });
+        size = locating_mark_points(
+            poly, file, [&] { return gen::graded_size_from_boundary(pslg, options.cdt); });
         options.size = size;
     }
     const gen::MeshRun2 result =
@@ -259,7 +260,11 @@ void add_mesh_command(CLI::App& app) {
                      "'point X Y S RBAR GAMMA', 'line X0 Y0 X1 Y1 S RBAR GAMMA' (source formula "
                      "s = min(H, sum s_k [1 + (d_k / rbar_k)^gamma_k])); or an expression in x and "
                      "y (muParser: + - * / ^ sqrt exp log sin cos abs min max _pi), e.g. "
-                     "'0.01 + 0.1 * sqrt(x^2 + y^2)'")
+                     "'0.01 + 0.1 * sqrt(x^2 + y^2)'. Default: none for delaunay-refinement "
+                     "(it grades by itself); for the other generators, the input's spacing at "
+                     "each vertex h_v (mean length of its boundary pieces, at most its shortest "
+                     "edge in the domain's CDT) graded away from it: min over v of "
+                     "h_v + 0.5 |x - v| (the gradation: sizes grow by half the distance)")
         ->type_name("NUM|FILE|EXPR");
     command
         ->add_option("--max-steiner", arguments->max_steiner,

@@ -154,6 +154,7 @@ void run_min_max(const MinMaxArguments& arguments) {
                   << "candidates: " << counters.candidates << '\n'
                   << "visited: " << counters.visited << '\n'
                   << "removed_edges: " << counters.removed_edges << '\n'
+                  << "dynamic_programs: " << counters.dynamic_programs << '\n'
                   << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
                   << '\n';
         print_seconds(seconds);

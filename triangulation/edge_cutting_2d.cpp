@@ -8,16 +8,17 @@
 //          l_1 ---------- r_1 ...     l_1 = a, r_1 = c, l_i on its left, r_i on its right;
 //            \     t     /            the triangles it crosses (t first) are removed, and
 //             \         /             the polygons b, l_1.., q (left) and b, r_1.., q (right)
-//              \       /              are triangulated again, each optimally.
+//              \       /              are triangulated again by ears (retriangulate_by_ears).
 //                  b
 //
 // Why the result is optimal: let theta be the angle at b. If a triangulation T* had all its
 // angles below theta, some edge bq of T* would enter the open wedge (else one triangle of T*
 // at b would contain the wedge and have an angle >= theta at b), and since t holds no vertex,
 // bq crosses ac. [EdelsbrunnerTanWaupotitsch92] show that then inserting some such bq and
-// retriangulating the two polygons (their way) leaves every new angle below theta; an optimal
-// retriangulation of each polygon does at least as well, so a cut exists whenever T is not
-// optimal, and a failed search over every q proves optimality.
+// retriangulating the two polygons (their way: retriangulate_by_ears) leaves every new angle
+// below theta; an optimal retriangulation of each polygon does at least as well (the fallback
+// where exact ties may part the two), so a cut exists whenever T is not optimal, and a failed
+// search over every q proves optimality.
 // Termination: a cut removes t (largest angle theta) and adds triangles whose angles are all
 // below theta, so the decreasingly sorted vector of the triangles' largest angles strictly
 // decreases lexicographically; there are finitely many triangulations.
@@ -41,7 +42,9 @@ namespace {
 using predicates::orient2d;
 using predicates::Sign;
 
-std::size_t slot(TriIdx t, unsigned k) { return 3 * static_cast<std::size_t>(t) + k; }
+std::size_t slot(TriIdx t, unsigned k) {
+    return 3 * static_cast<std::size_t>(t) + k;
+}
 
 /// A triangle in the heap of largest angles, with the vertices it had when pushed (a slot that
 /// no longer holds them is a stale entry).
@@ -63,7 +66,7 @@ bool strictly_between(const double* p, const double* q, const double* v) {
 using NewTriangle = std::array<VertIdx, 3>;
 
 class EdgeCutter {
-public:
+  public:
     explicit EdgeCutter(Triangulation2& mesh) : mesh_(mesh) {}
 
     EdgeCuttingCounters run() {
@@ -81,7 +84,7 @@ public:
         return counters_;
     }
 
-private:
+  private:
     struct Compare {
         bool operator()(const HeapEntry& x, const HeapEntry& y) const {
             const Sign s = compare_angles(x.largest, y.largest);
@@ -109,13 +112,14 @@ private:
         unsigned best = 0;
         for (unsigned k = 1; k < 3; ++k) {
             if (compare_lengths(point(vertex(t, k + 1)), point(vertex(t, k + 2)),
-                                point(vertex(t, best + 1)), point(vertex(t, best + 2))) ==
-                Sign::Positive) {
+                                point(vertex(t, best + 1)),
+                                point(vertex(t, best + 2))) == Sign::Positive) {
                 best = k;
             }
         }
         e.corner = best;
-        e.largest = {point(vertex(t, best)), point(vertex(t, best + 1)), point(vertex(t, best + 2))};
+        e.largest = {point(vertex(t, best)), point(vertex(t, best + 1)),
+                     point(vertex(t, best + 2))};
         heap_.push(e);
     }
 
@@ -141,7 +145,13 @@ private:
             q_ = q;
             if (!walk(t, entry, q)) continue;
             ++counters_.candidates;
-            if (!retriangulate()) continue;
+            // The paper's retriangulation first, in O(m); the optimal one (O(m^3)) only where an
+            // exact tie or an angle it does not test may have made the two differ.
+            if (!retriangulate_by_ears()) {
+                if (!ear_anomaly_) continue;
+                ++counters_.dynamic_programs;
+                if (!retriangulate()) continue;
+            }
             apply();
             return true;
         }
@@ -236,6 +246,72 @@ private:
                 exit = (s + 2) % 3;  // edge z -> l
             }
         }
+    }
+
+    /// How one ear (apex, x, y) fares: `apex` is the newest vertex, x and y the top two of its
+    /// chain's stack, x the corner the paper tests.
+    enum class Ear { Cut, Refused, Anomaly };
+
+    /// The ear of the new vertex `apex` over the chain vertices x (stack top) and y (below it),
+    /// given counter-clockwise as (o, p, r) with the paper's corner at x. Cut when the triangle is
+    /// strictly counter-clockwise and all three of its angles are below theta; Refused where
+    /// the paper refuses too (a reflex or flat turn, or the angle at x above theta); Anomaly
+    /// where the paper would cut but this exact test does not (the angle at x equals theta, or
+    /// another angle reaches it): then the two procedures may part ways.
+    Ear test_ear(VertIdx o, VertIdx p, VertIdx r, VertIdx x) {
+        const double *po = point(o), *pp = point(p), *pr = point(r);
+        if (orient2d(po, pp, pr) != Sign::Positive) return Ear::Refused;
+        // Rotate (o, p, r) so that x comes first: its corner is (x, next, next-next).
+        const double* px = point(x);
+        const Corner at_x = x == o   ? Corner{po, pp, pr}
+                            : x == p ? Corner{pp, pr, po}
+                                     : Corner{pr, po, pp};
+        const Sign center = compare_angles(at_x, theta_);
+        if (center == Sign::Positive) return Ear::Refused;
+        if (center == Sign::Zero) return Ear::Anomaly;
+        const Corner others[2] = {{at_x.p, at_x.q, px}, {at_x.q, px, at_x.p}};
+        for (const Corner& c : others) {
+            if (compare_angles(c, theta_) != Sign::Negative) return Ear::Anomaly;
+        }
+        return Ear::Cut;
+    }
+
+    /// The retriangulation of [EdelsbrunnerTanWaupotitsch92] (as in the authors' edge-insertion
+    /// code): walking from b to q, each new chain vertex S cuts ears (S, x, y) off the top of its
+    /// side's stack while the angle at x stays below theta, never down to b; q then has to cut
+    /// every remaining ear of both sides, down to b. Each side is a stack (O(m) ears in all).
+    /// Every ear is strictly counter-clockwise and the ears triangulate each polygon
+    /// combinatorially, so they tile it (signed areas add up to the polygon's, all positive).
+    /// Records in ear_anomaly_ whether the outcome may differ from the paper's.
+    bool retriangulate_by_ears() {
+        new_triangles_.clear();
+        ear_anomaly_ = false;
+        // left: the polygon q, l_m, ..., l_1, b is counter-clockwise, so an ear of the newest
+        // vertex S over (x, y) is (S, x, y); right: b, r_1, ..., r_k, q, so the ear is (y, x, S).
+        auto side = [&](const std::vector<VertIdx>& chain, bool left) {
+            std::vector<VertIdx>& stack = ear_stack_;
+            stack.assign({b_, chain.front()});
+            auto ears = [&](VertIdx apex, std::size_t floor) {
+                while (stack.size() > floor) {
+                    const VertIdx x = stack.back(), y = stack[stack.size() - 2];
+                    const Ear ear = left ? test_ear(apex, x, y, x) : test_ear(y, x, apex, x);
+                    if (ear != Ear::Cut) {
+                        if (ear == Ear::Anomaly) ear_anomaly_ = true;
+                        return false;
+                    }
+                    new_triangles_.push_back(left ? NewTriangle{apex, x, y}
+                                                  : NewTriangle{y, x, apex});
+                    stack.pop_back();
+                }
+                return true;
+            };
+            for (std::size_t i = 1; i < chain.size(); ++i) {
+                ears(chain[i], 2);  // never down to b: (S, b) is no edge of the result
+                stack.push_back(chain[i]);
+            }
+            return ears(q_, 1);
+        };
+        return side(left_, true) && side(right_, false);
     }
 
     /// Triangulates both polygons with every largest angle below theta (optimal min-max each);
@@ -395,18 +471,19 @@ private:
         for (const auto& [key, e] : inner) {
             const TriIdx t = e / 3;
             const std::uint64_t reverse = (key << 32) | (key >> 32);
-            const auto twin = std::lower_bound(inner.begin(), inner.end(),
-                                               std::make_pair(reverse, EdgeIdx{0}));
+            const auto twin =
+                std::lower_bound(inner.begin(), inner.end(), std::make_pair(reverse, EdgeIdx{0}));
             if (twin != inner.end() && twin->first == reverse) {
                 mesh_.neighbors[e] = twin->second / 3;
                 if (!mesh_.constrained.empty()) mesh_.constrained[e] = 0;
                 continue;
             }
-            const auto side = std::lower_bound(
-                boundary.begin(), boundary.end(), key,
-                [](const Side& x, std::uint64_t k) { return x.key < k; });
+            const auto side =
+                std::lower_bound(boundary.begin(), boundary.end(), key,
+                                 [](const Side& x, std::uint64_t k) { return x.key < k; });
             if (side == boundary.end() || side->key != key) {
-                throw InternalError("edge_cutting_2d: new triangle side not on the region boundary");
+                throw InternalError(
+                    "edge_cutting_2d: new triangle side not on the region boundary");
             }
             mesh_.neighbors[e] = side->outer;
             if (!mesh_.constrained.empty()) mesh_.constrained[e] = side->flag;
@@ -430,7 +507,8 @@ private:
     std::vector<std::uint32_t> region_mark_, vertex_mark_;
     std::uint32_t stamp_ = 0;
     std::vector<TriIdx> crossed_;
-    std::vector<VertIdx> left_, right_, polygon_;
+    std::vector<VertIdx> left_, right_, polygon_, ear_stack_;
+    bool ear_anomaly_ = false;
     std::vector<std::uint8_t> diagonal_, feasible_;
     std::vector<Corner> value_;
     std::vector<std::uint32_t> choice_;

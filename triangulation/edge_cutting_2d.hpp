@@ -7,12 +7,15 @@
 // that angle by an edge bq (q any vertex seen from b through the open wedge abc): remove the
 // edges crossing bq, retriangulate the two polygons on either side; keep the result when all
 // new angles are strictly below angle abc. When no q succeeds, the triangulation minimizes the
-// largest angle. The retriangulation of each polygon is an optimal (min-max angle) one, by
-// dynamic programming over its diagonals [Klincsek80], with triangles whose largest angle
-// reaches the current maximum excluded; it succeeds whenever the paper's retriangulation does,
-// so the paper's optimality argument applies unchanged. Constrained edges are never crossed,
-// which gives the optimum among triangulations keeping them (the cut lemma holds there too).
-// All angle decisions are exact (angles_2d.hpp).
+// largest angle. Each polygon is retriangulated the paper's way, by ears cut with a stack as
+// the walk from b to q meets the chain vertices, in O(m) (see edge_cutting_2d.cpp); only when an
+// exact tie (or an angle the paper leaves untested) makes that outcome differ from the paper's,
+// and the ears fail, the candidate is decided by an optimal (min-max angle) retriangulation
+// by dynamic programming [Klincsek80], O(m^3), which succeeds whenever the paper's does.
+// Cost: O(n) per candidate, so O(n^2) per largest-angle triangle in the worst case (the paper
+// narrows the candidates to reach O(n log n) per step; every candidate is tried here).
+// Constrained edges are never crossed, which gives the optimum among triangulations keeping
+// them (the cut lemma holds there too). All angle decisions are exact (angles_2d.hpp).
 #pragma once
 
 #include <cstdint>
@@ -23,11 +26,12 @@
 namespace exactmesh::triangulation {
 
 struct EdgeCuttingCounters {
-    std::uint64_t worst_triangles = 0;  ///< largest-angle triangles taken from the heap
-    std::uint64_t insertions = 0;       ///< edges bq inserted (successful cuts)
-    std::uint64_t candidates = 0;       ///< edges bq whose polygons were retriangulated
-    std::uint64_t visited = 0;          ///< triangles entered by the visibility searches
-    std::uint64_t removed_edges = 0;    ///< edges crossing an inserted bq, summed
+    std::uint64_t worst_triangles = 0;   ///< largest-angle triangles taken from the heap
+    std::uint64_t insertions = 0;        ///< edges bq inserted (successful cuts)
+    std::uint64_t candidates = 0;        ///< edges bq whose polygons were retriangulated
+    std::uint64_t visited = 0;           ///< triangles entered by the visibility searches
+    std::uint64_t removed_edges = 0;     ///< edges crossing an inserted bq, summed
+    std::uint64_t dynamic_programs = 0;  ///< candidates retriangulated optimally (ties only)
 };
 
 /// Improves `mesh` in place to a triangulation of the same vertices and domain minimizing the
