@@ -77,7 +77,8 @@ DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
                                            const SizeFunction& size,
                                            const triangulation::Cdt2Options& cdt = {});
 
-/// The size a generator uses when the caller gives none (Gmsh's "extend from the boundary"):
+/// The input's own spacing, ungraded (Gmsh's "extend from the boundary"; the generators' default
+/// is graded_size_from_boundary, generators/graded_boundary_size_2d.hpp):
 /// the domain's constrained Delaunay triangulation as a background mesh
 /// (SizeFunction::background_mesh), each vertex sized by the mean length of the pieces at it (of
 /// its edges when no piece ends there), linear in between, so the input's own spacing sets the

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "generators/domain_boundary_2d.hpp"
+#include "generators/graded_boundary_size_2d.hpp"
 #include "generators/mesh_generators_2d.hpp"
 #include "generators/quality_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
@@ -66,8 +67,9 @@ Outcome run(const gen::MeshGenerator2& generator, const Input& in, Sizing sizing
     const Input scaled = scaled_input(in, k);
     gen::MeshOptions2 options;
     options.size = size_at_scale(sizing, k);
+    // The default `exactmesh mesh` takes: the spacing graded from the boundary.
     if (generator.needs_size && !options.size.bounded())
-        options.size = gen::size_from_boundary(scaled.pslg(), options.cdt);
+        options.size = gen::graded_size_from_boundary(scaled.pslg(), options.cdt);
     Outcome o{generator.run(scaled.pslg(), options).mesh, {}};
     o.quality = gen::quality_report_2d(o.mesh.mesh.xy, o.mesh.mesh.triangles, options.size);
     return o;
