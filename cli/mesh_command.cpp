@@ -14,6 +14,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "cli/size_expression.hpp"
 #include "generators/domain_boundary_2d.hpp"
@@ -270,8 +271,7 @@ void add_mesh_command(CLI::App& app) {
         ->add_option("--max-steiner", arguments->max_steiner,
                      "Stop with an error after this many Steiner points (0: automatic; at most " +
                          std::to_string(tri::kMaxPoints) + ")")
-        ->check(CLI::Validator(
-            [](std::string& text) { return check_unsigned_text(text, tri::kMaxPoints); }, "UINT"))
+        ->check(whole_number_at_most(tri::kMaxPoints))
         ->capture_default_str();
     command
         ->add_option(
@@ -280,8 +280,7 @@ void add_mesh_command(CLI::App& app) {
             "invert a triangle undone, Delaunay re-swapping after each sweep; boundary and input "
             "vertices fixed); stops early after a sweep that moves no vertex; at most " +
                 std::to_string(kMaxSmoothSweeps) + "; timed apart as smooth_seconds")
-        ->check(CLI::Validator(
-            [](std::string& text) { return check_unsigned_text(text, kMaxSmoothSweeps); }, "UINT"))
+        ->check(whole_number_at_most(kMaxSmoothSweeps))
         ->capture_default_str();
     command->add_flag(
         "--quality", arguments->quality,

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/tetgen_format.hpp"
@@ -128,13 +129,7 @@ void add_tetrahedralize_command(CLI::App& app) {
     command->add_option("--order", arguments->order, "Insertion order")
         ->check(CLI::IsMember({"given", "random", "brio"}))
         ->capture_default_str();
-    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max());
-            },
-            "UINT64"))
-        ->capture_default_str();
+    add_seed_option(*command, arguments->seed);
     command->add_flag("--stats", arguments->stats,
                       "Print work counters, predicate stages and construct_seconds (the "
                       "construction alone, without file I/O)");

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/svg_picture.hpp"
@@ -131,13 +132,7 @@ void add_triangulate_command(CLI::App& app) {
                      "(grid for the random order, else walk); tanemura-merriam locates nothing")
         ->check(CLI::IsMember({"auto", "walk", "grid"}))
         ->capture_default_str();
-    command->add_option("--seed", arguments->seed, "Seed of the random and brio orders")
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                return check_unsigned_text(text, std::numeric_limits<std::uint64_t>::max());
-            },
-            "UINT64"))
-        ->capture_default_str();
+    add_seed_option(*command, arguments->seed);
     command->add_flag("--stats", arguments->stats,
                       "Print work counters, predicate stages and construct_seconds (the "
                       "construction alone, without file I/O)");
