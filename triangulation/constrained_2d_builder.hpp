@@ -27,12 +27,12 @@ namespace exactmesh::triangulation::detail {
 using predicates::Sign;
 
 struct Piece {
-    VertIdx a, b;          // mesh vertices
+    VertIdx a, b;           // mesh vertices
     std::uint32_t segment;  // input segment
 };
 
 class CdtBuilder {
-public:
+  public:
     /// pslg's spans must outlive the builder (constrained_delaunay_2d: the call; the
     /// ConstrainedTriangulation2: its own copies).
     /// enclose_in_box: after recovering the segments, insert four corners of a box around
@@ -40,7 +40,10 @@ public:
     /// splitting a hull segment at a rounded point could leave the hull non-convex); the
     /// corners never reach the output.
     CdtBuilder(const Pslg& pslg, const Cdt2Options& options, bool enclose_in_box = false)
-        : pslg_(pslg), options_(options), enclose_in_box_(enclose_in_box), core_(pslg.xy, delaunay_options(options)),
+        : pslg_(pslg),
+          options_(options),
+          enclose_in_box_(enclose_in_box),
+          core_(pslg.xy, delaunay_options(options)),
           mesh_(core_.mesh) {}
     CdtBuilder(const CdtBuilder&) = delete;
     CdtBuilder& operator=(const CdtBuilder&) = delete;
@@ -71,7 +74,7 @@ public:
     const ConstrainedTriangulation2Counters& edit_counters() const { return edit_counters_; }
     void reserve(std::uint32_t vertices);
 
-private:
+  private:
     Pslg pslg_;
     Cdt2Options options_;
     bool enclose_in_box_ = false;
@@ -82,7 +85,7 @@ private:
     std::vector<std::uint32_t> segment_of_;  // per half-edge
     std::vector<EdgeIdx> vertex_edge_;       // per mesh vertex
     std::vector<TriIdx> flip_stack_;
-    std::vector<std::uint8_t> in_cavity_;    // per triangle slot, scratch of recover_by_cavity
+    std::vector<std::uint8_t> in_cavity_;  // per triangle slot, scratch of recover_by_cavity
     std::vector<Piece> work_;
     std::vector<std::array<VertIdx, 2>> segment_ends_;  // per input segment: its mesh vertices
     Cdt2Result result_;
@@ -200,12 +203,15 @@ private:
     /// The piece passes exactly through vertex v: recover its two parts instead (a warning).
     void split_piece_at_vertex(const Piece& piece, VertIdx v) {
         ++result_.counters.vertices_on_segments;
-        result_.warnings.push_back("segment " + segment_name(piece.segment) + " passes through " + vertex_name(v) +
-                                   "; split there");
+        result_.warnings.push_back("segment " + segment_name(piece.segment) + " passes through " +
+                                   vertex_name(v) + "; split there");
         work_.push_back({v, piece.b, piece.segment});
         work_.push_back({piece.a, v, piece.segment});
     }
     void split_at_intersection(const Piece& piece, EdgeIdx h);
+    /// Where piece (of one segment) and the constrained edge u - v (of segment other) are split.
+    std::array<double, 2> crossing_point(const Piece& piece, VertIdx u, VertIdx v,
+                                         std::uint32_t other);
     void recover_by_swaps(const Piece& piece, const std::vector<EdgeIdx>& crossed);
     void recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx>& crossed);
     void triangulate_pseudo_polygon(VertIdx u, VertIdx v, std::span<const VertIdx> chain,
@@ -223,7 +229,7 @@ private:
     /// segment's line and between its ends (the nearest), or kNone.
     VertIdx vertex_near_segment(const Piece& piece);
     bool conforming_ = false;
-    VertIdx first_split_vertex_ = 0;           // vertices from here on are conforming splits
+    VertIdx first_split_vertex_ = 0;             // vertices from here on are conforming splits
     std::vector<std::uint32_t> segment_degree_;  // pieces at each earlier vertex
     std::vector<Piece> encroached_;
     bool on_ray(VertIdx a, VertIdx b, VertIdx x) const;
@@ -244,20 +250,20 @@ private:
     bool collinear_ = false;
 
     // ---- incremental editing state ----------------------------------------------------------
-    bool domain_marked_ = false;              // removed_ (and attribute_) follow every edit
-    std::vector<TriIdx> touched_;             // slots written since clear_touched()
-    std::vector<std::uint32_t> cavity_stamp_; // per slot: == stamp_ when in the current cavity
+    bool domain_marked_ = false;               // removed_ (and attribute_) follow every edit
+    std::vector<TriIdx> touched_;              // slots written since clear_touched()
+    std::vector<std::uint32_t> cavity_stamp_;  // per slot: == stamp_ when in the current cavity
     std::uint32_t stamp_ = 0;
     std::vector<TriIdx> cavity_;
-    std::vector<EdgeIdx> boundary_;           // cavity boundary, half-edges inside the cavity
-    std::vector<EdgeIdx> cycle_;              // the same, in order around the cavity
+    std::vector<EdgeIdx> boundary_;  // cavity boundary, half-edges inside the cavity
+    std::vector<EdgeIdx> cycle_;     // the same, in order around the cavity
     std::vector<EdgeIdx> encroached_edges_;
     struct FanEdge {
         VertIdx u, v;
         EdgeIdx outer;
         std::uint32_t segment;
     };
-    std::vector<FanEdge> fan_;                // the cavity's new triangles, in order
+    std::vector<FanEdge> fan_;  // the cavity's new triangles, in order
     std::vector<TriIdx> fan_slots_;
     ConstrainedTriangulation2Counters edit_counters_;
     /// Lawson flips from flip_stack_ (after split_triangle or split_edge).
@@ -265,7 +271,8 @@ private:
     /// One attempt of split_constrained_edge at (x, y): true (and the new vertex) when the point
     /// lies on e or inside the quadrilateral of e's two triangles; the edges to check for
     /// Lawson flips are appended to `check`. Else nothing changes.
-    bool try_split_at(EdgeIdx e, double x, double y, std::vector<std::pair<VertIdx, VertIdx>>& check, VertIdx& vertex);
+    bool try_split_at(EdgeIdx e, double x, double y,
+                      std::vector<std::pair<VertIdx, VertIdx>>& check, VertIdx& vertex);
     /// The exact fan test of split_constrained_edge: p strictly inside both triangles' star.
     bool star_contains(VertIdx p, VertIdx a, VertIdx b, VertIdx c, VertIdx d);
     /// The half-edge (e or its twin) whose apex lies within rounding of e's segment, strictly
@@ -281,7 +288,9 @@ private:
     std::string vertex_name(VertIdx v) const {
         return "vertex " + std::to_string(core_.input_index[v] + options_.first_index);
     }
-    std::string segment_name(std::uint32_t s) const { return std::to_string(s + options_.first_index); }
+    std::string segment_name(std::uint32_t s) const {
+        return std::to_string(s + options_.first_index);
+    }
 };
 
 }  // namespace exactmesh::triangulation::detail
