@@ -473,10 +473,22 @@ void CdtBuilder::recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx
     auto key = [](VertIdx p, VertIdx q) { return (std::uint64_t{p} << 32) | q; };
     if (in_cavity_.size() < mesh_.triangle_slots()) in_cavity_.resize(mesh_.triangle_slots(), 0);
     for (const TriIdx t : cavity) in_cavity_[t] = 1;
+    // Constrained edges with a cavity triangle on both sides: the segment crosses the whole star
+    // of a vertex but one edge, that edge being a piece (e.g. vertex w inside triangle x, y, z,
+    // the segment separating {w, z} from {x, y}: it crosses x - z, x - w, y - w, y - z, and w - z
+    // dangles into the cavity; PSLGs spanning 1e-225..1e212, where the triangles are extreme).
+    // The pseudo-polygon's chain then visits z, w, z, its retriangulation has w - z again, and
+    // the edge must keep its constraint (it was lost: a piece missing from the output).
+    std::unordered_map<std::uint64_t, std::uint32_t> dangling;
     for (const TriIdx t : cavity) {
         for (unsigned k = 0; k < 3; ++k) {
             const EdgeIdx g = 3 * t + k;
-            if (in_cavity_[triangle_of(mesh_.twin[g])]) continue;
+            if (in_cavity_[triangle_of(mesh_.twin[g])]) {
+                const VertIdx p = mesh_.origin(g), q = mesh_.destination(g);
+                if (segment_of_[g] != kNone)
+                    dangling[key(std::min(p, q), std::max(p, q))] = segment_of_[g];
+                continue;
+            }
             boundary[key(mesh_.origin(g), mesh_.destination(g))] = {mesh_.twin[g], segment_of_[g]};
         }
     }
@@ -503,7 +515,13 @@ void CdtBuilder::recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx
             }
             const auto twin = open.find(key(q, p));
             if (twin != open.end()) {
-                link_inner(e, twin->second);
+                const auto kept = dangling.find(key(std::min(p, q), std::max(p, q)));
+                if (kept != dangling.end()) {
+                    link_inner(e, twin->second, kept->second);
+                    dangling.erase(kept);
+                } else {
+                    link_inner(e, twin->second);
+                }
                 open.erase(twin);
             } else {
                 open.emplace(key(p, q), e);
@@ -511,6 +529,7 @@ void CdtBuilder::recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx
         }
     }
     EM_ASSERT(open.empty());
+    EM_ASSERT(dangling.empty());  // every constrained edge inside the cavity is an edge again
     mark(find_edge(a, b), piece.segment);
 }
 
