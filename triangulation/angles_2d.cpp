@@ -101,6 +101,29 @@ Sign corner_dot_sign(const double* o, const double* p, const double* q) {
     return (exact_product(u.x, v.x) + exact_product(u.y, v.y)).sign();
 }
 
+Sign direction_dot_sign(const double* p, const double* q, const double* a, const double* b) {
+    // The dot product's filter and exact stage with u = q - p, v = b - a (same error analysis).
+    const Difference u = difference(q, p), v = difference(b, a);
+    if (!(in_window(u.x) && in_window(u.y) && in_window(v.x) && in_window(v.y)) ||
+        !(u.exact && v.exact)) {
+        const double xx = u.x * v.x, yy = u.y * v.y;
+        const double e = xx + yy;
+        if (in_window(u.x) && in_window(u.y) && in_window(v.x) && in_window(v.y) &&
+            std::fabs(e) > kDotFilter * (std::fabs(xx) + std::fabs(yy))) {
+            return predicates::sign_of(e);
+        }
+        using predicates::reference::exact;
+        const mpq_class ux = exact(q[0]) - exact(p[0]), uy = exact(q[1]) - exact(p[1]);
+        const mpq_class vx = exact(b[0]) - exact(a[0]), vy = exact(b[1]) - exact(a[1]);
+        return predicates::reference::sign_of(ux * vx + uy * vy);
+    }
+    const double xx = u.x * v.x, yy = u.y * v.y;
+    const double e = xx + yy;
+    if (std::fabs(e) > kDotFilter * (std::fabs(xx) + std::fabs(yy))) return predicates::sign_of(e);
+    using predicates::exact_product;
+    return (exact_product(u.x, v.x) + exact_product(u.y, v.y)).sign();
+}
+
 Sign compare_angles(const Corner& a, const Corner& b) {
     const Difference ua = difference(a.p, a.o), va = difference(a.q, a.o);
     const Difference ub = difference(b.p, b.o), vb = difference(b.q, b.o);
@@ -148,7 +171,8 @@ namespace {
 
 /// The corner opposite the longest side (`longer` = Positive) or the shortest (Negative): side
 /// lengths order the angles of a triangle.
-Corner corner_opposite_extreme_side(const double* a, const double* b, const double* c, Sign longer) {
+Corner corner_opposite_extreme_side(const double* a, const double* b, const double* c,
+                                    Sign longer) {
     // Side opposite a is bc, opposite b is ca, opposite c is ab.
     Corner best{a, b, c};
     const double* best_p = b;

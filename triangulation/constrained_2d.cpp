@@ -19,6 +19,8 @@
 #include "predicates/constructions.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
+#include "triangulation/angles_2d.hpp"
+#include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d_builder.hpp"
 #include "triangulation/delaunay_2d_core.hpp"
 #include "triangulation/green_sibson_2d.hpp"
@@ -647,35 +649,30 @@ void CdtBuilder::conform() {
     conforming_ = false;
 }
 
+bool CdtBuilder::bend_candidate(std::uint32_t segment, VertIdx a, VertIdx b, VertIdx w) const {
+    // The chain rule of check_constrained_delaunay_2d (within_rounding_of_segment, exact progress
+    // along the input segment), so that every bend the triangulation makes is a chain the check
+    // accepts: w within rounding of the input segment and strictly between a and b along it.
+    if (w == kInfinite || w == a || w == b) return false;
+    const double* s0 = mesh_.point(segment_ends_[segment][0]);
+    const double* s1 = mesh_.point(segment_ends_[segment][1]);
+    const Sign from_a = direction_dot_sign(mesh_.point(a), mesh_.point(w), s0, s1);
+    const Sign to_b = direction_dot_sign(mesh_.point(w), mesh_.point(b), s0, s1);
+    if (from_a == Sign::Zero || from_a != to_b) return false;
+    return within_rounding_of_segment(mesh_.point(w), s0, s1);
+}
+
 VertIdx CdtBuilder::vertex_near_segment(const Piece& piece) {
     const VertIdx a = piece.a, b = piece.b;
-    // The original segment's line, in long double (as check_constrained_delaunay_2d measures).
     const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
     const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
-    const long double dx = static_cast<long double>(s1[0]) - s0[0],
-                      dy = static_cast<long double>(s1[1]) - s0[1];
-    const long double length = std::sqrt(dx * dx + dy * dy);
-    const double magnitude =
-        std::max({std::fabs(s0[0]), std::fabs(s0[1]), std::fabs(s1[0]), std::fabs(s1[1])});
-    const long double tolerance = std::ldexp(static_cast<long double>(magnitude), -46);
-    auto along = [&](VertIdx v) {
-        return (static_cast<long double>(mesh_.point(v)[0]) - s0[0]) * dx +
-               (static_cast<long double>(mesh_.point(v)[1]) - s0[1]) * dy;
-    };
-    const long double lo = std::min(along(a), along(b)), hi = std::max(along(a), along(b));
+    // Among the vertices the piece crosses that may bend it, the first along the segment.
     VertIdx best = kNone;
-    long double best_distance = tolerance;
     auto consider = [&](VertIdx v) {
-        if (v == kInfinite || v == a || v == b) return;
-        const long double t = along(v);
-        if (!(t > lo && t < hi)) return;
-        const long double cross = (static_cast<long double>(mesh_.point(v)[0]) - s0[0]) * dy -
-                                  (static_cast<long double>(mesh_.point(v)[1]) - s0[1]) * dx;
-        const long double distance = std::fabs(cross / length);
-        if (distance <= best_distance) {
-            best_distance = distance;
+        if (!bend_candidate(piece.segment, a, b, v)) return;
+        if (best == kNone ||
+            direction_dot_sign(mesh_.point(v), mesh_.point(best), s0, s1) == Sign::Positive)
             best = v;
-        }
     };
     // The edges the piece crosses, as insert_piece walks them; a vertex exactly on the piece
     // ends the walk (it is the answer).

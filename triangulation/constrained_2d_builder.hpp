@@ -228,6 +228,8 @@ class CdtBuilder {
     /// A vertex that a missing piece crosses exactly on it, or within rounding of its input
     /// segment's line and between its ends (the nearest), or kNone.
     VertIdx vertex_near_segment(const Piece& piece);
+    /// w may bend the chain of `segment` between its vertices a and b (the check's chain rule).
+    bool bend_candidate(std::uint32_t segment, VertIdx a, VertIdx b, VertIdx w) const;
     bool conforming_ = false;
     VertIdx first_split_vertex_ = 0;             // vertices from here on are conforming splits
     std::vector<std::uint32_t> segment_degree_;  // pieces at each earlier vertex

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "predicates/constructions.hpp"
+#include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d.hpp"
@@ -224,7 +225,20 @@ TEST(Issue11, issue_11_crossings_near_one_point) {
                 tri::Cdt2Options options;
                 options.recovery = recovery;
                 options.remove_exterior = false;
-                const tri::Cdt2Result r = tri::constrained_delaunay_2d(in.view(), options);
+                tri::Cdt2Result r;
+                try {
+                    r = tri::constrained_delaunay_2d(in.view(), options);
+                } catch (const exactmesh::GeometryError& error) {
+                    // Conforming may need pieces shorter than doubles resolve near the centre:
+                    // then one clear error. Swap and cavity never stop.
+                    EXPECT_EQ(recovery, tri::SegmentRecovery::Conforming)
+                        << label << ": " << error.what();
+                    const std::string what = error.what();
+                    EXPECT_TRUE(what.find("too short to split") != std::string::npos ||
+                                what.find("splits; stopped") != std::string::npos)
+                        << label << ": " << what;
+                    continue;
+                }
                 const auto check =
                     tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments);
                 EXPECT_TRUE(check.ok) << label << ": " << check.problem;
