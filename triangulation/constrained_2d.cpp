@@ -103,6 +103,8 @@ void CdtBuilder::split_edge(EdgeIdx e, VertIdx p) {
     const std::uint32_t sbc = segment_of_[next_edge(e)], sca = segment_of_[prev_edge(e)];
     const std::uint32_t sad = segment_of_[next_edge(f)], sdb = segment_of_[prev_edge(f)];
     const std::uint32_t split = segment_of_[e];  // both halves of a split segment keep it
+    const std::vector<std::uint32_t> split_shared =
+        split == kNone ? std::vector<std::uint32_t>{} : release_shared(a, b);
     // Slot u takes a triangle on t's side: the sides are read first.
     const Side side_t = side_of(t), side_u = side_of(u);
     const TriIdx t1 = t, t2 = u, t3 = new_triangle(), t4 = new_triangle();
@@ -121,6 +123,10 @@ void CdtBuilder::split_edge(EdgeIdx e, VertIdx p) {
     link_inner(3 * t2 + 2, 3 * t3, split);  // a - p
     link_inner(3 * t3 + 2, 3 * t4);
     link_inner(3 * t4 + 2, 3 * t1, split);  // b - p
+    for (const std::uint32_t other : split_shared) {
+        mark(3 * t2 + 2, other);
+        mark(3 * t4 + 2, other);
+    }
     flip_stack_.insert(flip_stack_.end(), {t1, t2, t3, t4});
     core_.last_triangle = t1;
 }
@@ -375,6 +381,7 @@ void CdtBuilder::split_at_intersection(const Piece& piece, EdgeIdx h) {
         }
     }
     segment_of_[h] = segment_of_[mesh_.twin[h]] = kNone;
+    const std::vector<std::uint32_t> also = release_shared(u, v);
     if (at != candidate) {
         remove_last_vertex();
         ++result_.counters.vertices_on_segments;
@@ -399,6 +406,10 @@ void CdtBuilder::split_at_intersection(const Piece& piece, EdgeIdx h) {
     // next to it): restore before recovering the four pieces.
     std::vector<std::pair<VertIdx, VertIdx>> released{{u, v}};
     restore_delaunay(released);
+    for (const std::uint32_t s : also) {
+        work_.push_back({u, at, s});
+        work_.push_back({at, v, s});
+    }
     work_.push_back({u, at, other});
     work_.push_back({at, v, other});
     work_.push_back({at, b, piece.segment});
@@ -589,10 +600,14 @@ void CdtBuilder::conform() {
             const VertIdx p = mesh_.origin(e), q = mesh_.destination(e);
             if (p == kInfinite || q == kInfinite || p > q) continue;
             edges.emplace_back(p, q);
-            if (segment_of_[e] != kNone) pieces.push_back({p, q, segment_of_[e]});
+            if (segment_of_[e] != kNone) {
+                pieces.push_back({p, q, segment_of_[e]});
+                for (const std::uint32_t s : shared_segments(p, q)) pieces.push_back({p, q, s});
+            }
         }
     }
     std::fill(segment_of_.begin(), segment_of_.end(), kNone);
+    shared_.clear();
     restore_delaunay(edges);
     // Every present piece is marked; Lawson flips never remove a marked edge but report it when
     // a new vertex makes it not locally Delaunay (flip_if_needed), and such a piece is split
@@ -624,6 +639,10 @@ void CdtBuilder::conform() {
                 // Released and flipped (it is not locally Delaunay), then split like a missing
                 // piece.
                 segment_of_[present] = segment_of_[mesh_.twin[present]] = kNone;
+                // The other segments whose chains shared the piece recover it again themselves.
+                for (const std::uint32_t s : release_shared(piece.a, piece.b)) {
+                    if (s != piece.segment) tasks.push_back({{piece.a, piece.b, s}, false});
+                }
                 std::vector<std::pair<VertIdx, VertIdx>> edge{{piece.a, piece.b}};
                 restore_delaunay(edge);
             }
@@ -659,7 +678,18 @@ bool CdtBuilder::bend_candidate(std::uint32_t segment, VertIdx a, VertIdx b, Ver
     const Sign from_a = direction_dot_sign(mesh_.point(a), mesh_.point(w), s0, s1);
     const Sign to_b = direction_dot_sign(mesh_.point(w), mesh_.point(b), s0, s1);
     if (from_a == Sign::Zero || from_a != to_b) return false;
-    return within_rounding_of_segment(mesh_.point(w), s0, s1);
+    if (!within_rounding_of_segment(mesh_.point(w), s0, s1)) return false;
+    // A piece shared with other segments bends only where each of their chains may bend.
+    for (const std::uint32_t other : shared_segments(a, b)) {
+        if (other == segment) continue;
+        const double* t0 = mesh_.point(segment_ends_[other][0]);
+        const double* t1 = mesh_.point(segment_ends_[other][1]);
+        const Sign o_from_a = direction_dot_sign(mesh_.point(a), mesh_.point(w), t0, t1);
+        const Sign o_to_b = direction_dot_sign(mesh_.point(w), mesh_.point(b), t0, t1);
+        if (o_from_a == Sign::Zero || o_from_a != o_to_b) return false;
+        if (!within_rounding_of_segment(mesh_.point(w), t0, t1)) return false;
+    }
+    return true;
 }
 
 VertIdx CdtBuilder::vertex_near_segment(const Piece& piece) {

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -142,9 +143,37 @@ class CdtBuilder {
         segment_of_[e] = segment_of_[f] = segment;
     }
     void mark(EdgeIdx e, std::uint32_t segment) {
-        const std::uint32_t s = std::min(segment_of_[e], segment);
+        const std::uint32_t old = segment_of_[e];
+        if (old != kNone && old != segment) {
+            // One edge, pieces of two segments (overlapping, or one bent through the other's
+            // vertex): segment_of_ keeps the smallest, shared_ every other one, so that a later
+            // bend or split of the piece answers to each segment's chain (issue 11: a unit
+            // segment's piece shared with a 1e-320 segment was bent by the unit one's rule alone).
+            auto& others = shared_[edge_key(mesh_.origin(e), mesh_.destination(e))];
+            const std::uint32_t extra = std::max(old, segment);
+            if (std::find(others.begin(), others.end(), extra) == others.end())
+                others.push_back(extra);
+        }
+        const std::uint32_t s = std::min(old, segment);
         segment_of_[e] = segment_of_[mesh_.twin[e]] = s;
     }
+    static std::uint64_t edge_key(VertIdx u, VertIdx v) {
+        return (std::uint64_t{std::min(u, v)} << 32) | std::max(u, v);
+    }
+    /// The segments other than segment_of_ whose chains use the edge u - v (usually none).
+    std::vector<std::uint32_t> shared_segments(VertIdx u, VertIdx v) const {
+        const auto it = shared_.find(edge_key(u, v));
+        return it == shared_.end() ? std::vector<std::uint32_t>{} : it->second;
+    }
+    /// The edge u - v stops being a piece: forget its other segments (returned).
+    std::vector<std::uint32_t> release_shared(VertIdx u, VertIdx v) {
+        const auto it = shared_.find(edge_key(u, v));
+        if (it == shared_.end()) return {};
+        std::vector<std::uint32_t> others = std::move(it->second);
+        shared_.erase(it);
+        return others;
+    }
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> shared_;
     VertIdx apex(EdgeIdx e) const { return mesh_.tv[prev_edge(e)]; }
 
     /// The half-edge u -> v, or kNone.

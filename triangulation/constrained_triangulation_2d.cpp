@@ -303,6 +303,10 @@ VertIdx CdtBuilder::bend_through_apex(EdgeIdx g) {
     const TriIdx t = triangle_of(g);
     mark(next_edge(g), segment);
     mark(prev_edge(g), segment);
+    for (const std::uint32_t other : release_shared(u, v)) {
+        mark(next_edge(g), other);
+        mark(prev_edge(g), other);
+    }
     segment_of_[g] = segment_of_[h] = kNone;
     put_on_side(t, side_of(triangle_of(h)));
     if (domain_marked_) touched_.push_back(t);

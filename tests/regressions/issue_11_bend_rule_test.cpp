@@ -79,10 +79,16 @@ Replay replay(const std::string& name) {
 }  // namespace
 
 TEST(Issue11, issue_11_bend_rule) {
-    // One rule for the triangulation's bends and the check's chains (within_rounding_of_segment,
-    // exact progress), the same at every scale 2^k. (The fuzz finding itself,
-    // tests/data/fuzz/open/mesh_generators_2d_refinement_bend_off_short_segment.bin, is not
-    // settled by it: see the report of issue 11.)
+    // The fuzz finding, replayed as fuzz_mesh_generators_2d runs it: the unit square's side
+    // (0, 0) - (1, 0) bent through the vertex (1.5e-320, 5e-321), sharing the piece to it with the
+    // segment from that vertex to (0, 0); the piece was then bent again through (5e-321, 2.4e-319)
+    // by the side's rule alone, which the short segment's chain does not allow, and the exact
+    // check rejected it. Now every segment of a shared piece must allow a bend: a valid mesh.
+    const Replay bend = replay("mesh_generators_2d_refinement_bend_off_short_segment.bin");
+    EXPECT_EQ(bend.generator, "delaunay-refinement");
+    ASSERT_TRUE(bend.meshed) << bend.error;
+    EXPECT_TRUE(bend.check.ok) << bend.check.problem;
+
     // The rule on the finding's vertices: (2.4e-319, 5.3e-315) lies within rounding of the unit
     // square's side (0, 0) - (1, 0) (2^-40 of its coordinates), and the chain (0, 0) -> it -> (1,
     // 0) progresses; the same at 2^600 times the coordinates; a vertex 2^-30 off does not.
