@@ -733,8 +733,8 @@ constexpr std::uint64_t kSplitsPerFeature = 64;
 constexpr std::uint64_t kSplitsBase = 4096;
 
 void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) {
-    // A vertex the piece crosses within rounding of its segment (2^-46 of the segment's
-    // coordinates; the checker allows 2^-40) is where the piece bends: (6, 8) on a grid line
+    // A vertex the piece crosses within rounding of its segment (the check's chain rule,
+    // bend_candidate) is where the piece bends: (6, 8) on a grid line
     // whose other end is a rounded crossing at (7 - 2^-50, 7) in grid-lines seed 5, where new
     // points would home in on it until no double is left between.
     const VertIdx near = vertex_near_segment(piece);
