@@ -112,6 +112,17 @@ Sign direction_dot_sign(const double* p, const double* q, const double* a, const
             std::fabs(e) > kDotFilter * (std::fabs(xx) + std::fabs(yy))) {
             return predicates::sign_of(e);
         }
+        // Outside the window: long double (64-bit significand, exponents to 2^16383), where no
+        // difference or product of doubles' differences overflows or underflows, and each of the
+        // two products carries at most 3 roundings of 2^-64 (difference, difference, product)
+        // and the sum one more: a margin of 2^-60 of |xx| + |yy| decides (spans 1e-225..1e212
+        // spent a minute in GMP here in conforming bends); else GMP.
+        using LD = long double;
+        const LD lux = static_cast<LD>(q[0]) - p[0], luy = static_cast<LD>(q[1]) - p[1];
+        const LD lvx = static_cast<LD>(b[0]) - a[0], lvy = static_cast<LD>(b[1]) - a[1];
+        const LD lxx = lux * lvx, lyy = luy * lvy, le = lxx + lyy;
+        if (std::fabs(le) > std::ldexp(std::fabs(lxx) + std::fabs(lyy), -60))
+            return le > 0 ? Sign::Positive : Sign::Negative;
         using predicates::reference::exact;
         const mpq_class ux = exact(q[0]) - exact(p[0]), uy = exact(q[1]) - exact(p[1]);
         const mpq_class vx = exact(b[0]) - exact(a[0]), vy = exact(b[1]) - exact(a[1]);

@@ -30,15 +30,14 @@ CheckReport fail(std::string problem, TriIdx t = kNone, std::vector<VertIdx> ver
 }  // namespace
 
 bool within_rounding_of_segment(const double* w, const double* s0, const double* s1) {
-    // Half-widths t = 2^-40 max(|s0_x|, |s0_y|, |s1_x|, |s1_y|) (at least the smallest subnormal).
+    // Half-width t = 2^-40 max(|w_x|, |w_y|) (at least the smallest subnormal).
     // The box meets the closed segment iff it overlaps the segment's bounding box in x and in y and
     // the segment's line passes within the box's support in the normal direction n = (dy, -dx):
     // |(w - s0) x d| <= t_x |dy| + t_y |dx| (separating axes of a box and a segment). Long double
     // (64-bit significand, exponents to 2^16383) represents every difference and product of two
     // doubles' differences without overflow or underflow; each side then carries a relative
     // error below 2^-60 (a few roundings of 2^-64), so a margin of 2^-50 decides, else GMP.
-    const double m =
-        std::max({std::fabs(s0[0]), std::fabs(s0[1]), std::fabs(s1[0]), std::fabs(s1[1])});
+    const double m = std::max(std::fabs(w[0]), std::fabs(w[1]));
     const double t[2] = {std::max(std::ldexp(m, -40), std::numeric_limits<double>::denorm_min()),
                          std::max(std::ldexp(m, -40), std::numeric_limits<double>::denorm_min())};
     using LD = long double;

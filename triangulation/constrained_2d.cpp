@@ -675,10 +675,11 @@ bool CdtBuilder::bend_candidate(std::uint32_t segment, VertIdx a, VertIdx b, Ver
     if (w == kInfinite || w == a || w == b) return false;
     const double* s0 = mesh_.point(segment_ends_[segment][0]);
     const double* s1 = mesh_.point(segment_ends_[segment][1]);
+    // The distance test first: it rejects nearly every vertex a piece crosses, by its filter.
+    if (!within_rounding_of_segment(mesh_.point(w), s0, s1)) return false;
     const Sign from_a = direction_dot_sign(mesh_.point(a), mesh_.point(w), s0, s1);
     const Sign to_b = direction_dot_sign(mesh_.point(w), mesh_.point(b), s0, s1);
     if (from_a == Sign::Zero || from_a != to_b) return false;
-    if (!within_rounding_of_segment(mesh_.point(w), s0, s1)) return false;
     // A piece shared with other segments bends only where each of their chains may bend.
     for (const std::uint32_t other : shared_segments(a, b)) {
         if (other == segment) continue;
@@ -782,6 +783,23 @@ void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) 
             m[k] = tiny ? (pa[k] + pb[k]) * 0.5 : pa[k] * 0.5 + pb[k] * 0.5;
         }
     }
+    // The chain rule (§4): the split point must lie within rounding of the input segment and
+    // strictly between the piece's ends along it, exactly; a rounded midpoint of a piece far
+    // across the segment's direction may not (it moved back by an ulp of a coordinate that the
+    // segment's direction weighs 1e60 times more): then the piece is finer than doubles resolve.
+    {
+        const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
+        const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
+        // (A piece may run either way along its segment.)
+        const Sign from_a = direction_dot_sign(pa, m, s0, s1),
+                   to_b = direction_dot_sign(m, pb, s0, s1);
+        if (from_a == Sign::Zero || from_a != to_b || !within_rounding_of_segment(m, s0, s1)) {
+            throw GeometryError(
+                "conforming Delaunay: segment " + segment_name(piece.segment) +
+                " has a piece whose split point falls off its way (features finer than "
+                "double precision resolves)");
+        }
+    }
     // Walk from the end nearer the split point (a corner can have a large fan of thin
     // triangles: 60x fewer walk steps on fuzz input timeout-073fed0d than from the first end).
     const double da = std::fabs(m[0] - pa[0]) + std::fabs(m[1] - pa[1]);
@@ -800,6 +818,18 @@ void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) 
         if (at == piece.a || at == piece.b) {
             throw GeometryError("conforming Delaunay: segment " + segment_name(piece.segment) +
                                 " has a piece too short to split (adjacent doubles)");
+        }
+        // The split point rounds to an existing vertex: the chain may pass through it only if it
+        // progresses along the segment from a to b (exactly). Else the pieces a - at, at - b
+        // would lead back (PSLGs spanning 1e-225..1e212: a piece bent through one vertex had its
+        // midpoint round to the vertex beyond it, and the two tasks alternated 57,000 times).
+        const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
+        const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
+        const Sign from_a = direction_dot_sign(pa, mesh_.point(at), s0, s1);
+        if (from_a == Sign::Zero || from_a != direction_dot_sign(mesh_.point(at), pb, s0, s1)) {
+            throw GeometryError("conforming Delaunay: segment " + segment_name(piece.segment) +
+                                " has a piece whose split point rounds to a vertex off its way "
+                                "(features finer than double precision resolves)");
         }
     } else {
         const Cdt2Counters& c = result_.counters;

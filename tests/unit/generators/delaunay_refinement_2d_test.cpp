@@ -405,8 +405,8 @@ TEST(Generators_DelaunayRefinement, UlpWideFeatureOfTheTriangulationIsBentThroug
     // y = 4 at (2 - 2^-51, 4), one ulp from the lattice vertex (2, 4): no mesh can resolve that
     // gap. The piece bends through (2, 4), which lies within rounding of the diagonal by the
     // chain rule that the constrained triangulation and its check share
-    // (within_rounding_of_segment; issue 11): the mesh is valid (it was a GeometryError while
-    // the triangulation's bends and the check's chains followed different rules).
+    // (within_rounding_of_segment, 2^-40 of the vertex's coordinates; issue 11): the mesh is
+    // valid (it was a GeometryError while the two followed different rules).
     const gen::PslgInput p = gen::generate_pslg(gen::PslgDistribution::GridLines, 60, 30, 10);
     const Input in{p.xy, p.segments, p.holes, {}};
     // Overlapping segments: the support check's parity test of the domain does not apply.
