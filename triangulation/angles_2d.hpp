@@ -37,6 +37,11 @@ predicates::Sign compare_lengths(const double* p1, const double* q1, const doubl
 /// the encroachment test of Delaunay refinement [Ruppert95 §3].
 predicates::Sign corner_dot_sign(const double* o, const double* p, const double* q);
 
+/// Sign of the dot product (q - p) . (b - a), exact (finite coordinates): whether the step from
+/// p to q moves along the direction a -> b (Positive), across it (Zero) or against it.
+predicates::Sign direction_dot_sign(const double* p, const double* q, const double* a,
+                                    const double* b);
+
 /// The largest corner of the strictly counter-clockwise triangle (a, b, c): the corner opposite
 /// its longest side (law of sines), found with compare_lengths; ties go to the earliest of
 /// the corners at a, b, c.

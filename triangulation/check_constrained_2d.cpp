@@ -5,14 +5,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "predicates/exact_reference.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
+#include "triangulation/angles_2d.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -26,21 +29,67 @@ CheckReport fail(std::string problem, TriIdx t = kNone, std::vector<VertIdx> ver
 
 }  // namespace
 
+bool within_rounding_of_segment(const double* w, const double* s0, const double* s1) {
+    // Half-width t = 2^-40 max(|w_x|, |w_y|) (at least the smallest subnormal).
+    // The box meets the closed segment iff it overlaps the segment's bounding box in x and in y and
+    // the segment's line passes within the box's support in the normal direction n = (dy, -dx):
+    // |(w - s0) x d| <= t_x |dy| + t_y |dx| (separating axes of a box and a segment). Long double
+    // (64-bit significand, exponents to 2^16383) represents every difference and product of two
+    // doubles' differences without overflow or underflow; each side then carries a relative
+    // error below 2^-60 (a few roundings of 2^-64), so a margin of 2^-50 decides, else GMP.
+    const double m = std::max(std::fabs(w[0]), std::fabs(w[1]));
+    const double t[2] = {std::max(std::ldexp(m, -40), std::numeric_limits<double>::denorm_min()),
+                         std::max(std::ldexp(m, -40), std::numeric_limits<double>::denorm_min())};
+    using LD = long double;
+    for (int k = 0; k < 2; ++k) {
+        // Overlap in coordinate k: w_k - t_k <= max_k and w_k + t_k >= min_k, decided in long
+        // double with the same margin, else exactly.
+        const LD lo = std::min(s0[k], s1[k]), hi = std::max(s0[k], s1[k]);
+        const LD below = static_cast<LD>(w[k]) - t[k] - hi,
+                 above = lo - (static_cast<LD>(w[k]) + t[k]);
+        const LD scale = std::fabs(static_cast<LD>(w[k])) + t[k] + std::fabs(lo) + std::fabs(hi);
+        const LD margin = std::ldexp(scale, -50);
+        if (below > margin || above > margin) return false;
+        if (below < -margin && above < -margin) continue;
+        using predicates::reference::exact;
+        const mpq_class ew = exact(w[k]), et = exact(t[k]);
+        if (ew - et > exact(static_cast<double>(hi)) || ew + et < exact(static_cast<double>(lo)))
+            return false;
+    }
+    const LD dx = static_cast<LD>(s1[0]) - s0[0], dy = static_cast<LD>(s1[1]) - s0[1];
+    const LD ux = static_cast<LD>(w[0]) - s0[0], uy = static_cast<LD>(w[1]) - s0[1];
+    const LD cross = std::fabs(ux * dy - uy * dx);
+    const LD support = t[0] * std::fabs(dy) + t[1] * std::fabs(dx);
+    const LD margin = std::ldexp(std::fabs(ux * dy) + std::fabs(uy * dx) + support, -50);
+    if (cross - support > margin) return false;
+    if (cross - support < -margin) return true;
+    using predicates::reference::exact;
+    const mpq_class ex = exact(s1[0]) - exact(s0[0]), ey = exact(s1[1]) - exact(s0[1]);
+    const mpq_class c = (exact(w[0]) - exact(s0[0])) * ey - (exact(w[1]) - exact(s0[1])) * ex;
+    const mpq_class sup = exact(t[0]) * abs(ey) + exact(t[1]) * abs(ex);
+    return abs(c) <= sup;
+}
+
 namespace detail {
 
 CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
-                                      std::span<const VertIdx> segments, std::span<const VertIdx> pieces,
-                                      CheckNumbering numbering, bool delaunay) {
+                                      std::span<const VertIdx> segments,
+                                      std::span<const VertIdx> pieces, CheckNumbering numbering,
+                                      bool delaunay) {
     const std::uint32_t n = mesh.vertex_count();
     const TriIdx count = mesh.triangle_count();
     const auto& tv = mesh.triangles;
-    auto vertex = [&](VertIdx v) { return std::to_string(std::uint64_t{v} + numbering.first_vertex); };
+    auto vertex = [&](VertIdx v) {
+        return std::to_string(std::uint64_t{v} + numbering.first_vertex);
+    };
     auto triangle = [&](TriIdx t) {
-        return "triangle " + std::to_string(std::uint64_t{t} + numbering.first_triangle) + " (" + vertex(tv[3 * t]) +
-               ", " + vertex(tv[3 * t + 1]) + ", " + vertex(tv[3 * t + 2]) + ")";
+        return "triangle " + std::to_string(std::uint64_t{t} + numbering.first_triangle) + " (" +
+               vertex(tv[3 * t]) + ", " + vertex(tv[3 * t + 1]) + ", " + vertex(tv[3 * t + 2]) +
+               ")";
     };
     if (input_vertex_count > n) {
-        return fail(std::to_string(input_vertex_count) + " input vertices, but the mesh has only " + std::to_string(n));
+        return fail(std::to_string(input_vertex_count) + " input vertices, but the mesh has only " +
+                    std::to_string(n));
     }
     if (!mesh.constrained.empty() && mesh.constrained.size() != tv.size()) {
         return fail("constraint flags: " + std::to_string(mesh.constrained.size()) + " for " +
@@ -52,36 +101,43 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
     auto key = [](VertIdx a, VertIdx b) { return (std::uint64_t{a} << 32) | b; };
     for (TriIdx t = 0; t < count; ++t) {
         for (unsigned k = 0; k < 3; ++k) {
-            if (tv[3 * t + k] >= n) return fail(triangle(t) + " names a vertex that does not exist", t);
+            if (tv[3 * t + k] >= n)
+                return fail(triangle(t) + " names a vertex that does not exist", t);
         }
-        if (predicates::orient2d(mesh.point(tv[3 * t]), mesh.point(tv[3 * t + 1]), mesh.point(tv[3 * t + 2])) !=
-            Sign::Positive) {
+        if (predicates::orient2d(mesh.point(tv[3 * t]), mesh.point(tv[3 * t + 1]),
+                                 mesh.point(tv[3 * t + 2])) != Sign::Positive) {
             return fail(triangle(t) + " is not counter-clockwise (or is degenerate)", t);
         }
         for (unsigned k = 0; k < 3; ++k) {
             const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3];
             if (!edge_of.emplace(key(a, b), 3 * t + k).second) {
-                return fail("edge " + vertex(a) + " -> " + vertex(b) + " appears in two triangles (overlap)", t,
-                            {a, b});
+                return fail("edge " + vertex(a) + " -> " + vertex(b) +
+                                " appears in two triangles (overlap)",
+                            t, {a, b});
             }
         }
     }
     // Flags symmetric; unconstrained interior edges locally Delaunay (when asked).
     for (TriIdx t = 0; t < count; ++t) {
         for (unsigned k = 0; k < 3; ++k) {
-            const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3], c = tv[3 * t + (k + 2) % 3];
+            const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3],
+                          c = tv[3 * t + (k + 2) % 3];
             const auto other = edge_of.find(key(b, a));
             if (other == edge_of.end()) continue;
             const EdgeIdx f = other->second;
             const bool constrained = mesh.is_constrained(t, static_cast<int>(k));
             if (constrained != mesh.is_constrained(triangle_of(f), static_cast<int>(f % 3))) {
-                return fail("edge " + vertex(a) + " - " + vertex(b) + " is constrained on one side only", t, {a, b});
+                return fail(
+                    "edge " + vertex(a) + " - " + vertex(b) + " is constrained on one side only", t,
+                    {a, b});
             }
             if (!delaunay || constrained || a > b) continue;
             const VertIdx d = tv[3 * triangle_of(f) + (f % 3 + 2) % 3];
-            if (predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d)) == Sign::Positive) {
-                return fail("unconstrained edge " + vertex(a) + " - " + vertex(b) + " is not locally Delaunay: vertex " +
-                                vertex(d) + " lies inside the circumcircle of " + triangle(t),
+            if (predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d)) ==
+                Sign::Positive) {
+                return fail("unconstrained edge " + vertex(a) + " - " + vertex(b) +
+                                " is not locally Delaunay: vertex " + vertex(d) +
+                                " lies inside the circumcircle of " + triangle(t),
                             t, {a, b, c, d});
             }
         }
@@ -97,7 +153,8 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
     if (pieces.empty()) {
         for (TriIdx t = 0; t < count; ++t) {
             for (unsigned k = 0; k < 3; ++k) {
-                if (mesh.is_constrained(t, static_cast<int>(k))) add_piece(tv[3 * t + k], tv[3 * t + (k + 1) % 3]);
+                if (mesh.is_constrained(t, static_cast<int>(k)))
+                    add_piece(tv[3 * t + k], tv[3 * t + (k + 1) % 3]);
             }
         }
     } else {
@@ -108,14 +165,16 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
         for (std::size_t p = 0; 2 * p + 1 < pieces.size(); ++p) {
             const VertIdx a = pieces[2 * p], b = pieces[2 * p + 1];
             const std::string name = "piece " + vertex(a) + " - " + vertex(b);
-            if (a >= n || b >= n || a == b) return fail(name + " is not an edge between two distinct vertices");
+            if (a >= n || b >= n || a == b)
+                return fail(name + " is not an edge between two distinct vertices");
             add_piece(a, b);
             const auto e = edge_of.find(key(a, b));
             const auto f = edge_of.find(key(b, a));
             if (e != edge_of.end() || f != edge_of.end()) {
                 const EdgeIdx g = e != edge_of.end() ? e->second : f->second;
                 if (!mesh.is_constrained(triangle_of(g), static_cast<int>(g % 3))) {
-                    return fail(name + " is an edge of the mesh but not constrained", triangle_of(g), {a, b});
+                    return fail(name + " is an edge of the mesh but not constrained",
+                                triangle_of(g), {a, b});
                 }
                 continue;
             }
@@ -125,10 +184,13 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
                     unsigned k = 0;
                     while (tv[3 * t + k] != from) ++k;
                     const VertIdx x = tv[3 * t + (k + 1) % 3], y = tv[3 * t + (k + 2) % 3];
-                    const Sign sx = predicates::orient2d(mesh.point(from), mesh.point(x), mesh.point(to));
-                    const Sign sy = predicates::orient2d(mesh.point(from), mesh.point(y), mesh.point(to));
+                    const Sign sx =
+                        predicates::orient2d(mesh.point(from), mesh.point(x), mesh.point(to));
+                    const Sign sy =
+                        predicates::orient2d(mesh.point(from), mesh.point(y), mesh.point(to));
                     if (sx == Sign::Positive && sy == Sign::Negative) {
-                        return fail(name + " is not an edge of the mesh but enters " + triangle(t), t, {a, b});
+                        return fail(name + " is not an edge of the mesh but enters " + triangle(t),
+                                    t, {a, b});
                     }
                 }
             }
@@ -139,19 +201,14 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
                 const VertIdx a = tv[3 * t + k], b = tv[3 * t + (k + 1) % 3];
                 const auto& na = constrained_neighbors[a];
                 if (std::find(na.begin(), na.end(), b) == na.end()) {
-                    return fail("constrained edge " + vertex(a) + " - " + vertex(b) + " is no piece of a segment", t,
-                                {a, b});
+                    return fail("constrained edge " + vertex(a) + " - " + vertex(b) +
+                                    " is no piece of a segment",
+                                t, {a, b});
                 }
             }
         }
     }
-    // Segments: chains of pieces.
-    double extent = 0;
-    for (double c : mesh.xy) extent = std::max(extent, std::fabs(c));
-    // Relative to the coordinates, floored by the absolute rounding error of a subnormal result
-    // (half of 2^-1074 per coordinate): at subnormal extents 2^-40 of it rounds to 0 and a
-    // rounded split point (5e-324 off a segment of length 1e-312: fuzz, 2026-11-23) would fail.
-    const double tolerance = std::max(std::ldexp(extent, -40), 0x1p-1070);
+    // Segments: chains of pieces (the rule: within_rounding_of_segment and exact progress).
     std::vector<std::uint32_t> visited(n, 0);  // segment number + 1 of the last search that met v
     // A segment may name a duplicate point that no triangle uses: follow the copy that is used
     // (a vertex of a triangle or of a piece) at the same coordinates.
@@ -164,7 +221,8 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
     // ((-1, -4) and (-4, -1): fuzz_constrained_2d, 2026-11-23).
     std::map<std::pair<std::uint64_t, std::uint64_t>, VertIdx> used_at;
     auto point_key = [&](VertIdx v) {
-        const double x = mesh.point(v)[0] + 0.0, y = mesh.point(v)[1] + 0.0;  // -0 as +0, as == compares
+        const double x = mesh.point(v)[0] + 0.0,
+                     y = mesh.point(v)[1] + 0.0;  // -0 as +0, as == compares
         std::pair<std::uint64_t, std::uint64_t> k;
         std::memcpy(&k.first, &x, 8);
         std::memcpy(&k.second, &y, 8);
@@ -181,24 +239,18 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
     for (std::size_t s = 0; 2 * s + 1 < segments.size(); ++s) {
         const std::string name = "segment " + std::to_string(s + numbering.first_vertex) + " (" +
                                  vertex(segments[2 * s]) + ", " + vertex(segments[2 * s + 1]) + ")";
-        if (segments[2 * s] >= n || segments[2 * s + 1] >= n) return fail(name + " names a vertex that does not exist");
+        if (segments[2 * s] >= n || segments[2 * s + 1] >= n)
+            return fail(name + " names a vertex that does not exist");
         const VertIdx a = canonical(segments[2 * s]), b = canonical(segments[2 * s + 1]);
         const double* pa = mesh.point(a);
         const double* pb = mesh.point(b);
         if (pa[0] == pb[0] && pa[1] == pb[1]) continue;
-        const long double dx = static_cast<long double>(pb[0]) - pa[0], dy = static_cast<long double>(pb[1]) - pa[1];
-        const long double length = std::sqrt(dx * dx + dy * dy);
-        auto along = [&](VertIdx v) {
-            return (static_cast<long double>(mesh.point(v)[0]) - pa[0]) * dx +
-                   (static_cast<long double>(mesh.point(v)[1]) - pa[1]) * dy;
-        };
         auto near_line = [&](VertIdx v) {
-            if (predicates::orient2d(pa, pb, mesh.point(v)) == Sign::Zero) return true;
-            // Off the line: an added vertex (rounded), or an input vertex that a piece bent by
-            // a rounded crossing passes through exactly. Both lie within rounding of the line.
-            const long double cross = (static_cast<long double>(mesh.point(v)[0]) - pa[0]) * dy -
-                                      (static_cast<long double>(mesh.point(v)[1]) - pa[1]) * dx;
-            return std::fabs(static_cast<double>(cross / length)) <= tolerance;
+            return within_rounding_of_segment(mesh.point(v), pa, pb);
+        };
+        // The step current -> w does not move against a -> b (exact).
+        auto onward = [&](VertIdx current, VertIdx w) {
+            return direction_dot_sign(mesh.point(current), mesh.point(w), pa, pb) != Sign::Negative;
         };
         // Depth-first search over constrained pieces never moving away from b, each vertex
         // expanded once: near-collinear vertices can offer several ways on.
@@ -210,25 +262,29 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
         while (!stack.empty() && !found) {
             const VertIdx current = stack.back();
             stack.pop_back();
-            if (along(current) > along(farthest)) farthest = current;
+            if (direction_dot_sign(mesh.point(farthest), mesh.point(current), pa, pb) ==
+                Sign::Positive) {
+                farthest = current;
+            }
             for (const VertIdx w : constrained_neighbors[current]) {
                 if (w == b) {
                     found = true;
                     break;
                 }
                 if (visited[w] == stamp) continue;
-                // Not backwards (equal projections allowed: long double cannot separate points of very
-                // different magnitudes; the visited stamps keep the search finite).
-                if (along(w) >= along(current) && near_line(w)) {
+                // Not backwards (a step across the direction allowed; the visited stamps keep the
+                // search finite).
+                if (onward(current, w) && near_line(w)) {
                     visited[w] = stamp;
                     stack.push_back(w);
                 }
             }
         }
         if (!found) {
-            return fail(name + " is missing: no chain of constrained pieces continues it beyond vertex " +
-                            vertex(farthest),
-                        kNone, {a, b, farthest});
+            return fail(
+                name + " is missing: no chain of constrained pieces continues it beyond vertex " +
+                    vertex(farthest),
+                kNone, {a, b, farthest});
         }
     }
     return {};
@@ -236,10 +292,13 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
 
 }  // namespace detail
 
-CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
-                                          std::span<const VertIdx> segments, std::span<const VertIdx> pieces,
+CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh,
+                                          std::uint32_t input_vertex_count,
+                                          std::span<const VertIdx> segments,
+                                          std::span<const VertIdx> pieces,
                                           CheckNumbering numbering) {
-    return detail::check_constrained_mesh_2d(mesh, input_vertex_count, segments, pieces, numbering, true);
+    return detail::check_constrained_mesh_2d(mesh, input_vertex_count, segments, pieces, numbering,
+                                             true);
 }
 
 }  // namespace exactmesh::triangulation

@@ -21,29 +21,41 @@ namespace exactmesh::triangulation {
 /// @param input_vertex_count vertices [0, input_vertex_count) are the input's; the others were
 ///        added (segment intersections, midpoints) and may lie off a segment by rounding.
 /// @param segments 2·#S input segments (0-based). Each must be covered by a chain of pieces from
-///        one endpoint to the other. A chain may pass through input vertices exactly on the
-///        segment (exact orient2d), and through any vertex within 2^-40 of the coordinates'
-///        largest magnitude (at least 2^-1070) from its line: added vertices are rounded (and may be split
-///        again), and a piece between rounded vertices may pass exactly through an input
-///        vertex that is not exactly on the segment. No step moves away from b (projections
-///        in long double).
+///        one endpoint to the other, through vertices within_rounding_of_segment (which includes
+///        every point of the segment: added vertices are rounded, and a piece between rounded
+///        vertices may pass exactly through an input vertex that is not exactly on the segment).
+///        No step moves against the segment's direction: (w - v) . (b - a) >= 0, exactly.
 ///        Zero-length segments are skipped.
 /// @param pieces 2·#P constrained edges as the producer reports them (Cdt2Result::pieces), or
 ///        empty: then the pieces are the flagged edges of the mesh, and every segment must be
 ///        meshed (convex-hull outputs). With pieces given, parts of segments may lie in removed
 ///        regions: each piece must be a flagged edge of the mesh, or not an edge of it and not
 ///        entering any triangle at its endpoints; and every flagged edge must be a piece.
-CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
+CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh,
+                                          std::uint32_t input_vertex_count,
                                           std::span<const VertIdx> segments,
                                           std::span<const VertIdx> pieces = {},
                                           CheckNumbering numbering = {});
+
+/// The one rule for the vertices of a segment's chain, shared by the constrained triangulation
+/// (where it bends a segment through a vertex) and check_constrained_delaunay_2d (where it accepts
+/// one); proofs/invariants/constrained_delaunay.md §4. Vertex w lies within rounding of the closed
+/// segment [s0, s1] when the square centred at w with half-width t = 2^-40 max(|w_x|, |w_y|) (at
+/// least 2^-1074) meets the segment: relative to w itself, so that a long segment's large far end
+/// does not make everything near its small end "within rounding" (a segment spanning
+/// 1e-109..1e194 bent along a perpendicular chain 1e-9 away); ample for the points constructed
+/// on it (a crossing rounded once lies within half an ulp of w, a rounded split point a few).
+/// Exact (a long double filter with a proven margin, else GMP), and invariant under scaling by
+/// 2^k while t is not subnormal.
+bool within_rounding_of_segment(const double* w, const double* s0, const double* s1);
 
 namespace detail {
 /// check_constrained_delaunay_2d; with delaunay false, without the locally-Delaunay test
 /// (check_conforming_mesh_2d adds its own tests).
 CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t input_vertex_count,
-                                      std::span<const VertIdx> segments, std::span<const VertIdx> pieces,
-                                      CheckNumbering numbering, bool delaunay);
+                                      std::span<const VertIdx> segments,
+                                      std::span<const VertIdx> pieces, CheckNumbering numbering,
+                                      bool delaunay);
 }  // namespace detail
 
 }  // namespace exactmesh::triangulation

@@ -9,6 +9,7 @@
 #include "triangulation/constrained_2d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <string>
@@ -19,6 +20,8 @@
 #include "predicates/errors.hpp"
 #include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
+#include "triangulation/angles_2d.hpp"
+#include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d_builder.hpp"
 #include "triangulation/delaunay_2d_core.hpp"
 #include "triangulation/green_sibson_2d.hpp"
@@ -37,9 +40,12 @@ SegmentRecovery segment_recovery_from_name(std::string_view name) {
 
 const char* segment_recovery_name(SegmentRecovery recovery) {
     switch (recovery) {
-        case SegmentRecovery::Swap: return "swap";
-        case SegmentRecovery::Cavity: return "cavity";
-        case SegmentRecovery::Conforming: return "conforming";
+        case SegmentRecovery::Swap:
+            return "swap";
+        case SegmentRecovery::Cavity:
+            return "cavity";
+        case SegmentRecovery::Conforming:
+            return "conforming";
     }
     return "?";
 }
@@ -55,8 +61,8 @@ std::string number_text(double value) {
 void require_finite_items(std::span<const double> values, std::size_t stride, const char* what) {
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!std::isfinite(values[i])) {
-            throw InputError(std::string(what) + " " + std::to_string(i / stride) + ": non-finite value " +
-                             number_text(values[i]));
+            throw InputError(std::string(what) + " " + std::to_string(i / stride) +
+                             ": non-finite value " + number_text(values[i]));
         }
     }
 }
@@ -65,13 +71,13 @@ void require_finite_items(std::span<const double> values, std::size_t stride, co
 
 namespace detail {
 
-
 // ---------------------------------------------------------------------------------------------
 
 void CdtBuilder::split_triangle(TriIdx t, VertIdx p) {
     const VertIdx a = mesh_.tv[3 * t], b = mesh_.tv[3 * t + 1], c = mesh_.tv[3 * t + 2];
     const EdgeIdx x = mesh_.twin[3 * t], y = mesh_.twin[3 * t + 1], z = mesh_.twin[3 * t + 2];
-    const std::uint32_t sx = segment_of_[3 * t], sy = segment_of_[3 * t + 1], sz = segment_of_[3 * t + 2];
+    const std::uint32_t sx = segment_of_[3 * t], sy = segment_of_[3 * t + 1],
+                        sz = segment_of_[3 * t + 2];
     const TriIdx t1 = t, t2 = new_triangle(), t3 = new_triangle();
     put_on_side(t2, side_of(t));
     put_on_side(t3, side_of(t));
@@ -98,6 +104,8 @@ void CdtBuilder::split_edge(EdgeIdx e, VertIdx p) {
     const std::uint32_t sbc = segment_of_[next_edge(e)], sca = segment_of_[prev_edge(e)];
     const std::uint32_t sad = segment_of_[next_edge(f)], sdb = segment_of_[prev_edge(f)];
     const std::uint32_t split = segment_of_[e];  // both halves of a split segment keep it
+    const std::vector<std::uint32_t> split_shared =
+        split == kNone ? std::vector<std::uint32_t>{} : release_shared(a, b);
     // Slot u takes a triangle on t's side: the sides are read first.
     const Side side_t = side_of(t), side_u = side_of(u);
     const TriIdx t1 = t, t2 = u, t3 = new_triangle(), t4 = new_triangle();
@@ -116,6 +124,10 @@ void CdtBuilder::split_edge(EdgeIdx e, VertIdx p) {
     link_inner(3 * t2 + 2, 3 * t3, split);  // a - p
     link_inner(3 * t3 + 2, 3 * t4);
     link_inner(3 * t4 + 2, 3 * t1, split);  // b - p
+    for (const std::uint32_t other : split_shared) {
+        mark(3 * t2 + 2, other);
+        mark(3 * t4 + 2, other);
+    }
     flip_stack_.insert(flip_stack_.end(), {t1, t2, t3, t4});
     core_.last_triangle = t1;
 }
@@ -225,8 +237,9 @@ void CdtBuilder::guard() {
     // Every legitimate step is paid for by an input segment, a vertex or a split; a run that
     // exceeds this budget is looping on rounded intersections: report instead of hanging.
     const Cdt2Counters& c = result_.counters;
-    const std::uint64_t budget =
-        64 * (c.segments + c.points + c.intersections + c.vertices_on_segments + c.conforming_splits) + 100000;
+    const std::uint64_t budget = 64 * (c.segments + c.points + c.intersections +
+                                       c.vertices_on_segments + c.conforming_splits) +
+                                 100000;
     if (++work_done_ > budget) {
         throw GeometryError("constrained_delaunay_2d: segment recovery did not converge after " +
                             std::to_string(work_done_) + " steps (please report the input)");
@@ -305,12 +318,58 @@ void CdtBuilder::insert_piece(const Piece& piece) {
     }
 }
 
+namespace {
+
+/// p lies in the closed axis-parallel box of a and b (exact comparisons).
+bool in_box(const double* p, const double* a, const double* b) {
+    for (int k = 0; k < 2; ++k) {
+        if (p[k] < std::min(a[k], b[k]) || p[k] > std::max(a[k], b[k])) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::array<double, 2> CdtBuilder::crossing_point(const Piece& piece, VertIdx u, VertIdx v,
+                                                 std::uint32_t other) {
+    // The rule (proofs/invariants/constrained_delaunay.md §4): the pieces a - b of segment S and
+    // u - v of segment T cross. When the INPUT segments S and T have exactly one common point X,
+    // the vertex is X rounded once to the nearest doubles (predicates::segment_intersection is
+    // exact and correctly rounded at every magnitude), provided it lies in the closed coordinate
+    // boxes of both pieces. Rounding is monotone per coordinate, so the rounded crossings of a
+    // segment keep their order along it, weakly: every vertex of S's chain then lies in the box of
+    // its neighbours, the chain is monotone in both coordinates, and no piece is ever split
+    // outside its own box. Otherwise the two pieces cross only because earlier roundings bent them
+    // (S and T are parallel, or meet elsewhere, or not at all: an endpoint of one lies within
+    // rounding of the other): then the pieces' own intersection, rounded once, which lies in both
+    // boxes. Each split adds a vertex in both boxes (or merges with an equal one), so every chain
+    // stays monotone; the first kind adds at most one vertex per pair of segments, and the guard
+    // (GeometryError) bounds the second.
+    const double* a = mesh_.point(piece.a);
+    const double* b = mesh_.point(piece.b);
+    const double* pu = mesh_.point(u);
+    const double* pv = mesh_.point(v);
+    const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
+    const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
+    const double* t0 = mesh_.point(segment_ends_[other][0]);
+    const double* t1 = mesh_.point(segment_ends_[other][1]);
+    const Sign o0 = predicates::orient2d(t0, t1, s0), o1 = predicates::orient2d(t0, t1, s1);
+    const Sign o2 = predicates::orient2d(s0, s1, t0), o3 = predicates::orient2d(s0, s1, t1);
+    const bool meet = !(o0 == Sign::Zero && o1 == Sign::Zero) && (o0 != o1 || o0 == Sign::Zero) &&
+                      (o2 != o3 || o2 == Sign::Zero);
+    if (meet) {
+        const auto x = predicates::segment_intersection(s0, s1, t0, t1);
+        if (in_box(x.data(), a, b) && in_box(x.data(), pu, pv)) return x;
+    }
+    ++result_.counters.bent_crossings;
+    return predicates::segment_intersection(a, b, pu, pv);
+}
+
 void CdtBuilder::split_at_intersection(const Piece& piece, EdgeIdx h) {
     const VertIdx a = piece.a, b = piece.b;
     const VertIdx u = mesh_.origin(h), v = mesh_.destination(h);
     const std::uint32_t other = segment_of_[h];
-    const auto p = predicates::segment_intersection(mesh_.point(a), mesh_.point(b), mesh_.point(u),
-                                                    mesh_.point(v));
+    const std::array<double, 2> p = crossing_point(piece, u, v, other);
     // The rounded point may equal a vertex (then both segments bend through it).
     const VertIdx candidate = add_vertex(p[0], p[1]);
     core_.last_triangle = triangle_of(h);
@@ -323,6 +382,7 @@ void CdtBuilder::split_at_intersection(const Piece& piece, EdgeIdx h) {
         }
     }
     segment_of_[h] = segment_of_[mesh_.twin[h]] = kNone;
+    const std::vector<std::uint32_t> also = release_shared(u, v);
     if (at != candidate) {
         remove_last_vertex();
         ++result_.counters.vertices_on_segments;
@@ -332,19 +392,25 @@ void CdtBuilder::split_at_intersection(const Piece& piece, EdgeIdx h) {
     } else {
         const std::uint64_t segments = result_.counters.segments;
         if (++result_.counters.intersections > segments * (segments + 1) / 2 + 1000) {
-            throw GeometryError("constrained_delaunay_2d: more segment intersections than pairs of "
-                                "segments; recovery is looping (please report the input)");
+            throw GeometryError(
+                "constrained_delaunay_2d: more segment intersections than pairs of "
+                "segments; recovery is looping (please report the input)");
         }
         insert_vertex(candidate, t);
-        result_.warnings.push_back("segments " + segment_name(piece.segment) + " and " + segment_name(other) +
-                                   " cross; split at new vertex " +
-                                   std::to_string(core_.input_index[candidate] + options_.first_index) + " (" +
-                                   number_text(p[0]) + ", " + number_text(p[1]) + ")");
+        result_.warnings.push_back(
+            "segments " + segment_name(piece.segment) + " and " + segment_name(other) +
+            " cross; split at new vertex " +
+            std::to_string(core_.input_index[candidate] + options_.first_index) + " (" +
+            number_text(p[0]) + ", " + number_text(p[1]) + ")");
     }
     // u - v, no longer constrained, may not be locally Delaunay (the new vertex need not be
     // next to it): restore before recovering the four pieces.
     std::vector<std::pair<VertIdx, VertIdx>> released{{u, v}};
     restore_delaunay(released);
+    for (const std::uint32_t s : also) {
+        work_.push_back({u, at, s});
+        work_.push_back({at, v, s});
+    }
     work_.push_back({u, at, other});
     work_.push_back({at, v, other});
     work_.push_back({at, b, piece.segment});
@@ -421,10 +487,22 @@ void CdtBuilder::recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx
     auto key = [](VertIdx p, VertIdx q) { return (std::uint64_t{p} << 32) | q; };
     if (in_cavity_.size() < mesh_.triangle_slots()) in_cavity_.resize(mesh_.triangle_slots(), 0);
     for (const TriIdx t : cavity) in_cavity_[t] = 1;
+    // Constrained edges with a cavity triangle on both sides: the segment crosses the whole star
+    // of a vertex but one edge, that edge being a piece (e.g. vertex w inside triangle x, y, z,
+    // the segment separating {w, z} from {x, y}: it crosses x - z, x - w, y - w, y - z, and w - z
+    // dangles into the cavity; PSLGs spanning 1e-225..1e212, where the triangles are extreme).
+    // The pseudo-polygon's chain then visits z, w, z, its retriangulation has w - z again, and
+    // the edge must keep its constraint (it was lost: a piece missing from the output).
+    std::unordered_map<std::uint64_t, std::uint32_t> dangling;
     for (const TriIdx t : cavity) {
         for (unsigned k = 0; k < 3; ++k) {
             const EdgeIdx g = 3 * t + k;
-            if (in_cavity_[triangle_of(mesh_.twin[g])]) continue;
+            if (in_cavity_[triangle_of(mesh_.twin[g])]) {
+                const VertIdx p = mesh_.origin(g), q = mesh_.destination(g);
+                if (segment_of_[g] != kNone)
+                    dangling[key(std::min(p, q), std::max(p, q))] = segment_of_[g];
+                continue;
+            }
             boundary[key(mesh_.origin(g), mesh_.destination(g))] = {mesh_.twin[g], segment_of_[g]};
         }
     }
@@ -451,7 +529,13 @@ void CdtBuilder::recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx
             }
             const auto twin = open.find(key(q, p));
             if (twin != open.end()) {
-                link_inner(e, twin->second);
+                const auto kept = dangling.find(key(std::min(p, q), std::max(p, q)));
+                if (kept != dangling.end()) {
+                    link_inner(e, twin->second, kept->second);
+                    dangling.erase(kept);
+                } else {
+                    link_inner(e, twin->second);
+                }
                 open.erase(twin);
             } else {
                 open.emplace(key(p, q), e);
@@ -459,6 +543,7 @@ void CdtBuilder::recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx
         }
     }
     EM_ASSERT(open.empty());
+    EM_ASSERT(dangling.empty());  // every constrained edge inside the cavity is an edge again
     mark(find_edge(a, b), piece.segment);
 }
 
@@ -476,19 +561,22 @@ void CdtBuilder::prepare_segments() {
         const VertIdx a = mesh_of[core_.merged_into[i]], b = mesh_of[core_.merged_into[j]];
         if (a == b) {
             ++result_.counters.dropped_segments;
-            result_.warnings.push_back("segment " + segment_name(static_cast<std::uint32_t>(s)) + " has zero length (vertices " +
+            result_.warnings.push_back("segment " + segment_name(static_cast<std::uint32_t>(s)) +
+                                       " has zero length (vertices " +
                                        std::to_string(i + options_.first_index) + " and " +
                                        std::to_string(j + options_.first_index) + "); ignored");
             continue;
         }
-        keyed.emplace_back((std::uint64_t{std::min(a, b)} << 32) | std::max(a, b), static_cast<std::uint32_t>(s));
+        keyed.emplace_back((std::uint64_t{std::min(a, b)} << 32) | std::max(a, b),
+                           static_cast<std::uint32_t>(s));
     }
     std::sort(keyed.begin(), keyed.end());
     for (std::size_t k = 0; k < keyed.size(); ++k) {
         const std::uint32_t s = keyed[k].second;
         if (k > 0 && keyed[k - 1].first == keyed[k].first) {
             ++result_.counters.dropped_segments;
-            result_.warnings.push_back("segment " + segment_name(s) + " repeats segment " + segment_name(keyed[k - 1].second) + "; ignored");
+            result_.warnings.push_back("segment " + segment_name(s) + " repeats segment " +
+                                       segment_name(keyed[k - 1].second) + "; ignored");
             continue;
         }
         const VertIdx i = pslg_.segments[2 * s], j = pslg_.segments[2 * s + 1];
@@ -496,7 +584,8 @@ void CdtBuilder::prepare_segments() {
         segment_ends_[s] = {work_.back().a, work_.back().b};
     }
     // Process in input order (the work list is a stack).
-    std::sort(work_.begin(), work_.end(), [](const Piece& p, const Piece& q) { return p.segment > q.segment; });
+    std::sort(work_.begin(), work_.end(),
+              [](const Piece& p, const Piece& q) { return p.segment > q.segment; });
 }
 
 void CdtBuilder::conform() {
@@ -512,10 +601,14 @@ void CdtBuilder::conform() {
             const VertIdx p = mesh_.origin(e), q = mesh_.destination(e);
             if (p == kInfinite || q == kInfinite || p > q) continue;
             edges.emplace_back(p, q);
-            if (segment_of_[e] != kNone) pieces.push_back({p, q, segment_of_[e]});
+            if (segment_of_[e] != kNone) {
+                pieces.push_back({p, q, segment_of_[e]});
+                for (const std::uint32_t s : shared_segments(p, q)) pieces.push_back({p, q, s});
+            }
         }
     }
     std::fill(segment_of_.begin(), segment_of_.end(), kNone);
+    shared_.clear();
     restore_delaunay(edges);
     // Every present piece is marked; Lawson flips never remove a marked edge but report it when
     // a new vertex makes it not locally Delaunay (flip_if_needed), and such a piece is split
@@ -544,8 +637,13 @@ void CdtBuilder::conform() {
                     continue;
                 }
                 if (locally_delaunay(present)) continue;
-                // Released and flipped (it is not locally Delaunay), then split like a missing piece.
+                // Released and flipped (it is not locally Delaunay), then split like a missing
+                // piece.
                 segment_of_[present] = segment_of_[mesh_.twin[present]] = kNone;
+                // The other segments whose chains shared the piece recover it again themselves.
+                for (const std::uint32_t s : release_shared(piece.a, piece.b)) {
+                    if (s != piece.segment) tasks.push_back({{piece.a, piece.b, s}, false});
+                }
                 std::vector<std::pair<VertIdx, VertIdx>> edge{{piece.a, piece.b}};
                 restore_delaunay(edge);
             }
@@ -571,33 +669,42 @@ void CdtBuilder::conform() {
     conforming_ = false;
 }
 
+bool CdtBuilder::bend_candidate(std::uint32_t segment, VertIdx a, VertIdx b, VertIdx w) const {
+    // The chain rule of check_constrained_delaunay_2d (within_rounding_of_segment, exact progress
+    // along the input segment), so that every bend the triangulation makes is a chain the check
+    // accepts: w within rounding of the input segment and strictly between a and b along it.
+    if (w == kInfinite || w == a || w == b) return false;
+    const double* s0 = mesh_.point(segment_ends_[segment][0]);
+    const double* s1 = mesh_.point(segment_ends_[segment][1]);
+    // The distance test first: it rejects nearly every vertex a piece crosses, by its filter.
+    if (!within_rounding_of_segment(mesh_.point(w), s0, s1)) return false;
+    const Sign from_a = direction_dot_sign(mesh_.point(a), mesh_.point(w), s0, s1);
+    const Sign to_b = direction_dot_sign(mesh_.point(w), mesh_.point(b), s0, s1);
+    if (from_a == Sign::Zero || from_a != to_b) return false;
+    // A piece shared with other segments bends only where each of their chains may bend.
+    for (const std::uint32_t other : shared_segments(a, b)) {
+        if (other == segment) continue;
+        const double* t0 = mesh_.point(segment_ends_[other][0]);
+        const double* t1 = mesh_.point(segment_ends_[other][1]);
+        const Sign o_from_a = direction_dot_sign(mesh_.point(a), mesh_.point(w), t0, t1);
+        const Sign o_to_b = direction_dot_sign(mesh_.point(w), mesh_.point(b), t0, t1);
+        if (o_from_a == Sign::Zero || o_from_a != o_to_b) return false;
+        if (!within_rounding_of_segment(mesh_.point(w), t0, t1)) return false;
+    }
+    return true;
+}
+
 VertIdx CdtBuilder::vertex_near_segment(const Piece& piece) {
     const VertIdx a = piece.a, b = piece.b;
-    // The original segment's line, in long double (as check_constrained_delaunay_2d measures).
     const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
     const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
-    const long double dx = static_cast<long double>(s1[0]) - s0[0], dy = static_cast<long double>(s1[1]) - s0[1];
-    const long double length = std::sqrt(dx * dx + dy * dy);
-    const double magnitude = std::max({std::fabs(s0[0]), std::fabs(s0[1]), std::fabs(s1[0]), std::fabs(s1[1])});
-    const long double tolerance = std::ldexp(static_cast<long double>(magnitude), -46);
-    auto along = [&](VertIdx v) {
-        return (static_cast<long double>(mesh_.point(v)[0]) - s0[0]) * dx +
-               (static_cast<long double>(mesh_.point(v)[1]) - s0[1]) * dy;
-    };
-    const long double lo = std::min(along(a), along(b)), hi = std::max(along(a), along(b));
+    // Among the vertices the piece crosses that may bend it, the first along the segment.
     VertIdx best = kNone;
-    long double best_distance = tolerance;
     auto consider = [&](VertIdx v) {
-        if (v == kInfinite || v == a || v == b) return;
-        const long double t = along(v);
-        if (!(t > lo && t < hi)) return;
-        const long double cross = (static_cast<long double>(mesh_.point(v)[0]) - s0[0]) * dy -
-                                  (static_cast<long double>(mesh_.point(v)[1]) - s0[1]) * dx;
-        const long double distance = std::fabs(cross / length);
-        if (distance <= best_distance) {
-            best_distance = distance;
+        if (!bend_candidate(piece.segment, a, b, v)) return;
+        if (best == kNone ||
+            direction_dot_sign(mesh_.point(v), mesh_.point(best), s0, s1) == Sign::Positive)
             best = v;
-        }
     };
     // The edges the piece crosses, as insert_piece walks them; a vertex exactly on the piece
     // ends the walk (it is the answer).
@@ -628,8 +735,8 @@ constexpr std::uint64_t kSplitsPerFeature = 64;
 constexpr std::uint64_t kSplitsBase = 4096;
 
 void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) {
-    // A vertex the piece crosses within rounding of its segment (2^-46 of the segment's
-    // coordinates; the checker allows 2^-40) is where the piece bends: (6, 8) on a grid line
+    // A vertex the piece crosses within rounding of its segment (the check's chain rule,
+    // bend_candidate) is where the piece bends: (6, 8) on a grid line
     // whose other end is a rounded crossing at (7 - 2^-50, 7) in grid-lines seed 5, where new
     // points would home in on it until no double is left between.
     const VertIdx near = vertex_near_segment(piece);
@@ -652,7 +759,8 @@ void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) 
     // out of the comfortable double range, the correctly rounded midpoint, whose error is
     // smaller (segments a few ulps apart: ReleasedConstraintIsMadeDelaunayAgain).
     auto corner = [&](VertIdx v) { return v < input_count_ ? segment_degree_[v] : 0u; };
-    const std::uint32_t ca = corner(piece.a) >= 2 ? corner(piece.a) : 0, cb = corner(piece.b) >= 2 ? corner(piece.b) : 0;
+    const std::uint32_t ca = corner(piece.a) >= 2 ? corner(piece.a) : 0,
+                        cb = corner(piece.b) >= 2 ? corner(piece.b) : 0;
     const int apex_end = ca == cb ? -1 : (ca > cb ? 0 : 1);  // 0: piece.a, 1: piece.b
     bool shell = false;
     if (apex_end >= 0) {
@@ -661,7 +769,8 @@ void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) 
         const double dx = far[0] - apex[0], dy = far[1] - apex[1];
         const double length = std::hypot(dx, dy);
         if (std::isfinite(dx) && std::isfinite(dy) && length > 0x1p-900 && length < 0x1p900) {
-            const double ratio = std::ldexp(1.0, static_cast<int>(std::lround(std::log2(length / 2)))) / length;
+            const double ratio =
+                std::ldexp(1.0, static_cast<int>(std::lround(std::log2(length / 2)))) / length;
             m[0] = apex[0] + dx * ratio;
             m[1] = apex[1] + dy * ratio;
             shell = true;
@@ -673,6 +782,23 @@ void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) 
             // cannot overflow at such magnitudes).
             const bool tiny = std::fabs(pa[k]) < 0x1p-1000 || std::fabs(pb[k]) < 0x1p-1000;
             m[k] = tiny ? (pa[k] + pb[k]) * 0.5 : pa[k] * 0.5 + pb[k] * 0.5;
+        }
+    }
+    // The chain rule (§4): the split point must lie within rounding of the input segment and
+    // strictly between the piece's ends along it, exactly; a rounded midpoint of a piece far
+    // across the segment's direction may not (it moved back by an ulp of a coordinate that the
+    // segment's direction weighs 1e60 times more): then the piece is finer than doubles resolve.
+    {
+        const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
+        const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
+        // (A piece may run either way along its segment.)
+        const Sign from_a = direction_dot_sign(pa, m, s0, s1),
+                   to_b = direction_dot_sign(m, pb, s0, s1);
+        if (from_a == Sign::Zero || from_a != to_b || !within_rounding_of_segment(m, s0, s1)) {
+            throw GeometryError(
+                "conforming Delaunay: segment " + segment_name(piece.segment) +
+                " has a piece whose split point falls off its way (features finer than "
+                "double precision resolves)");
         }
     }
     // Walk from the end nearer the split point (a corner can have a large fan of thin
@@ -694,10 +820,24 @@ void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) 
             throw GeometryError("conforming Delaunay: segment " + segment_name(piece.segment) +
                                 " has a piece too short to split (adjacent doubles)");
         }
+        // The split point rounds to an existing vertex: the chain may pass through it only if it
+        // progresses along the segment from a to b (exactly). Else the pieces a - at, at - b
+        // would lead back (PSLGs spanning 1e-225..1e212: a piece bent through one vertex had its
+        // midpoint round to the vertex beyond it, and the two tasks alternated 57,000 times).
+        const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
+        const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
+        const Sign from_a = direction_dot_sign(pa, mesh_.point(at), s0, s1);
+        if (from_a == Sign::Zero || from_a != direction_dot_sign(mesh_.point(at), pb, s0, s1)) {
+            throw GeometryError("conforming Delaunay: segment " + segment_name(piece.segment) +
+                                " has a piece whose split point rounds to a vertex off its way "
+                                "(features finer than double precision resolves)");
+        }
     } else {
         const Cdt2Counters& c = result_.counters;
-        if (++result_.counters.conforming_splits > kSplitsPerFeature * (c.points + c.segments + c.intersections) + kSplitsBase) {
-            throw GeometryError("conforming Delaunay: more than " + std::to_string(c.conforming_splits - 1) +
+        if (++result_.counters.conforming_splits >
+            kSplitsPerFeature * (c.points + c.segments + c.intersections) + kSplitsBase) {
+            throw GeometryError("conforming Delaunay: more than " +
+                                std::to_string(c.conforming_splits - 1) +
                                 " splits; stopped (small input angles?)");
         }
         encroached_.clear();
@@ -729,8 +869,9 @@ void CdtBuilder::enclose_in_box() {
                                   {lo_x - margin, hi_y + margin}};
     for (const auto& corner : corners) {
         if (!std::isfinite(margin) || !std::isfinite(corner[0]) || !std::isfinite(corner[1])) {
-            throw GeometryError("coordinates too large to enclose the domain in a box (within a factor 3 of the "
-                                "largest double)");
+            throw GeometryError(
+                "coordinates too large to enclose the domain in a box (within a factor 3 of the "
+                "largest double)");
         }
     }
     box_first_ = n;
@@ -833,7 +974,8 @@ void CdtBuilder::remove_exterior_and_holes() {
                 const EdgeIdx e = 3 * t + k;
                 if (mesh_.origin(e) == kInfinite || mesh_.destination(e) == kInfinite) continue;
                 const TriIdx inside = triangle_of(mesh_.twin[e]);
-                if (segment_of_[e] == kNone && !removed_[inside]) flood(inside, removed_, std::uint8_t{1}, [](TriIdx) {});
+                if (segment_of_[e] == kNone && !removed_[inside])
+                    flood(inside, removed_, std::uint8_t{1}, [](TriIdx) {});
             }
         }
     }
@@ -843,7 +985,8 @@ void CdtBuilder::remove_exterior_and_holes() {
         require_off_boundary(AmbiguousMarkPoint::Kind::Hole, h, pslg_.holes[2 * h],
                              pslg_.holes[2 * h + 1], t);
         if (mesh_.is_infinite(t)) {
-            result_.warnings.push_back("hole " + std::to_string(h + options_.first_index) + " lies outside the triangulation; ignored");
+            result_.warnings.push_back("hole " + std::to_string(h + options_.first_index) +
+                                       " lies outside the triangulation; ignored");
             continue;
         }
         if (!removed_[t]) flood(t, removed_, std::uint8_t{1}, [](TriIdx) {});
@@ -861,11 +1004,13 @@ void CdtBuilder::assign_regions() {
         require_off_boundary(AmbiguousMarkPoint::Kind::Region, r, pslg_.regions[4 * r],
                              pslg_.regions[4 * r + 1], t);
         if (mesh_.is_infinite(t) || removed_[t]) {
-            result_.warnings.push_back("region " + std::to_string(r + options_.first_index) + " lies outside the domain; ignored");
+            result_.warnings.push_back("region " + std::to_string(r + options_.first_index) +
+                                       " lies outside the domain; ignored");
             continue;
         }
         const double attribute = pslg_.regions[4 * r + 2];
-        flood(t, seen, static_cast<std::uint32_t>(r + 1), [&](TriIdx u) { attribute_[u] = attribute; });
+        flood(t, seen, static_cast<std::uint32_t>(r + 1),
+              [&](TriIdx u) { attribute_[u] = attribute; });
     }
 }
 
@@ -882,7 +1027,8 @@ void CdtBuilder::collect_output() {
         const VertIdx kept = core_.merged_into[i];
         result_.merged_into[kept] = std::min(result_.merged_into[kept], i);
     }
-    for (VertIdx i = 0; i < input_count_; ++i) result_.merged_into[i] = result_.merged_into[core_.merged_into[i]];
+    for (VertIdx i = 0; i < input_count_; ++i)
+        result_.merged_into[i] = result_.merged_into[core_.merged_into[i]];
     std::vector<VertIdx>& caller = core_.input_index;  // reused: mesh vertex -> output vertex
     for (VertIdx v = 0; v < vertices; ++v) {
         if (caller[v] < input_count_) caller[v] = result_.merged_into[caller[v]];
@@ -891,7 +1037,8 @@ void CdtBuilder::collect_output() {
     // after them close the gap.
     std::uint32_t output_vertices = vertices;
     if (box_first_ != kNone) {
-        for (VertIdx v = box_first_; v < vertices; ++v) caller[v] = v < box_first_ + 4 ? kNone : v - 4;
+        for (VertIdx v = box_first_; v < vertices; ++v)
+            caller[v] = v < box_first_ + 4 ? kNone : v - 4;
         output_vertices -= 4;
     }
     Triangulation2& out = result_.mesh;
@@ -970,11 +1117,13 @@ void CdtBuilder::collinear_output() {
         std::uint32_t j = rank[result_.merged_into[pslg_.segments[2 * s + 1]]];
         if (i == j) {
             ++result_.counters.dropped_segments;
-            result_.warnings.push_back("segment " + segment_name(static_cast<std::uint32_t>(s)) + " has zero length; ignored");
+            result_.warnings.push_back("segment " + segment_name(static_cast<std::uint32_t>(s)) +
+                                       " has zero length; ignored");
             continue;
         }
         if (i > j) std::swap(i, j);
-        for (std::uint32_t r = i; r < j; ++r) keyed.emplace_back((std::uint64_t{r} << 32) | (r + 1), s);
+        for (std::uint32_t r = i; r < j; ++r)
+            keyed.emplace_back((std::uint64_t{r} << 32) | (r + 1), s);
         if (j > i + 1) ++result_.counters.vertices_on_segments;
     }
     std::sort(keyed.begin(), keyed.end());
@@ -1050,8 +1199,9 @@ void validate_pslg(const Pslg& pslg) {
     if (pslg.segments.size() % 2 != 0) throw InputError("segments: odd number of endpoint indices");
     for (std::size_t i = 0; i < pslg.segments.size(); ++i) {
         if (pslg.segments[i] >= n) {
-            throw InputError("segment " + std::to_string(i / 2) + ": vertex " + std::to_string(pslg.segments[i]) +
-                             " does not exist (" + std::to_string(n) + " vertices)");
+            throw InputError("segment " + std::to_string(i / 2) + ": vertex " +
+                             std::to_string(pslg.segments[i]) + " does not exist (" +
+                             std::to_string(n) + " vertices)");
         }
     }
     if (pslg.holes.size() % 2 != 0) throw InputError("holes: odd number of coordinates");

@@ -32,10 +32,10 @@ namespace exactmesh::triangulation {
 
 /// A planar straight-line graph (Triangle's .poly content), 0-based indices.
 struct Pslg {
-    std::span<const double> xy;           ///< 2·#V vertex coordinates
-    std::span<const VertIdx> segments;    ///< 2·#S endpoint indices into xy
-    std::span<const double> holes;        ///< 2·#H points inside holes
-    std::span<const double> regions;      ///< 4·#R: x, y, attribute, maximum area (unused here)
+    std::span<const double> xy;         ///< 2·#V vertex coordinates
+    std::span<const VertIdx> segments;  ///< 2·#S endpoint indices into xy
+    std::span<const double> holes;      ///< 2·#H points inside holes
+    std::span<const double> regions;    ///< 4·#R: x, y, attribute, maximum area (unused here)
 };
 
 enum class SegmentRecovery { Swap, Cavity, Conforming };
@@ -56,20 +56,23 @@ struct Cdt2Options {
 };
 
 struct Cdt2Counters {
-    std::uint64_t points = 0;                 ///< input vertices
-    std::uint64_t duplicates = 0;             ///< input vertices merged into an equal earlier one
-    std::uint64_t segments = 0;               ///< input segments
-    std::uint64_t dropped_segments = 0;       ///< zero-length or repeated segments, ignored
-    std::uint64_t crossed_edges = 0;          ///< triangulation edges crossed by segments, summed
-    std::uint64_t recovery_flips = 0;         ///< swap recovery: flips removing crossed edges
-    std::uint64_t delaunay_flips = 0;         ///< Lawson flips (insertions and restoration)
-    std::uint64_t cavity_triangles = 0;       ///< cavity recovery: triangles retriangulated
-    std::uint64_t vertices_on_segments = 0;   ///< segments split at an input vertex they contain
-    std::uint64_t intersections = 0;          ///< vertices added where segments cross
-    std::uint64_t conforming_splits = 0;      ///< conforming: vertices added on pieces (shell or midpoint)
-    std::uint64_t conforming_bends = 0;       ///< conforming: pieces split at a vertex within rounding of the segment
-    std::uint64_t conforming_passes = 0;      ///< conforming: final checks of every edge (normally 1)
-    std::uint64_t removed_triangles = 0;      ///< exterior and hole triangles removed
+    std::uint64_t points = 0;                ///< input vertices
+    std::uint64_t duplicates = 0;            ///< input vertices merged into an equal earlier one
+    std::uint64_t segments = 0;              ///< input segments
+    std::uint64_t dropped_segments = 0;      ///< zero-length or repeated segments, ignored
+    std::uint64_t crossed_edges = 0;         ///< triangulation edges crossed by segments, summed
+    std::uint64_t recovery_flips = 0;        ///< swap recovery: flips removing crossed edges
+    std::uint64_t delaunay_flips = 0;        ///< Lawson flips (insertions and restoration)
+    std::uint64_t cavity_triangles = 0;      ///< cavity recovery: triangles retriangulated
+    std::uint64_t vertices_on_segments = 0;  ///< segments split at an input vertex they contain
+    std::uint64_t intersections = 0;         ///< vertices added where segments cross
+    std::uint64_t bent_crossings = 0;        ///< pieces crossing where their input segments do not
+    std::uint64_t conforming_splits =
+        0;  ///< conforming: vertices added on pieces (shell or midpoint)
+    std::uint64_t conforming_bends =
+        0;  ///< conforming: pieces split at a vertex within rounding of the segment
+    std::uint64_t conforming_passes = 0;  ///< conforming: final checks of every edge (normally 1)
+    std::uint64_t removed_triangles = 0;  ///< exterior and hole triangles removed
     std::uint64_t orient_calls = 0;
     std::uint64_t incircle_calls = 0;
     std::uint64_t walk_steps = 0;
@@ -80,14 +83,14 @@ struct Cdt2Result {
     /// duplicates stay in xy but no triangle uses them. Constrained edges are flagged.
     Triangulation2 mesh;
     std::uint32_t input_vertex_count = 0;
-    std::vector<VertIdx> merged_into;         ///< #V input: the first input vertex with equal point
+    std::vector<VertIdx> merged_into;  ///< #V input: the first input vertex with equal point
     /// 2·#P: every constrained edge (a segment or a piece of one), and piece_segment[p], the
     /// input segment it comes from (the first one when overlapping segments share it).
     std::vector<VertIdx> pieces;
     std::vector<std::uint32_t> piece_segment;
     /// #T regional attribute of each triangle (0 outside every region); empty without regions.
     std::vector<double> triangle_attributes;
-    std::vector<std::string> warnings;        ///< one line per split, drop or unused hole
+    std::vector<std::string> warnings;  ///< one line per split, drop or unused hole
     Cdt2Counters counters;
 };
 

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -27,12 +28,12 @@ namespace exactmesh::triangulation::detail {
 using predicates::Sign;
 
 struct Piece {
-    VertIdx a, b;          // mesh vertices
+    VertIdx a, b;           // mesh vertices
     std::uint32_t segment;  // input segment
 };
 
 class CdtBuilder {
-public:
+  public:
     /// pslg's spans must outlive the builder (constrained_delaunay_2d: the call; the
     /// ConstrainedTriangulation2: its own copies).
     /// enclose_in_box: after recovering the segments, insert four corners of a box around
@@ -40,7 +41,10 @@ public:
     /// splitting a hull segment at a rounded point could leave the hull non-convex); the
     /// corners never reach the output.
     CdtBuilder(const Pslg& pslg, const Cdt2Options& options, bool enclose_in_box = false)
-        : pslg_(pslg), options_(options), enclose_in_box_(enclose_in_box), core_(pslg.xy, delaunay_options(options)),
+        : pslg_(pslg),
+          options_(options),
+          enclose_in_box_(enclose_in_box),
+          core_(pslg.xy, delaunay_options(options)),
           mesh_(core_.mesh) {}
     CdtBuilder(const CdtBuilder&) = delete;
     CdtBuilder& operator=(const CdtBuilder&) = delete;
@@ -71,7 +75,7 @@ public:
     const ConstrainedTriangulation2Counters& edit_counters() const { return edit_counters_; }
     void reserve(std::uint32_t vertices);
 
-private:
+  private:
     Pslg pslg_;
     Cdt2Options options_;
     bool enclose_in_box_ = false;
@@ -82,7 +86,7 @@ private:
     std::vector<std::uint32_t> segment_of_;  // per half-edge
     std::vector<EdgeIdx> vertex_edge_;       // per mesh vertex
     std::vector<TriIdx> flip_stack_;
-    std::vector<std::uint8_t> in_cavity_;    // per triangle slot, scratch of recover_by_cavity
+    std::vector<std::uint8_t> in_cavity_;  // per triangle slot, scratch of recover_by_cavity
     std::vector<Piece> work_;
     std::vector<std::array<VertIdx, 2>> segment_ends_;  // per input segment: its mesh vertices
     Cdt2Result result_;
@@ -139,9 +143,37 @@ private:
         segment_of_[e] = segment_of_[f] = segment;
     }
     void mark(EdgeIdx e, std::uint32_t segment) {
-        const std::uint32_t s = std::min(segment_of_[e], segment);
+        const std::uint32_t old = segment_of_[e];
+        if (old != kNone && old != segment) {
+            // One edge, pieces of two segments (overlapping, or one bent through the other's
+            // vertex): segment_of_ keeps the smallest, shared_ every other one, so that a later
+            // bend or split of the piece answers to each segment's chain (issue 11: a unit
+            // segment's piece shared with a 1e-320 segment was bent by the unit one's rule alone).
+            auto& others = shared_[edge_key(mesh_.origin(e), mesh_.destination(e))];
+            const std::uint32_t extra = std::max(old, segment);
+            if (std::find(others.begin(), others.end(), extra) == others.end())
+                others.push_back(extra);
+        }
+        const std::uint32_t s = std::min(old, segment);
         segment_of_[e] = segment_of_[mesh_.twin[e]] = s;
     }
+    static std::uint64_t edge_key(VertIdx u, VertIdx v) {
+        return (std::uint64_t{std::min(u, v)} << 32) | std::max(u, v);
+    }
+    /// The segments other than segment_of_ whose chains use the edge u - v (usually none).
+    std::vector<std::uint32_t> shared_segments(VertIdx u, VertIdx v) const {
+        const auto it = shared_.find(edge_key(u, v));
+        return it == shared_.end() ? std::vector<std::uint32_t>{} : it->second;
+    }
+    /// The edge u - v stops being a piece: forget its other segments (returned).
+    std::vector<std::uint32_t> release_shared(VertIdx u, VertIdx v) {
+        const auto it = shared_.find(edge_key(u, v));
+        if (it == shared_.end()) return {};
+        std::vector<std::uint32_t> others = std::move(it->second);
+        shared_.erase(it);
+        return others;
+    }
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> shared_;
     VertIdx apex(EdgeIdx e) const { return mesh_.tv[prev_edge(e)]; }
 
     /// The half-edge u -> v, or kNone. Walks the stars of u and v in step, so the cost is
@@ -212,12 +244,15 @@ private:
     /// The piece passes exactly through vertex v: recover its two parts instead (a warning).
     void split_piece_at_vertex(const Piece& piece, VertIdx v) {
         ++result_.counters.vertices_on_segments;
-        result_.warnings.push_back("segment " + segment_name(piece.segment) + " passes through " + vertex_name(v) +
-                                   "; split there");
+        result_.warnings.push_back("segment " + segment_name(piece.segment) + " passes through " +
+                                   vertex_name(v) + "; split there");
         work_.push_back({v, piece.b, piece.segment});
         work_.push_back({piece.a, v, piece.segment});
     }
     void split_at_intersection(const Piece& piece, EdgeIdx h);
+    /// Where piece (of one segment) and the constrained edge u - v (of segment other) are split.
+    std::array<double, 2> crossing_point(const Piece& piece, VertIdx u, VertIdx v,
+                                         std::uint32_t other);
     void recover_by_swaps(const Piece& piece, const std::vector<EdgeIdx>& crossed);
     void recover_by_cavity(const Piece& piece, const std::vector<EdgeIdx>& crossed);
     void triangulate_pseudo_polygon(VertIdx u, VertIdx v, std::span<const VertIdx> chain,
@@ -234,8 +269,10 @@ private:
     /// A vertex that a missing piece crosses exactly on it, or within rounding of its input
     /// segment's line and between its ends (the nearest), or kNone.
     VertIdx vertex_near_segment(const Piece& piece);
+    /// w may bend the chain of `segment` between its vertices a and b (the check's chain rule).
+    bool bend_candidate(std::uint32_t segment, VertIdx a, VertIdx b, VertIdx w) const;
     bool conforming_ = false;
-    VertIdx first_split_vertex_ = 0;           // vertices from here on are conforming splits
+    VertIdx first_split_vertex_ = 0;             // vertices from here on are conforming splits
     std::vector<std::uint32_t> segment_degree_;  // pieces at each earlier vertex
     std::vector<Piece> encroached_;
     bool on_ray(VertIdx a, VertIdx b, VertIdx x) const;
@@ -260,20 +297,20 @@ private:
     bool collinear_ = false;
 
     // ---- incremental editing state ----------------------------------------------------------
-    bool domain_marked_ = false;              // removed_ (and attribute_) follow every edit
-    std::vector<TriIdx> touched_;             // slots written since clear_touched()
-    std::vector<std::uint32_t> cavity_stamp_; // per slot: == stamp_ when in the current cavity
+    bool domain_marked_ = false;               // removed_ (and attribute_) follow every edit
+    std::vector<TriIdx> touched_;              // slots written since clear_touched()
+    std::vector<std::uint32_t> cavity_stamp_;  // per slot: == stamp_ when in the current cavity
     std::uint32_t stamp_ = 0;
     std::vector<TriIdx> cavity_;
-    std::vector<EdgeIdx> boundary_;           // cavity boundary, half-edges inside the cavity
-    std::vector<EdgeIdx> cycle_;              // the same, in order around the cavity
+    std::vector<EdgeIdx> boundary_;  // cavity boundary, half-edges inside the cavity
+    std::vector<EdgeIdx> cycle_;     // the same, in order around the cavity
     std::vector<EdgeIdx> encroached_edges_;
     struct FanEdge {
         VertIdx u, v;
         EdgeIdx outer;
         std::uint32_t segment;
     };
-    std::vector<FanEdge> fan_;                // the cavity's new triangles, in order
+    std::vector<FanEdge> fan_;  // the cavity's new triangles, in order
     std::vector<TriIdx> fan_slots_;
     ConstrainedTriangulation2Counters edit_counters_;
     /// Lawson flips from flip_stack_ (after split_triangle or split_edge).
@@ -281,7 +318,8 @@ private:
     /// One attempt of split_constrained_edge at (x, y): true (and the new vertex) when the point
     /// lies on e or inside the quadrilateral of e's two triangles; the edges to check for
     /// Lawson flips are appended to `check`. Else nothing changes.
-    bool try_split_at(EdgeIdx e, double x, double y, std::vector<std::pair<VertIdx, VertIdx>>& check, VertIdx& vertex);
+    bool try_split_at(EdgeIdx e, double x, double y,
+                      std::vector<std::pair<VertIdx, VertIdx>>& check, VertIdx& vertex);
     /// The exact fan test of split_constrained_edge: p strictly inside both triangles' star.
     bool star_contains(VertIdx p, VertIdx a, VertIdx b, VertIdx c, VertIdx d);
     /// The half-edge (e or its twin) whose apex lies within rounding of e's segment, strictly
@@ -297,7 +335,9 @@ private:
     std::string vertex_name(VertIdx v) const {
         return "vertex " + std::to_string(core_.input_index[v] + options_.first_index);
     }
-    std::string segment_name(std::uint32_t s) const { return std::to_string(s + options_.first_index); }
+    std::string segment_name(std::uint32_t s) const {
+        return std::to_string(s + options_.first_index);
+    }
 };
 
 }  // namespace exactmesh::triangulation::detail

@@ -73,7 +73,8 @@ CavityInsertion CdtBuilder::insert_in_cavity(TriIdx t, double x, double y) {
     if (!core_.conflict(t, p)) return reject(CavityInsertion::NotInConflict);
 
     // The conflict zone, grown across unconstrained edges only.
-    if (cavity_stamp_.size() < mesh_.triangle_slots()) cavity_stamp_.resize(mesh_.triangle_slots(), 0);
+    if (cavity_stamp_.size() < mesh_.triangle_slots())
+        cavity_stamp_.resize(mesh_.triangle_slots(), 0);
     if (++stamp_ == 0) {
         std::fill(cavity_stamp_.begin(), cavity_stamp_.end(), 0u);
         stamp_ = 1;
@@ -180,8 +181,8 @@ bool CdtBuilder::star_contains(VertIdx p, VertIdx a, VertIdx b, VertIdx c, VertI
            core_.orient(a, d, p) == Sign::Positive && core_.orient(d, b, p) == Sign::Positive;
 }
 
-bool CdtBuilder::try_split_at(EdgeIdx e, double x, double y, std::vector<std::pair<VertIdx, VertIdx>>& check,
-                              VertIdx& vertex) {
+bool CdtBuilder::try_split_at(EdgeIdx e, double x, double y,
+                              std::vector<std::pair<VertIdx, VertIdx>>& check, VertIdx& vertex) {
     const EdgeIdx f = mesh_.twin[e];
     const VertIdx a = mesh_.origin(e), b = mesh_.destination(e), c = apex(e), d = apex(f);
     const VertIdx p = add_vertex(x, y);
@@ -221,11 +222,13 @@ VertIdx CdtBuilder::split_constrained_edge(EdgeIdx e, double x, double y) {
         const double* pa = mesh_.point(a);
         const double* pb = mesh_.point(b);
         if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1])) {
-            throw GeometryError("segment " + std::to_string(segment + options_.first_index) + ": its piece " +
-                                point_text(pa) + " - " + point_text(pb) + " is too short to split (adjacent doubles)");
+            throw GeometryError("segment " + std::to_string(segment + options_.first_index) +
+                                ": its piece " + point_text(pa) + " - " + point_text(pb) +
+                                " is too short to split (adjacent doubles)");
         }
     }
-    const double nx = mesh_.point(a)[1] - mesh_.point(b)[1], ny = mesh_.point(b)[0] - mesh_.point(a)[0];  // left normal
+    const double nx = mesh_.point(a)[1] - mesh_.point(b)[1],
+                 ny = mesh_.point(b)[0] - mesh_.point(a)[0];  // left normal
     std::vector<std::pair<VertIdx, VertIdx>> check;
     const std::uint64_t flips_before = result_.counters.delaunay_flips;
     // A neighbouring triangle may be a sliver: its apex within ulps of the line of a - b (the next
@@ -253,11 +256,14 @@ VertIdx CdtBuilder::split_constrained_edge(EdgeIdx e, double x, double y) {
         // The free edge of a side triangle (not a - b) that the point lies beyond, if flippable.
         const VertIdx p = add_vertex(x, y);
         EdgeIdx blocking = kNone;
-        for (const EdgeIdx g : {next_edge(e), prev_edge(e), next_edge(mesh_.twin[e]), prev_edge(mesh_.twin[e])}) {
-            if (segment_of_[g] != kNone || core_.orient(mesh_.origin(g), mesh_.destination(g), p) == Sign::Positive) {
+        for (const EdgeIdx g :
+             {next_edge(e), prev_edge(e), next_edge(mesh_.twin[e]), prev_edge(mesh_.twin[e])}) {
+            if (segment_of_[g] != kNone ||
+                core_.orient(mesh_.origin(g), mesh_.destination(g), p) == Sign::Positive) {
                 continue;
             }
-            const VertIdx u = mesh_.origin(g), v = mesh_.destination(g), w1 = apex(g), w2 = apex(mesh_.twin[g]);
+            const VertIdx u = mesh_.origin(g), v = mesh_.destination(g), w1 = apex(g),
+                          w2 = apex(mesh_.twin[g]);
             if (w1 == kInfinite || w2 == kInfinite) continue;
             const Sign su = core_.orient(w1, w2, u), sv = core_.orient(w1, w2, v);
             if (su != Sign::Zero && sv != Sign::Zero && su != sv) {
@@ -278,41 +284,14 @@ VertIdx CdtBuilder::split_constrained_edge(EdgeIdx e, double x, double y) {
 }
 
 EdgeIdx CdtBuilder::near_apex(EdgeIdx e) const {
-    // The apex (of e's triangle or its twin's) nearest the segment's line, if within 2^-46 of
-    // the coordinates' magnitude and strictly between the edge's ends along the segment (the
-    // tolerance of conforming bends; the checker allows 2^-40); long double arithmetic.
+    // The apex (of e's triangle, else of its twin's) that may bend e's segment between e's ends:
+    // bend_candidate, the chain rule that check_constrained_delaunay_2d applies.
     const std::uint32_t segment = segment_of_[e];
-    const double* s0 = mesh_.point(segment_ends_[segment][0]);
-    const double* s1 = mesh_.point(segment_ends_[segment][1]);
-    const long double dx = static_cast<long double>(s1[0]) - s0[0], dy = static_cast<long double>(s1[1]) - s0[1];
-    const long double length = std::sqrt(dx * dx + dy * dy);
-    const double magnitude = std::max({std::fabs(s0[0]), std::fabs(s0[1]), std::fabs(s1[0]), std::fabs(s1[1])});
-    const long double tolerance = std::ldexp(static_cast<long double>(magnitude), -46);
-    auto along = [&](VertIdx v) {
-        return (static_cast<long double>(mesh_.point(v)[0]) - s0[0]) * dx +
-               (static_cast<long double>(mesh_.point(v)[1]) - s0[1]) * dy;
-    };
-    auto distance = [&](VertIdx v) {
-        return std::fabs(((static_cast<long double>(mesh_.point(v)[0]) - s0[0]) * dy -
-                          (static_cast<long double>(mesh_.point(v)[1]) - s0[1]) * dx) /
-                         length);
-    };
     const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
-    const long double lo = std::min(along(a), along(b)), hi = std::max(along(a), along(b));
-    EdgeIdx best = kNone;
-    long double best_distance = tolerance;
     for (const EdgeIdx side : {e, mesh_.twin[e]}) {
-        const VertIdx w = apex(side);
-        if (w == kInfinite) continue;
-        const long double t = along(w);
-        if (!(t > lo && t < hi)) continue;
-        const long double dist = distance(w);
-        if (dist <= best_distance) {
-            best_distance = dist;
-            best = side;
-        }
+        if (bend_candidate(segment, a, b, apex(side))) return side;
     }
-    return best;
+    return kNone;
 }
 
 VertIdx CdtBuilder::bend_through_apex(EdgeIdx g) {
@@ -324,6 +303,10 @@ VertIdx CdtBuilder::bend_through_apex(EdgeIdx g) {
     const TriIdx t = triangle_of(g);
     mark(next_edge(g), segment);
     mark(prev_edge(g), segment);
+    for (const std::uint32_t other : release_shared(u, v)) {
+        mark(next_edge(g), other);
+        mark(prev_edge(g), other);
+    }
     segment_of_[g] = segment_of_[h] = kNone;
     put_on_side(t, side_of(triangle_of(h)));
     if (domain_marked_) touched_.push_back(t);
@@ -335,11 +318,12 @@ VertIdx CdtBuilder::bend_through_apex(EdgeIdx g) {
 VertIdx CdtBuilder::bend_at_apex(EdgeIdx e) {
     const EdgeIdx best = near_apex(e);
     if (best == kNone) {
-        throw GeometryError("segment " + std::to_string(segment_of_[e] + options_.first_index) + ": its piece " +
-                            point_text(mesh_.point(mesh_.origin(e))) + " - " +
-                            point_text(mesh_.point(mesh_.destination(e))) +
-                            " cannot be split: features within rounding of it (finer than double precision "
-                            "resolves)");
+        throw GeometryError(
+            "segment " + std::to_string(segment_of_[e] + options_.first_index) + ": its piece " +
+            point_text(mesh_.point(mesh_.origin(e))) + " - " +
+            point_text(mesh_.point(mesh_.destination(e))) +
+            " cannot be split: features within rounding of it (finer than double precision "
+            "resolves)");
     }
     ++edit_counters_.edge_bends;
     return bend_through_apex(best);
@@ -352,7 +336,8 @@ void CdtBuilder::bend_through_near_vertices() {
     std::vector<std::pair<VertIdx, VertIdx>> pieces;
     for (EdgeIdx e = 0; e < segment_of_.size(); ++e) {
         if (segment_of_[e] == kNone || mesh_.is_dead(triangle_of(e))) continue;
-        if (mesh_.origin(e) < mesh_.destination(e)) pieces.emplace_back(mesh_.origin(e), mesh_.destination(e));
+        if (mesh_.origin(e) < mesh_.destination(e))
+            pieces.emplace_back(mesh_.origin(e), mesh_.destination(e));
     }
     while (!pieces.empty()) {
         const auto [a, b] = pieces.back();
@@ -364,9 +349,10 @@ void CdtBuilder::bend_through_near_vertices() {
         const std::uint32_t segment = segment_of_[e];
         const VertIdx w = bend_through_apex(side);
         ++result_.counters.conforming_bends;
-        result_.warnings.push_back("vertex " + std::to_string(core_.input_index[w] + options_.first_index) +
-                                   " lies within rounding of segment " + std::to_string(segment + options_.first_index) +
-                                   "; the segment bends through it");
+        result_.warnings.push_back(
+            "vertex " + std::to_string(core_.input_index[w] + options_.first_index) +
+            " lies within rounding of segment " + std::to_string(segment + options_.first_index) +
+            "; the segment bends through it");
         pieces.emplace_back(a, w);
         pieces.emplace_back(w, b);
     }
@@ -386,10 +372,13 @@ struct ConstrainedTriangulation2::Owned {
 ConstrainedTriangulation2::ConstrainedTriangulation2(const Pslg& pslg, const Cdt2Options& options)
     : owned_(std::make_unique<Owned>()) {
     if (options.recovery == SegmentRecovery::Conforming) {
-        throw InputError("ConstrainedTriangulation2: conforming recovery keeps no constraints; use swap or cavity");
+        throw InputError(
+            "ConstrainedTriangulation2: conforming recovery keeps no constraints; use swap or "
+            "cavity");
     }
     if (!options.remove_exterior) {
-        throw InputError("ConstrainedTriangulation2: the domain is what the segments enclose (remove_exterior)");
+        throw InputError(
+            "ConstrainedTriangulation2: the domain is what the segments enclose (remove_exterior)");
     }
     validate_pslg(pslg);
     Owned& o = *owned_;
@@ -404,30 +393,60 @@ ConstrainedTriangulation2::ConstrainedTriangulation2(const Pslg& pslg, const Cdt
 }
 
 ConstrainedTriangulation2::~ConstrainedTriangulation2() = default;
-ConstrainedTriangulation2::ConstrainedTriangulation2(ConstrainedTriangulation2&&) noexcept = default;
-ConstrainedTriangulation2& ConstrainedTriangulation2::operator=(ConstrainedTriangulation2&&) noexcept = default;
+ConstrainedTriangulation2::ConstrainedTriangulation2(ConstrainedTriangulation2&&) noexcept =
+    default;
+ConstrainedTriangulation2& ConstrainedTriangulation2::operator=(
+    ConstrainedTriangulation2&&) noexcept = default;
 
-const TriMesh2& ConstrainedTriangulation2::mesh() const { return builder_->mesh(); }
-std::uint32_t ConstrainedTriangulation2::segment_of(EdgeIdx e) const { return builder_->segment_of(e); }
-bool ConstrainedTriangulation2::in_domain(TriIdx t) const { return builder_->in_domain(t); }
-bool ConstrainedTriangulation2::collinear() const { return builder_->collinear(); }
-std::uint32_t ConstrainedTriangulation2::input_vertex_count() const { return builder_->input_vertex_count(); }
-std::span<const VertIdx> ConstrainedTriangulation2::input_index() const { return builder_->input_index(); }
-std::array<VertIdx, 2> ConstrainedTriangulation2::segment_ends(std::uint32_t s) const { return builder_->segment_ends(s); }
-EdgeIdx ConstrainedTriangulation2::find_edge(VertIdx u, VertIdx v) const { return builder_->edge_between(u, v); }
-TriIdx ConstrainedTriangulation2::locate(double x, double y) { return builder_->locate(x, y); }
+const TriMesh2& ConstrainedTriangulation2::mesh() const {
+    return builder_->mesh();
+}
+std::uint32_t ConstrainedTriangulation2::segment_of(EdgeIdx e) const {
+    return builder_->segment_of(e);
+}
+bool ConstrainedTriangulation2::in_domain(TriIdx t) const {
+    return builder_->in_domain(t);
+}
+bool ConstrainedTriangulation2::collinear() const {
+    return builder_->collinear();
+}
+std::uint32_t ConstrainedTriangulation2::input_vertex_count() const {
+    return builder_->input_vertex_count();
+}
+std::span<const VertIdx> ConstrainedTriangulation2::input_index() const {
+    return builder_->input_index();
+}
+std::array<VertIdx, 2> ConstrainedTriangulation2::segment_ends(std::uint32_t s) const {
+    return builder_->segment_ends(s);
+}
+EdgeIdx ConstrainedTriangulation2::find_edge(VertIdx u, VertIdx v) const {
+    return builder_->edge_between(u, v);
+}
+TriIdx ConstrainedTriangulation2::locate(double x, double y) {
+    return builder_->locate(x, y);
+}
 
 CavityInsertion ConstrainedTriangulation2::insert_in_cavity(TriIdx t, double x, double y) {
     return builder_->insert_in_cavity(t, x, y);
 }
-std::span<const EdgeIdx> ConstrainedTriangulation2::encroached_edges() const { return builder_->encroached_edges(); }
+std::span<const EdgeIdx> ConstrainedTriangulation2::encroached_edges() const {
+    return builder_->encroached_edges();
+}
 VertIdx ConstrainedTriangulation2::split_constrained_edge(EdgeIdx e, double x, double y) {
     return builder_->split_constrained_edge(e, x, y);
 }
-std::span<const TriIdx> ConstrainedTriangulation2::touched() const { return builder_->touched(); }
-void ConstrainedTriangulation2::clear_touched() { builder_->clear_touched(); }
-void ConstrainedTriangulation2::reserve(std::uint32_t vertices) { builder_->reserve(vertices); }
-const ConstrainedTriangulation2Counters& ConstrainedTriangulation2::counters() const { return builder_->edit_counters(); }
+std::span<const TriIdx> ConstrainedTriangulation2::touched() const {
+    return builder_->touched();
+}
+void ConstrainedTriangulation2::clear_touched() {
+    builder_->clear_touched();
+}
+void ConstrainedTriangulation2::reserve(std::uint32_t vertices) {
+    builder_->reserve(vertices);
+}
+const ConstrainedTriangulation2Counters& ConstrainedTriangulation2::counters() const {
+    return builder_->edit_counters();
+}
 
 Cdt2Result ConstrainedTriangulation2::take_result() && {
     Cdt2Result result = builder_->finish();

@@ -57,7 +57,7 @@ class ConstrainedTriangulation2 {
 public:
     /// Builds the constrained Delaunay triangulation of pslg (copied) as constrained_delaunay_2d
     /// does with the same options, and marks the domain. A vertex within rounding of a segment
-    /// (2^-46 of its coordinates' magnitude, between its ends) becomes a vertex of it: the
+    /// (within_rounding_of_segment, strictly between its ends) becomes a vertex of it: the
     /// segment bends through it (a warning), as the conforming recovery bends; a refinement
     /// would otherwise have to resolve the ulp-wide gap. Then four corners of a box around the
     /// input are inserted, so that no segment lies on the convex hull (their triangles are
@@ -110,8 +110,9 @@ public:
     /// pieces a - m, m - b bend by at most the rounding). When a neighbouring triangle is a
     /// sliver (a vertex within ulps of the piece), the point moves up to 3 ulps per coordinate
     /// to the sliver's other side. When no such split is possible (a vertex of a neighbouring
-    /// triangle lies within 2^-46 of the coordinates' magnitude from the segment, between its
-    /// ends), the edge bends at that vertex instead. Both pieces keep e's segment.
+    /// triangle lies within rounding of the segment by the check's chain rule,
+    /// within_rounding_of_segment, strictly between its ends, for every segment sharing the
+    /// piece), the edge bends at that vertex instead. Both pieces keep e's segment(s).
     /// @return the vertex now between a and b (a new one, or the vertex the edge bends at).
     /// @throws GeometryError when (x, y) equals a or b, or no split is possible.
     VertIdx split_constrained_edge(EdgeIdx e, double x, double y);

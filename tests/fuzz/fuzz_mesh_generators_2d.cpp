@@ -11,12 +11,11 @@
 // features finer than doubles resolve). Anything else, an assertion or a sanitizer report, is a
 // failure (__builtin_trap()).
 //
-// Delaunay refinement is skipped here (its inputs return at once) while one finding of this
-// target is open: tests/data/fuzz/open/mesh_generators_2d_refinement_bend_off_short_segment.bin,
-// a segment of length 2.6e-319 beside a unit square, whose chain ConstrainedTriangulation2 bends
-// through a vertex 5.3e-315 off it (within 2^-46 of the input's magnitude, its rule for bends)
-// while check_constrained_delaunay_2d wants the chain to progress along the segment. Delaunay
-// refinement keeps its own target, fuzz_delaunay_refinement_2d, in the smoke run.
+// Delaunay refinement runs here too since its finding (tests/data/fuzz/
+// mesh_generators_2d_refinement_bend_off_short_segment.bin: a unit square's side bent through a
+// vertex 5.3e-315 off it along a piece it shared with a segment 2.6e-319 long, whose chain the
+// exact check then rejected) is settled: bends and the check share one rule, applied to every
+// segment a piece belongs to (issue 11; tests/regressions/issue_11_bend_rule_test.cpp).
 //
 // Input layout (fuzz_pslg.hpp with a 4-byte header): byte 0 the mode, byte 1 the generator
 // (byte % count), byte 2 the size, byte 3 the segment count, two index bytes per segment, then
@@ -58,7 +57,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!input) return 0;
     const auto generators = gen::mesh_generators_2d();
     const gen::MeshGenerator2& generator = generators[data[1] % generators.size()];
-    if (generator.name == "delaunay-refinement") return 0;  // the open finding above
     const int size_exponent = data[2] % 6;
     const std::vector<double>& xy = input->xy;
     const std::vector<tri::VertIdx>& segments = input->segments;

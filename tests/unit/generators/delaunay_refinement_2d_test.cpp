@@ -400,21 +400,18 @@ TEST(Generators_DelaunayRefinement, RandomPslgsGiveValidMeshesOrAClearError) {
     EXPECT_GT(meshed, 10u);
 }
 
-TEST(Generators_DelaunayRefinement, UlpWideFeatureOfTheTriangulationIsReported) {
+TEST(Generators_DelaunayRefinement, UlpWideFeatureOfTheTriangulationIsBentThrough) {
     // grid-lines seed 10: a piece of an overlapping diagonal, bent at a rounded crossing, crosses
     // y = 4 at (2 - 2^-51, 4), one ulp from the lattice vertex (2, 4): no mesh can resolve that
-    // gap.
+    // gap. The piece bends through (2, 4), which lies within rounding of the diagonal by the
+    // chain rule that the constrained triangulation and its check share
+    // (within_rounding_of_segment, 2^-40 of the vertex's coordinates; issue 11): the mesh is
+    // valid (it was a GeometryError while the two followed different rules).
     const gen::PslgInput p = gen::generate_pslg(gen::PslgDistribution::GridLines, 60, 30, 10);
     const Input in{p.xy, p.segments, p.holes, {}};
-    try {
-        gen::delaunay_refinement_2d(in.pslg());
-        FAIL() << "no GeometryError";
-    } catch (const em::GeometryError& error) {
-        const std::string what = error.what();
-        EXPECT_TRUE(what.find("too short to split") != std::string::npos ||
-                    what.find("finer than double precision") != std::string::npos)
-            << what;
-    }
+    // Overlapping segments: the support check's parity test of the domain does not apply.
+    const Refined r = refine(in, gen::RefinementOptions2{}, false);
+    EXPECT_TRUE(r.check.ok) << r.check.problem;
 }
 
 TEST(Generators_DelaunayRefinement, SubnormalDomainWithASizeRefinesOrFailsClearly) {

@@ -40,7 +40,8 @@ Triangles canonical(const tri::Triangulation2& m) {
 
 using exactmesh::testing::Input;
 
-tri::Cdt2Result build(const Input& in, tri::SegmentRecovery recovery, bool remove_exterior = false) {
+tri::Cdt2Result build(const Input& in, tri::SegmentRecovery recovery,
+                      bool remove_exterior = false) {
     tri::Cdt2Options options;
     options.recovery = recovery;
     options.remove_exterior = remove_exterior;
@@ -49,10 +50,11 @@ tri::Cdt2Result build(const Input& in, tri::SegmentRecovery recovery, bool remov
 
 /// Exact checks of one output: constrained Delaunay (or plain Delaunay when conforming), every
 /// segment present, and with the exterior kept, the convex-hull topology.
-void expect_valid(const Input& in, const tri::Cdt2Result& r, tri::SegmentRecovery recovery, bool hull,
-                  const std::string& label) {
-    const auto report = tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments,
-                                                           hull ? std::span<const tri::VertIdx>{} : std::span(r.pieces));
+void expect_valid(const Input& in, const tri::Cdt2Result& r, tri::SegmentRecovery recovery,
+                  bool hull, const std::string& label) {
+    const auto report = tri::check_constrained_delaunay_2d(
+        r.mesh, r.input_vertex_count, in.segments,
+        hull ? std::span<const tri::VertIdx>{} : std::span(r.pieces));
     EXPECT_TRUE(report.ok) << label << ": " << report.problem;
     if (hull) {
         const auto topology = tri::check_topology_2d(r.mesh.xy, r.mesh.triangles);
@@ -67,9 +69,11 @@ void expect_valid(const Input& in, const tri::Cdt2Result& r, tri::SegmentRecover
     std::set<std::pair<tri::VertIdx, tri::VertIdx>> flagged, edges;
     for (std::size_t t = 0; t < r.mesh.triangle_count(); ++t) {
         for (int k = 0; k < 3; ++k) {
-            const tri::VertIdx a = r.mesh.triangles[3 * t + k], b = r.mesh.triangles[3 * t + (k + 1) % 3];
+            const tri::VertIdx a = r.mesh.triangles[3 * t + k],
+                               b = r.mesh.triangles[3 * t + (k + 1) % 3];
             edges.insert({std::min(a, b), std::max(a, b)});
-            if (r.mesh.is_constrained(static_cast<tri::TriIdx>(t), k)) flagged.insert({std::min(a, b), std::max(a, b)});
+            if (r.mesh.is_constrained(static_cast<tri::TriIdx>(t), k))
+                flagged.insert({std::min(a, b), std::max(a, b)});
         }
     }
     for (std::size_t p = 0; p < r.piece_segment.size(); ++p) {
@@ -78,7 +82,8 @@ void expect_valid(const Input& in, const tri::Cdt2Result& r, tri::SegmentRecover
             EXPECT_TRUE(flagged.count(e)) << label << ": piece not flagged";
         }
         if (hull) {
-            EXPECT_TRUE(flagged.count(e)) << label << ": piece " << e.first << "-" << e.second << " missing";
+            EXPECT_TRUE(flagged.count(e))
+                << label << ": piece " << e.first << "-" << e.second << " missing";
         }
     }
     if (hull) {
@@ -95,8 +100,10 @@ Input random_non_crossing(std::uint32_t n, std::uint32_t tries, std::uint64_t se
     auto p = [&](tri::VertIdx v) { return in.xy.data() + 2 * v; };
     auto crosses = [&](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c, tri::VertIdx d) {
         if (a == c || a == d || b == c || b == d) return false;
-        const auto s1 = em::predicates::orient2d(p(a), p(b), p(c)), s2 = em::predicates::orient2d(p(a), p(b), p(d));
-        const auto s3 = em::predicates::orient2d(p(c), p(d), p(a)), s4 = em::predicates::orient2d(p(c), p(d), p(b));
+        const auto s1 = em::predicates::orient2d(p(a), p(b), p(c)),
+                   s2 = em::predicates::orient2d(p(a), p(b), p(d));
+        const auto s3 = em::predicates::orient2d(p(c), p(d), p(a)),
+                   s4 = em::predicates::orient2d(p(c), p(d), p(b));
         return s1 != s2 && s3 != s4;
     };
     std::uniform_int_distribution<tri::VertIdx> pick(0, n - 1);
@@ -112,8 +119,8 @@ Input random_non_crossing(std::uint32_t n, std::uint32_t tries, std::uint64_t se
     return in;
 }
 
-constexpr tri::SegmentRecovery kRecoveries[] = {tri::SegmentRecovery::Swap, tri::SegmentRecovery::Cavity,
-                                                tri::SegmentRecovery::Conforming};
+constexpr tri::SegmentRecovery kRecoveries[] = {
+    tri::SegmentRecovery::Swap, tri::SegmentRecovery::Cavity, tri::SegmentRecovery::Conforming};
 
 }  // namespace
 
@@ -134,7 +141,8 @@ TEST(Constrained2d, ForcedNonDelaunayDiagonal) {
 
 TEST(Constrained2d, SwapAndCavityAgreeOnRandomPslgs) {
     for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-        const Input in = random_non_crossing(60 + 10 * static_cast<std::uint32_t>(seed % 5), 80, seed);
+        const Input in =
+            random_non_crossing(60 + 10 * static_cast<std::uint32_t>(seed % 5), 80, seed);
         const auto swap = build(in, tri::SegmentRecovery::Swap);
         const auto cavity = build(in, tri::SegmentRecovery::Cavity);
         const auto conforming = build(in, tri::SegmentRecovery::Conforming);
@@ -156,9 +164,11 @@ TEST(Constrained2d, CocircularGridWithSegmentsIsUnique) {
         for (int x = 0; x < side; ++x) in.xy.insert(in.xy.end(), {double(x), double(y)});
     }
     auto id = [&](int x, int y) { return static_cast<tri::VertIdx>(y * side + x); };
-    in.segments = {id(0, 0), id(8, 3), id(1, 7), id(7, 8), id(2, 2), id(5, 6), id(0, 8), id(3, 1), id(6, 0), id(8, 8)};
+    in.segments = {id(0, 0), id(8, 3), id(1, 7), id(7, 8), id(2, 2),
+                   id(5, 6), id(0, 8), id(3, 1), id(6, 0), id(8, 8)};
     Triangles reference;
-    for (const auto order : {tri::InsertionOrder::Given, tri::InsertionOrder::Random, tri::InsertionOrder::Brio}) {
+    for (const auto order :
+         {tri::InsertionOrder::Given, tri::InsertionOrder::Random, tri::InsertionOrder::Brio}) {
         for (const auto recovery : {tri::SegmentRecovery::Swap, tri::SegmentRecovery::Cavity}) {
             tri::Cdt2Options options;
             options.recovery = recovery;
@@ -184,7 +194,8 @@ TEST(Constrained2d, CrossingSegmentsAreSplitAtTheRoundedIntersection) {
         EXPECT_FALSE(r.warnings.empty());
     }
     // The centre of the square is exact: both diagonals pass through the added vertex (0.5, 0.5).
-    const auto r = build(Input{{0, 0, 1, 0, 1, 1, 0, 1}, {0, 2, 1, 3}, {}, {}}, tri::SegmentRecovery::Swap);
+    const auto r =
+        build(Input{{0, 0, 1, 0, 1, 1, 0, 1}, {0, 2, 1, 3}, {}, {}}, tri::SegmentRecovery::Swap);
     ASSERT_EQ(r.mesh.vertex_count(), 5u);
     EXPECT_EQ(r.mesh.point(4)[0], 0.5);
     EXPECT_EQ(r.mesh.point(4)[1], 0.5);
@@ -235,7 +246,9 @@ TEST(Constrained2d, BadInputIsRejectedWithAClearError) {
         build(dangling, tri::SegmentRecovery::Swap);
         FAIL() << "dangling index accepted";
     } catch (const em::InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("segment 0: vertex 3 does not exist"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("segment 0: vertex 3 does not exist"),
+                  std::string::npos)
+            << e.what();
     }
     Input not_finite{{0, 0, 1, nan, 0, 1}, {0, 1}, {}, {}};
     EXPECT_THROW(build(not_finite, tri::SegmentRecovery::Swap), em::NonFiniteCoordinate);
@@ -319,12 +332,17 @@ TEST(Constrained2d, ConformingSegmentsAtSubnormalAnglesTerminate) {
     // angle near 1e-312 radians among subnormal abscissas; midpoint splitting ran past 100,000
     // splits. Concentric shells and splits at vertices within rounding of a segment end it.
     const Input cases[] = {
-        {{0x0.0000000ffffffp-1022, 0x1.1p+1, 0x1p-1007, -0x1.e8e8e8e8e8e8ep-791, -0x1.18e8e8e8e8e8ep-798,
-          0x0.00000008e8e8ep-1022, 0x0.000003f5602p-1022, 0, 0x0.0004010005bp-1022, -1},
-         {0, 4, 3, 4}, {}, {}},
+        {{0x0.0000000ffffffp-1022, 0x1.1p+1, 0x1p-1007, -0x1.e8e8e8e8e8e8ep-791,
+          -0x1.18e8e8e8e8e8ep-798, 0x0.00000008e8e8ep-1022, 0x0.000003f5602p-1022, 0,
+          0x0.0004010005bp-1022, -1},
+         {0, 4, 3, 4},
+         {},
+         {}},
         {{0x1.0602000b9f513p-223, 0, 0x1p-1007, 0x1p-1007, -0x1.e8e8e8e8e2a8ep-791, -0x1p-799,
           -0x1.e8e8e8e8e8e8ep-791, 0x0.08e8e8e8e8e8ep-1022, 0x0.03f02p-1022, 0},
-         {0, 4, 3, 0}, {}, {}},
+         {0, 4, 3, 0},
+         {},
+         {}},
     };
     for (const Input& in : cases) {
         const auto r = build(in, tri::SegmentRecovery::Conforming);
@@ -333,14 +351,19 @@ TEST(Constrained2d, ConformingSegmentsAtSubnormalAnglesTerminate) {
     }
 }
 
-TEST(Constrained2d, ConformingNearlyOverlappingSegmentsStopAtTheSplitBudget) {
+TEST(Constrained2d, ConformingNearlyOverlappingSegmentsStopWithAClearError) {
     // libFuzzer timeout (2026-11-23): segments (0, 2^465) - (1e-312, 0) and (2e-317, 2^641) -
     // (3e-322, -2^769) run side by side about 1e-312 apart over 2^465: conforming would need
-    // pieces as short as that gap all along. The split budget stops it with GeometryError (4,672
-    // splits, under a second in release); swap and cavity recovery are unaffected.
-    const Input in{{0, 0x1.03ffp+465, 0, 0, 0x0.00000003ffp-1022, 0x1p+641, 0x0.000000000004p-1022,
-                    -0x1.00000004p+769, 0x0.000400000003fp-1022, 0, 0x1.0003ffp-511, 0x0.000003e3e0000p-1022},
-                   {0, 4, 2, 3}, {}, {}};
+    // pieces as short as that gap all along (the split budget stopped it with GeometryError after
+    // 4,672 splits); swap and cavity recovery are unaffected.
+    const Input in{
+        {0, 0x1.03ffp+465, 0, 0, 0x0.00000003ffp-1022, 0x1p+641, 0x0.000000000004p-1022,
+         -0x1.00000004p+769, 0x0.000400000003fp-1022, 0, 0x1.0003ffp-511, 0x0.000003e3e0000p-1022},
+        {0, 4, 2, 3},
+        {},
+        {}};
+    // Conforming stops with GeometryError (a split point off the segment's way: features finer
+    // than doubles resolve, at once since issue 11's chain rule; before, the split budget).
     EXPECT_THROW(build(in, tri::SegmentRecovery::Conforming), em::GeometryError);
     for (const auto recovery : {tri::SegmentRecovery::Swap, tri::SegmentRecovery::Cavity}) {
         const auto r = build(in, recovery);
@@ -353,7 +376,9 @@ TEST(Constrained2d, ConformingSplitsOfASubnormalSegmentPassTheCheck) {
     // to half of 2^-1074; the check's tolerance (2^-40 of the extent) rounded to 0 there.
     const Input in{{3.844e-321, 0, 0, 8.087e-320, 0, 1.35807730622e-312, 0, 1.35675105885e-312,
                     1.35675105885e-312, 1.3587404299e-312, 0, 1.35675105885e-312},
-                   {0, 4, 2, 0}, {}, {}};
+                   {0, 4, 2, 0},
+                   {},
+                   {}};
     const auto r = build(in, tri::SegmentRecovery::Conforming);
     expect_valid(in, r, tri::SegmentRecovery::Conforming, true, "subnormal segment");
 }
@@ -390,7 +415,10 @@ TEST(CheckConstrained2d, RejectsMissingSegmentsNonDelaunayEdgesAndOneSidedFlags)
     const std::vector<tri::VertIdx> segment{0, 2};
     auto report = tri::check_constrained_delaunay_2d(delaunay, 4, segment);
     EXPECT_FALSE(report.ok);
-    EXPECT_NE(report.problem.find("segment 0 (0, 2) is missing: no chain of constrained pieces continues it beyond vertex 0"), std::string::npos) << report.problem;
+    EXPECT_NE(report.problem.find("segment 0 (0, 2) is missing: no chain of constrained pieces "
+                                  "continues it beyond vertex 0"),
+              std::string::npos)
+        << report.problem;
     // The other diagonal without its flag is not locally Delaunay.
     tri::Triangulation2 forced = delaunay;
     forced.triangles = {0, 1, 2, 0, 2, 3};
@@ -423,10 +451,13 @@ TEST(Constrained2d, HullSegmentThroughHullVertex) {
 TEST(Constrained2d, PieceBentThroughAnInputVertex) {
     // Two segments a few ulps from y = x cross; the rounded crossing v6 lies off segment 0, and
     // the piece v6 -> 1 passes exactly through input vertex 0.
-    Input in{{0x1.b6a75ac694193p-1, 0x1.b6a75ac694191p-1, 0x1.a1f25e144f579p-1, 0x1.a1f25e144f577p-1,
-              0x1.53dab466f285ap+0, 0x1.53dab466f2857p+0, 0x1.8c20e6321e5c8p-1, 0x1.8c20e6321e5c8p-1,
-              0x1.3818b352f616ap+0, 0x1.3818b352f6169p+0, 0x1.079c186ee83d8p-1, 0x1.079c186ee83d5p-1},
-             {2, 1, 4, 5}, {}, {}};
+    Input in{
+        {0x1.b6a75ac694193p-1, 0x1.b6a75ac694191p-1, 0x1.a1f25e144f579p-1, 0x1.a1f25e144f577p-1,
+         0x1.53dab466f285ap+0, 0x1.53dab466f2857p+0, 0x1.8c20e6321e5c8p-1, 0x1.8c20e6321e5c8p-1,
+         0x1.3818b352f616ap+0, 0x1.3818b352f6169p+0, 0x1.079c186ee83d8p-1, 0x1.079c186ee83d5p-1},
+        {2, 1, 4, 5},
+        {},
+        {}};
     for (const auto recovery : kRecoveries) {
         expect_valid(in, build(in, recovery), recovery, true, tri::segment_recovery_name(recovery));
     }
@@ -435,11 +466,14 @@ TEST(Constrained2d, PieceBentThroughAnInputVertex) {
 TEST(Constrained2d, ReleasedConstraintIsMadeDelaunayAgain) {
     // Three segments a few ulps from y = x, crossing twice over: the constrained edge released
     // at a crossing whose rounded point is not next to it must be flipped if not Delaunay.
-    Input in{{0x1.5804a971442eap+0, 0x1.5804a971442eep+0, 0x1.75b112c8b81efp+0, 0x1.75b112c8b81ebp+0,
-              0x1.4b6b40eea9bdp+0, 0x1.4b6b40eea9bd3p+0, 0x1.4e3751ad40fa8p+0, 0x1.4e3751ad40faap+0,
-              0x1.252a905a50e2dp+0, 0x1.252a905a50e2cp+0, 0x1.5711b8581add2p+0, 0x1.5711b8581add3p+0,
-              0x1.6145d6e125528p+0, 0x1.6145d6e125529p+0},
-             {1, 2, 4, 0, 3, 6}, {}, {}};
+    Input in{
+        {0x1.5804a971442eap+0, 0x1.5804a971442eep+0, 0x1.75b112c8b81efp+0, 0x1.75b112c8b81ebp+0,
+         0x1.4b6b40eea9bdp+0, 0x1.4b6b40eea9bd3p+0, 0x1.4e3751ad40fa8p+0, 0x1.4e3751ad40faap+0,
+         0x1.252a905a50e2dp+0, 0x1.252a905a50e2cp+0, 0x1.5711b8581add2p+0, 0x1.5711b8581add3p+0,
+         0x1.6145d6e125528p+0, 0x1.6145d6e125529p+0},
+        {1, 2, 4, 0, 3, 6},
+        {},
+        {}};
     Triangles swap_triangles;
     for (const auto recovery : kRecoveries) {
         const auto r = build(in, recovery);
@@ -466,6 +500,7 @@ TEST(CheckConstrained2d, SegmentNamingAnUnusedDuplicateFollowsTheKeptCopy) {
     Input in{{0, 0, 1, 0, 1, 1, 0, 1, 1, 1}, {0, 4}, {}, {}};
     const auto r = build(in, tri::SegmentRecovery::Swap);
     ASSERT_EQ(r.merged_into[4], 2u);
-    const auto report = tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments);
+    const auto report =
+        tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments);
     EXPECT_TRUE(report.ok) << report.problem;
 }
