@@ -574,10 +574,13 @@ check_rejects_non_delaunay_3d() {
   run 1 check "$work/five.node" "$work/flipped.ele" || return
   grep -Eq '^not ok: .*flipped\.ele: tetrahedron [1-3] \(.*\): not Delaunay, vertex [0-9] lies inside its circumsphere$' \
     "$work/out" || fail "check: wrong report: $(cat "$work/out")"
+  # The corners as the file lists them (1-based, in its order), not in the internal order.
+  grep -Eq 'tetrahedron 1 \(4, 5, 2, 1\)|tetrahedron 2 \(4, 5, 3, 2\)|tetrahedron 3 \(4, 5, 1, 3\)' "$work/out" ||
+    fail "check: corners not in the file's order: $(cat "$work/out")"
   # The same tetrahedra inside out are named as such.
   printf '3 4 0\n1 5 4 2 1\n2 4 5 3 2\n3 4 5 1 3\n' >"$work/inverted.ele"
   run 1 check "$work/five.node" "$work/inverted.ele" &&
-    grep -q 'tetrahedron 1 (.*): not positively oriented' "$work/out" || fail "check: inverted: $(cat "$work/out")"
+    grep -q 'tetrahedron 1 (5, 4, 2, 1): not positively oriented' "$work/out" || fail "check: inverted: $(cat "$work/out")"
   # A missing tetrahedron leaves the boundary open.
   printf '1 4 0\n1 1 2 3 4\n' >"$work/one.ele"
   run 1 check "$work/five.node" "$work/one.ele" && grep -q 'point 5 is not a vertex' "$work/out" ||
@@ -625,7 +628,8 @@ swap3d_bad_input() {
   expect_error 2 'planar\.node:1: dimension must be 3' swap3d "$data/planar.node" "$data/pair.ele" -o "$work/x.ele"
   expect_error 2 'pair_bad_node\.ele:3: node number 9 out of range' \
     swap3d "$data/pair.node" "$data/pair_bad_node.ele" -o "$work/x.ele"
-  expect_error 2 'pair_inverted\.ele: tetrahedron 0 \(1, 0, 3, 2\) is negatively oriented' \
+  # Corners in the file's order (the reader swaps the last two internally; the file says 1 0 2 3).
+  expect_error 2 'pair_inverted\.ele: tetrahedron 0 \(1, 0, 2, 3\) is negatively oriented' \
     swap3d "$data/pair.node" "$data/pair_inverted.ele" -o "$work/x.ele"
   expect_error 2 'pair_overlap\.ele: face .* is shared by 3 tetrahedra' \
     swap3d "$data/pair.node" "$data/pair_overlap.ele" -o "$work/x.ele"
