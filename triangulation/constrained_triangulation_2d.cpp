@@ -410,6 +410,7 @@ ConstrainedTriangulation2& ConstrainedTriangulation2::operator=(ConstrainedTrian
 const TriMesh2& ConstrainedTriangulation2::mesh() const { return builder_->mesh(); }
 std::uint32_t ConstrainedTriangulation2::segment_of(EdgeIdx e) const { return builder_->segment_of(e); }
 bool ConstrainedTriangulation2::in_domain(TriIdx t) const { return builder_->in_domain(t); }
+double ConstrainedTriangulation2::attribute(TriIdx t) const { return builder_->attribute_of(t); }
 bool ConstrainedTriangulation2::collinear() const { return builder_->collinear(); }
 std::uint32_t ConstrainedTriangulation2::input_vertex_count() const { return builder_->input_vertex_count(); }
 std::span<const VertIdx> ConstrainedTriangulation2::input_index() const { return builder_->input_index(); }
