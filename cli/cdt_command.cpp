@@ -77,7 +77,8 @@ void run_cdt(const CdtArguments& arguments) {
     const io::PolyFile poly = read_input(arguments.input);
     const std::uint32_t base = poly.vertices.first_index;
     warn_unused_region_areas(poly, arguments.input,
-                             "cdt adds no vertices; `exactmesh mesh` refines to --size");
+                             "cdt adds no vertices; `exactmesh mesh` applies them with "
+                             "--generator delaunay-refinement or frontal");
 
     tri::Cdt2Options options;
     options.recovery = tri::segment_recovery_from_name(arguments.recovery);

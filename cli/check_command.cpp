@@ -109,7 +109,8 @@ int run_check_3d(const CheckArguments& arguments) {
     const io::TetgenEleFile ele =
         io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
     const tri::Check3Report report = tri::check_delaunay_3d(
-        nodes.xyz, ele.tets, {}, tri::Check3Numbering{nodes.first_index, ele.first_index});
+        nodes.xyz, ele.tets, {},
+        tri::Check3Numbering{nodes.first_index, ele.first_index, io::kTetgenFileCorners});
     if (report.ok) {
         std::cout << "ok: " << ele.tet_count() << " tetrahedra, exact Delaunay\n";
         return kExitSuccess;

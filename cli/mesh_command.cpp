@@ -136,9 +136,20 @@ void run_mesh(const MeshArguments& arguments) {
     } else {
         poly = io::read_poly(arguments.input);
         title = fs::path(arguments.input).filename().string();
-        warn_unused_region_areas(
-            poly, arguments.input,
-            "exactmesh sizes triangles by --size only; give a size file or expression instead");
+        if (!generator.region_areas) {
+            // A generator that carries no regions would silently ignore the areas: refused, so
+            // that a mesh never looks as if it had honoured them.
+            for (std::size_t r = 0; r < poly.regions.size() / 4; ++r) {
+                if (poly.regions[4 * r + 3] > 0) {
+                    throw InputError(arguments.input + ":" + std::to_string(poly.region_lines[r]) +
+                                     ": region maximum area " +
+                                     format_number(poly.regions[4 * r + 3]) +
+                                     ": region maximum areas are honoured by delaunay-refinement "
+                                     "and frontal only (--generator " +
+                                     std::string(generator.name) + ")");
+                }
+            }
+        }
     }
     const std::uint32_t base = poly.vertices.first_index;
 

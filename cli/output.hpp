@@ -81,8 +81,8 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
                               std::uint32_t base, const std::string& svg_title);
 
-/// Region maximum areas (Triangle's -a per region) are read but not applied: warns once, at the
-/// first region that gives one, with `why`.
+/// Region maximum areas (Triangle's -a per region) are read but not applied by `cdt`: warns once,
+/// at the first region that gives one, with `why`.
 void warn_unused_region_areas(const io::PolyFile& poly, const std::string& file,
                               const std::string& why);
 

@@ -62,7 +62,8 @@ void run_swap3d(const Swap3dArguments& arguments) {
     mesh.xyz = nodes.xyz;
     mesh.tets = ele.tets;
     try {
-        tri::link_neighbors_3d(mesh, nodes.first_index, ele.first_index);
+        tri::link_neighbors_3d(
+            mesh, tri::Check3Numbering{nodes.first_index, ele.first_index, io::kTetgenFileCorners});
     } catch (const InputError& error) {
         throw InputError(arguments.ele_path + ": " + error.what());
     }
@@ -70,7 +71,8 @@ void run_swap3d(const Swap3dArguments& arguments) {
     // most two tetrahedra, a closed convex boundary): overlapping tetrahedra would otherwise be
     // swapped into a "result".
     if (const tri::Check3Report report = tri::check_tetrahedralization_3d(
-            nodes.xyz, ele.tets, {}, tri::Check3Numbering{nodes.first_index, ele.first_index});
+            nodes.xyz, ele.tets, {},
+            tri::Check3Numbering{nodes.first_index, ele.first_index, io::kTetgenFileCorners});
         !report.ok) {
         throw InputError(arguments.ele_path + ": not a tetrahedralization of the points of " +
                          arguments.node_path + ": " + report.problem);

@@ -20,12 +20,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "generators/region_areas_2d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/power_of_two.hpp"
+#include "predicates/triangle_area.hpp"
 #include "triangulation/angles_2d.hpp"
 #include "triangulation/constrained_triangulation_2d.hpp"
 
@@ -145,12 +148,25 @@ struct SegmentVertex {
 class Refiner {
   public:
     Refiner(const tri::Pslg& pslg, const RefinementOptions2& options)
-        : options_(options), cdt_(pslg, options.cdt), mesh_(cdt_.mesh()) {}
+        : options_(options),
+          regions_(pslg.regions),
+          region_areas_(has_region_areas(pslg.regions)),
+          numbered_regions_(region_areas_ ? numbered_regions(pslg.regions) : std::vector<double>{}),
+          cdt_(region_areas_ ? tri::Pslg{pslg.xy, pslg.segments, pslg.holes, numbered_regions_}
+                             : pslg,
+               options.cdt),
+          mesh_(cdt_.mesh()) {}
 
     RefinementResult2 run();
 
   private:
     const RefinementOptions2& options_;
+    // Regional maximum areas (region_areas_2d.hpp): when a region has one, the triangulation's
+    // attributes are region numbers (numbered_regions), mapped back to the input's attributes in
+    // the result.
+    std::span<const double> regions_;
+    bool region_areas_ = false;
+    std::vector<double> numbered_regions_;
     tri::ConstrainedTriangulation2 cdt_;
     const tri::TriMesh2& mesh_;  // the triangulation's, valid across edits
     RefinementCounters2 counters_;
@@ -210,9 +226,15 @@ class Refiner {
 void Refiner::check_domain_and_budget() {
     std::uint64_t inside = 0;
     double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
+    double regional = 0;  // the triangles the regions' maximum areas ask for
     for (TriIdx t = 0; t < mesh_.triangle_slots(); ++t) {
         if (!cdt_.in_domain(t)) continue;
         ++inside;
+        if (region_areas_) {
+            regional += triangles_of_area(point(mesh_.tv[3 * t]), point(mesh_.tv[3 * t + 1]),
+                                          point(mesh_.tv[3 * t + 2]),
+                                          region_area_of(regions_, cdt_.attribute(t)));
+        }
         for (unsigned k = 0; k < 3; ++k) {
             const double* p = point(mesh_.tv[3 * t + k]);
             lo_x = std::min(lo_x, p[0]);
@@ -228,7 +250,8 @@ void Refiner::check_domain_and_budget() {
     }
     // Automatic: at least 10^6, 64 per input feature, and 16 times the element count the size
     // function asks for over the domain's bounding box (equilateral_count_in_box).
-    const double estimate = equilateral_count_in_box(options_.size, lo_x, lo_y, hi_x, hi_y);
+    const double estimate =
+        std::max(equilateral_count_in_box(options_.size, lo_x, lo_y, hi_x, hi_y), regional);
     const double features =
         static_cast<double>(initial_vertices_) + static_cast<double>(mesh_.triangle_slots());
     budget_ = options_.max_steiner_points != 0
@@ -324,6 +347,17 @@ void Refiner::evaluate(TriIdx t) {
             const double scaled_size =
                 predicates::PowerOfTwo(scaled.shift)(s);  // in the scaled units
             size_key = std::max(size_key, length2[k] / (scaled_size * scaled_size));
+        }
+    }
+    if (region_areas_) {
+        // Regional maximum area A (Triangle's -a): too big when its area exceeds A, decided
+        // exactly (triangle_area_sign); the key is area / A in the scaled frame, comparable with
+        // size_key's (length / size)^2, at least just above 1 once the exact test says bad.
+        const double area = region_area_of(regions_, cdt_.attribute(t));
+        if (area > 0 && predicates::triangle_area_sign(p[0], p[1], p[2], area) == Sign::Positive) {
+            const double ratio =
+                0.5 * scaled.cross / predicates::PowerOfTwo(2 * scaled.shift)(area);
+            size_key = std::max({size_key, ratio, 1 + 1e-9});
         }
     }
     double key = size_key;
@@ -676,6 +710,9 @@ RefinementResult2 Refiner::run() {
                                    predicates::construction_stats().exact_uncertified;
     RefinementResult2 result;
     result.mesh = std::move(cdt_).take_result();
+    if (region_areas_) {
+        for (double& a : result.mesh.triangle_attributes) a = region_attribute_of(regions_, a);
+    }
     counters_.flips = result.mesh.counters.delaunay_flips;
     counters_.orient_calls = result.mesh.counters.orient_calls;
     counters_.incircle_calls = result.mesh.counters.incircle_calls;

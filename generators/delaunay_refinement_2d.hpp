@@ -9,7 +9,8 @@
 //    of one of their pieces (encroachment), at the midpoint, or on a concentric shell (the power
 //    of two nearest half its length) about an input vertex where segments meet [Ruppert95 §4].
 //  - Then the worst bad triangle (radius-edge ratio above B = 1 / (2 sin theta_min), i.e. an
-//    angle below theta_min, or an edge longer than the size function at its midpoint) gets its
+//    angle below theta_min, or an edge longer than the size function at its midpoint, or an
+//    area above its region's maximum area: Triangle's -a, region_areas_2d.hpp) gets its
 //    circumcenter, correctly rounded (predicates/constructions), inserted by Bowyer-Watson; a
 //    circumcenter that encroaches pieces is not inserted, and those pieces are split instead.
 //  - Small input angles (below 60 degrees, inside the domain): the skinny triangle at such an
@@ -101,7 +102,9 @@ struct RefinementResult2 {
 };
 
 /// Refines the domain the PSLG's segments enclose (holes and exterior removed as
-/// constrained_delaunay_2d removes them).
+/// constrained_delaunay_2d removes them). A region of pslg.regions with a maximum area A > 0
+/// (its 4th number) bounds the area of each of its triangles by A, decided exactly
+/// (predicates/triangle_area.hpp); the result's triangle_attributes are the regions' own.
 /// @throws InputError on bad input (as constrained_delaunay_2d), a polish angle above
 ///         kMaxMinAngle or NaN, a negative or non-finite polish fraction, a min_angle outside
 ///         [0, kMaxMinAngle], or when the segments enclose no region.

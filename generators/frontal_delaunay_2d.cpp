@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "generators/domain_boundary_2d.hpp"
+#include "generators/region_areas_2d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/incircle.hpp"
 #include "triangulation/constrained_triangulation_2d.hpp"
@@ -467,10 +468,14 @@ FrontalDelaunayResult2 frontal_delaunay_2d(const tri::Pslg& pslg,
     tri::Cdt2Options cdt = options.cdt;
     cdt.remove_exterior = true;
     if (cdt.recovery == tri::SegmentRecovery::Conforming) cdt.recovery = tri::SegmentRecovery::Swap;
-    DomainBoundary2 boundary = discretize_domain_boundary(pslg, options.size, cdt);
+    // Regional maximum areas are sizes here: the equilateral edge of the area, where smaller
+    // than the size (region_areas_2d.hpp), for the boundary's split as for the front.
+    FrontalDelaunayOptions2 sized = options;
+    sized.size = size_with_region_areas(pslg, options.size, cdt);
+    DomainBoundary2 boundary = discretize_domain_boundary(pslg, sized.size, cdt);
     const std::uint64_t boundary_points = boundary.xy.size() / 2 - boundary.cdt.mesh.xy.size() / 2;
     // The rebuilt PSLG's warnings (none but merged duplicates, already reported) are dropped.
-    Frontal frontal(pslg, options, std::move(boundary), cdt);
+    Frontal frontal(pslg, sized, std::move(boundary), cdt);
     FrontalDelaunayResult2 result = frontal.run();
     result.counters.boundary_points = boundary_points;
     return result;

@@ -38,7 +38,10 @@
 namespace exactmesh::generators {
 
 struct FrontalDelaunayOptions2 {
-    /// The target edge length; must be bounded (InputError otherwise).
+    /// The target edge length; must be bounded (InputError otherwise). Inside a region of the
+    /// PSLG with a maximum area A > 0, the smaller of it and sqrt(4 A / sqrt 3), the edge of the
+    /// equilateral triangle of area A (region_areas_2d.hpp): accepted triangles then have an
+    /// area of at most 1.5 A (the acceptance's circumradius bound, squared).
     SizeFunction size;
     /// Accept a triangle when its circumradius is at most this times s / sqrt 3 at its
     /// centroid (s / sqrt 3: the equilateral triangle of edge s). In [1, 4]. The default

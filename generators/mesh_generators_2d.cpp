@@ -14,6 +14,7 @@
 #include "generators/advancing_front_delaunay_2d.hpp"
 #include "generators/frontal_delaunay_2d.hpp"
 #include "generators/quadtree_mesh_2d.hpp"
+#include "generators/region_areas_2d.hpp"
 #include "predicates/errors.hpp"
 
 namespace exactmesh::generators {
@@ -139,30 +140,58 @@ double minimum_triangle_count(const tri::Triangulation2& domain, const SizeFunct
 }
 
 void check_size_budget(const tri::Pslg& pslg, const MeshOptions2& options, bool hard_budget) {
-    if (!options.size.bounded()) return;
+    const bool areas = has_region_areas(pslg.regions);
+    if (!options.size.bounded() && !areas) return;
     tri::Cdt2Options cdt = options.cdt;
     cdt.remove_exterior = true;
-    const tri::Cdt2Result domain = tri::constrained_delaunay_2d(pslg, cdt);
+    // With regional maximum areas, the regions are numbered so that each triangle names its own.
+    const std::vector<double> numbered =
+        areas ? numbered_regions(pslg.regions) : std::vector<double>{};
+    const tri::Cdt2Result domain = tri::constrained_delaunay_2d(
+        areas ? tri::Pslg{pslg.xy, pslg.segments, pslg.holes, numbered} : pslg, cdt);
     const double inputs = static_cast<double>(pslg.xy.size() / 2);
     const bool given = hard_budget && options.max_steiner_points != 0;
     // A triangulation of V vertices has fewer than 2V triangles.
     const double budget = given ? 2 * (static_cast<double>(options.max_steiner_points) + inputs)
                                 : kAutomaticTriangleBudget;
-    const double estimate = minimum_triangle_count(domain.mesh, options.size, budget);
+    const double by_size = minimum_triangle_count(domain.mesh, options.size, budget);
+    // Both are lower estimates of the count; the larger one is kept (a region's triangles
+    // answer to both).
+    const double by_area = areas ? region_area_triangle_count(domain, pslg.regions) : 0.0;
+    const double estimate = std::max(by_size, by_area);
     if (estimate > budget) {
+        const std::string what = by_area > by_size
+                                     ? "the regions' maximum areas ask"
+                                     : "the size (" + options.size.describe() + ") asks";
         throw InputError(
-            "the size (" + options.size.describe() + ") asks for " +
+            what + " for " +
             (estimate > 1e300 ? std::string("far more than 1e300")
                               : "about " + number_text(estimate) + " or more") +
             " triangles over the domain, more than the " +
             (given ? "--max-steiner budget of about " + number_text(budget) + " triangles"
                    : "automatic budget of " + number_text(budget) +
                          " triangles (raise it with --max-steiner)") +
-            (given ? ": give a larger size or raise --max-steiner" : ": give a larger size"));
+            (by_area > by_size ? (given ? ": give larger maximum areas or raise --max-steiner"
+                                        : ": give larger maximum areas")
+                               : (given ? ": give a larger size or raise --max-steiner"
+                                        : ": give a larger size")));
     }
 }
 
 namespace {
+
+void refuse_region_areas(const tri::Pslg& pslg, const MeshOptions2& options,
+                         std::string_view generator) {
+    for (std::size_t r = 0; 4 * r + 3 < pslg.regions.size(); ++r) {
+        if (pslg.regions[4 * r + 3] > 0) {
+            throw InputError("region " + std::to_string(r + options.cdt.first_index) +
+                             " has a maximum area (" + number_text(pslg.regions[4 * r + 3]) +
+                             "): region maximum areas are honoured by delaunay-refinement and "
+                             "frontal only, not by " +
+                             std::string(generator));
+        }
+    }
+}
 
 MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& options) {
     check_size_budget(pslg, options, true);
@@ -182,6 +211,7 @@ MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& opti
 }
 
 MeshRun2 run_quadtree(const tri::Pslg& pslg, const MeshOptions2& options) {
+    refuse_region_areas(pslg, options, "quadtree");
     check_size_budget(pslg, options, true);
     QuadtreeOptions2 quadtree;
     quadtree.size = options.size;
@@ -193,6 +223,7 @@ MeshRun2 run_quadtree(const tri::Pslg& pslg, const MeshOptions2& options) {
 }
 
 MeshRun2 run_advancing_front(const tri::Pslg& pslg, const MeshOptions2& options) {
+    refuse_region_areas(pslg, options, "advancing-front");
     check_size_budget(pslg, options, false);
     AdvancingFrontOptions2 front;
     front.size = options.size;
@@ -210,6 +241,7 @@ MeshRun2 run_advancing_front(const tri::Pslg& pslg, const MeshOptions2& options)
 }
 
 MeshRun2 run_advancing_front_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
+    refuse_region_areas(pslg, options, "advancing-front-delaunay");
     check_size_budget(pslg, options, false);
     AdvancingFrontDelaunayOptions2 front;
     front.size = options.size;
@@ -239,23 +271,23 @@ constexpr std::array kGenerators{
     MeshGenerator2{"delaunay-refinement",
                    "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
                    "split first; guaranteed minimum angle",
-                   true, false, &run_delaunay_refinement},
+                   true, false, true, &run_delaunay_refinement},
     MeshGenerator2{"quadtree",
                    "Yerry-Shephard/Baehmann: balanced quadtree leaves as 45-45-90 templates, "
                    "the band along the boundary by a refined constrained Delaunay triangulation",
-                   false, true, &run_quadtree},
+                   false, true, false, &run_quadtree},
     MeshGenerator2{"advancing-front",
                    "Lo/Peraire/Lohner: shortest front edge first, apex on its median at the local "
                    "size or a nearby front vertex, exact acceptance tests; needs a size",
-                   false, true, &run_advancing_front},
+                   false, true, false, &run_advancing_front},
     MeshGenerator2{"advancing-front-delaunay",
                    "Mavriplis: shortest front edge first, a point at the circumradius bound, the "
                    "Tanemura-Merriam (Delaunay) choice among nearby front points; needs a size",
-                   false, true, &run_advancing_front_delaunay},
+                   false, true, false, &run_advancing_front_delaunay},
     MeshGenerator2{"frontal",
                    "Rebay: points placed from the boundary inwards on the front edges' "
                    "bisectors, inserted by Bowyer-Watson; needs a size",
-                   true, true, &run_frontal_delaunay},
+                   true, true, true, &run_frontal_delaunay},
 };
 
 }  // namespace

@@ -41,6 +41,9 @@ struct MeshGenerator2 {
     std::string_view summary;  ///< one line for --help
     bool delaunay;             ///< meshes are constrained Delaunay (else only conforming)
     bool needs_size;           ///< an unbounded size is an InputError
+    /// Honours regional maximum areas (the 4th number of a region, > 0); the others raise
+    /// InputError on a PSLG with one (they carry no regions).
+    bool region_areas;
     MeshRun2 (*run)(const triangulation::Pslg& pslg, const MeshOptions2& options);
 };
 
@@ -63,7 +66,8 @@ double minimum_triangle_count(const triangulation::Triangulation2& domain, const
                               double stop_above);
 
 /// The budget every generator of the registry checks before meshing (issue 11): with a size,
-/// the minimum_triangle_count over the domain must stay within 2^26 triangles (automatic
+/// the minimum_triangle_count over the domain (and with regional maximum areas, the
+/// region_area_triangle_count, whichever is larger) must stay within 2^26 triangles (automatic
 /// budget) or, for the generators whose budget is a hard limit (Delaunay refinement, quadtree,
 /// frontal), within the triangles options.max_steiner_points Steiner points can make.
 /// @throws InputError naming the size, the estimate and the budget, at once.

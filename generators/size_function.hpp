@@ -183,8 +183,10 @@ double equilateral_count_in_box(const SizeFunction& size, double x0, double y0, 
 ///     quadtree [TOL [FACTOR]]          SizeFunction::quadtree, tolerance TOL (0.05), cell
 ///                                      factor FACTOR (1)
 ///     smooth NX NY [GRADE [LENGTH]]    SizeFunction::smoothed on an NX x NY grid (2 to 16384
-///                                      each), gradation GRADE (0.3), length LENGTH (0: twice
-///                                      the grid spacing)
+///                                      each, at most 2^20 nodes, and a solve estimated at at
+///                                      most 2^29 node-iterations: size_smoothing_2d.hpp),
+///                                      gradation GRADE (0.3), length LENGTH (0: twice the
+///                                      grid spacing)
 /// Items may come in any order. `name` names the text in errors (a file name).
 /// @throws InputError "name:line: ..." on anything else (a bad vertex or triangle of the
 ///         background mesh names its line; a bad quadtree or smoothing the directive's line);

@@ -24,7 +24,10 @@
 // source). Without pins, the x-differences of s2 solve the same kind of system with those of s1
 // as right-hand side (zero flux makes the operators commute), so s2 keeps s1's axis-slope bound.
 // Cost: N = NX · NY field evaluations, O(N log N) for H, O(N sqrt(kappa)) for the solve with
-// kappa <= 1 + 8 L^2 / h^2; a query O(1). Predicates: none (a size field, no combinatorics).
+// kappa <= 1 + 8 L^2 / h^2; a query O(1). Bounded before any work (issue 11: `smooth 4096 4096`
+// took minutes, and so did 16384 x 64 over a square, its cells 256:1): N <= 2^20 and the
+// estimated solve at most 2^29 node-iterations, else InputError. Predicates: none (a size field, no
+// combinatorics).
 #pragma once
 
 #include <cstddef>
@@ -36,11 +39,27 @@
 
 namespace exactmesh::generators {
 
+/// The most grid nodes (1024 x 1024: measured 1.3 s to build with the default length, where
+/// 2048 x 2048 took 7 s and 4096 x 4096 minutes).
+inline constexpr std::uint64_t kMaxSmoothingNodes = std::uint64_t{1} << 20;
+/// The most work of the solve: estimated iterations (smoothing_iterations_estimate) times nodes,
+/// about 3.5 s at the 1.5e8 node-iterations per second measured (2048 x 64 over a unit box, its
+/// cells 32:1: 1.2 s; refused: 4096 x 256, cells 16:1, 7.7 s, and 1024 x 1024 with length 10,
+/// 53 s).
+inline constexpr double kMaxSmoothingWork = 0x1p29;
+
+/// The conjugate gradient iterations the solve is expected to need on an nx x ny grid of
+/// spacings hx, hy with smoothing length `length` to reach `residual` (an upper estimate).
+double smoothing_iterations_estimate(std::uint32_t nx, std::uint32_t ny, double hx, double hy,
+                                     double length, double residual);
+
 class SmoothedSizeGrid2 {
   public:
     /// @param field finite and > 0 at every node of the grid over `box`.
-    /// @throws InputError on a bad box, options or field value; GeometryError when conjugate
-    ///         gradients miss options.residual within 10 N + 100 iterations.
+    /// @throws InputError on a bad box, options or field value, more than kMaxSmoothingNodes
+    ///         nodes, or an estimated solve above kMaxSmoothingWork; GeometryError when
+    ///         conjugate gradients miss options.residual within 4 times the estimated
+    ///         iterations + 100 (at most 10 N + 100).
     SmoothedSizeGrid2(const std::function<double(double, double)>& field, const SizeBox& box,
                       const SmoothingOptions& options = {});
 

@@ -12,6 +12,7 @@
 // counter-clockwise seen from outside (outward normal by the right-hand rule).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -32,6 +33,11 @@ struct TetgenNodeFile {
 
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xyz.size() / 3); }
 };
+
+/// Where the corners of a file line went: the line's corner k is tets[4t + kTetgenFileCorners[k]]
+/// (the reader swaps the last two for exactmesh's orientation); messages list them back in the
+/// file's order (triangulation::Check3Numbering::corner_order).
+inline constexpr std::array<std::uint8_t, 4> kTetgenFileCorners{0, 1, 3, 2};
 
 /// The content of a TetGen .ele file, in exactmesh's orientation and 0-based vertex indices.
 struct TetgenEleFile {

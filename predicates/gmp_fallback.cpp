@@ -26,9 +26,10 @@ Sign sign_of(const mpz_class& x) {
     return s > 0 ? Sign::Positive : (s < 0 ? Sign::Negative : Sign::Zero);
 }
 
-/// The N input coordinates of one call as integers, all scaled by the same power of two.
+/// The N input coordinates of one call as integers, all scaled by the same power of two:
+/// 2^-least (INT_MAX when every coordinate is 0), stored in `least_out` when given.
 template <std::size_t N>
-std::array<mpz_class, N> scaled_integers(const std::array<double, N>& x) {
+std::array<mpz_class, N> scaled_integers(const std::array<double, N>& x, int* least_out = nullptr) {
     std::array<std::int64_t, N> mantissa{};
     std::array<int, N> exponent{};
     int least = INT_MAX;
@@ -46,6 +47,7 @@ std::array<mpz_class, N> scaled_integers(const std::array<double, N>& x) {
         out[i] = static_cast<long>(mantissa[i]);
         mpz_mul_2exp(out[i].get_mpz_t(), out[i].get_mpz_t(), static_cast<mp_bitcnt_t>(exponent[i] - least));
     }
+    if (least_out != nullptr) *least_out = least;
     return out;
 }
 
@@ -106,6 +108,30 @@ Sign insphere_gmp(const double* a, const double* b, const double* c, const doubl
     const mpz_class det =
         m[0][0] * minor3(0) - m[0][1] * minor3(1) + m[0][2] * minor3(2) - m[0][3] * minor3(3);
     return sign_of(det);
+}
+
+Sign triangle_area_gmp(const double* a, const double* b, const double* c, double area) {
+    // Not homogeneous: the determinant has degree 2 in the coordinates, the area degree 0. With
+    // the coordinates scaled to integers by 2^-least, det = D 2^(2 least) for the integer D;
+    // area = M 2^E (frexp); compare D 2^(2 least) with M 2^(E + 1) after dividing both by
+    // 2^min(2 least, E + 1), which leaves two integers.
+    int least = 0;
+    const auto v = scaled_integers<6>({a[0], a[1], b[0], b[1], c[0], c[1]}, &least);
+    const mpz_class det = (v[0] - v[4]) * (v[3] - v[5]) - (v[1] - v[5]) * (v[2] - v[4]);
+    if (area == 0.0) return sign_of(det);
+    if (least == INT_MAX) return area > 0 ? Sign::Negative : Sign::Positive;
+    int e = 0;
+    const double f = std::frexp(area, &e);
+    mpz_class twice_area = static_cast<long>(std::ldexp(f, 53));
+    e -= 53;
+    const long det_exponent = 2L * least, area_exponent = e + 1L;
+    const long common = std::min(det_exponent, area_exponent);
+    mpz_class scaled_det = det;
+    mpz_mul_2exp(scaled_det.get_mpz_t(), scaled_det.get_mpz_t(),
+                 static_cast<mp_bitcnt_t>(det_exponent - common));
+    mpz_mul_2exp(twice_area.get_mpz_t(), twice_area.get_mpz_t(),
+                 static_cast<mp_bitcnt_t>(area_exponent - common));
+    return sign_of(mpz_class(scaled_det - twice_area));
 }
 
 }  // namespace exactmesh::predicates

@@ -12,5 +12,7 @@ Sign orient3d_gmp(const double* a, const double* b, const double* c, const doubl
 Sign incircle_gmp(const double* a, const double* b, const double* c, const double* d);
 Sign insphere_gmp(const double* a, const double* b, const double* c, const double* d,
                   const double* e);
+/// Sign of orient2d's determinant of a, b, c minus 2 area (triangle_area.hpp's stage B).
+Sign triangle_area_gmp(const double* a, const double* b, const double* c, double area);
 
 }  // namespace exactmesh::predicates

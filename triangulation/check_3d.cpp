@@ -29,9 +29,10 @@ class Namer {
     }
     std::string tet(TetIdx t) const {
         const std::size_t base = 4 * std::size_t{t};
+        const auto& order = numbering_.corner_order;  // the caller's corner order
         return "tetrahedron " + std::to_string(std::uint64_t{t} + numbering_.first_tet) + " (" +
-               vertex(tets_[base]) + ", " + vertex(tets_[base + 1]) + ", " +
-               vertex(tets_[base + 2]) + ", " + vertex(tets_[base + 3]) + ")";
+               vertex(tets_[base + order[0]]) + ", " + vertex(tets_[base + order[1]]) + ", " +
+               vertex(tets_[base + order[2]]) + ", " + vertex(tets_[base + order[3]]) + ")";
     }
 
   private:

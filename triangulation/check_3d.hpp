@@ -17,6 +17,7 @@
 // Delaunay [Delaunay34 lemma].
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -31,6 +32,10 @@ namespace exactmesh::triangulation {
 struct Check3Numbering {
     std::uint32_t first_vertex = 0;
     std::uint32_t first_tet = 0;
+    /// The order a message lists a tetrahedron's corners in, the caller's: its corner k is
+    /// tets[4t + corner_order[k]] (a TetGen .ele, whose reader swaps the last two corners for
+    /// exactmesh's orientation, passes {0, 1, 3, 2}: io::kTetgenFileCorners).
+    std::array<std::uint8_t, 4> corner_order{0, 1, 2, 3};
 };
 
 struct Check3Report {

@@ -61,6 +61,7 @@ class CdtBuilder {
     bool in_domain(TriIdx t) const {
         return !mesh_.is_dead(t) && !mesh_.is_infinite(t) && (removed_.empty() || removed_[t] == 0);
     }
+    double attribute_of(TriIdx t) const { return attribute_.empty() ? 0.0 : attribute_[t]; }
     bool collinear() const { return collinear_; }
     std::uint32_t input_vertex_count() const { return input_count_; }
     std::span<const VertIdx> input_index() const { return core_.input_index; }

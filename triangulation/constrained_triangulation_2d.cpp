@@ -407,6 +407,9 @@ std::uint32_t ConstrainedTriangulation2::segment_of(EdgeIdx e) const {
 bool ConstrainedTriangulation2::in_domain(TriIdx t) const {
     return builder_->in_domain(t);
 }
+double ConstrainedTriangulation2::attribute(TriIdx t) const {
+    return builder_->attribute_of(t);
+}
 bool ConstrainedTriangulation2::collinear() const {
     return builder_->collinear();
 }

@@ -83,6 +83,9 @@ public:
     std::uint32_t segment_of(EdgeIdx e) const;
     /// A live, finite triangle inside the domain (not exterior, not in a hole).
     bool in_domain(TriIdx t) const;
+    /// The regional attribute of triangle t (0 outside every region, and without regions), as
+    /// Cdt2Result::triangle_attributes will give it; kept through every edit.
+    double attribute(TriIdx t) const;
     /// True when every input point lies on one line: there is no triangle to edit.
     bool collinear() const;
     std::uint32_t input_vertex_count() const;

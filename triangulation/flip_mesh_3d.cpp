@@ -33,17 +33,19 @@ OrientedFace outward_face(const Tet& t, unsigned k) {
     return rotated(t[lf[0]], t[lf[1]], t[lf[2]]);
 }
 
-std::string tet_text(std::size_t t, const VertIdx* v, std::uint32_t first_vertex,
-                     std::uint32_t first_tet) {
-    auto name = [&](VertIdx x) { return std::to_string(std::uint64_t{x} + first_vertex); };
-    return "tetrahedron " + std::to_string(t + first_tet) + " (" + name(v[0]) + ", " + name(v[1]) +
-           ", " + name(v[2]) + ", " + name(v[3]) + ")";
+std::string tet_text(std::size_t t, const VertIdx* v, const Check3Numbering& numbering) {
+    auto name = [&](unsigned k) {
+        return std::to_string(std::uint64_t{v[numbering.corner_order[k]]} + numbering.first_vertex);
+    };
+    return "tetrahedron " + std::to_string(t + numbering.first_tet) + " (" + name(0) + ", " +
+           name(1) + ", " + name(2) + ", " + name(3) + ")";
 }
 
 /// Range, distinct vertices, finite coordinates and strictly positive orientation of every
 /// tetrahedron; throws InputError naming the first offender.
 void validate_tets(const std::vector<double>& xyz, const std::vector<VertIdx>& tets,
-                   std::uint32_t first_vertex, std::uint32_t first_tet) {
+                   const Check3Numbering& numbering) {
+    const std::uint32_t first_vertex = numbering.first_vertex;
     if (xyz.size() % 3 != 0) throw InputError("coordinate array length is not a multiple of 3");
     if (tets.size() % 4 != 0) throw InputError("tetrahedron list length is not a multiple of 4");
     const std::size_t n = xyz.size() / 3;
@@ -58,21 +60,20 @@ void validate_tets(const std::vector<double>& xyz, const std::vector<VertIdx>& t
         const VertIdx* v = &tets[4 * t];
         for (unsigned k = 0; k < 4; ++k) {
             if (v[k] >= n) {
-                throw InputError(tet_text(t, v, first_vertex, first_tet) + ": vertex " +
+                throw InputError(tet_text(t, v, numbering) + ": vertex " +
                                  std::to_string(std::uint64_t{v[k]} + first_vertex) +
                                  " out of range (" + std::to_string(n) + " vertices)");
             }
             for (unsigned j = 0; j < k; ++j) {
                 if (v[j] == v[k]) {
-                    throw InputError(tet_text(t, v, first_vertex, first_tet) +
-                                     " repeats a vertex");
+                    throw InputError(tet_text(t, v, numbering) + " repeats a vertex");
                 }
             }
         }
         const Sign s = predicates::orient3d(&xyz[3 * std::size_t{v[0]}], &xyz[3 * std::size_t{v[1]}],
                                             &xyz[3 * std::size_t{v[2]}], &xyz[3 * std::size_t{v[3]}]);
         if (s != Sign::Positive) {
-            throw InputError(tet_text(t, v, first_vertex, first_tet) +
+            throw InputError(tet_text(t, v, numbering) +
                              (s == Sign::Zero ? " is flat (its vertices are coplanar)"
                                               : " is negatively oriented"));
         }
@@ -124,10 +125,10 @@ std::vector<FacetIdx> link_facets(const std::vector<VertIdx>& tets, std::uint32_
 
 }  // namespace
 
-void link_neighbors_3d(Tetrahedralization3& mesh, std::uint32_t first_vertex,
-                       std::uint32_t first_tet) {
-    validate_tets(mesh.xyz, mesh.tets, first_vertex, first_tet);
-    const std::vector<FacetIdx> adj = link_facets(mesh.tets, first_vertex, first_tet);
+void link_neighbors_3d(Tetrahedralization3& mesh, const Check3Numbering& numbering) {
+    validate_tets(mesh.xyz, mesh.tets, numbering);
+    const std::vector<FacetIdx> adj =
+        link_facets(mesh.tets, numbering.first_vertex, numbering.first_tet);
     mesh.neighbors.assign(mesh.tets.size(), kNone);
     for (std::size_t f = 0; f < adj.size(); ++f) {
         if (adj[f] != kNone) mesh.neighbors[f] = adj[f] / 4;
@@ -135,7 +136,7 @@ void link_neighbors_3d(Tetrahedralization3& mesh, std::uint32_t first_vertex,
 }
 
 FlipMesh3 make_flip_mesh_3d(const Tetrahedralization3& mesh) {
-    validate_tets(mesh.xyz, mesh.tets, 0, 0);
+    validate_tets(mesh.xyz, mesh.tets, Check3Numbering{});
     FlipMesh3 out;
     out.xyz = mesh.xyz;
     out.tets = mesh.tets;

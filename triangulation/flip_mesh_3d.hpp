@@ -25,6 +25,7 @@
 #include <span>
 #include <vector>
 
+#include "triangulation/check_3d.hpp"
 #include "triangulation/tetrahedralization_3d.hpp"
 
 namespace exactmesh::triangulation {
@@ -83,10 +84,9 @@ FlipMesh3 make_flip_mesh_3d(const Tetrahedralization3& mesh);
 Tetrahedralization3 to_tetrahedralization_3d(const FlipMesh3& mesh);
 
 /// Fills mesh.neighbors from mesh.tets (the face opposite vertex k of t is shared with at most
-/// one other tetrahedron). Checks as make_flip_mesh_3d; `first_vertex` and `first_tet` are
-/// the bases the messages number from (a file's own numbering).
-void link_neighbors_3d(Tetrahedralization3& mesh, std::uint32_t first_vertex = 0,
-                       std::uint32_t first_tet = 0);
+/// one other tetrahedron). Checks as make_flip_mesh_3d; `numbering` gives the bases the
+/// messages number from and the order they list corners in (a file's own).
+void link_neighbors_3d(Tetrahedralization3& mesh, const Check3Numbering& numbering = {});
 
 /// Replaces the live tetrahedra `old_tets` by `new_tets` (each positively oriented, checked by
 /// the caller) covering the same region: every face of a new tetrahedron is either shared with

@@ -429,11 +429,55 @@ hostile_options() {
   sweeps=$(awk '/^smoothing_sweeps:/ { print $2 }' "$work/out")
   [[ -n $sweeps && $sweeps -lt 1000 ]] || fail "smoothing did not stop early: $sweeps sweeps"
   printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n1\n1 0.5 0.5 1 0.01\n' >"$work/area.poly"
-  run 0 mesh "$work/area.poly" -o "$work/a.ele" && grep -q 'area\.poly:13: region maximum areas are not applied' "$work/err" ||
-    fail "no warning for an unused region area: $(cat "$work/err")"
+  # The region's maximum area is applied now (it was read and ignored, with a warning): at
+  # least 1 / 0.01 triangles, no warning (more in region_areas).
+  run 0 mesh "$work/area.poly" -o "$work/a.ele" && [[ ! -s "$work/err" ]] &&
+    awk '/^triangles:/ { exit !($2 >= 100) }' "$work/out" ||
+    fail "region maximum area not applied: $(cat "$work/out" "$work/err")"
 }
 
 # Messages: raw bytes of a size file are escaped; an unreadable size file is reported as such.
+# Region maximum areas (Triangle's -a per region, issue 11): a unit square split at x = 0.5 into
+# regions with maximum areas 0.001 and 0.01. Delaunay refinement keeps every triangle of each
+# region within its bound (awk's areas, to a relative 1e-12; the exact check is
+# tests/regressions/issue_11_region_areas_test.cpp) and the regional attributes; frontal takes
+# them as sizes; the generators without regions, and impossible areas, are refused at once.
+region_areas() {
+  printf '6 2 0 0\n1 0 0\n2 0.5 0\n3 1 0\n4 1 1\n5 0.5 1\n6 0 1\n7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 1\n7 2 5\n0\n2\n1 0.25 0.5 7.5 0.001\n2 0.75 0.5 -3 0.01\n' \
+    >"$work/two.poly"
+  local generator
+  for generator in delaunay-refinement frontal; do
+    run 0 mesh "$work/two.poly" --generator "$generator" -o "$work/two_$generator.ele" || continue
+    run 0 check "$work/two.poly" "$work/two_$generator.ele" || fail "$generator: check: $(cat "$work/out")"
+    # Per attribute: triangle count and largest area.
+    awk 'FNR == 1 { file++; next } file == 1 { x[$1] = $2; y[$1] = $3; next }
+      /^#/ { next }
+      { a = ((x[$3] - x[$2]) * (y[$4] - y[$2]) - (y[$3] - y[$2]) * (x[$4] - x[$2])) / 2
+        n[$5]++; if (a > big[$5]) big[$5] = a }
+      END { printf "%d %.17g %d %.17g\n", n["7.5"], big["7.5"], n["-3"], big["-3"] }' \
+      "$work/two_$generator.node" "$work/two_$generator.ele" >"$work/areas"
+    read -r n_fine big_fine n_coarse big_coarse <"$work/areas"
+    ((n_fine > 2 * n_coarse && n_coarse >= 50)) || fail "$generator: region counts $n_fine, $n_coarse"
+    if [[ $generator == delaunay-refinement ]]; then
+      awk -v a="$big_fine" -v b="$big_coarse" 'BEGIN { exit !(a <= 0.001 * (1 + 1e-12) && b <= 0.01 * (1 + 1e-12)) }' ||
+        fail "refinement: largest areas $big_fine, $big_coarse above 0.001, 0.01"
+    else
+      # A size of the equilateral triangle of the area: within frontal's acceptance (1.5 A).
+      awk -v a="$big_fine" -v b="$big_coarse" 'BEGIN { exit !(a <= 0.0015 && b <= 0.015) }' ||
+        fail "frontal: largest areas $big_fine, $big_coarse"
+    fi
+  done
+  for generator in quadtree advancing-front advancing-front-delaunay; do
+    expect_error 2 "two\.poly:18: region maximum area 0\.001: region maximum areas are honoured by delaunay-refinement and frontal only \(--generator $generator\)" \
+      mesh "$work/two.poly" --generator "$generator" -o "$work/x.ele"
+  done
+  sed 's/7\.5 0\.001$/7.5 1e-12/' "$work/two.poly" >"$work/tiny.poly"
+  expect_error 2 "the regions' maximum areas ask for about 5e\+11 or more triangles" mesh "$work/tiny.poly" -o "$work/x.ele"
+  run 0 cdt "$work/two.poly" -o "$work/cdt.ele" &&
+    grep -q 'two\.poly:18: region maximum areas are not applied (cdt adds no vertices' "$work/err" ||
+    fail "cdt: no warning about the areas: $(cat "$work/err")"
+}
+
 hostile_messages() {
   printf 'uniform \x1b[31mred\x07\n' >"$work/binary.size"
   expect_error 2 'binary\.size:1: .\\x1b\[31mred\\x07. is not a finite number' mesh --domain key -o "$work/x.ele" --size "$work/binary.size"
@@ -574,10 +618,13 @@ check_rejects_non_delaunay_3d() {
   run 1 check "$work/five.node" "$work/flipped.ele" || return
   grep -Eq '^not ok: .*flipped\.ele: tetrahedron [1-3] \(.*\): not Delaunay, vertex [0-9] lies inside its circumsphere$' \
     "$work/out" || fail "check: wrong report: $(cat "$work/out")"
+  # The corners as the file lists them (1-based, in its order), not in the internal order.
+  grep -Eq 'tetrahedron 1 \(4, 5, 2, 1\)|tetrahedron 2 \(4, 5, 3, 2\)|tetrahedron 3 \(4, 5, 1, 3\)' "$work/out" ||
+    fail "check: corners not in the file's order: $(cat "$work/out")"
   # The same tetrahedra inside out are named as such.
   printf '3 4 0\n1 5 4 2 1\n2 4 5 3 2\n3 4 5 1 3\n' >"$work/inverted.ele"
   run 1 check "$work/five.node" "$work/inverted.ele" &&
-    grep -q 'tetrahedron 1 (.*): not positively oriented' "$work/out" || fail "check: inverted: $(cat "$work/out")"
+    grep -q 'tetrahedron 1 (5, 4, 2, 1): not positively oriented' "$work/out" || fail "check: inverted: $(cat "$work/out")"
   # A missing tetrahedron leaves the boundary open.
   printf '1 4 0\n1 1 2 3 4\n' >"$work/one.ele"
   run 1 check "$work/five.node" "$work/one.ele" && grep -q 'point 5 is not a vertex' "$work/out" ||
@@ -625,7 +672,8 @@ swap3d_bad_input() {
   expect_error 2 'planar\.node:1: dimension must be 3' swap3d "$data/planar.node" "$data/pair.ele" -o "$work/x.ele"
   expect_error 2 'pair_bad_node\.ele:3: node number 9 out of range' \
     swap3d "$data/pair.node" "$data/pair_bad_node.ele" -o "$work/x.ele"
-  expect_error 2 'pair_inverted\.ele: tetrahedron 0 \(1, 0, 3, 2\) is negatively oriented' \
+  # Corners in the file's order (the reader swaps the last two internally; the file says 1 0 2 3).
+  expect_error 2 'pair_inverted\.ele: tetrahedron 0 \(1, 0, 2, 3\) is negatively oriented' \
     swap3d "$data/pair.node" "$data/pair_inverted.ele" -o "$work/x.ele"
   expect_error 2 'pair_overlap\.ele: face .* is shared by 3 tetrahedra' \
     swap3d "$data/pair.node" "$data/pair_overlap.ele" -o "$work/x.ele"
@@ -778,7 +826,8 @@ case "$case_name" in
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
     swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
-    hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages)
+    hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
+    region_areas)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2
