@@ -3,9 +3,11 @@
 // wide and 3e231 tall with both diagonals as segments (x of the far corners 3.6e-304 and 3.1e-322),
 // replayed as fuzz_mesh_generators_2d runs it (1,000 Steiner points) and with the generator's
 // default budget. It took 1 s and 38 s (release) when the front's placement squared differences
-// of 1e230: the distance to a front edge overflowed to inf / inf = NaN, NaN < gap is false, so
-// new points went anywhere near the front, the front ran away (2,000-4,000 new points, none
-// reused) until its budget closed it by a CDT whose swap recovery is quadratic, in GMP here.
+// of 1e230: the projection onto a front edge overflowed (t = inf / inf = NaN, or 0 with an
+// infinite distance), no edge-distance test ever rejected a new point, so points went anywhere
+// near the front and it ran away (2,000-4,000 new points, none reused) until its budget closed
+// it by a CDT whose swap recovery is quadratic, in GMP here (scaling that projection alone made
+// the old code fast).
 // Since the placement works on differences scaled by the root square's power of two (the scale
 // invariance fix), the front meshes it in under 100 triangles, without a closure, in ~30 ms.
 #include <gtest/gtest.h>
