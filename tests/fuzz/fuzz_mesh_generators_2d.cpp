@@ -3,8 +3,10 @@
 // Delaunay refinement, quadtree, advancing front, advancing-front Delaunay, frontal) on fuzzed
 // points and segments with a uniform size of 2^-(byte % 6) times the input's extent (so a mesh
 // has at most a few thousand triangles) and a budget of 1,000 Steiner points (2,000 triangles for
-// the advancing front: on a sliver 1 wide and 3e231 tall, where every predicate ends in GMP, its
-// default budget took 23 s in release, tests/data/fuzz/slow/). Every run must end
+// the advancing front; its finding on a sliver 1 wide and 3e231 tall, 23 s with its default
+// budget while its placement squared 1e230-long differences, ends in milliseconds since the
+// placement is scale-free: tests/data/fuzz/mesh_generators_2d_advancing_front_wide_sliver.bin,
+// tests/regressions/issue_11_sliver_test.cpp). Every run must end
 // with a mesh that passes the exact check the generator promises (check_constrained_delaunay_2d
 // for the Delaunay ones, check_conforming_mesh_2d for the others), or with InputError (nothing
 // enclosed, collinear, non-finite, a size that asks for too much) or GeometryError (a budget, or
