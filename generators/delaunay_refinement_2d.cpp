@@ -3,13 +3,15 @@
 //
 // State beside the ConstrainedTriangulation2: a bucketed queue of bad triangles (key, slot,
 // version), where a slot's version grows whenever an edit writes the slot, so stale entries are
-// recognised in O(1); a stack of pieces to split (by their two vertices, so a piece already
-// split is simply not found); per vertex, for Steiner points on segments, the segment and, for
-// shell splits, the apex and the shell's exponent (the rule of Miller, Pav and Walkington).
-// Loop: split every queued piece (each split queues the pieces its new triangles encroach and
-// its bad triangles), then take the worst bad triangle: insert its circumcenter, or, when the
-// circumcenter encroaches pieces, queue them and the triangle again. Triangles good for
-// theta_min but below the polish angle are kept aside (candidates); when the loop ends, they
+// recognised in O(1); a bucketed queue of encroached pieces to split (by their two vertices, so
+// a piece already split is simply not found; keyed by the triangle of the encroaching vertex)
+// and a stack of pieces rejected circumcenters encroach; per vertex, for Steiner points on
+// segments, the segment and, for shell splits, the apex and the shell's exponent (the rule of
+// Miller, Pav and Walkington). Loop: split the forced pieces, then the worst queued piece unless
+// a bad triangle is worse (each split queues the pieces its new triangles encroach and its bad
+// triangles), else take the worst bad triangle: insert its circumcenter, or, when the
+// circumcenter encroaches pieces, split them (forced) and queue the triangle again. Triangles good
+// for theta_min but below the polish angle are kept aside (candidates); when the loop ends, they
 // are queued with the polish angle as the bound and the loop runs again with a Steiner point
 // limit; if it is reached, the queue keeps only what is bad for theta_min and the loop ends the
 // proven way. Sizes at edge midpoints (unless uniform) are kept per half-edge (forgotten when the
@@ -90,14 +92,23 @@ struct BadTriangle {
     std::uint32_t too_big : 1;  // an edge longer than the size (else only skinny)
 };
 
-/// Bad triangles by priority, worst first: too big ones before skinny ones (as CGAL's mesher),
-/// each by its key, in buckets of a sixteenth of a binade (keys within 4.4% of each other share
-/// a bucket), last in first out within a bucket (the triangles an insertion just made are
-/// neighbours: their memory is warm). O(1) per push and pop, against O(log n) cache-missing
-/// steps of a binary heap over all bad triangles.
-class BadTriangleQueue {
+/// Encroached pieces wait beside the bad triangles, by the key of the triangle whose apex
+/// encroaches them (below).
+struct EncroachedPiece {
+    float key;
+    VertIdx a, b;
+    std::uint32_t too_big;
+};
+
+/// Bad triangles (or encroached pieces) by priority, worst first: too big ones before skinny
+/// ones (as CGAL's mesher), each by its key, in buckets of a sixteenth of a binade (keys within
+/// 4.4% of each other share a bucket), last in first out within a bucket (the triangles an
+/// insertion just made are neighbours: their memory is warm). O(1) per push and pop, against
+/// O(log n) cache-missing steps of a binary heap over all bad triangles.
+template <class Entry>
+class BucketQueue {
   public:
-    void push(const BadTriangle& b) {
+    void push(const Entry& b) {
         const std::size_t k = bucket(b);
         buckets_[k].push_back(b);
         top_ = std::max(top_, k);
@@ -109,9 +120,14 @@ class BadTriangleQueue {
         top_ = 0;
         size_ = 0;
     }
-    BadTriangle pop() {
+    /// The bucket of the worst entry (larger is worse); the queue must not be empty.
+    std::size_t top_bucket() {
         while (buckets_[top_].empty()) --top_;
-        const BadTriangle b = buckets_[top_].back();
+        return top_;
+    }
+    Entry pop() {
+        while (buckets_[top_].empty()) --top_;
+        const Entry b = buckets_[top_].back();
         buckets_[top_].pop_back();
         --size_;
         return b;
@@ -119,10 +135,10 @@ class BadTriangleQueue {
 
   private:
     static constexpr std::size_t kPerLevel = 1024;  // keys 1 .. 2^64 in steps of 2^(1/16)
-    std::vector<BadTriangle> buckets_[2 * kPerLevel];
+    std::vector<Entry> buckets_[2 * kPerLevel];
     std::size_t top_ = 0;
     std::size_t size_ = 0;
-    static std::size_t bucket(const BadTriangle& b) {
+    static std::size_t bucket(const Entry& b) {
         // The key's exponent and its four leading fraction bits: 16 buckets per binade,
         // monotone in the key (keys are at least 1, so the float's bits from 1.0 up).
         const float key = std::max(1.0f, b.key);
@@ -136,6 +152,12 @@ class BadTriangleQueue {
 struct PieceToSplit {
     VertIdx a, b;
     bool forced;  // a rejected circumcenter encroaches it: split without testing the apexes
+};
+
+/// The badness evaluate() found: the key (0 when good for every criterion) and its class.
+struct Badness {
+    double key;
+    bool too_big;
 };
 
 /// Steiner points on segments: which segment, and for shell splits the apex and the shell.
@@ -170,8 +192,15 @@ class Refiner {
     tri::ConstrainedTriangulation2 cdt_;
     const tri::TriMesh2& mesh_;  // the triangulation's, valid across edits
     RefinementCounters2 counters_;
-    BadTriangleQueue bad_;
-    std::vector<PieceToSplit> pieces_;
+    BucketQueue<BadTriangle> bad_;
+    /// Pieces a vertex encroaches (split when no bad triangle is worse than the triangle of the
+    /// encroaching apex: see refine), and pieces a rejected circumcenter encroaches (forced_:
+    /// split at once).
+    BucketQueue<EncroachedPiece> pieces_;
+    std::vector<PieceToSplit> forced_;
+    /// Tests the constrained edges of domain triangle t (just evaluated as `badness`) for
+    /// encroachment by their apexes and queues those encroached.
+    void queue_encroached_pieces(TriIdx t, const Badness& badness);
     std::vector<std::uint32_t> version_;  // per triangle slot
     bool cache_sizes_ = false;         // a size function dearer than a constant: edge_size_ is kept
     std::vector<double> edge_size_;    // per half-edge: the size at its midpoint; 0: unknown
@@ -204,7 +233,7 @@ class Refiner {
     void initial_queue();
     /// Triangles written by the last edit: new versions; bad ones and encroached pieces queued.
     void process_touched();
-    void evaluate(TriIdx t);
+    Badness evaluate(TriIdx t);
     bool encroached_from(EdgeIdx e);  // the apex of e's triangle encroaches e
     struct SplitPoint {
         double x = 0, y = 0;
@@ -312,7 +341,7 @@ bool Refiner::small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const {
            w == su->apex;
 }
 
-void Refiner::evaluate(TriIdx t) {
+Badness Refiner::evaluate(TriIdx t) {
     const VertIdx v[3] = {mesh_.tv[3 * t], mesh_.tv[3 * t + 1], mesh_.tv[3 * t + 2]};
     const double* p[3] = {point(v[0]), point(v[1]), point(v[2])};
     const ScaledTriangle scaled = scaled_triangle(p);
@@ -389,6 +418,17 @@ void Refiner::evaluate(TriIdx t) {
                    size_key > 1 ? 1u : 0u});
         ++counters_.bad_triangles;
     }
+    return {key, size_key > 1};
+}
+
+void Refiner::queue_encroached_pieces(TriIdx t, const Badness& badness) {
+    for (unsigned k = 0; k < 3; ++k) {
+        const EdgeIdx e = 3 * t + k;
+        if (cdt_.segment_of(e) != kNone && encroached_from(e)) {
+            pieces_.push({static_cast<float>(std::min(badness.key, 1e30)), mesh_.origin(e),
+                          mesh_.destination(e), badness.too_big ? 1u : 0u});
+        }
+    }
 }
 
 bool Refiner::encroached_from(EdgeIdx e) {
@@ -425,13 +465,7 @@ void Refiner::process_touched() {
         seen_[t] = batch_;
         if (!cache_sizes_) ++version_[t];
         if (!cdt_.in_domain(t)) continue;
-        for (unsigned k = 0; k < 3; ++k) {
-            const EdgeIdx e = 3 * t + k;
-            if (cdt_.segment_of(e) != kNone && encroached_from(e)) {
-                pieces_.push_back({mesh_.origin(e), mesh_.destination(e), false});
-            }
-        }
-        evaluate(t);
+        queue_encroached_pieces(t, evaluate(t));
     }
     cdt_.clear_touched();
 }
@@ -443,13 +477,7 @@ void Refiner::initial_queue() {
     if (cache_sizes_) edge_size_.assign(3 * std::size_t{slots}, 0.0);
     for (TriIdx t = 0; t < slots; ++t) {
         if (!cdt_.in_domain(t)) continue;
-        for (unsigned k = 0; k < 3; ++k) {
-            const EdgeIdx e = 3 * t + k;
-            if (cdt_.segment_of(e) != kNone && encroached_from(e)) {
-                pieces_.push_back({mesh_.origin(e), mesh_.destination(e), false});
-            }
-        }
-        evaluate(t);
+        queue_encroached_pieces(t, evaluate(t));
     }
     cdt_.clear_touched();
 }
@@ -570,10 +598,26 @@ void Refiner::split_piece(const PieceToSplit& piece) {
 
 bool Refiner::refine(std::uint64_t limit) {
     for (;;) {
-        while (!pieces_.empty()) {
-            const PieceToSplit piece = pieces_.back();
-            pieces_.pop_back();
+        while (!forced_.empty()) {
+            const PieceToSplit piece = forced_.back();
+            forced_.pop_back();
             split_piece(piece);
+        }
+        // An encroached piece waits only while a bad triangle is worse than the triangle whose
+        // apex encroaches it (ties: the piece first). Any order keeps the guarantee (a
+        // circumcenter that encroaches a piece is never inserted), but splitting every piece
+        // first made narrow strips cost time in their length per insertion: in a strip 1e-5
+        // wide each split's new vertex encroaches the piece opposite, so the strip's sides were
+        // split down to 1e-5 before any triangle beside the strip was refined; the triangle
+        // inside the inner square beside it became a fan of 10^5 slivers from one vertex, and
+        // the first circumcenters there replaced cavities of 10^5 triangles (issue 11: nested
+        // squares 1e-5 apart). Taken by key, a fan's slivers are refined once they are worse
+        // than the strip's, so the fans (and cavities) stay small.
+        if (!pieces_.empty() && (bad_.empty() || pieces_.top_bucket() >= bad_.top_bucket() ||
+                                 counters_.steiner_points() >= limit)) {
+            const EncroachedPiece piece = pieces_.pop();
+            split_piece({piece.a, piece.b, false});
+            continue;
         }
         if (bad_.empty()) return true;
         if (counters_.steiner_points() >= limit) return false;
@@ -584,10 +628,13 @@ bool Refiner::refine(std::uint64_t limit) {
         const VertIdx v[3] = {mesh_.tv[3 * top.t], mesh_.tv[3 * top.t + 1],
                               mesh_.tv[3 * top.t + 2]};
         const auto c = predicates::circumcenter(point(v[0]), point(v[1]), point(v[2]));
+        const std::uint64_t replaced_before = cdt_.counters().cavity_triangles;
         const tri::CavityInsertion outcome = cdt_.insert_in_cavity(top.t, c[0], c[1]);
         switch (outcome) {
             case tri::CavityInsertion::Inserted:
                 ++counters_.circumcenters;
+                counters_.largest_cavity = std::max(
+                    counters_.largest_cavity, cdt_.counters().cavity_triangles - replaced_before);
                 process_touched();
                 break;
             case tri::CavityInsertion::Encroaches: {
@@ -602,7 +649,7 @@ bool Refiner::refine(std::uint64_t limit) {
                 for (const EdgeIdx e : cdt_.encroached_edges()) {
                     // Only skinny triangles are left at small angles; too big ones are split.
                     if (!top.too_big && leave_at_small_angle(e, shortest)) continue;
-                    pieces_.push_back({mesh_.origin(e), mesh_.destination(e), true});
+                    forced_.push_back({mesh_.origin(e), mesh_.destination(e), true});
                     split = true;
                 }
                 if (split) {

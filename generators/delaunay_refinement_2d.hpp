@@ -5,10 +5,13 @@
 // triangular mesh generation", CGTA 22; Miller-Pav-Walkington03: "When and why Ruppert's
 // algorithm works", IMR; seed material, issue 6 generator 3].
 //  - The constrained Delaunay triangulation of the domain (ConstrainedTriangulation2) is kept
-//    throughout; segments are split first whenever a vertex lies in the closed diametral circle
-//    of one of their pieces (encroachment), at the midpoint, or on a concentric shell (the power
-//    of two nearest half its length) about an input vertex where segments meet [Ruppert95 §4].
-//  - Then the worst bad triangle (radius-edge ratio above B = 1 / (2 sin theta_min), i.e. an
+//    throughout; a piece of a segment is split when a vertex lies in its closed diametral circle
+//    (encroachment), at the midpoint, or on a concentric shell (the power of two nearest half its
+//    length) about an input vertex where segments meet [Ruppert95 §4]; an encroached piece goes
+//    before every bad triangle that is not worse than the triangle of the encroaching vertex
+//    (the order does not matter to the proof; this one keeps cavities small beside narrow
+//    strips, whose sides encroach each other down to the strip's width).
+//  - The worst bad triangle (radius-edge ratio above B = 1 / (2 sin theta_min), i.e. an
 //    angle below theta_min, or an edge longer than the size function at its midpoint, or an
 //    area above its region's maximum area: Triangle's -a, region_areas_2d.hpp) gets its
 //    circumcenter, correctly rounded (predicates/constructions), inserted by Bowyer-Watson; a
@@ -85,6 +88,7 @@ struct RefinementCounters2 {
     std::uint64_t small_angle_skips = 0;       ///< skinny triangles left at small input angles
     std::uint64_t unsplittable = 0;      ///< bad triangles whose circumcenter rounds onto a vertex
     std::uint64_t cavity_triangles = 0;  ///< triangles replaced by circumcenter insertions
+    std::uint64_t largest_cavity = 0;    ///< the most triangles one insertion replaced
     std::uint64_t flips = 0;             ///< Lawson flips (initial triangulation and splits)
     std::uint64_t polish_points = 0;     ///< Steiner points of the polish
     std::uint64_t polish_stopped = 0;    ///< 1: the polish's budget ran out

@@ -32,6 +32,7 @@ std::vector<std::pair<std::string, std::uint64_t>> counter_list(const Refinement
             {"small_angle_skips", c.small_angle_skips},
             {"unsplittable", c.unsplittable},
             {"cavity_triangles", c.cavity_triangles},
+            {"largest_cavity", c.largest_cavity},
             {"delaunay_flips", c.flips},
             {"circumcenter_exact_path", c.circumcenter_exact},
             {"orient_calls", c.orient_calls},
