@@ -62,12 +62,21 @@ def angle_label(mesher, angle):
 class Results:
     def __init__(self, data):
         self.runs = defaultdict(list)  # (mesher, domain, angle, target) -> [benchmark dicts]
+        self.plain = defaultdict(list)  # (mesher, input) -> [benchmark dicts], default sizes
         self.errors = []
         for b in data["benchmarks"]:
             if b.get("run_type") == "aggregate":
                 continue
             parts = b["name"].split("/")
             if len(parts) < 5 or parts[0] != "BM_mesh":
+                continue
+            if not parts[4].isdigit():
+                # BM_mesh/<mesher>/near-circle-10000/default: the plain input of issue 11,
+                # each generator with the size `exactmesh mesh` takes without --size.
+                if not b.get("error_occurred"):
+                    self.plain[(parts[1], parts[2])].append(b)
+                else:
+                    self.errors.append(f"{b['name']}: {b.get('error_message', '')}")
                 continue
             key = (parts[1], parts[2], parts[3], int(parts[4]))
             if b.get("error_occurred"):
@@ -360,6 +369,25 @@ def pictures(cli, res, out_dir, out):
     out.append("")
 
 
+def plain_inputs(res, out):
+    """Each generator on the plain inputs with the size it takes when given none."""
+    if not res.plain:
+        return
+    out.append("### Plain inputs, default size\n")
+    out.append("Each generator with the size `exactmesh mesh` takes without `--size` (Delaunay "
+               "refinement: none; the others: the boundary spacing graded away from it), the size "
+               "built inside the timed region as the command does.\n")
+    rows = []
+    for (mesher, name), runs in sorted(res.plain.items()):
+        times = [r["cpu_time"] * SECONDS_PER_UNIT[r["time_unit"]] for r in runs]
+        median = statistics.median(times)
+        triangles = runs[0].get("triangles", 0)
+        rows.append([name, mesher, f"{triangles:,.0f}", f"{median * 1e3:.1f} ({min(times) * 1e3:.1f}-{max(times) * 1e3:.1f})",
+                     f"{triangles / median / 1e3:,.0f}k", fmt(runs[0].get("min_angle")), fmt(runs[0].get("mean_min_angle"))])
+    out.append(table(["input", "mesher", "triangles", "ms median (range)", "triangles/s", "min angle", "mean min angle"], rows))
+    out.append("")
+
+
 def repetitions(res):
     counts = sorted({len(v) for v in res.runs.values()})
     return "/".join(str(c) for c in counts) if counts else "0"
@@ -391,6 +419,7 @@ def main():
     out.append("![angle histograms](mesh_histograms.png)\n")
     out.append("![throughput](mesh_throughput.png)\n")
     domain_tables(res, out)
+    plain_inputs(res, out)
     if args.cli:
         pictures(args.cli, res, args.out_dir, out)
     if res.errors:
