@@ -23,8 +23,6 @@
 // (byte % count), byte 2 the size, byte 3 the segment count, two index bytes per segment, then
 // coordinates, 8 bytes each (at most 2 * kMaxPoints).
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -32,66 +30,37 @@
 #include <string>
 #include <vector>
 
-#include "generators/mesh_generators_2d.hpp"
 #include "predicates/errors.hpp"
-#include "tests/fuzz/fuzz_pslg.hpp"
-#include "triangulation/check_conforming_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
+#include "tests/fuzz/mesh_generators_2d_case.hpp"
 
 namespace {
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 
-constexpr std::size_t kMaxPoints = 24;
-
-[[noreturn]] void fail(const std::vector<double>& xy, const std::vector<tri::VertIdx>& segments,
-                       const gen::MeshGenerator2& generator, double size, const std::string& what) {
-    exactmesh::fuzz::fail_pslg(xy, segments, "fuzz_mesh_generators_2d: %s: %s\nsize %a, ",
-                               std::string(generator.name).c_str(), what.c_str(), size);
+[[noreturn]] void fail(const exactmesh::fuzz::MeshGeneratorCase& c, const std::string& what) {
+    exactmesh::fuzz::fail_pslg(c.input.xy, c.input.segments,
+                               "fuzz_mesh_generators_2d: %s: %s\nsize %a, ",
+                               std::string(c.generator->name).c_str(), what.c_str(), c.size);
 }
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const std::optional<exactmesh::fuzz::FuzzPslg> input =
-        exactmesh::fuzz::decode_pslg(data, size, 4, kMaxPoints);
-    if (!input) return 0;
-    const auto generators = gen::mesh_generators_2d();
-    const gen::MeshGenerator2& generator = generators[data[1] % generators.size()];
-    const int size_exponent = data[2] % 6;
-    const std::vector<double>& xy = input->xy;
-    const std::vector<tri::VertIdx>& segments = input->segments;
-    const std::size_t n = xy.size() / 2;
-    if (n == 0) return 0;
-    // The size: 2^-k of the larger side of the bounding box (finite inputs; others are rejected
-    // by the generator's validation, whatever the size).
-    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-    for (std::size_t i = 0; i < n; ++i) {
-        x0 = std::min(x0, xy[2 * i]), x1 = std::max(x1, xy[2 * i]);
-        y0 = std::min(y0, xy[2 * i + 1]), y1 = std::max(y1, xy[2 * i + 1]);
-    }
-    const double extent = std::max(x1 - x0, y1 - y0);
-    const double h = std::ldexp(std::isfinite(extent) && extent > 0 ? extent : 1.0, -size_exponent);
-    gen::MeshOptions2 options;
-    options.max_steiner_points = 1000;
-    if (std::isfinite(h) && h > 0) options.size = gen::SizeFunction::uniform(h);
+    const std::optional<exactmesh::fuzz::MeshGeneratorCase> c =
+        exactmesh::fuzz::decode_mesh_generator_case(data, size, 1000);
+    if (!c) return 0;
     gen::MeshRun2 run;
     try {
-        run = generator.run(tri::Pslg{xy, segments, {}, {}}, options);
+        run = c->generator->run(tri::Pslg{c->input.xy, c->input.segments, {}, {}}, c->options);
     } catch (const exactmesh::InputError&) {
         return 0;
     } catch (const exactmesh::GeometryError&) {
         return 0;
     } catch (const std::exception& e) {
-        fail(xy, segments, generator, h, std::string("threw: ") + e.what());
+        fail(*c, std::string("threw: ") + e.what());
     }
-    const tri::Cdt2Result& mesh = run.mesh;
-    const auto report = generator.delaunay
-                            ? tri::check_constrained_delaunay_2d(mesh.mesh, mesh.input_vertex_count,
-                                                                 segments, mesh.pieces)
-                            : tri::check_conforming_mesh_2d(mesh.mesh, mesh.input_vertex_count,
-                                                            segments, mesh.pieces);
-    if (!report.ok) fail(xy, segments, generator, h, report.problem);
+    const auto report = exactmesh::fuzz::check_mesh_generator_case(*c, run.mesh);
+    if (!report.ok) fail(*c, report.problem);
     return 0;
 }

@@ -16,7 +16,7 @@
 
 #include "generators/mesh_generators_2d.hpp"
 #include "predicates/errors.hpp"
-#include "tests/fuzz/fuzz_pslg.hpp"
+#include "tests/support/fuzz_replay_2d.hpp"
 #include "triangulation/check_conforming_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 
@@ -25,56 +25,7 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-std::vector<std::uint8_t> read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-struct Replay {
-    std::string generator;
-    bool meshed = false;
-    std::string error;  ///< the GeometryError or InputError, when not meshed
-    tri::CheckReport check;
-};
-
-/// One input of fuzz_mesh_generators_2d, run as the target runs it (the same size and budget).
-Replay replay(const std::string& name) {
-    const std::vector<std::uint8_t> data =
-        read_file(std::string(EXACTMESH_SOURCE_DIR) + "/tests/data/fuzz/" + name);
-    EXPECT_FALSE(data.empty()) << name;
-    Replay r;
-    const auto input = exactmesh::fuzz::decode_pslg(data.data(), data.size(), 4, 24);
-    if (!input) return r;
-    const auto generators = gen::mesh_generators_2d();
-    const gen::MeshGenerator2& generator = generators[data[1] % generators.size()];
-    r.generator = generator.name;
-    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-    for (std::size_t i = 0; i < input->xy.size() / 2; ++i) {
-        x0 = std::min(x0, input->xy[2 * i]), x1 = std::max(x1, input->xy[2 * i]);
-        y0 = std::min(y0, input->xy[2 * i + 1]), y1 = std::max(y1, input->xy[2 * i + 1]);
-    }
-    const double extent = std::max(x1 - x0, y1 - y0);
-    const double h = std::ldexp(std::isfinite(extent) && extent > 0 ? extent : 1.0, -(data[2] % 6));
-    gen::MeshOptions2 options;
-    options.max_steiner_points = 1000;
-    if (std::isfinite(h) && h > 0) options.size = gen::SizeFunction::uniform(h);
-    try {
-        const gen::MeshRun2 run =
-            generator.run(tri::Pslg{input->xy, input->segments, {}, {}}, options);
-        r.meshed = true;
-        r.check =
-            generator.delaunay
-                ? tri::check_constrained_delaunay_2d(run.mesh.mesh, run.mesh.input_vertex_count,
-                                                     input->segments, run.mesh.pieces)
-                : tri::check_conforming_mesh_2d(run.mesh.mesh, run.mesh.input_vertex_count,
-                                                input->segments, run.mesh.pieces);
-    } catch (const exactmesh::GeometryError& e) {
-        r.error = e.what();
-    } catch (const exactmesh::InputError& e) {
-        r.error = e.what();
-    }
-    return r;
-}
+using Replay = exactmesh::testing::FuzzReplay2;
 
 }  // namespace
 
@@ -87,7 +38,8 @@ TEST(Issue11, issue_11_bend_rule) {
     // vertex; exact progress) and answers to every segment of a shared piece: these vertices are
     // not within rounding of the side, no bend is made, and refinement stops at once with the
     // clear error for features below double precision (the fuzz target's accepted outcome).
-    const Replay bend = replay("mesh_generators_2d_refinement_bend_off_short_segment.bin");
+    const Replay bend = exactmesh::testing::replay_mesh_generators_2d(
+        "mesh_generators_2d_refinement_bend_off_short_segment.bin", 1000);
     EXPECT_EQ(bend.generator, "delaunay-refinement");
     if (bend.meshed) {
         EXPECT_TRUE(bend.check.ok) << bend.check.problem;
@@ -121,7 +73,8 @@ TEST(Issue11, issue_11_refinement_unsplittable_is_fast) {
     // Was tests/data/fuzz/slow/ (Delaunay refinement on 8 points spanning 1e-320..1.6e105: 4 s in
     // release, 41 s under sanitizers before its GeometryError). A few milliseconds now; kept
     // fast (a second at most in release) as the hang test of this input.
-    const Replay r = replay("mesh_generators_2d_refinement_unsplittable.bin");
+    const Replay r = exactmesh::testing::replay_mesh_generators_2d(
+        "mesh_generators_2d_refinement_unsplittable.bin", 1000);
     EXPECT_EQ(r.generator, "delaunay-refinement");
     if (r.meshed) {
         EXPECT_TRUE(r.check.ok) << r.check.problem;

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// One case of fuzz_mesh_generators_2d, decoded once for the target and for the regression
+// tests that replay its saved inputs (tests/regressions/issue_11_*): the PSLG (fuzz_pslg.hpp,
+// 4-byte header), the generator (byte 1 modulo the registry's size), a uniform size of 2^-(byte
+// 2 % 6) times the larger side of the bounding box, and the exact check the generator promises.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include "generators/mesh_generators_2d.hpp"
+#include "tests/fuzz/fuzz_pslg.hpp"
+#include "triangulation/check_conforming_2d.hpp"
+#include "triangulation/check_constrained_2d.hpp"
+
+namespace exactmesh::fuzz {
+
+inline constexpr std::size_t kMeshGeneratorsMaxPoints = 24;
+
+struct MeshGeneratorCase {
+    FuzzPslg input;
+    const generators::MeshGenerator2* generator = nullptr;
+    generators::MeshOptions2 options;  ///< the size, and the Steiner budget given to decode
+    double size = 0;                   ///< the uniform size (unset in options when not finite > 0)
+};
+
+/// The case in data, or nothing when the bytes decode to no PSLG with a vertex.
+/// @param max_steiner_points the budget (the target gives 1,000; 0: the generator's own).
+inline std::optional<MeshGeneratorCase> decode_mesh_generator_case(
+    const std::uint8_t* data, std::size_t size, std::uint64_t max_steiner_points) {
+    std::optional<FuzzPslg> input = decode_pslg(data, size, 4, kMeshGeneratorsMaxPoints);
+    if (!input || input->xy.empty()) return std::nullopt;
+    static const auto generators = generators::mesh_generators_2d();
+    MeshGeneratorCase c{std::move(*input), &generators[data[1] % generators.size()], {}, 0};
+    // The size: 2^-k of the larger side of the bounding box (finite inputs; others are rejected
+    // by the generator's validation, whatever the size).
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    const std::vector<double>& xy = c.input.xy;
+    for (std::size_t i = 0; i < xy.size() / 2; ++i) {
+        x0 = std::min(x0, xy[2 * i]), x1 = std::max(x1, xy[2 * i]);
+        y0 = std::min(y0, xy[2 * i + 1]), y1 = std::max(y1, xy[2 * i + 1]);
+    }
+    const double extent = std::max(x1 - x0, y1 - y0);
+    c.size = std::ldexp(std::isfinite(extent) && extent > 0 ? extent : 1.0, -(data[2] % 6));
+    c.options.max_steiner_points = max_steiner_points;
+    if (std::isfinite(c.size) && c.size > 0)
+        c.options.size = generators::SizeFunction::uniform(c.size);
+    return c;
+}
+
+/// The exact check the case's generator promises: constrained Delaunay for the Delaunay ones,
+/// a conforming mesh for the others.
+inline triangulation::CheckReport check_mesh_generator_case(const MeshGeneratorCase& c,
+                                                            const triangulation::Cdt2Result& mesh) {
+    return c.generator->delaunay
+               ? triangulation::check_constrained_delaunay_2d(mesh.mesh, mesh.input_vertex_count,
+                                                              c.input.segments, mesh.pieces)
+               : triangulation::check_conforming_mesh_2d(mesh.mesh, mesh.input_vertex_count,
+                                                         c.input.segments, mesh.pieces);
+}
+
+}  // namespace exactmesh::fuzz
