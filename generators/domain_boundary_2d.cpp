@@ -21,6 +21,7 @@
 #include "predicates/errors.hpp"
 #include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
+#include "predicates/power_of_two.hpp"
 
 namespace exactmesh::generators {
 
@@ -392,19 +393,19 @@ double expected_triangle_count(const DomainBoundary2& boundary, const SizeFuncti
     return estimate;
 }
 
-SizeFunction size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& cdt) {
-    tri::Cdt2Options options = cdt;
-    options.remove_exterior = true;
-    const tri::Cdt2Result domain = tri::constrained_delaunay_2d(pslg, options);
+BoundarySpacing boundary_spacing(const tri::Cdt2Result& domain) {
     const tri::Triangulation2& mesh = domain.mesh;
-    if (mesh.triangle_count() == 0) throw InputError("the segments enclose no region");
-    // Per vertex: the summed length and count of the pieces at it, then of all its edges.
     const std::size_t n = mesh.vertex_count();
+    auto length = [&](tri::VertIdx a, tri::VertIdx b) {
+        return predicates::scale_free_norm(mesh.xy[2 * b] - mesh.xy[2 * a],
+                                           mesh.xy[2 * b + 1] - mesh.xy[2 * a + 1]);
+    };
+    // The summed length and count of the pieces at each vertex, then of all its edges. No sum
+    // overflows for coordinates below 2^900 (fewer than 2^32 terms, each below 2^902).
     std::vector<double> piece_sum(n, 0), edge_sum(n, 0);
     std::vector<std::uint32_t> piece_count(n, 0), edge_count(n, 0);
-    auto length = [&](tri::VertIdx a, tri::VertIdx b) {
-        return std::hypot(mesh.xy[2 * b] - mesh.xy[2 * a], mesh.xy[2 * b + 1] - mesh.xy[2 * a + 1]);
-    };
+    BoundarySpacing spacing{std::vector<double>(n, 0),
+                            std::vector<double>(n, std::numeric_limits<double>::infinity())};
     for (std::size_t p = 0; p + 1 < domain.pieces.size(); p += 2) {
         const double l = length(domain.pieces[p], domain.pieces[p + 1]);
         for (const tri::VertIdx v : {domain.pieces[p], domain.pieces[p + 1]}) {
@@ -415,9 +416,29 @@ SizeFunction size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& c
     for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
         const tri::VertIdx a = mesh.triangles[e];
         const tri::VertIdx b = mesh.triangles[e % 3 == 2 ? e - 2 : e + 1];
-        edge_sum[a] += length(a, b);
+        const double l = length(a, b);
+        edge_sum[a] += l;
         ++edge_count[a];
+        spacing.shortest[a] = std::min(spacing.shortest[a], l);
+        spacing.shortest[b] = std::min(spacing.shortest[b], l);
     }
+    for (std::size_t v = 0; v < n; ++v) {
+        if (piece_count[v] > 0)
+            spacing.mean[v] = piece_sum[v] / piece_count[v];
+        else if (edge_count[v] > 0)
+            spacing.mean[v] = edge_sum[v] / edge_count[v];
+    }
+    return spacing;
+}
+
+SizeFunction size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& cdt) {
+    tri::Cdt2Options options = cdt;
+    options.remove_exterior = true;
+    const tri::Cdt2Result domain = tri::constrained_delaunay_2d(pslg, options);
+    const tri::Triangulation2& mesh = domain.mesh;
+    if (mesh.triangle_count() == 0) throw InputError("the segments enclose no region");
+    const std::size_t n = mesh.vertex_count();
+    const BoundarySpacing spacing = boundary_spacing(domain);
     // The background mesh holds the vertices some triangle uses (merged duplicates and points
     // outside the domain are left out), renumbered densely.
     std::vector<std::uint32_t> dense(n, tri::kNone);
@@ -428,8 +449,7 @@ SizeFunction size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& c
         if (dense[v] == tri::kNone) {
             dense[v] = static_cast<std::uint32_t>(sizes.size());
             xy.insert(xy.end(), {mesh.xy[2 * v], mesh.xy[2 * v + 1]});
-            sizes.push_back(piece_count[v] > 0 ? piece_sum[v] / piece_count[v]
-                                               : edge_sum[v] / edge_count[v]);
+            sizes.push_back(spacing.mean[v]);
         }
         triangles.push_back(dense[v]);
     }

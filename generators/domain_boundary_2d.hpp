@@ -77,6 +77,16 @@ DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
                                            const SizeFunction& size,
                                            const triangulation::Cdt2Options& cdt = {});
 
+/// Per vertex of a domain's CDT (constrained_delaunay_2d with the exterior removed): the mean
+/// length of the boundary pieces at it (of all its edges where no piece ends there; 0 for a
+/// vertex no triangle uses), and its shortest edge (infinity when it has none). Lengths are
+/// scale-free (predicates::scale_free_norm): exact under 2^k scaling, no overflow at 2^600.
+struct BoundarySpacing {
+    std::vector<double> mean;
+    std::vector<double> shortest;
+};
+BoundarySpacing boundary_spacing(const triangulation::Cdt2Result& domain);
+
 /// The input's own spacing, ungraded (Gmsh's "extend from the boundary"; the generators' default
 /// is graded_size_from_boundary, generators/graded_boundary_size_2d.hpp):
 /// the domain's constrained Delaunay triangulation as a background mesh

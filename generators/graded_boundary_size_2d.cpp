@@ -13,7 +13,9 @@
 #include <utility>
 #include <vector>
 
+#include "generators/domain_boundary_2d.hpp"
 #include "predicates/errors.hpp"
+#include "predicates/power_of_two.hpp"
 
 namespace exactmesh::generators {
 
@@ -28,15 +30,7 @@ constexpr std::uint32_t kLeafSize = 8;
 
 /// |(dx, dy)| in a frame scaled by the power of two that brings the larger component to [1, 2):
 /// no square overflows or underflows, and the result scales exactly with the input by 2^k.
-double length(double dx, double dy) {
-    dx = std::fabs(dx);
-    dy = std::fabs(dy);
-    const double larger = std::max(dx, dy);
-    if (larger == 0) return 0;
-    const int e = std::ilogb(larger);
-    const double a = std::scalbn(dx, -e), b = std::scalbn(dy, -e);
-    return std::scalbn(std::sqrt(a * a + b * b), e);
-}
+using predicates::scale_free_norm;
 
 /// min over the sites of (h_v + g |x - v|), approximately (within the slack).
 class GradedSites {
@@ -75,7 +69,8 @@ class GradedSites {
             if (node.left == kLeaf) {
                 for (std::uint32_t i = node.begin; i < node.end; ++i) {
                     const double value =
-                        sizes_[i] + gradation_ * length(x - xy_[2 * i], y - xy_[2 * i + 1]);
+                        sizes_[i] +
+                        gradation_ * scale_free_norm(x - xy_[2 * i], y - xy_[2 * i + 1]);
                     best = std::min(best, value);
                 }
                 continue;
@@ -106,7 +101,7 @@ class GradedSites {
     double lower_bound(const Node& node, double x, double y) const {
         const double dx = x < node.x0 ? node.x0 - x : x > node.x1 ? x - node.x1 : 0;
         const double dy = y < node.y0 ? node.y0 - y : y > node.y1 ? y - node.y1 : 0;
-        return node.smallest + gradation_ * length(dx, dy);
+        return node.smallest + gradation_ * scale_free_norm(dx, dy);
     }
 
     /// The node of sites order_[begin, end), a leaf until split.
@@ -167,39 +162,14 @@ SizeFunction graded_size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Opt
     const tri::Triangulation2& mesh = domain.mesh;
     if (mesh.triangle_count() == 0) throw InputError("the segments enclose no region");
     const std::size_t n = mesh.vertex_count();
-    auto edge_length = [&](tri::VertIdx a, tri::VertIdx b) {
-        return length(mesh.xy[2 * b] - mesh.xy[2 * a], mesh.xy[2 * b + 1] - mesh.xy[2 * a + 1]);
-    };
-    // Per vertex: the summed length and count of the pieces at it, of all its edges, and its
-    // shortest edge. No sum overflows for coordinates below 2^900 (fewer than 2^32 terms, each
-    // below 2^902), which covers the exact scalings by 2^600 the invariance asks for.
-    std::vector<double> piece_sum(n, 0), edge_sum(n, 0), shortest(n, kInfinity);
-    std::vector<std::uint32_t> piece_count(n, 0), edge_count(n, 0);
-    for (std::size_t p = 0; p + 1 < domain.pieces.size(); p += 2) {
-        const double l = edge_length(domain.pieces[p], domain.pieces[p + 1]);
-        for (const tri::VertIdx v : {domain.pieces[p], domain.pieces[p + 1]}) {
-            piece_sum[v] += l;
-            ++piece_count[v];
-        }
-    }
-    for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
-        const tri::VertIdx a = mesh.triangles[e];
-        const tri::VertIdx b = mesh.triangles[e % 3 == 2 ? e - 2 : e + 1];
-        const double l = edge_length(a, b);
-        edge_sum[a] += l;
-        ++edge_count[a];
-        shortest[a] = std::min(shortest[a], l);
-        shortest[b] = std::min(shortest[b], l);
-    }
+    const BoundarySpacing spacing = boundary_spacing(domain);
     std::vector<double> xy, sizes;
     std::vector<std::uint8_t> used(n, 0);
     for (const tri::VertIdx v : mesh.triangles) {
         if (used[v] != 0) continue;
         used[v] = 1;
-        const double spacing =
-            piece_count[v] > 0 ? piece_sum[v] / piece_count[v] : edge_sum[v] / edge_count[v];
         xy.insert(xy.end(), {mesh.xy[2 * v], mesh.xy[2 * v + 1]});
-        sizes.push_back(std::min(spacing, shortest[v]));
+        sizes.push_back(std::min(spacing.mean[v], spacing.shortest[v]));
     }
     const std::size_t sites = sizes.size();
     auto field = std::make_shared<const GradedSites>(std::move(xy), std::move(sizes), gradation);

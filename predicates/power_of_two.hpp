@@ -43,4 +43,18 @@ class PowerOfTwo {
     double unit_ = 1.0;
 };
 
+/// |(dx, dy)| computed on the vector scaled to a largest coordinate in [1, 2): no square
+/// overflows or underflows, and scaling the vector by 2^k scales the result by 2^k exactly
+/// (while it stays a normal double).
+inline double scale_free_norm(double dx, double dy) noexcept {
+    dx = std::fabs(dx);
+    dy = std::fabs(dy);
+    const double larger = dx > dy ? dx : dy;
+    if (larger == 0) return 0;
+    const int e = binary_exponent(larger);
+    const PowerOfTwo down(-e);
+    const double a = down(dx), b = down(dy);
+    return PowerOfTwo(e)(std::sqrt(a * a + b * b));
+}
+
 }  // namespace exactmesh::predicates
