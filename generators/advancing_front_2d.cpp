@@ -24,6 +24,7 @@
 #include "predicates/errors.hpp"
 #include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
+#include "predicates/power_of_two.hpp"
 #include "triangulation/angles_2d.hpp"
 
 namespace exactmesh::generators {
@@ -272,6 +273,7 @@ class AdvancingFront {
     // 2^shift_ = 1 / root_side_ (exact): no overflow or underflow, and the same choices, bit
     // for bit, for a domain scaled by a power of two. Set by make_quadtree.
     int shift_ = 0;
+    predicates::PowerOfTwo unit_{0};  // multiplies by 2^shift_ (ldexp, without the call)
     EdgeQuadtree quadtree_;
     EdgeQuadtree free_tree_;          // the free vertices not yet taken in, by vertex number
     std::vector<std::uint8_t> free_;  // 1 for those vertices
@@ -288,7 +290,7 @@ class AdvancingFront {
     const double* point(VertIdx v) const { return xy_.data() + 2 * std::size_t{v}; }
 
     /// A difference of coordinates in the scaled units (see shift_).
-    double scaled(double d) const { return std::ldexp(d, shift_); }
+    double scaled(double d) const { return unit_(d); }
 
     Sign orient(VertIdx a, VertIdx b, VertIdx c) {
         ++counters_.orient_calls;
@@ -311,6 +313,7 @@ class AdvancingFront {
         // domain has area).
         root_side_ = std::ldexp(1.0, std::ilogb(std::max(extent, std::ldexp(1.0, -1000))) + 1);
         shift_ = -std::ilogb(root_side_);
+        unit_ = predicates::PowerOfTwo(shift_);
         return EdgeQuadtree(x0, y0, root_side_);
     }
 
