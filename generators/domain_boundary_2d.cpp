@@ -22,6 +22,8 @@
 #include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
+#include "triangulation/angles_2d.hpp"
+#include "triangulation/check_constrained_2d.hpp"
 
 namespace exactmesh::generators {
 
@@ -533,6 +535,21 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
         }
     };
 
+    // The chain rule of the exact checks (check_constrained_delaunay_2d, the conforming
+    // check): a bend at c is a chain u -> c -> v of the input segment only when c is within
+    // rounding of the segment and neither step moves against it. `hugs` measures 3 units in
+    // the last place of the piece's ends, which can be far coarser than c's own rounding (a
+    // subnormal c beside a segment ending at 0.6: fuzz_mesh_generators_2d, CI 2026-12-02).
+    const auto on_chain = [&](tri::VertIdx c, tri::VertIdx u, tri::VertIdx v,
+                              std::uint32_t segment) {
+        const double* s0 = mesh.point(pslg.segments[2 * std::size_t{segment}]);
+        const double* s1 = mesh.point(pslg.segments[2 * std::size_t{segment} + 1]);
+        return tri::within_rounding_of_segment(mesh.point(c), s0, s1) &&
+               tri::direction_dot_sign(mesh.point(u), mesh.point(c), s0, s1) !=
+                   predicates::Sign::Negative &&
+               tri::direction_dot_sign(mesh.point(c), mesh.point(v), s0, s1) !=
+                   predicates::Sign::Negative;
+    };
     std::vector<tri::VertIdx> chain;
     struct Part {
         tri::VertIdx u, v;
@@ -588,7 +605,7 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
                         !bent_around[part.left] && !bent_around[before_c] &&
                         !bent_around[after_c] && !piece_keys.count(undirected_key(part.u, c)) &&
                         !piece_keys.count(undirected_key(c, part.v)) &&
-                        region.hugs(mesh.point(c), left)) {
+                        region.hugs(mesh.point(c), left) && on_chain(c, part.u, part.v, segment)) {
                         bent_around[part.left] = true;
                         piece_keys.insert(undirected_key(part.u, c));
                         piece_keys.insert(undirected_key(c, part.v));
