@@ -26,7 +26,8 @@ void print_stage_counts(const char* name, const predicates::StageCounts& counts)
               << prefix << "exact_differences: " << counts.exact_differences << '\n'
               << prefix << "adaptive: " << counts.adaptive << '\n'
               << prefix << "expansion: " << counts.expansion << '\n'
-              << prefix << "gmp: " << counts.gmp << '\n';
+              << prefix << "gmp: " << counts.gmp << '\n'
+              << prefix << "rescaled: " << counts.rescaled << '\n';
 }
 
 }  // namespace

@@ -3,8 +3,10 @@
 // overflow and no underflow in any two_product. Internal to predicates/.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstdint>
 #include <initializer_list>
@@ -46,6 +48,36 @@ inline bool expansion_safe(int degree, std::initializer_list<double> coordinates
         if (!(a <= max_magnitude)) return false;
         if (a < surely_fine && a != 0.0 && lowest_bit_exponent(x) < lowest_allowed) return false;
     }
+    return true;
+}
+
+/// Coordinates outside the expansion-safe range brought into it by one power of two, when
+/// that is exact: out[i] = 2^k coordinates[i] with k = -ilogb(max |x|), so the largest
+/// magnitude lands in [1, 2). Every predicate here is a homogeneous polynomial in the
+/// coordinates (degree `degree`: the sign of det(2^k p) is the sign of 2^(k degree) det(p)),
+/// so the scaled coordinates give the same sign, through the filter and stages B-C, whenever
+/// the scaling is exact and the result is expansion_safe: both hold exactly when every nonzero
+/// coordinate's lowest set bit, shifted by k, is at least -1074 / degree (then no bit is lost,
+/// and the bound on the largest magnitude holds since 2 <= 2^(1000 / degree - 2)). False (out
+/// unspecified) for inputs that span too wide a range (a subnormal beside a coordinate near 1):
+/// those stay with GMP. The scaled copy makes domains scaled by 2^-600 or 2^600 as fast as
+/// at 2^0, where every call used to go to GMP.
+inline bool rescale_into_safe_range(int degree, std::initializer_list<double> coordinates,
+                                    double* out) noexcept {
+    double largest = 0.0;
+    for (const double x : coordinates) largest = std::max(largest, std::fabs(x));
+    if (largest == 0.0) return false;  // all zero: expansion_safe already holds
+    const int k = -std::ilogb(largest);
+    const int lowest_allowed = -(1074 / degree);
+    for (const double x : coordinates) {
+        if (x != 0.0 && lowest_bit_exponent(x) + k < lowest_allowed) return false;
+    }
+    // 2^k in one or two normal factors (|k| <= 1074 + 1023); each product is exact (no bit
+    // falls below 2^-1074, checked above, and none overflows: the largest ends below 2).
+    const int first = std::clamp(k, -1022, 1023), second = k - first;
+    const double f1 = power_of_two(first), f2 = power_of_two(second);
+    std::size_t i = 0;
+    for (const double x : coordinates) out[i++] = second == 0 ? x * f1 : x * f1 * f2;
     return true;
 }
 

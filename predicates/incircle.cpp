@@ -3,7 +3,8 @@
 // first in two terms (double-double, error below 128 u^2 of the permanent; the exact value when
 // the differences are exact, else certified by Shewchuk's B bound), C its first-order tail
 // corrections; then B as an exact expansion (exact differences) or the raw-coordinate
-// det [x y x^2+y^2 1] (384 components), and GMP out of range.
+// det [x y x^2+y^2 1] (384 components). Out of the expansion-safe range: scaled into it by a
+// power of two when that is exact (detail::rescale_into_safe_range), else GMP.
 #include "predicates/incircle.hpp"
 
 #include "predicates/adaptive_bounds.hpp"
@@ -65,6 +66,15 @@ Sign incircle_exact(const double* a, const double* b, const double* c, const dou
     const auto coordinates = {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
     detail::require_finite("incircle", coordinates);
     if (!detail::expansion_safe(4, coordinates)) {
+        double s[8];
+        if (detail::rescale_into_safe_range(4, coordinates, s)) {
+            EM_STAT(incircle, rescaled);
+            if (const auto sign = incircle_filter(s, s + 2, s + 4, s + 6)) {
+                EM_STAT(incircle, filter);
+                return *sign;
+            }
+            return incircle_exact(s, s + 2, s + 4, s + 6);  // expansion-safe now
+        }
         EM_STAT(incircle, gmp);
         return incircle_gmp(a, b, c, d);
     }

@@ -3,7 +3,8 @@
 // first in two terms (double-double, error below 512 u^2 of the permanent; the exact value when
 // the differences are exact, else certified by Shewchuk's B bound), C its first-order tail
 // corrections [Shewchuk97, insphereadapt]; then B as an exact expansion (1152 components, exact
-// differences) or the raw-coordinate det [x y z w 1] (5760 components), and GMP out of range.
+// differences) or the raw-coordinate det [x y z w 1] (5760 components). Out of the expansion-safe
+// range: scaled into it by a power of two when exact (detail::rescale_into_safe_range), else GMP.
 #include "predicates/insphere.hpp"
 
 #include "predicates/adaptive_bounds.hpp"
@@ -84,6 +85,15 @@ Sign insphere_exact(const double* a, const double* b, const double* c, const dou
                               c[2], d[0], d[1], d[2], e[0], e[1], e[2]};
     detail::require_finite("insphere", coordinates);
     if (!detail::expansion_safe(5, coordinates)) {
+        double s[15];
+        if (detail::rescale_into_safe_range(5, coordinates, s)) {
+            EM_STAT(insphere, rescaled);
+            if (const auto sign = insphere_filter(s, s + 3, s + 6, s + 9, s + 12)) {
+                EM_STAT(insphere, filter);
+                return *sign;
+            }
+            return insphere_exact(s, s + 3, s + 6, s + 9, s + 12);  // expansion-safe now
+        }
         EM_STAT(insphere, gmp);
         return insphere_gmp(a, b, c, d, e);
     }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Exact stages of orient2d [Shewchuk97 §4.3]: B the exact determinant of the rounded
 // differences (exact when they are, else certified by an error bound), C first-order tail terms,
-// then the exact raw-coordinate expansion (12 components), and GMP out of range.
+// then the exact raw-coordinate expansion (12 components). Out of the expansion-safe range:
+// scaled into it by a power of two when that is exact (detail::rescale_into_safe_range), else GMP.
 #include "predicates/orient2d.hpp"
 
 #include "predicates/adaptive_bounds.hpp"
@@ -23,6 +24,15 @@ Expansion<4> minor_xy(const double* p, const double* q) noexcept {
 Sign orient2d_exact(const double* a, const double* b, const double* c) {
     detail::require_finite("orient2d", {a[0], a[1], b[0], b[1], c[0], c[1]});
     if (!detail::expansion_safe(2, {a[0], a[1], b[0], b[1], c[0], c[1]})) {
+        double s[6];
+        if (detail::rescale_into_safe_range(2, {a[0], a[1], b[0], b[1], c[0], c[1]}, s)) {
+            EM_STAT(orient2d, rescaled);
+            if (const auto sign = orient2d_filter(s, s + 2, s + 4)) {
+                EM_STAT(orient2d, filter);
+                return *sign;
+            }
+            return orient2d_exact(s, s + 2, s + 4);  // expansion-safe now: no second scaling
+        }
         EM_STAT(orient2d, gmp);
         return orient2d_gmp(a, b, c);
     }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Exact stages of orient3d [Shewchuk97 §4.4]: B the exact determinant of the rounded
 // differences (exact when they are, else certified by an error bound), C its first-order tail
-// terms, then the raw-coordinate det [x y z 1] (96 components), and GMP out of range.
+// terms, then the raw-coordinate det [x y z 1] (96 components). Out of the expansion-safe range:
+// scaled into it by a power of two when that is exact (detail::rescale_into_safe_range), else GMP.
 #include "predicates/orient3d.hpp"
 
 #include "predicates/adaptive_bounds.hpp"
@@ -32,6 +33,15 @@ Sign orient3d_exact(const double* a, const double* b, const double* c, const dou
                               c[0], c[1], c[2], d[0], d[1], d[2]};
     detail::require_finite("orient3d", coordinates);
     if (!detail::expansion_safe(3, coordinates)) {
+        double s[12];
+        if (detail::rescale_into_safe_range(3, coordinates, s)) {
+            EM_STAT(orient3d, rescaled);
+            if (const auto sign = orient3d_filter(s, s + 3, s + 6, s + 9)) {
+                EM_STAT(orient3d, filter);
+                return *sign;
+            }
+            return orient3d_exact(s, s + 3, s + 6, s + 9);  // expansion-safe now
+        }
         EM_STAT(orient3d, gmp);
         return orient3d_gmp(a, b, c, d);
     }

@@ -16,6 +16,9 @@ struct StageCounts {
     std::uint64_t adaptive = 0;           ///< certified by an error bound of stage B or C
     std::uint64_t expansion = 0;          ///< full expansion arithmetic (stage C)
     std::uint64_t gmp = 0;                ///< outside the expansion-safe range: GMP (stage D)
+    /// Not a stage of its own: calls whose coordinates were outside the expansion-safe range
+    /// and were scaled into it by a power of two (exact), then decided by the stages above.
+    std::uint64_t rescaled = 0;
 };
 
 struct PredicateStats {

@@ -333,6 +333,44 @@ TEST(Predicates_Overflow, MixedHugeAndSubnormalCoordinatesGetExactSigns) {
     }
 }
 
+// Every predicate is homogeneous in the coordinates, so scaling a tuple by 2^k (exactly) keeps
+// its sign; out of the expansion-safe range the exact stages scale by a power of two
+// (detail::rescale_into_safe_range) instead of calling GMP. Random, near-degenerate and exactly
+// degenerate tuples at 2^k for k across the whole exponent range (where the scaling is exact):
+// the same sign as at 2^0, the reference's sign, from every stage.
+TEST(Predicates_Overflow, ScalingByAPowerOfTwoKeepsEverySign) {
+    Rng rng(44);
+    for (const Predicate* p : kAll) {
+        Checker checker;
+        const std::size_t n = static_cast<std::size_t>(p->points * p->dims);
+        for (int c = 0; c < 1500; ++c) {
+            std::vector<double> x(n);
+            if (c % 3 == 0) {
+                x = degenerate_tuple(*p, rng);
+            } else {
+                for (double& v : x) v = uniform(rng, -1.0, 1.0);
+                if (c % 3 == 2) {  // one coordinate nudged off an exact degeneracy
+                    x = degenerate_tuple(*p, rng);
+                    double& v = x[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(n) - 1))];
+                    v = std::nextafter(v, (c % 2) != 0 ? kInf : -kInf);
+                }
+            }
+            const Sign at_one = p->reference(x.data());
+            for (const int k : {-1000, -600, -300, -200, -60, 60, 200, 300, 600, 1000}) {
+                const std::vector<double> y = scale(x, k);
+                bool exact = true;  // no bit lost to the subnormal range, no overflow
+                for (std::size_t i = 0; i < n; ++i) exact = exact && std::ldexp(y[i], -k) == x[i];
+                if (!exact) continue;
+                EXPECT_EQ(p->adaptive(y.data()), at_one) << describe(*p, y);
+                checker.check(*p, y);
+            }
+        }
+        EXPECT_GT(checker.cases, 10000) << p->name;
+        EXPECT_GT(checker.zeros, 2000) << p->name;
+        checker.expect_clean(p->name);
+    }
+}
+
 // The filters are certified only inside [*_filter_min, *_filter_max] (filter_constants.hpp):
 // near-degenerate tuples whose largest coordinate difference sits just inside and just outside
 // each guard must still come out exact, whichever stage answers.

@@ -24,7 +24,8 @@ namespace {
 }
 
 /// Runs each predicate over random points, an integer grid (exact zeros: exact differences),
-/// near-degenerate points with inexact differences (expansions) and huge ones (GMP).
+/// near-degenerate points with inexact differences (expansions), huge ones (scaled into range)
+/// and huge ones beside small ones (GMP).
 void exercise_all_stages() {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -58,13 +59,19 @@ void exercise_all_stages() {
         pr::incircle(a, b, c, d);
         pr::orient3d(a, b, c, d);
         pr::insphere(a, b, c, d, e);
-        // Huge coordinates: outside the expansion-safe range, so GMP decides.
+        // Huge coordinates: outside the expansion-safe range, brought into it by 2^-996.
         const double h[3] = {1e300, 1e300, 1e300}, g[3] = {-1e300, -1e300, -1e300};
         const double o[3] = {0.0, 0.0, 0.0}, k[3] = {1e300, -1e300, 0.0};
         pr::orient2d(h, g, o);
         pr::incircle(h, g, o, k);
         pr::orient3d(h, g, o, k);
-        pr::insphere(h, g, o, k, a);
+        pr::insphere(h, g, o, k, o);
+        // 1e300 beside 0.1: no power of two brings both into range exactly, so GMP decides.
+        const double w[3] = {0.1, 0.3, 0.7};
+        pr::orient2d(h, g, w);
+        pr::incircle(h, g, k, w);
+        pr::orient3d(h, g, k, w);
+        pr::insphere(h, g, o, k, w);
     }
 }
 
@@ -78,7 +85,9 @@ void exercise_all_stages() {
     EXPECT_GT(c.exact_differences, 0u) << "the integer grid has exact differences";
     EXPECT_GT(c.adaptive + c.expansion, 0u)
         << "the near-collinear grid has inexact differences: stages B/C or the full expansion";
-    EXPECT_GT(c.gmp, 0u) << "1e300 coordinates are outside the expansion-safe range";
+    EXPECT_GT(c.rescaled, 0u) << "1e300 coordinates are scaled into the expansion-safe range";
+    EXPECT_LE(c.rescaled, c.calls);
+    EXPECT_GT(c.gmp, 0u) << "1e300 beside 0.1 spans more than the expansion-safe range";
 }
 
 }  // namespace
