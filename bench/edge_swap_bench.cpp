@@ -3,7 +3,7 @@
 // EdelsbrunnerTanWaupotitsch92]: time against N with Complexity() fits, and the work counters.
 //
 // Names: BM_swap_<criterion>/<distribution>/<n>: Lawson swapping under one criterion from the
-// sweep triangulation (tests/support/sweep_triangulation_2d.hpp: points sorted by x, each joined
+// sweep triangulation (generators/sweep_triangulation_2d.hpp: points sorted by x, each joined
 // to the hull edges it sees; long thin triangles everywhere), n = 2^10 ... 2^14, fitted with
 // Complexity() (oAuto: the best of O(1), N, N log N, N^2, N^3). BM_edge_cutting/<distribution>/<n>:
 // min-max angle by edge cutting from the Delaunay triangulation (min_max_angle_triangulation_2d,
@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "generators/inputs.hpp"
-#include "tests/support/sweep_triangulation_2d.hpp"
+#include "generators/sweep_triangulation_2d.hpp"
 #include "triangulation/edge_cutting_2d.hpp"
 #include "triangulation/edge_swap_2d.hpp"
 
@@ -82,7 +82,7 @@ const tri::Triangulation2& sweep_start(Points kind, std::uint32_t n) {
     const auto key = std::make_pair(static_cast<int>(kind), n);
     auto it = cache.find(key);
     if (it == cache.end()) {
-        it = cache.emplace(key, exactmesh::testing::sweep_triangulation_2d(make_points(kind, n)))
+        it = cache.emplace(key, exactmesh::generators::sweep_triangulation_2d(make_points(kind, n)))
                  .first;
     }
     return it->second;

@@ -23,7 +23,7 @@
 //    half-edge while its triangles live);
 //  - CGAL: Delaunay_mesh_size_criteria_2 when the size is uniform, else the same criteria with
 //    the size function at edge midpoints, memoized per edge in the faces as ours
-//    (tests/support/cgal_mesh_2d.hpp), so both pay the same for the size function;
+//    (bench/cgal_mesh_2d.hpp), so both pay the same for the size function;
 //  - Gmsh: a .geo of the same points and segments; a uniform size through its mesh-size options
 //    (Mesh.MeshSizeMin = Mesh.MeshSizeMax = h), a graded one as a background mesh (a .pos view of
 //    the size at the vertices of a Delaunay refinement of the domain's bounding box at the size,
@@ -71,7 +71,7 @@
 #include "generators/sample_domains.hpp"
 
 #if defined(EXACTMESH_WITH_CGAL)
-#include "tests/support/cgal_mesh_2d.hpp"
+#include "bench/cgal_mesh_2d.hpp"
 #endif
 
 namespace {

@@ -32,7 +32,7 @@
 #include "generators/inputs.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/errors.hpp"
-#include "tests/oracles/naive_delaunay_2d.hpp"
+#include "triangulation/delaunay_2d_naive.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/delaunay_2d.hpp"
 
@@ -314,10 +314,10 @@ std::optional<Failure> find_failure(const Case& c, std::span<const double> xy, b
     }
     // Finally the brute-force definition, on small inputs.
     if (xy.size() / 2 <= kOracleMaxPoints && (target == nullptr || target->kind == "oracle")) {
-        const oracles::NaiveDelaunay2 oracle = oracles::naive_delaunay_2d(xy);
+        const triangulation::NaiveDelaunay2 oracle = triangulation::delaunay_2d_naive(xy);
         for (const std::size_t a : sequence) {
             if (!results[a]) continue;
-            std::string problem = oracles::compare_with_naive_delaunay_2d(
+            std::string problem = triangulation::compare_with_delaunay_2d_naive(
                 xy, results[a]->triangles, oracle, results[a]->merged_into);
             if (problem.empty()) continue;
             const Failure f{"oracle", a, std::nullopt, std::move(problem) + " (0-based)"};
@@ -430,7 +430,7 @@ void report_failure(const Case& c, const Failure& failure, const fs::path& out_d
     if (failure.kind == "neighbors") {
         std::cout << "  (check does not read neighbours: see out.neigh, Triangle's convention)\n";
     } else if (failure.kind == "oracle") {
-        std::cout << "  (the naive empty-circle oracle, tests/oracles/naive_delaunay_2d.hpp, "
+        std::cout << "  (the naive empty-circle oracle, triangulation/delaunay_2d_naive.hpp, "
                      "disagrees; check may pass)\n";
     }
     if (inject_fault) {

@@ -18,7 +18,7 @@
 
 #include "generators/delaunay_refinement_2d.hpp"
 #include "generators/sample_domains.hpp"
-#include "tests/support/cgal_mesh_2d.hpp"
+#include "bench/cgal_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 
 namespace em = exactmesh;
@@ -118,7 +118,7 @@ std::vector<std::array<double, 4>> piece_set(const tri::Triangulation2& mesh,
 
 // Issue 11: CGAL's size criterion evaluated the size function at all three edges of every face
 // it tested (about three evaluations per edge), ours once per edge, so the bench charged CGAL
-// for the size function about three times over. The memo in tests/support/cgal_mesh_2d.hpp
+// for the size function about three times over. The memo in bench/cgal_mesh_2d.hpp
 // must change no decision of CGAL's (the same mesh, triangle for triangle) and bring its
 // evaluations down to ours within a small factor, on both graded sample domains.
 TEST(Differential_DelaunayRefinement, issue_11_cgal_size_memo) {

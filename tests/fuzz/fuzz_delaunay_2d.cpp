@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "predicates/errors.hpp"
-#include "tests/oracles/naive_delaunay_2d.hpp"
+#include "triangulation/delaunay_2d_naive.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/delaunay_2d.hpp"
 
@@ -268,9 +268,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
     }
     if (xy.size() / 2 <= kOracleMaxPoints) {
-        const exactmesh::oracles::NaiveDelaunay2 oracle = exactmesh::oracles::naive_delaunay_2d(xy);
+        const exactmesh::triangulation::NaiveDelaunay2 oracle = exactmesh::triangulation::delaunay_2d_naive(xy);
         for (std::size_t a = 0; a < kAlgorithms.size(); ++a) {
-            const std::string problem = exactmesh::oracles::compare_with_naive_delaunay_2d(
+            const std::string problem = exactmesh::triangulation::compare_with_delaunay_2d_naive(
                 xy, results[a].triangles, oracle, results[a].merged_into);
             if (!problem.empty()) fail(xy, label(a) + ": oracle: " + problem);
         }

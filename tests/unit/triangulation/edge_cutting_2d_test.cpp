@@ -18,7 +18,7 @@
 #include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/oracles/triangulation_enumeration_2d.hpp"
-#include "tests/support/sweep_triangulation_2d.hpp"
+#include "generators/sweep_triangulation_2d.hpp"
 #include "triangulation/bowyer_watson_2d.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/edge_cutting_2d.hpp"
@@ -167,7 +167,7 @@ TEST(Triangulation_EdgeCutting2, LargerSetsNeverWorseThanDelaunayOrSwapping) {
         tri::swap_edges_2d(swapped, tri::MinMaxAngle{});
         EXPECT_LE(orc::compare_exact_angles(cut_angle, orc::largest_exact_angle(xy, swapped.triangles)), 0);
         // From a bad start (the sweep), edge cutting reaches the same optimal value.
-        tri::Triangulation2 sweep = em::testing::sweep_triangulation_2d(xy);
+        tri::Triangulation2 sweep = em::generators::sweep_triangulation_2d(xy);
         tri::edge_cutting_2d(sweep);
         EXPECT_EQ(orc::compare_exact_angles(orc::largest_exact_angle(xy, sweep.triangles), cut_angle), 0);
         EXPECT_GT(counters.worst_triangles, 0u);
@@ -176,7 +176,7 @@ TEST(Triangulation_EdgeCutting2, LargerSetsNeverWorseThanDelaunayOrSwapping) {
 
 TEST(Triangulation_EdgeCutting2, ConstrainedEdgesAreKept) {
     const auto xy = em::generators::generate_points_2d(em::generators::Distribution::Uniform, 300, 7);
-    tri::Triangulation2 mesh = em::testing::sweep_triangulation_2d(xy);
+    tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
     mesh.constrained.assign(mesh.triangles.size(), 0);
     std::set<std::pair<tri::VertIdx, tri::VertIdx>> constrained;
     for (std::size_t e = 0; e < mesh.triangles.size(); e += 11) {

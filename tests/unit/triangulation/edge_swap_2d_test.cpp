@@ -21,7 +21,7 @@
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/oracles/triangulation_enumeration_2d.hpp"
-#include "tests/support/sweep_triangulation_2d.hpp"
+#include "generators/sweep_triangulation_2d.hpp"
 #include "triangulation/bowyer_watson_2d.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/edge_cutting_2d.hpp"
@@ -86,7 +86,7 @@ using exactmesh::testing::integer_points;
 
 /// Delaunay swapping from the sweep triangulation gives delaunay_2d's triangles exactly.
 void expect_sweep_swaps_to_delaunay(const std::vector<double>& xy, const std::string& label) {
-    tri::Triangulation2 mesh = em::testing::sweep_triangulation_2d(xy);
+    tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
     const tri::EdgeSwapCounters counters = tri::swap_edges_2d(mesh, tri::Delaunay{});
     expect_consistent(mesh);
     const tri::Delaunay2Result delaunay = tri::bowyer_watson_2d(xy);
@@ -189,7 +189,7 @@ TEST(Triangulation_EdgeSwap2, MaxMinAngleReachesDelaunayInGeneralPosition) {
     // smallest angle never decreases on the way.
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
         const auto xy = uniform(300, seed);
-        tri::Triangulation2 mesh = em::testing::sweep_triangulation_2d(xy);
+        tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
         const orc::ExactAngle before = smallest_exact_angle(xy, mesh.triangles);
         const auto counters = tri::swap_edges_2d(mesh, tri::MaxMinAngle{});
         expect_consistent(mesh);
@@ -204,7 +204,7 @@ TEST(Triangulation_EdgeSwap2, EveryCriterionImprovesItsMeasureAndStopsStable) {
     for (int round = 0; round < 6; ++round) {
         const auto xy = round % 2 ? uniform(400, static_cast<std::uint64_t>(round))
                                   : integer_points(300, 40, rng);
-        const tri::Triangulation2 start = em::testing::sweep_triangulation_2d(xy);
+        const tri::Triangulation2 start = em::generators::sweep_triangulation_2d(xy);
         {
             tri::Triangulation2 mesh = start;
             tri::swap_edges_2d(mesh, tri::MinMaxAngle{});
@@ -265,7 +265,7 @@ TEST(Triangulation_EdgeSwap2, DataDependentHandExamples) {
     const auto xy2 = integer_points(200, 64, rng);
     std::vector<double> linear;
     for (std::size_t v = 0; v < xy2.size() / 2; ++v) linear.push_back(2 * xy2[2 * v] - 3 * xy2[2 * v + 1]);
-    const tri::Triangulation2 sweep = em::testing::sweep_triangulation_2d(xy2);
+    const tri::Triangulation2 sweep = em::generators::sweep_triangulation_2d(xy2);
     for (const tri::DataCost cost : {tri::DataCost::AngleBetweenNormals,
                                      tri::DataCost::JumpInNormalDerivatives}) {
         tri::Triangulation2 copy = sweep;
@@ -311,7 +311,7 @@ TEST(Triangulation_EdgeSwap2, MinMaxAngleSwappingStopsInALocalOptimum) {
 TEST(Triangulation_EdgeSwap2, ConstrainedEdgesAreNeverSwapped) {
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
         const auto xy = uniform(500, seed);
-        tri::Triangulation2 mesh = em::testing::sweep_triangulation_2d(xy);
+        tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
         // Constrain every 7th interior edge of the sweep (long, thin: most would be swapped).
         mesh.constrained.assign(mesh.triangles.size(), 0);
         std::set<std::pair<tri::VertIdx, tri::VertIdx>> constrained;
@@ -352,7 +352,7 @@ TEST(Triangulation_EdgeSwap2, ConstrainedEdgesAreNeverSwapped) {
 TEST(Triangulation_EdgeSwap2, CollinearAndTinyInputs) {
     // Collinear points: no triangle, nothing to swap. One triangle: no interior edge.
     for (auto xy : {std::vector<double>{0, 0, 1, 1, 2, 2, 3, 3}, std::vector<double>{0, 0, 1, 0, 0, 1}}) {
-        tri::Triangulation2 mesh = em::testing::sweep_triangulation_2d(xy);
+        tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
         EXPECT_EQ(tri::swap_edges_2d(mesh, tri::Delaunay{}).swaps, 0u);
         EXPECT_EQ(tri::swap_edges_2d(mesh, tri::MinMaxAngle{}).edges_tested, 0u);
     }
@@ -364,7 +364,7 @@ TEST(Triangulation_EdgeSwap2, CollinearAndTinyInputs) {
     for (auto* run : {+[](tri::Triangulation2& m) { return tri::swap_edges_2d(m, tri::MinMaxAngle{}); },
                       +[](tri::Triangulation2& m) { return tri::swap_edges_2d(m, tri::MaxMinAngle{}); },
                       +[](tri::Triangulation2& m) { return tri::swap_edges_2d(m, tri::MinTotalLength{}); }}) {
-        tri::Triangulation2 mesh = em::testing::sweep_triangulation_2d(xy);
+        tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
         run(mesh);
         expect_consistent(mesh);
         EXPECT_TRUE(tri::check_topology_2d(xy, mesh.triangles).ok);

@@ -2,8 +2,11 @@
 // Naive 2D Delaunay oracle (geogram's *_naive idea): the empty-circle definition [Delaunay34]
 // tested over all triples, O(n^4). Its predicates share no code with the adaptive ones the
 // algorithms use: a plain static filter of its own, then the GMP reference (predicates/
-// exact_reference). Test-grade: meant for n up to about 60; used by `exactmesh fuzz` and the
-// Delaunay fuzz target.
+// exact_reference). Library code so that the shipped `exactmesh fuzz` can use it (as geogram
+// ships its *_naive checks); meant for n up to about 60; also used by the Delaunay fuzz target.
+// Its static filter is Shewchuk's a-priori bound with margin, deliberately not the adaptive
+// predicates' (an oracle that shared their code could share their bugs); it only ever answers
+// far from zero and defers every close call to the GMP reference.
 #pragma once
 
 #include <algorithm>
@@ -18,7 +21,7 @@
 #include "predicates/exact_reference.hpp"
 #include "predicates/sign.hpp"
 
-namespace exactmesh::oracles {
+namespace exactmesh::triangulation {
 
 /// What the empty-circle definition says about a point set, computed by brute force.
 struct NaiveDelaunay2 {
@@ -95,7 +98,7 @@ inline std::array<std::uint32_t, 3> rotated(std::uint32_t a, std::uint32_t b, st
 }  // namespace naive_detail
 
 /// The brute-force facts about xy (2·#V finite doubles).
-inline NaiveDelaunay2 naive_delaunay_2d(std::span<const double> xy) {
+inline NaiveDelaunay2 delaunay_2d_naive(std::span<const double> xy) {
     using naive_detail::incircle;
     using naive_detail::orient;
     using predicates::Sign;
@@ -161,7 +164,7 @@ inline NaiveDelaunay2 naive_delaunay_2d(std::span<const double> xy) {
 /// counter-clockwise with an empty circumcircle (cocircular points allowed), every strictly
 /// Delaunay triangle present; and `merged_into`, when given, the first occurrences.
 /// @return an empty string when they agree, else the first disagreement in words.
-inline std::string compare_with_naive_delaunay_2d(std::span<const double> xy,
+inline std::string compare_with_delaunay_2d_naive(std::span<const double> xy,
                                                   std::span<const std::uint32_t> triangles,
                                                   const NaiveDelaunay2& oracle,
                                                   std::span<const std::uint32_t> merged_into = {}) {
@@ -217,4 +220,4 @@ inline std::string compare_with_naive_delaunay_2d(std::span<const double> xy,
     return {};
 }
 
-}  // namespace exactmesh::oracles
+}  // namespace exactmesh::triangulation

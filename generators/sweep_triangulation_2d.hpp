@@ -2,7 +2,8 @@
 // A deliberately poor starting triangulation for the swapping tests and benches: the sweep
 // triangulation (points sorted by x then y, each joined to every hull edge it sees), full of
 // long thin triangles. O(n h) with h the hull size; exact orient2d; duplicates are skipped
-// (they keep no triangle). Test and bench support, not a library algorithm.
+// (they keep no triangle). An input generator for the swapping tests and benchmarks (the
+// starting point that edge swapping and edge cutting improve), not a meshing algorithm.
 #pragma once
 
 #include <algorithm>
@@ -15,7 +16,7 @@
 #include "triangulation/edge_swap_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
 
-namespace exactmesh::testing {
+namespace exactmesh::generators {
 
 inline triangulation::Triangulation2 sweep_triangulation_2d(std::span<const double> xy) {
     using predicates::orient2d;
@@ -77,4 +78,4 @@ inline triangulation::Triangulation2 sweep_triangulation_2d(std::span<const doub
     return mesh;
 }
 
-}  // namespace exactmesh::testing
+}  // namespace exactmesh::generators
