@@ -27,14 +27,9 @@ namespace {
 namespace fs = std::filesystem;
 namespace tri = exactmesh::triangulation;
 
-struct CdtArguments {
-    std::string input;
-    std::string output;
+struct CdtArguments : CommandArguments, OrderArguments {
     std::string recovery = "swap";
-    std::string order = "brio";
-    std::uint64_t seed = 1;
     bool convex_hull = false;
-    bool stats = false;
 };
 
 /// The input as a PSLG: a .poly, or a .node (points only).
@@ -66,7 +61,7 @@ void print_stats(const tri::Cdt2Counters& c, const predicates::PredicateStats& s
               << "incircle_calls: " << c.incircle_calls << '\n'
               << "walk_steps: " << c.walk_steps << '\n';
     print_predicate_stats(stats);
-    std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
+    print_construct_seconds(seconds);
 }
 
 void run_cdt(const CdtArguments& arguments) {
@@ -114,15 +109,11 @@ void add_cdt_command(CLI::App& app) {
     auto arguments = std::make_shared<CdtArguments>();
     CLI::App* command = app.add_subcommand(
         "cdt", "Constrained (or conforming) Delaunay triangulation of a Triangle .poly file");
-    command->add_option("input", arguments->input, "A Triangle .poly file (or a .node: points only)")
-        ->required()
-        ->type_name("IN.poly");
-    command
-        ->add_option("-o,--output", arguments->output,
-                     "Output; the extension picks the format: .ele (with .neigh, .node and .poly "
-                     "beside it), .msh (Gmsh 4.1), .vtu (VTK), .svg (picture)")
-        ->required()
-        ->type_name("OUT");
+    add_input_option(*command, arguments->input, "input",
+                     "A Triangle .poly file (or a .node: points only)", "IN.poly");
+    add_output_option(*command, arguments->output,
+                      "Output; the extension picks the format: .ele (with .neigh, .node and .poly "
+                      "beside it), .msh (Gmsh 4.1), .vtu (VTK), .svg (picture)");
     command->add_option("--recovery", arguments->recovery,
                         "Segment recovery: swap (Sloan's edge swapping), cavity (retriangulate the "
                         "crossed polygons), conforming (split at midpoints; the result is Delaunay)")
@@ -130,13 +121,9 @@ void add_cdt_command(CLI::App& app) {
         ->capture_default_str();
     command->add_flag("--convex-hull", arguments->convex_hull,
                       "Keep the triangles outside the segments (Triangle's -c); holes are still removed");
-    command->add_option("--order", arguments->order, "Vertex insertion order")
-        ->check(CLI::IsMember({"given", "random", "brio"}))
-        ->capture_default_str();
-    add_seed_option(*command, arguments->seed);
-    command->add_flag("--stats", arguments->stats,
-                      "Print work counters, predicate stages and construct_seconds (the construction "
-                      "alone, without file I/O)");
+    add_order_options(*command, *arguments, "Vertex insertion order");
+    add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
+                   "the construction alone, without file I/O");
     command->callback([arguments] { run_cdt(*arguments); });
 }
 

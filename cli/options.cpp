@@ -20,4 +20,26 @@ void add_seed_option(CLI::App& command, std::uint64_t& seed) {
         ->capture_default_str();
 }
 
+void add_input_option(CLI::App& command, std::string& path, const std::string& name,
+                      const std::string& help, const std::string& type) {
+    command.add_option(name, path, help)->required()->type_name(type);
+}
+
+void add_output_option(CLI::App& command, std::string& output, const std::string& help,
+                       const std::string& type) {
+    command.add_option("-o,--output", output, help)->required()->type_name(type);
+}
+
+void add_order_options(CLI::App& command, OrderArguments& order, const std::string& help) {
+    command.add_option("--order", order.order, help)
+        ->check(CLI::IsMember({"given", "random", "brio"}))
+        ->capture_default_str();
+    add_seed_option(command, order.seed);
+}
+
+void add_stats_flag(CLI::App& command, bool& stats, const std::string& what,
+                    const std::string& timed) {
+    command.add_flag("--stats", stats, "Print " + what + " and construct_seconds (" + timed + ")");
+}
+
 }  // namespace exactmesh::cli

@@ -19,4 +19,32 @@ CLI::Validator whole_number_at_most(std::uint64_t max);
 /// `--seed S`: the seed of the random and brio insertion orders, any 64-bit unsigned value.
 void add_seed_option(CLI::App& command, std::uint64_t& seed);
 
+/// The fields every construction command has: its main input file, its output, --stats.
+struct CommandArguments {
+    std::string input;
+    std::string output;
+    bool stats = false;
+};
+
+/// An insertion order and its seed (--order, --seed).
+struct OrderArguments {
+    std::string order = "brio";
+    std::uint64_t seed = 1;
+};
+
+/// A required positional file argument `name` (type_name e.g. "IN.node").
+void add_input_option(CLI::App& command, std::string& path, const std::string& name,
+                      const std::string& help, const std::string& type);
+
+/// The required `-o,--output OUT`, its help naming the formats written.
+void add_output_option(CLI::App& command, std::string& output, const std::string& help,
+                       const std::string& type = "OUT");
+
+/// `--order {given, random, brio}` and `--seed`.
+void add_order_options(CLI::App& command, OrderArguments& order, const std::string& help);
+
+/// `--stats`: "Print <what> and construct_seconds (<timed>)".
+void add_stats_flag(CLI::App& command, bool& stats, const std::string& what,
+                    const std::string& timed);
+
 }  // namespace exactmesh::cli

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <iomanip>
 #include <iostream>
 #include <string>
 
@@ -189,6 +190,18 @@ void print_predicate_stats(const predicates::PredicateStats& stats, int dimensio
     } else {
         std::cout << "predicate_stages: compiled out (configure with -DEXACTMESH_PREDICATE_STATS=ON)\n";
     }
+}
+
+void print_construct_seconds(double seconds) {
+    const std::ios_base::fmtflags flags = std::cout.flags();
+    const std::streamsize precision = std::cout.precision();
+    std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
+    std::cout.flags(flags);
+    std::cout.precision(precision);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace exactmesh::cli

@@ -4,6 +4,7 @@
 // --order option, and the predicate stage counters printed by --stats.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <initializer_list>
 #include <string>
@@ -92,5 +93,11 @@ void print_warnings(const std::vector<std::string>& warnings);
 /// `name.calls: N` ... one line per stage of the predicates of that dimension (orient2d and
 /// incircle, or orient3d and insphere), or a note when the counters are compiled out.
 void print_predicate_stats(const predicates::PredicateStats& stats, int dimension = 2);
+
+/// `construct_seconds: T` on a line of its own (fixed, 6 decimals; the stream's format restored).
+void print_construct_seconds(double seconds);
+
+/// Seconds of wall time since `start` (steady clock).
+double seconds_since(std::chrono::steady_clock::time_point start);
 
 }  // namespace exactmesh::cli

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "io/tetgen_format.hpp"
 #include "predicates/errors.hpp"
@@ -26,13 +27,11 @@ namespace {
 namespace fs = std::filesystem;
 namespace tri = exactmesh::triangulation;
 
-struct Swap3dArguments {
-    std::string node_path;
+/// input: the .node file.
+struct Swap3dArguments : CommandArguments {
     std::string ele_path;
-    std::string output;
     std::string criterion = "delaunay";
     bool quality = false;
-    bool stats = false;
 };
 
 void print_quality(const tri::Tetrahedralization3& mesh) {
@@ -54,9 +53,9 @@ void print_quality(const tri::Tetrahedralization3& mesh) {
 void run_swap3d(const Swap3dArguments& arguments) {
     const fs::path output = arguments.output;
     require_ele_output(output);
-    refuse_to_overwrite_inputs({arguments.node_path, arguments.ele_path}, {output});
+    refuse_to_overwrite_inputs({arguments.input, arguments.ele_path}, {output});
     const tri::SwapCriterion3 criterion = tri::swap_criterion_3d_from_name(arguments.criterion);
-    const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.node_path);
+    const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
     const io::TetgenEleFile ele = io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
     tri::Tetrahedralization3 mesh;
     mesh.xyz = nodes.xyz;
@@ -75,13 +74,13 @@ void run_swap3d(const Swap3dArguments& arguments) {
             tri::Check3Numbering{nodes.first_index, ele.first_index, io::kTetgenFileCorners});
         !report.ok) {
         throw InputError(arguments.ele_path + ": not a tetrahedralization of the points of " +
-                         arguments.node_path + ": " + report.problem);
+                         arguments.input + ": " + report.problem);
     }
     const auto start = std::chrono::steady_clock::now();
     tri::FlipMesh3 work = tri::make_flip_mesh_3d(mesh);
     const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(work, criterion);
     mesh = tri::to_tetrahedralization_3d(work);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = seconds_since(start);
     io::OutputSet set;
     set.stage(output, io::format_tetgen_ele(mesh.tets, ele.first_index));
     commit_outputs(set);
@@ -96,7 +95,7 @@ void run_swap3d(const Swap3dArguments& arguments) {
                   << "flips_22: " << counters.flips_22 << '\n'
                   << "not_flippable: " << counters.not_flippable << '\n';
         if (criterion == tri::SwapCriterion3::Delaunay) std::cout << "stalled_faces: " << counters.stalled_faces << '\n';
-        std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n' << std::defaultfloat;
+        print_construct_seconds(seconds);
     }
     if (arguments.quality) print_quality(mesh);
 }
@@ -107,11 +106,10 @@ void add_swap3d_command(CLI::App& app) {
     auto arguments = std::make_shared<Swap3dArguments>();
     CLI::App* command = app.add_subcommand(
         "swap3d", "Edge-face swapping of a tetrahedralization (IN.node + IN.ele, TetGen formats) under one criterion");
-    command->add_option("node", arguments->node_path, "Points: a TetGen .node file")->required()->type_name("IN.node");
-    command->add_option("ele", arguments->ele_path, "Tetrahedra: a TetGen .ele file (TetGen's orientation)")
-        ->required()
-        ->type_name("IN.ele");
-    command->add_option("-o,--output", arguments->output, "Output tetrahedra (.ele)")->required()->type_name("OUT.ele");
+    add_input_option(*command, arguments->input, "node", "Points: a TetGen .node file", "IN.node");
+    add_input_option(*command, arguments->ele_path, "ele",
+                     "Tetrahedra: a TetGen .ele file (TetGen's orientation)", "IN.ele");
+    add_output_option(*command, arguments->output, "Output tetrahedra (.ele)", "OUT.ele");
     command
         ->add_option("--criterion", arguments->criterion,
                      "delaunay (SoS insphere), max-min-dihedral, min-max-dihedral, volume-edge (max-min of "
@@ -121,7 +119,7 @@ void add_swap3d_command(CLI::App& app) {
     command->add_flag("--quality", arguments->quality,
                       "Print the output's quality: dihedral extremes and 10-degree histogram, volume-edge, "
                       "radius-edge, slivers (min dihedral < 5 degrees with radius-edge <= 2)");
-    command->add_flag("--stats", arguments->stats, "Print counters and construct_seconds (the swapping alone, without I/O)");
+    add_stats_flag(*command, arguments->stats, "counters", "the swapping alone, without I/O");
     command->callback([arguments] { run_swap3d(*arguments); });
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/errors.hpp"
@@ -28,24 +29,12 @@ namespace {
 namespace fs = std::filesystem;
 namespace tri = exactmesh::triangulation;
 
-struct SwapArguments {
-    std::string node_path;
+/// input: the .node file.
+struct SwapArguments : CommandArguments {
     std::string ele_path;
-    std::string output;
     std::string criterion = "delaunay";
     std::string data_cost = "abn";
-    bool stats = false;
 };
-
-struct MinMaxArguments {
-    std::string node_path;
-    std::string output;
-    bool stats = false;
-};
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// The largest angle of the triangles, in degrees (for the report only: not a decision).
 double largest_angle_degrees(const tri::Triangulation2& mesh) {
@@ -62,21 +51,17 @@ double largest_angle_degrees(const tri::Triangulation2& mesh) {
     return largest * 180.0 / 3.14159265358979323846;
 }
 
-void print_seconds(double seconds) {
-    std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
-}
-
 void run_swap(const SwapArguments& arguments) {
     const fs::path output = arguments.output;
     require_ele_output(output);
-    refuse_to_overwrite_inputs({arguments.node_path, arguments.ele_path}, {output});
+    refuse_to_overwrite_inputs({arguments.input, arguments.ele_path}, {output});
     const tri::SwapCriterion criterion = tri::swap_criterion_from_name(arguments.criterion);
-    const io::NodeFile nodes = io::read_node(arguments.node_path);
+    const io::NodeFile nodes = io::read_node(arguments.input);
     const io::EleFile ele = io::read_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
     std::vector<double> values;
     if (criterion == tri::SwapCriterion::DataDependent) {
         if (nodes.attribute_count == 0) {
-            throw InputError(arguments.node_path +
+            throw InputError(arguments.input +
                              ": the data-dependent criterion reads the first vertex attribute, "
                              "and this file declares none");
         }
@@ -99,7 +84,7 @@ void run_swap(const SwapArguments& arguments) {
             nodes.xy, ele.triangles, tri::CheckNumbering{nodes.first_index, ele.first_index});
         !report.ok) {
         throw InputError(arguments.ele_path + ": not a triangulation of the points of " +
-                         arguments.node_path + ": " + report.problem);
+                         arguments.input + ": " + report.problem);
     }
     const auto start = std::chrono::steady_clock::now();
     tri::EdgeSwapCounters counters;
@@ -131,15 +116,15 @@ void run_swap(const SwapArguments& arguments) {
                   << "swaps: " << counters.swaps << '\n'
                   << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
                   << '\n';
-        print_seconds(seconds);
+        print_construct_seconds(seconds);
     }
 }
 
-void run_min_max(const MinMaxArguments& arguments) {
+void run_min_max(const CommandArguments& arguments) {
     const fs::path output = arguments.output;
     require_ele_output(output);
-    refuse_to_overwrite_inputs({arguments.node_path}, {output});
-    const io::NodeFile nodes = io::read_node(arguments.node_path);
+    refuse_to_overwrite_inputs({arguments.input}, {output});
+    const io::NodeFile nodes = io::read_node(arguments.input);
     const auto start = std::chrono::steady_clock::now();
     tri::EdgeCuttingCounters counters;
     const tri::Triangulation2 mesh = tri::min_max_angle_triangulation_2d(nodes.xy, &counters);
@@ -157,7 +142,7 @@ void run_min_max(const MinMaxArguments& arguments) {
                   << "dynamic_programs: " << counters.dynamic_programs << '\n'
                   << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
                   << '\n';
-        print_seconds(seconds);
+        print_construct_seconds(seconds);
     }
 }
 
@@ -167,15 +152,10 @@ void add_swap_command(CLI::App& app) {
     auto arguments = std::make_shared<SwapArguments>();
     CLI::App* command = app.add_subcommand(
         "swap", "Lawson edge swapping of a triangulation (IN.node + IN.ele) under one criterion");
-    command->add_option("node", arguments->node_path, "Points: a Triangle .node file")
-        ->required()
-        ->type_name("IN.node");
-    command->add_option("ele", arguments->ele_path, "Triangles: a Triangle .ele file (counter-clockwise)")
-        ->required()
-        ->type_name("IN.ele");
-    command->add_option("-o,--output", arguments->output, "Output triangles (.ele)")
-        ->required()
-        ->type_name("OUT.ele");
+    add_input_option(*command, arguments->input, "node", "Points: a Triangle .node file", "IN.node");
+    add_input_option(*command, arguments->ele_path, "ele",
+                     "Triangles: a Triangle .ele file (counter-clockwise)", "IN.ele");
+    add_output_option(*command, arguments->output, "Output triangles (.ele)", "OUT.ele");
     command
         ->add_option("--criterion", arguments->criterion,
                      "delaunay (SoS incircle), max-min-angle, min-max-angle, min-length (shorter "
@@ -189,24 +169,18 @@ void add_swap_command(CLI::App& app) {
                      "normal derivatives)")
         ->check(CLI::IsMember({"abn", "jnd"}))
         ->capture_default_str();
-    command->add_flag("--stats", arguments->stats,
-                      "Print counters and construct_seconds (the swapping alone, without I/O)");
+    add_stats_flag(*command, arguments->stats, "counters", "the swapping alone, without I/O");
     command->callback([arguments] { run_swap(*arguments); });
 }
 
 void add_min_max_command(CLI::App& app) {
-    auto arguments = std::make_shared<MinMaxArguments>();
+    auto arguments = std::make_shared<CommandArguments>();
     CLI::App* command = app.add_subcommand(
         "min-max", "Min-max angle triangulation of the points of IN.node (edge cutting, exact)");
-    command->add_option("node", arguments->node_path, "Points: a Triangle .node file")
-        ->required()
-        ->type_name("IN.node");
-    command->add_option("-o,--output", arguments->output, "Output triangles (.ele)")
-        ->required()
-        ->type_name("OUT.ele");
-    command->add_flag("--stats", arguments->stats,
-                      "Print counters and construct_seconds (Delaunay start + edge cutting, "
-                      "without I/O)");
+    add_input_option(*command, arguments->input, "node", "Points: a Triangle .node file", "IN.node");
+    add_output_option(*command, arguments->output, "Output triangles (.ele)", "OUT.ele");
+    add_stats_flag(*command, arguments->stats, "counters",
+                   "Delaunay start + edge cutting, without I/O");
     command->callback([arguments] { run_min_max(*arguments); });
 }
 

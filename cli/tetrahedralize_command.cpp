@@ -30,13 +30,8 @@ namespace {
 namespace fs = std::filesystem;
 namespace tri = exactmesh::triangulation;
 
-struct TetrahedralizeArguments {
-    std::string input;
-    std::string output;
+struct TetrahedralizeArguments : CommandArguments, OrderArguments {
     std::string algorithm = "bowyer-watson";
-    std::string order = "brio";
-    std::uint64_t seed = 1;
-    bool stats = false;
 };
 
 void print_stats(const tri::Delaunay3Counters& counters, const predicates::PredicateStats& stats,
@@ -56,8 +51,7 @@ void print_stats(const tri::Delaunay3Counters& counters, const predicates::Predi
               << "flips_4_4: " << counters.flips_4_4 << '\n'
               << "unflippable: " << counters.unflippable << '\n';
     print_predicate_stats(stats, 3);
-    std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << construct_seconds
-              << '\n';
+    print_construct_seconds(construct_seconds);
 }
 
 void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
@@ -114,25 +108,17 @@ void add_tetrahedralize_command(CLI::App& app) {
     auto arguments = std::make_shared<TetrahedralizeArguments>();
     CLI::App* command = app.add_subcommand(
         "tetrahedralize", "Delaunay tetrahedralization of the points of a TetGen .node file");
-    command->add_option("input", arguments->input, "Points: a TetGen .node file (dimension 3)")
-        ->required()
-        ->type_name("IN.node");
-    command
-        ->add_option("-o,--output", arguments->output,
-                     "Output; the extension picks the format: .ele (TetGen; .face and .neigh "
-                     "beside it), .msh (Gmsh 4.1), .vtu (VTK)")
-        ->required()
-        ->type_name("OUT");
+    add_input_option(*command, arguments->input, "input",
+                     "Points: a TetGen .node file (dimension 3)", "IN.node");
+    add_output_option(*command, arguments->output,
+                      "Output; the extension picks the format: .ele (TetGen; .face and .neigh "
+                      "beside it), .msh (Gmsh 4.1), .vtu (VTK)");
     command->add_option("--algorithm", arguments->algorithm, "Construction algorithm")
         ->check(CLI::IsMember({"bowyer-watson", "green-sibson"}))
         ->capture_default_str();
-    command->add_option("--order", arguments->order, "Insertion order")
-        ->check(CLI::IsMember({"given", "random", "brio"}))
-        ->capture_default_str();
-    add_seed_option(*command, arguments->seed);
-    command->add_flag("--stats", arguments->stats,
-                      "Print work counters, predicate stages and construct_seconds (the "
-                      "construction alone, without file I/O)");
+    add_order_options(*command, *arguments, "Insertion order");
+    add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
+                   "the construction alone, without file I/O");
     command->callback([arguments] { run_tetrahedralize(*arguments); });
 }
 

@@ -30,14 +30,9 @@ namespace {
 namespace fs = std::filesystem;
 namespace tri = exactmesh::triangulation;
 
-struct TriangulateArguments {
-    std::string input;
-    std::string output;
+struct TriangulateArguments : CommandArguments, OrderArguments {
     std::string algorithm = "bowyer-watson";
-    std::string order = "brio";
     std::string location = "auto";
-    std::uint64_t seed = 1;
-    bool stats = false;
 };
 
 tri::PointLocation point_location(const std::string& name) {
@@ -58,8 +53,7 @@ void print_stats(const tri::Delaunay2Counters& counters, const predicates::Predi
               << "flips: " << counters.flips << '\n'
               << "candidates: " << counters.candidates << '\n';
     print_predicate_stats(stats);
-    std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << construct_seconds
-              << '\n';
+    print_construct_seconds(construct_seconds);
 }
 
 void run_triangulate(const TriangulateArguments& arguments) {
@@ -110,21 +104,15 @@ void add_triangulate_command(CLI::App& app) {
     auto arguments = std::make_shared<TriangulateArguments>();
     CLI::App* command = app.add_subcommand(
         "triangulate", "Delaunay triangulation of the points of a Triangle .node file");
-    command->add_option("input", arguments->input, "Points: a Triangle .node file")
-        ->required()
-        ->type_name("IN.node");
-    command
-        ->add_option("-o,--output", arguments->output,
-                     "Output; the extension picks the format: .ele (and .neigh beside it), "
-                     ".msh (Gmsh 4.1), .vtu (VTK), .svg (picture)")
-        ->required()
-        ->type_name("OUT");
+    add_input_option(*command, arguments->input, "input", "Points: a Triangle .node file",
+                     "IN.node");
+    add_output_option(*command, arguments->output,
+                      "Output; the extension picks the format: .ele (and .neigh beside it), "
+                      ".msh (Gmsh 4.1), .vtu (VTK), .svg (picture)");
     command->add_option("--algorithm", arguments->algorithm, "Construction algorithm")
         ->check(CLI::IsMember({"bowyer-watson", "green-sibson", "tanemura-merriam"}))
         ->capture_default_str();
-    command->add_option("--order", arguments->order, "Insertion order")
-        ->check(CLI::IsMember({"given", "random", "brio"}))
-        ->capture_default_str();
+    add_order_options(*command, *arguments, "Insertion order");
     command
         ->add_option("--location", arguments->location,
                      "Point location of the incremental algorithms: walk from the last "
@@ -132,10 +120,8 @@ void add_triangulate_command(CLI::App& app) {
                      "(grid for the random order, else walk); tanemura-merriam locates nothing")
         ->check(CLI::IsMember({"auto", "walk", "grid"}))
         ->capture_default_str();
-    add_seed_option(*command, arguments->seed);
-    command->add_flag("--stats", arguments->stats,
-                      "Print work counters, predicate stages and construct_seconds (the "
-                      "construction alone, without file I/O)");
+    add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
+                   "the construction alone, without file I/O");
     command->callback([arguments] { run_triangulate(*arguments); });
 }
 
