@@ -42,24 +42,9 @@ io::PolyFile read_input(const fs::path& input) {
     return io::read_poly(input);
 }
 
-void print_stats(const tri::Cdt2Counters& c, const predicates::PredicateStats& stats, double seconds) {
-    std::cout << "points: " << c.points << '\n'
-              << "duplicates: " << c.duplicates << '\n'
-              << "segments: " << c.segments << '\n'
-              << "dropped_segments: " << c.dropped_segments << '\n'
-              << "vertices_on_segments: " << c.vertices_on_segments << '\n'
-              << "intersections: " << c.intersections << '\n'
-              << "conforming_splits: " << c.conforming_splits << '\n'
-              << "conforming_bends: " << c.conforming_bends << '\n'
-              << "conforming_passes: " << c.conforming_passes << '\n'
-              << "crossed_edges: " << c.crossed_edges << '\n'
-              << "recovery_flips: " << c.recovery_flips << '\n'
-              << "cavity_triangles: " << c.cavity_triangles << '\n'
-              << "delaunay_flips: " << c.delaunay_flips << '\n'
-              << "removed_triangles: " << c.removed_triangles << '\n'
-              << "orient_calls: " << c.orient_calls << '\n'
-              << "incircle_calls: " << c.incircle_calls << '\n'
-              << "walk_steps: " << c.walk_steps << '\n';
+void print_stats(const tri::Cdt2Counters& c, const predicates::PredicateStats& stats,
+                 double seconds) {
+    print_counters(counters_by_name(c));
     print_predicate_stats(stats);
     print_construct_seconds(seconds);
 }
@@ -97,7 +82,8 @@ void run_cdt(const CdtArguments& arguments) {
         fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")");
     commit_outputs(set);
     const tri::Triangulation2& mesh = result.mesh;
-    std::cout << "vertices: " << mesh.vertex_count() << '\n' << "triangles: " << mesh.triangle_count() << '\n';
+    std::cout << "vertices: " << mesh.vertex_count() << '\n'
+              << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {
         print_stats(result.counters, stats, std::chrono::duration<double>(stop - start).count());
     }
@@ -114,13 +100,15 @@ void add_cdt_command(CLI::App& app) {
     add_output_option(*command, arguments->output,
                       "Output; the extension picks the format: .ele (with .neigh, .node and .poly "
                       "beside it), .msh (Gmsh 4.1), .vtu (VTK), .svg (picture)");
-    command->add_option("--recovery", arguments->recovery,
-                        "Segment recovery: swap (Sloan's edge swapping), cavity (retriangulate the "
-                        "crossed polygons), conforming (split at midpoints; the result is Delaunay)")
+    command
+        ->add_option("--recovery", arguments->recovery,
+                     "Segment recovery: swap (Sloan's edge swapping), cavity (retriangulate the "
+                     "crossed polygons), conforming (split at midpoints; the result is Delaunay)")
         ->check(CLI::IsMember({"swap", "cavity", "conforming"}))
         ->capture_default_str();
-    command->add_flag("--convex-hull", arguments->convex_hull,
-                      "Keep the triangles outside the segments (Triangle's -c); holes are still removed");
+    command->add_flag(
+        "--convex-hull", arguments->convex_hull,
+        "Keep the triangles outside the segments (Triangle's -c); holes are still removed");
     add_order_options(*command, *arguments, "Vertex insertion order");
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
                    "the construction alone, without file I/O");

@@ -192,6 +192,10 @@ void print_predicate_stats(const predicates::PredicateStats& stats, int dimensio
     }
 }
 
+void print_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters) {
+    for (const auto& [name, value] : counters) std::cout << name << ": " << value << '\n';
+}
+
 void print_construct_seconds(double seconds) {
     const std::ios_base::fmtflags flags = std::cout.flags();
     const std::streamsize precision = std::cout.precision();

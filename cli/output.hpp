@@ -5,9 +5,11 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/point_set_2d.hpp"
@@ -93,6 +95,9 @@ void print_warnings(const std::vector<std::string>& warnings);
 /// `name.calls: N` ... one line per stage of the predicates of that dimension (orient2d and
 /// incircle, or orient3d and insphere), or a note when the counters are compiled out.
 void print_predicate_stats(const predicates::PredicateStats& stats, int dimension = 2);
+
+/// `name: value`, one line each, in order (a counters table: base/counter_fields.hpp).
+void print_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters);
 
 /// `construct_seconds: T` on a line of its own (fixed, 6 decimals; the stream's format restored).
 void print_construct_seconds(double seconds);

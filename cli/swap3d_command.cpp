@@ -86,15 +86,11 @@ void run_swap3d(const Swap3dArguments& arguments) {
     commit_outputs(set);
     std::cout << "tetrahedra: " << mesh.tet_count() << '\n';
     if (arguments.stats) {
-        std::cout << "criterion: " << tri::swap_criterion_3d_name(criterion) << '\n'
-                  << "faces_examined: " << counters.faces_examined << '\n'
-                  << "edges_examined: " << counters.edges_examined << '\n'
-                  << "flips_23: " << counters.flips_23 << '\n'
-                  << "flips_32: " << counters.flips_32 << '\n'
-                  << "flips_44: " << counters.flips_44 << '\n'
-                  << "flips_22: " << counters.flips_22 << '\n'
-                  << "not_flippable: " << counters.not_flippable << '\n';
-        if (criterion == tri::SwapCriterion3::Delaunay) std::cout << "stalled_faces: " << counters.stalled_faces << '\n';
+        std::cout << "criterion: " << tri::swap_criterion_3d_name(criterion) << '\n';
+        auto named = counters_by_name(counters);
+        // stalled_faces is counted for the Delaunay criterion only.
+        if (criterion != tri::SwapCriterion3::Delaunay) std::erase_if(named, [](const auto& c) { return c.first == "stalled_faces"; });
+        print_counters(named);
         print_construct_seconds(seconds);
     }
     if (arguments.quality) print_quality(mesh);

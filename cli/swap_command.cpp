@@ -109,12 +109,9 @@ void run_swap(const SwapArguments& arguments) {
     commit_outputs(set);
     std::cout << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {
-        std::cout << "criterion: " << arguments.criterion << '\n'
-                  << "edges_tested: " << counters.edges_tested << '\n'
-                  << "not_convex: " << counters.not_convex << '\n'
-                  << "constrained: " << counters.constrained << '\n'
-                  << "swaps: " << counters.swaps << '\n'
-                  << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
+        std::cout << "criterion: " << arguments.criterion << '\n';
+        print_counters(counters_by_name(counters));
+        std::cout << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
                   << '\n';
         print_construct_seconds(seconds);
     }
@@ -134,13 +131,8 @@ void run_min_max(const CommandArguments& arguments) {
     commit_outputs(set);
     std::cout << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {
-        std::cout << "worst_triangles: " << counters.worst_triangles << '\n'
-                  << "insertions: " << counters.insertions << '\n'
-                  << "candidates: " << counters.candidates << '\n'
-                  << "visited: " << counters.visited << '\n'
-                  << "removed_edges: " << counters.removed_edges << '\n'
-                  << "dynamic_programs: " << counters.dynamic_programs << '\n'
-                  << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
+        print_counters(counters_by_name(counters));
+        std::cout << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
                   << '\n';
         print_construct_seconds(seconds);
     }

@@ -36,20 +36,7 @@ struct TetrahedralizeArguments : CommandArguments, OrderArguments {
 
 void print_stats(const tri::Delaunay3Counters& counters, const predicates::PredicateStats& stats,
                  double construct_seconds) {
-    std::cout << "points: " << counters.points << '\n'
-              << "duplicates: " << counters.duplicates << '\n'
-              << "orient_calls: " << counters.orient_calls << '\n'
-              << "insphere_calls: " << counters.insphere_calls << '\n'
-              << "walk_steps: " << counters.walk_steps << '\n'
-              << "cavity_tets: " << counters.cavity_tets << '\n'
-              << "outside_hull: " << counters.outside_hull << '\n'
-              << "splits_1_4: " << counters.splits_1_4 << '\n'
-              << "splits_2_6: " << counters.splits_2_6 << '\n'
-              << "splits_edge: " << counters.splits_edge << '\n'
-              << "flips_2_3: " << counters.flips_2_3 << '\n'
-              << "flips_3_2: " << counters.flips_3_2 << '\n'
-              << "flips_4_4: " << counters.flips_4_4 << '\n'
-              << "unflippable: " << counters.unflippable << '\n';
+    print_counters(counters_by_name(counters));
     print_predicate_stats(stats, 3);
     print_construct_seconds(construct_seconds);
 }

@@ -44,14 +44,7 @@ tri::PointLocation point_location(const std::string& name) {
 
 void print_stats(const tri::Delaunay2Counters& counters, const predicates::PredicateStats& stats,
                  double construct_seconds) {
-    std::cout << "points: " << counters.points << '\n'
-              << "duplicates: " << counters.duplicates << '\n'
-              << "orient_calls: " << counters.orient_calls << '\n'
-              << "incircle_calls: " << counters.incircle_calls << '\n'
-              << "walk_steps: " << counters.walk_steps << '\n'
-              << "cavity_triangles: " << counters.cavity_triangles << '\n'
-              << "flips: " << counters.flips << '\n'
-              << "candidates: " << counters.candidates << '\n';
+    print_counters(counters_by_name(counters));
     print_predicate_stats(stats);
     print_construct_seconds(construct_seconds);
 }

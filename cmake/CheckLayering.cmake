@@ -1,19 +1,20 @@
 # Fails when an #include crosses the layers the wrong way (run as a CTest test with -P).
-# Allowed: predicates -> predicates; triangulation -> predicates, triangulation;
+# Allowed: base -> base (every layer may use base/); predicates -> predicates; triangulation -> predicates, triangulation;
 # generators -> predicates, triangulation, generators; io -> triangulation/mesh*.hpp, io;
 # cli -> the four layers and cli (never tests/ or bench/: the command ships);
 # bench -> the four layers and bench; tests -> the four layers, tests and the peer wrappers
 # bench/cgal_*.hpp (the differential tests compare with the same peer the benchmarks run).
 # CGAL may appear only in tests/ and bench/.
-set(allowed_predicates "predicates")
-set(allowed_triangulation "predicates|triangulation")
-set(allowed_generators "predicates|triangulation|generators")
-set(allowed_io "io|triangulation/mesh[23]\\.hpp|predicates/errors\\.hpp")
-set(allowed_cli "predicates|triangulation|generators|io|cli")
-set(allowed_bench "predicates|triangulation|generators|io|bench")
-set(allowed_tests "predicates|triangulation|generators|io|tests|bench/cgal_[a-z0-9_]+\\.hpp")
+set(allowed_base "base")
+set(allowed_predicates "base|predicates")
+set(allowed_triangulation "base|predicates|triangulation")
+set(allowed_generators "base|predicates|triangulation|generators")
+set(allowed_io "base|io|triangulation/mesh[23]\\.hpp|predicates/errors\\.hpp")
+set(allowed_cli "base|predicates|triangulation|generators|io|cli")
+set(allowed_bench "base|predicates|triangulation|generators|io|bench")
+set(allowed_tests "base|predicates|triangulation|generators|io|tests|bench/cgal_[a-z0-9_]+\\.hpp")
 set(failures "")
-foreach(layer predicates triangulation generators io cli bench tests)
+foreach(layer base predicates triangulation generators io cli bench tests)
   file(GLOB_RECURSE files "${SOURCE_DIR}/${layer}/*.hpp" "${SOURCE_DIR}/${layer}/*.cpp"
        "${SOURCE_DIR}/${layer}/*.ipp")
   foreach(f ${files})

@@ -18,12 +18,14 @@
 // (predicates/constructions); a segment through a vertex is split there. Both add a warning.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "base/counter_fields.hpp"
 #include "predicates/errors.hpp"
 #include "triangulation/delaunay_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
@@ -77,6 +79,29 @@ struct Cdt2Counters {
     std::uint64_t incircle_calls = 0;
     std::uint64_t walk_steps = 0;
 };
+
+/// The table of Cdt2Counters (base/counter_fields.hpp): --stats prints it in this order.
+inline constexpr std::array<CounterField<Cdt2Counters>, 18> counter_fields(const Cdt2Counters&) {
+    return {
+        {CounterField<Cdt2Counters>{"points", &Cdt2Counters::points},
+         CounterField<Cdt2Counters>{"duplicates", &Cdt2Counters::duplicates},
+         CounterField<Cdt2Counters>{"segments", &Cdt2Counters::segments},
+         CounterField<Cdt2Counters>{"dropped_segments", &Cdt2Counters::dropped_segments},
+         CounterField<Cdt2Counters>{"vertices_on_segments", &Cdt2Counters::vertices_on_segments},
+         CounterField<Cdt2Counters>{"intersections", &Cdt2Counters::intersections},
+         CounterField<Cdt2Counters>{"bent_crossings", &Cdt2Counters::bent_crossings},
+         CounterField<Cdt2Counters>{"conforming_splits", &Cdt2Counters::conforming_splits},
+         CounterField<Cdt2Counters>{"conforming_bends", &Cdt2Counters::conforming_bends},
+         CounterField<Cdt2Counters>{"conforming_passes", &Cdt2Counters::conforming_passes},
+         CounterField<Cdt2Counters>{"crossed_edges", &Cdt2Counters::crossed_edges},
+         CounterField<Cdt2Counters>{"recovery_flips", &Cdt2Counters::recovery_flips},
+         CounterField<Cdt2Counters>{"cavity_triangles", &Cdt2Counters::cavity_triangles},
+         CounterField<Cdt2Counters>{"delaunay_flips", &Cdt2Counters::delaunay_flips},
+         CounterField<Cdt2Counters>{"removed_triangles", &Cdt2Counters::removed_triangles},
+         CounterField<Cdt2Counters>{"orient_calls", &Cdt2Counters::orient_calls},
+         CounterField<Cdt2Counters>{"incircle_calls", &Cdt2Counters::incircle_calls},
+         CounterField<Cdt2Counters>{"walk_steps", &Cdt2Counters::walk_steps}}};
+}
 
 struct Cdt2Result {
     /// The triangulation: input vertices keep their index, added vertices follow them; merged

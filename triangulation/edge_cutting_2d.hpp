@@ -18,9 +18,11 @@
 // them (the cut lemma holds there too). All angle decisions are exact (angles_2d.hpp).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 
+#include "base/counter_fields.hpp"
 #include "triangulation/triangulation_2d.hpp"
 
 namespace exactmesh::triangulation {
@@ -33,6 +35,20 @@ struct EdgeCuttingCounters {
     std::uint64_t removed_edges = 0;     ///< edges crossing an inserted bq, summed
     std::uint64_t dynamic_programs = 0;  ///< candidates retriangulated optimally (ties only)
 };
+
+/// The table of EdgeCuttingCounters (base/counter_fields.hpp): --stats prints it in this order.
+inline constexpr std::array<CounterField<EdgeCuttingCounters>, 6> counter_fields(
+    const EdgeCuttingCounters&) {
+    return {
+        {CounterField<EdgeCuttingCounters>{"worst_triangles",
+                                           &EdgeCuttingCounters::worst_triangles},
+         CounterField<EdgeCuttingCounters>{"insertions", &EdgeCuttingCounters::insertions},
+         CounterField<EdgeCuttingCounters>{"candidates", &EdgeCuttingCounters::candidates},
+         CounterField<EdgeCuttingCounters>{"visited", &EdgeCuttingCounters::visited},
+         CounterField<EdgeCuttingCounters>{"removed_edges", &EdgeCuttingCounters::removed_edges},
+         CounterField<EdgeCuttingCounters>{"dynamic_programs",
+                                           &EdgeCuttingCounters::dynamic_programs}}};
+}
 
 /// Improves `mesh` in place to a triangulation of the same vertices and domain minimizing the
 /// largest angle (among those keeping the constrained edges).

@@ -18,10 +18,12 @@
 // Termination of every criterion is proved beside swap_edges_2d in edge_swap_2d.cpp.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string_view>
 
+#include "base/counter_fields.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
 
@@ -66,6 +68,15 @@ struct EdgeSwapCounters {
     std::uint64_t constrained = 0;    ///< of those, skipped: constrained (or on the boundary)
     std::uint64_t swaps = 0;          ///< edges swapped
 };
+
+/// The table of EdgeSwapCounters (base/counter_fields.hpp): --stats prints it in this order.
+inline constexpr std::array<CounterField<EdgeSwapCounters>, 4> counter_fields(
+    const EdgeSwapCounters&) {
+    return {{CounterField<EdgeSwapCounters>{"edges_tested", &EdgeSwapCounters::edges_tested},
+             CounterField<EdgeSwapCounters>{"not_convex", &EdgeSwapCounters::not_convex},
+             CounterField<EdgeSwapCounters>{"constrained", &EdgeSwapCounters::constrained},
+             CounterField<EdgeSwapCounters>{"swaps", &EdgeSwapCounters::swaps}}};
+}
 
 /// Swaps edges of `mesh` until none is swappable and preferred by the criterion.
 /// @pre mesh.neighbors is consistent (see link_neighbors_2d), triangles strictly counter-
