@@ -26,6 +26,7 @@
 #include <string_view>
 #include <system_error>
 #include <utility>
+#include <span>
 #include <vector>
 
 #include "cli/commands.hpp"
@@ -70,14 +71,12 @@ struct FuzzArguments {
     std::string out = ".";
 };
 
-struct Algorithm {
-    const char* name;
-    tri::Delaunay2Function build;
-};
-const std::array<Algorithm, 3> kAlgorithms = {
-    Algorithm{"bowyer-watson", tri::delaunay_2d_algorithm("bowyer-watson")},
-    Algorithm{"green-sibson", tri::delaunay_2d_algorithm("green-sibson")},
-    Algorithm{"tanemura-merriam", tri::delaunay_2d_algorithm("tanemura-merriam")}};
+/// Every 2D Delaunay algorithm of the registry, compared with each other.
+const std::span<const tri::Delaunay2Algorithm> kAlgorithms = tri::delaunay_2d_algorithms();
+
+std::string algorithm_name(std::size_t algorithm) {
+    return std::string(kAlgorithms[algorithm].name);
+}
 
 struct Order {
     const char* name;
@@ -112,8 +111,9 @@ struct Case {
     std::uint64_t seed = 0;
     gen::Distribution distribution = gen::Distribution::Uniform;
     std::vector<double> xy;
-    std::size_t reference = 0;            ///< the algorithm the other two are compared with
-    std::array<std::size_t, 3> orders{};  ///< index into kOrders, per algorithm
+    std::size_t reference = 0;  ///< the algorithm the others are compared with
+    std::vector<std::size_t> orders = std::vector<std::size_t>(kAlgorithms.size());  ///< kOrders
+
 
     tri::Delaunay2Options options(std::size_t algorithm) const {
         return tri::Delaunay2Options{kOrders[orders[algorithm]].order, seed};
@@ -160,8 +160,8 @@ struct Failure {
         return kind == f.kind && algorithm == f.algorithm && other == f.other;
     }
     std::string describe() const {
-        std::string s = kind + ": " + kAlgorithms[algorithm].name;
-        if (other) s += std::string(" vs ") + kAlgorithms[*other].name;
+        std::string s = kind + ": " + algorithm_name(algorithm);
+        if (other) s += " vs " + algorithm_name(*other);
         return s + ": " + detail;
     }
 };
@@ -240,8 +240,10 @@ std::string check_neighbors(const tri::Delaunay2Result& r) {
 /// first failure the same as `target` (the minimizer's question), skipping what cannot match.
 std::optional<Failure> find_failure(const Case& c, std::span<const double> xy, bool inject_fault,
                                     const Failure* target = nullptr) {
-    std::array<std::optional<tri::Delaunay2Result>, 3> results;
-    std::array<std::size_t, 3> sequence{c.reference, (c.reference + 1) % 3, (c.reference + 2) % 3};
+    std::vector<std::optional<tri::Delaunay2Result>> results(kAlgorithms.size());
+    std::vector<std::size_t> sequence;  // the reference first, then the others in registry order
+    for (std::size_t k = 0; k < kAlgorithms.size(); ++k)
+        sequence.push_back((c.reference + k) % kAlgorithms.size());
     auto wanted = [target](const Failure& f) { return target == nullptr || f.same_as(*target); };
     // First every algorithm on its own: it runs, and its output is a Delaunay triangulation.
     for (const std::size_t a : sequence) {
@@ -279,7 +281,7 @@ std::optional<Failure> find_failure(const Case& c, std::span<const double> xy, b
     // the perturbation index of the point, and so may legitimately change cocircular ties.
     const bool duplicates = has_duplicate_points(xy);
     const std::size_t ref = c.reference;
-    for (const std::size_t a : {sequence[1], sequence[2]}) {
+    for (const std::size_t a : std::span(sequence).subspan(1)) {
         if (!results[ref] || !results[a]) continue;
         const tri::Delaunay2Result& r = *results[a];
         const tri::Delaunay2Result& expected = *results[ref];
@@ -390,7 +392,7 @@ std::string shell_word(const std::string& text) {
 std::string triangulate_command(const std::string& node, const std::string& ele, const Case& c,
                                 std::size_t algorithm) {
     return "exactmesh triangulate " + shell_word(node) + " -o " + shell_word(ele) +
-           " --algorithm " + kAlgorithms[algorithm].name + " --order " +
+           " --algorithm " + algorithm_name(algorithm) + " --order " +
            kOrders[c.orders[algorithm]].name + " --seed " + std::to_string(c.seed);
 }
 
@@ -415,8 +417,8 @@ void report_failure(const Case& c, const Failure& failure, const fs::path& out_d
     const std::string node = file.string();
     if (failure.other) {
         const std::size_t a = failure.algorithm, b = *failure.other;
-        const std::string ele_a = std::string("out-") + kAlgorithms[a].name + ".ele";
-        const std::string ele_b = std::string("out-") + kAlgorithms[b].name + ".ele";
+        const std::string ele_a = "out-" + algorithm_name(a) + ".ele";
+        const std::string ele_b = "out-" + algorithm_name(b) + ".ele";
         std::cout << "    " << triangulate_command(node, ele_a, c, a) << '\n'
                   << "    " << triangulate_command(node, ele_b, c, b) << '\n'
                   << "    exactmesh check " << shell_word(node) << ' ' << shell_word(ele_a) << '\n'

@@ -37,6 +37,23 @@ void add_order_options(CLI::App& command, OrderArguments& order, const std::stri
     add_seed_option(command, order.seed);
 }
 
+namespace detail {
+
+void add_algorithm_option(CLI::App& command, std::string& algorithm,
+                          const std::vector<std::pair<std::string, std::string>>& entries) {
+    std::vector<std::string> names;
+    std::string help = "Construction algorithm:";
+    for (const auto& [name, description] : entries) {
+        names.push_back(name);
+        help += "\n  " + name + ": " + description;
+    }
+    command.add_option("--algorithm", algorithm, help)
+        ->check(CLI::IsMember(names))
+        ->capture_default_str();
+}
+
+}  // namespace detail
+
 void add_stats_flag(CLI::App& command, bool& stats, const std::string& what,
                     const std::string& timed) {
     command.add_flag("--stats", stats, "Print " + what + " and construct_seconds (" + timed + ")");

@@ -4,6 +4,8 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -43,8 +45,26 @@ void add_output_option(CLI::App& command, std::string& output, const std::string
 /// `--order {given, random, brio}` and `--seed`.
 void add_order_options(CLI::App& command, OrderArguments& order, const std::string& help);
 
+/// `--algorithm NAME` among a registry's entries (each with .name and .description): the
+/// names checked, the help listing each with its description.
+template <class Registry>
+void add_algorithm_option(CLI::App& command, std::string& algorithm, const Registry& registry);
+
 /// `--stats`: "Print <what> and construct_seconds (<timed>)".
 void add_stats_flag(CLI::App& command, bool& stats, const std::string& what,
                     const std::string& timed);
+
+namespace detail {
+void add_algorithm_option(CLI::App& command, std::string& algorithm,
+                          const std::vector<std::pair<std::string, std::string>>& entries);
+}  // namespace detail
+
+template <class Registry>
+void add_algorithm_option(CLI::App& command, std::string& algorithm, const Registry& registry) {
+    std::vector<std::pair<std::string, std::string>> entries;
+    for (const auto& entry : registry)
+        entries.emplace_back(std::string(entry.name), std::string(entry.description));
+    detail::add_algorithm_option(command, algorithm, entries);
+}
 
 }  // namespace exactmesh::cli

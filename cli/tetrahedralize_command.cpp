@@ -100,9 +100,7 @@ void add_tetrahedralize_command(CLI::App& app) {
     add_output_option(*command, arguments->output,
                       "Output; the extension picks the format: .ele (TetGen; .face and .neigh "
                       "beside it), .msh (Gmsh 4.1), .vtu (VTK)");
-    command->add_option("--algorithm", arguments->algorithm, "Construction algorithm")
-        ->check(CLI::IsMember({"bowyer-watson", "green-sibson"}))
-        ->capture_default_str();
+    add_algorithm_option(*command, arguments->algorithm, tri::delaunay_3d_algorithms());
     add_order_options(*command, *arguments, "Insertion order");
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
                    "the construction alone, without file I/O");

@@ -102,9 +102,7 @@ void add_triangulate_command(CLI::App& app) {
     add_output_option(*command, arguments->output,
                       "Output; the extension picks the format: .ele (and .neigh beside it), "
                       ".msh (Gmsh 4.1), .vtu (VTK), .svg (picture)");
-    command->add_option("--algorithm", arguments->algorithm, "Construction algorithm")
-        ->check(CLI::IsMember({"bowyer-watson", "green-sibson", "tanemura-merriam"}))
-        ->capture_default_str();
+    add_algorithm_option(*command, arguments->algorithm, tri::delaunay_2d_algorithms());
     add_order_options(*command, *arguments, "Insertion order");
     command
         ->add_option("--location", arguments->location,

@@ -11,12 +11,33 @@
 
 namespace exactmesh::triangulation {
 
+namespace {
+
+/// The registry: one line per algorithm.
+constexpr Delaunay2Algorithm kAlgorithms[] = {
+    {"bowyer-watson", &bowyer_watson_2d,
+     "Bowyer-Watson: the cavity of triangles whose circumcircle holds the point, starred from it"},
+    {"green-sibson", &green_sibson_2d,
+     "Green-Sibson: the point splits its triangle (or edge), then Lawson flips"},
+    {"tanemura-merriam", &tanemura_merriam_2d,
+     "Tanemura-Merriam: a front over the points, each edge closed by the point of smallest "
+     "circumcircle"},
+};
+
+}  // namespace
+
+std::span<const Delaunay2Algorithm> delaunay_2d_algorithms() {
+    return kAlgorithms;
+}
+
 Delaunay2Function delaunay_2d_algorithm(std::string_view name) {
-    if (name == "bowyer-watson") return &bowyer_watson_2d;
-    if (name == "green-sibson") return &green_sibson_2d;
-    if (name == "tanemura-merriam") return &tanemura_merriam_2d;
-    throw InputError("unknown 2D Delaunay algorithm '" + std::string(name) +
-                     "' (known: bowyer-watson, green-sibson, tanemura-merriam)");
+    std::string known;
+    for (const Delaunay2Algorithm& algorithm : kAlgorithms) {
+        if (algorithm.name == name) return algorithm.build;
+        known += (known.empty() ? "" : ", ") + std::string(algorithm.name);
+    }
+    throw InputError("unknown 2D Delaunay algorithm '" + std::string(name) + "' (known: " + known +
+                     ")");
 }
 
 }  // namespace exactmesh::triangulation

@@ -69,8 +69,21 @@ struct Delaunay2Result {
 /// there are more than kMaxPoints points or an odd number of coordinates.
 void validate_points_2d(std::span<const double> xy);
 
-/// Names accepted by the CLI, benches and tests: "bowyer-watson", "green-sibson", "tanemura-merriam".
 using Delaunay2Function = Delaunay2Result (*)(std::span<const double>, const Delaunay2Options&);
+
+/// One 2D Delaunay algorithm of the registry: the name the CLI, benches and tests use, the
+/// function, and one line for help texts.
+struct Delaunay2Algorithm {
+    std::string_view name;
+    Delaunay2Function build;
+    std::string_view description;
+};
+
+/// Every 2D Delaunay algorithm (delaunay_2d.cpp; adding one is its file plus one line there):
+/// "bowyer-watson", "green-sibson", "tanemura-merriam".
+std::span<const Delaunay2Algorithm> delaunay_2d_algorithms();
+
+/// The algorithm of that name. @throws InputError naming the known ones.
 Delaunay2Function delaunay_2d_algorithm(std::string_view name);
 
 }  // namespace exactmesh::triangulation

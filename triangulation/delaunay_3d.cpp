@@ -4,16 +4,37 @@
 
 #include <string>
 
+#include "predicates/errors.hpp"
 #include "triangulation/bowyer_watson_3d.hpp"
 #include "triangulation/green_sibson_3d.hpp"
 
 namespace exactmesh::triangulation {
 
+namespace {
+
+/// The registry: one line per algorithm.
+constexpr Delaunay3Algorithm kAlgorithms[] = {
+    {"bowyer-watson", &bowyer_watson_3d,
+     "Bowyer-Watson: the cavity of tetrahedra whose circumsphere holds the point, starred from it"},
+    {"green-sibson", &green_sibson_3d,
+     "Green-Sibson (Joe): the point splits its tetrahedron, face or edge, then 2-3, 3-2 and 4-4 "
+     "flips"},
+};
+
+}  // namespace
+
+std::span<const Delaunay3Algorithm> delaunay_3d_algorithms() {
+    return kAlgorithms;
+}
+
 Delaunay3Function delaunay_3d_algorithm(std::string_view name) {
-    if (name == "bowyer-watson") return &bowyer_watson_3d;
-    if (name == "green-sibson") return &green_sibson_3d;
-    throw InputError("unknown 3D Delaunay algorithm '" + std::string(name) +
-                     "' (known: bowyer-watson, green-sibson)");
+    std::string known;
+    for (const Delaunay3Algorithm& algorithm : kAlgorithms) {
+        if (algorithm.name == name) return algorithm.build;
+        known += (known.empty() ? "" : ", ") + std::string(algorithm.name);
+    }
+    throw InputError("unknown 3D Delaunay algorithm '" + std::string(name) + "' (known: " + known +
+                     ")");
 }
 
 }  // namespace exactmesh::triangulation

@@ -84,8 +84,20 @@ class CoplanarPoints : public InputError {
 /// there are more than kMaxPoints3 points or a number of coordinates that is not a multiple of 3.
 void validate_points_3d(std::span<const double> xyz);
 
-/// Names accepted by the CLI, benches and tests: "bowyer-watson", "green-sibson".
 using Delaunay3Function = Delaunay3Result (*)(std::span<const double>, const Delaunay3Options&);
+
+/// One 3D Delaunay algorithm of the registry (as Delaunay2Algorithm).
+struct Delaunay3Algorithm {
+    std::string_view name;
+    Delaunay3Function build;
+    std::string_view description;
+};
+
+/// Every 3D Delaunay algorithm (delaunay_3d.cpp; adding one is its file plus one line there):
+/// "bowyer-watson", "green-sibson".
+std::span<const Delaunay3Algorithm> delaunay_3d_algorithms();
+
+/// The algorithm of that name. @throws InputError naming the known ones.
 Delaunay3Function delaunay_3d_algorithm(std::string_view name);
 
 }  // namespace exactmesh::triangulation

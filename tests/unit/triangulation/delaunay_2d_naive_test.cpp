@@ -41,11 +41,11 @@ TEST(Delaunay2Naive, AgreesWithEveryAlgorithmOnRandomAndCocircularSets) {
     for (const auto& xy : sets) {
         const tri::NaiveDelaunay2 oracle = tri::delaunay_2d_naive(xy);
         EXPECT_GT(oracle.triangle_count, 0U);
-        for (const char* name : {"bowyer-watson", "green-sibson", "tanemura-merriam"}) {
-            const tri::Delaunay2Result r = tri::delaunay_2d_algorithm(name)(xy, {});
+        for (const tri::Delaunay2Algorithm& algorithm : tri::delaunay_2d_algorithms()) {
+            const tri::Delaunay2Result r = algorithm.build(xy, {});
             EXPECT_EQ(tri::compare_with_delaunay_2d_naive(xy, r.triangles, oracle, r.merged_into),
                       "")
-                << name << ", " << xy.size() / 2 << " points";
+                << algorithm.name << ", " << xy.size() / 2 << " points";
         }
     }
     const tri::NaiveDelaunay2 o = tri::delaunay_2d_naive(ring);

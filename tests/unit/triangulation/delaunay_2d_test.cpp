@@ -10,6 +10,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <span>
 #include <vector>
 
 #include "predicates/errors.hpp"
@@ -36,13 +37,8 @@ Triangles canonical(const tri::Delaunay2Result& r) {
     return s;
 }
 
-struct Named {
-    const char* name;
-    tri::Delaunay2Function build;
-};
-const Named kAlgorithms[] = {{"bowyer-watson", &tri::bowyer_watson_2d},
-                             {"green-sibson", &tri::green_sibson_2d},
-                             {"tanemura-merriam", &tri::tanemura_merriam_2d}};
+/// Every algorithm of the registry.
+const std::span<const tri::Delaunay2Algorithm> kAlgorithms = tri::delaunay_2d_algorithms();
 const tri::InsertionOrder kOrders[] = {tri::InsertionOrder::Given, tri::InsertionOrder::Random,
                                        tri::InsertionOrder::Brio};
 
@@ -60,7 +56,7 @@ void expect_all_agree(const std::vector<double>& xy, const std::string& label) {
     const bool duplicates = has_duplicates(xy);
     const tri::Delaunay2Result reference = tri::bowyer_watson_2d(xy, {tri::InsertionOrder::Given, 1});
     const Triangles expected = canonical(reference);
-    for (const Named& algorithm : kAlgorithms) {
+    for (const tri::Delaunay2Algorithm& algorithm : kAlgorithms) {
         for (const tri::InsertionOrder order : kOrders) {
             const tri::Delaunay2Result r = algorithm.build(xy, {order, 7});
             const tri::CheckReport report = tri::check_delaunay_2d(xy, r.triangles);
@@ -159,7 +155,7 @@ TEST(Triangulation_Delaunay2, NearCollinearByUlpsIsExact) {
 
 TEST(Triangulation_Delaunay2, CollinearPointsGiveNoTriangleAndMergeDuplicates) {
     const std::vector<double> xy = {0, 0, 2, 2, 1, 1, 2, 2, 3, 3, 0, 0};
-    for (const Named& algorithm : kAlgorithms) {
+    for (const tri::Delaunay2Algorithm& algorithm : kAlgorithms) {
         const tri::Delaunay2Result r = algorithm.build(xy, {});
         EXPECT_TRUE(r.triangles.empty()) << algorithm.name;
         const std::vector<tri::VertIdx> merged = {0, 1, 2, 1, 4, 0};
@@ -170,7 +166,7 @@ TEST(Triangulation_Delaunay2, CollinearPointsGiveNoTriangleAndMergeDuplicates) {
 
 TEST(Triangulation_Delaunay2, DuplicatesMapToFirstOccurrence) {
     const std::vector<double> xy = {0, 0, 1, 0, 0, 1, 1, 0, 1, 1, 0, 0, 1, 1};
-    for (const Named& algorithm : kAlgorithms) {
+    for (const tri::Delaunay2Algorithm& algorithm : kAlgorithms) {
         for (const tri::InsertionOrder order : kOrders) {
             const tri::Delaunay2Result r = algorithm.build(xy, {order, 3});
             const std::vector<tri::VertIdx> merged = {0, 1, 2, 1, 4, 0, 4};
@@ -182,7 +178,7 @@ TEST(Triangulation_Delaunay2, DuplicatesMapToFirstOccurrence) {
 }
 
 TEST(Triangulation_Delaunay2, TinyAndEmptyInputs) {
-    for (const Named& algorithm : kAlgorithms) {
+    for (const tri::Delaunay2Algorithm& algorithm : kAlgorithms) {
         EXPECT_TRUE(algorithm.build(std::vector<double>{}, {}).triangles.empty());
         EXPECT_TRUE(algorithm.build(std::vector<double>{1, 2}, {}).triangles.empty());
         EXPECT_TRUE(algorithm.build(std::vector<double>{1, 2, 3, 4}, {}).triangles.empty());
@@ -204,7 +200,7 @@ TEST(Triangulation_Delaunay2, RejectsNonFiniteCoordinates) {
     const double bad[] = {std::numeric_limits<double>::quiet_NaN(),
                           std::numeric_limits<double>::infinity(),
                           -std::numeric_limits<double>::infinity()};
-    for (const Named& algorithm : kAlgorithms) {
+    for (const tri::Delaunay2Algorithm& algorithm : kAlgorithms) {
         for (const double value : bad) {
             const std::vector<double> xy = {0, 0, 1, 0, 0, 1, value, 0.5};
             try {
@@ -259,7 +255,7 @@ TEST(Triangulation_Check2, NoTrianglesPassOnlyForCollinearPoints) {
         {1, 1, 1, 1}, {7, 7}, {}};
     for (const std::vector<double>& xy : degenerate) {
         EXPECT_TRUE(tri::check_delaunay_2d(xy, none).ok) << xy.size();
-        for (const Named& algorithm : kAlgorithms) {
+        for (const tri::Delaunay2Algorithm& algorithm : kAlgorithms) {
             const tri::Delaunay2Result r = algorithm.build(xy, {});
             EXPECT_TRUE(r.triangles.empty()) << algorithm.name;
             EXPECT_TRUE(tri::check_delaunay_2d(xy, r.triangles).ok) << algorithm.name;

@@ -13,6 +13,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <span>
 #include <vector>
 
 #include "predicates/errors.hpp"
@@ -45,12 +46,8 @@ Tets canonical(const std::vector<tri::VertIdx>& tets) {
     return s;
 }
 
-struct Named {
-    const char* name;
-    tri::Delaunay3Function build;
-};
-const Named kAlgorithms[] = {{"bowyer-watson", &tri::bowyer_watson_3d},
-                             {"green-sibson", &tri::green_sibson_3d}};
+/// Every algorithm of the registry.
+const std::span<const tri::Delaunay3Algorithm> kAlgorithms = tri::delaunay_3d_algorithms();
 const tri::InsertionOrder kOrders[] = {tri::InsertionOrder::Given, tri::InsertionOrder::Random,
                                        tri::InsertionOrder::Brio};
 const char* const kOrderNames[] = {"given", "random", "brio"};
@@ -71,10 +68,10 @@ tri::Delaunay3Result expect_all_agree(const std::vector<double>& xyz, const std:
     const bool duplicates = has_duplicates(xyz);
     tri::Delaunay3Result reference = tri::bowyer_watson_3d(xyz, {tri::InsertionOrder::Given, 1});
     const Tets expected = canonical(reference.mesh.tets);
-    for (const Named& algorithm : kAlgorithms) {
+    for (const tri::Delaunay3Algorithm& algorithm : kAlgorithms) {
         for (std::size_t o = 0; o < 3; ++o) {
             const tri::Delaunay3Result r = algorithm.build(xyz, {kOrders[o], 7});
-            const std::string what = label + " " + algorithm.name + " " + kOrderNames[o];
+            const std::string what = label + " " + std::string(algorithm.name) + " " + kOrderNames[o];
             const tri::Check3Report report = tri::check_delaunay_3d(r.mesh);
             EXPECT_TRUE(report.ok) << what << ": " << report.problem;
             if (!report.ok) return reference;
@@ -181,7 +178,7 @@ TEST(Triangulation_Delaunay3, FewerThanFourNonCoplanarPointsGiveNoTetrahedron) {
         {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0},               // three points and a duplicate
     };
     for (std::size_t c = 0; c < cases.size(); ++c) {
-        for (const Named& algorithm : kAlgorithms) {
+        for (const tri::Delaunay3Algorithm& algorithm : kAlgorithms) {
             const tri::Delaunay3Result r = algorithm.build(cases[c], {});
             EXPECT_TRUE(r.coplanar) << "case " << c << " " << algorithm.name;
             EXPECT_TRUE(r.mesh.tets.empty()) << "case " << c;
@@ -333,7 +330,7 @@ TEST(Triangulation_Delaunay3, NonFiniteInputIsRejected) {
                                                     {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, -inf}};
     const tri::VertIdx bad[] = {2, 3};
     for (std::size_t c = 0; c < cases.size(); ++c) {
-        for (const Named& algorithm : kAlgorithms) {
+        for (const tri::Delaunay3Algorithm& algorithm : kAlgorithms) {
             try {
                 algorithm.build(cases[c], {});
                 ADD_FAILURE() << algorithm.name << " accepted a non-finite coordinate";
