@@ -30,7 +30,7 @@
 namespace exactmesh::triangulation {
 
 namespace detail {
-class CdtBuilder;
+struct CdtState;
 }
 
 /// The outcome of ConstrainedTriangulation2::insert_in_cavity.
@@ -140,7 +140,7 @@ public:
 private:
     struct Owned;
     std::unique_ptr<Owned> owned_;
-    detail::CdtBuilder* builder_ = nullptr;
+    detail::CdtState* state_ = nullptr;
 };
 
 }  // namespace exactmesh::triangulation

@@ -194,9 +194,10 @@ TEST(Issue11, issue_11_crossings) {
 TEST(Issue11, issue_11_crossings_near_one_point) {
     // A pencil: segments through points within a few ulps of one centre, so that their rounded
     // crossings coincide or lie beyond each other's pieces, and pieces bent by one rounding cross
-    // where their input segments do not (the second rule of CdtBuilder::crossing_point). Every
-    // recovery must end with a valid constrained triangulation (the exact check follows each
-    // segment's chain), swap and cavity with the same triangles and vertices.
+    // where their input segments do not (the second rule of crossing_point, in
+    // cdt_segment_recovery_2d.cpp). Every recovery must end with a valid constrained
+    // triangulation (the exact check follows each segment's chain), swap and cavity with the same
+    // triangles and vertices.
     std::uint64_t bent = 0;
     for (const std::uint32_t seed : {1u, 2u, 3u, 4u}) {
         for (const double scale : {1.0, std::ldexp(1.0, 600), std::ldexp(1.0, -600)}) {
