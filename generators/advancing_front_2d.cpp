@@ -868,19 +868,7 @@ AdvancingFrontResult2 advancing_front_2d(const tri::Pslg& pslg,
 }
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const AdvancingFrontCounters2& c) {
-    return {{"triangles", c.triangles},
-            {"new_points", c.new_points},
-            {"reused_points", c.reused_points},
-            {"rejected_candidates", c.rejected_candidates},
-            {"crossing_tests", c.crossing_tests},
-            {"containment_tests", c.containment_tests},
-            {"postponed_edges", c.postponed_edges},
-            {"wide_searches", c.wide_searches},
-            {"front_queries", c.front_queries},
-            {"max_front_edges", c.max_front_edges},
-            {"closure_runs", c.closure_runs},
-            {"closure_triangles", c.closure_triangles},
-            {"orient_calls", c.orient_calls}};
+    return counters_by_name(kAdvancingFrontCounterNames, c);
 }
 
 }  // namespace exactmesh::generators

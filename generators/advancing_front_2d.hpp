@@ -28,11 +28,13 @@
 // (angles_2d); the closure: constrained_delaunay_2d (orient2d, incircle).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "generators/counter_table.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -81,6 +83,24 @@ struct AdvancingFrontCounters2 {
     std::uint64_t closure_triangles = 0;    ///< triangles made by that closure
     std::uint64_t orient_calls = 0;
 };
+
+/// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
+/// per field: counter_table_complete).
+inline constexpr std::array kAdvancingFrontCounterNames{
+    counter<&AdvancingFrontCounters2::triangles>("triangles"),
+    counter<&AdvancingFrontCounters2::new_points>("new_points"),
+    counter<&AdvancingFrontCounters2::reused_points>("reused_points"),
+    counter<&AdvancingFrontCounters2::rejected_candidates>("rejected_candidates"),
+    counter<&AdvancingFrontCounters2::crossing_tests>("crossing_tests"),
+    counter<&AdvancingFrontCounters2::containment_tests>("containment_tests"),
+    counter<&AdvancingFrontCounters2::postponed_edges>("postponed_edges"),
+    counter<&AdvancingFrontCounters2::wide_searches>("wide_searches"),
+    counter<&AdvancingFrontCounters2::front_queries>("front_queries"),
+    counter<&AdvancingFrontCounters2::max_front_edges>("max_front_edges"),
+    counter<&AdvancingFrontCounters2::closure_runs>("closure_runs"),
+    counter<&AdvancingFrontCounters2::closure_triangles>("closure_triangles"),
+    counter<&AdvancingFrontCounters2::orient_calls>("orient_calls")};
+static_assert(counter_table_complete(kAdvancingFrontCounterNames));
 
 struct AdvancingFrontResult2 {
     /// The mesh in the caller's numbering (domain_mesh_result): input vertices first, then the

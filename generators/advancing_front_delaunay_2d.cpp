@@ -754,21 +754,7 @@ AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(
     const AdvancingFrontDelaunayCounters2& c) {
-    return {{"triangles", c.triangles},
-            {"new_points", c.new_points},
-            {"existing_points", c.existing_points},
-            {"rejected_candidates", c.rejected_candidates},
-            {"rejected_placements", c.rejected_placements},
-            {"thin_skipped", c.thin_skipped},
-            {"postponed_edges", c.postponed_edges},
-            {"rounds", c.rounds},
-            {"widened_searches", c.widened_searches},
-            {"closure_triangles", c.closure_triangles},
-            {"closure_front_edges", c.closure_front_edges},
-            {"incircle_calls", c.incircle_calls},
-            {"orient_calls", c.orient_calls},
-            {"point_queries", c.point_queries},
-            {"edge_queries", c.edge_queries}};
+    return counters_by_name(kAdvancingFrontDelaunayCounterNames, c);
 }
 
 }  // namespace exactmesh::generators

@@ -27,11 +27,13 @@
 // points and edges within O(1) of the local size). Predicates: orient2d, incircle_sos.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "generators/counter_table.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -67,6 +69,26 @@ struct AdvancingFrontDelaunayCounters2 {
     std::uint64_t point_queries = 0;  ///< spatial-index queries (points and edges)
     std::uint64_t edge_queries = 0;
 };
+
+/// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
+/// per field: counter_table_complete).
+inline constexpr std::array kAdvancingFrontDelaunayCounterNames{
+    counter<&AdvancingFrontDelaunayCounters2::triangles>("triangles"),
+    counter<&AdvancingFrontDelaunayCounters2::new_points>("new_points"),
+    counter<&AdvancingFrontDelaunayCounters2::existing_points>("existing_points"),
+    counter<&AdvancingFrontDelaunayCounters2::rejected_candidates>("rejected_candidates"),
+    counter<&AdvancingFrontDelaunayCounters2::rejected_placements>("rejected_placements"),
+    counter<&AdvancingFrontDelaunayCounters2::thin_skipped>("thin_skipped"),
+    counter<&AdvancingFrontDelaunayCounters2::postponed_edges>("postponed_edges"),
+    counter<&AdvancingFrontDelaunayCounters2::rounds>("rounds"),
+    counter<&AdvancingFrontDelaunayCounters2::widened_searches>("widened_searches"),
+    counter<&AdvancingFrontDelaunayCounters2::closure_triangles>("closure_triangles"),
+    counter<&AdvancingFrontDelaunayCounters2::closure_front_edges>("closure_front_edges"),
+    counter<&AdvancingFrontDelaunayCounters2::incircle_calls>("incircle_calls"),
+    counter<&AdvancingFrontDelaunayCounters2::orient_calls>("orient_calls"),
+    counter<&AdvancingFrontDelaunayCounters2::point_queries>("point_queries"),
+    counter<&AdvancingFrontDelaunayCounters2::edge_queries>("edge_queries")};
+static_assert(counter_table_complete(kAdvancingFrontDelaunayCounterNames));
 
 struct AdvancingFrontDelaunayResult2 {
     /// Input vertices first (as constrained_delaunay_2d numbers them), the boundary points the

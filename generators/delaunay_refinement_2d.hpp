@@ -39,8 +39,10 @@
 // orient2d, incircle (SoS), corner_dot_sign (encroachment); construction: circumcenter.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
+#include "generators/counter_table.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -97,6 +99,31 @@ struct RefinementCounters2 {
     std::uint64_t incircle_calls = 0;
     std::uint64_t steiner_points() const { return circumcenters + segment_splits; }
 };
+
+/// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
+/// per field: counter_table_complete).
+inline constexpr std::array kRefinementCounterNames{
+    CounterName<RefinementCounters2>{
+        "steiner_points",
+        [](const RefinementCounters2& c) -> std::uint64_t { return c.steiner_points(); }},
+    counter<&RefinementCounters2::circumcenters>("circumcenters"),
+    counter<&RefinementCounters2::segment_splits>("segment_splits"),
+    counter<&RefinementCounters2::shell_splits>("shell_splits"),
+    counter<&RefinementCounters2::segment_bends>("segment_bends"),
+    counter<&RefinementCounters2::rejected_circumcenters>("rejected_circumcenters"),
+    counter<&RefinementCounters2::bad_triangles>("bad_triangles_queued"),
+    counter<&RefinementCounters2::small_angle_skips>("small_angle_skips"),
+    counter<&RefinementCounters2::unsplittable>("unsplittable"),
+    counter<&RefinementCounters2::cavity_triangles>("cavity_triangles"),
+    counter<&RefinementCounters2::largest_cavity>("largest_cavity"),
+    counter<&RefinementCounters2::flips>("delaunay_flips"),
+    counter<&RefinementCounters2::circumcenter_exact>("circumcenter_exact_path"),
+    counter<&RefinementCounters2::orient_calls>("orient_calls"),
+    counter<&RefinementCounters2::incircle_calls>("incircle_calls"),
+    counter<&RefinementCounters2::encroachment_tests>("encroachment_tests"),
+    counter<&RefinementCounters2::polish_points>("polish_points"),
+    counter<&RefinementCounters2::polish_stopped>("polish_stopped")};
+static_assert(counter_table_complete(kRefinementCounterNames, 1));
 
 struct RefinementResult2 {
     /// The mesh in the caller's numbering: input vertices first (as constrained_delaunay_2d

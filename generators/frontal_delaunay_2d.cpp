@@ -482,21 +482,7 @@ FrontalDelaunayResult2 frontal_delaunay_2d(const tri::Pslg& pslg,
 }
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const FrontalDelaunayCounters2& c) {
-    return {{"boundary_points", c.boundary_points},
-            {"points_inserted", c.points_inserted},
-            {"accepted_triangles", c.accepted_triangles},
-            {"forced_triangles", c.forced_triangles},
-            {"forced_accepts", c.forced_accepts},
-            {"rejected_encroach", c.rejected_encroach},
-            {"rejected_outside", c.rejected_outside},
-            {"rejected_too_close", c.rejected_too_close},
-            {"rejected_no_conflict", c.rejected_no_conflict},
-            {"active_pops", c.active_pops},
-            {"stale_pops", c.stale_pops},
-            {"cavity_triangles", c.cavity_triangles},
-            {"closeness_incircle", c.closeness_incircle},
-            {"orient_calls", c.orient_calls},
-            {"incircle_calls", c.incircle_calls}};
+    return counters_by_name(kFrontalDelaunayCounterNames, c);
 }
 
 }  // namespace exactmesh::generators

@@ -27,11 +27,13 @@
 // too-close scan), corner_dot_sign (encroachment).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "generators/counter_table.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -75,6 +77,26 @@ struct FrontalDelaunayCounters2 {
     std::uint64_t orient_calls = 0;          ///< the CDT's (initial triangulation and edits)
     std::uint64_t incircle_calls = 0;
 };
+
+/// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
+/// per field: counter_table_complete).
+inline constexpr std::array kFrontalDelaunayCounterNames{
+    counter<&FrontalDelaunayCounters2::boundary_points>("boundary_points"),
+    counter<&FrontalDelaunayCounters2::points_inserted>("points_inserted"),
+    counter<&FrontalDelaunayCounters2::accepted_triangles>("accepted_triangles"),
+    counter<&FrontalDelaunayCounters2::forced_triangles>("forced_triangles"),
+    counter<&FrontalDelaunayCounters2::forced_accepts>("forced_accepts"),
+    counter<&FrontalDelaunayCounters2::rejected_encroach>("rejected_encroach"),
+    counter<&FrontalDelaunayCounters2::rejected_outside>("rejected_outside"),
+    counter<&FrontalDelaunayCounters2::rejected_too_close>("rejected_too_close"),
+    counter<&FrontalDelaunayCounters2::rejected_no_conflict>("rejected_no_conflict"),
+    counter<&FrontalDelaunayCounters2::active_pops>("active_pops"),
+    counter<&FrontalDelaunayCounters2::stale_pops>("stale_pops"),
+    counter<&FrontalDelaunayCounters2::cavity_triangles>("cavity_triangles"),
+    counter<&FrontalDelaunayCounters2::closeness_incircle>("closeness_incircle"),
+    counter<&FrontalDelaunayCounters2::orient_calls>("orient_calls"),
+    counter<&FrontalDelaunayCounters2::incircle_calls>("incircle_calls")};
+static_assert(counter_table_complete(kFrontalDelaunayCounterNames));
 
 struct FrontalDelaunayResult2 {
     /// The mesh in the caller's numbering: input vertices first (as constrained_delaunay_2d

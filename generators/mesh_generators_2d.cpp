@@ -22,24 +22,7 @@ namespace exactmesh::generators {
 namespace tri = exactmesh::triangulation;
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const RefinementCounters2& c) {
-    return {{"steiner_points", c.steiner_points()},
-            {"circumcenters", c.circumcenters},
-            {"segment_splits", c.segment_splits},
-            {"shell_splits", c.shell_splits},
-            {"segment_bends", c.segment_bends},
-            {"rejected_circumcenters", c.rejected_circumcenters},
-            {"bad_triangles_queued", c.bad_triangles},
-            {"small_angle_skips", c.small_angle_skips},
-            {"unsplittable", c.unsplittable},
-            {"cavity_triangles", c.cavity_triangles},
-            {"largest_cavity", c.largest_cavity},
-            {"delaunay_flips", c.flips},
-            {"circumcenter_exact_path", c.circumcenter_exact},
-            {"orient_calls", c.orient_calls},
-            {"incircle_calls", c.incircle_calls},
-            {"encroachment_tests", c.encroachment_tests},
-            {"polish_points", c.polish_points},
-            {"polish_stopped", c.polish_stopped}};
+    return counters_by_name(kRefinementCounterNames, c);
 }
 
 namespace {

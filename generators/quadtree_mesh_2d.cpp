@@ -1113,29 +1113,7 @@ QuadtreeResult2 quadtree_mesh_2d(const tri::Pslg& pslg, const QuadtreeOptions2& 
 }
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const QuadtreeCounters2& c) {
-    return {{"leaves", c.leaves},
-            {"size_splits", c.size_splits},
-            {"boundary_splits", c.boundary_splits},
-            {"feature_splits", c.feature_splits},
-            {"balance_splits", c.balance_splits},
-            {"depth", c.depth},
-            {"depth_limit", c.depth_limit},
-            {"piece_splits", c.piece_splits},
-            {"box_tests", c.box_tests},
-            {"domain_queries", c.domain_queries},
-            {"kept_leaves", c.kept_leaves},
-            {"fan_leaves", c.fan_leaves},
-            {"template_triangles", c.template_triangles},
-            {"kept_components", c.kept_components},
-            {"outline_edges", c.outline_edges},
-            {"band_corners", c.band_corners},
-            {"dropped_corners", c.dropped_corners},
-            {"band_vertices", c.band_vertices},
-            {"band_triangles", c.band_triangles},
-            {"band_flips", c.band_flips},
-            {"band_circumcenters", c.band_circumcenters},
-            {"band_rejected", c.band_rejected},
-            {"band_piece_splits", c.band_piece_splits}};
+    return counters_by_name(kQuadtreeCounterNames, c);
 }
 
 }  // namespace exactmesh::generators

@@ -28,11 +28,13 @@
 // in the band's CDT); constructions: circumcenter.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "generators/counter_table.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -100,6 +102,34 @@ struct QuadtreeCounters2 {
     std::uint64_t band_rejected = 0;       ///< circumcenters not inserted (they encroached)
     std::uint64_t band_piece_splits = 0;   ///< boundary pieces halved for encroaching circumcenters
 };
+
+/// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
+/// per field: counter_table_complete).
+inline constexpr std::array kQuadtreeCounterNames{
+    counter<&QuadtreeCounters2::leaves>("leaves"),
+    counter<&QuadtreeCounters2::size_splits>("size_splits"),
+    counter<&QuadtreeCounters2::boundary_splits>("boundary_splits"),
+    counter<&QuadtreeCounters2::feature_splits>("feature_splits"),
+    counter<&QuadtreeCounters2::balance_splits>("balance_splits"),
+    counter<&QuadtreeCounters2::depth>("depth"),
+    counter<&QuadtreeCounters2::depth_limit>("depth_limit"),
+    counter<&QuadtreeCounters2::piece_splits>("piece_splits"),
+    counter<&QuadtreeCounters2::box_tests>("box_tests"),
+    counter<&QuadtreeCounters2::domain_queries>("domain_queries"),
+    counter<&QuadtreeCounters2::kept_leaves>("kept_leaves"),
+    counter<&QuadtreeCounters2::fan_leaves>("fan_leaves"),
+    counter<&QuadtreeCounters2::template_triangles>("template_triangles"),
+    counter<&QuadtreeCounters2::kept_components>("kept_components"),
+    counter<&QuadtreeCounters2::outline_edges>("outline_edges"),
+    counter<&QuadtreeCounters2::band_corners>("band_corners"),
+    counter<&QuadtreeCounters2::dropped_corners>("dropped_corners"),
+    counter<&QuadtreeCounters2::band_vertices>("band_vertices"),
+    counter<&QuadtreeCounters2::band_triangles>("band_triangles"),
+    counter<&QuadtreeCounters2::band_flips>("band_flips"),
+    counter<&QuadtreeCounters2::band_circumcenters>("band_circumcenters"),
+    counter<&QuadtreeCounters2::band_rejected>("band_rejected"),
+    counter<&QuadtreeCounters2::band_piece_splits>("band_piece_splits")};
+static_assert(counter_table_complete(kQuadtreeCounterNames));
 
 struct QuadtreeResult2 {
     /// The mesh in the caller's numbering: input vertices first, then the boundary's points,
