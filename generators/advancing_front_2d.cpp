@@ -858,8 +858,13 @@ void validate(const AdvancingFrontOptions2& o) {
 
 AdvancingFrontResult2 advancing_front_2d(const tri::Pslg& pslg,
                                          const AdvancingFrontOptions2& options) {
+    return advancing_front_2d(MeshDomain2(pslg, options.cdt), options);
+}
+
+AdvancingFrontResult2 advancing_front_2d(const MeshDomain2& domain,
+                                         const AdvancingFrontOptions2& options) {
     validate(options);
-    const DomainBoundary2 boundary = discretize_domain_boundary(pslg, options.size, options.cdt);
+    const DomainBoundary2 boundary = discretize_domain_boundary(domain, options.size);
     AdvancingFrontResult2 result;
     AdvancingFront front(boundary, options, result.counters);
     front.run();

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "generators/counter_table.hpp"
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -114,6 +115,9 @@ struct AdvancingFrontResult2 {
 /// @throws InputError on bad input (as discretize_domain_boundary), an unbounded size, a size
 ///         that is not > 0 somewhere it is evaluated, or options out of range.
 AdvancingFrontResult2 advancing_front_2d(const triangulation::Pslg& pslg,
+                                         const AdvancingFrontOptions2& options);
+/// The same over the domain built once (its options replace options.cdt).
+AdvancingFrontResult2 advancing_front_2d(const MeshDomain2& domain,
                                          const AdvancingFrontOptions2& options);
 
 /// The counters, named as `exactmesh mesh --stats` prints them.

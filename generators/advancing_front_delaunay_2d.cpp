@@ -722,6 +722,11 @@ class AdvancingFront {
 
 AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
     const tri::Pslg& pslg, const AdvancingFrontDelaunayOptions2& options) {
+    return advancing_front_delaunay_2d(MeshDomain2(pslg, options.cdt), options);
+}
+
+AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
+    const MeshDomain2& domain, const AdvancingFrontDelaunayOptions2& options) {
     if (!options.size.bounded()) {
         throw InputError(
             "advancing front Delaunay needs a size function (the target edge length); none was "
@@ -731,7 +736,7 @@ AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
         throw InputError("advancing front Delaunay: placement tolerance " +
                          std::to_string(options.placement_tolerance) + " is not in (0, 1)");
     }
-    const DomainBoundary2 boundary = discretize_domain_boundary(pslg, options.size, options.cdt);
+    const DomainBoundary2 boundary = discretize_domain_boundary(domain, options.size);
     AdvancingFrontDelaunayResult2 result;
     std::uint64_t budget = options.max_new_points;
     const std::uint64_t room = std::uint64_t{kNone} / 4 - boundary.xy.size() / 2;

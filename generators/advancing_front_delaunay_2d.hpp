@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "generators/counter_table.hpp"
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -106,6 +107,9 @@ struct AdvancingFrontDelaunayResult2 {
 ///         closed without new points.
 AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
     const triangulation::Pslg& pslg, const AdvancingFrontDelaunayOptions2& options);
+/// The same over the domain built once (its options replace options.cdt).
+AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
+    const MeshDomain2& domain, const AdvancingFrontDelaunayOptions2& options);
 
 /// The counters by name ("triangles", "new_points", ...), in declaration order.
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(

@@ -464,12 +464,14 @@ bool in_domain(const DomainBoundary2& boundary, double x, double y) {
 
 DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunction& size,
                                            const tri::Cdt2Options& cdt_options) {
-    tri::Cdt2Options options = cdt_options;
-    options.remove_exterior = true;
-    if (options.recovery == tri::SegmentRecovery::Conforming)
-        options.recovery = tri::SegmentRecovery::Swap;
+    return discretize_domain_boundary(MeshDomain2(pslg, cdt_options), size);
+}
+
+DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size) {
+    const tri::Pslg& pslg = domain.pslg();
+    const tri::Cdt2Options& options = domain.domain_options();
     DomainBoundary2 boundary;
-    boundary.cdt = tri::constrained_delaunay_2d(pslg, options);
+    boundary.cdt = domain.triangulation();
     const tri::Triangulation2& mesh = boundary.cdt.mesh;
     if (mesh.triangle_count() == 0) {
         throw InputError(

@@ -21,6 +21,7 @@
 #include <functional>
 #include <vector>
 
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -76,6 +77,8 @@ struct DomainBoundary2 {
 DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
                                            const SizeFunction& size,
                                            const triangulation::Cdt2Options& cdt = {});
+/// The same from the domain's triangulation, built once (MeshDomain2::triangulation, copied).
+DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size);
 
 /// Per vertex of a domain's CDT (constrained_delaunay_2d with the exterior removed): the mean
 /// length of the boundary pieces at it (of all its edges where no piece ends there; 0 for a

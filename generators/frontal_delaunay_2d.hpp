@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "generators/counter_table.hpp"
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -112,6 +113,9 @@ struct FrontalDelaunayResult2 {
 ///         > 0 where it is evaluated, knobs out of range, or segments enclosing no region.
 /// @throws GeometryError when the Steiner point budget is exhausted.
 FrontalDelaunayResult2 frontal_delaunay_2d(const triangulation::Pslg& pslg,
+                                           const FrontalDelaunayOptions2& options);
+/// The same over the domain built once (its options replace options.cdt).
+FrontalDelaunayResult2 frontal_delaunay_2d(const MeshDomain2& domain,
                                            const FrontalDelaunayOptions2& options);
 
 /// The counters as (name, value) pairs, in declaration order (the CLI's --stats).

@@ -224,11 +224,12 @@ struct Components {
 
 class QuadtreeMesher {
   public:
-    QuadtreeMesher(const tri::Pslg& pslg, const QuadtreeOptions2& options)
-        : pslg_(pslg), options_(options) {}
+    QuadtreeMesher(const MeshDomain2& domain, const QuadtreeOptions2& options)
+        : domain_(domain), pslg_(domain.pslg()), options_(options) {}
     QuadtreeResult2 run();
 
   private:
+    const MeshDomain2& domain_;
     const tri::Pslg& pslg_;
     const QuadtreeOptions2& options_;
     DomainBoundary2 boundary_;
@@ -1046,7 +1047,7 @@ QuadtreeResult2 QuadtreeMesher::run() {
             "clearance in [1/16, 4], corner_clearance 0 or in [1/16, 1/2], band_min_angle in [0, "
             "30], piece_factor 0 or in [1, 64]");
     }
-    boundary_ = discretize_domain_boundary(pslg_, o.size, o.cdt);
+    boundary_ = discretize_domain_boundary(domain_, o.size);
     // Automatic: 64 leaves per triangle the size asks for and per boundary piece (features
     // between segments refine far below the size: crossings at small angles need thousands),
     // at least 2^16, at most 2^24. A domain whose features are far finer than any such count
@@ -1109,7 +1110,11 @@ QuadtreeResult2 QuadtreeMesher::run() {
 }  // namespace
 
 QuadtreeResult2 quadtree_mesh_2d(const tri::Pslg& pslg, const QuadtreeOptions2& options) {
-    return QuadtreeMesher(pslg, options).run();
+    return quadtree_mesh_2d(MeshDomain2(pslg, options.cdt), options);
+}
+
+QuadtreeResult2 quadtree_mesh_2d(const MeshDomain2& domain, const QuadtreeOptions2& options) {
+    return QuadtreeMesher(domain, options).run();
 }
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const QuadtreeCounters2& c) {

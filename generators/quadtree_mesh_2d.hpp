@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "generators/counter_table.hpp"
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -146,6 +147,8 @@ struct QuadtreeResult2 {
 /// @throws GeometryError when the band cannot be triangulated without new vertices (boundary
 ///         pieces that cross after rounding their split points).
 QuadtreeResult2 quadtree_mesh_2d(const triangulation::Pslg& pslg, const QuadtreeOptions2& options);
+/// The same over the domain built once (its options replace options.cdt for the domain).
+QuadtreeResult2 quadtree_mesh_2d(const MeshDomain2& domain, const QuadtreeOptions2& options);
 
 /// The counters named as `exactmesh mesh --stats` prints them.
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const QuadtreeCounters2& c);
