@@ -24,27 +24,14 @@
 #include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
+#include "triangulation/locate_2d.hpp"
 
 namespace exactmesh::generators {
 
-/// Exact point-in-domain queries over a triangulation of the domain: a uniform grid of buckets
-/// holding the triangles whose bounding box meets them, then exact orient2d tests.
-class DomainLocator2 {
-  public:
-    DomainLocator2() = default;
-    explicit DomainLocator2(const triangulation::Triangulation2& mesh);
-    /// A triangle of `mesh` (the one given to the constructor, unchanged) containing (x, y)
-    /// (closed), or kNone when no triangle does.
-    triangulation::TriIdx locate(const triangulation::Triangulation2& mesh, double x,
-                                 double y) const;
-
-  private:
-    double x0_ = 0, y0_ = 0, cell_ = 1;
-    std::uint32_t columns_ = 0, rows_ = 0;
-    std::vector<std::uint32_t> start_;  // CSR over the cells
-    std::vector<triangulation::TriIdx> triangles_;
-    bool cell_of(double x, double y, std::uint32_t& column, std::uint32_t& row) const;
-};
+/// Exact point-in-domain queries over a triangulation of the domain: the shared bucket-grid
+/// locator (triangulation/locate_2d.hpp); locate(mesh, x, y) is a triangle containing (x, y)
+/// (closed), the lowest-numbered one, or kNone.
+using DomainLocator2 = triangulation::TriangleLocator2;
 
 struct DomainBoundary2 {
     /// The constrained Delaunay triangulation of the input PSLG (constrained_delaunay_2d:
