@@ -88,19 +88,19 @@ struct AdvancingFrontCounters2 {
 /// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
 /// per field: counter_table_complete).
 inline constexpr std::array kAdvancingFrontCounterNames{
-    counter<&AdvancingFrontCounters2::triangles>("triangles"),
-    counter<&AdvancingFrontCounters2::new_points>("new_points"),
-    counter<&AdvancingFrontCounters2::reused_points>("reused_points"),
-    counter<&AdvancingFrontCounters2::rejected_candidates>("rejected_candidates"),
-    counter<&AdvancingFrontCounters2::crossing_tests>("crossing_tests"),
-    counter<&AdvancingFrontCounters2::containment_tests>("containment_tests"),
-    counter<&AdvancingFrontCounters2::postponed_edges>("postponed_edges"),
-    counter<&AdvancingFrontCounters2::wide_searches>("wide_searches"),
-    counter<&AdvancingFrontCounters2::front_queries>("front_queries"),
-    counter<&AdvancingFrontCounters2::max_front_edges>("max_front_edges"),
-    counter<&AdvancingFrontCounters2::closure_runs>("closure_runs"),
-    counter<&AdvancingFrontCounters2::closure_triangles>("closure_triangles"),
-    counter<&AdvancingFrontCounters2::orient_calls>("orient_calls")};
+    counter("triangles", &AdvancingFrontCounters2::triangles),
+    counter("new_points", &AdvancingFrontCounters2::new_points),
+    counter("reused_points", &AdvancingFrontCounters2::reused_points),
+    counter("rejected_candidates", &AdvancingFrontCounters2::rejected_candidates),
+    counter("crossing_tests", &AdvancingFrontCounters2::crossing_tests),
+    counter("containment_tests", &AdvancingFrontCounters2::containment_tests),
+    counter("postponed_edges", &AdvancingFrontCounters2::postponed_edges),
+    counter("wide_searches", &AdvancingFrontCounters2::wide_searches),
+    counter("front_queries", &AdvancingFrontCounters2::front_queries),
+    counter("max_front_edges", &AdvancingFrontCounters2::max_front_edges),
+    counter("closure_runs", &AdvancingFrontCounters2::closure_runs),
+    counter("closure_triangles", &AdvancingFrontCounters2::closure_triangles),
+    counter("orient_calls", &AdvancingFrontCounters2::orient_calls)};
 static_assert(counter_table_complete(kAdvancingFrontCounterNames));
 
 struct AdvancingFrontResult2 {

@@ -74,21 +74,21 @@ struct AdvancingFrontDelaunayCounters2 {
 /// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
 /// per field: counter_table_complete).
 inline constexpr std::array kAdvancingFrontDelaunayCounterNames{
-    counter<&AdvancingFrontDelaunayCounters2::triangles>("triangles"),
-    counter<&AdvancingFrontDelaunayCounters2::new_points>("new_points"),
-    counter<&AdvancingFrontDelaunayCounters2::existing_points>("existing_points"),
-    counter<&AdvancingFrontDelaunayCounters2::rejected_candidates>("rejected_candidates"),
-    counter<&AdvancingFrontDelaunayCounters2::rejected_placements>("rejected_placements"),
-    counter<&AdvancingFrontDelaunayCounters2::thin_skipped>("thin_skipped"),
-    counter<&AdvancingFrontDelaunayCounters2::postponed_edges>("postponed_edges"),
-    counter<&AdvancingFrontDelaunayCounters2::rounds>("rounds"),
-    counter<&AdvancingFrontDelaunayCounters2::widened_searches>("widened_searches"),
-    counter<&AdvancingFrontDelaunayCounters2::closure_triangles>("closure_triangles"),
-    counter<&AdvancingFrontDelaunayCounters2::closure_front_edges>("closure_front_edges"),
-    counter<&AdvancingFrontDelaunayCounters2::incircle_calls>("incircle_calls"),
-    counter<&AdvancingFrontDelaunayCounters2::orient_calls>("orient_calls"),
-    counter<&AdvancingFrontDelaunayCounters2::point_queries>("point_queries"),
-    counter<&AdvancingFrontDelaunayCounters2::edge_queries>("edge_queries")};
+    counter("triangles", &AdvancingFrontDelaunayCounters2::triangles),
+    counter("new_points", &AdvancingFrontDelaunayCounters2::new_points),
+    counter("existing_points", &AdvancingFrontDelaunayCounters2::existing_points),
+    counter("rejected_candidates", &AdvancingFrontDelaunayCounters2::rejected_candidates),
+    counter("rejected_placements", &AdvancingFrontDelaunayCounters2::rejected_placements),
+    counter("thin_skipped", &AdvancingFrontDelaunayCounters2::thin_skipped),
+    counter("postponed_edges", &AdvancingFrontDelaunayCounters2::postponed_edges),
+    counter("rounds", &AdvancingFrontDelaunayCounters2::rounds),
+    counter("widened_searches", &AdvancingFrontDelaunayCounters2::widened_searches),
+    counter("closure_triangles", &AdvancingFrontDelaunayCounters2::closure_triangles),
+    counter("closure_front_edges", &AdvancingFrontDelaunayCounters2::closure_front_edges),
+    counter("incircle_calls", &AdvancingFrontDelaunayCounters2::incircle_calls),
+    counter("orient_calls", &AdvancingFrontDelaunayCounters2::orient_calls),
+    counter("point_queries", &AdvancingFrontDelaunayCounters2::point_queries),
+    counter("edge_queries", &AdvancingFrontDelaunayCounters2::edge_queries)};
 static_assert(counter_table_complete(kAdvancingFrontDelaunayCounterNames));
 
 struct AdvancingFrontDelaunayResult2 {

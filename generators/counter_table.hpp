@@ -16,20 +16,39 @@
 
 namespace exactmesh::generators {
 
-/// One row of a counters struct's name table: the name --stats prints and how to read it.
+/// One row of a counters struct's name table: the name --stats prints and the field it reads
+/// (a 64- or 32-bit counter), or for a derived counter the function computing it.
 template <class Counters>
 struct CounterName {
     std::string_view name;
-    std::uint64_t (*read)(const Counters&);
+    std::uint64_t Counters::*field = nullptr;
+    std::uint32_t Counters::*narrow_field = nullptr;
+    std::uint64_t (*derived)(const Counters&) = nullptr;
+    bool is_derived = false;  // (a function pointer is compared in no constant expression)
+
+    std::uint64_t read(const Counters& counters) const {
+        if (is_derived) return derived(counters);
+        return field != nullptr ? counters.*field : counters.*narrow_field;
+    }
 };
 
+/// A row naming a field: counter("triangles", &AdvancingFrontCounters2::triangles).
+template <class Counters>
+constexpr CounterName<Counters> counter(std::string_view name, std::uint64_t Counters::*field) {
+    return {name, field, nullptr, nullptr, false};
+}
+template <class Counters>
+constexpr CounterName<Counters> counter(std::string_view name, std::uint32_t Counters::*field) {
+    return {name, nullptr, field, nullptr, false};
+}
+/// A row computed from the fields (RefinementCounters2's steiner_points).
+template <class Counters>
+constexpr CounterName<Counters> derived_counter(std::string_view name,
+                                                std::uint64_t (*derived)(const Counters&)) {
+    return {name, nullptr, nullptr, derived, true};
+}
+
 namespace detail {
-
-template <class Class, class Field>
-Class class_of_member(Field Class::*);
-
-template <auto Member>
-using CountersOf = decltype(class_of_member(Member));
 
 /// Converts to anything: counts the fields of an aggregate by brace-initialising it.
 struct AnyField {
@@ -50,31 +69,27 @@ constexpr std::size_t aggregate_field_count() {
 
 }  // namespace detail
 
-/// The reader of one field (a whole-number counter) of a counters struct.
-template <auto Member>
-std::uint64_t read_counter(const detail::CountersOf<Member>& counters) {
-    return static_cast<std::uint64_t>(counters.*Member);
-}
-
-/// A row naming the field `Member`: counter<&AdvancingFrontCounters2::triangles>("triangles").
-template <auto Member>
-constexpr CounterName<detail::CountersOf<Member>> counter(std::string_view name) {
-    return {name, &read_counter<Member>};
-}
-
-/// True when `table` has one row per field of Counters plus `derived` rows read by functions of
-/// their own (RefinementCounters2's steiner_points), and no two rows read the same way: then
-/// every field is named, each once.
+/// True when `table` has one row per field of Counters, no two rows name the same field or
+/// the same name, and exactly `derived` rows are derived counters: then every field is named,
+/// each once. (Member pointers are compared, never function pointers: those are not constant
+/// expressions under every compiler and sanitizer: GCC's ASan build refuses them.)
 template <class Counters, std::size_t N>
 constexpr bool counter_table_complete(const std::array<CounterName<Counters>, N>& table,
                                       std::size_t derived = 0) {
-    if (N != detail::aggregate_field_count<Counters>() + derived) return false;
+    std::size_t fields = 0, computed = 0;
     for (std::size_t i = 0; i < N; ++i) {
+        const CounterName<Counters>& row = table[i];
+        const int kinds = (row.field != nullptr) + (row.narrow_field != nullptr) + row.is_derived;
+        if (kinds != 1) return false;
+        (row.is_derived ? computed : fields) += 1;
         for (std::size_t j = i + 1; j < N; ++j) {
-            if (table[i].read == table[j].read || table[i].name == table[j].name) return false;
+            if (row.name == table[j].name) return false;
+            if (row.field != nullptr && row.field == table[j].field) return false;
+            if (row.narrow_field != nullptr && row.narrow_field == table[j].narrow_field)
+                return false;
         }
     }
-    return true;
+    return fields == detail::aggregate_field_count<Counters>() && computed == derived;
 }
 
 /// The counters as (name, value) pairs, in the table's order.

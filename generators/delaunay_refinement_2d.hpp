@@ -103,26 +103,26 @@ struct RefinementCounters2 {
 /// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
 /// per field: counter_table_complete).
 inline constexpr std::array kRefinementCounterNames{
-    CounterName<RefinementCounters2>{
+    derived_counter<RefinementCounters2>(
         "steiner_points",
-        [](const RefinementCounters2& c) -> std::uint64_t { return c.steiner_points(); }},
-    counter<&RefinementCounters2::circumcenters>("circumcenters"),
-    counter<&RefinementCounters2::segment_splits>("segment_splits"),
-    counter<&RefinementCounters2::shell_splits>("shell_splits"),
-    counter<&RefinementCounters2::segment_bends>("segment_bends"),
-    counter<&RefinementCounters2::rejected_circumcenters>("rejected_circumcenters"),
-    counter<&RefinementCounters2::bad_triangles>("bad_triangles_queued"),
-    counter<&RefinementCounters2::small_angle_skips>("small_angle_skips"),
-    counter<&RefinementCounters2::unsplittable>("unsplittable"),
-    counter<&RefinementCounters2::cavity_triangles>("cavity_triangles"),
-    counter<&RefinementCounters2::largest_cavity>("largest_cavity"),
-    counter<&RefinementCounters2::flips>("delaunay_flips"),
-    counter<&RefinementCounters2::circumcenter_exact>("circumcenter_exact_path"),
-    counter<&RefinementCounters2::orient_calls>("orient_calls"),
-    counter<&RefinementCounters2::incircle_calls>("incircle_calls"),
-    counter<&RefinementCounters2::encroachment_tests>("encroachment_tests"),
-    counter<&RefinementCounters2::polish_points>("polish_points"),
-    counter<&RefinementCounters2::polish_stopped>("polish_stopped")};
+        [](const RefinementCounters2& c) -> std::uint64_t { return c.steiner_points(); }),
+    counter("circumcenters", &RefinementCounters2::circumcenters),
+    counter("segment_splits", &RefinementCounters2::segment_splits),
+    counter("shell_splits", &RefinementCounters2::shell_splits),
+    counter("segment_bends", &RefinementCounters2::segment_bends),
+    counter("rejected_circumcenters", &RefinementCounters2::rejected_circumcenters),
+    counter("bad_triangles_queued", &RefinementCounters2::bad_triangles),
+    counter("small_angle_skips", &RefinementCounters2::small_angle_skips),
+    counter("unsplittable", &RefinementCounters2::unsplittable),
+    counter("cavity_triangles", &RefinementCounters2::cavity_triangles),
+    counter("largest_cavity", &RefinementCounters2::largest_cavity),
+    counter("delaunay_flips", &RefinementCounters2::flips),
+    counter("circumcenter_exact_path", &RefinementCounters2::circumcenter_exact),
+    counter("orient_calls", &RefinementCounters2::orient_calls),
+    counter("incircle_calls", &RefinementCounters2::incircle_calls),
+    counter("encroachment_tests", &RefinementCounters2::encroachment_tests),
+    counter("polish_points", &RefinementCounters2::polish_points),
+    counter("polish_stopped", &RefinementCounters2::polish_stopped)};
 static_assert(counter_table_complete(kRefinementCounterNames, 1));
 
 struct RefinementResult2 {

@@ -82,21 +82,21 @@ struct FrontalDelaunayCounters2 {
 /// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
 /// per field: counter_table_complete).
 inline constexpr std::array kFrontalDelaunayCounterNames{
-    counter<&FrontalDelaunayCounters2::boundary_points>("boundary_points"),
-    counter<&FrontalDelaunayCounters2::points_inserted>("points_inserted"),
-    counter<&FrontalDelaunayCounters2::accepted_triangles>("accepted_triangles"),
-    counter<&FrontalDelaunayCounters2::forced_triangles>("forced_triangles"),
-    counter<&FrontalDelaunayCounters2::forced_accepts>("forced_accepts"),
-    counter<&FrontalDelaunayCounters2::rejected_encroach>("rejected_encroach"),
-    counter<&FrontalDelaunayCounters2::rejected_outside>("rejected_outside"),
-    counter<&FrontalDelaunayCounters2::rejected_too_close>("rejected_too_close"),
-    counter<&FrontalDelaunayCounters2::rejected_no_conflict>("rejected_no_conflict"),
-    counter<&FrontalDelaunayCounters2::active_pops>("active_pops"),
-    counter<&FrontalDelaunayCounters2::stale_pops>("stale_pops"),
-    counter<&FrontalDelaunayCounters2::cavity_triangles>("cavity_triangles"),
-    counter<&FrontalDelaunayCounters2::closeness_incircle>("closeness_incircle"),
-    counter<&FrontalDelaunayCounters2::orient_calls>("orient_calls"),
-    counter<&FrontalDelaunayCounters2::incircle_calls>("incircle_calls")};
+    counter("boundary_points", &FrontalDelaunayCounters2::boundary_points),
+    counter("points_inserted", &FrontalDelaunayCounters2::points_inserted),
+    counter("accepted_triangles", &FrontalDelaunayCounters2::accepted_triangles),
+    counter("forced_triangles", &FrontalDelaunayCounters2::forced_triangles),
+    counter("forced_accepts", &FrontalDelaunayCounters2::forced_accepts),
+    counter("rejected_encroach", &FrontalDelaunayCounters2::rejected_encroach),
+    counter("rejected_outside", &FrontalDelaunayCounters2::rejected_outside),
+    counter("rejected_too_close", &FrontalDelaunayCounters2::rejected_too_close),
+    counter("rejected_no_conflict", &FrontalDelaunayCounters2::rejected_no_conflict),
+    counter("active_pops", &FrontalDelaunayCounters2::active_pops),
+    counter("stale_pops", &FrontalDelaunayCounters2::stale_pops),
+    counter("cavity_triangles", &FrontalDelaunayCounters2::cavity_triangles),
+    counter("closeness_incircle", &FrontalDelaunayCounters2::closeness_incircle),
+    counter("orient_calls", &FrontalDelaunayCounters2::orient_calls),
+    counter("incircle_calls", &FrontalDelaunayCounters2::incircle_calls)};
 static_assert(counter_table_complete(kFrontalDelaunayCounterNames));
 
 struct FrontalDelaunayResult2 {

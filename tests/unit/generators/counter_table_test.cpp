@@ -22,14 +22,14 @@ struct ThreeCounters {
     std::uint64_t third = 0;
 };
 
-constexpr std::array kAll{gen::counter<&ThreeCounters::first>("first"),
-                          gen::counter<&ThreeCounters::second>("second"),
-                          gen::counter<&ThreeCounters::third>("third")};
-constexpr std::array kMissing{gen::counter<&ThreeCounters::first>("first"),
-                              gen::counter<&ThreeCounters::third>("third")};
-constexpr std::array kTwice{gen::counter<&ThreeCounters::first>("first"),
-                            gen::counter<&ThreeCounters::first>("again"),
-                            gen::counter<&ThreeCounters::third>("third")};
+constexpr std::array kAll{gen::counter("first", &ThreeCounters::first),
+                          gen::counter("second", &ThreeCounters::second),
+                          gen::counter("third", &ThreeCounters::third)};
+constexpr std::array kMissing{gen::counter("first", &ThreeCounters::first),
+                              gen::counter("third", &ThreeCounters::third)};
+constexpr std::array kTwice{gen::counter("first", &ThreeCounters::first),
+                            gen::counter("again", &ThreeCounters::first),
+                            gen::counter("third", &ThreeCounters::third)};
 
 }  // namespace
 
