@@ -20,6 +20,7 @@
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/graded_boundary_size_2d.hpp"
 #include "generators/laplacian_smoothing_2d.hpp"
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/mesh_generators_2d.hpp"
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
@@ -93,11 +94,37 @@ void print_smoothing_stats(const gen::SmoothingCounters2& c, double seconds) {
               << "smooth_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
 }
 
+/// One warning per option or input feature given to a generator that ignores it (issue 12: a
+/// warning, not silence). The angles and region maximum areas are refused before this.
+std::vector<std::string> ignored_options(const gen::MeshGenerator2& generator,
+                                         const MeshArguments& arguments, const io::PolyFile& poly) {
+    std::vector<std::string> warnings;
+    const auto ignores = [&](gen::MeshOption option, bool given, const std::string& what,
+                             const std::string& why = "") {
+        if (given && !generator.honours.contains(option)) {
+            warnings.push_back(what + " ignored: --generator " + std::string(generator.name) +
+                               " does not honour " + std::string(gen::mesh_option_name(option)) +
+                               why);
+        }
+    };
+    ignores(gen::MeshOption::Size, !arguments.size.empty(), "--size " + arguments.size);
+    ignores(gen::MeshOption::MaxSteinerPoints, arguments.max_steiner != 0,
+            "--max-steiner " + std::to_string(arguments.max_steiner));
+    if (!poly.regions.empty()) {
+        ignores(gen::MeshOption::RegionAttributes, true,
+                arguments.input + ":" + std::to_string(poly.region_lines[0]) + ": " +
+                    std::to_string(poly.regions.size() / 4) + " regions' attributes",
+                " (its mesh carries none; delaunay-refinement and frontal carry them)");
+    }
+    return warnings;
+}
+
 void run_mesh(const MeshArguments& arguments) {
     const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(arguments.generator);
-    if (arguments.angles_given && generator.name != "delaunay-refinement") {
-        // An option a generator would silently ignore is refused, so that --min-angle 30 never
-        // looks as if it had been honoured.
+    if (arguments.angles_given && !(generator.honours.contains(gen::MeshOption::MinAngle) &&
+                                    generator.honours.contains(gen::MeshOption::PolishAngle))) {
+        // Refused (documented in --help), so that --min-angle 30 never looks as if it had been
+        // honoured; the other options a generator ignores are warnings (ignored_options).
         throw InputError(
             "--min-angle and --polish-angle apply to --generator delaunay-refinement only; " +
             std::string(generator.name) + " has no angle criterion");
@@ -160,6 +187,10 @@ void run_mesh(const MeshArguments& arguments) {
     options.max_steiner_points = arguments.max_steiner;
     options.cdt.first_index = base;
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
+    print_warnings(ignored_options(generator, arguments, poly));
+    // The domain's constrained triangulation, built once (by the first step that needs it) for
+    // the default size, the size budget and the generator.
+    const gen::MeshDomain2 domain(pslg, options.cdt);
 
     predicates::reset_thread_stats();
     const auto start = std::chrono::steady_clock::now();
@@ -168,12 +199,12 @@ void run_mesh(const MeshArguments& arguments) {
     const std::string file =
         arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
     if (generator.needs_size && !size.bounded()) {
-        size = locating_mark_points(
-            poly, file, [&] { return gen::graded_size_from_boundary(pslg, options.cdt); });
+        size = locating_mark_points(poly, file,
+                                    [&] { return gen::graded_size_from_boundary(domain); });
         options.size = size;
     }
     const gen::MeshRun2 result =
-        locating_mark_points(poly, file, [&] { return generator.run(pslg, options); });
+        locating_mark_points(poly, file, [&] { return generator.run_on_domain(domain, options); });
     const auto stop = std::chrono::steady_clock::now();
     const predicates::PredicateStats stats = predicates::thread_stats();
     const double seconds = std::chrono::duration<double>(stop - start).count();

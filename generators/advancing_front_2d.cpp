@@ -21,6 +21,7 @@
 
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/domain_mesh_2d.hpp"
+#include "generators/front_index_2d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
@@ -37,134 +38,15 @@ using tri::kNone;
 using tri::VertIdx;
 using EdgeId = std::uint32_t;
 
-/// A closed axis-parallel box.
-struct Box {
-    double x0, y0, x1, y1;
-};
+using Box = FrontBox2;
 
 bool boxes_meet(const Box& p, const Box& q) {
-    return p.x0 <= q.x1 && q.x0 <= p.x1 && p.y0 <= q.y1 && q.y0 <= p.y1;
+    return p.meets(q);
 }
 
 bool box_holds(const Box& box, const double* p) {
-    return box.x0 <= p[0] && p[0] <= box.x1 && box.y0 <= p[1] && p[1] <= box.y1;
+    return box.holds(p);
 }
-
-/// A loose quadtree of front edges [Ulrich00, "Loose octrees", Game Programming Gems §4.11]: an
-/// edge of extent e (the larger side of its bounding box) lives in the deepest node whose cell
-/// is at least 2e wide (or at the deepest level), the one holding its first end point; a node's
-/// loose cell (its cell grown by one cell on each side) then holds the bounding box of every
-/// edge it lists. Computed relative to a root square whose side is a power of two, so cell
-/// bounds are exact and the roundings (of the offsets from the root corner, within 2^-52 of the
-/// side) stay far below the half cell of slack left (a cell is at least 2^-48 of the side).
-/// Queries are conservative: the caller filters the edges they return by their exact bounding
-/// boxes.
-class EdgeQuadtree {
-  public:
-    EdgeQuadtree(double x0, double y0, double side) : x0_(x0), y0_(y0), side_(side) {
-        nodes_.emplace_back();
-        for (std::uint32_t level = 0; level <= kMaxLevel; ++level)
-            cell_[level] = std::ldexp(side, -static_cast<int>(level));
-    }
-
-    /// `min_extent`: list the edge no deeper than an edge that long would go (a point, a = b,
-    /// is listed at the level of its local size rather than at the deepest level).
-    void insert(EdgeId e, const double* a, const double* b, double min_extent = 0) {
-        const double extent =
-            std::max({std::fabs(b[0] - a[0]), std::fabs(b[1] - a[1]), min_extent});
-        std::uint32_t level = 0;
-        double cell = side_;
-        while (level < kMaxLevel && 0.25 * cell >= extent) {
-            cell *= 0.5;
-            ++level;
-        }
-        const double cells = std::ldexp(1.0, static_cast<int>(level));
-        const auto index = [&](double offset) {
-            return static_cast<std::uint64_t>(
-                std::clamp(std::floor(offset / cell), 0.0, cells - 1));
-        };
-        const std::uint64_t ix = index(a[0] - x0_), iy = index(a[1] - y0_);
-        std::uint32_t node = 0;
-        ++nodes_[0].count;
-        for (std::uint32_t l = 1; l <= level; ++l) {
-            const std::uint64_t cx = ix >> (level - l), cy = iy >> (level - l);
-            const std::size_t slot = (cx & 1) + 2 * (cy & 1);
-            std::uint32_t child = nodes_[node].child[slot];
-            if (child == kNone) {
-                child = static_cast<std::uint32_t>(nodes_.size());
-                Node fresh;
-                fresh.parent = node;
-                fresh.level = l;
-                fresh.ix = cx;
-                fresh.iy = cy;
-                nodes_.push_back(fresh);
-                nodes_[node].child[slot] = child;
-            }
-            node = child;
-            ++nodes_[node].count;
-        }
-        if (e >= node_of_.size()) {
-            node_of_.resize(std::size_t{e} + 1, kNone);
-            next_.resize(node_of_.size(), kNone);
-            prev_.resize(node_of_.size(), kNone);
-        }
-        node_of_[e] = node;
-        prev_[e] = kNone;
-        next_[e] = nodes_[node].first;
-        if (next_[e] != kNone) prev_[next_[e]] = e;
-        nodes_[node].first = e;
-    }
-
-    void remove(EdgeId e) {
-        const std::uint32_t node = node_of_[e];
-        if (prev_[e] != kNone) {
-            next_[prev_[e]] = next_[e];
-        } else {
-            nodes_[node].first = next_[e];
-        }
-        if (next_[e] != kNone) prev_[next_[e]] = prev_[e];
-        node_of_[e] = kNone;
-        for (std::uint32_t n = node; n != kNone; n = nodes_[n].parent) --nodes_[n].count;
-    }
-
-    /// Calls visit(e) for every stored edge whose bounding box may meet `box` (a superset).
-    template <class Visit>
-    void query(const Box& box, Visit&& visit) {
-        const double qx0 = box.x0 - x0_, qx1 = box.x1 - x0_, qy0 = box.y0 - y0_, qy1 = box.y1 - y0_;
-        stack_.clear();
-        if (nodes_[0].count > 0) stack_.push_back(0);
-        while (!stack_.empty()) {
-            const Node& node = nodes_[stack_.back()];
-            stack_.pop_back();
-            const double cell = cell_[node.level];
-            const double lx = static_cast<double>(node.ix) * cell,
-                         ly = static_cast<double>(node.iy) * cell;
-            if (lx - cell > qx1 || lx + 2 * cell < qx0 || ly - cell > qy1 || ly + 2 * cell < qy0) {
-                continue;
-            }
-            for (EdgeId e = node.first; e != kNone; e = next_[e]) visit(e);
-            for (const std::uint32_t child : node.child) {
-                if (child != kNone && nodes_[child].count > 0) stack_.push_back(child);
-            }
-        }
-    }
-
-  private:
-    static constexpr std::uint32_t kMaxLevel = 48;
-    struct Node {
-        std::array<std::uint32_t, 4> child{kNone, kNone, kNone, kNone};
-        std::uint32_t parent = kNone;
-        std::uint32_t first = kNone;  // the edges listed here (next_/prev_ chain)
-        std::uint32_t count = 0;      // edges in the subtree
-        std::uint32_t level = 0;
-        std::uint64_t ix = 0, iy = 0;
-    };
-    double x0_, y0_, side_;
-    std::array<double, kMaxLevel + 1> cell_{};  // cell widths by level
-    std::vector<Node> nodes_;
-    std::vector<std::uint32_t> node_of_, next_, prev_;
-    std::vector<std::uint32_t> stack_;
-};
 
 struct FrontEdge {
     VertIdx a, b;
@@ -215,7 +97,8 @@ class AdvancingFront {
         for (const VertIdx v : boundary.free_vertices) {
             const double h = options_.size(point(v)[0], point(v)[1]);
             free_[v] = 1;
-            free_tree_.insert(v, point(v), point(v), std::isfinite(h) && h > 0 ? h : 0.0);
+            free_tree_.insert(v, Box{point(v)[0], point(v)[1], point(v)[0], point(v)[1]},
+                              std::isfinite(h) && h > 0 ? h : 0.0);
         }
         check_initial_front();
         budget_ = options.max_triangles != 0 ? options.max_triangles : automatic_budget();
@@ -274,8 +157,9 @@ class AdvancingFront {
     // for bit, for a domain scaled by a power of two. Set by make_quadtree.
     int shift_ = 0;
     predicates::PowerOfTwo unit_{0};  // multiplies by 2^shift_ (ldexp, without the call)
-    EdgeQuadtree quadtree_;
-    EdgeQuadtree free_tree_;          // the free vertices not yet taken in, by vertex number
+    // The shared loose quadtree of the fronts (front_index_2d.hpp).
+    FrontIndex2 quadtree_;
+    FrontIndex2 free_tree_;           // the free vertices not yet taken in, by vertex number
     std::vector<std::uint8_t> free_;  // 1 for those vertices
     std::priority_queue<std::pair<double, EdgeId>, std::vector<std::pair<double, EdgeId>>,
                         std::greater<>>
@@ -297,7 +181,7 @@ class AdvancingFront {
         return predicates::orient2d(point(a), point(b), point(c));
     }
 
-    EdgeQuadtree make_quadtree(const std::vector<double>& xy) {
+    FrontIndex2 make_quadtree(const std::vector<double>& xy) {
         double x0 = xy[0], y0 = xy[1], x1 = xy[0], y1 = xy[1];
         for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
             x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]);
@@ -314,7 +198,7 @@ class AdvancingFront {
         root_side_ = std::ldexp(1.0, std::ilogb(std::max(extent, std::ldexp(1.0, -1000))) + 1);
         shift_ = -std::ilogb(root_side_);
         unit_ = predicates::PowerOfTwo(shift_);
-        return EdgeQuadtree(x0, y0, root_side_);
+        return FrontIndex2(x0 + 0.5 * root_side_, y0 + 0.5 * root_side_, 0.5 * root_side_);
     }
 
     /// 8 times the triangle count the size function asks for (expected_triangle_count over
@@ -348,7 +232,8 @@ class AdvancingFront {
         const auto e = static_cast<EdgeId>(edges_.size());
         edges_.push_back({a, b, out_head_[a], 0, true});
         out_head_[a] = e;
-        quadtree_.insert(e, point(a), point(b));
+        const Box box = edge_box(e);
+        quadtree_.insert(e, box, std::max(box.x1 - box.x0, box.y1 - box.y0));
         push(e);
         ++alive_edges_;
         counters_.max_front_edges = std::max(counters_.max_front_edges, alive_edges_);
@@ -360,7 +245,7 @@ class AdvancingFront {
         EdgeId* link = &out_head_[edge.a];
         while (*link != e) link = &edges_[*link].next_out;
         *link = edge.next_out;
-        quadtree_.remove(e);
+        quadtree_.erase(e);
         --alive_edges_;
     }
 
@@ -391,22 +276,18 @@ class AdvancingFront {
             std::fill(stamp_.begin(), stamp_.end(), 0);
             stamp_value_ = 1;
         }
-        quadtree_.query(box, [&](EdgeId e) {
-            if (!boxes_meet(edge_box(e), box)) return;
-            near_.edges.push_back(e);
+        // The index reports exactly the edges whose box meets `box` (and the free vertices in it).
+        quadtree_.query(box, near_.edges);
+        for (const EdgeId e : near_.edges) {
             for (const VertIdx v : {edges_[e].a, edges_[e].b}) {
                 if (stamp_[v] != stamp_value_ && box_holds(box, point(v))) {
                     stamp_[v] = stamp_value_;
                     near_.vertices.push_back(v);
                 }
             }
-        });
-        free_tree_.query(box, [&](VertIdx v) {
-            if (box_holds(box, point(v))) {
-                near_.vertices.push_back(v);
-                near_.free.push_back(v);
-            }
-        });
+        }
+        free_tree_.query(box, near_.free);
+        near_.vertices.insert(near_.vertices.end(), near_.free.begin(), near_.free.end());
     }
 
     /// The initial front comes from the CDT's pieces, split at rounded points: check that no
@@ -506,7 +387,7 @@ class AdvancingFront {
         ++(new_point ? counters_.new_points : counters_.reused_points);
         if (c < free_.size() && free_[c] != 0) {  // new points come after the free vertices
             free_[c] = 0;
-            free_tree_.remove(c);
+            free_tree_.erase(c);
         }
         kill_edge(base);
         if (m.bc != kNone) {
@@ -858,8 +739,13 @@ void validate(const AdvancingFrontOptions2& o) {
 
 AdvancingFrontResult2 advancing_front_2d(const tri::Pslg& pslg,
                                          const AdvancingFrontOptions2& options) {
+    return advancing_front_2d(MeshDomain2(pslg, options.cdt), options);
+}
+
+AdvancingFrontResult2 advancing_front_2d(const MeshDomain2& domain,
+                                         const AdvancingFrontOptions2& options) {
     validate(options);
-    const DomainBoundary2 boundary = discretize_domain_boundary(pslg, options.size, options.cdt);
+    const DomainBoundary2 boundary = discretize_domain_boundary(domain, options.size);
     AdvancingFrontResult2 result;
     AdvancingFront front(boundary, options, result.counters);
     front.run();
@@ -868,19 +754,7 @@ AdvancingFrontResult2 advancing_front_2d(const tri::Pslg& pslg,
 }
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const AdvancingFrontCounters2& c) {
-    return {{"triangles", c.triangles},
-            {"new_points", c.new_points},
-            {"reused_points", c.reused_points},
-            {"rejected_candidates", c.rejected_candidates},
-            {"crossing_tests", c.crossing_tests},
-            {"containment_tests", c.containment_tests},
-            {"postponed_edges", c.postponed_edges},
-            {"wide_searches", c.wide_searches},
-            {"front_queries", c.front_queries},
-            {"max_front_edges", c.max_front_edges},
-            {"closure_runs", c.closure_runs},
-            {"closure_triangles", c.closure_triangles},
-            {"orient_calls", c.orient_calls}};
+    return counters_by_name(kAdvancingFrontCounterNames, c);
 }
 
 }  // namespace exactmesh::generators

@@ -28,11 +28,14 @@
 // (angles_2d); the closure: constrained_delaunay_2d (orient2d, incircle).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "generators/counter_table.hpp"
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -82,6 +85,24 @@ struct AdvancingFrontCounters2 {
     std::uint64_t orient_calls = 0;
 };
 
+/// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
+/// per field: counter_table_complete).
+inline constexpr std::array kAdvancingFrontCounterNames{
+    counter("triangles", &AdvancingFrontCounters2::triangles),
+    counter("new_points", &AdvancingFrontCounters2::new_points),
+    counter("reused_points", &AdvancingFrontCounters2::reused_points),
+    counter("rejected_candidates", &AdvancingFrontCounters2::rejected_candidates),
+    counter("crossing_tests", &AdvancingFrontCounters2::crossing_tests),
+    counter("containment_tests", &AdvancingFrontCounters2::containment_tests),
+    counter("postponed_edges", &AdvancingFrontCounters2::postponed_edges),
+    counter("wide_searches", &AdvancingFrontCounters2::wide_searches),
+    counter("front_queries", &AdvancingFrontCounters2::front_queries),
+    counter("max_front_edges", &AdvancingFrontCounters2::max_front_edges),
+    counter("closure_runs", &AdvancingFrontCounters2::closure_runs),
+    counter("closure_triangles", &AdvancingFrontCounters2::closure_triangles),
+    counter("orient_calls", &AdvancingFrontCounters2::orient_calls)};
+static_assert(counter_table_complete(kAdvancingFrontCounterNames));
+
 struct AdvancingFrontResult2 {
     /// The mesh in the caller's numbering (domain_mesh_result): input vertices first, then the
     /// boundary's points, then the new points; pieces and warnings of the boundary.
@@ -94,6 +115,9 @@ struct AdvancingFrontResult2 {
 /// @throws InputError on bad input (as discretize_domain_boundary), an unbounded size, a size
 ///         that is not > 0 somewhere it is evaluated, or options out of range.
 AdvancingFrontResult2 advancing_front_2d(const triangulation::Pslg& pslg,
+                                         const AdvancingFrontOptions2& options);
+/// The same over the domain built once (its options replace options.cdt).
+AdvancingFrontResult2 advancing_front_2d(const MeshDomain2& domain,
                                          const AdvancingFrontOptions2& options);
 
 /// The counters, named as `exactmesh mesh --stats` prints them.

@@ -13,6 +13,7 @@
 
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/domain_mesh_2d.hpp"
+#include "generators/front_index_2d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
@@ -29,103 +30,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-struct Box {
-    double x0 = kInfinity, y0 = kInfinity, x1 = -kInfinity, y1 = -kInfinity;
-    void add(double x, double y) {
-        x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
-    }
-    void add(const Box& b) {
-        x0 = std::min(x0, b.x0), y0 = std::min(y0, b.y0);
-        x1 = std::max(x1, b.x1), y1 = std::max(y1, b.y1);
-    }
-};
-
-/// Closed boxes meet (exact comparisons of doubles).
-bool overlaps(const Box& a, const Box& b) {
-    return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
-}
-
-/// A loose quadtree of items with boxes (front points, front edges). An item sits in the node
-/// on the path of its box's centre whose width is about its extent; each node keeps the union
-/// of the boxes ever stored below it, exactly (it never shrinks), and the number of live items
-/// below it. A query reports every live item whose box meets the query box: the pruning uses
-/// only exact box comparisons, so nothing is missed whatever the rounding of the descent.
-class LooseQuadtree {
-  public:
-    LooseQuadtree(double cx, double cy, double half) { nodes_.push_back(Node{cx, cy, half}); }
-
-    void insert(std::uint32_t id, const Box& box, double extent) {
-        if (id >= boxes_.size()) {
-            boxes_.resize(std::size_t{id} + 1);
-            node_of_.resize(std::size_t{id} + 1, kNone);
-            alive_.resize(std::size_t{id} + 1, 0);
-        }
-        boxes_[id] = box;
-        alive_[id] = 1;
-        const double x = 0.5 * box.x0 + 0.5 * box.x1, y = 0.5 * box.y0 + 0.5 * box.y1;
-        std::uint32_t node = 0;
-        for (int depth = 0;; ++depth) {
-            nodes_[node].bounds.add(box);
-            ++nodes_[node].live;
-            const double half = nodes_[node].half;
-            if (depth == kMaxDepth || 0.5 * half < extent) break;
-            const unsigned quadrant =
-                (x >= nodes_[node].cx ? 1u : 0u) + (y >= nodes_[node].cy ? 2u : 0u);
-            if (nodes_[node].child[quadrant] == kNone) {
-                const double q = 0.5 * half;
-                const Node child{nodes_[node].cx + ((quadrant & 1u) ? q : -q),
-                                 nodes_[node].cy + ((quadrant & 2u) ? q : -q), q, node};
-                nodes_[node].child[quadrant] = static_cast<std::uint32_t>(nodes_.size());
-                nodes_.push_back(child);
-            }
-            node = nodes_[node].child[quadrant];
-        }
-        nodes_[node].items.push_back(id);
-        node_of_[id] = node;
-    }
-
-    void erase(std::uint32_t id) {
-        if (id >= alive_.size() || !alive_[id]) return;
-        alive_[id] = 0;
-        for (std::uint32_t node = node_of_[id]; node != kNone; node = nodes_[node].parent)
-            --nodes_[node].live;
-    }
-
-    /// Appends to `out` every live item whose box meets `box`.
-    void query(const Box& box, std::vector<std::uint32_t>& out) {
-        stack_.assign(1, 0);
-        while (!stack_.empty()) {
-            Node& node = nodes_[stack_.back()];
-            stack_.pop_back();
-            if (node.live == 0 || !overlaps(node.bounds, box)) continue;
-            std::size_t kept = 0;
-            for (const std::uint32_t id : node.items) {
-                if (!alive_[id]) continue;  // erased: dropped from the list here
-                node.items[kept++] = id;
-                if (overlaps(boxes_[id], box)) out.push_back(id);
-            }
-            node.items.resize(kept);
-            for (const std::uint32_t c : node.child)
-                if (c != kNone) stack_.push_back(c);
-        }
-    }
-
-  private:
-    static constexpr int kMaxDepth = 48;
-    struct Node {
-        double cx, cy, half;
-        std::uint32_t parent = kNone;
-        Box bounds{};
-        std::uint32_t live = 0;
-        std::uint32_t child[4] = {kNone, kNone, kNone, kNone};
-        std::vector<std::uint32_t> items{};
-    };
-    std::vector<Node> nodes_;
-    std::vector<Box> boxes_;
-    std::vector<std::uint32_t> node_of_;
-    std::vector<std::uint8_t> alive_;
-    std::vector<std::uint32_t> stack_;
-};
+using Box = FrontBox2;
 
 /// |(dx, dy)| < radius, in units of the radius (no overflow or underflow of the squares).
 bool shorter_than(double dx, double dy, double radius) {
@@ -301,7 +206,7 @@ class AdvancingFront {
     std::unordered_map<std::uint64_t, std::uint32_t> edge_of_;
     std::vector<std::uint32_t> degree_;  // live front edges at each vertex
     std::vector<std::uint8_t> free_;     // 1: a free vertex no triangle has taken in yet
-    LooseQuadtree points_, edges_tree_;
+    FrontIndex2 points_, edges_tree_;    // the shared loose quadtree (front_index_2d.hpp)
     std::priority_queue<std::pair<double, std::uint32_t>,
                         std::vector<std::pair<double, std::uint32_t>>, std::greater<>>
         heap_;
@@ -722,6 +627,11 @@ class AdvancingFront {
 
 AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
     const tri::Pslg& pslg, const AdvancingFrontDelaunayOptions2& options) {
+    return advancing_front_delaunay_2d(MeshDomain2(pslg, options.cdt), options);
+}
+
+AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
+    const MeshDomain2& domain, const AdvancingFrontDelaunayOptions2& options) {
     if (!options.size.bounded()) {
         throw InputError(
             "advancing front Delaunay needs a size function (the target edge length); none was "
@@ -731,7 +641,7 @@ AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
         throw InputError("advancing front Delaunay: placement tolerance " +
                          std::to_string(options.placement_tolerance) + " is not in (0, 1)");
     }
-    const DomainBoundary2 boundary = discretize_domain_boundary(pslg, options.size, options.cdt);
+    const DomainBoundary2 boundary = discretize_domain_boundary(domain, options.size);
     AdvancingFrontDelaunayResult2 result;
     std::uint64_t budget = options.max_new_points;
     const std::uint64_t room = std::uint64_t{kNone} / 4 - boundary.xy.size() / 2;
@@ -754,21 +664,7 @@ AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(
     const AdvancingFrontDelaunayCounters2& c) {
-    return {{"triangles", c.triangles},
-            {"new_points", c.new_points},
-            {"existing_points", c.existing_points},
-            {"rejected_candidates", c.rejected_candidates},
-            {"rejected_placements", c.rejected_placements},
-            {"thin_skipped", c.thin_skipped},
-            {"postponed_edges", c.postponed_edges},
-            {"rounds", c.rounds},
-            {"widened_searches", c.widened_searches},
-            {"closure_triangles", c.closure_triangles},
-            {"closure_front_edges", c.closure_front_edges},
-            {"incircle_calls", c.incircle_calls},
-            {"orient_calls", c.orient_calls},
-            {"point_queries", c.point_queries},
-            {"edge_queries", c.edge_queries}};
+    return counters_by_name(kAdvancingFrontDelaunayCounterNames, c);
 }
 
 }  // namespace exactmesh::generators

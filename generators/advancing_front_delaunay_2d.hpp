@@ -27,11 +27,14 @@
 // points and edges within O(1) of the local size). Predicates: orient2d, incircle_sos.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "generators/counter_table.hpp"
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -68,6 +71,26 @@ struct AdvancingFrontDelaunayCounters2 {
     std::uint64_t edge_queries = 0;
 };
 
+/// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
+/// per field: counter_table_complete).
+inline constexpr std::array kAdvancingFrontDelaunayCounterNames{
+    counter("triangles", &AdvancingFrontDelaunayCounters2::triangles),
+    counter("new_points", &AdvancingFrontDelaunayCounters2::new_points),
+    counter("existing_points", &AdvancingFrontDelaunayCounters2::existing_points),
+    counter("rejected_candidates", &AdvancingFrontDelaunayCounters2::rejected_candidates),
+    counter("rejected_placements", &AdvancingFrontDelaunayCounters2::rejected_placements),
+    counter("thin_skipped", &AdvancingFrontDelaunayCounters2::thin_skipped),
+    counter("postponed_edges", &AdvancingFrontDelaunayCounters2::postponed_edges),
+    counter("rounds", &AdvancingFrontDelaunayCounters2::rounds),
+    counter("widened_searches", &AdvancingFrontDelaunayCounters2::widened_searches),
+    counter("closure_triangles", &AdvancingFrontDelaunayCounters2::closure_triangles),
+    counter("closure_front_edges", &AdvancingFrontDelaunayCounters2::closure_front_edges),
+    counter("incircle_calls", &AdvancingFrontDelaunayCounters2::incircle_calls),
+    counter("orient_calls", &AdvancingFrontDelaunayCounters2::orient_calls),
+    counter("point_queries", &AdvancingFrontDelaunayCounters2::point_queries),
+    counter("edge_queries", &AdvancingFrontDelaunayCounters2::edge_queries)};
+static_assert(counter_table_complete(kAdvancingFrontDelaunayCounterNames));
+
 struct AdvancingFrontDelaunayResult2 {
     /// Input vertices first (as constrained_delaunay_2d numbers them), the boundary points the
     /// size function added, then the new points; pieces, warnings as domain_mesh_result gives.
@@ -84,6 +107,9 @@ struct AdvancingFrontDelaunayResult2 {
 ///         closed without new points.
 AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
     const triangulation::Pslg& pslg, const AdvancingFrontDelaunayOptions2& options);
+/// The same over the domain built once (its options replace options.cdt).
+AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
+    const MeshDomain2& domain, const AdvancingFrontDelaunayOptions2& options);
 
 /// The counters by name ("triangles", "new_points", ...), in declaration order.
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(

@@ -148,109 +148,12 @@ BackgroundSizeMesh2::BackgroundSizeMesh2(std::vector<double> xy, std::vector<dou
         boxes_[4 * t + 2] = std::max({a[0], b[0], c[0]}),
                        boxes_[4 * t + 3] = std::max({a[1], b[1], c[1]});
     }
-    fill(triangle_buckets_, count, 3, mesh_.triangles.data(), 0.5);
-    fill(edge_buckets_, boundary_.size() / 2, 2, boundary_.data(), 1.0);
-}
-
-std::uint32_t BackgroundSizeMesh2::Buckets::column(double x) const {
-    const long double f = (static_cast<long double>(x) - x0) / cell;
-    return static_cast<std::uint32_t>(std::clamp<long double>(f, 0, columns - 1));
-}
-
-std::uint32_t BackgroundSizeMesh2::Buckets::row(double y) const {
-    const long double f = (static_cast<long double>(y) - y0) / cell;
-    return static_cast<std::uint32_t>(std::clamp<long double>(f, 0, rows - 1));
-}
-
-void BackgroundSizeMesh2::fill(Buckets& b, std::size_t count, std::size_t per_item,
-                               const std::uint32_t* vertices, double per_cell) {
-    // The box of the used vertices, about per_cell items per cell (widths in long double so
-    // that extents near the largest double do not overflow).
-    double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
-    b.x0 = b.y0 = std::numeric_limits<double>::infinity();
-    for (const std::uint32_t v : mesh_.triangles) {
-        b.x0 = std::min(b.x0, mesh_.point(v)[0]), b.y0 = std::min(b.y0, mesh_.point(v)[1]);
-        x1 = std::max(x1, mesh_.point(v)[0]), y1 = std::max(y1, mesh_.point(v)[1]);
-    }
-    const long double width = static_cast<long double>(x1) - b.x0,
-                      height = static_cast<long double>(y1) - b.y0;
-    // Coarser while the lists would hold more than 16 entries per item (long slivers meet
-    // many cells; a fan of them would otherwise need memory quadratic in their number).
-    auto range = [&](std::size_t item, std::uint32_t& c0, std::uint32_t& c1, std::uint32_t& r0,
-                     std::uint32_t& r1) {
-        c0 = b.columns, c1 = 0, r0 = b.rows, r1 = 0;
-        for (std::size_t k = 0; k < per_item; ++k) {
-            const double* p = mesh_.point(vertices[per_item * item + k]);
-            c0 = std::min(c0, b.column(p[0])), c1 = std::max(c1, b.column(p[0]));
-            r0 = std::min(r0, b.row(p[1])), r1 = std::max(r1, b.row(p[1]));
-        }
-    };
-    for (double cells = std::max(1.0, std::sqrt(static_cast<double>(count) / per_cell));;
-         cells = std::max(1.0, cells / 2)) {
-        b.cell = static_cast<double>(std::max(width, height) / cells);
-        if (!(b.cell > 0) || !std::isfinite(b.cell)) b.cell = std::numeric_limits<double>::max();
-        b.columns =
-            static_cast<std::uint32_t>(std::clamp<long double>(width / b.cell, 0, 4095)) + 1;
-        b.rows = static_cast<std::uint32_t>(std::clamp<long double>(height / b.cell, 0, 4095)) + 1;
-        if (cells == 1.0) break;
-        std::uint64_t total = 0;
-        for (std::size_t item = 0; item < count; ++item) {
-            std::uint32_t c0, c1, r0, r1;
-            range(item, c0, c1, r0, r1);
-            total += std::uint64_t{c1 - c0 + 1} * (r1 - r0 + 1);
-        }
-        if (total <= 16 * std::uint64_t{count} + 4096) break;
-    }
-    b.start.assign(std::size_t{b.columns} * b.rows + 1, 0);
-    for (int pass = 0; pass < 2; ++pass) {
-        std::vector<std::uint32_t> next;
-        if (pass == 1) {
-            for (std::size_t i = 1; i < b.start.size(); ++i) b.start[i] += b.start[i - 1];
-            b.items.resize(b.start.back());
-            next.assign(b.start.begin(), b.start.end() - 1);
-        }
-        for (std::size_t item = 0; item < count; ++item) {
-            std::uint32_t c0, c1, r0, r1;
-            range(item, c0, c1, r0, r1);
-            for (std::uint32_t r = r0; r <= r1; ++r) {
-                for (std::uint32_t c = c0; c <= c1; ++c) {
-                    const std::size_t cell = std::size_t{r} * b.columns + c;
-                    if (pass == 0) {
-                        ++b.start[cell + 1];
-                    } else {
-                        b.items[next[cell]++] = static_cast<std::uint32_t>(item);
-                    }
-                }
-            }
-        }
-    }
+    locator_ = tri::TriangleLocator2(mesh_, 0.5);
+    edge_buckets_ = tri::BucketGrid2(mesh_.xy, mesh_.triangles, boundary_, 2, 1.0);
 }
 
 tri::TriIdx BackgroundSizeMesh2::locate(double x, double y) const {
-    const Buckets& b = triangle_buckets_;
-    if (!std::isfinite(x) || !std::isfinite(y)) return tri::kNone;
-    const double p[2] = {x, y};
-    // Outside the box no triangle can contain the point (exact comparisons); inside, the
-    // point's cell lists every triangle whose box holds it.
-    if (x < b.x0 || y < b.y0 || x > b.x0 + b.columns * b.cell || y > b.y0 + b.rows * b.cell)
-        return tri::kNone;
-    const std::size_t cell = std::size_t{b.row(y)} * b.columns + b.column(x);
-    for (std::uint32_t i = b.start[cell]; i < b.start[cell + 1]; ++i) {
-        const tri::TriIdx t = b.items[i];
-        // The triangle's box first (exact comparisons: a point outside it is outside).
-        const double* box = &boxes_[4 * std::size_t{t}];
-        if (x < box[0] || x > box[2] || y < box[1] || y > box[3]) continue;
-        const std::uint32_t* v = &mesh_.triangles[3 * std::size_t{t}];
-        if (predicates::orient2d(mesh_.point(v[0]), mesh_.point(v[1]), p) !=
-                predicates::Sign::Negative &&
-            predicates::orient2d(mesh_.point(v[1]), mesh_.point(v[2]), p) !=
-                predicates::Sign::Negative &&
-            predicates::orient2d(mesh_.point(v[2]), mesh_.point(v[0]), p) !=
-                predicates::Sign::Negative) {
-            return t;
-        }
-    }
-    return tri::kNone;
+    return locator_.locate(mesh_, x, y);
 }
 
 double BackgroundSizeMesh2::interpolate(tri::TriIdx t, double x, double y) const {
@@ -284,22 +187,22 @@ double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
     // away from q's cell is at least (k - 1) cells from q'.
     // Distances in units of 2^-shift, the power of two at the cell width: the squares neither
     // overflow nor underflow, and a mesh scaled by 2^k finds the same edge, bit for bit.
-    const Buckets& g = edge_buckets_;
-    const int shift = std::isfinite(g.cell) && g.cell > 0 ? -std::ilogb(g.cell) : 0;
+    const tri::BucketGrid2& g = edge_buckets_;
+    const double cell = g.cell_width();
+    const std::uint32_t columns = g.columns(), rows = g.rows();
+    const int shift = std::isfinite(cell) && cell > 0 ? -std::ilogb(cell) : 0;
     const auto scaled = [shift](double d) { return std::ldexp(d, shift); };
-    const double qx = std::clamp(x, g.x0, g.x0 + g.columns * g.cell);
-    const double qy = std::clamp(y, g.y0, g.y0 + g.rows * g.cell);
+    const double qx = std::clamp(x, g.x0(), g.x0() + columns * cell);
+    const double qy = std::clamp(y, g.y0(), g.y0() + rows * cell);
     const double ox = scaled(x - qx), oy = scaled(y - qy);
     const double outside2 = ox * ox + oy * oy;
     const auto column = static_cast<std::int64_t>(g.column(qx));
     const auto row = static_cast<std::int64_t>(g.row(qy));
     double best2 = std::numeric_limits<double>::infinity(), value = 0;
     auto visit = [&](std::int64_t c, std::int64_t r) {
-        if (c < 0 || r < 0 || c >= g.columns || r >= g.rows) return;
-        const std::size_t cell =
-            static_cast<std::size_t>(r) * g.columns + static_cast<std::size_t>(c);
-        for (std::uint32_t i = g.start[cell]; i < g.start[cell + 1]; ++i) {
-            const std::uint32_t e = g.items[i];
+        if (c < 0 || r < 0 || c >= columns || r >= rows) return;
+        for (const std::uint32_t e :
+             g.cell(static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(r))) {
             const std::uint32_t va = boundary_[2 * std::size_t{e}],
                                 vb = boundary_[2 * std::size_t{e} + 1];
             const double* a = mesh_.point(va);
@@ -318,10 +221,10 @@ double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
             }
         }
     };
-    const std::int64_t rings = std::max(g.columns, g.rows);
+    const std::int64_t rings = std::max(columns, rows);
     for (std::int64_t k = 0; k <= rings; ++k) {
         if (k >= 1) {
-            const double gap = static_cast<double>(k - 1) * scaled(g.cell);
+            const double gap = static_cast<double>(k - 1) * scaled(cell);
             if (outside2 + gap * gap > best2) break;
         }
         if (k == 0) {

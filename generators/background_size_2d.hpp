@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "predicates/errors.hpp"
+#include "triangulation/locate_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
 
 namespace exactmesh::generators {
@@ -63,22 +64,14 @@ class BackgroundSizeMesh2 {
     const std::vector<std::uint32_t>& boundary_edges() const { return boundary_; }
 
   private:
-    /// A uniform grid over the mesh's box, each cell listing the items (triangles or boundary
-    /// edges) whose bounding box meets it (CSR).
-    struct Buckets {
-        double x0 = 0, y0 = 0, cell = 1;
-        std::uint32_t columns = 1, rows = 1;
-        std::vector<std::uint32_t> start, items;
-        std::uint32_t column(double x) const;
-        std::uint32_t row(double y) const;
-    };
     triangulation::Triangulation2 mesh_;  // xy and triangles only
     std::vector<double> sizes_;
     std::vector<std::uint32_t> boundary_;
     std::vector<double> boxes_;  // 4·#T: each triangle's x0, y0, x1, y1
-    Buckets triangle_buckets_, edge_buckets_;
-    void fill(Buckets& b, std::size_t count, std::size_t per_item, const std::uint32_t* vertices,
-              double per_cell);
+    // The shared bucket grids (triangulation/locate_2d.hpp): triangles (about 2 per cell) for
+    // point location, boundary edges (about 1 per cell) for the nearest boundary value.
+    triangulation::TriangleLocator2 locator_;
+    triangulation::BucketGrid2 edge_buckets_;
     double interpolate(triangulation::TriIdx t, double x, double y) const;
     double nearest_boundary_value(double x, double y) const;
 };

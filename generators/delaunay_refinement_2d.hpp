@@ -39,8 +39,10 @@
 // orient2d, incircle (SoS), corner_dot_sign (encroachment); construction: circumcenter.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
+#include "generators/counter_table.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -97,6 +99,31 @@ struct RefinementCounters2 {
     std::uint64_t incircle_calls = 0;
     std::uint64_t steiner_points() const { return circumcenters + segment_splits; }
 };
+
+/// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
+/// per field: counter_table_complete).
+inline constexpr std::array kRefinementCounterNames{
+    derived_counter<RefinementCounters2>(
+        "steiner_points",
+        [](const RefinementCounters2& c) -> std::uint64_t { return c.steiner_points(); }),
+    counter("circumcenters", &RefinementCounters2::circumcenters),
+    counter("segment_splits", &RefinementCounters2::segment_splits),
+    counter("shell_splits", &RefinementCounters2::shell_splits),
+    counter("segment_bends", &RefinementCounters2::segment_bends),
+    counter("rejected_circumcenters", &RefinementCounters2::rejected_circumcenters),
+    counter("bad_triangles_queued", &RefinementCounters2::bad_triangles),
+    counter("small_angle_skips", &RefinementCounters2::small_angle_skips),
+    counter("unsplittable", &RefinementCounters2::unsplittable),
+    counter("cavity_triangles", &RefinementCounters2::cavity_triangles),
+    counter("largest_cavity", &RefinementCounters2::largest_cavity),
+    counter("delaunay_flips", &RefinementCounters2::flips),
+    counter("circumcenter_exact_path", &RefinementCounters2::circumcenter_exact),
+    counter("orient_calls", &RefinementCounters2::orient_calls),
+    counter("incircle_calls", &RefinementCounters2::incircle_calls),
+    counter("encroachment_tests", &RefinementCounters2::encroachment_tests),
+    counter("polish_points", &RefinementCounters2::polish_points),
+    counter("polish_stopped", &RefinementCounters2::polish_stopped)};
+static_assert(counter_table_complete(kRefinementCounterNames, 1));
 
 struct RefinementResult2 {
     /// The mesh in the caller's numbering: input vertices first (as constrained_delaunay_2d

@@ -245,107 +245,6 @@ std::vector<Point> discretize_curve(const Curve2& curve, double u0, double u1,
     return spaced_points(curve, u0, u1, size, min_pieces, 4096);
 }
 
-DomainLocator2::DomainLocator2(const tri::Triangulation2& mesh) {
-    const tri::TriIdx count = mesh.triangle_count();
-    if (count == 0) return;
-    double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
-    x0_ = std::numeric_limits<double>::infinity();
-    y0_ = x0_;
-    for (const tri::VertIdx v : mesh.triangles) {
-        x0_ = std::min(x0_, mesh.point(v)[0]);
-        y0_ = std::min(y0_, mesh.point(v)[1]);
-        x1 = std::max(x1, mesh.point(v)[0]);
-        y1 = std::max(y1, mesh.point(v)[1]);
-    }
-    // About one triangle per cell; widths in long double so that extents near the largest
-    // double do not overflow.
-    const long double width = static_cast<long double>(x1) - x0_,
-                      height = static_cast<long double>(y1) - y0_;
-    const long double extent = std::max(width, height);
-    const double cells = std::max(1.0, std::sqrt(static_cast<double>(count)));
-    cell_ = static_cast<double>(extent / cells);
-    if (!(cell_ > 0) || !std::isfinite(cell_)) cell_ = std::numeric_limits<double>::max();
-    columns_ = static_cast<std::uint32_t>(std::clamp<long double>(width / cell_, 0, 4095)) + 1;
-    rows_ = static_cast<std::uint32_t>(std::clamp<long double>(height / cell_, 0, 4095)) + 1;
-    start_.assign(std::size_t{columns_} * rows_ + 1, 0);
-    auto range = [&](tri::TriIdx t, std::uint32_t& c0, std::uint32_t& c1, std::uint32_t& r0,
-                     std::uint32_t& r1) {
-        c0 = r0 = std::numeric_limits<std::uint32_t>::max();
-        c1 = r1 = 0;
-        for (unsigned k = 0; k < 3; ++k) {
-            std::uint32_t c, r;
-            cell_of(mesh.point(mesh.triangles[3 * t + k])[0],
-                    mesh.point(mesh.triangles[3 * t + k])[1], c, r);
-            c0 = std::min(c0, c), c1 = std::max(c1, c), r0 = std::min(r0, r), r1 = std::max(r1, r);
-        }
-    };
-    for (int pass = 0; pass < 2; ++pass) {
-        std::vector<std::uint32_t> fill;
-        if (pass == 1) {
-            for (std::size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
-            triangles_.resize(start_.back());
-            fill.assign(start_.begin(), start_.end() - 1);
-        }
-        for (tri::TriIdx t = 0; t < count; ++t) {
-            std::uint32_t c0, c1, r0, r1;
-            range(t, c0, c1, r0, r1);
-            for (std::uint32_t r = r0; r <= r1; ++r) {
-                for (std::uint32_t c = c0; c <= c1; ++c) {
-                    const std::size_t cell = std::size_t{r} * columns_ + c;
-                    if (pass == 0) {
-                        ++start_[cell + 1];
-                    } else {
-                        triangles_[fill[cell]++] = t;
-                    }
-                }
-            }
-        }
-    }
-}
-
-bool DomainLocator2::cell_of(double x, double y, std::uint32_t& column, std::uint32_t& row) const {
-    const long double fx = (static_cast<long double>(x) - x0_) / cell_,
-                      fy = (static_cast<long double>(y) - y0_) / cell_;
-    if (!(fx >= -1e-9L) || !(fy >= -1e-9L) || !(fx < columns_ + 1e-9L) || !(fy < rows_ + 1e-9L))
-        return false;
-    column = static_cast<std::uint32_t>(std::clamp<long double>(fx, 0, columns_ - 1));
-    row = static_cast<std::uint32_t>(std::clamp<long double>(fy, 0, rows_ - 1));
-    return true;
-}
-
-tri::TriIdx DomainLocator2::locate(const tri::Triangulation2& mesh, double x, double y) const {
-    if (columns_ == 0 || !std::isfinite(x) || !std::isfinite(y)) return tri::kNone;
-    std::uint32_t column, row;
-    if (!cell_of(x, y, column, row)) return tri::kNone;
-    const double p[2] = {x, y};
-    const auto search = [&](std::uint32_t c, std::uint32_t r) -> tri::TriIdx {
-        const std::size_t cell = std::size_t{r} * columns_ + c;
-        for (std::uint32_t i = start_[cell]; i < start_[cell + 1]; ++i) {
-            const tri::TriIdx t = triangles_[i];
-            bool inside = true;
-            for (unsigned k = 0; k < 3 && inside; ++k) {
-                inside = predicates::orient2d(mesh.point(mesh.triangles[3 * t + k]),
-                                              mesh.point(mesh.triangles[3 * t + (k + 1) % 3]),
-                                              p) != predicates::Sign::Negative;
-            }
-            if (inside) return t;
-        }
-        return tri::kNone;
-    };
-    // The point's own cell first: cell_of is monotone in x and in y, so a triangle containing
-    // the point has its box's cells around the point's cell and is listed there. The cells
-    // beside it only when that fails (a point outside, or on a border: kept as a safeguard).
-    if (const tri::TriIdx t = search(column, row); t != tri::kNone) return t;
-    for (std::uint32_t r = row > 0 ? row - 1 : 0; r <= std::min(row + 1, rows_ - 1); ++r) {
-        for (std::uint32_t c = column > 0 ? column - 1 : 0; c <= std::min(column + 1, columns_ - 1);
-             ++c) {
-            if (c == column && r == row) continue;
-            if (const tri::TriIdx t = search(c, r); t != tri::kNone) return t;
-        }
-    }
-    return tri::kNone;
-}
-
 namespace {
 
 /// expected_triangle_count on one triangle (p, q, r), splitting it as documented there.
@@ -464,12 +363,14 @@ bool in_domain(const DomainBoundary2& boundary, double x, double y) {
 
 DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunction& size,
                                            const tri::Cdt2Options& cdt_options) {
-    tri::Cdt2Options options = cdt_options;
-    options.remove_exterior = true;
-    if (options.recovery == tri::SegmentRecovery::Conforming)
-        options.recovery = tri::SegmentRecovery::Swap;
+    return discretize_domain_boundary(MeshDomain2(pslg, cdt_options), size);
+}
+
+DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size) {
+    const tri::Pslg& pslg = domain.pslg();
+    const tri::Cdt2Options& options = domain.domain_options();
     DomainBoundary2 boundary;
-    boundary.cdt = tri::constrained_delaunay_2d(pslg, options);
+    boundary.cdt = domain.triangulation();
     const tri::Triangulation2& mesh = boundary.cdt.mesh;
     if (mesh.triangle_count() == 0) {
         throw InputError(

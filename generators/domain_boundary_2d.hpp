@@ -21,29 +21,17 @@
 #include <functional>
 #include <vector>
 
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
+#include "triangulation/locate_2d.hpp"
 
 namespace exactmesh::generators {
 
-/// Exact point-in-domain queries over a triangulation of the domain: a uniform grid of buckets
-/// holding the triangles whose bounding box meets them, then exact orient2d tests.
-class DomainLocator2 {
-  public:
-    DomainLocator2() = default;
-    explicit DomainLocator2(const triangulation::Triangulation2& mesh);
-    /// A triangle of `mesh` (the one given to the constructor, unchanged) containing (x, y)
-    /// (closed), or kNone when no triangle does.
-    triangulation::TriIdx locate(const triangulation::Triangulation2& mesh, double x,
-                                 double y) const;
-
-  private:
-    double x0_ = 0, y0_ = 0, cell_ = 1;
-    std::uint32_t columns_ = 0, rows_ = 0;
-    std::vector<std::uint32_t> start_;  // CSR over the cells
-    std::vector<triangulation::TriIdx> triangles_;
-    bool cell_of(double x, double y, std::uint32_t& column, std::uint32_t& row) const;
-};
+/// Exact point-in-domain queries over a triangulation of the domain: the shared bucket-grid
+/// locator (triangulation/locate_2d.hpp); locate(mesh, x, y) is a triangle containing (x, y)
+/// (closed), the lowest-numbered one, or kNone.
+using DomainLocator2 = triangulation::TriangleLocator2;
 
 struct DomainBoundary2 {
     /// The constrained Delaunay triangulation of the input PSLG (constrained_delaunay_2d:
@@ -76,6 +64,8 @@ struct DomainBoundary2 {
 DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
                                            const SizeFunction& size,
                                            const triangulation::Cdt2Options& cdt = {});
+/// The same from the domain's triangulation, built once (MeshDomain2::triangulation, copied).
+DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size);
 
 /// Per vertex of a domain's CDT (constrained_delaunay_2d with the exterior removed): the mean
 /// length of the boundary pieces at it (of all its edges where no piece ends there; 0 for a

@@ -453,6 +453,11 @@ FrontalDelaunayResult2 Frontal::run() {
 
 FrontalDelaunayResult2 frontal_delaunay_2d(const tri::Pslg& pslg,
                                            const FrontalDelaunayOptions2& options) {
+    return frontal_delaunay_2d(MeshDomain2(pslg, options.cdt), options);
+}
+
+FrontalDelaunayResult2 frontal_delaunay_2d(const MeshDomain2& domain,
+                                           const FrontalDelaunayOptions2& options) {
     if (!options.size.bounded()) {
         throw InputError(
             "frontal Delaunay needs a size function (the front advances by it); none was given");
@@ -465,38 +470,22 @@ FrontalDelaunayResult2 frontal_delaunay_2d(const tri::Pslg& pslg,
         throw InputError("frontal Delaunay: min_distance " + std::to_string(options.min_distance) +
                          " is outside [0, 1) (times the size)");
     }
-    tri::Cdt2Options cdt = options.cdt;
-    cdt.remove_exterior = true;
-    if (cdt.recovery == tri::SegmentRecovery::Conforming) cdt.recovery = tri::SegmentRecovery::Swap;
+    const tri::Cdt2Options& cdt = domain.domain_options();
     // Regional maximum areas are sizes here: the equilateral edge of the area, where smaller
     // than the size (region_areas_2d.hpp), for the boundary's split as for the front.
     FrontalDelaunayOptions2 sized = options;
-    sized.size = size_with_region_areas(pslg, options.size, cdt);
-    DomainBoundary2 boundary = discretize_domain_boundary(pslg, sized.size, cdt);
+    sized.size = size_with_region_areas(domain, options.size);
+    DomainBoundary2 boundary = discretize_domain_boundary(domain, sized.size);
     const std::uint64_t boundary_points = boundary.xy.size() / 2 - boundary.cdt.mesh.xy.size() / 2;
     // The rebuilt PSLG's warnings (none but merged duplicates, already reported) are dropped.
-    Frontal frontal(pslg, sized, std::move(boundary), cdt);
+    Frontal frontal(domain.pslg(), sized, std::move(boundary), cdt);
     FrontalDelaunayResult2 result = frontal.run();
     result.counters.boundary_points = boundary_points;
     return result;
 }
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const FrontalDelaunayCounters2& c) {
-    return {{"boundary_points", c.boundary_points},
-            {"points_inserted", c.points_inserted},
-            {"accepted_triangles", c.accepted_triangles},
-            {"forced_triangles", c.forced_triangles},
-            {"forced_accepts", c.forced_accepts},
-            {"rejected_encroach", c.rejected_encroach},
-            {"rejected_outside", c.rejected_outside},
-            {"rejected_too_close", c.rejected_too_close},
-            {"rejected_no_conflict", c.rejected_no_conflict},
-            {"active_pops", c.active_pops},
-            {"stale_pops", c.stale_pops},
-            {"cavity_triangles", c.cavity_triangles},
-            {"closeness_incircle", c.closeness_incircle},
-            {"orient_calls", c.orient_calls},
-            {"incircle_calls", c.incircle_calls}};
+    return counters_by_name(kFrontalDelaunayCounterNames, c);
 }
 
 }  // namespace exactmesh::generators

@@ -27,11 +27,14 @@
 // too-close scan), corner_dot_sign (encroachment).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "generators/counter_table.hpp"
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -76,6 +79,26 @@ struct FrontalDelaunayCounters2 {
     std::uint64_t incircle_calls = 0;
 };
 
+/// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
+/// per field: counter_table_complete).
+inline constexpr std::array kFrontalDelaunayCounterNames{
+    counter("boundary_points", &FrontalDelaunayCounters2::boundary_points),
+    counter("points_inserted", &FrontalDelaunayCounters2::points_inserted),
+    counter("accepted_triangles", &FrontalDelaunayCounters2::accepted_triangles),
+    counter("forced_triangles", &FrontalDelaunayCounters2::forced_triangles),
+    counter("forced_accepts", &FrontalDelaunayCounters2::forced_accepts),
+    counter("rejected_encroach", &FrontalDelaunayCounters2::rejected_encroach),
+    counter("rejected_outside", &FrontalDelaunayCounters2::rejected_outside),
+    counter("rejected_too_close", &FrontalDelaunayCounters2::rejected_too_close),
+    counter("rejected_no_conflict", &FrontalDelaunayCounters2::rejected_no_conflict),
+    counter("active_pops", &FrontalDelaunayCounters2::active_pops),
+    counter("stale_pops", &FrontalDelaunayCounters2::stale_pops),
+    counter("cavity_triangles", &FrontalDelaunayCounters2::cavity_triangles),
+    counter("closeness_incircle", &FrontalDelaunayCounters2::closeness_incircle),
+    counter("orient_calls", &FrontalDelaunayCounters2::orient_calls),
+    counter("incircle_calls", &FrontalDelaunayCounters2::incircle_calls)};
+static_assert(counter_table_complete(kFrontalDelaunayCounterNames));
+
 struct FrontalDelaunayResult2 {
     /// The mesh in the caller's numbering: input vertices first (as constrained_delaunay_2d
     /// numbers them), then the boundary points, then the interior ones; exterior and holes
@@ -90,6 +113,9 @@ struct FrontalDelaunayResult2 {
 ///         > 0 where it is evaluated, knobs out of range, or segments enclosing no region.
 /// @throws GeometryError when the Steiner point budget is exhausted.
 FrontalDelaunayResult2 frontal_delaunay_2d(const triangulation::Pslg& pslg,
+                                           const FrontalDelaunayOptions2& options);
+/// The same over the domain built once (its options replace options.cdt).
+FrontalDelaunayResult2 frontal_delaunay_2d(const MeshDomain2& domain,
                                            const FrontalDelaunayOptions2& options);
 
 /// The counters as (name, value) pairs, in declaration order (the CLI's --stats).

@@ -143,22 +143,27 @@ class GradedSites {
     std::vector<Node> nodes_;
 };
 
-}  // namespace
-
-SizeFunction graded_size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& cdt,
-                                       double gradation) {
+/// @throws InputError unless g is finite and > 0.
+void check_gradation(double gradation) {
     if (!(std::isfinite(gradation) && gradation > 0)) {
         std::ostringstream text;
         text.precision(17);
         text << "the gradation of the default size must be finite and > 0, not " << gradation;
         throw InputError(text.str());
     }
-    tri::Cdt2Options options = cdt;
-    options.remove_exterior = true;
-    // The size needs the domain, not a conforming triangulation of it.
-    if (options.recovery == tri::SegmentRecovery::Conforming)
-        options.recovery = tri::SegmentRecovery::Swap;
-    const tri::Cdt2Result domain = tri::constrained_delaunay_2d(pslg, options);
+}
+
+}  // namespace
+
+SizeFunction graded_size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& cdt,
+                                       double gradation) {
+    check_gradation(gradation);
+    return graded_size_from_boundary(MeshDomain2(pslg, cdt), gradation);
+}
+
+SizeFunction graded_size_from_boundary(const MeshDomain2& domain_of, double gradation) {
+    check_gradation(gradation);
+    const tri::Cdt2Result& domain = domain_of.triangulation();
     const tri::Triangulation2& mesh = domain.mesh;
     if (mesh.triangle_count() == 0) throw InputError("the segments enclose no region");
     const std::size_t n = mesh.vertex_count();

@@ -24,6 +24,7 @@
 // overflows or underflows at 2^+-600), so every comparison and value scales exactly by 2^k.
 #pragma once
 
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -38,6 +39,11 @@ inline constexpr double kDefaultGradation = 0.5;
 ///         or g is not finite and > 0.
 SizeFunction graded_size_from_boundary(const triangulation::Pslg& pslg,
                                        const triangulation::Cdt2Options& cdt = {},
+                                       double gradation = kDefaultGradation);
+
+/// The same over the domain's triangulation, built once (MeshDomain2::triangulation).
+/// @throws InputError as above.
+SizeFunction graded_size_from_boundary(const MeshDomain2& domain,
                                        double gradation = kDefaultGradation);
 
 }  // namespace exactmesh::generators

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "generators/advancing_front_2d.hpp"
@@ -22,24 +23,7 @@ namespace exactmesh::generators {
 namespace tri = exactmesh::triangulation;
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const RefinementCounters2& c) {
-    return {{"steiner_points", c.steiner_points()},
-            {"circumcenters", c.circumcenters},
-            {"segment_splits", c.segment_splits},
-            {"shell_splits", c.shell_splits},
-            {"segment_bends", c.segment_bends},
-            {"rejected_circumcenters", c.rejected_circumcenters},
-            {"bad_triangles_queued", c.bad_triangles},
-            {"small_angle_skips", c.small_angle_skips},
-            {"unsplittable", c.unsplittable},
-            {"cavity_triangles", c.cavity_triangles},
-            {"largest_cavity", c.largest_cavity},
-            {"delaunay_flips", c.flips},
-            {"circumcenter_exact_path", c.circumcenter_exact},
-            {"orient_calls", c.orient_calls},
-            {"incircle_calls", c.incircle_calls},
-            {"encroachment_tests", c.encroachment_tests},
-            {"polish_points", c.polish_points},
-            {"polish_stopped", c.polish_stopped}};
+    return counters_by_name(kRefinementCounterNames, c);
 }
 
 namespace {
@@ -141,15 +125,27 @@ double minimum_triangle_count(const tri::Triangulation2& domain, const SizeFunct
 }
 
 void check_size_budget(const tri::Pslg& pslg, const MeshOptions2& options, bool hard_budget) {
+    check_size_budget(MeshDomain2(pslg, options.cdt), options, hard_budget);
+}
+
+void check_size_budget(const MeshDomain2& domain_of, const MeshOptions2& options,
+                       bool hard_budget) {
+    const tri::Pslg& pslg = domain_of.pslg();
     const bool areas = has_region_areas(pslg.regions);
     if (!options.size.bounded() && !areas) return;
-    tri::Cdt2Options cdt = options.cdt;
-    cdt.remove_exterior = true;
-    // With regional maximum areas, the regions are numbered so that each triangle names its own.
-    const std::vector<double> numbered =
-        areas ? numbered_regions(pslg.regions) : std::vector<double>{};
-    const tri::Cdt2Result domain = tri::constrained_delaunay_2d(
-        areas ? tri::Pslg{pslg.xy, pslg.segments, pslg.holes, numbered} : pslg, cdt);
+    // With regional maximum areas, the regions are numbered so that each triangle names its own
+    // (as MeshDomain2 numbers them). The estimate has always taken the caller's recovery: a
+    // conforming one (not the domain's) is built here.
+    std::optional<tri::Cdt2Result> conforming;
+    if (options.cdt.recovery == tri::SegmentRecovery::Conforming) {
+        tri::Cdt2Options cdt = options.cdt;
+        cdt.remove_exterior = true;
+        const std::vector<double> numbered =
+            areas ? numbered_regions(pslg.regions) : std::vector<double>{};
+        conforming = tri::constrained_delaunay_2d(
+            areas ? tri::Pslg{pslg.xy, pslg.segments, pslg.holes, numbered} : pslg, cdt);
+    }
+    const tri::Cdt2Result& domain = conforming ? *conforming : domain_of.triangulation();
     const double inputs = static_cast<double>(pslg.xy.size() / 2);
     const bool given = hard_budget && options.max_steiner_points != 0;
     // A triangulation of V vertices has fewer than 2V triangles.
@@ -194,8 +190,9 @@ void refuse_region_areas(const tri::Pslg& pslg, const MeshOptions2& options,
     }
 }
 
-MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& options) {
-    check_size_budget(pslg, options, true);
+MeshRun2 run_delaunay_refinement(const MeshDomain2& domain, const MeshOptions2& options) {
+    const tri::Pslg& pslg = domain.pslg();
+    check_size_budget(domain, options, true);
     RefinementOptions2 refinement;
     refinement.min_angle = options.min_angle;
     refinement.polish_angle = options.polish_angle;
@@ -211,28 +208,30 @@ MeshRun2 run_delaunay_refinement(const tri::Pslg& pslg, const MeshOptions2& opti
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
-MeshRun2 run_quadtree(const tri::Pslg& pslg, const MeshOptions2& options) {
+MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& options) {
+    const tri::Pslg& pslg = domain.pslg();
     refuse_region_areas(pslg, options, "quadtree");
-    check_size_budget(pslg, options, true);
+    check_size_budget(domain, options, true);
     QuadtreeOptions2 quadtree;
     quadtree.size = options.size;
     quadtree.cdt = options.cdt;
     // The shared budget counts Steiner points; a leaf adds about one vertex.
     quadtree.max_leaves = options.max_steiner_points;
-    QuadtreeResult2 result = quadtree_mesh_2d(pslg, quadtree);
+    QuadtreeResult2 result = quadtree_mesh_2d(domain, quadtree);
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
-MeshRun2 run_advancing_front(const tri::Pslg& pslg, const MeshOptions2& options) {
+MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& options) {
+    const tri::Pslg& pslg = domain.pslg();
     refuse_region_areas(pslg, options, "advancing-front");
-    check_size_budget(pslg, options, false);
+    check_size_budget(domain, options, false);
     AdvancingFrontOptions2 front;
     front.size = options.size;
     // The shared budget counts Steiner points; a triangle adds about half a point.
     front.max_triangles =
         std::min(options.max_steiner_points, std::numeric_limits<std::uint64_t>::max() / 2) * 2;
     front.cdt = options.cdt;
-    AdvancingFrontResult2 result = advancing_front_2d(pslg, front);
+    AdvancingFrontResult2 result = advancing_front_2d(domain, front);
     if (result.counters.closure_triangles > 0) {
         result.mesh.warnings.push_back(
             "the triangle budget ran out: " + std::to_string(result.counters.closure_triangles) +
@@ -241,14 +240,15 @@ MeshRun2 run_advancing_front(const tri::Pslg& pslg, const MeshOptions2& options)
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
-MeshRun2 run_advancing_front_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
+MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
+    const tri::Pslg& pslg = domain.pslg();
     refuse_region_areas(pslg, options, "advancing-front-delaunay");
-    check_size_budget(pslg, options, false);
+    check_size_budget(domain, options, false);
     AdvancingFrontDelaunayOptions2 front;
     front.size = options.size;
     front.max_new_points = options.max_steiner_points;
     front.cdt = options.cdt;
-    AdvancingFrontDelaunayResult2 result = advancing_front_delaunay_2d(pslg, front);
+    AdvancingFrontDelaunayResult2 result = advancing_front_delaunay_2d(domain, front);
     if (result.counters.closure_triangles > 0) {
         result.mesh.warnings.push_back(
             std::to_string(result.counters.closure_front_edges) +
@@ -258,40 +258,81 @@ MeshRun2 run_advancing_front_delaunay(const tri::Pslg& pslg, const MeshOptions2&
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
-MeshRun2 run_frontal_delaunay(const tri::Pslg& pslg, const MeshOptions2& options) {
-    check_size_budget(pslg, options, true);
+MeshRun2 run_frontal_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
+    check_size_budget(domain, options, true);
     FrontalDelaunayOptions2 frontal;
     frontal.size = options.size;
     frontal.max_steiner_points = options.max_steiner_points;
     frontal.cdt = options.cdt;
-    FrontalDelaunayResult2 result = frontal_delaunay_2d(pslg, frontal);
+    FrontalDelaunayResult2 result = frontal_delaunay_2d(domain, frontal);
     return {std::move(result.mesh), counter_list(result.counters)};
 }
 
 constexpr std::array kGenerators{
-    MeshGenerator2{"delaunay-refinement",
-                   "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
-                   "split first; guaranteed minimum angle",
-                   true, false, true, &run_delaunay_refinement},
+    MeshGenerator2{
+        "delaunay-refinement",
+        "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
+        "split first; guaranteed minimum angle",
+        true,
+        false,
+        true,
+        {MeshOption::Size, MeshOption::MinAngle, MeshOption::PolishAngle,
+         MeshOption::MaxSteinerPoints, MeshOption::RegionAttributes, MeshOption::RegionAreas},
+        &run_delaunay_refinement},
     MeshGenerator2{"quadtree",
                    "Yerry-Shephard/Baehmann: balanced quadtree leaves as 45-45-90 templates, "
                    "the band along the boundary by a refined constrained Delaunay triangulation",
-                   false, true, false, &run_quadtree},
+                   false,
+                   true,
+                   false,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints},
+                   &run_quadtree},
     MeshGenerator2{"advancing-front",
                    "Lo/Peraire/Lohner: shortest front edge first, apex on its median at the local "
                    "size or a nearby front vertex, exact acceptance tests; needs a size",
-                   false, true, false, &run_advancing_front},
+                   false,
+                   true,
+                   false,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints},
+                   &run_advancing_front},
     MeshGenerator2{"advancing-front-delaunay",
                    "Mavriplis: shortest front edge first, a point at the circumradius bound, the "
                    "Tanemura-Merriam (Delaunay) choice among nearby front points; needs a size",
-                   false, true, false, &run_advancing_front_delaunay},
+                   false,
+                   true,
+                   false,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints},
+                   &run_advancing_front_delaunay},
     MeshGenerator2{"frontal",
                    "Rebay: points placed from the boundary inwards on the front edges' "
                    "bisectors, inserted by Bowyer-Watson; needs a size",
-                   true, true, true, &run_frontal_delaunay},
+                   true,
+                   true,
+                   true,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints, MeshOption::RegionAttributes,
+                    MeshOption::RegionAreas},
+                   &run_frontal_delaunay},
 };
 
 }  // namespace
+
+std::string_view mesh_option_name(MeshOption option) {
+    switch (option) {
+        case MeshOption::Size:
+            return "--size";
+        case MeshOption::MinAngle:
+            return "--min-angle";
+        case MeshOption::PolishAngle:
+            return "--polish-angle";
+        case MeshOption::MaxSteinerPoints:
+            return "--max-steiner";
+        case MeshOption::RegionAttributes:
+            return "regional attributes";
+        case MeshOption::RegionAreas:
+            return "region maximum areas";
+    }
+    return "an option";
+}
 
 std::span<const MeshGenerator2> mesh_generators_2d() {
     return kGenerators;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "generators/delaunay_refinement_2d.hpp"
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -36,6 +38,36 @@ struct MeshRun2 {
     std::vector<std::pair<std::string, std::uint64_t>> counters;
 };
 
+/// The options and input features a generator may honour (MeshGenerator2::honours). A caller
+/// that is given one the generator ignores says so (`exactmesh mesh` warns, or refuses where the
+/// README documents a refusal) instead of dropping it silently.
+enum class MeshOption : std::uint32_t {
+    Size = 1u << 0,              ///< MeshOptions2::size
+    MinAngle = 1u << 1,          ///< MeshOptions2::min_angle (--min-angle)
+    PolishAngle = 1u << 2,       ///< MeshOptions2::polish_angle (--polish-angle)
+    MaxSteinerPoints = 1u << 3,  ///< MeshOptions2::max_steiner_points (--max-steiner)
+    RegionAttributes = 1u << 4,  ///< the regions' attributes, carried to the mesh's triangles
+    RegionAreas = 1u << 5,       ///< the regions' maximum areas (the 4th number, > 0)
+};
+
+/// A set of MeshOption.
+class MeshOptionSet {
+  public:
+    constexpr MeshOptionSet() = default;
+    constexpr MeshOptionSet(std::initializer_list<MeshOption> options) {
+        for (const MeshOption o : options) bits_ |= static_cast<std::uint32_t>(o);
+    }
+    constexpr bool contains(MeshOption o) const {
+        return (bits_ & static_cast<std::uint32_t>(o)) != 0;
+    }
+
+  private:
+    std::uint32_t bits_ = 0;
+};
+
+/// How a warning or an error names an option ("--min-angle", "regional attributes").
+std::string_view mesh_option_name(MeshOption option);
+
 struct MeshGenerator2 {
     std::string_view name;     ///< "delaunay-refinement", as the CLI spells it
     std::string_view summary;  ///< one line for --help
@@ -44,7 +76,17 @@ struct MeshGenerator2 {
     /// Honours regional maximum areas (the 4th number of a region, > 0); the others raise
     /// InputError on a PSLG with one (they carry no regions).
     bool region_areas;
-    MeshRun2 (*run)(const triangulation::Pslg& pslg, const MeshOptions2& options);
+    /// The options it honours; it ignores the others.
+    MeshOptionSet honours;
+    /// Runs it over the domain built once (the same object for the caller's other steps: the
+    /// graded default size, graded_size_from_boundary(domain)).
+    MeshRun2 (*run_on_domain)(const MeshDomain2& domain, const MeshOptions2& options);
+
+    /// Runs it on a PSLG, the domain built inside (for one-off callers: tests, benchmarks).
+    MeshRun2 run(const triangulation::Pslg& pslg, const MeshOptions2& options) const {
+        const MeshDomain2 domain(pslg, options.cdt);
+        return run_on_domain(domain, options);
+    }
 };
 
 /// Every generator, in the order the CLI lists them.
@@ -73,6 +115,9 @@ double minimum_triangle_count(const triangulation::Triangulation2& domain, const
 /// @throws InputError naming the size, the estimate and the budget, at once.
 void check_size_budget(const triangulation::Pslg& pslg, const MeshOptions2& options,
                        bool hard_budget);
+/// The same over the domain built once (MeshDomain2::triangulation; a domain of its own only
+/// when options.cdt asks for Conforming recovery, as the estimate always has).
+void check_size_budget(const MeshDomain2& domain, const MeshOptions2& options, bool hard_budget);
 
 /// The automatic triangle budget of check_size_budget.
 inline constexpr double kAutomaticTriangleBudget = 0x1p26;

@@ -224,11 +224,12 @@ struct Components {
 
 class QuadtreeMesher {
   public:
-    QuadtreeMesher(const tri::Pslg& pslg, const QuadtreeOptions2& options)
-        : pslg_(pslg), options_(options) {}
+    QuadtreeMesher(const MeshDomain2& domain, const QuadtreeOptions2& options)
+        : domain_(domain), pslg_(domain.pslg()), options_(options) {}
     QuadtreeResult2 run();
 
   private:
+    const MeshDomain2& domain_;
     const tri::Pslg& pslg_;
     const QuadtreeOptions2& options_;
     DomainBoundary2 boundary_;
@@ -1046,7 +1047,7 @@ QuadtreeResult2 QuadtreeMesher::run() {
             "clearance in [1/16, 4], corner_clearance 0 or in [1/16, 1/2], band_min_angle in [0, "
             "30], piece_factor 0 or in [1, 64]");
     }
-    boundary_ = discretize_domain_boundary(pslg_, o.size, o.cdt);
+    boundary_ = discretize_domain_boundary(domain_, o.size);
     // Automatic: 64 leaves per triangle the size asks for and per boundary piece (features
     // between segments refine far below the size: crossings at small angles need thousands),
     // at least 2^16, at most 2^24. A domain whose features are far finer than any such count
@@ -1109,33 +1110,15 @@ QuadtreeResult2 QuadtreeMesher::run() {
 }  // namespace
 
 QuadtreeResult2 quadtree_mesh_2d(const tri::Pslg& pslg, const QuadtreeOptions2& options) {
-    return QuadtreeMesher(pslg, options).run();
+    return quadtree_mesh_2d(MeshDomain2(pslg, options.cdt), options);
+}
+
+QuadtreeResult2 quadtree_mesh_2d(const MeshDomain2& domain, const QuadtreeOptions2& options) {
+    return QuadtreeMesher(domain, options).run();
 }
 
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const QuadtreeCounters2& c) {
-    return {{"leaves", c.leaves},
-            {"size_splits", c.size_splits},
-            {"boundary_splits", c.boundary_splits},
-            {"feature_splits", c.feature_splits},
-            {"balance_splits", c.balance_splits},
-            {"depth", c.depth},
-            {"depth_limit", c.depth_limit},
-            {"piece_splits", c.piece_splits},
-            {"box_tests", c.box_tests},
-            {"domain_queries", c.domain_queries},
-            {"kept_leaves", c.kept_leaves},
-            {"fan_leaves", c.fan_leaves},
-            {"template_triangles", c.template_triangles},
-            {"kept_components", c.kept_components},
-            {"outline_edges", c.outline_edges},
-            {"band_corners", c.band_corners},
-            {"dropped_corners", c.dropped_corners},
-            {"band_vertices", c.band_vertices},
-            {"band_triangles", c.band_triangles},
-            {"band_flips", c.band_flips},
-            {"band_circumcenters", c.band_circumcenters},
-            {"band_rejected", c.band_rejected},
-            {"band_piece_splits", c.band_piece_splits}};
+    return counters_by_name(kQuadtreeCounterNames, c);
 }
 
 }  // namespace exactmesh::generators

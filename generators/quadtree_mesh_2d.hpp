@@ -28,11 +28,14 @@
 // in the band's CDT); constructions: circumcenter.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "generators/counter_table.hpp"
+#include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -101,6 +104,34 @@ struct QuadtreeCounters2 {
     std::uint64_t band_piece_splits = 0;   ///< boundary pieces halved for encroaching circumcenters
 };
 
+/// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
+/// per field: counter_table_complete).
+inline constexpr std::array kQuadtreeCounterNames{
+    counter("leaves", &QuadtreeCounters2::leaves),
+    counter("size_splits", &QuadtreeCounters2::size_splits),
+    counter("boundary_splits", &QuadtreeCounters2::boundary_splits),
+    counter("feature_splits", &QuadtreeCounters2::feature_splits),
+    counter("balance_splits", &QuadtreeCounters2::balance_splits),
+    counter("depth", &QuadtreeCounters2::depth),
+    counter("depth_limit", &QuadtreeCounters2::depth_limit),
+    counter("piece_splits", &QuadtreeCounters2::piece_splits),
+    counter("box_tests", &QuadtreeCounters2::box_tests),
+    counter("domain_queries", &QuadtreeCounters2::domain_queries),
+    counter("kept_leaves", &QuadtreeCounters2::kept_leaves),
+    counter("fan_leaves", &QuadtreeCounters2::fan_leaves),
+    counter("template_triangles", &QuadtreeCounters2::template_triangles),
+    counter("kept_components", &QuadtreeCounters2::kept_components),
+    counter("outline_edges", &QuadtreeCounters2::outline_edges),
+    counter("band_corners", &QuadtreeCounters2::band_corners),
+    counter("dropped_corners", &QuadtreeCounters2::dropped_corners),
+    counter("band_vertices", &QuadtreeCounters2::band_vertices),
+    counter("band_triangles", &QuadtreeCounters2::band_triangles),
+    counter("band_flips", &QuadtreeCounters2::band_flips),
+    counter("band_circumcenters", &QuadtreeCounters2::band_circumcenters),
+    counter("band_rejected", &QuadtreeCounters2::band_rejected),
+    counter("band_piece_splits", &QuadtreeCounters2::band_piece_splits)};
+static_assert(counter_table_complete(kQuadtreeCounterNames));
+
 struct QuadtreeResult2 {
     /// The mesh in the caller's numbering: input vertices first, then the boundary's points,
     /// then the quadtree's; pieces with their input segment; the domain CDT's warnings.
@@ -116,6 +147,8 @@ struct QuadtreeResult2 {
 /// @throws GeometryError when the band cannot be triangulated without new vertices (boundary
 ///         pieces that cross after rounding their split points).
 QuadtreeResult2 quadtree_mesh_2d(const triangulation::Pslg& pslg, const QuadtreeOptions2& options);
+/// The same over the domain built once (its options replace options.cdt for the domain).
+QuadtreeResult2 quadtree_mesh_2d(const MeshDomain2& domain, const QuadtreeOptions2& options);
 
 /// The counters named as `exactmesh mesh --stats` prints them.
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const QuadtreeCounters2& c);

@@ -41,23 +41,17 @@ double count_at(const double* p, const double* q, const double* r, double s) {
 /// about each vertex, and exact point location over it.
 class RegionSides {
   public:
-    RegionSides(const tri::Pslg& pslg, const tri::Cdt2Options& options) {
-        const std::vector<double> numbered = numbered_regions(pslg.regions);
-        tri::Cdt2Options cdt = options;
-        cdt.remove_exterior = true;
-        if (cdt.recovery == tri::SegmentRecovery::Conforming) {
-            cdt.recovery = tri::SegmentRecovery::Swap;
-        }
-        tri::Cdt2Result result = tri::constrained_delaunay_2d(
-            tri::Pslg{pslg.xy, pslg.segments, pslg.holes, numbered}, cdt);
-        domain_ = std::move(result.mesh);
-        locator_ = DomainLocator2(domain_);
+    /// `cdt`: the domain's triangulation with region numbers as attributes (MeshDomain2 with
+    /// regional areas), kept (shared) for the point location.
+    RegionSides(std::span<const double> regions, std::shared_ptr<const tri::Cdt2Result> cdt)
+        : cdt_(std::move(cdt)), domain_(cdt_->mesh), locator_(domain_) {
+        const tri::Cdt2Result& result = *cdt_;
         side_.assign(domain_.triangle_count(), kInfinity);
         at_vertex_.assign(domain_.vertex_count(), kInfinity);
         for (tri::TriIdx t = 0; t < domain_.triangle_count(); ++t) {
             if (t < result.triangle_attributes.size()) {
                 side_[t] = equilateral_side_of_area(
-                    region_area_of(pslg.regions, result.triangle_attributes[t]));
+                    region_area_of(regions, result.triangle_attributes[t]));
             }
             for (unsigned k = 0; k < 3; ++k) {
                 double& s = at_vertex_[domain_.triangles[3 * t + k]];
@@ -87,7 +81,8 @@ class RegionSides {
     }
 
   private:
-    tri::Triangulation2 domain_;
+    std::shared_ptr<const tri::Cdt2Result> cdt_;
+    const tri::Triangulation2& domain_;  // cdt_->mesh
     DomainLocator2 locator_;
     std::vector<double> side_, at_vertex_;
 };
@@ -146,7 +141,13 @@ double region_area_triangle_count(const tri::Cdt2Result& domain, std::span<const
 SizeFunction size_with_region_areas(const tri::Pslg& pslg, const SizeFunction& size,
                                     const tri::Cdt2Options& cdt) {
     if (!size.bounded() || !has_region_areas(pslg.regions)) return size;
-    auto sides = std::make_shared<const RegionSides>(pslg, cdt);
+    return size_with_region_areas(MeshDomain2(pslg, cdt), size);
+}
+
+SizeFunction size_with_region_areas(const MeshDomain2& domain, const SizeFunction& size) {
+    if (!size.bounded() || !domain.attributes_are_region_numbers()) return size;
+    auto sides =
+        std::make_shared<const RegionSides>(domain.pslg().regions, domain.shared_triangulation());
     return SizeFunction::analytic(
         [sides, size](double x, double y) { return std::min(size(x, y), (*sides)(x, y)); },
         "min(" + size.describe() + ", the regions' maximum areas as equilateral sizes)");

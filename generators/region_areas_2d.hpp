@@ -56,4 +56,8 @@ double region_area_triangle_count(const triangulation::Cdt2Result& domain,
 SizeFunction size_with_region_areas(const triangulation::Pslg& pslg, const SizeFunction& size,
                                     const triangulation::Cdt2Options& cdt);
 
+class MeshDomain2;
+/// The same over the domain's triangulation, built once (MeshDomain2::triangulation).
+SizeFunction size_with_region_areas(const MeshDomain2& domain, const SizeFunction& size);
+
 }  // namespace exactmesh::generators

@@ -471,6 +471,13 @@ region_areas() {
     expect_error 2 "two\.poly:18: region maximum area 0\.001: region maximum areas are honoured by delaunay-refinement and frontal only \(--generator $generator\)" \
       mesh "$work/two.poly" --generator "$generator" -o "$work/x.ele"
   done
+  # Regional attributes without areas: a generator that carries no regions warns (issue 12).
+  sed 's/ 0\.001$/ 0/; s/ 0\.01$/ 0/' "$work/two.poly" >"$work/attributes.poly"
+  run 0 mesh "$work/attributes.poly" --generator quadtree -o "$work/x.ele" &&
+    grep -q "attributes\.poly:18: 2 regions' attributes ignored: --generator quadtree does not honour regional attributes" "$work/err" ||
+    fail "quadtree: no warning about the regional attributes: $(cat "$work/err")"
+  run 0 mesh "$work/attributes.poly" --generator frontal -o "$work/x.ele" && [[ ! -s $work/err ]] ||
+    fail "frontal warned about regional attributes it carries: $(cat "$work/err")"
   sed 's/7\.5 0\.001$/7.5 1e-12/' "$work/two.poly" >"$work/tiny.poly"
   expect_error 2 "the regions' maximum areas ask for about 5e\+11 or more triangles" mesh "$work/tiny.poly" -o "$work/x.ele"
   run 0 cdt "$work/two.poly" -o "$work/cdt.ele" &&

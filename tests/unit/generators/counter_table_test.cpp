@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// Tests of generators/counter_table.hpp: a name table lists every field once, in order, and the
+// generators' tables keep the names --stats printed before the tables (issue 12).
+#include "generators/counter_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <string>
+
+#include "generators/advancing_front_2d.hpp"
+#include "generators/mesh_generators_2d.hpp"
+#include "generators/quadtree_mesh_2d.hpp"
+
+namespace gen = exactmesh::generators;
+
+namespace {
+
+struct ThreeCounters {
+    std::uint64_t first = 0;
+    std::uint32_t second = 0;
+    std::uint64_t third = 0;
+};
+
+constexpr std::array kAll{gen::counter("first", &ThreeCounters::first),
+                          gen::counter("second", &ThreeCounters::second),
+                          gen::counter("third", &ThreeCounters::third)};
+constexpr std::array kMissing{gen::counter("first", &ThreeCounters::first),
+                              gen::counter("third", &ThreeCounters::third)};
+constexpr std::array kTwice{gen::counter("first", &ThreeCounters::first),
+                            gen::counter("again", &ThreeCounters::first),
+                            gen::counter("third", &ThreeCounters::third)};
+
+}  // namespace
+
+TEST(CounterTable, CompleteOnlyWhenEveryFieldIsNamedOnce) {
+    static_assert(gen::counter_table_complete(kAll));
+    static_assert(!gen::counter_table_complete(kMissing));
+    static_assert(!gen::counter_table_complete(kTwice));
+    // A derived row is allowed only when declared.
+    static_assert(!gen::counter_table_complete(kAll, 1));
+    EXPECT_TRUE(gen::counter_table_complete(kAll));
+}
+
+TEST(CounterTable, ListsNamesAndValuesInTableOrder) {
+    const ThreeCounters c{7, 11, 13};
+    const auto list = gen::counters_by_name(kAll, c);
+    ASSERT_EQ(list.size(), 3u);
+    EXPECT_EQ(list[0], (std::pair<std::string, std::uint64_t>{"first", 7}));
+    EXPECT_EQ(list[1], (std::pair<std::string, std::uint64_t>{"second", 11}));
+    EXPECT_EQ(list[2], (std::pair<std::string, std::uint64_t>{"third", 13}));
+}
+
+TEST(CounterTable, GeneratorTablesKeepTheirNames) {
+    gen::RefinementCounters2 r;
+    r.circumcenters = 3;
+    r.segment_splits = 4;
+    r.flips = 9;
+    const auto refinement = gen::counter_list(r);
+    ASSERT_EQ(refinement.size(), 18u);
+    EXPECT_EQ(refinement.front(), (std::pair<std::string, std::uint64_t>{"steiner_points", 7}));
+    EXPECT_EQ(refinement[11], (std::pair<std::string, std::uint64_t>{"delaunay_flips", 9}));
+    EXPECT_EQ(refinement.back().first, "polish_stopped");
+    gen::QuadtreeCounters2 q;
+    q.depth = 5;
+    const auto quadtree = gen::counter_list(q);
+    ASSERT_EQ(quadtree.size(), 23u);
+    EXPECT_EQ(quadtree[5], (std::pair<std::string, std::uint64_t>{"depth", 5}));
+    EXPECT_EQ(quadtree.back().first, "band_piece_splits");
+    const auto front = gen::counter_list(gen::AdvancingFrontCounters2{});
+    ASSERT_EQ(front.size(), 13u);
+    EXPECT_EQ(front.back().first, "orient_calls");
+}

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+// Tests of generators/mesh_domain_2d.hpp (issue 12): the domain's triangulation is built once,
+// lazily, equal to the one each step used to build for itself, and a generator run over it
+// gives the mesh it gives on the PSLG.
+#include "generators/mesh_domain_2d.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "generators/graded_boundary_size_2d.hpp"
+#include "generators/mesh_generators_2d.hpp"
+#include "generators/region_areas_2d.hpp"
+#include "generators/sample_domains.hpp"
+#include "predicates/errors.hpp"
+#include "tests/support/pslg_fixtures_2d.hpp"
+#include "triangulation/constrained_2d.hpp"
+
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
+using exactmesh::testing::Input;
+
+namespace {
+
+/// A unit square split at x = 0.5 into two regions (attributes 7.5 and -3), maximum areas as
+/// given.
+Input two_regions(double left_area, double right_area) {
+    return {{0, 0, 0.5, 0, 1, 0, 1, 1, 0.5, 1, 0, 1},
+            {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 1, 4},
+            {},
+            {0.25, 0.5, 7.5, left_area, 0.75, 0.5, -3, right_area}};
+}
+
+void expect_same_triangulation(const tri::Cdt2Result& a, const tri::Cdt2Result& b) {
+    EXPECT_EQ(a.mesh.xy, b.mesh.xy);
+    EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+    EXPECT_EQ(a.pieces, b.pieces);
+    EXPECT_EQ(a.piece_segment, b.piece_segment);
+    EXPECT_EQ(a.warnings, b.warnings);
+}
+
+}  // namespace
+
+TEST(MeshDomain2, BuiltOnceOnFirstUseAsTheDomainOfThePslg) {
+    const Input in = exactmesh::testing::from_domain(
+        gen::sample_domain(gen::SampleDomain::Key, gen::SizeFunction::uniform(0.05)));
+    tri::Cdt2Options options;
+    options.recovery = tri::SegmentRecovery::Conforming;  // the domain takes Swap instead
+    const gen::MeshDomain2 domain(in.pslg(), options);
+    EXPECT_FALSE(domain.built());
+    const tri::Cdt2Result& first = domain.triangulation();
+    EXPECT_TRUE(domain.built());
+    EXPECT_EQ(&first, &domain.triangulation());  // the same object, not a rebuild
+    EXPECT_EQ(domain.domain_options().recovery, tri::SegmentRecovery::Swap);
+    EXPECT_TRUE(domain.domain_options().remove_exterior);
+    tri::Cdt2Options swap;
+    swap.remove_exterior = true;
+    expect_same_triangulation(first, tri::constrained_delaunay_2d(in.pslg(), swap));
+    EXPECT_FALSE(domain.attributes_are_region_numbers());
+}
+
+TEST(MeshDomain2, RegionAreasNumberTheAttributesAndKeepTheTriangles) {
+    const Input in = two_regions(0.001, 0.01);
+    const gen::MeshDomain2 domain(in.pslg());
+    ASSERT_TRUE(domain.attributes_are_region_numbers());
+    const tri::Cdt2Result& cdt = domain.triangulation();
+    const tri::Cdt2Result plain = tri::constrained_delaunay_2d(in.pslg());
+    expect_same_triangulation(cdt, plain);
+    ASSERT_EQ(cdt.triangle_attributes.size(), plain.triangle_attributes.size());
+    for (std::size_t t = 0; t < cdt.triangle_attributes.size(); ++t) {
+        EXPECT_EQ(gen::region_attribute_of(in.regions, cdt.triangle_attributes[t]),
+                  plain.triangle_attributes[t]);
+    }
+    // Without areas, the attributes stay the input's.
+    const Input attributes = two_regions(0, 0);
+    const gen::MeshDomain2 plain_domain(attributes.pslg());
+    EXPECT_FALSE(plain_domain.attributes_are_region_numbers());
+    EXPECT_EQ(plain_domain.triangulation().triangle_attributes,
+              tri::constrained_delaunay_2d(attributes.pslg()).triangle_attributes);
+}
+
+TEST(MeshDomain2, ANonFiniteAttributeIsReportedThoughTheAttributesAreNumbered) {
+    Input in = two_regions(0.001, 0.01);
+    in.regions[2] = std::numeric_limits<double>::quiet_NaN();
+    const gen::MeshDomain2 domain(in.pslg());
+    EXPECT_THROW(domain.triangulation(), exactmesh::InputError);
+}
+
+TEST(MeshDomain2, EveryGeneratorMakesTheSameMeshOverTheSharedDomain) {
+    const Input in = exactmesh::testing::from_domain(
+        gen::sample_domain(gen::SampleDomain::Key, gen::SizeFunction::uniform(0.05)));
+    for (const gen::MeshGenerator2& generator : gen::mesh_generators_2d()) {
+        SCOPED_TRACE(std::string(generator.name));
+        gen::MeshOptions2 options;
+        const gen::MeshDomain2 domain(in.pslg(), options.cdt);
+        options.size = gen::graded_size_from_boundary(domain);
+        const gen::MeshRun2 shared = generator.run_on_domain(domain, options);
+        gen::MeshOptions2 alone;
+        alone.size = gen::graded_size_from_boundary(in.pslg());
+        const gen::MeshRun2 own = generator.run(in.pslg(), alone);
+        EXPECT_EQ(shared.mesh.mesh.xy, own.mesh.mesh.xy);
+        EXPECT_EQ(shared.mesh.mesh.triangles, own.mesh.mesh.triangles);
+        EXPECT_EQ(shared.mesh.warnings, own.mesh.warnings);
+        EXPECT_EQ(shared.counters, own.counters);
+        EXPECT_GT(shared.mesh.mesh.triangle_count(), 100u);
+    }
+}
+
+TEST(MeshDomain2, HonouredOptions) {
+    const gen::MeshGenerator2& refinement = gen::find_mesh_generator_2d("delaunay-refinement");
+    const gen::MeshGenerator2& quadtree = gen::find_mesh_generator_2d("quadtree");
+    EXPECT_TRUE(refinement.honours.contains(gen::MeshOption::MinAngle));
+    EXPECT_TRUE(refinement.honours.contains(gen::MeshOption::RegionAttributes));
+    EXPECT_FALSE(quadtree.honours.contains(gen::MeshOption::MinAngle));
+    EXPECT_FALSE(quadtree.honours.contains(gen::MeshOption::RegionAttributes));
+    for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) {
+        EXPECT_TRUE(g.honours.contains(gen::MeshOption::Size)) << g.name;
+        EXPECT_TRUE(g.honours.contains(gen::MeshOption::MaxSteinerPoints)) << g.name;
+        // The registry's older flag and the set agree.
+        EXPECT_EQ(g.region_areas, g.honours.contains(gen::MeshOption::RegionAreas)) << g.name;
+    }
+    EXPECT_EQ(gen::mesh_option_name(gen::MeshOption::MinAngle), "--min-angle");
+}
