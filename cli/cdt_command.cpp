@@ -44,7 +44,7 @@ io::PolyFile read_input(const fs::path& input) {
 
 void print_stats(const tri::Cdt2Counters& c, const predicates::PredicateStats& stats,
                  double seconds) {
-    print_counters(counters_by_name(c));
+    print_counters(counters_by_name(tri::kCdt2CounterNames, c));
     print_predicate_stats(stats);
     print_construct_seconds(seconds);
 }

@@ -96,7 +96,7 @@ void print_warnings(const std::vector<std::string>& warnings);
 /// incircle, or orient3d and insphere), or a note when the counters are compiled out.
 void print_predicate_stats(const predicates::PredicateStats& stats, int dimension = 2);
 
-/// `name: value`, one line each, in order (a counters table: base/counter_fields.hpp).
+/// `name: value`, one line each, in order (a counters table: base/counter_table.hpp).
 void print_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters);
 
 /// `construct_seconds: T` on a line of its own (fixed, 6 decimals; the stream's format restored).

@@ -87,7 +87,7 @@ void run_swap3d(const Swap3dArguments& arguments) {
     std::cout << "tetrahedra: " << mesh.tet_count() << '\n';
     if (arguments.stats) {
         std::cout << "criterion: " << tri::swap_criterion_3d_name(criterion) << '\n';
-        auto named = counters_by_name(counters);
+        auto named = counters_by_name(tri::kEdgeFaceSwapCounterNames, counters);
         // stalled_faces is counted for the Delaunay criterion only.
         if (criterion != tri::SwapCriterion3::Delaunay) std::erase_if(named, [](const auto& c) { return c.first == "stalled_faces"; });
         print_counters(named);

@@ -110,7 +110,7 @@ void run_swap(const SwapArguments& arguments) {
     std::cout << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {
         std::cout << "criterion: " << arguments.criterion << '\n';
-        print_counters(counters_by_name(counters));
+        print_counters(counters_by_name(tri::kEdgeSwapCounterNames, counters));
         std::cout << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
                   << '\n';
         print_construct_seconds(seconds);
@@ -131,7 +131,7 @@ void run_min_max(const CommandArguments& arguments) {
     commit_outputs(set);
     std::cout << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {
-        print_counters(counters_by_name(counters));
+        print_counters(counters_by_name(tri::kEdgeCuttingCounterNames, counters));
         std::cout << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
                   << '\n';
         print_construct_seconds(seconds);

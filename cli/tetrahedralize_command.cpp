@@ -36,7 +36,7 @@ struct TetrahedralizeArguments : CommandArguments, OrderArguments {
 
 void print_stats(const tri::Delaunay3Counters& counters, const predicates::PredicateStats& stats,
                  double construct_seconds) {
-    print_counters(counters_by_name(counters));
+    print_counters(counters_by_name(tri::kDelaunay3CounterNames, counters));
     print_predicate_stats(stats, 3);
     print_construct_seconds(construct_seconds);
 }

@@ -44,7 +44,7 @@ tri::PointLocation point_location(const std::string& name) {
 
 void print_stats(const tri::Delaunay2Counters& counters, const predicates::PredicateStats& stats,
                  double construct_seconds) {
-    print_counters(counters_by_name(counters));
+    print_counters(counters_by_name(tri::kDelaunay2CounterNames, counters));
     print_predicate_stats(stats);
     print_construct_seconds(construct_seconds);
 }

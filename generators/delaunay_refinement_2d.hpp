@@ -42,7 +42,7 @@
 #include <array>
 #include <cstdint>
 
-#include "generators/counter_table.hpp"
+#include "base/counter_table.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"
 

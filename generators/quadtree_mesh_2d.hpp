@@ -34,7 +34,7 @@
 #include <utility>
 #include <vector>
 
-#include "generators/counter_table.hpp"
+#include "base/counter_table.hpp"
 #include "generators/mesh_domain_2d.hpp"
 #include "generators/size_function.hpp"
 #include "triangulation/constrained_2d.hpp"

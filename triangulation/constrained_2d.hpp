@@ -25,7 +25,7 @@
 #include <string_view>
 #include <vector>
 
-#include "base/counter_fields.hpp"
+#include "base/counter_table.hpp"
 #include "predicates/errors.hpp"
 #include "triangulation/delaunay_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
@@ -80,28 +80,27 @@ struct Cdt2Counters {
     std::uint64_t walk_steps = 0;
 };
 
-/// The table of Cdt2Counters (base/counter_fields.hpp): --stats prints it in this order.
-inline constexpr std::array<CounterField<Cdt2Counters>, 18> counter_fields(const Cdt2Counters&) {
-    return {
-        {CounterField<Cdt2Counters>{"points", &Cdt2Counters::points},
-         CounterField<Cdt2Counters>{"duplicates", &Cdt2Counters::duplicates},
-         CounterField<Cdt2Counters>{"segments", &Cdt2Counters::segments},
-         CounterField<Cdt2Counters>{"dropped_segments", &Cdt2Counters::dropped_segments},
-         CounterField<Cdt2Counters>{"vertices_on_segments", &Cdt2Counters::vertices_on_segments},
-         CounterField<Cdt2Counters>{"intersections", &Cdt2Counters::intersections},
-         CounterField<Cdt2Counters>{"bent_crossings", &Cdt2Counters::bent_crossings},
-         CounterField<Cdt2Counters>{"conforming_splits", &Cdt2Counters::conforming_splits},
-         CounterField<Cdt2Counters>{"conforming_bends", &Cdt2Counters::conforming_bends},
-         CounterField<Cdt2Counters>{"conforming_passes", &Cdt2Counters::conforming_passes},
-         CounterField<Cdt2Counters>{"crossed_edges", &Cdt2Counters::crossed_edges},
-         CounterField<Cdt2Counters>{"recovery_flips", &Cdt2Counters::recovery_flips},
-         CounterField<Cdt2Counters>{"cavity_triangles", &Cdt2Counters::cavity_triangles},
-         CounterField<Cdt2Counters>{"delaunay_flips", &Cdt2Counters::delaunay_flips},
-         CounterField<Cdt2Counters>{"removed_triangles", &Cdt2Counters::removed_triangles},
-         CounterField<Cdt2Counters>{"orient_calls", &Cdt2Counters::orient_calls},
-         CounterField<Cdt2Counters>{"incircle_calls", &Cdt2Counters::incircle_calls},
-         CounterField<Cdt2Counters>{"walk_steps", &Cdt2Counters::walk_steps}}};
-}
+/// The name table of Cdt2Counters (base/counter_table.hpp): --stats prints it in this order.
+inline constexpr std::array kCdt2CounterNames = {
+    counter("points", &Cdt2Counters::points),
+    counter("duplicates", &Cdt2Counters::duplicates),
+    counter("segments", &Cdt2Counters::segments),
+    counter("dropped_segments", &Cdt2Counters::dropped_segments),
+    counter("vertices_on_segments", &Cdt2Counters::vertices_on_segments),
+    counter("intersections", &Cdt2Counters::intersections),
+    counter("bent_crossings", &Cdt2Counters::bent_crossings),
+    counter("conforming_splits", &Cdt2Counters::conforming_splits),
+    counter("conforming_bends", &Cdt2Counters::conforming_bends),
+    counter("conforming_passes", &Cdt2Counters::conforming_passes),
+    counter("crossed_edges", &Cdt2Counters::crossed_edges),
+    counter("recovery_flips", &Cdt2Counters::recovery_flips),
+    counter("cavity_triangles", &Cdt2Counters::cavity_triangles),
+    counter("delaunay_flips", &Cdt2Counters::delaunay_flips),
+    counter("removed_triangles", &Cdt2Counters::removed_triangles),
+    counter("orient_calls", &Cdt2Counters::orient_calls),
+    counter("incircle_calls", &Cdt2Counters::incircle_calls),
+    counter("walk_steps", &Cdt2Counters::walk_steps)};
+static_assert(counter_table_complete(kCdt2CounterNames));
 
 struct Cdt2Result {
     /// The triangulation: input vertices keep their index, added vertices follow them; merged

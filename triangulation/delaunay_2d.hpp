@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "base/counter_fields.hpp"
+#include "base/counter_table.hpp"
 #include "triangulation/mesh2.hpp"
 
 namespace exactmesh::triangulation {
@@ -43,19 +43,17 @@ struct Delaunay2Counters {
     std::uint64_t candidates = 0;      ///< Tanemura-Merriam: candidate points examined
 };
 
-/// The table of Delaunay2Counters (base/counter_fields.hpp): --stats prints it in this order.
-inline constexpr std::array<CounterField<Delaunay2Counters>, 8> counter_fields(
-    const Delaunay2Counters&) {
-    return {
-        {CounterField<Delaunay2Counters>{"points", &Delaunay2Counters::points},
-         CounterField<Delaunay2Counters>{"duplicates", &Delaunay2Counters::duplicates},
-         CounterField<Delaunay2Counters>{"orient_calls", &Delaunay2Counters::orient_calls},
-         CounterField<Delaunay2Counters>{"incircle_calls", &Delaunay2Counters::incircle_calls},
-         CounterField<Delaunay2Counters>{"walk_steps", &Delaunay2Counters::walk_steps},
-         CounterField<Delaunay2Counters>{"cavity_triangles", &Delaunay2Counters::cavity_triangles},
-         CounterField<Delaunay2Counters>{"flips", &Delaunay2Counters::flips},
-         CounterField<Delaunay2Counters>{"candidates", &Delaunay2Counters::candidates}}};
-}
+/// The name table of Delaunay2Counters (base/counter_table.hpp): --stats prints it in this order.
+inline constexpr std::array kDelaunay2CounterNames = {
+    counter("points", &Delaunay2Counters::points),
+    counter("duplicates", &Delaunay2Counters::duplicates),
+    counter("orient_calls", &Delaunay2Counters::orient_calls),
+    counter("incircle_calls", &Delaunay2Counters::incircle_calls),
+    counter("walk_steps", &Delaunay2Counters::walk_steps),
+    counter("cavity_triangles", &Delaunay2Counters::cavity_triangles),
+    counter("flips", &Delaunay2Counters::flips),
+    counter("candidates", &Delaunay2Counters::candidates)};
+static_assert(counter_table_complete(kDelaunay2CounterNames));
 
 /// The Delaunay triangulation in the caller's vertex numbering.
 struct Delaunay2Result {

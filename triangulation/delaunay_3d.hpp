@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "base/counter_fields.hpp"
+#include "base/counter_table.hpp"
 #include "predicates/errors.hpp"
 #include "triangulation/delaunay_2d.hpp"  // InsertionOrder
 #include "triangulation/tetrahedralization_3d.hpp"
@@ -45,24 +45,23 @@ struct Delaunay3Counters {
                                     ///< met, tried again later (counted each time)
 };
 
-/// The table of Delaunay3Counters (base/counter_fields.hpp): --stats prints it in this order.
-inline constexpr std::array<CounterField<Delaunay3Counters>, 14> counter_fields(
-    const Delaunay3Counters&) {
-    return {{CounterField<Delaunay3Counters>{"points", &Delaunay3Counters::points},
-             CounterField<Delaunay3Counters>{"duplicates", &Delaunay3Counters::duplicates},
-             CounterField<Delaunay3Counters>{"orient_calls", &Delaunay3Counters::orient_calls},
-             CounterField<Delaunay3Counters>{"insphere_calls", &Delaunay3Counters::insphere_calls},
-             CounterField<Delaunay3Counters>{"walk_steps", &Delaunay3Counters::walk_steps},
-             CounterField<Delaunay3Counters>{"cavity_tets", &Delaunay3Counters::cavity_tets},
-             CounterField<Delaunay3Counters>{"outside_hull", &Delaunay3Counters::outside_hull},
-             CounterField<Delaunay3Counters>{"splits_1_4", &Delaunay3Counters::splits_1_4},
-             CounterField<Delaunay3Counters>{"splits_2_6", &Delaunay3Counters::splits_2_6},
-             CounterField<Delaunay3Counters>{"splits_edge", &Delaunay3Counters::splits_edge},
-             CounterField<Delaunay3Counters>{"flips_2_3", &Delaunay3Counters::flips_2_3},
-             CounterField<Delaunay3Counters>{"flips_3_2", &Delaunay3Counters::flips_3_2},
-             CounterField<Delaunay3Counters>{"flips_4_4", &Delaunay3Counters::flips_4_4},
-             CounterField<Delaunay3Counters>{"unflippable", &Delaunay3Counters::unflippable}}};
-}
+/// The name table of Delaunay3Counters (base/counter_table.hpp): --stats prints it in this order.
+inline constexpr std::array kDelaunay3CounterNames = {
+    counter("points", &Delaunay3Counters::points),
+    counter("duplicates", &Delaunay3Counters::duplicates),
+    counter("orient_calls", &Delaunay3Counters::orient_calls),
+    counter("insphere_calls", &Delaunay3Counters::insphere_calls),
+    counter("walk_steps", &Delaunay3Counters::walk_steps),
+    counter("cavity_tets", &Delaunay3Counters::cavity_tets),
+    counter("outside_hull", &Delaunay3Counters::outside_hull),
+    counter("splits_1_4", &Delaunay3Counters::splits_1_4),
+    counter("splits_2_6", &Delaunay3Counters::splits_2_6),
+    counter("splits_edge", &Delaunay3Counters::splits_edge),
+    counter("flips_2_3", &Delaunay3Counters::flips_2_3),
+    counter("flips_3_2", &Delaunay3Counters::flips_3_2),
+    counter("flips_4_4", &Delaunay3Counters::flips_4_4),
+    counter("unflippable", &Delaunay3Counters::unflippable)};
+static_assert(counter_table_complete(kDelaunay3CounterNames));
 
 /// The Delaunay tetrahedralization in the caller's vertex numbering. When fewer than four
 /// distinct points are not coplanar, there is no tetrahedron: `mesh.tets` is empty and

@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <span>
 
-#include "base/counter_fields.hpp"
+#include "base/counter_table.hpp"
 #include "triangulation/triangulation_2d.hpp"
 
 namespace exactmesh::triangulation {
@@ -36,19 +36,15 @@ struct EdgeCuttingCounters {
     std::uint64_t dynamic_programs = 0;  ///< candidates retriangulated optimally (ties only)
 };
 
-/// The table of EdgeCuttingCounters (base/counter_fields.hpp): --stats prints it in this order.
-inline constexpr std::array<CounterField<EdgeCuttingCounters>, 6> counter_fields(
-    const EdgeCuttingCounters&) {
-    return {
-        {CounterField<EdgeCuttingCounters>{"worst_triangles",
-                                           &EdgeCuttingCounters::worst_triangles},
-         CounterField<EdgeCuttingCounters>{"insertions", &EdgeCuttingCounters::insertions},
-         CounterField<EdgeCuttingCounters>{"candidates", &EdgeCuttingCounters::candidates},
-         CounterField<EdgeCuttingCounters>{"visited", &EdgeCuttingCounters::visited},
-         CounterField<EdgeCuttingCounters>{"removed_edges", &EdgeCuttingCounters::removed_edges},
-         CounterField<EdgeCuttingCounters>{"dynamic_programs",
-                                           &EdgeCuttingCounters::dynamic_programs}}};
-}
+/// The name table of EdgeCuttingCounters (base/counter_table.hpp): --stats prints it in this order.
+inline constexpr std::array kEdgeCuttingCounterNames = {
+    counter("worst_triangles", &EdgeCuttingCounters::worst_triangles),
+    counter("insertions", &EdgeCuttingCounters::insertions),
+    counter("candidates", &EdgeCuttingCounters::candidates),
+    counter("visited", &EdgeCuttingCounters::visited),
+    counter("removed_edges", &EdgeCuttingCounters::removed_edges),
+    counter("dynamic_programs", &EdgeCuttingCounters::dynamic_programs)};
+static_assert(counter_table_complete(kEdgeCuttingCounterNames));
 
 /// Improves `mesh` in place to a triangulation of the same vertices and domain minimizing the
 /// largest angle (among those keeping the constrained edges).

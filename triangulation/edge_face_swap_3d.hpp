@@ -28,7 +28,7 @@
 #include <vector>
 #include <string_view>
 
-#include "base/counter_fields.hpp"
+#include "base/counter_table.hpp"
 #include "triangulation/flip_mesh_3d.hpp"
 #include "triangulation/tetrahedralization_3d.hpp"
 
@@ -60,22 +60,17 @@ struct EdgeFaceSwapCounters {
     std::uint64_t flips() const { return flips_23 + flips_32 + flips_44 + flips_22; }
 };
 
-/// The table of EdgeFaceSwapCounters (base/counter_fields.hpp): --stats prints it in this order.
-inline constexpr std::array<CounterField<EdgeFaceSwapCounters>, 8> counter_fields(
-    const EdgeFaceSwapCounters&) {
-    return {
-        {CounterField<EdgeFaceSwapCounters>{"faces_examined",
-                                            &EdgeFaceSwapCounters::faces_examined},
-         CounterField<EdgeFaceSwapCounters>{"edges_examined",
-                                            &EdgeFaceSwapCounters::edges_examined},
-         CounterField<EdgeFaceSwapCounters>{"flips_23", &EdgeFaceSwapCounters::flips_23},
-         CounterField<EdgeFaceSwapCounters>{"flips_32", &EdgeFaceSwapCounters::flips_32},
-         CounterField<EdgeFaceSwapCounters>{"flips_44", &EdgeFaceSwapCounters::flips_44},
-         CounterField<EdgeFaceSwapCounters>{"flips_22", &EdgeFaceSwapCounters::flips_22},
-         CounterField<EdgeFaceSwapCounters>{"not_flippable", &EdgeFaceSwapCounters::not_flippable},
-         CounterField<EdgeFaceSwapCounters>{"stalled_faces",
-                                            &EdgeFaceSwapCounters::stalled_faces}}};
-}
+/// The name table of EdgeFaceSwapCounters (base/counter_table.hpp): --stats prints it in this order.
+inline constexpr std::array kEdgeFaceSwapCounterNames = {
+    counter("faces_examined", &EdgeFaceSwapCounters::faces_examined),
+    counter("edges_examined", &EdgeFaceSwapCounters::edges_examined),
+    counter("flips_23", &EdgeFaceSwapCounters::flips_23),
+    counter("flips_32", &EdgeFaceSwapCounters::flips_32),
+    counter("flips_44", &EdgeFaceSwapCounters::flips_44),
+    counter("flips_22", &EdgeFaceSwapCounters::flips_22),
+    counter("not_flippable", &EdgeFaceSwapCounters::not_flippable),
+    counter("stalled_faces", &EdgeFaceSwapCounters::stalled_faces)};
+static_assert(counter_table_complete(kEdgeFaceSwapCounterNames));
 
 /// Swaps until no face wants a swap under `criterion`.
 /// @pre mesh valid (make_flip_mesh_3d). Vertex indices are the SoS ranks.

@@ -23,7 +23,7 @@
 #include <span>
 #include <string_view>
 
-#include "base/counter_fields.hpp"
+#include "base/counter_table.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
 
@@ -69,14 +69,13 @@ struct EdgeSwapCounters {
     std::uint64_t swaps = 0;          ///< edges swapped
 };
 
-/// The table of EdgeSwapCounters (base/counter_fields.hpp): --stats prints it in this order.
-inline constexpr std::array<CounterField<EdgeSwapCounters>, 4> counter_fields(
-    const EdgeSwapCounters&) {
-    return {{CounterField<EdgeSwapCounters>{"edges_tested", &EdgeSwapCounters::edges_tested},
-             CounterField<EdgeSwapCounters>{"not_convex", &EdgeSwapCounters::not_convex},
-             CounterField<EdgeSwapCounters>{"constrained", &EdgeSwapCounters::constrained},
-             CounterField<EdgeSwapCounters>{"swaps", &EdgeSwapCounters::swaps}}};
-}
+/// The name table of EdgeSwapCounters (base/counter_table.hpp): --stats prints it in this order.
+inline constexpr std::array kEdgeSwapCounterNames = {
+    counter("edges_tested", &EdgeSwapCounters::edges_tested),
+    counter("not_convex", &EdgeSwapCounters::not_convex),
+    counter("constrained", &EdgeSwapCounters::constrained),
+    counter("swaps", &EdgeSwapCounters::swaps)};
+static_assert(counter_table_complete(kEdgeSwapCounterNames));
 
 /// Swaps edges of `mesh` until none is swappable and preferred by the criterion.
 /// @pre mesh.neighbors is consistent (see link_neighbors_2d), triangles strictly counter-

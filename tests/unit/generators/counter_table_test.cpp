@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Tests of generators/counter_table.hpp: a name table lists every field once, in order, and the
+// Tests of base/counter_table.hpp: a name table lists every field once, in order, and the
 // generators' tables keep the names --stats printed before the tables (issue 12).
-#include "generators/counter_table.hpp"
+#include "base/counter_table.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,29 +22,29 @@ struct ThreeCounters {
     std::uint64_t third = 0;
 };
 
-constexpr std::array kAll{gen::counter("first", &ThreeCounters::first),
-                          gen::counter("second", &ThreeCounters::second),
-                          gen::counter("third", &ThreeCounters::third)};
-constexpr std::array kMissing{gen::counter("first", &ThreeCounters::first),
-                              gen::counter("third", &ThreeCounters::third)};
-constexpr std::array kTwice{gen::counter("first", &ThreeCounters::first),
-                            gen::counter("again", &ThreeCounters::first),
-                            gen::counter("third", &ThreeCounters::third)};
+constexpr std::array kAll{exactmesh::counter("first", &ThreeCounters::first),
+                          exactmesh::counter("second", &ThreeCounters::second),
+                          exactmesh::counter("third", &ThreeCounters::third)};
+constexpr std::array kMissing{exactmesh::counter("first", &ThreeCounters::first),
+                              exactmesh::counter("third", &ThreeCounters::third)};
+constexpr std::array kTwice{exactmesh::counter("first", &ThreeCounters::first),
+                            exactmesh::counter("again", &ThreeCounters::first),
+                            exactmesh::counter("third", &ThreeCounters::third)};
 
 }  // namespace
 
 TEST(CounterTable, CompleteOnlyWhenEveryFieldIsNamedOnce) {
-    static_assert(gen::counter_table_complete(kAll));
-    static_assert(!gen::counter_table_complete(kMissing));
-    static_assert(!gen::counter_table_complete(kTwice));
+    static_assert(exactmesh::counter_table_complete(kAll));
+    static_assert(!exactmesh::counter_table_complete(kMissing));
+    static_assert(!exactmesh::counter_table_complete(kTwice));
     // A derived row is allowed only when declared.
-    static_assert(!gen::counter_table_complete(kAll, 1));
-    EXPECT_TRUE(gen::counter_table_complete(kAll));
+    static_assert(!exactmesh::counter_table_complete(kAll, 1));
+    EXPECT_TRUE(exactmesh::counter_table_complete(kAll));
 }
 
 TEST(CounterTable, ListsNamesAndValuesInTableOrder) {
     const ThreeCounters c{7, 11, 13};
-    const auto list = gen::counters_by_name(kAll, c);
+    const auto list = exactmesh::counters_by_name(kAll, c);
     ASSERT_EQ(list.size(), 3u);
     EXPECT_EQ(list[0], (std::pair<std::string, std::uint64_t>{"first", 7}));
     EXPECT_EQ(list[1], (std::pair<std::string, std::uint64_t>{"second", 11}));

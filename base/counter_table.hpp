@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// One name table per counters struct (issue 12): each generator's counters are listed once, as
-// (name, field) pairs next to the struct, and `exactmesh mesh --stats`, the benchmarks and the
+// One name table per counters struct (issue 12): every counters struct of the library (the
+// Delaunay, constrained, swapping and cutting counters, each generator's) is listed once, as
+// (name, field) pairs next to the struct, and every --stats printout, the benchmarks and the
 // tests read them through counters_by_name. counter_table_complete checks at compile time that a
 // table names every field of its struct exactly once, so a counter added to a struct and left
 // out of its table is a compile error, not a silently missing line of --stats.
@@ -14,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace exactmesh::generators {
+namespace exactmesh {
 
 /// One row of a counters struct's name table: the name --stats prints and the field it reads
 /// (a 64- or 32-bit counter), or for a derived counter the function computing it.
@@ -104,4 +105,4 @@ std::vector<std::pair<std::string, std::uint64_t>> counters_by_name(
     return list;
 }
 
-}  // namespace exactmesh::generators
+}  // namespace exactmesh
