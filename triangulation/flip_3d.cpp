@@ -647,6 +647,18 @@ void TetStar3::replace_by_star(TetMesh3& mesh, std::span<const TetIdx> region,
     for (std::size_t i = 0; i < p_faces_outside_.size(); ++i) {
         glue(mesh, p_faces_key_[i], p_faces_outside_[i]);
     }
+    // Every vertex of the region but p lies on a boundary face without p (the boundary faces
+    // around it close a fan, and at most two of them hold the edge to p), so it is a vertex of
+    // a new tetrahedron: pointing each vertex of the new ones at them keeps vertex_tet valid.
+    if (!mesh.vertex_tet.empty()) {
+        mesh.vertex_tet.resize(mesh.vertex_count(), kNone);
+        for (const TetIdx t : created) {
+            for (unsigned k = 0; k < 4; ++k) {
+                const VertIdx v = mesh.vertex(t, k);
+                if (v < mesh.vertex_tet.size()) mesh.vertex_tet[v] = t;
+            }
+        }
+    }
     grow_stamps(mesh);
 }
 

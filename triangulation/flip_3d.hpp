@@ -121,7 +121,8 @@ FlipKind3 flip_face_3d(TetMesh3& mesh, FaceIdx f);
 /// marks) is kept between calls, so repeated rewrites allocate nothing.
 ///
 /// The mesh may be closed by kInfinite (every face has a twin) or a domain with boundary faces
-/// (kNone); vertex_tet is not kept (left as is: callers that need it use replace_tets).
+/// (kNone); vertex_tet is kept when the mesh has one (it is empty in the Delaunay
+/// constructions, which then pay one test per star).
 class TetStar3 {
   public:
     /// Per tetrahedron slot: a region mark, compared with fresh values from next_stamp().

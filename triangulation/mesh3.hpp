@@ -76,9 +76,9 @@ struct TetMesh3 {
     std::vector<VertIdx> tv;        ///< 4·#T vertices, positively oriented; kNone for dead tets
     std::vector<FaceIdx> adj;       ///< 4·#T twin face slots (kNone: domain boundary)
     std::vector<TetIdx> free_tets;  ///< dead slots to recycle
-    /// Per vertex: one live tetrahedron holding it, or kNone. Kept by replace_tets (flip_3d),
-    /// which the flip algorithms on a domain use; empty in the Delaunay constructions, whose
-    /// stars (flip_3d's TetStar3) do not need it and leave it alone.
+    /// Per vertex: one live tetrahedron holding it, or kNone. Kept by every rewrite of flip_3d
+    /// when it is filled (make_tet_mesh_3d fills it); empty in the Delaunay constructions,
+    /// which do not need it.
     std::vector<TetIdx> vertex_tet;
 
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xyz.size() / 3); }
