@@ -76,6 +76,7 @@ Delaunay3Core::Delaunay3Core(std::span<const double> xyz, const Delaunay3Options
     merged_into.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) merged_into[i] = i;
     counters.points = n;
+    star.closed = true;  // kInfinite closes the mesh: every face has a twin
     // About 6.7 tetrahedra per point for uniform points, plus the hull's infinite ones.
     const std::size_t expected = 7 * std::size_t{n} + 64;
     mesh.tv.reserve(4 * expected);

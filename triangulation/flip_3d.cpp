@@ -561,7 +561,9 @@ inline std::uint64_t edge_key(VertIdx a, VertIdx b) {
 
 }  // namespace
 
-void TetStar3::glue(TetMesh3& mesh, std::uint64_t key, FaceIdx face) {
+template <bool kBoundary>
+void TetStar3::glue(std::uint64_t key, FaceIdx face) {
+    TetMesh3& mesh = *mesh_;
     const std::size_t mask = edge_key_.size() - 1;
     std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
     for (;; h = (h + 1) & mask) {
@@ -572,8 +574,12 @@ void TetStar3::glue(TetMesh3& mesh, std::uint64_t key, FaceIdx face) {
             return;
         }
         if (edge_key_[h] == key) {
-            // A kept face through p may be the domain's boundary (kNone).
-            mesh.link_or_boundary(edge_face_[h], face);
+            if constexpr (kBoundary) {
+                // A kept face through p may be the domain's boundary (kNone).
+                mesh.link_or_boundary(edge_face_[h], face);
+            } else {
+                mesh.link(edge_face_[h], face);
+            }
             return;
         }
     }
@@ -581,6 +587,18 @@ void TetStar3::glue(TetMesh3& mesh, std::uint64_t key, FaceIdx face) {
 
 void TetStar3::replace_by_star(TetMesh3& mesh, std::span<const TetIdx> region,
                                std::uint32_t region_stamp, VertIdx p) {
+    // Two copies: the Delaunay constructions' closed meshes pay no test for kNone twins.
+    if (closed) {
+        replace_by_star_in<false>(mesh, region, region_stamp, p);
+    } else {
+        replace_by_star_in<true>(mesh, region, region_stamp, p);
+    }
+}
+
+template <bool kBoundary>
+void TetStar3::replace_by_star_in(TetMesh3& mesh, std::span<const TetIdx> region,
+                                  std::uint32_t region_stamp, VertIdx p) {
+    mesh_ = &mesh;
     star_faces_.clear();
     p_faces_outside_.clear();
     p_faces_key_.clear();
@@ -589,7 +607,9 @@ void TetStar3::replace_by_star(TetMesh3& mesh, std::span<const TetIdx> region,
         const unsigned p_slot = mesh.slot_of(c, p);
         for (unsigned k = 0; k < 4; ++k) {
             const FaceIdx outside = mesh.adj[4 * std::size_t{c} + k];
-            if (outside != kNone && stamp[tet_of(outside)] == region_stamp) continue;
+            if ((!kBoundary || outside != kNone) && stamp[tet_of(outside)] == region_stamp) {
+                continue;
+            }
             if (p_slot != 4 && p_slot != k) {
                 // A boundary face through p stays; the new tetrahedra glue to it along the
                 // edge it has besides p.
@@ -633,7 +653,11 @@ void TetStar3::replace_by_star(TetMesh3& mesh, std::span<const TetIdx> region,
         w[1] = face.v[1];
         w[2] = face.v[2];
         w[3] = face.v[3];
-        mesh.link_or_boundary(4 * t + face.k, face.outside);
+        if constexpr (kBoundary) {
+            mesh.link_or_boundary(4 * t + face.k, face.outside);
+        } else {
+            mesh.link(4 * t + face.k, face.outside);
+        }
         for (unsigned j = 0; j < 4; ++j) {
             if (j == face.k) continue;
             // Face j holds p and the two vertices at the slots other than j and k.
@@ -641,11 +665,11 @@ void TetStar3::replace_by_star(TetMesh3& mesh, std::span<const TetIdx> region,
             while (a == j || a == face.k) ++a;
             unsigned b = a + 1;
             while (b == j || b == face.k) ++b;
-            glue(mesh, edge_key(face.v[a], face.v[b]), 4 * t + j);
+            glue<kBoundary>(edge_key(face.v[a], face.v[b]), 4 * t + j);
         }
     }
     for (std::size_t i = 0; i < p_faces_outside_.size(); ++i) {
-        glue(mesh, p_faces_key_[i], p_faces_outside_[i]);
+        glue<kBoundary>(p_faces_key_[i], p_faces_outside_[i]);
     }
     // Every vertex of the region but p lies on a boundary face without p (the boundary faces
     // around it close a fan, and at most two of them hold the edge to p), so it is a vertex of
@@ -670,15 +694,15 @@ void TetStar3::star(TetMesh3& mesh, std::span<const TetIdx> region, VertIdx p) {
 }
 
 void TetStar3::split_1_4(TetMesh3& mesh, TetIdx t, VertIdx p) {
-    region_.assign({t});
-    star(mesh, region_, p);
+    const TetIdx region[1] = {t};
+    star(mesh, region, p);
 }
 
 void TetStar3::split_2_6(TetMesh3& mesh, TetIdx t, unsigned k, VertIdx p) {
     const FaceIdx across = mesh.adj[4 * std::size_t{t} + k];
     EM_ASSERT(across != kNone);
-    region_.assign({t, tet_of(across)});
-    star(mesh, region_, p);
+    const TetIdx region[2] = {t, tet_of(across)};
+    star(mesh, region, p);
 }
 
 void TetStar3::split_edge(TetMesh3& mesh, TetIdx t, unsigned a_slot, unsigned b_slot, VertIdx p) {
@@ -691,9 +715,9 @@ void TetStar3::split_edge(TetMesh3& mesh, TetIdx t, unsigned a_slot, unsigned b_
     // through (a, b, w), the face opposite y.
     VertIdx cross_opposite = mesh.vertex(t, others[0]);
     TetIdx current = t;
-    region_.clear();
+    ring_.clear();
     for (;;) {
-        region_.push_back(current);
+        ring_.push_back(current);
         const FaceIdx g =
             mesh.adj[4 * std::size_t{current} + mesh.slot_of(current, cross_opposite)];
         EM_ASSERT(g != kNone);  // an interior edge: the ring closes
@@ -706,30 +730,26 @@ void TetStar3::split_edge(TetMesh3& mesh, TetIdx t, unsigned a_slot, unsigned b_
         }
         current = next;
     }
-    star(mesh, region_, p);
+    star(mesh, ring_, p);
 }
 
 void TetStar3::flip_2_3(TetMesh3& mesh, TetIdx t, unsigned k) {
-    const VertIdx p = mesh.vertex(t, k);
-    region_.assign({t, tet_of(mesh.adj[4 * std::size_t{t} + k])});
-    star(mesh, region_, p);
+    const TetIdx region[2] = {t, tet_of(mesh.adj[4 * std::size_t{t} + k])};
+    star(mesh, region, mesh.vertex(t, k));
 }
 
 void TetStar3::flip_3_2(TetMesh3& mesh, TetIdx t, unsigned k, unsigned j) {
-    const VertIdx p = mesh.vertex(t, k);
-    region_.assign(
-        {t, tet_of(mesh.adj[4 * std::size_t{t} + k]), tet_of(mesh.adj[4 * std::size_t{t} + j])});
-    star(mesh, region_, p);
+    const TetIdx region[3] = {t, tet_of(mesh.adj[4 * std::size_t{t} + k]),
+                              tet_of(mesh.adj[4 * std::size_t{t} + j])};
+    star(mesh, region, mesh.vertex(t, k));
 }
 
 void TetStar3::flip_4_4(TetMesh3& mesh, TetIdx t, unsigned k, unsigned j) {
-    const VertIdx p = mesh.vertex(t, k);
     const TetIdx t2 = tet_of(mesh.adj[4 * std::size_t{t} + k]);
     const TetIdx t3 = tet_of(mesh.adj[4 * std::size_t{t} + j]);
     const unsigned j_in_t2 = mesh.slot_of(t2, mesh.vertex(t, j));
-    const TetIdx t4 = tet_of(mesh.adj[4 * std::size_t{t2} + j_in_t2]);
-    region_.assign({t, t2, t3, t4});
-    star(mesh, region_, p);
+    const TetIdx region[4] = {t, t2, t3, tet_of(mesh.adj[4 * std::size_t{t2} + j_in_t2])};
+    star(mesh, region, mesh.vertex(t, k));
 }
 
 }  // namespace exactmesh::triangulation

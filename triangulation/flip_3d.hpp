@@ -133,6 +133,10 @@ class TetStar3 {
     /// Grows `stamp` to the mesh's slots (with room, so that it grows rarely).
     void grow_stamps(const TetMesh3& mesh);
 
+    /// Set when every face of the mesh has a twin (closed by kInfinite, as in the Delaunay
+    /// constructions): the star then never tests for the domain's boundary (kNone).
+    bool closed = false;
+
     /// The new tetrahedra of the last rewrite, in the order they were made.
     std::vector<TetIdx> created;
 
@@ -168,7 +172,7 @@ class TetStar3 {
     /// six points are two flat halves and the edge has exactly these four tetrahedra.
     void flip_4_4(TetMesh3& mesh, TetIdx t, unsigned k, unsigned j);
 
-    const std::vector<TetIdx>& ring() const { return region_; }
+    const std::vector<TetIdx>& ring() const { return ring_; }
 
   private:
     /// One boundary face of a region to star: the new tetrahedron's vertices, the slot of p in
@@ -187,8 +191,15 @@ class TetStar3 {
     std::vector<std::uint32_t> edge_generation_;
     std::uint32_t generation_ = 0;
     std::uint32_t stamp_counter_ = 0;
-    std::vector<TetIdx> region_;
-    void glue(TetMesh3& mesh, std::uint64_t key, FaceIdx face);
+    std::vector<TetIdx> ring_;  ///< the last edge split's ring
+    template <bool kBoundary>
+    void replace_by_star_in(TetMesh3& mesh, std::span<const TetIdx> region,
+                            std::uint32_t region_stamp, VertIdx p);
+    /// The mesh of the rewrite in progress (glue's, so that it takes no more arguments than
+    /// it needs: it runs three times per new tetrahedron).
+    TetMesh3* mesh_ = nullptr;
+    template <bool kBoundary>
+    void glue(std::uint64_t key, FaceIdx face);
 };
 
 }  // namespace exactmesh::triangulation
