@@ -20,6 +20,9 @@
 //    combinatorially; the criterion of a swap (edge_face_swap_3d) or a removal
 //    (vertex_removal_3d) looks at the planned tetrahedra before any change. replace_tets also
 //    makes any other retetrahedralization (the 4-1 flip, a removal's cavity, an undo).
+// Both make the same tetrahedra for a flip; they differ in the order of the new tetrahedra and
+// of their vertices (region by region for the star, the plan's picture below otherwise), which
+// the callers' later steps (the walk, the swap queue) follow, so each caller keeps its own.
 // Bowyer-Watson's cavity star is this file's star specialised by hand (bowyer_watson_3d.cpp).
 #pragma once
 
