@@ -30,7 +30,6 @@
 #include <string>
 
 #include "predicates/errors.hpp"
-#include "predicates/orient3d.hpp"
 #include "predicates/sos.hpp"
 #include "triangulation/angles_3d.hpp"
 
