@@ -156,7 +156,7 @@ class TetStar3 {
 
     /// 1-4: p strictly inside tetrahedron t.
     void split_1_4(TetMesh3& mesh, TetIdx t, VertIdx p);
-    /// 2-6: p inside face k of t (t and the tetrahedron across it; 1-3 on the domain boundary).
+    /// 2-6: p inside the interior face k of t (t and the tetrahedron across it).
     void split_2_6(TetMesh3& mesh, TetIdx t, unsigned k, VertIdx p);
     /// n-2n: p inside the edge of t between slots a and b: the tetrahedra around the edge,
     /// walked from t across its face opposite the lower of the two other slots. The edge must
