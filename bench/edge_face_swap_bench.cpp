@@ -7,7 +7,7 @@
 // point moved by a random offset of up to 0.4 of the mean spacing n^(-1/3) per coordinate when
 // that keeps all its tetrahedra positive (exact orient3d): the same connectivity over moved
 // points, far from Delaunay (the mesh-motion scenario). Timed: Delaunay edge-face swapping back
-// to the Delaunay tetrahedralization of the moved points (FlipMesh3 construction included).
+// to the Delaunay tetrahedralization of the moved points (TetMesh3 construction included).
 // Counters: flips/pt, flips/s (swaps per second), stalled (faces left not locally Delaunay).
 // BM_vertex_removal/uniform/<n>: from CGAL's tetrahedralization of n uniform points, remove
 // n/10 random interior vertices one by one; counters removals/s, flips/removal, star/removal.
@@ -77,7 +77,7 @@ const tri::Tetrahedralization3& perturbed_start(std::uint32_t n) {
     static std::map<std::uint32_t, tri::Tetrahedralization3> cache;
     auto it = cache.find(n);
     if (it != cache.end()) return it->second;
-    tri::FlipMesh3 mesh = tri::make_flip_mesh_3d(delaunay_start(n));
+    tri::TetMesh3 mesh = tri::make_tet_mesh_3d(delaunay_start(n));
     std::mt19937_64 rng(kSeed);
     const double step = 0.4 * std::cbrt(1.0 / n);
     std::uniform_real_distribution<double> offset(-step, step);
@@ -105,9 +105,9 @@ void swap_benchmark(benchmark::State& state) {
     double seconds = 0;
     for (auto _ : state) {
         const auto begin = std::chrono::steady_clock::now();
-        tri::FlipMesh3 mesh = tri::make_flip_mesh_3d(start);
+        tri::TetMesh3 mesh = tri::make_tet_mesh_3d(start);
         const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
-        benchmark::DoNotOptimize(mesh.tets.data());
+        benchmark::DoNotOptimize(mesh.tv.data());
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
         flips += counters.flips();
         stalled = counters.stalled_faces;
@@ -122,12 +122,12 @@ void removal_benchmark(benchmark::State& state) {
     const auto n = static_cast<std::uint32_t>(state.range(0));
     const tri::Tetrahedralization3& start = delaunay_start(n);
     // Interior vertices in a fixed random order.
-    tri::FlipMesh3 probe = tri::make_flip_mesh_3d(start);
+    tri::TetMesh3 probe = tri::make_tet_mesh_3d(start);
     std::vector<tri::VertIdx> interior;
     for (tri::VertIdx v = 0; v < probe.vertex_count(); ++v) {
         bool inside = true;
         for (const tri::TetIdx t : tri::vertex_star(probe, v)) {
-            const unsigned lv = probe.local_index(t, v);
+            const unsigned lv = probe.slot_of(t, v);
             for (unsigned k = 0; k < 4; ++k) inside = inside && (k == lv || probe.adj[4 * t + k] != tri::kNone);
         }
         if (inside) interior.push_back(v);
@@ -138,13 +138,13 @@ void removal_benchmark(benchmark::State& state) {
     double seconds = 0;
     for (auto _ : state) {
         state.PauseTiming();
-        tri::FlipMesh3 mesh = tri::make_flip_mesh_3d(start);
+        tri::TetMesh3 mesh = tri::make_tet_mesh_3d(start);
         counters = {};
         state.ResumeTiming();
         const auto begin = std::chrono::steady_clock::now();
         tri::remove_vertices_3d(mesh, interior, &counters);
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-        benchmark::DoNotOptimize(mesh.tets.data());
+        benchmark::DoNotOptimize(mesh.tv.data());
     }
     const auto removed = static_cast<double>(counters.removed);
     state.counters["removals/s"] = removed * static_cast<double>(state.iterations()) / seconds;

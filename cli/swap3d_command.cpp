@@ -77,7 +77,7 @@ void run_swap3d(const Swap3dArguments& arguments) {
                          arguments.input + ": " + report.problem);
     }
     const auto start = std::chrono::steady_clock::now();
-    tri::FlipMesh3 work = tri::make_flip_mesh_3d(mesh);
+    tri::TetMesh3 work = tri::make_tet_mesh_3d(mesh);
     const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(work, criterion);
     mesh = tri::to_tetrahedralization_3d(work);
     const double seconds = seconds_since(start);

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "predicates/orient3d.hpp"
-#include "triangulation/flip_mesh_3d.hpp"
+#include "triangulation/flip_3d.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -27,7 +27,7 @@ TopologyReport3 fail(TopologyReport3 report, std::string problem, TetIdx t,
 }
 
 std::array<VertIdx, 3> face_of(const Tetrahedralization3& mesh, std::size_t t, unsigned k) {
-    const auto& lf = kOutwardFace[k];
+    const unsigned* lf = kFaceVertex[k];
     return {mesh.tets[4 * t + lf[0]], mesh.tets[4 * t + lf[1]], mesh.tets[4 * t + lf[2]]};
 }
 

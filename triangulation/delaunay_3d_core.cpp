@@ -76,6 +76,7 @@ Delaunay3Core::Delaunay3Core(std::span<const double> xyz, const Delaunay3Options
     merged_into.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) merged_into[i] = i;
     counters.points = n;
+    star.closed = true;  // kInfinite closes the mesh: every face has a twin
     // About 6.7 tetrahedra per point for uniform points, plus the hull's infinite ones.
     const std::size_t expected = 7 * std::size_t{n} + 64;
     mesh.tv.reserve(4 * expected);
@@ -128,18 +129,6 @@ std::uint32_t Delaunay3Core::random_offset() {
     rng_state_ ^= rng_state_ >> 7;
     rng_state_ ^= rng_state_ << 17;
     return static_cast<std::uint32_t>(rng_state_ >> 40) & 3u;
-}
-
-std::uint32_t Delaunay3Core::next_stamp() {
-    if (++stamp_counter_ == 0) {  // wrapped: forget every old mark
-        std::fill(stamp.begin(), stamp.end(), 0u);
-        stamp_counter_ = 1;
-    }
-    return stamp_counter_;
-}
-
-void Delaunay3Core::grow_stamps() {
-    if (stamp.size() < mesh.tet_slots()) stamp.resize(mesh.tet_slots() + mesh.tet_slots() / 2, 0u);
 }
 
 namespace {
@@ -207,7 +196,7 @@ bool Delaunay3Core::make_first_tet(std::vector<bool>& skip) {
             mesh.link(4 * outer[k] + in_k, 4 * outer[j] + in_j);
         }
     }
-    grow_stamps();
+    star.grow_stamps(mesh);
     last_tet = t;
     return true;
 }
@@ -276,95 +265,6 @@ Delaunay3Core::Location Delaunay3Core::locate(VertIdx p) {
     return where;
 }
 
-void Delaunay3Core::glue(std::uint64_t key, FaceIdx face) {
-    const std::size_t mask = edge_key_.size() - 1;
-    std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
-    for (;; h = (h + 1) & mask) {
-        if (edge_generation_[h] != generation_) {
-            edge_generation_[h] = generation_;
-            edge_key_[h] = key;
-            edge_face_[h] = face;
-            return;
-        }
-        if (edge_key_[h] == key) {
-            mesh.link(edge_face_[h], face);
-            return;
-        }
-    }
-}
-
-void Delaunay3Core::replace_by_star(const std::vector<TetIdx>& region, std::uint32_t region_stamp,
-                                    VertIdx p) {
-    star_faces_.clear();
-    p_faces_outside_.clear();
-    p_faces_key_.clear();
-    for (const TetIdx c : region) {
-        const VertIdx* v = &mesh.tv[4 * std::size_t{c}];
-        const unsigned p_slot = mesh.slot_of(c, p);
-        for (unsigned k = 0; k < 4; ++k) {
-            const FaceIdx outside = mesh.adj[4 * std::size_t{c} + k];
-            if (stamp[tet_of(outside)] == region_stamp) continue;
-            if (p_slot != 4 && p_slot != k) {
-                // A boundary face through p stays; the new tetrahedra glue to it along the
-                // edge it has besides p.
-                const unsigned* f = kFaceVertex[k];
-                VertIdx e[2];
-                unsigned count = 0;
-                for (unsigned i = 0; i < 3; ++i) {
-                    if (f[i] != p_slot) e[count++] = v[f[i]];
-                }
-                p_faces_outside_.push_back(outside);
-                p_faces_key_.push_back(edge_key(e[0], e[1]));
-                continue;
-            }
-            StarFace face{{v[0], v[1], v[2], v[3]}, k, outside};
-            face.v[k] = p;
-            star_faces_.push_back(face);
-        }
-    }
-    for (const TetIdx c : region) mesh.kill_tet(c);
-    // Each edge (a, b) of the star's boundary is met exactly twice: two new faces (p, a, b), or
-    // a new face and a kept boundary face through p.
-    const std::size_t entries = 3 * star_faces_.size() + p_faces_outside_.size();
-    if (edge_key_.size() < 2 * entries) {
-        std::size_t size = 64;
-        while (size < 2 * entries) size *= 2;
-        edge_key_.assign(size, 0);
-        edge_face_.assign(size, kNone);
-        edge_generation_.assign(size, 0);
-        generation_ = 0;
-    }
-    if (++generation_ == 0) {
-        std::fill(edge_generation_.begin(), edge_generation_.end(), 0u);
-        generation_ = 1;
-    }
-    created.clear();
-    for (const StarFace& face : star_faces_) {
-        const TetIdx t = mesh.new_tet();
-        created.push_back(t);
-        VertIdx* w = &mesh.tv[4 * std::size_t{t}];
-        w[0] = face.v[0];
-        w[1] = face.v[1];
-        w[2] = face.v[2];
-        w[3] = face.v[3];
-        mesh.link(4 * t + face.k, face.outside);
-        for (unsigned j = 0; j < 4; ++j) {
-            if (j == face.k) continue;
-            // Face j holds p and the two vertices at the slots other than j and k.
-            unsigned a = 0;
-            while (a == j || a == face.k) ++a;
-            unsigned b = a + 1;
-            while (b == j || b == face.k) ++b;
-            glue(edge_key(face.v[a], face.v[b]), 4 * t + j);
-        }
-    }
-    for (std::size_t i = 0; i < p_faces_outside_.size(); ++i) {
-        glue(p_faces_key_[i], p_faces_outside_[i]);
-    }
-    grow_stamps();
-    if (!created.empty()) last_tet = created.front();
-}
-
 Delaunay3Result Delaunay3Core::take_result(std::span<const double> xyz) {
     Delaunay3Result out;
     out.counters = counters;
@@ -384,7 +284,7 @@ Delaunay3Result Delaunay3Core::take_result(std::span<const double> xyz) {
     out.merged_into = std::move(merged_into);
     // Number the finite tetrahedra, then compact tv and adj in place (output index <= slot).
     const std::uint32_t slots = mesh.tet_slots();
-    std::vector<TetIdx>& output_index = stamp;  // reused
+    std::vector<TetIdx>& output_index = star.stamp;  // reused
     output_index.assign(slots, kNone);
     TetIdx count = 0;
     for (TetIdx t = 0; t < slots; ++t) {
@@ -404,7 +304,7 @@ Delaunay3Result Delaunay3Core::take_result(std::span<const double> xyz) {
     mesh.adj.resize(4 * std::size_t{count});
     out.mesh.tets = std::move(mesh.tv);
     out.mesh.neighbors = std::move(mesh.adj);
-    std::vector<std::uint32_t>().swap(stamp);
+    std::vector<std::uint32_t>().swap(star.stamp);
     // The caller's points, copied in order: a sequential copy is cheaper than carrying the
     // insertion-ordered copy back through the permutation (a random scatter).
     mesh = TetMesh3{};

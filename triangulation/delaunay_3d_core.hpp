@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Shared machinery of the 3D Delaunay constructions (internal to triangulation/): the points in
 // insertion order, the exact conflict test with the infinite vertex, the remembering visibility
-// walk, the first tetrahedron, the star of a point over a region (the retetrahedralization
-// Green-Sibson's splits and flips are made of; Bowyer-Watson stars its cavities with its own,
-// specialised copy), and the conversion to the caller's numbering.
+// walk, the first tetrahedron, the star of a point over a region (flip_3d's TetStar3: the
+// retetrahedralization Green-Sibson's splits and flips are made of; Bowyer-Watson stars its
+// cavities with its own, specialised copy), and the conversion to the caller's numbering.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +13,7 @@
 #include "predicates/insphere.hpp"
 #include "predicates/sign.hpp"
 #include "triangulation/delaunay_3d.hpp"
+#include "triangulation/flip_3d.hpp"
 #include "triangulation/mesh3.hpp"
 
 namespace exactmesh::triangulation::detail {
@@ -70,18 +71,8 @@ class Delaunay3Core {
     /// walk_to, recording a duplicate (and returning tet == kNone) when p equals a vertex.
     Location locate(VertIdx p);
 
-    /// Replaces the tetrahedra of `region` (all marked with stamp[t] == region_stamp, forming a
-    /// region star-shaped from p) by the star of p: one tetrahedron joining p to each boundary
-    /// face of the region that does not contain p. Faces of the region's boundary that contain p
-    /// (when p is already a vertex of the region, as in a flip) are glued to the new
-    /// tetrahedra. The new tetrahedra are listed in `created`.
-    void replace_by_star(const std::vector<TetIdx>& region, std::uint32_t region_stamp, VertIdx p);
-    std::vector<TetIdx> created;
-
-    /// Per tetrahedron slot: a mark, compared with fresh values from next_stamp().
-    std::vector<std::uint32_t> stamp;
-    std::uint32_t next_stamp();
-    void grow_stamps();
+    /// The splits and flips as stars of a point, with their region marks (flip_3d.hpp).
+    TetStar3 star;
 
     /// The finite tetrahedra in the caller's numbering, with a copy of the caller's points
     /// `xyz`; consumes the mesh.
@@ -96,31 +87,8 @@ class Delaunay3Core {
     Sign insphere_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p);
     bool conflict_infinite(TetIdx t, VertIdx p);
 
-    /// One boundary face of a region to star: the new tetrahedron's vertices, the slot of p in
-    /// it (the face slot that faces outward), and the outside twin of that face.
-    struct StarFace {
-        VertIdx v[4];
-        unsigned k;
-        FaceIdx outside;
-    };
-    std::vector<StarFace> star_faces_;
-    std::vector<FaceIdx> p_faces_outside_;    ///< outside twins of boundary faces holding p
-    std::vector<std::uint64_t> p_faces_key_;  ///< their edges (the two vertices besides p)
-    /// Open-addressing table: edge (a, b) -> the face slot holding p, a and b seen first.
-    std::vector<std::uint64_t> edge_key_;
-    std::vector<FaceIdx> edge_face_;
-    std::vector<std::uint32_t> edge_generation_;
-    std::uint32_t generation_ = 0;
-    void glue(std::uint64_t key, FaceIdx face);
-
-    std::uint32_t stamp_counter_ = 0;
     std::uint64_t rng_state_ = 0x9E3779B97F4A7C15ull;
     std::uint32_t random_offset();
 };
-
-/// Key of the undirected edge (a, b).
-inline std::uint64_t edge_key(VertIdx a, VertIdx b) {
-    return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
-}
 
 }  // namespace exactmesh::triangulation::detail

@@ -25,11 +25,11 @@
 
 #include <array>
 #include <cstdint>
-#include <vector>
 #include <string_view>
+#include <vector>
 
 #include "base/counter_table.hpp"
-#include "triangulation/flip_mesh_3d.hpp"
+#include "triangulation/flip_3d.hpp"
 #include "triangulation/tetrahedralization_3d.hpp"
 
 namespace exactmesh::triangulation {
@@ -40,8 +40,6 @@ enum class SwapCriterion3 { Delaunay, MaxMinDihedral, MinMaxDihedral, VolumeEdge
 /// the known ones otherwise.
 SwapCriterion3 swap_criterion_3d_from_name(std::string_view name);
 std::string_view swap_criterion_3d_name(SwapCriterion3 criterion);
-
-enum class FlipKind3 { None, Flip23, Flip32, Flip44, Flip22 };
 
 /// Work counters of one swapping run.
 struct EdgeFaceSwapCounters {
@@ -73,35 +71,15 @@ inline constexpr std::array kEdgeFaceSwapCounterNames = {
 static_assert(counter_table_complete(kEdgeFaceSwapCounterNames));
 
 /// Swaps until no face wants a swap under `criterion`.
-/// @pre mesh valid (make_flip_mesh_3d). Vertex indices are the SoS ranks.
-EdgeFaceSwapCounters swap_faces_3d(FlipMesh3& mesh, SwapCriterion3 criterion);
+/// The flips themselves are flip_3d's (plan_flip_3d, apply_flip_3d).
+/// @pre mesh valid (make_tet_mesh_3d). Vertex indices are the SoS ranks.
+EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion);
 
-/// Convenience: make_flip_mesh_3d, swap_faces_3d, to_tetrahedralization_3d into `mesh`.
-/// @throws InputError as make_flip_mesh_3d.
+/// Convenience: make_tet_mesh_3d, swap_faces_3d, to_tetrahedralization_3d into `mesh`.
+/// @throws InputError as make_tet_mesh_3d.
 EdgeFaceSwapCounters swap_faces_3d(Tetrahedralization3& mesh, SwapCriterion3 criterion);
 
-/// Makes the one valid swap (2-3, 3-2, 4-4 or 2-2) at the interior face of facet f, whatever
-/// any criterion says (test and bench scaffolding: scrambling a Delaunay mesh). Returns the
-/// kind made, None when the face has no valid swap.
-FlipKind3 flip_face_3d(FlipMesh3& mesh, FacetIdx f);
-
-/// A swap found at a face: the tetrahedra it removes and the positive ones it makes.
-struct FlipPlan3 {
-    FlipKind3 kind = FlipKind3::None;
-    std::array<TetIdx, 4> old{};
-    unsigned old_count = 0;
-    std::array<Tet, 4> made{};
-    unsigned made_count = 0;
-};
-
-/// The valid swap at the interior face of facet f (at most one exists), into `plan`; false
-/// when there is none. `edges_examined`, when given, counts the edge rings walked.
-bool plan_flip_3d(const FlipMesh3& mesh, FacetIdx f, FlipPlan3& plan, std::uint64_t* edges_examined = nullptr);
-
-/// Makes a planned swap; the new tetrahedra's slots go to `created`.
-void apply_flip_3d(FlipMesh3& mesh, const FlipPlan3& plan, std::vector<TetIdx>& created);
-
-/// Whether the interior face of facet f is locally Delaunay by insphere_sos (never a tie).
-bool locally_delaunay_sos(const FlipMesh3& mesh, FacetIdx f);
+/// Whether the interior face f is locally Delaunay by insphere_sos (never a tie).
+bool locally_delaunay_sos(const TetMesh3& mesh, FaceIdx f);
 
 }  // namespace exactmesh::triangulation

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Green-Sibson 3D (see green_sibson_3d.hpp). Every split and flip is one call of
-// Delaunay3Core::replace_by_star: the region it removes is star-shaped from the new point p,
-// and the new tetrahedra join p to the region's boundary faces that do not hold p.
+// Green-Sibson 3D (see green_sibson_3d.hpp). Every split and flip is one of flip_3d's TetStar3
+// primitives (1-4, 2-6, n-2n; 2-3, 3-2, 4-4 seen from p): the region it removes is star-shaped
+// from the new point p, and the new tetrahedra join p to the region's boundary faces that do
+// not hold p.
 //
 // A link face F = (a, b, c) of t = (p, a, b, c) with the tetrahedron t2 = (a, b, c, d) behind
 // it is not locally Delaunay when p lies in t2's perturbed circumsphere. The segment pd then
@@ -35,26 +36,31 @@ class FlipInserter {
     void insert(VertIdx p, const detail::Delaunay3Core::Location& where) {
         stack_.clear();
         deferred_.clear();
-        region_.clear();
+        region_.clear();  // the hull faces p sees, when it lies outside
         const TetIdx t = where.tet;
         const int zeros = std::popcount(where.zero_faces);
         if (mesh_.is_infinite(t)) {
             collect_visible_hull(t, p);
             ++core_.counters.outside_hull;
+            core_.star.star(mesh_, region_, p);
         } else if (zeros == 0) {
-            region_.push_back(t);  // 1-4
+            core_.star.split_1_4(mesh_, t, p);
             ++core_.counters.splits_1_4;
         } else if (zeros == 1) {
             const auto k = static_cast<unsigned>(std::countr_zero(where.zero_faces));
-            region_.push_back(t);  // 2-6
-            region_.push_back(tet_of(mesh_.adj[4 * std::size_t{t} + k]));
+            core_.star.split_2_6(mesh_, t, k, p);
             ++core_.counters.splits_2_6;
         } else {
             EM_ASSERT(zeros == 2);
-            collect_edge_ring(t, where.zero_faces);  // n-2n
+            // The edge: the two slots whose faces do not hold p.
+            unsigned ends[2], count = 0;
+            for (unsigned k = 0; k < 4; ++k) {
+                if ((where.zero_faces & (1u << k)) == 0) ends[count++] = k;
+            }
+            core_.star.split_edge(mesh_, t, ends[0], ends[1], p);
             ++core_.counters.splits_edge;
         }
-        star(p);
+        made();
         restore_delaunay(p);
     }
 
@@ -63,7 +69,7 @@ class FlipInserter {
     TetMesh3& mesh_;
     std::vector<TetIdx> stack_;     ///< tetrahedra holding p whose link face is to be checked
     std::vector<TetIdx> deferred_;  ///< link faces found not locally Delaunay but unflippable
-    std::vector<TetIdx> region_;
+    std::vector<TetIdx> region_;    ///< the hull region p sees
 
     enum class Outcome { LocallyDelaunay, Flipped, Unflippable };
 
@@ -81,8 +87,9 @@ class FlipInserter {
     /// 2-3 flips through the hull would; hull faces whose plane holds p are left to the 4-4
     /// flips, so no flip ever meets a hull face p sees strictly.
     void collect_visible_hull(TetIdx t, VertIdx p) {
-        const std::uint32_t mark = core_.next_stamp();
-        core_.stamp[t] = mark;
+        std::vector<std::uint32_t>& stamp = core_.star.stamp;
+        const std::uint32_t mark = core_.star.next_stamp();
+        stamp[t] = mark;
         region_.push_back(t);
         for (std::size_t r = 0; r < region_.size(); ++r) {
             const TetIdx c = region_[r];
@@ -90,8 +97,8 @@ class FlipInserter {
             for (unsigned k = 0; k < 4; ++k) {
                 if (k == m) continue;
                 const TetIdx u = across(c, k);  // shares kInfinite with c: infinite too
-                if (core_.stamp[u] == mark) continue;
-                core_.stamp[u] = mark;
+                if (stamp[u] == mark) continue;
+                stamp[u] = mark;
                 if (core_.orient_replacing(u, mesh_.slot_of(u, kInfinite), p) == Sign::Positive) {
                     region_.push_back(u);
                 }
@@ -99,42 +106,11 @@ class FlipInserter {
         }
     }
 
-    /// The tetrahedra around the edge of t shared by the two faces in `zero_faces`.
-    void collect_edge_ring(TetIdx t, unsigned zero_faces) {
-        unsigned ends[2], count = 0, others[2], other_count = 0;
-        for (unsigned k = 0; k < 4; ++k) {
-            if (zero_faces & (1u << k)) {
-                others[other_count++] = k;  // faces holding the edge: opposite the other two
-            } else {
-                ends[count++] = k;
-            }
-        }
-        const VertIdx a = vertex(t, ends[0]), b = vertex(t, ends[1]);
-        VertIdx cross_opposite = vertex(t, others[0]);
-        TetIdx current = t;
-        for (;;) {
-            region_.push_back(current);
-            const FaceIdx g =
-                mesh_.adj[4 * std::size_t{current} + mesh_.slot_of(current, cross_opposite)];
-            const TetIdx next = tet_of(g);
-            if (next == t) break;
-            // next = (a, b, y, w) entered through (a, b, y); go on through (a, b, w).
-            const VertIdx w = mesh_.tv[g];
-            for (unsigned k = 0; k < 4; ++k) {
-                const VertIdx v = vertex(next, k);
-                if (v != a && v != b && v != w) cross_opposite = v;
-            }
-            current = next;
-        }
-    }
-
-    /// Stars region_ from p and pushes the new tetrahedra.
-    void star(VertIdx p) {
-        core_.grow_stamps();
-        const std::uint32_t mark = core_.next_stamp();
-        for (const TetIdx t : region_) core_.stamp[t] = mark;
-        core_.replace_by_star(region_, mark, p);
-        stack_.insert(stack_.end(), core_.created.begin(), core_.created.end());
+    /// Pushes the tetrahedra the last star made (they hold p) and walks on from the first.
+    void made() {
+        const std::vector<TetIdx>& created = core_.star.created;
+        stack_.insert(stack_.end(), created.begin(), created.end());
+        if (!created.empty()) core_.last_tet = created.front();
     }
 
     void restore_delaunay(VertIdx p) {
@@ -191,20 +167,18 @@ class FlipInserter {
         // faces were all starred when p was inserted), so only the 4-4 case (a 2-2 flip of the
         // hull faces and one of the tetrahedra below them) can apply.
         EM_ASSERT(!infinite || (zeros == 1 && negatives == 0));
-        region_.clear();
         if (negatives == 0 && zeros == 0) {
-            region_ = {t, t2};
-            star(p);
+            core_.star.flip_2_3(mesh_, t, i);
+            made();
             ++core_.counters.flips_2_3;
             return Outcome::Flipped;
         }
         if (negatives == 1 && zeros == 0) {
             // Reflex edge ab (F without vertex `negative`): flippable when exactly three
             // tetrahedra share it, the third being (a, b, p, d).
-            const TetIdx t3 = across(t, negative);
             if (apex_across(t, negative) != d) return Outcome::Unflippable;
-            region_ = {t, t2, t3};
-            star(p);
+            core_.star.flip_3_2(mesh_, t, i, negative);
+            made();
             ++core_.counters.flips_3_2;
             return Outcome::Flipped;
         }
@@ -212,13 +186,11 @@ class FlipInserter {
             // p, d, a, b coplanar and pd crosses edge ab: flippable when exactly four
             // tetrahedra share it, t3 = (a, b, p, e) and t4 = (a, b, d, e).
             const VertIdx c = vertex(t, zero);
-            const TetIdx t3 = across(t, zero);
             const VertIdx e = apex_across(t, zero);
             const unsigned c_in_t2 = mesh_.slot_of(t2, c);
-            const TetIdx t4 = across(t2, c_in_t2);
             if (apex_across(t2, c_in_t2) != e) return Outcome::Unflippable;
-            region_ = {t, t2, t3, t4};
-            star(p);
+            core_.star.flip_4_4(mesh_, t, i, zero);
+            made();
             ++core_.counters.flips_4_4;
             return Outcome::Flipped;
         }

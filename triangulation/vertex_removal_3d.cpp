@@ -25,23 +25,27 @@ namespace {
 
 using predicates::Sign;
 
-bool holds(const Tet& t, VertIdx v) { return std::find(t.begin(), t.end(), v) != t.end(); }
+bool holds(const Tet& t, VertIdx v) {
+    return std::find(t.begin(), t.end(), v) != t.end();
+}
 
 /// Whether the circumsphere of positive tetrahedron t holds no vertex of `link` (SoS).
-bool empty_of(const FlipMesh3& mesh, const Tet& t, const std::vector<VertIdx>& link,
+bool empty_of(const TetMesh3& mesh, const Tet& t, const std::vector<VertIdx>& link,
               VertexRemovalCounters& counters) {
     for (const VertIdx x : link) {
         if (holds(t, x)) continue;
         ++counters.insphere_tests;
-        if (predicates::insphere_sos(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3]),
-                                     mesh.point(x), t[0], t[1], t[2], t[3], x) == Sign::Positive) {
+        if (predicates::insphere_sos(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]),
+                                     mesh.point(t[3]), mesh.point(x), t[0], t[1], t[2], t[3],
+                                     x) == Sign::Positive) {
             return false;
         }
     }
     return true;
 }
 
-std::vector<VertIdx> link_vertices(const FlipMesh3& mesh, const std::vector<TetIdx>& star, VertIdx v) {
+std::vector<VertIdx> link_vertices(const TetMesh3& mesh, const std::vector<TetIdx>& star,
+                                   VertIdx v) {
     std::vector<VertIdx> link;
     for (const TetIdx t : star) {
         for (unsigned k = 0; k < 4; ++k) {
@@ -53,23 +57,25 @@ std::vector<VertIdx> link_vertices(const FlipMesh3& mesh, const std::vector<TetI
 }
 
 /// One flip among v's tetrahedra whose new tetrahedra without v are empty of `link`'s vertices.
-bool find_flip(const FlipMesh3& mesh, VertIdx v, const std::vector<TetIdx>& star, const std::vector<VertIdx>& link,
-               FlipPlan3& plan, VertexRemovalCounters& counters) {
+bool find_flip(const TetMesh3& mesh, VertIdx v, const std::vector<TetIdx>& star,
+               const std::vector<VertIdx>& link, FlipPlan3& plan, VertexRemovalCounters& counters) {
     for (const TetIdx t : star) {
-        const unsigned lv = mesh.local_index(t, v);
+        const unsigned lv = mesh.slot_of(t, v);
         for (unsigned k = 0; k < 4; ++k) {
             if (k == lv) continue;
-            const FacetIdx f = 4 * t + k;
-            const FacetIdx twin = mesh.adj[f];
+            const FaceIdx f = 4 * t + k;
+            const FaceIdx twin = mesh.adj[f];
             if (twin == kNone || twin / 4 < t) continue;  // each face holding v once
             if (!plan_flip_3d(mesh, f, plan)) continue;
             if (plan.kind == FlipKind3::Flip22) continue;
             bool inside = true;
-            for (unsigned i = 0; i < plan.old_count; ++i) inside = inside && mesh.local_index(plan.old[i], v) < 4;
+            for (unsigned i = 0; i < plan.old_count; ++i)
+                inside = inside && mesh.slot_of(plan.old[i], v) < 4;
             if (!inside) continue;  // would change tetrahedra outside the star
             bool delaunay = true;
             for (unsigned i = 0; i < plan.made_count && delaunay; ++i) {
-                if (!holds(plan.made[i], v)) delaunay = empty_of(mesh, plan.made[i], link, counters);
+                if (!holds(plan.made[i], v))
+                    delaunay = empty_of(mesh, plan.made[i], link, counters);
             }
             if (delaunay) return true;
         }
@@ -79,13 +85,14 @@ bool find_flip(const FlipMesh3& mesh, VertIdx v, const std::vector<TetIdx>& star
 
 /// The Delaunay tetrahedra of the link vertices inside the region of `star`, by gift wrapping
 /// from its boundary faces; empty when the front cannot be closed.
-std::vector<Tet> wrap_cavity(const FlipMesh3& mesh, VertIdx v, const std::vector<TetIdx>& star,
+std::vector<Tet> wrap_cavity(const TetMesh3& mesh, VertIdx v, const std::vector<TetIdx>& star,
                              const std::vector<VertIdx>& link, VertexRemovalCounters& counters) {
     // Front faces, oriented so that the part still to fill lies on their positive side.
     std::vector<std::array<VertIdx, 3>> front;
-    for (const TetIdx t : star) front.push_back(mesh.face(4 * t + mesh.local_index(t, v)));
+    for (const TetIdx t : star) front.push_back(mesh.face(4 * t + mesh.slot_of(t, v)));
     auto same = [](const std::array<VertIdx, 3>& x, const std::array<VertIdx, 3>& y) {
-        return (x[0] == y[0] && x[1] == y[1] && x[2] == y[2]) || (x[0] == y[1] && x[1] == y[2] && x[2] == y[0]) ||
+        return (x[0] == y[0] && x[1] == y[1] && x[2] == y[2]) ||
+               (x[0] == y[1] && x[1] == y[2] && x[2] == y[0]) ||
                (x[0] == y[2] && x[1] == y[0] && x[2] == y[1]);
     };
     std::vector<Tet> made;
@@ -106,8 +113,8 @@ std::vector<Tet> wrap_cavity(const FlipMesh3& mesh, VertIdx v, const std::vector
                 continue;
             }
             ++counters.insphere_tests;
-            if (predicates::insphere_sos(a, b, c, mesh.point(best), mesh.point(x), face[0], face[1], face[2], best, x) ==
-                Sign::Positive) {
+            if (predicates::insphere_sos(a, b, c, mesh.point(best), mesh.point(x), face[0], face[1],
+                                         face[2], best, x) == Sign::Positive) {
                 best = x;
             }
         }
@@ -116,9 +123,11 @@ std::vector<Tet> wrap_cavity(const FlipMesh3& mesh, VertIdx v, const std::vector
         made.push_back(t);
         // The three other faces: each closes a front face it meets, or joins the front.
         for (unsigned k = 0; k < 3; ++k) {
-            const auto& lf = kOutwardFace[k];
-            const std::array<VertIdx, 3> outward{t[lf[0]], t[lf[1]], t[lf[2]]};  // t on its positive side
-            const auto it = std::find_if(front.begin(), front.end(), [&](const auto& g) { return same(g, outward); });
+            const unsigned* lf = kFaceVertex[k];
+            const std::array<VertIdx, 3> outward{t[lf[0]], t[lf[1]],
+                                                 t[lf[2]]};  // t on its positive side
+            const auto it = std::find_if(front.begin(), front.end(),
+                                         [&](const auto& g) { return same(g, outward); });
             if (it != front.end()) {
                 front.erase(it);
             } else {
@@ -129,17 +138,21 @@ std::vector<Tet> wrap_cavity(const FlipMesh3& mesh, VertIdx v, const std::vector
     return made;
 }
 
-void remove_one(FlipMesh3& mesh, VertIdx v, VertexRemovalCounters& counters) {
+void remove_one(TetMesh3& mesh, VertIdx v, VertexRemovalCounters& counters) {
     if (v >= mesh.vertex_count()) {
-        throw VertexRemovalError(v, "out of range (" + std::to_string(mesh.vertex_count()) + " vertices)");
+        throw VertexRemovalError(
+            v, "out of range (" + std::to_string(mesh.vertex_count()) + " vertices)");
     }
-    if (mesh.vertex_tet[v] == kNone) throw VertexRemovalError(v, "it is a vertex of no tetrahedron");
+    if (mesh.vertex_tet[v] == kNone)
+        throw VertexRemovalError(v, "it is a vertex of no tetrahedron");
     const std::vector<TetIdx> original = vertex_star(mesh, v);
     for (const TetIdx t : original) {
-        const unsigned lv = mesh.local_index(t, v);
+        const unsigned lv = mesh.slot_of(t, v);
         for (unsigned k = 0; k < 4; ++k) {
             if (k != lv && mesh.adj[4 * std::size_t{t} + k] == kNone) {
-                throw VertexRemovalError(v, "it lies on the boundary of the domain (removing it would change the domain)");
+                throw VertexRemovalError(
+                    v,
+                    "it lies on the boundary of the domain (removing it would change the domain)");
             }
         }
     }
@@ -157,11 +170,13 @@ void remove_one(FlipMesh3& mesh, VertIdx v, VertexRemovalCounters& counters) {
         for (const Tet& t : made_outside_star) {
             // Find the live slot of each made tetrahedron through a vertex's star.
             for (const TetIdx u : vertex_star(mesh, t[0])) {
-                if (mesh.tet(u) == t && std::find(region.begin(), region.end(), u) == region.end()) region.push_back(u);
+                if (mesh.tet(u) == t && std::find(region.begin(), region.end(), u) == region.end())
+                    region.push_back(u);
             }
         }
         if (!replace_tets(mesh, region, original_tets)) {
-            throw InternalError("vertex_removal_3d: could not restore the star of vertex " + std::to_string(v));
+            throw InternalError("vertex_removal_3d: could not restore the star of vertex " +
+                                std::to_string(v));
         }
         throw VertexRemovalError(v, reason);
     };
@@ -172,10 +187,17 @@ void remove_one(FlipMesh3& mesh, VertIdx v, VertexRemovalCounters& counters) {
             if (!holds(plan.made[i], v)) made_outside_star.push_back(plan.made[i]);
         }
         switch (plan.kind) {
-            case FlipKind3::Flip23: ++local.flips_23; break;
-            case FlipKind3::Flip32: ++local.flips_32; break;
-            case FlipKind3::Flip44: ++local.flips_44; break;
-            default: break;
+            case FlipKind3::Flip23:
+                ++local.flips_23;
+                break;
+            case FlipKind3::Flip32:
+                ++local.flips_32;
+                break;
+            case FlipKind3::Flip44:
+                ++local.flips_44;
+                break;
+            default:
+                break;
         }
         star = vertex_star(mesh, v);
     }
@@ -189,23 +211,28 @@ void remove_one(FlipMesh3& mesh, VertIdx v, VertexRemovalCounters& counters) {
             if (!holds(t, x)) std::replace(t.begin(), t.end(), v, x);
         }
         if (last.size() == 4 &&
-            predicates::orient3d(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])) == Sign::Positive) {
+            predicates::orient3d(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]),
+                                 mesh.point(t[3])) == Sign::Positive) {
             closing.push_back(t);
         }
     }
     if (closing.empty()) {
         closing = wrap_cavity(mesh, v, star, link_vertices(mesh, star, v), local);
         if (closing.empty()) {
-            undo_and_fail("no flip sequence empties its star, and the Delaunay tetrahedra of its link do not fill the star "
-                          "(the tetrahedralization is not Delaunay around it)");
+            undo_and_fail(
+                "no flip sequence empties its star, and the Delaunay tetrahedra of its link do not "
+                "fill the star "
+                "(the tetrahedralization is not Delaunay around it)");
         }
         ++local.cavity_fallbacks;
     } else {
         ++local.flips_41;
     }
     if (!replace_tets(mesh, star, closing)) {
-        undo_and_fail("the Delaunay tetrahedra of its link do not fit its star (the tetrahedralization is not Delaunay "
-                      "around it)");
+        undo_and_fail(
+            "the Delaunay tetrahedra of its link do not fit its star (the tetrahedralization is "
+            "not Delaunay "
+            "around it)");
     }
     counters.removed += 1;
     counters.star_tets += original.size();
@@ -219,18 +246,20 @@ void remove_one(FlipMesh3& mesh, VertIdx v, VertexRemovalCounters& counters) {
 
 }  // namespace
 
-void remove_vertex_3d(FlipMesh3& mesh, VertIdx v, VertexRemovalCounters* counters) {
+void remove_vertex_3d(TetMesh3& mesh, VertIdx v, VertexRemovalCounters* counters) {
     VertexRemovalCounters local;
     remove_one(mesh, v, counters != nullptr ? *counters : local);
 }
 
-void remove_vertices_3d(FlipMesh3& mesh, std::span<const VertIdx> vertices, VertexRemovalCounters* counters) {
+void remove_vertices_3d(TetMesh3& mesh, std::span<const VertIdx> vertices,
+                        VertexRemovalCounters* counters) {
     VertexRemovalCounters local;
     for (const VertIdx v : vertices) remove_one(mesh, v, counters != nullptr ? *counters : local);
 }
 
-void remove_vertices_3d(Tetrahedralization3& mesh, std::span<const VertIdx> vertices, VertexRemovalCounters* counters) {
-    FlipMesh3 work = make_flip_mesh_3d(mesh);
+void remove_vertices_3d(Tetrahedralization3& mesh, std::span<const VertIdx> vertices,
+                        VertexRemovalCounters* counters) {
+    TetMesh3 work = make_tet_mesh_3d(mesh);
     remove_vertices_3d(work, vertices, counters);
     mesh = to_tetrahedralization_3d(work);
 }

@@ -21,7 +21,7 @@
 #include <string>
 
 #include "predicates/errors.hpp"
-#include "triangulation/flip_mesh_3d.hpp"
+#include "triangulation/flip_3d.hpp"
 #include "triangulation/tetrahedralization_3d.hpp"
 
 namespace exactmesh::triangulation {
@@ -53,14 +53,14 @@ struct VertexRemovalCounters {
 
 /// Removes interior vertex v; its coordinates stay in mesh.xyz, used by no tetrahedron.
 /// @throws VertexRemovalError (the mesh unchanged).
-void remove_vertex_3d(FlipMesh3& mesh, VertIdx v, VertexRemovalCounters* counters = nullptr);
+void remove_vertex_3d(TetMesh3& mesh, VertIdx v, VertexRemovalCounters* counters = nullptr);
 
 /// Derefinement: removes each vertex of `vertices` in order.
 /// @throws VertexRemovalError at the first that cannot go (the earlier removals stay made).
-void remove_vertices_3d(FlipMesh3& mesh, std::span<const VertIdx> vertices,
+void remove_vertices_3d(TetMesh3& mesh, std::span<const VertIdx> vertices,
                         VertexRemovalCounters* counters = nullptr);
 
-/// Convenience over a Tetrahedralization3 (make_flip_mesh_3d, remove, compact back); on an
+/// Convenience over a Tetrahedralization3 (make_tet_mesh_3d, remove, compact back); on an
 /// exception `mesh` is left as it was.
 void remove_vertices_3d(Tetrahedralization3& mesh, std::span<const VertIdx> vertices,
                         VertexRemovalCounters* counters = nullptr);

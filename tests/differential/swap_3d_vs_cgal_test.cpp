@@ -80,9 +80,9 @@ std::vector<double> points_in_tetrahedron(std::uint32_t n, std::uint64_t seed) {
 
 /// Splits the tetrahedra whose closure holds v (brute-force location) by joining v to their
 /// boundary faces: 1-4, 2-6 or n-2n.
-void insert_point(tri::FlipMesh3& mesh, tri::VertIdx v) {
+void insert_point(tri::TetMesh3& mesh, tri::VertIdx v) {
     std::vector<tri::TetIdx> holding;
-    for (tri::TetIdx t = 0; t < mesh.slot_count(); ++t) {
+    for (tri::TetIdx t = 0; t < mesh.tet_slots(); ++t) {
         if (mesh.is_dead(t)) continue;
         bool inside = true;
         for (unsigned k = 0; k < 4 && inside; ++k) {
@@ -96,7 +96,7 @@ void insert_point(tri::FlipMesh3& mesh, tri::VertIdx v) {
     std::vector<tri::Tet> made;
     for (const tri::TetIdx t : holding) {
         for (unsigned k = 0; k < 4; ++k) {
-            const tri::FacetIdx twin = mesh.adj[4 * t + k];
+            const tri::FaceIdx twin = mesh.adj[4 * t + k];
             if (twin != tri::kNone && std::find(holding.begin(), holding.end(), twin / 4) != holding.end()) continue;
             const auto f = mesh.face(4 * t + k);
             if (em::predicates::orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), mesh.point(v)) ==
@@ -117,7 +117,7 @@ TEST(Differential_Swap3VsCgal, DelaunayInsertionByFlipsReachesCgalsTetrahedraliz
         const std::uint32_t n = 50 + 40 * static_cast<std::uint32_t>(seed % 5);
         const std::vector<double> xyz = points_in_tetrahedron(n, 10 + seed);
         const std::uint32_t start = 4 + n / 4;
-        tri::FlipMesh3 mesh = tri::make_flip_mesh_3d(cgal_delaunay(xyz, first(start)));
+        tri::TetMesh3 mesh = tri::make_tet_mesh_3d(cgal_delaunay(xyz, first(start)));
         for (tri::VertIdx v = start; v < n + 4; ++v) {
             insert_point(mesh, v);
             const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
@@ -136,11 +136,11 @@ TEST(Differential_Swap3VsCgal, DelaunaySwappingUndoesRandomSwapsUnlessItStalls) 
         const std::uint32_t n = 100 + 100 * static_cast<std::uint32_t>(seed % 4);
         const std::vector<double> xyz = points_in_tetrahedron(n, 50 + seed);
         const tri::Tetrahedralization3 reference = cgal_delaunay(xyz, first(n + 4));
-        tri::FlipMesh3 mesh = tri::make_flip_mesh_3d(reference);
+        tri::TetMesh3 mesh = tri::make_tet_mesh_3d(reference);
         std::mt19937_64 rng(seed);
         std::uint64_t scrambled = 0;
         for (int i = 0; i < 4 * static_cast<int>(n); ++i) {
-            const auto f = static_cast<tri::FacetIdx>(rng() % mesh.adj.size());
+            const auto f = static_cast<tri::FaceIdx>(rng() % mesh.adj.size());
             if (tri::flip_face_3d(mesh, f) != tri::FlipKind3::None) ++scrambled;
         }
         ASSERT_GT(scrambled, 0u);
@@ -164,7 +164,7 @@ TEST(Differential_Swap3VsCgal, VertexRemovalGivesCgalsTetrahedralizationOfTheRes
     for (int seed = 0; seed < cases; ++seed) {
         const std::uint32_t n = 200 + 100 * static_cast<std::uint32_t>(seed % 3);
         const std::vector<double> xyz = points_in_tetrahedron(n, 80 + seed);
-        tri::FlipMesh3 mesh = tri::make_flip_mesh_3d(cgal_delaunay(xyz, first(n + 4)));
+        tri::TetMesh3 mesh = tri::make_tet_mesh_3d(cgal_delaunay(xyz, first(n + 4)));
         std::vector<std::uint32_t> remaining = first(n + 4);
         std::mt19937_64 rng(seed);
         // Remove a third of the inner points (the four corners hold the hull).
@@ -192,7 +192,7 @@ TEST(Differential_Swap3VsCgal, VertexRemovalOnCubicGridsStaysDelaunay) {
         }
     }
     const auto n = static_cast<std::uint32_t>(xyz.size() / 3);
-    tri::FlipMesh3 mesh = tri::make_flip_mesh_3d(cgal_delaunay(xyz, first(n)));
+    tri::TetMesh3 mesh = tri::make_tet_mesh_3d(cgal_delaunay(xyz, first(n)));
     std::vector<std::uint32_t> remaining = first(n);
     tri::VertexRemovalCounters counters;
     for (int i = 1; i < side - 1; ++i) {

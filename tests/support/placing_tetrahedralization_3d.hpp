@@ -18,14 +18,14 @@
 
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
-#include "triangulation/flip_mesh_3d.hpp"
+#include "triangulation/flip_3d.hpp"
 #include "triangulation/tetrahedralization_3d.hpp"
 
 namespace exactmesh::testing {
 
 inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::span<const double> xyz) {
     using predicates::Sign;
-    using triangulation::kOutwardFace;
+    using triangulation::kFaceVertex;
     using triangulation::Tet;
     using triangulation::VertIdx;
     triangulation::Tetrahedralization3 out;
@@ -71,13 +71,13 @@ inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::spa
     auto add = [&](const Tet& t) {
         tets.push_back(t);
         for (unsigned k = 0; k < 4; ++k) {
-            const auto& lf = kOutwardFace[k];
+            const unsigned* lf = kFaceVertex[k];
             ++face_count[key(t[lf[0]], t[lf[1]], t[lf[2]])];
         }
     };
     auto remove_faces = [&](const Tet& t) {
         for (unsigned k = 0; k < 4; ++k) {
-            const auto& lf = kOutwardFace[k];
+            const unsigned* lf = kFaceVertex[k];
             if (--face_count[key(t[lf[0]], t[lf[1]], t[lf[2]])] == 0) face_count.erase(key(t[lf[0]], t[lf[1]], t[lf[2]]));
         }
     };
@@ -92,7 +92,7 @@ inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::spa
         for (std::size_t t = 0; t < tets.size(); ++t) {
             bool inside = true;
             for (unsigned k = 0; k < 4; ++k) {
-                const auto& lf = kOutwardFace[k];
+                const unsigned* lf = kFaceVertex[k];
                 signs[t][k] = predicates::orient3d(p(tets[t][lf[0]]), p(tets[t][lf[1]]), p(tets[t][lf[2]]), p(v));
                 inside = inside && signs[t][k] != Sign::Negative;
             }
@@ -104,13 +104,13 @@ inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::spa
             std::map<std::array<VertIdx, 3>, int> local;
             for (const std::size_t t : holding) {
                 for (unsigned k = 0; k < 4; ++k) {
-                    const auto& lf = kOutwardFace[k];
+                    const unsigned* lf = kFaceVertex[k];
                     ++local[key(tets[t][lf[0]], tets[t][lf[1]], tets[t][lf[2]])];
                 }
             }
             for (const std::size_t t : holding) {
                 for (unsigned k = 0; k < 4; ++k) {
-                    const auto& lf = kOutwardFace[k];
+                    const unsigned* lf = kFaceVertex[k];
                     if (local[key(tets[t][lf[0]], tets[t][lf[1]], tets[t][lf[2]])] != 1) continue;
                     if (signs[t][k] != Sign::Positive) continue;
                     made.push_back({tets[t][lf[0]], tets[t][lf[1]], tets[t][lf[2]], v});
@@ -128,7 +128,7 @@ inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::spa
         } else {
             for (std::size_t t = 0; t < tets.size(); ++t) {
                 for (unsigned k = 0; k < 4; ++k) {
-                    const auto& lf = kOutwardFace[k];
+                    const unsigned* lf = kFaceVertex[k];
                     if (signs[t][k] != Sign::Negative) continue;
                     if (face_count[key(tets[t][lf[0]], tets[t][lf[1]], tets[t][lf[2]])] != 1) continue;
                     made.push_back({tets[t][lf[1]], tets[t][lf[0]], tets[t][lf[2]], v});

@@ -198,7 +198,7 @@ const std::vector<tri::VertIdx> kStallStart{2, 0, 3, 4, 3, 2, 4, 6, 4, 2, 0, 6, 
                                             0, 4, 6, 1, 4, 0, 3, 5, 1, 3, 6, 5, 1, 4, 3, 5};
 
 /// Whether the interior face between tetrahedra t and u of a plain list admits a 2-3, 3-2, 4-4
-/// or 2-2 swap, decided from the vertex lists alone (independently of FlipMesh3): 2-3 when the
+/// or 2-2 swap, decided from the vertex lists alone (independently of TetMesh3): 2-3 when the
 /// three tetrahedra around the segment between the apexes are positive; 3-2 / 4-4 / 2-2 when
 /// an edge of the face is held by exactly 3 / 4 / 2 tetrahedra and the tetrahedra the swap
 /// would make are all positive.

@@ -48,22 +48,22 @@ std::vector<double> cubic_grid(int side) {
 
 /// The Delaunay tetrahedralization by swapping from the placing start, checked against the
 /// oracle (the caller skips the rare stalled start).
-bool delaunay_by_swapping(const std::vector<double>& xyz, tri::FlipMesh3& out) {
+bool delaunay_by_swapping(const std::vector<double>& xyz, tri::TetMesh3& out) {
     tri::Tetrahedralization3 mesh = em::testing::placing_tetrahedralization_3d(xyz);
     const auto counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
     if (counters.stalled_faces != 0) return false;
     EXPECT_EQ(orc::tet_set(mesh.tets), orc::empty_sphere_delaunay_3d(xyz));
-    out = tri::make_flip_mesh_3d(mesh);
+    out = tri::make_tet_mesh_3d(mesh);
     return true;
 }
 
-std::vector<tri::VertIdx> interior_vertices(const tri::FlipMesh3& mesh) {
+std::vector<tri::VertIdx> interior_vertices(const tri::TetMesh3& mesh) {
     std::vector<tri::VertIdx> out;
     for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v) {
         if (mesh.vertex_tet[v] == tri::kNone) continue;
         bool interior = true;
         for (const tri::TetIdx t : tri::vertex_star(mesh, v)) {
-            const unsigned lv = mesh.local_index(t, v);
+            const unsigned lv = mesh.slot_of(t, v);
             for (unsigned k = 0; k < 4; ++k) interior = interior && (k == lv || mesh.adj[4 * t + k] != tri::kNone);
         }
         if (interior) out.push_back(v);
@@ -71,7 +71,7 @@ std::vector<tri::VertIdx> interior_vertices(const tri::FlipMesh3& mesh) {
     return out;
 }
 
-std::vector<std::uint32_t> active_vertices(const tri::FlipMesh3& mesh) {
+std::vector<std::uint32_t> active_vertices(const tri::TetMesh3& mesh) {
     std::vector<std::uint32_t> out;
     for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v) {
         if (mesh.vertex_tet[v] != tri::kNone) out.push_back(v);
@@ -79,7 +79,7 @@ std::vector<std::uint32_t> active_vertices(const tri::FlipMesh3& mesh) {
     return out;
 }
 
-void expect_valid(const tri::FlipMesh3& mesh) {
+void expect_valid(const tri::TetMesh3& mesh) {
     const auto report = tri::check_topology_3d(tri::to_tetrahedralization_3d(mesh), {true});
     EXPECT_TRUE(report.ok) << report.problem;
 }
@@ -92,7 +92,7 @@ TEST(Triangulation_VertexRemoval3, RemovingFromDelaunayGivesTheDelaunayOfTheRest
     int meshes = 0;
     for (int seed = 0; seed < cases; ++seed) {
         const std::vector<double> xyz = random_points(14 + static_cast<std::uint32_t>(seed % 16), 900 + seed);
-        tri::FlipMesh3 mesh;
+        tri::TetMesh3 mesh;
         if (!delaunay_by_swapping(xyz, mesh)) continue;
         ++meshes;
         std::mt19937_64 rng(seed);
@@ -123,7 +123,7 @@ TEST(Triangulation_VertexRemoval3, RemovingFromDelaunayGivesTheDelaunayOfTheRest
 TEST(Triangulation_VertexRemoval3, CubicGridDerefinementStaysDelaunayWithTies) {
     // Grid points: cospherical cubes and coplanar stars; SoS decides, the oracle agrees.
     const std::vector<double> xyz = cubic_grid(4);
-    tri::FlipMesh3 mesh;
+    tri::TetMesh3 mesh;
     ASSERT_TRUE(delaunay_by_swapping(xyz, mesh));
     tri::VertexRemovalCounters counters;
     const std::vector<tri::VertIdx> inner = interior_vertices(mesh);
@@ -139,7 +139,7 @@ TEST(Triangulation_VertexRemoval3, CubicGridDerefinementStaysDelaunayWithTies) {
     EXPECT_EQ(counters.removed, 8u);
     // The 3 x 3 x 3 grid's center, against the oracle itself.
     const std::vector<double> small = cubic_grid(3);
-    tri::FlipMesh3 center;
+    tri::TetMesh3 center;
     ASSERT_TRUE(delaunay_by_swapping(small, center));
     tri::remove_vertex_3d(center, 13, &counters);
     EXPECT_EQ(orc::tet_set(tri::to_tetrahedralization_3d(center).tets),
@@ -152,7 +152,7 @@ TEST(Triangulation_VertexRemoval3, CubicGridDerefinementStaysDelaunayWithTies) {
 
 TEST(Triangulation_VertexRemoval3, BoundaryAndUnusedVerticesAreRefusedAndTheMeshKept) {
     const std::vector<double> xyz = random_points(20, 5);
-    tri::FlipMesh3 mesh;
+    tri::TetMesh3 mesh;
     ASSERT_TRUE(delaunay_by_swapping(xyz, mesh));
     const auto before = orc::tet_set(tri::to_tetrahedralization_3d(mesh).tets);
     const std::vector<tri::VertIdx> inner = interior_vertices(mesh);
@@ -182,7 +182,7 @@ TEST(Triangulation_VertexRemoval3, NonDelaunayStarsEitherCloseValidlyOrAreRefuse
     const int cases = std::max(1, static_cast<int>(20 * test_scale()));
     for (int seed = 0; seed < cases; ++seed) {
         const std::vector<double> xyz = random_points(30, 300 + seed);
-        tri::FlipMesh3 mesh = tri::make_flip_mesh_3d(em::testing::placing_tetrahedralization_3d(xyz));
+        tri::TetMesh3 mesh = tri::make_tet_mesh_3d(em::testing::placing_tetrahedralization_3d(xyz));
         for (const tri::VertIdx v : interior_vertices(mesh)) {
             const auto before = orc::tet_set(tri::to_tetrahedralization_3d(mesh).tets);
             try {
@@ -203,7 +203,7 @@ TEST(Triangulation_VertexRemoval3, NonDelaunayStarsEitherCloseValidlyOrAreRefuse
 
 TEST(Triangulation_VertexRemoval3, DerefinementOfAListOverATetrahedralization) {
     const std::vector<double> xyz = random_points(40, 77);
-    tri::FlipMesh3 work;
+    tri::TetMesh3 work;
     ASSERT_TRUE(delaunay_by_swapping(xyz, work));
     std::vector<tri::VertIdx> inner = interior_vertices(work);
     inner.resize(std::min<std::size_t>(inner.size(), 5));
