@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: MIT
+// The 2D flip kernel on TriMesh2 half-edges: the 1-3 split (a point inside a triangle), the
+// edge split (2-4 on an interior edge, 1-2 on a boundary edge) and the 2-2 flip [Lawson77;
+// GreenSibson78 §3; seed material §2.2]. Every insertion and swap in 2D goes through these three.
+// Invariants kept: twins mutual (an outer twin of kNone, the boundary of a mesh without the
+// infinite vertex, stays kNone), every triangle counter-clockwise when the caller's geometric
+// precondition holds, and mesh.flags (when not empty) kept per edge: an outer edge keeps its
+// marks, both halves of a split edge keep the split edge's, a new edge starts at 0.
+// Cost: O(1) each. Predicates: none (the callers decide; the kernel only rewrites topology).
+// Inline by design: Green-Sibson's insertion calls them in its hot loop.
+//
+// Pictures, with the labels of the code (counter-clockwise; p the new vertex):
+//
+//   split_triangle_2d           split_edge_2d (2-4)            flip_2d (e = u -> v)
+//          c                          c                            x              x
+//         /|\                        /|\                          / \            /|\      .
+//        / | \                      / | \                        /   \          / | \     .
+//       /  p  \                    a--p--b   (e = a -> b)       u --- v  ==>   u  |  v
+//      / /   \ \                    \ | /                        \   /          \ | /     .
+//     a ------- b                    \|/                          \ /            \|/      .
+//                                     d                            y              y
+//
+// Each split writes the triangles around p counter-clockwise with p at local index 0, so their
+// half-edge 3t+1 is the side opposite p (the edges Lawson's flips test next). A flip writes the
+// new diagonal at the local indices the caller asks for (k1 in the triangle of e, k2 in the
+// other), so that every caller keeps its own layout and its output stays what it was.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "triangulation/mesh2.hpp"
+#include "triangulation/triangulation_2d.hpp"
+
+namespace exactmesh::triangulation {
+
+/// The triangles a split made, counter-clockwise around the new vertex p, each with p at local
+/// index 0: 3t+1 is the side opposite p, 3t+2 runs into p, 3t out of p.
+struct SplitTriangles {
+    std::array<TriIdx, 4> triangles{};
+    unsigned count = 0;  ///< 3 (1-3), 4 (2-4) or 2 (1-2 on a boundary edge)
+    EdgeIdx side(unsigned i) const { return 3 * triangles[i] + 1; }
+};
+
+/// The half-edges of a flipped quadrilateral u, y, v, x (e was u -> v, x its apex, y the apex
+/// across it).
+struct FlipEdges {
+    EdgeIdx diagonal;  ///< y -> x in the triangle that held e; its twin x -> y is in the other
+    /// x -> u, u -> y (in the triangle of e), y -> v, v -> x (in the other): the four sides,
+    /// counter-clockwise from x.
+    std::array<EdgeIdx, 4> sides;
+};
+
+namespace flip_detail {
+
+inline void set_triangle(TriMesh2& mesh, TriIdx t, VertIdx a, VertIdx b, VertIdx c) {
+    mesh.tv[3 * t] = a;
+    mesh.tv[3 * t + 1] = b;
+    mesh.tv[3 * t + 2] = c;
+}
+
+/// e faces the surviving half-edge `outer` (kNone on the boundary of a mesh without kInfinite).
+inline void link_side(TriMesh2& mesh, EdgeIdx e, EdgeIdx outer) {
+    mesh.twin[e] = outer;
+    if (outer != kNone) mesh.twin[outer] = e;
+}
+
+inline void set_flags(TriMesh2& mesh, TriIdx t, std::uint8_t f0, std::uint8_t f1, std::uint8_t f2) {
+    mesh.flags[3 * t] = f0;
+    mesh.flags[3 * t + 1] = f1;
+    mesh.flags[3 * t + 2] = f2;
+}
+
+}  // namespace flip_detail
+
+/// 1 -> 3: p inside t = (a, b, c) (strictly: the caller's orient2d says so) gives (p, a, b) in
+/// slot t, then (p, b, c) and (p, c, a) in two new slots, in that order.
+inline SplitTriangles split_triangle_2d(TriMesh2& mesh, TriIdx t, VertIdx p) {
+    using namespace flip_detail;
+    const VertIdx a = mesh.tv[3 * t], b = mesh.tv[3 * t + 1], c = mesh.tv[3 * t + 2];
+    const EdgeIdx x = mesh.twin[3 * t], y = mesh.twin[3 * t + 1], z = mesh.twin[3 * t + 2];
+    const bool flagged = !mesh.flags.empty();
+    std::uint8_t fx = 0, fy = 0, fz = 0;
+    if (flagged) {
+        fx = mesh.flags[3 * t];
+        fy = mesh.flags[3 * t + 1];
+        fz = mesh.flags[3 * t + 2];
+    }
+    const TriIdx t1 = t, t2 = mesh.new_triangle(), t3 = mesh.new_triangle();
+    set_triangle(mesh, t1, p, a, b);
+    set_triangle(mesh, t2, p, b, c);
+    set_triangle(mesh, t3, p, c, a);
+    link_side(mesh, 3 * t1 + 1, x);
+    link_side(mesh, 3 * t2 + 1, y);
+    link_side(mesh, 3 * t3 + 1, z);
+    mesh.link(3 * t1 + 2, 3 * t2);
+    mesh.link(3 * t2 + 2, 3 * t3);
+    mesh.link(3 * t3 + 2, 3 * t1);
+    if (flagged) {
+        set_flags(mesh, t1, 0, fx, 0);
+        set_flags(mesh, t2, 0, fy, 0);
+        set_flags(mesh, t3, 0, fz, 0);
+    }
+    return {{t1, t2, t3, kNone}, 3};
+}
+
+/// p on the edge e = a -> b of (a, b, c) (exactly: orient2d(a, b, p) == 0, strictly between).
+/// Interior edge, twin in (b, a, d): 2 -> 4, giving (p, b, c) in e's slot, (p, c, a) in the
+/// twin's, then (p, a, d) and (p, d, b) in two new slots. Boundary edge (twin kNone): 1 -> 2,
+/// giving (p, b, c) in e's slot and (p, c, a) in a new one. Both halves a - p and p - b keep e's
+/// flags.
+inline SplitTriangles split_edge_2d(TriMesh2& mesh, EdgeIdx e, VertIdx p) {
+    using namespace flip_detail;
+    const EdgeIdx f = mesh.twin[e];
+    const VertIdx a = mesh.origin(e), b = mesh.destination(e), c = mesh.tv[prev_edge(e)];
+    const EdgeIdx bc = mesh.twin[next_edge(e)], ca = mesh.twin[prev_edge(e)];
+    const bool flagged = !mesh.flags.empty();
+    std::uint8_t fe = 0, fbc = 0, fca = 0;
+    if (flagged) {
+        fe = mesh.flags[e];
+        fbc = mesh.flags[next_edge(e)];
+        fca = mesh.flags[prev_edge(e)];
+    }
+    if (f == kNone) {
+        const TriIdx t1 = triangle_of(e), t2 = mesh.new_triangle();
+        set_triangle(mesh, t1, p, b, c);
+        set_triangle(mesh, t2, p, c, a);
+        link_side(mesh, 3 * t1 + 1, bc);
+        link_side(mesh, 3 * t2 + 1, ca);
+        mesh.link(3 * t1 + 2, 3 * t2);
+        mesh.twin[3 * t1] = kNone;
+        mesh.twin[3 * t2 + 2] = kNone;
+        if (flagged) {
+            set_flags(mesh, t1, fe, fbc, 0);
+            set_flags(mesh, t2, 0, fca, fe);
+        }
+        return {{t1, t2, kNone, kNone}, 2};
+    }
+    const VertIdx d = mesh.tv[prev_edge(f)];
+    const EdgeIdx ad = mesh.twin[next_edge(f)], db = mesh.twin[prev_edge(f)];
+    std::uint8_t fad = 0, fdb = 0;
+    if (flagged) {
+        fad = mesh.flags[next_edge(f)];
+        fdb = mesh.flags[prev_edge(f)];
+    }
+    const TriIdx t1 = triangle_of(e), t2 = triangle_of(f);
+    const TriIdx t3 = mesh.new_triangle(), t4 = mesh.new_triangle();
+    set_triangle(mesh, t1, p, b, c);
+    set_triangle(mesh, t2, p, c, a);
+    set_triangle(mesh, t3, p, a, d);
+    set_triangle(mesh, t4, p, d, b);
+    link_side(mesh, 3 * t1 + 1, bc);
+    link_side(mesh, 3 * t2 + 1, ca);
+    link_side(mesh, 3 * t3 + 1, ad);
+    link_side(mesh, 3 * t4 + 1, db);
+    mesh.link(3 * t1 + 2, 3 * t2);
+    mesh.link(3 * t2 + 2, 3 * t3);  // a - p
+    mesh.link(3 * t3 + 2, 3 * t4);
+    mesh.link(3 * t4 + 2, 3 * t1);  // b - p
+    if (flagged) {
+        set_flags(mesh, t1, fe, fbc, 0);
+        set_flags(mesh, t2, 0, fca, fe);
+        set_flags(mesh, t3, fe, fad, 0);
+        set_flags(mesh, t4, 0, fdb, fe);
+    }
+    return {{t1, t2, t3, t4}, 4};
+}
+
+/// 2 -> 2: the edge of e (u -> v in (u, v, x), twin in (v, u, y)) becomes x - y. The triangle of
+/// e becomes (y, x, u) rotated so that y -> x sits at local index k1; the other becomes
+/// (x, y, v) rotated so that x -> y sits at local index k2. The caller guarantees that u, y, v, x
+/// is strictly convex (both new triangles counter-clockwise) and that e carries no constraint;
+/// the new diagonal's flags are 0.
+inline FlipEdges flip_2d(TriMesh2& mesh, EdgeIdx e, unsigned k1, unsigned k2) {
+    using namespace flip_detail;
+    const EdgeIdx f = mesh.twin[e];
+    const TriIdx t1 = triangle_of(e), t2 = triangle_of(f);
+    const VertIdx u = mesh.origin(e), v = mesh.destination(e);
+    const VertIdx x = mesh.tv[prev_edge(e)], y = mesh.tv[prev_edge(f)];
+    const EdgeIdx vx = mesh.twin[next_edge(e)], xu = mesh.twin[prev_edge(e)];
+    const EdgeIdx uy = mesh.twin[next_edge(f)], yv = mesh.twin[prev_edge(f)];
+    const bool flagged = !mesh.flags.empty();
+    std::uint8_t fvx = 0, fxu = 0, fuy = 0, fyv = 0;
+    if (flagged) {
+        fvx = mesh.flags[next_edge(e)];
+        fxu = mesh.flags[prev_edge(e)];
+        fuy = mesh.flags[next_edge(f)];
+        fyv = mesh.flags[prev_edge(f)];
+    }
+    const EdgeIdx d1 = 3 * t1 + k1, x_u = 3 * t1 + (k1 + 1) % 3, u_y = 3 * t1 + (k1 + 2) % 3;
+    const EdgeIdx d2 = 3 * t2 + k2, y_v = 3 * t2 + (k2 + 1) % 3, v_x = 3 * t2 + (k2 + 2) % 3;
+    mesh.tv[d1] = y;
+    mesh.tv[x_u] = x;
+    mesh.tv[u_y] = u;
+    mesh.tv[d2] = x;
+    mesh.tv[y_v] = y;
+    mesh.tv[v_x] = v;
+    link_side(mesh, x_u, xu);
+    link_side(mesh, u_y, uy);
+    link_side(mesh, y_v, yv);
+    link_side(mesh, v_x, vx);
+    mesh.link(d1, d2);
+    if (flagged) {
+        mesh.flags[d1] = mesh.flags[d2] = 0;
+        mesh.flags[x_u] = fxu;
+        mesh.flags[u_y] = fuy;
+        mesh.flags[y_v] = fyv;
+        mesh.flags[v_x] = fvx;
+    }
+    return {d1, {x_u, u_y, y_v, v_x}};
+}
+
+/// A Triangulation2 lent to an edit as a TriMesh2 (the one working topology of 2D edits): the
+/// arrays are moved, not copied; twins are found from the neighbour ids once, here (the only
+/// "which side am I on" search), flags taken from `constrained`. When the edit ends (also by an
+/// exception) triangles, neighbours and constraint flags are written back. Edits that add
+/// triangles are fine (neighbours grow); dead triangles are not compacted.
+class HalfEdgeEdit {
+  public:
+    /// @pre mesh.neighbors consistent (link_neighbors_2d) and mesh.constrained empty or 3·#T.
+    /// @throws InternalError (before moving anything) when a neighbour does not share the edge.
+    explicit HalfEdgeEdit(Triangulation2& mesh);
+    ~HalfEdgeEdit();
+    HalfEdgeEdit(const HalfEdgeEdit&) = delete;
+    HalfEdgeEdit& operator=(const HalfEdgeEdit&) = delete;
+
+    TriMesh2& mesh() { return work_; }
+
+  private:
+    Triangulation2& target_;
+    TriMesh2 work_;
+};
+
+}  // namespace exactmesh::triangulation
