@@ -34,6 +34,12 @@
 
 namespace exactmesh::triangulation {
 
+/// Whether the mesh may have half-edges without a twin. Closed: closed by the infinite vertex,
+/// every twin exists (the Delaunay and constrained builders); the kernel then writes outer twins
+/// without a test, which Green-Sibson's hot loop measures. Open: boundary half-edges have twin
+/// kNone (a HalfEdgeEdit of a Triangulation2), the safe default.
+enum class MeshBoundary { Open, Closed };
+
 /// The triangles a split made, counter-clockwise around the new vertex p, each with p at local
 /// index 0: 3t+1 is the side opposite p, 3t+2 runs into p, 3t out of p.
 struct SplitTriangles {
@@ -59,10 +65,10 @@ inline void set_triangle(TriMesh2& mesh, TriIdx t, VertIdx a, VertIdx b, VertIdx
     mesh.tv[3 * t + 2] = c;
 }
 
-/// e faces the surviving half-edge `outer` (kNone on the boundary of a mesh without kInfinite).
-inline void link_side(TriMesh2& mesh, EdgeIdx e, EdgeIdx outer) {
+/// e faces the surviving half-edge `outer` (kNone on the boundary of an open mesh).
+inline void link_side(TriMesh2& mesh, EdgeIdx e, EdgeIdx outer, MeshBoundary boundary) {
     mesh.twin[e] = outer;
-    if (outer != kNone) mesh.twin[outer] = e;
+    if (boundary == MeshBoundary::Closed || outer != kNone) mesh.twin[outer] = e;
 }
 
 inline void set_flags(TriMesh2& mesh, TriIdx t, std::uint8_t f0, std::uint8_t f1, std::uint8_t f2) {
@@ -75,7 +81,8 @@ inline void set_flags(TriMesh2& mesh, TriIdx t, std::uint8_t f0, std::uint8_t f1
 
 /// 1 -> 3: p inside t = (a, b, c) (strictly: the caller's orient2d says so) gives (p, a, b) in
 /// slot t, then (p, b, c) and (p, c, a) in two new slots, in that order.
-inline SplitTriangles split_triangle_2d(TriMesh2& mesh, TriIdx t, VertIdx p) {
+inline SplitTriangles split_triangle_2d(TriMesh2& mesh, TriIdx t, VertIdx p,
+                                        MeshBoundary boundary = MeshBoundary::Open) {
     using namespace flip_detail;
     const VertIdx a = mesh.tv[3 * t], b = mesh.tv[3 * t + 1], c = mesh.tv[3 * t + 2];
     const EdgeIdx x = mesh.twin[3 * t], y = mesh.twin[3 * t + 1], z = mesh.twin[3 * t + 2];
@@ -90,9 +97,9 @@ inline SplitTriangles split_triangle_2d(TriMesh2& mesh, TriIdx t, VertIdx p) {
     set_triangle(mesh, t1, p, a, b);
     set_triangle(mesh, t2, p, b, c);
     set_triangle(mesh, t3, p, c, a);
-    link_side(mesh, 3 * t1 + 1, x);
-    link_side(mesh, 3 * t2 + 1, y);
-    link_side(mesh, 3 * t3 + 1, z);
+    link_side(mesh, 3 * t1 + 1, x, boundary);
+    link_side(mesh, 3 * t2 + 1, y, boundary);
+    link_side(mesh, 3 * t3 + 1, z, boundary);
     mesh.link(3 * t1 + 2, 3 * t2);
     mesh.link(3 * t2 + 2, 3 * t3);
     mesh.link(3 * t3 + 2, 3 * t1);
@@ -109,7 +116,8 @@ inline SplitTriangles split_triangle_2d(TriMesh2& mesh, TriIdx t, VertIdx p) {
 /// twin's, then (p, a, d) and (p, d, b) in two new slots. Boundary edge (twin kNone): 1 -> 2,
 /// giving (p, b, c) in e's slot and (p, c, a) in a new one. Both halves a - p and p - b keep e's
 /// flags.
-inline SplitTriangles split_edge_2d(TriMesh2& mesh, EdgeIdx e, VertIdx p) {
+inline SplitTriangles split_edge_2d(TriMesh2& mesh, EdgeIdx e, VertIdx p,
+                                    MeshBoundary boundary = MeshBoundary::Open) {
     using namespace flip_detail;
     const EdgeIdx f = mesh.twin[e];
     const VertIdx a = mesh.origin(e), b = mesh.destination(e), c = mesh.tv[prev_edge(e)];
@@ -121,12 +129,12 @@ inline SplitTriangles split_edge_2d(TriMesh2& mesh, EdgeIdx e, VertIdx p) {
         fbc = mesh.flags[next_edge(e)];
         fca = mesh.flags[prev_edge(e)];
     }
-    if (f == kNone) {
+    if (boundary == MeshBoundary::Open && f == kNone) {
         const TriIdx t1 = triangle_of(e), t2 = mesh.new_triangle();
         set_triangle(mesh, t1, p, b, c);
         set_triangle(mesh, t2, p, c, a);
-        link_side(mesh, 3 * t1 + 1, bc);
-        link_side(mesh, 3 * t2 + 1, ca);
+        link_side(mesh, 3 * t1 + 1, bc, boundary);
+        link_side(mesh, 3 * t2 + 1, ca, boundary);
         mesh.link(3 * t1 + 2, 3 * t2);
         mesh.twin[3 * t1] = kNone;
         mesh.twin[3 * t2 + 2] = kNone;
@@ -149,10 +157,10 @@ inline SplitTriangles split_edge_2d(TriMesh2& mesh, EdgeIdx e, VertIdx p) {
     set_triangle(mesh, t2, p, c, a);
     set_triangle(mesh, t3, p, a, d);
     set_triangle(mesh, t4, p, d, b);
-    link_side(mesh, 3 * t1 + 1, bc);
-    link_side(mesh, 3 * t2 + 1, ca);
-    link_side(mesh, 3 * t3 + 1, ad);
-    link_side(mesh, 3 * t4 + 1, db);
+    link_side(mesh, 3 * t1 + 1, bc, boundary);
+    link_side(mesh, 3 * t2 + 1, ca, boundary);
+    link_side(mesh, 3 * t3 + 1, ad, boundary);
+    link_side(mesh, 3 * t4 + 1, db, boundary);
     mesh.link(3 * t1 + 2, 3 * t2);
     mesh.link(3 * t2 + 2, 3 * t3);  // a - p
     mesh.link(3 * t3 + 2, 3 * t4);
@@ -171,7 +179,8 @@ inline SplitTriangles split_edge_2d(TriMesh2& mesh, EdgeIdx e, VertIdx p) {
 /// (x, y, v) rotated so that x -> y sits at local index k2. The caller guarantees that u, y, v, x
 /// is strictly convex (both new triangles counter-clockwise) and that e carries no constraint;
 /// the new diagonal's flags are 0.
-inline FlipEdges flip_2d(TriMesh2& mesh, EdgeIdx e, unsigned k1, unsigned k2) {
+inline FlipEdges flip_2d(TriMesh2& mesh, EdgeIdx e, unsigned k1, unsigned k2,
+                         MeshBoundary boundary = MeshBoundary::Open) {
     using namespace flip_detail;
     const EdgeIdx f = mesh.twin[e];
     const TriIdx t1 = triangle_of(e), t2 = triangle_of(f);
@@ -195,10 +204,10 @@ inline FlipEdges flip_2d(TriMesh2& mesh, EdgeIdx e, unsigned k1, unsigned k2) {
     mesh.tv[d2] = x;
     mesh.tv[y_v] = y;
     mesh.tv[v_x] = v;
-    link_side(mesh, x_u, xu);
-    link_side(mesh, u_y, uy);
-    link_side(mesh, y_v, yv);
-    link_side(mesh, v_x, vx);
+    link_side(mesh, x_u, xu, boundary);
+    link_side(mesh, u_y, uy, boundary);
+    link_side(mesh, y_v, yv, boundary);
+    link_side(mesh, v_x, vx, boundary);
     mesh.link(d1, d2);
     if (flagged) {
         mesh.flags[d1] = mesh.flags[d2] = 0;

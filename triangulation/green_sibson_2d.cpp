@@ -20,6 +20,9 @@ namespace exactmesh::triangulation {
 
 namespace {
 
+// The mesh is closed by the infinite vertex: the kernel links outer twins without a test.
+constexpr MeshBoundary kClosed = MeshBoundary::Closed;
+
 class LawsonInserter {
   public:
     explicit LawsonInserter(detail::Delaunay2Core& core) : core_(core), mesh_(core.mesh) {}
@@ -28,7 +31,7 @@ class LawsonInserter {
         stack_.clear();
         SplitTriangles made;
         if (mesh_.is_infinite(t)) {
-            made = split_triangle_2d(mesh_, t, p);
+            made = split_triangle_2d(mesh_, t, p, kClosed);
         } else {
             int on_edge = -1;
             for (int k = 0; k < 3; ++k) {
@@ -39,9 +42,9 @@ class LawsonInserter {
                 }
             }
             if (on_edge < 0) {
-                made = split_triangle_2d(mesh_, t, p);
+                made = split_triangle_2d(mesh_, t, p, kClosed);
             } else {
-                made = split_edge_2d(mesh_, 3 * t + static_cast<unsigned>(on_edge), p);
+                made = split_edge_2d(mesh_, 3 * t + static_cast<unsigned>(on_edge), p, kClosed);
             }
         }
         core_.last_triangle = made.triangles[0];
@@ -66,7 +69,7 @@ class LawsonInserter {
         if (q == kInfinite || !core_.conflict(t1, q)) return;
         ++core_.counters.flips;
         // The new diagonal q -> p at local 2 of T1 and p -> q at local 0 of T2: p stays at 0.
-        const FlipEdges flipped = flip_2d(mesh_, e, 2, 0);
+        const FlipEdges flipped = flip_2d(mesh_, e, 2, 0, kClosed);
         stack_.push_back(flipped.sides[1]);  // u -> q in (p, u, q)
         stack_.push_back(flipped.sides[2]);  // q -> v in (p, q, v)
     }
