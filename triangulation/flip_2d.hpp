@@ -60,22 +60,44 @@ struct FlipEdges {
 
 namespace flip_detail {
 
-inline void set_triangle(TriMesh2& mesh, TriIdx t, VertIdx a, VertIdx b, VertIdx c) {
-    mesh.tv[3 * t] = a;
-    mesh.tv[3 * t + 1] = b;
-    mesh.tv[3 * t + 2] = c;
-}
-
 /// e faces the surviving half-edge `outer` (kNone on the boundary of an open mesh).
 inline void link_side(TriMesh2& mesh, EdgeIdx e, EdgeIdx outer, MeshBoundary boundary) {
     mesh.twin[e] = outer;
     if (boundary == MeshBoundary::Closed || outer != kNone) mesh.twin[outer] = e;
 }
 
-inline void set_flags(TriMesh2& mesh, TriIdx t, std::uint8_t f0, std::uint8_t f1, std::uint8_t f2) {
-    mesh.flags[3 * t] = f0;
-    mesh.flags[3 * t + 1] = f1;
-    mesh.flags[3 * t + 2] = f2;
+/// Writes the fan of made.count triangles around p: triangle i = (p, rim[i], rim[i + 1]) in slot
+/// made.triangles[i], its side rim[i] -> rim[i + 1] facing outer[i] with the flags side_flags[i],
+/// its spoke into p facing the next triangle's spoke out of p; the last spoke links to the first
+/// when the fan closes around p, else both end spokes are boundary (kNone). Spokes start at 0.
+inline void write_fan(TriMesh2& mesh, VertIdx p, const SplitTriangles& made, const VertIdx* rim,
+                      const EdgeIdx* outer, const std::uint8_t* side_flags, bool closes,
+                      MeshBoundary boundary) {
+    const unsigned n = made.count;
+    for (unsigned i = 0; i < n; ++i) {
+        const TriIdx t = made.triangles[i];
+        mesh.tv[3 * t] = p;
+        mesh.tv[3 * t + 1] = rim[i];
+        mesh.tv[3 * t + 2] = rim[i + 1];
+        link_side(mesh, 3 * t + 1, outer[i], boundary);
+    }
+    for (unsigned i = 0; i + 1 < n; ++i) {
+        mesh.link(3 * made.triangles[i] + 2, 3 * made.triangles[i + 1]);
+    }
+    if (closes) {
+        mesh.link(3 * made.triangles[n - 1] + 2, 3 * made.triangles[0]);
+    } else {
+        mesh.twin[3 * made.triangles[0]] = kNone;
+        mesh.twin[3 * made.triangles[n - 1] + 2] = kNone;
+    }
+    if (!mesh.flags.empty()) {
+        for (unsigned i = 0; i < n; ++i) {
+            const TriIdx t = made.triangles[i];
+            mesh.flags[3 * t] = 0;
+            mesh.flags[3 * t + 1] = side_flags[i];
+            mesh.flags[3 * t + 2] = 0;
+        }
+    }
 }
 
 }  // namespace flip_detail
@@ -84,32 +106,20 @@ inline void set_flags(TriMesh2& mesh, TriIdx t, std::uint8_t f0, std::uint8_t f1
 /// slot t, then (p, b, c) and (p, c, a) in two new slots, in that order.
 inline SplitTriangles split_triangle_2d(TriMesh2& mesh, TriIdx t, VertIdx p,
                                         MeshBoundary boundary = MeshBoundary::Open) {
-    using namespace flip_detail;
-    const VertIdx a = mesh.tv[3 * t], b = mesh.tv[3 * t + 1], c = mesh.tv[3 * t + 2];
-    const EdgeIdx x = mesh.twin[3 * t], y = mesh.twin[3 * t + 1], z = mesh.twin[3 * t + 2];
-    const bool flagged = !mesh.flags.empty();
-    std::uint8_t fx = 0, fy = 0, fz = 0;
-    if (flagged) {
-        fx = mesh.flags[3 * t];
-        fy = mesh.flags[3 * t + 1];
-        fz = mesh.flags[3 * t + 2];
+    const VertIdx rim[4] = {mesh.tv[3 * t], mesh.tv[3 * t + 1], mesh.tv[3 * t + 2], mesh.tv[3 * t]};
+    const EdgeIdx outer[3] = {mesh.twin[3 * t], mesh.twin[3 * t + 1], mesh.twin[3 * t + 2]};
+    std::uint8_t side_flags[3] = {0, 0, 0};
+    if (!mesh.flags.empty()) {
+        for (unsigned k = 0; k < 3; ++k) side_flags[k] = mesh.flags[3 * t + k];
     }
-    const TriIdx t1 = t, t2 = mesh.new_triangle(), t3 = mesh.new_triangle();
-    set_triangle(mesh, t1, p, a, b);
-    set_triangle(mesh, t2, p, b, c);
-    set_triangle(mesh, t3, p, c, a);
-    link_side(mesh, 3 * t1 + 1, x, boundary);
-    link_side(mesh, 3 * t2 + 1, y, boundary);
-    link_side(mesh, 3 * t3 + 1, z, boundary);
-    mesh.link(3 * t1 + 2, 3 * t2);
-    mesh.link(3 * t2 + 2, 3 * t3);
-    mesh.link(3 * t3 + 2, 3 * t1);
-    if (flagged) {
-        set_flags(mesh, t1, 0, fx, 0);
-        set_flags(mesh, t2, 0, fy, 0);
-        set_flags(mesh, t3, 0, fz, 0);
-    }
-    return {{t1, t2, t3, kNone}, 3};
+    SplitTriangles made;
+    made.triangles[0] = t;
+    made.triangles[1] = mesh.new_triangle();
+    made.triangles[2] = mesh.new_triangle();
+    made.triangles[3] = kNone;
+    made.count = 3;
+    flip_detail::write_fan(mesh, p, made, rim, outer, side_flags, true, boundary);
+    return made;
 }
 
 /// p on the edge e = a -> b of (a, b, c) (exactly: orient2d(a, b, p) == 0, strictly between).
@@ -119,60 +129,49 @@ inline SplitTriangles split_triangle_2d(TriMesh2& mesh, TriIdx t, VertIdx p,
 /// flags.
 inline SplitTriangles split_edge_2d(TriMesh2& mesh, EdgeIdx e, VertIdx p,
                                     MeshBoundary boundary = MeshBoundary::Open) {
-    using namespace flip_detail;
     const EdgeIdx f = mesh.twin[e];
+    const bool open = boundary == MeshBoundary::Open && f == kNone;
     const VertIdx a = mesh.origin(e), b = mesh.destination(e), c = mesh.tv[prev_edge(e)];
-    const EdgeIdx bc = mesh.twin[next_edge(e)], ca = mesh.twin[prev_edge(e)];
+    const VertIdx d = open ? kNone : mesh.tv[prev_edge(f)];
+    const VertIdx rim[5] = {b, c, a, d, b};
+    const EdgeIdx outer[4] = {mesh.twin[next_edge(e)], mesh.twin[prev_edge(e)],
+                              open ? kNone : mesh.twin[next_edge(f)],
+                              open ? kNone : mesh.twin[prev_edge(f)]};
     const bool flagged = !mesh.flags.empty();
-    std::uint8_t fe = 0, fbc = 0, fca = 0;
+    std::uint8_t side_flags[4] = {0, 0, 0, 0};
+    std::uint8_t split = 0;
     if (flagged) {
-        fe = mesh.flags[e];
-        fbc = mesh.flags[next_edge(e)];
-        fca = mesh.flags[prev_edge(e)];
-    }
-    if (boundary == MeshBoundary::Open && f == kNone) {
-        const TriIdx t1 = triangle_of(e), t2 = mesh.new_triangle();
-        set_triangle(mesh, t1, p, b, c);
-        set_triangle(mesh, t2, p, c, a);
-        link_side(mesh, 3 * t1 + 1, bc, boundary);
-        link_side(mesh, 3 * t2 + 1, ca, boundary);
-        mesh.link(3 * t1 + 2, 3 * t2);
-        mesh.twin[3 * t1] = kNone;
-        mesh.twin[3 * t2 + 2] = kNone;
-        if (flagged) {
-            set_flags(mesh, t1, fe, fbc, 0);
-            set_flags(mesh, t2, 0, fca, fe);
+        split = mesh.flags[e];
+        side_flags[0] = mesh.flags[next_edge(e)];
+        side_flags[1] = mesh.flags[prev_edge(e)];
+        if (!open) {
+            side_flags[2] = mesh.flags[next_edge(f)];
+            side_flags[3] = mesh.flags[prev_edge(f)];
         }
-        return {{t1, t2, kNone, kNone}, 2};
     }
-    const VertIdx d = mesh.tv[prev_edge(f)];
-    const EdgeIdx ad = mesh.twin[next_edge(f)], db = mesh.twin[prev_edge(f)];
-    std::uint8_t fad = 0, fdb = 0;
+    SplitTriangles made;
+    made.triangles[0] = triangle_of(e);
+    if (open) {
+        made.triangles[1] = mesh.new_triangle();
+        made.triangles[2] = made.triangles[3] = kNone;
+        made.count = 2;
+    } else {
+        made.triangles[1] = triangle_of(f);
+        made.triangles[2] = mesh.new_triangle();
+        made.triangles[3] = mesh.new_triangle();
+        made.count = 4;
+    }
+    flip_detail::write_fan(mesh, p, made, rim, outer, side_flags, !open, boundary);
     if (flagged) {
-        fad = mesh.flags[next_edge(f)];
-        fdb = mesh.flags[prev_edge(f)];
+        // The halves: p -> b and a -> p, then (interior) p -> a and b -> p.
+        mesh.flags[3 * made.triangles[0]] = split;
+        mesh.flags[3 * made.triangles[1] + 2] = split;
+        if (!open) {
+            mesh.flags[3 * made.triangles[2]] = split;
+            mesh.flags[3 * made.triangles[3] + 2] = split;
+        }
     }
-    const TriIdx t1 = triangle_of(e), t2 = triangle_of(f);
-    const TriIdx t3 = mesh.new_triangle(), t4 = mesh.new_triangle();
-    set_triangle(mesh, t1, p, b, c);
-    set_triangle(mesh, t2, p, c, a);
-    set_triangle(mesh, t3, p, a, d);
-    set_triangle(mesh, t4, p, d, b);
-    link_side(mesh, 3 * t1 + 1, bc, boundary);
-    link_side(mesh, 3 * t2 + 1, ca, boundary);
-    link_side(mesh, 3 * t3 + 1, ad, boundary);
-    link_side(mesh, 3 * t4 + 1, db, boundary);
-    mesh.link(3 * t1 + 2, 3 * t2);
-    mesh.link(3 * t2 + 2, 3 * t3);  // a - p
-    mesh.link(3 * t3 + 2, 3 * t4);
-    mesh.link(3 * t4 + 2, 3 * t1);  // b - p
-    if (flagged) {
-        set_flags(mesh, t1, fe, fbc, 0);
-        set_flags(mesh, t2, 0, fca, fe);
-        set_flags(mesh, t3, fe, fad, 0);
-        set_flags(mesh, t4, 0, fdb, fe);
-    }
-    return {{t1, t2, t3, t4}, 4};
+    return made;
 }
 
 /// 2 -> 2: the edge of e (u -> v in (u, v, x), twin in (v, u, y)) becomes x - y. The triangle of
