@@ -19,6 +19,9 @@
 // below theta; an optimal retriangulation of each polygon does at least as well (the fallback
 // where exact ties may part the two), so a cut exists whenever T is not optimal, and a failed
 // search over every q proves optimality.
+// The cutter works on the half-edges of a HalfEdgeEdit (flip_2d.hpp) of the Triangulation2: the
+// walk crosses to the twin's local edge directly, and a cut links the new triangles' sides to the
+// outer half-edges it saved, with no search for the shared edge.
 // Termination: a cut removes t (largest angle theta) and adds triangles whose angles are all
 // below theta, so the decreasingly sorted vector of the triangles' largest angles strictly
 // decreases lexicographically; there are finitely many triangulations.
@@ -34,6 +37,7 @@
 #include "predicates/orient2d.hpp"
 #include "triangulation/angles_2d.hpp"
 #include "triangulation/bowyer_watson_2d.hpp"
+#include "triangulation/flip_2d.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -67,13 +71,11 @@ using NewTriangle = std::array<VertIdx, 3>;
 
 class EdgeCutter {
   public:
-    explicit EdgeCutter(Triangulation2& mesh) : mesh_(mesh) {}
+    explicit EdgeCutter(TriMesh2& mesh) : mesh_(mesh) {}
 
     EdgeCuttingCounters run() {
-        EM_ASSERT(mesh_.neighbors.size() == mesh_.triangles.size());
-        EM_ASSERT(mesh_.constrained.empty() || mesh_.constrained.size() == mesh_.triangles.size());
-        region_mark_.assign(mesh_.triangle_count(), 0);
-        for (TriIdx t = 0; t < mesh_.triangle_count(); ++t) push_triangle(t);
+        region_mark_.assign(mesh_.triangle_slots(), 0);
+        for (TriIdx t = 0; t < mesh_.triangle_slots(); ++t) push_triangle(t);
         while (!heap_.empty()) {
             const HeapEntry top = heap_.top();
             heap_.pop();
@@ -93,11 +95,14 @@ class EdgeCutter {
         }
     };
 
-    VertIdx vertex(TriIdx t, unsigned k) const { return mesh_.triangles[slot(t, k % 3)]; }
+    VertIdx vertex(TriIdx t, unsigned k) const { return mesh_.tv[slot(t, k % 3)]; }
     const double* point(VertIdx v) const { return mesh_.point(v); }
     bool blocked(TriIdx t, unsigned k) const {
-        return mesh_.neighbors[slot(t, k)] == kNone || mesh_.is_constrained(t, static_cast<int>(k));
+        const std::size_t e = slot(t, k);
+        return mesh_.twin[e] == kNone || (!mesh_.flags.empty() && mesh_.flags[e] != 0);
     }
+    /// The triangle across edge k of t (not blocked).
+    TriIdx across(TriIdx t, unsigned k) const { return triangle_of(mesh_.twin[slot(t, k)]); }
 
     bool current(const HeapEntry& e) const {
         return vertex(e.t, 0) == e.vertices[0] && vertex(e.t, 1) == e.vertices[1] &&
@@ -121,14 +126,6 @@ class EdgeCutter {
         e.largest = {point(vertex(t, best)), point(vertex(t, best + 1)),
                      point(vertex(t, best + 2))};
         heap_.push(e);
-    }
-
-    /// The slot of `w` holding the directed edge p -> q.
-    unsigned find_edge(TriIdx w, VertIdx p, VertIdx q) const {
-        for (unsigned s = 0; s < 3; ++s) {
-            if (vertex(w, s) == p && vertex(w, s + 1) == q) return s;
-        }
-        throw InternalError("edge_cutting_2d: neighbor does not share the edge");
     }
 
     /// Tries every candidate q for the worst triangle; applies the first cut that succeeds.
@@ -195,7 +192,7 @@ class EdgeCutter {
         region_mark_[t] = stamp_;
         std::vector<std::pair<TriIdx, std::uint32_t>>& queue = bfs_;
         queue.clear();
-        const TriIdx first = mesh_.neighbors[slot(t, entry)];
+        const TriIdx first = across(t, entry);
         region_mark_[first] = stamp_;
         queue.emplace_back(first, 1);
         for (std::size_t head = 0; head < queue.size(); ++head) {
@@ -208,7 +205,7 @@ class EdgeCutter {
                     if (in_region(z)) candidates_.emplace_back(depth, z);
                 }
                 if (blocked(w, s)) continue;
-                const TriIdx next = mesh_.neighbors[slot(w, s)];
+                const TriIdx next = across(w, s);
                 if (region_mark_[next] == stamp_) continue;
                 if (!may_meet_region(vertex(w, s), vertex(w, s + 1))) continue;
                 region_mark_[next] = stamp_;
@@ -229,9 +226,10 @@ class EdgeCutter {
         const double *pb = point(b_), *pq = point(q);
         for (;;) {
             if (blocked(w, exit)) return false;
-            const VertIdx l = vertex(w, exit + 1), r = vertex(w, exit);  // edge r -> l in w
-            const TriIdx next = mesh_.neighbors[slot(w, exit)];
-            const unsigned s = find_edge(next, l, r);
+            // Edge r -> l of w is l -> r of next, its local edge s; z is next's third vertex.
+            const EdgeIdx twin = mesh_.twin[slot(w, exit)];
+            const TriIdx next = triangle_of(twin);
+            const unsigned s = twin % 3;
             crossed_.push_back(next);
             const VertIdx z = vertex(next, s + 2);
             if (z == q) return true;
@@ -431,29 +429,31 @@ class EdgeCutter {
     }
 
     /// Replaces the crossed triangles by the new ones (same count: m crossed edges remove m + 1
-    /// triangles, and the two polygons of m + 5 vertices in all take m + 1), relinking neighbors.
+    /// triangles, and the two polygons of m + 5 vertices in all take m + 1), relinking twins.
     void apply() {
         EM_ASSERT(new_triangles_.size() == crossed_.size());
         ++counters_.insertions;
         counters_.removed_edges += crossed_.size() - 1;
         std::vector<TriIdx> removed = crossed_;
         std::sort(removed.begin(), removed.end());
-        // The region's boundary: directed edge p -> q of a removed triangle, its outer
-        // neighbor (kNone on the domain boundary) and constraint flag.
+        // The region's boundary: directed edge p -> q of a removed triangle, the outer half-edge
+        // facing it (kNone on the domain boundary) and its flags.
         struct Side {
             std::uint64_t key;
-            TriIdx outer;
+            EdgeIdx outer;
             std::uint8_t flag;
         };
         std::vector<Side> boundary;
+        const bool flagged = !mesh_.flags.empty();
         for (const TriIdx r : crossed_) {
             for (unsigned s = 0; s < 3; ++s) {
-                const TriIdx nb = mesh_.neighbors[slot(r, s)];
-                if (nb != kNone && std::binary_search(removed.begin(), removed.end(), nb)) continue;
+                const EdgeIdx outer = mesh_.twin[slot(r, s)];
+                if (outer != kNone &&
+                    std::binary_search(removed.begin(), removed.end(), triangle_of(outer)))
+                    continue;
                 const std::uint64_t key = (std::uint64_t{vertex(r, s)} << 32) | vertex(r, s + 1);
-                const std::uint8_t flag =
-                    mesh_.constrained.empty() ? 0 : mesh_.constrained[slot(r, s)];
-                boundary.push_back({key, nb, flag});
+                const std::uint8_t flag = flagged ? mesh_.flags[slot(r, s)] : 0;
+                boundary.push_back({key, outer, flag});
             }
         }
         std::sort(boundary.begin(), boundary.end(),
@@ -461,7 +461,7 @@ class EdgeCutter {
         std::vector<std::pair<std::uint64_t, EdgeIdx>> inner;
         for (std::size_t i = 0; i < crossed_.size(); ++i) {
             const TriIdx t = crossed_[i];
-            for (unsigned s = 0; s < 3; ++s) mesh_.triangles[slot(t, s)] = new_triangles_[i][s];
+            for (unsigned s = 0; s < 3; ++s) mesh_.tv[slot(t, s)] = new_triangles_[i][s];
             for (unsigned s = 0; s < 3; ++s) {
                 const std::uint64_t key = (std::uint64_t{vertex(t, s)} << 32) | vertex(t, s + 1);
                 inner.emplace_back(key, static_cast<EdgeIdx>(slot(t, s)));
@@ -469,13 +469,12 @@ class EdgeCutter {
         }
         std::sort(inner.begin(), inner.end());
         for (const auto& [key, e] : inner) {
-            const TriIdx t = e / 3;
             const std::uint64_t reverse = (key << 32) | (key >> 32);
             const auto twin =
                 std::lower_bound(inner.begin(), inner.end(), std::make_pair(reverse, EdgeIdx{0}));
             if (twin != inner.end() && twin->first == reverse) {
-                mesh_.neighbors[e] = twin->second / 3;
-                if (!mesh_.constrained.empty()) mesh_.constrained[e] = 0;
+                mesh_.twin[e] = twin->second;
+                if (flagged) mesh_.flags[e] = 0;
                 continue;
             }
             const auto side =
@@ -485,18 +484,14 @@ class EdgeCutter {
                 throw InternalError(
                     "edge_cutting_2d: new triangle side not on the region boundary");
             }
-            mesh_.neighbors[e] = side->outer;
-            if (!mesh_.constrained.empty()) mesh_.constrained[e] = side->flag;
-            if (side->outer != kNone) {
-                const auto p = static_cast<VertIdx>(key >> 32);
-                const auto r = static_cast<VertIdx>(key & 0xFFFFFFFFu);
-                mesh_.neighbors[slot(side->outer, find_edge(side->outer, r, p))] = t;
-            }
+            mesh_.twin[e] = side->outer;
+            if (flagged) mesh_.flags[e] = side->flag;
+            if (side->outer != kNone) mesh_.twin[side->outer] = e;
         }
         for (const TriIdx t : crossed_) push_triangle(t);
     }
 
-    Triangulation2& mesh_;
+    TriMesh2& mesh_;
     EdgeCuttingCounters counters_;
     std::priority_queue<HeapEntry, std::vector<HeapEntry>, Compare> heap_;
     VertIdx a_ = kNone, b_ = kNone, c_ = kNone, q_ = kNone;
@@ -520,7 +515,8 @@ class EdgeCutter {
 
 EdgeCuttingCounters edge_cutting_2d(Triangulation2& mesh) {
     validate_points_2d(mesh.xy);
-    return EdgeCutter(mesh).run();
+    HalfEdgeEdit edit(mesh);
+    return EdgeCutter(edit.mesh()).run();
 }
 
 Triangulation2 min_max_angle_triangulation_2d(std::span<const double> xy,

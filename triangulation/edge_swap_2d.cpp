@@ -18,7 +18,9 @@
 // The swap is allowed only when the quadrilateral a d b c is strictly convex: orient2d(c, a, d)
 // > 0 and orient2d(d, b, c) > 0 (the new triangles), exactly. Then both new triangles are
 // strictly counter-clockwise, so the mesh stays a triangulation of the same domain with the same
-// vertices, and only the five edges of the quadrilateral see their triangles change.
+// vertices, and only the five edges of the quadrilateral see their triangles change. The swap
+// is flip_2d (flip_2d.hpp) with the new diagonal at local index 0 of both triangles, on the
+// half-edges of a HalfEdgeEdit of the Triangulation2 (twins: no search for the shared edge).
 //
 // Termination. The loop pops an edge, and pushes four only after a swap, so it ends when the
 // number of swaps is finite. The triangulations of a finite vertex set with fixed constraints are
@@ -58,6 +60,7 @@
 #include "predicates/sos.hpp"
 #include "triangulation/angles_2d.hpp"
 #include "triangulation/delaunay_2d.hpp"
+#include "triangulation/flip_2d.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -65,141 +68,85 @@ namespace {
 
 using predicates::Sign;
 
-/// The two triangles of an interior edge: t = (a, b, c) with the edge as its edge k, and
-/// u = (b, a, d) with it as its edge j.
+/// The quadrilateral of an interior half-edge e = a -> b of (a, b, c); its twin f lies in
+/// (b, a, d).
 struct Quad {
-    TriIdx t, u;
-    unsigned k, j;
+    EdgeIdx e, f;
     VertIdx a, b, c, d;
 };
 
-std::size_t slot(TriIdx t, unsigned k) { return 3 * static_cast<std::size_t>(t) + k; }
-
-Quad make_quad(const Triangulation2& mesh, TriIdx t, unsigned k) {
-    Quad q{};
-    q.t = t;
-    q.k = k;
-    q.u = mesh.neighbors[slot(t, k)];
-    q.a = mesh.triangles[slot(t, k)];
-    q.b = mesh.triangles[slot(t, (k + 1) % 3)];
-    q.c = mesh.triangles[slot(t, (k + 2) % 3)];
-    for (unsigned j = 0; j < 3; ++j) {
-        if (mesh.triangles[slot(q.u, j)] == q.b && mesh.triangles[slot(q.u, (j + 1) % 3)] == q.a) {
-            q.j = j;
-            q.d = mesh.triangles[slot(q.u, (j + 2) % 3)];
-            return q;
-        }
-    }
-    throw InternalError("edge_swap_2d: neighbor does not share the edge (inconsistent neighbors)");
+Quad make_quad(const TriMesh2& mesh, EdgeIdx e) {
+    const EdgeIdx f = mesh.twin[e];
+    return {
+        e, f, mesh.origin(e), mesh.destination(e), mesh.tv[prev_edge(e)], mesh.tv[prev_edge(f)]};
 }
 
-bool strictly_convex(const Triangulation2& mesh, const Quad& q) {
+bool strictly_convex(const TriMesh2& mesh, const Quad& q) {
     return predicates::orient2d(mesh.point(q.c), mesh.point(q.a), mesh.point(q.d)) ==
                Sign::Positive &&
-           predicates::orient2d(mesh.point(q.d), mesh.point(q.b), mesh.point(q.c)) == Sign::Positive;
+           predicates::orient2d(mesh.point(q.d), mesh.point(q.b), mesh.point(q.c)) ==
+               Sign::Positive;
 }
 
-/// In triangle `w`, points the slot that faced `from` to `to` instead.
-void replace_neighbor(Triangulation2& mesh, TriIdx w, TriIdx from, TriIdx to) {
-    if (w == kNone) return;
-    for (unsigned s = 0; s < 3; ++s) {
-        if (mesh.neighbors[slot(w, s)] == from) {
-            mesh.neighbors[slot(w, s)] = to;
-            return;
-        }
-    }
-    throw InternalError("edge_swap_2d: outer neighbor does not point back");
+bool is_constrained(const TriMesh2& mesh, EdgeIdx e) {
+    return !mesh.flags.empty() && mesh.flags[e] != 0;
 }
 
-/// Replaces diagonal ab by cd (picture at the top). The new diagonal is slot 0 of both.
-void swap_diagonal(Triangulation2& mesh, const Quad& q) {
-    const TriIdx n_bc = mesh.neighbors[slot(q.t, (q.k + 1) % 3)];
-    const TriIdx n_ca = mesh.neighbors[slot(q.t, (q.k + 2) % 3)];
-    const TriIdx n_ad = mesh.neighbors[slot(q.u, (q.j + 1) % 3)];
-    const TriIdx n_db = mesh.neighbors[slot(q.u, (q.j + 2) % 3)];
-    const bool flags = !mesh.constrained.empty();
-    std::uint8_t f_bc = 0, f_ca = 0, f_ad = 0, f_db = 0;
-    if (flags) {
-        f_bc = mesh.constrained[slot(q.t, (q.k + 1) % 3)];
-        f_ca = mesh.constrained[slot(q.t, (q.k + 2) % 3)];
-        f_ad = mesh.constrained[slot(q.u, (q.j + 1) % 3)];
-        f_db = mesh.constrained[slot(q.u, (q.j + 2) % 3)];
-    }
-    const std::array<VertIdx, 3> t_vertices{q.d, q.c, q.a};
-    const std::array<TriIdx, 3> t_neighbors{q.u, n_ca, n_ad};
-    const std::array<VertIdx, 3> u_vertices{q.c, q.d, q.b};
-    const std::array<TriIdx, 3> u_neighbors{q.t, n_db, n_bc};
-    for (unsigned s = 0; s < 3; ++s) {
-        mesh.triangles[slot(q.t, s)] = t_vertices[s];
-        mesh.neighbors[slot(q.t, s)] = t_neighbors[s];
-        mesh.triangles[slot(q.u, s)] = u_vertices[s];
-        mesh.neighbors[slot(q.u, s)] = u_neighbors[s];
-    }
-    if (flags) {
-        mesh.constrained[slot(q.t, 0)] = 0;
-        mesh.constrained[slot(q.t, 1)] = f_ca;
-        mesh.constrained[slot(q.t, 2)] = f_ad;
-        mesh.constrained[slot(q.u, 0)] = 0;
-        mesh.constrained[slot(q.u, 1)] = f_db;
-        mesh.constrained[slot(q.u, 2)] = f_bc;
-    }
-    replace_neighbor(mesh, n_ad, q.u, q.t);
-    replace_neighbor(mesh, n_bc, q.t, q.u);
-}
-
-/// The queue-based loop shared by every criterion; `prefers(quad)` says whether the strictly
-/// convex quad wants its other diagonal. `wide`: the decision also reads the triangles across
-/// the quad's sides (data-dependent costs of the sides), so a swap re-queues the other edges of
-/// those outer triangles too, not only the quad's four sides.
+/// The queue-based loop shared by every criterion, on the half-edges of a HalfEdgeEdit of the
+/// Triangulation2; `prefers(work, quad)` says whether the strictly convex quad wants its other
+/// diagonal. `wide`: the decision also reads the triangles across the quad's sides (data-
+/// dependent costs of the sides), so a swap re-queues the other edges of those outer triangles
+/// too, not only the quad's four sides. The queue holds slots (3t + k), as it did when it ran on
+/// neighbour ids: a queued slot is tested with whatever edge sits there when it is popped, so the
+/// flip keeps the old layout (new diagonal at local 0 of both triangles, picture at the top) and
+/// the swaps, their order and the output are unchanged.
 template <class Prefers>
 EdgeSwapCounters swap_loop(Triangulation2& mesh, bool wide, Prefers&& prefers) {
     EdgeSwapCounters counters;
     validate_points_2d(mesh.xy);
-    const std::size_t slots = mesh.triangles.size();
-    EM_ASSERT(mesh.neighbors.size() == slots);
-    EM_ASSERT(mesh.constrained.empty() || mesh.constrained.size() == slots);
+    HalfEdgeEdit edit(mesh);
+    TriMesh2& work = edit.mesh();
+    const std::size_t slots = work.tv.size();
     std::vector<std::uint8_t> queued(slots, 0);
     std::deque<EdgeIdx> queue;
-    auto push = [&](std::size_t e) {
-        const TriIdx other = mesh.neighbors[e];
-        if (other == kNone || queued[e] != 0) return;
-        if (!mesh.constrained.empty() && mesh.constrained[e] != 0) return;
+    auto push = [&](EdgeIdx e) {
+        if (work.twin[e] == kNone || queued[e] != 0 || is_constrained(work, e)) return;
         queued[e] = 1;
-        queue.push_back(static_cast<EdgeIdx>(e));
+        queue.push_back(e);
     };
-    for (std::size_t e = 0; e < slots; ++e) {
+    for (std::size_t s = 0; s < slots; ++s) {
         // One side of each interior edge: the one in the lower-numbered triangle.
-        if (mesh.neighbors[e] != kNone && mesh.neighbors[e] > e / 3) push(e);
+        const auto e = static_cast<EdgeIdx>(s);
+        if (work.twin[e] != kNone && triangle_of(work.twin[e]) > triangle_of(e)) push(e);
     }
     while (!queue.empty()) {
         const EdgeIdx e = queue.front();
         queue.pop_front();
         queued[e] = 0;
-        if (mesh.neighbors[e] == kNone) continue;
+        if (work.twin[e] == kNone) continue;
         ++counters.edges_tested;
-        if (!mesh.constrained.empty() && mesh.constrained[e] != 0) {
+        if (is_constrained(work, e)) {
             ++counters.constrained;
             continue;
         }
-        const Quad q = make_quad(mesh, e / 3, e % 3);
-        if (!strictly_convex(mesh, q)) {
+        const Quad q = make_quad(work, e);
+        if (!strictly_convex(work, q)) {
             ++counters.not_convex;
             continue;
         }
-        if (!prefers(q)) continue;
-        swap_diagonal(mesh, q);
+        if (!prefers(work, q)) continue;
+        const FlipEdges flipped = flip_2d(work, e, 0, 0);
         ++counters.swaps;
-        push(slot(q.t, 1));
-        push(slot(q.t, 2));
-        push(slot(q.u, 1));
-        push(slot(q.u, 2));
+        for (const EdgeIdx side : flipped.sides) push(side);
         if (wide) {
-            for (const TriIdx inner : {q.t, q.u}) {
+            for (const TriIdx inner : {triangle_of(e), triangle_of(q.f)}) {
                 for (unsigned s = 1; s < 3; ++s) {
-                    const TriIdx outer = mesh.neighbors[slot(inner, s)];
-                    if (outer == kNone) continue;
+                    const EdgeIdx across = work.twin[3 * inner + s];
+                    if (across == kNone) continue;
+                    const TriIdx outer = triangle_of(across);
                     for (unsigned k = 0; k < 3; ++k) {
-                        if (mesh.neighbors[slot(outer, k)] != inner) push(slot(outer, k));
+                        const EdgeIdx g = 3 * outer + k;
+                        if (work.twin[g] == kNone || triangle_of(work.twin[g]) != inner) push(g);
                     }
                 }
             }
@@ -216,8 +163,8 @@ Corner larger(const Corner& x, const Corner& y) {
 }
 
 /// The plane interpolating `values` over the counter-clockwise triangle (p, q, r): its gradient.
-std::array<double, 2> gradient(const Triangulation2& mesh, std::span<const double> values,
-                               VertIdx p, VertIdx q, VertIdx r) {
+std::array<double, 2> gradient(const TriMesh2& mesh, std::span<const double> values, VertIdx p,
+                               VertIdx q, VertIdx r) {
     const double* a = mesh.point(p);
     const double* b = mesh.point(q);
     const double* c = mesh.point(r);
@@ -230,7 +177,7 @@ std::array<double, 2> gradient(const Triangulation2& mesh, std::span<const doubl
 /// The cost of edge (p, q) with apex `left` on its left and `right` on its right. Computed with
 /// the endpoints in increasing index order, so the same edge and apexes always give the same
 /// double (the termination argument needs a function of the edge, not of how it is reached).
-double canonical_edge_cost(const Triangulation2& mesh, const DataDependent& criterion, VertIdx p,
+double canonical_edge_cost(const TriMesh2& mesh, const DataDependent& criterion, VertIdx p,
                            VertIdx q, VertIdx left, VertIdx right) {
     if (p > q) {
         std::swap(p, q);
@@ -252,17 +199,10 @@ double canonical_edge_cost(const Triangulation2& mesh, const DataDependent& crit
     return std::fabs(ey * (g1[0] - g2[0]) - ex * (g1[1] - g2[1])) / length;
 }
 
-/// The apex across the edge of slot `e` from its triangle, or kNone on the boundary.
-VertIdx outer_apex(const Triangulation2& mesh, std::size_t e) {
-    const TriIdx w = mesh.neighbors[e];
-    if (w == kNone) return kNone;
-    const VertIdx p = mesh.triangles[e];
-    const VertIdx q = mesh.triangles[3 * (e / 3) + (e % 3 + 1) % 3];
-    for (unsigned s = 0; s < 3; ++s) {
-        const VertIdx v = mesh.triangles[slot(w, s)];
-        if (v != p && v != q) return v;
-    }
-    throw InternalError("edge_swap_2d: degenerate neighbor triangle");
+/// The apex across half-edge e from its triangle, or kNone on the boundary.
+VertIdx outer_apex(const TriMesh2& mesh, EdgeIdx e) {
+    const EdgeIdx across = mesh.twin[e];
+    return across == kNone ? kNone : mesh.tv[prev_edge(across)];
 }
 
 /// Sign of sum(plus) - sum(minus), exact (expansion sums of the doubles).
@@ -294,16 +234,16 @@ SwapCriterion swap_criterion_from_name(std::string_view name) {
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, Delaunay) {
-    return swap_loop(mesh, false, [&](const Quad& q) {
-        return predicates::incircle_sos(mesh.point(q.a), mesh.point(q.b), mesh.point(q.c),
-                                        mesh.point(q.d), q.a, q.b, q.c, q.d) == Sign::Positive;
+    return swap_loop(mesh, false, [&](const TriMesh2& work, const Quad& q) {
+        return predicates::incircle_sos(work.point(q.a), work.point(q.b), work.point(q.c),
+                                        work.point(q.d), q.a, q.b, q.c, q.d) == Sign::Positive;
     });
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MaxMinAngle) {
-    return swap_loop(mesh, false, [&](const Quad& q) {
-        const double *a = mesh.point(q.a), *b = mesh.point(q.b);
-        const double *c = mesh.point(q.c), *d = mesh.point(q.d);
+    return swap_loop(mesh, false, [&](const TriMesh2& work, const Quad& q) {
+        const double *a = work.point(q.a), *b = work.point(q.b);
+        const double *c = work.point(q.c), *d = work.point(q.d);
         const Corner before = smaller(smallest_corner(a, b, c), smallest_corner(b, a, d));
         const Corner after = smaller(smallest_corner(c, a, d), smallest_corner(d, b, c));
         return compare_angles(after, before) == Sign::Positive;
@@ -311,9 +251,9 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MaxMinAngle) {
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinMaxAngle) {
-    return swap_loop(mesh, false, [&](const Quad& q) {
-        const double *a = mesh.point(q.a), *b = mesh.point(q.b);
-        const double *c = mesh.point(q.c), *d = mesh.point(q.d);
+    return swap_loop(mesh, false, [&](const TriMesh2& work, const Quad& q) {
+        const double *a = work.point(q.a), *b = work.point(q.b);
+        const double *c = work.point(q.c), *d = work.point(q.d);
         const Corner before = larger(largest_corner(a, b, c), largest_corner(b, a, d));
         const Corner after = larger(largest_corner(c, a, d), largest_corner(d, b, c));
         return compare_angles(after, before) == Sign::Negative;
@@ -321,9 +261,9 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinMaxAngle) {
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinTotalLength) {
-    return swap_loop(mesh, false, [&](const Quad& q) {
-        return compare_lengths(mesh.point(q.c), mesh.point(q.d), mesh.point(q.a),
-                               mesh.point(q.b)) == Sign::Negative;
+    return swap_loop(mesh, false, [&](const TriMesh2& work, const Quad& q) {
+        return compare_lengths(work.point(q.c), work.point(q.d), work.point(q.a),
+                               work.point(q.b)) == Sign::Negative;
     });
 }
 
@@ -341,15 +281,15 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion) {
                              " is not finite (" + text + ")");
         }
     }
-    return swap_loop(mesh, true, [&](const Quad& q) {
+    return swap_loop(mesh, true, [&](const TriMesh2& work, const Quad& q) {
         // The outer apexes across the four sides, read before anything changes.
-        const VertIdx o_bc = outer_apex(mesh, slot(q.t, (q.k + 1) % 3));
-        const VertIdx o_ca = outer_apex(mesh, slot(q.t, (q.k + 2) % 3));
-        const VertIdx o_ad = outer_apex(mesh, slot(q.u, (q.j + 1) % 3));
-        const VertIdx o_db = outer_apex(mesh, slot(q.u, (q.j + 2) % 3));
+        const VertIdx o_bc = outer_apex(work, next_edge(q.e));
+        const VertIdx o_ca = outer_apex(work, prev_edge(q.e));
+        const VertIdx o_ad = outer_apex(work, next_edge(q.f));
+        const VertIdx o_db = outer_apex(work, prev_edge(q.f));
         std::array<double, 5> before{}, after{};
         auto cost = [&](VertIdx p, VertIdx r, VertIdx left, VertIdx right) {
-            return right == kNone ? 0.0 : canonical_edge_cost(mesh, criterion, p, r, left, right);
+            return right == kNone ? 0.0 : canonical_edge_cost(work, criterion, p, r, left, right);
         };
         before = {cost(q.a, q.b, q.c, q.d), cost(q.b, q.c, q.a, o_bc), cost(q.c, q.a, q.b, o_ca),
                   cost(q.a, q.d, q.b, o_ad), cost(q.d, q.b, q.a, o_db)};
@@ -392,9 +332,9 @@ void link_neighbors_2d(Triangulation2& mesh, CheckNumbering numbering) {
         }
         for (unsigned k = 0; k < 3; ++k) {
             const std::size_t e = 3 * t + k;
-            directed.emplace_back((std::uint64_t{mesh.triangles[e]} << 32) |
-                                      mesh.triangles[3 * t + (k + 1) % 3],
-                                  static_cast<EdgeIdx>(e));
+            directed.emplace_back(
+                (std::uint64_t{mesh.triangles[e]} << 32) | mesh.triangles[3 * t + (k + 1) % 3],
+                static_cast<EdgeIdx>(e));
         }
     }
     std::sort(directed.begin(), directed.end());
@@ -409,8 +349,8 @@ void link_neighbors_2d(Triangulation2& mesh, CheckNumbering numbering) {
     mesh.neighbors.assign(slots, kNone);
     for (const auto& [key, e] : directed) {
         const std::uint64_t reverse = (key << 32) | (key >> 32);
-        const auto it = std::lower_bound(directed.begin(), directed.end(),
-                                         std::make_pair(reverse, EdgeIdx{0}));
+        const auto it =
+            std::lower_bound(directed.begin(), directed.end(), std::make_pair(reverse, EdgeIdx{0}));
         if (it != directed.end() && it->first == reverse) {
             mesh.neighbors[e] = it->second / 3;
             if (!mesh.constrained.empty() && mesh.constrained[it->second] != 0) {

@@ -15,6 +15,8 @@
 // An infinite triangle has kInfinite as one vertex; its finite edge has the hull's outside
 // on its left, so for an infinite triangle (a, b, inf), orient2d(a, b, q) > 0 means q lies
 // beyond the hull edge ab. Dead triangles (recycled by the algorithms) have tv == kNone.
+// A mesh converted from a Triangulation2 for editing (flip_2d.hpp's HalfEdgeEdit) has no
+// infinite vertex: there twin == kNone on the boundary.
 #pragma once
 
 #include <cstdint>
@@ -40,6 +42,9 @@ struct TriMesh2 {
     std::vector<VertIdx> tv;     ///< 3·#T vertices, counter-clockwise; kNone for dead triangles
     std::vector<EdgeIdx> twin;   ///< 3·#T opposite half-edges
     std::vector<TriIdx> free_triangles;  ///< dead triangle slots to recycle
+    /// 3·#T per half-edge marks (bit 0: constrained edge; both halves of an edge agree), or empty
+    /// when no edge carries one; the flip kernel (flip_2d.hpp) keeps them through every edit.
+    std::vector<std::uint8_t> flags;
 
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xy.size() / 2); }
     std::uint32_t triangle_slots() const { return static_cast<std::uint32_t>(tv.size() / 3); }
@@ -62,6 +67,7 @@ struct TriMesh2 {
         const TriIdx t = triangle_slots();
         tv.resize(tv.size() + 3, kNone);
         twin.resize(twin.size() + 3, kNone);
+        if (!flags.empty()) flags.resize(flags.size() + 3, 0);
         return t;
     }
 
