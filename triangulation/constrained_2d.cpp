@@ -16,11 +16,12 @@
 #include <unordered_map>
 #include <utility>
 
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
-#include "triangulation/angles_2d.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d_builder.hpp"
 #include "triangulation/delaunay_2d_core.hpp"
@@ -677,19 +678,20 @@ bool CdtBuilder::bend_candidate(std::uint32_t segment, VertIdx a, VertIdx b, Ver
     const double* s0 = mesh_.point(segment_ends_[segment][0]);
     const double* s1 = mesh_.point(segment_ends_[segment][1]);
     // The distance test first: it rejects nearly every vertex a piece crosses, by its filter.
-    if (!within_rounding_of_segment(mesh_.point(w), s0, s1)) return false;
-    const Sign from_a = direction_dot_sign(mesh_.point(a), mesh_.point(w), s0, s1);
-    const Sign to_b = direction_dot_sign(mesh_.point(w), mesh_.point(b), s0, s1);
+    if (!predicates::within_rounding_of_segment(mesh_.point(w), s0, s1)) return false;
+    const Sign from_a = predicates::direction_dot_sign(mesh_.point(a), mesh_.point(w), s0, s1);
+    const Sign to_b = predicates::direction_dot_sign(mesh_.point(w), mesh_.point(b), s0, s1);
     if (from_a == Sign::Zero || from_a != to_b) return false;
     // A piece shared with other segments bends only where each of their chains may bend.
     for (const std::uint32_t other : shared_segments(a, b)) {
         if (other == segment) continue;
         const double* t0 = mesh_.point(segment_ends_[other][0]);
         const double* t1 = mesh_.point(segment_ends_[other][1]);
-        const Sign o_from_a = direction_dot_sign(mesh_.point(a), mesh_.point(w), t0, t1);
-        const Sign o_to_b = direction_dot_sign(mesh_.point(w), mesh_.point(b), t0, t1);
+        const Sign o_from_a =
+            predicates::direction_dot_sign(mesh_.point(a), mesh_.point(w), t0, t1);
+        const Sign o_to_b = predicates::direction_dot_sign(mesh_.point(w), mesh_.point(b), t0, t1);
         if (o_from_a == Sign::Zero || o_from_a != o_to_b) return false;
-        if (!within_rounding_of_segment(mesh_.point(w), t0, t1)) return false;
+        if (!predicates::within_rounding_of_segment(mesh_.point(w), t0, t1)) return false;
     }
     return true;
 }
@@ -702,8 +704,8 @@ VertIdx CdtBuilder::vertex_near_segment(const Piece& piece) {
     VertIdx best = kNone;
     auto consider = [&](VertIdx v) {
         if (!bend_candidate(piece.segment, a, b, v)) return;
-        if (best == kNone ||
-            direction_dot_sign(mesh_.point(v), mesh_.point(best), s0, s1) == Sign::Positive)
+        if (best == kNone || predicates::direction_dot_sign(mesh_.point(v), mesh_.point(best), s0,
+                                                            s1) == Sign::Positive)
             best = v;
     };
     // The edges the piece crosses, as insert_piece walks them; a vertex exactly on the piece
@@ -792,9 +794,10 @@ void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) 
         const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
         const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
         // (A piece may run either way along its segment.)
-        const Sign from_a = direction_dot_sign(pa, m, s0, s1),
-                   to_b = direction_dot_sign(m, pb, s0, s1);
-        if (from_a == Sign::Zero || from_a != to_b || !within_rounding_of_segment(m, s0, s1)) {
+        const Sign from_a = predicates::direction_dot_sign(pa, m, s0, s1),
+                   to_b = predicates::direction_dot_sign(m, pb, s0, s1);
+        if (from_a == Sign::Zero || from_a != to_b ||
+            !predicates::within_rounding_of_segment(m, s0, s1)) {
             throw GeometryError(
                 "conforming Delaunay: segment " + segment_name(piece.segment) +
                 " has a piece whose split point falls off its way (features finer than "
@@ -826,8 +829,9 @@ void CdtBuilder::split_piece(const Piece& piece, std::vector<SplitTask>& tasks) 
         // midpoint round to the vertex beyond it, and the two tasks alternated 57,000 times).
         const double* s0 = mesh_.point(segment_ends_[piece.segment][0]);
         const double* s1 = mesh_.point(segment_ends_[piece.segment][1]);
-        const Sign from_a = direction_dot_sign(pa, mesh_.point(at), s0, s1);
-        if (from_a == Sign::Zero || from_a != direction_dot_sign(mesh_.point(at), pb, s0, s1)) {
+        const Sign from_a = predicates::direction_dot_sign(pa, mesh_.point(at), s0, s1);
+        if (from_a == Sign::Zero ||
+            from_a != predicates::direction_dot_sign(mesh_.point(at), pb, s0, s1)) {
             throw GeometryError("conforming Delaunay: segment " + segment_name(piece.segment) +
                                 " has a piece whose split point rounds to a vertex off its way "
                                 "(features finer than double precision resolves)");

@@ -19,8 +19,8 @@
 #include <string>
 #include <utility>
 
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/errors.hpp"
-#include "triangulation/angles_2d.hpp"
 #include "triangulation/constrained_2d_builder.hpp"
 
 namespace exactmesh::triangulation {
@@ -116,7 +116,8 @@ CavityInsertion CdtBuilder::insert_in_cavity(TriIdx t, double x, double y) {
         const Sign side = core_.orient(u, v, p);
         if (segment_of_[e] != kNone) {
             if (side != Sign::Positive ||
-                corner_dot_sign(mesh_.point(p), mesh_.point(u), mesh_.point(v)) != Sign::Positive) {
+                predicates::corner_dot_sign(mesh_.point(p), mesh_.point(u), mesh_.point(v)) !=
+                    Sign::Positive) {
                 encroached_edges_.push_back(e);
             }
         } else if (side != Sign::Positive) {

@@ -51,19 +51,24 @@
 #include <utility>
 #include <vector>
 
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
-#include "triangulation/angles_2d.hpp"
 #include "triangulation/delaunay_2d.hpp"
 
 namespace exactmesh::triangulation {
 
 namespace {
 
+using predicates::compare_angles;
+using predicates::compare_lengths;
+using predicates::Corner;
+using predicates::largest_corner;
 using predicates::Sign;
+using predicates::smallest_corner;
 
 /// The two triangles of an interior edge: t = (a, b, c) with the edge as its edge k, and
 /// u = (b, a, d) with it as its edge j.
