@@ -184,9 +184,16 @@ void print_predicate_stats(const predicates::PredicateStats& stats, int dimensio
     if (predicates::stats_enabled() && dimension == 3) {
         print_stage_counts("orient3d", stats.orient3d);
         print_stage_counts("insphere", stats.insphere);
+        print_stage_counts("compare_dihedral", stats.compare_dihedral);
+        print_stage_counts("compare_volume_edge", stats.compare_volume_edge);
     } else if (predicates::stats_enabled()) {
         print_stage_counts("orient2d", stats.orient2d);
         print_stage_counts("incircle", stats.incircle);
+        print_stage_counts("compare_angles", stats.compare_angles);
+        print_stage_counts("compare_lengths", stats.compare_lengths);
+        print_stage_counts("corner_dot_sign", stats.corner_dot_sign);
+        print_stage_counts("direction_dot_sign", stats.direction_dot_sign);
+        print_stage_counts("within_rounding_of_segment", stats.within_rounding_of_segment);
     } else {
         std::cout << "predicate_stages: compiled out (configure with -DEXACTMESH_PREDICATE_STATS=ON)\n";
     }

@@ -22,11 +22,11 @@
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/domain_mesh_2d.hpp"
 #include "generators/front_index_2d.hpp"
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
-#include "triangulation/angles_2d.hpp"
 
 namespace exactmesh::generators {
 
@@ -318,7 +318,7 @@ class AdvancingFront {
             const VertIdx o = (s0 == t0 || s0 == t1) ? s0 : s1;
             const VertIdx s = o == s0 ? s1 : s0, t = o == t0 ? t1 : t0;
             return orient(o, s, t) == Sign::Zero &&
-                   triangulation::corner_dot_sign(point(o), point(s), point(t)) == Sign::Positive;
+                   predicates::corner_dot_sign(point(o), point(s), point(t)) == Sign::Positive;
         }
         const Sign o1 = orient(s0, s1, t0), o2 = orient(s0, s1, t1);
         if (o1 == o2 && o1 != Sign::Zero) return false;

@@ -25,7 +25,7 @@
 // triangle is strictly counter-clockwise and disjoint from the others' interiors; at the end the
 // triangles tile the domain. Cost: O(log n) per triangle (heap, loose quadtree of front edges),
 // plus tests against the O(1) front edges near it. Predicates: orient2d, corner_dot_sign
-// (angles_2d); the closure: constrained_delaunay_2d (orient2d, incircle).
+// (predicates/angle_comparisons_2d); the closure: constrained_delaunay_2d (orient2d, incircle).
 #pragma once
 
 #include <array>

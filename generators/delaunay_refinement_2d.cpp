@@ -27,11 +27,11 @@
 #include <vector>
 
 #include "generators/region_areas_2d.hpp"
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/power_of_two.hpp"
 #include "predicates/triangle_area.hpp"
-#include "triangulation/angles_2d.hpp"
 #include "triangulation/constrained_triangulation_2d.hpp"
 
 namespace exactmesh::generators {
@@ -436,7 +436,7 @@ bool Refiner::encroached_from(EdgeIdx e) {
     // circle of e (a right or obtuse angle).
     ++counters_.encroachment_tests;
     const VertIdx a = mesh_.origin(e), b = mesh_.destination(e), w = mesh_.tv[tri::prev_edge(e)];
-    return tri::corner_dot_sign(point(w), point(a), point(b)) != Sign::Positive;
+    return predicates::corner_dot_sign(point(w), point(a), point(b)) != Sign::Positive;
 }
 
 void Refiner::process_touched() {

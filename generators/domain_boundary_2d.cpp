@@ -18,11 +18,12 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
-#include "triangulation/angles_2d.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 
 namespace exactmesh::generators {
@@ -445,10 +446,10 @@ DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const Size
                               std::uint32_t segment) {
         const double* s0 = mesh.point(pslg.segments[2 * std::size_t{segment}]);
         const double* s1 = mesh.point(pslg.segments[2 * std::size_t{segment} + 1]);
-        return tri::within_rounding_of_segment(mesh.point(c), s0, s1) &&
-               tri::direction_dot_sign(mesh.point(u), mesh.point(c), s0, s1) !=
+        return predicates::within_rounding_of_segment(mesh.point(c), s0, s1) &&
+               predicates::direction_dot_sign(mesh.point(u), mesh.point(c), s0, s1) !=
                    predicates::Sign::Negative &&
-               tri::direction_dot_sign(mesh.point(c), mesh.point(v), s0, s1) !=
+               predicates::direction_dot_sign(mesh.point(c), mesh.point(v), s0, s1) !=
                    predicates::Sign::Negative;
     };
     std::vector<tri::VertIdx> chain;

@@ -358,4 +358,116 @@ Sign insphere_sos(const double* a, const double* b, const double* c, const doubl
                                  ranks_by_decreasing_index({ia, ib, ic, id, ie}));
 }
 
+namespace {
+
+struct Vec3 {
+    mpq_class x, y, z;
+};
+Vec3 minus3(const double* p, const double* o) {
+    return {exact(p[0]) - exact(o[0]), exact(p[1]) - exact(o[1]), exact(p[2]) - exact(o[2])};
+}
+Vec3 cross3(const Vec3& a, const Vec3& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+mpq_class dot3(const Vec3& a, const Vec3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+/// cot of the corner at o of (o, p, q), counter-clockwise.
+mpq_class cotangent(const double* o, const double* p, const double* q) {
+    const mpq_class ux = exact(p[0]) - exact(o[0]), uy = exact(p[1]) - exact(o[1]);
+    const mpq_class vx = exact(q[0]) - exact(o[0]), vy = exact(q[1]) - exact(o[1]);
+    const mpq_class cross = ux * vy - uy * vx;
+    if (sgn(cross) <= 0)
+        throw std::invalid_argument("compare_angles: corner not counter-clockwise");
+    return (ux * vx + uy * vy) / cross;
+}
+
+/// Sign and square of the cosine of the dihedral angle at edge (t[i], t[j]).
+std::pair<int, mpq_class> dihedral_cosine(const double* const* t, unsigned i, unsigned j) {
+    unsigned other[2], n = 0;
+    for (unsigned k = 0; k < 4; ++k) {
+        if (k != i && k != j) other[n++] = k;
+    }
+    const Vec3 e = minus3(t[j], t[i]);
+    const Vec3 n1 = cross3(e, minus3(t[other[0]], t[i]));
+    const Vec3 n2 = cross3(e, minus3(t[other[1]], t[i]));
+    const mpq_class d = dot3(n1, n2);
+    return {sgn(d), d * d / (dot3(n1, n1) * dot3(n2, n2))};
+}
+
+}  // namespace
+
+Sign compare_angles(const double* o1, const double* p1, const double* q1, const double* o2,
+                    const double* p2, const double* q2) {
+    // The angle decreases as its cotangent increases on (0, pi).
+    return sign_of(cotangent(o2, p2, q2) - cotangent(o1, p1, q1));
+}
+
+Sign compare_lengths(const double* p1, const double* q1, const double* p2, const double* q2) {
+    const mpq_class x1 = exact(p1[0]) - exact(q1[0]), y1 = exact(p1[1]) - exact(q1[1]);
+    const mpq_class x2 = exact(p2[0]) - exact(q2[0]), y2 = exact(p2[1]) - exact(q2[1]);
+    return sign_of(x1 * x1 + y1 * y1 - x2 * x2 - y2 * y2);
+}
+
+Sign dot_sign(const double* p, const double* q, const double* a, const double* b) {
+    return sign_of((exact(q[0]) - exact(p[0])) * (exact(b[0]) - exact(a[0])) +
+                   (exact(q[1]) - exact(p[1])) * (exact(b[1]) - exact(a[1])));
+}
+
+bool within_rounding_of_segment(const double* w, const double* s0, const double* s1) {
+    const double m = std::max(std::fabs(w[0]), std::fabs(w[1]));
+    const mpq_class t = exact(std::max(std::ldexp(m, -40), 0x1p-1074));
+    // Points s0 + r (s1 - s0), r in [lo, hi], inside the square: clip r coordinate by coordinate.
+    mpq_class lo = 0, hi = 1;
+    for (int k = 0; k < 2; ++k) {
+        const mpq_class a = exact(s0[k]), d = exact(s1[k]) - exact(s0[k]);
+        const mpq_class low = exact(w[k]) - t, high = exact(w[k]) + t;
+        if (sgn(d) == 0) {
+            if (a < low || a > high) return false;
+            continue;
+        }
+        mpq_class r0 = (low - a) / d, r1 = (high - a) / d;
+        if (r0 > r1) std::swap(r0, r1);
+        if (r0 > lo) lo = r0;
+        if (r1 < hi) hi = r1;
+    }
+    return lo <= hi;
+}
+
+Sign compare_dihedral(const double* const* a, unsigned i, unsigned j, const double* const* b,
+                      unsigned k, unsigned l) {
+    // angle(a) - angle(b) has the sign of cos(b) - cos(a).
+    const auto [sa, ca2] = dihedral_cosine(a, i, j);
+    const auto [sb, cb2] = dihedral_cosine(b, k, l);
+    if (sa != sb) return sb > sa ? Sign::Positive : Sign::Negative;
+    if (sa == 0) return Sign::Zero;
+    const Sign squares = sign_of(cb2 - ca2);  // |cos b| - |cos a|
+    return sa > 0 ? squares : -squares;
+}
+
+Sign compare_volume_edge(const double* const* a, const double* const* b) {
+    auto measure = [](const double* const* t) {
+        const mpq_class v6 =
+            dot3(cross3(minus3(t[2], t[0]), minus3(t[3], t[0])), minus3(t[1], t[0]));
+        mpq_class lengths = 0;
+        for (int p = 0; p < 4; ++p) {
+            for (int q = p + 1; q < 4; ++q) {
+                const Vec3 e = minus3(t[q], t[p]);
+                lengths += dot3(e, e);
+            }
+        }
+        return std::pair<mpq_class, mpq_class>{v6, lengths};
+    };
+    const auto [va, la] = measure(a);
+    const auto [vb, lb] = measure(b);
+    return sign_of(va * va / (la * la * la) - vb * vb / (lb * lb * lb));
+}
+
+Sign triangle_area_sign(const double* a, const double* b, const double* c, double area) {
+    const mpq_class det = (exact(a[0]) - exact(c[0])) * (exact(b[1]) - exact(c[1])) -
+                          (exact(a[1]) - exact(c[1])) * (exact(b[0]) - exact(c[0]));
+    return sign_of(det / 2 - exact(area));
+}
+
 }  // namespace exactmesh::predicates::reference

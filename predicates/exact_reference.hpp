@@ -65,4 +65,31 @@ Sign insphere_sos(const double* a, const double* b, const double* c, const doubl
                   const double* e, std::uint32_t ia, std::uint32_t ib, std::uint32_t ic,
                   std::uint32_t id, std::uint32_t ie);
 
+/// References for the comparisons of angle_comparisons_2d/3d, within_rounding_of_segment and
+/// triangle_area, in rationals from the raw coordinates, written without the predicates' forms.
+
+/// Sign of angle(o1; p1, q1) - angle(o2; p2, q2), the corners of counter-clockwise triangles,
+/// from the cotangents dot / cross as rationals. @pre both crosses positive
+/// (std::invalid_argument otherwise).
+Sign compare_angles(const double* o1, const double* p1, const double* q1, const double* o2,
+                    const double* p2, const double* q2);
+/// Sign of |p1 - q1|^2 - |p2 - q2|^2.
+Sign compare_lengths(const double* p1, const double* q1, const double* p2, const double* q2);
+/// Sign of (q - p) . (b - a).
+Sign dot_sign(const double* p, const double* q, const double* a, const double* b);
+/// Whether the closed square of half-width 2^-40 max(|w_x|, |w_y|) (at least 2^-1074) around w
+/// meets the closed segment [s0, s1]: the segment clipped to the square by its parameter range
+/// (Liang-Barsky) is not empty.
+bool within_rounding_of_segment(const double* w, const double* s0, const double* s1);
+/// Sign of the dihedral angle of tetrahedron a (4 points of 3 doubles) at edge (a[i], a[j])
+/// minus that of b at (b[k], b[l]), from the cosines n1 . n2 / (|n1| |n2|) compared by sign and
+/// by their squares as rationals. @pre both tetrahedra non-degenerate.
+Sign compare_dihedral(const double* const* a, unsigned i, unsigned j, const double* const* b,
+                      unsigned k, unsigned l);
+/// Sign of q(a) - q(b) for the volume-edge quality q = 12 sqrt(3) V6 / L^(3/2) of positively
+/// oriented tetrahedra: compares V6^2 / L^3 as rationals (V6 > 0).
+Sign compare_volume_edge(const double* const* a, const double* const* b);
+/// Sign of det [a - c; b - c] / 2 - area.
+Sign triangle_area_sign(const double* a, const double* b, const double* c, double area);
+
 }  // namespace exactmesh::predicates::reference

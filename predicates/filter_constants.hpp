@@ -30,4 +30,31 @@ inline constexpr double insphere_filter_eps = 0x1.49fffffffffffp-39;
 inline constexpr double insphere_filter_min = 0x1p-180;
 inline constexpr double insphere_filter_max = 0x1p+180;
 
+// Relative filters: the sign of a computed value is certified when it exceeds eps times a
+// computed bound on the sum of its monomials' magnitudes (a permanent). Each eps is the least
+// power of two (so eps * bound is exact) that Gappa proves in proofs/gappa/<name>.g; the CTest
+// test `proofs.<name>` (proofs/check_relative_constants.cmake) proves eps and fails eps / 2.
+// The model and the reduction to it are in proofs/invariants/filters.md, "Relative filters".
+
+// proofs/gappa/compare_angles_filter.g (predicates/angle_comparisons_2d.cpp)
+inline constexpr double compare_angles_filter_eps = 0x1p-49;
+// proofs/gappa/compare_lengths_filter.g (predicates/angle_comparisons_2d.cpp)
+inline constexpr double compare_lengths_filter_eps = 0x1p-50;
+// proofs/gappa/dot_sign_filter.g (corner_dot_sign, direction_dot_sign)
+inline constexpr double dot_sign_filter_eps = 0x1p-50;
+// The window of the double stages of angle_comparisons_2d: every nonzero computed coordinate
+// difference lies in [min, max], so no operation of the filters or the expansions underflows
+// or overflows (argument in predicates/angle_comparisons_2d.cpp); outside it, other stages.
+inline constexpr double angle_comparisons_2d_window_min = 0x1p-200;
+inline constexpr double angle_comparisons_2d_window_max = 0x1p+200;
+// proofs/gappa/dot_sign_long_double_filter.g (direction_dot_sign's long double stage)
+inline constexpr long double dot_sign_long_double_filter_eps = 0x1p-61L;
+// proofs/gappa/within_rounding_filter.g (predicates/within_rounding_of_segment.cpp)
+inline constexpr long double within_rounding_filter_eps = 0x1p-61L;
+// proofs/gappa/angle_comparisons_3d_filter.g: the long double filter of compare_dihedral and
+// compare_volume_edge certifies |value| > factor (k + 1) 2^-64 magnitude for a value with at
+// most k <= max_roundings roundings per monomial; it abstains above max_roundings.
+inline constexpr long double angle_comparisons_3d_filter_factor = 0x1p+0L;
+inline constexpr int angle_comparisons_3d_filter_max_roundings = 64;
+
 }  // namespace exactmesh::predicates

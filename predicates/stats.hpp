@@ -21,8 +21,13 @@ struct StageCounts {
     std::uint64_t rescaled = 0;
 };
 
+/// The comparisons of angle_comparisons_2d/3d and within_rounding_of_segment use the same
+/// stages: filter (a relative filter, or a long double one), exact_differences (expansion
+/// arithmetic on exact differences), adaptive (direction_dot_sign's long double stage), gmp.
 struct PredicateStats {
     StageCounts orient2d, incircle, orient3d, insphere;
+    StageCounts compare_angles, compare_lengths, corner_dot_sign, direction_dot_sign;
+    StageCounts within_rounding_of_segment, compare_dihedral, compare_volume_edge;
 };
 
 /// True when the library was built with EXACTMESH_PREDICATE_STATS.

@@ -11,8 +11,9 @@
 #include <utility>
 #include <vector>
 
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/errors.hpp"
-#include "triangulation/angles_2d.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
 #include "triangulation/cdt_phases_2d.hpp"
 #include "triangulation/cdt_state_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
@@ -29,19 +30,19 @@ bool bend_candidate(const CdtState& cdt, std::uint32_t segment, VertIdx a, VertI
     const double* s0 = cdt.mesh.point(cdt.segment_ends[segment][0]);
     const double* s1 = cdt.mesh.point(cdt.segment_ends[segment][1]);
     // The distance test first: it rejects nearly every vertex a piece crosses, by its filter.
-    if (!within_rounding_of_segment(cdt.mesh.point(w), s0, s1)) return false;
-    const Sign from_a = direction_dot_sign(cdt.mesh.point(a), cdt.mesh.point(w), s0, s1);
-    const Sign to_b = direction_dot_sign(cdt.mesh.point(w), cdt.mesh.point(b), s0, s1);
+    if (!predicates::within_rounding_of_segment(cdt.mesh.point(w), s0, s1)) return false;
+    const Sign from_a = predicates::direction_dot_sign(cdt.mesh.point(a), cdt.mesh.point(w), s0, s1);
+    const Sign to_b = predicates::direction_dot_sign(cdt.mesh.point(w), cdt.mesh.point(b), s0, s1);
     if (from_a == Sign::Zero || from_a != to_b) return false;
     // A piece shared with other segments bends only where each of their chains may bend.
     for (const std::uint32_t other : cdt.shared_segments(a, b)) {
         if (other == segment) continue;
         const double* t0 = cdt.mesh.point(cdt.segment_ends[other][0]);
         const double* t1 = cdt.mesh.point(cdt.segment_ends[other][1]);
-        const Sign o_from_a = direction_dot_sign(cdt.mesh.point(a), cdt.mesh.point(w), t0, t1);
-        const Sign o_to_b = direction_dot_sign(cdt.mesh.point(w), cdt.mesh.point(b), t0, t1);
+        const Sign o_from_a = predicates::direction_dot_sign(cdt.mesh.point(a), cdt.mesh.point(w), t0, t1);
+        const Sign o_to_b = predicates::direction_dot_sign(cdt.mesh.point(w), cdt.mesh.point(b), t0, t1);
         if (o_from_a == Sign::Zero || o_from_a != o_to_b) return false;
-        if (!within_rounding_of_segment(cdt.mesh.point(w), t0, t1)) return false;
+        if (!predicates::within_rounding_of_segment(cdt.mesh.point(w), t0, t1)) return false;
     }
     return true;
 }
@@ -71,7 +72,7 @@ VertIdx vertex_near_segment(CdtState& cdt, const Piece& piece) {
     auto consider = [&](VertIdx v) {
         if (!bend_candidate(cdt, piece.segment, a, b, v)) return;
         if (best == kNone ||
-            direction_dot_sign(cdt.mesh.point(v), cdt.mesh.point(best), s0, s1) == Sign::Positive)
+            predicates::direction_dot_sign(cdt.mesh.point(v), cdt.mesh.point(best), s0, s1) == Sign::Positive)
             best = v;
     };
     // The edges the piece crosses, as insert_piece walks them; a vertex exactly on the piece
@@ -165,9 +166,9 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece,
         const double* s0 = cdt.mesh.point(cdt.segment_ends[piece.segment][0]);
         const double* s1 = cdt.mesh.point(cdt.segment_ends[piece.segment][1]);
         // (A piece may run either way along its segment.)
-        const Sign from_a = direction_dot_sign(pa, m, s0, s1),
-                   to_b = direction_dot_sign(m, pb, s0, s1);
-        if (from_a == Sign::Zero || from_a != to_b || !within_rounding_of_segment(m, s0, s1)) {
+        const Sign from_a = predicates::direction_dot_sign(pa, m, s0, s1),
+                   to_b = predicates::direction_dot_sign(m, pb, s0, s1);
+        if (from_a == Sign::Zero || from_a != to_b || !predicates::within_rounding_of_segment(m, s0, s1)) {
             throw GeometryError(
                 "conforming Delaunay: segment " + cdt.segment_name(piece.segment) +
                 " has a piece whose split point falls off its way (features finer than "
@@ -199,8 +200,8 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece,
         // midpoint round to the vertex beyond it, and the two tasks alternated 57,000 times).
         const double* s0 = cdt.mesh.point(cdt.segment_ends[piece.segment][0]);
         const double* s1 = cdt.mesh.point(cdt.segment_ends[piece.segment][1]);
-        const Sign from_a = direction_dot_sign(pa, cdt.mesh.point(at), s0, s1);
-        if (from_a == Sign::Zero || from_a != direction_dot_sign(cdt.mesh.point(at), pb, s0, s1)) {
+        const Sign from_a = predicates::direction_dot_sign(pa, cdt.mesh.point(at), s0, s1);
+        if (from_a == Sign::Zero || from_a != predicates::direction_dot_sign(cdt.mesh.point(at), pb, s0, s1)) {
             throw GeometryError("conforming Delaunay: segment " + cdt.segment_name(piece.segment) +
                                 " has a piece whose split point rounds to a vertex off its way "
                                 "(features finer than double precision resolves)");

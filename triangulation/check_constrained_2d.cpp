@@ -12,10 +12,11 @@
 #include <utility>
 #include <vector>
 
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/exact_reference.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
-#include "triangulation/angles_2d.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -28,47 +29,6 @@ CheckReport fail(std::string problem, TriIdx t = kNone, std::vector<VertIdx> ver
 }
 
 }  // namespace
-
-bool within_rounding_of_segment(const double* w, const double* s0, const double* s1) {
-    // Half-width t = 2^-40 max(|w_x|, |w_y|) (at least the smallest subnormal).
-    // The box meets the closed segment iff it overlaps the segment's bounding box in x and in y and
-    // the segment's line passes within the box's support in the normal direction n = (dy, -dx):
-    // |(w - s0) x d| <= t_x |dy| + t_y |dx| (separating axes of a box and a segment). Long double
-    // (64-bit significand, exponents to 2^16383) represents every difference and product of two
-    // doubles' differences without overflow or underflow; each side then carries a relative
-    // error below 2^-60 (a few roundings of 2^-64), so a margin of 2^-50 decides, else GMP.
-    const double m = std::max(std::fabs(w[0]), std::fabs(w[1]));
-    const double t[2] = {std::max(std::ldexp(m, -40), std::numeric_limits<double>::denorm_min()),
-                         std::max(std::ldexp(m, -40), std::numeric_limits<double>::denorm_min())};
-    using LD = long double;
-    for (int k = 0; k < 2; ++k) {
-        // Overlap in coordinate k: w_k - t_k <= max_k and w_k + t_k >= min_k, decided in long
-        // double with the same margin, else exactly.
-        const LD lo = std::min(s0[k], s1[k]), hi = std::max(s0[k], s1[k]);
-        const LD below = static_cast<LD>(w[k]) - t[k] - hi,
-                 above = lo - (static_cast<LD>(w[k]) + t[k]);
-        const LD scale = std::fabs(static_cast<LD>(w[k])) + t[k] + std::fabs(lo) + std::fabs(hi);
-        const LD margin = std::ldexp(scale, -50);
-        if (below > margin || above > margin) return false;
-        if (below < -margin && above < -margin) continue;
-        using predicates::reference::exact;
-        const mpq_class ew = exact(w[k]), et = exact(t[k]);
-        if (ew - et > exact(static_cast<double>(hi)) || ew + et < exact(static_cast<double>(lo)))
-            return false;
-    }
-    const LD dx = static_cast<LD>(s1[0]) - s0[0], dy = static_cast<LD>(s1[1]) - s0[1];
-    const LD ux = static_cast<LD>(w[0]) - s0[0], uy = static_cast<LD>(w[1]) - s0[1];
-    const LD cross = std::fabs(ux * dy - uy * dx);
-    const LD support = t[0] * std::fabs(dy) + t[1] * std::fabs(dx);
-    const LD margin = std::ldexp(std::fabs(ux * dy) + std::fabs(uy * dx) + support, -50);
-    if (cross - support > margin) return false;
-    if (cross - support < -margin) return true;
-    using predicates::reference::exact;
-    const mpq_class ex = exact(s1[0]) - exact(s0[0]), ey = exact(s1[1]) - exact(s0[1]);
-    const mpq_class c = (exact(w[0]) - exact(s0[0])) * ey - (exact(w[1]) - exact(s0[1])) * ex;
-    const mpq_class sup = exact(t[0]) * abs(ey) + exact(t[1]) * abs(ex);
-    return abs(c) <= sup;
-}
 
 namespace detail {
 
@@ -246,11 +206,12 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
         const double* pb = mesh.point(b);
         if (pa[0] == pb[0] && pa[1] == pb[1]) continue;
         auto near_line = [&](VertIdx v) {
-            return within_rounding_of_segment(mesh.point(v), pa, pb);
+            return predicates::within_rounding_of_segment(mesh.point(v), pa, pb);
         };
         // The step current -> w does not move against a -> b (exact).
         auto onward = [&](VertIdx current, VertIdx w) {
-            return direction_dot_sign(mesh.point(current), mesh.point(w), pa, pb) != Sign::Negative;
+            return predicates::direction_dot_sign(mesh.point(current), mesh.point(w), pa, pb) !=
+                   Sign::Negative;
         };
         // Depth-first search over constrained pieces never moving away from b, each vertex
         // expanded once: near-collinear vertices can offer several ways on.
@@ -262,7 +223,7 @@ CheckReport check_constrained_mesh_2d(const Triangulation2& mesh, std::uint32_t 
         while (!stack.empty() && !found) {
             const VertIdx current = stack.back();
             stack.pop_back();
-            if (direction_dot_sign(mesh.point(farthest), mesh.point(current), pa, pb) ==
+            if (predicates::direction_dot_sign(mesh.point(farthest), mesh.point(current), pa, pb) ==
                 Sign::Positive) {
                 farthest = current;
             }

@@ -37,18 +37,6 @@ CheckReport check_constrained_delaunay_2d(const Triangulation2& mesh,
                                           std::span<const VertIdx> pieces = {},
                                           CheckNumbering numbering = {});
 
-/// The one rule for the vertices of a segment's chain, shared by the constrained triangulation
-/// (where it bends a segment through a vertex) and check_constrained_delaunay_2d (where it accepts
-/// one); proofs/invariants/constrained_delaunay.md §4. Vertex w lies within rounding of the closed
-/// segment [s0, s1] when the square centred at w with half-width t = 2^-40 max(|w_x|, |w_y|) (at
-/// least 2^-1074) meets the segment: relative to w itself, so that a long segment's large far end
-/// does not make everything near its small end "within rounding" (a segment spanning
-/// 1e-109..1e194 bent along a perpendicular chain 1e-9 away); ample for the points constructed
-/// on it (a crossing rounded once lies within half an ulp of w, a rounded split point a few).
-/// Exact (a long double filter with a proven margin, else GMP), and invariant under scaling by
-/// 2^k while t is not subnormal.
-bool within_rounding_of_segment(const double* w, const double* s0, const double* s1);
-
 namespace detail {
 /// check_constrained_delaunay_2d; with delaunay false, without the locally-Delaunay test
 /// (check_conforming_mesh_2d adds its own tests).

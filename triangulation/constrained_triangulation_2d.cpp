@@ -20,8 +20,8 @@
 #include <string>
 #include <utility>
 
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/errors.hpp"
-#include "triangulation/angles_2d.hpp"
 #include "triangulation/cdt_phases_2d.hpp"
 #include "triangulation/cdt_state_2d.hpp"
 
@@ -110,7 +110,7 @@ CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
         const VertIdx u = cdt.mesh.origin(e), v = cdt.mesh.destination(e);
         const Sign side = cdt.core.orient(u, v, p);
         if (cdt.segment_of[e] != kNone) {
-            if (side != Sign::Positive || corner_dot_sign(cdt.mesh.point(p), cdt.mesh.point(u),
+            if (side != Sign::Positive || predicates::corner_dot_sign(cdt.mesh.point(p), cdt.mesh.point(u),
                                                           cdt.mesh.point(v)) != Sign::Positive) {
                 cdt.encroached_edges.push_back(e);
             }

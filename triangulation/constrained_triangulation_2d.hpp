@@ -15,7 +15,7 @@
 // by the infinite vertex), every edge not constrained locally Delaunay (exact incircle with the
 // shared symbolic perturbation), every piece of every segment a constrained edge (chains, with
 // split points within rounding of their segment). Predicates: orient2d, incircle (SoS), and the
-// exact diametral-circle test corner_dot_sign (angles_2d.hpp).
+// exact diametral-circle test corner_dot_sign (predicates/angle_comparisons_2d.hpp).
 #pragma once
 
 #include <array>

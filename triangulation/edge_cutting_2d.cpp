@@ -33,9 +33,9 @@
 #include <utility>
 #include <vector>
 
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
-#include "triangulation/angles_2d.hpp"
 #include "triangulation/bowyer_watson_2d.hpp"
 #include "triangulation/flip_2d.hpp"
 
@@ -43,6 +43,10 @@ namespace exactmesh::triangulation {
 
 namespace {
 
+using predicates::compare_angles;
+using predicates::compare_lengths;
+using predicates::Corner;
+using predicates::largest_corner;
 using predicates::orient2d;
 using predicates::Sign;
 

@@ -15,7 +15,7 @@
 // Cost: O(n) per candidate, so O(n^2) per largest-angle triangle in the worst case (the paper
 // narrows the candidates to reach O(n log n) per step; every candidate is tried here).
 // Constrained edges are never crossed, which gives the optimum among triangulations keeping
-// them (the cut lemma holds there too). All angle decisions are exact (angles_2d.hpp).
+// them (the cut lemma holds there too). All angle decisions are exact (angle_comparisons_2d).
 #pragma once
 
 #include <array>

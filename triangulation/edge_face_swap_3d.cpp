@@ -22,22 +22,28 @@
 //    vectors agree, and the old one has more entries equal to m, where the new one has a larger
 //    entry (it has at least one more entry past them: a swap creates two or more tetrahedra).
 //  - MinMaxDihedral: symmetrically, the decreasingly sorted vector of largest angles decreases.
-// Comparisons are exact (angles_3d), so "strictly" holds for the real angles.
+// Comparisons are exact (angle_comparisons_3d), so "strictly" holds for the real angles.
 #include "triangulation/edge_face_swap_3d.hpp"
 
 #include <array>
 #include <deque>
 #include <string>
 
+#include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/sos.hpp"
-#include "triangulation/angles_3d.hpp"
 
 namespace exactmesh::triangulation {
 
 namespace {
 
+using predicates::compare_dihedral;
+using predicates::compare_volume_edge;
+using predicates::Dihedral;
+using predicates::largest_dihedral;
 using predicates::Sign;
+using predicates::smallest_dihedral;
+using predicates::TetCorners;
 
 using FlipPlan = FlipPlan3;
 

@@ -17,7 +17,7 @@
 //    it can stall (a face not locally Delaunay with no valid swap: proofs/invariants/
 //    edge_face_swapping_3d.md and the fixed instance in the tests). Ties broken by index (SoS).
 //  - MaxMinDihedral / MinMaxDihedral: the smallest (largest) dihedral angle among the new
-//    tetrahedra is strictly larger (smaller) than among the old ones (exact, angles_3d).
+//    tetrahedra is strictly larger (smaller) than among the old ones (exact, angle_comparisons_3d).
 //  - VolumeEdge: the smallest volume-edge quality among the new tetrahedra is strictly larger.
 // Termination of each criterion: proofs/invariants/edge_face_swapping_3d.md (and the .cpp).
 // Works on any tetrahedralization (convex hull or not): the domain and its boundary never change.

@@ -53,12 +53,12 @@
 #include <utility>
 #include <vector>
 
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
-#include "triangulation/angles_2d.hpp"
 #include "triangulation/delaunay_2d.hpp"
 #include "triangulation/flip_2d.hpp"
 
@@ -66,7 +66,12 @@ namespace exactmesh::triangulation {
 
 namespace {
 
+using predicates::compare_angles;
+using predicates::compare_lengths;
+using predicates::Corner;
+using predicates::largest_corner;
 using predicates::Sign;
+using predicates::smallest_corner;
 
 /// The quadrilateral of an interior half-edge e = a -> b of (a, b, c); its twin f lies in
 /// (b, a, d).

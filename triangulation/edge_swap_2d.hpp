@@ -8,7 +8,7 @@
 //    delaunay_2d), so from any triangulation of a point set it reaches exactly the triangulation
 //    delaunay_2d builds, cocircular points included.
 //  - MaxMinAngle / MinMaxAngle: the smallest (largest) of the six angles strictly increases
-//    (decreases), compared exactly (angles_2d.hpp).
+//    (decreases), compared exactly (predicates/angle_comparisons_2d.hpp).
 //  - MinTotalLength: the new diagonal is strictly shorter (exact).
 //  - DataDependent: Dyn, Levin and Rippa's data-dependent criteria for piecewise-linear
 //    interpolation [DynLevinRippa90: "Data dependent triangulations for piecewise linear

@@ -6,10 +6,15 @@
 #include <cmath>
 #include <string>
 
+#include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/errors.hpp"
-#include "triangulation/angles_3d.hpp"
 
 namespace exactmesh::triangulation {
+
+using predicates::Dihedral;
+using predicates::dihedral_radians;
+using predicates::TetCorners;
+using predicates::volume_edge_quality;
 
 namespace {
 

@@ -395,6 +395,39 @@ int difference_exponent(double p, double q) {
     return exponent_of(0.5 * p - 0.5 * q) + 1;
 }
 
+/// Bounds of the gift-wrapping search in double precision; none is a filter of predicates/.
+/// Two groups:
+/// - Prune-only (never deciding a sign): cells, k-d boxes and the lens are skipped when they lie
+///   certainly right of ab or certainly outside the current circle (a skipped region holds no
+///   better candidate); the bounds overestimate the rounding of those tests.
+/// - Candidate bounds (the circle's slack, kCertainRelative, kCertainSquares, kPowerRelative):
+///   these DO stand in for a predicate. A candidate certainly outside the current circle is
+///   dropped, and one certainly inside (and left of ab by the exact orient2d) is taken, without
+///   an incircle call; both are what the exact incircle would say when the bounds hold, but the
+///   bounds are hand-derived (comments at Circle and circle()), not Gappa-proven (issue 12).
+// Prune-only.
+constexpr double kBoxCrossRelative = 0x1p-48;     ///< cross product of a box corner with fb
+constexpr double kBoxCrossUnderflow = 0x1p-1066;  ///< its underflow share
+constexpr double kPowerBoxSize = 0x1p-20;         ///< boxes below this times r get the power test
+constexpr double kTinySpan = 0x1p-900;            ///< spans whose frame offsets may underflow
+constexpr double kSquareRelative = 0x1p-48;       ///< rounding of squared cell distances, chords
+constexpr double kPositionRelative = 0x1p-51;     ///< rounding of an absolute centre position
+constexpr double kGridAbsolute = 1e-14;       ///< absolute error in grid units (coordinates < 1)
+constexpr double kCellRelative = 1e-9;        ///< error of cell boundaries, per cell size
+constexpr double kGridUnderflow = 0x1p-1070;  ///< underflow of a and b in grid units
+// Candidate bounds and the circle's error (circle()).
+constexpr double kDoubleCentreMinSine = 1e-4;  ///< sin(angle at a) above which the centre is double
+constexpr double kDoubleCentreRange = 0x1p600;   ///< |c - a|^2 range of the double centre
+constexpr double kDoubleCentreSlack = 1e-8;      ///< slack of the double centre, per r
+constexpr double kRoundedCentreSlack = 0x1p-48;  ///< slack of the rounded centre, per r
+constexpr double kFrameUnderflow = 0x1p-1073;    ///< a coordinate's underflow, per frame unit
+constexpr double kCircleAbsolute = 0x1p-1000;    ///< products' underflow, absolute or per r
+constexpr double kLargestRadius = 0x1p400;       ///< larger circles go to the exact predicates
+constexpr double kCertainRelative = 0x1p-50;     ///< distance rounding of the certain tests
+constexpr double kCertainSquares = 0x1p-40;      ///< rounding of dist2 and the squared bounds
+constexpr double kSmallestInner = 0x1p-400;      ///< smallest inner radius squared
+constexpr double kPowerRelative = 0x1p-46;       ///< the power's relative rounding
+
 /// The circle through a, b and the current best third vertex, relative to a: centre
 /// a + (ux, uy), radius r; `slack` bounds the error of the centre and of r (at least twice the
 /// centre's error sigma); `absolute` is the part of the centre's error not relative to r.
@@ -566,8 +599,8 @@ private:
         // underflow (a component of fb that underflowed to zero included); |fb|_1 <= 16.
         const double px = fby_ < 0 ? x1 : x0, py = fbx_ > 0 ? y1 : y0;
         const double reach = std::fabs(x0) + std::fabs(x1) + std::fabs(y0) + std::fabs(y1);
-        const double tolerance =
-            0x1p-48 * (std::fabs(fbx_) + std::fabs(fby_)) * reach + 0x1p-1066 * (16 + reach);
+        const double tolerance = kBoxCrossRelative * (std::fabs(fbx_) + std::fabs(fby_)) * reach +
+                                 kBoxCrossUnderflow * (16 + reach);
         if (fbx_ * py - fby_ * px < -tolerance) return false;
         if (!circle_.bounded) return true;
         const Circle& c = circle_;
@@ -579,7 +612,7 @@ private:
         // edge from a far point to a cluster, whose circle passes through the cluster as a
         // straight line would). A box not that small is resolved by the distance test above
         // as well as by this one (to about the slack, 1e-8 r), so it is spared the cost.
-        if (!((x1 - x0) + (y1 - y0) < 0x1p-20 * c.r)) return true;
+        if (!((x1 - x0) + (y1 - y0) < kPowerBoxSize * c.r)) return true;
         for (unsigned from = 0; from < 3; ++from) {
             const OnCircle o = on_circle(from);
             const double px0 = k.lo_x * frame_ - o.x, px1 = k.hi_x * frame_ - o.x;
@@ -590,8 +623,9 @@ private:
             const double power =
                 2 * ((cx > 0 ? px1 : px0) * cx + (cy > 0 ? py1 : py0) * cy) - (mx * mx + my * my);
             const double span = std::fabs(px0) + std::fabs(px1) + std::fabs(py0) + std::fabs(py1);
-            if (power < -(span * (c.power_slack + 0x1p-46 * span) + c.power_absolute)) return false;
-            if (span < 0x1p-900) {
+            if (power < -(span * (c.power_slack + kPowerRelative * span) + c.power_absolute))
+                return false;
+            if (span < kTinySpan) {
                 // A box near this point, far below the edge's length: its offsets may have
                 // underflowed in the frame; the same test from input coordinates.
                 const ScaledPower scaled = scaled_power(from, k.lo_x, k.hi_x, k.lo_y, k.hi_y);
@@ -629,7 +663,7 @@ private:
             const double power = 2 * (vx * o.centre_x + vy * o.centre_y) - (vx * vx + vy * vy);
             const double reach = std::fabs(vx) + std::fabs(vy);
             const double bound =
-                reach * (circle_.power_slack + 0x1p-46 * reach) + circle_.power_absolute;
+                reach * (circle_.power_slack + kPowerRelative * reach) + circle_.power_absolute;
             if (power < -bound) return -1;
             if (power > bound) return 1;
         }
@@ -673,8 +707,8 @@ private:
             2 * ((cx > 0 ? vx1 : vx0) * cx + (cy > 0 ? vy1 : vy0) * cy) - (mx * mx + my * my) * rho;
         const double span =
             std::max(std::fabs(vx0), std::fabs(vx1)) + std::max(std::fabs(vy0), std::fabs(vy1));
-        return {value,
-                span * (circle_.power_slack + 0x1p-46 * rho * span) + circle_.power_absolute};
+        return {value, span * (circle_.power_slack + kPowerRelative * rho * span) +
+                           circle_.power_absolute};
     }
 
     /// The cells of the square ring at Chebyshev distance r from (i0, j0) that lie in the
@@ -711,7 +745,7 @@ private:
             const double dx = c.ox < x0 ? x0 - c.ox : (c.ox > x1 ? c.ox - x1 : 0.0);
             const double dy = c.oy < y0 ? y0 - c.oy : (c.oy > y1 ? c.oy - y1 : 0.0);
             const double radius = c.r + c.widen;
-            if (dx * dx + dy * dy > radius * radius * (1 + 0x1p-48)) return;
+            if (dx * dx + dy * dy > radius * radius * (1 + kSquareRelative)) return;
             // The corner farthest left of ab.
             const double ex = bx_ - ax_, ey = by_ - ay_;
             const double px = (ey < 0 ? x1 : x0) - ax_, py = (ex > 0 ? y1 : y0) - ay_;
@@ -786,16 +820,17 @@ private:
         // a few units in the last place, under 1e-14) and of the cell boundaries.
         c.ox = ax_ + c.ux;
         c.oy = ay_ + c.uy;
-        c.widen = 2 * c.slack + 2 * c.absolute + 0x1p-51 * (std::fabs(c.ox) + std::fabs(c.oy)) +
-                  1e-14 + 1e-9 * layout_.cell;
+        c.widen = 2 * c.slack + 2 * c.absolute +
+                  kPositionRelative * (std::fabs(c.ox) + std::fabs(c.oy)) + kGridAbsolute +
+                  kCellRelative * layout_.cell;
         const double ex = bx_ - ax_, ey = by_ - ay_;
         // A double cross product (b - a) x (p - a) for p within `widen` of where it is
         // computed: the shift plus a relative rounding error far above the true one, plus the
         // underflow of a and b in grid units (2^-1075 per coordinate, which can turn the
         // direction of a very short edge around; points p here lie within 4 + r + widen + cell).
         c.tolerance =
-            (2 * c.widen + 1e-9 * (c.r + layout_.cell)) * (std::fabs(ex) + std::fabs(ey)) +
-            0x1p-1070 * (4 + c.r + c.widen + layout_.cell);
+            (2 * c.widen + kCellRelative * (c.r + layout_.cell)) * (std::fabs(ex) + std::fabs(ey)) +
+            kGridUnderflow * (4 + c.r + c.widen + layout_.cell);
         double lo_x = std::min(ax_, bx_), hi_x = std::max(ax_, bx_);
         double lo_y = std::min(ay_, by_), hi_y = std::max(ay_, by_);
         auto maybe_left = [&](double px, double py) { return ex * py - ey * px > -c.tolerance; };
@@ -812,10 +847,10 @@ private:
         hi_x = std::min({hi_x, layout_.min_x + (hi_i_ + 1.0) * cell, layout_.max_x}) + w;
         lo_y = std::max({lo_y, layout_.min_y + lo_j_ * cell, layout_.min_y}) - w;
         hi_y = std::min({hi_y, layout_.min_y + (hi_j_ + 1.0) * cell, layout_.max_y}) + w;
-        const double radius2 = (c.r + w) * (c.r + w) * (1 + 0x1p-48);
+        const double radius2 = (c.r + w) * (c.r + w) * (1 + kSquareRelative);
         auto half_chord = [radius2](double offset) {  // >= the true half chord at that offset
-            return std::sqrt(std::max(0.0, radius2 - offset * offset * (1 - 0x1p-48))) *
-                   (1 + 0x1p-48);
+            return std::sqrt(std::max(0.0, radius2 - offset * offset * (1 - kSquareRelative))) *
+                   (1 + kSquareRelative);
         };
         auto distance = [](double value, double lo, double hi) {
             return value < lo ? lo - value : (value > hi ? value - hi : 0.0);
@@ -847,7 +882,8 @@ private:
         const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
         Circle out;
         double absolute = 0;  // error of the centre not relative to r
-        if (std::fabs(det) > 1e-4 * std::sqrt(b2 * c2) && c2 > 0x1p-600 && c2 < 0x1p600) {
+        if (std::fabs(det) > kDoubleCentreMinSine * std::sqrt(b2 * c2) &&
+            c2 > 1 / kDoubleCentreRange && c2 < kDoubleCentreRange) {
             out.ux = (cy * b2 - by * c2) / det;
             out.uy = (bx * c2 - cx * b2) / det;
         } else {
@@ -858,8 +894,8 @@ private:
                 out.uy = oy - fay_;
                 // The centre's rounding (2^-53 relative, or 2^-1075 if subnormal, times the
                 // frame) and the underflow of the products.
-                absolute =
-                    0x1p-51 * (std::fabs(ox) + std::fabs(oy)) + 0x1p-1073 * frame_ + 0x1p-1000;
+                absolute = kPositionRelative * (std::fabs(ox) + std::fabs(oy)) +
+                           kFrameUnderflow * frame_ + kCircleAbsolute;
             } catch (const GeometryError&) {
                 return out;
             }
@@ -868,21 +904,22 @@ private:
         // The double centre: 1e-8 r. The correctly rounded one: its absolute rounding, and
         // a few units in the last place of r for forming u and r. Either way 2^-1000 covers
         // the underflow of the frame's products (2^-1075 each), and r >= |b - a| / 2 >= 2^-53.
-        out.slack = (absolute > 0 ? 0x1p-48 : 1e-8) * r + 2 * absolute + 0x1p-1000;
+        out.slack = (absolute > 0 ? kRoundedCentreSlack : kDoubleCentreSlack) * r + 2 * absolute +
+                    kCircleAbsolute;
         out.r = r;
         // Beyond 2^400 (three points collinear to 2^-400 or so) the squares would overflow:
         // such a circle, or a non-finite one, is left to the exact predicates.
-        if (!(r <= 0x1p400) || !(out.slack <= 0x1p401)) return out;
+        if (!(r <= kLargestRadius) || !(out.slack <= 2 * kLargestRadius)) return out;
         // Certainly outside: |e| > r + slack + 2^-53 (|e| + r); certainly inside: |e| below
         // r - slack - 2^-53 (|e| + r). The factors on the squares cover the rounding of dist2
         // and of these bounds, and (r and the inner bound being above 2^-400) its underflow.
         // The power's bound: see Circle (the slack is at least twice sigma).
-        const double outer = r * (1 + 0x1p-50) + out.slack;
-        const double inner = r * (1 - 0x1p-50) - out.slack;
-        out.outer2 = outer * outer * (1 + 0x1p-40);
-        out.inner2 = inner > 0x1p-400 ? inner * inner * (1 - 0x1p-40) : -1.0;
-        out.power_slack = 2 * out.slack + 0x1p-46 * r;
-        out.power_absolute = 0x1p-1000 * r;
+        const double outer = r * (1 + kCertainRelative) + out.slack;
+        const double inner = r * (1 - kCertainRelative) - out.slack;
+        out.outer2 = outer * outer * (1 + kCertainSquares);
+        out.inner2 = inner > kSmallestInner ? inner * inner * (1 - kCertainSquares) : -1.0;
+        out.power_slack = 2 * out.slack + kPowerRelative * r;
+        out.power_absolute = kCircleAbsolute * r;
         out.absolute = absolute;
         out.bounded = true;
         return out;

@@ -4,7 +4,7 @@
 // non-crossing segments [a triangulation is exactly a maximal plane straight-line graph on the
 // points; de Berg et al., Computational Geometry, Thm 9.1], and the min-max angle over all of
 // them is found with exact rational arithmetic (GMP, predicates/exact_reference). Shares no
-// code with edge_swap_2d, edge_cutting_2d or angles_2d. Test-grade: exponential in n.
+// code with edge_swap_2d, edge_cutting_2d or angle_comparisons_2d. Test-grade: exponential in n.
 #pragma once
 
 #include <gmpxx.h>

@@ -16,6 +16,7 @@
 
 #include "generators/mesh_generators_2d.hpp"
 #include "predicates/errors.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
 #include "tests/support/fuzz_replay_2d.hpp"
 #include "triangulation/check_conforming_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
@@ -52,21 +53,21 @@ TEST(Issue11, issue_11_bend_rule) {
     // 0) progresses; the same at 2^600 times the coordinates; a vertex 2^-30 off does not.
     const double w[2] = {0x0.000000000c008p-1022, 0x0.0000040000008p-1022};
     const double s0[2] = {0, 0}, s1[2] = {1, 0};
-    EXPECT_FALSE(tri::within_rounding_of_segment(w, s0, s1));
+    EXPECT_FALSE(exactmesh::predicates::within_rounding_of_segment(w, s0, s1));
     const double k = std::ldexp(1.0, 600);
     const double ws[2] = {w[0] * k, w[1] * k}, s1s[2] = {k, 0};
-    EXPECT_FALSE(tri::within_rounding_of_segment(ws, s0, s1s));
+    EXPECT_FALSE(exactmesh::predicates::within_rounding_of_segment(ws, s0, s1s));
     const double close[2] = {0.5, std::ldexp(1.0, -51)},
                  closes[2] = {0.5 * k, std::ldexp(1.0, -51) * k};
-    EXPECT_TRUE(tri::within_rounding_of_segment(close, s0, s1));
-    EXPECT_TRUE(tri::within_rounding_of_segment(closes, s0, s1s));
+    EXPECT_TRUE(exactmesh::predicates::within_rounding_of_segment(close, s0, s1));
+    EXPECT_TRUE(exactmesh::predicates::within_rounding_of_segment(closes, s0, s1s));
     const double far[2] = {0.5, std::ldexp(1.0, -30)},
                  fars[2] = {0.5 * k, std::ldexp(1.0, -30) * k};
-    EXPECT_FALSE(tri::within_rounding_of_segment(far, s0, s1));
-    EXPECT_FALSE(tri::within_rounding_of_segment(fars, s0, s1s));
+    EXPECT_FALSE(exactmesh::predicates::within_rounding_of_segment(far, s0, s1));
+    EXPECT_FALSE(exactmesh::predicates::within_rounding_of_segment(fars, s0, s1s));
     // Beyond the segment's ends (on its line) is not within rounding of the segment.
     const double beyond[2] = {1.5, 0};
-    EXPECT_FALSE(tri::within_rounding_of_segment(beyond, s0, s1));
+    EXPECT_FALSE(exactmesh::predicates::within_rounding_of_segment(beyond, s0, s1));
 }
 
 TEST(Issue11, issue_11_refinement_unsplittable_is_fast) {

@@ -8,12 +8,16 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <string>
 
+#include "predicates/angle_comparisons_2d.hpp"
+#include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/stats.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
 
 namespace pr = exactmesh::predicates;
 
@@ -90,6 +94,57 @@ void exercise_all_stages() {
     EXPECT_GT(c.gmp, 0u) << "1e300 beside 0.1 spans more than the expansion-safe range";
 }
 
+/// The comparisons of angle_comparisons_2d/3d and within_rounding_of_segment: random calls (the
+/// filters), integer ties (exact stages), 2^-600-scaled ones (scaled back into the window) and
+/// 1e-300 beside 1e300 (GMP).
+[[maybe_unused]] void exercise_comparisons() {
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const double spans[4] = {1.0, 0.0, 0x1p-600, 0.0};
+    for (int n = 0; n < 400; ++n) {
+        double p[8][3];
+        for (auto& q : p) {
+            for (double& x : q) x = unit(rng);
+        }
+        const int kind = n % 4;
+        if (kind == 1) {
+            for (auto& q : p) {
+                for (double& x : q) x = static_cast<double>(static_cast<int>(4 * x));
+            }
+        } else if (kind == 2) {
+            for (auto& q : p) {
+                for (double& x : q) x *= spans[2];
+            }
+        } else if (kind == 3) {
+            p[0][0] = 1e300;
+            p[1][1] = 1e-300;
+        }
+        const pr::Corner a{p[0], p[1], p[2]}, b{p[3], p[4], p[5]};
+        pr::compare_angles(a, b);
+        pr::compare_lengths(p[0], p[1], p[2], p[3]);
+        pr::corner_dot_sign(p[0], p[1], p[2]);
+        pr::direction_dot_sign(p[0], p[1], p[2], p[3]);
+        pr::within_rounding_of_segment(p[0], p[1], p[2]);
+        const pr::TetCorners s{p[0], p[1], p[2], p[3]}, t{p[4], p[5], p[6], p[7]};
+        pr::compare_dihedral({s, 0, 1}, {t, 2, 3});
+        pr::compare_volume_edge(s, t);
+    }
+}
+
+[[maybe_unused]] void expect_sum(const char* name, const pr::StageCounts& c) {
+    SCOPED_TRACE(name);
+    EXPECT_EQ(c.calls, 400u);
+    EXPECT_EQ(c.calls, stage_sum(c));
+    EXPECT_GT(c.filter, 0u);
+    // 1e300 beside 1e-300: GMP, but for direction_dot_sign, whose long double stage (counted as
+    // adaptive) decides such spans.
+    if (std::string(name) == "direction_dot_sign") {
+        EXPECT_GT(c.adaptive, 0u);
+    } else {
+        EXPECT_GT(c.gmp, 0u) << "1e300 beside 1e-300";
+    }
+}
+
 }  // namespace
 
 // Each build registers the test that means something in it, so neither skips: scripts/test
@@ -104,6 +159,19 @@ TEST(Predicates_Stats, CallsEqualTheSumOfStageCountsAndDegenerateInputsReachExac
     expect_consistent("incircle", s.incircle);
     expect_consistent("orient3d", s.orient3d);
     expect_consistent("insphere", s.insphere);
+    pr::reset_thread_stats();
+    exercise_comparisons();
+    const pr::PredicateStats c = pr::thread_stats();
+    expect_sum("compare_angles", c.compare_angles);
+    expect_sum("compare_lengths", c.compare_lengths);
+    expect_sum("corner_dot_sign", c.corner_dot_sign);
+    expect_sum("direction_dot_sign", c.direction_dot_sign);
+    expect_sum("compare_dihedral", c.compare_dihedral);
+    expect_sum("compare_volume_edge", c.compare_volume_edge);
+    EXPECT_EQ(c.within_rounding_of_segment.calls, 400u);
+    EXPECT_EQ(c.within_rounding_of_segment.calls, stage_sum(c.within_rounding_of_segment));
+    EXPECT_GT(c.compare_angles.rescaled, 0u) << "2^-600 coordinates are scaled back";
+    EXPECT_GT(c.corner_dot_sign.exact_differences, 0u) << "integer ties";
     pr::reset_thread_stats();
     EXPECT_EQ(pr::thread_stats().orient2d.calls, 0u);
 }

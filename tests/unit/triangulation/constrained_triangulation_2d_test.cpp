@@ -14,9 +14,9 @@
 
 #include <gmpxx.h>
 
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/errors.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
-#include "triangulation/angles_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d.hpp"
 #include "triangulation/constrained_triangulation_2d.hpp"
@@ -211,10 +211,10 @@ TEST(ConstrainedTriangulation2, CornerDotSignIsExactNearRightAngles) {
     // sums of products that cancel exactly, far below the filter's reach.
     const double p[2] = {0, 0}, q[2] = {4, 0};
     const double o[2] = {2, 2};
-    EXPECT_EQ(tri::corner_dot_sign(o, p, q), em::predicates::Sign::Zero);
+    EXPECT_EQ(em::predicates::corner_dot_sign(o, p, q), em::predicates::Sign::Zero);
     const double inside[2] = {2, std::nextafter(2.0, 0.0)}, outside[2] = {2, std::nextafter(2.0, 3.0)};
-    EXPECT_EQ(tri::corner_dot_sign(inside, p, q), em::predicates::Sign::Negative);
-    EXPECT_EQ(tri::corner_dot_sign(outside, p, q), em::predicates::Sign::Positive);
+    EXPECT_EQ(em::predicates::corner_dot_sign(inside, p, q), em::predicates::Sign::Negative);
+    EXPECT_EQ(em::predicates::corner_dot_sign(outside, p, q), em::predicates::Sign::Positive);
     // Large offsets: differences not exact in double (GMP stage), against a GMP oracle.
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -227,6 +227,6 @@ TEST(ConstrainedTriangulation2, CornerDotSignIsExactNearRightAngles) {
         const mpq_class ux = mpq_class(a[0]) - mpq_class(c[0]), uy = mpq_class(a[1]) - mpq_class(c[1]);
         const mpq_class vx = mpq_class(b[0]) - mpq_class(c[0]), vy = mpq_class(b[1]) - mpq_class(c[1]);
         const int expected = sgn(ux * vx + uy * vy);
-        EXPECT_EQ(static_cast<int>(tri::corner_dot_sign(c, a, b)), expected) << k;
+        EXPECT_EQ(static_cast<int>(em::predicates::corner_dot_sign(c, a, b)), expected) << k;
     }
 }

@@ -13,12 +13,12 @@
 #include <random>
 #include <vector>
 
+#include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/errors.hpp"
 #include "predicates/orient3d.hpp"
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
 #include "tests/support/local_delaunay_3d.hpp"
 #include "tests/support/placing_tetrahedralization_3d.hpp"
-#include "triangulation/angles_3d.hpp"
 #include "triangulation/check_topology_3d.hpp"
 #include "triangulation/edge_face_swap_3d.hpp"
 
@@ -309,7 +309,7 @@ TEST(Triangulation_EdgeFaceSwap3, DelaunaySwappingCanStallShortOfDelaunay) {
 
 namespace {
 
-tri::TetCorners corners_of(const tri::Tetrahedralization3& mesh, std::size_t t) {
+em::predicates::TetCorners corners_of(const tri::Tetrahedralization3& mesh, std::size_t t) {
     return {mesh.point(mesh.tets[4 * t]), mesh.point(mesh.tets[4 * t + 1]), mesh.point(mesh.tets[4 * t + 2]),
             mesh.point(mesh.tets[4 * t + 3])};
 }
@@ -321,32 +321,36 @@ int lexicographic_progress(const tri::Tetrahedralization3& before, const tri::Te
     // Per tetrahedron: its worst angle or its quality; sorted worst first; compared in order.
     if (criterion == tri::SwapCriterion3::VolumeEdge) {
         auto sorted = [](const tri::Tetrahedralization3& m) {
-            std::vector<tri::TetCorners> v;
+            std::vector<em::predicates::TetCorners> v;
             for (std::size_t t = 0; t < m.tet_count(); ++t) v.push_back(corners_of(m, t));
-            std::sort(v.begin(), v.end(), [](const auto& x, const auto& y) { return tri::compare_volume_edge(x, y) == Sign::Negative; });
+            std::sort(v.begin(), v.end(), [](const auto& x, const auto& y) {
+                return em::predicates::compare_volume_edge(x, y) == Sign::Negative;
+            });
             return v;
         };
         const auto x = sorted(before), y = sorted(after);
         for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i) {
-            const Sign s = tri::compare_volume_edge(y[i], x[i]);
+            const Sign s = em::predicates::compare_volume_edge(y[i], x[i]);
             if (s != Sign::Zero) return em::predicates::to_int(s);
         }
         return x.size() == y.size() ? 0 : (y.size() > x.size() ? 1 : -1);
     }
     const bool min = criterion == tri::SwapCriterion3::MaxMinDihedral;
     auto sorted = [&](const tri::Tetrahedralization3& m) {
-        std::vector<tri::Dihedral> v;
+        std::vector<em::predicates::Dihedral> v;
         for (std::size_t t = 0; t < m.tet_count(); ++t) {
-            v.push_back(min ? tri::smallest_dihedral(corners_of(m, t)) : tri::largest_dihedral(corners_of(m, t)));
+            v.push_back(min ? em::predicates::smallest_dihedral(corners_of(m, t))
+                            : em::predicates::largest_dihedral(corners_of(m, t)));
         }
         std::sort(v.begin(), v.end(), [&](const auto& a, const auto& b) {
-            return tri::compare_dihedral(a, b) == (min ? Sign::Negative : Sign::Positive);
+            return em::predicates::compare_dihedral(a, b) ==
+                   (min ? Sign::Negative : Sign::Positive);
         });
         return v;
     };
     const auto x = sorted(before), y = sorted(after);
     for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i) {
-        const Sign s = tri::compare_dihedral(y[i], x[i]);
+        const Sign s = em::predicates::compare_dihedral(y[i], x[i]);
         if (s != Sign::Zero) return em::predicates::to_int(min ? s : -s);
     }
     return x.size() == y.size() ? 0 : (y.size() > x.size() ? 1 : -1);

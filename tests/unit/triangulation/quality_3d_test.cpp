@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Exact dihedral and volume-edge comparisons (angles_3d) against GMP-free long double values on
+// Dihedral and volume-edge comparisons (angle_comparisons_3d) vs GMP-free long double values on
 // well-separated cases, exact ties and the GMP path outside the filter window; quality
 // statistics (quality_3d) on tetrahedra with known angles: regular, cube corner, sliver, cap.
 #include <gtest/gtest.h>
@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
+#include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/errors.hpp"
-#include "triangulation/angles_3d.hpp"
 #include "triangulation/quality_3d.hpp"
 
 namespace em = exactmesh;
@@ -33,18 +33,20 @@ constexpr double kRad = 180.0 / 3.14159265358979323846;
 TEST(Triangulation_Angles3, CubeCornerTiesAreExactAndOrderIsRight) {
     // (0,0,0), (1,0,0), (0,1,0), (0,0,1) is negatively oriented; swap two to make it positive.
     const double p0[3] = {0, 0, 0}, p1[3] = {0, 1, 0}, p2[3] = {1, 0, 0}, p3[3] = {0, 0, 1};
-    const tri::TetCorners t{p0, p1, p2, p3};
+    const em::predicates::TetCorners t{p0, p1, p2, p3};
     // The three edges at the corner meet at right angles; the other three at acos(1/sqrt 3).
-    EXPECT_EQ(tri::compare_dihedral({t, 0, 1}, {t, 0, 2}), Sign::Zero);
-    EXPECT_EQ(tri::compare_dihedral({t, 0, 2}, {t, 0, 3}), Sign::Zero);
-    EXPECT_EQ(tri::compare_dihedral({t, 1, 2}, {t, 0, 1}), Sign::Negative);
-    EXPECT_EQ(tri::compare_dihedral({t, 0, 1}, {t, 2, 3}), Sign::Positive);
-    EXPECT_NEAR(static_cast<double>(tri::dihedral_radians({t, 0, 1})) * kRad, 90.0, 1e-12);
-    EXPECT_NEAR(static_cast<double>(tri::dihedral_radians({t, 1, 2})) * kRad, std::acos(1 / std::sqrt(3.0)) * kRad, 1e-12);
-    const tri::Dihedral smallest = tri::smallest_dihedral(t);
-    EXPECT_EQ(tri::compare_dihedral(smallest, {t, 1, 2}), Sign::Zero);
-    const tri::Dihedral largest = tri::largest_dihedral(t);
-    EXPECT_EQ(tri::compare_dihedral(largest, {t, 0, 1}), Sign::Zero);
+    EXPECT_EQ(em::predicates::compare_dihedral({t, 0, 1}, {t, 0, 2}), Sign::Zero);
+    EXPECT_EQ(em::predicates::compare_dihedral({t, 0, 2}, {t, 0, 3}), Sign::Zero);
+    EXPECT_EQ(em::predicates::compare_dihedral({t, 1, 2}, {t, 0, 1}), Sign::Negative);
+    EXPECT_EQ(em::predicates::compare_dihedral({t, 0, 1}, {t, 2, 3}), Sign::Positive);
+    EXPECT_NEAR(static_cast<double>(em::predicates::dihedral_radians({t, 0, 1})) * kRad, 90.0,
+                1e-12);
+    EXPECT_NEAR(static_cast<double>(em::predicates::dihedral_radians({t, 1, 2})) * kRad,
+                std::acos(1 / std::sqrt(3.0)) * kRad, 1e-12);
+    const em::predicates::Dihedral smallest = em::predicates::smallest_dihedral(t);
+    EXPECT_EQ(em::predicates::compare_dihedral(smallest, {t, 1, 2}), Sign::Zero);
+    const em::predicates::Dihedral largest = em::predicates::largest_dihedral(t);
+    EXPECT_EQ(em::predicates::compare_dihedral(largest, {t, 0, 1}), Sign::Zero);
 }
 
 TEST(Triangulation_Angles3, AgreesWithRoundedAnglesWhenWellSeparatedAndIsAntisymmetric) {
@@ -68,20 +70,23 @@ TEST(Triangulation_Angles3, AgreesWithRoundedAnglesWhenWellSeparatedAndIsAntisym
         };
         if (orient(c) < 0) std::swap(c[0], c[1]);
         if (orient(c + 4) < 0) std::swap(c[4], c[5]);
-        const tri::TetCorners a{c[0], c[1], c[2], c[3]}, b{c[4], c[5], c[6], c[7]};
-        const tri::Dihedral x{a, static_cast<unsigned>(i % 4), static_cast<unsigned>((i % 4 + 1 + i % 3) % 4)};
-        const tri::Dihedral y{b, 1, 3};
+        const em::predicates::TetCorners a{c[0], c[1], c[2], c[3]}, b{c[4], c[5], c[6], c[7]};
+        const em::predicates::Dihedral x{a, static_cast<unsigned>(i % 4),
+                                         static_cast<unsigned>((i % 4 + 1 + i % 3) % 4)};
+        const em::predicates::Dihedral y{b, 1, 3};
         if (x.i == x.j) continue;
-        const double dx = static_cast<double>(tri::dihedral_radians(x)), dy = static_cast<double>(tri::dihedral_radians(y));
-        const Sign s = tri::compare_dihedral(x, y);
-        EXPECT_EQ(s, -tri::compare_dihedral(y, x));
+        const double dx = static_cast<double>(em::predicates::dihedral_radians(x)),
+                     dy = static_cast<double>(em::predicates::dihedral_radians(y));
+        const Sign s = em::predicates::compare_dihedral(x, y);
+        EXPECT_EQ(s, -em::predicates::compare_dihedral(y, x));
         if (std::fabs(dx - dy) > 1e-9) {
             EXPECT_EQ(s, dx < dy ? Sign::Negative : Sign::Positive);
             ++checked;
         }
-        const long double qa = tri::volume_edge_quality(a), qb = tri::volume_edge_quality(b);
-        const Sign q = tri::compare_volume_edge(a, b);
-        EXPECT_EQ(q, -tri::compare_volume_edge(b, a));
+        const long double qa = em::predicates::volume_edge_quality(a),
+                          qb = em::predicates::volume_edge_quality(b);
+        const Sign q = em::predicates::compare_volume_edge(a, b);
+        EXPECT_EQ(q, -em::predicates::compare_volume_edge(b, a));
         if (std::fabs(static_cast<double>(qa - qb)) > 1e-9) {
             EXPECT_EQ(q, qa < qb ? Sign::Negative : Sign::Positive);
         }
@@ -95,14 +100,15 @@ TEST(Triangulation_Angles3, OutsideTheFilterWindowTheExactPathDecides) {
     const double s = std::ldexp(1.0, 600);
     const double u0[3] = {0, 0, 0}, u1[3] = {0, 1, 0}, u2[3] = {1, 0, 0}, u3[3] = {0.3, 0.2, 1};
     const double b0[3] = {0, 0, 0}, b1[3] = {0, s, 0}, b2[3] = {s, 0, 0}, b3[3] = {0.3 * s, 0.2 * s, s};
-    const tri::TetCorners unit{u0, u1, u2, u3}, big{b0, b1, b2, b3};
+    const em::predicates::TetCorners unit{u0, u1, u2, u3}, big{b0, b1, b2, b3};
     for (unsigned i = 0; i < 4; ++i) {
         for (unsigned j = i + 1; j < 4; ++j) {
-            EXPECT_EQ(tri::compare_dihedral({unit, i, j}, {big, i, j}), Sign::Zero);
-            EXPECT_EQ(tri::compare_dihedral({unit, i, j}, {unit, 0, 1}), tri::compare_dihedral({big, i, j}, {big, 0, 1}));
+            EXPECT_EQ(em::predicates::compare_dihedral({unit, i, j}, {big, i, j}), Sign::Zero);
+            EXPECT_EQ(em::predicates::compare_dihedral({unit, i, j}, {unit, 0, 1}),
+                      em::predicates::compare_dihedral({big, i, j}, {big, 0, 1}));
         }
     }
-    EXPECT_EQ(tri::compare_volume_edge(unit, big), Sign::Zero);
+    EXPECT_EQ(em::predicates::compare_volume_edge(unit, big), Sign::Zero);
 }
 
 TEST(Triangulation_Quality3, RegularTetrahedronCubeCornerSliverAndCap) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Exact dihedral-angle and volume-edge comparisons (see angles_3d.hpp).
+// Exact dihedral-angle and volume-edge comparisons (see angle_comparisons_3d.hpp).
 //
 // Filter. Every polynomial is evaluated in long double (64-bit significand, u = 2^-64, exponent
 // range to 2^16383 on x86-64) from the coordinate differences, alongside its "magnitude": the
@@ -9,27 +9,33 @@
 // one). By the standard forward error analysis of sums of products [Higham, "Accuracy and
 // Stability of Numerical Algorithms", §3.1], |fl(E) - E| <= gamma_k M with M the exact
 // magnitude, and the computed magnitude is at least M (1 - u)^k (nonnegative terms only), so
-// |fl(E) - E| <= gamma_k / (1 - u)^k fl(M) <= (k + 1) u fl(M) for k <= 100; the filter
-// certifies the sign when |fl(E)| > 2 (k + 1) u fl(M) (the factor 2 absorbs the rounding of the
-// bound itself). The counts stay below 60 here.
+// |fl(E) - E| <= gamma_k / (1 - u)^k fl(M); the filter certifies the sign when
+// |fl(E)| > f (k + 1) u fl(M), f = angle_comparisons_3d_filter_factor, the least power of two for
+// which Gappa proves the per-monomial inequality, the rounding of the bound itself included, for
+// every k up to angle_comparisons_3d_filter_max_roundings = 64 (proofs/gappa/
+// angle_comparisons_3d_filter.g); above it the filter abstains. The counts stay below 50 here.
 // The window: every nonzero difference has magnitude in [2^-500, 2^500]. Then no operation
 // overflows (degree <= 16: below 2^8100 with every term count) and none underflows: a nonzero
 // sum of two long doubles is at least 2^-64 times the smaller operand, and the deepest
 // expression has fewer than 30 sums on any path, so every nonzero intermediate exceeds
 // 2^(-16*500 - 64*30) > 2^-10000, far above the smallest normal 2^-16382. Outside the window,
-// when long double is not the 80-bit format, or when the filter is inconclusive: GMP rationals.
-#include "triangulation/angles_3d.hpp"
+// the coordinates are scaled into it by one power of two when that is exact (both comparisons
+// are homogeneous) and filtered again; when long double is not the 80-bit format, or when the
+// filter is inconclusive: GMP rationals.
+#include "predicates/angle_comparisons_3d.hpp"
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
+#include "predicates/exact_range.hpp"
 #include "predicates/exact_reference.hpp"
+#include "predicates/filter_constants.hpp"
+#include "predicates/stats.hpp"
 
-namespace exactmesh::triangulation {
+namespace exactmesh::predicates {
 
 namespace {
-
-using predicates::Sign;
 
 constexpr bool kLongDoubleFilter = std::numeric_limits<long double>::digits >= 64 &&
                                    std::numeric_limits<long double>::max_exponent >= 16384;
@@ -57,7 +63,12 @@ Approx operator*(const Approx& a, const Approx& b) {
 /// The certified sign, or Zero with `certain` false when the filter cannot tell.
 Sign filtered_sign(const Approx& a, bool& certain) {
     if (a.magnitude == 0) return Sign::Zero;  // every monomial vanishes: exactly zero
-    const long double bound = 2 * static_cast<long double>(a.roundings + 1) * kUnit * a.magnitude;
+    if (a.roundings > angle_comparisons_3d_filter_max_roundings) {
+        certain = false;
+        return Sign::Zero;
+    }
+    const long double bound = angle_comparisons_3d_filter_factor *
+                              static_cast<long double>(a.roundings + 1) * kUnit * a.magnitude;
     if (a.value > bound) return Sign::Positive;
     if (a.value < -bound) return Sign::Negative;
     certain = false;
@@ -84,7 +95,9 @@ Vector3 difference(const double* p, const double* o, bool& in_window) {
 Vector3 cross(const Vector3& a, const Vector3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-Approx dot(const Vector3& a, const Vector3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Approx dot(const Vector3& a, const Vector3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 /// The pieces of a dihedral angle: d = n1 . n2 and N = |n1|^2 |n2|^2.
 struct DihedralTerms {
@@ -104,7 +117,7 @@ DihedralTerms dihedral_terms(const Dihedral& a, bool& in_window) {
     return {dot(n1, n2), dot(n1, n1) * dot(n2, n2)};
 }
 
-using predicates::reference::exact;
+using reference::exact;
 
 struct ExactVector {
     mpq_class x, y, z;
@@ -115,7 +128,9 @@ ExactVector exact_difference(const double* p, const double* o) {
 ExactVector exact_cross(const ExactVector& a, const ExactVector& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-mpq_class exact_dot(const ExactVector& a, const ExactVector& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+mpq_class exact_dot(const ExactVector& a, const ExactVector& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 void exact_dihedral_terms(const Dihedral& a, mpq_class& d, mpq_class& norms) {
     unsigned k = 0;
@@ -152,7 +167,8 @@ VolumeEdgeTerms volume_edge_terms(const TetCorners& p, bool& in_window) {
     // orient3d(p0, p1, p2, p3) = det[p0 - p3; p1 - p3; p2 - p3] = -det[a; b; c].
     const Approx det = dot(a, cross(b, c));
     const Approx volume6{-det.value, det.magnitude, det.roundings};
-    return {volume6, ((dot(a, a) + dot(b, b)) + (dot(c, c) + dot(bc, bc))) + (dot(bd, bd) + dot(cd, cd))};
+    return {volume6,
+            ((dot(a, a) + dot(b, b)) + (dot(c, c) + dot(bc, bc))) + (dot(bd, bd) + dot(cd, cd))};
 }
 
 void exact_volume_edge_terms(const TetCorners& p, mpq_class& volume6, mpq_class& lengths) {
@@ -160,20 +176,23 @@ void exact_volume_edge_terms(const TetCorners& p, mpq_class& volume6, mpq_class&
                       c = exact_difference(p[3], p[0]), bc = exact_difference(p[2], p[1]),
                       bd = exact_difference(p[3], p[1]), cd = exact_difference(p[3], p[2]);
     volume6 = -exact_dot(a, exact_cross(b, c));
-    lengths = exact_dot(a, a) + exact_dot(b, b) + exact_dot(c, c) + exact_dot(bc, bc) + exact_dot(bd, bd) +
-              exact_dot(cd, cd);
+    lengths = exact_dot(a, a) + exact_dot(b, b) + exact_dot(c, c) + exact_dot(bc, bc) +
+              exact_dot(bd, bd) + exact_dot(cd, cd);
 }
 
 constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
 }  // namespace
 
-Sign compare_dihedral(const Dihedral& a, const Dihedral& b) {
+namespace {
+
+/// The filter of compare_dihedral; `window` false when a difference left the window.
+std::optional<Sign> dihedral_filter(const Dihedral& a, const Dihedral& b, bool& window) {
+    window = true;
     if constexpr (kLongDoubleFilter) {
-        bool in_window = true;
-        const DihedralTerms ta = dihedral_terms(a, in_window);
-        const DihedralTerms tb = dihedral_terms(b, in_window);
-        if (in_window) {
+        const DihedralTerms ta = dihedral_terms(a, window);
+        const DihedralTerms tb = dihedral_terms(b, window);
+        if (window) {
             bool certain = true;
             const Sign da = filtered_sign(ta.d, certain);
             const Sign db = filtered_sign(tb.d, certain);
@@ -184,11 +203,51 @@ Sign compare_dihedral(const Dihedral& a, const Dihedral& b) {
             if (certain) return -cosine_order(da, db, x);
         }
     }
+    return std::nullopt;
+}
+
+/// Both tetrahedra's 24 coordinates scaled by one power of two into [1, 2) (detail::
+/// rescale_into_safe_range, degree `degree`), when that is exact: every comparison here is
+/// homogeneous, so the copy has the same signs, and its differences may lie in the window.
+bool rescaled_copy(const TetCorners& a, const TetCorners& b, int degree, double* out) {
+    const TetCorners& x = a;
+    const TetCorners& y = b;
+    return detail::rescale_into_safe_range(
+        degree, {x[0][0], x[0][1], x[0][2], x[1][0], x[1][1], x[1][2], x[2][0], x[2][1],
+                 x[2][2], x[3][0], x[3][1], x[3][2], y[0][0], y[0][1], y[0][2], y[1][0],
+                 y[1][1], y[1][2], y[2][0], y[2][1], y[2][2], y[3][0], y[3][1], y[3][2]},
+        out);
+}
+
+}  // namespace
+
+std::optional<Sign> compare_dihedral_filter(const Dihedral& a, const Dihedral& b) {
+    bool window = true;
+    return dihedral_filter(a, b, window);
+}
+
+Sign compare_dihedral(const Dihedral& a, const Dihedral& b) {
+    EM_STAT(compare_dihedral, calls);
+    bool window = true;
+    if (const auto s = dihedral_filter(a, b, window)) {
+        EM_STAT(compare_dihedral, filter);
+        return *s;
+    }
+    double c[24];
+    if (!window && rescaled_copy(a.p, b.p, 16, c)) {
+        EM_STAT(compare_dihedral, rescaled);
+        const TetCorners ca{c, c + 3, c + 6, c + 9}, cb{c + 12, c + 15, c + 18, c + 21};
+        if (const auto s = dihedral_filter({ca, a.i, a.j}, {cb, b.i, b.j}, window)) {
+            EM_STAT(compare_dihedral, filter);
+            return *s;
+        }
+    }
+    EM_STAT(compare_dihedral, gmp);
     mpq_class da, na, db, nb;
     exact_dihedral_terms(a, da, na);
     exact_dihedral_terms(b, db, nb);
-    const Sign sa = predicates::reference::sign_of(da), sb = predicates::reference::sign_of(db);
-    const Sign x = predicates::reference::sign_of(da * da * nb - db * db * na);
+    const Sign sa = reference::sign_of(da), sb = reference::sign_of(db);
+    const Sign x = reference::sign_of(da * da * nb - db * db * na);
     return -cosine_order(sa, sb, x);
 }
 
@@ -210,23 +269,54 @@ Dihedral largest_dihedral(const TetCorners& p) {
     return best;
 }
 
-Sign compare_volume_edge(const TetCorners& a, const TetCorners& b) {
+namespace {
+
+/// The filter of compare_volume_edge; `window` false when a difference left the window.
+std::optional<Sign> volume_edge_filter(const TetCorners& a, const TetCorners& b, bool& window) {
+    window = true;
     if constexpr (kLongDoubleFilter) {
-        bool in_window = true;
-        const VolumeEdgeTerms ta = volume_edge_terms(a, in_window);
-        const VolumeEdgeTerms tb = volume_edge_terms(b, in_window);
-        if (in_window) {
+        const VolumeEdgeTerms ta = volume_edge_terms(a, window);
+        const VolumeEdgeTerms tb = volume_edge_terms(b, window);
+        if (window) {
             bool certain = true;
             const Approx la3 = ta.lengths * ta.lengths * ta.lengths;
             const Approx lb3 = tb.lengths * tb.lengths * tb.lengths;
-            const Sign s = filtered_sign(ta.volume6 * ta.volume6 * lb3 - tb.volume6 * tb.volume6 * la3, certain);
+            const Sign s = filtered_sign(
+                ta.volume6 * ta.volume6 * lb3 - tb.volume6 * tb.volume6 * la3, certain);
             if (certain) return s;
         }
     }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Sign> compare_volume_edge_filter(const TetCorners& a, const TetCorners& b) {
+    bool window = true;
+    return volume_edge_filter(a, b, window);
+}
+
+Sign compare_volume_edge(const TetCorners& a, const TetCorners& b) {
+    EM_STAT(compare_volume_edge, calls);
+    bool window = true;
+    if (const auto s = volume_edge_filter(a, b, window)) {
+        EM_STAT(compare_volume_edge, filter);
+        return *s;
+    }
+    double c[24];
+    if (!window && rescaled_copy(a, b, 12, c)) {
+        EM_STAT(compare_volume_edge, rescaled);
+        const TetCorners ca{c, c + 3, c + 6, c + 9}, cb{c + 12, c + 15, c + 18, c + 21};
+        if (const auto s = volume_edge_filter(ca, cb, window)) {
+            EM_STAT(compare_volume_edge, filter);
+            return *s;
+        }
+    }
+    EM_STAT(compare_volume_edge, gmp);
     mpq_class va, la, vb, lb;
     exact_volume_edge_terms(a, va, la);
     exact_volume_edge_terms(b, vb, lb);
-    return predicates::reference::sign_of(va * va * lb * lb * lb - vb * vb * la * la * la);
+    return reference::sign_of(va * va * lb * lb * lb - vb * vb * la * la * la);
 }
 
 long double dihedral_radians(const Dihedral& a) {
@@ -235,7 +325,8 @@ long double dihedral_radians(const Dihedral& a) {
     unsigned l = k + 1;
     while (l == a.i || l == a.j) ++l;
     auto diff = [](const double* p, const double* o) {
-        return std::array<long double, 3>{static_cast<long double>(p[0]) - o[0], static_cast<long double>(p[1]) - o[1],
+        return std::array<long double, 3>{static_cast<long double>(p[0]) - o[0],
+                                          static_cast<long double>(p[1]) - o[1],
                                           static_cast<long double>(p[2]) - o[2]};
     };
     auto crs = [](const std::array<long double, 3>& x, const std::array<long double, 3>& y) {
@@ -259,4 +350,4 @@ long double volume_edge_quality(const TetCorners& p) {
     return 12.0L * std::sqrt(3.0L) * t.volume6.value / (l * std::sqrt(l));
 }
 
-}  // namespace exactmesh::triangulation
+}  // namespace exactmesh::predicates

@@ -8,14 +8,16 @@
 // and of d1^2 N2 - d2^2 N1 (degree 16 in coordinate differences). The volume-edge quality
 // q = 12 sqrt(3) D / L^(3/2) (D = 6 x volume, L = sum of the squared edge lengths; 1 for the
 // regular tetrahedron, 0 when flat) compares by the sign of D1^2 L2^3 - D2^2 L1^3 (degree 12).
-// Stages: long double evaluation with a running forward error bound (angles_3d.cpp), then GMP.
+// Stages: long double evaluation with a running forward error bound (angle_comparisons_3d.cpp;
+// proofs/gappa/angle_comparisons_3d_filter.g), then GMP. Statistics: stats.hpp.
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "predicates/sign.hpp"
 
-namespace exactmesh::triangulation {
+namespace exactmesh::predicates {
 
 /// Four corner pointers (3 doubles each, finite) of a tetrahedron, positively oriented.
 using TetCorners = std::array<const double*, 4>;
@@ -27,7 +29,7 @@ struct Dihedral {
 };
 
 /// Sign of angle(a) - angle(b), exact. @pre both tetrahedra non-degenerate.
-predicates::Sign compare_dihedral(const Dihedral& a, const Dihedral& b);
+Sign compare_dihedral(const Dihedral& a, const Dihedral& b);
 
 /// The smallest (largest) of the six dihedral angles of `p`; ties go to the first edge in the
 /// order (0,1), (0,2), (0,3), (1,2), (1,3), (2,3).
@@ -35,7 +37,13 @@ Dihedral smallest_dihedral(const TetCorners& p);
 Dihedral largest_dihedral(const TetCorners& p);
 
 /// Sign of q(a) - q(b) for the volume-edge quality, exact. @pre both positively oriented.
-predicates::Sign compare_volume_edge(const TetCorners& a, const TetCorners& b);
+Sign compare_volume_edge(const TetCorners& a, const TetCorners& b);
+
+/// The long double filters of the two comparisons (stage A): the sign when certified,
+/// std::nullopt otherwise (a difference outside 2^-500..2^500, a long double narrower than
+/// x86-64's, or too close a call).
+std::optional<Sign> compare_dihedral_filter(const Dihedral& a, const Dihedral& b);
+std::optional<Sign> compare_volume_edge_filter(const TetCorners& a, const TetCorners& b);
 
 /// The dihedral angle in radians, rounded (reports and statistics, never decisions):
 /// atan2(|e| |det(e, u, w)|, n1 . n2) in long double.
@@ -44,4 +52,4 @@ long double dihedral_radians(const Dihedral& a);
 /// q = 12 sqrt(3) D / L^(3/2) in long double (1 for the regular tetrahedron), rounded.
 long double volume_edge_quality(const TetCorners& p);
 
-}  // namespace exactmesh::triangulation
+}  // namespace exactmesh::predicates

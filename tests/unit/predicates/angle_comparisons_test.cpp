@@ -1,0 +1,349 @@
+// SPDX-License-Identifier: MIT
+// The comparisons moved into predicates/ (angle_comparisons_2d/3d, within_rounding_of_segment,
+// triangle_area) against the GMP references of predicates/exact_reference.*: random inputs,
+// near-degenerate ones (exact ties moved by a few ulps) and the same inputs scaled by 2^+-600;
+// each filter stage (the *_filter functions) must agree with the reference whenever it answers,
+// and answer most random calls.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "predicates/angle_comparisons_2d.hpp"
+#include "predicates/angle_comparisons_3d.hpp"
+#include "predicates/exact_reference.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/orient3d.hpp"
+#include "predicates/triangle_area.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
+
+namespace pr = exactmesh::predicates;
+using pr::Sign;
+
+namespace {
+
+using Rng = std::mt19937_64;
+using P2 = std::array<double, 2>;
+using P3 = std::array<double, 3>;
+
+double uniform(Rng& rng, double lo = -1.0, double hi = 1.0) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng);
+}
+
+/// x moved by k ulps (k may be negative).
+double ulps(double x, int k) {
+    for (; k > 0; --k) x = std::nextafter(x, HUGE_VAL);
+    for (; k < 0; ++k) x = std::nextafter(x, -HUGE_VAL);
+    return x;
+}
+
+P2 scaled(const P2& p, int k) {
+    return {std::ldexp(p[0], k), std::ldexp(p[1], k)};
+}
+P3 scaled(const P3& p, int k) {
+    return {std::ldexp(p[0], k), std::ldexp(p[1], k), std::ldexp(p[2], k)};
+}
+
+constexpr int kScales[] = {0, 600, -600};
+
+/// Two corners (o, p, q), counter-clockwise.
+struct AngleCase {
+    P2 o1, p1, q1, o2, p2, q2;
+};
+
+AngleCase scaled(const AngleCase& c, int k) {
+    return {scaled(c.o1, k), scaled(c.p1, k), scaled(c.q1, k),
+            scaled(c.o2, k), scaled(c.p2, k), scaled(c.q2, k)};
+}
+
+/// Reorders (o, p, q) counter-clockwise; false when collinear.
+bool make_ccw(const P2& o, P2& p, P2& q) {
+    const Sign s = pr::orient2d(o.data(), p.data(), q.data());
+    if (s == Sign::Zero) return false;
+    if (s == Sign::Negative) std::swap(p, q);
+    return true;
+}
+
+/// Counts of one predicate's filter: answers and cases.
+struct FilterCount {
+    long answered = 0, cases = 0;
+};
+
+void check_angles(const AngleCase& c, FilterCount& count, const char* what) {
+    const Sign ref = pr::reference::compare_angles(c.o1.data(), c.p1.data(), c.q1.data(),
+                                                   c.o2.data(), c.p2.data(), c.q2.data());
+    const pr::Corner a{c.o1.data(), c.p1.data(), c.q1.data()};
+    const pr::Corner b{c.o2.data(), c.p2.data(), c.q2.data()};
+    ASSERT_EQ(pr::compare_angles(a, b), ref) << what;
+    ASSERT_EQ(pr::compare_angles(b, a), -ref) << what;
+    ++count.cases;
+    if (const auto f = pr::compare_angles_filter(a, b)) {
+        ++count.answered;
+        ASSERT_EQ(*f, ref) << what;
+    }
+}
+
+void check_lengths(const P2& p1, const P2& q1, const P2& p2, const P2& q2, FilterCount& count,
+                   const char* what) {
+    const Sign ref = pr::reference::compare_lengths(p1.data(), q1.data(), p2.data(), q2.data());
+    ASSERT_EQ(pr::compare_lengths(p1.data(), q1.data(), p2.data(), q2.data()), ref) << what;
+    ASSERT_EQ(pr::compare_lengths(q2.data(), p2.data(), p1.data(), q1.data()), -ref) << what;
+    ++count.cases;
+    if (const auto f = pr::compare_lengths_filter(p1.data(), q1.data(), p2.data(), q2.data())) {
+        ++count.answered;
+        ASSERT_EQ(*f, ref) << what;
+    }
+}
+
+void check_dots(const P2& o, const P2& p, const P2& q, const P2& r, FilterCount& corner,
+                FilterCount& direction, const char* what) {
+    // corner_dot_sign(o, p, q) = (p - o) . (q - o); direction_dot_sign(o, p, q, r) = (p - o) . (r -
+    // q).
+    const Sign ref_corner = pr::reference::dot_sign(o.data(), p.data(), o.data(), q.data());
+    ASSERT_EQ(pr::corner_dot_sign(o.data(), p.data(), q.data()), ref_corner) << what;
+    ++corner.cases;
+    if (const auto f = pr::corner_dot_sign_filter(o.data(), p.data(), q.data())) {
+        ++corner.answered;
+        ASSERT_EQ(*f, ref_corner) << what;
+    }
+    const Sign ref_direction = pr::reference::dot_sign(o.data(), p.data(), q.data(), r.data());
+    ASSERT_EQ(pr::direction_dot_sign(o.data(), p.data(), q.data(), r.data()), ref_direction)
+        << what;
+    ++direction.cases;
+    if (const auto f = pr::direction_dot_sign_filter(o.data(), p.data(), q.data(), r.data())) {
+        ++direction.answered;
+        ASSERT_EQ(*f, ref_direction) << what;
+    }
+}
+
+void check_within(const P2& w, const P2& s0, const P2& s1, FilterCount& count, const char* what) {
+    const bool ref = pr::reference::within_rounding_of_segment(w.data(), s0.data(), s1.data());
+    ASSERT_EQ(pr::within_rounding_of_segment(w.data(), s0.data(), s1.data()), ref) << what;
+    ASSERT_EQ(pr::within_rounding_of_segment(w.data(), s1.data(), s0.data()), ref) << what;
+    ++count.cases;
+    if (const auto f = pr::within_rounding_of_segment_filter(w.data(), s0.data(), s1.data())) {
+        ++count.answered;
+        ASSERT_EQ(*f, ref) << what;
+    }
+}
+
+}  // namespace
+
+TEST(Predicates_AngleComparisons2d, AgreeWithGmpOnRandomAndScaledInputs) {
+    Rng rng(2026);
+    // counts[scale][predicate]: angles, lengths, corner dot, direction dot.
+    FilterCount counts[3][4];
+    for (int n = 0; n < 4000; ++n) {
+        AngleCase c;
+        for (P2* p : {&c.o1, &c.p1, &c.q1, &c.o2, &c.p2, &c.q2}) *p = {uniform(rng), uniform(rng)};
+        if (!make_ccw(c.o1, c.p1, c.q1) || !make_ccw(c.o2, c.p2, c.q2)) continue;
+        const Sign unscaled = pr::compare_angles({c.o1.data(), c.p1.data(), c.q1.data()},
+                                                 {c.o2.data(), c.p2.data(), c.q2.data()});
+        for (int i = 0; i < 3; ++i) {
+            const AngleCase s = scaled(c, kScales[i]);
+            FilterCount* f = counts[i];
+            check_angles(s, f[0], "random angles");
+            check_lengths(s.o1, s.p1, s.o2, s.p2, f[1], "random lengths");
+            check_dots(s.o1, s.p1, s.q1, s.o2, f[2], f[3], "random dots");
+            ASSERT_EQ(pr::compare_angles({s.o1.data(), s.p1.data(), s.q1.data()},
+                                         {s.o2.data(), s.p2.data(), s.q2.data()}),
+                      unscaled)
+                << "scale 2^" << kScales[i];
+        }
+    }
+    // The filters decide nearly every random call at scale 2^0; at 2^+-600 the differences
+    // leave their window and the filters abstain (the exact stages decide, as checked above).
+    for (const FilterCount& f : counts[0]) {
+        EXPECT_GT(f.cases, 3000);
+        EXPECT_GT(f.answered, f.cases * 99 / 100);
+    }
+}
+
+TEST(Predicates_AngleComparisons2d, AgreeWithGmpOnNearDegenerateInputs) {
+    Rng rng(12);
+    FilterCount sink[4];
+    long ties = 0;
+    for (int n = 0; n < 1500; ++n) {
+        // A corner and its copy turned by 90 degrees (exact): equal angles, equal lengths and
+        // equal dot products; then one coordinate moved by -2..2 ulps.
+        AngleCase c;
+        c.o1 = {uniform(rng), uniform(rng)};
+        c.p1 = {uniform(rng), uniform(rng)};
+        c.q1 = {uniform(rng), uniform(rng)};
+        if (!make_ccw(c.o1, c.p1, c.q1)) continue;
+        auto turn = [](const P2& p) { return P2{-p[1], p[0]}; };
+        c.o2 = turn(c.o1);
+        c.p2 = turn(c.p1);
+        c.q2 = turn(c.q1);
+        const int moved = static_cast<int>(rng() % 6), by = static_cast<int>(rng() % 5) - 2;
+        P2* targets[6] = {&c.o2, &c.p2, &c.q2, &c.o2, &c.p2, &c.q2};
+        (*targets[moved])[moved / 3] = ulps((*targets[moved])[moved / 3], by);
+        if (pr::orient2d(c.o2.data(), c.p2.data(), c.q2.data()) != Sign::Positive) continue;
+        if (by == 0) ++ties;
+        for (const int k : kScales) {
+            const AngleCase s = scaled(c, k);
+            check_angles(s, sink[0], "turned angles");
+            check_lengths(s.o1, s.p1, s.o2, s.p2, sink[1], "turned lengths");
+            check_dots(s.o1, s.p1, s.q1, s.o2, sink[2], sink[3], "turned dots");
+        }
+        if (by == 0) {
+            EXPECT_EQ(pr::compare_angles({c.o1.data(), c.p1.data(), c.q1.data()},
+                                         {c.o2.data(), c.p2.data(), c.q2.data()}),
+                      Sign::Zero);
+        }
+    }
+    EXPECT_GT(ties, 100);
+    // A right angle at o = (1, 1) over p = (0, 0), q = (2, 0) (o on the circle with diameter pq),
+    // o moved along x by a lattice step of 2^-43 i / 128: the encroachment test's boundary.
+    for (int i = -64; i <= 64; ++i) {
+        const P2 p{0.0, 0.0}, q{2.0, 0.0}, o{1.0 + std::ldexp(i, -50), 1.0};
+        check_dots(o, p, q, p, sink[2], sink[3], "diametral circle");
+        if (i == 0) {
+            EXPECT_EQ(pr::corner_dot_sign(o.data(), p.data(), q.data()), Sign::Zero);
+        }
+    }
+    // Dot products whose differences span 1e-225..1e212: direction_dot_sign's long double stage.
+    for (int n = 0; n < 500; ++n) {
+        const P2 o{uniform(rng) * 1e-225, uniform(rng) * 1e-225};
+        const P2 p{uniform(rng) * 1e-225, uniform(rng) * 1e212};
+        const P2 q{uniform(rng) * 1e212, uniform(rng)};
+        const P2 r{ulps(q[0], 1), q[1] + uniform(rng) * 1e-200};
+        check_dots(o, p, q, r, sink[2], sink[3], "wide span");
+    }
+}
+
+TEST(Predicates_WithinRounding, AgreesWithGmpNearTheSquaresBoundary) {
+    Rng rng(99);
+    FilterCount at_scale[3];
+    for (int n = 0; n < 3000; ++n) {
+        const P2 s0{uniform(rng), uniform(rng)}, s1{uniform(rng), uniform(rng)};
+        // A point of the segment, moved perpendicular by about the half-width (2^-40 |w|) or
+        // by a random amount, and sometimes beyond an end.
+        const double r = uniform(rng, -0.01, 1.01);
+        P2 w{s0[0] + r * (s1[0] - s0[0]), s0[1] + r * (s1[1] - s0[1])};
+        const double h = std::ldexp(std::max(std::fabs(w[0]), std::fabs(w[1])), -40);
+        const double off = (n % 3 == 0) ? uniform(rng) * 1e-3 : h * uniform(rng, 0.5, 2.0);
+        const double dx = s1[0] - s0[0], dy = s1[1] - s0[1], len = std::hypot(dx, dy);
+        w = {w[0] - off * dy / len, w[1] + off * dx / len};
+        for (int i = 0; i < 3; ++i) {
+            check_within(scaled(w, kScales[i]), scaled(s0, kScales[i]), scaled(s1, kScales[i]),
+                         at_scale[i], "near the square");
+            ASSERT_EQ(pr::within_rounding_of_segment(scaled(w, kScales[i]).data(),
+                                                     scaled(s0, kScales[i]).data(),
+                                                     scaled(s1, kScales[i]).data()),
+                      pr::within_rounding_of_segment(w.data(), s0.data(), s1.data()));
+        }
+    }
+    // The long double filter decides all but the closest calls, at every scale.
+    for (const FilterCount& f : at_scale) EXPECT_GT(f.answered, f.cases * 95 / 100);
+}
+
+namespace {
+
+using Tet = std::array<P3, 4>;
+
+std::array<const double*, 4> corners(const Tet& t) {
+    return {t[0].data(), t[1].data(), t[2].data(), t[3].data()};
+}
+
+Tet scaled(const Tet& t, int k) {
+    return {scaled(t[0], k), scaled(t[1], k), scaled(t[2], k), scaled(t[3], k)};
+}
+
+/// A random positively oriented tetrahedron (orient3d > 0, the convention of TetMesh3).
+Tet random_tet(Rng& rng) {
+    for (;;) {
+        Tet t;
+        for (P3& p : t) p = {uniform(rng), uniform(rng), uniform(rng)};
+        const Sign s = pr::orient3d(t[0].data(), t[1].data(), t[2].data(), t[3].data());
+        if (s == Sign::Zero) continue;
+        if (s == Sign::Negative) std::swap(t[0], t[1]);
+        return t;
+    }
+}
+
+}  // namespace
+
+TEST(Predicates_AngleComparisons3d, AgreeWithGmpOnRandomTurnedAndScaledTetrahedra) {
+    Rng rng(3);
+    FilterCount dihedral[3], quality[3];
+    for (int n = 0; n < 300; ++n) {
+        const Tet a = random_tet(rng);
+        Tet b = random_tet(rng);
+        if (n % 2 == 1) {
+            // b: a turned by 90 degrees about z (exact), one coordinate moved by an ulp or not.
+            for (int v = 0; v < 4; ++v) b[v] = {-a[v][1], a[v][0], a[v][2]};
+            b[n % 4][n % 3] = ulps(b[n % 4][n % 3], static_cast<int>(n % 3) - 1);
+            if (pr::orient3d(b[0].data(), b[1].data(), b[2].data(), b[3].data()) != Sign::Positive)
+                continue;
+        }
+        const unsigned i = static_cast<unsigned>(n % 4),
+                       j = static_cast<unsigned>((n / 4 + 1 + n % 4) % 4);
+        if (i == j) continue;
+        for (int s = 0; s < 3; ++s) {
+            const Tet as = scaled(a, kScales[s]), bs = scaled(b, kScales[s]);
+            const auto ca = corners(as), cb = corners(bs);
+            const Sign ref = pr::reference::compare_dihedral(ca.data(), i, j, cb.data(), i, j);
+            const pr::Dihedral x{ca, i, j}, y{cb, i, j};
+            ASSERT_EQ(pr::compare_dihedral(x, y), ref) << n << " scale " << kScales[s];
+            ++dihedral[s].cases;
+            if (const auto f = pr::compare_dihedral_filter(x, y)) {
+                ++dihedral[s].answered;
+                ASSERT_EQ(*f, ref);
+            }
+            const Sign qref = pr::reference::compare_volume_edge(ca.data(), cb.data());
+            ASSERT_EQ(pr::compare_volume_edge(ca, cb), qref) << n << " scale " << kScales[s];
+            ++quality[s].cases;
+            if (const auto f = pr::compare_volume_edge_filter(ca, cb)) {
+                ++quality[s].answered;
+                ASSERT_EQ(*f, qref);
+            }
+        }
+    }
+    // The long double filter decides the random (odd: nearly tied) calls at 2^0 and abstains
+    // outside its window (2^600).
+    EXPECT_GT(dihedral[0].answered, dihedral[0].cases / 2);
+    EXPECT_GT(quality[0].answered, quality[0].cases / 2);
+    EXPECT_EQ(dihedral[1].answered, 0);
+}
+
+TEST(Predicates_TriangleArea, AgreesWithGmpOnRandomTiedAndScaledInputs) {
+    Rng rng(5);
+    for (int n = 0; n < 3000; ++n) {
+        const P2 a{uniform(rng), uniform(rng)}, b{uniform(rng), uniform(rng)},
+            c{uniform(rng), uniform(rng)};
+        // Random areas, and the area rounded from the determinant (a near tie), moved by ulps.
+        double area = uniform(rng);
+        if (n % 2 == 1) {
+            area = ulps(0.5 * pr::orient2d_fast(a.data(), b.data(), c.data()),
+                        static_cast<int>(rng() % 5) - 2);
+        }
+        const Sign ref = pr::reference::triangle_area_sign(a.data(), b.data(), c.data(), area);
+        // The area scales by 2^(2k): coordinates by 2^+-300 keep it finite and normal.
+        for (const int k : {0, 300, -300}) {
+            const P2 as = scaled(a, k), bs = scaled(b, k), cs = scaled(c, k);
+            ASSERT_EQ(
+                pr::triangle_area_sign(as.data(), bs.data(), cs.data(), std::ldexp(area, 2 * k)),
+                ref)
+                << n << " scale " << k;
+        }
+        // Coordinates by 2^+-600 against areas at the ends of the double range.
+        for (const int k : {600, -600}) {
+            const P2 as = scaled(a, k), bs = scaled(b, k), cs = scaled(c, k);
+            for (const double bound : {0.0, 0x1p-1074, -0x1p-1074, DBL_MAX, -DBL_MAX}) {
+                ASSERT_EQ(pr::triangle_area_sign(as.data(), bs.data(), cs.data(), bound),
+                          pr::reference::triangle_area_sign(as.data(), bs.data(), cs.data(), bound))
+                    << n << " scale " << k << " area " << bound;
+            }
+        }
+    }
+    // Integer triangles: exact ties.
+    const P2 a{0, 0}, b{4, 0}, c{0, 3};
+    EXPECT_EQ(pr::triangle_area_sign(a.data(), b.data(), c.data(), 6.0), Sign::Zero);
+    EXPECT_EQ(pr::triangle_area_sign(a.data(), b.data(), c.data(), ulps(6.0, 1)), Sign::Negative);
+    EXPECT_EQ(pr::triangle_area_sign(a.data(), b.data(), c.data(), ulps(6.0, -1)), Sign::Positive);
+}
