@@ -14,11 +14,11 @@
 #include <string>
 #include <utility>
 
+#include "base/errors.hpp"
 #include "cli/commands.hpp"
 #include "io/tetgen_format.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
-#include "predicates/errors.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/check_3d.hpp"
 #include "triangulation/check_conforming_2d.hpp"

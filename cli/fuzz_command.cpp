@@ -29,13 +29,13 @@
 #include <span>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "cli/commands.hpp"
 #include "generators/inputs.hpp"
 #include "io/triangle_format.hpp"
-#include "predicates/errors.hpp"
-#include "triangulation/delaunay_2d_naive.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/delaunay_2d.hpp"
+#include "triangulation/delaunay_2d_naive.hpp"
 
 namespace exactmesh::cli {
 

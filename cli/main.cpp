@@ -9,8 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "base/errors.hpp"
 #include "cli/commands.hpp"
-#include "predicates/errors.hpp"
 
 namespace {
 

@@ -13,6 +13,8 @@
 #include <memory>
 #include <string>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
@@ -27,8 +29,6 @@
 #include "generators/size_function.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
-#include "predicates/errors.hpp"
-#include "predicates/number_text.hpp"
 #include "predicates/stats.hpp"
 
 namespace exactmesh::cli {

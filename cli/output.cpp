@@ -9,12 +9,12 @@
 #include <iostream>
 #include <string>
 
+#include "base/errors.hpp"
 #include "io/format_error.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/svg_picture.hpp"
 #include "io/triangle_format.hpp"
 #include "io/vtk_format.hpp"
-#include "predicates/errors.hpp"
 
 namespace exactmesh::cli {
 

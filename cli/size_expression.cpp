@@ -8,7 +8,7 @@
 
 #include <memory>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 
 namespace exactmesh::cli {
 

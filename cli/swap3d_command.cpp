@@ -11,11 +11,11 @@
 #include <memory>
 #include <string>
 
+#include "base/errors.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "io/tetgen_format.hpp"
-#include "predicates/errors.hpp"
 #include "triangulation/check_3d.hpp"
 #include "triangulation/edge_face_swap_3d.hpp"
 #include "triangulation/quality_3d.hpp"

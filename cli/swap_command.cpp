@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "io/triangle_format.hpp"
-#include "predicates/errors.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/edge_cutting_2d.hpp"
 #include "triangulation/edge_swap_2d.hpp"

@@ -13,13 +13,13 @@
 #include <memory>
 #include <string>
 
+#include "base/errors.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/tetgen_format.hpp"
 #include "io/vtk_format.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/stats.hpp"
 #include "triangulation/delaunay_3d.hpp"
 

@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "base/errors.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
@@ -19,7 +20,6 @@
 #include "io/svg_picture.hpp"
 #include "io/triangle_format.hpp"
 #include "io/vtk_format.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/stats.hpp"
 #include "triangulation/delaunay_2d.hpp"
 

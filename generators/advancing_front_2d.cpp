@@ -19,12 +19,12 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/domain_mesh_2d.hpp"
 #include "generators/front_index_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
-#include "predicates/errors.hpp"
-#include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 

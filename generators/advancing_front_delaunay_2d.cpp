@@ -11,11 +11,11 @@
 #include <string>
 #include <unordered_map>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/domain_mesh_2d.hpp"
 #include "generators/front_index_2d.hpp"
-#include "predicates/errors.hpp"
-#include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
 

@@ -3,6 +3,7 @@
 // triangles, exact orient2d; the nearest boundary edge of a point outside the mesh: a ring
 // search over a second bucket grid, stopped by a lower bound on the distance to the cells not
 // yet searched.
+#include "base/number_text.hpp"
 #include "generators/background_size_2d.hpp"
 
 #include <algorithm>
@@ -18,12 +19,6 @@ namespace exactmesh::generators {
 namespace tri = triangulation;
 
 namespace {
-
-std::string number_text(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
-}
 
 std::string item_prefix(BackgroundMeshError::Item item, std::size_t index) {
     switch (item) {
@@ -66,13 +61,13 @@ BackgroundSizeMesh2::BackgroundSizeMesh2(std::vector<double> xy, std::vector<dou
     for (std::size_t v = 0; v < vertices; ++v) {
         if (!std::isfinite(xy[2 * v]) || !std::isfinite(xy[2 * v + 1])) {
             throw BackgroundMeshError(Item::Vertex, v,
-                                      "non-finite coordinate (" + number_text(xy[2 * v]) + ", " +
-                                          number_text(xy[2 * v + 1]) + ")");
+                                      "non-finite coordinate (" + format_number(xy[2 * v]) + ", " +
+                                          format_number(xy[2 * v + 1]) + ")");
         }
         if (!(std::isfinite(sizes[v]) && sizes[v] > 0)) {
             throw BackgroundMeshError(
                 Item::Vertex, v,
-                "size must be a finite number > 0 (got " + number_text(sizes[v]) + ")");
+                "size must be a finite number > 0 (got " + format_number(sizes[v]) + ")");
         }
     }
     const std::size_t count = triangles.size() / 3;

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "triangulation/locate_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
 

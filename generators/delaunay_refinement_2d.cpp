@@ -26,10 +26,11 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "generators/region_areas_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/constructions.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/power_of_two.hpp"
 #include "predicates/triangle_area.hpp"
 #include "triangulation/constrained_triangulation_2d.hpp"
@@ -366,9 +367,8 @@ Badness Refiner::evaluate(TriIdx t) {
                              my = 0.5 * (p[k][1] + p[(k + 1) % 3][1]);
                 s = options_.size(mx, my);
                 if (!(s > 0)) {
-                    char where[96];
-                    std::snprintf(where, sizeof where, "(%.17g, %.17g)", mx, my);
-                    throw InputError("size function: not a number > 0 at " + std::string(where) +
+                    const double where[2] = {mx, my};
+                    throw InputError("size function: not a number > 0 at " + format_point(where) +
                                      " (" + options_.size.describe() + ")");
                 }
             }

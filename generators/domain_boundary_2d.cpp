@@ -18,9 +18,9 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
-#include "predicates/errors.hpp"
-#include "predicates/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 #include "predicates/within_rounding_of_segment.hpp"

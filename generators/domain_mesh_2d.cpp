@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 
 namespace exactmesh::generators {
 

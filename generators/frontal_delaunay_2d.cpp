@@ -20,9 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/region_areas_2d.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/incircle.hpp"
 #include "triangulation/constrained_triangulation_2d.hpp"
 
@@ -58,11 +59,6 @@ double scale_of(std::initializer_list<double> magnitudes) {
     return std::ldexp(1.0, std::ilogb(m));
 }
 
-std::string point_text(double x, double y) {
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.17g, %.17g)", x, y);
-    return text;
-}
 
 class Frontal {
   public:
@@ -97,7 +93,7 @@ class Frontal {
     double size_at(double x, double y) const {
         const double s = options_.size(x, y);
         if (!(s > 0)) {
-            throw InputError("size function: not a number > 0 at " + point_text(x, y) + " (" +
+            throw InputError("size function: not a number > 0 at " + format_point(std::array<double, 2>{x, y}.data()) + " (" +
                              options_.size.describe() + ")");
         }
         return s;

@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/domain_boundary_2d.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/power_of_two.hpp"
 
 namespace exactmesh::generators {

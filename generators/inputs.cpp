@@ -8,7 +8,7 @@
 #include <random>
 #include <string>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 
 namespace exactmesh::generators {
 

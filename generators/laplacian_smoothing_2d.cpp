@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/edge_swap_2d.hpp"
 

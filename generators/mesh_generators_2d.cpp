@@ -11,12 +11,13 @@
 #include <optional>
 #include <string>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "generators/advancing_front_2d.hpp"
 #include "generators/advancing_front_delaunay_2d.hpp"
 #include "generators/frontal_delaunay_2d.hpp"
 #include "generators/quadtree_mesh_2d.hpp"
 #include "generators/region_areas_2d.hpp"
-#include "predicates/errors.hpp"
 
 namespace exactmesh::generators {
 
@@ -27,12 +28,6 @@ std::vector<std::pair<std::string, std::uint64_t>> counter_list(const Refinement
 }
 
 namespace {
-
-std::string number_text(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
 
 /// The samples of minimum_triangle_count: each checked, counted against a fixed budget of
 /// evaluations (about 10 ms of a parsed expression) beyond one pass over the domain.
@@ -45,8 +40,8 @@ class SizeSampler {
         ++evaluations_;
         const double s = size_(x, y);
         if (!(s > 0) || !std::isfinite(s)) {
-            throw InputError("the size function (" + size_.describe() + ") is " + number_text(s) +
-                             " at (" + number_text(x) + ", " + number_text(y) +
+            throw InputError("the size function (" + size_.describe() + ") is " + format_number(s) +
+                             " at (" + format_number(x) + ", " + format_number(y) +
                              "), inside the domain: a size must be finite and > 0 everywhere "
                              "in the domain");
         }
@@ -163,10 +158,10 @@ void check_size_budget(const MeshDomain2& domain_of, const MeshOptions2& options
         throw InputError(
             what + " for " +
             (estimate > 1e300 ? std::string("far more than 1e300")
-                              : "about " + number_text(estimate) + " or more") +
+                              : "about " + format_approximate(estimate) + " or more") +
             " triangles over the domain, more than the " +
-            (given ? "--max-steiner budget of about " + number_text(budget) + " triangles"
-                   : "automatic budget of " + number_text(budget) +
+            (given ? "--max-steiner budget of about " + format_approximate(budget) + " triangles"
+                   : "automatic budget of " + format_approximate(budget) +
                          " triangles (raise it with --max-steiner)") +
             (by_area > by_size ? (given ? ": give larger maximum areas or raise --max-steiner"
                                         : ": give larger maximum areas")
@@ -182,7 +177,7 @@ void refuse_region_areas(const tri::Pslg& pslg, const MeshOptions2& options,
     for (std::size_t r = 0; 4 * r + 3 < pslg.regions.size(); ++r) {
         if (pslg.regions[4 * r + 3] > 0) {
             throw InputError("region " + std::to_string(r + options.cdt.first_index) +
-                             " has a maximum area (" + number_text(pslg.regions[4 * r + 3]) +
+                             " has a maximum area (" + format_number(pslg.regions[4 * r + 3]) +
                              "): region maximum areas are honoured by delaunay-refinement and "
                              "frontal only, not by " +
                              std::string(generator));

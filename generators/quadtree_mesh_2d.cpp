@@ -18,10 +18,11 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/domain_mesh_2d.hpp"
 #include "predicates/constructions.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/constrained_triangulation_2d.hpp"
 
@@ -36,12 +37,6 @@ namespace {
 constexpr std::uint32_t kNoNode = std::numeric_limits<std::uint32_t>::max();
 /// Deepest level ever: cell numbers below 2^28 fit the 64-bit node keys.
 constexpr int kMaxLevel = 28;
-
-std::string number_text(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
-}
 
 std::uint64_t edge_key(VertIdx a, VertIdx b) {
     return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
@@ -367,8 +362,8 @@ bool QuadtreeMesher::inside_domain(double x, double y) {
 double QuadtreeMesher::size_at(double x, double y) const {
     const double s = options_.size(x, y);
     if (!(s > 0)) {
-        throw InputError("quadtree: the size function is " + number_text(s) + " at (" +
-                         number_text(x) + ", " + number_text(y) + "); it must be > 0");
+        throw InputError("quadtree: the size function is " + format_number(s) + " at (" +
+                         format_number(x) + ", " + format_number(y) + "); it must be > 0");
     }
     return s;
 }
@@ -392,9 +387,9 @@ void QuadtreeMesher::split_counted(std::uint32_t n) {
     if (leaf_count_ > max_leaves_) {
         const Box b = tree_.cell(n);
         throw InputError("quadtree: more than " + std::to_string(max_leaves_) +
-                         " leaves: splitting a leaf of side " + number_text(b.x1 - b.x0) + " at (" +
-                         number_text(b.x0) + ", " + number_text(b.y0) + "), size " +
-                         number_text(options_.size(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1))) +
+                         " leaves: splitting a leaf of side " + format_number(b.x1 - b.x0) + " at (" +
+                         format_number(b.x0) + ", " + format_number(b.y0) + "), size " +
+                         format_number(options_.size(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1))) +
                          " (boundary features far finer than the size, or a size asking for too "
                          "many elements)");
     }
@@ -728,7 +723,7 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
             warnings.push_back("quadtree: the band's refinement stopped after " +
                                std::to_string(budget) +
                                " circumcenters; some band triangles keep angles below " +
-                               number_text(options_.band_min_angle) + " degrees");
+                               format_number(options_.band_min_angle) + " degrees");
             break;
         }
         const auto c =

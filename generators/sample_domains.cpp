@@ -9,8 +9,8 @@
 #include <numbers>
 #include <string>
 
+#include "base/errors.hpp"
 #include "generators/domain_boundary_2d.hpp"
-#include "predicates/errors.hpp"
 
 namespace exactmesh::generators {
 

@@ -14,37 +14,26 @@
 #include <sstream>
 #include <utility>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "generators/background_size_2d.hpp"
 #include "generators/size_quadtree_2d.hpp"
 #include "generators/size_smoothing_2d.hpp"
-#include "predicates/errors.hpp"
-#include "predicates/number_text.hpp"
 #include "predicates/power_of_two.hpp"
 
 namespace exactmesh::generators {
 
 namespace {
 
-std::string number_text(double value) {
-    return format_number(value);
-}
-
-/// The shortest text that reads back as `value`.
-std::string short_number(double value) {
-    char text[32];
-    const auto result = std::to_chars(text, text + sizeof text, value);
-    return std::string(text, result.ptr);
-}
-
 void require_positive(double value, const std::string& what) {
     if (!(std::isfinite(value) && value > 0)) {
-        throw InputError(what + " must be a finite number > 0 (got " + number_text(value) + ")");
+        throw InputError(what + " must be a finite number > 0 (got " + format_number(value) + ")");
     }
 }
 
 void require_exponent(double value, const std::string& what) {
     if (!(std::isfinite(value) && value >= 0)) {
-        throw InputError(what + " must be a finite number >= 0 (got " + number_text(value) + ")");
+        throw InputError(what + " must be a finite number >= 0 (got " + format_number(value) + ")");
     }
 }
 
@@ -94,7 +83,7 @@ SizeFunction SizeFunction::uniform(double h) {
 SizeFunction SizeFunction::sources(std::vector<PointSource> points, std::vector<LineSource> lines,
                                    double cap) {
     if (!(cap > 0) || std::isnan(cap))
-        throw InputError("size cap must be > 0 (got " + number_text(cap) + ")");
+        throw InputError("size cap must be > 0 (got " + format_number(cap) + ")");
     for (std::size_t k = 0; k < points.size(); ++k) {
         const PointSource& p = points[k];
         const std::string name = "point source " + std::to_string(k + 1);
@@ -208,11 +197,11 @@ std::string SizeFunction::describe() const {
         case Kind::None:
             return "none";
         case Kind::Uniform:
-            return "uniform " + number_text(factor_ * cap_);
+            return "uniform " + format_number(factor_ * cap_);
         case Kind::Sources:
             text = "sources: " + std::to_string(points_.size()) + " point, " +
                    std::to_string(lines_.size()) + " line";
-            if (std::isfinite(cap_)) text += ", cap " + number_text(cap_);
+            if (std::isfinite(cap_)) text += ", cap " + format_number(cap_);
             break;
         case Kind::Analytic:
             text = description_;
@@ -229,11 +218,11 @@ std::string SizeFunction::describe() const {
         case Kind::Smoothed:
             text = "smoothed (" + description_ + ") on a " + std::to_string(smoothed_->nx()) +
                    " x " + std::to_string(smoothed_->ny()) + " grid, gradation " +
-                   short_number(smoothed_->gradation()) + ", length " +
-                   short_number(smoothed_->length());
+                   format_number(smoothed_->gradation()) + ", length " +
+                   format_number(smoothed_->length());
             break;
     }
-    if (factor_ != 1.0) text += ", scaled by " + number_text(factor_);
+    if (factor_ != 1.0) text += ", scaled by " + format_number(factor_);
     return text;
 }
 
@@ -273,14 +262,14 @@ struct SizeText {
 std::uint32_t grid_count(double value, const char* what) {
     if (!(value >= 2 && value <= 16384 && value == std::floor(value))) {
         throw InputError(std::string(what) + " must be an integer in [2, 16384] (got " +
-                         number_text(value) + ")");
+                         format_number(value) + ")");
     }
     return static_cast<std::uint32_t>(value);
 }
 
 std::uint32_t vertex_number(double value) {
     if (!(value >= 0 && value < 4294967295.0 && value == std::floor(value))) {
-        throw InputError("'" + number_text(value) + "' is not a vertex number (an integer >= 0)");
+        throw InputError("'" + format_number(value) + "' is not a vertex number (an integer >= 0)");
     }
     return static_cast<std::uint32_t>(value);
 }

@@ -12,7 +12,8 @@
 #include <string>
 #include <unordered_map>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "triangulation/mesh2.hpp"
 
 namespace exactmesh::generators {
@@ -20,12 +21,6 @@ namespace exactmesh::generators {
 namespace {
 
 constexpr std::uint32_t kNone = triangulation::kNone;
-
-std::string number_text(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
-}
 
 /// Build-time state: nodes with their level and integer position, the field cache.
 struct Builder {
@@ -58,8 +53,8 @@ struct Builder {
             const double s = field(px, py);
             if (!(std::isfinite(s) && s > 0)) {
                 cache.erase(it);
-                throw InputError("size quadtree: the size field is " + number_text(s) + " at (" +
-                                 number_text(px) + ", " + number_text(py) +
+                throw InputError("size quadtree: the size field is " + format_number(s) + " at (" +
+                                 format_number(px) + ", " + format_number(py) +
                                  "); it must be finite and > 0 in the box");
             }
             it->second = s;
@@ -96,8 +91,8 @@ struct Builder {
             const double u = std::ldexp(side, -c.level);
             throw GeometryError("size quadtree: a cell at the maximum depth " +
                                 std::to_string(options.max_depth) + " near (" +
-                                number_text(x0 + (static_cast<double>(c.ix) + 0.5) * u) + ", " +
-                                number_text(y0 + (static_cast<double>(c.iy) + 0.5) * u) +
+                                format_number(x0 + (static_cast<double>(c.ix) + 0.5) * u) + ", " +
+                                format_number(y0 + (static_cast<double>(c.iy) + 0.5) * u) +
                                 ") still needs splitting (the size field varies too fast there)");
         }
         leaves += 3;
@@ -136,11 +131,11 @@ SizeQuadtree2::SizeQuadtree2(const std::function<double(double, double)>& field,
     }
     if (!(options.tolerance > 0 && std::isfinite(options.tolerance))) {
         throw InputError("size quadtree: the tolerance must be a finite number > 0 (got " +
-                         number_text(options.tolerance) + ")");
+                         format_number(options.tolerance) + ")");
     }
     if (!(options.cell_factor >= 0 && std::isfinite(options.cell_factor))) {
         throw InputError("size quadtree: the cell factor must be a finite number >= 0 (got " +
-                         number_text(options.cell_factor) + ")");
+                         format_number(options.cell_factor) + ")");
     }
     if (options.max_depth < 1 || options.max_depth > 30) {
         throw InputError("size quadtree: max_depth must be in [1, 30] (got " +

@@ -11,17 +11,12 @@
 #include <string>
 #include <utility>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 
 namespace exactmesh::generators {
 
 namespace {
-
-std::string number_text(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
-}
 
 /// H(v) in place: the largest grid function <= v with |H_i - H_j| <= g |x_i - x_j| for the
 /// grid neighbours j of i in a 16-neighbour stencil (the 4 axis neighbours, the 4 diagonal ones
@@ -103,15 +98,15 @@ SmoothedSizeGrid2::SmoothedSizeGrid2(const std::function<double(double, double)>
     }
     if (!(options.gradation > 0) || std::isnan(options.gradation)) {
         throw InputError("size smoothing: the gradation must be > 0 (got " +
-                         number_text(options.gradation) + ")");
+                         format_number(options.gradation) + ")");
     }
     if (!(options.length >= 0 && std::isfinite(options.length))) {
         throw InputError("size smoothing: the length must be a finite number >= 0 (got " +
-                         number_text(options.length) + ")");
+                         format_number(options.length) + ")");
     }
     if (!(options.residual > 0 && options.residual < 1)) {
         throw InputError("size smoothing: the residual must be in (0, 1) (got " +
-                         number_text(options.residual) + ")");
+                         format_number(options.residual) + ")");
     }
     hx_ = (box.x1 - box.x0) / (nx_ - 1);
     hy_ = (box.y1 - box.y0) / (ny_ - 1);
@@ -124,8 +119,8 @@ SmoothedSizeGrid2::SmoothedSizeGrid2(const std::function<double(double, double)>
     if (iterations * static_cast<double>(n) > kMaxSmoothingWork) {
         throw InputError(
             "size smoothing: the solve on " + std::to_string(nx_) + " x " + std::to_string(ny_) +
-            " nodes (cells " + number_text(hx_) + " x " + number_text(hy_) + ", length " +
-            number_text(length_) + ") would take about " +
+            " nodes (cells " + format_number(hx_) + " x " + format_number(hy_) + ", length " +
+            format_number(length_) + ") would take about " +
             std::to_string(static_cast<std::uint64_t>(iterations)) +
             " conjugate gradient iterations, " +
             std::to_string(static_cast<std::uint64_t>(iterations * static_cast<double>(n))) +
@@ -140,8 +135,8 @@ SmoothedSizeGrid2::SmoothedSizeGrid2(const std::function<double(double, double)>
         for (std::uint32_t i = 0; i < nx_; ++i) {
             const double s = field(node_x(i), node_y(j));
             if (!(std::isfinite(s) && s > 0)) {
-                throw InputError("size smoothing: the size field is " + number_text(s) + " at (" +
-                                 number_text(node_x(i)) + ", " + number_text(node_y(j)) +
+                throw InputError("size smoothing: the size field is " + format_number(s) + " at (" +
+                                 format_number(node_x(i)) + ", " + format_number(node_y(j)) +
                                  "); it must be finite and > 0 in the box");
             }
             raw_[i + std::size_t{nx_} * j] = s;
@@ -223,8 +218,8 @@ SmoothedSizeGrid2::SmoothedSizeGrid2(const std::function<double(double, double)>
         if (iteration++ >= budget) {
             throw GeometryError(
                 "size smoothing: conjugate gradients reached only a relative residual of " +
-                number_text(std::sqrt(rr) / norm_b) + " after " + std::to_string(budget) +
-                " iterations (asked " + number_text(options.residual) + ")");
+                format_number(std::sqrt(rr) / norm_b) + " after " + std::to_string(budget) +
+                " iterations (asked " + format_number(options.residual) + ")");
         }
         apply(p, q);
         const double alpha = rr / dot(p, q);

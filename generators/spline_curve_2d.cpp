@@ -14,7 +14,8 @@
 #include <string>
 #include <utility>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/constrained_2d.hpp"
 
@@ -24,12 +25,6 @@ namespace tri = triangulation;
 using Point = std::array<double, 2>;
 
 namespace {
-
-std::string number_text(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
-}
 
 /// Solves the tridiagonal system (sub a, diagonal b, super c; a[0], c[n-1] unused) for `count`
 /// right-hand sides stored interleaved in rhs (rhs[count * i + k]); diagonally dominant, so no
@@ -100,7 +95,7 @@ CubicSpline2::CubicSpline2(std::vector<double> xy, bool closed)
         if (!(h[i] > 0) || !std::isfinite(h[i])) {
             throw InputError("spline: control points " + std::to_string(i) + " and " +
                              std::to_string(j) + (h[i] > 0 ? " are too far apart" : " coincide") +
-                             " (" + number_text(xy_[2 * i]) + ", " + number_text(xy_[2 * i + 1]) +
+                             " (" + format_number(xy_[2 * i]) + ", " + format_number(xy_[2 * i + 1]) +
                              ")");
         }
         knots_[i + 1] = knots_[i] + h[i];
@@ -258,8 +253,8 @@ void check_no_crossing(const DomainPslg& d) {
                 const double* p = &d.xy[2 * std::size_t{d.segments[2 * s]}];
                 throw InputError("boundary loops: segments " + std::to_string(std::min(s, t)) +
                                  " and " + std::to_string(std::max(s, t)) +
-                                 " cross or touch (near (" + number_text(p[0]) + ", " +
-                                 number_text(p[1]) + "))");
+                                 " cross or touch (near (" + format_number(p[0]) + ", " +
+                                 format_number(p[1]) + "))");
             }
         }
     }

@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 
 namespace exactmesh::io {
 

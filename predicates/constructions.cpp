@@ -20,7 +20,8 @@
 #include <limits>
 #include <string>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/exact_range.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/orient2d.hpp"
@@ -33,21 +34,12 @@ namespace {
 thread_local ConstructionStats this_thread_stats;
 
 // ---------------------------------------------------------------------------------------------
-// Errors: every message names the construction, the problem and the points (%.17g round-trips).
+// Errors: every message names the construction, the problem and the points (format_point:
+// shortest round trip).
 
 std::string format_points(std::initializer_list<const double*> points, int dimension) {
     std::string text;
-    char value[40];
-    bool first_point = true;
-    for (const double* p : points) {
-        text += first_point ? "(" : ", (";
-        first_point = false;
-        for (int k = 0; k < dimension; ++k) {
-            std::snprintf(value, sizeof value, k == 0 ? "%.17g" : ", %.17g", p[k]);
-            text += value;
-        }
-        text += ')';
-    }
+    for (const double* p : points) text += (text.empty() ? "" : ", ") + format_point(p, dimension);
     return text;
 }
 

@@ -13,7 +13,8 @@
 #include <limits>
 #include <string>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 
 namespace exactmesh::predicates::detail {
 
@@ -85,9 +86,8 @@ inline bool rescale_into_safe_range(int degree, std::initializer_list<double> co
 inline void require_finite(const char* predicate, std::initializer_list<double> coordinates) {
     for (const double x : coordinates) {
         if (!std::isfinite(x)) {
-            char value[32];
-            std::snprintf(value, sizeof value, "%.17g", x);
-            throw GeometryError(std::string(predicate) + ": non-finite coordinate " + value);
+            throw GeometryError(std::string(predicate) + ": non-finite coordinate " +
+                                format_number(x));
         }
     }
 }

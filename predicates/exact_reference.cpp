@@ -13,7 +13,8 @@
 #include <string>
 #include <utility>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 
 namespace exactmesh::predicates::reference {
 
@@ -128,10 +129,9 @@ constexpr double kLiftPerturbationMaxCoordinate = 1048576.0;  // 2^20
 void require_small_integers(const char* predicate, std::initializer_list<double> coordinates) {
     for (const double x : coordinates) {
         if (!(std::fabs(x) <= kLiftPerturbationMaxCoordinate) || std::trunc(x) != x) {
-            char value[32];
-            std::snprintf(value, sizeof value, "%.17g", x);
             throw std::invalid_argument(std::string(predicate) +
-                                        ": needs integer coordinates |x| <= 2^20, got " + value);
+                                        ": needs integer coordinates |x| <= 2^20, got " +
+                                        format_number(x));
         }
     }
 }
@@ -219,9 +219,7 @@ Sign sign_of(const mpq_class& x) {
 
 mpq_class exact(double x) {
     if (!std::isfinite(x)) {
-        char value[32];
-        std::snprintf(value, sizeof value, "%.17g", x);
-        throw GeometryError(std::string("exact reference: non-finite coordinate ") + value);
+        throw GeometryError("exact reference: non-finite coordinate " + format_number(x));
     }
     return mpq_class(x);  // mpq_set_d is exact for every finite double, subnormals included
 }

@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/within_rounding_of_segment.hpp"
 #include "triangulation/cdt_phases_2d.hpp"
 #include "triangulation/cdt_state_2d.hpp"

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "predicates/errors.hpp"
-#include "predicates/number_text.hpp"
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/cdt_phases_2d.hpp"
 #include "triangulation/cdt_state_2d.hpp"

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "triangulation/cdt_phases_2d.hpp"
 #include "triangulation/cdt_state_2d.hpp"
 #include "triangulation/green_sibson_2d.hpp"

@@ -89,7 +89,5 @@ void mark_domain(CdtState& cdt);
 
 /// The result in the caller's numbering; consumes the state.
 Cdt2Result finish(CdtState& cdt);
-/// %.17g, as the warnings have always printed coordinates.
-std::string number_text(double value);
 
 }  // namespace exactmesh::triangulation::detail

@@ -16,8 +16,9 @@
 #include <utility>
 #include <vector>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/constructions.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/cdt_phases_2d.hpp"
 #include "triangulation/cdt_state_2d.hpp"
@@ -213,7 +214,7 @@ void split_at_intersection(CdtState& cdt, const Piece& piece, EdgeIdx h) {
             "segments " + cdt.segment_name(piece.segment) + " and " + cdt.segment_name(other) +
             " cross; split at new vertex " +
             std::to_string(cdt.core.input_index[candidate] + cdt.options.first_index) + " (" +
-            number_text(p[0]) + ", " + number_text(p[1]) + ")");
+            format_number(p[0]) + ", " + format_number(p[1]) + ")");
     }
     // u - v, no longer constrained, may not be locally Delaunay (the new vertex need not be
     // next to it): restore before recovering the four pieces.

@@ -10,7 +10,8 @@
 #include <string>
 #include <utility>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "triangulation/cdt_phases_2d.hpp"
 #include "triangulation/cdt_state_2d.hpp"
 #include "triangulation/delaunay_2d_core.hpp"
@@ -45,7 +46,7 @@ void require_finite_items(std::span<const double> values, std::size_t stride, co
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!std::isfinite(values[i])) {
             throw InputError(std::string(what) + " " + std::to_string(i / stride) +
-                             ": non-finite value " + detail::number_text(values[i]));
+                             ": non-finite value " + format_number(values[i]));
         }
     }
 }
@@ -53,12 +54,6 @@ void require_finite_items(std::span<const double> values, std::size_t stride, co
 }  // namespace
 
 namespace detail {
-
-std::string number_text(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
-}
 
 namespace {
 

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "base/counter_table.hpp"
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "triangulation/delaunay_2d.hpp"
 #include "triangulation/triangulation_2d.hpp"
 

@@ -20,8 +20,9 @@
 #include <string>
 #include <utility>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
-#include "predicates/errors.hpp"
 #include "triangulation/cdt_phases_2d.hpp"
 #include "triangulation/cdt_state_2d.hpp"
 
@@ -33,11 +34,6 @@ namespace {
 
 using predicates::Sign;
 
-std::string point_text(const double* p) {
-    char text[80];
-    std::snprintf(text, sizeof text, "(%.17g, %.17g)", p[0], p[1]);
-    return text;
-}
 
 /// bend_through_apex(near_apex(e)), or GeometryError when there is no such apex.
 VertIdx bend_at_apex(CdtState& cdt, EdgeIdx e);
@@ -226,7 +222,7 @@ VertIdx split_constrained_edge(CdtState& cdt, EdgeIdx e, double x, double y) {
         const double* pb = cdt.mesh.point(b);
         if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1])) {
             throw GeometryError("segment " + std::to_string(segment + cdt.options.first_index) +
-                                ": its piece " + point_text(pa) + " - " + point_text(pb) +
+                                ": its piece " + format_point(pa) + " - " + format_point(pb) +
                                 " is too short to split (adjacent doubles)");
         }
     }
@@ -291,8 +287,8 @@ VertIdx bend_at_apex(CdtState& cdt, EdgeIdx e) {
     if (best == kNone) {
         throw GeometryError(
             "segment " + std::to_string(cdt.segment_of[e] + cdt.options.first_index) +
-            ": its piece " + point_text(cdt.mesh.point(cdt.mesh.origin(e))) + " - " +
-            point_text(cdt.mesh.point(cdt.mesh.destination(e))) +
+            ": its piece " + format_point(cdt.mesh.point(cdt.mesh.origin(e))) + " - " +
+            format_point(cdt.mesh.point(cdt.mesh.destination(e))) +
             " cannot be split: features within rounding of it (finer than double precision "
             "resolves)");
     }

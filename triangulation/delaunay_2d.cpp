@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "triangulation/bowyer_watson_2d.hpp"
 #include "triangulation/green_sibson_2d.hpp"
 #include "triangulation/tanemura_merriam_2d.hpp"

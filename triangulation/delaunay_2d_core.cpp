@@ -7,7 +7,8 @@
 #include <cstdio>
 #include <string>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
@@ -25,8 +26,7 @@ void validate_points_2d(std::span<const double> xy) {
     }
     for (std::size_t i = 0; i < xy.size(); ++i) {
         if (!std::isfinite(xy[i])) {
-            char value[32];
-            std::snprintf(value, sizeof value, "%.17g", xy[i]);
+            const std::string value = format_number(xy[i]);
             const auto v = static_cast<std::uint32_t>(i / 2);
             throw NonFiniteCoordinate("point " + std::to_string(v) + ": non-finite " +
                                           (i % 2 == 0 ? "x" : "y") + " coordinate " + value,

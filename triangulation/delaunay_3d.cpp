@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "triangulation/bowyer_watson_3d.hpp"
 #include "triangulation/green_sibson_3d.hpp"
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "base/counter_table.hpp"
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "triangulation/delaunay_2d.hpp"  // InsertionOrder
 #include "triangulation/tetrahedralization_3d.hpp"
 

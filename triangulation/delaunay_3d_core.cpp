@@ -9,7 +9,8 @@
 #include <string>
 #include <utility>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
@@ -33,8 +34,7 @@ void validate_points_3d(std::span<const double> xyz) {
     }
     for (std::size_t i = 0; i < xyz.size(); ++i) {
         if (!std::isfinite(xyz[i])) {
-            char value[32];
-            std::snprintf(value, sizeof value, "%.17g", xyz[i]);
+            const std::string value = format_number(xyz[i]);
             const auto v = static_cast<std::uint32_t>(i / 3);
             const char* axis = i % 3 == 0 ? "x" : i % 3 == 1 ? "y" : "z";
             throw NonFiniteCoordinate(

@@ -33,8 +33,8 @@
 #include <utility>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/bowyer_watson_2d.hpp"
 #include "triangulation/flip_2d.hpp"

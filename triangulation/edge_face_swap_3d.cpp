@@ -29,8 +29,8 @@
 #include <deque>
 #include <string>
 
+#include "base/errors.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/sos.hpp"
 
 namespace exactmesh::triangulation {

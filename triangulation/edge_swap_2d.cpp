@@ -53,8 +53,9 @@
 #include <utility>
 #include <vector>
 
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
@@ -280,10 +281,8 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion) {
     }
     for (std::size_t v = 0; v < criterion.values.size(); ++v) {
         if (!std::isfinite(criterion.values[v])) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%.17g", criterion.values[v]);
             throw InputError("data-dependent swapping: value of vertex " + std::to_string(v) +
-                             " is not finite (" + text + ")");
+                             " is not finite (" + format_number(criterion.values[v]) + ")");
         }
     }
     return swap_loop(mesh, true, [&](const TriMesh2& work, const Quad& q) {

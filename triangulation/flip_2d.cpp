@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <utility>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 
 namespace exactmesh::triangulation {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/sos.hpp"
 

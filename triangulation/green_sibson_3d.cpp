@@ -20,7 +20,7 @@
 #include <bit>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "triangulation/delaunay_3d_core.hpp"
 
 namespace exactmesh::triangulation {

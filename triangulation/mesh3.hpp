@@ -36,7 +36,7 @@
 #include <string>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "triangulation/mesh2.hpp"
 
 namespace exactmesh::triangulation {

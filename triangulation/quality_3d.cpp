@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
+#include "base/errors.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
-#include "predicates/errors.hpp"
 
 namespace exactmesh::triangulation {
 

@@ -8,8 +8,8 @@
 #include <limits>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "predicates/constructions.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/delaunay_2d_core.hpp"
 

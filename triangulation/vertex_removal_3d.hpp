@@ -20,7 +20,7 @@
 #include <span>
 #include <string>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "triangulation/flip_3d.hpp"
 #include "triangulation/tetrahedralization_3d.hpp"
 

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/fuzz/fuzz_pslg.hpp"
 #include "triangulation/check_2d.hpp"

@@ -24,10 +24,10 @@
 #include <utility>
 #include <vector>
 
-#include "predicates/errors.hpp"
-#include "triangulation/delaunay_2d_naive.hpp"
+#include "base/errors.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/delaunay_2d.hpp"
+#include "triangulation/delaunay_2d_naive.hpp"
 
 namespace {
 

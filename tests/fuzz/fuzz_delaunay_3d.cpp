@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
 #include "triangulation/check_3d.hpp"
 #include "triangulation/delaunay_3d.hpp"

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/delaunay_refinement_2d.hpp"
-#include "predicates/errors.hpp"
 #include "tests/fuzz/fuzz_pslg.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 

@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "tests/fuzz/mesh_generators_2d_case.hpp"
 
 namespace {

@@ -22,7 +22,7 @@
 #include <optional>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "predicates/sign.hpp"
 
 namespace exactmesh::fuzz {

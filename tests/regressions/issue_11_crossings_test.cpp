@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "predicates/constructions.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d.hpp"

@@ -8,8 +8,8 @@
 
 #include <string>
 
+#include "base/errors.hpp"
 #include "generators/mesh_generators_2d.hpp"
-#include "predicates/errors.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 

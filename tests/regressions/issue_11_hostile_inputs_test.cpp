@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "base/number_text.hpp"
 #include "io/format_error.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
-#include "predicates/number_text.hpp"
 #include "triangulation/constrained_2d.hpp"
 
 namespace {

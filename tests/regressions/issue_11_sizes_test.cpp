@@ -8,9 +8,9 @@
 #include <cmath>
 #include <string>
 
+#include "base/errors.hpp"
 #include "generators/mesh_generators_2d.hpp"
 #include "generators/size_function.hpp"
-#include "predicates/errors.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 
 namespace {
@@ -73,7 +73,7 @@ TEST(Regression, issue_11_size_that_touches_zero_names_the_point) {
     options.size = gen::SizeFunction::analytic([](double, double) { return NAN; }, "nan");
     EXPECT_TRUE(
         contains(input_error(gen::find_mesh_generator_2d("frontal"), square.pslg(), options),
-                 "the size function (nan) is nan at"));
+                 "the size function (nan) is NaN at"));
 }
 
 TEST(Regression, issue_11_explicit_budget_is_checked_before_meshing) {

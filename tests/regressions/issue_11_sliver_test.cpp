@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/mesh_generators_2d.hpp"
-#include "predicates/errors.hpp"
 #include "tests/support/fuzz_replay_2d.hpp"
 #include "triangulation/check_conforming_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"

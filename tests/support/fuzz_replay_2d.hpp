@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "tests/fuzz/mesh_generators_2d_case.hpp"
 
 namespace exactmesh::testing {

@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/delaunay_refinement_2d.hpp"
 #include "generators/pslg_inputs.hpp"
 #include "generators/sample_domains.hpp"
-#include "predicates/errors.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"

@@ -19,11 +19,11 @@
 #include <utility>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/domain_boundary_2d.hpp"
 #include "generators/domain_mesh_2d.hpp"
 #include "generators/pslg_inputs.hpp"
 #include "generators/sample_domains.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/check_conforming_2d.hpp"

@@ -11,11 +11,11 @@
 #include <random>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/delaunay_refinement_2d.hpp"
 #include "generators/laplacian_smoothing_2d.hpp"
 #include "generators/quality_2d.hpp"
 #include "generators/sample_domains.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 

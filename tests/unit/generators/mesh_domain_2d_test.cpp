@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/graded_boundary_size_2d.hpp"
 #include "generators/mesh_generators_2d.hpp"
 #include "generators/region_areas_2d.hpp"
 #include "generators/sample_domains.hpp"
-#include "predicates/errors.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/constrained_2d.hpp"
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/sample_domains.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 

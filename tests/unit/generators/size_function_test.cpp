@@ -18,11 +18,11 @@
 #include <utility>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/background_size_2d.hpp"
 #include "generators/size_function.hpp"
 #include "generators/size_quadtree_2d.hpp"
 #include "generators/size_smoothing_2d.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/orient2d.hpp"
 
 namespace em = exactmesh;

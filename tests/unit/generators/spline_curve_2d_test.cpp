@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/delaunay_refinement_2d.hpp"
 #include "generators/spline_curve_2d.hpp"
-#include "predicates/errors.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 
 namespace em = exactmesh;

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "predicates/exact_reference.hpp"
 #include "predicates/filter_constants.hpp"
 #include "predicates/incircle.hpp"

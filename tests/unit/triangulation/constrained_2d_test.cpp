@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/check_2d.hpp"

@@ -14,8 +14,8 @@
 
 #include <gmpxx.h>
 
+#include "base/errors.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
-#include "predicates/errors.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/check_constrained_2d.hpp"
 #include "triangulation/constrained_2d.hpp"

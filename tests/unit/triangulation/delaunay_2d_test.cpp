@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "triangulation/bowyer_watson_2d.hpp"
 #include "triangulation/check_2d.hpp"
 #include "triangulation/green_sibson_2d.hpp"

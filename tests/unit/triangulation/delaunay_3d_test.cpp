@@ -16,7 +16,7 @@
 #include <span>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/sos.hpp"

@@ -13,8 +13,8 @@
 #include <random>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
-#include "predicates/errors.hpp"
 #include "predicates/orient3d.hpp"
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
 #include "tests/support/local_delaunay_3d.hpp"

@@ -13,11 +13,11 @@
 #include <set>
 #include <vector>
 
-#include "predicates/errors.hpp"
+#include "base/errors.hpp"
+#include "generators/sweep_triangulation_2d.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
-#include "tests/support/sweep_triangulation_2d.hpp"
 #include "triangulation/bowyer_watson_2d.hpp"
 #include "triangulation/edge_swap_2d.hpp"
 #include "triangulation/flip_2d.hpp"
@@ -346,7 +346,7 @@ TEST(Triangulation_Flip2, LawsonSwapsOnTheKernelFromASweepReachBowyerWatson) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<double> xy;
     for (int i = 0; i < 2 * 500; ++i) xy.push_back(unit(rng));
-    tri::Triangulation2 sweep = em::testing::sweep_triangulation_2d(xy);
+    tri::Triangulation2 sweep = em::generators::sweep_triangulation_2d(xy);
     std::uint64_t flips = 0;
     {
         tri::HalfEdgeEdit edit(sweep);

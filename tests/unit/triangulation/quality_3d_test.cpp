@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
-#include "predicates/errors.hpp"
 #include "triangulation/quality_3d.hpp"
 
 namespace em = exactmesh;

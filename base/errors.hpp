@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The exception hierarchy shared by every layer (the bottom layer owns it so all can throw it).
+// The exception hierarchy shared by every layer (base/: every layer may include it).
 #pragma once
 
 #include <cstdint>
