@@ -512,9 +512,9 @@ TEST(Triangulation_TanemuraMerriam2, NearlyCocircularAtTheSlackScaleMatchesBowye
     // bound would take or drop. At scale 1 and scaled by 2^600 and 2^-600 (exact), the same
     // triangles as Bowyer-Watson's, under the same perturbation.
     std::vector<double> base;
-    const double offsets[] = {0,     1e-8,  -1e-8,  3e-9,  -3e-9,  1e-10, -1e-10, 1e-11, -1e-11,
-                              1e-12, -1e-12, 1e-13, -1e-13, 1e-14, -1e-14, 1e-15, -1e-15, 1e-16,
-                              -1e-16};
+    const double offsets[] = {0,      1e-8,   -1e-8,  3e-9,   -3e-9, 1e-10,  -1e-10,
+                              1e-11,  -1e-11, 1e-12,  -1e-12, 1e-13, -1e-13, 1e-14,
+                              -1e-14, 1e-15,  -1e-15, 1e-16,  -1e-16};
     const double centres[][2] = {{0, 0}, {0.75, 0.2}, {-0.4, 0.9}};
     int k = 0;
     for (const auto& centre : centres) {
