@@ -331,6 +331,10 @@ void register_all() {
             ->Unit(benchmark::kMillisecond);
 #endif
     }
+    // A degenerate input for gift wrapping: on the integer grid every circle through three
+    // neighbours passes through a fourth, a candidate the exact incircle decides.
+    register_family({"tanemura-merriam", Distribution::Grid, InsertionOrder::Given, "none"}, 10,
+                    16, benchmark::oNLogN);
     // The adversary (see PointOrder): the parabola by decreasing t, inserted as given, against
     // the same points shuffled; and, for the record, as generated (increasing t), in that order.
     const Distribution parabola = Distribution::Parabola;

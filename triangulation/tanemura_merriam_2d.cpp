@@ -395,17 +395,17 @@ int difference_exponent(double p, double q) {
     return exponent_of(0.5 * p - 0.5 * q) + 1;
 }
 
-/// Bounds of the gift-wrapping search in double precision; none is a filter of predicates/.
-/// Two groups:
-/// - Prune-only (never deciding a sign): cells, k-d boxes and the lens are skipped when they lie
-///   certainly right of ab or certainly outside the current circle (a skipped region holds no
-///   better candidate); the bounds overestimate the rounding of those tests.
-/// - Candidate bounds (the circle's slack, kCertainRelative, kCertainSquares, kPowerRelative):
-///   these DO stand in for a predicate. A candidate certainly outside the current circle is
-///   dropped, and one certainly inside (and left of ab by the exact orient2d) is taken, without
-///   an incircle call; both are what the exact incircle would say when the bounds hold, but the
-///   bounds are hand-derived (comments at Circle and circle()), not Gappa-proven (issue 12).
-// Prune-only.
+/// Bounds of the gift-wrapping search in double precision; none is a filter of predicates/, and
+/// all are PRUNE-ONLY: they never decide a sign. They only skip what certainly cannot be a
+/// better third vertex: cells, kd boxes and single candidates that lie certainly right of ab,
+/// or certainly outside a safe over-estimate of the current circle (its computed centre and
+/// radius widened by `slack`, which bounds their error: proof at circle()). Every candidate
+/// they do not skip is decided by the exact orient2d and the perturbed incircle of predicates/,
+/// so a bound that were too tight could only lose a better candidate, never take a wrong one;
+/// that is why their proofs are over-estimates with wide margins. (Before issue 12 a candidate
+/// certainly inside by these bounds was taken without incircle; now incircle decides it, which
+/// costs about one incircle call per taken candidate.)
+// Cells, boxes and the lens.
 constexpr double kBoxCrossRelative = 0x1p-48;     ///< cross product of a box corner with fb
 constexpr double kBoxCrossUnderflow = 0x1p-1066;  ///< its underflow share
 constexpr double kPowerBoxSize = 0x1p-20;         ///< boxes below this times r get the power test
@@ -415,7 +415,7 @@ constexpr double kPositionRelative = 0x1p-51;     ///< rounding of an absolute c
 constexpr double kGridAbsolute = 1e-14;       ///< absolute error in grid units (coordinates < 1)
 constexpr double kCellRelative = 1e-9;        ///< error of cell boundaries, per cell size
 constexpr double kGridUnderflow = 0x1p-1070;  ///< underflow of a and b in grid units
-// Candidate bounds and the circle's error (circle()).
+// The circle's safe over-estimate (circle()) and the tests against it (candidates and boxes).
 constexpr double kDoubleCentreMinSine = 1e-4;  ///< sin(angle at a) above which the centre is double
 constexpr double kDoubleCentreRange = 0x1p600;   ///< |c - a|^2 range of the double centre
 constexpr double kDoubleCentreSlack = 1e-8;      ///< slack of the double centre, per r
@@ -425,16 +425,18 @@ constexpr double kCircleAbsolute = 0x1p-1000;    ///< products' underflow, absol
 constexpr double kLargestRadius = 0x1p400;       ///< larger circles go to the exact predicates
 constexpr double kCertainRelative = 0x1p-50;     ///< distance rounding of the certain tests
 constexpr double kCertainSquares = 0x1p-40;      ///< rounding of dist2 and the squared bounds
-constexpr double kSmallestInner = 0x1p-400;      ///< smallest inner radius squared
+constexpr double kSmallestInner = 0x1p-400;      ///< smallest inner radius (skips power tests)
 constexpr double kPowerRelative = 0x1p-46;       ///< the power's relative rounding
 
 /// The circle through a, b and the current best third vertex, relative to a: centre
 /// a + (ux, uy), radius r; `slack` bounds the error of the centre and of r (at least twice the
 /// centre's error sigma); `absolute` is the part of the centre's error not relative to r.
 /// Candidates are tested in the edge's frame (see GiftWrapper::frame_), where r >= 2^-53 and
-/// r <= 2^400, so no square under- or overflows: first |w - u|^2 against outer2 and inner2
-/// (w = d - a), which put d certainly outside or inside; then, between the two, the power
-/// r^2 - |w - u|^2 = 2 w.u - |w|^2 (the circle passes through a, so |u| = r), positive inside.
+/// r <= 2^400, so no square under- or overflows: first |w - u|^2 against outer2 (w = d - a),
+/// beyond which d is certainly outside and skipped; then, unless within inner2 (certainly
+/// inside), the power r^2 - |w - u|^2 = 2 w.u - |w|^2 (the circle passes through a, so
+/// |u| = r), positive inside, skips d when certainly negative. These only skip candidates:
+/// the exact predicates decide the rest.
 /// The power's computed error is below |w| (2 sigma + 22 u (r + |w|)) + 2^-1015 r, u = 2^-53:
 /// the centre's error times 2|w|, w's own rounding (u |w| per coordinate plus underflow) times
 /// 2r + 2|w|, and about 7u relative roundings of products and sums; power_slack and
@@ -461,10 +463,9 @@ public:
     /// candidate is known only its circle's part left of ab (the lens) can hold a better one,
     /// and a better candidate only shrinks the lens. Cells are searched in square rings
     /// around a start point, nearest first, each ring clipped to the cells that may meet the
-    /// current lens, until the rings hold all of those. Candidates are filtered in double
-    /// precision with error bounds (outside the circle by more than the bound: not better;
-    /// inside by more, and certainly left of ab: better); only the rest go to the exact
-    /// predicates.
+    /// current lens, until the rings hold all of those. A candidate outside the circle by more
+    /// than its error bound is skipped (prune-only); every other one is decided by the exact
+    /// orient2d and the perturbed incircle.
     VertIdx third_vertex(VertIdx a, VertIdx b) {
         const double s = layout_.scale;
         a_ = a;
@@ -653,10 +654,11 @@ private:
 
     /// The power test (see Circle) of candidate d near the circle (neither beyond outer2 nor
     /// within inner2): from a, b and c in the frame, then from them in input coordinates (for
-    /// offsets that underflowed in the frame). -1 certainly outside, +1 certainly inside, 0
-    /// undecided. Rare but for points within about 2^-40 of the circle and for clusters far
-    /// below the edge's length.
-    [[gnu::noinline]] int near_circle(const double* pd) const {
+    /// offsets that underflowed in the frame). True when d lies certainly outside the circle,
+    /// which only skips d (prune-only: a false answer sends d to the exact predicates, whatever
+    /// the power's sign). Rare but for points within about 2^-40 of the circle and for
+    /// clusters far below the edge's length.
+    [[gnu::noinline]] bool certainly_outside_by_power(const double* pd) const {
         for (unsigned from = 0; from < 3; ++from) {
             const OnCircle o = on_circle(from);
             const double vx = pd[0] * frame_ - o.x, vy = pd[1] * frame_ - o.y;
@@ -664,15 +666,15 @@ private:
             const double reach = std::fabs(vx) + std::fabs(vy);
             const double bound =
                 reach * (circle_.power_slack + kPowerRelative * reach) + circle_.power_absolute;
-            if (power < -bound) return -1;
-            if (power > bound) return 1;
+            if (power < -bound) return true;
+            if (power > bound) return false;  // certainly inside: the power cannot skip it
         }
         for (unsigned from = 0; from < 3; ++from) {
             const ScaledPower scaled = scaled_power(from, pd[0], pd[0], pd[1], pd[1]);
-            if (scaled.value < -scaled.bound) return -1;
-            if (scaled.value > scaled.bound) return 1;
+            if (scaled.value < -scaled.bound) return true;
+            if (scaled.value > scaled.bound) return false;
         }
-        return 0;
+        return false;
     }
 
     /// The power test (see Circle) of the box [x0, x1] x [y0, y1] in input coordinates (a point
@@ -773,6 +775,10 @@ private:
             return;
         }
         if (circle_.bounded) {
+            // Prune-only (see the constants): skip d when it lies certainly outside a safe
+            // over-estimate of the current circle, the same argument as for a cell or a kd box
+            // (a point is a box of size zero). Whatever passes is decided by the exact
+            // predicates below: no double bound takes a candidate.
             // w = d - a in the frame: one rounding per coordinate, at most 2^-53 (|e| + r) in
             // length, plus underflow below 2^-1073 (covered by the slack). A product d * frame_
             // that overflows puts d at least 2^971 from a, certainly outside (r <= 2^400); one
@@ -781,16 +787,10 @@ private:
             const double ex = wx - circle_.ux, ey = wy - circle_.uy;
             const double dist2 = ex * ex + ey * ey;
             if (dist2 > circle_.outer2) return;  // certainly outside: not better
-            const int verdict = dist2 < circle_.inner2 ? 1 : near_circle(pd);
-            if (verdict < 0) return;  // certainly outside
-            if (!left_of_edge(pd)) return;
-            if (verdict > 0) {
-                take(d);  // certainly inside, so the perturbed test is positive too
-                return;
-            }
-        } else if (!left_of_edge(pd)) {
-            return;
+            // Within inner2 the power test cannot skip d: spare it (a shortcut, no decision).
+            if (!(dist2 < circle_.inner2) && certainly_outside_by_power(pd)) return;
         }
+        if (!left_of_edge(pd)) return;
         if (core_.incircle(a_, b_, best_, d) == Sign::Positive) take(d);
     }
 
@@ -868,12 +868,36 @@ private:
         boxed_ = true;
     }
 
-    /// The circle through a, b, c in the edge's frame. The centre is computed in double when
-    /// the angle at a is not tiny and c - a is neither tiny nor huge against b - a, else
-    /// correctly rounded. With sin(angle at a) > 5e-5 the double centre's error is below
-    /// 4e-11 r (the numerators' error over the determinant, 6u L / sin with L <= 2r, plus the
-    /// determinant's relative error 6u / sin; |b - a| >= 2^-53 and 2^-300 <= |c - a| <= 2^300
-    /// keep every product far from underflow and overflow); the slack is 1e-8 r.
+    /// The circle through a, b, c in the edge's frame, with `slack` bounding the error of its
+    /// centre and radius: the over-estimate the prunes use (and nothing else). The centre is
+    /// computed in double when the angle at a is not tiny and c - a is neither tiny nor huge
+    /// against b - a, else correctly rounded (predicates::circumcenter).
+    /// Proof of the double centre's bound (u = 2^-53, first order; the second-order terms are
+    /// below u times the first): let B, C be the exact offsets b - a, c - a in the frame, U the
+    /// exact centre (2 B.U = |B|^2, 2 C.U = |C|^2), r = |U|, s = sin(angle at a), so that
+    /// det(B, C) = |B| |C| s, and |B|, |C| <= 2r (chords).
+    ///  1. The computed offsets b, c differ from B, C by at most u |B|, u |C| (the products by
+    ///     frame_ are exact powers of two but for underflow, covered by kCircleAbsolute).
+    ///     Differentiating the two equations, dU = M^-1 (dB.(B - U), dC.(C - U)) with
+    ///     M = [B; C]; |B - U| = |C - U| = r and |M^-1 v| <= (|C| |v1| + |B| |v2|) / det, so
+    ///     the circle of (0, b, c) has its centre within 2u r / s of U.
+    ///  2. det = 2 (bx cy - by cx): error at most 3u (|bx cy| + |by cx|) <= 3u |b| |c|
+    ///     (Cauchy-Schwarz), a relative error of 3u / s, which moves the quotient by 3u r / s.
+    ///  3. The numerators cy b2 - by c2 and bx c2 - cx b2: each term is a product of 4 roundings
+    ///     and the difference one more, error at most 5u (|c| |b|^2 + |b| |c|^2) for the pair
+    ///     (as a vector); over |det| = 2 |b| |c| s that is 5u (|b| + |c|) / (2s) <= 10u r / s.
+    ///  4. The divisions: u |U| <= u r per coordinate, 2u r in length.
+    /// So the centre is within (2 + 3 + 10) u r / s + 2u r < 16u r / s + 2u r of U. The test
+    /// below accepts the double centre when the computed |det| = 2 |b| |c| s exceeds
+    /// 1e-4 |b| |c| (both as computed, relative errors below 8u), i.e. s > 5e-5 (1 - 16u) >
+    /// 4.9e-5: the error is below 16u r / 4.9e-5 + 2u r < 3.7e-11 r. r is formed from the
+    /// centre with a relative error below 2u, so the radius is within 3.8e-11 r of the true
+    /// one. The slack is 1e-8 r (kDoubleCentreSlack), over 250 times that (the tests
+    /// against it add their own rounding: kCertainRelative, kCertainSquares, kPowerRelative,
+    /// at Circle and below); and 2^-300 < |c - a| < 2^300 (c2 in
+    /// kDoubleCentreRange) with 1 <= |b - a|_inf < 2 keeps every product above 2^-1000 r and
+    /// below overflow, but for a component of b or c near zero, whose products' underflow
+    /// (2^-1074 each) kCircleAbsolute covers.
     Circle circle(VertIdx c) const {
         const double* pc = mesh_.point(c);
         const double bx = fbx_, by = fby_;
@@ -910,10 +934,11 @@ private:
         // Beyond 2^400 (three points collinear to 2^-400 or so) the squares would overflow:
         // such a circle, or a non-finite one, is left to the exact predicates.
         if (!(r <= kLargestRadius) || !(out.slack <= 2 * kLargestRadius)) return out;
-        // Certainly outside: |e| > r + slack + 2^-53 (|e| + r); certainly inside: |e| below
-        // r - slack - 2^-53 (|e| + r). The factors on the squares cover the rounding of dist2
-        // and of these bounds, and (r and the inner bound being above 2^-400) its underflow.
-        // The power's bound: see Circle (the slack is at least twice sigma).
+        // Certainly outside (skipped): |e| > r + slack + 2^-53 (|e| + r); certainly inside
+        // (only spared the power test, see consider()): |e| below r - slack - 2^-53 (|e| + r). The
+        // factors on the squares cover the rounding of dist2 and of these bounds, and (r and the
+        // inner bound being above 2^-400) its underflow. The power's bound: see Circle (the slack
+        // is at least twice sigma).
         const double outer = r * (1 + kCertainRelative) + out.slack;
         const double inner = r * (1 - kCertainRelative) - out.slack;
         out.outer2 = outer * outer * (1 + kCertainSquares);
