@@ -4,8 +4,8 @@
 // rounded differences is exact, so only the rounding of the differences is bounded. Stage C:
 // first-order tail terms are added in floating point. Valid without underflow, which the
 // expansion-safe range check before these stages guarantees (proofs/invariants/filters.md).
-// Unlike the stage-A constants these are not re-proved in Gappa: B and C are Shewchuk's, the
-// two-term bounds are derived by hand in proofs/invariants/filters.md.
+// B and C are Shewchuk's and not re-proved here; the two-term constants are checked by Gappa
+// (proofs/gappa/two_term_*.g, CTest proofs.two_term_*).
 #pragma once
 
 namespace exactmesh::predicates::adaptive {
@@ -21,10 +21,12 @@ inline constexpr double icc_errbound_c = (44.0 + 576.0 * kEpsilon) * kEpsilon * 
 inline constexpr double isp_errbound_b = (5.0 + 72.0 * kEpsilon) * kEpsilon;
 inline constexpr double isp_errbound_c = (71.0 + 1408.0 * kEpsilon) * kEpsilon * kEpsilon;
 
-// The two-term evaluation of stage B (predicates/two_term.hpp): |hi + lo - B| is at most 52 u^2
-// (incircle) and 147 u^2 (insphere) times the permanent, u = kEpsilon; the constants below
-// are more than twice that, so that the rounding of the permanent and of the bound itself, and
-// of fl(hi + lo), are covered (proofs/invariants/filters.md, "Two-term stage").
+// The two-term evaluation of stage B (predicates/two_term.hpp): |hi + lo - B| is at most
+// 42.05 u^2 (incircle) and 100.18 u^2 (insphere) times the permanent, u = kEpsilon
+// (proofs/gappa/two_term_incircle.g, two_term_insphere.g); the constants below are more than
+// 12/5 times that after the rounding of the permanent and of fl(hi + lo), as the stages using
+// them need (proofs/invariants/filters.md, "Two-term stage"). Written K * kEpsilon * kEpsilon:
+// proofs/check_two_term_constants.cmake reads K.
 inline constexpr double icc_errbound_two_term = 128.0 * kEpsilon * kEpsilon;
 inline constexpr double isp_errbound_two_term = 512.0 * kEpsilon * kEpsilon;
 

@@ -57,4 +57,14 @@ inline constexpr long double within_rounding_filter_eps = 0x1p-61L;
 inline constexpr long double angle_comparisons_3d_filter_factor = 0x1p+0L;
 inline constexpr int angle_comparisons_3d_filter_max_roundings = 64;
 
+// triangle_area_sign's stage A (predicates/triangle_area.cpp) certifies r = fl(det - bound)
+// when |r| > eps (|p| + |q|) + result_eps (|det| + |bound|) + floor, all computed, the
+// differences scaled to a largest magnitude in [1, 2). proofs/gappa/triangle_area_filter.g; the
+// CTest test proofs.triangle_area_filter (proofs/check_triangle_area_constants.cmake) proves the
+// three and fails if eps / 2 or result_eps / 2 is proven too (floor is not the least: 2^-1071
+// is proven as well; it is kept so that every decision stays the same).
+inline constexpr double triangle_area_filter_eps = 0x1p-51;
+inline constexpr double triangle_area_filter_result_eps = 0x1p-52;
+inline constexpr double triangle_area_filter_floor = 0x1p-1060;
+
 }  // namespace exactmesh::predicates

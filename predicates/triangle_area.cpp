@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "predicates/exact_range.hpp"
+#include "predicates/filter_constants.hpp"
 #include "predicates/gmp_fallback.hpp"
 #include "predicates/power_of_two.hpp"
 
@@ -23,7 +24,8 @@ Sign triangle_area_sign(const double* a, const double* b, const double* c, doubl
         // P = |d0 d3| + |d1 d2| the computed determinant is within 3.02 u P + u |det| of the
         // exact scaled one, the bound 2 area 2^(2 shift) within 2^-1075 (underflow; overflow
         // gives +-infinity, decided by its sign: |det| <= 8), and the difference r within
-        // u |r| more; subnormal products add at most a few 2^-1075.
+        // u |r| more; subnormal products add at most a few 2^-1075. The constants are proved
+        // in proofs/gappa/triangle_area_filter.g (proofs/invariants/filters.md).
         const int shift = unit_shift(largest);
         const PowerOfTwo unit(shift);
         for (double& x : d) x = unit(x);
@@ -32,9 +34,9 @@ Sign triangle_area_sign(const double* a, const double* b, const double* c, doubl
         const double bound = std::ldexp(area, 2 * shift + 1);
         if (std::isinf(bound)) return bound > 0 ? Sign::Negative : Sign::Positive;
         const double r = det - bound;
-        constexpr double u = 0x1p-53;
-        const double error = 4 * u * (std::fabs(p) + std::fabs(q)) +
-                             2 * u * (std::fabs(det) + std::fabs(bound)) + 0x1p-1060;
+        const double error = triangle_area_filter_eps * (std::fabs(p) + std::fabs(q)) +
+                             triangle_area_filter_result_eps * (std::fabs(det) + std::fabs(bound)) +
+                             triangle_area_filter_floor;
         if (r > error) return Sign::Positive;
         if (-r > error) return Sign::Negative;
     }

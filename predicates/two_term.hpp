@@ -5,8 +5,9 @@
 // insphere to decide the determinant of the rounded differences to about u^2 (u = 2^-53) of its
 // permanent, before any expansion. The bounds (E, H, L below, in units of the permanent P of the
 // value: |hi + lo - X| <= E u^2 P, |hi| <= H P, |lo| <= L u P) are derived in
-// proofs/invariants/filters.md, "Two-term stage"; they need no underflow and no overflow, which
-// the expansion-safe range check guarantees. Internal to predicates/.
+// proofs/invariants/filters.md, "Two-term stage" (by hand; the instances used by incircle and
+// insphere are re-proved, tighter, by proofs/gappa/two_term_*.g); they need no underflow and no
+// overflow, which the expansion-safe range check guarantees. Internal to predicates/.
 #pragma once
 
 #include "predicates/expansion.hpp"
@@ -85,7 +86,8 @@ inline TwoTerm operator-(const TwoTerm& x) noexcept {
 }
 
 /// incircle's stage B, det [p-d, |p-d|^2] over the rounded differences
-/// diff = (adx, ady, bdx, bdy, cdx, cdy), along the lift column: within 52 u^2 of its permanent.
+/// diff = (adx, ady, bdx, bdy, cdx, cdy), along the lift column: within 42.05 u^2 of its permanent
+/// (Gappa).
 inline TwoTerm incircle_stage_b(const double* diff) noexcept {
     const double adx = diff[0], ady = diff[1], bdx = diff[2], bdy = diff[3];
     const double cdx = diff[4], cdy = diff[5];
@@ -99,7 +101,8 @@ inline TwoTerm incircle_stage_b(const double* diff) noexcept {
 
 /// insphere's stage B, det [p-e, |p-e|^2] over the rounded differences
 /// diff = (aex, aey, aez, bex, ..., dez), as (dlift abc - clift dab) + (blift cda - alift bcd)
-/// with the 3x3 minors along z (insphere_fast's order): within 142 u^2 of its permanent.
+/// with the 3x3 minors along z (insphere_fast's order): within 100.18 u^2 of its permanent
+/// (Gappa).
 inline TwoTerm insphere_stage_b(const double* diff) noexcept {
     const double aex = diff[0], aey = diff[1], aez = diff[2], bex = diff[3], bey = diff[4];
     const double bez = diff[5], cex = diff[6], cey = diff[7], cez = diff[8], dex = diff[9];

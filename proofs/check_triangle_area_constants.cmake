@@ -1,0 +1,78 @@
+# SPDX-License-Identifier: MIT
+# Checks the three constants of triangle_area_sign's stage A (predicates/filter_constants.hpp:
+# triangle_area_filter_eps, _result_eps, _floor) against proofs/gappa/triangle_area_filter.g; the
+# model and the hand steps are in proofs/invariants/filters.md ("triangle_area_sign").
+#
+#   cmake [-DGAPPA=<gappa>] [-DOUT_DIR=<dir>] -P proofs/check_triangle_area_constants.cmake
+#
+# 1. reads the three constants from the header; each must be a power of two written 0x1p±e;
+# 2. requires Gappa to prove the script with them, with no warning that the rewriting is not an
+#    identity;
+# 3. requires Gappa to fail with eps / 2 and with result_eps / 2 (each is the least power of two
+#    this model allows). floor is only required to be proven: a smaller one is proven too, and
+#    the header keeps 2^-1060 so that every decision stays the same.
+cmake_minimum_required(VERSION 3.25)
+
+cmake_path(GET CMAKE_CURRENT_LIST_DIR PARENT_PATH source_dir)
+set(header "${source_dir}/predicates/filter_constants.hpp")
+if(NOT DEFINED GAPPA)
+  find_program(GAPPA gappa REQUIRED)
+endif()
+if(NOT DEFINED OUT_DIR)
+  set(OUT_DIR "${CMAKE_CURRENT_BINARY_DIR}")
+endif()
+set(script "${source_dir}/proofs/gappa/triangle_area_filter.g")
+
+function(read_exponent constant out)
+  file(STRINGS "${header}" lines REGEX "inline constexpr double ${constant} = [^;]+;")
+  list(LENGTH lines count)
+  if(NOT count EQUAL 1)
+    message(FATAL_ERROR "${header}: expected exactly one definition of ${constant}, found ${count}")
+  endif()
+  if(NOT lines MATCHES "${constant} = 0x1p([+-]?[0-9]+)[^0-9]")
+    message(FATAL_ERROR "${header}: ${constant} must be a power of two written 0x1p±e")
+  endif()
+  math(EXPR e "${CMAKE_MATCH_1}")
+  set(${out} ${e} PARENT_SCOPE)
+endfunction()
+read_exponent(triangle_area_filter_eps product)
+read_exponent(triangle_area_filter_result_eps result)
+read_exponent(triangle_area_filter_floor floor)
+
+function(run_gappa product result floor out_rc out_log)
+  file(READ "${script}" text)
+  string(REPLACE "@PRODUCT_EPS@" "1b${product}" text "${text}")
+  string(REPLACE "@RESULT_EPS@" "1b${result}" text "${text}")
+  string(REPLACE "@FLOOR@" "1b${floor}" text "${text}")
+  if(text MATCHES "@[A-Z_]+@")
+    message(FATAL_ERROR "${script}: unknown placeholder ${CMAKE_MATCH_0}")
+  endif()
+  set(instance "${OUT_DIR}/triangle_area_filter.instance.g")
+  file(WRITE "${instance}" "${text}")
+  execute_process(COMMAND "${GAPPA}" "${instance}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(err MATCHES "not trivially equal")
+    message(FATAL_ERROR "${script}: the rewriting is not an identity:\n${err}")
+  endif()
+  set(${out_rc} ${rc} PARENT_SCOPE)
+  set(${out_log} "${instance}:\n${err}${out}" PARENT_SCOPE)
+endfunction()
+
+run_gappa(${product} ${result} ${floor} rc log)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "Gappa does not prove the triangle_area constants 2^${product}, "
+                      "2^${result}, 2^${floor} (${script}):\n${log}")
+endif()
+math(EXPR half "${product} - 1")
+run_gappa(${half} ${result} ${floor} rc log)
+if(rc EQUAL 0)
+  message(FATAL_ERROR "triangle_area_filter_eps = 2^${product} is not the least: 2^${half} is "
+                      "proven too (${script}). Put the least one into ${header}.")
+endif()
+math(EXPR half "${result} - 1")
+run_gappa(${product} ${half} ${floor} rc log)
+if(rc EQUAL 0)
+  message(FATAL_ERROR "triangle_area_filter_result_eps = 2^${result} is not the least: 2^${half} "
+                      "is proven too (${script}). Put the least one into ${header}.")
+endif()
+message(STATUS "triangle_area_filter constants 2^${product}, 2^${result}, 2^${floor} are proven")
