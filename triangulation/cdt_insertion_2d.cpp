@@ -68,8 +68,10 @@ void split_triangle(CdtState& cdt, TriIdx t, VertIdx p) {
 }
 
 /// The kernel's 2-2 flip of e with the builder's state: the four sides keep their constraints,
-/// the new diagonal has none (e had none: constraints never flip).
-FlipEdges flip_edges(CdtState& cdt, EdgeIdx e, unsigned k1, unsigned k2) {
+/// the new diagonal has none (e had none: constraints never flip). The layout is a template
+/// argument so that the Lawson loop's flip compiles to constant offsets.
+template <unsigned k1, unsigned k2>
+inline FlipEdges flip_edges(CdtState& cdt, EdgeIdx e) {
     const EdgeIdx f = cdt.mesh.twin[e];
     // x -> u, u -> y, y -> v, v -> x: the order of FlipEdges::sides.
     const std::uint32_t sides[4] = {cdt.segment_of[prev_edge(e)], cdt.segment_of[next_edge(f)],
@@ -100,7 +102,7 @@ void flip_if_needed(CdtState& cdt, TriIdx t1, std::vector<Piece>* encroached) {
     ++cdt.result.counters.delaunay_flips;
     // t1 = (p, u, v) becomes (p, u, q) and the other (p, q, v): p stays at local index 0 in
     // both, so their sides opposite p (3t + 1) are the edges to test next.
-    const FlipEdges flipped = flip_edges(cdt, e, 2, 0);
+    const FlipEdges flipped = flip_edges<2, 0>(cdt, e);
     cdt.flip_stack.push_back(triangle_of(flipped.sides[1]));
     cdt.flip_stack.push_back(triangle_of(flipped.sides[2]));
 }
@@ -167,7 +169,7 @@ void insert_vertex(CdtState& cdt, VertIdx p, TriIdx t, std::vector<Piece>* encro
 
 EdgeIdx flip(CdtState& cdt, EdgeIdx e) {
     // Quadrilateral u, y, v, x counter-clockwise: (x, u, y) and (y, v, x), diagonal 3t1 + 2.
-    return flip_edges(cdt, e, 2, 2).diagonal;
+    return flip_edges<2, 2>(cdt, e).diagonal;
 }
 
 bool locally_delaunay(CdtState& cdt, EdgeIdx e) {
