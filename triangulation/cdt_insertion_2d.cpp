@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: MIT
 // The constrained Delaunay builder's insertion phase (cdt_phases_2d.hpp): the initial
 // triangulation of the points, vertex insertion (1-3 split, edge split) with Lawson flips that
-// never cross a constraint, the builder's one 2-2 flip, and the enclosing box's corners.
+// never cross a constraint, the builder's one 2-2 flip, and the enclosing box's corners. The
+// splits and flips are the shared kernel's (flip_2d.hpp); the wrappers here add the builder's
+// state: constraints per half-edge, vertex_edge, the domain side and the touched slots.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
 #include "base/errors.hpp"
 #include "triangulation/cdt_phases_2d.hpp"
 #include "triangulation/cdt_state_2d.hpp"
+#include "triangulation/flip_2d.hpp"
 #include "triangulation/green_sibson_2d.hpp"
 
 namespace exactmesh::triangulation::detail {
@@ -44,25 +48,41 @@ bool triangulate_vertices(CdtState& cdt) {
 namespace {
 
 void split_triangle(CdtState& cdt, TriIdx t, VertIdx p) {
-    const VertIdx a = cdt.mesh.tv[3 * t], b = cdt.mesh.tv[3 * t + 1], c = cdt.mesh.tv[3 * t + 2];
-    const EdgeIdx x = cdt.mesh.twin[3 * t], y = cdt.mesh.twin[3 * t + 1],
-                  z = cdt.mesh.twin[3 * t + 2];
-    const std::uint32_t sx = cdt.segment_of[3 * t], sy = cdt.segment_of[3 * t + 1],
-                        sz = cdt.segment_of[3 * t + 2];
-    const TriIdx t1 = t, t2 = cdt.new_triangle(), t3 = cdt.new_triangle();
-    cdt.put_on_side(t2, cdt.side_of(t));
-    cdt.put_on_side(t3, cdt.side_of(t));
-    cdt.set(t1, p, a, b);
-    cdt.set(t2, p, b, c);
-    cdt.set(t3, p, c, a);
-    cdt.link_outer(3 * t1 + 1, x, sx);
-    cdt.link_outer(3 * t2 + 1, y, sy);
-    cdt.link_outer(3 * t3 + 1, z, sz);
-    cdt.link_inner(3 * t1 + 2, 3 * t2);
-    cdt.link_inner(3 * t2 + 2, 3 * t3);
-    cdt.link_inner(3 * t3 + 2, 3 * t1);
-    cdt.flip_stack.insert(cdt.flip_stack.end(), {t1, t2, t3});
-    cdt.core.last_triangle = t1;
+    // The kernel keeps slot t for (p, a, b) and takes two new slots for (p, b, c), (p, c, a);
+    // the constraints and domain side are the builder's, read before and written after.
+    const std::uint32_t sides[3] = {cdt.segment_of[3 * t], cdt.segment_of[3 * t + 1],
+                                    cdt.segment_of[3 * t + 2]};
+    const CdtState::Side side = cdt.side_of(t);
+    const SplitTriangles made = split_triangle_2d(cdt.mesh, t, p, MeshBoundary::Closed);
+    cdt.grow_slots();
+    for (unsigned i = 0; i < 3; ++i) {
+        const TriIdx ti = made.triangles[i];
+        if (i > 0) cdt.put_on_side(ti, side);
+        cdt.rewritten(ti);
+        cdt.segment_of[made.side(i)] = sides[i];
+        cdt.segment_of[3 * ti] = cdt.segment_of[3 * ti + 2] = kNone;  // spokes
+    }
+    cdt.flip_stack.insert(cdt.flip_stack.end(),
+                          {made.triangles[0], made.triangles[1], made.triangles[2]});
+    cdt.core.last_triangle = made.triangles[0];
+}
+
+/// The kernel's 2-2 flip of e with the builder's state: the four sides keep their constraints,
+/// the new diagonal has none (e had none: constraints never flip). The layout is a template
+/// argument so that the Lawson loop's flip compiles to constant offsets.
+template <unsigned k1, unsigned k2>
+inline FlipEdges flip_edges(CdtState& cdt, EdgeIdx e) {
+    const EdgeIdx f = cdt.mesh.twin[e];
+    // x -> u, u -> y, y -> v, v -> x: the order of FlipEdges::sides.
+    const std::uint32_t sides[4] = {cdt.segment_of[prev_edge(e)], cdt.segment_of[next_edge(f)],
+                                    cdt.segment_of[prev_edge(f)], cdt.segment_of[next_edge(e)]};
+    const TriIdx t1 = triangle_of(e), t2 = triangle_of(f);
+    const FlipEdges flipped = flip_2d(cdt.mesh, e, k1, k2, MeshBoundary::Closed);
+    cdt.rewritten(t1);
+    cdt.rewritten(t2);
+    for (unsigned i = 0; i < 4; ++i) cdt.segment_of[flipped.sides[i]] = sides[i];
+    cdt.segment_of[flipped.diagonal] = cdt.segment_of[cdt.mesh.twin[flipped.diagonal]] = kNone;
+    return flipped;
 }
 
 void flip_if_needed(CdtState& cdt, TriIdx t1, std::vector<Piece>* encroached) {
@@ -80,20 +100,11 @@ void flip_if_needed(CdtState& cdt, TriIdx t1, std::vector<Piece>* encroached) {
     }
     if (q == kInfinite || !cdt.core.conflict(t1, q)) return;
     ++cdt.result.counters.delaunay_flips;
-    const TriIdx t2 = triangle_of(f);
-    const VertIdx p = cdt.mesh.tv[3 * t1], u = cdt.mesh.tv[3 * t1 + 1], v = cdt.mesh.tv[3 * t1 + 2];
-    const EdgeIdx vp = cdt.mesh.twin[3 * t1 + 2];
-    const std::uint32_t svp = cdt.segment_of[3 * t1 + 2];
-    const EdgeIdx uq = cdt.mesh.twin[next_edge(f)], qv = cdt.mesh.twin[prev_edge(f)];
-    const std::uint32_t suq = cdt.segment_of[next_edge(f)], sqv = cdt.segment_of[prev_edge(f)];
-    cdt.set(t1, p, u, q);
-    cdt.set(t2, p, q, v);
-    cdt.link_outer(3 * t1 + 1, uq, suq);
-    cdt.link_outer(3 * t2 + 1, qv, sqv);
-    cdt.link_outer(3 * t2 + 2, vp, svp);
-    cdt.link_inner(3 * t1 + 2, 3 * t2);
-    cdt.flip_stack.push_back(t1);
-    cdt.flip_stack.push_back(t2);
+    // t1 = (p, u, v) becomes (p, u, q) and the other (p, q, v): p stays at local index 0 in
+    // both, so their sides opposite p (3t + 1) are the edges to test next.
+    const FlipEdges flipped = flip_edges<2, 0>(cdt, e);
+    cdt.flip_stack.push_back(triangle_of(flipped.sides[1]));
+    cdt.flip_stack.push_back(triangle_of(flipped.sides[2]));
 }
 
 }  // namespace
@@ -101,39 +112,37 @@ void flip_if_needed(CdtState& cdt, TriIdx t1, std::vector<Piece>* encroached) {
 void split_edge(CdtState& cdt, EdgeIdx e, VertIdx p) {
     const EdgeIdx f = cdt.mesh.twin[e];
     const TriIdx t = triangle_of(e), u = triangle_of(f);
-    const VertIdx a = cdt.mesh.origin(e), b = cdt.mesh.destination(e);
-    const VertIdx c = cdt.apex(e), d = cdt.apex(f);
-    const EdgeIdx bc = cdt.mesh.twin[next_edge(e)], ca = cdt.mesh.twin[prev_edge(e)];
-    const EdgeIdx ad = cdt.mesh.twin[next_edge(f)], db = cdt.mesh.twin[prev_edge(f)];
-    const std::uint32_t sbc = cdt.segment_of[next_edge(e)], sca = cdt.segment_of[prev_edge(e)];
-    const std::uint32_t sad = cdt.segment_of[next_edge(f)], sdb = cdt.segment_of[prev_edge(f)];
+    const std::uint32_t sides[4] = {cdt.segment_of[next_edge(e)], cdt.segment_of[prev_edge(e)],
+                                    cdt.segment_of[next_edge(f)], cdt.segment_of[prev_edge(f)]};
     const std::uint32_t split = cdt.segment_of[e];  // both halves of a split segment keep it
     const std::vector<std::uint32_t> split_shared =
-        split == kNone ? std::vector<std::uint32_t>{} : cdt.release_shared(a, b);
+        split == kNone ? std::vector<std::uint32_t>{}
+                       : cdt.release_shared(cdt.mesh.origin(e), cdt.mesh.destination(e));
     // Slot u takes a triangle on t's side: the sides are read first.
     const CdtState::Side side_t = cdt.side_of(t), side_u = cdt.side_of(u);
-    const TriIdx t1 = t, t2 = u, t3 = cdt.new_triangle(), t4 = cdt.new_triangle();
-    cdt.put_on_side(t2, side_t);
-    cdt.put_on_side(t3, side_u);
-    cdt.put_on_side(t4, side_u);
-    cdt.set(t1, p, b, c);
-    cdt.set(t2, p, c, a);
-    cdt.set(t3, p, a, d);
-    cdt.set(t4, p, d, b);
-    cdt.link_outer(3 * t1 + 1, bc, sbc);
-    cdt.link_outer(3 * t2 + 1, ca, sca);
-    cdt.link_outer(3 * t3 + 1, ad, sad);
-    cdt.link_outer(3 * t4 + 1, db, sdb);
-    cdt.link_inner(3 * t1 + 2, 3 * t2);
-    cdt.link_inner(3 * t2 + 2, 3 * t3, split);  // a - p
-    cdt.link_inner(3 * t3 + 2, 3 * t4);
-    cdt.link_inner(3 * t4 + 2, 3 * t1, split);  // b - p
-    for (const std::uint32_t other : split_shared) {
-        cdt.mark(3 * t2 + 2, other);
-        cdt.mark(3 * t4 + 2, other);
+    // (p, b, c) in slot t, (p, c, a) in slot u, (p, a, d) and (p, d, b) in two new slots.
+    const SplitTriangles made = split_edge_2d(cdt.mesh, e, p, MeshBoundary::Closed);
+    cdt.grow_slots();
+    cdt.put_on_side(made.triangles[1], side_t);
+    cdt.put_on_side(made.triangles[2], side_u);
+    cdt.put_on_side(made.triangles[3], side_u);
+    for (unsigned i = 0; i < 4; ++i) {
+        const TriIdx ti = made.triangles[i];
+        cdt.rewritten(ti);
+        cdt.segment_of[made.side(i)] = sides[i];
+        // Spokes: p - b and p - a are the halves of the split edge, p - c and p - d new.
+        const std::uint32_t spoke = i % 2 == 0 ? split : kNone;
+        cdt.segment_of[3 * ti] = spoke;
+        cdt.segment_of[3 * made.triangles[(i + 3) % 4] + 2] = spoke;
     }
-    cdt.flip_stack.insert(cdt.flip_stack.end(), {t1, t2, t3, t4});
-    cdt.core.last_triangle = t1;
+    const EdgeIdx a_p = 3 * made.triangles[1] + 2, b_p = 3 * made.triangles[3] + 2;
+    for (const std::uint32_t other : split_shared) {
+        cdt.mark(a_p, other);
+        cdt.mark(b_p, other);
+    }
+    cdt.flip_stack.insert(cdt.flip_stack.end(), {made.triangles[0], made.triangles[1],
+                                                 made.triangles[2], made.triangles[3]});
+    cdt.core.last_triangle = made.triangles[0];
 }
 
 void insert_vertex(CdtState& cdt, VertIdx p, TriIdx t, std::vector<Piece>* encroached) {
@@ -159,23 +168,8 @@ void insert_vertex(CdtState& cdt, VertIdx p, TriIdx t, std::vector<Piece>* encro
 }
 
 EdgeIdx flip(CdtState& cdt, EdgeIdx e) {
-    const EdgeIdx f = cdt.mesh.twin[e];
-    const TriIdx t1 = triangle_of(e), t2 = triangle_of(f);
-    const VertIdx u = cdt.mesh.origin(e), v = cdt.mesh.destination(e), x = cdt.apex(e),
-                  y = cdt.apex(f);
-    const EdgeIdx vx = cdt.mesh.twin[next_edge(e)], xu = cdt.mesh.twin[prev_edge(e)];
-    const EdgeIdx uy = cdt.mesh.twin[next_edge(f)], yv = cdt.mesh.twin[prev_edge(f)];
-    const std::uint32_t svx = cdt.segment_of[next_edge(e)], sxu = cdt.segment_of[prev_edge(e)];
-    const std::uint32_t suy = cdt.segment_of[next_edge(f)], syv = cdt.segment_of[prev_edge(f)];
-    // Quadrilateral u, y, v, x counter-clockwise: (x, u, y) and (y, v, x).
-    cdt.set(t1, x, u, y);
-    cdt.set(t2, y, v, x);
-    cdt.link_outer(3 * t1, xu, sxu);
-    cdt.link_outer(3 * t1 + 1, uy, suy);
-    cdt.link_outer(3 * t2, yv, syv);
-    cdt.link_outer(3 * t2 + 1, vx, svx);
-    cdt.link_inner(3 * t1 + 2, 3 * t2 + 2);
-    return 3 * t1 + 2;
+    // Quadrilateral u, y, v, x counter-clockwise: (x, u, y) and (y, v, x), diagonal 3t1 + 2.
+    return flip_edges<2, 2>(cdt, e).diagonal;
 }
 
 bool locally_delaunay(CdtState& cdt, EdgeIdx e) {

@@ -104,18 +104,29 @@ struct CdtState {
     // ---- mesh editing -------------------------------------------------------------------
     TriIdx new_triangle() {
         const TriIdx t = mesh.new_triangle();
+        grow_slots();
+        return t;
+    }
+    /// The per-slot arrays follow mesh's slots (after mesh.new_triangle, also the flip kernel's).
+    void grow_slots() {
         if (segment_of.size() < mesh.tv.size()) segment_of.resize(mesh.tv.size(), kNone);
         if (domain_marked() && removed.size() < mesh.triangle_slots()) {
             removed.resize(mesh.triangle_slots(), 0);
             if (!attribute.empty()) attribute.resize(mesh.triangle_slots(), 0.0);
         }
-        return t;
     }
     void set(TriIdx t, VertIdx a, VertIdx b, VertIdx c) {
-        const VertIdx v[3] = {a, b, c};
+        mesh.tv[3 * t] = a;
+        mesh.tv[3 * t + 1] = b;
+        mesh.tv[3 * t + 2] = c;
+        rewritten(t);
+    }
+    /// Triangle t's vertices were just written (by set or the flip kernel): vertex_edge points
+    /// into it, and an edit after marking the domain records it.
+    void rewritten(TriIdx t) {
         for (unsigned k = 0; k < 3; ++k) {
-            mesh.tv[3 * t + k] = v[k];
-            if (v[k] != kInfinite) vertex_edge[v[k]] = 3 * t + k;
+            const VertIdx v = mesh.tv[3 * t + k];
+            if (v != kInfinite) vertex_edge[v] = 3 * t + k;
         }
         if (domain_marked()) touched.push_back(t);
     }

@@ -2,7 +2,7 @@
 // The 2D flip kernel on TriMesh2 half-edges: the 1-3 split (a point inside a triangle), the
 // edge split (2-4 on an interior edge, 1-2 on a boundary edge) and the 2-2 flip [Lawson77;
 // GreenSibson78 §3; seed material §2.2], written once for every 2D insertion and swap
-// (green_sibson_2d, edge_swap_2d; the constrained builder's are to follow, issue 12).
+// (green_sibson_2d, edge_swap_2d and the constrained builder's cdt_insertion_2d).
 // Invariants kept: twins mutual (an outer twin of kNone, the boundary of a mesh without the
 // infinite vertex, stays kNone), every triangle counter-clockwise when the caller's geometric
 // precondition holds, and mesh.flags (when not empty) kept per edge: an outer edge keeps its
