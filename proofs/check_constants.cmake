@@ -18,16 +18,10 @@
 # of a filter's code or of its min, put that value into the header.
 cmake_minimum_required(VERSION 3.25)
 
-cmake_path(GET CMAKE_CURRENT_LIST_DIR PARENT_PATH source_dir)
+include("${CMAKE_CURRENT_LIST_DIR}/gappa_common.cmake")
 set(header "${source_dir}/predicates/filter_constants.hpp")
 if(NOT DEFINED MODE)
   set(MODE check)
-endif()
-if(NOT DEFINED GAPPA)
-  find_program(GAPPA gappa REQUIRED)
-endif()
-if(NOT DEFINED OUT_DIR)
-  set(OUT_DIR "${CMAKE_CURRENT_BINARY_DIR}")
 endif()
 
 # Degree of each determinant in the coordinates.
@@ -40,19 +34,6 @@ if(NOT DEFINED degree_${PRED})
 endif()
 set(d ${degree_${PRED}})
 set(script "${source_dir}/proofs/gappa/${PRED}_filter.g")
-
-# Reads `inline constexpr double <name> = <literal>;` from the header.
-function(read_constant name out)
-  file(STRINGS "${header}" lines REGEX "inline constexpr double ${name} = [^;]+;")
-  list(LENGTH lines count)
-  if(NOT count EQUAL 1)
-    message(FATAL_ERROR "${header}: expected exactly one definition of ${name}, found ${count}")
-  endif()
-  if(NOT lines MATCHES "${name} = ([0-9a-zA-Z.+-]+)")
-    message(FATAL_ERROR "${header}: cannot read the value of ${name}")
-  endif()
-  set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
-endfunction()
 
 # Splits a normalised hex-float literal 0x1.hhhp±e into the 53-bit integer significand and the
 # exponent of its last bit: value = significand * 2^exponent.
@@ -94,9 +75,9 @@ function(run_gappa eps_text goal_text out_rc out_log)
   set(${out_log} "${instance}:\n${err}${out}" PARENT_SCOPE)
 endfunction()
 
-read_constant(${PRED}_filter_eps eps_literal)
-read_constant(${PRED}_filter_min min_literal)
-read_constant(${PRED}_filter_max max_literal)
+gappa_read_constant("${header}" ${PRED}_filter_eps "([0-9a-zA-Z.+-]+)" eps_literal)
+gappa_read_constant("${header}" ${PRED}_filter_min "([0-9a-zA-Z.+-]+)" min_literal)
+gappa_read_constant("${header}" ${PRED}_filter_max "([0-9a-zA-Z.+-]+)" max_literal)
 parse_hexfloat("${eps_literal}" eps_significand eps_exponent)
 parse_hexfloat("${min_literal}" min_significand min_exponent)
 parse_hexfloat("${max_literal}" max_significand max_exponent)
