@@ -5,7 +5,7 @@
 // and reports"].
 //
 // Names: BM_cdt_<algo>/<workload>, algo in {swap, cavity, conforming, cgal}; workloads
-// (generators/pslg_inputs, pinned seed): chains/<points>/<segments> (uniform points with
+// (generators/inputs/pslg_inputs, pinned seed): chains/<points>/<segments> (uniform points with
 // non-crossing Delaunay-edge chains: 10^6 points with 10^4 and 10^5 segments, and 10^5 points
 // with 10^4 segments) and polygon/<points>/<vertices> (a star-shaped polygon of 10^5 vertices
 // with 10^6 points in all, and 10^4 in 10^5). Conforming runs only with <= 10^5 points.
@@ -35,8 +35,8 @@
 #include <vector>
 
 #include "bench/heap_accounting.hpp"
-#include "generators/pslg_inputs.hpp"
-#include "triangulation/constrained_2d.hpp"
+#include "generators/inputs/pslg_inputs.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>

@@ -47,9 +47,9 @@
 #include <vector>
 
 #include "bench/heap_accounting.hpp"
-#include "generators/inputs.hpp"
+#include "generators/inputs/inputs.hpp"
 #include "io/triangle_format.hpp"
-#include "triangulation/delaunay_2d.hpp"
+#include "triangulation/delaunay/delaunay_2d.hpp"
 
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Delaunay_triangulation_2.h>

@@ -38,8 +38,8 @@
 #include <vector>
 
 #include "bench/heap_accounting.hpp"
-#include "generators/inputs_3d.hpp"
-#include "triangulation/delaunay_3d.hpp"
+#include "generators/inputs/inputs_3d.hpp"
+#include "triangulation/delaunay/delaunay_3d.hpp"
 
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Delaunay_triangulation_3.h>

@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "predicates/orient3d.hpp"
-#include "triangulation/edge_face_swap_3d.hpp"
-#include "triangulation/vertex_removal_3d.hpp"
+#include "triangulation/modification/edge_face_swap_3d.hpp"
+#include "triangulation/modification/vertex_removal_3d.hpp"
 
 namespace {
 

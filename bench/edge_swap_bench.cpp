@@ -3,7 +3,7 @@
 // EdelsbrunnerTanWaupotitsch92]: time against N with Complexity() fits, and the work counters.
 //
 // Names: BM_swap_<criterion>/<distribution>/<n>: Lawson swapping under one criterion from the
-// sweep triangulation (generators/sweep_triangulation_2d.hpp: points sorted by x, each joined
+// sweep triangulation (generators/inputs/sweep_triangulation_2d.hpp: points sorted by x, each joined
 // to the hull edges it sees; long thin triangles everywhere), n = 2^10 ... 2^14, fitted with
 // Complexity() (oAuto: the best of O(1), N, N log N, N^2, N^3). BM_edge_cutting/<distribution>/<n>:
 // min-max angle by edge cutting from the Delaunay triangulation (min_max_angle_triangulation_2d,
@@ -29,10 +29,10 @@
 #include <utility>
 #include <vector>
 
-#include "generators/inputs.hpp"
-#include "generators/sweep_triangulation_2d.hpp"
-#include "triangulation/edge_cutting_2d.hpp"
-#include "triangulation/edge_swap_2d.hpp"
+#include "generators/inputs/inputs.hpp"
+#include "generators/inputs/sweep_triangulation_2d.hpp"
+#include "triangulation/modification/edge_cutting_2d.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
 
 namespace {
 

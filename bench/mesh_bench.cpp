@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// 2D mesh generation benchmarks: every generator of the registry (generators/mesh_generators_2d)
+// 2D mesh generation benchmarks: every generator of the registry (generators/mesh_2d/mesh_generators_2d)
 // against CGAL's Delaunay_mesher_2 (with EXACTMESH_WITH_CGAL) and Gmsh's Delaunay and
 // Frontal-Delaunay algorithms (the `gmsh` program, when found), same run, same domains, same
 // size function [Ruppert95, Shewchuk02, Rebay93, Mavriplis97; DESIGN.md "Benchmarks and
@@ -14,7 +14,7 @@
 // with t = 20.7 (the proven bound) at every target and t = 30 at 10^5 (and a quick target), so
 // "ours <t> vs cgal <t>" compares the refinements and "ours <t>p<P> vs cgal <P>" the polished mesh
 // with CGAL asked for the angle the polish aims at; `none` for meshers without an angle criterion.
-// Domains: the built-in sample domains (generators/sample_domains), each with its own size function
+// Domains: the built-in sample domains (generators/boundary/sample_domains), each with its own size function
 // scaled by a constant so that Delaunay refinement (default options) makes about the target number
 // of triangles (10^4, 10^5, 10^6; the largest is capped by EXACTMESH_MESH_BENCH_MAX_TRIANGLES, and
 // a cap below 10^4 is the only target: a quick check of the pipeline). The boundary is discretized
@@ -65,10 +65,10 @@
 #include <utility>
 #include <vector>
 
-#include "generators/graded_boundary_size_2d.hpp"
-#include "generators/mesh_generators_2d.hpp"
-#include "generators/quality_2d.hpp"
-#include "generators/sample_domains.hpp"
+#include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/mesh_2d/quality_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
 
 #if defined(EXACTMESH_WITH_CGAL)
 #include "bench/cgal_mesh_2d.hpp"
@@ -554,7 +554,7 @@ std::string angle_name(double angle) {
 
 /// Issue 11's plain input: a polygon of 10^4 vertices cos/sin(2 pi k / 10^4), meshed as
 /// `exactmesh mesh circ.poly` does without --size: Delaunay refinement with none, the other
-/// generators with the graded default (generators/graded_boundary_size_2d.hpp), built inside the
+/// generators with the graded default (generators/boundary/graded_boundary_size_2d.hpp), built inside the
 /// timed region as the command does. Name: BM_mesh/<mesher>/near-circle-10000/default.
 void BM_mesh_near_circle(benchmark::State& state, const gen::MeshGenerator2* generator) {
     std::vector<double> xy;

@@ -18,7 +18,7 @@
 #include "cli/output.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/stats.hpp"
-#include "triangulation/constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 
 namespace exactmesh::cli {
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `exactmesh check`: reads a .node and a .ele and runs the exact Delaunay check
-// (triangulation/check_2d, or check_3d for a TetGen .node of dimension 3 and its .ele), or a
+// (triangulation/checks/check_2d, or check_3d for a TetGen .node of dimension 3 and its .ele), or a
 // .poly and a .ele and runs the exact constrained Delaunay check
-// (triangulation/check_constrained_2d), or with --conforming the exact validity of a mesh of
-// the domain that need not be Delaunay (triangulation/check_conforming_2d: the quadtree and
+// (triangulation/checks/check_constrained_2d), or with --conforming the exact validity of a mesh of
+// the domain that need not be Delaunay (triangulation/checks/check_conforming_2d: the quadtree and
 // advancing-front generators' meshes), reporting in the files' own numbering.
 #include <CLI/CLI.hpp>
 
@@ -19,10 +19,10 @@
 #include "io/tetgen_format.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/check_3d.hpp"
-#include "triangulation/check_conforming_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/checks/check_3d.hpp"
+#include "triangulation/checks/check_conforming_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
 
 namespace exactmesh::cli {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `exactmesh fuzz`: a timed differential and validity campaign over the input distributions of
-// generators/inputs. Per case, the three Delaunay constructions must each pass the exact check
-// (triangulation/check_2d), return mutual neighbours, agree with each other (same canonical
+// generators/inputs/inputs. Per case, the three Delaunay constructions must each pass the exact check
+// (triangulation/checks/check_2d), return mutual neighbours, agree with each other (same canonical
 // triangulation under the shared symbolic perturbation) and, on small inputs, with the naive
 // empty-circle oracle (tests/oracles). A failing input is minimized by delta debugging
 // [Zeller, Hildebrandt 2002, ddmin] and saved as a Triangle .node file with the commands that
@@ -31,11 +31,11 @@
 
 #include "base/errors.hpp"
 #include "cli/commands.hpp"
-#include "generators/inputs.hpp"
+#include "generators/inputs/inputs.hpp"
 #include "io/triangle_format.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/delaunay_2d.hpp"
-#include "triangulation/delaunay_2d_naive.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/delaunay/delaunay_2d.hpp"
+#include "triangulation/delaunay/delaunay_2d_naive.hpp"
 
 namespace exactmesh::cli {
 
@@ -432,7 +432,7 @@ void report_failure(const Case& c, const Failure& failure, const fs::path& out_d
     if (failure.kind == "neighbors") {
         std::cout << "  (check does not read neighbours: see out.neigh, Triangle's convention)\n";
     } else if (failure.kind == "oracle") {
-        std::cout << "  (the naive empty-circle oracle, triangulation/delaunay_2d_naive.hpp, "
+        std::cout << "  (the naive empty-circle oracle, triangulation/delaunay/delaunay_2d_naive.hpp, "
                      "disagrees; check may pass)\n";
     }
     if (inject_fault) {

@@ -19,14 +19,14 @@
 #include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "cli/size_expression.hpp"
-#include "generators/domain_boundary_2d.hpp"
-#include "generators/graded_boundary_size_2d.hpp"
-#include "generators/laplacian_smoothing_2d.hpp"
-#include "generators/mesh_domain_2d.hpp"
-#include "generators/mesh_generators_2d.hpp"
-#include "generators/quality_2d.hpp"
-#include "generators/sample_domains.hpp"
-#include "generators/size_function.hpp"
+#include "generators/boundary/domain_boundary_2d.hpp"
+#include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/mesh_2d/laplacian_smoothing_2d.hpp"
+#include "generators/boundary/mesh_domain_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/mesh_2d/quality_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
+#include "generators/sizing/size_function.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/stats.hpp"
@@ -61,7 +61,7 @@ constexpr std::uint32_t kMaxSmoothSweeps = 1000;
 /// The longest size file read (a background mesh of about a million lines).
 constexpr std::size_t kMaxSizeFileBytes = std::size_t{64} << 20;
 
-/// --size: a number (uniform), else a size file (generators/size_function.hpp) when a file of
+/// --size: a number (uniform), else a size file (generators/sizing/size_function.hpp) when a file of
 /// that name exists (one that exists but cannot be read is reported as such, not as a bad
 /// expression), else an expression in x and y (cli/size_expression.hpp).
 gen::SizeFunction read_size(const std::string& text) {

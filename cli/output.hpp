@@ -15,8 +15,8 @@
 #include "io/point_set_2d.hpp"
 #include "io/text_file.hpp"
 #include "predicates/stats.hpp"
-#include "triangulation/constrained_2d.hpp"
-#include "triangulation/delaunay_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
+#include "triangulation/delaunay/delaunay_2d.hpp"
 
 namespace exactmesh::cli {
 

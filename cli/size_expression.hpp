@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "generators/size_function.hpp"
+#include "generators/sizing/size_function.hpp"
 
 namespace exactmesh::cli {
 

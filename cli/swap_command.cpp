@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `exactmesh swap`: Lawson edge swapping of a given triangulation (.node + .ele) under one
-// criterion (triangulation/edge_swap_2d), and `exactmesh min-max`: the min-max angle
-// triangulation of a .node's points by edge cutting (triangulation/edge_cutting_2d).
+// criterion (triangulation/modification/edge_swap_2d), and `exactmesh min-max`: the min-max angle
+// triangulation of a .node's points by edge cutting (triangulation/modification/edge_cutting_2d).
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -18,9 +18,9 @@
 #include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "io/triangle_format.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/edge_cutting_2d.hpp"
-#include "triangulation/edge_swap_2d.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/modification/edge_cutting_2d.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
 
 namespace exactmesh::cli {
 

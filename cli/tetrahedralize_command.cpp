@@ -21,7 +21,7 @@
 #include "io/tetgen_format.hpp"
 #include "io/vtk_format.hpp"
 #include "predicates/stats.hpp"
-#include "triangulation/delaunay_3d.hpp"
+#include "triangulation/delaunay/delaunay_3d.hpp"
 
 namespace exactmesh::cli {
 

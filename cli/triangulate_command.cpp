@@ -21,7 +21,7 @@
 #include "io/triangle_format.hpp"
 #include "io/vtk_format.hpp"
 #include "predicates/stats.hpp"
-#include "triangulation/delaunay_2d.hpp"
+#include "triangulation/delaunay/delaunay_2d.hpp"
 
 namespace exactmesh::cli {
 

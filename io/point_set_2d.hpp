@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "triangulation/mesh2.hpp"
+#include "triangulation/mesh/mesh2.hpp"
 
 namespace exactmesh::io {
 

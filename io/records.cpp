@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "triangulation/mesh2.hpp"
+#include "triangulation/mesh/mesh2.hpp"
 
 namespace exactmesh::io::detail {
 

@@ -9,7 +9,7 @@
 
 #include "io/records.hpp"
 #include "io/text_file.hpp"
-#include "triangulation/mesh3.hpp"
+#include "triangulation/mesh/mesh3.hpp"
 
 namespace exactmesh::io {
 

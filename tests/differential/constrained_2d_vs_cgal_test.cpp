@@ -35,13 +35,13 @@
 #include <utility>
 #include <vector>
 
-#include "generators/inputs.hpp"
-#include "generators/pslg_inputs.hpp"
+#include "generators/inputs/inputs.hpp"
+#include "generators/inputs/pslg_inputs.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
-#include "triangulation/constrained_2d.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 #include "tests/support/test_scale.hpp"
 
 namespace tri = exactmesh::triangulation;

@@ -18,12 +18,12 @@
 #include <string>
 #include <vector>
 
-#include "generators/inputs.hpp"
+#include "generators/inputs/inputs.hpp"
 #include "predicates/incircle.hpp"
-#include "triangulation/bowyer_watson_2d.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/green_sibson_2d.hpp"
-#include "triangulation/tanemura_merriam_2d.hpp"
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/delaunay/green_sibson_2d.hpp"
+#include "triangulation/delaunay/tanemura_merriam_2d.hpp"
 #include "tests/support/test_scale.hpp"
 
 namespace tri = exactmesh::triangulation;

@@ -38,12 +38,12 @@
 #include <string>
 #include <vector>
 
-#include "generators/inputs_3d.hpp"
+#include "generators/inputs/inputs_3d.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orient3d.hpp"
-#include "triangulation/bowyer_watson_3d.hpp"
-#include "triangulation/check_3d.hpp"
-#include "triangulation/green_sibson_3d.hpp"
+#include "triangulation/delaunay/bowyer_watson_3d.hpp"
+#include "triangulation/checks/check_3d.hpp"
+#include "triangulation/delaunay/green_sibson_3d.hpp"
 
 namespace tri = exactmesh::triangulation;
 namespace gen = exactmesh::generators;

@@ -23,9 +23,9 @@
 #include "predicates/orient3d.hpp"
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
 #include "tests/support/local_delaunay_3d.hpp"
-#include "triangulation/check_topology_3d.hpp"
-#include "triangulation/edge_face_swap_3d.hpp"
-#include "triangulation/vertex_removal_3d.hpp"
+#include "triangulation/checks/check_topology_3d.hpp"
+#include "triangulation/modification/edge_face_swap_3d.hpp"
+#include "triangulation/modification/vertex_removal_3d.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;

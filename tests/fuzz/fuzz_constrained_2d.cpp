@@ -22,9 +22,9 @@
 #include "base/errors.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/fuzz/fuzz_pslg.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
-#include "triangulation/constrained_2d.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 
 namespace {
 

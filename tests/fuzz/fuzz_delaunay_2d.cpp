@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // libFuzzer target: the three 2D Delaunay constructions on up to kMaxPoints fuzzed points. Each
-// output must pass the exact check (triangulation/check_2d) and have mutual neighbours; the
+// output must pass the exact check (triangulation/checks/check_2d) and have mutual neighbours; the
 // three must agree (same count and merged_into; same triangles when no point repeats, by the
 // shared symbolic perturbation); small inputs must match the naive empty-circle oracle
 // (tests/oracles). Non-finite input must make every algorithm throw NonFiniteCoordinate naming
@@ -25,9 +25,9 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/delaunay_2d.hpp"
-#include "triangulation/delaunay_2d_naive.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/delaunay/delaunay_2d.hpp"
+#include "triangulation/delaunay/delaunay_2d_naive.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // libFuzzer target: the two 3D Delaunay constructions (Bowyer-Watson, Green-Sibson) on up to
-// kMaxPoints fuzzed points. Each output must pass the exact check (triangulation/check_3d, with
+// kMaxPoints fuzzed points. Each output must pass the exact check (triangulation/checks/check_3d, with
 // its neighbor array) and keep the points; the two must agree exactly for the same insertion
 // order (shared perturbation, same kept copies of duplicates), and for different orders when no
 // point repeats; small inputs must match the naive empty-sphere oracle (every 4-subset whose
@@ -26,8 +26,8 @@
 
 #include "base/errors.hpp"
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
-#include "triangulation/check_3d.hpp"
-#include "triangulation/delaunay_3d.hpp"
+#include "triangulation/checks/check_3d.hpp"
+#include "triangulation/delaunay/delaunay_3d.hpp"
 
 namespace {
 

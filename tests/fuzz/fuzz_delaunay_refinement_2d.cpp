@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// libFuzzer target: Delaunay refinement (generators/delaunay_refinement_2d) of fuzzed points and
+// libFuzzer target: Delaunay refinement (generators/mesh_2d/delaunay_refinement_2d) of fuzzed points and
 // segments, at a fuzzed angle bound (0..33 degrees) with an optional uniform size, under a
 // budget of 5,000 Steiner points (ASan makes 20,000 take 10 s). Every run must end with a mesh that passes
 // check_constrained_delaunay_2d, or with InputError (nothing enclosed, collinear, non-finite)
@@ -20,9 +20,9 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/delaunay_refinement_2d.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "tests/fuzz/fuzz_pslg.hpp"
-#include "triangulation/check_constrained_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
 
 namespace {
 

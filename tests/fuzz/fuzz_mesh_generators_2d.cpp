@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// libFuzzer target: every 2D mesh generator of the registry (generators/mesh_generators_2d:
+// libFuzzer target: every 2D mesh generator of the registry (generators/mesh_2d/mesh_generators_2d:
 // Delaunay refinement, quadtree, advancing front, advancing-front Delaunay, frontal) on fuzzed
 // points and segments with a uniform size of 2^-(byte % 6) times the input's extent (so a mesh
 // has at most a few thousand triangles) and a budget of 1,000 Steiner points (2,000 triangles for

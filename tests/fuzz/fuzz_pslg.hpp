@@ -25,7 +25,7 @@
 #include <optional>
 #include <vector>
 
-#include "triangulation/mesh2.hpp"
+#include "triangulation/mesh/mesh2.hpp"
 
 namespace exactmesh::fuzz {
 

@@ -11,10 +11,10 @@
 #include <cstdint>
 #include <optional>
 
-#include "generators/mesh_generators_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/fuzz/fuzz_pslg.hpp"
-#include "triangulation/check_conforming_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
+#include "triangulation/checks/check_conforming_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
 
 namespace exactmesh::fuzz {
 

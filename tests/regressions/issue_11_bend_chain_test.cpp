@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "generators/mesh_generators_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/support/fuzz_replay_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"

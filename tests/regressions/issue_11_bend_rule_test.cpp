@@ -15,11 +15,11 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/mesh_generators_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "predicates/within_rounding_of_segment.hpp"
 #include "tests/support/fuzz_replay_2d.hpp"
-#include "triangulation/check_conforming_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
+#include "triangulation/checks/check_conforming_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;

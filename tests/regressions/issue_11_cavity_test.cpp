@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "triangulation/check_constrained_2d.hpp"
-#include "triangulation/constrained_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 
 namespace tri = exactmesh::triangulation;
 

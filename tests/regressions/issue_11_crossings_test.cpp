@@ -18,9 +18,9 @@
 #include "base/errors.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/orient2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
-#include "triangulation/constrained_2d.hpp"
-#include "triangulation/constrained_triangulation_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
+#include "triangulation/constrained/constrained_triangulation_2d.hpp"
 
 namespace tri = exactmesh::triangulation;
 namespace pred = exactmesh::predicates;

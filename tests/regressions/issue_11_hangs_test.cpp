@@ -9,7 +9,7 @@
 #include <string>
 
 #include "base/errors.hpp"
-#include "generators/mesh_generators_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 

@@ -18,7 +18,7 @@
 #include "io/format_error.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
-#include "triangulation/constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 
 namespace {
 

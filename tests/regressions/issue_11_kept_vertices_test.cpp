@@ -21,11 +21,11 @@
 
 #include <unistd.h>
 
-#include "generators/mesh_generators_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "io/triangle_format.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
-#include "triangulation/check_conforming_2d.hpp"
+#include "triangulation/checks/check_conforming_2d.hpp"
 
 namespace {
 

@@ -20,10 +20,10 @@
 #include <vector>
 
 #include "tests/oracles/triangulation_enumeration_2d.hpp"
-#include "triangulation/bowyer_watson_2d.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/edge_cutting_2d.hpp"
-#include "triangulation/edge_swap_2d.hpp"
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/modification/edge_cutting_2d.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "generators/delaunay_refinement_2d.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 

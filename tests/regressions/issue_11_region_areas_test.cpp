@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/delaunay_refinement_2d.hpp"
-#include "generators/frontal_delaunay_2d.hpp"
-#include "generators/mesh_generators_2d.hpp"
-#include "generators/size_function.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
+#include "generators/mesh_2d/frontal_delaunay_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/sizing/size_function.hpp"
 #include "predicates/triangle_area.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 

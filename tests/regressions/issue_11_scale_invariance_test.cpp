@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "generators/domain_boundary_2d.hpp"
-#include "generators/graded_boundary_size_2d.hpp"
-#include "generators/mesh_generators_2d.hpp"
-#include "generators/quality_2d.hpp"
+#include "generators/boundary/domain_boundary_2d.hpp"
+#include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/mesh_2d/quality_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 
 namespace {

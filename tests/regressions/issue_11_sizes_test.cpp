@@ -9,8 +9,8 @@
 #include <string>
 
 #include "base/errors.hpp"
-#include "generators/mesh_generators_2d.hpp"
-#include "generators/size_function.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/sizing/size_function.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 
 namespace {

@@ -9,7 +9,7 @@
 
 #include "predicates/insphere.hpp"
 #include "predicates/sos.hpp"
-#include "triangulation/tetrahedralization_3d.hpp"
+#include "triangulation/mesh/tetrahedralization_3d.hpp"
 
 namespace exactmesh::testing {
 

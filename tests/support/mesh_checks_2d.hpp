@@ -25,9 +25,9 @@
 #include <vector>
 
 #include "predicates/orient2d.hpp"
-#include "triangulation/check_conforming_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
-#include "triangulation/triangulation_2d.hpp"
+#include "triangulation/checks/check_conforming_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/mesh/triangulation_2d.hpp"
 
 namespace exactmesh::testing {
 

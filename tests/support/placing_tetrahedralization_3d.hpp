@@ -18,8 +18,8 @@
 
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
-#include "triangulation/flip_3d.hpp"
-#include "triangulation/tetrahedralization_3d.hpp"
+#include "triangulation/mesh/flip_3d.hpp"
+#include "triangulation/mesh/tetrahedralization_3d.hpp"
 
 namespace exactmesh::testing {
 

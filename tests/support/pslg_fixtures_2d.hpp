@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "triangulation/constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 
 namespace exactmesh::testing {
 

@@ -8,9 +8,9 @@
 #include <array>
 #include <string>
 
-#include "generators/advancing_front_2d.hpp"
-#include "generators/mesh_generators_2d.hpp"
-#include "generators/quadtree_mesh_2d.hpp"
+#include "generators/mesh_2d/advancing_front_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/mesh_2d/quadtree_mesh_2d.hpp"
 
 namespace gen = exactmesh::generators;
 

@@ -17,12 +17,12 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/delaunay_refinement_2d.hpp"
-#include "generators/pslg_inputs.hpp"
-#include "generators/sample_domains.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
+#include "generators/inputs/pslg_inputs.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;

@@ -20,13 +20,13 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/domain_boundary_2d.hpp"
-#include "generators/domain_mesh_2d.hpp"
-#include "generators/pslg_inputs.hpp"
-#include "generators/sample_domains.hpp"
+#include "generators/boundary/domain_boundary_2d.hpp"
+#include "generators/mesh_2d/domain_mesh_2d.hpp"
+#include "generators/inputs/pslg_inputs.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
-#include "triangulation/check_conforming_2d.hpp"
+#include "triangulation/checks/check_conforming_2d.hpp"
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;

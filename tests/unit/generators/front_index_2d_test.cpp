@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Tests of generators/front_index_2d.hpp (issue 12): the advancing fronts' shared loose
+// Tests of generators/mesh_2d/front_index_2d.hpp (issue 12): the advancing fronts' shared loose
 // quadtree reports exactly the live items whose box meets the query box, each once, through
 // inserts and erasures, for points, short and long edges, and boxes on cell borders.
-#include "generators/front_index_2d.hpp"
+#include "generators/mesh_2d/front_index_2d.hpp"
 
 #include <gtest/gtest.h>
 

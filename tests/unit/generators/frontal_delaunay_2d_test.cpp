@@ -8,7 +8,7 @@
 // a tiny feature, a sharp angle, a triangle, a slit, the random PSLG distributions) give valid
 // meshes; points outside, encroaching or too close are rejected and their triangles accepted;
 // bad input and an exhausted budget raise the documented errors.
-#include "generators/frontal_delaunay_2d.hpp"
+#include "generators/mesh_2d/frontal_delaunay_2d.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/delaunay_refinement_2d.hpp"
-#include "generators/pslg_inputs.hpp"
-#include "generators/quality_2d.hpp"
-#include "generators/sample_domains.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
+#include "generators/inputs/pslg_inputs.hpp"
+#include "generators/mesh_2d/quality_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Tests of generators/mesh_domain_2d.hpp (issue 12): the domain's triangulation is built once,
+// Tests of generators/boundary/mesh_domain_2d.hpp (issue 12): the domain's triangulation is built once,
 // lazily, equal to the one each step used to build for itself, and a generator run over it
 // gives the mesh it gives on the PSLG.
-#include "generators/mesh_domain_2d.hpp"
+#include "generators/boundary/mesh_domain_2d.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/graded_boundary_size_2d.hpp"
-#include "generators/mesh_generators_2d.hpp"
-#include "generators/region_areas_2d.hpp"
-#include "generators/sample_domains.hpp"
+#include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/boundary/region_areas_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
-#include "triangulation/constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;

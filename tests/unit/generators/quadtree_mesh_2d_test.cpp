@@ -19,12 +19,12 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/pslg_inputs.hpp"
-#include "generators/quadtree_mesh_2d.hpp"
-#include "generators/sample_domains.hpp"
+#include "generators/inputs/pslg_inputs.hpp"
+#include "generators/mesh_2d/quadtree_mesh_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
-#include "triangulation/check_conforming_2d.hpp"
+#include "triangulation/checks/check_conforming_2d.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;

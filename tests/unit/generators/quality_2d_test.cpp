@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "generators/quality_2d.hpp"
+#include "generators/mesh_2d/quality_2d.hpp"
 
 namespace gen = exactmesh::generators;
 

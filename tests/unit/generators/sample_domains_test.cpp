@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/sample_domains.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 

@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/background_size_2d.hpp"
-#include "generators/size_function.hpp"
-#include "generators/size_quadtree_2d.hpp"
-#include "generators/size_smoothing_2d.hpp"
+#include "generators/sizing/background_size_2d.hpp"
+#include "generators/sizing/size_function.hpp"
+#include "generators/sizing/size_quadtree_2d.hpp"
+#include "generators/sizing/size_smoothing_2d.hpp"
 #include "predicates/orient2d.hpp"
 
 namespace em = exactmesh;

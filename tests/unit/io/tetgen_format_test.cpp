@@ -12,7 +12,7 @@
 #include "io/format_error.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/tetgen_format.hpp"
-#include "triangulation/mesh3.hpp"
+#include "triangulation/mesh/mesh3.hpp"
 #include "io/vtk_format.hpp"
 
 namespace io = exactmesh::io;

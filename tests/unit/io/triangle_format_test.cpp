@@ -18,7 +18,7 @@
 
 #include "io/format_error.hpp"
 #include "io/triangle_format.hpp"
-#include "triangulation/mesh2.hpp"
+#include "triangulation/mesh/mesh2.hpp"
 
 namespace fs = std::filesystem;
 namespace io = exactmesh::io;

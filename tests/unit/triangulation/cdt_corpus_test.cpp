@@ -53,9 +53,9 @@
 #include <vector>
 
 #include "predicates/incircle.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
-#include "triangulation/constrained_2d.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 #include "tests/support/test_scale.hpp"
 
 namespace tri = exactmesh::triangulation;

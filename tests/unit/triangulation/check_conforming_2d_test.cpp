@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "triangulation/check_conforming_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
+#include "triangulation/checks/check_conforming_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
 
 namespace tri = exactmesh::triangulation;
 

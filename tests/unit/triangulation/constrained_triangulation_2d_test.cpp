@@ -17,9 +17,9 @@
 #include "base/errors.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
-#include "triangulation/check_constrained_2d.hpp"
-#include "triangulation/constrained_2d.hpp"
-#include "triangulation/constrained_triangulation_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
+#include "triangulation/constrained/constrained_triangulation_2d.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The naive empty-circle oracle (triangulation/delaunay_2d_naive.hpp) that `exactmesh fuzz`
+// The naive empty-circle oracle (triangulation/delaunay/delaunay_2d_naive.hpp) that `exactmesh fuzz`
 // ships: it agrees with all three Delaunay algorithms on small random and cocircular sets, and
 // it names the disagreement when a triangulation is not Delaunay (one edge flipped), has a
 // wrong count, or a clockwise triangle.
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "triangulation/delaunay_2d.hpp"
-#include "triangulation/delaunay_2d_naive.hpp"
+#include "triangulation/delaunay/delaunay_2d.hpp"
+#include "triangulation/delaunay/delaunay_2d_naive.hpp"
 
 namespace tri = exactmesh::triangulation;
 

@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "triangulation/bowyer_watson_2d.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/green_sibson_2d.hpp"
-#include "triangulation/tanemura_merriam_2d.hpp"
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/delaunay/green_sibson_2d.hpp"
+#include "triangulation/delaunay/tanemura_merriam_2d.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;

@@ -21,10 +21,10 @@
 #include "predicates/orient3d.hpp"
 #include "predicates/sos.hpp"
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
-#include "triangulation/bowyer_watson_3d.hpp"
-#include "triangulation/check_3d.hpp"
-#include "triangulation/green_sibson_3d.hpp"
-#include "triangulation/spatial_sort.hpp"
+#include "triangulation/delaunay/bowyer_watson_3d.hpp"
+#include "triangulation/checks/check_3d.hpp"
+#include "triangulation/delaunay/green_sibson_3d.hpp"
+#include "triangulation/mesh/spatial_sort.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;

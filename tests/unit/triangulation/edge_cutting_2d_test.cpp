@@ -15,16 +15,16 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/inputs.hpp"
-#include "generators/sweep_triangulation_2d.hpp"
+#include "generators/inputs/inputs.hpp"
+#include "generators/inputs/sweep_triangulation_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/oracles/triangulation_enumeration_2d.hpp"
 #include "tests/support/integer_points_2d.hpp"
 #include "tests/support/test_scale.hpp"
-#include "triangulation/bowyer_watson_2d.hpp"
-#include "triangulation/check_2d.hpp"
-#include "triangulation/edge_cutting_2d.hpp"
-#include "triangulation/edge_swap_2d.hpp"
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/modification/edge_cutting_2d.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;

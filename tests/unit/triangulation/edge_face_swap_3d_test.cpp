@@ -19,8 +19,8 @@
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
 #include "tests/support/local_delaunay_3d.hpp"
 #include "tests/support/placing_tetrahedralization_3d.hpp"
-#include "triangulation/check_topology_3d.hpp"
-#include "triangulation/edge_face_swap_3d.hpp"
+#include "triangulation/checks/check_topology_3d.hpp"
+#include "triangulation/modification/edge_face_swap_3d.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The 2D flip kernel (triangulation/flip_2d.hpp): after each primitive the half-edge mesh is
+// The 2D flip kernel (triangulation/mesh/flip_2d.hpp): after each primitive the half-edge mesh is
 // valid (twins mutual and sharing the edge reversed, every triangle strictly counter-clockwise
 // by exact orient2d), the layout is the documented one, the flags stay on the edges they marked;
 // incremental insertion and Lawson flipping written on the kernel alone reach exactly
@@ -14,13 +14,13 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/sweep_triangulation_2d.hpp"
+#include "generators/inputs/sweep_triangulation_2d.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
-#include "triangulation/bowyer_watson_2d.hpp"
-#include "triangulation/edge_swap_2d.hpp"
-#include "triangulation/flip_2d.hpp"
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
+#include "triangulation/mesh/flip_2d.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Unit tests of the 3D local rewrites (triangulation/flip_3d.*): each split and flip of TetStar3
+// Unit tests of the 3D local rewrites (triangulation/mesh/flip_3d.*): each split and flip of TetStar3
 // (1-4, 2-6, n-2n; 2-3, 3-2, 4-4 from a vertex), each planned flip (2-3, 3-2, 4-4, 2-2) and
 // replace_tets, on small hand-made domains. After each: every tetrahedron positive (exact
 // orient3d), adjacency symmetric across the same face, check_topology_3d valid, vertex_tet
@@ -16,9 +16,9 @@
 
 #include "predicates/orient3d.hpp"
 #include "tests/support/placing_tetrahedralization_3d.hpp"
-#include "triangulation/check_topology_3d.hpp"
-#include "triangulation/flip_3d.hpp"
-#include "triangulation/mesh3.hpp"
+#include "triangulation/checks/check_topology_3d.hpp"
+#include "triangulation/mesh/flip_3d.hpp"
+#include "triangulation/mesh/mesh3.hpp"
 
 namespace {
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Tests of triangulation/locate_2d.hpp (issue 12): the shared bucket-grid locator answers the
+// Tests of triangulation/mesh/locate_2d.hpp (issue 12): the shared bucket-grid locator answers the
 // lowest-numbered triangle containing a point (closed), as a scan of every triangle does, on
 // vertices, on edges, inside, outside and on a fan of slivers (where the grid coarsens).
-#include "triangulation/locate_2d.hpp"
+#include "triangulation/mesh/locate_2d.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "predicates/orient2d.hpp"
-#include "triangulation/constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 
 namespace tri = exactmesh::triangulation;
 namespace pred = exactmesh::predicates;

@@ -10,7 +10,7 @@
 
 #include "base/errors.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
-#include "triangulation/quality_3d.hpp"
+#include "triangulation/checks/quality_3d.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+// The domain's boundary as the frontal and quadtree generators start from it (issue 6):
+//  - the constrained Delaunay triangulation of the input PSLG (duplicates merged, crossing
+//    segments split, exterior and holes removed as Triangle's -p does): the domain itself, kept
+//    for exact point-in-domain queries;
+//  - its boundary pieces split so that each is about as long as the size function wants: the
+//    integral of ds / s over each piece is equal along a piece of the input and at most 1 (whole
+//    pieces), new points by linear interpolation, rounded, then kept exactly on the piece or
+//    strictly inside a domain triangle beside it (moved by up to 3 units in the last place when
+//    they rounded outside), so that the pieces always form a valid PSLG: two pieces meet only at
+//    a shared end, whatever features at the resolution of doubles the input has. Beside a sliver
+//    (a vertex within 3 units in the last place of a piece) the piece bends at that vertex, the
+//    sliver left out; a point that has no place is left out (a longer piece there);
+//  - the directed front: every piece with the domain on its left (both directions for a slit:
+//    a segment with the domain on both sides); every new point lies in the domain.
+// Also discretize_curve, the same spacing rule along any parametric curve (sample domains).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "generators/boundary/mesh_domain_2d.hpp"
+#include "generators/sizing/size_function.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
+#include "triangulation/mesh/locate_2d.hpp"
+
+namespace exactmesh::generators {
+
+/// Exact point-in-domain queries over a triangulation of the domain: the shared bucket-grid
+/// locator (triangulation/mesh/locate_2d.hpp); locate(mesh, x, y) is a triangle containing (x, y)
+/// (closed), the lowest-numbered one, or kNone.
+using DomainLocator2 = triangulation::TriangleLocator2;
+
+struct DomainBoundary2 {
+    /// The constrained Delaunay triangulation of the input PSLG (constrained_delaunay_2d:
+    /// duplicates merged, crossings split, exterior and holes removed): the domain.
+    triangulation::Cdt2Result cdt;
+    /// 2·#V: cdt.mesh.xy (input vertices keep their numbers, crossings after them), then the
+    /// points added on the boundary so that each boundary edge is about the size's length.
+    std::vector<double> xy;
+    std::uint32_t input_vertex_count = 0;
+    /// 2·#E directed boundary edges with the domain on their left (a slit gives both
+    /// directions); the initial front of the frontal generators.
+    std::vector<triangulation::VertIdx> front;
+    std::vector<std::uint32_t> front_segment;  ///< #E: the input segment of each front edge
+    /// 2·#P: the boundary pieces (each once, undirected) and their input segment: each piece
+    /// a - b of cdt is a chain of them from a to b through new points (and, bent around a
+    /// sliver, through the sliver's third vertex); pieces meet only at shared ends (exact).
+    std::vector<triangulation::VertIdx> pieces;
+    std::vector<std::uint32_t> piece_segment;
+    /// The vertices of the domain on no front edge (ascending): input vertices strictly inside
+    /// the domain with no segment at them. Every generator keeps them; the advancing fronts
+    /// treat them as front vertices without edges (candidates, and points no triangle may
+    /// cover) until a triangle takes them in.
+    std::vector<triangulation::VertIdx> free_vertices;
+    /// Over cdt.mesh (built last: the boundary must not move afterwards).
+    DomainLocator2 locator;
+};
+
+/// @param size the target edge length (unbounded: the pieces of the CDT are kept as they are).
+/// @throws InputError as constrained_delaunay_2d; InputError when the segments enclose no region.
+DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
+                                           const SizeFunction& size,
+                                           const triangulation::Cdt2Options& cdt = {});
+/// The same from the domain's triangulation, built once (MeshDomain2::triangulation, copied).
+DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size);
+
+/// Per vertex of a domain's CDT (constrained_delaunay_2d with the exterior removed): the mean
+/// length of the boundary pieces at it (of all its edges where no piece ends there; 0 for a
+/// vertex no triangle uses), and its shortest edge (infinity when it has none). Lengths are
+/// scale-free (predicates::scale_free_norm): exact under 2^k scaling, no overflow at 2^600.
+struct BoundarySpacing {
+    std::vector<double> mean;
+    std::vector<double> shortest;
+};
+BoundarySpacing boundary_spacing(const triangulation::Cdt2Result& domain);
+
+/// The input's own spacing, ungraded (Gmsh's "extend from the boundary"; the generators' default
+/// is graded_size_from_boundary, generators/boundary/graded_boundary_size_2d.hpp):
+/// the domain's constrained Delaunay triangulation as a background mesh
+/// (SizeFunction::background_mesh), each vertex sized by the mean length of the pieces at it (of
+/// its edges when no piece ends there), linear in between, so the input's own spacing sets the
+/// mesh's.
+/// @throws InputError as constrained_delaunay_2d; InputError when the segments enclose no region.
+SizeFunction size_from_boundary(const triangulation::Pslg& pslg,
+                                const triangulation::Cdt2Options& cdt = {});
+
+/// The number of triangles the size function asks for on the domain (the generators' automatic
+/// budgets): over the triangles of boundary.cdt, area / (area of an equilateral triangle at the
+/// smallest size sampled at the corners and the centroid), a triangle split in four while it is
+/// wider than 8 such sizes and holds more than 16 (at most 8 levels), so that a small size inside
+/// a large triangle of the CDT is not missed. A rough estimate (double precision), 0 for an
+/// unbounded size.
+double expected_triangle_count(const DomainBoundary2& boundary, const SizeFunction& size);
+
+/// True when (x, y) lies in the domain (closed), by exact orient2d tests on the CDT.
+bool in_domain(const DomainBoundary2& boundary, double x, double y);
+
+using Curve2 = std::function<std::array<double, 2>(double)>;
+
+/// Points of curve(u), u in [u0, u1], both ends included, spaced so that the integral of
+/// ds / size between neighbours is equal and at most 1 (at least min_pieces pieces); the
+/// integral is taken over a polyline of at least 8 samples per piece. An unbounded size gives
+/// min_pieces pieces equal in u.
+std::vector<std::array<double, 2>> discretize_curve(const Curve2& curve, double u0, double u1,
+                                                    const SizeFunction& size, int min_pieces);
+
+}  // namespace exactmesh::generators

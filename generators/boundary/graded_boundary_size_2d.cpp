@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+// The graded default size from the boundary (see graded_boundary_size_2d.hpp): per-vertex sizes
+// from the domain's CDT, and a kd-tree answering min over v of (h_v + g |x - v|) within 1.6%.
+#include "generators/boundary/graded_boundary_size_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "generators/boundary/domain_boundary_2d.hpp"
+#include "predicates/power_of_two.hpp"
+
+namespace exactmesh::generators {
+
+namespace tri = exactmesh::triangulation;
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// A node is skipped when its lower bound times 1 + 2^-6 reaches the best value found.
+constexpr double kSlack = 1.0 + 0x1p-6;
+constexpr std::uint32_t kLeafSize = 8;
+
+/// |(dx, dy)| in a frame scaled by the power of two that brings the larger component to [1, 2):
+/// no square overflows or underflows, and the result scales exactly with the input by 2^k.
+using predicates::scale_free_norm;
+
+/// min over the sites of (h_v + g |x - v|), approximately (within the slack).
+class GradedSites {
+  public:
+    GradedSites(std::vector<double> xy, std::vector<double> sizes, double gradation)
+        : gradation_(gradation) {
+        const auto n = static_cast<std::uint32_t>(sizes.size());
+        order_.resize(n);
+        std::iota(order_.begin(), order_.end(), 0u);
+        xy_ = std::move(xy);
+        sizes_ = std::move(sizes);
+        nodes_.reserve(4 * (n / kLeafSize + 1));
+        nodes_.push_back(make_node(0, n));
+        split(0);
+        // Store the sites in tree order, so a leaf reads contiguous memory.
+        std::vector<double> xy_sorted(2 * std::size_t{n}), sizes_sorted(n);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            xy_sorted[2 * i] = xy_[2 * order_[i]];
+            xy_sorted[2 * i + 1] = xy_[2 * order_[i] + 1];
+            sizes_sorted[i] = sizes_[order_[i]];
+        }
+        xy_ = std::move(xy_sorted);
+        sizes_ = std::move(sizes_sorted);
+    }
+
+    double operator()(double x, double y) const {
+        double best = kInfinity;
+        // Depth-first, the nearer child first; the stack holds (node, lower bound).
+        std::pair<std::uint32_t, double> stack[64];
+        int top = 0;
+        stack[top++] = {0, lower_bound(nodes_[0], x, y)};
+        while (top > 0) {
+            const auto [index, bound] = stack[--top];
+            if (bound * kSlack >= best) continue;
+            const Node& node = nodes_[index];
+            if (node.left == kLeaf) {
+                for (std::uint32_t i = node.begin; i < node.end; ++i) {
+                    const double value =
+                        sizes_[i] +
+                        gradation_ * scale_free_norm(x - xy_[2 * i], y - xy_[2 * i + 1]);
+                    best = std::min(best, value);
+                }
+                continue;
+            }
+            const std::uint32_t a = node.left, b = node.left + 1;
+            const double bound_a = lower_bound(nodes_[a], x, y);
+            const double bound_b = lower_bound(nodes_[b], x, y);
+            // The depth is at most about log2(n / 8) + 1 < 32, two entries per level.
+            if (bound_a <= bound_b) {
+                stack[top++] = {b, bound_b};
+                stack[top++] = {a, bound_a};
+            } else {
+                stack[top++] = {a, bound_a};
+                stack[top++] = {b, bound_b};
+            }
+        }
+        return best;
+    }
+
+  private:
+    static constexpr std::uint32_t kLeaf = std::numeric_limits<std::uint32_t>::max();
+    struct Node {
+        double x0, y0, x1, y1;           ///< the bounding box of its sites
+        double smallest;                 ///< the smallest h_v of its sites
+        std::uint32_t begin, end, left;  ///< sites [begin, end) of order_; children left, left + 1
+    };
+
+    double lower_bound(const Node& node, double x, double y) const {
+        const double dx = x < node.x0 ? node.x0 - x : x > node.x1 ? x - node.x1 : 0;
+        const double dy = y < node.y0 ? node.y0 - y : y > node.y1 ? y - node.y1 : 0;
+        return node.smallest + gradation_ * scale_free_norm(dx, dy);
+    }
+
+    /// The node of sites order_[begin, end), a leaf until split.
+    Node make_node(std::uint32_t begin, std::uint32_t end) const {
+        Node node{kInfinity, kInfinity, -kInfinity, -kInfinity, kInfinity, begin, end, kLeaf};
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const std::uint32_t v = order_[i];
+            node.x0 = std::min(node.x0, xy_[2 * v]);
+            node.x1 = std::max(node.x1, xy_[2 * v]);
+            node.y0 = std::min(node.y0, xy_[2 * v + 1]);
+            node.y1 = std::max(node.y1, xy_[2 * v + 1]);
+            node.smallest = std::min(node.smallest, sizes_[v]);
+        }
+        return node;
+    }
+
+    /// Splits nodes_[slot] at the median of its wider side, recursively, into children stored
+    /// as a pair (left, left + 1); the depth stays about log2(n / kLeafSize).
+    void split(std::uint32_t slot) {
+        const Node node = nodes_[slot];
+        if (node.end - node.begin <= kLeafSize) return;
+        const int axis = node.x1 - node.x0 >= node.y1 - node.y0 ? 0 : 1;
+        const std::uint32_t middle = node.begin + (node.end - node.begin) / 2;
+        std::nth_element(order_.begin() + node.begin, order_.begin() + middle,
+                         order_.begin() + node.end, [&](std::uint32_t p, std::uint32_t q) {
+                             return xy_[2 * p + axis] < xy_[2 * q + axis];
+                         });
+        const auto left = static_cast<std::uint32_t>(nodes_.size());
+        nodes_[slot].left = left;
+        nodes_.push_back(make_node(node.begin, middle));
+        nodes_.push_back(make_node(middle, node.end));
+        split(left);
+        split(left + 1);
+    }
+
+    double gradation_;
+    std::vector<double> xy_, sizes_;
+    std::vector<std::uint32_t> order_;
+    std::vector<Node> nodes_;
+};
+
+/// @throws InputError unless g is finite and > 0.
+void check_gradation(double gradation) {
+    if (!(std::isfinite(gradation) && gradation > 0)) {
+        std::ostringstream text;
+        text.precision(17);
+        text << "the gradation of the default size must be finite and > 0, not " << gradation;
+        throw InputError(text.str());
+    }
+}
+
+}  // namespace
+
+SizeFunction graded_size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& cdt,
+                                       double gradation) {
+    check_gradation(gradation);
+    return graded_size_from_boundary(MeshDomain2(pslg, cdt), gradation);
+}
+
+SizeFunction graded_size_from_boundary(const MeshDomain2& domain_of, double gradation) {
+    check_gradation(gradation);
+    const tri::Cdt2Result& domain = domain_of.triangulation();
+    const tri::Triangulation2& mesh = domain.mesh;
+    if (mesh.triangle_count() == 0) throw InputError("the segments enclose no region");
+    const std::size_t n = mesh.vertex_count();
+    const BoundarySpacing spacing = boundary_spacing(domain);
+    std::vector<double> xy, sizes;
+    std::vector<std::uint8_t> used(n, 0);
+    for (const tri::VertIdx v : mesh.triangles) {
+        if (used[v] != 0) continue;
+        used[v] = 1;
+        xy.insert(xy.end(), {mesh.xy[2 * v], mesh.xy[2 * v + 1]});
+        sizes.push_back(std::min(spacing.mean[v], spacing.shortest[v]));
+    }
+    const std::size_t sites = sizes.size();
+    auto field = std::make_shared<const GradedSites>(std::move(xy), std::move(sizes), gradation);
+    std::ostringstream description;
+    description << "graded from the boundary: " << sites << " vertices, gradation " << gradation;
+    return SizeFunction::analytic([field](double x, double y) { return (*field)(x, y); },
+                                  description.str());
+}
+
+}  // namespace exactmesh::generators

@@ -1,0 +1,796 @@
+// SPDX-License-Identifier: MIT
+// Delaunay refinement (see delaunay_refinement_2d.hpp).
+//
+// State beside the ConstrainedTriangulation2: a bucketed queue of bad triangles (key, slot,
+// version), where a slot's version grows whenever an edit writes the slot, so stale entries are
+// recognised in O(1); a bucketed queue of encroached pieces to split (by their two vertices, so
+// a piece already split is simply not found; keyed by the triangle of the encroaching vertex)
+// and a stack of pieces rejected circumcenters encroach; per vertex, for Steiner points on
+// segments, the segment and, for shell splits, the apex and the shell's exponent (the rule of
+// Miller, Pav and Walkington). Loop: split the forced pieces, then the worst queued piece unless
+// a bad triangle is worse (each split queues the pieces its new triangles encroach and its bad
+// triangles), else take the worst bad triangle: insert its circumcenter, or, when the
+// circumcenter encroaches pieces, split them (forced) and queue the triangle again. Triangles good
+// for theta_min but below the polish angle are kept aside (candidates); when the loop ends, they
+// are queued with the polish angle as the bound and the loop runs again with a Steiner point
+// limit; if it is reached, the queue keeps only what is bad for theta_min and the loop ends the
+// proven way. Sizes at edge midpoints (unless uniform) are kept per half-edge (forgotten when the
+// slot is rewritten): a new triangle evaluates the size of its new edges only.
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
+#include "generators/boundary/region_areas_2d.hpp"
+#include "predicates/angle_comparisons_2d.hpp"
+#include "predicates/constructions.hpp"
+#include "predicates/power_of_two.hpp"
+#include "predicates/triangle_area.hpp"
+#include "triangulation/constrained/constrained_triangulation_2d.hpp"
+
+namespace exactmesh::generators {
+
+namespace {
+
+namespace tri = exactmesh::triangulation;
+using predicates::Sign;
+using tri::EdgeIdx;
+using tri::kNone;
+using tri::TriIdx;
+using tri::VertIdx;
+
+/// Scale invariance (a PSLG scaled by 2^k, |k| <= 600, is refined the same way, scaled): every
+/// squared length, area and quality measure is taken on edge vectors first scaled exactly by a
+/// power of two, to a largest component in [1, 2). No product then overflows or underflows, and
+/// the scaled vectors, so the keys and decisions, are the same bit for bit at every scale.
+struct ScaledTriangle {
+    double edge[3][2];  ///< edge k: p[k+1] - p[k], scaled
+    double length2[3];  ///< their squared lengths
+    double cross;       ///< (p1 - p0) x (p2 - p0), scaled twice (twice the area)
+    int shift;          ///< the scaling: 2^shift
+};
+
+ScaledTriangle scaled_triangle(const double* const p[3]) {
+    ScaledTriangle r;
+    double largest = 0;
+    for (int k = 0; k < 3; ++k) {
+        r.edge[k][0] = p[(k + 1) % 3][0] - p[k][0];
+        r.edge[k][1] = p[(k + 1) % 3][1] - p[k][1];
+        largest = std::max({largest, std::fabs(r.edge[k][0]), std::fabs(r.edge[k][1])});
+    }
+    r.shift = predicates::unit_shift(largest);
+    const predicates::PowerOfTwo unit(r.shift);
+    for (int k = 0; k < 3; ++k) {
+        r.edge[k][0] = unit(r.edge[k][0]);
+        r.edge[k][1] = unit(r.edge[k][1]);
+        r.length2[k] = r.edge[k][0] * r.edge[k][0] + r.edge[k][1] * r.edge[k][1];
+    }
+    // p2 - p0 = -edge[2].
+    r.cross = r.edge[0][1] * r.edge[2][0] - r.edge[0][0] * r.edge[2][1];
+    return r;
+}
+
+/// The angle at o between o -> p and o -> q (radians, [0, pi]), on scaled vectors.
+double corner_radians(const double* o, const double* p, const double* q) {
+    double ux = p[0] - o[0], uy = p[1] - o[1], wx = q[0] - o[0], wy = q[1] - o[1];
+    const double largest = std::max({std::fabs(ux), std::fabs(uy), std::fabs(wx), std::fabs(wy)});
+    const predicates::PowerOfTwo unit(predicates::unit_shift(largest));
+    ux = unit(ux), uy = unit(uy), wx = unit(wx), wy = unit(wy);
+    return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+}
+
+struct BadTriangle {
+    float key;  // larger is worse
+    TriIdx t;
+    std::uint32_t version : 31;
+    std::uint32_t too_big : 1;  // an edge longer than the size (else only skinny)
+};
+
+/// Encroached pieces wait beside the bad triangles, by the key of the triangle whose apex
+/// encroaches them (below).
+struct EncroachedPiece {
+    float key;
+    VertIdx a, b;
+    std::uint32_t too_big;
+};
+
+/// Bad triangles (or encroached pieces) by priority, worst first: too big ones before skinny
+/// ones (as CGAL's mesher), each by its key, in buckets of a sixteenth of a binade (keys within
+/// 4.4% of each other share a bucket), last in first out within a bucket (the triangles an
+/// insertion just made are neighbours: their memory is warm). O(1) per push and pop, against
+/// O(log n) cache-missing steps of a binary heap over all bad triangles.
+template <class Entry>
+class BucketQueue {
+  public:
+    void push(const Entry& b) {
+        const std::size_t k = bucket(b);
+        buckets_[k].push_back(b);
+        top_ = std::max(top_, k);
+        ++size_;
+    }
+    bool empty() const { return size_ == 0; }
+    void clear() {
+        for (auto& b : buckets_) b.clear();
+        top_ = 0;
+        size_ = 0;
+    }
+    /// The bucket of the worst entry (larger is worse); the queue must not be empty.
+    std::size_t top_bucket() {
+        while (buckets_[top_].empty()) --top_;
+        return top_;
+    }
+    Entry pop() {
+        while (buckets_[top_].empty()) --top_;
+        const Entry b = buckets_[top_].back();
+        buckets_[top_].pop_back();
+        --size_;
+        return b;
+    }
+
+  private:
+    static constexpr std::size_t kPerLevel = 1024;  // keys 1 .. 2^64 in steps of 2^(1/16)
+    std::vector<Entry> buckets_[2 * kPerLevel];
+    std::size_t top_ = 0;
+    std::size_t size_ = 0;
+    static std::size_t bucket(const Entry& b) {
+        // The key's exponent and its four leading fraction bits: 16 buckets per binade,
+        // monotone in the key (keys are at least 1, so the float's bits from 1.0 up).
+        const float key = std::max(1.0f, b.key);
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &key, sizeof bits);
+        const std::size_t level = (bits - 0x3F800000u) >> 19;
+        return (b.too_big ? kPerLevel : 0) + std::min<std::size_t>(kPerLevel - 1, level);
+    }
+};
+
+struct PieceToSplit {
+    VertIdx a, b;
+    bool forced;  // a rejected circumcenter encroaches it: split without testing the apexes
+};
+
+/// The badness evaluate() found: the key (0 when good for every criterion) and its class.
+struct Badness {
+    double key;
+    bool too_big;
+};
+
+/// Steiner points on segments: which segment, and for shell splits the apex and the shell.
+struct SegmentVertex {
+    std::uint32_t segment = kNone;
+    VertIdx apex = kNone;
+    int shell = 0;
+};
+
+class Refiner {
+  public:
+    Refiner(const tri::Pslg& pslg, const RefinementOptions2& options)
+        : options_(options),
+          regions_(pslg.regions),
+          region_areas_(has_region_areas(pslg.regions)),
+          numbered_regions_(region_areas_ ? numbered_regions(pslg.regions) : std::vector<double>{}),
+          cdt_(region_areas_ ? tri::Pslg{pslg.xy, pslg.segments, pslg.holes, numbered_regions_}
+                             : pslg,
+               options.cdt),
+          mesh_(cdt_.mesh()) {}
+
+    RefinementResult2 run();
+
+  private:
+    const RefinementOptions2& options_;
+    // Regional maximum areas (region_areas_2d.hpp): when a region has one, the triangulation's
+    // attributes are region numbers (numbered_regions), mapped back to the input's attributes in
+    // the result.
+    std::span<const double> regions_;
+    bool region_areas_ = false;
+    std::vector<double> numbered_regions_;
+    tri::ConstrainedTriangulation2 cdt_;
+    const tri::TriMesh2& mesh_;  // the triangulation's, valid across edits
+    RefinementCounters2 counters_;
+    BucketQueue<BadTriangle> bad_;
+    /// Pieces a vertex encroaches (split when no bad triangle is worse than the triangle of the
+    /// encroaching apex: see refine), and pieces a rejected circumcenter encroaches (forced_:
+    /// split at once).
+    BucketQueue<EncroachedPiece> pieces_;
+    std::vector<PieceToSplit> forced_;
+    /// Tests the constrained edges of domain triangle t (just evaluated as `badness`) for
+    /// encroachment by their apexes and queues those encroached.
+    void queue_encroached_pieces(TriIdx t, const Badness& badness);
+    std::vector<std::uint32_t> version_;  // per triangle slot
+    bool cache_sizes_ = false;         // a size function dearer than a constant: edge_size_ is kept
+    std::vector<double> edge_size_;    // per half-edge: the size at its midpoint; 0: unknown
+    std::vector<std::uint32_t> seen_;  // per triangle slot: batch stamp of process_touched
+    std::uint32_t batch_ = 0;
+    std::vector<SegmentVertex> on_segment_;  // per vertex
+    std::vector<std::uint32_t> degree_;      // per initial vertex: constrained edges at it
+    VertIdx initial_vertices_ = 0;
+    double sine2_bound_ = 0;  // sin^2(min_angle); 0: no angle criterion
+    std::uint64_t budget_ = 0;
+
+    double asked_sine2_ = 0;  // sin^2(min_angle), also while polishing
+    /// Refines until no triangle is bad (true) or `limit` Steiner points exist (false).
+    bool refine(std::uint64_t limit);
+    /// The polish: refinement to the polish angle within its budget, then (if that ran out)
+    /// back to min_angle.
+    void polish();
+    /// Every domain triangle evaluated again (the bound changed); stale entries dropped.
+    void requeue_for_asked_bound();
+    void next_batch() {
+        if (++batch_ == 0) {
+            std::fill(seen_.begin(), seen_.end(), 0u);
+            batch_ = 1;
+        }
+    }
+    std::vector<BadTriangle> polish_;  // candidates of the polish (with stale entries)
+    double polish_sine2_ = 0;          // sin^2(polish angle); 0: no polish
+    bool below_asked_bound(TriIdx t) const;
+    void check_domain_and_budget();
+    void initial_queue();
+    /// Triangles written by the last edit: new versions; bad ones and encroached pieces queued.
+    void process_touched();
+    Badness evaluate(TriIdx t);
+    bool encroached_from(EdgeIdx e);  // the apex of e's triangle encroaches e
+    struct SplitPoint {
+        double x = 0, y = 0;
+        VertIdx apex = kNone;  // a concentric-shell split about this vertex
+        int shell = 0;         // at distance 2^shell
+    };
+    /// Where piece e splits: its midpoint, or a concentric shell about its one corner end.
+    SplitPoint split_point(EdgeIdx e) const;
+    void split_piece(const PieceToSplit& piece);
+    bool leave_at_small_angle(EdgeIdx e, double shortest_edge) const;
+    std::vector<double> small_apex_angle_;  // per initial vertex: the smallest angle between its
+                                            // pieces (radians) when below 60 degrees, else 0
+    bool small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const;
+    void find_small_input_angles();
+    void spend_budget();
+    const double* point(VertIdx v) const { return mesh_.point(v); }
+};
+
+void Refiner::check_domain_and_budget() {
+    std::uint64_t inside = 0;
+    double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
+    double regional = 0;  // the triangles the regions' maximum areas ask for
+    for (TriIdx t = 0; t < mesh_.triangle_slots(); ++t) {
+        if (!cdt_.in_domain(t)) continue;
+        ++inside;
+        if (region_areas_) {
+            regional += triangles_of_area(point(mesh_.tv[3 * t]), point(mesh_.tv[3 * t + 1]),
+                                          point(mesh_.tv[3 * t + 2]),
+                                          region_area_of(regions_, cdt_.attribute(t)));
+        }
+        for (unsigned k = 0; k < 3; ++k) {
+            const double* p = point(mesh_.tv[3 * t + k]);
+            lo_x = std::min(lo_x, p[0]);
+            hi_x = std::max(hi_x, p[0]);
+            lo_y = std::min(lo_y, p[1]);
+            hi_y = std::max(hi_y, p[1]);
+        }
+    }
+    if (inside == 0) {
+        throw InputError(
+            "delaunay refinement: the segments enclose no region (every triangle is outside the "
+            "domain: is the boundary closed, and is a hole point inside the outer boundary?)");
+    }
+    // Automatic: at least 10^6, 64 per input feature, and 16 times the element count the size
+    // function asks for over the domain's bounding box (equilateral_count_in_box).
+    const double estimate =
+        std::max(equilateral_count_in_box(options_.size, lo_x, lo_y, hi_x, hi_y), regional);
+    const double features =
+        static_cast<double>(initial_vertices_) + static_cast<double>(mesh_.triangle_slots());
+    budget_ = options_.max_steiner_points != 0
+                  ? options_.max_steiner_points
+                  : static_cast<std::uint64_t>(
+                        std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
+    // Room for the expected mesh: refinement makes about twice the ideal count of equilateral
+    // triangles, with half as many vertices as triangles. A hint only, so capped at the budget
+    // and at 2^21 vertices (about 200 MB reserved); beyond that the arrays grow as they go.
+    const double expected_vertices =
+        std::min({1.1 * estimate, static_cast<double>(budget_), 0x1p21}) +
+        static_cast<double>(mesh_.vertex_count());
+    cdt_.reserve(static_cast<std::uint32_t>(expected_vertices));
+    version_.reserve(static_cast<std::size_t>(2 * expected_vertices));
+    seen_.reserve(static_cast<std::size_t>(2 * expected_vertices));
+    if (cache_sizes_) edge_size_.reserve(static_cast<std::size_t>(6 * expected_vertices));
+    on_segment_.reserve(static_cast<std::size_t>(expected_vertices));
+}
+
+void Refiner::find_small_input_angles() {
+    // Sectors of the domain about each vertex between two consecutive pieces: from each piece
+    // v -> w with a domain triangle on its left, turn counter-clockwise about v through domain
+    // triangles, summing their angles at v, up to the next piece. A sector below 60 degrees is a
+    // small input angle (measured inside the domain: a sharp notch of a hole is none).
+    small_apex_angle_.assign(initial_vertices_, 0.0);
+    auto corner_angle = [&](VertIdx o, VertIdx p, VertIdx q) {
+        return corner_radians(point(o), point(p), point(q));
+    };
+    for (EdgeIdx e = 0; e < mesh_.tv.size(); ++e) {
+        if (cdt_.segment_of(e) == kNone || !cdt_.in_domain(tri::triangle_of(e))) continue;
+        const VertIdx v = mesh_.origin(e);
+        double sector = 0;
+        EdgeIdx g = e;  // v -> w in a domain triangle
+        for (std::size_t turns = 0; turns < mesh_.tv.size(); ++turns) {
+            const EdgeIdx back = tri::prev_edge(g);  // x -> v
+            sector += corner_angle(v, mesh_.destination(g), mesh_.origin(back));
+            if (cdt_.segment_of(back) != kNone || sector >= 3.14159265358979323846 / 3) break;
+            g = mesh_.twin[back];  // v -> x in the next triangle counter-clockwise
+        }
+        if (sector < 3.14159265358979323846 / 3) {
+            double& angle = small_apex_angle_[v];
+            angle = angle == 0 ? std::max(sector, 1e-300) : std::min(angle, sector);
+        }
+    }
+}
+
+bool Refiner::small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const {
+    // Both ends of the shortest edge u - v on the same concentric shell about the same apex,
+    // on different segments, and the third vertex w that apex: the triangle's smallest angle is
+    // the input angle itself. A skinny triangle spanning the angle further out (w on a shell
+    // farther away) is split: the midpoints between shells make the angle's wedge into
+    // triangles no worse than the input angle, and never approach the apex (its own pieces are
+    // split on shells only, and rejected circumcenters do not split them: leave_at_small_angle).
+    const SegmentVertex* su = u < on_segment_.size() ? &on_segment_[u] : nullptr;
+    const SegmentVertex* sv = v < on_segment_.size() ? &on_segment_[v] : nullptr;
+    if (su == nullptr || sv == nullptr || su->apex == kNone) return false;
+    return su->apex == sv->apex && su->shell == sv->shell && su->segment != sv->segment &&
+           w == su->apex;
+}
+
+Badness Refiner::evaluate(TriIdx t) {
+    const VertIdx v[3] = {mesh_.tv[3 * t], mesh_.tv[3 * t + 1], mesh_.tv[3 * t + 2]};
+    const double* p[3] = {point(v[0]), point(v[1]), point(v[2])};
+    const ScaledTriangle scaled = scaled_triangle(p);
+    const double* length2 = scaled.length2;  // edge k: v[k] - v[k+1], scaled
+    double size_key = 0;
+    if (options_.size.bounded()) {
+        for (int k = 0; k < 3; ++k) {
+            // The size at the edge's midpoint, kept per half-edge: an edge keeps it while its
+            // triangle on either side is not rewritten (a cavity's boundary edges, and each new
+            // spoke for its second triangle, need no new evaluation).
+            const EdgeIdx e = 3 * t + static_cast<EdgeIdx>(k);
+            double s = 0;
+            if (cache_sizes_) {
+                s = edge_size_[e];
+                if (!(s > 0)) {
+                    const EdgeIdx f = mesh_.twin[e];
+                    s = f < edge_size_.size() ? edge_size_[f] : 0.0;
+                }
+            }
+            if (!(s > 0)) {
+                const double mx = 0.5 * (p[k][0] + p[(k + 1) % 3][0]),
+                             my = 0.5 * (p[k][1] + p[(k + 1) % 3][1]);
+                s = options_.size(mx, my);
+                if (!(s > 0)) {
+                    const double where[2] = {mx, my};
+                    throw InputError("size function: not a number > 0 at " + format_point(where) +
+                                     " (" + options_.size.describe() + ")");
+                }
+            }
+            if (cache_sizes_) edge_size_[e] = s;
+            const double scaled_size =
+                predicates::PowerOfTwo(scaled.shift)(s);  // in the scaled units
+            size_key = std::max(size_key, length2[k] / (scaled_size * scaled_size));
+        }
+    }
+    if (region_areas_) {
+        // Regional maximum area A (Triangle's -a): too big when its area exceeds A, decided
+        // exactly (triangle_area_sign); the key is area / A in the scaled frame, comparable with
+        // size_key's (length / size)^2, at least just above 1 once the exact test says bad.
+        const double area = region_area_of(regions_, cdt_.attribute(t));
+        if (area > 0 && predicates::triangle_area_sign(p[0], p[1], p[2], area) == Sign::Positive) {
+            const double ratio =
+                0.5 * scaled.cross / predicates::PowerOfTwo(2 * scaled.shift)(area);
+            size_key = std::max({size_key, ratio, 1 + 1e-9});
+        }
+    }
+    double key = size_key;
+    if (sine2_bound_ > 0) {
+        // sin^2 of the smallest angle: (2 area)^2 over the product of the two longer edges'
+        // squared lengths (the smallest angle lies between them).
+        int shortest = 0;
+        for (int k = 1; k < 3; ++k) {
+            if (length2[k] < length2[shortest]) shortest = k;
+        }
+        const double cross = scaled.cross;
+        const double product = length2[(shortest + 1) % 3] * length2[(shortest + 2) % 3];
+        const double sine2 = cross * cross / product;
+        if (sine2 < sine2_bound_ || sine2 < polish_sine2_) {
+            if (small_angle_rule(v[shortest], v[(shortest + 1) % 3], v[(shortest + 2) % 3])) {
+                if (sine2 < asked_sine2_) ++counters_.small_angle_skips;
+            } else if (sine2 < sine2_bound_) {
+                key = std::max(key, sine2 > 0 ? sine2_bound_ / sine2 : INFINITY);
+                if (key <= 1) key = 1 + 1e-9;  // bad, even if only just
+            } else if (key <= 1) {
+                // Good, but below the polish bound: a candidate of the polish.
+                polish_.push_back(
+                    {static_cast<float>(polish_sine2_ / sine2), t, version_[t] & 0x7FFFFFFFu, 0u});
+            }
+        }
+    }
+    if (key > 1) {
+        bad_.push({static_cast<float>(std::min(key, 1e30)), t, version_[t] & 0x7FFFFFFFu,
+                   size_key > 1 ? 1u : 0u});
+        ++counters_.bad_triangles;
+    }
+    return {key, size_key > 1};
+}
+
+void Refiner::queue_encroached_pieces(TriIdx t, const Badness& badness) {
+    for (unsigned k = 0; k < 3; ++k) {
+        const EdgeIdx e = 3 * t + k;
+        if (cdt_.segment_of(e) != kNone && encroached_from(e)) {
+            pieces_.push({static_cast<float>(std::min(badness.key, 1e30)), mesh_.origin(e),
+                          mesh_.destination(e), badness.too_big ? 1u : 0u});
+        }
+    }
+}
+
+bool Refiner::encroached_from(EdgeIdx e) {
+    // e lies in a domain triangle; its apex encroaches e when it lies in the closed diametral
+    // circle of e (a right or obtuse angle).
+    ++counters_.encroachment_tests;
+    const VertIdx a = mesh_.origin(e), b = mesh_.destination(e), w = mesh_.tv[tri::prev_edge(e)];
+    return predicates::corner_dot_sign(point(w), point(a), point(b)) != Sign::Positive;
+}
+
+void Refiner::process_touched() {
+    next_batch();
+    const std::uint32_t slots = mesh_.triangle_slots();
+    if (version_.size() < slots) {
+        version_.resize(slots, 0);
+        seen_.resize(slots, 0);
+    }
+    if (cache_sizes_) {
+        if (edge_size_.size() < 3 * std::size_t{slots}) {
+            edge_size_.resize(3 * std::size_t{slots}, 0.0);
+        }
+        // First every rewritten slot forgets its edges' sizes, then the triangles are evaluated
+        // (a new triangle may take the size its new neighbour has just found).
+        for (const TriIdx t : cdt_.touched()) {
+            if (seen_[t] == batch_) continue;
+            seen_[t] = batch_;
+            ++version_[t];
+            edge_size_[3 * t] = edge_size_[3 * t + 1] = edge_size_[3 * t + 2] = 0.0;
+        }
+        next_batch();
+    }
+    for (const TriIdx t : cdt_.touched()) {
+        if (seen_[t] == batch_) continue;
+        seen_[t] = batch_;
+        if (!cache_sizes_) ++version_[t];
+        if (!cdt_.in_domain(t)) continue;
+        queue_encroached_pieces(t, evaluate(t));
+    }
+    cdt_.clear_touched();
+}
+
+void Refiner::initial_queue() {
+    const std::uint32_t slots = mesh_.triangle_slots();
+    version_.assign(slots, 0);
+    seen_.assign(slots, 0);
+    if (cache_sizes_) edge_size_.assign(3 * std::size_t{slots}, 0.0);
+    for (TriIdx t = 0; t < slots; ++t) {
+        if (!cdt_.in_domain(t)) continue;
+        queue_encroached_pieces(t, evaluate(t));
+    }
+    cdt_.clear_touched();
+}
+
+void Refiner::spend_budget() {
+    if (counters_.steiner_points() >= budget_) {
+        char angle[32];
+        std::snprintf(angle, sizeof angle, "%g", options_.min_angle);
+        // Two causes look alike here: gaps or strips far narrower than the domain (nested
+        // squares 1e-5 apart need millions of points at any angle), and an angle the input's
+        // small angles make unreachable; name both, the budget first.
+        throw GeometryError(
+            "delaunay refinement: more than " + std::to_string(budget_) +
+            " Steiner points; stopped (" +
+            (options_.max_steiner_points != 0 ? "the --max-steiner budget"
+                                              : "the automatic budget") +
+            ": raise --max-steiner if the domain has gaps or strips far narrower than its "
+            "extent, which need that many points; or, termination being proven up to 20.7 "
+            "degrees away from input angles below 60 degrees, minimum angle " +
+            angle + " may be unreachable here: lower --min-angle)");
+    }
+}
+
+Refiner::SplitPoint Refiner::split_point(EdgeIdx e) const {
+    const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
+    const std::uint32_t segment = cdt_.segment_of(e);
+    // Parameters along the input segment s0 -> s1 (long double): every split point is computed
+    // from the segment itself, so rounding never accumulates along it.
+    const auto ends = cdt_.segment_ends(segment);
+    const double* s0 = point(ends[0]);
+    const double* s1 = point(ends[1]);
+    const long double dx = static_cast<long double>(s1[0]) - s0[0],
+                      dy = static_cast<long double>(s1[1]) - s0[1];
+    const long double length2 = dx * dx + dy * dy;
+    auto parameter = [&](VertIdx v) {
+        return ((static_cast<long double>(point(v)[0]) - s0[0]) * dx +
+                (static_cast<long double>(point(v)[1]) - s0[1]) * dy) /
+               length2;
+    };
+    auto corner = [&](VertIdx v) { return v < initial_vertices_ && degree_[v] >= 2; };
+    const long double ta = parameter(a), tb = parameter(b);
+    long double t = 0.5L * (ta + tb);
+    SplitPoint split;
+    if (corner(a) != corner(b)) {
+        // Concentric shells: the power of two nearest half the piece's length, from the apex.
+        split.apex = corner(a) ? a : b;
+        const long double t_apex = split.apex == a ? ta : tb, t_far = split.apex == a ? tb : ta;
+        const long double length = std::fabs(t_far - t_apex) * std::sqrt(length2);
+        // Nearest in the geometric sense (log2 rounded), decided exactly on the mantissa m in
+        // [1/2, 1) (frexp): 2^(e - 1) when m < 1/sqrt(2), that is when m^2 - 1/2 < 0 (one fma,
+        // whose rounding keeps the sign), else 2^e. So the shell moves by exactly k when the
+        // input is scaled by 2^k (lround(log2) saw a tie, or not, by the last bit of log2 at
+        // lengths like a square's diagonal).
+        int exponent = 0;
+        const double mantissa = std::frexp(static_cast<double>(length / 2), &exponent);
+        split.shell = std::fma(mantissa, mantissa, -0.5) < 0 ? exponent - 1 : exponent;
+        const long double distance = std::ldexp(1.0L, split.shell);
+        t = t_apex + (t_far > t_apex ? 1 : -1) * distance / std::sqrt(length2);
+    }
+    split.x = static_cast<double>(s0[0] + t * dx);
+    split.y = static_cast<double>(s0[1] + t * dy);
+    return split;
+}
+
+bool Refiner::leave_at_small_angle(EdgeIdx e, double shortest_edge) const {
+    // Shewchuk's rule for small input angles [Shewchuk00 "Mesh generation for domains with small
+    // angles" §3]: a piece at an apex of a small input angle is not split for a rejected
+    // circumcenter when the new vertex would lie closer to an existing vertex (across the small
+    // angle, or on the piece) than the skinny triangle's shortest edge: splitting would only
+    // make smaller skinny triangles towards the apex, without end.
+    // The new vertex's distance to its nearest neighbour ("insertion radius") is taken as the
+    // distance to the piece's ends and to its two apexes, and to where the cluster's other
+    // segments will be split next (the same shell, the smallest angle phi at the apex away):
+    // 2 d sin(phi / 2) at distance d from the apex.
+    const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
+    auto apex_angle = [&](VertIdx v) { return v < initial_vertices_ ? small_apex_angle_[v] : 0.0; };
+    if (apex_angle(a) == 0 && apex_angle(b) == 0) return false;
+    const SplitPoint m = split_point(e);
+    double radius = INFINITY;
+    for (const VertIdx v :
+         {a, b, mesh_.tv[tri::prev_edge(e)], mesh_.tv[tri::prev_edge(mesh_.twin[e])]}) {
+        if (v == tri::kInfinite) continue;
+        radius = std::min(radius, std::hypot(point(v)[0] - m.x, point(v)[1] - m.y));
+    }
+    for (const VertIdx v : {a, b}) {
+        if (apex_angle(v) == 0) continue;
+        const double d = std::hypot(point(v)[0] - m.x, point(v)[1] - m.y);
+        radius = std::min(radius, 2 * d * std::sin(apex_angle(v) / 2));
+    }
+    return radius < shortest_edge;
+}
+
+void Refiner::split_piece(const PieceToSplit& piece) {
+    const EdgeIdx e = cdt_.find_edge(piece.a, piece.b);
+    // Already split (a - b may be an edge again, unconstrained, beside a piece bent by rounding).
+    if (e == kNone || cdt_.segment_of(e) == kNone) return;
+    const std::uint32_t segment = cdt_.segment_of(e);
+    if (!piece.forced) {
+        // Still encroached from a domain side? (The apex may have changed since.)
+        const bool left = cdt_.in_domain(tri::triangle_of(e)) && encroached_from(e);
+        const EdgeIdx f = mesh_.twin[e];
+        if (!left && !(cdt_.in_domain(tri::triangle_of(f)) && encroached_from(f))) return;
+    }
+    spend_budget();
+    const SplitPoint m = split_point(e);
+    const std::uint32_t before = mesh_.vertex_count();
+    const VertIdx v = cdt_.split_constrained_edge(e, m.x, m.y);
+    if (v >= before) {
+        ++counters_.segment_splits;
+        if (on_segment_.size() <= v) on_segment_.resize(v + 1);
+        on_segment_[v] = {segment, m.apex, m.shell};
+        if (m.apex != kNone) ++counters_.shell_splits;
+    } else {
+        ++counters_.segment_bends;
+    }
+    process_touched();
+}
+
+bool Refiner::refine(std::uint64_t limit) {
+    for (;;) {
+        while (!forced_.empty()) {
+            const PieceToSplit piece = forced_.back();
+            forced_.pop_back();
+            split_piece(piece);
+        }
+        // An encroached piece waits only while a bad triangle is worse than the triangle whose
+        // apex encroaches it (ties: the piece first). Any order keeps the guarantee (a
+        // circumcenter that encroaches a piece is never inserted), but splitting every piece
+        // first made narrow strips cost time in their length per insertion: in a strip 1e-5
+        // wide each split's new vertex encroaches the piece opposite, so the strip's sides were
+        // split down to 1e-5 before any triangle beside the strip was refined; the triangle
+        // inside the inner square beside it became a fan of 10^5 slivers from one vertex, and
+        // the first circumcenters there replaced cavities of 10^5 triangles (issue 11: nested
+        // squares 1e-5 apart). Taken by key, a fan's slivers are refined once they are worse
+        // than the strip's, so the fans (and cavities) stay small.
+        if (!pieces_.empty() && (bad_.empty() || pieces_.top_bucket() >= bad_.top_bucket() ||
+                                 counters_.steiner_points() >= limit)) {
+            const EncroachedPiece piece = pieces_.pop();
+            split_piece({piece.a, piece.b, false});
+            continue;
+        }
+        if (bad_.empty()) return true;
+        if (counters_.steiner_points() >= limit) return false;
+        const BadTriangle top = bad_.pop();
+        if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t))
+            continue;  // rewritten since
+        spend_budget();
+        const VertIdx v[3] = {mesh_.tv[3 * top.t], mesh_.tv[3 * top.t + 1],
+                              mesh_.tv[3 * top.t + 2]};
+        const auto c = predicates::circumcenter(point(v[0]), point(v[1]), point(v[2]));
+        const std::uint64_t replaced_before = cdt_.counters().cavity_triangles;
+        const tri::CavityInsertion outcome = cdt_.insert_in_cavity(top.t, c[0], c[1]);
+        switch (outcome) {
+            case tri::CavityInsertion::Inserted:
+                ++counters_.circumcenters;
+                counters_.largest_cavity = std::max(
+                    counters_.largest_cavity, cdt_.counters().cavity_triangles - replaced_before);
+                process_touched();
+                break;
+            case tri::CavityInsertion::Encroaches: {
+                ++counters_.rejected_circumcenters;
+                // sqrt of the smallest squared length (as the rules were tuned), scaled.
+                const double* p[3] = {point(v[0]), point(v[1]), point(v[2])};
+                const ScaledTriangle scaled = scaled_triangle(p);
+                const double shortest = std::ldexp(
+                    std::sqrt(std::min({scaled.length2[0], scaled.length2[1], scaled.length2[2]})),
+                    -scaled.shift);
+                bool split = false;
+                for (const EdgeIdx e : cdt_.encroached_edges()) {
+                    // Only skinny triangles are left at small angles; too big ones are split.
+                    if (!top.too_big && leave_at_small_angle(e, shortest)) continue;
+                    forced_.push_back({mesh_.origin(e), mesh_.destination(e), true});
+                    split = true;
+                }
+                if (split) {
+                    bad_.push(top);  // still bad unless the splits rewrite it
+                } else if (below_asked_bound(top.t)) {
+                    ++counters_.small_angle_skips;  // left skinny at a small input angle
+                }
+                break;
+            }
+            case tri::CavityInsertion::Duplicate:
+            case tri::CavityInsertion::NotInConflict:
+            case tri::CavityInsertion::Outside:
+                // A triangle so small that its rounded circumcenter is one of its vertices (or
+                // leaves its circle): nothing to insert; it stays, counted (when it is bad for the
+                // bound asked for, not only for the polish's).
+                if (top.too_big || below_asked_bound(top.t)) ++counters_.unsplittable;
+                break;
+        }
+    }
+}
+
+bool Refiner::below_asked_bound(TriIdx t) const {
+    const double* p[3] = {point(mesh_.tv[3 * t]), point(mesh_.tv[3 * t + 1]),
+                          point(mesh_.tv[3 * t + 2])};
+    const ScaledTriangle scaled = scaled_triangle(p);
+    double length2[3] = {scaled.length2[0], scaled.length2[1], scaled.length2[2]};
+    std::sort(length2, length2 + 3);
+    return scaled.cross * scaled.cross < asked_sine2_ * length2[1] * length2[2];
+}
+
+void Refiner::requeue_for_asked_bound() {
+    // The queue holds every triangle bad for the polish bound (and stale entries): those still
+    // current and bad for min_angle (or too big) are evaluated again, with keys for min_angle.
+    std::vector<TriIdx> keep;
+    while (!bad_.empty()) {
+        const BadTriangle b = bad_.pop();
+        if (b.version != (version_[b.t] & 0x7FFFFFFFu) || !cdt_.in_domain(b.t)) continue;
+        if (b.too_big || below_asked_bound(b.t)) keep.push_back(b.t);
+    }
+    next_batch();
+    for (const TriIdx t : keep) {
+        if (seen_[t] == batch_) continue;  // queued twice (a rejected circumcenter requeues)
+        seen_[t] = batch_;
+        evaluate(t);
+    }
+}
+
+void Refiner::polish() {
+    if (polish_sine2_ <= sine2_bound_) return;
+    sine2_bound_ = polish_sine2_;
+    polish_sine2_ = 0;  // no more candidates
+    for (const BadTriangle& b : polish_) {
+        if (b.version != (version_[b.t] & 0x7FFFFFFFu) || !cdt_.in_domain(b.t)) continue;
+        bad_.push(b);
+        ++counters_.bad_triangles;
+    }
+    polish_ = {};
+    const std::uint64_t before = counters_.steiner_points();
+    const auto extra =
+        static_cast<std::uint64_t>(options_.polish_fraction * static_cast<double>(before)) + 64;
+    const bool done = refine(std::min(before + extra, budget_));  // never the budget's error
+    counters_.polish_points = counters_.steiner_points() - before;
+    sine2_bound_ = asked_sine2_;
+    if (done) return;
+    // The polish's budget is spent: back to min_angle (the proven refinement, from here).
+    ++counters_.polish_stopped;
+    requeue_for_asked_bound();
+    refine(UINT64_MAX);
+}
+
+RefinementResult2 Refiner::run() {
+    if (cdt_.collinear()) {
+        throw InputError(
+            "delaunay refinement: the points are collinear; the segments enclose no region");
+    }
+    initial_vertices_ = mesh_.vertex_count();
+    degree_.assign(initial_vertices_, 0);
+    for (EdgeIdx e = 0; e < mesh_.tv.size(); ++e) {
+        if (mesh_.is_dead(tri::triangle_of(e)) || cdt_.segment_of(e) == kNone) continue;
+        ++degree_[mesh_.origin(e)];
+    }
+    // Apexes of small input angles: two pieces at a vertex less than 60 degrees apart.
+    find_small_input_angles();
+    if (options_.min_angle > 0) {
+        const double s = std::sin(options_.min_angle * 3.14159265358979323846 / 180.0);
+        sine2_bound_ = s * s;
+    }
+    cache_sizes_ = options_.size.bounded() && !options_.size.is_uniform();
+    check_domain_and_budget();
+    asked_sine2_ = sine2_bound_;
+    if (options_.min_angle > 0) {
+        const double polish = options_.polish_angle < 0
+                                  ? std::min(kMaxPolishAngle, options_.min_angle + 10)
+                                  : options_.polish_angle;
+        const double s = std::sin(polish * 3.14159265358979323846 / 180.0);
+        if (polish > options_.min_angle) polish_sine2_ = s * s;
+    }
+    predicates::reset_construction_stats();
+    initial_queue();
+    refine(UINT64_MAX);
+    polish();
+    const tri::ConstrainedTriangulation2Counters& edits = cdt_.counters();
+    counters_.cavity_triangles = edits.cavity_triangles;
+    counters_.circumcenter_exact = predicates::construction_stats().exact_range +
+                                   predicates::construction_stats().exact_uncertified;
+    RefinementResult2 result;
+    result.mesh = std::move(cdt_).take_result();
+    if (region_areas_) {
+        for (double& a : result.mesh.triangle_attributes) a = region_attribute_of(regions_, a);
+    }
+    counters_.flips = result.mesh.counters.delaunay_flips;
+    counters_.orient_calls = result.mesh.counters.orient_calls;
+    counters_.incircle_calls = result.mesh.counters.incircle_calls;
+    result.counters = counters_;
+    return result;
+}
+
+}  // namespace
+
+RefinementResult2 delaunay_refinement_2d(const tri::Pslg& pslg, const RefinementOptions2& options) {
+    if (!(options.min_angle >= 0 && options.min_angle <= kMaxMinAngle)) {
+        char angle[32];
+        std::snprintf(angle, sizeof angle, "%g", options.min_angle);
+        throw InputError(std::string("minimum angle ") + angle +
+                         " is outside [0, 34] degrees (Delaunay refinement "
+                         "terminates provably up to 20.7 and in practice up to about 33)");
+    }
+    if (std::isnan(options.polish_angle) || options.polish_angle > kMaxMinAngle) {
+        char angle[32];
+        std::snprintf(angle, sizeof angle, "%g", options.polish_angle);
+        throw InputError(std::string("polish angle ") + angle +
+                         " is above 34 degrees or not a number (negative: automatic)");
+    }
+    if (!(options.polish_fraction >= 0 && std::isfinite(options.polish_fraction))) {
+        char fraction[32];
+        std::snprintf(fraction, sizeof fraction, "%g", options.polish_fraction);
+        throw InputError(std::string("polish fraction ") + fraction +
+                         " is not a finite number >= 0");
+    }
+    Refiner refiner(pslg, options);
+    return refiner.run();
+}
+
+}  // namespace exactmesh::generators

@@ -1,0 +1,348 @@
+// SPDX-License-Identifier: MIT
+// The registry of the 2D mesh generators: one adapter per generator from MeshOptions2 to the
+// generator's own options.
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
+#include "generators/mesh_2d/advancing_front_2d.hpp"
+#include "generators/mesh_2d/advancing_front_delaunay_2d.hpp"
+#include "generators/mesh_2d/frontal_delaunay_2d.hpp"
+#include "generators/mesh_2d/quadtree_mesh_2d.hpp"
+#include "generators/boundary/region_areas_2d.hpp"
+
+namespace exactmesh::generators {
+
+namespace tri = exactmesh::triangulation;
+
+std::vector<std::pair<std::string, std::uint64_t>> counter_list(const RefinementCounters2& c) {
+    return counters_by_name(kRefinementCounterNames, c);
+}
+
+namespace {
+
+/// The samples of minimum_triangle_count: each checked, counted against a fixed budget of
+/// evaluations (about 10 ms of a parsed expression) beyond one pass over the domain.
+class SizeSampler {
+  public:
+    SizeSampler(const SizeFunction& size, double stop_above)
+        : size_(size), stop_above_(stop_above) {}
+
+    double at(double x, double y) {
+        ++evaluations_;
+        const double s = size_(x, y);
+        if (!(s > 0) || !std::isfinite(s)) {
+            throw InputError("the size function (" + size_.describe() + ") is " + format_number(s) +
+                             " at (" + format_number(x) + ", " + format_number(y) +
+                             "), inside the domain: a size must be finite and > 0 everywhere "
+                             "in the domain");
+        }
+        return s;
+    }
+
+    /// The triangle (p, q, r) at the largest of the sizes sampled at its corners sp, sq, sr
+    /// and its centroid; split in four while those differ by more than a factor 2 and the
+    /// triangle at the smallest of them would count for at least 2^-12 of the budget: only
+    /// such a triangle can move the estimate toward the budget, and splitting every graded
+    /// triangle resolved the whole size field (an airfoil's check cost as much as meshing it).
+    double triangle(const std::array<double, 2>& p, const std::array<double, 2>& q,
+                    const std::array<double, 2>& r, double sp, double sq, double sr, int depth) {
+        const double sc = at((p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3);
+        const double lo = std::min({sp, sq, sr, sc}), hi = std::max({sp, sq, sr, sc});
+        if (hi > 2 * lo && depth < 12 && evaluations_ < kSplitEvaluations &&
+            total_ <= stop_above_ && count_at(p, q, r, lo) >= 0x1p-12 * stop_above_) {
+            auto mid = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
+                return std::array<double, 2>{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
+            };
+            const auto pq = mid(p, q), qr = mid(q, r), rp = mid(r, p);
+            const double spq = at(pq[0], pq[1]), sqr = at(qr[0], qr[1]), srp = at(rp[0], rp[1]);
+            return triangle(p, pq, rp, sp, spq, srp, depth + 1) +
+                   triangle(pq, q, qr, spq, sq, sqr, depth + 1) +
+                   triangle(rp, qr, r, srp, sqr, sr, depth + 1) +
+                   triangle(pq, qr, rp, spq, sqr, srp, depth + 1);
+        }
+        return count_at(p, q, r, hi);
+    }
+
+    /// Equilateral triangles of side s in (p, q, r): twice the area over s^2, with the sides
+    /// divided by s first, so no square of a coordinate (2^600 or 2^-600) is formed; an
+    /// overflow means an enormous count.
+    static double count_at(const std::array<double, 2>& p, const std::array<double, 2>& q,
+                           const std::array<double, 2>& r, double s) {
+        const double ux = (q[0] - p[0]) / s, uy = (q[1] - p[1]) / s;
+        const double vx = (r[0] - p[0]) / s, vy = (r[1] - p[1]) / s;
+        const double count = std::fabs(ux * vy - uy * vx) / (2 * kEquilateralArea);
+        return std::isnan(count) ? std::numeric_limits<double>::infinity() : count;
+    }
+
+    void add(double count) { total_ += count; }
+    double total() const { return total_; }
+
+  private:
+    static constexpr double kEquilateralArea = 0.4330127018922193;  // sqrt(3) / 4
+    static constexpr std::uint64_t kSplitEvaluations = 1u << 18;
+    const SizeFunction& size_;
+    double stop_above_;
+    double total_ = 0;
+    std::uint64_t evaluations_ = 0;
+};
+
+}  // namespace
+
+double minimum_triangle_count(const tri::Triangulation2& domain, const SizeFunction& size,
+                              double stop_above) {
+    if (!size.bounded()) return 0;
+    SizeSampler sampler(size, stop_above);
+    // One sample per vertex of a domain triangle, shared by its triangles.
+    std::vector<double> at_vertex(domain.vertex_count(), 0);
+    for (const tri::VertIdx v : domain.triangles) {
+        if (at_vertex[v] == 0) at_vertex[v] = sampler.at(domain.xy[2 * v], domain.xy[2 * v + 1]);
+    }
+    for (tri::TriIdx t = 0; t < domain.triangle_count() && sampler.total() <= stop_above; ++t) {
+        std::array<std::array<double, 2>, 3> corner;
+        std::array<double, 3> s;
+        for (unsigned k = 0; k < 3; ++k) {
+            const tri::VertIdx v = domain.triangles[3 * t + k];
+            corner[k] = {domain.xy[2 * v], domain.xy[2 * v + 1]};
+            s[k] = at_vertex[v];
+        }
+        sampler.add(sampler.triangle(corner[0], corner[1], corner[2], s[0], s[1], s[2], 0));
+    }
+    return sampler.total();
+}
+
+void check_size_budget(const tri::Pslg& pslg, const MeshOptions2& options, bool hard_budget) {
+    check_size_budget(MeshDomain2(pslg, options.cdt), options, hard_budget);
+}
+
+void check_size_budget(const MeshDomain2& domain_of, const MeshOptions2& options,
+                       bool hard_budget) {
+    const tri::Pslg& pslg = domain_of.pslg();
+    const bool areas = has_region_areas(pslg.regions);
+    if (!options.size.bounded() && !areas) return;
+    // With regional maximum areas, the regions are numbered so that each triangle names its own
+    // (as MeshDomain2 numbers them). The estimate has always taken the caller's recovery: a
+    // conforming one (not the domain's) is built here.
+    std::optional<tri::Cdt2Result> conforming;
+    if (options.cdt.recovery == tri::SegmentRecovery::Conforming) {
+        tri::Cdt2Options cdt = options.cdt;
+        cdt.remove_exterior = true;
+        const std::vector<double> numbered =
+            areas ? numbered_regions(pslg.regions) : std::vector<double>{};
+        conforming = tri::constrained_delaunay_2d(
+            areas ? tri::Pslg{pslg.xy, pslg.segments, pslg.holes, numbered} : pslg, cdt);
+    }
+    const tri::Cdt2Result& domain = conforming ? *conforming : domain_of.triangulation();
+    const double inputs = static_cast<double>(pslg.xy.size() / 2);
+    const bool given = hard_budget && options.max_steiner_points != 0;
+    // A triangulation of V vertices has fewer than 2V triangles.
+    const double budget = given ? 2 * (static_cast<double>(options.max_steiner_points) + inputs)
+                                : kAutomaticTriangleBudget;
+    const double by_size = minimum_triangle_count(domain.mesh, options.size, budget);
+    // Both are lower estimates of the count; the larger one is kept (a region's triangles
+    // answer to both).
+    const double by_area = areas ? region_area_triangle_count(domain, pslg.regions) : 0.0;
+    const double estimate = std::max(by_size, by_area);
+    if (estimate > budget) {
+        const std::string what = by_area > by_size
+                                     ? "the regions' maximum areas ask"
+                                     : "the size (" + options.size.describe() + ") asks";
+        throw InputError(
+            what + " for " +
+            (estimate > 1e300 ? std::string("far more than 1e300")
+                              : "about " + format_approximate(estimate) + " or more") +
+            " triangles over the domain, more than the " +
+            (given ? "--max-steiner budget of about " + format_approximate(budget) + " triangles"
+                   : "automatic budget of " + format_approximate(budget) +
+                         " triangles (raise it with --max-steiner)") +
+            (by_area > by_size ? (given ? ": give larger maximum areas or raise --max-steiner"
+                                        : ": give larger maximum areas")
+                               : (given ? ": give a larger size or raise --max-steiner"
+                                        : ": give a larger size")));
+    }
+}
+
+namespace {
+
+void refuse_region_areas(const tri::Pslg& pslg, const MeshOptions2& options,
+                         std::string_view generator) {
+    for (std::size_t r = 0; 4 * r + 3 < pslg.regions.size(); ++r) {
+        if (pslg.regions[4 * r + 3] > 0) {
+            throw InputError("region " + std::to_string(r + options.cdt.first_index) +
+                             " has a maximum area (" + format_number(pslg.regions[4 * r + 3]) +
+                             "): region maximum areas are honoured by delaunay-refinement and "
+                             "frontal only, not by " +
+                             std::string(generator));
+        }
+    }
+}
+
+MeshRun2 run_delaunay_refinement(const MeshDomain2& domain, const MeshOptions2& options) {
+    const tri::Pslg& pslg = domain.pslg();
+    check_size_budget(domain, options, true);
+    RefinementOptions2 refinement;
+    refinement.min_angle = options.min_angle;
+    refinement.polish_angle = options.polish_angle;
+    refinement.size = options.size;
+    refinement.max_steiner_points = options.max_steiner_points;
+    refinement.cdt = options.cdt;
+    RefinementResult2 result = delaunay_refinement_2d(pslg, refinement);
+    if (result.counters.unsplittable > 0) {
+        result.mesh.warnings.push_back(
+            std::to_string(result.counters.unsplittable) +
+            " bad triangles are too small to split in double precision; left as they are");
+    }
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
+MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& options) {
+    const tri::Pslg& pslg = domain.pslg();
+    refuse_region_areas(pslg, options, "quadtree");
+    check_size_budget(domain, options, true);
+    QuadtreeOptions2 quadtree;
+    quadtree.size = options.size;
+    quadtree.cdt = options.cdt;
+    // The shared budget counts Steiner points; a leaf adds about one vertex.
+    quadtree.max_leaves = options.max_steiner_points;
+    QuadtreeResult2 result = quadtree_mesh_2d(domain, quadtree);
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
+MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& options) {
+    const tri::Pslg& pslg = domain.pslg();
+    refuse_region_areas(pslg, options, "advancing-front");
+    check_size_budget(domain, options, false);
+    AdvancingFrontOptions2 front;
+    front.size = options.size;
+    // The shared budget counts Steiner points; a triangle adds about half a point.
+    front.max_triangles =
+        std::min(options.max_steiner_points, std::numeric_limits<std::uint64_t>::max() / 2) * 2;
+    front.cdt = options.cdt;
+    AdvancingFrontResult2 result = advancing_front_2d(domain, front);
+    if (result.counters.closure_triangles > 0) {
+        result.mesh.warnings.push_back(
+            "the triangle budget ran out: " + std::to_string(result.counters.closure_triangles) +
+            " triangles close the front by its constrained Delaunay triangulation");
+    }
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
+MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
+    const tri::Pslg& pslg = domain.pslg();
+    refuse_region_areas(pslg, options, "advancing-front-delaunay");
+    check_size_budget(domain, options, false);
+    AdvancingFrontDelaunayOptions2 front;
+    front.size = options.size;
+    front.max_new_points = options.max_steiner_points;
+    front.cdt = options.cdt;
+    AdvancingFrontDelaunayResult2 result = advancing_front_delaunay_2d(domain, front);
+    if (result.counters.closure_triangles > 0) {
+        result.mesh.warnings.push_back(
+            std::to_string(result.counters.closure_front_edges) +
+            " front edges were left to the closure (constrained Delaunay, no new points): " +
+            std::to_string(result.counters.closure_triangles) + " triangles");
+    }
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
+MeshRun2 run_frontal_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
+    check_size_budget(domain, options, true);
+    FrontalDelaunayOptions2 frontal;
+    frontal.size = options.size;
+    frontal.max_steiner_points = options.max_steiner_points;
+    frontal.cdt = options.cdt;
+    FrontalDelaunayResult2 result = frontal_delaunay_2d(domain, frontal);
+    return {std::move(result.mesh), counter_list(result.counters)};
+}
+
+constexpr std::array kGenerators{
+    MeshGenerator2{
+        "delaunay-refinement",
+        "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
+        "split first; guaranteed minimum angle",
+        true,
+        false,
+        true,
+        {MeshOption::Size, MeshOption::MinAngle, MeshOption::PolishAngle,
+         MeshOption::MaxSteinerPoints, MeshOption::RegionAttributes, MeshOption::RegionAreas},
+        &run_delaunay_refinement},
+    MeshGenerator2{"quadtree",
+                   "Yerry-Shephard/Baehmann: balanced quadtree leaves as 45-45-90 templates, "
+                   "the band along the boundary by a refined constrained Delaunay triangulation",
+                   false,
+                   true,
+                   false,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints},
+                   &run_quadtree},
+    MeshGenerator2{"advancing-front",
+                   "Lo/Peraire/Lohner: shortest front edge first, apex on its median at the local "
+                   "size or a nearby front vertex, exact acceptance tests; needs a size",
+                   false,
+                   true,
+                   false,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints},
+                   &run_advancing_front},
+    MeshGenerator2{"advancing-front-delaunay",
+                   "Mavriplis: shortest front edge first, a point at the circumradius bound, the "
+                   "Tanemura-Merriam (Delaunay) choice among nearby front points; needs a size",
+                   false,
+                   true,
+                   false,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints},
+                   &run_advancing_front_delaunay},
+    MeshGenerator2{"frontal",
+                   "Rebay: points placed from the boundary inwards on the front edges' "
+                   "bisectors, inserted by Bowyer-Watson; needs a size",
+                   true,
+                   true,
+                   true,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints, MeshOption::RegionAttributes,
+                    MeshOption::RegionAreas},
+                   &run_frontal_delaunay},
+};
+
+}  // namespace
+
+std::string_view mesh_option_name(MeshOption option) {
+    switch (option) {
+        case MeshOption::Size:
+            return "--size";
+        case MeshOption::MinAngle:
+            return "--min-angle";
+        case MeshOption::PolishAngle:
+            return "--polish-angle";
+        case MeshOption::MaxSteinerPoints:
+            return "--max-steiner";
+        case MeshOption::RegionAttributes:
+            return "regional attributes";
+        case MeshOption::RegionAreas:
+            return "region maximum areas";
+    }
+    return "an option";
+}
+
+std::span<const MeshGenerator2> mesh_generators_2d() {
+    return kGenerators;
+}
+
+const MeshGenerator2& find_mesh_generator_2d(std::string_view name) {
+    for (const MeshGenerator2& g : kGenerators) {
+        if (g.name == name) return g;
+    }
+    std::string known;
+    for (const MeshGenerator2& g : kGenerators) {
+        known += known.empty() ? "" : ", ";
+        known += g.name;
+    }
+    throw InputError("unknown generator '" + std::string(name) + "' (known: " + known + ")");
+}
+
+}  // namespace exactmesh::generators

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+// The registry of the 2D mesh generators (issue 6; STYLE.md "a name registry"): one entry per
+// generator, each with its name, a one-line summary, whether its meshes are constrained
+// Delaunay, and a function that runs it on a PSLG with the options every generator shares. The
+// CLI (`exactmesh mesh --generator NAME`), the benchmarks and the tests that compare generators
+// all go through it, so they run the same code with the same options.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
+#include "generators/boundary/mesh_domain_2d.hpp"
+#include "generators/sizing/size_function.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
+
+namespace exactmesh::generators {
+
+/// What every generator is given. A generator that needs a size raises InputError when `size`
+/// is unbounded; one without an angle criterion ignores `min_angle`.
+struct MeshOptions2 {
+    SizeFunction size;
+    double min_angle = kGuaranteedMinAngle;  ///< degrees (Delaunay refinement)
+    double polish_angle = -1;  ///< Delaunay refinement's polish (RefinementOptions2), -1: automatic
+    std::uint64_t max_steiner_points = 0;  ///< 0: the generator's automatic budget
+    triangulation::Cdt2Options cdt;        ///< numbering, recovery of the initial CDT
+};
+
+/// A generator's mesh (caller's numbering, pieces, warnings) and its work counters in the order
+/// `--stats` prints them.
+struct MeshRun2 {
+    triangulation::Cdt2Result mesh;
+    std::vector<std::pair<std::string, std::uint64_t>> counters;
+};
+
+/// The options and input features a generator may honour (MeshGenerator2::honours). A caller
+/// that is given one the generator ignores says so (`exactmesh mesh` warns, or refuses where the
+/// README documents a refusal) instead of dropping it silently.
+enum class MeshOption : std::uint32_t {
+    Size = 1u << 0,              ///< MeshOptions2::size
+    MinAngle = 1u << 1,          ///< MeshOptions2::min_angle (--min-angle)
+    PolishAngle = 1u << 2,       ///< MeshOptions2::polish_angle (--polish-angle)
+    MaxSteinerPoints = 1u << 3,  ///< MeshOptions2::max_steiner_points (--max-steiner)
+    RegionAttributes = 1u << 4,  ///< the regions' attributes, carried to the mesh's triangles
+    RegionAreas = 1u << 5,       ///< the regions' maximum areas (the 4th number, > 0)
+};
+
+/// A set of MeshOption.
+class MeshOptionSet {
+  public:
+    constexpr MeshOptionSet() = default;
+    constexpr MeshOptionSet(std::initializer_list<MeshOption> options) {
+        for (const MeshOption o : options) bits_ |= static_cast<std::uint32_t>(o);
+    }
+    constexpr bool contains(MeshOption o) const {
+        return (bits_ & static_cast<std::uint32_t>(o)) != 0;
+    }
+
+  private:
+    std::uint32_t bits_ = 0;
+};
+
+/// How a warning or an error names an option ("--min-angle", "regional attributes").
+std::string_view mesh_option_name(MeshOption option);
+
+struct MeshGenerator2 {
+    std::string_view name;     ///< "delaunay-refinement", as the CLI spells it
+    std::string_view summary;  ///< one line for --help
+    bool delaunay;             ///< meshes are constrained Delaunay (else only conforming)
+    bool needs_size;           ///< an unbounded size is an InputError
+    /// Honours regional maximum areas (the 4th number of a region, > 0); the others raise
+    /// InputError on a PSLG with one (they carry no regions).
+    bool region_areas;
+    /// The options it honours; it ignores the others.
+    MeshOptionSet honours;
+    /// Runs it over the domain built once (the same object for the caller's other steps: the
+    /// graded default size, graded_size_from_boundary(domain)).
+    MeshRun2 (*run_on_domain)(const MeshDomain2& domain, const MeshOptions2& options);
+
+    /// Runs it on a PSLG, the domain built inside (for one-off callers: tests, benchmarks).
+    MeshRun2 run(const triangulation::Pslg& pslg, const MeshOptions2& options) const {
+        const MeshDomain2 domain(pslg, options.cdt);
+        return run_on_domain(domain, options);
+    }
+};
+
+/// Every generator, in the order the CLI lists them.
+std::span<const MeshGenerator2> mesh_generators_2d();
+
+/// @throws InputError naming the unknown generator and the known ones.
+const MeshGenerator2& find_mesh_generator_2d(std::string_view name);
+
+/// A lower estimate of the number of triangles a mesh of the domain at `size` has: the integral
+/// of 1 / s^2 over the domain (the triangles of its constrained Delaunay triangulation
+/// `domain`) divided by the area of the equilateral triangle of edge 1 (sqrt(3) / 4), each
+/// triangle taken at the largest size sampled at its corners and centroid (split in four, up
+/// to a fixed number of samples, where those vary by more than 2). Computed in units of the
+/// size, so no square of a coordinate overflows or underflows; +infinity when the count
+/// overflows. Sampling stops once the estimate exceeds `stop_above`.
+/// @throws InputError naming the size function and the point where a sample is 0, negative,
+///         NaN or infinite.
+double minimum_triangle_count(const triangulation::Triangulation2& domain, const SizeFunction& size,
+                              double stop_above);
+
+/// The budget every generator of the registry checks before meshing (issue 11): with a size,
+/// the minimum_triangle_count over the domain (and with regional maximum areas, the
+/// region_area_triangle_count, whichever is larger) must stay within 2^26 triangles (automatic
+/// budget) or, for the generators whose budget is a hard limit (Delaunay refinement, quadtree,
+/// frontal), within the triangles options.max_steiner_points Steiner points can make.
+/// @throws InputError naming the size, the estimate and the budget, at once.
+void check_size_budget(const triangulation::Pslg& pslg, const MeshOptions2& options,
+                       bool hard_budget);
+/// The same over the domain built once (MeshDomain2::triangulation; a domain of its own only
+/// when options.cdt asks for Conforming recovery, as the estimate always has).
+void check_size_budget(const MeshDomain2& domain, const MeshOptions2& options, bool hard_budget);
+
+/// The automatic triangle budget of check_size_budget.
+inline constexpr double kAutomaticTriangleBudget = 0x1p26;
+
+/// The counters of a Delaunay refinement run, named as `exactmesh mesh --stats` prints them.
+std::vector<std::pair<std::string, std::uint64_t>> counter_list(const RefinementCounters2& c);
+
+}  // namespace exactmesh::generators

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: MIT
+// Quality statistics of a tetrahedralization (see quality_3d.hpp).
+#include "triangulation/checks/quality_3d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "base/errors.hpp"
+#include "predicates/angle_comparisons_3d.hpp"
+
+namespace exactmesh::triangulation {
+
+using predicates::Dihedral;
+using predicates::dihedral_radians;
+using predicates::TetCorners;
+using predicates::volume_edge_quality;
+
+namespace {
+
+constexpr long double kPi = 3.141592653589793238462643383279502884L;
+
+/// Circumradius over the shortest edge, in long double: the circumcenter c - p0 solves
+/// 2 [a; b; c] x = (|a|^2, |b|^2, |c|^2) with a, b, c the edges from p0 (Cramer's rule).
+long double radius_edge(const TetCorners& p) {
+    long double e[3][3];
+    for (int r = 0; r < 3; ++r) {
+        for (int i = 0; i < 3; ++i) e[r][i] = static_cast<long double>(p[r + 1][i]) - p[0][i];
+    }
+    auto cross = [](const long double* x, const long double* y, long double* out) {
+        out[0] = x[1] * y[2] - x[2] * y[1];
+        out[1] = x[2] * y[0] - x[0] * y[2];
+        out[2] = x[0] * y[1] - x[1] * y[0];
+    };
+    long double bc[3], ca[3], ab[3];
+    cross(e[1], e[2], bc);
+    cross(e[2], e[0], ca);
+    cross(e[0], e[1], ab);
+    const long double det = e[0][0] * bc[0] + e[0][1] * bc[1] + e[0][2] * bc[2];
+    long double sq[3];
+    for (int r = 0; r < 3; ++r) sq[r] = e[r][0] * e[r][0] + e[r][1] * e[r][1] + e[r][2] * e[r][2];
+    long double center[3];
+    for (int i = 0; i < 3; ++i) center[i] = (sq[0] * bc[i] + sq[1] * ca[i] + sq[2] * ab[i]) / (2 * det);
+    const long double radius = std::sqrt(center[0] * center[0] + center[1] * center[1] + center[2] * center[2]);
+    long double shortest = sq[0];
+    for (int a = 0; a < 4; ++a) {
+        for (int b = a + 1; b < 4; ++b) {
+            long double s = 0;
+            for (int i = 0; i < 3; ++i) {
+                const long double d = static_cast<long double>(p[b][i]) - p[a][i];
+                s += d * d;
+            }
+            shortest = std::min(shortest, s);
+        }
+    }
+    return radius / std::sqrt(shortest);
+}
+
+}  // namespace
+
+QualityStats3 quality_stats_3d(const Tetrahedralization3& mesh, const QualityOptions& options) {
+    const double width = options.histogram_bin_degrees;
+    const double bins = 180.0 / width;
+    if (!(width > 0) || !(bins <= 18000) || std::fabs(bins - std::round(bins)) > 1e-9) {
+        throw InputError("dihedral histogram bin width must be positive and divide 180 degrees (got " +
+                         std::to_string(width) + ")");
+    }
+    QualityStats3 stats;
+    stats.histogram_bin_degrees = width;
+    stats.dihedral_histogram.assign(static_cast<std::size_t>(std::round(bins)), 0);
+    stats.tets = mesh.tet_count();
+    if (stats.tets == 0) return stats;
+    constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+    long double min_angle = 180, max_angle = 0, min_q = 2, sum_q = 0, max_ratio = 0;
+    for (std::size_t t = 0; t < stats.tets; ++t) {
+        const TetCorners p{mesh.point(mesh.tets[4 * t]), mesh.point(mesh.tets[4 * t + 1]),
+                           mesh.point(mesh.tets[4 * t + 2]), mesh.point(mesh.tets[4 * t + 3])};
+        long double smallest = 180;
+        for (const auto& e : kEdges) {
+            const long double degrees = dihedral_radians(Dihedral{p, e[0], e[1]}) * 180 / kPi;
+            smallest = std::min(smallest, degrees);
+            max_angle = std::max(max_angle, degrees);
+            auto bin = static_cast<std::size_t>(std::max(0.0L, degrees / width));
+            bin = std::min(bin, stats.dihedral_histogram.size() - 1);
+            ++stats.dihedral_histogram[bin];
+        }
+        min_angle = std::min(min_angle, smallest);
+        const long double q = volume_edge_quality(p);
+        min_q = std::min(min_q, q);
+        sum_q += q;
+        const long double ratio = radius_edge(p);
+        max_ratio = std::max(max_ratio, ratio);
+        if (smallest < options.sliver_max_dihedral_degrees && ratio <= options.sliver_max_radius_edge) ++stats.slivers;
+    }
+    stats.min_dihedral_degrees = static_cast<double>(min_angle);
+    stats.max_dihedral_degrees = static_cast<double>(max_angle);
+    stats.min_volume_edge = static_cast<double>(min_q);
+    stats.mean_volume_edge = static_cast<double>(sum_q / static_cast<long double>(stats.tets));
+    stats.max_radius_edge = static_cast<double>(max_ratio);
+    return stats;
+}
+
+}  // namespace exactmesh::triangulation

@@ -1,0 +1,409 @@
+// SPDX-License-Identifier: MIT
+// ConstrainedTriangulation2 (see constrained_triangulation_2d.hpp): the incremental edits of
+// the constrained Delaunay builder over its CdtState (cdt_state_2d.hpp), which it owns:
+// Bowyer-Watson cavity insertion and constrained edge splits.
+//
+// Cavity insertion, local picture: the cavity (triangles whose circumcircle holds p, reached
+// from the start triangle across unconstrained edges) is replaced by the fan of triangles
+// (u_i, v_i, p) over its boundary edges u_i -> v_i, walked in order around the cavity.
+// The fan is valid when p lies strictly left of every boundary edge; for unconstrained edges
+// this is the Delaunay lemma (p is in the inner circle and not in the outer one), for
+// constrained edges it is checked, and a constrained edge with p on or beyond its line has p in
+// its closed diametral circle (the part of the inner circumcircle beyond the edge is the minor
+// cap, inside the diametral disk) whenever the inner apex does not encroach the edge: the
+// refinement only inserts when no edge is encroached, so this reports an encroachment.
+#include "triangulation/constrained/constrained_triangulation_2d.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
+#include "predicates/angle_comparisons_2d.hpp"
+#include "triangulation/constrained/cdt_phases_2d.hpp"
+#include "triangulation/constrained/cdt_state_2d.hpp"
+
+namespace exactmesh::triangulation {
+
+namespace detail {
+
+namespace {
+
+using predicates::Sign;
+
+
+/// bend_through_apex(near_apex(e)), or GeometryError when there is no such apex.
+VertIdx bend_at_apex(CdtState& cdt, EdgeIdx e);
+
+void reserve(CdtState& cdt, std::uint32_t vertices) {
+    const std::size_t v = vertices, slots = 2 * v + 8;  // triangles (finite and infinite) ~ 2 V
+    cdt.mesh.xy.reserve(2 * v);
+    cdt.mesh.tv.reserve(3 * slots);
+    cdt.mesh.twin.reserve(3 * slots);
+    cdt.segment_of.reserve(3 * slots);
+    cdt.vertex_edge.reserve(v);
+    cdt.core.input_index.reserve(v);
+    cdt.core.merged_into.reserve(v);
+    cdt.removed.reserve(slots);
+    if (!cdt.attribute.empty()) cdt.attribute.reserve(slots);
+    cdt.cavity_stamp.reserve(slots);
+}
+
+CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
+    EM_ASSERT(cdt.domain_marked() && !cdt.mesh.is_dead(t) && !cdt.mesh.is_infinite(t));
+    cdt.encroached_edges.clear();
+    const VertIdx p = cdt.add_vertex(x, y);
+    auto reject = [&](CavityInsertion why) {
+        cdt.remove_last_vertex();
+        ++cdt.edit_counters.rejected_insertions;
+        return why;
+    };
+    if (!cdt.core.conflict(t, p)) return reject(CavityInsertion::NotInConflict);
+
+    // The conflict zone, grown across unconstrained edges only.
+    if (cdt.cavity_stamp.size() < cdt.mesh.triangle_slots())
+        cdt.cavity_stamp.resize(cdt.mesh.triangle_slots(), 0);
+    if (++cdt.stamp == 0) {
+        std::fill(cdt.cavity_stamp.begin(), cdt.cavity_stamp.end(), 0u);
+        cdt.stamp = 1;
+    }
+    cdt.cavity.clear();
+    cdt.boundary.clear();
+    cdt.cavity.push_back(t);
+    cdt.cavity_stamp[t] = cdt.stamp;
+    bool beyond_hull = false;
+    for (std::size_t i = 0; i < cdt.cavity.size(); ++i) {
+        const TriIdx c = cdt.cavity[i];
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * c + k;
+            const TriIdx u = triangle_of(cdt.mesh.twin[e]);
+            if (cdt.cavity_stamp[u] == cdt.stamp) continue;
+            if (cdt.segment_of[e] != kNone) {
+                cdt.boundary.push_back(e);
+                continue;
+            }
+            if (cdt.core.conflict(u, p)) {
+                if (cdt.mesh.is_infinite(u)) {
+                    beyond_hull = true;  // outside the convex hull (exterior kept)
+                    cdt.boundary.push_back(e);
+                    continue;
+                }
+                cdt.cavity_stamp[u] = cdt.stamp;
+                cdt.cavity.push_back(u);
+            } else {
+                cdt.boundary.push_back(e);
+            }
+        }
+    }
+    if (beyond_hull) return reject(CavityInsertion::Outside);
+    for (const EdgeIdx e : cdt.boundary) {
+        if (cdt.core.same_point(cdt.mesh.origin(e), p)) return reject(CavityInsertion::Duplicate);
+    }
+    for (const EdgeIdx e : cdt.boundary) {
+        const VertIdx u = cdt.mesh.origin(e), v = cdt.mesh.destination(e);
+        const Sign side = cdt.core.orient(u, v, p);
+        if (cdt.segment_of[e] != kNone) {
+            if (side != Sign::Positive || predicates::corner_dot_sign(cdt.mesh.point(p), cdt.mesh.point(u),
+                                                          cdt.mesh.point(v)) != Sign::Positive) {
+                cdt.encroached_edges.push_back(e);
+            }
+        } else if (side != Sign::Positive) {
+            // Only on the line of a hull edge beyond its ends (exterior kept): the Delaunay lemma
+            // puts p strictly inside every other unconstrained boundary edge.
+            EM_ASSERT(cdt.mesh.is_infinite(triangle_of(cdt.mesh.twin[e])));
+            return reject(CavityInsertion::Outside);
+        }
+    }
+    if (!cdt.encroached_edges.empty()) return reject(CavityInsertion::Encroaches);
+
+    // The boundary in order: from each boundary edge u -> v, turn about v through the cavity to
+    // the next boundary edge leaving v. A cavity with an interior vertex or pinched at a vertex
+    // would not close after cdt.boundary.size() edges (never seen: the Delaunay lemma excludes it).
+    auto on_boundary = [&](EdgeIdx g) {
+        return cdt.segment_of[g] != kNone ||
+               cdt.cavity_stamp[triangle_of(cdt.mesh.twin[g])] != cdt.stamp;
+    };
+    cdt.cycle.clear();
+    EdgeIdx current = cdt.boundary.front();
+    do {
+        cdt.cycle.push_back(current);
+        EM_ASSERT(cdt.cycle.size() <= cdt.boundary.size());
+        EdgeIdx g = next_edge(current);
+        std::size_t turns = 0;
+        while (!on_boundary(g)) {
+            g = next_edge(cdt.mesh.twin[g]);
+            EM_ASSERT(++turns <= cdt.cavity.size());
+        }
+        current = g;
+    } while (current != cdt.boundary.front());
+    EM_ASSERT(cdt.cycle.size() == cdt.boundary.size());
+    EM_ASSERT(cdt.cycle.size() == cdt.cavity.size() + 2);
+
+    std::vector<FanEdge>& fan = cdt.fan;
+    fan.clear();
+    for (const EdgeIdx e : cdt.cycle) {
+        fan.push_back(
+            {cdt.mesh.origin(e), cdt.mesh.destination(e), cdt.mesh.twin[e], cdt.segment_of[e]});
+    }
+    const CdtState::Side side = cdt.side_of(t);
+    const std::size_t n = fan.size();
+    std::vector<TriIdx>& slots = cdt.fan_slots;
+    slots.assign(cdt.cavity.begin(), cdt.cavity.end());
+    while (slots.size() < n) slots.push_back(cdt.new_triangle());
+    for (std::size_t i = 0; i < n; ++i) {
+        const TriIdx s = slots[i];
+        cdt.set(s, fan[i].u, fan[i].v, p);
+        cdt.link_outer(3 * s, fan[i].outer, fan[i].segment);
+        cdt.put_on_side(s, side);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        // (v_i -> p) of triangle i meets (p -> u_{i+1}) of the next, u_{i+1} = v_i.
+        cdt.link_inner(3 * slots[i] + 1, 3 * slots[(i + 1) % n] + 2);
+    }
+    cdt.core.last_triangle = slots[0];
+    ++cdt.edit_counters.cavity_insertions;
+    cdt.edit_counters.cavity_triangles += cdt.cavity.size();
+    return CavityInsertion::Inserted;
+}
+
+/// The exact fan test of split_constrained_edge: p strictly inside both triangles' star.
+bool star_contains(CdtState& cdt, VertIdx p, VertIdx a, VertIdx b, VertIdx c, VertIdx d) {
+    return cdt.core.orient(b, c, p) == Sign::Positive &&
+           cdt.core.orient(c, a, p) == Sign::Positive &&
+           cdt.core.orient(a, d, p) == Sign::Positive && cdt.core.orient(d, b, p) == Sign::Positive;
+}
+
+/// One attempt of split_constrained_edge at (x, y): true (and the new vertex) when the point
+/// lies on e or inside the quadrilateral of e's two triangles; the edges to check for Lawson
+/// flips are appended to `check`. Else nothing changes.
+bool try_split_at(CdtState& cdt, EdgeIdx e, double x, double y,
+                  std::vector<std::pair<VertIdx, VertIdx>>& check, VertIdx& vertex) {
+    const EdgeIdx f = cdt.mesh.twin[e];
+    const VertIdx a = cdt.mesh.origin(e), b = cdt.mesh.destination(e), c = cdt.apex(e),
+                  d = cdt.apex(f);
+    const VertIdx p = cdt.add_vertex(x, y);
+    if (cdt.core.same_point(p, a) || cdt.core.same_point(p, b)) {
+        cdt.remove_last_vertex();
+        return false;
+    }
+    const Sign s = cdt.core.orient(a, b, p);
+    if (s == Sign::Zero && cdt.core.strictly_between(a, b, p)) {
+        // On the line: the four triangles (p, b, c), (p, c, a), (p, a, d), (p, d, b), then
+        // Lawson's flips of the edges opposite p (the spokes are locally Delaunay).
+        split_edge(cdt, e, p);
+        cdt.flip_stack.clear();
+        check.insert(check.end(), {{b, c}, {c, a}, {a, d}, {d, b}});
+        vertex = p;
+        return true;
+    }
+    if (s != Sign::Zero && star_contains(cdt, p, a, b, c, d)) {
+        // Off the line, inside the quadrilateral a, d, b, c and seeing its four sides: the same
+        // four triangles, the pieces a - p - b bent by the rounding of p. p lies inside one of
+        // the two old triangles only, so the spokes p - c and p - d are checked too.
+        split_edge(cdt, e, p);
+        cdt.flip_stack.clear();
+        check.insert(check.end(), {{b, c}, {c, a}, {a, d}, {d, b}, {p, c}, {p, d}});
+        vertex = p;
+        return true;
+    }
+    cdt.remove_last_vertex();
+    return false;
+}
+
+VertIdx split_constrained_edge(CdtState& cdt, EdgeIdx e, double x, double y) {
+    EM_ASSERT(cdt.domain_marked() && cdt.segment_of[e] != kNone);
+    const VertIdx a = cdt.mesh.origin(e), b = cdt.mesh.destination(e);
+    const std::uint32_t segment = cdt.segment_of[e];
+    {
+        const double* pa = cdt.mesh.point(a);
+        const double* pb = cdt.mesh.point(b);
+        if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1])) {
+            throw GeometryError("segment " + std::to_string(segment + cdt.options.first_index) +
+                                ": its piece " + format_point(pa) + " - " + format_point(pb) +
+                                " is too short to split (adjacent doubles)");
+        }
+    }
+    const double nx = cdt.mesh.point(a)[1] - cdt.mesh.point(b)[1],
+                 ny = cdt.mesh.point(b)[0] - cdt.mesh.point(a)[0];  // left normal
+    std::vector<std::pair<VertIdx, VertIdx>> check;
+    const std::uint64_t flips_before = cdt.result.counters.delaunay_flips;
+    // A neighbouring triangle may be a sliver: its apex within ulps of the line of a - b (the next
+    // vertex of the same bent segment, on the exterior side where nothing breaks up such slivers).
+    // Then the point, moved 1, 1, 2, 2, 3, 3 ulps per coordinate to either side of the line, may
+    // fit; else the sliver's free edge that the point lies beyond is flipped away (a temporary
+    // flip: Lawson's flips from every edge involved restore the constrained Delaunay property).
+    for (int round = 0; round < 8; ++round) {
+        e = cdt.find_edge(a, b);
+        for (int attempt = 0; attempt < 7; ++attempt) {
+            double px = x, py = y;
+            const double side = attempt % 2 == 1 ? 1.0 : -1.0;
+            for (int step = 0; step < (attempt + 1) / 2; ++step) {
+                if (nx != 0) px = std::nextafter(px, side * nx > 0 ? INFINITY : -INFINITY);
+                if (ny != 0) py = std::nextafter(py, side * ny > 0 ? INFINITY : -INFINITY);
+            }
+            VertIdx vertex = kNone;
+            if (try_split_at(cdt, e, px, py, check, vertex)) {
+                restore_delaunay(cdt, check);
+                cdt.edit_counters.split_flips += cdt.result.counters.delaunay_flips - flips_before;
+                ++cdt.edit_counters.edge_splits;
+                return vertex;
+            }
+        }
+        // The free edge of a side triangle (not a - b) that the point lies beyond, if flippable.
+        const VertIdx p = cdt.add_vertex(x, y);
+        EdgeIdx blocking = kNone;
+        for (const EdgeIdx g : {next_edge(e), prev_edge(e), next_edge(cdt.mesh.twin[e]),
+                                prev_edge(cdt.mesh.twin[e])}) {
+            if (cdt.segment_of[g] != kNone ||
+                cdt.core.orient(cdt.mesh.origin(g), cdt.mesh.destination(g), p) == Sign::Positive) {
+                continue;
+            }
+            const VertIdx u = cdt.mesh.origin(g), v = cdt.mesh.destination(g), w1 = cdt.apex(g),
+                          w2 = cdt.apex(cdt.mesh.twin[g]);
+            if (w1 == kInfinite || w2 == kInfinite) continue;
+            const Sign su = cdt.core.orient(w1, w2, u), sv = cdt.core.orient(w1, w2, v);
+            if (su != Sign::Zero && sv != Sign::Zero && su != sv) {
+                blocking = g;
+                break;
+            }
+        }
+        cdt.remove_last_vertex();
+        if (blocking == kNone) break;
+        const VertIdx u = cdt.mesh.origin(blocking), v = cdt.mesh.destination(blocking);
+        const VertIdx w1 = cdt.apex(blocking), w2 = cdt.apex(cdt.mesh.twin[blocking]);
+        ++cdt.result.counters.delaunay_flips;
+        flip(cdt, blocking);
+        check.insert(check.end(), {{w1, w2}, {u, w2}, {w2, v}, {v, w1}, {w1, u}});
+    }
+    restore_delaunay(cdt, check);
+    return bend_at_apex(cdt, cdt.find_edge(a, b));
+}
+
+VertIdx bend_at_apex(CdtState& cdt, EdgeIdx e) {
+    const EdgeIdx best = near_apex(cdt, e);
+    if (best == kNone) {
+        throw GeometryError(
+            "segment " + std::to_string(cdt.segment_of[e] + cdt.options.first_index) +
+            ": its piece " + format_point(cdt.mesh.point(cdt.mesh.origin(e))) + " - " +
+            format_point(cdt.mesh.point(cdt.mesh.destination(e))) +
+            " cannot be split: features within rounding of it (finer than double precision "
+            "resolves)");
+    }
+    ++cdt.edit_counters.edge_bends;
+    return bend_through_apex(cdt, best);
+}
+
+}  // namespace
+
+}  // namespace detail
+
+// ---------------------------------------------------------------------------------------------
+
+struct ConstrainedTriangulation2::Owned {
+    std::vector<double> xy, holes, regions;
+    std::vector<VertIdx> segments;
+    Cdt2Options options;
+    std::optional<detail::CdtState> state;
+};
+
+ConstrainedTriangulation2::ConstrainedTriangulation2(const Pslg& pslg, const Cdt2Options& options)
+    : owned_(std::make_unique<Owned>()) {
+    if (options.recovery == SegmentRecovery::Conforming) {
+        throw InputError(
+            "ConstrainedTriangulation2: conforming recovery keeps no constraints; use swap or "
+            "cavity");
+    }
+    if (!options.remove_exterior) {
+        throw InputError(
+            "ConstrainedTriangulation2: the domain is what the segments enclose (remove_exterior)");
+    }
+    validate_pslg(pslg);
+    Owned& o = *owned_;
+    o.xy.assign(pslg.xy.begin(), pslg.xy.end());
+    o.holes.assign(pslg.holes.begin(), pslg.holes.end());
+    o.regions.assign(pslg.regions.begin(), pslg.regions.end());
+    o.segments.assign(pslg.segments.begin(), pslg.segments.end());
+    o.options = options;
+    o.state.emplace(Pslg{o.xy, o.segments, o.holes, o.regions}, o.options);
+    state_ = &*o.state;
+    detail::CdtState& cdt = *state_;
+    if (detail::triangulate_vertices(cdt)) {
+        detail::recover_segments(cdt, options.recovery == SegmentRecovery::Cavity
+                                          ? detail::recover_by_cavity
+                                          : detail::recover_by_swaps);
+        detail::bend_through_near_vertices(cdt);
+        detail::enclose_in_box(cdt);
+        detail::mark_domain(cdt);
+    }
+}
+
+ConstrainedTriangulation2::~ConstrainedTriangulation2() = default;
+ConstrainedTriangulation2::ConstrainedTriangulation2(ConstrainedTriangulation2&&) noexcept =
+    default;
+ConstrainedTriangulation2& ConstrainedTriangulation2::operator=(
+    ConstrainedTriangulation2&&) noexcept = default;
+
+const TriMesh2& ConstrainedTriangulation2::mesh() const {
+    return state_->mesh;
+}
+std::uint32_t ConstrainedTriangulation2::segment_of(EdgeIdx e) const {
+    return state_->segment_of[e];
+}
+bool ConstrainedTriangulation2::in_domain(TriIdx t) const {
+    return state_->in_domain(t);
+}
+double ConstrainedTriangulation2::attribute(TriIdx t) const {
+    return state_->attribute.empty() ? 0.0 : state_->attribute[t];
+}
+bool ConstrainedTriangulation2::collinear() const {
+    return state_->collinear;
+}
+std::uint32_t ConstrainedTriangulation2::input_vertex_count() const {
+    return state_->input_count;
+}
+std::span<const VertIdx> ConstrainedTriangulation2::input_index() const {
+    return state_->core.input_index;
+}
+std::array<VertIdx, 2> ConstrainedTriangulation2::segment_ends(std::uint32_t s) const {
+    return state_->segment_ends[s];
+}
+EdgeIdx ConstrainedTriangulation2::find_edge(VertIdx u, VertIdx v) const {
+    return state_->find_edge(u, v);
+}
+TriIdx ConstrainedTriangulation2::locate(double x, double y) {
+    return detail::locate_point(*state_, x, y);
+}
+
+CavityInsertion ConstrainedTriangulation2::insert_in_cavity(TriIdx t, double x, double y) {
+    return detail::insert_in_cavity(*state_, t, x, y);
+}
+std::span<const EdgeIdx> ConstrainedTriangulation2::encroached_edges() const {
+    return state_->encroached_edges;
+}
+VertIdx ConstrainedTriangulation2::split_constrained_edge(EdgeIdx e, double x, double y) {
+    return detail::split_constrained_edge(*state_, e, x, y);
+}
+std::span<const TriIdx> ConstrainedTriangulation2::touched() const {
+    return state_->touched;
+}
+void ConstrainedTriangulation2::clear_touched() {
+    state_->touched.clear();
+}
+void ConstrainedTriangulation2::reserve(std::uint32_t vertices) {
+    detail::reserve(*state_, vertices);
+}
+const ConstrainedTriangulation2Counters& ConstrainedTriangulation2::counters() const {
+    return state_->edit_counters;
+}
+
+Cdt2Result ConstrainedTriangulation2::take_result() && {
+    Cdt2Result result = detail::finish(*state_);
+    owned_.reset();
+    state_ = nullptr;
+    return result;
+}
+
+}  // namespace exactmesh::triangulation

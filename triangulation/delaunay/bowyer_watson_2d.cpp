@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// Bowyer-Watson 2D (see bowyer_watson_2d.hpp).
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
+
+#include <vector>
+
+#include "triangulation/delaunay/delaunay_2d_core.hpp"
+
+namespace exactmesh::triangulation {
+
+namespace {
+
+/// The cavity and its boundary, kept between insertions so they allocate nothing.
+struct Cavity {
+    struct BoundaryEdge {
+        EdgeIdx inside;   ///< half-edge of a cavity triangle
+        EdgeIdx outside;  ///< its twin, in a triangle that stays
+        VertIdx origin, destination;
+    };
+    std::vector<TriIdx> triangles;
+    std::vector<BoundaryEdge> boundary;
+    std::vector<TriIdx> created;
+    std::vector<std::uint32_t> stamp;  ///< per triangle slot: insertion that visited it
+    std::vector<TriIdx> starting_at;   ///< per vertex (+1 for kInfinite): new triangle on v -> *
+};
+
+void insert_point(detail::Delaunay2Core& core, Cavity& cavity, VertIdx p, TriIdx seed,
+                  std::uint32_t stamp) {
+    TriMesh2& mesh = core.mesh;
+    cavity.triangles.clear();
+    cavity.boundary.clear();
+    cavity.created.clear();
+    if (cavity.stamp.size() < mesh.triangle_slots()) cavity.stamp.resize(2 * mesh.triangle_slots(), 0);
+    cavity.stamp[seed] = stamp;
+    cavity.triangles.push_back(seed);
+    // Breadth first: the conflict region is connected [Watson81], so its boundary is reached.
+    for (std::size_t i = 0; i < cavity.triangles.size(); ++i) {
+        const TriIdx t = cavity.triangles[i];
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * t + k;
+            const EdgeIdx f = mesh.twin[e];
+            const TriIdx u = triangle_of(f);
+            if (cavity.stamp[u] == stamp) continue;
+            if (core.conflict(u, p)) {
+                cavity.stamp[u] = stamp;
+                cavity.triangles.push_back(u);
+            } else {
+                cavity.boundary.push_back({e, f, mesh.origin(e), mesh.destination(e)});
+            }
+        }
+    }
+    core.counters.cavity_triangles += cavity.triangles.size();
+    // Connect p to each boundary edge o -> d: triangle (o, d, p) is counter-clockwise because
+    // the cavity is star-shaped from p. Its edge d -> p meets edge p -> d of the triangle
+    // built on the boundary edge that starts at d.
+    const std::uint32_t n = mesh.vertex_count();
+    auto slot = [n](VertIdx v) { return v == kInfinite ? n : v; };
+    for (const TriIdx t : cavity.triangles) mesh.kill_triangle(t);
+    for (const Cavity::BoundaryEdge& b : cavity.boundary) {
+        const TriIdx t = mesh.new_triangle();
+        cavity.created.push_back(t);
+        mesh.tv[3 * t] = b.origin;
+        mesh.tv[3 * t + 1] = b.destination;
+        mesh.tv[3 * t + 2] = p;
+        mesh.link(3 * t, b.outside);
+        cavity.starting_at[slot(b.origin)] = t;
+    }
+    for (std::size_t i = 0; i < cavity.created.size(); ++i) {
+        const TriIdx t = cavity.created[i];
+        const TriIdx u = cavity.starting_at[slot(cavity.boundary[i].destination)];
+        mesh.link(3 * t + 1, 3 * u + 2);
+    }
+    core.last_triangle = cavity.created.front();
+}
+
+}  // namespace
+
+Delaunay2Result bowyer_watson_2d(std::span<const double> xy, const Delaunay2Options& options) {
+    detail::Delaunay2Core core(xy, options);
+    std::vector<bool> skip;
+    if (!core.make_first_triangle(skip)) {
+        // All points collinear (or fewer than three distinct): no triangle. Duplicates still
+        // map to their first occurrence.
+        return core.collinear_result();
+    }
+    Cavity cavity;
+    cavity.starting_at.assign(core.mesh.vertex_count() + 1, kNone);
+    std::uint32_t stamp = 0;
+    for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
+        if (skip[p]) continue;
+        const TriIdx t = core.locate(p);
+        if (t == kNone) continue;  // duplicate, merged
+        insert_point(core, cavity, p, t, ++stamp);
+        core.note_inserted(p);
+    }
+    return core.take_result();
+}
+
+}  // namespace exactmesh::triangulation

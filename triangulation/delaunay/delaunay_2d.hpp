@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// The public face of 2D Delaunay construction: options, counters and the flat result shared by
+// bowyer_watson_2d, green_sibson_2d and tanemura_merriam_2d. All three break ties with the same
+// symbolic perturbation (predicates/sos.hpp, by input index), so for the same points they
+// return the same triangulation, whatever the algorithm or insertion order.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "base/counter_table.hpp"
+#include "triangulation/mesh/mesh2.hpp"
+#include "triangulation/mesh/spatial_sort.hpp"
+
+namespace exactmesh::triangulation {
+
+/// Where the visibility walk of each insertion starts. Walk: the last inserted point's triangle
+/// (enough for BRIO and other spatially coherent orders). Grid: jump first to a triangle made
+/// by a recent insertion nearby, found in a multi-level grid of the bounding box (a bucketing
+/// equivalent of the Delaunay hierarchy: O(1) expected steps for random orders, where the
+/// plain walk costs O(sqrt n) per point). Auto: Grid for InsertionOrder::Random, else Walk.
+enum class PointLocation { Auto, Walk, Grid };
+
+struct Delaunay2Options {
+    InsertionOrder order = InsertionOrder::Brio;
+    std::uint64_t seed = 1;
+    PointLocation location = PointLocation::Auto;
+};
+
+/// Work counters of one construction (predicate stage counts come from predicates/stats.hpp).
+struct Delaunay2Counters {
+    std::uint64_t points = 0;          ///< input points
+    std::uint64_t duplicates = 0;      ///< input points merged into an earlier identical one
+    std::uint64_t orient_calls = 0;    ///< orient2d evaluations made by the algorithm
+    std::uint64_t incircle_calls = 0;  ///< incircle evaluations made by the algorithm
+    std::uint64_t walk_steps = 0;      ///< triangles visited by point location
+    std::uint64_t cavity_triangles = 0;  ///< Bowyer-Watson: triangles removed, summed
+    std::uint64_t flips = 0;           ///< Green-Sibson: Lawson flips
+    std::uint64_t candidates = 0;      ///< Tanemura-Merriam: candidate points examined
+};
+
+/// The name table of Delaunay2Counters (base/counter_table.hpp): --stats prints it in this order.
+inline constexpr std::array kDelaunay2CounterNames = {
+    counter("points", &Delaunay2Counters::points),
+    counter("duplicates", &Delaunay2Counters::duplicates),
+    counter("orient_calls", &Delaunay2Counters::orient_calls),
+    counter("incircle_calls", &Delaunay2Counters::incircle_calls),
+    counter("walk_steps", &Delaunay2Counters::walk_steps),
+    counter("cavity_triangles", &Delaunay2Counters::cavity_triangles),
+    counter("flips", &Delaunay2Counters::flips),
+    counter("candidates", &Delaunay2Counters::candidates)};
+static_assert(counter_table_complete(kDelaunay2CounterNames));
+
+/// The Delaunay triangulation in the caller's vertex numbering.
+struct Delaunay2Result {
+    std::vector<VertIdx> triangles;   ///< 3·#T input indices, counter-clockwise
+    std::vector<TriIdx> neighbors;    ///< 3·#T: triangle across edge (v[k], v[k+1]), kNone on the hull
+    std::vector<VertIdx> merged_into; ///< #V: the first input point with the same coordinates
+    Delaunay2Counters counters;
+};
+
+/// Throws InputError (NonFiniteCoordinate) naming the first NaN or infinite coordinate, or when
+/// there are more than kMaxPoints points or an odd number of coordinates.
+void validate_points_2d(std::span<const double> xy);
+
+using Delaunay2Function = Delaunay2Result (*)(std::span<const double>, const Delaunay2Options&);
+
+/// One 2D Delaunay algorithm of the registry: the name the CLI, benches and tests use, the
+/// function, and one line for help texts.
+struct Delaunay2Algorithm {
+    std::string_view name;
+    Delaunay2Function build;
+    std::string_view description;
+};
+
+/// Every 2D Delaunay algorithm (delaunay_2d.cpp; adding one is its file plus one line there):
+/// "bowyer-watson", "green-sibson", "tanemura-merriam".
+std::span<const Delaunay2Algorithm> delaunay_2d_algorithms();
+
+/// The algorithm of that name. @throws InputError naming the known ones.
+Delaunay2Function delaunay_2d_algorithm(std::string_view name);
+
+}  // namespace exactmesh::triangulation

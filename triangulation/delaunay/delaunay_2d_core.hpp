@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// Shared machinery of the 2D Delaunay constructions (internal to triangulation/): the points in
+// insertion order, the exact conflict test with the infinite vertex, the visibility walk, the
+// first triangle, and the conversion to the caller's numbering.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "predicates/sign.hpp"
+#include "triangulation/delaunay/delaunay_2d.hpp"
+#include "triangulation/mesh/mesh2.hpp"
+
+namespace exactmesh::triangulation::detail {
+
+using predicates::Sign;
+
+class Delaunay2Core {
+public:
+    /// Validates the input, orders it (options.order) and copies it into mesh.xy.
+    Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options);
+    /// Same, with mesh vertex v holding the caller's point order[v] (a permutation).
+    Delaunay2Core(std::span<const double> xy, std::vector<VertIdx> order);
+
+    TriMesh2 mesh;
+    std::vector<VertIdx> input_index;  ///< mesh vertex -> caller's index
+    std::vector<VertIdx> merged_into;  ///< caller's index -> first caller index with equal point
+    Delaunay2Counters counters;
+
+    /// Exact orientation of three finite mesh vertices.
+    Sign orient(VertIdx a, VertIdx b, VertIdx c);
+    /// Perturbed incircle of four finite mesh vertices (ties broken by the caller's indices).
+    Sign incircle(VertIdx a, VertIdx b, VertIdx c, VertIdx d);
+    /// True when p lies in the perturbed circumcircle of t (for an infinite triangle (a, b, inf):
+    /// beyond the hull edge ab, or strictly inside the segment ab).
+    bool conflict(TriIdx t, VertIdx p);
+    /// True when the finite points a, b, p are collinear and p lies strictly between a and b.
+    bool strictly_between(VertIdx a, VertIdx b, VertIdx p) const;
+    bool same_point(VertIdx a, VertIdx b) const;
+
+    /// Builds the first triangle and its three infinite neighbours from the first three
+    /// non-collinear points in insertion order; records duplicates met on the way. Returns
+    /// false when all points are collinear (then there is no triangle). `skip` receives the
+    /// mesh vertices already used or merged, so the caller does not insert them again.
+    bool make_first_triangle(std::vector<bool>& skip);
+
+    /// Visibility walk [Devillers, Pion, Teillaud 2002] from the last visited triangle to one
+    /// in conflict with p. When p equals a vertex, records the duplicate and returns kNone.
+    TriIdx locate(VertIdx p);
+    /// The visibility walk alone: a triangle containing p (closed) or an infinite triangle
+    /// whose hull edge sees p; p may equal one of its vertices. Sets last_triangle.
+    TriIdx walk_to(VertIdx p);
+
+    /// The finite triangles in the caller's numbering; consumes the mesh.
+    Delaunay2Result take_result();
+    /// The result for collinear input (no triangle): only duplicates are detected, by sorting.
+    Delaunay2Result collinear_result();
+
+    TriIdx last_triangle = kNone;
+
+    /// Records that the triangle last_triangle was made by inserting p (for grid location).
+    void note_inserted(VertIdx p);
+
+private:
+    /// Multi-level grid over the bounding box: for each cell of each level, a triangle made by
+    /// the last insertion inside it. Levels 0..depth_, level l has 2^l x 2^l cells.
+    struct JumpGrid {
+        bool enabled = false;
+        int depth = 0;
+        double min_x = 0, min_y = 0, scale_x = 0, scale_y = 0;
+        std::vector<std::uint32_t> level_offset;
+        std::vector<TriIdx> triangle;
+    } jump_;
+    void build_jump_grid(const Delaunay2Options& options);
+    /// Finest-level cell coordinates of point p.
+    void jump_cell(VertIdx p, std::uint32_t& ix, std::uint32_t& iy) const;
+
+    std::uint64_t rng_state_ = 0x9E3779B97F4A7C15ull;
+    std::uint32_t random_offset();
+};
+
+}  // namespace exactmesh::triangulation::detail

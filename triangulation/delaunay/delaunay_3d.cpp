@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// The registry of 3D Delaunay algorithms shared by the CLI, benches and tests.
+#include "triangulation/delaunay/delaunay_3d.hpp"
+
+#include <string>
+
+#include "base/errors.hpp"
+#include "triangulation/delaunay/bowyer_watson_3d.hpp"
+#include "triangulation/delaunay/green_sibson_3d.hpp"
+
+namespace exactmesh::triangulation {
+
+namespace {
+
+/// The registry: one line per algorithm.
+constexpr Delaunay3Algorithm kAlgorithms[] = {
+    {"bowyer-watson", &bowyer_watson_3d,
+     "Bowyer-Watson: the cavity of tetrahedra whose circumsphere holds the point, starred from it"},
+    {"green-sibson", &green_sibson_3d,
+     "Green-Sibson (Joe): the point splits its tetrahedron, face or edge, then 2-3, 3-2 and 4-4 "
+     "flips"},
+};
+
+}  // namespace
+
+std::span<const Delaunay3Algorithm> delaunay_3d_algorithms() {
+    return kAlgorithms;
+}
+
+Delaunay3Function delaunay_3d_algorithm(std::string_view name) {
+    std::string known;
+    for (const Delaunay3Algorithm& algorithm : kAlgorithms) {
+        if (algorithm.name == name) return algorithm.build;
+        known += (known.empty() ? "" : ", ") + std::string(algorithm.name);
+    }
+    throw InputError("unknown 3D Delaunay algorithm '" + std::string(name) + "' (known: " + known +
+                     ")");
+}
+
+}  // namespace exactmesh::triangulation

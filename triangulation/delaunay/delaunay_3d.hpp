@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// The public face of 3D Delaunay construction: options, counters and the result shared by
+// bowyer_watson_3d and green_sibson_3d. Both break ties with the same symbolic perturbation
+// (predicates/sos.hpp, insphere_sos by input index: the regular triangulation of weights
+// -eps^index), so for the same points and the same insertion order they return the same
+// tetrahedralization; without duplicate points, the same one for every insertion order.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/counter_table.hpp"
+#include "base/errors.hpp"
+#include "triangulation/delaunay/delaunay_2d.hpp"  // InsertionOrder
+#include "triangulation/mesh/tetrahedralization_3d.hpp"
+
+namespace exactmesh::triangulation {
+
+struct Delaunay3Options {
+    InsertionOrder order = InsertionOrder::Brio;
+    std::uint64_t seed = 1;
+};
+
+/// Work counters of one construction (predicate stage counts come from predicates/stats.hpp).
+struct Delaunay3Counters {
+    std::uint64_t points = 0;          ///< input points
+    std::uint64_t duplicates = 0;      ///< input points merged into an earlier identical one
+    std::uint64_t orient_calls = 0;    ///< orient3d evaluations made by the algorithm
+    std::uint64_t insphere_calls = 0;  ///< insphere evaluations made by the algorithm
+    std::uint64_t walk_steps = 0;      ///< tetrahedra visited by point location
+    std::uint64_t cavity_tets = 0;     ///< Bowyer-Watson: tetrahedra removed, summed
+    std::uint64_t outside_hull = 0;    ///< Green-Sibson: point outside the hull (joined to the
+                                       ///< hull faces it sees)
+    std::uint64_t splits_1_4 = 0;      ///< Green-Sibson: point inside a tetrahedron
+    std::uint64_t splits_2_6 = 0;      ///< Green-Sibson: point inside a face
+    std::uint64_t splits_edge = 0;     ///< Green-Sibson: point inside an edge (n-2n)
+    std::uint64_t flips_2_3 = 0;       ///< Green-Sibson flips
+    std::uint64_t flips_3_2 = 0;
+    std::uint64_t flips_4_4 = 0;
+    std::uint64_t unflippable = 0;  ///< Green-Sibson: non-Delaunay link faces not flippable when
+                                    ///< met, tried again later (counted each time)
+};
+
+/// The name table of Delaunay3Counters (base/counter_table.hpp): --stats prints it in this order.
+inline constexpr std::array kDelaunay3CounterNames = {
+    counter("points", &Delaunay3Counters::points),
+    counter("duplicates", &Delaunay3Counters::duplicates),
+    counter("orient_calls", &Delaunay3Counters::orient_calls),
+    counter("insphere_calls", &Delaunay3Counters::insphere_calls),
+    counter("walk_steps", &Delaunay3Counters::walk_steps),
+    counter("cavity_tets", &Delaunay3Counters::cavity_tets),
+    counter("outside_hull", &Delaunay3Counters::outside_hull),
+    counter("splits_1_4", &Delaunay3Counters::splits_1_4),
+    counter("splits_2_6", &Delaunay3Counters::splits_2_6),
+    counter("splits_edge", &Delaunay3Counters::splits_edge),
+    counter("flips_2_3", &Delaunay3Counters::flips_2_3),
+    counter("flips_3_2", &Delaunay3Counters::flips_3_2),
+    counter("flips_4_4", &Delaunay3Counters::flips_4_4),
+    counter("unflippable", &Delaunay3Counters::unflippable)};
+static_assert(counter_table_complete(kDelaunay3CounterNames));
+
+/// The Delaunay tetrahedralization in the caller's vertex numbering. When fewer than four
+/// distinct points are not coplanar, there is no tetrahedron: `mesh.tets` is empty and
+/// `coplanar` is true (duplicates are still merged).
+struct Delaunay3Result {
+    Tetrahedralization3 mesh;          ///< xyz = the input points, tets and neighbors (finite)
+    std::vector<VertIdx> merged_into;  ///< #V: the first input point with the same coordinates
+    bool coplanar = false;             ///< all points coplanar: no tetrahedron
+    Delaunay3Counters counters;
+};
+
+/// Thrown by callers that need a tetrahedralization (the CLI) when Delaunay3Result::coplanar.
+class CoplanarPoints : public InputError {
+  public:
+    using InputError::InputError;
+};
+
+/// Throws InputError (NonFiniteCoordinate) naming the first NaN or infinite coordinate, or when
+/// there are more than kMaxPoints3 points or a number of coordinates that is not a multiple of 3.
+void validate_points_3d(std::span<const double> xyz);
+
+using Delaunay3Function = Delaunay3Result (*)(std::span<const double>, const Delaunay3Options&);
+
+/// One 3D Delaunay algorithm of the registry (as Delaunay2Algorithm).
+struct Delaunay3Algorithm {
+    std::string_view name;
+    Delaunay3Function build;
+    std::string_view description;
+};
+
+/// Every 3D Delaunay algorithm (delaunay_3d.cpp; adding one is its file plus one line there):
+/// "bowyer-watson", "green-sibson".
+std::span<const Delaunay3Algorithm> delaunay_3d_algorithms();
+
+/// The algorithm of that name. @throws InputError naming the known ones.
+Delaunay3Function delaunay_3d_algorithm(std::string_view name);
+
+}  // namespace exactmesh::triangulation

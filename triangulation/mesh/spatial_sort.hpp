@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+// Insertion orders for incremental constructions: as given, uniformly random, and BRIO
+// (biased randomized insertion order [AmentaChoiRote03]) with each round sorted along a
+// Hilbert curve (2D, or 3D [Skilling04]), so that consecutive points are close and walks stay
+// short.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace exactmesh::triangulation {
+
+/// The order in which an incremental construction inserts its points.
+enum class InsertionOrder { Given, Random, Brio };
+
+/// A permutation of 0..n-1 (n = xy.size()/2): the order in which to insert the points.
+std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
+                                              std::uint64_t seed);
+
+/// Sorts `indices` in place along a Hilbert curve over the bounding box of their points.
+void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indices);
+
+/// The same in 3D (n = xyz.size()/3): BRIO rounds sorted along a 3D Hilbert curve.
+std::vector<std::uint32_t> insertion_order_3d(std::span<const double> xyz, InsertionOrder order,
+                                              std::uint64_t seed);
+
+/// Sorts `indices` in place along a 3D Hilbert curve over the bounding box of their points.
+void hilbert_sort_3d(std::span<const double> xyz, std::span<std::uint32_t> indices);
+
+}  // namespace exactmesh::triangulation

@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: MIT
+// Edge-face swapping under a criterion (see edge_face_swap_3d.hpp).
+//
+// The flips (2-3, 3-2, 4-4, 2-2: their pictures are in flip_3d.hpp) are planned and made by
+// flip_3d (plan_flip_3d, apply_flip_3d): each new tetrahedron exactly positive, the new set
+// checked to have the old one's boundary.
+//
+// Termination. Faces are queued only after a swap, so the loop ends when the swaps do; the
+// tetrahedralizations of a finite point set with a fixed boundary are finitely many, so it is
+// enough that every swap strictly improves a quantity of the whole tetrahedralization:
+//  - Delaunay: with lifts |p|^2 - eps^(n - index) [EdelsbrunnerMücke90], insphere_sos(abcd, e)
+//    > 0 says e's lift lies below the hyperplane of abcd's lifts; the five (or, coplanar, six)
+//    points' two triangulations then differ by replacing the upper lifted tetrahedra by the
+//    lower ones over the same region, so the piecewise-linear lifted surface goes down
+//    pointwise (as polynomials in eps) there and stays elsewhere. A surface never returns
+//    above itself. In the coplanar case d, e, x, y, insphere_sos(abcd, e) equals the in-plane
+//    perturbed incircle of x, y, d, e (the plane's lift is vertical through it), the same
+//    decision seen from either side, so a 4-4 swap lowers both halves.
+//  - MaxMinDihedral (VolumeEdge the same with that quality): the vector of all tetrahedra's
+//    smallest dihedral angles sorted increasingly grows strictly in lexicographic order. Let m
+//    be the old minimum among the changed tetrahedra; every new one exceeds m; below m both
+//    vectors agree, and the old one has more entries equal to m, where the new one has a larger
+//    entry (it has at least one more entry past them: a swap creates two or more tetrahedra).
+//  - MinMaxDihedral: symmetrically, the decreasingly sorted vector of largest angles decreases.
+// Comparisons are exact (angle_comparisons_3d), so "strictly" holds for the real angles.
+#include "triangulation/modification/edge_face_swap_3d.hpp"
+
+#include <array>
+#include <deque>
+#include <string>
+
+#include "base/errors.hpp"
+#include "predicates/angle_comparisons_3d.hpp"
+#include "predicates/sos.hpp"
+
+namespace exactmesh::triangulation {
+
+namespace {
+
+using predicates::compare_dihedral;
+using predicates::compare_volume_edge;
+using predicates::Dihedral;
+using predicates::largest_dihedral;
+using predicates::Sign;
+using predicates::smallest_dihedral;
+using predicates::TetCorners;
+
+using FlipPlan = FlipPlan3;
+
+bool delaunay_wants(const TetMesh3& mesh, FaceIdx f) {
+    const TetIdx t1 = f / 4;
+    const VertIdx e = mesh.vertex(mesh.adj[f] / 4, mesh.adj[f] % 4);
+    const Tet t = mesh.tet(t1);
+    return predicates::insphere_sos(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]),
+                                    mesh.point(t[3]), mesh.point(e), t[0], t[1], t[2], t[3],
+                                    e) == Sign::Positive;
+}
+
+TetCorners corners(const TetMesh3& mesh, const Tet& t) {
+    return {mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])};
+}
+
+/// Whether the quality criterion strictly prefers the plan's new tetrahedra.
+bool quality_prefers(const TetMesh3& mesh, SwapCriterion3 criterion, const FlipPlan& plan) {
+    std::array<Tet, 4> old{};
+    for (unsigned i = 0; i < plan.old_count; ++i) old[i] = mesh.tet(plan.old[i]);
+    switch (criterion) {
+        case SwapCriterion3::MaxMinDihedral:
+        case SwapCriterion3::MinMaxDihedral: {
+            const bool min = criterion == SwapCriterion3::MaxMinDihedral;
+            auto extreme = [&](const std::array<Tet, 4>& set, unsigned count) {
+                Dihedral best = min ? smallest_dihedral(corners(mesh, set[0]))
+                                    : largest_dihedral(corners(mesh, set[0]));
+                for (unsigned i = 1; i < count; ++i) {
+                    const Dihedral c = min ? smallest_dihedral(corners(mesh, set[i]))
+                                           : largest_dihedral(corners(mesh, set[i]));
+                    if (compare_dihedral(c, best) == (min ? Sign::Negative : Sign::Positive))
+                        best = c;
+                }
+                return best;
+            };
+            const Dihedral before = extreme(old, plan.old_count);
+            const Dihedral after = extreme(plan.made, plan.made_count);
+            return compare_dihedral(after, before) == (min ? Sign::Positive : Sign::Negative);
+        }
+        case SwapCriterion3::VolumeEdge: {
+            auto worst = [&](const std::array<Tet, 4>& set, unsigned count) {
+                TetCorners best = corners(mesh, set[0]);
+                for (unsigned i = 1; i < count; ++i) {
+                    const TetCorners c = corners(mesh, set[i]);
+                    if (compare_volume_edge(c, best) == Sign::Negative) best = c;
+                }
+                return best;
+            };
+            return compare_volume_edge(worst(plan.made, plan.made_count),
+                                       worst(old, plan.old_count)) == Sign::Positive;
+        }
+        case SwapCriterion3::Delaunay:
+            break;
+    }
+    throw InternalError("edge_face_swap_3d: quality_prefers called for the Delaunay criterion");
+}
+
+void count_flip(EdgeFaceSwapCounters& counters, FlipKind3 kind) {
+    switch (kind) {
+        case FlipKind3::Flip23:
+            ++counters.flips_23;
+            break;
+        case FlipKind3::Flip32:
+            ++counters.flips_32;
+            break;
+        case FlipKind3::Flip44:
+            ++counters.flips_44;
+            break;
+        case FlipKind3::Flip22:
+            ++counters.flips_22;
+            break;
+        case FlipKind3::None:
+            break;
+    }
+}
+
+}  // namespace
+
+SwapCriterion3 swap_criterion_3d_from_name(std::string_view name) {
+    if (name == "delaunay") return SwapCriterion3::Delaunay;
+    if (name == "max-min-dihedral") return SwapCriterion3::MaxMinDihedral;
+    if (name == "min-max-dihedral") return SwapCriterion3::MinMaxDihedral;
+    if (name == "volume-edge") return SwapCriterion3::VolumeEdge;
+    throw InputError("unknown 3D swap criterion '" + std::string(name) +
+                     "' (known: delaunay, max-min-dihedral, min-max-dihedral, volume-edge)");
+}
+
+std::string_view swap_criterion_3d_name(SwapCriterion3 criterion) {
+    switch (criterion) {
+        case SwapCriterion3::Delaunay:
+            return "delaunay";
+        case SwapCriterion3::MaxMinDihedral:
+            return "max-min-dihedral";
+        case SwapCriterion3::MinMaxDihedral:
+            return "min-max-dihedral";
+        case SwapCriterion3::VolumeEdge:
+            return "volume-edge";
+    }
+    return "unknown";
+}
+
+bool locally_delaunay_sos(const TetMesh3& mesh, FaceIdx f) {
+    EM_ASSERT(mesh.adj[f] != kNone);
+    return !delaunay_wants(mesh, f);
+}
+
+EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion) {
+    EdgeFaceSwapCounters counters;
+    std::vector<std::uint8_t> queued(mesh.adj.size(), 0);
+    std::deque<FaceIdx> queue;
+    auto push = [&](FaceIdx f) {
+        if (f >= queued.size()) queued.resize(mesh.adj.size(), 0);
+        if (queued[f] != 0 || mesh.adj[f] == kNone) return;
+        queued[f] = 1;
+        queue.push_back(f);
+    };
+    for (FaceIdx f = 0; f < mesh.adj.size(); ++f) {
+        if (!mesh.is_dead(f / 4) && mesh.adj[f] != kNone && mesh.adj[f] > f) push(f);
+    }
+    std::vector<TetIdx> created;
+    FlipPlan plan;
+    while (!queue.empty()) {
+        const FaceIdx f = queue.front();
+        queue.pop_front();
+        queued[f] = 0;
+        if (mesh.is_dead(f / 4) || mesh.adj[f] == kNone) continue;
+        ++counters.faces_examined;
+        if (criterion == SwapCriterion3::Delaunay) {
+            if (!delaunay_wants(mesh, f)) continue;
+            if (!plan_flip_3d(mesh, f, plan, &counters.edges_examined)) {
+                ++counters.not_flippable;
+                continue;
+            }
+        } else {
+            if (!plan_flip_3d(mesh, f, plan, &counters.edges_examined)) {
+                ++counters.not_flippable;
+                continue;
+            }
+            if (!quality_prefers(mesh, criterion, plan)) continue;
+        }
+        apply_flip_3d(mesh, plan, created);
+        count_flip(counters, plan.kind);
+        // Every face of the new tetrahedra, the ones between them too: a face between two new
+        // tetrahedra is where a later 4-4 swap through them is seen from (its other faces see
+        // other point sets), and the swap that would undo this one is simply never preferred.
+        for (const TetIdx t : created) {
+            for (unsigned k = 0; k < 4; ++k) push(4 * t + k);
+        }
+    }
+    if (criterion == SwapCriterion3::Delaunay) {
+        for (FaceIdx f = 0; f < mesh.adj.size(); ++f) {
+            if (mesh.is_dead(f / 4) || mesh.adj[f] == kNone || mesh.adj[f] < f) continue;
+            if (delaunay_wants(mesh, f)) ++counters.stalled_faces;
+        }
+    }
+    return counters;
+}
+
+EdgeFaceSwapCounters swap_faces_3d(Tetrahedralization3& mesh, SwapCriterion3 criterion) {
+    TetMesh3 work = make_tet_mesh_3d(mesh);
+    const EdgeFaceSwapCounters counters = swap_faces_3d(work, criterion);
+    mesh = to_tetrahedralization_3d(work);
+    return counters;
+}
+
+}  // namespace exactmesh::triangulation

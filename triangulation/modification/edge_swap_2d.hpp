@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+// Lawson's edge swapping [Lawson77: C. L. Lawson, "Software for C1 surface interpolation", 1977]
+// over a Triangulation2, in place, for any local criterion: an interior, unconstrained edge whose
+// quadrilateral is strictly convex (exact orient2d) is replaced by the other diagonal when the
+// criterion strictly prefers it; a queue of edges to test is refilled with the four sides of
+// every swapped quadrilateral until no edge wants swapping. Criteria are small types:
+//  - Delaunay: the SoS incircle [EdelsbrunnerMücke90] (ties broken by vertex index, as in
+//    delaunay_2d), so from any triangulation of a point set it reaches exactly the triangulation
+//    delaunay_2d builds, cocircular points included.
+//  - MaxMinAngle / MinMaxAngle: the smallest (largest) of the six angles strictly increases
+//    (decreases), compared exactly (predicates/angle_comparisons_2d.hpp).
+//  - MinTotalLength: the new diagonal is strictly shorter (exact).
+//  - DataDependent: Dyn, Levin and Rippa's data-dependent criteria for piecewise-linear
+//    interpolation [DynLevinRippa90: "Data dependent triangulations for piecewise linear
+//    interpolation", IMA J. Numer. Anal. 10(1), 1990], the l1 cost of the quadrilateral's five
+//    edges, with either the angle between the normals (ABN) or the jump in normal derivatives
+//    (JND) as the edge cost; the sums are compared exactly.
+// Termination of every criterion is proved beside swap_edges_2d in edge_swap_2d.cpp.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "base/counter_table.hpp"
+#include "triangulation/checks/check_2d.hpp"
+#include "triangulation/mesh/triangulation_2d.hpp"
+
+namespace exactmesh::triangulation {
+
+/// Delaunay by the SoS incircle: swap when the apex across the edge lies inside the
+/// circumcircle (perturbed lifts by vertex index; never a tie in a strictly convex quad).
+struct Delaunay {};
+/// Swap when the minimum of the six angles of the two triangles strictly increases.
+struct MaxMinAngle {};
+/// Swap when the maximum of the six angles strictly decreases.
+struct MinMaxAngle {};
+/// Swap when the new diagonal is strictly shorter than the old one.
+struct MinTotalLength {};
+
+/// The cost of an interior edge under a data-dependent criterion [DynLevinRippa90 §3].
+enum class DataCost {
+    /// ABN: the angle (radians, in [0, pi]) between the normals of the two planes
+    /// interpolating the values over the triangles on each side.
+    AngleBetweenNormals,
+    /// JND: |n . (grad1 - grad2)|, the jump of the derivative along the edge's unit normal n.
+    JumpInNormalDerivatives,
+};
+
+/// Swap when the l1 cost (sum over the quadrilateral's diagonal and four sides, hull sides
+/// costing nothing) strictly decreases. `values`: #V doubles, one per vertex (finite).
+struct DataDependent {
+    std::span<const double> values;
+    DataCost cost = DataCost::AngleBetweenNormals;
+};
+
+/// The criterion names of the CLI and benches.
+enum class SwapCriterion { Delaunay, MaxMinAngle, MinMaxAngle, MinTotalLength, DataDependent };
+/// "delaunay", "max-min-angle", "min-max-angle", "min-length", "data-dependent"; throws
+/// InputError naming the known ones otherwise.
+SwapCriterion swap_criterion_from_name(std::string_view name);
+
+/// Work counters of one swapping run.
+struct EdgeSwapCounters {
+    std::uint64_t edges_tested = 0;   ///< edges popped from the queue and examined
+    std::uint64_t not_convex = 0;     ///< of those, skipped: quadrilateral not strictly convex
+    std::uint64_t constrained = 0;    ///< of those, skipped: constrained (or on the boundary)
+    std::uint64_t swaps = 0;          ///< edges swapped
+};
+
+/// The name table of EdgeSwapCounters (base/counter_table.hpp): --stats prints it in this order.
+inline constexpr std::array kEdgeSwapCounterNames = {
+    counter("edges_tested", &EdgeSwapCounters::edges_tested),
+    counter("not_convex", &EdgeSwapCounters::not_convex),
+    counter("constrained", &EdgeSwapCounters::constrained),
+    counter("swaps", &EdgeSwapCounters::swaps)};
+static_assert(counter_table_complete(kEdgeSwapCounterNames));
+
+/// Swaps edges of `mesh` until none is swappable and preferred by the criterion.
+/// @pre mesh.neighbors is consistent (see link_neighbors_2d), triangles strictly counter-
+///      clockwise, coordinates finite; constrained edges are never swapped or crossed.
+/// Vertex indices are the SoS tie-break ranks (a larger index is perturbed more).
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, Delaunay criterion);
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MaxMinAngle criterion);
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinMaxAngle criterion);
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinTotalLength criterion);
+/// @throws InputError when criterion.values does not hold one finite value per vertex.
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion);
+
+/// Fills mesh.neighbors from mesh.triangles (each undirected edge shared by at most two
+/// triangles, in opposite directions) and sizes mesh.constrained to match when it is not empty.
+/// @throws InputError naming the edge when a directed edge appears twice or a vertex index is
+///         out of range, or when a triangle is not strictly counter-clockwise (exact orient2d);
+///         messages number vertices and triangles from `numbering`'s bases (a file's own).
+void link_neighbors_2d(Triangulation2& mesh, CheckNumbering numbering = {});
+
+}  // namespace exactmesh::triangulation
