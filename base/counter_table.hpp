@@ -93,6 +93,37 @@ constexpr bool counter_table_complete(const std::array<CounterName<Counters>, N>
     return fields == detail::aggregate_field_count<Counters>() && computed == derived;
 }
 
+/// The name table of a counters struct whose printed names are its member names, in the order
+/// given: EM_COUNTER_TABLE(Delaunay2Counters, points, duplicates) is
+/// std::array{counter("points", &Delaunay2Counters::points),
+///            counter("duplicates", &Delaunay2Counters::duplicates)}.
+/// Each name is written once, so the printed name cannot drift from the field it reads. A table
+/// printing another name than the member's (RefinementCounters2's) lists its rows explicitly.
+/// Up to 80 members (a longer list leaves EM_DETAIL_COUNTER_AGAIN unexpanded: a compile error).
+#define EM_COUNTER_TABLE(Counters, ...)                                         \
+    std::array {                                                                \
+        EM_DETAIL_COUNTER_EXPAND(EM_DETAIL_COUNTER_ROWS(Counters, __VA_ARGS__)) \
+    }
+
+// The for-each behind EM_COUNTER_TABLE: each row names the next row's macro without calling it
+// (EM_DETAIL_COUNTER_AGAIN then a separate ()), and each rescan done by the nested
+// EM_DETAIL_COUNTER_EXPANDs (over 80 of them) expands one more row.
+#define EM_DETAIL_COUNTER_ROWS(Counters, member, ...) \
+    ::exactmesh::counter(#member, &Counters::member)  \
+        __VA_OPT__(, EM_DETAIL_COUNTER_AGAIN EM_DETAIL_COUNTER_PARENS(Counters, __VA_ARGS__))
+#define EM_DETAIL_COUNTER_AGAIN() EM_DETAIL_COUNTER_ROWS
+#define EM_DETAIL_COUNTER_PARENS ()
+#define EM_DETAIL_COUNTER_EXPAND(...)                      \
+    EM_DETAIL_COUNTER_EXPAND16(EM_DETAIL_COUNTER_EXPAND16( \
+        EM_DETAIL_COUNTER_EXPAND16(EM_DETAIL_COUNTER_EXPAND16(__VA_ARGS__))))
+#define EM_DETAIL_COUNTER_EXPAND16(...)                  \
+    EM_DETAIL_COUNTER_EXPAND4(EM_DETAIL_COUNTER_EXPAND4( \
+        EM_DETAIL_COUNTER_EXPAND4(EM_DETAIL_COUNTER_EXPAND4(__VA_ARGS__))))
+#define EM_DETAIL_COUNTER_EXPAND4(...)                   \
+    EM_DETAIL_COUNTER_EXPAND1(EM_DETAIL_COUNTER_EXPAND1( \
+        EM_DETAIL_COUNTER_EXPAND1(EM_DETAIL_COUNTER_EXPAND1(__VA_ARGS__))))
+#define EM_DETAIL_COUNTER_EXPAND1(...) __VA_ARGS__
+
 /// The counters as (name, value) pairs, in the table's order.
 template <class Counters, std::size_t N>
 std::vector<std::pair<std::string, std::uint64_t>> counters_by_name(

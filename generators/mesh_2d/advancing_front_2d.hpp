@@ -87,20 +87,10 @@ struct AdvancingFrontCounters2 {
 
 /// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
 /// per field: counter_table_complete).
-inline constexpr std::array kAdvancingFrontCounterNames{
-    counter("triangles", &AdvancingFrontCounters2::triangles),
-    counter("new_points", &AdvancingFrontCounters2::new_points),
-    counter("reused_points", &AdvancingFrontCounters2::reused_points),
-    counter("rejected_candidates", &AdvancingFrontCounters2::rejected_candidates),
-    counter("crossing_tests", &AdvancingFrontCounters2::crossing_tests),
-    counter("containment_tests", &AdvancingFrontCounters2::containment_tests),
-    counter("postponed_edges", &AdvancingFrontCounters2::postponed_edges),
-    counter("wide_searches", &AdvancingFrontCounters2::wide_searches),
-    counter("front_queries", &AdvancingFrontCounters2::front_queries),
-    counter("max_front_edges", &AdvancingFrontCounters2::max_front_edges),
-    counter("closure_runs", &AdvancingFrontCounters2::closure_runs),
-    counter("closure_triangles", &AdvancingFrontCounters2::closure_triangles),
-    counter("orient_calls", &AdvancingFrontCounters2::orient_calls)};
+inline constexpr std::array kAdvancingFrontCounterNames = EM_COUNTER_TABLE(
+    AdvancingFrontCounters2, triangles, new_points, reused_points, rejected_candidates,
+    crossing_tests, containment_tests, postponed_edges, wide_searches, front_queries,
+    max_front_edges, closure_runs, closure_triangles, orient_calls);
 static_assert(counter_table_complete(kAdvancingFrontCounterNames));
 
 struct AdvancingFrontResult2 {

@@ -73,22 +73,10 @@ struct AdvancingFrontDelaunayCounters2 {
 
 /// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
 /// per field: counter_table_complete).
-inline constexpr std::array kAdvancingFrontDelaunayCounterNames{
-    counter("triangles", &AdvancingFrontDelaunayCounters2::triangles),
-    counter("new_points", &AdvancingFrontDelaunayCounters2::new_points),
-    counter("existing_points", &AdvancingFrontDelaunayCounters2::existing_points),
-    counter("rejected_candidates", &AdvancingFrontDelaunayCounters2::rejected_candidates),
-    counter("rejected_placements", &AdvancingFrontDelaunayCounters2::rejected_placements),
-    counter("thin_skipped", &AdvancingFrontDelaunayCounters2::thin_skipped),
-    counter("postponed_edges", &AdvancingFrontDelaunayCounters2::postponed_edges),
-    counter("rounds", &AdvancingFrontDelaunayCounters2::rounds),
-    counter("widened_searches", &AdvancingFrontDelaunayCounters2::widened_searches),
-    counter("closure_triangles", &AdvancingFrontDelaunayCounters2::closure_triangles),
-    counter("closure_front_edges", &AdvancingFrontDelaunayCounters2::closure_front_edges),
-    counter("incircle_calls", &AdvancingFrontDelaunayCounters2::incircle_calls),
-    counter("orient_calls", &AdvancingFrontDelaunayCounters2::orient_calls),
-    counter("point_queries", &AdvancingFrontDelaunayCounters2::point_queries),
-    counter("edge_queries", &AdvancingFrontDelaunayCounters2::edge_queries)};
+inline constexpr std::array kAdvancingFrontDelaunayCounterNames = EM_COUNTER_TABLE(
+    AdvancingFrontDelaunayCounters2, triangles, new_points, existing_points, rejected_candidates,
+    rejected_placements, thin_skipped, postponed_edges, rounds, widened_searches, closure_triangles,
+    closure_front_edges, incircle_calls, orient_calls, point_queries, edge_queries);
 static_assert(counter_table_complete(kAdvancingFrontDelaunayCounterNames));
 
 struct AdvancingFrontDelaunayResult2 {

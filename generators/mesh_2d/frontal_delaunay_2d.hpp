@@ -81,22 +81,11 @@ struct FrontalDelaunayCounters2 {
 
 /// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
 /// per field: counter_table_complete).
-inline constexpr std::array kFrontalDelaunayCounterNames{
-    counter("boundary_points", &FrontalDelaunayCounters2::boundary_points),
-    counter("points_inserted", &FrontalDelaunayCounters2::points_inserted),
-    counter("accepted_triangles", &FrontalDelaunayCounters2::accepted_triangles),
-    counter("forced_triangles", &FrontalDelaunayCounters2::forced_triangles),
-    counter("forced_accepts", &FrontalDelaunayCounters2::forced_accepts),
-    counter("rejected_encroach", &FrontalDelaunayCounters2::rejected_encroach),
-    counter("rejected_outside", &FrontalDelaunayCounters2::rejected_outside),
-    counter("rejected_too_close", &FrontalDelaunayCounters2::rejected_too_close),
-    counter("rejected_no_conflict", &FrontalDelaunayCounters2::rejected_no_conflict),
-    counter("active_pops", &FrontalDelaunayCounters2::active_pops),
-    counter("stale_pops", &FrontalDelaunayCounters2::stale_pops),
-    counter("cavity_triangles", &FrontalDelaunayCounters2::cavity_triangles),
-    counter("closeness_incircle", &FrontalDelaunayCounters2::closeness_incircle),
-    counter("orient_calls", &FrontalDelaunayCounters2::orient_calls),
-    counter("incircle_calls", &FrontalDelaunayCounters2::incircle_calls)};
+inline constexpr std::array kFrontalDelaunayCounterNames =
+    EM_COUNTER_TABLE(FrontalDelaunayCounters2, boundary_points, points_inserted, accepted_triangles,
+                     forced_triangles, forced_accepts, rejected_encroach, rejected_outside,
+                     rejected_too_close, rejected_no_conflict, active_pops, stale_pops,
+                     cavity_triangles, closeness_incircle, orient_calls, incircle_calls);
 static_assert(counter_table_complete(kFrontalDelaunayCounterNames));
 
 struct FrontalDelaunayResult2 {

@@ -106,30 +106,12 @@ struct QuadtreeCounters2 {
 
 /// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
 /// per field: counter_table_complete).
-inline constexpr std::array kQuadtreeCounterNames{
-    counter("leaves", &QuadtreeCounters2::leaves),
-    counter("size_splits", &QuadtreeCounters2::size_splits),
-    counter("boundary_splits", &QuadtreeCounters2::boundary_splits),
-    counter("feature_splits", &QuadtreeCounters2::feature_splits),
-    counter("balance_splits", &QuadtreeCounters2::balance_splits),
-    counter("depth", &QuadtreeCounters2::depth),
-    counter("depth_limit", &QuadtreeCounters2::depth_limit),
-    counter("piece_splits", &QuadtreeCounters2::piece_splits),
-    counter("box_tests", &QuadtreeCounters2::box_tests),
-    counter("domain_queries", &QuadtreeCounters2::domain_queries),
-    counter("kept_leaves", &QuadtreeCounters2::kept_leaves),
-    counter("fan_leaves", &QuadtreeCounters2::fan_leaves),
-    counter("template_triangles", &QuadtreeCounters2::template_triangles),
-    counter("kept_components", &QuadtreeCounters2::kept_components),
-    counter("outline_edges", &QuadtreeCounters2::outline_edges),
-    counter("band_corners", &QuadtreeCounters2::band_corners),
-    counter("dropped_corners", &QuadtreeCounters2::dropped_corners),
-    counter("band_vertices", &QuadtreeCounters2::band_vertices),
-    counter("band_triangles", &QuadtreeCounters2::band_triangles),
-    counter("band_flips", &QuadtreeCounters2::band_flips),
-    counter("band_circumcenters", &QuadtreeCounters2::band_circumcenters),
-    counter("band_rejected", &QuadtreeCounters2::band_rejected),
-    counter("band_piece_splits", &QuadtreeCounters2::band_piece_splits)};
+inline constexpr std::array kQuadtreeCounterNames =
+    EM_COUNTER_TABLE(QuadtreeCounters2, leaves, size_splits, boundary_splits, feature_splits,
+                     balance_splits, depth, depth_limit, piece_splits, box_tests, domain_queries,
+                     kept_leaves, fan_leaves, template_triangles, kept_components, outline_edges,
+                     band_corners, dropped_corners, band_vertices, band_triangles, band_flips,
+                     band_circumcenters, band_rejected, band_piece_splits);
 static_assert(counter_table_complete(kQuadtreeCounterNames));
 
 struct QuadtreeResult2 {

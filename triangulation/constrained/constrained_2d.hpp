@@ -81,25 +81,11 @@ struct Cdt2Counters {
 };
 
 /// The name table of Cdt2Counters (base/counter_table.hpp): --stats prints it in this order.
-inline constexpr std::array kCdt2CounterNames = {
-    counter("points", &Cdt2Counters::points),
-    counter("duplicates", &Cdt2Counters::duplicates),
-    counter("segments", &Cdt2Counters::segments),
-    counter("dropped_segments", &Cdt2Counters::dropped_segments),
-    counter("vertices_on_segments", &Cdt2Counters::vertices_on_segments),
-    counter("intersections", &Cdt2Counters::intersections),
-    counter("bent_crossings", &Cdt2Counters::bent_crossings),
-    counter("conforming_splits", &Cdt2Counters::conforming_splits),
-    counter("conforming_bends", &Cdt2Counters::conforming_bends),
-    counter("conforming_passes", &Cdt2Counters::conforming_passes),
-    counter("crossed_edges", &Cdt2Counters::crossed_edges),
-    counter("recovery_flips", &Cdt2Counters::recovery_flips),
-    counter("cavity_triangles", &Cdt2Counters::cavity_triangles),
-    counter("delaunay_flips", &Cdt2Counters::delaunay_flips),
-    counter("removed_triangles", &Cdt2Counters::removed_triangles),
-    counter("orient_calls", &Cdt2Counters::orient_calls),
-    counter("incircle_calls", &Cdt2Counters::incircle_calls),
-    counter("walk_steps", &Cdt2Counters::walk_steps)};
+inline constexpr std::array kCdt2CounterNames = EM_COUNTER_TABLE(
+    Cdt2Counters, points, duplicates, segments, dropped_segments, vertices_on_segments,
+    intersections, bent_crossings, conforming_splits, conforming_bends, conforming_passes,
+    crossed_edges, recovery_flips, cavity_triangles, delaunay_flips, removed_triangles,
+    orient_calls, incircle_calls, walk_steps);
 static_assert(counter_table_complete(kCdt2CounterNames));
 
 struct Cdt2Result {

@@ -43,15 +43,9 @@ struct Delaunay2Counters {
 };
 
 /// The name table of Delaunay2Counters (base/counter_table.hpp): --stats prints it in this order.
-inline constexpr std::array kDelaunay2CounterNames = {
-    counter("points", &Delaunay2Counters::points),
-    counter("duplicates", &Delaunay2Counters::duplicates),
-    counter("orient_calls", &Delaunay2Counters::orient_calls),
-    counter("incircle_calls", &Delaunay2Counters::incircle_calls),
-    counter("walk_steps", &Delaunay2Counters::walk_steps),
-    counter("cavity_triangles", &Delaunay2Counters::cavity_triangles),
-    counter("flips", &Delaunay2Counters::flips),
-    counter("candidates", &Delaunay2Counters::candidates)};
+inline constexpr std::array kDelaunay2CounterNames =
+    EM_COUNTER_TABLE(Delaunay2Counters, points, duplicates, orient_calls, incircle_calls,
+                     walk_steps, cavity_triangles, flips, candidates);
 static_assert(counter_table_complete(kDelaunay2CounterNames));
 
 /// The Delaunay triangulation in the caller's vertex numbering.

@@ -46,21 +46,10 @@ struct Delaunay3Counters {
 };
 
 /// The name table of Delaunay3Counters (base/counter_table.hpp): --stats prints it in this order.
-inline constexpr std::array kDelaunay3CounterNames = {
-    counter("points", &Delaunay3Counters::points),
-    counter("duplicates", &Delaunay3Counters::duplicates),
-    counter("orient_calls", &Delaunay3Counters::orient_calls),
-    counter("insphere_calls", &Delaunay3Counters::insphere_calls),
-    counter("walk_steps", &Delaunay3Counters::walk_steps),
-    counter("cavity_tets", &Delaunay3Counters::cavity_tets),
-    counter("outside_hull", &Delaunay3Counters::outside_hull),
-    counter("splits_1_4", &Delaunay3Counters::splits_1_4),
-    counter("splits_2_6", &Delaunay3Counters::splits_2_6),
-    counter("splits_edge", &Delaunay3Counters::splits_edge),
-    counter("flips_2_3", &Delaunay3Counters::flips_2_3),
-    counter("flips_3_2", &Delaunay3Counters::flips_3_2),
-    counter("flips_4_4", &Delaunay3Counters::flips_4_4),
-    counter("unflippable", &Delaunay3Counters::unflippable)};
+inline constexpr std::array kDelaunay3CounterNames =
+    EM_COUNTER_TABLE(Delaunay3Counters, points, duplicates, orient_calls, insphere_calls,
+                     walk_steps, cavity_tets, outside_hull, splits_1_4, splits_2_6, splits_edge,
+                     flips_2_3, flips_3_2, flips_4_4, unflippable);
 static_assert(counter_table_complete(kDelaunay3CounterNames));
 
 /// The Delaunay tetrahedralization in the caller's vertex numbering. When fewer than four

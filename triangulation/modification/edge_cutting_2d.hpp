@@ -37,13 +37,9 @@ struct EdgeCuttingCounters {
 };
 
 /// The name table of EdgeCuttingCounters (base/counter_table.hpp): --stats prints it in this order.
-inline constexpr std::array kEdgeCuttingCounterNames = {
-    counter("worst_triangles", &EdgeCuttingCounters::worst_triangles),
-    counter("insertions", &EdgeCuttingCounters::insertions),
-    counter("candidates", &EdgeCuttingCounters::candidates),
-    counter("visited", &EdgeCuttingCounters::visited),
-    counter("removed_edges", &EdgeCuttingCounters::removed_edges),
-    counter("dynamic_programs", &EdgeCuttingCounters::dynamic_programs)};
+inline constexpr std::array kEdgeCuttingCounterNames =
+    EM_COUNTER_TABLE(EdgeCuttingCounters, worst_triangles, insertions, candidates, visited,
+                     removed_edges, dynamic_programs);
 static_assert(counter_table_complete(kEdgeCuttingCounterNames));
 
 /// Improves `mesh` in place to a triangulation of the same vertices and domain minimizing the

@@ -59,15 +59,9 @@ struct EdgeFaceSwapCounters {
 };
 
 /// The name table of EdgeFaceSwapCounters (base/counter_table.hpp): --stats prints it in this order.
-inline constexpr std::array kEdgeFaceSwapCounterNames = {
-    counter("faces_examined", &EdgeFaceSwapCounters::faces_examined),
-    counter("edges_examined", &EdgeFaceSwapCounters::edges_examined),
-    counter("flips_23", &EdgeFaceSwapCounters::flips_23),
-    counter("flips_32", &EdgeFaceSwapCounters::flips_32),
-    counter("flips_44", &EdgeFaceSwapCounters::flips_44),
-    counter("flips_22", &EdgeFaceSwapCounters::flips_22),
-    counter("not_flippable", &EdgeFaceSwapCounters::not_flippable),
-    counter("stalled_faces", &EdgeFaceSwapCounters::stalled_faces)};
+inline constexpr std::array kEdgeFaceSwapCounterNames =
+    EM_COUNTER_TABLE(EdgeFaceSwapCounters, faces_examined, edges_examined, flips_23, flips_32,
+                     flips_44, flips_22, not_flippable, stalled_faces);
 static_assert(counter_table_complete(kEdgeFaceSwapCounterNames));
 
 /// Swaps until no face wants a swap under `criterion`.

@@ -70,11 +70,8 @@ struct EdgeSwapCounters {
 };
 
 /// The name table of EdgeSwapCounters (base/counter_table.hpp): --stats prints it in this order.
-inline constexpr std::array kEdgeSwapCounterNames = {
-    counter("edges_tested", &EdgeSwapCounters::edges_tested),
-    counter("not_convex", &EdgeSwapCounters::not_convex),
-    counter("constrained", &EdgeSwapCounters::constrained),
-    counter("swaps", &EdgeSwapCounters::swaps)};
+inline constexpr std::array kEdgeSwapCounterNames =
+    EM_COUNTER_TABLE(EdgeSwapCounters, edges_tested, not_convex, constrained, swaps);
 static_assert(counter_table_complete(kEdgeSwapCounterNames));
 
 /// Swaps edges of `mesh` until none is swappable and preferred by the criterion.

@@ -7,10 +7,12 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 
 #include "generators/mesh_2d/advancing_front_2d.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quadtree_mesh_2d.hpp"
+#include "triangulation/delaunay/delaunay_2d.hpp"
 
 namespace gen = exactmesh::generators;
 
@@ -30,6 +32,20 @@ constexpr std::array kMissing{exactmesh::counter("first", &ThreeCounters::first)
 constexpr std::array kTwice{exactmesh::counter("first", &ThreeCounters::first),
                             exactmesh::counter("again", &ThreeCounters::first),
                             exactmesh::counter("third", &ThreeCounters::third)};
+// The same table as kAll, each name written once.
+constexpr std::array kByMacro = EM_COUNTER_TABLE(ThreeCounters, first, second, third);
+
+/// Same names, same fields (64- and 32-bit), in the same order.
+template <class Counters, std::size_t N>
+constexpr bool same_rows(const std::array<exactmesh::CounterName<Counters>, N>& a,
+                         const std::array<exactmesh::CounterName<Counters>, N>& b) {
+    for (std::size_t i = 0; i < N; ++i) {
+        if (a[i].name != b[i].name || a[i].field != b[i].field ||
+            a[i].narrow_field != b[i].narrow_field || a[i].is_derived != b[i].is_derived)
+            return false;
+    }
+    return true;
+}
 
 }  // namespace
 
@@ -70,4 +86,26 @@ TEST(CounterTable, GeneratorTablesKeepTheirNames) {
     const auto front = gen::counter_list(gen::AdvancingFrontCounters2{});
     ASSERT_EQ(front.size(), 13u);
     EXPECT_EQ(front.back().first, "orient_calls");
+}
+
+TEST(CounterTable, MacroNamesEachRowAfterItsMember) {
+    static_assert(kByMacro.size() == 3);
+    static_assert(same_rows(kByMacro, kAll));
+    static_assert(exactmesh::counter_table_complete(kByMacro));
+    const ThreeCounters c{7, 11, 13};
+    EXPECT_EQ(exactmesh::counters_by_name(kByMacro, c), exactmesh::counters_by_name(kAll, c));
+    // A table built by the macro, against the rows it was written as before.
+    namespace tri = exactmesh::triangulation;
+    using D = tri::Delaunay2Counters;
+    constexpr std::array kDelaunay2Before{
+        exactmesh::counter("points", &D::points),
+        exactmesh::counter("duplicates", &D::duplicates),
+        exactmesh::counter("orient_calls", &D::orient_calls),
+        exactmesh::counter("incircle_calls", &D::incircle_calls),
+        exactmesh::counter("walk_steps", &D::walk_steps),
+        exactmesh::counter("cavity_triangles", &D::cavity_triangles),
+        exactmesh::counter("flips", &D::flips),
+        exactmesh::counter("candidates", &D::candidates)};
+    static_assert(same_rows(tri::kDelaunay2CounterNames, kDelaunay2Before));
+    EXPECT_EQ(tri::kDelaunay2CounterNames.size(), 8u);
 }
