@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/insphere.hpp"
@@ -86,18 +87,15 @@ constexpr int dimension(Predicate p) {
     return p == Predicate::orient2d || p == Predicate::incircle ? 2 : 3;
 }
 
+constexpr std::array<exactmesh::EnumName<Predicate>, 4> kPredicateNames{{
+    {"orient2d", Predicate::orient2d},
+    {"incircle", Predicate::incircle},
+    {"orient3d", Predicate::orient3d},
+    {"insphere", Predicate::insphere},
+}};
+
 const char* name_of(Predicate p) {
-    switch (p) {
-        case Predicate::orient2d:
-            return "orient2d";
-        case Predicate::incircle:
-            return "incircle";
-        case Predicate::orient3d:
-            return "orient3d";
-        case Predicate::insphere:
-            return "insphere";
-    }
-    return "?";
+    return exactmesh::name_of(kPredicateNames, p).data();  // the names are literals
 }
 
 const char* name_of(Workload w) {

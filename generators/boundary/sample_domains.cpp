@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "base/enum_names.hpp"
 #include "base/errors.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
 
@@ -178,26 +179,20 @@ double naca_thickness(double t, double x) {
             0.1036 * x * x * x * x);
 }
 
+/// The names, in kAllSampleDomains' order (the order an unknown name's error lists them).
+constexpr std::array<EnumName<SampleDomain>, 4> kSampleDomainNames{{
+    {"square-with-holes", SampleDomain::SquareWithHoles},
+    {"naca0012", SampleDomain::Naca0012},
+    {"key", SampleDomain::Key},
+    {"three-element", SampleDomain::ThreeElement},
+}};
+
 std::string_view sample_domain_name(SampleDomain d) {
-    switch (d) {
-        case SampleDomain::SquareWithHoles:
-            return "square-with-holes";
-        case SampleDomain::Naca0012:
-            return "naca0012";
-        case SampleDomain::Key:
-            return "key";
-        case SampleDomain::ThreeElement:
-            return "three-element";
-    }
-    return "?";
+    return name_of(kSampleDomainNames, d);
 }
 
 SampleDomain sample_domain_from_name(std::string_view name) {
-    for (const SampleDomain d : kAllSampleDomains) {
-        if (sample_domain_name(d) == name) return d;
-    }
-    throw InputError("unknown domain '" + std::string(name) +
-                     "' (known: square-with-holes, naca0012, key, three-element)");
+    return parse_name(kSampleDomainNames, name, "domain");
 }
 
 SizeFunction sample_domain_size(SampleDomain d) {

@@ -11,13 +11,14 @@
 #include <optional>
 #include <string>
 
+#include "base/enum_names.hpp"
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "generators/boundary/region_areas_2d.hpp"
 #include "generators/mesh_2d/advancing_front_2d.hpp"
 #include "generators/mesh_2d/advancing_front_delaunay_2d.hpp"
 #include "generators/mesh_2d/frontal_delaunay_2d.hpp"
 #include "generators/mesh_2d/quadtree_mesh_2d.hpp"
-#include "generators/boundary/region_areas_2d.hpp"
 
 namespace exactmesh::generators {
 
@@ -309,24 +310,19 @@ constexpr std::array kGenerators{
                    &run_frontal_delaunay},
 };
 
+constexpr std::array<EnumName<MeshOption>, 6> kMeshOptionNames{{
+    {"--size", MeshOption::Size},
+    {"--min-angle", MeshOption::MinAngle},
+    {"--polish-angle", MeshOption::PolishAngle},
+    {"--max-steiner", MeshOption::MaxSteinerPoints},
+    {"regional attributes", MeshOption::RegionAttributes},
+    {"region maximum areas", MeshOption::RegionAreas},
+}};
+
 }  // namespace
 
 std::string_view mesh_option_name(MeshOption option) {
-    switch (option) {
-        case MeshOption::Size:
-            return "--size";
-        case MeshOption::MinAngle:
-            return "--min-angle";
-        case MeshOption::PolishAngle:
-            return "--polish-angle";
-        case MeshOption::MaxSteinerPoints:
-            return "--max-steiner";
-        case MeshOption::RegionAttributes:
-            return "regional attributes";
-        case MeshOption::RegionAreas:
-            return "region maximum areas";
-    }
-    return "an option";
+    return name_of(kMeshOptionNames, option, "an option");
 }
 
 std::span<const MeshGenerator2> mesh_generators_2d() {

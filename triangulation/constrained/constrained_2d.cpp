@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "base/enum_names.hpp"
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "triangulation/constrained/cdt_phases_2d.hpp"
@@ -20,24 +21,25 @@ namespace exactmesh::triangulation {
 
 using predicates::Sign;
 
+namespace {
+
+constexpr std::array<EnumName<SegmentRecovery>, 3> kSegmentRecoveryNames{{
+    {"swap", SegmentRecovery::Swap},
+    {"cavity", SegmentRecovery::Cavity},
+    {"conforming", SegmentRecovery::Conforming},
+}};
+
+}  // namespace
+
 SegmentRecovery segment_recovery_from_name(std::string_view name) {
-    if (name == "swap") return SegmentRecovery::Swap;
-    if (name == "cavity") return SegmentRecovery::Cavity;
-    if (name == "conforming") return SegmentRecovery::Conforming;
-    throw InputError("unknown segment recovery '" + std::string(name) +
-                     "' (expected swap, cavity or conforming)");
+    if (const auto recovery = find_name(kSegmentRecoveryNames, name)) return *recovery;
+    // Worded as it always was ("expected a, b or c"), unlike parse_name's "known: a, b, c".
+    throw InputError("unknown segment recovery '" + std::string(name) + "' (expected " +
+                     known_names(kSegmentRecoveryNames, " or ") + ")");
 }
 
 const char* segment_recovery_name(SegmentRecovery recovery) {
-    switch (recovery) {
-        case SegmentRecovery::Swap:
-            return "swap";
-        case SegmentRecovery::Cavity:
-            return "cavity";
-        case SegmentRecovery::Conforming:
-            return "conforming";
-    }
-    return "?";
+    return name_of(kSegmentRecoveryNames, recovery).data();  // the names are literals
 }
 
 namespace {

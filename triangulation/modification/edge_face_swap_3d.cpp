@@ -29,6 +29,7 @@
 #include <deque>
 #include <string>
 
+#include "base/enum_names.hpp"
 #include "base/errors.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/sos.hpp"
@@ -120,29 +121,21 @@ void count_flip(EdgeFaceSwapCounters& counters, FlipKind3 kind) {
     }
 }
 
+constexpr std::array<EnumName<SwapCriterion3>, 4> kSwapCriterion3Names{{
+    {"delaunay", SwapCriterion3::Delaunay},
+    {"max-min-dihedral", SwapCriterion3::MaxMinDihedral},
+    {"min-max-dihedral", SwapCriterion3::MinMaxDihedral},
+    {"volume-edge", SwapCriterion3::VolumeEdge},
+}};
+
 }  // namespace
 
 SwapCriterion3 swap_criterion_3d_from_name(std::string_view name) {
-    if (name == "delaunay") return SwapCriterion3::Delaunay;
-    if (name == "max-min-dihedral") return SwapCriterion3::MaxMinDihedral;
-    if (name == "min-max-dihedral") return SwapCriterion3::MinMaxDihedral;
-    if (name == "volume-edge") return SwapCriterion3::VolumeEdge;
-    throw InputError("unknown 3D swap criterion '" + std::string(name) +
-                     "' (known: delaunay, max-min-dihedral, min-max-dihedral, volume-edge)");
+    return parse_name(kSwapCriterion3Names, name, "3D swap criterion");
 }
 
 std::string_view swap_criterion_3d_name(SwapCriterion3 criterion) {
-    switch (criterion) {
-        case SwapCriterion3::Delaunay:
-            return "delaunay";
-        case SwapCriterion3::MaxMinDihedral:
-            return "max-min-dihedral";
-        case SwapCriterion3::MinMaxDihedral:
-            return "min-max-dihedral";
-        case SwapCriterion3::VolumeEdge:
-            return "volume-edge";
-    }
-    return "unknown";
+    return name_of(kSwapCriterion3Names, criterion, "unknown");
 }
 
 bool locally_delaunay_sos(const TetMesh3& mesh, FaceIdx f) {

@@ -53,6 +53,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/enum_names.hpp"
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
@@ -226,17 +227,18 @@ Sign sign_of_difference(std::span<const double> plus, std::span<const double> mi
     return length == 0 ? Sign::Zero : predicates::sign_of(sum[length - 1]);
 }
 
+constexpr std::array<EnumName<SwapCriterion>, 5> kSwapCriterionNames{{
+    {"delaunay", SwapCriterion::Delaunay},
+    {"max-min-angle", SwapCriterion::MaxMinAngle},
+    {"min-max-angle", SwapCriterion::MinMaxAngle},
+    {"min-length", SwapCriterion::MinTotalLength},
+    {"data-dependent", SwapCriterion::DataDependent},
+}};
+
 }  // namespace
 
 SwapCriterion swap_criterion_from_name(std::string_view name) {
-    if (name == "delaunay") return SwapCriterion::Delaunay;
-    if (name == "max-min-angle") return SwapCriterion::MaxMinAngle;
-    if (name == "min-max-angle") return SwapCriterion::MinMaxAngle;
-    if (name == "min-length") return SwapCriterion::MinTotalLength;
-    if (name == "data-dependent") return SwapCriterion::DataDependent;
-    throw InputError("unknown swap criterion '" + std::string(name) +
-                     "' (known: delaunay, max-min-angle, min-max-angle, min-length, "
-                     "data-dependent)");
+    return parse_name(kSwapCriterionNames, name, "swap criterion");
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, Delaunay) {
