@@ -26,6 +26,7 @@
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 
@@ -40,24 +41,15 @@ using exactmesh::testing::from_domain;
 using exactmesh::testing::add_loop;
 using exactmesh::testing::square_with_hole_and_slit;
 
-struct Meshed {
-    gen::AdvancingFrontResult2 result;
-    em::testing::MeshCheck check;
-    gen::QualityReport2 quality;
-};
+using Meshed = em::testing::GeneratedMesh2<gen::AdvancingFrontResult2>;
 
 Meshed mesh(const Input& in, const gen::SizeFunction& size, bool closed_loops = true,
             std::uint64_t max_triangles = 0) {
     gen::AdvancingFrontOptions2 options;
     options.size = size;
     options.max_triangles = max_triangles;
-    Meshed m{gen::advancing_front_2d(in.pslg(), options), {}, {}};
-    const tri::Cdt2Result& r = m.result.mesh;
-    m.check = em::testing::check_quality_mesh(
-        r.mesh, r.input_vertex_count, in.xy, in.segments, r.pieces,
-        [&size](double x, double y) { return size(x, y); }, closed_loops, false);
-    m.quality = gen::quality_report_2d(r.mesh.xy, r.mesh.triangles, size);
-    return m;
+    return em::testing::check_generated_mesh(gen::advancing_front_2d(in.pslg(), options), in, size,
+                                             closed_loops, false);
 }
 
 void report(const std::string& name, const Meshed& m) {

@@ -27,6 +27,7 @@
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "predicates/incircle.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 
@@ -66,10 +67,7 @@ std::uint64_t non_delaunay_edges(const tri::Triangulation2& mesh, std::uint64_t&
     return count;
 }
 
-struct Meshed {
-    gen::AdvancingFrontDelaunayResult2 result;
-    em::testing::MeshCheck check;
-    gen::QualityReport2 quality;
+struct Meshed : em::testing::GeneratedMesh2<gen::AdvancingFrontDelaunayResult2> {
     std::uint64_t non_delaunay = 0, interior_edges = 0;
 };
 
@@ -78,13 +76,10 @@ Meshed mesh(const Input& in, const gen::SizeFunction& size, bool closed_loops = 
     gen::AdvancingFrontDelaunayOptions2 options;
     options.size = size;
     options.max_new_points = max_new_points;
-    Meshed r{gen::advancing_front_delaunay_2d(in.pslg(), options), {}, {}, 0, 0};
-    const auto& m = r.result.mesh;
-    r.check = em::testing::check_quality_mesh(
-        m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces,
-        [&size](double x, double y) { return size(x, y); }, closed_loops, false);
-    r.quality = gen::quality_report_2d(m.mesh.xy, m.mesh.triangles, size);
-    r.non_delaunay = non_delaunay_edges(m.mesh, r.interior_edges);
+    Meshed r{em::testing::check_generated_mesh(gen::advancing_front_delaunay_2d(in.pslg(), options),
+                                               in, size, closed_loops, false),
+             0, 0};
+    r.non_delaunay = non_delaunay_edges(r.result.mesh.mesh, r.interior_edges);
     return r;
 }
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
@@ -34,20 +36,11 @@ using exactmesh::testing::Input;
 using exactmesh::testing::from_domain;
 using exactmesh::testing::polygon;
 
-struct Refined {
-    gen::RefinementResult2 result;
-    em::testing::MeshCheck check;
-};
+using Refined = em::testing::GeneratedMesh2<gen::RefinementResult2>;
 
 Refined refine(const Input& in, const gen::RefinementOptions2& options, bool closed_loops = true) {
-    Refined r{gen::delaunay_refinement_2d(in.pslg(), options), {}};
-    const auto& m = r.result.mesh;
-    const gen::SizeFunction& size = options.size;
-    std::function<double(double, double)> s;
-    if (size.bounded()) s = [&size](double x, double y) { return size(x, y); };
-    r.check = em::testing::check_quality_mesh(m.mesh, m.input_vertex_count, in.xy, in.segments,
-                                              m.pieces, s, closed_loops);
-    return r;
+    return em::testing::check_generated_mesh(gen::delaunay_refinement_2d(in.pslg(), options), in,
+                                             options.size, closed_loops, true);
 }
 
 Refined refine(const Input& in, double min_angle, const gen::SizeFunction& size = {},
@@ -377,27 +370,9 @@ TEST(Generators_DelaunayRefinement, RandomPslgsGiveValidMeshesOrAClearError) {
     // every run ends with a valid mesh, or with GeometryError only where the constrained
     // triangulation itself holds features at the resolution of doubles (grid-lines: a rounded
     // crossing one ulp from a lattice vertex), or InputError when nothing is enclosed.
-    std::size_t meshed = 0;
-    for (const auto d : gen::kAllPslgDistributions) {
-        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-            const gen::PslgInput p = gen::generate_pslg(d, 60, 30, seed);
-            const Input in{p.xy, p.segments, p.holes, {}};
-            gen::RefinementOptions2 options;
-            try {
-                const auto result = gen::delaunay_refinement_2d(in.pslg(), options);
-                const auto report = tri::check_constrained_delaunay_2d(
-                    result.mesh.mesh, result.mesh.input_vertex_count, in.segments,
-                    result.mesh.pieces);
-                EXPECT_TRUE(report.ok)
-                    << gen::pslg_distribution_name(d) << " seed " << seed << ": " << report.problem;
-                ++meshed;
-            } catch (const em::InputError&) {
-            } catch (const em::GeometryError& error) {
-                EXPECT_EQ(d, gen::PslgDistribution::GridLines) << seed << ": " << error.what();
-            }
-        }
-    }
-    EXPECT_GT(meshed, 10u);
+    em::testing::expect_random_pslgs_constrained_delaunay([](const Input& in) {
+        return std::optional{gen::delaunay_refinement_2d(in.pslg(), gen::RefinementOptions2{})};
+    });
 }
 
 TEST(Generators_DelaunayRefinement, UlpWideFeatureOfTheTriangulationIsBentThrough) {

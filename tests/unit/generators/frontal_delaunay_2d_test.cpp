@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 
@@ -36,11 +38,7 @@ using exactmesh::testing::Input;
 using exactmesh::testing::from_domain;
 using exactmesh::testing::polygon;
 
-struct Meshed {
-    gen::FrontalDelaunayResult2 result;
-    em::testing::MeshCheck check;
-    gen::QualityReport2 quality;
-};
+using Meshed = em::testing::GeneratedMesh2<gen::FrontalDelaunayResult2>;
 
 /// Size conformity measured over every test here: the longest edge over the size at its
 /// midpoint stays below this (boundary pieces are at most 1 by the discretization; interior
@@ -51,13 +49,8 @@ constexpr double kSizeRatioBound = 1.5;
 Meshed mesh(const Input& in, const gen::SizeFunction& size, bool closed_loops = true) {
     gen::FrontalDelaunayOptions2 options;
     options.size = size;
-    Meshed r{gen::frontal_delaunay_2d(in.pslg(), options), {}, {}};
-    const auto& m = r.result.mesh;
-    r.check = em::testing::check_quality_mesh(
-        m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces,
-        [&size](double x, double y) { return size(x, y); }, closed_loops, true);
-    r.quality = gen::quality_report_2d(m.mesh.xy, m.mesh.triangles, size);
-    return r;
+    return em::testing::check_generated_mesh(gen::frontal_delaunay_2d(in.pslg(), options), in, size,
+                                             closed_loops, true);
 }
 
 /// The counters describe the mesh: each output triangle accepted by the criterion or forced,
@@ -313,34 +306,18 @@ TEST(Generators_FrontalDelaunay, RandomPslgsGiveValidMeshesOrAClearError) {
     // angles), at a uniform size of a twentieth of their extent: every run ends with an exact
     // constrained Delaunay mesh, or InputError when nothing is enclosed, or GeometryError only
     // where the triangulation itself holds features at the resolution of doubles (grid-lines).
-    std::size_t meshed = 0;
-    for (const auto d : gen::kAllPslgDistributions) {
-        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-            const gen::PslgInput p = gen::generate_pslg(d, 60, 30, seed);
-            const Input in{p.xy, p.segments, p.holes, {}};
+    em::testing::expect_random_pslgs_constrained_delaunay(
+        [](const Input& in) -> std::optional<gen::FrontalDelaunayResult2> {
             double lo = INFINITY, hi = -INFINITY;
             for (const double v : in.xy) {
                 lo = std::min(lo, v);
                 hi = std::max(hi, v);
             }
-            if (!(hi > lo)) continue;
+            if (!(hi > lo)) return std::nullopt;
             gen::FrontalDelaunayOptions2 options;
             options.size = gen::SizeFunction::uniform((hi - lo) / 20);
-            try {
-                const auto result = gen::frontal_delaunay_2d(in.pslg(), options);
-                const auto report = tri::check_constrained_delaunay_2d(
-                    result.mesh.mesh, result.mesh.input_vertex_count, in.segments,
-                    result.mesh.pieces);
-                EXPECT_TRUE(report.ok)
-                    << gen::pslg_distribution_name(d) << " seed " << seed << ": " << report.problem;
-                ++meshed;
-            } catch (const em::InputError&) {
-            } catch (const em::GeometryError& error) {
-                EXPECT_EQ(d, gen::PslgDistribution::GridLines) << seed << ": " << error.what();
-            }
-        }
-    }
-    EXPECT_GT(meshed, 10u);
+            return gen::frontal_delaunay_2d(in.pslg(), options);
+        });
 }
 
 TEST(Generators_FrontalDelaunay, RegionsKeepTheirAttributes) {
