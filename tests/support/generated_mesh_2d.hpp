@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // A 2D generator's result checked the way every generator test checks it: check_quality_mesh
-// (mesh_checks_2d.hpp) of its mesh against the input, with edge-to-size ratios when the size is
-// bounded, and its quality report; and the random-PSLG sweep the Delaunay generators share
-// (every run a constrained Delaunay mesh, InputError, or GeometryError on grid-lines only).
-// Test support for tests/unit/generators, not a library algorithm.
+// (mesh_checks_2d.hpp) of its mesh against the input (check_mesh_of_input), with edge-to-size
+// ratios when the size is bounded, and its quality report; and the random-PSLG sweep the Delaunay
+// generators share (every run a constrained Delaunay mesh, InputError, or GeometryError on
+// grid-lines only). Test support for tests/unit/generators, not a library algorithm.
 #pragma once
 
 #include <cstdint>
@@ -32,8 +32,18 @@ struct GeneratedMesh2 {
     generators::QualityReport2 quality;
 };
 
-/// `result`, generated from `in` with `size`, checked by check_quality_mesh (`closed_loops` and
-/// `delaunay` as it takes them; size ratios only for a bounded size) and its quality reported.
+/// check_quality_mesh of a generator's mesh `m` of the input `in` (`delaunay`, `size` and
+/// `closed_loops` as it takes them).
+inline MeshCheck check_mesh_of_input(const triangulation::Cdt2Result& m, const Input& in,
+                                     bool delaunay,
+                                     const std::function<double(double, double)>& size = {},
+                                     bool closed_loops = true) {
+    return check_quality_mesh(m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces, size,
+                              closed_loops, delaunay);
+}
+
+/// `result`, generated from `in` with `size`, checked by check_mesh_of_input (size ratios only
+/// for a bounded size) and its quality reported.
 template <class Result>
 GeneratedMesh2<Result> check_generated_mesh(Result result, const Input& in,
                                             const generators::SizeFunction& size, bool closed_loops,
@@ -42,8 +52,7 @@ GeneratedMesh2<Result> check_generated_mesh(Result result, const Input& in,
     const triangulation::Cdt2Result& m = g.result.mesh;
     std::function<double(double, double)> ratio_size;
     if (size.bounded()) ratio_size = [&size](double x, double y) { return size(x, y); };
-    g.check = check_quality_mesh(m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces,
-                                 ratio_size, closed_loops, delaunay);
+    g.check = check_mesh_of_input(m, in, delaunay, ratio_size, closed_loops);
     g.quality = generators::quality_report_2d(m.mesh.xy, m.mesh.triangles, size);
     return g;
 }

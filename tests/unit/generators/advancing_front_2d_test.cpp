@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <numbers>
@@ -301,23 +302,23 @@ TEST(Generators_AdvancingFront, BadInputIsAnInputError) {
     open.xy = {0, 0, 1, 0, 1, 1};
     open.segments = {0, 1, 1, 2};
     EXPECT_THROW(gen::advancing_front_2d(open.pslg(), options), em::InputError);
-    gen::AdvancingFrontOptions2 bad = options;
-    bad.min_side_ratio = 0.4;
-    EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
-    bad = options;
-    bad.max_side_ratio = 0.5;
-    EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
-    bad = options;
-    bad.local_attempts = 0;
-    EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
-    bad = options;
-    bad.min_shape = 2;
-    EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
-    // A size that is not > 0 inside the domain.
-    bad = options;
-    bad.size = gen::SizeFunction::analytic([](double x, double) { return x < 0.5 ? 0.1 : -1.0; },
-                                           "negative on the right");
-    EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
+    // Each option out of its range, the others valid.
+    const std::function<void(gen::AdvancingFrontOptions2&)> breaks[] = {
+        [](gen::AdvancingFrontOptions2& o) { o.min_side_ratio = 0.4; },
+        [](gen::AdvancingFrontOptions2& o) { o.max_side_ratio = 0.5; },
+        [](gen::AdvancingFrontOptions2& o) { o.local_attempts = 0; },
+        [](gen::AdvancingFrontOptions2& o) { o.min_shape = 2; },
+        // A size that is not > 0 inside the domain.
+        [](gen::AdvancingFrontOptions2& o) {
+            o.size = gen::SizeFunction::analytic(
+                [](double x, double) { return x < 0.5 ? 0.1 : -1.0; }, "negative on the right");
+        },
+    };
+    for (const auto& make_bad : breaks) {
+        gen::AdvancingFrontOptions2 bad = options;
+        make_bad(bad);
+        EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
+    }
 }
 
 TEST(Generators_AdvancingFront, CounterListNamesEveryCounter) {

@@ -27,6 +27,7 @@
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "predicates/incircle.hpp"
+#include "tests/support/degenerate_pslgs_2d.hpp"
 #include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
@@ -212,8 +213,8 @@ TEST(Generators_AdvancingFrontDelaunay, DegenerateInputs) {
     std::vector<Case> cases;
     {
         // Collinear input vertices on the square's sides (split there) and on the size's grid.
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {0.25, 0, 0.5, 0, 0.75, 0, 1, 0.3, 0.5, 1});
+        Input in = em::testing::square_with_points_on_sides();
+        in.xy.insert(in.xy.end(), {0.5, 1});
         cases.push_back({"points on segments", in, 0.05});
     }
     for (const int n : {12, 64}) {
@@ -232,15 +233,8 @@ TEST(Generators_AdvancingFrontDelaunay, DegenerateInputs) {
         // whose size equals the side (four cocircular candidates for the first edge).
         cases.push_back({"square, one element per side", polygon({0, 0, 2, 0, 2, 2, 0, 2}), 2.0});
     }
-    {
-        // A tiny square hole (1e-4) in the unit square.
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        const double a = 0.3, w = 1e-4;
-        in.xy.insert(in.xy.end(), {a, a, a + w, a, a + w, a + w, a, a + w});
-        in.segments.insert(in.segments.end(), {4, 5, 5, 6, 6, 7, 7, 4});
-        in.holes = {a + w / 2, a + w / 2};
-        cases.push_back({"tiny hole", in, 0.05});
-    }
+    // A tiny square hole (1e-4) in the unit square.
+    cases.push_back({"tiny hole", em::testing::square_with_tiny_hole(), 0.05});
     {
         // A 5-degree wedge.
         const double t = 5 * std::numbers::pi / 180;

@@ -21,6 +21,7 @@
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "tests/support/degenerate_pslgs_2d.hpp"
 #include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
@@ -197,33 +198,17 @@ TEST(Generators_DelaunayRefinement, DegenerateInputs) {
     };
     std::vector<Case> cases;
     // Collinear points on the boundary (input vertices on the square's sides: split there).
-    {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {0.25, 0, 0.5, 0, 0.75, 0, 1, 0.3});
-        cases.push_back({"points on segments", in});
-    }
+    cases.push_back({"points on segments", em::testing::square_with_points_on_sides()});
     // Duplicate vertices, a duplicated segment and one given through the copies.
-    {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {1, 0, 1, 1});  // vertices 4, 5 repeat 1, 2
-        in.segments.insert(in.segments.end(), {4, 5, 0, 1});
-        cases.push_back({"duplicates", in});
-    }
+    cases.push_back({"duplicates", em::testing::square_with_duplicates()});
     // A tiny square hole (1e-4) next to a big domain, and a free vertex 1e-6 above a segment.
     {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        const double a = 0.3, w = 1e-4;
-        in.xy.insert(in.xy.end(), {a, a, a + w, a, a + w, a + w, a, a + w, 0.6, 1e-6});
-        in.segments.insert(in.segments.end(), {4, 5, 5, 6, 6, 7, 7, 4});
-        in.holes = {a + w / 2, a + w / 2};
+        Input in = em::testing::square_with_tiny_hole();
+        in.xy.insert(in.xy.end(), {0.6, 1e-6});
         cases.push_back({"tiny features", in});
     }
     // A vertex a few ulps off a skew segment's line (0, 0) - (1, 0.3).
-    {
-        Input in = polygon({0, 0, 1, 0.3, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {0.5, std::nextafter(0.15, 1.0)});
-        cases.push_back({"vertex ulps off a segment", in});
-    }
+    cases.push_back({"vertex ulps off a segment", em::testing::vertex_ulps_off_a_segment()});
     for (const Case& c : cases) {
         for (const double angle : {20.7, 28.0}) {
             const Refined r = refine(c.in, angle);

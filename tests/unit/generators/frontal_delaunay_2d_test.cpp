@@ -24,6 +24,7 @@
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "tests/support/degenerate_pslgs_2d.hpp"
 #include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
@@ -200,26 +201,10 @@ TEST(Generators_FrontalDelaunay, DegenerateInputs) {
         bool closed_loops = true;  // false: inner segments that close nothing (no even-odd test)
     };
     std::vector<Case> cases;
-    {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {0.25, 0, 0.5, 0, 0.75, 0, 1, 0.3});
-        cases.push_back({"collinear vertices on segments", in});
-    }
-    {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        const double a = 0.3, w = 1e-4;
-        in.xy.insert(in.xy.end(), {a, a, a + w, a, a + w, a + w, a, a + w});
-        in.segments.insert(in.segments.end(), {4, 5, 5, 6, 6, 7, 7, 4});
-        in.holes = {a + w / 2, a + w / 2};
-        cases.push_back({"tiny hole", in});
-    }
+    cases.push_back({"collinear vertices on segments", em::testing::square_with_points_on_sides()});
+    cases.push_back({"tiny hole", em::testing::square_with_tiny_hole()});
     // Duplicate vertices, a duplicated segment and one given through the copies.
-    {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {1, 0, 1, 1});  // vertices 4, 5 repeat 1, 2
-        in.segments.insert(in.segments.end(), {4, 5, 0, 1});
-        cases.push_back({"duplicates", in});
-    }
+    cases.push_back({"duplicates", em::testing::square_with_duplicates()});
     // Two crossing inner segments (split at their correctly rounded intersection).
     {
         Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
@@ -234,11 +219,7 @@ TEST(Generators_FrontalDelaunay, DegenerateInputs) {
     }
     cases.push_back({"triangle", polygon({0, 0, 1, 0, 0.3, 0.8})});
     // A vertex a few ulps off a skew segment's line.
-    {
-        Input in = polygon({0, 0, 1, 0.3, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {0.5, std::nextafter(0.15, 1.0)});
-        cases.push_back({"vertex ulps off a segment", in});
-    }
+    cases.push_back({"vertex ulps off a segment", em::testing::vertex_ulps_off_a_segment()});
     for (const Case& c : cases) {
         for (const double h : {0.2, 0.05}) {
             const Meshed r = mesh(c.in, gen::SizeFunction::uniform(h), c.closed_loops);
