@@ -18,6 +18,7 @@
 
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/support/fuzz_replay_2d.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 
@@ -66,9 +67,7 @@ TEST(Issue11BendChain, issue_11_bend_chain_every_generator) {
         try {
             const gen::MeshRun2 run = generator.run(in.pslg(), options);
             const tri::Cdt2Result& m = run.mesh;
-            const auto check =
-                em::testing::check_quality_mesh(m.mesh, m.input_vertex_count, in.xy, in.segments,
-                                                m.pieces, {}, true, generator.delaunay);
+            const auto check = em::testing::check_mesh_of_input(m, in, generator.delaunay);
             EXPECT_TRUE(check.ok) << check.problem;
             EXPECT_GT(m.mesh.triangle_count(), 0U);
         } catch (const std::exception& e) {

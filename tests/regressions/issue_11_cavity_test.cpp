@@ -11,24 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/canonical_triangles_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 
 namespace tri = exactmesh::triangulation;
-
-namespace {
-
-std::set<std::array<tri::VertIdx, 3>> triangles_of(const tri::Triangulation2& m) {
-    std::set<std::array<tri::VertIdx, 3>> s;
-    for (std::size_t t = 0; t < m.triangles.size(); t += 3) {
-        std::array<tri::VertIdx, 3> v{m.triangles[t], m.triangles[t + 1], m.triangles[t + 2]};
-        std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
-        s.insert(v);
-    }
-    return s;
-}
-
-}  // namespace
 
 TEST(Issue11, issue_11_cavity_dangling_piece) {
     // Segments i: vertices 2i, 2i+1 (random magnitudes 10^-225..10^212; the second input has
@@ -72,7 +59,7 @@ TEST(Issue11, issue_11_cavity_dangling_piece) {
                     r.mesh, r.input_vertex_count, segments,
                     hull ? std::span<const tri::VertIdx>{} : std::span(r.pieces));
                 EXPECT_TRUE(check.ok) << label << ": " << check.problem;
-                meshes.push_back(triangles_of(r.mesh));
+                meshes.push_back(exactmesh::testing::canonical_triangles(r.mesh.triangles));
             }
             EXPECT_TRUE(meshes[0] == meshes[1]) << "input " << i << ": swap and cavity differ";
         }

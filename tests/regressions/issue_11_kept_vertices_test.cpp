@@ -23,6 +23,7 @@
 
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "io/triangle_format.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/checks/check_conforming_2d.hpp"
@@ -45,9 +46,7 @@ void expect_kept(const Input& in, const gen::SizeFunction& size,
         options.size = size;
         const gen::MeshRun2 run = generator.run(in.pslg(), options);
         const tri::Cdt2Result& r = run.mesh;
-        const auto check =
-            em::testing::check_quality_mesh(r.mesh, r.input_vertex_count, in.xy, in.segments,
-                                            r.pieces, {}, true, generator.delaunay);
+        const auto check = em::testing::check_mesh_of_input(r, in, generator.delaunay);
         EXPECT_TRUE(check.ok) << check.problem;
         std::set<std::uint32_t> corners(r.mesh.triangles.begin(), r.mesh.triangles.end());
         for (const std::uint32_t v : inside) {

@@ -53,6 +53,16 @@ orc::ExactAngle ear_lower_bound(const std::vector<double>& xy) {
     return {};
 }
 
+/// The rounded vertices of the regular n-gon inscribed in the unit circle, from (1, 0).
+std::vector<double> points_on_unit_circle(int n) {
+    std::vector<double> xy;
+    for (int k = 0; k < n; ++k) {
+        const double t = 2 * M_PI * k / n;
+        xy.insert(xy.end(), {std::cos(t), std::sin(t)});
+    }
+    return xy;
+}
+
 void expect_optimal_in_convex_position(const std::vector<double>& xy) {
     tri::EdgeCuttingCounters counters;
     const tri::Triangulation2 cut = tri::min_max_angle_triangulation_2d(xy, &counters);
@@ -76,12 +86,7 @@ void expect_optimal_in_convex_position(const std::vector<double>& xy) {
 TEST(Regression, issue_11_min_max_400_points_on_a_circle) {
     // Every ear of the exact regular 400-gon has the angle 179.1 degrees; the rounded points
     // make the cuts succeed or fail on near-ties (139 cuts, 1534 candidates). 28 s before.
-    std::vector<double> xy;
-    for (int k = 0; k < 400; ++k) {
-        const double t = 2 * M_PI * k / 400;
-        xy.insert(xy.end(), {std::cos(t), std::sin(t)});
-    }
-    expect_optimal_in_convex_position(xy);
+    expect_optimal_in_convex_position(points_on_unit_circle(400));
 }
 
 TEST(Regression, issue_11_min_max_500_points_on_a_parabola) {
@@ -97,12 +102,7 @@ TEST(Regression, issue_11_min_max_500_points_on_a_parabola) {
 
 TEST(Regression, issue_11_min_max_3000_points_on_a_circle) {
     // Ten times past the old limit, still in about a second.
-    std::vector<double> xy;
-    for (int k = 0; k < 3000; ++k) {
-        const double t = 2 * M_PI * k / 3000;
-        xy.insert(xy.end(), {std::cos(t), std::sin(t)});
-    }
-    expect_optimal_in_convex_position(xy);
+    expect_optimal_in_convex_position(points_on_unit_circle(3000));
 }
 
 }  // namespace

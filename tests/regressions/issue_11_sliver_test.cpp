@@ -25,9 +25,6 @@
 #include "triangulation/checks/check_conforming_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 
-namespace gen = exactmesh::generators;
-namespace tri = exactmesh::triangulation;
-
 namespace {
 
 using Replay = exactmesh::testing::FuzzReplay2;

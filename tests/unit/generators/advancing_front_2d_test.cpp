@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <numbers>
@@ -26,6 +27,7 @@
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 
@@ -40,24 +42,15 @@ using exactmesh::testing::from_domain;
 using exactmesh::testing::add_loop;
 using exactmesh::testing::square_with_hole_and_slit;
 
-struct Meshed {
-    gen::AdvancingFrontResult2 result;
-    em::testing::MeshCheck check;
-    gen::QualityReport2 quality;
-};
+using Meshed = em::testing::GeneratedMesh2<gen::AdvancingFrontResult2>;
 
 Meshed mesh(const Input& in, const gen::SizeFunction& size, bool closed_loops = true,
             std::uint64_t max_triangles = 0) {
     gen::AdvancingFrontOptions2 options;
     options.size = size;
     options.max_triangles = max_triangles;
-    Meshed m{gen::advancing_front_2d(in.pslg(), options), {}, {}};
-    const tri::Cdt2Result& r = m.result.mesh;
-    m.check = em::testing::check_quality_mesh(
-        r.mesh, r.input_vertex_count, in.xy, in.segments, r.pieces,
-        [&size](double x, double y) { return size(x, y); }, closed_loops, false);
-    m.quality = gen::quality_report_2d(r.mesh.xy, r.mesh.triangles, size);
-    return m;
+    return em::testing::check_generated_mesh(gen::advancing_front_2d(in.pslg(), options), in, size,
+                                             closed_loops, false);
 }
 
 void report(const std::string& name, const Meshed& m) {
@@ -309,23 +302,23 @@ TEST(Generators_AdvancingFront, BadInputIsAnInputError) {
     open.xy = {0, 0, 1, 0, 1, 1};
     open.segments = {0, 1, 1, 2};
     EXPECT_THROW(gen::advancing_front_2d(open.pslg(), options), em::InputError);
-    gen::AdvancingFrontOptions2 bad = options;
-    bad.min_side_ratio = 0.4;
-    EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
-    bad = options;
-    bad.max_side_ratio = 0.5;
-    EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
-    bad = options;
-    bad.local_attempts = 0;
-    EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
-    bad = options;
-    bad.min_shape = 2;
-    EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
-    // A size that is not > 0 inside the domain.
-    bad = options;
-    bad.size = gen::SizeFunction::analytic([](double x, double) { return x < 0.5 ? 0.1 : -1.0; },
-                                           "negative on the right");
-    EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
+    // Each option out of its range, the others valid.
+    const std::function<void(gen::AdvancingFrontOptions2&)> breaks[] = {
+        [](gen::AdvancingFrontOptions2& o) { o.min_side_ratio = 0.4; },
+        [](gen::AdvancingFrontOptions2& o) { o.max_side_ratio = 0.5; },
+        [](gen::AdvancingFrontOptions2& o) { o.local_attempts = 0; },
+        [](gen::AdvancingFrontOptions2& o) { o.min_shape = 2; },
+        // A size that is not > 0 inside the domain.
+        [](gen::AdvancingFrontOptions2& o) {
+            o.size = gen::SizeFunction::analytic(
+                [](double x, double) { return x < 0.5 ? 0.1 : -1.0; }, "negative on the right");
+        },
+    };
+    for (const auto& make_bad : breaks) {
+        gen::AdvancingFrontOptions2 bad = options;
+        make_bad(bad);
+        EXPECT_THROW(gen::advancing_front_2d(in.pslg(), bad), em::InputError);
+    }
 }
 
 TEST(Generators_AdvancingFront, CounterListNamesEveryCounter) {

@@ -27,6 +27,8 @@
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "predicates/incircle.hpp"
+#include "tests/support/degenerate_pslgs_2d.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 
@@ -66,10 +68,7 @@ std::uint64_t non_delaunay_edges(const tri::Triangulation2& mesh, std::uint64_t&
     return count;
 }
 
-struct Meshed {
-    gen::AdvancingFrontDelaunayResult2 result;
-    em::testing::MeshCheck check;
-    gen::QualityReport2 quality;
+struct Meshed : em::testing::GeneratedMesh2<gen::AdvancingFrontDelaunayResult2> {
     std::uint64_t non_delaunay = 0, interior_edges = 0;
 };
 
@@ -78,13 +77,10 @@ Meshed mesh(const Input& in, const gen::SizeFunction& size, bool closed_loops = 
     gen::AdvancingFrontDelaunayOptions2 options;
     options.size = size;
     options.max_new_points = max_new_points;
-    Meshed r{gen::advancing_front_delaunay_2d(in.pslg(), options), {}, {}, 0, 0};
-    const auto& m = r.result.mesh;
-    r.check = em::testing::check_quality_mesh(
-        m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces,
-        [&size](double x, double y) { return size(x, y); }, closed_loops, false);
-    r.quality = gen::quality_report_2d(m.mesh.xy, m.mesh.triangles, size);
-    r.non_delaunay = non_delaunay_edges(m.mesh, r.interior_edges);
+    Meshed r{em::testing::check_generated_mesh(gen::advancing_front_delaunay_2d(in.pslg(), options),
+                                               in, size, closed_loops, false),
+             0, 0};
+    r.non_delaunay = non_delaunay_edges(r.result.mesh.mesh, r.interior_edges);
     return r;
 }
 
@@ -217,8 +213,8 @@ TEST(Generators_AdvancingFrontDelaunay, DegenerateInputs) {
     std::vector<Case> cases;
     {
         // Collinear input vertices on the square's sides (split there) and on the size's grid.
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {0.25, 0, 0.5, 0, 0.75, 0, 1, 0.3, 0.5, 1});
+        Input in = em::testing::square_with_points_on_sides();
+        in.xy.insert(in.xy.end(), {0.5, 1});
         cases.push_back({"points on segments", in, 0.05});
     }
     for (const int n : {12, 64}) {
@@ -237,15 +233,8 @@ TEST(Generators_AdvancingFrontDelaunay, DegenerateInputs) {
         // whose size equals the side (four cocircular candidates for the first edge).
         cases.push_back({"square, one element per side", polygon({0, 0, 2, 0, 2, 2, 0, 2}), 2.0});
     }
-    {
-        // A tiny square hole (1e-4) in the unit square.
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        const double a = 0.3, w = 1e-4;
-        in.xy.insert(in.xy.end(), {a, a, a + w, a, a + w, a + w, a, a + w});
-        in.segments.insert(in.segments.end(), {4, 5, 5, 6, 6, 7, 7, 4});
-        in.holes = {a + w / 2, a + w / 2};
-        cases.push_back({"tiny hole", in, 0.05});
-    }
+    // A tiny square hole (1e-4) in the unit square.
+    cases.push_back({"tiny hole", em::testing::square_with_tiny_hole(), 0.05});
     {
         // A 5-degree wedge.
         const double t = 5 * std::numbers::pi / 180;

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,8 @@
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "tests/support/degenerate_pslgs_2d.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
@@ -34,20 +37,11 @@ using exactmesh::testing::Input;
 using exactmesh::testing::from_domain;
 using exactmesh::testing::polygon;
 
-struct Refined {
-    gen::RefinementResult2 result;
-    em::testing::MeshCheck check;
-};
+using Refined = em::testing::GeneratedMesh2<gen::RefinementResult2>;
 
 Refined refine(const Input& in, const gen::RefinementOptions2& options, bool closed_loops = true) {
-    Refined r{gen::delaunay_refinement_2d(in.pslg(), options), {}};
-    const auto& m = r.result.mesh;
-    const gen::SizeFunction& size = options.size;
-    std::function<double(double, double)> s;
-    if (size.bounded()) s = [&size](double x, double y) { return size(x, y); };
-    r.check = em::testing::check_quality_mesh(m.mesh, m.input_vertex_count, in.xy, in.segments,
-                                              m.pieces, s, closed_loops);
-    return r;
+    return em::testing::check_generated_mesh(gen::delaunay_refinement_2d(in.pslg(), options), in,
+                                             options.size, closed_loops, true);
 }
 
 Refined refine(const Input& in, double min_angle, const gen::SizeFunction& size = {},
@@ -204,33 +198,17 @@ TEST(Generators_DelaunayRefinement, DegenerateInputs) {
     };
     std::vector<Case> cases;
     // Collinear points on the boundary (input vertices on the square's sides: split there).
-    {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {0.25, 0, 0.5, 0, 0.75, 0, 1, 0.3});
-        cases.push_back({"points on segments", in});
-    }
+    cases.push_back({"points on segments", em::testing::square_with_points_on_sides()});
     // Duplicate vertices, a duplicated segment and one given through the copies.
-    {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {1, 0, 1, 1});  // vertices 4, 5 repeat 1, 2
-        in.segments.insert(in.segments.end(), {4, 5, 0, 1});
-        cases.push_back({"duplicates", in});
-    }
+    cases.push_back({"duplicates", em::testing::square_with_duplicates()});
     // A tiny square hole (1e-4) next to a big domain, and a free vertex 1e-6 above a segment.
     {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        const double a = 0.3, w = 1e-4;
-        in.xy.insert(in.xy.end(), {a, a, a + w, a, a + w, a + w, a, a + w, 0.6, 1e-6});
-        in.segments.insert(in.segments.end(), {4, 5, 5, 6, 6, 7, 7, 4});
-        in.holes = {a + w / 2, a + w / 2};
+        Input in = em::testing::square_with_tiny_hole();
+        in.xy.insert(in.xy.end(), {0.6, 1e-6});
         cases.push_back({"tiny features", in});
     }
     // A vertex a few ulps off a skew segment's line (0, 0) - (1, 0.3).
-    {
-        Input in = polygon({0, 0, 1, 0.3, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {0.5, std::nextafter(0.15, 1.0)});
-        cases.push_back({"vertex ulps off a segment", in});
-    }
+    cases.push_back({"vertex ulps off a segment", em::testing::vertex_ulps_off_a_segment()});
     for (const Case& c : cases) {
         for (const double angle : {20.7, 28.0}) {
             const Refined r = refine(c.in, angle);
@@ -377,27 +355,9 @@ TEST(Generators_DelaunayRefinement, RandomPslgsGiveValidMeshesOrAClearError) {
     // every run ends with a valid mesh, or with GeometryError only where the constrained
     // triangulation itself holds features at the resolution of doubles (grid-lines: a rounded
     // crossing one ulp from a lattice vertex), or InputError when nothing is enclosed.
-    std::size_t meshed = 0;
-    for (const auto d : gen::kAllPslgDistributions) {
-        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-            const gen::PslgInput p = gen::generate_pslg(d, 60, 30, seed);
-            const Input in{p.xy, p.segments, p.holes, {}};
-            gen::RefinementOptions2 options;
-            try {
-                const auto result = gen::delaunay_refinement_2d(in.pslg(), options);
-                const auto report = tri::check_constrained_delaunay_2d(
-                    result.mesh.mesh, result.mesh.input_vertex_count, in.segments,
-                    result.mesh.pieces);
-                EXPECT_TRUE(report.ok)
-                    << gen::pslg_distribution_name(d) << " seed " << seed << ": " << report.problem;
-                ++meshed;
-            } catch (const em::InputError&) {
-            } catch (const em::GeometryError& error) {
-                EXPECT_EQ(d, gen::PslgDistribution::GridLines) << seed << ": " << error.what();
-            }
-        }
-    }
-    EXPECT_GT(meshed, 10u);
+    em::testing::expect_random_pslgs_constrained_delaunay([](const Input& in) {
+        return std::optional{gen::delaunay_refinement_2d(in.pslg(), gen::RefinementOptions2{})};
+    });
 }
 
 TEST(Generators_DelaunayRefinement, UlpWideFeatureOfTheTriangulationIsBentThrough) {

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,8 @@
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "tests/support/degenerate_pslgs_2d.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 
@@ -36,11 +39,7 @@ using exactmesh::testing::Input;
 using exactmesh::testing::from_domain;
 using exactmesh::testing::polygon;
 
-struct Meshed {
-    gen::FrontalDelaunayResult2 result;
-    em::testing::MeshCheck check;
-    gen::QualityReport2 quality;
-};
+using Meshed = em::testing::GeneratedMesh2<gen::FrontalDelaunayResult2>;
 
 /// Size conformity measured over every test here: the longest edge over the size at its
 /// midpoint stays below this (boundary pieces are at most 1 by the discretization; interior
@@ -51,13 +50,8 @@ constexpr double kSizeRatioBound = 1.5;
 Meshed mesh(const Input& in, const gen::SizeFunction& size, bool closed_loops = true) {
     gen::FrontalDelaunayOptions2 options;
     options.size = size;
-    Meshed r{gen::frontal_delaunay_2d(in.pslg(), options), {}, {}};
-    const auto& m = r.result.mesh;
-    r.check = em::testing::check_quality_mesh(
-        m.mesh, m.input_vertex_count, in.xy, in.segments, m.pieces,
-        [&size](double x, double y) { return size(x, y); }, closed_loops, true);
-    r.quality = gen::quality_report_2d(m.mesh.xy, m.mesh.triangles, size);
-    return r;
+    return em::testing::check_generated_mesh(gen::frontal_delaunay_2d(in.pslg(), options), in, size,
+                                             closed_loops, true);
 }
 
 /// The counters describe the mesh: each output triangle accepted by the criterion or forced,
@@ -207,26 +201,10 @@ TEST(Generators_FrontalDelaunay, DegenerateInputs) {
         bool closed_loops = true;  // false: inner segments that close nothing (no even-odd test)
     };
     std::vector<Case> cases;
-    {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {0.25, 0, 0.5, 0, 0.75, 0, 1, 0.3});
-        cases.push_back({"collinear vertices on segments", in});
-    }
-    {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        const double a = 0.3, w = 1e-4;
-        in.xy.insert(in.xy.end(), {a, a, a + w, a, a + w, a + w, a, a + w});
-        in.segments.insert(in.segments.end(), {4, 5, 5, 6, 6, 7, 7, 4});
-        in.holes = {a + w / 2, a + w / 2};
-        cases.push_back({"tiny hole", in});
-    }
+    cases.push_back({"collinear vertices on segments", em::testing::square_with_points_on_sides()});
+    cases.push_back({"tiny hole", em::testing::square_with_tiny_hole()});
     // Duplicate vertices, a duplicated segment and one given through the copies.
-    {
-        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {1, 0, 1, 1});  // vertices 4, 5 repeat 1, 2
-        in.segments.insert(in.segments.end(), {4, 5, 0, 1});
-        cases.push_back({"duplicates", in});
-    }
+    cases.push_back({"duplicates", em::testing::square_with_duplicates()});
     // Two crossing inner segments (split at their correctly rounded intersection).
     {
         Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
@@ -241,11 +219,7 @@ TEST(Generators_FrontalDelaunay, DegenerateInputs) {
     }
     cases.push_back({"triangle", polygon({0, 0, 1, 0, 0.3, 0.8})});
     // A vertex a few ulps off a skew segment's line.
-    {
-        Input in = polygon({0, 0, 1, 0.3, 1, 1, 0, 1});
-        in.xy.insert(in.xy.end(), {0.5, std::nextafter(0.15, 1.0)});
-        cases.push_back({"vertex ulps off a segment", in});
-    }
+    cases.push_back({"vertex ulps off a segment", em::testing::vertex_ulps_off_a_segment()});
     for (const Case& c : cases) {
         for (const double h : {0.2, 0.05}) {
             const Meshed r = mesh(c.in, gen::SizeFunction::uniform(h), c.closed_loops);
@@ -313,34 +287,18 @@ TEST(Generators_FrontalDelaunay, RandomPslgsGiveValidMeshesOrAClearError) {
     // angles), at a uniform size of a twentieth of their extent: every run ends with an exact
     // constrained Delaunay mesh, or InputError when nothing is enclosed, or GeometryError only
     // where the triangulation itself holds features at the resolution of doubles (grid-lines).
-    std::size_t meshed = 0;
-    for (const auto d : gen::kAllPslgDistributions) {
-        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-            const gen::PslgInput p = gen::generate_pslg(d, 60, 30, seed);
-            const Input in{p.xy, p.segments, p.holes, {}};
+    em::testing::expect_random_pslgs_constrained_delaunay(
+        [](const Input& in) -> std::optional<gen::FrontalDelaunayResult2> {
             double lo = INFINITY, hi = -INFINITY;
             for (const double v : in.xy) {
                 lo = std::min(lo, v);
                 hi = std::max(hi, v);
             }
-            if (!(hi > lo)) continue;
+            if (!(hi > lo)) return std::nullopt;
             gen::FrontalDelaunayOptions2 options;
             options.size = gen::SizeFunction::uniform((hi - lo) / 20);
-            try {
-                const auto result = gen::frontal_delaunay_2d(in.pslg(), options);
-                const auto report = tri::check_constrained_delaunay_2d(
-                    result.mesh.mesh, result.mesh.input_vertex_count, in.segments,
-                    result.mesh.pieces);
-                EXPECT_TRUE(report.ok)
-                    << gen::pslg_distribution_name(d) << " seed " << seed << ": " << report.problem;
-                ++meshed;
-            } catch (const em::InputError&) {
-            } catch (const em::GeometryError& error) {
-                EXPECT_EQ(d, gen::PslgDistribution::GridLines) << seed << ": " << error.what();
-            }
-        }
-    }
-    EXPECT_GT(meshed, 10u);
+            return gen::frontal_delaunay_2d(in.pslg(), options);
+        });
 }
 
 TEST(Generators_FrontalDelaunay, RegionsKeepTheirAttributes) {

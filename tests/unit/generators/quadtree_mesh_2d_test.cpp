@@ -22,6 +22,7 @@
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/quadtree_mesh_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/checks/check_conforming_2d.hpp"
@@ -44,20 +45,13 @@ using exactmesh::testing::from_domain;
 using exactmesh::testing::add_loop;
 using exactmesh::testing::square_with_hole_and_slit;
 
-struct Meshed {
-    gen::QuadtreeResult2 result;
-    em::testing::MeshCheck check;
-};
+using Meshed = em::testing::GeneratedMesh2<gen::QuadtreeResult2>;
 
 Meshed mesh(const Input& in, const gen::SizeFunction& size, bool closed_loops = true) {
     gen::QuadtreeOptions2 options;
     options.size = size;
-    Meshed m{gen::quadtree_mesh_2d(in.pslg(), options), {}};
-    const tri::Cdt2Result& r = m.result.mesh;
-    m.check = em::testing::check_quality_mesh(
-        r.mesh, r.input_vertex_count, in.xy, in.segments, r.pieces,
-        [&size](double x, double y) { return size(x, y); }, closed_loops, false);
-    return m;
+    return em::testing::check_generated_mesh(gen::quadtree_mesh_2d(in.pslg(), options), in, size,
+                                             closed_loops, false);
 }
 
 /// The checks every mesh passes; `what` names the input in failures; `min_angle` below

@@ -372,24 +372,25 @@ TEST(Generators_SizeFunction, QuadtreeErrors) {
     bad = {};
     bad.max_depth = 31;
     EXPECT_THROW(gen::SizeFunction::quadtree(field, {0, 0, 1, 1}, bad), em::InputError);
+    // The error of the quadtree of `f` over the unit square starts with `prefix`.
+    const auto expect_error = [](const gen::SizeFunction& f,
+                                 const gen::QuadtreeSizeOptions& options,
+                                 const std::string& prefix) {
+        EXPECT_EQ(error_text([&] {
+                      gen::SizeFunction::quadtree(f, {0, 0, 1, 1}, options);
+                  }).rfind(prefix, 0),
+                  0u)
+            << prefix;
+    };
     gen::QuadtreeSizeOptions shallow;
     shallow.max_depth = 4;
-    EXPECT_EQ(error_text([&] {
-                  gen::SizeFunction::quadtree(field, {0, 0, 1, 1}, shallow);
-              }).rfind("size quadtree: a cell at the maximum depth 4", 0),
-              0u);
+    expect_error(field, shallow, "size quadtree: a cell at the maximum depth 4");
     gen::QuadtreeSizeOptions few;
     few.max_leaves = 100;
-    EXPECT_EQ(error_text([&] {
-                  gen::SizeFunction::quadtree(field, {0, 0, 1, 1}, few);
-              }).rfind("size quadtree: more than 100 leaves", 0),
-              0u);
+    expect_error(field, few, "size quadtree: more than 100 leaves");
     const gen::SizeFunction hole =
         gen::SizeFunction::analytic([](double x, double) { return x - 0.5; }, "x - 0.5");
-    EXPECT_EQ(error_text([&] {
-                  gen::SizeFunction::quadtree(hole, {0, 0, 1, 1});
-              }).rfind("size quadtree: the size field is -0.5", 0),
-              0u);
+    expect_error(hole, {}, "size quadtree: the size field is -0.5");
 }
 
 // ---- smoothing ----

@@ -16,6 +16,7 @@
 
 #include "base/errors.hpp"
 #include "predicates/orient2d.hpp"
+#include "tests/support/canonical_triangles_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/checks/check_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
@@ -26,17 +27,8 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-using Triangles = std::set<std::array<tri::VertIdx, 3>>;
-
-Triangles canonical(const tri::Triangulation2& m) {
-    Triangles s;
-    for (std::size_t t = 0; t < m.triangles.size(); t += 3) {
-        std::array<tri::VertIdx, 3> a{m.triangles[t], m.triangles[t + 1], m.triangles[t + 2]};
-        std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-        s.insert(a);
-    }
-    return s;
-}
+using Triangles = exactmesh::testing::CanonicalTriangles;
+using exactmesh::testing::canonical_triangles;
 
 using exactmesh::testing::Input;
 
@@ -132,7 +124,7 @@ TEST(Constrained2d, ForcedNonDelaunayDiagonal) {
         const auto r = build(in, recovery);
         expect_valid(in, r, recovery, true, tri::segment_recovery_name(recovery));
         if (recovery != tri::SegmentRecovery::Conforming) {
-            EXPECT_EQ(canonical(r.mesh), (Triangles{{0, 1, 2}, {0, 2, 3}}));
+            EXPECT_EQ(canonical_triangles(r.mesh.triangles), (Triangles{{0, 1, 2}, {0, 2, 3}}));
         } else {
             EXPECT_GT(r.counters.conforming_splits, 0u);
         }
@@ -150,7 +142,9 @@ TEST(Constrained2d, SwapAndCavityAgreeOnRandomPslgs) {
         expect_valid(in, swap, tri::SegmentRecovery::Swap, true, label + " swap");
         expect_valid(in, cavity, tri::SegmentRecovery::Cavity, true, label + " cavity");
         expect_valid(in, conforming, tri::SegmentRecovery::Conforming, true, label + " conforming");
-        EXPECT_EQ(canonical(swap.mesh), canonical(cavity.mesh)) << label;
+        EXPECT_EQ(canonical_triangles(swap.mesh.triangles),
+                  canonical_triangles(cavity.mesh.triangles))
+            << label;
         EXPECT_EQ(swap.counters.intersections, 0u);
     }
 }
@@ -176,8 +170,8 @@ TEST(Constrained2d, CocircularGridWithSegmentsIsUnique) {
             options.remove_exterior = false;
             const auto r = tri::constrained_delaunay_2d(in.pslg(), options);
             expect_valid(in, r, recovery, true, "grid");
-            if (reference.empty()) reference = canonical(r.mesh);
-            EXPECT_EQ(canonical(r.mesh), reference);
+            if (reference.empty()) reference = canonical_triangles(r.mesh.triangles);
+            EXPECT_EQ(canonical_triangles(r.mesh.triangles), reference);
         }
     }
 }
@@ -478,9 +472,10 @@ TEST(Constrained2d, ReleasedConstraintIsMadeDelaunayAgain) {
     for (const auto recovery : kRecoveries) {
         const auto r = build(in, recovery);
         expect_valid(in, r, recovery, true, tri::segment_recovery_name(recovery));
-        if (recovery == tri::SegmentRecovery::Swap) swap_triangles = canonical(r.mesh);
+        if (recovery == tri::SegmentRecovery::Swap)
+            swap_triangles = canonical_triangles(r.mesh.triangles);
         if (recovery == tri::SegmentRecovery::Cavity) {
-            EXPECT_EQ(canonical(r.mesh), swap_triangles);
+            EXPECT_EQ(canonical_triangles(r.mesh.triangles), swap_triangles);
         }
     }
 }

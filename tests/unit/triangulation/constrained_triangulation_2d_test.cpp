@@ -16,6 +16,7 @@
 
 #include "base/errors.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
+#include "tests/support/canonical_triangles_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
@@ -25,6 +26,8 @@ namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;
 
 namespace {
+
+using exactmesh::testing::canonical_triangles;
 
 using exactmesh::testing::Input;
 
@@ -40,16 +43,6 @@ Input square_with_hole() {
 void expect_valid(const Input& in, const tri::Cdt2Result& r, const char* label) {
     const auto report = tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments, r.pieces);
     EXPECT_TRUE(report.ok) << label << ": " << report.problem;
-}
-
-std::set<std::array<tri::VertIdx, 3>> canonical(const tri::Triangulation2& m) {
-    std::set<std::array<tri::VertIdx, 3>> s;
-    for (std::size_t t = 0; t < m.triangles.size(); t += 3) {
-        std::array<tri::VertIdx, 3> a{m.triangles[t], m.triangles[t + 1], m.triangles[t + 2]};
-        std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-        s.insert(a);
-    }
-    return s;
 }
 
 double area(const tri::Triangulation2& m) {
@@ -74,7 +67,8 @@ TEST(ConstrainedTriangulation2, WithoutEditsEqualsConstrainedDelaunay) {
     // The same vertices (the box's corners are left out) and the same triangles inside the
     // domain: the box only adds exterior triangles.
     EXPECT_EQ(got.mesh.xy, expected.mesh.xy);
-    EXPECT_EQ(canonical(got.mesh), canonical(expected.mesh));
+    EXPECT_EQ(canonical_triangles(got.mesh.triangles),
+              canonical_triangles(expected.mesh.triangles));
     EXPECT_EQ(got.pieces.size(), expected.pieces.size());
     expect_valid(in, got, "no edits");
 }

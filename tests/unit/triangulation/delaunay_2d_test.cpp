@@ -14,8 +14,9 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "triangulation/delaunay/bowyer_watson_2d.hpp"
+#include "tests/support/canonical_triangles_2d.hpp"
 #include "triangulation/checks/check_2d.hpp"
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/delaunay/green_sibson_2d.hpp"
 #include "triangulation/delaunay/tanemura_merriam_2d.hpp"
 
@@ -24,18 +25,8 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-using Triangles = std::set<std::array<tri::VertIdx, 3>>;
-
-/// Triangles rotated to start at their smallest vertex: order-free comparison.
-Triangles canonical(const tri::Delaunay2Result& r) {
-    Triangles s;
-    for (std::size_t t = 0; t < r.triangles.size(); t += 3) {
-        std::array<tri::VertIdx, 3> a{r.triangles[t], r.triangles[t + 1], r.triangles[t + 2]};
-        std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-        s.insert(a);
-    }
-    return s;
-}
+using Triangles = exactmesh::testing::CanonicalTriangles;
+using exactmesh::testing::canonical_triangles;
 
 /// Every algorithm of the registry.
 const std::span<const tri::Delaunay2Algorithm> kAlgorithms = tri::delaunay_2d_algorithms();
@@ -55,7 +46,7 @@ bool has_duplicates(const std::vector<double>& xy) {
 void expect_all_agree(const std::vector<double>& xy, const std::string& label) {
     const bool duplicates = has_duplicates(xy);
     const tri::Delaunay2Result reference = tri::bowyer_watson_2d(xy, {tri::InsertionOrder::Given, 1});
-    const Triangles expected = canonical(reference);
+    const Triangles expected = canonical_triangles(reference.triangles);
     for (const tri::Delaunay2Algorithm& algorithm : kAlgorithms) {
         for (const tri::InsertionOrder order : kOrders) {
             const tri::Delaunay2Result r = algorithm.build(xy, {order, 7});
@@ -64,7 +55,8 @@ void expect_all_agree(const std::vector<double>& xy, const std::string& label) {
             ASSERT_EQ(r.triangles.size(), reference.triangles.size()) << label << " " << algorithm.name;
             ASSERT_EQ(r.merged_into, reference.merged_into) << label << " " << algorithm.name;
             if (!duplicates) {
-                ASSERT_EQ(canonical(r), expected) << label << " " << algorithm.name;
+                ASSERT_EQ(canonical_triangles(r.triangles), expected)
+                    << label << " " << algorithm.name;
             }
             // Neighbours are mutual and share the edge.
             for (std::size_t t = 0; t < r.triangles.size() / 3; ++t) {
@@ -351,7 +343,7 @@ TEST(Triangulation_Delaunay2, GridLocationGivesTheSameTriangulationWithShortWalk
             const auto walk = tri::green_sibson_2d(*xy, {order, 3, tri::PointLocation::Walk});
             const auto jump = tri::bowyer_watson_2d(*xy, {order, 3, tri::PointLocation::Grid});
             EXPECT_TRUE(tri::check_delaunay_2d(*xy, jump.triangles).ok);
-            EXPECT_EQ(canonical(walk), canonical(jump));
+            EXPECT_EQ(canonical_triangles(walk.triangles), canonical_triangles(jump.triangles));
             // Jumping keeps walks short whatever the order (a plain walk in random order
             // takes O(sqrt n) steps per point).
             EXPECT_LT(jump.counters.walk_steps, 12 * jump.counters.points);
@@ -369,7 +361,7 @@ void expect_tanemura_merriam_matches(const std::vector<double>& xy, const std::s
     const tri::CheckReport report = tri::check_delaunay_2d(xy, r.triangles);
     ASSERT_TRUE(report.ok) << label << ": " << report.problem;
     EXPECT_EQ(r.merged_into, reference.merged_into) << label;
-    EXPECT_EQ(canonical(r), canonical(reference)) << label;
+    EXPECT_EQ(canonical_triangles(r.triangles), canonical_triangles(reference.triangles)) << label;
 }
 
 }  // namespace
@@ -545,8 +537,9 @@ TEST(Triangulation_TanemuraMerriam2, NearlyCocircularAtTheSlackScaleMatchesBowye
         const tri::CheckReport report = tri::check_delaunay_2d(xy, r.triangles);
         ASSERT_TRUE(report.ok) << label << ": " << report.problem;
         // Exactly the same set, and no triangle twice.
-        EXPECT_EQ(canonical(r).size(), r.triangles.size() / 3) << label;
-        EXPECT_EQ(canonical(r), canonical(reference)) << label;
+        EXPECT_EQ(canonical_triangles(r.triangles).size(), r.triangles.size() / 3) << label;
+        EXPECT_EQ(canonical_triangles(r.triangles), canonical_triangles(reference.triangles))
+            << label;
         // Every candidate the bounds did not skip went to the exact incircle.
         EXPECT_GT(r.counters.incircle_calls, 0u) << label;
     }

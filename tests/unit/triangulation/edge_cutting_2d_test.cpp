@@ -19,6 +19,7 @@
 #include "generators/inputs/sweep_triangulation_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/oracles/triangulation_enumeration_2d.hpp"
+#include "tests/support/constrained_sides_2d.hpp"
 #include "tests/support/integer_points_2d.hpp"
 #include "tests/support/test_scale.hpp"
 #include "triangulation/delaunay/bowyer_watson_2d.hpp"
@@ -177,24 +178,11 @@ TEST(Triangulation_EdgeCutting2, LargerSetsNeverWorseThanDelaunayOrSwapping) {
 TEST(Triangulation_EdgeCutting2, ConstrainedEdgesAreKept) {
     const auto xy = em::generators::generate_points_2d(em::generators::Distribution::Uniform, 300, 7);
     tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
-    mesh.constrained.assign(mesh.triangles.size(), 0);
-    std::set<std::pair<tri::VertIdx, tri::VertIdx>> constrained;
-    for (std::size_t e = 0; e < mesh.triangles.size(); e += 11) {
-        if (mesh.neighbors[e] == tri::kNone) continue;
-        const tri::VertIdx p = mesh.triangles[e], q = mesh.triangles[3 * (e / 3) + (e % 3 + 1) % 3];
-        constrained.insert({std::min(p, q), std::max(p, q)});
-        mesh.constrained[e] = 1;
-    }
-    tri::link_neighbors_2d(mesh);
+    const auto constrained = em::testing::constrain_every_nth_side(mesh, 11);
     const orc::ExactAngle before = orc::largest_exact_angle(xy, mesh.triangles);
     const auto counters = tri::edge_cutting_2d(mesh);
     EXPECT_GT(counters.insertions, 0u);
-    std::set<std::pair<tri::VertIdx, tri::VertIdx>> present;
-    for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
-        const tri::VertIdx p = mesh.triangles[e], q = mesh.triangles[3 * (e / 3) + (e % 3 + 1) % 3];
-        if (mesh.constrained[e] != 0) present.insert({std::min(p, q), std::max(p, q)});
-    }
-    EXPECT_EQ(present, constrained);
+    EXPECT_EQ(em::testing::constrained_edges(mesh), constrained);
     EXPECT_TRUE(tri::check_topology_2d(xy, mesh.triangles).ok);
     EXPECT_LT(orc::compare_exact_angles(orc::largest_exact_angle(xy, mesh.triangles), before), 0);
 }

@@ -19,6 +19,7 @@
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
 #include "tests/support/local_delaunay_3d.hpp"
 #include "tests/support/placing_tetrahedralization_3d.hpp"
+#include "tests/support/point_sets_3d.hpp"
 #include "triangulation/checks/check_topology_3d.hpp"
 #include "triangulation/modification/edge_face_swap_3d.hpp"
 
@@ -33,32 +34,6 @@ using em::predicates::Sign;
 double test_scale() {
     const char* text = std::getenv("EXACTMESH_TEST_SCALE");
     return text == nullptr ? 1.0 : std::max(0.0, std::atof(text));
-}
-
-std::vector<double> random_points(std::uint32_t n, std::uint64_t seed, double lo = 0.0, double hi = 1.0) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> unit(lo, hi);
-    std::vector<double> xyz(3 * std::size_t{n});
-    for (double& x : xyz) x = unit(rng);
-    return xyz;
-}
-
-std::vector<double> integer_points(std::uint32_t n, std::uint64_t seed, int range) {
-    std::mt19937_64 rng(seed);
-    std::uniform_int_distribution<int> coordinate(0, range);
-    std::vector<double> xyz(3 * std::size_t{n});
-    for (double& x : xyz) x = coordinate(rng);
-    return xyz;
-}
-
-std::vector<double> cubic_grid(int side) {
-    std::vector<double> xyz;
-    for (int i = 0; i < side; ++i) {
-        for (int j = 0; j < side; ++j) {
-            for (int k = 0; k < side; ++k) xyz.insert(xyz.end(), {double(i), double(j), double(k)});
-        }
-    }
-    return xyz;
 }
 
 tri::Tetrahedralization3 from_tets(std::vector<double> xyz, std::vector<tri::VertIdx> tets) {
@@ -143,7 +118,9 @@ TEST(Triangulation_EdgeFaceSwap3, DelaunaySwappingFromPlacingReachesTheOracleUnl
     const int cases = std::max(1, static_cast<int>(60 * test_scale()));
     for (int seed = 0; seed < cases; ++seed) {
         const std::uint32_t n = 6 + static_cast<std::uint32_t>(seed % 25);
-        const std::vector<double> xyz = seed % 3 == 2 ? integer_points(n, 100 + seed, 6) : random_points(n, 100 + seed);
+        const std::vector<double> xyz = seed % 3 == 2
+                                            ? em::testing::integer_points_3d(n, 100 + seed, 6)
+                                            : em::testing::random_points_3d(n, 100 + seed);
         tri::Tetrahedralization3 mesh = em::testing::placing_tetrahedralization_3d(xyz);
         expect_valid(mesh);
         const long double before = volume6(mesh);
@@ -168,7 +145,7 @@ TEST(Triangulation_EdgeFaceSwap3, CubicGridsAreCosphericalAndCoplanarYetTerminat
     // coplanar points: the SoS insphere decides every tie, 4-4 and 2-2 swaps change coplanar
     // diagonals. Whenever the loop does not stall, the result is the oracle's (unique by SoS).
     for (int side = 2; side <= 4; ++side) {
-        const std::vector<double> xyz = cubic_grid(side);
+        const std::vector<double> xyz = em::testing::cubic_grid_3d(side);
         tri::Tetrahedralization3 mesh = em::testing::placing_tetrahedralization_3d(xyz);
         expect_valid(mesh);
         const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
@@ -364,7 +341,9 @@ TEST(Triangulation_EdgeFaceSwap3, EveryCriterionImprovesItsMeasureAndStopsWithNo
     const int cases = std::max(1, static_cast<int>(12 * test_scale()));
     for (int seed = 0; seed < cases; ++seed) {
         const std::uint32_t n = 10 + static_cast<std::uint32_t>(seed * 7 % 40);
-        std::vector<double> xyz = seed % 4 == 3 ? cubic_grid(3) : random_points(n, 700 + seed, -1.0, 1.0);
+        std::vector<double> xyz = seed % 4 == 3
+                                      ? em::testing::cubic_grid_3d(3)
+                                      : em::testing::random_points_3d(n, 700 + seed, -1.0, 1.0);
         const tri::Tetrahedralization3 start = em::testing::placing_tetrahedralization_3d(xyz);
         for (const tri::SwapCriterion3 criterion : criteria) {
             tri::Tetrahedralization3 mesh = start;

@@ -22,10 +22,12 @@
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/oracles/triangulation_enumeration_2d.hpp"
+#include "tests/support/canonical_triangles_2d.hpp"
+#include "tests/support/constrained_sides_2d.hpp"
 #include "tests/support/integer_points_2d.hpp"
 #include "tests/support/test_scale.hpp"
-#include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/checks/check_2d.hpp"
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/modification/edge_cutting_2d.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
 
@@ -35,20 +37,11 @@ namespace orc = exactmesh::oracles;
 
 namespace {
 
-using Triangles = std::set<std::array<tri::VertIdx, 3>>;
+using Triangles = exactmesh::testing::CanonicalTriangles;
+using exactmesh::testing::canonical_triangles;
 
 /// EXACTMESH_TEST_SCALE (default 1) scales the sizes of the larger cases.
 using exactmesh::testing::test_scale;
-
-Triangles canonical(std::span<const tri::VertIdx> triangles) {
-    Triangles s;
-    for (std::size_t t = 0; t < triangles.size(); t += 3) {
-        std::array<tri::VertIdx, 3> a{triangles[t], triangles[t + 1], triangles[t + 2]};
-        std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-        s.insert(a);
-    }
-    return s;
-}
 
 tri::Triangulation2 from_triangles(const std::vector<double>& xy,
                                    const std::vector<std::uint32_t>& triangles) {
@@ -90,7 +83,8 @@ void expect_sweep_swaps_to_delaunay(const std::vector<double>& xy, const std::st
     const tri::EdgeSwapCounters counters = tri::swap_edges_2d(mesh, tri::Delaunay{});
     expect_consistent(mesh);
     const tri::Delaunay2Result delaunay = tri::bowyer_watson_2d(xy);
-    ASSERT_EQ(canonical(mesh.triangles), canonical(delaunay.triangles)) << label;
+    ASSERT_EQ(canonical_triangles(mesh.triangles), canonical_triangles(delaunay.triangles))
+        << label;
     const tri::CheckReport report = tri::check_delaunay_2d(xy, mesh.triangles);
     ASSERT_TRUE(report.ok) << label << ": " << report.problem;
     EXPECT_GE(counters.edges_tested, counters.swaps) << label;
@@ -172,11 +166,11 @@ TEST(Triangulation_EdgeSwap2, DelaunayFromEveryTriangulationOfSmallSets) {
     sets.push_back({5, 0, 3, 4, 0, 5, -3, 4, -5, 0, -4, -3, 0, -5, 4, -3});    // cocircular
     std::size_t starts = 0;
     for (const auto& xy : sets) {
-        const Triangles expected = canonical(tri::bowyer_watson_2d(xy).triangles);
+        const Triangles expected = canonical_triangles(tri::bowyer_watson_2d(xy).triangles);
         orc::enumerate_triangulations_2d(xy, [&](const std::vector<std::uint32_t>& t) {
             tri::Triangulation2 mesh = from_triangles(xy, t);
             tri::swap_edges_2d(mesh, tri::Delaunay{});
-            ASSERT_EQ(canonical(mesh.triangles), expected);
+            ASSERT_EQ(canonical_triangles(mesh.triangles), expected);
             ++starts;
         });
     }
@@ -194,7 +188,8 @@ TEST(Triangulation_EdgeSwap2, MaxMinAngleReachesDelaunayInGeneralPosition) {
         const auto counters = tri::swap_edges_2d(mesh, tri::MaxMinAngle{});
         expect_consistent(mesh);
         EXPECT_GT(counters.swaps, 0u);
-        EXPECT_EQ(canonical(mesh.triangles), canonical(tri::bowyer_watson_2d(xy).triangles));
+        EXPECT_EQ(canonical_triangles(mesh.triangles),
+                  canonical_triangles(tri::bowyer_watson_2d(xy).triangles));
         EXPECT_GE(orc::compare_exact_angles(smallest_exact_angle(xy, mesh.triangles), before), 0);
     }
 }
@@ -258,7 +253,7 @@ TEST(Triangulation_EdgeSwap2, DataDependentHandExamples) {
     const auto counters =
         tri::swap_edges_2d(mesh, tri::DataDependent{values, tri::DataCost::AngleBetweenNormals});
     EXPECT_EQ(counters.swaps, 1u);
-    EXPECT_EQ(canonical(mesh.triangles), (Triangles{{0, 1, 2}, {0, 2, 3}}));
+    EXPECT_EQ(canonical_triangles(mesh.triangles), (Triangles{{0, 1, 2}, {0, 2, 3}}));
     // Linear data on integer points: every gradient is computed exactly (integer numerators
     // and an exact quotient), every cost is exactly zero, nothing improves, nothing swaps.
     std::mt19937_64 rng(3);
@@ -313,24 +308,11 @@ TEST(Triangulation_EdgeSwap2, ConstrainedEdgesAreNeverSwapped) {
         const auto xy = uniform(500, seed);
         tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
         // Constrain every 7th interior edge of the sweep (long, thin: most would be swapped).
-        mesh.constrained.assign(mesh.triangles.size(), 0);
-        std::set<std::pair<tri::VertIdx, tri::VertIdx>> constrained;
-        for (std::size_t e = 0; e < mesh.triangles.size(); e += 7) {
-            if (mesh.neighbors[e] == tri::kNone) continue;
-            const tri::VertIdx p = mesh.triangles[e], q = mesh.triangles[3 * (e / 3) + (e % 3 + 1) % 3];
-            constrained.insert({std::min(p, q), std::max(p, q)});
-            mesh.constrained[e] = 1;
-        }
-        tri::link_neighbors_2d(mesh);  // marks the twin sides too
+        const auto constrained = em::testing::constrain_every_nth_side(mesh, 7);
         const auto counters = tri::swap_edges_2d(mesh, tri::Delaunay{});
         expect_consistent(mesh);
         EXPECT_GT(counters.swaps, 0u);
-        std::set<std::pair<tri::VertIdx, tri::VertIdx>> present;
-        for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
-            const tri::VertIdx p = mesh.triangles[e], q = mesh.triangles[3 * (e / 3) + (e % 3 + 1) % 3];
-            if (mesh.constrained[e] != 0) present.insert({std::min(p, q), std::max(p, q)});
-        }
-        EXPECT_EQ(present, constrained);
+        EXPECT_EQ(em::testing::constrained_edges(mesh), constrained);
         // Every unconstrained interior edge is now locally Delaunay (or not flippable).
         for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
             if (mesh.neighbors[e] == tri::kNone || mesh.constrained[e] != 0) continue;

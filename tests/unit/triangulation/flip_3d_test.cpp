@@ -164,6 +164,15 @@ bool holds(const tri::TetMesh3& mesh, TetIdx t, VertIdx v) {
     return mesh.slot_of(t, v) < 4;
 }
 
+/// The last of the tetrahedra 0 .. count-1 holding both a and b (kNone if none does).
+TetIdx last_tet_holding(const tri::TetMesh3& mesh, TetIdx count, VertIdx a, VertIdx b) {
+    TetIdx t = kNone;
+    for (TetIdx u = 0; u < count; ++u) {
+        if (holds(mesh, u, a) && holds(mesh, u, b)) t = u;
+    }
+    return t;
+}
+
 /// Tetrahedron (0,0,0), (4,0,0), (0,4,0), (0,0,4) and, when asked, its mirror (4,4,4) across
 /// the face x + y + z = 4.
 std::vector<double> corner_points() {
@@ -289,10 +298,7 @@ TEST(Triangulation_Flip3, Star32RemovesTheEdge) {
     tri::TetMesh3 mesh = three_two_mesh();
     // t = (x, y, z, d) seen from d = 3: t2 across the face opposite d, t3 across the face
     // opposite z.
-    TetIdx t = kNone;
-    for (TetIdx u = 0; u < 3; ++u) {
-        if (holds(mesh, u, 2) && holds(mesh, u, 3)) t = u;
-    }
+    const TetIdx t = last_tet_holding(mesh, 3, 2, 3);
     ASSERT_NE(t, kNone);
     tri::TetStar3 star;
     expect_rewrite(mesh, 2,
@@ -305,10 +311,7 @@ TEST(Triangulation_Flip3, Star32RemovesTheEdge) {
 TEST(Triangulation_Flip3, Planned32RemovesTheEdge) {
     tri::TetMesh3 mesh = three_two_mesh();
     // The face (x, y, z) between the tetrahedra holding z: de passes beyond edge xy.
-    TetIdx t = kNone;
-    for (TetIdx u = 0; u < 3; ++u) {
-        if (holds(mesh, u, 2) && holds(mesh, u, 3)) t = u;
-    }
+    const TetIdx t = last_tet_holding(mesh, 3, 2, 3);
     ASSERT_NE(t, kNone);
     tri::FlipPlan3 plan;
     std::uint64_t edges = 0;
@@ -334,10 +337,7 @@ tri::TetMesh3 octahedron(bool half) {
 TEST(Triangulation_Flip3, Star44TurnsTheFlatEdge) {
     tri::TetMesh3 mesh = octahedron(false);
     // t = (x, y, d, z) seen from d = 2; j = z's slot (the face xyd leads to xywd).
-    TetIdx t = kNone;
-    for (TetIdx u = 0; u < 4; ++u) {
-        if (holds(mesh, u, 2) && holds(mesh, u, 4)) t = u;
-    }
+    const TetIdx t = last_tet_holding(mesh, 4, 2, 4);
     ASSERT_NE(t, kNone);
     tri::TetStar3 star;
     expect_rewrite(mesh, 4,
@@ -350,10 +350,7 @@ TEST(Triangulation_Flip3, Star44TurnsTheFlatEdge) {
 TEST(Triangulation_Flip3, Planned44And22TurnTheFlatEdge) {
     for (const bool half : {false, true}) {
         tri::TetMesh3 mesh = octahedron(half);
-        TetIdx t = kNone;
-        for (TetIdx u = 0; u < mesh.tet_slots(); ++u) {
-            if (holds(mesh, u, 2) && holds(mesh, u, 4)) t = u;
-        }
+        const TetIdx t = last_tet_holding(mesh, mesh.tet_slots(), 2, 4);
         ASSERT_NE(t, kNone);
         tri::FlipPlan3 plan;
         // The face (x, y, z) between xydz and xyze.

@@ -13,6 +13,7 @@
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
 #include "tests/support/local_delaunay_3d.hpp"
 #include "tests/support/placing_tetrahedralization_3d.hpp"
+#include "tests/support/point_sets_3d.hpp"
 #include "triangulation/checks/check_topology_3d.hpp"
 #include "triangulation/modification/edge_face_swap_3d.hpp"
 #include "triangulation/modification/vertex_removal_3d.hpp"
@@ -26,24 +27,6 @@ namespace {
 double test_scale() {
     const char* text = std::getenv("EXACTMESH_TEST_SCALE");
     return text == nullptr ? 1.0 : std::max(0.0, std::atof(text));
-}
-
-std::vector<double> random_points(std::uint32_t n, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::vector<double> xyz(3 * std::size_t{n});
-    for (double& x : xyz) x = unit(rng);
-    return xyz;
-}
-
-std::vector<double> cubic_grid(int side) {
-    std::vector<double> xyz;
-    for (int i = 0; i < side; ++i) {
-        for (int j = 0; j < side; ++j) {
-            for (int k = 0; k < side; ++k) xyz.insert(xyz.end(), {double(i), double(j), double(k)});
-        }
-    }
-    return xyz;
 }
 
 /// The Delaunay tetrahedralization by swapping from the placing start, checked against the
@@ -91,7 +74,8 @@ TEST(Triangulation_VertexRemoval3, RemovingFromDelaunayGivesTheDelaunayOfTheRest
     tri::VertexRemovalCounters counters;
     int meshes = 0;
     for (int seed = 0; seed < cases; ++seed) {
-        const std::vector<double> xyz = random_points(14 + static_cast<std::uint32_t>(seed % 16), 900 + seed);
+        const std::vector<double> xyz =
+            em::testing::random_points_3d(14 + static_cast<std::uint32_t>(seed % 16), 900 + seed);
         tri::TetMesh3 mesh;
         if (!delaunay_by_swapping(xyz, mesh)) continue;
         ++meshes;
@@ -122,7 +106,7 @@ TEST(Triangulation_VertexRemoval3, RemovingFromDelaunayGivesTheDelaunayOfTheRest
 
 TEST(Triangulation_VertexRemoval3, CubicGridDerefinementStaysDelaunayWithTies) {
     // Grid points: cospherical cubes and coplanar stars; SoS decides, the oracle agrees.
-    const std::vector<double> xyz = cubic_grid(4);
+    const std::vector<double> xyz = em::testing::cubic_grid_3d(4);
     tri::TetMesh3 mesh;
     ASSERT_TRUE(delaunay_by_swapping(xyz, mesh));
     tri::VertexRemovalCounters counters;
@@ -138,7 +122,7 @@ TEST(Triangulation_VertexRemoval3, CubicGridDerefinementStaysDelaunayWithTies) {
     }
     EXPECT_EQ(counters.removed, 8u);
     // The 3 x 3 x 3 grid's center, against the oracle itself.
-    const std::vector<double> small = cubic_grid(3);
+    const std::vector<double> small = em::testing::cubic_grid_3d(3);
     tri::TetMesh3 center;
     ASSERT_TRUE(delaunay_by_swapping(small, center));
     tri::remove_vertex_3d(center, 13, &counters);
@@ -151,7 +135,7 @@ TEST(Triangulation_VertexRemoval3, CubicGridDerefinementStaysDelaunayWithTies) {
 }
 
 TEST(Triangulation_VertexRemoval3, BoundaryAndUnusedVerticesAreRefusedAndTheMeshKept) {
-    const std::vector<double> xyz = random_points(20, 5);
+    const std::vector<double> xyz = em::testing::random_points_3d(20, 5);
     tri::TetMesh3 mesh;
     ASSERT_TRUE(delaunay_by_swapping(xyz, mesh));
     const auto before = orc::tet_set(tri::to_tetrahedralization_3d(mesh).tets);
@@ -181,7 +165,7 @@ TEST(Triangulation_VertexRemoval3, NonDelaunayStarsEitherCloseValidlyOrAreRefuse
     int removed = 0, refused = 0;
     const int cases = std::max(1, static_cast<int>(20 * test_scale()));
     for (int seed = 0; seed < cases; ++seed) {
-        const std::vector<double> xyz = random_points(30, 300 + seed);
+        const std::vector<double> xyz = em::testing::random_points_3d(30, 300 + seed);
         tri::TetMesh3 mesh = tri::make_tet_mesh_3d(em::testing::placing_tetrahedralization_3d(xyz));
         for (const tri::VertIdx v : interior_vertices(mesh)) {
             const auto before = orc::tet_set(tri::to_tetrahedralization_3d(mesh).tets);
@@ -202,7 +186,7 @@ TEST(Triangulation_VertexRemoval3, NonDelaunayStarsEitherCloseValidlyOrAreRefuse
 }
 
 TEST(Triangulation_VertexRemoval3, DerefinementOfAListOverATetrahedralization) {
-    const std::vector<double> xyz = random_points(40, 77);
+    const std::vector<double> xyz = em::testing::random_points_3d(40, 77);
     tri::TetMesh3 work;
     ASSERT_TRUE(delaunay_by_swapping(xyz, work));
     std::vector<tri::VertIdx> inner = interior_vertices(work);
