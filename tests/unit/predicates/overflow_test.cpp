@@ -23,6 +23,8 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/sos.hpp"
+#include "tests/support/predicate_calls.hpp"
+#include "tests/support/uniform_draws.hpp"
 
 namespace pr = exactmesh::predicates;
 using pr::Sign;
@@ -45,41 +47,33 @@ struct Predicate {
     double (*fast)(const double*);
 };
 
-const Predicate kOrient2d{"orient2d",
-                          3,
-                          2,
-                          [](const double* x) { return pr::orient2d(x, x + 2, x + 4); },
-                          [](const double* x) { return pr::orient2d_exact(x, x + 2, x + 4); },
-                          [](const double* x) { return pr::orient2d_filter(x, x + 2, x + 4); },
-                          [](const double* x) { return pr::reference::orient2d(x, x + 2, x + 4); },
-                          [](const double* x) { return pr::orient2d_fast(x, x + 2, x + 4); }};
-const Predicate kIncircle{
-    "incircle",
-    4,
-    2,
-    [](const double* x) { return pr::incircle(x, x + 2, x + 4, x + 6); },
-    [](const double* x) { return pr::incircle_exact(x, x + 2, x + 4, x + 6); },
-    [](const double* x) { return pr::incircle_filter(x, x + 2, x + 4, x + 6); },
-    [](const double* x) { return pr::reference::incircle(x, x + 2, x + 4, x + 6); },
-    [](const double* x) { return pr::incircle_fast(x, x + 2, x + 4, x + 6); }};
-const Predicate kOrient3d{
-    "orient3d",
-    4,
-    3,
-    [](const double* x) { return pr::orient3d(x, x + 3, x + 6, x + 9); },
-    [](const double* x) { return pr::orient3d_exact(x, x + 3, x + 6, x + 9); },
-    [](const double* x) { return pr::orient3d_filter(x, x + 3, x + 6, x + 9); },
-    [](const double* x) { return pr::reference::orient3d(x, x + 3, x + 6, x + 9); },
-    [](const double* x) { return pr::orient3d_fast(x, x + 3, x + 6, x + 9); }};
-const Predicate kInsphere{
-    "insphere",
-    5,
-    3,
-    [](const double* x) { return pr::insphere(x, x + 3, x + 6, x + 9, x + 12); },
-    [](const double* x) { return pr::insphere_exact(x, x + 3, x + 6, x + 9, x + 12); },
-    [](const double* x) { return pr::insphere_filter(x, x + 3, x + 6, x + 9, x + 12); },
-    [](const double* x) { return pr::reference::insphere(x, x + 3, x + 6, x + 9, x + 12); },
-    [](const double* x) { return pr::insphere_fast(x, x + 3, x + 6, x + 9, x + 12); }};
+/// The Predicate of N points in D dimensions with these stages.
+template <std::size_t N, std::size_t D, auto Adaptive, auto Exact, auto Filter, auto Reference,
+          auto Fast>
+Predicate make_predicate(const char* name) {
+    using exactmesh::testing::call_on_flat;
+    return {name,
+            N,
+            D,
+            [](const double* x) { return call_on_flat<N, D>(Adaptive, x); },
+            [](const double* x) { return call_on_flat<N, D>(Exact, x); },
+            [](const double* x) { return call_on_flat<N, D>(Filter, x); },
+            [](const double* x) { return call_on_flat<N, D>(Reference, x); },
+            [](const double* x) { return call_on_flat<N, D>(Fast, x); }};
+}
+
+const Predicate kOrient2d =
+    make_predicate<3, 2, &pr::orient2d, &pr::orient2d_exact, &pr::orient2d_filter,
+                   &pr::reference::orient2d, &pr::orient2d_fast>("orient2d");
+const Predicate kIncircle =
+    make_predicate<4, 2, &pr::incircle, &pr::incircle_exact, &pr::incircle_filter,
+                   &pr::reference::incircle, &pr::incircle_fast>("incircle");
+const Predicate kOrient3d =
+    make_predicate<4, 3, &pr::orient3d, &pr::orient3d_exact, &pr::orient3d_filter,
+                   &pr::reference::orient3d, &pr::orient3d_fast>("orient3d");
+const Predicate kInsphere =
+    make_predicate<5, 3, &pr::insphere, &pr::insphere_exact, &pr::insphere_filter,
+                   &pr::reference::insphere, &pr::insphere_fast>("insphere");
 
 const std::array<const Predicate*, 4> kAll = {&kOrient2d, &kIncircle, &kOrient3d, &kInsphere};
 
@@ -124,13 +118,8 @@ struct Checker {
     }
 };
 
-double uniform(Rng& rng, double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-int uniform_int(Rng& rng, int lo, int hi) {
-    return std::uniform_int_distribution<int>(lo, hi)(rng);
-}
+using exactmesh::testing::uniform;
+using exactmesh::testing::uniform_int;
 
 double random_sign(Rng& rng, double x) {
     return (rng() & 1u) != 0u ? x : -x;
@@ -190,6 +179,24 @@ std::vector<double> scale(std::vector<double> x, int k) {
     return x;
 }
 
+/// Moves one random coordinate of x by one ulp, up or down.
+void nudge_one_coordinate(std::vector<double>& x, Rng& rng, bool up) {
+    double& v = x[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(x.size()) - 1))];
+    v = std::nextafter(v, up ? kInf : -kInf);
+}
+
+/// 600 exactly degenerate tuples of p, each scaled by 2^exponent(), then one coordinate of it
+/// moved by an ulp (up on odd cases).
+template <class Exponent>
+void check_scaled_degenerate(Checker& checker, const Predicate& p, Rng& rng, Exponent exponent) {
+    for (int c = 0; c < 600; ++c) {
+        std::vector<double> x = scale(degenerate_tuple(p, rng), exponent());
+        checker.check(p, x);
+        nudge_one_coordinate(x, rng, (c % 2) != 0);
+        checker.check(p, x);
+    }
+}
+
 }  // namespace
 
 TEST(Predicates_Overflow, HugeCoordinatesWhoseProductsOverflowGetExactSigns) {
@@ -208,13 +215,7 @@ TEST(Predicates_Overflow, HugeCoordinatesWhoseProductsOverflowGetExactSigns) {
             checker.check(*p, x);
         }
         // Exactly degenerate tuples scaled to the top of the range, and 1-ulp perturbations.
-        for (int c = 0; c < 600; ++c) {
-            std::vector<double> x = scale(degenerate_tuple(*p, rng), uniform_int(rng, 530, 1017));
-            checker.check(*p, x);
-            double& v = x[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(n) - 1))];
-            v = std::nextafter(v, (c % 2) != 0 ? kInf : -kInf);
-            checker.check(*p, x);
-        }
+        check_scaled_degenerate(checker, *p, rng, [&] { return uniform_int(rng, 530, 1017); });
         EXPECT_GT(checker.zeros, 500) << p->name;
         EXPECT_GT(checker.fast_wrong, 1000) << p->name << ": the plain double baseline overflows";
         checker.expect_clean(p->name);
@@ -286,13 +287,7 @@ TEST(Predicates_Overflow, TinyAndSubnormalCoordinatesWhoseProductsUnderflowGetEx
             }
             checker.check(*p, x);
         }
-        for (int c = 0; c < 600; ++c) {
-            std::vector<double> x = scale(degenerate_tuple(*p, rng), -uniform_int(rng, 540, 1074));
-            checker.check(*p, x);
-            double& v = x[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(n) - 1))];
-            v = std::nextafter(v, (c % 2) != 0 ? kInf : -kInf);
-            checker.check(*p, x);
-        }
+        check_scaled_degenerate(checker, *p, rng, [&] { return -uniform_int(rng, 540, 1074); });
         // Tiny but nondegenerate: the double evaluation underflows to zero or loses the sign.
         EXPECT_GT(checker.fast_wrong, 200) << p->name;
         EXPECT_GT(checker.zeros, 200) << p->name;
@@ -351,8 +346,7 @@ TEST(Predicates_Overflow, ScalingByAPowerOfTwoKeepsEverySign) {
                 for (double& v : x) v = uniform(rng, -1.0, 1.0);
                 if (c % 3 == 2) {  // one coordinate nudged off an exact degeneracy
                     x = degenerate_tuple(*p, rng);
-                    double& v = x[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(n) - 1))];
-                    v = std::nextafter(v, (c % 2) != 0 ? kInf : -kInf);
+                    nudge_one_coordinate(x, rng, (c % 2) != 0);
                 }
             }
             const Sign at_one = p->reference(x.data());
