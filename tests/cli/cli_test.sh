@@ -105,21 +105,29 @@ output_formats() {
   [[ ! -e "$work/kite.off" ]] || fail "kite.off written despite the error"
 }
 
-stats() {
-  run 0 triangulate "$data/square_with_center.node" -o "$work/s.ele" --stats || return
+# expect_stats <points> <predicate> <counters...>: the --stats output in $work/out has a
+# 'construct_seconds: T' line, a 'name: N' line for each counter, 'points: <points>', the stage
+# counters of <predicate> (or 'compiled out'), and only 'name: value' lines.
+expect_stats() {
+  local points=$1 predicate=$2 name
+  shift 2
   grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" ||
     fail "--stats: no 'construct_seconds: T' line: $(cat "$work/out")"
-  local name
-  for name in points duplicates orient_calls incircle_calls walk_steps cavity_triangles flips candidates; do
+  for name in "$@"; do
     grep -Eq "^$name: [0-9]+$" "$work/out" || fail "--stats: no '$name: N' line"
   done
-  grep -q '^points: 5$' "$work/out" || fail "--stats: points is not 5"
-  grep -Eq '^(orient2d\.calls: [0-9]+|predicate_stages: compiled out.*)$' "$work/out" ||
-    fail "--stats: neither predicate stage counters nor 'compiled out'"
-  # Every stdout line is "name: value".
+  grep -q "^points: $points\$" "$work/out" || fail "--stats: points is not $points"
+  grep -Eq "^($predicate\\.calls: [0-9]+|predicate_stages: compiled out.*)\$" "$work/out" ||
+    fail "--stats: neither $predicate stage counters nor 'compiled out'"
   if grep -Ev '^[a-z0-9_.]+: ' "$work/out" | grep -q .; then
     fail "--stats: a line is not 'name: value': $(grep -Ev '^[a-z0-9_.]+: ' "$work/out")"
   fi
+}
+
+stats() {
+  run 0 triangulate "$data/square_with_center.node" -o "$work/s.ele" --stats || return
+  expect_stats 5 orient2d points duplicates orient_calls incircle_calls walk_steps cavity_triangles \
+    flips candidates
   run 0 triangulate "$data/duplicates.node" -o "$work/d.ele" --stats --algorithm green-sibson &&
     grep -q '^duplicates: 2$' "$work/out" || fail "--stats: duplicates is not 2"
 }
@@ -574,19 +582,8 @@ tetrahedralize_formats() {
 
 tetrahedralize_stats() {
   run 0 tetrahedralize "$data/cube_center.node" -o "$work/s.ele" --stats --algorithm green-sibson || return
-  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" ||
-    fail "--stats: no 'construct_seconds: T' line: $(cat "$work/out")"
-  local name
-  for name in points duplicates orient_calls insphere_calls walk_steps cavity_tets outside_hull splits_1_4 \
-    splits_2_6 splits_edge flips_2_3 flips_3_2 flips_4_4 unflippable; do
-    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "--stats: no '$name: N' line"
-  done
-  grep -q '^points: 9$' "$work/out" || fail "--stats: points is not 9"
-  grep -Eq '^(orient3d\.calls: [0-9]+|predicate_stages: compiled out.*)$' "$work/out" ||
-    fail "--stats: neither orient3d stage counters nor 'compiled out'"
-  if grep -Ev '^[a-z0-9_.]+: ' "$work/out" | grep -q .; then
-    fail "--stats: a line is not 'name: value': $(grep -Ev '^[a-z0-9_.]+: ' "$work/out")"
-  fi
+  expect_stats 9 orient3d points duplicates orient_calls insphere_calls walk_steps cavity_tets \
+    outside_hull splits_1_4 splits_2_6 splits_edge flips_2_3 flips_3_2 flips_4_4 unflippable
   # Duplicates are merged into their first copy and counted.
   printf '6 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 1 0 0\n5 -0 0 0\n' >"$work/dup.node"
   run 0 tetrahedralize "$work/dup.node" -o "$work/dup.ele" --stats && grep -q '^duplicates: 2$' "$work/out" ||
