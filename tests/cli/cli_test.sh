@@ -88,13 +88,23 @@ triangulate_all_algorithms() {
     fail "square_with_center.neigh: expected 4 hull sides"
 }
 
+# expect_msh <file.msh> <block regex> <what>: a Gmsh 4.1 ASCII file with the element block.
+expect_msh() {
+  [[ $(head -n2 "$1" | tail -n1) == "4.1 0 8" ]] || fail "msh header"
+  grep -q "$2" "$1" || fail "msh: $3"
+}
+
+# expect_vtu <file.vtu> <counts>: a closed VTK XML file whose piece has these counts.
+expect_vtu() {
+  grep -q "$2" "$1" || fail "vtu counts"
+  grep -q '</VTKFile>' "$1" || fail "vtu not closed"
+}
+
 output_formats() {
   run 0 triangulate "$data/square_with_center.node" -o "$work/square.msh" || return
-  [[ $(head -n2 "$work/square.msh" | tail -n1) == "4.1 0 8" ]] || fail "msh header"
-  grep -q '^2 1 2 4$' "$work/square.msh" || fail "msh: no block of 4 triangles (type 2)"
+  expect_msh "$work/square.msh" '^2 1 2 4$' "no block of 4 triangles (type 2)"
   run 0 triangulate "$data/one_based_comments.node" -o "$work/ob.vtu" --algorithm green-sibson
-  grep -q 'NumberOfPoints="6" NumberOfCells="6"' "$work/ob.vtu" || fail "vtu counts"
-  grep -q '</VTKFile>' "$work/ob.vtu" || fail "vtu not closed"
+  expect_vtu "$work/ob.vtu" 'NumberOfPoints="6" NumberOfCells="6"'
   run 0 triangulate "$data/duplicates.node" -o "$work/dup.svg" --algorithm tanemura-merriam
   grep -q '<svg xmlns="http://www.w3.org/2000/svg"' "$work/dup.svg" || fail "svg header"
   grep -q '</svg>' "$work/dup.svg" || fail "svg not closed"
@@ -566,11 +576,9 @@ tetrahedralize_all() {
 
 tetrahedralize_formats() {
   run 0 tetrahedralize "$data/cube_center.node" -o "$work/cube.msh" || return
-  [[ $(head -n2 "$work/cube.msh" | tail -n1) == "4.1 0 8" ]] || fail "msh header"
-  grep -q '^3 1 4 12$' "$work/cube.msh" || fail "msh: no block of 12 tetrahedra (type 4) in a volume"
+  expect_msh "$work/cube.msh" '^3 1 4 12$' "no block of 12 tetrahedra (type 4) in a volume"
   run 0 tetrahedralize "$data/cube_center.node" -o "$work/cube.vtu" --algorithm green-sibson
-  grep -q 'NumberOfPoints="9" NumberOfCells="12"' "$work/cube.vtu" || fail "vtu counts"
-  grep -q '</VTKFile>' "$work/cube.vtu" || fail "vtu not closed"
+  expect_vtu "$work/cube.vtu" 'NumberOfPoints="9" NumberOfCells="12"'
   expect_error 2 'svg pictures are 2D only' tetrahedralize "$data/cube_center.node" -o "$work/cube.svg"
   [[ ! -e "$work/cube.svg" ]] || fail "cube.svg written despite the error"
   expect_error 2 "unsupported output extension '\.off'" tetrahedralize "$data/cube_center.node" -o "$work/x.off"

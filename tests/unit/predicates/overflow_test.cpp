@@ -179,6 +179,18 @@ std::vector<double> scale(std::vector<double> x, int k) {
     return x;
 }
 
+/// `count` tuples of p, case c with every coordinate coordinate(c) with a random sign.
+template <class Coordinate>
+void check_random_tuples(Checker& checker, const Predicate& p, Rng& rng, int count,
+                         Coordinate coordinate) {
+    const auto n = static_cast<std::size_t>(p.points * p.dims);
+    for (int c = 0; c < count; ++c) {
+        std::vector<double> x(n);
+        for (double& v : x) v = random_sign(rng, coordinate(c));
+        checker.check(p, x);
+    }
+}
+
 /// Moves one random coordinate of x by one ulp, up or down.
 void nudge_one_coordinate(std::vector<double>& x, Rng& rng, bool up) {
     double& v = x[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(x.size()) - 1))];
@@ -203,17 +215,12 @@ TEST(Predicates_Overflow, HugeCoordinatesWhoseProductsOverflowGetExactSigns) {
     Rng rng(41);
     for (const Predicate* p : kAll) {
         Checker checker;
-        const std::size_t n = static_cast<std::size_t>(p->points * p->dims);
-        for (int c = 0; c < 3000; ++c) {
-            std::vector<double> x(n);
-            for (double& v : x) {
-                // 1e160..1e308 (up to DBL_MAX itself).
-                const int e = uniform_int(rng, 160, 308);
-                v = random_sign(rng, e == 308 ? uniform(rng, 1.0, 1.7976931348623157) * 1e308
-                                              : uniform(rng, 1.0, 10.0) * std::pow(10.0, e));
-            }
-            checker.check(*p, x);
-        }
+        check_random_tuples(checker, *p, rng, 3000, [&](int) {
+            // 1e160..1e308 (up to DBL_MAX itself).
+            const int e = uniform_int(rng, 160, 308);
+            return e == 308 ? uniform(rng, 1.0, 1.7976931348623157) * 1e308
+                            : uniform(rng, 1.0, 10.0) * std::pow(10.0, e);
+        });
         // Exactly degenerate tuples scaled to the top of the range, and 1-ulp perturbations.
         check_scaled_degenerate(checker, *p, rng, [&] { return uniform_int(rng, 530, 1017); });
         EXPECT_GT(checker.zeros, 500) << p->name;
@@ -266,27 +273,23 @@ TEST(Predicates_Overflow, TinyAndSubnormalCoordinatesWhoseProductsUnderflowGetEx
     Rng rng(42);
     for (const Predicate* p : kAll) {
         Checker checker;
-        const std::size_t n = static_cast<std::size_t>(p->points * p->dims);
-        for (int c = 0; c < 3000; ++c) {
-            std::vector<double> x(n);
-            for (double& v : x) {
-                switch (c % 3) {
-                    case 0:  // 1e-160..1e-320: products underflow, the smallest are subnormal
-                        v = uniform(rng, 1.0, 10.0) * std::pow(10.0, -uniform_int(rng, 160, 307));
-                        if (uniform_int(rng, 0, 3) == 0)
-                            v = std::ldexp(uniform(rng, 1.0, 2.0), -uniform_int(rng, 1023, 1063));
-                        break;
-                    case 1:  // any subnormal
-                        v = std::ldexp(static_cast<double>(rng() >> 12), -1074);
-                        break;
-                    default:  // subnormal integers: exact degeneracies below the normal range
-                        v = uniform_int(rng, -4, 4) * kTrueMin;
-                        break;
-                }
-                v = random_sign(rng, v);
+        check_random_tuples(checker, *p, rng, 3000, [&](int c) {
+            double v = 0.0;
+            switch (c % 3) {
+                case 0:  // 1e-160..1e-320: products underflow, the smallest are subnormal
+                    v = uniform(rng, 1.0, 10.0) * std::pow(10.0, -uniform_int(rng, 160, 307));
+                    if (uniform_int(rng, 0, 3) == 0)
+                        v = std::ldexp(uniform(rng, 1.0, 2.0), -uniform_int(rng, 1023, 1063));
+                    break;
+                case 1:  // any subnormal
+                    v = std::ldexp(static_cast<double>(rng() >> 12), -1074);
+                    break;
+                default:  // subnormal integers: exact degeneracies below the normal range
+                    v = uniform_int(rng, -4, 4) * kTrueMin;
+                    break;
             }
-            checker.check(*p, x);
-        }
+            return v;
+        });
         check_scaled_degenerate(checker, *p, rng, [&] { return -uniform_int(rng, 540, 1074); });
         // Tiny but nondegenerate: the double evaluation underflows to zero or loses the sign.
         EXPECT_GT(checker.fast_wrong, 200) << p->name;
@@ -299,31 +302,20 @@ TEST(Predicates_Overflow, MixedHugeAndSubnormalCoordinatesGetExactSigns) {
     Rng rng(43);
     for (const Predicate* p : kAll) {
         Checker checker;
-        const std::size_t n = static_cast<std::size_t>(p->points * p->dims);
-        for (int c = 0; c < 2000; ++c) {
-            std::vector<double> x(n);
-            for (double& v : x) {
-                switch (uniform_int(rng, 0, 4)) {
-                    case 0:
-                        v = uniform(rng, 0.5, 1.0) * kMax;
-                        break;
-                    case 1:
-                        v = std::ldexp(static_cast<double>(rng() >> 12), -1074);
-                        break;
-                    case 2:
-                        v = uniform_int(rng, -2, 2) * kTrueMin;
-                        break;
-                    case 3:
-                        v = std::ldexp(uniform(rng, 1.0, 2.0), uniform_int(rng, -1022, 1023));
-                        break;
-                    default:
-                        v = 0.0;
-                        break;
-                }
-                v = random_sign(rng, v);
+        check_random_tuples(checker, *p, rng, 2000, [&](int) {
+            switch (uniform_int(rng, 0, 4)) {
+                case 0:
+                    return uniform(rng, 0.5, 1.0) * kMax;
+                case 1:
+                    return std::ldexp(static_cast<double>(rng() >> 12), -1074);
+                case 2:
+                    return uniform_int(rng, -2, 2) * kTrueMin;
+                case 3:
+                    return std::ldexp(uniform(rng, 1.0, 2.0), uniform_int(rng, -1022, 1023));
+                default:
+                    return 0.0;
             }
-            checker.check(*p, x);
-        }
+        });
         checker.expect_clean(p->name);
     }
 }

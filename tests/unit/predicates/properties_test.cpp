@@ -340,12 +340,14 @@ std::vector<Tuple> degenerate_integer_inputs(Rng& rng, int n, int dims, long cou
 }
 
 /// sos against its reference perturbation on every tuple of `cases` (in `dims` dimensions), each
-/// with fresh distinct indices (and, when `reference_never_zero`, the reference must not be Zero);
-/// returns how many tuples are degenerate before the perturbation.
-long check_sos_against_reference(Rng& rng, const std::vector<Tuple>& cases, int dims,
-                                 const char* name, const IndexedPredicate& sos,
-                                 const IndexedPredicate& reference, const PointPredicate& plain,
-                                 bool reference_never_zero, Failures& failures) {
+/// with fresh distinct indices (and, when `reference_never_zero`, the reference must not be
+/// Zero); more than a fifth of the `degenerate_count` integer inputs among the cases must be
+/// degenerate before the perturbation.
+void expect_sos_matches_reference(Rng& rng, const std::vector<Tuple>& cases, long degenerate_count,
+                                  int dims, const std::string& name, const IndexedPredicate& sos,
+                                  const IndexedPredicate& reference, const PointPredicate& plain,
+                                  bool reference_never_zero) {
+    Failures failures;
     long unperturbed_zeros = 0;
     for (const Tuple& t : cases) {
         const std::vector<const double*> p = pointers(t);
@@ -353,15 +355,15 @@ long check_sos_against_reference(Rng& rng, const std::vector<Tuple>& cases, int 
         if (plain(p) == Sign::Zero) ++unperturbed_zeros;
         const Sign got = sos(p, idx), expected = reference(p, idx);
         if (got != expected) {
-            failures.add(std::string(name) + " " + std::to_string(pr::to_int(got)) +
-                         ", reference " + std::to_string(pr::to_int(expected)) + " for " +
-                         describe(t, dims, idx));
+            failures.add(name + " " + std::to_string(pr::to_int(got)) + ", reference " +
+                         std::to_string(pr::to_int(expected)) + " for " + describe(t, dims, idx));
         }
         if (reference_never_zero && expected == Sign::Zero) {
             failures.add("reference Zero for " + describe(t, dims, idx));
         }
     }
-    return unperturbed_zeros;
+    EXPECT_GT(unperturbed_zeros, degenerate_count / 5) << "the inputs should be mostly degenerate";
+    failures.expect_none((name + " vs reference").c_str());
 }
 
 struct SosCase {
@@ -563,7 +565,6 @@ TEST(Predicates_Sos, AntisymmetricWhenIndicesPermuteWithPoints) {
 
 TEST(Predicates_Sos, Orient2dAgreesWithReferencePerturbation) {
     Rng rng(36);
-    Failures failures;
     // Repeated points included: the perturbation is defined for them too and never vanishes.
     // The reference takes any doubles here, so the degenerate sets also go to extreme scales.
     std::vector<Tuple> cases = degenerate_integer_inputs(rng, 3, 2, 6000, false);
@@ -571,33 +572,22 @@ TEST(Predicates_Sos, Orient2dAgreesWithReferencePerturbation) {
         cases.push_back(scaled(cases[c], -1074));
         cases.push_back(scaled(cases[c + 1], 1000));
     }
-    const long unperturbed_zeros =
-        check_sos_against_reference(rng, cases, 2, "orient2d_sos", orient2d_sos,
-                                    orient2d_sos_reference, orient2d_plain, true, failures);
-    EXPECT_GT(unperturbed_zeros, 6000 / 5) << "the inputs should be mostly degenerate";
-    failures.expect_none("orient2d_sos vs reference");
+    expect_sos_matches_reference(rng, cases, 6000, 2, "orient2d_sos", orient2d_sos,
+                                 orient2d_sos_reference, orient2d_plain, true);
 }
 
 TEST(Predicates_Sos, IncircleAgreesWithReferencePerturbation) {
     Rng rng(37);
-    Failures failures;
-    const std::vector<Tuple> cases = degenerate_integer_inputs(rng, 4, 2, 20000, false);
-    const long unperturbed_zeros =
-        check_sos_against_reference(rng, cases, 2, "incircle_sos", incircle_sos,
-                                    incircle_sos_reference, incircle_plain, false, failures);
-    EXPECT_GT(unperturbed_zeros, 20000 / 5) << "the inputs should be mostly degenerate";
-    failures.expect_none("incircle_sos vs reference");
+    expect_sos_matches_reference(rng, degenerate_integer_inputs(rng, 4, 2, 20000, false), 20000, 2,
+                                 "incircle_sos", incircle_sos, incircle_sos_reference,
+                                 incircle_plain, false);
 }
 
 TEST(Predicates_Sos, InsphereAgreesWithReferencePerturbation) {
     Rng rng(38);
-    Failures failures;
-    const std::vector<Tuple> cases = degenerate_integer_inputs(rng, 5, 3, 10000, false);
-    const long unperturbed_zeros =
-        check_sos_against_reference(rng, cases, 3, "insphere_sos", insphere_sos,
-                                    insphere_sos_reference, insphere_plain, false, failures);
-    EXPECT_GT(unperturbed_zeros, 10000 / 5) << "the inputs should be mostly degenerate";
-    failures.expect_none("insphere_sos vs reference");
+    expect_sos_matches_reference(rng, degenerate_integer_inputs(rng, 5, 3, 10000, false), 10000, 3,
+                                 "insphere_sos", insphere_sos, insphere_sos_reference,
+                                 insphere_plain, false);
 }
 
 // The reference perturbations themselves: a hand-checked case for each. Three collinear points
