@@ -77,38 +77,23 @@ const std::vector<std::array<int, 2>>& circle_points() {
 
 /// Rewrites the raw coordinates according to `mode` (each mode keeps the point count).
 void reshape(std::vector<double>& xy, Mode mode, std::uint8_t parameter) {
-    const int exponent = fz::reshape_exponent(parameter);
-    switch (mode) {
-        case Mode::raw:
-        case Mode::count:
-            return;
-        case Mode::lattice:
-            // Small integers of 3 to 8 bits, by the parameter.
-            fz::reshape_lattice(xy, std::array<int, 4>{3, 4, 6, 8}[parameter & 3u], exponent);
-            return;
-        case Mode::ulps:
-            // A 16 x 16 lattice.
-            fz::reshape_ulps(xy, 16, exponent);
-            return;
-        case Mode::duplicates:
-            fz::reshape_duplicates(xy, 2, parameter);
-            return;
-        case Mode::cocircular: {
-            // Lattice points of one circle (exactly cocircular), possibly with its centre, on
-            // up to four circles with integer centres; scaled by a power of two.
-            const auto& circle = circle_points();
-            const int scale = static_cast<int>(parameter >> 2) * 16 - 500;  // stays finite
-            for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
-                const std::uint64_t b = fz::bits_of(xy[i]);
-                const auto& p = circle[b % circle.size()];
-                const std::uint64_t circles = 1u + (parameter & 3u);
-                const int centre = static_cast<int>(fz::bits_of(xy[i + 1]) % circles) * 1500;
-                const bool at_centre = (b >> 20) % 16 == 0;
-                xy[i] = std::ldexp(static_cast<double>((at_centre ? 0 : p[0]) + centre), scale);
-                xy[i + 1] = std::ldexp(static_cast<double>(at_centre ? 0 : p[1]), scale);
-            }
-            return;
-        }
+    if (mode != Mode::cocircular) {
+        // The shared modes: lattices of 3- to 8-bit integers, 16 x 16 ulp lattices.
+        fz::reshape_shared(xy, 2, mode, parameter, {3, 4, 6, 8}, 16);
+        return;
+    }
+    // Lattice points of one circle (exactly cocircular), possibly with its centre, on
+    // up to four circles with integer centres; scaled by a power of two.
+    const auto& circle = circle_points();
+    const int scale = static_cast<int>(parameter >> 2) * 16 - 500;  // stays finite
+    for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
+        const std::uint64_t b = fz::bits_of(xy[i]);
+        const auto& p = circle[b % circle.size()];
+        const std::uint64_t circles = 1u + (parameter & 3u);
+        const int centre = static_cast<int>(fz::bits_of(xy[i + 1]) % circles) * 1500;
+        const bool at_centre = (b >> 20) % 16 == 0;
+        xy[i] = std::ldexp(static_cast<double>((at_centre ? 0 : p[0]) + centre), scale);
+        xy[i + 1] = std::ldexp(static_cast<double>(at_centre ? 0 : p[1]), scale);
     }
 }
 

@@ -63,39 +63,23 @@ const std::vector<std::array<int, 3>>& sphere_points() {
 }
 
 void reshape(std::vector<double>& xyz, Mode mode, std::uint8_t parameter) {
-    const int exponent = fz::reshape_exponent(parameter);
-    switch (mode) {
-        case Mode::raw:
-        case Mode::count:
-            return;
-        case Mode::lattice:
-            // Small integers of 2 to 6 bits, by the parameter.
-            fz::reshape_lattice(xyz, std::array<int, 4>{2, 3, 4, 6}[parameter & 3u], exponent);
-            return;
-        case Mode::ulps:
-            // An 8 x 8 x 8 lattice.
-            fz::reshape_ulps(xyz, 8, exponent);
-            return;
-        case Mode::duplicates:
-            fz::reshape_duplicates(xyz, 3, parameter);
-            return;
-        case Mode::cospherical: {
-            // Lattice points of one sphere, possibly its centre, on up to four spheres with
-            // integer centres; scaled by a power of two.
-            const auto& sphere = sphere_points();
-            const int scale = static_cast<int>(parameter >> 2) * 16 - 500;
-            for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) {
-                const std::uint64_t b = fz::bits_of(xyz[i]);
-                const auto& p = sphere[b % sphere.size()];
-                const int centre =
-                    static_cast<int>(fz::bits_of(xyz[i + 1]) % (1u + (parameter & 3u))) * 20;
-                const bool at_centre = (b >> 20) % 16 == 0;
-                for (std::size_t c = 0; c < 3; ++c) {
-                    xyz[i + c] = std::ldexp(
-                        static_cast<double>((at_centre ? 0 : p[c]) + (c == 0 ? centre : 0)), scale);
-                }
-            }
-            return;
+    if (mode != Mode::cospherical) {
+        // The shared modes: lattices of 2- to 6-bit integers, 8 x 8 x 8 ulp lattices.
+        fz::reshape_shared(xyz, 3, mode, parameter, {2, 3, 4, 6}, 8);
+        return;
+    }
+    // Lattice points of one sphere, possibly its centre, on up to four spheres with
+    // integer centres; scaled by a power of two.
+    const auto& sphere = sphere_points();
+    const int scale = static_cast<int>(parameter >> 2) * 16 - 500;
+    for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) {
+        const std::uint64_t b = fz::bits_of(xyz[i]);
+        const auto& p = sphere[b % sphere.size()];
+        const int centre = static_cast<int>(fz::bits_of(xyz[i + 1]) % (1u + (parameter & 3u))) * 20;
+        const bool at_centre = (b >> 20) % 16 == 0;
+        for (std::size_t c = 0; c < 3; ++c) {
+            xyz[i + c] = std::ldexp(
+                static_cast<double>((at_centre ? 0 : p[c]) + (c == 0 ? centre : 0)), scale);
         }
     }
 }

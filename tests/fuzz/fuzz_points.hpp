@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -99,6 +100,18 @@ inline void reshape_duplicates(std::vector<double>& xs, std::size_t dims, std::u
         const std::size_t j = (b >> 8) % i;
         for (std::size_t c = 0; c < dims; ++c) xs[dims * i + c] = xs[dims * j + c];
     }
+}
+
+/// The modes both targets have, on points of `dims` coordinates: raw and count leave the values,
+/// lattice makes them integers of widths[parameter & 3] bits, ulps an ulp-perturbed lattice of
+/// `side` values per axis, duplicates repeats points. Other modes are the target's own.
+template <class Mode>
+void reshape_shared(std::vector<double>& xs, std::size_t dims, Mode mode, std::uint8_t parameter,
+                    const std::array<int, 4>& widths, std::uint64_t side) {
+    const int exponent = reshape_exponent(parameter);
+    if (mode == Mode::lattice) reshape_lattice(xs, widths[parameter & 3u], exponent);
+    if (mode == Mode::ulps) reshape_ulps(xs, side, exponent);
+    if (mode == Mode::duplicates) reshape_duplicates(xs, dims, parameter);
 }
 
 /// Prints what failed and the points, then __builtin_trap() (which libFuzzer reports).
