@@ -125,9 +125,10 @@ void expect_all_pass(const char* name, const Outcome& out) {
     EXPECT_EQ(out.reference_wrong, 0) << name << "\n" << out.first_failures;
 }
 
-/// The corpus of the predicate `name` of N points in D dimensions through every stage.
+/// The corpus of the predicate `name` of N points in D dimensions through every stage (as
+/// EXACTMESH_TEST_STAGES lists them).
 template <std::size_t N, std::size_t D, auto Adaptive, auto Exact, auto Filter, auto Reference,
-          auto Fast>
+          auto /*ReferenceDifferences*/, auto Fast>
 Outcome run_predicate(const std::string& name) {
     return run(load(name, N * D), [](const double* x) {
         using exactmesh::testing::call_on_flat;
@@ -138,23 +139,19 @@ Outcome run_predicate(const std::string& name) {
 }
 
 Outcome run_orient2d() {
-    return run_predicate<3, 2, &pr::orient2d, &pr::orient2d_exact, &pr::orient2d_filter,
-                         &pr::reference::orient2d, &pr::orient2d_fast>("orient2d");
+    return run_predicate<3, 2, EXACTMESH_TEST_STAGES(orient2d)>("orient2d");
 }
 
 Outcome run_incircle() {
-    return run_predicate<4, 2, &pr::incircle, &pr::incircle_exact, &pr::incircle_filter,
-                         &pr::reference::incircle, &pr::incircle_fast>("incircle");
+    return run_predicate<4, 2, EXACTMESH_TEST_STAGES(incircle)>("incircle");
 }
 
 Outcome run_orient3d() {
-    return run_predicate<4, 3, &pr::orient3d, &pr::orient3d_exact, &pr::orient3d_filter,
-                         &pr::reference::orient3d, &pr::orient3d_fast>("orient3d");
+    return run_predicate<4, 3, EXACTMESH_TEST_STAGES(orient3d)>("orient3d");
 }
 
 Outcome run_insphere() {
-    return run_predicate<5, 3, &pr::insphere, &pr::insphere_exact, &pr::insphere_filter,
-                         &pr::reference::insphere, &pr::insphere_fast>("insphere");
+    return run_predicate<5, 3, EXACTMESH_TEST_STAGES(insphere)>("insphere");
 }
 
 }  // namespace

@@ -47,9 +47,10 @@ struct Predicate {
     double (*fast)(const double*);
 };
 
-/// The Predicate of N points in D dimensions with these stages.
+/// The Predicate of N points in D dimensions with these stages (as EXACTMESH_TEST_STAGES lists
+/// them).
 template <std::size_t N, std::size_t D, auto Adaptive, auto Exact, auto Filter, auto Reference,
-          auto Fast>
+          auto /*ReferenceDifferences*/, auto Fast>
 Predicate make_predicate(const char* name) {
     using exactmesh::testing::call_on_flat;
     return {name,
@@ -62,18 +63,10 @@ Predicate make_predicate(const char* name) {
             [](const double* x) { return call_on_flat<N, D>(Fast, x); }};
 }
 
-const Predicate kOrient2d =
-    make_predicate<3, 2, &pr::orient2d, &pr::orient2d_exact, &pr::orient2d_filter,
-                   &pr::reference::orient2d, &pr::orient2d_fast>("orient2d");
-const Predicate kIncircle =
-    make_predicate<4, 2, &pr::incircle, &pr::incircle_exact, &pr::incircle_filter,
-                   &pr::reference::incircle, &pr::incircle_fast>("incircle");
-const Predicate kOrient3d =
-    make_predicate<4, 3, &pr::orient3d, &pr::orient3d_exact, &pr::orient3d_filter,
-                   &pr::reference::orient3d, &pr::orient3d_fast>("orient3d");
-const Predicate kInsphere =
-    make_predicate<5, 3, &pr::insphere, &pr::insphere_exact, &pr::insphere_filter,
-                   &pr::reference::insphere, &pr::insphere_fast>("insphere");
+const Predicate kOrient2d = make_predicate<3, 2, EXACTMESH_TEST_STAGES(orient2d)>("orient2d");
+const Predicate kIncircle = make_predicate<4, 2, EXACTMESH_TEST_STAGES(incircle)>("incircle");
+const Predicate kOrient3d = make_predicate<4, 3, EXACTMESH_TEST_STAGES(orient3d)>("orient3d");
+const Predicate kInsphere = make_predicate<5, 3, EXACTMESH_TEST_STAGES(insphere)>("insphere");
 
 const std::array<const Predicate*, 4> kAll = {&kOrient2d, &kIncircle, &kOrient3d, &kInsphere};
 

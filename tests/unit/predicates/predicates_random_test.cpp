@@ -49,10 +49,12 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 using Args = const double* const*;
 using exactmesh::testing::call_on_points;
 
-/// The stages of one predicate of Points points in Dims dimensions, over pointers to its points.
-template <int Points, int Dims, auto Full, auto Exact, auto Filter, auto Reference,
-          auto ReferenceRaw>
+/// The stages of the predicate `Label` of Points points in Dims dimensions (in the order of
+/// EXACTMESH_TEST_STAGES), over pointers to its points.
+template <exactmesh::testing::Name Label, int Points, int Dims, auto Full, auto Exact, auto Filter,
+          auto ReferenceRaw, auto Reference, auto Fast>
 struct Stages {
+    static constexpr const char* kName = Label.text;
     static constexpr int kPoints = Points, kDims = Dims;
     static Sign full(Args p) { return call_on_points<Points>(Full, p); }
     static Sign exact(Args p) { return call_on_points<Points>(Exact, p); }
@@ -61,22 +63,10 @@ struct Stages {
     static Sign reference_raw(Args p) { return call_on_points<Points>(ReferenceRaw, p); }
 };
 
-struct Orient2d : Stages<3, 2, &pr::orient2d, &pr::orient2d_exact, &pr::orient2d_filter,
-                         &pr::reference::orient2d_differences, &pr::reference::orient2d> {
-    static constexpr const char* kName = "orient2d";
-};
-struct Orient3d : Stages<4, 3, &pr::orient3d, &pr::orient3d_exact, &pr::orient3d_filter,
-                         &pr::reference::orient3d_differences, &pr::reference::orient3d> {
-    static constexpr const char* kName = "orient3d";
-};
-struct Incircle : Stages<4, 2, &pr::incircle, &pr::incircle_exact, &pr::incircle_filter,
-                         &pr::reference::incircle_differences, &pr::reference::incircle> {
-    static constexpr const char* kName = "incircle";
-};
-struct Insphere : Stages<5, 3, &pr::insphere, &pr::insphere_exact, &pr::insphere_filter,
-                         &pr::reference::insphere_differences, &pr::reference::insphere> {
-    static constexpr const char* kName = "insphere";
-};
+using Orient2d = Stages<"orient2d", 3, 2, EXACTMESH_TEST_STAGES(orient2d)>;
+using Orient3d = Stages<"orient3d", 4, 3, EXACTMESH_TEST_STAGES(orient3d)>;
+using Incircle = Stages<"incircle", 4, 2, EXACTMESH_TEST_STAGES(incircle)>;
+using Insphere = Stages<"insphere", 5, 3, EXACTMESH_TEST_STAGES(insphere)>;
 
 // ---------------------------------------------------------------------------------------------
 // The harness: every case is compared with the reference through the adaptive predicate, the
@@ -558,86 +548,87 @@ void run_ulp_lattice(Harness<P>& h, const char* name, typename Harness<P>::Case 
     h.end_suite();
 }
 
-/// Every suite for P: the random ones (from `seed`), then on a second generator (from
-/// `rng_seed`) P's own suites, `specific` (grids, exact configurations, ulp lattices), then the
-/// extreme magnitudes (`extreme_count` cases each); no stage may disagree with the reference.
-template <class P, class Specific>
-void expect_agreement(std::uint64_t seed, std::uint64_t rng_seed, long extreme_count,
-                      Specific specific) {
-    Harness<P> h;
-    run_random(h, seed);
-    Rng rng(rng_seed);
-    specific(h, rng);
-    run_extreme_magnitudes(h, rng, extreme_count);
-    std::printf("  %s total: %ld cases\n", P::kName, h.total_cases());
-    h.expect_no_disagreement();
-}
-
 }  // namespace
 
 TEST(Predicates_Orient2d, AgreesWithGmpOnRandomAndDegenerateInputs) {
-    expect_agreement<Orient2d>(0x2d2d2d2dULL, 2, scaled(20000), [](auto& h, Rng& rng) {
-        run_grid(h, rng, -3, 3, 0, 0);  // all 7^6 ordered triples of a 7x7 grid
-        run_grid(h, rng, -5, 5, -1074, scaled(20000));
-        run_grid(h, rng, -5, 5, 1000, scaled(20000));
-        run_exact_configurations(h, rng, "collinear", collinear_sets(), 40, 2);
-        // The classic: a = (0.5 + i 2^-53, 0.5 + j 2^-53) against b = (12, 12), c = (24, 24).
-        const Harness<Orient2d>::Case line = {0.5, 0.5, 12.0, 12.0, 24.0, 24.0};
-        for (const int k : {0, -1000, 900}) {
-            run_ulp_lattice(h, "near-collinear 256x256 ulp lattice", line, 0, 0x1p-53, 1, 0x1p-53,
-                            0, 255, k);
-        }
-    });
+    Harness<Orient2d> h;
+    run_random(h, 0x2d2d2d2dULL);
+    Rng rng(2);
+    run_grid(h, rng, -3, 3, 0, 0);  // all 7^6 ordered triples of a 7x7 grid
+    run_grid(h, rng, -5, 5, -1074, scaled(20000));
+    run_grid(h, rng, -5, 5, 1000, scaled(20000));
+    run_exact_configurations(h, rng, "collinear", collinear_sets(), 40, 2);
+    // The classic: a = (0.5 + i 2^-53, 0.5 + j 2^-53) against b = (12, 12), c = (24, 24).
+    const Harness<Orient2d>::Case line = {0.5, 0.5, 12.0, 12.0, 24.0, 24.0};
+    for (const int k : {0, -1000, 900}) {
+        run_ulp_lattice(h, "near-collinear 256x256 ulp lattice", line, 0, 0x1p-53, 1, 0x1p-53, 0,
+                        255, k);
+    }
+    run_extreme_magnitudes(h, rng, scaled(20000));
+    std::printf("  orient2d total: %ld cases\n", h.total_cases());
+    h.expect_no_disagreement();
 }
 
 TEST(Predicates_Incircle, AgreesWithGmpOnRandomAndDegenerateInputs) {
-    expect_agreement<Incircle>(0x1c1c1c1cULL, 3, scaled(20000), [](auto& h, Rng& rng) {
-        run_grid(h, rng, -1, 2, 0, 0);  // all 16^4 ordered quadruples of a 4x4 grid
-        run_grid(h, rng, -4, 4, 0, scaled(100000));
-        run_grid(h, rng, -4, 4, -1074, scaled(10000));
-        run_grid(h, rng, -4, 4, 1000, scaled(10000));
-        run_exact_configurations(h, rng, "cocircular", cocircular_sets(), 20, 1);
-        run_exact_configurations(h, rng, "collinear", collinear_sets(), 10, 1);
-        // a walked around (-4, 3) on the circle x^2 + y^2 = 25 through b, c, d.
-        const Harness<Incircle>::Case circle = {-4.0, 3.0, 5.0, 0.0, 0.0, 5.0, -3.0, -4.0};
-        for (const int k : {0, -500, 500}) {
-            run_ulp_lattice(h, "near-cocircular 128x128 ulp lattice", circle, 0, 0x1p-50, 1,
-                            0x1p-51, -64, 63, k);
-        }
-    });
+    Harness<Incircle> h;
+    run_random(h, 0x1c1c1c1cULL);
+    Rng rng(3);
+    run_grid(h, rng, -1, 2, 0, 0);  // all 16^4 ordered quadruples of a 4x4 grid
+    run_grid(h, rng, -4, 4, 0, scaled(100000));
+    run_grid(h, rng, -4, 4, -1074, scaled(10000));
+    run_grid(h, rng, -4, 4, 1000, scaled(10000));
+    run_exact_configurations(h, rng, "cocircular", cocircular_sets(), 20, 1);
+    run_exact_configurations(h, rng, "collinear", collinear_sets(), 10, 1);
+    // a walked around (-4, 3) on the circle x^2 + y^2 = 25 through b, c, d.
+    const Harness<Incircle>::Case circle = {-4.0, 3.0, 5.0, 0.0, 0.0, 5.0, -3.0, -4.0};
+    for (const int k : {0, -500, 500}) {
+        run_ulp_lattice(h, "near-cocircular 128x128 ulp lattice", circle, 0, 0x1p-50, 1, 0x1p-51,
+                        -64, 63, k);
+    }
+    run_extreme_magnitudes(h, rng, scaled(20000));
+    std::printf("  incircle total: %ld cases\n", h.total_cases());
+    h.expect_no_disagreement();
 }
 
 TEST(Predicates_Orient3d, AgreesWithGmpOnRandomAndDegenerateInputs) {
-    expect_agreement<Orient3d>(0x3d3d3d3dULL, 4, scaled(10000), [](auto& h, Rng& rng) {
-        run_grid(h, rng, -1, 1, 0, scaled(150000));
-        run_grid(h, rng, 0, 3, 0, scaled(100000));
-        run_grid(h, rng, -2, 2, -1074, scaled(10000));
-        run_grid(h, rng, -2, 2, 1000, scaled(10000));
-        run_exact_configurations(h, rng, "coplanar", coplanar_sets(), 20, 1);
-        // a walked around (0.5, 0.5, 0.5) on the plane x = z through b, c, d.
-        const Harness<Orient3d>::Case plane = {0.5,  0.5,  0.5,  12.0, 12.0, 12.0,
-                                               24.0, 24.0, 24.0, 1.0,  0.0,  1.0};
-        for (const int k : {0, -600, 600}) {
-            run_ulp_lattice(h, "near-coplanar 128x128 ulp lattice", plane, 0, 0x1p-53, 1, 0x1p-53,
-                            0, 127, k);
-        }
-    });
+    Harness<Orient3d> h;
+    run_random(h, 0x3d3d3d3dULL);
+    Rng rng(4);
+    run_grid(h, rng, -1, 1, 0, scaled(150000));
+    run_grid(h, rng, 0, 3, 0, scaled(100000));
+    run_grid(h, rng, -2, 2, -1074, scaled(10000));
+    run_grid(h, rng, -2, 2, 1000, scaled(10000));
+    run_exact_configurations(h, rng, "coplanar", coplanar_sets(), 20, 1);
+    // a walked around (0.5, 0.5, 0.5) on the plane x = z through b, c, d.
+    const Harness<Orient3d>::Case plane = {0.5,  0.5,  0.5,  12.0, 12.0, 12.0,
+                                           24.0, 24.0, 24.0, 1.0,  0.0,  1.0};
+    for (const int k : {0, -600, 600}) {
+        run_ulp_lattice(h, "near-coplanar 128x128 ulp lattice", plane, 0, 0x1p-53, 1, 0x1p-53, 0,
+                        127, k);
+    }
+    run_extreme_magnitudes(h, rng, scaled(10000));
+    std::printf("  orient3d total: %ld cases\n", h.total_cases());
+    h.expect_no_disagreement();
 }
 
 TEST(Predicates_Insphere, AgreesWithGmpOnRandomAndDegenerateInputs) {
-    expect_agreement<Insphere>(0x5f5f5f5fULL, 5, scaled(5000), [](auto& h, Rng& rng) {
-        run_grid(h, rng, -1, 1, 0, scaled(50000));
-        run_grid(h, rng, 0, 3, 0, scaled(50000));
-        run_grid(h, rng, -2, 2, -1074, scaled(5000));
-        run_grid(h, rng, -2, 2, 1000, scaled(5000));
-        run_exact_configurations(h, rng, "cospherical", cospherical_sets(), 10, 1);
-        run_exact_configurations(h, rng, "coplanar", coplanar_sets(), 5, 0);
-        // a walked around (1, 4, 8) on the sphere of radius 9 through b, c, d, e.
-        const Harness<Insphere>::Case sphere = {1.0, 4.0,  8.0, 9.0, 0.0, 0.0,  0.0, 9.0,
-                                                0.0, -4.0, 4.0, 7.0, 8.0, -1.0, 4.0};
-        for (const int k : {0, -400, 400}) {
-            run_ulp_lattice(h, "near-cospherical 64x64 ulp lattice", sphere, 0, 0x1p-52, 1, 0x1p-50,
-                            -32, 31, k);
-        }
-    });
+    Harness<Insphere> h;
+    run_random(h, 0x5f5f5f5fULL);
+    Rng rng(5);
+    run_grid(h, rng, -1, 1, 0, scaled(50000));
+    run_grid(h, rng, 0, 3, 0, scaled(50000));
+    run_grid(h, rng, -2, 2, -1074, scaled(5000));
+    run_grid(h, rng, -2, 2, 1000, scaled(5000));
+    run_exact_configurations(h, rng, "cospherical", cospherical_sets(), 10, 1);
+    run_exact_configurations(h, rng, "coplanar", coplanar_sets(), 5, 0);
+    // a walked around (1, 4, 8) on the sphere of radius 9 through b, c, d, e.
+    const Harness<Insphere>::Case sphere = {1.0, 4.0,  8.0, 9.0, 0.0, 0.0,  0.0, 9.0,
+                                            0.0, -4.0, 4.0, 7.0, 8.0, -1.0, 4.0};
+    for (const int k : {0, -400, 400}) {
+        run_ulp_lattice(h, "near-cospherical 64x64 ulp lattice", sphere, 0, 0x1p-52, 1, 0x1p-50,
+                        -32, 31, k);
+    }
+    run_extreme_magnitudes(h, rng, scaled(5000));
+    std::printf("  insphere total: %ld cases\n", h.total_cases());
+    h.expect_no_disagreement();
 }
