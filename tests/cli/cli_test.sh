@@ -88,13 +88,23 @@ triangulate_all_algorithms() {
     fail "square_with_center.neigh: expected 4 hull sides"
 }
 
+# expect_msh <file.msh> <block regex> <what>: a Gmsh 4.1 ASCII file with the element block.
+expect_msh() {
+  [[ $(head -n2 "$1" | tail -n1) == "4.1 0 8" ]] || fail "msh header"
+  grep -q "$2" "$1" || fail "msh: $3"
+}
+
+# expect_vtu <file.vtu> <counts>: a closed VTK XML file whose piece has these counts.
+expect_vtu() {
+  grep -q "$2" "$1" || fail "vtu counts"
+  grep -q '</VTKFile>' "$1" || fail "vtu not closed"
+}
+
 output_formats() {
   run 0 triangulate "$data/square_with_center.node" -o "$work/square.msh" || return
-  [[ $(head -n2 "$work/square.msh" | tail -n1) == "4.1 0 8" ]] || fail "msh header"
-  grep -q '^2 1 2 4$' "$work/square.msh" || fail "msh: no block of 4 triangles (type 2)"
+  expect_msh "$work/square.msh" '^2 1 2 4$' "no block of 4 triangles (type 2)"
   run 0 triangulate "$data/one_based_comments.node" -o "$work/ob.vtu" --algorithm green-sibson
-  grep -q 'NumberOfPoints="6" NumberOfCells="6"' "$work/ob.vtu" || fail "vtu counts"
-  grep -q '</VTKFile>' "$work/ob.vtu" || fail "vtu not closed"
+  expect_vtu "$work/ob.vtu" 'NumberOfPoints="6" NumberOfCells="6"'
   run 0 triangulate "$data/duplicates.node" -o "$work/dup.svg" --algorithm tanemura-merriam
   grep -q '<svg xmlns="http://www.w3.org/2000/svg"' "$work/dup.svg" || fail "svg header"
   grep -q '</svg>' "$work/dup.svg" || fail "svg not closed"
@@ -105,21 +115,29 @@ output_formats() {
   [[ ! -e "$work/kite.off" ]] || fail "kite.off written despite the error"
 }
 
-stats() {
-  run 0 triangulate "$data/square_with_center.node" -o "$work/s.ele" --stats || return
+# expect_stats <points> <predicate> <counters...>: the --stats output in $work/out has a
+# 'construct_seconds: T' line, a 'name: N' line for each counter, 'points: <points>', the stage
+# counters of <predicate> (or 'compiled out'), and only 'name: value' lines.
+expect_stats() {
+  local points=$1 predicate=$2 name
+  shift 2
   grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" ||
     fail "--stats: no 'construct_seconds: T' line: $(cat "$work/out")"
-  local name
-  for name in points duplicates orient_calls incircle_calls walk_steps cavity_triangles flips candidates; do
+  for name in "$@"; do
     grep -Eq "^$name: [0-9]+$" "$work/out" || fail "--stats: no '$name: N' line"
   done
-  grep -q '^points: 5$' "$work/out" || fail "--stats: points is not 5"
-  grep -Eq '^(orient2d\.calls: [0-9]+|predicate_stages: compiled out.*)$' "$work/out" ||
-    fail "--stats: neither predicate stage counters nor 'compiled out'"
-  # Every stdout line is "name: value".
+  grep -q "^points: $points\$" "$work/out" || fail "--stats: points is not $points"
+  grep -Eq "^($predicate\\.calls: [0-9]+|predicate_stages: compiled out.*)\$" "$work/out" ||
+    fail "--stats: neither $predicate stage counters nor 'compiled out'"
   if grep -Ev '^[a-z0-9_.]+: ' "$work/out" | grep -q .; then
     fail "--stats: a line is not 'name: value': $(grep -Ev '^[a-z0-9_.]+: ' "$work/out")"
   fi
+}
+
+stats() {
+  run 0 triangulate "$data/square_with_center.node" -o "$work/s.ele" --stats || return
+  expect_stats 5 orient2d points duplicates orient_calls incircle_calls walk_steps cavity_triangles \
+    flips candidates
   run 0 triangulate "$data/duplicates.node" -o "$work/d.ele" --stats --algorithm green-sibson &&
     grep -q '^duplicates: 2$' "$work/out" || fail "--stats: duplicates is not 2"
 }
@@ -558,11 +576,9 @@ tetrahedralize_all() {
 
 tetrahedralize_formats() {
   run 0 tetrahedralize "$data/cube_center.node" -o "$work/cube.msh" || return
-  [[ $(head -n2 "$work/cube.msh" | tail -n1) == "4.1 0 8" ]] || fail "msh header"
-  grep -q '^3 1 4 12$' "$work/cube.msh" || fail "msh: no block of 12 tetrahedra (type 4) in a volume"
+  expect_msh "$work/cube.msh" '^3 1 4 12$' "no block of 12 tetrahedra (type 4) in a volume"
   run 0 tetrahedralize "$data/cube_center.node" -o "$work/cube.vtu" --algorithm green-sibson
-  grep -q 'NumberOfPoints="9" NumberOfCells="12"' "$work/cube.vtu" || fail "vtu counts"
-  grep -q '</VTKFile>' "$work/cube.vtu" || fail "vtu not closed"
+  expect_vtu "$work/cube.vtu" 'NumberOfPoints="9" NumberOfCells="12"'
   expect_error 2 'svg pictures are 2D only' tetrahedralize "$data/cube_center.node" -o "$work/cube.svg"
   [[ ! -e "$work/cube.svg" ]] || fail "cube.svg written despite the error"
   expect_error 2 "unsupported output extension '\.off'" tetrahedralize "$data/cube_center.node" -o "$work/x.off"
@@ -574,19 +590,8 @@ tetrahedralize_formats() {
 
 tetrahedralize_stats() {
   run 0 tetrahedralize "$data/cube_center.node" -o "$work/s.ele" --stats --algorithm green-sibson || return
-  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" ||
-    fail "--stats: no 'construct_seconds: T' line: $(cat "$work/out")"
-  local name
-  for name in points duplicates orient_calls insphere_calls walk_steps cavity_tets outside_hull splits_1_4 \
-    splits_2_6 splits_edge flips_2_3 flips_3_2 flips_4_4 unflippable; do
-    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "--stats: no '$name: N' line"
-  done
-  grep -q '^points: 9$' "$work/out" || fail "--stats: points is not 9"
-  grep -Eq '^(orient3d\.calls: [0-9]+|predicate_stages: compiled out.*)$' "$work/out" ||
-    fail "--stats: neither orient3d stage counters nor 'compiled out'"
-  if grep -Ev '^[a-z0-9_.]+: ' "$work/out" | grep -q .; then
-    fail "--stats: a line is not 'name: value': $(grep -Ev '^[a-z0-9_.]+: ' "$work/out")"
-  fi
+  expect_stats 9 orient3d points duplicates orient_calls insphere_calls walk_steps cavity_tets \
+    outside_hull splits_1_4 splits_2_6 splits_edge flips_2_3 flips_3_2 flips_4_4 unflippable
   # Duplicates are merged into their first copy and counted.
   printf '6 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 1 0 0\n5 -0 0 0\n' >"$work/dup.node"
   run 0 tetrahedralize "$work/dup.node" -o "$work/dup.ele" --stats && grep -q '^duplicates: 2$' "$work/out" ||

@@ -17,7 +17,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <optional>
 #include <string>
@@ -25,12 +24,14 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "tests/fuzz/fuzz_points.hpp"
 #include "triangulation/checks/check_2d.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
 #include "triangulation/delaunay/delaunay_2d_naive.hpp"
 
 namespace {
 
+namespace fz = exactmesh::fuzz;
 namespace tri = exactmesh::triangulation;
 
 constexpr std::size_t kMaxPoints = 256;
@@ -56,17 +57,6 @@ constexpr std::array<const char*, 3> kOrderNames = {"given", "random", "brio"};
 
 enum class Mode : std::uint8_t { raw, lattice, ulps, duplicates, cocircular, count };
 
-std::uint64_t bits_of(double x) {
-    std::uint64_t b;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
-}
-
-double nudge(double x, int ulps) {
-    for (int i = 0; i < std::abs(ulps); ++i) x = std::nextafter(x, ulps > 0 ? INFINITY : -INFINITY);
-    return x;
-}
-
 /// All integer points of x^2 + y^2 = 1105^2: 108 of them (1105 = 5·13·17, each prime 1 mod 4,
 /// gives 4·3·3·3 representations).
 const std::vector<std::array<int, 2>>& circle_points() {
@@ -87,69 +77,28 @@ const std::vector<std::array<int, 2>>& circle_points() {
 
 /// Rewrites the raw coordinates according to `mode` (each mode keeps the point count).
 void reshape(std::vector<double>& xy, Mode mode, std::uint8_t parameter) {
-    const int exponent = static_cast<int>(parameter >> 2) * 31 - 1100;  // 2^-1100 .. 2^853
-    switch (mode) {
-        case Mode::raw:
-        case Mode::count:
-            return;
-        case Mode::lattice: {
-            // Small integers (3 to 8 bits, by the parameter) times one power of two: collinear
-            // and cocircular subsets everywhere, exact zeros, underflow at the low exponents.
-            const int width = std::array<int, 4>{3, 4, 6, 8}[parameter & 3u];
-            for (double& v : xy) {
-                const auto small = static_cast<std::int64_t>(bits_of(v) & ((1u << width) - 1)) -
-                                   (std::int64_t{1} << (width - 1));
-                v = std::ldexp(static_cast<double>(small), exponent);
-            }
-            return;
-        }
-        case Mode::ulps: {
-            // A 16 x 16 lattice scaled to about 2^e, each coordinate moved by -2..2 ulps: nearly
-            // degenerate everywhere, decided only by the exact stages.
-            for (double& v : xy) {
-                const std::uint64_t b = bits_of(v);
-                const double base = std::ldexp(static_cast<double>((b & 15u) + 16), exponent);
-                v = nudge(base, static_cast<int>((b >> 8) % 5) - 2);
-            }
-            return;
-        }
-        case Mode::duplicates: {
-            // Each point, with probability about 1/(1 + parameter % 4), repeats an earlier one.
-            const std::size_t n = xy.size() / 2;
-            for (std::size_t i = 1; i < n; ++i) {
-                const std::uint64_t b = bits_of(xy[2 * i]);
-                if (b % (1u + parameter % 4u) != 0) continue;
-                const std::size_t j = (b >> 8) % i;
-                xy[2 * i] = xy[2 * j];
-                xy[2 * i + 1] = xy[2 * j + 1];
-            }
-            return;
-        }
-        case Mode::cocircular: {
-            // Lattice points of one circle (exactly cocircular), possibly with its centre, on
-            // up to four circles with integer centres; scaled by a power of two.
-            const auto& circle = circle_points();
-            const int scale = static_cast<int>(parameter >> 2) * 16 - 500;  // stays finite
-            for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
-                const std::uint64_t b = bits_of(xy[i]);
-                const auto& p = circle[b % circle.size()];
-                const std::uint64_t circles = 1u + (parameter & 3u);
-                const int centre = static_cast<int>(bits_of(xy[i + 1]) % circles) * 1500;
-                const bool at_centre = (b >> 20) % 16 == 0;
-                xy[i] = std::ldexp(static_cast<double>((at_centre ? 0 : p[0]) + centre), scale);
-                xy[i + 1] = std::ldexp(static_cast<double>(at_centre ? 0 : p[1]), scale);
-            }
-            return;
-        }
+    if (mode != Mode::cocircular) {
+        // The shared modes: lattices of 3- to 8-bit integers, 16 x 16 ulp lattices.
+        fz::reshape_shared(xy, 2, mode, parameter, {3, 4, 6, 8}, 16);
+        return;
+    }
+    // Lattice points of one circle (exactly cocircular), possibly with its centre, on
+    // up to four circles with integer centres; scaled by a power of two.
+    const auto& circle = circle_points();
+    const int scale = static_cast<int>(parameter >> 2) * 16 - 500;  // stays finite
+    for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
+        const std::uint64_t b = fz::bits_of(xy[i]);
+        const auto& p = circle[b % circle.size()];
+        const std::uint64_t circles = 1u + (parameter & 3u);
+        const int centre = static_cast<int>(fz::bits_of(xy[i + 1]) % circles) * 1500;
+        const bool at_centre = (b >> 20) % 16 == 0;
+        xy[i] = std::ldexp(static_cast<double>((at_centre ? 0 : p[0]) + centre), scale);
+        xy[i + 1] = std::ldexp(static_cast<double>(at_centre ? 0 : p[1]), scale);
     }
 }
 
 [[noreturn]] void fail(const std::vector<double>& xy, const std::string& what) {
-    std::fprintf(stderr, "fuzz_delaunay_2d: %s\npoints (%zu):", what.c_str(), xy.size() / 2);
-    for (std::size_t i = 0; i + 1 < xy.size(); i += 2)
-        std::fprintf(stderr, " (%a, %a)", xy[i], xy[i + 1]);
-    std::fprintf(stderr, "\n");
-    __builtin_trap();
+    fz::fail_points("fuzz_delaunay_2d", xy, 2, what);
 }
 
 using Triangles = std::vector<std::array<tri::VertIdx, 3>>;
@@ -197,20 +146,11 @@ bool neighbors_mutual(const tri::Delaunay2Result& r) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const std::size_t trailer = size % 8;
-    const Mode mode = trailer > 0
-                          ? static_cast<Mode>(data[size - trailer] % static_cast<int>(Mode::count))
-                          : Mode::raw;
-    const std::uint8_t parameter = trailer > 1 ? data[size - trailer + 1] : 0;
-    const bool raw_values = mode == Mode::raw || mode == Mode::duplicates;
-    const std::size_t doubles =
-        std::min(size / 8, 2 * (raw_values ? kMaxRawPoints : kMaxPoints)) & ~std::size_t{1};
-    std::vector<double> xy(doubles);
-    if (doubles > 0) std::memcpy(xy.data(), data, doubles * sizeof(double));
-    reshape(xy, mode, parameter);
+    fz::PointsInput<Mode> in = fz::decode_points<Mode>(data, size, 2, kMaxPoints, kMaxRawPoints);
+    std::vector<double>& xy = in.xs;
+    reshape(xy, in.mode, in.parameter);
     // Orders and the order seed from the data too, so the corpus explores them.
-    std::uint64_t hash = 1469598103934665603ull;  // FNV-1a
-    for (std::size_t i = 0; i < size; ++i) hash = (hash ^ data[i]) * 1099511628211ull;
+    const std::uint64_t hash = in.hash;
     auto options = [hash](std::size_t a) {
         return tri::Delaunay2Options{kOrders[(hash >> (2 * a)) % 3], hash >> 8};
     };
@@ -219,25 +159,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                kOrderNames[static_cast<std::size_t>(options(a).order)] + ", seed " +
                std::to_string(options(a).seed) + ")";
     };
-
-    const auto bad = std::find_if(xy.begin(), xy.end(), [](double v) { return !std::isfinite(v); });
-    if (bad != xy.end()) {
-        const auto vertex = static_cast<std::uint32_t>((bad - xy.begin()) / 2);
-        for (std::size_t a = 0; a < kAlgorithms.size(); ++a) {
-            try {
-                kAlgorithms[a].build(xy, options(a));
-            } catch (const exactmesh::NonFiniteCoordinate& e) {
-                if (e.vertex() != vertex) {
-                    fail(xy, label(a) + ": NonFiniteCoordinate names point " +
-                                 std::to_string(e.vertex()) + ", the first is " +
-                                 std::to_string(vertex));
-                }
-                continue;
-            } catch (const std::exception& e) {
-                fail(xy, label(a) + " threw something else on non-finite input: " + e.what());
-            }
-            fail(xy, label(a) + " accepted a non-finite coordinate");
-        }
+    if (fz::check_non_finite_rejected(
+            xy, 2, kAlgorithms.size(), [&](std::size_t a) { kAlgorithms[a].build(xy, options(a)); },
+            label, [&](const std::string& what) { fail(xy, what); })) {
         return 0;
     }
 
@@ -268,7 +192,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
     }
     if (xy.size() / 2 <= kOracleMaxPoints) {
-        const exactmesh::triangulation::NaiveDelaunay2 oracle = exactmesh::triangulation::delaunay_2d_naive(xy);
+        const exactmesh::triangulation::NaiveDelaunay2 oracle =
+            exactmesh::triangulation::delaunay_2d_naive(xy);
         for (std::size_t a = 0; a < kAlgorithms.size(); ++a) {
             const std::string problem = exactmesh::triangulation::compare_with_delaunay_2d_naive(
                 xy, results[a].triangles, oracle, results[a].merged_into);

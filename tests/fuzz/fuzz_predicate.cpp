@@ -14,32 +14,30 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
 #include "tests/fuzz/fuzz_reference.hpp"
+#include "tests/support/predicate_calls.hpp"
 
 // Outside an anonymous namespace: three of the four traits go unused in each executable.
 namespace exactmesh::fuzz::predicate_traits {
 
 namespace pred = exactmesh::predicates;
 
-/// Calls predicate f on the first N points of p.
-template <std::size_t N, class F>
-auto call(F f, const double* const* p) {
-    if constexpr (N == 3) {
-        return f(p[0], p[1], p[2]);
-    } else if constexpr (N == 4) {
-        return f(p[0], p[1], p[2], p[3]);
-    } else {
-        return f(p[0], p[1], p[2], p[3], p[4]);
-    }
-}
+using exactmesh::testing::call_on_points;
 
 /// The three stages check_input compares: the adaptive predicate, its exact stages, its filter.
 template <std::size_t N, auto Adaptive, auto Exact, auto Filter>
 struct Stages {
     static constexpr std::size_t kPoints = N;
-    static pred::Sign adaptive(const double* const* p) { return call<N>(Adaptive, p); }
-    static pred::Sign exact(const double* const* p) { return call<N>(Exact, p); }
-    static std::optional<pred::Sign> filter(const double* const* p) { return call<N>(Filter, p); }
+    static pred::Sign adaptive(const double* const* p) { return call_on_points<N>(Adaptive, p); }
+    static pred::Sign exact(const double* const* p) { return call_on_points<N>(Exact, p); }
+    static std::optional<pred::Sign> filter(const double* const* p) {
+        return call_on_points<N>(Filter, p);
+    }
 };
+
+/// Orders of four points that test a predicate alternating in all of them: the identity, even and
+/// odd ones, and ones that move the last point.
+constexpr std::array<std::array<int, 4>, 5> kFourPointPermutations = {
+    {{0, 1, 2, 3}, {1, 2, 0, 3}, {1, 0, 2, 3}, {3, 1, 2, 0}, {1, 2, 3, 0}}};
 
 struct Orient2d : Stages<3, &pred::orient2d, &pred::orient2d_exact, &pred::orient2d_filter> {
     static constexpr const char* kName = "orient2d";
@@ -55,8 +53,7 @@ struct Orient3d : Stages<4, &pred::orient3d, &pred::orient3d_exact, &pred::orien
     static constexpr std::size_t kDim = 3;
     static constexpr bool kLifted = false;
     // det [a-d; b-d; c-d] is alternating in all four points, d included.
-    static constexpr std::array<std::array<int, 4>, 5> kPermutations = {
-        {{0, 1, 2, 3}, {1, 2, 0, 3}, {1, 0, 2, 3}, {3, 1, 2, 0}, {1, 2, 3, 0}}};
+    static constexpr auto kPermutations = kFourPointPermutations;
 };
 
 struct Incircle : Stages<4, &pred::incircle, &pred::incircle_exact, &pred::incircle_filter> {
@@ -64,8 +61,7 @@ struct Incircle : Stages<4, &pred::incircle, &pred::incircle_exact, &pred::incir
     static constexpr std::size_t kDim = 2;
     static constexpr bool kLifted = true;
     // The lifted 4x4 determinant is alternating in all four points, d included.
-    static constexpr std::array<std::array<int, 4>, 5> kPermutations = {
-        {{0, 1, 2, 3}, {1, 2, 0, 3}, {1, 0, 2, 3}, {3, 1, 2, 0}, {1, 2, 3, 0}}};
+    static constexpr auto kPermutations = kFourPointPermutations;
 };
 
 struct Insphere : Stages<5, &pred::insphere, &pred::insphere_exact, &pred::insphere_filter> {
@@ -80,5 +76,6 @@ struct Insphere : Stages<5, &pred::insphere, &pred::insphere_exact, &pred::insph
 }  // namespace exactmesh::fuzz::predicate_traits
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    return exactmesh::fuzz::check_input<exactmesh::fuzz::predicate_traits::EXACTMESH_FUZZ_PREDICATE>(data, size);
+    return exactmesh::fuzz::check_input<
+        exactmesh::fuzz::predicate_traits::EXACTMESH_FUZZ_PREDICATE>(data, size);
 }

@@ -24,6 +24,7 @@
 
 #include "base/errors.hpp"
 #include "predicates/sign.hpp"
+#include "tests/fuzz/fuzz_points.hpp"
 
 namespace exactmesh::fuzz {
 
@@ -91,19 +92,6 @@ constexpr int parity(const std::array<int, N>& perm) {
         }
     }
     return inversions % 2 == 0 ? 1 : -1;
-}
-
-/// x moved by `ulps` representable doubles.
-inline double nudge(double x, int ulps) {
-    const double direction = ulps > 0 ? INFINITY : -INFINITY;
-    for (int i = 0; i < std::abs(ulps); ++i) x = std::nextafter(x, direction);
-    return x;
-}
-
-inline std::uint64_t bits_of(double x) {
-    std::uint64_t b;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
 }
 
 inline double from_bits(std::uint64_t b) {

@@ -63,20 +63,23 @@ TEST(Io_TetGen, NodeFilesReadExactlyInEitherBase) {
 }
 
 TEST(Io_TetGen, NodeErrorsNameFileLineAndProblem) {
-    EXPECT_TRUE(fails_with([] { io::parse_tetgen_node("3 2 0 0\n", "x.node"); }, 1,
-                           "x.node:1: dimension must be 3, got 2"));
-    EXPECT_TRUE(fails_with([] { io::parse_tetgen_node("2 3\n0 1 2 3\n1 1 2\n", "x.node"); }, 3,
-                           "expected 4 fields (number, x, y, z), got 3"));
-    EXPECT_TRUE(fails_with([] { io::parse_tetgen_node("2 3\n0 1 2 3\n1 1 2 nan\n", "x.node"); }, 3,
-                           "non-finite z coordinate 'nan'"));
-    EXPECT_TRUE(fails_with([] { io::parse_tetgen_node("2 3\n0 1 2 3\n1 1 2 1e999\n", "x.node"); }, 3,
-                           "z coordinate '1e999' overflows a double"));
-    EXPECT_TRUE(fails_with([] { io::parse_tetgen_node("3 3\n0 1 2 3\n1 1 2 3\n", "x.node"); }, 3,
-                           "file ends after 2 of 3 announced vertices"));
-    EXPECT_TRUE(fails_with([] { io::parse_tetgen_node("1 3\n0 1 2 3\n1 1 2 3\n", "x.node"); }, 3,
-                           "unexpected data after the 1 announced vertex"));
-    EXPECT_TRUE(fails_with([] { io::parse_tetgen_node("2 3\n0 1 2 3\n5 1 2 3\n", "x.node"); }, 3,
-                           "vertex number 5 out of sequence, expected 1"));
+    struct Case {
+        const char* text;
+        std::uint64_t line;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"3 2 0 0\n", 1, "x.node:1: dimension must be 3, got 2"},
+        {"2 3\n0 1 2 3\n1 1 2\n", 3, "expected 4 fields (number, x, y, z), got 3"},
+        {"2 3\n0 1 2 3\n1 1 2 nan\n", 3, "non-finite z coordinate 'nan'"},
+        {"2 3\n0 1 2 3\n1 1 2 1e999\n", 3, "z coordinate '1e999' overflows a double"},
+        {"3 3\n0 1 2 3\n1 1 2 3\n", 3, "file ends after 2 of 3 announced vertices"},
+        {"1 3\n0 1 2 3\n1 1 2 3\n", 3, "unexpected data after the 1 announced vertex"},
+        {"2 3\n0 1 2 3\n5 1 2 3\n", 3, "vertex number 5 out of sequence, expected 1"}};
+    for (const Case& c : cases) {
+        EXPECT_TRUE(fails_with([&] { io::parse_tetgen_node(c.text, "x.node"); }, c.line, c.message))
+            << c.text;
+    }
     // The dimension a header declares picks the reader.
     const std::filesystem::path dir =
         std::filesystem::temp_directory_path() / "exactmesh_tetgen_test";

@@ -19,6 +19,7 @@
 #include "predicates/insphere.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
+#include "tests/support/predicate_calls.hpp"
 
 namespace pr = exactmesh::predicates;
 using pr::Sign;
@@ -124,40 +125,33 @@ void expect_all_pass(const char* name, const Outcome& out) {
     EXPECT_EQ(out.reference_wrong, 0) << name << "\n" << out.first_failures;
 }
 
-Outcome run_orient2d() {
-    return run(load("orient2d", 6), [](const double* x) {
-        const double *a = x, *b = x + 2, *c = x + 4;
-        return Results{pr::orient2d(a, b, c), pr::orient2d_exact(a, b, c),
-                       pr::orient2d_filter(a, b, c), pr::reference::orient2d(a, b, c),
-                       pr::orient2d_fast(a, b, c)};
+/// The corpus of the predicate `name` of N points in D dimensions through every stage (as
+/// EXACTMESH_TEST_STAGES lists them).
+template <std::size_t N, std::size_t D, auto Adaptive, auto Exact, auto Filter, auto Reference,
+          auto /*ReferenceDifferences*/, auto Fast>
+Outcome run_predicate(const std::string& name) {
+    return run(load(name, N * D), [](const double* x) {
+        using exactmesh::testing::call_on_flat;
+        return Results{call_on_flat<N, D>(Adaptive, x), call_on_flat<N, D>(Exact, x),
+                       call_on_flat<N, D>(Filter, x), call_on_flat<N, D>(Reference, x),
+                       call_on_flat<N, D>(Fast, x)};
     });
+}
+
+Outcome run_orient2d() {
+    return run_predicate<3, 2, EXACTMESH_TEST_STAGES(orient2d)>("orient2d");
 }
 
 Outcome run_incircle() {
-    return run(load("incircle", 8), [](const double* x) {
-        const double *a = x, *b = x + 2, *c = x + 4, *d = x + 6;
-        return Results{pr::incircle(a, b, c, d), pr::incircle_exact(a, b, c, d),
-                       pr::incircle_filter(a, b, c, d), pr::reference::incircle(a, b, c, d),
-                       pr::incircle_fast(a, b, c, d)};
-    });
+    return run_predicate<4, 2, EXACTMESH_TEST_STAGES(incircle)>("incircle");
 }
 
 Outcome run_orient3d() {
-    return run(load("orient3d", 12), [](const double* x) {
-        const double *a = x, *b = x + 3, *c = x + 6, *d = x + 9;
-        return Results{pr::orient3d(a, b, c, d), pr::orient3d_exact(a, b, c, d),
-                       pr::orient3d_filter(a, b, c, d), pr::reference::orient3d(a, b, c, d),
-                       pr::orient3d_fast(a, b, c, d)};
-    });
+    return run_predicate<4, 3, EXACTMESH_TEST_STAGES(orient3d)>("orient3d");
 }
 
 Outcome run_insphere() {
-    return run(load("insphere", 15), [](const double* x) {
-        const double *a = x, *b = x + 3, *c = x + 6, *d = x + 9, *e = x + 12;
-        return Results{pr::insphere(a, b, c, d, e), pr::insphere_exact(a, b, c, d, e),
-                       pr::insphere_filter(a, b, c, d, e), pr::reference::insphere(a, b, c, d, e),
-                       pr::insphere_fast(a, b, c, d, e)};
-    });
+    return run_predicate<5, 3, EXACTMESH_TEST_STAGES(insphere)>("insphere");
 }
 
 }  // namespace

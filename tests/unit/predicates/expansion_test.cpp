@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "predicates/expansion.hpp"
+#include "tests/support/uniform_draws.hpp"
 
 namespace pr = exactmesh::predicates;
 using pr::Sign;
@@ -106,9 +107,7 @@ std::string expansion_defect(const double* e, int n, bool strongly) {
     return {};
 }
 
-int uniform_int(Rng& rng, int lo, int hi) {
-    return std::uniform_int_distribution<int>(lo, hi)(rng);
-}
+using exactmesh::testing::uniform_int;
 
 /// +-m * 2^e with a full random 53-bit significand m in [1, 2) and e in [lo, hi].
 double random_double(Rng& rng, int lo, int hi) {

@@ -23,6 +23,8 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/sos.hpp"
+#include "tests/support/predicate_calls.hpp"
+#include "tests/support/uniform_draws.hpp"
 
 namespace pr = exactmesh::predicates;
 using pr::Sign;
@@ -45,41 +47,26 @@ struct Predicate {
     double (*fast)(const double*);
 };
 
-const Predicate kOrient2d{"orient2d",
-                          3,
-                          2,
-                          [](const double* x) { return pr::orient2d(x, x + 2, x + 4); },
-                          [](const double* x) { return pr::orient2d_exact(x, x + 2, x + 4); },
-                          [](const double* x) { return pr::orient2d_filter(x, x + 2, x + 4); },
-                          [](const double* x) { return pr::reference::orient2d(x, x + 2, x + 4); },
-                          [](const double* x) { return pr::orient2d_fast(x, x + 2, x + 4); }};
-const Predicate kIncircle{
-    "incircle",
-    4,
-    2,
-    [](const double* x) { return pr::incircle(x, x + 2, x + 4, x + 6); },
-    [](const double* x) { return pr::incircle_exact(x, x + 2, x + 4, x + 6); },
-    [](const double* x) { return pr::incircle_filter(x, x + 2, x + 4, x + 6); },
-    [](const double* x) { return pr::reference::incircle(x, x + 2, x + 4, x + 6); },
-    [](const double* x) { return pr::incircle_fast(x, x + 2, x + 4, x + 6); }};
-const Predicate kOrient3d{
-    "orient3d",
-    4,
-    3,
-    [](const double* x) { return pr::orient3d(x, x + 3, x + 6, x + 9); },
-    [](const double* x) { return pr::orient3d_exact(x, x + 3, x + 6, x + 9); },
-    [](const double* x) { return pr::orient3d_filter(x, x + 3, x + 6, x + 9); },
-    [](const double* x) { return pr::reference::orient3d(x, x + 3, x + 6, x + 9); },
-    [](const double* x) { return pr::orient3d_fast(x, x + 3, x + 6, x + 9); }};
-const Predicate kInsphere{
-    "insphere",
-    5,
-    3,
-    [](const double* x) { return pr::insphere(x, x + 3, x + 6, x + 9, x + 12); },
-    [](const double* x) { return pr::insphere_exact(x, x + 3, x + 6, x + 9, x + 12); },
-    [](const double* x) { return pr::insphere_filter(x, x + 3, x + 6, x + 9, x + 12); },
-    [](const double* x) { return pr::reference::insphere(x, x + 3, x + 6, x + 9, x + 12); },
-    [](const double* x) { return pr::insphere_fast(x, x + 3, x + 6, x + 9, x + 12); }};
+/// The Predicate of N points in D dimensions with these stages (as EXACTMESH_TEST_STAGES lists
+/// them).
+template <std::size_t N, std::size_t D, auto Adaptive, auto Exact, auto Filter, auto Reference,
+          auto /*ReferenceDifferences*/, auto Fast>
+Predicate make_predicate(const char* name) {
+    using exactmesh::testing::call_on_flat;
+    return {name,
+            N,
+            D,
+            [](const double* x) { return call_on_flat<N, D>(Adaptive, x); },
+            [](const double* x) { return call_on_flat<N, D>(Exact, x); },
+            [](const double* x) { return call_on_flat<N, D>(Filter, x); },
+            [](const double* x) { return call_on_flat<N, D>(Reference, x); },
+            [](const double* x) { return call_on_flat<N, D>(Fast, x); }};
+}
+
+const Predicate kOrient2d = make_predicate<3, 2, EXACTMESH_TEST_STAGES(orient2d)>("orient2d");
+const Predicate kIncircle = make_predicate<4, 2, EXACTMESH_TEST_STAGES(incircle)>("incircle");
+const Predicate kOrient3d = make_predicate<4, 3, EXACTMESH_TEST_STAGES(orient3d)>("orient3d");
+const Predicate kInsphere = make_predicate<5, 3, EXACTMESH_TEST_STAGES(insphere)>("insphere");
 
 const std::array<const Predicate*, 4> kAll = {&kOrient2d, &kIncircle, &kOrient3d, &kInsphere};
 
@@ -124,13 +111,8 @@ struct Checker {
     }
 };
 
-double uniform(Rng& rng, double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-int uniform_int(Rng& rng, int lo, int hi) {
-    return std::uniform_int_distribution<int>(lo, hi)(rng);
-}
+using exactmesh::testing::uniform;
+using exactmesh::testing::uniform_int;
 
 double random_sign(Rng& rng, double x) {
     return (rng() & 1u) != 0u ? x : -x;
@@ -190,31 +172,50 @@ std::vector<double> scale(std::vector<double> x, int k) {
     return x;
 }
 
+/// `count` tuples of p, case c with every coordinate coordinate(c) with a random sign.
+template <class Coordinate>
+void check_random_tuples(Checker& checker, const Predicate& p, Rng& rng, int count,
+                         Coordinate coordinate) {
+    const auto n = static_cast<std::size_t>(p.points * p.dims);
+    for (int c = 0; c < count; ++c) {
+        std::vector<double> x(n);
+        for (double& v : x) v = random_sign(rng, coordinate(c));
+        checker.check(p, x);
+    }
+}
+
+/// Moves one random coordinate of x by one ulp, up or down.
+void nudge_one_coordinate(std::vector<double>& x, Rng& rng, bool up) {
+    double& v = x[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(x.size()) - 1))];
+    v = std::nextafter(v, up ? kInf : -kInf);
+}
+
+/// 600 exactly degenerate tuples of p, each scaled by 2^exponent(), then one coordinate of it
+/// moved by an ulp (up on odd cases).
+template <class Exponent>
+void check_scaled_degenerate(Checker& checker, const Predicate& p, Rng& rng, Exponent exponent) {
+    for (int c = 0; c < 600; ++c) {
+        std::vector<double> x = scale(degenerate_tuple(p, rng), exponent());
+        checker.check(p, x);
+        nudge_one_coordinate(x, rng, (c % 2) != 0);
+        checker.check(p, x);
+    }
+}
+
 }  // namespace
 
 TEST(Predicates_Overflow, HugeCoordinatesWhoseProductsOverflowGetExactSigns) {
     Rng rng(41);
     for (const Predicate* p : kAll) {
         Checker checker;
-        const std::size_t n = static_cast<std::size_t>(p->points * p->dims);
-        for (int c = 0; c < 3000; ++c) {
-            std::vector<double> x(n);
-            for (double& v : x) {
-                // 1e160..1e308 (up to DBL_MAX itself).
-                const int e = uniform_int(rng, 160, 308);
-                v = random_sign(rng, e == 308 ? uniform(rng, 1.0, 1.7976931348623157) * 1e308
-                                              : uniform(rng, 1.0, 10.0) * std::pow(10.0, e));
-            }
-            checker.check(*p, x);
-        }
+        check_random_tuples(checker, *p, rng, 3000, [&](int) {
+            // 1e160..1e308 (up to DBL_MAX itself).
+            const int e = uniform_int(rng, 160, 308);
+            return e == 308 ? uniform(rng, 1.0, 1.7976931348623157) * 1e308
+                            : uniform(rng, 1.0, 10.0) * std::pow(10.0, e);
+        });
         // Exactly degenerate tuples scaled to the top of the range, and 1-ulp perturbations.
-        for (int c = 0; c < 600; ++c) {
-            std::vector<double> x = scale(degenerate_tuple(*p, rng), uniform_int(rng, 530, 1017));
-            checker.check(*p, x);
-            double& v = x[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(n) - 1))];
-            v = std::nextafter(v, (c % 2) != 0 ? kInf : -kInf);
-            checker.check(*p, x);
-        }
+        check_scaled_degenerate(checker, *p, rng, [&] { return uniform_int(rng, 530, 1017); });
         EXPECT_GT(checker.zeros, 500) << p->name;
         EXPECT_GT(checker.fast_wrong, 1000) << p->name << ": the plain double baseline overflows";
         checker.expect_clean(p->name);
@@ -265,34 +266,24 @@ TEST(Predicates_Overflow, TinyAndSubnormalCoordinatesWhoseProductsUnderflowGetEx
     Rng rng(42);
     for (const Predicate* p : kAll) {
         Checker checker;
-        const std::size_t n = static_cast<std::size_t>(p->points * p->dims);
-        for (int c = 0; c < 3000; ++c) {
-            std::vector<double> x(n);
-            for (double& v : x) {
-                switch (c % 3) {
-                    case 0:  // 1e-160..1e-320: products underflow, the smallest are subnormal
-                        v = uniform(rng, 1.0, 10.0) * std::pow(10.0, -uniform_int(rng, 160, 307));
-                        if (uniform_int(rng, 0, 3) == 0)
-                            v = std::ldexp(uniform(rng, 1.0, 2.0), -uniform_int(rng, 1023, 1063));
-                        break;
-                    case 1:  // any subnormal
-                        v = std::ldexp(static_cast<double>(rng() >> 12), -1074);
-                        break;
-                    default:  // subnormal integers: exact degeneracies below the normal range
-                        v = uniform_int(rng, -4, 4) * kTrueMin;
-                        break;
-                }
-                v = random_sign(rng, v);
+        check_random_tuples(checker, *p, rng, 3000, [&](int c) {
+            double v = 0.0;
+            switch (c % 3) {
+                case 0:  // 1e-160..1e-320: products underflow, the smallest are subnormal
+                    v = uniform(rng, 1.0, 10.0) * std::pow(10.0, -uniform_int(rng, 160, 307));
+                    if (uniform_int(rng, 0, 3) == 0)
+                        v = std::ldexp(uniform(rng, 1.0, 2.0), -uniform_int(rng, 1023, 1063));
+                    break;
+                case 1:  // any subnormal
+                    v = std::ldexp(static_cast<double>(rng() >> 12), -1074);
+                    break;
+                default:  // subnormal integers: exact degeneracies below the normal range
+                    v = uniform_int(rng, -4, 4) * kTrueMin;
+                    break;
             }
-            checker.check(*p, x);
-        }
-        for (int c = 0; c < 600; ++c) {
-            std::vector<double> x = scale(degenerate_tuple(*p, rng), -uniform_int(rng, 540, 1074));
-            checker.check(*p, x);
-            double& v = x[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(n) - 1))];
-            v = std::nextafter(v, (c % 2) != 0 ? kInf : -kInf);
-            checker.check(*p, x);
-        }
+            return v;
+        });
+        check_scaled_degenerate(checker, *p, rng, [&] { return -uniform_int(rng, 540, 1074); });
         // Tiny but nondegenerate: the double evaluation underflows to zero or loses the sign.
         EXPECT_GT(checker.fast_wrong, 200) << p->name;
         EXPECT_GT(checker.zeros, 200) << p->name;
@@ -304,31 +295,20 @@ TEST(Predicates_Overflow, MixedHugeAndSubnormalCoordinatesGetExactSigns) {
     Rng rng(43);
     for (const Predicate* p : kAll) {
         Checker checker;
-        const std::size_t n = static_cast<std::size_t>(p->points * p->dims);
-        for (int c = 0; c < 2000; ++c) {
-            std::vector<double> x(n);
-            for (double& v : x) {
-                switch (uniform_int(rng, 0, 4)) {
-                    case 0:
-                        v = uniform(rng, 0.5, 1.0) * kMax;
-                        break;
-                    case 1:
-                        v = std::ldexp(static_cast<double>(rng() >> 12), -1074);
-                        break;
-                    case 2:
-                        v = uniform_int(rng, -2, 2) * kTrueMin;
-                        break;
-                    case 3:
-                        v = std::ldexp(uniform(rng, 1.0, 2.0), uniform_int(rng, -1022, 1023));
-                        break;
-                    default:
-                        v = 0.0;
-                        break;
-                }
-                v = random_sign(rng, v);
+        check_random_tuples(checker, *p, rng, 2000, [&](int) {
+            switch (uniform_int(rng, 0, 4)) {
+                case 0:
+                    return uniform(rng, 0.5, 1.0) * kMax;
+                case 1:
+                    return std::ldexp(static_cast<double>(rng() >> 12), -1074);
+                case 2:
+                    return uniform_int(rng, -2, 2) * kTrueMin;
+                case 3:
+                    return std::ldexp(uniform(rng, 1.0, 2.0), uniform_int(rng, -1022, 1023));
+                default:
+                    return 0.0;
             }
-            checker.check(*p, x);
-        }
+        });
         checker.expect_clean(p->name);
     }
 }
@@ -351,8 +331,7 @@ TEST(Predicates_Overflow, ScalingByAPowerOfTwoKeepsEverySign) {
                 for (double& v : x) v = uniform(rng, -1.0, 1.0);
                 if (c % 3 == 2) {  // one coordinate nudged off an exact degeneracy
                     x = degenerate_tuple(*p, rng);
-                    double& v = x[static_cast<std::size_t>(uniform_int(rng, 0, static_cast<int>(n) - 1))];
-                    v = std::nextafter(v, (c % 2) != 0 ? kInf : -kInf);
+                    nudge_one_coordinate(x, rng, (c % 2) != 0);
                 }
             }
             const Sign at_one = p->reference(x.data());

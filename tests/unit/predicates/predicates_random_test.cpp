@@ -21,7 +21,9 @@
 #include "predicates/insphere.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
+#include "tests/support/predicate_calls.hpp"
 #include "tests/support/test_scale.hpp"
+#include "tests/support/uniform_draws.hpp"
 
 namespace pr = exactmesh::predicates;
 using pr::Sign;
@@ -45,60 +47,26 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // The predicates under test, each with its stages and both reference forms.
 
 using Args = const double* const*;
+using exactmesh::testing::call_on_points;
 
-struct Orient2d {
-    static constexpr int kPoints = 3, kDims = 2;
-    static constexpr const char* kName = "orient2d";
-    static Sign full(Args p) { return pr::orient2d(p[0], p[1], p[2]); }
-    static Sign exact(Args p) { return pr::orient2d_exact(p[0], p[1], p[2]); }
-    static std::optional<Sign> filter(Args p) { return pr::orient2d_filter(p[0], p[1], p[2]); }
-    static Sign reference(Args p) { return pr::reference::orient2d_differences(p[0], p[1], p[2]); }
-    static Sign reference_raw(Args p) { return pr::reference::orient2d(p[0], p[1], p[2]); }
+/// The stages of the predicate `Label` of Points points in Dims dimensions (in the order of
+/// EXACTMESH_TEST_STAGES), over pointers to its points.
+template <exactmesh::testing::Name Label, int Points, int Dims, auto Full, auto Exact, auto Filter,
+          auto ReferenceRaw, auto Reference, auto Fast>
+struct Stages {
+    static constexpr const char* kName = Label.text;
+    static constexpr int kPoints = Points, kDims = Dims;
+    static Sign full(Args p) { return call_on_points<Points>(Full, p); }
+    static Sign exact(Args p) { return call_on_points<Points>(Exact, p); }
+    static std::optional<Sign> filter(Args p) { return call_on_points<Points>(Filter, p); }
+    static Sign reference(Args p) { return call_on_points<Points>(Reference, p); }
+    static Sign reference_raw(Args p) { return call_on_points<Points>(ReferenceRaw, p); }
 };
 
-struct Orient3d {
-    static constexpr int kPoints = 4, kDims = 3;
-    static constexpr const char* kName = "orient3d";
-    static Sign full(Args p) { return pr::orient3d(p[0], p[1], p[2], p[3]); }
-    static Sign exact(Args p) { return pr::orient3d_exact(p[0], p[1], p[2], p[3]); }
-    static std::optional<Sign> filter(Args p) {
-        return pr::orient3d_filter(p[0], p[1], p[2], p[3]);
-    }
-    static Sign reference(Args p) {
-        return pr::reference::orient3d_differences(p[0], p[1], p[2], p[3]);
-    }
-    static Sign reference_raw(Args p) { return pr::reference::orient3d(p[0], p[1], p[2], p[3]); }
-};
-
-struct Incircle {
-    static constexpr int kPoints = 4, kDims = 2;
-    static constexpr const char* kName = "incircle";
-    static Sign full(Args p) { return pr::incircle(p[0], p[1], p[2], p[3]); }
-    static Sign exact(Args p) { return pr::incircle_exact(p[0], p[1], p[2], p[3]); }
-    static std::optional<Sign> filter(Args p) {
-        return pr::incircle_filter(p[0], p[1], p[2], p[3]);
-    }
-    static Sign reference(Args p) {
-        return pr::reference::incircle_differences(p[0], p[1], p[2], p[3]);
-    }
-    static Sign reference_raw(Args p) { return pr::reference::incircle(p[0], p[1], p[2], p[3]); }
-};
-
-struct Insphere {
-    static constexpr int kPoints = 5, kDims = 3;
-    static constexpr const char* kName = "insphere";
-    static Sign full(Args p) { return pr::insphere(p[0], p[1], p[2], p[3], p[4]); }
-    static Sign exact(Args p) { return pr::insphere_exact(p[0], p[1], p[2], p[3], p[4]); }
-    static std::optional<Sign> filter(Args p) {
-        return pr::insphere_filter(p[0], p[1], p[2], p[3], p[4]);
-    }
-    static Sign reference(Args p) {
-        return pr::reference::insphere_differences(p[0], p[1], p[2], p[3], p[4]);
-    }
-    static Sign reference_raw(Args p) {
-        return pr::reference::insphere(p[0], p[1], p[2], p[3], p[4]);
-    }
-};
+using Orient2d = Stages<"orient2d", 3, 2, EXACTMESH_TEST_STAGES(orient2d)>;
+using Orient3d = Stages<"orient3d", 4, 3, EXACTMESH_TEST_STAGES(orient3d)>;
+using Incircle = Stages<"incircle", 4, 2, EXACTMESH_TEST_STAGES(incircle)>;
+using Insphere = Stages<"insphere", 5, 3, EXACTMESH_TEST_STAGES(insphere)>;
 
 // ---------------------------------------------------------------------------------------------
 // The harness: every case is compared with the reference through the adaptive predicate, the
@@ -201,13 +169,8 @@ class Harness {
 
 using Rng = std::mt19937_64;
 
-double uniform(Rng& rng, double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-int uniform_int(Rng& rng, int lo, int hi) {
-    return std::uniform_int_distribution<int>(lo, hi)(rng);
-}
+using exactmesh::testing::uniform;
+using exactmesh::testing::uniform_int;
 
 /// +-[1,2) * 2^e with e uniform in [lo, hi]: magnitudes spread over many binades.
 double mixed_magnitude(Rng& rng, int lo, int hi) {
@@ -262,42 +225,44 @@ void near_degenerate(Rng& rng, typename Harness<P>::Case& c) {
     for (int i = 0; i < P::kPoints * kDims; ++i) c[i] = std::ldexp(c[i], e) + offset[i % kDims];
 }
 
+/// One suite of `count` random cases, each made by fill(case).
+template <class P, class Fill>
+void run_random_suite(Harness<P>& h, const std::string& name, long exact_every, long raw_every,
+                      long count, Fill fill) {
+    typename Harness<P>::Case c;
+    h.begin_suite(name, exact_every, raw_every);
+    for (long i = 0; i < count; ++i) {
+        fill(c);
+        h.check(c);
+    }
+    h.end_suite();
+}
+
+/// A filler that draws every coordinate of a case from coordinate().
+template <class Coordinate>
+auto each_coordinate(Coordinate coordinate) {
+    return [coordinate](auto& c) mutable {
+        for (double& x : c) x = coordinate();
+    };
+}
+
 template <class P>
 void run_random(Harness<P>& h, std::uint64_t seed) {
     Rng rng(seed);
-    typename Harness<P>::Case c;
     const long n = scaled(kRandomCasesPerDistribution);
     // _exact on every 4th random case (it is checked on every degenerate case below); the raw
     // reference on ~10^4 cases overall, to tie the fast difference form to the raw definition.
     const long exact_every = 4, raw_every = 100;
 
-    h.begin_suite("random: uniform in [-1,1]", exact_every, raw_every);
-    for (long i = 0; i < n; ++i) {
-        for (double& x : c) x = uniform(rng, -1.0, 1.0);
-        h.check(c);
-    }
-    h.end_suite();
-
-    h.begin_suite("random: integers in [0, 2^20]", exact_every, raw_every);
-    for (long i = 0; i < n; ++i) {
-        for (double& x : c) x = static_cast<double>(uniform_int(rng, 0, 1 << 20));
-        h.check(c);
-    }
-    h.end_suite();
-
-    h.begin_suite("random: mixed magnitudes 2^-60..2^60", exact_every, raw_every);
-    for (long i = 0; i < n; ++i) {
-        for (double& x : c) x = mixed_magnitude(rng, -60, 60);
-        h.check(c);
-    }
-    h.end_suite();
-
-    h.begin_suite("random: near-degenerate, rounded, translated", exact_every, raw_every);
-    for (long i = 0; i < n; ++i) {
-        near_degenerate<P>(rng, c);
-        h.check(c);
-    }
-    h.end_suite();
+    run_random_suite(h, "random: uniform in [-1,1]", exact_every, raw_every, n,
+                     each_coordinate([&] { return uniform(rng, -1.0, 1.0); }));
+    run_random_suite(
+        h, "random: integers in [0, 2^20]", exact_every, raw_every, n,
+        each_coordinate([&] { return static_cast<double>(uniform_int(rng, 0, 1 << 20)); }));
+    run_random_suite(h, "random: mixed magnitudes 2^-60..2^60", exact_every, raw_every, n,
+                     each_coordinate([&] { return mixed_magnitude(rng, -60, 60); }));
+    run_random_suite(h, "random: near-degenerate, rounded, translated", exact_every, raw_every, n,
+                     [&](typename Harness<P>::Case& c) { near_degenerate<P>(rng, c); });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -425,6 +390,24 @@ typename Harness<P>::Case tuple_case(const PointSet& s, const std::array<std::si
     return c;
 }
 
+/// The indices of the points of s, in order.
+std::vector<std::size_t> identity_order(const PointSet& s) {
+    std::vector<std::size_t> order(s.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    return order;
+}
+
+/// A tuple of P::kPoints distinct points of s: the first ones of `order` (indices into s) after
+/// shuffling it.
+template <class P>
+typename Harness<P>::Case random_tuple(const PointSet& s, std::vector<std::size_t>& order,
+                                       Rng& rng) {
+    std::shuffle(order.begin(), order.end(), rng);
+    std::array<std::size_t, 5> idx{};
+    std::copy_n(order.begin(), P::kPoints, idx.begin());
+    return tuple_case<P>(s, idx);
+}
+
 /// Random tuples of distinct points from each exactly degenerate set, at every exact scale: the
 /// predicate must be exactly Zero. Then every coordinate of a few tuples moved by 1..4 ulps
 /// each way, which must match the reference (mostly nonzero, of either sign).
@@ -442,13 +425,9 @@ void run_exact_configurations(Harness<P>& h, Rng& rng, const std::string& name,
     }
     h.begin_suite(name + ": exact zeros at all scales", 1, 8);
     for (const PointSet& s : scaled_sets) {
-        std::vector<std::size_t> order(s.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::vector<std::size_t> order = identity_order(s);
         for (long t = 0; t < tuples_per_set; ++t) {
-            std::shuffle(order.begin(), order.end(), rng);
-            std::array<std::size_t, 5> idx{};
-            std::copy_n(order.begin(), P::kPoints, idx.begin());
-            h.check(tuple_case<P>(s, idx), Expect::Zero);
+            h.check(random_tuple<P>(s, order, rng), Expect::Zero);
         }
     }
     h.end_suite();
@@ -456,13 +435,9 @@ void run_exact_configurations(Harness<P>& h, Rng& rng, const std::string& name,
 
     h.begin_suite(name + ": one coordinate moved 1..4 ulps", 1, 8);
     for (const PointSet& s : scaled_sets) {
-        std::vector<std::size_t> order(s.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::vector<std::size_t> order = identity_order(s);
         for (long t = 0; t < ulp_tuples_per_set; ++t) {
-            std::shuffle(order.begin(), order.end(), rng);
-            std::array<std::size_t, 5> idx{};
-            std::copy_n(order.begin(), P::kPoints, idx.begin());
-            const typename Harness<P>::Case base = tuple_case<P>(s, idx);
+            const typename Harness<P>::Case base = random_tuple<P>(s, order, rng);
             for (int i = 0; i < P::kPoints * P::kDims; ++i) {
                 for (const double direction : {-kInfinity, kInfinity}) {
                     typename Harness<P>::Case c = base;
@@ -526,52 +501,28 @@ void run_grid(Harness<P>& h, Rng& rng, int lo, int hi, int k, long count) {
 /// and small subnormal integers (exact degeneracies below the normal range).
 template <class P>
 void run_extreme_magnitudes(Harness<P>& h, Rng& rng, long count) {
-    typename Harness<P>::Case c;
-    h.begin_suite("random huge: |x| in 1e150..1e300", 1, 8);
-    for (long n = 0; n < count; ++n) {
-        for (double& x : c) x = decimal_magnitude(rng, 150, 299);
-        h.check(c);
-    }
-    h.end_suite();
-    h.begin_suite("random tiny: |x| in 1e-300..1e-150", 1, 8);
-    for (long n = 0; n < count; ++n) {
-        for (double& x : c) x = decimal_magnitude(rng, -300, -150);
-        h.check(c);
-    }
-    h.end_suite();
-    h.begin_suite("random mixed huge, tiny, unit, zero", 1, 8);
-    for (long n = 0; n < count; ++n) {
-        for (double& x : c) {
-            switch (uniform_int(rng, 0, 3)) {
-                case 0:
-                    x = decimal_magnitude(rng, 150, 299);
-                    break;
-                case 1:
-                    x = decimal_magnitude(rng, -300, -150);
-                    break;
-                case 2:
-                    x = uniform(rng, -1.0, 1.0);
-                    break;
-                default:
-                    x = 0.0;
-                    break;
-            }
-        }
-        h.check(c);
-    }
-    h.end_suite();
-    h.begin_suite("random subnormals", 1, 8);
-    for (long n = 0; n < count; ++n) {
-        for (double& x : c) x = subnormal(rng);
-        h.check(c);
-    }
-    h.end_suite();
-    h.begin_suite("random subnormal integers k * 2^-1074, |k| <= 3", 1, 8);
-    for (long n = 0; n < count; ++n) {
-        for (double& x : c) x = std::ldexp(static_cast<double>(uniform_int(rng, -3, 3)), -1074);
-        h.check(c);
-    }
-    h.end_suite();
+    run_random_suite(h, "random huge: |x| in 1e150..1e300", 1, 8, count,
+                     each_coordinate([&] { return decimal_magnitude(rng, 150, 299); }));
+    run_random_suite(h, "random tiny: |x| in 1e-300..1e-150", 1, 8, count,
+                     each_coordinate([&] { return decimal_magnitude(rng, -300, -150); }));
+    run_random_suite(h, "random mixed huge, tiny, unit, zero", 1, 8, count, each_coordinate([&] {
+                         switch (uniform_int(rng, 0, 3)) {
+                             case 0:
+                                 return decimal_magnitude(rng, 150, 299);
+                             case 1:
+                                 return decimal_magnitude(rng, -300, -150);
+                             case 2:
+                                 return uniform(rng, -1.0, 1.0);
+                             default:
+                                 return 0.0;
+                         }
+                     }));
+    run_random_suite(h, "random subnormals", 1, 8, count,
+                     each_coordinate([&] { return subnormal(rng); }));
+    run_random_suite(h, "random subnormal integers k * 2^-1074, |k| <= 3", 1, 8, count,
+                     each_coordinate([&] {
+                         return std::ldexp(static_cast<double>(uniform_int(rng, -3, 3)), -1074);
+                     }));
 }
 
 /// The near-degenerate lattices: one point walked over a square grid of ulp offsets around a

@@ -24,6 +24,7 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/sos.hpp"
+#include "tests/support/uniform_draws.hpp"
 
 namespace pr = exactmesh::predicates;
 using pr::Sign;
@@ -83,13 +84,8 @@ struct Failures {
     }
 };
 
-double uniform(Rng& rng, double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-int uniform_int(Rng& rng, int lo, int hi) {
-    return std::uniform_int_distribution<int>(lo, hi)(rng);
-}
+using exactmesh::testing::uniform;
+using exactmesh::testing::uniform_int;
 
 // ---------------------------------------------------------------------------------------------
 // Inputs: random, integer grids (exact zeros, repeated points), exactly degenerate sets scaled
@@ -343,6 +339,33 @@ std::vector<Tuple> degenerate_integer_inputs(Rng& rng, int n, int dims, long cou
     return cases;
 }
 
+/// sos against its reference perturbation on every tuple of `cases` (in `dims` dimensions), each
+/// with fresh distinct indices (and, when `reference_never_zero`, the reference must not be
+/// Zero); more than a fifth of the `degenerate_count` integer inputs among the cases must be
+/// degenerate before the perturbation.
+void expect_sos_matches_reference(Rng& rng, const std::vector<Tuple>& cases, long degenerate_count,
+                                  int dims, const std::string& name, const IndexedPredicate& sos,
+                                  const IndexedPredicate& reference, const PointPredicate& plain,
+                                  bool reference_never_zero) {
+    Failures failures;
+    long unperturbed_zeros = 0;
+    for (const Tuple& t : cases) {
+        const std::vector<const double*> p = pointers(t);
+        const Indices idx = distinct_indices(rng, static_cast<int>(p.size()));
+        if (plain(p) == Sign::Zero) ++unperturbed_zeros;
+        const Sign got = sos(p, idx), expected = reference(p, idx);
+        if (got != expected) {
+            failures.add(name + " " + std::to_string(pr::to_int(got)) + ", reference " +
+                         std::to_string(pr::to_int(expected)) + " for " + describe(t, dims, idx));
+        }
+        if (reference_never_zero && expected == Sign::Zero) {
+            failures.add("reference Zero for " + describe(t, dims, idx));
+        }
+    }
+    EXPECT_GT(unperturbed_zeros, degenerate_count / 5) << "the inputs should be mostly degenerate";
+    failures.expect_none((name + " vs reference").c_str());
+}
+
 struct SosCase {
     Tuple points;
     Indices indices;
@@ -542,8 +565,6 @@ TEST(Predicates_Sos, AntisymmetricWhenIndicesPermuteWithPoints) {
 
 TEST(Predicates_Sos, Orient2dAgreesWithReferencePerturbation) {
     Rng rng(36);
-    Failures failures;
-    long unperturbed_zeros = 0;
     // Repeated points included: the perturbation is defined for them too and never vanishes.
     // The reference takes any doubles here, so the degenerate sets also go to extreme scales.
     std::vector<Tuple> cases = degenerate_integer_inputs(rng, 3, 2, 6000, false);
@@ -551,55 +572,22 @@ TEST(Predicates_Sos, Orient2dAgreesWithReferencePerturbation) {
         cases.push_back(scaled(cases[c], -1074));
         cases.push_back(scaled(cases[c + 1], 1000));
     }
-    for (const Tuple& t : cases) {
-        const std::vector<const double*> p = pointers(t);
-        const Indices idx = distinct_indices(rng, 3);
-        if (orient2d_plain(p) == Sign::Zero) ++unperturbed_zeros;
-        const Sign got = orient2d_sos(p, idx), expected = orient2d_sos_reference(p, idx);
-        if (got != expected) {
-            failures.add("orient2d_sos " + std::to_string(pr::to_int(got)) + ", reference " +
-                         std::to_string(pr::to_int(expected)) + " for " + describe(t, 2, idx));
-        }
-        if (expected == Sign::Zero) failures.add("reference Zero for " + describe(t, 2, idx));
-    }
-    EXPECT_GT(unperturbed_zeros, 6000 / 5) << "the inputs should be mostly degenerate";
-    failures.expect_none("orient2d_sos vs reference");
+    expect_sos_matches_reference(rng, cases, 6000, 2, "orient2d_sos", orient2d_sos,
+                                 orient2d_sos_reference, orient2d_plain, true);
 }
 
 TEST(Predicates_Sos, IncircleAgreesWithReferencePerturbation) {
     Rng rng(37);
-    Failures failures;
-    long unperturbed_zeros = 0;
-    for (const Tuple& t : degenerate_integer_inputs(rng, 4, 2, 20000, false)) {
-        const std::vector<const double*> p = pointers(t);
-        const Indices idx = distinct_indices(rng, 4);
-        if (incircle_plain(p) == Sign::Zero) ++unperturbed_zeros;
-        const Sign got = incircle_sos(p, idx), expected = incircle_sos_reference(p, idx);
-        if (got != expected) {
-            failures.add("incircle_sos " + std::to_string(pr::to_int(got)) + ", reference " +
-                         std::to_string(pr::to_int(expected)) + " for " + describe(t, 2, idx));
-        }
-    }
-    EXPECT_GT(unperturbed_zeros, 20000 / 5) << "the inputs should be mostly degenerate";
-    failures.expect_none("incircle_sos vs reference");
+    expect_sos_matches_reference(rng, degenerate_integer_inputs(rng, 4, 2, 20000, false), 20000, 2,
+                                 "incircle_sos", incircle_sos, incircle_sos_reference,
+                                 incircle_plain, false);
 }
 
 TEST(Predicates_Sos, InsphereAgreesWithReferencePerturbation) {
     Rng rng(38);
-    Failures failures;
-    long unperturbed_zeros = 0;
-    for (const Tuple& t : degenerate_integer_inputs(rng, 5, 3, 10000, false)) {
-        const std::vector<const double*> p = pointers(t);
-        const Indices idx = distinct_indices(rng, 5);
-        if (insphere_plain(p) == Sign::Zero) ++unperturbed_zeros;
-        const Sign got = insphere_sos(p, idx), expected = insphere_sos_reference(p, idx);
-        if (got != expected) {
-            failures.add("insphere_sos " + std::to_string(pr::to_int(got)) + ", reference " +
-                         std::to_string(pr::to_int(expected)) + " for " + describe(t, 3, idx));
-        }
-    }
-    EXPECT_GT(unperturbed_zeros, 10000 / 5) << "the inputs should be mostly degenerate";
-    failures.expect_none("insphere_sos vs reference");
+    expect_sos_matches_reference(rng, degenerate_integer_inputs(rng, 5, 3, 10000, false), 10000, 3,
+                                 "insphere_sos", insphere_sos, insphere_sos_reference,
+                                 insphere_plain, false);
 }
 
 // The reference perturbations themselves: a hand-checked case for each. Three collinear points

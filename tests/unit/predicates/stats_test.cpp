@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
@@ -27,32 +28,30 @@ namespace {
     return c.filter + c.exact_differences + c.adaptive + c.expansion + c.gmp;
 }
 
+/// `count` times: five points with coordinates from draw(), and each predicate on them.
+template <class Draw>
+void call_predicates_on_random_points(int count, Draw draw) {
+    double p[5][3];
+    for (int n = 0; n < count; ++n) {
+        for (auto& q : p) {
+            for (double& x : q) x = draw();
+        }
+        pr::orient2d(p[0], p[1], p[2]);
+        pr::incircle(p[0], p[1], p[2], p[3]);
+        pr::orient3d(p[0], p[1], p[2], p[3]);
+        pr::insphere(p[0], p[1], p[2], p[3], p[4]);
+    }
+}
+
 /// Runs each predicate over random points, an integer grid (exact zeros: exact differences),
 /// near-degenerate points with inexact differences (expansions), huge ones (scaled into range)
 /// and huge ones beside small ones (GMP).
 void exercise_all_stages() {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    double p[5][3];
-    for (int n = 0; n < 2000; ++n) {
-        for (auto& q : p) {
-            for (double& x : q) x = unit(rng);
-        }
-        pr::orient2d(p[0], p[1], p[2]);
-        pr::incircle(p[0], p[1], p[2], p[3]);
-        pr::orient3d(p[0], p[1], p[2], p[3]);
-        pr::insphere(p[0], p[1], p[2], p[3], p[4]);
-    }
+    call_predicates_on_random_points(2000, [&] { return unit(rng); });
     std::uniform_int_distribution<int> small(-1, 1);
-    for (int n = 0; n < 2000; ++n) {
-        for (auto& q : p) {
-            for (double& x : q) x = small(rng);
-        }
-        pr::orient2d(p[0], p[1], p[2]);
-        pr::incircle(p[0], p[1], p[2], p[3]);
-        pr::orient3d(p[0], p[1], p[2], p[3]);
-        pr::insphere(p[0], p[1], p[2], p[3], p[4]);
-    }
+    call_predicates_on_random_points(2000, [&] { return small(rng); });
     for (int n = 0; n < 256; ++n) {
         // The near-collinear grid: a few ulps off the line through (12,12), (24,24); differences
         // from 0.1-ish coordinates are inexact.
@@ -162,12 +161,14 @@ TEST(Predicates_Stats, CallsEqualTheSumOfStageCountsAndDegenerateInputsReachExac
     pr::reset_thread_stats();
     exercise_comparisons();
     const pr::PredicateStats c = pr::thread_stats();
-    expect_sum("compare_angles", c.compare_angles);
-    expect_sum("compare_lengths", c.compare_lengths);
-    expect_sum("corner_dot_sign", c.corner_dot_sign);
-    expect_sum("direction_dot_sign", c.direction_dot_sign);
-    expect_sum("compare_dihedral", c.compare_dihedral);
-    expect_sum("compare_volume_edge", c.compare_volume_edge);
+    const std::pair<const char*, pr::StageCounts pr::PredicateStats::*> comparisons[] = {
+        {"compare_angles", &pr::PredicateStats::compare_angles},
+        {"compare_lengths", &pr::PredicateStats::compare_lengths},
+        {"corner_dot_sign", &pr::PredicateStats::corner_dot_sign},
+        {"direction_dot_sign", &pr::PredicateStats::direction_dot_sign},
+        {"compare_dihedral", &pr::PredicateStats::compare_dihedral},
+        {"compare_volume_edge", &pr::PredicateStats::compare_volume_edge}};
+    for (const auto& [name, counts] : comparisons) expect_sum(name, c.*counts);
     EXPECT_EQ(c.within_rounding_of_segment.calls, 400u);
     EXPECT_EQ(c.within_rounding_of_segment.calls, stage_sum(c.within_rounding_of_segment));
     EXPECT_GT(c.compare_angles.rescaled, 0u) << "2^-600 coordinates are scaled back";

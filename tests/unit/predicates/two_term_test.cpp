@@ -59,6 +59,20 @@ mpq_class magnitude(const mpq_class& x) {
     return abs(x);
 }
 
+/// Over points of `dims` exact coordinates from x: the minor x_p y_r - x_r y_p of points p and
+/// r, the sum of its products' magnitudes (the P of its error bound), and |point p|^2.
+mpq_class minor_xy(const mpq_class* x, int dims, int p, int r) {
+    return x[dims * p] * x[dims * r + 1] - x[dims * r] * x[dims * p + 1];
+}
+mpq_class minor_xy_bound(const mpq_class* x, int dims, int p, int r) {
+    return magnitude(x[dims * p] * x[dims * r + 1]) + magnitude(x[dims * r] * x[dims * p + 1]);
+}
+mpq_class squared_norm(const mpq_class* x, int dims, int p) {
+    mpq_class sum = 0;
+    for (int k = 0; k < dims; ++k) sum += x[dims * p + k] * x[dims * p + k];
+    return sum;
+}
+
 /// Checks |hi + lo - x| <= e u^2 p, |hi| <= h p, |lo| <= l u p (with a 2^-40 relative margin for
 /// the (1 + u)^k factors the lemmas round into their constants).
 void expect_invariant(const TwoTerm& t, const mpq_class& x, const mpq_class& p, double e, double h,
@@ -113,15 +127,9 @@ TEST(Predicates_TwoTerm, StageBErrorIsBelowTheDerivedBound) {
         {
             mpq_class x[6];
             for (int k = 0; k < 6; ++k) x[k] = v[k];
-            auto minor = [&](int p, int r) -> mpq_class {
-                return x[2 * p] * x[2 * r + 1] - x[2 * r] * x[2 * p + 1];
-            };
-            auto minor_p = [&](int p, int r) -> mpq_class {
-                return magnitude(x[2 * p] * x[2 * r + 1]) + magnitude(x[2 * r] * x[2 * p + 1]);
-            };
-            auto lift = [&](int p) -> mpq_class {
-                return x[2 * p] * x[2 * p] + x[2 * p + 1] * x[2 * p + 1];
-            };
+            auto minor = [&](int p, int r) { return minor_xy(x, 2, p, r); };
+            auto minor_p = [&](int p, int r) { return minor_xy_bound(x, 2, p, r); };
+            auto lift = [&](int p) { return squared_norm(x, 2, p); };
             const mpq_class det =
                 lift(0) * minor(1, 2) + lift(1) * minor(2, 0) + lift(2) * minor(0, 1);
             const mpq_class p =
@@ -136,12 +144,8 @@ TEST(Predicates_TwoTerm, StageBErrorIsBelowTheDerivedBound) {
         {
             mpq_class x[12];
             for (int k = 0; k < 12; ++k) x[k] = v[k];
-            auto m2 = [&](int p, int r) -> mpq_class {
-                return x[3 * p] * x[3 * r + 1] - x[3 * r] * x[3 * p + 1];
-            };
-            auto p2 = [&](int p, int r) -> mpq_class {
-                return magnitude(x[3 * p] * x[3 * r + 1]) + magnitude(x[3 * r] * x[3 * p + 1]);
-            };
+            auto m2 = [&](int p, int r) { return minor_xy(x, 3, p, r); };
+            auto p2 = [&](int p, int r) { return minor_xy_bound(x, 3, p, r); };
             auto m3 = [&](int p, int r, int s) -> mpq_class {
                 return x[3 * p + 2] * m2(r, s) - x[3 * r + 2] * m2(p, s) + x[3 * s + 2] * m2(p, r);
             };
@@ -149,10 +153,7 @@ TEST(Predicates_TwoTerm, StageBErrorIsBelowTheDerivedBound) {
                 return magnitude(x[3 * p + 2]) * p2(r, s) + magnitude(x[3 * r + 2]) * p2(p, s) +
                        magnitude(x[3 * s + 2]) * p2(p, r);
             };
-            auto lift = [&](int p) -> mpq_class {
-                return x[3 * p] * x[3 * p] + x[3 * p + 1] * x[3 * p + 1] +
-                       x[3 * p + 2] * x[3 * p + 2];
-            };
+            auto lift = [&](int p) { return squared_norm(x, 3, p); };
             const mpq_class det = (lift(3) * m3(0, 1, 2) - lift(2) * m3(0, 1, 3)) +
                                   (lift(1) * m3(0, 2, 3) - lift(0) * m3(1, 2, 3));
             const mpq_class p = lift(3) * p3(0, 1, 2) + lift(2) * p3(0, 1, 3) +
