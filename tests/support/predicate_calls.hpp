@@ -12,7 +12,7 @@
 /// The stages of predicate `name`, as template arguments in the order adaptive, exact, filter,
 /// reference (raw coordinates), reference (difference form), plain double evaluation: every
 /// predicate X comes as X, X_exact, X_filter, reference::X, reference::X_differences and X_fast.
-#define EXACTMESH_TEST_STAGES(name)                                                         \
+#define EM_TEST_STAGES(name)                                                                \
     &::exactmesh::predicates::name, &::exactmesh::predicates::name##_exact,                 \
         &::exactmesh::predicates::name##_filter, &::exactmesh::predicates::reference::name, \
         &::exactmesh::predicates::reference::name##_differences,                            \

@@ -126,7 +126,7 @@ void expect_all_pass(const char* name, const Outcome& out) {
 }
 
 /// The corpus of the predicate `name` of N points in D dimensions through every stage (as
-/// EXACTMESH_TEST_STAGES lists them).
+/// EM_TEST_STAGES lists them).
 template <std::size_t N, std::size_t D, auto Adaptive, auto Exact, auto Filter, auto Reference,
           auto /*ReferenceDifferences*/, auto Fast>
 Outcome run_predicate(const std::string& name) {
@@ -139,19 +139,19 @@ Outcome run_predicate(const std::string& name) {
 }
 
 Outcome run_orient2d() {
-    return run_predicate<3, 2, EXACTMESH_TEST_STAGES(orient2d)>("orient2d");
+    return run_predicate<3, 2, EM_TEST_STAGES(orient2d)>("orient2d");
 }
 
 Outcome run_incircle() {
-    return run_predicate<4, 2, EXACTMESH_TEST_STAGES(incircle)>("incircle");
+    return run_predicate<4, 2, EM_TEST_STAGES(incircle)>("incircle");
 }
 
 Outcome run_orient3d() {
-    return run_predicate<4, 3, EXACTMESH_TEST_STAGES(orient3d)>("orient3d");
+    return run_predicate<4, 3, EM_TEST_STAGES(orient3d)>("orient3d");
 }
 
 Outcome run_insphere() {
-    return run_predicate<5, 3, EXACTMESH_TEST_STAGES(insphere)>("insphere");
+    return run_predicate<5, 3, EM_TEST_STAGES(insphere)>("insphere");
 }
 
 }  // namespace

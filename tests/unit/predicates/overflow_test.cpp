@@ -47,7 +47,7 @@ struct Predicate {
     double (*fast)(const double*);
 };
 
-/// The Predicate of N points in D dimensions with these stages (as EXACTMESH_TEST_STAGES lists
+/// The Predicate of N points in D dimensions with these stages (as EM_TEST_STAGES lists
 /// them).
 template <std::size_t N, std::size_t D, auto Adaptive, auto Exact, auto Filter, auto Reference,
           auto /*ReferenceDifferences*/, auto Fast>
@@ -63,10 +63,10 @@ Predicate make_predicate(const char* name) {
             [](const double* x) { return call_on_flat<N, D>(Fast, x); }};
 }
 
-const Predicate kOrient2d = make_predicate<3, 2, EXACTMESH_TEST_STAGES(orient2d)>("orient2d");
-const Predicate kIncircle = make_predicate<4, 2, EXACTMESH_TEST_STAGES(incircle)>("incircle");
-const Predicate kOrient3d = make_predicate<4, 3, EXACTMESH_TEST_STAGES(orient3d)>("orient3d");
-const Predicate kInsphere = make_predicate<5, 3, EXACTMESH_TEST_STAGES(insphere)>("insphere");
+const Predicate kOrient2d = make_predicate<3, 2, EM_TEST_STAGES(orient2d)>("orient2d");
+const Predicate kIncircle = make_predicate<4, 2, EM_TEST_STAGES(incircle)>("incircle");
+const Predicate kOrient3d = make_predicate<4, 3, EM_TEST_STAGES(orient3d)>("orient3d");
+const Predicate kInsphere = make_predicate<5, 3, EM_TEST_STAGES(insphere)>("insphere");
 
 const std::array<const Predicate*, 4> kAll = {&kOrient2d, &kIncircle, &kOrient3d, &kInsphere};
 

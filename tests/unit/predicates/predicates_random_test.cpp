@@ -50,7 +50,7 @@ using Args = const double* const*;
 using exactmesh::testing::call_on_points;
 
 /// The stages of the predicate `Label` of Points points in Dims dimensions (in the order of
-/// EXACTMESH_TEST_STAGES), over pointers to its points.
+/// EM_TEST_STAGES), over pointers to its points.
 template <exactmesh::testing::Name Label, int Points, int Dims, auto Full, auto Exact, auto Filter,
           auto ReferenceRaw, auto Reference, auto Fast>
 struct Stages {
@@ -63,10 +63,10 @@ struct Stages {
     static Sign reference_raw(Args p) { return call_on_points<Points>(ReferenceRaw, p); }
 };
 
-using Orient2d = Stages<"orient2d", 3, 2, EXACTMESH_TEST_STAGES(orient2d)>;
-using Orient3d = Stages<"orient3d", 4, 3, EXACTMESH_TEST_STAGES(orient3d)>;
-using Incircle = Stages<"incircle", 4, 2, EXACTMESH_TEST_STAGES(incircle)>;
-using Insphere = Stages<"insphere", 5, 3, EXACTMESH_TEST_STAGES(insphere)>;
+using Orient2d = Stages<"orient2d", 3, 2, EM_TEST_STAGES(orient2d)>;
+using Orient3d = Stages<"orient3d", 4, 3, EM_TEST_STAGES(orient3d)>;
+using Incircle = Stages<"incircle", 4, 2, EM_TEST_STAGES(incircle)>;
+using Insphere = Stages<"insphere", 5, 3, EM_TEST_STAGES(insphere)>;
 
 // ---------------------------------------------------------------------------------------------
 // The harness: every case is compared with the reference through the adaptive predicate, the
