@@ -91,6 +91,26 @@ TetgenEleFile parse_tetgen_ele_lines(TextLines& lines, std::uint32_t vertex_firs
     return ele;
 }
 
+/// A per-tetrahedron TetGen table (.ele, .neigh): "<count><header_rest>", then a line per
+/// tetrahedron, its number and append_value(out, t, k) for its 4 slots k in TetGen's order.
+template <class AppendValue>
+std::string format_tet_table(std::size_t count, std::uint32_t first_index, const char* header_rest,
+                             AppendValue&& append_value) {
+    std::string out;
+    out.reserve(48 * count + 32);
+    append_unsigned(out, count);
+    out += header_rest;
+    for (std::size_t t = 0; t < count; ++t) {
+        append_unsigned(out, t + first_index);
+        for (const unsigned k : kTetGenCorner) {
+            out += ' ';
+            append_value(out, t, k);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
 }  // namespace
 
 TetgenNodeFile parse_tetgen_node(std::string_view text, const std::string& file_name) {
@@ -143,20 +163,10 @@ void write_tetgen_node(const std::filesystem::path& path, std::span<const double
 }
 
 std::string format_tetgen_ele(std::span<const std::uint32_t> tets, std::uint32_t first_index) {
-    const std::size_t count = tets.size() / 4;
-    std::string out;
-    out.reserve(48 * count + 32);
-    append_unsigned(out, count);
-    out += " 4 0\n";
-    for (std::size_t t = 0; t < count; ++t) {
-        append_unsigned(out, t + first_index);
-        for (const unsigned k : kTetGenCorner) {
-            out += ' ';
-            append_unsigned(out, std::uint64_t{tets[4 * t + k]} + first_index);
-        }
-        out += '\n';
-    }
-    return out;
+    return format_tet_table(tets.size() / 4, first_index, " 4 0\n",
+                            [&](std::string& out, std::size_t t, unsigned k) {
+                                append_unsigned(out, std::uint64_t{tets[4 * t + k]} + first_index);
+                            });
 }
 
 void write_tetgen_ele(const std::filesystem::path& path, std::span<const std::uint32_t> tets,
@@ -200,25 +210,15 @@ void write_tetgen_boundary_faces(const std::filesystem::path& path,
 
 std::string format_tetgen_neigh(std::span<const std::uint32_t> neighbors,
                                 std::uint32_t first_index) {
-    const std::size_t count = neighbors.size() / 4;
-    std::string out;
-    out.reserve(48 * count + 32);
-    append_unsigned(out, count);
-    out += " 4\n";
-    for (std::size_t t = 0; t < count; ++t) {
-        append_unsigned(out, t + first_index);
-        for (const unsigned k : kTetGenCorner) {
-            const std::uint32_t neighbor = neighbors[4 * t + k];
-            out += ' ';
-            if (neighbor == kNone) {
-                out += "-1";
-            } else {
-                append_unsigned(out, std::uint64_t{neighbor} + first_index);
-            }
-        }
-        out += '\n';
-    }
-    return out;
+    return format_tet_table(neighbors.size() / 4, first_index, " 4\n",
+                            [&](std::string& out, std::size_t t, unsigned k) {
+                                const std::uint32_t neighbor = neighbors[4 * t + k];
+                                if (neighbor == kNone) {
+                                    out += "-1";
+                                } else {
+                                    append_unsigned(out, std::uint64_t{neighbor} + first_index);
+                                }
+                            });
 }
 
 void write_tetgen_neigh(const std::filesystem::path& path, std::span<const std::uint32_t> neighbors,
