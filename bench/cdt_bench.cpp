@@ -34,6 +34,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_support.hpp"
 #include "bench/heap_accounting.hpp"
 #include "generators/inputs/pslg_inputs.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
@@ -47,12 +48,11 @@
 namespace {
 
 using exactmesh::bench::heap_growth_since;
+using exactmesh::bench::kInputSeed;
 using exactmesh::bench::start_heap_measurement;
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
-
-constexpr std::uint64_t kInputSeed = 20240601;
 
 enum class Workload { Chains, Polygon };
 
@@ -171,13 +171,9 @@ void register_all() {
 
 int main(int argc, char** argv) {
     register_all();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::AddCustomContext("exactmesh_peak_memory", "peak live heap bytes (operator new, malloc_usable_size)");
+    exactmesh::bench::add_peak_memory_context();
 #if defined(EXACTMESH_WITH_CGAL)
     benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
 #endif
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return exactmesh::bench::run_benchmarks(argc, argv);
 }
