@@ -47,9 +47,8 @@
 
 namespace {
 
-using exactmesh::bench::heap_growth_since;
-using exactmesh::bench::kInputSeed;
-using exactmesh::bench::start_heap_measurement;
+// The shared benchmark support: seeds, heap regime, heap accounting, main().
+using namespace exactmesh::bench;
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;

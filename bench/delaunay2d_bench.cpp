@@ -57,15 +57,10 @@
 #include <CGAL/version.h>
 #endif
 
-
 namespace {
 
-using exactmesh::bench::after_construction;
-using exactmesh::bench::cold_heap;
-using exactmesh::bench::heap_growth_since;
-using exactmesh::bench::kInputSeed;
-using exactmesh::bench::kOrderSeed;
-using exactmesh::bench::start_heap_measurement;
+// The shared benchmark support: seeds, heap regime, heap accounting, main().
+using namespace exactmesh::bench;
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
