@@ -13,6 +13,10 @@
 #include <string_view>
 #include <vector>
 
+#if defined(EXACTMESH_WITH_CGAL)
+#include <CGAL/version.h>
+#endif
+
 #ifndef EXACTMESH_BENCH_BUILD_TYPE
 #define EXACTMESH_BENCH_BUILD_TYPE "unknown"
 #endif
@@ -62,6 +66,13 @@ inline void add_compiler_context() {
     benchmark::AddCustomContext("exactmesh_compiler", "clang " __clang_version__);
 #elif defined(__GNUC__)
     benchmark::AddCustomContext("exactmesh_compiler", "gcc " __VERSION__);
+#endif
+}
+
+/// The context line naming the CGAL version compared against (none without EXACTMESH_WITH_CGAL).
+inline void add_cgal_context() {
+#if defined(EXACTMESH_WITH_CGAL)
+    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
 #endif
 }
 

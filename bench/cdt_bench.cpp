@@ -42,7 +42,6 @@
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/version.h>
 #endif
 
 namespace {
@@ -171,8 +170,6 @@ void register_all() {
 int main(int argc, char** argv) {
     register_all();
     exactmesh::bench::add_peak_memory_context();
-#if defined(EXACTMESH_WITH_CGAL)
-    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
-#endif
+    exactmesh::bench::add_cgal_context();
     return exactmesh::bench::run_benchmarks(argc, argv);
 }

@@ -54,7 +54,6 @@
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/version.h>
 #endif
 
 namespace {
@@ -366,9 +365,7 @@ int main(int argc, char** argv) {
     benchmark::AddCustomContext("exactmesh_order_seed", std::to_string(kOrderSeed));
     exactmesh::bench::add_peak_memory_context();
     exactmesh::bench::add_compiler_context();
-#if defined(EXACTMESH_WITH_CGAL)
-    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
-#endif
+    exactmesh::bench::add_cgal_context();
     // A short default min_time keeps the suite within a few minutes (a construction of 2^20
     // points runs once per repetition anyway).
     return exactmesh::bench::run_benchmarks_with_default_min_time(argc, argv);

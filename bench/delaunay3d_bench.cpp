@@ -44,7 +44,6 @@
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/version.h>
 #endif
 
 namespace {
@@ -215,8 +214,6 @@ int main(int argc, char** argv) {
     benchmark::AddCustomContext("exactmesh_heap", cold_heap() ? "cold" : "warm");
     benchmark::AddCustomContext("exactmesh_input_seed", std::to_string(kInputSeed));
     exactmesh::bench::add_peak_memory_context();
-#if defined(EXACTMESH_WITH_CGAL)
-    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
-#endif
+    exactmesh::bench::add_cgal_context();
     return exactmesh::bench::run_benchmarks_with_default_min_time(argc, argv);
 }

@@ -35,7 +35,6 @@
 
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/version.h>
 #endif
 
 namespace {
@@ -576,9 +575,7 @@ int main(int argc, char** argv) {
     benchmark::AddCustomContext("exactmesh_two_product", "dekker");
 #endif
     exactmesh::bench::add_compiler_context();
-#if defined(EXACTMESH_WITH_CGAL)
-    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
-#endif
+    exactmesh::bench::add_cgal_context();
 
     // A default min_time that keeps 5 repetitions of the whole suite within about three minutes.
     return exactmesh::bench::run_benchmarks_with_default_min_time(argc, argv);
