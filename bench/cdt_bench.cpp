@@ -34,6 +34,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_support.hpp"
 #include "bench/heap_accounting.hpp"
 #include "generators/inputs/pslg_inputs.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
@@ -41,18 +42,15 @@
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/version.h>
 #endif
 
 namespace {
 
-using exactmesh::bench::heap_growth_since;
-using exactmesh::bench::start_heap_measurement;
+// The shared benchmark support: seeds, heap regime, heap accounting, main().
+using namespace exactmesh::bench;
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
-
-constexpr std::uint64_t kInputSeed = 20240601;
 
 enum class Workload { Chains, Polygon };
 
@@ -171,13 +169,7 @@ void register_all() {
 
 int main(int argc, char** argv) {
     register_all();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::AddCustomContext("exactmesh_peak_memory", "peak live heap bytes (operator new, malloc_usable_size)");
-#if defined(EXACTMESH_WITH_CGAL)
-    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
-#endif
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    exactmesh::bench::add_peak_memory_context();
+    exactmesh::bench::add_cgal_context();
+    return exactmesh::bench::run_benchmarks(argc, argv);
 }

@@ -28,7 +28,6 @@
 // writes generate_points_2d(distribution, n, kInputSeed) as a Triangle .node file, which the
 // report pictures with `exactmesh triangulate <path> -o picture.svg`.
 #include <benchmark/benchmark.h>
-#include <malloc.h>  // mallopt, malloc_trim: the heap regime
 
 #include <algorithm>
 #include <atomic>
@@ -46,6 +45,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_support.hpp"
 #include "bench/heap_accounting.hpp"
 #include "generators/inputs/inputs.hpp"
 #include "io/triangle_format.hpp"
@@ -54,26 +54,16 @@
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/version.h>
 #endif
-
-#ifndef EXACTMESH_BENCH_BUILD_TYPE
-#define EXACTMESH_BENCH_BUILD_TYPE "unknown"
-#endif
-
 
 namespace {
 
-using exactmesh::bench::heap_growth_since;
-using exactmesh::bench::start_heap_measurement;
+// The shared benchmark support: seeds, heap regime, heap accounting, main().
+using namespace exactmesh::bench;
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 using gen::Distribution;
-
-/// Pinned seeds: the points of every (distribution, n), and the random/BRIO shuffles.
-constexpr std::uint64_t kInputSeed = 20240601;
-constexpr std::uint64_t kOrderSeed = 1;
 
 int log2_from_environment(const char* variable, int fallback, int lo, int hi) {
     int log2_points = fallback;
@@ -97,32 +87,6 @@ int random_max_log2_points() {
         std::min(log2_from_environment("EXACTMESH_BENCH_RANDOM_MAX_LOG2", max_log2_points(), 10, 22),
                  max_log2_points());
     return value;
-}
-
-/// The heap regime of the timed constructions. Warm (default): malloc never returns memory to
-/// the kernel (no mmap for large blocks, no trimming), so every construction reuses resident
-/// pages, whatever ran before it. Cold (EXACTMESH_BENCH_COLD_HEAP=1): the heap is trimmed after
-/// each construction (timer paused) and large blocks are mmapped, so each construction pays
-/// its page faults, as a one-shot run does. Without fixing one or the other, glibc's adaptive
-/// mmap/trim thresholds made the regime depend on the benchmarks run before: on the reference
-/// VM, where a page fault is expensive, the same construction measured 1x or 2x.
-bool cold_heap() {
-    static const bool value = [] {
-        const char* text = std::getenv("EXACTMESH_BENCH_COLD_HEAP");
-        return text != nullptr && std::string_view(text) == "1";
-    }();
-    return value;
-}
-
-void set_heap_regime() {
-    if (cold_heap()) return;
-    mallopt(M_MMAP_MAX, 0);
-    mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
-}
-
-/// Called with the timer paused after each construction is destroyed.
-void after_construction() {
-    if (cold_heap()) malloc_trim(0);
 }
 
 std::string points_name(Distribution distribution) {
@@ -380,14 +344,7 @@ int main(int argc, char** argv) {
         if (argument.starts_with(kWriteNode)) return write_node(argument.substr(kWriteNode.size()));
     }
 
-    // A short default min_time keeps the suite within a few minutes (a construction of 2^20
-    // points runs once per repetition anyway); flags given on the command line come later and win.
-    std::vector<char*> args(argv, argv + argc);
-    std::string min_time = "--benchmark_min_time=0.1";
-    args.insert(args.begin() + 1, min_time.data());
-    int args_count = static_cast<int>(args.size());
-
-    set_heap_regime();
+    exactmesh::bench::set_heap_regime();
     register_all();
 
     benchmark::AddCustomContext("exactmesh_build_type", EXACTMESH_BENCH_BUILD_TYPE);
@@ -406,20 +363,10 @@ int main(int argc, char** argv) {
     benchmark::AddCustomContext("exactmesh_interleaved", interleaved ? "yes" : "no");
     benchmark::AddCustomContext("exactmesh_input_seed", std::to_string(kInputSeed));
     benchmark::AddCustomContext("exactmesh_order_seed", std::to_string(kOrderSeed));
-    benchmark::AddCustomContext("exactmesh_peak_memory",
-                                "peak live heap bytes (operator new, malloc_usable_size)");
-#if defined(__clang__)
-    benchmark::AddCustomContext("exactmesh_compiler", "clang " __clang_version__);
-#elif defined(__GNUC__)
-    benchmark::AddCustomContext("exactmesh_compiler", "gcc " __VERSION__);
-#endif
-#if defined(EXACTMESH_WITH_CGAL)
-    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
-#endif
-
-    benchmark::Initialize(&args_count, args.data());
-    if (benchmark::ReportUnrecognizedArguments(args_count, args.data())) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    exactmesh::bench::add_peak_memory_context();
+    exactmesh::bench::add_compiler_context();
+    exactmesh::bench::add_cgal_context();
+    // A short default min_time keeps the suite within a few minutes (a construction of 2^20
+    // points runs once per repetition anyway).
+    return exactmesh::bench::run_benchmarks_with_default_min_time(argc, argv);
 }

@@ -23,7 +23,6 @@
 // (the README's command; scripts/run runs every algorithm and size with the same repetitions
 // and interleaving, keeping the individual repetitions for its report).
 #include <benchmark/benchmark.h>
-#include <malloc.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -37,6 +36,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_support.hpp"
 #include "bench/heap_accounting.hpp"
 #include "generators/inputs/inputs_3d.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
@@ -44,24 +44,16 @@
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/version.h>
-#endif
-
-#ifndef EXACTMESH_BENCH_BUILD_TYPE
-#define EXACTMESH_BENCH_BUILD_TYPE "unknown"
 #endif
 
 namespace {
 
-using exactmesh::bench::heap_growth_since;
-using exactmesh::bench::start_heap_measurement;
+// The shared benchmark support: seeds, heap regime, heap accounting, main().
+using namespace exactmesh::bench;
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 using gen::Distribution3;
-
-constexpr std::uint64_t kInputSeed = 20240601;
-constexpr std::uint64_t kOrderSeed = 1;
 
 /// 10^3, 3·10^3, 10^4, ... up to EXACTMESH_BENCH3_MAX_POINTS (default 10^6).
 std::vector<std::int64_t> sizes() {
@@ -75,11 +67,6 @@ std::vector<std::int64_t> sizes() {
         if (3 * n <= max_points) out.push_back(3 * n);
     }
     return out;
-}
-
-bool cold_heap() {
-    const char* text = std::getenv("EXACTMESH_BENCH_COLD_HEAP");
-    return text != nullptr && std::string_view(text) == "1";
 }
 
 struct Input {
@@ -155,7 +142,7 @@ void bm_exactmesh(benchmark::State& state, const std::string& algorithm,
                 m.done = true;
             }
         }
-        if (cold_heap()) malloc_trim(0);
+        after_construction();
         state.ResumeTiming();
     }
     set_counters(state, m, n);
@@ -190,7 +177,7 @@ void bm_cgal(benchmark::State& state, Distribution3 distribution) {
                 m.done = true;
             }
         }
-        if (cold_heap()) malloc_trim(0);
+        after_construction();
         state.ResumeTiming();
     }
     set_counters(state, m, n);
@@ -221,26 +208,12 @@ void register_all() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::vector<char*> args(argv, argv + argc);
-    std::string min_time = "--benchmark_min_time=0.1";
-    args.insert(args.begin() + 1, min_time.data());
-    int args_count = static_cast<int>(args.size());
-    if (!cold_heap()) {
-        mallopt(M_MMAP_MAX, 0);
-        mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
-    }
+    exactmesh::bench::set_heap_regime();
     register_all();
     benchmark::AddCustomContext("exactmesh_build_type", EXACTMESH_BENCH_BUILD_TYPE);
     benchmark::AddCustomContext("exactmesh_heap", cold_heap() ? "cold" : "warm");
     benchmark::AddCustomContext("exactmesh_input_seed", std::to_string(kInputSeed));
-    benchmark::AddCustomContext("exactmesh_peak_memory",
-                                "peak live heap bytes (operator new, malloc_usable_size)");
-#if defined(EXACTMESH_WITH_CGAL)
-    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
-#endif
-    benchmark::Initialize(&args_count, args.data());
-    if (benchmark::ReportUnrecognizedArguments(args_count, args.data())) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    exactmesh::bench::add_peak_memory_context();
+    exactmesh::bench::add_cgal_context();
+    return exactmesh::bench::run_benchmarks_with_default_min_time(argc, argv);
 }

@@ -24,6 +24,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/bench_support.hpp"
 #include "predicates/orient3d.hpp"
 #include "triangulation/modification/edge_face_swap_3d.hpp"
 #include "triangulation/modification/vertex_removal_3d.hpp"
@@ -169,10 +170,6 @@ BENCHMARK(removal_benchmark)
     ->Complexity();
 
 int main(int argc, char** argv) {
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::AddCustomContext("build_type", EXACTMESH_BENCH_BUILD_TYPE);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return exactmesh::bench::run_benchmarks(argc, argv);
 }

@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_support.hpp"
 #include "generators/inputs/inputs.hpp"
 #include "generators/inputs/sweep_triangulation_2d.hpp"
 #include "triangulation/modification/edge_cutting_2d.hpp"
@@ -192,10 +193,6 @@ void register_all() {
 
 int main(int argc, char** argv) {
     register_all();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::AddCustomContext("build_type", EXACTMESH_BENCH_BUILD_TYPE);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return exactmesh::bench::run_benchmarks(argc, argv);
 }

@@ -65,6 +65,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_support.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
@@ -653,14 +654,11 @@ void register_all() {
 
 int main(int argc, char** argv) {
     register_all();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::AddCustomContext("exactmesh_build_type", EXACTMESH_BENCH_BUILD_TYPE);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
+    const int status = exactmesh::bench::run_benchmarks(argc, argv);
     if (gmsh_dir_used) {
         std::error_code ignored;
         fs::remove_all(gmsh_dir(), ignored);
     }
-    return 0;
+    return status;
 }

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "base/enum_names.hpp"
+#include "bench/bench_support.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/insphere.hpp"
@@ -35,11 +36,6 @@
 
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/version.h>
-#endif
-
-#ifndef EXACTMESH_BENCH_BUILD_TYPE
-#define EXACTMESH_BENCH_BUILD_TYPE "unknown"
 #endif
 
 namespace {
@@ -559,13 +555,6 @@ void register_predicate() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    // Defaults chosen to keep 5 repetitions of the whole suite within about three minutes;
-    // flags given on the command line come later and win.
-    std::vector<char*> args(argv, argv + argc);
-    std::string min_time = "--benchmark_min_time=0.1";
-    args.insert(args.begin() + 1, min_time.data());
-    int args_count = static_cast<int>(args.size());
-
     register_predicate<Predicate::orient2d>();
     register_predicate<Predicate::incircle>();
     register_predicate<Predicate::orient3d>();
@@ -583,18 +572,9 @@ int main(int argc, char** argv) {
 #else
     benchmark::AddCustomContext("exactmesh_two_product", "dekker");
 #endif
-#if defined(__clang__)
-    benchmark::AddCustomContext("exactmesh_compiler", "clang " __clang_version__);
-#elif defined(__GNUC__)
-    benchmark::AddCustomContext("exactmesh_compiler", "gcc " __VERSION__);
-#endif
-#if defined(EXACTMESH_WITH_CGAL)
-    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
-#endif
+    exactmesh::bench::add_compiler_context();
+    exactmesh::bench::add_cgal_context();
 
-    benchmark::Initialize(&args_count, args.data());
-    if (benchmark::ReportUnrecognizedArguments(args_count, args.data())) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    // A default min_time that keeps 5 repetitions of the whole suite within about three minutes.
+    return exactmesh::bench::run_benchmarks_with_default_min_time(argc, argv);
 }

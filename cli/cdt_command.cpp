@@ -4,7 +4,6 @@
 // edges, each marked with its input segment's number) beside it; or .msh, .vtu, .svg.
 #include <CLI/CLI.hpp>
 
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <iomanip>
@@ -42,13 +41,6 @@ io::PolyFile read_input(const fs::path& input) {
     return io::read_poly(input);
 }
 
-void print_stats(const tri::Cdt2Counters& c, const predicates::PredicateStats& stats,
-                 double seconds) {
-    print_counters(counters_by_name(tri::kCdt2CounterNames, c));
-    print_predicate_stats(stats);
-    print_construct_seconds(seconds);
-}
-
 void run_cdt(const CdtArguments& arguments) {
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
@@ -68,12 +60,10 @@ void run_cdt(const CdtArguments& arguments) {
     options.first_index = base;
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
 
-    predicates::reset_thread_stats();
-    const auto start = std::chrono::steady_clock::now();
-    const tri::Cdt2Result result = locating_mark_points(
-        poly, arguments.input, [&] { return tri::constrained_delaunay_2d(pslg, options); });
-    const auto stop = std::chrono::steady_clock::now();
-    const predicates::PredicateStats stats = predicates::thread_stats();
+    const auto [result, stats, seconds] = timed_construction([&] {
+        return locating_mark_points(poly, arguments.input,
+                                    [&] { return tri::constrained_delaunay_2d(pslg, options); });
+    });
 
     print_warnings(result.warnings);
     io::OutputSet set;
@@ -85,7 +75,8 @@ void run_cdt(const CdtArguments& arguments) {
     std::cout << "vertices: " << mesh.vertex_count() << '\n'
               << "triangles: " << mesh.triangle_count() << '\n';
     if (arguments.stats) {
-        print_stats(result.counters, stats, std::chrono::duration<double>(stop - start).count());
+        print_construction_stats(counters_by_name(tri::kCdt2CounterNames, result.counters), stats,
+                                 seconds);
     }
 }
 

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <iomanip>
 #include <iostream>
+#include <span>
 #include <string>
 
 #include "base/errors.hpp"
@@ -30,6 +31,25 @@ void print_stage_counts(const char* name, const predicates::StageCounts& counts)
               << prefix << "gmp: " << counts.gmp << '\n'
               << prefix << "rescaled: " << counts.rescaled << '\n';
 }
+
+/// The predicates --stats reports, in order, for a 2D and a 3D command.
+using Stats = predicates::PredicateStats;
+using StageRow = std::pair<const char*, predicates::StageCounts Stats::*>;
+constexpr StageRow kStages2d[] = {
+    {"orient2d", &Stats::orient2d},
+    {"incircle", &Stats::incircle},
+    {"compare_angles", &Stats::compare_angles},
+    {"compare_lengths", &Stats::compare_lengths},
+    {"corner_dot_sign", &Stats::corner_dot_sign},
+    {"direction_dot_sign", &Stats::direction_dot_sign},
+    {"within_rounding_of_segment", &Stats::within_rounding_of_segment},
+};
+constexpr StageRow kStages3d[] = {
+    {"orient3d", &Stats::orient3d},
+    {"insphere", &Stats::insphere},
+    {"compare_dihedral", &Stats::compare_dihedral},
+    {"compare_volume_edge", &Stats::compare_volume_edge},
+};
 
 }  // namespace
 
@@ -181,22 +201,13 @@ void print_warnings(const std::vector<std::string>& warnings) {
 }
 
 void print_predicate_stats(const predicates::PredicateStats& stats, int dimension) {
-    if (predicates::stats_enabled() && dimension == 3) {
-        print_stage_counts("orient3d", stats.orient3d);
-        print_stage_counts("insphere", stats.insphere);
-        print_stage_counts("compare_dihedral", stats.compare_dihedral);
-        print_stage_counts("compare_volume_edge", stats.compare_volume_edge);
-    } else if (predicates::stats_enabled()) {
-        print_stage_counts("orient2d", stats.orient2d);
-        print_stage_counts("incircle", stats.incircle);
-        print_stage_counts("compare_angles", stats.compare_angles);
-        print_stage_counts("compare_lengths", stats.compare_lengths);
-        print_stage_counts("corner_dot_sign", stats.corner_dot_sign);
-        print_stage_counts("direction_dot_sign", stats.direction_dot_sign);
-        print_stage_counts("within_rounding_of_segment", stats.within_rounding_of_segment);
-    } else {
+    if (!predicates::stats_enabled()) {
         std::cout << "predicate_stages: compiled out (configure with -DEXACTMESH_PREDICATE_STATS=ON)\n";
+        return;
     }
+    std::span<const StageRow> stages = kStages2d;
+    if (dimension == 3) stages = kStages3d;
+    for (const auto& [name, counts] : stages) print_stage_counts(name, stats.*counts);
 }
 
 void print_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters) {
@@ -213,6 +224,14 @@ void print_construct_seconds(double seconds) {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void print_construction_stats(const std::vector<std::pair<std::string, std::uint64_t>>& counters,
+                              const predicates::PredicateStats& stats, double seconds,
+                              int dimension) {
+    print_counters(counters);
+    print_predicate_stats(stats, dimension);
+    print_construct_seconds(seconds);
 }
 
 }  // namespace exactmesh::cli

@@ -105,4 +105,30 @@ void print_construct_seconds(double seconds);
 /// Seconds of wall time since `start` (steady clock).
 double seconds_since(std::chrono::steady_clock::time_point start);
 
+/// The --stats lines of a construction: its work counters (print_counters), the predicate
+/// stages of that dimension (print_predicate_stats), construct_seconds.
+void print_construction_stats(const std::vector<std::pair<std::string, std::uint64_t>>& counters,
+                              const predicates::PredicateStats& stats, double seconds,
+                              int dimension = 2);
+
+/// What a timed construction returned, with its predicate stages and its wall time.
+template <class Result>
+struct TimedConstruction {
+    Result result;
+    predicates::PredicateStats stats;
+    double seconds;
+};
+
+/// Runs `construct()` alone (no file I/O) on the clock, with the predicate counters reset
+/// before it and read right after it.
+template <class Construct>
+auto timed_construction(Construct&& construct) {
+    predicates::reset_thread_stats();
+    const auto start = std::chrono::steady_clock::now();
+    auto result = construct();
+    const double seconds = seconds_since(start);
+    return TimedConstruction<decltype(result)>{std::move(result), predicates::thread_stats(),
+                                               seconds};
+}
+
 }  // namespace exactmesh::cli

@@ -51,6 +51,25 @@ double largest_angle_degrees(const tri::Triangulation2& mesh) {
     return largest * 180.0 / 3.14159265358979323846;
 }
 
+/// Writes `mesh` to the .ele output, numbered from `first_index`, and prints its triangle count;
+/// with --stats then the criterion (when one was chosen), the counters, the largest angle and
+/// the time of the work alone.
+void write_result(const CommandArguments& arguments, const tri::Triangulation2& mesh,
+                  std::uint32_t first_index,
+                  const std::vector<std::pair<std::string, std::uint64_t>>& counters,
+                  double seconds, const std::string& criterion = "") {
+    io::OutputSet set;
+    set.stage(arguments.output, io::format_ele(mesh.triangles, first_index));
+    commit_outputs(set);
+    std::cout << "triangles: " << mesh.triangle_count() << '\n';
+    if (!arguments.stats) return;
+    if (!criterion.empty()) std::cout << "criterion: " << criterion << '\n';
+    print_counters(counters);
+    std::cout << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
+              << '\n';
+    print_construct_seconds(seconds);
+}
+
 void run_swap(const SwapArguments& arguments) {
     const fs::path output = arguments.output;
     require_ele_output(output);
@@ -104,17 +123,9 @@ void run_swap(const SwapArguments& arguments) {
         }
     }
     const double seconds = seconds_since(start);
-    io::OutputSet set;
-    set.stage(output, io::format_ele(mesh.triangles, ele.first_index));
-    commit_outputs(set);
-    std::cout << "triangles: " << mesh.triangle_count() << '\n';
-    if (arguments.stats) {
-        std::cout << "criterion: " << arguments.criterion << '\n';
-        print_counters(counters_by_name(tri::kEdgeSwapCounterNames, counters));
-        std::cout << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
-                  << '\n';
-        print_construct_seconds(seconds);
-    }
+    write_result(arguments, mesh, ele.first_index,
+                 counters_by_name(tri::kEdgeSwapCounterNames, counters), seconds,
+                 arguments.criterion);
 }
 
 void run_min_max(const CommandArguments& arguments) {
@@ -126,16 +137,8 @@ void run_min_max(const CommandArguments& arguments) {
     tri::EdgeCuttingCounters counters;
     const tri::Triangulation2 mesh = tri::min_max_angle_triangulation_2d(nodes.xy, &counters);
     const double seconds = seconds_since(start);
-    io::OutputSet set;
-    set.stage(output, io::format_ele(mesh.triangles, nodes.first_index));
-    commit_outputs(set);
-    std::cout << "triangles: " << mesh.triangle_count() << '\n';
-    if (arguments.stats) {
-        print_counters(counters_by_name(tri::kEdgeCuttingCounterNames, counters));
-        std::cout << "max_angle_degrees: " << std::setprecision(10) << largest_angle_degrees(mesh)
-                  << '\n';
-        print_construct_seconds(seconds);
-    }
+    write_result(arguments, mesh, nodes.first_index,
+                 counters_by_name(tri::kEdgeCuttingCounterNames, counters), seconds);
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 // and the construction time.
 #include <CLI/CLI.hpp>
 
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <iomanip>
@@ -34,13 +33,6 @@ struct TetrahedralizeArguments : CommandArguments, OrderArguments {
     std::string algorithm = "bowyer-watson";
 };
 
-void print_stats(const tri::Delaunay3Counters& counters, const predicates::PredicateStats& stats,
-                 double construct_seconds) {
-    print_counters(counters_by_name(tri::kDelaunay3CounterNames, counters));
-    print_predicate_stats(stats, 3);
-    print_construct_seconds(construct_seconds);
-}
-
 void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);  // before any work: fail fast
@@ -54,12 +46,8 @@ void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
 
     const tri::Delaunay3Options options{insertion_order(arguments.order), arguments.seed};
-    predicates::reset_thread_stats();
-    const auto start = std::chrono::steady_clock::now();
-    const tri::Delaunay3Result result = construct(nodes.xyz, options);
-    const auto stop = std::chrono::steady_clock::now();
-    const predicates::PredicateStats stats = predicates::thread_stats();
-    const double construct_seconds = std::chrono::duration<double>(stop - start).count();
+    const auto [result, stats, seconds] =
+        timed_construction([&] { return construct(nodes.xyz, options); });
     if (result.coplanar) {
         throw tri::CoplanarPoints(
             arguments.input + ": all " + std::to_string(nodes.vertex_count()) +
@@ -86,7 +74,10 @@ void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
     }
     commit_outputs(set);
     std::cout << "tetrahedra: " << mesh.tet_count() << '\n';
-    if (arguments.stats) print_stats(result.counters, stats, construct_seconds);
+    if (arguments.stats) {
+        print_construction_stats(counters_by_name(tri::kDelaunay3CounterNames, result.counters),
+                                 stats, seconds, 3);
+    }
 }
 
 }  // namespace

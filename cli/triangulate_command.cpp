@@ -3,7 +3,6 @@
 // .svg by the output's extension), optionally with work counters and the construction time.
 #include <CLI/CLI.hpp>
 
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <iomanip>
@@ -42,13 +41,6 @@ tri::PointLocation point_location(const std::string& name) {
     throw InputError("unknown point location '" + name + "' (known: auto, walk, grid)");
 }
 
-void print_stats(const tri::Delaunay2Counters& counters, const predicates::PredicateStats& stats,
-                 double construct_seconds) {
-    print_counters(counters_by_name(tri::kDelaunay2CounterNames, counters));
-    print_predicate_stats(stats);
-    print_construct_seconds(construct_seconds);
-}
-
 void run_triangulate(const TriangulateArguments& arguments) {
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);  // before any work: fail fast
@@ -59,12 +51,8 @@ void run_triangulate(const TriangulateArguments& arguments) {
 
     const tri::Delaunay2Options options{insertion_order(arguments.order), arguments.seed,
                                         point_location(arguments.location)};
-    predicates::reset_thread_stats();
-    const auto start = std::chrono::steady_clock::now();
-    const tri::Delaunay2Result result = construct(nodes.xy, options);
-    const auto stop = std::chrono::steady_clock::now();
-    const predicates::PredicateStats stats = predicates::thread_stats();
-    const double construct_seconds = std::chrono::duration<double>(stop - start).count();
+    const auto [result, stats, seconds] =
+        timed_construction([&] { return construct(nodes.xy, options); });
 
     io::OutputSet set;
     switch (format) {
@@ -88,7 +76,10 @@ void run_triangulate(const TriangulateArguments& arguments) {
     }
     commit_outputs(set);
     std::cout << "triangles: " << result.triangles.size() / 3 << '\n';
-    if (arguments.stats) print_stats(result.counters, stats, construct_seconds);
+    if (arguments.stats) {
+        print_construction_stats(counters_by_name(tri::kDelaunay2CounterNames, result.counters),
+                                 stats, seconds);
+    }
 }
 
 }  // namespace

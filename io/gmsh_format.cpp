@@ -8,6 +8,28 @@ namespace exactmesh::io {
 
 namespace {
 
+/// The headers of a $Nodes or $Elements section holding `count` entries tagged 1..count in one
+/// block on entity (entity_dim, 1): "numEntityBlocks count minTag maxTag", then "entityDim
+/// entityTag <kind> count" (kind: parametric 0 for nodes, the element type for elements); an
+/// empty section is "0 0 0 0" alone.
+void append_block_headers(std::string& out, std::size_t count, int entity_dim, int kind) {
+    if (count == 0) {
+        out += "0 0 0 0\n";
+        return;
+    }
+    out += "1 ";
+    append_unsigned(out, count);
+    out += " 1 ";
+    append_unsigned(out, count);
+    out += '\n';
+    append_unsigned(out, static_cast<std::uint64_t>(entity_dim));
+    out += " 1 ";
+    append_unsigned(out, static_cast<std::uint64_t>(kind));
+    out += ' ';
+    append_unsigned(out, count);
+    out += '\n';
+}
+
 /// One block of nodes on entity (entity_dim, 1) and one block of elements of `element_type`
 /// with `corners` nodes each, written in the order `corner_order`. `coordinates`: dimension
 /// values per node (z = 0 appended in 2D).
@@ -20,60 +42,26 @@ std::string format_msh_cells(std::span<const double> coordinates, unsigned dimen
     out.reserve(56 * nodes + 40 * elements + 256);
     out += "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
 
-    // numEntityBlocks numNodes minNodeTag maxNodeTag, then one block on surface entity 1:
-    // entityDim entityTag parametric numNodesInBlock, the tags, then the coordinates.
+    // The headers, the node tags, then the coordinates.
     out += "$Nodes\n";
-    if (nodes == 0) {
-        out += "0 0 0 0\n";
-    } else {
-        out += "1 ";
-        append_unsigned(out, nodes);
-        out += " 1 ";
-        append_unsigned(out, nodes);
+    append_block_headers(out, nodes, entity_dim, 0);  // not parametric
+    for (std::size_t v = 0; v < nodes; ++v) {
+        append_unsigned(out, v + 1);
         out += '\n';
-        append_unsigned(out, static_cast<std::uint64_t>(entity_dim));
-        out += " 1 0 ";
-        append_unsigned(out, nodes);
-        out += '\n';
-        for (std::size_t v = 0; v < nodes; ++v) {
-            append_unsigned(out, v + 1);
-            out += '\n';
-        }
-        for (std::size_t v = 0; v < nodes; ++v) {
-            for (unsigned c = 0; c < dimension; ++c) {
-                if (c > 0) out += ' ';
-                append_double(out, coordinates[dimension * v + c]);
-            }
-            out += dimension == 2 ? " 0\n" : "\n";
-        }
     }
+    append_points_3d(out, coordinates, dimension);
     out += "$EndNodes\n";
 
-    // numEntityBlocks numElements minElementTag maxElementTag, then
-    // entityDim entityTag elementType numElementsInBlock.
+    // The headers, then each element's tag and its nodes.
     out += "$Elements\n";
-    if (elements == 0) {
-        out += "0 0 0 0\n";
-    } else {
-        out += "1 ";
-        append_unsigned(out, elements);
-        out += " 1 ";
-        append_unsigned(out, elements);
-        out += '\n';
-        append_unsigned(out, static_cast<std::uint64_t>(entity_dim));
-        out += " 1 ";
-        append_unsigned(out, static_cast<std::uint64_t>(element_type));
-        out += ' ';
-        append_unsigned(out, elements);
-        out += '\n';
-        for (std::size_t t = 0; t < elements; ++t) {
-            append_unsigned(out, t + 1);
-            for (std::size_t k = 0; k < corners; ++k) {
-                out += ' ';
-                append_unsigned(out, std::uint64_t{cells[corners * t + corner_order[k]]} + 1);
-            }
-            out += '\n';
+    append_block_headers(out, elements, entity_dim, element_type);
+    for (std::size_t t = 0; t < elements; ++t) {
+        append_unsigned(out, t + 1);
+        for (std::size_t k = 0; k < corners; ++k) {
+            out += ' ';
+            append_unsigned(out, std::uint64_t{cells[corners * t + corner_order[k]]} + 1);
         }
+        out += '\n';
     }
     out += "$EndElements\n";
     return out;

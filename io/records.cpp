@@ -44,21 +44,67 @@ std::uint32_t expect_record_number(const TextLines& lines, std::string_view toke
     return static_cast<std::uint32_t>(number);
 }
 
-void expect_end(TextLines& lines, std::uint64_t count, const char* what_plural) {
+void next_record(TextLines& lines, std::uint64_t position, std::uint64_t count, RecordName name) {
+    if (!lines.next_data_line()) {
+        lines.fail_at_end("file ends after " + std::to_string(position) + " of " +
+                          std::to_string(count) + " announced " + name.of(count));
+    }
+}
+
+void read_header(TextLines& lines, const char* format) {
+    if (!lines.next_data_line()) {
+        lines.fail_at_end(std::string("no header line (expected '") + format + "')");
+    }
+}
+
+void expect_end(TextLines& lines, std::uint64_t count, RecordName name) {
     if (lines.next_data_line()) {
         lines.fail_quoting_line("unexpected data after the " + std::to_string(count) +
-                                " announced " + what_plural);
+                                " announced " + name.of(count));
     }
+}
+
+void expect_header_fields(const TextLines& lines, std::size_t max_fields, const char* header,
+                          const char* names) {
+    const std::size_t got = lines.fields().size();
+    if (got > max_fields) {
+        lines.fail_quoting_line(std::string(header) + " has " + std::to_string(got) +
+                                " fields, expected at most " + std::to_string(max_fields) + " (" +
+                                names + ")");
+    }
+}
+
+bool parse_flag(const TextLines& lines, std::string_view token, const char* what) {
+    const std::uint64_t value =
+        lines.parse_unsigned(token, what, std::numeric_limits<std::uint64_t>::max());
+    if (value > 1) lines.fail(std::string(what) + " must be 0 or 1, got " + std::to_string(value));
+    return value == 1;
+}
+
+VertexNumbers::VertexNumbers(std::uint32_t first_index, std::uint32_t vertex_count,
+                             const char* field, const char* vertices)
+    : first_index_(first_index),
+      last_(std::uint64_t{first_index} + vertex_count),
+      field_(field),
+      numbering_(vertex_count == 0
+                     ? std::string("the node file has no ") + vertices
+                     : std::string("the node file numbers its ") + vertices + " " +
+                           std::to_string(first_index) + " to " + std::to_string(last_ - 1)) {}
+
+std::uint32_t VertexNumbers::parse(const TextLines& lines, std::string_view token) const {
+    const std::uint64_t v =
+        lines.parse_unsigned(token, field_, std::numeric_limits<std::uint32_t>::max());
+    if (v < first_index_ || v >= last_) {
+        lines.fail(std::string(field_) + " " + std::to_string(v) + " out of range: " + numbering_);
+    }
+    return static_cast<std::uint32_t>(v - first_index_);
 }
 
 std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension, const char* format,
                                    VertexSection& section) {
+    expect_header_fields(lines, 4, "header",
+                         "#vertices, dimension, #attributes, #boundary markers");
     const auto& header = lines.fields();
-    if (header.size() > 4) {
-        lines.fail_quoting_line("header has " + std::to_string(header.size()) +
-                                " fields, expected at most 4 (#vertices, dimension, #attributes, "
-                                "#boundary markers)");
-    }
     const std::uint64_t count =
         lines.parse_unsigned(header[0], "vertex count", triangulation::kMaxPoints);
     if (header.size() > 1) {
@@ -73,14 +119,8 @@ std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension, const c
         section.attribute_count = static_cast<std::uint32_t>(
             lines.parse_unsigned(header[2], "attribute count", kMaxAttributes));
     }
-    if (header.size() > 3) {
-        const std::uint64_t markers = lines.parse_unsigned(
-            header[3], "boundary marker count", std::numeric_limits<std::uint64_t>::max());
-        if (markers > 1) {
-            lines.fail("boundary marker count must be 0 or 1, got " + std::to_string(markers));
-        }
-        section.has_markers = markers == 1;
-    }
+    if (header.size() > 3)
+        section.has_markers = parse_flag(lines, header[3], "boundary marker count");
     const std::uint64_t expected =
         1 + dimension + std::uint64_t{section.attribute_count} + (section.has_markers ? 1 : 0);
     const std::string names = field_names(dimension == 2 ? "number, x, y" : "number, x, y, z",
@@ -90,10 +130,7 @@ std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension, const c
     section.coordinates.reserve(dimension * lines.plausible_records(count, 2 + 2 * dimension));
     std::string attribute_name;
     for (std::uint64_t i = 0; i < count; ++i) {
-        if (!lines.next_data_line()) {
-            lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
-                              plural(count, "announced vertex", "announced vertices"));
-        }
+        next_record(lines, i, count, kVertices);
         expect_field_count(lines, expected, names);
         const auto& fields = lines.fields();
         expect_record_number(lines, fields[0], "vertex", i, section.first_index);
@@ -115,11 +152,7 @@ std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension, const c
 }
 
 unsigned node_dimension(TextLines& lines) {
-    if (!lines.next_data_line()) {
-        lines.fail_at_end(
-            "no header line (expected '<#vertices> <dimension> <#attributes> <#boundary "
-            "markers>')");
-    }
+    read_header(lines, "<#vertices> <dimension> <#attributes> <#boundary markers>");
     const auto& header = lines.fields();
     lines.parse_unsigned(header[0], "vertex count", triangulation::kMaxPoints);
     if (header.size() < 2) return 2;

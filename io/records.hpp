@@ -29,8 +29,51 @@ void expect_field_count(const TextLines& lines, std::uint64_t expected, const st
 std::uint32_t expect_record_number(const TextLines& lines, std::string_view token, const char* what,
                                    std::uint64_t position, std::uint32_t& first_index);
 
+/// What a section's records are called in messages ("vertex", "vertices").
+struct RecordName {
+    const char* singular;
+    const char* plural;
+    const char* of(std::uint64_t count) const { return count == 1 ? singular : plural; }
+};
+
+inline constexpr RecordName kVertices{"vertex", "vertices"};
+
+/// Advances to record `position` (0-based) of the `count` announced ones; a text that ends
+/// first fails with "file ends after 2 of 5 announced vertices".
+void next_record(TextLines& lines, std::uint64_t position, std::uint64_t count, RecordName name);
+
+/// Advances to the header line; a text without one fails with "no header line (expected
+/// '<format>')".
+void read_header(TextLines& lines, const char* format);
+
 /// Fails when data follows the `count` announced records.
-void expect_end(TextLines& lines, std::uint64_t count, const char* what_plural);
+void expect_end(TextLines& lines, std::uint64_t count, RecordName name);
+
+/// A header holding at most `max_fields` fields; else fails with "<header> has 5 fields,
+/// expected at most 4 (<names>)".
+void expect_header_fields(const TextLines& lines, std::size_t max_fields, const char* header,
+                          const char* names);
+
+/// A 0|1 flag of a header (`what`: "boundary marker count", ...).
+bool parse_flag(const TextLines& lines, std::string_view token, const char* what);
+
+/// The vertex numbers of a record (a triangle's corners, a tetrahedron's nodes) that must name
+/// one of the `vertex_count` vertices of a node file numbered from `first_index`.
+class VertexNumbers {
+  public:
+    /// `field` names the number in messages ("vertex number"), `vertices` the node file's
+    /// records ("vertices").
+    VertexNumbers(std::uint32_t first_index, std::uint32_t vertex_count, const char* field,
+                  const char* vertices);
+    /// The 0-based vertex `token` names; fails when it is out of range.
+    std::uint32_t parse(const TextLines& lines, std::string_view token) const;
+
+  private:
+    std::uint32_t first_index_;
+    std::uint64_t last_;  ///< exclusive
+    const char* field_;
+    std::string numbering_;  ///< "the node file numbers its vertices 1 to 8", for messages
+};
 
 /// The vertex section of a .node or .poly file, in `dimension` coordinates per vertex.
 struct VertexSection {

@@ -18,11 +18,12 @@ namespace {
 using detail::expect_end;
 using detail::expect_field_count;
 using detail::expect_record_number;
-using detail::plural;
 using triangulation::kNone;
 
 /// 4 face slots per tetrahedron must be addressable by a 32-bit index.
 constexpr std::uint64_t kMaxTets = triangulation::kMaxTetSlots;
+
+constexpr detail::RecordName kTetrahedra{"tetrahedron", "tetrahedra"};
 
 /// exactmesh's corner order <-> TetGen's: the last two corners swapped (an involution).
 constexpr unsigned kTetGenCorner[4] = {0, 1, 3, 2};
@@ -32,13 +33,10 @@ constexpr unsigned kTetGenCorner[4] = {0, 1, 3, 2};
 namespace {
 
 TetgenNodeFile parse_tetgen_node_lines(TextLines& lines) {
-    if (!lines.next_data_line()) {
-        lines.fail_at_end(
-            "no header line (expected '<#points> <dimension=3> <#attributes> <#boundary markers>')");
-    }
+    detail::read_header(lines, "<#points> <dimension=3> <#attributes> <#boundary markers>");
     detail::VertexSection section;
     const std::uint64_t count = detail::parse_vertex_section(lines, 3, "a 3D TetGen file", section);
-    expect_end(lines, count, count == 1 ? "vertex" : "vertices");
+    expect_end(lines, count, detail::kVertices);
     TetgenNodeFile nodes;
     nodes.xyz = std::move(section.coordinates);
     nodes.first_index = section.first_index;
@@ -51,17 +49,10 @@ TetgenNodeFile parse_tetgen_node_lines(TextLines& lines) {
 
 TetgenEleFile parse_tetgen_ele_lines(TextLines& lines, std::uint32_t vertex_first_index,
                                      std::uint32_t vertex_count) {
-    if (!lines.next_data_line()) {
-        lines.fail_at_end(
-            "no header line (expected '<#tetrahedra> <nodes per tetrahedron=4> <region attribute "
-            "0|1>')");
-    }
+    detail::read_header(lines, "<#tetrahedra> <nodes per tetrahedron=4> <region attribute 0|1>");
+    detail::expect_header_fields(lines, 3, "header",
+                                 "#tetrahedra, nodes per tetrahedron, region attribute");
     const auto& header = lines.fields();
-    if (header.size() > 3) {
-        lines.fail_quoting_line("header has " + std::to_string(header.size()) +
-                                " fields, expected at most 3 (#tetrahedra, nodes per tetrahedron, "
-                                "region attribute)");
-    }
     const std::uint64_t count = lines.parse_unsigned(header[0], "tetrahedron count", kMaxTets);
     std::uint64_t corners = 4;
     if (header.size() > 1) {
@@ -69,49 +60,55 @@ TetgenEleFile parse_tetgen_ele_lines(TextLines& lines, std::uint32_t vertex_firs
                                        std::numeric_limits<std::uint64_t>::max());
         if (corners != 4 && corners != 10) {
             lines.fail("nodes per tetrahedron must be 4 (or 10 for quadratic tetrahedra), got " +
-                       std::to_string(corners) + (corners == 3 ? " (a 2D Triangle .ele file?)" : ""));
+                       std::to_string(corners) +
+                       (corners == 3 ? " (a 2D Triangle .ele file?)" : ""));
         }
     }
     TetgenEleFile ele;
-    if (header.size() > 2) {
-        const std::uint64_t region = lines.parse_unsigned(
-            header[2], "region attribute flag", std::numeric_limits<std::uint64_t>::max());
-        if (region > 1) lines.fail("region attribute flag must be 0 or 1, got " + std::to_string(region));
-        ele.has_region = region == 1;
-    }
+    if (header.size() > 2)
+        ele.has_region = detail::parse_flag(lines, header[2], "region attribute flag");
     const std::uint64_t expected = 1 + corners + (ele.has_region ? 1 : 0);
     const std::string names = std::string(corners == 4 ? "number, 4 nodes" : "number, 10 nodes") +
                               (ele.has_region ? ", region" : "");
-    const std::uint64_t last = std::uint64_t{vertex_first_index} + vertex_count;  // exclusive
-    const std::string numbering = vertex_count == 0 ? std::string("the node file has no points")
-                                                    : "the node file numbers its points " +
-                                                          std::to_string(vertex_first_index) +
-                                                          " to " + std::to_string(last - 1);
+    const detail::VertexNumbers nodes(vertex_first_index, vertex_count, "node number", "points");
     ele.tets.reserve(4 * lines.plausible_records(count, 10));
     for (std::uint64_t i = 0; i < count; ++i) {
-        if (!lines.next_data_line()) {
-            lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
-                              plural(count, "announced tetrahedron", "announced tetrahedra"));
-        }
+        detail::next_record(lines, i, count, kTetrahedra);
         expect_field_count(lines, expected, names);
         const auto& fields = lines.fields();
         expect_record_number(lines, fields[0], "tetrahedron", i, ele.first_index);
         std::uint32_t corner[4];
         for (std::uint64_t k = 0; k < corners; ++k) {
-            const std::uint64_t v = lines.parse_unsigned(fields[1 + k], "node number",
-                                                         std::numeric_limits<std::uint32_t>::max());
-            if (v < vertex_first_index || v >= last) {
-                lines.fail("node number " + std::to_string(v) + " out of range: " + numbering);
-            }
-            if (k < 4) corner[k] = static_cast<std::uint32_t>(v - vertex_first_index);
+            const std::uint32_t v = nodes.parse(lines, fields[1 + k]);
+            if (k < 4) corner[k] = v;
         }
         for (const unsigned k : kTetGenCorner) ele.tets.push_back(corner[k]);
         if (ele.has_region) {
             ele.regions.push_back(lines.parse_finite_double(fields.back(), "region attribute"));
         }
     }
-    expect_end(lines, count, count == 1 ? "tetrahedron" : "tetrahedra");
+    expect_end(lines, count, kTetrahedra);
     return ele;
+}
+
+/// A per-tetrahedron TetGen table (.ele, .neigh): "<count><header_rest>", then a line per
+/// tetrahedron, its number and append_value(out, t, k) for its 4 slots k in TetGen's order.
+template <class AppendValue>
+std::string format_tet_table(std::size_t count, std::uint32_t first_index, const char* header_rest,
+                             AppendValue&& append_value) {
+    std::string out;
+    out.reserve(48 * count + 32);
+    append_unsigned(out, count);
+    out += header_rest;
+    for (std::size_t t = 0; t < count; ++t) {
+        append_unsigned(out, t + first_index);
+        for (const unsigned k : kTetGenCorner) {
+            out += ' ';
+            append_value(out, t, k);
+        }
+        out += '\n';
+    }
+    return out;
 }
 
 }  // namespace
@@ -166,20 +163,10 @@ void write_tetgen_node(const std::filesystem::path& path, std::span<const double
 }
 
 std::string format_tetgen_ele(std::span<const std::uint32_t> tets, std::uint32_t first_index) {
-    const std::size_t count = tets.size() / 4;
-    std::string out;
-    out.reserve(48 * count + 32);
-    append_unsigned(out, count);
-    out += " 4 0\n";
-    for (std::size_t t = 0; t < count; ++t) {
-        append_unsigned(out, t + first_index);
-        for (const unsigned k : kTetGenCorner) {
-            out += ' ';
-            append_unsigned(out, std::uint64_t{tets[4 * t + k]} + first_index);
-        }
-        out += '\n';
-    }
-    return out;
+    return format_tet_table(tets.size() / 4, first_index, " 4 0\n",
+                            [&](std::string& out, std::size_t t, unsigned k) {
+                                append_unsigned(out, std::uint64_t{tets[4 * t + k]} + first_index);
+                            });
 }
 
 void write_tetgen_ele(const std::filesystem::path& path, std::span<const std::uint32_t> tets,
@@ -214,31 +201,24 @@ std::string format_tetgen_boundary_faces(std::span<const std::uint32_t> tets,
     return out;
 }
 
-void write_tetgen_boundary_faces(const std::filesystem::path& path, std::span<const std::uint32_t> tets,
-                                 std::span<const std::uint32_t> neighbors, std::uint32_t first_index) {
+void write_tetgen_boundary_faces(const std::filesystem::path& path,
+                                 std::span<const std::uint32_t> tets,
+                                 std::span<const std::uint32_t> neighbors,
+                                 std::uint32_t first_index) {
     write_text_file(path, format_tetgen_boundary_faces(tets, neighbors, first_index));
 }
 
-std::string format_tetgen_neigh(std::span<const std::uint32_t> neighbors, std::uint32_t first_index) {
-    const std::size_t count = neighbors.size() / 4;
-    std::string out;
-    out.reserve(48 * count + 32);
-    append_unsigned(out, count);
-    out += " 4\n";
-    for (std::size_t t = 0; t < count; ++t) {
-        append_unsigned(out, t + first_index);
-        for (const unsigned k : kTetGenCorner) {
-            const std::uint32_t neighbor = neighbors[4 * t + k];
-            out += ' ';
-            if (neighbor == kNone) {
-                out += "-1";
-            } else {
-                append_unsigned(out, std::uint64_t{neighbor} + first_index);
-            }
-        }
-        out += '\n';
-    }
-    return out;
+std::string format_tetgen_neigh(std::span<const std::uint32_t> neighbors,
+                                std::uint32_t first_index) {
+    return format_tet_table(neighbors.size() / 4, first_index, " 4\n",
+                            [&](std::string& out, std::size_t t, unsigned k) {
+                                const std::uint32_t neighbor = neighbors[4 * t + k];
+                                if (neighbor == kNone) {
+                                    out += "-1";
+                                } else {
+                                    append_unsigned(out, std::uint64_t{neighbor} + first_index);
+                                }
+                            });
 }
 
 void write_tetgen_neigh(const std::filesystem::path& path, std::span<const std::uint32_t> neighbors,

@@ -468,4 +468,15 @@ void append_signed(std::string& out, std::int64_t value) {
     out.append(buffer, result.ptr);
 }
 
+void append_points_3d(std::string& out, std::span<const double> coordinates, unsigned dimension) {
+    const std::size_t points = coordinates.size() / dimension;
+    for (std::size_t v = 0; v < points; ++v) {
+        for (unsigned c = 0; c < dimension; ++c) {
+            if (c > 0) out += ' ';
+            append_double(out, coordinates[dimension * v + c]);
+        }
+        out += dimension == 2 ? " 0\n" : "\n";
+    }
+}
+
 }  // namespace exactmesh::io

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -143,5 +144,8 @@ void append_double(std::string& out, double value);
 void append_fixed(std::string& out, double value, int decimals);
 void append_unsigned(std::string& out, std::uint64_t value);
 void append_signed(std::string& out, std::int64_t value);
+/// Appends a line "x y z" per point of `coordinates` (`dimension` values per point, 2 or 3;
+/// z = 0 appended in 2D), as the 3D point lists of Gmsh and VTK want them.
+void append_points_3d(std::string& out, std::span<const double> coordinates, unsigned dimension);
 
 }  // namespace exactmesh::io

@@ -18,12 +18,28 @@ using detail::expect_field_count;
 using detail::expect_record_number;
 using detail::field_names;
 using detail::kMaxAttributes;
-using detail::plural;
 using triangulation::kMaxPoints;
 using triangulation::kNone;
 
 /// 3 corner slots per triangle must be addressable by a 32-bit index.
 constexpr std::uint64_t kMaxTriangles = (std::uint64_t{kNone} - 1) / 3;
+
+constexpr detail::RecordName kTriangles{"triangle", "triangles"};
+constexpr detail::RecordName kHoles{"hole", "holes"};
+constexpr detail::RecordName kRegions{"region", "regions"};
+
+/// What a .node (or the vertex section of a .poly) starts with, for the "no header" message.
+constexpr const char* kNodeHeader = "<#vertices> <dimension=2> <#attributes> <#boundary markers>";
+
+/// The count on a .poly header of one field: the hole or the region header.
+std::uint64_t parse_count_header(const TextLines& lines, detail::RecordName name) {
+    const auto& header = lines.fields();
+    if (header.size() != 1) {
+        lines.fail_quoting_line(std::string(name.singular) +
+                                " header must hold one field, the number of " + name.plural);
+    }
+    return lines.parse_unsigned(header[0], std::string(name.singular) + " count", kMaxTriangles);
+}
 
 /// The 2D vertex section into a NodeFile.
 std::uint64_t parse_vertex_section(TextLines& lines, NodeFile& nodes) {
@@ -40,14 +56,10 @@ std::uint64_t parse_vertex_section(TextLines& lines, NodeFile& nodes) {
 }
 
 NodeFile parse_node_lines(TextLines& lines) {
-    if (!lines.next_data_line()) {
-        lines.fail_at_end(
-            "no header line (expected '<#vertices> <dimension=2> <#attributes> <#boundary "
-            "markers>')");
-    }
+    detail::read_header(lines, kNodeHeader);
     NodeFile nodes;
     const std::uint64_t count = parse_vertex_section(lines, nodes);
-    expect_end(lines, count, count == 1 ? "vertex" : "vertices");
+    expect_end(lines, count, detail::kVertices);
     return nodes;
 }
 
@@ -97,11 +109,7 @@ void write_node(const std::filesystem::path& path, const NodeFile& nodes) {
 namespace {
 
 PolyFile parse_poly_lines(TextLines& lines, const std::filesystem::path& node_path) {
-    if (!lines.next_data_line()) {
-        lines.fail_at_end(
-            "no header line (expected '<#vertices> <dimension=2> <#attributes> <#boundary "
-            "markers>')");
-    }
+    detail::read_header(lines, kNodeHeader);
     PolyFile poly;
     const std::uint64_t announced = parse_vertex_section(lines, poly.vertices);
     if (announced == 0) {
@@ -113,22 +121,15 @@ PolyFile parse_poly_lines(TextLines& lines, const std::filesystem::path& node_pa
     const std::uint32_t base = poly.vertices.first_index;
     const std::uint64_t vertex_count = poly.vertices.vertex_count();
     if (!lines.next_data_line()) {
-        lines.fail_at_end("file ends before the segment header ('<#segments> <#boundary markers>')");
+        lines.fail_at_end(
+            "file ends before the segment header ('<#segments> <#boundary markers>')");
     }
     {
+        detail::expect_header_fields(lines, 2, "segment header", "#segments, #boundary markers");
         const auto& header = lines.fields();
-        if (header.size() > 2) {
-            lines.fail_quoting_line("segment header has " + std::to_string(header.size()) +
-                                    " fields, expected at most 2 (#segments, #boundary markers)");
-        }
         const std::uint64_t count = lines.parse_unsigned(header[0], "segment count", kMaxTriangles);
         if (header.size() > 1) {
-            const std::uint64_t markers = lines.parse_unsigned(
-                header[1], "segment marker count", std::numeric_limits<std::uint64_t>::max());
-            if (markers > 1) {
-                lines.fail("segment marker count must be 0 or 1, got " + std::to_string(markers));
-            }
-            poly.has_segment_markers = markers == 1;
+            poly.has_segment_markers = detail::parse_flag(lines, header[1], "segment marker count");
         }
         const std::uint64_t expected = 3 + (poly.has_segment_markers ? 1 : 0);
         const std::string names = poly.has_segment_markers ? "number, endpoint, endpoint, marker"
@@ -136,42 +137,36 @@ PolyFile parse_poly_lines(TextLines& lines, const std::filesystem::path& node_pa
         poly.segments.reserve(2 * lines.plausible_records(count, 6));
         std::uint32_t segment_base = base;
         for (std::uint64_t i = 0; i < count; ++i) {
-            if (!lines.next_data_line()) {
-                lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
-                                  plural(count, "announced segment", "announced segments"));
-            }
+            detail::next_record(lines, i, count, {"segment", "segments"});
             expect_field_count(lines, expected, names);
             const auto& fields = lines.fields();
             expect_record_number(lines, fields[0], "segment", i, segment_base);
             for (int k = 1; k <= 2; ++k) {
-                const std::uint64_t v = lines.parse_unsigned(fields[static_cast<std::size_t>(k)], "segment endpoint",
-                                                             std::numeric_limits<std::uint32_t>::max());
+                const std::uint64_t v =
+                    lines.parse_unsigned(fields[static_cast<std::size_t>(k)], "segment endpoint",
+                                         std::numeric_limits<std::uint32_t>::max());
                 if (v < base || v >= base + vertex_count) {
                     lines.fail("segment endpoint " + std::to_string(v) + " names no vertex: " +
-                               (vertex_count == 0 ? std::string("there are no vertices")
-                                                  : "the vertices are numbered " + std::to_string(base) + " to " +
-                                                        std::to_string(base + vertex_count - 1)));
+                               (vertex_count == 0
+                                    ? std::string("there are no vertices")
+                                    : "the vertices are numbered " + std::to_string(base) + " to " +
+                                          std::to_string(base + vertex_count - 1)));
                 }
                 poly.segments.push_back(static_cast<VertIdx>(v - base));
             }
             if (poly.has_segment_markers) {
-                poly.segment_markers.push_back(static_cast<std::int32_t>(
-                    lines.parse_signed(fields[3], "segment marker", std::numeric_limits<std::int32_t>::min(),
-                                       std::numeric_limits<std::int32_t>::max())));
+                poly.segment_markers.push_back(static_cast<std::int32_t>(lines.parse_signed(
+                    fields[3], "segment marker", std::numeric_limits<std::int32_t>::min(),
+                    std::numeric_limits<std::int32_t>::max())));
             }
         }
     }
     if (!lines.next_data_line()) lines.fail_at_end("file ends before the hole count ('<#holes>')");
     {
-        const auto& header = lines.fields();
-        if (header.size() != 1) lines.fail_quoting_line("hole header must hold one field, the number of holes");
-        const std::uint64_t count = lines.parse_unsigned(header[0], "hole count", kMaxTriangles);
+        const std::uint64_t count = parse_count_header(lines, kHoles);
         std::uint32_t hole_base = base;
         for (std::uint64_t i = 0; i < count; ++i) {
-            if (!lines.next_data_line()) {
-                lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
-                                  plural(count, "announced hole", "announced holes"));
-            }
+            detail::next_record(lines, i, count, kHoles);
             expect_field_count(lines, 3, "number, x, y");
             expect_record_number(lines, lines.fields()[0], "hole", i, hole_base);
             poly.hole_lines.push_back(lines.line_number());
@@ -180,29 +175,26 @@ PolyFile parse_poly_lines(TextLines& lines, const std::filesystem::path& node_pa
         }
     }
     if (lines.next_data_line()) {
-        const auto& header = lines.fields();
-        if (header.size() != 1) lines.fail_quoting_line("region header must hold one field, the number of regions");
-        const std::uint64_t count = lines.parse_unsigned(header[0], "region count", kMaxTriangles);
+        const std::uint64_t count = parse_count_header(lines, kRegions);
         std::uint32_t region_base = base;
         for (std::uint64_t i = 0; i < count; ++i) {
-            if (!lines.next_data_line()) {
-                lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
-                                  plural(count, "announced region", "announced regions"));
-            }
+            detail::next_record(lines, i, count, kRegions);
             const auto& fields = lines.fields();
             if (fields.size() != 4 && fields.size() != 5) {
-                lines.fail_quoting_line("expected 4 or 5 fields (number, x, y, attribute[, maximum area]), got " +
-                                        std::to_string(fields.size()));
+                lines.fail_quoting_line(
+                    "expected 4 or 5 fields (number, x, y, attribute[, maximum area]), got " +
+                    std::to_string(fields.size()));
             }
             expect_record_number(lines, fields[0], "region", i, region_base);
             poly.region_lines.push_back(lines.line_number());
             poly.regions.push_back(lines.parse_finite_double(fields[1], "region x coordinate"));
             poly.regions.push_back(lines.parse_finite_double(fields[2], "region y coordinate"));
             poly.regions.push_back(lines.parse_finite_double(fields[3], "region attribute"));
-            poly.regions.push_back(fields.size() == 5 ? lines.parse_finite_double(fields[4], "region maximum area")
-                                                      : -1.0);
+            poly.regions.push_back(fields.size() == 5
+                                       ? lines.parse_finite_double(fields[4], "region maximum area")
+                                       : -1.0);
         }
-        expect_end(lines, count, count == 1 ? "region" : "regions");
+        expect_end(lines, count, kRegions);
     }
     return poly;
 }
@@ -243,7 +235,8 @@ std::string format_poly(const NodeFile& vertices, std::span<const VertIdx> segme
         append_unsigned(out, s + vertices.first_index);
         for (int k = 0; k < 2; ++k) {
             out += ' ';
-            append_unsigned(out, std::uint64_t{segments[2 * s + static_cast<std::size_t>(k)]} + vertices.first_index);
+            append_unsigned(out, std::uint64_t{segments[2 * s + static_cast<std::size_t>(k)]} +
+                                     vertices.first_index);
         }
         if (markers) {
             out += ' ';
@@ -255,8 +248,8 @@ std::string format_poly(const NodeFile& vertices, std::span<const VertIdx> segme
     return out;
 }
 
-void write_poly(const std::filesystem::path& path, const NodeFile& vertices, std::span<const VertIdx> segments,
-                std::span<const std::int32_t> segment_markers) {
+void write_poly(const std::filesystem::path& path, const NodeFile& vertices,
+                std::span<const VertIdx> segments, std::span<const std::int32_t> segment_markers) {
     write_text_file(path, format_poly(vertices, segments, segment_markers));
 }
 
@@ -264,16 +257,9 @@ namespace {
 
 EleFile parse_ele_lines(TextLines& lines, std::uint32_t vertex_first_index,
                         std::uint32_t vertex_count) {
-    if (!lines.next_data_line()) {
-        lines.fail_at_end(
-            "no header line (expected '<#triangles> <nodes per triangle=3> <#attributes>')");
-    }
+    detail::read_header(lines, "<#triangles> <nodes per triangle=3> <#attributes>");
+    detail::expect_header_fields(lines, 3, "header", "#triangles, nodes per triangle, #attributes");
     const auto& header = lines.fields();
-    if (header.size() > 3) {
-        lines.fail_quoting_line("header has " + std::to_string(header.size()) +
-                                " fields, expected at most 3 (#triangles, nodes per triangle, "
-                                "#attributes)");
-    }
     const std::uint64_t count = lines.parse_unsigned(header[0], "triangle count", kMaxTriangles);
     std::uint64_t corners = 3;
     if (header.size() > 1) {
@@ -293,30 +279,19 @@ EleFile parse_ele_lines(TextLines& lines, std::uint32_t vertex_first_index,
     const std::string names =
         field_names(corners == 3 ? "number, v1, v2, v3" : "number, v1, v2, v3, v4, v5, v6",
                     ele.attribute_count, false);
-    const std::uint64_t last_vertex =
-        std::uint64_t{vertex_first_index} + vertex_count;  // exclusive
-    const std::string numbering = vertex_count == 0 ? std::string("the node file has no vertices")
-                                                    : "the node file numbers its vertices " +
-                                                          std::to_string(vertex_first_index) +
-                                                          " to " + std::to_string(last_vertex - 1);
+    const detail::VertexNumbers vertices(vertex_first_index, vertex_count, "vertex number",
+                                         "vertices");
 
     ele.triangles.reserve(3 * lines.plausible_records(count, 8));
     std::string attribute_name;
     for (std::uint64_t i = 0; i < count; ++i) {
-        if (!lines.next_data_line()) {
-            lines.fail_at_end("file ends after " + std::to_string(i) + " of " +
-                              plural(count, "announced triangle", "announced triangles"));
-        }
+        detail::next_record(lines, i, count, kTriangles);
         expect_field_count(lines, expected, names);
         const auto& fields = lines.fields();
         expect_record_number(lines, fields[0], "triangle", i, ele.first_index);
         for (std::uint64_t k = 0; k < corners; ++k) {
-            const std::uint64_t v = lines.parse_unsigned(fields[1 + k], "vertex number",
-                                                         std::numeric_limits<std::uint32_t>::max());
-            if (v < vertex_first_index || v >= last_vertex) {
-                lines.fail("vertex number " + std::to_string(v) + " out of range: " + numbering);
-            }
-            if (k < 3) ele.triangles.push_back(static_cast<VertIdx>(v - vertex_first_index));
+            const std::uint32_t v = vertices.parse(lines, fields[1 + k]);
+            if (k < 3) ele.triangles.push_back(v);
         }
         for (std::uint32_t a = 0; a < ele.attribute_count; ++a) {
             attribute_name = "attribute " + std::to_string(a + 1);
@@ -324,7 +299,7 @@ EleFile parse_ele_lines(TextLines& lines, std::uint32_t vertex_first_index,
                 lines.parse_finite_double(fields[1 + corners + a], attribute_name));
         }
     }
-    expect_end(lines, count, count == 1 ? "triangle" : "triangles");
+    expect_end(lines, count, kTriangles);
     return ele;
 }
 

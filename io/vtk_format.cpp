@@ -45,13 +45,7 @@ std::string format_vtu_cells(std::span<const double> coordinates, unsigned dimen
 
     out += "      <Points>\n";
     out += "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (std::size_t v = 0; v < points; ++v) {
-        for (unsigned c = 0; c < dimension; ++c) {
-            if (c > 0) out += ' ';
-            append_double(out, coordinates[dimension * v + c]);
-        }
-        out += dimension == 2 ? " 0\n" : "\n";
-    }
+    append_points_3d(out, coordinates, dimension);
     out += "        </DataArray>\n      </Points>\n";
 
     out += "      <Cells>\n";

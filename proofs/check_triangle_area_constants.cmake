@@ -32,16 +32,19 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "Gappa does not prove the triangle_area constants 2^${product}, "
                       "2^${result}, 2^${floor} (${script}):\n${log}")
 endif()
-math(EXPR half "${product} - 1")
-run_gappa(${half} ${result} ${floor} rc log)
-if(rc EQUAL 0)
-  message(FATAL_ERROR "triangle_area_filter_eps = 2^${product} is not the least: 2^${half} is "
-                      "proven too (${script}). Put the least one into ${header}.")
-endif()
-math(EXPR half "${result} - 1")
-run_gappa(${product} ${half} ${floor} rc log)
-if(rc EQUAL 0)
-  message(FATAL_ERROR "triangle_area_filter_result_eps = 2^${result} is not the least: 2^${half} "
-                      "is proven too (${script}). Put the least one into ${header}.")
-endif()
+# Fails when Gappa proves the bounds with the constant `which` (product or result, named
+# `name` in the header) halved too: the header must hold the least constant.
+function(expect_least which name)
+  set(try_product ${product})
+  set(try_result ${result})
+  math(EXPR try_${which} "${${which}} - 1")
+  run_gappa(${try_product} ${try_result} ${floor} rc log)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "${name} = 2^${${which}} is not the least: 2^${try_${which}} is proven "
+                        "too (${script}). Put the least one into ${header}.")
+  endif()
+endfunction()
+
+expect_least(product triangle_area_filter_eps)
+expect_least(result triangle_area_filter_result_eps)
 message(STATUS "triangle_area_filter constants 2^${product}, 2^${result}, 2^${floor} are proven")

@@ -462,6 +462,20 @@ def cross_check(res, out):
 # ------------------------------------------------------------------------------------------
 # Plots
 
+def finish_axes(ax, title):
+    """What every panel has: its title, N on the x axis, a grid and the legend."""
+    ax.set_title(title)
+    ax.set_xlabel("N (points)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8, loc="upper left")
+
+
+def save_figure(fig, path):
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def plot_time(res, path):
     fig, axes = plt.subplots(1, len(DISTRIBUTIONS), figsize=(13, 5.2), sharey=True)
     for ax, dist in zip(axes, DISTRIBUTIONS):
@@ -473,16 +487,11 @@ def plot_time(res, path):
             ax.loglog(ns, ts, marker="o", markersize=3.5, color=STYLE[algo],
                       linestyle=LINESTYLE[order], linewidth=2 if algo == "cgal" else 1.5,
                       label=f"{family_label(algo, order)} (exponent {fmt(e)})")
-        ax.set_title(f"{dist} points")
-        ax.set_xlabel("N (points)")
         ax.set_xscale("log", base=2)
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8, loc="upper left")
+        finish_axes(ax, f"{dist} points")
     axes[0].set_ylabel("median CPU seconds per construction")
     fig.suptitle("2D Delaunay construction time vs N (log-log)")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def plot_ratio(res, path):
@@ -502,15 +511,10 @@ def plot_ratio(res, path):
         ax.set_xscale("log", base=2)
         ax.set_yscale("log", base=2)
         ax.yaxis.set_major_formatter(FuncFormatter(lambda y, _: f"{y:g}"))
-        ax.set_title(f"{dist} points")
-        ax.set_xlabel("N (points)")
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8, loc="upper left")
+        finish_axes(ax, f"{dist} points")
     axes[0].set_ylabel("time ours / time CGAL (below 1: faster)")
     fig.suptitle("Construction time relative to CGAL Delaunay_triangulation_2<Epick>")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def plot_parabola(res, path):
@@ -529,14 +533,9 @@ def plot_parabola(res, path):
             ax.loglog(ns, [ts[0] * (n / ns[0]) ** power for n in ns], color="black",
                       linestyle=style, linewidth=0.8, label=f"slope {power}")
     ax.set_xscale("log", base=2)
-    ax.set_xlabel("N (points)")
     ax.set_ylabel("median CPU seconds")
-    ax.set_title("Bowyer-Watson on (t, t²): sorted vs random insertion")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8, loc="upper left")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    finish_axes(ax, "Bowyer-Watson on (t, t²): sorted vs random insertion")
+    save_figure(fig, path)
 
 
 def make_picture(bench, cli, out_dir):

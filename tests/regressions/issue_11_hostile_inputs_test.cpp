@@ -18,6 +18,7 @@
 #include "io/format_error.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
+#include "tests/support/error_message.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 
 namespace {
@@ -61,12 +62,7 @@ class Issue11 : public ::testing::Test {
 /// The FormatError message of `work`, or "" when it throws none.
 template <class Work>
 std::string error_of(Work&& work) {
-    try {
-        work();
-    } catch (const io::FormatError& error) {
-        return error.what();
-    }
-    return "";
+    return exactmesh::testing::error_message<io::FormatError>(work);
 }
 
 // Data loss: a companion that cannot be written (its path is a directory) used to leave the

@@ -14,6 +14,7 @@
 
 #include "io/gmsh_format.hpp"
 #include "io/svg_picture.hpp"
+#include "io/text_file.hpp"
 #include "io/vtk_format.hpp"
 
 namespace io = exactmesh::io;
@@ -163,6 +164,19 @@ TEST(Io_MeshWriters, SvgStaysCompactAndThinLinedForManyTriangles) {
     EXPECT_LT(svg.size(), 1'000'000u);
     EXPECT_LT(attribute(svg, "stroke-width"), 1.0);  // lines thinner than the ~10-unit cells
     EXPECT_NEAR(attribute(svg, "height") / attribute(svg, "width"), 0.5, 0.03);
+}
+
+// The point list Gmsh's $Nodes and VTK's <Points> share: exact shortest decimals, z = 0 in 2D.
+TEST(PointList, TwoAndThreeDimensionsLineByLine) {
+    std::string out = "x\n";
+    io::append_points_3d(out, std::vector<double>{0.1, -1e-310, 3, 1.0 / 3.0}, 2);
+    EXPECT_EQ(out, "x\n0.1 -1e-310 0\n3 0.3333333333333333 0\n");
+    out.clear();
+    io::append_points_3d(out, std::vector<double>{1, 2, 3, -0.5, 0, 1.7976931348623157e308}, 3);
+    EXPECT_EQ(out, "1 2 3\n-0.5 0 1.7976931348623157e+308\n");
+    out.clear();
+    io::append_points_3d(out, std::vector<double>{}, 3);
+    EXPECT_EQ(out, "");
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include <string>
 
 #include "base/errors.hpp"
+#include "tests/support/error_message.hpp"
 
 namespace em = exactmesh;
 namespace pr = exactmesh::predicates;
@@ -553,14 +554,10 @@ TEST(Predicates_Constructions, SubnormalResultsAreRoundedOnce) {
 // ---------------------------------------------------------------------------------------------
 // Errors.
 
+/// The GeometryError message of `call`, or "" when it throws none.
 template <class Call>
 std::string error_message(Call call) {
-    try {
-        call();
-    } catch (const em::GeometryError& e) {
-        return e.what();
-    }
-    return "no GeometryError";
+    return em::testing::error_message<em::GeometryError>(call);
 }
 
 TEST(Predicates_Constructions, CollinearTriangleIsAnError) {

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+// What the benchmark binaries share: the pinned seeds of their inputs, the heap regime of the
+// constructions they time, the context lines of their JSON (build type, compiler, peak memory
+// rule) and the run of Google Benchmark that ends their main().
+#pragma once
+
+#include <benchmark/benchmark.h>
+#include <malloc.h>  // mallopt, malloc_trim: the heap regime
+
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <string_view>
+#include <vector>
+
+#if defined(EXACTMESH_WITH_CGAL)
+#include <CGAL/version.h>
+#endif
+
+#ifndef EXACTMESH_BENCH_BUILD_TYPE
+#define EXACTMESH_BENCH_BUILD_TYPE "unknown"
+#endif
+
+namespace exactmesh::bench {
+
+/// Pinned seeds: the generated input of every (workload, n), and the random/BRIO shuffles.
+inline constexpr std::uint64_t kInputSeed = 20240601;
+inline constexpr std::uint64_t kOrderSeed = 1;
+
+/// The heap regime of the timed constructions. Warm (default): malloc never returns memory to
+/// the kernel (no mmap for large blocks, no trimming), so every construction reuses resident
+/// pages, whatever ran before it. Cold (EXACTMESH_BENCH_COLD_HEAP=1): the heap is trimmed after
+/// each construction (timer paused) and large blocks are mmapped, so each construction pays
+/// its page faults, as a one-shot run does. Without fixing one or the other, glibc's adaptive
+/// mmap/trim thresholds made the regime depend on the benchmarks run before: on the reference
+/// VM, where a page fault is expensive, the same construction measured 1x or 2x.
+inline bool cold_heap() {
+    static const bool value = [] {
+        const char* text = std::getenv("EXACTMESH_BENCH_COLD_HEAP");
+        return text != nullptr && std::string_view(text) == "1";
+    }();
+    return value;
+}
+
+/// Sets the regime (see cold_heap) before any benchmark runs.
+inline void set_heap_regime() {
+    if (cold_heap()) return;
+    mallopt(M_MMAP_MAX, 0);
+    mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
+}
+
+/// Called with the timer paused after each construction is destroyed.
+inline void after_construction() {
+    if (cold_heap()) malloc_trim(0);
+}
+
+/// The context line that says how peak_bytes counters are measured (bench/heap_accounting.cpp).
+inline void add_peak_memory_context() {
+    benchmark::AddCustomContext("exactmesh_peak_memory",
+                                "peak live heap bytes (operator new, malloc_usable_size)");
+}
+
+/// The context line naming the compiler and its version.
+inline void add_compiler_context() {
+#if defined(__clang__)
+    benchmark::AddCustomContext("exactmesh_compiler", "clang " __clang_version__);
+#elif defined(__GNUC__)
+    benchmark::AddCustomContext("exactmesh_compiler", "gcc " __VERSION__);
+#endif
+}
+
+/// The context line naming the CGAL version compared against (none without EXACTMESH_WITH_CGAL).
+inline void add_cgal_context() {
+#if defined(EXACTMESH_WITH_CGAL)
+    benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
+#endif
+}
+
+/// The rest of main(): Google Benchmark reads its flags from the command line (an unrecognized
+/// one ends the run with status 1), runs the benchmarks they select and shuts down.
+inline int run_benchmarks(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
+
+/// run_benchmarks with a short default min_time, --benchmark_min_time=0.1, placed before the
+/// command line's flags so that those come later and win.
+inline int run_benchmarks_with_default_min_time(int argc, char** argv) {
+    static char min_time[] = "--benchmark_min_time=0.1";
+    std::vector<char*> args(argv, argv + argc);
+    args.insert(args.begin() + 1, min_time);
+    return run_benchmarks(static_cast<int>(args.size()), args.data());
+}
+
+}  // namespace exactmesh::bench
