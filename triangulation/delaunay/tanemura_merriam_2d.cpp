@@ -26,12 +26,14 @@ class NodePool {
   public:
     /// A slot holding `node`.
     std::uint32_t allocate(const Node& node) {
-        if (free_ == kNone) {
-            nodes_.push_back(node);
-            return static_cast<std::uint32_t>(nodes_.size() - 1);
+        std::uint32_t slot;
+        if (free_ != kNone) {
+            slot = free_;
+            free_ = nodes_[slot].next;
+        } else {
+            slot = static_cast<std::uint32_t>(nodes_.size());
+            nodes_.push_back({});
         }
-        const std::uint32_t slot = free_;
-        free_ = nodes_[slot].next;
         nodes_[slot] = node;
         return slot;
     }
