@@ -15,6 +15,8 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "predicates/sign.hpp"
+#include "predicates/stats.hpp"
 
 namespace exactmesh::predicates::detail {
 
@@ -80,6 +82,36 @@ inline bool rescale_into_safe_range(int degree, std::initializer_list<double> co
     std::size_t i = 0;
     for (const double x : coordinates) out[i++] = second == 0 ? x * f1 : x * f1 * f2;
     return true;
+}
+
+/// EM_STAT for a predicate chosen by the caller: one more call of `predicate` ended in `stage`.
+inline void count_stage([[maybe_unused]] StageCounts PredicateStats::*predicate,
+                        [[maybe_unused]] std::uint64_t StageCounts::*stage) noexcept {
+#if defined(EXACTMESH_PREDICATE_STATS)
+    ++((thread_stats().*predicate).*stage);
+#endif
+}
+
+/// The sign of a predicate whose `N` coordinates are outside the expansion-safe range: scaled
+/// into it when that is exact (rescale_into_safe_range), then decided by the predicate's own
+/// filter and exact stages on the scaled copy (`scaled_filter(s)`, `scaled_exact(s)`, s the N
+/// scaled coordinates in the order given); else `gmp()` on the original points. Counts the
+/// stages in `predicate`'s counters as the predicate itself does (rescaled, filter, gmp).
+template <std::size_t N, class Filter, class Exact, class Gmp>
+Sign out_of_range_sign(StageCounts PredicateStats::*predicate, int degree,
+                       std::initializer_list<double> coordinates, Filter scaled_filter,
+                       Exact scaled_exact, Gmp gmp) {
+    double s[N];
+    if (rescale_into_safe_range(degree, coordinates, s)) {
+        count_stage(predicate, &StageCounts::rescaled);
+        if (const auto sign = scaled_filter(static_cast<const double*>(s))) {
+            count_stage(predicate, &StageCounts::filter);
+            return *sign;
+        }
+        return scaled_exact(static_cast<const double*>(s));  // expansion-safe now
+    }
+    count_stage(predicate, &StageCounts::gmp);
+    return gmp();
 }
 
 /// Throws GeometryError when a coordinate is NaN or infinite; predicates have no exact answer.

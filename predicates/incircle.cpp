@@ -66,17 +66,11 @@ Sign incircle_exact(const double* a, const double* b, const double* c, const dou
     const auto coordinates = {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
     detail::require_finite("incircle", coordinates);
     if (!detail::expansion_safe(4, coordinates)) {
-        double s[8];
-        if (detail::rescale_into_safe_range(4, coordinates, s)) {
-            EM_STAT(incircle, rescaled);
-            if (const auto sign = incircle_filter(s, s + 2, s + 4, s + 6)) {
-                EM_STAT(incircle, filter);
-                return *sign;
-            }
-            return incircle_exact(s, s + 2, s + 4, s + 6);  // expansion-safe now
-        }
-        EM_STAT(incircle, gmp);
-        return incircle_gmp(a, b, c, d);
+        return detail::out_of_range_sign<8>(
+            &PredicateStats::incircle, 4, coordinates,
+            [](const double* s) { return incircle_filter(s, s + 2, s + 4, s + 6); },
+            [](const double* s) { return incircle_exact(s, s + 2, s + 4, s + 6); },
+            [&] { return incircle_gmp(a, b, c, d); });
     }
     double diff[6], tail[6];
     const double* rows[3] = {a, b, c};

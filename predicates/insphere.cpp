@@ -85,17 +85,11 @@ Sign insphere_exact(const double* a, const double* b, const double* c, const dou
                               c[2], d[0], d[1], d[2], e[0], e[1], e[2]};
     detail::require_finite("insphere", coordinates);
     if (!detail::expansion_safe(5, coordinates)) {
-        double s[15];
-        if (detail::rescale_into_safe_range(5, coordinates, s)) {
-            EM_STAT(insphere, rescaled);
-            if (const auto sign = insphere_filter(s, s + 3, s + 6, s + 9, s + 12)) {
-                EM_STAT(insphere, filter);
-                return *sign;
-            }
-            return insphere_exact(s, s + 3, s + 6, s + 9, s + 12);  // expansion-safe now
-        }
-        EM_STAT(insphere, gmp);
-        return insphere_gmp(a, b, c, d, e);
+        return detail::out_of_range_sign<15>(
+            &PredicateStats::insphere, 5, coordinates,
+            [](const double* s) { return insphere_filter(s, s + 3, s + 6, s + 9, s + 12); },
+            [](const double* s) { return insphere_exact(s, s + 3, s + 6, s + 9, s + 12); },
+            [&] { return insphere_gmp(a, b, c, d, e); });
     }
     double diff[12], tail[12];
     const double* rows[4] = {a, b, c, d};

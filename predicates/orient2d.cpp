@@ -24,17 +24,11 @@ Expansion<4> minor_xy(const double* p, const double* q) noexcept {
 Sign orient2d_exact(const double* a, const double* b, const double* c) {
     detail::require_finite("orient2d", {a[0], a[1], b[0], b[1], c[0], c[1]});
     if (!detail::expansion_safe(2, {a[0], a[1], b[0], b[1], c[0], c[1]})) {
-        double s[6];
-        if (detail::rescale_into_safe_range(2, {a[0], a[1], b[0], b[1], c[0], c[1]}, s)) {
-            EM_STAT(orient2d, rescaled);
-            if (const auto sign = orient2d_filter(s, s + 2, s + 4)) {
-                EM_STAT(orient2d, filter);
-                return *sign;
-            }
-            return orient2d_exact(s, s + 2, s + 4);  // expansion-safe now: no second scaling
-        }
-        EM_STAT(orient2d, gmp);
-        return orient2d_gmp(a, b, c);
+        return detail::out_of_range_sign<6>(
+            &PredicateStats::orient2d, 2, {a[0], a[1], b[0], b[1], c[0], c[1]},
+            [](const double* s) { return orient2d_filter(s, s + 2, s + 4); },
+            [](const double* s) { return orient2d_exact(s, s + 2, s + 4); },
+            [&] { return orient2d_gmp(a, b, c); });
     }
     double adx, bdx, ady, bdy, adx_tail, bdx_tail, ady_tail, bdy_tail;
     two_diff(a[0], c[0], adx, adx_tail);

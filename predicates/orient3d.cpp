@@ -33,17 +33,11 @@ Sign orient3d_exact(const double* a, const double* b, const double* c, const dou
                               c[0], c[1], c[2], d[0], d[1], d[2]};
     detail::require_finite("orient3d", coordinates);
     if (!detail::expansion_safe(3, coordinates)) {
-        double s[12];
-        if (detail::rescale_into_safe_range(3, coordinates, s)) {
-            EM_STAT(orient3d, rescaled);
-            if (const auto sign = orient3d_filter(s, s + 3, s + 6, s + 9)) {
-                EM_STAT(orient3d, filter);
-                return *sign;
-            }
-            return orient3d_exact(s, s + 3, s + 6, s + 9);  // expansion-safe now
-        }
-        EM_STAT(orient3d, gmp);
-        return orient3d_gmp(a, b, c, d);
+        return detail::out_of_range_sign<12>(
+            &PredicateStats::orient3d, 3, coordinates,
+            [](const double* s) { return orient3d_filter(s, s + 3, s + 6, s + 9); },
+            [](const double* s) { return orient3d_exact(s, s + 3, s + 6, s + 9); },
+            [&] { return orient3d_gmp(a, b, c, d); });
     }
     double diff[9], tail[9];
     const double* rows[3] = {a, b, c};

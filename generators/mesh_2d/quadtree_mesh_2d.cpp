@@ -251,6 +251,8 @@ class QuadtreeMesher {
                 const std::array<double, 4>& corners);
     void split_counted(std::uint32_t n);
     void balance();
+    void obstacles_near(std::uint32_t n, const std::vector<std::uint32_t>& list,
+                        std::vector<std::uint32_t>& found);
     void distribute(std::uint32_t n, const std::vector<std::uint32_t>& list);
     void distribute_all();
     void split_pieces();
@@ -438,11 +440,7 @@ void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& l
     const std::uint32_t first = tree_.nodes[n].child;
     std::vector<std::uint32_t> child_list;
     for (std::uint32_t c = first; c < first + 4; ++c) {
-        child_list.clear();
-        const Box g = tree_.grown(c, options_.clearance);
-        for (const std::uint32_t o : list) {
-            if (meets(obstacles_[o], g, counters_.box_tests)) child_list.push_back(o);
-        }
+        obstacles_near(c, list, child_list);
         const unsigned col = (c - first) & 1, row = (c - first) >> 1;
         refine(c, child_list, inside,
                {grid[row][col], grid[row][col + 1], grid[row + 1][col], grid[row + 1][col + 1]});
@@ -476,6 +474,17 @@ void QuadtreeMesher::balance() {
     }
 }
 
+/// The obstacles of `list` that meet node n's box grown by the clearance (exact box tests),
+/// into `found` (cleared first): a child's share of its parent's list.
+void QuadtreeMesher::obstacles_near(std::uint32_t n, const std::vector<std::uint32_t>& list,
+                                    std::vector<std::uint32_t>& found) {
+    found.clear();
+    const Box g = tree_.grown(n, options_.clearance);
+    for (const std::uint32_t o : list) {
+        if (meets(obstacles_[o], g, counters_.box_tests)) found.push_back(o);
+    }
+}
+
 void QuadtreeMesher::distribute(std::uint32_t n, const std::vector<std::uint32_t>& list) {
     if (tree_.nodes[n].leaf()) {
         leaf_begin_[n] = static_cast<std::uint32_t>(leaf_obstacles_.size());
@@ -486,11 +495,7 @@ void QuadtreeMesher::distribute(std::uint32_t n, const std::vector<std::uint32_t
     const std::uint32_t first = tree_.nodes[n].child;
     std::vector<std::uint32_t> child_list;
     for (std::uint32_t c = first; c < first + 4; ++c) {
-        child_list.clear();
-        const Box g = tree_.grown(c, options_.clearance);
-        for (const std::uint32_t o : list) {
-            if (meets(obstacles_[o], g, counters_.box_tests)) child_list.push_back(o);
-        }
+        obstacles_near(c, list, child_list);
         distribute(c, child_list);
     }
 }

@@ -135,26 +135,30 @@ SizeFunction SizeFunction::background_mesh(std::vector<double> xy, std::vector<d
     return f;
 }
 
-SizeFunction SizeFunction::quadtree(const SizeFunction& field, const SizeBox& box,
-                                    const QuadtreeSizeOptions& options) {
-    if (!field.bounded()) throw InputError("size quadtree: the size field is unbounded (none)");
+template <class Grid, class Options>
+SizeFunction SizeFunction::sampled(const SizeFunction& field, const SizeBox& box,
+                                   const Options& options, Kind kind,
+                                   std::shared_ptr<const Grid> SizeFunction::*grid,
+                                   const char* what) {
+    if (!field.bounded()) {
+        throw InputError(std::string(what) + ": the size field is unbounded (none)");
+    }
     SizeFunction f;
-    f.kind_ = Kind::Quadtree;
-    f.quadtree_ = std::make_shared<const SizeQuadtree2>(
-        [&field](double x, double y) { return field(x, y); }, box, options);
+    f.kind_ = kind;
+    f.*grid = std::make_shared<const Grid>([&field](double x, double y) { return field(x, y); },
+                                           box, options);
     f.description_ = field.describe();
     return f;
 }
 
+SizeFunction SizeFunction::quadtree(const SizeFunction& field, const SizeBox& box,
+                                    const QuadtreeSizeOptions& options) {
+    return sampled(field, box, options, Kind::Quadtree, &SizeFunction::quadtree_, "size quadtree");
+}
+
 SizeFunction SizeFunction::smoothed(const SizeFunction& field, const SizeBox& box,
                                     const SmoothingOptions& options) {
-    if (!field.bounded()) throw InputError("size smoothing: the size field is unbounded (none)");
-    SizeFunction f;
-    f.kind_ = Kind::Smoothed;
-    f.smoothed_ = std::make_shared<const SmoothedSizeGrid2>(
-        [&field](double x, double y) { return field(x, y); }, box, options);
-    f.description_ = field.describe();
-    return f;
+    return sampled(field, box, options, Kind::Smoothed, &SizeFunction::smoothed_, "size smoothing");
 }
 
 double SizeFunction::evaluate(double x, double y) const {

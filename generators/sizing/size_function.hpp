@@ -160,6 +160,13 @@ class SizeFunction {
     std::shared_ptr<const SmoothedSizeGrid2> smoothed_;
     std::string description_;
     double evaluate(double x, double y) const;
+    /// quadtree() and smoothed(): a function of `kind` described as `field`, which must be
+    /// bounded (InputError "<what>: the size field is unbounded (none)"), evaluated by a Grid
+    /// sampled from the field over `box` and kept in `grid`.
+    template <class Grid, class Options>
+    static SizeFunction sampled(const SizeFunction& field, const SizeBox& box,
+                                const Options& options, Kind kind,
+                                std::shared_ptr<const Grid> SizeFunction::*grid, const char* what);
 };
 
 /// The number of equilateral triangles of edge s(x, y) that cover the box [x0, x1] x [y0, y1]:

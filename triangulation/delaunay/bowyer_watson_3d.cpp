@@ -65,8 +65,9 @@ class CavityInserter {
   public:
     explicit CavityInserter(detail::Delaunay3Core& core) : core_(core), mesh_(core.mesh) {}
 
-    void insert(VertIdx p, TetIdx seed) {
-        const std::size_t faces = grow(seed, p);
+    /// Inserts p, located in where.tet.
+    void insert(VertIdx p, const detail::Delaunay3Core::Location& where) {
+        const std::size_t faces = grow(where.tet, p);
         core_.counters.cavity_tets += cavity_count_;
         star(p, faces);
     }
@@ -323,18 +324,7 @@ class CavityInserter {
 }  // namespace
 
 Delaunay3Result bowyer_watson_3d(std::span<const double> xyz, const Delaunay3Options& options) {
-    detail::Delaunay3Core core(xyz, options);
-    std::vector<bool> skip;
-    // Fewer than four non-coplanar points: no tetrahedron, duplicates still merged.
-    if (!core.make_first_tet(skip)) return core.coplanar_result(xyz);
-    CavityInserter inserter(core);
-    for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
-        if (skip[p]) continue;
-        const detail::Delaunay3Core::Location where = core.locate(p);
-        if (where.tet == kNone) continue;  // duplicate, merged
-        inserter.insert(p, where.tet);
-    }
-    return core.take_result(xyz);
+    return detail::insert_incrementally<CavityInserter>(xyz, options);
 }
 
 }  // namespace exactmesh::triangulation

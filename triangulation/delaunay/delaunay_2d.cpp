@@ -2,9 +2,6 @@
 // The registry of 2D Delaunay algorithms shared by the CLI, benches and tests.
 #include "triangulation/delaunay/delaunay_2d.hpp"
 
-#include <string>
-
-#include "base/errors.hpp"
 #include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/delaunay/green_sibson_2d.hpp"
 #include "triangulation/delaunay/tanemura_merriam_2d.hpp"
@@ -31,13 +28,7 @@ std::span<const Delaunay2Algorithm> delaunay_2d_algorithms() {
 }
 
 Delaunay2Function delaunay_2d_algorithm(std::string_view name) {
-    std::string known;
-    for (const Delaunay2Algorithm& algorithm : kAlgorithms) {
-        if (algorithm.name == name) return algorithm.build;
-        known += (known.empty() ? "" : ", ") + std::string(algorithm.name);
-    }
-    throw InputError("unknown 2D Delaunay algorithm '" + std::string(name) + "' (known: " + known +
-                     ")");
+    return find_delaunay_algorithm<Delaunay2Function>(kAlgorithms, name, "2D Delaunay algorithm");
 }
 
 }  // namespace exactmesh::triangulation

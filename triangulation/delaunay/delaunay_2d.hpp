@@ -8,10 +8,12 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "base/counter_table.hpp"
+#include "base/errors.hpp"
 #include "triangulation/mesh/mesh2.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 
@@ -62,13 +64,32 @@ void validate_points_2d(std::span<const double> xy);
 
 using Delaunay2Function = Delaunay2Result (*)(std::span<const double>, const Delaunay2Options&);
 
-/// One 2D Delaunay algorithm of the registry: the name the CLI, benches and tests use, the
-/// function, and one line for help texts.
-struct Delaunay2Algorithm {
+/// One Delaunay algorithm of a registry (2D here, 3D in delaunay_3d.hpp): the name the CLI,
+/// benches and tests use, the function, and one line for help texts.
+template <class Function>
+struct DelaunayAlgorithm {
     std::string_view name;
-    Delaunay2Function build;
+    Function build;
     std::string_view description;
 };
+
+/// The function of the algorithm named `name` in `algorithms`.
+/// @throws InputError "unknown <what> '<name>' (known: <every name>)".
+template <class Function>
+Function find_delaunay_algorithm(std::span<const DelaunayAlgorithm<Function>> algorithms,
+                                 std::string_view name, std::string_view what,
+                                 SourceLocation where = SourceLocation::current()) {
+    std::string known;
+    for (const DelaunayAlgorithm<Function>& algorithm : algorithms) {
+        if (algorithm.name == name) return algorithm.build;
+        known += (known.empty() ? "" : ", ") + std::string(algorithm.name);
+    }
+    throw InputError(
+        "unknown " + std::string(what) + " '" + std::string(name) + "' (known: " + known + ")",
+        where);
+}
+
+using Delaunay2Algorithm = DelaunayAlgorithm<Delaunay2Function>;
 
 /// Every 2D Delaunay algorithm (delaunay_2d.cpp; adding one is its file plus one line there):
 /// "bowyer-watson", "green-sibson", "tanemura-merriam".

@@ -12,6 +12,7 @@
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
+#include "triangulation/delaunay/result_numbering.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 
 namespace exactmesh::triangulation {
@@ -272,27 +273,13 @@ TriIdx Delaunay2Core::walk_to(VertIdx p) {
 Delaunay2Result Delaunay2Core::take_result() {
     Delaunay2Result out;
     out.counters = counters;
-    // A merged point maps to the point kept in the mesh; report instead the smallest caller
-    // index of each group ("the first occurrence"), in merged_into and in the triangles.
-    std::vector<VertIdx>& first = input_index;  // reused: mesh vertex -> reported caller index
-    if (counters.duplicates > 0) {
-        std::vector<VertIdx> smallest(merged_into.size());
-        for (VertIdx i = 0; i < smallest.size(); ++i) smallest[i] = i;
-        for (VertIdx i = 0; i < smallest.size(); ++i) {
-            const VertIdx kept = merged_into[i];
-            if (i < smallest[kept]) smallest[kept] = i;
-        }
-        for (VertIdx i = 0; i < smallest.size(); ++i) merged_into[i] = smallest[merged_into[i]];
-        for (VertIdx& v : first) v = merged_into[v];
-    }
+    std::vector<VertIdx>& first = input_index;  // mesh vertex -> reported caller index
+    if (counters.duplicates > 0) report_first_occurrence(merged_into, first);
     out.merged_into = std::move(merged_into);
     // Number the finite triangles, then compact tv and twin in place (output index <= slot).
     const std::uint32_t slots = mesh.triangle_slots();
-    std::vector<TriIdx> output_index(slots, kNone);
-    TriIdx count = 0;
-    for (TriIdx t = 0; t < slots; ++t) {
-        if (!mesh.is_dead(t) && !mesh.is_infinite(t)) output_index[t] = count++;
-    }
+    std::vector<TriIdx> output_index;
+    const TriIdx count = number_finite_cells(mesh, slots, output_index);
     for (TriIdx t = 0; t < slots; ++t) {
         const TriIdx o = output_index[t];
         if (o == kNone) continue;

@@ -2,9 +2,6 @@
 // The registry of 3D Delaunay algorithms shared by the CLI, benches and tests.
 #include "triangulation/delaunay/delaunay_3d.hpp"
 
-#include <string>
-
-#include "base/errors.hpp"
 #include "triangulation/delaunay/bowyer_watson_3d.hpp"
 #include "triangulation/delaunay/green_sibson_3d.hpp"
 
@@ -28,13 +25,7 @@ std::span<const Delaunay3Algorithm> delaunay_3d_algorithms() {
 }
 
 Delaunay3Function delaunay_3d_algorithm(std::string_view name) {
-    std::string known;
-    for (const Delaunay3Algorithm& algorithm : kAlgorithms) {
-        if (algorithm.name == name) return algorithm.build;
-        known += (known.empty() ? "" : ", ") + std::string(algorithm.name);
-    }
-    throw InputError("unknown 3D Delaunay algorithm '" + std::string(name) + "' (known: " + known +
-                     ")");
+    return find_delaunay_algorithm<Delaunay3Function>(kAlgorithms, name, "3D Delaunay algorithm");
 }
 
 }  // namespace exactmesh::triangulation

@@ -74,12 +74,8 @@ void validate_points_3d(std::span<const double> xyz);
 
 using Delaunay3Function = Delaunay3Result (*)(std::span<const double>, const Delaunay3Options&);
 
-/// One 3D Delaunay algorithm of the registry (as Delaunay2Algorithm).
-struct Delaunay3Algorithm {
-    std::string_view name;
-    Delaunay3Function build;
-    std::string_view description;
-};
+/// One 3D Delaunay algorithm of the registry (DelaunayAlgorithm, delaunay_2d.hpp).
+using Delaunay3Algorithm = DelaunayAlgorithm<Delaunay3Function>;
 
 /// Every 3D Delaunay algorithm (delaunay_3d.cpp; adding one is its file plus one line there):
 /// "bowyer-watson", "green-sibson".

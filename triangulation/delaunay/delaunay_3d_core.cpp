@@ -15,6 +15,7 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/sos.hpp"
+#include "triangulation/delaunay/result_numbering.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 
 #if defined(__linux__)
@@ -268,28 +269,13 @@ Delaunay3Core::Location Delaunay3Core::locate(VertIdx p) {
 Delaunay3Result Delaunay3Core::take_result(std::span<const double> xyz) {
     Delaunay3Result out;
     out.counters = counters;
-    // A merged point maps to the point kept in the mesh; report instead the smallest caller
-    // index of each group ("the first occurrence"), in merged_into and in the tetrahedra.
-    std::vector<VertIdx>& first = input_index;  // reused: mesh vertex -> reported caller index
-    if (counters.duplicates > 0) {
-        std::vector<VertIdx> smallest(merged_into.size());
-        for (VertIdx i = 0; i < smallest.size(); ++i) smallest[i] = i;
-        for (VertIdx i = 0; i < smallest.size(); ++i) {
-            const VertIdx kept = merged_into[i];
-            if (i < smallest[kept]) smallest[kept] = i;
-        }
-        for (VertIdx i = 0; i < smallest.size(); ++i) merged_into[i] = smallest[merged_into[i]];
-        for (VertIdx& v : first) v = merged_into[v];
-    }
+    std::vector<VertIdx>& first = input_index;  // mesh vertex -> reported caller index
+    if (counters.duplicates > 0) report_first_occurrence(merged_into, first);
     out.merged_into = std::move(merged_into);
     // Number the finite tetrahedra, then compact tv and adj in place (output index <= slot).
     const std::uint32_t slots = mesh.tet_slots();
     std::vector<TetIdx>& output_index = star.stamp;  // reused
-    output_index.assign(slots, kNone);
-    TetIdx count = 0;
-    for (TetIdx t = 0; t < slots; ++t) {
-        if (!mesh.is_dead(t) && !mesh.is_infinite(t)) output_index[t] = count++;
-    }
+    const TetIdx count = number_finite_cells(mesh, slots, output_index);
     for (TetIdx t = 0; t < slots; ++t) {
         const TetIdx o = output_index[t];
         if (o == kNone) continue;

@@ -91,4 +91,23 @@ class Delaunay3Core {
     std::uint32_t random_offset();
 };
 
+/// The incremental construction both 3D algorithms share: the first tetrahedron, then every other
+/// point in insertion order located and handed to `Inserter(core).insert(p, where)` (a duplicate
+/// is merged instead). Fewer than four non-coplanar points: no tetrahedron, duplicates still
+/// merged (coplanar_result).
+template <class Inserter>
+Delaunay3Result insert_incrementally(std::span<const double> xyz, const Delaunay3Options& options) {
+    Delaunay3Core core(xyz, options);
+    std::vector<bool> skip;
+    if (!core.make_first_tet(skip)) return core.coplanar_result(xyz);
+    Inserter inserter(core);
+    for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
+        if (skip[p]) continue;
+        const Delaunay3Core::Location where = core.locate(p);
+        if (where.tet == kNone) continue;  // duplicate, merged
+        inserter.insert(p, where);
+    }
+    return core.take_result(xyz);
+}
+
 }  // namespace exactmesh::triangulation::detail

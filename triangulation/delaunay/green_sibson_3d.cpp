@@ -201,18 +201,7 @@ class FlipInserter {
 }  // namespace
 
 Delaunay3Result green_sibson_3d(std::span<const double> xyz, const Delaunay3Options& options) {
-    detail::Delaunay3Core core(xyz, options);
-    std::vector<bool> skip;
-    // Fewer than four non-coplanar points: no tetrahedron, duplicates still merged.
-    if (!core.make_first_tet(skip)) return core.coplanar_result(xyz);
-    FlipInserter inserter(core);
-    for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
-        if (skip[p]) continue;
-        const detail::Delaunay3Core::Location where = core.locate(p);
-        if (where.tet == kNone) continue;  // duplicate, merged
-        inserter.insert(p, where);
-    }
-    return core.take_result(xyz);
+    return detail::insert_incrementally<FlipInserter>(xyz, options);
 }
 
 }  // namespace exactmesh::triangulation

@@ -19,6 +19,36 @@ namespace {
 
 using predicates::Sign;
 
+/// The nodes of singly linked lists (Node has a `next` link) in one vector, with a free list:
+/// a released slot is reused before the vector grows, so the lists stay compact in memory.
+template <class Node>
+class NodePool {
+  public:
+    /// A slot holding `node`.
+    std::uint32_t allocate(const Node& node) {
+        std::uint32_t slot;
+        if (free_ != kNone) {
+            slot = free_;
+            free_ = nodes_[slot].next;
+        } else {
+            slot = static_cast<std::uint32_t>(nodes_.size());
+            nodes_.push_back({});
+        }
+        nodes_[slot] = node;
+        return slot;
+    }
+    /// Puts `slot`, unlinked from its list by the caller, on the free list.
+    void release(std::uint32_t slot) {
+        nodes_[slot].next = free_;
+        free_ = slot;
+    }
+    Node& operator[](std::uint32_t slot) { return nodes_[slot]; }
+
+  private:
+    std::vector<Node> nodes_;
+    std::uint32_t free_ = kNone;
+};
+
 /// The front: directed edges a -> b whose left side is still empty, each with the half-edge on
 /// its right (kNone for hull edges). Kept as short lists per origin vertex: vertices are in
 /// grid-cell order and the front advances locally, so lookups stay in cache (a global hash
@@ -28,16 +58,7 @@ public:
     explicit OpenEdges(std::uint32_t vertex_count) : head_(vertex_count, kNone) {}
 
     void insert(VertIdx a, VertIdx b, EdgeIdx value) {
-        std::uint32_t slot;
-        if (free_ != kNone) {
-            slot = free_;
-            free_ = pool_[slot].next;
-        } else {
-            slot = static_cast<std::uint32_t>(pool_.size());
-            pool_.push_back({});
-        }
-        pool_[slot] = {b, value, head_[a]};
-        head_[a] = slot;
+        head_[a] = pool_.allocate({b, value, head_[a]});
     }
     /// Removes a -> b and returns true (its value in `value`) if it is open.
     bool take(VertIdx a, VertIdx b, EdgeIdx& value) {
@@ -47,8 +68,7 @@ public:
                 value = entry.value;
                 const std::uint32_t slot = *link;
                 *link = entry.next;
-                pool_[slot].next = free_;
-                free_ = slot;
+                pool_.release(slot);
                 return true;
             }
         }
@@ -62,8 +82,7 @@ private:
         std::uint32_t next;
     };
     std::vector<std::uint32_t> head_;
-    std::vector<Entry> pool_;
-    std::uint32_t free_ = kNone;
+    NodePool<Entry> pool_;
 };
 
 /// The geometry of the uniform grid, in coordinates scaled by a power of two into (-1, 1)
@@ -338,16 +357,7 @@ public:
     explicit RowQueue(std::uint32_t rows) : head_(rows, kNone) {}
 
     void push(std::uint32_t row, VertIdx a, VertIdx b) {
-        std::uint32_t slot;
-        if (free_ != kNone) {
-            slot = free_;
-            free_ = nodes_[slot].next;
-        } else {
-            slot = static_cast<std::uint32_t>(nodes_.size());
-            nodes_.push_back({});
-        }
-        nodes_[slot] = {a, b, head_[row]};
-        head_[row] = slot;
+        head_[row] = nodes_.allocate({a, b, head_[row]});
         current_ = std::min(current_, row);
     }
     /// The last edge pushed into the lowest non-empty row; false when the queue is empty.
@@ -358,8 +368,7 @@ public:
         a = nodes_[slot].a;
         b = nodes_[slot].b;
         head_[current_] = nodes_[slot].next;
-        nodes_[slot].next = free_;
-        free_ = slot;
+        nodes_.release(slot);
         return true;
     }
 
@@ -369,8 +378,7 @@ private:
         std::uint32_t next;
     };
     std::vector<std::uint32_t> head_;
-    std::vector<Node> nodes_;
-    std::uint32_t free_ = kNone;
+    NodePool<Node> nodes_;
     std::uint32_t current_ = 0;
 };
 

@@ -84,6 +84,18 @@ std::vector<TetIdx> vertex_star(const TetMesh3& mesh, VertIdx v);
 
 enum class FlipKind3 { None, Flip23, Flip32, Flip44, Flip22 };
 
+/// Adds one to the counter of `kind` in `counters`: the members flips_23, flips_32, flips_44,
+/// and flips_22 where the counters have one (a kind without a member is not counted).
+template <class Counters>
+void count_flip(Counters& counters, FlipKind3 kind) {
+    if (kind == FlipKind3::Flip23) ++counters.flips_23;
+    if (kind == FlipKind3::Flip32) ++counters.flips_32;
+    if (kind == FlipKind3::Flip44) ++counters.flips_44;
+    if constexpr (requires { counters.flips_22; }) {
+        if (kind == FlipKind3::Flip22) ++counters.flips_22;
+    }
+}
+
 /// A flip found at a face: the tetrahedra it removes and the positive ones it makes.
 ///
 /// The face abc (outward from t1 = abcd, so orient3d(a, b, c, d) > 0) and its neighbor t2 = bace:

@@ -181,6 +181,28 @@ void sort_brio_rounds(std::span<const std::uint32_t> keys, std::vector<std::uint
     }
 }
 
+/// The order of n points: shuffled() for Given and Random; for Brio, sort_brio_rounds with the
+/// points' Hilbert keys (`keys()`, computed only then).
+template <class Keys>
+std::vector<std::uint32_t> insertion_order(std::size_t n, InsertionOrder order, std::uint64_t seed,
+                                           Keys keys) {
+    std::vector<std::uint32_t> perm = shuffled(n, order, seed);
+    if (order != InsertionOrder::Brio) return perm;
+    sort_brio_rounds(keys(), perm);
+    return perm;
+}
+
+/// Sorts `indices` by `keys` (keys[k] the key of indices[k]), in sort_by_keys's order.
+void reorder_by_keys(std::span<const std::uint32_t> keys, std::span<std::uint32_t> indices) {
+    std::vector<std::uint32_t> local(indices.size());
+    std::iota(local.begin(), local.end(), 0u);
+    std::vector<std::uint64_t> keyed, scratch;
+    sort_by_keys(keys, local, keyed, scratch);
+    std::vector<std::uint32_t> sorted(indices.size());
+    for (std::size_t k = 0; k < indices.size(); ++k) sorted[k] = indices[local[k]];
+    std::copy(sorted.begin(), sorted.end(), indices.begin());
+}
+
 }  // namespace
 
 void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indices) {
@@ -190,30 +212,17 @@ void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indice
         subset[2 * k] = xy[2 * indices[k]];
         subset[2 * k + 1] = xy[2 * indices[k] + 1];
     }
-    const std::vector<std::uint32_t> keys = hilbert_keys(subset);
-    std::vector<std::uint32_t> local(indices.size());
-    std::iota(local.begin(), local.end(), 0u);
-    std::vector<std::uint64_t> keyed, scratch;
-    sort_by_keys(keys, local, keyed, scratch);
-    std::vector<std::uint32_t> sorted(indices.size());
-    for (std::size_t k = 0; k < indices.size(); ++k) sorted[k] = indices[local[k]];
-    std::copy(sorted.begin(), sorted.end(), indices.begin());
+    reorder_by_keys(hilbert_keys(subset), indices);
 }
 
 std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
                                               std::uint64_t seed) {
-    std::vector<std::uint32_t> perm = shuffled(xy.size() / 2, order, seed);
-    if (order != InsertionOrder::Brio) return perm;
-    sort_brio_rounds(hilbert_keys(xy), perm);
-    return perm;
+    return insertion_order(xy.size() / 2, order, seed, [xy] { return hilbert_keys(xy); });
 }
 
 std::vector<std::uint32_t> insertion_order_3d(std::span<const double> xyz, InsertionOrder order,
                                               std::uint64_t seed) {
-    std::vector<std::uint32_t> perm = shuffled(xyz.size() / 3, order, seed);
-    if (order != InsertionOrder::Brio) return perm;
-    sort_brio_rounds(hilbert_keys_3d(xyz), perm);
-    return perm;
+    return insertion_order(xyz.size() / 3, order, seed, [xyz] { return hilbert_keys_3d(xyz); });
 }
 
 void hilbert_sort_3d(std::span<const double> xyz, std::span<std::uint32_t> indices) {
@@ -223,14 +232,7 @@ void hilbert_sort_3d(std::span<const double> xyz, std::span<std::uint32_t> indic
         for (std::size_t c = 0; c < 3; ++c)
             subset[3 * k + c] = xyz[3 * std::size_t{indices[k]} + c];
     }
-    const std::vector<std::uint32_t> keys = hilbert_keys_3d(subset);
-    std::vector<std::uint32_t> local(indices.size());
-    std::iota(local.begin(), local.end(), 0u);
-    std::vector<std::uint64_t> keyed, scratch;
-    sort_by_keys(keys, local, keyed, scratch);
-    std::vector<std::uint32_t> sorted(indices.size());
-    for (std::size_t k = 0; k < indices.size(); ++k) sorted[k] = indices[local[k]];
-    std::copy(sorted.begin(), sorted.end(), indices.begin());
+    reorder_by_keys(hilbert_keys_3d(subset), indices);
 }
 
 }  // namespace exactmesh::triangulation

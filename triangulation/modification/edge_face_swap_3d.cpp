@@ -102,25 +102,6 @@ bool quality_prefers(const TetMesh3& mesh, SwapCriterion3 criterion, const FlipP
     throw InternalError("edge_face_swap_3d: quality_prefers called for the Delaunay criterion");
 }
 
-void count_flip(EdgeFaceSwapCounters& counters, FlipKind3 kind) {
-    switch (kind) {
-        case FlipKind3::Flip23:
-            ++counters.flips_23;
-            break;
-        case FlipKind3::Flip32:
-            ++counters.flips_32;
-            break;
-        case FlipKind3::Flip44:
-            ++counters.flips_44;
-            break;
-        case FlipKind3::Flip22:
-            ++counters.flips_22;
-            break;
-        case FlipKind3::None:
-            break;
-    }
-}
-
 constexpr std::array<EnumName<SwapCriterion3>, 4> kSwapCriterion3Names{{
     {"delaunay", SwapCriterion3::Delaunay},
     {"max-min-dihedral", SwapCriterion3::MaxMinDihedral},

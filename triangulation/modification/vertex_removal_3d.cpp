@@ -186,19 +186,7 @@ void remove_one(TetMesh3& mesh, VertIdx v, VertexRemovalCounters& counters) {
         for (unsigned i = 0; i < plan.made_count; ++i) {
             if (!holds(plan.made[i], v)) made_outside_star.push_back(plan.made[i]);
         }
-        switch (plan.kind) {
-            case FlipKind3::Flip23:
-                ++local.flips_23;
-                break;
-            case FlipKind3::Flip32:
-                ++local.flips_32;
-                break;
-            case FlipKind3::Flip44:
-                ++local.flips_44;
-                break;
-            default:
-                break;
-        }
+        count_flip(local, plan.kind);
         star = vertex_star(mesh, v);
     }
     std::vector<Tet> closing;
