@@ -34,6 +34,7 @@
 #include "generators/inputs/inputs.hpp"
 #include "io/triangle_format.hpp"
 #include "triangulation/checks/check_2d.hpp"
+#include "triangulation/checks/compare_triangulations_2d.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
 #include "triangulation/delaunay/delaunay_2d_naive.hpp"
 
@@ -168,26 +169,6 @@ struct Failure {
 
 using Triangles = std::vector<std::array<tri::VertIdx, 3>>;
 
-Triangles canonical(const std::vector<tri::VertIdx>& triangles) {
-    Triangles out;
-    out.reserve(triangles.size() / 3);
-    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
-        std::array<tri::VertIdx, 3> a{triangles[t], triangles[t + 1], triangles[t + 2]};
-        std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-        out.push_back(a);
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-bool has_duplicate_points(std::span<const double> xy) {
-    std::vector<std::pair<double, double>> points;
-    points.reserve(xy.size() / 2);
-    for (std::size_t i = 0; i + 1 < xy.size(); i += 2) points.emplace_back(xy[i], xy[i + 1]);
-    std::sort(points.begin(), points.end());
-    return std::adjacent_find(points.begin(), points.end()) != points.end();
-}
-
 /// Empty when neighbour slot 3t+k names the triangle across edge (v[k], v[k+1]) and that
 /// triangle names t back, with kNone exactly on the hull edges; else the first problem.
 std::string check_neighbors(const tri::Delaunay2Result& r) {
@@ -279,7 +260,7 @@ std::optional<Failure> find_failure(const Case& c, std::span<const double> xy, b
     // Then agreement with the reference: the same perturbation gives the same triangulation.
     // With duplicate points only the counts are compared: which copy is inserted first decides
     // the perturbation index of the point, and so may legitimately change cocircular ties.
-    const bool duplicates = has_duplicate_points(xy);
+    const bool duplicates = tri::has_duplicate_points_2d(xy);
     const std::size_t ref = c.reference;
     for (const std::size_t a : std::span(sequence).subspan(1)) {
         if (!results[ref] || !results[a]) continue;
@@ -301,7 +282,7 @@ std::optional<Failure> find_failure(const Case& c, std::span<const double> xy, b
             if (wanted(f)) return f;
         }
         if (!duplicates && r.triangles.size() == expected.triangles.size()) {
-            const Triangles ours = canonical(r.triangles), theirs = canonical(expected.triangles);
+            const Triangles ours = tri::canonical_triangles_2d(r.triangles), theirs = tri::canonical_triangles_2d(expected.triangles);
             if (ours != theirs) {
                 const auto [mine, other] = std::mismatch(ours.begin(), ours.end(), theirs.begin());
                 const Failure f{"triangles", a, ref,

@@ -26,6 +26,7 @@
 #include "base/errors.hpp"
 #include "tests/fuzz/fuzz_points.hpp"
 #include "triangulation/checks/check_2d.hpp"
+#include "triangulation/checks/compare_triangulations_2d.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
 #include "triangulation/delaunay/delaunay_2d_naive.hpp"
 
@@ -103,24 +104,6 @@ void reshape(std::vector<double>& xy, Mode mode, std::uint8_t parameter) {
 
 using Triangles = std::vector<std::array<tri::VertIdx, 3>>;
 
-Triangles canonical(const std::vector<tri::VertIdx>& triangles) {
-    Triangles out;
-    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
-        std::array<tri::VertIdx, 3> a{triangles[t], triangles[t + 1], triangles[t + 2]};
-        std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-        out.push_back(a);
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-bool has_duplicates(const std::vector<double>& xy) {
-    std::vector<std::pair<double, double>> points;
-    for (std::size_t i = 0; i + 1 < xy.size(); i += 2) points.emplace_back(xy[i], xy[i + 1]);
-    std::sort(points.begin(), points.end());
-    return std::adjacent_find(points.begin(), points.end()) != points.end();
-}
-
 /// Neighbour slot 3t+k: the triangle across edge (v[k], v[k+1]), which names t back.
 bool neighbors_mutual(const tri::Delaunay2Result& r) {
     const std::size_t count = r.triangles.size() / 3;
@@ -176,8 +159,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (!report.ok) fail(xy, label(a) + ": check: " + report.problem);
         if (!neighbors_mutual(results[a])) fail(xy, label(a) + ": neighbours not mutual");
     }
-    const bool duplicates = has_duplicates(xy);
-    const Triangles reference = duplicates ? Triangles{} : canonical(results[0].triangles);
+    const bool duplicates = tri::has_duplicate_points_2d(xy);
+    const Triangles reference = duplicates ? Triangles{} : tri::canonical_triangles_2d(results[0].triangles);
     for (std::size_t a = 1; a < kAlgorithms.size(); ++a) {
         if (results[a].triangles.size() != results[0].triangles.size()) {
             fail(xy, label(a) + ": " + std::to_string(results[a].triangles.size() / 3) +
@@ -187,7 +170,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (results[a].merged_into != results[0].merged_into) {
             fail(xy, label(a) + ": merged_into differs from " + label(0));
         }
-        if (!duplicates && canonical(results[a].triangles) != reference) {
+        if (!duplicates && tri::canonical_triangles_2d(results[a].triangles) != reference) {
             fail(xy, label(a) + ": triangles differ from " + label(0));
         }
     }

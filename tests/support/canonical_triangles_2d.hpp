@@ -3,11 +3,11 @@
 // to start at its smallest vertex (the orientation is kept). Test support.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <set>
 #include <span>
 
+#include "triangulation/checks/compare_triangulations_2d.hpp"
 #include "triangulation/mesh/mesh2.hpp"
 
 namespace exactmesh::testing {
@@ -16,13 +16,8 @@ using CanonicalTriangles = std::set<std::array<triangulation::VertIdx, 3>>;
 
 /// `triangles` (three vertices each) as a set, each rotated to start at its smallest vertex.
 inline CanonicalTriangles canonical_triangles(std::span<const triangulation::VertIdx> triangles) {
-    CanonicalTriangles s;
-    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
-        std::array<triangulation::VertIdx, 3> a{triangles[t], triangles[t + 1], triangles[t + 2]};
-        std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-        s.insert(a);
-    }
-    return s;
+    const auto sorted = triangulation::canonical_triangles_2d(triangles);
+    return CanonicalTriangles(sorted.begin(), sorted.end());
 }
 
 }  // namespace exactmesh::testing

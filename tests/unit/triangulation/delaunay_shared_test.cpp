@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: MIT
 // The pieces the 2D and 3D Delaunay code shares: report_first_occurrence (merged duplicates
 // reported by their smallest caller index) and number_finite_cells, the algorithm registries'
-// lookup (find_delaunay_algorithm) and count_flip (flip_3d.hpp).
+// lookup (find_delaunay_algorithm), count_flip (flip_3d.hpp) and the comparison of two
+// triangulations (compare_triangulations_2d.hpp).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "base/errors.hpp"
+#include "triangulation/checks/compare_triangulations_2d.hpp"
 #include "triangulation/delaunay/bowyer_watson_3d.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
@@ -109,4 +112,21 @@ TEST(Triangulation_DelaunayShared, FiniteCellsAreNumberedConsecutivelyInSlotOrde
     // Only the first `slots` cells count.
     EXPECT_EQ(tri::detail::number_finite_cells(mesh, 4, output_index), 2u);
     EXPECT_EQ(output_index, (std::vector<std::uint32_t>{0, none, none, 1}));
+}
+
+TEST(Triangulation_DelaunayShared, CanonicalTrianglesKeepOrientationAndIgnoreOrder) {
+    // The same two triangles, listed in another order and rotated: equal canonical lists.
+    const std::vector<VertIdx> a = {3, 1, 2, 0, 2, 1}, b = {1, 0, 2, 2, 3, 1};
+    const auto ca = tri::canonical_triangles_2d(a), cb = tri::canonical_triangles_2d(b);
+    EXPECT_EQ(ca, cb);
+    EXPECT_EQ(ca, (std::vector<std::array<VertIdx, 3>>{{0, 2, 1}, {1, 2, 3}}));
+    // The reversed triangle is another triangle (orientation kept).
+    EXPECT_NE(tri::canonical_triangles_2d(std::vector<VertIdx>{0, 1, 2}),
+              tri::canonical_triangles_2d(std::vector<VertIdx>{0, 2, 1}));
+}
+
+TEST(Triangulation_DelaunayShared, DuplicatePointsAreFoundWithSignedZerosEqual) {
+    EXPECT_FALSE(tri::has_duplicate_points_2d(std::vector<double>{0, 0, 1, 0, 0, 1}));
+    EXPECT_TRUE(tri::has_duplicate_points_2d(std::vector<double>{0, 0, 1, 0, -0.0, 0}));
+    EXPECT_FALSE(tri::has_duplicate_points_2d(std::vector<double>{0, 1, 1, 0}));
 }
