@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // CGAL's 2D Delaunay refinement (Delaunay_mesher_2 on a Constrained_Delaunay_triangulation_2
-// with Epick), as the peer of generators/mesh_2d/delaunay_refinement_2d in the differential tests and
-// in bench/mesh_bench: the same PSLG, the same angle bound (CGAL's shape bound is sin^2 of the
+// with Epick), as the peer of generators/mesh_2d/delaunay_refinement_2d in the differential tests
+// and in bench/mesh_bench: the same PSLG, the same angle bound (CGAL's shape bound is sin^2 of the
 // smallest angle, i.e. B = 1 / (2 sin theta) squared and inverted: b = 1 / (4 B^2)) and the same
 // size criterion (every edge of a triangle at most the size at its midpoint: CGAL's own
 // Delaunay_mesh_size_criteria_2 when the size is uniform, else the same criteria class with the

@@ -3,8 +3,8 @@
 // EdelsbrunnerTanWaupotitsch92]: time against N with Complexity() fits, and the work counters.
 //
 // Names: BM_swap_<criterion>/<distribution>/<n>: Lawson swapping under one criterion from the
-// sweep triangulation (generators/inputs/sweep_triangulation_2d.hpp: points sorted by x, each joined
-// to the hull edges it sees; long thin triangles everywhere), n = 2^10 ... 2^14, fitted with
+// sweep triangulation (generators/inputs/sweep_triangulation_2d.hpp: points sorted by x, each
+// joined to the hull edges it sees; long thin triangles everywhere), n = 2^10 ... 2^14, fitted with
 // Complexity() (oAuto: the best of O(1), N, N log N, N^2, N^3). BM_edge_cutting/<distribution>/<n>:
 // min-max angle by edge cutting from the Delaunay triangulation (min_max_angle_triangulation_2d,
 // Delaunay construction included, a negligible share), n = 2^7 ... 2^12, fitted against

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// 2D mesh generation benchmarks: every generator of the registry (generators/mesh_2d/mesh_generators_2d)
-// against CGAL's Delaunay_mesher_2 (with EXACTMESH_WITH_CGAL) and Gmsh's Delaunay and
-// Frontal-Delaunay algorithms (the `gmsh` program, when found), same run, same domains, same
-// size function [Ruppert95, Shewchuk02, Rebay93, Mavriplis97; DESIGN.md "Benchmarks and
-// reports"; issues 6 and 11].
+// 2D mesh generation benchmarks: every generator of the registry
+// (generators/mesh_2d/mesh_generators_2d) against CGAL's Delaunay_mesher_2 (with
+// EXACTMESH_WITH_CGAL) and Gmsh's Delaunay and Frontal-Delaunay algorithms (the `gmsh` program,
+// when found), same run, same domains, same size function [Ruppert95, Shewchuk02, Rebay93,
+// Mavriplis97; DESIGN.md "Benchmarks and reports"; issues 6 and 11].
 //
 // Names: BM_mesh/<mesher>/<domain>/<angle>/<target triangles>; mesher is a registry name, `cgal`,
 // `gmsh-delaunay` or `gmsh-frontal`. <angle> is the minimum-angle bound given, in like-for-like
@@ -14,11 +14,12 @@
 // with t = 20.7 (the proven bound) at every target and t = 30 at 10^5 (and a quick target), so
 // "ours <t> vs cgal <t>" compares the refinements and "ours <t>p<P> vs cgal <P>" the polished mesh
 // with CGAL asked for the angle the polish aims at; `none` for meshers without an angle criterion.
-// Domains: the built-in sample domains (generators/boundary/sample_domains), each with its own size function
-// scaled by a constant so that Delaunay refinement (default options) makes about the target number
-// of triangles (10^4, 10^5, 10^6; the largest is capped by EXACTMESH_MESH_BENCH_MAX_TRIANGLES, and
-// a cap below 10^4 is the only target: a quick check of the pipeline). The boundary is discretized
-// by that size once, outside the timed loop, and every mesher gets the same PSLG and size function:
+// Domains: the built-in sample domains (generators/boundary/sample_domains), each with its own size
+// function scaled by a constant so that Delaunay refinement (default options) makes about the
+// target number of triangles (10^4, 10^5, 10^6; the largest is capped by
+// EXACTMESH_MESH_BENCH_MAX_TRIANGLES, and a cap below 10^4 is the only target: a quick check of the
+// pipeline). The boundary is discretized by that size once, outside the timed loop, and every
+// mesher gets the same PSLG and size function:
 //  - ours: the SizeFunction (Delaunay refinement keeps the size at each edge's midpoint per
 //    half-edge while its triangles live);
 //  - CGAL: Delaunay_mesh_size_criteria_2 when the size is uniform, else the same criteria with
@@ -67,9 +68,9 @@
 
 #include "bench/bench_support.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
-#include "generators/boundary/sample_domains.hpp"
 
 #if defined(EXACTMESH_WITH_CGAL)
 #include "bench/cgal_mesh_2d.hpp"
@@ -555,8 +556,8 @@ std::string angle_name(double angle) {
 
 /// Issue 11's plain input: a polygon of 10^4 vertices cos/sin(2 pi k / 10^4), meshed as
 /// `exactmesh mesh circ.poly` does without --size: Delaunay refinement with none, the other
-/// generators with the graded default (generators/boundary/graded_boundary_size_2d.hpp), built inside the
-/// timed region as the command does. Name: BM_mesh/<mesher>/near-circle-10000/default.
+/// generators with the graded default (generators/boundary/graded_boundary_size_2d.hpp), built
+/// inside the timed region as the command does. Name: BM_mesh/<mesher>/near-circle-10000/default.
 void BM_mesh_near_circle(benchmark::State& state, const gen::MeshGenerator2* generator) {
     std::vector<double> xy;
     std::vector<std::uint32_t> segments;

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `exactmesh fuzz`: a timed differential and validity campaign over the input distributions of
-// generators/inputs/inputs. Per case, the three Delaunay constructions must each pass the exact check
-// (triangulation/checks/check_2d), return mutual neighbours, agree with each other (same canonical
-// triangulation under the shared symbolic perturbation) and, on small inputs, with the naive
-// empty-circle oracle (tests/oracles). A failing input is minimized by delta debugging
+// generators/inputs/inputs. Per case, the three Delaunay constructions must each pass the exact
+// check (triangulation/checks/check_2d), return mutual neighbours, agree with each other (same
+// canonical triangulation under the shared symbolic perturbation) and, on small inputs, with the
+// naive empty-circle oracle (tests/oracles). A failing input is minimized by delta debugging
 // [Zeller, Hildebrandt 2002, ddmin] and saved as a Triangle .node file with the commands that
 // replay it.
 #include <CLI/CLI.hpp>
@@ -282,7 +282,8 @@ std::optional<Failure> find_failure(const Case& c, std::span<const double> xy, b
             if (wanted(f)) return f;
         }
         if (!duplicates && r.triangles.size() == expected.triangles.size()) {
-            const Triangles ours = tri::canonical_triangles_2d(r.triangles), theirs = tri::canonical_triangles_2d(expected.triangles);
+            const Triangles ours = tri::canonical_triangles_2d(r.triangles),
+                            theirs = tri::canonical_triangles_2d(expected.triangles);
             if (ours != theirs) {
                 const auto [mine, other] = std::mismatch(ours.begin(), ours.end(), theirs.begin());
                 const Failure f{"triangles", a, ref,
@@ -413,8 +414,9 @@ void report_failure(const Case& c, const Failure& failure, const fs::path& out_d
     if (failure.kind == "neighbors") {
         std::cout << "  (check does not read neighbours: see out.neigh, Triangle's convention)\n";
     } else if (failure.kind == "oracle") {
-        std::cout << "  (the naive empty-circle oracle, triangulation/delaunay/delaunay_2d_naive.hpp, "
-                     "disagrees; check may pass)\n";
+        std::cout
+            << "  (the naive empty-circle oracle, triangulation/delaunay/delaunay_2d_naive.hpp, "
+               "disagrees; check may pass)\n";
     }
     if (inject_fault) {
         std::cout << "  (fault injected by " << kInjectFaultVariable << ": the commands run "

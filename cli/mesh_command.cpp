@@ -21,11 +21,11 @@
 #include "cli/size_expression.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
-#include "generators/mesh_2d/laplacian_smoothing_2d.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
+#include "generators/mesh_2d/laplacian_smoothing_2d.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
-#include "generators/boundary/sample_domains.hpp"
 #include "generators/sizing/size_function.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
@@ -61,8 +61,8 @@ constexpr std::uint32_t kMaxSmoothSweeps = 1000;
 /// The longest size file read (a background mesh of about a million lines).
 constexpr std::size_t kMaxSizeFileBytes = std::size_t{64} << 20;
 
-/// --size: a number (uniform), else a size file (generators/sizing/size_function.hpp) when a file of
-/// that name exists (one that exists but cannot be read is reported as such, not as a bad
+/// --size: a number (uniform), else a size file (generators/sizing/size_function.hpp) when a file
+/// of that name exists (one that exists but cannot be read is reported as such, not as a bad
 /// expression), else an expression in x and y (cli/size_expression.hpp).
 gen::SizeFunction read_size(const std::string& text) {
     double uniform = 0;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `exactmesh swap3d`: edge-face swapping of a given tetrahedralization (TetGen .node + .ele)
-// under one criterion (triangulation/modification/edge_face_swap_3d), with counters and a quality report
-// (triangulation/checks/quality_3d).
+// under one criterion (triangulation/modification/edge_face_swap_3d), with counters and a quality
+// report (triangulation/checks/quality_3d).
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -17,8 +17,8 @@
 #include "cli/output.hpp"
 #include "io/tetgen_format.hpp"
 #include "triangulation/checks/check_3d.hpp"
-#include "triangulation/modification/edge_face_swap_3d.hpp"
 #include "triangulation/checks/quality_3d.hpp"
+#include "triangulation/modification/edge_face_swap_3d.hpp"
 
 namespace exactmesh::cli {
 

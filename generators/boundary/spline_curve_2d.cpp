@@ -95,8 +95,8 @@ CubicSpline2::CubicSpline2(std::vector<double> xy, bool closed)
         if (!(h[i] > 0) || !std::isfinite(h[i])) {
             throw InputError("spline: control points " + std::to_string(i) + " and " +
                              std::to_string(j) + (h[i] > 0 ? " are too far apart" : " coincide") +
-                             " (" + format_number(xy_[2 * i]) + ", " + format_number(xy_[2 * i + 1]) +
-                             ")");
+                             " (" + format_number(xy_[2 * i]) + ", " +
+                             format_number(xy_[2 * i + 1]) + ")");
         }
         knots_[i + 1] = knots_[i] + h[i];
     }

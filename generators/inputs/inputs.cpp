@@ -18,12 +18,15 @@ struct NameOf {
     Distribution distribution;
     std::string_view name;
 };
-constexpr NameOf kNames[] = {
-    {Distribution::Uniform, "uniform"},       {Distribution::Gaussian, "gaussian"},
-    {Distribution::Grid, "grid"},             {Distribution::Cocircular, "cocircular"},
-    {Distribution::NearCollinear, "near-collinear"}, {Distribution::Duplicates, "duplicates"},
-    {Distribution::Huge, "huge"},             {Distribution::Tiny, "tiny"},
-    {Distribution::Parabola, "parabola"}};
+constexpr NameOf kNames[] = {{Distribution::Uniform, "uniform"},
+                             {Distribution::Gaussian, "gaussian"},
+                             {Distribution::Grid, "grid"},
+                             {Distribution::Cocircular, "cocircular"},
+                             {Distribution::NearCollinear, "near-collinear"},
+                             {Distribution::Duplicates, "duplicates"},
+                             {Distribution::Huge, "huge"},
+                             {Distribution::Tiny, "tiny"},
+                             {Distribution::Parabola, "parabola"}};
 
 /// All integer points on x^2 + y^2 = R^2 for R = 5^2 * 13^2 * 17 * 29 (900 points: R^2 has
 /// many representations as a sum of two squares), in angular order of discovery.
@@ -90,7 +93,8 @@ std::vector<double> generate_points_2d(Distribution d, std::uint32_t n, std::uin
             break;
         }
         case Distribution::Grid: {
-            const auto side = static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+            const auto side =
+                static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(n))));
             for (std::uint32_t i = 0; i < n; ++i) {
                 xy.push_back(static_cast<double>(i % std::max(side, 1u)));
                 xy.push_back(static_cast<double>(i / std::max(side, 1u)));

@@ -13,22 +13,22 @@
 namespace exactmesh::generators {
 
 enum class Distribution {
-    Uniform,         ///< uniform in [0, 1)^2
-    Gaussian,        ///< Gaussian clusters (about 1000 points each, sigma 0.01) in [0, 1)^2
-    Grid,            ///< integer grid, row by row: many cocircular quadruples and collinear rows
-    Cocircular,      ///< exact lattice points on circles x^2 + y^2 = R^2 (R = 2082925), shifted
-    NearCollinear,   ///< points on y = x moved by -4..4 ulps, plus two far points
-    Duplicates,      ///< uniform, a third of the points repeating earlier ones exactly
-    Huge,            ///< uniform scaled by 1e290 (products overflow)
-    Tiny,            ///< uniform scaled by 1e-290, with some subnormal coordinates
-    Parabola,        ///< (t, t^2) by increasing t; inserted backwards (decreasing t), each
-                     ///< Bowyer-Watson cavity holds all earlier triangles: Theta(n^2)
+    Uniform,        ///< uniform in [0, 1)^2
+    Gaussian,       ///< Gaussian clusters (about 1000 points each, sigma 0.01) in [0, 1)^2
+    Grid,           ///< integer grid, row by row: many cocircular quadruples and collinear rows
+    Cocircular,     ///< exact lattice points on circles x^2 + y^2 = R^2 (R = 2082925), shifted
+    NearCollinear,  ///< points on y = x moved by -4..4 ulps, plus two far points
+    Duplicates,     ///< uniform, a third of the points repeating earlier ones exactly
+    Huge,           ///< uniform scaled by 1e290 (products overflow)
+    Tiny,           ///< uniform scaled by 1e-290, with some subnormal coordinates
+    Parabola,       ///< (t, t^2) by increasing t; inserted backwards (decreasing t), each
+                    ///< Bowyer-Watson cavity holds all earlier triangles: Theta(n^2)
 };
 
 inline constexpr Distribution kAllDistributions[] = {
-    Distribution::Uniform,       Distribution::Gaussian,   Distribution::Grid,
-    Distribution::Cocircular,    Distribution::NearCollinear, Distribution::Duplicates,
-    Distribution::Huge,          Distribution::Tiny,       Distribution::Parabola};
+    Distribution::Uniform,    Distribution::Gaussian,      Distribution::Grid,
+    Distribution::Cocircular, Distribution::NearCollinear, Distribution::Duplicates,
+    Distribution::Huge,       Distribution::Tiny,          Distribution::Parabola};
 
 std::string_view distribution_name(Distribution d);
 /// Throws exactmesh::InputError naming the unknown distribution and the known ones.

@@ -53,7 +53,8 @@ void add_chains(PslgInput& out, std::uint32_t m, std::uint32_t segments, Rng& rn
         adjacent[fill[edges[e].second]++] = e;
     }
     std::vector<std::uint8_t> used(edges.size(), 0);
-    const std::uint32_t target = std::min<std::uint32_t>(segments, static_cast<std::uint32_t>(edges.size()));
+    const std::uint32_t target =
+        std::min<std::uint32_t>(segments, static_cast<std::uint32_t>(edges.size()));
     std::uint32_t made = 0;
     for (std::uint64_t attempts = 0; made < target && attempts < 64ull * target + 64; ++attempts) {
         std::uint32_t v = below(rng, m);
@@ -69,7 +70,8 @@ void add_chains(PslgInput& out, std::uint32_t m, std::uint32_t segments, Rng& rn
             }
             if (chosen == triangulation::kNone) break;
             used[chosen] = 1;
-            const std::uint32_t w = edges[chosen].first == v ? edges[chosen].second : edges[chosen].first;
+            const std::uint32_t w =
+                edges[chosen].first == v ? edges[chosen].second : edges[chosen].first;
             out.segments.insert(out.segments.end(), {v, w});
             ++made;
             v = w;
@@ -80,7 +82,8 @@ void add_chains(PslgInput& out, std::uint32_t m, std::uint32_t segments, Rng& rn
 /// A star-shaped polygon of k vertices about (cx, cy), radii in [0.55, 1]·radius, appended to
 /// out.xy with its k segments; vertices whose exact angular order would not increase are left
 /// out (never seen: the angular gaps are at least 0.4π/k, far above rounding).
-void add_star_polygon(PslgInput& out, double cx, double cy, double radius, std::uint32_t k, Rng& rng) {
+void add_star_polygon(PslgInput& out, double cx, double cy, double radius, std::uint32_t k,
+                      Rng& rng) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<double> polygon;
     for (std::uint32_t i = 0; i < k; ++i) {
@@ -93,37 +96,47 @@ void add_star_polygon(PslgInput& out, double cx, double cy, double radius, std::
     std::vector<double> kept;
     for (std::size_t i = 0; i < polygon.size(); i += 2) {
         if (kept.size() >= 2 &&
-            predicates::orient2d(centre, kept.data() + kept.size() - 2, polygon.data() + i) != predicates::Sign::Positive) {
+            predicates::orient2d(centre, kept.data() + kept.size() - 2, polygon.data() + i) !=
+                predicates::Sign::Positive) {
             continue;
         }
         kept.insert(kept.end(), {polygon[i], polygon[i + 1]});
     }
-    while (kept.size() >= 6 && predicates::orient2d(centre, kept.data() + kept.size() - 2, kept.data()) !=
-                                   predicates::Sign::Positive) {
+    while (kept.size() >= 6 && predicates::orient2d(centre, kept.data() + kept.size() - 2,
+                                                    kept.data()) != predicates::Sign::Positive) {
         kept.resize(kept.size() - 2);
     }
     const auto base = static_cast<std::uint32_t>(out.xy.size() / 2);
     const auto count = static_cast<std::uint32_t>(kept.size() / 2);
     out.xy.insert(out.xy.end(), kept.begin(), kept.end());
-    for (std::uint32_t i = 0; i < count; ++i) out.segments.insert(out.segments.end(), {base + i, base + (i + 1) % count});
+    for (std::uint32_t i = 0; i < count; ++i)
+        out.segments.insert(out.segments.end(), {base + i, base + (i + 1) % count});
 }
 
 }  // namespace
 
 std::string_view pslg_distribution_name(PslgDistribution d) {
     switch (d) {
-        case PslgDistribution::Chains: return "chains";
-        case PslgDistribution::Polygon: return "polygon";
-        case PslgDistribution::PolygonWithHoles: return "holes";
-        case PslgDistribution::GridLines: return "grid-lines";
-        case PslgDistribution::Crossing: return "crossing";
-        case PslgDistribution::NearCollinear: return "near-collinear";
-        case PslgDistribution::Duplicates: return "duplicates";
+        case PslgDistribution::Chains:
+            return "chains";
+        case PslgDistribution::Polygon:
+            return "polygon";
+        case PslgDistribution::PolygonWithHoles:
+            return "holes";
+        case PslgDistribution::GridLines:
+            return "grid-lines";
+        case PslgDistribution::Crossing:
+            return "crossing";
+        case PslgDistribution::NearCollinear:
+            return "near-collinear";
+        case PslgDistribution::Duplicates:
+            return "duplicates";
     }
     return "unknown";
 }
 
-PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segments, std::uint64_t seed) {
+PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segments,
+                        std::uint64_t seed) {
     Rng rng = make_rng(d, seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     PslgInput out;
@@ -150,7 +163,8 @@ PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segme
                 const std::size_t count = out.segments.size() / 2;
                 for (std::size_t k = 0; k < count / 8; ++k) {
                     const std::size_t s = below(rng, static_cast<std::uint32_t>(count));
-                    out.segments.insert(out.segments.end(), {out.segments[2 * s + 1], out.segments[2 * s]});
+                    out.segments.insert(out.segments.end(),
+                                        {out.segments[2 * s + 1], out.segments[2 * s]});
                 }
             }
             break;
@@ -166,7 +180,8 @@ PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segme
                 const std::uint32_t j = below(rng, corners), j1 = (j + 1) % corners;
                 const double s = 0.999 * std::sqrt(unit(rng)), w = unit(rng);
                 for (int c = 0; c < 2; ++c) {
-                    const double edge_point = polygon[2 * j + c] * (1 - w) + polygon[2 * j1 + c] * w;
+                    const double edge_point =
+                        polygon[2 * j + c] * (1 - w) + polygon[2 * j1 + c] * w;
                     out.xy.push_back(centre[c] + s * (edge_point - centre[c]));
                 }
             }
@@ -182,9 +197,11 @@ PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segme
                 }
             }
             const std::uint32_t boundary = 4 * per_side;
-            for (std::uint32_t i = 0; i < boundary; ++i) out.segments.insert(out.segments.end(), {i, (i + 1) % boundary});
+            for (std::uint32_t i = 0; i < boundary; ++i)
+                out.segments.insert(out.segments.end(), {i, (i + 1) % boundary});
             const std::uint32_t holes = std::max<std::uint32_t>(1, (segments / 2) / 12);
-            const auto grid = static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(holes))));
+            const auto grid =
+                static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(holes))));
             const double cell = 1.0 / grid;
             for (std::uint32_t h = 0; h < holes; ++h) {
                 const double cx = (h % grid + 0.5) * cell, cy = (h / grid + 0.5) * cell;
@@ -195,7 +212,8 @@ PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segme
             break;
         }
         case PslgDistribution::GridLines: {
-            const auto side = std::max<std::uint32_t>(2, static_cast<std::uint32_t>(std::sqrt(static_cast<double>(n))));
+            const auto side = std::max<std::uint32_t>(
+                2, static_cast<std::uint32_t>(std::sqrt(static_cast<double>(n))));
             for (std::uint32_t i = 0; i < side * side; ++i) {
                 out.xy.push_back(static_cast<double>(i % side));
                 out.xy.push_back(static_cast<double>(i / side));
@@ -206,15 +224,18 @@ PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segme
                 std::uint32_t a = below(rng, side), b = below(rng, side), fixed = below(rng, side);
                 if (a == b) b = (a + 1) % side;
                 if (kind < 4) {
-                    out.segments.insert(out.segments.end(), {id(a, fixed), id(b, fixed)});  // horizontal
+                    out.segments.insert(out.segments.end(),
+                                        {id(a, fixed), id(b, fixed)});  // horizontal
                 } else if (kind < 8) {
-                    out.segments.insert(out.segments.end(), {id(fixed, a), id(fixed, b)});  // vertical
+                    out.segments.insert(out.segments.end(),
+                                        {id(fixed, a), id(fixed, b)});  // vertical
                 } else {
                     // Diagonal of slope +-1 (through lattice points) or a knight's move (slope 2).
                     const std::uint32_t lo = std::min(a, b), span = std::max(a, b) - lo;
                     const std::uint32_t y0 = below(rng, side - span);
                     const bool up = kind == 8;
-                    out.segments.insert(out.segments.end(), {id(lo, up ? y0 : y0 + span), id(lo + span, up ? y0 + span : y0)});
+                    out.segments.insert(out.segments.end(), {id(lo, up ? y0 : y0 + span),
+                                                             id(lo + span, up ? y0 + span : y0)});
                     if (side > 3 && s + 1 < segments) {
                         const std::uint32_t x = below(rng, side - 1), y = below(rng, side - 2);
                         out.segments.insert(out.segments.end(), {id(x, y), id(x + 1, y + 2)});
@@ -239,7 +260,8 @@ PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segme
             // A segment between two points strictly below the line y = x stays below it (a
             // half-plane is convex), so the chains never cross each other; within a chain the
             // segments occupy disjoint x-ranges. Then a few points well off the line.
-            const std::uint32_t per_chain = std::max<std::uint32_t>(2, std::min(segments + 1, (n - 3) / 2));
+            const std::uint32_t per_chain =
+                std::max<std::uint32_t>(2, std::min(segments + 1, (n - 3) / 2));
             for (int side : {-1, 1}) {
                 std::vector<double> t(per_chain);
                 for (double& v : t) v = 0.5 + unit(rng);
@@ -248,9 +270,13 @@ PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segme
                 const auto base = static_cast<std::uint32_t>(out.xy.size() / 2);
                 for (std::size_t i = 0; i < t.size(); ++i) {
                     double y = t[i];
-                    for (std::uint32_t k = 1 + below(rng, 4); k > 0; --k) y = std::nextafter(y, side > 0 ? 2.0 : 0.0);
+                    for (std::uint32_t k = 1 + below(rng, 4); k > 0; --k)
+                        y = std::nextafter(y, side > 0 ? 2.0 : 0.0);
                     out.xy.insert(out.xy.end(), {t[i], y});
-                    if (i > 0) out.segments.insert(out.segments.end(), {base + static_cast<std::uint32_t>(i) - 1, base + static_cast<std::uint32_t>(i)});
+                    if (i > 0)
+                        out.segments.insert(out.segments.end(),
+                                            {base + static_cast<std::uint32_t>(i) - 1,
+                                             base + static_cast<std::uint32_t>(i)});
                 }
             }
             out.xy.insert(out.xy.end(), {0.5, 1.5, 1.0, 1.25, 1.5, 0.5});

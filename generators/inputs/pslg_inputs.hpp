@@ -45,21 +45,22 @@ enum class PslgDistribution {
 };
 
 inline constexpr PslgDistribution kAllPslgDistributions[] = {
-    PslgDistribution::Chains,   PslgDistribution::Polygon,       PslgDistribution::PolygonWithHoles,
-    PslgDistribution::GridLines, PslgDistribution::Crossing,     PslgDistribution::NearCollinear,
+    PslgDistribution::Chains,    PslgDistribution::Polygon,  PslgDistribution::PolygonWithHoles,
+    PslgDistribution::GridLines, PslgDistribution::Crossing, PslgDistribution::NearCollinear,
     PslgDistribution::Duplicates};
 
 std::string_view pslg_distribution_name(PslgDistribution d);
 
 struct PslgInput {
-    std::vector<double> xy;              ///< 2·#V coordinates
+    std::vector<double> xy;               ///< 2·#V coordinates
     std::vector<std::uint32_t> segments;  ///< 2·#S vertex indices (0-based)
-    std::vector<double> holes;           ///< 2·#H points inside holes (PolygonWithHoles only)
+    std::vector<double> holes;            ///< 2·#H points inside holes (PolygonWithHoles only)
 };
 
 /// About n points and about `segments` segments of the distribution (exact counts where the
 /// entry above says so; Chains may return fewer segments when the walks run out of edges).
-PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segments, std::uint64_t seed);
+PslgInput generate_pslg(PslgDistribution d, std::uint32_t n, std::uint32_t segments,
+                        std::uint64_t seed);
 
 /// Number of distinct tiny PSLGs with `vertices` (3..8) vertices: 2^(vertices·(vertices-1)/2).
 std::uint64_t tiny_pslg_count(std::uint32_t vertices);

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "predicates/orient2d.hpp"
-#include "triangulation/modification/edge_swap_2d.hpp"
 #include "triangulation/mesh/triangulation_2d.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
 
 namespace exactmesh::generators {
 
@@ -29,11 +29,13 @@ inline triangulation::Triangulation2 sweep_triangulation_2d(std::span<const doub
     std::vector<VertIdx> order(n);
     std::iota(order.begin(), order.end(), VertIdx{0});
     std::sort(order.begin(), order.end(), [&](VertIdx a, VertIdx b) {
-        return p(a)[0] != p(b)[0] ? p(a)[0] < p(b)[0] : (p(a)[1] != p(b)[1] ? p(a)[1] < p(b)[1] : a < b);
+        return p(a)[0] != p(b)[0] ? p(a)[0] < p(b)[0]
+                                  : (p(a)[1] != p(b)[1] ? p(a)[1] < p(b)[1] : a < b);
     });
-    order.erase(std::unique(order.begin(), order.end(),
-                            [&](VertIdx a, VertIdx b) { return p(a)[0] == p(b)[0] && p(a)[1] == p(b)[1]; }),
-                order.end());
+    order.erase(
+        std::unique(order.begin(), order.end(),
+                    [&](VertIdx a, VertIdx b) { return p(a)[0] == p(b)[0] && p(a)[1] == p(b)[1]; }),
+        order.end());
     // The first points, while collinear, form a chain; the first point off their line closes
     // the first fan and a counter-clockwise hull.
     std::size_t k = 2;

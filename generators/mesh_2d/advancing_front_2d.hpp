@@ -81,7 +81,7 @@ struct AdvancingFrontCounters2 {
     std::uint64_t front_queries = 0;        ///< quadtree box queries
     std::uint64_t max_front_edges = 0;      ///< the longest front
     std::uint64_t closure_runs = 0;  ///< 1 when the budget (triangles or work) closed the front
-    std::uint64_t closure_triangles = 0;    ///< triangles made by that closure
+    std::uint64_t closure_triangles = 0;  ///< triangles made by that closure
     std::uint64_t orient_calls = 0;
 };
 

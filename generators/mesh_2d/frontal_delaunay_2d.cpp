@@ -59,7 +59,6 @@ double scale_of(std::initializer_list<double> magnitudes) {
     return std::ldexp(1.0, std::ilogb(m));
 }
 
-
 class Frontal {
   public:
     /// The triangulation is the boundary's pieces as the segments of a new PSLG over the
@@ -93,7 +92,8 @@ class Frontal {
     double size_at(double x, double y) const {
         const double s = options_.size(x, y);
         if (!(s > 0)) {
-            throw InputError("size function: not a number > 0 at " + format_point(std::array<double, 2>{x, y}.data()) + " (" +
+            throw InputError("size function: not a number > 0 at " +
+                             format_point(std::array<double, 2>{x, y}.data()) + " (" +
                              options_.size.describe() + ")");
         }
         return s;

@@ -7,8 +7,8 @@
 // and a move that would make any triangle of the vertex's star not strictly counter-clockwise
 // (exact orient2d against its neighbours' current positions) is undone: the mesh stays valid
 // after every move, whatever the input. After each sweep, Lawson's Delaunay swapping
-// (triangulation/modification/edge_swap_2d) restores the (constrained) Delaunay property the moves break;
-// Field shows that smoothing alone can lower the minimum angle and that swapping after it
+// (triangulation/modification/edge_swap_2d) restores the (constrained) Delaunay property the moves
+// break; Field shows that smoothing alone can lower the minimum angle and that swapping after it
 // repairs most of that.
 // Fixed vertices: the input's (index < fixed_below), every vertex of a constrained edge or of an
 // edge with one triangle (the boundary and the segments), and vertices in no triangle.

@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
-#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/sizing/size_function.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 

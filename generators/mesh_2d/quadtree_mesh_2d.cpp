@@ -389,8 +389,8 @@ void QuadtreeMesher::split_counted(std::uint32_t n) {
     if (leaf_count_ > max_leaves_) {
         const Box b = tree_.cell(n);
         throw InputError("quadtree: more than " + std::to_string(max_leaves_) +
-                         " leaves: splitting a leaf of side " + format_number(b.x1 - b.x0) + " at (" +
-                         format_number(b.x0) + ", " + format_number(b.y0) + "), size " +
+                         " leaves: splitting a leaf of side " + format_number(b.x1 - b.x0) +
+                         " at (" + format_number(b.x0) + ", " + format_number(b.y0) + "), size " +
                          format_number(options_.size(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1))) +
                          " (boundary features far finer than the size, or a size asking for too "
                          "many elements)");

@@ -44,7 +44,8 @@ std::string fixed(double value, int digits = 6) {
 
 }  // namespace
 
-QualityReport2 quality_report_2d(std::span<const double> xy, std::span<const triangulation::VertIdx> triangles,
+QualityReport2 quality_report_2d(std::span<const double> xy,
+                                 std::span<const triangulation::VertIdx> triangles,
                                  const SizeFunction& size) {
     QualityReport2 r;
     const std::size_t count = triangles.size() / 3;
@@ -59,7 +60,8 @@ QualityReport2 quality_report_2d(std::span<const double> xy, std::span<const tri
     std::vector<std::uint64_t> edges;
     edges.reserve(3 * count);
     for (std::size_t t = 0; t < count; ++t) {
-        const triangulation::VertIdx v[3] = {triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]};
+        const triangulation::VertIdx v[3] = {triangles[3 * t], triangles[3 * t + 1],
+                                             triangles[3 * t + 2]};
         double smallest = 180;
         for (int k = 0; k < 3; ++k) {
             used[v[k]] = 1;
@@ -71,13 +73,15 @@ QualityReport2 quality_report_2d(std::span<const double> xy, std::span<const tri
             r.min_angle = std::min(r.min_angle, angle);
             r.max_angle = std::max(r.max_angle, angle);
             ++r.angle_histogram[std::min<std::size_t>(17, static_cast<std::size_t>(angle / 10))];
-            const triangulation::VertIdx a = std::min(v[k], v[(k + 1) % 3]), b = std::max(v[k], v[(k + 1) % 3]);
+            const triangulation::VertIdx a = std::min(v[k], v[(k + 1) % 3]),
+                                         b = std::max(v[k], v[(k + 1) % 3]);
             edges.push_back((std::uint64_t{a} << 32) | b);
         }
         min_angle_sum += smallest;
         // Law of sines: the shortest edge l_min = 2 R sin(theta_min).
         const double sine = std::sin(smallest / kDegrees);
-        radius_edge.push_back(sine > 0 ? 1.0 / (2.0 * sine) : std::numeric_limits<double>::infinity());
+        radius_edge.push_back(sine > 0 ? 1.0 / (2.0 * sine)
+                                       : std::numeric_limits<double>::infinity());
     }
     r.mean_min_angle = min_angle_sum / static_cast<double>(count);
     r.vertices = static_cast<std::uint64_t>(std::count(used.begin(), used.end(), std::uint8_t{1}));
@@ -119,12 +123,12 @@ std::string quality_report_text(const QualityReport2& r) {
         text += bin;
     }
     text += "\n";
-    text += "quality.radius_edge: min " + fixed(r.radius_edge_min) + " median " + fixed(r.radius_edge_median) +
-            " max " + fixed(r.radius_edge_max) + "\n";
+    text += "quality.radius_edge: min " + fixed(r.radius_edge_min) + " median " +
+            fixed(r.radius_edge_median) + " max " + fixed(r.radius_edge_max) + "\n";
     if (r.has_size) {
-        text += "quality.size_conformity: min " + fixed(r.size_ratio_min) + " median " + fixed(r.size_ratio_median) +
-                " max " + fixed(r.size_ratio_max) + " (edge length / size at its midpoint, " +
-                std::to_string(r.edges) + " edges)\n";
+        text += "quality.size_conformity: min " + fixed(r.size_ratio_min) + " median " +
+                fixed(r.size_ratio_median) + " max " + fixed(r.size_ratio_max) +
+                " (edge length / size at its midpoint, " + std::to_string(r.edges) + " edges)\n";
     } else {
         text += "quality.size_conformity: none (no size function)\n";
     }

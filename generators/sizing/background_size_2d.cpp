@@ -3,8 +3,8 @@
 // triangles, exact orient2d; the nearest boundary edge of a point outside the mesh: a ring
 // search over a second bucket grid, stopped by a lower bound on the distance to the cells not
 // yet searched.
-#include "base/number_text.hpp"
 #include "generators/sizing/background_size_2d.hpp"
+#include "base/number_text.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Size functions s(x, y) > 0: the target edge length of a mesh near (x, y). Kinds:
 //  - none: +infinity everywhere (no size criterion; a generator that needs a size then gets
-//    graded_size_from_boundary from `exactmesh mesh`: generators/boundary/graded_boundary_size_2d.hpp);
+//    graded_size_from_boundary from `exactmesh mesh`:
+//    generators/boundary/graded_boundary_size_2d.hpp);
 //  - uniform: s = H;
 //  - sources [seed material, issue 6]: point and line sources combined by the source formula
 //        s(x) = min(H, sum_k s_k [1 + (d_k(x) / rbar_k)^gamma_k]),

@@ -39,10 +39,10 @@
 #include "generators/inputs/pslg_inputs.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
+#include "tests/support/test_scale.hpp"
 #include "triangulation/checks/check_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
-#include "tests/support/test_scale.hpp"
 
 namespace tri = exactmesh::triangulation;
 namespace gen = exactmesh::generators;

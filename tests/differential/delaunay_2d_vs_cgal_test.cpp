@@ -20,11 +20,11 @@
 
 #include "generators/inputs/inputs.hpp"
 #include "predicates/incircle.hpp"
-#include "triangulation/delaunay/bowyer_watson_2d.hpp"
+#include "tests/support/test_scale.hpp"
 #include "triangulation/checks/check_2d.hpp"
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/delaunay/green_sibson_2d.hpp"
 #include "triangulation/delaunay/tanemura_merriam_2d.hpp"
-#include "tests/support/test_scale.hpp"
 
 namespace tri = exactmesh::triangulation;
 namespace gen = exactmesh::generators;

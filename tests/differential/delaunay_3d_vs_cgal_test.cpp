@@ -41,8 +41,8 @@
 #include "generators/inputs/inputs_3d.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orient3d.hpp"
-#include "triangulation/delaunay/bowyer_watson_3d.hpp"
 #include "triangulation/checks/check_3d.hpp"
+#include "triangulation/delaunay/bowyer_watson_3d.hpp"
 #include "triangulation/delaunay/green_sibson_3d.hpp"
 
 namespace tri = exactmesh::triangulation;

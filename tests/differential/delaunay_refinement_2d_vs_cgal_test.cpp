@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
-#include "generators/boundary/sample_domains.hpp"
 #include "bench/cgal_mesh_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 
 namespace em = exactmesh;

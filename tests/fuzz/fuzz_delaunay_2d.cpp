@@ -160,7 +160,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (!neighbors_mutual(results[a])) fail(xy, label(a) + ": neighbours not mutual");
     }
     const bool duplicates = tri::has_duplicate_points_2d(xy);
-    const Triangles reference = duplicates ? Triangles{} : tri::canonical_triangles_2d(results[0].triangles);
+    const Triangles reference =
+        duplicates ? Triangles{} : tri::canonical_triangles_2d(results[0].triangles);
     for (std::size_t a = 1; a < kAlgorithms.size(); ++a) {
         if (results[a].triangles.size() != results[0].triangles.size()) {
             fail(xy, label(a) + ": " + std::to_string(results[a].triangles.size() / 3) +

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// libFuzzer target: Delaunay refinement (generators/mesh_2d/delaunay_refinement_2d) of fuzzed points and
-// segments, at a fuzzed angle bound (0..33 degrees) with an optional uniform size, under a
-// budget of 5,000 Steiner points (ASan makes 20,000 take 10 s). Every run must end with a mesh that passes
-// check_constrained_delaunay_2d, or with InputError (nothing enclosed, collinear, non-finite)
-// or GeometryError (the budget, or features finer than doubles resolve). Anything else, an
-// assertion or a sanitizer report, is a failure (__builtin_trap()).
+// libFuzzer target: Delaunay refinement (generators/mesh_2d/delaunay_refinement_2d) of fuzzed
+// points and segments, at a fuzzed angle bound (0..33 degrees) with an optional uniform size, under
+// a budget of 5,000 Steiner points (ASan makes 20,000 take 10 s). Every run must end with a mesh
+// that passes check_constrained_delaunay_2d, or with InputError (nothing enclosed, collinear,
+// non-finite) or GeometryError (the budget, or features finer than doubles resolve). Anything else,
+// an assertion or a sanitizer report, is a failure (__builtin_trap()).
 //
 // Input layout (fuzz_pslg.hpp with a 4-byte header): byte 0 the mode, byte 1 the angle
 // (byte % 34 degrees), byte 2 the size (0: none, else 2^-(byte % 8)), byte 3 the segment count,

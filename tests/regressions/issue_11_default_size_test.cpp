@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "generators/boundary/graded_boundary_size_2d.hpp"
-#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 

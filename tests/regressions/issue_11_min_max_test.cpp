@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "tests/oracles/triangulation_enumeration_2d.hpp"
-#include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/checks/check_2d.hpp"
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/modification/edge_cutting_2d.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
 

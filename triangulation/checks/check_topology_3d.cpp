@@ -15,7 +15,9 @@ namespace {
 
 using predicates::Sign;
 
-std::string name(std::uint64_t v) { return std::to_string(v); }
+std::string name(std::uint64_t v) {
+    return std::to_string(v);
+}
 
 TopologyReport3 fail(TopologyReport3 report, std::string problem, TetIdx t,
                      std::vector<VertIdx> vertices) {
@@ -43,11 +45,14 @@ bool same_oriented(std::array<VertIdx, 3> x, std::array<VertIdx, 3> y) {
 
 TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptions options) {
     TopologyReport3 report;
-    if (mesh.xyz.size() % 3 != 0) return fail(report, "coordinate array length is not a multiple of 3", kNone, {});
-    if (mesh.tets.size() % 4 != 0) return fail(report, "tetrahedron array length is not a multiple of 4", kNone, {});
+    if (mesh.xyz.size() % 3 != 0)
+        return fail(report, "coordinate array length is not a multiple of 3", kNone, {});
+    if (mesh.tets.size() % 4 != 0)
+        return fail(report, "tetrahedron array length is not a multiple of 4", kNone, {});
     if (mesh.neighbors.size() != mesh.tets.size()) {
-        return fail(report, "neighbor array has " + name(mesh.neighbors.size()) + " entries for " +
-                                name(mesh.tets.size() / 4) + " tetrahedra",
+        return fail(report,
+                    "neighbor array has " + name(mesh.neighbors.size()) + " entries for " +
+                        name(mesh.tets.size() / 4) + " tetrahedra",
                     kNone, {});
     }
     const std::size_t n = mesh.xyz.size() / 3, count = mesh.tets.size() / 4;
@@ -62,18 +67,23 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
         const auto tet = static_cast<TetIdx>(t);
         for (unsigned k = 0; k < 4; ++k) {
             if (v[k] >= n) {
-                return fail(report, "tetrahedron " + name(t) + ": vertex " + name(v[k]) + " out of range",
+                return fail(report,
+                            "tetrahedron " + name(t) + ": vertex " + name(v[k]) + " out of range",
                             tet, {v[k]});
             }
             for (unsigned j = 0; j < k; ++j) {
-                if (v[j] == v[k]) return fail(report, "tetrahedron " + name(t) + " repeats vertex " + name(v[k]), tet, {v[k]});
+                if (v[j] == v[k])
+                    return fail(report, "tetrahedron " + name(t) + " repeats vertex " + name(v[k]),
+                                tet, {v[k]});
             }
         }
-        const Sign s = predicates::orient3d(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+        const Sign s = predicates::orient3d(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                            mesh.point(v[3]));
         if (s != Sign::Positive) {
             return fail(report,
-                        "tetrahedron " + name(t) + " (" + name(v[0]) + ", " + name(v[1]) + ", " + name(v[2]) +
-                            ", " + name(v[3]) + ") is " + (s == Sign::Zero ? "flat" : "negatively oriented"),
+                        "tetrahedron " + name(t) + " (" + name(v[0]) + ", " + name(v[1]) + ", " +
+                            name(v[2]) + ", " + name(v[3]) + ") is " +
+                            (s == Sign::Zero ? "flat" : "negatively oriented"),
                         tet, {v[0], v[1], v[2], v[3]});
         }
     }
@@ -99,8 +109,8 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
         const auto& key = entries[i].key;
         if (j - i > 2) {
             return fail(report,
-                        "face (" + name(key[0]) + ", " + name(key[1]) + ", " + name(key[2]) + ") is shared by " +
-                            name(j - i) + " tetrahedra",
+                        "face (" + name(key[0]) + ", " + name(key[1]) + ", " + name(key[2]) +
+                            ") is shared by " + name(j - i) + " tetrahedra",
                         entries[i].facet / 4, {key[0], key[1], key[2]});
         }
         if (j - i == 2) {
@@ -109,8 +119,9 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
             std::swap(back[1], back[2]);
             if (!same_oriented(face_of(mesh, f / 4, f % 4), back)) {
                 return fail(report,
-                            "tetrahedra " + name(f / 4) + " and " + name(g / 4) + " lie on the same side of their face (" +
-                                name(key[0]) + ", " + name(key[1]) + ", " + name(key[2]) + ")",
+                            "tetrahedra " + name(f / 4) + " and " + name(g / 4) +
+                                " lie on the same side of their face (" + name(key[0]) + ", " +
+                                name(key[1]) + ", " + name(key[2]) + ")",
                             f / 4, {key[0], key[1], key[2]});
             }
             shared_with[f] = g / 4;
@@ -124,13 +135,16 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
     for (std::size_t f = 0; f < mesh.tets.size(); ++f) {
         if (mesh.neighbors[f] != shared_with[f]) {
             const auto face = face_of(mesh, f / 4, f % 4);
-            const std::string expected =
-                shared_with[f] == kNone ? std::string("none (a boundary face)") : "tetrahedron " + name(shared_with[f]);
-            const std::string given =
-                mesh.neighbors[f] == kNone ? std::string("none") : "tetrahedron " + name(mesh.neighbors[f]);
+            const std::string expected = shared_with[f] == kNone
+                                             ? std::string("none (a boundary face)")
+                                             : "tetrahedron " + name(shared_with[f]);
+            const std::string given = mesh.neighbors[f] == kNone
+                                          ? std::string("none")
+                                          : "tetrahedron " + name(mesh.neighbors[f]);
             return fail(report,
-                        "tetrahedron " + name(f / 4) + ": the neighbor across face (" + name(face[0]) + ", " +
-                            name(face[1]) + ", " + name(face[2]) + ") is " + given + ", expected " + expected,
+                        "tetrahedron " + name(f / 4) + ": the neighbor across face (" +
+                            name(face[0]) + ", " + name(face[1]) + ", " + name(face[2]) + ") is " +
+                            given + ", expected " + expected,
                         static_cast<TetIdx>(f / 4), {face[0], face[1], face[2]});
         }
     }
@@ -143,16 +157,20 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
     for (std::size_t f = 0; f < mesh.tets.size(); ++f) {
         if (shared_with[f] != kNone) continue;
         const auto face = face_of(mesh, f / 4, f % 4);
-        for (int e = 0; e < 3; ++e) halves.push_back({face[e], face[(e + 1) % 3], static_cast<std::uint32_t>(f)});
+        for (int e = 0; e < 3; ++e)
+            halves.push_back({face[e], face[(e + 1) % 3], static_cast<std::uint32_t>(f)});
     }
-    auto less = [](const Half& x, const Half& y) { return x.from != y.from ? x.from < y.from : x.to < y.to; };
+    auto less = [](const Half& x, const Half& y) {
+        return x.from != y.from ? x.from < y.from : x.to < y.to;
+    };
     std::vector<Half> sorted = halves;
     std::sort(sorted.begin(), sorted.end(), less);
     for (std::size_t i = 0; i + 1 < sorted.size(); ++i) {
         if (sorted[i].from == sorted[i + 1].from && sorted[i].to == sorted[i + 1].to) {
             return fail(report,
                         "boundary edge (" + name(sorted[i].from) + ", " + name(sorted[i].to) +
-                            ") is used twice in the same direction (the boundary is not a manifold surface)",
+                            ") is used twice in the same direction (the boundary is not a manifold "
+                            "surface)",
                         sorted[i].facet / 4, {sorted[i].from, sorted[i].to});
         }
     }
@@ -161,7 +179,8 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
         const auto it = std::lower_bound(sorted.begin(), sorted.end(), reverse, less);
         if (it == sorted.end() || it->from != h.to || it->to != h.from) {
             return fail(report,
-                        "boundary edge (" + name(h.from) + ", " + name(h.to) + ") has a boundary face on one side only",
+                        "boundary edge (" + name(h.from) + ", " + name(h.to) +
+                            ") has a boundary face on one side only",
                         h.facet / 4, {h.from, h.to});
         }
         if (options.convex_boundary) {
@@ -175,9 +194,10 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
             }
             if (predicates::orient3d(mesh.point(face[0]), mesh.point(face[1]), mesh.point(face[2]),
                                      mesh.point(apex)) == Sign::Negative) {
-                return fail(report,
-                            "the boundary is not convex at edge (" + name(h.from) + ", " + name(h.to) + ")",
-                            h.facet / 4, {h.from, h.to, apex});
+                return fail(
+                    report,
+                    "the boundary is not convex at edge (" + name(h.from) + ", " + name(h.to) + ")",
+                    h.facet / 4, {h.from, h.to, apex});
             }
         }
     }

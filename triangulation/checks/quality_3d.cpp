@@ -40,8 +40,10 @@ long double radius_edge(const TetCorners& p) {
     long double sq[3];
     for (int r = 0; r < 3; ++r) sq[r] = e[r][0] * e[r][0] + e[r][1] * e[r][1] + e[r][2] * e[r][2];
     long double center[3];
-    for (int i = 0; i < 3; ++i) center[i] = (sq[0] * bc[i] + sq[1] * ca[i] + sq[2] * ab[i]) / (2 * det);
-    const long double radius = std::sqrt(center[0] * center[0] + center[1] * center[1] + center[2] * center[2]);
+    for (int i = 0; i < 3; ++i)
+        center[i] = (sq[0] * bc[i] + sq[1] * ca[i] + sq[2] * ab[i]) / (2 * det);
+    const long double radius =
+        std::sqrt(center[0] * center[0] + center[1] * center[1] + center[2] * center[2]);
     long double shortest = sq[0];
     for (int a = 0; a < 4; ++a) {
         for (int b = a + 1; b < 4; ++b) {
@@ -62,8 +64,9 @@ QualityStats3 quality_stats_3d(const Tetrahedralization3& mesh, const QualityOpt
     const double width = options.histogram_bin_degrees;
     const double bins = 180.0 / width;
     if (!(width > 0) || !(bins <= 18000) || std::fabs(bins - std::round(bins)) > 1e-9) {
-        throw InputError("dihedral histogram bin width must be positive and divide 180 degrees (got " +
-                         std::to_string(width) + ")");
+        throw InputError(
+            "dihedral histogram bin width must be positive and divide 180 degrees (got " +
+            std::to_string(width) + ")");
     }
     QualityStats3 stats;
     stats.histogram_bin_degrees = width;
@@ -90,7 +93,9 @@ QualityStats3 quality_stats_3d(const Tetrahedralization3& mesh, const QualityOpt
         sum_q += q;
         const long double ratio = radius_edge(p);
         max_ratio = std::max(max_ratio, ratio);
-        if (smallest < options.sliver_max_dihedral_degrees && ratio <= options.sliver_max_radius_edge) ++stats.slivers;
+        if (smallest < options.sliver_max_dihedral_degrees &&
+            ratio <= options.sliver_max_radius_edge)
+            ++stats.slivers;
     }
     stats.min_dihedral_degrees = static_cast<double>(min_angle);
     stats.max_dihedral_degrees = static_cast<double>(max_angle);

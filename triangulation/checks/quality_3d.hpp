@@ -20,7 +20,7 @@
 namespace exactmesh::triangulation {
 
 struct QualityOptions {
-    double histogram_bin_degrees = 10.0;      ///< dihedral histogram bin width, divides 180
+    double histogram_bin_degrees = 10.0;  ///< dihedral histogram bin width, divides 180
     double sliver_max_dihedral_degrees = 5.0;
     double sliver_max_radius_edge = 2.0;
 };
@@ -32,9 +32,9 @@ struct QualityStats3 {
     /// Counts of the 6 #T dihedral angles per bin [k w, (k+1) w), the last bin closed at 180.
     std::vector<std::uint64_t> dihedral_histogram;
     double histogram_bin_degrees = 10.0;
-    double min_volume_edge = 0;   ///< smallest q over the tetrahedra
+    double min_volume_edge = 0;  ///< smallest q over the tetrahedra
     double mean_volume_edge = 0;
-    double max_radius_edge = 0;   ///< largest circumradius / shortest edge
+    double max_radius_edge = 0;  ///< largest circumradius / shortest edge
     std::uint64_t slivers = 0;
 };
 

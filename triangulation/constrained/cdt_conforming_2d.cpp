@@ -14,9 +14,9 @@
 #include "base/errors.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/within_rounding_of_segment.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
 #include "triangulation/constrained/cdt_phases_2d.hpp"
 #include "triangulation/constrained/cdt_state_2d.hpp"
-#include "triangulation/checks/check_constrained_2d.hpp"
 
 namespace exactmesh::triangulation::detail {
 
@@ -31,7 +31,8 @@ bool bend_candidate(const CdtState& cdt, std::uint32_t segment, VertIdx a, VertI
     const double* s1 = cdt.mesh.point(cdt.segment_ends[segment][1]);
     // The distance test first: it rejects nearly every vertex a piece crosses, by its filter.
     if (!predicates::within_rounding_of_segment(cdt.mesh.point(w), s0, s1)) return false;
-    const Sign from_a = predicates::direction_dot_sign(cdt.mesh.point(a), cdt.mesh.point(w), s0, s1);
+    const Sign from_a =
+        predicates::direction_dot_sign(cdt.mesh.point(a), cdt.mesh.point(w), s0, s1);
     const Sign to_b = predicates::direction_dot_sign(cdt.mesh.point(w), cdt.mesh.point(b), s0, s1);
     if (from_a == Sign::Zero || from_a != to_b) return false;
     // A piece shared with other segments bends only where each of their chains may bend.
@@ -39,8 +40,10 @@ bool bend_candidate(const CdtState& cdt, std::uint32_t segment, VertIdx a, VertI
         if (other == segment) continue;
         const double* t0 = cdt.mesh.point(cdt.segment_ends[other][0]);
         const double* t1 = cdt.mesh.point(cdt.segment_ends[other][1]);
-        const Sign o_from_a = predicates::direction_dot_sign(cdt.mesh.point(a), cdt.mesh.point(w), t0, t1);
-        const Sign o_to_b = predicates::direction_dot_sign(cdt.mesh.point(w), cdt.mesh.point(b), t0, t1);
+        const Sign o_from_a =
+            predicates::direction_dot_sign(cdt.mesh.point(a), cdt.mesh.point(w), t0, t1);
+        const Sign o_to_b =
+            predicates::direction_dot_sign(cdt.mesh.point(w), cdt.mesh.point(b), t0, t1);
         if (o_from_a == Sign::Zero || o_from_a != o_to_b) return false;
         if (!predicates::within_rounding_of_segment(cdt.mesh.point(w), t0, t1)) return false;
     }
@@ -71,8 +74,8 @@ VertIdx vertex_near_segment(CdtState& cdt, const Piece& piece) {
     VertIdx best = kNone;
     auto consider = [&](VertIdx v) {
         if (!bend_candidate(cdt, piece.segment, a, b, v)) return;
-        if (best == kNone ||
-            predicates::direction_dot_sign(cdt.mesh.point(v), cdt.mesh.point(best), s0, s1) == Sign::Positive)
+        if (best == kNone || predicates::direction_dot_sign(cdt.mesh.point(v), cdt.mesh.point(best),
+                                                            s0, s1) == Sign::Positive)
             best = v;
     };
     // The edges the piece crosses, as insert_piece walks them; a vertex exactly on the piece
@@ -168,7 +171,8 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece,
         // (A piece may run either way along its segment.)
         const Sign from_a = predicates::direction_dot_sign(pa, m, s0, s1),
                    to_b = predicates::direction_dot_sign(m, pb, s0, s1);
-        if (from_a == Sign::Zero || from_a != to_b || !predicates::within_rounding_of_segment(m, s0, s1)) {
+        if (from_a == Sign::Zero || from_a != to_b ||
+            !predicates::within_rounding_of_segment(m, s0, s1)) {
             throw GeometryError(
                 "conforming Delaunay: segment " + cdt.segment_name(piece.segment) +
                 " has a piece whose split point falls off its way (features finer than "
@@ -201,7 +205,8 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece,
         const double* s0 = cdt.mesh.point(cdt.segment_ends[piece.segment][0]);
         const double* s1 = cdt.mesh.point(cdt.segment_ends[piece.segment][1]);
         const Sign from_a = predicates::direction_dot_sign(pa, cdt.mesh.point(at), s0, s1);
-        if (from_a == Sign::Zero || from_a != predicates::direction_dot_sign(cdt.mesh.point(at), pb, s0, s1)) {
+        if (from_a == Sign::Zero ||
+            from_a != predicates::direction_dot_sign(cdt.mesh.point(at), pb, s0, s1)) {
             throw GeometryError("conforming Delaunay: segment " + cdt.segment_name(piece.segment) +
                                 " has a piece whose split point rounds to a vertex off its way "
                                 "(features finer than double precision resolves)");

@@ -13,8 +13,8 @@
 #include "base/errors.hpp"
 #include "triangulation/constrained/cdt_phases_2d.hpp"
 #include "triangulation/constrained/cdt_state_2d.hpp"
-#include "triangulation/mesh/flip_2d.hpp"
 #include "triangulation/delaunay/green_sibson_2d.hpp"
+#include "triangulation/mesh/flip_2d.hpp"
 
 namespace exactmesh::triangulation::detail {
 

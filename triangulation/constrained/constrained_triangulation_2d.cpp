@@ -34,7 +34,6 @@ namespace {
 
 using predicates::Sign;
 
-
 /// bend_through_apex(near_apex(e)), or GeometryError when there is no such apex.
 VertIdx bend_at_apex(CdtState& cdt, EdgeIdx e);
 
@@ -106,8 +105,9 @@ CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
         const VertIdx u = cdt.mesh.origin(e), v = cdt.mesh.destination(e);
         const Sign side = cdt.core.orient(u, v, p);
         if (cdt.segment_of[e] != kNone) {
-            if (side != Sign::Positive || predicates::corner_dot_sign(cdt.mesh.point(p), cdt.mesh.point(u),
-                                                          cdt.mesh.point(v)) != Sign::Positive) {
+            if (side != Sign::Positive ||
+                predicates::corner_dot_sign(cdt.mesh.point(p), cdt.mesh.point(u),
+                                            cdt.mesh.point(v)) != Sign::Positive) {
                 cdt.encroached_edges.push_back(e);
             }
         } else if (side != Sign::Positive) {

@@ -35,26 +35,26 @@ struct CdtState;
 
 /// The outcome of ConstrainedTriangulation2::insert_in_cavity.
 enum class CavityInsertion {
-    Inserted,        ///< the point is a new vertex
-    Encroaches,      ///< rejected: it lies in the closed diametral circle of (or beyond) a
-                     ///< constrained edge of its cavity; encroached_edges() lists them
-    Duplicate,       ///< rejected: it equals a vertex of its cavity
-    NotInConflict,   ///< rejected: the start triangle's circumcircle does not hold it
-    Outside,         ///< rejected: beyond an unconstrained hull edge of its cavity (never when
-                     ///< the start triangle is in the domain: segments enclose it)
+    Inserted,       ///< the point is a new vertex
+    Encroaches,     ///< rejected: it lies in the closed diametral circle of (or beyond) a
+                    ///< constrained edge of its cavity; encroached_edges() lists them
+    Duplicate,      ///< rejected: it equals a vertex of its cavity
+    NotInConflict,  ///< rejected: the start triangle's circumcircle does not hold it
+    Outside,        ///< rejected: beyond an unconstrained hull edge of its cavity (never when
+                    ///< the start triangle is in the domain: segments enclose it)
 };
 
 struct ConstrainedTriangulation2Counters {
-    std::uint64_t cavity_insertions = 0;   ///< points inserted by insert_in_cavity
-    std::uint64_t cavity_triangles = 0;    ///< triangles replaced by those insertions, summed
-    std::uint64_t rejected_insertions = 0; ///< insert_in_cavity calls that changed nothing
-    std::uint64_t edge_splits = 0;         ///< constrained edges split at a new vertex
-    std::uint64_t edge_bends = 0;          ///< constrained edges split at an existing vertex
-    std::uint64_t split_flips = 0;         ///< Lawson flips after edge splits
+    std::uint64_t cavity_insertions = 0;    ///< points inserted by insert_in_cavity
+    std::uint64_t cavity_triangles = 0;     ///< triangles replaced by those insertions, summed
+    std::uint64_t rejected_insertions = 0;  ///< insert_in_cavity calls that changed nothing
+    std::uint64_t edge_splits = 0;          ///< constrained edges split at a new vertex
+    std::uint64_t edge_bends = 0;           ///< constrained edges split at an existing vertex
+    std::uint64_t split_flips = 0;          ///< Lawson flips after edge splits
 };
 
 class ConstrainedTriangulation2 {
-public:
+  public:
     /// Builds the constrained Delaunay triangulation of pslg (copied) as constrained_delaunay_2d
     /// does with the same options, and marks the domain. A vertex within rounding of a segment
     /// (within_rounding_of_segment, strictly between its ends) becomes a vertex of it: the
@@ -137,7 +137,7 @@ public:
     /// after them renumbered to close the gap); consumes the triangulation.
     Cdt2Result take_result() &&;
 
-private:
+  private:
     struct Owned;
     std::unique_ptr<Owned> owned_;
     detail::CdtState* state_ = nullptr;

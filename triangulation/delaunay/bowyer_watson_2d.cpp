@@ -30,7 +30,8 @@ void insert_point(detail::Delaunay2Core& core, Cavity& cavity, VertIdx p, TriIdx
     cavity.triangles.clear();
     cavity.boundary.clear();
     cavity.created.clear();
-    if (cavity.stamp.size() < mesh.triangle_slots()) cavity.stamp.resize(2 * mesh.triangle_slots(), 0);
+    if (cavity.stamp.size() < mesh.triangle_slots())
+        cavity.stamp.resize(2 * mesh.triangle_slots(), 0);
     cavity.stamp[seed] = stamp;
     cavity.triangles.push_back(seed);
     // Breadth first: the conflict region is connected [Watson81], so its boundary is reached.

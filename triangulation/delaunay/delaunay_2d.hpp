@@ -34,14 +34,14 @@ struct Delaunay2Options {
 
 /// Work counters of one construction (predicate stage counts come from predicates/stats.hpp).
 struct Delaunay2Counters {
-    std::uint64_t points = 0;          ///< input points
-    std::uint64_t duplicates = 0;      ///< input points merged into an earlier identical one
-    std::uint64_t orient_calls = 0;    ///< orient2d evaluations made by the algorithm
-    std::uint64_t incircle_calls = 0;  ///< incircle evaluations made by the algorithm
-    std::uint64_t walk_steps = 0;      ///< triangles visited by point location
+    std::uint64_t points = 0;            ///< input points
+    std::uint64_t duplicates = 0;        ///< input points merged into an earlier identical one
+    std::uint64_t orient_calls = 0;      ///< orient2d evaluations made by the algorithm
+    std::uint64_t incircle_calls = 0;    ///< incircle evaluations made by the algorithm
+    std::uint64_t walk_steps = 0;        ///< triangles visited by point location
     std::uint64_t cavity_triangles = 0;  ///< Bowyer-Watson: triangles removed, summed
-    std::uint64_t flips = 0;           ///< Green-Sibson: Lawson flips
-    std::uint64_t candidates = 0;      ///< Tanemura-Merriam: candidate points examined
+    std::uint64_t flips = 0;             ///< Green-Sibson: Lawson flips
+    std::uint64_t candidates = 0;        ///< Tanemura-Merriam: candidate points examined
 };
 
 /// The name table of Delaunay2Counters (base/counter_table.hpp): --stats prints it in this order.
@@ -52,9 +52,10 @@ static_assert(counter_table_complete(kDelaunay2CounterNames));
 
 /// The Delaunay triangulation in the caller's vertex numbering.
 struct Delaunay2Result {
-    std::vector<VertIdx> triangles;   ///< 3·#T input indices, counter-clockwise
-    std::vector<TriIdx> neighbors;    ///< 3·#T: triangle across edge (v[k], v[k+1]), kNone on the hull
-    std::vector<VertIdx> merged_into; ///< #V: the first input point with the same coordinates
+    std::vector<VertIdx> triangles;  ///< 3·#T input indices, counter-clockwise
+    std::vector<TriIdx>
+        neighbors;  ///< 3·#T: triangle across edge (v[k], v[k+1]), kNone on the hull
+    std::vector<VertIdx> merged_into;  ///< #V: the first input point with the same coordinates
     Delaunay2Counters counters;
 };
 

@@ -22,8 +22,8 @@ void validate_points_2d(std::span<const double> xy) {
         throw InputError("points: odd number of coordinates (" + std::to_string(xy.size()) + ")");
     }
     if (xy.size() / 2 > kMaxPoints) {
-        throw InputError("points: " + std::to_string(xy.size() / 2) + " points exceed the limit of " +
-                         std::to_string(kMaxPoints));
+        throw InputError("points: " + std::to_string(xy.size() / 2) +
+                         " points exceed the limit of " + std::to_string(kMaxPoints));
     }
     for (std::size_t i = 0; i < xy.size(); ++i) {
         if (!std::isfinite(xy[i])) {
@@ -39,15 +39,15 @@ void validate_points_2d(std::span<const double> xy) {
 namespace detail {
 
 Delaunay2Core::Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options)
-    : Delaunay2Core(xy, (validate_points_2d(xy),
-                         insertion_order_2d(xy, options.order, options.seed))) {
+    : Delaunay2Core(xy,
+                    (validate_points_2d(xy), insertion_order_2d(xy, options.order, options.seed))) {
     build_jump_grid(options);
 }
 
 void Delaunay2Core::build_jump_grid(const Delaunay2Options& options) {
-    const bool wanted = options.location == PointLocation::Grid ||
-                        (options.location == PointLocation::Auto &&
-                         options.order == InsertionOrder::Random);
+    const bool wanted =
+        options.location == PointLocation::Grid ||
+        (options.location == PointLocation::Auto && options.order == InsertionOrder::Random);
     const std::uint32_t n = mesh.vertex_count();
     if (!wanted || n < 64) return;
     double lo_x = mesh.xy[0], hi_x = lo_x, lo_y = mesh.xy[1], hi_y = lo_y;
@@ -125,8 +125,7 @@ Sign Delaunay2Core::incircle(VertIdx a, VertIdx b, VertIdx c, VertIdx d) {
     const Sign s = predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d));
     if (s != Sign::Zero) return s;
     return predicates::incircle_sos(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d),
-                                    input_index[a], input_index[b], input_index[c],
-                                    input_index[d]);
+                                    input_index[a], input_index[b], input_index[c], input_index[d]);
 }
 
 bool Delaunay2Core::same_point(VertIdx a, VertIdx b) const {
@@ -230,7 +229,7 @@ TriIdx Delaunay2Core::walk_to(VertIdx p) {
         for (int l = jump_.depth; l >= 0; --l) {
             const int shift = jump_.depth - l;
             const TriIdx candidate = jump_.triangle[jump_.level_offset[static_cast<unsigned>(l)] +
-                                                   ((iy >> shift) << l) + (ix >> shift)];
+                                                    ((iy >> shift) << l) + (ix >> shift)];
             if (candidate != kNone && !mesh.is_dead(candidate)) {
                 t = candidate;
                 break;
@@ -305,7 +304,8 @@ Delaunay2Result Delaunay2Core::collinear_result() {
     std::sort(by_point.begin(), by_point.end(), [this](VertIdx a, VertIdx b) {
         const double* p = mesh.point(a);
         const double* q = mesh.point(b);
-        return p[0] < q[0] || (p[0] == q[0] && (p[1] < q[1] || (p[1] == q[1] && input_index[a] < input_index[b])));
+        return p[0] < q[0] ||
+               (p[0] == q[0] && (p[1] < q[1] || (p[1] == q[1] && input_index[a] < input_index[b])));
     });
     for (std::size_t i = 1; i < by_point.size(); ++i) {
         if (same_point(by_point[i - 1], by_point[i])) {

@@ -17,7 +17,7 @@ namespace exactmesh::triangulation::detail {
 using predicates::Sign;
 
 class Delaunay2Core {
-public:
+  public:
     /// Validates the input, orders it (options.order) and copies it into mesh.xy.
     Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options);
     /// Same, with mesh vertex v holding the caller's point order[v] (a permutation).
@@ -62,7 +62,7 @@ public:
     /// Records that the triangle last_triangle was made by inserting p (for grid location).
     void note_inserted(VertIdx p);
 
-private:
+  private:
     /// Multi-level grid over the bounding box: for each cell of each level, a triangle made by
     /// the last insertion inside it. Levels 0..depth_, level l has 2^l x 2^l cells.
     struct JumpGrid {

@@ -54,7 +54,7 @@ class NodePool {
 /// grid-cell order and the front advances locally, so lookups stay in cache (a global hash
 /// table made every lookup a cache miss).
 class OpenEdges {
-public:
+  public:
     explicit OpenEdges(std::uint32_t vertex_count) : head_(vertex_count, kNone) {}
 
     void insert(VertIdx a, VertIdx b, EdgeIdx value) {
@@ -75,7 +75,7 @@ public:
         return false;
     }
 
-private:
+  private:
     struct Entry {
         VertIdx to;
         EdgeIdx value;
@@ -353,7 +353,7 @@ KdForest kd_forest(std::span<const double> xy, CellOrder& cells) {
 /// of a few rows, which stays in cache (a depth-first order wandered over the whole grid and
 /// missed the cache on most candidates). An edge closed before its turn is skipped then.
 class RowQueue {
-public:
+  public:
     explicit RowQueue(std::uint32_t rows) : head_(rows, kNone) {}
 
     void push(std::uint32_t row, VertIdx a, VertIdx b) {
@@ -372,7 +372,7 @@ public:
         return true;
     }
 
-private:
+  private:
     struct Node {
         VertIdx a, b;
         std::uint32_t next;
@@ -462,7 +462,7 @@ struct Circle {
 };
 
 class GiftWrapper {
-public:
+  public:
     GiftWrapper(detail::Delaunay2Core& core, const PointGrid& grid, const KdForest& forest)
         : core_(core), mesh_(core.mesh), grid_(grid), layout_(grid.layout), forest_(forest) {}
 
@@ -528,7 +528,7 @@ public:
         return best_;
     }
 
-private:
+  private:
     detail::Delaunay2Core& core_;
     TriMesh2& mesh_;
     const PointGrid& grid_;

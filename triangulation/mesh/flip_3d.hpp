@@ -31,7 +31,6 @@
 #include <span>
 #include <vector>
 
-#include "triangulation/mesh/tetrahedralization_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
 #include "triangulation/mesh/tetrahedralization_3d.hpp"
 

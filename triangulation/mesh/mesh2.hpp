@@ -33,14 +33,20 @@ inline constexpr VertIdx kInfinite = 0xFFFFFFFEu;
 /// Largest number of input points: 3 half-edges per triangle must fit in 32 bits.
 inline constexpr std::uint32_t kMaxPoints = 0x3FFFFFFFu;
 
-inline constexpr EdgeIdx next_edge(EdgeIdx e) { return e % 3 == 2 ? e - 2 : e + 1; }
-inline constexpr EdgeIdx prev_edge(EdgeIdx e) { return e % 3 == 0 ? e + 2 : e - 1; }
-inline constexpr TriIdx triangle_of(EdgeIdx e) { return e / 3; }
+inline constexpr EdgeIdx next_edge(EdgeIdx e) {
+    return e % 3 == 2 ? e - 2 : e + 1;
+}
+inline constexpr EdgeIdx prev_edge(EdgeIdx e) {
+    return e % 3 == 0 ? e + 2 : e - 1;
+}
+inline constexpr TriIdx triangle_of(EdgeIdx e) {
+    return e / 3;
+}
 
 struct TriMesh2 {
-    std::vector<double> xy;      ///< 2·#V coordinates, x0 y0 x1 y1 ...
-    std::vector<VertIdx> tv;     ///< 3·#T vertices, counter-clockwise; kNone for dead triangles
-    std::vector<EdgeIdx> twin;   ///< 3·#T opposite half-edges
+    std::vector<double> xy;     ///< 2·#V coordinates, x0 y0 x1 y1 ...
+    std::vector<VertIdx> tv;    ///< 3·#T vertices, counter-clockwise; kNone for dead triangles
+    std::vector<EdgeIdx> twin;  ///< 3·#T opposite half-edges
     std::vector<TriIdx> free_triangles;  ///< dead triangle slots to recycle
     /// 3·#T per half-edge marks (bit 0: constrained edge; both halves of an edge agree), or empty
     /// when no edge carries one; the flip kernel (flip_2d.hpp) keeps them through every edit.

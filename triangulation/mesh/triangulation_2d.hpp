@@ -24,10 +24,13 @@ struct Triangulation2 {
     std::vector<std::uint8_t> constrained;
 
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xy.size() / 2); }
-    std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(triangles.size() / 3); }
+    std::uint32_t triangle_count() const {
+        return static_cast<std::uint32_t>(triangles.size() / 3);
+    }
     const double* point(VertIdx v) const { return xy.data() + 2 * static_cast<std::size_t>(v); }
     bool is_constrained(TriIdx t, int k) const {
-        return !constrained.empty() && constrained[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(k)] != 0;
+        return !constrained.empty() &&
+               constrained[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(k)] != 0;
     }
 };
 

@@ -58,7 +58,8 @@ struct EdgeFaceSwapCounters {
     std::uint64_t flips() const { return flips_23 + flips_32 + flips_44 + flips_22; }
 };
 
-/// The name table of EdgeFaceSwapCounters (base/counter_table.hpp): --stats prints it in this order.
+/// The name table of EdgeFaceSwapCounters (base/counter_table.hpp): --stats prints it in this
+/// order.
 inline constexpr std::array kEdgeFaceSwapCounterNames =
     EM_COUNTER_TABLE(EdgeFaceSwapCounters, faces_examined, edges_examined, flips_23, flips_32,
                      flips_44, flips_22, not_flippable, stalled_faces);

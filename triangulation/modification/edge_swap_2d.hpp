@@ -63,10 +63,10 @@ SwapCriterion swap_criterion_from_name(std::string_view name);
 
 /// Work counters of one swapping run.
 struct EdgeSwapCounters {
-    std::uint64_t edges_tested = 0;   ///< edges popped from the queue and examined
-    std::uint64_t not_convex = 0;     ///< of those, skipped: quadrilateral not strictly convex
-    std::uint64_t constrained = 0;    ///< of those, skipped: constrained (or on the boundary)
-    std::uint64_t swaps = 0;          ///< edges swapped
+    std::uint64_t edges_tested = 0;  ///< edges popped from the queue and examined
+    std::uint64_t not_convex = 0;    ///< of those, skipped: quadrilateral not strictly convex
+    std::uint64_t constrained = 0;   ///< of those, skipped: constrained (or on the boundary)
+    std::uint64_t swaps = 0;         ///< edges swapped
 };
 
 /// The name table of EdgeSwapCounters (base/counter_table.hpp): --stats prints it in this order.

@@ -22,11 +22,11 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/mesh_2d/advancing_front_2d.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
-#include "generators/inputs/pslg_inputs.hpp"
-#include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "generators/inputs/pslg_inputs.hpp"
+#include "generators/mesh_2d/advancing_front_2d.hpp"
+#include "generators/mesh_2d/quality_2d.hpp"
 #include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"

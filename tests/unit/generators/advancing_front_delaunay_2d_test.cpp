@@ -21,11 +21,11 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "generators/boundary/sample_domains.hpp"
+#include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/advancing_front_delaunay_2d.hpp"
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
-#include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
-#include "generators/boundary/sample_domains.hpp"
 #include "predicates/incircle.hpp"
 #include "tests/support/degenerate_pslgs_2d.hpp"
 #include "tests/support/generated_mesh_2d.hpp"

@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
-#include "generators/inputs/pslg_inputs.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "generators/inputs/pslg_inputs.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "tests/support/degenerate_pslgs_2d.hpp"
 #include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"

@@ -21,9 +21,9 @@
 
 #include "base/errors.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
-#include "generators/mesh_2d/domain_mesh_2d.hpp"
-#include "generators/inputs/pslg_inputs.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "generators/inputs/pslg_inputs.hpp"
+#include "generators/mesh_2d/domain_mesh_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/checks/check_conforming_2d.hpp"

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/mesh_2d/laplacian_smoothing_2d.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
-#include "generators/boundary/sample_domains.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Tests of generators/boundary/mesh_domain_2d.hpp (issue 12): the domain's triangulation is built once,
-// lazily, equal to the one each step used to build for itself, and a generator run over it
+// Tests of generators/boundary/mesh_domain_2d.hpp (issue 12): the domain's triangulation is built
+// once, lazily, equal to the one each step used to build for itself, and a generator run over it
 // gives the mesh it gives on the PSLG.
 #include "generators/boundary/mesh_domain_2d.hpp"
 
@@ -12,9 +12,9 @@
 
 #include "base/errors.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
-#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/boundary/region_areas_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 

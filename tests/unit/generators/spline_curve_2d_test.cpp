@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "base/errors.hpp"
-#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/boundary/spline_curve_2d.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 
 namespace em = exactmesh;

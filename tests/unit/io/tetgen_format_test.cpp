@@ -12,8 +12,8 @@
 #include "io/format_error.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/tetgen_format.hpp"
-#include "triangulation/mesh/mesh3.hpp"
 #include "io/vtk_format.hpp"
+#include "triangulation/mesh/mesh3.hpp"
 
 namespace io = exactmesh::io;
 

@@ -53,10 +53,10 @@
 #include <vector>
 
 #include "predicates/incircle.hpp"
+#include "tests/support/test_scale.hpp"
 #include "triangulation/checks/check_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
-#include "tests/support/test_scale.hpp"
 
 namespace tri = exactmesh::triangulation;
 namespace fs = std::filesystem;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The naive empty-circle oracle (triangulation/delaunay/delaunay_2d_naive.hpp) that `exactmesh fuzz`
-// ships: it agrees with all three Delaunay algorithms on small random and cocircular sets, and
-// it names the disagreement when a triangulation is not Delaunay (one edge flipped), has a
+// The naive empty-circle oracle (triangulation/delaunay/delaunay_2d_naive.hpp) that `exactmesh
+// fuzz` ships: it agrees with all three Delaunay algorithms on small random and cocircular sets,
+// and it names the disagreement when a triangulation is not Delaunay (one edge flipped), has a
 // wrong count, or a clockwise triangle.
 #include <gtest/gtest.h>
 

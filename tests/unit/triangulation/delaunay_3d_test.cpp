@@ -21,8 +21,8 @@
 #include "predicates/orient3d.hpp"
 #include "predicates/sos.hpp"
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
-#include "triangulation/delaunay/bowyer_watson_3d.hpp"
 #include "triangulation/checks/check_3d.hpp"
+#include "triangulation/delaunay/bowyer_watson_3d.hpp"
 #include "triangulation/delaunay/green_sibson_3d.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 

@@ -22,8 +22,8 @@
 #include "tests/support/constrained_sides_2d.hpp"
 #include "tests/support/integer_points_2d.hpp"
 #include "tests/support/test_scale.hpp"
-#include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/checks/check_2d.hpp"
+#include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/modification/edge_cutting_2d.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
 

@@ -19,8 +19,8 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
 #include "triangulation/delaunay/bowyer_watson_2d.hpp"
-#include "triangulation/modification/edge_swap_2d.hpp"
 #include "triangulation/mesh/flip_2d.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
 
 namespace em = exactmesh;
 namespace tri = exactmesh::triangulation;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Unit tests of the 3D local rewrites (triangulation/mesh/flip_3d.*): each split and flip of TetStar3
-// (1-4, 2-6, n-2n; 2-3, 3-2, 4-4 from a vertex), each planned flip (2-3, 3-2, 4-4, 2-2) and
-// replace_tets, on small hand-made domains. After each: every tetrahedron positive (exact
+// Unit tests of the 3D local rewrites (triangulation/mesh/flip_3d.*): each split and flip of
+// TetStar3 (1-4, 2-6, n-2n; 2-3, 3-2, 4-4 from a vertex), each planned flip (2-3, 3-2, 4-4, 2-2)
+// and replace_tets, on small hand-made domains. After each: every tetrahedron positive (exact
 // orient3d), adjacency symmetric across the same face, check_topology_3d valid, vertex_tet
 // pointing at live holders, and the union of the tetrahedra unchanged (the same boundary faces,
 // and random probe points covered by as many tetrahedra as before).
