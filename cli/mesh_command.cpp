@@ -163,7 +163,7 @@ void run_mesh(const MeshArguments& arguments) {
     } else {
         poly = io::read_poly(arguments.input);
         title = fs::path(arguments.input).filename().string();
-        if (!generator.region_areas) {
+        if (!generator.honours.contains(gen::MeshOption::RegionAreas)) {
             // A generator that carries no regions would silently ignore the areas: refused, so
             // that a mesh never looks as if it had honoured them.
             for (std::size_t r = 0; r < poly.regions.size() / 4; ++r) {

@@ -205,8 +205,6 @@ MeshRun2 run_delaunay_refinement(const MeshDomain2& domain, const MeshOptions2& 
 }
 
 MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& options) {
-    const tri::Pslg& pslg = domain.pslg();
-    refuse_region_areas(pslg, options, "quadtree");
     check_size_budget(domain, options, true);
     QuadtreeOptions2 quadtree;
     quadtree.size = options.size;
@@ -218,8 +216,6 @@ MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& options) {
 }
 
 MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& options) {
-    const tri::Pslg& pslg = domain.pslg();
-    refuse_region_areas(pslg, options, "advancing-front");
     check_size_budget(domain, options, false);
     AdvancingFrontOptions2 front;
     front.size = options.size;
@@ -237,8 +233,6 @@ MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& opti
 }
 
 MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
-    const tri::Pslg& pslg = domain.pslg();
-    refuse_region_areas(pslg, options, "advancing-front-delaunay");
     check_size_budget(domain, options, false);
     AdvancingFrontDelaunayOptions2 front;
     front.size = options.size;
@@ -271,7 +265,6 @@ constexpr std::array kGenerators{
         "split first; guaranteed minimum angle",
         true,
         false,
-        true,
         {MeshOption::Size, MeshOption::MinAngle, MeshOption::PolishAngle,
          MeshOption::MaxSteinerPoints, MeshOption::RegionAttributes, MeshOption::RegionAreas},
         &run_delaunay_refinement},
@@ -280,7 +273,6 @@ constexpr std::array kGenerators{
                    "the band along the boundary by a refined constrained Delaunay triangulation",
                    false,
                    true,
-                   false,
                    {MeshOption::Size, MeshOption::MaxSteinerPoints},
                    &run_quadtree},
     MeshGenerator2{"advancing-front",
@@ -288,7 +280,6 @@ constexpr std::array kGenerators{
                    "size or a nearby front vertex, exact acceptance tests; needs a size",
                    false,
                    true,
-                   false,
                    {MeshOption::Size, MeshOption::MaxSteinerPoints},
                    &run_advancing_front},
     MeshGenerator2{"advancing-front-delaunay",
@@ -296,13 +287,11 @@ constexpr std::array kGenerators{
                    "Tanemura-Merriam (Delaunay) choice among nearby front points; needs a size",
                    false,
                    true,
-                   false,
                    {MeshOption::Size, MeshOption::MaxSteinerPoints},
                    &run_advancing_front_delaunay},
     MeshGenerator2{"frontal",
                    "Rebay: points placed from the boundary inwards on the front edges' "
                    "bisectors, inserted by Bowyer-Watson; needs a size",
-                   true,
                    true,
                    true,
                    {MeshOption::Size, MeshOption::MaxSteinerPoints, MeshOption::RegionAttributes,
@@ -323,6 +312,13 @@ constexpr std::array<EnumName<MeshOption>, 6> kMeshOptionNames{{
 
 std::string_view mesh_option_name(MeshOption option) {
     return name_of(kMeshOptionNames, option, "an option");
+}
+
+MeshRun2 MeshGenerator2::run_on_domain(const MeshDomain2& domain,
+                                       const MeshOptions2& options) const {
+    if (!honours.contains(MeshOption::RegionAreas))
+        refuse_region_areas(domain.pslg(), options, name);
+    return generate(domain, options);
 }
 
 std::span<const MeshGenerator2> mesh_generators_2d() {

@@ -73,14 +73,16 @@ struct MeshGenerator2 {
     std::string_view summary;  ///< one line for --help
     bool delaunay;             ///< meshes are constrained Delaunay (else only conforming)
     bool needs_size;           ///< an unbounded size is an InputError
-    /// Honours regional maximum areas (the 4th number of a region, > 0); the others raise
-    /// InputError on a PSLG with one (they carry no regions).
-    bool region_areas;
-    /// The options it honours; it ignores the others.
+    /// The options it honours; it ignores the others. One that does not honour RegionAreas
+    /// raises InputError on a PSLG with a regional maximum area (it carries no regions).
     MeshOptionSet honours;
+    /// The generator itself, over the domain (run_on_domain refuses what it cannot honour first).
+    MeshRun2 (*generate)(const MeshDomain2& domain, const MeshOptions2& options);
+
     /// Runs it over the domain built once (the same object for the caller's other steps: the
     /// graded default size, graded_size_from_boundary(domain)).
-    MeshRun2 (*run_on_domain)(const MeshDomain2& domain, const MeshOptions2& options);
+    /// @throws InputError on a regional maximum area it does not honour, and as `generate`.
+    MeshRun2 run_on_domain(const MeshDomain2& domain, const MeshOptions2& options) const;
 
     /// Runs it on a PSLG, the domain built inside (for one-off callers: tests, benchmarks).
     MeshRun2 run(const triangulation::Pslg& pslg, const MeshOptions2& options) const {

@@ -228,7 +228,7 @@ TEST(Regression, issue_11_region_areas_refused_where_not_honoured) {
     for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) {
         const std::string error = input_error(g, in.pslg(), options);
         SCOPED_TRACE(std::string(g.name));
-        if (g.region_areas) {
+        if (g.honours.contains(gen::MeshOption::RegionAreas)) {
             EXPECT_EQ(error, "");
         } else {
             EXPECT_TRUE(contains(error,

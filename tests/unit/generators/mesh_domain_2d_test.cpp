@@ -118,8 +118,6 @@ TEST(MeshDomain2, HonouredOptions) {
     for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) {
         EXPECT_TRUE(g.honours.contains(gen::MeshOption::Size)) << g.name;
         EXPECT_TRUE(g.honours.contains(gen::MeshOption::MaxSteinerPoints)) << g.name;
-        // The registry's older flag and the set agree.
-        EXPECT_EQ(g.region_areas, g.honours.contains(gen::MeshOption::RegionAreas)) << g.name;
     }
     EXPECT_EQ(gen::mesh_option_name(gen::MeshOption::MinAngle), "--min-angle");
 }
