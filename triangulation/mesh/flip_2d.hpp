@@ -36,9 +36,10 @@
 namespace exactmesh::triangulation {
 
 /// Whether the mesh may have half-edges without a twin. Closed: closed by the infinite vertex,
-/// every twin exists (the Delaunay and constrained builders); the kernel then writes outer twins
-/// without a test, which Green-Sibson's hot loop measures. Open: boundary half-edges have twin
-/// kNone (a HalfEdgeEdit of a Triangulation2), the safe default.
+/// every twin exists, and no flags (the Delaunay and constrained builders, which keep their
+/// constraints in arrays of their own); the kernel then writes outer twins without a test and
+/// never looks at flags, which Green-Sibson's hot loop measures. Open: boundary half-edges have
+/// twin kNone and flags may be set (a HalfEdgeEdit of a Triangulation2), the safe default.
 enum class MeshBoundary { Open, Closed };
 
 /// The triangles a split made, counter-clockwise around the new vertex p, each with p at local
@@ -59,6 +60,11 @@ struct FlipEdges {
 };
 
 namespace flip_detail {
+
+/// Whether the kernel keeps flags: a Closed mesh has none (a compile-time false for its callers).
+inline bool keeps_flags(const TriMesh2& mesh, MeshBoundary boundary) {
+    return boundary == MeshBoundary::Open && !mesh.flags.empty();
+}
 
 /// e faces the surviving half-edge `outer` (kNone on the boundary of an open mesh).
 inline void link_side(TriMesh2& mesh, EdgeIdx e, EdgeIdx outer, MeshBoundary boundary) {
@@ -90,7 +96,7 @@ inline void write_fan(TriMesh2& mesh, VertIdx p, const SplitTriangles& made, con
         mesh.twin[3 * made.triangles[0]] = kNone;
         mesh.twin[3 * made.triangles[n - 1] + 2] = kNone;
     }
-    if (!mesh.flags.empty()) {
+    if (keeps_flags(mesh, boundary)) {
         for (unsigned i = 0; i < n; ++i) {
             const TriIdx t = made.triangles[i];
             mesh.flags[3 * t] = 0;
@@ -109,7 +115,7 @@ inline SplitTriangles split_triangle_2d(TriMesh2& mesh, TriIdx t, VertIdx p,
     const VertIdx rim[4] = {mesh.tv[3 * t], mesh.tv[3 * t + 1], mesh.tv[3 * t + 2], mesh.tv[3 * t]};
     const EdgeIdx outer[3] = {mesh.twin[3 * t], mesh.twin[3 * t + 1], mesh.twin[3 * t + 2]};
     std::uint8_t side_flags[3] = {0, 0, 0};
-    if (!mesh.flags.empty()) {
+    if (flip_detail::keeps_flags(mesh, boundary)) {
         for (unsigned k = 0; k < 3; ++k) side_flags[k] = mesh.flags[3 * t + k];
     }
     SplitTriangles made;
@@ -137,7 +143,7 @@ inline SplitTriangles split_edge_2d(TriMesh2& mesh, EdgeIdx e, VertIdx p,
     const EdgeIdx outer[4] = {mesh.twin[next_edge(e)], mesh.twin[prev_edge(e)],
                               open ? kNone : mesh.twin[next_edge(f)],
                               open ? kNone : mesh.twin[prev_edge(f)]};
-    const bool flagged = !mesh.flags.empty();
+    const bool flagged = flip_detail::keeps_flags(mesh, boundary);
     std::uint8_t side_flags[4] = {0, 0, 0, 0};
     std::uint8_t split = 0;
     if (flagged) {
@@ -188,7 +194,7 @@ inline FlipEdges flip_2d(TriMesh2& mesh, EdgeIdx e, unsigned k1, unsigned k2,
     const VertIdx x = mesh.tv[prev_edge(e)], y = mesh.tv[prev_edge(f)];
     const EdgeIdx vx = mesh.twin[next_edge(e)], xu = mesh.twin[prev_edge(e)];
     const EdgeIdx uy = mesh.twin[next_edge(f)], yv = mesh.twin[prev_edge(f)];
-    const bool flagged = !mesh.flags.empty();
+    const bool flagged = flip_detail::keeps_flags(mesh, boundary);
     std::uint8_t fvx = 0, fxu = 0, fuy = 0, fyv = 0;
     if (flagged) {
         fvx = mesh.flags[next_edge(e)];
