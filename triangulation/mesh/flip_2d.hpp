@@ -210,7 +210,7 @@ inline FlipEdges flip_2d(TriMesh2& mesh, EdgeIdx e, unsigned k1, unsigned k2,
     mesh.tv[d2] = x;
     mesh.tv[y_v] = y;
     mesh.tv[v_x] = v;
-    link_side(mesh, x_u, xu, boundary);
+    if (x_u != prev_edge(e)) link_side(mesh, x_u, xu, boundary);  // else x -> u kept its slot
     link_side(mesh, u_y, uy, boundary);
     link_side(mesh, y_v, yv, boundary);
     link_side(mesh, v_x, vx, boundary);
