@@ -99,7 +99,6 @@ void Delaunay2Core::note_inserted(VertIdx p) {
 }
 
 Delaunay2Core::Delaunay2Core(std::span<const double> xy, std::vector<VertIdx> order) {
-    validate_points_2d(xy);
     const std::uint32_t n = static_cast<std::uint32_t>(xy.size() / 2);
     input_index = std::move(order);
     mesh.xy.resize(xy.size());

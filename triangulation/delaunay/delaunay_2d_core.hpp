@@ -21,6 +21,7 @@ class Delaunay2Core {
     /// Validates the input, orders it (options.order) and copies it into mesh.xy.
     Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options);
     /// Same, with mesh vertex v holding the caller's point order[v] (a permutation).
+    /// @pre xy validated (validate_points_2d): the order was computed from it.
     Delaunay2Core(std::span<const double> xy, std::vector<VertIdx> order);
 
     TriMesh2 mesh;
