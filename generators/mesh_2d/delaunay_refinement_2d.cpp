@@ -505,16 +505,22 @@ Refiner::SplitPoint Refiner::split_point(EdgeIdx e) const {
     const VertIdx a = mesh_.origin(e), b = mesh_.destination(e);
     const std::uint32_t segment = cdt_.segment_of(e);
     // Parameters along the input segment s0 -> s1 (long double): every split point is computed
-    // from the segment itself, so rounding never accumulates along it.
+    // from the segment itself, so rounding never accumulates along it. The products are taken
+    // on differences scaled by 2^shift, shift minus the exponent of the segment's larger
+    // difference (exact: the same bits as unscaled wherever those neither overflow nor
+    // underflow), so that no square leaves the range even where long double is double (MSVC,
+    // Apple arm64).
     const auto ends = cdt_.segment_ends(segment);
     const double* s0 = point(ends[0]);
     const double* s1 = point(ends[1]);
-    const long double dx = static_cast<long double>(s1[0]) - s0[0],
-                      dy = static_cast<long double>(s1[1]) - s0[1];
-    const long double length2 = dx * dx + dy * dy;
+    const long double dx0 = static_cast<long double>(s1[0]) - s0[0],
+                      dy0 = static_cast<long double>(s1[1]) - s0[1];
+    const int shift = -std::ilogb(std::max(std::fabs(dx0), std::fabs(dy0)));
+    const long double dx = std::ldexp(dx0, shift), dy = std::ldexp(dy0, shift);
+    const long double length2 = dx * dx + dy * dy;  // in [1, 8)
     auto parameter = [&](VertIdx v) {
-        return ((static_cast<long double>(point(v)[0]) - s0[0]) * dx +
-                (static_cast<long double>(point(v)[1]) - s0[1]) * dy) /
+        return (std::ldexp(static_cast<long double>(point(v)[0]) - s0[0], shift) * dx +
+                std::ldexp(static_cast<long double>(point(v)[1]) - s0[1], shift) * dy) /
                length2;
     };
     auto corner = [&](VertIdx v) { return v < initial_vertices_ && degree_[v] >= 2; };
@@ -525,7 +531,8 @@ Refiner::SplitPoint Refiner::split_point(EdgeIdx e) const {
         // Concentric shells: the power of two nearest half the piece's length, from the apex.
         split.apex = corner(a) ? a : b;
         const long double t_apex = split.apex == a ? ta : tb, t_far = split.apex == a ? tb : ta;
-        const long double length = std::fabs(t_far - t_apex) * std::sqrt(length2);
+        const long double length =
+            std::ldexp(std::fabs(t_far - t_apex) * std::sqrt(length2), -shift);
         // Nearest in the geometric sense (log2 rounded), decided exactly on the mantissa m in
         // [1/2, 1) (frexp): 2^(e - 1) when m < 1/sqrt(2), that is when m^2 - 1/2 < 0 (one fma,
         // whose rounding keeps the sign), else 2^e. So the shell moves by exactly k when the
@@ -534,11 +541,11 @@ Refiner::SplitPoint Refiner::split_point(EdgeIdx e) const {
         int exponent = 0;
         const double mantissa = std::frexp(static_cast<double>(length / 2), &exponent);
         split.shell = std::fma(mantissa, mantissa, -0.5) < 0 ? exponent - 1 : exponent;
-        const long double distance = std::ldexp(1.0L, split.shell);
+        const long double distance = std::ldexp(1.0L, split.shell + shift);  // in the scaled units
         t = t_apex + (t_far > t_apex ? 1 : -1) * distance / std::sqrt(length2);
     }
-    split.x = static_cast<double>(s0[0] + t * dx);
-    split.y = static_cast<double>(s0[1] + t * dy);
+    split.x = static_cast<double>(s0[0] + t * dx0);
+    split.y = static_cast<double>(s0[1] + t * dy0);
     return split;
 }
 
