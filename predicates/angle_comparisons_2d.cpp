@@ -9,8 +9,10 @@
 // filter_constants.hpp are the least powers of two for which Gappa proves |prod (1 + d) - 1| <=
 // eps prod (1 + e) at these rounding counts (proofs/invariants/filters.md, "Relative filters"):
 //  - Angles: E = dot_b cross_a - dot_a cross_b; 10 roundings per monomial (4 differences, a
-//    product and a sum inside dot or cross, the product dot * cross, the final difference), 8 in
-//    the permanent: compare_angles_filter_eps = 2^-49 (proofs/gappa/compare_angles_filter.g).
+//    product and a sum inside dot or cross, the product dot * cross, the final difference), 10
+//    in the permanent (the same differences, a product and a sum inside |dot| or |cross|, the
+//    outer product and sum): compare_angles_filter_eps = 2^-49
+//    (proofs/gappa/compare_angles_filter.g).
 //  - Lengths: E = |p1 - q1|^2 - |p2 - q2|^2; 5 and 5: compare_lengths_filter_eps = 2^-50
 //    (proofs/gappa/compare_lengths_filter.g).
 //  - Dot products: E = (p - o) . (q - o); 4 and 4 (two differences, the product, the sum):

@@ -57,22 +57,16 @@ function(parse_hexfloat literal out_significand out_exponent)
   set(${out_exponent} ${exponent} PARENT_SCOPE)
 endfunction()
 
-# Writes the script with its placeholders filled in and runs Gappa on it.
+# Runs the script with its goal |det - Det| <= @EPS@ replaced by `goal_text` and its placeholders
+# filled in, through gappa_run (which also fails on a rewriting hint that is not an identity).
 function(run_gappa eps_text goal_text out_rc out_log)
   file(READ "${script}" text)
   string(REPLACE "|det - Det| <= @EPS@" "${goal_text}" text "${text}")
-  string(REPLACE "@EPS@" "${eps_text}" text "${text}")
-  string(REPLACE "@UNDERFLOW@" "${underflow}" text "${text}")
-  string(REPLACE "@OVERFLOW@" "${overflow}" text "${text}")
-  if(text MATCHES "@[A-Z_]+@")
-    message(FATAL_ERROR "${script}: unknown placeholder ${CMAKE_MATCH_0}")
-  endif()
-  set(instance "${OUT_DIR}/${PRED}_filter.instance.g")
-  file(WRITE "${instance}" "${text}")
-  execute_process(COMMAND "${GAPPA}" "${instance}"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(goal_script "${OUT_DIR}/${PRED}_filter.g")
+  file(WRITE "${goal_script}" "${text}")
+  gappa_run("${goal_script}" "EPS=${eps_text};UNDERFLOW=${underflow};OVERFLOW=${overflow}" rc log)
   set(${out_rc} ${rc} PARENT_SCOPE)
-  set(${out_log} "${instance}:\n${err}${out}" PARENT_SCOPE)
+  set(${out_log} "${log}" PARENT_SCOPE)
 endfunction()
 
 gappa_read_constant("${header}" ${PRED}_filter_eps "([0-9a-zA-Z.+-]+)" eps_literal)

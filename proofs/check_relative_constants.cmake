@@ -3,8 +3,9 @@
 # proofs/gappa/<name>.g; the model is written up in proofs/invariants/filters.md ("Relative
 # filters").
 #
-#   cmake -DNAME=<proof name> -DCONSTANT=<constant> [-DMINIMALITY_NAME=<script>] [-DGAPPA=<gappa>]
-#         [-DOUT_DIR=<dir>] -P proofs/check_relative_constants.cmake
+#   cmake -DNAME=<proof name> -DCONSTANT=<constant> [-DMINIMALITY_NAME=<script>]
+#         [-DMAX_ROUNDINGS=<constant>] [-DGAPPA=<gappa>] [-DOUT_DIR=<dir>]
+#         -P proofs/check_relative_constants.cmake
 #
 # 1. reads CONSTANT from the header (the single source of truth); it must be a power of two
 #    0x1p±e (so that multiplying a bound by it is exact);
@@ -12,6 +13,9 @@
 # 3. substitutes half of it and requires Gappa to fail, so the header holds the least power of
 #    two this model certifies, not merely some larger proven value (on MINIMALITY_NAME.g when
 #    given: a subset of the goals on which Gappa fails fast).
+# 4. with MAX_ROUNDINGS (a filter that counts its roundings k, u = 2^-64, and abstains above the
+#    header's `inline constexpr int <MAX_ROUNDINGS> = n;`): requires the script to state both
+#    goals of every k = 1..n, so that a larger n in the header without a proof of it fails.
 cmake_minimum_required(VERSION 3.25)
 
 include("${CMAKE_CURRENT_LIST_DIR}/gappa_common.cmake")
@@ -38,5 +42,24 @@ if(rc EQUAL 0)
 endif()
 if(NOT log MATCHES "some properties were not satisfied")
   message(FATAL_ERROR "Gappa failed unexpectedly on 2^${half}:\n${log}")
+endif()
+if(DEFINED MAX_ROUNDINGS)
+  file(STRINGS "${header}" lines REGEX "inline constexpr int ${MAX_ROUNDINGS} = [0-9]+;")
+  list(LENGTH lines count)
+  if(NOT count EQUAL 1 OR NOT lines MATCHES "${MAX_ROUNDINGS} = ([0-9]+)")
+    message(FATAL_ERROR "${header}: expected one definition `inline constexpr int "
+                        "${MAX_ROUNDINGS} = <n>;`, found ${count}")
+  endif()
+  set(max_roundings ${CMAKE_MATCH_1})
+  file(READ "${script}" text)
+  foreach(k RANGE 1 ${max_roundings})
+    math(EXPR kb "${k} + 1")
+    string(FIND "${text}" "value${k} - 1 - @EPS@ * ${kb} * 1b-64 * bound${kb} <= 0" above)
+    string(FIND "${text}" "1 - value${k} - @EPS@ * ${kb} * 1b-64 * bound${kb} <= 0" below)
+    if(above EQUAL -1 OR below EQUAL -1)
+      message(FATAL_ERROR "${MAX_ROUNDINGS} = ${max_roundings} but ${script} proves no goal for "
+                          "k = ${k} roundings")
+    endif()
+  endforeach()
 endif()
 message(STATUS "${CONSTANT} = 2^${exponent} is the least power of two proven by ${script}")

@@ -43,6 +43,9 @@ function(expect_least which name)
     message(FATAL_ERROR "${name} = 2^${${which}} is not the least: 2^${try_${which}} is proven "
                         "too (${script}). Put the least one into ${header}.")
   endif()
+  if(NOT log MATCHES "some properties were not satisfied")
+    message(FATAL_ERROR "Gappa failed unexpectedly on ${name} = 2^${try_${which}}:\n${log}")
+  endif()
 endfunction()
 
 expect_least(product triangle_area_filter_eps)
