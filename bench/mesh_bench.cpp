@@ -68,6 +68,7 @@
 
 #include "bench/bench_support.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
@@ -570,8 +571,11 @@ void BM_mesh_near_circle(benchmark::State& state, const gen::MeshGenerator2* gen
     gen::MeshOptions2 options;
     gen::MeshRun2 run;
     for (auto _ : state) {
-        if (generator->needs_size) options.size = gen::graded_size_from_boundary(pslg);
-        run = generator->run(pslg, options);
+        // One domain triangulation for the default size and the generator, as the command
+        // builds it (cli/mesh_command.cpp), not one for each.
+        const gen::MeshDomain2 domain(pslg, options.cdt);
+        if (generator->needs_size) options.size = gen::graded_size_from_boundary(domain);
+        run = generator->run_on_domain(domain, options);
     }
     report_quality(state, run.mesh.mesh.xy, run.mesh.mesh.triangles, options.size);
 }

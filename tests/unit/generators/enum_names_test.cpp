@@ -12,6 +12,7 @@
 
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "tests/support/error_message.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 #include "triangulation/modification/edge_face_swap_3d.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
@@ -32,12 +33,7 @@ constexpr std::array<exactmesh::EnumName<Colour>, 3> kColours{{
 /// Expects `parse` to throw an InputError saying exactly `message`.
 template <class Parse>
 void expect_input_error(Parse parse, std::string_view message) {
-    try {
-        parse();
-        ADD_FAILURE() << "no InputError; expected: " << message;
-    } catch (const exactmesh::InputError& e) {
-        EXPECT_EQ(e.what(), message);
-    }
+    EXPECT_EQ(exactmesh::testing::error_message<exactmesh::InputError>(parse), message);
 }
 
 }  // namespace

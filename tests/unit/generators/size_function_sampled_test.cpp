@@ -8,23 +8,22 @@
 
 #include "base/errors.hpp"
 #include "generators/sizing/size_function.hpp"
+#include "tests/support/error_message.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;
 
 namespace {
 
+/// The InputError's message ("" when none is thrown).
 std::string message_of_unbounded(bool quadtree) {
-    try {
+    return em::testing::error_message<em::InputError>([&] {
         if (quadtree) {
             gen::SizeFunction::quadtree(gen::SizeFunction(), {0, 0, 1, 1});
         } else {
             gen::SizeFunction::smoothed(gen::SizeFunction(), {0, 0, 1, 1});
         }
-    } catch (const em::InputError& e) {
-        return e.what();
-    }
-    return "no InputError";
+    });
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include "generators/sizing/size_quadtree_2d.hpp"
 #include "generators/sizing/size_smoothing_2d.hpp"
 #include "predicates/orient2d.hpp"
+#include "tests/support/error_message.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;
@@ -141,13 +142,9 @@ double linear(double x, double y) {
     return 0.5 + 0.3 * x - 0.2 * y;
 }
 
+/// The message of the exactmesh error `f` throws ("" when it throws none).
 std::string error_text(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const em::Error& error) {
-        return error.what();
-    }
-    return "no error";
+    return em::testing::error_message<em::Error>(f);
 }
 
 }  // namespace

@@ -99,7 +99,6 @@ void exercise_all_stages() {
 [[maybe_unused]] void exercise_comparisons() {
     std::mt19937_64 rng(8);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    const double spans[4] = {1.0, 0.0, 0x1p-600, 0.0};
     for (int n = 0; n < 400; ++n) {
         double p[8][3];
         for (auto& q : p) {
@@ -112,7 +111,7 @@ void exercise_all_stages() {
             }
         } else if (kind == 2) {
             for (auto& q : p) {
-                for (double& x : q) x *= spans[2];
+                for (double& x : q) x *= 0x1p-600;
             }
         } else if (kind == 3) {
             p[0][0] = 1e300;

@@ -18,6 +18,7 @@
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
+#include "tests/support/canonical_triangles_2d.hpp"
 #include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/mesh/flip_2d.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
@@ -28,18 +29,9 @@ using em::predicates::Sign;
 
 namespace {
 
-using Triangles = std::set<std::array<tri::VertIdx, 3>>;
-
-Triangles canonical(std::span<const tri::VertIdx> triangles) {
-    Triangles s;
-    for (std::size_t t = 0; t < triangles.size(); t += 3) {
-        if (triangles[t] == tri::kNone) continue;
-        std::array<tri::VertIdx, 3> a{triangles[t], triangles[t + 1], triangles[t + 2]};
-        std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-        s.insert(a);
-    }
-    return s;
-}
+using Triangles = exactmesh::testing::CanonicalTriangles;
+// The kernel's primitives reuse or append slots and never leave one dead, so every slot counts.
+constexpr auto canonical = exactmesh::testing::canonical_triangles;
 
 /// Every live triangle strictly counter-clockwise; twins mutual, on the same edge reversed,
 /// with equal flags; kNone twins only where allowed (a mesh without the infinite vertex).

@@ -214,6 +214,7 @@ TEST(Triangulation_Flip3, Split26OnTheSharedFace) {
     ASSERT_NE(mesh.adj[k], kNone);
     tri::TetStar3 star;
     expect_rewrite(mesh, 6, [&] { star.split_2_6(mesh, 0, k, 5); });
+    ASSERT_EQ(star.created.size(), 6u);
     for (const TetIdx t : star.created) EXPECT_TRUE(holds(mesh, t, 5));
     EXPECT_EQ(tri::vertex_star(mesh, 5).size(), 6u);
 }
@@ -242,6 +243,7 @@ TEST(Triangulation_Flip3, SplitEdgeMakesTwiceTheRing) {
             star.split_edge(mesh, t, mesh.slot_of(t, 0), mesh.slot_of(t, 1), p);
         });
         EXPECT_EQ(star.ring().size(), n);
+        ASSERT_EQ(star.created.size(), 2 * n);
         for (const TetIdx u : star.created) EXPECT_TRUE(holds(mesh, u, p));
     }
 }
@@ -256,6 +258,7 @@ TEST(Triangulation_Flip3, Star23FromAVertexMakesTheEdge) {
     const unsigned k = mesh.slot_of(0, 0);
     tri::TetStar3 star;
     expect_rewrite(mesh, 3, [&] { star.flip_2_3(mesh, 0, k); });
+    ASSERT_EQ(star.created.size(), 3u);
     for (const TetIdx t : star.created) {
         EXPECT_TRUE(holds(mesh, t, 0));
         EXPECT_TRUE(holds(mesh, t, 4));  // the new edge de
@@ -272,6 +275,7 @@ TEST(Triangulation_Flip3, Planned23AgreesWithTheStar) {
     EXPECT_EQ(plan.made_count, 3u);
     std::vector<TetIdx> created;
     expect_rewrite(planned, 3, [&] { tri::apply_flip_3d(planned, plan, created); });
+    EXPECT_EQ(created.size(), 3u);
     // The same tetrahedra (as vertex sets) as the star from d.
     tri::TetMesh3 starred = two_three_mesh();
     tri::TetStar3 star;
@@ -303,6 +307,7 @@ TEST(Triangulation_Flip3, Star32RemovesTheEdge) {
     tri::TetStar3 star;
     expect_rewrite(mesh, 2,
                    [&] { star.flip_3_2(mesh, t, mesh.slot_of(t, 3), mesh.slot_of(t, 2)); });
+    ASSERT_EQ(star.created.size(), 2u);
     for (const TetIdx u : star.created) {
         EXPECT_FALSE(holds(mesh, u, 0) && holds(mesh, u, 1)) << "edge xy survived";
     }
@@ -342,6 +347,7 @@ TEST(Triangulation_Flip3, Star44TurnsTheFlatEdge) {
     tri::TetStar3 star;
     expect_rewrite(mesh, 4,
                    [&] { star.flip_4_4(mesh, t, mesh.slot_of(t, 2), mesh.slot_of(t, 4)); });
+    ASSERT_EQ(star.created.size(), 4u);
     for (const TetIdx u : star.created) {
         EXPECT_TRUE(holds(mesh, u, 2) && holds(mesh, u, 3)) << "every new tetrahedron holds de";
     }
@@ -361,6 +367,7 @@ TEST(Triangulation_Flip3, Planned44And22TurnTheFlatEdge) {
         // the union does not.
         expect_rewrite(
             mesh, half ? 2 : 4, [&] { tri::apply_flip_3d(mesh, plan, created); }, !half);
+        ASSERT_EQ(created.size(), half ? 2u : 4u);
         for (const TetIdx u : created) EXPECT_TRUE(holds(mesh, u, 2) && holds(mesh, u, 3));
     }
 }
