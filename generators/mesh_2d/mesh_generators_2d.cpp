@@ -120,10 +120,6 @@ double minimum_triangle_count(const tri::Triangulation2& domain, const SizeFunct
     return sampler.total();
 }
 
-void check_size_budget(const tri::Pslg& pslg, const MeshOptions2& options, bool hard_budget) {
-    check_size_budget(MeshDomain2(pslg, options.cdt), options, hard_budget);
-}
-
 void check_size_budget(const MeshDomain2& domain_of, const MeshOptions2& options,
                        bool hard_budget) {
     const tri::Pslg& pslg = domain_of.pslg();
