@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <optional>
 #include <string>
 
 #include "base/enum_names.hpp"
@@ -125,19 +124,12 @@ void check_size_budget(const MeshDomain2& domain_of, const MeshOptions2& options
     const tri::Pslg& pslg = domain_of.pslg();
     const bool areas = has_region_areas(pslg.regions);
     if (!options.size.bounded() && !areas) return;
-    // With regional maximum areas, the regions are numbered so that each triangle names its own
-    // (as MeshDomain2 numbers them). The estimate has always taken the caller's recovery: a
-    // conforming one (not the domain's) is built here.
-    std::optional<tri::Cdt2Result> conforming;
-    if (options.cdt.recovery == tri::SegmentRecovery::Conforming) {
-        tri::Cdt2Options cdt = options.cdt;
-        cdt.remove_exterior = true;
-        const std::vector<double> numbered =
-            areas ? numbered_regions(pslg.regions) : std::vector<double>{};
-        conforming = tri::constrained_delaunay_2d(
-            areas ? tri::Pslg{pslg.xy, pslg.segments, pslg.holes, numbered} : pslg, cdt);
-    }
-    const tri::Cdt2Result& domain = conforming ? *conforming : domain_of.triangulation();
+    // The domain built once, its triangles numbered by region when some region has an area
+    // (MeshDomain2). Under Conforming recovery it is the Swap triangulation of the same region:
+    // the estimate integrates over the region, so it needs no conforming triangulation of its
+    // own (one used to be built here, a second CDT of the input, which could also fail where
+    // the domain does not).
+    const tri::Cdt2Result& domain = domain_of.triangulation();
     const double inputs = static_cast<double>(pslg.xy.size() / 2);
     const bool given = hard_budget && options.max_steiner_points != 0;
     // A triangulation of V vertices has fewer than 2V triangles.

@@ -15,6 +15,7 @@
 #include "generators/boundary/region_areas_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "tests/support/error_message.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 
@@ -106,6 +107,29 @@ TEST(MeshDomain2, EveryGeneratorMakesTheSameMeshOverTheSharedDomain) {
         EXPECT_EQ(shared.counters, own.counters);
         EXPECT_GT(shared.mesh.mesh.triangle_count(), 100u);
     }
+}
+
+TEST(MeshDomain2, TheSizeBudgetIsCheckedOverTheDomainWhateverTheRecovery) {
+    // Conforming recovery: the budget's estimate is taken over the shared (Swap) domain, as
+    // the generators take it, with the message Swap gives, and no triangulation of its own.
+    const Input in = exactmesh::testing::from_domain(
+        gen::sample_domain(gen::SampleDomain::Key, gen::SizeFunction::uniform(0.05)));
+    std::string message[2];
+    for (const tri::SegmentRecovery recovery :
+         {tri::SegmentRecovery::Swap, tri::SegmentRecovery::Conforming}) {
+        gen::MeshOptions2 options;
+        options.cdt.recovery = recovery;
+        options.size = gen::SizeFunction::uniform(1e-5);
+        const gen::MeshDomain2 domain(in.pslg(), options.cdt);
+        message[recovery == tri::SegmentRecovery::Conforming] =
+            exactmesh::testing::error_message<exactmesh::InputError>(
+                [&] { gen::check_size_budget(domain, options, true); });
+        EXPECT_TRUE(domain.built());
+        options.size = gen::SizeFunction::uniform(0.05);
+        EXPECT_NO_THROW(gen::check_size_budget(domain, options, true));
+    }
+    EXPECT_NE(message[0].find("automatic budget"), std::string::npos) << message[0];
+    EXPECT_EQ(message[0], message[1]);
 }
 
 TEST(MeshDomain2, HonouredOptions) {
