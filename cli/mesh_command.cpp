@@ -218,22 +218,19 @@ void run_mesh(const MeshArguments& arguments) {
     // the default size, the size budget and the generator.
     const gen::MeshDomain2 domain(pslg, options.cdt);
 
-    predicates::reset_thread_stats();
-    const auto start = std::chrono::steady_clock::now();
-    // A generator that needs a size and was given none takes the input's own spacing at its
-    // vertices, graded away from them (timed: it is part of the construction).
     const std::string file =
         arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
-    if (generator.needs_size && !size.bounded()) {
-        size = locating_mark_points(poly, file,
-                                    [&] { return gen::graded_size_from_boundary(domain); });
-        options.size = size;
-    }
-    const gen::MeshRun2 result =
-        locating_mark_points(poly, file, [&] { return generator.run_on_domain(domain, options); });
-    const auto stop = std::chrono::steady_clock::now();
-    const predicates::PredicateStats stats = predicates::thread_stats();
-    const double seconds = std::chrono::duration<double>(stop - start).count();
+    const auto [result, stats, seconds] = timed_construction([&] {
+        // A generator that needs a size and was given none takes the input's own spacing at its
+        // vertices, graded away from them (timed: it is part of the construction).
+        if (generator.needs_size && !size.bounded()) {
+            size = locating_mark_points(poly, file,
+                                        [&] { return gen::graded_size_from_boundary(domain); });
+            options.size = size;
+        }
+        return locating_mark_points(poly, file,
+                                    [&] { return generator.run_on_domain(domain, options); });
+    });
 
     // Optional Laplacian smoothing, timed and reported apart from the generator.
     gen::MeshRun2 final_result = result;
@@ -245,8 +242,7 @@ void run_mesh(const MeshArguments& arguments) {
         const auto smooth_start = std::chrono::steady_clock::now();
         smoothing = gen::laplacian_smoothing_2d(
             final_result.mesh.mesh, final_result.mesh.input_vertex_count, smoothing_options);
-        smooth_seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - smooth_start).count();
+        smooth_seconds = seconds_since(smooth_start);
     }
     print_warnings(result.mesh.warnings);
     char label[64];
