@@ -72,22 +72,17 @@ class SizeSampler {
         return count_at(p, q, r, hi);
     }
 
-    /// Equilateral triangles of side s in (p, q, r): twice the area over s^2, with the sides
-    /// divided by s first, so no square of a coordinate (2^600 or 2^-600) is formed; an
-    /// overflow means an enormous count.
+    /// Equilateral triangles of side s in (p, q, r) (triangles_of_side: no square of a
+    /// coordinate, 2^600 or 2^-600, is formed; an overflow means an enormous count).
     static double count_at(const std::array<double, 2>& p, const std::array<double, 2>& q,
                            const std::array<double, 2>& r, double s) {
-        const double ux = (q[0] - p[0]) / s, uy = (q[1] - p[1]) / s;
-        const double vx = (r[0] - p[0]) / s, vy = (r[1] - p[1]) / s;
-        const double count = std::fabs(ux * vy - uy * vx) / (2 * kEquilateralArea);
-        return std::isnan(count) ? std::numeric_limits<double>::infinity() : count;
+        return triangles_of_side(p.data(), q.data(), r.data(), s);
     }
 
     void add(double count) { total_ += count; }
     double total() const { return total_; }
 
   private:
-    static constexpr double kEquilateralArea = 0.4330127018922193;  // sqrt(3) / 4
     static constexpr std::uint64_t kSplitEvaluations = 1u << 18;
     const SizeFunction& size_;
     double stop_above_;

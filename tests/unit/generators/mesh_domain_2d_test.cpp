@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -130,6 +131,24 @@ TEST(MeshDomain2, TheSizeBudgetIsCheckedOverTheDomainWhateverTheRecovery) {
     }
     EXPECT_NE(message[0].find("automatic budget"), std::string::npos) << message[0];
     EXPECT_EQ(message[0], message[1]);
+}
+
+TEST(RegionAreas2, TrianglesOfSideTheSameAtEveryScale) {
+    // The unit of the size budget and the regional one (check_size_budget): the right triangle
+    // of legs 1 holds 2 / sqrt(3) equilateral triangles of side 1, at 2^600 and 2^-600 alike.
+    const double expected = 1 / 0.8660254037844386;
+    for (const int k : {0, 600, -600}) {
+        const double u = std::ldexp(1.0, k);
+        const double p[2] = {0, 0}, q[2] = {u, 0}, r[2] = {0, u};
+        EXPECT_EQ(gen::triangles_of_side(p, q, r, u), expected) << k;
+        EXPECT_EQ(gen::triangles_of_side(p, q, r, 2 * u), expected / 4) << k;
+        EXPECT_EQ(gen::triangles_of_area(p, q, r, 0.5 * u * 0.5 * u),
+                  gen::triangles_of_side(p, q, r, gen::equilateral_side_of_area(0.25 * u * u)))
+            << k;
+    }
+    const double big = std::numeric_limits<double>::max();
+    const double p[2] = {-big, -big}, q[2] = {big, -big}, r[2] = {-big, big};
+    EXPECT_EQ(gen::triangles_of_side(p, q, r, 1), std::numeric_limits<double>::infinity());
 }
 
 TEST(MeshDomain2, HonouredOptions) {
