@@ -119,6 +119,29 @@ std::vector<std::string> ignored_options(const gen::MeshGenerator2& generator,
     return warnings;
 }
 
+/// --domain with --size: the curves are discretized by that size before the size budget is
+/// checked (over the domain's CDT), so a size far below what the budget allows (--size 1e-7 on
+/// naca0012: 2 * 10^7 boundary points) ran for minutes and gigabytes before its error. The
+/// budget is checked first over the domain discretized by its own size, and refused there (with
+/// the message of check_size_budget, its estimate over that domain) only beyond 64 times the
+/// budget: far beyond what the two discretizations' areas can change, where the check over the
+/// domain itself took seconds (naca0012 at 1e-6) to minutes. Anything else (a size within that,
+/// or one that is not > 0 somewhere) is left to the check over the domain itself, as before.
+void refuse_size_far_over_budget(gen::SampleDomain sample, const gen::SizeFunction& size) {
+    const gen::DomainPslg coarse = gen::sample_domain(sample);
+    const gen::MeshDomain2 domain(tri::Pslg{coarse.xy, coarse.segments, coarse.holes, {}});
+    gen::MeshOptions2 options;
+    options.size = size;
+    const double far = 64 * gen::kAutomaticTriangleBudget;
+    double estimate = 0;
+    try {
+        estimate = gen::minimum_triangle_count(domain.triangulation().mesh, size, far);
+    } catch (const InputError&) {
+        return;  // a size not > 0 somewhere: reported over the domain itself, as before
+    }
+    if (estimate > far) gen::check_size_budget(domain, options, false);
+}
+
 void run_mesh(const MeshArguments& arguments) {
     const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(arguments.generator);
     if (arguments.angles_given && !(generator.honours.contains(gen::MeshOption::MinAngle) &&
@@ -154,7 +177,10 @@ void run_mesh(const MeshArguments& arguments) {
     std::string title;
     if (!arguments.domain.empty()) {
         const gen::SampleDomain domain = gen::sample_domain_from_name(arguments.domain);
-        if (!size.bounded()) size = gen::sample_domain_size(domain);
+        if (!size.bounded())
+            size = gen::sample_domain_size(domain);
+        else if (arguments.max_steiner == 0)  // the automatic budget, whatever the generator
+            refuse_size_far_over_budget(domain, size);
         gen::DomainPslg pslg = gen::sample_domain(domain, size);
         poly.vertices.xy = std::move(pslg.xy);
         poly.segments = std::move(pslg.segments);
@@ -192,22 +218,19 @@ void run_mesh(const MeshArguments& arguments) {
     // the default size, the size budget and the generator.
     const gen::MeshDomain2 domain(pslg, options.cdt);
 
-    predicates::reset_thread_stats();
-    const auto start = std::chrono::steady_clock::now();
-    // A generator that needs a size and was given none takes the input's own spacing at its
-    // vertices, graded away from them (timed: it is part of the construction).
     const std::string file =
         arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
-    if (generator.needs_size && !size.bounded()) {
-        size = locating_mark_points(poly, file,
-                                    [&] { return gen::graded_size_from_boundary(domain); });
-        options.size = size;
-    }
-    const gen::MeshRun2 result =
-        locating_mark_points(poly, file, [&] { return generator.run_on_domain(domain, options); });
-    const auto stop = std::chrono::steady_clock::now();
-    const predicates::PredicateStats stats = predicates::thread_stats();
-    const double seconds = std::chrono::duration<double>(stop - start).count();
+    const auto [result, stats, seconds] = timed_construction([&] {
+        // A generator that needs a size and was given none takes the input's own spacing at its
+        // vertices, graded away from them (timed: it is part of the construction).
+        if (generator.needs_size && !size.bounded()) {
+            size = locating_mark_points(poly, file,
+                                        [&] { return gen::graded_size_from_boundary(domain); });
+            options.size = size;
+        }
+        return locating_mark_points(poly, file,
+                                    [&] { return generator.run_on_domain(domain, options); });
+    });
 
     // Optional Laplacian smoothing, timed and reported apart from the generator.
     gen::MeshRun2 final_result = result;
@@ -219,8 +242,7 @@ void run_mesh(const MeshArguments& arguments) {
         const auto smooth_start = std::chrono::steady_clock::now();
         smoothing = gen::laplacian_smoothing_2d(
             final_result.mesh.mesh, final_result.mesh.input_vertex_count, smoothing_options);
-        smooth_seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - smooth_start).count();
+        smooth_seconds = seconds_since(smooth_start);
     }
     print_warnings(result.mesh.warnings);
     char label[64];

@@ -11,7 +11,7 @@ namespace exactmesh::generators {
 namespace tri = exactmesh::triangulation;
 
 MeshDomain2::MeshDomain2(const tri::Pslg& pslg, const tri::Cdt2Options& cdt)
-    : pslg_(pslg), options_(cdt), domain_options_(cdt), numbered_(has_region_areas(pslg.regions)) {
+    : pslg_(pslg), domain_options_(cdt), numbered_(has_region_areas(pslg.regions)) {
     domain_options_.remove_exterior = true;
     if (domain_options_.recovery == tri::SegmentRecovery::Conforming)
         domain_options_.recovery = tri::SegmentRecovery::Swap;

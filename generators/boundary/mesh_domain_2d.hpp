@@ -23,8 +23,6 @@ class MeshDomain2 {
     MeshDomain2& operator=(const MeshDomain2&) = delete;
 
     const triangulation::Pslg& pslg() const { return pslg_; }
-    /// The options as the caller gave them (numbering, recovery, order, seed).
-    const triangulation::Cdt2Options& options() const { return options_; }
     /// The options the domain is built with: the caller's, exterior removed, and Swap where the
     /// caller asked for Conforming (the domain, not a conforming triangulation of it).
     const triangulation::Cdt2Options& domain_options() const { return domain_options_; }
@@ -45,7 +43,7 @@ class MeshDomain2 {
 
   private:
     triangulation::Pslg pslg_;
-    triangulation::Cdt2Options options_, domain_options_;
+    triangulation::Cdt2Options domain_options_;
     bool numbered_ = false;
     // Built lazily by a const accessor: the generators take the domain as const, and only the
     // first step that needs it builds it.

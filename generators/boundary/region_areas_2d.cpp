@@ -28,15 +28,6 @@ std::size_t region_index(std::span<const double> regions, double numbered_attrib
     return r < regions.size() / 4 ? r : SIZE_MAX;
 }
 
-/// Equilateral triangles of side s in (p, q, r): twice the area over s^2, the sides divided
-/// by s first (no square of a coordinate is formed); +infinity on overflow.
-double count_at(const double* p, const double* q, const double* r, double s) {
-    const double ux = (q[0] - p[0]) / s, uy = (q[1] - p[1]) / s;
-    const double vx = (r[0] - p[0]) / s, vy = (r[1] - p[1]) / s;
-    const double count = std::fabs(ux * vy - uy * vx) / (2 * 0.4330127018922193);  // sqrt(3) / 4
-    return std::isnan(count) ? kInfinity : count;
-}
-
 /// s_A per triangle of the input's CDT (+infinity outside regions with an area), the smallest
 /// about each vertex, and exact point location over it.
 class RegionSides {
@@ -120,8 +111,15 @@ double equilateral_side_of_area(double area) {
     return 2 * (std::sqrt(area) / 1.3160740129524924608);  // 3^(1/4)
 }
 
+double triangles_of_side(const double* p, const double* q, const double* r, double side) {
+    const double ux = (q[0] - p[0]) / side, uy = (q[1] - p[1]) / side;
+    const double vx = (r[0] - p[0]) / side, vy = (r[1] - p[1]) / side;
+    const double count = std::fabs(ux * vy - uy * vx) / (2 * 0.4330127018922193);  // sqrt(3) / 4
+    return std::isnan(count) ? kInfinity : count;
+}
+
 double triangles_of_area(const double* p, const double* q, const double* r, double area) {
-    return area > 0 ? count_at(p, q, r, equilateral_side_of_area(area)) : 0.0;
+    return area > 0 ? triangles_of_side(p, q, r, equilateral_side_of_area(area)) : 0.0;
 }
 
 double region_area_triangle_count(const tri::Cdt2Result& domain, std::span<const double> regions) {

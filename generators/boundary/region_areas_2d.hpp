@@ -37,6 +37,11 @@ double region_attribute_of(std::span<const double> regions, double numbered_attr
 /// s_A = sqrt(4 A / sqrt 3) = 2 sqrt(A) / 3^(1/4), without overflow (+infinity for A <= 0).
 double equilateral_side_of_area(double area);
 
+/// The equilateral triangles of side s that triangle (p, q, r) holds: twice its area over
+/// s^2 sqrt(3) / 2, the sides divided by s first (no square of a coordinate is formed);
+/// +infinity on overflow. The unit of every triangle budget (regional areas, sizes).
+double triangles_of_side(const double* p, const double* q, const double* r, double side);
+
 /// area(p, q, r) / A in units of s_A (no square of a coordinate is formed; +infinity on
 /// overflow): the triangles of area A that triangle (p, q, r) holds, as a budget counts them.
 double triangles_of_area(const double* p, const double* q, const double* r, double area);

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <optional>
 #include <string>
 
 #include "base/enum_names.hpp"
@@ -73,22 +72,17 @@ class SizeSampler {
         return count_at(p, q, r, hi);
     }
 
-    /// Equilateral triangles of side s in (p, q, r): twice the area over s^2, with the sides
-    /// divided by s first, so no square of a coordinate (2^600 or 2^-600) is formed; an
-    /// overflow means an enormous count.
+    /// Equilateral triangles of side s in (p, q, r) (triangles_of_side: no square of a
+    /// coordinate, 2^600 or 2^-600, is formed; an overflow means an enormous count).
     static double count_at(const std::array<double, 2>& p, const std::array<double, 2>& q,
                            const std::array<double, 2>& r, double s) {
-        const double ux = (q[0] - p[0]) / s, uy = (q[1] - p[1]) / s;
-        const double vx = (r[0] - p[0]) / s, vy = (r[1] - p[1]) / s;
-        const double count = std::fabs(ux * vy - uy * vx) / (2 * kEquilateralArea);
-        return std::isnan(count) ? std::numeric_limits<double>::infinity() : count;
+        return triangles_of_side(p.data(), q.data(), r.data(), s);
     }
 
     void add(double count) { total_ += count; }
     double total() const { return total_; }
 
   private:
-    static constexpr double kEquilateralArea = 0.4330127018922193;  // sqrt(3) / 4
     static constexpr std::uint64_t kSplitEvaluations = 1u << 18;
     const SizeFunction& size_;
     double stop_above_;
@@ -120,28 +114,17 @@ double minimum_triangle_count(const tri::Triangulation2& domain, const SizeFunct
     return sampler.total();
 }
 
-void check_size_budget(const tri::Pslg& pslg, const MeshOptions2& options, bool hard_budget) {
-    check_size_budget(MeshDomain2(pslg, options.cdt), options, hard_budget);
-}
-
 void check_size_budget(const MeshDomain2& domain_of, const MeshOptions2& options,
                        bool hard_budget) {
     const tri::Pslg& pslg = domain_of.pslg();
     const bool areas = has_region_areas(pslg.regions);
     if (!options.size.bounded() && !areas) return;
-    // With regional maximum areas, the regions are numbered so that each triangle names its own
-    // (as MeshDomain2 numbers them). The estimate has always taken the caller's recovery: a
-    // conforming one (not the domain's) is built here.
-    std::optional<tri::Cdt2Result> conforming;
-    if (options.cdt.recovery == tri::SegmentRecovery::Conforming) {
-        tri::Cdt2Options cdt = options.cdt;
-        cdt.remove_exterior = true;
-        const std::vector<double> numbered =
-            areas ? numbered_regions(pslg.regions) : std::vector<double>{};
-        conforming = tri::constrained_delaunay_2d(
-            areas ? tri::Pslg{pslg.xy, pslg.segments, pslg.holes, numbered} : pslg, cdt);
-    }
-    const tri::Cdt2Result& domain = conforming ? *conforming : domain_of.triangulation();
+    // The domain built once, its triangles numbered by region when some region has an area
+    // (MeshDomain2). Under Conforming recovery it is the Swap triangulation of the same region:
+    // the estimate integrates over the region, so it needs no conforming triangulation of its
+    // own (one used to be built here, a second CDT of the input, which could also fail where
+    // the domain does not).
+    const tri::Cdt2Result& domain = domain_of.triangulation();
     const double inputs = static_cast<double>(pslg.xy.size() / 2);
     const bool given = hard_budget && options.max_steiner_points != 0;
     // A triangulation of V vertices has fewer than 2V triangles.

@@ -114,11 +114,8 @@ double minimum_triangle_count(const triangulation::Triangulation2& domain, const
 /// region_area_triangle_count, whichever is larger) must stay within 2^26 triangles (automatic
 /// budget) or, for the generators whose budget is a hard limit (Delaunay refinement, quadtree,
 /// frontal), within the triangles options.max_steiner_points Steiner points can make.
+/// Over the domain built once (MeshDomain2::triangulation, whatever options.cdt's recovery).
 /// @throws InputError naming the size, the estimate and the budget, at once.
-void check_size_budget(const triangulation::Pslg& pslg, const MeshOptions2& options,
-                       bool hard_budget);
-/// The same over the domain built once (MeshDomain2::triangulation; a domain of its own only
-/// when options.cdt asks for Conforming recovery, as the estimate always has).
 void check_size_budget(const MeshDomain2& domain, const MeshOptions2& options, bool hard_budget);
 
 /// The automatic triangle budget of check_size_budget.

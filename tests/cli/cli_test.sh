@@ -831,6 +831,10 @@ mesh_impossible_sizes() {
     expect_error 2 'the size \(uniform 1e-300\) asks for' \
       mesh "$work/unit.poly" --generator "$generator" --size "$work/tiny.size" -o "$work/d.ele"
   done
+  # A built-in domain's curves are discretized by --size: refused before that (at 1e-9 that
+  # made "out of memory", exit 3, under a 4 GB limit; at 1e-7 minutes before the error).
+  expect_error 2 'the size \(uniform 1e-09\) asks for about .* or more triangles' \
+    mesh --domain naca0012 --size 1e-9 -o "$work/e.ele"
 }
 
 case "$case_name" in

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "generators/boundary/region_areas_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "tests/support/error_message.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 
@@ -110,6 +112,47 @@ TEST(MeshDomain2, EveryGeneratorMakesTheSameMeshOverTheSharedDomain) {
         EXPECT_EQ(shared.counters, own.counters);
         EXPECT_GT(shared.mesh.mesh.triangle_count(), 100u);
     }
+}
+
+TEST(MeshDomain2, TheSizeBudgetIsCheckedOverTheDomainWhateverTheRecovery) {
+    // Conforming recovery: the budget's estimate is taken over the shared (Swap) domain, as
+    // the generators take it, with the message Swap gives, and no triangulation of its own.
+    const Input in = exactmesh::testing::from_domain(
+        gen::sample_domain(gen::SampleDomain::Key, gen::SizeFunction::uniform(0.05)));
+    std::string message[2];
+    for (const tri::SegmentRecovery recovery :
+         {tri::SegmentRecovery::Swap, tri::SegmentRecovery::Conforming}) {
+        gen::MeshOptions2 options;
+        options.cdt.recovery = recovery;
+        options.size = gen::SizeFunction::uniform(1e-5);
+        const gen::MeshDomain2 domain(in.pslg(), options.cdt);
+        message[recovery == tri::SegmentRecovery::Conforming] =
+            exactmesh::testing::error_message<exactmesh::InputError>(
+                [&] { gen::check_size_budget(domain, options, true); });
+        EXPECT_TRUE(domain.built());
+        options.size = gen::SizeFunction::uniform(0.05);
+        EXPECT_NO_THROW(gen::check_size_budget(domain, options, true));
+    }
+    EXPECT_NE(message[0].find("automatic budget"), std::string::npos) << message[0];
+    EXPECT_EQ(message[0], message[1]);
+}
+
+TEST(RegionAreas2, TrianglesOfSideTheSameAtEveryScale) {
+    // The unit of the size budget and the regional one (check_size_budget): the right triangle
+    // of legs 1 holds 2 / sqrt(3) equilateral triangles of side 1, at 2^600 and 2^-600 alike.
+    const double expected = 1 / 0.8660254037844386;
+    for (const int k : {0, 600, -600}) {
+        const double u = std::ldexp(1.0, k);
+        const double p[2] = {0, 0}, q[2] = {u, 0}, r[2] = {0, u};
+        EXPECT_EQ(gen::triangles_of_side(p, q, r, u), expected) << k;
+        EXPECT_EQ(gen::triangles_of_side(p, q, r, 2 * u), expected / 4) << k;
+        EXPECT_EQ(gen::triangles_of_area(p, q, r, 0.5 * u * 0.5 * u),
+                  gen::triangles_of_side(p, q, r, gen::equilateral_side_of_area(0.25 * u * u)))
+            << k;
+    }
+    const double big = std::numeric_limits<double>::max();
+    const double p[2] = {-big, -big}, q[2] = {big, -big}, r[2] = {-big, big};
+    EXPECT_EQ(gen::triangles_of_side(p, q, r, 1), std::numeric_limits<double>::infinity());
 }
 
 TEST(MeshDomain2, HonouredOptions) {
