@@ -10,12 +10,15 @@ namespace exactmesh::generators {
 
 namespace tri = exactmesh::triangulation;
 
-MeshDomain2::MeshDomain2(const tri::Pslg& pslg, const tri::Cdt2Options& cdt)
-    : pslg_(pslg), domain_options_(cdt), numbered_(has_region_areas(pslg.regions)) {
-    domain_options_.remove_exterior = true;
-    if (domain_options_.recovery == tri::SegmentRecovery::Conforming)
-        domain_options_.recovery = tri::SegmentRecovery::Swap;
+tri::Cdt2Options domain_cdt_options(tri::Cdt2Options cdt) {
+    cdt.remove_exterior = true;
+    if (cdt.recovery == tri::SegmentRecovery::Conforming) cdt.recovery = tri::SegmentRecovery::Swap;
+    return cdt;
 }
+
+MeshDomain2::MeshDomain2(const tri::Pslg& pslg, const tri::Cdt2Options& cdt)
+    : pslg_(pslg), domain_options_(domain_cdt_options(cdt)),
+      numbered_(has_region_areas(pslg.regions)) {}
 
 const tri::Cdt2Result& MeshDomain2::triangulation() const {
     return *shared_triangulation();

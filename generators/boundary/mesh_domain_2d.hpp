@@ -12,6 +12,12 @@
 
 namespace exactmesh::generators {
 
+/// The caller's options for a constrained triangulation the generators build of the domain (or
+/// of a part of it: the quadtree's band, a front's closure), exterior removed: Swap recovery
+/// where the caller asked for Conforming (the generators need the domain's segments, not a
+/// conforming triangulation of them).
+triangulation::Cdt2Options domain_cdt_options(triangulation::Cdt2Options cdt);
+
 class MeshDomain2 {
   public:
     /// Keeps `pslg` (its spans: the caller's arrays must outlive the domain) and `cdt`, and

@@ -566,10 +566,8 @@ class AdvancingFront {
             global.push_back(v);
             xy.insert(xy.end(), {point(v)[0], point(v)[1]});
         }
-        tri::Cdt2Options options = options_.cdt;
+        tri::Cdt2Options options = domain_cdt_options(options_.cdt);
         options.remove_exterior = false;
-        if (options.recovery == tri::SegmentRecovery::Conforming)
-            options.recovery = tri::SegmentRecovery::Swap;
         const tri::Cdt2Result closure =
             tri::constrained_delaunay_2d(tri::Pslg{xy, segments, {}, {}}, options);
         const tri::Triangulation2& mesh = closure.mesh;

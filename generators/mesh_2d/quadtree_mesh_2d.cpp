@@ -958,10 +958,8 @@ QuadtreeResult2 QuadtreeMesher::assemble() {
         band_holes.insert(band_holes.end(), {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)});
     }
     std::vector<std::string> result_warnings;
-    tri::Cdt2Options cdt = options_.cdt;
-    cdt.remove_exterior = true;
+    tri::Cdt2Options cdt = domain_cdt_options(options_.cdt);
     cdt.first_index = 0;
-    if (cdt.recovery == tri::SegmentRecovery::Conforming) cdt.recovery = tri::SegmentRecovery::Swap;
     const auto band_count = static_cast<VertIdx>(band_vertex.size());
     const tri::Cdt2Result band_cdt = triangulate_band({band_xy, band_segments, band_holes, {}},
                                                       boundary_segments, cdt, result_warnings);
