@@ -160,14 +160,10 @@ else()
 endif()
 set(below "${below_significand}b${below_exponent}")
 run_gappa("${below}" "|det - Det| <= @EPS@" rc log)
-if(rc EQUAL 0)
-  message(FATAL_ERROR "${PRED}_filter_eps = ${eps_literal} is proven but not the least proven "
-                      "double: ${below} is proven too. Put the least one into ${header}; run: "
-                      "cmake -DPRED=${PRED} -DMODE=bound -P ${CMAKE_CURRENT_LIST_FILE}")
-endif()
-if(NOT log MATCHES "some properties were not satisfied")
-  message(FATAL_ERROR "Gappa failed unexpectedly on ${below}:\n${log}")
-endif()
+gappa_expect_unproven(${rc} "${log}" "${below}"
+  "${PRED}_filter_eps = ${eps_literal} is proven but not the least proven double: ${below} is \
+proven too. Put the least one into ${header}; run: cmake -DPRED=${PRED} -DMODE=bound -P \
+${CMAKE_CURRENT_LIST_FILE}")
 message(STATUS "${PRED}_filter_eps = ${eps_literal} is the least double proven by ${script} "
                "(min ${min_literal}: underflow unit ${underflow}; max ${max_literal}: "
                "overflow bound ${overflow})")

@@ -36,13 +36,9 @@ if(DEFINED MINIMALITY_NAME)
   set(minimality_script "${source_dir}/proofs/gappa/${MINIMALITY_NAME}.g")
 endif()
 gappa_run("${minimality_script}" "EPS=1b${half}" rc log)
-if(rc EQUAL 0)
-  message(FATAL_ERROR "${CONSTANT} = 2^${exponent} is proven but not the least proven power of "
-                      "two: 2^${half} is proven too (${script}). Put the least one into ${header}.")
-endif()
-if(NOT log MATCHES "some properties were not satisfied")
-  message(FATAL_ERROR "Gappa failed unexpectedly on 2^${half}:\n${log}")
-endif()
+gappa_expect_unproven(${rc} "${log}" "2^${half}"
+  "${CONSTANT} = 2^${exponent} is proven but not the least proven power of two: 2^${half} is \
+proven too (${script}). Put the least one into ${header}.")
 if(DEFINED MAX_ROUNDINGS)
   file(STRINGS "${header}" lines REGEX "inline constexpr int ${MAX_ROUNDINGS} = [0-9]+;")
   list(LENGTH lines count)

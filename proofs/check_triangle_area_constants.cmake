@@ -39,13 +39,9 @@ function(expect_least which name)
   set(try_result ${result})
   math(EXPR try_${which} "${${which}} - 1")
   run_gappa(${try_product} ${try_result} ${floor} rc log)
-  if(rc EQUAL 0)
-    message(FATAL_ERROR "${name} = 2^${${which}} is not the least: 2^${try_${which}} is proven "
-                        "too (${script}). Put the least one into ${header}.")
-  endif()
-  if(NOT log MATCHES "some properties were not satisfied")
-    message(FATAL_ERROR "Gappa failed unexpectedly on ${name} = 2^${try_${which}}:\n${log}")
-  endif()
+  gappa_expect_unproven(${rc} "${log}" "${name} = 2^${try_${which}}"
+    "${name} = 2^${${which}} is not the least: 2^${try_${which}} is proven too (${script}). \
+Put the least one into ${header}.")
 endfunction()
 
 expect_least(product triangle_area_filter_eps)

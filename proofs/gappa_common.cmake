@@ -31,6 +31,18 @@ function(gappa_read_power_of_two header constant out)
   set(${out} ${e} PARENT_SCOPE)
 endfunction()
 
+# After a gappa_run with a smaller constant `tried`: fails with `not_least` when Gappa proved it
+# (the header's constant is not the least), and on any failure other than an unproven goal (a
+# syntax error or a crash must not pass for "not proven").
+function(gappa_expect_unproven rc log tried not_least)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "${not_least}")
+  endif()
+  if(NOT log MATCHES "some properties were not satisfied")
+    message(FATAL_ERROR "Gappa failed unexpectedly on ${tried}:\n${log}")
+  endif()
+endfunction()
+
 # Runs Gappa on `script` with each "@KEY@" replaced as the list `substitutions` says
 # (KEY=value entries); an unknown placeholder, or a rewriting hint that is not an identity
 # (which Gappa would only warn about, then use unchecked), is a fatal error.
