@@ -48,4 +48,7 @@ void add_min_max_command(CLI::App& app);
 /// `exactmesh swap3d IN.node IN.ele -o OUT.ele [--criterion C] [--quality] [--stats]` (TetGen files).
 void add_swap3d_command(CLI::App& app);
 
+/// `exactmesh adapt IN.poly|--domain NAME --field EXPR -o OUT [--method M] [--indicator I]
+/// [--cycles K] [--max-vertices N] [--threshold T] [--smooth N] [--quality] [--stats]`.
+void add_adapt_command(CLI::App& app);
 }  // namespace exactmesh::cli

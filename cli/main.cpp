@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
         add_swap_command(app);
         add_min_max_command(app);
         add_swap3d_command(app);
+        add_adapt_command(app);
         try {
             app.parse(argc, argv);
         } catch (const CLI::ParseError& error) {

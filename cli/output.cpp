@@ -145,7 +145,8 @@ triangulation::InsertionOrder insertion_order(const std::string& name) {
 
 void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
-                              std::uint32_t base, const std::string& svg_title) {
+                              std::uint32_t base, const std::string& svg_title,
+                              std::span<const double> vertex_field) {
     namespace fs = std::filesystem;
     const triangulation::Triangulation2& mesh = result.mesh;
     const fs::path& output = files[0];
@@ -155,6 +156,11 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
             io::NodeFile vertices;
             vertices.xy = mesh.xy;
             vertices.first_index = base;
+            if (!vertex_field.empty()) {
+                // A field at the vertices (exactmesh adapt): the .node's one attribute.
+                vertices.attribute_count = 1;
+                vertices.attributes.assign(vertex_field.begin(), vertex_field.end());
+            }
             std::vector<std::int32_t> markers;
             for (const std::uint32_t s : result.piece_segment) markers.push_back(static_cast<std::int32_t>(s + base));
             set.stage(output, io::format_ele(mesh.triangles, base, result.triangle_attributes));

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -82,7 +83,8 @@ triangulation::InsertionOrder insertion_order(const std::string& name);
 /// Numbers vertices, triangles and segments from `base`. Nothing is in place until commit.
 void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
-                              std::uint32_t base, const std::string& svg_title);
+                              std::uint32_t base, const std::string& svg_title,
+                              std::span<const double> vertex_field = {});
 
 /// Region maximum areas (Triangle's -a per region) are read but not applied by `cdt`: warns once,
 /// at the first region that gives one, with `why`.

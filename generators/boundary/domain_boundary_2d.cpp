@@ -33,9 +33,10 @@ using Point = std::array<double, 2>;
 
 namespace {
 
-/// discretize_curve with a first sample count (doubled until there are 8 samples per piece).
-std::vector<Point> spaced_points(const Curve2& curve, double u0, double u1,
-                                 const SizeFunction& size, int min_pieces, int samples) {
+/// discretize_curve_parameters with a first sample count (doubled until there are 8 samples per
+/// piece).
+std::vector<double> spaced_parameters(const Curve2& curve, double u0, double u1,
+                                      const SizeFunction& size, int min_pieces, int samples) {
     for (;;) {
         std::vector<double> u(static_cast<std::size_t>(samples) + 1), cumulative(u.size(), 0.0);
         Point previous = curve(u0);
@@ -62,7 +63,7 @@ std::vector<Point> spaced_points(const Curve2& curve, double u0, double u1,
             samples = std::min(1 << 24, pieces * 16);
             continue;
         }
-        std::vector<Point> points{curve(u0)};
+        std::vector<double> points{u0};
         std::size_t i = 0;
         for (int k = 1; k < pieces; ++k) {
             const double target = total > 0 ? total * k / pieces : 0.0;
@@ -75,9 +76,9 @@ std::vector<Point> spaced_points(const Curve2& curve, double u0, double u1,
             } else {
                 parameter = u0 + (u1 - u0) * k / pieces;
             }
-            points.push_back(curve(parameter));
+            points.push_back(parameter);
         }
-        points.push_back(curve(u1));
+        points.push_back(u1);
         return points;
     }
 }
@@ -243,7 +244,15 @@ tri::VertIdx third_vertex(const tri::Triangulation2& mesh, tri::TriIdx t, tri::V
 
 std::vector<Point> discretize_curve(const Curve2& curve, double u0, double u1,
                                     const SizeFunction& size, int min_pieces) {
-    return spaced_points(curve, u0, u1, size, min_pieces, 4096);
+    std::vector<Point> points;
+    for (const double u : spaced_parameters(curve, u0, u1, size, min_pieces, 4096))
+        points.push_back(curve(u));
+    return points;
+}
+
+std::vector<double> discretize_curve_parameters(const Curve2& curve, double u0, double u1,
+                                                const SizeFunction& size, int min_pieces) {
+    return spaced_parameters(curve, u0, u1, size, min_pieces, 4096);
 }
 
 namespace {
@@ -427,7 +436,10 @@ DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const Size
                 format_number(smallest) + " along a length " + format_number(length) + ")");
         }
         const int samples = static_cast<int>(std::clamp(16 * estimate + 16, 16.0, double{1 << 24}));
-        return spaced_points(line, 0.0, 1.0, size, 1, samples);
+        std::vector<Point> points;
+        for (const double t : spaced_parameters(line, 0.0, 1.0, size, 1, samples))
+            points.push_back(line(t));
+        return points;
     };
     const auto append = [&](std::vector<tri::VertIdx>& chain, const std::vector<Point>& kept) {
         for (const Point& q : kept) {

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "generators/boundary/mesh_domain_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "generators/sizing/size_function.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 #include "triangulation/mesh/locate_2d.hpp"
@@ -98,13 +99,14 @@ double expected_triangle_count(const DomainBoundary2& boundary, const SizeFuncti
 /// True when (x, y) lies in the domain (closed), by exact orient2d tests on the CDT.
 bool in_domain(const DomainBoundary2& boundary, double x, double y);
 
-using Curve2 = std::function<std::array<double, 2>(double)>;
-
 /// Points of curve(u), u in [u0, u1], both ends included, spaced so that the integral of
 /// ds / size between neighbours is equal and at most 1 (at least min_pieces pieces); the
 /// integral is taken over a polyline of at least 8 samples per piece. An unbounded size gives
 /// min_pieces pieces equal in u.
 std::vector<std::array<double, 2>> discretize_curve(const Curve2& curve, double u0, double u1,
                                                     const SizeFunction& size, int min_pieces);
+/// The parameters of discretize_curve's points (its points are curve(u) for these u, bit for bit).
+std::vector<double> discretize_curve_parameters(const Curve2& curve, double u0, double u1,
+                                                const SizeFunction& size, int min_pieces);
 
 }  // namespace exactmesh::generators

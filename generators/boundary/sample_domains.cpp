@@ -32,6 +32,20 @@ class Builder {
         pslg.segments.push_back(a);
         pslg.segments.push_back(b);
     }
+    /// A curve; its number for curve_segments.
+    std::uint32_t curve(Curve2 c) {
+        pslg.curves.push_back(std::move(c));
+        return static_cast<std::uint32_t>(pslg.curves.size() - 1);
+    }
+    /// Records the curve pieces of the segments added since `first_segment`: the k-th of them
+    /// runs from parameter u[k] to u[k + 1] of curve c (straight sides before them keep theirs).
+    void curve_segments(std::size_t first_segment, std::uint32_t c, const std::vector<double>& u) {
+        pslg.segment_curves.resize(pslg.segments.size() / 2);
+        for (std::size_t k = 0; first_segment + k < pslg.segment_curves.size() && k + 1 < u.size();
+             ++k)
+            pslg.segment_curves[first_segment + k] = {c, u[k], u[k + 1]};
+    }
+    std::size_t segment_count() const { return pslg.segments.size() / 2; }
     /// A closed polygon through the points (first not repeated at the end).
     void loop(const std::vector<Point>& points) {
         const std::uint32_t first = static_cast<std::uint32_t>(pslg.xy.size() / 2);
@@ -40,13 +54,17 @@ class Builder {
         for (std::uint32_t k = 0; k < n; ++k) segment(first + k, first + (k + 1) % n);
     }
     void circle_hole(Point centre, double radius, const SizeFunction& size) {
-        auto points = discretize_curve(
-            [&](double u) {
-                return Point{centre[0] + radius * std::cos(u), centre[1] + radius * std::sin(u)};
-            },
-            0.0, 2 * std::numbers::pi, size, 8);
+        const Curve2 circle = [centre, radius](double u) {
+            return Point{centre[0] + radius * std::cos(u), centre[1] + radius * std::sin(u)};
+        };
+        std::vector<double> u = discretize_curve_parameters(circle, 0.0, 2 * std::numbers::pi,
+                                                            size, 8);
+        std::vector<Point> points;
+        for (const double p : u) points.push_back(circle(p));
         points.pop_back();  // u = 2 pi is u = 0
+        const std::size_t first = segment_count();
         loop(points);
+        curve_segments(first, curve(circle), u);
         pslg.holes.insert(pslg.holes.end(), {centre[0], centre[1]});
     }
 };
@@ -67,21 +85,27 @@ DomainPslg naca0012(const SizeFunction& size) {
     b.loop({{-1.5, -2}, {2.5, -2}, {2.5, 2}, {-1.5, 2}});
     // From the trailing edge (x = 1) to the leading edge (x = 0) on both surfaces, with
     // x = (1 + cos beta) / 2, which gives the fine sampling its cosine clustering at both ends.
-    auto surface = [&](double sign) {
-        return discretize_curve(
-            [sign](double beta) {
-                const double x = 0.5 * (1 + std::cos(beta));
-                return Point{x, sign * naca_thickness(0.12, x)};
-            },
-            0.0, std::numbers::pi, size, 16);
+    const auto surface_curve = [](double sign) -> Curve2 {
+        return [sign](double beta) {
+            const double x = 0.5 * (1 + std::cos(beta));
+            return Point{x, sign * naca_thickness(0.12, x)};
+        };
     };
-    std::vector<Point> upper = surface(1.0), lower = surface(-1.0);
+    const Curve2 upper_curve = surface_curve(1.0), lower_curve = surface_curve(-1.0);
+    const std::vector<double> upper_u =
+        discretize_curve_parameters(upper_curve, 0.0, std::numbers::pi, size, 16);
+    const std::vector<double> lower_u =
+        discretize_curve_parameters(lower_curve, 0.0, std::numbers::pi, size, 16);
     // Exactly (1, 0) and (0, 0) at the ends, shared by both surfaces.
     std::vector<Point> loop{{1.0, 0.0}};
-    for (std::size_t k = 1; k + 1 < upper.size(); ++k) loop.push_back(upper[k]);
+    for (std::size_t k = 1; k + 1 < upper_u.size(); ++k) loop.push_back(upper_curve(upper_u[k]));
     loop.push_back({0.0, 0.0});
-    for (std::size_t k = lower.size() - 2; k >= 1; --k) loop.push_back(lower[k]);
+    for (std::size_t k = lower_u.size() - 2; k >= 1; --k) loop.push_back(lower_curve(lower_u[k]));
+    const std::size_t first = b.segment_count();
     b.loop(loop);
+    b.curve_segments(first, b.curve(upper_curve), upper_u);
+    b.curve_segments(first + upper_u.size() - 1, b.curve(lower_curve),
+                     std::vector<double>(lower_u.rbegin(), lower_u.rend()));
     b.pslg.holes.insert(b.pslg.holes.end(), {0.3, 0.0});
     return std::move(b.pslg);
 }
@@ -100,14 +124,16 @@ DomainPslg key(const SizeFunction& size) {
     outline.insert(outline.end(), teeth.begin(), teeth.end());
     // The ring's outer arc from angle -a0 down through pi back to a0 - 2 pi, i.e. (cut, -h) to
     // (cut, h) the long way round; both ends are already there.
-    const auto arc = discretize_curve(
-        [r](double u) {
-            return Point{r * std::cos(u), r * std::sin(u)};
-        },
-        -a0, a0 - 2 * std::numbers::pi, size, 16);
+    const Curve2 ring = [r](double u) {
+        return Point{r * std::cos(u), r * std::sin(u)};
+    };
+    const std::vector<double> arc =
+        discretize_curve_parameters(ring, -a0, a0 - 2 * std::numbers::pi, size, 16);
     outline.push_back({cut, -h});
-    for (std::size_t k = 1; k + 1 < arc.size(); ++k) outline.push_back(arc[k]);
+    const std::size_t arc_first = b.segment_count() + outline.size() - 1;
+    for (std::size_t k = 1; k + 1 < arc.size(); ++k) outline.push_back(ring(arc[k]));
     b.loop(outline);
+    b.curve_segments(arc_first, b.curve(ring), arc);
     b.circle_hole({0.0, 0.0}, 0.2, size);
     return std::move(b.pslg);
 }
@@ -122,18 +148,24 @@ void naca4412_element(Builder& b, Point le, double chord, double deflection,
         return Point{le[0] + chord * (c * local[0] - s * local[1]),
                      le[1] + chord * (s * local[0] + c * local[1])};
     };
-    auto surface = [&](bool upper) {
-        return discretize_curve(
-            [=](double beta) { return place(naca4_point(0.04, 0.4, 0.12, beta, upper)); }, 0.0,
-            std::numbers::pi, size, 16);
+    const auto surface_curve = [&](bool upper) -> Curve2 {
+        return [=](double beta) { return place(naca4_point(0.04, 0.4, 0.12, beta, upper)); };
     };
-    const std::vector<Point> upper = surface(true), lower = surface(false);
-    // Trailing edge and leading edge shared by both surfaces.
-    std::vector<Point> loop{upper.front()};
-    for (std::size_t k = 1; k + 1 < upper.size(); ++k) loop.push_back(upper[k]);
-    loop.push_back(upper.back());
-    for (std::size_t k = lower.size() - 2; k >= 1; --k) loop.push_back(lower[k]);
+    const Curve2 upper_curve = surface_curve(true), lower_curve = surface_curve(false);
+    const std::vector<double> upper_u =
+        discretize_curve_parameters(upper_curve, 0.0, std::numbers::pi, size, 16);
+    const std::vector<double> lower_u =
+        discretize_curve_parameters(lower_curve, 0.0, std::numbers::pi, size, 16);
+    // Trailing edge and leading edge shared by both surfaces (the upper surface's ends).
+    std::vector<Point> loop{upper_curve(upper_u.front())};
+    for (std::size_t k = 1; k + 1 < upper_u.size(); ++k) loop.push_back(upper_curve(upper_u[k]));
+    loop.push_back(upper_curve(upper_u.back()));
+    for (std::size_t k = lower_u.size() - 2; k >= 1; --k) loop.push_back(lower_curve(lower_u[k]));
+    const std::size_t first = b.segment_count();
     b.loop(loop);
+    b.curve_segments(first, b.curve(upper_curve), upper_u);
+    b.curve_segments(first + upper_u.size() - 1, b.curve(lower_curve),
+                     std::vector<double>(lower_u.rbegin(), lower_u.rend()));
     // On the camber line at 30 % of the chord: inside the section.
     const Point inside = place({0.3, 0.04 / (0.4 * 0.4) * (2 * 0.4 * 0.3 - 0.3 * 0.3)});
     b.pslg.holes.insert(b.pslg.holes.end(), {inside[0], inside[1]});
@@ -217,17 +249,24 @@ SizeFunction sample_domain_size(SampleDomain d) {
 
 DomainPslg sample_domain(SampleDomain d, const SizeFunction& size) {
     const SizeFunction& s = size.bounded() ? size : sample_domain_size(d);
+    DomainPslg pslg;
     switch (d) {
         case SampleDomain::SquareWithHoles:
-            return square_with_holes(s);
+            pslg = square_with_holes(s);
+            break;
         case SampleDomain::Naca0012:
-            return naca0012(s);
+            pslg = naca0012(s);
+            break;
         case SampleDomain::Key:
-            return key(s);
+            pslg = key(s);
+            break;
         case SampleDomain::ThreeElement:
-            return three_element(s);
+            pslg = three_element(s);
+            break;
     }
-    return {};
+    // Straight sides added after the last curve keep the default record.
+    pslg.segment_curves.resize(pslg.segments.size() / 2);
+    return pslg;
 }
 
 }  // namespace exactmesh::generators

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,10 +37,28 @@ std::string_view sample_domain_name(SampleDomain d);
 /// @throws InputError naming the unknown domain and the known ones.
 SampleDomain sample_domain_from_name(std::string_view name);
 
+/// A parametric curve of the plane (a spline, an arc, an airfoil's surface).
+using Curve2 = std::function<std::array<double, 2>(double)>;
+
+/// Where a segment of a domain came from: the piece of curves[curve] between parameters u0 (at
+/// its first vertex) and u1 (at its second), or a straight side (curve == kStraightSide).
+struct SegmentCurve {
+    std::uint32_t curve = 0xFFFFFFFFu;
+    double u0 = 0, u1 = 0;
+};
+inline constexpr std::uint32_t kStraightSide = 0xFFFFFFFFu;
+
 struct DomainPslg {
     std::vector<double> xy;               ///< 2·#V
     std::vector<std::uint32_t> segments;  ///< 2·#S, 0-based
     std::vector<double> holes;            ///< 2·#H points inside holes
+    /// The curves the segments were sampled from and, per segment (#S, or empty when every side
+    /// is straight), which piece of which curve: adaptation (issue 13) puts new boundary points
+    /// on the curve itself, not on the polyline. Each segment's end points are curve(u0) and
+    /// curve(u1), except where a loop's shared end is written exactly ((1, 0), (0, 0) of the
+    /// NACA 0012 section).
+    std::vector<Curve2> curves;
+    std::vector<SegmentCurve> segment_curves;
 };
 
 /// The domain's own size function (graded for the airfoil, uniform for the others).

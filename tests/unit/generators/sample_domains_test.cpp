@@ -140,3 +140,29 @@ TEST(Generators_SampleDomains, ThreeElementsApartAndFinerUnderASmallerSize) {
         gen::sample_domain(gen::SampleDomain::ThreeElement, gen::SizeFunction::uniform(0.002));
     EXPECT_GT(finer.xy.size(), 2 * pslg.xy.size());
 }
+
+// Issue 13: each curved segment records its curve piece; its ends are the curve at u0 and u1
+// (bit for bit, but for the ends a loop writes exactly: (1, 0) and (0, 0) of the NACA 0012).
+TEST(Generators_SampleDomains, CurvedSegmentsRecordTheirCurvePiece) {
+    for (const gen::SampleDomain d : gen::kAllSampleDomains) {
+        const gen::DomainPslg pslg = gen::sample_domain(d);
+        const std::string name(gen::sample_domain_name(d));
+        ASSERT_EQ(pslg.segment_curves.size(), pslg.segments.size() / 2) << name;
+        std::size_t curved = 0, exact = 0;
+        for (std::size_t s = 0; s < pslg.segment_curves.size(); ++s) {
+            const gen::SegmentCurve& c = pslg.segment_curves[s];
+            if (c.curve == gen::kStraightSide) continue;
+            ASSERT_LT(c.curve, pslg.curves.size()) << name;
+            ++curved;
+            for (const auto& [v, u] : {std::pair{pslg.segments[2 * s], c.u0},
+                                       std::pair{pslg.segments[2 * s + 1], c.u1}}) {
+                const std::array<double, 2> p = pslg.curves[c.curve](u);
+                EXPECT_NEAR(p[0], pslg.xy[2 * v], 1e-12) << name << " segment " << s;
+                EXPECT_NEAR(p[1], pslg.xy[2 * v + 1], 1e-12) << name << " segment " << s;
+                exact += p[0] == pslg.xy[2 * v] && p[1] == pslg.xy[2 * v + 1] ? 1 : 0;
+            }
+        }
+        EXPECT_GT(curved, 16u) << name;
+        EXPECT_GE(exact + 4, 2 * curved) << name;
+    }
+}

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// Refinement indicators per edge and the flagging rules (issue 13; seed material's adaptation
+// chapter; Löhner 1987, "An adaptive finite element scheme for transient problems in CFD",
+// CMAME 61; Warren et al. 1991, "A comparison of refinement indicators for adaptive
+// unstructured grid generation"). For edge (i, j) with d = x_j - x_i, field values u and
+// recovered vertex gradients g (gradient_recovery below):
+//  - first-difference:  |u_j - u_i|                                   (undivided Δu)
+//  - second-difference: |(g_j - g_i) · d|                             (∂²u/∂s² · h²)
+//  - loehner:           |(g_j - g_i)·d| / (|g_i·d| + |g_j·d| + α (|u_i| + |u_j|)), in [0, 1]
+//                       (second over first differences, the noise filter α ū; 0 on a flat field)
+//  - length-weighted:   |u_j - u_i| · |d|                             (Δu · Δx)
+// Every length is taken in the mesh's unit scale (mesh_edges.hpp: coordinates times 2^-E), so
+// the indicators are bit for bit the same on a mesh scaled by any power of two. The indicators
+// only rank edges (relative to their mean or to each other); no sign of a geometric predicate
+// depends on them.
+// Gradient recovery: the area- (volume-) weighted mean of the linear interpolant's gradient over
+// the elements at a vertex [Zienkiewicz-Zhu's simplest average], from the elements' edge
+// vectors and differences without a division per element.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "triangulation/mesh/mesh2.hpp"
+
+namespace exactmesh::generators {
+
+enum class EdgeIndicator { FirstDifference, SecondDifference, Loehner, LengthWeighted };
+
+inline constexpr EdgeIndicator kAllEdgeIndicators[] = {
+    EdgeIndicator::FirstDifference, EdgeIndicator::SecondDifference, EdgeIndicator::Loehner,
+    EdgeIndicator::LengthWeighted};
+
+/// "first-difference", "second-difference", "loehner", "length-weighted".
+std::string_view edge_indicator_name(EdgeIndicator indicator);
+/// @throws InputError naming the unknown indicator and the known ones.
+EdgeIndicator edge_indicator_from_name(std::string_view name);
+
+/// Löhner's noise filter α (his ε, 0.01 to 0.2 in his papers).
+inline constexpr double kLoehnerNoiseFilter = 0.05;
+
+/// dim·#V recovered gradients in unit-scale coordinates (`unit_xy` = coordinates times 2^-E) of
+/// the elements (3 vertices per triangle for dim 2, 4 per tetrahedron for dim 3, kNone slots
+/// skipped); 0 at vertices in no element.
+std::vector<double> recover_gradients(std::span<const double> unit_coordinates, unsigned dim,
+                                      std::span<const triangulation::VertIdx> elements,
+                                      std::span<const double> values);
+
+/// The indicator on every edge (edges from mesh_edges_2d/3d); `gradients` from
+/// recover_gradients (unused, may be empty, for the two first-difference forms).
+std::vector<double> edge_indicator(EdgeIndicator indicator,
+                                   std::span<const double> unit_coordinates, unsigned dim,
+                                   std::span<const triangulation::VertIdx> edges,
+                                   std::span<const double> values,
+                                   std::span<const double> gradients);
+
+/// Edges whose indicator exceeds threshold times the mean over all edges (the seed material's
+/// rule); 1 per flagged edge.
+std::vector<std::uint8_t> flag_above_mean(std::span<const double> indicator, double threshold);
+
+/// The `count` edges with the largest indicator (ties broken by the lower edge number), for a
+/// vertex budget; 0-valued edges are never flagged.
+std::vector<std::uint8_t> flag_largest(std::span<const double> indicator, std::size_t count);
+
+}  // namespace exactmesh::generators

@@ -1,0 +1,261 @@
+// SPDX-License-Identifier: MIT
+// Delaunay point-insertion adaptation in 2D (see insertion_adaptation_2d.hpp).
+#include "generators/adaptation/insertion_adaptation_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "generators/adaptation/field_transfer.hpp"
+#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/mesh_2d/laplacian_smoothing_2d.hpp"
+#include "triangulation/constrained/constrained_triangulation_2d.hpp"
+
+namespace exactmesh::generators {
+
+using triangulation::kNone;
+using triangulation::VertIdx;
+
+namespace {
+
+// The closure of `flags` over the triangles (every triangle with a flagged edge gets three),
+// written into `closed`; returns the number of flagged edges after it.
+std::uint64_t close_flags(std::span<const std::uint32_t> triangle_edges,
+                          std::span<const std::uint8_t> flags, std::vector<std::uint8_t>& closed) {
+    closed.assign(flags.begin(), flags.end());
+    for (std::size_t t = 0; t + 2 < triangle_edges.size(); t += 3) {
+        if (flags[triangle_edges[t]] || flags[triangle_edges[t + 1]] ||
+            flags[triangle_edges[t + 2]])
+            closed[triangle_edges[t]] = closed[triangle_edges[t + 1]] =
+                closed[triangle_edges[t + 2]] = 1;
+    }
+    return static_cast<std::uint64_t>(std::count(closed.begin(), closed.end(), 1));
+}
+
+std::vector<std::uint32_t> edges_of_triangles(std::span<const VertIdx> triangles,
+                                              std::span<const VertIdx> edges) {
+    std::vector<std::uint32_t> result(triangles.size());
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
+        for (unsigned k = 0; k < 3; ++k)
+            result[t + k] = find_mesh_edge(edges, triangles[t + k], triangles[t + (k + 1) % 3]);
+    return result;
+}
+
+struct NewPoint {
+    double x, y;
+    VertIdx a, b;  // the flagged edge it halves
+};
+
+}  // namespace
+
+std::vector<std::uint8_t> refinement_flags_2d(std::span<const VertIdx> triangles,
+                                              std::span<const VertIdx> edges,
+                                              std::span<const double> indicator, double threshold,
+                                              std::uint64_t room, bool budget,
+                                              std::uint64_t* flagged, std::uint64_t* closure) {
+    const std::vector<std::uint32_t> triangle_edges = edges_of_triangles(triangles, edges);
+    std::vector<std::uint8_t> flags = flag_above_mean(indicator, threshold), closed;
+    std::uint64_t count = static_cast<std::uint64_t>(std::count(flags.begin(), flags.end(), 1));
+    std::uint64_t total = close_flags(triangle_edges, flags, closed);
+    if (budget && total > room) {
+        // The largest k whose closure fits the room, by bisection (the closure's size grows
+        // with k).
+        std::size_t lo = 0, hi = static_cast<std::size_t>(count);
+        while (lo < hi) {
+            const std::size_t mid = (lo + hi + 1) / 2;
+            std::vector<std::uint8_t> trial;
+            if (close_flags(triangle_edges, flag_largest(indicator, mid), trial) <= room)
+                lo = mid;
+            else
+                hi = mid - 1;
+        }
+        flags = flag_largest(indicator, lo);
+        count = static_cast<std::uint64_t>(std::count(flags.begin(), flags.end(), 1));
+        total = close_flags(triangle_edges, flags, closed);
+    }
+    if (flagged != nullptr) *flagged = count;
+    if (closure != nullptr) *closure = total - count;
+    return closed;
+}
+
+bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
+                        const FieldSource& field, InsertionCounters2& counters) {
+    const triangulation::Triangulation2& mesh = state.mesh;
+    const std::uint64_t vertices = mesh.vertex_count();
+    const bool budget = options.max_vertices > 0;
+    if (budget && vertices >= options.max_vertices) return false;
+    const std::uint64_t room = budget ? options.max_vertices - vertices : 0;
+
+    // 1-2. Indicator, flags, closure.
+    const std::vector<VertIdx> edges = mesh_edges_2d(mesh.triangles);
+    const int exponent = unit_scale_exponent(mesh.xy, 2, mesh.triangles);
+    const std::vector<double> unit = scaled_coordinates(mesh.xy, exponent);
+    std::vector<double> gradients;
+    if (options.indicator == EdgeIndicator::SecondDifference ||
+        options.indicator == EdgeIndicator::Loehner)
+        gradients = recover_gradients(unit, 2, mesh.triangles, state.values);
+    const std::vector<double> indicator =
+        edge_indicator(options.indicator, unit, 2, edges, state.values, gradients);
+    std::uint64_t flagged = 0, closure = 0;
+    const std::vector<std::uint8_t> flags = refinement_flags_2d(
+        mesh.triangles, edges, indicator, options.threshold, room, budget, &flagged, &closure);
+    if (flagged == 0) return false;
+
+    // 3. The points: pieces split at their curve's (or chord's) midpoint, interior edges at
+    // their rounded midpoint. An edge so short that its midpoint rounds to an end is left.
+    std::vector<std::uint32_t> piece_of_edge(edges.size() / 2, kNone);
+    for (std::size_t p = 0; p < state.pieces.size(); ++p) {
+        const std::uint32_t e = find_mesh_edge(edges, state.pieces[p].a, state.pieces[p].b);
+        if (e != kNone) piece_of_edge[e] = static_cast<std::uint32_t>(p);
+    }
+    const auto same = [&](double x, double y, VertIdx v) {
+        return x == mesh.xy[2 * v] && y == mesh.xy[2 * v + 1];
+    };
+    std::vector<NewPoint> interior;
+    for (std::size_t e = 0; e < flags.size(); ++e) {
+        if (!flags[e] || piece_of_edge[e] != kNone) continue;
+        const VertIdx a = edges[2 * e], b = edges[2 * e + 1];
+        const double x = 0.5 * mesh.xy[2 * a] + 0.5 * mesh.xy[2 * b];
+        const double y = 0.5 * mesh.xy[2 * a + 1] + 0.5 * mesh.xy[2 * b + 1];
+        if (same(x, y, a) || same(x, y, b)) continue;
+        interior.push_back({x, y, a, b});
+    }
+
+    const std::vector<double> old_xy = mesh.xy;
+    const std::vector<VertIdx> old_triangles = mesh.triangles;
+    const std::vector<double> old_values = state.values;
+    AdaptiveMesh2 next;
+    std::vector<double> first_values;  // the field before smoothing, per vertex of `next`
+    for (bool use_curves = !state.curves.empty();; use_curves = false) {
+        std::vector<double> xy = old_xy;
+        std::vector<double> values = old_values;
+        std::vector<VertIdx> segments;
+        std::vector<SegmentCurve> segment_curves;
+        std::vector<std::uint8_t> on_curve = state.on_curve;
+        std::uint64_t boundary_points = 0, curve_points = 0;
+        for (const CurvedPiece2& piece : state.pieces) {
+            const std::uint32_t e = find_mesh_edge(edges, piece.a, piece.b);
+            const bool split = e != kNone && flags[e] != 0;
+            double x = 0, y = 0, um = 0;
+            bool curved = false;
+            if (split) {
+                x = 0.5 * old_xy[2 * piece.a] + 0.5 * old_xy[2 * piece.b];
+                y = 0.5 * old_xy[2 * piece.a + 1] + 0.5 * old_xy[2 * piece.b + 1];
+                if (use_curves && piece.curve != kStraightSide) {
+                    um = 0.5 * piece.ua + 0.5 * piece.ub;
+                    const std::array<double, 2> c = state.curves[piece.curve](um);
+                    if (std::isfinite(c[0]) && std::isfinite(c[1])) {
+                        x = c[0];
+                        y = c[1];
+                        curved = true;
+                    }
+                }
+            }
+            if (!split || same(x, y, piece.a) || same(x, y, piece.b)) {
+                segments.insert(segments.end(), {piece.a, piece.b});
+                segment_curves.push_back({piece.curve, piece.ua, piece.ub});
+                continue;
+            }
+            const auto m = static_cast<VertIdx>(xy.size() / 2);
+            xy.insert(xy.end(), {x, y});
+            values.push_back(0.5 * old_values[piece.a] + 0.5 * old_values[piece.b]);
+            on_curve.push_back(curved ? 1 : 0);
+            segments.insert(segments.end(), {piece.a, m, m, piece.b});
+            segment_curves.push_back({piece.curve, piece.ua, curved ? um : piece.ua});
+            segment_curves.push_back({piece.curve, curved ? um : piece.ub, piece.ub});
+            if (!curved && piece.curve != kStraightSide) {
+                // A chord point on a curved piece: its parameter by its place on the chord.
+                const double mid = 0.5 * piece.ua + 0.5 * piece.ub;
+                segment_curves[segment_curves.size() - 2].u1 = mid;
+                segment_curves.back().u0 = mid;
+            }
+            ++boundary_points;
+            curve_points += curved ? 1 : 0;
+        }
+        const triangulation::Pslg pslg{xy, segments, state.holes, {}};
+        triangulation::ConstrainedTriangulation2 ct(pslg);
+        triangulation::Cdt2Counters cdt_counters;
+        {
+            // Interior points by Bowyer-Watson in the constrained triangulation.
+            std::vector<double> added_values;
+            std::uint64_t inserted = 0, encroaching = 0, outside = 0;
+            for (const NewPoint& p : interior) {
+                const triangulation::TriIdx t = ct.locate(p.x, p.y);
+                if (t == kNone || !ct.in_domain(t)) {
+                    ++outside;
+                    continue;
+                }
+                switch (ct.insert_in_cavity(t, p.x, p.y)) {
+                    case triangulation::CavityInsertion::Inserted:
+                        ++inserted;
+                        added_values.push_back(0.5 * old_values[p.a] + 0.5 * old_values[p.b]);
+                        break;
+                    case triangulation::CavityInsertion::Encroaches:
+                        ++encroaching;
+                        break;
+                    default:
+                        ++outside;
+                        break;
+                }
+            }
+            triangulation::Cdt2Result result = std::move(ct).take_result();
+            cdt_counters = result.counters;
+            const bool clean =
+                result.counters.duplicates == 0 && result.counters.intersections == 0 &&
+                result.counters.vertices_on_segments == 0 && result.counters.dropped_segments == 0;
+            if (!clean && use_curves && curve_points > 0) {
+                ++counters.curve_retries;
+                continue;
+            }
+            if (!clean)
+                throw GeometryError(
+                    "insertion adaptation: the boundary's pieces met after chord "
+                    "midpoints were added (a bug)");
+            next = make_adaptive_mesh_2d(std::move(result), xy, segments, state.holes, state.curves,
+                                         segment_curves);
+            next.fixed_vertices = state.fixed_vertices;
+            next.on_curve = std::move(on_curve);
+            next.on_curve.resize(next.mesh.vertex_count(), 0);
+            first_values = std::move(values);
+            first_values.insert(first_values.end(), added_values.begin(), added_values.end());
+            counters.inserted += inserted;
+            counters.encroaching_skipped += encroaching;
+            counters.outside_skipped += outside;
+        }
+        counters.boundary_points += boundary_points;
+        counters.curve_points += curve_points;
+        break;
+    }
+    ++counters.cycles;
+    counters.flagged_edges += flagged;
+    counters.closure_edges += closure;
+
+    // 5. Smoothing, boundary and input vertices fixed.
+    const std::vector<double> before_smoothing = next.mesh.xy;
+    if (options.smoothing_sweeps > 0) {
+        SmoothingOptions2 smoothing;
+        smoothing.iterations = options.smoothing_sweeps;
+        const SmoothingCounters2 c =
+            laplacian_smoothing_2d(next.mesh, next.fixed_vertices, smoothing);
+        counters.smoothing_moves += c.moves;
+        counters.smoothing_undone += c.undone;
+    }
+
+    // 6. The field on the new mesh.
+    if (field.analytic != nullptr) {
+        next.values = sample_field(*field.analytic, next.mesh.xy, 2, field.t);
+    } else {
+        next.values = transfer_field_2d(old_xy, old_triangles, old_values, next.mesh.xy);
+        for (std::size_t v = 0; v < next.values.size(); ++v) {
+            // A point outside the old mesh (beside a convex curve point) keeps the value it
+            // was made with; so does every point that did not move.
+            const bool moved = next.mesh.xy[2 * v] != before_smoothing[2 * v] ||
+                               next.mesh.xy[2 * v + 1] != before_smoothing[2 * v + 1];
+            if (std::isnan(next.values[v]) || (!moved && v < first_values.size()))
+                next.values[v] = first_values[v];
+        }
+    }
+    state = std::move(next);
+    return true;
+}
+
+}  // namespace exactmesh::generators

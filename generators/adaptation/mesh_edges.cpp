@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+// Edge lists and the unit scale of the adaptation layer (see mesh_edges.hpp).
+#include "generators/adaptation/mesh_edges.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace exactmesh::generators {
+
+using triangulation::kNone;
+using triangulation::VertIdx;
+
+namespace {
+
+std::vector<VertIdx> sorted_unique_pairs(std::vector<std::uint64_t>& keys) {
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    std::vector<VertIdx> edges;
+    edges.reserve(2 * keys.size());
+    for (const std::uint64_t k : keys) {
+        edges.push_back(static_cast<VertIdx>(k >> 32));
+        edges.push_back(static_cast<VertIdx>(k & 0xFFFFFFFFu));
+    }
+    return edges;
+}
+
+std::uint64_t edge_key(VertIdx u, VertIdx v) {
+    if (u > v) std::swap(u, v);
+    return (std::uint64_t{u} << 32) | v;
+}
+
+}  // namespace
+
+std::vector<VertIdx> mesh_edges_2d(std::span<const VertIdx> triangles) {
+    std::vector<std::uint64_t> keys;
+    keys.reserve(triangles.size());
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        if (triangles[t] == kNone) continue;
+        for (unsigned k = 0; k < 3; ++k)
+            keys.push_back(edge_key(triangles[t + k], triangles[t + (k + 1) % 3]));
+    }
+    return sorted_unique_pairs(keys);
+}
+
+std::vector<VertIdx> mesh_edges_3d(std::span<const VertIdx> tets) {
+    std::vector<std::uint64_t> keys;
+    keys.reserve(tets.size() / 4 * 6);
+    for (std::size_t t = 0; t + 3 < tets.size(); t += 4) {
+        if (tets[t] == kNone) continue;
+        for (unsigned i = 0; i < 4; ++i)
+            for (unsigned j = i + 1; j < 4; ++j) keys.push_back(edge_key(tets[t + i], tets[t + j]));
+    }
+    return sorted_unique_pairs(keys);
+}
+
+std::uint32_t find_mesh_edge(std::span<const VertIdx> edges, VertIdx u, VertIdx v) {
+    if (u > v) std::swap(u, v);
+    std::size_t lo = 0, hi = edges.size() / 2;
+    while (lo < hi) {
+        const std::size_t mid = (lo + hi) / 2;
+        const VertIdx a = edges[2 * mid], b = edges[2 * mid + 1];
+        if (a < u || (a == u && b < v))
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo < edges.size() / 2 && edges[2 * lo] == u && edges[2 * lo + 1] == v)
+        return static_cast<std::uint32_t>(lo);
+    return kNone;
+}
+
+int unit_scale_exponent(std::span<const double> coordinates, unsigned dim,
+                        std::span<const VertIdx> elements) {
+    double lo[3], hi[3];
+    for (unsigned d = 0; d < dim; ++d) {
+        lo[d] = std::numeric_limits<double>::infinity();
+        hi[d] = -lo[d];
+    }
+    for (const VertIdx v : elements) {
+        if (v == kNone || v == triangulation::kInfinite) continue;
+        for (unsigned d = 0; d < dim; ++d) {
+            const double c = coordinates[std::size_t{dim} * v + d];
+            lo[d] = std::min(lo[d], c);
+            hi[d] = std::max(hi[d], c);
+        }
+    }
+    // The extent of each axis as max(|hi|, |lo|, hi - lo) scaled down by 2 first, so that
+    // hi - lo cannot overflow near the largest double.
+    double extent = 0;
+    for (unsigned d = 0; d < dim; ++d) {
+        if (!(lo[d] <= hi[d])) return 0;
+        extent = std::max(extent, 0.5 * hi[d] - 0.5 * lo[d]);
+    }
+    if (extent == 0) return 0;
+    int exponent = 0;
+    (void)std::frexp(extent, &exponent);
+    return exponent + 1;
+}
+
+std::vector<double> scaled_coordinates(std::span<const double> coordinates, int exponent) {
+    std::vector<double> scaled(coordinates.size());
+    for (std::size_t i = 0; i < coordinates.size(); ++i)
+        scaled[i] = std::ldexp(coordinates[i], -exponent);
+    return scaled;
+}
+
+}  // namespace exactmesh::generators

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// The edges of a simplicial mesh (2D triangles or 3D tetrahedra), each once, and the one
+// power-of-two scale the adaptation layer measures in (issue 13).
+//  - mesh_edges_2d / mesh_edges_3d: every edge once as (u, v) with u < v, sorted, so that an
+//    edge's number does not depend on the element order (indicators and flags are per edge).
+//  - unit_scale_exponent: the exponent E of the bounding box's largest extent (frexp), so that
+//    coordinates times 2^-E lie within about [-2^k, 2^k] of each other for the mesh's own k.
+//    Multiplying by a power of two is exact, so every floating-point quantity the indicators,
+//    gradients and error measures compute from scaled coordinates is bit for bit the same for a
+//    mesh scaled by 2^k (|k| <= 600): no squared length or area overflows or underflows.
+// Cost: O(E log E) for the sort.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "triangulation/mesh/mesh2.hpp"
+
+namespace exactmesh::generators {
+
+/// 2·#E vertex pairs (u < v), in increasing (u, v) order.
+std::vector<triangulation::VertIdx> mesh_edges_2d(
+    std::span<const triangulation::VertIdx> triangles);
+std::vector<triangulation::VertIdx> mesh_edges_3d(std::span<const triangulation::VertIdx> tets);
+
+/// The index of edge (u, v) (either order) in a sorted edge list, or kNone.
+std::uint32_t find_mesh_edge(std::span<const triangulation::VertIdx> edges,
+                             triangulation::VertIdx u, triangulation::VertIdx v);
+
+/// frexp exponent of the largest extent of the coordinates (dim per point) of the vertices the
+/// elements use; 0 for an empty or single-point mesh.
+int unit_scale_exponent(std::span<const double> coordinates, unsigned dim,
+                        std::span<const triangulation::VertIdx> elements);
+
+/// The coordinates times 2^-exponent (exact).
+std::vector<double> scaled_coordinates(std::span<const double> coordinates, int exponent);
+
+}  // namespace exactmesh::generators
