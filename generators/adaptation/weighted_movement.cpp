@@ -22,9 +22,10 @@ namespace {
 void validate_options(const WeightedMovementOptions& options, std::span<const double> indicator,
                       std::uint32_t n) {
     detail::validate_relaxation(options.relaxation);
-    if (!(std::isfinite(options.strength) && options.strength >= 0)) {
+    // Bounded so that W = 1 + c w (w <= 2 #V) and its sums stay far inside the double range.
+    if (!(options.strength >= 0 && options.strength <= 0x1p50)) {
         throw InputError("weighted movement strength " + format_number(options.strength) +
-                         " is not a finite value >= 0");
+                         " is not in [0, 2^50]");
     }
     if (indicator.size() != n) {
         throw InputError("weighted movement: " + std::to_string(indicator.size()) +

@@ -45,12 +45,12 @@ struct WeightedMovementOptions {
     std::uint32_t sweeps = 1;  ///< at most this many Jacobi sweeps; stops after one that moves
                                ///< nothing
     double relaxation = 1.0;   ///< omega in (0, 1]
-    double strength = 4.0;     ///< c >= 0: how much stiffer an edge of mean indicator is than an
-                               ///< edge where the indicator vanishes (W = 1 + c w)
+    double strength = 4.0;  ///< c in [0, 2^50]: how much stiffer an edge of mean indicator is than
+                            ///< an edge where the indicator vanishes (W = 1 + c w)
     /// Also undo a move that lowers the smallest element quality of the vertex's star (the
     /// smart Laplacian's rule [Freitag97]; 2D 4 sqrt(3) A / sum l^2, 3D 6 sqrt(2) V / l_rms^3,
     /// scale-invariant). Off by default: crowding vertices towards a feature flattens elements
-    /// on purpose, and the guard would refuse most of those moves.
+    /// on purpose, and the guard refuses many of those moves.
     bool smart = false;
 };
 
@@ -77,8 +77,8 @@ static_assert(counter_table_complete(kWeightedMovementCounterNames));
 /// constrained unchanged). `indicator`: #V values f_v >= 0; `protected_vertices`: empty or #V
 /// flags (nonzero = keep in place).
 /// @pre triangles strictly counter-clockwise, neighbors consistent, coordinates finite.
-/// @throws InputError when the indicator is not #V finite values >= 0, the strength is not
-///         finite and >= 0, the relaxation is not in (0, 1], protected_vertices has another
+/// @throws InputError when the indicator is not #V finite values >= 0, the strength is not in
+///         [0, 2^50], the relaxation is not in (0, 1], protected_vertices has another
 ///         length, or the mesh arrays are inconsistent.
 WeightedMovementCounters weighted_movement_2d(
     triangulation::Triangulation2& mesh, std::span<const double> indicator,

@@ -400,6 +400,8 @@ TEST(Generators_WeightedMovement, BadIndicatorsAndOptionsAreInputErrors) {
         gen::WeightedMovementOptions options;
         options.strength = bad;
         EXPECT_THROW(gen::weighted_movement_2d(mesh2, good2, 0, options), em::InputError) << bad;
+        options.strength = 0x1p51;
+        EXPECT_THROW(gen::weighted_movement_3d(mesh3, good3, 0, options), em::InputError);
         options.strength = 1;
         options.relaxation = bad;
         EXPECT_THROW(gen::weighted_movement_3d(mesh3, good3, 0, options), em::InputError) << bad;
