@@ -11,6 +11,7 @@
 #include "base/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
+#include "predicates/power_of_two.hpp"
 
 namespace exactmesh::generators::detail {
 
@@ -83,6 +84,14 @@ SweepTally guarded_sweeps(std::vector<double>& coordinates, const VertexStars& s
         tally.free_vertices += !fixed[v] && stars.neighbor_start[v] != stars.neighbor_start[v + 1];
     }
     std::vector<double> target(coordinates.size());
+    // Smart mode: the quality of every element at the current positions, kept up to date as
+    // moves are accepted (each is then evaluated once per trial move, not twice).
+    std::vector<double> element_quality;
+    std::vector<double> trial_quality;
+    if (settings.smart) {
+        element_quality.resize(stars.elements.size() / (D + 1));
+        for (std::uint32_t e = 0; e < element_quality.size(); ++e) element_quality[e] = quality(e);
+    }
     for (std::uint32_t sweep = 0; sweep < settings.sweeps; ++sweep) {
         const std::uint64_t moves_before = tally.moves;
         // Jacobi: every target from the positions before the sweep.
@@ -132,14 +141,6 @@ SweepTally guarded_sweeps(std::vector<double>& coordinates, const VertexStars& s
             if (same || !finite) continue;
             const std::uint32_t star_first = stars.element_start[v],
                                 star_last = stars.element_start[v + 1];
-            const auto worst_quality = [&] {
-                double worst = 1;
-                for (std::uint32_t i = star_first; i < star_last; ++i) {
-                    worst = std::min(worst, quality(stars.elements[i]));
-                }
-                return worst;
-            };
-            const double worst_before = settings.smart ? worst_quality() : 0.0;
             std::array<double, D> old{};
             for (unsigned d = 0; d < D; ++d) old[d] = p[d], p[d] = t[d];
             bool valid = true;
@@ -148,11 +149,26 @@ SweepTally guarded_sweeps(std::vector<double>& coordinates, const VertexStars& s
             }
             // Smart mode compares rounded qualities: a heuristic about shape, never about
             // validity, which the exact test above has already settled.
-            const bool worse = valid && settings.smart && worst_quality() < worst_before;
+            bool worse = false;
+            if (valid && settings.smart) {
+                double worst_before = 1, worst_after = 1;
+                trial_quality.clear();
+                for (std::uint32_t i = star_first; i < star_last; ++i) {
+                    trial_quality.push_back(quality(stars.elements[i]));
+                    worst_before = std::min(worst_before, element_quality[stars.elements[i]]);
+                    worst_after = std::min(worst_after, trial_quality.back());
+                }
+                worse = worst_after < worst_before;
+            }
             if (!valid || worse) {
                 for (unsigned d = 0; d < D; ++d) p[d] = old[d];
                 ++(valid ? tally.worse : tally.undone);
                 continue;
+            }
+            if (settings.smart) {
+                for (std::uint32_t i = star_first; i < star_last; ++i) {
+                    element_quality[stars.elements[i]] = trial_quality[i - star_first];
+                }
             }
             ++tally.moves;
         }
@@ -206,9 +222,9 @@ double element_quality_2d(const double* a, const double* b, const double* c) {
     const double largest =
         std::max({std::fabs(e[0][0]), std::fabs(e[0][1]), std::fabs(e[1][0]), std::fabs(e[1][1])});
     if (!(largest > 0) || !std::isfinite(largest)) return 0;
-    const int shift = -std::ilogb(largest);
+    const predicates::PowerOfTwo scale(predicates::unit_shift(largest));
     for (auto& row : e) {
-        for (double& x : row) x = std::ldexp(x, shift);
+        for (double& x : row) x = scale(x);
     }
     const double twice_area = e[0][0] * e[1][1] - e[0][1] * e[1][0];
     const double fx = e[1][0] - e[0][0], fy = e[1][1] - e[0][1];
@@ -227,9 +243,9 @@ double element_quality_3d(const double* a, const double* b, const double* c, con
         for (unsigned i = 0; i < 3; ++i) largest = std::max(largest, std::fabs(e[i][k]));
     }
     if (!(largest > 0) || !std::isfinite(largest)) return 0;
-    const int shift = -std::ilogb(largest);
+    const predicates::PowerOfTwo scale(predicates::unit_shift(largest));
     for (auto& row : e) {
-        for (double& x : row) x = std::ldexp(x, shift);
+        for (double& x : row) x = scale(x);
     }
     // orient3d's sign convention: positive orientation is det[a-d; b-d; c-d] > 0, which is
     // -det[b-a; c-a; d-a].
