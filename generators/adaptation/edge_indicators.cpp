@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "base/enum_names.hpp"
+#include "generators/adaptation/mesh_edges.hpp"
 
 namespace exactmesh::generators {
 
@@ -140,6 +141,18 @@ std::vector<double> edge_indicator(EdgeIndicator indicator, std::span<const doub
     return result;
 }
 
+std::vector<double> mesh_edge_indicator(EdgeIndicator indicator, std::span<const double> xyz,
+                                        unsigned dim, std::span<const VertIdx> elements,
+                                        std::span<const VertIdx> edges,
+                                        std::span<const double> values) {
+    const int exponent = unit_scale_exponent(xyz, dim, elements);
+    const std::vector<double> unit = scaled_coordinates(xyz, exponent);
+    std::vector<double> gradients;
+    if (indicator == EdgeIndicator::SecondDifference || indicator == EdgeIndicator::Loehner)
+        gradients = recover_gradients(unit, dim, elements, values);
+    return edge_indicator(indicator, unit, dim, edges, values, gradients);
+}
+
 std::vector<std::uint8_t> flag_above_mean(std::span<const double> indicator, double threshold) {
     std::vector<std::uint8_t> flags(indicator.size(), 0);
     if (indicator.empty()) return flags;
@@ -163,6 +176,67 @@ std::vector<std::uint8_t> flag_largest(std::span<const double> indicator, std::s
     for (std::size_t k = 0; k < count; ++k)
         if (indicator[order[k]] > 0) flags[order[k]] = 1;
     return flags;
+}
+
+namespace {
+
+// The edge numbers of each element's edges (in the element's pair order).
+std::vector<std::uint32_t> element_edges(std::span<const VertIdx> elements, unsigned dim,
+                                         std::span<const VertIdx> edges) {
+    const unsigned corners = dim + 1;
+    std::vector<std::uint32_t> result;
+    result.reserve(elements.size() / corners * (dim == 2 ? 3 : 6));
+    for (std::size_t t = 0; t + corners <= elements.size(); t += corners)
+        for (unsigned i = 0; i < corners; ++i)
+            for (unsigned j = i + 1; j < corners; ++j)
+                result.push_back(find_mesh_edge(edges, elements[t + i], elements[t + j]));
+    return result;
+}
+
+// The one-pass closure of `flags` over the elements (per_element edges each), into `closed`;
+// the number of flagged edges after it.
+std::uint64_t close_flags(std::span<const std::uint32_t> element_edges, unsigned per_element,
+                          std::span<const std::uint8_t> flags, std::vector<std::uint8_t>& closed) {
+    closed.assign(flags.begin(), flags.end());
+    for (std::size_t t = 0; t + per_element <= element_edges.size(); t += per_element) {
+        bool any = false;
+        for (unsigned k = 0; k < per_element; ++k) any = any || flags[element_edges[t + k]] != 0;
+        if (!any) continue;
+        for (unsigned k = 0; k < per_element; ++k) closed[element_edges[t + k]] = 1;
+    }
+    return static_cast<std::uint64_t>(std::count(closed.begin(), closed.end(), 1));
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> refinement_flags(std::span<const VertIdx> elements, unsigned dim,
+                                           std::span<const VertIdx> edges,
+                                           std::span<const double> indicator, double threshold,
+                                           std::uint64_t room, bool budget,
+                                           std::uint64_t* flagged, std::uint64_t* closure) {
+    const unsigned per_element = dim == 2 ? 3 : 6;
+    const std::vector<std::uint32_t> edges_of = element_edges(elements, dim, edges);
+    std::vector<std::uint8_t> flags = flag_above_mean(indicator, threshold), closed;
+    std::uint64_t count = static_cast<std::uint64_t>(std::count(flags.begin(), flags.end(), 1));
+    std::uint64_t total = close_flags(edges_of, per_element, flags, closed);
+    if (budget && total > room) {
+        // The largest k whose closure fits the room, by bisection (the closure grows with k).
+        std::size_t lo = 0, hi = static_cast<std::size_t>(count);
+        while (lo < hi) {
+            const std::size_t mid = (lo + hi + 1) / 2;
+            std::vector<std::uint8_t> trial;
+            if (close_flags(edges_of, per_element, flag_largest(indicator, mid), trial) <= room)
+                lo = mid;
+            else
+                hi = mid - 1;
+        }
+        flags = flag_largest(indicator, lo);
+        count = static_cast<std::uint64_t>(std::count(flags.begin(), flags.end(), 1));
+        total = close_flags(edges_of, per_element, flags, closed);
+    }
+    if (flagged != nullptr) *flagged = count;
+    if (closure != nullptr) *closure = total - count;
+    return closed;
 }
 
 }  // namespace exactmesh::generators

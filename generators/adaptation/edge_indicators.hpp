@@ -57,6 +57,14 @@ std::vector<double> edge_indicator(EdgeIndicator indicator,
                                    std::span<const double> values,
                                    std::span<const double> gradients);
 
+/// The indicator on every edge of a mesh in its own coordinates: the unit scale
+/// (mesh_edges.hpp), the gradients when the indicator needs them, then edge_indicator.
+std::vector<double> mesh_edge_indicator(EdgeIndicator indicator, std::span<const double> coordinates,
+                                        unsigned dim,
+                                        std::span<const triangulation::VertIdx> elements,
+                                        std::span<const triangulation::VertIdx> edges,
+                                        std::span<const double> values);
+
 /// Edges whose indicator exceeds threshold times the mean over all edges (the seed material's
 /// rule); 1 per flagged edge.
 std::vector<std::uint8_t> flag_above_mean(std::span<const double> indicator, double threshold);
@@ -64,5 +72,17 @@ std::vector<std::uint8_t> flag_above_mean(std::span<const double> indicator, dou
 /// The `count` edges with the largest indicator (ties broken by the lower edge number), for a
 /// vertex budget; 0-valued edges are never flagged.
 std::vector<std::uint8_t> flag_largest(std::span<const double> indicator, std::size_t count);
+
+/// The edges to refine (one flag per edge of `edges`, mesh_edges_2d/3d of `elements`, dim + 1
+/// vertices each): flagged by the indicator above threshold × mean, then the isotropic closure
+/// (one pass: every element with an edge the indicator flagged gets all its edges flagged), and
+/// under a budget of `room` new vertices (budget true) the largest indicators whose closure
+/// fits it. *flagged and *closure (when not null) count the indicator's and the closure's edges.
+std::vector<std::uint8_t> refinement_flags(std::span<const triangulation::VertIdx> elements,
+                                           unsigned dim,
+                                           std::span<const triangulation::VertIdx> edges,
+                                           std::span<const double> indicator, double threshold,
+                                           std::uint64_t room, bool budget,
+                                           std::uint64_t* flagged, std::uint64_t* closure);
 
 }  // namespace exactmesh::generators

@@ -17,65 +17,12 @@ using triangulation::VertIdx;
 
 namespace {
 
-// The closure of `flags` over the triangles (every triangle with a flagged edge gets three),
-// written into `closed`; returns the number of flagged edges after it.
-std::uint64_t close_flags(std::span<const std::uint32_t> triangle_edges,
-                          std::span<const std::uint8_t> flags, std::vector<std::uint8_t>& closed) {
-    closed.assign(flags.begin(), flags.end());
-    for (std::size_t t = 0; t + 2 < triangle_edges.size(); t += 3) {
-        if (flags[triangle_edges[t]] || flags[triangle_edges[t + 1]] ||
-            flags[triangle_edges[t + 2]])
-            closed[triangle_edges[t]] = closed[triangle_edges[t + 1]] =
-                closed[triangle_edges[t + 2]] = 1;
-    }
-    return static_cast<std::uint64_t>(std::count(closed.begin(), closed.end(), 1));
-}
-
-std::vector<std::uint32_t> edges_of_triangles(std::span<const VertIdx> triangles,
-                                              std::span<const VertIdx> edges) {
-    std::vector<std::uint32_t> result(triangles.size());
-    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
-        for (unsigned k = 0; k < 3; ++k)
-            result[t + k] = find_mesh_edge(edges, triangles[t + k], triangles[t + (k + 1) % 3]);
-    return result;
-}
-
 struct NewPoint {
     double x, y;
     VertIdx a, b;  // the flagged edge it halves
 };
 
 }  // namespace
-
-std::vector<std::uint8_t> refinement_flags_2d(std::span<const VertIdx> triangles,
-                                              std::span<const VertIdx> edges,
-                                              std::span<const double> indicator, double threshold,
-                                              std::uint64_t room, bool budget,
-                                              std::uint64_t* flagged, std::uint64_t* closure) {
-    const std::vector<std::uint32_t> triangle_edges = edges_of_triangles(triangles, edges);
-    std::vector<std::uint8_t> flags = flag_above_mean(indicator, threshold), closed;
-    std::uint64_t count = static_cast<std::uint64_t>(std::count(flags.begin(), flags.end(), 1));
-    std::uint64_t total = close_flags(triangle_edges, flags, closed);
-    if (budget && total > room) {
-        // The largest k whose closure fits the room, by bisection (the closure's size grows
-        // with k).
-        std::size_t lo = 0, hi = static_cast<std::size_t>(count);
-        while (lo < hi) {
-            const std::size_t mid = (lo + hi + 1) / 2;
-            std::vector<std::uint8_t> trial;
-            if (close_flags(triangle_edges, flag_largest(indicator, mid), trial) <= room)
-                lo = mid;
-            else
-                hi = mid - 1;
-        }
-        flags = flag_largest(indicator, lo);
-        count = static_cast<std::uint64_t>(std::count(flags.begin(), flags.end(), 1));
-        total = close_flags(triangle_edges, flags, closed);
-    }
-    if (flagged != nullptr) *flagged = count;
-    if (closure != nullptr) *closure = total - count;
-    return closed;
-}
 
 bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
                         const FieldSource& field, InsertionCounters2& counters) {
@@ -87,17 +34,11 @@ bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
 
     // 1-2. Indicator, flags, closure.
     const std::vector<VertIdx> edges = mesh_edges_2d(mesh.triangles);
-    const int exponent = unit_scale_exponent(mesh.xy, 2, mesh.triangles);
-    const std::vector<double> unit = scaled_coordinates(mesh.xy, exponent);
-    std::vector<double> gradients;
-    if (options.indicator == EdgeIndicator::SecondDifference ||
-        options.indicator == EdgeIndicator::Loehner)
-        gradients = recover_gradients(unit, 2, mesh.triangles, state.values);
-    const std::vector<double> indicator =
-        edge_indicator(options.indicator, unit, 2, edges, state.values, gradients);
+    const std::vector<double> indicator = mesh_edge_indicator(
+        options.indicator, mesh.xy, 2, mesh.triangles, edges, state.values);
     std::uint64_t flagged = 0, closure = 0;
-    const std::vector<std::uint8_t> flags = refinement_flags_2d(
-        mesh.triangles, edges, indicator, options.threshold, room, budget, &flagged, &closure);
+    const std::vector<std::uint8_t> flags = refinement_flags(
+        mesh.triangles, 2, edges, indicator, options.threshold, room, budget, &flagged, &closure);
     if (flagged == 0) return false;
 
     // 3. The points: pieces split at their curve's (or chord's) midpoint, interior edges at

@@ -66,17 +66,6 @@ inline constexpr std::array kInsertionCounterNames2 =
                      outside_skipped, smoothing_moves, smoothing_undone);
 static_assert(counter_table_complete(kInsertionCounterNames2));
 
-/// The edges to refine (one flag per edge of `edges`, mesh_edges_2d of `triangles`): flagged
-/// by the indicator, closed (every triangle with a flag gets three), and under a budget of
-/// `room` new vertices (0: none) the largest indicators whose closure fits it.
-/// @return the flags; *flagged and *closure (when not null) count the indicator's and the
-/// closure's edges.
-std::vector<std::uint8_t> refinement_flags_2d(std::span<const triangulation::VertIdx> triangles,
-                                              std::span<const triangulation::VertIdx> edges,
-                                              std::span<const double> indicator, double threshold,
-                                              std::uint64_t room, bool budget,
-                                              std::uint64_t* flagged, std::uint64_t* closure);
-
 /// One cycle on `state` (state.values must hold the field at its vertices); returns false when
 /// no edge was flagged (or the budget is reached), the mesh unchanged.
 /// @throws InputError as sample_field; GeometryError from the triangulation only on a bug.

@@ -129,7 +129,7 @@ TEST(Generators_EdgeFlags, ThresholdBudgetAndClosure) {
     std::mt19937_64 random(7);
     for (double& x : indicator) x = std::uniform_real_distribution<double>(0, 1)(random);
     std::uint64_t flagged = 0, closure = 0;
-    const auto flags = gen::refinement_flags_2d(mesh.triangles, edges, indicator, 1.5, 0, false,
+    const auto flags = gen::refinement_flags(mesh.triangles, 2, edges, indicator, 1.5, 0, false,
                                                 &flagged, &closure);
     // Closed (one pass, on the indicator's flags): every triangle with an edge the indicator
     // flagged has all three flagged; an edge is flagged only by the indicator or by a triangle
@@ -150,7 +150,7 @@ TEST(Generators_EdgeFlags, ThresholdBudgetAndClosure) {
     EXPECT_EQ(flagged + closure,
               static_cast<std::uint64_t>(std::count(flags.begin(), flags.end(), 1)));
     // A budget of 40 new vertices: the closure fits it.
-    const auto budgeted = gen::refinement_flags_2d(mesh.triangles, edges, indicator, 1.5, 40, true,
+    const auto budgeted = gen::refinement_flags(mesh.triangles, 2, edges, indicator, 1.5, 40, true,
                                                    &flagged, &closure);
     const auto count = std::count(budgeted.begin(), budgeted.end(), 1);
     EXPECT_LE(count, 40);
