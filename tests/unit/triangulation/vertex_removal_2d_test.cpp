@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <set>
 #include <utility>
@@ -508,4 +509,21 @@ TEST(VertexRemoval2d, CounterTableNamesEveryField) {
     EXPECT_EQ(rows[0].second, 3u);
     EXPECT_STREQ(tri::removal_status_name(RemovalStatus::ChordBlocked),
                  "the merged constraint would cross or touch another vertex of its star");
+}
+
+TEST(VertexRemoval2d, CentreOfALargeNearlyCocircularRing) {
+    // 1024 points on a circle, rounded (nearly cocircular: the incircle filters fail often), and
+    // the centre, whose star is the whole ring: one hole of 1024 triangles.
+    std::vector<double> xy{0, 0};
+    const int n = 1024;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * std::numbers::pi * i / n;
+        xy.insert(xy.end(), {std::cos(a), std::sin(a)});
+    }
+    tri::Triangulation2 mesh = cdt(xy, {}, false);
+    tri::VertexRemoval2Counters counters;
+    ASSERT_EQ(tri::remove_vertex_2d(mesh, 0, &counters), RemovalStatus::Removed);
+    EXPECT_EQ(counters.star_triangles, static_cast<std::uint64_t>(n));
+    EXPECT_EQ(mesh.triangle_count(), static_cast<std::uint32_t>(n - 2));
+    expect_constrained_delaunay(mesh, false, "without the centre");
 }
