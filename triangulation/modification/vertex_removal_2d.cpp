@@ -477,7 +477,7 @@ VertexRemoval2Result remove_vertices_2d(Triangulation2& mesh, std::span<const Ve
     result.status.reserve(vertices.size());
     const std::uint32_t n = mesh.vertex_count();
     std::vector<std::uint8_t> removed(n, 0);
-    {
+    try {
         HalfEdgeEdit edit(mesh);
         Remover remover(edit.mesh());
         for (const VertIdx v : vertices) {
@@ -488,6 +488,11 @@ VertexRemoval2Result remove_vertices_2d(Triangulation2& mesh, std::span<const Ve
                 ++result.removed;
             }
         }
+    } catch (...) {
+        // The edit has written the mesh back: the removals made so far stay, without the dead
+        // triangle slots they left; the vertex numbering is not compacted.
+        compact_triangles(mesh);
+        throw;
     }
     compact_triangles(mesh);
     result.old_to_new.assign(n, kNone);

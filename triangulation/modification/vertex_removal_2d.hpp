@@ -103,6 +103,8 @@ struct VertexRemoval2Result {
 /// vertices and remove only added ones); their numbers stay the same when no vertex below
 /// them is removed, so with protected_below = input_vertex_count the input's keep theirs.
 /// @pre as remove_vertex_2d.
+/// @throws InternalError as remove_vertex_2d; the removals before it stay made (a valid mesh,
+///         the removed vertices' coordinates still in mesh.xy, numbering not compacted).
 VertexRemoval2Result remove_vertices_2d(Triangulation2& mesh, std::span<const VertIdx> vertices,
                                         VertIdx protected_below = 0,
                                         VertexRemoval2Counters* counters = nullptr);
