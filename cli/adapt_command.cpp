@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
-// `exactmesh adapt`: solution-adaptive meshing of a domain (issue 13). The initial mesh is made
-// by a generator of the registry (a .poly, or a built-in sample domain whose curves adaptation
-// keeps), the field is an expression (the solver's stand-in), and each cycle refines where the
-// indicator says (generators/adaptation/); per cycle it prints the vertex and triangle counts
-// and the maximum and L2 error of the field's piecewise-linear interpolant.
+// `exactmesh adapt`: solution-adaptive meshing (issue 13). 2D: the initial mesh is made by a
+// generator of the registry (a .poly, or a built-in sample domain whose curves adaptation
+// keeps); 3D: a tetrahedral mesh of a convex domain (IN.node IN.ele, or --domain cube). The field
+// is an expression (the solver's stand-in) or, in 3D, a .node attribute; each cycle refines where
+// the indicator says (generators/adaptation/), and a transient run (--steps) derefines where it
+// no longer does. Per cycle or step it prints the vertex and element counts and, with an
+// analytic field, the maximum and L2 error of the field's piecewise-linear interpolant; those
+// lines and the final exact check are outside construct_seconds.
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -12,6 +15,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "base/enum_names.hpp"
@@ -23,14 +27,23 @@
 #include "cli/output.hpp"
 #include "cli/size_expression.hpp"
 #include "generators/adaptation/adaptive_mesh_2d.hpp"
+#include "generators/adaptation/derefinement_2d.hpp"
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
+#include "generators/adaptation/insertion_adaptation_3d.hpp"
 #include "generators/adaptation/interpolation_error.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
+#include "io/gmsh_format.hpp"
+#include "io/tetgen_format.hpp"
 #include "io/triangle_format.hpp"
+#include "io/vtk_format.hpp"
+#include "predicates/stats.hpp"
+#include "triangulation/checks/check_3d.hpp"
+#include "triangulation/delaunay/delaunay_3d.hpp"
+#include "triangulation/mesh/flip_3d.hpp"
 
 namespace exactmesh::cli {
 
@@ -48,9 +61,11 @@ constexpr std::array<EnumName<AdaptMethod>, 1> kAdaptMethodNames{{
 
 struct AdaptArguments {
     std::string input;
+    std::string ele;
     std::string domain;
     std::string output;
     std::string field;
+    std::string field_file;
     std::string method = "insertion";
     std::string indicator = "second-difference";
     std::string generator = "delaunay-refinement";
@@ -58,55 +73,121 @@ struct AdaptArguments {
     std::uint32_t cycles = 3;
     std::uint64_t max_vertices = 0;
     double threshold = 1.0;
+    bool derefine = false;
+    double derefine_threshold = 0.2;
     std::uint32_t smooth = 0;
+    std::uint32_t move = 0;
+    std::uint32_t steps = 0;
+    double dt = 0;
     double time = 0;
     bool quality = false;
     bool stats = false;
 };
 
-/// The most cycles: each at least doubles nothing, but a run that asks for more is a typo.
+/// The most cycles, steps and sweeps: far beyond what converges; more is a typo.
 constexpr std::uint32_t kMaxCycles = 1000;
-constexpr std::uint32_t kMaxSmoothSweeps = 1000;
+constexpr std::uint32_t kMaxSweeps = 1000;
+constexpr std::uint32_t kMaxSteps = 100000;
 
-void print_cycle(std::uint64_t cycle, const gen::AdaptiveMesh2& state,
-                 const gen::AnalyticField& field, double t) {
-    const gen::InterpolationError error =
-        gen::interpolation_error(state.mesh.xy, 2, state.mesh.triangles, state.values, field, t);
-    std::cout << "cycle " << cycle << ": vertices " << state.mesh.vertex_count() << " triangles "
-              << state.mesh.triangle_count() << " max_error " << format_approximate(error.maximum)
-              << " l2_error " << format_approximate(error.l2) << '\n';
+/// "cycle 3: vertices 1234 triangles 2400 max_error 0.01 l2_error 0.001" (errors with a field).
+void print_progress(const std::string& label, std::uint64_t vertices, const char* elements,
+                    std::uint64_t element_count, const gen::AnalyticField* field,
+                    std::span<const double> xyz, unsigned dim,
+                    std::span<const tri::VertIdx> element_vertices, std::span<const double> values,
+                    double t) {
+    std::cout << label << ": vertices " << vertices << ' ' << elements << ' ' << element_count;
+    if (field != nullptr) {
+        const gen::InterpolationError error =
+            gen::interpolation_error(xyz, dim, element_vertices, values, *field, t);
+        std::cout << " max_error " << format_approximate(error.maximum) << " l2_error "
+                  << format_approximate(error.l2);
+    }
+    std::cout << '\n';
 }
 
-void run_adapt(const AdaptArguments& arguments) {
-    if (arguments.input.empty() == arguments.domain.empty())
-        throw InputError("give either an input .poly file or --domain NAME (not both)");
-    if (arguments.field.empty()) throw InputError("--field EXPR is required");
+/// The cycles and steps of a run, the same for 2D and 3D: `refine` runs one cycle (false: done),
+/// `derefine` one pass, `resample` puts the field at time t on the mesh, `progress` prints a
+/// line. Returns the seconds spent in the cycles and passes alone.
+template <class Refine, class Derefine, class Resample, class Progress>
+double run_cycles(const AdaptArguments& arguments, Refine&& refine, Derefine&& derefine,
+                  Resample&& resample, Progress&& progress) {
+    double seconds = 0;
+    const auto timed = [&](auto&& work) {
+        const auto start = std::chrono::steady_clock::now();
+        const auto result = work();
+        seconds += seconds_since(start);
+        return result;
+    };
+    progress("cycle 0", arguments.time);
+    if (arguments.steps == 0) {
+        for (std::uint32_t cycle = 1; cycle <= arguments.cycles; ++cycle) {
+            if (!timed([&] { return refine(arguments.time); })) break;
+            progress("cycle " + std::to_string(cycle), arguments.time);
+        }
+        return seconds;
+    }
+    for (std::uint32_t step = 1; step <= arguments.steps; ++step) {
+        const double t = arguments.time + step * arguments.dt;
+        timed([&] {
+            resample(t);
+            if (arguments.derefine) derefine();
+            for (std::uint32_t cycle = 0; cycle < arguments.cycles; ++cycle)
+                if (!refine(t)) break;
+            return true;
+        });
+        progress("step " + std::to_string(step) + " t " + format_number(t), t);
+    }
+    return seconds;
+}
+
+void check_arguments(const AdaptArguments& arguments) {
+    if (arguments.field.empty() == arguments.field_file.empty())
+        throw InputError("give either --field EXPR or --field-file FILE (one of them)");
     (void)parse_name(kAdaptMethodNames, arguments.method, "adaptation method");
-    if (!(arguments.threshold >= 0) || !std::isfinite(arguments.threshold))
-        throw InputError("--threshold must be a finite number >= 0 (got " +
-                         format_number(arguments.threshold) + ")");
+    const auto finite_at_least = [](const char* name, double value, double least) {
+        if (!(value >= least) || !std::isfinite(value))
+            throw InputError(std::string(name) + " must be a finite number >= " +
+                             format_number(least) + " (got " + format_number(value) + ")");
+    };
+    finite_at_least("--threshold", arguments.threshold, 0);
+    finite_at_least("--derefine-threshold", arguments.derefine_threshold, 0);
+    finite_at_least("--dt", arguments.dt, 0);
     if (!std::isfinite(arguments.time))
         throw InputError("--time must be finite (got " + format_number(arguments.time) + ")");
-    const gen::AnalyticField field = field_from_expression(arguments.field);
-    const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(arguments.generator);
+    if (arguments.steps > 0 && arguments.field.empty())
+        throw InputError("--steps needs an analytic --field (a field file has no time)");
+}
+
+gen::AdaptationOptions adaptation_options(const AdaptArguments& arguments) {
     gen::AdaptationOptions options;
     options.indicator = gen::edge_indicator_from_name(arguments.indicator);
     options.threshold = arguments.threshold;
     options.max_vertices = arguments.max_vertices;
     options.smoothing_sweeps = arguments.smooth;
+    options.movement_sweeps = arguments.move;
+    return options;
+}
 
+void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* field) {
+    if (!arguments.field_file.empty())
+        throw InputError(
+            "--field-file: a 2D run starts from a .poly or --domain, whose vertices "
+            "no field file can match; give --field EXPR (field files are read for "
+            "3D meshes, IN.node IN.ele)");
+    const gen::AdaptationOptions options = adaptation_options(arguments);
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
     if (!arguments.input.empty())
         refuse_to_overwrite_inputs({arguments.input, io::poly_node_path(arguments.input)}, files);
-
-    gen::SizeFunction size = arguments.size.empty() ? gen::SizeFunction() : [&] {
+    const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(arguments.generator);
+    gen::SizeFunction size;
+    if (!arguments.size.empty()) {
         double uniform = 0;
-        if (gen::parse_uniform_size(arguments.size, uniform))
-            return gen::SizeFunction::uniform(uniform);
-        return size_from_expression(arguments.size);
-    }();
+        size = gen::parse_uniform_size(arguments.size, uniform)
+                   ? gen::SizeFunction::uniform(uniform)
+                   : size_from_expression(arguments.size);
+    }
     io::PolyFile poly;
     std::vector<gen::Curve2> curves;
     std::vector<gen::SegmentCurve> segment_curves;
@@ -139,24 +220,35 @@ void run_adapt(const AdaptArguments& arguments) {
         poly, file, [&] { return generator.run_on_domain(domain, mesh_options); });
     print_warnings(initial.mesh.warnings);
 
+    gen::AdaptiveMesh2 state =
+        gen::make_adaptive_mesh_2d(std::move(initial.mesh), poly.vertices.xy, poly.segments,
+                                   poly.holes, curves, segment_curves);
+    state.values = gen::sample_field(*field, state.mesh.xy, 2, arguments.time);
     gen::InsertionCounters2 counters;
-    const auto [state, stats, seconds] = timed_construction([&] {
-        gen::AdaptiveMesh2 s =
-            gen::make_adaptive_mesh_2d(std::move(initial.mesh), poly.vertices.xy, poly.segments,
-                                       poly.holes, curves, segment_curves);
-        s.values = gen::sample_field(field, s.mesh.xy, 2, arguments.time);
-        const gen::FieldSource source{&field, arguments.time};
-        for (std::uint32_t cycle = 0; cycle < arguments.cycles; ++cycle) {
-            if (!gen::insertion_cycle_2d(s, options, source, counters)) break;
-        }
-        return s;
-    });
-    // The per-cycle report needs the meshes of every cycle; the run above is timed alone, so
-    // the checks and errors are measured on its result here.
-    const std::string problem = gen::check_adaptive_mesh_2d(state, poly.vertices.xy);
+    gen::DerefinementCounters2 derefinement;
+    gen::DerefinementOptions derefine_options{options.indicator, arguments.derefine_threshold};
+    gen::FieldSource source{field, arguments.time};
+    predicates::reset_thread_stats();
+    const double seconds = run_cycles(
+        arguments,
+        [&](double t) {
+            source.t = t;
+            return gen::insertion_cycle_2d(state, options, source, counters);
+        },
+        [&] { gen::derefinement_pass_2d(state, derefine_options, derefinement); },
+        [&](double t) { state.values = gen::sample_field(*field, state.mesh.xy, 2, t); },
+        [&](const std::string& label, double t) {
+            const predicates::PredicateStats kept = predicates::thread_stats();
+            print_progress(label, state.mesh.vertex_count(), "triangles",
+                           state.mesh.triangle_count(), field, state.mesh.xy, 2,
+                           state.mesh.triangles, state.values, t);
+            (void)kept;
+        });
+    const predicates::PredicateStats stats = predicates::thread_stats();
+    const std::string problem =
+        gen::check_adaptive_mesh_2d(state, poly.vertices.xy, arguments.move == 0);
     if (!problem.empty())
         throw Error("internal: the adapted mesh fails its exact check: " + problem);
-    print_cycle(counters.cycles, state, field, arguments.time);
 
     tri::Cdt2Result result;
     result.mesh = state.mesh;
@@ -177,9 +269,143 @@ void run_adapt(const AdaptArguments& arguments) {
         report.seconds = seconds;
         std::cout << gen::quality_report_text(report);
     }
+    if (arguments.stats) {
+        auto named = counters_by_name(gen::kInsertionCounterNames2, counters);
+        if (arguments.derefine) {
+            for (const auto& [name, value] :
+                 counters_by_name(gen::kDerefinementCounterNames2, derefinement))
+                named.emplace_back("derefinement_" + name, value);
+        }
+        print_construction_stats(named, stats, seconds);
+    }
+}
+
+/// --domain cube: the Delaunay tetrahedralization of a 6 x 6 x 6 grid of points in the unit
+/// cube (coordinates k / 5, the faces at exactly 0 and 1).
+tri::Tetrahedralization3 cube_mesh() {
+    std::vector<double> xyz;
+    for (int k = 0; k <= 5; ++k)
+        for (int j = 0; j <= 5; ++j)
+            for (int i = 0; i <= 5; ++i) xyz.insert(xyz.end(), {i / 5.0, j / 5.0, k / 5.0});
+    return tri::delaunay_3d_algorithm("green-sibson")(xyz, {}).mesh;
+}
+
+void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* field) {
+    if (arguments.derefine)
+        throw InputError("--derefine: 3D derefinement is not built yet (2D only)");
+    const gen::AdaptationOptions options = adaptation_options(arguments);
+    const fs::path output = arguments.output;
+    const OutputFormat format = output_format(output);
+    if (format == OutputFormat::Svg) throw InputError(output.string() + ": no .svg in 3D");
+    const std::vector<fs::path> files = output_files(output, format, {".face", ".neigh", ".node"});
+    tri::Tetrahedralization3 mesh;
+    std::uint32_t base = 0, ele_base = 0;
+    if (!arguments.domain.empty()) {
+        if (arguments.domain != "cube")
+            throw InputError("unknown 3D domain '" + arguments.domain + "' (known: cube)");
+        mesh = cube_mesh();
+    } else {
+        refuse_to_overwrite_inputs({arguments.input, arguments.ele, arguments.field_file}, files);
+        const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
+        const io::TetgenEleFile ele =
+            io::read_tetgen_ele(arguments.ele, nodes.first_index, nodes.vertex_count());
+        base = nodes.first_index;
+        ele_base = ele.first_index;
+        mesh.xyz = nodes.xyz;
+        mesh.tets = ele.tets;
+        const tri::Check3Numbering numbering{nodes.first_index, ele.first_index,
+                                             io::kTetgenFileCorners};
+        try {
+            tri::link_neighbors_3d(mesh, numbering);
+        } catch (const InputError& error) {
+            throw InputError(arguments.ele + ": " + error.what());
+        }
+        // Exact: positive orientation, faces shared by at most two, a closed convex boundary.
+        if (const tri::Check3Report report =
+                tri::check_tetrahedralization_3d(mesh.xyz, mesh.tets, {}, numbering);
+            !report.ok) {
+            throw InputError(arguments.ele +
+                             ": not a tetrahedralization of a convex domain "
+                             "(3D adaptation inserts by Delaunay into its hull): " +
+                             report.problem);
+        }
+    }
+    gen::AdaptiveMesh3 state = gen::make_adaptive_mesh_3d(mesh);
+    const std::vector<double> fixed_xyz = state.mesh.xyz;
+    if (field != nullptr) {
+        state.values = gen::sample_field(*field, state.mesh.xyz, 3, arguments.time);
+    } else {
+        const io::TetgenNodeFile values = io::read_tetgen_node(arguments.field_file);
+        if (values.attribute_count == 0 || values.xyz != state.mesh.xyz)
+            throw InputError(arguments.field_file +
+                             ": a field file must be a .node with the mesh's points, in its "
+                             "order, and the field as its first attribute");
+        for (std::size_t v = 0; v < values.vertex_count(); ++v)
+            state.values.push_back(values.attributes[v * values.attribute_count]);
+    }
+    gen::InsertionCounters3 counters;
+    gen::FieldSource source{field, arguments.time};
+    predicates::reset_thread_stats();
+    const double seconds = run_cycles(
+        arguments,
+        [&](double t) {
+            source.t = t;
+            return gen::insertion_cycle_3d(state, options, source, counters);
+        },
+        [] {}, [&](double t) { state.values = gen::sample_field(*field, state.mesh.xyz, 3, t); },
+        [&](const std::string& label, double t) {
+            print_progress(label, state.mesh.vertex_count(), "tetrahedra", state.mesh.tet_count(),
+                           field, state.mesh.xyz, 3, state.mesh.tets, state.values, t);
+        });
+    const predicates::PredicateStats stats = predicates::thread_stats();
+    const std::string problem = gen::check_adaptive_mesh_3d(state, fixed_xyz);
+    if (!problem.empty())
+        throw Error("internal: the adapted mesh fails its exact check: " + problem);
+    const tri::Tetrahedralization3& result = state.mesh;
+    io::OutputSet set;
+    switch (format) {
+        case OutputFormat::Ele:
+            set.stage(files[0], io::format_tetgen_ele(result.tets, ele_base));
+            set.stage(files[1],
+                      io::format_tetgen_boundary_faces(result.tets, result.neighbors, base));
+            set.stage(files[2], io::format_tetgen_neigh(result.neighbors, ele_base));
+            set.stage(files[3], io::format_tetgen_node(result.xyz, base, state.values));
+            break;
+        case OutputFormat::Msh:
+            set.stage(output, io::format_msh_3d(result.xyz, result.tets));
+            break;
+        case OutputFormat::Vtu:
+            set.stage(output, io::format_vtu_3d(result.xyz, result.tets, base));
+            break;
+        case OutputFormat::Svg:
+            break;
+    }
+    commit_outputs(set);
+    std::cout << "vertices: " << result.vertex_count() << '\n'
+              << "tetrahedra: " << result.tet_count() << '\n';
     if (arguments.stats)
-        print_construction_stats(counters_by_name(gen::kInsertionCounterNames2, counters), stats,
-                                 seconds);
+        print_construction_stats(counters_by_name(gen::kInsertionCounterNames3, counters), stats,
+                                 seconds, 3);
+}
+
+void run_adapt(const AdaptArguments& arguments) {
+    check_arguments(arguments);
+    const bool three_d =
+        arguments.domain == "cube" || (!arguments.input.empty() && !arguments.ele.empty());
+    if (arguments.input.empty() == arguments.domain.empty())
+        throw InputError(
+            "give either an input (IN.poly, or IN.node IN.ele in 3D) or --domain "
+            "NAME (not both)");
+    if (!arguments.ele.empty() && io::read_node_dimension(arguments.input) != 3)
+        throw InputError(arguments.input +
+                         ": a 2D run starts from a .poly or --domain (a 2D "
+                         ".node/.ele mesh is not read yet); IN.node IN.ele must be 3D");
+    std::optional<gen::AnalyticField> field;
+    if (!arguments.field.empty()) field = field_from_expression(arguments.field);
+    if (three_d)
+        run_adapt_3d(arguments, field ? &*field : nullptr);
+    else
+        run_adapt_2d(arguments, field ? &*field : nullptr);
 }
 
 }  // namespace
@@ -188,56 +414,101 @@ void add_adapt_command(CLI::App& app) {
     auto arguments = std::make_shared<AdaptArguments>();
     CLI::App* command = app.add_subcommand(
         "adapt",
-        "Solution-adaptive meshing: refine a mesh of a domain where a field's indicator says");
-    command->add_option("input", arguments->input, "A Triangle .poly file")->type_name("IN.poly");
+        "Solution-adaptive meshing: refine (and in time derefine) a mesh where a field's "
+        "indicator says");
+    command
+        ->add_option("input", arguments->input,
+                     "2D: a Triangle .poly file (the initial mesh by --generator); 3D: a TetGen "
+                     ".node, with its .ele as the second argument (a convex domain)")
+        ->type_name("IN.poly|IN.node");
+    command->add_option("ele", arguments->ele, "3D: the TetGen .ele of IN.node")
+        ->type_name("IN.ele");
     command
         ->add_option("--domain", arguments->domain,
-                     "A built-in domain instead of IN.poly: square-with-holes, naca0012, key, "
-                     "three-element (new boundary points go on its curves)")
+                     "A built-in domain instead of the input: square-with-holes, naca0012, key, "
+                     "three-element (2D; new boundary points go on their curves), cube (3D: the "
+                     "Delaunay tetrahedralization of a 6^3 grid in the unit cube)")
         ->type_name("NAME");
     command
         ->add_option("-o,--output", arguments->output,
-                     "Output (.ele with .neigh, .node (the field as its attribute) and .poly; "
-                     ".msh; .vtu; .svg)")
+                     "Output: .ele (with .neigh, .node carrying the field as its attribute, and "
+                     ".poly in 2D or .face in 3D), .msh, .vtu, .svg (2D)")
         ->required()
         ->type_name("OUT");
     command
         ->add_option("--field", arguments->field,
-                     "The field u(x, y, z, t) (muParser), e.g. 'tanh(20 * (x + y - 1))'")
+                     "The field u(x, y, z, t) (muParser: + - * / ^ sqrt exp log sin cos tanh "
+                     "abs min max _pi), e.g. 'tanh(20 * (x + y - 1 - t))'")
         ->type_name("EXPR");
-    command->add_option("--method", arguments->method, "insertion")->capture_default_str();
+    command
+        ->add_option("--field-file", arguments->field_file,
+                     "3D: a .node with the mesh's points whose first attribute is the field "
+                     "(carried to new meshes by linear interpolation)")
+        ->type_name("FILE");
+    command
+        ->add_option("--method", arguments->method,
+                     "insertion: Delaunay point insertion at flagged edges' midpoints")
+        ->capture_default_str();
     command
         ->add_option("--indicator", arguments->indicator,
-                     "first-difference, second-difference, loehner, length-weighted")
+                     "first-difference (|du|), second-difference (|d2u/ds2| h^2 from recovered "
+                     "gradients), loehner (second over first differences with the noise filter "
+                     "0.05 |u|), length-weighted (|du| |dx|)")
         ->capture_default_str();
-    command->add_option("--generator", arguments->generator, "The generator of the initial mesh")
+    command
+        ->add_option("--generator", arguments->generator, "2D: the generator of the initial mesh")
         ->capture_default_str();
     command
         ->add_option("--size", arguments->size,
-                     "The initial mesh's size: a number or an expression in x and y")
+                     "2D: the initial mesh's size, a number or an expression in x and y "
+                     "(default: the domain's own)")
         ->type_name("NUM|EXPR");
-    command->add_option("--cycles", arguments->cycles, "Adaptation cycles")
+    command
+        ->add_option("--cycles", arguments->cycles,
+                     "Refinement cycles (per step with --steps); stops early when nothing is "
+                     "flagged or --max-vertices is reached")
         ->check(whole_number_at_most(kMaxCycles))
         ->capture_default_str();
     command
         ->add_option("--max-vertices", arguments->max_vertices,
-                     "Stop refining at this many vertices (0: no limit)")
+                     "Never refine past this many vertices: the largest indicators whose "
+                     "closure fits are taken (0: no limit)")
         ->check(whole_number_at_most(tri::kMaxPoints))
         ->capture_default_str();
     command
         ->add_option("--threshold", arguments->threshold,
                      "Flag edges whose indicator exceeds this times the mean over all edges")
         ->capture_default_str();
+    command->add_flag("--derefine", arguments->derefine,
+                      "2D, with --steps: before each step's refinement, remove vertices whose "
+                      "every edge's indicator is below --derefine-threshold times the mean");
+    command->add_option("--derefine-threshold", arguments->derefine_threshold, "See --derefine")
+        ->capture_default_str();
     command
         ->add_option("--smooth", arguments->smooth,
-                     "Laplacian smoothing sweeps after each cycle (boundary fixed)")
-        ->check(whole_number_at_most(kMaxSmoothSweeps))
+                     "Laplacian smoothing sweeps after each cycle (boundary and input vertices "
+                     "fixed; 3D: smart, a move that worsens its star is undone)")
+        ->check(whole_number_at_most(kMaxSweeps))
         ->capture_default_str();
-    command->add_option("--time", arguments->time, "The field's time t")->capture_default_str();
-    command->add_flag("--quality", arguments->quality, "Print the quality report");
+    command
+        ->add_option("--move", arguments->move,
+                     "Solution-weighted movement sweeps after each cycle: vertices drawn towards "
+                     "high indicator values, connectivity kept, nothing inverted")
+        ->check(whole_number_at_most(kMaxSweeps))
+        ->capture_default_str();
+    command
+        ->add_option("--steps", arguments->steps,
+                     "Transient: this many time steps of --dt, each resampling the field at its "
+                     "time, derefining (--derefine) and refining (--cycles)")
+        ->check(whole_number_at_most(kMaxSteps))
+        ->capture_default_str();
+    command->add_option("--dt", arguments->dt, "The time step of --steps")->capture_default_str();
+    command->add_option("--time", arguments->time, "The field's (first) time t")
+        ->capture_default_str();
+    command->add_flag("--quality", arguments->quality, "2D: print the quality report");
     command->add_flag("--stats", arguments->stats,
                       "Print the adaptation's counters, predicate stages and construct_seconds "
-                      "(the cycles alone: no initial mesh, no file I/O)");
+                      "(the cycles alone: no initial mesh, error lines, checks or file I/O)");
     command->callback([arguments] { run_adapt(*arguments); });
 }
 

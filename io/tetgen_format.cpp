@@ -140,17 +140,22 @@ TetgenEleFile read_tetgen_ele(const std::filesystem::path& path, std::uint32_t v
     return parse_tetgen_ele_lines(lines, vertex_first_index, vertex_count);
 }
 
-std::string format_tetgen_node(std::span<const double> xyz, std::uint32_t first_index) {
+std::string format_tetgen_node(std::span<const double> xyz, std::uint32_t first_index,
+                               std::span<const double> attribute) {
     const std::size_t count = xyz.size() / 3;
     std::string out;
     out.reserve(64 * count + 32);
     append_unsigned(out, count);
-    out += " 3 0 0\n";
+    out += attribute.empty() ? " 3 0 0\n" : " 3 1 0\n";
     for (std::size_t v = 0; v < count; ++v) {
         append_unsigned(out, v + first_index);
         for (std::size_t c = 0; c < 3; ++c) {
             out += ' ';
             append_double(out, xyz[3 * v + c]);
+        }
+        if (!attribute.empty()) {
+            out += ' ';
+            append_double(out, attribute[v]);
         }
         out += '\n';
     }

@@ -71,8 +71,10 @@ TetgenEleFile read_tetgen_ele(const std::filesystem::path& path, std::uint32_t v
 TetgenEleFile parse_tetgen_ele(std::string_view text, const std::string& file_name,
                                std::uint32_t vertex_first_index, std::uint32_t vertex_count);
 
-/// `#V 3 0 0` and the points, numbered from first_index, coordinates shortest round-trip.
-std::string format_tetgen_node(std::span<const double> xyz, std::uint32_t first_index);
+/// `#V 3 0 0` and the points, numbered from first_index, coordinates shortest round-trip; with
+/// `attribute` (#V values: a field at the vertices), `#V 3 1 0` and one attribute per point.
+std::string format_tetgen_node(std::span<const double> xyz, std::uint32_t first_index,
+                               std::span<const double> attribute = {});
 void write_tetgen_node(const std::filesystem::path& path, std::span<const double> xyz,
                        std::uint32_t first_index);
 

@@ -56,12 +56,13 @@ AdaptiveMesh2 make_adaptive_mesh_2d(triangulation::Cdt2Result result,
     return state;
 }
 
-std::string check_adaptive_mesh_2d(const AdaptiveMesh2& state, std::span<const double> fixed_xy) {
+std::string check_adaptive_mesh_2d(const AdaptiveMesh2& state, std::span<const double> fixed_xy,
+                                   bool delaunay) {
     std::vector<VertIdx> pieces;
     pieces.reserve(2 * state.pieces.size());
     for (const CurvedPiece2& p : state.pieces) pieces.insert(pieces.end(), {p.a, p.b});
-    const triangulation::CheckReport report = triangulation::check_constrained_delaunay_2d(
-        state.mesh, state.mesh.vertex_count(), pieces, pieces);
+    const triangulation::CheckReport report = triangulation::detail::check_constrained_mesh_2d(
+        state.mesh, state.mesh.vertex_count(), pieces, pieces, {}, delaunay);
     if (!report.ok) return report.problem;
     for (std::size_t i = 0; i < fixed_xy.size(); ++i)
         if (state.mesh.xy[i] != fixed_xy[i])

@@ -53,8 +53,10 @@ AdaptiveMesh2 make_adaptive_mesh_2d(triangulation::Cdt2Result mesh,
 
 /// The exact checks after every cycle: the triangulation valid (counter-clockwise by exact
 /// orient2d, neighbours mutual), its constrained edges exactly the pieces, every piece an edge,
+/// constrained Delaunay when `delaunay` (not after a movement, which keeps the connectivity),
 /// the fixed vertices at their input position, every vertex flagged on_curve equal to its
 /// curve at the piece parameters recorded for it. Returns the first problem, or "".
-std::string check_adaptive_mesh_2d(const AdaptiveMesh2& state, std::span<const double> fixed_xy);
+std::string check_adaptive_mesh_2d(const AdaptiveMesh2& state, std::span<const double> fixed_xy,
+                                   bool delaunay = true);
 
 }  // namespace exactmesh::generators

@@ -153,6 +153,15 @@ std::vector<double> mesh_edge_indicator(EdgeIndicator indicator, std::span<const
     return edge_indicator(indicator, unit, dim, edges, values, gradients);
 }
 
+std::vector<double> vertex_indicator(std::span<const VertIdx> edges,
+                                     std::span<const double> indicator, std::size_t vertex_count) {
+    std::vector<double> result(vertex_count, 0.0);
+    for (std::size_t e = 0; e < indicator.size(); ++e)
+        for (const VertIdx v : {edges[2 * e], edges[2 * e + 1]})
+            result[v] = std::max(result[v], indicator[e]);
+    return result;
+}
+
 std::vector<std::uint8_t> flag_above_mean(std::span<const double> indicator, double threshold) {
     std::vector<std::uint8_t> flags(indicator.size(), 0);
     if (indicator.empty()) return flags;
@@ -212,8 +221,8 @@ std::uint64_t close_flags(std::span<const std::uint32_t> element_edges, unsigned
 std::vector<std::uint8_t> refinement_flags(std::span<const VertIdx> elements, unsigned dim,
                                            std::span<const VertIdx> edges,
                                            std::span<const double> indicator, double threshold,
-                                           std::uint64_t room, bool budget,
-                                           std::uint64_t* flagged, std::uint64_t* closure) {
+                                           std::uint64_t room, bool budget, std::uint64_t* flagged,
+                                           std::uint64_t* closure) {
     const unsigned per_element = dim == 2 ? 3 : 6;
     const std::vector<std::uint32_t> edges_of = element_edges(elements, dim, edges);
     std::vector<std::uint8_t> flags = flag_above_mean(indicator, threshold), closed;

@@ -59,11 +59,16 @@ std::vector<double> edge_indicator(EdgeIndicator indicator,
 
 /// The indicator on every edge of a mesh in its own coordinates: the unit scale
 /// (mesh_edges.hpp), the gradients when the indicator needs them, then edge_indicator.
-std::vector<double> mesh_edge_indicator(EdgeIndicator indicator, std::span<const double> coordinates,
-                                        unsigned dim,
+std::vector<double> mesh_edge_indicator(EdgeIndicator indicator,
+                                        std::span<const double> coordinates, unsigned dim,
                                         std::span<const triangulation::VertIdx> elements,
                                         std::span<const triangulation::VertIdx> edges,
                                         std::span<const double> values);
+
+/// Per vertex, the largest indicator of the edges at it (0 at a vertex of no edge): what
+/// solution-weighted movement (weighted_movement.hpp) draws vertices towards.
+std::vector<double> vertex_indicator(std::span<const triangulation::VertIdx> edges,
+                                     std::span<const double> indicator, std::size_t vertex_count);
 
 /// Edges whose indicator exceeds threshold times the mean over all edges (the seed material's
 /// rule); 1 per flagged edge.
@@ -82,7 +87,7 @@ std::vector<std::uint8_t> refinement_flags(std::span<const triangulation::VertId
                                            unsigned dim,
                                            std::span<const triangulation::VertIdx> edges,
                                            std::span<const double> indicator, double threshold,
-                                           std::uint64_t room, bool budget,
-                                           std::uint64_t* flagged, std::uint64_t* closure);
+                                           std::uint64_t room, bool budget, std::uint64_t* flagged,
+                                           std::uint64_t* closure);
 
 }  // namespace exactmesh::generators

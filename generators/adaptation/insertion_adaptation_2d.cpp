@@ -7,6 +7,7 @@
 
 #include "generators/adaptation/field_transfer.hpp"
 #include "generators/adaptation/mesh_edges.hpp"
+#include "generators/adaptation/weighted_movement.hpp"
 #include "generators/mesh_2d/laplacian_smoothing_2d.hpp"
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
 
@@ -34,8 +35,8 @@ bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
 
     // 1-2. Indicator, flags, closure.
     const std::vector<VertIdx> edges = mesh_edges_2d(mesh.triangles);
-    const std::vector<double> indicator = mesh_edge_indicator(
-        options.indicator, mesh.xy, 2, mesh.triangles, edges, state.values);
+    const std::vector<double> indicator =
+        mesh_edge_indicator(options.indicator, mesh.xy, 2, mesh.triangles, edges, state.values);
     std::uint64_t flagged = 0, closure = 0;
     const std::vector<std::uint8_t> flags = refinement_flags(
         mesh.triangles, 2, edges, indicator, options.threshold, room, budget, &flagged, &closure);
@@ -181,19 +182,35 @@ bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
         counters.smoothing_undone += c.undone;
     }
 
-    // 6. The field on the new mesh.
-    if (field.analytic != nullptr) {
-        next.values = sample_field(*field.analytic, next.mesh.xy, 2, field.t);
-    } else {
+    // 6. The field on the new mesh (7: and again after the movement).
+    const auto set_field = [&] {
+        if (field.analytic != nullptr) {
+            next.values = sample_field(*field.analytic, next.mesh.xy, 2, field.t);
+            return;
+        }
         next.values = transfer_field_2d(old_xy, old_triangles, old_values, next.mesh.xy);
         for (std::size_t v = 0; v < next.values.size(); ++v) {
             // A point outside the old mesh (beside a convex curve point) keeps the value it
             // was made with; so does every point that did not move.
             const bool moved = next.mesh.xy[2 * v] != before_smoothing[2 * v] ||
                                next.mesh.xy[2 * v + 1] != before_smoothing[2 * v + 1];
-            if (std::isnan(next.values[v]) || (!moved && v < first_values.size()))
-                next.values[v] = first_values[v];
+            if (std::isnan(next.values[v]) || !moved) next.values[v] = first_values[v];
         }
+    };
+    set_field();
+    if (options.movement_sweeps > 0) {
+        const std::vector<VertIdx> new_edges = mesh_edges_2d(next.mesh.triangles);
+        const std::vector<double> new_indicator = mesh_edge_indicator(
+            options.indicator, next.mesh.xy, 2, next.mesh.triangles, new_edges, next.values);
+        WeightedMovementOptions movement;
+        movement.sweeps = options.movement_sweeps;
+        movement.strength = options.movement_strength;
+        const WeightedMovementCounters c = weighted_movement_2d(
+            next.mesh, vertex_indicator(new_edges, new_indicator, next.mesh.vertex_count()),
+            next.fixed_vertices, movement);
+        counters.movement_moves += c.moves;
+        counters.movement_undone += c.undone + c.undone_worse;
+        set_field();
     }
     state = std::move(next);
     return true;

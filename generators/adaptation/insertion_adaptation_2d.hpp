@@ -14,7 +14,9 @@
 //     refine it), as is one that has left the domain (beside a concave curve point);
 //  5. Laplacian smoothing (laplacian_smoothing_2d with its Delaunay swaps), boundary fixed;
 //  6. the field on the new mesh: the analytic field sampled, or a given field transferred
-//     (field_transfer.hpp) from the old mesh.
+//     (field_transfer.hpp) from the old mesh;
+//  7. optionally solution-weighted movement towards the new mesh's indicator, and the field
+//     again at the moved vertices.
 // When a curve point would make the domain's pieces cross or touch another (a thin gap at the
 // resolution of the mesh), the cycle is redone with chord midpoints on the boundary (counted):
 // the domain never self-intersects. Invariants after a cycle (check_adaptive_mesh_2d): a valid
@@ -37,6 +39,11 @@ struct AdaptationOptions {
     double threshold = 1.0;              ///< flag edges above threshold × the mean indicator
     std::uint64_t max_vertices = 0;      ///< 0: no budget; else never refine past it
     std::uint32_t smoothing_sweeps = 0;  ///< Laplacian sweeps after each cycle
+    /// Solution-weighted movement sweeps after each cycle (weighted_movement.hpp: vertices drawn
+    /// towards the largest indicator at them; connectivity kept, so the 2D mesh is then no
+    /// longer Delaunay until the next cycle's triangulation).
+    std::uint32_t movement_sweeps = 0;
+    double movement_strength = 4.0;  ///< WeightedMovementOptions::strength
 };
 
 /// Where the field on a new mesh comes from: the analytic field at time t (the solver's
@@ -58,12 +65,14 @@ struct InsertionCounters2 {
     std::uint64_t outside_skipped = 0;      ///< interior points left out: outside the domain
     std::uint64_t smoothing_moves = 0;
     std::uint64_t smoothing_undone = 0;
+    std::uint64_t movement_moves = 0;
+    std::uint64_t movement_undone = 0;
 };
 
-inline constexpr std::array kInsertionCounterNames2 =
-    EM_COUNTER_TABLE(InsertionCounters2, cycles, flagged_edges, closure_edges, inserted,
-                     boundary_points, curve_points, curve_retries, encroaching_skipped,
-                     outside_skipped, smoothing_moves, smoothing_undone);
+inline constexpr std::array kInsertionCounterNames2 = EM_COUNTER_TABLE(
+    InsertionCounters2, cycles, flagged_edges, closure_edges, inserted, boundary_points,
+    curve_points, curve_retries, encroaching_skipped, outside_skipped, smoothing_moves,
+    smoothing_undone, movement_moves, movement_undone);
 static_assert(counter_table_complete(kInsertionCounterNames2));
 
 /// One cycle on `state` (state.values must hold the field at its vertices); returns false when

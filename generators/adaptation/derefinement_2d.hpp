@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// Derefinement of an adaptive 2D mesh (issue 13): vertices where the field no longer needs them
+// are removed, each by 2D constrained Delaunay vertex removal
+// (triangulation/modification/vertex_removal_2d), so the mesh stays the constrained Delaunay
+// triangulation of what is left. A vertex is a candidate when every edge at it has an indicator
+// below derefine_threshold × the mean over all edges; candidates are taken in increasing vertex
+// order, skipping any vertex next to one already taken (an independent set: the holes stay
+// one star wide, and a feature is not erased by removing a whole neighbourhood at once). Never
+// removed: the domain's input vertices (index < fixed_vertices), corners and ends of pieces,
+// curve points where their two pieces are not straight (vertex_removal_2d refuses bends); a
+// vertex on a straight run of pieces is removed and its two pieces merge into one (the curve
+// parameters of the outer ends kept).
+#pragma once
+
+#include <cstdint>
+
+#include "base/counter_table.hpp"
+#include "generators/adaptation/adaptive_mesh_2d.hpp"
+#include "generators/adaptation/edge_indicators.hpp"
+
+namespace exactmesh::generators {
+
+struct DerefinementOptions {
+    EdgeIndicator indicator = EdgeIndicator::SecondDifference;
+    double threshold = 0.2;  ///< remove where every edge's indicator < threshold × mean
+};
+
+struct DerefinementCounters2 {
+    std::uint64_t passes = 0;
+    std::uint64_t candidates = 0;  ///< vertices with every edge below the threshold
+    std::uint64_t removed = 0;
+    std::uint64_t refused = 0;  ///< candidates vertex_removal_2d refused (corners, bends, ...)
+    std::uint64_t piece_merges = 0;
+};
+
+inline constexpr std::array kDerefinementCounterNames2 =
+    EM_COUNTER_TABLE(DerefinementCounters2, passes, candidates, removed, refused, piece_merges);
+static_assert(counter_table_complete(kDerefinementCounterNames2));
+
+/// One pass over `state` (state.values the field at its vertices); the surviving vertices keep
+/// their values and their relative order (the input's keep their numbers).
+/// @return the number of vertices removed.
+std::uint64_t derefinement_pass_2d(AdaptiveMesh2& state, const DerefinementOptions& options,
+                                   DerefinementCounters2& counters);
+
+}  // namespace exactmesh::generators
