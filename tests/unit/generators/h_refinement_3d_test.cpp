@@ -335,6 +335,47 @@ TEST(Generators_HRefinement3d, SeededCampaignSparseMarks) {
     EXPECT_GT(total.derefine_blocked, 0u);
 }
 
+TEST(Generators_HRefinement3d, RoundedMidpointThatWouldInvertIsRefused) {
+    // Slivers: d is the rounded point a + s (b - a) + t (c - a), so the tetrahedron's height is a
+    // rounding error, and an edge's rounded midpoint can land on the wrong side of the opposite
+    // face. Those splits are refused (the mesh stays valid); the others go through.
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> unit(1.0, 2.0);
+    int refused = 0, split = 0;
+    for (int attempt = 0; attempt < 4000 && (refused < 3 || split < 3); ++attempt) {
+        tri::Tetrahedralization3 mesh;
+        std::array<std::array<double, 3>, 3> abc{};
+        for (auto& p : abc) {
+            for (double& x : p) x = unit(rng);
+        }
+        const double s = unit(rng) - 1.0, t = unit(rng) - 1.0;
+        std::array<double, 3> d{};
+        for (int k = 0; k < 3; ++k)
+            d[k] = abc[0][k] + s * (abc[1][k] - abc[0][k]) + t * (abc[2][k] - abc[0][k]);
+        for (const auto& p : abc) mesh.xyz.insert(mesh.xyz.end(), p.begin(), p.end());
+        mesh.xyz.insert(mesh.xyz.end(), d.begin(), d.end());
+        const pred::Sign sign =
+            pred::orient3d(mesh.point(0), mesh.point(1), mesh.point(2), mesh.point(3));
+        if (sign == pred::Sign::Zero) continue;
+        mesh.tets = sign == pred::Sign::Positive ? std::vector<tri::VertIdx>{0, 1, 2, 3}
+                                                 : std::vector<tri::VertIdx>{0, 1, 3, 2};
+        mesh.neighbors.assign(4, tri::kNone);
+        gen::HRefinedMesh3 h(mesh);
+        h.refine(leaf_edges(mesh));  // all six: 1:8, or refused
+        expect_valid(h);
+        if (h.counters().refused_splits > 0) {
+            ++refused;
+            EXPECT_EQ(h.leaf_mesh().tets, mesh.tets);  // nothing could be split
+            EXPECT_EQ(h.vertex_count(), 4u);
+        } else {
+            ++split;
+            EXPECT_EQ(h.leaf_count(), 8u);
+        }
+    }
+    EXPECT_GE(refused, 3);
+    EXPECT_GE(split, 3);
+}
+
 TEST(Generators_HRefinement3d, BadMarksAndFlagsAreInputErrors) {
     gen::HRefinedMesh3 h(cube_of_six());
     const std::vector<Edge> not_edge{{1, 6}};  // a face diagonal not in any tetrahedron
