@@ -218,6 +218,14 @@ HRefinedMesh3::HRefinedMesh3(Tetrahedralization3 root) {
                              std::to_string(n));
         }
     }
+    for (std::uint32_t t = 0; t < root.tet_count(); ++t) {
+        const VertIdx* v = root.tets.data() + 4 * std::size_t{t};
+        if (predicates::orient3d(root.point(v[0]), root.point(v[1]), root.point(v[2]),
+                                 root.point(v[3])) != Sign::Positive) {
+            throw InputError("h-refinement: tetrahedron " + std::to_string(t) +
+                             " is not positively oriented (exact orient3d)");
+        }
+    }
     xyz_ = std::move(root.xyz);
     root_vertices_ = n;
     root_tets_ = root.tet_count();
@@ -423,8 +431,13 @@ void HRefinedMesh3::refine(std::span<const std::array<VertIdx, 2>> marked_edges)
     const auto nodes = nodes_;
     const auto free_nodes = free_nodes_;
     const auto leaves = leaves_;
+    const HRefinement3Counters counters = counters_;
     std::vector<std::uint64_t> forbidden;
     while (!refine_once(marks, forbidden)) {
+        // Only the refusals of the abandoned attempt count.
+        const std::uint64_t refused = counters_.refused_splits;
+        counters_ = counters;
+        counters_.refused_splits = refused;
         xyz_ = xyz;
         ends_ = ends;
         uses_ = uses;

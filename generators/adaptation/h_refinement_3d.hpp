@@ -22,8 +22,9 @@
 // parent's global vertex ids g0 < g1 < g2 < g3.
 // New vertices: one per split edge, the correctly rounded midpoint of the edge's two ends.
 // A split whose rounded midpoint leaves some child not strictly positive (exact orient3d) or a
-// midpoint outside its parent (see check_nesting_3d) is refused: the edge is never split in
-// that call (counted), and the marks that would need it are dropped, to a fixed point.
+// midpoint outside its parent (see check_nesting) is refused: the call is rolled back and run
+// again with every edge of that tetrahedron's pattern refused (never split in this call, the
+// marks and upgrades that need one dropped), until a run completes (counted per refused edge).
 // Derefinement: a parent whose children are all flagged leaves is restored when the midpoints
 // it removes are used by no leaf that stays, and no face neighbour of it is then more than one
 // level finer (a fixed point too). Vertices are renumbered compactly after each derefinement,
@@ -82,9 +83,10 @@ struct HRefinement3Report {
 /// midpoints in order of creation.
 class HRefinedMesh3 {
   public:
-    /// @pre root is a valid Tetrahedralization3 (positive tetrahedra, neighbors by opposite
-    /// face). @throws InputError when root's arrays have inconsistent sizes, a vertex index is
-    /// out of range, or a coordinate is not finite.
+    /// @pre root is a conforming Tetrahedralization3 (its neighbors are not read: the leaf
+    /// mesh's are recomputed from shared faces). @throws InputError when root's arrays have
+    /// inconsistent sizes, a vertex index is out of range, a coordinate is not finite, or a
+    /// tetrahedron is not strictly positively oriented (exact orient3d).
     explicit HRefinedMesh3(Tetrahedralization3 root);
 
     /// Splits the marked edges (pairs of vertex ids, either order) and whatever the rules above

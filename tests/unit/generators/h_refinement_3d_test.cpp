@@ -387,6 +387,12 @@ TEST(Generators_HRefinement3d, BadMarksAndFlagsAreInputErrors) {
     tri::Tetrahedralization3 broken = cube_of_six();
     broken.tets[5] = 99;
     EXPECT_THROW(gen::HRefinedMesh3{broken}, exactmesh::InputError);
+    tri::Tetrahedralization3 inverted = cube_of_six();
+    std::swap(inverted.tets[2], inverted.tets[3]);
+    EXPECT_THROW(gen::HRefinedMesh3{inverted}, exactmesh::InputError);
+    tri::Tetrahedralization3 not_finite = cube_of_six();
+    not_finite.xyz[4] = std::nan("");
+    EXPECT_THROW(gen::HRefinedMesh3{not_finite}, exactmesh::InputError);
     // Nothing changed by the refused calls.
     EXPECT_EQ(h.leaf_mesh().tets, cube_of_six().tets);
 }
