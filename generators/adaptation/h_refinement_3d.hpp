@@ -11,10 +11,15 @@
 // or 1:4 (transitional) tetrahedron are never refined: a mark on one reopens the parent, which
 // becomes 1:4 when a 1:2 parent's marks (its split edge plus marked whole edges of the parent)
 // lie in one face (2:4), else 1:8 (2:8, 4:8); marks on the old children's half edges are then
-// applied to the new 1:8 children in the next round. The 8:1 jump limit: after a round, a face
-// between leaves two levels apart marks the coarser leaf (one edge off the shared face), and
-// rounds repeat until the mesh is conforming and within the limit. Every child is one level
-// deeper than its parent.
+// applied to the new 1:8 children in the next round. The 8:1 jump limit (face-neighbouring
+// leaves at most one level apart) follows from these rules: a leaf face F lies in a support
+// face S created at some level k (a root face, or an inner face of a split at level k - 1, the
+// same on both sides) and is S refined 1:4 d times (then possibly bisected), where d is fixed by
+// F itself; a leaf at level l has d = l - k, or d = l - 1 - k when it is a 1:2 or 1:4 child
+// (whose parent is never a transitional child), so the two sides differ by at most one. Rounds
+// still check it on the conforming mesh and would mark the coarser leaf (one edge off the shared
+// face; counted as jump_marks, 0 in every test), and derefinement checks it per parent.
+// Every child is one level deeper than its parent.
 // 1:8 interior diagonal: of the three diagonals, those whose four inner children are strictly
 // positive are compared by the worst inner child's volume-edge quality (exact
 // predicates::compare_volume_edge); the best wins, ties to the first diagonal in the order

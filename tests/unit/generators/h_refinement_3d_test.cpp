@@ -10,12 +10,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <random>
 #include <set>
 #include <vector>
 
 #include "base/errors.hpp"
 #include "generators/adaptation/h_refinement_3d.hpp"
+#include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/orient3d.hpp"
 #include "tests/support/point_sets_3d.hpp"
 #include "tests/support/test_scale.hpp"
@@ -374,6 +376,88 @@ TEST(Generators_HRefinement3d, RoundedMidpointThatWouldInvertIsRefused) {
     }
     EXPECT_GE(refused, 3);
     EXPECT_GE(split, 3);
+}
+
+namespace {
+
+/// The leaves as sorted lists of corner coordinates (independent of numbering and order).
+std::multiset<std::array<std::array<double, 3>, 4>> leaf_shapes(
+    const tri::Tetrahedralization3& mesh) {
+    std::multiset<std::array<std::array<double, 3>, 4>> shapes;
+    for (std::uint32_t t = 0; t < mesh.tet_count(); ++t) {
+        std::array<std::array<double, 3>, 4> corners{};
+        for (int k = 0; k < 4; ++k) {
+            const double* p = mesh.point(mesh.tets[4 * t + k]);
+            corners[k] = {p[0], p[1], p[2]};
+        }
+        std::sort(corners.begin(), corners.end());
+        shapes.insert(corners);
+    }
+    return shapes;
+}
+
+}  // namespace
+
+TEST(Generators_HRefinement3d, SameLeavesWhateverTheCornerOrder) {
+    // Rotating each root tetrahedron's corners (an even permutation: still positive) changes
+    // no choice: patterns, diagonals and upgrades depend on global ids and geometry only.
+    const tri::Tetrahedralization3 root = delaunay(exactmesh::testing::random_points_3d(40, 31));
+    tri::Tetrahedralization3 rotated = root;
+    for (std::uint32_t t = 0; t < rotated.tet_count(); ++t) {
+        const int turns = static_cast<int>(t % 3);
+        for (int r = 0; r < turns; ++r) {
+            std::rotate(rotated.tets.begin() + 4 * t, rotated.tets.begin() + 4 * t + 1,
+                        rotated.tets.begin() + 4 * t + 3);
+        }
+    }
+    gen::HRefinedMesh3 a(root), b(rotated);
+    std::mt19937_64 rng(5);
+    for (int cycle = 0; cycle < 3; ++cycle) {
+        const tri::Tetrahedralization3 ma = a.leaf_mesh(), mb = b.leaf_mesh();
+        const std::vector<Edge> marks = random_marks(ma, rng, 0.1);
+        // The same edges in b's numbering (midpoints may be numbered in another order).
+        std::map<std::array<double, 3>, tri::VertIdx> id_in_b;
+        for (tri::VertIdx v = 0; v < mb.vertex_count(); ++v) {
+            id_in_b[{mb.point(v)[0], mb.point(v)[1], mb.point(v)[2]}] = v;
+        }
+        std::vector<Edge> marks_b;
+        for (const Edge& e : marks) {
+            const double *p = ma.point(e[0]), *q = ma.point(e[1]);
+            marks_b.push_back({id_in_b.at({p[0], p[1], p[2]}), id_in_b.at({q[0], q[1], q[2]})});
+        }
+        a.refine(marks);
+        b.refine(marks_b);
+        expect_valid(b);
+        ASSERT_EQ(leaf_shapes(a.leaf_mesh()), leaf_shapes(b.leaf_mesh()));
+    }
+}
+
+TEST(Generators_HRefinement3d, UniformRefinementKeepsQuality) {
+    // Three uniform levels of one tetrahedron: the diagonal rule keeps the worst volume-edge
+    // quality from collapsing (with the best diagonal it stays within the first level's).
+    tri::Tetrahedralization3 mesh;
+    mesh.xyz = {0, 0, 0, 1, 0, 0, 0.3, 0.9, 0, 0.4, 0.3, -0.8};
+    mesh.tets = {0, 1, 2, 3};
+    ASSERT_EQ(pred::orient3d(mesh.point(0), mesh.point(1), mesh.point(2), mesh.point(3)),
+              pred::Sign::Positive);
+    mesh.neighbors.assign(4, tri::kNone);
+    gen::HRefinedMesh3 h(mesh);
+    std::vector<long double> worst;
+    for (int level = 0; level < 3; ++level) {
+        h.refine(leaf_edges(h.leaf_mesh()));
+        expect_valid(h);
+        const tri::Tetrahedralization3 leaves = h.leaf_mesh();
+        long double q = 1;
+        for (std::uint32_t t = 0; t < leaves.tet_count(); ++t) {
+            q = std::min(q, pred::volume_edge_quality({leaves.point(leaves.tets[4 * t]),
+                                                       leaves.point(leaves.tets[4 * t + 1]),
+                                                       leaves.point(leaves.tets[4 * t + 2]),
+                                                       leaves.point(leaves.tets[4 * t + 3])}));
+        }
+        worst.push_back(q);
+    }
+    EXPECT_EQ(h.leaf_count(), 512u);
+    EXPECT_GE(worst[2], 0.999L * worst[0]);
 }
 
 TEST(Generators_HRefinement3d, BadMarksAndFlagsAreInputErrors) {
