@@ -294,7 +294,7 @@ void HRefinedMesh3::remove_children(std::uint32_t node) {
     set_leaf_uses(node, +1);
 }
 
-bool HRefinedMesh3::make_children(std::uint32_t node, std::uint8_t mask, std::uint64_t& bad_edge) {
+bool HRefinedMesh3::make_children(std::uint32_t node, std::uint8_t mask) {
     const std::array<VertIdx, 4> v = nodes_[node].v;
     LocalPoints pts;
     for (int i = 0; i < 4; ++i) {
@@ -311,7 +311,6 @@ bool HRefinedMesh3::make_children(std::uint32_t node, std::uint8_t mask, std::ui
                 with_replaced({0, 1, 2, 3}, opposite, static_cast<std::uint8_t>(4 + k));
             if (predicates::orient3d(pts[probe[0]], pts[probe[1]], pts[probe[2]], pts[probe[3]]) ==
                 Sign::Negative) {
-                bad_edge = edge_key(v[i], v[j]);
                 return false;
             }
         }
@@ -322,8 +321,6 @@ bool HRefinedMesh3::make_children(std::uint32_t node, std::uint8_t mask, std::ui
         children = children_of(mask, 0);
         for (const LocalTet& child : children) {
             if (!strictly_positive(pts, child)) {
-                bad_edge = edge_key(v[kEdges[std::countr_zero(mask)][0]],
-                                    v[kEdges[std::countr_zero(mask)][1]]);
                 return false;
             }
         }
@@ -355,7 +352,6 @@ bool HRefinedMesh3::make_children(std::uint32_t node, std::uint8_t mask, std::ui
             }
         }
         if (best < 0) {
-            bad_edge = edge_key(v[0], v[1]);
             return false;
         }
         diagonal = best;
@@ -561,8 +557,7 @@ bool HRefinedMesh3::refine_once(const std::vector<std::uint64_t>& user_marks,
         for (const auto& [parent, pattern] : reopen) {
             const std::uint8_t old_kind = nodes_[parent].kind;
             remove_children(parent);
-            std::uint64_t bad = 0;
-            if (!make_children(parent, pattern, bad)) return refuse(parent, pattern);
+            if (!make_children(parent, pattern)) return refuse(parent, pattern);
             if (old_kind == 2 && pattern != kAllEdges)
                 ++counters_.refine_2_4;
             else if (old_kind == 2)
@@ -571,8 +566,7 @@ bool HRefinedMesh3::refine_once(const std::vector<std::uint64_t>& user_marks,
                 ++counters_.refine_4_8;
         }
         for (const auto& [leaf, mask] : work) {
-            std::uint64_t bad = 0;
-            if (!make_children(leaf, mask, bad)) return refuse(leaf, mask);
+            if (!make_children(leaf, mask)) return refuse(leaf, mask);
             const int count = std::popcount(mask);
             ++(count == 1   ? counters_.refine_1_2
                : count == 3 ? counters_.refine_1_4

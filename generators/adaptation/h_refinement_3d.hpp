@@ -112,7 +112,7 @@ class HRefinedMesh3 {
     /// Number of root vertices (the vertices that no derefinement removes).
     std::uint32_t root_vertex_count() const { return root_vertices_; }
     /// For a vertex made by refinement, the edge it is the midpoint of; {kNone, kNone} for a
-    /// root vertex.
+    /// root vertex. @pre v < vertex_count().
     std::array<VertIdx, 2> midpoint_ends(VertIdx v) const { return ends_[v]; }
 
     /// A per-vertex field on the leaf mesh before the last refine or derefine, carried to the
@@ -155,9 +155,8 @@ class HRefinedMesh3 {
     std::uint32_t new_node();
     void set_leaf_uses(std::uint32_t node, int delta);
     void remove_children(std::uint32_t node);
-    bool make_children(std::uint32_t node, std::uint8_t mask, std::uint64_t& bad_edge);
+    bool make_children(std::uint32_t node, std::uint8_t mask);
     void rebuild_leaves();
-    std::uint32_t leaf_face_neighbor_level(std::uint32_t leaf, int face) const;
 
     std::vector<double> xyz_;
     std::vector<std::array<VertIdx, 2>> ends_;
