@@ -28,9 +28,11 @@
 #include "cli/size_expression.hpp"
 #include "generators/adaptation/adaptive_mesh_2d.hpp"
 #include "generators/adaptation/derefinement_2d.hpp"
+#include "generators/adaptation/h_adaptation_3d.hpp"
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
 #include "generators/adaptation/insertion_adaptation_3d.hpp"
 #include "generators/adaptation/interpolation_error.hpp"
+#include "generators/adaptation/mesh_edges.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
@@ -54,9 +56,10 @@ namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 
 /// The adaptation methods `--method` names.
-enum class AdaptMethod { Insertion };
-constexpr std::array<EnumName<AdaptMethod>, 1> kAdaptMethodNames{{
+enum class AdaptMethod { Insertion, HRefinement };
+constexpr std::array<EnumName<AdaptMethod>, 2> kAdaptMethodNames{{
     {"insertion", AdaptMethod::Insertion},
+    {"h-refinement", AdaptMethod::HRefinement},
 }};
 
 struct AdaptArguments {
@@ -88,6 +91,8 @@ struct AdaptArguments {
 constexpr std::uint32_t kMaxCycles = 1000;
 constexpr std::uint32_t kMaxSweeps = 1000;
 constexpr std::uint32_t kMaxSteps = 100000;
+/// Derefinement passes per step at most (each removes an independent set, or one level).
+constexpr int kMaxDerefinementPasses = 8;
 
 /// "cycle 3: vertices 1234 triangles 2400 max_error 0.01 l2_error 0.001" (errors with a field).
 void print_progress(const std::string& label, std::uint64_t vertices, const char* elements,
@@ -130,7 +135,9 @@ double run_cycles(const AdaptArguments& arguments, Refine&& refine, Derefine&& d
         const double t = arguments.time + step * arguments.dt;
         timed([&] {
             resample(t);
-            if (arguments.derefine) derefine();
+            // Derefinement passes until one removes nothing (each takes an independent set).
+            for (int pass = 0; arguments.derefine && pass < kMaxDerefinementPasses; ++pass)
+                if (derefine() == 0) break;
             for (std::uint32_t cycle = 0; cycle < arguments.cycles; ++cycle)
                 if (!refine(t)) break;
             return true;
@@ -174,7 +181,6 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
             "--field-file: a 2D run starts from a .poly or --domain, whose vertices "
             "no field file can match; give --field EXPR (field files are read for "
             "3D meshes, IN.node IN.ele)");
-    const gen::AdaptationOptions options = adaptation_options(arguments);
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
@@ -224,9 +230,18 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
         gen::make_adaptive_mesh_2d(std::move(initial.mesh), poly.vertices.xy, poly.segments,
                                    poly.holes, curves, segment_curves);
     state.values = gen::sample_field(*field, state.mesh.xy, 2, arguments.time);
+    gen::AdaptationOptions options = adaptation_options(arguments);
+    if (arguments.steps > 0) {
+        // Transient: the thresholds stay relative to the first mesh's mean indicator, so that
+        // refinement and derefinement do not chase a mean that moves with the mesh.
+        options.reference_mean = gen::mean_indicator(
+            gen::mesh_edge_indicator(options.indicator, state.mesh.xy, 2, state.mesh.triangles,
+                                     gen::mesh_edges_2d(state.mesh.triangles), state.values));
+    }
     gen::InsertionCounters2 counters;
     gen::DerefinementCounters2 derefinement;
-    gen::DerefinementOptions derefine_options{options.indicator, arguments.derefine_threshold};
+    gen::DerefinementOptions derefine_options{options.indicator, arguments.derefine_threshold,
+                                              options.reference_mean};
     gen::FieldSource source{field, arguments.time};
     predicates::reset_thread_stats();
     const double seconds = run_cycles(
@@ -235,7 +250,7 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
             source.t = t;
             return gen::insertion_cycle_2d(state, options, source, counters);
         },
-        [&] { gen::derefinement_pass_2d(state, derefine_options, derefinement); },
+        [&] { return gen::derefinement_pass_2d(state, derefine_options, derefinement); },
         [&](double t) { state.values = gen::sample_field(*field, state.mesh.xy, 2, t); },
         [&](const std::string& label, double t) {
             const predicates::PredicateStats kept = predicates::thread_stats();
@@ -291,9 +306,7 @@ tri::Tetrahedralization3 cube_mesh() {
 }
 
 void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* field) {
-    if (arguments.derefine)
-        throw InputError("--derefine: 3D derefinement is not built yet (2D only)");
-    const gen::AdaptationOptions options = adaptation_options(arguments);
+    gen::AdaptationOptions options = adaptation_options(arguments);
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
     if (format == OutputFormat::Svg) throw InputError(output.string() + ": no .svg in 3D");
@@ -330,38 +343,94 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
                              report.problem);
         }
     }
-    gen::AdaptiveMesh3 state = gen::make_adaptive_mesh_3d(mesh);
-    const std::vector<double> fixed_xyz = state.mesh.xyz;
+    std::vector<double> values;
     if (field != nullptr) {
-        state.values = gen::sample_field(*field, state.mesh.xyz, 3, arguments.time);
+        values = gen::sample_field(*field, mesh.xyz, 3, arguments.time);
     } else {
-        const io::TetgenNodeFile values = io::read_tetgen_node(arguments.field_file);
-        if (values.attribute_count == 0 || values.xyz != state.mesh.xyz)
+        const io::TetgenNodeFile file = io::read_tetgen_node(arguments.field_file);
+        if (file.attribute_count == 0 || file.xyz != mesh.xyz)
             throw InputError(arguments.field_file +
                              ": a field file must be a .node with the mesh's points, in its "
                              "order, and the field as its first attribute");
-        for (std::size_t v = 0; v < values.vertex_count(); ++v)
-            state.values.push_back(values.attributes[v * values.attribute_count]);
+        for (std::size_t v = 0; v < file.vertex_count(); ++v)
+            values.push_back(file.attributes[v * file.attribute_count]);
     }
-    gen::InsertionCounters3 counters;
+    const std::vector<double> fixed_xyz = mesh.xyz;
     gen::FieldSource source{field, arguments.time};
+    if (arguments.steps > 0) {
+        // Transient: thresholds relative to the first mesh's mean indicator (see 2D).
+        options.reference_mean = gen::mean_indicator(gen::mesh_edge_indicator(
+            options.indicator, mesh.xyz, 3, mesh.tets, gen::mesh_edges_3d(mesh.tets), values));
+    }
+    std::vector<std::pair<std::string, std::uint64_t>> named;
+    tri::Tetrahedralization3 result;
+    std::vector<double> result_values;
+    double seconds = 0;
+    predicates::PredicateStats stats;
+    const auto progress_of = [&](const tri::Tetrahedralization3& m, const std::vector<double>& u) {
+        return [&m, &u, field](const std::string& label, double t) {
+            print_progress(label, m.vertex_count(), "tetrahedra", m.tet_count(), field, m.xyz, 3,
+                           m.tets, u, t);
+        };
+    };
     predicates::reset_thread_stats();
-    const double seconds = run_cycles(
-        arguments,
-        [&](double t) {
-            source.t = t;
-            return gen::insertion_cycle_3d(state, options, source, counters);
-        },
-        [] {}, [&](double t) { state.values = gen::sample_field(*field, state.mesh.xyz, 3, t); },
-        [&](const std::string& label, double t) {
-            print_progress(label, state.mesh.vertex_count(), "tetrahedra", state.mesh.tet_count(),
-                           field, state.mesh.xyz, 3, state.mesh.tets, state.values, t);
-        });
-    const predicates::PredicateStats stats = predicates::thread_stats();
-    const std::string problem = gen::check_adaptive_mesh_3d(state, fixed_xyz);
-    if (!problem.empty())
-        throw Error("internal: the adapted mesh fails its exact check: " + problem);
-    const tri::Tetrahedralization3& result = state.mesh;
+    if (parse_name(kAdaptMethodNames, arguments.method, "adaptation method") ==
+        AdaptMethod::Insertion) {
+        if (arguments.derefine)
+            throw InputError(
+                "--derefine: 3D derefinement goes with --method h-refinement (by "
+                "its history); Delaunay insertion derefines in 2D only");
+        gen::AdaptiveMesh3 state = gen::make_adaptive_mesh_3d(std::move(mesh));
+        state.values = std::move(values);
+        gen::InsertionCounters3 counters;
+        seconds = run_cycles(
+            arguments,
+            [&](double t) {
+                source.t = t;
+                return gen::insertion_cycle_3d(state, options, source, counters);
+            },
+            [] { return std::uint64_t{0}; },
+            [&](double t) { state.values = gen::sample_field(*field, state.mesh.xyz, 3, t); },
+            progress_of(state.mesh, state.values));
+        stats = predicates::thread_stats();
+        const std::string problem = gen::check_adaptive_mesh_3d(state, fixed_xyz);
+        if (!problem.empty())
+            throw Error("internal: the adapted mesh fails its exact check: " + problem);
+        named = counters_by_name(gen::kInsertionCounterNames3, counters);
+        result = std::move(state.mesh);
+        result_values = std::move(state.values);
+    } else {
+        if (arguments.smooth > 0 || arguments.move > 0)
+            throw InputError("--smooth and --move would break the nesting of h-refinement");
+        gen::HAdaptiveMesh3 state = gen::make_h_adaptive_mesh_3d(std::move(mesh));
+        state.values = std::move(values);
+        gen::HAdaptationCounters3 counters;
+        seconds = run_cycles(
+            arguments,
+            [&](double t) {
+                source.t = t;
+                return gen::h_refinement_cycle_3d(state, options, source, counters);
+            },
+            [&] {
+                return gen::h_derefinement_pass_3d(state, options.indicator,
+                                                   arguments.derefine_threshold,
+                                                   options.reference_mean, source, counters);
+            },
+            [&](double t) {
+                source.t = t;
+                state.values = gen::sample_field(*field, state.leaves.xyz, 3, t);
+            },
+            progress_of(state.leaves, state.values));
+        stats = predicates::thread_stats();
+        if (const gen::HRefinement3Report report = state.hierarchy.check_all(); !report.ok)
+            throw Error("internal: the refined mesh fails its exact check: " + report.problem);
+        named = counters_by_name(gen::kHAdaptationCounterNames3, counters);
+        for (const auto& [name, value] :
+             counters_by_name(gen::kHRefinement3CounterNames, state.hierarchy.counters()))
+            named.emplace_back(name, value);
+        result = std::move(state.leaves);
+        result_values = std::move(state.values);
+    }
     io::OutputSet set;
     switch (format) {
         case OutputFormat::Ele:
@@ -369,7 +438,7 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
             set.stage(files[1],
                       io::format_tetgen_boundary_faces(result.tets, result.neighbors, base));
             set.stage(files[2], io::format_tetgen_neigh(result.neighbors, ele_base));
-            set.stage(files[3], io::format_tetgen_node(result.xyz, base, state.values));
+            set.stage(files[3], io::format_tetgen_node(result.xyz, base, result_values));
             break;
         case OutputFormat::Msh:
             set.stage(output, io::format_msh_3d(result.xyz, result.tets));
@@ -383,9 +452,7 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
     commit_outputs(set);
     std::cout << "vertices: " << result.vertex_count() << '\n'
               << "tetrahedra: " << result.tet_count() << '\n';
-    if (arguments.stats)
-        print_construction_stats(counters_by_name(gen::kInsertionCounterNames3, counters), stats,
-                                 seconds, 3);
+    if (arguments.stats) print_construction_stats(named, stats, seconds, 3);
 }
 
 void run_adapt(const AdaptArguments& arguments) {

@@ -22,8 +22,8 @@ std::uint64_t derefinement_pass_2d(AdaptiveMesh2& state, const DerefinementOptio
     if (edges.empty()) return 0;
     const std::vector<double> indicator =
         mesh_edge_indicator(options.indicator, mesh.xy, 2, mesh.triangles, edges, state.values);
-    const double mean = std::accumulate(indicator.begin(), indicator.end(), 0.0) /
-                        static_cast<double>(indicator.size());
+    const double mean =
+        options.reference_mean > 0 ? options.reference_mean : mean_indicator(indicator);
     // A vertex is a candidate when every edge at it is below the threshold (and it has one).
     std::vector<std::uint8_t> low(vertex_count, 0), seen(vertex_count, 0);
     for (std::size_t e = 0; e < indicator.size(); ++e) {

@@ -22,7 +22,8 @@ namespace exactmesh::generators {
 
 struct DerefinementOptions {
     EdgeIndicator indicator = EdgeIndicator::SecondDifference;
-    double threshold = 0.2;  ///< remove where every edge's indicator < threshold × mean
+    double threshold = 0.2;     ///< remove where every edge's indicator < threshold × mean
+    double reference_mean = 0;  ///< > 0: the mean to use instead of the current mesh's
 };
 
 struct DerefinementCounters2 {

@@ -162,11 +162,17 @@ std::vector<double> vertex_indicator(std::span<const VertIdx> edges,
     return result;
 }
 
-std::vector<std::uint8_t> flag_above_mean(std::span<const double> indicator, double threshold) {
+double mean_indicator(std::span<const double> indicator) {
+    if (indicator.empty()) return 0;
+    return std::accumulate(indicator.begin(), indicator.end(), 0.0) /
+           static_cast<double>(indicator.size());
+}
+
+std::vector<std::uint8_t> flag_above_mean(std::span<const double> indicator, double threshold,
+                                          double reference_mean) {
     std::vector<std::uint8_t> flags(indicator.size(), 0);
     if (indicator.empty()) return flags;
-    const double mean = std::accumulate(indicator.begin(), indicator.end(), 0.0) /
-                        static_cast<double>(indicator.size());
+    const double mean = reference_mean > 0 ? reference_mean : mean_indicator(indicator);
     for (std::size_t e = 0; e < indicator.size(); ++e)
         flags[e] = indicator[e] > threshold * mean && indicator[e] > 0 ? 1 : 0;
     return flags;
@@ -222,10 +228,10 @@ std::vector<std::uint8_t> refinement_flags(std::span<const VertIdx> elements, un
                                            std::span<const VertIdx> edges,
                                            std::span<const double> indicator, double threshold,
                                            std::uint64_t room, bool budget, std::uint64_t* flagged,
-                                           std::uint64_t* closure) {
+                                           std::uint64_t* closure, double reference_mean) {
     const unsigned per_element = dim == 2 ? 3 : 6;
     const std::vector<std::uint32_t> edges_of = element_edges(elements, dim, edges);
-    std::vector<std::uint8_t> flags = flag_above_mean(indicator, threshold), closed;
+    std::vector<std::uint8_t> flags = flag_above_mean(indicator, threshold, reference_mean), closed;
     std::uint64_t count = static_cast<std::uint64_t>(std::count(flags.begin(), flags.end(), 1));
     std::uint64_t total = close_flags(edges_of, per_element, flags, closed);
     if (budget && total > room) {

@@ -72,7 +72,11 @@ std::vector<double> vertex_indicator(std::span<const triangulation::VertIdx> edg
 
 /// Edges whose indicator exceeds threshold times the mean over all edges (the seed material's
 /// rule); 1 per flagged edge.
-std::vector<std::uint8_t> flag_above_mean(std::span<const double> indicator, double threshold);
+std::vector<std::uint8_t> flag_above_mean(std::span<const double> indicator, double threshold,
+                                          double reference_mean = 0);
+
+/// The mean of the indicator over all edges (0 for none): what thresholds are relative to.
+double mean_indicator(std::span<const double> indicator);
 
 /// The `count` edges with the largest indicator (ties broken by the lower edge number), for a
 /// vertex budget; 0-valued edges are never flagged.
@@ -88,6 +92,6 @@ std::vector<std::uint8_t> refinement_flags(std::span<const triangulation::VertId
                                            std::span<const triangulation::VertIdx> edges,
                                            std::span<const double> indicator, double threshold,
                                            std::uint64_t room, bool budget, std::uint64_t* flagged,
-                                           std::uint64_t* closure);
+                                           std::uint64_t* closure, double reference_mean = 0);
 
 }  // namespace exactmesh::generators

@@ -38,8 +38,9 @@ bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
     const std::vector<double> indicator =
         mesh_edge_indicator(options.indicator, mesh.xy, 2, mesh.triangles, edges, state.values);
     std::uint64_t flagged = 0, closure = 0;
-    const std::vector<std::uint8_t> flags = refinement_flags(
-        mesh.triangles, 2, edges, indicator, options.threshold, room, budget, &flagged, &closure);
+    const std::vector<std::uint8_t> flags =
+        refinement_flags(mesh.triangles, 2, edges, indicator, options.threshold, room, budget,
+                         &flagged, &closure, options.reference_mean);
     if (flagged == 0) return false;
 
     // 3. The points: pieces split at their curve's (or chord's) midpoint, interior edges at

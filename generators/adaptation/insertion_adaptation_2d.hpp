@@ -44,6 +44,8 @@ struct AdaptationOptions {
     /// longer Delaunay until the next cycle's triangulation).
     std::uint32_t movement_sweeps = 0;
     double movement_strength = 4.0;  ///< WeightedMovementOptions::strength
+    /// > 0: thresholds relative to this mean instead of the current mesh's (flag_above_mean).
+    double reference_mean = 0;
 };
 
 /// Where the field on a new mesh comes from: the analytic field at time t (the solver's

@@ -55,8 +55,9 @@ bool insertion_cycle_3d(AdaptiveMesh3& state, const AdaptationOptions& options,
     const std::vector<double> indicator =
         mesh_edge_indicator(options.indicator, mesh.xyz, 3, mesh.tets, edges, state.values);
     std::uint64_t flagged = 0, closure = 0;
-    const std::vector<std::uint8_t> flags = refinement_flags(
-        mesh.tets, 3, edges, indicator, options.threshold, room, budget, &flagged, &closure);
+    const std::vector<std::uint8_t> flags =
+        refinement_flags(mesh.tets, 3, edges, indicator, options.threshold, room, budget, &flagged,
+                         &closure, options.reference_mean);
     if (flagged == 0) return false;
 
     // The hull faces at each hull edge, to keep boundary midpoints in their faces' planes.
