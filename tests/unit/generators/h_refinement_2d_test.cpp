@@ -1,0 +1,435 @@
+// SPDX-License-Identifier: MIT
+// Red-green h-refinement with history: after every refine and derefine the history passes the
+// exact check (leaf mesh counter-clockwise and conforming, nesting, inherited constraints), no
+// marked edge is left, root vertices keep index and coordinates, neighbours differ by at most one
+// level; refining then derefining everything returns the root array for array; a linear field is
+// transferred exactly on dyadic grids; scaling by 2^-600 and 2^600 gives the same triangles;
+// sliver splits are refused, never inverted; bad input is an InputError.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <unordered_set>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "generators/adaptation/h_refinement_2d.hpp"
+#include "generators/inputs/inputs.hpp"
+#include "predicates/orient2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
+
+namespace em = exactmesh;
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
+
+namespace {
+
+/// The convex-hull Delaunay triangulation of `xy` (with `segments` and exterior removed when
+/// segments are given): a Triangulation2 as exactmesh's generators produce it.
+tri::Triangulation2 mesh_of(const std::vector<double>& xy,
+                            const std::vector<tri::VertIdx>& segments = {}) {
+    tri::Cdt2Options options;
+    options.remove_exterior = !segments.empty();
+    return tri::constrained_delaunay_2d({xy, segments, {}, {}}, options).mesh;
+}
+
+/// (n+1)^2 grid points i/8, j/8 (dyadic, so every midpoint down to many levels is exact).
+std::vector<double> grid_points(int n) {
+    std::vector<double> xy;
+    for (int j = 0; j <= n; ++j) {
+        for (int i = 0; i <= n; ++i) {
+            xy.push_back(i / 8.0);
+            xy.push_back(j / 8.0);
+        }
+    }
+    return xy;
+}
+
+std::uint64_t key(tri::VertIdx a, tri::VertIdx b) {
+    return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
+}
+
+/// Each edge of the leaf mesh once, marked with probability p.
+std::vector<tri::VertIdx> random_marks(const tri::Triangulation2& m, double p,
+                                       std::mt19937_64& rng) {
+    std::bernoulli_distribution pick(p);
+    std::vector<tri::VertIdx> marks;
+    for (tri::TriIdx t = 0; t < m.triangle_count(); ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const tri::VertIdx a = m.triangles[3 * t + k], b = m.triangles[3 * t + (k + 1) % 3];
+            if ((m.neighbors[3 * t + k] == tri::kNone || a < b) && pick(rng)) {
+                marks.push_back(a);
+                marks.push_back(b);
+            }
+        }
+    }
+    return marks;
+}
+
+std::vector<tri::VertIdx> all_edges(const tri::Triangulation2& m) {
+    std::mt19937_64 rng(0);
+    return random_marks(m, 1.0, rng);
+}
+
+std::vector<tri::TriIdx> all_leaves(const gen::HRefinedMesh2& h) {
+    std::vector<tri::TriIdx> t(h.leaf_mesh().triangle_count());
+    for (tri::TriIdx i = 0; i < t.size(); ++i) t[i] = i;
+    return t;
+}
+
+/// The exact check, root vertices unmoved, no unrefused mark left, levels across edges within 1.
+void expect_valid_after_refine(const gen::HRefinedMesh2& h, const tri::Triangulation2& root,
+                               const std::vector<tri::VertIdx>& marks,
+                               const gen::HRefinementCounters2& c, const std::string& what) {
+    const auto report = gen::check_h_refined_mesh_2d(h);
+    ASSERT_TRUE(report.ok) << what << ": " << report.problem;
+    const tri::Triangulation2& m = h.leaf_mesh();
+    ASSERT_GE(m.xy.size(), root.xy.size());
+    EXPECT_TRUE(std::equal(root.xy.begin(), root.xy.end(), m.xy.begin())) << what;
+    if (c.refused_edges == 0) {
+        std::unordered_set<std::uint64_t> edges;
+        for (tri::TriIdx t = 0; t < m.triangle_count(); ++t) {
+            for (unsigned k = 0; k < 3; ++k)
+                edges.insert(key(m.triangles[3 * t + k], m.triangles[3 * t + (k + 1) % 3]));
+        }
+        for (std::size_t i = 0; i + 1 < marks.size(); i += 2)
+            EXPECT_FALSE(edges.count(key(marks[i], marks[i + 1])))
+                << what << ": marked edge " << marks[i] << " - " << marks[i + 1] << " left";
+    }
+    for (tri::TriIdx t = 0; t < m.triangle_count(); ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const tri::TriIdx u = m.neighbors[3 * t + k];
+            if (u == tri::kNone) continue;
+            const auto lt = h.level(t), lu = h.level(u);
+            EXPECT_LE(std::max(lt, lu) - std::min(lt, lu), 1u)
+                << what << ": triangles " << t << " and " << u;
+        }
+    }
+}
+
+void expect_same(const tri::Triangulation2& a, const tri::Triangulation2& b,
+                 const std::string& what) {
+    EXPECT_EQ(a.xy, b.xy) << what;
+    EXPECT_EQ(a.triangles, b.triangles) << what;
+    EXPECT_EQ(a.neighbors, b.neighbors) << what;
+    EXPECT_EQ(a.constrained, b.constrained) << what;
+}
+
+/// derefine(every leaf) until nothing changes; at most `limit` calls.
+void derefine_all(gen::HRefinedMesh2& h, int limit, const std::string& what) {
+    for (int i = 0; i < limit; ++i) {
+        const auto before = h.leaf_mesh().triangle_count();
+        h.derefine(all_leaves(h));
+        const auto report = gen::check_h_refined_mesh_2d(h);
+        ASSERT_TRUE(report.ok) << what << " derefine " << i << ": " << report.problem;
+        if (h.leaf_mesh().triangle_count() == before) return;
+    }
+}
+
+tri::Triangulation2 square_with_boundary(int n) {
+    std::vector<double> xy = grid_points(n);
+    std::vector<tri::VertIdx> segments;
+    const auto at = [n](int i, int j) { return static_cast<tri::VertIdx>(j * (n + 1) + i); };
+    // The square's four sides, plus one interior segment (a diagonal of the grid).
+    segments.insert(segments.end(), {at(0, 0), at(n, 0), at(n, 0), at(n, n), at(n, n), at(0, n),
+                                     at(0, n), at(0, 0), at(1, 1), at(n - 1, n - 1)});
+    return mesh_of(xy, segments);
+}
+
+}  // namespace
+
+TEST(Generators_HRefinement2, RandomMarksOverSeveralLevelsStayValidAndDerefineToTheRoot) {
+    for (const gen::Distribution d : {gen::Distribution::Uniform, gen::Distribution::Gaussian,
+                                      gen::Distribution::Grid, gen::Distribution::Cocircular}) {
+        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+            const tri::Triangulation2 root = mesh_of(gen::generate_points_2d(d, 80, seed));
+            const std::string what =
+                std::string(gen::distribution_name(d)) + " seed " + std::to_string(seed);
+            gen::HRefinedMesh2 h(root);
+            expect_same(h.leaf_mesh(), root, what + " (root)");
+            std::mt19937_64 rng(seed);
+            std::uint64_t greens = 0, undone = 0;
+            for (int level = 0; level < 4; ++level) {
+                const auto marks = random_marks(h.leaf_mesh(), 0.15, rng);
+                const auto c = h.refine(marks);
+                EXPECT_EQ(c.refused_edges, 0u) << what;
+                greens += c.green;
+                undone += c.green_undone;
+                expect_valid_after_refine(h, root, marks, c,
+                                          what + " level " + std::to_string(level));
+            }
+            EXPECT_GT(greens, 0u) << what;
+            EXPECT_GT(h.leaf_mesh().triangle_count(), root.triangle_count());
+            (void)undone;
+            derefine_all(h, 40, what);
+            expect_same(h.leaf_mesh(), root, what + " (after derefinement)");
+        }
+    }
+}
+
+TEST(Generators_HRefinement2, GreenPairsAreUndoneWhenAChildNeedsRefinement) {
+    std::uint64_t undone = 0;
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+        const tri::Triangulation2 root =
+            mesh_of(gen::generate_points_2d(gen::Distribution::Uniform, 40, seed));
+        gen::HRefinedMesh2 h(root);
+        std::mt19937_64 rng(seed);
+        for (int level = 0; level < 5; ++level) {
+            const auto marks = random_marks(h.leaf_mesh(), 0.1, rng);
+            const auto c = h.refine(marks);
+            undone += c.green_undone;
+            expect_valid_after_refine(h, root, marks, c, "seed " + std::to_string(seed));
+        }
+    }
+    EXPECT_GT(undone, 0u);
+}
+
+TEST(Generators_HRefinement2, OneSharedEdgeGivesTwoGreensThenARedUndoesOne) {
+    // Two triangles sharing the diagonal of the unit square.
+    const std::vector<double> xy{0, 0, 1, 0, 1, 1, 0, 1};
+    const tri::Triangulation2 root = mesh_of(xy);
+    ASSERT_EQ(root.triangle_count(), 2u);
+    gen::HRefinedMesh2 h(root);
+    // The interior edge.
+    tri::VertIdx a = 0, b = 0;
+    for (unsigned k = 0; k < 3; ++k) {
+        if (root.neighbors[k] != tri::kNone) {
+            a = root.triangles[k];
+            b = root.triangles[(k + 1) % 3];
+        }
+    }
+    const std::vector<tri::VertIdx> diagonal{a, b};
+    auto c = h.refine(diagonal);
+    EXPECT_EQ(c.green, 2u);
+    EXPECT_EQ(c.red, 0u);
+    expect_valid_after_refine(h, root, diagonal, c, "diagonal");
+    ASSERT_EQ(h.leaf_mesh().vertex_count(), 5u);
+    EXPECT_EQ(h.leaf_mesh().xy[8], 0.5);
+    EXPECT_EQ(h.leaf_mesh().xy[9], 0.5);
+    // Half of the diagonal: both green pairs are undone, both parents go red, and the half is
+    // split in a second pass.
+    const std::vector<tri::VertIdx> half{a, 4};
+    c = h.refine(half);
+    EXPECT_EQ(c.green_undone, 2u);
+    EXPECT_GE(c.red, 2u);
+    EXPECT_EQ(c.rounds, 2u);
+    expect_valid_after_refine(h, root, half, c, "half diagonal");
+    derefine_all(h, 10, "square");
+    expect_same(h.leaf_mesh(), root, "square");
+}
+
+TEST(Generators_HRefinement2, RefiningEverythingThreeTimesIsRedOnlyAndDerefinesExactly) {
+    const tri::Triangulation2 root = square_with_boundary(6);
+    gen::HRefinedMesh2 h(root);
+    std::uint64_t triangles = root.triangle_count();
+    for (int level = 1; level <= 3; ++level) {
+        const auto marks = all_edges(h.leaf_mesh());
+        const auto c = h.refine(marks);
+        EXPECT_EQ(c.green, 0u);
+        EXPECT_EQ(c.red, triangles);
+        triangles *= 4;
+        EXPECT_EQ(h.leaf_mesh().triangle_count(), triangles);
+        expect_valid_after_refine(h, root, marks, c, "level " + std::to_string(level));
+        for (tri::TriIdx t = 0; t < h.leaf_mesh().triangle_count(); ++t)
+            EXPECT_EQ(h.level(t), static_cast<std::uint32_t>(level));
+    }
+    for (int level = 3; level >= 1; --level) {
+        h.derefine(all_leaves(h));
+        const auto report = gen::check_h_refined_mesh_2d(h);
+        ASSERT_TRUE(report.ok) << report.problem;
+        triangles /= 4;
+        EXPECT_EQ(h.leaf_mesh().triangle_count(), triangles);
+    }
+    expect_same(h.leaf_mesh(), root, "square with boundary");
+}
+
+TEST(Generators_HRefinement2, ConstrainedBoundaryFlagsFollowTheChildren) {
+    const tri::Triangulation2 root = square_with_boundary(5);
+    ASSERT_FALSE(root.constrained.empty());
+    gen::HRefinedMesh2 h(root);
+    std::mt19937_64 rng(7);
+    for (int level = 0; level < 4; ++level) {
+        const auto marks = random_marks(h.leaf_mesh(), 0.2, rng);
+        const auto c = h.refine(marks);
+        expect_valid_after_refine(h, root, marks, c, "level " + std::to_string(level));
+    }
+    // Every boundary edge of the leaf mesh is constrained (the check proves each flag comes from
+    // the root edge the leaf edge lies on).
+    const tri::Triangulation2& m = h.leaf_mesh();
+    std::size_t constrained = 0;
+    for (tri::TriIdx t = 0; t < m.triangle_count(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            if (m.neighbors[3 * t + static_cast<unsigned>(k)] == tri::kNone) {
+                EXPECT_TRUE(m.is_constrained(t, k));
+            }
+            constrained += m.is_constrained(t, k);
+        }
+    }
+    EXPECT_GT(constrained, 20u);
+    // Random partial derefinement keeps everything valid.
+    for (int step = 0; step < 6; ++step) {
+        std::vector<tri::TriIdx> flagged;
+        std::bernoulli_distribution pick(0.7);
+        for (tri::TriIdx t = 0; t < h.leaf_mesh().triangle_count(); ++t) {
+            if (pick(rng)) flagged.push_back(t);
+        }
+        h.derefine(flagged);
+        const auto report = gen::check_h_refined_mesh_2d(h);
+        ASSERT_TRUE(report.ok) << "step " << step << ": " << report.problem;
+    }
+    derefine_all(h, 40, "constrained square");
+    expect_same(h.leaf_mesh(), root, "constrained square");
+}
+
+TEST(Generators_HRefinement2, LinearFieldIsTransferredExactlyOnADyadicGrid) {
+    const tri::Triangulation2 root = mesh_of(grid_points(8));
+    gen::HRefinedMesh2 h(root);
+    auto linear = [](const tri::Triangulation2& m) {
+        std::vector<double> f(m.vertex_count());
+        for (tri::VertIdx v = 0; v < f.size(); ++v) f[v] = m.xy[2 * v] + 3 * m.xy[2 * v + 1];
+        return f;
+    };
+    std::vector<double> field = linear(root);
+    std::mt19937_64 rng(3);
+    for (int level = 0; level < 5; ++level) {
+        const std::vector<double> before = field;
+        const auto marks = random_marks(h.leaf_mesh(), 0.2, rng);
+        h.refine(marks);
+        field = h.transfer_field(field);
+        ASSERT_EQ(field.size(), h.leaf_mesh().vertex_count());
+        EXPECT_TRUE(std::equal(before.begin(), before.end(), field.begin()));  // injection
+        EXPECT_EQ(field, linear(h.leaf_mesh()));  // exact at every midpoint
+    }
+    for (int step = 0; step < 6; ++step) {
+        const std::vector<tri::VertIdx> map = h.derefine(all_leaves(h));
+        field = gen::restrict_field(field, map);
+        EXPECT_EQ(field, linear(h.leaf_mesh()));
+    }
+}
+
+TEST(Generators_HRefinement2, FieldTransferInterpolatesWithinRoundingOnRandomMeshes) {
+    const tri::Triangulation2 root =
+        mesh_of(gen::generate_points_2d(gen::Distribution::Uniform, 50, 5));
+    gen::HRefinedMesh2 h(root);
+    std::vector<double> field(root.vertex_count());
+    for (tri::VertIdx v = 0; v < field.size(); ++v) field[v] = root.xy[2 * v] + root.xy[2 * v + 1];
+    std::mt19937_64 rng(5);
+    for (int level = 0; level < 3; ++level) {
+        h.refine(random_marks(h.leaf_mesh(), 0.3, rng));
+        field = h.transfer_field(field);
+    }
+    const tri::Triangulation2& m = h.leaf_mesh();
+    for (tri::VertIdx v = 0; v < m.vertex_count(); ++v) {
+        const double exact = m.xy[2 * v] + m.xy[2 * v + 1];
+        if (v < root.vertex_count()) {
+            EXPECT_EQ(field[v], exact);
+        } else {
+            // Each level rounds the coordinates and the field once: a few ulps of 2.
+            EXPECT_NEAR(field[v], exact, 64 * 0x1p-52) << v;
+        }
+    }
+}
+
+TEST(Generators_HRefinement2, ScalingByPowersOfTwoGivesTheSameTriangles) {
+    const std::vector<double> xy = gen::generate_points_2d(gen::Distribution::Uniform, 60, 9);
+    const tri::Triangulation2 root = mesh_of(xy);
+    auto run = [&](int k) {
+        tri::Triangulation2 scaled = root;
+        for (double& x : scaled.xy) x = std::ldexp(x, k);
+        gen::HRefinedMesh2 h(scaled);
+        std::mt19937_64 rng(11);
+        for (int level = 0; level < 4; ++level) {
+            h.refine(random_marks(h.leaf_mesh(), 0.2, rng));
+            const auto report = gen::check_h_refined_mesh_2d(h);
+            EXPECT_TRUE(report.ok) << k << ": " << report.problem;
+        }
+        h.derefine(std::vector<tri::TriIdx>{0, 1, 2, 3, 4, 5, 6, 7});
+        return h.leaf_mesh();
+    };
+    const tri::Triangulation2 one = run(0);
+    for (const int k : {-600, 600}) {
+        const tri::Triangulation2 other = run(k);
+        EXPECT_EQ(other.triangles, one.triangles) << k;
+        EXPECT_EQ(other.neighbors, one.neighbors) << k;
+        ASSERT_EQ(other.xy.size(), one.xy.size());
+        for (std::size_t i = 0; i < one.xy.size(); ++i)
+            ASSERT_EQ(other.xy[i], std::ldexp(one.xy[i], k)) << k << " coordinate " << i;
+    }
+}
+
+TEST(Generators_HRefinement2, SliverSplitsAreRefusedNeverInverted) {
+    // Edge 0 - 1 is one ulp long: its midpoint rounds to an end (ties to even), so splitting it
+    // would make a degenerate child.
+    const std::vector<double> xy{1, 0, 1 + 0x1p-52, 0, 1, 1, 2, 2};
+    const tri::Triangulation2 root = mesh_of(xy);
+    gen::HRefinedMesh2 h(root);
+    const std::vector<tri::VertIdx> short_edge{0, 1};
+    auto c = h.refine(short_edge);
+    EXPECT_GE(c.refused_edges, 1u);
+    EXPECT_EQ(c.red + c.green, 0u);
+    auto report = gen::check_h_refined_mesh_2d(h);
+    ASSERT_TRUE(report.ok) << report.problem;
+    expect_same(h.leaf_mesh(), root, "refused");
+    // Everything marked: whatever is refused, the mesh stays valid and something is refined.
+    for (int level = 0; level < 3; ++level) {
+        c = h.refine(all_edges(h.leaf_mesh()));
+        report = gen::check_h_refined_mesh_2d(h);
+        ASSERT_TRUE(report.ok) << report.problem;
+    }
+    EXPECT_GT(h.leaf_mesh().triangle_count(), root.triangle_count());
+    EXPECT_GT(h.counters().refused_edges, 0u);
+}
+
+TEST(Generators_HRefinement2, NearCollinearAndTinyHugeInputsStayValid) {
+    for (const gen::Distribution d : {gen::Distribution::NearCollinear, gen::Distribution::Tiny,
+                                      gen::Distribution::Huge, gen::Distribution::Duplicates}) {
+        const tri::Triangulation2 root = mesh_of(gen::generate_points_2d(d, 60, 2));
+        gen::HRefinedMesh2 h(root);
+        std::mt19937_64 rng(2);
+        for (int level = 0; level < 4; ++level) {
+            const auto marks = random_marks(h.leaf_mesh(), 0.5, rng);
+            const auto c = h.refine(marks);
+            expect_valid_after_refine(
+                h, root, marks, c,
+                std::string(gen::distribution_name(d)) + " level " + std::to_string(level));
+        }
+        derefine_all(h, 40, std::string(gen::distribution_name(d)));
+        if (h.counters().refused_edges == 0)
+            expect_same(h.leaf_mesh(), root, std::string(gen::distribution_name(d)));
+    }
+}
+
+TEST(Generators_HRefinement2, BadInputIsAnInputError) {
+    const std::vector<double> xy{0, 0, 1, 0, 1, 1, 0, 1};
+    const tri::Triangulation2 root = mesh_of(xy);
+    {
+        tri::Triangulation2 bad = root;
+        std::swap(bad.triangles[0], bad.triangles[1]);  // clockwise
+        EXPECT_THROW(gen::HRefinedMesh2{bad}, em::InputError);
+    }
+    {
+        tri::Triangulation2 bad = root;
+        std::fill(bad.neighbors.begin(), bad.neighbors.end(), tri::kNone);
+        EXPECT_THROW(gen::HRefinedMesh2{bad}, em::InputError);
+    }
+    {
+        tri::Triangulation2 bad = root;
+        bad.xy[0] = std::nan("");
+        EXPECT_THROW(gen::HRefinedMesh2{bad}, em::InputError);
+    }
+    {
+        tri::Triangulation2 bad = root;
+        bad.triangles[0] = 99;
+        EXPECT_THROW(gen::HRefinedMesh2{bad}, em::InputError);
+    }
+    gen::HRefinedMesh2 h(root);
+    EXPECT_THROW(h.refine(std::vector<tri::VertIdx>{0, 9}), em::InputError);
+    EXPECT_THROW(h.refine(std::vector<tri::VertIdx>{0}), em::InputError);
+    EXPECT_THROW(h.derefine(std::vector<tri::TriIdx>{5}), em::InputError);
+    EXPECT_THROW(h.transfer_field(std::vector<double>{1.0}), em::InputError);
+    // A pair that is no edge is ignored and counted.
+    const auto c = h.refine(std::vector<tri::VertIdx>{0, 0});
+    EXPECT_EQ(c.ignored_marks, 1u);
+    expect_same(h.leaf_mesh(), root, "ignored");
+}
