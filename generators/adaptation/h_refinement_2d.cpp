@@ -237,21 +237,38 @@ void HRefinedMesh2::rebuild_leaf_mesh() {
     leaf_.triangles.resize(3 * std::size_t{count});
     leaf_.neighbors.assign(3 * std::size_t{count}, kNone);
     leaf_.constrained.assign(root_constrained_ ? 3 * std::size_t{count} : 0, 0);
-    std::unordered_map<std::uint64_t, std::uint32_t> edge_of;
-    edge_of.reserve(3 * std::size_t{count});
+    // Neighbours by matching each half-edge with its reverse among the half-edges filed under
+    // their smaller end (a vertex's few edges), no hashing: this runs after every call.
+    const std::uint32_t n = static_cast<std::uint32_t>(xy_.size() / 2);
+    std::vector<std::uint32_t> start(std::size_t{n} + 1, 0);
     for (TriIdx t = 0; t < count; ++t) {
         const HRefinementNode2& node = nodes_[leaf_nodes_[t]];
         for (unsigned k = 0; k < 3; ++k) {
             leaf_.triangles[3 * t + k] = node.corners[k];
             if (root_constrained_) leaf_.constrained[3 * t + k] = (node.constrained >> k) & 1u;
-            edge_of.emplace(directed_key(node.corners[k], node.corners[(k + 1) % 3]), 3 * t + k);
+            ++start[std::min(node.corners[k], node.corners[(k + 1) % 3]) + 1];
         }
     }
-    for (TriIdx t = 0; t < count; ++t) {
-        for (unsigned k = 0; k < 3; ++k) {
-            const auto other = edge_of.find(
-                directed_key(leaf_.triangles[3 * t + (k + 1) % 3], leaf_.triangles[3 * t + k]));
-            if (other != edge_of.end()) leaf_.neighbors[3 * t + k] = other->second / 3;
+    for (std::uint32_t v = 0; v < n; ++v) start[v + 1] += start[v];
+    std::vector<std::uint32_t> filed(3 * std::size_t{count});
+    {
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::uint32_t e = 0; e < 3 * count; ++e) {
+            const VertIdx a = leaf_.triangles[e], b = leaf_.triangles[e % 3 == 2 ? e - 2 : e + 1];
+            filed[fill[std::min(a, b)]++] = e;
+        }
+    }
+    for (std::uint32_t v = 0; v < n; ++v) {
+        for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
+            const std::uint32_t e = filed[i];
+            const VertIdx a = leaf_.triangles[e], b = leaf_.triangles[e % 3 == 2 ? e - 2 : e + 1];
+            for (std::uint32_t j = i + 1; j < start[v + 1]; ++j) {
+                const std::uint32_t f = filed[j];
+                if (leaf_.triangles[f] == b && leaf_.triangles[f % 3 == 2 ? f - 2 : f + 1] == a) {
+                    leaf_.neighbors[e] = f / 3;
+                    leaf_.neighbors[f] = e / 3;
+                }
+            }
         }
     }
 }
@@ -323,7 +340,8 @@ void HRefinedMesh2::split_node(std::uint32_t id, int green) {
 }
 
 // One closure-and-split pass [Bank-Sherman-Weiser §3]. Closure to a fixed point over a worklist:
-// a leaf with two marked edges gets the third; a green child with a marked edge has its pair
+// a leaf with two marked edges gets the third (or, when the third is refused, loses one of
+// the two); a green child with a marked edge has its pair
 // undone and its parent split red at once (so the parent's red children, which may carry marks
 // on the halves of its split edge, take part in the same closure). Then every leaf with three
 // marked edges is split red, with one green. Each split is first checked strictly
@@ -337,14 +355,16 @@ void HRefinedMesh2::plan_and_apply(std::span<const std::uint64_t> marks,
         // What a rollback restores.
         const std::vector<double> saved_xy = xy_;
         const auto saved_vertex_parent = vertex_parent_;
-        const auto saved_split_of = split_of_;
         const auto saved_nodes = nodes_;
         const auto saved_free_nodes = free_nodes_;
         const HRefinementCounters2 saved_round = round;
         auto rollback = [&] {
             xy_ = saved_xy;
             vertex_parent_ = saved_vertex_parent;
-            split_of_ = saved_split_of;
+            // (rebuilt rather than copied on every pass: rollbacks are rare)
+            split_of_.clear();
+            for (VertIdx v = root_vertices_; v < vertex_parent_.size(); ++v)
+                split_of_.emplace(edge_key(vertex_parent_[v][0], vertex_parent_[v][1]), v);
             nodes_ = saved_nodes;
             free_nodes_ = saved_free_nodes;
             const std::uint64_t iterations = round.closure_iterations;
@@ -440,10 +460,11 @@ void HRefinedMesh2::plan_and_apply(std::span<const std::uint64_t> marks,
                 while (on[static_cast<std::size_t>(k)]) ++k;
                 const std::uint64_t third = node_edge(nodes_[id], k);
                 if (blocked.count(third)) {
-                    for (int j = 0; j < 3; ++j) {
-                        if (on[static_cast<std::size_t>(j)])
-                            blame.push_back(node_edge(nodes_[id], j));
-                    }
+                    // Red is refused here: keep the leaf green on one of its marked edges and
+                    // refuse the other (the larger key, so the choice is reproducible).
+                    const std::uint64_t e0 = node_edge(nodes_[id], (k + 1) % 3),
+                                        e1 = node_edge(nodes_[id], (k + 2) % 3);
+                    blame.push_back(std::max(e0, e1));
                     conflict = true;
                     continue;
                 }
@@ -509,18 +530,24 @@ HRefinementCounters2 HRefinedMesh2::refine(std::span<const VertIdx> marked_edges
 
     HRefinementCounters2 round;
     std::unordered_set<std::uint64_t> blocked;
+    // The wanted edges that are edges of the leaf mesh (lookups in the small set of marks).
+    const std::unordered_set<std::uint64_t> wanted_set(wanted.begin(), wanted.end());
     std::unordered_set<std::uint64_t> leaf_edges;
     auto collect_leaf_edges = [&] {
         leaf_edges.clear();
         for (const std::uint32_t id : leaf_nodes_) {
-            for (int k = 0; k < 3; ++k) leaf_edges.insert(node_edge(nodes_[id], k));
+            for (int k = 0; k < 3; ++k) {
+                const std::uint64_t e = node_edge(nodes_[id], k);
+                if (wanted_set.count(e)) leaf_edges.insert(e);
+            }
         }
     };
     collect_leaf_edges();
     for (const std::uint64_t e : wanted) round.ignored_marks += leaf_edges.count(e) == 0;
-    // A mark on half of a green pair's split edge survives the pair's undoing as an edge of a
-    // red child: a second pass splits it. Every pass splits or refuses each mark it sees, and a
-    // split edge never comes back, so passes are few; the bound only guards against a bug.
+    // One pass splits or refuses every mark it sees (a green pair undone in it is split red at
+    // once, and its red children take part in the same closure). Another pass runs only if a
+    // marked edge is somehow still an edge; a split edge never comes back, so the bound only
+    // guards against a bug.
     for (int pass = 0;; ++pass) {
         EM_ASSERT(pass < 1000);
         std::vector<std::uint64_t> present;
@@ -626,7 +653,7 @@ std::vector<VertIdx> HRefinedMesh2::derefine(std::span<const TriIdx> flagged_lea
         node.children = {kNone, kNone, kNone, kNone};
         ++counters_.derefined;
     }
-    rebuild_leaf_mesh();
+    collect_leaves();
 
     // Remove the vertices no leaf uses (never a root vertex), keeping the order.
     std::vector<std::uint8_t> used(n, 0);

@@ -30,11 +30,11 @@ struct HRefinementCounters2 {
     std::uint64_t green_undone = 0;        ///< green pairs removed so their parent goes red
     std::uint64_t closure_iterations = 0;  ///< triangles examined by the closure worklist
     std::uint64_t refused_edges = 0;       ///< marked edges left unsplit: a child would not be CCW
-    std::uint64_t rounds = 0;              ///< refine passes (a mark on a removed green half-edge
-                                           ///< is applied to the red child in a second pass)
-    std::uint64_t derefined = 0;           ///< parents whose children were removed
-    std::uint64_t removed_vertices = 0;    ///< vertices no leaf uses any more, removed
-    std::uint64_t ignored_marks = 0;       ///< marked pairs that are no edge of the leaf mesh
+    std::uint64_t rounds = 0;     ///< closure-and-split passes (1 unless a marked edge is still
+                                  ///< an edge after one: a safeguard, not seen in the tests)
+    std::uint64_t derefined = 0;  ///< parents whose children were removed
+    std::uint64_t removed_vertices = 0;  ///< vertices no leaf uses any more, removed
+    std::uint64_t ignored_marks = 0;     ///< marked pairs that are no edge of the leaf mesh
 };
 
 inline constexpr std::array kHRefinementCounterNames =
@@ -91,8 +91,10 @@ class HRefinedMesh2 {
     /// three marked edges: red; one: green; a green child with a marked edge: its green pair is
     /// undone and the parent marked red. A split whose rounded midpoint would make a child not
     /// strictly counter-clockwise (a sliver at the resolution of doubles, or a midpoint equal to
-    /// an end) is refused: the edge is left unsplit, with every edge the closure would then
-    /// need, and counted in refused_edges; the mesh stays valid. Marks on pairs that are not
+    /// an end) is refused: the edge is left unsplit and counted in refused_edges, and so is,
+    /// for a triangle that then cannot go red, the larger (by vertex pair) of its two other
+    /// marked edges, and every marked edge of a green child whose parent cannot go red; the
+    /// mesh stays valid. Marks on pairs that are not
     /// edges of the leaf mesh are ignored (counted in ignored_marks), duplicates are harmless.
     /// @param marked_edges 2·#E vertex indices (u, v), either order.
     /// @throws InputError for a vertex index out of range.

@@ -207,13 +207,13 @@ TEST(Generators_HRefinement2, OneSharedEdgeGivesTwoGreensThenARedUndoesOne) {
     ASSERT_EQ(h.leaf_mesh().vertex_count(), 5u);
     EXPECT_EQ(h.leaf_mesh().xy[8], 0.5);
     EXPECT_EQ(h.leaf_mesh().xy[9], 0.5);
-    // Half of the diagonal: both green pairs are undone, both parents go red, and the half is
-    // split in a second pass.
+    // Half of the diagonal: both green pairs are undone, both parents go red at once, and their
+    // red children split the half in the same pass.
     const std::vector<tri::VertIdx> half{a, 4};
     c = h.refine(half);
     EXPECT_EQ(c.green_undone, 2u);
     EXPECT_GE(c.red, 2u);
-    EXPECT_EQ(c.rounds, 2u);
+    EXPECT_EQ(c.rounds, 1u);
     expect_valid_after_refine(h, root, half, c, "half diagonal");
     derefine_all(h, 10, "square");
     expect_same(h.leaf_mesh(), root, "square");
