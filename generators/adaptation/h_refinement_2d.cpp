@@ -728,10 +728,25 @@ std::vector<double> restrict_field(std::span<const double> field,
 }
 
 triangulation::CheckReport check_h_refined_mesh_2d(const HRefinedMesh2& mesh) {
+    return check_h_refinement_history_2d(mesh.leaf_mesh(), mesh.nodes(), mesh.leaf_nodes(),
+                                         mesh.vertex_parents(), mesh.root_triangle_count(),
+                                         mesh.root_vertex_count());
+}
+
+triangulation::CheckReport check_h_refinement_history_2d(
+    const triangulation::Triangulation2& leaf, std::span<const HRefinementNode2> nodes,
+    std::span<const std::uint32_t> leaf_nodes,
+    std::span<const std::array<VertIdx, 2>> vertex_parents, std::uint32_t root_triangle_count,
+    std::uint32_t root_vertex_count) {
     using triangulation::CheckReport;
-    const triangulation::Triangulation2& leaf = mesh.leaf_mesh();
-    const std::span<const HRefinementNode2> nodes = mesh.nodes();
-    const std::span<const std::uint32_t> leaf_nodes = mesh.leaf_nodes();
+    if (vertex_parents.size() != leaf.vertex_count() || root_vertex_count > leaf.vertex_count() ||
+        root_triangle_count > nodes.size())
+        return CheckReport{false,
+                           "the history's vertex records or root counts do not match its "
+                           "leaf mesh",
+                           kNone,
+                           {}};
+    auto parent_edge = [&](VertIdx v) { return vertex_parents[v]; };
     const std::uint32_t n = leaf.vertex_count();
     const TriIdx count = leaf.triangle_count();
     const auto& tv = leaf.triangles;
@@ -798,7 +813,10 @@ triangulation::CheckReport check_h_refined_mesh_2d(const HRefinedMesh2& mesh) {
         const HRefinementNode2& node = nodes[id];
         if (!node.alive) continue;
         const std::string name = "history node " + std::to_string(id);
-        if (id < mesh.root_triangle_count()) {
+        for (const VertIdx v : node.corners) {
+            if (v >= n) return fail(name + " names a vertex that does not exist");
+        }
+        if (id < root_triangle_count) {
             if (node.parent != kNone || node.level != 0)
                 return fail(name + " is a root triangle with a parent or a level");
         } else {
@@ -829,7 +847,7 @@ triangulation::CheckReport check_h_refined_mesh_2d(const HRefinedMesh2& mesh) {
             const VertIdx a = node.corners[static_cast<std::size_t>(k)],
                           b = node.corners[static_cast<std::size_t>((k + 1) % 3)];
             if (v >= n) return fail(name + ": a split point does not exist");
-            const auto ends = mesh.parent_edge(v);
+            const auto ends = parent_edge(v);
             if (edge_key(ends[0], ends[1]) != edge_key(a, b))
                 return fail(name + ": split point " + std::to_string(v) +
                                 " is not recorded as the split point of edge " + std::to_string(a) +
@@ -875,7 +893,7 @@ triangulation::CheckReport check_h_refined_mesh_2d(const HRefinedMesh2& mesh) {
     // the node it crosses). An edge with no neighbour must lie on a boundary edge of the root,
     // else a vertex hangs on it; a constrained edge must lie on a constrained root edge.
     std::unordered_set<std::uint64_t> root_edges;
-    for (std::uint32_t r = 0; r < mesh.root_triangle_count(); ++r) {
+    for (std::uint32_t r = 0; r < root_triangle_count; ++r) {
         for (int k = 0; k < 3; ++k)
             root_edges.insert(
                 directed_key(nodes[r].corners[static_cast<std::size_t>(k)],
@@ -931,8 +949,8 @@ triangulation::CheckReport check_h_refined_mesh_2d(const HRefinedMesh2& mesh) {
     std::vector<std::uint8_t> used(n, 0);
     for (const VertIdx v : tv) used[v] = 1;
     for (VertIdx v = 0; v < n; ++v) {
-        const auto ends = mesh.parent_edge(v);
-        if (v < mesh.root_vertex_count()) {
+        const auto ends = parent_edge(v);
+        if (v < root_vertex_count) {
             if (ends[0] != kNone) return fail("root vertex " + std::to_string(v) + " has a parent");
             continue;
         }

@@ -129,6 +129,10 @@ class HRefinedMesh2 {
     std::uint32_t root_vertex_count() const { return root_vertices_; }
     /// The edge (a, b) whose split point vertex v is, or {kNone, kNone} for a root vertex.
     std::array<triangulation::VertIdx, 2> parent_edge(triangulation::VertIdx v) const;
+    /// parent_edge of every vertex.
+    std::span<const std::array<triangulation::VertIdx, 2>> vertex_parents() const {
+        return vertex_parent_;
+    }
 
     /// Prolongs a vertex field after refine(): `field` holds values on the first field.size()
     /// vertices (the vertices before the refinement keep their index); the result has a value on
@@ -179,5 +183,13 @@ std::vector<double> restrict_field(std::span<const double> field,
 /// it lies on a constrained root edge); a green pair never refined further; every vertex past
 /// the root's used by a leaf and the split point of its parent edge.
 triangulation::CheckReport check_h_refined_mesh_2d(const HRefinedMesh2& mesh);
+
+/// check_h_refined_mesh_2d on the parts it reads (HRefinedMesh2's accessors of the same names),
+/// so that a test can hand it a corrupted copy.
+triangulation::CheckReport check_h_refinement_history_2d(
+    const triangulation::Triangulation2& leaf, std::span<const HRefinementNode2> nodes,
+    std::span<const std::uint32_t> leaf_nodes,
+    std::span<const std::array<triangulation::VertIdx, 2>> vertex_parents,
+    std::uint32_t root_triangle_count, std::uint32_t root_vertex_count);
 
 }  // namespace exactmesh::generators

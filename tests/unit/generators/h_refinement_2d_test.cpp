@@ -400,6 +400,119 @@ TEST(Generators_HRefinement2, NearCollinearAndTinyHugeInputsStayValid) {
     }
 }
 
+/// The neighbours of `triangles` matched by their edges.
+std::vector<tri::TriIdx> neighbors_of(const std::vector<tri::VertIdx>& triangles) {
+    std::vector<tri::TriIdx> neighbors(triangles.size(), tri::kNone);
+    for (std::size_t e = 0; e < triangles.size(); ++e) {
+        const tri::VertIdx a = triangles[e], b = triangles[e % 3 == 2 ? e - 2 : e + 1];
+        for (std::size_t f = 0; f < triangles.size(); ++f) {
+            if (triangles[f] == b && triangles[f % 3 == 2 ? f - 2 : f + 1] == a)
+                neighbors[e] = static_cast<tri::TriIdx>(f / 3);
+        }
+    }
+    return neighbors;
+}
+
+TEST(Generators_HRefinement2, TheCheckFindsCorruptedHistories) {
+    // The unit square's two triangles, the diagonal split: two green pairs.
+    const std::vector<double> xy{0, 0, 1, 0, 1, 1, 0, 1};
+    const tri::Triangulation2 root = mesh_of(xy);
+    gen::HRefinedMesh2 h(root);
+    tri::VertIdx a = 0, b = 0;
+    for (unsigned k = 0; k < 3; ++k) {
+        if (root.neighbors[k] != tri::kNone) {
+            a = root.triangles[k];
+            b = root.triangles[(k + 1) % 3];
+        }
+    }
+    h.refine(std::vector<tri::VertIdx>{a, b});
+    std::vector<tri::VertIdx> boundary_edge;
+    for (unsigned k = 0; k < 3 && boundary_edge.empty(); ++k) {
+        if (root.neighbors[k] == tri::kNone)
+            boundary_edge = {root.triangles[k], root.triangles[(k + 1) % 3]};
+    }
+    const auto c = h.refine(boundary_edge);  // undoes one green pair: a red parent
+    EXPECT_EQ(c.green_undone, 1u);
+    EXPECT_EQ(c.red, 1u);
+    ASSERT_TRUE(gen::check_h_refined_mesh_2d(h).ok);
+    const std::vector<gen::HRefinementNode2> nodes(h.nodes().begin(), h.nodes().end());
+    const std::vector<std::uint32_t> leaves(h.leaf_nodes().begin(), h.leaf_nodes().end());
+    const std::vector<std::array<tri::VertIdx, 2>> parents(h.vertex_parents().begin(),
+                                                           h.vertex_parents().end());
+    auto check = [&](const tri::Triangulation2& leaf, const std::vector<gen::HRefinementNode2>& n,
+                     const std::vector<std::uint32_t>& l) {
+        return gen::check_h_refinement_history_2d(leaf, n, l, parents, h.root_triangle_count(),
+                                                  h.root_vertex_count());
+    };
+    ASSERT_TRUE(check(h.leaf_mesh(), nodes, leaves).ok);
+    {  // a wrong neighbour
+        tri::Triangulation2 leaf = h.leaf_mesh();
+        std::swap(leaf.neighbors[0], leaf.neighbors[1]);
+        EXPECT_FALSE(check(leaf, nodes, leaves).ok);
+    }
+    {  // a split point off its rounded midpoint
+        tri::Triangulation2 leaf = h.leaf_mesh();
+        leaf.xy[2 * 4] = std::nextafter(leaf.xy[2 * 4], 2.0);
+        const auto report = check(leaf, nodes, leaves);
+        EXPECT_FALSE(report.ok);
+        EXPECT_NE(report.problem.find("rounded midpoint"), std::string::npos) << report.problem;
+    }
+    {  // a hanging vertex: the remaining green pair merged back into its parent
+        std::vector<gen::HRefinementNode2> n = nodes;
+        std::uint32_t green = tri::kNone;
+        for (std::uint32_t id = 0; id < n.size(); ++id) {
+            if (n[id].alive && n[id].child_count == 2) green = id;
+        }
+        ASSERT_NE(green, tri::kNone);
+        std::vector<std::uint32_t> l;
+        for (const std::uint32_t id : leaves) {
+            if (n[id].parent != green) {
+                l.push_back(id);
+            } else if (id == n[green].children[0]) {
+                l.push_back(green);
+            }
+        }
+        n[n[green].children[0]].alive = 0;
+        n[n[green].children[1]].alive = 0;
+        n[green].child_count = 0;
+        tri::Triangulation2 leaf = h.leaf_mesh();
+        leaf.triangles.clear();
+        for (const std::uint32_t id : l)
+            leaf.triangles.insert(leaf.triangles.end(), n[id].corners.begin(), n[id].corners.end());
+        leaf.neighbors = neighbors_of(leaf.triangles);
+        if (!leaf.constrained.empty()) leaf.constrained.assign(leaf.triangles.size(), 0);
+        const auto report = check(leaf, n, l);
+        EXPECT_FALSE(report.ok);
+        EXPECT_NE(report.problem.find("hanging"), std::string::npos) << report.problem;
+    }
+    {  // a constrained flag that no root edge gives
+        tri::Triangulation2 leaf = h.leaf_mesh();
+        leaf.constrained.assign(leaf.triangles.size(), 0);
+        bool flagged = false;
+        for (std::size_t e = 0; e < leaf.neighbors.size() && !flagged; ++e) {
+            if (leaf.neighbors[e] == tri::kNone) leaf.constrained[e] = flagged = true;
+        }
+        ASSERT_TRUE(flagged);
+        const auto report = check(leaf, nodes, leaves);
+        EXPECT_FALSE(report.ok);
+        EXPECT_NE(report.problem.find("constrained"), std::string::npos) << report.problem;
+    }
+    {  // a child that is not its pattern (turned: the same triangle, other corners first)
+        std::vector<gen::HRefinementNode2> n = nodes;
+        bool turned = false;
+        for (gen::HRefinementNode2& node : n) {
+            if (node.alive && node.child_count == 4 && !turned) {
+                auto& corners = n[node.children[3]].corners;
+                std::rotate(corners.begin(), corners.begin() + 1, corners.end());
+                turned = true;
+            }
+        }
+        ASSERT_TRUE(turned);
+        const auto report = check(h.leaf_mesh(), n, leaves);
+        EXPECT_FALSE(report.ok);
+    }
+}
+
 TEST(Generators_HRefinement2, BadInputIsAnInputError) {
     const std::vector<double> xy{0, 0, 1, 0, 1, 1, 0, 1};
     const tri::Triangulation2 root = mesh_of(xy);
