@@ -168,6 +168,43 @@ TEST(Generators_HRefinement2, RandomMarksOverSeveralLevelsStayValidAndDerefineTo
     }
 }
 
+TEST(Generators_HRefinement2, InterleavedRefineAndPartialDerefineStayValid) {
+    for (const gen::Distribution d :
+         {gen::Distribution::Uniform, gen::Distribution::Grid, gen::Distribution::NearCollinear}) {
+        for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+            const tri::Triangulation2 root = mesh_of(gen::generate_points_2d(d, 40, seed));
+            const std::string what =
+                std::string(gen::distribution_name(d)) + " seed " + std::to_string(seed);
+            gen::HRefinedMesh2 h(root);
+            std::mt19937_64 rng(seed);
+            std::uint64_t derefined = 0;
+            for (int step = 0; step < 15; ++step) {
+                if (step % 3 != 2) {
+                    const auto marks = random_marks(h.leaf_mesh(), 0.08, rng);
+                    const auto c = h.refine(marks);
+                    expect_valid_after_refine(h, root, marks, c,
+                                              what + " step " + std::to_string(step));
+                    continue;
+                }
+                std::bernoulli_distribution pick(0.8);
+                std::vector<tri::TriIdx> flagged;
+                for (tri::TriIdx t = 0; t < h.leaf_mesh().triangle_count(); ++t) {
+                    if (pick(rng)) flagged.push_back(t);
+                }
+                const auto before = h.counters().derefined;
+                h.derefine(flagged);
+                derefined += h.counters().derefined - before;
+                const auto report = gen::check_h_refined_mesh_2d(h);
+                ASSERT_TRUE(report.ok) << what << " step " << step << ": " << report.problem;
+                EXPECT_TRUE(std::equal(root.xy.begin(), root.xy.end(), h.leaf_mesh().xy.begin()));
+            }
+            EXPECT_GT(derefined, 0u) << what;
+            derefine_all(h, 60, what);
+            expect_same(h.leaf_mesh(), root, what + " (after derefinement)");
+        }
+    }
+}
+
 TEST(Generators_HRefinement2, GreenPairsAreUndoneWhenAChildNeedsRefinement) {
     std::uint64_t undone = 0;
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
