@@ -6,9 +6,17 @@
 // refinement is undone and its parent refined red), and derefinement by the same history.
 // Invariants after every call (check_h_refined_mesh_2d tests them exactly): the leaf mesh is
 // conforming (no hanging vertex), every triangle strictly counter-clockwise (exact orient2d),
-// every child nested in its parent (see HRefinedMesh2), root vertices keep their index.
-// Cost: O(T) per call plus O(T) per refused sliver split (see refine()). Predicates: orient2d,
-// within_rounding_of_segment (checks only).
+// every child nested in its parent (see HRefinedMesh2), root vertices keep their index; the
+// tests also see neighbouring leaves differ by at most one level.
+// Cost: O(T) per call (expected, hashing), plus O(T) per restart when a split is refused (see
+// refine()); memory O(nodes ever alive). Predicates: orient2d (decisions and checks),
+// within_rounding_of_segment (checks).
+//
+// Split points are made from the two ends of the edge being split (rounded once), not from the
+// root's coordinates: a child's corners are then its actual parent's corners and split points,
+// both sides of an edge get the same point, and nesting is decidable on the parent's own
+// vertices. A root edge split l times carries points within l half-ulps of their exact dyadic
+// positions (exactly on them when the coordinates are dyadic enough, e.g. grids of k/2^j).
 #pragma once
 
 #include <array>
@@ -89,15 +97,16 @@ class HRefinedMesh2 {
     /// Refines the leaf mesh so that no marked edge remains an edge of it (except refused ones).
     /// Closure: a triangle with two marked edges gets the third one marked (to a fixed point);
     /// three marked edges: red; one: green; a green child with a marked edge: its green pair is
-    /// undone and the parent marked red. A split whose rounded midpoint would make a child not
-    /// strictly counter-clockwise (a sliver at the resolution of doubles, or a midpoint equal to
-    /// an end) is refused: the edge is left unsplit and counted in refused_edges, and so is,
-    /// for a triangle that then cannot go red, the larger (by vertex pair) of its two other
-    /// marked edges, and every marked edge of a green child whose parent cannot go red; the
-    /// mesh stays valid. Marks on pairs that are not
-    /// edges of the leaf mesh are ignored (counted in ignored_marks), duplicates are harmless.
+    /// undone and the parent split red at once (its red children join the same closure, so a
+    /// mark on half of the old split edge is honoured in the same call). A split whose rounded
+    /// midpoint would make a child not strictly counter-clockwise (a sliver at the resolution of
+    /// doubles, or a midpoint equal to an end) is refused: the edge is left unsplit and counted in
+    /// refused_edges, and so is, for a triangle that then cannot go red, the larger (by vertex
+    /// pair) of its two other marked edges, and every marked edge of a green child whose parent
+    /// cannot go red; the mesh stays valid. Marks on pairs that are not edges of the leaf mesh are
+    /// ignored (counted in ignored_marks); duplicates are harmless.
     /// @param marked_edges 2·#E vertex indices (u, v), either order.
-    /// @throws InputError for a vertex index out of range.
+    /// @throws InputError for a vertex index out of range or an odd number of indices.
     /// @return this call's counters (also added to counters()).
     HRefinementCounters2 refine(std::span<const triangulation::VertIdx> marked_edges);
 
