@@ -9,13 +9,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <unordered_set>
 #include <vector>
 
 #include "base/errors.hpp"
 #include "generators/adaptation/h_refinement_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "generators/inputs/inputs.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 
@@ -317,6 +320,57 @@ TEST(Generators_HRefinement2, ConstrainedBoundaryFlagsFollowTheChildren) {
     }
     derefine_all(h, 40, "constrained square");
     expect_same(h.leaf_mesh(), root, "constrained square");
+}
+
+TEST(Generators_HRefinement2, SampleDomainMeshesWithHolesAndCurvedBoundaries) {
+    for (const gen::SampleDomain d : gen::kAllSampleDomains) {
+        const gen::SizeFunction size = gen::sample_domain_size(d);
+        const gen::DomainPslg domain = gen::sample_domain(d, size);
+        gen::RefinementOptions2 options;
+        options.size = size;
+        const tri::Triangulation2 root =
+            gen::delaunay_refinement_2d({domain.xy, domain.segments, domain.holes, {}}, options)
+                .mesh.mesh;
+        const std::string what(gen::sample_domain_name(d));
+        gen::HRefinedMesh2 h(root);
+        std::mt19937_64 rng(13);
+        for (int level = 0; level < 3; ++level) {
+            const auto marks = random_marks(h.leaf_mesh(), 0.05, rng);
+            const auto c = h.refine(marks);
+            EXPECT_EQ(c.refused_edges, 0u) << what;
+            expect_valid_after_refine(h, root, marks, c, what + " level " + std::to_string(level));
+        }
+        derefine_all(h, 20, what);
+        expect_same(h.leaf_mesh(), root, what);
+    }
+}
+
+TEST(Generators_HRefinement2, RoundedMidpointIsRoundedOnce) {
+    EXPECT_EQ(gen::rounded_midpoint(1.0, 3.0), 2.0);
+    EXPECT_EQ(gen::rounded_midpoint(-1.0, 1.0), 0.0);
+    // Ties go to even: 1 + 2^-53 lies halfway between 1 and 1 + 2^-52.
+    EXPECT_EQ(gen::rounded_midpoint(1.0, 1.0 + 0x1p-52), 1.0);
+    EXPECT_EQ(gen::rounded_midpoint(1.0 + 0x1p-52, 1.0 + 0x1p-51), 1.0 + 0x1p-51);
+    // a + b overflows: the halves are summed.
+    const double big = std::numeric_limits<double>::max();
+    EXPECT_EQ(gen::rounded_midpoint(big, big), big);
+    EXPECT_EQ(gen::rounded_midpoint(big, -big), 0.0);
+    // (1.5 - 2^-53) 2^1023, halfway between two doubles: to the even one, 1.5 2^1023.
+    EXPECT_EQ(gen::rounded_midpoint(big, 0x1p1023), 0x1.8p1023);
+    // Subnormals: the sum is exact, its half rounds once (ties to even).
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    EXPECT_EQ(gen::rounded_midpoint(tiny, 0.0), 0.0);
+    EXPECT_EQ(gen::rounded_midpoint(3 * tiny, 0.0), 2 * tiny);
+    EXPECT_EQ(gen::rounded_midpoint(4 * tiny, 2 * tiny), 3 * tiny);
+    // Scaling by 2^k scales the midpoint exactly.
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int i = 0; i < 1000; ++i) {
+        const double a = u(rng), b = u(rng);
+        for (const int k : {-600, 600})
+            EXPECT_EQ(gen::rounded_midpoint(std::ldexp(a, k), std::ldexp(b, k)),
+                      std::ldexp(gen::rounded_midpoint(a, b), k));
+    }
 }
 
 TEST(Generators_HRefinement2, LinearFieldIsTransferredExactlyOnADyadicGrid) {
