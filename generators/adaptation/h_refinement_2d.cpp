@@ -579,17 +579,19 @@ std::vector<VertIdx> HRefinedMesh2::derefine(std::span<const TriIdx> flagged_lea
                         std::to_string(leaf_count) + " leaf triangles)");
         flagged[leaf_nodes_[t]] = 1;
     }
-    // Candidates: parents whose children are all flagged leaves. 1 = coarsen, 0 = keep.
+    // Candidates: parents whose children are all flagged leaves, and every green pair (a
+    // closure artefact: it goes when its split point is no longer needed across its edge, so
+    // coarsening a red parent takes its green neighbours along). 1 = coarsen, 0 = keep.
     std::vector<std::uint8_t> coarsen(nodes_.size(), 0);
     std::vector<std::uint32_t> candidates;
     for (const std::uint32_t id : leaf_nodes_) {
         const std::uint32_t parent = nodes_[id].parent;
-        if (!flagged[id] || parent == kNone || coarsen[parent]) continue;
+        if (parent == kNone || coarsen[parent]) continue;
         const HRefinementNode2& p = nodes_[parent];
         bool all = true;
         for (int c = 0; c < p.child_count; ++c) {
-            const HRefinementNode2& child = nodes_[p.children[static_cast<std::size_t>(c)]];
-            all = all && child.child_count == 0 && flagged[p.children[static_cast<std::size_t>(c)]];
+            const std::uint32_t child = p.children[static_cast<std::size_t>(c)];
+            all = all && nodes_[child].child_count == 0 && (flagged[child] || p.child_count == 2);
         }
         if (!all) continue;
         coarsen[parent] = 1;

@@ -110,12 +110,16 @@ class HRefinedMesh2 {
     /// @return this call's counters (also added to counters()).
     HRefinementCounters2 refine(std::span<const triangulation::VertIdx> marked_edges);
 
-    /// Coarsens one generation: a parent whose children are all leaves and all flagged loses
-    /// them, unless one of its split points would be left hanging, i.e. is still a corner of a
-    /// triangle outside it after this step (decided for all parents at once, so that two
-    /// neighbouring parents coarsen together); such a parent is kept, whole (the rule keeps
-    /// only red and green patterns made by refine()). Then unused vertices are removed.
-    /// Call it repeatedly to coarsen several levels.
+    /// Coarsens one generation: a parent whose children are all leaves and all flagged, and
+    /// every green pair (flagged or not: greens are closure artefacts), loses its children,
+    /// unless one of its split points would be left hanging, i.e. would still be a corner of a
+    /// triangle outside it after this step. Decided for all parents at once, to the largest
+    /// consistent set, so that neighbouring parents coarsen together and a red parent takes its
+    /// green neighbours along. A parent whose split point would hang is kept whole (rather
+    /// than turned into a green: the rule keeps only patterns that refine() made, so the
+    /// history stays the one refine() wrote). Then vertices no leaf uses are removed (never a
+    /// root vertex). Call it repeatedly to coarsen several levels; flagging every leaf each
+    /// time returns the root mesh exactly.
     /// @param flagged_leaves leaf triangle indices of the current leaf mesh (any order,
     ///        duplicates harmless).
     /// @throws InputError for an index out of range.

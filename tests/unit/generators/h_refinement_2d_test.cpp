@@ -259,6 +259,43 @@ TEST(Generators_HRefinement2, OneSharedEdgeGivesTwoGreensThenARedUndoesOne) {
     expect_same(h.leaf_mesh(), root, "square");
 }
 
+TEST(Generators_HRefinement2, CoarseningARedTriangleTakesItsGreenNeighboursAlong) {
+    const tri::Triangulation2 root =
+        mesh_of(gen::generate_points_2d(gen::Distribution::Uniform, 30, 4));
+    gen::HRefinedMesh2 h(root);
+    // An interior triangle (three neighbours), all its edges marked: red, three greens.
+    tri::TriIdx inner = tri::kNone;
+    for (tri::TriIdx t = 0; t < root.triangle_count() && inner == tri::kNone; ++t) {
+        if (root.neighbors[3 * t] != tri::kNone && root.neighbors[3 * t + 1] != tri::kNone &&
+            root.neighbors[3 * t + 2] != tri::kNone)
+            inner = t;
+    }
+    ASSERT_NE(inner, tri::kNone);
+    const std::vector<tri::VertIdx> marks{
+        root.triangles[3 * inner],     root.triangles[3 * inner + 1], root.triangles[3 * inner + 1],
+        root.triangles[3 * inner + 2], root.triangles[3 * inner + 2], root.triangles[3 * inner]};
+    const auto c = h.refine(marks);
+    EXPECT_EQ(c.red, 1u);
+    EXPECT_EQ(c.green, 3u);
+    expect_valid_after_refine(h, root, marks, c, "one red");
+    // Flag only the four red children: the greens go with them.
+    std::vector<tri::TriIdx> red_children;
+    for (tri::TriIdx t = 0; t < h.leaf_mesh().triangle_count(); ++t) {
+        const auto& node = h.nodes()[h.leaf_nodes()[t]];
+        if (node.parent == inner) red_children.push_back(t);
+    }
+    ASSERT_EQ(red_children.size(), 4u);
+    // Flagging three of them coarsens nothing.
+    h.derefine(std::span(red_children).first(3));
+    EXPECT_EQ(h.leaf_mesh().triangle_count(), root.triangle_count() + 3 + 3);
+    ASSERT_TRUE(gen::check_h_refined_mesh_2d(h).ok);
+    const std::vector<tri::VertIdx> map = h.derefine(red_children);
+    EXPECT_EQ(map.size(), root.vertex_count() + 3);
+    EXPECT_EQ(h.counters().derefined, 4u);
+    EXPECT_EQ(h.counters().removed_vertices, 3u);
+    expect_same(h.leaf_mesh(), root, "one red coarsened");
+}
+
 TEST(Generators_HRefinement2, RefiningEverythingThreeTimesIsRedOnlyAndDerefinesExactly) {
     const tri::Triangulation2 root = square_with_boundary(6);
     gen::HRefinedMesh2 h(root);
