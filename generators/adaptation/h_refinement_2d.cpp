@@ -340,14 +340,17 @@ void HRefinedMesh2::split_node(std::uint32_t id, int green) {
 }
 
 // One closure-and-split pass [Bank-Sherman-Weiser §3]. Closure to a fixed point over a worklist:
-// a leaf with two marked edges gets the third (or, when the third is refused, loses one of
-// the two); a green child with a marked edge has its pair
+// a leaf with two marked edges gets the third; a green child with a marked edge has its pair
 // undone and its parent split red at once (so the parent's red children, which may carry marks
-// on the halves of its split edge, take part in the same closure). Then every leaf with three
-// marked edges is split red, with one green. Each split is first checked strictly
-// counter-clockwise (exact orient2d); when one is not, or the closure needs a refused edge, the
-// pass is rolled back, the edges to blame are added to `blocked` and the pass starts again
-// (blocked only grows, so this ends).
+// on the halves of its split edge, take part in the same closure). Every leaf whose marks
+// changed is then checked: its split (red for three marked edges, green for one) must give
+// strictly counter-clockwise children (exact orient2d). A refusal (a split that is not, a
+// third edge that is refused, a green child whose parent cannot go red) blocks the edge to
+// blame, unmarks it and sends its leaves back to the closure, so refusals cost only local work.
+// Splits are made after the fixed point, except a green undo's red split, which is made at
+// once: its edges are committed, and a refusal of a committed edge (a neighbour that cannot
+// split it) rolls the pass back and starts again with that edge blocked (blocked only grows,
+// so this ends).
 void HRefinedMesh2::plan_and_apply(std::span<const std::uint64_t> marks,
                                    std::unordered_set<std::uint64_t>& blocked,
                                    HRefinementCounters2& round) {
@@ -361,12 +364,12 @@ void HRefinedMesh2::plan_and_apply(std::span<const std::uint64_t> marks,
         auto rollback = [&] {
             xy_ = saved_xy;
             vertex_parent_ = saved_vertex_parent;
+            nodes_ = saved_nodes;
+            free_nodes_ = saved_free_nodes;
             // (rebuilt rather than copied on every pass: rollbacks are rare)
             split_of_.clear();
             for (VertIdx v = root_vertices_; v < vertex_parent_.size(); ++v)
                 split_of_.emplace(edge_key(vertex_parent_[v][0], vertex_parent_[v][1]), v);
-            nodes_ = saved_nodes;
-            free_nodes_ = saved_free_nodes;
             const std::uint64_t iterations = round.closure_iterations;
             round = saved_round;
             round.closure_iterations = iterations;
@@ -391,96 +394,128 @@ void HRefinedMesh2::plan_and_apply(std::span<const std::uint64_t> marks,
             }
         };
         for (const std::uint32_t id : leaf_nodes_) attach(id);
-        std::unordered_set<std::uint64_t> marked;
-        std::vector<std::uint32_t> work;
-        auto mark = [&](std::uint64_t e) {
-            if (!marked.insert(e).second) return;
+        std::unordered_set<std::uint64_t> marked, committed;
+        std::vector<std::uint64_t> hard;  // committed edges a neighbour cannot split
+        std::vector<std::uint32_t> work, touched;
+        auto push_around = [&](std::uint64_t e) {
             const auto it = around.find(e);
             if (it == around.end()) return;
             for (const std::uint32_t id : it->second) {
                 if (id != kNone) work.push_back(id);
             }
         };
-        for (const std::uint64_t e : marks) {
-            if (!blocked.count(e)) mark(e);
-        }
-        bool conflict = false;
+        auto mark = [&](std::uint64_t e) {
+            if (blocked.count(e) || !marked.insert(e).second) return;
+            push_around(e);
+        };
+        auto refuse = [&](std::uint64_t e) {
+            if (committed.count(e)) {
+                hard.push_back(e);
+                return;
+            }
+            if (!blocked.insert(e).second) return;
+            if (marked.erase(e)) push_around(e);
+        };
+        for (const std::uint64_t e : marks) mark(e);
         std::vector<std::uint64_t> blame;
-        while (!work.empty() && !conflict) {
-            const std::uint32_t id = work.back();
-            work.pop_back();
-            if (!nodes_[id].alive || nodes_[id].child_count != 0) continue;
-            ++round.closure_iterations;
-            std::array<bool, 3> on{};
-            int count = 0;
-            for (int k = 0; k < 3; ++k) {
-                on[static_cast<std::size_t>(k)] = marked.count(node_edge(nodes_[id], k)) != 0;
-                count += on[static_cast<std::size_t>(k)];
-            }
-            if (count == 0) continue;
-            const std::uint32_t parent = nodes_[id].parent;
-            if (parent != kNone && nodes_[parent].child_count == 2) {
-                // A green child is never split: undo the pair and split the parent red, unless
-                // an edge of the parent is refused or its red split is not counter-clockwise,
-                // when this child's marks are refused.
-                bool free = true;
-                for (int k = 0; k < 3; ++k)
-                    free = free && !blocked.count(node_edge(nodes_[parent], k));
-                if (!free || !split_is_ccw(parent, -1, blame)) {
-                    for (int k = 0; k < 3; ++k) {
-                        if (on[static_cast<std::size_t>(k)])
-                            blame.push_back(node_edge(nodes_[id], k));
+        for (;;) {
+            while (!work.empty()) {
+                const std::uint32_t id = work.back();
+                work.pop_back();
+                if (!nodes_[id].alive || nodes_[id].child_count != 0) continue;
+                ++round.closure_iterations;
+                touched.push_back(id);
+                std::array<bool, 3> on{};
+                int count = 0;
+                for (int k = 0; k < 3; ++k) {
+                    on[static_cast<std::size_t>(k)] = marked.count(node_edge(nodes_[id], k)) != 0;
+                    count += on[static_cast<std::size_t>(k)];
+                }
+                if (count == 0) continue;
+                const std::uint32_t parent = nodes_[id].parent;
+                if (parent != kNone && nodes_[parent].child_count == 2) {
+                    // A green child is never split: undo the pair and split the parent red,
+                    // unless an edge of the parent is refused or its red split is not
+                    // counter-clockwise, when this child's marks are refused.
+                    bool free = true;
+                    for (int k = 0; k < 3; ++k)
+                        free = free && !blocked.count(node_edge(nodes_[parent], k));
+                    blame.clear();
+                    if (!free || !split_is_ccw(parent, -1, blame)) {
+                        for (int k = 0; k < 3; ++k) {
+                            if (on[static_cast<std::size_t>(k)]) refuse(node_edge(nodes_[id], k));
+                        }
+                        continue;
                     }
-                    conflict = true;
+                    for (int c = 0; c < 2; ++c) {
+                        const std::uint32_t child =
+                            nodes_[parent].children[static_cast<std::size_t>(c)];
+                        detach(child);
+                        nodes_[child].alive = 0;
+                        free_nodes_.push_back(child);
+                    }
+                    nodes_[parent].child_count = 0;
+                    nodes_[parent].children = {kNone, kNone, kNone, kNone};
+                    ++round.green_undone;
+                    split_node(parent, -1);
+                    ++round.red;
+                    for (int c = 0; c < 4; ++c) {
+                        const std::uint32_t child =
+                            nodes_[parent].children[static_cast<std::size_t>(c)];
+                        attach(child);
+                        work.push_back(child);
+                    }
+                    for (int k = 0; k < 3; ++k) {
+                        committed.insert(node_edge(nodes_[parent], k));
+                        mark(node_edge(nodes_[parent], k));
+                    }
                     continue;
                 }
-                for (int c = 0; c < 2; ++c) {
-                    const std::uint32_t child =
-                        nodes_[parent].children[static_cast<std::size_t>(c)];
-                    detach(child);
-                    nodes_[child].alive = 0;
-                    free_nodes_.push_back(child);
+                if (count == 2) {
+                    int k = 0;
+                    while (on[static_cast<std::size_t>(k)]) ++k;
+                    const std::uint64_t third = node_edge(nodes_[id], k);
+                    if (blocked.count(third)) {
+                        // Red is refused here: keep the leaf green on one of its marked edges
+                        // and refuse the other (the larger key, so the choice is reproducible).
+                        refuse(std::max(node_edge(nodes_[id], (k + 1) % 3),
+                                        node_edge(nodes_[id], (k + 2) % 3)));
+                    } else {
+                        mark(third);
+                    }
                 }
-                nodes_[parent].child_count = 0;
-                nodes_[parent].children = {kNone, kNone, kNone, kNone};
-                ++round.green_undone;
-                split_node(parent, -1);
-                ++round.red;
-                for (int c = 0; c < 4; ++c) {
-                    const std::uint32_t child =
-                        nodes_[parent].children[static_cast<std::size_t>(c)];
-                    attach(child);
-                    work.push_back(child);
-                }
-                for (int k = 0; k < 3; ++k) mark(node_edge(nodes_[parent], k));
-                continue;
             }
-            if (count == 2) {
-                int k = 0;
-                while (on[static_cast<std::size_t>(k)]) ++k;
-                const std::uint64_t third = node_edge(nodes_[id], k);
-                if (blocked.count(third)) {
-                    // Red is refused here: keep the leaf green on one of its marked edges and
-                    // refuse the other (the larger key, so the choice is reproducible).
-                    const std::uint64_t e0 = node_edge(nodes_[id], (k + 1) % 3),
-                                        e1 = node_edge(nodes_[id], (k + 2) % 3);
-                    blame.push_back(std::max(e0, e1));
-                    conflict = true;
-                    continue;
+            // The splits of the leaves whose marks changed, checked before any is made.
+            std::sort(touched.begin(), touched.end());
+            touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+            for (const std::uint32_t id : touched) {
+                if (!nodes_[id].alive || nodes_[id].child_count != 0) continue;
+                int count = 0, green = -1;
+                for (int k = 0; k < 3; ++k) {
+                    if (marked.count(node_edge(nodes_[id], k))) {
+                        ++count;
+                        green = k;
+                    }
                 }
-                mark(third);
+                if (count == 0 || count == 2) continue;  // 2: only beside a hard conflict
+                blame.clear();
+                if (!split_is_ccw(id, count == 3 ? -1 : green, blame)) {
+                    for (const std::uint64_t e : blame) refuse(e);
+                }
             }
+            touched.clear();
+            if (work.empty()) break;
         }
-        if (conflict) {
+        if (!hard.empty()) {
             rollback();
-            blocked.insert(blame.begin(), blame.end());
+            ++round.restarts;
+            blocked.insert(hard.begin(), hard.end());
             continue;
         }
 
-        // The leaves in depth-first order, their splits checked before any is made.
+        // Split every leaf with marked edges, in depth-first order (reproducible numbering).
         collect_leaves();
         std::vector<std::pair<std::uint32_t, int>> splits;  // (leaf, green edge or -1)
-        bool failed = false;
         for (const std::uint32_t id : leaf_nodes_) {
             int count = 0, green = -1;
             for (int k = 0; k < 3; ++k) {
@@ -491,15 +526,7 @@ void HRefinedMesh2::plan_and_apply(std::span<const std::uint64_t> marks,
             }
             if (count == 0) continue;
             EM_ASSERT(count != 2);
-            if (count == 3) green = -1;
-            if (!split_is_ccw(id, green, blame)) failed = true;
-            splits.emplace_back(id, green);
-        }
-        if (failed) {
-            rollback();
-            blocked.insert(blame.begin(), blame.end());
-            collect_leaves();
-            continue;
+            splits.emplace_back(id, count == 3 ? -1 : green);
         }
         for (const auto& [id, green] : splits) {
             split_node(id, green);
@@ -566,6 +593,7 @@ HRefinementCounters2 HRefinedMesh2::refine(std::span<const VertIdx> marked_edges
     counters_.closure_iterations += round.closure_iterations;
     counters_.refused_edges += round.refused_edges;
     counters_.rounds += round.rounds;
+    counters_.restarts += round.restarts;
     counters_.ignored_marks += round.ignored_marks;
     return round;
 }

@@ -8,8 +8,9 @@
 // conforming (no hanging vertex), every triangle strictly counter-clockwise (exact orient2d),
 // every child nested in its parent (see HRefinedMesh2), root vertices keep their index; the
 // tests also see neighbouring leaves differ by at most one level.
-// Cost: O(T) per call (expected, hashing), plus O(T) per restart when a split is refused (see
-// refine()); memory O(nodes ever alive). Predicates: orient2d (decisions and checks),
+// Cost: O(T) per call (expected, hashing; a refused split costs local work only), plus O(T)
+// per restart (counted; only when a sliver at the resolution of doubles sits beside a green
+// pair being undone); memory O(nodes ever alive). Predicates: orient2d (decisions and checks),
 // within_rounding_of_segment (checks).
 //
 // Split points are made from the two ends of the edge being split (rounded once), not from the
@@ -40,6 +41,8 @@ struct HRefinementCounters2 {
     std::uint64_t refused_edges = 0;       ///< marked edges left unsplit: a child would not be CCW
     std::uint64_t rounds = 0;     ///< closure-and-split passes (1 unless a marked edge is still
                                   ///< an edge after one: a safeguard, not seen in the tests)
+    std::uint64_t restarts = 0;   ///< passes rolled back: a neighbour could not split an edge
+                                  ///< of a green undo's red split (slivers only)
     std::uint64_t derefined = 0;  ///< parents whose children were removed
     std::uint64_t removed_vertices = 0;  ///< vertices no leaf uses any more, removed
     std::uint64_t ignored_marks = 0;     ///< marked pairs that are no edge of the leaf mesh
@@ -47,7 +50,7 @@ struct HRefinementCounters2 {
 
 inline constexpr std::array kHRefinementCounterNames =
     EM_COUNTER_TABLE(HRefinementCounters2, red, green, green_undone, closure_iterations,
-                     refused_edges, rounds, derefined, removed_vertices, ignored_marks);
+                     refused_edges, rounds, restarts, derefined, removed_vertices, ignored_marks);
 static_assert(counter_table_complete(kHRefinementCounterNames));
 
 /// One triangle of the refinement history. Children patterns, for corners (a, b, c) =

@@ -509,6 +509,22 @@ TEST(Generators_HRefinement2, SliverSplitsAreRefusedNeverInverted) {
     EXPECT_GT(h.counters().refused_edges, 0u);
 }
 
+TEST(Generators_HRefinement2, ManySliversAreRefusedLocally) {
+    // 2000 points within a few ulps of a line: thousands of refusals, each settled by local
+    // work (this took quadratic time, 54 s for 4000 points, while a refusal restarted the pass).
+    const tri::Triangulation2 root =
+        mesh_of(gen::generate_points_2d(gen::Distribution::NearCollinear, 2000, 1));
+    gen::HRefinedMesh2 h(root);
+    for (int level = 0; level < 2; ++level) {
+        const auto c = h.refine(all_edges(h.leaf_mesh()));
+        const auto report = gen::check_h_refined_mesh_2d(h);
+        ASSERT_TRUE(report.ok) << report.problem;
+        EXPECT_GT(c.refused_edges, 100u);
+        EXPECT_GT(c.red + c.green, 100u);
+        EXPECT_LT(c.closure_iterations, 50 * std::uint64_t{h.leaf_mesh().triangle_count()});
+    }
+}
+
 TEST(Generators_HRefinement2, NearCollinearAndTinyHugeInputsStayValid) {
     for (const gen::Distribution d : {gen::Distribution::NearCollinear, gen::Distribution::Tiny,
                                       gen::Distribution::Huge, gen::Distribution::Duplicates}) {
