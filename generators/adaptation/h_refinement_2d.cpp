@@ -643,30 +643,35 @@ std::vector<VertIdx> HRefinedMesh2::derefine(std::span<const TriIdx> flagged_lea
     // that leaf stays unless its own parent coarsens, and then it is kept only if it is one of
     // that parent's corners. Decided for all candidates together, to the largest fixed point
     // (a candidate is dropped only when something that stays needs its split point), so that
-    // neighbouring parents coarsen together.
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (const std::uint32_t id : candidates) {
-            if (!coarsen[id]) continue;
-            const HRefinementNode2& p = nodes_[id];
-            bool hangs = false;
-            for (int k = 0; k < 3 && !hangs; ++k) {
-                const VertIdx m = split_point(nodes_, p, k);
-                if (m == kNone) continue;
-                for (std::uint32_t i = start[m]; i < start[m + 1] && !hangs; ++i) {
-                    const std::uint32_t leaf = at[i];
-                    const std::uint32_t x = nodes_[leaf].parent;
-                    if (x == id) continue;
-                    const bool leaf_goes =
-                        x != kNone && coarsen[x] &&
-                        std::find(nodes_[x].corners.begin(), nodes_[x].corners.end(), m) ==
-                            nodes_[x].corners.end();
-                    hangs = !leaf_goes;
-                }
+    // neighbouring parents coarsen together. A worklist: dropping a candidate re-examines only
+    // the candidates whose split points its children's corners are.
+    std::vector<std::uint32_t> work(candidates.rbegin(), candidates.rend());
+    while (!work.empty()) {
+        const std::uint32_t id = work.back();
+        work.pop_back();
+        if (!coarsen[id]) continue;
+        const HRefinementNode2& p = nodes_[id];
+        bool hangs = false;
+        for (int k = 0; k < 3 && !hangs; ++k) {
+            const VertIdx m = split_point(nodes_, p, k);
+            if (m == kNone) continue;
+            for (std::uint32_t i = start[m]; i < start[m + 1] && !hangs; ++i) {
+                const std::uint32_t x = nodes_[at[i]].parent;
+                if (x == id) continue;
+                const bool leaf_goes = x != kNone && coarsen[x] &&
+                                       std::find(nodes_[x].corners.begin(), nodes_[x].corners.end(),
+                                                 m) == nodes_[x].corners.end();
+                hangs = !leaf_goes;
             }
-            if (hangs) {
-                coarsen[id] = 0;
-                changed = true;
+        }
+        if (!hangs) continue;
+        coarsen[id] = 0;
+        for (int c = 0; c < p.child_count; ++c) {
+            for (const VertIdx v : nodes_[p.children[static_cast<std::size_t>(c)]].corners) {
+                for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
+                    const std::uint32_t x = nodes_[at[i]].parent;
+                    if (x != kNone && x != id && coarsen[x]) work.push_back(x);
+                }
             }
         }
     }
