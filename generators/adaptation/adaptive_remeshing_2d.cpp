@@ -87,6 +87,13 @@ SizeFunction remesh_size_function_2d(const AdaptiveMesh2& state, const Adaptatio
 bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
                      const MeshGenerator2& generator, const AdaptationOptions& options,
                      const FieldSource& field, RemeshCounters2& counters) {
+    for (std::size_t s = 0; s < domain.segment_curves.size(); ++s) {
+        const std::uint32_t curve = domain.segment_curves[s].curve;
+        if (curve != kStraightSide && curve >= state.curves.size()) {
+            throw InputError("adaptive remeshing: segment " + std::to_string(s) + " names curve " +
+                             std::to_string(curve) + " of " + std::to_string(state.curves.size()));
+        }
+    }
     const SizeFunction size = remesh_size_function_2d(state, options);
     const MeshDomain2 mesh_domain(domain.pslg, domain.cdt);
     MeshOptions2 mesh_options;
@@ -155,6 +162,8 @@ struct FilledVoid {
     std::vector<VertIdx> mesh;
     std::int64_t net = 0;
     std::uint64_t removed = 0;
+    std::uint64_t inner_inputs = 0;
+    std::uint64_t slits = 0;
     bool closed = false;
 };
 
@@ -205,18 +214,22 @@ FilledVoid fill_void(const AdaptiveMesh2& state, std::vector<TriIdx> triangles,
     // slit of the void, is two front edges).
     for (std::size_t e = 0; 2 * e + 1 < boundary.front.size(); ++e) {
         const VertIdx a = boundary.front[2 * e], b = boundary.front[2 * e + 1];
-        if (a < b || !directed.contains((std::uint64_t{b} << 32) | a)) {
+        const bool slit = directed.contains((std::uint64_t{b} << 32) | a);
+        if (a < b || !slit) {
             boundary.pieces.insert(boundary.pieces.end(), {a, b});
             boundary.piece_segment.push_back(0);
+            filled.slits += slit ? 1 : 0;
         }
     }
     const auto count = static_cast<VertIdx>(global.size());
     for (VertIdx l = 0; l < count; ++l) {
         if (on_front[l]) continue;
-        if (global[l] < state.fixed_vertices)
+        if (global[l] < state.fixed_vertices) {
             boundary.free_vertices.push_back(l);  // an input vertex: kept
-        else
+            ++filled.inner_inputs;
+        } else {
             ++filled.removed;
+        }
     }
     boundary.cdt.mesh.xy = boundary.xy;
     boundary.cdt.input_vertex_count = count;
@@ -401,6 +414,8 @@ bool local_remesh_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& option
         added.new_points += f.xy.size() / 2 - count;
         added.new_triangles += f.mesh.size() / 3;
         added.front_closures += f.closed ? 1 : 0;
+        added.inner_inputs += f.inner_inputs;
+        added.slit_pieces += f.slits;
     }
     try {
         tri::link_neighbors_2d(merged);
@@ -444,6 +459,8 @@ bool local_remesh_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& option
     counters.new_points += added.new_points;
     counters.new_triangles += added.new_triangles;
     counters.front_closures += added.front_closures;
+    counters.inner_inputs += added.inner_inputs;
+    counters.slit_pieces += added.slit_pieces;
     counters.outside_values += outside;
     return true;
 }

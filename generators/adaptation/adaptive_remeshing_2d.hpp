@@ -85,12 +85,14 @@ struct LocalRemeshCounters2 {
     std::uint64_t new_points = 0;         ///< points the fronts placed
     std::uint64_t new_triangles = 0;      ///< triangles the fronts made
     std::uint64_t front_closures = 0;     ///< voids whose front was closed by its CDT (budget)
+    std::uint64_t inner_inputs = 0;       ///< input vertices inside refilled voids, kept
+    std::uint64_t slit_pieces = 0;        ///< pieces with the same void on both sides
     std::uint64_t outside_values = 0;     ///< transferred values taken from the nearest vertex
 };
 
-inline constexpr std::array kLocalRemeshCounterNames2 =
-    EM_COUNTER_TABLE(LocalRemeshCounters2, cycles, too_large, too_small, voids, budget_kept_voids,
-                     removed_vertices, new_points, new_triangles, front_closures, outside_values);
+inline constexpr std::array kLocalRemeshCounterNames2 = EM_COUNTER_TABLE(
+    LocalRemeshCounters2, cycles, too_large, too_small, voids, budget_kept_voids, removed_vertices,
+    new_points, new_triangles, front_closures, inner_inputs, slit_pieces, outside_values);
 static_assert(counter_table_complete(kLocalRemeshCounterNames2));
 
 /// The size field of both methods: indicator_vertex_sizes of options.indicator on the current

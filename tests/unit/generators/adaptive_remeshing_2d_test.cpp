@@ -278,3 +278,97 @@ TEST(Generators_LocalRemeshing2, BudgetHoldsTransferAndBadFactor) {
         (void)gen::local_remesh_cycle_2d(s.state, options, {&field, 0}, counters, std::nan("")),
         em::InputError);
 }
+
+namespace {
+
+// The unit square with extra vertices on its sides (collinear boundary points), a slit (a
+// dangling segment inside the domain, across the front) and two free input vertices, meshed on
+// a uniform grid-like Delaunay refinement (cocircular points); scaled by `scale`.
+struct SlitSquare {
+    std::vector<double> xy{0, 0, 0.5, 0,   1,   0,   1,   0.5, 1,   1,    0.5, 1,
+                           0, 1, 0,   0.5, 0.3, 0.5, 0.7, 0.5, 0.5, 0.25, 0.8, 0.8};
+    std::vector<tri::VertIdx> segments{0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 0, 8, 9};
+    explicit SlitSquare(double scale) {
+        for (double& c : xy) c *= scale;
+    }
+};
+
+gen::AdaptiveMesh2 slit_square_state(const SlitSquare& square, const gen::AnalyticField& field,
+                                     double scale) {
+    gen::MeshOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.0625 * scale);
+    tri::Cdt2Result mesh = gen::find_mesh_generator_2d("delaunay-refinement")
+                               .run({square.xy, square.segments, {}, {}}, options)
+                               .mesh;
+    gen::AdaptiveMesh2 state =
+        gen::make_adaptive_mesh_2d(std::move(mesh), square.xy, square.segments, {}, {}, {});
+    state.values = gen::sample_field(field, state.mesh.xy, 2, 0);
+    return state;
+}
+
+// Every input vertex is a corner of some triangle (none dropped inside a void).
+bool input_vertices_used(const gen::AdaptiveMesh2& state) {
+    std::vector<std::uint8_t> used(state.mesh.vertex_count(), 0);
+    for (const tri::VertIdx v : state.mesh.triangles) used[v] = 1;
+    return std::all_of(used.begin(), used.begin() + state.fixed_vertices,
+                       [](std::uint8_t u) { return u != 0; });
+}
+
+}  // namespace
+
+TEST(Generators_LocalRemeshing2, SlitFreeVerticesCollinearSidesAndSameMeshScaled) {
+    tri::Triangulation2 reference;
+    for (const int k : {0, 600, -600}) {
+        const double scale = std::ldexp(1.0, k);
+        const SlitSquare square(scale);
+        const gen::AnalyticField field = front_field(scale);
+        gen::AdaptiveMesh2 state = slit_square_state(square, field, scale);
+        ASSERT_EQ(gen::check_adaptive_mesh_2d(state, square.xy), "");
+        const std::size_t pieces = state.pieces.size();
+        gen::AdaptationOptions options;
+        gen::LocalRemeshCounters2 counters;
+        for (int cycle = 0; cycle < 3; ++cycle) {
+            ASSERT_TRUE(gen::local_remesh_cycle_2d(state, options, {&field, 0}, counters));
+            ASSERT_EQ(gen::check_adaptive_mesh_2d(state, square.xy, false), "") << cycle;
+            EXPECT_TRUE(input_vertices_used(state)) << cycle;
+            EXPECT_EQ(state.pieces.size(), pieces);
+        }
+        EXPECT_GT(counters.removed_vertices, 0u);
+        // The slit and a free input vertex were inside voids (the front at t = 0 crosses both).
+        EXPECT_GT(counters.slit_pieces, 0u);
+        EXPECT_GT(counters.inner_inputs, 0u);
+        if (k == 0) {
+            reference = state.mesh;
+            continue;
+        }
+        EXPECT_EQ(state.mesh.triangles, reference.triangles) << "2^" << k;
+        ASSERT_EQ(state.mesh.xy.size(), reference.xy.size()) << "2^" << k;
+        for (std::size_t i = 0; i < reference.xy.size(); ++i)
+            ASSERT_EQ(state.mesh.xy[i], std::ldexp(reference.xy[i], k)) << "2^" << k << " " << i;
+    }
+}
+
+TEST(Generators_AdaptiveRemeshing2, SlitFreeVerticesAndCollinearSidesWithEveryGenerator) {
+    const SlitSquare square(1.0);
+    const gen::AnalyticField field = front_field();
+    const gen::RemeshDomain2 domain{{square.xy, square.segments, {}, {}}, {}, {}};
+    for (const gen::MeshGenerator2& generator : gen::mesh_generators_2d()) {
+        gen::AdaptiveMesh2 state = slit_square_state(square, field, 1.0);
+        gen::AdaptationOptions options;
+        gen::RemeshCounters2 counters;
+        for (int cycle = 0; cycle < 2; ++cycle) {
+            ASSERT_TRUE(
+                gen::remesh_cycle_2d(state, domain, generator, options, {&field, 0}, counters));
+            ASSERT_EQ(gen::check_adaptive_mesh_2d(state, square.xy, generator.delaunay), "")
+                << generator.name << " " << cycle;
+            EXPECT_TRUE(input_vertices_used(state)) << generator.name;
+        }
+    }
+    // A segment naming a curve the state does not have is an input error.
+    gen::AdaptiveMesh2 state = slit_square_state(square, field, 1.0);
+    const std::vector<gen::SegmentCurve> curves(square.segments.size() / 2, {3, 0, 1});
+    const gen::RemeshDomain2 bad{{square.xy, square.segments, {}, {}}, {}, curves};
+    gen::RemeshCounters2 counters;
+    EXPECT_THROW((void)gen::remesh_cycle_2d(state, bad, "frontal", {}, {&field, 0}, counters),
+                 em::InputError);
+}
