@@ -122,6 +122,8 @@ std::vector<std::uint8_t> local_remesh_flags_2d(const AdaptiveMesh2& state,
 
 /// One local remeshing cycle on `state` with the triangle size ratio `factor` (> 1). Returns
 /// false, the state unchanged, when no triangle was removed or no void fitted the budget.
+/// The vertices that stay keep their order (the input vertices their numbers), the fronts' new
+/// points follow them; the kept triangles come first, in their order and rotation.
 /// Only options.indicator, threshold and max_vertices are used.
 /// @throws InputError on a factor that is not finite and > 1, and as sample_field;
 ///         InternalError when the filled voids do not conform (a bug).
