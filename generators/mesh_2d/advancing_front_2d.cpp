@@ -758,7 +758,13 @@ AdvancingFrontResult2 advancing_front_2d(const tri::Pslg& pslg,
 AdvancingFrontResult2 advancing_front_2d(const MeshDomain2& domain,
                                          const AdvancingFrontOptions2& options) {
     validate(options);
-    const DomainBoundary2 boundary = discretize_domain_boundary(domain, options.size);
+    return advancing_front_from_boundary_2d(discretize_domain_boundary(domain, options.size),
+                                            options);
+}
+
+AdvancingFrontResult2 advancing_front_from_boundary_2d(const DomainBoundary2& boundary,
+                                                       const AdvancingFrontOptions2& options) {
+    validate(options);
     AdvancingFrontResult2 result;
     AdvancingFront front(boundary, options, result.counters);
     front.run();

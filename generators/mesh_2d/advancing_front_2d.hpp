@@ -41,6 +41,8 @@
 
 namespace exactmesh::generators {
 
+struct DomainBoundary2;
+
 struct AdvancingFrontOptions2 {
     /// The target edge length (required: an unbounded size is an InputError).
     SizeFunction size;
@@ -109,6 +111,17 @@ AdvancingFrontResult2 advancing_front_2d(const triangulation::Pslg& pslg,
 /// The same over the domain built once (its options replace options.cdt).
 AdvancingFrontResult2 advancing_front_2d(const MeshDomain2& domain,
                                          const AdvancingFrontOptions2& options);
+
+/// The same from a boundary the caller assembled (local remeshing, issue 13: a void of a mesh
+/// filled from its boundary): boundary.front is kept as it is, never split, so every front edge
+/// is an edge of the result and every new point lies strictly inside the region it encloses;
+/// boundary.cdt.mesh must triangulate that region (the automatic budget integrates the size
+/// over it), boundary.xy holds every vertex the front and free_vertices name (other vertices in
+/// it are left unused). options.cdt is used only by the closure.
+/// @throws InputError as above on the size and options; GeometryError when two front edges
+///         meet away from a shared end.
+AdvancingFrontResult2 advancing_front_from_boundary_2d(const DomainBoundary2& boundary,
+                                                       const AdvancingFrontOptions2& options);
 
 /// The counters, named as `exactmesh mesh --stats` prints them.
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const AdvancingFrontCounters2& c);
