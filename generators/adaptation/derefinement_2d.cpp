@@ -37,6 +37,22 @@ std::uint64_t derefinement_pass_2d(AdaptiveMesh2& state, const DerefinementOptio
     for (std::size_t v = state.fixed_vertices; v < vertex_count; ++v) {
         if (low[v]) chosen.push_back(static_cast<VertIdx>(v));
     }
+    return remove_vertex_set_2d(state, chosen, edges, counters);
+}
+
+std::uint64_t remove_vertex_set_2d(AdaptiveMesh2& state, std::span<const VertIdx> candidates,
+                                   std::span<const VertIdx> edges,
+                                   DerefinementCounters2& counters) {
+    triangulation::Triangulation2& mesh = state.mesh;
+    const std::uint32_t vertex_count = mesh.vertex_count();
+    std::vector<VertIdx> chosen;
+    {
+        std::vector<std::uint8_t> wanted(vertex_count, 0);
+        for (const VertIdx v : candidates)
+            if (v >= state.fixed_vertices && v < vertex_count) wanted[v] = 1;
+        for (std::size_t v = state.fixed_vertices; v < vertex_count; ++v)
+            if (wanted[v]) chosen.push_back(static_cast<VertIdx>(v));
+    }
     // The independent set: a vertex next to a chosen one (earlier in the order) is dropped.
     {
         std::vector<std::uint8_t> taken(vertex_count, 0);
