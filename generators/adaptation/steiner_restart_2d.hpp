@@ -7,13 +7,17 @@
 //     or coarser than the mesh there per cycle) and into the background size function, linear
 //     over the current (not yet derefined) mesh (indicator_size_function_2d);
 //  2. derefinement where the mesh is finer than that size: a vertex is a candidate when every
-//     edge (v, w) at it is shorter than kSteinerDerefineFraction (1/2) of the smaller of the
-//     sizes at v and w (so that the edges its removal makes, about twice as long, still meet
-//     the size at both ends); never an input vertex (index < fixed_vertices) nor a curve point
-//     (on_curve); candidates go as an independent set by constrained Delaunay vertex removal
-//     (remove_vertex_set_2d, derefinement_2d.hpp), which also refuses corners, constraint ends
-//     and bends: a vertex on the boundary or a segment goes only where its two pieces are
-//     straight (a chord point exactly collinear), so the polyline of each curve is unchanged;
+//     edge (v, w) at it is shorter than kSteinerDerefineFraction (1/2) of the mean of the sizes
+//     at v and w (the linear size at the edge's midpoint), so that the edges its removal makes,
+//     about twice as long, still meet the size; never an input vertex (index < fixed_vertices)
+//     nor a curve point (on_curve). Candidates go as a maximal independent set (greedy in vertex
+//     order) by constrained Delaunay vertex removal (remove_vertex_set_2d, derefinement_2d.hpp),
+//     which also refuses corners, constraint ends and bends: a vertex on the boundary or a segment
+//     goes only where its two pieces are straight (a chord point exactly collinear), so the
+//     polyline of each curve is unchanged. Up to kSteinerDerefinePasses passes, the sizes of
+//     step 1 kept, while one removes a vertex (the size caps the coarsening: at most about a
+//     factor 2 in length per cycle). Where a removal leaves a bad angle, step 3 puts a point
+//     back: the angle bound comes first;
 //  3. Delaunay refinement resumed: the mesh's vertices (all of them, at their indices) and its
 //     pieces as segments, with its holes, are the PSLG of a new delaunay_refinement_2d run with
 //     the size function of step 1 and the guaranteed angle bound (kGuaranteedMinAngle, with the
@@ -55,6 +59,8 @@ namespace exactmesh::generators {
 inline constexpr double kSteinerDerefineFraction = 0.5;
 /// The size at a vertex is within this factor of its shortest edge (indicator_vertex_sizes).
 inline constexpr double kSteinerMaxFactor = 4.0;
+/// Derefinement passes per cycle (each an independent set; the sizes stay those of step 1).
+inline constexpr std::uint32_t kSteinerDerefinePasses = 3;
 /// Refinement runs per cycle under a vertex budget (the first and the coarser retries).
 inline constexpr std::uint32_t kSteinerBudgetRuns = 4;
 

@@ -139,12 +139,145 @@ TEST(Generators_SteinerRestart2, EveryDomainEveryCycleValidErrorFallsSizeMet) {
             const SizeFit fit = size_fit(state, size);
             EXPECT_GE(fit.within, 0.99) << where;
             EXPECT_GE(fit.not_too_fine, 0.9) << where;
-            std::printf("%s: %u vertices, error %.4g, within %.4f, not too fine %.4f\n",
-                        where.c_str(), state.mesh.vertex_count(), error, fit.within,
-                        fit.not_too_fine);
         }
         EXPECT_GT(counters.steiner_points, 0u) << name;
         EXPECT_EQ(counters.budget_stops, 0u) << name;
         EXPECT_LT(previous, 0.5 * initial) << name;
+    }
+}
+
+TEST(Generators_SteinerRestart2, AFrontThatMovesIsDerefinedBehindIt) {
+    // The front x + 0.5 y = 0.6 + 0.3 t: refined at t = 0, then followed to t = 2 (x + 0.5 y =
+    // 1.2); the field is sampled on the current mesh at the new time before each cycle, as a
+    // solver would give it.
+    const gen::AnalyticField field = front_field();
+    DomainState m = domain_state(gen::SampleDomain::SquareWithHoles, field);
+    gen::AdaptiveMesh2& state = m.state;
+    gen::AdaptationOptions options;
+    options.max_vertices = 20000;
+    gen::SteinerRestartCounters2 counters;
+    const auto near_old_front = [&] {
+        std::size_t n = 0;
+        for (std::size_t v = 0; v < state.mesh.vertex_count(); ++v) {
+            const double s = state.mesh.xy[2 * v] + 0.5 * state.mesh.xy[2 * v + 1];
+            n += std::fabs(s - 0.6) < 0.1 ? 1 : 0;
+        }
+        return n;
+    };
+    for (int cycle = 0; cycle < 2; ++cycle)
+        ASSERT_TRUE(gen::steiner_restart_cycle_2d(state, options, {&field, 0}, counters));
+    const std::size_t refined_there = near_old_front();
+    const std::uint64_t removed_at_rest = counters.removed;
+    for (int cycle = 0; cycle < 3; ++cycle) {
+        state.values = gen::sample_field(field, state.mesh.xy, 2, 2);
+        const std::uint64_t removed = counters.removed;
+        ASSERT_TRUE(gen::steiner_restart_cycle_2d(state, options, {&field, 2}, counters));
+        ASSERT_EQ(gen::check_adaptive_mesh_2d(state, m.domain.xy), "") << cycle;
+        EXPECT_GT(counters.removed, removed) << cycle;
+        EXPECT_LE(state.mesh.vertex_count(), options.max_vertices);
+    }
+    // Behind the front the mesh coarsens: more than half of its vertices there gone in three
+    // cycles (the resumed refinement puts back a few where a removal left a bad angle).
+    EXPECT_LT(near_old_front(), refined_there / 2);
+    EXPECT_GT(counters.removed, 2 * removed_at_rest);
+    // The new front is resolved: the error at t = 2 is that of the mesh refined at t = 0.
+    EXPECT_LT(max_error(state, field, 2), 0.05);
+}
+
+TEST(Generators_SteinerRestart2, VertexBudgetHoldsByCoarserSizes) {
+    const gen::AnalyticField field = front_field();
+    DomainState m = domain_state(gen::SampleDomain::Naca0012, field);
+    gen::AdaptiveMesh2& state = m.state;
+    gen::AdaptationOptions options;
+    const std::uint32_t initial = state.mesh.vertex_count();
+    options.max_vertices = initial + 1500;
+    gen::SteinerRestartCounters2 counters;
+    const double first_error = max_error(state, field, 0);
+    for (int cycle = 0; cycle < 3; ++cycle) {
+        gen::steiner_restart_cycle_2d(state, options, {&field, 0}, counters);
+        ASSERT_EQ(gen::check_adaptive_mesh_2d(state, m.domain.xy), "") << cycle;
+        EXPECT_LE(state.mesh.vertex_count(), options.max_vertices) << cycle;
+    }
+    // The budget was binding (the unlimited cycles make 58254 vertices) and used well.
+    EXPECT_GT(counters.budget_scalings + counters.budget_retries, 0u);
+    EXPECT_GT(state.mesh.vertex_count(), options.max_vertices - 700);
+    EXPECT_LT(max_error(state, field, 0), first_error);
+    // A budget below the mesh: the cycle only derefines (the vertex count falls), and says so.
+    const std::uint32_t before = state.mesh.vertex_count();
+    options.max_vertices = before / 2;
+    const std::uint64_t stops = counters.budget_stops, runs = counters.refinement_runs;
+    EXPECT_TRUE(gen::steiner_restart_cycle_2d(state, options, {&field, 0}, counters));
+    ASSERT_EQ(gen::check_adaptive_mesh_2d(state, m.domain.xy), "");
+    EXPECT_LT(state.mesh.vertex_count(), before);
+    EXPECT_EQ(counters.budget_stops, stops + 1);
+    EXPECT_EQ(counters.refinement_runs, runs);
+}
+
+TEST(Generators_SteinerRestart2, ATransferredFieldKeepsTheKeptVerticesValues) {
+    const gen::AnalyticField field = front_field();
+    DomainState m = domain_state(gen::SampleDomain::Key, field);
+    gen::AdaptiveMesh2& state = m.state;
+    const gen::AdaptationOptions options;
+    gen::SteinerRestartCounters2 counters;
+    for (int cycle = 0; cycle < 2; ++cycle) {
+        std::map<std::pair<double, double>, double> old_values;
+        for (std::size_t v = 0; v < state.mesh.vertex_count(); ++v)
+            old_values[point(state, v)] = state.values[v];
+        ASSERT_TRUE(gen::steiner_restart_cycle_2d(state, options, {nullptr, 0}, counters));
+        ASSERT_EQ(gen::check_adaptive_mesh_2d(state, m.domain.xy), "");
+        ASSERT_EQ(state.values.size(), state.mesh.vertex_count());
+        std::size_t found = 0;
+        for (std::size_t v = 0; v < state.mesh.vertex_count(); ++v) {
+            ASSERT_TRUE(std::isfinite(state.values[v])) << v;
+            EXPECT_LE(std::fabs(state.values[v]), 1.0 + 1e-12);
+            const auto it = old_values.find(point(state, v));
+            if (it == old_values.end()) continue;
+            ++found;
+            EXPECT_EQ(state.values[v], it->second) << v;
+        }
+        EXPECT_GT(found, 0u);
+    }
+    // Interpolated, not sampled: still close to the field where the mesh resolves it.
+    EXPECT_LT(max_error(state, field, 0), 0.5);
+}
+
+TEST(Generators_SteinerRestart2, SameMeshScaledAtTwoToThePlusMinus600) {
+    tri::Triangulation2 reference;
+    std::vector<gen::CurvedPiece2> reference_pieces;
+    for (const int k : {0, 600, -600}) {
+        const double scale = std::ldexp(1.0, k);
+        const gen::AnalyticField field = front_field(scale);
+        // The PSLG as a .poly gives it: no curves (scaled curves would be other functions).
+        DomainState m = domain_state(gen::SampleDomain::SquareWithHoles, field, scale, 0.08);
+        gen::AdaptiveMesh2& state = m.state;
+        if (k == 0) {
+            state.curves.clear();
+            for (gen::CurvedPiece2& p : state.pieces) p = {p.a, p.b};
+        }
+        gen::AdaptationOptions options;
+        options.max_vertices = 4000;  // a budget, so that the scaled sizes are exercised too
+        gen::SteinerRestartCounters2 counters;
+        for (int cycle = 0; cycle < 3; ++cycle) {
+            state.values = gen::sample_field(field, state.mesh.xy, 2, 0.5 * cycle);
+            ASSERT_TRUE(
+                gen::steiner_restart_cycle_2d(state, options, {&field, 0.5 * cycle}, counters));
+        }
+        ASSERT_EQ(gen::check_adaptive_mesh_2d(state, m.domain.xy), "");
+        EXPECT_GT(counters.removed, 0u);
+        EXPECT_GT(counters.budget_scalings + counters.budget_retries, 0u);
+        if (k == 0) {
+            reference = state.mesh;
+            reference_pieces = state.pieces;
+            continue;
+        }
+        EXPECT_EQ(state.mesh.triangles, reference.triangles) << "2^" << k;
+        ASSERT_EQ(state.mesh.xy.size(), reference.xy.size());
+        for (std::size_t i = 0; i < reference.xy.size(); ++i)
+            ASSERT_EQ(state.mesh.xy[i], std::ldexp(reference.xy[i], k)) << "2^" << k << " " << i;
+        ASSERT_EQ(state.pieces.size(), reference_pieces.size());
+        for (std::size_t p = 0; p < reference_pieces.size(); ++p) {
+            EXPECT_EQ(state.pieces[p].a, reference_pieces[p].a);
+            EXPECT_EQ(state.pieces[p].b, reference_pieces[p].b);
+        }
     }
 }
