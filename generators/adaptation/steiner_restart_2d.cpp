@@ -211,10 +211,16 @@ bool steiner_restart_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& opt
     triangulation::Cdt2Result& result = refined->mesh;
     // The restart's promise: every current vertex at its index, none merged or split off.
     const triangulation::Cdt2Counters& c = result.counters;
-    bool same = result.input_vertex_count == kept && c.duplicates == 0 && c.intersections == 0 &&
+    // A vertex of no triangle (an input's repeated point, merged as the first mesh merged it, or
+    // one outside the domain) stays unused; every used one must stay itself.
+    bool same = result.input_vertex_count == kept && c.intersections == 0 &&
                 c.vertices_on_segments == 0 && c.dropped_segments == 0;
     for (std::size_t i = 0; same && i < 2 * std::size_t{kept}; ++i)
         same = result.mesh.xy[i] == state.mesh.xy[i];
+    if (same && c.duplicates > 0) {
+        for (const VertIdx v : state.mesh.triangles)
+            same = same && v < result.merged_into.size() && result.merged_into[v] == v;
+    }
     if (!same)
         throw GeometryError(
             "steiner restart: the refinement of the current mesh did not keep its vertices at "

@@ -4,8 +4,9 @@
 // input vertices fixed, curve points on their curve), every vertex the cycle kept at its index
 // and curve points kept, the interpolation error falls, the mesh meets the indicator's size;
 // a front that moves leaves derefinement behind it; a vertex budget holds by coarser sizes; a
-// transferred field keeps the kept vertices' values; and the same run on a domain scaled by
-// 2^±600 gives the same mesh scaled, bit for bit.
+// transferred field keeps the kept vertices' values; an input's repeated or exterior vertex
+// stays unused (not an internal error); and the same run on a domain scaled by 2^±600 gives the
+// same mesh scaled, bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -278,4 +279,32 @@ TEST(Generators_SteinerRestart2, SameMeshScaledAtTwoToThePlusMinus600) {
             EXPECT_EQ(state.pieces[p].b, reference_pieces[p].b);
         }
     }
+}
+
+TEST(Generators_SteinerRestart2, UnusedInputVerticesStayUnused) {
+    // A .poly square with a repeated corner (merged: its copy is in no triangle) and a vertex
+    // outside the segments (removed with the exterior): both stay in the numbering, unused.
+    const std::vector<double> xy{0, 0, 1, 0, 1, 1, 0, 1, 1, 0, 2, 2};
+    const std::vector<tri::VertIdx> segments{0, 1, 1, 2, 2, 3, 3, 0};
+    gen::MeshOptions2 mesh_options;
+    mesh_options.size = gen::SizeFunction::uniform(0.1);
+    tri::Cdt2Result mesh = gen::find_mesh_generator_2d("delaunay-refinement")
+                               .run({xy, segments, {}, {}}, mesh_options)
+                               .mesh;
+    gen::AdaptiveMesh2 state =
+        gen::make_adaptive_mesh_2d(std::move(mesh), xy, segments, {}, {}, {});
+    const gen::AnalyticField field = front_field();
+    state.values = gen::sample_field(field, state.mesh.xy, 2, 0);
+    const gen::AdaptationOptions options;
+    gen::SteinerRestartCounters2 counters;
+    for (int cycle = 0; cycle < 2; ++cycle) {
+        state.values = gen::sample_field(field, state.mesh.xy, 2, cycle);
+        ASSERT_TRUE(gen::steiner_restart_cycle_2d(state, options, {&field, 1.0 * cycle}, counters));
+        ASSERT_EQ(gen::check_adaptive_mesh_2d(state, xy), "") << cycle;
+        for (const tri::VertIdx v : state.mesh.triangles) {
+            EXPECT_NE(v, 4u);
+            EXPECT_NE(v, 5u);
+        }
+    }
+    EXPECT_GT(counters.steiner_points, 0u);
 }
