@@ -37,6 +37,22 @@ std::uint64_t derefinement_pass_2d(AdaptiveMesh2& state, const DerefinementOptio
     for (std::size_t v = state.fixed_vertices; v < vertex_count; ++v) {
         if (low[v]) chosen.push_back(static_cast<VertIdx>(v));
     }
+    return remove_vertex_set_2d(state, chosen, edges, counters);
+}
+
+std::uint64_t remove_vertex_set_2d(AdaptiveMesh2& state, std::span<const VertIdx> candidates,
+                                   std::span<const VertIdx> edges, DerefinementCounters2& counters,
+                                   std::vector<VertIdx>* old_to_new) {
+    triangulation::Triangulation2& mesh = state.mesh;
+    const std::uint32_t vertex_count = mesh.vertex_count();
+    std::vector<VertIdx> chosen;
+    {
+        std::vector<std::uint8_t> wanted(vertex_count, 0);
+        for (const VertIdx v : candidates)
+            if (v >= state.fixed_vertices && v < vertex_count) wanted[v] = 1;
+        for (std::size_t v = state.fixed_vertices; v < vertex_count; ++v)
+            if (wanted[v]) chosen.push_back(static_cast<VertIdx>(v));
+    }
     // The independent set: a vertex next to a chosen one (earlier in the order) is dropped.
     {
         std::vector<std::uint8_t> taken(vertex_count, 0);
@@ -54,7 +70,13 @@ std::uint64_t derefinement_pass_2d(AdaptiveMesh2& state, const DerefinementOptio
         chosen.swap(independent);
     }
     counters.candidates += chosen.size();
-    if (chosen.empty()) return 0;
+    if (chosen.empty()) {
+        if (old_to_new != nullptr) {
+            old_to_new->resize(vertex_count);
+            std::iota(old_to_new->begin(), old_to_new->end(), VertIdx{0});
+        }
+        return 0;
+    }
 
     // The pieces at each vertex, to merge the two at a removed one.
     std::vector<std::uint32_t> piece_at(2 * std::size_t{vertex_count}, kNone);
@@ -116,6 +138,7 @@ std::uint64_t derefinement_pass_2d(AdaptiveMesh2& state, const DerefinementOptio
     }
     state.values = std::move(values);
     state.on_curve = std::move(on_curve);
+    if (old_to_new != nullptr) *old_to_new = result.old_to_new;
     return result.removed;
 }
 

@@ -13,6 +13,8 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
+#include <vector>
 
 #include "base/counter_table.hpp"
 #include "generators/adaptation/adaptive_mesh_2d.hpp"
@@ -43,5 +45,19 @@ static_assert(counter_table_complete(kDerefinementCounterNames2));
 /// @return the number of vertices removed.
 std::uint64_t derefinement_pass_2d(AdaptiveMesh2& state, const DerefinementOptions& options,
                                    DerefinementCounters2& counters);
+
+/// The removal step of a pass, for any rule that names the candidates (Steiner restart removes
+/// where the mesh is finer than a size): of `candidates` (any order, repeats ignored), those at
+/// or above state.fixed_vertices, taken in increasing vertex order as an independent set of the
+/// mesh's `edges` (mesh_edges_2d of state.mesh.triangles), are removed where vertex_removal_2d
+/// allows it; pieces merge, values and curve flags follow, as derefinement_pass_2d. Counts
+/// candidates (the independent set), removed, refused and piece_merges; not passes.
+/// `old_to_new` (when not null) receives the new number of each old vertex (kNone: removed).
+/// @return the number of vertices removed.
+std::uint64_t remove_vertex_set_2d(AdaptiveMesh2& state,
+                                   std::span<const triangulation::VertIdx> candidates,
+                                   std::span<const triangulation::VertIdx> edges,
+                                   DerefinementCounters2& counters,
+                                   std::vector<triangulation::VertIdx>* old_to_new = nullptr);
 
 }  // namespace exactmesh::generators
