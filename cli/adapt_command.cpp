@@ -27,12 +27,15 @@
 #include "cli/output.hpp"
 #include "cli/size_expression.hpp"
 #include "generators/adaptation/adaptive_mesh_2d.hpp"
+#include "generators/adaptation/adaptive_remeshing_2d.hpp"
 #include "generators/adaptation/derefinement_2d.hpp"
+#include "generators/adaptation/h_adaptation_2d.hpp"
 #include "generators/adaptation/h_adaptation_3d.hpp"
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
 #include "generators/adaptation/insertion_adaptation_3d.hpp"
 #include "generators/adaptation/interpolation_error.hpp"
 #include "generators/adaptation/mesh_edges.hpp"
+#include "generators/adaptation/steiner_restart_2d.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
@@ -56,10 +59,13 @@ namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 
 /// The adaptation methods `--method` names.
-enum class AdaptMethod { Insertion, HRefinement };
-constexpr std::array<EnumName<AdaptMethod>, 2> kAdaptMethodNames{{
+enum class AdaptMethod { Insertion, HRefinement, Steiner, Remesh, LocalRemesh };
+constexpr std::array<EnumName<AdaptMethod>, 5> kAdaptMethodNames{{
     {"insertion", AdaptMethod::Insertion},
     {"h-refinement", AdaptMethod::HRefinement},
+    {"steiner", AdaptMethod::Steiner},
+    {"remesh", AdaptMethod::Remesh},
+    {"local-remesh", AdaptMethod::LocalRemesh},
 }};
 
 struct AdaptArguments {
@@ -165,11 +171,19 @@ void check_arguments(const AdaptArguments& arguments) {
         throw InputError("--steps needs an analytic --field (a field file has no time)");
 }
 
-gen::AdaptationOptions adaptation_options(const AdaptArguments& arguments) {
+/// The vertex budget of --max-vertices 0: each cycle can multiply the mesh several times, so a
+/// run of many cycles without a budget would end in an out-of-memory after minutes; it stops
+/// refining here instead (a few hundred MB to a GB of mesh).
+constexpr std::uint64_t kAutomaticVertexBudget2 = std::uint64_t{1} << 22;
+constexpr std::uint64_t kAutomaticVertexBudget3 = std::uint64_t{1} << 20;
+
+gen::AdaptationOptions adaptation_options(const AdaptArguments& arguments, unsigned dim) {
     gen::AdaptationOptions options;
     options.indicator = gen::edge_indicator_from_name(arguments.indicator);
     options.threshold = arguments.threshold;
-    options.max_vertices = arguments.max_vertices;
+    options.max_vertices = arguments.max_vertices > 0 ? arguments.max_vertices
+                           : dim == 2                 ? kAutomaticVertexBudget2
+                                                      : kAutomaticVertexBudget3;
     options.smoothing_sweeps = arguments.smooth;
     options.movement_sweeps = arguments.move;
     return options;
@@ -226,73 +240,174 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
         poly, file, [&] { return generator.run_on_domain(domain, mesh_options); });
     print_warnings(initial.mesh.warnings);
 
-    gen::AdaptiveMesh2 state =
-        gen::make_adaptive_mesh_2d(std::move(initial.mesh), poly.vertices.xy, poly.segments,
-                                   poly.holes, curves, segment_curves);
-    state.values = gen::sample_field(*field, state.mesh.xy, 2, arguments.time);
-    gen::AdaptationOptions options = adaptation_options(arguments);
-    if (arguments.steps > 0) {
-        // Transient: the thresholds stay relative to the first mesh's mean indicator, so that
-        // refinement and derefinement do not chase a mean that moves with the mesh.
-        options.reference_mean = gen::mean_indicator(
-            gen::mesh_edge_indicator(options.indicator, state.mesh.xy, 2, state.mesh.triangles,
-                                     gen::mesh_edges_2d(state.mesh.triangles), state.values));
-    }
-    gen::InsertionCounters2 counters;
-    gen::DerefinementCounters2 derefinement;
-    gen::DerefinementOptions derefine_options{options.indicator, arguments.derefine_threshold,
-                                              options.reference_mean};
+    gen::AdaptationOptions options = adaptation_options(arguments, 2);
     gen::FieldSource source{field, arguments.time};
-    predicates::reset_thread_stats();
-    const double seconds = run_cycles(
-        arguments,
-        [&](double t) {
-            source.t = t;
-            return gen::insertion_cycle_2d(state, options, source, counters);
-        },
-        [&] { return gen::derefinement_pass_2d(state, derefine_options, derefinement); },
-        [&](double t) { state.values = gen::sample_field(*field, state.mesh.xy, 2, t); },
-        [&](const std::string& label, double t) {
-            const predicates::PredicateStats kept = predicates::thread_stats();
-            print_progress(label, state.mesh.vertex_count(), "triangles",
-                           state.mesh.triangle_count(), field, state.mesh.xy, 2,
-                           state.mesh.triangles, state.values, t);
-            (void)kept;
-        });
-    const predicates::PredicateStats stats = predicates::thread_stats();
-    const std::string problem =
-        gen::check_adaptive_mesh_2d(state, poly.vertices.xy, arguments.move == 0);
-    if (!problem.empty())
-        throw Error("internal: the adapted mesh fails its exact check: " + problem);
-
+    const AdaptMethod method = parse_name(kAdaptMethodNames, arguments.method, "adaptation method");
+    const bool keeps_connectivity_delaunay = arguments.move == 0 &&
+                                             method != AdaptMethod::LocalRemesh &&
+                                             (method != AdaptMethod::Remesh || generator.delaunay);
+    std::vector<std::pair<std::string, std::uint64_t>> named;
     tri::Cdt2Result result;
-    result.mesh = state.mesh;
-    result.input_vertex_count = state.fixed_vertices;
-    for (std::size_t p = 0; p < state.pieces.size(); ++p) {
-        result.pieces.insert(result.pieces.end(), {state.pieces[p].a, state.pieces[p].b});
-        result.piece_segment.push_back(static_cast<std::uint32_t>(p));
-    }
-    io::OutputSet set;
-    stage_constrained_result(set, result, files, format, base,
-                             title + " (adapted, " + arguments.method + ")", state.values);
-    commit_outputs(set);
-    std::cout << "vertices: " << state.mesh.vertex_count() << '\n'
-              << "triangles: " << state.mesh.triangle_count() << '\n';
-    if (arguments.quality) {
-        gen::QualityReport2 report =
-            gen::quality_report_2d(state.mesh.xy, state.mesh.triangles, gen::SizeFunction());
-        report.seconds = seconds;
-        std::cout << gen::quality_report_text(report);
-    }
-    if (arguments.stats) {
-        auto named = counters_by_name(gen::kInsertionCounterNames2, counters);
+    std::vector<double> result_values;
+    double seconds = 0;
+    predicates::PredicateStats stats;
+    const auto resample = [&](tri::Triangulation2& mesh, std::vector<double>& values) {
+        return [&mesh, &values, &source, field](double t) {
+            source.t = t;
+            values = gen::sample_field(*field, mesh.xy, 2, t);
+        };
+    };
+    const auto progress_of = [&](const tri::Triangulation2& mesh, const std::vector<double>& u) {
+        return [&mesh, &u, field](const std::string& label, double t) {
+            print_progress(label, mesh.vertex_count(), "triangles", mesh.triangle_count(), field,
+                           mesh.xy, 2, mesh.triangles, u, t);
+        };
+    };
+    predicates::reset_thread_stats();
+    if (method == AdaptMethod::HRefinement) {
+        if (arguments.smooth > 0 || arguments.move > 0)
+            throw InputError("--smooth and --move would break the nesting of h-refinement");
+        gen::HAdaptiveMesh2 state{
+            gen::HRefinedMesh2(initial.mesh.mesh),
+            gen::sample_field(*field, initial.mesh.mesh.xy, 2, arguments.time)};
+        gen::HAdaptationCounters2 counters;
+        // The leaf mesh is replaced by every refinement: progress reads it afresh.
+        seconds = run_cycles(
+            arguments,
+            [&](double t) {
+                source.t = t;
+                return gen::h_refinement_cycle_2d(state, options, source, counters);
+            },
+            [&] {
+                return gen::h_derefinement_pass_2d(state, options.indicator,
+                                                   arguments.derefine_threshold,
+                                                   options.reference_mean, source, counters);
+            },
+            [&](double t) {
+                source.t = t;
+                state.values = gen::sample_field(*field, state.hierarchy.leaf_mesh().xy, 2, t);
+            },
+            [&](const std::string& label, double t) {
+                progress_of(state.hierarchy.leaf_mesh(), state.values)(label, t);
+            });
+        stats = predicates::thread_stats();
+        if (const tri::CheckReport report = gen::check_h_refined_mesh_2d(state.hierarchy);
+            !report.ok)
+            throw Error("internal: the refined mesh fails its exact check: " + report.problem);
+        named = counters_by_name(gen::kHAdaptationCounterNames2, counters);
+        for (const auto& [name, value] :
+             counters_by_name(gen::kHRefinementCounterNames, state.hierarchy.counters()))
+            named.emplace_back(name, value);
+        result.mesh = state.hierarchy.leaf_mesh();
+        result.input_vertex_count = state.hierarchy.root_vertex_count();
+        // The pieces: the leaf mesh's constrained edges, each once.
+        const tri::Triangulation2& leaves = result.mesh;
+        for (std::size_t t = 0; t < leaves.triangle_count(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                const tri::VertIdx a = leaves.triangles[3 * t + static_cast<std::size_t>(k)];
+                const tri::VertIdx b =
+                    leaves.triangles[3 * t + static_cast<std::size_t>((k + 1) % 3)];
+                const tri::TriIdx other = leaves.neighbors[3 * t + static_cast<std::size_t>(k)];
+                if (leaves.is_constrained(static_cast<tri::TriIdx>(t), k) &&
+                    (other == tri::kNone || a < b)) {
+                    result.pieces.insert(result.pieces.end(), {a, b});
+                    result.piece_segment.push_back(
+                        static_cast<std::uint32_t>(result.piece_segment.size()));
+                }
+            }
+        result_values = std::move(state.values);
+    } else {
+        gen::AdaptiveMesh2 state =
+            gen::make_adaptive_mesh_2d(std::move(initial.mesh), poly.vertices.xy, poly.segments,
+                                       poly.holes, curves, segment_curves);
+        state.values = gen::sample_field(*field, state.mesh.xy, 2, arguments.time);
+        if (arguments.steps > 0) {
+            // Transient: the thresholds stay relative to the first mesh's mean indicator, so
+            // that refinement and derefinement do not chase a mean that moves with the mesh.
+            options.reference_mean = gen::mean_indicator(
+                gen::mesh_edge_indicator(options.indicator, state.mesh.xy, 2, state.mesh.triangles,
+                                         gen::mesh_edges_2d(state.mesh.triangles), state.values));
+        }
+        gen::InsertionCounters2 insertion;
+        gen::SteinerRestartCounters2 steiner;
+        gen::RemeshCounters2 remesh;
+        gen::LocalRemeshCounters2 local;
+        gen::DerefinementCounters2 derefinement;
+        const gen::DerefinementOptions derefine_options{
+            options.indicator, arguments.derefine_threshold, options.reference_mean};
+        const gen::RemeshDomain2 remesh_domain{pslg, mesh_options.cdt, segment_curves};
+        if (arguments.derefine && method != AdaptMethod::Insertion)
+            throw InputError(
+                "--derefine goes with --method insertion or h-refinement (steiner "
+                "and the remeshing methods coarsen by their size field already)");
+        seconds = run_cycles(
+            arguments,
+            [&](double t) {
+                source.t = t;
+                switch (method) {
+                    case AdaptMethod::Insertion:
+                        return gen::insertion_cycle_2d(state, options, source, insertion);
+                    case AdaptMethod::Steiner:
+                        return gen::steiner_restart_cycle_2d(state, options, source, steiner);
+                    case AdaptMethod::Remesh:
+                        return gen::remesh_cycle_2d(state, remesh_domain, generator, options,
+                                                    source, remesh);
+                    case AdaptMethod::LocalRemesh:
+                        return gen::local_remesh_cycle_2d(state, options, source, local);
+                    case AdaptMethod::HRefinement:
+                        break;
+                }
+                return false;
+            },
+            [&] { return gen::derefinement_pass_2d(state, derefine_options, derefinement); },
+            resample(state.mesh, state.values), progress_of(state.mesh, state.values));
+        stats = predicates::thread_stats();
+        const std::string problem =
+            gen::check_adaptive_mesh_2d(state, poly.vertices.xy, keeps_connectivity_delaunay);
+        if (!problem.empty())
+            throw Error("internal: the adapted mesh fails its exact check: " + problem);
+        switch (method) {
+            case AdaptMethod::Insertion:
+                named = counters_by_name(gen::kInsertionCounterNames2, insertion);
+                break;
+            case AdaptMethod::Steiner:
+                named = counters_by_name(gen::kSteinerRestartCounterNames2, steiner);
+                break;
+            case AdaptMethod::Remesh:
+                named = counters_by_name(gen::kRemeshCounterNames2, remesh);
+                break;
+            case AdaptMethod::LocalRemesh:
+                named = counters_by_name(gen::kLocalRemeshCounterNames2, local);
+                break;
+            case AdaptMethod::HRefinement:
+                break;
+        }
         if (arguments.derefine) {
             for (const auto& [name, value] :
                  counters_by_name(gen::kDerefinementCounterNames2, derefinement))
                 named.emplace_back("derefinement_" + name, value);
         }
-        print_construction_stats(named, stats, seconds);
+        result.mesh = state.mesh;
+        result.input_vertex_count = state.fixed_vertices;
+        for (std::size_t p = 0; p < state.pieces.size(); ++p) {
+            result.pieces.insert(result.pieces.end(), {state.pieces[p].a, state.pieces[p].b});
+            result.piece_segment.push_back(static_cast<std::uint32_t>(p));
+        }
+        result_values = std::move(state.values);
     }
+    io::OutputSet set;
+    stage_constrained_result(set, result, files, format, base,
+                             title + " (adapted, " + arguments.method + ")", result_values);
+    commit_outputs(set);
+    std::cout << "vertices: " << result.mesh.vertex_count() << '\n'
+              << "triangles: " << result.mesh.triangle_count() << '\n';
+    if (arguments.quality) {
+        gen::QualityReport2 report =
+            gen::quality_report_2d(result.mesh.xy, result.mesh.triangles, gen::SizeFunction());
+        report.seconds = seconds;
+        std::cout << gen::quality_report_text(report);
+    }
+    if (arguments.stats) print_construction_stats(named, stats, seconds);
 }
 
 /// --domain cube: the Delaunay tetrahedralization of a 6 x 6 x 6 grid of points in the unit
@@ -306,7 +421,11 @@ tri::Tetrahedralization3 cube_mesh() {
 }
 
 void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* field) {
-    gen::AdaptationOptions options = adaptation_options(arguments);
+    const AdaptMethod method = parse_name(kAdaptMethodNames, arguments.method, "adaptation method");
+    if (method != AdaptMethod::Insertion && method != AdaptMethod::HRefinement)
+        throw InputError("--method " + arguments.method +
+                         " is 2D only; 3D adapts by insertion or h-refinement");
+    gen::AdaptationOptions options = adaptation_options(arguments, 3);
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
     if (format == OutputFormat::Svg) throw InputError(output.string() + ": no .svg in 3D");
@@ -374,8 +493,7 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
         };
     };
     predicates::reset_thread_stats();
-    if (parse_name(kAdaptMethodNames, arguments.method, "adaptation method") ==
-        AdaptMethod::Insertion) {
+    if (method == AdaptMethod::Insertion) {
         if (arguments.derefine)
             throw InputError(
                 "--derefine: 3D derefinement goes with --method h-refinement (by "
@@ -539,7 +657,7 @@ void add_adapt_command(CLI::App& app) {
     command
         ->add_option("--max-vertices", arguments->max_vertices,
                      "Never refine past this many vertices: the largest indicators whose "
-                     "closure fits are taken (0: no limit)")
+                     "closure fits are taken (0: automatic, 2^22 in 2D, 2^20 in 3D)")
         ->check(whole_number_at_most(tri::kMaxPoints))
         ->capture_default_str();
     command

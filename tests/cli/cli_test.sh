@@ -837,13 +837,72 @@ mesh_impossible_sizes() {
     mesh --domain naca0012 --size 1e-9 -o "$work/e.ele"
 }
 
+# exactmesh adapt (issue 13): every 2D method on a sample domain and on a .poly, the error falls
+# over the cycles, the field is the .node's attribute, the exact check passes (exit 0), a budget
+# holds; 3D insertion and h-refinement on the cube and on a TetGen mesh read back, a field file.
+adapt() {
+  local method
+  for method in insertion h-refinement steiner remesh local-remesh; do
+    run 0 adapt --domain naca0012 --method "$method" --field 'tanh(20*(x+0.5*y-0.6))' --cycles 2 \
+      --max-vertices 30000 -o "$work/$method.ele" --stats || continue
+    awk '/^cycle 0:/ { e0 = $8 } /^cycle 2:/ { e2 = $8 } END { exit !(e0 > 0 && e2 > 0 && e2 < e0) }' \
+      "$work/out" || fail "adapt $method: the max error did not fall: $(cat "$work/out")"
+    grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "adapt $method: no construct_seconds"
+    awk '/^vertices:/ { exit !($2 <= 30000) }' "$work/out" || fail "adapt $method: budget: $(grep vertices: "$work/out")"
+    head -1 "$work/$method.node" | grep -Eq '^[0-9]+ 2 1 0' || fail "adapt $method: the .node carries no field"
+  done
+  run 0 adapt "$data/square_hole_diagonals.poly" --field 'x*x + y' --cycles 2 -o "$work/poly.vtu" &&
+    [[ -s "$work/poly.vtu" ]] || fail "adapt .poly -> .vtu"
+  run 0 adapt --domain key --field 'tanh(30*(x-0.5-0.2*t))' --steps 3 --dt 1 --cycles 2 --derefine \
+    --threshold 0.5 -o "$work/steps.svg" &&
+    [[ $(grep -c '^step ' "$work/out") -eq 3 ]] || fail "adapt --steps: $(cat "$work/out")"
+  grep -q '</svg>' "$work/steps.svg" || fail "adapt: svg not closed"
+  run 0 adapt --domain square-with-holes --field 'tanh(20*(y-0.5))' --cycles 2 --smooth 2 --move 2 \
+    -o "$work/moved.ele" --stats && grep -Eq '^movement_moves: [1-9]' "$work/out" ||
+    fail "adapt --move: $(cat "$work/out")"
+  # 3D.
+  for method in insertion h-refinement; do
+    run 0 adapt --domain cube --method "$method" --field 'tanh(10*(x+y+z-1.5))' --cycles 2 \
+      -o "$work/cube-$method.ele" --stats || continue
+    for ext in ele face neigh node; do
+      [[ -s "$work/cube-$method.$ext" ]] || fail "adapt 3D: cube-$method.$ext missing"
+    done
+  done
+  # Read back: the insertion result as input, its own field as the field file.
+  run 0 adapt "$work/cube-insertion.node" "$work/cube-insertion.ele" --field-file "$work/cube-insertion.node" \
+    --cycles 1 -o "$work/again.ele" || fail "adapt 3D from files"
+  run 0 adapt --domain cube --method h-refinement --field 'tanh(10*(x-0.3*t))' --steps 2 --dt 1 --derefine \
+    -o "$work/steps3.vtu" || fail "adapt 3D --steps"
+}
+
+adapt_bad_input() {
+  expect_error 2 'give either --field EXPR or --field-file FILE' adapt --domain key -o "$work/a.ele"
+  expect_error 2 'not an expression in x, y, z and t' adapt --domain key --field 'x +' -o "$work/a.ele"
+  expect_error 2 "field 'log\(x\)' is NaN at" adapt --domain key --field 'log(x)' -o "$work/a.ele"
+  expect_error 2 "unknown adaptation method 'magic'" adapt --domain key --field x --method magic -o "$work/a.ele"
+  expect_error 2 "unknown indicator 'curvature'" adapt --domain key --field x --indicator curvature -o "$work/a.ele"
+  expect_error 2 '--method steiner is 2D only' adapt --domain cube --method steiner --field x -o "$work/a.ele"
+  expect_error 2 '--threshold must be a finite number' adapt --domain key --field x --threshold -1 -o "$work/a.ele"
+  expect_error 2 '--steps needs an analytic --field' adapt --domain cube --field-file "$data/cube_center.node" \
+    --steps 2 -o "$work/a.ele"
+  expect_error 2 'would break the nesting' adapt --domain key --field x --method h-refinement --smooth 1 -o "$work/a.ele"
+  expect_error 2 '--derefine goes with' adapt --domain key --field x --method steiner --steps 1 --derefine -o "$work/a.ele"
+  expect_error 2 "unknown domain 'moon'" adapt --domain moon --field x -o "$work/a.ele"
+  # A field file whose points are not the mesh's.
+  run 0 adapt --domain cube --field x --cycles 0 -o "$work/c.ele" || return
+  expect_error 2 "a field file must be a .node with the mesh's points" \
+    adapt "$work/c.node" "$work/c.ele" --field-file "$data/cube_center.node" -o "$work/d.ele"
+  # No output file is left behind by a refused run.
+  [[ ! -e "$work/a.ele" ]] || fail "adapt: a refused run wrote its output"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
     swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
-    region_areas)
+    region_areas | adapt | adapt_bad_input)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2
