@@ -83,7 +83,7 @@ struct AdaptArguments {
     std::uint64_t max_vertices = 0;
     double threshold = 1.0;
     bool derefine = false;
-    double derefine_threshold = 0.2;
+    double derefine_threshold = 0.1;
     std::uint32_t smooth = 0;
     std::uint32_t move = 0;
     std::uint32_t steps = 0;
@@ -280,7 +280,8 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
             },
             [&] {
                 return gen::h_derefinement_pass_2d(state, options.indicator,
-                                                   arguments.derefine_threshold,
+                                                   arguments.derefine_threshold *
+                                                       arguments.threshold,
                                                    options.reference_mean, source, counters);
             },
             [&](double t) {
@@ -333,8 +334,10 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
         gen::RemeshCounters2 remesh;
         gen::LocalRemeshCounters2 local;
         gen::DerefinementCounters2 derefinement;
+        // Relative to the refinement threshold (see --derefine-threshold).
         const gen::DerefinementOptions derefine_options{
-            options.indicator, arguments.derefine_threshold, options.reference_mean};
+            options.indicator, arguments.derefine_threshold * arguments.threshold,
+            options.reference_mean};
         const gen::RemeshDomain2 remesh_domain{pslg, mesh_options.cdt, segment_curves};
         if (arguments.derefine && method != AdaptMethod::Insertion)
             throw InputError(
@@ -531,7 +534,8 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
             },
             [&] {
                 return gen::h_derefinement_pass_3d(state, options.indicator,
-                                                   arguments.derefine_threshold,
+                                                   arguments.derefine_threshold *
+                                                       arguments.threshold,
                                                    options.reference_mean, source, counters);
             },
             [&](double t) {
@@ -667,7 +671,12 @@ void add_adapt_command(CLI::App& app) {
     command->add_flag("--derefine", arguments->derefine,
                       "2D, with --steps: before each step's refinement, remove vertices whose "
                       "every edge's indicator is below --derefine-threshold times the mean");
-    command->add_option("--derefine-threshold", arguments->derefine_threshold, "See --derefine")
+    command
+        ->add_option("--derefine-threshold", arguments->derefine_threshold,
+                     "Derefine where every edge's indicator is below this times --threshold "
+                     "times the mean: below 1/4, so that a removal (which about doubles the "
+                     "edges at its place, and a second difference four times) is not refined "
+                     "again at once")
         ->capture_default_str();
     command
         ->add_option("--smooth", arguments->smooth,

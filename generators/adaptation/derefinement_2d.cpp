@@ -53,20 +53,28 @@ std::uint64_t remove_vertex_set_2d(AdaptiveMesh2& state, std::span<const VertIdx
         for (std::size_t v = state.fixed_vertices; v < vertex_count; ++v)
             if (wanted[v]) chosen.push_back(static_cast<VertIdx>(v));
     }
-    // The independent set: a vertex next to a chosen one (earlier in the order) is dropped.
+    // A maximal independent set of them, greedily in increasing vertex order: a candidate is
+    // taken unless a neighbour was taken before it (the holes stay one star wide).
     {
-        std::vector<std::uint8_t> taken(vertex_count, 0);
-        for (const VertIdx v : chosen) taken[v] = 1;
-        std::vector<std::uint8_t> drop(vertex_count, 0);
+        std::vector<std::uint32_t> start(vertex_count + 1, 0);
+        for (const VertIdx v : edges) ++start[v + 1];
+        for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+        std::vector<VertIdx> neighbours(edges.size());
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
         for (std::size_t e = 0; e < edges.size() / 2; ++e) {
-            const VertIdx a = edges[2 * e], b = edges[2 * e + 1];  // a < b
-            if (taken[a] && taken[b]) drop[b] = 1;
+            neighbours[fill[edges[2 * e]]++] = edges[2 * e + 1];
+            neighbours[fill[edges[2 * e + 1]]++] = edges[2 * e];
         }
-        // Dropping b may free a later neighbour c of b; keeping that simple (a one-pass rule)
-        // only removes fewer vertices, never two neighbours.
+        std::vector<std::uint8_t> taken(vertex_count, 0);
         std::vector<VertIdx> independent;
-        for (const VertIdx v : chosen)
-            if (!drop[v]) independent.push_back(v);
+        for (const VertIdx v : chosen) {
+            bool free = true;
+            for (std::uint32_t k = start[v]; k < start[v + 1] && free; ++k)
+                free = taken[neighbours[k]] == 0;
+            if (!free) continue;
+            taken[v] = 1;
+            independent.push_back(v);
+        }
         chosen.swap(independent);
     }
     counters.candidates += chosen.size();
