@@ -188,7 +188,7 @@ void BM_generate_initial(benchmark::State& state) {
 }
 
 void register_benchmarks() {
-    for (const auto& [method, name] : ad::kMethods) {
+    for (const auto& [method, name] : ad::methods()) {
         benchmark::RegisterBenchmark(("BM_adapt_cycle/" + std::string(name)).c_str(),
                                      BM_adapt_cycle, method)
             ->UseManualTime()

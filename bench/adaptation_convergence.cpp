@@ -107,10 +107,7 @@ std::string adaptive_run(const Settings& s, std::string_view field_name,
                 break;
         }
         // The exact check of the methods' meshes (the CLI's, outside every time).
-        if (const gen::AdaptiveMesh2* flat = adapter.flat()) {
-            const bool delaunay = method != ad::Method::LocalRemesh;
-            problem = gen::check_adaptive_mesh_2d(*flat, domain.xy, delaunay);
-        }
+        problem = adapter.check();
     } catch (const std::exception& error) {
         problem = error.what();
     }
@@ -167,15 +164,14 @@ std::string transient_run(const Settings& s, ad::Method method, const gen::Domai
                 sample("\"step\": " + std::to_string(k) + ", \"t\": " + number(t) + ", ",
                        adapter.mesh(), adapter.values(), field, t, seconds));
         }
-        if (const gen::AdaptiveMesh2* flat = adapter.flat())
-            problem = gen::check_adaptive_mesh_2d(*flat, domain.xy, true);
+        problem = adapter.check();
     } catch (const std::exception& error) {
         problem = error.what();
     }
     std::cerr << "transient " << ad::method_name(method) << ": " << seconds_since(start) << " s"
               << (problem.empty() ? "" : " PROBLEM: " + problem) << '\n';
     return "{\"method\": " + quoted(ad::method_name(method)) +
-           ", \"indicator\": \"second-difference\", \"derefine_threshold\": 0.2, "
+           ", \"indicator\": \"second-difference\", \"derefine_fraction\": 0.1, "
            "\"cycles_per_step\": " +
            std::to_string(s.transient_cycles) + ", \"dt\": " + number(s.dt) +
            ", \"problem\": " + quoted(problem) + ", \"steps\": [\n    " + join(steps, ",\n    ") +
@@ -212,7 +208,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> runs;
     for (const std::string_view field : ad::kFieldNames)
         for (const gen::EdgeIndicator indicator : gen::kAllEdgeIndicators)
-            for (const auto& [method, name] : ad::kMethods)
+            for (const auto& [method, name] : ad::methods())
                 runs.push_back(adaptive_run(s, field, indicator, method, domain, initial));
     std::vector<std::string> fields;
     for (const std::string_view name : ad::kFieldNames)

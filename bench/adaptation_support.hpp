@@ -23,6 +23,7 @@
 
 #include "generators/adaptation/adaptive_mesh_2d.hpp"
 #include "generators/adaptation/adaptive_remeshing_2d.hpp"
+#include "generators/adaptation/adaptive_run_2d.hpp"
 #include "generators/adaptation/derefinement_2d.hpp"
 #include "generators/adaptation/edge_indicators.hpp"
 #include "generators/adaptation/h_adaptation_2d.hpp"
@@ -39,20 +40,17 @@ namespace exactmesh::bench::adaptation {
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 
-enum class Method { Insertion, HRefinement, Steiner, Remesh, LocalRemesh };
+using Method = gen::AdaptMethod2;
 
-inline constexpr std::array<std::pair<Method, std::string_view>, 5> kMethods{{
-    {Method::Insertion, "insertion"},
-    {Method::HRefinement, "h-refinement"},
-    {Method::Steiner, "steiner"},
-    {Method::Remesh, "remesh"},
-    {Method::LocalRemesh, "local-remesh"},
-}};
+/// Every method with its name, in the library's order.
+inline std::vector<std::pair<Method, std::string_view>> methods() {
+    std::vector<std::pair<Method, std::string_view>> all;
+    for (const Method m : gen::kAllAdaptMethods2) all.emplace_back(m, gen::adapt_method_name(m));
+    return all;
+}
 
 inline std::string_view method_name(Method method) {
-    for (const auto& [m, name] : kMethods)
-        if (m == method) return name;
-    return "?";
+    return gen::adapt_method_name(method);
 }
 
 /// The generator of the initial mesh, of the uniform baseline and of "from scratch".
@@ -146,101 +144,31 @@ inline gen::InterpolationError mesh_error(const tri::Triangulation2& mesh,
     return gen::interpolation_error(mesh.xy, 2, mesh.triangles, values, field, t);
 }
 
-/// One adaptive run of any method, the state of the CLI's run_adapt_2d.
-class Adapter {
+/// One adaptive run of any method: the library's driver (generators/adaptation/adaptive_run_2d),
+/// the one `exactmesh adapt` runs, over the sample domain with the benchmark's generator.
+class Adapter : public gen::AdaptiveRun2 {
   public:
     Adapter(Method method, const gen::DomainPslg& domain, tri::Cdt2Result initial,
             const gen::AnalyticField& field, gen::AdaptationOptions options, double t = 0,
-            bool transient = false, double derefine_threshold = 0.2)
-        : method_(method),
-          domain_(&domain),
-          field_(&field),
-          options_(options),
-          source_{&field, t},
-          derefine_threshold_(derefine_threshold) {
-        if (method == Method::HRefinement) {
-            h_.emplace(gen::HAdaptiveMesh2{gen::HRefinedMesh2(initial.mesh), {}});
-            h_->values = gen::sample_field(field, h_->hierarchy.leaf_mesh().xy, 2, t);
-        } else {
-            flat_.emplace(gen::make_adaptive_mesh_2d(std::move(initial), domain.xy, domain.segments,
-                                                     domain.holes, domain.curves,
-                                                     domain.segment_curves));
-            flat_->values = gen::sample_field(field, flat_->mesh.xy, 2, t);
-        }
-        if (transient)
-            options_.reference_mean = gen::mean_indicator(
-                gen::mesh_edge_indicator(options_.indicator, mesh().xy, 2, mesh().triangles,
-                                         gen::mesh_edges_2d(mesh().triangles), values()));
-    }
+            bool transient = false)
+        : gen::AdaptiveRun2(gen::remesh_domain_2d(domain), domain.curves, std::move(initial),
+                            gen::find_mesh_generator_2d(kGenerator), &field, t,
+                            run_options(method, options, transient)),
+          domain_(&domain) {}
 
-    const tri::Triangulation2& mesh() const { return h_ ? h_->hierarchy.leaf_mesh() : flat_->mesh; }
-    const std::vector<double>& values() const { return h_ ? h_->values : flat_->values; }
-    const gen::AdaptiveMesh2* flat() const { return flat_ ? &*flat_ : nullptr; }
-    const gen::AdaptationOptions& options() const { return options_; }
-
-    /// One refinement cycle at time t; false when the method changed nothing.
-    bool cycle(double t) {
-        source_.t = t;
-        switch (method_) {
-            case Method::Insertion:
-                return gen::insertion_cycle_2d(*flat_, options_, source_, insertion_);
-            case Method::HRefinement:
-                return gen::h_refinement_cycle_2d(*h_, options_, source_, h_counters_);
-            case Method::Steiner:
-                return gen::steiner_restart_cycle_2d(*flat_, options_, source_, steiner_);
-            case Method::Remesh:
-                return gen::remesh_cycle_2d(*flat_, gen::remesh_domain_2d(*domain_),
-                                            gen::find_mesh_generator_2d(kGenerator), options_,
-                                            source_, remesh_);
-            case Method::LocalRemesh:
-                return gen::local_remesh_cycle_2d(*flat_, options_, source_, local_);
-        }
-        return false;
-    }
-
-    /// One derefinement pass (insertion: by the indicator; h-refinement: by the history);
-    /// the vertices removed. Other methods coarsen by their size field: 0.
-    std::uint64_t derefine() {
-        if (method_ == Method::HRefinement)
-            return gen::h_derefinement_pass_2d(*h_, options_.indicator, derefine_threshold_,
-                                               options_.reference_mean, source_, h_counters_);
-        if (method_ != Method::Insertion) return 0;
-        const gen::DerefinementOptions options{options_.indicator, derefine_threshold_,
-                                               options_.reference_mean};
-        return gen::derefinement_pass_2d(*flat_, options, derefinement_);
-    }
-
-    void resample(double t) {
-        source_.t = t;
-        std::vector<double>& v = h_ ? h_->values : flat_->values;
-        v = gen::sample_field(*field_, mesh().xy, 2, t);
-    }
-
-    /// A transient step as `exactmesh adapt --steps` runs it: resample, derefinement passes
-    /// (at most 8, until one removes nothing), then up to `cycles` refinement cycles.
-    void step(double t, std::uint32_t cycles) {
-        resample(t);
-        for (int pass = 0; pass < 8; ++pass)
-            if (derefine() == 0) break;
-        for (std::uint32_t c = 0; c < cycles; ++c)
-            if (!cycle(t)) break;
-    }
+    /// The exact check, as the CLI makes it.
+    std::string check() const { return gen::AdaptiveRun2::check(domain_->xy); }
 
   private:
-    Method method_;
+    static gen::AdaptiveRunOptions2 run_options(Method method, gen::AdaptationOptions options,
+                                                bool transient) {
+        gen::AdaptiveRunOptions2 o;
+        o.method = method;
+        o.adaptation = options;
+        o.transient = transient;
+        return o;
+    }
     const gen::DomainPslg* domain_;
-    const gen::AnalyticField* field_;
-    gen::AdaptationOptions options_;
-    gen::FieldSource source_;
-    double derefine_threshold_;
-    std::optional<gen::AdaptiveMesh2> flat_;
-    std::optional<gen::HAdaptiveMesh2> h_;
-    gen::InsertionCounters2 insertion_;
-    gen::HAdaptationCounters2 h_counters_;
-    gen::SteinerRestartCounters2 steiner_;
-    gen::RemeshCounters2 remesh_;
-    gen::LocalRemeshCounters2 local_;
-    gen::DerefinementCounters2 derefinement_;
 };
 
 /// Per vertex, the mean length of the edges at it: the local spacing of a mesh, what a

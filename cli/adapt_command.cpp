@@ -28,6 +28,7 @@
 #include "cli/size_expression.hpp"
 #include "generators/adaptation/adaptive_mesh_2d.hpp"
 #include "generators/adaptation/adaptive_remeshing_2d.hpp"
+#include "generators/adaptation/adaptive_run_2d.hpp"
 #include "generators/adaptation/derefinement_2d.hpp"
 #include "generators/adaptation/h_adaptation_2d.hpp"
 #include "generators/adaptation/h_adaptation_3d.hpp"
@@ -58,16 +59,6 @@ namespace fs = std::filesystem;
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 
-/// The adaptation methods `--method` names.
-enum class AdaptMethod { Insertion, HRefinement, Steiner, Remesh, LocalRemesh };
-constexpr std::array<EnumName<AdaptMethod>, 5> kAdaptMethodNames{{
-    {"insertion", AdaptMethod::Insertion},
-    {"h-refinement", AdaptMethod::HRefinement},
-    {"steiner", AdaptMethod::Steiner},
-    {"remesh", AdaptMethod::Remesh},
-    {"local-remesh", AdaptMethod::LocalRemesh},
-}};
-
 struct AdaptArguments {
     std::string input;
     std::string ele;
@@ -97,8 +88,6 @@ struct AdaptArguments {
 constexpr std::uint32_t kMaxCycles = 1000;
 constexpr std::uint32_t kMaxSweeps = 1000;
 constexpr std::uint32_t kMaxSteps = 100000;
-/// Derefinement passes per step at most (each removes an independent set, or one level).
-constexpr int kMaxDerefinementPasses = 8;
 
 /// "cycle 3: vertices 1234 triangles 2400 max_error 0.01 l2_error 0.001" (errors with a field).
 void print_progress(const std::string& label, std::uint64_t vertices, const char* elements,
@@ -137,12 +126,19 @@ double run_cycles(const AdaptArguments& arguments, Refine&& refine, Derefine&& d
         }
         return seconds;
     }
+    // A transient run starts from the mesh adapted at its first time.
+    timed([&] {
+        for (std::uint32_t cycle = 0; cycle < arguments.cycles; ++cycle)
+            if (!refine(arguments.time)) break;
+        return true;
+    });
+    progress("step 0 t " + format_number(arguments.time), arguments.time);
     for (std::uint32_t step = 1; step <= arguments.steps; ++step) {
         const double t = arguments.time + step * arguments.dt;
         timed([&] {
             resample(t);
             // Derefinement passes until one removes nothing (each takes an independent set).
-            for (int pass = 0; arguments.derefine && pass < kMaxDerefinementPasses; ++pass)
+            for (int pass = 0; arguments.derefine && pass < gen::kMaxDerefinementPasses; ++pass)
                 if (derefine() == 0) break;
             for (std::uint32_t cycle = 0; cycle < arguments.cycles; ++cycle)
                 if (!refine(t)) break;
@@ -156,7 +152,7 @@ double run_cycles(const AdaptArguments& arguments, Refine&& refine, Derefine&& d
 void check_arguments(const AdaptArguments& arguments) {
     if (arguments.field.empty() == arguments.field_file.empty())
         throw InputError("give either --field EXPR or --field-file FILE (one of them)");
-    (void)parse_name(kAdaptMethodNames, arguments.method, "adaptation method");
+    (void)gen::adapt_method_from_name(arguments.method);
     const auto finite_at_least = [](const char* name, double value, double least) {
         if (!(value >= least) || !std::isfinite(value))
             throw InputError(std::string(name) + " must be a finite number >= " +
@@ -241,163 +237,37 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
     print_warnings(initial.mesh.warnings);
 
     gen::AdaptationOptions options = adaptation_options(arguments, 2);
-    gen::FieldSource source{field, arguments.time};
-    const AdaptMethod method = parse_name(kAdaptMethodNames, arguments.method, "adaptation method");
-    const bool keeps_connectivity_delaunay = arguments.move == 0 &&
-                                             method != AdaptMethod::LocalRemesh &&
-                                             (method != AdaptMethod::Remesh || generator.delaunay);
-    std::vector<std::pair<std::string, std::uint64_t>> named;
-    tri::Cdt2Result result;
-    std::vector<double> result_values;
-    double seconds = 0;
-    predicates::PredicateStats stats;
-    const auto resample = [&](tri::Triangulation2& mesh, std::vector<double>& values) {
-        return [&mesh, &values, &source, field](double t) {
-            source.t = t;
-            values = gen::sample_field(*field, mesh.xy, 2, t);
-        };
-    };
-    const auto progress_of = [&](const tri::Triangulation2& mesh, const std::vector<double>& u) {
-        return [&mesh, &u, field](const std::string& label, double t) {
-            print_progress(label, mesh.vertex_count(), "triangles", mesh.triangle_count(), field,
-                           mesh.xy, 2, mesh.triangles, u, t);
-        };
-    };
+    gen::AdaptiveRunOptions2 run_options;
+    run_options.method = gen::adapt_method_from_name(arguments.method);
+    run_options.adaptation = options;
+    run_options.derefine_fraction = arguments.derefine_threshold;
+    run_options.transient = arguments.steps > 0;
+    if (run_options.method == gen::AdaptMethod2::HRefinement &&
+        (arguments.smooth > 0 || arguments.move > 0))
+        throw InputError("--smooth and --move would break the nesting of h-refinement");
+    if (arguments.derefine && run_options.method != gen::AdaptMethod2::Insertion &&
+        run_options.method != gen::AdaptMethod2::HRefinement)
+        throw InputError(
+            "--derefine goes with --method insertion or h-refinement (steiner "
+            "and the remeshing methods coarsen by their size field already)");
+    const gen::RemeshDomain2 remesh_domain{pslg, mesh_options.cdt, segment_curves};
+    gen::AdaptiveRun2 run(remesh_domain, curves, std::move(initial.mesh), generator, field,
+                          arguments.time, run_options);
     predicates::reset_thread_stats();
-    if (method == AdaptMethod::HRefinement) {
-        if (arguments.smooth > 0 || arguments.move > 0)
-            throw InputError("--smooth and --move would break the nesting of h-refinement");
-        gen::HAdaptiveMesh2 state{
-            gen::HRefinedMesh2(initial.mesh.mesh),
-            gen::sample_field(*field, initial.mesh.mesh.xy, 2, arguments.time)};
-        gen::HAdaptationCounters2 counters;
-        // The leaf mesh is replaced by every refinement: progress reads it afresh.
-        seconds = run_cycles(
-            arguments,
-            [&](double t) {
-                source.t = t;
-                return gen::h_refinement_cycle_2d(state, options, source, counters);
-            },
-            [&] {
-                return gen::h_derefinement_pass_2d(state, options.indicator,
-                                                   arguments.derefine_threshold *
-                                                       arguments.threshold,
-                                                   options.reference_mean, source, counters);
-            },
-            [&](double t) {
-                source.t = t;
-                state.values = gen::sample_field(*field, state.hierarchy.leaf_mesh().xy, 2, t);
-            },
-            [&](const std::string& label, double t) {
-                progress_of(state.hierarchy.leaf_mesh(), state.values)(label, t);
-            });
-        stats = predicates::thread_stats();
-        if (const tri::CheckReport report = gen::check_h_refined_mesh_2d(state.hierarchy);
-            !report.ok)
-            throw Error("internal: the refined mesh fails its exact check: " + report.problem);
-        named = counters_by_name(gen::kHAdaptationCounterNames2, counters);
-        for (const auto& [name, value] :
-             counters_by_name(gen::kHRefinementCounterNames, state.hierarchy.counters()))
-            named.emplace_back(name, value);
-        result.mesh = state.hierarchy.leaf_mesh();
-        result.input_vertex_count = state.hierarchy.root_vertex_count();
-        // The pieces: the leaf mesh's constrained edges, each once.
-        const tri::Triangulation2& leaves = result.mesh;
-        for (std::size_t t = 0; t < leaves.triangle_count(); ++t)
-            for (int k = 0; k < 3; ++k) {
-                const tri::VertIdx a = leaves.triangles[3 * t + static_cast<std::size_t>(k)];
-                const tri::VertIdx b =
-                    leaves.triangles[3 * t + static_cast<std::size_t>((k + 1) % 3)];
-                const tri::TriIdx other = leaves.neighbors[3 * t + static_cast<std::size_t>(k)];
-                if (leaves.is_constrained(static_cast<tri::TriIdx>(t), k) &&
-                    (other == tri::kNone || a < b)) {
-                    result.pieces.insert(result.pieces.end(), {a, b});
-                    result.piece_segment.push_back(
-                        static_cast<std::uint32_t>(result.piece_segment.size()));
-                }
-            }
-        result_values = std::move(state.values);
-    } else {
-        gen::AdaptiveMesh2 state =
-            gen::make_adaptive_mesh_2d(std::move(initial.mesh), poly.vertices.xy, poly.segments,
-                                       poly.holes, curves, segment_curves);
-        state.values = gen::sample_field(*field, state.mesh.xy, 2, arguments.time);
-        if (arguments.steps > 0) {
-            // Transient: the thresholds stay relative to the first mesh's mean indicator, so
-            // that refinement and derefinement do not chase a mean that moves with the mesh.
-            options.reference_mean = gen::mean_indicator(
-                gen::mesh_edge_indicator(options.indicator, state.mesh.xy, 2, state.mesh.triangles,
-                                         gen::mesh_edges_2d(state.mesh.triangles), state.values));
-        }
-        gen::InsertionCounters2 insertion;
-        gen::SteinerRestartCounters2 steiner;
-        gen::RemeshCounters2 remesh;
-        gen::LocalRemeshCounters2 local;
-        gen::DerefinementCounters2 derefinement;
-        // Relative to the refinement threshold (see --derefine-threshold).
-        const gen::DerefinementOptions derefine_options{
-            options.indicator, arguments.derefine_threshold * arguments.threshold,
-            options.reference_mean};
-        const gen::RemeshDomain2 remesh_domain{pslg, mesh_options.cdt, segment_curves};
-        if (arguments.derefine && method != AdaptMethod::Insertion)
-            throw InputError(
-                "--derefine goes with --method insertion or h-refinement (steiner "
-                "and the remeshing methods coarsen by their size field already)");
-        seconds = run_cycles(
-            arguments,
-            [&](double t) {
-                source.t = t;
-                switch (method) {
-                    case AdaptMethod::Insertion:
-                        return gen::insertion_cycle_2d(state, options, source, insertion);
-                    case AdaptMethod::Steiner:
-                        return gen::steiner_restart_cycle_2d(state, options, source, steiner);
-                    case AdaptMethod::Remesh:
-                        return gen::remesh_cycle_2d(state, remesh_domain, generator, options,
-                                                    source, remesh);
-                    case AdaptMethod::LocalRemesh:
-                        return gen::local_remesh_cycle_2d(state, options, source, local);
-                    case AdaptMethod::HRefinement:
-                        break;
-                }
-                return false;
-            },
-            [&] { return gen::derefinement_pass_2d(state, derefine_options, derefinement); },
-            resample(state.mesh, state.values), progress_of(state.mesh, state.values));
-        stats = predicates::thread_stats();
-        const std::string problem =
-            gen::check_adaptive_mesh_2d(state, poly.vertices.xy, keeps_connectivity_delaunay);
-        if (!problem.empty())
-            throw Error("internal: the adapted mesh fails its exact check: " + problem);
-        switch (method) {
-            case AdaptMethod::Insertion:
-                named = counters_by_name(gen::kInsertionCounterNames2, insertion);
-                break;
-            case AdaptMethod::Steiner:
-                named = counters_by_name(gen::kSteinerRestartCounterNames2, steiner);
-                break;
-            case AdaptMethod::Remesh:
-                named = counters_by_name(gen::kRemeshCounterNames2, remesh);
-                break;
-            case AdaptMethod::LocalRemesh:
-                named = counters_by_name(gen::kLocalRemeshCounterNames2, local);
-                break;
-            case AdaptMethod::HRefinement:
-                break;
-        }
-        if (arguments.derefine) {
-            for (const auto& [name, value] :
-                 counters_by_name(gen::kDerefinementCounterNames2, derefinement))
-                named.emplace_back("derefinement_" + name, value);
-        }
-        result.mesh = state.mesh;
-        result.input_vertex_count = state.fixed_vertices;
-        for (std::size_t p = 0; p < state.pieces.size(); ++p) {
-            result.pieces.insert(result.pieces.end(), {state.pieces[p].a, state.pieces[p].b});
-            result.piece_segment.push_back(static_cast<std::uint32_t>(p));
-        }
-        result_values = std::move(state.values);
-    }
+    const double seconds = run_cycles(
+        arguments, [&](double t) { return run.cycle(t); }, [&] { return run.derefine(); },
+        [&](double t) { run.resample(t); },
+        [&](const std::string& label, double t) {
+            print_progress(label, run.mesh().vertex_count(), "triangles",
+                           run.mesh().triangle_count(), field, run.mesh().xy, 2,
+                           run.mesh().triangles, run.values(), t);
+        });
+    const predicates::PredicateStats stats = predicates::thread_stats();
+    if (const std::string problem = run.check(poly.vertices.xy); !problem.empty())
+        throw Error("internal: the adapted mesh fails its exact check: " + problem);
+    const tri::Cdt2Result result = run.result();
+    const std::vector<double>& result_values = run.values();
+    const auto named = run.counters();
     io::OutputSet set;
     stage_constrained_result(set, result, files, format, base,
                              title + " (adapted, " + arguments.method + ")", result_values);
@@ -424,8 +294,8 @@ tri::Tetrahedralization3 cube_mesh() {
 }
 
 void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* field) {
-    const AdaptMethod method = parse_name(kAdaptMethodNames, arguments.method, "adaptation method");
-    if (method != AdaptMethod::Insertion && method != AdaptMethod::HRefinement)
+    const gen::AdaptMethod2 method = gen::adapt_method_from_name(arguments.method);
+    if (method != gen::AdaptMethod2::Insertion && method != gen::AdaptMethod2::HRefinement)
         throw InputError("--method " + arguments.method +
                          " is 2D only; 3D adapts by insertion or h-refinement");
     gen::AdaptationOptions options = adaptation_options(arguments, 3);
@@ -496,7 +366,7 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
         };
     };
     predicates::reset_thread_stats();
-    if (method == AdaptMethod::Insertion) {
+    if (method == gen::AdaptMethod2::Insertion) {
         if (arguments.derefine)
             throw InputError(
                 "--derefine: 3D derefinement goes with --method h-refinement (by "
@@ -533,10 +403,9 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
                 return gen::h_refinement_cycle_3d(state, options, source, counters);
             },
             [&] {
-                return gen::h_derefinement_pass_3d(state, options.indicator,
-                                                   arguments.derefine_threshold *
-                                                       arguments.threshold,
-                                                   options.reference_mean, source, counters);
+                return gen::h_derefinement_pass_3d(
+                    state, options.indicator, arguments.derefine_threshold * arguments.threshold,
+                    options.reference_mean, source, counters);
             },
             [&](double t) {
                 source.t = t;
