@@ -190,13 +190,9 @@ bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
             return;
         }
         next.values = transfer_field_2d(old_xy, old_triangles, old_values, next.mesh.xy);
-        for (std::size_t v = 0; v < next.values.size(); ++v) {
-            // A point outside the old mesh (beside a convex curve point) keeps the value it
-            // was made with; so does every point that did not move.
-            const bool moved = next.mesh.xy[2 * v] != before_smoothing[2 * v] ||
-                               next.mesh.xy[2 * v + 1] != before_smoothing[2 * v + 1];
-            if (std::isnan(next.values[v]) || !moved) next.values[v] = first_values[v];
-        }
+        // A point outside the old mesh (beside a convex curve point) keeps the value it was
+        // made with; so does every point that did not move.
+        keep_values_of_unmoved(next.values, next.mesh.xy, before_smoothing, 2, first_values);
     };
     set_field();
     if (options.movement_sweeps > 0) {

@@ -133,12 +133,7 @@ bool insertion_cycle_3d(AdaptiveMesh3& state, const AdaptationOptions& options,
         }
         next.values =
             transfer_field_3d(mesh.xyz, mesh.tets, mesh.neighbors, state.values, next.mesh.xyz);
-        for (std::size_t v = 0; v < next.values.size(); ++v) {
-            const bool moved = next.mesh.xyz[3 * v] != before_smoothing[3 * v] ||
-                               next.mesh.xyz[3 * v + 1] != before_smoothing[3 * v + 1] ||
-                               next.mesh.xyz[3 * v + 2] != before_smoothing[3 * v + 2];
-            if (std::isnan(next.values[v]) || !moved) next.values[v] = first_values[v];
-        }
+        keep_values_of_unmoved(next.values, next.mesh.xyz, before_smoothing, 3, first_values);
     };
     set_field();
     if (options.movement_sweeps > 0) {
