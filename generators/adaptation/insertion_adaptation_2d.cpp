@@ -196,15 +196,14 @@ bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
     };
     set_field();
     if (options.movement_sweeps > 0) {
-        const std::vector<VertIdx> new_edges = mesh_edges_2d(next.mesh.triangles);
-        const std::vector<double> new_indicator = mesh_edge_indicator(
-            options.indicator, next.mesh.xy, 2, next.mesh.triangles, new_edges, next.values);
         WeightedMovementOptions movement;
         movement.sweeps = options.movement_sweeps;
         movement.strength = options.movement_strength;
-        const WeightedMovementCounters c = weighted_movement_2d(
-            next.mesh, vertex_indicator(new_edges, new_indicator, next.mesh.vertex_count()),
-            next.fixed_vertices, movement);
+        const WeightedMovementCounters c =
+            weighted_movement_2d(next.mesh,
+                                 mesh_vertex_indicator(options.indicator, next.mesh.xy, 2,
+                                                       next.mesh.triangles, next.values),
+                                 next.fixed_vertices, movement);
         counters.movement_moves += c.moves;
         counters.movement_undone += c.undone + c.undone_worse;
         set_field();

@@ -137,14 +137,12 @@ bool insertion_cycle_3d(AdaptiveMesh3& state, const AdaptationOptions& options,
     };
     set_field();
     if (options.movement_sweeps > 0) {
-        const std::vector<VertIdx> new_edges = mesh_edges_3d(next.mesh.tets);
-        const std::vector<double> new_indicator = mesh_edge_indicator(
-            options.indicator, next.mesh.xyz, 3, next.mesh.tets, new_edges, next.values);
         WeightedMovementOptions movement;
         movement.sweeps = options.movement_sweeps;
         movement.strength = options.movement_strength;
         const WeightedMovementCounters c = weighted_movement_3d(
-            next.mesh, vertex_indicator(new_edges, new_indicator, next.mesh.vertex_count()),
+            next.mesh,
+            mesh_vertex_indicator(options.indicator, next.mesh.xyz, 3, next.mesh.tets, next.values),
             next.fixed_vertices, movement);
         counters.movement_moves += c.moves;
         counters.movement_undone += c.undone + c.undone_worse;
