@@ -47,18 +47,11 @@ AdaptiveMesh3 make_adaptive_mesh_3d(triangulation::Tetrahedralization3 mesh) {
 bool insertion_cycle_3d(AdaptiveMesh3& state, const AdaptationOptions& options,
                         const FieldSource& field, InsertionCounters3& counters) {
     const triangulation::Tetrahedralization3& mesh = state.mesh;
-    const std::uint64_t vertices = mesh.vertex_count();
-    const bool budget = options.max_vertices > 0;
-    if (budget && vertices >= options.max_vertices) return false;
-    const std::uint64_t room = budget ? options.max_vertices - vertices : 0;
-    const std::vector<VertIdx> edges = mesh_edges_3d(mesh.tets);
-    const std::vector<double> indicator =
-        mesh_edge_indicator(options.indicator, mesh.xyz, 3, mesh.tets, edges, state.values);
-    std::uint64_t flagged = 0, closure = 0;
-    const std::vector<std::uint8_t> flags =
-        refinement_flags(mesh.tets, 3, edges, indicator, options.threshold, room, budget, &flagged,
-                         &closure, options.reference_mean);
-    if (flagged == 0) return false;
+    const detail::CycleFlags marked =
+        detail::cycle_flags(options, mesh.xyz, 3, mesh.tets, state.values);
+    if (marked.flagged == 0) return false;
+    const std::vector<VertIdx>& edges = marked.edges;
+    const std::vector<std::uint8_t>& flags = marked.flags;
 
     // The hull faces at each hull edge, to keep boundary midpoints in their faces' planes.
     const std::vector<VertIdx> hull = hull_faces(mesh);
@@ -149,8 +142,8 @@ bool insertion_cycle_3d(AdaptiveMesh3& state, const AdaptationOptions& options,
         set_field();
     }
     ++counters.cycles;
-    counters.flagged_edges += flagged;
-    counters.closure_edges += closure;
+    counters.flagged_edges += marked.flagged;
+    counters.closure_edges += marked.closure;
     counters.inserted += inserted;
     counters.boundary_points += boundary;
     counters.off_plane_skipped += skipped;
