@@ -20,7 +20,7 @@ SmoothingCounters3 laplacian_smoothing_3d(triangulation::Tetrahedralization3& me
     const detail::VertexStars stars = detail::vertex_stars_3d(mesh);
     const detail::SweepTally tally = detail::guarded_sweeps_3d(
         mesh, stars, fixed, {}, {options.relaxation, options.iterations, options.smart});
-    return detail::sweep_counters<SmoothingCounters3>(tally, fixed);
+    return detail::sweep_counters(tally, fixed);
 }
 
 }  // namespace exactmesh::generators

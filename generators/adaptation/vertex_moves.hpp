@@ -19,6 +19,7 @@
 #include <span>
 #include <vector>
 
+#include "generators/adaptation/movement_counters.hpp"
 #include "triangulation/mesh/tetrahedralization_3d.hpp"
 #include "triangulation/mesh/triangulation_2d.hpp"
 
@@ -53,11 +54,10 @@ struct SweepTally {
     std::uint64_t free_vertices = 0;
 };
 
-/// The counters of a sweep run (SmoothingCounters3 or WeightedMovementCounters: the same
-/// fields) from its tally and the fixed-vertex marks.
-template <class Counters>
-Counters sweep_counters(const SweepTally& tally, std::span<const std::uint8_t> fixed) {
-    Counters counters;
+/// What a sweep run did, from its tally and the fixed-vertex marks.
+inline MovementCounters sweep_counters(const SweepTally& tally,
+                                       std::span<const std::uint8_t> fixed) {
+    MovementCounters counters;
     counters.sweeps = tally.sweeps;
     counters.moves = tally.moves;
     counters.undone = tally.undone;

@@ -83,7 +83,7 @@ WeightedMovementCounters weighted_movement_2d(tri::Triangulation2& mesh,
         fixed_vertices_2d(mesh, fixed_below, protected_vertices);
     const detail::VertexStars stars = detail::vertex_stars_2d(mesh);
     const std::vector<double> weights = edge_weights(stars, indicator, options.strength);
-    return detail::sweep_counters<WeightedMovementCounters>(
+    return detail::sweep_counters(
         detail::guarded_sweeps_2d(mesh, stars, fixed, weights,
                                   {options.relaxation, options.sweeps, options.smart}),
         fixed);
@@ -100,7 +100,7 @@ WeightedMovementCounters weighted_movement_3d(tri::Tetrahedralization3& mesh,
         fixed_vertices_3d(mesh, fixed_below, protected_vertices);
     const detail::VertexStars stars = detail::vertex_stars_3d(mesh);
     const std::vector<double> weights = edge_weights(stars, indicator, options.strength);
-    return detail::sweep_counters<WeightedMovementCounters>(
+    return detail::sweep_counters(
         detail::guarded_sweeps_3d(mesh, stars, fixed, weights,
                                   {options.relaxation, options.sweeps, options.smart}),
         fixed);
