@@ -162,6 +162,16 @@ std::vector<double> vertex_indicator(std::span<const VertIdx> edges,
     return result;
 }
 
+std::vector<double> mesh_vertex_indicator(EdgeIndicator indicator,
+                                          std::span<const double> coordinates, unsigned dim,
+                                          std::span<const VertIdx> elements,
+                                          std::span<const double> values) {
+    const std::vector<VertIdx> edges = dim == 2 ? mesh_edges_2d(elements) : mesh_edges_3d(elements);
+    const std::vector<double> per_edge =
+        mesh_edge_indicator(indicator, coordinates, dim, elements, edges, values);
+    return vertex_indicator(edges, per_edge, coordinates.size() / dim);
+}
+
 double mean_indicator(std::span<const double> indicator) {
     if (indicator.empty()) return 0;
     return std::accumulate(indicator.begin(), indicator.end(), 0.0) /

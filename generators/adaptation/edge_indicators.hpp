@@ -70,6 +70,13 @@ std::vector<double> mesh_edge_indicator(EdgeIndicator indicator,
 std::vector<double> vertex_indicator(std::span<const triangulation::VertIdx> edges,
                                      std::span<const double> indicator, std::size_t vertex_count);
 
+/// vertex_indicator of mesh_edge_indicator over every edge of a mesh (mesh_edges_2d for dim 2,
+/// mesh_edges_3d for dim 3), one value per vertex of `coordinates`: the movement's weights.
+std::vector<double> mesh_vertex_indicator(EdgeIndicator indicator,
+                                          std::span<const double> coordinates, unsigned dim,
+                                          std::span<const triangulation::VertIdx> elements,
+                                          std::span<const double> values);
+
 /// Edges whose indicator exceeds threshold times the mean over all edges (the seed material's
 /// rule); 1 per flagged edge.
 std::vector<std::uint8_t> flag_above_mean(std::span<const double> indicator, double threshold,

@@ -184,4 +184,15 @@ std::vector<double> transfer_field_3d(std::span<const double> old_xyz,
     return result;
 }
 
+void keep_values_of_unmoved(std::vector<double>& values, std::span<const double> points,
+                            std::span<const double> before, unsigned dim,
+                            std::span<const double> first_values) {
+    for (std::size_t v = 0; v < values.size(); ++v) {
+        bool moved = false;
+        for (unsigned i = 0; i < dim && !moved; ++i)
+            moved = points[dim * v + i] != before[dim * v + i];
+        if (std::isnan(values[v]) || !moved) values[v] = first_values[v];
+    }
+}
+
 }  // namespace exactmesh::generators

@@ -34,4 +34,11 @@ std::vector<double> transfer_field_3d(std::span<const double> old_xyz,
                                       std::span<const double> old_values,
                                       std::span<const double> points);
 
+/// After a transfer to moved points: every point that did not move (all `dim` coordinates of
+/// `points` equal to `before`'s) or that lies in no old element (NaN) takes first_values[v],
+/// the value it was made with.
+void keep_values_of_unmoved(std::vector<double>& values, std::span<const double> points,
+                            std::span<const double> before, unsigned dim,
+                            std::span<const double> first_values);
+
 }  // namespace exactmesh::generators

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "generators/adaptation/edge_indicators.hpp"
+#include "generators/adaptation/h_adaptation_common.hpp"
 #include "generators/adaptation/mesh_edges.hpp"
 
 namespace exactmesh::generators {
@@ -14,39 +15,19 @@ using triangulation::VertIdx;
 bool h_refinement_cycle_2d(HAdaptiveMesh2& state, const AdaptationOptions& options,
                            const FieldSource& field, HAdaptationCounters2& counters) {
     const triangulation::Triangulation2& mesh = state.hierarchy.leaf_mesh();
-    const std::uint64_t vertices = mesh.vertex_count();
-    const bool budget = options.max_vertices > 0;
-    if (budget && vertices >= options.max_vertices) return false;
-    const std::vector<VertIdx> edges = mesh_edges_2d(mesh.triangles);
-    const std::vector<double> indicator =
-        mesh_edge_indicator(options.indicator, mesh.xy, 2, mesh.triangles, edges, state.values);
-    std::vector<std::uint8_t> flags =
-        flag_above_mean(indicator, options.threshold, options.reference_mean);
-    std::size_t count = static_cast<std::size_t>(std::count(flags.begin(), flags.end(), 1));
-    if (count == 0) return false;
-    const auto marks_of = [&](const std::vector<std::uint8_t>& f) {
+    const std::uint32_t before = mesh.vertex_count();
+    const auto marks_of = [](const std::vector<std::uint8_t>& flags,
+                             const std::vector<VertIdx>& edges) {
         std::vector<VertIdx> marks;
-        for (std::size_t e = 0; e < f.size(); ++e)
-            if (f[e]) marks.insert(marks.end(), {edges[2 * e], edges[2 * e + 1]});
+        for (std::size_t e = 0; e < flags.size(); ++e)
+            if (flags[e]) marks.insert(marks.end(), {edges[2 * e], edges[2 * e + 1]});
         return marks;
     };
-    const std::uint32_t before = state.hierarchy.leaf_mesh().vertex_count();
-    if (!budget) {
-        state.hierarchy.refine(marks_of(flags));
-    } else {
-        for (;;) {
-            HRefinedMesh2 trial = state.hierarchy;
-            trial.refine(marks_of(flags));
-            if (trial.leaf_mesh().vertex_count() <= options.max_vertices) {
-                state.hierarchy = std::move(trial);
-                break;
-            }
-            ++counters.budget_retries;
-            count /= 2;
-            if (count == 0) return false;
-            flags = flag_largest(indicator, count);
-        }
-    }
+    const std::size_t count = detail::refine_marked_edges(
+        state.hierarchy, options, mesh.xy, 2, mesh.triangles, state.values, marks_of,
+        [](const HRefinedMesh2& h) { return h.leaf_mesh().vertex_count(); },
+        counters.budget_retries);
+    if (count == 0) return false;
     counters.marked_edges += count;
     ++counters.cycles;
     const triangulation::Triangulation2& leaves = state.hierarchy.leaf_mesh();

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "base/counter_table.hpp"
+#include "generators/adaptation/h_adaptation_common.hpp"
 #include "generators/adaptation/h_refinement_2d.hpp"
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
 
@@ -23,18 +23,8 @@ struct HAdaptiveMesh2 {
     std::vector<double> values;  ///< the field at hierarchy.leaf_mesh()'s vertices
 };
 
-struct HAdaptationCounters2 {
-    std::uint64_t cycles = 0;
-    std::uint64_t marked_edges = 0;
-    std::uint64_t budget_retries = 0;  ///< refinements tried again with half the marks
-    std::uint64_t derefinement_passes = 0;
-    std::uint64_t derefine_flagged = 0;  ///< leaves flagged for derefinement
-};
-
-inline constexpr std::array kHAdaptationCounterNames2 =
-    EM_COUNTER_TABLE(HAdaptationCounters2, cycles, marked_edges, budget_retries,
-                     derefinement_passes, derefine_flagged);
-static_assert(counter_table_complete(kHAdaptationCounterNames2));
+using HAdaptationCounters2 = HAdaptationCounters;
+inline constexpr const auto& kHAdaptationCounterNames2 = kHAdaptationCounterNames;
 
 /// One refinement cycle; false when nothing was marked or the budget leaves no room.
 bool h_refinement_cycle_2d(HAdaptiveMesh2& state, const AdaptationOptions& options,

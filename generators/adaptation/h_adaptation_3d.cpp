@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "generators/adaptation/edge_indicators.hpp"
+#include "generators/adaptation/h_adaptation_common.hpp"
 #include "generators/adaptation/mesh_edges.hpp"
 
 namespace exactmesh::generators {
@@ -31,38 +32,17 @@ HAdaptiveMesh3 make_h_adaptive_mesh_3d(triangulation::Tetrahedralization3 root) 
 bool h_refinement_cycle_3d(HAdaptiveMesh3& state, const AdaptationOptions& options,
                            const FieldSource& field, HAdaptationCounters3& counters) {
     const triangulation::Tetrahedralization3& mesh = state.leaves;
-    const std::uint64_t vertices = mesh.vertex_count();
-    const bool budget = options.max_vertices > 0;
-    if (budget && vertices >= options.max_vertices) return false;
-    const std::vector<VertIdx> edges = mesh_edges_3d(mesh.tets);
-    const std::vector<double> indicator =
-        mesh_edge_indicator(options.indicator, mesh.xyz, 3, mesh.tets, edges, state.values);
-    std::vector<std::uint8_t> flags =
-        flag_above_mean(indicator, options.threshold, options.reference_mean);
-    std::size_t count = static_cast<std::size_t>(std::count(flags.begin(), flags.end(), 1));
-    if (count == 0) return false;
-    const auto marks_of = [&](const std::vector<std::uint8_t>& f) {
+    const auto marks_of = [](const std::vector<std::uint8_t>& flags,
+                             const std::vector<VertIdx>& edges) {
         std::vector<std::array<VertIdx, 2>> marks;
-        for (std::size_t e = 0; e < f.size(); ++e)
-            if (f[e]) marks.push_back({edges[2 * e], edges[2 * e + 1]});
+        for (std::size_t e = 0; e < flags.size(); ++e)
+            if (flags[e]) marks.push_back({edges[2 * e], edges[2 * e + 1]});
         return marks;
     };
-    if (!budget) {
-        state.hierarchy.refine(marks_of(flags));
-    } else {
-        for (;;) {
-            HRefinedMesh3 trial = state.hierarchy;
-            trial.refine(marks_of(flags));
-            if (trial.vertex_count() <= options.max_vertices) {
-                state.hierarchy = std::move(trial);
-                break;
-            }
-            ++counters.budget_retries;
-            count /= 2;
-            if (count == 0) return false;
-            flags = flag_largest(indicator, count);
-        }
-    }
+    const std::size_t count = detail::refine_marked_edges(
+        state.hierarchy, options, mesh.xyz, 3, mesh.tets, state.values, marks_of,
+        [](const HRefinedMesh3& h) { return h.vertex_count(); }, counters.budget_retries);
+    if (count == 0) return false;
     counters.marked_edges += count;
     ++counters.cycles;
     state.leaves = state.hierarchy.leaf_mesh();

@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "base/counter_table.hpp"
+#include "generators/adaptation/h_adaptation_common.hpp"
 #include "generators/adaptation/h_refinement_3d.hpp"
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
 
@@ -27,18 +27,8 @@ struct HAdaptiveMesh3 {
 
 HAdaptiveMesh3 make_h_adaptive_mesh_3d(triangulation::Tetrahedralization3 root);
 
-struct HAdaptationCounters3 {
-    std::uint64_t cycles = 0;
-    std::uint64_t marked_edges = 0;
-    std::uint64_t budget_retries = 0;  ///< refinements tried again with half the marks
-    std::uint64_t derefinement_passes = 0;
-    std::uint64_t derefine_flagged = 0;  ///< leaves flagged for derefinement
-};
-
-inline constexpr std::array kHAdaptationCounterNames3 =
-    EM_COUNTER_TABLE(HAdaptationCounters3, cycles, marked_edges, budget_retries,
-                     derefinement_passes, derefine_flagged);
-static_assert(counter_table_complete(kHAdaptationCounterNames3));
+using HAdaptationCounters3 = HAdaptationCounters;
+inline constexpr const auto& kHAdaptationCounterNames3 = kHAdaptationCounterNames;
 
 /// One refinement cycle; false when nothing was marked or the budget leaves no room.
 bool h_refinement_cycle_3d(HAdaptiveMesh3& state, const AdaptationOptions& options,

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "base/errors.hpp"
+#include "generators/adaptation/refinement_forest.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/within_rounding_of_segment.hpp"
 
@@ -214,20 +215,7 @@ VertIdx HRefinedMesh2::split_vertex(VertIdx a, VertIdx b) {
 }
 
 void HRefinedMesh2::collect_leaves() {
-    leaf_nodes_.clear();
-    std::vector<std::uint32_t> stack;
-    for (TriIdx r = root_triangles_; r-- > 0;) stack.push_back(r);
-    while (!stack.empty()) {
-        const std::uint32_t id = stack.back();
-        stack.pop_back();
-        const HRefinementNode2& node = nodes_[id];
-        if (node.child_count == 0) {
-            leaf_nodes_.push_back(id);
-            continue;
-        }
-        for (int c = node.child_count; c-- > 0;)
-            stack.push_back(node.children[static_cast<std::size_t>(c)]);
-    }
+    detail::collect_forest_leaves<HRefinementNode2>(nodes_, root_triangles_, leaf_nodes_);
 }
 
 void HRefinedMesh2::rebuild_leaf_mesh() {

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "base/errors.hpp"
+#include "generators/adaptation/refinement_forest.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/orient3d.hpp"
 #include "triangulation/checks/check_topology_3d.hpp"
@@ -384,21 +385,7 @@ bool HRefinedMesh3::make_children(std::uint32_t node, std::uint8_t mask) {
 }
 
 void HRefinedMesh3::rebuild_leaves() {
-    leaves_.clear();
-    std::vector<std::uint32_t> stack;
-    for (std::uint32_t r = 0; r < root_tets_; ++r) {
-        stack.push_back(r);
-        while (!stack.empty()) {
-            const std::uint32_t n = stack.back();
-            stack.pop_back();
-            const Node& node = nodes_[n];
-            if (node.child_count == 0) {
-                leaves_.push_back(n);
-                continue;
-            }
-            for (int k = node.child_count - 1; k >= 0; --k) stack.push_back(node.children[k]);
-        }
-    }
+    detail::collect_forest_leaves<Node>(nodes_, root_tets_, leaves_);
 }
 
 void HRefinedMesh3::refine(std::span<const std::array<VertIdx, 2>> marked_edges) {

@@ -25,23 +25,36 @@ struct NewPoint {
 
 }  // namespace
 
+namespace detail {
+
+CycleFlags cycle_flags(const AdaptationOptions& options, std::span<const double> coordinates,
+                       unsigned dim, std::span<const VertIdx> elements,
+                       std::span<const double> values) {
+    CycleFlags r;
+    const std::uint64_t vertices = coordinates.size() / dim;
+    const bool budget = options.max_vertices > 0;
+    if (budget && vertices >= options.max_vertices) return r;
+    const std::uint64_t room = budget ? options.max_vertices - vertices : 0;
+    r.edges = dim == 2 ? mesh_edges_2d(elements) : mesh_edges_3d(elements);
+    const std::vector<double> indicator =
+        mesh_edge_indicator(options.indicator, coordinates, dim, elements, r.edges, values);
+    r.flags = refinement_flags(elements, dim, r.edges, indicator, options.threshold, room, budget,
+                               &r.flagged, &r.closure, options.reference_mean);
+    return r;
+}
+
+}  // namespace detail
+
 bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
                         const FieldSource& field, InsertionCounters2& counters) {
     const triangulation::Triangulation2& mesh = state.mesh;
-    const std::uint64_t vertices = mesh.vertex_count();
-    const bool budget = options.max_vertices > 0;
-    if (budget && vertices >= options.max_vertices) return false;
-    const std::uint64_t room = budget ? options.max_vertices - vertices : 0;
 
     // 1-2. Indicator, flags, closure.
-    const std::vector<VertIdx> edges = mesh_edges_2d(mesh.triangles);
-    const std::vector<double> indicator =
-        mesh_edge_indicator(options.indicator, mesh.xy, 2, mesh.triangles, edges, state.values);
-    std::uint64_t flagged = 0, closure = 0;
-    const std::vector<std::uint8_t> flags =
-        refinement_flags(mesh.triangles, 2, edges, indicator, options.threshold, room, budget,
-                         &flagged, &closure, options.reference_mean);
-    if (flagged == 0) return false;
+    const detail::CycleFlags marked =
+        detail::cycle_flags(options, mesh.xy, 2, mesh.triangles, state.values);
+    if (marked.flagged == 0) return false;
+    const std::vector<VertIdx>& edges = marked.edges;
+    const std::vector<std::uint8_t>& flags = marked.flags;
 
     // 3. The points: pieces split at their curve's (or chord's) midpoint, interior edges at
     // their rounded midpoint. An edge so short that its midpoint rounds to an end is left.
@@ -169,8 +182,8 @@ bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
         break;
     }
     ++counters.cycles;
-    counters.flagged_edges += flagged;
-    counters.closure_edges += closure;
+    counters.flagged_edges += marked.flagged;
+    counters.closure_edges += marked.closure;
 
     // 5. Smoothing, boundary and input vertices fixed.
     const std::vector<double> before_smoothing = next.mesh.xy;
@@ -190,25 +203,20 @@ bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
             return;
         }
         next.values = transfer_field_2d(old_xy, old_triangles, old_values, next.mesh.xy);
-        for (std::size_t v = 0; v < next.values.size(); ++v) {
-            // A point outside the old mesh (beside a convex curve point) keeps the value it
-            // was made with; so does every point that did not move.
-            const bool moved = next.mesh.xy[2 * v] != before_smoothing[2 * v] ||
-                               next.mesh.xy[2 * v + 1] != before_smoothing[2 * v + 1];
-            if (std::isnan(next.values[v]) || !moved) next.values[v] = first_values[v];
-        }
+        // A point outside the old mesh (beside a convex curve point) keeps the value it was
+        // made with; so does every point that did not move.
+        keep_values_of_unmoved(next.values, next.mesh.xy, before_smoothing, 2, first_values);
     };
     set_field();
     if (options.movement_sweeps > 0) {
-        const std::vector<VertIdx> new_edges = mesh_edges_2d(next.mesh.triangles);
-        const std::vector<double> new_indicator = mesh_edge_indicator(
-            options.indicator, next.mesh.xy, 2, next.mesh.triangles, new_edges, next.values);
         WeightedMovementOptions movement;
         movement.sweeps = options.movement_sweeps;
         movement.strength = options.movement_strength;
-        const WeightedMovementCounters c = weighted_movement_2d(
-            next.mesh, vertex_indicator(new_edges, new_indicator, next.mesh.vertex_count()),
-            next.fixed_vertices, movement);
+        const WeightedMovementCounters c =
+            weighted_movement_2d(next.mesh,
+                                 mesh_vertex_indicator(options.indicator, next.mesh.xy, 2,
+                                                       next.mesh.triangles, next.values),
+                                 next.fixed_vertices, movement);
         counters.movement_moves += c.moves;
         counters.movement_undone += c.undone + c.undone_worse;
         set_field();

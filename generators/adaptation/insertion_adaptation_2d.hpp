@@ -25,6 +25,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "base/counter_table.hpp"
@@ -54,6 +55,23 @@ struct FieldSource {
     const AnalyticField* analytic = nullptr;
     double t = 0;
 };
+
+namespace detail {
+
+/// Steps 1-2 of an insertion cycle in either dimension: the mesh's edges (mesh_edges_2d for
+/// dim 2, mesh_edges_3d for dim 3) and refinement_flags of their indicator within the room the
+/// budget leaves. flagged is 0 when the budget is reached (nothing computed) or nothing is
+/// flagged.
+struct CycleFlags {
+    std::vector<triangulation::VertIdx> edges;
+    std::vector<std::uint8_t> flags;
+    std::uint64_t flagged = 0, closure = 0;
+};
+CycleFlags cycle_flags(const AdaptationOptions& options, std::span<const double> coordinates,
+                       unsigned dim, std::span<const triangulation::VertIdx> elements,
+                       std::span<const double> values);
+
+}  // namespace detail
 
 struct InsertionCounters2 {
     std::uint64_t cycles = 0;

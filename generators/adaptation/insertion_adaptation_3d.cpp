@@ -47,18 +47,11 @@ AdaptiveMesh3 make_adaptive_mesh_3d(triangulation::Tetrahedralization3 mesh) {
 bool insertion_cycle_3d(AdaptiveMesh3& state, const AdaptationOptions& options,
                         const FieldSource& field, InsertionCounters3& counters) {
     const triangulation::Tetrahedralization3& mesh = state.mesh;
-    const std::uint64_t vertices = mesh.vertex_count();
-    const bool budget = options.max_vertices > 0;
-    if (budget && vertices >= options.max_vertices) return false;
-    const std::uint64_t room = budget ? options.max_vertices - vertices : 0;
-    const std::vector<VertIdx> edges = mesh_edges_3d(mesh.tets);
-    const std::vector<double> indicator =
-        mesh_edge_indicator(options.indicator, mesh.xyz, 3, mesh.tets, edges, state.values);
-    std::uint64_t flagged = 0, closure = 0;
-    const std::vector<std::uint8_t> flags =
-        refinement_flags(mesh.tets, 3, edges, indicator, options.threshold, room, budget, &flagged,
-                         &closure, options.reference_mean);
-    if (flagged == 0) return false;
+    const detail::CycleFlags marked =
+        detail::cycle_flags(options, mesh.xyz, 3, mesh.tets, state.values);
+    if (marked.flagged == 0) return false;
+    const std::vector<VertIdx>& edges = marked.edges;
+    const std::vector<std::uint8_t>& flags = marked.flags;
 
     // The hull faces at each hull edge, to keep boundary midpoints in their faces' planes.
     const std::vector<VertIdx> hull = hull_faces(mesh);
@@ -133,31 +126,24 @@ bool insertion_cycle_3d(AdaptiveMesh3& state, const AdaptationOptions& options,
         }
         next.values =
             transfer_field_3d(mesh.xyz, mesh.tets, mesh.neighbors, state.values, next.mesh.xyz);
-        for (std::size_t v = 0; v < next.values.size(); ++v) {
-            const bool moved = next.mesh.xyz[3 * v] != before_smoothing[3 * v] ||
-                               next.mesh.xyz[3 * v + 1] != before_smoothing[3 * v + 1] ||
-                               next.mesh.xyz[3 * v + 2] != before_smoothing[3 * v + 2];
-            if (std::isnan(next.values[v]) || !moved) next.values[v] = first_values[v];
-        }
+        keep_values_of_unmoved(next.values, next.mesh.xyz, before_smoothing, 3, first_values);
     };
     set_field();
     if (options.movement_sweeps > 0) {
-        const std::vector<VertIdx> new_edges = mesh_edges_3d(next.mesh.tets);
-        const std::vector<double> new_indicator = mesh_edge_indicator(
-            options.indicator, next.mesh.xyz, 3, next.mesh.tets, new_edges, next.values);
         WeightedMovementOptions movement;
         movement.sweeps = options.movement_sweeps;
         movement.strength = options.movement_strength;
         const WeightedMovementCounters c = weighted_movement_3d(
-            next.mesh, vertex_indicator(new_edges, new_indicator, next.mesh.vertex_count()),
+            next.mesh,
+            mesh_vertex_indicator(options.indicator, next.mesh.xyz, 3, next.mesh.tets, next.values),
             next.fixed_vertices, movement);
         counters.movement_moves += c.moves;
         counters.movement_undone += c.undone + c.undone_worse;
         set_field();
     }
     ++counters.cycles;
-    counters.flagged_edges += flagged;
-    counters.closure_edges += closure;
+    counters.flagged_edges += marked.flagged;
+    counters.closure_edges += marked.closure;
     counters.inserted += inserted;
     counters.boundary_points += boundary;
     counters.off_plane_skipped += skipped;

@@ -20,15 +20,7 @@ SmoothingCounters3 laplacian_smoothing_3d(triangulation::Tetrahedralization3& me
     const detail::VertexStars stars = detail::vertex_stars_3d(mesh);
     const detail::SweepTally tally = detail::guarded_sweeps_3d(
         mesh, stars, fixed, {}, {options.relaxation, options.iterations, options.smart});
-    SmoothingCounters3 counters;
-    counters.sweeps = tally.sweeps;
-    counters.moves = tally.moves;
-    counters.undone = tally.undone;
-    counters.undone_worse = tally.worse;
-    counters.converged = tally.converged;
-    counters.free_vertices = tally.free_vertices;
-    counters.fixed_vertices = static_cast<std::uint64_t>(std::count(fixed.begin(), fixed.end(), 1));
-    return counters;
+    return detail::sweep_counters(tally, fixed);
 }
 
 }  // namespace exactmesh::generators

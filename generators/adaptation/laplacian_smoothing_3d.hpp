@@ -25,7 +25,7 @@
 #include <array>
 #include <cstdint>
 
-#include "base/counter_table.hpp"
+#include "generators/adaptation/movement_counters.hpp"
 #include "triangulation/mesh/tetrahedralization_3d.hpp"
 
 namespace exactmesh::generators {
@@ -42,24 +42,8 @@ struct SmoothingOptions3 {
     bool smart = true;
 };
 
-struct SmoothingCounters3 {
-    std::uint64_t sweeps = 0;
-    std::uint64_t moves = 0;           ///< vertex moves applied (summed over sweeps)
-    std::uint64_t undone = 0;          ///< moves refused because a tetrahedron would not be
-                                       ///< strictly positive (summed over sweeps)
-    std::uint64_t undone_worse = 0;    ///< smart: moves refused because the smallest quality of
-                                       ///< the star would fall (summed over sweeps)
-    std::uint64_t converged = 0;       ///< targets within 2^-30 of the star's extent, not moved
-                                       ///< (summed over sweeps)
-    std::uint64_t free_vertices = 0;   ///< vertices allowed to move
-    std::uint64_t fixed_vertices = 0;  ///< vertices kept in place
-};
-
-/// The name table of SmoothingCounters3 (base/counter_table.hpp).
-inline constexpr std::array kSmoothing3CounterNames =
-    EM_COUNTER_TABLE(SmoothingCounters3, sweeps, moves, undone, undone_worse, converged,
-                     free_vertices, fixed_vertices);
-static_assert(counter_table_complete(kSmoothing3CounterNames));
+using SmoothingCounters3 = MovementCounters;  ///< movement_counters.hpp
+inline constexpr const auto& kSmoothing3CounterNames = kMovementCounterNames;
 
 /// Smooths `mesh` in place (coordinates of free vertices only; tets and neighbors unchanged).
 /// @pre tetrahedra positively oriented, neighbors consistent, coordinates finite.

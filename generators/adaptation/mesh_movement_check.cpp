@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <string>
+#include <string_view>
 
 #include "base/errors.hpp"
 #include "predicates/orient2d.hpp"
@@ -67,6 +69,44 @@ MovementCheckReport compare_coordinates(std::span<const double> before,
     return r;
 }
 
+// The check both dimensions share: the connectivity as before, the coordinates as
+// compare_coordinates allows, every element (D + 1 corners in range) strictly positive by the
+// exact orient2d / orient3d.
+template <unsigned D>
+MovementCheckReport check_moved(bool same_connectivity, std::span<const double> before,
+                                std::span<const double> after,
+                                std::span<const tri::VertIdx> elements,
+                                std::span<const std::uint8_t> fixed, std::string_view element,
+                                std::string_view positive) {
+    MovementCheckReport r;
+    if (!same_connectivity) {
+        r.ok = false;
+        r.problem = "the connectivity changed";
+        return r;
+    }
+    r = compare_coordinates<D>(before, after, fixed);
+    if (!r.ok) return r;
+    const std::size_t vertices = after.size() / D;
+    for (std::uint32_t t = 0; t < elements.size() / (D + 1); ++t) {
+        const tri::VertIdx* c = elements.data() + (D + 1) * std::size_t{t};
+        const auto p = [&](unsigned i) { return after.data() + D * std::size_t{c[i]}; };
+        bool ok = *std::max_element(c, c + D + 1) < vertices;
+        if constexpr (D == 2) {
+            ok = ok && predicates::orient2d(p(0), p(1), p(2)) == predicates::Sign::Positive;
+        } else {
+            ok = ok && predicates::orient3d(p(0), p(1), p(2), p(3)) == predicates::Sign::Positive;
+        }
+        if (!ok) {
+            r.ok = false;
+            r.element = t;
+            r.problem = std::string(element) + " " + std::to_string(t) + " is not strictly " +
+                        std::string(positive);
+            return r;
+        }
+    }
+    return r;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> fixed_vertices_2d(const tri::Triangulation2& mesh,
@@ -105,52 +145,17 @@ std::vector<std::uint8_t> fixed_vertices_3d(const tri::Tetrahedralization3& mesh
 MovementCheckReport check_mesh_movement_2d(const tri::Triangulation2& before,
                                            const tri::Triangulation2& after,
                                            std::span<const std::uint8_t> fixed) {
-    MovementCheckReport r;
-    if (after.triangles != before.triangles || after.neighbors != before.neighbors ||
-        after.constrained != before.constrained) {
-        r.ok = false;
-        r.problem = "the connectivity changed";
-        return r;
-    }
-    r = compare_coordinates<2>(before.xy, after.xy, fixed);
-    if (!r.ok) return r;
-    for (tri::TriIdx t = 0; t < after.triangle_count(); ++t) {
-        const tri::VertIdx* c = after.triangles.data() + 3 * std::size_t{t};
-        if (std::max({c[0], c[1], c[2]}) >= after.vertex_count() ||
-            predicates::orient2d(after.point(c[0]), after.point(c[1]), after.point(c[2])) !=
-                predicates::Sign::Positive) {
-            r.ok = false;
-            r.element = t;
-            r.problem = "triangle " + std::to_string(t) + " is not strictly counter-clockwise";
-            return r;
-        }
-    }
-    return r;
+    return check_moved<2>(
+        after.triangles == before.triangles && after.neighbors == before.neighbors &&
+            after.constrained == before.constrained,
+        before.xy, after.xy, after.triangles, fixed, "triangle", "counter-clockwise");
 }
 
 MovementCheckReport check_mesh_movement_3d(const tri::Tetrahedralization3& before,
                                            const tri::Tetrahedralization3& after,
                                            std::span<const std::uint8_t> fixed) {
-    MovementCheckReport r;
-    if (after.tets != before.tets || after.neighbors != before.neighbors) {
-        r.ok = false;
-        r.problem = "the connectivity changed";
-        return r;
-    }
-    r = compare_coordinates<3>(before.xyz, after.xyz, fixed);
-    if (!r.ok) return r;
-    for (tri::TetIdx t = 0; t < after.tet_count(); ++t) {
-        const tri::VertIdx* c = after.tets.data() + 4 * std::size_t{t};
-        if (std::max({c[0], c[1], c[2], c[3]}) >= after.vertex_count() ||
-            predicates::orient3d(after.point(c[0]), after.point(c[1]), after.point(c[2]),
-                                 after.point(c[3])) != predicates::Sign::Positive) {
-            r.ok = false;
-            r.element = t;
-            r.problem = "tetrahedron " + std::to_string(t) + " is not strictly positive";
-            return r;
-        }
-    }
-    return r;
+    return check_moved<3>(after.tets == before.tets && after.neighbors == before.neighbors,
+                          before.xyz, after.xyz, after.tets, fixed, "tetrahedron", "positive");
 }
 
 }  // namespace exactmesh::generators

@@ -14,10 +14,12 @@
 // Connectivity never changes. Cost: O(sweeps * (edges + elements)) predicates and flops.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "generators/adaptation/movement_counters.hpp"
 #include "triangulation/mesh/tetrahedralization_3d.hpp"
 #include "triangulation/mesh/triangulation_2d.hpp"
 
@@ -51,6 +53,20 @@ struct SweepTally {
     std::uint64_t converged = 0;  ///< targets within 2^-30 of the star's size: not moved
     std::uint64_t free_vertices = 0;
 };
+
+/// What a sweep run did, from its tally and the fixed-vertex marks.
+inline MovementCounters sweep_counters(const SweepTally& tally,
+                                       std::span<const std::uint8_t> fixed) {
+    MovementCounters counters;
+    counters.sweeps = tally.sweeps;
+    counters.moves = tally.moves;
+    counters.undone = tally.undone;
+    counters.undone_worse = tally.worse;
+    counters.converged = tally.converged;
+    counters.free_vertices = tally.free_vertices;
+    counters.fixed_vertices = static_cast<std::uint64_t>(std::count(fixed.begin(), fixed.end(), 1));
+    return counters;
+}
 
 /// The element quality used by smart mode, 1 for the equilateral triangle / regular
 /// tetrahedron, 0 when flat: 4 sqrt(3) A / (sum of squared edges), and 6 sqrt(2) V / l_rms^3

@@ -70,19 +70,6 @@ std::vector<double> edge_weights(const detail::VertexStars& stars,
     return weights;
 }
 
-WeightedMovementCounters to_counters(const detail::SweepTally& tally,
-                                     const std::vector<std::uint8_t>& fixed) {
-    WeightedMovementCounters counters;
-    counters.sweeps = tally.sweeps;
-    counters.moves = tally.moves;
-    counters.undone = tally.undone;
-    counters.undone_worse = tally.worse;
-    counters.converged = tally.converged;
-    counters.free_vertices = tally.free_vertices;
-    counters.fixed_vertices = static_cast<std::uint64_t>(std::count(fixed.begin(), fixed.end(), 1));
-    return counters;
-}
-
 }  // namespace
 
 WeightedMovementCounters weighted_movement_2d(tri::Triangulation2& mesh,
@@ -96,7 +83,7 @@ WeightedMovementCounters weighted_movement_2d(tri::Triangulation2& mesh,
         fixed_vertices_2d(mesh, fixed_below, protected_vertices);
     const detail::VertexStars stars = detail::vertex_stars_2d(mesh);
     const std::vector<double> weights = edge_weights(stars, indicator, options.strength);
-    return to_counters(
+    return detail::sweep_counters(
         detail::guarded_sweeps_2d(mesh, stars, fixed, weights,
                                   {options.relaxation, options.sweeps, options.smart}),
         fixed);
@@ -113,7 +100,7 @@ WeightedMovementCounters weighted_movement_3d(tri::Tetrahedralization3& mesh,
         fixed_vertices_3d(mesh, fixed_below, protected_vertices);
     const detail::VertexStars stars = detail::vertex_stars_3d(mesh);
     const std::vector<double> weights = edge_weights(stars, indicator, options.strength);
-    return to_counters(
+    return detail::sweep_counters(
         detail::guarded_sweeps_3d(mesh, stars, fixed, weights,
                                   {options.relaxation, options.sweeps, options.smart}),
         fixed);

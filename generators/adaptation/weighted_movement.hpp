@@ -35,7 +35,7 @@
 #include <cstdint>
 #include <span>
 
-#include "base/counter_table.hpp"
+#include "generators/adaptation/movement_counters.hpp"
 #include "triangulation/mesh/tetrahedralization_3d.hpp"
 #include "triangulation/mesh/triangulation_2d.hpp"
 
@@ -54,24 +54,8 @@ struct WeightedMovementOptions {
     bool smart = false;
 };
 
-struct WeightedMovementCounters {
-    std::uint64_t sweeps = 0;
-    std::uint64_t moves = 0;           ///< vertex moves applied (summed over sweeps)
-    std::uint64_t undone = 0;          ///< moves refused because an element would not be
-                                       ///< strictly positive (summed over sweeps)
-    std::uint64_t undone_worse = 0;    ///< smart: moves refused because the smallest quality of
-                                       ///< the star would fall (summed over sweeps)
-    std::uint64_t converged = 0;       ///< targets within 2^-30 of the star's extent, not moved
-                                       ///< (summed over sweeps)
-    std::uint64_t free_vertices = 0;   ///< vertices allowed to move
-    std::uint64_t fixed_vertices = 0;  ///< vertices kept in place
-};
-
-/// The name table of WeightedMovementCounters (base/counter_table.hpp).
-inline constexpr std::array kWeightedMovementCounterNames =
-    EM_COUNTER_TABLE(WeightedMovementCounters, sweeps, moves, undone, undone_worse, converged,
-                     free_vertices, fixed_vertices);
-static_assert(counter_table_complete(kWeightedMovementCounterNames));
+using WeightedMovementCounters = MovementCounters;  ///< movement_counters.hpp
+inline constexpr const auto& kWeightedMovementCounterNames = kMovementCounterNames;
 
 /// Moves the free vertices of `mesh` in place (coordinates only: triangles, neighbors and
 /// constrained unchanged). `indicator`: #V values f_v >= 0; `protected_vertices`: empty or #V

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -166,6 +167,18 @@ tri::Triangulation2 square_with_boundary(int n) {
     return mesh_of(xy, segments);
 }
 
+// The last edge of triangle 0 (in its corner order) that has a neighbour across it.
+std::array<tri::VertIdx, 2> interior_edge_of_first_triangle(const tri::Triangulation2& root) {
+    tri::VertIdx a = 0, b = 0;
+    for (unsigned k = 0; k < 3; ++k) {
+        if (root.neighbors[k] != tri::kNone) {
+            a = root.triangles[k];
+            b = root.triangles[(k + 1) % 3];
+        }
+    }
+    return {a, b};
+}
+
 }  // namespace
 
 TEST(Generators_HRefinement2, RandomMarksOverSeveralLevelsStayValidAndDerefineToTheRoot) {
@@ -260,13 +273,7 @@ TEST(Generators_HRefinement2, OneSharedEdgeGivesTwoGreensThenARedUndoesOne) {
     ASSERT_EQ(root.triangle_count(), 2u);
     gen::HRefinedMesh2 h(root);
     // The interior edge.
-    tri::VertIdx a = 0, b = 0;
-    for (unsigned k = 0; k < 3; ++k) {
-        if (root.neighbors[k] != tri::kNone) {
-            a = root.triangles[k];
-            b = root.triangles[(k + 1) % 3];
-        }
-    }
+    const auto [a, b] = interior_edge_of_first_triangle(root);
     const std::vector<tri::VertIdx> diagonal{a, b};
     auto c = h.refine(diagonal);
     EXPECT_EQ(c.green, 2u);
@@ -592,13 +599,7 @@ TEST(Generators_HRefinement2, TheCheckFindsCorruptedHistories) {
     const std::vector<double> xy{0, 0, 1, 0, 1, 1, 0, 1};
     const tri::Triangulation2 root = mesh_of(xy);
     gen::HRefinedMesh2 h(root);
-    tri::VertIdx a = 0, b = 0;
-    for (unsigned k = 0; k < 3; ++k) {
-        if (root.neighbors[k] != tri::kNone) {
-            a = root.triangles[k];
-            b = root.triangles[(k + 1) % 3];
-        }
-    }
+    const auto [a, b] = interior_edge_of_first_triangle(root);
     h.refine(std::vector<tri::VertIdx>{a, b});
     std::vector<tri::VertIdx> boundary_edge;
     for (unsigned k = 0; k < 3 && boundary_edge.empty(); ++k) {

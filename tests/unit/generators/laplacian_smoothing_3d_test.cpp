@@ -73,6 +73,15 @@ std::vector<double> scaled(std::vector<double> xyz, int k) {
     return xyz;
 }
 
+// Smoothing options with these sweeps, relaxation and smart flag.
+gen::SmoothingOptions3 smoothing_options(std::uint32_t iterations, double relaxation, bool smart) {
+    gen::SmoothingOptions3 options;
+    options.iterations = iterations;
+    options.relaxation = relaxation;
+    options.smart = smart;
+    return options;
+}
+
 }  // namespace
 
 TEST(Generators_LaplacianSmoothing3, JitteredGridStaysValidBoundaryStaysAndQualityImproves) {
@@ -82,10 +91,7 @@ TEST(Generators_LaplacianSmoothing3, JitteredGridStaysValidBoundaryStaysAndQuali
             tri::Tetrahedralization3 mesh = delaunay(jittered_grid(side, 0.35, seed));
             const tri::Tetrahedralization3 before = mesh;
             const tri::QualityStats3 q0 = tri::quality_stats_3d(mesh);
-            gen::SmoothingOptions3 options;
-            options.iterations = 5;
-            options.relaxation = 0.5;
-            options.smart = smart;
+            const gen::SmoothingOptions3 options = smoothing_options(5, 0.5, smart);
             const gen::SmoothingCounters3 c = gen::laplacian_smoothing_3d(mesh, 0, options);
             EXPECT_EQ(c.sweeps, 5u);
             EXPECT_GT(c.moves, 0u);
@@ -121,9 +127,7 @@ TEST(Generators_LaplacianSmoothing3, RandomPointsInABoxStayValidWithHullAndInput
     tri::Tetrahedralization3 mesh = delaunay(xyz);
     const tri::Tetrahedralization3 before = mesh;
     const tri::QualityStats3 q0 = tri::quality_stats_3d(mesh);
-    gen::SmoothingOptions3 options;
-    options.iterations = 4;
-    options.relaxation = 0.5;
+    const gen::SmoothingOptions3 options = smoothing_options(4, 0.5, true);  // smart: the default
     const std::uint32_t fixed_below = 50;  // as if the first 50 were a generator's input
     const gen::SmoothingCounters3 c = gen::laplacian_smoothing_3d(mesh, fixed_below, options);
     EXPECT_GT(c.moves, 0u);
@@ -234,10 +238,7 @@ TEST(Generators_LaplacianSmoothing3, ScaledByTwoToThePlusMinus600GivesTheSameRes
     const std::vector<double> xyz = jittered_grid(5, 0.35, 9);
     for (const bool smart : {false, true}) {
         tri::Tetrahedralization3 reference = delaunay(xyz);
-        gen::SmoothingOptions3 options;
-        options.iterations = 3;
-        options.relaxation = 0.75;
-        options.smart = smart;
+        const gen::SmoothingOptions3 options = smoothing_options(3, 0.75, smart);
         const gen::SmoothingCounters3 c0 = gen::laplacian_smoothing_3d(reference, 0, options);
         EXPECT_GT(c0.moves, 0u);
         for (const int k : {-600, 600}) {

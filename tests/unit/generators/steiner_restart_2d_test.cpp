@@ -21,46 +21,24 @@
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "predicates/power_of_two.hpp"
+#include "tests/support/adaptation_fixtures_2d.hpp"
+#include "tests/support/scaled_coordinates.hpp"
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 
 namespace {
 
-struct DomainState {
-    gen::DomainPslg domain;
-    gen::AdaptiveMesh2 state;
-};
+using DomainState = exactmesh::testing::SampleDomainState;
 
 // A sample domain meshed by Delaunay refinement, scaled by `scale` (then without curves: a
 // scaled curve would be another function), as an adaptive state with the field at t = 0.
 DomainState domain_state(gen::SampleDomain d, const gen::AnalyticField& field, double scale = 1,
                          double size = 0) {
-    DomainState r;
-    r.domain = gen::sample_domain(
-        d, size > 0 ? gen::SizeFunction::uniform(size) : gen::sample_domain_size(d));
-    for (double& c : r.domain.xy) c *= scale;
-    for (double& c : r.domain.holes) c *= scale;
-    gen::MeshOptions2 options;
-    options.size = size > 0 ? gen::SizeFunction::uniform(size * scale) : gen::SizeFunction();
-    tri::Cdt2Result mesh = gen::find_mesh_generator_2d("delaunay-refinement")
-                               .run({r.domain.xy, r.domain.segments, r.domain.holes, {}}, options)
-                               .mesh;
-    const bool curves = scale == 1;
-    r.state = gen::make_adaptive_mesh_2d(
-        std::move(mesh), r.domain.xy, r.domain.segments, r.domain.holes,
-        curves ? r.domain.curves : std::vector<gen::Curve2>{},
-        curves ? std::span<const gen::SegmentCurve>(r.domain.segment_curves)
-               : std::span<const gen::SegmentCurve>{});
-    r.state.values = gen::sample_field(field, r.state.mesh.xy, 2, 0);
-    return r;
+    return exactmesh::testing::sample_domain_state(d, field, scale, size, scale == 1);
 }
 
-gen::AnalyticField front_field(double scale = 1.0) {
-    return {"front", [scale](double x, double y, double, double t) {
-                return std::tanh(25 * (x / scale + 0.5 * y / scale - 0.6 - 0.3 * t));
-            }};
-}
+using exactmesh::testing::front_field;
 
 double max_error(const gen::AdaptiveMesh2& s, const gen::AnalyticField& field, double t) {
     return gen::interpolation_error(s.mesh.xy, 2, s.mesh.triangles, s.values, field, t).maximum;
@@ -270,9 +248,7 @@ TEST(Generators_SteinerRestart2, SameMeshScaledAtTwoToThePlusMinus600) {
             continue;
         }
         EXPECT_EQ(state.mesh.triangles, reference.triangles) << "2^" << k;
-        ASSERT_EQ(state.mesh.xy.size(), reference.xy.size());
-        for (std::size_t i = 0; i < reference.xy.size(); ++i)
-            ASSERT_EQ(state.mesh.xy[i], std::ldexp(reference.xy[i], k)) << "2^" << k << " " << i;
+        ASSERT_TRUE(exactmesh::testing::coordinates_scaled_by(state.mesh.xy, reference.xy, k));
         ASSERT_EQ(state.pieces.size(), reference_pieces.size());
         for (std::size_t p = 0; p < reference_pieces.size(); ++p) {
             EXPECT_EQ(state.pieces[p].a, reference_pieces[p].a);
