@@ -5,9 +5,12 @@
 // remeshing, with varied indicators, thresholds, fields, transient runs, smoothing and movement)
 // and the target's saved past failures (tests/data/fuzz/adaptation_2d_*.bin). Every cycle and
 // derefinement pass passes its exact check within the vertex budget, and h-refinement's
-// refine-then-derefine returns the root exactly.
+// refine-then-derefine returns the root exactly. Then the regression tests of the target's
+// findings, on the library's API directly.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -17,9 +20,15 @@
 #include <utility>
 #include <vector>
 
+#include "generators/adaptation/adaptive_mesh_2d.hpp"
+#include "generators/adaptation/insertion_adaptation_2d.hpp"
+#include "generators/adaptation/vertex_field.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/fuzz/adaptation_2d_case.hpp"
 
 namespace fz = exactmesh::fuzz;
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
 
 namespace {
 
@@ -122,4 +131,60 @@ TEST(Generators_AdaptationFuzzCases, SavedFailuresPassEveryCheck) {
     }
     // No saved failure yet is fine; the directory itself must exist.
     EXPECT_GE(replayed, 0);
+}
+
+// Finding (tests/data/fuzz/adaptation_2d_insertion_repeated_vertex.bin): an input vertex given
+// twice. The first mesh merges the repeat (it stays in xy, in no triangle); insertion rebuilt the
+// constrained triangulation from every vertex, which merged it again, and took that duplicate
+// for boundary pieces meeting: "the boundary's pieces met after chord midpoints were added (a
+// bug)" on every such input. Now only a used vertex or a new point merged is a problem.
+TEST(Generators_AdaptationFuzzCases, InsertionKeepsAnInputsRepeatedVertexUnused) {
+    const gen::AnalyticField front{"front", [](double x, double y, double, double) {
+                                       return std::tanh(8 * (x - 0.3 * y - 0.5));
+                                   }};
+    std::vector<double> reference;
+    for (const int k : {0, -600, 600}) {
+        // A right triangle whose first corner is repeated (vertex 1), with the zero-length
+        // segment between the two copies.
+        std::vector<double> xy{2, -1, 2, -1, 2, 2, -1, 2};
+        for (double& v : xy) v = std::ldexp(v, k);
+        const std::vector<tri::VertIdx> segments{0, 1, 1, 2, 2, 3, 3, 0};
+        gen::MeshOptions2 mesh_options;
+        mesh_options.size = gen::SizeFunction::uniform(std::ldexp(1.5, k));
+        tri::Cdt2Result first = gen::find_mesh_generator_2d("delaunay-refinement")
+                                    .run({xy, segments, {}, {}}, mesh_options)
+                                    .mesh;
+        ASSERT_EQ(first.merged_into[1], 0u);
+        gen::AdaptiveMesh2 state =
+            gen::make_adaptive_mesh_2d(std::move(first), xy, segments, {}, {}, {});
+        const gen::AnalyticField scaled{
+            "front", [&front, k](double x, double y, double z, double t) {
+                return front.value(std::ldexp(x, -k), std::ldexp(y, -k), z, t);
+            }};
+        state.values = gen::sample_field(scaled, state.mesh.xy, 2, 0);
+        gen::AdaptationOptions options;
+        options.indicator = gen::EdgeIndicator::Loehner;
+        options.threshold = 0.5;
+        options.max_vertices = 4000;
+        gen::InsertionCounters2 counters;
+        const std::uint32_t before = state.mesh.vertex_count();
+        for (int cycle = 0; cycle < 3; ++cycle) {
+            ASSERT_NO_THROW((void)gen::insertion_cycle_2d(state, options, {&scaled, 0}, counters))
+                << "2^" << k << " cycle " << cycle;
+            ASSERT_EQ(gen::check_adaptive_mesh_2d(state, xy), "") << "2^" << k;
+            // The repeat stays where it was, in no triangle.
+            EXPECT_EQ(std::count(state.mesh.triangles.begin(), state.mesh.triangles.end(), 1u), 0);
+            EXPECT_EQ(state.mesh.xy[2], xy[2]);
+            EXPECT_EQ(state.mesh.xy[3], xy[3]);
+        }
+        EXPECT_GT(state.mesh.vertex_count(), before);
+        EXPECT_GT(counters.boundary_points, 0u);
+        // The same mesh at every scale, scaled.
+        std::vector<double> unit = state.mesh.xy;
+        for (double& v : unit) v = std::ldexp(v, -k);
+        if (k == 0)
+            reference = unit;
+        else
+            EXPECT_EQ(unit, reference) << "2^" << k;
+    }
 }
