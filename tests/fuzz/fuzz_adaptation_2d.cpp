@@ -6,8 +6,10 @@
 // a budget of 4,000 vertices, optionally a transient run with derefinement, and for h-refinement
 // the refine-then-derefine identity. Every cycle and pass must pass its exact check
 // (check_adaptive_mesh_2d, check_h_refined_mesh_2d) and stay within the budget; the first mesh
-// may end in InputError or GeometryError (as in fuzz_mesh_generators_2d), nothing after it may
-// throw. Anything else, an assertion or a sanitizer report, is a failure (__builtin_trap()).
+// may end in InputError or GeometryError (as in fuzz_mesh_generators_2d), a cycle only in
+// InputError (documented: a remeshing generator refusing the size) or, for Steiner restart and
+// remeshing, the generator's documented GeometryError. Anything else, an assertion or a sanitizer
+// report, is a failure (__builtin_trap()).
 //
 // Input layout (fuzz_pslg.hpp with an 11-byte header): byte 0 the mode, bytes 1..9 the case's
 // parameters (adaptation_2d_case.hpp), byte 10 the segment count, two index bytes per segment,

@@ -188,3 +188,53 @@ TEST(Generators_AdaptationFuzzCases, InsertionKeepsAnInputsRepeatedVertexUnused)
             EXPECT_EQ(unit, reference) << "2^" << k;
     }
 }
+
+namespace {
+
+std::vector<std::uint8_t> saved_input(const std::string& name) {
+    std::ifstream in(std::string(EXACTMESH_SOURCE_DIR) + "/tests/data/fuzz/" + name,
+                     std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+// Finding (tests/data/fuzz/adaptation_2d_remesh_boundary_size_refused.bin), a limitation kept
+// and documented: a unit square around a quadrilateral with sides 1e-182 and 1.2e-61 long. The
+// first mesh (a uniform size) leaves those features alone; the indicator's size, graded from
+// 1e-61 there to 0.1, is refused by the advancing front's boundary discretization (an
+// InputError: its estimate is the length over the smallest size) and, for Delaunay refinement
+// (global remeshing, Steiner restart), needs a split of a piece beside features finer than
+// doubles resolve (its documented GeometryError). Each is one clear error, not a crash or a
+// wrong mesh; the other methods adapt the same mesh.
+TEST(Generators_AdaptationFuzzCases, GradedSizeAtTinyFeaturesEndsInOneClearError) {
+    const std::vector<std::uint8_t> raw =
+        saved_input("adaptation_2d_remesh_boundary_size_refused.bin");
+    ASSERT_GT(raw.size(), fz::kAdaptationHeader);
+    const auto run = [&](std::uint8_t method, std::uint8_t generator_byte) {
+        std::vector<std::uint8_t> bytes = raw;
+        bytes[1] = method;
+        bytes[9] = generator_byte;
+        const auto c = fz::decode_adaptation_case(bytes.data(), bytes.size());
+        EXPECT_TRUE(c.has_value());
+        return c ? fz::run_adaptation_case(*c) : fz::AdaptationOutcome{};
+    };
+    // Global remeshing by the advancing-front Delaunay generator (as saved).
+    fz::AdaptationOutcome out = run(raw[1], raw[9]);
+    EXPECT_EQ(out.problem, "");
+    EXPECT_TRUE(out.cycle_input_error) << out.expected_error;
+    EXPECT_NE(out.expected_error.find("boundary discretization"), std::string::npos);
+    // Steiner restart: Delaunay refinement's GeometryError, naming the piece.
+    out = run(2, raw[9]);
+    EXPECT_EQ(out.problem, "");
+    EXPECT_TRUE(out.cycle_geometry_error) << out.expected_error;
+    EXPECT_NE(out.expected_error.find("finer than double precision"), std::string::npos);
+    // Insertion, h-refinement and local remeshing adapt it within their exact checks.
+    for (const std::uint8_t method : {std::uint8_t{0}, std::uint8_t{1}, std::uint8_t{4}}) {
+        out = run(method, raw[9]);
+        EXPECT_EQ(out.problem, "") << int{method};
+        EXPECT_TRUE(out.meshed);
+        EXPECT_EQ(out.expected_error, "") << int{method};
+        EXPECT_GE(out.cycles_run, 1u);
+    }
+}
