@@ -167,13 +167,37 @@ double BackgroundSizeMesh2::interpolate(tri::TriIdx t, double x, double y) const
     const double cx = scaled(c[0] - a[0]), cy = scaled(c[1] - a[1]);
     const double px = scaled(x - a[0]), py = scaled(y - a[1]);
     const double area = bx * cy - by * cx;
-    // Barycentric coordinates of (x, y): the sub-areas opposite b and c over the whole.
-    const double lb = (cx * py - cy * px) / -area;
-    const double lc = (bx * py - by * px) / area;
     const double sa = sizes_[v[0]], sb = sizes_[v[1]], sc = sizes_[v[2]];
-    const double s = sa + lb * (sb - sa) + lc * (sc - sa);
-    // The point is inside (exactly); rounding may carry s a few ulps past the vertex values.
-    return std::clamp(s, std::min({sa, sb, sc}), std::max({sa, sb, sc}));
+    if (area > 0) {
+        // Barycentric coordinates of (x, y): the sub-areas opposite b and c over the whole.
+        const double lb = (cx * py - cy * px) / -area;
+        const double lc = (bx * py - by * px) / area;
+        const double s = sa + lb * (sb - sa) + lc * (sc - sa);
+        // The point is inside (exactly); rounding may carry s a few ulps past the vertex values.
+        if (!std::isnan(s)) return std::clamp(s, std::min({sa, sb, sc}), std::max({sa, sb, sc}));
+    }
+    // A sliver: counter-clockwise by exact orient2d, but flat in doubles (its area rounds to 0,
+    // or the coordinates' ratios overflow into inf * 0). Barycentric coordinates mean nothing
+    // there (0 / 0 gave NaN sizes: fuzz_adaptation_2d, tests/data/fuzz/
+    // adaptation_2d_local_remesh_flat_background_triangle.bin); the value on the nearest of its
+    // sides, linear along it, is within the corners' values and agrees with the neighbour there.
+    const double ex[3] = {0, bx, cx}, ey[3] = {0, by, cy}, es[3] = {sa, sb, sc};
+    double best2 = std::numeric_limits<double>::infinity(), value = sa;
+    for (int k = 0; k < 3; ++k) {
+        const int j = (k + 1) % 3;
+        const double dx = ex[j] - ex[k], dy = ey[j] - ey[k], length2 = dx * dx + dy * dy;
+        const double f =
+            length2 > 0 ? std::clamp(((px - ex[k]) * dx + (py - ey[k]) * dy) / length2, 0.0, 1.0)
+                        : 0.0;
+        const double qx = px - (ex[k] + f * dx), qy = py - (ey[k] + f * dy);
+        const double d2 = qx * qx + qy * qy;
+        if (d2 < best2) {
+            best2 = d2;
+            value = std::clamp(es[k] + f * (es[j] - es[k]), std::min(es[k], es[j]),
+                               std::max(es[k], es[j]));
+        }
+    }
+    return value;
 }
 
 double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
