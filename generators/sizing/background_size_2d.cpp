@@ -204,15 +204,21 @@ double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
     // q' = the nearest point of the grid's box to q. For every point p of the box,
     // |q - p|^2 >= |q - q'|^2 + |q' - p|^2 (projection onto a convex set), and a cell k rings
     // away from q's cell is at least (k - 1) cells from q'.
-    // Distances in units of 2^-shift, the power of two at the cell width: the squares neither
-    // overflow nor underflow, and a mesh scaled by 2^k finds the same edge, bit for bit.
+    // Distances in units of 2^-shift, the power of two at the cell width or, for a point far
+    // outside the grid, at its distance from it: the squares do not overflow (a point 2^520
+    // cells away squared to infinity, no edge was ever nearer than that, and the size came out
+    // 0: fuzz_adaptation_2d, tests/data/fuzz/adaptation_2d_remesh_zero_size_far_vertex.bin), an
+    // edge whose square underflows is a point at that scale, and a mesh scaled by 2^k finds the
+    // same edge, bit for bit.
     const tri::BucketGrid2& g = edge_buckets_;
     const double cell = g.cell_width();
     const std::uint32_t columns = g.columns(), rows = g.rows();
-    const int shift = std::isfinite(cell) && cell > 0 ? -std::ilogb(cell) : 0;
-    const auto scaled = [shift](double d) { return std::ldexp(d, shift); };
     const double qx = std::clamp(x, g.x0(), g.x0() + columns * cell);
     const double qy = std::clamp(y, g.y0(), g.y0() + rows * cell);
+    const double reach =
+        std::max({cell, std::abs(0.5 * x - 0.5 * qx), std::abs(0.5 * y - 0.5 * qy)});
+    const int shift = std::isfinite(reach) && reach > 0 ? -std::ilogb(reach) : 0;
+    const auto scaled = [shift](double d) { return std::ldexp(d, shift); };
     const double ox = scaled(x - qx), oy = scaled(y - qy);
     const double outside2 = ox * ox + oy * oy;
     const auto column = static_cast<std::int64_t>(g.column(qx));
@@ -228,8 +234,12 @@ double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
             const double* b = mesh_.point(vb);
             const double dx = b[0] - a[0], dy = b[1] - a[1];
             const double sx = scaled(dx), sy = scaled(dy), length2 = sx * sx + sy * sy;
+            // An edge whose scaled length squared underflows (far shorter than the distance to a
+            // far point) is a point at this scale: no 0 / 0.
             const double t =
-                std::clamp((scaled(x - a[0]) * sx + scaled(y - a[1]) * sy) / length2, 0.0, 1.0);
+                length2 > 0 ? std::clamp((scaled(x - a[0]) * sx + scaled(y - a[1]) * sy) / length2,
+                                         0.0, 1.0)
+                            : 0.0;
             const double ex = scaled(x - (a[0] + t * dx)), ey = scaled(y - (a[1] + t * dy));
             const double d2 = ex * ex + ey * ey;
             if (d2 < best2) {

@@ -157,9 +157,12 @@ inline generators::AnalyticField adaptation_case_field(const AdaptationCase& c) 
 
 /// The InputErrors a cycle of any method may end in (documented by the methods): a generator's
 /// boundary discretization refusing a size graded over dozens of orders of magnitude. Global
-/// remeshing may also end in any refusal of its generator except a NaN size.
+/// remeshing may also end in any refusal of its generator except one about a NaN or zero size.
 inline constexpr const char* kExpectedCycleInputErrors[] = {
     "boundary discretization: the size function asks for more than 2^30 pieces"};
+
+/// Texts of an InputError that blames the size (NaN, 0), never expected from a cycle.
+inline constexpr const char* kSizeFaults[] = {"NaN", "not > 0", "> 0 everywhere"};
 
 /// What a case ended in: `problem` empty unless it failed (the target traps then).
 struct AdaptationOutcome {
@@ -420,10 +423,11 @@ inline AdaptationOutcome run_adaptation_case(const AdaptationCase& c,
         // user for the library's doing (as "the size function is NaN" did, a background sliver).
         const std::string what = e.what();
         // Global remeshing passes on its generator's refusals (a quadtree's leaf budget on
-        // features far finer than the size, ...), as `exactmesh mesh` would give them; a NaN
-        // size is never the domain's.
-        bool documented =
-            c.method == AdaptationMethod::Remesh && what.find("NaN") == std::string::npos;
+        // features far finer than the size, ...), as `exactmesh mesh` would give them; a size
+        // that is NaN or not > 0 is never the domain's (the size is the adaptation's own).
+        bool documented = c.method == AdaptationMethod::Remesh;
+        for (const char* text : kSizeFaults)
+            documented = documented && what.find(text) == std::string::npos;
         for (const char* text : kExpectedCycleInputErrors)
             documented = documented || what.find(text) != std::string::npos;
         if (documented) {

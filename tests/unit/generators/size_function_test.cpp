@@ -666,3 +666,34 @@ TEST(Generators_SizeFunction, BackgroundSliverFlatInDoublesHasFiniteSizes) {
                   -1.5068030380839281, -0.91780050634732135),
               4.0);
 }
+
+// fuzz_adaptation_2d's finding (tests/data/fuzz/adaptation_2d_remesh_zero_size_far_vertex.bin):
+// the adaptation's background mesh keeps an input vertex of no triangle 2^520 away from a
+// triangle of sides ~1, so the bucket grid's cells are ~2^519 wide and every side's scaled
+// length squared underflowed to 0: the nearest-side search at a point outside took 0 / 0, found
+// no side, and returned the size 0 (the frontal generator refused it as the user's). Now the side
+// is a point at that scale and the value is its end's.
+TEST(Generators_SizeFunction, BackgroundFarOutsideATinyTriangleTakesItsValue) {
+    const double far = std::ldexp(1.0, 520);
+    std::vector<double> reference;
+    for (const int k : {0, -600, 400}) {
+        std::vector<double> xy{0, 0, 1, 0, 0, 1, far, far};
+        for (double& c : xy) c = std::ldexp(c, k);
+        const std::vector<double> sizes{std::ldexp(1.0, k), std::ldexp(2.0, k), std::ldexp(3.0, k),
+                                        std::ldexp(4.0, k)};
+        const gen::SizeFunction f = gen::SizeFunction::background_mesh(xy, sizes, {0, 1, 2});
+        std::vector<double> values;
+        for (const auto& [x, y] : {std::pair{2 * far, far}, std::pair{far, 0.0},
+                                   std::pair{-far, -far}, std::pair{0.5, 0.5}}) {
+            const double s = f(std::ldexp(x, k), std::ldexp(y, k));
+            ASSERT_TRUE(std::isfinite(s)) << "2^" << k;
+            EXPECT_GE(s, std::ldexp(1.0, k)) << "2^" << k << " at " << x << ", " << y;
+            EXPECT_LE(s, std::ldexp(3.0, k)) << "2^" << k << " at " << x << ", " << y;
+            values.push_back(std::ldexp(s, -k));
+        }
+        if (k == 0)
+            reference = values;
+        else
+            EXPECT_EQ(values, reference) << "2^" << k;
+    }
+}
