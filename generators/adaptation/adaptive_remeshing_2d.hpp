@@ -103,7 +103,9 @@ SizeFunction remesh_size_function_2d(const AdaptiveMesh2& state, const Adaptatio
 /// meshes `domain` with the indicator's size (scaled under options.max_vertices); the field on
 /// the new mesh comes from `field`. Only options.indicator, threshold and max_vertices are used.
 /// Returns false, the state unchanged, when no run fitted options.max_vertices.
-/// @throws InputError as the generator and sample_field; InternalError on a bug.
+/// @throws InputError as the generator (e.g. a boundary discretization refusing a size graded
+///         over dozens of orders of magnitude) and sample_field; GeometryError as the generator
+///         (a piece too short to split in double precision); InternalError on a bug.
 bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
                      const MeshGenerator2& generator, const AdaptationOptions& options,
                      const FieldSource& field, RemeshCounters2& counters);

@@ -155,9 +155,19 @@ bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
             }
             triangulation::Cdt2Result result = std::move(ct).take_result();
             cdt_counters = result.counters;
-            const bool clean =
-                result.counters.duplicates == 0 && result.counters.intersections == 0 &&
-                result.counters.vertices_on_segments == 0 && result.counters.dropped_segments == 0;
+            // A vertex of no triangle (an input's repeated point, merged as the first mesh
+            // merged it) is merged again; every vertex the old triangles use and every new
+            // boundary point must stay itself.
+            bool clean = result.counters.intersections == 0 &&
+                         result.counters.vertices_on_segments == 0 &&
+                         result.counters.dropped_segments == 0;
+            if (clean && result.counters.duplicates > 0) {
+                const std::vector<VertIdx>& merged = result.merged_into;
+                for (const VertIdx v : old_triangles)
+                    clean = clean && (v >= merged.size() || merged[v] == v);
+                for (std::size_t v = old_xy.size() / 2; clean && v < merged.size(); ++v)
+                    clean = merged[v] == v;
+            }
             if (!clean && use_curves && curve_points > 0) {
                 ++counters.curve_retries;
                 continue;

@@ -96,7 +96,10 @@ SizeFunction steiner_restart_size_2d(const AdaptiveMesh2& state, const Adaptatio
 /// indicator is threshold × its mean); options.max_vertices the budget; the smoothing and
 /// movement options are not used (the mesh stays constrained Delaunay). Returns false when the
 /// cycle neither removed nor added a vertex (then only the values changed: sampled at field.t).
-/// @throws InputError as sample_field; GeometryError from the refinement only on a bug.
+/// @throws InputError as sample_field; GeometryError as delaunay_refinement_2d when a piece
+///         becomes too short to split in double precision (the graded size reaching features
+///         finer than doubles resolve, which a coarser first mesh did not need to split), and on
+///         a bug (the message says so).
 bool steiner_restart_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
                               const FieldSource& field, SteinerRestartCounters2& counters);
 

@@ -167,28 +167,58 @@ double BackgroundSizeMesh2::interpolate(tri::TriIdx t, double x, double y) const
     const double cx = scaled(c[0] - a[0]), cy = scaled(c[1] - a[1]);
     const double px = scaled(x - a[0]), py = scaled(y - a[1]);
     const double area = bx * cy - by * cx;
-    // Barycentric coordinates of (x, y): the sub-areas opposite b and c over the whole.
-    const double lb = (cx * py - cy * px) / -area;
-    const double lc = (bx * py - by * px) / area;
     const double sa = sizes_[v[0]], sb = sizes_[v[1]], sc = sizes_[v[2]];
-    const double s = sa + lb * (sb - sa) + lc * (sc - sa);
-    // The point is inside (exactly); rounding may carry s a few ulps past the vertex values.
-    return std::clamp(s, std::min({sa, sb, sc}), std::max({sa, sb, sc}));
+    if (area > 0) {
+        // Barycentric coordinates of (x, y): the sub-areas opposite b and c over the whole.
+        const double lb = (cx * py - cy * px) / -area;
+        const double lc = (bx * py - by * px) / area;
+        const double s = sa + lb * (sb - sa) + lc * (sc - sa);
+        // The point is inside (exactly); rounding may carry s a few ulps past the vertex values.
+        if (!std::isnan(s)) return std::clamp(s, std::min({sa, sb, sc}), std::max({sa, sb, sc}));
+    }
+    // A sliver: counter-clockwise by exact orient2d, but flat in doubles (its area rounds to 0,
+    // or the coordinates' ratios overflow into inf * 0). Barycentric coordinates mean nothing
+    // there (0 / 0 gave NaN sizes: fuzz_adaptation_2d, tests/data/fuzz/
+    // adaptation_2d_local_remesh_flat_background_triangle.bin); the value on the nearest of its
+    // sides, linear along it, is within the corners' values and agrees with the neighbour there.
+    const double ex[3] = {0, bx, cx}, ey[3] = {0, by, cy}, es[3] = {sa, sb, sc};
+    double best2 = std::numeric_limits<double>::infinity(), value = sa;
+    for (int k = 0; k < 3; ++k) {
+        const int j = (k + 1) % 3;
+        const double dx = ex[j] - ex[k], dy = ey[j] - ey[k], length2 = dx * dx + dy * dy;
+        const double f =
+            length2 > 0 ? std::clamp(((px - ex[k]) * dx + (py - ey[k]) * dy) / length2, 0.0, 1.0)
+                        : 0.0;
+        const double qx = px - (ex[k] + f * dx), qy = py - (ey[k] + f * dy);
+        const double d2 = qx * qx + qy * qy;
+        if (d2 < best2) {
+            best2 = d2;
+            value = std::clamp(es[k] + f * (es[j] - es[k]), std::min(es[k], es[j]),
+                               std::max(es[k], es[j]));
+        }
+    }
+    return value;
 }
 
 double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
     // q' = the nearest point of the grid's box to q. For every point p of the box,
     // |q - p|^2 >= |q - q'|^2 + |q' - p|^2 (projection onto a convex set), and a cell k rings
     // away from q's cell is at least (k - 1) cells from q'.
-    // Distances in units of 2^-shift, the power of two at the cell width: the squares neither
-    // overflow nor underflow, and a mesh scaled by 2^k finds the same edge, bit for bit.
+    // Distances in units of 2^-shift, the power of two at the cell width or, for a point far
+    // outside the grid, at its distance from it: the squares do not overflow (a point 2^520
+    // cells away squared to infinity, no edge was ever nearer than that, and the size came out
+    // 0: fuzz_adaptation_2d, tests/data/fuzz/adaptation_2d_remesh_zero_size_far_vertex.bin), an
+    // edge whose square underflows is a point at that scale, and a mesh scaled by 2^k finds the
+    // same edge, bit for bit.
     const tri::BucketGrid2& g = edge_buckets_;
     const double cell = g.cell_width();
     const std::uint32_t columns = g.columns(), rows = g.rows();
-    const int shift = std::isfinite(cell) && cell > 0 ? -std::ilogb(cell) : 0;
-    const auto scaled = [shift](double d) { return std::ldexp(d, shift); };
     const double qx = std::clamp(x, g.x0(), g.x0() + columns * cell);
     const double qy = std::clamp(y, g.y0(), g.y0() + rows * cell);
+    const double reach =
+        std::max({cell, std::abs(0.5 * x - 0.5 * qx), std::abs(0.5 * y - 0.5 * qy)});
+    const int shift = std::isfinite(reach) && reach > 0 ? -std::ilogb(reach) : 0;
+    const auto scaled = [shift](double d) { return std::ldexp(d, shift); };
     const double ox = scaled(x - qx), oy = scaled(y - qy);
     const double outside2 = ox * ox + oy * oy;
     const auto column = static_cast<std::int64_t>(g.column(qx));
@@ -204,8 +234,12 @@ double BackgroundSizeMesh2::nearest_boundary_value(double x, double y) const {
             const double* b = mesh_.point(vb);
             const double dx = b[0] - a[0], dy = b[1] - a[1];
             const double sx = scaled(dx), sy = scaled(dy), length2 = sx * sx + sy * sy;
+            // An edge whose scaled length squared underflows (far shorter than the distance to a
+            // far point) is a point at this scale: no 0 / 0.
             const double t =
-                std::clamp((scaled(x - a[0]) * sx + scaled(y - a[1]) * sy) / length2, 0.0, 1.0);
+                length2 > 0 ? std::clamp((scaled(x - a[0]) * sx + scaled(y - a[1]) * sy) / length2,
+                                         0.0, 1.0)
+                            : 0.0;
             const double ex = scaled(x - (a[0] + t * dx)), ey = scaled(y - (a[1] + t * dy));
             const double d2 = ex * ex + ey * ey;
             if (d2 < best2) {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A size field given on a background triangulation (issue 6, "a background mesh with linear
 // interpolation"): each vertex carries a size; inside a triangle the size is the barycentric
-// (linear) interpolation of its three vertices' sizes; at a point outside every triangle it is
+// (linear) interpolation of its three vertices' sizes (in a sliver whose area rounds to 0 in
+// doubles, the value on its nearest side, linear along it); at a point outside every triangle it is
 // the value at the nearest point of the triangulation (on one of its boundary edges, linear
 // along that edge) [Peraire-Vahdati-Morgan-Zienkiewicz87 §3: the background grid].
 // Invariants: every triangle strictly counter-clockwise (exact orient2d), no directed edge in

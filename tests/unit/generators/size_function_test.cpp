@@ -611,3 +611,89 @@ TEST(Generators_SizeFunction, NewFileItemsErrorsNameTheLine) {
     }
     starts("# nothing\nbox 0 0 1 1\n", "f.txt: no size given");
 }
+
+// fuzz_adaptation_2d's finding (tests/data/fuzz/adaptation_2d_local_remesh_flat_background_triangle
+// .bin): a background triangle counter-clockwise by exact orient2d (area 5.1e-18 at sides ~2)
+// whose area rounds to 0 in doubles; the barycentric coordinates of a point on its side were
+// 0 / 0, and the size NaN (the advancing front then refused "the size function is NaN"). Now
+// every point of it gets a finite size within its corners' values, on a side the side's linear
+// value, the same at 2^-600 and 2^600.
+TEST(Generators_SizeFunction, BackgroundSliverFlatInDoublesHasFiniteSizes) {
+    const std::vector<double> corners{-2.0,
+                                      -1.0,
+                                      -0x1.037bb0142af6cp+0,
+                                      -0x1.abd3e55c0e524p-1,
+                                      -0x1.bdd80a157b609p-6,
+                                      -0x1.57a7cab81ca48p-1};
+    ASSERT_EQ(em::predicates::orient2d(&corners[0], &corners[2], &corners[4]),
+              em::predicates::Sign::Positive);
+    for (const std::vector<double>& sizes :
+         {std::vector<double>{4, 4, 4}, std::vector<double>{1, 2, 3}}) {
+        std::vector<double> reference;
+        for (const int k : {0, -600, 600}) {
+            std::vector<double> xy = corners;
+            for (double& c : xy) c = std::ldexp(c, k);
+            std::vector<double> scaled_sizes = sizes;
+            for (double& s : scaled_sizes) s = std::ldexp(s, k);
+            const gen::SizeFunction f =
+                gen::SizeFunction::background_mesh(xy, scaled_sizes, {0, 1, 2});
+            std::vector<double> values;
+            // The midpoint of each side (the one the fuzzer found: (-1.5068030380839281,
+            // -0.91780050634732135) on the first), the corners and points near the middle.
+            for (int i = 0; i < 3; ++i) {
+                const double* a = &xy[2 * i];
+                const double* b = &xy[2 * ((i + 1) % 3)];
+                for (const double t : {0.0, 0.5, 0.25}) {
+                    const double x = a[0] + t * (b[0] - a[0]), y = a[1] + t * (b[1] - a[1]);
+                    const double s = f(x, y);
+                    ASSERT_TRUE(std::isfinite(s)) << "2^" << k << " side " << i << " t " << t;
+                    EXPECT_GE(s, std::ldexp(*std::min_element(sizes.begin(), sizes.end()), k));
+                    EXPECT_LE(s, std::ldexp(*std::max_element(sizes.begin(), sizes.end()), k));
+                    values.push_back(std::ldexp(s, -k));
+                }
+            }
+            // The corners are their own sizes.
+            EXPECT_EQ(values[0], sizes[0]);
+            EXPECT_EQ(values[3], sizes[1]);
+            EXPECT_EQ(values[6], sizes[2]);
+            if (k == 0)
+                reference = values;
+            else
+                EXPECT_EQ(values, reference) << "2^" << k;
+        }
+    }
+    EXPECT_EQ(gen::SizeFunction::background_mesh(corners, {4, 4, 4}, {0, 1, 2})(
+                  -1.5068030380839281, -0.91780050634732135),
+              4.0);
+}
+
+// fuzz_adaptation_2d's finding (tests/data/fuzz/adaptation_2d_remesh_zero_size_far_vertex.bin):
+// the adaptation's background mesh keeps an input vertex of no triangle 2^520 away from a
+// triangle of sides ~1, so the bucket grid's cells are ~2^519 wide and every side's scaled
+// length squared underflowed to 0: the nearest-side search at a point outside took 0 / 0, found
+// no side, and returned the size 0 (the frontal generator refused it as the user's). Now the side
+// is a point at that scale and the value is its end's.
+TEST(Generators_SizeFunction, BackgroundFarOutsideATinyTriangleTakesItsValue) {
+    const double far = std::ldexp(1.0, 520);
+    std::vector<double> reference;
+    for (const int k : {0, -600, 400}) {
+        std::vector<double> xy{0, 0, 1, 0, 0, 1, far, far};
+        for (double& c : xy) c = std::ldexp(c, k);
+        const std::vector<double> sizes{std::ldexp(1.0, k), std::ldexp(2.0, k), std::ldexp(3.0, k),
+                                        std::ldexp(4.0, k)};
+        const gen::SizeFunction f = gen::SizeFunction::background_mesh(xy, sizes, {0, 1, 2});
+        std::vector<double> values;
+        for (const auto& [x, y] : {std::pair{2 * far, far}, std::pair{far, 0.0},
+                                   std::pair{-far, -far}, std::pair{0.5, 0.5}}) {
+            const double s = f(std::ldexp(x, k), std::ldexp(y, k));
+            ASSERT_TRUE(std::isfinite(s)) << "2^" << k;
+            EXPECT_GE(s, std::ldexp(1.0, k)) << "2^" << k << " at " << x << ", " << y;
+            EXPECT_LE(s, std::ldexp(3.0, k)) << "2^" << k << " at " << x << ", " << y;
+            values.push_back(std::ldexp(s, -k));
+        }
+        if (k == 0)
+            reference = values;
+        else
+            EXPECT_EQ(values, reference) << "2^" << k;
+    }
+}
