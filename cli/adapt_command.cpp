@@ -169,9 +169,9 @@ void check_arguments(const AdaptArguments& arguments) {
 
 /// The vertex budget of --max-vertices 0: each cycle can multiply the mesh several times, so a
 /// run of many cycles without a budget would end in an out-of-memory after minutes; it stops
-/// refining here instead (a few hundred MB to a GB of mesh).
-constexpr std::uint64_t kAutomaticVertexBudget2 = std::uint64_t{1} << 22;
-constexpr std::uint64_t kAutomaticVertexBudget3 = std::uint64_t{1} << 20;
+/// refining here instead (about half a minute of cycles at most, a few hundred MB).
+constexpr std::uint64_t kAutomaticVertexBudget2 = std::uint64_t{1} << 20;
+constexpr std::uint64_t kAutomaticVertexBudget3 = std::uint64_t{1} << 18;
 
 gen::AdaptationOptions adaptation_options(const AdaptArguments& arguments, unsigned dim) {
     gen::AdaptationOptions options;
@@ -530,7 +530,7 @@ void add_adapt_command(CLI::App& app) {
     command
         ->add_option("--max-vertices", arguments->max_vertices,
                      "Never refine past this many vertices: the largest indicators whose "
-                     "closure fits are taken (0: automatic, 2^22 in 2D, 2^20 in 3D)")
+                     "closure fits are taken (0: automatic, 2^20 in 2D, 2^18 in 3D)")
         ->check(whole_number_at_most(tri::kMaxPoints))
         ->capture_default_str();
     command

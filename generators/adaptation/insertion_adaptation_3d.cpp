@@ -104,8 +104,18 @@ bool insertion_cycle_3d(AdaptiveMesh3& state, const AdaptationOptions& options,
     if (inserted == 0) return false;
     triangulation::Delaunay3Result result = triangulation::delaunay_3d_algorithm("green-sibson")(
         xyz, triangulation::Delaunay3Options{});
-    if (result.counters.duplicates != 0 || result.coplanar)
-        throw GeometryError("insertion adaptation 3D: a midpoint repeated a vertex (a bug)");
+    if (result.coplanar)
+        throw GeometryError("insertion adaptation 3D: the points became coplanar (a bug)");
+    if (result.counters.duplicates != 0) {
+        // An input's repeated point stays unused, merged again; only a vertex the old mesh
+        // used, or a new midpoint, may never be merged.
+        std::vector<std::uint8_t> used(mesh.vertex_count(), 0);
+        for (const VertIdx v : mesh.tets) used[v] = 1;
+        for (std::size_t v = 0; v < result.merged_into.size(); ++v)
+            if (result.merged_into[v] != v && (v >= used.size() || used[v] != 0))
+                throw GeometryError(
+                    "insertion adaptation 3D: a midpoint repeated a vertex (a bug)");
+    }
     AdaptiveMesh3 next;
     next.mesh = std::move(result.mesh);
     next.fixed_vertices = state.fixed_vertices;

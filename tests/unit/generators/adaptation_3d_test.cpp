@@ -188,3 +188,20 @@ TEST(Generators_AdaptiveRun2, TransientStepsEveryMethodStayChecked) {
     }
     EXPECT_THROW((void)gen::adapt_method_from_name("magic"), exactmesh::InputError);
 }
+
+// A mesh whose .node repeats a point no tetrahedron uses (a TetGen file may): the Delaunay
+// rebuild merges it again, which is not a midpoint repeating a vertex (that was a GeometryError,
+// "a bug", exit 3 from the command).
+TEST(Generators_InsertionAdaptation3, AnUnusedRepeatedInputPointStaysUnused) {
+    tri::Tetrahedralization3 mesh = cube(3);
+    mesh.xyz.insert(mesh.xyz.end(), {mesh.xyz[0], mesh.xyz[1], mesh.xyz[2]});
+    const std::vector<double> fixed = mesh.xyz;
+    gen::AdaptiveMesh3 state = gen::make_adaptive_mesh_3d(std::move(mesh));
+    const gen::AnalyticField field = plane_front();
+    state.values = gen::sample_field(field, state.mesh.xyz, 3, 0);
+    gen::InsertionCounters3 counters;
+    for (int cycle = 0; cycle < 2; ++cycle) {
+        ASSERT_TRUE(gen::insertion_cycle_3d(state, {}, {&field, 0}, counters));
+        EXPECT_EQ(gen::check_adaptive_mesh_3d(state, fixed), "");
+    }
+}
