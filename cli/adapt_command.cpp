@@ -251,6 +251,10 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
             "--derefine goes with --method insertion or h-refinement (steiner "
             "and the remeshing methods coarsen by their size field already)");
     const gen::RemeshDomain2 remesh_domain{pslg, mesh_options.cdt, segment_curves};
+    if (initial.mesh.mesh.vertex_count() >= options.max_vertices)
+        print_warnings({"the initial mesh has " + std::to_string(initial.mesh.mesh.vertex_count()) +
+                        " vertices, at or above --max-vertices " +
+                        std::to_string(options.max_vertices) + ": no cycle refines it"});
     gen::AdaptiveRun2 run(remesh_domain, curves, std::move(initial.mesh), generator, field,
                           arguments.time, run_options);
     predicates::reset_thread_stats();

@@ -94,6 +94,12 @@ bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
                              std::to_string(curve) + " of " + std::to_string(state.curves.size()));
         }
     }
+    // At or over the budget already (a domain whose own features need more vertices): no cycle,
+    // as for the other methods; a generator rerun could only overshoot again, up to 8 times.
+    if (options.max_vertices > 0 && state.mesh.vertex_count() >= options.max_vertices) {
+        ++counters.budget_refusals;
+        return false;
+    }
     const SizeFunction size = remesh_size_function_2d(state, options);
     const MeshDomain2 mesh_domain(domain.pslg, domain.cdt);
     MeshOptions2 mesh_options;

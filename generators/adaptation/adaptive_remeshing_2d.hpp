@@ -66,7 +66,7 @@ struct RemeshCounters2 {
     std::uint64_t generator_runs = 0;
     std::uint64_t budget_scalings = 0;  ///< size scaled up before a run (estimate over budget)
     std::uint64_t budget_reruns = 0;    ///< runs redone: the mesh overshot the budget
-    std::uint64_t budget_refusals = 0;  ///< cycles left undone: no run fitted the budget
+    std::uint64_t budget_refusals = 0;  ///< cycles left undone: at the budget, or no run fitted it
     std::uint64_t outside_values = 0;   ///< transferred values taken from the nearest old vertex
 };
 

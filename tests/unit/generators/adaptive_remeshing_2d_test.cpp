@@ -142,10 +142,14 @@ TEST(Generators_AdaptiveRemeshing2, TightBudgetScalesTheSizeAndATransferredField
     gen::AdaptationOptions impossible;
     impossible.max_vertices = 3;
     const std::vector<double> before = s.state.mesh.xy;
+    const std::uint64_t runs = counters.generator_runs;
     EXPECT_FALSE(gen::remesh_cycle_2d(s.state, domain, "delaunay-refinement", impossible,
                                       {&field, 0}, counters));
     EXPECT_EQ(s.state.mesh.xy, before);
     EXPECT_EQ(counters.budget_refusals, 1u);
+    // A mesh at or over the budget is refused before any generator run (a domain whose own
+    // features need more vertices made up to 8 runs of seconds each).
+    EXPECT_EQ(counters.generator_runs, runs);
     EXPECT_THROW((void)gen::remesh_cycle_2d(s.state, domain, "marching-squares", options,
                                             {&field, 0}, counters),
                  em::InputError);
