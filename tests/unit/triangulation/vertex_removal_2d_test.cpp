@@ -192,7 +192,8 @@ TEST(VertexRemoval2d, RandomPslgsStayConstrainedDelaunay) {
         for (std::size_t i = 0; i < seen.size(); ++i) total[i] += seen[i];
         if (HasFailure()) return;
     }
-    EXPECT_GT(count(total, RemovalStatus::Removed), 100u);
+    // Scaled with the runs: the sanitizer pass (EXACTMESH_TEST_SCALE=0.02) makes one.
+    EXPECT_GT(count(total, RemovalStatus::Removed), 50u * runs);
     EXPECT_GT(count(total, RemovalStatus::Corner), 0u);
     EXPECT_GT(count(total, RemovalStatus::Unused), 0u);
 }
@@ -230,7 +231,8 @@ TEST(VertexRemoval2d, GridsWithRandomSegmentsStayConstrainedDelaunay) {
         for (std::size_t i = 0; i < seen.size(); ++i) total[i] += seen[i];
         if (HasFailure()) return;
     }
-    EXPECT_GT(count(total, RemovalStatus::Removed), 100u);
+    // Scaled with the runs: the sanitizer pass (EXACTMESH_TEST_SCALE=0.02) makes one.
+    EXPECT_GT(count(total, RemovalStatus::Removed), 50u * runs);
     EXPECT_GT(count(total, RemovalStatus::ConstraintJunction) +
                   count(total, RemovalStatus::ConstraintBend),
               0u);
