@@ -195,15 +195,13 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
     const OutputFormat format = output_format(output);
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
     if (!arguments.input.empty())
-        refuse_to_overwrite_inputs({arguments.input, io::poly_node_path(arguments.input)}, files);
+        refuse_to_overwrite_inputs(
+            {arguments.input, io::poly_node_path(arguments.input), arguments.size}, files);
+    else if (!arguments.size.empty())
+        refuse_to_overwrite_inputs({arguments.size}, files);
     const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(arguments.generator);
-    gen::SizeFunction size;
-    if (!arguments.size.empty()) {
-        double uniform = 0;
-        size = gen::parse_uniform_size(arguments.size, uniform)
-                   ? gen::SizeFunction::uniform(uniform)
-                   : size_from_expression(arguments.size);
-    }
+    gen::SizeFunction size =
+        arguments.size.empty() ? gen::SizeFunction() : size_from_option(arguments.size);
     io::PolyFile poly;
     std::vector<gen::Curve2> curves;
     std::vector<gen::SegmentCurve> segment_curves;
@@ -522,9 +520,10 @@ void add_adapt_command(CLI::App& app) {
         ->capture_default_str();
     command
         ->add_option("--size", arguments->size,
-                     "2D: the initial mesh's size, a number or an expression in x and y "
+                     "2D: the initial mesh's size, as `mesh --size`: a number, a size file or an "
+                     "expression in x and y "
                      "(default: the domain's own)")
-        ->type_name("NUM|EXPR");
+        ->type_name("NUM|FILE|EXPR");
     command
         ->add_option("--cycles", arguments->cycles,
                      "Refinement cycles (per step with --steps); stops early when nothing is "

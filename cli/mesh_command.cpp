@@ -58,20 +58,6 @@ struct MeshArguments {
 /// costs a pass over the mesh and a Delaunay re-swap.
 constexpr std::uint32_t kMaxSmoothSweeps = 1000;
 
-/// The longest size file read (a background mesh of about a million lines).
-constexpr std::size_t kMaxSizeFileBytes = std::size_t{64} << 20;
-
-/// --size: a number (uniform), else a size file (generators/sizing/size_function.hpp) when a file
-/// of that name exists (one that exists but cannot be read is reported as such, not as a bad
-/// expression), else an expression in x and y (cli/size_expression.hpp).
-gen::SizeFunction read_size(const std::string& text) {
-    double uniform = 0;
-    if (gen::parse_uniform_size(text, uniform)) return gen::SizeFunction::uniform(uniform);
-    std::error_code error;
-    if (!fs::exists(text, error)) return size_from_expression(text);
-    return gen::parse_size_sources(io::read_text_file(text, kMaxSizeFileBytes), text);
-}
-
 void print_stats(const gen::MeshRun2& run, const predicates::PredicateStats& stats,
                  double seconds) {
     const tri::Cdt2Counters& cdt = run.mesh.counters;
@@ -172,7 +158,7 @@ void run_mesh(const MeshArguments& arguments) {
     }
 
     gen::SizeFunction size =
-        arguments.size.empty() ? gen::SizeFunction() : read_size(arguments.size);
+        arguments.size.empty() ? gen::SizeFunction() : size_from_option(arguments.size);
     io::PolyFile poly;
     std::string title;
     if (!arguments.domain.empty()) {

@@ -6,9 +6,11 @@
 
 #include <muParser.h>
 
+#include <filesystem>
 #include <memory>
 
 #include "base/errors.hpp"
+#include "io/text_file.hpp"
 
 namespace exactmesh::cli {
 
@@ -40,6 +42,22 @@ generators::SizeFunction size_from_expression(const std::string& expression) {
             return evaluator->parser.Eval();
         },
         "expression " + expression);
+}
+
+namespace {
+
+/// The longest size file read (a background mesh of about a million lines).
+constexpr std::size_t kMaxSizeFileBytes = std::size_t{64} << 20;
+
+}  // namespace
+
+generators::SizeFunction size_from_option(const std::string& text) {
+    double uniform = 0;
+    if (generators::parse_uniform_size(text, uniform))
+        return generators::SizeFunction::uniform(uniform);
+    std::error_code error;
+    if (!std::filesystem::exists(text, error)) return size_from_expression(text);
+    return generators::parse_size_sources(io::read_text_file(text, kMaxSizeFileBytes), text);
 }
 
 }  // namespace exactmesh::cli

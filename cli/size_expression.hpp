@@ -16,4 +16,10 @@ namespace exactmesh::cli {
 ///         a variable other than x and y, or evaluates to NaN at the origin of the parse check.
 generators::SizeFunction size_from_expression(const std::string& expression);
 
+/// `--size` of `mesh` and `adapt`: a number (uniform), else a size file
+/// (generators/sizing/size_function.hpp) when a file of that name exists (one that exists but
+/// cannot be read is reported as such, not as a bad expression), else an expression in x and y.
+/// @throws InputError (io::FormatError for a bad file) naming the text.
+generators::SizeFunction size_from_option(const std::string& text);
+
 }  // namespace exactmesh::cli
