@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
-// `--size EXPR`: a size function s(x, y) given as an expression in x and y ("0.01 + 0.1 *
-// sqrt(x^2 + y^2)"), parsed and evaluated by muParser (Debian's libmuparser-dev) into an analytic
-// generators::SizeFunction.
+// The command line's expressions, parsed and evaluated by muParser (Debian's libmuparser-dev):
+//  - `--size EXPR` of `mesh` and `adapt`: a size function s(x, y) ("0.01 + 0.1 * sqrt(x^2 +
+//    y^2)") as an analytic generators::SizeFunction, and `--size` as a whole (a number, a size
+//    file or an expression);
+//  - `--field EXPR` of `adapt`: a scalar field u(x, y, z, t), the solver's stand-in of issue 13
+//    ("tanh(20 * (x + y - 1 - 0.5 * t))"), as a generators::AnalyticField.
 #pragma once
 
 #include <string>
 
+#include "generators/adaptation/vertex_field.hpp"
 #include "generators/sizing/size_function.hpp"
 
 namespace exactmesh::cli {
@@ -21,5 +25,11 @@ generators::SizeFunction size_from_expression(const std::string& expression);
 /// cannot be read is reported as such, not as a bad expression), else an expression in x and y.
 /// @throws InputError (io::FormatError for a bad file) naming the text.
 generators::SizeFunction size_from_option(const std::string& text);
+
+/// muParser's syntax (+ - * / ^, sqrt, exp, log, sin, tanh, min, max, abs, ..., _pi, _e) with the
+/// variables x, y, z and t.
+/// @throws InputError naming the expression and muParser's message when it does not parse or
+///         uses another variable.
+generators::AnalyticField field_from_expression(const std::string& expression);
 
 }  // namespace exactmesh::cli
