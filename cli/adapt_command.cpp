@@ -101,7 +101,7 @@ void print_progress(const std::string& label, std::uint64_t vertices, const char
         std::cout << " max_error " << format_approximate(error.maximum) << " l2_error "
                   << format_approximate(error.l2);
     }
-    std::cout << '\n';
+    std::cout << '\n' << std::flush;  // a long run shows its progress in a file too
 }
 
 /// The cycles and steps of a run, the same for 2D and 3D: `refine` runs one cycle (false: done),

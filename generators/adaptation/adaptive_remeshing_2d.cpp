@@ -64,7 +64,7 @@ std::vector<double> vertex_sizes(const AdaptiveMesh2& state, const AdaptationOpt
     const std::vector<double> indicator =
         mesh_edge_indicator(options.indicator, mesh.xy, 2, mesh.triangles, edges, state.values);
     return indicator_vertex_sizes(mesh.xy, 2, edges, indicator, options.indicator,
-                                  options.threshold);
+                                  options.threshold, 4.0, options.reference_mean);
 }
 
 std::uint64_t edge_key(VertIdx a, VertIdx b) {

@@ -101,7 +101,8 @@ SizeFunction remesh_size_function_2d(const AdaptiveMesh2& state, const Adaptatio
 
 /// One global remeshing cycle on `state` (state.values: the field at its vertices): `generator`
 /// meshes `domain` with the indicator's size (scaled under options.max_vertices); the field on
-/// the new mesh comes from `field`. Only options.indicator, threshold and max_vertices are used.
+/// the new mesh comes from `field`. Only options.indicator, threshold, reference_mean and
+/// max_vertices are used.
 /// Returns false, the state unchanged, when no run fitted options.max_vertices.
 /// @throws InputError as the generator (e.g. a boundary discretization refusing a size graded
 ///         over dozens of orders of magnitude) and sample_field; GeometryError as the generator
@@ -126,7 +127,7 @@ std::vector<std::uint8_t> local_remesh_flags_2d(const AdaptiveMesh2& state,
 /// false, the state unchanged, when no triangle was removed or no void fitted the budget.
 /// The vertices that stay keep their order (the input vertices their numbers), the fronts' new
 /// points follow them; the kept triangles come first, in their order and rotation.
-/// Only options.indicator, threshold and max_vertices are used.
+/// Only options.indicator, threshold, reference_mean and max_vertices are used.
 /// @throws InputError on a factor that is not finite and > 1, and as sample_field;
 ///         InternalError when the filled voids do not conform (a bug).
 bool local_remesh_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,

@@ -20,11 +20,13 @@ double indicator_order(EdgeIndicator indicator) {
 std::vector<double> indicator_vertex_sizes(std::span<const double> xyz, unsigned dim,
                                            std::span<const VertIdx> edges,
                                            std::span<const double> indicator, EdgeIndicator kind,
-                                           double threshold, double max_factor) {
+                                           double threshold, double max_factor,
+                                           double reference_mean) {
     const std::size_t vertices = xyz.size() / dim;
     constexpr double kInfinity = std::numeric_limits<double>::infinity();
     std::vector<double> wanted(vertices, kInfinity), shortest(vertices, kInfinity);
-    const double mean = indicator.empty()
+    const double mean = reference_mean > 0 ? reference_mean
+                        : indicator.empty()
                             ? 0.0
                             : std::accumulate(indicator.begin(), indicator.end(), 0.0) /
                                   static_cast<double>(indicator.size());

@@ -3,7 +3,7 @@
 // Steiner restart and adaptive remeshing; the seed material's "error equidistribution"). An
 // edge of length h whose indicator is I_e asks for the length
 //     h_e = h (target / I_e)^(1 / p),   target = threshold × mean(I),
-// where p is the order in h of the indicator on a smooth field: 1 for first-difference
+// (or target = threshold × a fixed reference mean) where p is the order in h of the indicator on a smooth field: 1 for first-difference
 // (|Δu| ~ |u'| h), 2 for second-difference (|u''| h²), length-weighted (|u'| h²) and loehner
 // (treated as second order, as Löhner's refinement levels are); so every edge at the target
 // keeps its length, an edge above it shrinks, one below grows. A vertex takes the smallest
@@ -25,11 +25,14 @@ namespace exactmesh::generators {
 double indicator_order(EdgeIndicator indicator);
 
 /// #V sizes at the vertices (dim 2 or 3; edges from mesh_edges_2d/3d, indicator per edge);
-/// vertices of no edge get +infinity.
+/// vertices of no edge get +infinity. reference_mean > 0 replaces the mean of `indicator` in the
+/// target (a transient run's fixed target, AdaptationOptions::reference_mean): the sizes then
+/// no longer depend on how fine the rest of the mesh is, which a steady vertex count needs.
 std::vector<double> indicator_vertex_sizes(std::span<const double> coordinates, unsigned dim,
                                            std::span<const triangulation::VertIdx> edges,
                                            std::span<const double> indicator, EdgeIndicator kind,
-                                           double threshold, double max_factor = 4.0);
+                                           double threshold, double max_factor = 4.0,
+                                           double reference_mean = 0);
 
 /// The 2D size function: the sizes linear over the mesh's triangles
 /// (SizeFunction::background_mesh); the vertices of no triangle take the largest finite size.

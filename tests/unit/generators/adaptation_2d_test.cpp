@@ -18,6 +18,7 @@
 #include "generators/adaptation/adaptive_mesh_2d.hpp"
 #include "generators/adaptation/edge_indicators.hpp"
 #include "generators/adaptation/field_transfer.hpp"
+#include "generators/adaptation/indicator_size_field.hpp"
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
 #include "generators/adaptation/interpolation_error.hpp"
 #include "generators/adaptation/mesh_edges.hpp"
@@ -139,6 +140,31 @@ TEST(Generators_EdgeFlags, ThresholdBudgetAndClosure) {
     const auto count = std::count(budgeted.begin(), budgeted.end(), 1);
     EXPECT_LE(count, 40);
     EXPECT_GT(count, 0);
+}
+
+TEST(Generators_IndicatorSizeField, AFixedReferenceMeanMakesTheSizesAbsolute) {
+    // Edges (0,1), (0,2) of length 1 and (3,4) elsewhere; a second-order indicator, threshold 1:
+    // an edge of length h asks for h sqrt(target / I).
+    const std::vector<double> xy{0, 0, 1, 0, 0, 1, 5, 5, 5, 6};
+    const std::vector<tri::VertIdx> edges{0, 1, 0, 2, 3, 4};
+    const auto sizes = [&](std::vector<double> indicator, double reference) {
+        return gen::indicator_vertex_sizes(xy, 2, edges, indicator,
+                                           gen::EdgeIndicator::SecondDifference, 1.0, 4.0,
+                                           reference);
+    };
+    // The current mean (2): the first edge asks for sqrt(1/2), the others for sqrt(2).
+    const std::vector<double> relative = sizes({4, 1, 1}, 0);
+    EXPECT_DOUBLE_EQ(relative[0], std::sqrt(0.5));
+    EXPECT_DOUBLE_EQ(relative[2], std::sqrt(2.0));
+    // A fixed mean of 4: lengths 1 and 2, whatever the far edge's indicator; the current mean
+    // would move them (the transient's wake, indicator 0, would make the front finer and finer).
+    for (const double far : {1.0, 0.0, 100.0}) {
+        const std::vector<double> fixed = sizes({4, 1, far}, 4.0);
+        EXPECT_DOUBLE_EQ(fixed[0], 1.0);
+        EXPECT_DOUBLE_EQ(fixed[1], 1.0);
+        EXPECT_DOUBLE_EQ(fixed[2], 2.0);
+    }
+    EXPECT_NE(sizes({4, 1, 0}, 0)[0], relative[0]);
 }
 
 TEST(Generators_FieldTransfer, LinearFieldsVerticesEdgesAndOutside) {
