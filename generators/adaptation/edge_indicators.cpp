@@ -209,12 +209,13 @@ namespace {
 std::vector<std::uint32_t> element_edges(std::span<const VertIdx> elements, unsigned dim,
                                          std::span<const VertIdx> edges) {
     const unsigned corners = dim + 1;
+    const MeshEdgeIndex index(edges);
     std::vector<std::uint32_t> result;
     result.reserve(elements.size() / corners * (dim == 2 ? 3 : 6));
     for (std::size_t t = 0; t + corners <= elements.size(); t += corners)
         for (unsigned i = 0; i < corners; ++i)
             for (unsigned j = i + 1; j < corners; ++j)
-                result.push_back(find_mesh_edge(edges, elements[t + i], elements[t + j]));
+                result.push_back(index.find(elements[t + i], elements[t + j]));
     return result;
 }
 

@@ -49,12 +49,13 @@ std::uint64_t h_derefinement_pass_2d(HAdaptiveMesh2& state, EdgeIndicator indica
     const std::vector<double> ind =
         mesh_edge_indicator(indicator, mesh.xy, 2, mesh.triangles, edges, state.values);
     const double mean = reference_mean > 0 ? reference_mean : mean_indicator(ind);
+    const MeshEdgeIndex index(edges);
     std::vector<triangulation::TriIdx> flagged;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
         bool low = true;
         for (unsigned k = 0; k < 3 && low; ++k)
-            low = ind[find_mesh_edge(edges, mesh.triangles[3 * t + k],
-                                     mesh.triangles[3 * t + (k + 1) % 3])] < threshold * mean;
+            low = ind[index.find(mesh.triangles[3 * t + k], mesh.triangles[3 * t + (k + 1) % 3])] <
+                  threshold * mean;
         if (low) flagged.push_back(static_cast<triangulation::TriIdx>(t));
     }
     ++counters.derefinement_passes;

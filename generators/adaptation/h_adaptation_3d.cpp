@@ -59,13 +59,14 @@ std::uint64_t h_derefinement_pass_3d(HAdaptiveMesh3& state, EdgeIndicator indica
     const std::vector<double> ind =
         mesh_edge_indicator(indicator, mesh.xyz, 3, mesh.tets, edges, state.values);
     const double mean = reference_mean > 0 ? reference_mean : mean_indicator(ind);
+    const MeshEdgeIndex index(edges);
     std::vector<std::uint8_t> flags(mesh.tet_count(), 0);
     for (std::size_t t = 0; t < mesh.tet_count(); ++t) {
         bool low = true;
         for (unsigned i = 0; i < 4 && low; ++i)
             for (unsigned j = i + 1; j < 4 && low; ++j)
-                low = ind[find_mesh_edge(edges, mesh.tets[4 * t + i], mesh.tets[4 * t + j])] <
-                      threshold * mean;
+                low =
+                    ind[index.find(mesh.tets[4 * t + i], mesh.tets[4 * t + j])] < threshold * mean;
         flags[t] = low ? 1 : 0;
     }
     ++counters.derefinement_passes;

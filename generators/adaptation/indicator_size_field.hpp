@@ -3,7 +3,8 @@
 // Steiner restart and adaptive remeshing; the seed material's "error equidistribution"). An
 // edge of length h whose indicator is I_e asks for the length
 //     h_e = h (target / I_e)^(1 / p),   target = threshold × mean(I),
-// (or target = threshold × a fixed reference mean) where p is the order in h of the indicator on a smooth field: 1 for first-difference
+// (or target = threshold × a fixed reference mean) where p is the order in h of the indicator on a
+// smooth field: 1 for first-difference
 // (|Δu| ~ |u'| h), 2 for second-difference (|u''| h²), length-weighted (|u'| h²) and loehner
 // (treated as second order, as Löhner's refinement levels are); so every edge at the target
 // keeps its length, an edge above it shrinks, one below grows. A vertex takes the smallest

@@ -10,6 +10,7 @@
 #include "generators/adaptation/weighted_movement.hpp"
 #include "generators/mesh_2d/laplacian_smoothing_2d.hpp"
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
+#include "triangulation/mesh/spatial_sort.hpp"
 
 namespace exactmesh::generators {
 
@@ -74,6 +75,20 @@ bool insertion_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& options,
         const double y = 0.5 * mesh.xy[2 * a + 1] + 0.5 * mesh.xy[2 * b + 1];
         if (same(x, y, a) || same(x, y, b)) continue;
         interior.push_back({x, y, a, b});
+    }
+    // Inserted along a Hilbert curve, so that each location walks from the last one's
+    // neighbourhood (in edge order the walks crossed the mesh: a sixth of the cycle).
+    {
+        std::vector<double> points;
+        points.reserve(2 * interior.size());
+        for (const NewPoint& p : interior) points.insert(points.end(), {p.x, p.y});
+        std::vector<std::uint32_t> order(interior.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+        triangulation::hilbert_sort_2d(points, order);
+        std::vector<NewPoint> sorted;
+        sorted.reserve(interior.size());
+        for (const std::uint32_t i : order) sorted.push_back(interior[i]);
+        interior = std::move(sorted);
     }
 
     const std::vector<double> old_xy = mesh.xy;

@@ -52,6 +52,7 @@ InterpolationError interpolation_error(std::span<const double> xyz, unsigned dim
     }
     result.samples = edge_error.size();
     double weighted = 0, total = 0;
+    const MeshEdgeIndex index(edges);
     for (std::size_t el = 0; el + corners <= elements.size(); el += corners) {
         const VertIdx* v = &elements[el];
         if (v[0] == kNone) continue;
@@ -69,7 +70,7 @@ InterpolationError interpolation_error(std::span<const double> xyz, unsigned dim
         unsigned terms = 1;
         for (unsigned i = 0; i < corners; ++i)
             for (unsigned j = i + 1; j < corners; ++j) {
-                squares += edge_error[find_mesh_edge(edges, v[i], v[j])];
+                squares += edge_error[index.find(v[i], v[j])];
                 ++terms;
             }
         const double measure = element_measure(unit, dim, v);

@@ -70,6 +70,24 @@ std::uint32_t find_mesh_edge(std::span<const VertIdx> edges, VertIdx u, VertIdx 
     return kNone;
 }
 
+MeshEdgeIndex::MeshEdgeIndex(std::span<const VertIdx> edges) : edges_(edges) {
+    const std::size_t count = edges.size() / 2;
+    const VertIdx last = count == 0 ? 0 : edges[2 * (count - 1)];
+    first_.assign(std::size_t{last} + 2, 0);
+    // Edges are sorted by their first vertex: first_[u] is the number of edges whose first
+    // vertex is below u.
+    for (std::size_t e = 0; e < count; ++e) ++first_[std::size_t{edges[2 * e]} + 1];
+    for (std::size_t u = 0; u + 1 < first_.size(); ++u) first_[u + 1] += first_[u];
+}
+
+std::uint32_t MeshEdgeIndex::find(VertIdx u, VertIdx v) const {
+    if (u > v) std::swap(u, v);
+    if (std::size_t{u} + 1 >= first_.size()) return kNone;
+    for (std::uint32_t e = first_[u]; e < first_[std::size_t{u} + 1]; ++e)
+        if (edges_[2 * std::size_t{e} + 1] == v) return e;
+    return kNone;
+}
+
 int unit_scale_exponent(std::span<const double> coordinates, unsigned dim,
                         std::span<const VertIdx> elements) {
     double lo[3], hi[3];

@@ -33,8 +33,7 @@ std::vector<double> vertex_sizes(const AdaptiveMesh2& state, const AdaptationOpt
     const std::vector<double> indicator =
         mesh_edge_indicator(options.indicator, mesh.xy, 2, mesh.triangles, edges, state.values);
     return indicator_vertex_sizes(mesh.xy, 2, edges, indicator, options.indicator,
-                                  options.threshold, kSteinerMaxFactor,
-                                  options.reference_mean);
+                                  options.threshold, kSteinerMaxFactor, options.reference_mean);
 }
 
 // About how many vertices a refinement of the triangles to `sizes` (linear over them) makes:

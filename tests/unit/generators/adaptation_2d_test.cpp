@@ -115,7 +115,7 @@ TEST(Generators_EdgeFlags, ThresholdBudgetAndClosure) {
     for (double& x : indicator) x = std::uniform_real_distribution<double>(0, 1)(random);
     std::uint64_t flagged = 0, closure = 0;
     const auto flags = gen::refinement_flags(mesh.triangles, 2, edges, indicator, 1.5, 0, false,
-                                                &flagged, &closure);
+                                             &flagged, &closure);
     // Closed (one pass, on the indicator's flags): every triangle with an edge the indicator
     // flagged has all three flagged; an edge is flagged only by the indicator or by a triangle
     // with such an edge.
@@ -136,7 +136,7 @@ TEST(Generators_EdgeFlags, ThresholdBudgetAndClosure) {
               static_cast<std::uint64_t>(std::count(flags.begin(), flags.end(), 1)));
     // A budget of 40 new vertices: the closure fits it.
     const auto budgeted = gen::refinement_flags(mesh.triangles, 2, edges, indicator, 1.5, 40, true,
-                                                   &flagged, &closure);
+                                                &flagged, &closure);
     const auto count = std::count(budgeted.begin(), budgeted.end(), 1);
     EXPECT_LE(count, 40);
     EXPECT_GT(count, 0);
@@ -148,9 +148,8 @@ TEST(Generators_IndicatorSizeField, AFixedReferenceMeanMakesTheSizesAbsolute) {
     const std::vector<double> xy{0, 0, 1, 0, 0, 1, 5, 5, 5, 6};
     const std::vector<tri::VertIdx> edges{0, 1, 0, 2, 3, 4};
     const auto sizes = [&](std::vector<double> indicator, double reference) {
-        return gen::indicator_vertex_sizes(xy, 2, edges, indicator,
-                                           gen::EdgeIndicator::SecondDifference, 1.0, 4.0,
-                                           reference);
+        return gen::indicator_vertex_sizes(
+            xy, 2, edges, indicator, gen::EdgeIndicator::SecondDifference, 1.0, 4.0, reference);
     };
     // The current mean (2): the first edge asks for sqrt(1/2), the others for sqrt(2).
     const std::vector<double> relative = sizes({4, 1, 1}, 0);
@@ -165,6 +164,23 @@ TEST(Generators_IndicatorSizeField, AFixedReferenceMeanMakesTheSizesAbsolute) {
         EXPECT_DOUBLE_EQ(fixed[2], 2.0);
     }
     EXPECT_NE(sizes({4, 1, 0}, 0)[0], relative[0]);
+}
+
+TEST(Generators_MeshEdgeIndex, FindsWhatTheBinarySearchFinds) {
+    const DomainMesh m = domain_mesh(gen::SampleDomain::Key);
+    const tri::Triangulation2& mesh = m.mesh.mesh;
+    const std::vector<tri::VertIdx> edges = gen::mesh_edges_2d(mesh.triangles);
+    const gen::MeshEdgeIndex index(edges);
+    for (std::uint32_t e = 0; e < edges.size() / 2; ++e) {
+        ASSERT_EQ(index.find(edges[2 * e], edges[2 * e + 1]), e);
+        ASSERT_EQ(index.find(edges[2 * e + 1], edges[2 * e]), e);
+    }
+    // Every vertex pair of a few vertices, edges or not, and vertices past the last edge.
+    const tri::VertIdx n = mesh.vertex_count();
+    for (tri::VertIdx u = 0; u < std::min<tri::VertIdx>(n, 40); ++u)
+        for (tri::VertIdx v = 0; v < n + 3; ++v)
+            ASSERT_EQ(index.find(u, v), gen::find_mesh_edge(edges, u, v)) << u << ' ' << v;
+    EXPECT_EQ(gen::MeshEdgeIndex({}).find(0, 1), tri::kNone);
 }
 
 TEST(Generators_FieldTransfer, LinearFieldsVerticesEdgesAndOutside) {
