@@ -131,7 +131,7 @@ double run_cycles(const AdaptArguments& arguments, Refine&& refine, Derefine&& d
             if (!refine(arguments.time)) break;
         return true;
     });
-    progress("step 0 t " + format_number(arguments.time), arguments.time);
+    progress("step 0 t " + format_approximate(arguments.time, 12), arguments.time);
     for (std::uint32_t step = 1; step <= arguments.steps; ++step) {
         const double t = arguments.time + step * arguments.dt;
         timed([&] {
@@ -143,7 +143,7 @@ double run_cycles(const AdaptArguments& arguments, Refine&& refine, Derefine&& d
                 if (!refine(t)) break;
             return true;
         });
-        progress("step " + std::to_string(step) + " t " + format_number(t), t);
+        progress("step " + std::to_string(step) + " t " + format_approximate(t, 12), t);
     }
     return seconds;
 }

@@ -7,7 +7,9 @@
 // to the root by the history); the 2D run driver over a transient (every method's check).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -20,6 +22,7 @@
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/support/scaled_coordinates.hpp"
+#include "tests/support/test_scale.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
 
 namespace gen = exactmesh::generators;
@@ -187,6 +190,40 @@ TEST(Generators_AdaptiveRun2, TransientStepsEveryMethodStayChecked) {
         EXPECT_EQ(run.result().mesh.triangles, run.mesh().triangles);
     }
     EXPECT_THROW((void)gen::adapt_method_from_name("magic"), exactmesh::InputError);
+}
+
+// Issue 13's transient goal on a small case: global remeshing with the thresholds fixed to the
+// first mesh (an absolute size field) keeps the vertex count within 15% of its mean while a
+// front crosses the airfoil's domain (with the size relative to the current mesh's mean
+// indicator instead, each cycle refines the front again until the budget).
+TEST(Generators_AdaptiveRun2, TransientRemeshingHoldsTheVertexCount) {
+    const gen::DomainPslg domain = gen::sample_domain(gen::SampleDomain::Naca0012);
+    const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d("delaunay-refinement");
+    const gen::AnalyticField field{"moving", [](double x, double y, double, double t) {
+                                       return std::tanh(20 * (0.8660254 * x + 0.5 * y + 0.5 - t));
+                                   }};
+    const int steps =
+        std::max(4, static_cast<int>(std::lround(12 * exactmesh::testing::test_scale())));
+    const gen::RemeshDomain2 remesh_domain = gen::remesh_domain_2d(domain);
+    gen::AdaptiveRunOptions2 options;
+    options.method = gen::AdaptMethod2::Remesh;
+    options.transient = true;
+    gen::AdaptiveRun2 run(remesh_domain, domain.curves,
+                          generator.run({domain.xy, domain.segments, domain.holes, {}}, {}).mesh,
+                          generator, &field, 0, options);
+    for (int c = 0; c < 2; ++c) run.cycle(0);
+    std::vector<double> counts;
+    for (int step = 1; step <= steps; ++step) {
+        run.step(0.05 * step, 2);
+        ASSERT_EQ(run.check(domain.xy), "") << "step " << step;
+        counts.push_back(run.mesh().vertex_count());
+    }
+    const double mean =
+        std::accumulate(counts.begin(), counts.end(), 0.0) / static_cast<double>(counts.size());
+    const auto [low, high] = std::minmax_element(counts.begin(), counts.end());
+    EXPECT_GE(*low, 0.85 * mean);
+    EXPECT_LE(*high, 1.15 * mean);
+    EXPECT_GT(counts.front(), 2.0 * run.result().input_vertex_count);  // it did adapt
 }
 
 // A mesh whose .node repeats a point no tetrahedron uses (a TetGen file may): the Delaunay
