@@ -70,6 +70,7 @@ struct AdaptArguments {
     std::string generator = "delaunay-refinement";
     std::string size;
     std::uint32_t cycles = 3;
+    std::optional<std::uint32_t> initial_cycles;  ///< with --steps; default: cycles
     std::uint64_t max_vertices = 0;
     double threshold = 1.0;
     bool derefine = false;
@@ -126,8 +127,9 @@ double run_cycles(const AdaptArguments& arguments, Refine&& refine, Derefine&& d
         return seconds;
     }
     // A transient run starts from the mesh adapted at its first time.
+    const std::uint32_t initial_cycles = arguments.initial_cycles.value_or(arguments.cycles);
     timed([&] {
-        for (std::uint32_t cycle = 0; cycle < arguments.cycles; ++cycle)
+        for (std::uint32_t cycle = 0; cycle < initial_cycles; ++cycle)
             if (!refine(arguments.time)) break;
         return true;
     });
@@ -162,6 +164,9 @@ void check_arguments(const AdaptArguments& arguments) {
     finite_at_least("--dt", arguments.dt, 0);
     if (!std::isfinite(arguments.time))
         throw InputError("--time must be finite (got " + format_number(arguments.time) + ")");
+    if (arguments.initial_cycles && arguments.steps == 0)
+        throw InputError(
+            "--initial-cycles goes with --steps (without steps, --cycles counts them)");
     if (arguments.steps > 0 && arguments.field.empty())
         throw InputError("--steps needs an analytic --field (a field file has no time)");
 }
@@ -529,6 +534,12 @@ void add_adapt_command(CLI::App& app) {
                      "flagged or --max-vertices is reached")
         ->check(whole_number_at_most(kMaxCycles))
         ->capture_default_str();
+    command
+        ->add_option("--initial-cycles", arguments->initial_cycles,
+                     "With --steps: the refinement cycles that adapt the first mesh to the field "
+                     "at --time before step 1 (default: --cycles; h-refinement refines one level "
+                     "per cycle)")
+        ->check(whole_number_at_most(kMaxCycles));
     command
         ->add_option("--max-vertices", arguments->max_vertices,
                      "Never refine past this many vertices: the largest indicators whose "

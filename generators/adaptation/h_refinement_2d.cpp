@@ -597,12 +597,16 @@ std::vector<VertIdx> HRefinedMesh2::derefine(std::span<const TriIdx> flagged_lea
     }
     // Candidates: parents whose children are all flagged leaves, and every green pair (a
     // closure artefact: it goes when its split point is no longer needed across its edge, so
-    // coarsening a red parent takes its green neighbours along). 1 = coarsen, 0 = keep.
-    std::vector<std::uint8_t> coarsen(nodes_.size(), 0);
+    // coarsening a red parent takes its green neighbours along). The decision per candidate:
+    // kCoarsen (no children), kGreen (a red parent whose one still needed split point stays:
+    // it coarsens to the green pair on that edge, green_edge[id]), kKeep.
+    constexpr std::uint8_t kKeep = 0, kGreen = 1, kCoarsen = 2;
+    std::vector<std::uint8_t> decision(nodes_.size(), kKeep);
+    std::vector<std::uint8_t> green_edge(nodes_.size(), 0);
     std::vector<std::uint32_t> candidates;
     for (const std::uint32_t id : leaf_nodes_) {
         const std::uint32_t parent = nodes_[id].parent;
-        if (parent == kNone || coarsen[parent]) continue;
+        if (parent == kNone || decision[parent] != kKeep) continue;
         const HRefinementNode2& p = nodes_[parent];
         bool all = true;
         for (int c = 0; c < p.child_count; ++c) {
@@ -610,7 +614,7 @@ std::vector<VertIdx> HRefinedMesh2::derefine(std::span<const TriIdx> flagged_lea
             all = all && nodes_[child].child_count == 0 && (flagged[child] || p.child_count == 2);
         }
         if (!all) continue;
-        coarsen[parent] = 1;
+        decision[parent] = kCoarsen;
         candidates.push_back(parent);
     }
     // The leaves at each vertex.
@@ -627,54 +631,85 @@ std::vector<VertIdx> HRefinedMesh2::derefine(std::span<const TriIdx> flagged_lea
             for (const VertIdx v : nodes_[id].corners) at[fill[v]++] = id;
         }
     }
+    // Whether vertex m is still a corner after this step of what stands in parent x's place:
+    // its children (kept), its green pair on green_edge[x] (its corners and that split
+    // point), or itself (its corners).
+    const auto stays_corner = [&](std::uint32_t x, VertIdx m) {
+        const HRefinementNode2& node = nodes_[x];
+        if (std::find(node.corners.begin(), node.corners.end(), m) != node.corners.end())
+            return true;
+        if (decision[x] == kKeep) return true;
+        return decision[x] == kGreen && split_point(nodes_, node, green_edge[x]) == m;
+    };
     // A split point hangs when a leaf outside the parent keeps it as a corner after this step:
-    // that leaf stays unless its own parent coarsens, and then it is kept only if it is one of
-    // that parent's corners. Decided for all candidates together, to the largest fixed point
-    // (a candidate is dropped only when something that stays needs its split point), so that
-    // neighbouring parents coarsen together. A worklist: dropping a candidate re-examines only
-    // the candidates whose split points its children's corners are.
+    // that leaf stays unless its own parent coarsens (fully, or to a green pair not on m).
+    // Decided for all candidates together, to the largest fixed point (decisions only go down,
+    // kCoarsen -> kGreen -> kKeep, each when something that stays needs more of its split
+    // points), so that neighbouring parents coarsen together. A red parent with exactly one
+    // hanging split point coarsens to the green pair on that edge when both green children are
+    // strictly counter-clockwise (exact orient2d on the rounded split point), so that a wake
+    // coarsens into the closure of what stays fine instead of keeping a whole red layer. A
+    // worklist: lowering a decision re-examines only the candidates whose split points its
+    // children's corners are.
+    std::vector<std::uint64_t> blame;
     std::vector<std::uint32_t> work(candidates.rbegin(), candidates.rend());
     while (!work.empty()) {
         const std::uint32_t id = work.back();
         work.pop_back();
-        if (!coarsen[id]) continue;
+        if (decision[id] == kKeep) continue;
         const HRefinementNode2& p = nodes_[id];
-        bool hangs = false;
-        for (int k = 0; k < 3 && !hangs; ++k) {
+        int hanging = 0, hanging_edge = -1;
+        for (int k = 0; k < 3 && hanging < 2; ++k) {
             const VertIdx m = split_point(nodes_, p, k);
             if (m == kNone) continue;
+            bool hangs = false;
             for (std::uint32_t i = start[m]; i < start[m + 1] && !hangs; ++i) {
                 const std::uint32_t x = nodes_[at[i]].parent;
                 if (x == id) continue;
-                const bool leaf_goes = x != kNone && coarsen[x] &&
-                                       std::find(nodes_[x].corners.begin(), nodes_[x].corners.end(),
-                                                 m) == nodes_[x].corners.end();
-                hangs = !leaf_goes;
+                hangs = x == kNone || stays_corner(x, m);
+            }
+            if (hangs) {
+                ++hanging;
+                hanging_edge = k;
             }
         }
-        if (!hangs) continue;
-        coarsen[id] = 0;
+        std::uint8_t now = kCoarsen;
+        if (hanging == 1 && p.child_count == 4) {
+            blame.clear();
+            now = split_is_ccw(id, hanging_edge, blame) ? kGreen : kKeep;
+        } else if (hanging > 0) {
+            now = kKeep;
+        }
+        if (now == decision[id]) continue;
+        EM_ASSERT(now < decision[id]);
+        decision[id] = now;
+        green_edge[id] = static_cast<std::uint8_t>(hanging_edge < 0 ? 0 : hanging_edge);
         for (int c = 0; c < p.child_count; ++c) {
             for (const VertIdx v : nodes_[p.children[static_cast<std::size_t>(c)]].corners) {
                 for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
                     const std::uint32_t x = nodes_[at[i]].parent;
-                    if (x != kNone && x != id && coarsen[x]) work.push_back(x);
+                    if (x != kNone && x != id && decision[x] != kKeep) work.push_back(x);
                 }
             }
         }
     }
     for (const std::uint32_t id : candidates) {
-        if (!coarsen[id]) continue;
-        HRefinementNode2& node = nodes_[id];
-        for (int c = 0; c < node.child_count; ++c) {
-            const std::uint32_t child = node.children[static_cast<std::size_t>(c)];
+        if (decision[id] == kKeep) continue;
+        for (int c = 0; c < nodes_[id].child_count; ++c) {
+            const std::uint32_t child = nodes_[id].children[static_cast<std::size_t>(c)];
             nodes_[child].alive = 0;
             free_nodes_.push_back(child);
         }
+        HRefinementNode2& node = nodes_[id];
         node.child_count = 0;
         node.split_edge = 0;
         node.children = {kNone, kNone, kNone, kNone};
-        ++counters_.derefined;
+        if (decision[id] == kGreen) {
+            split_node(id, green_edge[id]);  // its split point exists: no new vertex
+            ++counters_.red_to_green;
+        } else {
+            ++counters_.derefined;
+        }
     }
     collect_leaves();
 

@@ -39,18 +39,19 @@ struct HRefinementCounters2 {
     std::uint64_t green_undone = 0;        ///< green pairs removed so their parent goes red
     std::uint64_t closure_iterations = 0;  ///< triangles examined by the closure worklist
     std::uint64_t refused_edges = 0;       ///< marked edges left unsplit: a child would not be CCW
-    std::uint64_t rounds = 0;     ///< closure-and-split passes (1 unless a marked edge is still
-                                  ///< an edge after one: a safeguard, not seen in the tests)
-    std::uint64_t restarts = 0;   ///< passes rolled back: a neighbour could not split an edge
-                                  ///< of a green undo's red split (slivers only)
-    std::uint64_t derefined = 0;  ///< parents whose children were removed
+    std::uint64_t rounds = 0;        ///< closure-and-split passes (1 unless a marked edge is still
+                                     ///< an edge after one: a safeguard, not seen in the tests)
+    std::uint64_t restarts = 0;      ///< passes rolled back: a neighbour could not split an edge
+                                     ///< of a green undo's red split (slivers only)
+    std::uint64_t derefined = 0;     ///< parents whose children were removed
+    std::uint64_t red_to_green = 0;  ///< red parents coarsened to a green pair (derefine)
     std::uint64_t removed_vertices = 0;  ///< vertices no leaf uses any more, removed
     std::uint64_t ignored_marks = 0;     ///< marked pairs that are no edge of the leaf mesh
 };
 
-inline constexpr std::array kHRefinementCounterNames =
-    EM_COUNTER_TABLE(HRefinementCounters2, red, green, green_undone, closure_iterations,
-                     refused_edges, rounds, restarts, derefined, removed_vertices, ignored_marks);
+inline constexpr std::array kHRefinementCounterNames = EM_COUNTER_TABLE(
+    HRefinementCounters2, red, green, green_undone, closure_iterations, refused_edges, rounds,
+    restarts, derefined, red_to_green, removed_vertices, ignored_marks);
 static_assert(counter_table_complete(kHRefinementCounterNames));
 
 /// One triangle of the refinement history. Children patterns, for corners (a, b, c) =
@@ -116,13 +117,15 @@ class HRefinedMesh2 {
     /// Coarsens one generation: a parent whose children are all leaves and all flagged, and
     /// every green pair (flagged or not: greens are closure artefacts), loses its children,
     /// unless one of its split points would be left hanging, i.e. would still be a corner of a
-    /// triangle outside it after this step. Decided for all parents at once, to the largest
+    /// triangle outside it after this step. A red parent with exactly one such split point
+    /// becomes the green pair on that edge instead (when both green children are strictly
+    /// counter-clockwise; else it is kept whole): the pattern refine()'s closure makes there, so
+    /// a coarsening region meets a finer one through a green closure, as after refinement,
+    /// rather than through a whole red layer. Decided for all parents at once, to the largest
     /// consistent set, so that neighbouring parents coarsen together and a red parent takes its
-    /// green neighbours along. A parent whose split point would hang is kept whole (rather
-    /// than turned into a green: the rule keeps only patterns that refine() made, so the
-    /// history stays the one refine() wrote). Then vertices no leaf uses are removed (never a
-    /// root vertex). Call it repeatedly to coarsen several levels; flagging every leaf each
-    /// time returns the root mesh exactly.
+    /// green neighbours along. Then vertices no leaf uses are removed (never a root vertex).
+    /// Call it repeatedly to coarsen several levels; flagging every leaf each time returns the
+    /// root mesh exactly.
     /// @param flagged_leaves leaf triangle indices of the current leaf mesh (any order,
     ///        duplicates harmless).
     /// @throws InputError for an index out of range.

@@ -331,6 +331,37 @@ TEST(Generators_HRefinement2, CoarseningARedTriangleTakesItsGreenNeighboursAlong
     expect_same(h.leaf_mesh(), root, "one red coarsened");
 }
 
+// A red parent whose neighbour stays refined coarsens into the green pair on their shared edge
+// (the closure refine() would have made), not into nothing and not kept whole; then, with the
+// neighbour flagged too, both return to the root.
+TEST(Generators_HRefinement2, ARedParentBesideAFinerNeighbourCoarsensToAGreenPair) {
+    const tri::Triangulation2 root = mesh_of(grid_points(1));  // the unit square, two triangles
+    ASSERT_EQ(root.triangle_count(), 2u);
+    gen::HRefinedMesh2 h(root);
+    h.refine(all_edges(root));
+    ASSERT_EQ(h.leaf_mesh().triangle_count(), 8u);
+    ASSERT_EQ(h.leaf_mesh().vertex_count(), 9u);
+    // Flag the first root triangle's four children (leaves are in history order).
+    std::vector<tri::TriIdx> first;
+    for (tri::TriIdx t = 0; t < h.leaf_mesh().triangle_count(); ++t)
+        if (h.nodes()[h.leaf_nodes()[t]].parent == 0) first.push_back(t);
+    ASSERT_EQ(first.size(), 4u);
+    const std::vector<tri::VertIdx> map = h.derefine(first);
+    ASSERT_TRUE(gen::check_h_refined_mesh_2d(h).ok) << gen::check_h_refined_mesh_2d(h).problem;
+    EXPECT_EQ(h.counters().red_to_green, 1u);
+    EXPECT_EQ(h.counters().derefined, 0u);
+    // Two green children and the neighbour's four; its two outer split points are gone, the
+    // diagonal's stays (the neighbour's children use it).
+    EXPECT_EQ(h.leaf_mesh().triangle_count(), 6u);
+    EXPECT_EQ(h.leaf_mesh().vertex_count(), 7u);
+    EXPECT_EQ(std::count(map.begin(), map.end(), tri::kNone), 2);
+    const gen::HRefinementNode2& parent = h.nodes()[0];
+    EXPECT_EQ(parent.child_count, 2);
+    // Everything flagged: the green pair and the neighbour's red children go together.
+    derefine_all(h, 5, "green pair");
+    expect_same(h.leaf_mesh(), root, "after the green pair");
+}
+
 TEST(Generators_HRefinement2, RefiningEverythingThreeTimesIsRedOnlyAndDerefinesExactly) {
     const tri::Triangulation2 root = square_with_boundary(6);
     gen::HRefinedMesh2 h(root);
