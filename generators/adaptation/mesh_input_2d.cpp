@@ -16,10 +16,10 @@
 namespace exactmesh::generators {
 
 namespace tri = exactmesh::triangulation;
+using predicates::Sign;
 using tri::kNone;
 using tri::TriIdx;
 using tri::VertIdx;
-using predicates::Sign;
 
 namespace {
 
@@ -77,7 +77,7 @@ std::vector<int> boundary_winding(const tri::Triangulation2& cdt,
 }
 
 /// A point strictly inside one of `triangles` of `cdt` (exact orient2d): the rounded centroid
-/// of the first one that holds its own; kNone-free, or nullopt-like false when none does.
+/// of the first triangle that contains its own; false when rounding puts every one out.
 bool point_inside_one_of(const tri::Triangulation2& cdt, const std::vector<TriIdx>& triangles,
                          std::array<double, 2>& point) {
     for (const TriIdx t : triangles) {
