@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // `exactmesh adapt`: solution-adaptive meshing (issue 13). 2D: the initial mesh is made by a
 // generator of the registry (a .poly, or a built-in sample domain whose curves adaptation
-// keeps); 3D: a tetrahedral mesh of a convex domain (IN.node IN.ele, or --domain cube). The field
-// is an expression (the solver's stand-in) or, in 3D, a .node attribute; each cycle refines where
+// keeps) or given (a Triangle IN.node IN.ele, validated exactly, its domain the mesh's boundary
+// with a point in each hole: generators/adaptation/mesh_input_2d); 3D: a tetrahedral mesh of a
+// convex domain (IN.node IN.ele, or --domain cube). The field is an expression (the solver's
+// stand-in) or, for a given mesh, a .node attribute; each cycle refines where
 // the indicator says (generators/adaptation/), and a transient run (--steps) derefines where it
 // no longer does. Per cycle or step it prints the vertex and element counts and, with an
 // analytic field, the maximum and L2 error of the field's piecewise-linear interpolant; those
@@ -35,6 +37,7 @@
 #include "generators/adaptation/insertion_adaptation_3d.hpp"
 #include "generators/adaptation/interpolation_error.hpp"
 #include "generators/adaptation/mesh_edges.hpp"
+#include "generators/adaptation/mesh_input_2d.hpp"
 #include "generators/adaptation/steiner_restart_2d.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
@@ -189,28 +192,111 @@ gen::AdaptationOptions adaptation_options(const AdaptArguments& arguments, unsig
     return options;
 }
 
+/// The field of --field-file for a mesh given as IN.node IN.ele: the first attribute of a .node
+/// (dimension `dim`) whose points are the mesh's `coordinates`, in its order.
+/// @throws InputError naming the file and the first line that differs (or the counts).
+std::vector<double> field_from_node_file(const std::string& path,
+                                         std::span<const double> coordinates, unsigned dim) {
+    std::vector<double> points, attributes;
+    std::vector<std::uint64_t> lines;
+    std::uint32_t attribute_count = 0;
+    if (dim == 2) {
+        io::NodeFile file = io::read_node(path);
+        points = std::move(file.xy);
+        attributes = std::move(file.attributes);
+        lines = std::move(file.lines);
+        attribute_count = file.attribute_count;
+    } else {
+        io::TetgenNodeFile file = io::read_tetgen_node(path);
+        points = std::move(file.xyz);
+        attributes = std::move(file.attributes);
+        lines = std::move(file.lines);
+        attribute_count = file.attribute_count;
+    }
+    const std::string what =
+        "a field file must be a .node with the mesh's points, in its order, and the field as its "
+        "first attribute";
+    if (attribute_count == 0) throw InputError(path + ": no attribute (" + what + ")");
+    const std::size_t count = points.size() / dim, mesh_count = coordinates.size() / dim;
+    for (std::size_t v = 0; v < count && v < mesh_count; ++v)
+        for (unsigned c = 0; c < dim; ++c)
+            if (points[dim * v + c] != coordinates[dim * v + c])
+                throw InputError(path + ":" + std::to_string(lines[v]) + ": point " +
+                                 format_point(&points[dim * v], static_cast<int>(dim)) +
+                                 " is not the mesh's vertex " +
+                                 format_point(&coordinates[dim * v], static_cast<int>(dim)) + " (" +
+                                 what + ")");
+    if (count != mesh_count)
+        throw InputError(path + ": " + std::to_string(count) + " points, the mesh has " +
+                         std::to_string(mesh_count) + " (" + what + ")");
+    std::vector<double> values(count);
+    for (std::size_t v = 0; v < count; ++v) values[v] = attributes[v * attribute_count];
+    return values;
+}
+
 void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* field) {
-    if (!arguments.field_file.empty())
+    const bool given_mesh = !arguments.ele.empty();
+    if (!arguments.field_file.empty() && !given_mesh)
         throw InputError(
-            "--field-file: a 2D run starts from a .poly or --domain, whose vertices "
-            "no field file can match; give --field EXPR (field files are read for "
-            "3D meshes, IN.node IN.ele)");
+            "--field-file: a run from a .poly or --domain makes its own mesh, whose vertices "
+            "no field file can match; give --field EXPR, or start from a mesh (IN.node IN.ele)");
+    if (given_mesh && !arguments.size.empty())
+        throw InputError(
+            "--size sets the size of a mesh adapt makes; IN.node IN.ele is the "
+            "initial mesh already");
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
-    if (!arguments.input.empty())
+    if (given_mesh)
+        refuse_to_overwrite_inputs({arguments.input, arguments.ele, arguments.field_file}, files);
+    else if (!arguments.input.empty())
         refuse_to_overwrite_inputs(
             {arguments.input, io::poly_node_path(arguments.input), arguments.size}, files);
     else if (!arguments.size.empty())
         refuse_to_overwrite_inputs({arguments.size}, files);
     const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(arguments.generator);
+    const gen::AdaptMethod2 method = gen::adapt_method_from_name(arguments.method);
     gen::SizeFunction size =
         arguments.size.empty() ? gen::SizeFunction() : size_from_option(arguments.size);
     io::PolyFile poly;
     std::vector<gen::Curve2> curves;
     std::vector<gen::SegmentCurve> segment_curves;
     std::string title;
-    if (!arguments.domain.empty()) {
+    gen::GivenMeshDomain2 given;
+    gen::MeshOptions2 mesh_options;
+    tri::Cdt2Result initial;
+    std::vector<double> file_values;
+    if (given_mesh) {
+        // A given mesh: its vertices, its boundary edges as segments, a point in each hole.
+        const io::NodeFile nodes = io::read_node(arguments.input);
+        const io::EleFile ele =
+            io::read_ele(arguments.ele, nodes.first_index, nodes.vertex_count());
+        try {
+            given = gen::given_mesh_domain_2d(nodes.xy, ele.triangles,
+                                              {nodes.first_index, ele.first_index});
+        } catch (const InputError& error) {
+            throw InputError(arguments.ele + ": " + error.what());
+        }
+        poly.vertices.first_index = nodes.first_index;
+        title = fs::path(arguments.ele).filename().string();
+        // h-refinement and local remeshing work on any valid mesh: they keep the given one.
+        // The others need a constrained Delaunay triangulation (insertion rebuilds the CDT of
+        // the domain's vertices each cycle, Steiner restart resumes Delaunay refinement, remesh
+        // compares against the generator's): they start from the CDT of the mesh's vertices
+        // and boundary, the same vertices in the same numbering.
+        if (method == gen::AdaptMethod2::HRefinement || method == gen::AdaptMethod2::LocalRemesh) {
+            initial = gen::given_mesh_result_2d(given);
+        } else {
+            initial = given.cdt;
+            if (!given.mesh_is_cdt)
+                print_warnings({arguments.ele +
+                                ": not the constrained Delaunay triangulation of its vertices "
+                                "and boundary; --method " +
+                                arguments.method + " starts from that triangulation instead"});
+        }
+        if (!arguments.field_file.empty())
+            file_values = field_from_node_file(arguments.field_file, given.mesh.xy, 2);
+    } else if (!arguments.domain.empty()) {
         const gen::SampleDomain sample = gen::sample_domain_from_name(arguments.domain);
         if (!size.bounded()) size = gen::sample_domain_size(sample);
         gen::DomainPslg pslg = gen::sample_domain(sample, size);
@@ -225,22 +311,26 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
         title = fs::path(arguments.input).filename().string();
     }
     const std::uint32_t base = poly.vertices.first_index;
-    gen::MeshOptions2 mesh_options;
     mesh_options.size = size;
     mesh_options.cdt.first_index = base;
-    const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, {}};
-    const gen::MeshDomain2 domain(pslg, mesh_options.cdt);
-    const std::string file =
-        arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
-    if (generator.needs_size && !mesh_options.size.bounded())
-        mesh_options.size = gen::graded_size_from_boundary(domain);
-    gen::MeshRun2 initial = locating_mark_points(
-        poly, file, [&] { return generator.run_on_domain(domain, mesh_options); });
-    print_warnings(initial.mesh.warnings);
+    const tri::Pslg pslg = given_mesh ? tri::Pslg{given.mesh.xy, given.segments, given.holes, {}}
+                                      : tri::Pslg{poly.vertices.xy, poly.segments, poly.holes, {}};
+    const std::span<const double> fixed_xy = given_mesh ? given.mesh.xy : poly.vertices.xy;
+    if (!given_mesh) {
+        const gen::MeshDomain2 domain(pslg, mesh_options.cdt);
+        const std::string file =
+            arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
+        if (generator.needs_size && !mesh_options.size.bounded())
+            mesh_options.size = gen::graded_size_from_boundary(domain);
+        gen::MeshRun2 generated = locating_mark_points(
+            poly, file, [&] { return generator.run_on_domain(domain, mesh_options); });
+        print_warnings(generated.mesh.warnings);
+        initial = std::move(generated.mesh);
+    }
 
     gen::AdaptationOptions options = adaptation_options(arguments, 2);
     gen::AdaptiveRunOptions2 run_options;
-    run_options.method = gen::adapt_method_from_name(arguments.method);
+    run_options.method = method;
     run_options.adaptation = options;
     run_options.derefine_fraction = arguments.derefine_threshold;
     run_options.transient = arguments.steps > 0;
@@ -253,12 +343,13 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
             "--derefine goes with --method insertion or h-refinement (steiner "
             "and the remeshing methods coarsen by their size field already)");
     const gen::RemeshDomain2 remesh_domain{pslg, mesh_options.cdt, segment_curves};
-    if (initial.mesh.mesh.vertex_count() >= options.max_vertices)
-        print_warnings({"the initial mesh has " + std::to_string(initial.mesh.mesh.vertex_count()) +
+    if (initial.mesh.vertex_count() >= options.max_vertices)
+        print_warnings({"the initial mesh has " + std::to_string(initial.mesh.vertex_count()) +
                         " vertices, at or above --max-vertices " +
                         std::to_string(options.max_vertices) + ": no cycle refines it"});
-    gen::AdaptiveRun2 run(remesh_domain, curves, std::move(initial.mesh), generator, field,
+    gen::AdaptiveRun2 run(remesh_domain, curves, std::move(initial), generator, field,
                           arguments.time, run_options);
+    if (!file_values.empty()) run.set_values(std::move(file_values));
     predicates::reset_thread_stats();
     const double seconds = run_cycles(
         arguments, [&](double t) { return run.cycle(t); }, [&] { return run.derefine(); },
@@ -269,7 +360,7 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
                            run.mesh().triangles, run.values(), t);
         });
     const predicates::PredicateStats stats = predicates::thread_stats();
-    if (const std::string problem = run.check(poly.vertices.xy); !problem.empty())
+    if (const std::string problem = run.check(fixed_xy); !problem.empty())
         throw Error("internal: the adapted mesh fails its exact check: " + problem);
     const tri::Cdt2Result result = run.result();
     const std::vector<double>& result_values = run.values();
@@ -345,13 +436,7 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
     if (field != nullptr) {
         values = gen::sample_field(*field, mesh.xyz, 3, arguments.time);
     } else {
-        const io::TetgenNodeFile file = io::read_tetgen_node(arguments.field_file);
-        if (file.attribute_count == 0 || file.xyz != mesh.xyz)
-            throw InputError(arguments.field_file +
-                             ": a field file must be a .node with the mesh's points, in its "
-                             "order, and the field as its first attribute");
-        for (std::size_t v = 0; v < file.vertex_count(); ++v)
-            values.push_back(file.attributes[v * file.attribute_count]);
+        values = field_from_node_file(arguments.field_file, mesh.xyz, 3);
     }
     const std::vector<double> fixed_xyz = mesh.xyz;
     gen::FieldSource source{field, arguments.time};
@@ -438,10 +523,10 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
             set.stage(files[3], io::format_tetgen_node(result.xyz, base, result_values));
             break;
         case OutputFormat::Msh:
-            set.stage(output, io::format_msh_3d(result.xyz, result.tets));
+            set.stage(output, io::format_msh_3d(result.xyz, result.tets, result_values));
             break;
         case OutputFormat::Vtu:
-            set.stage(output, io::format_vtu_3d(result.xyz, result.tets, base));
+            set.stage(output, io::format_vtu_3d(result.xyz, result.tets, base, result_values));
             break;
         case OutputFormat::Svg:
             break;
@@ -454,16 +539,12 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
 
 void run_adapt(const AdaptArguments& arguments) {
     check_arguments(arguments);
-    const bool three_d =
-        arguments.domain == "cube" || (!arguments.input.empty() && !arguments.ele.empty());
     if (arguments.input.empty() == arguments.domain.empty())
         throw InputError(
-            "give either an input (IN.poly, or IN.node IN.ele in 3D) or --domain "
+            "give either an input (IN.poly, or a mesh IN.node IN.ele) or --domain "
             "NAME (not both)");
-    if (!arguments.ele.empty() && io::read_node_dimension(arguments.input) != 3)
-        throw InputError(arguments.input +
-                         ": a 2D run starts from a .poly or --domain (a 2D "
-                         ".node/.ele mesh is not read yet); IN.node IN.ele must be 3D");
+    const bool three_d = arguments.domain == "cube" ||
+                         (!arguments.ele.empty() && io::read_node_dimension(arguments.input) == 3);
     std::optional<gen::AnalyticField> field;
     if (!arguments.field.empty()) field = field_from_expression(arguments.field);
     if (three_d)
@@ -482,10 +563,16 @@ void add_adapt_command(CLI::App& app) {
         "indicator says");
     command
         ->add_option("input", arguments->input,
-                     "2D: a Triangle .poly file (the initial mesh by --generator); 3D: a TetGen "
-                     ".node, with its .ele as the second argument (a convex domain)")
+                     "2D: a Triangle .poly file (the initial mesh by --generator), or a Triangle "
+                     ".node with its .ele as the second argument (the initial mesh: h-refinement "
+                     "and local-remesh keep it, the other methods start from the constrained "
+                     "Delaunay triangulation of its vertices and boundary); 3D: a TetGen .node "
+                     "with its .ele (a convex domain)")
         ->type_name("IN.poly|IN.node");
-    command->add_option("ele", arguments->ele, "3D: the TetGen .ele of IN.node")
+    command
+        ->add_option("ele", arguments->ele,
+                     "The mesh's .ele (Triangle's in 2D, TetGen's in 3D); output numbers "
+                     "vertices as IN.node does")
         ->type_name("IN.ele");
     command
         ->add_option("--domain", arguments->domain,
@@ -496,7 +583,8 @@ void add_adapt_command(CLI::App& app) {
     command
         ->add_option("-o,--output", arguments->output,
                      "Output: .ele (with .neigh, .node carrying the field as its attribute, and "
-                     ".poly in 2D or .face in 3D), .msh, .vtu, .svg (2D)")
+                     ".poly in 2D or .face in 3D), .msh (the field as node data \"u\"), .vtu "
+                     "(the field as point data \"u\"), .svg (2D)")
         ->required()
         ->type_name("OUT");
     command
@@ -506,8 +594,9 @@ void add_adapt_command(CLI::App& app) {
         ->type_name("EXPR");
     command
         ->add_option("--field-file", arguments->field_file,
-                     "3D: a .node with the mesh's points whose first attribute is the field "
-                     "(carried to new meshes by linear interpolation)")
+                     "With a mesh IN.node IN.ele (2D or 3D): a .node with the mesh's points, in "
+                     "its order, whose first attribute is the field (carried to new meshes by "
+                     "linear interpolation)")
         ->type_name("FILE");
     command
         ->add_option("--method", arguments->method,

@@ -170,10 +170,10 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
             return;
         }
         case OutputFormat::Msh:
-            set.stage(output, io::format_msh(mesh.xy, mesh.triangles));
+            set.stage(output, io::format_msh(mesh.xy, mesh.triangles, vertex_field));
             return;
         case OutputFormat::Vtu:
-            set.stage(output, io::format_vtu(mesh.xy, mesh.triangles, base));
+            set.stage(output, io::format_vtu(mesh.xy, mesh.triangles, base, vertex_field));
             return;
         case OutputFormat::Svg: {
             io::SvgOptions svg;

@@ -80,7 +80,9 @@ triangulation::InsertionOrder insertion_order(const std::string& name);
 /// format,
 /// {".neigh", ".node", ".poly"})): .ele with .neigh, .node (every vertex) and .poly (the pieces,
 /// each marked with its input segment's number); or .msh, .vtu, .svg (with the pieces drawn).
-/// Numbers vertices, triangles and segments from `base`. Nothing is in place until commit.
+/// Numbers vertices, triangles and segments from `base`. `vertex_field` (#V, or empty) is the
+/// .node's attribute, the .msh's node data and the .vtu's point array "u". Nothing is in place
+/// until commit.
 void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
                               std::uint32_t base, const std::string& svg_title,

@@ -30,12 +30,29 @@ void append_block_headers(std::string& out, std::size_t count, int entity_dim, i
     out += '\n';
 }
 
+/// The $NodeData section of one scalar per node (node v tagged v + 1), named "u" [MSH 4.1:
+/// string tags (the view name), real tags (the time), integer tags (the time step, the
+/// number of components, the number of nodes), then "nodeTag value" lines].
+void append_node_data(std::string& out, std::span<const double> values) {
+    out += "$NodeData\n1\n\"u\"\n1\n0\n3\n0\n1\n";
+    append_unsigned(out, values.size());
+    out += '\n';
+    for (std::size_t v = 0; v < values.size(); ++v) {
+        append_unsigned(out, v + 1);
+        out += ' ';
+        append_double(out, values[v]);
+        out += '\n';
+    }
+    out += "$EndNodeData\n";
+}
+
 /// One block of nodes on entity (entity_dim, 1) and one block of elements of `element_type`
 /// with `corners` nodes each, written in the order `corner_order`. `coordinates`: dimension
-/// values per node (z = 0 appended in 2D).
+/// values per node (z = 0 appended in 2D); `vertex_field`: #V values or empty.
 std::string format_msh_cells(std::span<const double> coordinates, unsigned dimension,
                              std::span<const VertIdx> cells, unsigned corners,
-                             const unsigned* corner_order, int entity_dim, int element_type) {
+                             const unsigned* corner_order, int entity_dim, int element_type,
+                             std::span<const double> vertex_field) {
     const std::size_t nodes = coordinates.size() / dimension;
     const std::size_t elements = cells.size() / corners;
     std::string out;
@@ -64,6 +81,7 @@ std::string format_msh_cells(std::span<const double> coordinates, unsigned dimen
         out += '\n';
     }
     out += "$EndElements\n";
+    if (!vertex_field.empty()) append_node_data(out, vertex_field);
     return out;
 }
 
@@ -76,12 +94,14 @@ constexpr int kGmshTetrahedron = 4;
 
 }  // namespace
 
-std::string format_msh(std::span<const double> xy, std::span<const VertIdx> triangles) {
-    return format_msh_cells(xy, 2, triangles, 3, kTriangleOrder, 2, kGmshTriangle);
+std::string format_msh(std::span<const double> xy, std::span<const VertIdx> triangles,
+                       std::span<const double> vertex_field) {
+    return format_msh_cells(xy, 2, triangles, 3, kTriangleOrder, 2, kGmshTriangle, vertex_field);
 }
 
-std::string format_msh_3d(std::span<const double> xyz, std::span<const VertIdx> tets) {
-    return format_msh_cells(xyz, 3, tets, 4, kTetOrder, 3, kGmshTetrahedron);
+std::string format_msh_3d(std::span<const double> xyz, std::span<const VertIdx> tets,
+                          std::span<const double> vertex_field) {
+    return format_msh_cells(xyz, 3, tets, 4, kTetOrder, 3, kGmshTetrahedron, vertex_field);
 }
 
 void write_msh_3d(const std::filesystem::path& path, std::span<const double> xyz,

@@ -22,6 +22,7 @@ struct NodeFile {
     std::vector<double> attributes;     ///< attribute_count·#V, vertex after vertex
     bool has_markers = false;           ///< whether each vertex carries a boundary marker
     std::vector<std::int32_t> markers;  ///< #V boundary markers when has_markers, else empty
+    std::vector<std::uint64_t> lines;   ///< #V: each vertex's line in the file read (for messages)
 
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xy.size() / 2); }
 };

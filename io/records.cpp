@@ -134,6 +134,7 @@ std::uint64_t parse_vertex_section(TextLines& lines, unsigned dimension, const c
         expect_field_count(lines, expected, names);
         const auto& fields = lines.fields();
         expect_record_number(lines, fields[0], "vertex", i, section.first_index);
+        section.lines.push_back(lines.line_number());
         for (unsigned c = 0; c < dimension; ++c) {
             section.coordinates.push_back(lines.parse_finite_double(fields[1 + c], kAxis[c]));
         }

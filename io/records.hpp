@@ -83,6 +83,7 @@ struct VertexSection {
     std::vector<double> attributes;  ///< attribute_count·#V
     bool has_markers = false;
     std::vector<std::int32_t> markers;  ///< #V when has_markers
+    std::vector<std::uint64_t> lines;   ///< #V: the line of each vertex (for messages)
 };
 
 /// Parses the header on the current line (`<#vertices> [<dimension>] [<#attributes>]

@@ -44,6 +44,7 @@ TetgenNodeFile parse_tetgen_node_lines(TextLines& lines) {
     nodes.attributes = std::move(section.attributes);
     nodes.has_markers = section.has_markers;
     nodes.markers = std::move(section.markers);
+    nodes.lines = std::move(section.lines);
     return nodes;
 }
 

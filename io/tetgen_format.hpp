@@ -30,6 +30,7 @@ struct TetgenNodeFile {
     std::vector<double> attributes;     ///< attribute_count·#V
     bool has_markers = false;
     std::vector<std::int32_t> markers;  ///< #V boundary markers when has_markers
+    std::vector<std::uint64_t> lines;   ///< #V: each point's line in the file read (for messages)
 
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xyz.size() / 3); }
 };

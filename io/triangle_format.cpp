@@ -52,6 +52,7 @@ std::uint64_t parse_vertex_section(TextLines& lines, NodeFile& nodes) {
     nodes.attributes = std::move(section.attributes);
     nodes.has_markers = section.has_markers;
     nodes.markers = std::move(section.markers);
+    nodes.lines = std::move(section.lines);
     return count;
 }
 

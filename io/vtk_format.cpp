@@ -17,11 +17,12 @@ constexpr unsigned kTriangleOrder[3] = {0, 1, 2};
 constexpr unsigned kTetOrder[4] = {1, 0, 2, 3};
 
 /// `coordinates`: dimension values per point (z = 0 appended in 2D); `cells`: `corners` indices
-/// each, written in `corner_order`, as VTK cells of `cell_type`.
+/// each, written in `corner_order`, as VTK cells of `cell_type`; `vertex_field`: #V values of
+/// the point array "u", or empty.
 std::string format_vtu_cells(std::span<const double> coordinates, unsigned dimension,
                              std::span<const VertIdx> cells_in, unsigned corners,
-                             const unsigned* corner_order, int cell_type,
-                             std::uint32_t first_index) {
+                             const unsigned* corner_order, int cell_type, std::uint32_t first_index,
+                             std::span<const double> vertex_field) {
     const std::size_t points = coordinates.size() / dimension;
     const std::size_t cells = cells_in.size() / corners;
     std::string out;
@@ -35,13 +36,23 @@ std::string format_vtu_cells(std::span<const double> coordinates, unsigned dimen
     append_unsigned(out, cells);
     out += "\">\n";
 
-    out += "      <PointData Scalars=\"node_number\">\n";
+    out += vertex_field.empty() ? "      <PointData Scalars=\"node_number\">\n"
+                                : "      <PointData Scalars=\"u\">\n";
     out += "        <DataArray type=\"Int64\" Name=\"node_number\" format=\"ascii\">\n";
     for (std::size_t v = 0; v < points; ++v) {
         append_unsigned(out, v + first_index);
         out += '\n';
     }
-    out += "        </DataArray>\n      </PointData>\n";
+    out += "        </DataArray>\n";
+    if (!vertex_field.empty()) {
+        out += "        <DataArray type=\"Float64\" Name=\"u\" format=\"ascii\">\n";
+        for (const double value : vertex_field) {
+            append_double(out, value);
+            out += '\n';
+        }
+        out += "        </DataArray>\n";
+    }
+    out += "      </PointData>\n";
 
     out += "      <Points>\n";
     out += "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
@@ -77,13 +88,14 @@ std::string format_vtu_cells(std::span<const double> coordinates, unsigned dimen
 }  // namespace
 
 std::string format_vtu(std::span<const double> xy, std::span<const VertIdx> triangles,
-                       std::uint32_t first_index) {
-    return format_vtu_cells(xy, 2, triangles, 3, kTriangleOrder, kVtkTriangle, first_index);
+                       std::uint32_t first_index, std::span<const double> vertex_field) {
+    return format_vtu_cells(xy, 2, triangles, 3, kTriangleOrder, kVtkTriangle, first_index,
+                            vertex_field);
 }
 
 std::string format_vtu_3d(std::span<const double> xyz, std::span<const VertIdx> tets,
-                          std::uint32_t first_index) {
-    return format_vtu_cells(xyz, 3, tets, 4, kTetOrder, kVtkTetra, first_index);
+                          std::uint32_t first_index, std::span<const double> vertex_field) {
+    return format_vtu_cells(xyz, 3, tets, 4, kTetOrder, kVtkTetra, first_index, vertex_field);
 }
 
 void write_vtu_3d(const std::filesystem::path& path, std::span<const double> xyz,

@@ -93,6 +93,11 @@ void AdaptiveRun2::resample(double t) {
     v = sample_field(*field_, mesh().xy, 2, t);
 }
 
+void AdaptiveRun2::set_values(std::vector<double> values) {
+    EM_ASSERT(values.size() == mesh().vertex_count());
+    (h_ ? h_->values : flat_->values) = std::move(values);
+}
+
 void AdaptiveRun2::step(double t, std::uint32_t cycles) {
     resample(t);
     for (int pass = 0; pass < kMaxDerefinementPasses; ++pass)

@@ -71,6 +71,10 @@ class AdaptiveRun2 {
     std::uint64_t derefine();
     /// The analytic field at time t on the current mesh.
     void resample(double t);
+    /// The field at the current mesh's vertices from the caller (a field file, no analytic
+    /// field); the methods carry it to new meshes by transfer.
+    /// @pre values.size() == mesh().vertex_count()
+    void set_values(std::vector<double> values);
     /// A transient step (see the header comment).
     void step(double t, std::uint32_t cycles);
 

@@ -839,7 +839,10 @@ mesh_impossible_sizes() {
 
 # exactmesh adapt (issue 13): every 2D method on a sample domain and on a .poly, the error falls
 # over the cycles, the field is the .node's attribute, the exact check passes (exit 0), a budget
-# holds; 3D insertion and h-refinement on the cube and on a TetGen mesh read back, a field file.
+# holds; a 2D Triangle mesh as input (its vertex numbering kept, `check --conforming` passes, a
+# field file); 3D insertion and h-refinement on the cube and on a TetGen mesh read back, a field
+# file; the field as node data / point data "u" in .msh and .vtu (read back by meshio when it is
+# installed).
 adapt() {
   local method
   for method in insertion h-refinement steiner remesh local-remesh; do
@@ -852,7 +855,59 @@ adapt() {
     head -1 "$work/$method.node" | grep -Eq '^[0-9]+ 2 1 0' || fail "adapt $method: the .node carries no field"
   done
   run 0 adapt "$data/square_hole_diagonals.poly" --field 'x*x + y' --cycles 2 -o "$work/poly.vtu" &&
-    [[ -s "$work/poly.vtu" ]] || fail "adapt .poly -> .vtu"
+    grep -q '<DataArray type="Float64" Name="u"' "$work/poly.vtu" || fail "adapt .poly -> .vtu: no field"
+  # A 2D Triangle mesh as input: the domain with three holes, meshed, then adapted from its files.
+  run 0 mesh --domain square-with-holes -o "$work/swh.ele" || return
+  local vertices
+  vertices=$(head -1 "$work/swh.node" | awk '{ print $1 }')
+  for method in insertion h-refinement; do
+    run 0 adapt "$work/swh.node" "$work/swh.ele" --method "$method" --field 'tanh(20*(y-0.5))' \
+      --cycles 2 -o "$work/given-$method.ele" || continue
+    awk '/^cycle 2:/ { exit !($3 > '"$vertices"') }' "$work/out" || fail "adapt 2D mesh $method: no refinement: $(cat "$work/out")"
+    run 0 check "$work/swh.poly" "$work/given-$method.ele" --conforming ||
+      fail "adapt 2D mesh $method: check --conforming: $(cat "$work/out")"
+    # The input's vertices first, at their numbers and places.
+    cmp -s <(awk 'NR > 1 && NR <= '"$vertices"' + 1 { print $1, $2, $3 }' "$work/swh.node") \
+      <(awk 'NR > 1 && NR <= '"$vertices"' + 1 { print $1, $2, $3 }' "$work/given-$method.node") ||
+      fail "adapt 2D mesh $method: the input's vertices are not kept first"
+  done
+  # A mesh that is not Delaunay (the quadtree's): insertion starts from its CDT and says so.
+  run 0 mesh --domain key --generator quadtree -o "$work/quad.ele" &&
+    run 0 adapt "$work/quad.node" "$work/quad.ele" --field 'x*y' --cycles 1 -o "$work/quad-adapted.ele" &&
+    grep -q 'not the constrained Delaunay triangulation' "$work/err" &&
+    run 0 check "$work/quad.poly" "$work/quad-adapted.ele" --conforming || fail "adapt quadtree mesh"
+  # A 1-based mesh keeps its numbering.
+  printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n' >"$work/unit.node"
+  printf '2 3 0\n1 1 2 3\n2 1 3 4\n' >"$work/unit.ele"
+  run 0 adapt "$work/unit.node" "$work/unit.ele" --field 'tanh(10*(x-0.3))' --cycles 2 -o "$work/unit-out.ele" &&
+    sed -n 2p "$work/unit-out.ele" | grep -q '^1 ' && sed -n 2p "$work/unit-out.node" | grep -q '^1 0 0 ' ||
+    fail "adapt 1-based mesh: numbering not kept"
+  # A 2D field file (the adapted mesh with its own field), written to .msh and .vtu with it.
+  local count
+  count=$(head -1 "$work/given-insertion.node" | awk '{ print $1 }')
+  for ext in msh vtu; do
+    run 0 adapt "$work/given-insertion.node" "$work/given-insertion.ele" --cycles 0 \
+      --field-file "$work/given-insertion.node" -o "$work/field.$ext" || fail "adapt 2D --field-file -> .$ext"
+  done
+  awk '/^\$NodeData/ { d = 1; n = 0; next } /^\$EndNodeData/ { d = 0 } d { n++ } END { exit !(n == 8 + '"$count"') }' \
+    "$work/field.msh" && grep -q '^"u"$' "$work/field.msh" || fail "adapt .msh: no node data u of $count nodes"
+  # The field in the .msh is the field file's, value for value.
+  cmp -s <(awk 'NR > 1 { print $1 + 1, $4 }' "$work/given-insertion.node") \
+    <(awk '/^\$NodeData/ { d = 1; skip = 8; next } /^\$EndNodeData/ { d = 0 } d && skip-- <= 0 { print $1, $2 }' "$work/field.msh") ||
+    fail "adapt .msh: the node data is not the field file's"
+  grep -q '<PointData Scalars="u">' "$work/field.vtu" || fail "adapt .vtu: no point data u"
+  run 0 adapt --domain cube --field 'x+y' --cycles 1 -o "$work/cube-field.msh" &&
+    grep -q '^\$NodeData$' "$work/cube-field.msh" || fail "adapt 3D .msh: no node data"
+  run 0 adapt --domain cube --field 'x+y' --cycles 1 -o "$work/cube-field.vtu" &&
+    grep -q 'Name="u"' "$work/cube-field.vtu" || fail "adapt 3D .vtu: no point data"
+  if /usr/bin/python3 -c 'import meshio' 2>/dev/null; then
+    for file in field.msh field.vtu cube-field.msh cube-field.vtu; do
+      /usr/bin/python3 -c 'import sys, meshio
+m = meshio.read(sys.argv[1])
+u = m.point_data["u"]
+assert len(u) == len(m.points), (len(u), len(m.points))' "$work/$file" || fail "meshio cannot read the field of $file"
+    done
+  fi
   run 0 adapt --domain key --field 'tanh(30*(x-0.5-0.2*t))' --steps 3 --dt 1 --cycles 2 --derefine \
     --threshold 0.5 -o "$work/steps.svg" &&
     [[ $(grep -c '^step [1-9]' "$work/out") -eq 3 ]] || fail "adapt --steps: $(cat "$work/out")"
@@ -892,6 +947,23 @@ adapt_bad_input() {
   run 0 adapt --domain cube --field x --cycles 0 -o "$work/c.ele" || return
   expect_error 2 "a field file must be a .node with the mesh's points" \
     adapt "$work/c.node" "$work/c.ele" --field-file "$data/cube_center.node" -o "$work/d.ele"
+  # A 2D mesh: a field file of another point count, a vertex the .node lacks, an inverted triangle.
+  printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n' >"$work/sq.node"
+  printf '2 3 0\n1 1 2 3\n2 1 3 4\n' >"$work/sq.ele"
+  printf '3 2 1 0\n1 0 0 5\n2 1 0 5\n3 1 1 5\n' >"$work/three.node"
+  printf '4 2 1 0\n1 0 0 5\n2 1 0 5\n# moved\n3 1 1.5 5\n4 0 1 5\n' >"$work/moved.node"
+  printf '2 3 0\n1 1 2 3\n2 1 3 5\n' >"$work/missing.ele"
+  printf '2 3 0\n1 1 2 3\n2 1 4 3\n' >"$work/inverted.ele"
+  expect_error 2 'three.node: 3 points, the mesh has 4' \
+    adapt "$work/sq.node" "$work/sq.ele" --field-file "$work/three.node" -o "$work/a.ele"
+  expect_error 2 'moved.node:5: point \(1, 1.5\) is not the mesh' \
+    adapt "$work/sq.node" "$work/sq.ele" --field-file "$work/moved.node" -o "$work/a.ele"
+  expect_error 2 'missing.ele:3: vertex number 5 out of range' \
+    adapt "$work/sq.node" "$work/missing.ele" --field x -o "$work/a.ele"
+  expect_error 2 'inverted.ele: triangle 2 \(1, 4, 3\) is not strictly counter-clockwise' \
+    adapt "$work/sq.node" "$work/inverted.ele" --field x -o "$work/a.ele"
+  expect_error 2 '--field-file: a run from a .poly or --domain makes its own mesh' \
+    adapt --domain key --field-file "$work/three.node" -o "$work/a.ele"
   # No output file is left behind by a refused run.
   [[ ! -e "$work/a.ele" ]] || fail "adapt: a refused run wrote its output"
 }

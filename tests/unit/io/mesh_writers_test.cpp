@@ -111,6 +111,55 @@ TEST(Io_MeshWriters, VtuListsPointsCellsOffsetsAndNodeNumbers) {
     EXPECT_EQ(vtu.substr(vtu.size() - 11), "</VTKFile>\n");
 }
 
+// The field at the vertices: Gmsh's $NodeData after $Elements (one string tag, the view name
+// "u"; one real tag, the time; three integer tags: time step, components, node count; then
+// "tag value" per node), VTK's point array "u" (the active scalars); none when not given.
+TEST(Io_MeshWriters, VertexFieldIsGmshNodeDataAndVtkPointDataNamedU) {
+    const std::vector<double> field{0.5, -1.0 / 3.0, 1e-300, 2, 7};
+    const auto lines = lines_of(io::format_msh(kSquareXy, kSquareTriangles, field));
+    const std::vector<std::string> node_data{"$EndElements",
+                                             "$NodeData",
+                                             "1",
+                                             "\"u\"",
+                                             "1",
+                                             "0",
+                                             "3",
+                                             "0",
+                                             "1",
+                                             "5",
+                                             "1 0.5",
+                                             "2 -0.3333333333333333",
+                                             "3 1e-300",
+                                             "4 2",
+                                             "5 7",
+                                             "$EndNodeData"};
+    ASSERT_GE(lines.size(), node_data.size());
+    EXPECT_EQ(std::vector<std::string>(lines.end() - static_cast<std::ptrdiff_t>(node_data.size()),
+                                       lines.end()),
+              node_data);
+    EXPECT_EQ(io::format_msh(kSquareXy, kSquareTriangles).find("$NodeData"), std::string::npos);
+
+    const std::string vtu = io::format_vtu(kSquareXy, kSquareTriangles, 1, field);
+    EXPECT_NE(vtu.find("<PointData Scalars=\"u\">"), std::string::npos);
+    EXPECT_NE(vtu.find("<DataArray type=\"Float64\" Name=\"u\" format=\"ascii\">\n0.5\n"
+                       "-0.3333333333333333\n1e-300\n2\n7\n        </DataArray>\n      "
+                       "</PointData>"),
+              std::string::npos);
+    EXPECT_EQ(count_of(vtu, "<DataArray"), count_of(vtu, "</DataArray>"));
+    EXPECT_EQ(io::format_vtu(kSquareXy, kSquareTriangles, 1).find("Name=\"u\""), std::string::npos);
+
+    // 3D: the same sections after the tetrahedra.
+    const std::vector<double> xyz{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const std::vector<io::VertIdx> tet{0, 1, 2, 3};
+    const std::vector<double> field3{1, 2, 3, 4};
+    const std::string msh3 = io::format_msh_3d(xyz, tet, field3);
+    EXPECT_NE(msh3.find("$EndElements\n$NodeData\n1\n\"u\"\n1\n0\n3\n0\n1\n4\n1 1\n2 2\n3 3\n4 "
+                        "4\n$EndNodeData\n"),
+              std::string::npos);
+    const std::string vtu3 = io::format_vtu_3d(xyz, tet, 0, field3);
+    EXPECT_NE(vtu3.find("Name=\"u\" format=\"ascii\">\n1\n2\n3\n4\n"), std::string::npos);
+}
+
 TEST(Io_MeshWriters, SvgIsFittedWithYPointingUp) {
     const std::string svg = io::format_svg(kSquareXy, kSquareTriangles);
     EXPECT_NE(svg.find("<svg xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);

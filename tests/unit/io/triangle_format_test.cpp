@@ -128,6 +128,8 @@ TEST_F(Io_TriangleFormat, ReadsOneBasedFileWithCommentsBlankLinesAndTabs) {
     EXPECT_EQ(nodes.first_index, 1u);
     EXPECT_EQ(nodes.xy, (std::vector<double>{0, 0, 4, 0, 4, 3, 0.5, 2.5}));
     EXPECT_EQ(nodes.markers, (std::vector<std::int32_t>{1, 1, 1, 0}));
+    // Each vertex's own line, comments and blank lines counted (messages name it).
+    EXPECT_EQ(nodes.lines, (std::vector<std::uint64_t>{5, 7, 8, 9}));
 }
 
 TEST_F(Io_TriangleFormat, CrlfLineEndingsReadLikeLf) {
@@ -481,16 +483,23 @@ TEST_F(Io_TriangleFormat, PolyWithoutVerticesReadsTheNodeFile) {
 }
 
 TEST_F(Io_TriangleFormat, PolyErrorsNameFileLineAndProblem) {
-    auto poly_error = [&](std::string_view content, std::uint64_t line, const std::string& problem) {
+    auto poly_error = [&](std::string_view content, std::uint64_t line,
+                          const std::string& problem) {
         const fs::path path = write("bad.poly", content);
         return expect_error([&] { io::read_poly(path); }, path, line, problem);
     };
-    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 3\n0\n", 6, "segment endpoint 3 names no vertex"));
-    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n2 0\n0 0 1\n", 6, "file ends after 1 of 2 announced segments"));
-    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 1\n", 6, "before the hole count"));
-    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n0 0\n1\n0 nan 0\n", 7, "hole x coordinate"));
-    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n0 0\n0\n1\n0 1 1\n", 8, "expected 4 or 5 fields"));
-    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 3\n0 0 1\n0\n", 5, "segment marker count must be 0 or 1"));
+    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 3\n0\n", 6,
+                           "segment endpoint 3 names no vertex"));
+    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n2 0\n0 0 1\n", 6,
+                           "file ends after 1 of 2 announced segments"));
+    EXPECT_TRUE(
+        poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 1\n", 6, "before the hole count"));
+    EXPECT_TRUE(
+        poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n0 0\n1\n0 nan 0\n", 7, "hole x coordinate"));
+    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n0 0\n0\n1\n0 1 1\n", 8,
+                           "expected 4 or 5 fields"));
+    EXPECT_TRUE(poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 3\n0 0 1\n0\n", 5,
+                           "segment marker count must be 0 or 1"));
     // 0 vertices: the .node of the same name is read, and its absence is reported by name.
     const fs::path path = write("bad.poly", "0 2 0 0\n0 0\n0\n");
     EXPECT_TRUE(expect_error([&] { io::read_poly(path); }, dir_ / "bad.node", 0, "cannot open"));
