@@ -8,7 +8,7 @@
 //    Multiplying by a power of two is exact, so every floating-point quantity the indicators,
 //    gradients and error measures compute from scaled coordinates is bit for bit the same for a
 //    mesh scaled by 2^k (|k| <= 600): no squared length or area overflows or underflows.
-// Cost: O(E log E) for the sort.
+// Cost: O(E + V) (a counting sort by the smaller end).
 #pragma once
 
 #include <cstdint>
