@@ -3,15 +3,131 @@
 // derefinement_2d.hpp).
 #include "generators/adaptation/derefinement_2d.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <numeric>
 
+#include "base/errors.hpp"
 #include "generators/adaptation/mesh_edges.hpp"
+#include "predicates/angle_comparisons_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 #include "triangulation/modification/vertex_removal_2d.hpp"
 
 namespace exactmesh::generators {
 
+using predicates::Corner;
+using predicates::Sign;
 using triangulation::kNone;
 using triangulation::VertIdx;
+
+namespace {
+
+// The reference corner of kAngleFloorDegrees: (0, 0), (1, 0), (cos, sin) rounded once (a fixed
+// triangle, so the floor is the same for a mesh at any scale: compare_angles is exact).
+struct AngleFloor {
+    double o[2] = {0, 0};
+    double p[2] = {1, 0};
+    double q[2];
+    AngleFloor() {
+        const double radians = kAngleFloorDegrees * 3.14159265358979323846 / 180;
+        q[0] = std::cos(radians);
+        q[1] = std::sin(radians);
+    }
+    Corner corner() const { return {o, p, q}; }
+};
+
+// The smallest corner of the triangles (3 vertex numbers each, counter-clockwise) of xy.
+Corner smallest_of(std::span<const double> xy, std::span<const VertIdx> triangles) {
+    Corner smallest{};
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        const Corner c = predicates::smallest_corner(&xy[2 * std::size_t{triangles[t]}],
+                                                     &xy[2 * std::size_t{triangles[t + 1]}],
+                                                     &xy[2 * std::size_t{triangles[t + 2]}]);
+        if (t == 0 || predicates::compare_angles(c, smallest) == Sign::Negative) smallest = c;
+    }
+    return smallest;
+}
+
+}  // namespace
+
+bool removal_keeps_angles_2d(const triangulation::Triangulation2& mesh,
+                             std::span<const triangulation::TriIdx> star, VertIdx v) {
+    // The star as triangles (v, a, b) counter-clockwise: link edges a -> b, constrained spokes.
+    std::vector<VertIdx> link;  // pairs a, b
+    std::vector<VertIdx> constrained_spokes;
+    const bool flags = !mesh.constrained.empty();
+    for (const triangulation::TriIdx t : star) {
+        const VertIdx* c = &mesh.triangles[3 * std::size_t{t}];
+        const int k = c[0] == v ? 0 : c[1] == v ? 1 : 2;
+        const VertIdx a = c[(k + 1) % 3], b = c[(k + 2) % 3];
+        link.insert(link.end(), {a, b});
+        // Spoke v -> a is side k, spoke b -> v side k + 2: each constrained spoke seen once or
+        // twice (from both of its triangles); deduplicated below.
+        if (flags && mesh.constrained[3 * std::size_t{t} + static_cast<std::size_t>(k)])
+            constrained_spokes.push_back(a);
+        if (flags && mesh.constrained[3 * std::size_t{t} + static_cast<std::size_t>((k + 2) % 3)])
+            constrained_spokes.push_back(b);
+    }
+    std::sort(constrained_spokes.begin(), constrained_spokes.end());
+    constrained_spokes.erase(std::unique(constrained_spokes.begin(), constrained_spokes.end()),
+                             constrained_spokes.end());
+    // The chain's ends (a boundary vertex): a start with no incoming link edge, an end with no
+    // outgoing one. More than one of either: a pinched star, which the removal refuses anyway.
+    std::vector<VertIdx> starts, ends;
+    for (std::size_t i = 0; i < link.size(); i += 2) {
+        bool incoming = false, outgoing = false;
+        for (std::size_t j = 0; j < link.size(); j += 2) {
+            incoming = incoming || link[j + 1] == link[i];
+            outgoing = outgoing || link[j] == link[i + 1];
+        }
+        if (!incoming) starts.push_back(link[i]);
+        if (!outgoing) ends.push_back(link[i + 1]);
+    }
+    std::vector<VertIdx> segments = link;
+    if (starts.size() == 1 && ends.size() == 1) {
+        segments.insert(segments.end(), {ends[0], starts[0]});  // the merged boundary edge
+    } else if (!starts.empty() || !ends.empty()) {
+        return true;  // pinched: refused by the removal
+    } else if (constrained_spokes.size() == 2) {
+        segments.insert(segments.end(), {constrained_spokes[0], constrained_spokes[1]});
+    } else if (!constrained_spokes.empty()) {
+        return true;  // a constraint end or junction: refused by the removal
+    }
+    // The hole's constrained Delaunay triangulation, its vertices in increasing global order so
+    // that the SoS ranks (ties by index) are the removal's.
+    std::vector<VertIdx> local;
+    for (const VertIdx x : link) local.push_back(x);
+    std::sort(local.begin(), local.end());
+    local.erase(std::unique(local.begin(), local.end()), local.end());
+    std::vector<double> xy;
+    xy.reserve(2 * local.size());
+    for (const VertIdx x : local)
+        xy.insert(xy.end(), {mesh.xy[2 * std::size_t{x}], mesh.xy[2 * std::size_t{x} + 1]});
+    for (VertIdx& x : segments)
+        x = static_cast<VertIdx>(std::lower_bound(local.begin(), local.end(), x) - local.begin());
+    triangulation::Cdt2Result hole;
+    try {
+        hole = triangulation::constrained_delaunay_2d({xy, segments, {}, {}}, {});
+    } catch (const InputError&) {
+        return true;  // not a simple hole (the removal refuses what it cannot do)
+    } catch (const GeometryError&) {
+        return true;
+    }
+    const triangulation::Cdt2Counters& c = hole.counters;
+    if (c.intersections > 0 || c.vertices_on_segments > 0 || c.duplicates > 0 ||
+        hole.mesh.triangle_count() == 0)
+        return true;  // the merged edge meets the link: refused by the removal (ChordBlocked)
+    std::vector<VertIdx> old_triangles;
+    for (const triangulation::TriIdx t : star)
+        for (int k = 0; k < 3; ++k)
+            old_triangles.push_back(
+                mesh.triangles[3 * std::size_t{t} + static_cast<std::size_t>(k)]);
+    const Corner before = smallest_of(mesh.xy, old_triangles);
+    const Corner after = smallest_of(hole.mesh.xy, hole.mesh.triangles);
+    static const AngleFloor floor;
+    return predicates::compare_angles(after, before) != Sign::Negative ||
+           predicates::compare_angles(after, floor.corner()) != Sign::Negative;
+}
 
 std::uint64_t derefinement_pass_2d(AdaptiveMesh2& state, const DerefinementOptions& options,
                                    DerefinementCounters2& counters) {
@@ -78,6 +194,32 @@ std::uint64_t remove_vertex_set_2d(AdaptiveMesh2& state, std::span<const VertIdx
         chosen.swap(independent);
     }
     counters.candidates += chosen.size();
+    // The angle guard: a removal whose retriangulated hole would have a smaller angle than both
+    // its old star's smallest and the floor is refused here (the star of each chosen vertex is
+    // untouched by the others' removals: they are independent).
+    {
+        std::vector<std::uint32_t> first(std::size_t{vertex_count} + 1, 0);
+        for (const VertIdx x : mesh.triangles) ++first[std::size_t{x} + 1];
+        for (std::size_t x = 0; x < vertex_count; ++x) first[x + 1] += first[x];
+        std::vector<triangulation::TriIdx> at(mesh.triangles.size());
+        {
+            std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+            for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+                at[fill[mesh.triangles[i]]++] = static_cast<triangulation::TriIdx>(i / 3);
+        }
+        std::vector<VertIdx> kept;
+        for (const VertIdx v : chosen) {
+            const std::span<const triangulation::TriIdx> star(at.data() + first[v],
+                                                              first[v + 1] - first[v]);
+            if (star.empty() || removal_keeps_angles_2d(mesh, star, v)) {
+                kept.push_back(v);
+            } else {
+                ++counters.refused;
+                ++counters.angle_refused;
+            }
+        }
+        chosen.swap(kept);
+    }
     if (chosen.empty()) {
         if (old_to_new != nullptr) {
             old_to_new->resize(vertex_count);

@@ -99,6 +99,63 @@ ChildPattern child_pattern(const std::array<VertIdx, 3>& c, const std::array<Ver
     throw InputError("h-refinement: " + what);
 }
 
+/// The leaves on each side of an edge (at most two), by edge key: open addressing with linear
+/// probing in a power-of-two table at most half full, keys never erased (a detached leaf leaves
+/// kNone). A closure pass attaches every leaf's three edges; std::unordered_map made that a
+/// sixth of an h-refinement cycle in node allocations.
+class EdgeSides {
+  public:
+    explicit EdgeSides(std::size_t edges) {
+        std::size_t capacity = 16;
+        while (capacity < 2 * edges) capacity *= 2;
+        keys_.assign(capacity, kEmpty);
+        sides_.resize(capacity);
+    }
+    /// The two sides of edge key e, made empty (kNone, kNone) when new.
+    std::array<std::uint32_t, 2>& at(std::uint64_t e) {
+        std::size_t i = slot(e);
+        if (keys_[i] == kEmpty) {
+            if (2 * (size_ + 1) > keys_.size()) {
+                grow();
+                i = slot(e);
+            }
+            keys_[i] = e;
+            sides_[i] = {kNone, kNone};
+            ++size_;
+        }
+        return sides_[i];
+    }
+    /// The sides of e, or nullptr when no leaf was ever attached to it.
+    const std::array<std::uint32_t, 2>* find(std::uint64_t e) const {
+        const std::size_t i = slot(e);
+        return keys_[i] == kEmpty ? nullptr : &sides_[i];
+    }
+
+  private:
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // no edge (u < v < 2^32 - 1)
+    std::size_t slot(std::uint64_t e) const {
+        const std::size_t mask = keys_.size() - 1;
+        std::size_t i = static_cast<std::size_t>((e * 0x9E3779B97F4A7C15ull) >> 17) & mask;
+        while (keys_[i] != kEmpty && keys_[i] != e) i = (i + 1) & mask;
+        return i;
+    }
+    void grow() {
+        std::vector<std::uint64_t> keys = std::move(keys_);
+        std::vector<std::array<std::uint32_t, 2>> sides = std::move(sides_);
+        keys_.assign(2 * keys.size(), kEmpty);
+        sides_.assign(2 * keys.size(), {kNone, kNone});
+        for (std::size_t i = 0; i < keys.size(); ++i) {
+            if (keys[i] == kEmpty) continue;
+            const std::size_t j = slot(keys[i]);
+            keys_[j] = keys[i];
+            sides_[j] = sides[i];
+        }
+    }
+    std::vector<std::uint64_t> keys_;
+    std::vector<std::array<std::uint32_t, 2>> sides_;
+    std::size_t size_ = 0;
+};
+
 }  // namespace
 
 double rounded_midpoint(double a, double b) {
@@ -364,15 +421,11 @@ void HRefinedMesh2::plan_and_apply(std::span<const std::uint64_t> marks,
         };
 
         // The leaves around each edge (at most two).
-        std::unordered_map<std::uint64_t, std::array<std::uint32_t, 2>> around;
-        around.reserve(3 * leaf_nodes_.size());
+        EdgeSides around(2 * leaf_nodes_.size());
         auto attach = [&](std::uint32_t id) {
             for (int k = 0; k < 3; ++k) {
-                auto it = around
-                              .try_emplace(node_edge(nodes_[id], k),
-                                           std::array<std::uint32_t, 2>{kNone, kNone})
-                              .first;
-                (it->second[0] == kNone ? it->second[0] : it->second[1]) = id;
+                std::array<std::uint32_t, 2>& sides = around.at(node_edge(nodes_[id], k));
+                (sides[0] == kNone ? sides[0] : sides[1]) = id;
             }
         };
         auto detach = [&](std::uint32_t id) {
@@ -386,9 +439,9 @@ void HRefinedMesh2::plan_and_apply(std::span<const std::uint64_t> marks,
         std::vector<std::uint64_t> hard;  // committed edges a neighbour cannot split
         std::vector<std::uint32_t> work, touched;
         auto push_around = [&](std::uint64_t e) {
-            const auto it = around.find(e);
-            if (it == around.end()) return;
-            for (const std::uint32_t id : it->second) {
+            const std::array<std::uint32_t, 2>* sides = around.find(e);
+            if (sides == nullptr) return;
+            for (const std::uint32_t id : *sides) {
                 if (id != kNone) work.push_back(id);
             }
         };

@@ -16,6 +16,7 @@
 
 #include "base/errors.hpp"
 #include "generators/adaptation/adaptive_mesh_2d.hpp"
+#include "generators/adaptation/derefinement_2d.hpp"
 #include "generators/adaptation/edge_indicators.hpp"
 #include "generators/adaptation/field_transfer.hpp"
 #include "generators/adaptation/indicator_size_field.hpp"
@@ -26,6 +27,7 @@
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/support/adaptation_fixtures_2d.hpp"
 #include "tests/support/scaled_coordinates.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;
@@ -345,4 +347,30 @@ TEST(Generators_InsertionAdaptation2, SameMeshScaledAtTwoToThePlusMinus600) {
         EXPECT_EQ(state.mesh.triangles, reference.triangles) << "2^" << k;
         ASSERT_TRUE(exactmesh::testing::coordinates_scaled_by(state.mesh.xy, reference.xy, k));
     }
+}
+
+TEST(Generators_Derefinement2, TheAngleGuardAllowsRegularStarsAndRefusesSlivers) {
+    // A 5 x 5 grid with its diagonals by SoS: every interior vertex's hole keeps angles >= 20
+    // degrees (45-degree corners), so the guard lets each go.
+    std::vector<double> xy;
+    for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 5; ++i) xy.insert(xy.end(), {1.0 * i, 1.0 * j});
+    const tri::Triangulation2 mesh = tri::constrained_delaunay_2d({xy, {}, {}, {}}, {}).mesh;
+    std::vector<tri::TriIdx> star;
+    const auto star_of = [&](const tri::Triangulation2& m, tri::VertIdx v) {
+        star.clear();
+        for (std::size_t t = 0; t < m.triangle_count(); ++t)
+            for (int k = 0; k < 3; ++k)
+                if (m.triangles[3 * t + k] == v) star.push_back(static_cast<tri::TriIdx>(t));
+        return std::span<const tri::TriIdx>(star);
+    };
+    for (const tri::VertIdx v : {6u, 7u, 8u, 11u, 12u, 13u, 16u, 17u, 18u})
+        EXPECT_TRUE(gen::removal_keeps_angles_2d(mesh, star_of(mesh, v), v)) << v;
+    // A vertex in the middle of a straight bottom side under a flat trapezoid: its star's
+    // smallest angle is atan(0.2) (11.3 degrees); removing it (the two boundary edges merge)
+    // leaves a triangle with atan(0.1 / 1.5) (3.8 degrees) at a bottom corner: refused.
+    const std::vector<double> flat{-1, 0, 1, 0, 0.5, 0.1, -0.5, 0.1, 0, 0};
+    const tri::Triangulation2 m2 = tri::constrained_delaunay_2d({flat, {}, {}, {}}, {}).mesh;
+    ASSERT_EQ(star_of(m2, 4).size(), 3u);
+    EXPECT_FALSE(gen::removal_keeps_angles_2d(m2, star_of(m2, 4), 4));
 }
