@@ -122,8 +122,6 @@ std::string adaptive_run(const Settings& s, std::string_view field_name,
     return "{\"field\": " + quoted(field_name) +
            ", \"indicator\": " + quoted(gen::edge_indicator_name(indicator)) +
            ", \"method\": " + quoted(ad::method_name(method)) +
-           ", \"initial_cycles\": " + std::to_string(s.initial_cycles) +
-           ", \"budget\": " + std::to_string(options.max_vertices) +
            ", \"problem\": " + quoted(problem) + ", \"cycles\": [\n    " + join(cycles, ",\n    ") +
            "]}";
 }
@@ -182,6 +180,8 @@ std::string transient_run(const Settings& s, ad::Method method, const gen::Domai
            ", \"indicator\": \"second-difference\", \"derefine_fraction\": 0.1, "
            "\"cycles_per_step\": " +
            std::to_string(s.transient_cycles) + ", \"dt\": " + number(s.dt) +
+           ", \"initial_cycles\": " + std::to_string(s.initial_cycles) +
+           ", \"budget\": " + std::to_string(options.max_vertices) +
            ", \"problem\": " + quoted(problem) + ", \"steps\": [\n    " + join(steps, ",\n    ") +
            "]}";
 }
