@@ -4,7 +4,6 @@
 #include "generators/adaptation/derefinement_2d.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 
 #include "base/errors.hpp"
@@ -22,19 +21,15 @@ using triangulation::VertIdx;
 
 namespace {
 
-// The reference corner of kAngleFloorDegrees: (0, 0), (1, 0), (cos, sin) rounded once (a fixed
-// triangle, so the floor is the same for a mesh at any scale: compare_angles is exact).
-struct AngleFloor {
-    double o[2] = {0, 0};
-    double p[2] = {1, 0};
-    double q[2];
-    AngleFloor() {
-        const double radians = kAngleFloorDegrees * 3.14159265358979323846 / 180;
-        q[0] = std::cos(radians);
-        q[1] = std::sin(radians);
-    }
-    Corner corner() const { return {o, p, q}; }
-};
+// The reference corner of kAngleFloorDegrees: (0, 0), (1, 0), (cos 10°, sin 10°) as double
+// literals (correctly rounded once by the compiler, the same on every platform, unlike a libm
+// cos/sin), a fixed triangle, so the floor is the same for a mesh at any scale: compare_angles
+// is exact.
+static_assert(kAngleFloorDegrees == 10.0, "the literals below are cos and sin of 10 degrees");
+constexpr double kFloorO[2] = {0, 0};
+constexpr double kFloorP[2] = {1, 0};
+constexpr double kFloorQ[2] = {0.98480775301220805936, 0.17364817766693034885};
+constexpr Corner kFloorCorner{kFloorO, kFloorP, kFloorQ};
 
 // The smallest corner of the triangles (3 vertex numbers each, counter-clockwise) of xy.
 Corner smallest_of(std::span<const double> xy, std::span<const VertIdx> triangles) {
@@ -124,9 +119,8 @@ bool removal_keeps_angles_2d(const triangulation::Triangulation2& mesh,
                 mesh.triangles[3 * std::size_t{t} + static_cast<std::size_t>(k)]);
     const Corner before = smallest_of(mesh.xy, old_triangles);
     const Corner after = smallest_of(hole.mesh.xy, hole.mesh.triangles);
-    static const AngleFloor floor;
     return predicates::compare_angles(after, before) != Sign::Negative ||
-           predicates::compare_angles(after, floor.corner()) != Sign::Negative;
+           predicates::compare_angles(after, kFloorCorner) != Sign::Negative;
 }
 
 std::uint64_t derefinement_pass_2d(AdaptiveMesh2& state, const DerefinementOptions& options,
