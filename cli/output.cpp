@@ -43,6 +43,8 @@ constexpr StageRow kStages2d[] = {
     {"corner_dot_sign", &Stats::corner_dot_sign},
     {"direction_dot_sign", &Stats::direction_dot_sign},
     {"within_rounding_of_segment", &Stats::within_rounding_of_segment},
+    {"in_ellipse", &Stats::in_ellipse},
+    {"compare_metric_lengths", &Stats::compare_metric_lengths},
 };
 constexpr StageRow kStages3d[] = {
     {"orient3d", &Stats::orient3d},
@@ -65,7 +67,8 @@ OutputFormat output_format(const std::filesystem::path& output) {
                      "' (use .ele, .msh, .vtu or .svg)");
 }
 
-std::vector<std::filesystem::path> output_files(const std::filesystem::path& output, OutputFormat format,
+std::vector<std::filesystem::path> output_files(const std::filesystem::path& output,
+                                                OutputFormat format,
                                                 std::initializer_list<const char*> ele_companions) {
     std::vector<std::filesystem::path> files{output};
     if (format == OutputFormat::Ele) {
@@ -162,7 +165,8 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
                 vertices.attributes.assign(vertex_field.begin(), vertex_field.end());
             }
             std::vector<std::int32_t> markers;
-            for (const std::uint32_t s : result.piece_segment) markers.push_back(static_cast<std::int32_t>(s + base));
+            for (const std::uint32_t s : result.piece_segment)
+                markers.push_back(static_cast<std::int32_t>(s + base));
             set.stage(output, io::format_ele(mesh.triangles, base, result.triangle_attributes));
             set.stage(neigh, io::format_neigh(mesh.neighbors, base));
             set.stage(node, io::format_node(vertices));
@@ -202,13 +206,15 @@ void print_warnings(const std::vector<std::string>& warnings) {
         std::cerr << "exactmesh: warning: " << warnings[i] << '\n';
     }
     if (warnings.size() > kShownWarnings) {
-        std::cerr << "exactmesh: warning: " << warnings.size() - kShownWarnings << " more warnings\n";
+        std::cerr << "exactmesh: warning: " << warnings.size() - kShownWarnings
+                  << " more warnings\n";
     }
 }
 
 void print_predicate_stats(const predicates::PredicateStats& stats, int dimension) {
     if (!predicates::stats_enabled()) {
-        std::cout << "predicate_stages: compiled out (configure with -DEXACTMESH_PREDICATE_STATS=ON)\n";
+        std::cout
+            << "predicate_stages: compiled out (configure with -DEXACTMESH_PREDICATE_STATS=ON)\n";
         return;
     }
     std::span<const StageRow> stages = kStages2d;
