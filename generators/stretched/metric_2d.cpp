@@ -257,6 +257,15 @@ void matrix_for_predicate(const Metric2& metric, double out[3]) {
     out[0] = e1 * cc + e2 * ss;
     out[1] = (e1 - e2) * cs;
     out[2] = e1 * ss + e2 * cc;
+    // Rounded to doubles, a rotated metric keeps its small eigenvalue only to within about
+    // 2^-53 of the large one: beyond an aspect ratio of about 2^26 the rounded matrix may be
+    // singular or indefinite. The exact predicate would then decide on a degenerate quadric, so
+    // M22 is raised by ulps until M11 M22 - M12^2 > 0 (Kahan's determinant has a relative error
+    // of at most 2 ulps, so its sign is exact): each ulp adds at least M11 * 2^-105 > 0 to the
+    // determinant, a step or two suffice.
+    for (int step = 0; step < 64 && !(kahan_determinant(out[0], out[1], out[1], out[2]) > 0);
+         ++step)
+        out[2] = std::nextafter(out[2], 2.0);
 }
 
 Metric2 metric_intersection(const Metric2& a, const Metric2& b, double tolerance) {

@@ -85,7 +85,11 @@ double metric_length(const Metric2& metric, double vx, double vy);
 
 /// out = {M11, M12, M22} of (h_min^2) M, whose largest eigenvalue is 1 and smallest
 /// (h_min / h_max)^2 >= 2^-500: no overflow or underflow at any scale. The in-ellipse predicate's
-/// sign is unchanged by the positive factor h_min^2.
+/// sign is unchanged by the positive factor h_min^2. The doubles are positive definite
+/// (M11 M22 - M12^2 > 0 exactly): rounding keeps a rotated metric's small eigenvalue only to
+/// within about 2^-53 of the large one, so beyond an aspect ratio of about 2^26 (not aligned
+/// with the axes) M22 is raised by an ulp or two and the predicate sees a metric of aspect ratio
+/// about 2^26 in that direction; axis-aligned metrics are exact up to 2^250.
 void matrix_for_predicate(const Metric2& metric, double out[3]);
 
 /// The intersection of two metrics: the metric of the largest ellipse contained in both unit
