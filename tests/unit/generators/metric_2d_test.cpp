@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -279,4 +280,19 @@ TEST(Generators_Metric2d, Intersection) {
     EXPECT_EQ(r.h1, a.h1);
     EXPECT_EQ(r.h2, a.h2);
     EXPECT_EQ(r.c, a.c);
+}
+
+TEST(Generators_Metric2d, ExtremeMagnitudes) {
+    // Entries near the ends of the double range: sizes 1e-150 and about 4.5e161, no overflow.
+    const gen::Metric2 huge = gen::metric_from_matrix(1e300, 0, 4e300);
+    EXPECT_NEAR(huge.h1, 0.5e-150, 1e-165);
+    EXPECT_NEAR(huge.h2, 1e-150, 1e-165);
+    EXPECT_NEAR(huge.c * huge.c, 0, 1e-30);  // the larger eigenvalue along y
+    const double smallest = std::numeric_limits<double>::denorm_min();
+    const gen::Metric2 subnormal = gen::metric_from_matrix(smallest, 0, smallest);
+    EXPECT_NEAR(subnormal.h1 / (1 / std::sqrt(smallest)), 1, 1e-15);
+    EXPECT_EQ(subnormal.h1, subnormal.h2);
+    // Their lengths: a vector of length 1e-150 along y is one unit in the first.
+    EXPECT_NEAR(gen::metric_length(huge, 0, 0.5e-150), 1, 1e-15);
+    EXPECT_NEAR(gen::metric_length(huge, 3e-150, 4 * 0.5e-150), 5, 1e-14);  // (3, 4) in units
 }
