@@ -67,7 +67,7 @@ TEST(Generators_Metric2d, MatrixRoundTripRotated) {
         const gen::Metric2 back = gen::metric_from_matrix(M[0], M[1], M[2]);
         const std::array<double, 3> again = matrix_of(back);
         const double norm = std::max(std::fabs(M[0]), std::fabs(M[2]));
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(again[k], M[k], 1e-13 * norm) << i;
+        for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(again[k], M[k], 1e-13 * norm) << i;
         EXPECT_LE(back.h1, back.h2);
         EXPECT_NO_THROW(gen::check_metric(back));
     }
@@ -171,7 +171,7 @@ TEST(Generators_Metric2d, ScaleInvarianceAt2ToThe600) {
         double out[3], out_k[3];
         gen::matrix_for_predicate(m, out);
         gen::matrix_for_predicate(scaled(m, k), out_k);
-        for (int j = 0; j < 3; ++j) EXPECT_EQ(out_k[j], out[j]) << k;
+        for (std::size_t j = 0; j < 3; ++j) EXPECT_EQ(out_k[j], out[j]) << k;
     }
     // A matrix times 2^-1000 (sizes times 2^500) gives the sizes times 2^500 exactly.
     const gen::Metric2 base = gen::metric_from_matrix(3, 1, 2);
@@ -189,13 +189,13 @@ TEST(Generators_Metric2d, LogFormRoundTripAndMeans) {
         const gen::Metric2 back = gen::metric_from_log_form(gen::log_form(m));
         const std::array<double, 3> M = matrix_of(m), again = matrix_of(back);
         const double norm = std::max(std::fabs(M[0]), std::fabs(M[2]));
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(again[k], M[k], 1e-12 * norm) << i;
+        for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(again[k], M[k], 1e-12 * norm) << i;
         // A constant field: the mean of copies is the metric itself.
         const std::array<gen::Metric2, 3> same = {m, m, m};
         const std::array<double, 3> w = {weight(random), weight(random), 0.25};
         const gen::Metric2 mean = gen::log_euclidean_mean(same, w);
         const std::array<double, 3> mean_matrix = matrix_of(mean);
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(mean_matrix[k], M[k], 1e-12 * norm) << i;
+        for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(mean_matrix[k], M[k], 1e-12 * norm) << i;
         // Positive definite, and log det linear: the geometric mean of the areas h1 h2.
         const gen::Metric2 other =
             rotated(std::exp(log_size(random)), std::exp(log_size(random)), angle(random));
@@ -220,7 +220,7 @@ TEST(Generators_Metric2d, PredicateMatrix) {
     double out[3];
     gen::matrix_for_predicate(m, out);
     const std::array<double, 3> M = matrix_of(m);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(out[k], M[k] * 1e-4, 1e-15) << k;
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(out[k], M[k] * 1e-4, 1e-15) << k;
     // Largest eigenvalue 1, smallest (h_min / h_max)^2 = 2^-500 at the aspect ratio limit:
     // exact when aligned with the axes, and positive definite when rotated (the rounded
     // matrix cannot hold an eigenvalue 2^-500 times the other; M22 is raised to keep det > 0).

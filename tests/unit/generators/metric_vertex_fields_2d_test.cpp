@@ -35,7 +35,7 @@ tri::Triangulation2 grid_mesh() {
 void expect_graded(const tri::Triangulation2& mesh, const std::vector<gen::Metric2>& metrics,
                    double beta) {
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-        for (int k = 0; k < 3; ++k) {
+        for (std::size_t k = 0; k < 3; ++k) {
             const std::uint32_t p = mesh.triangles[3 * t + k],
                                 q = mesh.triangles[3 * t + (k + 1) % 3];
             for (const auto& [a, b] : {std::pair{p, q}, std::pair{q, p}}) {
