@@ -171,10 +171,12 @@ void run_mesh(const MeshArguments& arguments) {
     std::optional<gen::MetricField2> metric;
     if (!arguments.metric.empty()) {
         metric = metric_from_option(arguments.metric);
-        if (!arguments.quality) {
+        if (!arguments.quality && !gen::find_mesh_generator_2d(arguments.generator)
+                                       .honours.contains(gen::MeshOption::Metric)) {
             print_warnings({"--metric " + arguments.metric +
-                            " ignored without --quality (for now it feeds only the "
-                            "stretched-mesh quality report)"});
+                            " ignored without --quality (--generator " + arguments.generator +
+                            " does not use it; it feeds only the stretched-mesh quality "
+                            "report)"});
         }
     }
 
@@ -219,6 +221,7 @@ void run_mesh(const MeshArguments& arguments) {
     options.size = size;
     options.max_steiner_points = arguments.max_steiner;
     options.cdt.first_index = base;
+    options.metric = metric;
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
     print_warnings(ignored_options(generator, arguments, poly));
     // The domain's constrained triangulation, built once (by the first step that needs it) for

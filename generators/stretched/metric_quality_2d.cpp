@@ -9,7 +9,7 @@
 #include <numbers>
 #include <vector>
 
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "predicates/power_of_two.hpp"
 
 namespace exactmesh::generators {

@@ -7,7 +7,7 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 
 namespace exactmesh::generators {
 
