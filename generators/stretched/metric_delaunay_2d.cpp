@@ -126,7 +126,11 @@ bool MetricMesher::too_close(tri::TriIdx t, const Metric2& m, double x, double y
     const auto close = [&](tri::VertIdx v) {
         if (v == tri::kInfinite) return false;
         const double* p = mesh.point(v);
-        return metric_length(m, p[0] - x, p[1] - y) < options_.min_spacing;
+        const double dx = p[0] - x, dy = p[1] - y;
+        // The length of the would-be edge from the metrics at both of its ends, as the
+        // insertion passes measure edges.
+        return edge_length(metric_length(m, dx, dy), metric_length(metric_of(v), dx, dy)).length <
+               options_.min_spacing;
     };
     for (unsigned k = 0; k < 3; ++k) {
         if (close(mesh.tv[3 * t + k])) return true;

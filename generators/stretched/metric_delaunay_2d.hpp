@@ -9,8 +9,9 @@
 //  3. passes over the mesh's unconstrained edges: an edge longer than sqrt 2 in the metric
 //     (its length with the metric varying geometrically between its ends' lengths) proposes the
 //     point halfway along it in metric length; a proposal is dropped when a vertex of the
-//     triangle holding it or of that triangle's neighbours lies closer than `min_spacing` in
-//     the metric; the others are inserted, in Hilbert order, by Bowyer-Watson in the plane
+//     triangle holding it or of that triangle's neighbours lies closer than `min_spacing` (the
+//     would-be edge measured as edges are: from the metrics at both ends); the others are
+//     inserted, in Hilbert order, by Bowyer-Watson in the plane
 //     mapped by the metric at the point (ConstrainedTriangulation2::insert_in_metric_cavity:
 //     the cavity decided by the exact in_ellipse with the shared symbolic perturbation, made
 //     star-shaped by exact orient2d); passes stop when no point is inserted;
@@ -39,7 +40,9 @@ namespace exactmesh::generators {
 
 struct MetricDelaunayOptions2 {
     MetricField2 metric;
-    /// A proposal closer than this (metric length) to a nearby vertex is dropped.
+    /// A proposal closer than this (metric length) to a nearby vertex is dropped. 0.7 gave the
+    /// largest share of unit edges of 0.5, 0.6, 0.7, 0.8 on a rotated (aspect 100), a boundary-
+    /// layer and a curved-layer metric on the unit square (2026-12-02).
     double min_spacing = 0.7;
     /// Largest number of points inserted in the interior (0: kDefaultMetricPointBudget); the
     /// estimate of the mesh's size is checked against it before any work.
