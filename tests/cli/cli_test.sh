@@ -1017,13 +1017,36 @@ mesh_metric() {
   [[ ! -e "$work/x.ele" ]] || fail "mesh --metric: a refused run wrote its output"
 }
 
+mesh_metric_delaunay() {
+  # A boundary layer along y = 0 on the NACA 0012 domain: stretched cells, most edges of unit
+  # metric length, the generator's counters and construct_seconds.
+  run 0 mesh --domain naca0012 --generator metric-delaunay -o "$work/md.vtu" --stats --quality \
+    --metric '400;0;1/(0.0005+0.3*abs(y))^2' || return
+  grep -Eq '^quality.metric_edge_length: .* edges, (9[0-9]|100)\.[0-9]+% in \[1/sqrt2, sqrt2\]\)$' "$work/out" ||
+    fail "unit edges: $(grep metric_edge "$work/out")"
+  grep -Eq '^quality.aspect_ratio: min [0-9.]+ median [0-9.]+ max ([1-9][0-9]{2,})\.' "$work/out" ||
+    fail "no stretched cells: $(grep aspect_ratio "$work/out")"
+  for counter in boundary_points passes proposals too_close inserted rejected cavity_corrections swaps swap_budget_hits; do
+    grep -Eq "^$counter: [0-9]+$" "$work/out" || fail "no $counter: $(cat "$work/out")"
+  done
+  grep -Eq '^construct_seconds: [0-9.]+$' "$work/out" || fail "no construct_seconds"
+  [[ -s "$work/md.vtu" ]] || fail "no .vtu written"
+  # Without --metric it meshes to the size's isotropic metric; with neither, the default size.
+  run 0 mesh --domain key --generator metric-delaunay -o "$work/k.ele" --size 0.1 --quality || return
+  grep -Eq '^quality.min_angle: ' "$work/out" || fail "no quality report: $(cat "$work/out")"
+  # A metric asking for far too many triangles is refused at once, naming its estimate.
+  expect_error 2 "the metric \(expression 1e16;0;1e16\) asks for about .* triangles" \
+    mesh --domain key --generator metric-delaunay -o "$work/x.ele" --metric '1e16;0;1e16'
+  [[ ! -e "$work/x.ele" ]] || fail "a refused run wrote its output"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
     swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
-    region_areas | adapt | adapt_bad_input | mesh_metric)
+    region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2
