@@ -17,6 +17,7 @@
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/sizing/size_function.hpp"
+#include "generators/stretched/advancing_layers_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 
 namespace exactmesh::generators {
@@ -29,12 +30,17 @@ struct MeshOptions2 {
     double polish_angle = -1;  ///< Delaunay refinement's polish (RefinementOptions2), -1: automatic
     std::uint64_t max_steiner_points = 0;  ///< 0: the generator's automatic budget
     triangulation::Cdt2Options cdt;        ///< numbering, recovery of the initial CDT
+    /// The boundary layers (advancing-layers only: --layers, --quads).
+    LayerParameters2 layers;
 };
 
 /// A generator's mesh (caller's numbering, pieces, warnings) and its work counters in the order
 /// `--stats` prints them.
 struct MeshRun2 {
     triangulation::Cdt2Result mesh;
+    /// 4·#Q quadrilaterals, counter-clockwise (a mixed mesh: advancing-layers with --quads),
+    /// beside mesh.mesh.triangles and numbered like them; empty for a triangle mesh.
+    std::vector<triangulation::VertIdx> quads;
     std::vector<std::pair<std::string, std::uint64_t>> counters;
 };
 
@@ -48,6 +54,7 @@ enum class MeshOption : std::uint32_t {
     MaxSteinerPoints = 1u << 3,  ///< MeshOptions2::max_steiner_points (--max-steiner)
     RegionAttributes = 1u << 4,  ///< the regions' attributes, carried to the mesh's triangles
     RegionAreas = 1u << 5,       ///< the regions' maximum areas (the 4th number, > 0)
+    Layers = 1u << 6,            ///< MeshOptions2::layers (--layers, --quads)
 };
 
 /// A set of MeshOption.
