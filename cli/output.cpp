@@ -65,7 +65,8 @@ OutputFormat output_format(const std::filesystem::path& output) {
                      "' (use .ele, .msh, .vtu or .svg)");
 }
 
-std::vector<std::filesystem::path> output_files(const std::filesystem::path& output, OutputFormat format,
+std::vector<std::filesystem::path> output_files(const std::filesystem::path& output,
+                                                OutputFormat format,
                                                 std::initializer_list<const char*> ele_companions) {
     std::vector<std::filesystem::path> files{output};
     if (format == OutputFormat::Ele) {
@@ -146,12 +147,15 @@ triangulation::InsertionOrder insertion_order(const std::string& name) {
 void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
                               std::uint32_t base, const std::string& svg_title,
-                              std::span<const double> vertex_field) {
+                              std::span<const double> vertex_field,
+                              std::span<const triangulation::VertIdx> quads) {
     namespace fs = std::filesystem;
     const triangulation::Triangulation2& mesh = result.mesh;
     const fs::path& output = files[0];
     switch (format) {
         case OutputFormat::Ele: {
+            if (!quads.empty())
+                throw InputError(output.string() + ": a .ele file holds triangles only");
             const fs::path &neigh = files[1], &node = files[2], &pieces = files[3];
             io::NodeFile vertices;
             vertices.xy = mesh.xy;
@@ -162,7 +166,8 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
                 vertices.attributes.assign(vertex_field.begin(), vertex_field.end());
             }
             std::vector<std::int32_t> markers;
-            for (const std::uint32_t s : result.piece_segment) markers.push_back(static_cast<std::int32_t>(s + base));
+            for (const std::uint32_t s : result.piece_segment)
+                markers.push_back(static_cast<std::int32_t>(s + base));
             set.stage(output, io::format_ele(mesh.triangles, base, result.triangle_attributes));
             set.stage(neigh, io::format_neigh(mesh.neighbors, base));
             set.stage(node, io::format_node(vertices));
@@ -170,16 +175,22 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
             return;
         }
         case OutputFormat::Msh:
-            set.stage(output, io::format_msh(mesh.xy, mesh.triangles, vertex_field));
+            set.stage(output, io::format_msh(mesh.xy, mesh.triangles, vertex_field, quads));
             return;
         case OutputFormat::Vtu:
-            set.stage(output, io::format_vtu(mesh.xy, mesh.triangles, base, vertex_field));
+            set.stage(output, io::format_vtu(mesh.xy, mesh.triangles, base, vertex_field, quads));
             return;
         case OutputFormat::Svg: {
             io::SvgOptions svg;
             svg.title = svg_title;
             svg.segments = result.pieces;
-            set.stage(output, io::format_svg(mesh.xy, mesh.triangles, svg));
+            // A picture: each quadrilateral drawn as two triangles.
+            std::vector<triangulation::VertIdx> drawn(mesh.triangles);
+            for (std::size_t q = 0; q < quads.size() / 4; ++q) {
+                const auto c = quads.subspan(4 * q, 4);
+                drawn.insert(drawn.end(), {c[0], c[1], c[2], c[0], c[2], c[3]});
+            }
+            set.stage(output, io::format_svg(mesh.xy, drawn, svg));
             return;
         }
     }
@@ -202,13 +213,15 @@ void print_warnings(const std::vector<std::string>& warnings) {
         std::cerr << "exactmesh: warning: " << warnings[i] << '\n';
     }
     if (warnings.size() > kShownWarnings) {
-        std::cerr << "exactmesh: warning: " << warnings.size() - kShownWarnings << " more warnings\n";
+        std::cerr << "exactmesh: warning: " << warnings.size() - kShownWarnings
+                  << " more warnings\n";
     }
 }
 
 void print_predicate_stats(const predicates::PredicateStats& stats, int dimension) {
     if (!predicates::stats_enabled()) {
-        std::cout << "predicate_stages: compiled out (configure with -DEXACTMESH_PREDICATE_STATS=ON)\n";
+        std::cout
+            << "predicate_stages: compiled out (configure with -DEXACTMESH_PREDICATE_STATS=ON)\n";
         return;
     }
     std::span<const StageRow> stages = kStages2d;

@@ -658,9 +658,8 @@ class LayerBuilder {
             xy_.push_back(candidate_xy_[2 * s + 1]);
             ++counters_.layer_points;
         }
-        const auto real = [&](VertIdx v) {
-            return v >= provisional_base_ ? id[v - provisional_base_] : v;
-        };
+        const VertIdx provisional = provisional_base_;
+        const auto real = [&](VertIdx v) { return v >= provisional ? id[v - provisional] : v; };
         provisional_base_ = kNone;
         for (const Segment& s : p.segments) add_segment({real(s.a), real(s.b)});
         for (Cell c : p.cells) {
@@ -804,7 +803,6 @@ AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
     LayerBuilder builder(cdt, options.layers, counters);
     if (layered) builder.build();
     const std::vector<double>& xy = builder.xy();
-
     // The front: per wall loop, the top of every stack in order (repeats removed).
     std::vector<VertIdx> fill_segments;
     std::vector<std::uint32_t> fill_segment_origin;  // input segment, or kNone for the front
