@@ -834,11 +834,6 @@ AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
     const tri::Pslg fill_pslg{xy, fill_segments, pslg.holes, {}};
     const MeshDomain2 fill_domain(fill_pslg, options.cdt);
     const MeshDomain2& filled = front.empty() ? domain : fill_domain;
-    if (front.empty()) {
-        fill_segment_origin.assign(cdt.piece_segment.size(), 0);
-        for (std::size_t p = 0; p < fill_segment_origin.size(); ++p)
-            fill_segment_origin[p] = static_cast<std::uint32_t>(p);
-    }
     const SizeFunction base =
         options.size.bounded() ? options.size : graded_size_from_boundary(filled);
     // The fill's size near the front: at least 1.5 times the length of the front edges near
@@ -879,8 +874,18 @@ AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
     frontal.cdt = options.cdt;
     frontal.max_steiner_points = options.max_steiner_points;
     FrontalDelaunayResult2 fill = frontal_delaunay_2d(filled, frontal);
-    if (!front.empty() &&
-        (fill.mesh.counters.intersections > 0 || fill.mesh.counters.vertices_on_segments > 0)) {
+    if (front.empty()) {
+        // No layers: the frontal mesh of the domain as it is.
+        result.mesh = std::move(fill.mesh);
+        counters.fill_triangles = counters.triangles = result.mesh.mesh.triangle_count();
+        if (layered) {
+            result.mesh.warnings.push_back(
+                "advancing layers: the domain has no wall (no hole loop; the layers grow from "
+                "the closed inner boundaries): no layers, the domain meshed by the fill alone");
+        }
+        return result;
+    }
+    if (fill.mesh.counters.intersections > 0 || fill.mesh.counters.vertices_on_segments > 0) {
         throw GeometryError(
             "advancing layers: the last layer's front crosses itself or the "
             "boundary (a bug)");
@@ -939,11 +944,6 @@ AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
     mesh.input_vertex_count = cdt.input_vertex_count;
     mesh.merged_into = cdt.merged_into;
     mesh.warnings = cdt.warnings;
-    if (layered && builder.stacks().empty()) {
-        mesh.warnings.push_back(
-            "advancing layers: the domain has no wall (no hole loop; the layers grow from the "
-            "closed inner boundaries): no layers, the domain meshed by the fill alone");
-    }
     mesh.counters = cdt.counters;
 
     // The aspect ratio reached at the wall: a wall piece over the first height, where both of

@@ -967,13 +967,58 @@ adapt_bad_input() {
   [[ ! -e "$work/a.ele" ]] || fail "adapt: a refused run wrote its output"
 }
 
+# Advancing layers (issue 14): --layers and --quads; the mixed mesh in .vtu and .msh read back by
+# meshio (quads and triangles as printed), the counters of --stats, the quality note; every bad
+# value or combination refused with exit status 2 and one line.
+layers() {
+  run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-5,1.2 --quads \
+    -o "$work/naca.vtu" --stats --quality || return
+  local quads triangles
+  quads=$(awk '/^quads: / { print $2; exit }' "$work/out")
+  triangles=$(awk '/^triangles: / { print $2; exit }' "$work/out")
+  [[ $quads -gt 1000 ]] || fail "layers: $quads quads: $(cat "$work/out")"
+  for counter in stacks layers stopped_aspect_ratio stopped_collision stopped_max_layers \
+    layer_quads fill_triangles max_wall_aspect_ratio construct_seconds quality.note; do
+    grep -Eq "^$counter: " "$work/out" || fail "layers --stats/--quality: no $counter line"
+  done
+  (($(awk '/^max_wall_aspect_ratio: / { print $2 }' "$work/out") >= 1000)) ||
+    fail "layers: the aspect ratio at the wall is below 1000: $(cat "$work/out")"
+  run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-5,1.2 --quads \
+    -o "$work/naca.msh" || return
+  for file in naca.vtu naca.msh; do
+    /usr/bin/python3 -c 'import sys, meshio
+m = meshio.read(sys.argv[1])
+count = {c.type: len(c.data) for c in m.cells}
+assert count.get("quad", 0) == int(sys.argv[2]), count
+assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/$file" "$quads" "$triangles" ||
+      fail "meshio does not read $quads quads and $triangles triangles from $file"
+  done
+  run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2,20 -o "$work/naca.ele" &&
+    ! grep -q '^quads:' "$work/out" || fail "layers: split quads still reported as quads"
+  expect_error 2 'a \.ele file holds triangles only' \
+    mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2 --quads -o "$work/x.ele"
+  expect_error 2 'first height must be a finite number > 0 \(got 0\)' \
+    mesh --domain naca0012 --generator advancing-layers --layers 0,1.2 -o "$work/x.vtu"
+  expect_error 2 'growth ratio must be in \[1, 10\] \(got 0\.5\)' \
+    mesh --domain naca0012 --generator advancing-layers --layers 1e-4,0.5 -o "$work/x.vtu"
+  expect_error 2 'number of layers must be a whole number' \
+    mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2,0 -o "$work/x.vtu"
+  expect_error 2 'expected FIRST_HEIGHT,GROWTH\[,MAX_LAYERS\]' \
+    mesh --domain naca0012 --generator advancing-layers --layers 1e-4 -o "$work/x.vtu"
+  expect_error 2 'needs --layers' mesh --domain naca0012 --generator advancing-layers -o "$work/x.vtu"
+  expect_error 2 'apply to --generator advancing-layers only, not frontal' \
+    mesh --domain naca0012 --generator frontal --layers 1e-4,1.2 -o "$work/x.vtu"
+  expect_error 2 '--smooth would move the layers' \
+    mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2 --smooth 2 -o "$work/x.vtu"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
     swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
-    region_areas | adapt | adapt_bad_input)
+    region_areas | adapt | adapt_bad_input | layers)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2
