@@ -10,7 +10,7 @@
 # include only themselves and the families listed before them (DESIGN.md: one way inside a
 # layer too): checks rely on the mesh types alone, never on the algorithms they check.
 set(families_triangulation mesh checks delaunay constrained modification)
-set(families_generators sizing boundary mesh_2d inputs adaptation)
+set(families_generators sizing boundary stretched mesh_2d inputs adaptation)
 set(allowed_base "base")
 set(allowed_predicates "base|predicates")
 set(allowed_triangulation "base|predicates|triangulation")

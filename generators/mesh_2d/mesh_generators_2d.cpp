@@ -241,6 +241,15 @@ MeshRun2 run_frontal_delaunay(const MeshDomain2& domain, const MeshOptions2& opt
     return {std::move(result.mesh), {}, counter_list(result.counters)};
 }
 
+/// The fill of advancing-layers: frontal Delaunay over the layers' outside.
+tri::Cdt2Result frontal_fill(const MeshDomain2& domain, const SizeFunction& size,
+                             std::uint64_t max_steiner_points) {
+    FrontalDelaunayOptions2 frontal;
+    frontal.size = size;
+    frontal.max_steiner_points = max_steiner_points;
+    return std::move(frontal_delaunay_2d(domain, frontal).mesh);
+}
+
 MeshRun2 run_advancing_layers(const MeshDomain2& domain, const MeshOptions2& options) {
     check_size_budget(domain, options, false);
     AdvancingLayersOptions2 layers;
@@ -248,6 +257,7 @@ MeshRun2 run_advancing_layers(const MeshDomain2& domain, const MeshOptions2& opt
     layers.size = options.size;
     layers.cdt = options.cdt;
     layers.max_steiner_points = options.max_steiner_points;
+    layers.fill = &frontal_fill;
     AdvancingLayersResult2 result = advancing_layers_2d(domain, layers);
     return {std::move(result.mesh), std::move(result.quads), counter_list(result.counters)};
 }

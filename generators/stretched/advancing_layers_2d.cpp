@@ -14,7 +14,6 @@
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
-#include "generators/mesh_2d/frontal_delaunay_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
@@ -795,6 +794,7 @@ MixedMeshCheck2 check_mixed_mesh_2d(std::span<const double> xy, std::span<const 
 
 AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
                                            const AdvancingLayersOptions2& options) {
+    EM_ASSERT(options.fill != nullptr);
     AdvancingLayersResult2 result;
     AdvancingLayersCounters2& counters = result.counters;
     const tri::Cdt2Result& cdt = domain.triangulation();
@@ -869,14 +869,10 @@ AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
             },
             "the larger of " + base.describe() + " and 1.5 times the last layer's edges");
     }
-    FrontalDelaunayOptions2 frontal;
-    frontal.size = fill_size;
-    frontal.cdt = options.cdt;
-    frontal.max_steiner_points = options.max_steiner_points;
-    FrontalDelaunayResult2 fill = frontal_delaunay_2d(filled, frontal);
+    tri::Cdt2Result fill_mesh = options.fill(filled, fill_size, options.max_steiner_points);
     if (front.empty()) {
         // No layers: the frontal mesh of the domain as it is.
-        result.mesh = std::move(fill.mesh);
+        result.mesh = std::move(fill_mesh);
         counters.fill_triangles = counters.triangles = result.mesh.mesh.triangle_count();
         if (layered) {
             result.mesh.warnings.push_back(
@@ -885,7 +881,7 @@ AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
         }
         return result;
     }
-    if (fill.mesh.counters.intersections > 0 || fill.mesh.counters.vertices_on_segments > 0) {
+    if (fill_mesh.counters.intersections > 0 || fill_mesh.counters.vertices_on_segments > 0) {
         throw GeometryError(
             "advancing layers: the last layer's front crosses itself or the "
             "boundary (a bug)");
@@ -894,7 +890,7 @@ AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
     // Merge: the fill keeps every vertex of its input at its index, so the layers' vertices are
     // the same in both meshes.
     tri::Cdt2Result& mesh = result.mesh;
-    mesh.mesh.xy = std::move(fill.mesh.mesh.xy);
+    mesh.mesh.xy = std::move(fill_mesh.mesh.xy);
     std::vector<VertIdx>& triangles = mesh.mesh.triangles;
     for (const Cell& c : builder.cells()) {
         if (c.is_quad()) ++counters.layer_quads;
@@ -907,18 +903,18 @@ AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
         }
     }
     counters.layer_triangles = triangles.size() / 3;
-    counters.fill_triangles = fill.mesh.mesh.triangle_count();
-    triangles.insert(triangles.end(), fill.mesh.mesh.triangles.begin(),
-                     fill.mesh.mesh.triangles.end());
+    counters.fill_triangles = fill_mesh.mesh.triangle_count();
+    triangles.insert(triangles.end(), fill_mesh.mesh.triangles.begin(),
+                     fill_mesh.mesh.triangles.end());
     counters.triangles = triangles.size() / 3;
     counters.quads = result.quads.size() / 4;
     mesh.mesh.neighbors = triangle_neighbors(triangles);
     // The pieces: the fill's (the front left out: it lies inside), then the walls.
-    for (std::size_t p = 0; p < fill.mesh.pieces.size() / 2; ++p) {
-        const std::uint32_t origin = fill_segment_origin[fill.mesh.piece_segment[p]];
+    for (std::size_t p = 0; p < fill_mesh.pieces.size() / 2; ++p) {
+        const std::uint32_t origin = fill_segment_origin[fill_mesh.piece_segment[p]];
         if (origin == kNone) continue;
         mesh.pieces.insert(mesh.pieces.end(),
-                           {fill.mesh.pieces[2 * p], fill.mesh.pieces[2 * p + 1]});
+                           {fill_mesh.pieces[2 * p], fill_mesh.pieces[2 * p + 1]});
         mesh.piece_segment.push_back(origin);
     }
     for (std::size_t p = 0; p < cdt.pieces.size() / 2; ++p) {

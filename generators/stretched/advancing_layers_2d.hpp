@@ -20,7 +20,7 @@
 //    boundary segments; cells strictly convex and empty of other vertices).
 //  - The layer cells are kept as quadrilaterals or split by the diagonal with the smaller
 //    largest angle (exact compare_angles); steps between stacks are closed by triangles.
-//  - The rest of the domain is meshed by the frontal Delaunay generator from the last layer:
+//  - The rest of the domain is meshed by the fill generator (frontal) from the last layer:
 //    the outer edges of the layers enclose a new hole, their length the size along them, so
 //    that the front is never split and the two meshes share its vertices.
 // Invariants: check_mixed_mesh_2d holds on the result (checked before returning). Cost: O(S L)
@@ -61,8 +61,19 @@ void validate_layer_parameters(const LayerParameters2& layers);
 /// validates it. @throws InputError naming the text and what is wrong with it.
 LayerParameters2 parse_layer_parameters(std::string_view text);
 
+/// The generator that meshes the rest of the domain from the last layer (the frontal Delaunay
+/// generator in the registry; the advancing-front Delaunay one would do): given the fill's
+/// domain (the outer boundary and the front; the layers a hole), its size and a Steiner point
+/// budget (0: automatic), the mesh with every input vertex at its index and the pieces carrying
+/// their input segment. Passed in, so that the layers depend on no generator (generators/
+/// families: stretched comes before mesh_2d, whose registry wires the two).
+using LayerFill2 = triangulation::Cdt2Result (*)(const MeshDomain2& domain,
+                                                 const SizeFunction& size,
+                                                 std::uint64_t max_steiner_points);
+
 struct AdvancingLayersOptions2 {
     LayerParameters2 layers;
+    LayerFill2 fill = nullptr;  ///< required
     /// The size of the fill (bounded: the user's --size); everywhere at least the length of the
     /// last layer's edges near them, so that the front is kept as it is. Unbounded: the fill's
     /// boundary spacing graded away from it (graded_size_from_boundary).
@@ -115,7 +126,9 @@ struct AdvancingLayersResult2 {
 /// With layers.first_height == 0 (the registry's default), or on a domain without a hole loop
 /// (a warning then), no layers: the domain is meshed by the fill alone.
 /// A hole loop through a vertex where the boundary pinches is no wall.
-/// @throws InputError on bad input (as constrained_delaunay_2d), bad layer parameters.
+/// @throws InputError on bad input (as constrained_delaunay_2d), bad layer parameters; as the
+///         fill generator.
+/// @pre options.fill is set (InternalError otherwise).
 /// @throws GeometryError when the fill breaks the front or the final check fails (a bug).
 AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
                                            const AdvancingLayersOptions2& options);

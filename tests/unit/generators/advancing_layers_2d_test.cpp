@@ -21,6 +21,7 @@
 
 #include "base/errors.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "generators/mesh_2d/frontal_delaunay_2d.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
@@ -51,6 +52,14 @@ Input square(double half) {
     return in;
 }
 
+tri::Cdt2Result frontal_fill(const gen::MeshDomain2& domain, const gen::SizeFunction& size,
+                             std::uint64_t budget) {
+    gen::FrontalDelaunayOptions2 frontal;
+    frontal.size = size;
+    frontal.max_steiner_points = budget;
+    return std::move(gen::frontal_delaunay_2d(domain, frontal).mesh);
+}
+
 gen::AdvancingLayersResult2 run(const Input& in, double height, double growth, bool quads,
                                 std::uint32_t max_layers = 60, gen::SizeFunction size = {}) {
     const gen::MeshDomain2 domain(in.pslg());
@@ -60,6 +69,7 @@ gen::AdvancingLayersResult2 run(const Input& in, double height, double growth, b
     options.layers.max_layers = max_layers;
     options.layers.quads = quads;
     options.size = size;
+    options.fill = &frontal_fill;
     return gen::advancing_layers_2d(domain, options);
 }
 
