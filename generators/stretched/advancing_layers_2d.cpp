@@ -25,6 +25,9 @@ namespace pred = exactmesh::predicates;
 using tri::kNone;
 using tri::VertIdx;
 
+/// The id of a probe's far end (segments_conflict): no vertex has it.
+constexpr VertIdx kProbe = kNone - 1;
+
 void validate_layer_parameters(const LayerParameters2& layers) {
     if (!(layers.first_height > 0) || !std::isfinite(layers.first_height)) {
         throw InputError("--layers: the first height must be a finite number > 0 (got " +
@@ -247,7 +250,7 @@ bool clockwise(const Loop& loop, const std::vector<double>& xy) {
                           &xy[2 * loop[(lowest + 1) % n]]) == pred::Sign::Negative;
 }
 
-enum class Stop : std::uint8_t { Active, AspectRatio, Collision, Neighbour, MaxLayers };
+enum class Stop : std::uint8_t { Active, AspectRatio, Size, Collision, Neighbour, MaxLayers };
 
 struct Stack {
     VertIdx base = kNone;
@@ -274,8 +277,12 @@ struct Segment {
 class LayerBuilder {
   public:
     LayerBuilder(const tri::Cdt2Result& domain, const LayerParameters2& parameters,
-                 AdvancingLayersCounters2& counters)
-        : domain_(domain), parameters_(parameters), counters_(counters), xy_(domain.mesh.xy) {}
+                 const SizeFunction& size, AdvancingLayersCounters2& counters)
+        : domain_(domain),
+          parameters_(parameters),
+          size_(size),
+          counters_(counters),
+          xy_(domain.mesh.xy) {}
 
     void build() {
         find_walls();
@@ -437,10 +444,16 @@ class LayerBuilder {
             // The candidate points, each from its wall vertex, rounded once.
             provisional_base_ = static_cast<VertIdx>(xy_.size() / 2);
             candidate_xy_.assign(2 * stacks_.size(), 0);
+            probe_xy_.assign(2 * stacks_.size(), 0);
+            // The probe: one more layer of the new thickness beyond the candidate, so that a
+            // stack stops a layer short of an opposing front or boundary ("near"), not on it.
+            const double probe = height + h * power / g;
             for (std::size_t s = 0; s < stacks_.size(); ++s) {
                 const double* p = &xy_[2 * static_cast<std::size_t>(stacks_[s].base)];
                 candidate_xy_[2 * s] = std::fma(height, stacks_[s].direction.x, p[0]);
                 candidate_xy_[2 * s + 1] = std::fma(height, stacks_[s].direction.y, p[1]);
+                probe_xy_[2 * s] = std::fma(probe, stacks_[s].direction.x, p[0]);
+                probe_xy_[2 * s + 1] = std::fma(probe, stacks_[s].direction.y, p[1]);
             }
             std::vector<std::uint8_t> candidate(stacks_.size(), 0);
             bool any = false;
@@ -459,6 +472,13 @@ class LayerBuilder {
                                      0.5 * distance(q, &candidate_xy_[2 * stack.next]);
                 if (std::max(width, stack.wall_spacing) <= thickness) {
                     stop(s, Stop::AspectRatio);
+                    continue;
+                }
+                // Where the stacks diverge (convex walls, fans) the width grows with the height
+                // and the aspect ratio may never fall to 1: a given size ends them where the
+                // new layer would be thicker than it (the fill's cells take over there).
+                if (size_.bounded() && thickness >= size_(q[0], q[1])) {
+                    stop(s, Stop::Size);
                     continue;
                 }
                 candidate[s] = 1;
@@ -486,6 +506,9 @@ class LayerBuilder {
         switch (why) {
             case Stop::AspectRatio:
                 ++counters_.stopped_aspect_ratio;
+                break;
+            case Stop::Size:
+                ++counters_.stopped_size;
                 break;
             case Stop::Collision:
                 ++counters_.stopped_collision;
@@ -595,6 +618,18 @@ class LayerBuilder {
                     new_point_grid_->insert(candidate_id(s), point(candidate_id(s)),
                                             point(candidate_id(s)));
             }
+            for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+                if (!candidate[s]) continue;
+                const VertIdx top = stacks_[s].top();
+                const double *a = point(top), *b = &probe_xy_[2 * s];
+                segment_grid_->query(a, b, [&](std::uint32_t other) {
+                    if (drop[s]) return;
+                    const Segment& o = segments_[other];
+                    ++counters_.crossing_tests;
+                    if (segments_conflict(top, kProbe, o.a, o.b, a, b, point(o.a), point(o.b)))
+                        drop[s] = 1;
+                });
+            }
             for (std::uint32_t i = 0; i < p.segments.size(); ++i) {
                 const Segment& s = p.segments[i];
                 const double *a = point(s.a), *b = point(s.b);
@@ -676,6 +711,7 @@ class LayerBuilder {
 
     const tri::Cdt2Result& domain_;
     const LayerParameters2& parameters_;
+    const SizeFunction& size_;
     AdvancingLayersCounters2& counters_;
     std::vector<double> xy_;
     std::vector<Loop> walls_;
@@ -685,7 +721,7 @@ class LayerBuilder {
     std::vector<Segment> segments_;
     std::vector<Cell> cells_;
     std::unique_ptr<BucketGrid> segment_grid_, point_grid_, new_segment_grid_, new_point_grid_;
-    std::vector<double> candidate_xy_;
+    std::vector<double> candidate_xy_, probe_xy_;
     VertIdx provisional_base_ = kNone;
 };
 
@@ -800,7 +836,7 @@ AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
     const tri::Cdt2Result& cdt = domain.triangulation();
     const bool layered = options.layers.first_height != 0;
     if (layered) validate_layer_parameters(options.layers);
-    LayerBuilder builder(cdt, options.layers, counters);
+    LayerBuilder builder(cdt, options.layers, options.size, counters);
     if (layered) builder.build();
     const std::vector<double>& xy = builder.xy();
     // The front: per wall loop, the top of every stack in order (repeats removed).

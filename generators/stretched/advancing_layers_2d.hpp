@@ -14,10 +14,11 @@
 //    from the wall vertex p, the point p + t d rounded once (fma); the directions d are
 //    smoothed from layer to layer with their neighbours, none at the wall, more away from it.
 //  - A stack stops when its cell's aspect ratio (tangential spacing over the next layer's
-//    thickness) reaches 1, after max_layers, when a neighbour stopped more than two layers
-//    below (the step stays at most two triangles), or when its new segments or cells would
-//    cross or touch anything already there (exact orient2d on every pair: layer, normal and
-//    boundary segments; cells strictly convex and empty of other vertices).
+//    thickness) reaches 1, where the next layer would be thicker than a given size, after
+//    max_layers, when a neighbour stopped more than two layers below (the step stays at most
+//    two triangles), or when its new segments or cells would cross or touch anything already
+//    there, or its normal, extended by one more layer, would (exact orient2d on every pair:
+//    layer, normal and boundary segments; cells strictly convex and empty of other vertices).
 //  - The layer cells are kept as quadrilaterals or split by the diagonal with the smaller
 //    largest angle (exact compare_angles); steps between stacks are closed by triangles.
 //  - The rest of the domain is meshed by the fill generator (frontal) from the last layer:
@@ -91,6 +92,7 @@ struct AdvancingLayersCounters2 {
     std::uint64_t layers = 0;          ///< the most layers any stack reached
     std::uint64_t layer_points = 0;    ///< points added by the layers
     std::uint64_t stopped_aspect_ratio = 0;
+    std::uint64_t stopped_size = 0;  ///< the next layer thicker than the given size
     std::uint64_t stopped_collision = 0;
     std::uint64_t stopped_neighbour = 0;  ///< a neighbour stopped more than two layers below
     std::uint64_t stopped_max_layers = 0;
@@ -103,11 +105,11 @@ struct AdvancingLayersCounters2 {
     std::uint64_t max_wall_aspect_ratio = 0;  ///< wall piece length / first height, the largest
 };
 
-inline constexpr std::array kAdvancingLayersCounterNames =
-    EM_COUNTER_TABLE(AdvancingLayersCounters2, wall_loops, wall_vertices, stacks, fan_corners,
-                     merged_corners, layers, layer_points, stopped_aspect_ratio, stopped_collision,
-                     stopped_neighbour, stopped_max_layers, crossing_tests, layer_quads,
-                     layer_triangles, fill_triangles, quads, triangles, max_wall_aspect_ratio);
+inline constexpr std::array kAdvancingLayersCounterNames = EM_COUNTER_TABLE(
+    AdvancingLayersCounters2, wall_loops, wall_vertices, stacks, fan_corners, merged_corners,
+    layers, layer_points, stopped_aspect_ratio, stopped_size, stopped_collision, stopped_neighbour,
+    stopped_max_layers, crossing_tests, layer_quads, layer_triangles, fill_triangles, quads,
+    triangles, max_wall_aspect_ratio);
 static_assert(counter_table_complete(kAdvancingLayersCounterNames));
 
 struct AdvancingLayersResult2 {
