@@ -278,9 +278,16 @@ void run_mesh(const MeshArguments& arguments) {
         std::cout << gen::quality_report_text(report);
         if (!final_result.quads.empty()) {
             // The shared report measures triangles; the quadrilaterals are left out of it.
-            std::cout << "quality.note: the report covers the " << mesh.triangle_count()
+            std::cout << "quality.note: the report above covers the " << mesh.triangle_count()
                       << " triangles only; the " << final_result.quads.size() / 4
-                      << " layer quadrilaterals (strictly convex, checked exactly) are not in it\n";
+                      << " layer quadrilaterals (strictly convex, checked exactly) are measured "
+                         "below: corner angles, aspect ratio (longest over shortest side)\n";
+            const gen::QuadQuality2 quads = gen::quad_quality_2d(mesh.xy, final_result.quads);
+            std::cout << "quality.quads: " << quads.quads << '\n'
+                      << "quality.quad_min_angle: " << quads.min_angle << '\n'
+                      << "quality.quad_max_angle: " << quads.max_angle << '\n'
+                      << "quality.quad_max_aspect_ratio: " << quads.max_aspect_ratio << '\n'
+                      << "quality.quad_mean_aspect_ratio: " << quads.mean_aspect_ratio << '\n';
         }
         if (arguments.smooth > 0) {
             const tri::Triangulation2& unsmoothed = result.mesh.mesh;

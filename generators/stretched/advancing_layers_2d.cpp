@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -769,6 +770,36 @@ std::vector<tri::TriIdx> triangle_neighbors(const std::vector<VertIdx>& triangle
 }
 
 }  // namespace
+
+QuadQuality2 quad_quality_2d(std::span<const double> xy, std::span<const VertIdx> quads) {
+    QuadQuality2 q;
+    q.quads = quads.size() / 4;
+    if (q.quads == 0) return q;
+    q.min_angle = 180;
+    double sum = 0;
+    for (std::size_t c = 0; c < q.quads; ++c) {
+        double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+        for (std::size_t k = 0; k < 4; ++k) {
+            const double* o = &xy[2 * static_cast<std::size_t>(quads[4 * c + k])];
+            const double* p = &xy[2 * static_cast<std::size_t>(quads[4 * c + (k + 1) % 4])];
+            const double* r = &xy[2 * static_cast<std::size_t>(quads[4 * c + (k + 3) % 4])];
+            const Vec u = unit(p[0] - o[0], p[1] - o[1]), v = unit(r[0] - o[0], r[1] - o[1]);
+            const double angle =
+                std::atan2(std::fabs(u.x * v.y - u.y * v.x), u.x * v.x + u.y * v.y) * 180 /
+                std::numbers::pi;
+            q.min_angle = std::min(q.min_angle, angle);
+            q.max_angle = std::max(q.max_angle, angle);
+            const double side = distance(o, p);
+            shortest = std::min(shortest, side);
+            longest = std::max(longest, side);
+        }
+        const double ratio = longest / shortest;
+        q.max_aspect_ratio = std::max(q.max_aspect_ratio, ratio);
+        sum += ratio;
+    }
+    q.mean_aspect_ratio = sum / static_cast<double>(q.quads);
+    return q;
+}
 
 std::string MixedMeshCheck2::summary() const {
     if (ok()) return "ok";

@@ -161,6 +161,17 @@ MixedMeshCheck2 check_mixed_mesh_2d(std::span<const double> xy,
                                     std::span<const triangulation::VertIdx> quads,
                                     std::span<const triangulation::VertIdx> pieces);
 
+/// Measures of quadrilaterals for the quality report (the shared report measures triangles):
+/// their corner angles (degrees) and aspect ratios (longest side over shortest), in doubles on
+/// vectors scaled by a power of two (no overflow at 2^600); a report, not a decision.
+struct QuadQuality2 {
+    std::uint64_t quads = 0;
+    double min_angle = 0, max_angle = 0;
+    double max_aspect_ratio = 0, mean_aspect_ratio = 0;
+};
+QuadQuality2 quad_quality_2d(std::span<const double> xy,
+                             std::span<const triangulation::VertIdx> quads);
+
 /// The counters as (name, value) pairs, in declaration order (the CLI's --stats).
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(
     const AdvancingLayersCounters2& counters);

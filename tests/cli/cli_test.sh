@@ -977,8 +977,9 @@ layers() {
   quads=$(awk '/^quads: / { print $2; exit }' "$work/out")
   triangles=$(awk '/^triangles: / { print $2; exit }' "$work/out")
   [[ $quads -gt 1000 ]] || fail "layers: $quads quads: $(cat "$work/out")"
-  for counter in stacks layers stopped_aspect_ratio stopped_collision stopped_max_layers \
-    layer_quads fill_triangles max_wall_aspect_ratio construct_seconds quality.note; do
+  for counter in stacks layers stopped_aspect_ratio stopped_size stopped_collision \
+    stopped_neighbour stopped_max_layers layer_quads fill_triangles max_wall_aspect_ratio \
+    construct_seconds quality.note quality.quad_max_angle quality.quad_max_aspect_ratio; do
     grep -Eq "^$counter: " "$work/out" || fail "layers --stats/--quality: no $counter line"
   done
   (($(awk '/^max_wall_aspect_ratio: / { print $2 }' "$work/out") >= 1000)) ||

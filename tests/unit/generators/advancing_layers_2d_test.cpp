@@ -352,3 +352,37 @@ TEST(Generators_AdvancingLayers2, TheCheckFindsAnInvertedTriangleAndANonConvexQu
     EXPECT_EQ(check.nonconvex_quads.size(), 1u);
     EXPECT_FALSE(check.ok());
 }
+
+TEST(Generators_AdvancingLayers2, AGivenSizeEndsStacksWhoseAspectRatioNeverFallsTo1) {
+    // Around a small circle the normals diverge: with growth 1.1 the width grows as fast as
+    // the thickness and the aspect ratio stays above 1; the size (0.05) ends the stacks where
+    // the next layer would be thicker than it.
+    Input in = square(1);
+    add_circle(in, 0, 0, 0.05, 24);
+    const gen::AdvancingLayersResult2 free = run(in, 1e-3, 1.1, true);
+    const gen::AdvancingLayersResult2 sized =
+        run(in, 1e-3, 1.1, true, 60, gen::SizeFunction::uniform(0.05));
+    EXPECT_EQ(free.counters.stopped_size, 0u);
+    EXPECT_EQ(sized.counters.stopped_size, 24u);
+    EXPECT_LT(sized.counters.layers, free.counters.layers);
+    // 1e-3 * 1.1^k >= 0.05 first at k = 42: the 42 layers below it are kept.
+    EXPECT_EQ(sized.counters.layers, 42u);
+    expect_valid(sized);
+    expect_input_kept(sized, in);
+    expect_area(sized, in);
+}
+
+TEST(Generators_AdvancingLayers2, QuadQualityMeasuresAnglesAndAspectRatios) {
+    const std::vector<double> xy{0, 0, 4, 0, 4, 1, 0, 1, 5, 1};
+    const gen::QuadQuality2 rectangle =
+        gen::quad_quality_2d(xy, std::vector<tri::VertIdx>{0, 1, 2, 3});
+    EXPECT_EQ(rectangle.quads, 1u);
+    EXPECT_NEAR(rectangle.min_angle, 90, 1e-12);
+    EXPECT_NEAR(rectangle.max_angle, 90, 1e-12);
+    EXPECT_EQ(rectangle.max_aspect_ratio, 4);
+    const gen::QuadQuality2 trapezoid =
+        gen::quad_quality_2d(xy, std::vector<tri::VertIdx>{0, 1, 4, 3});
+    EXPECT_NEAR(trapezoid.min_angle, 45, 1e-12);
+    EXPECT_NEAR(trapezoid.max_angle, 135, 1e-12);
+    EXPECT_EQ(trapezoid.max_aspect_ratio, 5);
+}
