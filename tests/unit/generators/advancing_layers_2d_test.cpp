@@ -248,21 +248,26 @@ TEST(Generators_AdvancingLayers2, Naca0012AtFirstHeight1em4) {
 }
 
 TEST(Generators_AdvancingLayers2, ScaledBy2ToThePlusMinus600GivesTheSameMeshScaled) {
-    Input in = square(1);
-    add_circle(in, 0.1, -0.05, 0.3, 24);
-    const gen::AdvancingLayersResult2 reference = run(in, 2e-3, 1.3, true);
-    for (const int k : {600, -600}) {
-        Input scaled = in;
-        for (double& x : scaled.xy) x = std::ldexp(x, k);
-        for (double& x : scaled.holes) x = std::ldexp(x, k);
-        const gen::AdvancingLayersResult2 r = run(scaled, std::ldexp(2e-3, k), 1.3, true);
-        std::vector<double> unscaled = r.mesh.mesh.xy;
-        for (double& x : unscaled) x = std::ldexp(x, -k);
-        EXPECT_EQ(unscaled, reference.mesh.mesh.xy) << "2^" << k;
-        EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
-        EXPECT_EQ(r.quads, reference.quads) << "2^" << k;
-        EXPECT_EQ(r.stack_layers, reference.stack_layers) << "2^" << k;
-        expect_valid(r);
+    Input circle = square(1);
+    add_circle(circle, 0.1, -0.05, 0.3, 24);
+    const Input naca = exactmesh::testing::from_domain(
+        gen::sample_domain(gen::SampleDomain::Naca0012, gen::SizeFunction::uniform(0.05)));
+    for (const Input& in : {circle, naca}) {
+        const gen::AdvancingLayersResult2 reference = run(in, 2e-3, 1.3, true);
+        EXPECT_GT(reference.counters.layer_quads, 100u);
+        for (const int k : {600, -600}) {
+            Input scaled = in;
+            for (double& x : scaled.xy) x = std::ldexp(x, k);
+            for (double& x : scaled.holes) x = std::ldexp(x, k);
+            const gen::AdvancingLayersResult2 r = run(scaled, std::ldexp(2e-3, k), 1.3, true);
+            std::vector<double> unscaled = r.mesh.mesh.xy;
+            for (double& x : unscaled) x = std::ldexp(x, -k);
+            EXPECT_EQ(unscaled, reference.mesh.mesh.xy) << "2^" << k;
+            EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
+            EXPECT_EQ(r.quads, reference.quads) << "2^" << k;
+            EXPECT_EQ(r.stack_layers, reference.stack_layers) << "2^" << k;
+            expect_valid(r);
+        }
     }
 }
 
