@@ -403,6 +403,7 @@ class LayerBuilder {
         point_grid_ = std::make_unique<BucketGrid>(x0, y0, cell);
         new_segment_grid_ = std::make_unique<BucketGrid>(x0, y0, cell);
         new_point_grid_ = std::make_unique<BucketGrid>(x0, y0, cell);
+        cell_grid_ = std::make_unique<BucketGrid>(x0, y0, cell);
         // Obstacles: every constrained edge of the domain and every vertex in use.
         const tri::Triangulation2& mesh = domain_.mesh;
         for (std::size_t p = 0; p < domain_.pieces.size() / 2; ++p)
@@ -670,6 +671,15 @@ class LayerBuilder {
                 if (!conflict) new_point_grid_->query(lo, hi, test);
                 if (conflict) drop_owners(p.cell_owners[i]);
             }
+            // A candidate inside a committed cell (its new edges could start at a corner of
+            // that cell and stay inside it, crossing nothing).
+            for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+                if (!candidate[s] || drop[s]) continue;
+                const double* q = point(candidate_id(s));
+                cell_grid_->query(q, q, [&](std::uint32_t c) {
+                    if (!drop[s] && cell_contains(cells_[c], candidate_id(s))) drop[s] = 1;
+                });
+            }
             bool dropped = false;
             for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
                 if (drop[s] && candidate[s]) {
@@ -701,6 +711,15 @@ class LayerBuilder {
             for (VertIdx& v : c.v)
                 if (v != kNone) v = real(v);
             cells_.push_back(c);
+            double lo[2] = {point(c.v[0])[0], point(c.v[0])[1]}, hi[2] = {lo[0], lo[1]};
+            for (const VertIdx v : c.v) {
+                if (v == kNone) continue;
+                for (int axis = 0; axis < 2; ++axis) {
+                    lo[axis] = std::min(lo[axis], point(v)[axis]);
+                    hi[axis] = std::max(hi[axis], point(v)[axis]);
+                }
+            }
+            cell_grid_->insert(static_cast<std::uint32_t>(cells_.size() - 1), lo, hi);
         }
         for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
             if (!candidate[s]) continue;
@@ -721,7 +740,8 @@ class LayerBuilder {
     std::vector<std::vector<std::uint32_t>> loop_stacks_;
     std::vector<Segment> segments_;
     std::vector<Cell> cells_;
-    std::unique_ptr<BucketGrid> segment_grid_, point_grid_, new_segment_grid_, new_point_grid_;
+    std::unique_ptr<BucketGrid> segment_grid_, point_grid_, new_segment_grid_, new_point_grid_,
+        cell_grid_;
     std::vector<double> candidate_xy_, probe_xy_;
     VertIdx provisional_base_ = kNone;
 };
