@@ -996,6 +996,16 @@ assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/$file" "$quad
   done
   run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2,20 -o "$work/naca.ele" &&
     ! grep -q '^quads:' "$work/out" || fail "layers: split quads still reported as quads"
+  # A .poly: its hole loop is the wall (no markers); the graded default size for the fill; a
+  # square without a hole has no wall (a warning, the fill alone).
+  printf '8 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0.4 0.4\n6 0.6 0.4\n7 0.6 0.6\n8 0.4 0.6\n8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n1\n1 0.5 0.5\n' >"$work/holed.poly"
+  run 0 mesh "$work/holed.poly" --generator advancing-layers --layers 1e-3,1.2 --quads \
+    -o "$work/holed.msh" --stats &&
+    grep -Eq '^fan_corners: 4$' "$work/out" && grep -Eq '^quads: [1-9]' "$work/out" &&
+    grep -Eq '^2 1 3 [1-9][0-9]*$' "$work/holed.msh" || fail "layers on a .poly: $(cat "$work/out")"
+  printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/square.poly"
+  run 0 mesh "$work/square.poly" --generator advancing-layers --layers 1e-3,1.2 -o "$work/square.1.ele" &&
+    grep -q 'no wall' "$work/err" || fail "layers without a wall: no warning: $(cat "$work/err")"
   expect_error 2 'a \.ele file holds triangles only' \
     mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2 --quads -o "$work/x.ele"
   expect_error 2 'first height must be a finite number > 0 \(got 0\)' \
