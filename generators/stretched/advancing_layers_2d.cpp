@@ -447,13 +447,20 @@ class LayerBuilder {
             provisional_base_ = static_cast<VertIdx>(xy_.size() / 2);
             candidate_xy_.assign(2 * stacks_.size(), 0);
             probe_xy_.assign(2 * stacks_.size(), 0);
-            // The probe: one more layer of the new thickness beyond the candidate, so that a
-            // stack stops a layer short of an opposing front or boundary ("near"), not on it.
-            const double probe = height + h * power / g;
             for (std::size_t s = 0; s < stacks_.size(); ++s) {
                 const double* p = &xy_[2 * static_cast<std::size_t>(stacks_[s].base)];
                 candidate_xy_[2 * s] = std::fma(height, stacks_[s].direction.x, p[0]);
                 candidate_xy_[2 * s + 1] = std::fma(height, stacks_[s].direction.y, p[1]);
+            }
+            // The probe: the normal continued beyond the candidate by the larger of the new
+            // thickness and half the tangential spacing, so that a stack stops short of an
+            // opposing front or boundary ("near", not on it) and leaves the fill room for
+            // triangles about as wide as the layer's cells.
+            for (std::size_t s = 0; s < stacks_.size(); ++s) {
+                const double* p = &xy_[2 * static_cast<std::size_t>(stacks_[s].base)];
+                const double probe =
+                    height +
+                    std::max(thickness, 0.5 * tangential_spacing(static_cast<std::uint32_t>(s)));
                 probe_xy_[2 * s] = std::fma(probe, stacks_[s].direction.x, p[0]);
                 probe_xy_[2 * s + 1] = std::fma(probe, stacks_[s].direction.y, p[1]);
             }
@@ -470,9 +477,7 @@ class LayerBuilder {
                 // distance to the neighbours' candidates); the cell's aspect ratio is that over
                 // the new layer's thickness.
                 const double* q = &candidate_xy_[2 * s];
-                const double width = 0.5 * distance(q, &candidate_xy_[2 * stack.prev]) +
-                                     0.5 * distance(q, &candidate_xy_[2 * stack.next]);
-                if (std::max(width, stack.wall_spacing) <= thickness) {
+                if (tangential_spacing(s) <= thickness) {
                     stop(s, Stop::AspectRatio);
                     continue;
                 }
@@ -498,9 +503,40 @@ class LayerBuilder {
                     }
                 }
             }
-            resolve_conflicts(candidate);
+            resolve_conflicts(candidate, k == 0);
             commit(candidate);
         }
+    }
+
+    /// In a fan (stacks sharing a wall vertex, consecutive), the stacks that stay at the wall
+    /// must be consecutive: a stack rising between two that stay would make the front pass
+    /// twice through the wall vertex and cut the cells between off the layers' hole. Drops
+    /// every candidate between the fan's first and last stack that stays.
+    void drop_pinching_fan_stacks(const std::vector<std::uint8_t>& candidate,
+                                  std::vector<std::uint8_t>& drop) const {
+        for (std::uint32_t first = 0; first < stacks_.size();) {
+            std::uint32_t end = first + 1;
+            while (end < stacks_.size() && stacks_[end].base == stacks_[first].base) ++end;
+            std::uint32_t low = kNone, high = kNone;
+            for (std::uint32_t s = first; s < end; ++s) {
+                if (candidate[s] && !drop[s]) continue;
+                if (low == kNone) low = s;
+                high = s;
+            }
+            if (low != kNone)
+                for (std::uint32_t s = low + 1; s < high; ++s) drop[s] = 1;
+            first = end;
+        }
+    }
+
+    /// The tangential spacing at stack s's candidate: the larger of the wall's and the mean
+    /// distance to its neighbours' candidates.
+    double tangential_spacing(std::uint32_t s) const {
+        const Stack& stack = stacks_[s];
+        const double* q = &candidate_xy_[2 * s];
+        const double width = 0.5 * distance(q, &candidate_xy_[2 * stack.prev]) +
+                             0.5 * distance(q, &candidate_xy_[2 * stack.next]);
+        return std::max(width, stack.wall_spacing);
     }
 
     void stop(std::uint32_t s, Stop why) {
@@ -534,6 +570,7 @@ class LayerBuilder {
         std::vector<std::array<std::uint32_t, 2>> segment_owners;
         std::vector<Cell> cells;
         std::vector<std::array<std::uint32_t, 2>> cell_owners;
+        std::vector<std::uint32_t> blocked;  ///< candidates that cannot rise at all
     };
 
     Proposal propose(const std::vector<std::uint8_t>& candidate) const {
@@ -562,6 +599,12 @@ class LayerBuilder {
                 const VertIdx low = stacks_[riser].top(), high = candidate_id(riser);
                 const VertIdx other = stacks_[candidate[s] ? j : s].top();
                 if (other == low) continue;  // a fan's wall vertex: nothing to close
+                if (other == stacks_[riser].base) {
+                    // A fan neighbour left at the shared wall vertex: the step triangle would
+                    // have its three corners on the riser's own normal line.
+                    p.blocked.push_back(riser);
+                    continue;
+                }
                 if (candidate[s]) {
                     p.segments.push_back({high, other});
                     p.cells.push_back({{low, other, high, kNone}});
@@ -603,7 +646,7 @@ class LayerBuilder {
     /// Removes candidates until their segments and cells conflict with nothing: each round
     /// tests every proposal against what is there and against each other, and drops the
     /// owners of every failure at once (so the outcome does not depend on the order).
-    void resolve_conflicts(std::vector<std::uint8_t>& candidate) {
+    void resolve_conflicts(std::vector<std::uint8_t>& candidate, bool first_layer) {
         for (;;) {
             const Proposal p = propose(candidate);
             std::vector<std::uint8_t> drop(stacks_.size(), 0);
@@ -653,6 +696,16 @@ class LayerBuilder {
                 });
                 if (conflict) drop_owners(p.segment_owners[i]);
             }
+            // A candidate with no cell on either side (its neighbours both stopped at its own
+            // wall vertex: inside a fan) would leave a bare spike in the front.
+            std::vector<std::uint8_t> has_cell(stacks_.size(), 0);
+            for (const auto& owners : p.cell_owners)
+                for (const std::uint32_t s : owners)
+                    if (s != kNone) has_cell[s] = 1;
+            for (std::uint32_t s = 0; s < stacks_.size(); ++s)
+                if (candidate[s] && !has_cell[s]) drop[s] = 1;
+            for (const std::uint32_t s : p.blocked) drop[s] = 1;
+            if (first_layer) drop_pinching_fan_stacks(candidate, drop);
             for (std::size_t i = 0; i < p.cells.size(); ++i) {
                 const Cell& c = p.cells[i];
                 bool conflict = !cell_valid(c);

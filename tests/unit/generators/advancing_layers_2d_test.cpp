@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -390,4 +391,50 @@ TEST(Generators_AdvancingLayers2, QuadQualityMeasuresAnglesAndAspectRatios) {
     EXPECT_NEAR(trapezoid.min_angle, 45, 1e-12);
     EXPECT_NEAR(trapezoid.max_angle, 135, 1e-12);
     EXPECT_EQ(trapezoid.max_aspect_ratio, 5);
+}
+
+TEST(Generators_AdvancingLayers2, RandomStarHolesAndNarrowGapsGiveValidMixedMeshes) {
+    // Random star-shaped holes (3 to 32 vertices, radii varying by a factor 3, so convex and
+    // concave corners, fans, merges and steps all occur), one to three of them, or two pressed
+    // against x = +-gap (gap 1e-1 to 1e-6: collinear wall vertices, opposing fronts); random
+    // first height, growth, layer count, quads, size. The generator's own exact check must
+    // hold (it throws otherwise) and the cells must cover the domain's area.
+    const int cases = std::max(1, static_cast<int>(120 * exactmesh::testing::test_scale()));
+    for (int c = 0; c < cases; ++c) {
+        SCOPED_TRACE("case " + std::to_string(c));
+        std::mt19937_64 rng(static_cast<std::uint64_t>(c));
+        std::uniform_real_distribution<double> uniform(0, 1);
+        const bool pressed = c % 3 == 2;
+        const double gap = std::pow(10.0, -1 - 5 * uniform(rng));
+        Input in = square(1);
+        const int holes = pressed ? 2 : 1 + static_cast<int>(uniform(rng) * 3);
+        const double centres[3][2] = {{-0.45, 0}, {0.45, 0}, {0, 0.55}};
+        for (int h = 0; h < holes; ++h) {
+            const int n = 3 + static_cast<int>(uniform(rng) * 30);
+            const double cx = pressed ? (h == 0 ? -0.3 : 0.3) : centres[h][0];
+            const double cy = pressed ? 0 : centres[h][1];
+            std::vector<double> xy;
+            for (int k = 0; k < n; ++k) {
+                const double a = 2 * std::numbers::pi * (k + 0.4 * (uniform(rng) - 0.5)) / n;
+                const double r = 0.12 + 0.3 * uniform(rng) * (uniform(rng) < 0.5 ? 1 : 0.3);
+                double x = cx + r * std::cos(a);
+                if (pressed) x = h == 0 ? std::min(x, -gap) : std::max(x, gap);
+                xy.insert(xy.end(), {x, cy + r * std::sin(a)});
+            }
+            exactmesh::testing::add_loop(in, xy);
+            in.holes.insert(in.holes.end(), {cx, cy});
+        }
+        const double height = std::pow(10.0, -1 - 4 * uniform(rng));
+        const double growth = 1 + 0.5 * uniform(rng);
+        const auto layers = 1 + static_cast<std::uint32_t>(uniform(rng) * 60);
+        const bool quads = uniform(rng) < 0.5;
+        const gen::SizeFunction size = uniform(rng) < 0.5
+                                           ? gen::SizeFunction::uniform(0.05 + 0.2 * uniform(rng))
+                                           : gen::SizeFunction();
+        const gen::AdvancingLayersResult2 r = run(in, height, growth, quads, layers, size);
+        EXPECT_GT(r.counters.layer_points, 0u);
+        expect_valid(r);
+        expect_input_kept(r, in);
+        expect_area(r, in);
+    }
 }
