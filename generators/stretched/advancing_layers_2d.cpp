@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Advancing layers (see advancing_layers_2d.hpp).
+// Advancing layers (see advancing_layers_2d.hpp): the walls and their stacks (LayerBuilder::
+// find_walls), the layers one after another with exact conflict resolution (advance,
+// resolve_conflicts, commit), then the front, the fill and the merge (advancing_layers_2d).
 #include "generators/stretched/advancing_layers_2d.hpp"
 
 #include <algorithm>
@@ -270,7 +272,7 @@ struct Cell {
     bool is_quad() const { return v[3] != kNone; }
 };
 
-/// A segment of the layers or of the domain, with the stacks that own it (kNone: none).
+/// A segment of the layers or of the domain, by its end vertices.
 struct Segment {
     VertIdx a, b;
 };
@@ -799,11 +801,6 @@ class LayerBuilder {
     VertIdx provisional_base_ = kNone;
 };
 
-/// The largest corner of the counter-clockwise triangle (a, b, c).
-pred::Corner largest(const double* a, const double* b, const double* c) {
-    return pred::largest_corner(a, b, c);
-}
-
 /// Splits the strictly convex quadrilateral (v0, v1, v2, v3) by the diagonal whose two
 /// triangles have the smaller largest angle (exact; ties to the diagonal v0-v2).
 void split_quad(const std::array<VertIdx, 4>& v, const std::vector<double>& xy,
@@ -811,8 +808,8 @@ void split_quad(const std::array<VertIdx, 4>& v, const std::vector<double>& xy,
     const auto at = [&](int k) { return &xy[2 * static_cast<std::size_t>(v[k])]; };
     // Diagonal v0-v2: (v0 v1 v2), (v0 v2 v3); diagonal v1-v3: (v0 v1 v3), (v1 v2 v3).
     const auto worst = [&](int a0, int a1, int a2, int b0, int b1, int b2) {
-        const pred::Corner first = largest(at(a0), at(a1), at(a2));
-        const pred::Corner second = largest(at(b0), at(b1), at(b2));
+        const pred::Corner first = pred::largest_corner(at(a0), at(a1), at(a2));
+        const pred::Corner second = pred::largest_corner(at(b0), at(b1), at(b2));
         return pred::compare_angles(first, second) == pred::Sign::Negative ? second : first;
     };
     const pred::Corner along02 = worst(0, 1, 2, 0, 2, 3);
