@@ -28,6 +28,7 @@
 #include "base/enum_names.hpp"
 #include "bench/bench_support.hpp"
 #include "predicates/expansion.hpp"
+#include "predicates/in_ellipse.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orient2d.hpp"
@@ -62,7 +63,7 @@ std::size_t tuple_count() {
     return count;
 }
 
-enum class Predicate { orient2d, incircle, orient3d, insphere };
+enum class Predicate { orient2d, incircle, orient3d, insphere, in_ellipse };
 enum class Workload { random, near_degenerate };
 
 constexpr int points_per_tuple(Predicate p) {
@@ -75,19 +76,27 @@ constexpr int points_per_tuple(Predicate p) {
             return 4;
         case Predicate::insphere:
             return 5;
+        case Predicate::in_ellipse:
+            return 4;
     }
     return 0;
 }
 
 constexpr int dimension(Predicate p) {
-    return p == Predicate::orient2d || p == Predicate::incircle ? 2 : 3;
+    return p == Predicate::orient3d || p == Predicate::insphere ? 3 : 2;
 }
 
-constexpr std::array<exactmesh::EnumName<Predicate>, 4> kPredicateNames{{
+/// Doubles per tuple: the points, then in_ellipse's metric {M11, M12, M22}.
+constexpr int tuple_doubles(Predicate p) {
+    return points_per_tuple(p) * dimension(p) + (p == Predicate::in_ellipse ? 3 : 0);
+}
+
+constexpr std::array<exactmesh::EnumName<Predicate>, 5> kPredicateNames{{
     {"orient2d", Predicate::orient2d},
     {"incircle", Predicate::incircle},
     {"orient3d", Predicate::orient3d},
     {"insphere", Predicate::insphere},
+    {"in_ellipse", Predicate::in_ellipse},
 }};
 
 const char* name_of(Predicate p) {
@@ -166,6 +175,37 @@ void near_cocircular(Random& rng, double* t) {
     }
 }
 
+/// A random SPD metric {M11, M12, M22}: a random direction, sizes 1 and 10^-k, k uniform in
+/// [0, 3] (aspect ratios up to 10^3).
+void random_metric(Random& rng, double* m) {
+    const double theta = rng.uniform(0.0, std::numbers::pi);
+    const double c = std::cos(theta), s = std::sin(theta);
+    const double h2 = std::pow(10.0, -rng.uniform(0.0, 3.0));
+    const double l1 = 1.0, l2 = 1.0 / (h2 * h2);
+    m[0] = c * c * l1 + s * s * l2;
+    m[1] = c * s * (l1 - l2);
+    m[2] = s * s * l1 + c * c * l2;
+}
+
+/// Four points on one ellipse (random centre, direction, sizes r and r 10^-k, k in [0, 3]), each
+/// rounded to doubles, and that ellipse's metric: near-ellipse-cocircular.
+void near_coelliptic(Random& rng, double* t) {
+    const double cx = rng.unit(), cy = rng.unit(), r = rng.uniform(0.05, 0.5);
+    const double theta = rng.uniform(0.0, std::numbers::pi);
+    const double c = std::cos(theta), s = std::sin(theta);
+    const double h1 = r, h2 = r * std::pow(10.0, -rng.uniform(0.0, 3.0));
+    for (int p = 0; p < 4; ++p) {
+        const double angle = rng.uniform(0.0, 2.0 * std::numbers::pi);
+        const double u = h1 * std::cos(angle), v = h2 * std::sin(angle);
+        t[2 * p] = cx + c * u - s * v;
+        t[2 * p + 1] = cy + s * u + c * v;
+    }
+    const double l1 = 1.0 / (h1 * h1), l2 = 1.0 / (h2 * h2);
+    t[8] = c * c * l1 + s * s * l2;
+    t[9] = c * s * (l1 - l2);
+    t[10] = s * s * l1 + c * c * l2;
+}
+
 /// The same in space: a, b, c rounded on a random plane through p in [0,1)^3 at distances in
 /// [4, 48), and d = p moved by up to 64 ulps per coordinate.
 void near_coplanar(Random& rng, double* t) {
@@ -225,14 +265,16 @@ Stream& stream_for(Predicate p, Workload w) {
     stream->predicate = p;
     stream->workload = w;
     stream->count = tuple_count();
-    stream->stride = static_cast<std::size_t>(points_per_tuple(p) * dimension(p));
+    stream->stride = static_cast<std::size_t>(tuple_doubles(p));
     stream->coordinates.resize(stream->count * stream->stride);
     // Pinned seeds, a different one per (predicate, workload).
     Random rng(0x5eed0000u + 16u * static_cast<unsigned>(p) + static_cast<unsigned>(w));
     double* t = stream->coordinates.data();
     for (std::size_t i = 0; i < stream->count; ++i, t += stream->stride) {
         if (w == Workload::random) {
-            for (std::size_t k = 0; k < stream->stride; ++k) t[k] = rng.unit();
+            const std::size_t points = static_cast<std::size_t>(points_per_tuple(p) * dimension(p));
+            for (std::size_t k = 0; k < points; ++k) t[k] = rng.unit();
+            if (p == Predicate::in_ellipse) random_metric(rng, t + points);
             continue;
         }
         switch (p) {
@@ -247,6 +289,9 @@ Stream& stream_for(Predicate p, Workload w) {
                 break;
             case Predicate::insphere:
                 near_cospherical(rng, t);
+                break;
+            case Predicate::in_ellipse:
+                near_coelliptic(rng, t);
                 break;
         }
     }
@@ -265,6 +310,9 @@ double plain_determinant(const double* t) noexcept {
     if constexpr (P == Predicate::insphere) {
         return pred::insphere_fast(t, t + 3, t + 6, t + 9, t + 12);
     }
+    if constexpr (P == Predicate::in_ellipse) {
+        return pred::in_ellipse_fast(t, t + 2, t + 4, t + 6, t + 8);
+    }
 }
 
 template <Predicate P>
@@ -273,6 +321,8 @@ Sign adaptive(const double* t) {
     if constexpr (P == Predicate::incircle) return pred::incircle(t, t + 2, t + 4, t + 6);
     if constexpr (P == Predicate::orient3d) return pred::orient3d(t, t + 3, t + 6, t + 9);
     if constexpr (P == Predicate::insphere) return pred::insphere(t, t + 3, t + 6, t + 9, t + 12);
+    if constexpr (P == Predicate::in_ellipse)
+        return pred::in_ellipse(t, t + 2, t + 4, t + 6, t + 8);
 }
 
 template <Predicate P>
@@ -282,6 +332,9 @@ Sign exact_stage(const double* t) {
     if constexpr (P == Predicate::orient3d) return pred::orient3d_exact(t, t + 3, t + 6, t + 9);
     if constexpr (P == Predicate::insphere) {
         return pred::insphere_exact(t, t + 3, t + 6, t + 9, t + 12);
+    }
+    if constexpr (P == Predicate::in_ellipse) {
+        return pred::in_ellipse_exact(t, t + 2, t + 4, t + 6, t + 8);
     }
 }
 
@@ -547,7 +600,8 @@ void register_predicate() {
         add("exactmesh", &bm_exactmesh<P>);
         if (w == Workload::near_degenerate) add("exactmesh_exact", &bm_exactmesh_exact<P>);
 #if defined(EXACTMESH_WITH_CGAL)
-        add("cgal_epick", &bm_cgal_epick<P>);
+        // CGAL has no in-ellipse predicate: that row has no peer.
+        if constexpr (P != Predicate::in_ellipse) add("cgal_epick", &bm_cgal_epick<P>);
 #endif
     }
 }
@@ -559,6 +613,7 @@ int main(int argc, char** argv) {
     register_predicate<Predicate::incircle>();
     register_predicate<Predicate::orient3d>();
     register_predicate<Predicate::insphere>();
+    register_predicate<Predicate::in_ellipse>();
     benchmark::RegisterBenchmark("BM_two_product/dekker", &bm_two_product<&dekker_tail>)
         ->Unit(benchmark::kNanosecond);
     benchmark::RegisterBenchmark("BM_two_product/fma", &bm_two_product<&fma_tail>)

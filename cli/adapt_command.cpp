@@ -36,7 +36,7 @@
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
 #include "generators/adaptation/insertion_adaptation_3d.hpp"
 #include "generators/adaptation/interpolation_error.hpp"
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "generators/adaptation/mesh_input_2d.hpp"
 #include "generators/adaptation/steiner_restart_2d.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"

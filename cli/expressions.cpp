@@ -8,8 +8,11 @@
 
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "base/errors.hpp"
+#include "base/number_text.hpp"
+#include "cli/metric_file.hpp"
 #include "io/text_file.hpp"
 
 namespace exactmesh::cli {
@@ -52,6 +55,52 @@ generators::SizeFunction size_from_expression(const std::string& expression) {
             return evaluator->parser.Eval();
         },
         "expression " + expression);
+}
+
+generators::MetricField2 metric_from_expression(const std::string& text) {
+    const std::string refusal = "--metric '" + text +
+                                "' is neither a readable metric file (.node with 3 attributes "
+                                "and its .ele) nor three expressions 'M11;M12;M22' in x and y";
+    std::vector<std::string> parts(1);
+    for (const char letter : text) {
+        if (letter == ';')
+            parts.emplace_back();
+        else
+            parts.back() += letter;
+    }
+    if (parts.size() != 3)
+        throw InputError(refusal + " (" + std::to_string(parts.size()) + " parts)");
+    static constexpr const char* kNames[3] = {"M11", "M12", "M22"};
+    std::shared_ptr<Evaluator> entries[3];
+    for (int k = 0; k < 3; ++k) {
+        entries[k] =
+            compile(parts[static_cast<std::size_t>(k)], 2,
+                    refusal + ": " + kNames[k] + " '" + parts[static_cast<std::size_t>(k)] + "': ");
+    }
+    return generators::MetricField2::analytic(
+        [m11 = entries[0], m12 = entries[1], m22 = entries[2], text](double x, double y) {
+            double value[3];
+            const std::shared_ptr<Evaluator>* all[3] = {&m11, &m12, &m22};
+            for (int k = 0; k < 3; ++k) {
+                Evaluator& evaluator = **all[k];
+                evaluator.v[0] = x;
+                evaluator.v[1] = y;
+                value[k] = evaluator.parser.Eval();
+            }
+            try {
+                return generators::metric_from_matrix(value[0], value[1], value[2]);
+            } catch (const InputError& error) {
+                throw InputError("--metric '" + text + "' at (" + format_number(x) + ", " +
+                                 format_number(y) + "): " + error.what());
+            }
+        },
+        "expression " + text);
+}
+
+generators::MetricField2 metric_from_option(const std::string& text) {
+    std::error_code error;
+    if (std::filesystem::exists(text, error)) return read_metric_file(text);
+    return metric_from_expression(text);
 }
 
 generators::AnalyticField field_from_expression(const std::string& expression) {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `exactmesh mesh`: a quality mesh of a domain (a .poly, or a built-in sample domain) by one of
 // the 2D mesh generators of issue 6, written as .ele (with .neigh, .node, .poly), .msh, .vtu or
-// .svg; --quality prints the shared quality report, --stats the generator's counters.
+// .svg; --quality prints the shared quality report (and, with --metric, the stretched-mesh
+// report against that metric field), --stats the generator's counters.
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -11,12 +12,14 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "cli/commands.hpp"
 #include "cli/expressions.hpp"
+#include "cli/metric_file.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
@@ -27,6 +30,7 @@
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/sizing/size_function.hpp"
+#include "generators/stretched/metric_quality_2d.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/stats.hpp"
@@ -47,6 +51,7 @@ struct MeshArguments {
     double min_angle = gen::kGuaranteedMinAngle;
     double polish_angle = -1;
     std::string size;
+    std::string metric;  ///< --metric EXPR|FILE (for now: the stretched-mesh quality report)
     std::uint64_t max_steiner = 0;
     std::uint32_t smooth = 0;
     bool quality = false;
@@ -175,9 +180,27 @@ void run_mesh(const MeshArguments& arguments) {
     if (!arguments.input.empty()) {
         std::vector<fs::path> inputs{arguments.input, io::poly_node_path(arguments.input)};
         if (!arguments.size.empty()) inputs.emplace_back(arguments.size);
+        if (!arguments.metric.empty())
+            inputs.insert(inputs.end(), {arguments.metric, metric_ele_path(arguments.metric)});
         refuse_to_overwrite_inputs(inputs, files);
-    } else if (!arguments.size.empty()) {
-        refuse_to_overwrite_inputs({arguments.size}, files);
+    } else {
+        std::vector<fs::path> inputs;
+        if (!arguments.size.empty()) inputs.emplace_back(arguments.size);
+        if (!arguments.metric.empty())
+            inputs.insert(inputs.end(), {arguments.metric, metric_ele_path(arguments.metric)});
+        if (!inputs.empty()) refuse_to_overwrite_inputs(inputs, files);
+    }
+    // Read (and check) the metric before any meshing: a bad --metric fails at once.
+    std::optional<gen::MetricField2> metric;
+    if (!arguments.metric.empty()) {
+        metric = metric_from_option(arguments.metric);
+        if (!arguments.quality && !gen::find_mesh_generator_2d(arguments.generator)
+                                       .honours.contains(gen::MeshOption::Metric)) {
+            print_warnings({"--metric " + arguments.metric +
+                            " ignored without --quality (--generator " + arguments.generator +
+                            " does not use it; it feeds only the stretched-mesh quality "
+                            "report)"});
+        }
     }
 
     gen::SizeFunction size =
@@ -223,6 +246,7 @@ void run_mesh(const MeshArguments& arguments) {
     options.cdt.first_index = base;
     options.layers = layer_parameters;
     options.layers.quads = arguments.quads;
+    options.metric = metric;
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
     print_warnings(ignored_options(generator, arguments, poly));
     // The domain's constrained triangulation, built once (by the first step that needs it) for
@@ -263,6 +287,13 @@ void run_mesh(const MeshArguments& arguments) {
     } else {
         std::snprintf(label, sizeof label, " (%s)", arguments.generator.c_str());
     }
+    // The stretched-mesh report before any output is written: a metric that is not positive
+    // definite somewhere on the mesh is an input error that leaves no files behind.
+    std::optional<gen::MetricQualityReport2> metric_report;
+    if (metric && arguments.quality) {
+        metric_report = gen::metric_quality_report_2d(final_result.mesh.mesh.xy,
+                                                      final_result.mesh.mesh.triangles, *metric);
+    }
     io::OutputSet set;
     stage_constrained_result(set, final_result.mesh, files, format, base, title + label, {},
                              final_result.quads);
@@ -288,6 +319,10 @@ void run_mesh(const MeshArguments& arguments) {
                       << "quality.quad_max_angle: " << quads.max_angle << '\n'
                       << "quality.quad_max_aspect_ratio: " << quads.max_aspect_ratio << '\n'
                       << "quality.quad_mean_aspect_ratio: " << quads.mean_aspect_ratio << '\n';
+        }
+        if (metric_report) {
+            std::cout << "quality.metric: " << metric->describe() << '\n'
+                      << gen::metric_quality_report_text(*metric_report);
         }
         if (arguments.smooth > 0) {
             const tri::Triangulation2& unsmoothed = result.mesh.mesh;
@@ -374,6 +409,16 @@ void add_mesh_command(CLI::App& app) {
         ->check(whole_number_at_most(kMaxSmoothSweeps))
         ->capture_default_str();
     command
+        ->add_option("--metric", arguments->metric,
+                     "A metric field for the stretched-mesh quality report (with --quality: "
+                     "metric edge lengths, metric shape, largest angles, aspect ratios), for any "
+                     "generator: 'M11;M12;M22', three expressions in x and y (muParser, as "
+                     "--size) giving a symmetric positive definite matrix, e.g. "
+                     "'1e4;0;1' (edges 0.01 long in x, 1 in y); or a metric file: a Triangle "
+                     ".node whose vertices carry 3 attributes M11 M12 M22, with its .ele beside "
+                     "it (log-Euclidean interpolation inside, nearest boundary value outside)")
+        ->type_name("EXPR|FILE");
+    command
         ->add_option(
             "--layers", arguments->layers,
             "advancing-layers only (and required there): boundary layers on the walls "
@@ -389,7 +434,8 @@ void add_mesh_command(CLI::App& app) {
                       "by the diagonal with the smaller largest angle");
     command->add_flag(
         "--quality", arguments->quality,
-        "Print the quality report: angles, angle histogram, radius-edge ratio, size conformity");
+        "Print the quality report: angles, angle histogram, radius-edge ratio, size conformity "
+        "(and the stretched-mesh measures against --metric)");
     command->add_flag(
         "--stats", arguments->stats,
         "Print work counters, predicate stages and construct_seconds (the generator alone, "

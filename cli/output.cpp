@@ -43,6 +43,8 @@ constexpr StageRow kStages2d[] = {
     {"corner_dot_sign", &Stats::corner_dot_sign},
     {"direction_dot_sign", &Stats::direction_dot_sign},
     {"within_rounding_of_segment", &Stats::within_rounding_of_segment},
+    {"in_ellipse", &Stats::in_ellipse},
+    {"compare_metric_lengths", &Stats::compare_metric_lengths},
 };
 constexpr StageRow kStages3d[] = {
     {"orient3d", &Stats::orient3d},

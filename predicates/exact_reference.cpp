@@ -48,6 +48,22 @@ std::vector<mpq_class> raw_matrix(std::initializer_list<const double*> points, i
     return m;
 }
 
+/// The rows [x y q(p) 1], q(p) = p^T M p exactly, one point per row.
+std::vector<mpq_class> metric_raw_matrix(std::initializer_list<const double*> points,
+                                         const double* m) {
+    const mpq_class m11 = exact(m[0]), m12 = exact(m[1]), m22 = exact(m[2]);
+    std::vector<mpq_class> rows;
+    rows.reserve(points.size() * points.size());
+    for (const double* p : points) {
+        const mpq_class x = exact(p[0]), y = exact(p[1]);
+        rows.push_back(x);
+        rows.push_back(y);
+        rows.push_back(m11 * x * x + 2 * m12 * x * y + m22 * y * y);
+        rows.emplace_back(1);
+    }
+    return rows;
+}
+
 Sign integer_sign(const mpz_class& x) {
     const int s = sgn(x);
     return s > 0 ? Sign::Positive : (s < 0 ? Sign::Negative : Sign::Zero);
@@ -144,11 +160,9 @@ mpq_class lift_perturbation(int power) {
     return p;
 }
 
-/// Sign of the raw lifted determinant with w_p += eps^(rank_p + 1).
-Sign perturbed_lifted_sign(std::initializer_list<const double*> points, int dims,
-                           const std::vector<int>& rank) {
-    std::vector<mpq_class> m = raw_matrix(points, dims, true);
-    const int n = static_cast<int>(points.size());
+/// Sign of the raw lifted determinant m (rows [p, w_p, 1]) with w_p += eps^(rank_p + 1).
+Sign perturbed_lifted_sign(std::vector<mpq_class> m, int dims, const std::vector<int>& rank) {
+    const int n = dims + 2;
     for (int r = 0; r < n; ++r) {
         m[at(r, dims, n)] += lift_perturbation(rank[static_cast<std::size_t>(r)] + 1);
     }
@@ -261,6 +275,11 @@ Sign incircle(const double* a, const double* b, const double* c, const double* d
     return determinant_sign(raw_matrix({a, b, c, d}, 2, true), 4);
 }
 
+Sign in_ellipse(const double* a, const double* b, const double* c, const double* d,
+                const double* m) {
+    return determinant_sign(metric_raw_matrix({a, b, c, d}, m), 4);
+}
+
 Sign insphere(const double* a, const double* b, const double* c, const double* d, const double* e) {
     return determinant_sign(raw_matrix({a, b, c, d, e}, 3, true), 5);
 }
@@ -343,7 +362,17 @@ Sign incircle_sos(const double* a, const double* b, const double* c, const doubl
                   std::uint32_t ia, std::uint32_t ib, std::uint32_t ic, std::uint32_t id) {
     require_small_integers("reference::incircle_sos",
                            {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]});
-    return perturbed_lifted_sign({a, b, c, d}, 2, ranks_by_decreasing_index({ia, ib, ic, id}));
+    return perturbed_lifted_sign(raw_matrix({a, b, c, d}, 2, true), 2,
+                                 ranks_by_decreasing_index({ia, ib, ic, id}));
+}
+
+Sign in_ellipse_sos(const double* a, const double* b, const double* c, const double* d,
+                    const double* m, std::uint32_t ia, std::uint32_t ib, std::uint32_t ic,
+                    std::uint32_t id) {
+    require_small_integers("reference::in_ellipse_sos",
+                           {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1], m[0], m[1], m[2]});
+    return perturbed_lifted_sign(metric_raw_matrix({a, b, c, d}, m), 2,
+                                 ranks_by_decreasing_index({ia, ib, ic, id}));
 }
 
 Sign insphere_sos(const double* a, const double* b, const double* c, const double* d,
@@ -352,7 +381,7 @@ Sign insphere_sos(const double* a, const double* b, const double* c, const doubl
     require_small_integers(
         "reference::insphere_sos",
         {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2], e[0], e[1], e[2]});
-    return perturbed_lifted_sign({a, b, c, d, e}, 3,
+    return perturbed_lifted_sign(raw_matrix({a, b, c, d, e}, 3, true), 3,
                                  ranks_by_decreasing_index({ia, ib, ic, id, ie}));
 }
 

@@ -31,6 +31,10 @@ Sign orient2d(const double* a, const double* b, const double* c);
 Sign orient3d(const double* a, const double* b, const double* c, const double* d);
 /// det of the rows [x y x^2+y^2 1] for a, b, c, d; equals Shewchuk's incircle.
 Sign incircle(const double* a, const double* b, const double* c, const double* d);
+/// det of the rows [x y q(p) 1] for a, b, c, d, q(p) = p^T M p with m = {M11, M12, M22}; equals
+/// in_ellipse (in_ellipse.hpp).
+Sign in_ellipse(const double* a, const double* b, const double* c, const double* d,
+                const double* m);
 /// det of the rows [x y z x^2+y^2+z^2 1] for a..e; equals Shewchuk's insphere.
 Sign insphere(const double* a, const double* b, const double* c, const double* d, const double* e);
 
@@ -58,6 +62,13 @@ Sign orient2d_sos(const double* a, const double* b, const double* c, std::uint32
 /// otherwise) and distinct indices.
 Sign incircle_sos(const double* a, const double* b, const double* c, const double* d,
                   std::uint32_t ia, std::uint32_t ib, std::uint32_t ic, std::uint32_t id);
+
+/// in_ellipse with lifted coordinates perturbed by index, as incircle_sos (the lift q(p)).
+/// @pre integer coordinates with |x| <= 2^20, integer metric entries with |m| <= 2^20, and
+/// distinct indices.
+Sign in_ellipse_sos(const double* a, const double* b, const double* c, const double* d,
+                    const double* m, std::uint32_t ia, std::uint32_t ib, std::uint32_t ic,
+                    std::uint32_t id);
 
 /// insphere with lifted coordinates perturbed by index, as incircle_sos (5x5, eps = 2^-200).
 /// @pre integer coordinates with |x| <= 2^20 and distinct indices.

@@ -30,6 +30,12 @@ inline constexpr double insphere_filter_eps = 0x1.49fffffffffffp-39;
 inline constexpr double insphere_filter_min = 0x1p-180;
 inline constexpr double insphere_filter_max = 0x1p+180;
 
+// proofs/gappa/in_ellipse_filter.g: differences and metric entries each normalised by their own
+// power of two; min and max bound both maxima (degree 5 in the underflow and overflow terms).
+inline constexpr double in_ellipse_filter_eps = 0x1.37fffffffffffp-41;
+inline constexpr double in_ellipse_filter_min = 0x1p-180;
+inline constexpr double in_ellipse_filter_max = 0x1p+180;
+
 // Relative filters: the sign of a computed value is certified when it exceeds eps times a
 // computed bound on the sum of its monomials' magnitudes (a permanent). Each eps is the least
 // power of two (so eps * bound is exact) that Gappa proves in proofs/gappa/<name>.g; the CTest
@@ -40,6 +46,8 @@ inline constexpr double insphere_filter_max = 0x1p+180;
 inline constexpr double compare_angles_filter_eps = 0x1p-49;
 // proofs/gappa/compare_lengths_filter.g (predicates/angle_comparisons_2d.cpp)
 inline constexpr double compare_lengths_filter_eps = 0x1p-50;
+// proofs/gappa/compare_metric_lengths_filter.g (predicates/metric_lengths.cpp)
+inline constexpr double compare_metric_lengths_filter_eps = 0x1p-50;
 // proofs/gappa/dot_sign_filter.g (corner_dot_sign, direction_dot_sign)
 inline constexpr double dot_sign_filter_eps = 0x1p-50;
 // The window of the double stages of angle_comparisons_2d: every nonzero computed coordinate

@@ -45,7 +45,8 @@ std::array<mpz_class, N> scaled_integers(const std::array<double, N>& x, int* le
     for (std::size_t i = 0; i < N; ++i) {
         if (mantissa[i] == 0) continue;  // stays 0
         out[i] = static_cast<long>(mantissa[i]);
-        mpz_mul_2exp(out[i].get_mpz_t(), out[i].get_mpz_t(), static_cast<mp_bitcnt_t>(exponent[i] - least));
+        mpz_mul_2exp(out[i].get_mpz_t(), out[i].get_mpz_t(),
+                     static_cast<mp_bitcnt_t>(exponent[i] - least));
     }
     if (least_out != nullptr) *least_out = least;
     return out;
@@ -61,7 +62,8 @@ Sign orient2d_gmp(const double* a, const double* b, const double* c) {
 }
 
 Sign orient3d_gmp(const double* a, const double* b, const double* c, const double* d) {
-    const auto v = scaled_integers<12>({a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]});
+    const auto v = scaled_integers<12>(
+        {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]});
     mpz_class m[3][3];
     for (int r = 0; r < 3; ++r) {
         for (int k = 0; k < 3; ++k) m[r][k] = v[3 * r + k] - v[9 + k];
@@ -86,6 +88,25 @@ Sign incircle_gmp(const double* a, const double* b, const double* c, const doubl
     return sign_of(det);
 }
 
+Sign in_ellipse_gmp(const double* a, const double* b, const double* c, const double* d,
+                    const double* m) {
+    // Coordinates and M scaled by their own powers of two: the determinant is homogeneous in each
+    // group (degree 4 and 1), so both scalings keep its sign.
+    const auto v = scaled_integers<8>({a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]});
+    const auto metric = scaled_integers<3>({m[0], m[1], m[2]});
+    mpz_class r[3][3];
+    for (int i = 0; i < 3; ++i) {
+        r[i][0] = v[2 * i] - v[6];
+        r[i][1] = v[2 * i + 1] - v[7];
+        r[i][2] = metric[0] * r[i][0] * r[i][0] + 2 * metric[1] * r[i][0] * r[i][1] +
+                  metric[2] * r[i][1] * r[i][1];
+    }
+    const mpz_class det = r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1]) -
+                          r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0]) +
+                          r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]);
+    return sign_of(det);
+}
+
 Sign insphere_gmp(const double* a, const double* b, const double* c, const double* d,
                   const double* e) {
     const auto v = scaled_integers<15>(
@@ -101,9 +122,10 @@ Sign insphere_gmp(const double* a, const double* b, const double* c, const doubl
         for (int k = 0; k < 4; ++k) {
             if (k != skip) cols[n++] = k;
         }
-        return mpz_class(m[1][cols[0]] * (m[2][cols[1]] * m[3][cols[2]] - m[2][cols[2]] * m[3][cols[1]]) -
-                         m[1][cols[1]] * (m[2][cols[0]] * m[3][cols[2]] - m[2][cols[2]] * m[3][cols[0]]) +
-                         m[1][cols[2]] * (m[2][cols[0]] * m[3][cols[1]] - m[2][cols[1]] * m[3][cols[0]]));
+        return mpz_class(
+            m[1][cols[0]] * (m[2][cols[1]] * m[3][cols[2]] - m[2][cols[2]] * m[3][cols[1]]) -
+            m[1][cols[1]] * (m[2][cols[0]] * m[3][cols[2]] - m[2][cols[2]] * m[3][cols[0]]) +
+            m[1][cols[2]] * (m[2][cols[0]] * m[3][cols[1]] - m[2][cols[1]] * m[3][cols[0]]));
     };
     const mpz_class det =
         m[0][0] * minor3(0) - m[0][1] * minor3(1) + m[0][2] * minor3(2) - m[0][3] * minor3(3);

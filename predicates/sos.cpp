@@ -7,6 +7,7 @@
 #include <array>
 #include <utility>
 
+#include "predicates/in_ellipse.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orient2d.hpp"
@@ -37,18 +38,19 @@ Sign orient2d_sos(const double* a, const double* b, const double* c, std::uint32
     // d/dy_i = x_k - x_j, d/dx_i = y_j - y_k, d/dy_j = x_i - x_k, then d2/dx_i dy_j = +1.
     Sign s = sign_of(pk[0] - pj[0]);  // exact: the sign of a difference is a comparison
     if (pk[0] == pj[0]) s = sign_of(pj[1] - pk[1]);
-    if (s == Sign::Zero) s = pi[0] > pk[0] ? Sign::Positive
-                            : pi[0] < pk[0] ? Sign::Negative
-                                            : Sign::Positive;
+    if (s == Sign::Zero)
+        s = pi[0] > pk[0] ? Sign::Positive : pi[0] < pk[0] ? Sign::Negative : Sign::Positive;
     return parity * s;
 }
 
-Sign incircle_sos(const double* a, const double* b, const double* c, const double* d,
-                  std::uint32_t ia, std::uint32_t ib, std::uint32_t ic, std::uint32_t id) {
-    const Sign unperturbed = incircle(a, b, c, d);
-    if (unperturbed != Sign::Zero) return unperturbed;
-    // d det[x y w 1] / d w_p is the signed cofactor of p's row: +O(bcd), -O(acd), +O(abd),
-    // -O(abc). The most perturbed point (largest index) with a nonzero cofactor decides.
+namespace {
+
+/// The lifted perturbation's decision once the unperturbed 2D lifted determinant is zero:
+/// d det[x y w 1] / d w_p is the signed cofactor of p's row: +O(bcd), -O(acd), +O(abd), -O(abc).
+/// The most perturbed point (largest index) with a nonzero cofactor decides.
+Sign lifted_cofactor_sign_2d(const double* a, const double* b, const double* c, const double* d,
+                             std::uint32_t ia, std::uint32_t ib, std::uint32_t ic,
+                             std::uint32_t id) {
     struct Term {
         std::uint32_t index;
         int which;
@@ -59,14 +61,39 @@ Sign incircle_sos(const double* a, const double* b, const double* c, const doubl
     for (const Term& t : terms) {
         Sign s = Sign::Zero;
         switch (t.which) {
-            case 0: s = orient2d(b, c, d); break;
-            case 1: s = -orient2d(a, c, d); break;
-            case 2: s = orient2d(a, b, d); break;
-            default: s = -orient2d(a, b, c); break;
+            case 0:
+                s = orient2d(b, c, d);
+                break;
+            case 1:
+                s = -orient2d(a, c, d);
+                break;
+            case 2:
+                s = orient2d(a, b, d);
+                break;
+            default:
+                s = -orient2d(a, b, c);
+                break;
         }
         if (s != Sign::Zero) return s;
     }
     return Sign::Zero;
+}
+
+}  // namespace
+
+Sign incircle_sos(const double* a, const double* b, const double* c, const double* d,
+                  std::uint32_t ia, std::uint32_t ib, std::uint32_t ic, std::uint32_t id) {
+    const Sign unperturbed = incircle(a, b, c, d);
+    if (unperturbed != Sign::Zero) return unperturbed;
+    return lifted_cofactor_sign_2d(a, b, c, d, ia, ib, ic, id);
+}
+
+Sign in_ellipse_sos(const double* a, const double* b, const double* c, const double* d,
+                    const double* m, std::uint32_t ia, std::uint32_t ib, std::uint32_t ic,
+                    std::uint32_t id) {
+    const Sign unperturbed = in_ellipse(a, b, c, d, m);
+    if (unperturbed != Sign::Zero) return unperturbed;
+    return lifted_cofactor_sign_2d(a, b, c, d, ia, ib, ic, id);
 }
 
 Sign insphere_sos(const double* a, const double* b, const double* c, const double* d,
@@ -85,11 +112,21 @@ Sign insphere_sos(const double* a, const double* b, const double* c, const doubl
     for (const Term& t : terms) {
         Sign s = Sign::Zero;
         switch (t.which) {
-            case 0: s = -orient3d(b, c, d, e); break;
-            case 1: s = orient3d(a, c, d, e); break;
-            case 2: s = -orient3d(a, b, d, e); break;
-            case 3: s = orient3d(a, b, c, e); break;
-            default: s = -orient3d(a, b, c, d); break;
+            case 0:
+                s = -orient3d(b, c, d, e);
+                break;
+            case 1:
+                s = orient3d(a, c, d, e);
+                break;
+            case 2:
+                s = -orient3d(a, b, d, e);
+                break;
+            case 3:
+                s = orient3d(a, b, c, e);
+                break;
+            default:
+                s = -orient3d(a, b, c, d);
+                break;
         }
         if (s != Sign::Zero) return s;
     }

@@ -28,6 +28,7 @@ struct PredicateStats {
     StageCounts orient2d, incircle, orient3d, insphere;
     StageCounts compare_angles, compare_lengths, corner_dot_sign, direction_dot_sign;
     StageCounts within_rounding_of_segment, compare_dihedral, compare_volume_edge;
+    StageCounts in_ellipse, compare_metric_lengths;
 };
 
 /// True when the library was built with EXACTMESH_PREDICATE_STATS.

@@ -2,7 +2,7 @@
 # Checks one stage-A filter constant of predicates/filter_constants.hpp against its Gappa proof
 # proofs/gappa/<pred>_filter.g; the argument is written up in proofs/invariants/filters.md.
 #
-#   cmake -DPRED=<orient2d|orient3d|incircle|insphere> [-DGAPPA=<gappa>] [-DMODE=check|bound]
+#   cmake -DPRED=<orient2d|orient3d|incircle|insphere|in_ellipse> [-DGAPPA=<gappa>] [-DMODE=check|bound]
 #         [-DOUT_DIR=<dir>] -P proofs/check_constants.cmake
 #
 # MODE=check (default; the CTest test proofs.<pred>_filter):
@@ -29,8 +29,11 @@ set(degree_orient2d 2)
 set(degree_orient3d 3)
 set(degree_incircle 4)
 set(degree_insphere 5)
+# in_ellipse: 4 in the differences and 1 in the metric, both normalised by their own power of
+# two and bounded by the same min and max (proofs/gappa/in_ellipse_filter.g).
+set(degree_in_ellipse 5)
 if(NOT DEFINED degree_${PRED})
-  message(FATAL_ERROR "PRED must be orient2d, orient3d, incircle or insphere, not '${PRED}'")
+  message(FATAL_ERROR "PRED must be orient2d, orient3d, incircle, insphere or in_ellipse, not '${PRED}'")
 endif()
 set(d ${degree_${PRED}})
 set(script "${source_dir}/proofs/gappa/${PRED}_filter.g")

@@ -4,7 +4,7 @@
 
 #include "base/enum_names.hpp"
 #include "base/errors.hpp"
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 
 namespace exactmesh::generators {
 

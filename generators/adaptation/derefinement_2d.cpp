@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "base/errors.hpp"
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 #include "triangulation/modification/vertex_removal_2d.hpp"

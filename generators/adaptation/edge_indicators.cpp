@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "base/enum_names.hpp"
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 
 namespace exactmesh::generators {
 

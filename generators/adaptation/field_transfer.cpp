@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
 #include "triangulation/mesh/locate_2d.hpp"

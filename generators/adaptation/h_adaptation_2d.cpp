@@ -6,7 +6,7 @@
 
 #include "generators/adaptation/edge_indicators.hpp"
 #include "generators/adaptation/h_adaptation_common.hpp"
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 
 namespace exactmesh::generators {
 

@@ -14,7 +14,7 @@
 #include "base/counter_table.hpp"
 #include "generators/adaptation/edge_indicators.hpp"
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 
 namespace exactmesh::generators {
 

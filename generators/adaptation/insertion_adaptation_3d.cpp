@@ -7,7 +7,7 @@
 #include "base/errors.hpp"
 #include "generators/adaptation/field_transfer.hpp"
 #include "generators/adaptation/laplacian_smoothing_3d.hpp"
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "generators/adaptation/weighted_movement.hpp"
 #include "predicates/orient3d.hpp"
 #include "triangulation/checks/check_3d.hpp"

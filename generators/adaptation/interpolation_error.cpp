@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 
 namespace exactmesh::generators {
 

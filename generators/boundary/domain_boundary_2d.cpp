@@ -377,6 +377,12 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
 }
 
 DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size) {
+    return discretize_domain_boundary(domain,
+                                      [&size](const double*, const double*) { return size; });
+}
+
+DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain,
+                                           const PieceSizeFunction& piece_size) {
     const tri::Pslg& pslg = domain.pslg();
     const tri::Cdt2Options& options = domain.domain_options();
     DomainBoundary2 boundary;
@@ -413,6 +419,7 @@ DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const Size
     // from the sizes at the ends and the middle.
     const auto spaced = [&](tri::VertIdx u, tri::VertIdx v, std::uint32_t segment) {
         const Point pa{mesh.point(u)[0], mesh.point(u)[1]}, pb{mesh.point(v)[0], mesh.point(v)[1]};
+        const SizeFunction size = piece_size(mesh.point(u), mesh.point(v));
         // Linear interpolation (the difference of the ends taken as two products when it
         // overflows: ends near the largest double).
         const auto offset = [](double from, double to, double t) {

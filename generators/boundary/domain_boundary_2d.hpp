@@ -68,6 +68,14 @@ DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
 /// The same from the domain's triangulation, built once (MeshDomain2::triangulation, copied).
 DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size);
 
+/// The size along one piece a - b of the domain's boundary: a size that depends on the
+/// direction as well as the position (a metric field's length along the piece, issue 14).
+using PieceSizeFunction = std::function<SizeFunction(const double* a, const double* b)>;
+/// The same discretization with the size of each piece given by piece_size(a, b) (a and b its
+/// ends' coordinates); the isotropic overload passes the same size for every piece.
+DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain,
+                                           const PieceSizeFunction& piece_size);
+
 /// Per vertex of a domain's CDT (constrained_delaunay_2d with the exterior removed): the mean
 /// length of the boundary pieces at it (of all its edges where no piece ends there; 0 for a
 /// vertex no triangle uses), and its shortest edge (infinity when it has none). Lengths are

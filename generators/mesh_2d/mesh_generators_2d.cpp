@@ -18,6 +18,7 @@
 #include "generators/mesh_2d/advancing_front_delaunay_2d.hpp"
 #include "generators/mesh_2d/frontal_delaunay_2d.hpp"
 #include "generators/mesh_2d/quadtree_mesh_2d.hpp"
+#include "generators/stretched/metric_delaunay_2d.hpp"
 
 namespace exactmesh::generators {
 
@@ -262,6 +263,29 @@ MeshRun2 run_advancing_layers(const MeshDomain2& domain, const MeshOptions2& opt
     return {std::move(result.mesh), std::move(result.quads), counter_list(result.counters)};
 }
 
+MeshRun2 run_metric_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
+    MetricDelaunayOptions2 metric;
+    if (options.metric) {
+        metric.metric = *options.metric;
+    } else if (options.size.bounded()) {
+        // No metric: the isotropic metric of the size (unit metric length = the size's length),
+        // under the size budget every generator checks.
+        check_size_budget(domain, options, true);
+        const SizeFunction size = options.size;
+        metric.metric =
+            MetricField2::analytic([size](double x, double y) { return isotropic(size(x, y)); },
+                                   "isotropic, the size " + size.describe());
+    } else {
+        throw InputError(
+            "--generator metric-delaunay needs a metric field (--metric 'M11;M12;M22' or a "
+            "metric file) or a size (--size): it meshes to unit edge lengths in that metric");
+    }
+    metric.max_steiner_points = options.max_steiner_points;
+    metric.cdt = options.cdt;
+    MetricDelaunayResult2 result = metric_delaunay_2d(domain, metric);
+    return {std::move(result.mesh), {}, counter_list(result.counters)};
+}
+
 constexpr std::array kGenerators{
     MeshGenerator2{
         "delaunay-refinement",
@@ -301,6 +325,14 @@ constexpr std::array kGenerators{
                    {MeshOption::Size, MeshOption::MaxSteinerPoints, MeshOption::RegionAttributes,
                     MeshOption::RegionAreas},
                    &run_frontal_delaunay},
+    MeshGenerator2{"metric-delaunay",
+                   "Borouchaki-George-Hecht: boundary and edges split to unit length in a metric "
+                   "field, points inserted by Bowyer-Watson with the exact in-ellipse, then "
+                   "in-ellipse swaps; --metric, else the isotropic metric of the size",
+                   false,
+                   true,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints, MeshOption::Metric},
+                   &run_metric_delaunay},
     MeshGenerator2{"advancing-layers",
                    "Pirzadeh/Garimella-Shephard: boundary layers along the walls (hole loops) "
                    "from --layers, stacks stopped exactly at aspect ratio 1 or a collision, the "
@@ -311,13 +343,14 @@ constexpr std::array kGenerators{
                    &run_advancing_layers},
 };
 
-constexpr std::array<EnumName<MeshOption>, 7> kMeshOptionNames{{
+constexpr std::array<EnumName<MeshOption>, 8> kMeshOptionNames{{
     {"--size", MeshOption::Size},
     {"--min-angle", MeshOption::MinAngle},
     {"--polish-angle", MeshOption::PolishAngle},
     {"--max-steiner", MeshOption::MaxSteinerPoints},
     {"regional attributes", MeshOption::RegionAttributes},
     {"region maximum areas", MeshOption::RegionAreas},
+    {"--metric", MeshOption::Metric},
     {"--layers", MeshOption::Layers},
 }};
 

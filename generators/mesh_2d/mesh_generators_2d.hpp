@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -18,6 +19,7 @@
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/sizing/size_function.hpp"
 #include "generators/stretched/advancing_layers_2d.hpp"
+#include "generators/stretched/metric_field_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 
 namespace exactmesh::generators {
@@ -30,6 +32,8 @@ struct MeshOptions2 {
     double polish_angle = -1;  ///< Delaunay refinement's polish (RefinementOptions2), -1: automatic
     std::uint64_t max_steiner_points = 0;  ///< 0: the generator's automatic budget
     triangulation::Cdt2Options cdt;        ///< numbering, recovery of the initial CDT
+    /// The metric field of the stretched generators (issue 14: --metric); none otherwise.
+    std::optional<MetricField2> metric;
     /// The boundary layers (advancing-layers only: --layers, --quads).
     LayerParameters2 layers;
 };
@@ -54,7 +58,8 @@ enum class MeshOption : std::uint32_t {
     MaxSteinerPoints = 1u << 3,  ///< MeshOptions2::max_steiner_points (--max-steiner)
     RegionAttributes = 1u << 4,  ///< the regions' attributes, carried to the mesh's triangles
     RegionAreas = 1u << 5,       ///< the regions' maximum areas (the 4th number, > 0)
-    Layers = 1u << 6,            ///< MeshOptions2::layers (--layers, --quads)
+    Metric = 1u << 6,            ///< MeshOptions2::metric (--metric)
+    Layers = 1u << 7,            ///< MeshOptions2::layers (--layers, --quads)
 };
 
 /// A set of MeshOption.

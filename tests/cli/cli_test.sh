@@ -1023,13 +1023,63 @@ assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/$file" "$quad
     mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2 --smooth 2 -o "$work/x.vtu"
 }
 
+# `mesh --metric`: the stretched-mesh quality report against an expression or a metric file
+# (.node with 3 attributes M11 M12 M22 and its .ele), for any generator; bad metrics are exit 2
+# with one message naming the file, line and value (or the point), and leave no output.
+mesh_metric() {
+  # Isotropic size 0.1 written as a metric, on a mesh of size 0.1: most edges near unit length.
+  run 0 mesh --domain key -o "$work/k.ele" --size 0.1 --quality --metric '100;0;100' || return
+  grep -Eq '^quality.metric: expression 100;0;100$' "$work/out" || fail "no metric line: $(cat "$work/out")"
+  grep -Eq '^quality.metric_edge_length: min 0\.[0-9]+ median 0\.[5-9][0-9]* max [01]\.[0-9]+ \([0-9]+ edges, [0-9.]+% in \[1/sqrt2, sqrt2\]\)$' "$work/out" ||
+    fail "metric edge lengths: $(grep metric_edge "$work/out")"
+  grep -Eq '^quality.metric_shape: min 0\.[0-9]+ median 0\.[6-9][0-9]* mean ' "$work/out" ||
+    fail "metric shape: $(grep metric_shape "$work/out")"
+  grep -Eq '^quality.above_150_degrees: 0 of [0-9]+ triangles$' "$work/out" || fail "angles: $(cat "$work/out")"
+  grep -Eq '^quality.aspect_ratio: min 1\.[0-9]+ ' "$work/out" || fail "aspect: $(cat "$work/out")"
+  # Any generator, a stretched metric (0.01 in x, 1 in y): isotropic edges are far too long in x.
+  run 0 mesh --domain key -o "$work/f.ele" --generator frontal --size 0.1 --quality --metric '1e4;0;1' || return
+  grep -Eq '^quality.metric_edge_length: .* max ([2-9]|[1-9][0-9]+)\.[0-9]+ ' "$work/out" ||
+    fail "stretched metric: $(grep metric_edge "$work/out")"
+  # A metric file, 1-based, with a comment; its field covers the domain.
+  printf '# metric\n4 2 3 0\n1 -1 -1 100 0 100\n2 3 -1 100 0 100\n3 3 1 100 0 100\n4 -1 1 100 50 100\n' >"$work/m.node"
+  printf '2 3 0\n1 1 2 3\n2 1 3 4\n' >"$work/m.ele"
+  run 0 mesh --domain key -o "$work/m_out.ele" --size 0.1 --quality --metric "$work/m.node" || return
+  grep -Eq '^quality.metric: background mesh: 4 vertices, 2 triangles$' "$work/out" ||
+    fail "metric file: $(cat "$work/out")"
+  # Without --quality: a warning, not silence.
+  run 0 mesh --domain key -o "$work/w.ele" --size 0.1 --metric '1;0;1' || return
+  grep -q 'ignored without --quality' "$work/err" || fail "no warning: $(cat "$work/err")"
+  # Bad metrics: one message each, exit 2, no output left behind.
+  printf '# metric\n4 2 3 0\n1 -1 -1 100 0 100\n2 3 -1 100 0 100\n3 3 1 100 0 100\n4 -1 1 1 2 1\n' >"$work/bad.node"
+  cp "$work/m.ele" "$work/bad.ele"
+  expect_error 2 'bad\.node:6: vertex 4: metric \(M11, M12, M22\) = \(1, 2, 1\) is not positive definite' \
+    mesh --domain key -o "$work/x.ele" --size 0.1 --quality --metric "$work/bad.node"
+  printf '2 3 0\n1 1 3 2\n2 1 3 4\n' >"$work/cw.ele"
+  cp "$work/m.node" "$work/cw.node"
+  expect_error 2 'cw\.ele: background mesh: triangle 0: inverted' \
+    mesh --domain key -o "$work/x.ele" --size 0.1 --quality --metric "$work/cw.node"
+  printf '1 2 2 0\n1 0 0 1 1\n' >"$work/two.node"
+  expect_error 2 'two\.node: a metric file.s vertices carry exactly 3 attributes M11 M12 M22; this one has 2' \
+    mesh --domain key -o "$work/x.ele" --size 0.1 --quality --metric "$work/two.node"
+  cp "$work/m.node" "$work/lonely.node"
+  expect_error 2 'lonely\.node: the metric file.s triangles belong in .*lonely\.ele, which does not exist' \
+    mesh --domain key -o "$work/x.ele" --size 0.1 --quality --metric "$work/lonely.node"
+  expect_error 2 "--metric '1;2' is neither a readable metric file .* \(2 parts\)" \
+    mesh --domain key -o "$work/x.ele" --size 0.1 --quality --metric '1;2'
+  expect_error 2 "M12 'z': Unexpected token" \
+    mesh --domain key -o "$work/x.ele" --size 0.1 --quality --metric '1;z;1'
+  expect_error 2 "--metric '1;x;1' at \(.*\): metric \(M11, M12, M22\) = \(1, .*, 1\) is not positive definite" \
+    mesh --domain key -o "$work/x.ele" --size 0.1 --quality --metric '1;x;1'
+  [[ ! -e "$work/x.ele" ]] || fail "mesh --metric: a refused run wrote its output"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
     swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
-    region_areas | adapt | adapt_bad_input | layers)
+    region_areas | adapt | adapt_bad_input | mesh_metric | layers)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

@@ -14,15 +14,20 @@
 // refinement only inserts when no edge is encroached, so this reports an encroachment.
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
+#include "predicates/in_ellipse.hpp"
+#include "predicates/sos.hpp"
 #include "triangulation/constrained/cdt_phases_2d.hpp"
 #include "triangulation/constrained/cdt_state_2d.hpp"
 
@@ -49,6 +54,59 @@ void reserve(CdtState& cdt, std::uint32_t vertices) {
     cdt.removed.reserve(slots);
     if (!cdt.attribute.empty()) cdt.attribute.reserve(slots);
     cdt.cavity_stamp.reserve(slots);
+}
+
+/// Replaces the cavity (cdt.cavity, stamped with cdt.stamp; its boundary half-edges in
+/// cdt.boundary, p strictly left of each) by the fan of triangles (u_i, v_i, p) around p, the
+/// new triangles on t's side of the domain.
+void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
+    // The boundary in order: from each boundary edge u -> v, turn about v through the cavity to
+    // the next boundary edge leaving v. A cavity with an interior vertex or pinched at a vertex
+    // would not close after cdt.boundary.size() edges (never seen: the Delaunay lemma excludes it).
+    auto on_boundary = [&](EdgeIdx g) {
+        return cdt.segment_of[g] != kNone ||
+               cdt.cavity_stamp[triangle_of(cdt.mesh.twin[g])] != cdt.stamp;
+    };
+    cdt.cycle.clear();
+    EdgeIdx current = cdt.boundary.front();
+    do {
+        cdt.cycle.push_back(current);
+        EM_ASSERT(cdt.cycle.size() <= cdt.boundary.size());
+        EdgeIdx g = next_edge(current);
+        std::size_t turns = 0;
+        while (!on_boundary(g)) {
+            g = next_edge(cdt.mesh.twin[g]);
+            EM_ASSERT(++turns <= cdt.cavity.size());
+        }
+        current = g;
+    } while (current != cdt.boundary.front());
+    EM_ASSERT(cdt.cycle.size() == cdt.boundary.size());
+    EM_ASSERT(cdt.cycle.size() == cdt.cavity.size() + 2);
+
+    std::vector<FanEdge>& fan = cdt.fan;
+    fan.clear();
+    for (const EdgeIdx e : cdt.cycle) {
+        fan.push_back(
+            {cdt.mesh.origin(e), cdt.mesh.destination(e), cdt.mesh.twin[e], cdt.segment_of[e]});
+    }
+    const CdtState::Side side = cdt.side_of(t);
+    const std::size_t n = fan.size();
+    std::vector<TriIdx>& slots = cdt.fan_slots;
+    slots.assign(cdt.cavity.begin(), cdt.cavity.end());
+    while (slots.size() < n) slots.push_back(cdt.new_triangle());
+    for (std::size_t i = 0; i < n; ++i) {
+        const TriIdx s = slots[i];
+        cdt.set(s, fan[i].u, fan[i].v, p);
+        cdt.link_outer(3 * s, fan[i].outer, fan[i].segment);
+        cdt.put_on_side(s, side);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        // (v_i -> p) of triangle i meets (p -> u_{i+1}) of the next, u_{i+1} = v_i.
+        cdt.link_inner(3 * slots[i] + 1, 3 * slots[(i + 1) % n] + 2);
+    }
+    cdt.core.last_triangle = slots[0];
+    ++cdt.edit_counters.cavity_insertions;
+    cdt.edit_counters.cavity_triangles += cdt.cavity.size();
 }
 
 CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
@@ -119,53 +177,148 @@ CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
     }
     if (!cdt.encroached_edges.empty()) return reject(CavityInsertion::Encroaches);
 
-    // The boundary in order: from each boundary edge u -> v, turn about v through the cavity to
-    // the next boundary edge leaving v. A cavity with an interior vertex or pinched at a vertex
-    // would not close after cdt.boundary.size() edges (never seen: the Delaunay lemma excludes it).
-    auto on_boundary = [&](EdgeIdx g) {
-        return cdt.segment_of[g] != kNone ||
-               cdt.cavity_stamp[triangle_of(cdt.mesh.twin[g])] != cdt.stamp;
-    };
-    cdt.cycle.clear();
-    EdgeIdx current = cdt.boundary.front();
-    do {
-        cdt.cycle.push_back(current);
-        EM_ASSERT(cdt.cycle.size() <= cdt.boundary.size());
-        EdgeIdx g = next_edge(current);
-        std::size_t turns = 0;
-        while (!on_boundary(g)) {
-            g = next_edge(cdt.mesh.twin[g]);
-            EM_ASSERT(++turns <= cdt.cavity.size());
-        }
-        current = g;
-    } while (current != cdt.boundary.front());
-    EM_ASSERT(cdt.cycle.size() == cdt.boundary.size());
-    EM_ASSERT(cdt.cycle.size() == cdt.cavity.size() + 2);
+    write_fan(cdt, t, p);
+    return CavityInsertion::Inserted;
+}
 
-    std::vector<FanEdge>& fan = cdt.fan;
-    fan.clear();
-    for (const EdgeIdx e : cdt.cycle) {
-        fan.push_back(
-            {cdt.mesh.origin(e), cdt.mesh.destination(e), cdt.mesh.twin[e], cdt.segment_of[e]});
+/// Perturbed in-ellipse conflict of p with the finite triangle u under `metric`.
+bool metric_conflict(CdtState& cdt, TriIdx u, VertIdx p, const double* metric) {
+    const VertIdx* w = &cdt.mesh.tv[3 * u];
+    const double* a = cdt.mesh.point(w[0]);
+    const double* b = cdt.mesh.point(w[1]);
+    const double* c = cdt.mesh.point(w[2]);
+    const double* q = cdt.mesh.point(p);
+    Sign s = predicates::in_ellipse(a, b, c, q, metric);
+    if (s == Sign::Zero) {
+        const auto& index = cdt.core.input_index;
+        s = predicates::in_ellipse_sos(a, b, c, q, metric, index[w[0]], index[w[1]], index[w[2]],
+                                       index[p]);
     }
-    const CdtState::Side side = cdt.side_of(t);
-    const std::size_t n = fan.size();
-    std::vector<TriIdx>& slots = cdt.fan_slots;
-    slots.assign(cdt.cavity.begin(), cdt.cavity.end());
-    while (slots.size() < n) slots.push_back(cdt.new_triangle());
-    for (std::size_t i = 0; i < n; ++i) {
-        const TriIdx s = slots[i];
-        cdt.set(s, fan[i].u, fan[i].v, p);
-        cdt.link_outer(3 * s, fan[i].outer, fan[i].segment);
-        cdt.put_on_side(s, side);
+    return s == Sign::Positive;
+}
+
+/// The triangles reachable from the seeds through unconstrained edges among those stamped
+/// `from`, stamped anew (cdt.stamp) into cdt.cavity.
+void restamp_connected(CdtState& cdt, std::span<const TriIdx> seeds, std::uint32_t from) {
+    if (++cdt.stamp == 0) {  // wrapped: no slot may hold the new value by accident
+        for (std::uint32_t& v : cdt.cavity_stamp) v = v == from ? 1u : 0u;
+        from = 1;
+        cdt.stamp = 2;
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        // (v_i -> p) of triangle i meets (p -> u_{i+1}) of the next, u_{i+1} = v_i.
-        cdt.link_inner(3 * slots[i] + 1, 3 * slots[(i + 1) % n] + 2);
+    cdt.cavity.clear();
+    for (const TriIdx t : seeds) {
+        cdt.cavity_stamp[t] = cdt.stamp;
+        cdt.cavity.push_back(t);
     }
-    cdt.core.last_triangle = slots[0];
-    ++cdt.edit_counters.cavity_insertions;
-    cdt.edit_counters.cavity_triangles += cdt.cavity.size();
+    for (std::size_t i = 0; i < cdt.cavity.size(); ++i) {
+        const TriIdx c = cdt.cavity[i];
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * c + k;
+            const TriIdx u = triangle_of(cdt.mesh.twin[e]);
+            if (cdt.segment_of[e] != kNone || cdt.cavity_stamp[u] != from) continue;
+            cdt.cavity_stamp[u] = cdt.stamp;
+            cdt.cavity.push_back(u);
+        }
+    }
+}
+
+CavityInsertion insert_in_metric_cavity(CdtState& cdt, TriIdx t, double x, double y,
+                                        const double* metric) {
+    EM_ASSERT(cdt.domain_marked() && !cdt.mesh.is_dead(t) && !cdt.mesh.is_infinite(t));
+    cdt.encroached_edges.clear();
+    const VertIdx p = cdt.add_vertex(x, y);
+    auto reject = [&](CavityInsertion why) {
+        cdt.remove_last_vertex();
+        ++cdt.edit_counters.rejected_insertions;
+        return why;
+    };
+    // The seeds: t, which must hold p (closed), and the triangle across each edge of t that p
+    // lies on (then p is in both; on a constrained edge it would split it: refused).
+    std::array<TriIdx, 3> seeds{t, kNone, kNone};
+    std::size_t seed_count = 1;
+    for (unsigned k = 0; k < 3; ++k) {
+        const EdgeIdx e = 3 * t + k;
+        if (cdt.core.same_point(cdt.mesh.origin(e), p)) return reject(CavityInsertion::Duplicate);
+        const Sign side = cdt.core.orient(cdt.mesh.origin(e), cdt.mesh.destination(e), p);
+        if (side == Sign::Negative) return reject(CavityInsertion::NotInConflict);
+        if (side == Sign::Zero) {
+            if (cdt.segment_of[e] != kNone) {
+                cdt.encroached_edges.push_back(e);
+                return reject(CavityInsertion::Encroaches);
+            }
+            const TriIdx across = triangle_of(cdt.mesh.twin[e]);
+            if (cdt.mesh.is_infinite(across)) return reject(CavityInsertion::Outside);
+            seeds[seed_count++] = across;
+        }
+    }
+    if (cdt.cavity_stamp.size() < cdt.mesh.triangle_slots())
+        cdt.cavity_stamp.resize(cdt.mesh.triangle_slots(), 0);
+    // The conflict zone: grown from the seeds across unconstrained edges into every finite
+    // triangle whose circumscribed ellipse (in the metric) holds p.
+    std::uint32_t grown = ++cdt.stamp;
+    if (grown == 0) {
+        std::fill(cdt.cavity_stamp.begin(), cdt.cavity_stamp.end(), 0u);
+        grown = cdt.stamp = 1;
+    }
+    cdt.cavity.clear();
+    for (std::size_t i = 0; i < seed_count; ++i) {
+        cdt.cavity_stamp[seeds[i]] = grown;
+        cdt.cavity.push_back(seeds[i]);
+    }
+    for (std::size_t i = 0; i < cdt.cavity.size(); ++i) {
+        const TriIdx c = cdt.cavity[i];
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * c + k;
+            const TriIdx u = triangle_of(cdt.mesh.twin[e]);
+            if (cdt.cavity_stamp[u] == grown || cdt.segment_of[e] != kNone) continue;
+            if (cdt.mesh.is_infinite(u) || !metric_conflict(cdt, u, p, metric)) continue;
+            cdt.cavity_stamp[u] = grown;
+            cdt.cavity.push_back(u);
+        }
+    }
+    // Star-shaped from p: in a metric that varies from point to point the mesh is not Delaunay
+    // in p's metric, so the conflict zone may hold triangles p does not see. Each pass drops a
+    // non-seed triangle with a boundary edge (constrained, or towards a triangle outside) that
+    // p is not strictly left of, then keeps what stays connected to the seeds; at the end every
+    // boundary edge sees p strictly, so the boundary is one simple loop around p (the seeds'
+    // edges already see it: p is inside them) and the fan is valid [George-Borouchaki98 §7.3].
+    const auto is_seed = [&](TriIdx c) { return c == seeds[0] || c == seeds[1] || c == seeds[2]; };
+    for (;;) {
+        bool dropped = false;
+        for (const TriIdx c : cdt.cavity) {
+            if (is_seed(c)) continue;
+            for (unsigned k = 0; k < 3; ++k) {
+                const EdgeIdx e = 3 * c + k;
+                if (cdt.segment_of[e] == kNone &&
+                    cdt.cavity_stamp[triangle_of(cdt.mesh.twin[e])] == cdt.stamp) {
+                    continue;
+                }
+                if (cdt.core.orient(cdt.mesh.origin(e), cdt.mesh.destination(e), p) !=
+                    Sign::Positive) {
+                    cdt.cavity_stamp[c] = 0;
+                    dropped = true;
+                    break;
+                }
+            }
+        }
+        if (!dropped) break;
+        ++cdt.edit_counters.cavity_corrections;
+        restamp_connected(cdt, std::span<const TriIdx>(seeds.data(), seed_count), cdt.stamp);
+    }
+    cdt.boundary.clear();
+    for (const TriIdx c : cdt.cavity) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const EdgeIdx e = 3 * c + k;
+            if (cdt.segment_of[e] != kNone ||
+                cdt.cavity_stamp[triangle_of(cdt.mesh.twin[e])] != cdt.stamp) {
+                if (cdt.core.same_point(cdt.mesh.origin(e), p)) {
+                    return reject(CavityInsertion::Duplicate);
+                }
+                cdt.boundary.push_back(e);
+            }
+        }
+    }
+    write_fan(cdt, t, p);
     return CavityInsertion::Inserted;
 }
 
@@ -379,6 +532,10 @@ TriIdx ConstrainedTriangulation2::locate(double x, double y) {
 
 CavityInsertion ConstrainedTriangulation2::insert_in_cavity(TriIdx t, double x, double y) {
     return detail::insert_in_cavity(*state_, t, x, y);
+}
+CavityInsertion ConstrainedTriangulation2::insert_in_metric_cavity(TriIdx t, double x, double y,
+                                                                   const double* metric) {
+    return detail::insert_in_metric_cavity(*state_, t, x, y, metric);
 }
 std::span<const EdgeIdx> ConstrainedTriangulation2::encroached_edges() const {
     return state_->encroached_edges;

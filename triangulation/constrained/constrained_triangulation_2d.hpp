@@ -51,6 +51,8 @@ struct ConstrainedTriangulation2Counters {
     std::uint64_t edge_splits = 0;          ///< constrained edges split at a new vertex
     std::uint64_t edge_bends = 0;           ///< constrained edges split at an existing vertex
     std::uint64_t split_flips = 0;          ///< Lawson flips after edge splits
+    /// insert_in_metric_cavity: passes that dropped triangles p did not see from its cavity
+    std::uint64_t cavity_corrections = 0;
 };
 
 class ConstrainedTriangulation2 {
@@ -104,6 +106,19 @@ class ConstrainedTriangulation2 {
     /// in its (perturbed) circumcircle. See CavityInsertion for the outcomes; only Inserted
     /// changes the triangulation. The new vertex is mesh().vertex_count() - 1.
     CavityInsertion insert_in_cavity(TriIdx t, double x, double y);
+    /// Bowyer-Watson insertion of (x, y) in the plane mapped by a constant metric (issue 14:
+    /// metric Delaunay insertion [George-Borouchaki98 §7; BorouchakiGeorgeHechtLaugSaltel97]):
+    /// t must be a domain triangle holding the point (closed); the cavity is every triangle
+    /// reached from it across unconstrained edges whose circumscribed ellipse in `metric`
+    /// ({M11, M12, M22}, positive definite doubles; in_ellipse with the shared perturbation)
+    /// holds the point, then reduced (exact orient2d) until the point sees every boundary edge
+    /// strictly: a valid fan whatever the metric. No encroachment test: a point on a
+    /// constrained edge is refused (Encroaches, the edge listed), one off it is inserted. After
+    /// such insertions the triangulation is no longer constrained Delaunay in the Euclidean
+    /// sense (it is what the metric insertions made); topology, orientation, the domain and
+    /// the constraints stay valid. Outcomes: Inserted, Duplicate, Encroaches, NotInConflict
+    /// (the point is not in t), Outside (beyond the hull).
+    CavityInsertion insert_in_metric_cavity(TriIdx t, double x, double y, const double* metric);
     /// After insert_in_cavity returned Encroaches: the constrained half-edges (seen from inside
     /// the cavity) whose closed diametral circle holds the point or that it lies beyond.
     std::span<const EdgeIdx> encroached_edges() const;

@@ -58,6 +58,7 @@
 #include "base/number_text.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/expansion.hpp"
+#include "predicates/in_ellipse.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
@@ -273,6 +274,41 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinTotalLength) {
         return compare_lengths(work.point(q.c), work.point(q.d), work.point(q.a),
                                work.point(q.b)) == Sign::Negative;
     });
+}
+
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) {
+    if (criterion.metrics.size() != 3 * std::size_t{mesh.vertex_count()}) {
+        throw InputError("metric swapping needs three values per vertex: got " +
+                         std::to_string(criterion.metrics.size()) + " values for " +
+                         std::to_string(mesh.vertex_count()) + " vertices");
+    }
+    for (const double m : criterion.metrics) {
+        if (!std::isfinite(m)) {
+            throw InputError("metric swapping: a metric entry is not finite (" + format_number(m) +
+                             ")");
+        }
+    }
+    const std::uint64_t budget =
+        std::uint64_t{criterion.max_swaps_per_edge} * 3 * std::uint64_t{mesh.triangle_count()};
+    std::uint64_t swaps = 0, stops = 0;
+    EdgeSwapCounters counters = swap_loop(mesh, false, [&](const TriMesh2& work, const Quad& q) {
+        if (swaps >= budget) {
+            ++stops;
+            return false;
+        }
+        double m[3] = {0, 0, 0};
+        for (const VertIdx v : {q.a, q.b, q.c, q.d}) {
+            for (std::size_t k = 0; k < 3; ++k)
+                m[k] += 0.25 * criterion.metrics[3 * std::size_t{v} + k];
+        }
+        const bool swap =
+            predicates::in_ellipse_sos(work.point(q.a), work.point(q.b), work.point(q.c),
+                                       work.point(q.d), m, q.a, q.b, q.c, q.d) == Sign::Positive;
+        if (swap) ++swaps;
+        return swap;
+    });
+    counters.budget_stops = stops;
+    return counters;
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion) {

@@ -55,6 +55,20 @@ struct DataDependent {
     DataCost cost = DataCost::AngleBetweenNormals;
 };
 
+/// Metric Delaunay (issue 14): swap when the apex across the edge lies inside the circumscribed
+/// ellipse of the triangle in the mean of the quadrilateral's four vertex metrics (the SoS
+/// in_ellipse, predicates/in_ellipse.hpp): both diagonals of a quadrilateral are judged in the
+/// same metric, so each decision is one exact test and a single quadrilateral never flips back.
+/// With a metric that varies over the mesh there is no global potential, so the loop stops
+/// after max_swaps_per_edge times the number of edges swaps (counted in EdgeSwapCounters::
+/// budget_stops).
+struct MetricInEllipse {
+    /// 3 per vertex: {M11, M12, M22} of each vertex's metric, all scaled by one common positive
+    /// factor (finite doubles, positive definite).
+    std::span<const double> metrics;
+    std::uint32_t max_swaps_per_edge = 8;
+};
+
 /// The criterion names of the CLI and benches.
 enum class SwapCriterion { Delaunay, MaxMinAngle, MinMaxAngle, MinTotalLength, DataDependent };
 /// "delaunay", "max-min-angle", "min-max-angle", "min-length", "data-dependent"; throws
@@ -67,11 +81,12 @@ struct EdgeSwapCounters {
     std::uint64_t not_convex = 0;    ///< of those, skipped: quadrilateral not strictly convex
     std::uint64_t constrained = 0;   ///< of those, skipped: constrained (or on the boundary)
     std::uint64_t swaps = 0;         ///< edges swapped
+    std::uint64_t budget_stops = 0;  ///< MetricInEllipse: edges left because the budget ran out
 };
 
 /// The name table of EdgeSwapCounters (base/counter_table.hpp): --stats prints it in this order.
 inline constexpr std::array kEdgeSwapCounterNames =
-    EM_COUNTER_TABLE(EdgeSwapCounters, edges_tested, not_convex, constrained, swaps);
+    EM_COUNTER_TABLE(EdgeSwapCounters, edges_tested, not_convex, constrained, swaps, budget_stops);
 static_assert(counter_table_complete(kEdgeSwapCounterNames));
 
 /// Swaps edges of `mesh` until none is swappable and preferred by the criterion.
@@ -84,6 +99,8 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinMaxAngle criterion);
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinTotalLength criterion);
 /// @throws InputError when criterion.values does not hold one finite value per vertex.
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion);
+/// @throws InputError when criterion.metrics does not hold three finite values per vertex.
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion);
 
 /// Fills mesh.neighbors from mesh.triangles (each undirected edge shared by at most two
 /// triangles, in opposite directions) and sizes mesh.constrained to match when it is not empty.

@@ -22,7 +22,7 @@
 #include "generators/adaptation/indicator_size_field.hpp"
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
 #include "generators/adaptation/interpolation_error.hpp"
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/support/adaptation_fixtures_2d.hpp"

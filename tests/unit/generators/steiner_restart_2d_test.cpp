@@ -16,7 +16,7 @@
 #include "generators/adaptation/adaptive_mesh_2d.hpp"
 #include "generators/adaptation/derefinement_2d.hpp"
 #include "generators/adaptation/interpolation_error.hpp"
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "generators/adaptation/steiner_restart_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Edge lists and the unit scale of the adaptation layer (see mesh_edges.hpp).
-#include "generators/adaptation/mesh_edges.hpp"
+#include "generators/topology/mesh_edges.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// Metric Delaunay mesh generation (issue 14): a domain meshed to a metric field M(x, y) so that
+// its edges have unit length in the metric [George-Borouchaki98 "Delaunay triangulation and
+// meshing" ch. 7, 10; BorouchakiGeorgeHechtLaugSaltel97 "Delaunay mesh generation governed by
+// metric specifications", Finite Elem. Anal. Des. 25; the BAMG scheme of Gmsh]:
+//  1. the boundary's pieces split so that each has about unit metric length (the metric's size
+//     along each piece's direction: discretize_domain_boundary with a per-piece size);
+//  2. their constrained Delaunay triangulation, exterior and holes removed;
+//  3. passes over the mesh's unconstrained edges: an edge longer than sqrt 2 in the metric
+//     (its length with the metric varying geometrically between its ends' lengths) proposes the
+//     point halfway along it in metric length; a proposal is dropped when a vertex of the
+//     triangle holding it or of that triangle's neighbours lies closer than `min_spacing` (the
+//     would-be edge measured as edges are: from the metrics at both ends); the others are
+//     inserted, in Hilbert order, by Bowyer-Watson in the plane
+//     mapped by the metric at the point (ConstrainedTriangulation2::insert_in_metric_cavity:
+//     the cavity decided by the exact in_ellipse with the shared symbolic perturbation, made
+//     star-shaped by exact orient2d); passes stop when no point is inserted;
+//  4. Lawson swapping of the unconstrained edges by in_ellipse under the mean of the four
+//     vertices' metrics (the same metric for both diagonals of a quadrilateral, so each decision
+//     is one exact test), with a budget of swaps per edge because a varying metric has no global
+//     potential to guarantee termination.
+// Every input vertex and segment survives (the segments as chains of pieces, the boundary's
+// points within rounding of them, as for every generator here). Metric lengths are computed
+// without squared lengths (metric_length: hypot in the metric's frame), so a domain and its
+// metric scaled by 2^k give the same mesh scaled.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/counter_table.hpp"
+#include "generators/boundary/mesh_domain_2d.hpp"
+#include "generators/stretched/metric_field_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
+
+namespace exactmesh::generators {
+
+struct MetricDelaunayOptions2 {
+    MetricField2 metric;
+    /// A proposal closer than this (metric length) to a nearby vertex is dropped. 0.7 gave the
+    /// largest share of unit edges of 0.5, 0.6, 0.7, 0.8 on a rotated (aspect 100), a boundary-
+    /// layer and a curved-layer metric on the unit square (2026-12-02).
+    double min_spacing = 0.7;
+    /// Largest number of points inserted in the interior (0: kDefaultMetricPointBudget); the
+    /// estimate of the mesh's size is checked against it before any work.
+    std::uint64_t max_steiner_points = 0;
+    /// In-ellipse swapping after the insertion passes.
+    bool swap = true;
+    triangulation::Cdt2Options cdt;
+};
+
+/// The automatic budget of interior points: 2^26.
+inline constexpr std::uint64_t kDefaultMetricPointBudget = std::uint64_t{1} << 26;
+
+struct MetricDelaunayCounters2 {
+    std::uint64_t boundary_points = 0;     ///< points added on the boundary's pieces
+    std::uint64_t passes = 0;              ///< insertion passes
+    std::uint64_t proposals = 0;           ///< edge midpoints proposed
+    std::uint64_t too_close = 0;           ///< proposals dropped by the spacing test
+    std::uint64_t inserted = 0;            ///< points inserted
+    std::uint64_t rejected = 0;            ///< proposals the insertion refused (on a segment, ...)
+    std::uint64_t cavity_corrections = 0;  ///< cavities reduced to be star-shaped
+    std::uint64_t swaps = 0;               ///< in-ellipse swaps
+    std::uint64_t swap_budget_hits = 0;    ///< edges whose swap budget ran out
+};
+
+inline constexpr std::array kMetricDelaunayCounterNames =
+    EM_COUNTER_TABLE(MetricDelaunayCounters2, boundary_points, passes, proposals, too_close,
+                     inserted, rejected, cavity_corrections, swaps, swap_budget_hits);
+static_assert(counter_table_complete(kMetricDelaunayCounterNames));
+
+struct MetricDelaunayResult2 {
+    triangulation::Cdt2Result mesh;
+    MetricDelaunayCounters2 counters;
+};
+
+/// The estimated number of triangles of a unit mesh of the domain in the metric: the metric
+/// area (the integral of sqrt(det M), sampled on the domain's triangles subdivided until the
+/// metric is resolved) over the area of the unit equilateral triangle, sqrt 3 / 4.
+double expected_metric_triangle_count(const MeshDomain2& domain, const MetricField2& metric);
+
+/// @throws InputError as constrained_delaunay_2d; InputError when the estimate exceeds twice
+///         the point budget (naming the estimate), when the segments enclose no region.
+MetricDelaunayResult2 metric_delaunay_2d(const MeshDomain2& domain,
+                                         const MetricDelaunayOptions2& options);
+
+std::vector<std::pair<std::string, std::uint64_t>> counter_list(const MetricDelaunayCounters2& c);
+
+}  // namespace exactmesh::generators

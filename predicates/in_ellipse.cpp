@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+// Exact stages of in_ellipse (in_ellipse.hpp). q(v) = M11 vx^2 + 2 M12 vx vy + M22 vy^2 is an
+// exact expansion of at most 12 components (three products of three doubles); the determinant is
+// expanded along the lift column, as incircle's stages are. Any symmetric M is accepted: the
+// determinant's sign is exact for it; the geometry needs M positive definite.
+#include "predicates/in_ellipse.hpp"
+
+#include "predicates/exact_range.hpp"
+#include "predicates/expansion.hpp"
+#include "predicates/gmp_fallback.hpp"
+
+namespace exactmesh::predicates {
+
+namespace {
+
+// Degree of every monomial of det [x y q(p) 1] in the doubles it multiplies: q is M times two
+// coordinates, its cofactor two more coordinates.
+constexpr int kDegree = 5;
+
+/// px * qy - qx * py exactly.
+Expansion<4> minor_xy(const double* p, const double* q) noexcept {
+    return exact_product(p[0], q[1]) - exact_product(q[0], p[1]);
+}
+
+/// q(v) = v^T M v exactly, compressed (it is multiplied next).
+Expansion<12> metric_lift_exact(const double* v, const double* m) noexcept {
+    return compressed(
+        (scale(exact_product(v[0], v[0]), m[0]) + scale(exact_product(v[0], v[1]), 2.0 * m[1])) +
+        scale(exact_product(v[1], v[1]), m[2]));
+}
+
+/// Raw det [x y 1] over rows p, q, r, compressed because it is multiplied next.
+Expansion<12> det3_xy1(const double* p, const double* q, const double* r) noexcept {
+    return compressed(minor_xy(p, q) + minor_xy(q, r) + minor_xy(r, p));
+}
+
+/// det [p-d, q(p-d)] over the exact differences diff = (adx, ady, bdx, bdy, cdx, cdy).
+[[gnu::noinline]] Sign exact_differences_sign(const double* diff, const double* m) noexcept {
+    const double* ad = diff;
+    const double* bd = diff + 2;
+    const double* cd = diff + 4;
+    return ((product(metric_lift_exact(ad, m), compressed(minor_xy(bd, cd))) -
+             product(metric_lift_exact(bd, m), compressed(minor_xy(ad, cd)))) +
+            product(metric_lift_exact(cd, m), compressed(minor_xy(ad, bd))))
+        .sign();
+}
+
+/// det [x y q(p) 1] over rows a, b, c, d, expanded along the lift column. Equal to the difference
+/// form: q(p - d) = q(p) - 2 p^T M d + q(d), and the last two terms are combinations of the
+/// x, y and 1 columns.
+[[gnu::noinline]] Sign raw_expansion_sign(const double* a, const double* b, const double* c,
+                                          const double* d, const double* m) noexcept {
+    return ((product(metric_lift_exact(a, m), det3_xy1(b, c, d)) -
+             product(metric_lift_exact(b, m), det3_xy1(a, c, d))) +
+            (product(metric_lift_exact(c, m), det3_xy1(a, b, d)) -
+             product(metric_lift_exact(d, m), det3_xy1(a, b, c))))
+        .sign();
+}
+
+/// The expansion stages, for coordinates and M that are expansion-safe together.
+Sign expansion_sign(const double* a, const double* b, const double* c, const double* d,
+                    const double* m) noexcept {
+    double diff[6];
+    const double* rows[3] = {a, b, c};
+    bool exact = true;
+    for (int r = 0; r < 3; ++r) {
+        for (int k = 0; k < 2; ++k) {
+            double tail = 0.0;
+            two_diff(rows[r][k], d[k], diff[2 * r + k], tail);
+            exact = exact && tail == 0.0;
+        }
+    }
+    if (exact) {
+        EM_STAT(in_ellipse, exact_differences);
+        return exact_differences_sign(diff, m);
+    }
+    EM_STAT(in_ellipse, expansion);
+    return raw_expansion_sign(a, b, c, d, m);
+}
+
+}  // namespace
+
+Sign in_ellipse_exact(const double* a, const double* b, const double* c, const double* d,
+                      const double* m) {
+    detail::require_finite("in_ellipse",
+                           {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1], m[0], m[1], m[2]});
+    if (detail::expansion_safe(
+            kDegree, {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1], m[0], m[1], m[2]})) {
+        return expansion_sign(a, b, c, d, m);
+    }
+    // The determinant is homogeneous of degree 4 in the coordinates and 1 in M: each group scaled
+    // by its own power of two keeps the sign. Both groups end with their largest magnitude in
+    // [1, 2) and every bit kept, so together they are expansion-safe.
+    double s[8], ms[3];
+    if (detail::rescale_into_safe_range(kDegree, {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]},
+                                        s) &&
+        detail::rescale_into_safe_range(kDegree, {m[0], m[1], m[2]}, ms)) {
+        EM_STAT(in_ellipse, rescaled);
+        if (const auto sign = in_ellipse_filter(s, s + 2, s + 4, s + 6, ms)) {
+            EM_STAT(in_ellipse, filter);
+            return *sign;
+        }
+        return expansion_sign(s, s + 2, s + 4, s + 6, ms);
+    }
+    EM_STAT(in_ellipse, gmp);
+    return in_ellipse_gmp(a, b, c, d, m);
+}
+
+}  // namespace exactmesh::predicates
