@@ -444,6 +444,16 @@ DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& p
                            bool adaptive);
 }  // namespace
 
+void restore_input_terms(const DomainBoundary2& boundary, tri::Cdt2Result& mesh) {
+    for (std::uint32_t& s : mesh.piece_segment) s = boundary.piece_segment[s];
+    mesh.input_vertex_count = boundary.input_vertex_count;
+    mesh.merged_into = boundary.cdt.merged_into;
+    mesh.warnings = boundary.cdt.warnings;
+    const std::uint64_t flips = mesh.counters.delaunay_flips;
+    mesh.counters = boundary.cdt.counters;
+    mesh.counters.delaunay_flips += flips;
+}
+
 DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size) {
     return discretize(
         domain, [&size](const double*, const double*) { return size; }, false);
