@@ -262,11 +262,12 @@ MetricDelaunayResult2 metric_delaunay_2d(const MeshDomain2& domain,
     // A triangulation of V vertices has about 2V triangles.
     const double estimate = expected_metric_triangle_count(domain, options.metric);
     if (!(estimate <= 2.0 * static_cast<double>(budget))) {
-        throw InputError(
-            "the metric (" + options.metric.describe() + ") asks for about " +
-            (estimate > 1e300 ? std::string("more than 1e300") : format_approximate(estimate)) +
-            " triangles over the domain, more than the budget of about " +
-            format_approximate(2.0 * static_cast<double>(budget)) + " (--max-steiner raises it)");
+        throw InputError("the metric (" + options.metric.describe() + ") asks for " +
+                         (estimate > 1e300 ? std::string("more than 1e300")
+                                           : "about " + format_approximate(estimate)) +
+                         " triangles over the domain, more than the budget of about " +
+                         format_approximate(2.0 * static_cast<double>(budget)) +
+                         " (--max-steiner raises it)");
     }
     const tri::Cdt2Options& cdt = domain.domain_options();
     const MetricField2& field = options.metric;
