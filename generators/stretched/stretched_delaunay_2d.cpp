@@ -1,0 +1,567 @@
+// SPDX-License-Identifier: MIT
+// Stretched Delaunay point insertion (see stretched_delaunay_2d.hpp for the steps and
+// references).
+#include "generators/stretched/stretched_delaunay_2d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <set>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
+#include "generators/boundary/domain_boundary_2d.hpp"
+#include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/stretched/metric_smoothing_2d.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/power_of_two.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
+
+namespace exactmesh::generators {
+
+namespace tri = triangulation;
+using predicates::scale_free_norm;
+using predicates::Sign;
+
+namespace {
+
+constexpr std::uint32_t kNoComponent = 0xFFFFFFFFu;
+
+/// (x, y) over its scale-free length; (0, 0) for the zero vector.
+std::array<double, 2> unit_vector(double x, double y) {
+    const double n = scale_free_norm(x, y);
+    if (!(n > 0)) return {0, 0};
+    return {x / n, y / n};
+}
+
+/// A point the mesher adds, and what step 3 needs of it.
+struct AddedPoint {
+    double x = 0, y = 0;
+    std::uint32_t component = kNoComponent;  ///< its O-mesh, or kNoComponent (far field)
+    int layer = 0;                           ///< O-mesh layer k >= 1
+    double thickness = 0;                    ///< its layer's thickness (O-mesh)
+    double spacing = 0;                      ///< the wall's tangential spacing at its normal
+    double tx = 1, ty = 0;                   ///< the wall's direction at its normal
+};
+
+/// A closed loop of the domain's boundary with the domain outside it: a component's wall.
+struct Wall {
+    std::vector<tri::VertIdx> vertices;  ///< in order, the domain on the left
+    std::vector<std::array<double, 2>> normals;
+    std::vector<double> spacing;
+};
+
+/// The loops of boundary edges (triangle sides with no neighbour) of the domain's CDT whose
+/// traversal with the domain on the left turns clockwise: holes, i.e. components. A loop
+/// through a vertex with two outgoing boundary edges is skipped (no O-mesh there).
+std::vector<Wall> component_walls(const tri::Triangulation2& mesh) {
+    constexpr tri::VertIdx kNoVertex = 0xFFFFFFFFu;
+    std::vector<tri::VertIdx> next(mesh.vertex_count(), kNoVertex);
+    std::vector<bool> ambiguous(mesh.vertex_count(), false);
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            if (mesh.neighbors[3 * t + k] != tri::kNone) continue;
+            const tri::VertIdx a = mesh.triangles[3 * t + k];
+            const tri::VertIdx b = mesh.triangles[3 * t + (k + 1) % 3];
+            if (next[a] != kNoVertex) ambiguous[a] = true;
+            next[a] = b;
+        }
+    }
+    std::vector<Wall> walls;
+    std::vector<bool> visited(mesh.vertex_count(), false);
+    for (tri::VertIdx start = 0; start < mesh.vertex_count(); ++start) {
+        if (next[start] == kNoVertex || visited[start]) continue;
+        Wall wall;
+        bool closed = false, usable = true;
+        for (tri::VertIdx v = start; v != kNoVertex && !visited[v]; v = next[v]) {
+            visited[v] = true;
+            usable = usable && !ambiguous[v];
+            wall.vertices.push_back(v);
+            if (next[v] == start) closed = true;
+        }
+        if (!closed || !usable || wall.vertices.size() < 3) continue;
+        // The orientation at the lexicographically lowest vertex, where the loop is convex.
+        const std::size_t n = wall.vertices.size();
+        std::size_t low = 0;
+        for (std::size_t i = 1; i < n; ++i) {
+            const double* p = mesh.point(wall.vertices[i]);
+            const double* q = mesh.point(wall.vertices[low]);
+            if (p[0] < q[0] || (p[0] == q[0] && p[1] < q[1])) low = i;
+        }
+        const Sign turn = predicates::orient2d(mesh.point(wall.vertices[(low + n - 1) % n]),
+                                               mesh.point(wall.vertices[low]),
+                                               mesh.point(wall.vertices[(low + 1) % n]));
+        if (turn == Sign::Negative) walls.push_back(std::move(wall));
+    }
+    return walls;
+}
+
+/// Each wall vertex's normal (the mean of its two sides' left normals, then averaged with its
+/// neighbours' `passes` times) and tangential spacing (the mean of its two sides' lengths).
+void wall_normals(const tri::Triangulation2& mesh, Wall& wall, int passes) {
+    const std::size_t n = wall.vertices.size();
+    std::vector<std::array<double, 2>> side_normals(n);
+    std::vector<double> side_lengths(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double* a = mesh.point(wall.vertices[i]);
+        const double* b = mesh.point(wall.vertices[(i + 1) % n]);
+        const double dx = b[0] - a[0], dy = b[1] - a[1];
+        side_lengths[i] = scale_free_norm(dx, dy);
+        side_normals[i] = unit_vector(-dy, dx);
+    }
+    wall.normals.resize(n);
+    wall.spacing.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t before = (i + n - 1) % n;
+        wall.spacing[i] = 0.5 * (side_lengths[before] + side_lengths[i]);
+        const std::array<double, 2> m = unit_vector(side_normals[before][0] + side_normals[i][0],
+                                                    side_normals[before][1] + side_normals[i][1]);
+        // A cusp (sides folded back on each other): the side's own normal.
+        wall.normals[i] = (m[0] == 0 && m[1] == 0) ? side_normals[i] : m;
+    }
+    for (int pass = 0; pass < passes; ++pass) {
+        std::vector<std::array<double, 2>> smoothed(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::array<double, 2>& p = wall.normals[(i + n - 1) % n];
+            const std::array<double, 2>& q = wall.normals[(i + 1) % n];
+            const std::array<double, 2> m = unit_vector(p[0] + 2 * wall.normals[i][0] + q[0],
+                                                        p[1] + 2 * wall.normals[i][1] + q[1]);
+            smoothed[i] = (m[0] == 0 && m[1] == 0) ? wall.normals[i] : m;
+        }
+        wall.normals = std::move(smoothed);
+    }
+}
+
+/// True when (x, y) lies strictly inside the domain: in a triangle of its CDT (exact orient2d
+/// through the locator), not on a boundary side or a segment, not at a vertex.
+bool strictly_inside(const tri::Triangulation2& mesh, const DomainLocator2& locator, double x,
+                     double y) {
+    const tri::TriIdx t = locator.locate(mesh, x, y);
+    if (t == tri::kNone) return false;
+    const double p[2] = {x, y};
+    for (unsigned k = 0; k < 3; ++k) {
+        const double* a = mesh.point(mesh.triangles[3 * t + k]);
+        if (a[0] == x && a[1] == y) return false;
+        const double* b = mesh.point(mesh.triangles[3 * t + (k + 1) % 3]);
+        if (predicates::orient2d(a, b, p) == Sign::Zero &&
+            (mesh.neighbors[3 * t + k] == tri::kNone ||
+             mesh.is_constrained(t, static_cast<int>(k))))
+            return false;
+    }
+    return true;
+}
+
+/// Points sorted by x, for the neighbourhood scans of the filters (a window of x, then y).
+class SortedPoints {
+  public:
+    void add(double x, double y, std::uint32_t tag) { items_.push_back({x, y, tag}); }
+    void sort() {
+        std::sort(items_.begin(), items_.end(), [](const Item& a, const Item& b) {
+            return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.tag < b.tag)));
+        });
+    }
+    /// Calls f(x, y, tag) for the points with |x - px| < r and |y - py| < r until f returns
+    /// true; returns whether it did.
+    template <class F>
+    bool any_near(double px, double py, double r, F&& f) const {
+        auto it = std::lower_bound(items_.begin(), items_.end(), px - r,
+                                   [](const Item& a, double x) { return a.x <= x; });
+        for (; it != items_.end() && it->x < px + r; ++it) {
+            if (std::fabs(it->y - py) < r && f(it->x, it->y, it->tag)) return true;
+        }
+        return false;
+    }
+
+  private:
+    struct Item {
+        double x, y;
+        std::uint32_t tag;
+    };
+    std::vector<Item> items_;
+};
+
+/// {M11, M12, M22} of `m` times h_ref^2: one common scale for a mesh's vertices (h_ref its
+/// smallest size, so every ratio h_ref / h is at most 1 and no square overflows).
+std::array<double, 3> common_scale_matrix(const Metric2& m, double h_ref) {
+    const double a = h_ref / m.h1, b = h_ref / m.h2;
+    const double a2 = a * a, b2 = b * b;
+    return {m.c * m.c * a2 + m.s * m.s * b2, m.c * m.s * (a2 - b2),
+            m.s * m.s * a2 + m.c * m.c * b2};
+}
+
+void check_options(const StretchedDelaunayOptions2& o) {
+    const auto fail = [](const std::string& what, double value) {
+        throw InputError("stretched Delaunay: " + what + " " + format_number(value) +
+                         " is out of range");
+    };
+    if (!(o.first_height > 0) || !std::isfinite(o.first_height))
+        fail("first height", o.first_height);
+    if (!(o.growth >= 1) || !std::isfinite(o.growth)) fail("growth", o.growth);
+    if (o.max_layers < 0 || o.max_layers > 10000) fail("max layers", o.max_layers);
+    if (o.normal_smoothing_passes < 0) fail("normal smoothing passes", o.normal_smoothing_passes);
+    if (o.metric_smoothing_passes < 0) fail("metric smoothing passes", o.metric_smoothing_passes);
+    if (o.point_smoothing_passes < 0) fail("point smoothing passes", o.point_smoothing_passes);
+    if (!(o.far_field_spacing > 0 && o.far_field_spacing <= 1))
+        fail("far-field spacing", o.far_field_spacing);
+}
+
+/// Step 1 and the first filter: every wall's O-mesh points strictly inside the domain.
+std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
+                                     const DomainLocator2& locator, std::span<const Wall> walls,
+                                     const StretchedDelaunayOptions2& o,
+                                     StretchedDelaunayCounters2& counters) {
+    // Scale-free factors: height_k = first_height * sum_{j<k} growth^j, thickness_k =
+    // first_height * growth^(k-1); a first_height scaled by 2^k scales both exactly.
+    std::vector<double> height_factor(static_cast<std::size_t>(o.max_layers) + 1, 0);
+    std::vector<double> thickness_factor(height_factor.size(), 0);
+    double power = 1;
+    for (std::size_t k = 1; k < height_factor.size(); ++k) {
+        thickness_factor[k] = power;
+        height_factor[k] = height_factor[k - 1] + power;
+        power *= o.growth;
+    }
+    std::vector<AddedPoint> points;
+    for (std::uint32_t c = 0; c < walls.size(); ++c) {
+        const Wall& wall = walls[c];
+        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
+            const double* p = domain_mesh.point(wall.vertices[i]);
+            const std::array<double, 2>& n = wall.normals[i];
+            for (std::size_t k = 1; k < height_factor.size(); ++k) {
+                const double thickness = o.first_height * thickness_factor[k];
+                // Aspect ratio about 1 reached: the layers end here.
+                if (!(thickness < wall.spacing[i])) break;
+                const double height = o.first_height * height_factor[k];
+                AddedPoint a;
+                a.x = std::fma(height, n[0], p[0]);
+                a.y = std::fma(height, n[1], p[1]);
+                ++counters.omesh_points;
+                if (!strictly_inside(domain_mesh, locator, a.x, a.y)) {
+                    ++counters.outside_domain;
+                    break;
+                }
+                a.component = c;
+                a.layer = static_cast<int>(k);
+                a.thickness = thickness;
+                a.spacing = wall.spacing[i];
+                a.tx = -n[1];
+                a.ty = n[0];
+                points.push_back(a);
+            }
+        }
+    }
+    return points;
+}
+
+/// The second filter: an O-mesh point closer than the larger of two layer thicknesses to a
+/// strictly finer point of another component's O-mesh (its wall vertices the finest) goes. The
+/// decision reads only the unfiltered set, so it does not depend on the order.
+std::vector<AddedPoint> drop_overlaps(const tri::Triangulation2& domain_mesh,
+                                      std::span<const Wall> walls, std::vector<AddedPoint> points,
+                                      StretchedDelaunayCounters2& counters) {
+    if (walls.size() < 2) return points;
+    // Tags: i < points.size() an O-mesh point, else a wall vertex (wall_tags).
+    SortedPoints sorted;
+    double largest = 0;
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        sorted.add(points[i].x, points[i].y, i);
+        largest = std::max(largest, points[i].thickness);
+    }
+    std::vector<std::uint32_t> wall_of;
+    for (std::uint32_t c = 0; c < walls.size(); ++c) {
+        for (const tri::VertIdx v : walls[c].vertices) {
+            sorted.add(domain_mesh.point(v)[0], domain_mesh.point(v)[1],
+                       static_cast<std::uint32_t>(points.size() + wall_of.size()));
+            wall_of.push_back(c);
+        }
+    }
+    sorted.sort();
+    std::vector<AddedPoint> kept;
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        const AddedPoint& p = points[i];
+        const bool near_finer =
+            sorted.any_near(p.x, p.y, largest, [&](double x, double y, std::uint32_t tag) {
+                const bool is_wall = tag >= points.size();
+                const std::uint32_t component =
+                    is_wall ? wall_of[tag - points.size()] : points[tag].component;
+                if (component == p.component) return false;
+                const double thickness = is_wall ? 0.0 : points[tag].thickness;
+                const bool finer = thickness < p.thickness ||
+                                   (thickness == p.thickness && component < p.component);
+                return finer &&
+                       scale_free_norm(x - p.x, y - p.y) < std::max(thickness, p.thickness);
+            });
+        if (near_finer) {
+            ++counters.overlap_dropped;
+        } else {
+            kept.push_back(p);
+        }
+    }
+    return kept;
+}
+
+/// The far field: the centres of the leaves of a quadtree over the domain's bounding square,
+/// a cell split while it is wider than the size at its centre; kept strictly inside the domain
+/// and at least far_field_spacing sizes from every point of `near`.
+std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
+                                         const DomainLocator2& locator,
+                                         std::span<const double> boundary_xy,
+                                         std::span<const AddedPoint> omesh,
+                                         const SizeFunction& size,
+                                         const StretchedDelaunayOptions2& o,
+                                         StretchedDelaunayCounters2& counters) {
+    double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x;
+    double hi_x = -lo_x, hi_y = -lo_x;
+    for (std::size_t i = 0; i + 1 < boundary_xy.size(); i += 2) {
+        lo_x = std::min(lo_x, boundary_xy[i]);
+        hi_x = std::max(hi_x, boundary_xy[i]);
+        lo_y = std::min(lo_y, boundary_xy[i + 1]);
+        hi_y = std::max(hi_y, boundary_xy[i + 1]);
+    }
+    if (!(hi_x > lo_x) && !(hi_y > lo_y)) return {};
+    struct Cell {
+        double x, y, side;
+        int depth;
+    };
+    std::vector<Cell> stack{{lo_x, lo_y, std::max(hi_x - lo_x, hi_y - lo_y), 0}};
+    std::vector<std::array<double, 2>> centres;
+    while (!stack.empty()) {
+        const Cell cell = stack.back();
+        stack.pop_back();
+        const double half = 0.5 * cell.side;
+        const double cx = cell.x + half, cy = cell.y + half;
+        if (cell.depth < 60 && cell.side > size(cx, cy)) {
+            for (const auto& [dx, dy] : {std::pair{0.0, 0.0}, std::pair{half, 0.0},
+                                         std::pair{0.0, half}, std::pair{half, half}})
+                stack.push_back({cell.x + dx, cell.y + dy, half, cell.depth + 1});
+            continue;
+        }
+        centres.push_back({cx, cy});
+        if (centres.size() > kStretchedFarFieldBudget) {
+            throw InputError("stretched Delaunay: the far-field size (" + size.describe() +
+                             ") asks for more than " +
+                             format_approximate(static_cast<double>(kStretchedFarFieldBudget)) +
+                             " points");
+        }
+    }
+    counters.far_field_candidates = centres.size();
+    SortedPoints near;
+    for (std::size_t i = 0; i + 1 < boundary_xy.size(); i += 2)
+        near.add(boundary_xy[i], boundary_xy[i + 1], 0);
+    for (const AddedPoint& p : omesh) near.add(p.x, p.y, 0);
+    near.sort();
+    std::vector<AddedPoint> kept;
+    for (const auto& [x, y] : centres) {
+        const double r = o.far_field_spacing * size(x, y);
+        const bool drop = !strictly_inside(domain_mesh, locator, x, y) ||
+                          near.any_near(x, y, r, [&](double qx, double qy, std::uint32_t) {
+                              return scale_free_norm(qx - x, qy - y) < r;
+                          });
+        if (drop) {
+            ++counters.far_field_dropped;
+            continue;
+        }
+        AddedPoint a;
+        a.x = x;
+        a.y = y;
+        kept.push_back(a);
+    }
+    return kept;
+}
+
+/// Lawson swapping by in-ellipse under the quadrilaterals' mean metrics.
+tri::EdgeSwapCounters metric_swaps(tri::Triangulation2& mesh, std::span<const Metric2> metrics) {
+    double h_ref = std::numeric_limits<double>::infinity();
+    for (const Metric2& m : metrics) h_ref = std::min({h_ref, m.h1, m.h2});
+    std::vector<double> matrices(3 * metrics.size());
+    for (std::size_t v = 0; v < metrics.size(); ++v) {
+        const std::array<double, 3> m = common_scale_matrix(metrics[v], h_ref);
+        std::copy(m.begin(), m.end(), matrices.begin() + 3 * static_cast<std::ptrdiff_t>(v));
+    }
+    return tri::swap_edges_2d(mesh, tri::MetricInEllipse{matrices});
+}
+
+/// Step 7, one pass (Gauss-Seidel in vertex order): vertices from `first_movable` on move
+/// towards the centroid of their neighbours weighted by the edges' metric lengths (the mean of
+/// the lengths in both ends' metrics), relaxed by `relax[v]`; a move stays only when every
+/// triangle at the vertex stays strictly counter-clockwise (exact orient2d).
+void smooth_points(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
+                   std::span<const double> relax, tri::VertIdx first_movable,
+                   StretchedDelaunayCounters2& counters) {
+    const std::uint32_t nv = mesh.vertex_count();
+    std::vector<std::uint32_t> start(std::size_t{nv} + 1, 0);
+    for (const tri::VertIdx v : mesh.triangles) ++start[v + 1];
+    for (std::uint32_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    std::vector<std::uint32_t> star(mesh.triangles.size());
+    {
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::uint32_t i = 0; i < mesh.triangles.size(); ++i)
+            star[fill[mesh.triangles[i]]++] = i / 3;
+    }
+    for (tri::VertIdx v = first_movable; v < nv; ++v) {
+        if (start[v] == start[v + 1] || !(relax[v] > 0)) continue;
+        const double px = mesh.xy[2 * std::size_t{v}], py = mesh.xy[2 * std::size_t{v} + 1];
+        double sum_w = 0, sum_x = 0, sum_y = 0;
+        for (std::uint32_t j = start[v]; j < start[v + 1]; ++j) {
+            const tri::TriIdx t = star[j];
+            // Each neighbour once: the one after v in each counter-clockwise triangle (an
+            // interior vertex's star is closed, so this visits each neighbour exactly once).
+            unsigned k = 0;
+            while (mesh.triangles[3 * t + k] != v) ++k;
+            const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
+            const double dx = mesh.point(u)[0] - px, dy = mesh.point(u)[1] - py;
+            const double w =
+                0.5 * (metric_length(metrics[v], dx, dy) + metric_length(metrics[u], dx, dy));
+            sum_w += w;
+            sum_x += w * dx;
+            sum_y += w * dy;
+        }
+        if (!(sum_w > 0)) continue;
+        const double q[2] = {px + relax[v] * (sum_x / sum_w), py + relax[v] * (sum_y / sum_w)};
+        if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || (q[0] == px && q[1] == py)) continue;
+        bool valid = true;
+        for (std::uint32_t j = start[v]; j < start[v + 1] && valid; ++j) {
+            const tri::TriIdx t = star[j];
+            const double* corner[3];
+            for (unsigned k = 0; k < 3; ++k) {
+                const tri::VertIdx w = mesh.triangles[3 * t + k];
+                corner[k] = w == v ? q : mesh.point(w);
+            }
+            valid = predicates::orient2d(corner[0], corner[1], corner[2]) == Sign::Positive;
+        }
+        if (!valid) {
+            ++counters.smoothing_refused;
+            continue;
+        }
+        mesh.xy[2 * std::size_t{v}] = q[0];
+        mesh.xy[2 * std::size_t{v} + 1] = q[1];
+        ++counters.smoothing_moves;
+    }
+}
+
+}  // namespace
+
+StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
+                                               const StretchedDelaunayOptions2& options) {
+    check_options(options);
+    StretchedDelaunayCounters2 counters;
+    const tri::Cdt2Result& domain_cdt = domain.triangulation();
+    const tri::Triangulation2& domain_mesh = domain_cdt.mesh;
+    std::vector<Wall> walls = component_walls(domain_mesh);
+    for (Wall& wall : walls) {
+        wall_normals(domain_mesh, wall, options.normal_smoothing_passes);
+        ++counters.components;
+        counters.wall_vertices += wall.vertices.size();
+    }
+    const SizeFunction size = options.far_field_size.bounded() ? options.far_field_size
+                                                               : graded_size_from_boundary(domain);
+    // The boundary split to the far-field size, except the walls: their vertices (the input's)
+    // are the O-meshes' feet.
+    std::set<std::array<double, 4>> wall_sides;
+    for (const Wall& wall : walls) {
+        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
+            const double* a = domain_mesh.point(wall.vertices[i]);
+            const double* b = domain_mesh.point(wall.vertices[(i + 1) % wall.vertices.size()]);
+            wall_sides.insert({a[0], a[1], b[0], b[1]});
+            wall_sides.insert({b[0], b[1], a[0], a[1]});
+        }
+    }
+    DomainBoundary2 boundary =
+        discretize_domain_boundary(domain, [&](const double* a, const double* b) {
+            return wall_sides.count({a[0], a[1], b[0], b[1]}) != 0 ? SizeFunction{} : size;
+        });
+    const DomainLocator2& locator = boundary.locator;
+    const tri::Triangulation2& located = boundary.cdt.mesh;
+
+    // Steps 1 and 2.
+    std::vector<AddedPoint> omesh = omesh_points(located, locator, walls, options, counters);
+    omesh = drop_overlaps(located, walls, std::move(omesh), counters);
+    const std::vector<AddedPoint> far =
+        far_field_points(located, locator, boundary.xy, omesh, size, options, counters);
+
+    // Every point once, exactly: the boundary's, then the O-meshes', then the far field's.
+    std::vector<double> xy = boundary.xy;
+    const auto boundary_count = static_cast<tri::VertIdx>(xy.size() / 2);
+    std::set<std::pair<double, double>> seen;
+    for (std::size_t i = 0; i + 1 < xy.size(); i += 2) seen.insert({xy[i], xy[i + 1]});
+    std::vector<AddedPoint> added;
+    for (const std::vector<AddedPoint>* list :
+         std::array<const std::vector<AddedPoint>*, 2>{&omesh, &far}) {
+        for (const AddedPoint& p : *list) {
+            if (!seen.insert({p.x, p.y}).second) {
+                ++counters.duplicates;
+                continue;
+            }
+            xy.push_back(p.x);
+            xy.push_back(p.y);
+            added.push_back(p);
+        }
+    }
+
+    // Step 3: a metric and a smoothing weight per point.
+    std::vector<Metric2> metrics(xy.size() / 2);
+    std::vector<double> weights(metrics.size(), 0.5);
+    for (tri::VertIdx v = 0; v < boundary_count; ++v)
+        metrics[v] = isotropic(size(xy[2 * std::size_t{v}], xy[2 * std::size_t{v} + 1]));
+    for (const Wall& wall : walls) {
+        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
+            const std::array<double, 2>& n = wall.normals[i];
+            const tri::VertIdx v = wall.vertices[i];
+            const double aspect = wall.spacing[i] / options.first_height;
+            metrics[v] = aspect > 1 ? metric_from_stretching(-n[1], n[0], wall.spacing[i], aspect)
+                                    : isotropic(wall.spacing[i]);
+            weights[v] = 0;
+        }
+    }
+    for (std::size_t i = 0; i < added.size(); ++i) {
+        const AddedPoint& p = added[i];
+        const std::size_t v = boundary_count + i;
+        if (p.component == kNoComponent) {
+            metrics[v] = isotropic(size(p.x, p.y));
+        } else {
+            metrics[v] = metric_from_stretching(p.tx, p.ty, p.spacing, p.spacing / p.thickness);
+            weights[v] = 0.5 * p.layer / (p.layer + 4.0);
+        }
+    }
+
+    // Step 4.
+    const tri::Pslg& pslg = domain.pslg();
+    tri::Cdt2Result out = tri::constrained_delaunay_2d(
+        tri::Pslg{xy, boundary.pieces, pslg.holes, pslg.regions}, domain.domain_options());
+    for (std::uint32_t& s : out.piece_segment) s = boundary.piece_segment[s];
+    out.input_vertex_count = boundary.input_vertex_count;
+    out.merged_into = boundary.cdt.merged_into;
+    out.warnings = boundary.cdt.warnings;
+    const std::uint64_t flips = out.counters.delaunay_flips;
+    out.counters = boundary.cdt.counters;
+    out.counters.delaunay_flips += flips;
+    tri::Triangulation2& mesh = out.mesh;
+    counters.points = mesh.vertex_count();
+
+    // Steps 5 to 7.
+    if (mesh.triangle_count() > 0) {
+        smooth_vertex_metrics(mesh, metrics, options.metric_smoothing_passes, 0, weights);
+        tri::EdgeSwapCounters swapped = metric_swaps(mesh, metrics);
+        counters.swaps = swapped.swaps;
+        counters.swap_budget_hits = swapped.budget_stops;
+        for (int pass = 0; pass < options.point_smoothing_passes; ++pass) {
+            smooth_points(mesh, metrics, weights, boundary_count, counters);
+            swapped = metric_swaps(mesh, metrics);
+            counters.reswaps += swapped.swaps;
+            counters.swap_budget_hits += swapped.budget_stops;
+        }
+    }
+    return {std::move(out), std::move(metrics), counters};
+}
+
+std::vector<std::pair<std::string, std::uint64_t>> counter_list(
+    const StretchedDelaunayCounters2& c) {
+    return counters_by_name(kStretchedDelaunayCounterNames, c);
+}
+
+}  // namespace exactmesh::generators
