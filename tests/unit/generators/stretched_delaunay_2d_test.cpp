@@ -17,9 +17,11 @@
 #include "base/errors.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "generators/sizing/size_function.hpp"
 #include "generators/stretched/metric_field_2d.hpp"
 #include "generators/stretched/metric_quality_2d.hpp"
 #include "generators/stretched/stretched_delaunay_2d.hpp"
+#include "tests/support/test_scale.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 
 namespace gen = exactmesh::generators;
@@ -32,8 +34,8 @@ struct Domain {
     std::vector<double> xy;
     std::vector<tri::VertIdx> segments;
     std::vector<double> holes;
-    Domain(gen::SampleDomain d, int k) {
-        const gen::DomainPslg pslg = gen::sample_domain(d);
+    Domain(gen::SampleDomain d, int k, const gen::SizeFunction& size = {}) {
+        const gen::DomainPslg pslg = gen::sample_domain(d, size);
         for (const double x : pslg.xy) xy.push_back(std::ldexp(x, k));
         segments.assign(pslg.segments.begin(), pslg.segments.end());
         for (const double x : pslg.holes) holes.push_back(std::ldexp(x, k));
@@ -176,6 +178,18 @@ TEST(StretchedDelaunay2d, ScaledDomainGivesTheSameMeshScaled) {
             differ += r.mesh.mesh.xy[i] != std::ldexp(reference.mesh.mesh.xy[i], k) ? 1 : 0;
         EXPECT_EQ(differ, 0u) << "2^" << k;
     }
+}
+
+TEST(StretchedDelaunay2d, UniformlySampledAirfoilReachesAspectRatio1000) {
+    // The airfoil sampled uniformly (finer with EXACTMESH_TEST_SCALE), a first height 1000
+    // times below its spacing.
+    const double spacing = 0.02 / exactmesh::testing::test_scale();
+    const Domain domain(gen::SampleDomain::Naca0012, 0, gen::SizeFunction::uniform(spacing));
+    const gen::StretchedDelaunayResult2 r = run(domain, spacing / 1000);
+    expect_valid(domain, r);
+    const auto [median, largest] = wall_aspect_ratios(r.mesh.mesh, 4, r.mesh.input_vertex_count);
+    print("naca0012, uniform sampling", r, median, largest);
+    EXPECT_GE(median, 500.0);
 }
 
 TEST(StretchedDelaunay2d, BadOptionsAreInputErrors) {
