@@ -207,6 +207,8 @@ void check_options(const StretchedDelaunayOptions2& o) {
     if (o.normal_smoothing_passes < 0) fail("normal smoothing passes", o.normal_smoothing_passes);
     if (o.metric_smoothing_passes < 0) fail("metric smoothing passes", o.metric_smoothing_passes);
     if (o.point_smoothing_passes < 0) fail("point smoothing passes", o.point_smoothing_passes);
+    if (!(o.point_move_limit >= 0 && o.point_move_limit <= 1))
+        fail("point move limit", o.point_move_limit);
     if (!(o.far_field_spacing > 0 && o.far_field_spacing <= 1))
         fail("far-field spacing", o.far_field_spacing);
 }
@@ -388,10 +390,11 @@ tri::EdgeSwapCounters metric_swaps(tri::Triangulation2& mesh, std::span<const Me
 
 /// Step 7, one pass (Gauss-Seidel in vertex order): vertices from `first_movable` on move
 /// towards the centroid of their neighbours weighted by the edges' metric lengths (the mean of
-/// the lengths in both ends' metrics), relaxed by `relax[v]`; a move stays only when every
+/// the lengths in both ends' metrics), relaxed by `relax[v]` and limited to `move_limit` times
+/// the smallest size of its metric; a move stays only when every
 /// triangle at the vertex stays strictly counter-clockwise (exact orient2d).
 void smooth_points(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
-                   std::span<const double> relax, tri::VertIdx first_movable,
+                   std::span<const double> relax, double move_limit, tri::VertIdx first_movable,
                    StretchedDelaunayCounters2& counters) {
     const std::uint32_t nv = mesh.vertex_count();
     std::vector<std::uint32_t> start(std::size_t{nv} + 1, 0);
@@ -422,7 +425,17 @@ void smooth_points(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
             sum_y += w * dy;
         }
         if (!(sum_w > 0)) continue;
-        const double q[2] = {px + relax[v] * (sum_x / sum_w), py + relax[v] * (sum_y / sum_w)};
+        double dx = relax[v] * (sum_x / sum_w), dy = relax[v] * (sum_y / sum_w);
+        // A long edge (a triangle across several layers) weighs much and would drag the point
+        // by a large part of its cell, and in a stretched cell a shift along the wall by more
+        // than a fraction of the thickness shears it into an obtuse triangle: the move is
+        // limited to `move_limit` times the point's smallest size, in every direction.
+        const double step = scale_free_norm(dx, dy) / std::min(metrics[v].h1, metrics[v].h2);
+        if (step > move_limit) {
+            dx *= move_limit / step;
+            dy *= move_limit / step;
+        }
+        const double q[2] = {px + dx, py + dy};
         if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || (q[0] == px && q[1] == py)) continue;
         bool valid = true;
         for (std::uint32_t j = start[v]; j < start[v + 1] && valid; ++j) {
@@ -550,7 +563,8 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
         counters.swaps = swapped.swaps;
         counters.swap_budget_hits = swapped.budget_stops;
         for (int pass = 0; pass < options.point_smoothing_passes; ++pass) {
-            smooth_points(mesh, metrics, weights, boundary_count, counters);
+            smooth_points(mesh, metrics, weights, options.point_move_limit, boundary_count,
+                          counters);
             swapped = metric_swaps(mesh, metrics);
             counters.reswaps += swapped.swaps;
             counters.swap_budget_hits += swapped.budget_stops;

@@ -26,7 +26,8 @@
 //  6. Lawson swapping by the exact in-ellipse test under the mean metric of each quadrilateral
 //     (swap_edges_2d with MetricInEllipse);
 //  7. point smoothing: each O-mesh and far-field point moved towards the centroid of its
-//     neighbours weighted by the edges' metric lengths (relaxed by its smoothing weight), a move
+//     neighbours weighted by the edges' metric lengths (relaxed by its smoothing weight, at most
+//     point_move_limit times its smallest size), a move
 //     kept only when every incident triangle stays strictly counter-clockwise (exact orient2d);
 //     then swapping again; `point_smoothing_passes` rounds.
 // Every input vertex and segment survives (segments as chains of boundary pieces). Lengths are
@@ -63,6 +64,10 @@ struct StretchedDelaunayOptions2 {
     int metric_smoothing_passes = 3;
     /// Rounds of point smoothing and re-swapping (step 7, >= 0).
     int point_smoothing_passes = 2;
+    /// The largest move of a point in one smoothing pass, in units of its metric's smallest
+    /// size (in [0, 1]): a fraction of its layer's thickness in the layers, in any direction
+    /// (a shift along the wall by more than that shears a stretched cell).
+    double point_move_limit = 0.1;
     /// The far field's isotropic size; unbounded (the default): graded_size_from_boundary of
     /// the domain (its boundary spacing, graded).
     SizeFunction far_field_size;

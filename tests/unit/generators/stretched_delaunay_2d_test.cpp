@@ -98,19 +98,22 @@ std::set<std::pair<tri::VertIdx, tri::VertIdx>> edges(const tri::Triangulation2&
     return result;
 }
 
-/// The share of edges of unit length in the vertices' own metrics (log-Euclidean linear).
-double unit_edge_share(const gen::StretchedDelaunayResult2& r) {
+/// The quality report in the vertices' own metrics (log-Euclidean linear in the triangles).
+gen::MetricQualityReport2 quality(const gen::StretchedDelaunayResult2& r) {
     const tri::Triangulation2& mesh = r.mesh.mesh;
     const gen::MetricField2 field =
         gen::MetricField2::background_mesh(mesh.xy, r.metrics, mesh.triangles);
-    return gen::metric_quality_report_2d(mesh.xy, mesh.triangles, field).unit_length_share;
+    return gen::metric_quality_report_2d(mesh.xy, mesh.triangles, field);
 }
 
 void print(const char* name, const gen::StretchedDelaunayResult2& r, double median,
            double largest) {
+    const gen::MetricQualityReport2 q = quality(r);
     std::cout << name << ": " << r.mesh.mesh.vertex_count() << " points, "
               << r.mesh.mesh.triangle_count() << " triangles, wall aspect ratio median " << median
-              << " max " << largest << ", unit metric edges " << unit_edge_share(r) << "\n";
+              << " max " << largest << ", unit metric edges " << q.unit_length_share
+              << ", metric shape median " << q.shape_median << ", above 150 degrees "
+              << q.above_150_degrees << ", max angle " << q.max_angle << "\n";
     for (const auto& [counter, value] : gen::counter_list(r.counters))
         std::cout << "  " << counter << " " << value << "\n";
 }
