@@ -260,26 +260,50 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
     return points;
 }
 
-/// The second filter: an O-mesh point closer than the larger of two layer thicknesses to a
-/// strictly finer point of another component's O-mesh (its wall vertices the finest) goes. The
-/// decision reads only the unfiltered set, so it does not depend on the order.
+/// The stretching of an O-mesh point: its wall's spacing along the wall, its layer's thickness
+/// across.
+Metric2 omesh_metric(const AddedPoint& p) {
+    return metric_from_stretching(p.tx, p.ty, p.spacing, p.spacing / p.thickness);
+}
+
+/// The stretching of wall vertex i: the wall's spacing along it, the first height across.
+Metric2 wall_metric(const Wall& wall, std::size_t i, double first_height) {
+    const std::array<double, 2>& n = wall.normals[i];
+    const double aspect = wall.spacing[i] / first_height;
+    return aspect > 1 ? metric_from_stretching(-n[1], n[0], wall.spacing[i], aspect)
+                      : isotropic(wall.spacing[i]);
+}
+
+/// The second filter: an O-mesh point goes when a strictly finer point of another component's
+/// O-mesh (its wall vertices the finest; finer: a thinner layer, then a lower component) lies
+/// inside the unit ellipse of either point's stretching (closer than the local spacing in that
+/// direction: along the wall, the spacing; across it, the thickness). The decision reads only
+/// the unfiltered set, so it does not depend on the order.
 std::vector<AddedPoint> drop_overlaps(const tri::Triangulation2& domain_mesh,
                                       std::span<const Wall> walls, std::vector<AddedPoint> points,
-                                      StretchedDelaunayCounters2& counters) {
+                                      double first_height, StretchedDelaunayCounters2& counters) {
     if (walls.size() < 2) return points;
-    // Tags: i < points.size() an O-mesh point, else a wall vertex (wall_tags).
+    // Tags: i < points.size() an O-mesh point, else a wall vertex.
     SortedPoints sorted;
+    std::vector<Metric2> metric_of;
+    std::vector<double> thickness_of;
+    std::vector<std::uint32_t> component_of;
     double largest = 0;
     for (std::uint32_t i = 0; i < points.size(); ++i) {
         sorted.add(points[i].x, points[i].y, i);
-        largest = std::max(largest, points[i].thickness);
+        metric_of.push_back(omesh_metric(points[i]));
+        thickness_of.push_back(points[i].thickness);
+        component_of.push_back(points[i].component);
+        largest = std::max(largest, points[i].spacing);
     }
-    std::vector<std::uint32_t> wall_of;
     for (std::uint32_t c = 0; c < walls.size(); ++c) {
-        for (const tri::VertIdx v : walls[c].vertices) {
-            sorted.add(domain_mesh.point(v)[0], domain_mesh.point(v)[1],
-                       static_cast<std::uint32_t>(points.size() + wall_of.size()));
-            wall_of.push_back(c);
+        for (std::size_t i = 0; i < walls[c].vertices.size(); ++i) {
+            const double* p = domain_mesh.point(walls[c].vertices[i]);
+            sorted.add(p[0], p[1], static_cast<std::uint32_t>(metric_of.size()));
+            metric_of.push_back(wall_metric(walls[c], i, first_height));
+            thickness_of.push_back(0);
+            component_of.push_back(c);
+            largest = std::max(largest, walls[c].spacing[i]);
         }
     }
     sorted.sort();
@@ -287,16 +311,15 @@ std::vector<AddedPoint> drop_overlaps(const tri::Triangulation2& domain_mesh,
     for (std::uint32_t i = 0; i < points.size(); ++i) {
         const AddedPoint& p = points[i];
         const bool near_finer =
-            sorted.any_near(p.x, p.y, largest, [&](double x, double y, std::uint32_t tag) {
-                const bool is_wall = tag >= points.size();
-                const std::uint32_t component =
-                    is_wall ? wall_of[tag - points.size()] : points[tag].component;
+            sorted.any_near(p.x, p.y, largest, [&](double x, double y, std::uint32_t q) {
+                const std::uint32_t component = component_of[q];
                 if (component == p.component) return false;
-                const double thickness = is_wall ? 0.0 : points[tag].thickness;
-                const bool finer = thickness < p.thickness ||
-                                   (thickness == p.thickness && component < p.component);
-                return finer &&
-                       scale_free_norm(x - p.x, y - p.y) < std::max(thickness, p.thickness);
+                const bool finer = thickness_of[q] < p.thickness ||
+                                   (thickness_of[q] == p.thickness && component < p.component);
+                if (!finer) return false;
+                const double dx = x - p.x, dy = y - p.y;
+                return metric_length(metric_of[i], dx, dy) < 1 ||
+                       metric_length(metric_of[q], dx, dy) < 1;
             });
         if (near_finer) {
             ++counters.overlap_dropped;
@@ -493,7 +516,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
 
     // Steps 1 and 2.
     std::vector<AddedPoint> omesh = omesh_points(located, locator, walls, options, counters);
-    omesh = drop_overlaps(located, walls, std::move(omesh), counters);
+    omesh = drop_overlaps(located, walls, std::move(omesh), options.first_height, counters);
     const std::vector<AddedPoint> far =
         far_field_points(located, locator, boundary.xy, omesh, size, options, counters);
 
@@ -523,12 +546,8 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
         metrics[v] = isotropic(size(xy[2 * std::size_t{v}], xy[2 * std::size_t{v} + 1]));
     for (const Wall& wall : walls) {
         for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
-            const std::array<double, 2>& n = wall.normals[i];
-            const tri::VertIdx v = wall.vertices[i];
-            const double aspect = wall.spacing[i] / options.first_height;
-            metrics[v] = aspect > 1 ? metric_from_stretching(-n[1], n[0], wall.spacing[i], aspect)
-                                    : isotropic(wall.spacing[i]);
-            weights[v] = 0;
+            metrics[wall.vertices[i]] = wall_metric(wall, i, options.first_height);
+            weights[wall.vertices[i]] = 0;
         }
     }
     for (std::size_t i = 0; i < added.size(); ++i) {
@@ -537,7 +556,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
         if (p.component == kNoComponent) {
             metrics[v] = isotropic(size(p.x, p.y));
         } else {
-            metrics[v] = metric_from_stretching(p.tx, p.ty, p.spacing, p.spacing / p.thickness);
+            metrics[v] = omesh_metric(p);
             weights[v] = 0.5 * p.layer / (p.layer + 4.0);
         }
     }
