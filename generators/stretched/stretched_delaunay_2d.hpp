@@ -9,8 +9,8 @@
 //     wall's tangential spacing there (cells of aspect ratio about 1) or its point leaves the
 //     domain;
 //  2. filtering: O-mesh points not strictly inside the domain (exact orient2d on the domain's
-//     CDT) go, as do points closer to a finer point of another component's O-mesh than the
-//     larger of their layer thicknesses (overlapping O-meshes: the finer kept); far-field points
+//     CDT) go, as do points with a finer point of another component's O-mesh inside either
+//     one's unit stretching ellipse (overlapping O-meshes: the finer kept); far-field points
 //     (the centres of a quadtree's leaves refined to the far-field size) are kept only strictly
 //     inside the domain and farther than `far_field_spacing` sizes from every O-mesh and
 //     boundary point. No wake region of its own: a wake is refined by giving the far-field size
@@ -81,7 +81,7 @@ struct StretchedDelaunayCounters2 {
     std::uint64_t wall_vertices = 0;         ///< vertices of those walls
     std::uint64_t omesh_points = 0;          ///< O-mesh points computed
     std::uint64_t outside_domain = 0;        ///< of those, not strictly inside the domain
-    std::uint64_t overlap_dropped = 0;       ///< of those, near a finer point of another O-mesh
+    std::uint64_t overlap_dropped = 0;       ///< of those, by a finer point of another O-mesh
     std::uint64_t far_field_candidates = 0;  ///< quadtree leaf centres
     std::uint64_t far_field_dropped = 0;     ///< of those, outside or too near another point
     std::uint64_t duplicates = 0;            ///< points equal to an earlier point, dropped
