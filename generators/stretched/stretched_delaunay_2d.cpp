@@ -19,6 +19,7 @@
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/stretched/metric_smoothing_2d.hpp"
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
@@ -480,6 +481,105 @@ void smooth_points(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
     }
 }
 
+/// Replaces the side k of triangle t (from v[k] to v[k+1]) by the other diagonal of its
+/// quadrilateral with the neighbour across it, keeping the neighbours and the constraint flags
+/// (neither of the two triangles' other sides changes): with p = v[k], q = v[k+1], r = v[k+2]
+/// and s the neighbour's apex, t = (p, q, r) and u = (q, p, s) become t = (r, p, s) and
+/// u = (s, q, r), the diagonal p-q replaced by r-s.
+void flip_side(tri::Triangulation2& mesh, tri::TriIdx t, unsigned k, tri::TriIdx u, unsigned j) {
+    const auto at = [](tri::TriIdx tri_index, unsigned local) {
+        return 3 * std::size_t{tri_index} + local % 3;
+    };
+    const tri::VertIdx p = mesh.triangles[at(t, k)], q = mesh.triangles[at(t, k + 1)];
+    const tri::VertIdx r = mesh.triangles[at(t, k + 2)], s = mesh.triangles[at(u, j + 2)];
+    const tri::TriIdx n_qr = mesh.neighbors[at(t, k + 1)], n_rp = mesh.neighbors[at(t, k + 2)];
+    const tri::TriIdx n_ps = mesh.neighbors[at(u, j + 1)], n_sq = mesh.neighbors[at(u, j + 2)];
+    const bool flagged = !mesh.constrained.empty();
+    const std::uint8_t c_qr = flagged ? mesh.constrained[at(t, k + 1)] : 0;
+    const std::uint8_t c_rp = flagged ? mesh.constrained[at(t, k + 2)] : 0;
+    const std::uint8_t c_ps = flagged ? mesh.constrained[at(u, j + 1)] : 0;
+    const std::uint8_t c_sq = flagged ? mesh.constrained[at(u, j + 2)] : 0;
+    const tri::VertIdx new_t[3] = {r, p, s}, new_u[3] = {s, q, r};
+    const tri::TriIdx across_t[3] = {n_rp, n_ps, u}, across_u[3] = {n_sq, n_qr, t};
+    const std::uint8_t flags_t[3] = {c_rp, c_ps, 0}, flags_u[3] = {c_sq, c_qr, 0};
+    for (unsigned i = 0; i < 3; ++i) {
+        mesh.triangles[at(t, i)] = new_t[i];
+        mesh.triangles[at(u, i)] = new_u[i];
+        mesh.neighbors[at(t, i)] = across_t[i];
+        mesh.neighbors[at(u, i)] = across_u[i];
+        if (flagged) {
+            mesh.constrained[at(t, i)] = flags_t[i];
+            mesh.constrained[at(u, i)] = flags_u[i];
+        }
+    }
+    // The two outer neighbours that changed sides: p-s now faces t, q-r now faces u.
+    const auto relink = [&](tri::TriIdx outer, tri::TriIdx from, tri::TriIdx to) {
+        if (outer == tri::kNone) return;
+        for (unsigned i = 0; i < 3; ++i) {
+            if (mesh.neighbors[at(outer, i)] == from) mesh.neighbors[at(outer, i)] = to;
+        }
+    };
+    relink(n_ps, u, t);
+    relink(n_qr, t, u);
+}
+
+/// The larger of two corners (exact compare_angles).
+predicates::Corner larger_corner(const predicates::Corner& a, const predicates::Corner& b) {
+    return predicates::compare_angles(a, b) == Sign::Negative ? b : a;
+}
+
+/// A cleanup after the in-ellipse swaps: the mean of four vertex matrices, where the stretching
+/// turns quickly between neighbouring wall normals (a trailing edge's fan), is much less
+/// stretched than any of them, and the swaps under it can leave flat triangles along one
+/// normal. A triangle whose largest angle exceeds the reference corner (atan2(1/2, -0.8660...),
+/// 150 degrees to 1e-16) gets the side opposite it swapped when its quadrilateral is strictly
+/// convex and the quadrilateral's largest angle strictly decreases: the min-max criterion
+/// [Babuska-Aziz76; BarthJespersen "The design and application of upwind schemes on
+/// unstructured meshes" 1989] applied only there. Every decision is exact (orient2d,
+/// compare_angles); every swap decreases the largest angle of a pair, so passes end.
+std::uint64_t swap_out_flat_triangles(tri::Triangulation2& mesh) {
+    static constexpr double kOrigin[2] = {0, 0}, kRight[2] = {1, 0};
+    static constexpr double kAt150[2] = {-0.8660254037844386, 0.5};
+    const predicates::Corner reference{kOrigin, kRight, kAt150};
+    std::uint64_t swaps = 0;
+    for (int pass = 0; pass < 16; ++pass) {
+        std::uint64_t pass_swaps = 0;
+        for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+            const double* corner_point[3];
+            for (unsigned i = 0; i < 3; ++i)
+                corner_point[i] = mesh.point(mesh.triangles[3 * t + i]);
+            const predicates::Corner largest =
+                predicates::largest_corner(corner_point[0], corner_point[1], corner_point[2]);
+            if (predicates::compare_angles(largest, reference) != Sign::Positive) continue;
+            unsigned apex = 0;
+            while (corner_point[apex] != largest.o) ++apex;
+            const unsigned k = (apex + 1) % 3;  // the side opposite the largest angle
+            const tri::TriIdx u = mesh.neighbors[3 * std::size_t{t} + k];
+            if (u == tri::kNone || mesh.is_constrained(t, static_cast<int>(k))) continue;
+            unsigned j = 0;
+            while (j < 3 && mesh.neighbors[3 * std::size_t{u} + j] != t) ++j;
+            if (j == 3) continue;
+            const double* p = corner_point[k];
+            const double* q = corner_point[(k + 1) % 3];
+            const double* r = corner_point[apex];
+            const double* s = mesh.point(mesh.triangles[3 * std::size_t{u} + (j + 2) % 3]);
+            if (predicates::orient2d(r, p, s) != Sign::Positive ||
+                predicates::orient2d(s, q, r) != Sign::Positive)
+                continue;
+            const predicates::Corner before =
+                larger_corner(largest, predicates::largest_corner(q, p, s));
+            const predicates::Corner after = larger_corner(predicates::largest_corner(r, p, s),
+                                                           predicates::largest_corner(s, q, r));
+            if (predicates::compare_angles(after, before) != Sign::Negative) continue;
+            flip_side(mesh, t, k, u, j);
+            ++pass_swaps;
+        }
+        swaps += pass_swaps;
+        if (pass_swaps == 0) break;
+    }
+    return swaps;
+}
+
 }  // namespace
 
 StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
@@ -588,6 +688,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
             counters.reswaps += swapped.swaps;
             counters.swap_budget_hits += swapped.budget_stops;
         }
+        counters.flat_swaps = swap_out_flat_triangles(mesh);
     }
     return {std::move(out), std::move(metrics), counters};
 }

@@ -23,6 +23,7 @@
 #include "generators/stretched/stretched_delaunay_2d.hpp"
 #include "tests/support/test_scale.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
 
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
@@ -57,6 +58,11 @@ void expect_valid(const Domain& domain, const gen::StretchedDelaunayResult2& r) 
     ASSERT_GE(r.mesh.mesh.xy.size(), domain.xy.size());
     for (std::size_t i = 0; i < domain.xy.size(); ++i) EXPECT_EQ(r.mesh.mesh.xy[i], domain.xy[i]);
     EXPECT_EQ(r.mesh.input_vertex_count, domain.xy.size() / 2);
+    // The neighbours after the swaps are those the triangles define.
+    tri::Triangulation2 relinked = r.mesh.mesh;
+    relinked.neighbors.clear();
+    tri::link_neighbors_2d(relinked);
+    EXPECT_EQ(relinked.neighbors, r.mesh.mesh.neighbors);
 }
 
 /// Longest edge over smallest altitude (L_max^2 / (2 area)) of the triangles with an edge on a
@@ -129,6 +135,7 @@ TEST(StretchedDelaunay2d, Naca0012IsValidAndStretchedAtTheWall) {
     // The airfoil's vertices follow the far-field box's four corners.
     const auto [median, largest] = wall_aspect_ratios(r.mesh.mesh, 4, r.mesh.input_vertex_count);
     print("naca0012", r, median, largest);
+    EXPECT_EQ(quality(r).above_150_degrees, 0u);
     EXPECT_GE(largest, 100.0);
     EXPECT_GE(median, 20.0);
 }
@@ -142,6 +149,7 @@ TEST(StretchedDelaunay2d, ThreeElementIsValidWithOverlapsRemoved) {
     EXPECT_GT(r.counters.swaps, 0u);
     const auto [median, largest] = wall_aspect_ratios(r.mesh.mesh, 4, r.mesh.input_vertex_count);
     print("three-element", r, median, largest);
+    EXPECT_EQ(quality(r).above_150_degrees, 0u);
     EXPECT_GE(largest, 30.0);
 }
 
@@ -192,6 +200,7 @@ TEST(StretchedDelaunay2d, UniformlySampledAirfoilReachesAspectRatio1000) {
     expect_valid(domain, r);
     const auto [median, largest] = wall_aspect_ratios(r.mesh.mesh, 4, r.mesh.input_vertex_count);
     print("naca0012, uniform sampling", r, median, largest);
+    EXPECT_EQ(quality(r).above_150_degrees, 0u);
     EXPECT_GE(median, 500.0);
 }
 
