@@ -229,7 +229,24 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
         height_factor[k] = height_factor[k - 1] + power;
         power *= o.growth;
     }
+    // The budget before any work: the layers each normal would get.
+    std::uint64_t count = 0;
+    for (const Wall& wall : walls) {
+        for (const double spacing : wall.spacing) {
+            for (std::size_t k = 1; k < height_factor.size(); ++k) {
+                if (!(o.first_height * thickness_factor[k] < spacing)) break;
+                ++count;
+            }
+        }
+    }
+    if (count > kStretchedPointBudget) {
+        throw InputError("stretched Delaunay: the layers (first height " +
+                         format_number(o.first_height) + ", growth " + format_number(o.growth) +
+                         ") ask for " + std::to_string(count) + " points, more than " +
+                         std::to_string(kStretchedPointBudget));
+    }
     std::vector<AddedPoint> points;
+    points.reserve(count);
     for (std::uint32_t c = 0; c < walls.size(); ++c) {
         const Wall& wall = walls[c];
         for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
@@ -368,10 +385,10 @@ std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
             continue;
         }
         centres.push_back({cx, cy});
-        if (centres.size() > kStretchedFarFieldBudget) {
+        if (centres.size() > kStretchedPointBudget) {
             throw InputError("stretched Delaunay: the far-field size (" + size.describe() +
                              ") asks for more than " +
-                             format_approximate(static_cast<double>(kStretchedFarFieldBudget)) +
+                             format_approximate(static_cast<double>(kStretchedPointBudget)) +
                              " points");
         }
     }

@@ -113,12 +113,13 @@ struct StretchedDelaunayResult2 {
     StretchedDelaunayCounters2 counters;
 };
 
-/// The largest number of far-field points: 2^24 (an InputError beyond it, before the CDT).
-inline constexpr std::uint64_t kStretchedFarFieldBudget = std::uint64_t{1} << 24;
+/// The largest number of O-mesh points, and of far-field points: 2^24 each (an InputError
+/// beyond it, the O-mesh's counted before any point is made, the far field's before the CDT).
+inline constexpr std::uint64_t kStretchedPointBudget = std::uint64_t{1} << 24;
 
 /// @throws InputError on an option out of range, as constrained_delaunay_2d, when the segments
-///         enclose no region, or when the far-field size asks for more than
-///         kStretchedFarFieldBudget points.
+///         enclose no region, or when the layers or the far-field size ask for more than
+///         kStretchedPointBudget points.
 StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
                                                const StretchedDelaunayOptions2& options);
 

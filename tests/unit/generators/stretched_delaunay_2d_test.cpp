@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <iostream>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -246,6 +247,19 @@ TEST(StretchedDelaunay2d, BadOptionsAreInputErrors) {
     options.first_height = 1e-3;
     options.growth = 0.5;
     EXPECT_THROW(gen::stretched_delaunay_2d(mesh_domain, options), exactmesh::InputError);
+    // An airfoil of 4000 wall vertices with 10000 uniform layers of 1e-9 each: 4 10^7 points,
+    // refused before any point is made.
+    const Domain fine(gen::SampleDomain::Naca0012, 0, gen::SizeFunction::uniform(5e-4));
+    const gen::MeshDomain2 fine_domain(fine.pslg());
+    options.growth = 1;
+    options.first_height = 1e-9;
+    options.max_layers = 10000;
+    try {
+        gen::stretched_delaunay_2d(fine_domain, options);
+        FAIL() << "no error";
+    } catch (const exactmesh::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("ask for"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
