@@ -27,9 +27,9 @@
 //     (swap_edges_2d with MetricInEllipse);
 //  7. point smoothing: each O-mesh and far-field point moved towards the centroid of its
 //     neighbours weighted by the edges' metric lengths (relaxed by its smoothing weight, at most
-//     point_move_limit times its smallest size), a move
-//     kept only when every incident triangle stays strictly counter-clockwise (exact orient2d);
-//     then swapping again; `point_smoothing_passes` rounds;
+//     point_move_limit times its smallest size), a move kept only when every incident triangle
+//     stays strictly counter-clockwise (exact orient2d); then swapping again;
+//     `point_smoothing_passes` rounds;
 //  8. (not in the seed) a cleanup of the flat triangles the in-ellipse swaps can leave where
 //     the stretching turns quickly between neighbouring normals (a trailing edge's fan: the
 //     mean of four matrices there is much less stretched than any of them): a triangle above
@@ -39,8 +39,11 @@
 // Every input vertex and segment survives (segments as chains of boundary pieces). Lengths are
 // scale-free (predicates::scale_free_norm, metric_length) and points are built by exact power-
 // of-two-scalable operations, so a domain scaled by 2^k with first_height and the far-field
-// size scaled alike gives the same mesh scaled. Cost: O(P log P) for the filters and the CDT of
-// P points, O(passes * E) for the smoothing.
+// size scaled alike gives the same mesh scaled. Predicates: orient2d, in_ellipse_sos (through
+// swap_edges_2d), compare_angles. Cost: the filters scan windows of the points sorted by x,
+// O(P log P + P W) for P points and W in a window of the local spacing's width (W grows with the
+// layers per normal: 1.6 10^6 points on 164 normals took minutes), the CDT O(P log P), the
+// smoothing O(passes E).
 #pragma once
 
 #include <array>
