@@ -41,9 +41,11 @@
 // of-two-scalable operations, so a domain scaled by 2^k with first_height and the far-field
 // size scaled alike gives the same mesh scaled. Predicates: orient2d, in_ellipse_sos (through
 // swap_edges_2d), compare_angles. Cost: the filters scan windows of the points sorted by x,
-// O(P log P + P W) for P points and W in a window of the local spacing's width (W grows with the
-// layers per normal: 1.6 10^6 points on 164 normals took minutes), the CDT O(P log P), the
-// smoothing O(passes E).
+// O(P log P + P W) for P points and W in a window of the local spacing's width; the CDT
+// O(P log P); the smoothing O(passes E). The swaps from the Euclidean triangulation dominate
+// when the layers are many and thin: from the Euclidean CDT of long columns of points each
+// point's stretched cell must be rebuilt (measured on the NACA 0012 with 1000 uniform layers of
+// 1e-7: 4.7 10^6 swaps for 1.6 10^5 points, 1.7 10^6 for half as many layers).
 #pragma once
 
 #include <array>
