@@ -471,6 +471,8 @@ void register_all() {
             std::vector<double> bounds{gen::kGuaranteedMinAngle};
             if (target == 100000 || target < 10000) bounds.push_back(30.0);
             for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) {
+                // advancing-layers needs its --layers (without them it is frontal again).
+                if (g.honours.contains(gen::MeshOption::Layers)) continue;
                 const std::string prefix = "BM_mesh/" + std::string(g.name) + "/" + domain + "/";
                 if (g.name != "delaunay-refinement") {
                     configure(benchmark::RegisterBenchmark((prefix + "none").c_str(),
@@ -509,6 +511,7 @@ void register_all() {
         }
     }
     for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) {
+        if (g.honours.contains(gen::MeshOption::Layers)) continue;
         benchmark::RegisterBenchmark(
             ("BM_mesh/" + std::string(g.name) + "/near-circle-10000/default").c_str(),
             BM_mesh_near_circle, &g)

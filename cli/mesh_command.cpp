@@ -57,6 +57,8 @@ struct MeshArguments {
     bool quality = false;
     bool stats = false;
     bool angles_given = false;  ///< --min-angle or --polish-angle on the command line
+    std::string layers;         ///< --layers FIRST_HEIGHT,GROWTH[,MAX_LAYERS]
+    bool quads = false;         ///< --quads
 };
 
 /// The most --smooth sweeps: Laplacian smoothing converges within tens of sweeps, and each
@@ -151,8 +153,29 @@ void run_mesh(const MeshArguments& arguments) {
     if (arguments.input.empty() == arguments.domain.empty()) {
         throw InputError("give either an input .poly file or --domain NAME (not both)");
     }
+    const bool layered = generator.honours.contains(gen::MeshOption::Layers);
+    if (!layered && (!arguments.layers.empty() || arguments.quads)) {
+        throw InputError("--layers and --quads apply to --generator advancing-layers only, not " +
+                         std::string(generator.name));
+    }
+    if (layered && arguments.layers.empty()) {
+        throw InputError("--generator " + std::string(generator.name) +
+                         " needs --layers FIRST_HEIGHT,GROWTH[,MAX_LAYERS] (e.g. 1e-4,1.2)");
+    }
+    if (layered && arguments.smooth > 0) {
+        // Laplacian smoothing moves every free vertex, the layers' too: it would undo them.
+        throw InputError("--smooth would move the layers' points: not with --generator " +
+                         std::string(generator.name));
+    }
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
+    if (arguments.quads && format == OutputFormat::Ele) {
+        throw InputError(output.string() +
+                         ": a .ele file holds triangles only; --quads needs a .msh or .vtu "
+                         "output (or .svg)");
+    }
+    const gen::LayerParameters2 layer_parameters =
+        layered ? gen::parse_layer_parameters(arguments.layers) : gen::LayerParameters2{};
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
     if (!arguments.input.empty()) {
         std::vector<fs::path> inputs{arguments.input, io::poly_node_path(arguments.input)};
@@ -221,6 +244,8 @@ void run_mesh(const MeshArguments& arguments) {
     options.size = size;
     options.max_steiner_points = arguments.max_steiner;
     options.cdt.first_index = base;
+    options.layers = layer_parameters;
+    options.layers.quads = arguments.quads;
     options.metric = metric;
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
     print_warnings(ignored_options(generator, arguments, poly));
@@ -270,15 +295,31 @@ void run_mesh(const MeshArguments& arguments) {
                                                       final_result.mesh.mesh.triangles, *metric);
     }
     io::OutputSet set;
-    stage_constrained_result(set, final_result.mesh, files, format, base, title + label);
+    stage_constrained_result(set, final_result.mesh, files, format, base, title + label, {},
+                             final_result.quads);
     commit_outputs(set);
     const tri::Triangulation2& mesh = final_result.mesh.mesh;
     std::cout << "vertices: " << mesh.vertex_count() << '\n'
               << "triangles: " << mesh.triangle_count() << '\n';
+    if (!final_result.quads.empty())
+        std::cout << "quads: " << final_result.quads.size() / 4 << '\n';
     if (arguments.quality) {
         gen::QualityReport2 report = gen::quality_report_2d(mesh.xy, mesh.triangles, size);
         report.seconds = seconds;
         std::cout << gen::quality_report_text(report);
+        if (!final_result.quads.empty()) {
+            // The shared report measures triangles; the quadrilaterals are left out of it.
+            std::cout << "quality.note: the report above covers the " << mesh.triangle_count()
+                      << " triangles only; the " << final_result.quads.size() / 4
+                      << " layer quadrilaterals (strictly convex, checked exactly) are measured "
+                         "below: corner angles, aspect ratio (longest over shortest side)\n";
+            const gen::QuadQuality2 quads = gen::quad_quality_2d(mesh.xy, final_result.quads);
+            std::cout << "quality.quads: " << quads.quads << '\n'
+                      << "quality.quad_min_angle: " << quads.min_angle << '\n'
+                      << "quality.quad_max_angle: " << quads.max_angle << '\n'
+                      << "quality.quad_max_aspect_ratio: " << quads.max_aspect_ratio << '\n'
+                      << "quality.quad_mean_aspect_ratio: " << quads.mean_aspect_ratio << '\n';
+        }
         if (metric_report) {
             std::cout << "quality.metric: " << metric->describe() << '\n'
                       << gen::metric_quality_report_text(*metric_report);
@@ -377,6 +418,20 @@ void add_mesh_command(CLI::App& app) {
                      ".node whose vertices carry 3 attributes M11 M12 M22, with its .ele beside "
                      "it (log-Euclidean interpolation inside, nearest boundary value outside)")
         ->type_name("EXPR|FILE");
+    command
+        ->add_option(
+            "--layers", arguments->layers,
+            "advancing-layers only (and required there): boundary layers on the walls "
+            "(every hole loop: the airfoils of the built-in domains): the first layer's "
+            "thickness, the growth ratio in [1, 10], and at most MAX_LAYERS layers (1 to " +
+                std::to_string(gen::kMaxLayers) +
+                ", default 60); a stack also stops at aspect ratio 1 or where it would "
+                "cross anything")
+        ->type_name("FIRST_HEIGHT,GROWTH[,MAX_LAYERS]");
+    command->add_flag("--quads", arguments->quads,
+                      "advancing-layers only: keep the layer cells as quadrilaterals (a mixed "
+                      "mesh; .msh or .vtu output, not .ele); else each is split in two triangles "
+                      "by the diagonal with the smaller largest angle");
     command->add_flag(
         "--quality", arguments->quality,
         "Print the quality report: angles, angle histogram, radius-edge ratio, size conformity "

@@ -149,12 +149,15 @@ triangulation::InsertionOrder insertion_order(const std::string& name) {
 void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
                               std::uint32_t base, const std::string& svg_title,
-                              std::span<const double> vertex_field) {
+                              std::span<const double> vertex_field,
+                              std::span<const triangulation::VertIdx> quads) {
     namespace fs = std::filesystem;
     const triangulation::Triangulation2& mesh = result.mesh;
     const fs::path& output = files[0];
     switch (format) {
         case OutputFormat::Ele: {
+            if (!quads.empty())
+                throw InputError(output.string() + ": a .ele file holds triangles only");
             const fs::path &neigh = files[1], &node = files[2], &pieces = files[3];
             io::NodeFile vertices;
             vertices.xy = mesh.xy;
@@ -174,16 +177,22 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
             return;
         }
         case OutputFormat::Msh:
-            set.stage(output, io::format_msh(mesh.xy, mesh.triangles, vertex_field));
+            set.stage(output, io::format_msh(mesh.xy, mesh.triangles, vertex_field, quads));
             return;
         case OutputFormat::Vtu:
-            set.stage(output, io::format_vtu(mesh.xy, mesh.triangles, base, vertex_field));
+            set.stage(output, io::format_vtu(mesh.xy, mesh.triangles, base, vertex_field, quads));
             return;
         case OutputFormat::Svg: {
             io::SvgOptions svg;
             svg.title = svg_title;
             svg.segments = result.pieces;
-            set.stage(output, io::format_svg(mesh.xy, mesh.triangles, svg));
+            // A picture: each quadrilateral drawn as two triangles.
+            std::vector<triangulation::VertIdx> drawn(mesh.triangles);
+            for (std::size_t q = 0; q < quads.size() / 4; ++q) {
+                const auto c = quads.subspan(4 * q, 4);
+                drawn.insert(drawn.end(), {c[0], c[1], c[2], c[0], c[2], c[3]});
+            }
+            set.stage(output, io::format_svg(mesh.xy, drawn, svg));
             return;
         }
     }

@@ -29,7 +29,8 @@ OutputFormat output_format(const std::filesystem::path& output);
 
 /// The files a command writes for `output`: itself, and for .ele its companions with the given
 /// extensions (".neigh", ".node", ...), each replacing the extension of `output`.
-std::vector<std::filesystem::path> output_files(const std::filesystem::path& output, OutputFormat format,
+std::vector<std::filesystem::path> output_files(const std::filesystem::path& output,
+                                                OutputFormat format,
                                                 std::initializer_list<const char*> ele_companions);
 
 /// @throws InputError when one of `outputs` resolves to one of `inputs` (the same file by
@@ -80,13 +81,15 @@ triangulation::InsertionOrder insertion_order(const std::string& name);
 /// format,
 /// {".neigh", ".node", ".poly"})): .ele with .neigh, .node (every vertex) and .poly (the pieces,
 /// each marked with its input segment's number); or .msh, .vtu, .svg (with the pieces drawn).
-/// Numbers vertices, triangles and segments from `base`. `vertex_field` (#V, or empty) is the
-/// .node's attribute, the .msh's node data and the .vtu's point array "u". Nothing is in place
-/// until commit.
+/// Numbers vertices, triangles and segments from `base`. `quads` (4·#Q, a mixed mesh) go to .msh
+/// and .vtu as quadrilaterals and to .svg drawn as two triangles each; .ele refuses them.
+/// `vertex_field` (#V, or empty) is the .node's attribute, the .msh's node data and the .vtu's
+/// point array "u". Nothing is in place until commit.
 void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
                               std::uint32_t base, const std::string& svg_title,
-                              std::span<const double> vertex_field = {});
+                              std::span<const double> vertex_field = {},
+                              std::span<const triangulation::VertIdx> quads = {});
 
 /// Region maximum areas (Triangle's -a per region) are read but not applied by `cdt`: warns once,
 /// at the first region that gives one, with `why`.

@@ -30,6 +30,18 @@ void append_block_headers(std::string& out, std::size_t count, int entity_dim, i
     out += '\n';
 }
 
+constexpr int kGmshQuadrangle = 3;
+
+/// One element block's header line: "entityDim entityTag elementType count" (entity 1).
+void append_block_header(std::string& out, int entity_dim, int element_type, std::size_t count) {
+    append_unsigned(out, static_cast<std::uint64_t>(entity_dim));
+    out += " 1 ";
+    append_unsigned(out, static_cast<std::uint64_t>(element_type));
+    out += ' ';
+    append_unsigned(out, count);
+    out += '\n';
+}
+
 /// The $NodeData section of one scalar per node (node v tagged v + 1), named "u" [MSH 4.1:
 /// string tags (the view name), real tags (the time), integer tags (the time step, the
 /// number of components, the number of nodes), then "nodeTag value" lines].
@@ -52,9 +64,11 @@ void append_node_data(std::string& out, std::span<const double> values) {
 std::string format_msh_cells(std::span<const double> coordinates, unsigned dimension,
                              std::span<const VertIdx> cells, unsigned corners,
                              const unsigned* corner_order, int entity_dim, int element_type,
-                             std::span<const double> vertex_field) {
+                             std::span<const double> vertex_field,
+                             std::span<const VertIdx> quads = {}) {
     const std::size_t nodes = coordinates.size() / dimension;
     const std::size_t elements = cells.size() / corners;
+    const std::size_t quad_count = quads.size() / 4;
     std::string out;
     out.reserve(56 * nodes + 40 * elements + 256);
     out += "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
@@ -71,7 +85,20 @@ std::string format_msh_cells(std::span<const double> coordinates, unsigned dimen
 
     // The headers, then each element's tag and its nodes.
     out += "$Elements\n";
-    append_block_headers(out, elements, entity_dim, element_type);
+    if (quad_count == 0) {
+        append_block_headers(out, elements, entity_dim, element_type);
+    } else {
+        // A mixed mesh: a block of triangles (when there are any), then one of quadrilaterals
+        // (element type 3, corners counter-clockwise), tagged on after the triangles.
+        const std::size_t total = elements + quad_count;
+        append_unsigned(out, elements > 0 ? 2 : 1);
+        out += ' ';
+        append_unsigned(out, total);
+        out += " 1 ";
+        append_unsigned(out, total);
+        out += '\n';
+        if (elements > 0) append_block_header(out, entity_dim, element_type, elements);
+    }
     for (std::size_t t = 0; t < elements; ++t) {
         append_unsigned(out, t + 1);
         for (std::size_t k = 0; k < corners; ++k) {
@@ -79,6 +106,17 @@ std::string format_msh_cells(std::span<const double> coordinates, unsigned dimen
             append_unsigned(out, std::uint64_t{cells[corners * t + corner_order[k]]} + 1);
         }
         out += '\n';
+    }
+    if (quad_count > 0) {
+        append_block_header(out, entity_dim, kGmshQuadrangle, quad_count);
+        for (std::size_t q = 0; q < quad_count; ++q) {
+            append_unsigned(out, elements + q + 1);
+            for (std::size_t k = 0; k < 4; ++k) {
+                out += ' ';
+                append_unsigned(out, std::uint64_t{quads[4 * q + k]} + 1);
+            }
+            out += '\n';
+        }
     }
     out += "$EndElements\n";
     if (!vertex_field.empty()) append_node_data(out, vertex_field);
@@ -95,8 +133,9 @@ constexpr int kGmshTetrahedron = 4;
 }  // namespace
 
 std::string format_msh(std::span<const double> xy, std::span<const VertIdx> triangles,
-                       std::span<const double> vertex_field) {
-    return format_msh_cells(xy, 2, triangles, 3, kTriangleOrder, 2, kGmshTriangle, vertex_field);
+                       std::span<const double> vertex_field, std::span<const VertIdx> quads) {
+    return format_msh_cells(xy, 2, triangles, 3, kTriangleOrder, 2, kGmshTriangle, vertex_field,
+                            quads);
 }
 
 std::string format_msh_3d(std::span<const double> xyz, std::span<const VertIdx> tets,

@@ -18,8 +18,11 @@ namespace exactmesh::io {
 /// Gmsh tags start at 1, so node v has tag v + 1 (the input's own number when it was
 /// 1-based) and triangle t has tag t + 1. z is written as 0. Doubles round-trip exactly.
 /// `vertex_field` (#V values, or empty: none) is written as the node data "u".
+/// `quads` (4·#Q, counter-clockwise, or empty): quadrilaterals (element type 3) written after
+/// the triangles, in a block of their own, tagged on from #T + 1.
 std::string format_msh(std::span<const double> xy, std::span<const VertIdx> triangles,
-                       std::span<const double> vertex_field = {});
+                       std::span<const double> vertex_field = {},
+                       std::span<const VertIdx> quads = {});
 void write_msh(const std::filesystem::path& path, std::span<const double> xy,
                std::span<const VertIdx> triangles);
 

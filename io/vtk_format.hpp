@@ -18,8 +18,10 @@ namespace exactmesh::io {
 /// The .vtu text. `xy`: 2·#V coordinates; `triangles`: 3·#T 0-based vertex indices, CCW;
 /// node_number = index + first_index. Doubles round-trip exactly. `vertex_field` (#V values, or
 /// empty: none) is the point array "u".
+/// `quads` (4·#Q, counter-clockwise, or empty): VTK_QUAD cells (type 9) after the triangles.
 std::string format_vtu(std::span<const double> xy, std::span<const VertIdx> triangles,
-                       std::uint32_t first_index, std::span<const double> vertex_field = {});
+                       std::uint32_t first_index, std::span<const double> vertex_field = {},
+                       std::span<const VertIdx> quads = {});
 void write_vtu(const std::filesystem::path& path, std::span<const double> xy,
                std::span<const VertIdx> triangles, std::uint32_t first_index);
 

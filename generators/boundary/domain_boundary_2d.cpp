@@ -33,6 +33,42 @@ using Point = std::array<double, 2>;
 
 namespace {
 
+/// The parameters of `pieces` pieces of equal integral between samples (u, cumulative integral
+/// of ds / size at u, increasing), linear between samples; u0 and u1 included.
+std::vector<double> equal_integral_parameters(const std::vector<double>& u,
+                                              const std::vector<double>& cumulative, int pieces,
+                                              double u0, double u1) {
+    const double total = cumulative.back();
+    std::vector<double> points{u0};
+    std::size_t i = 0;
+    for (int k = 1; k < pieces; ++k) {
+        const double target = total > 0 ? total * k / pieces : 0.0;
+        double parameter;
+        if (total > 0) {
+            while (i + 1 < cumulative.size() && cumulative[i + 1] < target) ++i;
+            const double span = cumulative[i + 1] - cumulative[i];
+            const double f = span > 0 ? (target - cumulative[i]) / span : 0.0;
+            parameter = u[i] + f * (u[i + 1] - u[i]);
+        } else {
+            parameter = u0 + (u1 - u0) * k / pieces;
+        }
+        points.push_back(parameter);
+    }
+    points.push_back(u1);
+    return points;
+}
+
+/// InputError when the integral asks for more than 2^30 pieces (or is not finite).
+void check_piece_count(double total, const Curve2& curve, double u0, const SizeFunction& size) {
+    if (!std::isfinite(total) || total > double{1 << 30}) {
+        throw InputError(
+            "boundary discretization: the size function asks for more than 2^30 pieces on one "
+            "curve or segment (size " +
+            format_number(size(curve(u0)[0], curve(u0)[1])) + " near (" +
+            format_number(curve(u0)[0]) + ", " + format_number(curve(u0)[1]) + "))");
+    }
+}
+
 /// discretize_curve_parameters with a first sample count (doubled until there are 8 samples per
 /// piece).
 std::vector<double> spaced_parameters(const Curve2& curve, double u0, double u1,
@@ -51,36 +87,63 @@ std::vector<double> spaced_parameters(const Curve2& curve, double u0, double u1,
             previous = p;
         }
         const double total = cumulative.back();
-        if (!std::isfinite(total) || total > double{1 << 30}) {
-            throw InputError(
-                "boundary discretization: the size function asks for more than 2^30 pieces on one "
-                "curve or segment (size " +
-                format_number(size(curve(u0)[0], curve(u0)[1])) + " near (" +
-                format_number(curve(u0)[0]) + ", " + format_number(curve(u0)[1]) + "))");
-        }
+        check_piece_count(total, curve, u0, size);
         const int pieces = std::max(min_pieces, static_cast<int>(std::ceil(total - 1e-9)));
         if (pieces * 8 > samples && samples < (1 << 24)) {
             samples = std::min(1 << 24, pieces * 16);
             continue;
         }
-        std::vector<double> points{u0};
-        std::size_t i = 0;
-        for (int k = 1; k < pieces; ++k) {
-            const double target = total > 0 ? total * k / pieces : 0.0;
-            double parameter;
-            if (total > 0) {
-                while (i + 1 < cumulative.size() && cumulative[i + 1] < target) ++i;
-                const double span = cumulative[i + 1] - cumulative[i];
-                const double f = span > 0 ? (target - cumulative[i]) / span : 0.0;
-                parameter = u[i] + f * (u[i + 1] - u[i]);
-            } else {
-                parameter = u0 + (u1 - u0) * k / pieces;
-            }
-            points.push_back(parameter);
-        }
-        points.push_back(u1);
-        return points;
+        return equal_integral_parameters(u, cumulative, pieces, u0, u1);
     }
+}
+
+/// The same spacing with samples where the size needs them: 64 equal intervals, each bisected
+/// while it is longer than a quarter of the smallest size at its ends and middle (at most 40
+/// times), the integral by the midpoint rule. A size that is small only near one point (a
+/// boundary layer's metric along a side that crosses it) costs samples there only, where the
+/// uniform sampling above pays for the smallest size over the whole piece.
+std::vector<double> adaptive_spaced_parameters(const Curve2& curve, double u0, double u1,
+                                               const SizeFunction& size, int min_pieces) {
+    struct Sample {
+        double u;
+        Point p;
+        double s;
+    };
+    const auto sample = [&](double u) {
+        const Point p = curve(u);
+        return Sample{u, p, size(p[0], p[1])};
+    };
+    struct Interval {
+        Sample a, b;
+        int depth;
+    };
+    std::vector<double> u{u0}, cumulative{0.0};
+    std::vector<Interval> stack;
+    constexpr int kStart = 64;
+    Sample left = sample(u0);
+    for (int i = 1; i <= kStart; ++i) {
+        const Sample right = sample(i == kStart ? u1 : u0 + (u1 - u0) * i / kStart);
+        // Each start interval is refined, left to right, before the next one.
+        stack.push_back({left, right, 0});
+        while (!stack.empty()) {
+            const Interval in = stack.back();
+            stack.pop_back();
+            const Sample mid = sample(0.5 * (in.a.u + in.b.u));
+            const double length = std::hypot(in.b.p[0] - in.a.p[0], in.b.p[1] - in.a.p[1]);
+            const double smallest = std::min({in.a.s, mid.s, in.b.s});
+            if (in.depth < 40 && length > 0.25 * smallest && mid.u > in.a.u && mid.u < in.b.u) {
+                stack.push_back({mid, in.b, in.depth + 1});
+                stack.push_back({in.a, mid, in.depth + 1});
+                continue;
+            }
+            u.push_back(in.b.u);
+            cumulative.push_back(cumulative.back() + (std::isfinite(mid.s) ? length / mid.s : 0.0));
+        }
+        left = right;
+        check_piece_count(cumulative.back(), curve, u0, size);
+    }
+    const int pieces = std::max(min_pieces, static_cast<int>(std::ceil(cumulative.back() - 1e-9)));
+    return equal_integral_parameters(u, cumulative, pieces, u0, u1);
 }
 
 std::uint64_t edge_key(tri::VertIdx a, tri::VertIdx b) {
@@ -376,13 +439,35 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
     return discretize_domain_boundary(MeshDomain2(pslg, cdt_options), size);
 }
 
+namespace {
+DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& piece_size,
+                           bool adaptive);
+}  // namespace
+
+void restore_input_terms(const DomainBoundary2& boundary, tri::Cdt2Result& mesh) {
+    for (std::uint32_t& s : mesh.piece_segment) s = boundary.piece_segment[s];
+    mesh.input_vertex_count = boundary.input_vertex_count;
+    mesh.merged_into = boundary.cdt.merged_into;
+    mesh.warnings = boundary.cdt.warnings;
+    const std::uint64_t flips = mesh.counters.delaunay_flips;
+    mesh.counters = boundary.cdt.counters;
+    mesh.counters.delaunay_flips += flips;
+}
+
 DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size) {
-    return discretize_domain_boundary(domain,
-                                      [&size](const double*, const double*) { return size; });
+    return discretize(
+        domain, [&size](const double*, const double*) { return size; }, false);
 }
 
 DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain,
                                            const PieceSizeFunction& piece_size) {
+    return discretize(domain, piece_size, true);
+}
+
+namespace {
+
+DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& piece_size,
+                           bool adaptive) {
     const tri::Pslg& pslg = domain.pslg();
     const tri::Cdt2Options& options = domain.domain_options();
     DomainBoundary2 boundary;
@@ -444,8 +529,10 @@ DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain,
         }
         const int samples = static_cast<int>(std::clamp(16 * estimate + 16, 16.0, double{1 << 24}));
         std::vector<Point> points;
-        for (const double t : spaced_parameters(line, 0.0, 1.0, size, 1, samples))
-            points.push_back(line(t));
+        const std::vector<double> parameters =
+            adaptive ? adaptive_spaced_parameters(line, 0.0, 1.0, size, 1)
+                     : spaced_parameters(line, 0.0, 1.0, size, 1, samples);
+        for (const double t : parameters) points.push_back(line(t));
         return points;
     };
     const auto append = [&](std::vector<tri::VertIdx>& chain, const std::vector<Point>& kept) {
@@ -571,5 +658,7 @@ DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain,
     boundary.locator = DomainLocator2(boundary.cdt.mesh);
     return boundary;
 }
+
+}  // namespace
 
 }  // namespace exactmesh::generators

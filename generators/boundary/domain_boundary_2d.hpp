@@ -68,6 +68,12 @@ DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
 /// The same from the domain's triangulation, built once (MeshDomain2::triangulation, copied).
 DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size);
 
+/// A mesh built over the boundary's points and pieces (a new PSLG: the frontal and metric
+/// generators) put back into the input's terms: its pieces' input segments, its vertex count, its
+/// merged duplicates and warnings, and its constrained triangulation's counters (the mesh's own
+/// Delaunay flips added to them).
+void restore_input_terms(const DomainBoundary2& boundary, triangulation::Cdt2Result& mesh);
+
 /// The size along one piece a - b of the domain's boundary: a size that depends on the
 /// direction as well as the position (a metric field's length along the piece, issue 14).
 using PieceSizeFunction = std::function<SizeFunction(const double* a, const double* b)>;

@@ -430,14 +430,7 @@ FrontalDelaunayResult2 Frontal::run() {
     tri::Cdt2Result mesh = std::move(cdt_).take_result();
     counters_.orient_calls = boundary_.cdt.counters.orient_calls + mesh.counters.orient_calls;
     counters_.incircle_calls = boundary_.cdt.counters.incircle_calls + mesh.counters.incircle_calls;
-    // Back to the input's terms: its vertex count and merges, its segments, its warnings.
-    for (std::uint32_t& s : mesh.piece_segment) s = boundary_.piece_segment[s];
-    mesh.input_vertex_count = boundary_.input_vertex_count;
-    mesh.merged_into = boundary_.cdt.merged_into;
-    mesh.warnings = boundary_.cdt.warnings;
-    const std::uint64_t flips = mesh.counters.delaunay_flips;
-    mesh.counters = boundary_.cdt.counters;
-    mesh.counters.delaunay_flips += flips;
+    restore_input_terms(boundary_, mesh);
     mesh.counters.orient_calls = counters_.orient_calls;
     mesh.counters.incircle_calls = counters_.incircle_calls;
     result.mesh = std::move(mesh);

@@ -185,7 +185,7 @@ MeshRun2 run_delaunay_refinement(const MeshDomain2& domain, const MeshOptions2& 
             std::to_string(result.counters.unsplittable) +
             " bad triangles are too small to split in double precision; left as they are");
     }
-    return {std::move(result.mesh), counter_list(result.counters)};
+    return {std::move(result.mesh), {}, counter_list(result.counters)};
 }
 
 MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& options) {
@@ -196,7 +196,7 @@ MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& options) {
     // The shared budget counts Steiner points; a leaf adds about one vertex.
     quadtree.max_leaves = options.max_steiner_points;
     QuadtreeResult2 result = quadtree_mesh_2d(domain, quadtree);
-    return {std::move(result.mesh), counter_list(result.counters)};
+    return {std::move(result.mesh), {}, counter_list(result.counters)};
 }
 
 MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& options) {
@@ -213,7 +213,7 @@ MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& opti
             "the triangle budget ran out: " + std::to_string(result.counters.closure_triangles) +
             " triangles close the front by its constrained Delaunay triangulation");
     }
-    return {std::move(result.mesh), counter_list(result.counters)};
+    return {std::move(result.mesh), {}, counter_list(result.counters)};
 }
 
 MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
@@ -229,7 +229,7 @@ MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptio
             " front edges were left to the closure (constrained Delaunay, no new points): " +
             std::to_string(result.counters.closure_triangles) + " triangles");
     }
-    return {std::move(result.mesh), counter_list(result.counters)};
+    return {std::move(result.mesh), {}, counter_list(result.counters)};
 }
 
 MeshRun2 run_frontal_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
@@ -239,7 +239,28 @@ MeshRun2 run_frontal_delaunay(const MeshDomain2& domain, const MeshOptions2& opt
     frontal.max_steiner_points = options.max_steiner_points;
     frontal.cdt = options.cdt;
     FrontalDelaunayResult2 result = frontal_delaunay_2d(domain, frontal);
-    return {std::move(result.mesh), counter_list(result.counters)};
+    return {std::move(result.mesh), {}, counter_list(result.counters)};
+}
+
+/// The fill of advancing-layers: frontal Delaunay over the layers' outside.
+tri::Cdt2Result frontal_fill(const MeshDomain2& domain, const SizeFunction& size,
+                             std::uint64_t max_steiner_points) {
+    FrontalDelaunayOptions2 frontal;
+    frontal.size = size;
+    frontal.max_steiner_points = max_steiner_points;
+    return std::move(frontal_delaunay_2d(domain, frontal).mesh);
+}
+
+MeshRun2 run_advancing_layers(const MeshDomain2& domain, const MeshOptions2& options) {
+    check_size_budget(domain, options, false);
+    AdvancingLayersOptions2 layers;
+    layers.layers = options.layers;
+    layers.size = options.size;
+    layers.cdt = options.cdt;
+    layers.max_steiner_points = options.max_steiner_points;
+    layers.fill = &frontal_fill;
+    AdvancingLayersResult2 result = advancing_layers_2d(domain, layers);
+    return {std::move(result.mesh), std::move(result.quads), counter_list(result.counters)};
 }
 
 MeshRun2 run_metric_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
@@ -262,7 +283,7 @@ MeshRun2 run_metric_delaunay(const MeshDomain2& domain, const MeshOptions2& opti
     metric.max_steiner_points = options.max_steiner_points;
     metric.cdt = options.cdt;
     MetricDelaunayResult2 result = metric_delaunay_2d(domain, metric);
-    return {std::move(result.mesh), counter_list(result.counters)};
+    return {std::move(result.mesh), {}, counter_list(result.counters)};
 }
 
 constexpr std::array kGenerators{
@@ -312,9 +333,17 @@ constexpr std::array kGenerators{
                    true,
                    {MeshOption::Size, MeshOption::MaxSteinerPoints, MeshOption::Metric},
                    &run_metric_delaunay},
+    MeshGenerator2{"advancing-layers",
+                   "Pirzadeh/Garimella-Shephard: boundary layers along the walls (hole loops) "
+                   "from --layers, stacks stopped exactly at aspect ratio 1 or a collision, the "
+                   "rest by frontal from the last layer; --quads keeps the layer quadrilaterals",
+                   false,
+                   false,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints, MeshOption::Layers},
+                   &run_advancing_layers},
 };
 
-constexpr std::array<EnumName<MeshOption>, 7> kMeshOptionNames{{
+constexpr std::array<EnumName<MeshOption>, 8> kMeshOptionNames{{
     {"--size", MeshOption::Size},
     {"--min-angle", MeshOption::MinAngle},
     {"--polish-angle", MeshOption::PolishAngle},
@@ -322,6 +351,7 @@ constexpr std::array<EnumName<MeshOption>, 7> kMeshOptionNames{{
     {"regional attributes", MeshOption::RegionAttributes},
     {"region maximum areas", MeshOption::RegionAreas},
     {"--metric", MeshOption::Metric},
+    {"--layers", MeshOption::Layers},
 }};
 
 }  // namespace

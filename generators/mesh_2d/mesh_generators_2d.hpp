@@ -18,6 +18,7 @@
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/sizing/size_function.hpp"
+#include "generators/stretched/advancing_layers_2d.hpp"
 #include "generators/stretched/metric_field_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 
@@ -33,12 +34,17 @@ struct MeshOptions2 {
     triangulation::Cdt2Options cdt;        ///< numbering, recovery of the initial CDT
     /// The metric field of the stretched generators (issue 14: --metric); none otherwise.
     std::optional<MetricField2> metric;
+    /// The boundary layers (advancing-layers only: --layers, --quads).
+    LayerParameters2 layers;
 };
 
 /// A generator's mesh (caller's numbering, pieces, warnings) and its work counters in the order
 /// `--stats` prints them.
 struct MeshRun2 {
     triangulation::Cdt2Result mesh;
+    /// 4·#Q quadrilaterals, counter-clockwise (a mixed mesh: advancing-layers with --quads),
+    /// beside mesh.mesh.triangles and numbered like them; empty for a triangle mesh.
+    std::vector<triangulation::VertIdx> quads;
     std::vector<std::pair<std::string, std::uint64_t>> counters;
 };
 
@@ -53,6 +59,7 @@ enum class MeshOption : std::uint32_t {
     RegionAttributes = 1u << 4,  ///< the regions' attributes, carried to the mesh's triangles
     RegionAreas = 1u << 5,       ///< the regions' maximum areas (the 4th number, > 0)
     Metric = 1u << 6,            ///< MeshOptions2::metric (--metric)
+    Layers = 1u << 7,            ///< MeshOptions2::layers (--layers, --quads)
 };
 
 /// A set of MeshOption.

@@ -214,15 +214,8 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
     }
     counters_.cavity_corrections = cdt_.counters().cavity_corrections;
     MetricDelaunayResult2 result{std::move(cdt_).take_result(), counters_};
-    // Back to the input's terms: its vertex count and merges, its segments, its warnings.
     tri::Cdt2Result& out = result.mesh;
-    for (std::uint32_t& s : out.piece_segment) s = boundary_.piece_segment[s];
-    out.input_vertex_count = boundary_.input_vertex_count;
-    out.merged_into = boundary_.cdt.merged_into;
-    out.warnings = boundary_.cdt.warnings;
-    const std::uint64_t flips = out.counters.delaunay_flips;
-    out.counters = boundary_.cdt.counters;
-    out.counters.delaunay_flips += flips;
+    restore_input_terms(boundary_, out);
     tri::Triangulation2& mesh = out.mesh;
     if (options_.swap && mesh.triangle_count() > 0) {
         // Every vertex's matrix in one common scale: the smallest size of all.

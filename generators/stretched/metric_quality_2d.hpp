@@ -32,7 +32,8 @@ struct MetricQualityReport2 {
     std::uint64_t triangles = 0;
     std::uint64_t edges = 0;
     double length_min = 0, length_median = 0, length_max = 0;  ///< metric edge lengths
-    double unit_length_share = 0;  ///< share of edges with metric length in [1/sqrt 2, sqrt 2]
+    /// share of edges with metric length in [1/sqrt 2, sqrt 2] (to a relative 1e-12: rounding)
+    double unit_length_share = 0;
     double shape_min = 0, shape_median = 0, shape_mean = 0;  ///< mean ratio in the metric
     std::array<std::uint64_t, 18> max_angle_histogram{};     ///< triangles by largest angle
     std::uint64_t above_150_degrees = 0;  ///< triangles with an angle > 150 degrees

@@ -682,13 +682,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
     const tri::Pslg& pslg = domain.pslg();
     tri::Cdt2Result out = tri::constrained_delaunay_2d(
         tri::Pslg{xy, boundary.pieces, pslg.holes, pslg.regions}, domain.domain_options());
-    for (std::uint32_t& s : out.piece_segment) s = boundary.piece_segment[s];
-    out.input_vertex_count = boundary.input_vertex_count;
-    out.merged_into = boundary.cdt.merged_into;
-    out.warnings = boundary.cdt.warnings;
-    const std::uint64_t flips = out.counters.delaunay_flips;
-    out.counters = boundary.cdt.counters;
-    out.counters.delaunay_flips += flips;
+    restore_input_terms(boundary, out);
     tri::Triangulation2& mesh = out.mesh;
     counters.points = mesh.vertex_count();
 

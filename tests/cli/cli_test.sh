@@ -967,6 +967,62 @@ adapt_bad_input() {
   [[ ! -e "$work/a.ele" ]] || fail "adapt: a refused run wrote its output"
 }
 
+# Advancing layers (issue 14): --layers and --quads; the mixed mesh in .vtu and .msh read back by
+# meshio (quads and triangles as printed), the counters of --stats, the quality note; every bad
+# value or combination refused with exit status 2 and one line.
+layers() {
+  run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-5,1.2 --quads \
+    -o "$work/naca.vtu" --stats --quality || return
+  local quads triangles
+  quads=$(awk '/^quads: / { print $2; exit }' "$work/out")
+  triangles=$(awk '/^triangles: / { print $2; exit }' "$work/out")
+  [[ $quads -gt 1000 ]] || fail "layers: $quads quads: $(cat "$work/out")"
+  for counter in stacks layers stopped_aspect_ratio stopped_size stopped_collision \
+    stopped_neighbour stopped_max_layers layer_quads fill_triangles max_wall_aspect_ratio \
+    construct_seconds quality.note quality.quad_max_angle quality.quad_max_aspect_ratio; do
+    grep -Eq "^$counter: " "$work/out" || fail "layers --stats/--quality: no $counter line"
+  done
+  (($(awk '/^max_wall_aspect_ratio: / { print $2 }' "$work/out") >= 1000)) ||
+    fail "layers: the aspect ratio at the wall is below 1000: $(cat "$work/out")"
+  run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-5,1.2 --quads \
+    -o "$work/naca.msh" || return
+  for file in naca.vtu naca.msh; do
+    /usr/bin/python3 -c 'import sys, meshio
+m = meshio.read(sys.argv[1])
+count = {c.type: len(c.data) for c in m.cells}
+assert count.get("quad", 0) == int(sys.argv[2]), count
+assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/$file" "$quads" "$triangles" ||
+      fail "meshio does not read $quads quads and $triangles triangles from $file"
+  done
+  run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2,20 -o "$work/naca.ele" &&
+    ! grep -q '^quads:' "$work/out" || fail "layers: split quads still reported as quads"
+  # A .poly: its hole loop is the wall (no markers); the graded default size for the fill; a
+  # square without a hole has no wall (a warning, the fill alone).
+  printf '8 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0.4 0.4\n6 0.6 0.4\n7 0.6 0.6\n8 0.4 0.6\n8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n1\n1 0.5 0.5\n' >"$work/holed.poly"
+  run 0 mesh "$work/holed.poly" --generator advancing-layers --layers 1e-3,1.2 --quads \
+    -o "$work/holed.msh" --stats &&
+    grep -Eq '^fan_corners: 4$' "$work/out" && grep -Eq '^quads: [1-9]' "$work/out" &&
+    grep -Eq '^2 1 3 [1-9][0-9]*$' "$work/holed.msh" || fail "layers on a .poly: $(cat "$work/out")"
+  printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$work/square.poly"
+  run 0 mesh "$work/square.poly" --generator advancing-layers --layers 1e-3,1.2 -o "$work/square.1.ele" &&
+    grep -q 'no wall' "$work/err" || fail "layers without a wall: no warning: $(cat "$work/err")"
+  expect_error 2 'a \.ele file holds triangles only' \
+    mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2 --quads -o "$work/x.ele"
+  expect_error 2 'first height must be a finite number > 0 \(got 0\)' \
+    mesh --domain naca0012 --generator advancing-layers --layers 0,1.2 -o "$work/x.vtu"
+  expect_error 2 'growth ratio must be in \[1, 10\] \(got 0\.5\)' \
+    mesh --domain naca0012 --generator advancing-layers --layers 1e-4,0.5 -o "$work/x.vtu"
+  expect_error 2 'number of layers must be a whole number' \
+    mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2,0 -o "$work/x.vtu"
+  expect_error 2 'expected FIRST_HEIGHT,GROWTH\[,MAX_LAYERS\]' \
+    mesh --domain naca0012 --generator advancing-layers --layers 1e-4 -o "$work/x.vtu"
+  expect_error 2 'needs --layers' mesh --domain naca0012 --generator advancing-layers -o "$work/x.vtu"
+  expect_error 2 'apply to --generator advancing-layers only, not frontal' \
+    mesh --domain naca0012 --generator frontal --layers 1e-4,1.2 -o "$work/x.vtu"
+  expect_error 2 '--smooth would move the layers' \
+    mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2 --smooth 2 -o "$work/x.vtu"
+}
+
 # `mesh --metric`: the stretched-mesh quality report against an expression or a metric file
 # (.node with 3 attributes M11 M12 M22 and its .ele), for any generator; bad metrics are exit 2
 # with one message naming the file, line and value (or the point), and leave no output.
@@ -1017,13 +1073,36 @@ mesh_metric() {
   [[ ! -e "$work/x.ele" ]] || fail "mesh --metric: a refused run wrote its output"
 }
 
+mesh_metric_delaunay() {
+  # A boundary layer along y = 0 on the NACA 0012 domain: stretched cells, most edges of unit
+  # metric length, the generator's counters and construct_seconds.
+  run 0 mesh --domain naca0012 --generator metric-delaunay -o "$work/md.vtu" --stats --quality \
+    --metric '400;0;1/(0.0005+0.3*abs(y))^2' || return
+  grep -Eq '^quality.metric_edge_length: .* edges, (9[0-9]|100)\.[0-9]+% in \[1/sqrt2, sqrt2\]\)$' "$work/out" ||
+    fail "unit edges: $(grep metric_edge "$work/out")"
+  grep -Eq '^quality.aspect_ratio: min [0-9.]+ median [0-9.]+ max ([1-9][0-9]{2,})\.' "$work/out" ||
+    fail "no stretched cells: $(grep aspect_ratio "$work/out")"
+  for counter in boundary_points passes proposals too_close inserted rejected cavity_corrections swaps swap_budget_hits; do
+    grep -Eq "^$counter: [0-9]+$" "$work/out" || fail "no $counter: $(cat "$work/out")"
+  done
+  grep -Eq '^construct_seconds: [0-9.]+$' "$work/out" || fail "no construct_seconds"
+  [[ -s "$work/md.vtu" ]] || fail "no .vtu written"
+  # Without --metric it meshes to the size's isotropic metric; with neither, the default size.
+  run 0 mesh --domain key --generator metric-delaunay -o "$work/k.ele" --size 0.1 --quality || return
+  grep -Eq '^quality.min_angle: ' "$work/out" || fail "no quality report: $(cat "$work/out")"
+  # A metric asking for far too many triangles is refused at once, naming its estimate.
+  expect_error 2 "the metric \(expression 1e16;0;1e16\) asks for about .* triangles" \
+    mesh --domain key --generator metric-delaunay -o "$work/x.ele" --metric '1e16;0;1e16'
+  [[ ! -e "$work/x.ele" ]] || fail "a refused run wrote its output"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
     swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
-    region_areas | adapt | adapt_bad_input | mesh_metric)
+    region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

@@ -2,7 +2,8 @@
 // One case of fuzz_mesh_generators_2d, decoded once for the target and for the regression
 // tests that replay its saved inputs (tests/regressions/issue_11_*): the PSLG (fuzz_pslg.hpp,
 // 4-byte header), the generator (byte 1 modulo the registry's size), a uniform size of 2^-(byte
-// 2 % 6) times the larger side of the bounding box, and the exact check the generator promises.
+// 2 % 6) times the larger side of the bounding box (and, for a generator that takes a metric, a
+// constant stretched metric from the rest of byte 2), and the exact check the generator promises.
 #pragma once
 
 #include <algorithm>
@@ -46,8 +47,22 @@ inline std::optional<MeshGeneratorCase> decode_mesh_generator_case(
     const double extent = std::max(x1 - x0, y1 - y0);
     c.size = std::ldexp(std::isfinite(extent) && extent > 0 ? extent : 1.0, -(data[2] % 6));
     c.options.max_steiner_points = max_steiner_points;
-    if (std::isfinite(c.size) && c.size > 0)
+    if (std::isfinite(c.size) && c.size > 0) {
         c.options.size = generators::SizeFunction::uniform(c.size);
+        // A generator that takes a metric (metric-delaunay) gets a constant stretched one from
+        // the rest of byte 2: sizes `size` and size / 2^(k % 7), the first along the angle
+        // (k / 7) pi / 7, k = byte 2 / 6.
+        if (c.generator->honours.contains(generators::MeshOption::Metric)) {
+            const int k = data[2] / 6;
+            const double angle = (k / 7) * 3.141592653589793 / 7;
+            generators::Metric2 m;
+            m.h1 = c.size;
+            m.h2 = std::ldexp(c.size, -(k % 7));
+            m.c = std::cos(angle);
+            m.s = std::sin(angle);
+            if (std::isnormal(m.h2)) c.options.metric = generators::MetricField2::uniform(m);
+        }
+    }
     return c;
 }
 

@@ -111,6 +111,41 @@ TEST(Io_MeshWriters, VtuListsPointsCellsOffsetsAndNodeNumbers) {
     EXPECT_EQ(vtu.substr(vtu.size() - 11), "</VTKFile>\n");
 }
 
+// A mixed mesh (advancing layers with --quads): the square as one quadrilateral beside two
+// triangles of a neighbouring square. VTK: quads after the triangles, offsets growing by 4,
+// type 9 (VTK_QUAD); Gmsh: two element blocks, triangles (type 2) then quadrangles (type 3),
+// tags running on.
+TEST(Io_MeshWriters, QuadrilateralsAreVtkQuadsAndGmshQuadrangles) {
+    const std::vector<double> xy{0, 0, 1, 0, 1, 1, 0, 1, 2, 0, 2, 1};
+    const std::vector<io::VertIdx> triangles{1, 4, 5, 1, 5, 2};
+    const std::vector<io::VertIdx> quads{0, 1, 2, 3};
+    const std::string vtu = io::format_vtu(xy, triangles, 0, {}, quads);
+    EXPECT_NE(vtu.find("NumberOfPoints=\"6\" NumberOfCells=\"3\""), std::string::npos);
+    EXPECT_NE(vtu.find("Name=\"connectivity\" format=\"ascii\">\n1 4 5\n1 5 2\n0 1 2 3\n"),
+              std::string::npos);
+    EXPECT_NE(vtu.find("Name=\"offsets\" format=\"ascii\">\n3\n6\n10\n"), std::string::npos);
+    EXPECT_NE(vtu.find("Name=\"types\" format=\"ascii\">\n5\n5\n9\n"), std::string::npos);
+    const std::vector<std::string> msh = lines_of(io::format_msh(xy, triangles, {}, quads));
+    std::size_t elements = 0;
+    while (elements < msh.size() && msh[elements] != "$Elements") ++elements;
+    ASSERT_LT(elements + 7, msh.size());
+    EXPECT_EQ(msh[elements + 1], "2 3 1 3");
+    EXPECT_EQ(msh[elements + 2], "2 1 2 2");
+    EXPECT_EQ(msh[elements + 3], "1 2 5 6");
+    EXPECT_EQ(msh[elements + 4], "2 2 6 3");
+    EXPECT_EQ(msh[elements + 5], "2 1 3 1");
+    EXPECT_EQ(msh[elements + 6], "3 1 2 3 4");
+    EXPECT_EQ(msh[elements + 7], "$EndElements");
+    // Quadrilaterals alone: one block.
+    const std::vector<std::string> only = lines_of(io::format_msh(xy, {}, {}, quads));
+    std::size_t at = 0;
+    while (at < only.size() && only[at] != "$Elements") ++at;
+    ASSERT_LT(at + 4, only.size());
+    EXPECT_EQ(only[at + 1], "1 1 1 1");
+    EXPECT_EQ(only[at + 2], "2 1 3 1");
+    EXPECT_EQ(only[at + 3], "1 1 2 3 4");
+}
+
 // The field at the vertices: Gmsh's $NodeData after $Elements (one string tag, the view name
 // "u"; one real tag, the time; three integer tags: time step, components, node count; then
 // "tag value" per node), VTK's point array "u" (the active scalars); none when not given.

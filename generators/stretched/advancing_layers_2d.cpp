@@ -1,0 +1,1107 @@
+// SPDX-License-Identifier: MIT
+// Advancing layers (see advancing_layers_2d.hpp): the walls and their stacks (LayerBuilder::
+// find_walls), the layers one after another with exact conflict resolution (advance,
+// resolve_conflicts, commit), then the front, the fill and the merge (advancing_layers_2d).
+#include "generators/stretched/advancing_layers_2d.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <unordered_map>
+
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
+#include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "predicates/angle_comparisons_2d.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/power_of_two.hpp"
+
+namespace exactmesh::generators {
+
+namespace tri = exactmesh::triangulation;
+namespace pred = exactmesh::predicates;
+using tri::kNone;
+using tri::VertIdx;
+
+/// The id of a probe's far end (segments_conflict): no vertex has it.
+constexpr VertIdx kProbe = kNone - 1;
+
+void validate_layer_parameters(const LayerParameters2& layers) {
+    if (!(layers.first_height > 0) || !std::isfinite(layers.first_height)) {
+        throw InputError("--layers: the first height must be a finite number > 0 (got " +
+                         format_number(layers.first_height) + ")");
+    }
+    if (!(layers.growth >= 1 && layers.growth <= 10)) {
+        throw InputError("--layers: the growth ratio must be in [1, 10] (got " +
+                         format_number(layers.growth) + ")");
+    }
+    if (layers.max_layers < 1 || layers.max_layers > kMaxLayers) {
+        throw InputError("--layers: the number of layers must be in [1, " +
+                         std::to_string(kMaxLayers) + "] (got " +
+                         std::to_string(layers.max_layers) + ")");
+    }
+}
+
+LayerParameters2 parse_layer_parameters(std::string_view text) {
+    LayerParameters2 layers;
+    std::vector<std::string_view> fields;
+    for (std::size_t start = 0;;) {
+        const std::size_t comma = text.find(',', start);
+        fields.push_back(text.substr(start, comma - start));
+        if (comma == std::string_view::npos) break;
+        start = comma + 1;
+    }
+    const std::string quoted = "--layers '" + std::string(text) + "'";
+    if (fields.size() < 2 || fields.size() > 3) {
+        throw InputError(quoted + ": expected FIRST_HEIGHT,GROWTH[,MAX_LAYERS]");
+    }
+    const auto number = [&](std::string_view field, const char* what) {
+        double value = 0;
+        const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+        if (error != std::errc{} || end != field.data() + field.size() || field.empty())
+            throw InputError(quoted + ": the " + what + " '" + std::string(field) +
+                             "' is not a number");
+        return value;
+    };
+    layers.first_height = number(fields[0], "first height");
+    layers.growth = number(fields[1], "growth");
+    if (fields.size() == 3) {
+        const double count = number(fields[2], "number of layers");
+        if (!(count >= 1 && count <= kMaxLayers) || count != std::floor(count)) {
+            throw InputError(quoted + ": the number of layers must be a whole number in [1, " +
+                             std::to_string(kMaxLayers) + "]");
+        }
+        layers.max_layers = static_cast<std::uint32_t>(count);
+    }
+    validate_layer_parameters(layers);
+    return layers;
+}
+
+std::vector<std::pair<std::string, std::uint64_t>> counter_list(
+    const AdvancingLayersCounters2& counters) {
+    return counters_by_name(kAdvancingLayersCounterNames, counters);
+}
+
+namespace {
+
+struct Vec {
+    double x = 0, y = 0;
+};
+
+/// The unit vector of (x, y), computed on the vector scaled by a power of two (exact under
+/// 2^k scaling of the input; no overflow or underflow at 2^+-600).
+Vec unit(double x, double y) {
+    const double length = pred::scale_free_norm(x, y);
+    if (length == 0) return {0, 0};
+    return {x / length, y / length};
+}
+
+double distance(const double* a, const double* b) {
+    return pred::scale_free_norm(b[0] - a[0], b[1] - a[1]);
+}
+
+/// A bucket grid over the plane for the crossing tests: items (segments, points) are kept in
+/// every cell their bounding box meets, so two items whose boxes meet share a cell. It only
+/// chooses which pairs are tested; every decision is exact.
+class BucketGrid {
+  public:
+    BucketGrid(double x0, double y0, double cell) : x0_(x0), y0_(y0), cell_(cell) {}
+
+    void insert(std::uint32_t item, const double* a, const double* b) {
+        const Box box = box_of(a, b);
+        if (box.cells() > kLargeBox) {
+            large_.push_back(item);
+            return;
+        }
+        for (std::int64_t i = box.i0; i <= box.i1; ++i)
+            for (std::int64_t j = box.j0; j <= box.j1; ++j) cells_[key(i, j)].push_back(item);
+    }
+
+    /// Calls visit(item) for every item whose cells meet the box of (a, b), possibly twice.
+    template <class Visit>
+    void query(const double* a, const double* b, Visit&& visit) const {
+        for (const std::uint32_t item : large_) visit(item);
+        const Box box = box_of(a, b);
+        if (box.cells() > kLargeBox) {
+            for (const auto& [k, items] : cells_)
+                for (const std::uint32_t item : items) visit(item);
+            return;
+        }
+        for (std::int64_t i = box.i0; i <= box.i1; ++i) {
+            for (std::int64_t j = box.j0; j <= box.j1; ++j) {
+                const auto found = cells_.find(key(i, j));
+                if (found == cells_.end()) continue;
+                for (const std::uint32_t item : found->second) visit(item);
+            }
+        }
+    }
+
+    void clear() {
+        cells_.clear();
+        large_.clear();
+    }
+
+  private:
+    static constexpr std::int64_t kLargeBox = 4096;
+    struct Box {
+        std::int64_t i0, i1, j0, j1;
+        std::int64_t cells() const { return (i1 - i0 + 1) * (j1 - j0 + 1); }
+    };
+    std::int64_t index(double value, double origin) const {
+        // Monotone in value, so overlapping boxes give overlapping cell ranges.
+        const double t = std::floor((value - origin) / cell_);
+        return static_cast<std::int64_t>(std::clamp(t, -1e9, 1e9));
+    }
+    Box box_of(const double* a, const double* b) const {
+        return {index(std::min(a[0], b[0]), x0_), index(std::max(a[0], b[0]), x0_),
+                index(std::min(a[1], b[1]), y0_), index(std::max(a[1], b[1]), y0_)};
+    }
+    static std::uint64_t key(std::int64_t i, std::int64_t j) {
+        return (static_cast<std::uint64_t>(i + (1ll << 31)) << 32) ^
+               static_cast<std::uint64_t>(j + (1ll << 31));
+    }
+    double x0_, y0_, cell_;
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+    std::vector<std::uint32_t> large_;
+};
+
+/// Whether the closed segments (a, b) and (c, d), collinear, overlap (coordinates compared
+/// exactly: on a line, overlapping boxes mean overlapping segments).
+bool collinear_overlap(const double* a, const double* b, const double* c, const double* d) {
+    for (int axis = 0; axis < 2; ++axis) {
+        if (std::max(a[axis], b[axis]) < std::min(c[axis], d[axis]) ||
+            std::max(c[axis], d[axis]) < std::min(a[axis], b[axis]))
+            return false;
+    }
+    return true;
+}
+
+/// Whether segments (a, b) and (c, d), given with their vertex ids, meet anywhere but at a
+/// shared end: a crossing, a touch, or an overlap from a shared end. Exact.
+bool segments_conflict(VertIdx ia, VertIdx ib, VertIdx ic, VertIdx id, const double* a,
+                       const double* b, const double* c, const double* d) {
+    const bool shares_a = ia == ic || ia == id, shares_b = ib == ic || ib == id;
+    if (shares_a && shares_b) return false;  // the same segment
+    if (shares_a || shares_b) {
+        // Only an overlap along a common line from the shared end.
+        const double* s = shares_a ? a : b;
+        const double* own = shares_a ? b : a;
+        const double* other = (shares_a ? ia : ib) == ic ? d : c;
+        return pred::orient2d(s, own, other) == pred::Sign::Zero &&
+               pred::direction_dot_sign(s, own, s, other) == pred::Sign::Positive;
+    }
+    const int o1 = static_cast<int>(pred::orient2d(a, b, c));
+    const int o2 = static_cast<int>(pred::orient2d(a, b, d));
+    if (o1 * o2 > 0) return false;
+    const int o3 = static_cast<int>(pred::orient2d(c, d, a));
+    const int o4 = static_cast<int>(pred::orient2d(c, d, b));
+    if (o3 * o4 > 0) return false;
+    if (o1 == 0 && o2 == 0) return collinear_overlap(a, b, c, d);
+    return true;
+}
+
+/// A boundary loop of the domain with the domain on its left.
+using Loop = std::vector<VertIdx>;
+
+/// The boundary loops of the domain's triangulation (edges with no neighbour), each with the
+/// domain on its left; loops through a vertex where the boundary pinches (two outgoing
+/// boundary edges) are left out (they are not simple).
+std::vector<Loop> boundary_loops(const tri::Triangulation2& mesh) {
+    std::vector<VertIdx> next(mesh.vertex_count(), kNone);
+    std::vector<std::uint8_t> pinched(mesh.vertex_count(), 0);
+    for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t) {
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            if (mesh.neighbors[3 * t + k] != kNone) continue;
+            const VertIdx a = mesh.triangles[3 * t + k], b = mesh.triangles[3 * t + (k + 1) % 3];
+            if (next[a] != kNone) pinched[a] = 1;
+            next[a] = b;
+        }
+    }
+    std::vector<Loop> loops;
+    std::vector<std::uint8_t> seen(next.size(), 0);
+    for (VertIdx v = 0; v < next.size(); ++v) {
+        if (next[v] == kNone || seen[v] || pinched[v]) continue;
+        Loop loop;
+        bool simple = true;
+        for (VertIdx u = v; !seen[u]; u = next[u]) {
+            seen[u] = 1;
+            if (pinched[u]) simple = false;
+            loop.push_back(u);
+            if (pinched[u]) break;
+        }
+        if (simple) loops.push_back(std::move(loop));
+    }
+    return loops;
+}
+
+/// Whether a simple loop runs clockwise: the turn at its lowest-then-leftmost vertex (a convex
+/// corner of its hull) decides it, exactly.
+bool clockwise(const Loop& loop, const std::vector<double>& xy) {
+    std::size_t lowest = 0;
+    for (std::size_t k = 1; k < loop.size(); ++k) {
+        const double* p = &xy[2 * loop[k]];
+        const double* q = &xy[2 * loop[lowest]];
+        if (p[1] < q[1] || (p[1] == q[1] && p[0] < q[0])) lowest = k;
+    }
+    const std::size_t n = loop.size();
+    return pred::orient2d(&xy[2 * loop[(lowest + n - 1) % n]], &xy[2 * loop[lowest]],
+                          &xy[2 * loop[(lowest + 1) % n]]) == pred::Sign::Negative;
+}
+
+enum class Stop : std::uint8_t { Active, AspectRatio, Size, Collision, Neighbour, MaxLayers };
+
+struct Stack {
+    VertIdx base = kNone;
+    Vec direction;
+    double wall_spacing = 0;
+    std::uint32_t prev = 0, next = 0;  ///< neighbouring stacks on the same loop
+    std::vector<VertIdx> points;       ///< points[k]: layer k (points[0] = base)
+    Stop stop = Stop::Active;
+    VertIdx top() const { return points.back(); }
+    std::uint32_t layers() const { return static_cast<std::uint32_t>(points.size() - 1); }
+};
+
+/// A cell of the layers: a triangle (d == kNone) or a quadrilateral, counter-clockwise.
+struct Cell {
+    std::array<VertIdx, 4> v{kNone, kNone, kNone, kNone};
+    bool is_quad() const { return v[3] != kNone; }
+};
+
+/// A segment of the layers or of the domain, by its end vertices.
+struct Segment {
+    VertIdx a, b;
+};
+
+class LayerBuilder {
+  public:
+    LayerBuilder(const tri::Cdt2Result& domain, const LayerParameters2& parameters,
+                 const SizeFunction& size, AdvancingLayersCounters2& counters)
+        : domain_(domain),
+          parameters_(parameters),
+          size_(size),
+          counters_(counters),
+          xy_(domain.mesh.xy) {}
+
+    void build() {
+        find_walls();
+        if (stacks_.empty()) return;
+        make_grids();
+        advance();
+    }
+
+    std::vector<double>& xy() { return xy_; }
+    const std::vector<Stack>& stacks() const { return stacks_; }
+    const std::vector<Cell>& cells() const { return cells_; }
+    const std::vector<Loop>& wall_loops() const { return walls_; }
+    const std::vector<std::vector<std::uint32_t>>& loop_stacks() const { return loop_stacks_; }
+    bool is_wall_piece(VertIdx a, VertIdx b) const {
+        return wall_edges_.count(edge_key(a, b)) != 0;
+    }
+
+  private:
+    static std::uint64_t edge_key(VertIdx a, VertIdx b) {
+        return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+    }
+    const double* point(VertIdx v) const {
+        return v >= provisional_base_ ? &candidate_xy_[2 * (v - provisional_base_)]
+                                      : &xy_[2 * static_cast<std::size_t>(v)];
+    }
+
+    void find_walls() {
+        const tri::Triangulation2& mesh = domain_.mesh;
+        for (Loop& loop : boundary_loops(mesh)) {
+            if (loop.size() < 3 || !clockwise(loop, xy_)) continue;
+            for (std::size_t k = 0; k < loop.size(); ++k)
+                wall_edges_.insert({edge_key(loop[k], loop[(k + 1) % loop.size()]), 1});
+            walls_.push_back(std::move(loop));
+        }
+        counters_.wall_loops = walls_.size();
+        constexpr double kCornerAngle = std::numbers::pi / 4;  // beyond it: a fan or a merge
+        constexpr double kFanStep = std::numbers::pi / 6;      // the angle between fan stacks
+        for (const Loop& loop : walls_) {
+            const std::size_t n = loop.size();
+            counters_.wall_vertices += n;
+            const auto first = static_cast<std::uint32_t>(stacks_.size());
+            for (std::size_t k = 0; k < n; ++k) {
+                const double* p = &xy_[2 * loop[(k + n - 1) % n]];
+                const double* v = &xy_[2 * loop[k]];
+                const double* q = &xy_[2 * loop[(k + 1) % n]];
+                // The left normals of the two pieces (the domain is on the left).
+                const Vec n1{-(v[1] - p[1]), v[0] - p[0]}, n2{-(q[1] - v[1]), q[0] - v[0]};
+                const Vec u1 = unit(n1.x, n1.y), u2 = unit(n2.x, n2.y);
+                const double turn =
+                    std::atan2(u1.x * u2.y - u1.y * u2.x, u1.x * u2.x + u1.y * u2.y);
+                const pred::Sign side = pred::orient2d(p, v, q);
+                const double spacing = 0.5 * distance(p, v) + 0.5 * distance(v, q);
+                std::vector<Vec> directions;
+                if (side == pred::Sign::Negative && std::fabs(turn) > kCornerAngle) {
+                    // A convex corner of the wall: the domain's angle exceeds 180 degrees; a
+                    // fan of normals turning from the first piece's to the second's.
+                    ++counters_.fan_corners;
+                    const int pieces = static_cast<int>(std::ceil(std::fabs(turn) / kFanStep));
+                    for (int j = 0; j <= pieces; ++j) {
+                        const double angle = turn * j / pieces;
+                        const double c = std::cos(angle), s = std::sin(angle);
+                        directions.push_back(unit(c * u1.x - s * u1.y, s * u1.x + c * u1.y));
+                    }
+                } else if (side == pred::Sign::Positive && std::fabs(turn) > kCornerAngle) {
+                    // A concave corner: one stack along the bisector of the unit normals.
+                    ++counters_.merged_corners;
+                    directions.push_back(unit(u1.x + u2.x, u1.y + u2.y));
+                } else {
+                    // The length (area) weighted mean of the two normals.
+                    directions.push_back(unit(n1.x + n2.x, n1.y + n2.y));
+                }
+                for (const Vec& d : directions) {
+                    Stack stack;
+                    stack.base = loop[k];
+                    stack.direction = d;
+                    stack.wall_spacing = spacing;
+                    stack.points.push_back(loop[k]);
+                    stacks_.push_back(std::move(stack));
+                }
+            }
+            const auto last = static_cast<std::uint32_t>(stacks_.size());
+            std::vector<std::uint32_t> members;
+            for (std::uint32_t s = first; s < last; ++s) {
+                stacks_[s].next = s + 1 == last ? first : s + 1;
+                stacks_[s].prev = s == first ? last - 1 : s - 1;
+                members.push_back(s);
+            }
+            loop_stacks_.push_back(std::move(members));
+        }
+        counters_.stacks = stacks_.size();
+        const double budget = static_cast<double>(stacks_.size()) * parameters_.max_layers;
+        if (budget + static_cast<double>(xy_.size() / 2) > static_cast<double>(tri::kMaxPoints)) {
+            throw InputError("advancing layers: " + std::to_string(stacks_.size()) +
+                             " stacks of up to " + std::to_string(parameters_.max_layers) +
+                             " layers exceed the vertex limit; give fewer layers");
+        }
+    }
+
+    void make_grids() {
+        // Cells about the median wall spacing: the layers near the wall fill a few of them.
+        std::vector<double> spacings;
+        for (const Stack& s : stacks_) spacings.push_back(s.wall_spacing);
+        std::nth_element(spacings.begin(), spacings.begin() + spacings.size() / 2, spacings.end());
+        double cell = spacings[spacings.size() / 2];
+        double x0 = xy_[0], y0 = xy_[1], x1 = x0, y1 = y0;
+        for (std::size_t v = 0; v < xy_.size() / 2; ++v) {
+            x0 = std::min(x0, xy_[2 * v]);
+            x1 = std::max(x1, xy_[2 * v]);
+            y0 = std::min(y0, xy_[2 * v + 1]);
+            y1 = std::max(y1, xy_[2 * v + 1]);
+        }
+        // At most about 2^22 cells over the domain's box.
+        const double extent = std::max(x1 - x0, y1 - y0);
+        if (!(cell > 0) || extent / cell > 2048) cell = extent / 2048;
+        if (!(cell > 0)) cell = 1;
+        segment_grid_ = std::make_unique<BucketGrid>(x0, y0, cell);
+        point_grid_ = std::make_unique<BucketGrid>(x0, y0, cell);
+        new_segment_grid_ = std::make_unique<BucketGrid>(x0, y0, cell);
+        new_point_grid_ = std::make_unique<BucketGrid>(x0, y0, cell);
+        cell_grid_ = std::make_unique<BucketGrid>(x0, y0, cell);
+        // Obstacles: every constrained edge of the domain and every vertex in use.
+        const tri::Triangulation2& mesh = domain_.mesh;
+        for (std::size_t p = 0; p < domain_.pieces.size() / 2; ++p)
+            add_segment({domain_.pieces[2 * p], domain_.pieces[2 * p + 1]});
+        std::vector<std::uint8_t> used(mesh.vertex_count(), 0);
+        for (const VertIdx v : mesh.triangles) used[v] = 1;
+        for (VertIdx v = 0; v < used.size(); ++v) {
+            if (used[v]) point_grid_->insert(v, point(v), point(v));
+        }
+    }
+
+    void add_segment(Segment s) {
+        segments_.push_back(s);
+        segment_grid_->insert(static_cast<std::uint32_t>(segments_.size() - 1), point(s.a),
+                              point(s.b));
+    }
+
+    /// One layer after another until every stack has stopped.
+    void advance() {
+        const double h = parameters_.first_height, g = parameters_.growth;
+        double sum = 0, power = 1;  // 1 + g + ... + g^(k-1) and g^k
+        std::vector<Vec> smoothed(stacks_.size());
+        for (std::uint32_t k = 0;; ++k) {
+            const double thickness = h * power;  // of layer k + 1, from layer k
+            sum += power;
+            power *= g;
+            const double height = h * sum;
+            // Directions: none smoothed for the first layer, then each averaged with its
+            // neighbours' a little more at each layer (up to half and half).
+            if (k > 0) {
+                const double w = std::min(0.5, 0.05 * k);
+                for (std::size_t s = 0; s < stacks_.size(); ++s) {
+                    const Vec a = stacks_[stacks_[s].prev].direction,
+                              b = stacks_[stacks_[s].next].direction, d = stacks_[s].direction;
+                    smoothed[s] = unit((1 - w) * d.x + 0.5 * w * (a.x + b.x),
+                                       (1 - w) * d.y + 0.5 * w * (a.y + b.y));
+                }
+                for (std::size_t s = 0; s < stacks_.size(); ++s) stacks_[s].direction = smoothed[s];
+            }
+            // The candidate points, each from its wall vertex, rounded once.
+            provisional_base_ = static_cast<VertIdx>(xy_.size() / 2);
+            candidate_xy_.assign(2 * stacks_.size(), 0);
+            probe_xy_.assign(2 * stacks_.size(), 0);
+            for (std::size_t s = 0; s < stacks_.size(); ++s) {
+                const double* p = &xy_[2 * static_cast<std::size_t>(stacks_[s].base)];
+                candidate_xy_[2 * s] = std::fma(height, stacks_[s].direction.x, p[0]);
+                candidate_xy_[2 * s + 1] = std::fma(height, stacks_[s].direction.y, p[1]);
+            }
+            // The probe: the normal continued beyond the candidate by the larger of the new
+            // thickness and half the tangential spacing, so that a stack stops short of an
+            // opposing front or boundary ("near", not on it) and leaves the fill room for
+            // triangles about as wide as the layer's cells.
+            for (std::size_t s = 0; s < stacks_.size(); ++s) {
+                const double* p = &xy_[2 * static_cast<std::size_t>(stacks_[s].base)];
+                const double probe =
+                    height +
+                    std::max(thickness, 0.5 * tangential_spacing(static_cast<std::uint32_t>(s)));
+                probe_xy_[2 * s] = std::fma(probe, stacks_[s].direction.x, p[0]);
+                probe_xy_[2 * s + 1] = std::fma(probe, stacks_[s].direction.y, p[1]);
+            }
+            std::vector<std::uint8_t> candidate(stacks_.size(), 0);
+            bool any = false;
+            for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+                Stack& stack = stacks_[s];
+                if (stack.stop != Stop::Active) continue;
+                if (k >= parameters_.max_layers) {
+                    stop(s, Stop::MaxLayers);
+                    continue;
+                }
+                // Tangential spacing: the larger of the wall's and the new layer's (the mean
+                // distance to the neighbours' candidates); the cell's aspect ratio is that over
+                // the new layer's thickness.
+                const double* q = &candidate_xy_[2 * s];
+                if (tangential_spacing(s) <= thickness) {
+                    stop(s, Stop::AspectRatio);
+                    continue;
+                }
+                // Where the stacks diverge (convex walls, fans) the width grows with the height
+                // and the aspect ratio may never fall to 1: a given size ends them where the
+                // new layer would be thicker than it (the fill's cells take over there).
+                if (size_.bounded() && thickness >= size_(q[0], q[1])) {
+                    stop(s, Stop::Size);
+                    continue;
+                }
+                candidate[s] = 1;
+                any = true;
+            }
+            if (!any) break;
+            // A stack may not rise more than two layers above a stopped neighbour.
+            for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+                if (!candidate[s]) continue;
+                for (const std::uint32_t j : {stacks_[s].prev, stacks_[s].next}) {
+                    if (!candidate[j] && stacks_[j].layers() + 2 < k + 1) {
+                        candidate[s] = 0;
+                        stop(s, Stop::Neighbour);
+                        break;
+                    }
+                }
+            }
+            resolve_conflicts(candidate, k == 0);
+            commit(candidate);
+        }
+    }
+
+    /// In a fan (stacks sharing a wall vertex, consecutive), the stacks that stay at the wall
+    /// must be consecutive: a stack rising between two that stay would make the front pass
+    /// twice through the wall vertex and cut the cells between off the layers' hole. Drops
+    /// every candidate between the fan's first and last stack that stays.
+    void drop_pinching_fan_stacks(const std::vector<std::uint8_t>& candidate,
+                                  std::vector<std::uint8_t>& drop) const {
+        for (std::uint32_t first = 0; first < stacks_.size();) {
+            std::uint32_t end = first + 1;
+            while (end < stacks_.size() && stacks_[end].base == stacks_[first].base) ++end;
+            std::uint32_t low = kNone, high = kNone;
+            for (std::uint32_t s = first; s < end; ++s) {
+                if (candidate[s] && !drop[s]) continue;
+                if (low == kNone) low = s;
+                high = s;
+            }
+            if (low != kNone)
+                for (std::uint32_t s = low + 1; s < high; ++s) drop[s] = 1;
+            first = end;
+        }
+    }
+
+    /// The tangential spacing at stack s's candidate: the larger of the wall's and the mean
+    /// distance to its neighbours' candidates.
+    double tangential_spacing(std::uint32_t s) const {
+        const Stack& stack = stacks_[s];
+        const double* q = &candidate_xy_[2 * s];
+        const double width = 0.5 * distance(q, &candidate_xy_[2 * stack.prev]) +
+                             0.5 * distance(q, &candidate_xy_[2 * stack.next]);
+        return std::max(width, stack.wall_spacing);
+    }
+
+    void stop(std::uint32_t s, Stop why) {
+        stacks_[s].stop = why;
+        switch (why) {
+            case Stop::AspectRatio:
+                ++counters_.stopped_aspect_ratio;
+                break;
+            case Stop::Size:
+                ++counters_.stopped_size;
+                break;
+            case Stop::Collision:
+                ++counters_.stopped_collision;
+                break;
+            case Stop::Neighbour:
+                ++counters_.stopped_neighbour;
+                break;
+            case Stop::MaxLayers:
+                ++counters_.stopped_max_layers;
+                break;
+            case Stop::Active:
+                break;
+        }
+    }
+
+    VertIdx candidate_id(std::uint32_t s) const { return provisional_base_ + s; }
+
+    /// The new segments and cells of the candidates, with their owners.
+    struct Proposal {
+        std::vector<Segment> segments;
+        std::vector<std::array<std::uint32_t, 2>> segment_owners;
+        std::vector<Cell> cells;
+        std::vector<std::array<std::uint32_t, 2>> cell_owners;
+        std::vector<std::uint32_t> blocked;  ///< candidates that cannot rise at all
+    };
+
+    Proposal propose(const std::vector<std::uint8_t>& candidate) const {
+        Proposal p;
+        for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+            const Stack& stack = stacks_[s];
+            const std::uint32_t j = stack.next;
+            if (candidate[s]) {
+                p.segments.push_back({stack.top(), candidate_id(s)});
+                p.segment_owners.push_back({s, kNone});
+            }
+            // The cell between s and its next stack j, and the outer edge over it.
+            if (candidate[s] && candidate[j]) {
+                p.segments.push_back({candidate_id(s), candidate_id(j)});
+                p.segment_owners.push_back({s, j});
+                Cell c;
+                if (stack.top() == stacks_[j].top()) {  // the first layer of a fan
+                    c.v = {stack.top(), candidate_id(j), candidate_id(s), kNone};
+                } else {
+                    c.v = {stack.top(), stacks_[j].top(), candidate_id(j), candidate_id(s)};
+                }
+                p.cells.push_back(c);
+                p.cell_owners.push_back({s, j});
+            } else if (candidate[s] || candidate[j]) {
+                const std::uint32_t riser = candidate[s] ? s : j;
+                const VertIdx low = stacks_[riser].top(), high = candidate_id(riser);
+                const VertIdx other = stacks_[candidate[s] ? j : s].top();
+                if (other == low) continue;  // a fan's wall vertex: nothing to close
+                if (other == stacks_[riser].base) {
+                    // A fan neighbour left at the shared wall vertex: the step triangle would
+                    // have its three corners on the riser's own normal line.
+                    p.blocked.push_back(riser);
+                    continue;
+                }
+                if (candidate[s]) {
+                    p.segments.push_back({high, other});
+                    p.cells.push_back({{low, other, high, kNone}});
+                } else {
+                    p.segments.push_back({other, high});
+                    p.cells.push_back({{other, low, high, kNone}});
+                }
+                p.segment_owners.push_back({riser, kNone});
+                p.cell_owners.push_back({riser, kNone});
+            }
+        }
+        return p;
+    }
+
+    /// Whether point v lies in the closed cell (and is none of its corners).
+    bool cell_contains(const Cell& c, VertIdx v) {
+        const int corners = c.is_quad() ? 4 : 3;
+        for (int k = 0; k < corners; ++k)
+            if (c.v[k] == v) return false;
+        ++counters_.crossing_tests;
+        for (int k = 0; k < corners; ++k) {
+            if (pred::orient2d(point(c.v[k]), point(c.v[(k + 1) % corners]), point(v)) ==
+                pred::Sign::Negative)
+                return false;
+        }
+        return true;
+    }
+
+    bool cell_valid(const Cell& c) const {
+        const int corners = c.is_quad() ? 4 : 3;
+        for (int k = 0; k < corners; ++k) {
+            if (pred::orient2d(point(c.v[k]), point(c.v[(k + 1) % corners]),
+                               point(c.v[(k + 2) % corners])) != pred::Sign::Positive)
+                return false;
+        }
+        return true;
+    }
+
+    /// Removes candidates until their segments and cells conflict with nothing: each round
+    /// tests every proposal against what is there and against each other, and drops the
+    /// owners of every failure at once (so the outcome does not depend on the order).
+    void resolve_conflicts(std::vector<std::uint8_t>& candidate, bool first_layer) {
+        for (;;) {
+            const Proposal p = propose(candidate);
+            std::vector<std::uint8_t> drop(stacks_.size(), 0);
+            const auto drop_owners = [&](const std::array<std::uint32_t, 2>& owners) {
+                for (const std::uint32_t s : owners)
+                    if (s != kNone) drop[s] = 1;
+            };
+            new_segment_grid_->clear();
+            new_point_grid_->clear();
+            for (std::uint32_t i = 0; i < p.segments.size(); ++i)
+                new_segment_grid_->insert(i, point(p.segments[i].a), point(p.segments[i].b));
+            for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+                if (candidate[s])
+                    new_point_grid_->insert(candidate_id(s), point(candidate_id(s)),
+                                            point(candidate_id(s)));
+            }
+            for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+                if (!candidate[s]) continue;
+                const VertIdx top = stacks_[s].top();
+                const double *a = point(top), *b = &probe_xy_[2 * s];
+                segment_grid_->query(a, b, [&](std::uint32_t other) {
+                    if (drop[s]) return;
+                    const Segment& o = segments_[other];
+                    ++counters_.crossing_tests;
+                    if (segments_conflict(top, kProbe, o.a, o.b, a, b, point(o.a), point(o.b)))
+                        drop[s] = 1;
+                });
+            }
+            for (std::uint32_t i = 0; i < p.segments.size(); ++i) {
+                const Segment& s = p.segments[i];
+                const double *a = point(s.a), *b = point(s.b);
+                bool conflict = false;
+                segment_grid_->query(a, b, [&](std::uint32_t other) {
+                    if (conflict) return;
+                    const Segment& o = segments_[other];
+                    ++counters_.crossing_tests;
+                    conflict = segments_conflict(s.a, s.b, o.a, o.b, a, b, point(o.a), point(o.b));
+                });
+                new_segment_grid_->query(a, b, [&](std::uint32_t other) {
+                    if (other == i) return;
+                    const Segment& o = p.segments[other];
+                    ++counters_.crossing_tests;
+                    if (segments_conflict(s.a, s.b, o.a, o.b, a, b, point(o.a), point(o.b))) {
+                        conflict = true;
+                        drop_owners(p.segment_owners[other]);
+                    }
+                });
+                if (conflict) drop_owners(p.segment_owners[i]);
+            }
+            // A candidate with no cell on either side (its neighbours both stopped at its own
+            // wall vertex: inside a fan) would leave a bare spike in the front.
+            std::vector<std::uint8_t> has_cell(stacks_.size(), 0);
+            for (const auto& owners : p.cell_owners)
+                for (const std::uint32_t s : owners)
+                    if (s != kNone) has_cell[s] = 1;
+            for (std::uint32_t s = 0; s < stacks_.size(); ++s)
+                if (candidate[s] && !has_cell[s]) drop[s] = 1;
+            for (const std::uint32_t s : p.blocked) drop[s] = 1;
+            if (first_layer) drop_pinching_fan_stacks(candidate, drop);
+            for (std::size_t i = 0; i < p.cells.size(); ++i) {
+                const Cell& c = p.cells[i];
+                bool conflict = !cell_valid(c);
+                const int corners = c.is_quad() ? 4 : 3;
+                double lo[2] = {point(c.v[0])[0], point(c.v[0])[1]}, hi[2] = {lo[0], lo[1]};
+                for (int q = 1; q < corners; ++q) {
+                    for (int axis = 0; axis < 2; ++axis) {
+                        lo[axis] = std::min(lo[axis], point(c.v[q])[axis]);
+                        hi[axis] = std::max(hi[axis], point(c.v[q])[axis]);
+                    }
+                }
+                const auto test = [&](std::uint32_t v) {
+                    if (!conflict && cell_contains(c, v)) conflict = true;
+                };
+                if (!conflict) point_grid_->query(lo, hi, test);
+                if (!conflict) new_point_grid_->query(lo, hi, test);
+                if (conflict) drop_owners(p.cell_owners[i]);
+            }
+            // A candidate inside a committed cell (its new edges could start at a corner of
+            // that cell and stay inside it, crossing nothing).
+            for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+                if (!candidate[s] || drop[s]) continue;
+                const double* q = point(candidate_id(s));
+                cell_grid_->query(q, q, [&](std::uint32_t c) {
+                    if (!drop[s] && cell_contains(cells_[c], candidate_id(s))) drop[s] = 1;
+                });
+            }
+            bool dropped = false;
+            for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+                if (drop[s] && candidate[s]) {
+                    candidate[s] = 0;
+                    stop(s, Stop::Collision);
+                    dropped = true;
+                }
+            }
+            if (!dropped) return;
+        }
+    }
+
+    void commit(const std::vector<std::uint8_t>& candidate) {
+        const Proposal p = propose(candidate);
+        // Real ids for the candidates, in stack order.
+        std::vector<VertIdx> id(stacks_.size(), kNone);
+        for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+            if (!candidate[s]) continue;
+            id[s] = static_cast<VertIdx>(xy_.size() / 2);
+            xy_.push_back(candidate_xy_[2 * s]);
+            xy_.push_back(candidate_xy_[2 * s + 1]);
+            ++counters_.layer_points;
+        }
+        const VertIdx provisional = provisional_base_;
+        const auto real = [&](VertIdx v) { return v >= provisional ? id[v - provisional] : v; };
+        provisional_base_ = kNone;
+        for (const Segment& s : p.segments) add_segment({real(s.a), real(s.b)});
+        for (Cell c : p.cells) {
+            for (VertIdx& v : c.v)
+                if (v != kNone) v = real(v);
+            cells_.push_back(c);
+            double lo[2] = {point(c.v[0])[0], point(c.v[0])[1]}, hi[2] = {lo[0], lo[1]};
+            for (const VertIdx v : c.v) {
+                if (v == kNone) continue;
+                for (int axis = 0; axis < 2; ++axis) {
+                    lo[axis] = std::min(lo[axis], point(v)[axis]);
+                    hi[axis] = std::max(hi[axis], point(v)[axis]);
+                }
+            }
+            cell_grid_->insert(static_cast<std::uint32_t>(cells_.size() - 1), lo, hi);
+        }
+        for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
+            if (!candidate[s]) continue;
+            stacks_[s].points.push_back(id[s]);
+            point_grid_->insert(id[s], point(id[s]), point(id[s]));
+            counters_.layers = std::max<std::uint64_t>(counters_.layers, stacks_[s].layers());
+        }
+    }
+
+    const tri::Cdt2Result& domain_;
+    const LayerParameters2& parameters_;
+    const SizeFunction& size_;
+    AdvancingLayersCounters2& counters_;
+    std::vector<double> xy_;
+    std::vector<Loop> walls_;
+    std::unordered_map<std::uint64_t, std::uint8_t> wall_edges_;
+    std::vector<Stack> stacks_;
+    std::vector<std::vector<std::uint32_t>> loop_stacks_;
+    std::vector<Segment> segments_;
+    std::vector<Cell> cells_;
+    std::unique_ptr<BucketGrid> segment_grid_, point_grid_, new_segment_grid_, new_point_grid_,
+        cell_grid_;
+    std::vector<double> candidate_xy_, probe_xy_;
+    VertIdx provisional_base_ = kNone;
+};
+
+/// Splits the strictly convex quadrilateral (v0, v1, v2, v3) by the diagonal whose two
+/// triangles have the smaller largest angle (exact; ties to the diagonal v0-v2).
+void split_quad(const std::array<VertIdx, 4>& v, const std::vector<double>& xy,
+                std::vector<VertIdx>& triangles) {
+    const auto at = [&](int k) { return &xy[2 * static_cast<std::size_t>(v[k])]; };
+    // Diagonal v0-v2: (v0 v1 v2), (v0 v2 v3); diagonal v1-v3: (v0 v1 v3), (v1 v2 v3).
+    const auto worst = [&](int a0, int a1, int a2, int b0, int b1, int b2) {
+        const pred::Corner first = pred::largest_corner(at(a0), at(a1), at(a2));
+        const pred::Corner second = pred::largest_corner(at(b0), at(b1), at(b2));
+        return pred::compare_angles(first, second) == pred::Sign::Negative ? second : first;
+    };
+    const pred::Corner along02 = worst(0, 1, 2, 0, 2, 3);
+    const pred::Corner along13 = worst(0, 1, 3, 1, 2, 3);
+    if (pred::compare_angles(along13, along02) == pred::Sign::Negative) {
+        triangles.insert(triangles.end(), {v[0], v[1], v[3], v[1], v[2], v[3]});
+    } else {
+        triangles.insert(triangles.end(), {v[0], v[1], v[2], v[0], v[2], v[3]});
+    }
+}
+
+/// The triangles' neighbours across their edges (kNone on the boundary and beside a quad).
+std::vector<tri::TriIdx> triangle_neighbors(const std::vector<VertIdx>& triangles) {
+    std::unordered_map<std::uint64_t, std::uint32_t> half;
+    half.reserve(triangles.size());
+    std::vector<tri::TriIdx> neighbors(triangles.size(), kNone);
+    for (std::uint32_t e = 0; e < triangles.size(); ++e) {
+        const VertIdx a = triangles[e], b = triangles[e - e % 3 + (e % 3 + 1) % 3];
+        const auto found = half.find((static_cast<std::uint64_t>(b) << 32) | a);
+        if (found != half.end()) {
+            neighbors[e] = found->second / 3;
+            neighbors[found->second] = e / 3;
+        } else {
+            half[(static_cast<std::uint64_t>(a) << 32) | b] = e;
+        }
+    }
+    return neighbors;
+}
+
+}  // namespace
+
+QuadQuality2 quad_quality_2d(std::span<const double> xy, std::span<const VertIdx> quads) {
+    QuadQuality2 q;
+    q.quads = quads.size() / 4;
+    if (q.quads == 0) return q;
+    q.min_angle = 180;
+    double sum = 0;
+    for (std::size_t c = 0; c < q.quads; ++c) {
+        double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+        for (std::size_t k = 0; k < 4; ++k) {
+            const double* o = &xy[2 * static_cast<std::size_t>(quads[4 * c + k])];
+            const double* p = &xy[2 * static_cast<std::size_t>(quads[4 * c + (k + 1) % 4])];
+            const double* r = &xy[2 * static_cast<std::size_t>(quads[4 * c + (k + 3) % 4])];
+            const Vec u = unit(p[0] - o[0], p[1] - o[1]), v = unit(r[0] - o[0], r[1] - o[1]);
+            const double angle =
+                std::atan2(std::fabs(u.x * v.y - u.y * v.x), u.x * v.x + u.y * v.y) * 180 /
+                std::numbers::pi;
+            q.min_angle = std::min(q.min_angle, angle);
+            q.max_angle = std::max(q.max_angle, angle);
+            const double side = distance(o, p);
+            shortest = std::min(shortest, side);
+            longest = std::max(longest, side);
+        }
+        const double ratio = longest / shortest;
+        q.max_aspect_ratio = std::max(q.max_aspect_ratio, ratio);
+        sum += ratio;
+    }
+    q.mean_aspect_ratio = sum / static_cast<double>(q.quads);
+    return q;
+}
+
+std::string MixedMeshCheck2::summary() const {
+    if (ok()) return "ok";
+    return std::to_string(inverted_triangles.size()) + " inverted triangles, " +
+           std::to_string(nonconvex_quads.size()) + " non-convex quadrilaterals, " +
+           std::to_string(overused_edges.size() / 2) + " edges in more than two cells, " +
+           std::to_string(open_edges.size() / 2) + " open edges off the boundary, " +
+           std::to_string(missing_pieces.size() / 2) + " missing boundary pieces";
+}
+
+MixedMeshCheck2 check_mixed_mesh_2d(std::span<const double> xy, std::span<const VertIdx> triangles,
+                                    std::span<const VertIdx> quads,
+                                    std::span<const VertIdx> pieces) {
+    MixedMeshCheck2 check;
+    const auto at = [&](VertIdx v) { return &xy[2 * static_cast<std::size_t>(v)]; };
+    // Directed edges: each may appear once; an undirected edge once each way at most.
+    std::unordered_map<std::uint64_t, std::uint32_t> directed;
+    const auto add_cell = [&](std::span<const VertIdx> c) {
+        for (std::size_t k = 0; k < c.size(); ++k) {
+            const VertIdx a = c[k], b = c[(k + 1) % c.size()];
+            if (++directed[(static_cast<std::uint64_t>(a) << 32) | b] == 2)
+                check.overused_edges.insert(check.overused_edges.end(), {a, b});
+        }
+    };
+    for (std::uint32_t t = 0; t < triangles.size() / 3; ++t) {
+        const std::span<const VertIdx> c = triangles.subspan(3 * t, 3);
+        if (pred::orient2d(at(c[0]), at(c[1]), at(c[2])) != pred::Sign::Positive)
+            check.inverted_triangles.push_back(t);
+        add_cell(c);
+    }
+    for (std::uint32_t q = 0; q < quads.size() / 4; ++q) {
+        const std::span<const VertIdx> c = quads.subspan(4 * q, 4);
+        for (int k = 0; k < 4; ++k) {
+            if (pred::orient2d(at(c[k]), at(c[(k + 1) % 4]), at(c[(k + 2) % 4])) !=
+                pred::Sign::Positive) {
+                check.nonconvex_quads.push_back(q);
+                break;
+            }
+        }
+        add_cell(c);
+    }
+    std::unordered_map<std::uint64_t, std::uint8_t> piece_set;
+    for (std::size_t p = 0; p < pieces.size() / 2; ++p) {
+        const VertIdx a = pieces[2 * p], b = pieces[2 * p + 1];
+        piece_set[(static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b)] = 1;
+        if (!directed.count((static_cast<std::uint64_t>(a) << 32) | b) &&
+            !directed.count((static_cast<std::uint64_t>(b) << 32) | a))
+            check.missing_pieces.insert(check.missing_pieces.end(), {a, b});
+    }
+    for (const auto& [key, count] : directed) {
+        (void)count;
+        const auto a = static_cast<VertIdx>(key >> 32), b = static_cast<VertIdx>(key);
+        if (directed.count((static_cast<std::uint64_t>(b) << 32) | a)) continue;
+        if (!piece_set.count((static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b)))
+            check.open_edges.insert(check.open_edges.end(), {a, b});
+    }
+    return check;
+}
+
+AdvancingLayersResult2 advancing_layers_2d(const MeshDomain2& domain,
+                                           const AdvancingLayersOptions2& options) {
+    EM_ASSERT(options.fill != nullptr);
+    AdvancingLayersResult2 result;
+    AdvancingLayersCounters2& counters = result.counters;
+    const tri::Cdt2Result& cdt = domain.triangulation();
+    const bool layered = options.layers.first_height != 0;
+    if (layered) validate_layer_parameters(options.layers);
+    LayerBuilder builder(cdt, options.layers, options.size, counters);
+    if (layered) builder.build();
+    const std::vector<double>& xy = builder.xy();
+    // The front: per wall loop, the top of every stack in order (repeats removed).
+    std::vector<VertIdx> fill_segments;
+    std::vector<std::uint32_t> fill_segment_origin;  // input segment, or kNone for the front
+    for (std::size_t p = 0; p < cdt.pieces.size() / 2; ++p) {
+        const VertIdx a = cdt.pieces[2 * p], b = cdt.pieces[2 * p + 1];
+        if (builder.is_wall_piece(a, b)) continue;
+        fill_segments.insert(fill_segments.end(), {a, b});
+        fill_segment_origin.push_back(cdt.piece_segment[p]);
+    }
+    std::vector<VertIdx> front;
+    for (const std::vector<std::uint32_t>& members : builder.loop_stacks()) {
+        std::vector<VertIdx> tops;
+        for (const std::uint32_t s : members) {
+            const VertIdx v = builder.stacks()[s].top();
+            if (tops.empty() || tops.back() != v) tops.push_back(v);
+        }
+        while (tops.size() > 1 && tops.back() == tops.front()) tops.pop_back();
+        for (std::size_t k = 0; k < tops.size(); ++k) {
+            const VertIdx a = tops[k], b = tops[(k + 1) % tops.size()];
+            front.insert(front.end(), {a, b});
+            fill_segments.insert(fill_segments.end(), {a, b});
+            fill_segment_origin.push_back(kNone);
+        }
+    }
+
+    // The fill's domain: the outer boundary and the front (the layers and the walls a hole).
+    // Without layers (no first height, or no wall), the domain itself.
+    const tri::Pslg pslg = domain.pslg();
+    const tri::Pslg fill_pslg{xy, fill_segments, pslg.holes, {}};
+    const MeshDomain2 fill_domain(fill_pslg, options.cdt);
+    const MeshDomain2& filled = front.empty() ? domain : fill_domain;
+    const SizeFunction base =
+        options.size.bounded() ? options.size : graded_size_from_boundary(filled);
+    // The fill's size near the front: at least 1.5 times the length of the front edges near
+    // it, so the frontal generator keeps every front edge whole (its boundary split puts
+    // ceil(integral of ds / s) pieces on an edge); the user's size or the graded spacing
+    // elsewhere.
+    SizeFunction fill_size = base;
+    if (!front.empty()) {
+        std::vector<double> lengths;
+        for (std::size_t e = 0; e < front.size() / 2; ++e)
+            lengths.push_back(distance(&xy[2 * front[2 * e]], &xy[2 * front[2 * e + 1]]));
+        std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+        const double median = lengths[lengths.size() / 2];
+        auto front_grid = std::make_shared<BucketGrid>(xy[0], xy[1], median);
+        auto front_reach = std::make_shared<std::vector<std::array<double, 5>>>();
+        for (std::size_t e = 0; e < front.size() / 2; ++e) {
+            const double *a = &xy[2 * front[2 * e]], *b = &xy[2 * front[2 * e + 1]];
+            const double length = distance(a, b);
+            const double lo[2] = {std::min(a[0], b[0]) - length, std::min(a[1], b[1]) - length};
+            const double hi[2] = {std::max(a[0], b[0]) + length, std::max(a[1], b[1]) + length};
+            front_reach->push_back({lo[0], lo[1], hi[0], hi[1], 1.5 * length});
+            front_grid->insert(static_cast<std::uint32_t>(e), lo, hi);
+        }
+        fill_size = SizeFunction::analytic(
+            [base, front_grid, front_reach](double x, double y) {
+                double s = base(x, y);
+                const double p[2] = {x, y};
+                front_grid->query(p, p, [&](std::uint32_t e) {
+                    const auto& r = (*front_reach)[e];
+                    if (x >= r[0] && y >= r[1] && x <= r[2] && y <= r[3]) s = std::max(s, r[4]);
+                });
+                return s;
+            },
+            "the larger of " + base.describe() + " and 1.5 times the last layer's edges");
+    }
+    tri::Cdt2Result fill_mesh = options.fill(filled, fill_size, options.max_steiner_points);
+    if (front.empty()) {
+        // No layers: the frontal mesh of the domain as it is.
+        result.mesh = std::move(fill_mesh);
+        counters.fill_triangles = counters.triangles = result.mesh.mesh.triangle_count();
+        if (layered) {
+            result.mesh.warnings.push_back(
+                "advancing layers: the domain has no wall (no hole loop; the layers grow from "
+                "the closed inner boundaries): no layers, the domain meshed by the fill alone");
+        }
+        return result;
+    }
+    if (fill_mesh.counters.intersections > 0 || fill_mesh.counters.vertices_on_segments > 0) {
+        throw GeometryError(
+            "advancing layers: the last layer's front crosses itself or the "
+            "boundary (a bug)");
+    }
+
+    // Merge: the fill keeps every vertex of its input at its index, so the layers' vertices are
+    // the same in both meshes.
+    tri::Cdt2Result& mesh = result.mesh;
+    mesh.mesh.xy = std::move(fill_mesh.mesh.xy);
+    std::vector<VertIdx>& triangles = mesh.mesh.triangles;
+    for (const Cell& c : builder.cells()) {
+        if (c.is_quad()) ++counters.layer_quads;
+        if (!c.is_quad()) {
+            triangles.insert(triangles.end(), {c.v[0], c.v[1], c.v[2]});
+        } else if (options.layers.quads) {
+            result.quads.insert(result.quads.end(), c.v.begin(), c.v.end());
+        } else {
+            split_quad(c.v, mesh.mesh.xy, triangles);
+        }
+    }
+    counters.layer_triangles = triangles.size() / 3;
+    counters.fill_triangles = fill_mesh.mesh.triangle_count();
+    triangles.insert(triangles.end(), fill_mesh.mesh.triangles.begin(),
+                     fill_mesh.mesh.triangles.end());
+    counters.triangles = triangles.size() / 3;
+    counters.quads = result.quads.size() / 4;
+    mesh.mesh.neighbors = triangle_neighbors(triangles);
+    // The pieces: the fill's (the front left out: it lies inside), then the walls.
+    for (std::size_t p = 0; p < fill_mesh.pieces.size() / 2; ++p) {
+        const std::uint32_t origin = fill_segment_origin[fill_mesh.piece_segment[p]];
+        if (origin == kNone) continue;
+        mesh.pieces.insert(mesh.pieces.end(),
+                           {fill_mesh.pieces[2 * p], fill_mesh.pieces[2 * p + 1]});
+        mesh.piece_segment.push_back(origin);
+    }
+    for (std::size_t p = 0; p < cdt.pieces.size() / 2; ++p) {
+        const VertIdx a = cdt.pieces[2 * p], b = cdt.pieces[2 * p + 1];
+        if (!builder.is_wall_piece(a, b)) continue;
+        mesh.pieces.insert(mesh.pieces.end(), {a, b});
+        mesh.piece_segment.push_back(cdt.piece_segment[p]);
+    }
+    {
+        std::unordered_map<std::uint64_t, std::uint8_t> piece_set;
+        for (std::size_t p = 0; p < mesh.pieces.size() / 2; ++p) {
+            const VertIdx a = mesh.pieces[2 * p], b = mesh.pieces[2 * p + 1];
+            piece_set[(static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b)] = 1;
+        }
+        mesh.mesh.constrained.assign(triangles.size(), 0);
+        for (std::size_t e = 0; e < triangles.size(); ++e) {
+            const VertIdx a = triangles[e], b = triangles[e - e % 3 + (e % 3 + 1) % 3];
+            if (piece_set.count((static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+                                std::max(a, b)))
+                mesh.mesh.constrained[e] = 1;
+        }
+    }
+    mesh.input_vertex_count = cdt.input_vertex_count;
+    mesh.merged_into = cdt.merged_into;
+    mesh.warnings = cdt.warnings;
+    mesh.counters = cdt.counters;
+
+    // The aspect ratio reached at the wall: a wall piece over the first height, where both of
+    // its stacks have a layer.
+    std::vector<std::uint32_t> layers_at(mesh.mesh.vertex_count(), 0);
+    for (const Stack& s : builder.stacks()) {
+        layers_at[s.base] = std::max(layers_at[s.base], s.layers());
+        result.stack_layers.emplace_back(s.base, s.layers());
+    }
+    double best = 0;
+    for (const Loop& loop : builder.wall_loops()) {
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+            const VertIdx a = loop[k], b = loop[(k + 1) % loop.size()];
+            if (layers_at[a] == 0 || layers_at[b] == 0) continue;
+            best = std::max(best, distance(&mesh.mesh.xy[2 * a], &mesh.mesh.xy[2 * b]) /
+                                      options.layers.first_height);
+        }
+    }
+    counters.max_wall_aspect_ratio = static_cast<std::uint64_t>(std::floor(best));
+
+    const MixedMeshCheck2 check =
+        check_mixed_mesh_2d(mesh.mesh.xy, triangles, result.quads, mesh.pieces);
+    if (!check.ok())
+        throw GeometryError("advancing layers: the mixed mesh fails its check: " + check.summary());
+    return result;
+}
+
+}  // namespace exactmesh::generators
