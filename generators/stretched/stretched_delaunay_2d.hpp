@@ -16,7 +16,8 @@
 //     boundary point. No wake region of its own: a wake is refined by giving the far-field size
 //     function a line source behind the trailing edge;
 //  3. a metric per point: an O-mesh point's stretching (sizes the wall's tangential spacing
-//     along the wall and its layer's thickness across it, metric_from_stretching), the wall's
+//     along the wall and its layer's thickness times sqrt(growth) across it, the geometric mean
+//     of its distances to the points below and above it: metric_from_stretching), the wall's
 //     own at the wall vertices (first_height across), the far-field size's isotropic metric
 //     elsewhere;
 //  4. the Euclidean constrained Delaunay triangulation of every point with the boundary's
@@ -35,7 +36,7 @@
 //     mean of four matrices there is much less stretched than any of them): a triangle above
 //     150 degrees gets the side opposite that angle swapped when the quadrilateral's largest
 //     angle strictly decreases (exact compare_angles; measured: 5 swaps on the three-element
-//     domain, 18 on a NACA 0012 at wall aspect ratio 1000, none left above 150 degrees).
+//     domain, 22 on a NACA 0012 at wall aspect ratio 1000, none left above 150 degrees).
 // Every input vertex and segment survives (segments as chains of boundary pieces). Lengths are
 // scale-free (predicates::scale_free_norm, metric_length) and points are built by exact power-
 // of-two-scalable operations, so a domain scaled by 2^k with first_height and the far-field
