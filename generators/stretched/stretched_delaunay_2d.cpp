@@ -253,8 +253,12 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
     // and sqrt g; with t_k itself the upper one measured g, and the cells' diagonals sqrt(1 +
     // g^2), beyond sqrt 2: 70% of the edges were unit, 76% now on the NACA 0012).
     const double across_factor = std::sqrt(o.growth);
+    constexpr std::size_t kNoPoint = ~std::size_t{0};
     for (std::uint32_t c = 0; c < walls.size(); ++c) {
         const Wall& wall = walls[c];
+        // column[i][k - 1]: the point of normal i in layer k (the columns end where a normal
+        // stopped).
+        std::vector<std::vector<std::size_t>> column(wall.vertices.size());
         for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
             const double* p = domain_mesh.point(wall.vertices[i]);
             const std::array<double, 2>& n = wall.normals[i];
@@ -278,7 +282,26 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
                 a.spacing = wall.spacing[i];
                 a.tx = -n[1];
                 a.ty = n[0];
+                column[i].push_back(points.size());
                 points.push_back(a);
+            }
+        }
+        // The spacing along the wall of each point's own structured cell: the mean distance to
+        // the points of the same layer on the neighbouring normals (wider than at the wall
+        // about a convex nose, narrower in a concave part), the wall's where neither exists.
+        const std::size_t nw = wall.vertices.size();
+        for (std::size_t i = 0; i < nw; ++i) {
+            for (std::size_t k = 0; k < column[i].size(); ++k) {
+                AddedPoint& a = points[column[i][k]];
+                double sum = 0;
+                int found = 0;
+                for (const std::size_t j : {(i + nw - 1) % nw, (i + 1) % nw}) {
+                    const std::size_t q = k < column[j].size() ? column[j][k] : kNoPoint;
+                    if (q == kNoPoint) continue;
+                    sum += scale_free_norm(points[q].x - a.x, points[q].y - a.y);
+                    ++found;
+                }
+                if (found > 0 && sum / found > a.across) a.spacing = sum / found;
             }
         }
     }

@@ -15,8 +15,9 @@
 //     inside the domain and farther than `far_field_spacing` sizes from every O-mesh and
 //     boundary point. No wake region of its own: a wake is refined by giving the far-field size
 //     function a line source behind the trailing edge;
-//  3. a metric per point: an O-mesh point's stretching (sizes the wall's tangential spacing
-//     along the wall and its layer's thickness times sqrt(growth) across it, the geometric mean
+//  3. a metric per point: an O-mesh point's stretching (sizes its structured cell's spacing
+//     along the wall, the mean distance to the same layer's points on the neighbouring normals,
+//     and its layer's thickness times sqrt(growth) across it, the geometric mean
 //     of its distances to the points below and above it: metric_from_stretching), the wall's
 //     own at the wall vertices (first_height across), the far-field size's isotropic metric
 //     elsewhere;
