@@ -1,0 +1,742 @@
+// SPDX-License-Identifier: MIT
+// Stretched Delaunay point insertion (see stretched_delaunay_2d.hpp for the steps and
+// references).
+#include "generators/stretched/stretched_delaunay_2d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <set>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
+#include "generators/boundary/domain_boundary_2d.hpp"
+#include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/stretched/metric_smoothing_2d.hpp"
+#include "predicates/angle_comparisons_2d.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/power_of_two.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
+
+namespace exactmesh::generators {
+
+namespace tri = triangulation;
+using predicates::scale_free_norm;
+using predicates::Sign;
+
+namespace {
+
+constexpr std::uint32_t kNoComponent = 0xFFFFFFFFu;
+
+/// (x, y) over its scale-free length; (0, 0) for the zero vector.
+std::array<double, 2> unit_vector(double x, double y) {
+    const double n = scale_free_norm(x, y);
+    if (!(n > 0)) return {0, 0};
+    return {x / n, y / n};
+}
+
+/// A point the mesher adds, and what step 3 needs of it.
+struct AddedPoint {
+    double x = 0, y = 0;
+    std::uint32_t component = kNoComponent;  ///< its O-mesh, or kNoComponent (far field)
+    int layer = 0;                           ///< O-mesh layer k >= 1
+    double thickness = 0;                    ///< its layer's thickness (O-mesh)
+    double across = 0;                       ///< its metric's size across the wall (O-mesh)
+    double spacing = 0;                      ///< the wall's tangential spacing at its normal
+    double tx = 1, ty = 0;                   ///< the wall's direction at its normal
+};
+
+/// A closed loop of the domain's boundary with the domain outside it: a component's wall.
+struct Wall {
+    std::vector<tri::VertIdx> vertices;  ///< in order, the domain on the left
+    std::vector<std::array<double, 2>> normals;
+    std::vector<double> spacing;
+};
+
+/// The loops of boundary edges (triangle sides with no neighbour) of the domain's CDT whose
+/// traversal with the domain on the left turns clockwise: holes, i.e. components. A loop
+/// through a vertex with two outgoing boundary edges is skipped (no O-mesh there).
+std::vector<Wall> component_walls(const tri::Triangulation2& mesh) {
+    constexpr tri::VertIdx kNoVertex = 0xFFFFFFFFu;
+    std::vector<tri::VertIdx> next(mesh.vertex_count(), kNoVertex);
+    std::vector<bool> ambiguous(mesh.vertex_count(), false);
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            if (mesh.neighbors[3 * t + k] != tri::kNone) continue;
+            const tri::VertIdx a = mesh.triangles[3 * t + k];
+            const tri::VertIdx b = mesh.triangles[3 * t + (k + 1) % 3];
+            if (next[a] != kNoVertex) ambiguous[a] = true;
+            next[a] = b;
+        }
+    }
+    std::vector<Wall> walls;
+    std::vector<bool> visited(mesh.vertex_count(), false);
+    for (tri::VertIdx start = 0; start < mesh.vertex_count(); ++start) {
+        if (next[start] == kNoVertex || visited[start]) continue;
+        Wall wall;
+        bool closed = false, usable = true;
+        for (tri::VertIdx v = start; v != kNoVertex && !visited[v]; v = next[v]) {
+            visited[v] = true;
+            usable = usable && !ambiguous[v];
+            wall.vertices.push_back(v);
+            if (next[v] == start) closed = true;
+        }
+        if (!closed || !usable || wall.vertices.size() < 3) continue;
+        // The orientation at the lexicographically lowest vertex, where the loop is convex.
+        const std::size_t n = wall.vertices.size();
+        std::size_t low = 0;
+        for (std::size_t i = 1; i < n; ++i) {
+            const double* p = mesh.point(wall.vertices[i]);
+            const double* q = mesh.point(wall.vertices[low]);
+            if (p[0] < q[0] || (p[0] == q[0] && p[1] < q[1])) low = i;
+        }
+        const Sign turn = predicates::orient2d(mesh.point(wall.vertices[(low + n - 1) % n]),
+                                               mesh.point(wall.vertices[low]),
+                                               mesh.point(wall.vertices[(low + 1) % n]));
+        if (turn == Sign::Negative) walls.push_back(std::move(wall));
+    }
+    return walls;
+}
+
+/// Each wall vertex's normal (the mean of its two sides' left normals, then averaged with its
+/// neighbours' `passes` times) and tangential spacing (the mean of its two sides' lengths).
+void wall_normals(const tri::Triangulation2& mesh, Wall& wall, int passes) {
+    const std::size_t n = wall.vertices.size();
+    std::vector<std::array<double, 2>> side_normals(n);
+    std::vector<double> side_lengths(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double* a = mesh.point(wall.vertices[i]);
+        const double* b = mesh.point(wall.vertices[(i + 1) % n]);
+        const double dx = b[0] - a[0], dy = b[1] - a[1];
+        side_lengths[i] = scale_free_norm(dx, dy);
+        side_normals[i] = unit_vector(-dy, dx);
+    }
+    wall.normals.resize(n);
+    wall.spacing.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t before = (i + n - 1) % n;
+        wall.spacing[i] = 0.5 * (side_lengths[before] + side_lengths[i]);
+        const std::array<double, 2> m = unit_vector(side_normals[before][0] + side_normals[i][0],
+                                                    side_normals[before][1] + side_normals[i][1]);
+        // A cusp (sides folded back on each other): the side's own normal.
+        wall.normals[i] = (m[0] == 0 && m[1] == 0) ? side_normals[i] : m;
+    }
+    for (int pass = 0; pass < passes; ++pass) {
+        std::vector<std::array<double, 2>> smoothed(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::array<double, 2>& p = wall.normals[(i + n - 1) % n];
+            const std::array<double, 2>& q = wall.normals[(i + 1) % n];
+            const std::array<double, 2> m = unit_vector(p[0] + 2 * wall.normals[i][0] + q[0],
+                                                        p[1] + 2 * wall.normals[i][1] + q[1]);
+            smoothed[i] = (m[0] == 0 && m[1] == 0) ? wall.normals[i] : m;
+        }
+        wall.normals = std::move(smoothed);
+    }
+}
+
+/// True when (x, y) lies strictly inside the domain: in a triangle of its CDT (exact orient2d
+/// through the locator), not on a boundary side or a segment, not at a vertex.
+bool strictly_inside(const tri::Triangulation2& mesh, const DomainLocator2& locator, double x,
+                     double y) {
+    const tri::TriIdx t = locator.locate(mesh, x, y);
+    if (t == tri::kNone) return false;
+    const double p[2] = {x, y};
+    for (unsigned k = 0; k < 3; ++k) {
+        const double* a = mesh.point(mesh.triangles[3 * t + k]);
+        if (a[0] == x && a[1] == y) return false;
+        const double* b = mesh.point(mesh.triangles[3 * t + (k + 1) % 3]);
+        if (predicates::orient2d(a, b, p) == Sign::Zero &&
+            (mesh.neighbors[3 * t + k] == tri::kNone ||
+             mesh.is_constrained(t, static_cast<int>(k))))
+            return false;
+    }
+    return true;
+}
+
+/// Points sorted by x, for the neighbourhood scans of the filters (a window of x, then y).
+class SortedPoints {
+  public:
+    void add(double x, double y, std::uint32_t tag) { items_.push_back({x, y, tag}); }
+    void sort() {
+        std::sort(items_.begin(), items_.end(), [](const Item& a, const Item& b) {
+            return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.tag < b.tag)));
+        });
+    }
+    /// Calls f(x, y, tag) for the points with |x - px| < r and |y - py| < r until f returns
+    /// true; returns whether it did.
+    template <class F>
+    bool any_near(double px, double py, double r, F&& f) const {
+        auto it = std::lower_bound(items_.begin(), items_.end(), px - r,
+                                   [](const Item& a, double x) { return a.x <= x; });
+        for (; it != items_.end() && it->x < px + r; ++it) {
+            if (std::fabs(it->y - py) < r && f(it->x, it->y, it->tag)) return true;
+        }
+        return false;
+    }
+
+  private:
+    struct Item {
+        double x, y;
+        std::uint32_t tag;
+    };
+    std::vector<Item> items_;
+};
+
+/// {M11, M12, M22} of `m` times h_ref^2: one common scale for a mesh's vertices (h_ref its
+/// smallest size, so every ratio h_ref / h is at most 1 and no square overflows).
+std::array<double, 3> common_scale_matrix(const Metric2& m, double h_ref) {
+    const double a = h_ref / m.h1, b = h_ref / m.h2;
+    const double a2 = a * a, b2 = b * b;
+    return {m.c * m.c * a2 + m.s * m.s * b2, m.c * m.s * (a2 - b2),
+            m.s * m.s * a2 + m.c * m.c * b2};
+}
+
+void check_options(const StretchedDelaunayOptions2& o) {
+    const auto fail = [](const std::string& what, double value) {
+        throw InputError("stretched Delaunay: " + what + " " + format_number(value) +
+                         " is out of range");
+    };
+    if (!(o.first_height > 0) || !std::isfinite(o.first_height))
+        fail("first height", o.first_height);
+    if (!(o.growth >= 1) || !std::isfinite(o.growth)) fail("growth", o.growth);
+    if (o.max_layers < 0 || o.max_layers > 10000) fail("max layers", o.max_layers);
+    if (o.normal_smoothing_passes < 0) fail("normal smoothing passes", o.normal_smoothing_passes);
+    if (o.metric_smoothing_passes < 0) fail("metric smoothing passes", o.metric_smoothing_passes);
+    if (o.point_smoothing_passes < 0) fail("point smoothing passes", o.point_smoothing_passes);
+    if (!(o.point_move_limit >= 0 && o.point_move_limit <= 1))
+        fail("point move limit", o.point_move_limit);
+    if (!(o.far_field_spacing > 0 && o.far_field_spacing <= 1))
+        fail("far-field spacing", o.far_field_spacing);
+}
+
+/// Step 1 and the first filter: every wall's O-mesh points strictly inside the domain.
+std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
+                                     const DomainLocator2& locator, std::span<const Wall> walls,
+                                     const StretchedDelaunayOptions2& o,
+                                     StretchedDelaunayCounters2& counters) {
+    // Scale-free factors: height_k = first_height * sum_{j<k} growth^j, thickness_k =
+    // first_height * growth^(k-1); a first_height scaled by 2^k scales both exactly.
+    std::vector<double> height_factor(static_cast<std::size_t>(o.max_layers) + 1, 0);
+    std::vector<double> thickness_factor(height_factor.size(), 0);
+    double power = 1;
+    for (std::size_t k = 1; k < height_factor.size(); ++k) {
+        thickness_factor[k] = power;
+        height_factor[k] = height_factor[k - 1] + power;
+        power *= o.growth;
+    }
+    // The budget before any work: the layers each normal would get.
+    std::uint64_t count = 0;
+    for (const Wall& wall : walls) {
+        for (const double spacing : wall.spacing) {
+            for (std::size_t k = 1; k < height_factor.size(); ++k) {
+                if (!(o.first_height * thickness_factor[k] < spacing)) break;
+                ++count;
+            }
+        }
+    }
+    if (count > kStretchedPointBudget) {
+        throw InputError("stretched Delaunay: the layers (first height " +
+                         format_number(o.first_height) + ", growth " + format_number(o.growth) +
+                         ") ask for " + std::to_string(count) + " points, more than " +
+                         std::to_string(kStretchedPointBudget));
+    }
+    std::vector<AddedPoint> points;
+    points.reserve(count);
+    // A layer point's neighbours on its normal lie t_k below and growth t_k above it: the
+    // metric's size across is their geometric mean, so both edges measure about 1 (1 / sqrt g
+    // and sqrt g; with t_k itself the upper one measured g, and the cells' diagonals sqrt(1 +
+    // g^2), beyond sqrt 2: 70% of the edges were unit, 76% now on the NACA 0012).
+    const double across_factor = std::sqrt(o.growth);
+    constexpr std::size_t kNoPoint = ~std::size_t{0};
+    for (std::uint32_t c = 0; c < walls.size(); ++c) {
+        const Wall& wall = walls[c];
+        // column[i][k - 1]: the point of normal i in layer k (the columns end where a normal
+        // stopped).
+        std::vector<std::vector<std::size_t>> column(wall.vertices.size());
+        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
+            const double* p = domain_mesh.point(wall.vertices[i]);
+            const std::array<double, 2>& n = wall.normals[i];
+            for (std::size_t k = 1; k < height_factor.size(); ++k) {
+                const double thickness = o.first_height * thickness_factor[k];
+                // Aspect ratio about 1 reached: the layers end here.
+                if (!(thickness < wall.spacing[i])) break;
+                const double height = o.first_height * height_factor[k];
+                AddedPoint a;
+                a.x = std::fma(height, n[0], p[0]);
+                a.y = std::fma(height, n[1], p[1]);
+                ++counters.omesh_points;
+                if (!strictly_inside(domain_mesh, locator, a.x, a.y)) {
+                    ++counters.outside_domain;
+                    break;
+                }
+                a.component = c;
+                a.layer = static_cast<int>(k);
+                a.thickness = thickness;
+                a.across = thickness * across_factor;
+                a.spacing = wall.spacing[i];
+                a.tx = -n[1];
+                a.ty = n[0];
+                column[i].push_back(points.size());
+                points.push_back(a);
+            }
+        }
+        // The spacing along the wall of each point's own structured cell: the mean distance to
+        // the points of the same layer on the neighbouring normals (wider than at the wall
+        // about a convex nose, narrower in a concave part), the wall's where neither exists.
+        const std::size_t nw = wall.vertices.size();
+        for (std::size_t i = 0; i < nw; ++i) {
+            for (std::size_t k = 0; k < column[i].size(); ++k) {
+                AddedPoint& a = points[column[i][k]];
+                double sum = 0;
+                int found = 0;
+                for (const std::size_t j : {(i + nw - 1) % nw, (i + 1) % nw}) {
+                    const std::size_t q = k < column[j].size() ? column[j][k] : kNoPoint;
+                    if (q == kNoPoint) continue;
+                    sum += scale_free_norm(points[q].x - a.x, points[q].y - a.y);
+                    ++found;
+                }
+                if (found > 0 && sum / found > a.across) a.spacing = sum / found;
+            }
+        }
+    }
+    return points;
+}
+
+/// The stretching of an O-mesh point: its wall's spacing along the wall, its layer's thickness
+/// across.
+Metric2 omesh_metric(const AddedPoint& p) {
+    return metric_from_stretching(p.tx, p.ty, p.spacing, p.spacing / p.across);
+}
+
+/// The stretching of wall vertex i: the wall's spacing along it, the first height across.
+Metric2 wall_metric(const Wall& wall, std::size_t i, double first_height) {
+    const std::array<double, 2>& n = wall.normals[i];
+    const double aspect = wall.spacing[i] / first_height;
+    return aspect > 1 ? metric_from_stretching(-n[1], n[0], wall.spacing[i], aspect)
+                      : isotropic(wall.spacing[i]);
+}
+
+/// The second filter: an O-mesh point goes when a strictly finer point of another component's
+/// O-mesh (its wall vertices the finest; finer: a thinner layer, then a lower component) lies
+/// inside the unit ellipse of either point's stretching (closer than the local spacing in that
+/// direction: along the wall, the spacing; across it, the thickness). The decision reads only
+/// the unfiltered set, so it does not depend on the order.
+std::vector<AddedPoint> drop_overlaps(const tri::Triangulation2& domain_mesh,
+                                      std::span<const Wall> walls, std::vector<AddedPoint> points,
+                                      double first_height, StretchedDelaunayCounters2& counters) {
+    if (walls.size() < 2) return points;
+    // Tags: i < points.size() an O-mesh point, else a wall vertex.
+    SortedPoints sorted;
+    std::vector<Metric2> metric_of;
+    std::vector<double> thickness_of;
+    std::vector<std::uint32_t> component_of;
+    double largest = 0;
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        sorted.add(points[i].x, points[i].y, i);
+        metric_of.push_back(omesh_metric(points[i]));
+        thickness_of.push_back(points[i].thickness);
+        component_of.push_back(points[i].component);
+        largest = std::max(largest, points[i].spacing);
+    }
+    for (std::uint32_t c = 0; c < walls.size(); ++c) {
+        for (std::size_t i = 0; i < walls[c].vertices.size(); ++i) {
+            const double* p = domain_mesh.point(walls[c].vertices[i]);
+            sorted.add(p[0], p[1], static_cast<std::uint32_t>(metric_of.size()));
+            metric_of.push_back(wall_metric(walls[c], i, first_height));
+            thickness_of.push_back(0);
+            component_of.push_back(c);
+            largest = std::max(largest, walls[c].spacing[i]);
+        }
+    }
+    sorted.sort();
+    std::vector<AddedPoint> kept;
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        const AddedPoint& p = points[i];
+        const bool near_finer =
+            sorted.any_near(p.x, p.y, largest, [&](double x, double y, std::uint32_t q) {
+                const std::uint32_t component = component_of[q];
+                if (component == p.component) return false;
+                const bool finer = thickness_of[q] < p.thickness ||
+                                   (thickness_of[q] == p.thickness && component < p.component);
+                if (!finer) return false;
+                const double dx = x - p.x, dy = y - p.y;
+                return metric_length(metric_of[i], dx, dy) < 1 ||
+                       metric_length(metric_of[q], dx, dy) < 1;
+            });
+        if (near_finer) {
+            ++counters.overlap_dropped;
+        } else {
+            kept.push_back(p);
+        }
+    }
+    return kept;
+}
+
+/// The far field: the centres of the leaves of a quadtree over the domain's bounding square,
+/// a cell split while it is wider than the size at its centre; kept strictly inside the domain
+/// and at least far_field_spacing sizes from every point of `near`.
+std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
+                                         const DomainLocator2& locator,
+                                         std::span<const double> boundary_xy,
+                                         std::span<const AddedPoint> omesh,
+                                         const SizeFunction& size,
+                                         const StretchedDelaunayOptions2& o,
+                                         StretchedDelaunayCounters2& counters) {
+    double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x;
+    double hi_x = -lo_x, hi_y = -lo_x;
+    for (std::size_t i = 0; i + 1 < boundary_xy.size(); i += 2) {
+        lo_x = std::min(lo_x, boundary_xy[i]);
+        hi_x = std::max(hi_x, boundary_xy[i]);
+        lo_y = std::min(lo_y, boundary_xy[i + 1]);
+        hi_y = std::max(hi_y, boundary_xy[i + 1]);
+    }
+    if (!(hi_x > lo_x) && !(hi_y > lo_y)) return {};
+    struct Cell {
+        double x, y, side;
+        int depth;
+    };
+    std::vector<Cell> stack{{lo_x, lo_y, std::max(hi_x - lo_x, hi_y - lo_y), 0}};
+    std::vector<std::array<double, 2>> centres;
+    while (!stack.empty()) {
+        const Cell cell = stack.back();
+        stack.pop_back();
+        const double half = 0.5 * cell.side;
+        const double cx = cell.x + half, cy = cell.y + half;
+        if (cell.depth < 60 && cell.side > size(cx, cy)) {
+            for (const auto& [dx, dy] : {std::pair{0.0, 0.0}, std::pair{half, 0.0},
+                                         std::pair{0.0, half}, std::pair{half, half}})
+                stack.push_back({cell.x + dx, cell.y + dy, half, cell.depth + 1});
+            continue;
+        }
+        centres.push_back({cx, cy});
+        if (centres.size() > kStretchedPointBudget) {
+            throw InputError("stretched Delaunay: the far-field size (" + size.describe() +
+                             ") asks for more than " +
+                             format_approximate(static_cast<double>(kStretchedPointBudget)) +
+                             " points");
+        }
+    }
+    counters.far_field_candidates = centres.size();
+    SortedPoints near;
+    for (std::size_t i = 0; i + 1 < boundary_xy.size(); i += 2)
+        near.add(boundary_xy[i], boundary_xy[i + 1], 0);
+    for (const AddedPoint& p : omesh) near.add(p.x, p.y, 0);
+    near.sort();
+    std::vector<AddedPoint> kept;
+    for (const auto& [x, y] : centres) {
+        const double r = o.far_field_spacing * size(x, y);
+        const bool drop = !strictly_inside(domain_mesh, locator, x, y) ||
+                          near.any_near(x, y, r, [&](double qx, double qy, std::uint32_t) {
+                              return scale_free_norm(qx - x, qy - y) < r;
+                          });
+        if (drop) {
+            ++counters.far_field_dropped;
+            continue;
+        }
+        AddedPoint a;
+        a.x = x;
+        a.y = y;
+        kept.push_back(a);
+    }
+    return kept;
+}
+
+/// Lawson swapping by in-ellipse under the quadrilaterals' mean metrics.
+tri::EdgeSwapCounters metric_swaps(tri::Triangulation2& mesh, std::span<const Metric2> metrics) {
+    double h_ref = std::numeric_limits<double>::infinity();
+    for (const Metric2& m : metrics) h_ref = std::min({h_ref, m.h1, m.h2});
+    std::vector<double> matrices(3 * metrics.size());
+    for (std::size_t v = 0; v < metrics.size(); ++v) {
+        const std::array<double, 3> m = common_scale_matrix(metrics[v], h_ref);
+        std::copy(m.begin(), m.end(), matrices.begin() + 3 * static_cast<std::ptrdiff_t>(v));
+    }
+    return tri::swap_edges_2d(mesh, tri::MetricInEllipse{matrices});
+}
+
+/// Step 7, one pass (Gauss-Seidel in vertex order): vertices from `first_movable` on move
+/// towards the centroid of their neighbours weighted by the edges' metric lengths (the mean of
+/// the lengths in both ends' metrics), relaxed by `relax[v]` and limited to `move_limit` times
+/// the smallest size of its metric; a move stays only when every
+/// triangle at the vertex stays strictly counter-clockwise (exact orient2d).
+void smooth_points(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
+                   std::span<const double> relax, double move_limit, tri::VertIdx first_movable,
+                   StretchedDelaunayCounters2& counters) {
+    const std::uint32_t nv = mesh.vertex_count();
+    std::vector<std::uint32_t> start(std::size_t{nv} + 1, 0);
+    for (const tri::VertIdx v : mesh.triangles) ++start[v + 1];
+    for (std::uint32_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    std::vector<std::uint32_t> star(mesh.triangles.size());
+    {
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::uint32_t i = 0; i < mesh.triangles.size(); ++i)
+            star[fill[mesh.triangles[i]]++] = i / 3;
+    }
+    for (tri::VertIdx v = first_movable; v < nv; ++v) {
+        if (start[v] == start[v + 1] || !(relax[v] > 0)) continue;
+        const double px = mesh.xy[2 * std::size_t{v}], py = mesh.xy[2 * std::size_t{v} + 1];
+        double sum_w = 0, sum_x = 0, sum_y = 0;
+        for (std::uint32_t j = start[v]; j < start[v + 1]; ++j) {
+            const tri::TriIdx t = star[j];
+            // Each neighbour once: the one after v in each counter-clockwise triangle (an
+            // interior vertex's star is closed, so this visits each neighbour exactly once).
+            unsigned k = 0;
+            while (mesh.triangles[3 * t + k] != v) ++k;
+            const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
+            const double dx = mesh.point(u)[0] - px, dy = mesh.point(u)[1] - py;
+            const double w =
+                0.5 * (metric_length(metrics[v], dx, dy) + metric_length(metrics[u], dx, dy));
+            sum_w += w;
+            sum_x += w * dx;
+            sum_y += w * dy;
+        }
+        if (!(sum_w > 0)) continue;
+        double dx = relax[v] * (sum_x / sum_w), dy = relax[v] * (sum_y / sum_w);
+        // A long edge (a triangle across several layers) weighs much and would drag the point
+        // by a large part of its cell, and in a stretched cell a shift along the wall by more
+        // than a fraction of the thickness shears it into an obtuse triangle: the move is
+        // limited to `move_limit` times the point's smallest size, in every direction.
+        const double step = scale_free_norm(dx, dy) / std::min(metrics[v].h1, metrics[v].h2);
+        if (step > move_limit) {
+            dx *= move_limit / step;
+            dy *= move_limit / step;
+        }
+        const double q[2] = {px + dx, py + dy};
+        if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || (q[0] == px && q[1] == py)) continue;
+        bool valid = true;
+        for (std::uint32_t j = start[v]; j < start[v + 1] && valid; ++j) {
+            const tri::TriIdx t = star[j];
+            const double* corner[3];
+            for (unsigned k = 0; k < 3; ++k) {
+                const tri::VertIdx w = mesh.triangles[3 * t + k];
+                corner[k] = w == v ? q : mesh.point(w);
+            }
+            valid = predicates::orient2d(corner[0], corner[1], corner[2]) == Sign::Positive;
+        }
+        if (!valid) {
+            ++counters.smoothing_refused;
+            continue;
+        }
+        mesh.xy[2 * std::size_t{v}] = q[0];
+        mesh.xy[2 * std::size_t{v} + 1] = q[1];
+        ++counters.smoothing_moves;
+    }
+}
+
+/// Replaces the side k of triangle t (from v[k] to v[k+1]) by the other diagonal of its
+/// quadrilateral with the neighbour across it, keeping the neighbours and the constraint flags
+/// (neither of the two triangles' other sides changes): with p = v[k], q = v[k+1], r = v[k+2]
+/// and s the neighbour's apex, t = (p, q, r) and u = (q, p, s) become t = (r, p, s) and
+/// u = (s, q, r), the diagonal p-q replaced by r-s.
+void flip_side(tri::Triangulation2& mesh, tri::TriIdx t, unsigned k, tri::TriIdx u, unsigned j) {
+    const auto at = [](tri::TriIdx tri_index, unsigned local) {
+        return 3 * std::size_t{tri_index} + local % 3;
+    };
+    const tri::VertIdx p = mesh.triangles[at(t, k)], q = mesh.triangles[at(t, k + 1)];
+    const tri::VertIdx r = mesh.triangles[at(t, k + 2)], s = mesh.triangles[at(u, j + 2)];
+    const tri::TriIdx n_qr = mesh.neighbors[at(t, k + 1)], n_rp = mesh.neighbors[at(t, k + 2)];
+    const tri::TriIdx n_ps = mesh.neighbors[at(u, j + 1)], n_sq = mesh.neighbors[at(u, j + 2)];
+    const bool flagged = !mesh.constrained.empty();
+    const std::uint8_t c_qr = flagged ? mesh.constrained[at(t, k + 1)] : 0;
+    const std::uint8_t c_rp = flagged ? mesh.constrained[at(t, k + 2)] : 0;
+    const std::uint8_t c_ps = flagged ? mesh.constrained[at(u, j + 1)] : 0;
+    const std::uint8_t c_sq = flagged ? mesh.constrained[at(u, j + 2)] : 0;
+    const tri::VertIdx new_t[3] = {r, p, s}, new_u[3] = {s, q, r};
+    const tri::TriIdx across_t[3] = {n_rp, n_ps, u}, across_u[3] = {n_sq, n_qr, t};
+    const std::uint8_t flags_t[3] = {c_rp, c_ps, 0}, flags_u[3] = {c_sq, c_qr, 0};
+    for (unsigned i = 0; i < 3; ++i) {
+        mesh.triangles[at(t, i)] = new_t[i];
+        mesh.triangles[at(u, i)] = new_u[i];
+        mesh.neighbors[at(t, i)] = across_t[i];
+        mesh.neighbors[at(u, i)] = across_u[i];
+        if (flagged) {
+            mesh.constrained[at(t, i)] = flags_t[i];
+            mesh.constrained[at(u, i)] = flags_u[i];
+        }
+    }
+    // The two outer neighbours that changed sides: p-s now faces t, q-r now faces u.
+    const auto relink = [&](tri::TriIdx outer, tri::TriIdx from, tri::TriIdx to) {
+        if (outer == tri::kNone) return;
+        for (unsigned i = 0; i < 3; ++i) {
+            if (mesh.neighbors[at(outer, i)] == from) mesh.neighbors[at(outer, i)] = to;
+        }
+    };
+    relink(n_ps, u, t);
+    relink(n_qr, t, u);
+}
+
+/// The larger of two corners (exact compare_angles).
+predicates::Corner larger_corner(const predicates::Corner& a, const predicates::Corner& b) {
+    return predicates::compare_angles(a, b) == Sign::Negative ? b : a;
+}
+
+/// A cleanup after the in-ellipse swaps: the mean of four vertex matrices, where the stretching
+/// turns quickly between neighbouring wall normals (a trailing edge's fan), is much less
+/// stretched than any of them, and the swaps under it can leave flat triangles along one
+/// normal. A triangle whose largest angle exceeds the reference corner (atan2(1/2, -0.8660...),
+/// 150 degrees to 1e-16) gets the side opposite it swapped when its quadrilateral is strictly
+/// convex and the quadrilateral's largest angle strictly decreases: the min-max criterion
+/// [Babuska-Aziz76; BarthJespersen "The design and application of upwind schemes on
+/// unstructured meshes" 1989] applied only there. Every decision is exact (orient2d,
+/// compare_angles); every swap decreases the largest angle of a pair, so passes end.
+std::uint64_t swap_out_flat_triangles(tri::Triangulation2& mesh) {
+    static constexpr double kOrigin[2] = {0, 0}, kRight[2] = {1, 0};
+    static constexpr double kAt150[2] = {-0.8660254037844386, 0.5};
+    const predicates::Corner reference{kOrigin, kRight, kAt150};
+    std::uint64_t swaps = 0;
+    for (int pass = 0; pass < 16; ++pass) {
+        std::uint64_t pass_swaps = 0;
+        for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+            const double* corner_point[3];
+            for (unsigned i = 0; i < 3; ++i)
+                corner_point[i] = mesh.point(mesh.triangles[3 * t + i]);
+            const predicates::Corner largest =
+                predicates::largest_corner(corner_point[0], corner_point[1], corner_point[2]);
+            if (predicates::compare_angles(largest, reference) != Sign::Positive) continue;
+            unsigned apex = 0;
+            while (corner_point[apex] != largest.o) ++apex;
+            const unsigned k = (apex + 1) % 3;  // the side opposite the largest angle
+            const tri::TriIdx u = mesh.neighbors[3 * std::size_t{t} + k];
+            if (u == tri::kNone || mesh.is_constrained(t, static_cast<int>(k))) continue;
+            unsigned j = 0;
+            while (j < 3 && mesh.neighbors[3 * std::size_t{u} + j] != t) ++j;
+            if (j == 3) continue;
+            const double* p = corner_point[k];
+            const double* q = corner_point[(k + 1) % 3];
+            const double* r = corner_point[apex];
+            const double* s = mesh.point(mesh.triangles[3 * std::size_t{u} + (j + 2) % 3]);
+            if (predicates::orient2d(r, p, s) != Sign::Positive ||
+                predicates::orient2d(s, q, r) != Sign::Positive)
+                continue;
+            const predicates::Corner before =
+                larger_corner(largest, predicates::largest_corner(q, p, s));
+            const predicates::Corner after = larger_corner(predicates::largest_corner(r, p, s),
+                                                           predicates::largest_corner(s, q, r));
+            if (predicates::compare_angles(after, before) != Sign::Negative) continue;
+            flip_side(mesh, t, k, u, j);
+            ++pass_swaps;
+        }
+        swaps += pass_swaps;
+        if (pass_swaps == 0) break;
+    }
+    return swaps;
+}
+
+}  // namespace
+
+StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
+                                               const StretchedDelaunayOptions2& options) {
+    check_options(options);
+    StretchedDelaunayCounters2 counters;
+    const tri::Cdt2Result& domain_cdt = domain.triangulation();
+    const tri::Triangulation2& domain_mesh = domain_cdt.mesh;
+    std::vector<Wall> walls = component_walls(domain_mesh);
+    for (Wall& wall : walls) {
+        wall_normals(domain_mesh, wall, options.normal_smoothing_passes);
+        ++counters.components;
+        counters.wall_vertices += wall.vertices.size();
+    }
+    const SizeFunction size = options.far_field_size.bounded() ? options.far_field_size
+                                                               : graded_size_from_boundary(domain);
+    // The boundary split to the far-field size, except the walls: their vertices (the input's)
+    // are the O-meshes' feet.
+    std::set<std::array<double, 4>> wall_sides;
+    for (const Wall& wall : walls) {
+        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
+            const double* a = domain_mesh.point(wall.vertices[i]);
+            const double* b = domain_mesh.point(wall.vertices[(i + 1) % wall.vertices.size()]);
+            wall_sides.insert({a[0], a[1], b[0], b[1]});
+            wall_sides.insert({b[0], b[1], a[0], a[1]});
+        }
+    }
+    DomainBoundary2 boundary =
+        discretize_domain_boundary(domain, [&](const double* a, const double* b) {
+            return wall_sides.count({a[0], a[1], b[0], b[1]}) != 0 ? SizeFunction{} : size;
+        });
+    const DomainLocator2& locator = boundary.locator;
+    const tri::Triangulation2& located = boundary.cdt.mesh;
+
+    // Steps 1 and 2.
+    std::vector<AddedPoint> omesh = omesh_points(located, locator, walls, options, counters);
+    omesh = drop_overlaps(located, walls, std::move(omesh), options.first_height, counters);
+    const std::vector<AddedPoint> far =
+        far_field_points(located, locator, boundary.xy, omesh, size, options, counters);
+
+    // Every point once, exactly: the boundary's, then the O-meshes', then the far field's.
+    std::vector<double> xy = boundary.xy;
+    const auto boundary_count = static_cast<tri::VertIdx>(xy.size() / 2);
+    std::set<std::pair<double, double>> seen;
+    for (std::size_t i = 0; i + 1 < xy.size(); i += 2) seen.insert({xy[i], xy[i + 1]});
+    std::vector<AddedPoint> added;
+    for (const std::vector<AddedPoint>* list :
+         std::array<const std::vector<AddedPoint>*, 2>{&omesh, &far}) {
+        for (const AddedPoint& p : *list) {
+            if (!seen.insert({p.x, p.y}).second) {
+                ++counters.duplicates;
+                continue;
+            }
+            xy.push_back(p.x);
+            xy.push_back(p.y);
+            added.push_back(p);
+        }
+    }
+
+    // Step 3: a metric and a smoothing weight per point.
+    std::vector<Metric2> metrics(xy.size() / 2);
+    std::vector<double> weights(metrics.size(), 0.5);
+    for (tri::VertIdx v = 0; v < boundary_count; ++v)
+        metrics[v] = isotropic(size(xy[2 * std::size_t{v}], xy[2 * std::size_t{v} + 1]));
+    for (const Wall& wall : walls) {
+        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
+            metrics[wall.vertices[i]] = wall_metric(wall, i, options.first_height);
+            weights[wall.vertices[i]] = 0;
+        }
+    }
+    for (std::size_t i = 0; i < added.size(); ++i) {
+        const AddedPoint& p = added[i];
+        const std::size_t v = boundary_count + i;
+        if (p.component == kNoComponent) {
+            metrics[v] = isotropic(size(p.x, p.y));
+        } else {
+            metrics[v] = omesh_metric(p);
+            weights[v] = 0.5 * p.layer / (p.layer + 4.0);
+        }
+    }
+
+    // Step 4.
+    const tri::Pslg& pslg = domain.pslg();
+    tri::Cdt2Result out = tri::constrained_delaunay_2d(
+        tri::Pslg{xy, boundary.pieces, pslg.holes, pslg.regions}, domain.domain_options());
+    restore_input_terms(boundary, out);
+    tri::Triangulation2& mesh = out.mesh;
+    counters.points = mesh.vertex_count();
+
+    // Steps 5 to 7.
+    if (mesh.triangle_count() > 0) {
+        smooth_vertex_metrics(mesh, metrics, options.metric_smoothing_passes, 0, weights);
+        tri::EdgeSwapCounters swapped = metric_swaps(mesh, metrics);
+        counters.swaps = swapped.swaps;
+        counters.swap_budget_hits = swapped.budget_stops;
+        for (int pass = 0; pass < options.point_smoothing_passes; ++pass) {
+            smooth_points(mesh, metrics, weights, options.point_move_limit, boundary_count,
+                          counters);
+            swapped = metric_swaps(mesh, metrics);
+            counters.reswaps += swapped.swaps;
+            counters.swap_budget_hits += swapped.budget_stops;
+        }
+        counters.flat_swaps = swap_out_flat_triangles(mesh);
+    }
+    return {std::move(out), std::move(metrics), counters};
+}
+
+std::vector<std::pair<std::string, std::uint64_t>> counter_list(
+    const StretchedDelaunayCounters2& c) {
+    return counters_by_name(kStretchedDelaunayCounterNames, c);
+}
+
+}  // namespace exactmesh::generators

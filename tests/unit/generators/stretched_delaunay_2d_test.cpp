@@ -1,0 +1,265 @@
+// SPDX-License-Identifier: MIT
+// The stretched Delaunay generator (issue 14, the seed's seven steps) on the built-in airfoil
+// domains: valid constrained meshes (exact check) that keep every input vertex and segment,
+// stretched cells at the wall (aspect ratio >= 100 with a first height of 1e-4 on the NACA
+// 0012), in-ellipse swaps that change edges, and the same mesh scaled when the domain, the first
+// height and the sizes are scaled by 2^600 or 2^-600.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "generators/boundary/mesh_domain_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
+#include "generators/sizing/size_function.hpp"
+#include "generators/stretched/metric_field_2d.hpp"
+#include "generators/stretched/metric_quality_2d.hpp"
+#include "generators/stretched/stretched_delaunay_2d.hpp"
+#include "tests/support/test_scale.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
+
+namespace gen = exactmesh::generators;
+namespace tri = exactmesh::triangulation;
+
+namespace {
+
+/// A sample domain's PSLG, every coordinate scaled by 2^k.
+struct Domain {
+    std::vector<double> xy;
+    std::vector<tri::VertIdx> segments;
+    std::vector<double> holes;
+    Domain(gen::SampleDomain d, int k, const gen::SizeFunction& size = {}) {
+        const gen::DomainPslg pslg = gen::sample_domain(d, size);
+        for (const double x : pslg.xy) xy.push_back(std::ldexp(x, k));
+        segments.assign(pslg.segments.begin(), pslg.segments.end());
+        for (const double x : pslg.holes) holes.push_back(std::ldexp(x, k));
+    }
+    tri::Pslg pslg() const { return {xy, segments, holes, {}}; }
+};
+
+gen::StretchedDelaunayResult2 run(const Domain& domain, double first_height) {
+    const gen::MeshDomain2 mesh_domain(domain.pslg());
+    gen::StretchedDelaunayOptions2 options;
+    options.first_height = first_height;
+    return gen::stretched_delaunay_2d(mesh_domain, options);
+}
+
+void expect_valid(const Domain& domain, const gen::StretchedDelaunayResult2& r) {
+    const tri::CheckReport report = tri::detail::check_constrained_mesh_2d(
+        r.mesh.mesh, r.mesh.input_vertex_count, domain.segments, r.mesh.pieces, {}, false);
+    EXPECT_TRUE(report.ok) << report.problem;
+    ASSERT_GE(r.mesh.mesh.xy.size(), domain.xy.size());
+    for (std::size_t i = 0; i < domain.xy.size(); ++i) EXPECT_EQ(r.mesh.mesh.xy[i], domain.xy[i]);
+    EXPECT_EQ(r.mesh.input_vertex_count, domain.xy.size() / 2);
+    // The neighbours after the swaps are those the triangles define.
+    tri::Triangulation2 relinked = r.mesh.mesh;
+    relinked.neighbors.clear();
+    tri::link_neighbors_2d(relinked);
+    EXPECT_EQ(relinked.neighbors, r.mesh.mesh.neighbors);
+}
+
+/// Longest edge over smallest altitude (L_max^2 / (2 area)) of the triangles with an edge on a
+/// component's wall (both ends input vertices from `first_wall_vertex` on): median and maximum.
+std::pair<double, double> wall_aspect_ratios(const tri::Triangulation2& mesh,
+                                             tri::VertIdx first_wall_vertex,
+                                             tri::VertIdx input_count) {
+    std::vector<double> ratios;
+    const auto on_wall = [&](tri::VertIdx v) { return v >= first_wall_vertex && v < input_count; };
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        bool at_wall = false;
+        for (unsigned k = 0; k < 3; ++k) {
+            at_wall = at_wall || (mesh.is_constrained(t, static_cast<int>(k)) &&
+                                  on_wall(mesh.triangles[3 * t + k]) &&
+                                  on_wall(mesh.triangles[3 * t + (k + 1) % 3]));
+        }
+        if (!at_wall) continue;
+        const double* a = mesh.point(mesh.triangles[3 * t]);
+        const double* b = mesh.point(mesh.triangles[3 * t + 1]);
+        const double* c = mesh.point(mesh.triangles[3 * t + 2]);
+        const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        const auto sq = [](const double* p, const double* q) {
+            return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
+        };
+        ratios.push_back(std::max({sq(a, b), sq(b, c), sq(c, a)}) / area2);
+    }
+    if (ratios.empty()) return {0, 0};
+    std::sort(ratios.begin(), ratios.end());
+    return {ratios[ratios.size() / 2], ratios.back()};
+}
+
+std::set<std::pair<tri::VertIdx, tri::VertIdx>> edges(const tri::Triangulation2& mesh) {
+    std::set<std::pair<tri::VertIdx, tri::VertIdx>> result;
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const tri::VertIdx a = mesh.triangles[i];
+        const tri::VertIdx b = mesh.triangles[i % 3 == 2 ? i - 2 : i + 1];
+        result.insert({std::min(a, b), std::max(a, b)});
+    }
+    return result;
+}
+
+/// The quality report in the vertices' own metrics (log-Euclidean linear in the triangles).
+gen::MetricQualityReport2 quality(const gen::StretchedDelaunayResult2& r) {
+    const tri::Triangulation2& mesh = r.mesh.mesh;
+    const gen::MetricField2 field =
+        gen::MetricField2::background_mesh(mesh.xy, r.metrics, mesh.triangles);
+    return gen::metric_quality_report_2d(mesh.xy, mesh.triangles, field);
+}
+
+void print(const char* name, const gen::StretchedDelaunayResult2& r, double median,
+           double largest) {
+    const gen::MetricQualityReport2 q = quality(r);
+    std::cout << name << ": " << r.mesh.mesh.vertex_count() << " points, "
+              << r.mesh.mesh.triangle_count() << " triangles, wall aspect ratio median " << median
+              << " max " << largest << ", unit metric edges " << q.unit_length_share
+              << ", metric shape median " << q.shape_median << ", above 150 degrees "
+              << q.above_150_degrees << ", max angle " << q.max_angle << "\n";
+    for (const auto& [counter, value] : gen::counter_list(r.counters))
+        std::cout << "  " << counter << " " << value << "\n";
+}
+
+TEST(StretchedDelaunay2d, Naca0012IsValidAndStretchedAtTheWall) {
+    const Domain domain(gen::SampleDomain::Naca0012, 0);
+    const gen::StretchedDelaunayResult2 r = run(domain, 1e-4);
+    expect_valid(domain, r);
+    EXPECT_EQ(r.counters.components, 1u);
+    EXPECT_GT(r.counters.omesh_points, 10 * r.counters.wall_vertices);
+    EXPECT_GT(r.counters.swaps, 0u);
+    EXPECT_GT(r.counters.smoothing_moves, 0u);
+    // The airfoil's vertices follow the far-field box's four corners.
+    const auto [median, largest] = wall_aspect_ratios(r.mesh.mesh, 4, r.mesh.input_vertex_count);
+    print("naca0012", r, median, largest);
+    EXPECT_EQ(quality(r).above_150_degrees, 0u);
+    EXPECT_GE(largest, 100.0);
+    EXPECT_GE(median, 100.0);
+}
+
+TEST(StretchedDelaunay2d, ThreeElementIsValidWithOverlapsRemoved) {
+    const Domain domain(gen::SampleDomain::ThreeElement, 0);
+    const gen::StretchedDelaunayResult2 r = run(domain, 1e-4);
+    expect_valid(domain, r);
+    EXPECT_EQ(r.counters.components, 3u);
+    EXPECT_GT(r.counters.overlap_dropped, 0u);
+    EXPECT_GT(r.counters.swaps, 0u);
+    const auto [median, largest] = wall_aspect_ratios(r.mesh.mesh, 4, r.mesh.input_vertex_count);
+    print("three-element", r, median, largest);
+    EXPECT_EQ(quality(r).above_150_degrees, 0u);
+    EXPECT_GE(largest, 30.0);
+}
+
+TEST(StretchedDelaunay2d, SwapsChangeTheEuclideanTriangulation) {
+    const Domain domain(gen::SampleDomain::Naca0012, 0);
+    const gen::MeshDomain2 mesh_domain(domain.pslg());
+    gen::StretchedDelaunayOptions2 options;
+    options.first_height = 1e-4;
+    options.point_smoothing_passes = 0;
+    const gen::StretchedDelaunayResult2 swapped = gen::stretched_delaunay_2d(mesh_domain, options);
+    EXPECT_GT(swapped.counters.swaps, 0u);
+    // The Euclidean CDT of the same points and pieces (step 4's triangulation): the in-ellipse
+    // swaps replaced some of its edges.
+    const tri::Cdt2Result euclidean = tri::constrained_delaunay_2d(
+        tri::Pslg{swapped.mesh.mesh.xy, swapped.mesh.pieces, domain.holes, {}});
+    EXPECT_EQ(euclidean.mesh.triangle_count(), swapped.mesh.mesh.triangle_count());
+    const std::set<std::pair<tri::VertIdx, tri::VertIdx>> before = edges(euclidean.mesh);
+    const std::set<std::pair<tri::VertIdx, tri::VertIdx>> after = edges(swapped.mesh.mesh);
+    std::size_t changed = 0;
+    for (const auto& e : after) changed += before.count(e) == 0 ? 1 : 0;
+    std::cout << "edges changed by the in-ellipse swaps: " << changed << " of " << after.size()
+              << " (" << swapped.counters.swaps << " swaps)\n";
+    EXPECT_GT(changed, 0u);
+}
+
+gen::StretchedDelaunayResult2 run_scaled(int k, bool given_size) {
+    const Domain domain(gen::SampleDomain::Naca0012, k);
+    const gen::MeshDomain2 mesh_domain(domain.pslg());
+    gen::StretchedDelaunayOptions2 options;
+    options.first_height = std::ldexp(1e-3, k);
+    if (given_size) options.far_field_size = gen::SizeFunction::uniform(std::ldexp(0.25, k));
+    gen::StretchedDelaunayResult2 r = gen::stretched_delaunay_2d(mesh_domain, options);
+    expect_valid(domain, r);
+    return r;
+}
+
+TEST(StretchedDelaunay2d, ScaledDomainGivesTheSameMeshScaled) {
+    // The far-field size graded from the boundary (scaled with it), then a given one.
+    for (const bool given_size : {false, true}) {
+        const gen::StretchedDelaunayResult2 reference = run_scaled(0, given_size);
+        for (const int k : {600, -600}) {
+            const gen::StretchedDelaunayResult2 r = run_scaled(k, given_size);
+            EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
+            ASSERT_EQ(r.mesh.mesh.xy.size(), reference.mesh.mesh.xy.size());
+            std::size_t differ = 0;
+            for (std::size_t i = 0; i < r.mesh.mesh.xy.size(); ++i)
+                differ += r.mesh.mesh.xy[i] != std::ldexp(reference.mesh.mesh.xy[i], k) ? 1 : 0;
+            EXPECT_EQ(differ, 0u) << "2^" << k;
+            EXPECT_EQ(r.counters.swaps, reference.counters.swaps);
+            EXPECT_EQ(r.counters.smoothing_moves, reference.counters.smoothing_moves);
+        }
+    }
+}
+
+TEST(StretchedDelaunay2d, DomainWithoutComponentsGetsTheFarFieldOnly) {
+    const Domain domain(gen::SampleDomain::SquareWithHoles, 0);
+    // The holes are components too; the outer square alone has none.
+    const std::vector<double> xy(domain.xy.begin(), domain.xy.begin() + 8);
+    const std::vector<tri::VertIdx> segments = {0, 1, 1, 2, 2, 3, 3, 0};
+    const gen::MeshDomain2 mesh_domain(tri::Pslg{xy, segments, {}, {}});
+    gen::StretchedDelaunayOptions2 options;
+    options.far_field_size = gen::SizeFunction::uniform(0.05);
+    const gen::StretchedDelaunayResult2 r = gen::stretched_delaunay_2d(mesh_domain, options);
+    const tri::CheckReport report = tri::detail::check_constrained_mesh_2d(
+        r.mesh.mesh, r.mesh.input_vertex_count, segments, r.mesh.pieces, {}, false);
+    EXPECT_TRUE(report.ok) << report.problem;
+    EXPECT_EQ(r.counters.components, 0u);
+    EXPECT_EQ(r.counters.omesh_points, 0u);
+    EXPECT_GT(r.mesh.mesh.triangle_count(), 400u);
+    const gen::StretchedDelaunayResult2 holes = run(domain, 1e-3);
+    expect_valid(domain, holes);
+    EXPECT_EQ(holes.counters.components, 3u);
+}
+
+TEST(StretchedDelaunay2d, UniformlySampledAirfoilReachesAspectRatio1000) {
+    // The airfoil sampled uniformly (finer with EXACTMESH_TEST_SCALE), a first height 1000
+    // times below its spacing.
+    const double spacing = 0.02 / exactmesh::testing::test_scale();
+    const Domain domain(gen::SampleDomain::Naca0012, 0, gen::SizeFunction::uniform(spacing));
+    const gen::StretchedDelaunayResult2 r = run(domain, spacing / 1000);
+    expect_valid(domain, r);
+    const auto [median, largest] = wall_aspect_ratios(r.mesh.mesh, 4, r.mesh.input_vertex_count);
+    print("naca0012, uniform sampling", r, median, largest);
+    EXPECT_EQ(quality(r).above_150_degrees, 0u);
+    EXPECT_GE(median, 500.0);
+}
+
+TEST(StretchedDelaunay2d, BadOptionsAreInputErrors) {
+    const Domain domain(gen::SampleDomain::Naca0012, 0);
+    const gen::MeshDomain2 mesh_domain(domain.pslg());
+    gen::StretchedDelaunayOptions2 options;
+    options.first_height = 0;
+    EXPECT_THROW(gen::stretched_delaunay_2d(mesh_domain, options), exactmesh::InputError);
+    options.first_height = 1e-3;
+    options.growth = 0.5;
+    EXPECT_THROW(gen::stretched_delaunay_2d(mesh_domain, options), exactmesh::InputError);
+    // An airfoil of 4000 wall vertices with 10000 uniform layers of 1e-9 each: 4 10^7 points,
+    // refused before any point is made.
+    const Domain fine(gen::SampleDomain::Naca0012, 0, gen::SizeFunction::uniform(5e-4));
+    const gen::MeshDomain2 fine_domain(fine.pslg());
+    options.growth = 1;
+    options.first_height = 1e-9;
+    options.max_layers = 10000;
+    try {
+        gen::stretched_delaunay_2d(fine_domain, options);
+        FAIL() << "no error";
+    } catch (const exactmesh::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("ask for"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
