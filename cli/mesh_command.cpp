@@ -155,7 +155,13 @@ void run_mesh(const MeshArguments& arguments) {
     }
     const bool layered = generator.honours.contains(gen::MeshOption::Layers);
     if (!layered && (!arguments.layers.empty() || arguments.quads)) {
-        throw InputError("--layers and --quads apply to --generator advancing-layers only, not " +
+        throw InputError(
+            "--layers and --quads apply to --generator advancing-layers (and --layers to "
+            "stretched-delaunay) only, not " +
+            std::string(generator.name));
+    }
+    if (arguments.quads && generator.name != "advancing-layers") {
+        throw InputError("--quads applies to --generator advancing-layers only, not " +
                          std::string(generator.name));
     }
     if (layered && arguments.layers.empty()) {
@@ -421,7 +427,8 @@ void add_mesh_command(CLI::App& app) {
     command
         ->add_option(
             "--layers", arguments->layers,
-            "advancing-layers only (and required there): boundary layers on the walls "
+            "advancing-layers and stretched-delaunay only (and required there): boundary "
+            "layers on the walls "
             "(every hole loop: the airfoils of the built-in domains): the first layer's "
             "thickness, the growth ratio in [1, 10], and at most MAX_LAYERS layers (1 to " +
                 std::to_string(gen::kMaxLayers) +

@@ -32,6 +32,11 @@ using predicates::Sign;
 
 namespace {
 
+/// The point budget of the O-meshes and of the far field, each.
+std::uint64_t point_budget(const StretchedDelaunayOptions2& o) {
+    return o.max_points != 0 ? o.max_points : kStretchedPointBudget;
+}
+
 constexpr std::uint32_t kNoComponent = 0xFFFFFFFFu;
 
 /// (x, y) over its scale-free length; (0, 0) for the zero vector.
@@ -240,11 +245,11 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
             }
         }
     }
-    if (count > kStretchedPointBudget) {
+    if (count > point_budget(o)) {
         throw InputError("stretched Delaunay: the layers (first height " +
                          format_number(o.first_height) + ", growth " + format_number(o.growth) +
                          ") ask for " + std::to_string(count) + " points, more than " +
-                         std::to_string(kStretchedPointBudget));
+                         std::to_string(point_budget(o)));
     }
     std::vector<AddedPoint> points;
     points.reserve(count);
@@ -415,10 +420,10 @@ std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
             continue;
         }
         centres.push_back({cx, cy});
-        if (centres.size() > kStretchedPointBudget) {
+        if (centres.size() > point_budget(o)) {
             throw InputError("stretched Delaunay: the far-field size (" + size.describe() +
                              ") asks for more than " +
-                             format_approximate(static_cast<double>(kStretchedPointBudget)) +
+                             format_approximate(static_cast<double>(point_budget(o))) +
                              " points");
         }
     }
@@ -663,7 +668,8 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
 
     // Steps 1 and 2.
     std::vector<AddedPoint> omesh = omesh_points(located, locator, walls, options, counters);
-    omesh = drop_overlaps(located, walls, std::move(omesh), options.first_height, counters);
+    if (!omesh.empty())
+        omesh = drop_overlaps(located, walls, std::move(omesh), options.first_height, counters);
     const std::vector<AddedPoint> far =
         far_field_points(located, locator, boundary.xy, omesh, size, options, counters);
 
@@ -693,7 +699,10 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
         metrics[v] = isotropic(size(xy[2 * std::size_t{v}], xy[2 * std::size_t{v} + 1]));
     for (const Wall& wall : walls) {
         for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
-            metrics[wall.vertices[i]] = wall_metric(wall, i, options.first_height);
+            // No layers (max_layers 0): the wall is boundary like any other, sized isotropically.
+            metrics[wall.vertices[i]] = options.max_layers > 0
+                                            ? wall_metric(wall, i, options.first_height)
+                                            : isotropic(wall.spacing[i]);
             weights[wall.vertices[i]] = 0;
         }
     }

@@ -87,6 +87,9 @@ struct StretchedDelaunayOptions2 {
     /// A far-field point is dropped when an O-mesh or boundary point lies closer than this many
     /// far-field sizes (finite in (0, 1]).
     double far_field_spacing = 0.7;
+    /// The most points of the O-meshes, and of the far field, each (0: kStretchedPointBudget);
+    /// counted before the points are made (an InputError beyond it).
+    std::uint64_t max_points = 0;
 };
 
 struct StretchedDelaunayCounters2 {

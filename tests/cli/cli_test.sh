@@ -1017,7 +1017,7 @@ assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/$file" "$quad
   expect_error 2 'expected FIRST_HEIGHT,GROWTH\[,MAX_LAYERS\]' \
     mesh --domain naca0012 --generator advancing-layers --layers 1e-4 -o "$work/x.vtu"
   expect_error 2 'needs --layers' mesh --domain naca0012 --generator advancing-layers -o "$work/x.vtu"
-  expect_error 2 'apply to --generator advancing-layers only, not frontal' \
+  expect_error 2 'apply to --generator advancing-layers .*only, not frontal' \
     mesh --domain naca0012 --generator frontal --layers 1e-4,1.2 -o "$work/x.vtu"
   expect_error 2 '--smooth would move the layers' \
     mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2 --smooth 2 -o "$work/x.vtu"

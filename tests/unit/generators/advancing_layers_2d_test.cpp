@@ -165,8 +165,10 @@ bool layer_angles_at_most_150(const tri::Triangulation2& mesh, std::uint64_t cou
 }  // namespace
 
 TEST(Generators_AdvancingLayers2, CircularHoleHasLayersAllAroundWithoutCorners) {
-    const int n =
-        std::max(16, static_cast<int>(64 * std::min(1.0, exactmesh::testing::test_scale())));
+    // 64 wall vertices whatever EXACTMESH_TEST_SCALE says: with 16 (the sanitizer pass's 0.02)
+    // the stacks of the coarse circle collide before any reaches aspect ratio 1, which is what
+    // this test is about; the domain is small either way.
+    const int n = 64;
     Input in = square(1);
     add_circle(in, 0, 0, 0.25, n);
     for (const bool quads : {false, true}) {
