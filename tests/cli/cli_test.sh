@@ -1094,6 +1094,16 @@ mesh_metric_delaunay() {
   expect_error 2 "the metric \(expression 1e16;0;1e16\) asks for about .* triangles" \
     mesh --domain key --generator metric-delaunay -o "$work/x.ele" --metric '1e16;0;1e16'
   [[ ! -e "$work/x.ele" ]] || fail "a refused run wrote its output"
+  # stretched-delaunay: O-meshes about the airfoil, its counters, no triangle above 150 degrees.
+  run 0 mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 -o "$work/sd.vtu" \
+    --stats --quality --metric '1;0;1' || return
+  for counter in components omesh_points outside_domain overlap_dropped points swaps reswaps smoothing_moves flat_swaps; do
+    grep -Eq "^$counter: [0-9]+$" "$work/out" || fail "no $counter: $(cat "$work/out")"
+  done
+  grep -Eq '^quality.above_150_degrees: 0 of [0-9]+ triangles$' "$work/out" || fail "flat triangles: $(cat "$work/out")"
+  expect_error 2 "needs --layers" mesh --domain naca0012 --generator stretched-delaunay -o "$work/x.ele"
+  expect_error 2 "--quads applies to --generator advancing-layers only, not stretched-delaunay" \
+    mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 --quads -o "$work/x.vtu"
 }
 
 case "$case_name" in
