@@ -13,6 +13,7 @@
 #include "base/number_text.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/sizing/size_function.hpp"
+#include "generators/stretched/metric_mesh_edits_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
@@ -50,16 +51,6 @@ EdgeLength edge_length(double lp, double lq) {
     if (std::fabs(r - 1) < 1e-6) return {0.5 * (lp + lq), 0.5};
     const double log_r = std::log(r);
     return {(lq - lp) / log_r, std::log(0.5 * (1 + r)) / log_r};
-}
-
-/// {M11, M12, M22} of `m` times h_ref^2 (h_ref > 0): entries in a common scale for every vertex
-/// of one mesh, no squared size taken (only ratios h_ref / h, at most 1 when h_ref is the
-/// smallest size).
-std::array<double, 3> scaled_matrix(const Metric2& m, double h_ref) {
-    const double a = h_ref / m.h1, b = h_ref / m.h2;
-    const double a2 = a * a, b2 = b * b;
-    return {m.c * m.c * a2 + m.s * m.s * b2, m.c * m.s * (a2 - b2),
-            m.s * m.s * a2 + m.c * m.c * b2};
 }
 
 /// sqrt(det M) times the area of the triangle (p, q, r), the metric at its centroid, summed over
@@ -218,22 +209,25 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
     restore_input_terms(boundary_, out);
     tri::Triangulation2& mesh = out.mesh;
     if (options_.swap && mesh.triangle_count() > 0) {
-        // Every vertex's matrix in one common scale: the smallest size of all.
         std::vector<Metric2> at(mesh.vertex_count());
-        double h_ref = std::numeric_limits<double>::infinity();
-        for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v) {
+        for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v)
             at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
-            h_ref = std::min({h_ref, at[v].h1, at[v].h2});
-        }
-        std::vector<double> matrices(3 * std::size_t{mesh.vertex_count()});
-        for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v) {
-            const std::array<double, 3> m = scaled_matrix(at[v], h_ref);
-            std::copy(m.begin(), m.end(), matrices.begin() + 3 * std::ptrdiff_t{v});
-        }
-        const tri::EdgeSwapCounters swapped =
-            tri::swap_edges_2d(mesh, tri::MetricInEllipse{matrices});
+        tri::EdgeSwapCounters swapped = metric_swaps_2d(mesh, at);
         result.counters.swaps = swapped.swaps;
         result.counters.swap_budget_hits = swapped.budget_stops;
+        // Smoothing of the inserted points (the boundary's stay), each followed by swaps.
+        const std::vector<double> relax(mesh.vertex_count(), 0.5);
+        const auto first_inserted = static_cast<tri::VertIdx>(boundary_.xy.size() / 2);
+        for (int pass = 0; pass < options_.smoothing_passes; ++pass) {
+            const PointSmoothingCounters2 smoothed = smooth_metric_points_2d(
+                mesh, at, relax, 0.3, MoveLimit::MetricLength, first_inserted, true);
+            result.counters.smoothing_moves += smoothed.moves;
+            for (tri::VertIdx v = first_inserted; v < mesh.vertex_count(); ++v)
+                at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
+            swapped = metric_swaps_2d(mesh, at);
+            result.counters.swaps += swapped.swaps;
+            result.counters.swap_budget_hits += swapped.budget_stops;
+        }
     }
     return result;
 }

@@ -18,7 +18,8 @@
 //  4. Lawson swapping of the unconstrained edges by in_ellipse under the mean of the four
 //     vertices' metrics (the same metric for both diagonals of a quadrilateral, so each decision
 //     is one exact test), with a budget of swaps per edge because a varying metric has no global
-//     potential to guarantee termination.
+//     potential to guarantee termination; then passes of point smoothing and swaps
+//     (metric_mesh_edits_2d.hpp).
 // Every input vertex and segment survives (the segments as chains of pieces, the boundary's
 // points within rounding of them, as for every generator here). Metric lengths are computed
 // without squared lengths (metric_length: hypot in the metric's frame), so a domain and its
@@ -47,8 +48,12 @@ struct MetricDelaunayOptions2 {
     /// Largest number of points inserted in the interior (0: kDefaultMetricPointBudget); the
     /// estimate of the mesh's size is checked against it before any work.
     std::uint64_t max_steiner_points = 0;
-    /// In-ellipse swapping after the insertion passes.
+    /// In-ellipse swapping after the insertion passes, then point smoothing.
     bool swap = true;
+    /// Passes of smoothing the inserted points (each a move half way to the metric-weighted
+    /// centroid of the neighbours, at most 0.3 in the metric, kept only when no triangle
+    /// inverts, exact), each followed by swaps; 0: none.
+    int smoothing_passes = 2;
     triangulation::Cdt2Options cdt;
 };
 
@@ -65,11 +70,12 @@ struct MetricDelaunayCounters2 {
     std::uint64_t cavity_corrections = 0;  ///< cavities reduced to be star-shaped
     std::uint64_t swaps = 0;               ///< in-ellipse swaps
     std::uint64_t swap_budget_hits = 0;    ///< edges whose swap budget ran out
+    std::uint64_t smoothing_moves = 0;     ///< point moves kept
 };
 
-inline constexpr std::array kMetricDelaunayCounterNames =
-    EM_COUNTER_TABLE(MetricDelaunayCounters2, boundary_points, passes, proposals, too_close,
-                     inserted, rejected, cavity_corrections, swaps, swap_budget_hits);
+inline constexpr std::array kMetricDelaunayCounterNames = EM_COUNTER_TABLE(
+    MetricDelaunayCounters2, boundary_points, passes, proposals, too_close, inserted, rejected,
+    cavity_corrections, swaps, swap_budget_hits, smoothing_moves);
 static_assert(counter_table_complete(kMetricDelaunayCounterNames));
 
 struct MetricDelaunayResult2 {

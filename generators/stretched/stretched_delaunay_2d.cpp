@@ -18,6 +18,7 @@
 #include "base/number_text.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/stretched/metric_mesh_edits_2d.hpp"
 #include "generators/stretched/metric_smoothing_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
@@ -192,15 +193,6 @@ class SortedPoints {
     };
     std::vector<Item> items_;
 };
-
-/// {M11, M12, M22} of `m` times h_ref^2: one common scale for a mesh's vertices (h_ref its
-/// smallest size, so every ratio h_ref / h is at most 1 and no square overflows).
-std::array<double, 3> common_scale_matrix(const Metric2& m, double h_ref) {
-    const double a = h_ref / m.h1, b = h_ref / m.h2;
-    const double a2 = a * a, b2 = b * b;
-    return {m.c * m.c * a2 + m.s * m.s * b2, m.c * m.s * (a2 - b2),
-            m.s * m.s * a2 + m.c * m.c * b2};
-}
 
 void check_options(const StretchedDelaunayOptions2& o) {
     const auto fail = [](const std::string& what, double value) {
@@ -423,8 +415,7 @@ std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
         if (centres.size() > point_budget(o)) {
             throw InputError("stretched Delaunay: the far-field size (" + size.describe() +
                              ") asks for more than " +
-                             format_approximate(static_cast<double>(point_budget(o))) +
-                             " points");
+                             format_approximate(static_cast<double>(point_budget(o))) + " points");
         }
     }
     counters.far_field_candidates = centres.size();
@@ -453,85 +444,6 @@ std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
 }
 
 /// Lawson swapping by in-ellipse under the quadrilaterals' mean metrics.
-tri::EdgeSwapCounters metric_swaps(tri::Triangulation2& mesh, std::span<const Metric2> metrics) {
-    double h_ref = std::numeric_limits<double>::infinity();
-    for (const Metric2& m : metrics) h_ref = std::min({h_ref, m.h1, m.h2});
-    std::vector<double> matrices(3 * metrics.size());
-    for (std::size_t v = 0; v < metrics.size(); ++v) {
-        const std::array<double, 3> m = common_scale_matrix(metrics[v], h_ref);
-        std::copy(m.begin(), m.end(), matrices.begin() + 3 * static_cast<std::ptrdiff_t>(v));
-    }
-    return tri::swap_edges_2d(mesh, tri::MetricInEllipse{matrices});
-}
-
-/// Step 7, one pass (Gauss-Seidel in vertex order): vertices from `first_movable` on move
-/// towards the centroid of their neighbours weighted by the edges' metric lengths (the mean of
-/// the lengths in both ends' metrics), relaxed by `relax[v]` and limited to `move_limit` times
-/// the smallest size of its metric; a move stays only when every
-/// triangle at the vertex stays strictly counter-clockwise (exact orient2d).
-void smooth_points(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
-                   std::span<const double> relax, double move_limit, tri::VertIdx first_movable,
-                   StretchedDelaunayCounters2& counters) {
-    const std::uint32_t nv = mesh.vertex_count();
-    std::vector<std::uint32_t> start(std::size_t{nv} + 1, 0);
-    for (const tri::VertIdx v : mesh.triangles) ++start[v + 1];
-    for (std::uint32_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    std::vector<std::uint32_t> star(mesh.triangles.size());
-    {
-        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-        for (std::uint32_t i = 0; i < mesh.triangles.size(); ++i)
-            star[fill[mesh.triangles[i]]++] = i / 3;
-    }
-    for (tri::VertIdx v = first_movable; v < nv; ++v) {
-        if (start[v] == start[v + 1] || !(relax[v] > 0)) continue;
-        const double px = mesh.xy[2 * std::size_t{v}], py = mesh.xy[2 * std::size_t{v} + 1];
-        double sum_w = 0, sum_x = 0, sum_y = 0;
-        for (std::uint32_t j = start[v]; j < start[v + 1]; ++j) {
-            const tri::TriIdx t = star[j];
-            // Each neighbour once: the one after v in each counter-clockwise triangle (an
-            // interior vertex's star is closed, so this visits each neighbour exactly once).
-            unsigned k = 0;
-            while (mesh.triangles[3 * t + k] != v) ++k;
-            const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
-            const double dx = mesh.point(u)[0] - px, dy = mesh.point(u)[1] - py;
-            const double w =
-                0.5 * (metric_length(metrics[v], dx, dy) + metric_length(metrics[u], dx, dy));
-            sum_w += w;
-            sum_x += w * dx;
-            sum_y += w * dy;
-        }
-        if (!(sum_w > 0)) continue;
-        double dx = relax[v] * (sum_x / sum_w), dy = relax[v] * (sum_y / sum_w);
-        // A long edge (a triangle across several layers) weighs much and would drag the point
-        // by a large part of its cell, and in a stretched cell a shift along the wall by more
-        // than a fraction of the thickness shears it into an obtuse triangle: the move is
-        // limited to `move_limit` times the point's smallest size, in every direction.
-        const double step = scale_free_norm(dx, dy) / std::min(metrics[v].h1, metrics[v].h2);
-        if (step > move_limit) {
-            dx *= move_limit / step;
-            dy *= move_limit / step;
-        }
-        const double q[2] = {px + dx, py + dy};
-        if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || (q[0] == px && q[1] == py)) continue;
-        bool valid = true;
-        for (std::uint32_t j = start[v]; j < start[v + 1] && valid; ++j) {
-            const tri::TriIdx t = star[j];
-            const double* corner[3];
-            for (unsigned k = 0; k < 3; ++k) {
-                const tri::VertIdx w = mesh.triangles[3 * t + k];
-                corner[k] = w == v ? q : mesh.point(w);
-            }
-            valid = predicates::orient2d(corner[0], corner[1], corner[2]) == Sign::Positive;
-        }
-        if (!valid) {
-            ++counters.smoothing_refused;
-            continue;
-        }
-        mesh.xy[2 * std::size_t{v}] = q[0];
-        mesh.xy[2 * std::size_t{v} + 1] = q[1];
-        ++counters.smoothing_moves;
-    }
-}
 
 /// Replaces the side k of triangle t (from v[k] to v[k+1]) by the other diagonal of its
 /// quadrilateral with the neighbour across it, keeping the neighbours and the constraint flags
@@ -728,13 +640,16 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
     // Steps 5 to 7.
     if (mesh.triangle_count() > 0) {
         smooth_vertex_metrics(mesh, metrics, options.metric_smoothing_passes, 0, weights);
-        tri::EdgeSwapCounters swapped = metric_swaps(mesh, metrics);
+        tri::EdgeSwapCounters swapped = metric_swaps_2d(mesh, metrics);
         counters.swaps = swapped.swaps;
         counters.swap_budget_hits = swapped.budget_stops;
         for (int pass = 0; pass < options.point_smoothing_passes; ++pass) {
-            smooth_points(mesh, metrics, weights, options.point_move_limit, boundary_count,
-                          counters);
-            swapped = metric_swaps(mesh, metrics);
+            const PointSmoothingCounters2 smoothed =
+                smooth_metric_points_2d(mesh, metrics, weights, options.point_move_limit,
+                                        MoveLimit::SmallestSize, boundary_count);
+            counters.smoothing_moves += smoothed.moves;
+            counters.smoothing_refused += smoothed.refused;
+            swapped = metric_swaps_2d(mesh, metrics);
             counters.reswaps += swapped.swaps;
             counters.swap_budget_hits += swapped.budget_stops;
         }

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+// Metric swaps and point smoothing of a finished mesh (see metric_mesh_edits_2d.hpp).
+#include "generators/stretched/metric_mesh_edits_2d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "predicates/orient2d.hpp"
+#include "predicates/power_of_two.hpp"
+
+namespace exactmesh::generators {
+
+namespace tri = triangulation;
+using predicates::Sign;
+
+namespace {
+
+constexpr double kUnitLow = 0.7071067811865476 * (1 - 1e-12);
+constexpr double kUnitHigh = 1.4142135623730951 * (1 + 1e-12);
+
+/// {M11, M12, M22} of `m` times h_ref^2: one common scale for a mesh's vertices (h_ref its
+/// smallest size, so every ratio h_ref / h is at most 1 and no square overflows).
+std::array<double, 3> common_scale_matrix(const Metric2& m, double h_ref) {
+    const double a = h_ref / m.h1, b = h_ref / m.h2;
+    const double a2 = a * a, b2 = b * b;
+    return {m.c * m.c * a2 + m.s * m.s * b2, m.c * m.s * (a2 - b2),
+            m.s * m.s * a2 + m.c * m.c * b2};
+}
+
+}  // namespace
+
+tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics) {
+    double h_ref = std::numeric_limits<double>::infinity();
+    for (const Metric2& m : metrics) h_ref = std::min({h_ref, m.h1, m.h2});
+    std::vector<double> matrices(3 * metrics.size());
+    for (std::size_t v = 0; v < metrics.size(); ++v) {
+        const std::array<double, 3> m = common_scale_matrix(metrics[v], h_ref);
+        std::copy(m.begin(), m.end(), matrices.begin() + 3 * static_cast<std::ptrdiff_t>(v));
+    }
+    return tri::swap_edges_2d(mesh, tri::MetricInEllipse{matrices});
+}
+
+PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
+                                                std::span<const Metric2> metrics,
+                                                std::span<const double> relax, double limit,
+                                                MoveLimit limit_kind, tri::VertIdx first_movable,
+                                                bool keep_unit_edges) {
+    PointSmoothingCounters2 counters;
+    const std::uint32_t nv = mesh.vertex_count();
+    std::vector<std::uint32_t> start(std::size_t{nv} + 1, 0);
+    for (const tri::VertIdx v : mesh.triangles) ++start[v + 1];
+    for (std::uint32_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    std::vector<std::uint32_t> star(mesh.triangles.size());
+    {
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::uint32_t i = 0; i < mesh.triangles.size(); ++i)
+            star[fill[mesh.triangles[i]]++] = i / 3;
+    }
+    for (tri::VertIdx v = first_movable; v < nv; ++v) {
+        if (start[v] == start[v + 1] || !(relax[v] > 0)) continue;
+        const double px = mesh.xy[2 * std::size_t{v}], py = mesh.xy[2 * std::size_t{v} + 1];
+        double sum_w = 0, sum_x = 0, sum_y = 0;
+        for (std::uint32_t j = start[v]; j < start[v + 1]; ++j) {
+            const tri::TriIdx t = star[j];
+            // Each neighbour once: the one after v in each counter-clockwise triangle (an
+            // interior vertex's star is closed, so this visits each neighbour exactly once).
+            unsigned k = 0;
+            while (mesh.triangles[3 * t + k] != v) ++k;
+            const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
+            const double dx = mesh.point(u)[0] - px, dy = mesh.point(u)[1] - py;
+            const double w =
+                0.5 * (metric_length(metrics[v], dx, dy) + metric_length(metrics[u], dx, dy));
+            sum_w += w;
+            sum_x += w * dx;
+            sum_y += w * dy;
+        }
+        if (!(sum_w > 0)) continue;
+        double dx = relax[v] * (sum_x / sum_w), dy = relax[v] * (sum_y / sum_w);
+        // A long edge (a triangle across several layers) weighs much and would drag the point
+        // by a large part of its cell, and in a stretched cell a shift along the wall by more
+        // than a fraction of the thickness shears it into an obtuse triangle: the move is
+        // limited (MoveLimit).
+        const double step =
+            limit_kind == MoveLimit::SmallestSize
+                ? predicates::scale_free_norm(dx, dy) / std::min(metrics[v].h1, metrics[v].h2)
+                : metric_length(metrics[v], dx, dy);
+        if (step > limit) {
+            dx *= limit / step;
+            dy *= limit / step;
+        }
+        const double q[2] = {px + dx, py + dy};
+        if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || (q[0] == px && q[1] == py)) continue;
+        bool valid = true;
+        for (std::uint32_t j = start[v]; j < start[v + 1] && valid; ++j) {
+            const tri::TriIdx t = star[j];
+            const double* corner[3];
+            for (unsigned k = 0; k < 3; ++k) {
+                const tri::VertIdx w = mesh.triangles[3 * t + k];
+                corner[k] = w == v ? q : mesh.point(w);
+            }
+            valid = predicates::orient2d(corner[0], corner[1], corner[2]) == Sign::Positive;
+        }
+        if (valid && keep_unit_edges) {
+            // The star's edges of unit metric length ([1/sqrt 2, sqrt 2], as the quality report
+            // counts them) may not become fewer: smoothing is for shape, not at lengths' cost.
+            const auto unit_edges = [&](double x, double y) {
+                int count = 0;
+                for (std::uint32_t j = start[v]; j < start[v + 1]; ++j) {
+                    const tri::TriIdx t = star[j];
+                    unsigned k = 0;
+                    while (mesh.triangles[3 * t + k] != v) ++k;
+                    const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
+                    const double ex = mesh.point(u)[0] - x, ey = mesh.point(u)[1] - y;
+                    const double l = 0.5 * (metric_length(metrics[v], ex, ey) +
+                                            metric_length(metrics[u], ex, ey));
+                    if (l >= kUnitLow && l <= kUnitHigh) ++count;
+                }
+                return count;
+            };
+            valid = unit_edges(q[0], q[1]) >= unit_edges(px, py);
+        }
+        if (!valid) {
+            ++counters.refused;
+            continue;
+        }
+        mesh.xy[2 * std::size_t{v}] = q[0];
+        mesh.xy[2 * std::size_t{v} + 1] = q[1];
+        ++counters.moves;
+    }
+    return counters;
+}
+
+}  // namespace exactmesh::generators
