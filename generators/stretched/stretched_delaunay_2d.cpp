@@ -425,7 +425,9 @@ std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
     for (const AddedPoint& p : omesh) near.add(p.x, p.y, 0);
     near.sort();
     std::vector<AddedPoint> kept;
-    for (const auto& [x, y] : centres) {
+    for (const auto& centre : centres) {
+        // Named copies, not structured bindings: a lambda may not capture those (clang 14).
+        const double x = centre[0], y = centre[1];
         const double r = o.far_field_spacing * size(x, y);
         const bool drop = !strictly_inside(domain_mesh, locator, x, y) ||
                           near.any_near(x, y, r, [&](double qx, double qy, std::uint32_t) {
