@@ -138,6 +138,15 @@ std::vector<double> adaptive_spaced_parameters(const Curve2& curve, double u0, d
             }
             u.push_back(in.b.u);
             cumulative.push_back(cumulative.back() + (std::isfinite(mid.s) ? length / mid.s : 0.0));
+            // A size far below its values at the start intervals' ends would bisect for minutes
+            // before the piece count's check: the samples are capped as the uniform sampling's.
+            if (u.size() > std::size_t{1} << 24) {
+                throw InputError(
+                    "boundary discretization: the size function needs more than 2^24 samples on "
+                    "one curve or segment (size " +
+                    format_number(mid.s) + " near (" + format_number(mid.p[0]) + ", " +
+                    format_number(mid.p[1]) + "))");
+            }
         }
         left = right;
         check_piece_count(cumulative.back(), curve, u0, size);

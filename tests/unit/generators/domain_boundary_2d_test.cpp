@@ -480,3 +480,23 @@ TEST(DomainBoundary2, SizeFromBoundaryFollowsTheInputSpacing) {
     open.segments = {0, 1, 1, 2};
     EXPECT_THROW(gen::size_from_boundary(open.pslg()), exactmesh::InputError);
 }
+
+TEST(DomainBoundary2d, APerPieceSizeWithANarrowDeepDipIsRefusedWithoutBisectingForMinutes) {
+    // The size is 1 except in a band 1e-4 wide on the bottom side where it is 1e-12, away from
+    // the side's ends and middle (the up-front estimate reads those) around one of the adaptive
+    // sampling's first samples (x = 20/64): covering the band at a
+    // quarter of the size would take 4 10^8 samples; the sampling stops at 2^24 with an error.
+    const std::vector<double> xy = {0, 0, 1, 0, 1, 1, 0, 1};
+    const std::vector<tri::VertIdx> segments = {0, 1, 1, 2, 2, 3, 3, 0};
+    const gen::MeshDomain2 domain(tri::Pslg{xy, segments, {}, {}});
+    const gen::SizeFunction dip = gen::SizeFunction::analytic(
+        [](double x, double y) { return y == 0 && std::fabs(x - 0.3125) < 5e-5 ? 1e-12 : 1.0; },
+        "a narrow dip");
+    try {
+        gen::discretize_domain_boundary(domain, [&](const double*, const double*) { return dip; });
+        FAIL() << "no error";
+    } catch (const exactmesh::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("more than 2^24 samples"), std::string::npos)
+            << e.what();
+    }
+}
