@@ -13,6 +13,8 @@
 #include <numbers>
 #include <vector>
 
+#include "base/number_text.hpp"
+
 namespace exactmesh::generators {
 
 namespace {
@@ -27,19 +29,6 @@ double corner_degrees(const double* o, const double* p, const double* q) {
         wx = std::ldexp(wx, shift), wy = std::ldexp(wy, shift);
     }
     return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * (180.0 / std::numbers::pi);
-}
-
-double median_of(std::vector<double>& values) {
-    if (values.empty()) return 0;
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
-
-std::string fixed(double value, int digits = 6) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", digits, value);
-    return text;
 }
 
 }  // namespace
@@ -112,9 +101,9 @@ std::string quality_report_text(const QualityReport2& r) {
     std::string text;
     text += "quality.triangles: " + std::to_string(r.triangles) + "\n";
     text += "quality.vertices: " + std::to_string(r.vertices) + "\n";
-    text += "quality.min_angle: " + fixed(r.min_angle) + "\n";
-    text += "quality.max_angle: " + fixed(r.max_angle) + "\n";
-    text += "quality.mean_min_angle: " + fixed(r.mean_min_angle) + "\n";
+    text += "quality.min_angle: " + format_fixed(r.min_angle) + "\n";
+    text += "quality.max_angle: " + format_fixed(r.max_angle) + "\n";
+    text += "quality.mean_min_angle: " + format_fixed(r.mean_min_angle) + "\n";
     text += "quality.angle_histogram:";
     for (std::size_t k = 0; k < r.angle_histogram.size(); ++k) {
         char bin[64];
@@ -123,16 +112,16 @@ std::string quality_report_text(const QualityReport2& r) {
         text += bin;
     }
     text += "\n";
-    text += "quality.radius_edge: min " + fixed(r.radius_edge_min) + " median " +
-            fixed(r.radius_edge_median) + " max " + fixed(r.radius_edge_max) + "\n";
+    text += "quality.radius_edge: min " + format_fixed(r.radius_edge_min) + " median " +
+            format_fixed(r.radius_edge_median) + " max " + format_fixed(r.radius_edge_max) + "\n";
     if (r.has_size) {
-        text += "quality.size_conformity: min " + fixed(r.size_ratio_min) + " median " +
-                fixed(r.size_ratio_median) + " max " + fixed(r.size_ratio_max) +
+        text += "quality.size_conformity: min " + format_fixed(r.size_ratio_min) + " median " +
+                format_fixed(r.size_ratio_median) + " max " + format_fixed(r.size_ratio_max) +
                 " (edge length / size at its midpoint, " + std::to_string(r.edges) + " edges)\n";
     } else {
         text += "quality.size_conformity: none (no size function)\n";
     }
-    text += "quality.seconds: " + fixed(r.seconds) + "\n";
+    text += "quality.seconds: " + format_fixed(r.seconds) + "\n";
     return text;
 }
 

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "base/number_text.hpp"
 #include "generators/topology/mesh_edges.hpp"
 #include "predicates/power_of_two.hpp"
 
@@ -18,19 +19,6 @@ namespace {
 
 using predicates::PowerOfTwo;
 using triangulation::VertIdx;
-
-double median_of(std::vector<double>& values) {
-    if (values.empty()) return 0;
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
-
-std::string fixed(double value, int digits = 6) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", digits, value);
-    return text;
-}
 
 /// Three edge vectors (ex[k], ey[k]) scaled exactly by the power of two that brings their
 /// largest component to [1, 2) (unchanged when all are zero or one is not finite).
@@ -152,12 +140,13 @@ MetricQualityReport2 metric_quality_report_2d(std::span<const double> xy,
 
 std::string metric_quality_report_text(const MetricQualityReport2& r) {
     std::string text;
-    text += "quality.metric_edge_length: min " + fixed(r.length_min) + " median " +
-            fixed(r.length_median) + " max " + fixed(r.length_max) + " (" +
-            std::to_string(r.edges) + " edges, " + fixed(100 * r.unit_length_share, 2) +
+    text += "quality.metric_edge_length: min " + format_fixed(r.length_min) + " median " +
+            format_fixed(r.length_median) + " max " + format_fixed(r.length_max) + " (" +
+            std::to_string(r.edges) + " edges, " + format_fixed(100 * r.unit_length_share, 2) +
             "% in [1/sqrt2, sqrt2])\n";
-    text += "quality.metric_shape: min " + fixed(r.shape_min) + " median " + fixed(r.shape_median) +
-            " mean " + fixed(r.shape_mean) + " (mean ratio in the metric, 1 = equilateral)\n";
+    text += "quality.metric_shape: min " + format_fixed(r.shape_min) + " median " +
+            format_fixed(r.shape_median) + " mean " + format_fixed(r.shape_mean) +
+            " (mean ratio in the metric, 1 = equilateral)\n";
     text += "quality.max_angle_histogram:";
     for (std::size_t k = 0; k < r.max_angle_histogram.size(); ++k) {
         char bin[64];
@@ -168,8 +157,8 @@ std::string metric_quality_report_text(const MetricQualityReport2& r) {
     text += "\n";
     text += "quality.above_150_degrees: " + std::to_string(r.above_150_degrees) + " of " +
             std::to_string(r.triangles) + " triangles\n";
-    text += "quality.aspect_ratio: min " + fixed(r.aspect_min) + " median " +
-            fixed(r.aspect_median) + " max " + fixed(r.aspect_max) +
+    text += "quality.aspect_ratio: min " + format_fixed(r.aspect_min) + " median " +
+            format_fixed(r.aspect_median) + " max " + format_fixed(r.aspect_max) +
             " (longest edge / smallest altitude, 1.154701 = equilateral)\n";
     return text;
 }

@@ -56,6 +56,18 @@ void reserve(CdtState& cdt, std::uint32_t vertices) {
     cdt.cavity_stamp.reserve(slots);
 }
 
+/// A fresh cavity stamp (cdt.stamp, returned), with a stamp slot for every triangle slot; every
+/// slot is cleared when the counter wraps, so no triangle holds the new value by accident.
+std::uint32_t new_cavity_stamp(CdtState& cdt) {
+    if (cdt.cavity_stamp.size() < cdt.mesh.triangle_slots())
+        cdt.cavity_stamp.resize(cdt.mesh.triangle_slots(), 0);
+    if (++cdt.stamp == 0) {
+        std::fill(cdt.cavity_stamp.begin(), cdt.cavity_stamp.end(), 0u);
+        cdt.stamp = 1;
+    }
+    return cdt.stamp;
+}
+
 /// Replaces the cavity (cdt.cavity, stamped with cdt.stamp; its boundary half-edges in
 /// cdt.boundary, p strictly left of each) by the fan of triangles (u_i, v_i, p) around p, the
 /// new triangles on t's side of the domain.
@@ -121,12 +133,7 @@ CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
     if (!cdt.core.conflict(t, p)) return reject(CavityInsertion::NotInConflict);
 
     // The conflict zone, grown across unconstrained edges only.
-    if (cdt.cavity_stamp.size() < cdt.mesh.triangle_slots())
-        cdt.cavity_stamp.resize(cdt.mesh.triangle_slots(), 0);
-    if (++cdt.stamp == 0) {
-        std::fill(cdt.cavity_stamp.begin(), cdt.cavity_stamp.end(), 0u);
-        cdt.stamp = 1;
-    }
+    new_cavity_stamp(cdt);
     cdt.cavity.clear();
     cdt.boundary.clear();
     cdt.cavity.push_back(t);
@@ -251,15 +258,9 @@ CavityInsertion insert_in_metric_cavity(CdtState& cdt, TriIdx t, double x, doubl
             seeds[seed_count++] = across;
         }
     }
-    if (cdt.cavity_stamp.size() < cdt.mesh.triangle_slots())
-        cdt.cavity_stamp.resize(cdt.mesh.triangle_slots(), 0);
     // The conflict zone: grown from the seeds across unconstrained edges into every finite
     // triangle whose circumscribed ellipse (in the metric) holds p.
-    std::uint32_t grown = ++cdt.stamp;
-    if (grown == 0) {
-        std::fill(cdt.cavity_stamp.begin(), cdt.cavity_stamp.end(), 0u);
-        grown = cdt.stamp = 1;
-    }
+    const std::uint32_t grown = new_cavity_stamp(cdt);
     cdt.cavity.clear();
     for (std::size_t i = 0; i < seed_count; ++i) {
         cdt.cavity_stamp[seeds[i]] = grown;
