@@ -19,12 +19,25 @@
 // with metric length in [1/sqrt 2, sqrt 2], lengths in the log-Euclidean mean of the ends'
 // metrics), length_min/length_max, shape_median (metric mean ratio), above_150 (triangles with
 // an angle above 150 degrees), aspect_max.
+//
+// Boundary layers: BM_layers/<mesher>/naca0012/<first height>: advancing layers (the registry's
+// `advancing-layers`, layers split into triangles, the rest by frontal) against Gmsh's
+// BoundaryLayer field (Quads = 0, a fan at the trailing edge, its default Frontal-Delaunay for the
+// rest) with the same first height and growth 1.2, Gmsh's Thickness the height our tallest stack
+// reached, and the same size elsewhere on both sides (min(1, 0.02 + 0.1 r), r the distance from
+// mid-chord: our SizeFunction and a MathEval background field). Counters: triangles,
+// items_per_second, max_angle and above_150 over the whole mesh, aspect_max (longest edge over
+// the smallest altitude), wall_aspect (the wall's longest piece over the first height: what the
+// layers must reach at the wall), layers (ours: the most a stack reached; Gmsh's from its
+// thickness).
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,6 +45,7 @@
 #include "bench/gmsh_peer.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/stretched/metric_2d.hpp"
 #include "generators/stretched/metric_delaunay_2d.hpp"
 #include "generators/stretched/metric_field_2d.hpp"
@@ -168,6 +182,143 @@ void BM_metric_gmsh(benchmark::State& state, const Domain* domain, const MetricC
     report(state, mesh.xy, mesh.triangles, field);
 }
 
+// ---- boundary layers ----------------------------------------------------------------------
+
+constexpr double kLayerGrowth = 1.2;
+
+double layer_size(double x, double y) {
+    return std::min(1.0, 0.02 + 0.1 * std::hypot(x - 0.5, y));
+}
+
+void report_layers(benchmark::State& state, const std::vector<double>& xy,
+                   const std::vector<tri::VertIdx>& triangles, double first_height, double layers) {
+    const gen::MetricQualityReport2 q = gen::metric_quality_report_2d(
+        xy, triangles, gen::MetricField2::uniform(gen::metric_from_matrix(1, 0, 1)));
+    state.counters["triangles"] = static_cast<double>(q.triangles);
+    state.counters["max_angle"] = q.max_angle;
+    state.counters["above_150"] = static_cast<double>(q.above_150_degrees);
+    state.counters["aspect_max"] = q.aspect_max;
+    state.counters["layers"] = layers;
+    state.counters["first_height"] = first_height;
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) *
+                            static_cast<std::int64_t>(q.triangles));
+}
+
+/// A segment of the airfoil (both ends near the chord), not of the far field.
+bool on_airfoil(const Domain& d, std::size_t s) {
+    for (const tri::VertIdx v : {d.segments[2 * s], d.segments[2 * s + 1]}) {
+        if (d.xy[2 * v] < -0.5 || d.xy[2 * v] > 1.5 || std::fabs(d.xy[2 * v + 1]) > 0.5)
+            return false;
+    }
+    return true;
+}
+
+/// The wall's longest piece over the first height (the aspect ratio the first layer has there).
+double wall_aspect(const Domain& d, double first_height) {
+    double longest = 0;
+    for (std::size_t s = 0; s < d.segments.size() / 2; ++s) {
+        if (!on_airfoil(d, s)) continue;
+        const tri::VertIdx a = d.segments[2 * s], b = d.segments[2 * s + 1];
+        longest = std::max(
+            longest, std::hypot(d.xy[2 * b] - d.xy[2 * a], d.xy[2 * b + 1] - d.xy[2 * a + 1]));
+    }
+    return longest / first_height;
+}
+
+/// First height, most layers: the last reaches aspect ratio 10^4 at the wall (issue 14's goal).
+struct LayerCase {
+    double first_height;
+    std::uint32_t max_layers;
+};
+constexpr LayerCase kLayerCases[] = {{1e-4, 60}, {1e-5, 60}, {1e-6, 100}};
+
+gen::MeshOptions2 layer_options(const LayerCase& c) {
+    gen::MeshOptions2 options;
+    options.size = gen::SizeFunction::analytic(layer_size, "min(1, 0.02 + 0.1 r)");
+    options.layers.first_height = c.first_height;
+    options.layers.growth = kLayerGrowth;
+    options.layers.max_layers = c.max_layers;
+    return options;
+}
+
+/// Runs advancing layers once: the most layers a stack reached (Gmsh's thickness follows it).
+double our_layer_count(const Domain& d, const LayerCase& c) {
+    const gen::MeshDomain2 domain(tri::Pslg{d.xy, d.segments, d.holes, {}});
+    const gen::MeshRun2 run =
+        gen::find_mesh_generator_2d("advancing-layers").run_on_domain(domain, layer_options(c));
+    for (const auto& [name, value] : run.counters) {
+        if (name == "layers") return static_cast<double>(value);
+    }
+    throw std::runtime_error("advancing-layers reports no 'layers' counter");
+}
+
+void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCase* c) {
+    const gen::MeshDomain2 domain(tri::Pslg{d->xy, d->segments, d->holes, {}});
+    domain.triangulation();
+    const gen::MeshOptions2 options = layer_options(*c);
+    const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d("advancing-layers");
+    gen::MeshRun2 run;
+    for (auto _ : state) {
+        run = generator.run_on_domain(domain, options);
+        state.PauseTiming();
+        benchmark::DoNotOptimize(run);
+        state.ResumeTiming();
+    }
+    double layers = 0;
+    for (const auto& [name, value] : run.counters) {
+        if (name == "layers") layers = static_cast<double>(value);
+    }
+    report_layers(state, run.mesh.mesh.xy, run.mesh.mesh.triangles, c->first_height, layers);
+    state.counters["wall_aspect"] = wall_aspect(*d, c->first_height);
+}
+
+/// Gmsh's BoundaryLayer field on every airfoil segment, a fan at the trailing edge (the airfoil's
+/// rightmost vertex).
+std::string gmsh_layer_fields(const Domain& d, double first_height, double thickness) {
+    std::string curves;
+    tri::VertIdx trailing = 0;
+    double trailing_x = -INFINITY;
+    for (std::size_t s = 0; s < d.segments.size() / 2; ++s) {
+        if (!on_airfoil(d, s)) continue;
+        const tri::VertIdx a = d.segments[2 * s], b = d.segments[2 * s + 1];
+        curves += (curves.empty() ? "" : ", ") + std::to_string(s + 1);
+        for (const tri::VertIdx v : {a, b}) {
+            if (d.xy[2 * v] > trailing_x) trailing_x = d.xy[2 * v], trailing = v;
+        }
+    }
+    std::ostringstream geo;
+    geo.precision(17);
+    geo << "Field[1] = BoundaryLayer;\nField[1].CurvesList = {" << curves << "};\n"
+        << "Field[1].Size = " << first_height << ";\nField[1].Ratio = " << kLayerGrowth
+        << ";\nField[1].Thickness = " << thickness << ";\nField[1].Quads = 0;\n"
+        << "Field[1].FanPointsList = {" << trailing + 1 << "};\nBoundaryLayer Field = 1;\n"
+        << "Field[2] = MathEval;\nField[2].F = \"Min(1, 0.02 + 0.1 * Sqrt((x - 0.5)^2 + y^2))\";\n"
+        << "Background Field = 2;\nMesh.MeshSizeExtendFromBoundary = 0;\n"
+        << "Mesh.MeshSizeFromPoints = 0;\nMesh.MeshSizeFromCurvature = 0;\n";
+    return geo.str();
+}
+
+void BM_layers_gmsh(benchmark::State& state, const Domain* d, const LayerCase* c) {
+    const double first_height = c->first_height;
+    const double layers = our_layer_count(*d, *c);  // untimed
+    const double thickness =
+        first_height * (std::pow(kLayerGrowth, layers) - 1) / (kLayerGrowth - 1);
+    const std::string geo = exactmesh::bench::gmsh_pslg_geo(d->xy, d->segments) +
+                            gmsh_layer_fields(*d, first_height, thickness);
+    GmshMesh mesh;
+    for (auto _ : state) {
+        try {
+            mesh = exactmesh::bench::run_gmsh_geo(geo, gmsh_dir());
+        } catch (const std::exception& error) {
+            state.SkipWithError(error.what());
+            return;
+        }
+        state.SetIterationTime(mesh.cpu_seconds);
+    }
+    report_layers(state, mesh.xy, mesh.triangles, first_height, layers);
+    state.counters["wall_aspect"] = wall_aspect(*d, first_height);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -187,6 +338,23 @@ int main(int argc, char** argv) {
                     ->UseManualTime()
                     ->MinTime(0.5);
             }
+        }
+    }
+    static const Domain airfoil = naca0012();
+    for (const LayerCase& c : kLayerCases) {
+        char suffix[64];
+        std::snprintf(suffix, sizeof suffix, "/naca0012/%g", c.first_height);
+        benchmark::RegisterBenchmark((std::string("BM_layers/exactmesh") + suffix).c_str(),
+                                     BM_layers_exactmesh, &airfoil, &c)
+            ->Unit(benchmark::kMillisecond)
+            ->MinTime(0.5);
+        if (gmsh) {
+            benchmark::RegisterBenchmark(
+                (std::string("BM_layers/gmsh-boundary-layer") + suffix).c_str(), BM_layers_gmsh,
+                &airfoil, &c)
+                ->Unit(benchmark::kMillisecond)
+                ->UseManualTime()
+                ->MinTime(0.5);
         }
     }
     benchmark::Initialize(&argc, argv);
