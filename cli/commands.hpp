@@ -45,7 +45,8 @@ void add_swap_command(CLI::App& app);
 /// `exactmesh min-max IN.node -o OUT.ele [--stats]`.
 void add_min_max_command(CLI::App& app);
 
-/// `exactmesh swap3d IN.node IN.ele -o OUT.ele [--criterion C] [--quality] [--stats]` (TetGen files).
+/// `exactmesh swap3d IN.node IN.ele -o OUT.ele [--criterion C] [--quality] [--stats]` (TetGen
+/// files).
 void add_swap3d_command(CLI::App& app);
 
 /// `exactmesh adapt IN.poly|--domain NAME --field EXPR -o OUT [--method M] [--indicator I]

@@ -58,9 +58,10 @@ generators::SizeFunction size_from_expression(const std::string& expression) {
 }
 
 generators::MetricField2 metric_from_expression(const std::string& text) {
-    const std::string refusal = "--metric '" + text +
-                                "' is neither a readable metric file (.node with 3 attributes "
-                                "and its .ele) nor three expressions 'M11;M12;M22' in x and y";
+    const std::string refusal =
+        "--metric '" + text +
+        "' is neither a readable metric file (.node with 3 or 4 "
+        "attributes and its .ele) nor three expressions 'M11;M12;M22' in x and y";
     std::vector<std::string> parts(1);
     for (const char letter : text) {
         if (letter == ';')

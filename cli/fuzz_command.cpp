@@ -21,12 +21,12 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <string_view>
 #include <system_error>
 #include <utility>
-#include <span>
 #include <vector>
 
 #include "base/errors.hpp"
@@ -114,7 +114,6 @@ struct Case {
     std::vector<double> xy;
     std::size_t reference = 0;  ///< the algorithm the others are compared with
     std::vector<std::size_t> orders = std::vector<std::size_t>(kAlgorithms.size());  ///< kOrders
-
 
     tri::Delaunay2Options options(std::size_t algorithm) const {
         return tri::Delaunay2Options{kOrders[orders[algorithm]].order, seed};

@@ -63,9 +63,11 @@ int report_error(std::string_view message, int status) {
 int main(int argc, char** argv) {
     using namespace exactmesh::cli;
     try {
-        CLI::App app{"exactmesh: robust 2D Delaunay and constrained Delaunay triangulation, quality meshing and "
-                     "3D Delaunay tetrahedralization with exact predicates",
-                     "exactmesh"};
+        CLI::App app{
+            "exactmesh: robust 2D Delaunay and constrained Delaunay triangulation, quality meshing "
+            "and "
+            "3D Delaunay tetrahedralization with exact predicates",
+            "exactmesh"};
         // No require_subcommand(): CLI11 would then report a misspelt subcommand as a missing
         // one; without it, `exactmesh frobnicate` is an unexpected argument, as it should be.
         app.footer(
@@ -91,7 +93,8 @@ int main(int argc, char** argv) {
         }
         if (app.get_subcommands().empty()) {
             return report_error(
-                "a subcommand is required: triangulate, tetrahedralize, cdt, mesh, check, fuzz, swap, "
+                "a subcommand is required: triangulate, tetrahedralize, cdt, mesh, check, fuzz, "
+                "swap, "
                 "min-max or swap3d (see "
                 "exactmesh --help)",
                 kExitBadInput);

@@ -421,8 +421,9 @@ void add_mesh_command(CLI::App& app) {
                      "generator: 'M11;M12;M22', three expressions in x and y (muParser, as "
                      "--size) giving a symmetric positive definite matrix, e.g. "
                      "'1e4;0;1' (edges 0.01 long in x, 1 in y); or a metric file: a Triangle "
-                     ".node whose vertices carry 3 attributes M11 M12 M22, with its .ele beside "
-                     "it (log-Euclidean interpolation inside, nearest boundary value outside)")
+                     ".node whose vertices carry 3 attributes M11 M12 M22 or 4 (a stretching "
+                     "vector) DIR_X DIR_Y SIZE_ALONG ASPECT_RATIO, with its .ele beside it "
+                     "(log-Euclidean interpolation inside, nearest boundary value outside)")
         ->type_name("EXPR|FILE");
     command
         ->add_option(

@@ -45,8 +45,9 @@ void print_quality(const tri::Tetrahedralization3& mesh) {
     for (std::size_t b = 0; b < q.dihedral_histogram.size(); ++b) {
         const auto lo = static_cast<int>(static_cast<double>(b) * q.histogram_bin_degrees);
         const auto hi = static_cast<int>(static_cast<double>(b + 1) * q.histogram_bin_degrees);
-        std::cout << "dihedral_degrees[" << lo << "," << hi << (b + 1 == q.dihedral_histogram.size() ? "]" : ")")
-                  << ": " << q.dihedral_histogram[b] << '\n';
+        std::cout << "dihedral_degrees[" << lo << "," << hi
+                  << (b + 1 == q.dihedral_histogram.size() ? "]" : ")") << ": "
+                  << q.dihedral_histogram[b] << '\n';
     }
 }
 
@@ -56,7 +57,8 @@ void run_swap3d(const Swap3dArguments& arguments) {
     refuse_to_overwrite_inputs({arguments.input, arguments.ele_path}, {output});
     const tri::SwapCriterion3 criterion = tri::swap_criterion_3d_from_name(arguments.criterion);
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
-    const io::TetgenEleFile ele = io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
+    const io::TetgenEleFile ele =
+        io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
     tri::Tetrahedralization3 mesh;
     mesh.xyz = nodes.xyz;
     mesh.tets = ele.tets;
@@ -89,7 +91,8 @@ void run_swap3d(const Swap3dArguments& arguments) {
         std::cout << "criterion: " << tri::swap_criterion_3d_name(criterion) << '\n';
         auto named = counters_by_name(tri::kEdgeFaceSwapCounterNames, counters);
         // stalled_faces is counted for the Delaunay criterion only.
-        if (criterion != tri::SwapCriterion3::Delaunay) std::erase_if(named, [](const auto& c) { return c.first == "stalled_faces"; });
+        if (criterion != tri::SwapCriterion3::Delaunay)
+            std::erase_if(named, [](const auto& c) { return c.first == "stalled_faces"; });
         print_counters(named);
         print_construct_seconds(seconds);
     }
@@ -100,21 +103,24 @@ void run_swap3d(const Swap3dArguments& arguments) {
 
 void add_swap3d_command(CLI::App& app) {
     auto arguments = std::make_shared<Swap3dArguments>();
-    CLI::App* command = app.add_subcommand(
-        "swap3d", "Edge-face swapping of a tetrahedralization (IN.node + IN.ele, TetGen formats) under one criterion");
+    CLI::App* command = app.add_subcommand("swap3d",
+                                           "Edge-face swapping of a tetrahedralization (IN.node + "
+                                           "IN.ele, TetGen formats) under one criterion");
     add_input_option(*command, arguments->input, "node", "Points: a TetGen .node file", "IN.node");
     add_input_option(*command, arguments->ele_path, "ele",
                      "Tetrahedra: a TetGen .ele file (TetGen's orientation)", "IN.ele");
     add_output_option(*command, arguments->output, "Output tetrahedra (.ele)", "OUT.ele");
     command
-        ->add_option("--criterion", arguments->criterion,
-                     "delaunay (SoS insphere), max-min-dihedral, min-max-dihedral, volume-edge (max-min of "
-                     "6 sqrt(2) V / l_rms^3)")
+        ->add_option(
+            "--criterion", arguments->criterion,
+            "delaunay (SoS insphere), max-min-dihedral, min-max-dihedral, volume-edge (max-min of "
+            "6 sqrt(2) V / l_rms^3)")
         ->check(CLI::IsMember({"delaunay", "max-min-dihedral", "min-max-dihedral", "volume-edge"}))
         ->capture_default_str();
-    command->add_flag("--quality", arguments->quality,
-                      "Print the output's quality: dihedral extremes and 10-degree histogram, volume-edge, "
-                      "radius-edge, slivers (min dihedral < 5 degrees with radius-edge <= 2)");
+    command->add_flag(
+        "--quality", arguments->quality,
+        "Print the output's quality: dihedral extremes and 10-degree histogram, volume-edge, "
+        "radius-edge, slivers (min dihedral < 5 degrees with radius-edge <= 2)");
     add_stats_flag(*command, arguments->stats, "counters", "the swapping alone, without I/O");
     command->callback([arguments] { run_swap3d(*arguments); });
 }

@@ -45,7 +45,8 @@ double largest_angle_degrees(const tri::Triangulation2& mesh) {
             const double* p = mesh.point(mesh.triangles[3 * t + (k + 1) % 3]);
             const double* q = mesh.point(mesh.triangles[3 * t + (k + 2) % 3]);
             const double ux = p[0] - o[0], uy = p[1] - o[1], vx = q[0] - o[0], vy = q[1] - o[1];
-            largest = std::max(largest, std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy));
+            largest =
+                std::max(largest, std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy));
         }
     }
     return largest * 180.0 / 3.14159265358979323846;
@@ -76,7 +77,8 @@ void run_swap(const SwapArguments& arguments) {
     refuse_to_overwrite_inputs({arguments.input, arguments.ele_path}, {output});
     const tri::SwapCriterion criterion = tri::swap_criterion_from_name(arguments.criterion);
     const io::NodeFile nodes = io::read_node(arguments.input);
-    const io::EleFile ele = io::read_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
+    const io::EleFile ele =
+        io::read_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
     std::vector<double> values;
     if (criterion == tri::SwapCriterion::DataDependent) {
         if (nodes.attribute_count == 0) {
@@ -108,9 +110,15 @@ void run_swap(const SwapArguments& arguments) {
     const auto start = std::chrono::steady_clock::now();
     tri::EdgeSwapCounters counters;
     switch (criterion) {
-        case tri::SwapCriterion::Delaunay: counters = tri::swap_edges_2d(mesh, tri::Delaunay{}); break;
-        case tri::SwapCriterion::MaxMinAngle: counters = tri::swap_edges_2d(mesh, tri::MaxMinAngle{}); break;
-        case tri::SwapCriterion::MinMaxAngle: counters = tri::swap_edges_2d(mesh, tri::MinMaxAngle{}); break;
+        case tri::SwapCriterion::Delaunay:
+            counters = tri::swap_edges_2d(mesh, tri::Delaunay{});
+            break;
+        case tri::SwapCriterion::MaxMinAngle:
+            counters = tri::swap_edges_2d(mesh, tri::MaxMinAngle{});
+            break;
+        case tri::SwapCriterion::MinMaxAngle:
+            counters = tri::swap_edges_2d(mesh, tri::MinMaxAngle{});
+            break;
         case tri::SwapCriterion::MinTotalLength:
             counters = tri::swap_edges_2d(mesh, tri::MinTotalLength{});
             break;
@@ -147,7 +155,8 @@ void add_swap_command(CLI::App& app) {
     auto arguments = std::make_shared<SwapArguments>();
     CLI::App* command = app.add_subcommand(
         "swap", "Lawson edge swapping of a triangulation (IN.node + IN.ele) under one criterion");
-    add_input_option(*command, arguments->input, "node", "Points: a Triangle .node file", "IN.node");
+    add_input_option(*command, arguments->input, "node", "Points: a Triangle .node file",
+                     "IN.node");
     add_input_option(*command, arguments->ele_path, "ele",
                      "Triangles: a Triangle .ele file (counter-clockwise)", "IN.ele");
     add_output_option(*command, arguments->output, "Output triangles (.ele)", "OUT.ele");
@@ -155,8 +164,8 @@ void add_swap_command(CLI::App& app) {
         ->add_option("--criterion", arguments->criterion,
                      "delaunay (SoS incircle), max-min-angle, min-max-angle, min-length (shorter "
                      "diagonal), data-dependent (Dyn-Levin-Rippa, on the first vertex attribute)")
-        ->check(CLI::IsMember({"delaunay", "max-min-angle", "min-max-angle", "min-length",
-                               "data-dependent"}))
+        ->check(CLI::IsMember(
+            {"delaunay", "max-min-angle", "min-max-angle", "min-length", "data-dependent"}))
         ->capture_default_str();
     command
         ->add_option("--data-cost", arguments->data_cost,
@@ -172,7 +181,8 @@ void add_min_max_command(CLI::App& app) {
     auto arguments = std::make_shared<CommandArguments>();
     CLI::App* command = app.add_subcommand(
         "min-max", "Min-max angle triangulation of the points of IN.node (edge cutting, exact)");
-    add_input_option(*command, arguments->input, "node", "Points: a Triangle .node file", "IN.node");
+    add_input_option(*command, arguments->input, "node", "Points: a Triangle .node file",
+                     "IN.node");
     add_output_option(*command, arguments->output, "Output triangles (.ele)", "OUT.ele");
     add_stats_flag(*command, arguments->stats, "counters",
                    "Delaunay start + edge cutting, without I/O");

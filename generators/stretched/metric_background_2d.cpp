@@ -110,21 +110,30 @@ Metric2 BackgroundMetricMesh2::operator()(double x, double y) const {
     return nearest_boundary(x, y);
 }
 
-BackgroundMetricMesh2 background_metric_from_matrices(std::vector<double> xy,
-                                                      std::span<const double> matrices,
-                                                      std::vector<std::uint32_t> triangles,
-                                                      const MetricFileSource& source) {
-    const std::size_t vertices = xy.size() / 2;
-    if (matrices.size() != 3 * vertices) {
+std::size_t metric_file_values(MetricFileForm form) {
+    return form == MetricFileForm::Matrices ? 3 : 4;
+}
+
+BackgroundMetricMesh2 background_metric_from_file(std::vector<double> xy, MetricFileForm form,
+                                                  std::span<const double> values,
+                                                  std::vector<std::uint32_t> triangles,
+                                                  const MetricFileSource& source) {
+    const std::size_t vertices = xy.size() / 2, k = metric_file_values(form);
+    if (values.size() != k * vertices) {
         throw InputError(source.node_file + ": " + std::to_string(vertices) + " vertices need " +
-                         std::to_string(3 * vertices) + " metric values (M11 M12 M22 each), got " +
-                         std::to_string(matrices.size()));
+                         std::to_string(k * vertices) + " metric values (" +
+                         (form == MetricFileForm::Matrices
+                              ? "M11 M12 M22"
+                              : "DIR_X DIR_Y SIZE_ALONG ASPECT_RATIO") +
+                         " each), got " + std::to_string(values.size()));
     }
     std::vector<Metric2> metrics(vertices);
     for (std::size_t v = 0; v < vertices; ++v) {
+        const double* a = values.data() + k * v;
         try {
-            metrics[v] =
-                metric_from_matrix(matrices[3 * v], matrices[3 * v + 1], matrices[3 * v + 2]);
+            metrics[v] = form == MetricFileForm::Matrices
+                             ? metric_from_matrix(a[0], a[1], a[2])
+                             : metric_from_stretching(a[0], a[1], a[2], a[3]);
         } catch (const InputError& error) {
             const std::string line =
                 v < source.node_lines.size() ? ":" + std::to_string(source.node_lines[v]) : "";

@@ -64,14 +64,24 @@ struct MetricFileSource {
     std::span<const std::uint64_t> node_lines;  ///< #V: each vertex's line in the .node file
 };
 
-/// The background metric mesh of a metric file: vertex v at (xy[2v], xy[2v+1]) with the matrix
-/// [M11 M12; M12 M22] = matrices[3v .. 3v+2] (metric_from_matrix).
+/// What a metric file's vertices carry.
+enum class MetricFileForm {
+    Matrices,           ///< 3 attributes M11 M12 M22 (metric_from_matrix)
+    StretchingVectors,  ///< 4 attributes DIR_X DIR_Y SIZE_ALONG ASPECT_RATIO
+                        ///< (metric_from_stretching)
+};
+
+/// The attributes per vertex of a form (3 or 4).
+std::size_t metric_file_values(MetricFileForm form);
+
+/// The background metric mesh of a metric file: vertex v at (xy[2v], xy[2v+1]) with the metric
+/// of values[k v .. k v + k - 1], k = metric_file_values(form).
 /// @throws InputError "node_file:line: vertex N: metric (M11, M12, M22) = (...) is not positive
-///         definite ..." for a bad matrix (N in the file's numbering), "ele_file: background
-///         mesh: triangle T: ..." for a bad triangle.
-BackgroundMetricMesh2 background_metric_from_matrices(std::vector<double> xy,
-                                                      std::span<const double> matrices,
-                                                      std::vector<std::uint32_t> triangles,
-                                                      const MetricFileSource& source);
+///         definite ..." (or the stretching vector's complaint) for a bad metric (N in the file's
+///         numbering), "ele_file: background mesh: triangle T: ..." for a bad triangle.
+BackgroundMetricMesh2 background_metric_from_file(std::vector<double> xy, MetricFileForm form,
+                                                  std::span<const double> values,
+                                                  std::vector<std::uint32_t> triangles,
+                                                  const MetricFileSource& source);
 
 }  // namespace exactmesh::generators

@@ -35,7 +35,7 @@ class MetricField2 {
     /// A background mesh (BackgroundMetricMesh2's constructor: @throws BackgroundMeshError).
     static MetricField2 background_mesh(std::vector<double> xy, std::vector<Metric2> metrics,
                                         std::vector<std::uint32_t> triangles);
-    /// A background mesh already built (e.g. by background_metric_from_matrices).
+    /// A background mesh already built (e.g. by background_metric_from_file).
     static MetricField2 background_mesh(BackgroundMetricMesh2 mesh);
 
     /// The metric at (x, y) (finite).

@@ -1024,7 +1024,8 @@ assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/$file" "$quad
 }
 
 # `mesh --metric`: the stretched-mesh quality report against an expression or a metric file
-# (.node with 3 attributes M11 M12 M22 and its .ele), for any generator; bad metrics are exit 2
+# (.node with 3 attributes M11 M12 M22 or 4, a stretching vector, and its .ele), for any
+# generator; bad metrics are exit 2
 # with one message naming the file, line and value (or the point), and leave no output.
 mesh_metric() {
   # Isotropic size 0.1 written as a metric, on a mesh of size 0.1: most edges near unit length.
@@ -1046,6 +1047,31 @@ mesh_metric() {
   run 0 mesh --domain key -o "$work/m_out.ele" --size 0.1 --quality --metric "$work/m.node" || return
   grep -Eq '^quality.metric: background mesh: 4 vertices, 2 triangles$' "$work/out" ||
     fail "metric file: $(cat "$work/out")"
+  # The same isotropic size 0.1 as matrices and as stretching vectors (direction, size 0.1 along,
+  # aspect ratio 1): the same report.
+  printf '4 2 3 0\n1 -1 -1 100 0 100\n2 3 -1 100 0 100\n3 3 1 100 0 100\n4 -1 1 100 0 100\n' >"$work/iso.node"
+  printf '4 2 4 0\n1 -1 -1 1 0 0.1 1\n2 3 -1 0 2 0.1 1\n3 3 1 1 1 0.1 1\n4 -1 1 -3 0 0.1 1\n' >"$work/vec.node"
+  cp "$work/m.ele" "$work/iso.ele"
+  cp "$work/m.ele" "$work/vec.ele"
+  run 0 mesh --domain key -o "$work/m_out.ele" --size 0.1 --quality --metric "$work/iso.node" || return
+  grep '^quality.metric_' "$work/out" >"$work/iso.txt"
+  run 0 mesh --domain key -o "$work/m_out.ele" --size 0.1 --quality --metric "$work/vec.node" || return
+  grep '^quality.metric_' "$work/out" >"$work/vec.txt"
+  [[ -s "$work/iso.txt" ]] && diff -q "$work/iso.txt" "$work/vec.txt" >/dev/null ||
+    fail "stretching vectors differ from matrices: $(cat "$work/iso.txt" "$work/vec.txt")"
+  # A stretching vector along x, 0.01 along and aspect ratio 100: 'M11;M12;M22' = '1e4;0;1e8'.
+  printf '4 2 4 0\n1 -1 -1 1 0 0.01 100\n2 3 -1 1 0 0.01 100\n3 3 1 1 0 0.01 100\n4 -1 1 1 0 0.01 100\n' >"$work/str.node"
+  cp "$work/m.ele" "$work/str.ele"
+  run 0 mesh --domain key -o "$work/m_out.ele" --size 0.1 --quality --metric "$work/str.node" || return
+  grep '^quality.metric_' "$work/out" >"$work/str.txt"
+  run 0 mesh --domain key -o "$work/m_out.ele" --size 0.1 --quality --metric '1e4;0;1e8' || return
+  grep '^quality.metric_' "$work/out" >"$work/str_expr.txt"
+  [[ -s "$work/str.txt" ]] && diff -q "$work/str.txt" "$work/str_expr.txt" >/dev/null ||
+    fail "a stretching vector differs from its matrix: $(cat "$work/str.txt" "$work/str_expr.txt")"
+  printf '4 2 4 0\n1 -1 -1 1 0 0.1 1\n2 3 -1 0 0 0.1 1\n3 3 1 1 1 0.1 1\n4 -1 1 -3 0 0.1 1\n' >"$work/zero.node"
+  cp "$work/m.ele" "$work/zero.ele"
+  expect_error 2 'zero\.node:3: vertex 2: .*direction' \
+    mesh --domain key -o "$work/x.ele" --size 0.1 --quality --metric "$work/zero.node"
   # Without --quality: a warning, not silence.
   run 0 mesh --domain key -o "$work/w.ele" --size 0.1 --metric '1;0;1' || return
   grep -q 'ignored without --quality' "$work/err" || fail "no warning: $(cat "$work/err")"
@@ -1059,7 +1085,7 @@ mesh_metric() {
   expect_error 2 'cw\.ele: background mesh: triangle 0: inverted' \
     mesh --domain key -o "$work/x.ele" --size 0.1 --quality --metric "$work/cw.node"
   printf '1 2 2 0\n1 0 0 1 1\n' >"$work/two.node"
-  expect_error 2 'two\.node: a metric file.s vertices carry exactly 3 attributes M11 M12 M22; this one has 2' \
+  expect_error 2 'two\.node: a metric file.s vertices carry 3 attributes M11 M12 M22 or 4 DIR_X DIR_Y SIZE_ALONG ASPECT_RATIO; this one has 2' \
     mesh --domain key -o "$work/x.ele" --size 0.1 --quality --metric "$work/two.node"
   cp "$work/m.node" "$work/lonely.node"
   expect_error 2 'lonely\.node: the metric file.s triangles belong in .*lonely\.ele, which does not exist' \

@@ -26,7 +26,8 @@ std::string error_of(const std::vector<double>& matrices, const std::vector<std:
     const std::vector<std::uint64_t> lines = {2, 3, 5, 6};
     gen::MetricFileSource source{"m.node", "m.ele", 1, lines};
     try {
-        gen::background_metric_from_matrices(kSquare, matrices, tris, source);
+        gen::background_metric_from_file(kSquare, gen::MetricFileForm::Matrices, matrices, tris,
+                                         source);
     } catch (const exactmesh::InputError& error) {
         return error.what();
     }
