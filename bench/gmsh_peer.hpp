@@ -134,7 +134,7 @@ inline void read_msh2(const std::filesystem::path& file, GmshMesh& mesh) {
 }
 
 /// Runs `gmsh` on the .geo text in `dir` (2D, one thread, MSH 2.2); throws std::runtime_error
-/// with the log's error lines when it fails.
+/// with the log's error lines (or its last line) when it fails.
 inline GmshMesh run_gmsh_geo(const std::string& geo_text, const std::filesystem::path& dir) {
     namespace fs = std::filesystem;
     const fs::path geo = dir / "domain.geo", msh = dir / "domain.msh", log = dir / "gmsh.log";
@@ -143,11 +143,14 @@ inline GmshMesh run_gmsh_geo(const std::string& geo_text, const std::filesystem:
                                 msh.string() + "' -v 4 > '" + log.string() + "' 2>&1";
     if (std::system(command.c_str()) != 0) {
         std::ifstream text(log);
-        std::string line, errors;
+        std::string line, errors, last;
         while (std::getline(text, line)) {
             if (line.find("Error") != std::string::npos)
                 errors += (errors.empty() ? "" : " | ") + line;
+            if (!line.empty()) last = line;
         }
+        // No error line (a crash): the log's last line says where it stopped.
+        if (errors.empty()) errors = "no error line; the log ends with: " + last;
         throw std::runtime_error("gmsh failed: " + errors.substr(0, 600));
     }
     GmshMesh mesh;
