@@ -351,6 +351,22 @@ void BM_layers_gmsh(benchmark::State& state, const Domain* d, const LayerCase* c
     state.counters["wall_aspect"] = wall_aspect(*d, first_height);
 }
 
+/// Registers FAMILY/exactmesh/SUFFIX (in-process time) and, when Gmsh is there,
+/// FAMILY/PEER/SUFFIX (Gmsh's own CPU time, manual), on the same arguments.
+template <class Ours, class Theirs, class... Args>
+void register_side_by_side(const std::string& family, const std::string& peer,
+                           const std::string& suffix, bool with_peer, Ours ours, Theirs theirs,
+                           Args... args) {
+    benchmark::RegisterBenchmark((family + "/exactmesh" + suffix).c_str(), ours, args...)
+        ->Unit(benchmark::kMillisecond)
+        ->MinTime(0.5);
+    if (!with_peer) return;
+    benchmark::RegisterBenchmark((family + "/" + peer + suffix).c_str(), theirs, args...)
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime()
+        ->MinTime(0.5);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -361,18 +377,8 @@ int main(int argc, char** argv) {
     for (const Domain& d : domains) {
         for (const MetricCase& m : metric_cases()) {
             if (d.name == "three-element" && !m.layer) continue;
-            const std::string suffix = "/" + d.name + "/" + m.name;
-            benchmark::RegisterBenchmark(("BM_metric/exactmesh" + suffix).c_str(),
-                                         BM_metric_exactmesh, &d, &m)
-                ->Unit(benchmark::kMillisecond)
-                ->MinTime(0.5);
-            if (gmsh) {
-                benchmark::RegisterBenchmark(("BM_metric/gmsh-bamg" + suffix).c_str(),
-                                             BM_metric_gmsh, &d, &m)
-                    ->Unit(benchmark::kMillisecond)
-                    ->UseManualTime()
-                    ->MinTime(0.5);
-            }
+            register_side_by_side("BM_metric", "gmsh-bamg", "/" + d.name + "/" + m.name, gmsh,
+                                  BM_metric_exactmesh, BM_metric_gmsh, &d, &m);
         }
     }
     static const std::vector<Domain> airfoils = {naca0012(), three_element()};
@@ -380,18 +386,9 @@ int main(int argc, char** argv) {
         for (const LayerCase& c : kLayerCases) {
             char height[32];
             std::snprintf(height, sizeof height, "%g", c.first_height);
-            const std::string suffix = "/" + airfoil.name + "/" + height;
-            benchmark::RegisterBenchmark(("BM_layers/exactmesh" + suffix).c_str(),
-                                         BM_layers_exactmesh, &airfoil, &c)
-                ->Unit(benchmark::kMillisecond)
-                ->MinTime(0.5);
-            if (gmsh) {
-                benchmark::RegisterBenchmark(("BM_layers/gmsh-boundary-layer" + suffix).c_str(),
-                                             BM_layers_gmsh, &airfoil, &c)
-                    ->Unit(benchmark::kMillisecond)
-                    ->UseManualTime()
-                    ->MinTime(0.5);
-            }
+            register_side_by_side("BM_layers", "gmsh-boundary-layer",
+                                  "/" + airfoil.name + "/" + height, gmsh, BM_layers_exactmesh,
+                                  BM_layers_gmsh, &airfoil, &c);
         }
     }
     benchmark::Initialize(&argc, argv);

@@ -36,6 +36,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
+from report_markdown import fmt, table  # noqa: E402  (scripts/, beside this one)
 
 METHODS = ["insertion", "h-refinement", "steiner", "remesh", "local-remesh"]
 INDICATORS = ["first-difference", "second-difference", "loehner", "length-weighted"]
@@ -46,18 +47,6 @@ TRANSIENT_BAND = 0.15
 ERROR_RATIO_GOAL = 0.1
 SLOPE_GOAL = -1.0
 TIME_RATIO_GOAL = 0.2
-
-
-def fmt(value, digits=3):
-    if value is None or (isinstance(value, float) and not math.isfinite(value)):
-        return "n/a"
-    return f"{value:.{digits}g}"
-
-
-def table(header, rows):
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
-    return "\n".join(lines)
 
 
 def fit_slope(points):

@@ -38,6 +38,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
+from report_markdown import fmt, table  # noqa: E402  (scripts/, beside this one)
 import meshio  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
@@ -64,18 +65,6 @@ PICTURES = [
 ]
 WINDOWS = [("airfoil", (-0.1, 1.1, -0.25, 0.25)), ("leading edge", (-0.015, 0.045, -0.03, 0.03)),
            ("trailing edge", (0.955, 1.015, -0.03, 0.03))]
-
-
-def fmt(value, digits=3):
-    if value is None or (isinstance(value, float) and not math.isfinite(value)):
-        return "n/a"
-    return f"{value:.{digits}g}"
-
-
-def table(header, rows):
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
-    return "\n".join(lines)
 
 
 def load(path):
