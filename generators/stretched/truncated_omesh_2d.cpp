@@ -14,6 +14,7 @@
 
 #include "base/errors.hpp"
 #include "generators/stretched/layer_mesh_2d.hpp"
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
 
 namespace exactmesh::generators {
@@ -27,6 +28,10 @@ using tri::kNone;
 using tri::VertIdx;
 
 namespace {
+
+/// The widest corner a kept cell may have: 160 degrees, as the corner at (0, 0) from (1, 0)
+/// to (cos 160, sin 160) rounded to doubles.
+const double kWideCorner[3][2] = {{0, 0}, {1, 0}, {-0.93969262078590838, 0.34202014332566871}};
 
 /// A ring: the O-mesh of one wall loop.
 struct Ring {
@@ -220,6 +225,17 @@ class OMeshBuilder {
         return true;
     }
 
+    /// Whether the strictly convex quad has a corner wider than the reference kWideCorner
+    /// (exact compare_angles).
+    bool has_wide_corner(const Quad& q) const {
+        const pred::Corner reference{kWideCorner[0], kWideCorner[1], kWideCorner[2]};
+        for (int k = 0; k < 4; ++k) {
+            const pred::Corner corner{point(q[k]), point(q[(k + 1) % 4]), point(q[(k + 3) % 4])};
+            if (pred::compare_angles(corner, reference) == pred::Sign::Positive) return true;
+        }
+        return false;
+    }
+
     /// Cuts column j to at most k layers; counts the cells removed under `removed`.
     void cut(std::uint32_t j, std::uint32_t k, std::uint64_t& removed) {
         if (height_[j] <= k) return;
@@ -227,11 +243,15 @@ class OMeshBuilder {
         height_[j] = k;
     }
 
-    /// Each column up to its first cell (or guard) that is not strictly convex.
+    /// Each column up to its first cell (or guard) that is not strictly convex, or whose cell
+    /// has a corner wider than kWideCorner (at a sharp convex corner of the wall, where the
+    /// normals of a structured ring splay without a fan, the cells' corner at the wall is
+    /// about 90 degrees plus half the turn: the fill meshes the corner instead).
     void cut_folds() {
         for (std::uint32_t j = 0; j < height_.size(); ++j) {
             for (std::uint32_t k = 0; k < height_[j]; ++k) {
-                if (!convex(cell(j, k)) || !convex(guard(j, k))) {
+                const Quad c = cell(j, k);
+                if (!convex(c) || !convex(guard(j, k)) || has_wide_corner(c)) {
                     cut(j, k, counters_.omesh_removed_fold);
                     break;
                 }
