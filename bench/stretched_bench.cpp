@@ -29,7 +29,9 @@
 // items_per_second, max_angle and above_150 over the whole mesh, aspect_max (longest edge over
 // the smallest altitude), wall_aspect (the wall's longest piece over the first height: what the
 // layers must reach at the wall), layers (ours: the most a stack reached; Gmsh's from its
-// thickness).
+// thickness). The truncated O-mesh variant (`--o-mesh`, generators/stretched/truncated_omesh_2d)
+// as BM_layers/exactmesh-o-mesh/<domain>/<first height>, and both of ours on the three-element
+// airfoil (domain three-element; no Gmsh row there: its fan needs one trailing edge).
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -40,6 +42,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/gmsh_peer.hpp"
@@ -73,6 +76,11 @@ Domain square() {
 Domain naca0012() {
     const gen::DomainPslg d = gen::sample_domain(gen::SampleDomain::Naca0012);
     return {"naca0012", d.xy, d.segments, d.holes, 0.0};
+}
+
+Domain three_element() {
+    const gen::DomainPslg d = gen::sample_domain(gen::SampleDomain::ThreeElement);
+    return {"three-element", d.xy, d.segments, d.holes, 0.0};
 }
 
 /// One metric as a C++ function and as the three MathEvalAniso formulas Gmsh evaluates.
@@ -252,10 +260,12 @@ double our_layer_count(const Domain& d, const LayerCase& c) {
     throw std::runtime_error("advancing-layers reports no 'layers' counter");
 }
 
-void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCase* c) {
+void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCase* c,
+                         gen::LayerMethod2 method) {
     const gen::MeshDomain2 domain(tri::Pslg{d->xy, d->segments, d->holes, {}});
     domain.triangulation();
-    const gen::MeshOptions2 options = layer_options(*c);
+    gen::MeshOptions2 options = layer_options(*c);
+    options.layers.method = method;
     const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d("advancing-layers");
     gen::MeshRun2 run;
     for (auto _ : state) {
@@ -341,13 +351,22 @@ int main(int argc, char** argv) {
         }
     }
     static const Domain airfoil = naca0012();
+    static const Domain three = three_element();
     for (const LayerCase& c : kLayerCases) {
+        for (const Domain* d : {&airfoil, &three}) {
+            for (const auto& [method, name] :
+                 {std::pair{gen::LayerMethod2::AdvancingLayers, "exactmesh"},
+                  std::pair{gen::LayerMethod2::TruncatedOMesh, "exactmesh-o-mesh"}}) {
+                char suffix[64];
+                std::snprintf(suffix, sizeof suffix, "/%s/%g", d->name.c_str(), c.first_height);
+                benchmark::RegisterBenchmark((std::string("BM_layers/") + name + suffix).c_str(),
+                                             BM_layers_exactmesh, d, &c, method)
+                    ->Unit(benchmark::kMillisecond)
+                    ->MinTime(0.5);
+            }
+        }
         char suffix[64];
         std::snprintf(suffix, sizeof suffix, "/naca0012/%g", c.first_height);
-        benchmark::RegisterBenchmark((std::string("BM_layers/exactmesh") + suffix).c_str(),
-                                     BM_layers_exactmesh, &airfoil, &c)
-            ->Unit(benchmark::kMillisecond)
-            ->MinTime(0.5);
         if (gmsh) {
             benchmark::RegisterBenchmark(
                 (std::string("BM_layers/gmsh-boundary-layer") + suffix).c_str(), BM_layers_gmsh,
