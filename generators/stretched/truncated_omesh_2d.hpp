@@ -23,15 +23,15 @@
 //    of the domain is removed; of two cells of different rings (or of one ring, columns not
 //    neighbours) where the guard of one (or the cell) meets the other, the coarser (the higher
 //    layer, i.e. the thicker) is removed, both when they are on the same layer; a column is
-//    cut at its lowest removed cell. Repeated until nothing meets: the kept cells are pairwise
-//    disjoint and their outer front stays at least about a local spacing from the other
-//    rings' cells and the boundary. Every decision is exact (orient2d, segments_conflict);
+//    cut at its lowest removed cell. One pass suffices (the cells do not move, and every pair
+//    that meets loses a cell): the kept cells are pairwise disjoint and their outer front
+//    stays at least about a local spacing from the other rings' cells and the boundary. Every decision is exact (orient2d, segments_conflict);
 //    lengths only place the guards (scale-free norms).
 //  - The layer cells are kept as quadrilaterals or split (layer_mesh::split_quad); the rest is
 //    meshed by the fill generator from the staircase front of every ring, as for advancing
 //    layers (layer_mesh::finish_layered_mesh_2d), and the mixed mesh checked exactly.
 // Cost: O(C) cells C = sum of ring sizes times their K, each tested against the cells near it
-// (bucket grid) per round of removals; plus the fill.
+// (bucket grid) once; plus the fill.
 #pragma once
 
 #include "generators/stretched/advancing_layers_2d.hpp"
