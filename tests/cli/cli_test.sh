@@ -970,6 +970,16 @@ adapt_bad_input() {
 # Advancing layers (issue 14): --layers and --quads; the mixed mesh in .vtu and .msh read back by
 # meshio (quads and triangles as printed), the counters of --stats, the quality note; every bad
 # value or combination refused with exit status 2 and one line.
+# expect_meshio_cells <file in $work> <quads> <triangles>: meshio reads that many of each.
+expect_meshio_cells() {
+  /usr/bin/python3 -c 'import sys, meshio
+m = meshio.read(sys.argv[1])
+count = {c.type: len(c.data) for c in m.cells}
+assert count.get("quad", 0) == int(sys.argv[2]), count
+assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/$1" "$2" "$3" ||
+    fail "meshio does not read $2 quads and $3 triangles from $1"
+}
+
 layers() {
   run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-5,1.2 --quads \
     -o "$work/naca.vtu" --stats --quality || return
@@ -987,12 +997,7 @@ layers() {
   run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-5,1.2 --quads \
     -o "$work/naca.msh" || return
   for file in naca.vtu naca.msh; do
-    /usr/bin/python3 -c 'import sys, meshio
-m = meshio.read(sys.argv[1])
-count = {c.type: len(c.data) for c in m.cells}
-assert count.get("quad", 0) == int(sys.argv[2]), count
-assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/$file" "$quads" "$triangles" ||
-      fail "meshio does not read $quads quads and $triangles triangles from $file"
+    expect_meshio_cells "$file" "$quads" "$triangles"
   done
   run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2,20 -o "$work/naca.ele" &&
     ! grep -q '^quads:' "$work/out" || fail "layers: split quads still reported as quads"
@@ -1041,12 +1046,7 @@ omesh() {
   grep -Eq '^omesh_rings: 3$' "$work/out" || fail "o-mesh: not three rings: $(cat "$work/out")"
   grep -Eq '^omesh_removed_overlap: [1-9][0-9]*$' "$work/out" ||
     fail "o-mesh: no cell removed in the gaps: $(cat "$work/out")"
-  /usr/bin/python3 -c 'import sys, meshio
-m = meshio.read(sys.argv[1])
-count = {c.type: len(c.data) for c in m.cells}
-assert count.get("quad", 0) == int(sys.argv[2]), count
-assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/three.msh" "$quads" "$triangles" ||
-    fail "meshio does not read $quads quads and $triangles triangles from three.msh"
+  expect_meshio_cells three.msh "$quads" "$triangles"
   run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2 --o-mesh \
     -o "$work/naca.ele" --stats || return
   ! grep -Eq '^quads: [1-9]' "$work/out" || fail "o-mesh: split cells still reported as quads"

@@ -168,6 +168,29 @@ bool layer_angles_at_most_150(const tri::Triangulation2& mesh, std::uint64_t cou
     return ok;
 }
 
+/// The mesh of the input scaled by 2^600 and 2^-600 (and the first height with it), quads kept,
+/// is the mesh scaled, bit for bit, and valid; returns the unscaled one.
+gen::AdvancingLayersResult2 expect_scaled_the_same(const Input& in, double height, double growth,
+                                                   gen::LayerMethod2 method) {
+    gen::AdvancingLayersResult2 reference = run(in, height, growth, true, 60, {}, method);
+    for (const int k : {600, -600}) {
+        Input scaled = in;
+        for (double& x : scaled.xy) x = std::ldexp(x, k);
+        for (double& x : scaled.holes) x = std::ldexp(x, k);
+        const gen::AdvancingLayersResult2 r =
+            run(scaled, std::ldexp(height, k), growth, true, 60, {}, method);
+        std::vector<double> unscaled = r.mesh.mesh.xy;
+        for (double& x : unscaled) x = std::ldexp(x, -k);
+        EXPECT_EQ(unscaled, reference.mesh.mesh.xy) << "2^" << k;
+        EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
+        EXPECT_EQ(r.quads, reference.quads) << "2^" << k;
+        EXPECT_EQ(r.stack_layers, reference.stack_layers) << "2^" << k;
+        EXPECT_EQ(r.counters.omesh_removed_overlap, reference.counters.omesh_removed_overlap);
+        expect_valid(r);
+    }
+    return reference;
+}
+
 }  // namespace
 
 TEST(Generators_AdvancingLayers2, CircularHoleHasLayersAllAroundWithoutCorners) {
@@ -262,21 +285,9 @@ TEST(Generators_AdvancingLayers2, ScaledBy2ToThePlusMinus600GivesTheSameMeshScal
     const Input naca = exactmesh::testing::from_domain(
         gen::sample_domain(gen::SampleDomain::Naca0012, gen::SizeFunction::uniform(0.05)));
     for (const Input& in : {circle, naca}) {
-        const gen::AdvancingLayersResult2 reference = run(in, 2e-3, 1.3, true);
+        const gen::AdvancingLayersResult2 reference =
+            expect_scaled_the_same(in, 2e-3, 1.3, gen::LayerMethod2::AdvancingLayers);
         EXPECT_GT(reference.counters.layer_quads, 100u);
-        for (const int k : {600, -600}) {
-            Input scaled = in;
-            for (double& x : scaled.xy) x = std::ldexp(x, k);
-            for (double& x : scaled.holes) x = std::ldexp(x, k);
-            const gen::AdvancingLayersResult2 r = run(scaled, std::ldexp(2e-3, k), 1.3, true);
-            std::vector<double> unscaled = r.mesh.mesh.xy;
-            for (double& x : unscaled) x = std::ldexp(x, -k);
-            EXPECT_EQ(unscaled, reference.mesh.mesh.xy) << "2^" << k;
-            EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
-            EXPECT_EQ(r.quads, reference.quads) << "2^" << k;
-            EXPECT_EQ(r.stack_layers, reference.stack_layers) << "2^" << k;
-            expect_valid(r);
-        }
     }
 }
 
@@ -503,23 +514,8 @@ TEST(Generators_TruncatedOMesh2, ScaledBy2ToThePlusMinus600GivesTheSameMeshScale
         const Input in = exactmesh::testing::from_domain(
             gen::sample_domain(which, gen::SizeFunction::uniform(0.05)));
         const gen::AdvancingLayersResult2 reference =
-            run(in, 1e-3, 1.25, true, 60, {}, gen::LayerMethod2::TruncatedOMesh);
+            expect_scaled_the_same(in, 1e-3, 1.25, gen::LayerMethod2::TruncatedOMesh);
         EXPECT_GT(reference.counters.omesh_cells, 100u);
-        for (const int k : {600, -600}) {
-            Input scaled = in;
-            for (double& x : scaled.xy) x = std::ldexp(x, k);
-            for (double& x : scaled.holes) x = std::ldexp(x, k);
-            const gen::AdvancingLayersResult2 r = run(scaled, std::ldexp(1e-3, k), 1.25, true, 60,
-                                                      {}, gen::LayerMethod2::TruncatedOMesh);
-            std::vector<double> unscaled = r.mesh.mesh.xy;
-            for (double& x : unscaled) x = std::ldexp(x, -k);
-            EXPECT_EQ(unscaled, reference.mesh.mesh.xy) << "2^" << k;
-            EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
-            EXPECT_EQ(r.quads, reference.quads) << "2^" << k;
-            EXPECT_EQ(r.stack_layers, reference.stack_layers) << "2^" << k;
-            EXPECT_EQ(r.counters.omesh_removed_overlap, reference.counters.omesh_removed_overlap);
-            expect_valid(r);
-        }
     }
 }
 
