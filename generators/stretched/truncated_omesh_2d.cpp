@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/errors.hpp"
@@ -43,6 +44,7 @@ struct Ring {
     std::uint32_t first_guard = 0;  ///< guard points: two per cell
     std::uint32_t first_cell = 0;   ///< cell (column j, layer k) at first_cell + (j -
                                     ///< first_stack) K + k
+    std::vector<double> heights;    ///< heights[k]: layer k's height, h (1 + ... + g^(k-1))
     std::uint32_t size() const { return static_cast<std::uint32_t>(wall.vertices.size()); }
 };
 
@@ -176,7 +178,8 @@ class OMeshBuilder {
             const std::uint32_t n = ring.size(), K = ring.layers;
             ring.first_point = static_cast<std::uint32_t>(candidates_.size() / 2);
             // Layer k at height h (1 + g + ... + g^(k-1)) along the normal, rounded once.
-            std::vector<double> heights(K + 2);
+            std::vector<double>& heights = ring.heights;
+            heights.resize(K + 2);
             std::vector<double> thickness(K + 2);
             double sum = 0, power = 1;
             for (std::uint32_t k = 0; k <= K + 1; ++k) {
@@ -383,18 +386,28 @@ class OMeshBuilder {
         }
     }
 
-    /// Lowers columns until neighbours on a ring differ by at most two layers.
+    /// Whether column `high` may stand above its neighbour `low` (sharing the normal line
+    /// `line`): by at most two layers, or by a height at most the wall spacing there (so the
+    /// fill closes the step with triangles about as tall as wide; near the wall, where the
+    /// layers are thin, a step may span many layers).
+    bool step_allowed(std::uint32_t high, std::uint32_t low, std::uint32_t line) const {
+        const Ring& ring = rings_[ring_of_[line]];
+        const std::uint32_t a = height_[high], b = height_[low];
+        return a <= b + 2 ||
+               ring.heights[a] - ring.heights[b] <= ring.wall.spacing[line - ring.first_stack];
+    }
+
+    /// Lowers columns until every step between neighbours on a ring is allowed.
     void cut_steps() {
         for (bool changed = true; changed;) {
             changed = false;
             for (std::uint32_t j = 0; j < height_.size(); ++j) {
                 const std::uint32_t t = next_stack(j);
-                if (height_[j] > height_[t] + 2) {
-                    cut(j, height_[t] + 2, counters_.omesh_removed_step);
-                    changed = true;
-                } else if (height_[t] > height_[j] + 2) {
-                    cut(t, height_[j] + 2, counters_.omesh_removed_step);
-                    changed = true;
+                for (const auto& [high, low] : {std::pair{j, t}, std::pair{t, j}}) {
+                    while (!step_allowed(high, low, t)) {
+                        cut(high, height_[high] - 1, counters_.omesh_removed_step);
+                        changed = true;
+                    }
                 }
             }
         }

@@ -14,9 +14,11 @@
 //    the ring's median wall spacing (its cells become about isotropic there; at most
 //    max_layers). The ring's columns (the cells between two normal lines) are then only cut
 //    back, never raised: where a cell or its guard folds (not strictly convex: normal lines
-//    converging at concave walls), where O-meshes overlap, and to keep the steps between
-//    neighbouring columns at most two layers (so the height varies along a ring only where a
-//    cut requires it, and smoothly).
+//    converging at concave walls) or a cell has a corner above 160 degrees (sharp convex
+//    corners, where the normals splay without a fan), where O-meshes overlap, and where a
+//    step between neighbouring columns would be both more than two layers and taller than
+//    the wall spacing there (so the height varies along a ring only where a cut requires it,
+//    in steps the fill closes with triangles about as tall as wide).
 //  - Overlaps: each cell has a guard, the quadrilateral over its bottom edge reaching one
 //    more layer plus the larger of the next thickness and the cell's tangential width further
 //    along its normal lines. A cell whose guard (or itself) meets a boundary segment or vertex
@@ -25,8 +27,9 @@
 //    layer, i.e. the thicker) is removed, both when they are on the same layer; a column is
 //    cut at its lowest removed cell. One pass suffices (the cells do not move, and every pair
 //    that meets loses a cell): the kept cells are pairwise disjoint and their outer front
-//    stays at least about a local spacing from the other rings' cells and the boundary. Every decision is exact (orient2d, segments_conflict);
-//    lengths only place the guards (scale-free norms).
+//    stays at least about a local spacing from the other rings' cells and the boundary.
+//    Every decision is exact (orient2d, segments_conflict, compare_angles); lengths only
+//    place the guards and the truncation (scale-free norms).
 //  - The layer cells are kept as quadrilaterals or split (layer_mesh::split_quad); the rest is
 //    meshed by the fill generator from the staircase front of every ring, as for advancing
 //    layers (layer_mesh::finish_layered_mesh_2d), and the mixed mesh checked exactly.
