@@ -31,6 +31,8 @@
 // edge over the smallest altitude), wall_aspect (the wall's longest piece over the first height:
 // what the layers must reach at the wall), layers (ours: the most a stack reached; Gmsh's from its
 // thickness); ours also layer_max_angle and layer_above_150 over the layers' triangles alone.
+// The truncated O-mesh variant (`--o-mesh`, generators/stretched/truncated_omesh_2d) runs on the
+// same cases as BM_layers/exactmesh-o-mesh/<domain>/<first height> (no peer of its own).
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -42,6 +44,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/gmsh_peer.hpp"
@@ -259,10 +262,13 @@ double our_layer_count(const Domain& d, const LayerCase& c) {
     throw std::runtime_error("advancing-layers reports no 'layers' counter");
 }
 
-void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCase* c) {
+/// advancing-layers by `method` on the case, timed from the built domain to the mesh.
+void run_layers(benchmark::State& state, const Domain* d, const LayerCase* c,
+                gen::LayerMethod2 method) {
     const gen::MeshDomain2 domain(tri::Pslg{d->xy, d->segments, d->holes, {}});
     domain.triangulation();
-    const gen::MeshOptions2 options = layer_options(*c);
+    gen::MeshOptions2 options = layer_options(*c);
+    options.layers.method = method;
     const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d("advancing-layers");
     gen::MeshRun2 run;
     for (auto _ : state) {
@@ -288,6 +294,14 @@ void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCa
     state.counters["layer_max_angle"] = in_layers.max_angle;
     state.counters["layer_above_150"] = static_cast<double>(in_layers.above_150_degrees);
     state.counters["wall_aspect"] = wall_aspect(*d, c->first_height);
+}
+
+void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCase* c) {
+    run_layers(state, d, c, gen::LayerMethod2::AdvancingLayers);
+}
+
+void BM_layers_omesh(benchmark::State& state, const Domain* d, const LayerCase* c) {
+    run_layers(state, d, c, gen::LayerMethod2::TruncatedOMesh);
 }
 
 /// Gmsh's BoundaryLayer field on every airfoil segment, a fan at each element's trailing edge.
@@ -386,9 +400,13 @@ int main(int argc, char** argv) {
         for (const LayerCase& c : kLayerCases) {
             char height[32];
             std::snprintf(height, sizeof height, "%g", c.first_height);
-            register_side_by_side("BM_layers", "gmsh-boundary-layer",
-                                  "/" + airfoil.name + "/" + height, gmsh, BM_layers_exactmesh,
-                                  BM_layers_gmsh, &airfoil, &c);
+            const std::string suffix = "/" + airfoil.name + "/" + height;
+            register_side_by_side("BM_layers", "gmsh-boundary-layer", suffix, gmsh,
+                                  BM_layers_exactmesh, BM_layers_gmsh, &airfoil, &c);
+            benchmark::RegisterBenchmark(("BM_layers/exactmesh-o-mesh" + suffix).c_str(),
+                                         BM_layers_omesh, &airfoil, &c)
+                ->Unit(benchmark::kMillisecond)
+                ->MinTime(0.5);
         }
     }
     benchmark::Initialize(&argc, argv);

@@ -59,6 +59,7 @@ struct MeshArguments {
     bool angles_given = false;  ///< --min-angle or --polish-angle on the command line
     std::string layers;         ///< --layers FIRST_HEIGHT,GROWTH[,MAX_LAYERS]
     bool quads = false;         ///< --quads
+    bool omesh = false;         ///< --o-mesh
 };
 
 /// The most --smooth sweeps: Laplacian smoothing converges within tens of sweeps, and each
@@ -164,6 +165,10 @@ void run_mesh(const MeshArguments& arguments) {
         throw InputError("--quads applies to --generator advancing-layers only, not " +
                          std::string(generator.name));
     }
+    if (arguments.omesh && generator.name != "advancing-layers") {
+        throw InputError("--o-mesh applies to --generator advancing-layers only, not " +
+                         std::string(generator.name));
+    }
     if (layered && arguments.layers.empty()) {
         throw InputError("--generator " + std::string(generator.name) +
                          " needs --layers FIRST_HEIGHT,GROWTH[,MAX_LAYERS] (e.g. 1e-4,1.2)");
@@ -252,6 +257,7 @@ void run_mesh(const MeshArguments& arguments) {
     options.cdt.first_index = base;
     options.layers = layer_parameters;
     options.layers.quads = arguments.quads;
+    if (arguments.omesh) options.layers.method = gen::LayerMethod2::TruncatedOMesh;
     options.metric = metric;
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
     print_warnings(ignored_options(generator, arguments, poly));
@@ -440,6 +446,11 @@ void add_mesh_command(CLI::App& app) {
                       "advancing-layers only: keep the layer cells as quadrilaterals (a mixed "
                       "mesh; .msh or .vtu output, not .ele); else each is split in two triangles "
                       "by the diagonal with the smaller largest angle");
+    command->add_flag("--o-mesh", arguments->omesh,
+                      "advancing-layers only: build the layers as a truncated structured O-mesh "
+                      "about each wall (a ring of normal lines, stopped at the layer where its "
+                      "cells turn isotropic; where two rings overlap the coarser cells removed) "
+                      "instead of stacks advanced one by one; the rest filled the same way");
     command->add_flag(
         "--quality", arguments->quality,
         "Print the quality report: angles, angle histogram, radius-edge ratio, size conformity "

@@ -153,14 +153,18 @@ def layers_section(runs, out):
                "`Quads = 0` and a fan at the trailing edge; the rest meshed by frontal on both "
                "sides. Angles and aspect ratios over the whole mesh (longest edge over smallest "
                "altitude), measured by the same code. Wall aspect ratio: the wall's longest piece "
-               "over the first height.\n")
+               "over the first height. `exactmesh-o-mesh` is our truncated O-mesh variant "
+               "(`--o-mesh`) on the same case, without a peer; the speed ratio compares "
+               "`exactmesh` (advancing layers) with Gmsh.\n")
     rows, goals = [], []
     cases = sorted({n.split("/", 2)[2] for n in runs if n.startswith("BM_layers/exactmesh/")},
                    key=lambda c: (c.split("/")[0], -float(c.split("/")[1])))
     for case in cases:
         ours = runs.get(f"BM_layers/exactmesh/{case}")
         peer = runs.get(f"BM_layers/gmsh-boundary-layer/{case}")
-        for label, run in (("exactmesh", ours), ("gmsh-boundary-layer", peer)):
+        omesh = runs.get(f"BM_layers/exactmesh-o-mesh/{case}")
+        for label, run in (("exactmesh-o-mesh", omesh), ("exactmesh", ours),
+                           ("gmsh-boundary-layer", peer)):
             if run is None:
                 continue
             if "error" in run:

@@ -44,12 +44,18 @@
 
 namespace exactmesh::generators {
 
-/// `--layers FIRST_HEIGHT,GROWTH[,MAX_LAYERS]` and `--quads`.
+/// How the layers are built: advancing layers (stacks stopped one by one), or the truncated
+/// structured O-mesh (truncated_omesh_2d.hpp: a ring of normal lines per wall, truncated
+/// where its cells turn isotropic, the overlaps between rings removed).
+enum class LayerMethod2 : std::uint8_t { AdvancingLayers, TruncatedOMesh };
+
+/// `--layers FIRST_HEIGHT,GROWTH[,MAX_LAYERS]`, `--quads` and `--o-mesh`.
 struct LayerParameters2 {
     double first_height = 0;        ///< thickness of the first layer; finite and > 0 (0: no layers)
     double growth = 1.2;            ///< ratio of consecutive thicknesses; finite, in [1, 10]
     std::uint32_t max_layers = 60;  ///< in [1, kMaxLayers]
     bool quads = false;  ///< keep the layer quadrilaterals (else each split in two triangles)
+    LayerMethod2 method = LayerMethod2::AdvancingLayers;
 };
 
 inline constexpr std::uint32_t kMaxLayers = 1000;
@@ -103,13 +109,23 @@ struct AdvancingLayersCounters2 {
     std::uint64_t quads = 0;                  ///< quadrilaterals in the output
     std::uint64_t triangles = 0;              ///< triangles in the output
     std::uint64_t max_wall_aspect_ratio = 0;  ///< wall piece length / first height, the largest
+    // The truncated O-mesh (LayerMethod2::TruncatedOMesh; zero otherwise).
+    std::uint64_t omesh_rings = 0;            ///< O-meshes built (one per wall loop)
+    std::uint64_t omesh_cells = 0;            ///< their cells kept
+    std::uint64_t omesh_min_ring_layers = 0;  ///< the truncation layer, the least over the rings
+    std::uint64_t omesh_max_ring_layers = 0;  ///< the truncation layer, the most over the rings
+    std::uint64_t omesh_removed_overlap = 0;  ///< cells removed where O-meshes overlap or meet
+                                              ///< the boundary (gap under the local spacing)
+    std::uint64_t omesh_removed_fold = 0;  ///< cells removed where normal lines fold (non-convex)
+    std::uint64_t omesh_removed_step = 0;  ///< cells removed to keep steps of at most 2 layers
 };
 
 inline constexpr std::array kAdvancingLayersCounterNames = EM_COUNTER_TABLE(
     AdvancingLayersCounters2, wall_loops, wall_vertices, stacks, fan_corners, merged_corners,
     layers, layer_points, stopped_aspect_ratio, stopped_size, stopped_collision, stopped_neighbour,
     stopped_max_layers, crossing_tests, layer_quads, layer_triangles, fill_triangles, quads,
-    triangles, max_wall_aspect_ratio);
+    triangles, max_wall_aspect_ratio, omesh_rings, omesh_cells, omesh_min_ring_layers,
+    omesh_max_ring_layers, omesh_removed_overlap, omesh_removed_fold, omesh_removed_step);
 static_assert(counter_table_complete(kAdvancingLayersCounterNames));
 
 struct AdvancingLayersResult2 {

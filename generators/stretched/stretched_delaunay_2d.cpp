@@ -18,6 +18,7 @@
 #include "base/number_text.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/stretched/layer_mesh_2d.hpp"
 #include "generators/stretched/metric_mesh_edits_2d.hpp"
 #include "generators/stretched/metric_smoothing_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
@@ -33,19 +34,17 @@ using predicates::Sign;
 
 namespace {
 
+using layer_mesh::component_walls;
+using layer_mesh::unit_vector;
+using layer_mesh::Wall;
+using layer_mesh::wall_normals;
+
 /// The point budget of the O-meshes and of the far field, each.
 std::uint64_t point_budget(const StretchedDelaunayOptions2& o) {
     return o.max_points != 0 ? o.max_points : kStretchedPointBudget;
 }
 
 constexpr std::uint32_t kNoComponent = 0xFFFFFFFFu;
-
-/// (x, y) over its scale-free length; (0, 0) for the zero vector.
-std::array<double, 2> unit_vector(double x, double y) {
-    const double n = scale_free_norm(x, y);
-    if (!(n > 0)) return {0, 0};
-    return {x / n, y / n};
-}
 
 /// A point the mesher adds, and what step 3 needs of it.
 struct AddedPoint {
@@ -57,94 +56,6 @@ struct AddedPoint {
     double spacing = 0;                      ///< the wall's tangential spacing at its normal
     double tx = 1, ty = 0;                   ///< the wall's direction at its normal
 };
-
-/// A closed loop of the domain's boundary with the domain outside it: a component's wall.
-struct Wall {
-    std::vector<tri::VertIdx> vertices;  ///< in order, the domain on the left
-    std::vector<std::array<double, 2>> normals;
-    std::vector<double> spacing;
-};
-
-/// The loops of boundary edges (triangle sides with no neighbour) of the domain's CDT whose
-/// traversal with the domain on the left turns clockwise: holes, i.e. components. A loop
-/// through a vertex with two outgoing boundary edges is skipped (no O-mesh there).
-std::vector<Wall> component_walls(const tri::Triangulation2& mesh) {
-    constexpr tri::VertIdx kNoVertex = 0xFFFFFFFFu;
-    std::vector<tri::VertIdx> next(mesh.vertex_count(), kNoVertex);
-    std::vector<bool> ambiguous(mesh.vertex_count(), false);
-    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
-        for (unsigned k = 0; k < 3; ++k) {
-            if (mesh.neighbors[3 * t + k] != tri::kNone) continue;
-            const tri::VertIdx a = mesh.triangles[3 * t + k];
-            const tri::VertIdx b = mesh.triangles[3 * t + (k + 1) % 3];
-            if (next[a] != kNoVertex) ambiguous[a] = true;
-            next[a] = b;
-        }
-    }
-    std::vector<Wall> walls;
-    std::vector<bool> visited(mesh.vertex_count(), false);
-    for (tri::VertIdx start = 0; start < mesh.vertex_count(); ++start) {
-        if (next[start] == kNoVertex || visited[start]) continue;
-        Wall wall;
-        bool closed = false, usable = true;
-        for (tri::VertIdx v = start; v != kNoVertex && !visited[v]; v = next[v]) {
-            visited[v] = true;
-            usable = usable && !ambiguous[v];
-            wall.vertices.push_back(v);
-            if (next[v] == start) closed = true;
-        }
-        if (!closed || !usable || wall.vertices.size() < 3) continue;
-        // The orientation at the lexicographically lowest vertex, where the loop is convex.
-        const std::size_t n = wall.vertices.size();
-        std::size_t low = 0;
-        for (std::size_t i = 1; i < n; ++i) {
-            const double* p = mesh.point(wall.vertices[i]);
-            const double* q = mesh.point(wall.vertices[low]);
-            if (p[0] < q[0] || (p[0] == q[0] && p[1] < q[1])) low = i;
-        }
-        const Sign turn = predicates::orient2d(mesh.point(wall.vertices[(low + n - 1) % n]),
-                                               mesh.point(wall.vertices[low]),
-                                               mesh.point(wall.vertices[(low + 1) % n]));
-        if (turn == Sign::Negative) walls.push_back(std::move(wall));
-    }
-    return walls;
-}
-
-/// Each wall vertex's normal (the mean of its two sides' left normals, then averaged with its
-/// neighbours' `passes` times) and tangential spacing (the mean of its two sides' lengths).
-void wall_normals(const tri::Triangulation2& mesh, Wall& wall, int passes) {
-    const std::size_t n = wall.vertices.size();
-    std::vector<std::array<double, 2>> side_normals(n);
-    std::vector<double> side_lengths(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double* a = mesh.point(wall.vertices[i]);
-        const double* b = mesh.point(wall.vertices[(i + 1) % n]);
-        const double dx = b[0] - a[0], dy = b[1] - a[1];
-        side_lengths[i] = scale_free_norm(dx, dy);
-        side_normals[i] = unit_vector(-dy, dx);
-    }
-    wall.normals.resize(n);
-    wall.spacing.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t before = (i + n - 1) % n;
-        wall.spacing[i] = 0.5 * (side_lengths[before] + side_lengths[i]);
-        const std::array<double, 2> m = unit_vector(side_normals[before][0] + side_normals[i][0],
-                                                    side_normals[before][1] + side_normals[i][1]);
-        // A cusp (sides folded back on each other): the side's own normal.
-        wall.normals[i] = (m[0] == 0 && m[1] == 0) ? side_normals[i] : m;
-    }
-    for (int pass = 0; pass < passes; ++pass) {
-        std::vector<std::array<double, 2>> smoothed(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::array<double, 2>& p = wall.normals[(i + n - 1) % n];
-            const std::array<double, 2>& q = wall.normals[(i + 1) % n];
-            const std::array<double, 2> m = unit_vector(p[0] + 2 * wall.normals[i][0] + q[0],
-                                                        p[1] + 2 * wall.normals[i][1] + q[1]);
-            smoothed[i] = (m[0] == 0 && m[1] == 0) ? wall.normals[i] : m;
-        }
-        wall.normals = std::move(smoothed);
-    }
-}
 
 /// True when (x, y) lies strictly inside the domain: in a triangle of its CDT (exact orient2d
 /// through the locator), not on a boundary side or a segment, not at a vertex.

@@ -970,6 +970,16 @@ adapt_bad_input() {
 # Advancing layers (issue 14): --layers and --quads; the mixed mesh in .vtu and .msh read back by
 # meshio (quads and triangles as printed), the counters of --stats, the quality note; every bad
 # value or combination refused with exit status 2 and one line.
+# expect_meshio_cells <file in $work> <quads> <triangles>: meshio reads that many of each.
+expect_meshio_cells() {
+  /usr/bin/python3 -c 'import sys, meshio
+m = meshio.read(sys.argv[1])
+count = {c.type: len(c.data) for c in m.cells}
+assert count.get("quad", 0) == int(sys.argv[2]), count
+assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/$1" "$2" "$3" ||
+    fail "meshio does not read $2 quads and $3 triangles from $1"
+}
+
 layers() {
   run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-5,1.2 --quads \
     -o "$work/naca.vtu" --stats --quality || return
@@ -987,12 +997,7 @@ layers() {
   run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-5,1.2 --quads \
     -o "$work/naca.msh" || return
   for file in naca.vtu naca.msh; do
-    /usr/bin/python3 -c 'import sys, meshio
-m = meshio.read(sys.argv[1])
-count = {c.type: len(c.data) for c in m.cells}
-assert count.get("quad", 0) == int(sys.argv[2]), count
-assert count.get("triangle", 0) == int(sys.argv[3]), count' "$work/$file" "$quads" "$triangles" ||
-      fail "meshio does not read $quads quads and $triangles triangles from $file"
+    expect_meshio_cells "$file" "$quads" "$triangles"
   done
   run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2,20 -o "$work/naca.ele" &&
     ! grep -q '^quads:' "$work/out" || fail "layers: split quads still reported as quads"
@@ -1032,6 +1037,37 @@ same_metric_report() {
   run 0 mesh --domain key -o "$work/m_out.ele" --size 0.1 --quality --metric "$2" || return
   [[ -n "$first" && "$first" == "$(grep '^quality.metric_' "$work/out")" ]] ||
     fail "--metric $1 and --metric $2 give different reports: $first / $(grep '^quality.metric_' "$work/out")"
+}
+
+# `mesh --generator advancing-layers --o-mesh`: the truncated O-mesh variant on the three-element
+# airfoil (three rings, cells removed in the gaps), its counters, a mixed .msh that meshio reads;
+# split into triangles on the NACA 0012; refused for the other generators.
+omesh() {
+  run 0 mesh --domain three-element --generator advancing-layers --layers 1e-4,1.2 --o-mesh \
+    --quads -o "$work/three.msh" --stats --quality || return
+  local quads triangles cells
+  quads=$(awk '/^quads: / { print $2; exit }' "$work/out")
+  triangles=$(awk '/^triangles: / { print $2; exit }' "$work/out")
+  cells=$(awk '/^omesh_cells: / { print $2 }' "$work/out")
+  [[ $quads -gt 1000 && $quads -eq $cells ]] || fail "o-mesh: $quads quads, $cells cells: $(cat "$work/out")"
+  for counter in omesh_min_ring_layers omesh_max_ring_layers omesh_removed_fold omesh_removed_step \
+    quality.quad_max_angle; do
+    grep -Eq "^$counter: " "$work/out" || fail "o-mesh --stats/--quality: no $counter line"
+  done
+  grep -Eq '^omesh_rings: 3$' "$work/out" || fail "o-mesh: not three rings: $(cat "$work/out")"
+  grep -Eq '^omesh_removed_overlap: [1-9][0-9]*$' "$work/out" ||
+    fail "o-mesh: no cell removed in the gaps: $(cat "$work/out")"
+  expect_meshio_cells three.msh "$quads" "$triangles"
+  run 0 mesh --domain naca0012 --generator advancing-layers --layers 1e-4,1.2 --o-mesh \
+    -o "$work/naca.ele" --stats || return
+  ! grep -Eq '^quads: [1-9]' "$work/out" || fail "o-mesh: split cells still reported as quads"
+  cells=$(awk '/^omesh_cells: / { print $2 }' "$work/out")
+  grep -Eq "^layer_triangles: $((2 * cells))$" "$work/out" ||
+    fail "o-mesh: $cells cells not split in two triangles each: $(cat "$work/out")"
+  expect_error 2 '--o-mesh applies to --generator advancing-layers only, not frontal' \
+    mesh --domain naca0012 --generator frontal --o-mesh -o "$work/x.vtu"
+  expect_error 2 '--o-mesh applies to --generator advancing-layers only, not stretched-delaunay' \
+    mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 --o-mesh -o "$work/x.vtu"
 }
 
 # `mesh --metric`: the stretched-mesh quality report against an expression or a metric file
@@ -1139,7 +1175,7 @@ case "$case_name" in
     swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
-    region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers)
+    region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

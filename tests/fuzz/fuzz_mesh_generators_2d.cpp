@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // libFuzzer target: every 2D mesh generator of the registry (generators/mesh_2d/mesh_generators_2d:
-// Delaunay refinement, quadtree, advancing front, advancing-front Delaunay, frontal) on fuzzed
+// Delaunay refinement, quadtree, advancing front, advancing-front Delaunay, frontal, advancing
+// layers with layers (both methods: advancing layers and the truncated O-mesh) and a hole seed,
+// see mesh_generators_2d_case.hpp) on fuzzed
 // points and segments with a uniform size of 2^-(byte % 6) times the input's extent (so a mesh
 // has at most a few thousand triangles) and a budget of 1,000 Steiner points (2,000 triangles for
 // the advancing front; its finding on a sliver 1 wide and 3e231 tall, 23 s with its default
@@ -52,7 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!c) return 0;
     gen::MeshRun2 run;
     try {
-        run = c->generator->run(tri::Pslg{c->input.xy, c->input.segments, {}, {}}, c->options);
+        run = c->generator->run(c->pslg(), c->options);
     } catch (const exactmesh::InputError&) {
         return 0;
     } catch (const exactmesh::GeometryError&) {
@@ -60,7 +62,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const std::exception& e) {
         fail(*c, std::string("threw: ") + e.what());
     }
-    const auto report = exactmesh::fuzz::check_mesh_generator_case(*c, run.mesh);
+    const auto report = exactmesh::fuzz::check_mesh_generator_case(*c, run.mesh, run.quads);
     if (!report.ok) fail(*c, report.problem);
     return 0;
 }

@@ -4,6 +4,10 @@
 // 4-byte header), the generator (byte 1 modulo the registry's size), a uniform size of 2^-(byte
 // 2 % 6) times the larger side of the bounding box (and, for a generator that takes a metric, a
 // constant stretched metric from the rest of byte 2), and the exact check the generator promises.
+// advancing-layers gets layers (first height, growth and 20 layers at most from the rest of byte
+// 2; from the rest of byte 1: the truncated O-mesh or advancing layers, quads kept or split) and,
+// for a wall, a hole seed at the centroid of the first three points (a loop of segments about it
+// becomes a wall); its mixed meshes are checked with check_mixed_mesh_2d.
 #pragma once
 
 #include <algorithm>
@@ -11,8 +15,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <string>
+#include <vector>
 
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/stretched/advancing_layers_2d.hpp"
 #include "tests/fuzz/fuzz_pslg.hpp"
 #include "triangulation/checks/check_conforming_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
@@ -26,6 +34,8 @@ struct MeshGeneratorCase {
     const generators::MeshGenerator2* generator = nullptr;
     generators::MeshOptions2 options;  ///< the size, and the Steiner budget given to decode
     double size = 0;                   ///< the uniform size (unset in options when not finite > 0)
+    std::vector<double> holes;         ///< advancing-layers: one seed (see above); else none
+    triangulation::Pslg pslg() const { return {input.xy, input.segments, holes, {}}; }
 };
 
 /// The case in data, or nothing when the bytes decode to no PSLG with a vertex.
@@ -35,7 +45,7 @@ inline std::optional<MeshGeneratorCase> decode_mesh_generator_case(
     std::optional<FuzzPslg> input = decode_pslg(data, size, 4, kMeshGeneratorsMaxPoints);
     if (!input || input->xy.empty()) return std::nullopt;
     static const auto generators = generators::mesh_generators_2d();
-    MeshGeneratorCase c{std::move(*input), &generators[data[1] % generators.size()], {}, 0};
+    MeshGeneratorCase c{std::move(*input), &generators[data[1] % generators.size()], {}, 0, {}};
     // The size: 2^-k of the larger side of the bounding box (finite inputs; others are rejected
     // by the generator's validation, whatever the size).
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
@@ -62,14 +72,41 @@ inline std::optional<MeshGeneratorCase> decode_mesh_generator_case(
             m.s = std::sin(angle);
             if (std::isnormal(m.h2)) c.options.metric = generators::MetricField2::uniform(m);
         }
+        if (c.generator->name == "advancing-layers") {
+            // First height size / 2^(1 + k % 8), growth 1 + (k / 8) / 10, k = byte 2 / 6; the
+            // method and the quads from byte 1 / (the registry's size).
+            const int k = data[2] / 6;
+            const unsigned extra = data[1] / static_cast<unsigned>(generators.size());
+            generators::LayerParameters2& layers = c.options.layers;
+            layers.first_height = std::ldexp(c.size, -(1 + k % 8));
+            layers.growth = 1 + (k / 8) / 10.0;
+            layers.max_layers = 20;
+            layers.method = extra % 2 == 1 ? generators::LayerMethod2::TruncatedOMesh
+                                           : generators::LayerMethod2::AdvancingLayers;
+            layers.quads = (extra / 2) % 2 == 1;
+            if (!std::isnormal(layers.first_height)) layers.first_height = 0;
+            if (xy.size() >= 6) {
+                c.holes = {(xy[0] + xy[2] + xy[4]) / 3, (xy[1] + xy[3] + xy[5]) / 3};
+                if (!std::isfinite(c.holes[0]) || !std::isfinite(c.holes[1])) c.holes.clear();
+            }
+        }
     }
     return c;
 }
 
 /// The exact check the case's generator promises: constrained Delaunay for the Delaunay ones,
-/// a conforming mesh for the others.
-inline triangulation::CheckReport check_mesh_generator_case(const MeshGeneratorCase& c,
-                                                            const triangulation::Cdt2Result& mesh) {
+/// a conforming mesh for the others, check_mixed_mesh_2d for a mixed mesh (quads given).
+inline triangulation::CheckReport check_mesh_generator_case(
+    const MeshGeneratorCase& c, const triangulation::Cdt2Result& mesh,
+    std::span<const triangulation::VertIdx> quads = {}) {
+    if (!quads.empty()) {
+        const generators::MixedMeshCheck2 mixed =
+            generators::check_mixed_mesh_2d(mesh.mesh.xy, mesh.mesh.triangles, quads, mesh.pieces);
+        triangulation::CheckReport report;
+        report.ok = mixed.ok();
+        if (!report.ok) report.problem = "mixed mesh: " + mixed.summary();
+        return report;
+    }
     return c.generator->delaunay
                ? triangulation::check_constrained_delaunay_2d(mesh.mesh, mesh.input_vertex_count,
                                                               c.input.segments, mesh.pieces)

@@ -45,12 +45,11 @@ inline FuzzReplay2 replay_mesh_generators_2d(const std::string& name, std::uint6
     if (!c) return r;
     r.generator = c->generator->name;
     try {
-        const generators::MeshRun2 run = c->generator->run(
-            triangulation::Pslg{c->input.xy, c->input.segments, {}, {}}, c->options);
+        const generators::MeshRun2 run = c->generator->run(c->pslg(), c->options);
         r.meshed = true;
         r.triangles = run.mesh.mesh.triangle_count();
         for (const auto& [key, value] : run.counters) r.counters.emplace_back(key, value);
-        r.check = fuzz::check_mesh_generator_case(*c, run.mesh);
+        r.check = fuzz::check_mesh_generator_case(*c, run.mesh, run.quads);
     } catch (const GeometryError& e) {
         r.error = e.what();
     } catch (const InputError& e) {

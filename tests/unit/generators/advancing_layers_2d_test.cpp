@@ -6,7 +6,10 @@
 // NACA 0012 domain the aspect ratio at the wall reaches 1000 and no layer triangle exceeds 150
 // degrees (exact compare_angles); the mesh of the input scaled by 2^600 or 2^-600 is the mesh
 // scaled, bit for bit; walls closer than the layers' thickness stop their stacks by collision
-// without any crossing; bad parameters are refused.
+// without any crossing; bad parameters are refused. The truncated O-mesh variant
+// (LayerMethod2::TruncatedOMesh) passes the same checks on the NACA 0012 and three-element
+// domains (quads kept and split), the random holes and the 2^+-600 scalings, and removes
+// cells in the three-element airfoil's gaps.
 #include "generators/stretched/advancing_layers_2d.hpp"
 
 #include <gtest/gtest.h>
@@ -24,6 +27,7 @@
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/frontal_delaunay_2d.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/stretched/truncated_omesh_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
@@ -62,13 +66,15 @@ tri::Cdt2Result frontal_fill(const gen::MeshDomain2& domain, const gen::SizeFunc
 }
 
 gen::AdvancingLayersResult2 run(const Input& in, double height, double growth, bool quads,
-                                std::uint32_t max_layers = 60, gen::SizeFunction size = {}) {
+                                std::uint32_t max_layers = 60, gen::SizeFunction size = {},
+                                gen::LayerMethod2 method = gen::LayerMethod2::AdvancingLayers) {
     const gen::MeshDomain2 domain(in.pslg());
     gen::AdvancingLayersOptions2 options;
     options.layers.first_height = height;
     options.layers.growth = growth;
     options.layers.max_layers = max_layers;
     options.layers.quads = quads;
+    options.layers.method = method;
     options.size = size;
     options.fill = &frontal_fill;
     return gen::advancing_layers_2d(domain, options);
@@ -160,6 +166,29 @@ bool layer_angles_at_most_150(const tri::Triangulation2& mesh, std::uint64_t cou
                      std::atan2(ux * vy - uy * vx, ux * vx + uy * vy) * 180 / std::numbers::pi);
     }
     return ok;
+}
+
+/// The mesh of the input scaled by 2^600 and 2^-600 (and the first height with it), quads kept,
+/// is the mesh scaled, bit for bit, and valid; returns the unscaled one.
+gen::AdvancingLayersResult2 expect_scaled_the_same(const Input& in, double height, double growth,
+                                                   gen::LayerMethod2 method) {
+    gen::AdvancingLayersResult2 reference = run(in, height, growth, true, 60, {}, method);
+    for (const int k : {600, -600}) {
+        Input scaled = in;
+        for (double& x : scaled.xy) x = std::ldexp(x, k);
+        for (double& x : scaled.holes) x = std::ldexp(x, k);
+        const gen::AdvancingLayersResult2 r =
+            run(scaled, std::ldexp(height, k), growth, true, 60, {}, method);
+        std::vector<double> unscaled = r.mesh.mesh.xy;
+        for (double& x : unscaled) x = std::ldexp(x, -k);
+        EXPECT_EQ(unscaled, reference.mesh.mesh.xy) << "2^" << k;
+        EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
+        EXPECT_EQ(r.quads, reference.quads) << "2^" << k;
+        EXPECT_EQ(r.stack_layers, reference.stack_layers) << "2^" << k;
+        EXPECT_EQ(r.counters.omesh_removed_overlap, reference.counters.omesh_removed_overlap);
+        expect_valid(r);
+    }
+    return reference;
 }
 
 }  // namespace
@@ -256,21 +285,9 @@ TEST(Generators_AdvancingLayers2, ScaledBy2ToThePlusMinus600GivesTheSameMeshScal
     const Input naca = exactmesh::testing::from_domain(
         gen::sample_domain(gen::SampleDomain::Naca0012, gen::SizeFunction::uniform(0.05)));
     for (const Input& in : {circle, naca}) {
-        const gen::AdvancingLayersResult2 reference = run(in, 2e-3, 1.3, true);
+        const gen::AdvancingLayersResult2 reference =
+            expect_scaled_the_same(in, 2e-3, 1.3, gen::LayerMethod2::AdvancingLayers);
         EXPECT_GT(reference.counters.layer_quads, 100u);
-        for (const int k : {600, -600}) {
-            Input scaled = in;
-            for (double& x : scaled.xy) x = std::ldexp(x, k);
-            for (double& x : scaled.holes) x = std::ldexp(x, k);
-            const gen::AdvancingLayersResult2 r = run(scaled, std::ldexp(2e-3, k), 1.3, true);
-            std::vector<double> unscaled = r.mesh.mesh.xy;
-            for (double& x : unscaled) x = std::ldexp(x, -k);
-            EXPECT_EQ(unscaled, reference.mesh.mesh.xy) << "2^" << k;
-            EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
-            EXPECT_EQ(r.quads, reference.quads) << "2^" << k;
-            EXPECT_EQ(r.stack_layers, reference.stack_layers) << "2^" << k;
-            expect_valid(r);
-        }
     }
 }
 
@@ -433,10 +450,96 @@ TEST(Generators_AdvancingLayers2, RandomStarHolesAndNarrowGapsGiveValidMixedMesh
         const gen::SizeFunction size = uniform(rng) < 0.5
                                            ? gen::SizeFunction::uniform(0.05 + 0.2 * uniform(rng))
                                            : gen::SizeFunction();
-        const gen::AdvancingLayersResult2 r = run(in, height, growth, quads, layers, size);
-        EXPECT_GT(r.counters.layer_points, 0u);
-        expect_valid(r);
-        expect_input_kept(r, in);
-        expect_area(r, in);
+        for (const gen::LayerMethod2 method :
+             {gen::LayerMethod2::AdvancingLayers, gen::LayerMethod2::TruncatedOMesh}) {
+            SCOPED_TRACE(method == gen::LayerMethod2::TruncatedOMesh ? "O-mesh" : "layers");
+            const gen::AdvancingLayersResult2 r =
+                run(in, height, growth, quads, layers, size, method);
+            if (method == gen::LayerMethod2::AdvancingLayers) {
+                EXPECT_GT(r.counters.layer_points, 0u);
+            } else {
+                // One ring per hole (fewer where random holes overlap into one loop).
+                EXPECT_GE(r.counters.omesh_rings, 1u);
+                EXPECT_LE(r.counters.omesh_rings, static_cast<std::uint64_t>(holes));
+            }
+            expect_valid(r);
+            expect_input_kept(r, in);
+            expect_area(r, in);
+        }
     }
+}
+
+TEST(Generators_TruncatedOMesh2, AirfoilsGiveValidMixedMeshesQuadsOrSplit) {
+    // The built-in NACA 0012 (one ring) and three-element airfoil (three rings, overlapping in
+    // the gaps between slat, main element and flap) at the brief's 1e-4, 1.2.
+    for (const auto& [which, rings] : {std::pair{gen::SampleDomain::Naca0012, 1u},
+                                       std::pair{gen::SampleDomain::ThreeElement, 3u}}) {
+        const Input in = exactmesh::testing::from_domain(gen::sample_domain(which));
+        for (const bool quads : {true, false}) {
+            SCOPED_TRACE(std::to_string(rings) + (quads ? " rings, quads" : " rings, split"));
+            const gen::AdvancingLayersResult2 r =
+                run(in, 1e-4, 1.2, quads, 60, {}, gen::LayerMethod2::TruncatedOMesh);
+            const gen::AdvancingLayersCounters2& c = r.counters;
+            EXPECT_EQ(c.omesh_rings, rings);
+            EXPECT_EQ(c.wall_loops, rings);
+            EXPECT_GE(c.omesh_min_ring_layers, 10u);  // 1e-4 * 1.2^k reaches the spacing
+            EXPECT_LE(c.omesh_max_ring_layers, 60u);
+            EXPECT_GT(c.omesh_cells, 0u);
+            EXPECT_EQ(c.layer_quads, c.omesh_cells);
+            EXPECT_EQ(c.quads, quads ? c.omesh_cells : 0u);
+            EXPECT_EQ(c.layer_triangles, quads ? 0u : 2 * c.omesh_cells);
+            EXPECT_EQ(c.stopped_collision + c.stopped_aspect_ratio + c.fan_corners, 0u);
+            if (rings == 3) {
+                // The gaps: the rings overlap there, and their coarser cells go.
+                EXPECT_GT(c.omesh_removed_overlap, 0u);
+            }
+            // Every normal line keeps layers except where a cut took them; the steps between
+            // neighbouring lines stay small (at most two layers per column).
+            std::uint32_t layered = 0;
+            for (const auto& [v, layers] : r.stack_layers) {
+                EXPECT_LE(layers, c.omesh_max_ring_layers) << "line at " << v;
+                if (layers > 0) ++layered;
+            }
+            EXPECT_GT(layered, r.stack_layers.size() / 2);
+            expect_valid(r);
+            expect_input_kept(r, in);
+            expect_area(r, in);
+        }
+    }
+}
+
+TEST(Generators_TruncatedOMesh2, ScaledBy2ToThePlusMinus600GivesTheSameMeshScaled) {
+    for (const gen::SampleDomain which :
+         {gen::SampleDomain::Naca0012, gen::SampleDomain::ThreeElement}) {
+        const Input in = exactmesh::testing::from_domain(
+            gen::sample_domain(which, gen::SizeFunction::uniform(0.05)));
+        const gen::AdvancingLayersResult2 reference =
+            expect_scaled_the_same(in, 1e-3, 1.25, gen::LayerMethod2::TruncatedOMesh);
+        EXPECT_GT(reference.counters.omesh_cells, 100u);
+    }
+}
+
+TEST(Generators_TruncatedOMesh2, BadParametersAreRefused) {
+    Input in = square(1);
+    add_circle(in, 0, 0, 0.3, 16);
+    const auto omesh = [&](double height, double growth, std::uint32_t layers) {
+        return run(in, height, growth, false, layers, {}, gen::LayerMethod2::TruncatedOMesh);
+    };
+    EXPECT_THROW(omesh(-1e-3, 1.2, 10), exactmesh::InputError);
+    EXPECT_THROW(omesh(std::nan(""), 1.2, 10), exactmesh::InputError);
+    EXPECT_THROW(omesh(1e-3, 0.5, 10), exactmesh::InputError);
+    EXPECT_THROW(omesh(1e-3, 11, 10), exactmesh::InputError);
+    EXPECT_THROW(omesh(1e-3, 1.2, 0), exactmesh::InputError);
+    EXPECT_THROW(omesh(1e-3, 1.2, gen::kMaxLayers + 1), exactmesh::InputError);
+    // Called directly, it validates too.
+    const gen::MeshDomain2 domain(in.pslg());
+    gen::AdvancingLayersOptions2 options;
+    options.fill = &frontal_fill;
+    options.layers.first_height = 0;
+    EXPECT_THROW(gen::truncated_omesh_2d(domain, options), exactmesh::InputError);
+    // A valid run on the same input: one ring, layers all around.
+    const gen::AdvancingLayersResult2 r = omesh(1e-3, 1.2, 10);
+    EXPECT_EQ(r.counters.omesh_rings, 1u);
+    EXPECT_EQ(r.counters.omesh_cells, 16u * r.counters.omesh_max_ring_layers);
+    expect_valid(r);
 }
