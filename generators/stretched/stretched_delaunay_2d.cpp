@@ -20,6 +20,7 @@
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/stretched/metric_mesh_edits_2d.hpp"
 #include "generators/stretched/metric_smoothing_2d.hpp"
+#include "generators/stretched/wall_loops_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
@@ -40,13 +41,6 @@ std::uint64_t point_budget(const StretchedDelaunayOptions2& o) {
 
 constexpr std::uint32_t kNoComponent = 0xFFFFFFFFu;
 
-/// (x, y) over its scale-free length; (0, 0) for the zero vector.
-std::array<double, 2> unit_vector(double x, double y) {
-    const double n = scale_free_norm(x, y);
-    if (!(n > 0)) return {0, 0};
-    return {x / n, y / n};
-}
-
 /// A point the mesher adds, and what step 3 needs of it.
 struct AddedPoint {
     double x = 0, y = 0;
@@ -57,94 +51,6 @@ struct AddedPoint {
     double spacing = 0;                      ///< the wall's tangential spacing at its normal
     double tx = 1, ty = 0;                   ///< the wall's direction at its normal
 };
-
-/// A closed loop of the domain's boundary with the domain outside it: a component's wall.
-struct Wall {
-    std::vector<tri::VertIdx> vertices;  ///< in order, the domain on the left
-    std::vector<std::array<double, 2>> normals;
-    std::vector<double> spacing;
-};
-
-/// The loops of boundary edges (triangle sides with no neighbour) of the domain's CDT whose
-/// traversal with the domain on the left turns clockwise: holes, i.e. components. A loop
-/// through a vertex with two outgoing boundary edges is skipped (no O-mesh there).
-std::vector<Wall> component_walls(const tri::Triangulation2& mesh) {
-    constexpr tri::VertIdx kNoVertex = 0xFFFFFFFFu;
-    std::vector<tri::VertIdx> next(mesh.vertex_count(), kNoVertex);
-    std::vector<bool> ambiguous(mesh.vertex_count(), false);
-    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
-        for (unsigned k = 0; k < 3; ++k) {
-            if (mesh.neighbors[3 * t + k] != tri::kNone) continue;
-            const tri::VertIdx a = mesh.triangles[3 * t + k];
-            const tri::VertIdx b = mesh.triangles[3 * t + (k + 1) % 3];
-            if (next[a] != kNoVertex) ambiguous[a] = true;
-            next[a] = b;
-        }
-    }
-    std::vector<Wall> walls;
-    std::vector<bool> visited(mesh.vertex_count(), false);
-    for (tri::VertIdx start = 0; start < mesh.vertex_count(); ++start) {
-        if (next[start] == kNoVertex || visited[start]) continue;
-        Wall wall;
-        bool closed = false, usable = true;
-        for (tri::VertIdx v = start; v != kNoVertex && !visited[v]; v = next[v]) {
-            visited[v] = true;
-            usable = usable && !ambiguous[v];
-            wall.vertices.push_back(v);
-            if (next[v] == start) closed = true;
-        }
-        if (!closed || !usable || wall.vertices.size() < 3) continue;
-        // The orientation at the lexicographically lowest vertex, where the loop is convex.
-        const std::size_t n = wall.vertices.size();
-        std::size_t low = 0;
-        for (std::size_t i = 1; i < n; ++i) {
-            const double* p = mesh.point(wall.vertices[i]);
-            const double* q = mesh.point(wall.vertices[low]);
-            if (p[0] < q[0] || (p[0] == q[0] && p[1] < q[1])) low = i;
-        }
-        const Sign turn = predicates::orient2d(mesh.point(wall.vertices[(low + n - 1) % n]),
-                                               mesh.point(wall.vertices[low]),
-                                               mesh.point(wall.vertices[(low + 1) % n]));
-        if (turn == Sign::Negative) walls.push_back(std::move(wall));
-    }
-    return walls;
-}
-
-/// Each wall vertex's normal (the mean of its two sides' left normals, then averaged with its
-/// neighbours' `passes` times) and tangential spacing (the mean of its two sides' lengths).
-void wall_normals(const tri::Triangulation2& mesh, Wall& wall, int passes) {
-    const std::size_t n = wall.vertices.size();
-    std::vector<std::array<double, 2>> side_normals(n);
-    std::vector<double> side_lengths(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double* a = mesh.point(wall.vertices[i]);
-        const double* b = mesh.point(wall.vertices[(i + 1) % n]);
-        const double dx = b[0] - a[0], dy = b[1] - a[1];
-        side_lengths[i] = scale_free_norm(dx, dy);
-        side_normals[i] = unit_vector(-dy, dx);
-    }
-    wall.normals.resize(n);
-    wall.spacing.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t before = (i + n - 1) % n;
-        wall.spacing[i] = 0.5 * (side_lengths[before] + side_lengths[i]);
-        const std::array<double, 2> m = unit_vector(side_normals[before][0] + side_normals[i][0],
-                                                    side_normals[before][1] + side_normals[i][1]);
-        // A cusp (sides folded back on each other): the side's own normal.
-        wall.normals[i] = (m[0] == 0 && m[1] == 0) ? side_normals[i] : m;
-    }
-    for (int pass = 0; pass < passes; ++pass) {
-        std::vector<std::array<double, 2>> smoothed(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::array<double, 2>& p = wall.normals[(i + n - 1) % n];
-            const std::array<double, 2>& q = wall.normals[(i + 1) % n];
-            const std::array<double, 2> m = unit_vector(p[0] + 2 * wall.normals[i][0] + q[0],
-                                                        p[1] + 2 * wall.normals[i][1] + q[1]);
-            smoothed[i] = (m[0] == 0 && m[1] == 0) ? wall.normals[i] : m;
-        }
-        wall.normals = std::move(smoothed);
-    }
-}
 
 /// True when (x, y) lies strictly inside the domain: in a triangle of its CDT (exact orient2d
 /// through the locator), not on a boundary side or a segment, not at a vertex.
@@ -214,7 +120,8 @@ void check_options(const StretchedDelaunayOptions2& o) {
 
 /// Step 1 and the first filter: every wall's O-mesh points strictly inside the domain.
 std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
-                                     const DomainLocator2& locator, std::span<const Wall> walls,
+                                     const DomainLocator2& locator,
+                                     std::span<const WallLoop2> walls,
                                      const StretchedDelaunayOptions2& o,
                                      StretchedDelaunayCounters2& counters) {
     // Scale-free factors: height_k = first_height * sum_{j<k} growth^j, thickness_k =
@@ -229,7 +136,7 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
     }
     // The budget before any work: the layers each normal would get.
     std::uint64_t count = 0;
-    for (const Wall& wall : walls) {
+    for (const WallLoop2& wall : walls) {
         for (const double spacing : wall.spacing) {
             for (std::size_t k = 1; k < height_factor.size(); ++k) {
                 if (!(o.first_height * thickness_factor[k] < spacing)) break;
@@ -252,7 +159,7 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
     const double across_factor = std::sqrt(o.growth);
     constexpr std::size_t kNoPoint = ~std::size_t{0};
     for (std::uint32_t c = 0; c < walls.size(); ++c) {
-        const Wall& wall = walls[c];
+        const WallLoop2& wall = walls[c];
         // column[i][k - 1]: the point of normal i in layer k (the columns end where a normal
         // stopped).
         std::vector<std::vector<std::size_t>> column(wall.vertices.size());
@@ -312,7 +219,7 @@ Metric2 omesh_metric(const AddedPoint& p) {
 }
 
 /// The stretching of wall vertex i: the wall's spacing along it, the first height across.
-Metric2 wall_metric(const Wall& wall, std::size_t i, double first_height) {
+Metric2 wall_metric(const WallLoop2& wall, std::size_t i, double first_height) {
     const std::array<double, 2>& n = wall.normals[i];
     const double aspect = wall.spacing[i] / first_height;
     return aspect > 1 ? metric_from_stretching(-n[1], n[0], wall.spacing[i], aspect)
@@ -325,8 +232,9 @@ Metric2 wall_metric(const Wall& wall, std::size_t i, double first_height) {
 /// direction: along the wall, the spacing; across it, the thickness). The decision reads only
 /// the unfiltered set, so it does not depend on the order.
 std::vector<AddedPoint> drop_overlaps(const tri::Triangulation2& domain_mesh,
-                                      std::span<const Wall> walls, std::vector<AddedPoint> points,
-                                      double first_height, StretchedDelaunayCounters2& counters) {
+                                      std::span<const WallLoop2> walls,
+                                      std::vector<AddedPoint> points, double first_height,
+                                      StretchedDelaunayCounters2& counters) {
     if (walls.size() < 2) return points;
     // Tags: i < points.size() an O-mesh point, else a wall vertex.
     SortedPoints sorted;
@@ -554,9 +462,9 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
     StretchedDelaunayCounters2 counters;
     const tri::Cdt2Result& domain_cdt = domain.triangulation();
     const tri::Triangulation2& domain_mesh = domain_cdt.mesh;
-    std::vector<Wall> walls = component_walls(domain_mesh);
-    for (Wall& wall : walls) {
-        wall_normals(domain_mesh, wall, options.normal_smoothing_passes);
+    std::vector<WallLoop2> walls = wall_loops_2d(domain_mesh);
+    for (WallLoop2& wall : walls) {
+        wall_normals_2d(domain_mesh, wall, options.normal_smoothing_passes);
         ++counters.components;
         counters.wall_vertices += wall.vertices.size();
     }
@@ -564,19 +472,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
                                                                : graded_size_from_boundary(domain);
     // The boundary split to the far-field size, except the walls: their vertices (the input's)
     // are the O-meshes' feet.
-    std::set<std::array<double, 4>> wall_sides;
-    for (const Wall& wall : walls) {
-        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
-            const double* a = domain_mesh.point(wall.vertices[i]);
-            const double* b = domain_mesh.point(wall.vertices[(i + 1) % wall.vertices.size()]);
-            wall_sides.insert({a[0], a[1], b[0], b[1]});
-            wall_sides.insert({b[0], b[1], a[0], a[1]});
-        }
-    }
-    DomainBoundary2 boundary =
-        discretize_domain_boundary(domain, [&](const double* a, const double* b) {
-            return wall_sides.count({a[0], a[1], b[0], b[1]}) != 0 ? SizeFunction{} : size;
-        });
+    DomainBoundary2 boundary = discretize_except_walls(domain, walls, size);
     const DomainLocator2& locator = boundary.locator;
     const tri::Triangulation2& located = boundary.cdt.mesh;
 
@@ -611,7 +507,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
     std::vector<double> weights(metrics.size(), 0.5);
     for (tri::VertIdx v = 0; v < boundary_count; ++v)
         metrics[v] = isotropic(size(xy[2 * std::size_t{v}], xy[2 * std::size_t{v} + 1]));
-    for (const Wall& wall : walls) {
+    for (const WallLoop2& wall : walls) {
         for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
             // No layers (max_layers 0): the wall is boundary like any other, sized isotropically.
             metrics[wall.vertices[i]] = options.max_layers > 0
