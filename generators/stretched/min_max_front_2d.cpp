@@ -434,25 +434,23 @@ MinMaxFrontResult2 min_max_front_2d(const MeshDomain2& domain, const MinMaxFront
     MinMaxFrontCounters2 counters;
     const std::uint64_t budget =
         options.max_steiner_points != 0 ? options.max_steiner_points : kMinMaxFrontPointBudget;
-    const tri::Triangulation2& domain_mesh = domain.triangulation().mesh;
     const bool layered = options.layers.first_height > 0;
-    std::vector<WallLoop2> walls;
-    if (layered) walls = wall_loops_2d(domain_mesh);
-    for (WallLoop2& wall : walls)
-        wall_normals_2d(domain_mesh, wall, options.normal_smoothing_passes);
-    counters.wall_loops = walls.size();
     const SizeFunction size =
         options.size.bounded() ? options.size : graded_size_from_boundary(domain);
 
-    // Step 1: the boundary split to the size (the walls kept), its constrained Delaunay
-    // triangulation.
-    const DomainBoundary2 boundary = discretize_except_walls(domain, walls, size);
+    // Step 1: the boundary split to the size, its constrained Delaunay triangulation.
+    const DomainBoundary2 boundary = discretize_domain_boundary(domain, size);
     counters.boundary_points = boundary.xy.size() / 2 - boundary.cdt.mesh.xy.size() / 2;
     const tri::Pslg& pslg = domain.pslg();
     tri::Cdt2Result out = tri::constrained_delaunay_2d(
         tri::Pslg{boundary.xy, boundary.pieces, pslg.holes, pslg.regions}, domain.domain_options());
     tri::Triangulation2& mesh = out.mesh;
     if (mesh.constrained.empty()) mesh.constrained.assign(mesh.triangles.size(), 0);
+    // The walls of the split boundary: a stack at every boundary point on them.
+    std::vector<WallLoop2> walls;
+    if (layered) walls = wall_loops_2d(mesh);
+    for (WallLoop2& wall : walls) wall_normals_2d(mesh, wall, options.normal_smoothing_passes);
+    counters.wall_loops = walls.size();
 
     MinMaxFrontResult2 result;
     // Step 2.

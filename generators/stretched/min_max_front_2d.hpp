@@ -4,16 +4,16 @@
 // reconnection", AIAA J. 33(9)]: points are generated from the current triangulation, never
 // from a separate front data structure, and each is inserted into it by forced triangulation
 // followed by local reconnection.
-//  1. The coarse triangulation: the domain's boundary split to the size (the walls kept as they
-//     are when there are layers: their vertices are the feet of the stacks; discretize_except_
-//     walls), then its constrained Delaunay triangulation (constrained_delaunay_2d, holes and
-//     exterior removed): every boundary piece is a constrained edge from the start, so the
-//     boundary is recovered before any interior point exists.
+//  1. The coarse triangulation: the domain's boundary split to the size (discretize_domain_
+//     boundary: it only splits, so a wall sampled finer than the size keeps its own points),
+//     then its constrained Delaunay triangulation (constrained_delaunay_2d, holes and exterior
+//     removed): every boundary piece is a constrained edge from the start, so the boundary is
+//     recovered before any interior point exists.
 //  2. Stretched region (layers.first_height > 0): one stack per wall vertex (walls: the hole
-//     loops, wall_loops_2d) along its smoothed wall normal (wall_normals_2d), layer k at height
-//     first_height (1 + g + ... + g^(k-1)) from the wall vertex p, the point p + t n rounded
-//     once (fma); all stacks advance together, layer by layer. A stack stops when its next
-//     layer's thickness reaches its cell's tangential spacing (the mean distance from its last
+//     loops of that triangulation, wall_loops_2d) along its smoothed wall normal (wall_normals_2d),
+//     layer k at height first_height (1 + g + ... + g^(k-1)) from the wall vertex p, the point p +
+//     t n rounded once (fma); all stacks advance together, layer by layer. A stack stops when its
+//     next layer's thickness reaches its cell's tangential spacing (the mean distance from its last
 //     point to its neighbours' points of the same layer: aspect ratio about 1), after
 //     max_layers, when a neighbour stopped more than two layers below, or when the new point
 //     would not be strictly inside a triangle or on an unconstrained edge of the current
