@@ -17,6 +17,7 @@
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/stretched/wall_loops_2d.hpp"
+#include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 #include "predicates/sos.hpp"
@@ -56,6 +57,19 @@ double size_at(const SizeFunction& size, double x, double y) {
                          " at " + format_point(at) + " (it must be finite and > 0)");
     }
     return s;
+}
+
+/// The distance from q to the segment a - b, scale-free (no square of a coordinate: the
+/// direction is a unit vector first), exact under power-of-two scaling.
+double distance_to_segment(const double* q, const double* a, const double* b) {
+    const double length = scale_free_norm(b[0] - a[0], b[1] - a[1]);
+    const double qx = q[0] - a[0], qy = q[1] - a[1];
+    if (!(length > 0)) return scale_free_norm(qx, qy);
+    const double ux = (b[0] - a[0]) / length, uy = (b[1] - a[1]) / length;
+    const double along = qx * ux + qy * uy;
+    if (along <= 0) return scale_free_norm(qx, qy);
+    if (along >= length) return scale_free_norm(q[0] - b[0], q[1] - b[1]);
+    return std::fabs(qx * uy - qy * ux);
 }
 
 /// Point insertion into a mesh lent as half-edges (HalfEdgeEdit): the walk, the too-close
@@ -107,15 +121,26 @@ class Inserter {
         return {};
     }
 
-    /// True when some vertex lies closer than r to q (scale-free lengths): a breadth-first
-    /// search from triangle t over the triangles whose bounding boxes meet q's square of
-    /// half-width r.
-    bool too_close(tri::TriIdx t, const double* q, double r) {
+    /// What too_close looks for besides vertices closer than r.
+    struct Clearance {
+        bool encroach = false;  ///< q in the closed diametral circle of a constrained edge
+        /// A constrained edge not at `foot` closer than `distance` to q (a layer point past
+        /// the middle of a gap: the opposing wall nearer than its own).
+        tri::VertIdx foot = tri::kNone;
+        double distance = 0;
+    };
+
+    /// True when some vertex lies closer than r to q (scale-free lengths), or a constrained or
+    /// boundary edge of the triangles seen is too near as `clearance` says (exact
+    /// corner_dot_sign for the diametral circle): a breadth-first search from triangle t over
+    /// the triangles whose bounding boxes meet q's square of half-width max(r, distance).
+    bool too_close(tri::TriIdx t, const double* q, double r, const Clearance& clearance) {
         if (++stamp_ == 0) {
             std::fill(mark_.begin(), mark_.end(), 0);
             stamp_ = 1;
         }
-        const double lo_x = q[0] - r, hi_x = q[0] + r, lo_y = q[1] - r, hi_y = q[1] + r;
+        const double half = std::max(r, clearance.distance);
+        const double lo_x = q[0] - half, hi_x = q[0] + half, lo_y = q[1] - half, hi_y = q[1] + half;
         queue_.clear();
         queue_.push_back(t);
         mark_[t] = stamp_;
@@ -124,6 +149,16 @@ class Inserter {
             for (unsigned k = 0; k < 3; ++k) {
                 const double* p = mesh_.point(mesh_.tv[3 * u + k]);
                 if (scale_free_norm(p[0] - q[0], p[1] - q[1]) < r) return true;
+                const tri::EdgeIdx e = 3 * u + k;
+                if (!constrained(e)) continue;
+                const double* p_next = mesh_.point(mesh_.destination(e));
+                if (clearance.encroach &&
+                    predicates::corner_dot_sign(q, p, p_next) != Sign::Positive)
+                    return true;
+                if (clearance.distance > 0 && mesh_.origin(e) != clearance.foot &&
+                    mesh_.destination(e) != clearance.foot &&
+                    distance_to_segment(q, p, p_next) < clearance.distance)
+                    return true;
             }
             for (unsigned k = 0; k < 3; ++k) {
                 const tri::EdgeIdx f = mesh_.twin[3 * u + k];
@@ -322,7 +357,8 @@ std::vector<Stack> advance_layers(tri::Triangulation2& mesh, std::span<const Wal
                     stop(counters.stopped_collision);
                     continue;
                 }
-                if (inserter.too_close(at.t, q, o.min_distance * thickness)) {
+                if (inserter.too_close(at.t, q, o.min_distance * thickness,
+                                       {false, s.column.front(), height})) {
                     stop(counters.stopped_too_close);
                     continue;
                 }
@@ -415,7 +451,8 @@ std::uint64_t front_pass(tri::Triangulation2& mesh, const SizeFunction& size,
             ++counters.rejected_outside;
             continue;
         }
-        if (inserter.too_close(at.t, q, o.min_distance * size_at(size, q[0], q[1]))) {
+        if (inserter.too_close(at.t, q, o.min_distance * size_at(size, q[0], q[1]),
+                               {true, tri::kNone, 0})) {
             ++counters.rejected_too_close;
             continue;
         }

@@ -18,8 +18,11 @@
 //     max_layers, when a neighbour stopped more than two layers below, or when the new point
 //     would not be strictly inside a triangle or on an unconstrained edge of the current
 //     triangulation reached from the stack's last point without crossing a constrained or
-//     boundary edge (a collision with a wall or the outer boundary), or would lie closer than
-//     min_distance times its layer's thickness to an existing point.
+//     boundary edge (a collision with a wall or the outer boundary), would lie closer than
+//     min_distance times its layer's thickness to an existing point, or closer to a
+//     constrained edge away from its wall vertex than its height above that vertex (past the
+//     middle of a gap: the opposing wall is near; without it stacks from the flap reached the
+//     main element of the three-element domain and left triangles of 169 degrees).
 //  3. Isotropic region, in passes. A triangle is accepted when its longest side is at most
 //     `acceptance` times the size at its centroid (scale-free lengths). Front edges: the sides
 //     of unaccepted triangles that are boundary or constrained edges or face an accepted
@@ -28,10 +31,12 @@
 //     unaccepted side, at the equilateral height sqrt(3)/2 s of the size s at its midpoint. It
 //     is rejected when the walk from the edge's triangle to it is blocked by a constrained or
 //     boundary edge (outside the domain, or across a segment), when it lies on a constrained
-//     edge or a vertex, or when an existing point (the points of this pass included: they are
-//     inserted at once) lies closer than min_distance times s at the new point (found by a
-//     breadth-first search over the triangles whose bounding boxes meet the square of that
-//     radius). Passes repeat until one inserts no point.
+//     edge or a vertex, when it lies in the closed diametral circle of a constrained or
+//     boundary edge nearby (exact corner_dot_sign: a point beside a wall whose stacks stopped
+//     made triangles of up to 169 degrees on the three-element domain), or when an existing point
+//     (the points of this pass included: they are inserted at once) lies closer than min_distance
+//     times s at the new point (found by a breadth-first search over the triangles whose bounding
+//     boxes meet the square of that radius). Passes repeat until one inserts no point.
 //  4. Insertion: the point splits the triangle that holds it into three, or the two triangles
 //     beside the unconstrained edge it lies on into four (flip_2d.hpp's kernel); then Lawson
 //     flips restore the Delaunay criterion around it (exact incircle with the shared symbolic
@@ -51,7 +56,7 @@
 // domain scaled by 2^k with its sizes and first height scaled alike gives the same mesh scaled.
 // Cost: O(S L) layer points for S stacks and L layers, O(P) expected per insertion (walk, search,
 // flips), plus one whole-mesh min-max swapping per layer and per pass (O(T) tests each).
-// Predicates: orient2d, incircle_sos, compare_angles (through swap_edges_2d).
+// Predicates: orient2d, incircle_sos, corner_dot_sign, compare_angles (through swap_edges_2d).
 #pragma once
 
 #include <array>
