@@ -496,8 +496,6 @@ MinMaxFrontResult2 min_max_front_2d(const MeshDomain2& domain, const MinMaxFront
         for (const Stack& s : stacks)
             result.stack_layers.emplace_back(s.column.front(),
                                              static_cast<std::uint32_t>(s.column.size() - 1));
-    } else if (layered) {
-        out.warnings.push_back("min-max front: the domain has no wall (hole loop): no layers");
     }
     // Step 3.
     while (mesh.triangle_count() > 0) {
@@ -515,6 +513,8 @@ MinMaxFrontResult2 min_max_front_2d(const MeshDomain2& domain, const MinMaxFront
     if (!kept.ok) throw GeometryError("min-max front: " + kept.problem);
     restore_input_terms(boundary, out);
     out.triangle_attributes.clear();
+    if (layered && walls.empty())
+        out.warnings.push_back("min-max front: the domain has no wall (hole loop): no layers");
     counters.triangles = mesh.triangle_count();
     result.mesh = std::move(out);
     result.counters = counters;
