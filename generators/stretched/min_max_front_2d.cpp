@@ -505,13 +505,12 @@ MinMaxFrontResult2 min_max_front_2d(const MeshDomain2& domain, const MinMaxFront
         if (inserted == 0) break;
     }
 
-    // The exact check of the result.
-    const MixedMeshCheck2 check = check_mixed_mesh_2d(mesh.xy, mesh.triangles, {}, out.pieces);
-    if (!check.ok())
-        throw GeometryError("min-max front: the mesh fails its check: " + check.summary());
-    const tri::CheckReport kept = tri::check_input_vertices_kept_2d(mesh, pslg.xy);
-    if (!kept.ok) throw GeometryError("min-max front: " + kept.problem);
+    // The exact check of the result: oriented, no fold, closed by the pieces, every input
+    // segment a chain of pieces, every input vertex in the meshed region kept.
     restore_input_terms(boundary, out);
+    const tri::CheckReport check =
+        tri::check_conforming_mesh_2d(mesh, out.input_vertex_count, pslg.segments, out.pieces);
+    if (!check.ok) throw GeometryError("min-max front: the mesh fails its check: " + check.problem);
     out.triangle_attributes.clear();
     if (layered && walls.empty())
         out.warnings.push_back("min-max front: the domain has no wall (hole loop): no layers");

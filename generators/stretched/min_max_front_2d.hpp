@@ -49,11 +49,11 @@
 // Invariants: after every insertion the triangles are strictly counter-clockwise (the point
 // strictly inside its triangle, or exactly on an unconstrained edge; flips only of strictly
 // convex quadrilaterals), every boundary piece is a constrained edge, and every input vertex
-// and segment is present; checked exactly at the end (check_mixed_mesh_2d on the triangles and
-// pieces, check_input_vertices_kept_2d), a GeometryError if not. Scale: the decisions are exact
-// predicates on the points, and every length, size and height compared is scale-free
-// (scale_free_norm) and every point made by operations exact under power-of-two scaling, so a
-// domain scaled by 2^k with its sizes and first height scaled alike gives the same mesh scaled.
+// and segment is present; checked exactly at the end (check_conforming_mesh_2d), a
+// GeometryError if not. Scale: the decisions are exact predicates on the points, every length,
+// size and height compared is scale-free (scale_free_norm), and every point is made by
+// operations exact under power-of-two scaling, so a domain scaled by 2^k with its sizes and
+// first height scaled alike gives the same mesh scaled.
 // Cost: O(S L) layer points for S stacks and L layers, O(P) expected per insertion (walk, search,
 // flips), plus one whole-mesh min-max swapping per layer and per pass (O(T) tests each).
 // Predicates: orient2d, incircle_sos, corner_dot_sign, compare_angles (through swap_edges_2d).
