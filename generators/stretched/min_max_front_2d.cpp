@@ -483,6 +483,14 @@ MinMaxFrontResult2 min_max_front_2d(const MeshDomain2& domain, const MinMaxFront
         tri::Pslg{boundary.xy, boundary.pieces, pslg.holes, pslg.regions}, domain.domain_options());
     tri::Triangulation2& mesh = out.mesh;
     if (mesh.constrained.empty()) mesh.constrained.assign(mesh.triangles.size(), 0);
+    // A domain closed by the segments: no boundary edge off them (without segments the
+    // constrained triangulation keeps the convex hull; the other generators refuse it too).
+    for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+        if (mesh.neighbors[e] == tri::kNone && mesh.constrained[e] == 0)
+            throw InputError(
+                "min-max front: the segments enclose no region (the convex hull's "
+                "edges are no segments)");
+    }
     // The walls of the split boundary: a stack at every boundary point on them.
     std::vector<WallLoop2> walls;
     if (layered) walls = wall_loops_2d(mesh);
