@@ -31,6 +31,9 @@
 // edge over the smallest altitude), wall_aspect (the wall's longest piece over the first height:
 // what the layers must reach at the wall), layers (ours: the most a stack reached; Gmsh's from its
 // thickness); ours also layer_max_angle and layer_above_150 over the layers' triangles alone.
+// BM_layers/min-max-front/<domain>/<first height>: the registry's `min-max-front` (Marcum's
+// advancing-front min-max, generators/stretched/min_max_front_2d) with the same size and layers,
+// the same counters but the layer-only ones (its layer triangles are not numbered apart).
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -259,11 +262,13 @@ double our_layer_count(const Domain& d, const LayerCase& c) {
     throw std::runtime_error("advancing-layers reports no 'layers' counter");
 }
 
-void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCase* c) {
-    const gen::MeshDomain2 domain(tri::Pslg{d->xy, d->segments, d->holes, {}});
+/// Runs the registry's `generator` with the layer options, timed; the last run.
+gen::MeshRun2 time_layers(benchmark::State& state, const Domain& d, const LayerCase& c,
+                          const char* generator_name) {
+    const gen::MeshDomain2 domain(tri::Pslg{d.xy, d.segments, d.holes, {}});
     domain.triangulation();
-    const gen::MeshOptions2 options = layer_options(*c);
-    const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d("advancing-layers");
+    const gen::MeshOptions2 options = layer_options(c);
+    const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(generator_name);
     gen::MeshRun2 run;
     for (auto _ : state) {
         run = generator.run_on_domain(domain, options);
@@ -271,6 +276,11 @@ void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCa
         benchmark::DoNotOptimize(run);
         state.ResumeTiming();
     }
+    return run;
+}
+
+void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCase* c) {
+    const gen::MeshRun2 run = time_layers(state, *d, *c, "advancing-layers");
     double layers = 0;
     std::size_t layer_triangles = 0;
     for (const auto& [name, value] : run.counters) {
@@ -287,6 +297,18 @@ void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCa
         gen::MetricField2::uniform(gen::metric_from_matrix(1, 0, 1)));
     state.counters["layer_max_angle"] = in_layers.max_angle;
     state.counters["layer_above_150"] = static_cast<double>(in_layers.above_150_degrees);
+    state.counters["wall_aspect"] = wall_aspect(*d, c->first_height);
+}
+
+/// The advancing-front min-max generator with the same layers (its layers are triangles from the
+/// start; layers: the most a stack reached).
+void BM_layers_min_max_front(benchmark::State& state, const Domain* d, const LayerCase* c) {
+    const gen::MeshRun2 run = time_layers(state, *d, *c, "min-max-front");
+    double layers = 0;
+    for (const auto& [name, value] : run.counters) {
+        if (name == "layers") layers = static_cast<double>(value);
+    }
+    report_layers(state, run.mesh.mesh.xy, run.mesh.mesh.triangles, c->first_height, layers);
     state.counters["wall_aspect"] = wall_aspect(*d, c->first_height);
 }
 
@@ -389,6 +411,11 @@ int main(int argc, char** argv) {
             register_side_by_side("BM_layers", "gmsh-boundary-layer",
                                   "/" + airfoil.name + "/" + height, gmsh, BM_layers_exactmesh,
                                   BM_layers_gmsh, &airfoil, &c);
+            benchmark::RegisterBenchmark(
+                ("BM_layers/min-max-front/" + airfoil.name + "/" + height).c_str(),
+                BM_layers_min_max_front, &airfoil, &c)
+                ->Unit(benchmark::kMillisecond)
+                ->MinTime(0.5);
         }
     }
     benchmark::Initialize(&argc, argv);
