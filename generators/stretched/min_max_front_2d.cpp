@@ -22,6 +22,7 @@
 #include "predicates/power_of_two.hpp"
 #include "predicates/sos.hpp"
 #include "triangulation/checks/check_conforming_2d.hpp"
+#include "triangulation/constrained/constrained_triangulation_2d.hpp"
 #include "triangulation/mesh/flip_2d.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
 
@@ -479,8 +480,14 @@ MinMaxFrontResult2 min_max_front_2d(const MeshDomain2& domain, const MinMaxFront
     const DomainBoundary2 boundary = discretize_domain_boundary(domain, size);
     counters.boundary_points = boundary.xy.size() / 2 - boundary.cdt.mesh.xy.size() / 2;
     const tri::Pslg& pslg = domain.pslg();
-    tri::Cdt2Result out = tri::constrained_delaunay_2d(
-        tri::Pslg{boundary.xy, boundary.pieces, pslg.holes, pslg.regions}, domain.domain_options());
+    // As the frontal and metric generators build it (a vertex within rounding of a piece
+    // becomes a vertex of it: plain constrained_delaunay_2d lost such a chain on fuzzed input).
+    tri::Cdt2Result out = tri::ConstrainedTriangulation2(
+                              tri::Pslg{boundary.xy, boundary.pieces, pslg.holes, pslg.regions},
+                              domain.domain_options())
+                              .take_result();
+    if (out.mesh.triangle_count() == 0)
+        throw InputError("min-max front: the segments enclose no region");
     tri::Triangulation2& mesh = out.mesh;
     if (mesh.constrained.empty()) mesh.constrained.assign(mesh.triangles.size(), 0);
     // A domain closed by the segments: no boundary edge off them (without segments the
