@@ -79,9 +79,21 @@ double distance_to_segment(const double* q, const double* a, const double* b) {
 class Inserter {
   public:
     Inserter(tri::TriMesh2& mesh, MinMaxFrontCounters2& counters)
-        : mesh_(mesh), counters_(counters), vertex_triangle_(mesh.vertex_count(), tri::kNone) {
-        for (tri::TriIdx t = 0; t < mesh_.triangle_slots(); ++t) note(t);
-        mark_.assign(mesh_.triangle_slots(), 0);
+        : mesh_(mesh), counters_(counters) {
+        rebuild();
+    }
+
+    /// Min-max swapping from every side of the triangles the insertions since the last call
+    /// wrote (the local pass: swap_edges_2d seeded by them); then the vertex triangles anew
+    /// (a swap can take a vertex's recorded triangle away from it).
+    void swap_touched() {
+        seeds_.clear();
+        for (const tri::TriIdx t : touched_) {
+            for (unsigned k = 0; k < 3; ++k) seeds_.push_back(3 * t + k);
+        }
+        touched_.clear();
+        counters_.min_max_swaps += tri::swap_edges_2d(mesh_, tri::MinMaxAngle{}, seeds_).swaps;
+        rebuild();
     }
 
     tri::TriIdx triangle_at(tri::VertIdx v) const { return vertex_triangle_[v]; }
@@ -228,6 +240,17 @@ class Inserter {
     void note(tri::TriIdx t) {
         if (mesh_.is_dead(t)) return;
         for (unsigned k = 0; k < 3; ++k) vertex_triangle_[mesh_.tv[3 * t + k]] = t;
+        touched_.push_back(t);
+    }
+
+    void rebuild() {
+        vertex_triangle_.assign(mesh_.vertex_count(), tri::kNone);
+        for (tri::TriIdx t = 0; t < mesh_.triangle_slots(); ++t) {
+            if (mesh_.is_dead(t)) continue;
+            for (unsigned k = 0; k < 3; ++k) vertex_triangle_[mesh_.tv[3 * t + k]] = t;
+        }
+        mark_.assign(mesh_.triangle_slots(), 0);
+        stamp_ = 0;
     }
 
     tri::TriMesh2& mesh_;
@@ -237,6 +260,8 @@ class Inserter {
     std::uint32_t stamp_ = 0;
     std::vector<tri::TriIdx> queue_;
     std::vector<tri::EdgeIdx> pending_;
+    std::vector<tri::TriIdx> touched_;
+    std::vector<tri::EdgeIdx> seeds_;
     std::uint32_t random_ = 12345;
 };
 
@@ -264,11 +289,6 @@ void check_options(const MinMaxFrontOptions2& o) {
                      " points would be added (the point budget; --max-steiner raises it)");
 }
 
-/// Min-max swapping over the whole mesh.
-void min_max_swaps(tri::Triangulation2& mesh, MinMaxFrontCounters2& counters) {
-    counters.min_max_swaps += tri::swap_edges_2d(mesh, tri::MinMaxAngle{}).swaps;
-}
-
 /// One stack of layer points along a wall vertex's normal.
 struct Stack {
     const WallLoop2* wall = nullptr;
@@ -278,9 +298,9 @@ struct Stack {
 };
 
 /// Step 2: the layers, all stacks advancing together.
-std::vector<Stack> advance_layers(tri::Triangulation2& mesh, std::span<const WallLoop2> walls,
-                                  const MinMaxFrontOptions2& o, std::uint64_t budget,
-                                  MinMaxFrontCounters2& counters) {
+std::vector<Stack> advance_layers(tri::TriMesh2& m, Inserter& inserter,
+                                  std::span<const WallLoop2> walls, const MinMaxFrontOptions2& o,
+                                  std::uint64_t budget, MinMaxFrontCounters2& counters) {
     std::vector<Stack> stacks;
     for (const WallLoop2& wall : walls) {
         for (std::size_t i = 0; i < wall.vertices.size(); ++i)
@@ -309,9 +329,6 @@ std::vector<Stack> advance_layers(tri::Triangulation2& mesh, std::span<const Wal
     std::uint64_t active = stacks.size();
     for (std::size_t k = 1; k <= layers && active > 0; ++k) {
         {
-            tri::HalfEdgeEdit edit(mesh);
-            tri::TriMesh2& m = edit.mesh();
-            Inserter inserter(m, counters);
             for (std::size_t si = 0; si < stacks.size(); ++si) {
                 Stack& s = stacks[si];
                 if (!s.active) continue;
@@ -369,7 +386,7 @@ std::vector<Stack> advance_layers(tri::Triangulation2& mesh, std::span<const Wal
                 counters.layers = std::max<std::uint64_t>(counters.layers, k);
             }
         }
-        min_max_swaps(mesh, counters);
+        inserter.swap_touched();
     }
     for (const Stack& s : stacks) {
         if (s.active) ++counters.stopped_max_layers;
@@ -391,38 +408,36 @@ struct FrontEdge {
 };
 
 /// Step 3: one pass of the advancing front; returns the points it inserted.
-std::uint64_t front_pass(tri::Triangulation2& mesh, const SizeFunction& size,
+std::uint64_t front_pass(tri::TriMesh2& m, Inserter& inserter, const SizeFunction& size,
                          const MinMaxFrontOptions2& o, std::uint64_t budget,
                          MinMaxFrontCounters2& counters) {
-    const tri::TriIdx triangles = mesh.triangle_count();
+    const tri::TriIdx triangles = m.triangle_slots();
     std::vector<char> accepted(triangles, 0);
     for (tri::TriIdx t = 0; t < triangles; ++t) {
-        const double* p[3] = {mesh.point(mesh.triangles[3 * t]),
-                              mesh.point(mesh.triangles[3 * t + 1]),
-                              mesh.point(mesh.triangles[3 * t + 2])};
+        if (m.is_dead(t)) continue;
+        const double* p[3] = {m.point(m.tv[3 * t]), m.point(m.tv[3 * t + 1]),
+                              m.point(m.tv[3 * t + 2])};
         double longest = 0;
         for (unsigned k = 0; k < 3; ++k) {
             const double* a = p[k];
             const double* b = p[(k + 1) % 3];
             longest = std::max(longest, scale_free_norm(b[0] - a[0], b[1] - a[1]));
         }
-        // The centroid as exact power-of-two operations of sums (scales exactly).
+        // The centroid: sums and a division, exact under power-of-two scaling.
         const double cx = (p[0][0] + p[1][0] + p[2][0]) / 3;
         const double cy = (p[0][1] + p[1][1] + p[2][1]) / 3;
         accepted[t] = longest <= o.acceptance * size_at(size, cx, cy) ? 1 : 0;
     }
     std::vector<FrontEdge> front;
     for (tri::TriIdx t = 0; t < triangles; ++t) {
-        if (accepted[t]) continue;
+        if (m.is_dead(t) || accepted[t]) continue;
         for (unsigned k = 0; k < 3; ++k) {
-            const tri::TriIdx n = mesh.neighbors[3 * t + k];
-            if (n != tri::kNone && !mesh.is_constrained(t, static_cast<int>(k)) && !accepted[n])
-                continue;
-            const tri::VertIdx u = mesh.triangles[3 * t + k];
-            const tri::VertIdx v = mesh.triangles[3 * t + (k + 1) % 3];
-            const double* a = mesh.point(u);
-            const double* b = mesh.point(v);
-            front.push_back({scale_free_norm(b[0] - a[0], b[1] - a[1]), u, v, t});
+            const tri::EdgeIdx e = 3 * t + k;
+            if (!inserter.constrained(e) && !accepted[tri::triangle_of(m.twin[e])]) continue;
+            const double* a = m.point(m.origin(e));
+            const double* b = m.point(m.destination(e));
+            front.push_back(
+                {scale_free_norm(b[0] - a[0], b[1] - a[1]), m.origin(e), m.destination(e), t});
         }
     }
     std::sort(front.begin(), front.end(), [](const FrontEdge& a, const FrontEdge& b) {
@@ -430,9 +445,6 @@ std::uint64_t front_pass(tri::Triangulation2& mesh, const SizeFunction& size,
                (a.length == b.length && (a.u < b.u || (a.u == b.u && a.v < b.v)));
     });
     std::uint64_t inserted = 0;
-    tri::HalfEdgeEdit edit(mesh);
-    tri::TriMesh2& m = edit.mesh();
-    Inserter inserter(m, counters);
     for (const FrontEdge& f : front) {
         // Skipped when an earlier insertion of this pass rewrote its triangle.
         bool kept = false;
@@ -505,20 +517,28 @@ MinMaxFrontResult2 min_max_front_2d(const MeshDomain2& domain, const MinMaxFront
     counters.wall_loops = walls.size();
 
     MinMaxFrontResult2 result;
-    // Step 2.
-    if (layered && !walls.empty() && mesh.triangle_count() > 0) {
-        const std::vector<Stack> stacks = advance_layers(mesh, walls, options, budget, counters);
-        for (const Stack& s : stacks)
-            result.stack_layers.emplace_back(s.column.front(),
-                                             static_cast<std::uint32_t>(s.column.size() - 1));
+    {
+        // Steps 2 and 3 on the mesh lent as half-edges; each layer and each pass ends with
+        // min-max swapping from the triangles its insertions wrote.
+        tri::HalfEdgeEdit edit(mesh);
+        tri::TriMesh2& m = edit.mesh();
+        Inserter inserter(m, counters);
+        if (!walls.empty()) {
+            const std::vector<Stack> stacks =
+                advance_layers(m, inserter, walls, options, budget, counters);
+            for (const Stack& s : stacks)
+                result.stack_layers.emplace_back(s.column.front(),
+                                                 static_cast<std::uint32_t>(s.column.size() - 1));
+        }
+        for (;;) {
+            ++counters.passes;
+            const std::uint64_t inserted = front_pass(m, inserter, size, options, budget, counters);
+            inserter.swap_touched();
+            if (inserted == 0) break;
+        }
     }
-    // Step 3.
-    while (mesh.triangle_count() > 0) {
-        ++counters.passes;
-        const std::uint64_t inserted = front_pass(mesh, size, options, budget, counters);
-        min_max_swaps(mesh, counters);
-        if (inserted == 0) break;
-    }
+    // Step 5: a last min-max swapping over the whole mesh.
+    counters.min_max_swaps += tri::swap_edges_2d(mesh, tri::MinMaxAngle{}).swaps;
 
     // The exact check of the result: oriented, no fold, closed by the pieces, every input
     // segment a chain of pieces, every input vertex in the meshed region kept.
