@@ -22,6 +22,8 @@
 #include "generators/sizing/size_function.hpp"
 #include "generators/stretched/min_max_front_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
+#include "tests/support/scaled_coordinates.hpp"
+#include "tests/support/stretched_domains_2d.hpp"
 #include "tests/support/test_scale.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 
@@ -31,21 +33,12 @@ namespace pred = exactmesh::predicates;
 
 namespace {
 
-/// A PSLG, every coordinate scaled by 2^k.
-struct Domain {
-    std::vector<double> xy;
-    std::vector<tri::VertIdx> segments;
-    std::vector<double> holes;
-    Domain(gen::SampleDomain d, int k) {
-        const gen::DomainPslg pslg = gen::sample_domain(d, {});
-        for (const double x : pslg.xy) xy.push_back(std::ldexp(x, k));
-        segments.assign(pslg.segments.begin(), pslg.segments.end());
-        for (const double x : pslg.holes) holes.push_back(std::ldexp(x, k));
-    }
-    /// The unit square.
-    Domain() : xy{0, 0, 1, 0, 1, 1, 0, 1}, segments{0, 1, 1, 2, 2, 3, 3, 0} {}
-    tri::Pslg pslg() const { return {xy, segments, holes, {}}; }
-};
+using Domain = exactmesh::testing::Input;
+using exactmesh::testing::scaled_sample_domain;
+
+Domain unit_square() {
+    return exactmesh::testing::polygon({0, 0, 1, 0, 1, 1, 0, 1});
+}
 
 /// A uniform size for the tests that give one: finer with EXACTMESH_TEST_SCALE above 1, coarser
 /// below (bounded both ways).
@@ -66,12 +59,7 @@ gen::MinMaxFrontOptions2 layered(double first_height, double growth = 1.2) {
 }
 
 void expect_valid(const Domain& domain, const gen::MinMaxFrontResult2& r) {
-    const tri::CheckReport report = tri::detail::check_constrained_mesh_2d(
-        r.mesh.mesh, r.mesh.input_vertex_count, domain.segments, r.mesh.pieces, {}, false);
-    EXPECT_TRUE(report.ok) << report.problem;
-    ASSERT_GE(r.mesh.mesh.xy.size(), domain.xy.size());
-    for (std::size_t i = 0; i < domain.xy.size(); ++i) EXPECT_EQ(r.mesh.mesh.xy[i], domain.xy[i]);
-    EXPECT_EQ(r.mesh.input_vertex_count, domain.xy.size() / 2);
+    exactmesh::testing::expect_valid_mesh_of(domain, r.mesh);
     EXPECT_EQ(r.counters.triangles, r.mesh.mesh.triangle_count());
 }
 
@@ -115,31 +103,6 @@ std::size_t above_150_degrees(const tri::Triangulation2& mesh) {
     return count;
 }
 
-/// The largest aspect ratio (longest edge over smallest altitude, L^2 / (2 area)) of the
-/// triangles with a side on a wall of input vertices from `first` on (unscaled coordinates).
-double wall_aspect_ratio(const tri::Triangulation2& mesh, tri::VertIdx first, tri::VertIdx end) {
-    double largest = 0;
-    const auto on_wall = [&](tri::VertIdx v) { return v >= first && v < end; };
-    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
-        bool at_wall = false;
-        for (unsigned k = 0; k < 3; ++k) {
-            at_wall = at_wall || (mesh.is_constrained(t, static_cast<int>(k)) &&
-                                  on_wall(mesh.triangles[3 * t + k]) &&
-                                  on_wall(mesh.triangles[3 * t + (k + 1) % 3]));
-        }
-        if (!at_wall) continue;
-        const double* a = mesh.point(mesh.triangles[3 * t]);
-        const double* b = mesh.point(mesh.triangles[3 * t + 1]);
-        const double* c = mesh.point(mesh.triangles[3 * t + 2]);
-        const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-        const auto sq = [](const double* p, const double* q) {
-            return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
-        };
-        largest = std::max(largest, std::max({sq(a, b), sq(b, c), sq(c, a)}) / area2);
-    }
-    return largest;
-}
-
 void print(const char* name, const gen::MinMaxFrontResult2& r) {
     std::cout << name << ": " << r.mesh.mesh.vertex_count() << " points, "
               << r.mesh.mesh.triangle_count() << " triangles, max angle "
@@ -151,7 +114,7 @@ void print(const char* name, const gen::MinMaxFrontResult2& r) {
 }
 
 TEST(MinMaxFront2d, SquareIsValid) {
-    const Domain domain;
+    const Domain domain = unit_square();
     gen::MinMaxFrontOptions2 options;
     options.size = gen::SizeFunction::uniform(test_size(0.1));
     const gen::MinMaxFrontResult2 r = run(domain, options);
@@ -174,7 +137,7 @@ TEST(MinMaxFront2d, SampleDomainsAreValidWithAndWithoutLayers) {
     for (const gen::SampleDomain d :
          {gen::SampleDomain::SquareWithHoles, gen::SampleDomain::Naca0012,
           gen::SampleDomain::ThreeElement}) {
-        const Domain domain(d, 0);
+        const Domain domain = scaled_sample_domain(d, 0);
         const std::string name(gen::sample_domain_name(d));
         const gen::MinMaxFrontResult2 plain = run(domain, {});
         expect_valid(domain, plain);
@@ -192,13 +155,14 @@ TEST(MinMaxFront2d, SampleDomainsAreValidWithAndWithoutLayers) {
 }
 
 TEST(MinMaxFront2d, Naca0012LayersReachAspectRatio1000) {
-    const Domain domain(gen::SampleDomain::Naca0012, 0);
+    const Domain domain = scaled_sample_domain(gen::SampleDomain::Naca0012, 0);
     const gen::MinMaxFrontResult2 r = run(domain, layered(1e-5));
     expect_valid(domain, r);
     print("naca0012, layers 1e-5", r);
     EXPECT_GE(r.counters.max_wall_aspect_ratio, 1000u);
     // The airfoil's vertices follow the far-field box's four corners.
-    const double ratio = wall_aspect_ratio(r.mesh.mesh, 4, r.mesh.input_vertex_count);
+    const double ratio =
+        exactmesh::testing::wall_aspect_ratios(r.mesh.mesh, 4, r.mesh.input_vertex_count).second;
     std::cout << "largest aspect ratio of a wall triangle: " << ratio << "\n";
     EXPECT_GE(ratio, 1000.0);
     EXPECT_EQ(above_150_degrees(r.mesh.mesh), 0u);
@@ -208,7 +172,7 @@ TEST(MinMaxFront2d, Naca0012LayersReachAspectRatio1000) {
 TEST(MinMaxFront2d, LargestAngleNoWorseThanDelaunayOfTheSamePoints) {
     for (const gen::SampleDomain d :
          {gen::SampleDomain::Naca0012, gen::SampleDomain::ThreeElement}) {
-        const Domain domain(d, 0);
+        const Domain domain = scaled_sample_domain(d, 0);
         const gen::MinMaxFrontResult2 r = run(domain, layered(1e-4));
         const tri::Cdt2Result delaunay = tri::constrained_delaunay_2d(
             tri::Pslg{r.mesh.mesh.xy, r.mesh.pieces, domain.holes, {}});
@@ -223,7 +187,7 @@ TEST(MinMaxFront2d, LargestAngleNoWorseThanDelaunayOfTheSamePoints) {
 }
 
 gen::MinMaxFrontResult2 run_scaled(int k, bool given_size, bool layers) {
-    const Domain domain(gen::SampleDomain::Naca0012, k);
+    const Domain domain = scaled_sample_domain(gen::SampleDomain::Naca0012, k);
     gen::MinMaxFrontOptions2 options =
         layers ? layered(std::ldexp(1e-4, k)) : gen::MinMaxFrontOptions2{};
     if (given_size) options.size = gen::SizeFunction::uniform(std::ldexp(0.25, k));
@@ -239,11 +203,8 @@ TEST(MinMaxFront2d, ScaledDomainGivesTheSameMeshScaled) {
             for (const int k : {600, -600}) {
                 const gen::MinMaxFrontResult2 r = run_scaled(k, given_size, layers);
                 EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
-                ASSERT_EQ(r.mesh.mesh.xy.size(), reference.mesh.mesh.xy.size());
-                std::size_t differ = 0;
-                for (std::size_t i = 0; i < r.mesh.mesh.xy.size(); ++i)
-                    differ += r.mesh.mesh.xy[i] != std::ldexp(reference.mesh.mesh.xy[i], k) ? 1 : 0;
-                EXPECT_EQ(differ, 0u) << "2^" << k;
+                EXPECT_TRUE(exactmesh::testing::coordinates_scaled_by(r.mesh.mesh.xy,
+                                                                      reference.mesh.mesh.xy, k));
                 EXPECT_EQ(gen::counter_list(r.counters), gen::counter_list(reference.counters));
             }
         }
@@ -251,7 +212,7 @@ TEST(MinMaxFront2d, ScaledDomainGivesTheSameMeshScaled) {
 }
 
 TEST(MinMaxFront2d, BadOptionsAndBudgetAreInputErrors) {
-    const Domain domain(gen::SampleDomain::Naca0012, 0);
+    const Domain domain = scaled_sample_domain(gen::SampleDomain::Naca0012, 0);
     gen::MinMaxFrontOptions2 options = layered(-1);
     EXPECT_THROW(run(domain, options), exactmesh::InputError);
     options = layered(1e-4, 0.5);
@@ -287,7 +248,7 @@ TEST(MinMaxFront2d, RegistryRunsItWithAndWithoutLayers) {
     EXPECT_FALSE(generator.delaunay);
     EXPECT_FALSE(generator.needs_size);
     EXPECT_TRUE(generator.honours.contains(gen::MeshOption::Layers));
-    const Domain domain(gen::SampleDomain::Naca0012, 0);
+    const Domain domain = scaled_sample_domain(gen::SampleDomain::Naca0012, 0);
     gen::MeshOptions2 options;
     const gen::MeshRun2 plain = generator.run(domain.pslg(), options);
     options.layers.first_height = 1e-4;
