@@ -6,8 +6,9 @@
 // followed by local reconnection.
 //  1. The coarse triangulation: the domain's boundary split to the size (discretize_domain_
 //     boundary: it only splits, so a wall sampled finer than the size keeps its own points),
-//     then its constrained Delaunay triangulation (constrained_delaunay_2d, holes and exterior
-//     removed): every boundary piece is a constrained edge from the start, so the boundary is
+//     then its constrained Delaunay triangulation (ConstrainedTriangulation2, as frontal and
+//     metric-delaunay build it; holes and exterior removed; segments that enclose nothing an
+//     InputError): every boundary piece is a constrained edge from the start, so the boundary is
 //     recovered before any interior point exists.
 //  2. Stretched region (layers.first_height > 0): one stack per wall vertex (walls: the hole
 //     loops of that triangulation, wall_loops_2d) along its smoothed wall normal (wall_normals_2d),
@@ -32,8 +33,8 @@
 //     is rejected when the walk from the edge's triangle to it is blocked by a constrained or
 //     boundary edge (outside the domain, or across a segment), when it lies on a constrained
 //     edge or a vertex, when it lies in the closed diametral circle of a constrained or
-//     boundary edge nearby (exact corner_dot_sign: a point beside a wall whose stacks stopped
-//     made triangles of up to 169 degrees on the three-element domain), or when an existing point
+//     boundary edge nearby (exact corner_dot_sign: a rule for points beside walls), or when an
+//     existing point
 //     (the points of this pass included: they are inserted at once) lies closer than min_distance
 //     times s at the new point (found by a breadth-first search over the triangles whose bounding
 //     boxes meet the square of that radius). Passes repeat until one inserts no point.
@@ -50,6 +51,11 @@
 //     in all): the stretched cells' Delaunay diagonals make obtuse triangles; min-max removes
 //     them.
 //  5. A last min-max swapping over the whole mesh (swap_edges_2d), then the exact check.
+// Choices: the points of a pass are inserted as they are made (Marcum makes a pass's points
+// first, then inserts them), so the too-close test sees them through the mesh and no point grid
+// of its own is needed (sizes range over five orders of magnitude with layers); the front is
+// recomputed from the acceptance of every triangle at each pass, and an edge whose triangle an
+// earlier insertion of the pass rewrote waits for the next pass.
 // Invariants: after every insertion the triangles are strictly counter-clockwise (the point
 // strictly inside its triangle, or exactly on an unconstrained edge; flips only of strictly
 // convex quadrilaterals), every boundary piece is a constrained edge, and every input vertex
