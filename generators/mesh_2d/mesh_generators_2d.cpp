@@ -313,11 +313,10 @@ MeshRun2 run_stretched_delaunay(const MeshDomain2& domain, const MeshOptions2& o
 
 MeshRun2 run_min_max_front(const MeshDomain2& domain, const MeshOptions2& options) {
     check_size_budget(domain, options, false);
-    MinMaxFrontOptions2 front;
-    front.layers = options.layers;
-    front.size = options.size;
-    front.max_steiner_points = options.max_steiner_points;
-    MinMaxFrontResult2 result = min_max_front_2d(domain, front);
+    MinMaxFrontResult2 result =
+        min_max_front_2d(domain, {.layers = options.layers,
+                                  .size = options.size,
+                                  .max_steiner_points = options.max_steiner_points});
     return {std::move(result.mesh), {}, counter_list(result.counters)};
 }
 
