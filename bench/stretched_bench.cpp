@@ -33,6 +33,9 @@
 // thickness); ours also layer_max_angle and layer_above_150 over the layers' triangles alone.
 // The truncated O-mesh variant (`--o-mesh`, generators/stretched/truncated_omesh_2d) runs on the
 // same cases as BM_layers/exactmesh-o-mesh/<domain>/<first height> (no peer of its own).
+// BM_layers/min-max-front/<domain>/<first height>: the registry's `min-max-front` (Marcum's
+// advancing-front min-max, generators/stretched/min_max_front_2d) with the same size and layers,
+// the same counters but the layer-only ones (its layer triangles are not numbered apart).
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -262,14 +265,16 @@ double our_layer_count(const Domain& d, const LayerCase& c) {
     throw std::runtime_error("advancing-layers reports no 'layers' counter");
 }
 
-/// advancing-layers by `method` on the case, timed from the built domain to the mesh.
-void run_layers(benchmark::State& state, const Domain* d, const LayerCase* c,
-                gen::LayerMethod2 method) {
-    const gen::MeshDomain2 domain(tri::Pslg{d->xy, d->segments, d->holes, {}});
+/// Runs the registry's `generator` with the layer options (and layer method), timed; the last
+/// run.
+gen::MeshRun2 time_layers(benchmark::State& state, const Domain& d, const LayerCase& c,
+                          const char* generator_name,
+                          gen::LayerMethod2 method = gen::LayerMethod2::AdvancingLayers) {
+    const gen::MeshDomain2 domain(tri::Pslg{d.xy, d.segments, d.holes, {}});
     domain.triangulation();
-    gen::MeshOptions2 options = layer_options(*c);
+    gen::MeshOptions2 options = layer_options(c);
     options.layers.method = method;
-    const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d("advancing-layers");
+    const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(generator_name);
     gen::MeshRun2 run;
     for (auto _ : state) {
         run = generator.run_on_domain(domain, options);
@@ -277,6 +282,13 @@ void run_layers(benchmark::State& state, const Domain* d, const LayerCase* c,
         benchmark::DoNotOptimize(run);
         state.ResumeTiming();
     }
+    return run;
+}
+
+/// advancing-layers by `method`: the layers' own angles beside the whole mesh's.
+void run_layers(benchmark::State& state, const Domain* d, const LayerCase* c,
+                gen::LayerMethod2 method) {
+    const gen::MeshRun2 run = time_layers(state, *d, *c, "advancing-layers", method);
     double layers = 0;
     std::size_t layer_triangles = 0;
     for (const auto& [name, value] : run.counters) {
@@ -302,6 +314,18 @@ void BM_layers_exactmesh(benchmark::State& state, const Domain* d, const LayerCa
 
 void BM_layers_omesh(benchmark::State& state, const Domain* d, const LayerCase* c) {
     run_layers(state, d, c, gen::LayerMethod2::TruncatedOMesh);
+}
+
+/// The advancing-front min-max generator with the same layers (its layers are triangles from the
+/// start; layers: the most a stack reached).
+void BM_layers_min_max_front(benchmark::State& state, const Domain* d, const LayerCase* c) {
+    const gen::MeshRun2 run = time_layers(state, *d, *c, "min-max-front");
+    double layers = 0;
+    for (const auto& [name, value] : run.counters) {
+        if (name == "layers") layers = static_cast<double>(value);
+    }
+    report_layers(state, run.mesh.mesh.xy, run.mesh.mesh.triangles, c->first_height, layers);
+    state.counters["wall_aspect"] = wall_aspect(*d, c->first_height);
 }
 
 /// Gmsh's BoundaryLayer field on every airfoil segment, a fan at each element's trailing edge.
@@ -403,10 +427,13 @@ int main(int argc, char** argv) {
             const std::string suffix = "/" + airfoil.name + "/" + height;
             register_side_by_side("BM_layers", "gmsh-boundary-layer", suffix, gmsh,
                                   BM_layers_exactmesh, BM_layers_gmsh, &airfoil, &c);
-            benchmark::RegisterBenchmark(("BM_layers/exactmesh-o-mesh" + suffix).c_str(),
-                                         BM_layers_omesh, &airfoil, &c)
-                ->Unit(benchmark::kMillisecond)
-                ->MinTime(0.5);
+            for (const auto& [name, function] :
+                 {std::pair{"BM_layers/exactmesh-o-mesh", &BM_layers_omesh},
+                  std::pair{"BM_layers/min-max-front", &BM_layers_min_max_front}}) {
+                benchmark::RegisterBenchmark((name + suffix).c_str(), function, &airfoil, &c)
+                    ->Unit(benchmark::kMillisecond)
+                    ->MinTime(0.5);
+            }
         }
     }
     benchmark::Initialize(&argc, argv);

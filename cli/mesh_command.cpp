@@ -158,7 +158,7 @@ void run_mesh(const MeshArguments& arguments) {
     if (!layered && (!arguments.layers.empty() || arguments.quads)) {
         throw InputError(
             "--layers and --quads apply to --generator advancing-layers (and --layers to "
-            "stretched-delaunay) only, not " +
+            "stretched-delaunay and min-max-front) only, not " +
             std::string(generator.name));
     }
     if (arguments.quads && generator.name != "advancing-layers") {
@@ -169,11 +169,13 @@ void run_mesh(const MeshArguments& arguments) {
         throw InputError("--o-mesh applies to --generator advancing-layers only, not " +
                          std::string(generator.name));
     }
-    if (layered && arguments.layers.empty()) {
+    // min-max-front meshes without layers too (its isotropic advancing front alone).
+    const bool layers_optional = generator.name == "min-max-front";
+    if (layered && !layers_optional && arguments.layers.empty()) {
         throw InputError("--generator " + std::string(generator.name) +
                          " needs --layers FIRST_HEIGHT,GROWTH[,MAX_LAYERS] (e.g. 1e-4,1.2)");
     }
-    if (layered && arguments.smooth > 0) {
+    if (layered && (!layers_optional || !arguments.layers.empty()) && arguments.smooth > 0) {
         // Laplacian smoothing moves every free vertex, the layers' too: it would undo them.
         throw InputError("--smooth would move the layers' points: not with --generator " +
                          std::string(generator.name));
@@ -186,7 +188,8 @@ void run_mesh(const MeshArguments& arguments) {
                          "output (or .svg)");
     }
     const gen::LayerParameters2 layer_parameters =
-        layered ? gen::parse_layer_parameters(arguments.layers) : gen::LayerParameters2{};
+        layered && !arguments.layers.empty() ? gen::parse_layer_parameters(arguments.layers)
+                                             : gen::LayerParameters2{};
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
     if (!arguments.input.empty()) {
         std::vector<fs::path> inputs{arguments.input, io::poly_node_path(arguments.input)};
@@ -434,8 +437,8 @@ void add_mesh_command(CLI::App& app) {
     command
         ->add_option(
             "--layers", arguments->layers,
-            "advancing-layers and stretched-delaunay only (and required there): boundary "
-            "layers on the walls "
+            "advancing-layers and stretched-delaunay (required there) and min-max-front "
+            "(optional) only: boundary layers on the walls "
             "(every hole loop: the airfoils of the built-in domains): the first layer's "
             "thickness, the growth ratio in [1, 10], and at most MAX_LAYERS layers (1 to " +
                 std::to_string(gen::kMaxLayers) +

@@ -20,6 +20,7 @@
 #include "generators/mesh_2d/frontal_delaunay_2d.hpp"
 #include "generators/mesh_2d/quadtree_mesh_2d.hpp"
 #include "generators/stretched/metric_delaunay_2d.hpp"
+#include "generators/stretched/min_max_front_2d.hpp"
 #include "generators/stretched/stretched_delaunay_2d.hpp"
 
 namespace exactmesh::generators {
@@ -310,6 +311,15 @@ MeshRun2 run_stretched_delaunay(const MeshDomain2& domain, const MeshOptions2& o
     return {std::move(result.mesh), {}, counter_list(result.counters)};
 }
 
+MeshRun2 run_min_max_front(const MeshDomain2& domain, const MeshOptions2& options) {
+    check_size_budget(domain, options, false);
+    MinMaxFrontResult2 result =
+        min_max_front_2d(domain, {.layers = options.layers,
+                                  .size = options.size,
+                                  .max_steiner_points = options.max_steiner_points});
+    return {std::move(result.mesh), {}, counter_list(result.counters)};
+}
+
 constexpr std::array kGenerators{
     MeshGenerator2{
         "delaunay-refinement",
@@ -373,6 +383,14 @@ constexpr std::array kGenerators{
                    false,
                    {MeshOption::Size, MeshOption::MaxSteinerPoints, MeshOption::Layers},
                    &run_stretched_delaunay},
+    MeshGenerator2{"min-max-front",
+                   "Marcum: the boundary's constrained Delaunay triangulation, layer points along "
+                   "smoothed wall normals (optional --layers), then advancing-front points, each "
+                   "inserted by forced triangulation, Delaunay flips and min-max swaps",
+                   false,
+                   false,
+                   {MeshOption::Size, MeshOption::MaxSteinerPoints, MeshOption::Layers},
+                   &run_min_max_front},
 };
 
 constexpr std::array<EnumName<MeshOption>, 8> kMeshOptionNames{{

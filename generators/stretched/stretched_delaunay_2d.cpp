@@ -21,6 +21,7 @@
 #include "generators/stretched/layer_mesh_2d.hpp"
 #include "generators/stretched/metric_mesh_edits_2d.hpp"
 #include "generators/stretched/metric_smoothing_2d.hpp"
+#include "generators/stretched/wall_loops_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
@@ -125,7 +126,8 @@ void check_options(const StretchedDelaunayOptions2& o) {
 
 /// Step 1 and the first filter: every wall's O-mesh points strictly inside the domain.
 std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
-                                     const DomainLocator2& locator, std::span<const Wall> walls,
+                                     const DomainLocator2& locator,
+                                     std::span<const WallLoop2> walls,
                                      const StretchedDelaunayOptions2& o,
                                      StretchedDelaunayCounters2& counters) {
     // Scale-free factors: height_k = first_height * sum_{j<k} growth^j, thickness_k =
@@ -140,7 +142,7 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
     }
     // The budget before any work: the layers each normal would get.
     std::uint64_t count = 0;
-    for (const Wall& wall : walls) {
+    for (const WallLoop2& wall : walls) {
         for (const double spacing : wall.spacing) {
             for (std::size_t k = 1; k < height_factor.size(); ++k) {
                 if (!(o.first_height * thickness_factor[k] < spacing)) break;
@@ -163,7 +165,7 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
     const double across_factor = std::sqrt(o.growth);
     constexpr std::size_t kNoPoint = ~std::size_t{0};
     for (std::uint32_t c = 0; c < walls.size(); ++c) {
-        const Wall& wall = walls[c];
+        const WallLoop2& wall = walls[c];
         // column[i][k - 1]: the point of normal i in layer k (the columns end where a normal
         // stopped).
         std::vector<std::vector<std::size_t>> column(wall.vertices.size());
@@ -223,7 +225,7 @@ Metric2 omesh_metric(const AddedPoint& p) {
 }
 
 /// The stretching of wall vertex i: the wall's spacing along it, the first height across.
-Metric2 wall_metric(const Wall& wall, std::size_t i, double first_height) {
+Metric2 wall_metric(const WallLoop2& wall, std::size_t i, double first_height) {
     const std::array<double, 2>& n = wall.normals[i];
     const double aspect = wall.spacing[i] / first_height;
     return aspect > 1 ? metric_from_stretching(-n[1], n[0], wall.spacing[i], aspect)
@@ -236,8 +238,9 @@ Metric2 wall_metric(const Wall& wall, std::size_t i, double first_height) {
 /// direction: along the wall, the spacing; across it, the thickness). The decision reads only
 /// the unfiltered set, so it does not depend on the order.
 std::vector<AddedPoint> drop_overlaps(const tri::Triangulation2& domain_mesh,
-                                      std::span<const Wall> walls, std::vector<AddedPoint> points,
-                                      double first_height, StretchedDelaunayCounters2& counters) {
+                                      std::span<const WallLoop2> walls,
+                                      std::vector<AddedPoint> points, double first_height,
+                                      StretchedDelaunayCounters2& counters) {
     if (walls.size() < 2) return points;
     // Tags: i < points.size() an O-mesh point, else a wall vertex.
     SortedPoints sorted;
@@ -465,9 +468,9 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
     StretchedDelaunayCounters2 counters;
     const tri::Cdt2Result& domain_cdt = domain.triangulation();
     const tri::Triangulation2& domain_mesh = domain_cdt.mesh;
-    std::vector<Wall> walls = component_walls(domain_mesh);
-    for (Wall& wall : walls) {
-        wall_normals(domain_mesh, wall, options.normal_smoothing_passes);
+    std::vector<WallLoop2> walls = wall_loops_2d(domain_mesh);
+    for (WallLoop2& wall : walls) {
+        wall_normals_2d(domain_mesh, wall, options.normal_smoothing_passes);
         ++counters.components;
         counters.wall_vertices += wall.vertices.size();
     }
@@ -475,19 +478,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
                                                                : graded_size_from_boundary(domain);
     // The boundary split to the far-field size, except the walls: their vertices (the input's)
     // are the O-meshes' feet.
-    std::set<std::array<double, 4>> wall_sides;
-    for (const Wall& wall : walls) {
-        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
-            const double* a = domain_mesh.point(wall.vertices[i]);
-            const double* b = domain_mesh.point(wall.vertices[(i + 1) % wall.vertices.size()]);
-            wall_sides.insert({a[0], a[1], b[0], b[1]});
-            wall_sides.insert({b[0], b[1], a[0], a[1]});
-        }
-    }
-    DomainBoundary2 boundary =
-        discretize_domain_boundary(domain, [&](const double* a, const double* b) {
-            return wall_sides.count({a[0], a[1], b[0], b[1]}) != 0 ? SizeFunction{} : size;
-        });
+    DomainBoundary2 boundary = discretize_except_walls(domain, walls, size);
     const DomainLocator2& locator = boundary.locator;
     const tri::Triangulation2& located = boundary.cdt.mesh;
 
@@ -522,7 +513,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
     std::vector<double> weights(metrics.size(), 0.5);
     for (tri::VertIdx v = 0; v < boundary_count; ++v)
         metrics[v] = isotropic(size(xy[2 * std::size_t{v}], xy[2 * std::size_t{v} + 1]));
-    for (const Wall& wall : walls) {
+    for (const WallLoop2& wall : walls) {
         for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
             // No layers (max_layers 0): the wall is boundary like any other, sized isotropically.
             metrics[wall.vertices[i]] = options.max_layers > 0

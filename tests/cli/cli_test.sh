@@ -1169,13 +1169,47 @@ mesh_metric_delaunay() {
     mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 --quads -o "$work/x.vtu"
 }
 
+# The advancing-front min-max generator (issue 14): --layers optional. With --layers 1e-5,1.2 on
+# the NACA 0012 the wall aspect ratio reaches 1000 with no angle above 150 degrees (measured
+# 1448 and 119.6); its counters; without layers an isotropic mesh (--smooth allowed then); bad
+# values and combinations refused with exit status 2.
+mesh_min_max_front() {
+  run 0 mesh --domain naca0012 --generator min-max-front --layers 1e-5,1.2 -o "$work/mm.ele" \
+    --stats --quality || return
+  for counter in boundary_points wall_loops stacks layers layer_points stopped_aspect_ratio \
+    stopped_collision stopped_too_close stopped_neighbour stopped_max_layers passes front_edges \
+    front_points rejected_outside rejected_too_close edge_insertions delaunay_flips min_max_swaps \
+    triangles max_wall_aspect_ratio; do
+    grep -Eq "^$counter: [0-9]+$" "$work/out" || fail "no $counter: $(cat "$work/out")"
+  done
+  (($(awk '/^max_wall_aspect_ratio: / { print $2 }' "$work/out") >= 1000)) ||
+    fail "min-max-front: the aspect ratio at the wall is below 1000: $(cat "$work/out")"
+  awk '/^quality.max_angle: / { found = 1; bad = !($2 < 150) } END { exit !found || bad }' \
+    "$work/out" || fail "min-max-front: an angle above 150 degrees: $(grep max_angle "$work/out")"
+  run 0 mesh --domain naca0012 --generator min-max-front -o "$work/iso.ele" --stats --quality \
+    --smooth 1 || return
+  grep -Eq '^layer_points: 0$' "$work/out" && grep -Eq '^front_points: [1-9][0-9]*$' "$work/out" ||
+    fail "min-max-front without layers: $(cat "$work/out")"
+  awk '/^quality.min_angle: / { found = 1; bad = !($2 > 10) } END { exit !found || bad }' \
+    "$work/out" || fail "min-max-front without layers: $(grep min_angle "$work/out")"
+  expect_error 2 '--quads applies to --generator advancing-layers only, not min-max-front' \
+    mesh --domain naca0012 --generator min-max-front --layers 1e-4,1.2 --quads -o "$work/x.vtu"
+  expect_error 2 'growth ratio must be in \[1, 10\] \(got 0\.5\)' \
+    mesh --domain naca0012 --generator min-max-front --layers 1e-4,0.5 -o "$work/x.ele"
+  expect_error 2 '--smooth would move the layers' \
+    mesh --domain naca0012 --generator min-max-front --layers 1e-4,1.2 --smooth 2 -o "$work/x.ele"
+  expect_error 2 'point budget' \
+    mesh --domain naca0012 --generator min-max-front --max-steiner 10 -o "$work/x.ele"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
     swap3d_bad_input | tetrahedralize_all | tetrahedralize_formats | tetrahedralize_stats | \
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
-    region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh)
+    region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
+    mesh_min_max_front)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

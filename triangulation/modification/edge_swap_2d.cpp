@@ -49,6 +49,7 @@
 #include <cmath>
 #include <cstdio>
 #include <deque>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -108,12 +109,12 @@ bool is_constrained(const TriMesh2& mesh, EdgeIdx e) {
 /// neighbour ids: a queued slot is tested with whatever edge sits there when it is popped, so the
 /// flip keeps the old layout (new diagonal at local 0 of both triangles, picture at the top) and
 /// the swaps, their order and the output are unchanged.
+/// The loop on a mesh already lent as half-edges, from every interior edge (`seeds` empty and
+/// `all`) or from the half-edges in `seeds`.
 template <class Prefers>
-EdgeSwapCounters swap_loop(Triangulation2& mesh, bool wide, Prefers&& prefers) {
+EdgeSwapCounters swap_queue(TriMesh2& work, bool wide, std::span<const EdgeIdx> seeds, bool all,
+                            Prefers&& prefers) {
     EdgeSwapCounters counters;
-    validate_points_2d(mesh.xy);
-    HalfEdgeEdit edit(mesh);
-    TriMesh2& work = edit.mesh();
     const std::size_t slots = work.tv.size();
     std::vector<std::uint8_t> queued(slots, 0);
     std::deque<EdgeIdx> queue;
@@ -122,10 +123,13 @@ EdgeSwapCounters swap_loop(Triangulation2& mesh, bool wide, Prefers&& prefers) {
         queued[e] = 1;
         queue.push_back(e);
     };
-    for (std::size_t s = 0; s < slots; ++s) {
+    for (std::size_t s = 0; all && s < slots; ++s) {
         // One side of each interior edge: the one in the lower-numbered triangle.
         const auto e = static_cast<EdgeIdx>(s);
         if (work.twin[e] != kNone && triangle_of(work.twin[e]) > triangle_of(e)) push(e);
+    }
+    for (const EdgeIdx e : seeds) {
+        if (e < slots && work.tv[3 * triangle_of(e)] != kNone) push(e);
     }
     while (!queue.empty()) {
         const EdgeIdx e = queue.front();
@@ -161,6 +165,14 @@ EdgeSwapCounters swap_loop(Triangulation2& mesh, bool wide, Prefers&& prefers) {
         }
     }
     return counters;
+}
+
+/// The loop over a whole Triangulation2, lent as half-edges.
+template <class Prefers>
+EdgeSwapCounters swap_loop(Triangulation2& mesh, bool wide, Prefers&& prefers) {
+    validate_points_2d(mesh.xy);
+    HalfEdgeEdit edit(mesh);
+    return swap_queue(edit.mesh(), wide, {}, true, std::forward<Prefers>(prefers));
 }
 
 Corner smaller(const Corner& x, const Corner& y) {
@@ -259,14 +271,25 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MaxMinAngle) {
     });
 }
 
+namespace {
+
+/// MinMaxAngle's decision: the largest of the six angles strictly decreases.
+bool prefers_min_max(const TriMesh2& work, const Quad& q) {
+    const double *a = work.point(q.a), *b = work.point(q.b);
+    const double *c = work.point(q.c), *d = work.point(q.d);
+    const Corner before = larger(largest_corner(a, b, c), largest_corner(b, a, d));
+    const Corner after = larger(largest_corner(c, a, d), largest_corner(d, b, c));
+    return compare_angles(after, before) == Sign::Negative;
+}
+
+}  // namespace
+
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinMaxAngle) {
-    return swap_loop(mesh, false, [&](const TriMesh2& work, const Quad& q) {
-        const double *a = work.point(q.a), *b = work.point(q.b);
-        const double *c = work.point(q.c), *d = work.point(q.d);
-        const Corner before = larger(largest_corner(a, b, c), largest_corner(b, a, d));
-        const Corner after = larger(largest_corner(c, a, d), largest_corner(d, b, c));
-        return compare_angles(after, before) == Sign::Negative;
-    });
+    return swap_loop(mesh, false, prefers_min_max);
+}
+
+EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, MinMaxAngle, std::span<const EdgeIdx> seeds) {
+    return swap_queue(mesh, false, seeds, false, prefers_min_max);
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinTotalLength) {

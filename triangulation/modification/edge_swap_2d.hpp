@@ -25,6 +25,7 @@
 
 #include "base/counter_table.hpp"
 #include "triangulation/checks/check_2d.hpp"
+#include "triangulation/mesh/mesh2.hpp"
 #include "triangulation/mesh/triangulation_2d.hpp"
 
 namespace exactmesh::triangulation {
@@ -97,6 +98,12 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, Delaunay criterion);
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MaxMinAngle criterion);
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinMaxAngle criterion);
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinTotalLength criterion);
+/// MinMaxAngle on a mesh already lent as half-edges (a HalfEdgeEdit's, open: boundary twins
+/// kNone, flag bit 0 constrained), from the half-edges in `seeds` only (and the sides of every
+/// swapped quadrilateral, as above): the local pass of an incremental generator after its
+/// insertions (min_max_front_2d). Dead triangles' seeds are skipped. No point validation.
+EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, MinMaxAngle criterion,
+                               std::span<const EdgeIdx> seeds);
 /// @throws InputError when criterion.values does not hold one finite value per vertex.
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion);
 /// @throws InputError when criterion.metrics does not hold three finite values per vertex.

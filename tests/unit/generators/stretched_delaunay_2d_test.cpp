@@ -22,6 +22,7 @@
 #include "generators/stretched/metric_field_2d.hpp"
 #include "generators/stretched/metric_quality_2d.hpp"
 #include "generators/stretched/stretched_delaunay_2d.hpp"
+#include "tests/support/stretched_domains_2d.hpp"
 #include "tests/support/test_scale.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
@@ -31,19 +32,11 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-/// A sample domain's PSLG, every coordinate scaled by 2^k.
-struct Domain {
-    std::vector<double> xy;
-    std::vector<tri::VertIdx> segments;
-    std::vector<double> holes;
-    Domain(gen::SampleDomain d, int k, const gen::SizeFunction& size = {}) {
-        const gen::DomainPslg pslg = gen::sample_domain(d, size);
-        for (const double x : pslg.xy) xy.push_back(std::ldexp(x, k));
-        segments.assign(pslg.segments.begin(), pslg.segments.end());
-        for (const double x : pslg.holes) holes.push_back(std::ldexp(x, k));
-    }
-    tri::Pslg pslg() const { return {xy, segments, holes, {}}; }
-};
+using Domain = exactmesh::testing::Input;
+
+Domain scaled(gen::SampleDomain d, int k, const gen::SizeFunction& size = {}) {
+    return exactmesh::testing::scaled_sample_domain(d, k, size);
+}
 
 gen::StretchedDelaunayResult2 run(const Domain& domain, double first_height) {
     const gen::MeshDomain2 mesh_domain(domain.pslg());
@@ -53,12 +46,7 @@ gen::StretchedDelaunayResult2 run(const Domain& domain, double first_height) {
 }
 
 void expect_valid(const Domain& domain, const gen::StretchedDelaunayResult2& r) {
-    const tri::CheckReport report = tri::detail::check_constrained_mesh_2d(
-        r.mesh.mesh, r.mesh.input_vertex_count, domain.segments, r.mesh.pieces, {}, false);
-    EXPECT_TRUE(report.ok) << report.problem;
-    ASSERT_GE(r.mesh.mesh.xy.size(), domain.xy.size());
-    for (std::size_t i = 0; i < domain.xy.size(); ++i) EXPECT_EQ(r.mesh.mesh.xy[i], domain.xy[i]);
-    EXPECT_EQ(r.mesh.input_vertex_count, domain.xy.size() / 2);
+    exactmesh::testing::expect_valid_mesh_of(domain, r.mesh);
     // The neighbours after the swaps are those the triangles define.
     tri::Triangulation2 relinked = r.mesh.mesh;
     relinked.neighbors.clear();
@@ -66,34 +54,7 @@ void expect_valid(const Domain& domain, const gen::StretchedDelaunayResult2& r) 
     EXPECT_EQ(relinked.neighbors, r.mesh.mesh.neighbors);
 }
 
-/// Longest edge over smallest altitude (L_max^2 / (2 area)) of the triangles with an edge on a
-/// component's wall (both ends input vertices from `first_wall_vertex` on): median and maximum.
-std::pair<double, double> wall_aspect_ratios(const tri::Triangulation2& mesh,
-                                             tri::VertIdx first_wall_vertex,
-                                             tri::VertIdx input_count) {
-    std::vector<double> ratios;
-    const auto on_wall = [&](tri::VertIdx v) { return v >= first_wall_vertex && v < input_count; };
-    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
-        bool at_wall = false;
-        for (unsigned k = 0; k < 3; ++k) {
-            at_wall = at_wall || (mesh.is_constrained(t, static_cast<int>(k)) &&
-                                  on_wall(mesh.triangles[3 * t + k]) &&
-                                  on_wall(mesh.triangles[3 * t + (k + 1) % 3]));
-        }
-        if (!at_wall) continue;
-        const double* a = mesh.point(mesh.triangles[3 * t]);
-        const double* b = mesh.point(mesh.triangles[3 * t + 1]);
-        const double* c = mesh.point(mesh.triangles[3 * t + 2]);
-        const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-        const auto sq = [](const double* p, const double* q) {
-            return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
-        };
-        ratios.push_back(std::max({sq(a, b), sq(b, c), sq(c, a)}) / area2);
-    }
-    if (ratios.empty()) return {0, 0};
-    std::sort(ratios.begin(), ratios.end());
-    return {ratios[ratios.size() / 2], ratios.back()};
-}
+using exactmesh::testing::wall_aspect_ratios;
 
 std::set<std::pair<tri::VertIdx, tri::VertIdx>> edges(const tri::Triangulation2& mesh) {
     std::set<std::pair<tri::VertIdx, tri::VertIdx>> result;
@@ -126,7 +87,7 @@ void print(const char* name, const gen::StretchedDelaunayResult2& r, double medi
 }
 
 TEST(StretchedDelaunay2d, Naca0012IsValidAndStretchedAtTheWall) {
-    const Domain domain(gen::SampleDomain::Naca0012, 0);
+    const Domain domain = scaled(gen::SampleDomain::Naca0012, 0);
     const gen::StretchedDelaunayResult2 r = run(domain, 1e-4);
     expect_valid(domain, r);
     EXPECT_EQ(r.counters.components, 1u);
@@ -142,7 +103,7 @@ TEST(StretchedDelaunay2d, Naca0012IsValidAndStretchedAtTheWall) {
 }
 
 TEST(StretchedDelaunay2d, ThreeElementIsValidWithOverlapsRemoved) {
-    const Domain domain(gen::SampleDomain::ThreeElement, 0);
+    const Domain domain = scaled(gen::SampleDomain::ThreeElement, 0);
     const gen::StretchedDelaunayResult2 r = run(domain, 1e-4);
     expect_valid(domain, r);
     EXPECT_EQ(r.counters.components, 3u);
@@ -155,7 +116,7 @@ TEST(StretchedDelaunay2d, ThreeElementIsValidWithOverlapsRemoved) {
 }
 
 TEST(StretchedDelaunay2d, SwapsChangeTheEuclideanTriangulation) {
-    const Domain domain(gen::SampleDomain::Naca0012, 0);
+    const Domain domain = scaled(gen::SampleDomain::Naca0012, 0);
     const gen::MeshDomain2 mesh_domain(domain.pslg());
     gen::StretchedDelaunayOptions2 options;
     options.first_height = 1e-4;
@@ -177,7 +138,7 @@ TEST(StretchedDelaunay2d, SwapsChangeTheEuclideanTriangulation) {
 }
 
 gen::StretchedDelaunayResult2 run_scaled(int k, bool given_size) {
-    const Domain domain(gen::SampleDomain::Naca0012, k);
+    const Domain domain = scaled(gen::SampleDomain::Naca0012, k);
     const gen::MeshDomain2 mesh_domain(domain.pslg());
     gen::StretchedDelaunayOptions2 options;
     options.first_height = std::ldexp(1e-3, k);
@@ -206,7 +167,7 @@ TEST(StretchedDelaunay2d, ScaledDomainGivesTheSameMeshScaled) {
 }
 
 TEST(StretchedDelaunay2d, DomainWithoutComponentsGetsTheFarFieldOnly) {
-    const Domain domain(gen::SampleDomain::SquareWithHoles, 0);
+    const Domain domain = scaled(gen::SampleDomain::SquareWithHoles, 0);
     // The holes are components too; the outer square alone has none.
     const std::vector<double> xy(domain.xy.begin(), domain.xy.begin() + 8);
     const std::vector<tri::VertIdx> segments = {0, 1, 1, 2, 2, 3, 3, 0};
@@ -230,7 +191,8 @@ TEST(StretchedDelaunay2d, UniformlySampledAirfoilReachesAspectRatio1000) {
     // 0.02, which the aspect ratio asked for needs: at the sanitizer pass's 0.02 the airfoil
     // would have a handful of vertices), a first height 1000 times below its spacing.
     const double spacing = 0.02 / std::max(1.0, exactmesh::testing::test_scale());
-    const Domain domain(gen::SampleDomain::Naca0012, 0, gen::SizeFunction::uniform(spacing));
+    const Domain domain =
+        scaled(gen::SampleDomain::Naca0012, 0, gen::SizeFunction::uniform(spacing));
     const gen::StretchedDelaunayResult2 r = run(domain, spacing / 1000);
     expect_valid(domain, r);
     const auto [median, largest] = wall_aspect_ratios(r.mesh.mesh, 4, r.mesh.input_vertex_count);
@@ -240,7 +202,7 @@ TEST(StretchedDelaunay2d, UniformlySampledAirfoilReachesAspectRatio1000) {
 }
 
 TEST(StretchedDelaunay2d, BadOptionsAreInputErrors) {
-    const Domain domain(gen::SampleDomain::Naca0012, 0);
+    const Domain domain = scaled(gen::SampleDomain::Naca0012, 0);
     const gen::MeshDomain2 mesh_domain(domain.pslg());
     gen::StretchedDelaunayOptions2 options;
     options.first_height = 0;
@@ -250,7 +212,7 @@ TEST(StretchedDelaunay2d, BadOptionsAreInputErrors) {
     EXPECT_THROW(gen::stretched_delaunay_2d(mesh_domain, options), exactmesh::InputError);
     // An airfoil of 4000 wall vertices with 10000 uniform layers of 1e-9 each: 4 10^7 points,
     // refused before any point is made.
-    const Domain fine(gen::SampleDomain::Naca0012, 0, gen::SizeFunction::uniform(5e-4));
+    const Domain fine = scaled(gen::SampleDomain::Naca0012, 0, gen::SizeFunction::uniform(5e-4));
     const gen::MeshDomain2 fine_domain(fine.pslg());
     options.growth = 1;
     options.first_height = 1e-9;

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// What the stretched-mesh generator tests share (stretched Delaunay, min-max front): a sample
+// domain's PSLG scaled by 2^k, the exact validity of a mesh of it, and the aspect ratios of the
+// triangles on its walls. Test support, not a library algorithm.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "generators/boundary/sample_domains.hpp"
+#include "generators/sizing/size_function.hpp"
+#include "tests/support/pslg_fixtures_2d.hpp"
+#include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
+#include "triangulation/mesh/triangulation_2d.hpp"
+
+namespace exactmesh::testing {
+
+/// A sample domain's PSLG (pslg_fixtures_2d's Input), every coordinate scaled by 2^k.
+inline Input scaled_sample_domain(generators::SampleDomain d, int k,
+                                  const generators::SizeFunction& size = {}) {
+    Input in = from_domain(generators::sample_domain(d, size));
+    for (double& x : in.xy) x = std::ldexp(x, k);
+    for (double& x : in.holes) x = std::ldexp(x, k);
+    return in;
+}
+
+/// A generator's mesh of `domain` is exactly valid (conforming, every segment a chain of
+/// pieces: check_constrained_mesh_2d without the Delaunay test) and keeps every input vertex
+/// at its number and coordinates.
+inline void expect_valid_mesh_of(const Input& domain, const triangulation::Cdt2Result& mesh) {
+    const triangulation::CheckReport report = triangulation::detail::check_constrained_mesh_2d(
+        mesh.mesh, mesh.input_vertex_count, domain.segments, mesh.pieces, {}, false);
+    EXPECT_TRUE(report.ok) << report.problem;
+    ASSERT_GE(mesh.mesh.xy.size(), domain.xy.size());
+    for (std::size_t i = 0; i < domain.xy.size(); ++i) EXPECT_EQ(mesh.mesh.xy[i], domain.xy[i]);
+    EXPECT_EQ(mesh.input_vertex_count, domain.xy.size() / 2);
+}
+
+/// Longest edge over smallest altitude (L_max^2 / (2 area), in doubles: unscaled coordinates)
+/// of the triangles with a constrained side whose ends are both vertices in [first, end) (a
+/// wall's input vertices): median and maximum, (0, 0) when there is none.
+inline std::pair<double, double> wall_aspect_ratios(const triangulation::Triangulation2& mesh,
+                                                    triangulation::VertIdx first,
+                                                    triangulation::VertIdx end) {
+    std::vector<double> ratios;
+    const auto on_wall = [&](triangulation::VertIdx v) { return v >= first && v < end; };
+    for (triangulation::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        bool at_wall = false;
+        for (unsigned k = 0; k < 3; ++k) {
+            at_wall = at_wall || (mesh.is_constrained(t, static_cast<int>(k)) &&
+                                  on_wall(mesh.triangles[3 * t + k]) &&
+                                  on_wall(mesh.triangles[3 * t + (k + 1) % 3]));
+        }
+        if (!at_wall) continue;
+        const double* a = mesh.point(mesh.triangles[3 * t]);
+        const double* b = mesh.point(mesh.triangles[3 * t + 1]);
+        const double* c = mesh.point(mesh.triangles[3 * t + 2]);
+        const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        const auto sq = [](const double* p, const double* q) {
+            return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
+        };
+        ratios.push_back(std::max({sq(a, b), sq(b, c), sq(c, a)}) / area2);
+    }
+    if (ratios.empty()) return {0, 0};
+    std::sort(ratios.begin(), ratios.end());
+    return {ratios[ratios.size() / 2], ratios.back()};
+}
+
+}  // namespace exactmesh::testing
