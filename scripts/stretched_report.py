@@ -154,7 +154,8 @@ def layers_section(runs, out):
                "sides. Angles and aspect ratios over the whole mesh (longest edge over smallest "
                "altitude), measured by the same code. Wall aspect ratio: the wall's longest piece "
                "over the first height. `exactmesh-o-mesh` is our truncated O-mesh variant "
-               "(`--o-mesh`) on the same case, without a peer; the speed ratio compares "
+               "(`--o-mesh`) and `min-max-front` our advancing-front min-max generator on the "
+               "same case (its layers are not numbered apart); the speed ratio compares "
                "`exactmesh` (advancing layers) with Gmsh.\n")
     rows, goals = [], []
     cases = sorted({n.split("/", 2)[2] for n in runs if n.startswith("BM_layers/exactmesh/")},
@@ -163,8 +164,9 @@ def layers_section(runs, out):
         ours = runs.get(f"BM_layers/exactmesh/{case}")
         peer = runs.get(f"BM_layers/gmsh-boundary-layer/{case}")
         omesh = runs.get(f"BM_layers/exactmesh-o-mesh/{case}")
-        for label, run in (("exactmesh-o-mesh", omesh), ("exactmesh", ours),
-                           ("gmsh-boundary-layer", peer)):
+        min_max = runs.get(f"BM_layers/min-max-front/{case}")
+        for label, run in (("exactmesh-o-mesh", omesh), ("min-max-front", min_max),
+                           ("exactmesh", ours), ("gmsh-boundary-layer", peer)):
             if run is None:
                 continue
             if "error" in run:
