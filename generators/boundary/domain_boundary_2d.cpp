@@ -21,6 +21,7 @@
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
+#include "predicates/constructions.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 #include "predicates/within_rounding_of_segment.hpp"
@@ -182,12 +183,16 @@ double unit_in_last_place(double u, double v) {
 /// so the chains of different pieces meet only at their ends; a chain whose coordinate along
 /// the piece's longer axis is strictly monotone is simple; a link from one side to the other
 /// crosses the line a - b strictly between a and b. Every test is an exact orient2d sign.
+/// Every split point is also within rounding of the piece's input segment s0 - s1
+/// (predicates::within_rounding_of_segment, the chain rule of the exact checks): a point the
+/// interpolation left farther off is first replaced by its chain_point.
 class PieceRegion {
   public:
     /// left_c, right_c: the third vertex of the domain triangle on the left of a -> b (on its
-    /// right), or nullptr.
-    PieceRegion(const Point& a, const Point& b, const double* left_c, const double* right_c)
-        : a_(a), b_(b) {
+    /// right), or nullptr; s0, s1: the ends of the input segment the piece lies on.
+    PieceRegion(const Point& a, const Point& b, const double* left_c, const double* right_c,
+                const double* s0, const double* s1)
+        : a_(a), b_(b), s0_(s0), s1_(s1) {
         axis_ = std::abs(b[0] - a[0]) >= std::abs(b[1] - a[1]) ? 0 : 1;
         increasing_ = b[axis_] > a[axis_];
         step_ = {unit_in_last_place(a[0], b[0]), unit_in_last_place(a[1], b[1])};
@@ -205,7 +210,8 @@ class PieceRegion {
         int last_side = 0;
         missed = 0;
         for (std::size_t k = 1; k + 1 < points.size(); ++k) {
-            const Point& p = points[k];
+            const std::optional<Point> chained = chain_point(points[k], s0_, s1_);
+            const Point p = chained ? *chained : points[k];  // off the chain: only moves remain
             bool placed = false;
             for (int ring = 0; ring <= 3 && !placed && std::isfinite(p[0]) && std::isfinite(p[1]);
                  ++ring) {
@@ -214,7 +220,7 @@ class PieceRegion {
                         if (std::max(std::abs(i), std::abs(j)) != ring) continue;
                         const Point q = moved(p.data(), i, j);
                         if (!std::isfinite(q[0]) || !std::isfinite(q[1])) continue;
-                        if (!before(last, q) || !before(q, b_)) continue;
+                        if (!before(last, q) || !before(q, b_) || !on_segment(q)) continue;
                         const int s = side(q);
                         if (s == kNowhere || !links(last, last_side, q, s)) continue;
                         kept.push_back(q);
@@ -250,11 +256,17 @@ class PieceRegion {
   private:
     static constexpr int kNowhere = 2;
     Point a_, b_;
+    const double* s0_;
+    const double* s1_;
     std::array<Point, 2> g_{};
     std::array<bool, 2> has_{false, false};
     std::array<double, 2> step_{};  // the spacing of doubles at the piece's ends
     std::size_t axis_ = 0;
     bool increasing_ = true;
+
+    bool on_segment(const Point& p) const {
+        return predicates::within_rounding_of_segment(p.data(), s0_, s1_);
+    }
 
     /// p moved by i, j steps (rounded; whatever it gives is tested exactly).
     Point moved(const double* p, int i, int j) const {
@@ -439,6 +451,32 @@ SizeFunction size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& c
     return SizeFunction::background_mesh(std::move(xy), std::move(sizes), std::move(triangles));
 }
 
+std::optional<std::array<double, 2>> chain_point(const std::array<double, 2>& p, const double* s0,
+                                                 const double* s1) {
+    if (predicates::within_rounding_of_segment(p.data(), s0, s1)) return p;
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1])) return std::nullopt;
+    const std::size_t axis = std::abs(s1[0] - s0[0]) >= std::abs(s1[1] - s0[1]) ? 0 : 1;
+    const std::size_t other = 1 - axis;
+    if (!(std::min(s0[axis], s1[axis]) < p[axis] && p[axis] < std::max(s0[axis], s1[axis])))
+        return std::nullopt;
+    std::array<double, 2> q = p;
+    if (s0[other] == s1[other]) {
+        q[other] = s0[other];
+    } else {
+        double c[2], d[2];
+        c[axis] = d[axis] = p[axis];
+        c[other] = std::min(s0[other], s1[other]);
+        d[other] = std::max(s0[other], s1[other]);
+        try {
+            q = predicates::segment_intersection(s0, s1, c, d);
+        } catch (const GeometryError&) {
+            return std::nullopt;  // a difference beyond the double range
+        }
+    }
+    if (!predicates::within_rounding_of_segment(q.data(), s0, s1)) return std::nullopt;
+    return q;
+}
+
 bool in_domain(const DomainBoundary2& boundary, double x, double y) {
     return boundary.locator.locate(boundary.cdt.mesh, x, y) != tri::kNone;
 }
@@ -557,10 +595,13 @@ DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& p
     // rounding of the segment and neither step moves against it. `hugs` measures 3 units in
     // the last place of the piece's ends, which can be far coarser than c's own rounding (a
     // subnormal c beside a segment ending at 0.6: fuzz_mesh_generators_2d, CI 2026-12-02).
+    const auto segment_end = [&](std::uint32_t segment, std::size_t end) {
+        return mesh.point(pslg.segments[2 * std::size_t{segment} + end]);
+    };
     const auto on_chain = [&](tri::VertIdx c, tri::VertIdx u, tri::VertIdx v,
                               std::uint32_t segment) {
-        const double* s0 = mesh.point(pslg.segments[2 * std::size_t{segment}]);
-        const double* s1 = mesh.point(pslg.segments[2 * std::size_t{segment} + 1]);
+        const double* s0 = segment_end(segment, 0);
+        const double* s1 = segment_end(segment, 1);
         return predicates::within_rounding_of_segment(mesh.point(c), s0, s1) &&
                predicates::direction_dot_sign(mesh.point(u), mesh.point(c), s0, s1) !=
                    predicates::Sign::Negative &&
@@ -585,7 +626,8 @@ DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& p
             if (points.size() > 2) {
                 const PieceRegion region(points.front(), points.back(),
                                          mesh.point(third_vertex(mesh, left_triangle, a, b)),
-                                         mesh.point(third_vertex(mesh, right_triangle, b, a)));
+                                         mesh.point(third_vertex(mesh, right_triangle, b, a)),
+                                         segment_end(segment, 0), segment_end(segment, 1));
                 std::size_t missed = 0;
                 append(chain, region.place(points, missed));
             }
@@ -613,7 +655,8 @@ DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& p
                                                 : third_vertex(mesh, part.left, part.v, part.u);
                     const PieceRegion region(points.front(), points.back(),
                                              left ? mesh.point(c) : nullptr,
-                                             left ? nullptr : mesh.point(c));
+                                             left ? nullptr : mesh.point(c),
+                                             segment_end(segment, 0), segment_end(segment, 1));
                     std::size_t missed = 0;
                     std::vector<Point> kept = region.place(points, missed);
                     const tri::TriIdx before_c = domain_triangle(part.u, c),

@@ -19,6 +19,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "generators/boundary/mesh_domain_2d.hpp"
@@ -109,6 +110,16 @@ SizeFunction size_from_boundary(const triangulation::Pslg& pslg,
 /// a large triangle of the CDT is not missed. A rough estimate (double precision), 0 for an
 /// unbounded size.
 double expected_triangle_count(const DomainBoundary2& boundary, const SizeFunction& size);
+
+/// A split point of the input segment s0 - s1 that the exact checks accept on its chain
+/// (predicates::within_rounding_of_segment: 2^-40 of the point's own magnitude): p itself when it
+/// is; else the point of the line s0 - s1 at p's coordinate along the segment's longer axis, the
+/// other coordinate correctly rounded (predicates::segment_intersection with the axis-parallel
+/// segment there), when that one is; else nothing. An interpolated point near a coordinate's
+/// zero is the case: (2.0e-15, -4.0e-15) for the middle (0, 0) of (2, -3) - (-2, 3), off the
+/// line by far more than its own rounding, becomes (2.0e-15, -3.0e-15).
+std::optional<std::array<double, 2>> chain_point(const std::array<double, 2>& p, const double* s0,
+                                                 const double* s1);
 
 /// True when (x, y) lies in the domain (closed), by exact orient2d tests on the CDT.
 bool in_domain(const DomainBoundary2& boundary, double x, double y);

@@ -14,6 +14,7 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -538,9 +539,17 @@ void QuadtreeMesher::split_pieces() {
             const auto [a, b] = stack.back();
             stack.pop_back();
             const Obstacle s = obstacle(a, b, boundary_.xy);
-            const double m[2] = {0.5 * s.a[0] + 0.5 * s.b[0], 0.5 * s.a[1] + 0.5 * s.b[1]};
-            const bool splittable =
-                !(m[0] == s.a[0] && m[1] == s.a[1]) && !(m[0] == s.b[0] && m[1] == s.b[1]);
+            // The midpoint, on the input segment's chain (a midpoint near a coordinate's zero
+            // can lie farther off the segment than its own rounding: chain_point moves it).
+            const std::uint32_t segment = boundary_.piece_segment[p];
+            const std::optional<std::array<double, 2>> chained = chain_point(
+                {0.5 * s.a[0] + 0.5 * s.b[0], 0.5 * s.a[1] + 0.5 * s.b[1]},
+                &boundary_.xy[2 * std::size_t{pslg_.segments[2 * std::size_t{segment}]}],
+                &boundary_.xy[2 * std::size_t{pslg_.segments[2 * std::size_t{segment} + 1]}]);
+            const double m[2] = {chained ? (*chained)[0] : s.a[0],
+                                 chained ? (*chained)[1] : s.a[1]};
+            const bool splittable = chained && !(m[0] == s.a[0] && m[1] == s.a[1]) &&
+                                    !(m[0] == s.b[0] && m[1] == s.b[1]);
             // The smallest leaf a quarter of the piece's length into the domain from its ends
             // and midpoint (small leaves outside the domain do not count).
             const double nx = -0.25 * (s.b[1] - s.a[1]), ny = 0.25 * (s.b[0] - s.a[0]);
