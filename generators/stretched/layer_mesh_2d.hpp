@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "generators/stretched/advancing_layers_2d.hpp"
+#include "generators/stretched/wall_loops_2d.hpp"
 #include "predicates/power_of_two.hpp"
 
 namespace exactmesh::generators::layer_mesh {
@@ -28,22 +29,6 @@ inline std::array<double, 2> unit_vector(double x, double y) {
     if (!(n > 0)) return {0, 0};
     return {x / n, y / n};
 }
-
-/// A closed loop of the domain's boundary with the domain outside it: a component's wall.
-struct Wall {
-    std::vector<VertIdx> vertices;  ///< in order, the domain on the left
-    std::vector<std::array<double, 2>> normals;
-    std::vector<double> spacing;
-};
-
-/// The loops of boundary edges (triangle sides with no neighbour) of the domain's CDT whose
-/// traversal with the domain on the left turns clockwise: holes, i.e. components. A loop
-/// through a vertex with two outgoing boundary edges is skipped (no O-mesh there).
-std::vector<Wall> component_walls(const triangulation::Triangulation2& mesh);
-
-/// Each wall vertex's normal (the mean of its two sides' left normals, then averaged with its
-/// neighbours' `passes` times) and tangential spacing (the mean of its two sides' lengths).
-void wall_normals(const triangulation::Triangulation2& mesh, Wall& wall, int passes);
 
 /// The id of a probe's far end (segments_conflict): no vertex has it.
 constexpr VertIdx kProbe = kNone - 1;

@@ -35,10 +35,7 @@ using predicates::Sign;
 
 namespace {
 
-using layer_mesh::component_walls;
 using layer_mesh::unit_vector;
-using layer_mesh::Wall;
-using layer_mesh::wall_normals;
 
 /// The point budget of the O-meshes and of the far field, each.
 std::uint64_t point_budget(const StretchedDelaunayOptions2& o) {

@@ -36,7 +36,7 @@ const double kWideCorner[3][2] = {{0, 0}, {1, 0}, {-0.93969262078590838, 0.34202
 
 /// A ring: the O-mesh of one wall loop.
 struct Ring {
-    layer_mesh::Wall wall;
+    WallLoop2 wall;
     std::uint32_t layers = 0;       ///< K: its truncation layer
     std::uint32_t first_stack = 0;  ///< its stacks (normal lines) and columns, consecutive
     std::uint32_t first_point = 0;  ///< its points: stack s, layer k >= 1 at first_point +
@@ -145,8 +145,8 @@ class OMeshBuilder {
     void make_rings() {
         const double h = parameters_.first_height, g = parameters_.growth;
         std::uint64_t points = 0;
-        for (layer_mesh::Wall& wall : layer_mesh::component_walls(domain_.mesh)) {
-            layer_mesh::wall_normals(domain_.mesh, wall, 2);
+        for (WallLoop2& wall : wall_loops_2d(domain_.mesh)) {
+            wall_normals_2d(domain_.mesh, wall, 2);
             Ring ring;
             std::vector<double> spacing = wall.spacing;
             std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
