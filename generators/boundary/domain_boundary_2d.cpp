@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -493,6 +494,27 @@ DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& p
 
 void restore_input_terms(const DomainBoundary2& boundary, tri::Cdt2Result& mesh) {
     for (std::uint32_t& s : mesh.piece_segment) s = boundary.piece_segment[s];
+    // The constrained triangulation of the boundary's pieces may bend a piece at a vertex within
+    // the rounding of the piece but not of its input segment (features finer than doubles
+    // resolve, hundreds of binades apart): the exact checks would reject the segment's chain.
+    // Refused here instead of returning that mesh.
+    const std::span<const tri::VertIdx> segments = boundary.input_segments;
+    for (std::size_t p = 0; p < mesh.piece_segment.size(); ++p) {
+        const std::uint32_t s = mesh.piece_segment[p];
+        const double* s0 = mesh.mesh.point(segments[2 * std::size_t{s}]);
+        const double* s1 = mesh.mesh.point(segments[2 * std::size_t{s} + 1]);
+        for (const tri::VertIdx w : {mesh.pieces[2 * p], mesh.pieces[2 * p + 1]}) {
+            if (w == segments[2 * std::size_t{s}] || w == segments[2 * std::size_t{s} + 1] ||
+                predicates::within_rounding_of_segment(mesh.mesh.point(w), s0, s1))
+                continue;
+            throw GeometryError(
+                "segment " + std::to_string(s + boundary.first_index) +
+                " would run through vertex " + std::to_string(w + boundary.first_index) + " at (" +
+                format_number(mesh.mesh.point(w)[0]) + ", " + format_number(mesh.mesh.point(w)[1]) +
+                "), off it by more than its rounding: features finer than "
+                "doubles resolve there");
+        }
+    }
     mesh.input_vertex_count = boundary.input_vertex_count;
     mesh.merged_into = boundary.cdt.merged_into;
     mesh.warnings = boundary.cdt.warnings;
@@ -526,6 +548,8 @@ DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& p
     }
     boundary.xy = mesh.xy;
     boundary.input_vertex_count = boundary.cdt.input_vertex_count;
+    boundary.input_segments.assign(pslg.segments.begin(), pslg.segments.end());
+    boundary.first_index = options.first_index;
     // Directed edge -> the (domain) triangle on its left.
     std::unordered_map<std::uint64_t, tri::TriIdx> directed;
     directed.reserve(mesh.triangles.size());

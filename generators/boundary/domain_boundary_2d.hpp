@@ -52,6 +52,10 @@ struct DomainBoundary2 {
     /// sliver, through the sliver's third vertex); pieces meet only at shared ends (exact).
     std::vector<triangulation::VertIdx> pieces;
     std::vector<std::uint32_t> piece_segment;
+    /// 2·#S: the input's segments (its vertex numbers, 0-based), which piece_segment names, and
+    /// the input's first index (messages).
+    std::vector<triangulation::VertIdx> input_segments;
+    std::uint32_t first_index = 0;
     /// The vertices of the domain on no front edge (ascending): input vertices strictly inside
     /// the domain with no segment at them. Every generator keeps them; the advancing fronts
     /// treat them as front vertices without edges (candidates, and points no triangle may
@@ -73,6 +77,10 @@ DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const Size
 /// generators) put back into the input's terms: its pieces' input segments, its vertex count, its
 /// merged duplicates and warnings, and its constrained triangulation's counters (the mesh's own
 /// Delaunay flips added to them).
+/// @throws GeometryError when a piece's end lies off its input segment by more than its own
+///         rounding (within_rounding_of_segment): the triangulation of the boundary's pieces
+///         bent one at a vertex that doubles cannot place on the segment, and the exact checks
+///         would reject the segment's chain.
 void restore_input_terms(const DomainBoundary2& boundary, triangulation::Cdt2Result& mesh);
 
 /// The size along one piece a - b of the domain's boundary: a size that depends on the
