@@ -9,6 +9,7 @@
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
+#include "triangulation/modification/edge_swap_2d.hpp"
 
 namespace exactmesh::generators::layer_mesh {
 
@@ -188,6 +189,11 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
             "advancing layers: the last layer's front crosses itself or the "
             "boundary (a bug)");
     }
+    // Where stacks stop at different heights the front has steps, and the fill's constrained
+    // Delaunay triangles beside them can be flat (up to 166 degrees on the three-element
+    // airfoil): min-max swaps of the fill's unconstrained edges (exact compare_angles; the front
+    // and the boundary are constrained, so they stay).
+    counters.fill_min_max_swaps = tri::swap_edges_2d(fill_mesh.mesh, tri::MinMaxAngle{}).swaps;
 
     // Merge: the fill keeps every vertex of its input at its index, so the layers' vertices are
     // the same in both meshes.
