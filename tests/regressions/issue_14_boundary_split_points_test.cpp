@@ -16,7 +16,9 @@
 // boundary's pieces (frontal, metric Delaunay, min-max front) bent a piece at (2.6e-319, 0),
 // within the piece's rounding but not the segment's, and frontal and metric Delaunay returned
 // that mesh. restore_input_terms now refuses it (GeometryError: features finer than doubles
-// resolve); advancing front and advancing-front Delaunay mesh it validly.
+// resolve); advancing front and advancing-front Delaunay mesh it validly. case_26.bin: a slit
+// 4e-15 long whose end the quadtree left out of its mesh; it now refuses the input (an open
+// finding, README known gaps); the other generators mesh it validly.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -106,7 +108,7 @@ TEST(Issue14BoundarySplitPoints, issue_14_fuzz_inputs_every_generator) {
         expect_every_generator_valid(in, c->size, false);
         ++files;
     }
-    EXPECT_EQ(files, 25U);
+    EXPECT_EQ(files, 26U);
 }
 
 TEST(Issue14BoundarySplitPoints, issue_14_random_sides_through_the_origin) {
