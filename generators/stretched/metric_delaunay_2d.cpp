@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <vector>
@@ -37,20 +39,68 @@ std::array<double, 2> unit_vector(double x, double y) {
     return {sx / n, sy / n};
 }
 
-/// The metric length of the edge from p to q when the metric varies geometrically between
-/// the lengths measured in the end metrics, lp and lq [George-Borouchaki98 §10.3]:
-/// (lq - lp) / ln(lq / lp), and the parameter t where half of it is reached.
+/// The length of an edge in the metric and the parameter t in (0, 1) of its halfway point.
 struct EdgeLength {
     double length;
     double half;  ///< parameter in (0, 1) of the halfway point
 };
 
-EdgeLength edge_length(double lp, double lq) {
+/// The metric length of the edge when the metric varies geometrically between the lengths lp and
+/// lq it has at its ends [George-Borouchaki98 §10.3]: (lq - lp) / ln(lq / lp), and the parameter
+/// where half of it is reached.
+EdgeLength geometric_length(double lp, double lq) {
     if (!(lp > 0) || !(lq > 0)) return {std::max(lp, lq), 0.5};
     const double r = lq / lp;
     if (std::fabs(r - 1) < 1e-6) return {0.5 * (lp + lq), 0.5};
     const double log_r = std::log(r);
     return {(lq - lp) / log_r, std::log(0.5 * (1 + r)) / log_r};
+}
+
+/// The edge (dx, dy) from a vertex of metric mp to one of metric mq, with the metric interpolated
+/// log-Euclidean between its ends' (as metric_quality_report_2d measures edges): its length in the
+/// mean exp((log Mp + log Mq) / 2), and its halfway parameter from the lengths in the
+/// interpolated metrics at 1/4 and 3/4 (extended geometrically to the ends). Measuring in each
+/// end's own metric instead misjudges an edge where the metric rotates: a chord of a curved layer
+/// is oblique to the direction of both ends' metrics, and its small component across them counts
+/// at the layer's small size, so chords of unit length were split into pieces of a third.
+EdgeLength interpolated_length(const Metric2& mp, const Metric2& mq, double dx, double dy) {
+    const Metric2 ends[2] = {mp, mq};
+    static constexpr double kHalf[2] = {0.5, 0.5};
+    static constexpr double kQuarter[2] = {0.75, 0.25};
+    static constexpr double kThreeQuarters[2] = {0.25, 0.75};
+    const double length = metric_length(log_euclidean_mean(ends, kHalf), dx, dy);
+    const double la = metric_length(log_euclidean_mean(ends, kQuarter), dx, dy);
+    const double lb = metric_length(log_euclidean_mean(ends, kThreeQuarters), dx, dy);
+    if (!(la > 0) || !(lb > 0)) return {length, 0.5};
+    // l(t) = la (lb / la)^(2 t - 1/2): at the ends la sqrt(la / lb) and lb sqrt(lb / la).
+    const double root = std::sqrt(lb / la);
+    return {length, geometric_length(la / root, lb * root).half};
+}
+
+/// The parameter in (0, 1) of the point halfway along the edge from p by (dx, dy) in the metric
+/// field itself: its length density sampled at the middles of kHalfwaySamples equal parts
+/// (linear within each). Where the field has a thin layer between the ends (a boundary layer the
+/// edge crosses), the point lands in it, while the interpolation of the ends' metrics sees none.
+constexpr int kHalfwaySamples = 8;
+
+double field_halfway(const MetricField2& field, const double* p, double dx, double dy) {
+    std::array<double, kHalfwaySamples> density{};
+    double total = 0;
+    for (int i = 0; i < kHalfwaySamples; ++i) {
+        const double t = (i + 0.5) / kHalfwaySamples;
+        density[i] = metric_length(field(p[0] + t * dx, p[1] + t * dy), dx, dy);
+        if (!(density[i] > 0) || !std::isfinite(density[i])) return 0.5;
+        total += density[i];
+    }
+    double reached = 0;
+    for (int i = 0; i < kHalfwaySamples; ++i) {
+        if (reached + density[i] >= 0.5 * total) {
+            const double t = (i + (0.5 * total - reached) / density[i]) / kHalfwaySamples;
+            return std::clamp(t, 0.01, 0.99);
+        }
+        reached += density[i];
+    }
+    return 0.5;
 }
 
 /// sqrt(det M) times the area of the triangle (p, q, r), the metric at its centroid, summed over
@@ -70,6 +120,112 @@ double metric_area(const MetricField2& field, const double* p, const double* q, 
     const double rp[2] = {0.5 * (r[0] + p[0]), 0.5 * (r[1] + p[1])};
     return metric_area(field, p, pq, rp, depth + 1) + metric_area(field, pq, q, qr, depth + 1) +
            metric_area(field, rp, qr, r, depth + 1) + metric_area(field, pq, qr, rp, depth + 1);
+}
+
+/// One pass over the finished mesh's unconstrained edges: each longer than sqrt 2
+/// (interpolated_length) is split at its halfway point m into four triangles, unless m lies closer
+/// than min_spacing to one of the edge's two opposite vertices, or one of the four triangles
+/// would not be strictly counter-clockwise (exact orient2d), or one of its two triangles was
+/// already changed in this pass. at[] (the field per vertex) and the triangles' attributes (when
+/// present) follow. Returns the number of splits.
+std::uint64_t split_long_edges(tri::Triangulation2& mesh, std::vector<Metric2>& at,
+                               std::vector<double>& attributes, const MetricField2& field,
+                               double min_spacing) {
+    const tri::TriIdx count = mesh.triangle_count();
+    std::vector<std::uint8_t> changed(count, 0);
+    std::uint64_t splits = 0;
+    for (tri::TriIdx t = 0; t < count; ++t) {
+        for (unsigned k = 0; k < 3 && changed[t] == 0; ++k) {
+            const tri::TriIdx u = mesh.neighbors[3 * t + k];
+            if (u == tri::kNone || u < t || changed[u] != 0 || mesh.is_constrained(t, int(k))) {
+                continue;
+            }
+            const tri::VertIdx a = mesh.triangles[3 * t + k];
+            const tri::VertIdx b = mesh.triangles[3 * t + (k + 1) % 3];
+            const tri::VertIdx c = mesh.triangles[3 * t + (k + 2) % 3];
+            unsigned j = 0;
+            while (mesh.neighbors[3 * u + j] != t) ++j;
+            const tri::VertIdx d = mesh.triangles[3 * u + (j + 2) % 3];
+            const double* pa = mesh.point(a);
+            const double* pb = mesh.point(b);
+            const double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
+            const EdgeLength l = interpolated_length(at[a], at[b], dx, dy);
+            if (!(l.length > kSqrt2)) continue;
+            const double half = field_halfway(field, pa, dx, dy);
+            const double m[2] = {pa[0] + half * dx, pa[1] + half * dy};
+            const Metric2 mm = field(m[0], m[1]);
+            const auto close = [&](tri::VertIdx v) {
+                const double* pv = mesh.point(v);
+                return interpolated_length(mm, at[v], pv[0] - m[0], pv[1] - m[1]).length <
+                       min_spacing;
+            };
+            if (close(c) || close(d)) continue;
+            const double* pc = mesh.point(c);
+            const double* pd = mesh.point(d);
+            using predicates::Sign;
+            if (predicates::orient2d(pa, m, pc) != Sign::Positive ||
+                predicates::orient2d(m, pb, pc) != Sign::Positive ||
+                predicates::orient2d(pb, m, pd) != Sign::Positive ||
+                predicates::orient2d(m, pa, pd) != Sign::Positive) {
+                continue;
+            }
+            // t = (a, b, c) and u = (b, a, d) become t (a, m, c), t2 (m, b, c), u (b, m, d) and
+            // u2 (m, a, d).
+            const tri::VertIdx mv = mesh.vertex_count();
+            mesh.xy.push_back(m[0]);
+            mesh.xy.push_back(m[1]);
+            at.push_back(mm);
+            const tri::TriIdx t2 = mesh.triangle_count(), u2 = t2 + 1;
+            const tri::TriIdx n_bc = mesh.neighbors[3 * t + (k + 1) % 3];
+            const tri::TriIdx n_ca = mesh.neighbors[3 * t + (k + 2) % 3];
+            const tri::TriIdx n_ad = mesh.neighbors[3 * u + (j + 1) % 3];
+            const tri::TriIdx n_db = mesh.neighbors[3 * u + (j + 2) % 3];
+            const bool constrained = !mesh.constrained.empty();
+            std::uint8_t c_bc = 0, c_ca = 0, c_ad = 0, c_db = 0;
+            if (constrained) {
+                c_bc = mesh.constrained[3 * t + (k + 1) % 3];
+                c_ca = mesh.constrained[3 * t + (k + 2) % 3];
+                c_ad = mesh.constrained[3 * u + (j + 1) % 3];
+                c_db = mesh.constrained[3 * u + (j + 2) % 3];
+            }
+            const auto write = [&](tri::TriIdx at_slot, std::array<tri::VertIdx, 3> v,
+                                   std::array<tri::TriIdx, 3> n, std::array<std::uint8_t, 3> f) {
+                if (at_slot == mesh.triangle_count()) {
+                    mesh.triangles.insert(mesh.triangles.end(), v.begin(), v.end());
+                    mesh.neighbors.insert(mesh.neighbors.end(), n.begin(), n.end());
+                    if (constrained)
+                        mesh.constrained.insert(mesh.constrained.end(), f.begin(), f.end());
+                } else {
+                    for (unsigned i = 0; i < 3; ++i) {
+                        mesh.triangles[3 * at_slot + i] = v[i];
+                        mesh.neighbors[3 * at_slot + i] = n[i];
+                        if (constrained) mesh.constrained[3 * at_slot + i] = f[i];
+                    }
+                }
+            };
+            write(t, {a, mv, c}, {u2, t2, n_ca}, {0, 0, c_ca});
+            write(u, {b, mv, d}, {t2, u2, n_db}, {0, 0, c_db});
+            write(t2, {mv, b, c}, {u, n_bc, t}, {0, c_bc, 0});
+            write(u2, {mv, a, d}, {t, n_ad, u}, {0, c_ad, 0});
+            const auto relink = [&](tri::TriIdx n, tri::TriIdx from, tri::TriIdx to) {
+                if (n == tri::kNone) return;
+                for (unsigned i = 0; i < 3; ++i) {
+                    if (mesh.neighbors[3 * n + i] == from) mesh.neighbors[3 * n + i] = to;
+                }
+            };
+            relink(n_bc, t, t2);
+            relink(n_ad, u, u2);
+            if (!attributes.empty()) {
+                attributes.push_back(attributes[t]);
+                attributes.push_back(attributes[u]);
+            }
+            changed[t] = changed[u] = 1;
+            changed.push_back(1);  // t2
+            changed.push_back(1);  // u2
+            ++splits;
+        }
+    }
+    return splits;
 }
 
 class MetricMesher {
@@ -118,10 +274,8 @@ bool MetricMesher::too_close(tri::TriIdx t, const Metric2& m, double x, double y
         if (v == tri::kInfinite) return false;
         const double* p = mesh.point(v);
         const double dx = p[0] - x, dy = p[1] - y;
-        // The length of the would-be edge from the metrics at both of its ends, as the
-        // insertion passes measure edges.
-        return edge_length(metric_length(m, dx, dy), metric_length(metric_of(v), dx, dy)).length <
-               options_.min_spacing;
+        // The length of the would-be edge as the insertion passes measure edges.
+        return interpolated_length(m, metric_of(v), dx, dy).length < options_.min_spacing;
     };
     for (unsigned k = 0; k < 3; ++k) {
         if (close(mesh.tv[3 * t + k])) return true;
@@ -152,11 +306,13 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
                 const double* p = mesh.point(u);
                 const double* q = mesh.point(v);
                 const double dx = q[0] - p[0], dy = q[1] - p[1];
-                const EdgeLength l = edge_length(metric_length(metric_of(u), dx, dy),
-                                                 metric_length(metric_of(v), dx, dy));
+                // A copy: metric_of may grow the cache the other reference points into.
+                const Metric2 mu = metric_of(u);
+                const EdgeLength l = interpolated_length(mu, metric_of(v), dx, dy);
                 if (!(l.length > kSqrt2)) continue;
-                proposals.push_back(p[0] + l.half * dx);
-                proposals.push_back(p[1] + l.half * dy);
+                const double half = field_halfway(options_.metric, p, dx, dy);
+                proposals.push_back(p[0] + half * dx);
+                proposals.push_back(p[1] + half * dy);
             }
         }
     }
@@ -212,9 +368,23 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
         std::vector<Metric2> at(mesh.vertex_count());
         for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v)
             at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
-        tri::EdgeSwapCounters swapped = metric_swaps_2d(mesh, at);
+        tri::EdgeSwapCounters swapped = metric_swaps_2d(mesh, at, true);
         result.counters.swaps = swapped.swaps;
         result.counters.swap_budget_hits = swapped.budget_stops;
+        // The edges still long after the swaps (a varying metric leaves, after the insertion
+        // passes, vertices near the middle of a long edge, which its spacing test then keeps
+        // from being split; the swaps turn it into two shorter ones) are split, and swapped
+        // again, until none is split.
+        for (int round = 0; round < 32; ++round) {
+            if (result.counters.inserted + result.counters.split_after_swaps >= budget) break;
+            const std::uint64_t split = split_long_edges(mesh, at, out.triangle_attributes,
+                                                         options_.metric, options_.min_spacing);
+            result.counters.split_after_swaps += split;
+            if (split == 0) break;
+            swapped = metric_swaps_2d(mesh, at, true);
+            result.counters.swaps += swapped.swaps;
+            result.counters.swap_budget_hits += swapped.budget_stops;
+        }
         // Smoothing of the inserted points (the boundary's stay), each followed by swaps.
         const std::vector<double> relax(mesh.vertex_count(), 0.5);
         const auto first_inserted = static_cast<tri::VertIdx>(boundary_.xy.size() / 2);
@@ -224,7 +394,7 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
             result.counters.smoothing_moves += smoothed.moves;
             for (tri::VertIdx v = first_inserted; v < mesh.vertex_count(); ++v)
                 at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
-            swapped = metric_swaps_2d(mesh, at);
+            swapped = metric_swaps_2d(mesh, at, true);
             result.counters.swaps += swapped.swaps;
             result.counters.swap_budget_hits += swapped.budget_stops;
         }

@@ -33,7 +33,8 @@ std::array<double, 3> common_scale_matrix(const Metric2& m, double h_ref) {
 
 }  // namespace
 
-tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics) {
+tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
+                                      bool log_euclidean) {
     double h_ref = std::numeric_limits<double>::infinity();
     for (const Metric2& m : metrics) h_ref = std::min({h_ref, m.h1, m.h2});
     std::vector<double> matrices(3 * metrics.size());
@@ -41,7 +42,18 @@ tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const
         const std::array<double, 3> m = common_scale_matrix(metrics[v], h_ref);
         std::copy(m.begin(), m.end(), matrices.begin() + 3 * static_cast<std::ptrdiff_t>(v));
     }
-    return tri::swap_edges_2d(mesh, tri::MetricInEllipse{matrices});
+    tri::MetricInEllipse criterion;
+    criterion.metrics = matrices;
+    if (log_euclidean) {
+        criterion.quad_metric = [metrics](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c,
+                                          tri::VertIdx d, double* out) {
+            static constexpr double kQuarters[4] = {0.25, 0.25, 0.25, 0.25};
+            const Metric2 corners[4] = {metrics[a], metrics[b], metrics[c], metrics[d]};
+            // Scale-free: matrix_for_predicate divides by the mean's smallest size squared.
+            matrix_for_predicate(log_euclidean_mean(corners, kQuarters), out);
+        };
+    }
+    return tri::swap_edges_2d(mesh, criterion);
 }
 
 PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,

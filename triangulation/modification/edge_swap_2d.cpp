@@ -320,9 +320,13 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) 
             return false;
         }
         double m[3] = {0, 0, 0};
-        for (const VertIdx v : {q.a, q.b, q.c, q.d}) {
-            for (std::size_t k = 0; k < 3; ++k)
-                m[k] += 0.25 * criterion.metrics[3 * std::size_t{v} + k];
+        if (criterion.quad_metric) {
+            criterion.quad_metric(q.a, q.b, q.c, q.d, m);
+        } else {
+            for (const VertIdx v : {q.a, q.b, q.c, q.d}) {
+                for (std::size_t k = 0; k < 3; ++k)
+                    m[k] += 0.25 * criterion.metrics[3 * std::size_t{v} + k];
+            }
         }
         const bool swap =
             predicates::in_ellipse_sos(work.point(q.a), work.point(q.b), work.point(q.c),

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string_view>
 
@@ -68,6 +69,12 @@ struct MetricInEllipse {
     /// factor (finite doubles, positive definite).
     std::span<const double> metrics;
     std::uint32_t max_swaps_per_edge = 8;
+    /// When set, the quadrilateral's metric instead of the mean of its vertices' `metrics`:
+    /// quad_metric(a, b, c, d, out) writes {M11, M12, M22} (finite, positive definite, any
+    /// positive scale) for the quadrilateral of vertices a, b, c, d (e.g. a log-Euclidean
+    /// mean, which keeps the stretching of metrics that rotate from vertex to vertex, where the
+    /// mean of the matrices loses it).
+    std::function<void(VertIdx, VertIdx, VertIdx, VertIdx, double*)> quad_metric = {};
 };
 
 /// The criterion names of the CLI and benches.
