@@ -20,6 +20,7 @@
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
+#include "triangulation/modification/vertex_removal_2d.hpp"
 
 namespace exactmesh::generators {
 
@@ -28,6 +29,9 @@ namespace tri = triangulation;
 namespace {
 
 constexpr double kSqrt2 = 1.4142135623730951;
+constexpr double kUnitLow = 0.7071067811865476;
+/// Most rounds of late splits and removals.
+constexpr int kEditRounds = 8;
 
 /// (x, y) divided by its length, computed without squares: scaled by a power of two first.
 std::array<double, 2> unit_vector(double x, double y) {
@@ -39,43 +43,45 @@ std::array<double, 2> unit_vector(double x, double y) {
     return {sx / n, sy / n};
 }
 
-/// The length of an edge in the metric and the parameter t in (0, 1) of its halfway point.
-struct EdgeLength {
-    double length;
-    double half;  ///< parameter in (0, 1) of the halfway point
+/// Log-Euclidean forms of metrics with the sizes in units of 2^unit (one power of two per mesh,
+/// from the domain's metric: a domain and its metric scaled by 2^k give the same forms), so that
+/// each vertex's logarithm is taken once.
+LogMetric2 scaled_log_form(const Metric2& m, int unit) {
+    Metric2 scaled = m;
+    scaled.h1 = std::ldexp(scaled.h1, -unit);
+    scaled.h2 = std::ldexp(scaled.h2, -unit);
+    return log_form(scaled);
+}
+
+/// The metric length of the edge (dx, dy) between vertices of log forms lp and lq (units of
+/// 2^unit) in the log-Euclidean mean of their metrics, exp((log Mp + log Mq) / 2), as
+/// metric_quality_report_2d measures edges. Measuring in each end's own metric instead misjudges
+/// an edge where the metric rotates: a chord of a curved layer is oblique to the direction of
+/// both ends' metrics, and its small component across them counts at the layer's small size, so
+/// chords of unit length were split into pieces of a third.
+double mean_length(const LogMetric2& lp, const LogMetric2& lq, int unit, double dx, double dy) {
+    Metric2 mean = metric_from_log_form(0.5 * (lp.l11 + lq.l11), 0.5 * (lp.l12 + lq.l12),
+                                        0.5 * (lp.l22 + lq.l22));
+    mean.h1 = std::ldexp(mean.h1, unit);
+    mean.h2 = std::ldexp(mean.h2, unit);
+    return metric_length(mean, dx, dy);
+}
+
+/// The field's metric at each vertex of a mesh and its log form (units of 2^unit).
+struct VertexMetrics {
+    int unit = 0;
+    std::vector<Metric2> at;
+    std::vector<LogMetric2> logs;
+
+    void push_back(const Metric2& m) {
+        at.push_back(m);
+        logs.push_back(scaled_log_form(m, unit));
+    }
+    /// mean_length of the edge (dx, dy) between vertices u and v.
+    double length(tri::VertIdx u, tri::VertIdx v, double dx, double dy) const {
+        return mean_length(logs[u], logs[v], unit, dx, dy);
+    }
 };
-
-/// The metric length of the edge when the metric varies geometrically between the lengths lp and
-/// lq it has at its ends [George-Borouchaki98 §10.3]: (lq - lp) / ln(lq / lp), and the parameter
-/// where half of it is reached.
-EdgeLength geometric_length(double lp, double lq) {
-    if (!(lp > 0) || !(lq > 0)) return {std::max(lp, lq), 0.5};
-    const double r = lq / lp;
-    if (std::fabs(r - 1) < 1e-6) return {0.5 * (lp + lq), 0.5};
-    const double log_r = std::log(r);
-    return {(lq - lp) / log_r, std::log(0.5 * (1 + r)) / log_r};
-}
-
-/// The edge (dx, dy) from a vertex of metric mp to one of metric mq, with the metric interpolated
-/// log-Euclidean between its ends' (as metric_quality_report_2d measures edges): its length in the
-/// mean exp((log Mp + log Mq) / 2), and its halfway parameter from the lengths in the
-/// interpolated metrics at 1/4 and 3/4 (extended geometrically to the ends). Measuring in each
-/// end's own metric instead misjudges an edge where the metric rotates: a chord of a curved layer
-/// is oblique to the direction of both ends' metrics, and its small component across them counts
-/// at the layer's small size, so chords of unit length were split into pieces of a third.
-EdgeLength interpolated_length(const Metric2& mp, const Metric2& mq, double dx, double dy) {
-    const Metric2 ends[2] = {mp, mq};
-    static constexpr double kHalf[2] = {0.5, 0.5};
-    static constexpr double kQuarter[2] = {0.75, 0.25};
-    static constexpr double kThreeQuarters[2] = {0.25, 0.75};
-    const double length = metric_length(log_euclidean_mean(ends, kHalf), dx, dy);
-    const double la = metric_length(log_euclidean_mean(ends, kQuarter), dx, dy);
-    const double lb = metric_length(log_euclidean_mean(ends, kThreeQuarters), dx, dy);
-    if (!(la > 0) || !(lb > 0)) return {length, 0.5};
-    // l(t) = la (lb / la)^(2 t - 1/2): at the ends la sqrt(la / lb) and lb sqrt(lb / la).
-    const double root = std::sqrt(lb / la);
-    return {length, geometric_length(la / root, lb * root).half};
-}
 
 /// The parameter in (0, 1) of the point halfway along the edge from p by (dx, dy) in the metric
 /// field itself: its length density sampled at the middles of kHalfwaySamples equal parts
@@ -126,9 +132,9 @@ double metric_area(const MetricField2& field, const double* p, const double* q, 
 /// (interpolated_length) is split at its halfway point m into four triangles, unless m lies closer
 /// than min_spacing to one of the edge's two opposite vertices, or one of the four triangles
 /// would not be strictly counter-clockwise (exact orient2d), or one of its two triangles was
-/// already changed in this pass. at[] (the field per vertex) and the triangles' attributes (when
+/// already changed in this pass. `at` (the field per vertex) and the triangles' attributes (when
 /// present) follow. Returns the number of splits.
-std::uint64_t split_long_edges(tri::Triangulation2& mesh, std::vector<Metric2>& at,
+std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
                                std::vector<double>& attributes, const MetricField2& field,
                                double min_spacing) {
     const tri::TriIdx count = mesh.triangle_count();
@@ -149,14 +155,14 @@ std::uint64_t split_long_edges(tri::Triangulation2& mesh, std::vector<Metric2>& 
             const double* pa = mesh.point(a);
             const double* pb = mesh.point(b);
             const double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
-            const EdgeLength l = interpolated_length(at[a], at[b], dx, dy);
-            if (!(l.length > kSqrt2)) continue;
+            if (!(at.length(a, b, dx, dy) > kSqrt2)) continue;
             const double half = field_halfway(field, pa, dx, dy);
             const double m[2] = {pa[0] + half * dx, pa[1] + half * dy};
             const Metric2 mm = field(m[0], m[1]);
+            const LogMetric2 lm = scaled_log_form(mm, at.unit);
             const auto close = [&](tri::VertIdx v) {
                 const double* pv = mesh.point(v);
-                return interpolated_length(mm, at[v], pv[0] - m[0], pv[1] - m[1]).length <
+                return mean_length(lm, at.logs[v], at.unit, pv[0] - m[0], pv[1] - m[1]) <
                        min_spacing;
             };
             if (close(c) || close(d)) continue;
@@ -174,7 +180,8 @@ std::uint64_t split_long_edges(tri::Triangulation2& mesh, std::vector<Metric2>& 
             const tri::VertIdx mv = mesh.vertex_count();
             mesh.xy.push_back(m[0]);
             mesh.xy.push_back(m[1]);
-            at.push_back(mm);
+            at.at.push_back(mm);
+            at.logs.push_back(lm);
             const tri::TriIdx t2 = mesh.triangle_count(), u2 = t2 + 1;
             const tri::TriIdx n_bc = mesh.neighbors[3 * t + (k + 1) % 3];
             const tri::TriIdx n_ca = mesh.neighbors[3 * t + (k + 2) % 3];
@@ -228,54 +235,133 @@ std::uint64_t split_long_edges(tri::Triangulation2& mesh, std::vector<Metric2>& 
     return splits;
 }
 
+/// One pass removing an end of each unconstrained edge shorter than 1/sqrt 2
+/// (interpolated_length): the end numbered from `first_removable` on (the later one when both
+/// are), at most one vertex of each triangle's star per pass (no two removed vertices are
+/// neighbours), by remove_vertices_2d (the star retriangulated, exact); `at` is renumbered with
+/// the mesh. Returns the number of vertices removed.
+std::uint64_t remove_short_edges(tri::Triangulation2& mesh, VertexMetrics& at,
+                                 tri::VertIdx first_removable) {
+    const tri::VertIdx nv = mesh.vertex_count();
+    // 0 untouched, 1 to remove, 2 a neighbour of one to remove.
+    std::vector<std::uint8_t> mark(nv, 0);
+    std::vector<tri::VertIdx> chosen;
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const tri::TriIdx u = mesh.neighbors[3 * t + k];
+            if (u == tri::kNone || u < t || mesh.is_constrained(t, int(k))) continue;
+            const tri::VertIdx a = mesh.triangles[3 * t + k];
+            const tri::VertIdx b = mesh.triangles[3 * t + (k + 1) % 3];
+            const tri::VertIdx v = std::max(a, b);
+            if (v < first_removable || mark[a] != 0 || mark[b] != 0) continue;
+            const double* pa = mesh.point(a);
+            const double* pb = mesh.point(b);
+            if (!(at.length(a, b, pb[0] - pa[0], pb[1] - pa[1]) < kUnitLow)) continue;
+            mark[v] = 1;
+            chosen.push_back(v);
+            // Its neighbours (the vertices of the triangles at v) may not go in this pass.
+            mark[v == a ? b : a] = 2;
+        }
+    }
+    if (chosen.empty()) return 0;
+    // The neighbours of each chosen vertex are marked from its triangles; a chosen vertex that
+    // turns out to neighbour an earlier chosen one stays.
+    std::vector<tri::VertIdx> removable;
+    std::vector<std::uint8_t> blocked(nv, 0);
+    std::vector<std::vector<tri::VertIdx>> around(nv);
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const tri::VertIdx v = mesh.triangles[3 * t + k];
+            if (mark[v] != 1) continue;
+            around[v].push_back(mesh.triangles[3 * t + (k + 1) % 3]);
+            around[v].push_back(mesh.triangles[3 * t + (k + 2) % 3]);
+        }
+    }
+    for (const tri::VertIdx v : chosen) {
+        if (blocked[v] != 0) continue;
+        removable.push_back(v);
+        for (const tri::VertIdx w : around[v]) blocked[w] = 1;
+    }
+    const tri::VertexRemoval2Result removed =
+        tri::remove_vertices_2d(mesh, removable, first_removable);
+    VertexMetrics renumbered{at.unit, std::vector<Metric2>(mesh.vertex_count()),
+                             std::vector<LogMetric2>(mesh.vertex_count())};
+    for (tri::VertIdx v = 0; v < nv; ++v) {
+        const tri::VertIdx w = removed.old_to_new[v];
+        if (w == tri::kNone) continue;
+        renumbered.at[w] = at.at[v];
+        renumbered.logs[w] = at.logs[v];
+    }
+    at = std::move(renumbered);
+    return removed.removed;
+}
+
+/// The generator's swaps: in-ellipse in the log-Euclidean mean of each quadrilateral's metrics,
+/// then towards the shorter diagonal, each in the mean of its own ends' metrics.
+tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics& at) {
+    tri::EdgeSwapCounters c = metric_swaps_2d(mesh, at.at, true);
+    const tri::EdgeSwapCounters d = shorter_diagonal_swaps_2d(mesh, at.at);
+    c.swaps += d.swaps;
+    c.budget_stops += d.budget_stops;
+    return c;
+}
+
 class MetricMesher {
   public:
     MetricMesher(const tri::Pslg& pslg, const MetricDelaunayOptions2& options,
                  DomainBoundary2&& boundary, const tri::Cdt2Options& cdt_options)
         : options_(options),
           boundary_(std::move(boundary)),
-          cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions}, cdt_options) {}
+          cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions}, cdt_options) {
+        // The unit of the log forms: the smallest size at the first boundary point.
+        const Metric2 first = options_.metric(boundary_.xy[0], boundary_.xy[1]);
+        unit_ = std::ilogb(std::min(first.h1, first.h2));
+        vertices_.unit = unit_;
+    }
 
     MetricDelaunayResult2 run(std::uint64_t budget);
 
   private:
-    /// The metric of mesh vertex v (cached; vertices are only ever appended).
-    const Metric2& metric_of(tri::VertIdx v);
+    /// Computes and caches the metric of mesh vertex v (vertices are only ever appended).
+    void know(tri::VertIdx v);
     /// True when some vertex of t or of its neighbours lies closer than min_spacing to (x, y)
-    /// in the metric m.
-    bool too_close(tri::TriIdx t, const Metric2& m, double x, double y);
+    /// (log form lm) by mean_length.
+    bool too_close(tri::TriIdx t, const LogMetric2& lm, double x, double y);
     /// One pass: proposals at the halfway points of the long edges, inserted in Hilbert order.
     std::uint64_t insertion_pass(std::uint64_t budget);
 
     const MetricDelaunayOptions2& options_;
     DomainBoundary2 boundary_;
     tri::ConstrainedTriangulation2 cdt_;
-    std::vector<Metric2> metrics_;
+    int unit_ = 0;
+    VertexMetrics vertices_;
     std::vector<bool> known_;
     MetricDelaunayCounters2 counters_;
 };
 
-const Metric2& MetricMesher::metric_of(tri::VertIdx v) {
-    if (v >= metrics_.size()) {
-        metrics_.resize(v + 1);
+void MetricMesher::know(tri::VertIdx v) {
+    if (v >= known_.size()) {
+        vertices_.at.resize(v + 1);
+        vertices_.logs.resize(v + 1);
         known_.resize(v + 1, false);
     }
     if (!known_[v]) {
         const double* p = cdt_.mesh().point(v);
-        metrics_[v] = options_.metric(p[0], p[1]);
+        vertices_.at[v] = options_.metric(p[0], p[1]);
+        vertices_.logs[v] = scaled_log_form(vertices_.at[v], unit_);
         known_[v] = true;
     }
-    return metrics_[v];
 }
 
-bool MetricMesher::too_close(tri::TriIdx t, const Metric2& m, double x, double y) {
+bool MetricMesher::too_close(tri::TriIdx t, const LogMetric2& lm, double x, double y) {
     const tri::TriMesh2& mesh = cdt_.mesh();
     const auto close = [&](tri::VertIdx v) {
         if (v == tri::kInfinite) return false;
         const double* p = mesh.point(v);
         const double dx = p[0] - x, dy = p[1] - y;
         // The length of the would-be edge as the insertion passes measure edges.
-        return interpolated_length(m, metric_of(v), dx, dy).length < options_.min_spacing;
+        know(v);
+        return mean_length(lm, vertices_.logs[v], unit_, dx, dy) < options_.min_spacing;
     };
     for (unsigned k = 0; k < 3; ++k) {
         if (close(mesh.tv[3 * t + k])) return true;
@@ -306,10 +392,9 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
                 const double* p = mesh.point(u);
                 const double* q = mesh.point(v);
                 const double dx = q[0] - p[0], dy = q[1] - p[1];
-                // A copy: metric_of may grow the cache the other reference points into.
-                const Metric2 mu = metric_of(u);
-                const EdgeLength l = interpolated_length(mu, metric_of(v), dx, dy);
-                if (!(l.length > kSqrt2)) continue;
+                know(u);
+                know(v);
+                if (!(vertices_.length(u, v, dx, dy) > kSqrt2)) continue;
                 const double half = field_halfway(options_.metric, p, dx, dy);
                 proposals.push_back(p[0] + half * dx);
                 proposals.push_back(p[1] + half * dy);
@@ -330,7 +415,8 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
             continue;
         }
         const Metric2 m = options_.metric(x, y);
-        if (too_close(t, m, x, y)) {
+        const LogMetric2 lm = scaled_log_form(m, unit_);
+        if (too_close(t, lm, x, y)) {
             ++counters_.too_close;
             continue;
         }
@@ -340,11 +426,13 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
             ++counters_.inserted;
             ++inserted;
             const tri::VertIdx v = cdt_.mesh().vertex_count() - 1;
-            if (v >= metrics_.size()) {
-                metrics_.resize(v + 1);
+            if (v >= known_.size()) {
+                vertices_.at.resize(v + 1);
+                vertices_.logs.resize(v + 1);
                 known_.resize(v + 1, false);
             }
-            metrics_[v] = m;  // the field's value there, already computed
+            vertices_.at[v] = m;  // the field's value there, already computed
+            vertices_.logs[v] = lm;
             known_[v] = true;
         } else {
             ++counters_.rejected;
@@ -365,36 +453,56 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
     restore_input_terms(boundary_, out);
     tri::Triangulation2& mesh = out.mesh;
     if (options_.swap && mesh.triangle_count() > 0) {
-        std::vector<Metric2> at(mesh.vertex_count());
+        // The field at the final vertices (restore_input_terms may renumber them).
+        VertexMetrics at{unit_, {}, {}};
         for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v)
-            at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
-        tri::EdgeSwapCounters swapped = metric_swaps_2d(mesh, at, true);
+            at.push_back(options_.metric(mesh.point(v)[0], mesh.point(v)[1]));
+        tri::EdgeSwapCounters swapped = quad_swaps(mesh, at);
         result.counters.swaps = swapped.swaps;
         result.counters.swap_budget_hits = swapped.budget_stops;
-        // The edges still long after the swaps (a varying metric leaves, after the insertion
-        // passes, vertices near the middle of a long edge, which its spacing test then keeps
-        // from being split; the swaps turn it into two shorter ones) are split, and swapped
-        // again, until none is split.
-        for (int round = 0; round < 32; ++round) {
-            if (result.counters.inserted + result.counters.split_after_swaps >= budget) break;
+        // Rounds of splits of the edges still long and removals at the edges too short, each
+        // followed by swaps. After the insertion passes in a metric that varies (and rotates),
+        // vertices lie near the middle of long edges, where the spacing test keeps the edge from
+        // being split, and pairs lie too close; the swaps make two shorter edges of the first,
+        // the removals (remove_vertices_2d, which keeps the mesh exactly valid) undo the second.
+        // Removals renumber the triangles: not done when they carry attributes.
+        const auto first_inserted = static_cast<tri::VertIdx>(boundary_.xy.size() / 2);
+        for (int round = 0; round < kEditRounds; ++round) {
+            if (result.counters.inserted + result.counters.late_splits >= budget) break;
             const std::uint64_t split = split_long_edges(mesh, at, out.triangle_attributes,
                                                          options_.metric, options_.min_spacing);
-            result.counters.split_after_swaps += split;
-            if (split == 0) break;
-            swapped = metric_swaps_2d(mesh, at, true);
-            result.counters.swaps += swapped.swaps;
-            result.counters.swap_budget_hits += swapped.budget_stops;
+            result.counters.late_splits += split;
+            if (split > 0) {
+                swapped = quad_swaps(mesh, at);
+                result.counters.swaps += swapped.swaps;
+                result.counters.swap_budget_hits += swapped.budget_stops;
+            }
+            std::uint64_t removed = 0;
+            if (out.triangle_attributes.empty()) {
+                removed = remove_short_edges(mesh, at, first_inserted);
+                result.counters.late_removals += removed;
+                if (removed > 0) {
+                    swapped = quad_swaps(mesh, at);
+                    result.counters.swaps += swapped.swaps;
+                    result.counters.swap_budget_hits += swapped.budget_stops;
+                }
+            }
+            // Each round changes fewer vertices; 0.5% of them is not worth another (on a
+            // constant or straight metric the first round is the last).
+            if (200 * (split + removed) <= mesh.vertex_count()) break;
         }
-        // Smoothing of the inserted points (the boundary's stay), each followed by swaps.
+        // Smoothing of the inserted points (the boundary's stay), each followed by swaps; edges
+        // measured as the quality report does.
         const std::vector<double> relax(mesh.vertex_count(), 0.5);
-        const auto first_inserted = static_cast<tri::VertIdx>(boundary_.xy.size() / 2);
         for (int pass = 0; pass < options_.smoothing_passes; ++pass) {
             const PointSmoothingCounters2 smoothed = smooth_metric_points_2d(
-                mesh, at, relax, 0.3, MoveLimit::MetricLength, first_inserted, true);
+                mesh, at.at, relax, 0.3, MoveLimit::MetricLength, first_inserted, true, true);
             result.counters.smoothing_moves += smoothed.moves;
-            for (tri::VertIdx v = first_inserted; v < mesh.vertex_count(); ++v)
-                at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
-            swapped = metric_swaps_2d(mesh, at, true);
+            for (tri::VertIdx v = first_inserted; v < mesh.vertex_count(); ++v) {
+                at.at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
+                at.logs[v] = scaled_log_form(at.at[v], unit_);
+            }
+            swapped = quad_swaps(mesh, at);
             result.counters.swaps += swapped.swaps;
             result.counters.swap_budget_hits += swapped.budget_stops;
         }

@@ -71,12 +71,13 @@ struct MetricDelaunayCounters2 {
     std::uint64_t swaps = 0;               ///< in-ellipse swaps
     std::uint64_t swap_budget_hits = 0;    ///< edges whose swap budget ran out
     std::uint64_t smoothing_moves = 0;     ///< point moves kept
-    std::uint64_t split_after_swaps = 0;   ///< long edges split after the first swaps
+    std::uint64_t late_splits = 0;         ///< long edges split after the first swaps
+    std::uint64_t late_removals = 0;       ///< vertices removed at short edges after them
 };
 
 inline constexpr std::array kMetricDelaunayCounterNames = EM_COUNTER_TABLE(
     MetricDelaunayCounters2, boundary_points, passes, proposals, too_close, inserted, rejected,
-    cavity_corrections, swaps, swap_budget_hits, smoothing_moves, split_after_swaps);
+    cavity_corrections, swaps, swap_budget_hits, smoothing_moves, late_splits, late_removals);
 static_assert(counter_table_complete(kMetricDelaunayCounterNames));
 
 struct MetricDelaunayResult2 {

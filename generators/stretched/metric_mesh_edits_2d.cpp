@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <vector>
 
+#include "predicates/metric_lengths.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 
@@ -31,6 +33,40 @@ std::array<double, 3> common_scale_matrix(const Metric2& m, double h_ref) {
             m.s * m.s * a2 + m.c * m.c * b2};
 }
 
+/// The log-Euclidean forms of a mesh's vertex metrics, the sizes first divided by one common
+/// power of two (that of the smallest size): a mesh and its metrics scaled by 2^k give the same
+/// forms, so means of them are scale-free (never scaled back: the predicates' matrices are
+/// normalized anyway), and each vertex's logarithm is taken once.
+class LogForms {
+  public:
+    explicit LogForms(std::span<const Metric2> metrics) : forms_(metrics.size()) {
+        double h_min = std::numeric_limits<double>::infinity();
+        for (const Metric2& m : metrics) h_min = std::min({h_min, m.h1, m.h2});
+        const int e = std::isfinite(h_min) ? std::ilogb(h_min) : 0;
+        for (std::size_t v = 0; v < metrics.size(); ++v) {
+            Metric2 scaled = metrics[v];
+            scaled.h1 = std::ldexp(scaled.h1, -e);
+            scaled.h2 = std::ldexp(scaled.h2, -e);
+            forms_[v] = log_form(scaled);
+        }
+    }
+    /// The mean of the vertices' forms, as a metric (in the common unit).
+    template <std::size_t N>
+    Metric2 mean(const std::array<tri::VertIdx, N>& vertices) const {
+        double l11 = 0, l12 = 0, l22 = 0;
+        for (const tri::VertIdx v : vertices) {
+            l11 += forms_[v].l11;
+            l12 += forms_[v].l12;
+            l22 += forms_[v].l22;
+        }
+        constexpr double w = 1.0 / N;
+        return metric_from_log_form(w * l11, w * l12, w * l22);
+    }
+
+  private:
+    std::vector<LogMetric2> forms_;
+};
+
 }  // namespace
 
 tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
@@ -44,15 +80,32 @@ tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const
     }
     tri::MetricInEllipse criterion;
     criterion.metrics = matrices;
+    std::shared_ptr<const LogForms> forms;
     if (log_euclidean) {
-        criterion.quad_metric = [metrics](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c,
-                                          tri::VertIdx d, double* out) {
-            static constexpr double kQuarters[4] = {0.25, 0.25, 0.25, 0.25};
-            const Metric2 corners[4] = {metrics[a], metrics[b], metrics[c], metrics[d]};
+        forms = std::make_shared<const LogForms>(metrics);
+        criterion.quad_metric = [forms](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c,
+                                        tri::VertIdx d, double* out) {
             // Scale-free: matrix_for_predicate divides by the mean's smallest size squared.
-            matrix_for_predicate(log_euclidean_mean(corners, kQuarters), out);
+            matrix_for_predicate(forms->mean(std::array{a, b, c, d}), out);
         };
     }
+    return tri::swap_edges_2d(mesh, criterion);
+}
+
+tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
+                                                std::span<const Metric2> metrics) {
+    const auto forms = std::make_shared<const LogForms>(metrics);
+    tri::QuadPreference criterion;
+    criterion.swap = [forms](const std::array<tri::VertIdx, 4>& v,
+                             const std::array<const double*, 4>& p) {
+        const Metric2 m_ab = forms->mean(std::array{v[0], v[1]});
+        const Metric2 m_cd = forms->mean(std::array{v[2], v[3]});
+        const double h_ref = std::min({m_ab.h1, m_ab.h2, m_cd.h1, m_cd.h2});
+        const std::array<double, 3> mat_ab = common_scale_matrix(m_ab, h_ref);
+        const std::array<double, 3> mat_cd = common_scale_matrix(m_cd, h_ref);
+        return predicates::compare_metric_lengths(p[2], p[3], mat_cd.data(), p[0], p[1],
+                                                  mat_ab.data()) == Sign::Negative;
+    };
     return tri::swap_edges_2d(mesh, criterion);
 }
 
@@ -60,8 +113,16 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
                                                 std::span<const Metric2> metrics,
                                                 std::span<const double> relax, double limit,
                                                 MoveLimit limit_kind, tri::VertIdx first_movable,
-                                                bool keep_unit_edges) {
+                                                bool keep_unit_edges, bool log_euclidean_lengths) {
     PointSmoothingCounters2 counters;
+    const auto edge_length = [&](tri::VertIdx v, tri::VertIdx u, double ex, double ey) {
+        if (log_euclidean_lengths) {
+            static constexpr double kHalves[2] = {0.5, 0.5};
+            const Metric2 ends[2] = {metrics[v], metrics[u]};
+            return metric_length(log_euclidean_mean(ends, kHalves), ex, ey);
+        }
+        return 0.5 * (metric_length(metrics[v], ex, ey) + metric_length(metrics[u], ex, ey));
+    };
     const std::uint32_t nv = mesh.vertex_count();
     std::vector<std::uint32_t> start(std::size_t{nv} + 1, 0);
     for (const tri::VertIdx v : mesh.triangles) ++start[v + 1];
@@ -84,8 +145,7 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
             while (mesh.triangles[3 * t + k] != v) ++k;
             const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
             const double dx = mesh.point(u)[0] - px, dy = mesh.point(u)[1] - py;
-            const double w =
-                0.5 * (metric_length(metrics[v], dx, dy) + metric_length(metrics[u], dx, dy));
+            const double w = edge_length(v, u, dx, dy);
             sum_w += w;
             sum_x += w * dx;
             sum_y += w * dy;
@@ -127,8 +187,7 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
                     while (mesh.triangles[3 * t + k] != v) ++k;
                     const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
                     const double ex = mesh.point(u)[0] - x, ey = mesh.point(u)[1] - y;
-                    const double l = 0.5 * (metric_length(metrics[v], ex, ey) +
-                                            metric_length(metrics[u], ex, ey));
+                    const double l = edge_length(v, u, ex, ey);
                     if (l >= kUnitLow && l <= kUnitHigh) ++count;
                 }
                 return count;

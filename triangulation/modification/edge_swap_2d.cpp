@@ -338,6 +338,25 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) 
     return counters;
 }
 
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, QuadPreference criterion) {
+    if (!criterion.swap) throw InputError("quadrilateral swapping needs a decision");
+    const std::uint64_t budget =
+        std::uint64_t{criterion.max_swaps_per_edge} * 3 * std::uint64_t{mesh.triangle_count()};
+    std::uint64_t swaps = 0, stops = 0;
+    EdgeSwapCounters counters = swap_loop(mesh, false, [&](const TriMesh2& work, const Quad& q) {
+        if (swaps >= budget) {
+            ++stops;
+            return false;
+        }
+        const bool swap = criterion.swap({q.a, q.b, q.c, q.d}, {work.point(q.a), work.point(q.b),
+                                                                work.point(q.c), work.point(q.d)});
+        if (swap) ++swaps;
+        return swap;
+    });
+    counters.budget_stops = stops;
+    return counters;
+}
+
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion) {
     if (criterion.values.size() != mesh.vertex_count()) {
         throw InputError("data-dependent swapping needs one value per vertex: got " +
