@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <string>
 #include <vector>
@@ -298,10 +297,8 @@ std::uint64_t remove_short_edges(tri::Triangulation2& mesh, VertexMetrics& at,
 
 /// The generator's swaps: in-ellipse in the log-Euclidean mean of each quadrilateral's metrics,
 /// then towards the shorter diagonal, each in the mean of its own ends' metrics.
-tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics& at,
-                                 bool shorter = false) {
+tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics& at) {
     tri::EdgeSwapCounters c = metric_swaps_2d(mesh, at.at, true);
-    if (!shorter && !std::getenv("ALWAYS")) return c;
     const tri::EdgeSwapCounters d = shorter_diagonal_swaps_2d(mesh, at.at);
     c.swaps += d.swaps;
     c.budget_stops += d.budget_stops;
