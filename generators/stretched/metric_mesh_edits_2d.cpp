@@ -23,6 +23,8 @@ namespace {
 
 constexpr double kUnitLow = 0.7071067811865476 * (1 - 1e-12);
 constexpr double kUnitHigh = 1.4142135623730951 * (1 + 1e-12);
+/// A triangle of metric mean ratio below this is a sliver (shorter_diagonal_swaps_2d).
+constexpr double kSliverShape = 0.02;
 
 /// {M11, M12, M22} of `m` times h_ref^2: one common scale for a mesh's vertices (h_ref its
 /// smallest size, so every ratio h_ref / h is at most 1 and no square overflows).
@@ -103,8 +105,35 @@ tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
         const double h_ref = std::min({m_ab.h1, m_ab.h2, m_cd.h1, m_cd.h2});
         const std::array<double, 3> mat_ab = common_scale_matrix(m_ab, h_ref);
         const std::array<double, 3> mat_cd = common_scale_matrix(m_cd, h_ref);
-        return predicates::compare_metric_lengths(p[2], p[3], mat_cd.data(), p[0], p[1],
-                                                  mat_ab.data()) == Sign::Negative;
+        if (predicates::compare_metric_lengths(p[2], p[3], mat_cd.data(), p[0], p[1],
+                                               mat_ab.data()) != Sign::Negative) {
+            return false;
+        }
+        // Not at the cost of the worst triangle's shape (in the quadrilateral's log-Euclidean
+        // mean): a vertex just off the middle of a long edge would otherwise make a sliver.
+        const Metric2 m = forms->mean(v);
+        std::array<std::array<double, 2>, 4> q;
+        double largest = 0;
+        for (std::size_t i = 0; i < 4; ++i) {
+            metric_map(m, p[i][0] - p[0][0], p[i][1] - p[0][1], q[i][0], q[i][1]);
+            largest = std::max({largest, std::fabs(q[i][0]), std::fabs(q[i][1])});
+        }
+        if (!(largest > 0) || !std::isfinite(largest)) return false;
+        const int shift = -std::ilogb(largest);
+        for (auto& point : q) point = {std::ldexp(point[0], shift), std::ldexp(point[1], shift)};
+        // Mean ratio 4 sqrt 3 area / (sum of squared edges) of the triangle (i, j, k).
+        const auto shape = [&q](std::size_t i, std::size_t j, std::size_t k) {
+            const double ux = q[j][0] - q[i][0], uy = q[j][1] - q[i][1];
+            const double wx = q[k][0] - q[i][0], wy = q[k][1] - q[i][1];
+            const double vx = q[k][0] - q[j][0], vy = q[k][1] - q[j][1];
+            const double squares = ux * ux + uy * uy + wx * wx + wy * wy + vx * vx + vy * vy;
+            return squares > 0 ? 2 * std::sqrt(3.0) * (ux * wy - uy * wx) / squares : 0.0;
+        };
+        // a = 0, b = 1, c = 2 (left of a -> b), d = 3: now (a, b, c), (b, a, d); swapped
+        // (a, d, c), (b, c, d).
+        const double worst_after = std::min(shape(0, 3, 2), shape(1, 2, 3));
+        return worst_after >= kSliverShape ||
+               worst_after >= std::min(shape(0, 1, 2), shape(1, 0, 3));
     };
     return tri::swap_edges_2d(mesh, criterion);
 }
