@@ -128,11 +128,11 @@ double metric_area(const MetricField2& field, const double* p, const double* q, 
 }
 
 /// One pass over the finished mesh's unconstrained edges: each longer than sqrt 2
-/// (interpolated_length) is split at its halfway point m into four triangles, unless m lies closer
-/// than min_spacing to one of the edge's two opposite vertices, or one of the four triangles
-/// would not be strictly counter-clockwise (exact orient2d), or one of its two triangles was
-/// already changed in this pass. `at` (the field per vertex) and the triangles' attributes (when
-/// present) follow. Returns the number of splits.
+/// (VertexMetrics::length) is split at its halfway point m (field_halfway) into four triangles,
+/// unless m lies closer than min_spacing to one of the edge's two opposite vertices, or one of the
+/// four triangles would not be strictly counter-clockwise (exact orient2d), or one of its two
+/// triangles was already changed in this pass. `at` (the field per vertex) and the triangles'
+/// attributes (when present) follow. Returns the number of splits.
 std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
                                std::vector<double>& attributes, const MetricField2& field,
                                double min_spacing) {
@@ -235,7 +235,7 @@ std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
 }
 
 /// One pass removing an end of each unconstrained edge shorter than 1/sqrt 2
-/// (interpolated_length): the end numbered from `first_removable` on (the later one when both
+/// (VertexMetrics::length): the end numbered from `first_removable` on (the later one when both
 /// are), at most one vertex of each triangle's star per pass (no two removed vertices are
 /// neighbours), by remove_vertices_2d (the star retriangulated, exact); `at` is renumbered with
 /// the mesh. Returns the number of vertices removed.
