@@ -78,7 +78,17 @@ struct VertexMetrics {
     }
     /// mean_length of the edge (dx, dy) between vertices u and v.
     double length(tri::VertIdx u, tri::VertIdx v, double dx, double dy) const {
-        return mean_length(logs[u], logs[v], unit, dx, dy);
+        return length_to(at[u], logs[u], v, dx, dy);
+    }
+    /// mean_length of the edge (dx, dy) from a point of metric m (log form lm) to vertex v; in m
+    /// itself when v's metric is the same (a constant field: no exponential to take).
+    double length_to(const Metric2& m, const LogMetric2& lm, tri::VertIdx v, double dx,
+                     double dy) const {
+        const Metric2& w = at[v];
+        if (m.h1 == w.h1 && m.h2 == w.h2 && m.c == w.c && m.s == w.s) {
+            return metric_length(m, dx, dy);
+        }
+        return mean_length(lm, logs[v], unit, dx, dy);
     }
 };
 
@@ -161,8 +171,7 @@ std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
             const LogMetric2 lm = scaled_log_form(mm, at.unit);
             const auto close = [&](tri::VertIdx v) {
                 const double* pv = mesh.point(v);
-                return mean_length(lm, at.logs[v], at.unit, pv[0] - m[0], pv[1] - m[1]) <
-                       min_spacing;
+                return at.length_to(mm, lm, v, pv[0] - m[0], pv[1] - m[1]) < min_spacing;
             };
             if (close(c) || close(d)) continue;
             const double* pc = mesh.point(c);
@@ -296,9 +305,19 @@ std::uint64_t remove_short_edges(tri::Triangulation2& mesh, VertexMetrics& at,
 }
 
 /// The generator's swaps: in-ellipse in the log-Euclidean mean of each quadrilateral's metrics,
-/// then towards the shorter diagonal, each in the mean of its own ends' metrics.
+/// then (unless the metric is the same at every vertex) towards the shorter diagonal, each in the
+/// mean of its own ends' metrics.
 tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics& at) {
     tri::EdgeSwapCounters c = metric_swaps_2d(mesh, at.at, true);
+    // In a constant metric (the same at every vertex, whatever the field's kind) the in-ellipse
+    // triangulation is the Delaunay one of the mapped points, the lengths' own optimum: the
+    // shorter diagonal would only undo swaps the next pass redoes.
+    const Metric2& first = at.at.front();
+    if (std::all_of(at.at.begin(), at.at.end(), [&first](const Metric2& m) {
+            return m.h1 == first.h1 && m.h2 == first.h2 && m.c == first.c && m.s == first.s;
+        })) {
+        return c;
+    }
     const tri::EdgeSwapCounters d = shorter_diagonal_swaps_2d(mesh, at.at);
     c.swaps += d.swaps;
     c.budget_stops += d.budget_stops;
@@ -325,7 +344,7 @@ class MetricMesher {
     void know(tri::VertIdx v);
     /// True when some vertex of t or of its neighbours lies closer than min_spacing to (x, y)
     /// (log form lm) by mean_length.
-    bool too_close(tri::TriIdx t, const LogMetric2& lm, double x, double y);
+    bool too_close(tri::TriIdx t, const Metric2& m, const LogMetric2& lm, double x, double y);
     /// One pass: proposals at the halfway points of the long edges, inserted in Hilbert order.
     std::uint64_t insertion_pass(std::uint64_t budget);
 
@@ -352,7 +371,8 @@ void MetricMesher::know(tri::VertIdx v) {
     }
 }
 
-bool MetricMesher::too_close(tri::TriIdx t, const LogMetric2& lm, double x, double y) {
+bool MetricMesher::too_close(tri::TriIdx t, const Metric2& m, const LogMetric2& lm, double x,
+                             double y) {
     const tri::TriMesh2& mesh = cdt_.mesh();
     const auto close = [&](tri::VertIdx v) {
         if (v == tri::kInfinite) return false;
@@ -360,7 +380,7 @@ bool MetricMesher::too_close(tri::TriIdx t, const LogMetric2& lm, double x, doub
         const double dx = p[0] - x, dy = p[1] - y;
         // The length of the would-be edge as the insertion passes measure edges.
         know(v);
-        return mean_length(lm, vertices_.logs[v], unit_, dx, dy) < options_.min_spacing;
+        return vertices_.length_to(m, lm, v, dx, dy) < options_.min_spacing;
     };
     for (unsigned k = 0; k < 3; ++k) {
         if (close(mesh.tv[3 * t + k])) return true;
@@ -415,7 +435,7 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
         }
         const Metric2 m = options_.metric(x, y);
         const LogMetric2 lm = scaled_log_form(m, unit_);
-        if (too_close(t, lm, x, y)) {
+        if (too_close(t, m, lm, x, y)) {
             ++counters_.too_close;
             continue;
         }

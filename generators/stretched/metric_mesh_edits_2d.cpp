@@ -41,31 +41,38 @@ std::array<double, 3> common_scale_matrix(const Metric2& m, double h_ref) {
 /// normalized anyway), and each vertex's logarithm is taken once.
 class LogForms {
   public:
-    explicit LogForms(std::span<const Metric2> metrics) : forms_(metrics.size()) {
+    explicit LogForms(std::span<const Metric2> metrics)
+        : scaled_(metrics.begin(), metrics.end()), forms_(metrics.size()) {
         double h_min = std::numeric_limits<double>::infinity();
         for (const Metric2& m : metrics) h_min = std::min({h_min, m.h1, m.h2});
         const int e = std::isfinite(h_min) ? std::ilogb(h_min) : 0;
         for (std::size_t v = 0; v < metrics.size(); ++v) {
-            Metric2 scaled = metrics[v];
-            scaled.h1 = std::ldexp(scaled.h1, -e);
-            scaled.h2 = std::ldexp(scaled.h2, -e);
-            forms_[v] = log_form(scaled);
+            scaled_[v].h1 = std::ldexp(scaled_[v].h1, -e);
+            scaled_[v].h2 = std::ldexp(scaled_[v].h2, -e);
+            forms_[v] = log_form(scaled_[v]);
         }
     }
-    /// The mean of the vertices' forms, as a metric (in the common unit).
+    /// The mean of the vertices' forms, as a metric (in the common unit); the vertices' own
+    /// metric when all are the same (a constant field: no exponential to take).
     template <std::size_t N>
     Metric2 mean(const std::array<tri::VertIdx, N>& vertices) const {
+        const Metric2& first = scaled_[vertices[0]];
+        bool same = true;
         double l11 = 0, l12 = 0, l22 = 0;
         for (const tri::VertIdx v : vertices) {
+            const Metric2& m = scaled_[v];
+            same = same && m.h1 == first.h1 && m.h2 == first.h2 && m.c == first.c && m.s == first.s;
             l11 += forms_[v].l11;
             l12 += forms_[v].l12;
             l22 += forms_[v].l22;
         }
+        if (same) return first;
         constexpr double w = 1.0 / N;
         return metric_from_log_form(w * l11, w * l12, w * l22);
     }
 
   private:
+    std::vector<Metric2> scaled_;
     std::vector<LogMetric2> forms_;
 };
 
@@ -145,7 +152,10 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
                                                 bool keep_unit_edges, bool log_euclidean_lengths) {
     PointSmoothingCounters2 counters;
     const auto edge_length = [&](tri::VertIdx v, tri::VertIdx u, double ex, double ey) {
-        if (log_euclidean_lengths) {
+        const Metric2& a = metrics[v];
+        const Metric2& b = metrics[u];
+        const bool same = a.h1 == b.h1 && a.h2 == b.h2 && a.c == b.c && a.s == b.s;
+        if (log_euclidean_lengths && !same) {
             static constexpr double kHalves[2] = {0.5, 0.5};
             const Metric2 ends[2] = {metrics[v], metrics[u]};
             return metric_length(log_euclidean_mean(ends, kHalves), ex, ey);
