@@ -71,14 +71,29 @@ std::string triple(double a, double b, double c) {
 }
 
 /// Refuses sizes that are not finite > 0 or whose ratio exceeds kMaxAspectRatio.
-void check_sizes(double h1, double h2, const std::string& what) {
+/// `what` names the metric in a message: a string, or a callable returning one (built only
+/// when a message is: formatting numbers costs more than the metric itself).
+std::string named(const std::string& what) {
+    return what;
+}
+std::string named(const char* what) {
+    return what;
+}
+template <class What>
+std::string named(const What& what) {
+    return what();
+}
+
+template <class What>
+void check_sizes(double h1, double h2, const What& what) {
     if (!(std::isfinite(h1) && h1 > 0 && std::isfinite(h2) && h2 > 0)) {
-        throw InputError(what + ": its sizes " + format_number(h1) + " and " + format_number(h2) +
+        throw InputError(named(what) + ": its sizes " + format_number(h1) + " and " +
+                         format_number(h2) +
                          " are not finite numbers > 0 (beyond the range of doubles)");
     }
     const double ratio = h1 > h2 ? h1 / h2 : h2 / h1;
     if (!(ratio <= kMaxAspectRatio)) {
-        throw InputError(what + ": its aspect ratio " + format_number(ratio) +
+        throw InputError(named(what) + ": its aspect ratio " + format_number(ratio) +
                          " exceeds 2^250 (sizes " + format_number(h1) + " and " +
                          format_number(h2) + ")");
     }
@@ -113,12 +128,12 @@ Metric2 metric_from_factor(double c11, double c12, double c21, double c22, const
 }  // namespace
 
 Metric2 metric_from_matrix(double m11, double m12, double m22) {
-    const std::string what = "metric (M11, M12, M22) = " + triple(m11, m12, m22);
+    const auto what = [&] { return "metric (M11, M12, M22) = " + triple(m11, m12, m22); };
     if (!(std::isfinite(m11) && std::isfinite(m12) && std::isfinite(m22)))
-        throw InputError(what + " is not finite");
+        throw InputError(what() + " is not finite");
     const double largest = std::max({std::fabs(m11), std::fabs(m12), std::fabs(m22)});
     if (largest == 0 || !(m11 > 0 && m22 > 0))
-        throw InputError(what + " is not positive definite (a diagonal entry is not > 0)");
+        throw InputError(what() + " is not positive definite (a diagonal entry is not > 0)");
     // An even power of two, so that the sizes scale back by an exact power of two as well.
     int even = binary_exponent(largest);
     even -= even & 1;  // floor to even (two's complement: also for negative exponents)
@@ -126,7 +141,7 @@ Metric2 metric_from_matrix(double m11, double m12, double m22) {
     const double a = down(m11), b = down(m12), d = down(m22);
     const double det = kahan_determinant(a, b, b, d);
     if (!(det > 0)) {
-        throw InputError(what + " is not positive definite (M11 M22 - M12^2 = " +
+        throw InputError(what() + " is not positive definite (M11 M22 - M12^2 = " +
                          format_number(std::ldexp(det, 2 * even)) + (det == 0 ? ", singular" : "") +
                          ")");
     }
@@ -178,9 +193,11 @@ LogMetric2 log_form(const Metric2& metric) {
 }
 
 Metric2 metric_from_log_form(double l11, double l12, double l22) {
-    const std::string what = "log-Euclidean metric (L11, L12, L22) = " + triple(l11, l12, l22);
+    const auto what = [&] {
+        return "log-Euclidean metric (L11, L12, L22) = " + triple(l11, l12, l22);
+    };
     if (!(std::isfinite(l11) && std::isfinite(l12) && std::isfinite(l22)))
-        throw InputError(what + " is not finite");
+        throw InputError(what() + " is not finite");
     // Logarithms need absolute, not relative, accuracy (an absolute error e in mu is a relative
     // error e / 2 in the size), so mean -+ radius serves for both eigenvalues.
     Eigen2 eigen;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
+#include "triangulation/modification/vertex_removal_2d.hpp"
 
 namespace exactmesh::generators {
 
@@ -26,6 +28,9 @@ namespace tri = triangulation;
 namespace {
 
 constexpr double kSqrt2 = 1.4142135623730951;
+constexpr double kUnitLow = 0.7071067811865476;
+/// Most rounds of late splits and removals.
+constexpr int kEditRounds = 8;
 
 /// (x, y) divided by its length, computed without squares: scaled by a power of two first.
 std::array<double, 2> unit_vector(double x, double y) {
@@ -37,20 +42,80 @@ std::array<double, 2> unit_vector(double x, double y) {
     return {sx / n, sy / n};
 }
 
-/// The metric length of the edge from p to q when the metric varies geometrically between
-/// the lengths measured in the end metrics, lp and lq [George-Borouchaki98 §10.3]:
-/// (lq - lp) / ln(lq / lp), and the parameter t where half of it is reached.
-struct EdgeLength {
-    double length;
-    double half;  ///< parameter in (0, 1) of the halfway point
+/// Log-Euclidean forms of metrics with the sizes in units of 2^unit (one power of two per mesh,
+/// from the domain's metric: a domain and its metric scaled by 2^k give the same forms), so that
+/// each vertex's logarithm is taken once.
+LogMetric2 scaled_log_form(const Metric2& m, int unit) {
+    Metric2 scaled = m;
+    scaled.h1 = std::ldexp(scaled.h1, -unit);
+    scaled.h2 = std::ldexp(scaled.h2, -unit);
+    return log_form(scaled);
+}
+
+/// The metric length of the edge (dx, dy) between vertices of log forms lp and lq (units of
+/// 2^unit) in the log-Euclidean mean of their metrics, exp((log Mp + log Mq) / 2), as
+/// metric_quality_report_2d measures edges. Measuring in each end's own metric instead misjudges
+/// an edge where the metric rotates: a chord of a curved layer is oblique to the direction of
+/// both ends' metrics, and its small component across them counts at the layer's small size, so
+/// chords of unit length were split into pieces of a third.
+double mean_length(const LogMetric2& lp, const LogMetric2& lq, int unit, double dx, double dy) {
+    Metric2 mean = metric_from_log_form(0.5 * (lp.l11 + lq.l11), 0.5 * (lp.l12 + lq.l12),
+                                        0.5 * (lp.l22 + lq.l22));
+    mean.h1 = std::ldexp(mean.h1, unit);
+    mean.h2 = std::ldexp(mean.h2, unit);
+    return metric_length(mean, dx, dy);
+}
+
+/// The field's metric at each vertex of a mesh and its log form (units of 2^unit).
+struct VertexMetrics {
+    int unit = 0;
+    std::vector<Metric2> at;
+    std::vector<LogMetric2> logs;
+
+    void push_back(const Metric2& m) {
+        at.push_back(m);
+        logs.push_back(scaled_log_form(m, unit));
+    }
+    /// mean_length of the edge (dx, dy) between vertices u and v.
+    double length(tri::VertIdx u, tri::VertIdx v, double dx, double dy) const {
+        return length_to(at[u], logs[u], v, dx, dy);
+    }
+    /// mean_length of the edge (dx, dy) from a point of metric m (log form lm) to vertex v; in m
+    /// itself when v's metric is the same (a constant field: no exponential to take).
+    double length_to(const Metric2& m, const LogMetric2& lm, tri::VertIdx v, double dx,
+                     double dy) const {
+        const Metric2& w = at[v];
+        if (m.h1 == w.h1 && m.h2 == w.h2 && m.c == w.c && m.s == w.s) {
+            return metric_length(m, dx, dy);
+        }
+        return mean_length(lm, logs[v], unit, dx, dy);
+    }
 };
 
-EdgeLength edge_length(double lp, double lq) {
-    if (!(lp > 0) || !(lq > 0)) return {std::max(lp, lq), 0.5};
-    const double r = lq / lp;
-    if (std::fabs(r - 1) < 1e-6) return {0.5 * (lp + lq), 0.5};
-    const double log_r = std::log(r);
-    return {(lq - lp) / log_r, std::log(0.5 * (1 + r)) / log_r};
+/// The parameter in (0, 1) of the point halfway along the edge from p by (dx, dy) in the metric
+/// field itself: its length density sampled at the middles of kHalfwaySamples equal parts
+/// (linear within each). Where the field has a thin layer between the ends (a boundary layer the
+/// edge crosses), the point lands in it, while the interpolation of the ends' metrics sees none.
+constexpr int kHalfwaySamples = 8;
+
+double field_halfway(const MetricField2& field, const double* p, double dx, double dy) {
+    std::array<double, kHalfwaySamples> density{};
+    double total = 0;
+    for (int i = 0; i < kHalfwaySamples; ++i) {
+        const double t = (i + 0.5) / kHalfwaySamples;
+        density[i] = metric_length(field(p[0] + t * dx, p[1] + t * dy), dx, dy);
+        if (!(density[i] > 0) || !std::isfinite(density[i])) return 0.5;
+        total += density[i];
+    }
+    double reached = 0;
+    for (int i = 0; i < kHalfwaySamples; ++i) {
+        if (reached + density[i] >= 0.5 * total) {
+            const double t = (i + (0.5 * total - reached) / density[i]) / kHalfwaySamples;
+            return std::clamp(t, 0.01, 0.99);
+        }
+        reached += density[i];
+    }
+    return 0.5;
 }
 
 /// sqrt(det M) times the area of the triangle (p, q, r), the metric at its centroid, summed over
@@ -72,56 +137,250 @@ double metric_area(const MetricField2& field, const double* p, const double* q, 
            metric_area(field, rp, qr, r, depth + 1) + metric_area(field, pq, qr, rp, depth + 1);
 }
 
+/// One pass over the finished mesh's unconstrained edges: each longer than sqrt 2
+/// (VertexMetrics::length) is split at its halfway point m (field_halfway) into four triangles,
+/// unless m lies closer than min_spacing to one of the edge's two opposite vertices, or one of the
+/// four triangles would not be strictly counter-clockwise (exact orient2d), or one of its two
+/// triangles was already changed in this pass. `at` (the field per vertex) and the triangles'
+/// attributes (when present) follow. Returns the number of splits.
+std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
+                               std::vector<double>& attributes, const MetricField2& field,
+                               double min_spacing) {
+    const tri::TriIdx count = mesh.triangle_count();
+    std::vector<std::uint8_t> changed(count, 0);
+    std::uint64_t splits = 0;
+    for (tri::TriIdx t = 0; t < count; ++t) {
+        for (unsigned k = 0; k < 3 && changed[t] == 0; ++k) {
+            const tri::TriIdx u = mesh.neighbors[3 * t + k];
+            if (u == tri::kNone || u < t || changed[u] != 0 || mesh.is_constrained(t, int(k))) {
+                continue;
+            }
+            const tri::VertIdx a = mesh.triangles[3 * t + k];
+            const tri::VertIdx b = mesh.triangles[3 * t + (k + 1) % 3];
+            const tri::VertIdx c = mesh.triangles[3 * t + (k + 2) % 3];
+            unsigned j = 0;
+            while (mesh.neighbors[3 * u + j] != t) ++j;
+            const tri::VertIdx d = mesh.triangles[3 * u + (j + 2) % 3];
+            const double* pa = mesh.point(a);
+            const double* pb = mesh.point(b);
+            const double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
+            if (!(at.length(a, b, dx, dy) > kSqrt2)) continue;
+            const double half = field_halfway(field, pa, dx, dy);
+            const double m[2] = {pa[0] + half * dx, pa[1] + half * dy};
+            const Metric2 mm = field(m[0], m[1]);
+            const LogMetric2 lm = scaled_log_form(mm, at.unit);
+            const auto close = [&](tri::VertIdx v) {
+                const double* pv = mesh.point(v);
+                return at.length_to(mm, lm, v, pv[0] - m[0], pv[1] - m[1]) < min_spacing;
+            };
+            if (close(c) || close(d)) continue;
+            const double* pc = mesh.point(c);
+            const double* pd = mesh.point(d);
+            using predicates::Sign;
+            if (predicates::orient2d(pa, m, pc) != Sign::Positive ||
+                predicates::orient2d(m, pb, pc) != Sign::Positive ||
+                predicates::orient2d(pb, m, pd) != Sign::Positive ||
+                predicates::orient2d(m, pa, pd) != Sign::Positive) {
+                continue;
+            }
+            // t = (a, b, c) and u = (b, a, d) become t (a, m, c), t2 (m, b, c), u (b, m, d) and
+            // u2 (m, a, d).
+            const tri::VertIdx mv = mesh.vertex_count();
+            mesh.xy.push_back(m[0]);
+            mesh.xy.push_back(m[1]);
+            at.at.push_back(mm);
+            at.logs.push_back(lm);
+            const tri::TriIdx t2 = mesh.triangle_count(), u2 = t2 + 1;
+            const tri::TriIdx n_bc = mesh.neighbors[3 * t + (k + 1) % 3];
+            const tri::TriIdx n_ca = mesh.neighbors[3 * t + (k + 2) % 3];
+            const tri::TriIdx n_ad = mesh.neighbors[3 * u + (j + 1) % 3];
+            const tri::TriIdx n_db = mesh.neighbors[3 * u + (j + 2) % 3];
+            const bool constrained = !mesh.constrained.empty();
+            std::uint8_t c_bc = 0, c_ca = 0, c_ad = 0, c_db = 0;
+            if (constrained) {
+                c_bc = mesh.constrained[3 * t + (k + 1) % 3];
+                c_ca = mesh.constrained[3 * t + (k + 2) % 3];
+                c_ad = mesh.constrained[3 * u + (j + 1) % 3];
+                c_db = mesh.constrained[3 * u + (j + 2) % 3];
+            }
+            const auto write = [&](tri::TriIdx at_slot, std::array<tri::VertIdx, 3> v,
+                                   std::array<tri::TriIdx, 3> n, std::array<std::uint8_t, 3> f) {
+                if (at_slot == mesh.triangle_count()) {
+                    mesh.triangles.insert(mesh.triangles.end(), v.begin(), v.end());
+                    mesh.neighbors.insert(mesh.neighbors.end(), n.begin(), n.end());
+                    if (constrained)
+                        mesh.constrained.insert(mesh.constrained.end(), f.begin(), f.end());
+                } else {
+                    for (unsigned i = 0; i < 3; ++i) {
+                        mesh.triangles[3 * at_slot + i] = v[i];
+                        mesh.neighbors[3 * at_slot + i] = n[i];
+                        if (constrained) mesh.constrained[3 * at_slot + i] = f[i];
+                    }
+                }
+            };
+            write(t, {a, mv, c}, {u2, t2, n_ca}, {0, 0, c_ca});
+            write(u, {b, mv, d}, {t2, u2, n_db}, {0, 0, c_db});
+            write(t2, {mv, b, c}, {u, n_bc, t}, {0, c_bc, 0});
+            write(u2, {mv, a, d}, {t, n_ad, u}, {0, c_ad, 0});
+            const auto relink = [&](tri::TriIdx n, tri::TriIdx from, tri::TriIdx to) {
+                if (n == tri::kNone) return;
+                for (unsigned i = 0; i < 3; ++i) {
+                    if (mesh.neighbors[3 * n + i] == from) mesh.neighbors[3 * n + i] = to;
+                }
+            };
+            relink(n_bc, t, t2);
+            relink(n_ad, u, u2);
+            if (!attributes.empty()) {
+                attributes.push_back(attributes[t]);
+                attributes.push_back(attributes[u]);
+            }
+            changed[t] = changed[u] = 1;
+            changed.push_back(1);  // t2
+            changed.push_back(1);  // u2
+            ++splits;
+        }
+    }
+    return splits;
+}
+
+/// One pass removing an end of each unconstrained edge shorter than 1/sqrt 2
+/// (VertexMetrics::length): the end numbered from `first_removable` on (the later one when both
+/// are), at most one vertex of each triangle's star per pass (no two removed vertices are
+/// neighbours), by remove_vertices_2d (the star retriangulated, exact); `at` is renumbered with
+/// the mesh. Returns the number of vertices removed.
+std::uint64_t remove_short_edges(tri::Triangulation2& mesh, VertexMetrics& at,
+                                 tri::VertIdx first_removable) {
+    const tri::VertIdx nv = mesh.vertex_count();
+    // 0 untouched, 1 to remove, 2 a neighbour of one to remove.
+    std::vector<std::uint8_t> mark(nv, 0);
+    std::vector<tri::VertIdx> chosen;
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const tri::TriIdx u = mesh.neighbors[3 * t + k];
+            if (u == tri::kNone || u < t || mesh.is_constrained(t, int(k))) continue;
+            const tri::VertIdx a = mesh.triangles[3 * t + k];
+            const tri::VertIdx b = mesh.triangles[3 * t + (k + 1) % 3];
+            const tri::VertIdx v = std::max(a, b);
+            if (v < first_removable || mark[a] != 0 || mark[b] != 0) continue;
+            const double* pa = mesh.point(a);
+            const double* pb = mesh.point(b);
+            if (!(at.length(a, b, pb[0] - pa[0], pb[1] - pa[1]) < kUnitLow)) continue;
+            mark[v] = 1;
+            chosen.push_back(v);
+            // Its neighbours (the vertices of the triangles at v) may not go in this pass.
+            mark[v == a ? b : a] = 2;
+        }
+    }
+    if (chosen.empty()) return 0;
+    // The neighbours of each chosen vertex are marked from its triangles; a chosen vertex that
+    // turns out to neighbour an earlier chosen one stays.
+    std::vector<tri::VertIdx> removable;
+    std::vector<std::uint8_t> blocked(nv, 0);
+    std::vector<std::vector<tri::VertIdx>> around(nv);
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            const tri::VertIdx v = mesh.triangles[3 * t + k];
+            if (mark[v] != 1) continue;
+            around[v].push_back(mesh.triangles[3 * t + (k + 1) % 3]);
+            around[v].push_back(mesh.triangles[3 * t + (k + 2) % 3]);
+        }
+    }
+    for (const tri::VertIdx v : chosen) {
+        if (blocked[v] != 0) continue;
+        removable.push_back(v);
+        for (const tri::VertIdx w : around[v]) blocked[w] = 1;
+    }
+    const tri::VertexRemoval2Result removed =
+        tri::remove_vertices_2d(mesh, removable, first_removable);
+    VertexMetrics renumbered{at.unit, std::vector<Metric2>(mesh.vertex_count()),
+                             std::vector<LogMetric2>(mesh.vertex_count())};
+    for (tri::VertIdx v = 0; v < nv; ++v) {
+        const tri::VertIdx w = removed.old_to_new[v];
+        if (w == tri::kNone) continue;
+        renumbered.at[w] = at.at[v];
+        renumbered.logs[w] = at.logs[v];
+    }
+    at = std::move(renumbered);
+    return removed.removed;
+}
+
+/// The generator's swaps: in-ellipse in the log-Euclidean mean of each quadrilateral's metrics,
+/// then (unless the metric is the same at every vertex) towards the shorter diagonal, each in the
+/// mean of its own ends' metrics.
+tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics& at) {
+    tri::EdgeSwapCounters c = metric_swaps_2d(mesh, at.at, true);
+    // In a constant metric (the same at every vertex, whatever the field's kind) the in-ellipse
+    // triangulation is the Delaunay one of the mapped points, the lengths' own optimum: the
+    // shorter diagonal would only undo swaps the next pass redoes.
+    const Metric2& first = at.at.front();
+    if (std::all_of(at.at.begin(), at.at.end(), [&first](const Metric2& m) {
+            return m.h1 == first.h1 && m.h2 == first.h2 && m.c == first.c && m.s == first.s;
+        })) {
+        return c;
+    }
+    const tri::EdgeSwapCounters d = shorter_diagonal_swaps_2d(mesh, at.at);
+    c.swaps += d.swaps;
+    c.budget_stops += d.budget_stops;
+    return c;
+}
+
 class MetricMesher {
   public:
     MetricMesher(const tri::Pslg& pslg, const MetricDelaunayOptions2& options,
                  DomainBoundary2&& boundary, const tri::Cdt2Options& cdt_options)
         : options_(options),
           boundary_(std::move(boundary)),
-          cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions}, cdt_options) {}
+          cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions}, cdt_options) {
+        // The unit of the log forms: the smallest size at the first boundary point.
+        const Metric2 first = options_.metric(boundary_.xy[0], boundary_.xy[1]);
+        unit_ = std::ilogb(std::min(first.h1, first.h2));
+        vertices_.unit = unit_;
+    }
 
     MetricDelaunayResult2 run(std::uint64_t budget);
 
   private:
-    /// The metric of mesh vertex v (cached; vertices are only ever appended).
-    const Metric2& metric_of(tri::VertIdx v);
+    /// Computes and caches the metric of mesh vertex v (vertices are only ever appended).
+    void know(tri::VertIdx v);
     /// True when some vertex of t or of its neighbours lies closer than min_spacing to (x, y)
-    /// in the metric m.
-    bool too_close(tri::TriIdx t, const Metric2& m, double x, double y);
+    /// (log form lm) by mean_length.
+    bool too_close(tri::TriIdx t, const Metric2& m, const LogMetric2& lm, double x, double y);
     /// One pass: proposals at the halfway points of the long edges, inserted in Hilbert order.
     std::uint64_t insertion_pass(std::uint64_t budget);
 
     const MetricDelaunayOptions2& options_;
     DomainBoundary2 boundary_;
     tri::ConstrainedTriangulation2 cdt_;
-    std::vector<Metric2> metrics_;
+    int unit_ = 0;
+    VertexMetrics vertices_;
     std::vector<bool> known_;
     MetricDelaunayCounters2 counters_;
 };
 
-const Metric2& MetricMesher::metric_of(tri::VertIdx v) {
-    if (v >= metrics_.size()) {
-        metrics_.resize(v + 1);
+void MetricMesher::know(tri::VertIdx v) {
+    if (v >= known_.size()) {
+        vertices_.at.resize(v + 1);
+        vertices_.logs.resize(v + 1);
         known_.resize(v + 1, false);
     }
     if (!known_[v]) {
         const double* p = cdt_.mesh().point(v);
-        metrics_[v] = options_.metric(p[0], p[1]);
+        vertices_.at[v] = options_.metric(p[0], p[1]);
+        vertices_.logs[v] = scaled_log_form(vertices_.at[v], unit_);
         known_[v] = true;
     }
-    return metrics_[v];
 }
 
-bool MetricMesher::too_close(tri::TriIdx t, const Metric2& m, double x, double y) {
+bool MetricMesher::too_close(tri::TriIdx t, const Metric2& m, const LogMetric2& lm, double x,
+                             double y) {
     const tri::TriMesh2& mesh = cdt_.mesh();
     const auto close = [&](tri::VertIdx v) {
         if (v == tri::kInfinite) return false;
         const double* p = mesh.point(v);
         const double dx = p[0] - x, dy = p[1] - y;
-        // The length of the would-be edge from the metrics at both of its ends, as the
-        // insertion passes measure edges.
-        return edge_length(metric_length(m, dx, dy), metric_length(metric_of(v), dx, dy)).length <
-               options_.min_spacing;
+        // The length of the would-be edge as the insertion passes measure edges.
+        know(v);
+        return vertices_.length_to(m, lm, v, dx, dy) < options_.min_spacing;
     };
     for (unsigned k = 0; k < 3; ++k) {
         if (close(mesh.tv[3 * t + k])) return true;
@@ -152,11 +411,12 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
                 const double* p = mesh.point(u);
                 const double* q = mesh.point(v);
                 const double dx = q[0] - p[0], dy = q[1] - p[1];
-                const EdgeLength l = edge_length(metric_length(metric_of(u), dx, dy),
-                                                 metric_length(metric_of(v), dx, dy));
-                if (!(l.length > kSqrt2)) continue;
-                proposals.push_back(p[0] + l.half * dx);
-                proposals.push_back(p[1] + l.half * dy);
+                know(u);
+                know(v);
+                if (!(vertices_.length(u, v, dx, dy) > kSqrt2)) continue;
+                const double half = field_halfway(options_.metric, p, dx, dy);
+                proposals.push_back(p[0] + half * dx);
+                proposals.push_back(p[1] + half * dy);
             }
         }
     }
@@ -174,7 +434,8 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
             continue;
         }
         const Metric2 m = options_.metric(x, y);
-        if (too_close(t, m, x, y)) {
+        const LogMetric2 lm = scaled_log_form(m, unit_);
+        if (too_close(t, m, lm, x, y)) {
             ++counters_.too_close;
             continue;
         }
@@ -184,11 +445,13 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
             ++counters_.inserted;
             ++inserted;
             const tri::VertIdx v = cdt_.mesh().vertex_count() - 1;
-            if (v >= metrics_.size()) {
-                metrics_.resize(v + 1);
+            if (v >= known_.size()) {
+                vertices_.at.resize(v + 1);
+                vertices_.logs.resize(v + 1);
                 known_.resize(v + 1, false);
             }
-            metrics_[v] = m;  // the field's value there, already computed
+            vertices_.at[v] = m;  // the field's value there, already computed
+            vertices_.logs[v] = lm;
             known_[v] = true;
         } else {
             ++counters_.rejected;
@@ -209,22 +472,56 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
     restore_input_terms(boundary_, out);
     tri::Triangulation2& mesh = out.mesh;
     if (options_.swap && mesh.triangle_count() > 0) {
-        std::vector<Metric2> at(mesh.vertex_count());
+        // The field at the final vertices (restore_input_terms may renumber them).
+        VertexMetrics at{unit_, {}, {}};
         for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v)
-            at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
-        tri::EdgeSwapCounters swapped = metric_swaps_2d(mesh, at);
+            at.push_back(options_.metric(mesh.point(v)[0], mesh.point(v)[1]));
+        tri::EdgeSwapCounters swapped = quad_swaps(mesh, at);
         result.counters.swaps = swapped.swaps;
         result.counters.swap_budget_hits = swapped.budget_stops;
-        // Smoothing of the inserted points (the boundary's stay), each followed by swaps.
-        const std::vector<double> relax(mesh.vertex_count(), 0.5);
+        // Rounds of splits of the edges still long and removals at the edges too short, each
+        // followed by swaps. After the insertion passes in a metric that varies (and rotates),
+        // vertices lie near the middle of long edges, where the spacing test keeps the edge from
+        // being split, and pairs lie too close; the swaps make two shorter edges of the first,
+        // the removals (remove_vertices_2d, which keeps the mesh exactly valid) undo the second.
+        // Removals renumber the triangles: not done when they carry attributes.
         const auto first_inserted = static_cast<tri::VertIdx>(boundary_.xy.size() / 2);
+        for (int round = 0; round < kEditRounds; ++round) {
+            if (result.counters.inserted + result.counters.late_splits >= budget) break;
+            const std::uint64_t split = split_long_edges(mesh, at, out.triangle_attributes,
+                                                         options_.metric, options_.min_spacing);
+            result.counters.late_splits += split;
+            if (split > 0) {
+                swapped = quad_swaps(mesh, at);
+                result.counters.swaps += swapped.swaps;
+                result.counters.swap_budget_hits += swapped.budget_stops;
+            }
+            std::uint64_t removed = 0;
+            if (out.triangle_attributes.empty()) {
+                removed = remove_short_edges(mesh, at, first_inserted);
+                result.counters.late_removals += removed;
+                if (removed > 0) {
+                    swapped = quad_swaps(mesh, at);
+                    result.counters.swaps += swapped.swaps;
+                    result.counters.swap_budget_hits += swapped.budget_stops;
+                }
+            }
+            // Each round changes fewer vertices; 0.5% of them is not worth another (on a
+            // constant or straight metric the first round is the last).
+            if (200 * (split + removed) <= mesh.vertex_count()) break;
+        }
+        // Smoothing of the inserted points (the boundary's stay), each followed by swaps; edges
+        // measured as the quality report does.
+        const std::vector<double> relax(mesh.vertex_count(), 0.5);
         for (int pass = 0; pass < options_.smoothing_passes; ++pass) {
             const PointSmoothingCounters2 smoothed = smooth_metric_points_2d(
-                mesh, at, relax, 0.3, MoveLimit::MetricLength, first_inserted, true);
+                mesh, at.at, relax, 0.3, MoveLimit::MetricLength, first_inserted, true, true);
             result.counters.smoothing_moves += smoothed.moves;
-            for (tri::VertIdx v = first_inserted; v < mesh.vertex_count(); ++v)
-                at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
-            swapped = metric_swaps_2d(mesh, at);
+            for (tri::VertIdx v = first_inserted; v < mesh.vertex_count(); ++v) {
+                at.at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
+                at.logs[v] = scaled_log_form(at.at[v], unit_);
+            }
+            swapped = quad_swaps(mesh, at);
             result.counters.swaps += swapped.swaps;
             result.counters.swap_budget_hits += swapped.budget_stops;
         }

@@ -6,24 +6,35 @@
 //  1. the boundary's pieces split so that each has about unit metric length (the metric's size
 //     along each piece's direction: discretize_domain_boundary with a per-piece size);
 //  2. their constrained Delaunay triangulation, exterior and holes removed;
-//  3. passes over the mesh's unconstrained edges: an edge longer than sqrt 2 in the metric
-//     (its length with the metric varying geometrically between its ends' lengths) proposes the
-//     point halfway along it in metric length; a proposal is dropped when a vertex of the
-//     triangle holding it or of that triangle's neighbours lies closer than `min_spacing` (the
-//     would-be edge measured as edges are: from the metrics at both ends); the others are
+//  3. passes over the mesh's unconstrained edges: an edge longer than sqrt 2 in the metric (its
+//     length in the log-Euclidean mean of its ends' metrics, as metric_quality_report_2d measures
+//     edges: measured in each end's own metric, a chord of a curved layer counts its small
+//     component across both ends' directions at the layer's thickness) proposes the point halfway
+//     along it in the field sampled at 8 points (a thin layer it crosses gets the point); a
+//     proposal is dropped when a vertex of the triangle holding it or of that triangle's
+//     neighbours lies closer than `min_spacing` (measured the same way); the others are
 //     inserted, in Hilbert order, by Bowyer-Watson in the plane
 //     mapped by the metric at the point (ConstrainedTriangulation2::insert_in_metric_cavity:
 //     the cavity decided by the exact in_ellipse with the shared symbolic perturbation, made
 //     star-shaped by exact orient2d); passes stop when no point is inserted;
-//  4. Lawson swapping of the unconstrained edges by in_ellipse under the mean of the four
-//     vertices' metrics (the same metric for both diagonals of a quadrilateral, so each decision
-//     is one exact test), with a budget of swaps per edge because a varying metric has no global
-//     potential to guarantee termination; then passes of point smoothing and swaps
+//  4. Lawson swapping of the unconstrained edges by in_ellipse under the log-Euclidean mean of the
+//     four vertices' metrics (the same metric for both diagonals of a quadrilateral, so each
+//     decision is one exact test; the mean of the matrices would add up the large eigenvalues of
+//     metrics that rotate and lose the stretching), then towards the shorter diagonal (each in
+//     its own ends' mean, exact compare_metric_lengths; not when the worse new triangle is a
+//     sliver), with a budget of swaps per edge because a varying metric has no global potential
+//     to guarantee termination;
+//  5. up to 8 rounds: each unconstrained edge still longer than sqrt 2 split in four triangles
+//     (the spacing test against its two apexes, exact orient2d), one end of each edge shorter
+//     than 1/sqrt 2 removed (remove_vertices_2d, an independent set; skipped when the triangles
+//     carry region attributes), each followed by the swaps of step 4, until a round changes
+//     fewer than 0.5% of the vertices; then passes of point smoothing and swaps
 //     (metric_mesh_edits_2d.hpp).
 // Every input vertex and segment survives (the segments as chains of pieces, the boundary's
 // points within rounding of them, as for every generator here). Metric lengths are computed
-// without squared lengths (metric_length: hypot in the metric's frame), so a domain and its
-// metric scaled by 2^k give the same mesh scaled.
+// without squared lengths (metric_length: hypot in the metric's frame; log forms of sizes in
+// units of one power of two taken from the domain's metric), so a domain and its metric scaled
+// by 2^k give the same mesh scaled.
 #pragma once
 
 #include <array>
@@ -71,11 +82,13 @@ struct MetricDelaunayCounters2 {
     std::uint64_t swaps = 0;               ///< in-ellipse swaps
     std::uint64_t swap_budget_hits = 0;    ///< edges whose swap budget ran out
     std::uint64_t smoothing_moves = 0;     ///< point moves kept
+    std::uint64_t late_splits = 0;         ///< long edges split after the first swaps
+    std::uint64_t late_removals = 0;       ///< vertices removed at short edges after them
 };
 
 inline constexpr std::array kMetricDelaunayCounterNames = EM_COUNTER_TABLE(
     MetricDelaunayCounters2, boundary_points, passes, proposals, too_close, inserted, rejected,
-    cavity_corrections, swaps, swap_budget_hits, smoothing_moves);
+    cavity_corrections, swaps, swap_budget_hits, smoothing_moves, late_splits, late_removals);
 static_assert(counter_table_complete(kMetricDelaunayCounterNames));
 
 struct MetricDelaunayResult2 {

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <vector>
 
+#include "predicates/metric_lengths.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 
@@ -21,6 +23,8 @@ namespace {
 
 constexpr double kUnitLow = 0.7071067811865476 * (1 - 1e-12);
 constexpr double kUnitHigh = 1.4142135623730951 * (1 + 1e-12);
+/// A triangle of metric mean ratio below this is a sliver (shorter_diagonal_swaps_2d).
+constexpr double kSliverShape = 0.02;
 
 /// {M11, M12, M22} of `m` times h_ref^2: one common scale for a mesh's vertices (h_ref its
 /// smallest size, so every ratio h_ref / h is at most 1 and no square overflows).
@@ -31,9 +35,51 @@ std::array<double, 3> common_scale_matrix(const Metric2& m, double h_ref) {
             m.s * m.s * a2 + m.c * m.c * b2};
 }
 
+/// The log-Euclidean forms of a mesh's vertex metrics, the sizes first divided by one common
+/// power of two (that of the smallest size): a mesh and its metrics scaled by 2^k give the same
+/// forms, so means of them are scale-free (never scaled back: the predicates' matrices are
+/// normalized anyway), and each vertex's logarithm is taken once.
+class LogForms {
+  public:
+    explicit LogForms(std::span<const Metric2> metrics)
+        : scaled_(metrics.begin(), metrics.end()), forms_(metrics.size()) {
+        double h_min = std::numeric_limits<double>::infinity();
+        for (const Metric2& m : metrics) h_min = std::min({h_min, m.h1, m.h2});
+        const int e = std::isfinite(h_min) ? std::ilogb(h_min) : 0;
+        for (std::size_t v = 0; v < metrics.size(); ++v) {
+            scaled_[v].h1 = std::ldexp(scaled_[v].h1, -e);
+            scaled_[v].h2 = std::ldexp(scaled_[v].h2, -e);
+            forms_[v] = log_form(scaled_[v]);
+        }
+    }
+    /// The mean of the vertices' forms, as a metric (in the common unit); the vertices' own
+    /// metric when all are the same (a constant field: no exponential to take).
+    template <std::size_t N>
+    Metric2 mean(const std::array<tri::VertIdx, N>& vertices) const {
+        const Metric2& first = scaled_[vertices[0]];
+        bool same = true;
+        double l11 = 0, l12 = 0, l22 = 0;
+        for (const tri::VertIdx v : vertices) {
+            const Metric2& m = scaled_[v];
+            same = same && m.h1 == first.h1 && m.h2 == first.h2 && m.c == first.c && m.s == first.s;
+            l11 += forms_[v].l11;
+            l12 += forms_[v].l12;
+            l22 += forms_[v].l22;
+        }
+        if (same) return first;
+        constexpr double w = 1.0 / N;
+        return metric_from_log_form(w * l11, w * l12, w * l22);
+    }
+
+  private:
+    std::vector<Metric2> scaled_;
+    std::vector<LogMetric2> forms_;
+};
+
 }  // namespace
 
-tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics) {
+tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
+                                      bool log_euclidean) {
     double h_ref = std::numeric_limits<double>::infinity();
     for (const Metric2& m : metrics) h_ref = std::min({h_ref, m.h1, m.h2});
     std::vector<double> matrices(3 * metrics.size());
@@ -41,15 +87,81 @@ tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const
         const std::array<double, 3> m = common_scale_matrix(metrics[v], h_ref);
         std::copy(m.begin(), m.end(), matrices.begin() + 3 * static_cast<std::ptrdiff_t>(v));
     }
-    return tri::swap_edges_2d(mesh, tri::MetricInEllipse{matrices});
+    tri::MetricInEllipse criterion;
+    criterion.metrics = matrices;
+    std::shared_ptr<const LogForms> forms;
+    if (log_euclidean) {
+        forms = std::make_shared<const LogForms>(metrics);
+        criterion.quad_metric = [forms](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c,
+                                        tri::VertIdx d, double* out) {
+            // Scale-free: matrix_for_predicate divides by the mean's smallest size squared.
+            matrix_for_predicate(forms->mean(std::array{a, b, c, d}), out);
+        };
+    }
+    return tri::swap_edges_2d(mesh, criterion);
+}
+
+tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
+                                                std::span<const Metric2> metrics) {
+    const auto forms = std::make_shared<const LogForms>(metrics);
+    tri::QuadPreference criterion;
+    criterion.swap = [forms](const std::array<tri::VertIdx, 4>& v,
+                             const std::array<const double*, 4>& p) {
+        const Metric2 m_ab = forms->mean(std::array{v[0], v[1]});
+        const Metric2 m_cd = forms->mean(std::array{v[2], v[3]});
+        const double h_ref = std::min({m_ab.h1, m_ab.h2, m_cd.h1, m_cd.h2});
+        const std::array<double, 3> mat_ab = common_scale_matrix(m_ab, h_ref);
+        const std::array<double, 3> mat_cd = common_scale_matrix(m_cd, h_ref);
+        if (predicates::compare_metric_lengths(p[2], p[3], mat_cd.data(), p[0], p[1],
+                                               mat_ab.data()) != Sign::Negative) {
+            return false;
+        }
+        // Not at the cost of the worst triangle's shape (in the quadrilateral's log-Euclidean
+        // mean): a vertex just off the middle of a long edge would otherwise make a sliver.
+        const Metric2 m = forms->mean(v);
+        std::array<std::array<double, 2>, 4> q;
+        double largest = 0;
+        for (std::size_t i = 0; i < 4; ++i) {
+            metric_map(m, p[i][0] - p[0][0], p[i][1] - p[0][1], q[i][0], q[i][1]);
+            largest = std::max({largest, std::fabs(q[i][0]), std::fabs(q[i][1])});
+        }
+        if (!(largest > 0) || !std::isfinite(largest)) return false;
+        const int shift = -std::ilogb(largest);
+        for (auto& point : q) point = {std::ldexp(point[0], shift), std::ldexp(point[1], shift)};
+        // Mean ratio 4 sqrt 3 area / (sum of squared edges) of the triangle (i, j, k).
+        const auto shape = [&q](std::size_t i, std::size_t j, std::size_t k) {
+            const double ux = q[j][0] - q[i][0], uy = q[j][1] - q[i][1];
+            const double wx = q[k][0] - q[i][0], wy = q[k][1] - q[i][1];
+            const double vx = q[k][0] - q[j][0], vy = q[k][1] - q[j][1];
+            const double squares = ux * ux + uy * uy + wx * wx + wy * wy + vx * vx + vy * vy;
+            return squares > 0 ? 2 * std::sqrt(3.0) * (ux * wy - uy * wx) / squares : 0.0;
+        };
+        // a = 0, b = 1, c = 2 (left of a -> b), d = 3: now (a, b, c), (b, a, d); swapped
+        // (a, d, c), (b, c, d).
+        const double worst_after = std::min(shape(0, 3, 2), shape(1, 2, 3));
+        return worst_after >= kSliverShape ||
+               worst_after >= std::min(shape(0, 1, 2), shape(1, 0, 3));
+    };
+    return tri::swap_edges_2d(mesh, criterion);
 }
 
 PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
                                                 std::span<const Metric2> metrics,
                                                 std::span<const double> relax, double limit,
                                                 MoveLimit limit_kind, tri::VertIdx first_movable,
-                                                bool keep_unit_edges) {
+                                                bool keep_unit_edges, bool log_euclidean_lengths) {
     PointSmoothingCounters2 counters;
+    const auto edge_length = [&](tri::VertIdx v, tri::VertIdx u, double ex, double ey) {
+        const Metric2& a = metrics[v];
+        const Metric2& b = metrics[u];
+        const bool same = a.h1 == b.h1 && a.h2 == b.h2 && a.c == b.c && a.s == b.s;
+        if (log_euclidean_lengths && !same) {
+            static constexpr double kHalves[2] = {0.5, 0.5};
+            const Metric2 ends[2] = {metrics[v], metrics[u]};
+            return metric_length(log_euclidean_mean(ends, kHalves), ex, ey);
+        }
+        return 0.5 * (metric_length(metrics[v], ex, ey) + metric_length(metrics[u], ex, ey));
+    };
     const std::uint32_t nv = mesh.vertex_count();
     std::vector<std::uint32_t> start(std::size_t{nv} + 1, 0);
     for (const tri::VertIdx v : mesh.triangles) ++start[v + 1];
@@ -72,8 +184,7 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
             while (mesh.triangles[3 * t + k] != v) ++k;
             const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
             const double dx = mesh.point(u)[0] - px, dy = mesh.point(u)[1] - py;
-            const double w =
-                0.5 * (metric_length(metrics[v], dx, dy) + metric_length(metrics[u], dx, dy));
+            const double w = edge_length(v, u, dx, dy);
             sum_w += w;
             sum_x += w * dx;
             sum_y += w * dy;
@@ -115,8 +226,7 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
                     while (mesh.triangles[3 * t + k] != v) ++k;
                     const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
                     const double ex = mesh.point(u)[0] - x, ey = mesh.point(u)[1] - y;
-                    const double l = 0.5 * (metric_length(metrics[v], ex, ey) +
-                                            metric_length(metrics[u], ex, ey));
+                    const double l = edge_length(v, u, ex, ey);
                     if (l >= kUnitLow && l <= kUnitHigh) ++count;
                 }
                 return count;

@@ -22,8 +22,23 @@ namespace exactmesh::generators {
 
 /// swap_edges_2d(mesh, MetricInEllipse) with metrics[v] (one per vertex) as matrices scaled by
 /// the square of the smallest size of all.
+/// With log_euclidean, each quadrilateral's metric is instead the log-Euclidean mean of its four
+/// vertices' metrics (log_euclidean_mean): where the metric rotates from vertex to vertex (a
+/// curved boundary layer) the mean of the matrices adds up their large eigenvalues in every
+/// direction and loses the stretching (aspect ratio 100 turned about 12 over one cell), while the
+/// log-Euclidean mean keeps it and measures as metric_quality_report_2d does.
 triangulation::EdgeSwapCounters metric_swaps_2d(triangulation::Triangulation2& mesh,
-                                                std::span<const Metric2> metrics);
+                                                std::span<const Metric2> metrics,
+                                                bool log_euclidean = false);
+
+/// Swaps each strictly convex quadrilateral whose other diagonal is strictly shorter, each
+/// diagonal measured in the log-Euclidean mean of its own two ends' metrics (as
+/// metric_quality_report_2d measures edges), compared exactly (compare_metric_lengths, the two
+/// matrices in one scale). Where the metric rotates faster than a cell's in-ellipse can follow
+/// (a curved layer of aspect ratio 1000: the ring of a cell's neighbours sags by tens of layer
+/// thicknesses in any single metric), this keeps the edges the report counts.
+triangulation::EdgeSwapCounters shorter_diagonal_swaps_2d(triangulation::Triangulation2& mesh,
+                                                          std::span<const Metric2> metrics);
 
 /// How far one smoothing move may go.
 enum class MoveLimit {
@@ -43,13 +58,16 @@ struct PointSmoothingCounters2 {
 /// moved) times the way to the centroid of its neighbours weighted by the edges' metric lengths
 /// (the mean of the lengths in both ends' metrics), limited as `limit_kind` says; with
 /// keep_unit_edges, a move that leaves fewer of the vertex's edges with metric length in
-/// [1/sqrt 2, sqrt 2] is refused too.
+/// [1/sqrt 2, sqrt 2] is refused too. With log_euclidean_lengths, an edge's metric length (the
+/// weights and the unit test) is its length in the log-Euclidean mean of its ends' metrics (as
+/// metric_quality_report_2d measures), instead of the mean of its lengths in both.
 /// @pre metrics and relax hold one value per vertex; the mesh's triangles are counter-clockwise.
 PointSmoothingCounters2 smooth_metric_points_2d(triangulation::Triangulation2& mesh,
                                                 std::span<const Metric2> metrics,
                                                 std::span<const double> relax, double limit,
                                                 MoveLimit limit_kind,
                                                 triangulation::VertIdx first_movable,
-                                                bool keep_unit_edges = false);
+                                                bool keep_unit_edges = false,
+                                                bool log_euclidean_lengths = false);
 
 }  // namespace exactmesh::generators

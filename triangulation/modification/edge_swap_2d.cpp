@@ -299,6 +299,31 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinTotalLength) {
     });
 }
 
+namespace {
+
+/// swap_loop with a criterion that has no global potential: after max_swaps_per_edge times the
+/// number of edges swaps, every further quadrilateral is kept (counted in budget_stops).
+template <class Prefers>
+EdgeSwapCounters budgeted_swap_loop(Triangulation2& mesh, std::uint32_t max_swaps_per_edge,
+                                    Prefers&& prefers) {
+    const std::uint64_t budget =
+        std::uint64_t{max_swaps_per_edge} * 3 * std::uint64_t{mesh.triangle_count()};
+    std::uint64_t swaps = 0, stops = 0;
+    EdgeSwapCounters counters = swap_loop(mesh, false, [&](const TriMesh2& work, const Quad& q) {
+        if (swaps >= budget) {
+            ++stops;
+            return false;
+        }
+        const bool swap = prefers(work, q);
+        if (swap) ++swaps;
+        return swap;
+    });
+    counters.budget_stops = stops;
+    return counters;
+}
+
+}  // namespace
+
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) {
     if (criterion.metrics.size() != 3 * std::size_t{mesh.vertex_count()}) {
         throw InputError("metric swapping needs three values per vertex: got " +
@@ -311,27 +336,30 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) 
                              ")");
         }
     }
-    const std::uint64_t budget =
-        std::uint64_t{criterion.max_swaps_per_edge} * 3 * std::uint64_t{mesh.triangle_count()};
-    std::uint64_t swaps = 0, stops = 0;
-    EdgeSwapCounters counters = swap_loop(mesh, false, [&](const TriMesh2& work, const Quad& q) {
-        if (swaps >= budget) {
-            ++stops;
-            return false;
-        }
-        double m[3] = {0, 0, 0};
-        for (const VertIdx v : {q.a, q.b, q.c, q.d}) {
-            for (std::size_t k = 0; k < 3; ++k)
-                m[k] += 0.25 * criterion.metrics[3 * std::size_t{v} + k];
-        }
-        const bool swap =
-            predicates::in_ellipse_sos(work.point(q.a), work.point(q.b), work.point(q.c),
-                                       work.point(q.d), m, q.a, q.b, q.c, q.d) == Sign::Positive;
-        if (swap) ++swaps;
-        return swap;
-    });
-    counters.budget_stops = stops;
-    return counters;
+    return budgeted_swap_loop(
+        mesh, criterion.max_swaps_per_edge, [&](const TriMesh2& work, const Quad& q) {
+            double m[3] = {0, 0, 0};
+            if (criterion.quad_metric) {
+                criterion.quad_metric(q.a, q.b, q.c, q.d, m);
+            } else {
+                for (const VertIdx v : {q.a, q.b, q.c, q.d}) {
+                    for (std::size_t k = 0; k < 3; ++k)
+                        m[k] += 0.25 * criterion.metrics[3 * std::size_t{v} + k];
+                }
+            }
+            return predicates::in_ellipse_sos(work.point(q.a), work.point(q.b), work.point(q.c),
+                                              work.point(q.d), m, q.a, q.b, q.c,
+                                              q.d) == Sign::Positive;
+        });
+}
+
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, QuadPreference criterion) {
+    if (!criterion.swap) throw InputError("quadrilateral swapping needs a decision");
+    return budgeted_swap_loop(
+        mesh, criterion.max_swaps_per_edge, [&](const TriMesh2& work, const Quad& q) {
+            return criterion.swap({q.a, q.b, q.c, q.d}, {work.point(q.a), work.point(q.b),
+                                                         work.point(q.c), work.point(q.d)});
+        });
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion) {

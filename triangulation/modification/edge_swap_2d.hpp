@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string_view>
 
@@ -68,6 +69,25 @@ struct MetricInEllipse {
     /// factor (finite doubles, positive definite).
     std::span<const double> metrics;
     std::uint32_t max_swaps_per_edge = 8;
+    /// When set, the quadrilateral's metric instead of the mean of its vertices' `metrics`:
+    /// quad_metric(a, b, c, d, out) writes {M11, M12, M22} (finite, positive definite, any
+    /// positive scale) for the quadrilateral of vertices a, b, c, d (e.g. a log-Euclidean
+    /// mean, which keeps the stretching of metrics that rotate from vertex to vertex, where the
+    /// mean of the matrices loses it).
+    std::function<void(VertIdx, VertIdx, VertIdx, VertIdx, double*)> quad_metric = {};
+};
+
+/// A caller's decision per quadrilateral: swap(v, p) is true when the diagonal c - d is preferred
+/// to a - b, the current one, for the vertices v = {a, b, c, d} (c the apex of the triangle left
+/// of a -> b, d of the one right of it) at the points p; it must give false for {c, d, b, a}
+/// whenever it gives true for {a, b, c, d} (then a single quadrilateral never flips back), e.g.
+/// one exact comparison of the two diagonals. With no
+/// global potential the loop stops after max_swaps_per_edge times the number of edges swaps
+/// (budget_stops).
+struct QuadPreference {
+    std::function<bool(const std::array<VertIdx, 4>&, const std::array<const double*, 4>&)> swap =
+        {};
+    std::uint32_t max_swaps_per_edge = 8;
 };
 
 /// The criterion names of the CLI and benches.
@@ -108,6 +128,9 @@ EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, MinMaxAngle criterion,
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion);
 /// @throws InputError when criterion.metrics does not hold three finite values per vertex.
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion);
+/// Swaps strictly convex quadrilaterals as criterion.swap says. @throws InputError when it is
+/// empty.
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, QuadPreference criterion);
 
 /// Fills mesh.neighbors from mesh.triangles (each undirected edge shared by at most two
 /// triangles, in opposite directions) and sizes mesh.constrained to match when it is not empty.

@@ -2,8 +2,9 @@
 // The metric Delaunay generator (issue 14): valid constrained meshes (exact check) that keep
 // every input vertex and segment, edges of unit length in the metric (isotropic, stretched along
 // the axes, rotated, varying), the same mesh scaled when the domain and its metric are scaled by
-// 2^600 or 2^-600, a metric asking for too many triangles refused at once with its estimate, and
-// the registry's isotropic metric of a size when no metric is given.
+// 2^600 or 2^-600 (also a boundary layer curved around a circle, whose edges are at least 95%
+// of unit metric length), a metric asking for too many triangles refused at once with its estimate,
+// and the registry's isotropic metric of a size when no metric is given.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -105,6 +106,62 @@ TEST(MetricDelaunay2d, ScaledDomainAndMetricGiveTheSameMeshScaled) {
         const double s = std::ldexp(1.0, k);
         const Domain scaled(s);
         const gen::MetricDelaunayResult2 r = run(scaled, stretched(0.1, 0.01, 0.3, s));
+        expect_valid(scaled, r);
+        EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
+        ASSERT_EQ(r.mesh.mesh.xy.size(), reference.mesh.mesh.xy.size());
+        for (std::size_t i = 0; i < r.mesh.mesh.xy.size(); ++i) {
+            EXPECT_EQ(r.mesh.mesh.xy[i], std::ldexp(reference.mesh.mesh.xy[i], k)) << i;
+        }
+    }
+}
+
+/// A boundary layer curved around the circle of radius 0.3 s about (0.5 s, 0.5 s) (issue 14's
+/// known gap): size 0.05 s along the circle's tangent, s (first + 0.3 |r / s - 0.3|) across it
+/// (aspect ratio 0.05 / first on the circle), the metric rotating with the tangent.
+gen::MetricField2 circle_layer(double first, double s = 1) {
+    return gen::MetricField2::analytic(
+        [first, s](double x, double y) {
+            const double dx = x - 0.5 * s, dy = y - 0.5 * s, r = std::hypot(dx, dy);
+            gen::Metric2 m;
+            m.h1 = s * (first + 0.3 * std::fabs(r / s - 0.3));
+            m.h2 = 0.05 * s;
+            if (r > 0) {
+                m.c = dx / r;
+                m.s = dy / r;
+            }
+            return m;
+        },
+        "circle boundary layer");
+}
+
+/// The square [0, s]^2 (no hole).
+Domain plain_square(double s) {
+    Domain d(s);
+    d.xy.resize(8);
+    d.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+    d.holes.clear();
+    return d;
+}
+
+TEST(MetricDelaunay2d, CurvedBoundaryLayerGivesUnitEdges) {
+    // Aspect ratio 100 on the circle: 82.5% of the edges had unit metric length when edges were
+    // measured in each end's own metric and swapped in the mean of the matrices (2026-12-02).
+    // The size is the field's own (the share is what is asserted, so EXACTMESH_TEST_SCALE does
+    // not change it); about 3,000 triangles.
+    const Domain unit = plain_square(1);
+    const gen::MetricField2 field = circle_layer(0.0005);
+    const gen::MetricDelaunayResult2 reference = run(unit, field);
+    expect_valid(unit, reference);
+    const gen::MetricQualityReport2 q =
+        gen::metric_quality_report_2d(reference.mesh.mesh.xy, reference.mesh.mesh.triangles, field);
+    EXPECT_GE(q.unit_length_share, 0.95) << q.edges << " edges";
+    EXPECT_GT(reference.counters.late_splits + reference.counters.late_removals, 0u);
+    // The rounds of splits, removals and swaps after the insertion passes keep the scale
+    // invariance: the domain and the field scaled by 2^+-600 give the same mesh scaled.
+    for (const int k : {600, -600}) {
+        const double s = std::ldexp(1.0, k);
+        const Domain scaled = plain_square(s);
+        const gen::MetricDelaunayResult2 r = run(scaled, circle_layer(0.0005, s));
         expect_valid(scaled, r);
         EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
         ASSERT_EQ(r.mesh.mesh.xy.size(), reference.mesh.mesh.xy.size());

@@ -4,10 +4,11 @@
 // constrained Delaunay triangulation of the mapped points F p (checked against
 // constrained_delaunay_2d of the mapped input, with F = diag(1, 2) so that the mapping is exact
 // in doubles); in metrics that change from point to point the mesh stays a valid constrained
-// triangulation; points on constrained edges and duplicates are refused. (The reduction of a
-// conflict zone to a star-shaped cavity is a guard no test reaches: neither the 4,000 points in
-// random metrics below nor a random search of 20,000 small cases around a dangling segment
-// produced a conflict zone the point does not see whole.)
+// triangulation; points on constrained edges and duplicates are refused; a quadrilateral metric
+// (MetricInEllipse::quad_metric) and a caller's preference (QuadPreference) decide the swaps. (The
+// reduction of a conflict zone to a star-shaped cavity is a guard no test reaches: neither the
+// 4,000 points in random metrics below nor a random search of 20,000 small cases around a dangling
+// segment produced a conflict zone the point does not see whole.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -146,6 +147,58 @@ TEST(MetricSwap2d, AConstantMetricSwapsToTheDelaunayTriangulationOfTheMappedPoin
     metrics.pop_back();
     EXPECT_THROW(tri::swap_edges_2d(euclidean.mesh, tri::MetricInEllipse{metrics}),
                  exactmesh::InputError);
+}
+
+TEST(MetricSwap2d, AQuadMetricAndAQuadPreferenceDecideEachQuadrilateral) {
+    const std::vector<double> points = random_points(point_count(1000), 5);
+    std::vector<double> xy = kSquare;
+    xy.insert(xy.end(), points.begin(), points.end());
+    const tri::Cdt2Result euclidean =
+        tri::constrained_delaunay_2d(tri::Pslg{xy, kSquareSegments, {}, {}});
+    // quad_metric giving the constant metric diag(1, 4) everywhere swaps as that metric per
+    // vertex does: to the Delaunay triangulation of the points mapped by diag(1, 2).
+    tri::Triangulation2 by_quad = euclidean.mesh;
+    tri::MetricInEllipse criterion;
+    criterion.quad_metric = [](tri::VertIdx, tri::VertIdx, tri::VertIdx, tri::VertIdx,
+                               double* out) {
+        out[0] = 1;
+        out[1] = 0;
+        out[2] = 4;
+    };
+    std::vector<double> unused(3 * (xy.size() / 2), 1.0);
+    criterion.metrics = unused;
+    EXPECT_GT(tri::swap_edges_2d(by_quad, criterion).swaps, 0u);
+    std::vector<double> mapped = xy;
+    for (std::size_t i = 1; i < mapped.size(); i += 2) mapped[i] *= 2;
+    const tri::Cdt2Result reference =
+        tri::constrained_delaunay_2d(tri::Pslg{mapped, kSquareSegments, {}, {}});
+    EXPECT_EQ(canonical_triangles(by_quad.triangles),
+              canonical_triangles(reference.mesh.triangles));
+
+    // QuadPreference towards the shorter diagonal (squared lengths of points in [0, 1]: no
+    // overflow; ties keep the edge): afterwards no strictly convex quadrilateral has a strictly
+    // shorter other diagonal, and the mesh is valid.
+    const auto squared = [](const double* p, const double* q) {
+        return (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]);
+    };
+    tri::Triangulation2 shorter = euclidean.mesh;
+    tri::QuadPreference prefer;
+    prefer.swap = [&](const std::array<tri::VertIdx, 4>&, const std::array<const double*, 4>& p) {
+        return squared(p[2], p[3]) < squared(p[0], p[1]);
+    };
+    const tri::EdgeSwapCounters swapped = tri::swap_edges_2d(shorter, prefer);
+    EXPECT_GT(swapped.swaps, 0u);
+    EXPECT_EQ(swapped.budget_stops, 0u);
+    EXPECT_NO_THROW(tri::link_neighbors_2d(shorter));  // every triangle counter-clockwise
+    EXPECT_EQ(tri::swap_edges_2d(shorter, prefer).swaps, 0u);
+    // A preference that always swaps stops at its budget; an empty one is an input error.
+    tri::QuadPreference always;
+    always.swap = [](const std::array<tri::VertIdx, 4>&, const std::array<const double*, 4>&) {
+        return true;
+    };
+    always.max_swaps_per_edge = 1;
+    EXPECT_GT(tri::swap_edges_2d(shorter, always).budget_stops, 0u);
+    EXPECT_THROW(tri::swap_edges_2d(shorter, tri::QuadPreference{}), exactmesh::InputError);
 }
 
 }  // namespace
