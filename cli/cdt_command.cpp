@@ -55,7 +55,7 @@ void run_cdt(const CdtArguments& arguments) {
     tri::Cdt2Options options;
     options.recovery = tri::segment_recovery_from_name(arguments.recovery);
     options.remove_exterior = !arguments.convex_hull;
-    options.order = insertion_order(arguments.order);
+    options.order = tri::insertion_order_from_name(arguments.order);
     options.seed = arguments.seed;
     options.first_index = base;
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};

@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <set>
 #include <string>
 #include <utility>
 
@@ -23,6 +22,7 @@
 #include "triangulation/checks/check_3d.hpp"
 #include "triangulation/checks/check_conforming_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/mesh/constrained_flags_2d.hpp"
 
 namespace exactmesh::cli {
 
@@ -66,19 +66,7 @@ int run_constrained_check(const CheckArguments& arguments) {
         pieces = io::read_poly(pieces_path).segments;
         constrained_edges = pieces;
     }
-    std::set<std::pair<tri::VertIdx, tri::VertIdx>> flagged;
-    for (std::size_t s = 0; s + 1 < constrained_edges.size(); s += 2) {
-        flagged.emplace(std::min(constrained_edges[s], constrained_edges[s + 1]),
-                        std::max(constrained_edges[s], constrained_edges[s + 1]));
-    }
-    mesh.constrained.resize(mesh.triangles.size());
-    for (std::size_t t = 0; t < ele.triangle_count(); ++t) {
-        for (std::size_t k = 0; k < 3; ++k) {
-            const tri::VertIdx a = mesh.triangles[3 * t + k],
-                               b = mesh.triangles[3 * t + (k + 1) % 3];
-            mesh.constrained[3 * t + k] = flagged.count({std::min(a, b), std::max(a, b)}) ? 1 : 0;
-        }
-    }
+    tri::flag_constrained_edges_2d(mesh, constrained_edges);
     const tri::CheckNumbering numbering{base, ele.first_index};
     tri::CheckReport report =
         arguments.conforming

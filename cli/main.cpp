@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "base/errors.hpp"
+#include "base/version.hpp"
 #include "cli/commands.hpp"
 
 namespace {
@@ -70,6 +71,8 @@ int main(int argc, char** argv) {
             "exactmesh"};
         // No require_subcommand(): CLI11 would then report a misspelt subcommand as a missing
         // one; without it, `exactmesh frobnicate` is an unexpected argument, as it should be.
+        app.set_version_flag("--version", std::string("exactmesh ") + exactmesh::kVersion,
+                             "Print the version and exit");
         app.footer(
             "Exit status: 0 success, 1 `check` or `fuzz` found a problem, 2 bad input or usage, "
             "3 internal error.");

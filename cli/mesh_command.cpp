@@ -113,29 +113,6 @@ std::vector<std::string> ignored_options(const gen::MeshGenerator2& generator,
     return warnings;
 }
 
-/// --domain with --size: the curves are discretized by that size before the size budget is
-/// checked (over the domain's CDT), so a size far below what the budget allows (--size 1e-7 on
-/// naca0012: 2 * 10^7 boundary points) ran for minutes and gigabytes before its error. The
-/// budget is checked first over the domain discretized by its own size, and refused there (with
-/// the message of check_size_budget, its estimate over that domain) only beyond 64 times the
-/// budget: far beyond what the two discretizations' areas can change, where the check over the
-/// domain itself took seconds (naca0012 at 1e-6) to minutes. Anything else (a size within that,
-/// or one that is not > 0 somewhere) is left to the check over the domain itself, as before.
-void refuse_size_far_over_budget(gen::SampleDomain sample, const gen::SizeFunction& size) {
-    const gen::DomainPslg coarse = gen::sample_domain(sample);
-    const gen::MeshDomain2 domain(tri::Pslg{coarse.xy, coarse.segments, coarse.holes, {}});
-    gen::MeshOptions2 options;
-    options.size = size;
-    const double far = 64 * gen::kAutomaticTriangleBudget;
-    double estimate = 0;
-    try {
-        estimate = gen::minimum_triangle_count(domain.triangulation().mesh, size, far);
-    } catch (const InputError&) {
-        return;  // a size not > 0 somewhere: reported over the domain itself, as before
-    }
-    if (estimate > far) gen::check_size_budget(domain, options, false);
-}
-
 void run_mesh(const MeshArguments& arguments) {
     const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(arguments.generator);
     if (arguments.angles_given && !(generator.honours.contains(gen::MeshOption::MinAngle) &&
@@ -226,7 +203,7 @@ void run_mesh(const MeshArguments& arguments) {
         if (!size.bounded())
             size = gen::sample_domain_size(domain);
         else if (arguments.max_steiner == 0)  // the automatic budget, whatever the generator
-            refuse_size_far_over_budget(domain, size);
+            gen::refuse_sample_domain_size_far_over_budget(domain, size);
         gen::DomainPslg pslg = gen::sample_domain(domain, size);
         poly.vertices.xy = std::move(pslg.xy);
         poly.segments = std::move(pslg.segments);

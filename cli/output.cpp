@@ -139,13 +139,6 @@ std::string check_unsigned_text(const std::string& text, std::uint64_t max) {
     return "";
 }
 
-triangulation::InsertionOrder insertion_order(const std::string& name) {
-    if (name == "given") return triangulation::InsertionOrder::Given;
-    if (name == "random") return triangulation::InsertionOrder::Random;
-    if (name == "brio") return triangulation::InsertionOrder::Brio;
-    throw InputError("unknown insertion order '" + name + "' (known: given, random, brio)");
-}
-
 void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
                               std::uint32_t base, const std::string& svg_title,

@@ -73,10 +73,6 @@ auto locating_mark_points(const io::PolyFile& poly, const std::string& file, Wor
 /// conversion to an unsigned type wraps "-1" to 2^64 - 1 and saturates larger numbers.
 std::string check_unsigned_text(const std::string& text, std::uint64_t max);
 
-/// The insertion order named by --order (given, random, brio).
-/// @throws InputError naming the unknown order and the known ones.
-triangulation::InsertionOrder insertion_order(const std::string& name);
-
 /// Stages a constrained triangulation (`cdt`, `mesh`) into `set` for `files` (output_files(output,
 /// format,
 /// {".neigh", ".node", ".poly"})): .ele with .neigh, .node (every vertex) and .poly (the pieces,

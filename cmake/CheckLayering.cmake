@@ -2,7 +2,8 @@
 # Allowed (every layer may also use base/: errors, number text, counter tables): predicates ->
 # predicates; triangulation -> predicates, triangulation; generators -> predicates,
 # triangulation, generators; io -> triangulation/mesh/mesh[23].hpp, io;
-# cli -> the four layers and cli (never tests/ or bench/: the command ships);
+# cli -> the four layers and cli (never tests/ or bench/: the command ships); python -> the
+# four layers and python; examples -> nothing by repository path (only <exactmesh/...>);
 # bench -> the four layers and bench; tests -> the four layers, tests and the peer wrappers
 # bench/cgal_*.hpp (the differential tests compare with the same peer the benchmarks run).
 # CGAL may appear only in tests/ and bench/.
@@ -19,6 +20,9 @@ set(allowed_triangulation "base|predicates|triangulation")
 set(allowed_generators "base|predicates|triangulation|generators")
 set(allowed_io "base|io|triangulation/mesh/mesh[23]\\.hpp")
 set(allowed_cli "base|predicates|triangulation|generators|io|cli")
+set(allowed_python "base|predicates|triangulation|generators|io|python")
+# examples/ use only the installed package: <exactmesh/...>, never a repository path.
+set(allowed_examples "<no repository header>")
 set(allowed_bench "base|predicates|triangulation|generators|io|bench")
 set(allowed_tests "base|predicates|triangulation|generators|io|tests|bench/cgal_[a-z0-9_]+\\.hpp")
 set(failures "")
@@ -28,7 +32,7 @@ foreach(layer triangulation generators)
     list(APPEND failures "${f}: not in a family sub-folder (${families_${layer}})")
   endforeach()
 endforeach()
-foreach(layer base predicates triangulation generators io cli bench tests)
+foreach(layer base predicates triangulation generators io cli python examples bench tests)
   file(GLOB_RECURSE files "${SOURCE_DIR}/${layer}/*.hpp" "${SOURCE_DIR}/${layer}/*.cpp"
        "${SOURCE_DIR}/${layer}/*.ipp")
   foreach(f ${files})

@@ -118,6 +118,21 @@ double minimum_triangle_count(const tri::Triangulation2& domain, const SizeFunct
     return sampler.total();
 }
 
+void refuse_sample_domain_size_far_over_budget(SampleDomain sample, const SizeFunction& size) {
+    const DomainPslg coarse = sample_domain(sample);
+    const MeshDomain2 domain(tri::Pslg{coarse.xy, coarse.segments, coarse.holes, {}});
+    MeshOptions2 options;
+    options.size = size;
+    const double far = 64 * kAutomaticTriangleBudget;
+    double estimate = 0;
+    try {
+        estimate = minimum_triangle_count(domain.triangulation().mesh, size, far);
+    } catch (const InputError&) {
+        return;  // a size not > 0 somewhere: reported over the domain itself
+    }
+    if (estimate > far) check_size_budget(domain, options, false);
+}
+
 void check_size_budget(const MeshDomain2& domain_of, const MeshOptions2& options,
                        bool hard_budget) {
     const tri::Pslg& pslg = domain_of.pslg();

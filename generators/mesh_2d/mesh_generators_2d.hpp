@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "generators/boundary/mesh_domain_2d.hpp"
+#include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/sizing/size_function.hpp"
 #include "generators/stretched/advancing_layers_2d.hpp"
@@ -129,6 +130,18 @@ double minimum_triangle_count(const triangulation::Triangulation2& domain, const
 /// Over the domain built once (MeshDomain2::triangulation, whatever options.cdt's recovery).
 /// @throws InputError naming the size, the estimate and the budget, at once.
 void check_size_budget(const MeshDomain2& domain, const MeshOptions2& options, bool hard_budget);
+
+/// A built-in domain with a size (the command's --domain with --size, the Python module's
+/// mesh(domain=, size=)): the curves are discretized by that size before the size budget is
+/// checked over the domain's CDT, so a size far below what the budget allows (1e-7 on naca0012:
+/// 2·10^7 boundary points) ran for minutes and gigabytes before its error. This checks the
+/// budget first over the domain discretized by its own size, and refuses (with
+/// check_size_budget's message, its estimate over that domain) only beyond 64 times the
+/// automatic budget: far beyond what the two discretizations' areas can change. Anything else
+/// (a size within that, or one that is not > 0 somewhere) is left to the check over the domain
+/// itself. Call it only without an explicit Steiner-point budget (the automatic one).
+/// @throws InputError from check_size_budget.
+void refuse_sample_domain_size_far_over_budget(SampleDomain sample, const SizeFunction& size);
 
 /// The automatic triangle budget of check_size_budget.
 inline constexpr double kAutomaticTriangleBudget = 0x1p26;

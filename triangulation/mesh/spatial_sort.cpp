@@ -7,8 +7,19 @@
 #include <algorithm>
 #include <numeric>
 #include <random>
+#include <string>
+
+#include "base/errors.hpp"
 
 namespace exactmesh::triangulation {
+
+InsertionOrder insertion_order_from_name(std::string_view name) {
+    if (name == "given") return InsertionOrder::Given;
+    if (name == "random") return InsertionOrder::Random;
+    if (name == "brio") return InsertionOrder::Brio;
+    throw InputError("unknown insertion order '" + std::string(name) +
+                     "' (known: given, random, brio)");
+}
 
 namespace {
 

@@ -7,12 +7,17 @@
 
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace exactmesh::triangulation {
 
 /// The order in which an incremental construction inserts its points.
 enum class InsertionOrder { Given, Random, Brio };
+
+/// "given", "random", "brio" (the command's --order, the Python module's order=).
+/// @throws InputError naming the unknown name and the known ones.
+InsertionOrder insertion_order_from_name(std::string_view name);
 
 /// A permutation of 0..n-1 (n = xy.size()/2): the order in which to insert the points.
 std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
