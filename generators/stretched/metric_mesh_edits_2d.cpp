@@ -41,8 +41,8 @@ std::array<double, 3> common_scale_matrix(const Metric2& m, double h_ref) {
 /// normalized anyway), and each vertex's logarithm is taken once.
 class LogForms {
   public:
-    explicit LogForms(std::span<const Metric2> metrics)
-        : scaled_(metrics.begin(), metrics.end()), forms_(metrics.size()) {
+    LogForms(std::span<const Metric2> metrics, MetricFromLogFormMemo* memo)
+        : scaled_(metrics.begin(), metrics.end()), forms_(metrics.size()), memo_(memo) {
         double h_min = std::numeric_limits<double>::infinity();
         for (const Metric2& m : metrics) h_min = std::min({h_min, m.h1, m.h2});
         const int e = std::isfinite(h_min) ? std::ilogb(h_min) : 0;
@@ -68,18 +68,20 @@ class LogForms {
         }
         if (same) return first;
         constexpr double w = 1.0 / N;
+        if (memo_ != nullptr) return (*memo_)(w * l11, w * l12, w * l22);
         return metric_from_log_form(w * l11, w * l12, w * l22);
     }
 
   private:
     std::vector<Metric2> scaled_;
     std::vector<LogMetric2> forms_;
+    MetricFromLogFormMemo* memo_ = nullptr;
 };
 
 }  // namespace
 
 tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
-                                      bool log_euclidean) {
+                                      bool log_euclidean, MetricFromLogFormMemo* memo) {
     double h_ref = std::numeric_limits<double>::infinity();
     for (const Metric2& m : metrics) h_ref = std::min({h_ref, m.h1, m.h2});
     std::vector<double> matrices(3 * metrics.size());
@@ -91,7 +93,7 @@ tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const
     criterion.metrics = matrices;
     std::shared_ptr<const LogForms> forms;
     if (log_euclidean) {
-        forms = std::make_shared<const LogForms>(metrics);
+        forms = std::make_shared<const LogForms>(metrics, memo);
         criterion.quad_metric = [forms](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c,
                                         tri::VertIdx d, double* out) {
             // Scale-free: matrix_for_predicate divides by the mean's smallest size squared.
@@ -102,8 +104,9 @@ tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const
 }
 
 tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
-                                                std::span<const Metric2> metrics) {
-    const auto forms = std::make_shared<const LogForms>(metrics);
+                                                std::span<const Metric2> metrics,
+                                                MetricFromLogFormMemo* memo) {
+    const auto forms = std::make_shared<const LogForms>(metrics, memo);
     tri::QuadPreference criterion;
     criterion.swap = [forms](const std::array<tri::VertIdx, 4>& v,
                              const std::array<const double*, 4>& p) {
@@ -149,7 +152,8 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
                                                 std::span<const Metric2> metrics,
                                                 std::span<const double> relax, double limit,
                                                 MoveLimit limit_kind, tri::VertIdx first_movable,
-                                                bool keep_unit_edges, bool log_euclidean_lengths) {
+                                                bool keep_unit_edges, bool log_euclidean_lengths,
+                                                MetricFromLogFormMemo* memo) {
     PointSmoothingCounters2 counters;
     const auto edge_length = [&](tri::VertIdx v, tri::VertIdx u, double ex, double ey) {
         const Metric2& a = metrics[v];
@@ -158,7 +162,7 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
         if (log_euclidean_lengths && !same) {
             static constexpr double kHalves[2] = {0.5, 0.5};
             const Metric2 ends[2] = {metrics[v], metrics[u]};
-            return metric_length(log_euclidean_mean(ends, kHalves), ex, ey);
+            return metric_length(log_euclidean_mean(ends, kHalves, memo), ex, ey);
         }
         return 0.5 * (metric_length(metrics[v], ex, ey) + metric_length(metrics[u], ex, ey));
     };
