@@ -16,6 +16,7 @@
 #include "generators/sizing/size_function.hpp"
 #include "generators/stretched/metric_mesh_edits_2d.hpp"
 #include "predicates/orient2d.hpp"
+#include "predicates/power_of_two.hpp"
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
@@ -46,9 +47,11 @@ std::array<double, 2> unit_vector(double x, double y) {
 /// from the domain's metric: a domain and its metric scaled by 2^k give the same forms), so that
 /// each vertex's logarithm is taken once.
 LogMetric2 scaled_log_form(const Metric2& m, int unit) {
+    // PowerOfTwo: the bits of std::ldexp, without its library call.
+    const predicates::PowerOfTwo down(-unit);
     Metric2 scaled = m;
-    scaled.h1 = std::ldexp(scaled.h1, -unit);
-    scaled.h2 = std::ldexp(scaled.h2, -unit);
+    scaled.h1 = down(scaled.h1);
+    scaled.h2 = down(scaled.h2);
     return log_form(scaled);
 }
 
@@ -61,8 +64,9 @@ LogMetric2 scaled_log_form(const Metric2& m, int unit) {
 double mean_length(const LogMetric2& lp, const LogMetric2& lq, int unit, double dx, double dy,
                    MetricFromLogFormMemo& memo) {
     Metric2 mean = memo(0.5 * (lp.l11 + lq.l11), 0.5 * (lp.l12 + lq.l12), 0.5 * (lp.l22 + lq.l22));
-    mean.h1 = std::ldexp(mean.h1, unit);
-    mean.h2 = std::ldexp(mean.h2, unit);
+    const predicates::PowerOfTwo up(unit);
+    mean.h1 = up(mean.h1);
+    mean.h2 = up(mean.h2);
     return metric_length(mean, dx, dy);
 }
 

@@ -46,9 +46,11 @@ class LogForms {
         double h_min = std::numeric_limits<double>::infinity();
         for (const Metric2& m : metrics) h_min = std::min({h_min, m.h1, m.h2});
         const int e = std::isfinite(h_min) ? std::ilogb(h_min) : 0;
+        // PowerOfTwo: the bits of std::ldexp, without its library call.
+        const predicates::PowerOfTwo down(-e);
         for (std::size_t v = 0; v < metrics.size(); ++v) {
-            scaled_[v].h1 = std::ldexp(scaled_[v].h1, -e);
-            scaled_[v].h2 = std::ldexp(scaled_[v].h2, -e);
+            scaled_[v].h1 = down(scaled_[v].h1);
+            scaled_[v].h2 = down(scaled_[v].h2);
             forms_[v] = log_form(scaled_[v]);
         }
     }
@@ -130,7 +132,8 @@ tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
         }
         if (!(largest > 0) || !std::isfinite(largest)) return false;
         const int shift = -std::ilogb(largest);
-        for (auto& point : q) point = {std::ldexp(point[0], shift), std::ldexp(point[1], shift)};
+        const predicates::PowerOfTwo scale(shift);
+        for (auto& point : q) point = {scale(point[0]), scale(point[1])};
         // Mean ratio 4 sqrt 3 area / (sum of squared edges) of the triangle (i, j, k).
         const auto shape = [&q](std::size_t i, std::size_t j, std::size_t k) {
             const double ux = q[j][0] - q[i][0], uy = q[j][1] - q[i][1];
@@ -155,17 +158,30 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
                                                 bool keep_unit_edges, bool log_euclidean_lengths,
                                                 MetricFromLogFormMemo* memo) {
     PointSmoothingCounters2 counters;
-    const auto edge_length = [&](tri::VertIdx v, tri::VertIdx u, double ex, double ey) {
+    /// How the edge from v to u is measured: in the log-Euclidean mean of the ends' metrics
+    /// (taken once per vertex's star: the weights and both unit-edge counts measure the same
+    /// edges), or as the mean of its lengths in both.
+    struct EdgeMetric {
+        bool log_euclidean = false;
+        Metric2 mean;
+    };
+    const auto edge_metric = [&](tri::VertIdx v, tri::VertIdx u) {
         const Metric2& a = metrics[v];
         const Metric2& b = metrics[u];
         const bool same = a.h1 == b.h1 && a.h2 == b.h2 && a.c == b.c && a.s == b.s;
         if (log_euclidean_lengths && !same) {
             static constexpr double kHalves[2] = {0.5, 0.5};
             const Metric2 ends[2] = {metrics[v], metrics[u]};
-            return metric_length(log_euclidean_mean(ends, kHalves, memo), ex, ey);
+            return EdgeMetric{true, log_euclidean_mean(ends, kHalves, memo)};
         }
+        return EdgeMetric{};
+    };
+    const auto edge_length = [&](const EdgeMetric& edge, tri::VertIdx v, tri::VertIdx u, double ex,
+                                 double ey) {
+        if (edge.log_euclidean) return metric_length(edge.mean, ex, ey);
         return 0.5 * (metric_length(metrics[v], ex, ey) + metric_length(metrics[u], ex, ey));
     };
+    std::vector<EdgeMetric> star_edges;
     const std::uint32_t nv = mesh.vertex_count();
     std::vector<std::uint32_t> start(std::size_t{nv} + 1, 0);
     for (const tri::VertIdx v : mesh.triangles) ++start[v + 1];
@@ -180,6 +196,7 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
         if (start[v] == start[v + 1] || !(relax[v] > 0)) continue;
         const double px = mesh.xy[2 * std::size_t{v}], py = mesh.xy[2 * std::size_t{v} + 1];
         double sum_w = 0, sum_x = 0, sum_y = 0;
+        star_edges.clear();
         for (std::uint32_t j = start[v]; j < start[v + 1]; ++j) {
             const tri::TriIdx t = star[j];
             // Each neighbour once: the one after v in each counter-clockwise triangle (an
@@ -188,7 +205,8 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
             while (mesh.triangles[3 * t + k] != v) ++k;
             const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
             const double dx = mesh.point(u)[0] - px, dy = mesh.point(u)[1] - py;
-            const double w = edge_length(v, u, dx, dy);
+            star_edges.push_back(edge_metric(v, u));
+            const double w = edge_length(star_edges.back(), v, u, dx, dy);
             sum_w += w;
             sum_x += w * dx;
             sum_y += w * dy;
@@ -230,7 +248,7 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
                     while (mesh.triangles[3 * t + k] != v) ++k;
                     const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
                     const double ex = mesh.point(u)[0] - x, ey = mesh.point(u)[1] - y;
-                    const double l = edge_length(v, u, ex, ey);
+                    const double l = edge_length(star_edges[j - start[v]], v, u, ex, ey);
                     if (l >= kUnitLow && l <= kUnitHigh) ++count;
                 }
                 return count;
