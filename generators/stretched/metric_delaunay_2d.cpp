@@ -107,9 +107,14 @@ constexpr int kHalfwaySamples = 8;
 double field_halfway(const MetricField2& field, const double* p, double dx, double dy) {
     std::array<double, kHalfwaySamples> density{};
     double total = 0;
+    // A uniform field has the same density at every sample: measured once (the same doubles).
+    const double uniform_density =
+        field.is_uniform() ? metric_length(field(p[0], p[1]), dx, dy) : 0.0;
     for (int i = 0; i < kHalfwaySamples; ++i) {
         const double t = (i + 0.5) / kHalfwaySamples;
-        density[i] = metric_length(field(p[0] + t * dx, p[1] + t * dy), dx, dy);
+        density[i] = field.is_uniform()
+                         ? uniform_density
+                         : metric_length(field(p[0] + t * dx, p[1] + t * dy), dx, dy);
         if (!(density[i] > 0) || !std::isfinite(density[i])) return 0.5;
         total += density[i];
     }

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -56,8 +58,9 @@ class LogForms {
     }
     /// The mean of the vertices' forms, as a metric (in the common unit); the vertices' own
     /// metric when all are the same (a constant field: no exponential to take).
+    /// `same` (optional) tells whether the vertices' metrics were all the same.
     template <std::size_t N>
-    Metric2 mean(const std::array<tri::VertIdx, N>& vertices) const {
+    Metric2 mean(const std::array<tri::VertIdx, N>& vertices, bool* same_out = nullptr) const {
         const Metric2& first = scaled_[vertices[0]];
         bool same = true;
         double l11 = 0, l12 = 0, l22 = 0;
@@ -68,6 +71,7 @@ class LogForms {
             l12 += forms_[v].l12;
             l22 += forms_[v].l22;
         }
+        if (same_out != nullptr) *same_out = same;
         if (same) return first;
         constexpr double w = 1.0 / N;
         if (memo_ != nullptr) return (*memo_)(w * l11, w * l12, w * l22);
@@ -96,10 +100,32 @@ tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const
     std::shared_ptr<const LogForms> forms;
     if (log_euclidean) {
         forms = std::make_shared<const LogForms>(metrics, memo);
-        criterion.quad_metric = [forms](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c,
-                                        tri::VertIdx d, double* out) {
-            // Scale-free: matrix_for_predicate divides by the mean's smallest size squared.
-            matrix_for_predicate(forms->mean(std::array{a, b, c, d}), out);
+        // The last matrix of four equal metrics: where the metric is the same over a region (a
+        // constant field everywhere) quadrilateral after quadrilateral has it, bit for bit.
+        struct LastMatrix {
+            std::array<std::uint64_t, 4> mean_bits{};
+            double matrix[3] = {0, 0, 0};
+            bool valid = false;
+        };
+        const auto last = std::make_shared<LastMatrix>();
+        criterion.quad_metric = [forms, last](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c,
+                                              tri::VertIdx d, double* out) {
+            bool same = false;
+            const Metric2 mean = forms->mean(std::array{a, b, c, d}, &same);
+            if (!same) {
+                // Scale-free: matrix_for_predicate divides by the mean's smallest size squared.
+                matrix_for_predicate(mean, out);
+                return;
+            }
+            const std::array<std::uint64_t, 4> bits = {
+                std::bit_cast<std::uint64_t>(mean.h1), std::bit_cast<std::uint64_t>(mean.h2),
+                std::bit_cast<std::uint64_t>(mean.c), std::bit_cast<std::uint64_t>(mean.s)};
+            if (!last->valid || bits != last->mean_bits) {
+                matrix_for_predicate(mean, last->matrix);
+                last->mean_bits = bits;
+                last->valid = true;
+            }
+            std::copy(last->matrix, last->matrix + 3, out);
         };
     }
     return tri::swap_edges_2d(mesh, criterion);
