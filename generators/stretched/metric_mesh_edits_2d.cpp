@@ -189,6 +189,7 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
     /// edges), or as the mean of its lengths in both.
     struct EdgeMetric {
         bool log_euclidean = false;
+        bool same = false;  ///< both ends' metrics equal: one length is both
         Metric2 mean;
     };
     const auto edge_metric = [&](tri::VertIdx v, tri::VertIdx u) {
@@ -198,13 +199,19 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
         if (log_euclidean_lengths && !same) {
             static constexpr double kHalves[2] = {0.5, 0.5};
             const Metric2 ends[2] = {metrics[v], metrics[u]};
-            return EdgeMetric{true, log_euclidean_mean(ends, kHalves, memo)};
+            return EdgeMetric{true, false, log_euclidean_mean(ends, kHalves, memo)};
         }
-        return EdgeMetric{};
+        return EdgeMetric{false, same, Metric2{}};
     };
     const auto edge_length = [&](const EdgeMetric& edge, tri::VertIdx v, tri::VertIdx u, double ex,
                                  double ey) {
         if (edge.log_euclidean) return metric_length(edge.mean, ex, ey);
+        if (edge.same) {
+            // Equal metrics (==; their bits differ at most in the sign of a zero direction
+            // component, which no product here can carry into the length) measure alike.
+            const double length = metric_length(metrics[v], ex, ey);
+            return 0.5 * (length + length);
+        }
         return 0.5 * (metric_length(metrics[v], ex, ey) + metric_length(metrics[u], ex, ey));
     };
     std::vector<EdgeMetric> star_edges;
