@@ -11,7 +11,9 @@
 #include "generators/stretched/metric_2d.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "base/errors.hpp"
@@ -211,7 +213,39 @@ Metric2 metric_from_log_form(double l11, double l12, double l22) {
     return metric;
 }
 
-Metric2 log_euclidean_mean(std::span<const Metric2> metrics, std::span<const double> weights) {
+MetricFromLogFormMemo::MetricFromLogFormMemo(std::size_t slots) {
+    int bits = 10;
+    while (bits < 20 && (std::size_t{1} << bits) < slots) ++bits;
+    shift_ = 64 - bits;
+}
+
+Metric2 MetricFromLogFormMemo::operator()(double l11, double l12, double l22) {
+    if (slots_.empty()) {
+        // Allocated at the first use: a run in a constant metric never takes a mean.
+        // A NaN key: no finite argument matches it (non-finite ones throw before being stored).
+        const auto empty = std::bit_cast<std::uint64_t>(std::numeric_limits<double>::quiet_NaN());
+        slots_.assign(std::size_t{1} << (64 - shift_), Slot{{empty, empty, empty}, Metric2{}});
+    }
+    const auto k0 = std::bit_cast<std::uint64_t>(l11);
+    const auto k1 = std::bit_cast<std::uint64_t>(l12);
+    const auto k2 = std::bit_cast<std::uint64_t>(l22);
+    std::uint64_t h = k0 * 0x9e3779b97f4a7c15ULL;
+    h = (h ^ (h >> 29) ^ k1) * 0xbf58476d1ce4e5b9ULL;
+    h = (h ^ (h >> 31) ^ k2) * 0x94d049bb133111ebULL;
+    h ^= h >> 32;
+    Slot& slot = slots_[static_cast<std::size_t>(h >> shift_)];
+    if (slot.key[0] == k0 && slot.key[1] == k1 && slot.key[2] == k2) {
+        ++hits_;
+        return slot.value;
+    }
+    ++misses_;
+    const Metric2 value = metric_from_log_form(l11, l12, l22);
+    slot = Slot{{k0, k1, k2}, value};
+    return value;
+}
+
+Metric2 log_euclidean_mean(std::span<const Metric2> metrics, std::span<const double> weights,
+                           MetricFromLogFormMemo* memo) {
     if (metrics.size() != weights.size()) {
         throw InputError("log-Euclidean mean: " + std::to_string(metrics.size()) + " metrics but " +
                          std::to_string(weights.size()) + " weights");
@@ -248,7 +282,7 @@ Metric2 log_euclidean_mean(std::span<const Metric2> metrics, std::span<const dou
         l12 += w * form.l12;
         l22 += w * form.l22;
     }
-    Metric2 mean = metric_from_log_form(l11, l12, l22);
+    Metric2 mean = memo != nullptr ? (*memo)(l11, l12, l22) : metric_from_log_form(l11, l12, l22);
     const PowerOfTwo up(e);
     mean.h1 = up(mean.h1);
     mean.h2 = up(mean.h2);

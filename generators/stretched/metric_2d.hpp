@@ -15,7 +15,10 @@
 // beyond it is an InputError, so that the predicate's matrix never underflows.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 namespace exactmesh::generators {
 
@@ -69,12 +72,41 @@ inline Metric2 metric_from_log_form(const LogMetric2& form) {
     return metric_from_log_form(form.l11, form.l12, form.l22);
 }
 
+/// A memo of metric_from_log_form (a pure function of its three doubles): the stretched
+/// generators take the exponential of the same mean log form many times (an edge measured by
+/// each swap pass, each edit round and each smoothing pass while its ends' metrics stay the
+/// same), and each costs an atan2, a sincos, two exp and a hypot. Keyed by the arguments' exact
+/// bits, so a hit returns the very Metric2 a call would: results are unchanged. Direct-mapped
+/// (a new key overwrites the slot's old one), with a fixed number of slots: the memory stays
+/// bounded whatever the mesh (allocated at the first call).
+class MetricFromLogFormMemo {
+  public:
+    /// slots: rounded up to a power of two, at least 2^10, at most 2^20 (56 bytes each).
+    explicit MetricFromLogFormMemo(std::size_t slots = std::size_t{1} << 16);
+    /// metric_from_log_form(l11, l12, l22), from the memo when the same three doubles were seen.
+    /// @throws InputError as metric_from_log_form (nothing is stored then).
+    Metric2 operator()(double l11, double l12, double l22);
+    std::uint64_t hits() const { return hits_; }
+    std::uint64_t misses() const { return misses_; }
+
+  private:
+    struct Slot {
+        std::uint64_t key[3];
+        Metric2 value;
+    };
+    std::vector<Slot> slots_;
+    int shift_ = 0;
+    std::uint64_t hits_ = 0, misses_ = 0;
+};
+
 /// exp(sum_i w_i log M_i / sum_i w_i), the log-Euclidean weighted mean (interpolation with
 /// barycentric weights, averaging). The logarithms are taken of the metrics first scaled by the
 /// power of two of the first weighted metric's h1, so metrics all scaled by 2^k give the mean
 /// scaled by 2^k, bit for bit. `weights`: one per metric, finite >= 0, not all 0.
 /// @throws InputError on a bad weight or a size mismatch.
-Metric2 log_euclidean_mean(std::span<const Metric2> metrics, std::span<const double> weights);
+/// With `memo`, the exponential is taken through it (the same result).
+Metric2 log_euclidean_mean(std::span<const Metric2> metrics, std::span<const double> weights,
+                           MetricFromLogFormMemo* memo = nullptr);
 
 /// The components of v in the frame where M is the identity: ((c vx + s vy) / h1,
 /// (-s vx + c vy) / h2). Metrics and vectors scaled together by 2^k give the same bits.

@@ -16,6 +16,7 @@
 #include "generators/sizing/size_function.hpp"
 #include "generators/stretched/metric_mesh_edits_2d.hpp"
 #include "predicates/orient2d.hpp"
+#include "predicates/power_of_two.hpp"
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
@@ -46,9 +47,11 @@ std::array<double, 2> unit_vector(double x, double y) {
 /// from the domain's metric: a domain and its metric scaled by 2^k give the same forms), so that
 /// each vertex's logarithm is taken once.
 LogMetric2 scaled_log_form(const Metric2& m, int unit) {
+    // PowerOfTwo: the bits of std::ldexp, without its library call.
+    const predicates::PowerOfTwo down(-unit);
     Metric2 scaled = m;
-    scaled.h1 = std::ldexp(scaled.h1, -unit);
-    scaled.h2 = std::ldexp(scaled.h2, -unit);
+    scaled.h1 = down(scaled.h1);
+    scaled.h2 = down(scaled.h2);
     return log_form(scaled);
 }
 
@@ -58,11 +61,12 @@ LogMetric2 scaled_log_form(const Metric2& m, int unit) {
 /// an edge where the metric rotates: a chord of a curved layer is oblique to the direction of
 /// both ends' metrics, and its small component across them counts at the layer's small size, so
 /// chords of unit length were split into pieces of a third.
-double mean_length(const LogMetric2& lp, const LogMetric2& lq, int unit, double dx, double dy) {
-    Metric2 mean = metric_from_log_form(0.5 * (lp.l11 + lq.l11), 0.5 * (lp.l12 + lq.l12),
-                                        0.5 * (lp.l22 + lq.l22));
-    mean.h1 = std::ldexp(mean.h1, unit);
-    mean.h2 = std::ldexp(mean.h2, unit);
+double mean_length(const LogMetric2& lp, const LogMetric2& lq, int unit, double dx, double dy,
+                   MetricFromLogFormMemo& memo) {
+    Metric2 mean = memo(0.5 * (lp.l11 + lq.l11), 0.5 * (lp.l12 + lq.l12), 0.5 * (lp.l22 + lq.l22));
+    const predicates::PowerOfTwo up(unit);
+    mean.h1 = up(mean.h1);
+    mean.h2 = up(mean.h2);
     return metric_length(mean, dx, dy);
 }
 
@@ -71,6 +75,8 @@ struct VertexMetrics {
     int unit = 0;
     std::vector<Metric2> at;
     std::vector<LogMetric2> logs;
+    /// The exponentials of the means (shared by the whole run, swaps and smoothing included).
+    MetricFromLogFormMemo* memo = nullptr;
 
     void push_back(const Metric2& m) {
         at.push_back(m);
@@ -88,7 +94,7 @@ struct VertexMetrics {
         if (m.h1 == w.h1 && m.h2 == w.h2 && m.c == w.c && m.s == w.s) {
             return metric_length(m, dx, dy);
         }
-        return mean_length(lm, logs[v], unit, dx, dy);
+        return mean_length(lm, logs[v], unit, dx, dy, *memo);
     }
 };
 
@@ -101,9 +107,14 @@ constexpr int kHalfwaySamples = 8;
 double field_halfway(const MetricField2& field, const double* p, double dx, double dy) {
     std::array<double, kHalfwaySamples> density{};
     double total = 0;
+    // A uniform field has the same density at every sample: measured once (the same doubles).
+    const double uniform_density =
+        field.is_uniform() ? metric_length(field(p[0], p[1]), dx, dy) : 0.0;
     for (int i = 0; i < kHalfwaySamples; ++i) {
         const double t = (i + 0.5) / kHalfwaySamples;
-        density[i] = metric_length(field(p[0] + t * dx, p[1] + t * dy), dx, dy);
+        density[i] = field.is_uniform()
+                         ? uniform_density
+                         : metric_length(field(p[0] + t * dx, p[1] + t * dy), dx, dy);
         if (!(density[i] > 0) || !std::isfinite(density[i])) return 0.5;
         total += density[i];
     }
@@ -293,7 +304,7 @@ std::uint64_t remove_short_edges(tri::Triangulation2& mesh, VertexMetrics& at,
     const tri::VertexRemoval2Result removed =
         tri::remove_vertices_2d(mesh, removable, first_removable);
     VertexMetrics renumbered{at.unit, std::vector<Metric2>(mesh.vertex_count()),
-                             std::vector<LogMetric2>(mesh.vertex_count())};
+                             std::vector<LogMetric2>(mesh.vertex_count()), at.memo};
     for (tri::VertIdx v = 0; v < nv; ++v) {
         const tri::VertIdx w = removed.old_to_new[v];
         if (w == tri::kNone) continue;
@@ -308,7 +319,7 @@ std::uint64_t remove_short_edges(tri::Triangulation2& mesh, VertexMetrics& at,
 /// then (unless the metric is the same at every vertex) towards the shorter diagonal, each in the
 /// mean of its own ends' metrics.
 tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics& at) {
-    tri::EdgeSwapCounters c = metric_swaps_2d(mesh, at.at, true);
+    tri::EdgeSwapCounters c = metric_swaps_2d(mesh, at.at, true, at.memo);
     // In a constant metric (the same at every vertex, whatever the field's kind) the in-ellipse
     // triangulation is the Delaunay one of the mapped points, the lengths' own optimum: the
     // shorter diagonal would only undo swaps the next pass redoes.
@@ -318,7 +329,7 @@ tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics&
         })) {
         return c;
     }
-    const tri::EdgeSwapCounters d = shorter_diagonal_swaps_2d(mesh, at.at);
+    const tri::EdgeSwapCounters d = shorter_diagonal_swaps_2d(mesh, at.at, at.memo);
     c.swaps += d.swaps;
     c.budget_stops += d.budget_stops;
     return c;
@@ -327,14 +338,17 @@ tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics&
 class MetricMesher {
   public:
     MetricMesher(const tri::Pslg& pslg, const MetricDelaunayOptions2& options,
-                 DomainBoundary2&& boundary, const tri::Cdt2Options& cdt_options)
+                 DomainBoundary2&& boundary, const tri::Cdt2Options& cdt_options,
+                 std::size_t memo_slots)
         : options_(options),
           boundary_(std::move(boundary)),
-          cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions}, cdt_options) {
+          cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions}, cdt_options),
+          memo_(memo_slots) {
         // The unit of the log forms: the smallest size at the first boundary point.
         const Metric2 first = options_.metric(boundary_.xy[0], boundary_.xy[1]);
         unit_ = std::ilogb(std::min(first.h1, first.h2));
         vertices_.unit = unit_;
+        vertices_.memo = &memo_;
     }
 
     MetricDelaunayResult2 run(std::uint64_t budget);
@@ -352,6 +366,7 @@ class MetricMesher {
     DomainBoundary2 boundary_;
     tri::ConstrainedTriangulation2 cdt_;
     int unit_ = 0;
+    MetricFromLogFormMemo memo_;
     VertexMetrics vertices_;
     std::vector<bool> known_;
     MetricDelaunayCounters2 counters_;
@@ -473,7 +488,7 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
     tri::Triangulation2& mesh = out.mesh;
     if (options_.swap && mesh.triangle_count() > 0) {
         // The field at the final vertices (restore_input_terms may renumber them).
-        VertexMetrics at{unit_, {}, {}};
+        VertexMetrics at{unit_, {}, {}, &memo_};
         for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v)
             at.push_back(options_.metric(mesh.point(v)[0], mesh.point(v)[1]));
         tri::EdgeSwapCounters swapped = quad_swaps(mesh, at);
@@ -514,8 +529,9 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
         // measured as the quality report does.
         const std::vector<double> relax(mesh.vertex_count(), 0.5);
         for (int pass = 0; pass < options_.smoothing_passes; ++pass) {
-            const PointSmoothingCounters2 smoothed = smooth_metric_points_2d(
-                mesh, at.at, relax, 0.3, MoveLimit::MetricLength, first_inserted, true, true);
+            const PointSmoothingCounters2 smoothed =
+                smooth_metric_points_2d(mesh, at.at, relax, 0.3, MoveLimit::MetricLength,
+                                        first_inserted, true, true, &memo_);
             result.counters.smoothing_moves += smoothed.moves;
             for (tri::VertIdx v = first_inserted; v < mesh.vertex_count(); ++v) {
                 at.at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
@@ -573,7 +589,12 @@ MetricDelaunayResult2 metric_delaunay_2d(const MeshDomain2& domain,
                 "the metric's size along a boundary piece");
         });
     const std::uint64_t boundary_points = boundary.xy.size() / 2 - boundary.cdt.mesh.xy.size() / 2;
-    MetricMesher mesher(domain.pslg(), options, std::move(boundary), cdt);
+    // The means' memo: a round of edits takes about 30 means per triangle of the estimate, each
+    // edge measured at two scales and each quadrilateral in two orders; a direct-mapped table
+    // keeps such a working set when it has a few times more slots (on circle100, 16 slots per
+    // estimated triangle missed 1.5 times as often as 64). At most 2^20 slots (59 MB).
+    const auto memo_slots = static_cast<std::size_t>(std::min(64 * estimate, 0x1p20));
+    MetricMesher mesher(domain.pslg(), options, std::move(boundary), cdt, memo_slots);
     MetricDelaunayResult2 result = mesher.run(budget);
     result.counters.boundary_points = boundary_points;
     return result;

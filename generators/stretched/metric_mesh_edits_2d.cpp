@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -41,21 +43,24 @@ std::array<double, 3> common_scale_matrix(const Metric2& m, double h_ref) {
 /// normalized anyway), and each vertex's logarithm is taken once.
 class LogForms {
   public:
-    explicit LogForms(std::span<const Metric2> metrics)
-        : scaled_(metrics.begin(), metrics.end()), forms_(metrics.size()) {
+    LogForms(std::span<const Metric2> metrics, MetricFromLogFormMemo* memo)
+        : scaled_(metrics.begin(), metrics.end()), forms_(metrics.size()), memo_(memo) {
         double h_min = std::numeric_limits<double>::infinity();
         for (const Metric2& m : metrics) h_min = std::min({h_min, m.h1, m.h2});
         const int e = std::isfinite(h_min) ? std::ilogb(h_min) : 0;
+        // PowerOfTwo: the bits of std::ldexp, without its library call.
+        const predicates::PowerOfTwo down(-e);
         for (std::size_t v = 0; v < metrics.size(); ++v) {
-            scaled_[v].h1 = std::ldexp(scaled_[v].h1, -e);
-            scaled_[v].h2 = std::ldexp(scaled_[v].h2, -e);
+            scaled_[v].h1 = down(scaled_[v].h1);
+            scaled_[v].h2 = down(scaled_[v].h2);
             forms_[v] = log_form(scaled_[v]);
         }
     }
     /// The mean of the vertices' forms, as a metric (in the common unit); the vertices' own
     /// metric when all are the same (a constant field: no exponential to take).
+    /// `same` (optional) tells whether the vertices' metrics were all the same.
     template <std::size_t N>
-    Metric2 mean(const std::array<tri::VertIdx, N>& vertices) const {
+    Metric2 mean(const std::array<tri::VertIdx, N>& vertices, bool* same_out = nullptr) const {
         const Metric2& first = scaled_[vertices[0]];
         bool same = true;
         double l11 = 0, l12 = 0, l22 = 0;
@@ -66,20 +71,23 @@ class LogForms {
             l12 += forms_[v].l12;
             l22 += forms_[v].l22;
         }
+        if (same_out != nullptr) *same_out = same;
         if (same) return first;
         constexpr double w = 1.0 / N;
+        if (memo_ != nullptr) return (*memo_)(w * l11, w * l12, w * l22);
         return metric_from_log_form(w * l11, w * l12, w * l22);
     }
 
   private:
     std::vector<Metric2> scaled_;
     std::vector<LogMetric2> forms_;
+    MetricFromLogFormMemo* memo_ = nullptr;
 };
 
 }  // namespace
 
 tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
-                                      bool log_euclidean) {
+                                      bool log_euclidean, MetricFromLogFormMemo* memo) {
     double h_ref = std::numeric_limits<double>::infinity();
     for (const Metric2& m : metrics) h_ref = std::min({h_ref, m.h1, m.h2});
     std::vector<double> matrices(3 * metrics.size());
@@ -91,19 +99,42 @@ tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const
     criterion.metrics = matrices;
     std::shared_ptr<const LogForms> forms;
     if (log_euclidean) {
-        forms = std::make_shared<const LogForms>(metrics);
-        criterion.quad_metric = [forms](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c,
-                                        tri::VertIdx d, double* out) {
-            // Scale-free: matrix_for_predicate divides by the mean's smallest size squared.
-            matrix_for_predicate(forms->mean(std::array{a, b, c, d}), out);
+        forms = std::make_shared<const LogForms>(metrics, memo);
+        // The last matrix of four equal metrics: where the metric is the same over a region (a
+        // constant field everywhere) quadrilateral after quadrilateral has it, bit for bit.
+        struct LastMatrix {
+            std::array<std::uint64_t, 4> mean_bits{};
+            double matrix[3] = {0, 0, 0};
+            bool valid = false;
+        };
+        const auto last = std::make_shared<LastMatrix>();
+        criterion.quad_metric = [forms, last](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c,
+                                              tri::VertIdx d, double* out) {
+            bool same = false;
+            const Metric2 mean = forms->mean(std::array{a, b, c, d}, &same);
+            if (!same) {
+                // Scale-free: matrix_for_predicate divides by the mean's smallest size squared.
+                matrix_for_predicate(mean, out);
+                return;
+            }
+            const std::array<std::uint64_t, 4> bits = {
+                std::bit_cast<std::uint64_t>(mean.h1), std::bit_cast<std::uint64_t>(mean.h2),
+                std::bit_cast<std::uint64_t>(mean.c), std::bit_cast<std::uint64_t>(mean.s)};
+            if (!last->valid || bits != last->mean_bits) {
+                matrix_for_predicate(mean, last->matrix);
+                last->mean_bits = bits;
+                last->valid = true;
+            }
+            std::copy(last->matrix, last->matrix + 3, out);
         };
     }
     return tri::swap_edges_2d(mesh, criterion);
 }
 
 tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
-                                                std::span<const Metric2> metrics) {
-    const auto forms = std::make_shared<const LogForms>(metrics);
+                                                std::span<const Metric2> metrics,
+                                                MetricFromLogFormMemo* memo) {
+    const auto forms = std::make_shared<const LogForms>(metrics, memo);
     tri::QuadPreference criterion;
     criterion.swap = [forms](const std::array<tri::VertIdx, 4>& v,
                              const std::array<const double*, 4>& p) {
@@ -127,7 +158,8 @@ tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
         }
         if (!(largest > 0) || !std::isfinite(largest)) return false;
         const int shift = -std::ilogb(largest);
-        for (auto& point : q) point = {std::ldexp(point[0], shift), std::ldexp(point[1], shift)};
+        const predicates::PowerOfTwo scale(shift);
+        for (auto& point : q) point = {scale(point[0]), scale(point[1])};
         // Mean ratio 4 sqrt 3 area / (sum of squared edges) of the triangle (i, j, k).
         const auto shape = [&q](std::size_t i, std::size_t j, std::size_t k) {
             const double ux = q[j][0] - q[i][0], uy = q[j][1] - q[i][1];
@@ -149,19 +181,40 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
                                                 std::span<const Metric2> metrics,
                                                 std::span<const double> relax, double limit,
                                                 MoveLimit limit_kind, tri::VertIdx first_movable,
-                                                bool keep_unit_edges, bool log_euclidean_lengths) {
+                                                bool keep_unit_edges, bool log_euclidean_lengths,
+                                                MetricFromLogFormMemo* memo) {
     PointSmoothingCounters2 counters;
-    const auto edge_length = [&](tri::VertIdx v, tri::VertIdx u, double ex, double ey) {
+    /// How the edge from v to u is measured: in the log-Euclidean mean of the ends' metrics
+    /// (taken once per vertex's star: the weights and both unit-edge counts measure the same
+    /// edges), or as the mean of its lengths in both.
+    struct EdgeMetric {
+        bool log_euclidean = false;
+        bool same = false;  ///< both ends' metrics equal: one length is both
+        Metric2 mean;
+    };
+    const auto edge_metric = [&](tri::VertIdx v, tri::VertIdx u) {
         const Metric2& a = metrics[v];
         const Metric2& b = metrics[u];
         const bool same = a.h1 == b.h1 && a.h2 == b.h2 && a.c == b.c && a.s == b.s;
         if (log_euclidean_lengths && !same) {
             static constexpr double kHalves[2] = {0.5, 0.5};
             const Metric2 ends[2] = {metrics[v], metrics[u]};
-            return metric_length(log_euclidean_mean(ends, kHalves), ex, ey);
+            return EdgeMetric{true, false, log_euclidean_mean(ends, kHalves, memo)};
+        }
+        return EdgeMetric{false, same, Metric2{}};
+    };
+    const auto edge_length = [&](const EdgeMetric& edge, tri::VertIdx v, tri::VertIdx u, double ex,
+                                 double ey) {
+        if (edge.log_euclidean) return metric_length(edge.mean, ex, ey);
+        if (edge.same) {
+            // Equal metrics (==; their bits differ at most in the sign of a zero direction
+            // component, which no product here can carry into the length) measure alike.
+            const double length = metric_length(metrics[v], ex, ey);
+            return 0.5 * (length + length);
         }
         return 0.5 * (metric_length(metrics[v], ex, ey) + metric_length(metrics[u], ex, ey));
     };
+    std::vector<EdgeMetric> star_edges;
     const std::uint32_t nv = mesh.vertex_count();
     std::vector<std::uint32_t> start(std::size_t{nv} + 1, 0);
     for (const tri::VertIdx v : mesh.triangles) ++start[v + 1];
@@ -176,6 +229,7 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
         if (start[v] == start[v + 1] || !(relax[v] > 0)) continue;
         const double px = mesh.xy[2 * std::size_t{v}], py = mesh.xy[2 * std::size_t{v} + 1];
         double sum_w = 0, sum_x = 0, sum_y = 0;
+        star_edges.clear();
         for (std::uint32_t j = start[v]; j < start[v + 1]; ++j) {
             const tri::TriIdx t = star[j];
             // Each neighbour once: the one after v in each counter-clockwise triangle (an
@@ -184,7 +238,8 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
             while (mesh.triangles[3 * t + k] != v) ++k;
             const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
             const double dx = mesh.point(u)[0] - px, dy = mesh.point(u)[1] - py;
-            const double w = edge_length(v, u, dx, dy);
+            star_edges.push_back(edge_metric(v, u));
+            const double w = edge_length(star_edges.back(), v, u, dx, dy);
             sum_w += w;
             sum_x += w * dx;
             sum_y += w * dy;
@@ -226,7 +281,7 @@ PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,
                     while (mesh.triangles[3 * t + k] != v) ++k;
                     const tri::VertIdx u = mesh.triangles[3 * t + (k + 1) % 3];
                     const double ex = mesh.point(u)[0] - x, ey = mesh.point(u)[1] - y;
-                    const double l = edge_length(v, u, ex, ey);
+                    const double l = edge_length(star_edges[j - start[v]], v, u, ex, ey);
                     if (l >= kUnitLow && l <= kUnitHigh) ++count;
                 }
                 return count;

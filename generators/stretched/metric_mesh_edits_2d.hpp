@@ -27,9 +27,12 @@ namespace exactmesh::generators {
 /// curved boundary layer) the mean of the matrices adds up their large eigenvalues in every
 /// direction and loses the stretching (aspect ratio 100 turned about 12 over one cell), while the
 /// log-Euclidean mean keeps it and measures as metric_quality_report_2d does.
+/// `memo` (optional) takes the means' exponentials (the same swaps, fewer exponentials when the
+/// caller keeps it across calls).
 triangulation::EdgeSwapCounters metric_swaps_2d(triangulation::Triangulation2& mesh,
                                                 std::span<const Metric2> metrics,
-                                                bool log_euclidean = false);
+                                                bool log_euclidean = false,
+                                                MetricFromLogFormMemo* memo = nullptr);
 
 /// Swaps each strictly convex quadrilateral whose other diagonal is strictly shorter, each
 /// diagonal measured in the log-Euclidean mean of its own two ends' metrics (as
@@ -37,8 +40,10 @@ triangulation::EdgeSwapCounters metric_swaps_2d(triangulation::Triangulation2& m
 /// matrices in one scale). Where the metric rotates faster than a cell's in-ellipse can follow
 /// (a curved layer of aspect ratio 1000: the ring of a cell's neighbours sags by tens of layer
 /// thicknesses in any single metric), this keeps the edges the report counts.
+/// `memo` as for metric_swaps_2d.
 triangulation::EdgeSwapCounters shorter_diagonal_swaps_2d(triangulation::Triangulation2& mesh,
-                                                          std::span<const Metric2> metrics);
+                                                          std::span<const Metric2> metrics,
+                                                          MetricFromLogFormMemo* memo = nullptr);
 
 /// How far one smoothing move may go.
 enum class MoveLimit {
@@ -60,14 +65,13 @@ struct PointSmoothingCounters2 {
 /// keep_unit_edges, a move that leaves fewer of the vertex's edges with metric length in
 /// [1/sqrt 2, sqrt 2] is refused too. With log_euclidean_lengths, an edge's metric length (the
 /// weights and the unit test) is its length in the log-Euclidean mean of its ends' metrics (as
-/// metric_quality_report_2d measures), instead of the mean of its lengths in both.
+/// metric_quality_report_2d measures), instead of the mean of its lengths in both; `memo` as for
+/// metric_swaps_2d.
 /// @pre metrics and relax hold one value per vertex; the mesh's triangles are counter-clockwise.
-PointSmoothingCounters2 smooth_metric_points_2d(triangulation::Triangulation2& mesh,
-                                                std::span<const Metric2> metrics,
-                                                std::span<const double> relax, double limit,
-                                                MoveLimit limit_kind,
-                                                triangulation::VertIdx first_movable,
-                                                bool keep_unit_edges = false,
-                                                bool log_euclidean_lengths = false);
+PointSmoothingCounters2 smooth_metric_points_2d(
+    triangulation::Triangulation2& mesh, std::span<const Metric2> metrics,
+    std::span<const double> relax, double limit, MoveLimit limit_kind,
+    triangulation::VertIdx first_movable, bool keep_unit_edges = false,
+    bool log_euclidean_lengths = false, MetricFromLogFormMemo* memo = nullptr);
 
 }  // namespace exactmesh::generators

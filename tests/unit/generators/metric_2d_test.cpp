@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "base/errors.hpp"
 #include "generators/stretched/metric_2d.hpp"
@@ -213,6 +216,51 @@ TEST(Generators_Metric2d, LogFormRoundTripAndMeans) {
     const std::array<gen::Metric2, 1> one = {gen::isotropic(2)};
     const std::array<double, 1> negative = {-1};
     EXPECT_THROW(gen::log_euclidean_mean(one, negative), exactmesh::InputError);
+}
+
+TEST(Generators_Metric2d, LogFormMemoGivesTheSameBits) {
+    // A small memo (2^10 slots) and more keys than slots, each asked several times: hits,
+    // misses and overwritten slots all return exactly what metric_from_log_form returns, and so
+    // does log_euclidean_mean through the memo.
+    gen::MetricFromLogFormMemo memo(1);
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> angle(-3.2, 3.2), log_size(-8, 8);
+    std::vector<gen::LogMetric2> forms;
+    for (int i = 0; i < cases(3000); ++i) {
+        forms.push_back(gen::log_form(
+            rotated(std::exp(log_size(random)), std::exp(log_size(random)), angle(random))));
+    }
+    // Signed zeros are different keys with (possibly) different directions.
+    forms.push_back({1.0, 0.0, 1.0});
+    forms.push_back({1.0, -0.0, 1.0});
+    const auto same_bits = [](const gen::Metric2& a, const gen::Metric2& b) {
+        return std::bit_cast<std::uint64_t>(a.h1) == std::bit_cast<std::uint64_t>(b.h1) &&
+               std::bit_cast<std::uint64_t>(a.h2) == std::bit_cast<std::uint64_t>(b.h2) &&
+               std::bit_cast<std::uint64_t>(a.c) == std::bit_cast<std::uint64_t>(b.c) &&
+               std::bit_cast<std::uint64_t>(a.s) == std::bit_cast<std::uint64_t>(b.s);
+    };
+    for (int round = 0; round < 3; ++round) {
+        for (std::size_t i = 0; i < forms.size(); ++i) {
+            const gen::LogMetric2& f = forms[i];
+            EXPECT_TRUE(same_bits(memo(f.l11, f.l12, f.l22), gen::metric_from_log_form(f)))
+                << round << " " << i;
+        }
+    }
+    EXPECT_GT(memo.hits(), 0U);
+    EXPECT_GT(memo.misses(), forms.size());  // more keys than slots: some were overwritten
+    EXPECT_EQ(memo.hits() + memo.misses(), 3 * forms.size());
+    // Non-finite arguments throw as the function does, and are never stored.
+    EXPECT_THROW(memo(std::numeric_limits<double>::quiet_NaN(), 0, 0), exactmesh::InputError);
+    EXPECT_THROW(memo(std::numeric_limits<double>::quiet_NaN(), 0, 0), exactmesh::InputError);
+    const std::array<double, 2> w = {0.5, 0.5};
+    for (int i = 0; i + 1 < cases(200); ++i) {
+        const std::array<gen::Metric2, 2> pair = {
+            rotated(std::exp(log_size(random)), std::exp(log_size(random)), angle(random)),
+            rotated(std::exp(log_size(random)), std::exp(log_size(random)), angle(random))};
+        const gen::Metric2 direct = gen::log_euclidean_mean(pair, w);
+        EXPECT_TRUE(same_bits(gen::log_euclidean_mean(pair, w, &memo), direct)) << i;
+        EXPECT_TRUE(same_bits(gen::log_euclidean_mean(pair, w, &memo), direct)) << i;
+    }
 }
 
 TEST(Generators_Metric2d, PredicateMatrix) {
