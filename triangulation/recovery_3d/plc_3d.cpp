@@ -359,6 +359,16 @@ void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out)
     if (count == 0) {
         fail("degenerate " + names.facet(f) + ": no area is left inside its polygons and holes");
     }
+    // Every corner must be part of the facet's surface: a point or segment outside the
+    // polygons (or inside a hole) would be a dangling piece no tetrahedralization could keep.
+    std::vector<bool> used(corners.size(), false);
+    for (const VertIdx v : cdt.mesh.triangles) used[v] = true;
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+        if (!used[k]) {
+            fail(names.facet(f) + ": vertex " + names.vertex(corners[k]) +
+                 " lies outside the facet's area (outside its polygons or in a hole)");
+        }
+    }
     for (std::uint32_t t = 0; t < count; ++t) {
         const VertIdx* tv = &cdt.mesh.triangles[3 * std::size_t{t}];
         const VertIdx v0 = corners[tv[0]], v1 = corners[tv[1]], v2 = corners[tv[2]];

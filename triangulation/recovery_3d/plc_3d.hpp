@@ -72,7 +72,7 @@ void validate_plc_3d_input(const Plc3& plc);
 /// @throws InputError naming the facet: not coplanar (with the vertex off the plane), degenerate
 ///         (no polygon of 3 corners, collinear corners, a polygon repeating a vertex, no area
 ///         left after the holes), polygons that cross (naming the two edges), a hole point on
-///         a polygon edge.
+///         a polygon edge, a corner outside the facet's area (a dangling point or segment).
 SurfaceTriangles3 triangulate_facets_3d(const Plc3& plc);
 
 /// Throws InputError naming the two facets (and their triangles) when two surface triangles of

@@ -102,6 +102,19 @@ TEST(Triangulation_Plc3, FacetTrianglesKeepTheFacetOrientation) {
     }
 }
 
+TEST(Triangulation_Plc3, InternalFacetMakesNonManifoldEdgesThatAreAllowed) {
+    // The cube cut by the diagonal plane x = y: the bottom and top facets carry the cut's edges
+    // as segments, so edges (0, 3) and (4, 7) lie in 3 facets' triangles.
+    Plc3 plc = cube();
+    plc.facets[4].polygons.push_back({0, 3});
+    plc.facets[5].polygons.push_back({4, 7});
+    plc.facets.push_back({{{0, 3, 7, 4}}, {}, 2});
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_EQ(result.validity, "");
+    EXPECT_EQ(result.closedness, "");
+    EXPECT_EQ(result.triangles.size(), 3u * 14u);
+}
+
 TEST(Triangulation_Plc3, OpenBoxIsValidButNotClosed) {
     Plc3 plc = cube();
     plc.facets.pop_back();  // the top z = 1
@@ -184,6 +197,15 @@ TEST(Triangulation_Plc3, FacetWithSegmentAndPointKeepsEveryVertex) {
     used.erase(std::unique(used.begin(), used.end()), used.end());
     EXPECT_EQ(used.size(), 7u);               // no Steiner point, every vertex used
     EXPECT_EQ(surface.triangle_count(), 8u);  // 7 vertices, 4 on the hull: 2 * 7 - 4 - 2
+}
+
+TEST(Triangulation_Plc3, DanglingPointOutsideAFacetIsNamed) {
+    Plc3 plc;
+    plc.xyz = {0, 0, 0, 4, 0, 0, 4, 4, 0, 0, 4, 0, 5, 5, 0};
+    plc.facets = {{{{0, 1, 2, 3}, {4}}, {}, 0}};
+    EXPECT_EQ(
+        scale_invariant_outcome(plc).validity,
+        "facet 0: vertex 4 lies outside the facet's area (outside its polygons or in a hole)");
 }
 
 TEST(Triangulation_Plc3, CrossingPolygonsInAFacetNameBothEdges) {
