@@ -14,6 +14,7 @@
 #include "base/errors.hpp"
 #include "io/format_error.hpp"
 #include "io/plc_format.hpp"
+#include "tests/support/plc_from_file.hpp"
 #include "triangulation/recovery_3d/plc_3d.hpp"
 
 namespace {
@@ -23,22 +24,6 @@ namespace tri = exactmesh::triangulation;
 [[noreturn]] void fail(const char* what) {
     std::fprintf(stderr, "fuzz_plc_3d: %s\n", what);
     std::abort();
-}
-
-/// The file's PLC; the same copy as cli/plc_input.hpp, which tests/ may not include.
-tri::Plc3 to_plc(exactmesh::io::PlcFile file) {
-    tri::Plc3 plc;
-    plc.xyz = std::move(file.xyz);
-    plc.first_index = file.first_index;
-    for (auto& record : file.facets) {
-        plc.facets.push_back({std::move(record.polygons), std::move(record.holes), record.marker});
-    }
-    plc.holes = std::move(file.holes);
-    for (std::size_t r = 0; r + 4 < file.regions.size(); r += 5) {
-        plc.regions.push_back({file.regions[r], file.regions[r + 1], file.regions[r + 2],
-                               file.regions[r + 3], file.regions[r + 4]});
-    }
-    return plc;
 }
 
 }  // namespace
@@ -71,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Keep the checks' inputs small: the fuzzer looks for crashes, not for slow inputs.
     if (file.facets.size() > 256 || file.vertex_count() > 1024) return 0;
     try {
-        const tri::Plc3 plc = to_plc(std::move(file));
+        const tri::Plc3 plc = exactmesh::testing::plc_from_file(std::move(file));
         const tri::SurfaceTriangles3 surface = tri::validate_plc_3d(plc);
         for (const tri::VertIdx v : surface.triangles) {
             if (v >= plc.vertex_count()) fail("a surface triangle names a vertex out of range");

@@ -14,8 +14,10 @@
 
 #include "base/errors.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "io/plc_format.hpp"
 #include "predicates/orient3d.hpp"
 #include "tests/support/error_message.hpp"
+#include "tests/support/plc_from_file.hpp"
 #include "tests/support/test_scale.hpp"
 
 namespace exactmesh::triangulation {
@@ -267,6 +269,52 @@ TEST(Triangulation_Plc3, SchonhardtPrismIsAValidClosedPlc) {
     const Outcome result = scale_invariant_outcome(plc);
     EXPECT_EQ(result.validity, "");
     EXPECT_EQ(result.closedness, "");
+}
+
+TEST(Triangulation_Plc3, FilesReadByIoAreCheckedInTheirOwnNumbering) {
+    // A 1-based .poly cube whose bottom facet holds a segment and whose top facet has a square
+    // hole: not closed, named in the file's numbering.
+    const char* poly = R"(12 3 0 0
+1 0 0 0
+2 1 0 0
+3 0 1 0
+4 1 1 0
+5 0 0 1
+6 1 0 1
+7 0 1 1
+8 1 1 1
+9 0.25 0.25 1
+10 0.75 0.25 1
+11 0.75 0.75 1
+12 0.25 0.75 1
+6 1
+1 0 1
+4 1 3 7 5
+1 0 1
+4 2 6 8 4
+1 0 2
+4 1 5 6 2
+1 0 2
+4 3 4 8 7
+2 0 3
+4 1 2 4 3
+2 1 4
+2 1 4
+4 5 7 8 6
+4 9 10 11 12
+1 0.5 0.5 1
+0
+)";
+    const Plc3 plc = testing::plc_from_file(io::parse_tetgen_poly_3d(poly, "c.poly", "c.node"));
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_EQ(result.validity, "");
+    EXPECT_EQ(result.closedness,
+              "surface not closed: edge (9, 10) of facet 6 lies in only one surface triangle");
+    // A closed OFF tetrahedron, 0-based.
+    const Plc3 tetrahedron = testing::plc_from_file(io::parse_off(
+        "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", "t.off"));
+    EXPECT_EQ(scale_invariant_outcome(tetrahedron),
+              (Outcome{"", "", {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2}}));
 }
 
 TEST(Generators_SampleDomains3, EveryDomainIsValidAndClosed) {
