@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+// Readers of piecewise linear complexes, the input of 3D mesh generation (issue 15): TetGen's
+// .poly (3D) and .smesh [the TetGen 1.5 manual §5.2.2-5.2.3], the Object File Format .off and
+// STL (ASCII and binary) surfaces. Strict like the other readers: every malformed input is a
+// FormatError "file:line: problem" naming the offending value ("file: problem" for binary STL,
+// which has no lines); '#' comments, blank lines and CRLF are fine in the text formats.
+//
+// The result is plain data (io/ depends on base/ only). cli/plc_input.hpp turns it into a
+// triangulation::Plc3: only the command (and the Python module) may see both io/ and
+// triangulation/, and the conversion is a field-by-field copy.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace exactmesh::io {
+
+/// One facet: TetGen's polygons (1 corner: a point, 2: a segment, n >= 3: a closed loop),
+/// hole points in the facet, and the facet's boundary marker.
+struct PlcFacetRecord {
+    std::vector<std::vector<std::uint32_t>> polygons;  ///< 0-based corner indices
+    std::vector<double> holes;                         ///< 3·#H points inside the facet's holes
+    std::int32_t marker = 0;                           ///< 0 when the file gives none
+    std::uint64_t line = 0;  ///< the facet's (first) line; for binary STL the triangle's number
+};
+
+/// The content of a PLC file.
+struct PlcFile {
+    std::vector<double> xyz;               ///< 3·#V coordinates, in file order
+    std::uint32_t first_index = 0;         ///< numbering of the vertices in the file: 0 or 1
+    bool vertices_from_node_file = false;  ///< a .poly/.smesh of 0 points: read from its .node
+    std::vector<PlcFacetRecord> facets;
+    bool has_facet_markers = false;
+    std::vector<double> holes;    ///< 3·#H volume hole points
+    std::vector<double> regions;  ///< 5·#R: x, y, z, attribute, maximum volume (-1: none)
+    std::vector<std::uint64_t> hole_lines;    ///< #H: the line of each volume hole
+    std::vector<std::uint64_t> region_lines;  ///< #R: the line of each region
+
+    std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xyz.size() / 3); }
+};
+
+/// TetGen's 3D .poly: part 1 the points as in a .node file (a count of 0: the points are in
+/// the .node file of the same name); part 2 `<#facets> [<#markers 0|1>]`, each facet a line
+/// `<#polygons> [<#holes>] [<marker>]` (the marker only when the header announces markers; it
+/// may then be omitted, 0), then a line `<#corners> <c1> ... <cn>` per polygon and a line
+/// `<hole #> <x> <y> <z>` per facet hole; part 3 `<#holes>` and `<hole #> <x> <y> <z>` lines;
+/// part 4 (optional) `<#regions>` and `<region #> <x> <y> <z> <attribute> [<max volume>]`.
+/// Corner numbers follow the points' numbering (0 or 1, set by the first point).
+PlcFile read_tetgen_poly_3d(const std::filesystem::path& path);
+PlcFile parse_tetgen_poly_3d(std::string_view text, const std::string& file_name,
+                             const std::filesystem::path& node_path);
+
+/// TetGen's .smesh: as .poly, but each facet is one line `<#corners> <c1> ... <cn> [marker]`
+/// (the marker exactly when the facet header announces markers) and has no holes.
+PlcFile read_smesh(const std::filesystem::path& path);
+PlcFile parse_smesh(std::string_view text, const std::string& file_name,
+                    const std::filesystem::path& node_path);
+
+/// The Object File Format: a line `OFF` (the counts may follow on it), `<#vertices> <#faces>
+/// [<#edges>]`, a line `<x> <y> <z>` per vertex, a line `<n> <v1> ... <vn> [colour]` per face
+/// (a colour of 3 or 4 numbers is ignored); 0-based vertex numbers; each face is one facet.
+PlcFile read_off(const std::filesystem::path& path);
+PlcFile parse_off(std::string_view text, const std::string& file_name);
+
+/// STL: binary when the file is exactly 84 + 50·#T bytes long (#T the count at byte 80),
+/// else ASCII (`solid` ... `facet normal` / `outer loop` / 3 `vertex x y z` / `endloop` /
+/// `endfacet` ... `endsolid`; the normals are not read, as the corners define the triangle).
+/// Corners with equal coordinates (exactly; -0 equals 0) become one vertex, numbered in order
+/// of first appearance; each triangle is one facet.
+PlcFile read_stl(const std::filesystem::path& path);
+PlcFile parse_stl(std::string_view bytes, const std::string& file_name);
+
+/// Dispatches on the extension (.poly, .smesh, .off, .stl, in any letter case).
+/// @throws FormatError naming the file for another extension.
+PlcFile read_plc(const std::filesystem::path& path);
+
+}  // namespace exactmesh::io

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// libFuzzer target for the PLC readers (io/plc_format) and checks (triangulation/recovery_3d):
+// the first byte picks the reader (.poly, .smesh, .off, .stl), the rest is the file. Every
+// malformed input must end in an io::FormatError, every invalid PLC in an InputError; anything
+// else (a crash, an InternalError, another exception) is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <string_view>
+
+#include "base/errors.hpp"
+#include "io/format_error.hpp"
+#include "io/plc_format.hpp"
+#include "tests/support/plc_from_file.hpp"
+#include "triangulation/recovery_3d/plc_3d.hpp"
+
+namespace {
+
+namespace tri = exactmesh::triangulation;
+
+[[noreturn]] void fail(const char* what) {
+    std::fprintf(stderr, "fuzz_plc_3d: %s\n", what);
+    std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size == 0) return 0;
+    const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
+    exactmesh::io::PlcFile file;
+    try {
+        switch (data[0] % 4) {
+            case 0:
+                // A .poly of 0 points names a .node file that does not exist: a FormatError.
+                file = exactmesh::io::parse_tetgen_poly_3d(text, "f.poly", "/nonexistent/f.node");
+                break;
+            case 1:
+                file = exactmesh::io::parse_smesh(text, "f.smesh", "/nonexistent/f.node");
+                break;
+            case 2:
+                file = exactmesh::io::parse_off(text, "f.off");
+                break;
+            default:
+                file = exactmesh::io::parse_stl(text, "f.stl");
+                break;
+        }
+    } catch (const exactmesh::io::FormatError&) {
+        return 0;
+    } catch (const std::exception& e) {
+        fail((std::string("a reader threw something else than FormatError: ") + e.what()).c_str());
+    }
+    // Keep the checks' inputs small: the fuzzer looks for crashes, not for slow inputs.
+    if (file.facets.size() > 256 || file.vertex_count() > 1024) return 0;
+    try {
+        const tri::Plc3 plc = exactmesh::testing::plc_from_file(std::move(file));
+        const tri::SurfaceTriangles3 surface = tri::validate_plc_3d(plc);
+        for (const tri::VertIdx v : surface.triangles) {
+            if (v >= plc.vertex_count()) fail("a surface triangle names a vertex out of range");
+        }
+        try {
+            tri::check_surface_closed_3d(plc, surface);
+        } catch (const exactmesh::InputError&) {
+        }
+    } catch (const exactmesh::InternalError& e) {
+        fail((std::string("internal error: ") + e.what()).c_str());
+    } catch (const exactmesh::InputError&) {
+        return 0;
+    } catch (const std::exception& e) {
+        fail((std::string("the checks threw something else than InputError: ") + e.what()).c_str());
+    }
+    return 0;
+}

@@ -1,0 +1,355 @@
+// SPDX-License-Identifier: MIT
+// Tests of triangulation/recovery_3d/plc_3d (PLC checks, facet triangulation) and of the 3D
+// sample domains: every error names its facet, edge or vertex; results are the same for the
+// coordinates scaled by 2^600 and 2^-600 (the checks use predicates only).
+#include "triangulation/recovery_3d/plc_3d.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <ostream>
+#include <string>
+
+#include "base/errors.hpp"
+#include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "io/plc_format.hpp"
+#include "predicates/orient3d.hpp"
+#include "tests/support/error_message.hpp"
+#include "tests/support/plc_from_file.hpp"
+#include "tests/support/test_scale.hpp"
+
+namespace exactmesh::triangulation {
+namespace {
+
+using testing::error_message;
+
+Plc3 cube() {
+    Plc3 plc;
+    for (int k = 0; k < 8; ++k) {
+        plc.xyz.insert(plc.xyz.end(), {double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)});
+    }
+    const std::vector<std::vector<VertIdx>> faces = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                                     {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+    for (const auto& face : faces) plc.facets.push_back({{face}, {}, 1});
+    return plc;
+}
+
+Plc3 scaled(Plc3 plc, int exponent) {
+    for (double& x : plc.xyz) x = std::ldexp(x, exponent);
+    for (double& x : plc.holes) x = std::ldexp(x, exponent);
+    for (Facet3& facet : plc.facets) {
+        for (double& x : facet.holes) x = std::ldexp(x, exponent);
+    }
+    return plc;
+}
+
+/// What validate_plc_3d and check_surface_closed_3d say: "" or the error message, and the
+/// surface triangles when valid.
+struct Outcome {
+    std::string validity;
+    std::string closedness;
+    std::vector<VertIdx> triangles;
+    bool operator==(const Outcome&) const = default;
+};
+
+void PrintTo(const Outcome& o, std::ostream* os) {
+    *os << "{validity '" << o.validity << "', closedness '" << o.closedness << "', "
+        << o.triangles.size() / 3 << " triangles}";
+}
+
+Outcome outcome(const Plc3& plc) {
+    Outcome result;
+    SurfaceTriangles3 surface;
+    result.validity = error_message<InputError>([&] { surface = validate_plc_3d(plc); });
+    if (result.validity.empty()) {
+        result.closedness =
+            error_message<InputError>([&] { check_surface_closed_3d(plc, surface); });
+        result.triangles = surface.triangles;
+    }
+    return result;
+}
+
+/// The outcome, checked to be the same for the PLC scaled by 2^600 and 2^-600.
+Outcome scale_invariant_outcome(const Plc3& plc) {
+    const Outcome plain = outcome(plc);
+    EXPECT_EQ(outcome(scaled(plc, 600)), plain);
+    EXPECT_EQ(outcome(scaled(plc, -600)), plain);
+    return plain;
+}
+
+TEST(Triangulation_Plc3, ClosedCubeIsValidAndClosed) {
+    const Plc3 plc = cube();
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_EQ(result.validity, "");
+    EXPECT_EQ(result.closedness, "");
+    EXPECT_EQ(result.triangles.size(), 3u * 12u);
+}
+
+TEST(Triangulation_Plc3, FacetTrianglesKeepTheFacetOrientation) {
+    const Plc3 plc = cube();
+    const SurfaceTriangles3 surface = validate_plc_3d(plc);
+    for (std::uint32_t t = 0; t < surface.triangle_count(); ++t) {
+        const auto& polygon = plc.facets[surface.facets[t]].polygons[0];
+        // Every triangle of a facet is on the same side as the facet's first three corners:
+        // the cube's faces are listed counter-clockwise from outside, so the cube's centre is
+        // on the positive orient3d side of each triangle.
+        const double centre[3] = {0.5, 0.5, 0.5};
+        const VertIdx* tv = &surface.triangles[3 * t];
+        EXPECT_EQ(
+            predicates::orient3d(plc.point(tv[0]), plc.point(tv[1]), plc.point(tv[2]), centre),
+            predicates::orient3d(plc.point(polygon[0]), plc.point(polygon[1]),
+                                 plc.point(polygon[2]), centre));
+    }
+}
+
+TEST(Triangulation_Plc3, InternalFacetMakesNonManifoldEdgesThatAreAllowed) {
+    // The cube cut by the diagonal plane x = y: the bottom and top facets carry the cut's edges
+    // as segments, so edges (0, 3) and (4, 7) lie in 3 facets' triangles.
+    Plc3 plc = cube();
+    plc.facets[4].polygons.push_back({0, 3});
+    plc.facets[5].polygons.push_back({4, 7});
+    plc.facets.push_back({{{0, 3, 7, 4}}, {}, 2});
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_EQ(result.validity, "");
+    EXPECT_EQ(result.closedness, "");
+    EXPECT_EQ(result.triangles.size(), 3u * 14u);
+}
+
+TEST(Triangulation_Plc3, OpenBoxIsValidButNotClosed) {
+    Plc3 plc = cube();
+    plc.facets.pop_back();  // the top z = 1
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_EQ(result.validity, "");
+    EXPECT_EQ(result.closedness,
+              "surface not closed: edge (4, 5) of facet 2 lies in only one surface triangle");
+    plc.first_index = 1;
+    EXPECT_EQ(outcome(plc).closedness,
+              "surface not closed: edge (5, 6) of facet 3 lies in only one surface triangle");
+}
+
+TEST(Triangulation_Plc3, CrossingSquaresSelfIntersect) {
+    Plc3 plc;
+    plc.xyz = {-1,   -1, 0,  1,   -1, 0,  1,   1, 0, -1,   1, 0,   // z = 0
+               -0.5, 0,  -1, 0.5, 0,  -1, 0.5, 0, 1, -0.5, 0, 1};  // y = 0
+    plc.facets = {{{{0, 1, 2, 3}}, {}, 0}, {{{4, 5, 6, 7}}, {}, 0}};
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_NE(result.validity.find("self-intersecting surface: facet 0 and facet 1 intersect"),
+              std::string::npos)
+        << result.validity;
+}
+
+TEST(Triangulation_Plc3, TouchingFacetsSharingAVertexOrEdgeAreFine) {
+    // Two triangles sharing a vertex, one lying in the other's plane beyond it, and a third
+    // sharing an edge at an angle: no intersection.
+    Plc3 plc;
+    plc.xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0, 0, 0, 1};
+    plc.facets = {{{{0, 1, 2}}, {}, 0}, {{{0, 3, 4}}, {}, 0}, {{{0, 1, 5}}, {}, 0}};
+    EXPECT_EQ(scale_invariant_outcome(plc).validity, "");
+    // Coplanar triangles sharing an edge and overlapping: the apex on the same side.
+    plc.xyz.insert(plc.xyz.end(), {0.5, 0.5, 0});
+    plc.facets.push_back({{{0, 1, 6}}, {}, 0});
+    EXPECT_NE(outcome(plc).validity.find("facet 0 and facet 3 intersect"), std::string::npos);
+}
+
+TEST(Triangulation_Plc3, SharedVertexWithPiercingEdgeIntersects) {
+    // Triangles sharing vertex 0 whose interiors cross along a segment from it.
+    Plc3 plc;
+    plc.xyz = {0, 0, 0, 2, -1, 0, 2, 1, 0, 2, 0, -1, 2, 0, 1};
+    plc.facets = {{{{0, 1, 2}}, {}, 0}, {{{0, 3, 4}}, {}, 0}};
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_EQ(result.validity,
+              "self-intersecting surface: facet 0 and facet 1 intersect (triangle (0, 1, 2) of "
+              "facet 0 and triangle (0, 3, 4) of facet 1)");
+}
+
+TEST(Triangulation_Plc3, NonPlanarFacetIsNamed) {
+    Plc3 plc = cube();
+    plc.xyz[3 * 4 + 0] = 0x1p-40;  // corner 4 of facet 0 ({0, 2, 6, 4}) off the plane x = 0
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_EQ(result.validity,
+              "facet 0 is not planar: vertex 4 is off the plane of vertices 0, 2, 6");
+}
+
+TEST(Triangulation_Plc3, FacetWithAHoleIsAnAnnulus) {
+    Plc3 plc;
+    plc.xyz = {0, 0, 0, 4, 0, 0, 4, 0, 4, 0, 0, 4, 1, 0, 1, 3, 0, 1, 3, 0, 3, 1, 0, 3};
+    plc.facets = {{{{0, 1, 2, 3}, {4, 5, 6, 7}}, {2, 5, 2}, 7}};  // hole point off the plane
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_EQ(result.validity, "");
+    EXPECT_EQ(result.triangles.size(), 3u * 8u);
+    EXPECT_NE(result.closedness.find("surface not closed"), std::string::npos);
+    // Without the hole point the inner square is triangulated too.
+    plc.facets[0].holes.clear();
+    EXPECT_EQ(outcome(plc).triangles.size(), 3u * 10u);
+    // A hole point on an edge is ambiguous.
+    plc.facets[0].holes = {2, 0, 1};
+    EXPECT_EQ(outcome(plc).validity,
+              "facet 0: hole point 1 lies on a polygon edge or corner of the facet");
+}
+
+TEST(Triangulation_Plc3, FacetWithSegmentAndPointKeepsEveryVertex) {
+    Plc3 plc;
+    plc.xyz = {0, 0, 0, 4, 0, 0, 4, 4, 0, 0, 4, 0, 1, 1, 0, 3, 2, 0, 2, 3, 0};
+    plc.facets = {{{{0, 1, 2, 3}, {4, 5}, {6}}, {}, 0}};
+    const SurfaceTriangles3 surface = validate_plc_3d(plc);
+    std::vector<VertIdx> used(surface.triangles);
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    EXPECT_EQ(used.size(), 7u);               // no Steiner point, every vertex used
+    EXPECT_EQ(surface.triangle_count(), 8u);  // 7 vertices, 4 on the hull: 2 * 7 - 4 - 2
+}
+
+TEST(Triangulation_Plc3, DanglingPointOutsideAFacetIsNamed) {
+    Plc3 plc;
+    plc.xyz = {0, 0, 0, 4, 0, 0, 4, 4, 0, 0, 4, 0, 5, 5, 0};
+    plc.facets = {{{{0, 1, 2, 3}, {4}}, {}, 0}};
+    EXPECT_EQ(
+        scale_invariant_outcome(plc).validity,
+        "facet 0: vertex 4 lies outside the facet's area (outside its polygons or in a hole)");
+}
+
+TEST(Triangulation_Plc3, CrossingPolygonsInAFacetNameBothEdges) {
+    Plc3 plc;
+    plc.xyz = {0, 0, 0, 2, 0, 0, 2, 2, 0, 0, 2, 0, 1, 1, 0, 1, -1, 0};
+    plc.facets = {{{{0, 1, 2, 3}, {4, 5}}, {}, 0}};
+    EXPECT_EQ(scale_invariant_outcome(plc).validity,
+              "facet 0: polygon edges (0, 1) and (4, 5) cross");
+}
+
+TEST(Triangulation_Plc3, DegenerateFacetsAreNamed) {
+    Plc3 plc;
+    plc.xyz = {0, 0, 0, 1, 1, 1, 2, 2, 2, 0, 1, 0};
+    plc.facets = {{{{0, 1, 2}}, {}, 0}};
+    EXPECT_EQ(scale_invariant_outcome(plc).validity,
+              "degenerate facet 0: its corners are collinear");
+    plc.facets = {{{{0, 1}, {3}}, {}, 0}};
+    EXPECT_EQ(outcome(plc).validity, "degenerate facet 0: no polygon with 3 or more corners");
+    plc.facets = {{{{0, 1, 1, 3}}, {}, 0}};
+    EXPECT_EQ(outcome(plc).validity,
+              "degenerate facet 0: polygon 1 repeats vertex 1 at consecutive corners");
+}
+
+TEST(Triangulation_Plc3, InputErrorsAreNamed) {
+    Plc3 plc = cube();
+    plc.first_index = 1;
+    plc.facets[2].polygons[0][1] = 8;
+    EXPECT_EQ(outcome(plc).validity,
+              "facet 3, polygon 1: vertex 9 out of range (the vertices are numbered 1 to 8)");
+    plc = cube();
+    plc.xyz.insert(plc.xyz.end(), {1, 1, 0});
+    EXPECT_EQ(outcome(plc).validity, "vertices 3 and 8 are the same point (1, 1, 0)");
+    plc = cube();
+    plc.xyz[5] = std::nan("");
+    EXPECT_EQ(error_message<NonFiniteCoordinate>([&] { validate_plc_3d(plc); }),
+              "vertex 1 has a non-finite coordinate (NaN)");
+    plc = cube();
+    plc.facets.clear();
+    EXPECT_EQ(outcome(plc).validity, "the PLC has no facets");
+}
+
+TEST(Triangulation_Plc3, SchonhardtPrismIsAValidClosedPlc) {
+    // The twisted triangular prism of [Schonhardt28], which has no tetrahedralization without
+    // Steiner points: a valid PLC all the same.
+    Plc3 plc;
+    const double pi = 3.14159265358979323846;
+    for (int layer = 0; layer < 2; ++layer) {
+        for (int k = 0; k < 3; ++k) {
+            const double angle = 2 * pi * k / 3 + (layer == 1 ? pi / 6 : 0.0);
+            plc.xyz.insert(plc.xyz.end(), {std::cos(angle), std::sin(angle), double(layer)});
+        }
+    }
+    plc.facets = {{{{0, 2, 1}}, {}, 1}, {{{3, 4, 5}}, {}, 1}};
+    for (VertIdx k = 0; k < 3; ++k) {
+        const VertIdx a = k, b = (k + 1) % 3;
+        plc.facets.push_back({{{a, b, VertIdx(b + 3)}}, {}, 2});
+        plc.facets.push_back({{{a, VertIdx(b + 3), VertIdx(a + 3)}}, {}, 2});
+    }
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_EQ(result.validity, "");
+    EXPECT_EQ(result.closedness, "");
+}
+
+TEST(Triangulation_Plc3, FilesReadByIoAreCheckedInTheirOwnNumbering) {
+    // A 1-based .poly cube whose bottom facet holds a segment and whose top facet has a square
+    // hole: not closed, named in the file's numbering.
+    const char* poly = R"(12 3 0 0
+1 0 0 0
+2 1 0 0
+3 0 1 0
+4 1 1 0
+5 0 0 1
+6 1 0 1
+7 0 1 1
+8 1 1 1
+9 0.25 0.25 1
+10 0.75 0.25 1
+11 0.75 0.75 1
+12 0.25 0.75 1
+6 1
+1 0 1
+4 1 3 7 5
+1 0 1
+4 2 6 8 4
+1 0 2
+4 1 5 6 2
+1 0 2
+4 3 4 8 7
+2 0 3
+4 1 2 4 3
+2 1 4
+2 1 4
+4 5 7 8 6
+4 9 10 11 12
+1 0.5 0.5 1
+0
+)";
+    const Plc3 plc = testing::plc_from_file(io::parse_tetgen_poly_3d(poly, "c.poly", "c.node"));
+    const Outcome result = scale_invariant_outcome(plc);
+    EXPECT_EQ(result.validity, "");
+    EXPECT_EQ(result.closedness,
+              "surface not closed: edge (9, 10) of facet 6 lies in only one surface triangle");
+    // A closed OFF tetrahedron, 0-based.
+    const Plc3 tetrahedron = testing::plc_from_file(io::parse_off(
+        "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", "t.off"));
+    EXPECT_EQ(scale_invariant_outcome(tetrahedron),
+              (Outcome{"", "", {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2}}));
+}
+
+TEST(Generators_SampleDomains3, EveryDomainIsValidAndClosed) {
+    for (const auto d : generators::kAllSampleDomains3) {
+        SCOPED_TRACE(std::string(generators::sample_domain_3d_name(d)));
+        const Plc3 plc =
+            generators::sample_domain_3d(d, d == generators::SampleDomain3::Wing ? 0.05 : 0.0);
+        const Outcome result = scale_invariant_outcome(plc);
+        EXPECT_EQ(result.validity, "");
+        EXPECT_EQ(result.closedness, "");
+        EXPECT_GT(result.triangles.size(), 0u);
+    }
+    EXPECT_EQ(generators::sample_domain_3d_from_name("wing"), generators::SampleDomain3::Wing);
+    EXPECT_THROW(generators::sample_domain_3d_from_name("sphere"), InputError);
+}
+
+TEST(Generators_SampleDomains3, WingAtTheDefaultSizeIsValidAndClosed) {
+    const Plc3 plc = generators::sample_domain_3d(generators::SampleDomain3::Wing);
+    const SurfaceTriangles3 surface = validate_plc_3d(plc);
+    EXPECT_NO_THROW(check_surface_closed_3d(plc, surface));
+}
+
+TEST(Triangulation_Plc3, LargeSurfaceIsCheckedByTheGrid) {
+    // About 10^5 triangles at scale 1: the grid keeps the pair tests near-linear.
+    const double size =
+        3.14159265358979323846 / 2 / std::max(8.0, 112.0 * std::sqrt(testing::test_scale()));
+    const Plc3 plc = generators::sample_domain_3d(generators::SampleDomain3::Ellipsoid, size);
+    const SurfaceTriangles3 surface = validate_plc_3d(plc);
+    EXPECT_NO_THROW(check_surface_closed_3d(plc, surface));
+    EXPECT_GE(surface.triangle_count(), 8u * 64u);
+    // One vertex pushed through the opposite side is caught.
+    Plc3 broken = plc;
+    broken.xyz[2] = -1.0;  // vertex 0, the pole (0, 0, 0.5), now below the other pole
+    EXPECT_NE(outcome(broken).validity.find("self-intersecting surface"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace exactmesh::triangulation

@@ -1,0 +1,640 @@
+// SPDX-License-Identifier: MIT
+// Piecewise linear complexes: input checks, facet triangulation in the facet's plane, and the
+// exact surface self-intersection and closedness checks (see plc_3d.hpp). The triangle-triangle
+// test is the classic reduction to segment-triangle tests [Guigue-Devillers03, "Fast and robust
+// triangle-triangle overlap test using orientation predicates"], here with every sign exact.
+#include "triangulation/recovery_3d/plc_3d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/orient3d.hpp"
+#include "triangulation/constrained/constrained_2d.hpp"
+
+namespace exactmesh::triangulation {
+
+namespace {
+
+using predicates::orient2d;
+using predicates::orient3d;
+using predicates::Sign;
+
+/// How the messages name things: in the file's numbering.
+struct Names {
+    const Plc3& plc;
+    std::string vertex(VertIdx v) const {
+        return std::to_string(std::uint64_t{v} + plc.first_index);
+    }
+    std::string facet(std::uint32_t f) const {
+        return "facet " + std::to_string(std::uint64_t{f} + plc.first_index);
+    }
+    std::string edge(VertIdx a, VertIdx b) const {
+        std::string text(1, '(');
+        text += vertex(a);
+        text += ", ";
+        text += vertex(b);
+        text += ')';
+        return text;
+    }
+    std::string triangle(const VertIdx* t) const {
+        std::string text(1, '(');
+        text += vertex(t[0]);
+        text += ", ";
+        text += vertex(t[1]);
+        text += ", ";
+        text += vertex(t[2]);
+        text += ')';
+        return text;
+    }
+};
+
+/// The coordinates kept when axis `drop` is dropped, in the cyclic order (drop+1, drop+2): the
+/// projected orient2d then has the sign of the normal's component along `drop`.
+std::array<double, 2> project(const double* p, int drop) {
+    return {p[(drop + 1) % 3], p[(drop + 2) % 3]};
+}
+
+Sign projected_orient(const double* a, const double* b, const double* c, int drop) {
+    const auto pa = project(a, drop), pb = project(b, drop), pc = project(c, drop);
+    return orient2d(pa.data(), pb.data(), pc.data());
+}
+
+bool collinear_3d(const double* a, const double* b, const double* c) {
+    for (int drop = 0; drop < 3; ++drop) {
+        if (projected_orient(a, b, c, drop) != Sign::Zero) return false;
+    }
+    return true;
+}
+
+/// The axis whose projection keeps triangle abc (not collinear) non-degenerate, preferring the
+/// largest normal component. The approximate normal is computed on coordinates scaled by a
+/// power of two (exact), so the choice is the same for the input scaled by 2^k; exactness does
+/// not depend on it (any axis with a non-zero exact component gives an injective projection).
+int drop_axis(const double* a, const double* b, const double* c) {
+    Sign exact[3];
+    for (int k = 0; k < 3; ++k) exact[k] = projected_orient(a, b, c, k);
+    double largest = 0;
+    for (const double* p : {a, b, c}) {
+        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(p[k]));
+    }
+    const double scale = largest > 0 ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
+    double d1[3], d2[3];
+    for (int k = 0; k < 3; ++k) {
+        d1[k] = b[k] * scale - a[k] * scale;
+        d2[k] = c[k] * scale - a[k] * scale;
+    }
+    const double normal[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
+                              d1[0] * d2[1] - d1[1] * d2[0]};
+    int best = -1;
+    for (int k = 0; k < 3; ++k) {
+        if (exact[k] == Sign::Zero) continue;
+        if (best < 0 || std::fabs(normal[k]) > std::fabs(normal[best])) best = k;
+    }
+    EM_ASSERT(best >= 0);
+    return best;
+}
+
+/// Lexicographic order of 2D points (monotone along any line: orders collinear points).
+bool less_2d(const std::array<double, 2>& p, const std::array<double, 2>& q) {
+    return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]);
+}
+
+/// Closed segments pq and rs of the plane (exact).
+bool segments_meet_2d(const std::array<double, 2>& p, const std::array<double, 2>& q,
+                      const std::array<double, 2>& r, const std::array<double, 2>& s) {
+    const Sign o1 = orient2d(p.data(), q.data(), r.data());
+    const Sign o2 = orient2d(p.data(), q.data(), s.data());
+    if (o1 == o2 && o1 != Sign::Zero) return false;
+    const Sign o3 = orient2d(r.data(), s.data(), p.data());
+    const Sign o4 = orient2d(r.data(), s.data(), q.data());
+    if (o3 == o4 && o3 != Sign::Zero) return false;
+    if (o1 == Sign::Zero && o2 == Sign::Zero) {
+        // Collinear: the lexicographic intervals overlap.
+        const auto& pq_lo = less_2d(q, p) ? q : p;
+        const auto& pq_hi = less_2d(q, p) ? p : q;
+        const auto& rs_lo = less_2d(s, r) ? s : r;
+        const auto& rs_hi = less_2d(s, r) ? r : s;
+        return !less_2d(pq_hi, rs_lo) && !less_2d(rs_hi, pq_lo);
+    }
+    return true;
+}
+
+/// Closed triangle abc (non-degenerate) contains p, in the plane.
+bool triangle_contains_2d(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                          const std::array<double, 2>& c, const std::array<double, 2>& p) {
+    const Sign s1 = orient2d(a.data(), b.data(), p.data());
+    const Sign s2 = orient2d(b.data(), c.data(), p.data());
+    const Sign s3 = orient2d(c.data(), a.data(), p.data());
+    const bool negative = s1 == Sign::Negative || s2 == Sign::Negative || s3 == Sign::Negative;
+    const bool positive = s1 == Sign::Positive || s2 == Sign::Positive || s3 == Sign::Positive;
+    return !(negative && positive);
+}
+
+/// Closed segment pq meets closed triangle abc (non-degenerate), in space (exact).
+bool segment_meets_triangle(const double* p, const double* q, const double* a, const double* b,
+                            const double* c) {
+    const Sign sp = orient3d(a, b, c, p);
+    const Sign sq = orient3d(a, b, c, q);
+    if (sp == sq && sp != Sign::Zero) return false;
+    if (sp == Sign::Zero && sq == Sign::Zero) {
+        const int drop = drop_axis(a, b, c);
+        const auto pa = project(a, drop), pb = project(b, drop), pc = project(c, drop);
+        const auto pp = project(p, drop), pq = project(q, drop);
+        return triangle_contains_2d(pa, pb, pc, pp) || triangle_contains_2d(pa, pb, pc, pq) ||
+               segments_meet_2d(pp, pq, pa, pb) || segments_meet_2d(pp, pq, pb, pc) ||
+               segments_meet_2d(pp, pq, pc, pa);
+    }
+    // The segment reaches the plane at one point: it lies in the triangle iff the line pq
+    // passes through it, i.e. the three volumes of pq with the edges do not disagree in sign.
+    const Sign s1 = orient3d(p, q, a, b);
+    const Sign s2 = orient3d(p, q, b, c);
+    const Sign s3 = orient3d(p, q, c, a);
+    const bool negative = s1 == Sign::Negative || s2 == Sign::Negative || s3 == Sign::Negative;
+    const bool positive = s1 == Sign::Positive || s2 == Sign::Positive || s3 == Sign::Positive;
+    return !(negative && positive);
+}
+
+/// Two non-degenerate triangles (vertex indices) meet other than in shared vertices or a shared
+/// edge. The intersection of two triangles is convex; if it is not just shared corners, one of
+/// its extreme points lies on an edge of one triangle inside the other, except for edges the
+/// triangles share, which are treated by cases.
+bool triangles_meet_improperly(const Plc3& plc, const VertIdx* ta, const VertIdx* tb) {
+    int shared = 0;
+    int a_shared[3] = {-1, -1, -1};  // a_shared[i]: the corner of tb equal to corner i of ta
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            if (ta[i] == tb[j]) {
+                a_shared[i] = j;
+                ++shared;
+            }
+        }
+    }
+    auto pt = [&](VertIdx v) { return plc.point(v); };
+    if (shared == 3) return true;  // the same triangle in two facets: they overlap
+    if (shared == 2) {
+        int apex_a = 0;
+        while (a_shared[apex_a] >= 0) ++apex_a;
+        int apex_b = 0;
+        while (tb[apex_b] == ta[(apex_a + 1) % 3] || tb[apex_b] == ta[(apex_a + 2) % 3]) ++apex_b;
+        const double* e0 = pt(ta[(apex_a + 1) % 3]);
+        const double* e1 = pt(ta[(apex_a + 2) % 3]);
+        const double* c = pt(ta[apex_a]);
+        const double* d = pt(tb[apex_b]);
+        if (orient3d(e0, e1, c, d) != Sign::Zero) return false;
+        // Coplanar: they overlap iff both apexes lie on the same side of the shared edge.
+        const int drop = drop_axis(e0, e1, c);
+        return projected_orient(e0, e1, c, drop) == projected_orient(e0, e1, d, drop);
+    }
+    if (shared == 1) {
+        int ia = 0;
+        while (a_shared[ia] < 0) ++ia;
+        const int ib = a_shared[ia];
+        // The intersection is a segment from the shared corner v, ending on the edge of one
+        // triangle opposite v; that edge then meets the other triangle.
+        return segment_meets_triangle(pt(ta[(ia + 1) % 3]), pt(ta[(ia + 2) % 3]), pt(tb[0]),
+                                      pt(tb[1]), pt(tb[2])) ||
+               segment_meets_triangle(pt(tb[(ib + 1) % 3]), pt(tb[(ib + 2) % 3]), pt(ta[0]),
+                                      pt(ta[1]), pt(ta[2]));
+    }
+    for (int k = 0; k < 3; ++k) {
+        if (segment_meets_triangle(pt(ta[k]), pt(ta[(k + 1) % 3]), pt(tb[0]), pt(tb[1]),
+                                   pt(tb[2])) ||
+            segment_meets_triangle(pt(tb[k]), pt(tb[(k + 1) % 3]), pt(ta[0]), pt(ta[1]),
+                                   pt(ta[2]))) {
+            return true;
+        }
+    }
+    return false;
+}
+
+[[noreturn]] void fail(const std::string& message) {
+    throw InputError(message);
+}
+
+/// The polygon edges of facet f (global vertex pairs): closed loops and segments.
+std::vector<std::array<VertIdx, 2>> facet_edges(const Facet3& facet) {
+    std::vector<std::array<VertIdx, 2>> edges;
+    for (const auto& polygon : facet.polygons) {
+        const std::size_t n = polygon.size();
+        if (n == 2) edges.push_back({polygon[0], polygon[1]});
+        if (n >= 3) {
+            for (std::size_t k = 0; k < n; ++k) edges.push_back({polygon[k], polygon[(k + 1) % n]});
+        }
+    }
+    return edges;
+}
+
+/// Names two polygon edges of facet f whose interiors cross (the 2D triangulation had to add a
+/// vertex); only called on that error path, so all pairs are tried.
+[[noreturn]] void fail_crossing(const Plc3& plc, std::uint32_t f, int drop) {
+    const Names names{plc};
+    const auto edges = facet_edges(plc.facets[f]);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        for (std::size_t j = i + 1; j < edges.size(); ++j) {
+            const auto p = project(plc.point(edges[i][0]), drop);
+            const auto q = project(plc.point(edges[i][1]), drop);
+            const auto r = project(plc.point(edges[j][0]), drop);
+            const auto s = project(plc.point(edges[j][1]), drop);
+            const Sign o1 = orient2d(p.data(), q.data(), r.data());
+            const Sign o2 = orient2d(p.data(), q.data(), s.data());
+            const Sign o3 = orient2d(r.data(), s.data(), p.data());
+            const Sign o4 = orient2d(r.data(), s.data(), q.data());
+            if (o1 != Sign::Zero && o2 == -o1 && o3 != Sign::Zero && o4 == -o3) {
+                fail(names.facet(f) + ": polygon edges " + names.edge(edges[i][0], edges[i][1]) +
+                     " and " + names.edge(edges[j][0], edges[j][1]) + " cross");
+            }
+        }
+    }
+    fail(names.facet(f) + ": its polygons cross (the planar triangulation needs new vertices)");
+}
+
+/// Triangulates facet f into `out` (see triangulate_facets_3d).
+void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out) {
+    const Names names{plc};
+    const Facet3& facet = plc.facets[f];
+    bool has_area_polygon = false;
+    for (std::size_t p = 0; p < facet.polygons.size(); ++p) {
+        const auto& polygon = facet.polygons[p];
+        const std::size_t n = polygon.size();
+        if (n == 0) {
+            fail(names.facet(f) + ": polygon " + std::to_string(p + 1) + " has no corners");
+        }
+        if (n >= 3) has_area_polygon = true;
+        for (std::size_t k = 0; k + 1 < n || (n >= 3 && k < n); ++k) {
+            if (polygon[k] == polygon[(k + 1) % n]) {
+                fail("degenerate " + names.facet(f) + ": polygon " + std::to_string(p + 1) +
+                     " repeats vertex " + names.vertex(polygon[k]) + " at consecutive corners");
+            }
+        }
+    }
+    if (!has_area_polygon) {
+        fail("degenerate " + names.facet(f) + ": no polygon with 3 or more corners");
+    }
+    // The reference corners: the first three non-collinear ones in the order listed.
+    VertIdx ref[3] = {kNone, kNone, kNone};
+    for (const auto& polygon : facet.polygons) {
+        for (const VertIdx v : polygon) {
+            if (ref[0] == kNone) {
+                ref[0] = v;
+            } else if (ref[1] == kNone) {
+                if (v != ref[0]) ref[1] = v;
+            } else if (ref[2] == kNone) {
+                if (!collinear_3d(plc.point(ref[0]), plc.point(ref[1]), plc.point(v))) ref[2] = v;
+            }
+        }
+    }
+    if (ref[2] == kNone) fail("degenerate " + names.facet(f) + ": its corners are collinear");
+    const double* a = plc.point(ref[0]);
+    const double* b = plc.point(ref[1]);
+    const double* c = plc.point(ref[2]);
+    for (const auto& polygon : facet.polygons) {
+        for (const VertIdx v : polygon) {
+            if (orient3d(a, b, c, plc.point(v)) != Sign::Zero) {
+                fail(names.facet(f) + " is not planar: vertex " + names.vertex(v) +
+                     " is off the plane of vertices " + names.vertex(ref[0]) + ", " +
+                     names.vertex(ref[1]) + ", " + names.vertex(ref[2]));
+            }
+        }
+    }
+    if (facet.polygons.size() == 1 && facet.polygons[0].size() == 3 && facet.holes.empty()) {
+        // A triangle (STL, OFF, most .smesh facets) is its own triangulation; it is the
+        // reference triangle, so its orientation is the facet's.
+        out.triangles.insert(out.triangles.end(), facet.polygons[0].begin(),
+                             facet.polygons[0].end());
+        out.facets.push_back(f);
+        return;
+    }
+    const int drop = drop_axis(a, b, c);
+    const bool flip = projected_orient(a, b, c, drop) == Sign::Negative;
+
+    std::vector<VertIdx> corners;
+    for (const auto& polygon : facet.polygons)
+        corners.insert(corners.end(), polygon.begin(), polygon.end());
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    auto local = [&](VertIdx v) {
+        return static_cast<VertIdx>(std::lower_bound(corners.begin(), corners.end(), v) -
+                                    corners.begin());
+    };
+    std::vector<double> xy;
+    xy.reserve(2 * corners.size());
+    for (const VertIdx v : corners) {
+        const auto p = project(plc.point(v), drop);
+        xy.push_back(p[0]);
+        xy.push_back(p[1]);
+    }
+    std::vector<VertIdx> segments;
+    for (const auto& edge : facet_edges(facet)) {
+        segments.push_back(local(edge[0]));
+        segments.push_back(local(edge[1]));
+    }
+    std::vector<double> holes;
+    for (std::size_t h = 0; h + 2 < facet.holes.size(); h += 3) {
+        const auto p = project(&facet.holes[h], drop);
+        holes.push_back(p[0]);
+        holes.push_back(p[1]);
+    }
+    Pslg pslg;
+    pslg.xy = xy;
+    pslg.segments = segments;
+    pslg.holes = holes;
+    Cdt2Result cdt;
+    try {
+        cdt = constrained_delaunay_2d(pslg);
+    } catch (const AmbiguousMarkPoint& error) {
+        fail(names.facet(f) + ": hole point " + std::to_string(error.index() + 1) +
+             " lies on a polygon edge or corner of the facet");
+    }
+    if (cdt.mesh.vertex_count() > corners.size() || cdt.counters.intersections > 0) {
+        fail_crossing(plc, f, drop);
+    }
+    const std::uint32_t count = cdt.mesh.triangle_count();
+    if (count == 0) {
+        fail("degenerate " + names.facet(f) + ": no area is left inside its polygons and holes");
+    }
+    // Every corner must be part of the facet's surface: a point or segment outside the
+    // polygons (or inside a hole) would be a dangling piece no tetrahedralization could keep.
+    std::vector<bool> used(corners.size(), false);
+    for (const VertIdx v : cdt.mesh.triangles) used[v] = true;
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+        if (!used[k]) {
+            fail(names.facet(f) + ": vertex " + names.vertex(corners[k]) +
+                 " lies outside the facet's area (outside its polygons or in a hole)");
+        }
+    }
+    for (std::uint32_t t = 0; t < count; ++t) {
+        const VertIdx* tv = &cdt.mesh.triangles[3 * std::size_t{t}];
+        const VertIdx v0 = corners[tv[0]], v1 = corners[tv[1]], v2 = corners[tv[2]];
+        out.triangles.push_back(v0);
+        out.triangles.push_back(flip ? v2 : v1);
+        out.triangles.push_back(flip ? v1 : v2);
+        out.facets.push_back(f);
+    }
+}
+
+void check_finite_points(std::span<const double> values, const std::string& what) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) {
+            fail(what + " " + std::to_string(i / 3 + 1) + " has a non-finite coordinate (" +
+                 format_number(values[i]) + ")");
+        }
+    }
+}
+
+}  // namespace
+
+void validate_plc_3d_input(const Plc3& plc) {
+    const Names names{plc};
+    if (plc.xyz.size() % 3 != 0) fail("PLC coordinates are not a multiple of 3 values");
+    if (plc.holes.size() % 3 != 0) fail("PLC hole coordinates are not a multiple of 3 values");
+    if (plc.vertex_count() > kMaxPoints) {
+        fail("too many vertices: " + std::to_string(plc.vertex_count()) + " (at most " +
+             std::to_string(kMaxPoints) + ")");
+    }
+    const std::uint32_t n = plc.vertex_count();
+    for (std::size_t i = 0; i < plc.xyz.size(); ++i) {
+        if (!std::isfinite(plc.xyz[i])) {
+            const auto v = static_cast<VertIdx>(i / 3);
+            throw NonFiniteCoordinate("vertex " + names.vertex(v) +
+                                          " has a non-finite coordinate (" +
+                                          format_number(plc.xyz[i]) + ")",
+                                      v);
+        }
+    }
+    if (plc.facets.empty()) fail("the PLC has no facets");
+    for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
+        const Facet3& facet = plc.facets[f];
+        if (facet.polygons.empty()) fail(names.facet(f) + " has no polygons");
+        if (facet.holes.size() % 3 != 0) {
+            fail(names.facet(f) + ": hole coordinates are not a multiple of 3 values");
+        }
+        for (std::size_t p = 0; p < facet.polygons.size(); ++p) {
+            for (const VertIdx v : facet.polygons[p]) {
+                if (v >= n) {
+                    fail(names.facet(f) + ", polygon " + std::to_string(p + 1) + ": vertex " +
+                         names.vertex(v) + " out of range (" +
+                         (n == 0 ? std::string("there are no vertices")
+                                 : "the vertices are numbered " + names.vertex(0) + " to " +
+                                       names.vertex(n - 1)) +
+                         ")");
+                }
+            }
+        }
+        check_finite_points(facet.holes, names.facet(f) + ": hole point");
+    }
+    check_finite_points(plc.holes, "volume hole point");
+    for (std::size_t r = 0; r < plc.regions.size(); ++r) {
+        const Region3& region = plc.regions[r];
+        for (const double value :
+             {region.x, region.y, region.z, region.attribute, region.max_volume}) {
+            if (!std::isfinite(value)) {
+                fail("region " + std::to_string(r + 1) + " has a non-finite value (" +
+                     format_number(value) + ")");
+            }
+        }
+    }
+    // Duplicate points, exactly: lexicographic sort, then equal neighbours.
+    std::vector<VertIdx> order(n);
+    for (VertIdx v = 0; v < n; ++v) order[v] = v;
+    auto less = [&](VertIdx u, VertIdx v) {
+        const double* p = plc.point(u);
+        const double* q = plc.point(v);
+        if (p[0] != q[0]) return p[0] < q[0];
+        if (p[1] != q[1]) return p[1] < q[1];
+        if (p[2] != q[2]) return p[2] < q[2];
+        return u < v;
+    };
+    std::sort(order.begin(), order.end(), less);
+    for (std::size_t i = 1; i < order.size(); ++i) {
+        const double* p = plc.point(order[i - 1]);
+        const double* q = plc.point(order[i]);
+        if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) {
+            fail("vertices " + names.vertex(order[i - 1]) + " and " + names.vertex(order[i]) +
+                 " are the same point " + format_point(p, 3));
+        }
+    }
+}
+
+SurfaceTriangles3 triangulate_facets_3d(const Plc3& plc) {
+    SurfaceTriangles3 surface;
+    for (std::uint32_t f = 0; f < plc.facets.size(); ++f) triangulate_facet(plc, f, surface);
+    return surface;
+}
+
+void check_surface_self_intersection_3d(const Plc3& plc, const SurfaceTriangles3& surface) {
+    const std::uint32_t count = surface.triangle_count();
+    if (count < 2) return;
+    // Bounding boxes, and the coordinates scaled by a power of two so that the grid arithmetic
+    // neither overflows nor depends on the magnitude (the grid only selects pairs; every
+    // decision is exact).
+    std::vector<std::array<double, 6>> boxes(count);
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = std::numeric_limits<double>::infinity();
+        hi[k] = -lo[k];
+    }
+    for (std::uint32_t t = 0; t < count; ++t) {
+        auto& box = boxes[t];
+        for (int k = 0; k < 3; ++k) {
+            box[k] = std::numeric_limits<double>::infinity();
+            box[3 + k] = -box[k];
+        }
+        for (int c = 0; c < 3; ++c) {
+            const double* p = plc.point(surface.triangles[3 * std::size_t{t} + c]);
+            for (int k = 0; k < 3; ++k) {
+                box[k] = std::min(box[k], p[k]);
+                box[3 + k] = std::max(box[3 + k], p[k]);
+            }
+        }
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], box[k]);
+            hi[k] = std::max(hi[k], box[3 + k]);
+        }
+    }
+    double largest = 0;
+    for (int k = 0; k < 3; ++k) largest = std::max({largest, std::fabs(lo[k]), std::fabs(hi[k])});
+    const double scale = largest > 0 ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
+    double range[3];
+    double extent_sum = 0;
+    for (int k = 0; k < 3; ++k) range[k] = hi[k] * scale - lo[k] * scale;
+    for (const auto& box : boxes) {
+        extent_sum += std::max({box[3] * scale - box[0] * scale, box[4] * scale - box[1] * scale,
+                                box[5] * scale - box[2] * scale});
+    }
+    // Cells about twice the mean triangle extent, at most a few per triangle overall; coarser
+    // when the triangles would fill too many cells (a few huge triangles).
+    double cell =
+        std::max(2.0 * extent_sum / count, std::max({range[0], range[1], range[2]}) * 0x1p-20);
+    if (!(cell > 0)) cell = 1;
+    std::vector<std::array<std::uint32_t, 6>> cells(count);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+    std::uint64_t resolution[3];
+    for (;;) {
+        std::uint64_t total = 1;
+        for (int k = 0; k < 3; ++k) {
+            resolution[k] = static_cast<std::uint64_t>(std::min(std::ceil(range[k] / cell), 1e6));
+            resolution[k] = std::max<std::uint64_t>(resolution[k], 1);
+            total *= resolution[k];
+        }
+        if (total > 8 * std::uint64_t{count} + 64) {
+            cell *= 2;
+            continue;
+        }
+        // Monotone in the coordinate, so boxes that overlap get cell ranges that overlap.
+        auto cell_of = [&](double x, int k) {
+            const double g = std::floor((x * scale - lo[k] * scale) / cell);
+            const double clamped = std::clamp(g, 0.0, static_cast<double>(resolution[k] - 1));
+            return static_cast<std::uint32_t>(clamped);
+        };
+        std::uint64_t entry_count = 0;
+        for (std::uint32_t t = 0; t < count; ++t) {
+            std::uint64_t covered = 1;
+            for (int k = 0; k < 3; ++k) {
+                cells[t][k] = cell_of(boxes[t][k], k);
+                cells[t][3 + k] = cell_of(boxes[t][3 + k], k);
+                covered *= cells[t][3 + k] - cells[t][k] + 1;
+            }
+            entry_count += covered;
+        }
+        if (entry_count > 32 * std::uint64_t{count} + 4096 && total > 1) {
+            cell *= 2;
+            continue;
+        }
+        entries.clear();
+        entries.reserve(entry_count);
+        for (std::uint32_t t = 0; t < count; ++t) {
+            const auto& c = cells[t];
+            for (std::uint64_t x = c[0]; x <= c[3]; ++x) {
+                for (std::uint64_t y = c[1]; y <= c[4]; ++y) {
+                    for (std::uint64_t z = c[2]; z <= c[5]; ++z) {
+                        entries.emplace_back((x * resolution[1] + y) * resolution[2] + z, t);
+                    }
+                }
+            }
+        }
+        break;
+    }
+    std::sort(entries.begin(), entries.end());
+    const Names names{plc};
+    for (std::size_t begin = 0; begin < entries.size();) {
+        std::size_t end = begin;
+        while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
+        const std::uint64_t key = entries[begin].first;
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::uint32_t ta = entries[i].second;
+            for (std::size_t j = i + 1; j < end; ++j) {
+                const std::uint32_t tb = entries[j].second;
+                if (surface.facets[ta] == surface.facets[tb]) continue;
+                bool overlap = true;
+                for (int k = 0; k < 3 && overlap; ++k) {
+                    overlap = boxes[ta][k] <= boxes[tb][3 + k] && boxes[tb][k] <= boxes[ta][3 + k];
+                }
+                if (!overlap) continue;
+                // Test each pair once: in the cell holding the corner of the boxes' overlap.
+                const std::uint64_t x = std::max(cells[ta][0], cells[tb][0]);
+                const std::uint64_t y = std::max(cells[ta][1], cells[tb][1]);
+                const std::uint64_t z = std::max(cells[ta][2], cells[tb][2]);
+                if ((x * resolution[1] + y) * resolution[2] + z != key) continue;
+                const VertIdx* va = &surface.triangles[3 * std::size_t{ta}];
+                const VertIdx* vb = &surface.triangles[3 * std::size_t{tb}];
+                if (triangles_meet_improperly(plc, va, vb)) {
+                    std::uint32_t fa = surface.facets[ta], fb = surface.facets[tb];
+                    if (fa > fb) {
+                        std::swap(fa, fb);
+                        std::swap(va, vb);
+                    }
+                    fail("self-intersecting surface: " + names.facet(fa) + " and " +
+                         names.facet(fb) + " intersect (triangle " + names.triangle(va) + " of " +
+                         names.facet(fa) + " and triangle " + names.triangle(vb) + " of " +
+                         names.facet(fb) + ")");
+                }
+            }
+        }
+        begin = end;
+    }
+}
+
+void check_surface_closed_3d(const Plc3& plc, const SurfaceTriangles3& surface) {
+    struct EdgeUse {
+        VertIdx lo, hi;
+        std::uint32_t facet;
+    };
+    std::vector<EdgeUse> edges;
+    edges.reserve(surface.triangles.size());
+    for (std::uint32_t t = 0; t < surface.triangle_count(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const VertIdx a = surface.triangles[3 * std::size_t{t} + k];
+            const VertIdx b = surface.triangles[3 * std::size_t{t} + (k + 1) % 3];
+            edges.push_back({std::min(a, b), std::max(a, b), surface.facets[t]});
+        }
+    }
+    std::sort(edges.begin(), edges.end(), [](const EdgeUse& p, const EdgeUse& q) {
+        return p.lo != q.lo ? p.lo < q.lo : p.hi < q.hi;
+    });
+    const Names names{plc};
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i + 1;
+        while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
+        if (j - i == 1) {
+            fail("surface not closed: edge " + names.edge(edges[i].lo, edges[i].hi) + " of " +
+                 names.facet(edges[i].facet) + " lies in only one surface triangle");
+        }
+        i = j;
+    }
+}
+
+SurfaceTriangles3 validate_plc_3d(const Plc3& plc) {
+    validate_plc_3d_input(plc);
+    SurfaceTriangles3 surface = triangulate_facets_3d(plc);
+    check_surface_self_intersection_3d(plc, surface);
+    return surface;
+}
+
+}  // namespace exactmesh::triangulation
