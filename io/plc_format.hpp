@@ -5,16 +5,19 @@
 // FormatError "file:line: problem" naming the offending value ("file: problem" for binary STL,
 // which has no lines); '#' comments, blank lines and CRLF are fine in the text formats.
 //
-// The result is plain data (io/ depends on base/ only). cli/plc_input.hpp turns it into a
-// triangulation::Plc3: only the command (and the Python module) may see both io/ and
-// triangulation/, and the conversion is a field-by-field copy.
+// The result keeps what messages need (lines, markers announced); plc_from_file turns it into
+// the triangulation layer's plain Plc3 (triangulation/mesh/plc_3d.hpp, which io/ may include
+// like mesh2.hpp and mesh3.hpp).
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
+
+#include "triangulation/mesh/plc_3d.hpp"
 
 namespace exactmesh::io {
 
@@ -76,5 +79,27 @@ PlcFile parse_stl(std::string_view bytes, const std::string& file_name);
 /// Dispatches on the extension (.poly, .smesh, .off, .stl, in any letter case).
 /// @throws FormatError naming the file for another extension.
 PlcFile read_plc(const std::filesystem::path& path);
+
+/// The PLC of `file`, numbered as the file numbers its vertices (messages of validate_plc_3d
+/// then name the file's vertex and facet numbers).
+inline triangulation::Plc3 plc_from_file(PlcFile file) {
+    triangulation::Plc3 plc;
+    plc.xyz = std::move(file.xyz);
+    plc.first_index = file.first_index;
+    plc.facets.reserve(file.facets.size());
+    for (PlcFacetRecord& record : file.facets) {
+        triangulation::Facet3 facet;
+        facet.polygons = std::move(record.polygons);
+        facet.holes = std::move(record.holes);
+        facet.marker = record.marker;
+        plc.facets.push_back(std::move(facet));
+    }
+    plc.holes = std::move(file.holes);
+    for (std::size_t r = 0; r + 4 < file.regions.size(); r += 5) {
+        plc.regions.push_back({file.regions[r], file.regions[r + 1], file.regions[r + 2],
+                               file.regions[r + 3], file.regions[r + 4]});
+    }
+    return plc;
+}
 
 }  // namespace exactmesh::io

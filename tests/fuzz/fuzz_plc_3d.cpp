@@ -14,7 +14,6 @@
 #include "base/errors.hpp"
 #include "io/format_error.hpp"
 #include "io/plc_format.hpp"
-#include "tests/support/plc_from_file.hpp"
 #include "triangulation/recovery_3d/plc_3d.hpp"
 
 namespace {
@@ -56,7 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Keep the checks' inputs small: the fuzzer looks for crashes, not for slow inputs.
     if (file.facets.size() > 256 || file.vertex_count() > 1024) return 0;
     try {
-        const tri::Plc3 plc = exactmesh::testing::plc_from_file(std::move(file));
+        const tri::Plc3 plc = exactmesh::io::plc_from_file(std::move(file));
         const tri::SurfaceTriangles3 surface = tri::validate_plc_3d(plc);
         for (const tri::VertIdx v : surface.triangles) {
             if (v >= plc.vertex_count()) fail("a surface triangle names a vertex out of range");

@@ -17,7 +17,6 @@
 #include "io/plc_format.hpp"
 #include "predicates/orient3d.hpp"
 #include "tests/support/error_message.hpp"
-#include "tests/support/plc_from_file.hpp"
 #include "tests/support/test_scale.hpp"
 
 namespace exactmesh::triangulation {
@@ -305,13 +304,13 @@ TEST(Triangulation_Plc3, FilesReadByIoAreCheckedInTheirOwnNumbering) {
 1 0.5 0.5 1
 0
 )";
-    const Plc3 plc = testing::plc_from_file(io::parse_tetgen_poly_3d(poly, "c.poly", "c.node"));
+    const Plc3 plc = io::plc_from_file(io::parse_tetgen_poly_3d(poly, "c.poly", "c.node"));
     const Outcome result = scale_invariant_outcome(plc);
     EXPECT_EQ(result.validity, "");
     EXPECT_EQ(result.closedness,
               "surface not closed: edge (9, 10) of facet 6 lies in only one surface triangle");
     // A closed OFF tetrahedron, 0-based.
-    const Plc3 tetrahedron = testing::plc_from_file(io::parse_off(
+    const Plc3 tetrahedron = io::plc_from_file(io::parse_off(
         "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", "t.off"));
     EXPECT_EQ(scale_invariant_outcome(tetrahedron),
               (Outcome{"", "", {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2}}));

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// Plc3: a piecewise linear complex, the input of 3D mesh generation [Si15 §1.2.1; the TetGen
+// 1.5 manual §5.1.1], as plain data. A mesh type like mesh3.hpp, so that io/'s readers
+// (io/plc_format) return it and triangulation/recovery_3d checks and triangulates it.
+//
+// Conventions:
+//  - Indices are 0-based in memory. Plc3::first_index (0 or 1) is the numbering of the file the
+//    PLC came from; every message names vertices and facets in that numbering (facets are
+//    numbered in order from first_index, as TetGen's .face markers count them).
+//  - A facet is TetGen's: one or more polygons in one plane. A polygon of n >= 3 corners is a
+//    closed loop (corner n-1 joins corner 0); of 2 corners a segment inside the facet; of 1 an
+//    isolated point. Facet hole points (3 each) mark the polygons' holes.
+//  - Region3::max_volume <= 0 means "no volume bound"; volume hole points are 3 per hole.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "triangulation/mesh/mesh2.hpp"
+
+namespace exactmesh::triangulation {
+
+/// One facet: polygons (corner lists), hole points in the facet, a boundary marker.
+struct Facet3 {
+    std::vector<std::vector<VertIdx>> polygons;  ///< each: n >= 1 corner indices into Plc3::xyz
+    std::vector<double> holes;                   ///< 3·#H points inside the facet's holes
+    int marker = 0;                              ///< boundary marker (TetGen's facet marker)
+};
+
+/// A region point with its attribute and volume bound (TetGen's region list).
+struct Region3 {
+    double x = 0, y = 0, z = 0;
+    double attribute = 0;
+    double max_volume = -1;  ///< <= 0: no bound
+};
+
+/// A piecewise linear complex.
+struct Plc3 {
+    std::vector<double> xyz;        ///< 3·#V coordinates
+    std::vector<Facet3> facets;     ///< #F facets
+    std::vector<double> holes;      ///< 3·#H points inside volume holes
+    std::vector<Region3> regions;   ///< #R region points
+    std::uint32_t first_index = 0;  ///< numbering of vertices and facets in messages: 0 or 1
+
+    std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xyz.size() / 3); }
+    const double* point(VertIdx v) const { return xyz.data() + 3 * static_cast<std::size_t>(v); }
+};
+
+}  // namespace exactmesh::triangulation
