@@ -589,11 +589,13 @@ MetricDelaunayResult2 metric_delaunay_2d(const MeshDomain2& domain,
                 "the metric's size along a boundary piece");
         });
     const std::uint64_t boundary_points = boundary.xy.size() / 2 - boundary.cdt.mesh.xy.size() / 2;
-    // The means' memo: a round of edits takes about 30 means per triangle of the estimate, each
-    // edge measured at two scales and each quadrilateral in two orders; a direct-mapped table
-    // keeps such a working set when it has a few times more slots (on circle100, 16 slots per
-    // estimated triangle missed 1.5 times as often as 64). At most 2^20 slots (59 MB).
-    const auto memo_slots = static_cast<std::size_t>(std::min(64 * estimate, 0x1p20));
+    // The means' memo: a small direct-mapped table (2^10 slots, 56 kB) that stays in the
+    // first-level caches. Callgrind counted 32% fewer instructions with 64 slots per estimated
+    // triangle, but wall time is bound by memory there: stretched_bench (2026-12-03, medians of
+    // 3, one quiet run) gave circle100 / naca0012 layer1000 / three-element layer1000 45 / 153 /
+    // 240 ms with 16 slots per triangle (at most 2^16), 47 / 143 / 213 with 8 (2^15), 48 / 137 /
+    // 195 with 4 (2^13), and 50 / 132 / 184 with 2^10, against 55 / 136 / 184 before the memo.
+    const std::size_t memo_slots = std::size_t{1} << 10;
     MetricMesher mesher(domain.pslg(), options, std::move(boundary), cdt, memo_slots);
     MetricDelaunayResult2 result = mesher.run(budget);
     result.counters.boundary_points = boundary_points;
