@@ -16,6 +16,8 @@
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
+#include "generators/inputs/inputs.hpp"
+#include "generators/inputs/inputs_3d.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/sizing/size_function.hpp"
@@ -232,10 +234,46 @@ void bind_generators(py::module_& m) {
                             "holes"_a = to_numpy(std::move(pslg.holes), 2));
         },
         "name"_a);
+    m.def(
+        "points_2d",
+        [](const std::string& distribution, std::uint32_t n, std::uint64_t seed) {
+            const gen::Distribution d = gen::distribution_from_name(distribution);
+            std::vector<double> xy;
+            {
+                py::gil_scoped_release release;
+                xy = gen::generate_points_2d(d, n, seed);
+            }
+            return to_numpy(std::move(xy), 2);
+        },
+        "distribution"_a, "n"_a, "seed"_a = 1,
+        "n points of a test distribution (the benchmarks' and fuzzers' generators), shape (n, 2): "
+        "uniform, gaussian, grid, cocircular (exactly cocircular lattice points), near-collinear "
+        "(a few ulps off a line), duplicates, huge (1e290), tiny (1e-290, subnormals), parabola.");
+    m.def(
+        "points_3d",
+        [](const std::string& distribution, std::uint32_t n, std::uint64_t seed) {
+            const gen::Distribution3 d = gen::distribution3_from_name(distribution);
+            std::vector<double> xyz;
+            {
+                py::gil_scoped_release release;
+                xyz = gen::generate_points_3d(d, n, seed);
+            }
+            return to_numpy(std::move(xyz), 3);
+        },
+        "distribution"_a, "n"_a, "seed"_a = 1,
+        "n points of a 3D test distribution, shape (n, 3) (names as `exactmesh tetrahedralize` "
+        "benchmarks use them).");
     std::vector<std::string> generators, domains;
     for (const gen::MeshGenerator2& g : gen::mesh_generators_2d()) generators.emplace_back(g.name);
     for (const gen::SampleDomain d : gen::kAllSampleDomains)
         domains.emplace_back(gen::sample_domain_name(d));
+    std::vector<std::string> distributions_2d, distributions_3d;
+    for (const gen::Distribution d : gen::kAllDistributions)
+        distributions_2d.emplace_back(gen::distribution_name(d));
+    for (const gen::Distribution3 d : gen::kAllDistributions3)
+        distributions_3d.emplace_back(gen::distribution_name(d));
+    m.attr("distributions_2d") = distributions_2d;
+    m.attr("distributions_3d") = distributions_3d;
     m.attr("generators") = generators;
     m.attr("domains") = domains;
 }

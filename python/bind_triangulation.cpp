@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,14 +37,18 @@ py::dict triangulate(const CoordinateArray& points, const std::string& algorithm
     const tri::Delaunay2Options options{tri::insertion_order_from_name(order), seed,
                                         tri::PointLocation::Auto};
     tri::Delaunay2Result result;
+    double seconds = 0;
     {
         py::gil_scoped_release release;
+        const auto start = std::chrono::steady_clock::now();
         result = build(xy, options);
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     return py::dict("triangles"_a = indices_to_numpy(std::move(result.triangles), 3),
                     "neighbors"_a = indices_to_numpy(std::move(result.neighbors), 3),
                     "merged_into"_a = indices_to_numpy(std::move(result.merged_into), 1),
-                    "counters"_a = counters_dict(tri::kDelaunay2CounterNames, result.counters));
+                    "counters"_a = counters_dict(tri::kDelaunay2CounterNames, result.counters),
+                    "construct_seconds"_a = seconds);
 }
 
 py::dict tetrahedralize(const CoordinateArray& points, const std::string& algorithm,
@@ -52,15 +57,19 @@ py::dict tetrahedralize(const CoordinateArray& points, const std::string& algori
     const tri::Delaunay3Function build = tri::delaunay_3d_algorithm(algorithm);
     const tri::Delaunay3Options options{tri::insertion_order_from_name(order), seed};
     tri::Delaunay3Result result;
+    double seconds = 0;
     {
         py::gil_scoped_release release;
+        const auto start = std::chrono::steady_clock::now();
         result = build(xyz, options);
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     return py::dict("tetrahedra"_a = indices_to_numpy(std::move(result.mesh.tets), 4),
                     "neighbors"_a = indices_to_numpy(std::move(result.mesh.neighbors), 4),
                     "merged_into"_a = indices_to_numpy(std::move(result.merged_into), 1),
                     "coplanar"_a = result.coplanar,
-                    "counters"_a = counters_dict(tri::kDelaunay3CounterNames, result.counters));
+                    "counters"_a = counters_dict(tri::kDelaunay3CounterNames, result.counters),
+                    "construct_seconds"_a = seconds);
 }
 
 /// The dict of a constrained result (cdt(), and mesh() through constrained_result_dict).

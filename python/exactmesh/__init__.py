@@ -22,12 +22,16 @@ from ._exactmesh import (  # noqa: F401  (re-exported)
     InputError,
     InternalError,
     __version__,
+    distributions_2d,
+    distributions_3d,
     domains,
     generators,
     in_ellipse,
     incircle,
     insphere,
     orient2d,
+    points_2d,
+    points_3d,
     orient3d,
 )
 from ._meshio import from_meshio as _from_meshio
@@ -37,9 +41,10 @@ from ._sizes import size_arguments as _size_arguments
 __all__ = [
     "CheckResult", "Error", "GeometryError", "InputError", "InternalError", "Mesh",
     "Tetrahedralization", "Triangulation", "cdt", "check_delaunay", "check_mesh",
-    "check_tetrahedralization", "check_triangulation", "domain", "domains", "from_meshio",
+    "check_tetrahedralization", "check_triangulation", "distributions_2d", "distributions_3d",
+    "domain", "domains", "from_meshio",
     "generators", "in_ellipse", "incircle", "insphere", "mesh", "orient2d", "orient3d",
-    "quality", "tetrahedralize", "triangulate",
+    "points_2d", "points_3d", "quality", "tetrahedralize", "triangulate",
 ]
 
 _EMPTY2 = np.zeros((0, 2))
@@ -90,6 +95,7 @@ class Triangulation:
     neighbors: np.ndarray
     merged_into: np.ndarray
     counters: dict = field(default_factory=dict)
+    construct_seconds: float = 0.0  #: the C++ construction alone (GIL released)
 
     def to_meshio(self):
         return _to_meshio(self.points, [("triangle", self.triangles)])
@@ -107,6 +113,7 @@ class Tetrahedralization:
     merged_into: np.ndarray
     coplanar: bool
     counters: dict = field(default_factory=dict)
+    construct_seconds: float = 0.0  #: the C++ construction alone (GIL released)
 
     def to_meshio(self):
         return _to_meshio(self.points, [("tetra", self.tetrahedra[:, [0, 1, 3, 2]])])
@@ -151,7 +158,7 @@ def triangulate(points, algorithm="bowyer-watson", order="brio", seed=1):
     p = _points(points, 2)
     d = _core._triangulate(p, algorithm, order, seed)
     return Triangulation(p, d["triangles"], d["neighbors"], d["merged_into"].ravel(),
-                         d["counters"])
+                         d["counters"], d["construct_seconds"])
 
 
 def tetrahedralize(points, algorithm="bowyer-watson", order="brio", seed=1):
@@ -160,7 +167,7 @@ def tetrahedralize(points, algorithm="bowyer-watson", order="brio", seed=1):
     p = _points(points, 3)
     d = _core._tetrahedralize(p, algorithm, order, seed)
     return Tetrahedralization(p, d["tetrahedra"], d["neighbors"], d["merged_into"].ravel(),
-                              d["coplanar"], d["counters"])
+                              d["coplanar"], d["counters"], d["construct_seconds"])
 
 
 def _mesh_from(d, segments, delaunay):

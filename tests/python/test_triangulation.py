@@ -109,3 +109,37 @@ def test_cdt_with_hole_and_recoveries():
         m = exactmesh.cdt(points, segments, holes=[[1.5, 1.5]], recovery=recovery)
         assert exactmesh.check_mesh(m).ok
         assert len(m.triangles) == 8
+
+
+@pytest.mark.parametrize("distribution", exactmesh.distributions_2d)
+def test_every_2d_distribution_is_triangulated_exactly(distribution):
+    points = exactmesh.points_2d(distribution, 2000, 3)
+    assert points.shape == (2000, 2)
+    t = exactmesh.triangulate(points)
+    assert exactmesh.check_delaunay(points, t.triangles).ok
+    assert t.construct_seconds > 0
+
+
+@pytest.mark.parametrize("distribution", exactmesh.distributions_3d)
+def test_every_3d_distribution_is_tetrahedralized_exactly(distribution):
+    points = exactmesh.points_3d(distribution, 1000, 3)
+    t = exactmesh.tetrahedralize(points)
+    assert not t.coplanar
+    assert exactmesh.check_tetrahedralization(points, t.tetrahedra).ok
+
+
+def test_unknown_distribution():
+    with pytest.raises(exactmesh.InputError, match="known"):
+        exactmesh.points_2d("fractal", 10)
+
+
+def test_constructions_run_in_threads(rng):
+    # The GIL is released during construction: threads run side by side and each gets the
+    # same triangulation as a sequential call (no shared state between calls).
+    from concurrent.futures import ThreadPoolExecutor
+
+    inputs = [rng.random((20000, 2)) for _ in range(4)]
+    expected = [simplex_set(exactmesh.triangulate(p).triangles) for p in inputs]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        results = list(pool.map(lambda p: exactmesh.triangulate(p).triangles, inputs))
+    assert [simplex_set(r) for r in results] == expected
