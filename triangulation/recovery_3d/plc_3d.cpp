@@ -84,7 +84,8 @@ int drop_axis(const double* a, const double* b, const double* c) {
     for (const double* p : {a, b, c}) {
         for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(p[k]));
     }
-    const double scale = largest > 0 ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
+    const double scale =
+        largest > 0 ? std::ldexp(1.0, std::clamp(-std::ilogb(largest), -1000, 1000)) : 1.0;
     double d1[3], d2[3];
     for (int k = 0; k < 3; ++k) {
         d1[k] = b[k] * scale - a[k] * scale;
@@ -500,7 +501,8 @@ void check_surface_self_intersection_3d(const Plc3& plc, const SurfaceTriangles3
     }
     double largest = 0;
     for (int k = 0; k < 3; ++k) largest = std::max({largest, std::fabs(lo[k]), std::fabs(hi[k])});
-    const double scale = largest > 0 ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
+    const double scale =
+        largest > 0 ? std::ldexp(1.0, std::clamp(-std::ilogb(largest), -1000, 1000)) : 1.0;
     double range[3];
     double extent_sum = 0;
     for (int k = 0; k < 3; ++k) range[k] = hi[k] * scale - lo[k] * scale;
@@ -530,7 +532,9 @@ void check_surface_self_intersection_3d(const Plc3& plc, const SurfaceTriangles3
         // Monotone in the coordinate, so boxes that overlap get cell ranges that overlap.
         auto cell_of = [&](double x, int k) {
             const double g = std::floor((x * scale - lo[k] * scale) / cell);
-            const double clamped = std::clamp(g, 0.0, static_cast<double>(resolution[k] - 1));
+            // (a NaN, which no finite input should give, lands in cell 0 rather than in UB)
+            const double clamped =
+                g >= 0 ? std::min(g, static_cast<double>(resolution[k] - 1)) : 0.0;
             return static_cast<std::uint32_t>(clamped);
         };
         std::uint64_t entry_count = 0;

@@ -86,6 +86,19 @@ TEST(Triangulation_Plc3, ClosedCubeIsValidAndClosed) {
     EXPECT_EQ(result.triangles.size(), 3u * 12u);
 }
 
+TEST(Triangulation_Plc3, SubnormalAndHugeCubesGiveTheSameSurface) {
+    // Coordinates down to the subnormal range (2^-1070: the power-of-two rescaling of the
+    // projection choice and of the intersection grid must not overflow to infinity) and up to
+    // 2^1020: the same verdicts and triangles as the unit cube.
+    const Outcome plain = outcome(cube());
+    EXPECT_EQ(outcome(scaled(cube(), -1070)), plain);
+    EXPECT_EQ(outcome(scaled(cube(), 1020)), plain);
+    Plc3 pierced = cube();
+    pierced.facets.push_back({{{0, 7, 3}}, {}, 2});  // a diagonal facet through the cube
+    const Outcome crossing = outcome(pierced);
+    EXPECT_EQ(outcome(scaled(pierced, -1070)), crossing);
+}
+
 TEST(Triangulation_Plc3, FacetTrianglesKeepTheFacetOrientation) {
     const Plc3 plc = cube();
     const SurfaceTriangles3 surface = validate_plc_3d(plc);
