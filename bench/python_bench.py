@@ -138,6 +138,7 @@ def main():
     cost_n = 100_000 if args.quick else 1_000_000
     sizes2 = [100_000] if args.quick else [100_000, 1_000_000]
     sizes3 = [30_000] if args.quick else [100_000, 300_000]
+    print("# Python: the binding's cost, scipy.spatial.Delaunay\n")
     print(f"exactmesh {exactmesh.__version__}, scipy {scipy.__version__}, numpy {np.__version__}, "
           f"Python {platform.python_version()}, {platform.processor() or platform.machine()}, "
           f"{os.cpu_count()} cores")
