@@ -702,6 +702,22 @@ std::array<double, 2> segment_intersection_exact(const double* a, const double* 
     return segment_intersection_rational(a, b, c, d);
 }
 
+std::array<double, 2> point_on_line_at(const double* s0, const double* s1, int axis, double value) {
+    require_finite_points("point_on_line_at", {s0, s1}, 2);
+    if (!std::isfinite(value) || s0[axis] == s1[axis]) {
+        fail("point_on_line_at", "the line does not cross that coordinate once", {s0, s1}, 2);
+    }
+    const int other = 1 - axis;
+    const mpq_class t = (mpq_class(value) - s0[axis]) / (mpq_class(s1[axis]) - s0[axis]);
+    std::array<double, 2> result;
+    result[axis] = value;
+    if (!round_to_double(mpq_class(s0[other]) + t * (mpq_class(s1[other]) - s0[other]),
+                         result[other])) {
+        fail("point_on_line_at", "the point overflows the double range", {s0, s1}, 2);
+    }
+    return result;
+}
+
 ConstructionStats& construction_stats() noexcept {
     return this_thread_stats;
 }

@@ -63,6 +63,16 @@ std::array<double, 3> circumcenter(const double* a, const double* b, const doubl
 std::array<double, 2> segment_intersection(const double* a, const double* b, const double* c,
                                            const double* d);
 
+/// The point of the line through s0 and s1 whose coordinate `axis` (0: x, 1: y) is `value`,
+/// that coordinate kept and the other correctly rounded (exact rational arithmetic, one
+/// rounding): within half an ulp of the exact point of the line, whatever the span of
+/// magnitudes (s0 near 1e300 and s1 subnormal included), where a parameter s0 + tau (s1 - s0)
+/// in doubles could not resolve it. Always the exact path: meant for the rare split points that
+/// the cheap midpoint of rounded piece ends cannot give (cdt_conforming_2d.cpp).
+/// @throws GeometryError when an input is non-finite, when s0[axis] == s1[axis] or when the
+///         other coordinate overflows.
+std::array<double, 2> point_on_line_at(const double* s0, const double* s1, int axis, double value);
+
 /// The same constructions, always through the exact path (GMP + MPFR); same errors.
 /// For tests and for measuring the fast path; results are identical by construction.
 std::array<double, 2> circumcenter_exact(const double* a, const double* b, const double* c);

@@ -13,6 +13,7 @@
 
 #include "base/errors.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
+#include "predicates/constructions.hpp"
 #include "predicates/within_rounding_of_segment.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 #include "triangulation/constrained/cdt_phases_2d.hpp"
@@ -64,9 +65,18 @@ struct Conforming {
     std::vector<Piece> encroached;              // marked pieces the last insertion encroached
 };
 
-/// A vertex that a missing piece crosses exactly on it, or within rounding of its input
-/// segment's line and between its ends (the nearest), or kNone.
-VertIdx vertex_near_segment(CdtState& cdt, const Piece& piece) {
+/// What vertex_near_segment found: a vertex where the piece bends (or kNone), and whether a
+/// vertex lies exactly on the piece without being one its segment's chain may pass through.
+struct NearVertex {
+    VertIdx bend = kNone;
+    bool blocked = false;
+};
+
+/// A vertex that may bend a missing piece (bend_candidate) and that the piece crosses or
+/// passes exactly through, the first along the segment; blocked when a vertex lies exactly on
+/// the piece but off its input segment by more than rounding (then no edge can carry the
+/// piece, and its split point must leave the line a - b: split_piece).
+NearVertex vertex_near_segment(CdtState& cdt, const Piece& piece) {
     const VertIdx a = piece.a, b = piece.b;
     const double* s0 = cdt.mesh.point(cdt.segment_ends[piece.segment][0]);
     const double* s1 = cdt.mesh.point(cdt.segment_ends[piece.segment][1]);
@@ -80,10 +90,17 @@ VertIdx vertex_near_segment(CdtState& cdt, const Piece& piece) {
     };
     // The edges the piece crosses, as insert_piece walks them; a vertex exactly on the piece
     // ends the walk (it is the answer).
+    // A vertex exactly on the piece bends it when the chain rule allows (a 2-ulp-wide fuzz
+    // PSLG: a chain along y = 0 met an input vertex 3e-322 below its segment, and a bend there
+    // broke the chain the check follows).
+    auto on_piece = [&](VertIdx w) {
+        return bend_candidate(cdt, piece.segment, a, b, w) ? NearVertex{w, false}
+                                                           : NearVertex{kNone, true};
+    };
     const StarExit exit = star_exit(cdt, a, b);
-    if (exit.on_ray != kNone) return exit.on_ray;
+    if (exit.on_ray != kNone) return on_piece(exit.on_ray);
     const EdgeIdx entry = exit.entry;
-    if (entry == kNone) return kNone;  // not expected: the piece would be present
+    if (entry == kNone) return {};  // not expected: the piece would be present
     consider(cdt.mesh.origin(entry));
     consider(cdt.mesh.destination(entry));
     for (EdgeIdx h = entry;;) {
@@ -92,11 +109,11 @@ VertIdx vertex_near_segment(CdtState& cdt, const Piece& piece) {
         if (w == b || w == kInfinite) break;
         ++cdt.result.counters.walk_steps;
         const Sign sw = cdt.core.orient(a, b, w);
-        if (sw == Sign::Zero) return w;
+        if (sw == Sign::Zero) return on_piece(w);
         consider(w);
         h = sw == Sign::Positive ? next_edge(f) : prev_edge(f);
     }
-    return best;
+    return {best, false};
 }
 
 // Conforming split budget: 64 per input vertex, segment and crossing, plus 4,096. Every test
@@ -114,16 +131,49 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece,
     // bend_candidate) is where the piece bends: (6, 8) on a grid line
     // whose other end is a rounded crossing at (7 - 2^-50, 7) in grid-lines seed 5, where new
     // points would home in on it until no double is left between.
-    const VertIdx near = vertex_near_segment(cdt, piece);
-    if (near != kNone) {
+    const NearVertex near = vertex_near_segment(cdt, piece);
+    if (near.bend != kNone) {
         ++cdt.result.counters.conforming_bends;
-        tasks.push_back({{near, piece.b, piece.segment}, false});
-        tasks.push_back({{piece.a, near, piece.segment}, false});
+        tasks.push_back({{near.bend, piece.b, piece.segment}, false});
+        tasks.push_back({{piece.a, near.bend, piece.segment}, false});
         return;
     }
     const double* pa = cdt.mesh.point(piece.a);
     const double* pb = cdt.mesh.point(piece.b);
     double m[2];
+    const double* s0 = cdt.mesh.point(cdt.segment_ends[piece.segment][0]);
+    const double* s1 = cdt.mesh.point(cdt.segment_ends[piece.segment][1]);
+    // The split point on the input segment's line itself, rounded once from the input
+    // (predicates::point_on_line_at): the midpoint of the ends' coordinates along the segment's
+    // dominant axis, the other coordinate exact then rounded. Used where the cheap midpoint of
+    // the (rounded) piece ends cannot serve: a vertex lies exactly on the piece but its chain
+    // may not pass through it (then a split point on the line a - b would meet it again: a
+    // 2-ulp-wide fuzz PSLG, whose chain along y = 0 met an input vertex 3e-322 below its
+    // segment), or the midpoint falls outside rounding of the segment (near the origin, where
+    // the rounding allowance shrinks with |w|). A parameter s0 + tau (s1 - s0) in doubles would
+    // not do: it underflows for a 1e-20 piece at the end of a 1e303 segment.
+    auto midpoint_on_input_line = [&](double* out) {
+        const int axis = std::fabs(s1[0] - s0[0]) >= std::fabs(s1[1] - s0[1]) ? 0 : 1;
+        const bool tiny = std::fabs(pa[axis]) < 0x1p-1000 || std::fabs(pb[axis]) < 0x1p-1000;
+        const double value = tiny ? (pa[axis] + pb[axis]) * 0.5 : pa[axis] * 0.5 + pb[axis] * 0.5;
+        const auto point = predicates::point_on_line_at(s0, s1, axis, value);
+        out[0] = point[0];
+        out[1] = point[1];
+    };
+    // The chain rule (§4): the split point must lie within rounding of the input segment and
+    // strictly between the piece's ends along it, exactly (a piece may run either way along
+    // its segment).
+    auto on_its_way = [&](const double* w) {
+        const Sign from_a = predicates::direction_dot_sign(pa, w, s0, s1),
+                   to_b = predicates::direction_dot_sign(w, pb, s0, s1);
+        return from_a != Sign::Zero && from_a == to_b &&
+               predicates::within_rounding_of_segment(w, s0, s1);
+    };
+    bool on_input_segment = false;
+    if (near.blocked) {
+        midpoint_on_input_line(m);
+        on_input_segment = true;
+    }
     // Concentric shells [Ruppert95 §4; Shewchuk97 §3.4]: a piece with an end at a corner (an
     // input vertex where two or more pieces meet) is split at the power of two nearest half its
     // length, measured from that corner, so pieces of segments meeting there at a small angle
@@ -140,7 +190,7 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece,
                         cb = corner(piece.b) >= 2 ? corner(piece.b) : 0;
     const int apex_end = ca == cb ? -1 : (ca > cb ? 0 : 1);  // 0: piece.a, 1: piece.b
     bool shell = false;
-    if (apex_end >= 0) {
+    if (apex_end >= 0 && !on_input_segment) {
         const double* apex = apex_end == 0 ? pa : pb;
         const double* far = apex_end == 0 ? pb : pa;
         const double dx = far[0] - apex[0], dy = far[1] - apex[1];
@@ -153,7 +203,7 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece,
             shell = true;
         }
     }
-    if (!shell) {
+    if (!shell && !on_input_segment) {
         for (int k = 0; k < 2; ++k) {
             // Halving first is exact unless the halves are subnormal; then sum first (which
             // cannot overflow at such magnitudes).
@@ -161,23 +211,15 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece,
             m[k] = tiny ? (pa[k] + pb[k]) * 0.5 : pa[k] * 0.5 + pb[k] * 0.5;
         }
     }
-    // The chain rule (§4): the split point must lie within rounding of the input segment and
-    // strictly between the piece's ends along it, exactly; a rounded midpoint of a piece far
-    // across the segment's direction may not (it moved back by an ulp of a coordinate that the
-    // segment's direction weighs 1e60 times more): then the piece is finer than doubles resolve.
-    {
-        const double* s0 = cdt.mesh.point(cdt.segment_ends[piece.segment][0]);
-        const double* s1 = cdt.mesh.point(cdt.segment_ends[piece.segment][1]);
-        // (A piece may run either way along its segment.)
-        const Sign from_a = predicates::direction_dot_sign(pa, m, s0, s1),
-                   to_b = predicates::direction_dot_sign(m, pb, s0, s1);
-        if (from_a == Sign::Zero || from_a != to_b ||
-            !predicates::within_rounding_of_segment(m, s0, s1)) {
-            throw GeometryError(
-                "conforming Delaunay: segment " + cdt.segment_name(piece.segment) +
-                " has a piece whose split point falls off its way (features finer than "
-                "double precision resolves)");
-        }
+    // A rounded midpoint of a piece far across the segment's direction may fall off its way (it
+    // moved back by an ulp of a coordinate that the segment's direction weighs 1e60 times
+    // more): then the point on the input line; if that fails too, the piece is finer than
+    // doubles resolve.
+    if (!on_its_way(m) && !on_input_segment) midpoint_on_input_line(m);
+    if (!on_its_way(m)) {
+        throw GeometryError("conforming Delaunay: segment " + cdt.segment_name(piece.segment) +
+                            " has a piece whose split point falls off its way (features finer "
+                            "than double precision resolves)");
     }
     // Walk from the end nearer the split point (a corner can have a large fan of thin
     // triangles: 60x fewer walk steps on fuzz input timeout-073fed0d than from the first end).
@@ -194,23 +236,10 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece,
     }
     if (at != mid) {
         cdt.remove_last_vertex();
-        if (at == piece.a || at == piece.b) {
-            throw GeometryError("conforming Delaunay: segment " + cdt.segment_name(piece.segment) +
-                                " has a piece too short to split (adjacent doubles)");
-        }
-        // The split point rounds to an existing vertex: the chain may pass through it only if it
-        // progresses along the segment from a to b (exactly). Else the pieces a - at, at - b
-        // would lead back (PSLGs spanning 1e-225..1e212: a piece bent through one vertex had its
-        // midpoint round to the vertex beyond it, and the two tasks alternated 57,000 times).
-        const double* s0 = cdt.mesh.point(cdt.segment_ends[piece.segment][0]);
-        const double* s1 = cdt.mesh.point(cdt.segment_ends[piece.segment][1]);
-        const Sign from_a = predicates::direction_dot_sign(pa, cdt.mesh.point(at), s0, s1);
-        if (from_a == Sign::Zero ||
-            from_a != predicates::direction_dot_sign(cdt.mesh.point(at), pb, s0, s1)) {
-            throw GeometryError("conforming Delaunay: segment " + cdt.segment_name(piece.segment) +
-                                " has a piece whose split point rounds to a vertex off its way "
-                                "(features finer than double precision resolves)");
-        }
+        // The split point rounds to an existing vertex `at`, at its coordinates, so on its way
+        // (on_its_way(m) held: within rounding and strictly between a and b along the segment,
+        // which keeps the pieces a - at, at - b from leading back; PSLGs spanning 1e-225..1e212
+        // once alternated 57,000 times between two such tasks).
     } else {
         const Cdt2Counters& c = cdt.result.counters;
         if (++cdt.result.counters.conforming_splits >

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <vector>
@@ -49,19 +50,35 @@ inline const double* at(std::span<const double> xy, std::uint32_t v) {
 /// A static floating-point filter of the oracle's own, so that the O(n^4) loops stay fast: the
 /// sign of `det` when |det| exceeds Shewchuk's a-priori bound for the plain evaluation
 /// [Shewchuk97 §4.2: ccwerrboundA = (3 + 16u)u, iccerrboundA = (10 + 96u)u, u = 2^-53], taken
-/// with margin (3.5u, 11u). The bound assumes no overflow and no underflow; the magnitude
-/// window on `permanent` keeps every product finite and makes an underflowed term (at most a
-/// few 2^-1074) far smaller than the margin (u·2^-600). Otherwise 0: ask the GMP reference.
+/// with margin (3.5u, 11u). The bound holds only without overflow and underflow, so the filter
+/// answers only when every nonzero coordinate difference lies in [2^-250, 2^250]: then every
+/// product of up to four of them (orient has two, incircle four) lies in [2^-1000, 2^1000],
+/// normal and finite, and every sum of such terms is either normal (relative error u) or exact.
+/// (A window on the permanent alone is not enough: a product of two subnormal-sized
+/// differences underflows by up to 2^-1074 and a lift of 2^700 then multiplies that error far
+/// past the bound; fuzz_delaunay_2d found it.) Otherwise 0: ask the GMP reference.
+inline bool differences_in_filter_window(std::initializer_list<double> differences) {
+    for (const double d : differences) {
+        const double a = std::fabs(d);
+        if (a != 0.0 && !(a >= 0x1p-250 && a <= 0x1p+250)) return false;
+    }
+    return true;
+}
+
 inline int filtered_sign(double det, double permanent, double relative_bound) {
-    if (!(permanent > 0x1p-600 && permanent < 0x1p+1000)) return 0;
     const double bound = relative_bound * permanent;
     return det > bound ? 1 : (-det > bound ? -1 : 0);
 }
 
 inline Sign orient(std::span<const double> xy, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     const double *pa = at(xy, a), *pb = at(xy, b), *pc = at(xy, c);
-    const double left = (pa[0] - pc[0]) * (pb[1] - pc[1]);
-    const double right = (pa[1] - pc[1]) * (pb[0] - pc[0]);
+    const double acx = pa[0] - pc[0], acy = pa[1] - pc[1];
+    const double bcx = pb[0] - pc[0], bcy = pb[1] - pc[1];
+    if (!differences_in_filter_window({acx, acy, bcx, bcy})) {
+        return predicates::reference::orient2d_differences(pa, pb, pc);
+    }
+    const double left = acx * bcy;
+    const double right = acy * bcx;
     const int s = filtered_sign(left - right, std::fabs(left) + std::fabs(right), 3.5 * 0x1p-53);
     if (s != 0) return s > 0 ? Sign::Positive : Sign::Negative;
     return predicates::reference::orient2d_differences(pa, pb, pc);
@@ -73,6 +90,9 @@ inline Sign incircle(std::span<const double> xy, std::uint32_t a, std::uint32_t 
     const double adx = pa[0] - pd[0], ady = pa[1] - pd[1];
     const double bdx = pb[0] - pd[0], bdy = pb[1] - pd[1];
     const double cdx = pc[0] - pd[0], cdy = pc[1] - pd[1];
+    if (!differences_in_filter_window({adx, ady, bdx, bdy, cdx, cdy})) {
+        return predicates::reference::incircle_differences(pa, pb, pc, pd);
+    }
     const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
     const double cdxady = cdx * ady, adxcdy = adx * cdy;
     const double adxbdy = adx * bdy, bdxady = bdx * ady;
