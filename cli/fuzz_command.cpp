@@ -512,7 +512,8 @@ std::string reproducer_script(const FuzzArguments& arguments, const FuzzInput& i
               "$status; fi\n";
     if (input.kind == FuzzKind::Pslg) {
         script << shell_word(exe.string()) << " check \"" << in << "\" \"" << out << '"'
-               << (arguments.conforming ? " --conforming" : "") << '\n';
+               << (arguments.conforming ? " --conforming" : "")
+               << (arguments.convex_hull ? " --convex-hull" : "") << '\n';
     } else {
         // The output's own .node (TetGen drops duplicate points from it) names its vertices.
         script << "node=\"" << in << "\"\n"
