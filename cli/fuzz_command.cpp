@@ -622,6 +622,10 @@ int run_program_fuzz(const FuzzArguments& arguments) {
     std::cout << ", " << summary.passed << " passed, " << summary.failed << " failed, "
               << summary.crashed << " crashed, " << summary.timed_out << " timed out, "
               << summary.refused << " refused in " << format_seconds(summary.seconds) << '\n';
+    std::cout << "fuzz: failed of run per distribution:";
+    for (const auto& [name, tally] : summary.per_distribution)
+        std::cout << ' ' << name << ' ' << tally[1] << '/' << tally[0];
+    std::cout << '\n';
     return summary.bad() > 0 ? kExitCheckFailed : kExitSuccess;
 }
 

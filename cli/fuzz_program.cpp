@@ -301,6 +301,9 @@ ProgramFuzzSummary fuzz_program(const ProgramUnderTest& program, const ProgramFu
                 ++summary.timed_out;
                 break;
         }
+        std::array<std::uint64_t, 2>& tally = summary.per_distribution[input.distribution];
+        ++tally[0];
+        if (judgement.bad()) ++tally[1];
         if (judgement.bad()) {
             ProgramFuzzFailure failure{input, input, judgement, judgement};
             if (summary.bad() <= options.max_minimized) {
@@ -371,7 +374,9 @@ std::string replace_all(std::string text, const std::string& from, const std::st
 std::string tail_of(const fs::path& path, std::size_t lines) {
     std::vector<std::string> all;
     std::ifstream stream(path);
-    for (std::string one; std::getline(stream, one);) all.push_back(one);
+    for (std::string one; std::getline(stream, one);) {
+        if (one.find_first_not_of(" \t\r") != std::string::npos) all.push_back(one);
+    }
     std::string out;
     for (std::size_t k = all.size() > lines ? all.size() - lines : 0; k < all.size(); ++k)
         out += (out.empty() ? "" : " | ") + all[k];

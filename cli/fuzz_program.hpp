@@ -8,11 +8,13 @@
 // its own; ExternalProgram runs a shell command on Triangle/TetGen files.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -118,6 +120,8 @@ struct ProgramFuzzSummary {
     std::uint64_t run = 0, passed = 0, refused = 0, failed = 0, crashed = 0, timed_out = 0;
     std::uint64_t first_seed = 0, last_seed = 0;
     double seconds = 0;
+    /// Per distribution name: inputs run, and how many of them failed, crashed or timed out.
+    std::map<std::string, std::array<std::uint64_t, 2>> per_distribution;
     std::uint64_t bad() const { return failed + crashed + timed_out; }
 };
 
