@@ -95,6 +95,7 @@ struct FuzzArguments {
     std::uint32_t max_points = 1000;
     bool conforming = false;
     bool convex_hull = false;
+    bool orient = false;
     double minimize_seconds = 60;
 };
 
@@ -608,6 +609,7 @@ int run_program_fuzz(const FuzzArguments& arguments) {
     command.command = arguments.command;
     command.output = arguments.output;
     command.timeout = std::chrono::milliseconds(std::llround(arguments.timeout * 1000));
+    command.orient = arguments.orient;
     std::uint64_t failures = 0;
     const ProgramFuzzSummary summary = fuzz_program(
         external_program(command, scratch.path), options,
@@ -700,6 +702,10 @@ void add_fuzz_command(CLI::App& app, int& exit_status) {
     command->add_flag("--conforming", arguments->conforming,
                       "With --kind pslg: check a valid mesh of the domain (as `check "
                       "--conforming`) instead of the constrained Delaunay triangulation");
+    command->add_flag("--orient", arguments->orient,
+                      "With --command: the program does not orient its triangles (tetrahedra) "
+                      "consistently (Qhull): each is oriented by the exact orient2d (orient3d) "
+                      "before the checks");
     command->add_flag("--convex-hull", arguments->convex_hull,
                       "With --kind pslg: the output must cover the convex hull (Triangle's -c, "
                       "`exactmesh cdt --convex-hull`); without it, a missing triangle is not "

@@ -29,6 +29,8 @@
 #include "generators/inputs/pslg_inputs.hpp"
 #include "io/tetgen_format.hpp"
 #include "io/triangle_format.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/orient3d.hpp"
 #include "triangulation/checks/check_2d.hpp"
 #include "triangulation/checks/check_3d.hpp"
 #include "triangulation/checks/check_conforming_2d.hpp"
@@ -60,6 +62,19 @@ bool has_no_triangulation(const FuzzInput& input) {
     if (input.kind == FuzzKind::Points3d)
         return tri::check_delaunay_3d(input.coordinates, std::span<const tri::VertIdx>{}).ok;
     return tri::check_delaunay_2d(input.coordinates, std::span<const tri::VertIdx>{}).ok;
+}
+
+/// Each cell counter-clockwise (2D) or with orient3d > 0 (Tetrahedralization3), exactly.
+void orient_cells(std::span<const double> points, std::size_t dimension,
+                  std::vector<std::uint32_t>& cells) {
+    const std::size_t corners = dimension + 1;
+    for (std::size_t c = 0; c + corners <= cells.size(); c += corners) {
+        const auto at = [&](std::size_t k) { return &points[dimension * cells[c + k]]; };
+        const predicates::Sign sign = dimension == 2
+                                          ? predicates::orient2d(at(0), at(1), at(2))
+                                          : predicates::orient3d(at(0), at(1), at(2), at(3));
+        if (sign == predicates::Sign::Negative) std::swap(cells[c], cells[c + 1]);
+    }
 }
 
 /// The minimizer's question: the same verdict, and for a crash the same exit status or signal
@@ -223,6 +238,7 @@ Judgement judge_output(const FuzzInput& input, const ProgramOutput& output, Pslg
         }
         cells.push_back(to_mesh[v]);
     }
+    if (!output.oriented) orient_cells(all, dimension, cells);
 
     if (input.kind == FuzzKind::Points2d) {
         const tri::CheckReport report =
@@ -531,6 +547,7 @@ ProgramUnderTest external_program(const ExternalCommand& command, const fs::path
                 output.message += ": " + said;
         }
         if (run.status == RunStatus::Finished) read_program_output(input, in, out, output);
+        output.oriented = !command.orient;
         return output;
     };
 }

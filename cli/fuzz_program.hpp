@@ -56,6 +56,10 @@ struct ProgramOutput {
     /// pieces a Triangle/`exactmesh cdt` output .poly lists); empty: the input's segments.
     std::vector<std::uint32_t> pieces;
     std::uint32_t first_cell = 1;  ///< how messages number the cells (the .ele's base)
+    /// False: the producer does not orient its cells (Qhull, scipy.spatial.Delaunay); each cell
+    /// is then put in the expected orientation by the exact orient2d/orient3d before the checks
+    /// (a flat cell is left as it is, and the checks report it).
+    bool oriented = true;
 };
 
 using ProgramUnderTest = std::function<ProgramOutput(const FuzzInput&)>;
@@ -142,6 +146,7 @@ struct ExternalCommand {
     std::string output = "{dir}/output.ele";  ///< {dir}: the scratch folder, {stem}: {in}
                                               ///< without its extension
     std::chrono::milliseconds timeout{10000};
+    bool orient = false;  ///< the program's cells are not oriented (ProgramOutput::oriented)
 };
 
 /// The program under test for `command`: each run gets a fresh scratch folder under `scratch`,
