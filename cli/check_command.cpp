@@ -113,8 +113,10 @@ int run_check_3d(const CheckArguments& arguments) {
 
 int run_check(const CheckArguments& arguments) {
     if (io::has_extension(arguments.node_path, ".poly")) return run_constrained_check(arguments);
-    if (arguments.conforming || arguments.convex_hull)
-        throw InputError("--conforming and --convex-hull need an IN.poly (the domain's segments)");
+    if (arguments.conforming)
+        throw InputError("--conforming needs an IN.poly (the domain's segments)");
+    if (arguments.convex_hull)
+        throw InputError("--convex-hull needs an IN.poly (a constrained triangulation's segments)");
     if (io::read_node_dimension(arguments.node_path) == 3) return run_check_3d(arguments);
     const io::NodeFile nodes = io::read_node(arguments.node_path);
     const io::EleFile ele =
