@@ -35,6 +35,7 @@
 #include "cli/fuzz_cases.hpp"
 #include "cli/fuzz_program.hpp"
 #include "generators/inputs/inputs.hpp"
+#include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
 #include "triangulation/checks/check_2d.hpp"
 #include "triangulation/checks/compare_triangulations_2d.hpp"
@@ -591,6 +592,10 @@ int run_program_fuzz(const FuzzArguments& arguments) {
         arguments.output.find("{stem}") == std::string::npos)
         throw InputError("--output " + arguments.output +
                          ": must name a file in the scratch folder, by {dir} or {stem}");
+    if (!io::has_extension(arguments.output, ".ele"))
+        throw InputError("--output " + arguments.output +
+                         ": only Triangle and TetGen .ele outputs are read (io/ writes .msh and "
+                         ".vtu but has no reader for them)");
     options.count = arguments.count;
     options.seed = arguments.seed;
     options.max_points = arguments.max_points;
