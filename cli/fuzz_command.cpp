@@ -527,7 +527,7 @@ std::string reproducer_script(const FuzzArguments& arguments, const FuzzInput& i
 }
 
 void report_program_failure(const FuzzArguments& arguments, const ProgramFuzzFailure& failure,
-                            const fs::path& out_dir, std::uint64_t failures) {
+                            const fs::path& out_dir) {
     const FuzzInput& input = failure.input;
     std::cout << "FAILURE: case seed " << input.seed << " (" << input.distribution << ", "
               << describe_input(input) << "): " << verdict_name(failure.judgement.verdict) << ": "
@@ -537,7 +537,6 @@ void report_program_failure(const FuzzArguments& arguments, const ProgramFuzzFai
                   << " failures)\n";
         return;
     }
-    (void)failures;
     std::cout << "  minimized to " << describe_input(failure.minimized) << " in "
               << failure.evaluations << " runs"
               << (failure.complete ? "" : " (time budget spent: not 1-minimal)") << ": "
@@ -615,11 +614,10 @@ int run_program_fuzz(const FuzzArguments& arguments) {
     command.output = arguments.output;
     command.timeout = std::chrono::milliseconds(std::llround(arguments.timeout * 1000));
     command.orient = arguments.orient;
-    std::uint64_t failures = 0;
     const ProgramFuzzSummary summary = fuzz_program(
         external_program(command, scratch.path), options,
         [&](const ProgramFuzzFailure& failure) {
-            report_program_failure(arguments, failure, out_dir, ++failures);
+            report_program_failure(arguments, failure, out_dir);
         },
         std::cerr);
     std::cout << "fuzz: " << summary.run << " inputs";
