@@ -6,7 +6,8 @@
 # Shewchuk's convention, TetGen's order). Qhull does not orient its simplices consistently, so
 # each is oriented here by the exact sign of its determinant (fractions.Fraction holds a double
 # exactly): what the check then judges is Qhull's choice of simplices, never this wrapper's.
-#   exactmesh fuzz --kind points2d --command 'python3 scipy_delaunay.py {in} {out}'
+#   exactmesh fuzz --kind points2d --command '/usr/bin/python3 scipy_delaunay.py {in} {out}'
+# (Debian's python3-scipy: /usr/bin/python3, not a pyenv python without scipy).
 """Usage: scipy_delaunay.py IN.node OUT.ele"""
 import sys
 from fractions import Fraction
