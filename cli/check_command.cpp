@@ -33,7 +33,8 @@ namespace tri = exactmesh::triangulation;
 struct CheckArguments {
     std::string node_path;
     std::string ele_path;
-    bool conforming = false;  ///< a .poly mesh checked for validity only, not Delaunay
+    bool conforming = false;   ///< a .poly mesh checked for validity only, not Delaunay
+    bool convex_hull = false;  ///< a .poly mesh must also cover the convex hull exactly once
 };
 
 /// IN.poly against OUT.ele. The vertices are OUT.node's when it exists beside OUT.ele (it holds
@@ -68,12 +69,15 @@ int run_constrained_check(const CheckArguments& arguments) {
     }
     tri::flag_constrained_edges_2d(mesh, constrained_edges);
     const tri::CheckNumbering numbering{base, ele.first_index};
-    tri::CheckReport report =
-        arguments.conforming
-            ? tri::check_conforming_mesh_2d(mesh, input.vertices.vertex_count(), input.segments,
-                                            pieces, numbering)
-            : tri::check_constrained_delaunay_2d(mesh, input.vertices.vertex_count(),
-                                                 input.segments, pieces, numbering);
+    // The constrained checks are local: only the hull's topology sees a triangle left out.
+    tri::CheckReport report;
+    if (arguments.convex_hull) report = tri::check_topology_2d(mesh.xy, mesh.triangles, numbering);
+    if (report.ok)
+        report = arguments.conforming
+                     ? tri::check_conforming_mesh_2d(mesh, input.vertices.vertex_count(),
+                                                     input.segments, pieces, numbering)
+                     : tri::check_constrained_delaunay_2d(mesh, input.vertices.vertex_count(),
+                                                          input.segments, pieces, numbering);
     // Every input vertex in the meshed region is a mesh vertex (check_conforming_mesh_2d
     // includes it).
     if (report.ok && !arguments.conforming)
@@ -111,6 +115,8 @@ int run_check(const CheckArguments& arguments) {
     if (io::has_extension(arguments.node_path, ".poly")) return run_constrained_check(arguments);
     if (arguments.conforming)
         throw InputError("--conforming needs an IN.poly (the domain's segments)");
+    if (arguments.convex_hull)
+        throw InputError("--convex-hull needs an IN.poly (a constrained triangulation's segments)");
     if (io::read_node_dimension(arguments.node_path) == 3) return run_check_3d(arguments);
     const io::NodeFile nodes = io::read_node(arguments.node_path);
     const io::EleFile ele =
@@ -149,6 +155,9 @@ void add_check_command(CLI::App& app, int& exit_status) {
         "With IN.poly: check a mesh that need not be Delaunay (quadtree, advancing front): "
         "strictly counter-clockwise triangles, no fold at any vertex, every boundary edge a piece "
         "of a segment, every segment a chain of edges");
+    command->add_flag("--convex-hull", arguments->convex_hull,
+                      "With IN.poly: the mesh must also cover the convex hull of its vertices "
+                      "exactly once, every vertex used (the output of `cdt --convex-hull`)");
     command->callback([arguments, &exit_status] { exit_status = run_check(*arguments); });
 }
 

@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -31,7 +32,10 @@
 
 #include "base/errors.hpp"
 #include "cli/commands.hpp"
+#include "cli/fuzz_cases.hpp"
+#include "cli/fuzz_program.hpp"
 #include "generators/inputs/inputs.hpp"
+#include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
 #include "triangulation/checks/check_2d.hpp"
 #include "triangulation/checks/compare_triangulations_2d.hpp"
@@ -40,12 +44,23 @@
 
 namespace exactmesh::cli {
 
+std::string shell_word(const std::string& text) {
+    const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char ch) {
+        return std::isalnum(static_cast<unsigned char>(ch)) != 0 ||
+               std::string_view("-_./=+,:@%").find(ch) != std::string_view::npos;
+    });
+    if (plain) return text;
+    std::string quoted = "'";
+    for (const char ch : text) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return quoted + "'";
+}
+
 namespace {
 
 namespace fs = std::filesystem;
 namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
-using Clock = std::chrono::steady_clock;
+using Clock = FuzzClock;
 
 /// The oracle is O(n^4): it runs on inputs up to this size.
 constexpr std::size_t kOracleMaxPoints = 60;
@@ -68,8 +83,21 @@ constexpr std::size_t kFaultyAlgorithm = 1;
 
 struct FuzzArguments {
     double minutes = 0;
+    bool minutes_given = false;
     std::uint64_t seed = 1;
     std::string out = ".";
+    bool quiet = false;
+    // Fuzzing another program (--command): cli/fuzz_program.hpp.
+    std::string command;
+    std::string kind = "points2d";
+    std::uint64_t count = 100;
+    double timeout = 10;
+    std::string output = "{dir}/output.ele";
+    std::uint32_t max_points = 1000;
+    bool conforming = false;
+    bool convex_hull = false;
+    bool orient = false;
+    double minimize_seconds = 60;
 };
 
 /// Every 2D Delaunay algorithm of the registry, compared with each other.
@@ -86,26 +114,6 @@ struct Order {
 constexpr std::array<Order, 3> kOrders = {Order{"given", tri::InsertionOrder::Given},
                                           Order{"random", tri::InsertionOrder::Random},
                                           Order{"brio", tri::InsertionOrder::Brio}};
-
-/// splitmix64 [Steele, Lea, Flood 2014]: one 64-bit state, good enough to pick case shapes.
-class CaseRandom {
-  public:
-    explicit CaseRandom(std::uint64_t seed) : state_(seed) {}
-    std::uint64_t next() {
-        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    /// Uniform in [lo, hi].
-    std::uint32_t between(std::uint32_t lo, std::uint32_t hi) {
-        return lo + static_cast<std::uint32_t>(next() % (std::uint64_t{hi} - lo + 1));
-    }
-    double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
-  private:
-    std::uint64_t state_;
-};
 
 /// One case: the points and how each algorithm is run. Everything follows from the case seed.
 struct Case {
@@ -127,22 +135,11 @@ Case make_case(std::uint64_t seed) {
     c.distribution = gen::kAllDistributions[random.next() % std::size(gen::kAllDistributions)];
     // Mostly small, where the oracle runs (skewed towards the smallest sizes: the oracle costs
     // n^4 and tiny inputs are where degeneracies are dense), then medium, sometimes large.
-    const std::uint64_t size_class = random.next() % 20;
-    std::uint32_t n = 0;
-    if (size_class < 9) {
-        const double u = random.unit();
-        n = 3 + static_cast<std::uint32_t>(static_cast<double>(kOracleMaxPoints - 2) * u * u);
-    } else if (size_class < 18) {
-        n = random.between(static_cast<std::uint32_t>(kOracleMaxPoints) + 1, 300);
-    } else {
-        n = static_cast<std::uint32_t>(
-            std::lround(300.0 * std::pow(20000.0 / 300.0, random.unit())));
-        // Tanemura-Merriam is quadratic on near-collinear points (about 3.5 s for 2000 on this
-        // machine, 12 s for 4000): keep those cases from eating the campaign.
-        if (c.distribution == gen::Distribution::NearCollinear) {
-            n = std::min<std::uint32_t>(n, kNearCollinearMaxPoints);
-        }
-    }
+    std::uint32_t n = case_size(random, static_cast<std::uint32_t>(kOracleMaxPoints), 20000);
+    // Tanemura-Merriam is quadratic on near-collinear points (about 3.5 s for 2000 on this
+    // machine, 12 s for 4000): keep those cases from eating the campaign.
+    if (c.distribution == gen::Distribution::NearCollinear)
+        n = std::min<std::uint32_t>(n, kNearCollinearMaxPoints);
     c.reference = random.next() % kAlgorithms.size();
     for (std::size_t& order : c.orders) order = random.next() % kOrders.size();
     c.xy = gen::generate_points_2d(c.distribution, n, seed);
@@ -316,58 +313,17 @@ struct Minimized {
     bool complete = true;  ///< false when the time budget ran out first
 };
 
-/// ddmin over points: remove chunks of n/2, n/4, ..., 1 points while the same failure persists;
-/// ends 1-minimal (no single point can go) unless the budget runs out.
-Minimized minimize(const Case& c, std::vector<double> xy, const Failure& failure, bool inject_fault,
-                   Clock::time_point give_up) {
-    Minimized out;
-    std::size_t n = xy.size() / 2;
-    std::size_t chunk = std::max<std::size_t>(n / 2, 1);
-    for (;;) {
-        bool removed = false;
-        for (std::size_t start = 0; start < n && n > 1;) {
-            if (Clock::now() > give_up) {
-                out.complete = false;
-                out.xy = std::move(xy);
-                return out;
-            }
-            const std::size_t stop = std::min(n, start + chunk);
-            std::vector<double> candidate;
-            candidate.reserve(2 * (n - (stop - start)));
-            candidate.insert(candidate.end(), xy.begin(),
-                             xy.begin() + static_cast<std::ptrdiff_t>(2 * start));
-            candidate.insert(candidate.end(), xy.begin() + static_cast<std::ptrdiff_t>(2 * stop),
-                             xy.end());
-            ++out.evaluations;
-            if (find_failure(c, candidate, inject_fault, &failure)) {
-                xy = std::move(candidate);
-                n = xy.size() / 2;
-                removed = true;
-            } else {
-                start = stop;
-            }
-        }
-        if (!removed) {
-            if (chunk == 1) break;
-            chunk /= 2;
-        } else {
-            chunk = std::max<std::size_t>(std::min(chunk, n / 2), 1);
-        }
-    }
-    out.xy = std::move(xy);
-    return out;
-}
-
-/// The text as one shell word: unchanged when it is plain, else in single quotes.
-std::string shell_word(const std::string& text) {
-    const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char ch) {
-        return std::isalnum(static_cast<unsigned char>(ch)) != 0 ||
-               std::string_view("-_./=+,:@%").find(ch) != std::string_view::npos;
-    });
-    if (plain) return text;
-    std::string quoted = "'";
-    for (const char ch : text) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return quoted + "'";
+/// ddmin (cli/fuzz_cases.hpp) over the points, while the same failure persists.
+Minimized minimize(const Case& c, const std::vector<double>& xy, const Failure& failure,
+                   bool inject_fault, Clock::time_point give_up) {
+    const DdminResult small = ddmin(
+        xy.size() / 2,
+        [&](std::span<const std::size_t> kept) {
+            return find_failure(c, kept_coordinates(xy, kept, 2), inject_fault, &failure)
+                .has_value();
+        },
+        give_up);
+    return Minimized{kept_coordinates(xy, small.kept, 2), small.evaluations, small.complete};
 }
 
 std::string triangulate_command(const std::string& node, const std::string& ele, const Case& c,
@@ -424,20 +380,17 @@ void report_failure(const Case& c, const Failure& failure, const fs::path& out_d
     std::cout.flush();
 }
 
-std::string format_seconds(double seconds) {
-    std::ostringstream text;
-    text << std::fixed << std::setprecision(1) << seconds << " s";
-    return text.str();
-}
-
-int run_fuzz(const FuzzArguments& arguments) {
-    // Bad arguments are reported before any work (exit 2 through InputError).
-    if (!std::isfinite(arguments.minutes) || arguments.minutes < 0 || arguments.minutes > 1e6) {
+void check_minutes(double minutes) {
+    if (!std::isfinite(minutes) || minutes < 0 || minutes > 1e6) {
         std::ostringstream value;
-        value << arguments.minutes;
+        value << minutes;
         throw InputError("--minutes must be a number of minutes between 0 and 1000000, not " +
                          value.str());
     }
+}
+
+/// The --out (--save) directory, made when missing.
+fs::path prepare_out_dir(const FuzzArguments& arguments) {
     const fs::path out_dir = arguments.out.empty() ? fs::path(".") : fs::path(arguments.out);
     std::error_code error;
     if (fs::exists(out_dir, error) && !fs::is_directory(out_dir, error)) {
@@ -447,13 +400,27 @@ int run_fuzz(const FuzzArguments& arguments) {
         throw InputError("--out " + out_dir.string() + ": cannot create the directory (" +
                          error.message() + ")");
     }
+    return out_dir;
+}
+
+int run_program_fuzz(const FuzzArguments& arguments);
+
+int run_fuzz(const FuzzArguments& arguments) {
+    // Bad arguments are reported before any work (exit 2 through InputError).
+    if (!arguments.command.empty()) return run_program_fuzz(arguments);
+    if (!arguments.minutes_given)
+        throw InputError(
+            "fuzz needs --minutes M (a campaign over our own algorithms) or "
+            "--command 'PROGRAM {in} {out}' (another program)");
+    check_minutes(arguments.minutes);
+    const fs::path out_dir = prepare_out_dir(arguments);
     const char* inject = std::getenv(kInjectFaultVariable);
     const bool inject_fault = inject != nullptr && std::string_view(inject) == "1";
 
     const auto start = Clock::now();
     const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                       std::chrono::duration<double>(arguments.minutes * 60.0));
-    auto last_progress = start;
+    ProgressLine progress(arguments.quiet);
     std::uint64_t cases = 0, points = 0, failures = 0;
     std::array<std::uint64_t, std::size(gen::kAllDistributions)> per_distribution{};
     std::uint64_t seed = arguments.seed;
@@ -476,9 +443,9 @@ int run_fuzz(const FuzzArguments& arguments) {
                           << " (not minimized: more than " << kMaxSavedFailures << " failures)\n";
             }
         }
-        if (Clock::now() - last_progress >= std::chrono::seconds(1)) {
-            last_progress = Clock::now();
-            std::cerr << "fuzz: " << format_seconds(elapsed()) << ", " << cases << " cases, "
+        if (progress.due()) {
+            std::cerr << "fuzz: " << format_seconds(elapsed()) << " of "
+                      << format_seconds(arguments.minutes * 60) << ", " << cases << " cases, "
                       << points << " points, " << failures << " failures" << std::endl;
         }
         ++seed;
@@ -496,6 +463,177 @@ int run_fuzz(const FuzzArguments& arguments) {
     return failures > 0 ? kExitCheckFailed : kExitSuccess;
 }
 
+FuzzKind kind_from_name(const std::string& name) {
+    if (name == "points2d") return FuzzKind::Points2d;
+    if (name == "pslg") return FuzzKind::Pslg;
+    if (name == "points3d") return FuzzKind::Points3d;
+    throw InputError("--kind " + name + ": expected points2d, pslg or points3d");
+}
+
+std::string describe_input(const FuzzInput& input) {
+    std::string text = std::to_string(input.point_count()) + " points";
+    if (input.kind == FuzzKind::Pslg)
+        text += ", " + std::to_string(input.segments.size() / 2) + " segments";
+    return text;
+}
+
+/// The reproducer beside the saved input: runs the command on a copy of it in a fresh scratch
+/// folder (from the directory the campaign ran in, so relative program paths still work), then
+/// `exactmesh check` on its output. Exit status: the command's when it fails, else the check's.
+std::string reproducer_script(const FuzzArguments& arguments, const FuzzInput& input,
+                              const ProgramFuzzFailure& failure, const fs::path& saved) {
+    const std::string in_name = input_file_name(input.kind);
+    const std::string in = "$dir/" + in_name;
+    const std::string out = output_path(arguments.output, "$dir", in);
+    fs::path out_node = out;
+    out_node.replace_extension(".node");
+    std::error_code error;
+    fs::path exe = fs::read_symlink("/proc/self/exe", error);
+    if (error) exe = "exactmesh";
+    std::ostringstream script;
+    script << "#!/bin/sh\n"
+           << "# exactmesh fuzz --kind " << arguments.kind << ": case seed " << input.seed << " ("
+           << input.distribution << ", " << describe_input(failure.input) << "), minimized to "
+           << describe_input(input) << ".\n"
+           << "# " << verdict_name(failure.minimized_judgement.verdict) << ": "
+           << failure.minimized_judgement.detail << "\n"
+           << "# Runs the command on a copy of " << saved.filename().string()
+           << " in a fresh folder, then checks its output exactly\n"
+           << "# (exit status: the command's when it fails, else the check's; the campaign's "
+              "time limit was "
+           << format_seconds(arguments.timeout) << ").\n"
+           << "here=$(cd \"$(dirname \"$0\")\" && pwd) || exit 2\n"
+           << "cd " << shell_word(fs::current_path().string()) << " || exit 2\n"
+           << "dir=$(mktemp -d) || exit 2\n"
+           << "cp \"$here\"/" << shell_word(saved.filename().string()) << " \"" << in
+           << "\" || exit 2\n"
+           << "echo \"input and output in $dir\"\n"
+           << substitute_command(arguments.command, "\"" + in + "\"", "\"" + out + "\"") << '\n'
+           << "status=$?\n"
+           << "if [ $status -ne 0 ]; then echo \"the command exited with status $status\"; exit "
+              "$status; fi\n";
+    if (input.kind == FuzzKind::Pslg) {
+        script << shell_word(exe.string()) << " check \"" << in << "\" \"" << out << '"'
+               << (arguments.conforming ? " --conforming" : "")
+               << (arguments.convex_hull ? " --convex-hull" : "") << '\n';
+    } else {
+        // The output's own .node (TetGen drops duplicate points from it) names its vertices.
+        script << "node=\"" << in << "\"\n"
+               << "if [ -e \"" << out_node.string() << "\" ]; then node=\"" << out_node.string()
+               << "\"; fi\n"
+               << shell_word(exe.string()) << " check \"$node\" \"" << out << "\"\n";
+    }
+    return script.str();
+}
+
+void report_program_failure(const FuzzArguments& arguments, const ProgramFuzzFailure& failure,
+                            const fs::path& out_dir) {
+    const FuzzInput& input = failure.input;
+    std::cout << "FAILURE: case seed " << input.seed << " (" << input.distribution << ", "
+              << describe_input(input) << "): " << verdict_name(failure.judgement.verdict) << ": "
+              << failure.judgement.detail << '\n';
+    if (!failure.minimized_run) {
+        std::cout << "  (not minimized nor saved: more than " << kMaxSavedFailures
+                  << " failures)\n";
+        return;
+    }
+    std::cout << "  minimized to " << describe_input(failure.minimized) << " in "
+              << failure.evaluations << " runs"
+              << (failure.complete ? "" : " (time budget spent: not 1-minimal)") << ": "
+              << verdict_name(failure.minimized_judgement.verdict) << ": "
+              << failure.minimized_judgement.detail << '\n';
+    const std::string stem = std::string(kFilePrefix) + std::to_string(input.seed);
+    const fs::path saved = out_dir / (stem + (input.kind == FuzzKind::Pslg ? ".poly" : ".node"));
+    const fs::path script = out_dir / (stem + ".sh");
+    write_fuzz_input(saved, failure.minimized);
+    {
+        std::ofstream file(script);
+        file << reproducer_script(arguments, failure.minimized, failure, saved);
+        if (!file) throw InputError(script.string() + ": cannot write");
+    }
+    fs::permissions(script, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
+                    fs::perm_options::add);
+    std::cout << "  saved: " << saved.string() << '\n'
+              << "  reproduce: sh " << shell_word(script.string()) << '\n';
+    std::cout.flush();
+}
+
+/// Removes the scratch folder however the campaign ends.
+struct ScratchFolder {
+    fs::path path;
+    explicit ScratchFolder(std::string pattern) {
+        if (mkdtemp(pattern.data()) == nullptr)
+            throw InputError("fuzz: cannot make a scratch folder " + pattern);
+        path = pattern;
+    }
+    ScratchFolder(const ScratchFolder&) = delete;
+    ScratchFolder& operator=(const ScratchFolder&) = delete;
+    ~ScratchFolder() {
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+    }
+};
+
+int run_program_fuzz(const FuzzArguments& arguments) {
+    ProgramFuzzOptions options;
+    options.kind = kind_from_name(arguments.kind);
+    if (arguments.minutes_given) {
+        check_minutes(arguments.minutes);
+        options.minutes = arguments.minutes;
+    }
+    if (!std::isfinite(arguments.timeout) || arguments.timeout <= 0 || arguments.timeout > 1e6)
+        throw InputError("--timeout must be a number of seconds above 0");
+    if (!std::isfinite(arguments.minimize_seconds) || arguments.minimize_seconds < 0 ||
+        arguments.minimize_seconds > 1e6)
+        throw InputError("--minimize-seconds must be a number of seconds, at least 0");
+    if (arguments.max_points < 4) throw InputError("--max-points must be at least 4");
+    if (arguments.output.find("{dir}") == std::string::npos &&
+        arguments.output.find("{stem}") == std::string::npos)
+        throw InputError("--output " + arguments.output +
+                         ": must name a file in the scratch folder, by {dir} or {stem}");
+    if (!io::has_extension(arguments.output, ".ele"))
+        throw InputError("--output " + arguments.output +
+                         ": only Triangle and TetGen .ele outputs are read (io/ writes .msh and "
+                         ".vtu but has no reader for them)");
+    options.count = arguments.count;
+    options.seed = arguments.seed;
+    options.max_points = arguments.max_points;
+    options.pslg_check =
+        arguments.conforming ? PslgCheck::Conforming : PslgCheck::ConstrainedDelaunay;
+    options.minimize_budget = std::chrono::seconds(std::llround(arguments.minimize_seconds));
+    options.max_minimized = kMaxSavedFailures;
+    options.quiet = arguments.quiet;
+    if ((arguments.conforming || arguments.convex_hull) && options.kind != FuzzKind::Pslg)
+        throw InputError("--conforming and --convex-hull apply to --kind pslg only");
+    options.convex_hull = arguments.convex_hull;
+    const fs::path out_dir = prepare_out_dir(arguments);
+
+    const ScratchFolder scratch((fs::temp_directory_path() / "exactmesh-fuzz-XXXXXX").string());
+    ExternalCommand command;
+    command.command = arguments.command;
+    command.output = arguments.output;
+    command.timeout = std::chrono::milliseconds(std::llround(arguments.timeout * 1000));
+    command.orient = arguments.orient;
+    const ProgramFuzzSummary summary = fuzz_program(
+        external_program(command, scratch.path), options,
+        [&](const ProgramFuzzFailure& failure) {
+            report_program_failure(arguments, failure, out_dir);
+        },
+        std::cerr);
+    std::cout << "fuzz: " << summary.run << " inputs";
+    if (summary.run > 0)
+        std::cout << " (" << arguments.kind << ", case seeds " << summary.first_seed << ".."
+                  << summary.last_seed << ")";
+    std::cout << ", " << summary.passed << " passed, " << summary.failed << " failed, "
+              << summary.crashed << " crashed, " << summary.timed_out << " timed out, "
+              << summary.refused << " refused in " << format_seconds(summary.seconds) << '\n';
+    std::cout << "fuzz: failed of run per distribution:";
+    for (const auto& [name, tally] : summary.per_distribution)
+        std::cout << ' ' << name << ' ' << tally[1] << '/' << tally[0];
+    std::cout << '\n';
+    return summary.bad() > 0 ? kExitCheckFailed : kExitSuccess;
+}
+
 }  // namespace
 
 void add_fuzz_command(CLI::App& app, int& exit_status) {
@@ -504,10 +642,15 @@ void add_fuzz_command(CLI::App& app, int& exit_status) {
         "fuzz",
         "Timed differential campaign: random and degenerate point sets through all three "
         "algorithms, each checked exactly, against the others and (n <= 60) against a naive "
-        "empty-circle oracle; failures are minimized and saved as .node files");
-    command->add_option("--minutes", arguments->minutes, "How long to run (fractions allowed)")
-        ->required()
-        ->type_name("M");
+        "empty-circle oracle; or, with --command, the same degenerate inputs (2D points, PSLGs, "
+        "3D points) through another program, its output checked exactly. Failures are minimized "
+        "and saved");
+    CLI::Option* minutes =
+        command
+            ->add_option("--minutes", arguments->minutes,
+                         "How long to run (fractions allowed); needed without --command, a limit "
+                         "besides --count with it")
+            ->type_name("M");
     // CLI11 2.1 would read "-3" into an unsigned as 2^64 - 3: refuse the sign before conversion.
     const CLI::Validator non_negative(
         [](const std::string& text) {
@@ -519,11 +662,66 @@ void add_fuzz_command(CLI::App& app, int& exit_status) {
         ->check(non_negative)
         ->capture_default_str();
     command
-        ->add_option("--out", arguments->out,
-                     "Directory for the minimized failing inputs, fuzz-failure-<seed>.node")
+        ->add_option("--out,--save", arguments->out,
+                     "Directory for the minimized failing inputs, fuzz-failure-<seed>.node "
+                     "(.poly), and with --command the reproducers fuzz-failure-<seed>.sh")
         ->capture_default_str()
         ->type_name("DIR");
-    command->callback([arguments, &exit_status] { exit_status = run_fuzz(*arguments); });
+    command->add_flag("--quiet", arguments->quiet, "No progress lines on stderr");
+    command
+        ->add_option("--command", arguments->command,
+                     "Fuzz another program: a shell command (run by /bin/sh -c) where {in} is the "
+                     "input file (Triangle .node or .poly, TetGen .node, 1-based) and {out} the "
+                     "output file it must write (Triangle .ele, TetGen .ele); do not quote them")
+        ->type_name("'PROGRAM {in} {out}'");
+    command
+        ->add_option("--kind", arguments->kind,
+                     "With --command: points2d (Delaunay triangulation), pslg (constrained "
+                     "Delaunay, or --conforming) or points3d (Delaunay tetrahedralization)")
+        ->capture_default_str()
+        ->type_name("points2d|pslg|points3d");
+    command->add_option("--count", arguments->count, "With --command: how many inputs to run")
+        ->check(non_negative)
+        ->capture_default_str()
+        ->type_name("N");
+    command
+        ->add_option("--timeout", arguments->timeout,
+                     "With --command: seconds per run; the process group is killed after it, "
+                     "and that counts as a failure")
+        ->capture_default_str()
+        ->type_name("SECONDS");
+    command
+        ->add_option("--output", arguments->output,
+                     "With --command: where the program writes its output, {dir} being the "
+                     "scratch folder and {stem} the input file without its extension (for "
+                     "TetGen: '{stem}.1.ele'); a .node beside it gives its vertices, for pslg a "
+                     ".poly beside it its constrained pieces")
+        ->capture_default_str()
+        ->type_name("PATH");
+    command->add_option("--max-points", arguments->max_points, "With --command: largest input")
+        ->check(non_negative)
+        ->capture_default_str()
+        ->type_name("N");
+    command->add_flag("--conforming", arguments->conforming,
+                      "With --kind pslg: check a valid mesh of the domain (as `check "
+                      "--conforming`) instead of the constrained Delaunay triangulation");
+    command->add_flag("--orient", arguments->orient,
+                      "With --command: the program does not orient its triangles (tetrahedra) "
+                      "consistently (Qhull): each is oriented by the exact orient2d (orient3d) "
+                      "before the checks");
+    command->add_flag("--convex-hull", arguments->convex_hull,
+                      "With --kind pslg: the output must cover the convex hull (Triangle's -c, "
+                      "`exactmesh cdt --convex-hull`); without it, a missing triangle is not "
+                      "seen (the checks are local)");
+    command
+        ->add_option("--minimize-seconds", arguments->minimize_seconds,
+                     "With --command: time budget of each minimization")
+        ->capture_default_str()
+        ->type_name("SECONDS");
+    command->callback([arguments, minutes, &exit_status] {
+        arguments->minutes_given = minutes->count() > 0;
+        exit_status = run_fuzz(*arguments);
+    });
 }
 
 }  // namespace exactmesh::cli

@@ -45,7 +45,8 @@ void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
     const tri::Delaunay3Function construct = tri::delaunay_3d_algorithm(arguments.algorithm);
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
 
-    const tri::Delaunay3Options options{tri::insertion_order_from_name(arguments.order), arguments.seed};
+    const tri::Delaunay3Options options{tri::insertion_order_from_name(arguments.order),
+                                        arguments.seed};
     const auto [result, stats, seconds] =
         timed_construction([&] { return construct(nodes.xyz, options); });
     if (result.coplanar) {

@@ -49,8 +49,8 @@ void run_triangulate(const TriangulateArguments& arguments) {
     const tri::Delaunay2Function construct = tri::delaunay_2d_algorithm(arguments.algorithm);
     const io::NodeFile nodes = io::read_node(arguments.input);
 
-    const tri::Delaunay2Options options{tri::insertion_order_from_name(arguments.order), arguments.seed,
-                                        point_location(arguments.location)};
+    const tri::Delaunay2Options options{tri::insertion_order_from_name(arguments.order),
+                                        arguments.seed, point_location(arguments.location)};
     const auto [result, stats, seconds] =
         timed_construction([&] { return construct(nodes.xy, options); });
 

@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# scipy.spatial.Delaunay (Qhull) as a program for `exactmesh fuzz --command` (issue 16: judging
+# other people's triangulators): reads a Triangle .node (2D) or TetGen .node (3D), writes the
+# Delaunay simplices as a Triangle .ele (counter-clockwise) or TetGen .ele (orient3d < 0 in
+# Shewchuk's convention, TetGen's order). Qhull does not orient its simplices consistently, so
+# each is oriented here by the exact sign of its determinant (fractions.Fraction holds a double
+# exactly): what the check then judges is Qhull's choice of simplices, never this wrapper's.
+#   exactmesh fuzz --kind points2d --command '/usr/bin/python3 scipy_delaunay.py {in} {out}'
+# (Debian's python3-scipy: /usr/bin/python3, not a pyenv python without scipy).
+"""Usage: scipy_delaunay.py IN.node OUT.ele"""
+import sys
+from fractions import Fraction
+
+import numpy as np
+from scipy.spatial import Delaunay
+
+
+def read_node(path):
+    rows = []
+    with open(path, encoding="ascii") as node:
+        for line in node:
+            line = line.split("#", 1)[0].split()
+            if line:
+                rows.append(line)
+    count, dimension = int(rows[0][0]), int(rows[0][1]) if len(rows[0]) > 1 else 2
+    first = int(rows[1][0]) if count else 1
+    points = [[float(v) for v in row[1:1 + dimension]] for row in rows[1:1 + count]]
+    return np.array(points, dtype=float).reshape(count, dimension), first
+
+
+def determinant_sign(rows):
+    """Exact sign of the determinant of the differences rows[k] - rows[0]."""
+    base = [Fraction(v) for v in rows[0]]
+    m = [[Fraction(v) - b for v, b in zip(row, base)] for row in rows[1:]]
+    if len(m) == 2:
+        d = m[0][0] * m[1][1] - m[0][1] * m[1][0]
+    else:
+        d = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+             - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+    return (d > 0) - (d < 0)
+
+
+def main(argv):
+    if len(argv) != 3:
+        sys.exit(__doc__)
+    points, first = read_node(argv[1])
+    dimension = points.shape[1]
+    simplices = Delaunay(points).simplices if len(points) > dimension else np.zeros((0, dimension + 1), int)
+    with open(argv[2], "w", encoding="ascii") as ele:
+        ele.write(f"{len(simplices)} {dimension + 1} 0\n")
+        for number, simplex in enumerate(simplices):
+            corners = [int(v) for v in simplex]
+            sign = determinant_sign([points[v] for v in corners])
+            # 2D: counter-clockwise (positive); 3D: TetGen's order (negative orient3d, which is
+            # a positive determinant of the differences).
+            if (dimension == 2 and sign < 0) or (dimension == 3 and sign < 0):
+                corners[0], corners[1] = corners[1], corners[0]
+            ele.write(f"{number + first} " + " ".join(str(v + first) for v in corners) + "\n")
+
+
+if __name__ == "__main__":
+    main(sys.argv)
