@@ -87,7 +87,8 @@ class LogForms {
 }  // namespace
 
 tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
-                                      bool log_euclidean, MetricFromLogFormMemo* memo) {
+                                      bool log_euclidean, MetricFromLogFormMemo* memo,
+                                      tri::SwapVerdicts2* verdicts) {
     double h_ref = std::numeric_limits<double>::infinity();
     for (const Metric2& m : metrics) h_ref = std::min({h_ref, m.h1, m.h2});
     std::vector<double> matrices(3 * metrics.size());
@@ -127,13 +128,16 @@ tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const
             }
             std::copy(last->matrix, last->matrix + 3, out);
         };
+        // The decision is then a function of the quadrilateral's vertices alone.
+        criterion.verdicts = verdicts;
     }
     return tri::swap_edges_2d(mesh, criterion);
 }
 
 tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
                                                 std::span<const Metric2> metrics,
-                                                MetricFromLogFormMemo* memo) {
+                                                MetricFromLogFormMemo* memo,
+                                                tri::SwapVerdicts2* verdicts) {
     const auto forms = std::make_shared<const LogForms>(metrics, memo);
     tri::QuadPreference criterion;
     criterion.swap = [forms](const std::array<tri::VertIdx, 4>& v,
@@ -174,6 +178,7 @@ tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
         return worst_after >= kSliverShape ||
                worst_after >= std::min(shape(0, 1, 2), shape(1, 0, 3));
     };
+    criterion.verdicts = verdicts;
     return tri::swap_edges_2d(mesh, criterion);
 }
 
