@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "base/errors.hpp"
@@ -217,26 +218,39 @@ struct SwapMemory {
 void renumber_swap_memory(SwapMemory& memory, const std::vector<tri::VertIdx>& before,
                           const tri::Triangulation2& mesh,
                           const std::vector<tri::VertIdx>& old_to_new) {
-    // The old triangles by their vertices in the new numbering (a removed vertex's: none).
-    std::vector<std::array<std::uint32_t, 4>> old_triangles;
-    old_triangles.reserve(before.size() / 3);
+    // The old triangles without a removed vertex, in the new numbering, grouped by their first
+    // vertex (a counting sort: start[v] .. start[v + 1] for vertex v).
+    const std::size_t nv = mesh.vertex_count();
+    std::vector<std::uint32_t> start(nv + 2, 0);
+    const auto renumbered = [&](std::size_t t, std::size_t k) {
+        const tri::VertIdx v = before[3 * t + k];
+        return v < old_to_new.size() ? old_to_new[v] : tri::kNone;
+    };
+    const auto survives = [&](std::size_t t) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            const tri::VertIdx v = renumbered(t, k);
+            if (v == tri::kNone || v >= nv) return false;
+        }
+        return true;
+    };
     for (std::size_t t = 0; 3 * t < before.size(); ++t) {
-        const tri::VertIdx a = before[3 * t], b = before[3 * t + 1], c = before[3 * t + 2];
-        if (a >= old_to_new.size() || b >= old_to_new.size() || c >= old_to_new.size()) continue;
-        const std::array<std::uint32_t, 4> entry = {old_to_new[a], old_to_new[b], old_to_new[c],
-                                                    static_cast<std::uint32_t>(t)};
-        if (entry[0] == tri::kNone || entry[1] == tri::kNone || entry[2] == tri::kNone) continue;
-        old_triangles.push_back(entry);
+        if (survives(t)) ++start[renumbered(t, 0) + 2];
     }
-    std::sort(old_triangles.begin(), old_triangles.end());
+    for (std::size_t v = 2; v < start.size(); ++v) start[v] += start[v - 1];
+    std::vector<std::array<std::uint32_t, 3>> old_triangles(start.back());
+    for (std::size_t t = 0; 3 * t < before.size(); ++t) {
+        if (!survives(t)) continue;
+        old_triangles[start[renumbered(t, 0) + 1]++] = {renumbered(t, 1), renumbered(t, 2),
+                                                        static_cast<std::uint32_t>(t)};
+    }
     std::vector<tri::TriIdx> old_of_new(mesh.triangle_count(), tri::kNone);
     for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
-        const std::array<std::uint32_t, 4> key = {mesh.triangles[3 * t], mesh.triangles[3 * t + 1],
-                                                  mesh.triangles[3 * t + 2], 0};
-        const auto it = std::lower_bound(old_triangles.begin(), old_triangles.end(), key);
-        if (it != old_triangles.end() && (*it)[0] == key[0] && (*it)[1] == key[1] &&
-            (*it)[2] == key[2]) {
-            old_of_new[t] = (*it)[3];
+        const tri::VertIdx* v = &mesh.triangles[3 * std::size_t{t}];
+        for (std::uint32_t i = start[v[0]]; i < start[v[0] + 1]; ++i) {
+            if (old_triangles[i][0] == v[1] && old_triangles[i][1] == v[2]) {
+                old_of_new[t] = old_triangles[i][2];
+                break;
+            }
         }
     }
     memory.stamps.renumber(old_of_new);
@@ -513,6 +527,8 @@ class MetricMesher {
     MetricFromLogFormMemo memo_;
     VertexMetrics vertices_;
     std::vector<bool> known_;
+    /// field_halfway of the long edges proposed so far, by their ends (u << 32 | v).
+    std::unordered_map<std::uint64_t, double> halfway_;
     MetricDelaunayCounters2 counters_;
 };
 
@@ -573,7 +589,11 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
                 know(u);
                 know(v);
                 if (!(vertices_.length(u, v, dx, dy) > kSqrt2)) continue;
-                const double half = field_halfway(options_.metric, p, dx, dy);
+                // An edge still long in a later pass (its point was too close) proposes the
+                // same point: its halfway parameter is kept (vertices never move here).
+                const auto [slot, fresh] = halfway_.try_emplace(std::uint64_t{u} << 32 | v, 0.0);
+                if (fresh) slot->second = field_halfway(options_.metric, p, dx, dy);
+                const double half = slot->second;
                 proposals.push_back(p[0] + half * dx);
                 proposals.push_back(p[1] + half * dy);
             }
