@@ -20,6 +20,7 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
+#include "triangulation/mesh/flip_2d.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
 #include "triangulation/modification/vertex_removal_2d.hpp"
@@ -476,18 +477,20 @@ tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics&
         memory.stamps.reset(mesh.triangle_count());
         memory.unit = unit;
     }
-    tri::EdgeSwapCounters c = metric_swaps_2d(mesh, at.at, true, at.memo, &memory.in_ellipse);
     // In a constant metric (the same at every vertex, whatever the field's kind) the in-ellipse
     // triangulation is the Delaunay one of the mapped points, the lengths' own optimum: the
     // shorter diagonal would only undo swaps the next pass redoes.
     const Metric2& first = at.at.front();
-    if (std::all_of(at.at.begin(), at.at.end(), [&first](const Metric2& m) {
-            return m.h1 == first.h1 && m.h2 == first.h2 && m.c == first.c && m.s == first.s;
-        })) {
-        return c;
-    }
+    const bool constant = std::all_of(at.at.begin(), at.at.end(), [&first](const Metric2& m) {
+        return m.h1 == first.h1 && m.h2 == first.h2 && m.c == first.c && m.s == first.s;
+    });
+    // Both criteria on one lending of the mesh as half-edges.
+    tri::HalfEdgeEdit edit(mesh);
+    tri::EdgeSwapCounters c =
+        metric_swaps_2d(edit.mesh(), at.at, true, at.memo, &memory.in_ellipse);
+    if (constant) return c;
     const tri::EdgeSwapCounters d =
-        shorter_diagonal_swaps_2d(mesh, at.at, at.memo, &memory.shorter);
+        shorter_diagonal_swaps_2d(edit.mesh(), at.at, at.memo, &memory.shorter);
     c.swaps += d.swaps;
     c.budget_stops += d.budget_stops;
     return c;

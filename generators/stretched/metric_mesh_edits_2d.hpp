@@ -50,6 +50,17 @@ triangulation::EdgeSwapCounters shorter_diagonal_swaps_2d(
     triangulation::Triangulation2& mesh, std::span<const Metric2> metrics,
     MetricFromLogFormMemo* memo = nullptr, triangulation::SwapVerdicts2* verdicts = nullptr);
 
+/// The same two on a mesh already lent as half-edges (a triangulation::HalfEdgeEdit's): the same
+/// swaps, the half-edges built once for both.
+triangulation::EdgeSwapCounters metric_swaps_2d(triangulation::TriMesh2& mesh,
+                                                std::span<const Metric2> metrics,
+                                                bool log_euclidean, MetricFromLogFormMemo* memo,
+                                                triangulation::SwapVerdicts2* verdicts);
+triangulation::EdgeSwapCounters shorter_diagonal_swaps_2d(triangulation::TriMesh2& mesh,
+                                                          std::span<const Metric2> metrics,
+                                                          MetricFromLogFormMemo* memo,
+                                                          triangulation::SwapVerdicts2* verdicts);
+
 /// How far one smoothing move may go.
 enum class MoveLimit {
     /// At most `limit` times the vertex metric's smallest size, in every direction (a stretched

@@ -218,11 +218,10 @@ constexpr std::uint64_t kNoBudget = ~std::uint64_t{0};
 
 /// The loop over a whole Triangulation2, lent as half-edges.
 template <class Prefers>
-EdgeSwapCounters swap_loop(Triangulation2& mesh, bool wide, Prefers&& prefers,
-                           std::uint64_t budget = kNoBudget, SwapVerdicts2* verdicts = nullptr) {
+EdgeSwapCounters swap_loop(Triangulation2& mesh, bool wide, Prefers&& prefers) {
     validate_points_2d(mesh.xy);
     HalfEdgeEdit edit(mesh);
-    return swap_queue(edit.mesh(), wide, {}, true, budget, verdicts,
+    return swap_queue(edit.mesh(), wide, {}, true, kNoBudget, nullptr,
                       std::forward<Prefers>(prefers));
 }
 
@@ -401,23 +400,22 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinTotalLength) {
 
 namespace {
 
-/// swap_loop with a criterion that has no global potential: after max_swaps_per_edge times the
-/// number of edges swaps, every further quadrilateral is kept (counted in budget_stops).
+/// The loop with a criterion that has no global potential, on a mesh lent as half-edges (no
+/// dead triangles): after max_swaps_per_edge times the number of edges swaps, every further
+/// quadrilateral is kept (counted in budget_stops).
 template <class Prefers>
-EdgeSwapCounters budgeted_swap_loop(Triangulation2& mesh, std::uint32_t max_swaps_per_edge,
-                                    SwapVerdicts2* verdicts, Prefers&& prefers) {
-    const std::uint64_t budget =
-        std::uint64_t{max_swaps_per_edge} * 3 * std::uint64_t{mesh.triangle_count()};
-    return swap_loop(mesh, false, std::forward<Prefers>(prefers), budget, verdicts);
+EdgeSwapCounters budgeted_swap_queue(TriMesh2& work, std::uint32_t max_swaps_per_edge,
+                                     SwapVerdicts2* verdicts, Prefers&& prefers) {
+    const std::uint64_t triangles = work.tv.size() / 3;
+    const std::uint64_t budget = std::uint64_t{max_swaps_per_edge} * 3 * triangles;
+    return swap_queue(work, false, {}, true, budget, verdicts, std::forward<Prefers>(prefers));
 }
 
-}  // namespace
-
-EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) {
-    if (criterion.metrics.size() != 3 * std::size_t{mesh.vertex_count()}) {
+void check_metrics(std::uint32_t vertex_count, const MetricInEllipse& criterion) {
+    if (criterion.metrics.size() != 3 * std::size_t{vertex_count}) {
         throw InputError("metric swapping needs three values per vertex: got " +
                          std::to_string(criterion.metrics.size()) + " values for " +
-                         std::to_string(mesh.vertex_count()) + " vertices");
+                         std::to_string(vertex_count) + " vertices");
     }
     for (const double m : criterion.metrics) {
         if (!std::isfinite(m)) {
@@ -425,9 +423,13 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) 
                              ")");
         }
     }
-    return budgeted_swap_loop(
-        mesh, criterion.max_swaps_per_edge, criterion.verdicts,
-        [&](const TriMesh2& work, const Quad& q) {
+}
+
+/// MetricInEllipse's loop on the lent mesh (criterion checked).
+EdgeSwapCounters metric_swap_queue(TriMesh2& work, const MetricInEllipse& criterion) {
+    return budgeted_swap_queue(
+        work, criterion.max_swaps_per_edge, criterion.verdicts,
+        [&](const TriMesh2& mesh, const Quad& q) {
             double m[3] = {0, 0, 0};
             if (criterion.quad_metric) {
                 criterion.quad_metric(q.a, q.b, q.c, q.d, m);
@@ -437,20 +439,48 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) 
                         m[k] += 0.25 * criterion.metrics[3 * std::size_t{v} + k];
                 }
             }
-            return predicates::in_ellipse_sos(work.point(q.a), work.point(q.b), work.point(q.c),
-                                              work.point(q.d), m, q.a, q.b, q.c,
+            return predicates::in_ellipse_sos(mesh.point(q.a), mesh.point(q.b), mesh.point(q.c),
+                                              mesh.point(q.d), m, q.a, q.b, q.c,
                                               q.d) == Sign::Positive;
         });
 }
 
+/// QuadPreference's loop on the lent mesh (criterion checked).
+EdgeSwapCounters preference_swap_queue(TriMesh2& work, const QuadPreference& criterion) {
+    return budgeted_swap_queue(work, criterion.max_swaps_per_edge, criterion.verdicts,
+                               [&](const TriMesh2& mesh, const Quad& q) {
+                                   return criterion.swap({q.a, q.b, q.c, q.d},
+                                                         {mesh.point(q.a), mesh.point(q.b),
+                                                          mesh.point(q.c), mesh.point(q.d)});
+                               });
+}
+
+}  // namespace
+
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) {
+    check_metrics(mesh.vertex_count(), criterion);
+    validate_points_2d(mesh.xy);
+    HalfEdgeEdit edit(mesh);
+    return metric_swap_queue(edit.mesh(), criterion);
+}
+
+EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, MetricInEllipse criterion) {
+    check_metrics(mesh.vertex_count(), criterion);
+    validate_points_2d(mesh.xy);
+    return metric_swap_queue(mesh, criterion);
+}
+
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, QuadPreference criterion) {
     if (!criterion.swap) throw InputError("quadrilateral swapping needs a decision");
-    return budgeted_swap_loop(mesh, criterion.max_swaps_per_edge, criterion.verdicts,
-                              [&](const TriMesh2& work, const Quad& q) {
-                                  return criterion.swap({q.a, q.b, q.c, q.d},
-                                                        {work.point(q.a), work.point(q.b),
-                                                         work.point(q.c), work.point(q.d)});
-                              });
+    validate_points_2d(mesh.xy);
+    HalfEdgeEdit edit(mesh);
+    return preference_swap_queue(edit.mesh(), criterion);
+}
+
+EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, QuadPreference criterion) {
+    if (!criterion.swap) throw InputError("quadrilateral swapping needs a decision");
+    validate_points_2d(mesh.xy);
+    return preference_swap_queue(mesh, criterion);
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion) {

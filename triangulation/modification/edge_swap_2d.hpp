@@ -184,6 +184,12 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion);
 /// Swaps strictly convex quadrilaterals as criterion.swap says. @throws InputError when it is
 /// empty.
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, QuadPreference criterion);
+/// The same two on a mesh already lent as half-edges (a HalfEdgeEdit's: open, boundary twins
+/// kNone, flag bit 0 constrained, no dead triangles), from every interior edge: the same swaps,
+/// and runs in a row on one lending (the metric generator's two criteria) build the half-edges
+/// once.
+EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, MetricInEllipse criterion);
+EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, QuadPreference criterion);
 
 /// Fills mesh.neighbors from mesh.triangles (each undirected edge shared by at most two
 /// triangles, in opposite directions) and sizes mesh.constrained to match when it is not empty.
