@@ -530,7 +530,9 @@ class MetricMesher {
     MetricFromLogFormMemo memo_;
     VertexMetrics vertices_;
     std::vector<bool> known_;
-    /// field_halfway of the long edges proposed so far, by their ends (u << 32 | v).
+    /// The edges measured so far, by their ends (u << 32 | v): field_halfway of a long one,
+    /// kShort for one not longer than sqrt 2.
+    static constexpr double kShort = -1;
     std::unordered_map<std::uint64_t, double> halfway_;
     MetricDelaunayCounters2 counters_;
 };
@@ -589,13 +591,17 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
                 const double* p = mesh.point(u);
                 const double* q = mesh.point(v);
                 const double dx = q[0] - p[0], dy = q[1] - p[1];
-                know(u);
-                know(v);
-                if (!(vertices_.length(u, v, dx, dy) > kSqrt2)) continue;
-                // An edge still long in a later pass (its point was too close) proposes the
-                // same point: its halfway parameter is kept (vertices never move here).
-                const auto [slot, fresh] = halfway_.try_emplace(std::uint64_t{u} << 32 | v, 0.0);
-                if (fresh) slot->second = field_halfway(options_.metric, p, dx, dy);
+                // Each edge is measured once (vertices never move here): a pass after the
+                // first finds most edges as they were, and a long edge whose point was too close
+                // proposes the same point again.
+                const auto [slot, fresh] = halfway_.try_emplace(std::uint64_t{u} << 32 | v, kShort);
+                if (fresh) {
+                    know(u);
+                    know(v);
+                    if (vertices_.length(u, v, dx, dy) > kSqrt2)
+                        slot->second = field_halfway(options_.metric, p, dx, dy);
+                }
+                if (slot->second == kShort) continue;
                 const double half = slot->second;
                 proposals.push_back(p[0] + half * dx);
                 proposals.push_back(p[1] + half * dy);
