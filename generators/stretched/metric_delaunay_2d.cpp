@@ -3,11 +3,13 @@
 #include "generators/stretched/metric_delaunay_2d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "base/errors.hpp"
@@ -18,6 +20,7 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
+#include "triangulation/mesh/flip_2d.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
 #include "triangulation/modification/vertex_removal_2d.hpp"
@@ -148,18 +151,138 @@ double metric_area(const MetricField2& field, const double* p, const double* q, 
            metric_area(field, rp, qr, r, depth + 1) + metric_area(field, pq, qr, rp, depth + 1);
 }
 
+/// The metric lengths of a mesh's edges (VertexMetrics::length, from the origin of each slot
+/// 3t + k) with the stamp its triangle had when measured: while the triangle keeps it, the edge
+/// joins the same two vertices at the same points in the same metrics.
+struct SlotLengths {
+    std::vector<double> length;
+    std::vector<std::uint32_t> stamp;
+    std::uint32_t era = 0;
+
+    /// The length of slot e of triangle t, measured again only when t changed since.
+    template <class Measure>
+    double operator()(const tri::TriangleStamps2& stamps, tri::TriIdx t, std::size_t e,
+                      Measure&& measure) {
+        if (era != stamps.era()) {
+            // The stamps' clock wrapped: the stamps kept here may come again.
+            length.clear();
+            stamp.clear();
+            era = stamps.era();
+        }
+        if (e >= stamp.size()) {
+            length.resize(e + 1, 0.0);
+            stamp.resize(e + 1, 0);
+        }
+        const std::uint32_t now = stamps[t];
+        if (now != 0 && stamp[e] == now) return length[e];
+        length[e] = measure();
+        stamp[e] = now;
+        return length[e];
+    }
+    /// The triangles were renumbered (as TriangleStamps2::renumber).
+    void renumber(std::span<const tri::TriIdx> old_of_new) {
+        std::vector<double> renumbered_length(3 * old_of_new.size(), 0.0);
+        std::vector<std::uint32_t> renumbered_stamp(3 * old_of_new.size(), 0);
+        for (std::size_t t = 0; t < old_of_new.size(); ++t) {
+            const std::size_t old = old_of_new[t];
+            if (old_of_new[t] == tri::kNone || 3 * old + 2 >= stamp.size()) continue;
+            for (std::size_t k = 0; k < 3; ++k) {
+                renumbered_length[3 * t + k] = length[3 * old + k];
+                renumbered_stamp[3 * t + k] = stamp[3 * old + k];
+            }
+        }
+        length = std::move(renumbered_length);
+        stamp = std::move(renumbered_stamp);
+    }
+};
+
+/// What the edits of one run keep from one pass to the next: the mesh's triangle stamps, each
+/// swap criterion's verdicts (triangulation::SwapVerdicts2) and the long edges not split, so that
+/// a pass decides again only the quadrilaterals changed since the last, and the edges' lengths.
+/// Every edit of the mesh between passes renews the stamps of the triangles it changes (swaps,
+/// split_long_edges, remove_short_edges, the smoothing's moves).
+struct SwapMemory {
+    tri::TriangleStamps2 stamps;
+    tri::SwapVerdicts2 in_ellipse{&stamps, {}, {}, 0};
+    tri::SwapVerdicts2 shorter{&stamps, {}, {}, 0};
+    /// split_long_edges' verdicts: the slot's quadrilateral was found not to split.
+    tri::SwapVerdicts2 no_split{&stamps, {}, {}, 0};
+    SlotLengths lengths;
+    /// The binary exponent of the smallest size at the last pass: the swaps' log forms are in
+    /// its unit (a new smaller size renews every stamp).
+    int unit = std::numeric_limits<int>::min();
+};
+
+/// After a renumbering of the mesh's vertices (old_to_new, in their order) and triangles (from
+/// `before`, the old triangles' vertices): each triangle found among the old ones (the same
+/// vertices in the same order) keeps its stamp and verdicts, the others are new.
+void renumber_swap_memory(SwapMemory& memory, const std::vector<tri::VertIdx>& before,
+                          const tri::Triangulation2& mesh,
+                          const std::vector<tri::VertIdx>& old_to_new) {
+    // The old triangles without a removed vertex, in the new numbering, grouped by their first
+    // vertex (a counting sort: start[v] .. start[v + 1] for vertex v).
+    const std::size_t nv = mesh.vertex_count();
+    std::vector<std::uint32_t> start(nv + 2, 0);
+    const auto renumbered = [&](std::size_t t, std::size_t k) {
+        const tri::VertIdx v = before[3 * t + k];
+        return v < old_to_new.size() ? old_to_new[v] : tri::kNone;
+    };
+    const auto survives = [&](std::size_t t) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            const tri::VertIdx v = renumbered(t, k);
+            if (v == tri::kNone || v >= nv) return false;
+        }
+        return true;
+    };
+    for (std::size_t t = 0; 3 * t < before.size(); ++t) {
+        if (survives(t)) ++start[renumbered(t, 0) + 2];
+    }
+    for (std::size_t v = 2; v < start.size(); ++v) start[v] += start[v - 1];
+    std::vector<std::array<std::uint32_t, 3>> old_triangles(start.back());
+    for (std::size_t t = 0; 3 * t < before.size(); ++t) {
+        if (!survives(t)) continue;
+        old_triangles[start[renumbered(t, 0) + 1]++] = {renumbered(t, 1), renumbered(t, 2),
+                                                        static_cast<std::uint32_t>(t)};
+    }
+    std::vector<tri::TriIdx> old_of_new(mesh.triangle_count(), tri::kNone);
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        const tri::VertIdx* v = &mesh.triangles[3 * std::size_t{t}];
+        for (std::uint32_t i = start[v[0]]; i < start[v[0] + 1]; ++i) {
+            if (old_triangles[i][0] == v[1] && old_triangles[i][1] == v[2]) {
+                old_of_new[t] = old_triangles[i][2];
+                break;
+            }
+        }
+    }
+    memory.stamps.renumber(old_of_new);
+    memory.in_ellipse.renumber(old_of_new);
+    memory.shorter.renumber(old_of_new);
+    memory.no_split.renumber(old_of_new);
+    memory.lengths.renumber(old_of_new);
+}
+
 /// One pass over the finished mesh's unconstrained edges: each longer than sqrt 2
 /// (VertexMetrics::length) is split at its halfway point m (field_halfway) into four triangles,
 /// unless m lies closer than min_spacing to one of the edge's two opposite vertices, or one of the
 /// four triangles would not be strictly counter-clockwise (exact orient2d), or one of its two
 /// triangles was already changed in this pass. `at` (the field per vertex) and the triangles'
-/// attributes (when present) follow. Returns the number of splits.
+/// attributes (when present) follow, and the four triangles get new stamps; an edge found not to
+/// split on the same two triangles in an earlier pass (memory.no_split) is not measured again.
+/// Returns the number of splits.
 std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
                                std::vector<double>& attributes, const MetricField2& field,
-                               double min_spacing) {
+                               double min_spacing, SwapMemory& memory) {
     const tri::TriIdx count = mesh.triangle_count();
     std::vector<std::uint8_t> changed(count, 0);
     std::uint64_t splits = 0;
+    tri::TriangleStamps2& stamps = memory.stamps;
+    tri::SwapVerdicts2& no_split = memory.no_split;
+    if (no_split.era != stamps.era()) {
+        no_split.kept.clear();
+        no_split.era = stamps.era();
+    }
+    no_split.kept.resize(3 * std::size_t{count}, 0);
+    no_split.convex.resize(3 * std::size_t{count}, 0);  // unused, sized as kept for renumber
     for (tri::TriIdx t = 0; t < count; ++t) {
         for (unsigned k = 0; k < 3 && changed[t] == 0; ++k) {
             const tri::TriIdx u = mesh.neighbors[3 * t + k];
@@ -172,10 +295,26 @@ std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
             unsigned j = 0;
             while (mesh.neighbors[3 * u + j] != t) ++j;
             const tri::VertIdx d = mesh.triangles[3 * u + (j + 2) % 3];
+            // The verdict of an earlier pass on the same two triangles (the same quadrilateral,
+            // the same points and metrics) stands; a pass that keeps the edge records it.
+            const std::size_t e = 3 * std::size_t{t} + k;
+            std::uint64_t key = 0;
+            if (stamps[t] != 0 && stamps[u] != 0 && no_split.era == stamps.era()) {
+                key = std::uint64_t{stamps[t]} << 32 | stamps[u];
+            }
+            if (key != 0 && no_split.kept[e] == key) continue;
+            const auto keep = [&] {
+                if (key != 0 && no_split.era == stamps.era()) no_split.kept[e] = key;
+            };
             const double* pa = mesh.point(a);
             const double* pb = mesh.point(b);
             const double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
-            if (!(at.length(a, b, dx, dy) > kSqrt2)) continue;
+            const double length =
+                memory.lengths(stamps, t, e, [&] { return at.length(a, b, dx, dy); });
+            if (!(length > kSqrt2)) {
+                keep();
+                continue;
+            }
             const double half = field_halfway(field, pa, dx, dy);
             const double m[2] = {pa[0] + half * dx, pa[1] + half * dy};
             const Metric2 mm = field(m[0], m[1]);
@@ -184,7 +323,10 @@ std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
                 const double* pv = mesh.point(v);
                 return at.length_to(mm, lm, v, pv[0] - m[0], pv[1] - m[1]) < min_spacing;
             };
-            if (close(c) || close(d)) continue;
+            if (close(c) || close(d)) {
+                keep();
+                continue;
+            }
             const double* pc = mesh.point(c);
             const double* pd = mesh.point(d);
             using predicates::Sign;
@@ -192,6 +334,7 @@ std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
                 predicates::orient2d(m, pb, pc) != Sign::Positive ||
                 predicates::orient2d(pb, m, pd) != Sign::Positive ||
                 predicates::orient2d(m, pa, pd) != Sign::Positive) {
+                keep();
                 continue;
             }
             // t = (a, b, c) and u = (b, a, d) become t (a, m, c), t2 (m, b, c), u (b, m, d) and
@@ -233,6 +376,8 @@ std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
             write(u, {b, mv, d}, {t2, u2, n_db}, {0, 0, c_db});
             write(t2, {mv, b, c}, {u, n_bc, t}, {0, c_bc, 0});
             write(u2, {mv, a, d}, {t, n_ad, u}, {0, c_ad, 0});
+            for (const tri::TriIdx changed_triangle : {t, u, t2, u2})
+                stamps.touch(changed_triangle);
             const auto relink = [&](tri::TriIdx n, tri::TriIdx from, tri::TriIdx to) {
                 if (n == tri::kNone) return;
                 for (unsigned i = 0; i < 3; ++i) {
@@ -258,9 +403,9 @@ std::uint64_t split_long_edges(tri::Triangulation2& mesh, VertexMetrics& at,
 /// (VertexMetrics::length): the end numbered from `first_removable` on (the later one when both
 /// are), at most one vertex of each triangle's star per pass (no two removed vertices are
 /// neighbours), by remove_vertices_2d (the star retriangulated, exact); `at` is renumbered with
-/// the mesh. Returns the number of vertices removed.
+/// the mesh, and `memory` follows the triangles. Returns the number of vertices removed.
 std::uint64_t remove_short_edges(tri::Triangulation2& mesh, VertexMetrics& at,
-                                 tri::VertIdx first_removable) {
+                                 tri::VertIdx first_removable, SwapMemory& memory) {
     const tri::VertIdx nv = mesh.vertex_count();
     // 0 untouched, 1 to remove, 2 a neighbour of one to remove.
     std::vector<std::uint8_t> mark(nv, 0);
@@ -275,7 +420,10 @@ std::uint64_t remove_short_edges(tri::Triangulation2& mesh, VertexMetrics& at,
             if (v < first_removable || mark[a] != 0 || mark[b] != 0) continue;
             const double* pa = mesh.point(a);
             const double* pb = mesh.point(b);
-            if (!(at.length(a, b, pb[0] - pa[0], pb[1] - pa[1]) < kUnitLow)) continue;
+            const double length = memory.lengths(memory.stamps, t, 3 * std::size_t{t} + k, [&] {
+                return at.length(a, b, pb[0] - pa[0], pb[1] - pa[1]);
+            });
+            if (!(length < kUnitLow)) continue;
             mark[v] = 1;
             chosen.push_back(v);
             // Its neighbours (the vertices of the triangles at v) may not go in this pass.
@@ -301,8 +449,10 @@ std::uint64_t remove_short_edges(tri::Triangulation2& mesh, VertexMetrics& at,
         removable.push_back(v);
         for (const tri::VertIdx w : around[v]) blocked[w] = 1;
     }
+    const std::vector<tri::VertIdx> before = mesh.triangles;
     const tri::VertexRemoval2Result removed =
         tri::remove_vertices_2d(mesh, removable, first_removable);
+    renumber_swap_memory(memory, before, mesh, removed.old_to_new);
     VertexMetrics renumbered{at.unit, std::vector<Metric2>(mesh.vertex_count()),
                              std::vector<LogMetric2>(mesh.vertex_count()), at.memo};
     for (tri::VertIdx v = 0; v < nv; ++v) {
@@ -318,18 +468,29 @@ std::uint64_t remove_short_edges(tri::Triangulation2& mesh, VertexMetrics& at,
 /// The generator's swaps: in-ellipse in the log-Euclidean mean of each quadrilateral's metrics,
 /// then (unless the metric is the same at every vertex) towards the shorter diagonal, each in the
 /// mean of its own ends' metrics.
-tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics& at) {
-    tri::EdgeSwapCounters c = metric_swaps_2d(mesh, at.at, true, at.memo);
+tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics& at,
+                                 SwapMemory& memory) {
+    double h_min = std::numeric_limits<double>::infinity();
+    for (const Metric2& m : at.at) h_min = std::min({h_min, m.h1, m.h2});
+    const int unit = std::isfinite(h_min) ? std::ilogb(h_min) : 0;
+    if (unit != memory.unit) {
+        memory.stamps.reset(mesh.triangle_count());
+        memory.unit = unit;
+    }
     // In a constant metric (the same at every vertex, whatever the field's kind) the in-ellipse
     // triangulation is the Delaunay one of the mapped points, the lengths' own optimum: the
     // shorter diagonal would only undo swaps the next pass redoes.
     const Metric2& first = at.at.front();
-    if (std::all_of(at.at.begin(), at.at.end(), [&first](const Metric2& m) {
-            return m.h1 == first.h1 && m.h2 == first.h2 && m.c == first.c && m.s == first.s;
-        })) {
-        return c;
-    }
-    const tri::EdgeSwapCounters d = shorter_diagonal_swaps_2d(mesh, at.at, at.memo);
+    const bool constant = std::all_of(at.at.begin(), at.at.end(), [&first](const Metric2& m) {
+        return m.h1 == first.h1 && m.h2 == first.h2 && m.c == first.c && m.s == first.s;
+    });
+    // Both criteria on one lending of the mesh as half-edges.
+    tri::HalfEdgeEdit edit(mesh);
+    tri::EdgeSwapCounters c =
+        metric_swaps_2d(edit.mesh(), at.at, true, at.memo, &memory.in_ellipse);
+    if (constant) return c;
+    const tri::EdgeSwapCounters d =
+        shorter_diagonal_swaps_2d(edit.mesh(), at.at, at.memo, &memory.shorter);
     c.swaps += d.swaps;
     c.budget_stops += d.budget_stops;
     return c;
@@ -369,6 +530,10 @@ class MetricMesher {
     MetricFromLogFormMemo memo_;
     VertexMetrics vertices_;
     std::vector<bool> known_;
+    /// The edges measured so far, by their ends (u << 32 | v): field_halfway of a long one,
+    /// kShort for one not longer than sqrt 2.
+    static constexpr double kShort = -1;
+    std::unordered_map<std::uint64_t, double> halfway_;
     MetricDelaunayCounters2 counters_;
 };
 
@@ -426,10 +591,18 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
                 const double* p = mesh.point(u);
                 const double* q = mesh.point(v);
                 const double dx = q[0] - p[0], dy = q[1] - p[1];
-                know(u);
-                know(v);
-                if (!(vertices_.length(u, v, dx, dy) > kSqrt2)) continue;
-                const double half = field_halfway(options_.metric, p, dx, dy);
+                // Each edge is measured once (vertices never move here): a pass after the
+                // first finds most edges as they were, and a long edge whose point was too close
+                // proposes the same point again.
+                const auto [slot, fresh] = halfway_.try_emplace(std::uint64_t{u} << 32 | v, kShort);
+                if (fresh) {
+                    know(u);
+                    know(v);
+                    if (vertices_.length(u, v, dx, dy) > kSqrt2)
+                        slot->second = field_halfway(options_.metric, p, dx, dy);
+                }
+                if (slot->second == kShort) continue;
+                const double half = slot->second;
                 proposals.push_back(p[0] + half * dx);
                 proposals.push_back(p[1] + half * dy);
             }
@@ -491,7 +664,8 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
         VertexMetrics at{unit_, {}, {}, &memo_};
         for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v)
             at.push_back(options_.metric(mesh.point(v)[0], mesh.point(v)[1]));
-        tri::EdgeSwapCounters swapped = quad_swaps(mesh, at);
+        SwapMemory memory;
+        tri::EdgeSwapCounters swapped = quad_swaps(mesh, at, memory);
         result.counters.swaps = swapped.swaps;
         result.counters.swap_budget_hits = swapped.budget_stops;
         // Rounds of splits of the edges still long and removals at the edges too short, each
@@ -503,20 +677,20 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
         const auto first_inserted = static_cast<tri::VertIdx>(boundary_.xy.size() / 2);
         for (int round = 0; round < kEditRounds; ++round) {
             if (result.counters.inserted + result.counters.late_splits >= budget) break;
-            const std::uint64_t split = split_long_edges(mesh, at, out.triangle_attributes,
-                                                         options_.metric, options_.min_spacing);
+            const std::uint64_t split = split_long_edges(
+                mesh, at, out.triangle_attributes, options_.metric, options_.min_spacing, memory);
             result.counters.late_splits += split;
             if (split > 0) {
-                swapped = quad_swaps(mesh, at);
+                swapped = quad_swaps(mesh, at, memory);
                 result.counters.swaps += swapped.swaps;
                 result.counters.swap_budget_hits += swapped.budget_stops;
             }
             std::uint64_t removed = 0;
             if (out.triangle_attributes.empty()) {
-                removed = remove_short_edges(mesh, at, first_inserted);
+                removed = remove_short_edges(mesh, at, first_inserted, memory);
                 result.counters.late_removals += removed;
                 if (removed > 0) {
-                    swapped = quad_swaps(mesh, at);
+                    swapped = quad_swaps(mesh, at, memory);
                     result.counters.swaps += swapped.swaps;
                     result.counters.swap_budget_hits += swapped.budget_stops;
                 }
@@ -529,6 +703,7 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
         // measured as the quality report does.
         const std::vector<double> relax(mesh.vertex_count(), 0.5);
         for (int pass = 0; pass < options_.smoothing_passes; ++pass) {
+            const std::vector<double> unmoved = mesh.xy;
             const PointSmoothingCounters2 smoothed =
                 smooth_metric_points_2d(mesh, at.at, relax, 0.3, MoveLimit::MetricLength,
                                         first_inserted, true, true, &memo_);
@@ -537,7 +712,19 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
                 at.at[v] = options_.metric(mesh.point(v)[0], mesh.point(v)[1]);
                 at.logs[v] = scaled_log_form(at.at[v], unit_);
             }
-            swapped = quad_swaps(mesh, at);
+            // The triangles at a moved point (whose metric moved with it) are new; an unmoved
+            // point's metric is the field's value at the same point, the same as before.
+            for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+                for (unsigned k = 0; k < 3; ++k) {
+                    const std::size_t v = mesh.triangles[3 * t + k];
+                    if (mesh.xy[2 * v] != unmoved[2 * v] ||
+                        mesh.xy[2 * v + 1] != unmoved[2 * v + 1]) {
+                        memory.stamps.touch(t);
+                        break;
+                    }
+                }
+            }
+            swapped = quad_swaps(mesh, at, memory);
             result.counters.swaps += swapped.swaps;
             result.counters.swap_budget_hits += swapped.budget_stops;
         }

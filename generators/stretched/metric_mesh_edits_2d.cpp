@@ -84,10 +84,10 @@ class LogForms {
     MetricFromLogFormMemo* memo_ = nullptr;
 };
 
-}  // namespace
-
-tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
-                                      bool log_euclidean, MetricFromLogFormMemo* memo) {
+/// metric_swaps_2d on a Triangulation2 or on one lent as half-edges (TriMesh2).
+template <class Mesh>
+tri::EdgeSwapCounters metric_swaps(Mesh& mesh, std::span<const Metric2> metrics, bool log_euclidean,
+                                   MetricFromLogFormMemo* memo, tri::SwapVerdicts2* verdicts) {
     double h_ref = std::numeric_limits<double>::infinity();
     for (const Metric2& m : metrics) h_ref = std::min({h_ref, m.h1, m.h2});
     std::vector<double> matrices(3 * metrics.size());
@@ -127,13 +127,17 @@ tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const
             }
             std::copy(last->matrix, last->matrix + 3, out);
         };
+        // The decision is then a function of the quadrilateral's vertices alone.
+        criterion.verdicts = verdicts;
     }
     return tri::swap_edges_2d(mesh, criterion);
 }
 
-tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
-                                                std::span<const Metric2> metrics,
-                                                MetricFromLogFormMemo* memo) {
+/// shorter_diagonal_swaps_2d on a Triangulation2 or on one lent as half-edges (TriMesh2).
+template <class Mesh>
+tri::EdgeSwapCounters shorter_diagonal_swaps(Mesh& mesh, std::span<const Metric2> metrics,
+                                             MetricFromLogFormMemo* memo,
+                                             tri::SwapVerdicts2* verdicts) {
     const auto forms = std::make_shared<const LogForms>(metrics, memo);
     tri::QuadPreference criterion;
     criterion.swap = [forms](const std::array<tri::VertIdx, 4>& v,
@@ -174,7 +178,36 @@ tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
         return worst_after >= kSliverShape ||
                worst_after >= std::min(shape(0, 1, 2), shape(1, 0, 3));
     };
+    criterion.verdicts = verdicts;
     return tri::swap_edges_2d(mesh, criterion);
+}
+
+}  // namespace
+
+tri::EdgeSwapCounters metric_swaps_2d(tri::Triangulation2& mesh, std::span<const Metric2> metrics,
+                                      bool log_euclidean, MetricFromLogFormMemo* memo,
+                                      tri::SwapVerdicts2* verdicts) {
+    return metric_swaps(mesh, metrics, log_euclidean, memo, verdicts);
+}
+
+tri::EdgeSwapCounters metric_swaps_2d(tri::TriMesh2& mesh, std::span<const Metric2> metrics,
+                                      bool log_euclidean, MetricFromLogFormMemo* memo,
+                                      tri::SwapVerdicts2* verdicts) {
+    return metric_swaps(mesh, metrics, log_euclidean, memo, verdicts);
+}
+
+tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::Triangulation2& mesh,
+                                                std::span<const Metric2> metrics,
+                                                MetricFromLogFormMemo* memo,
+                                                tri::SwapVerdicts2* verdicts) {
+    return shorter_diagonal_swaps(mesh, metrics, memo, verdicts);
+}
+
+tri::EdgeSwapCounters shorter_diagonal_swaps_2d(tri::TriMesh2& mesh,
+                                                std::span<const Metric2> metrics,
+                                                MetricFromLogFormMemo* memo,
+                                                tri::SwapVerdicts2* verdicts) {
+    return shorter_diagonal_swaps(mesh, metrics, memo, verdicts);
 }
 
 PointSmoothingCounters2 smooth_metric_points_2d(tri::Triangulation2& mesh,

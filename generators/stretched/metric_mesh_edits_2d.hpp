@@ -29,10 +29,15 @@ namespace exactmesh::generators {
 /// log-Euclidean mean keeps it and measures as metric_quality_report_2d does.
 /// `memo` (optional) takes the means' exponentials (the same swaps, fewer exponentials when the
 /// caller keeps it across calls).
+/// `verdicts` (optional, log_euclidean only): the verdicts of earlier calls on the same mesh
+/// (triangulation::SwapVerdicts2), whose owner resets their stamps whenever a vertex's metric
+/// or the binary exponent of the smallest size of all the metrics changes (the log forms'
+/// unit): the same swaps, fewer decisions.
 triangulation::EdgeSwapCounters metric_swaps_2d(triangulation::Triangulation2& mesh,
                                                 std::span<const Metric2> metrics,
                                                 bool log_euclidean = false,
-                                                MetricFromLogFormMemo* memo = nullptr);
+                                                MetricFromLogFormMemo* memo = nullptr,
+                                                triangulation::SwapVerdicts2* verdicts = nullptr);
 
 /// Swaps each strictly convex quadrilateral whose other diagonal is strictly shorter, each
 /// diagonal measured in the log-Euclidean mean of its own two ends' metrics (as
@@ -40,10 +45,21 @@ triangulation::EdgeSwapCounters metric_swaps_2d(triangulation::Triangulation2& m
 /// matrices in one scale). Where the metric rotates faster than a cell's in-ellipse can follow
 /// (a curved layer of aspect ratio 1000: the ring of a cell's neighbours sags by tens of layer
 /// thicknesses in any single metric), this keeps the edges the report counts.
-/// `memo` as for metric_swaps_2d.
-triangulation::EdgeSwapCounters shorter_diagonal_swaps_2d(triangulation::Triangulation2& mesh,
+/// `memo` and `verdicts` as for metric_swaps_2d.
+triangulation::EdgeSwapCounters shorter_diagonal_swaps_2d(
+    triangulation::Triangulation2& mesh, std::span<const Metric2> metrics,
+    MetricFromLogFormMemo* memo = nullptr, triangulation::SwapVerdicts2* verdicts = nullptr);
+
+/// The same two on a mesh already lent as half-edges (a triangulation::HalfEdgeEdit's): the same
+/// swaps, the half-edges built once for both.
+triangulation::EdgeSwapCounters metric_swaps_2d(triangulation::TriMesh2& mesh,
+                                                std::span<const Metric2> metrics,
+                                                bool log_euclidean, MetricFromLogFormMemo* memo,
+                                                triangulation::SwapVerdicts2* verdicts);
+triangulation::EdgeSwapCounters shorter_diagonal_swaps_2d(triangulation::TriMesh2& mesh,
                                                           std::span<const Metric2> metrics,
-                                                          MetricFromLogFormMemo* memo = nullptr);
+                                                          MetricFromLogFormMemo* memo,
+                                                          triangulation::SwapVerdicts2* verdicts);
 
 /// How far one smoothing move may go.
 enum class MoveLimit {

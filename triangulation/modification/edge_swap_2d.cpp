@@ -110,12 +110,26 @@ bool is_constrained(const TriMesh2& mesh, EdgeIdx e) {
 /// flip keeps the old layout (new diagonal at local 0 of both triangles, picture at the top) and
 /// the swaps, their order and the output are unchanged.
 /// The loop on a mesh already lent as half-edges, from every interior edge (`seeds` empty and
-/// `all`) or from the half-edges in `seeds`.
+/// `all`) or from the half-edges in `seeds`. After `budget` swaps every further strictly convex
+/// quadrilateral is kept (budget_stops). With `verdicts` (not for `wide` criteria, whose decision
+/// reads more than the quadrilateral), a quadrilateral whose two triangles kept their stamps
+/// since a run found it not to swap is not decided again: the same verdict, the same counters.
 template <class Prefers>
 EdgeSwapCounters swap_queue(TriMesh2& work, bool wide, std::span<const EdgeIdx> seeds, bool all,
-                            Prefers&& prefers) {
+                            std::uint64_t budget, SwapVerdicts2* verdicts, Prefers&& prefers) {
     EdgeSwapCounters counters;
     const std::size_t slots = work.tv.size();
+    TriangleStamps2* stamps = verdicts != nullptr ? verdicts->stamps : nullptr;
+    if (stamps != nullptr) {
+        if (verdicts->era != stamps->era()) {
+            verdicts->kept.assign(slots, 0);
+            verdicts->convex.assign(slots, 0);
+            verdicts->era = stamps->era();
+        }
+        // Slots of other sizes of the mesh: their stamps tell which verdicts still stand.
+        verdicts->kept.resize(slots, 0);
+        verdicts->convex.resize(slots, 0);
+    }
     std::vector<std::uint8_t> queued(slots, 0);
     std::deque<EdgeIdx> queue;
     auto push = [&](EdgeIdx e) {
@@ -141,14 +155,47 @@ EdgeSwapCounters swap_queue(TriMesh2& work, bool wide, std::span<const EdgeIdx> 
             ++counters.constrained;
             continue;
         }
+        // The stamps of the quadrilateral's two triangles (0 when either has none).
+        std::uint64_t key = 0;
+        if (stamps != nullptr) {
+            const std::uint64_t own = (*stamps)[triangle_of(e)];
+            const std::uint64_t across = (*stamps)[triangle_of(work.twin[e])];
+            if (own != 0 && across != 0) key = own << 32 | across;
+            if (key != 0 && verdicts->kept[e] == key && verdicts->era == stamps->era()) {
+                if (verdicts->convex[e] == 0) {
+                    ++counters.not_convex;
+                } else if (counters.swaps >= budget) {
+                    ++counters.budget_stops;
+                }
+                continue;
+            }
+        }
         const Quad q = make_quad(work, e);
         if (!strictly_convex(work, q)) {
             ++counters.not_convex;
+            if (key != 0) {
+                verdicts->kept[e] = key;
+                verdicts->convex[e] = 0;
+            }
             continue;
         }
-        if (!prefers(work, q)) continue;
+        if (counters.swaps >= budget) {
+            ++counters.budget_stops;
+            continue;
+        }
+        if (!prefers(work, q)) {
+            if (key != 0) {
+                verdicts->kept[e] = key;
+                verdicts->convex[e] = 1;
+            }
+            continue;
+        }
         const FlipEdges flipped = flip_2d(work, e, 0, 0);
         ++counters.swaps;
+        if (stamps != nullptr) {
+            stamps->touch(triangle_of(e));
+            stamps->touch(triangle_of(q.f));
+        }
         for (const EdgeIdx side : flipped.sides) push(side);
         if (wide) {
             for (const TriIdx inner : {triangle_of(e), triangle_of(q.f)}) {
@@ -167,12 +214,15 @@ EdgeSwapCounters swap_queue(TriMesh2& work, bool wide, std::span<const EdgeIdx> 
     return counters;
 }
 
+constexpr std::uint64_t kNoBudget = ~std::uint64_t{0};
+
 /// The loop over a whole Triangulation2, lent as half-edges.
 template <class Prefers>
 EdgeSwapCounters swap_loop(Triangulation2& mesh, bool wide, Prefers&& prefers) {
     validate_points_2d(mesh.xy);
     HalfEdgeEdit edit(mesh);
-    return swap_queue(edit.mesh(), wide, {}, true, std::forward<Prefers>(prefers));
+    return swap_queue(edit.mesh(), wide, {}, true, kNoBudget, nullptr,
+                      std::forward<Prefers>(prefers));
 }
 
 Corner smaller(const Corner& x, const Corner& y) {
@@ -250,6 +300,55 @@ constexpr std::array<EnumName<SwapCriterion>, 5> kSwapCriterionNames{{
 
 }  // namespace
 
+std::uint32_t TriangleStamps2::next() {
+    if (clock_ == ~std::uint32_t{0}) {
+        // The wrap: every stamp given so far may come again, so every verdict is voided.
+        ++era_;
+        clock_ = 0;
+        std::fill(stamps_.begin(), stamps_.end(), 0u);
+    }
+    return ++clock_;
+}
+
+void TriangleStamps2::reset(std::size_t triangles) {
+    stamps_.assign(triangles, 0);
+    for (std::uint32_t& stamp : stamps_) stamp = next();
+}
+
+void TriangleStamps2::touch(TriIdx t) {
+    if (t >= stamps_.size()) stamps_.resize(std::size_t{t} + 1, 0);
+    stamps_[t] = next();
+}
+
+void TriangleStamps2::renumber(std::span<const TriIdx> old_of_new) {
+    std::vector<std::uint32_t> renumbered(old_of_new.size(), 0);
+    for (std::size_t t = 0; t < old_of_new.size(); ++t) {
+        const TriIdx old = old_of_new[t];
+        renumbered[t] = old != kNone && old < stamps_.size() ? stamps_[old] : 0;
+    }
+    stamps_ = std::move(renumbered);
+    for (std::uint32_t& stamp : stamps_) {
+        // After a wrap in next(), the stamps left are 0: every triangle gets a new one.
+        if (stamp == 0) stamp = next();
+    }
+}
+
+void SwapVerdicts2::renumber(std::span<const TriIdx> old_of_new) {
+    std::vector<std::uint64_t> renumbered_kept(3 * old_of_new.size(), 0);
+    std::vector<std::uint8_t> renumbered_convex(3 * old_of_new.size(), 0);
+    for (std::size_t t = 0; t < old_of_new.size(); ++t) {
+        const TriIdx old = old_of_new[t];
+        const std::size_t from = 3 * std::size_t{old};
+        if (old == kNone || from + 2 >= kept.size() || from + 2 >= convex.size()) continue;
+        for (std::size_t k = 0; k < 3; ++k) {
+            renumbered_kept[3 * t + k] = kept[from + k];
+            renumbered_convex[3 * t + k] = convex[from + k];
+        }
+    }
+    kept = std::move(renumbered_kept);
+    convex = std::move(renumbered_convex);
+}
+
 SwapCriterion swap_criterion_from_name(std::string_view name) {
     return parse_name(kSwapCriterionNames, name, "swap criterion");
 }
@@ -289,7 +388,7 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinMaxAngle) {
 }
 
 EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, MinMaxAngle, std::span<const EdgeIdx> seeds) {
-    return swap_queue(mesh, false, seeds, false, prefers_min_max);
+    return swap_queue(mesh, false, seeds, false, kNoBudget, nullptr, prefers_min_max);
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinTotalLength) {
@@ -301,34 +400,22 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MinTotalLength) {
 
 namespace {
 
-/// swap_loop with a criterion that has no global potential: after max_swaps_per_edge times the
-/// number of edges swaps, every further quadrilateral is kept (counted in budget_stops).
+/// The loop with a criterion that has no global potential, on a mesh lent as half-edges (no
+/// dead triangles): after max_swaps_per_edge times the number of edges swaps, every further
+/// quadrilateral is kept (counted in budget_stops).
 template <class Prefers>
-EdgeSwapCounters budgeted_swap_loop(Triangulation2& mesh, std::uint32_t max_swaps_per_edge,
-                                    Prefers&& prefers) {
-    const std::uint64_t budget =
-        std::uint64_t{max_swaps_per_edge} * 3 * std::uint64_t{mesh.triangle_count()};
-    std::uint64_t swaps = 0, stops = 0;
-    EdgeSwapCounters counters = swap_loop(mesh, false, [&](const TriMesh2& work, const Quad& q) {
-        if (swaps >= budget) {
-            ++stops;
-            return false;
-        }
-        const bool swap = prefers(work, q);
-        if (swap) ++swaps;
-        return swap;
-    });
-    counters.budget_stops = stops;
-    return counters;
+EdgeSwapCounters budgeted_swap_queue(TriMesh2& work, std::uint32_t max_swaps_per_edge,
+                                     SwapVerdicts2* verdicts, Prefers&& prefers) {
+    const std::uint64_t triangles = work.tv.size() / 3;
+    const std::uint64_t budget = std::uint64_t{max_swaps_per_edge} * 3 * triangles;
+    return swap_queue(work, false, {}, true, budget, verdicts, std::forward<Prefers>(prefers));
 }
 
-}  // namespace
-
-EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) {
-    if (criterion.metrics.size() != 3 * std::size_t{mesh.vertex_count()}) {
+void check_metrics(std::uint32_t vertex_count, const MetricInEllipse& criterion) {
+    if (criterion.metrics.size() != 3 * std::size_t{vertex_count}) {
         throw InputError("metric swapping needs three values per vertex: got " +
                          std::to_string(criterion.metrics.size()) + " values for " +
-                         std::to_string(mesh.vertex_count()) + " vertices");
+                         std::to_string(vertex_count) + " vertices");
     }
     for (const double m : criterion.metrics) {
         if (!std::isfinite(m)) {
@@ -336,8 +423,13 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) 
                              ")");
         }
     }
-    return budgeted_swap_loop(
-        mesh, criterion.max_swaps_per_edge, [&](const TriMesh2& work, const Quad& q) {
+}
+
+/// MetricInEllipse's loop on the lent mesh (criterion checked).
+EdgeSwapCounters metric_swap_queue(TriMesh2& work, const MetricInEllipse& criterion) {
+    return budgeted_swap_queue(
+        work, criterion.max_swaps_per_edge, criterion.verdicts,
+        [&](const TriMesh2& mesh, const Quad& q) {
             double m[3] = {0, 0, 0};
             if (criterion.quad_metric) {
                 criterion.quad_metric(q.a, q.b, q.c, q.d, m);
@@ -347,19 +439,48 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) 
                         m[k] += 0.25 * criterion.metrics[3 * std::size_t{v} + k];
                 }
             }
-            return predicates::in_ellipse_sos(work.point(q.a), work.point(q.b), work.point(q.c),
-                                              work.point(q.d), m, q.a, q.b, q.c,
+            return predicates::in_ellipse_sos(mesh.point(q.a), mesh.point(q.b), mesh.point(q.c),
+                                              mesh.point(q.d), m, q.a, q.b, q.c,
                                               q.d) == Sign::Positive;
         });
 }
 
+/// QuadPreference's loop on the lent mesh (criterion checked).
+EdgeSwapCounters preference_swap_queue(TriMesh2& work, const QuadPreference& criterion) {
+    return budgeted_swap_queue(work, criterion.max_swaps_per_edge, criterion.verdicts,
+                               [&](const TriMesh2& mesh, const Quad& q) {
+                                   return criterion.swap({q.a, q.b, q.c, q.d},
+                                                         {mesh.point(q.a), mesh.point(q.b),
+                                                          mesh.point(q.c), mesh.point(q.d)});
+                               });
+}
+
+}  // namespace
+
+EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion) {
+    check_metrics(mesh.vertex_count(), criterion);
+    validate_points_2d(mesh.xy);
+    HalfEdgeEdit edit(mesh);
+    return metric_swap_queue(edit.mesh(), criterion);
+}
+
+EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, MetricInEllipse criterion) {
+    check_metrics(mesh.vertex_count(), criterion);
+    validate_points_2d(mesh.xy);
+    return metric_swap_queue(mesh, criterion);
+}
+
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, QuadPreference criterion) {
     if (!criterion.swap) throw InputError("quadrilateral swapping needs a decision");
-    return budgeted_swap_loop(
-        mesh, criterion.max_swaps_per_edge, [&](const TriMesh2& work, const Quad& q) {
-            return criterion.swap({q.a, q.b, q.c, q.d}, {work.point(q.a), work.point(q.b),
-                                                         work.point(q.c), work.point(q.d)});
-        });
+    validate_points_2d(mesh.xy);
+    HalfEdgeEdit edit(mesh);
+    return preference_swap_queue(edit.mesh(), criterion);
+}
+
+EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, QuadPreference criterion) {
+    if (!criterion.swap) throw InputError("quadrilateral swapping needs a decision");
+    validate_points_2d(mesh.xy);
+    return preference_swap_queue(mesh, criterion);
 }
 
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion) {

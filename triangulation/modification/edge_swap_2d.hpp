@@ -19,10 +19,12 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "base/counter_table.hpp"
 #include "triangulation/checks/check_2d.hpp"
@@ -57,6 +59,51 @@ struct DataDependent {
     DataCost cost = DataCost::AngleBetweenNormals;
 };
 
+/// Stamps of a mesh's triangles, shared by the swap runs over it and by its owner's own edits
+/// between them, so that a run skips the quadrilaterals an earlier one found not to swap and
+/// that have not changed since (SwapVerdicts2). Each triangle's stamp is renewed whenever the
+/// triangle changes: a swap renews both triangles of its quadrilateral; the owner calls touch()
+/// for every triangle it rewrites or adds, and reset() after anything that moves vertices,
+/// renumbers vertices or triangles, or changes what a criterion reads about a vertex. A stamp is
+/// never given twice (at the wrap of the 32-bit clock the era changes, voiding every verdict).
+class TriangleStamps2 {
+  public:
+    /// Every triangle of a mesh of `triangles` triangles new (every verdict void).
+    void reset(std::size_t triangles);
+    /// Triangle t was rewritten or added (the stamps grow to cover it).
+    void touch(TriIdx t);
+    /// The triangles were renumbered: triangle t is old_of_new[t] as it was (the same vertices
+    /// in the same order, vertices renumbered in their order), or new when that is kNone.
+    void renumber(std::span<const TriIdx> old_of_new);
+    /// Triangle t's stamp, 0 when it has none (then no verdict is taken or kept for it).
+    std::uint32_t operator[](TriIdx t) const { return t < stamps_.size() ? stamps_[t] : 0; }
+    std::uint32_t era() const { return era_; }
+
+  private:
+    std::uint32_t next();
+    std::vector<std::uint32_t> stamps_;
+    std::uint32_t clock_ = 0;
+    std::uint32_t era_ = 0;
+};
+
+/// One criterion's verdicts from earlier runs over a stamped mesh: slot e's quadrilateral was
+/// found not to swap (not strictly convex, or the criterion kept the diagonal) when its two
+/// triangles had the stamps kept here; while both keep them, the quadrilateral is the same four
+/// vertices at the same points and a run takes the verdict instead of deciding again. Valid for
+/// a criterion that is a function of the quadrilateral's vertex indices and points (and of data
+/// per vertex that the owner keeps, resetting the stamps when it changes). The budget still
+/// counts: a kept diagonal of a strictly convex quadrilateral met after the budget is a stop.
+struct SwapVerdicts2 {
+    TriangleStamps2* stamps = nullptr;
+    /// Per slot: the stamps of its triangle (high half) and of its twin's (low half), 0 none.
+    std::vector<std::uint64_t> kept;
+    /// Per slot: whether that quadrilateral was strictly convex.
+    std::vector<std::uint8_t> convex;
+    std::uint32_t era = 0;
+    /// The triangles were renumbered as for TriangleStamps2::renumber: the verdicts follow.
+    void renumber(std::span<const TriIdx> old_of_new);
+};
+
 /// Metric Delaunay (issue 14): swap when the apex across the edge lies inside the circumscribed
 /// ellipse of the triangle in the mean of the quadrilateral's four vertex metrics (the SoS
 /// in_ellipse, predicates/in_ellipse.hpp): both diagonals of a quadrilateral are judged in the
@@ -75,6 +122,9 @@ struct MetricInEllipse {
     /// mean, which keeps the stretching of metrics that rotate from vertex to vertex, where the
     /// mean of the matrices loses it).
     std::function<void(VertIdx, VertIdx, VertIdx, VertIdx, double*)> quad_metric = {};
+    /// When set, the verdicts of earlier runs with the same metrics (SwapVerdicts2), renewed by
+    /// this run.
+    SwapVerdicts2* verdicts = nullptr;
 };
 
 /// A caller's decision per quadrilateral: swap(v, p) is true when the diagonal c - d is preferred
@@ -88,6 +138,9 @@ struct QuadPreference {
     std::function<bool(const std::array<VertIdx, 4>&, const std::array<const double*, 4>&)> swap =
         {};
     std::uint32_t max_swaps_per_edge = 8;
+    /// When set, the verdicts of earlier runs with the same decision (SwapVerdicts2), renewed by
+    /// this run.
+    SwapVerdicts2* verdicts = nullptr;
 };
 
 /// The criterion names of the CLI and benches.
@@ -131,6 +184,12 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, MetricInEllipse criterion);
 /// Swaps strictly convex quadrilaterals as criterion.swap says. @throws InputError when it is
 /// empty.
 EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, QuadPreference criterion);
+/// The same two on a mesh already lent as half-edges (a HalfEdgeEdit's: open, boundary twins
+/// kNone, flag bit 0 constrained, no dead triangles), from every interior edge: the same swaps,
+/// and runs in a row on one lending (the metric generator's two criteria) build the half-edges
+/// once.
+EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, MetricInEllipse criterion);
+EdgeSwapCounters swap_edges_2d(TriMesh2& mesh, QuadPreference criterion);
 
 /// Fills mesh.neighbors from mesh.triangles (each undirected edge shared by at most two
 /// triangles, in opposite directions) and sizes mesh.constrained to match when it is not empty.

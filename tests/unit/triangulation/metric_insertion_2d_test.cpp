@@ -5,7 +5,8 @@
 // constrained_delaunay_2d of the mapped input, with F = diag(1, 2) so that the mapping is exact
 // in doubles); in metrics that change from point to point the mesh stays a valid constrained
 // triangulation; points on constrained edges and duplicates are refused; a quadrilateral metric
-// (MetricInEllipse::quad_metric) and a caller's preference (QuadPreference) decide the swaps. (The
+// (MetricInEllipse::quad_metric) and a caller's preference (QuadPreference) decide the swaps;
+// the verdicts of earlier runs (SwapVerdicts2) change the work, not the swaps. (The
 // reduction of a conflict zone to a star-shaped cavity is a guard no test reaches: neither the
 // 4,000 points in random metrics below nor a random search of 20,000 small cases around a dangling
 // segment produced a conflict zone the point does not see whole.)
@@ -199,6 +200,108 @@ TEST(MetricSwap2d, AQuadMetricAndAQuadPreferenceDecideEachQuadrilateral) {
     always.max_swaps_per_edge = 1;
     EXPECT_GT(tri::swap_edges_2d(shorter, always).budget_stops, 0u);
     EXPECT_THROW(tri::swap_edges_2d(shorter, tri::QuadPreference{}), exactmesh::InputError);
+}
+
+// Two criteria that disagree (the in-ellipse in a metric that varies over the square, and the
+// shorter Euclidean diagonal), run by turns as the metric generator does, on two copies of one
+// mesh: one copy keeps each criterion's verdicts between runs (SwapVerdicts2 on shared triangle
+// stamps), the other decides every quadrilateral each time. The meshes and counters stay the
+// same after every run, through a renumbering of the triangles and a run stopped by its budget,
+// while the copy with verdicts asks its criteria less.
+TEST(MetricSwap2d, VerdictsOfEarlierRunsGiveTheSameSwaps) {
+    const std::vector<double> points = random_points(point_count(1000), 7);
+    std::vector<double> xy = kSquare;
+    xy.insert(xy.end(), points.begin(), points.end());
+    const tri::Cdt2Result start =
+        tri::constrained_delaunay_2d(tri::Pslg{xy, kSquareSegments, {}, {}});
+    tri::Triangulation2 fresh = start.mesh, remembered = start.mesh;
+    // Per vertex {1 + 3x, sin(5y) / 2, 1 + 2y}: positive definite; a quadrilateral's metric is
+    // the mean of its vertices'.
+    std::vector<double> metrics;
+    for (std::size_t v = 0; 2 * v < xy.size(); ++v) {
+        const double x = xy[2 * v], y = xy[2 * v + 1];
+        metrics.insert(metrics.end(), {1 + 3 * x, 0.5 * std::sin(5 * y), 1 + 2 * y});
+    }
+    std::uint64_t decisions = 0;
+    const auto in_ellipse = [&](std::uint32_t max_swaps_per_edge, tri::SwapVerdicts2* verdicts) {
+        tri::MetricInEllipse criterion;
+        criterion.metrics = metrics;
+        criterion.max_swaps_per_edge = max_swaps_per_edge;
+        criterion.quad_metric = [&](tri::VertIdx a, tri::VertIdx b, tri::VertIdx c, tri::VertIdx d,
+                                    double* out) {
+            ++decisions;
+            for (std::size_t k = 0; k < 3; ++k) {
+                out[k] = 0.25 * (metrics[3 * a + k] + metrics[3 * b + k] + metrics[3 * c + k] +
+                                 metrics[3 * d + k]);
+            }
+        };
+        criterion.verdicts = verdicts;
+        return criterion;
+    };
+    const auto shorter = [&](tri::SwapVerdicts2* verdicts) {
+        tri::QuadPreference prefer;
+        prefer.swap = [&](const std::array<tri::VertIdx, 4>&,
+                          const std::array<const double*, 4>& p) {
+            ++decisions;
+            const auto squared = [](const double* u, const double* w) {
+                return (w[0] - u[0]) * (w[0] - u[0]) + (w[1] - u[1]) * (w[1] - u[1]);
+            };
+            return squared(p[2], p[3]) < squared(p[0], p[1]);
+        };
+        prefer.verdicts = verdicts;
+        return prefer;
+    };
+    tri::TriangleStamps2 stamps;
+    stamps.reset(remembered.triangle_count());
+    tri::SwapVerdicts2 ellipse_verdicts{&stamps, {}, {}, 0};
+    tri::SwapVerdicts2 shorter_verdicts{&stamps, {}, {}, 0};
+    const auto same = [](const tri::EdgeSwapCounters& x, const tri::EdgeSwapCounters& y) {
+        EXPECT_EQ(x.edges_tested, y.edges_tested);
+        EXPECT_EQ(x.not_convex, y.not_convex);
+        EXPECT_EQ(x.constrained, y.constrained);
+        EXPECT_EQ(x.swaps, y.swaps);
+        EXPECT_EQ(x.budget_stops, y.budget_stops);
+    };
+    std::uint64_t swaps = 0, fresh_decisions = 0, remembered_decisions = 0;
+    for (int round = 0; round < 6; ++round) {
+        if (round == 3) {
+            // The triangles renumbered (in reverse): stamps and verdicts follow them.
+            std::vector<tri::TriIdx> old_of_new(remembered.triangle_count());
+            for (tri::TriIdx t = 0; t < old_of_new.size(); ++t) {
+                old_of_new[t] = remembered.triangle_count() - 1 - t;
+            }
+            for (tri::Triangulation2* mesh : {&fresh, &remembered}) {
+                std::vector<tri::VertIdx> triangles(mesh->triangles.size());
+                for (tri::TriIdx t = 0; t < old_of_new.size(); ++t) {
+                    for (std::size_t k = 0; k < 3; ++k)
+                        triangles[3 * t + k] = mesh->triangles[3 * old_of_new[t] + k];
+                }
+                mesh->triangles = triangles;
+                mesh->constrained.clear();
+                tri::link_neighbors_2d(*mesh);
+            }
+            stamps.renumber(old_of_new);
+            ellipse_verdicts.renumber(old_of_new);
+            shorter_verdicts.renumber(old_of_new);
+        }
+        decisions = 0;
+        const tri::EdgeSwapCounters a = tri::swap_edges_2d(fresh, in_ellipse(8, nullptr));
+        const tri::EdgeSwapCounters b = tri::swap_edges_2d(fresh, shorter(nullptr));
+        fresh_decisions += decisions;
+        decisions = 0;
+        same(a, tri::swap_edges_2d(remembered, in_ellipse(8, &ellipse_verdicts)));
+        same(b, tri::swap_edges_2d(remembered, shorter(&shorter_verdicts)));
+        remembered_decisions += decisions;
+        ASSERT_EQ(fresh.triangles, remembered.triangles) << "round " << round;
+        swaps += a.swaps + b.swaps;
+    }
+    EXPECT_GT(swaps, 0u);
+    EXPECT_LT(remembered_decisions, fresh_decisions);
+    // With no budget every strictly convex quadrilateral is a stop, a remembered one too.
+    const tri::EdgeSwapCounters stopped = tri::swap_edges_2d(fresh, in_ellipse(0, nullptr));
+    EXPECT_GT(stopped.budget_stops, 0u);
+    same(stopped, tri::swap_edges_2d(remembered, in_ellipse(0, &ellipse_verdicts)));
+    EXPECT_EQ(fresh.triangles, remembered.triangles);
 }
 
 }  // namespace
