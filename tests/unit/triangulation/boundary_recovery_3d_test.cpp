@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Tests of triangulation/recovery_3d/boundary_recovery_3d (conforming Delaunay recovery) with
-// the exact check triangulation/checks/check_boundary_conformity_3d: classic and degenerate
+// the exact check triangulation/recovery_3d/check_boundary_conformity_3d: classic and degenerate
 // PLCs, the 3D sample domains, random convex polyhedra, and scaling by 2^600 and 2^-600.
 #include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
 
@@ -14,7 +14,7 @@
 #include "base/errors.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
 #include "tests/support/test_scale.hpp"
-#include "triangulation/checks/check_boundary_conformity_3d.hpp"
+#include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
 
@@ -230,6 +230,31 @@ TEST(Triangulation_BoundaryRecovery3d, ThreeFacetsAtASmallDihedralAngle) {
     }
 }
 
+/// Three parallel internal facets in the unit cube: a square at height 0.5 between two smaller
+/// diamonds (rotated by 45 degrees) at 0.5 -+ d, whose corners lie inside the square's
+/// circumcircle but outside it: no sphere through a subface of the square is empty until it is
+/// refined, so facet circumcenters (and encroachment splits) are needed.
+Plc3 sandwiched_square(double d) {
+    Plc3 plc = box(1, 1, 1);
+    plc.xyz.insert(plc.xyz.end(), {0.3, 0.3, 0.5, 0.7, 0.3, 0.5, 0.7, 0.7, 0.5, 0.3, 0.7, 0.5});
+    for (const double z : {0.5 - d, 0.5 + d})
+        plc.xyz.insert(plc.xyz.end(), {0.5, 0.25, z, 0.75, 0.5, z, 0.5, 0.75, z, 0.25, 0.5, z});
+    plc.facets.push_back({{{8, 9, 10, 11}}, {}, 5});
+    plc.facets.push_back({{{12, 13, 14, 15}}, {}, 6});
+    plc.facets.push_back({{{16, 17, 18, 19}}, {}, 7});
+    return plc;
+}
+
+TEST(Triangulation_BoundaryRecovery3d, SandwichedFacetsNeedFacetSplits) {
+    std::uint64_t facet_splits = 0;
+    for (const double d : {0.1, 0.01, 0.001}) {
+        const auto result =
+            recover_and_check(sandwiched_square(d), "sandwiched square d=" + std::to_string(d));
+        facet_splits += result.counters.facet_splits;
+    }
+    EXPECT_GT(facet_splits, 0u);
+}
+
 TEST(Triangulation_BoundaryRecovery3d, SampleDomains) {
     for (const generators::SampleDomain3 d : generators::kAllSampleDomains3) {
         const Plc3 plc = generators::sample_domain_3d(d);
@@ -306,7 +331,7 @@ TEST(Triangulation_BoundaryRecovery3d, RandomStarShapedPolyhedra) {
 
 TEST(Triangulation_BoundaryRecovery3d, ScalingByPowersOfTwoScalesTheMesh) {
     for (const Plc3& plc : {schonhardt(std::acos(-1.0) / 6), box(100, 1, 0.01), hinged_cube(0.1),
-                            random_star(3, 30)}) {
+                            random_star(3, 30), sandwiched_square(0.01)}) {
         const auto base = boundary_recovery_3d(plc);
         for (const int e : {600, -600}) {
             const Plc3 s = scaled(plc, e);

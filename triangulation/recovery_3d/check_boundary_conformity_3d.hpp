@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Exact check of a conforming tetrahedralization of a PLC (ConformingMesh3, any producer):
+// Exact check of a conforming tetrahedralization of a PLC (ConformingMesh3, any producer; it
+// lives beside boundary_recovery_3d because it triangulates the input facets with
+// triangulate_facets_3d, but it does not include the algorithm it checks):
 //  - the tetrahedra are a valid mesh (check_topology_3d: positive orientation by exact
 //    orient3d, mutual neighbours, a closed boundary surface);
 //  - every facet corner (input vertex of the PLC's facets) is a mesh vertex;

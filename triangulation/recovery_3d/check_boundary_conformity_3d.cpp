@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Exact check of a conforming tetrahedralization of a PLC (see check_boundary_conformity_3d.hpp).
-#include "triangulation/checks/check_boundary_conformity_3d.hpp"
+#include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
 
 #include <algorithm>
 #include <map>
