@@ -368,6 +368,25 @@ class Recovery {
         return false;
     }
 
+    /// Appends the facet's subsegments whose diametral sphere strictly contains the apex of a
+    /// subface on them (exact dot_sign_3d).
+    void sweep_encroached(const FacetTriangulation& facet,
+                          const std::vector<std::size_t>& facet_subs,
+                          std::vector<std::size_t>& to_split) const {
+        std::unordered_map<std::uint64_t, std::size_t> sub_of;
+        for (const std::size_t i : facet_subs) sub_of.emplace(edge_key(subs_[i].a, subs_[i].b), i);
+        for (std::size_t t = 0; t < facet.triangles.size(); t += 3) {
+            for (unsigned k = 0; k < 3; ++k) {
+                const VertIdx a = facet.triangles[t + k], b = facet.triangles[t + (k + 1) % 3],
+                              apex = facet.triangles[t + (k + 2) % 3];
+                const auto it = sub_of.find(edge_key(a, b));
+                if (it == sub_of.end()) continue;
+                if (predicates::dot_sign_3d(point(apex), point(a), point(b)) == Sign::Negative)
+                    to_split.push_back(it->second);
+            }
+        }
+    }
+
     /// One pass over the facets: returns false when every subface is a face (then `subfaces`
     /// holds them all), true when points were added.
     bool recover_facets(std::vector<VertIdx>& subfaces, std::vector<std::uint32_t>& owners) {
@@ -387,6 +406,7 @@ class Recovery {
         for (std::uint32_t f = 0; f < plc_.facets.size(); ++f) {
             const FacetTriangulation facet = triangulate_facet(f, by_segment, facet_subs);
             const int drop = planes_[f].drop;
+            bool swept = false, vertex_encroached = false;
             for (std::size_t t = 0; t < facet.triangles.size(); t += 3) {
                 const VertIdx a = facet.triangles[t], b = facet.triangles[t + 1],
                               c = facet.triangles[t + 2];
@@ -410,6 +430,18 @@ class Recovery {
                 if (encroaches) continue;
                 Pending next{center, f, false};
                 if (!inside(facet, center.data(), drop, t)) {
+                    // Ruppert's lemma: with no subsegment encroached by a vertex, every
+                    // circumcenter lies in the domain. So split the facet's subsegments that
+                    // the apex of a subface on them encroaches (in a constrained Delaunay
+                    // triangulation an encroached subsegment is encroached by such an apex
+                    // [Shewchuk97 §3.4]), strictly inside the diametral sphere.
+                    if (!swept) {
+                        swept = true;
+                        const std::size_t before = to_split.size();
+                        sweep_encroached(facet, facet_subs, to_split);
+                        vertex_encroached = to_split.size() > before;
+                    }
+                    if (vertex_encroached) continue;
                     // The projection's triangulation is Delaunay in the projected metric, not
                     // in the facet's own: a circumcenter may then fall outside the facet with
                     // no subsegment encroached. The centroid lies inside the subface.

@@ -14,9 +14,9 @@
 #include "base/errors.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
 #include "tests/support/test_scale.hpp"
-#include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
+#include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
 
 namespace exactmesh::triangulation {
 namespace {
@@ -255,12 +255,47 @@ TEST(Triangulation_BoundaryRecovery3d, SandwichedFacetsNeedFacetSplits) {
     EXPECT_GT(facet_splits, 0u);
 }
 
+TEST(Triangulation_BoundaryRecovery3d, BudgetErrorNamesTheBudgetAndTheFeature) {
+    BoundaryRecovery3Options options;
+    options.max_steiner_points = 40;
+    try {
+        boundary_recovery_3d(sandwiched_square(0.001), options);
+        FAIL() << "the budget of 40 Steiner points should not suffice";
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("Steiner point budget of 40 exceeded while recovering "),
+                  std::string::npos)
+            << message;
+        EXPECT_TRUE(message.find("segment (") != std::string::npos ||
+                    message.find("facet ") != std::string::npos)
+            << message;
+    }
+}
+
+TEST(Triangulation_BoundaryRecovery3d, InvalidPlcsAreRejectedBeforeAnyWork) {
+    // Two facets crossing: the square of a box pierced by an internal triangle.
+    Plc3 plc = box(1, 1, 1);
+    plc.xyz.insert(plc.xyz.end(), {0.5, 0.5, -0.5, 0.6, 0.5, 0.5, 0.5, 0.6, 0.5});
+    plc.facets.push_back({{{8, 9, 10}}, {}, 9});
+    EXPECT_THROW(boundary_recovery_3d(plc), InputError);
+    // All vertices coplanar: one square facet, no volume.
+    Plc3 flat;
+    flat.xyz = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    flat.facets.push_back({{{0, 1, 2, 3}}, {}, 1});
+    EXPECT_THROW(boundary_recovery_3d(flat), InputError);
+}
+
 TEST(Triangulation_BoundaryRecovery3d, SampleDomains) {
     for (const generators::SampleDomain3 d : generators::kAllSampleDomains3) {
-        const Plc3 plc = generators::sample_domain_3d(d);
-        const auto result =
-            recover_and_check(plc, std::string(generators::sample_domain_3d_name(d)));
-        EXPECT_GT(result.mesh.mesh.tet_count(), 0u);
+        // The default size, then a finer one (the box has no curved surface: once).
+        for (const double size : {0.0, d == generators::SampleDomain3::Wing ? 0.01 : 0.04}) {
+            if (size > 0 && d == generators::SampleDomain3::BoxWithHole) continue;
+            const Plc3 plc = generators::sample_domain_3d(d, size);
+            const auto result =
+                recover_and_check(plc, std::string(generators::sample_domain_3d_name(d)) +
+                                           " size " + std::to_string(size));
+            EXPECT_GT(result.mesh.mesh.tet_count(), 0u);
+        }
     }
 }
 
@@ -322,7 +357,7 @@ Plc3 random_star(std::uint64_t seed, int points) {
 }
 
 TEST(Triangulation_BoundaryRecovery3d, RandomStarShapedPolyhedra) {
-    const int count = std::max(2, static_cast<int>(6 * testing::test_scale()));
+    const int count = std::max(2, static_cast<int>(12 * testing::test_scale()));
     for (int seed = 1; seed <= count; ++seed) {
         const Plc3 plc = random_star(static_cast<std::uint64_t>(seed), 10 + 6 * seed);
         recover_and_check(plc, "random star seed " + std::to_string(seed));
