@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <string>
@@ -368,6 +370,63 @@ class Recovery {
         return false;
     }
 
+    /// Flips unconstrained edges of the facet's triangulation whose two triangles are not both
+    /// mesh faces to the other diagonal when its two triangles are mesh faces (and the
+    /// quadrilateral is strictly convex in the projection, exact orient2d). The projection's
+    /// Delaunay triangulation is Delaunay in the projected metric, not in the facet's plane:
+    /// without this, the facet's triangulation and the tetrahedralization's faces could choose
+    /// different diagonals of nearly cocircular quadrilaterals at every scale, and inserting
+    /// circumcenters there never ends (random star PLC 17: facet 47 grew past 10^5 points).
+    void match_mesh_faces(FacetTriangulation& facet, const std::vector<std::size_t>& facet_subs,
+                          int drop) const {
+        std::unordered_set<std::uint64_t> constrained;
+        for (const std::size_t i : facet_subs) constrained.insert(edge_key(subs_[i].a, subs_[i].b));
+        std::vector<VertIdx>& tri = facet.triangles;
+        const std::size_t count = tri.size() / 3;
+        auto positive = [&](VertIdx a, VertIdx b, VertIdx c) {
+            return projected_orient(point(a), point(b), point(c), drop) == Sign::Positive;
+        };
+        for (std::size_t pass = 0; pass < count + 1; ++pass) {
+            std::unordered_map<std::uint64_t, std::array<std::size_t, 2>> edge_triangles;
+            for (std::size_t t = 0; t < count; ++t) {
+                for (unsigned k = 0; k < 3; ++k) {
+                    const auto [it, added] =
+                        edge_triangles.emplace(edge_key(tri[3 * t + k], tri[3 * t + (k + 1) % 3]),
+                                               std::array<std::size_t, 2>{t, kNone});
+                    if (!added) it->second[1] = t;
+                }
+            }
+            std::vector<std::uint8_t> touched(count, 0);
+            bool flipped = false;
+            for (std::size_t t = 0; t < count; ++t) {
+                if (touched[t] || faces_.count(sorted3(tri[3 * t], tri[3 * t + 1], tri[3 * t + 2])))
+                    continue;
+                for (unsigned k = 0; k < 3; ++k) {
+                    const VertIdx a = tri[3 * t + k], b = tri[3 * t + (k + 1) % 3],
+                                  c = tri[3 * t + (k + 2) % 3];
+                    if (constrained.count(edge_key(a, b)) != 0) continue;
+                    const auto& pair = edge_triangles.at(edge_key(a, b));
+                    const std::size_t u = pair[0] == t ? pair[1] : pair[0];
+                    if (u == kNone || touched[u]) continue;
+                    VertIdx d = kNone;
+                    for (unsigned j = 0; j < 3; ++j) {
+                        const VertIdx w = tri[3 * u + j];
+                        if (w != a && w != b) d = w;
+                    }
+                    if (faces_.count(sorted3(a, c, d)) == 0 || faces_.count(sorted3(b, c, d)) == 0)
+                        continue;
+                    if (!positive(a, d, c) || !positive(d, b, c)) continue;
+                    tri[3 * t] = a, tri[3 * t + 1] = d, tri[3 * t + 2] = c;
+                    tri[3 * u] = d, tri[3 * u + 1] = b, tri[3 * u + 2] = c;
+                    touched[t] = touched[u] = 1;
+                    flipped = true;
+                    break;
+                }
+            }
+            if (!flipped) return;
+        }
+    }
+
     /// Appends the facet's subsegments whose diametral sphere strictly contains the apex of a
     /// subface on them (exact dot_sign_3d).
     void sweep_encroached(const FacetTriangulation& facet,
@@ -404,8 +463,9 @@ class Recovery {
         std::unordered_set<PointKey, PointKeyHash> pending_keys;
         std::vector<std::size_t> facet_subs;
         for (std::uint32_t f = 0; f < plc_.facets.size(); ++f) {
-            const FacetTriangulation facet = triangulate_facet(f, by_segment, facet_subs);
+            FacetTriangulation facet = triangulate_facet(f, by_segment, facet_subs);
             const int drop = planes_[f].drop;
+            match_mesh_faces(facet, facet_subs, drop);
             bool swept = false, vertex_encroached = false;
             for (std::size_t t = 0; t < facet.triangles.size(); t += 3) {
                 const VertIdx a = facet.triangles[t], b = facet.triangles[t + 1],

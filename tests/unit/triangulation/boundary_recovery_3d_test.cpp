@@ -364,6 +364,16 @@ TEST(Triangulation_BoundaryRecovery3d, RandomStarShapedPolyhedra) {
     }
 }
 
+TEST(Triangulation_BoundaryRecovery3d, FacetTriangulationFollowsTheMeshDiagonals) {
+    // Random star PLC 17: before the facet triangulation flipped to the tetrahedralization's
+    // diagonals, facet 47 chose the other diagonal of nearly cocircular quadrilaterals at every
+    // scale and grew past 10^5 Steiner points; it needs 17.
+    BoundaryRecovery3Options options;
+    options.max_steiner_points = 1000;
+    const auto result = recover_and_check(random_star(17, 112), "random star seed 17", options);
+    EXPECT_LT(result.counters.insertions, 100u);
+}
+
 TEST(Triangulation_BoundaryRecovery3d, ScalingByPowersOfTwoScalesTheMesh) {
     for (const Plc3& plc : {schonhardt(std::acos(-1.0) / 6), box(100, 1, 0.01), hinged_cube(0.1),
                             random_star(3, 30), sandwiched_square(0.01)}) {
