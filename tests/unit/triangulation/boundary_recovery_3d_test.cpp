@@ -105,6 +105,35 @@ TEST(Triangulation_BoundaryRecovery3d, BoxWithABoxHoleHasTheHoleRemoved) {
     EXPECT_GT(result.counters.removed_tets, 0u);
 }
 
+TEST(Triangulation_BoundaryRecovery3d, CoplanarFacetsFacetHolesAndIsolatedCorners) {
+    // A 3x3x3 box pierced by a square tunnel [1,2]^2 along z: the top and bottom facets have a
+    // square hole (with a facet hole point); the front face y = 0 is two coplanar facets; the
+    // back face holds an isolated corner (a 1-corner polygon).
+    Plc3 plc = box(3, 3, 3);
+    for (const double z : {0.0, 3.0})
+        plc.xyz.insert(plc.xyz.end(), {1, 1, z, 2, 1, z, 2, 2, z, 1, 2, z});  // 8-11, 12-15
+    plc.xyz.insert(plc.xyz.end(), {1.5, 0, 0, 1.5, 0, 3, 1.5, 3, 1.5});       // 16, 17, 18
+    plc.facets = {{{{0, 2, 6, 4}}, {}, 1},
+                  {{{1, 5, 7, 3}}, {}, 1},
+                  {{{0, 16, 17, 4}}, {}, 2},
+                  {{{16, 1, 5, 17}}, {}, 2},
+                  {{{2, 3, 7, 6}, {18}}, {}, 3},
+                  {{{0, 16, 1, 3, 2}, {8, 9, 10, 11}}, {1.5, 1.5, 0}, 4},
+                  {{{4, 17, 5, 7, 6}, {12, 13, 14, 15}}, {1.5, 1.5, 3}, 5},
+                  {{{8, 9, 13, 12}}, {}, 6},
+                  {{{9, 10, 14, 13}}, {}, 6},
+                  {{{10, 11, 15, 14}}, {}, 6},
+                  {{{11, 8, 12, 15}}, {}, 6}};
+    const auto result = recover_and_check(plc, "box with a tunnel");
+    EXPECT_NEAR(volume(result.mesh.mesh), 24.0, 1e-9);
+    for (const double e : {600.0, -600.0}) {
+        const Plc3 s = scaled(plc, static_cast<int>(e));
+        const auto r = boundary_recovery_3d(s);
+        EXPECT_TRUE(check_boundary_conformity_3d(s, r.mesh).ok);
+        EXPECT_EQ(r.mesh.mesh.tets, result.mesh.mesh.tets);
+    }
+}
+
 Plc3 schonhardt(double twist) {
     Plc3 plc;
     const double pi = std::acos(-1.0);
