@@ -185,31 +185,68 @@ std::string check(const Plc3& plc, const ConformingMesh3& cm) {
                        name(edge.second) + ") bounds one subface and is no subsegment";
         }
     }
-    // Every subsegment of a polygon loop (n >= 3) of a facet bounds one of its subfaces.
+    // The boundary of each facet's subfaces, as a chain of directed edges, is the boundary of
+    // its input triangles (triangulate_facets_3d, the same reference orientation) with every
+    // input edge (p, q) replaced by its chain of subsegments walked from p to q. With every
+    // subface positively oriented in the projection, the winding-number argument then makes the
+    // subfaces tile the facet exactly once, up to the slivers between each segment and its
+    // chain of rounded Steiner points.
     {
         std::map<std::uint64_t, std::uint32_t> segment_of;
         for (std::size_t s = 0; s < segment_count; ++s)
             segment_of[edge_key(cm.segments[2 * s], cm.segments[2 * s + 1])] =
                 static_cast<std::uint32_t>(s);
-        for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
-            const auto it = directed.find(f);
-            for (const auto& polygon : plc.facets[f].polygons) {
-                if (polygon.size() < 3) continue;
-                for (std::size_t k = 0; k < polygon.size(); ++k) {
-                    const auto s =
-                        segment_of.find(edge_key(polygon[k], polygon[(k + 1) % polygon.size()]));
-                    if (s == segment_of.end()) return "facet edge without a segment";
-                    for (const auto& piece : chains[s->second]) {
-                        const bool bounded =
-                            it != directed.end() && (it->second.count({piece[0], piece[1]}) != 0 ||
-                                                     it->second.count({piece[1], piece[0]}) != 0);
-                        if (!bounded)
-                            return "facet " + std::to_string(f) + ": subsegment (" +
-                                   name(piece[0]) + ", " + name(piece[1]) +
-                                   ") bounds none of its subfaces";
-                    }
-                }
+        // The chain of segment s as vertices from `from` to its other end.
+        auto walk = [&](std::uint32_t s, VertIdx from) {
+            std::map<VertIdx, std::vector<VertIdx>> next;
+            for (const auto& piece : chains[s]) {
+                next[piece[0]].push_back(piece[1]);
+                next[piece[1]].push_back(piece[0]);
             }
+            std::vector<VertIdx> path{from};
+            VertIdx previous = kNone, at = from;
+            while (path.size() <= chains[s].size()) {
+                const auto& options = next[at];
+                VertIdx step = kNone;
+                for (const VertIdx w : options)
+                    if (w != previous) step = w;
+                if (step == kNone) break;
+                previous = at;
+                at = step;
+                path.push_back(at);
+            }
+            return path;
+        };
+        std::vector<std::map<std::pair<VertIdx, VertIdx>, int>> input_directed(plc.facets.size());
+        for (std::uint32_t t = 0; t < input_triangles.triangle_count(); ++t) {
+            const VertIdx* tri = &input_triangles.triangles[3 * std::size_t{t}];
+            for (unsigned k = 0; k < 3; ++k)
+                ++input_directed[input_triangles.facets[t]][{tri[k], tri[(k + 1) % 3]}];
+        }
+        for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
+            std::set<std::pair<VertIdx, VertIdx>> expected;
+            for (const auto& [edge, count] : input_directed[f]) {
+                if (input_directed[f].count({edge.second, edge.first}) != 0) continue;
+                const auto s = segment_of.find(edge_key(edge.first, edge.second));
+                if (s == segment_of.end())
+                    return "facet " + std::to_string(f) + ": boundary edge (" + name(edge.first) +
+                           ", " + name(edge.second) + ") of its input triangles is no segment";
+                const std::vector<VertIdx> path = walk(s->second, edge.first);
+                if (path.back() != edge.second || path.size() != chains[s->second].size() + 1)
+                    return "segment " + std::to_string(s->second) +
+                           ": its subsegments do not lead from one end to the other";
+                for (std::size_t k = 0; k + 1 < path.size(); ++k)
+                    expected.insert({path[k], path[k + 1]});
+            }
+            std::set<std::pair<VertIdx, VertIdx>> boundary;
+            const auto it = directed.find(f);
+            if (it != directed.end())
+                for (const auto& [edge, count] : it->second)
+                    if (it->second.count({edge.second, edge.first}) == 0) boundary.insert(edge);
+            if (boundary != expected)
+                return "facet " + std::to_string(f) +
+                       ": the boundary of its subfaces is not its boundary (split by its "
+                       "subsegments)";
         }
     }
     for (const auto& [face, count] : faces) {

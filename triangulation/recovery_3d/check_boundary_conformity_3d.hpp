@@ -9,9 +9,11 @@
 //    chain from its first end to its second;
 //  - every subface is a face of the mesh; every boundary face of the mesh (in one tetrahedron)
 //    is a subface, so the domain's boundary is made of facet pieces; each facet's subfaces have
-//    the facet's orientation in its projection (exact orient2d, non-zero), every edge of them
-//    lies in two of them with opposite directions unless it is a subsegment of the facet
-//    (a polygon edge), and every subsegment of a facet's polygon loops bounds one of them;
+//    the facet's orientation in its projection (exact orient2d, non-zero), no directed edge in
+//    two of them, and their boundary chain is exactly the boundary of the facet's input
+//    triangles with each input edge replaced by its subsegment chain, directed alike: with the
+//    orientations, a winding-number argument makes them tile the facet exactly once (up to the
+//    slivers between each segment and its chain of rounded Steiner points);
 //  - every Steiner vertex lies within rounding of its recorded feature: a segment vertex
 //    within_rounding_of_segment in each coordinate projection where its segment is not a point;
 //    a facet vertex's projection (the facet's drop axis) inside the facet's input triangles

@@ -431,6 +431,22 @@ TEST(Triangulation_BoundaryRecovery3d, TheCheckRejectsAMissingSubface) {
     for (TetIdx& n : broken.mesh.neighbors)
         if (n == broken.mesh.tet_count()) n = kNone;
     EXPECT_FALSE(check_boundary_conformity_3d(plc, broken).ok);
+    // A subface of an internal facet dropped from the list: still a face of the mesh, but the
+    // facet is no longer tiled.
+    {
+        const Plc3 hinged = hinged_cube(0.1);
+        ConformingMesh3 holed = boundary_recovery_3d(hinged).mesh;
+        for (std::size_t t = 0; t < holed.subface_facet.size(); ++t) {
+            if (holed.subface_facet[t] != 6) continue;
+            holed.subfaces.erase(holed.subfaces.begin() + 3 * long(t),
+                                 holed.subfaces.begin() + 3 * long(t) + 3);
+            holed.subface_facet.erase(holed.subface_facet.begin() + long(t));
+            break;
+        }
+        const auto report = check_boundary_conformity_3d(hinged, holed);
+        EXPECT_FALSE(report.ok);
+        EXPECT_NE(report.problem.find("facet 6"), std::string::npos) << report.problem;
+    }
     // A Steiner vertex moved off its segment.
     broken = result.mesh;
     for (VertIdx v = broken.input_vertex_count; v < broken.mesh.vertex_count(); ++v) {
