@@ -98,6 +98,7 @@ class Recovery {
         budget_ = options.max_steiner_points != 0 ? options.max_steiner_points
                                                   : 100 * std::uint64_t{n} + 100000;
         collect_segments();
+        reject_corners_on_segments();
         planes_.reserve(plc.facets.size());
         for (const Facet3& facet : plc.facets) planes_.push_back(facet_plane(plc, facet));
         facet_interior_.resize(plc.facets.size());
@@ -165,6 +166,36 @@ class Recovery {
             }
         }
         counters_.segments = segments_.size();
+    }
+
+    /// A facet corner inside one of the facet's segments (exact: collinear in every coordinate
+    /// projection and strictly inside the segment's diametral sphere) passes the facet checks
+    /// (the planar triangulation splits the segment there) but no tetrahedralization can keep
+    /// the segment as one chain: refuse it, naming both.
+    void reject_corners_on_segments() const {
+        for (std::uint32_t f = 0; f < plc_.facets.size(); ++f) {
+            std::vector<VertIdx> corners;
+            for (const auto& polygon : plc_.facets[f].polygons)
+                corners.insert(corners.end(), polygon.begin(), polygon.end());
+            std::sort(corners.begin(), corners.end());
+            corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+            for (const std::uint32_t s : facet_segments_[f]) {
+                const VertIdx a = segments_[s][0], b = segments_[s][1];
+                for (const VertIdx v : corners) {
+                    if (v == a || v == b) continue;
+                    if (predicates::dot_sign_3d(point(v), point(a), point(b)) != Sign::Negative)
+                        continue;
+                    bool collinear = true;
+                    for (int k = 0; k < 3 && collinear; ++k)
+                        collinear = projected_orient(point(a), point(b), point(v), k) == Sign::Zero;
+                    if (collinear) {
+                        throw InputError("boundary recovery: vertex " + vertex_name(v) + " of " +
+                                         facet_name(f) + " lies inside its " + segment_name(s) +
+                                         " (make it a corner of the polygon there)");
+                    }
+                }
+            }
+        }
     }
 
     /// Adds a Steiner vertex (the caller checked it is new).

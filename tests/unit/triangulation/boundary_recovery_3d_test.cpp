@@ -307,6 +307,23 @@ TEST(Triangulation_BoundaryRecovery3d, InvalidPlcsAreRejectedBeforeAnyWork) {
     plc.xyz.insert(plc.xyz.end(), {0.5, 0.5, -0.5, 0.6, 0.5, 0.5, 0.5, 0.6, 0.5});
     plc.facets.push_back({{{8, 9, 10}}, {}, 9});
     EXPECT_THROW(boundary_recovery_3d(plc), InputError);
+    // A corner of two facets inside their common polygon edge: (0, 1, 0.5) on the edge (2, 6)
+    // of the faces x = 0 and y = 1, joined to corners 0 and 3 by 2-corner polygons (the
+    // surface checks accept it: the facets' triangles meet in shared edges).
+    Plc3 on_edge = box(1, 1, 1);
+    on_edge.xyz.insert(on_edge.xyz.end(), {0, 1, 0.5});
+    on_edge.facets[0].polygons.push_back({0, 8});
+    on_edge.facets[3].polygons.push_back({3, 8});
+    try {
+        boundary_recovery_3d(on_edge);
+        ADD_FAILURE() << "a corner inside a segment was accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what())
+                      .find("vertex 8 of facet 0 lies inside its segment "
+                            "(2, 6)"),
+                  std::string::npos)
+            << error.what();
+    }
     // All vertices coplanar: one square facet, no volume.
     Plc3 flat;
     flat.xyz = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
