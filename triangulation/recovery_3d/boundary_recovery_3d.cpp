@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -102,6 +103,7 @@ class Recovery {
         planes_.reserve(plc.facets.size());
         for (const Facet3& facet : plc.facets) planes_.push_back(facet_plane(plc, facet));
         facet_interior_.resize(plc.facets.size());
+        cache_.resize(plc.facets.size());
     }
 
     BoundaryRecovery3Result run();
@@ -119,6 +121,12 @@ class Recovery {
     std::vector<Subsegment> subs_;
     std::vector<std::vector<VertIdx>> facet_interior_;
     std::vector<FacetPlane> planes_;
+    struct CachedFacet {
+        std::array<std::size_t, 2> signature{};  ///< subsegments on its segments, interior points
+        FacetTriangulation triangulation;
+        bool valid = false;
+    };
+    std::vector<CachedFacet> cache_;
     std::uint64_t budget_ = 0;
     BoundaryRecovery3Counters counters_;
 
@@ -196,6 +204,13 @@ class Recovery {
                 }
             }
         }
+    }
+
+    std::string feature_text(VertIdx v) const {
+        if (feature_[v] == VertexFeature3::Input) return "an input vertex";
+        if (feature_[v] == VertexFeature3::Segment)
+            return "on " + segment_name(feature_index_[v]) + " at " + std::to_string(parameter_[v]);
+        return "in " + facet_name(feature_index_[v]);
     }
 
     /// Adds a Steiner vertex (the caller checked it is new).
@@ -280,9 +295,15 @@ class Recovery {
             predicates::point_on_segment_3d(point(segments_[s][0]), point(segments_[s][1]), t);
         const auto found = points_.find(point_key(m.data()));
         if (found != points_.end()) {
-            throw GeometryError("boundary recovery: " + segment_name(s) +
-                                " has a subsegment too short to split (its split point is vertex " +
-                                vertex_name(found->second) + ")");
+            // Refinement has cascaded down to adjacent doubles: at a vertex where facets or
+            // segments meet at small angles, conforming refinement need not terminate
+            // [Shewchuk97 §3.5; Cohen-Steiner et al. 2002 protect such vertices with balls],
+            // and the budget would not stop it first: one chain halves about 1,000 times.
+            throw InputError("boundary recovery: " + segment_name(s) +
+                             " needs a split point closer than doubles resolve (its split "
+                             "point is vertex " +
+                             vertex_name(found->second) + ", " + feature_text(found->second) +
+                             "): refinement cascades at small input angles");
         }
         const VertIdx v = add_vertex(m, VertexFeature3::Segment, s, t, segment_name(s));
         if (encroached) {
@@ -371,10 +392,24 @@ class Recovery {
         pslg.segments = constraints;
         pslg.holes = holes;
         const Cdt2Result cdt = constrained_delaunay_2d(pslg);
-        if (cdt.mesh.vertex_count() > out.vertices.size() || cdt.counters.duplicates != 0) {
-            throw GeometryError("boundary recovery: the subsegments of " + facet_name(f) +
-                                " cross or overlap in its plane's projection (rounded split "
-                                "points finer than doubles resolve)");
+        if (cdt.counters.duplicates != 0) {
+            for (std::size_t v = 0; v < cdt.merged_into.size(); ++v) {
+                if (cdt.merged_into[v] == v) continue;
+                const VertIdx p = out.vertices[v], q = out.vertices[cdt.merged_into[v]];
+                throw GeometryError("boundary recovery: vertices " + vertex_name(p) + " and " +
+                                    vertex_name(q) + " of " + facet_name(f) +
+                                    " have the same projection into its plane (" + feature_text(p) +
+                                    ", " + feature_text(q) + ")");
+            }
+        }
+        if (cdt.mesh.vertex_count() > out.vertices.size()) {
+            throw GeometryError(
+                "boundary recovery: the subsegments of " + facet_name(f) +
+                " cross or overlap in its plane's projection (rounded split points finer than "
+                "doubles resolve): " +
+                std::to_string(cdt.counters.intersections) + " crossings, " +
+                std::to_string(cdt.counters.duplicates) + " repeated points, " +
+                std::to_string(cdt.counters.vertices_on_segments) + " vertices on pieces");
         }
         out.triangles.reserve(cdt.mesh.triangles.size());
         for (const VertIdx v : cdt.mesh.triangles) out.triangles.push_back(out.vertices[v]);
@@ -494,10 +529,29 @@ class Recovery {
         std::unordered_set<PointKey, PointKeyHash> pending_keys;
         std::vector<std::size_t> facet_subs;
         for (std::uint32_t f = 0; f < plc_.facets.size(); ++f) {
-            FacetTriangulation facet = triangulate_facet(f, by_segment, facet_subs);
+            // A facet whose vertices did not change keeps last round's triangulation (flipped
+            // further towards the new tetrahedralization's faces): the planar triangulations
+            // dominated the rounds of refinement cascades on larger random PLCs.
+            std::size_t pieces = 0;
+            for (const std::uint32_t s : facet_segments_[f]) pieces += by_segment[s].size();
+            const std::array<std::size_t, 2> signature{pieces, facet_interior_[f].size()};
+            CachedFacet& cached = cache_[f];
+            if (cached.valid && cached.signature == signature) {
+                facet_subs.clear();
+                for (const std::uint32_t s : facet_segments_[f])
+                    facet_subs.insert(facet_subs.end(), by_segment[s].begin(), by_segment[s].end());
+            } else {
+                cached.triangulation = triangulate_facet(f, by_segment, facet_subs);
+                cached.signature = signature;
+                cached.valid = true;
+            }
             const int drop = planes_[f].drop;
-            match_mesh_faces(facet, facet_subs, drop);
+            match_mesh_faces(cached.triangulation, facet_subs, drop);
+            const FacetTriangulation& facet = cached.triangulation;
             bool swept = false, vertex_encroached = false;
+            std::set<std::pair<double, double>> projections;
+            for (std::size_t k = 0; k + 1 < facet.xy.size(); k += 2)
+                projections.insert({facet.xy[k], facet.xy[k + 1]});
             for (std::size_t t = 0; t < facet.triangles.size(); t += 3) {
                 const VertIdx a = facet.triangles[t], b = facet.triangles[t + 1],
                               c = facet.triangles[t + 2];
@@ -540,8 +594,25 @@ class Recovery {
                         next.p[k] = point(a)[k] / 3 + point(b)[k] / 3 + point(c)[k] / 3;
                     next.fallback = true;
                 }
+                // Vertices of a facet must have distinct projections (its triangulation is
+                // planar there), but a circumcenter of nearly cocircular subfaces may land,
+                // in projection, on a vertex of the facet that differs from it only by the
+                // rounding of the dropped coordinate (random star 53, facet 62): then the
+                // subface's centroid, else nothing this round.
+                auto projected_taken = [&](const std::array<double, 3>& q) {
+                    const auto pq = project_facet_point(q.data(), drop);
+                    return projections.count({pq[0], pq[1]}) != 0;
+                };
+                if (projected_taken(next.p) && !next.fallback) {
+                    for (unsigned k = 0; k < 3; ++k)
+                        next.p[k] = point(a)[k] / 3 + point(b)[k] / 3 + point(c)[k] / 3;
+                    next.fallback = true;
+                }
+                if (projected_taken(next.p)) continue;
                 const PointKey key = point_key(next.p.data());
                 if (points_.count(key) != 0 || !pending_keys.insert(key).second) continue;
+                const auto pq = project_facet_point(next.p.data(), drop);
+                projections.insert({pq[0], pq[1]});
                 pending.push_back(next);
             }
         }

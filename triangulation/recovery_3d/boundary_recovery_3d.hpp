@@ -64,8 +64,11 @@ struct BoundaryRecovery3Result {
 
 /// The conforming Delaunay tetrahedralization of the PLC's domain (see above).
 /// @throws InputError from validate_plc_3d (bad or self-intersecting PLC), when the vertices
-///         are coplanar, or when the Steiner budget is exceeded (naming the segment or facet);
-///         GeometryError when a split point cannot be placed (features finer than doubles).
+///         are coplanar, when a facet corner lies inside one of the facet's segments, when the
+///         Steiner budget is exceeded (naming the segment or facet), or when refinement
+///         cascades (at small input angles) down to split points doubles cannot separate;
+///         GeometryError when a facet's rounded points cannot be triangulated in its plane or
+///         a missing subface admits no new point (neither seen on any test input).
 BoundaryRecovery3Result boundary_recovery_3d(const Plc3& plc,
                                              const BoundaryRecovery3Options& options = {});
 
