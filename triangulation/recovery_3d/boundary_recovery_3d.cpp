@@ -103,7 +103,6 @@ class Recovery {
         planes_.reserve(plc.facets.size());
         for (const Facet3& facet : plc.facets) planes_.push_back(facet_plane(plc, facet));
         facet_interior_.resize(plc.facets.size());
-        cache_.resize(plc.facets.size());
     }
 
     BoundaryRecovery3Result run();
@@ -121,12 +120,6 @@ class Recovery {
     std::vector<Subsegment> subs_;
     std::vector<std::vector<VertIdx>> facet_interior_;
     std::vector<FacetPlane> planes_;
-    struct CachedFacet {
-        std::array<std::size_t, 2> signature{};  ///< subsegments on its segments, interior points
-        FacetTriangulation triangulation;
-        bool valid = false;
-    };
-    std::vector<CachedFacet> cache_;
     std::uint64_t budget_ = 0;
     BoundaryRecovery3Counters counters_;
 
@@ -529,25 +522,9 @@ class Recovery {
         std::unordered_set<PointKey, PointKeyHash> pending_keys;
         std::vector<std::size_t> facet_subs;
         for (std::uint32_t f = 0; f < plc_.facets.size(); ++f) {
-            // A facet whose vertices did not change keeps last round's triangulation (flipped
-            // further towards the new tetrahedralization's faces): the planar triangulations
-            // dominated the rounds of refinement cascades on larger random PLCs.
-            std::size_t pieces = 0;
-            for (const std::uint32_t s : facet_segments_[f]) pieces += by_segment[s].size();
-            const std::array<std::size_t, 2> signature{pieces, facet_interior_[f].size()};
-            CachedFacet& cached = cache_[f];
-            if (cached.valid && cached.signature == signature) {
-                facet_subs.clear();
-                for (const std::uint32_t s : facet_segments_[f])
-                    facet_subs.insert(facet_subs.end(), by_segment[s].begin(), by_segment[s].end());
-            } else {
-                cached.triangulation = triangulate_facet(f, by_segment, facet_subs);
-                cached.signature = signature;
-                cached.valid = true;
-            }
+            FacetTriangulation facet = triangulate_facet(f, by_segment, facet_subs);
             const int drop = planes_[f].drop;
-            match_mesh_faces(cached.triangulation, facet_subs, drop);
-            const FacetTriangulation& facet = cached.triangulation;
+            match_mesh_faces(facet, facet_subs, drop);
             bool swept = false, vertex_encroached = false;
             std::set<std::pair<double, double>> projections;
             for (std::size_t k = 0; k + 1 < facet.xy.size(); k += 2)
@@ -595,19 +572,14 @@ class Recovery {
                     next.fallback = true;
                 }
                 // Vertices of a facet must have distinct projections (its triangulation is
-                // planar there), but a circumcenter of nearly cocircular subfaces may land,
-                // in projection, on a vertex of the facet that differs from it only by the
-                // rounding of the dropped coordinate (random star 53, facet 62): then the
-                // subface's centroid, else nothing this round.
+                // planar there), but a circumcenter of cocircular subfaces may land, in
+                // projection, on a vertex of the facet, possibly one that differs from it only
+                // by the rounding of the dropped coordinate (random star 53, facet 62): then
+                // nothing is added for this subface this round (other points change it).
                 auto projected_taken = [&](const std::array<double, 3>& q) {
                     const auto pq = project_facet_point(q.data(), drop);
                     return projections.count({pq[0], pq[1]}) != 0;
                 };
-                if (projected_taken(next.p) && !next.fallback) {
-                    for (unsigned k = 0; k < 3; ++k)
-                        next.p[k] = point(a)[k] / 3 + point(b)[k] / 3 + point(c)[k] / 3;
-                    next.fallback = true;
-                }
                 if (projected_taken(next.p)) continue;
                 const PointKey key = point_key(next.p.data());
                 if (points_.count(key) != 0 || !pending_keys.insert(key).second) continue;
