@@ -152,6 +152,35 @@ std::array<double, 3> circumcenter3_rational(const double* a, const double* b, c
     return result;
 }
 
+/// Finite input, u x v != 0 (checked by the caller).
+std::array<double, 3> triangle_circumcenter3_rational(const double* a, const double* b,
+                                                      const double* c) {
+    mpq_class u[3], v[3];
+    for (int k = 0; k < 3; ++k) {
+        u[k] = mpq_class(a[k]) - c[k];
+        v[k] = mpq_class(b[k]) - c[k];
+    }
+    const mpq_class w[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                            u[0] * v[1] - u[1] * v[0]};
+    const mpq_class uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    const mpq_class vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    const mpq_class ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+    if (sgn(ww) == 0) fail("circumcenter", "the points are collinear", {a, b, c}, 3);
+    mpq_class s[3];
+    for (int k = 0; k < 3; ++k) s[k] = uu * v[k] - vv * u[k];
+    const mpq_class n[3] = {s[1] * w[2] - s[2] * w[1], s[2] * w[0] - s[0] * w[2],
+                            s[0] * w[1] - s[1] * w[0]};
+    const mpq_class twice_ww = 2 * ww;
+    std::array<double, 3> result;
+    for (int k = 0; k < 3; ++k) {
+        const mpq_class coordinate = c[k] + n[k] / twice_ww;
+        if (!round_to_double(coordinate, result[static_cast<unsigned>(k)])) {
+            fail("circumcenter", "the circumcenter overflows the double range", {a, b, c}, 3);
+        }
+    }
+    return result;
+}
+
 /// orient2d(p, q, r) in rationals: (q - p) x (r - p).
 mpq_class orient2d_rational(const double* p, const double* q, const double* r) {
     return (mpq_class(q[0]) - p[0]) * (mpq_class(r[1]) - p[1]) -
@@ -459,7 +488,8 @@ DoubleDouble minus(const DoubleDouble& x, const DoubleDouble& y) noexcept {
 }
 
 /// One coordinate: c + N / (2 H); false when not certified (then nothing is known).
-bool certify_dd(double c, const DoubleDouble& n, double pn, const DoubleDouble& h, double ph, double& result) noexcept {
+bool certify_dd(double c, const DoubleDouble& n, double pn, const DoubleDouble& h, double ph,
+                double& result) noexcept {
     // Q = N / H: q1 from the high parts, one exact-ish remainder step.
     const double q1 = n.hi / h.hi;
     if (!(std::fabs(q1) >= 0x1p-400 && std::fabs(q1) <= 0x1p400)) return false;
@@ -501,7 +531,8 @@ bool circumcenter2_double_double(const double* p, const double* q, const double*
     const double pnx = p_norm.hi * std::fabs(q[1]) + q_norm.hi * std::fabs(p[1]);
     const DoubleDouble ny = minus(times(q_norm, p[0]), times(p_norm, q[0]));
     const double pny = q_norm.hi * std::fabs(p[0]) + p_norm.hi * std::fabs(q[0]);
-    return certify_dd(c[0], nx, pnx, h, ph, result[0]) && certify_dd(c[1], ny, pny, h, ph, result[1]);
+    return certify_dd(c[0], nx, pnx, h, ph, result[0]) &&
+           certify_dd(c[1], ny, pny, h, ph, result[1]);
 }
 
 }  // namespace
@@ -694,6 +725,27 @@ std::array<double, 3> circumcenter_exact(const double* a, const double* b, const
                                          const double* d) {
     check_tetrahedron(a, b, c, d);
     return circumcenter3_rational(a, b, c, d);
+}
+
+std::array<double, 3> triangle_circumcenter_3d(const double* a, const double* b, const double* c) {
+    require_finite_points("circumcenter", {a, b, c}, 3);
+    return triangle_circumcenter3_rational(a, b, c);
+}
+
+std::array<double, 3> point_on_segment_3d(const double* p, const double* q, double t) {
+    require_finite_points("point_on_segment", {p, q}, 3);
+    if (!std::isfinite(t)) {
+        fail("point_on_segment", "the parameter is not finite", {p, q}, 3);
+    }
+    const mpq_class s(t);
+    std::array<double, 3> result;
+    for (unsigned k = 0; k < 3; ++k) {
+        const mpq_class coordinate = p[k] + s * (mpq_class(q[k]) - p[k]);
+        if (!round_to_double(coordinate, result[k])) {
+            fail("point_on_segment", "the point overflows the double range", {p, q}, 3);
+        }
+    }
+    return result;
 }
 
 std::array<double, 2> segment_intersection_exact(const double* a, const double* b, const double* c,

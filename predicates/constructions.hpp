@@ -51,6 +51,20 @@ std::array<double, 2> circumcenter(const double* a, const double* b, const doubl
 std::array<double, 3> circumcenter(const double* a, const double* b, const double* c,
                                    const double* d);
 
+/// 3D circumcenter of the triangle a, b, c (the centre of its circumcircle, in its plane),
+/// correctly rounded per coordinate: c + ((|u|^2 v - |v|^2 u) x (u x v)) / (2 |u x v|^2) with
+/// u = a - c, v = b - c, evaluated exactly in GMP rationals and rounded once by MPFR (exact path
+/// only: boundary recovery calls it once per missing subface, far from any hot loop).
+/// @throws GeometryError on non-finite input, collinear points (exact: u x v = 0) or overflow.
+std::array<double, 3> triangle_circumcenter_3d(const double* a, const double* b, const double* c);
+
+/// The point p + t (q - p) of the segment from p to q (3 doubles each) at parameter t,
+/// correctly rounded per coordinate (exact rational value, rounded once by MPFR): a split point
+/// on an input segment computed from the segment's original ends. Scaling p and q by 2^k scales
+/// the result by 2^k exactly (while nothing is subnormal).
+/// @throws GeometryError on non-finite input.
+std::array<double, 3> point_on_segment_3d(const double* p, const double* q, double t);
+
 /// The point where the segments [a, b] and [c, d] meet, correctly rounded per coordinate.
 /// Accepted: the segments have exactly one common point and are not collinear, i.e. a proper
 /// crossing, or one or two endpoints lying on the other segment (T-junctions, shared endpoints);
@@ -87,8 +101,9 @@ std::array<double, 2> segment_intersection_exact(const double* a, const double* 
 /// Every call that returns counts once: calls == fast + exact_range + exact_uncertified.
 struct ConstructionStats {
     std::uint64_t calls = 0;
-    std::uint64_t fast = 0;               ///< every coordinate certified on the fast path
-    std::uint64_t double_double = 0;      ///< of those, by the double-double stage (2D, exact differences)
+    std::uint64_t fast = 0;  ///< every coordinate certified on the fast path
+    std::uint64_t double_double =
+        0;  ///< of those, by the double-double stage (2D, exact differences)
     std::uint64_t neighbour_steps = 0;    ///< coordinates certified at q's neighbour, not q
     std::uint64_t exact_range = 0;        ///< inputs or result outside the expansion-safe range
     std::uint64_t exact_uncertified = 0;  ///< in range, but neither q nor its neighbour certified

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+// Tests of predicates/dot_sign_3d (against GMP rationals) and of the constructions boundary
+// recovery adds to predicates/constructions: triangle_circumcenter_3d (against the existing 2D
+// exact path on triangles in coordinate planes, and the equidistance of the exact value) and
+// point_on_segment_3d.
+#include "predicates/dot_sign_3d.hpp"
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+
+#include "base/errors.hpp"
+#include "predicates/constructions.hpp"
+
+namespace exactmesh::predicates {
+namespace {
+
+Sign reference_dot(const double* p, const double* a, const double* b) {
+    mpq_class sum = 0;
+    for (int k = 0; k < 3; ++k) sum += (mpq_class(a[k]) - p[k]) * (mpq_class(b[k]) - p[k]);
+    return sgn(sum) > 0 ? Sign::Positive : sgn(sum) < 0 ? Sign::Negative : Sign::Zero;
+}
+
+TEST(Predicates_DotSign3d, AgreesWithRationalsOnRandomAndNearSphericalPoints) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int zeros = 0;
+    for (int i = 0; i < 20000; ++i) {
+        double p[3], a[3], b[3];
+        for (int k = 0; k < 3; ++k) {
+            a[k] = u(rng);
+            b[k] = u(rng);
+            p[k] = u(rng);
+        }
+        if (i % 2 == 1) {
+            // p on (or an ulp off) the diametral sphere: the point a + (b - a) rotated about
+            // the midpoint in the plane z = const, built from integers so it is exact.
+            const int m = i % 7 + 1;
+            const double aa[3] = {double(-m), 0, 1}, bb[3] = {double(m), 0, 1};
+            const double pp[3] = {0, std::nextafter(double(m), i % 4 == 1 ? 0.0 : 1e9), 1};
+            std::copy(aa, aa + 3, a);
+            std::copy(bb, bb + 3, b);
+            std::copy(pp, pp + 3, p);
+            if (i % 4 == 3) p[1] = double(m);
+        }
+        const Sign expected = reference_dot(p, a, b);
+        zeros += expected == Sign::Zero;
+        ASSERT_EQ(dot_sign_3d(p, a, b), expected) << i;
+        // Scaled by 2^600 and 2^-600: the same sign.
+        for (const int e : {600, -600}) {
+            double ps[3], as[3], bs[3];
+            for (int k = 0; k < 3; ++k) {
+                ps[k] = std::ldexp(p[k], e);
+                as[k] = std::ldexp(a[k], e);
+                bs[k] = std::ldexp(b[k], e);
+            }
+            ASSERT_EQ(dot_sign_3d(ps, as, bs), expected) << i << " 2^" << e;
+        }
+    }
+    EXPECT_GT(zeros, 0);
+}
+
+TEST(Predicates_TriangleCircumcenter3d, MatchesTheExact2dCircumcenterInCoordinatePlanes) {
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(-10, 10);
+    for (int i = 0; i < 300; ++i) {
+        const double a2[2] = {u(rng), u(rng)}, b2[2] = {u(rng), u(rng)}, c2[2] = {u(rng), u(rng)};
+        const double level = u(rng);
+        const std::array<double, 2> expected = circumcenter_exact(a2, b2, c2);
+        for (int drop = 0; drop < 3; ++drop) {
+            // The triangle in the plane (coordinate drop) = level, with the 2D coordinates in
+            // the two others: the same exact circumcenter, so the same rounded one.
+            double a[3], b[3], c[3];
+            const int i1 = (drop + 1) % 3, i2 = (drop + 2) % 3;
+            a[drop] = b[drop] = c[drop] = level;
+            a[i1] = a2[0], a[i2] = a2[1], b[i1] = b2[0], b[i2] = b2[1], c[i1] = c2[0],
+            c[i2] = c2[1];
+            const std::array<double, 3> center = triangle_circumcenter_3d(a, b, c);
+            EXPECT_EQ(center[static_cast<unsigned>(i1)], expected[0]) << i;
+            EXPECT_EQ(center[static_cast<unsigned>(i2)], expected[1]) << i;
+            EXPECT_EQ(center[static_cast<unsigned>(drop)], level) << i;
+        }
+    }
+}
+
+TEST(Predicates_TriangleCircumcenter3d, ExactOnATiltedTriangleAndScalesByPowersOfTwo) {
+    // (0,0,0), (2,0,2), (0,2,2): in the plane z = x + y, at squared distance 24/9 from all
+    // three, the circumcenter is (2/3, 2/3, 4/3), each coordinate rounded once.
+    const double a[3] = {0, 0, 0}, b[3] = {2, 0, 2}, c[3] = {0, 2, 2};
+    const auto center = triangle_circumcenter_3d(a, b, c);
+    EXPECT_EQ(center[0], 2.0 / 3.0);
+    EXPECT_EQ(center[1], 2.0 / 3.0);
+    EXPECT_EQ(center[2], 4.0 / 3.0);
+    for (const int e : {600, -600}) {
+        double as[3], bs[3], cs[3];
+        for (int k = 0; k < 3; ++k) {
+            as[k] = std::ldexp(a[k], e);
+            bs[k] = std::ldexp(b[k], e);
+            cs[k] = std::ldexp(c[k], e);
+        }
+        const auto scaled = triangle_circumcenter_3d(as, bs, cs);
+        for (unsigned k = 0; k < 3; ++k) EXPECT_EQ(scaled[k], std::ldexp(center[k], e));
+    }
+    const double d[3] = {1, 1, 1};
+    EXPECT_THROW(triangle_circumcenter_3d(a, d, d), GeometryError);
+}
+
+TEST(Predicates_PointOnSegment3d, CorrectlyRoundedAndScaleInvariant) {
+    const double p[3] = {1, 0, -3}, q[3] = {2, 0x1p-60, 5};
+    const auto m = point_on_segment_3d(p, q, 0.5);
+    EXPECT_EQ(m[0], 1.5);
+    EXPECT_EQ(m[1], 0x1p-61);
+    EXPECT_EQ(m[2], 1.0);
+    // 1/3 of the way: the rational 1 + t (2 - 1) rounded once.
+    const double t = 1.0 / 3.0;
+    const auto r = point_on_segment_3d(p, q, t);
+    const mpq_class exact = mpq_class(1) + mpq_class(t);
+    const mpq_class error = abs(mpq_class(r[0]) - exact);
+    EXPECT_LE(error, abs(mpq_class(std::nextafter(r[0], 0.0)) - exact));
+    EXPECT_LE(error, abs(mpq_class(std::nextafter(r[0], 9.0)) - exact));
+    EXPECT_EQ(r[1], 0x1p-60 * t);  // exact: a power of two times t
+    for (const int e : {600, -600}) {
+        double ps[3], qs[3];
+        for (int k = 0; k < 3; ++k) {
+            ps[k] = std::ldexp(p[k], e);
+            qs[k] = std::ldexp(q[k], e);
+        }
+        const auto s = point_on_segment_3d(ps, qs, t);
+        for (unsigned k = 0; k < 3; ++k) EXPECT_EQ(s[k], std::ldexp(r[k], e));
+    }
+}
+
+}  // namespace
+}  // namespace exactmesh::predicates

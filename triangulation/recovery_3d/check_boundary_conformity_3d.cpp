@@ -1,0 +1,270 @@
+// SPDX-License-Identifier: MIT
+// Exact check of a conforming tetrahedralization of a PLC (see check_boundary_conformity_3d.hpp).
+#include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <unordered_set>
+#include <vector>
+
+#include "predicates/orient2d.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
+#include "triangulation/checks/check_topology_3d.hpp"
+#include "triangulation/mesh/facet_projection_3d.hpp"
+#include "triangulation/mesh/mesh3.hpp"
+#include "triangulation/recovery_3d/plc_3d.hpp"
+
+namespace exactmesh::triangulation {
+
+using predicates::Sign;
+
+namespace {
+
+using Face = std::array<VertIdx, 3>;
+
+Face sorted3(VertIdx a, VertIdx b, VertIdx c) {
+    Face k{a, b, c};
+    std::sort(k.begin(), k.end());
+    return k;
+}
+
+std::uint64_t edge_key(VertIdx a, VertIdx b) {
+    if (a > b) std::swap(a, b);
+    return (std::uint64_t{a} << 32) | b;
+}
+
+std::string name(VertIdx v) {
+    return std::to_string(v);
+}
+
+/// Whether vertex w lies within rounding of segment [s0, s1] in every coordinate projection
+/// where the segment is not a single point.
+bool within_rounding_3d(const double* w, const double* s0, const double* s1) {
+    for (int drop = 0; drop < 3; ++drop) {
+        const auto pw = project_facet_point(w, drop);
+        const auto p0 = project_facet_point(s0, drop);
+        const auto p1 = project_facet_point(s1, drop);
+        if (p0 == p1) continue;
+        if (!predicates::within_rounding_of_segment(pw.data(), p0.data(), p1.data())) return false;
+    }
+    return true;
+}
+
+std::string check(const Plc3& plc, const ConformingMesh3& cm) {
+    const Tetrahedralization3& mesh = cm.mesh;
+    const TopologyReport3 topology = check_topology_3d(mesh);
+    if (!topology.ok) return "topology: " + topology.problem;
+    const std::uint32_t n = mesh.vertex_count();
+    if (cm.input_vertex_count != plc.vertex_count() || cm.vertex_feature.size() != n ||
+        cm.feature_index.size() != n)
+        return "vertex features: sizes do not match the mesh";
+    for (std::size_t i = 0; i < plc.xyz.size(); ++i)
+        if (mesh.xyz[i] != plc.xyz[i]) return "input vertex " + name(VertIdx(i / 3)) + " moved";
+
+    // Mesh faces (with the number of tetrahedra holding each) and edges.
+    std::map<Face, int> faces;
+    std::unordered_set<std::uint64_t> edges;
+    std::vector<bool> used(n, false);
+    for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
+        for (unsigned i = 0; i < 4; ++i) {
+            used[mesh.tets[t + i]] = true;
+            for (unsigned j = i + 1; j < 4; ++j)
+                edges.insert(edge_key(mesh.tets[t + i], mesh.tets[t + j]));
+            const unsigned* lf = kFaceVertex[i];
+            ++faces[sorted3(mesh.tets[t + lf[0]], mesh.tets[t + lf[1]], mesh.tets[t + lf[2]])];
+        }
+    }
+    for (const Facet3& facet : plc.facets)
+        for (const auto& polygon : facet.polygons)
+            for (const VertIdx v : polygon)
+                if (!used[v]) return "facet corner " + name(v) + " is not a mesh vertex";
+
+    // Subsegments: edges, chained along their segment.
+    const std::size_t segment_count = cm.segments.size() / 2;
+    std::vector<std::vector<std::array<VertIdx, 2>>> chains(segment_count);
+    for (std::size_t i = 0; i < cm.subsegment_segment.size(); ++i) {
+        const VertIdx a = cm.subsegments[2 * i], b = cm.subsegments[2 * i + 1];
+        if (edges.count(edge_key(a, b)) == 0)
+            return "subsegment (" + name(a) + ", " + name(b) + ") is not a mesh edge";
+        const std::uint32_t s = cm.subsegment_segment[i];
+        if (s >= segment_count) return "subsegment with an unknown segment";
+        chains[s].push_back({a, b});
+    }
+    for (std::size_t s = 0; s < segment_count; ++s) {
+        // A path from the first end to the second through every piece once: every inner
+        // vertex in exactly two pieces, the ends in one.
+        std::map<VertIdx, int> degree;
+        for (const auto& piece : chains[s]) {
+            ++degree[piece[0]];
+            ++degree[piece[1]];
+        }
+        const VertIdx s0 = cm.segments[2 * s], s1 = cm.segments[2 * s + 1];
+        for (const auto& [v, d] : degree) {
+            const bool end = v == s0 || v == s1;
+            if (d != (end ? 1 : 2))
+                return "segment " + std::to_string(s) +
+                       ": its subsegments do not form a chain at " + name(v);
+            if (!end &&
+                (cm.vertex_feature[v] != VertexFeature3::Segment || cm.feature_index[v] != s))
+                return "vertex " + name(v) + " inside segment " + std::to_string(s) +
+                       "'s chain is not recorded on it";
+        }
+        if (degree.count(s0) == 0 || degree.count(s1) == 0)
+            return "segment " + std::to_string(s) + " is not covered by subsegments";
+    }
+
+    // Steiner vertices within rounding of their features.
+    const SurfaceTriangles3 input_triangles = triangulate_facets_3d(plc);
+    std::vector<FacetPlane> planes;
+    for (const Facet3& facet : plc.facets) planes.push_back(facet_plane(plc, facet));
+    for (VertIdx v = cm.input_vertex_count; v < n; ++v) {
+        const std::uint32_t index = cm.feature_index[v];
+        if (cm.vertex_feature[v] == VertexFeature3::Segment) {
+            if (index >= segment_count) return "vertex " + name(v) + ": unknown segment";
+            if (!within_rounding_3d(mesh.point(v), mesh.point(cm.segments[2 * index]),
+                                    mesh.point(cm.segments[2 * index + 1])))
+                return "segment vertex " + name(v) + " is not within rounding of its segment";
+        } else if (cm.vertex_feature[v] == VertexFeature3::Facet) {
+            if (index >= plc.facets.size()) return "vertex " + name(v) + ": unknown facet";
+            const int drop = planes[index].drop;
+            const auto q = project_facet_point(mesh.point(v), drop);
+            bool inside = false;
+            for (std::uint32_t t = 0; t < input_triangles.triangle_count() && !inside; ++t) {
+                if (input_triangles.facets[t] != index) continue;
+                const VertIdx* tri = &input_triangles.triangles[3 * std::size_t{t}];
+                Sign sides[3];
+                for (unsigned k = 0; k < 3; ++k) {
+                    const auto a = project_facet_point(plc.point(tri[k]), drop);
+                    const auto b = project_facet_point(plc.point(tri[(k + 1) % 3]), drop);
+                    sides[k] = predicates::orient2d(a.data(), b.data(), q.data());
+                }
+                inside = (sides[0] != Sign::Negative && sides[1] != Sign::Negative &&
+                          sides[2] != Sign::Negative) ||
+                         (sides[0] != Sign::Positive && sides[1] != Sign::Positive &&
+                          sides[2] != Sign::Positive);
+            }
+            if (!inside)
+                return "facet vertex " + name(v) + "'s projection lies outside facet " +
+                       std::to_string(index);
+        } else {
+            return "vertex " + name(v) + " beyond the input has no feature";
+        }
+    }
+
+    // Subfaces: faces of the mesh, oriented like their facet, paired along inner edges.
+    std::set<Face> subface_set;
+    std::map<std::uint32_t, std::map<std::pair<VertIdx, VertIdx>, int>> directed;  // per facet
+    std::unordered_set<std::uint64_t> subsegment_edges;
+    for (std::size_t i = 0; i < cm.subsegment_segment.size(); ++i)
+        subsegment_edges.insert(edge_key(cm.subsegments[2 * i], cm.subsegments[2 * i + 1]));
+    for (std::size_t t = 0; t < cm.subface_facet.size(); ++t) {
+        const VertIdx* f = &cm.subfaces[3 * t];
+        const std::uint32_t facet = cm.subface_facet[t];
+        if (facet >= plc.facets.size()) return "subface with an unknown facet";
+        if (faces.count(sorted3(f[0], f[1], f[2])) == 0)
+            return "subface (" + name(f[0]) + ", " + name(f[1]) + ", " + name(f[2]) +
+                   ") of facet " + std::to_string(facet) + " is not a mesh face";
+        subface_set.insert(sorted3(f[0], f[1], f[2]));
+        const Sign expected = planes[facet].flip ? Sign::Negative : Sign::Positive;
+        if (projected_orient(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]),
+                             planes[facet].drop) != expected)
+            return "subface (" + name(f[0]) + ", " + name(f[1]) + ", " + name(f[2]) +
+                   ") is not oriented like facet " + std::to_string(facet);
+        for (unsigned k = 0; k < 3; ++k) ++directed[facet][{f[k], f[(k + 1) % 3]}];
+    }
+    for (const auto& [facet, edge_counts] : directed) {
+        for (const auto& [edge, count] : edge_counts) {
+            if (count != 1)
+                return "facet " + std::to_string(facet) + ": directed edge (" + name(edge.first) +
+                       ", " + name(edge.second) + ") in " + std::to_string(count) + " subfaces";
+            const auto twin = edge_counts.find({edge.second, edge.first});
+            if (twin == edge_counts.end() &&
+                subsegment_edges.count(edge_key(edge.first, edge.second)) == 0)
+                return "facet " + std::to_string(facet) + ": edge (" + name(edge.first) + ", " +
+                       name(edge.second) + ") bounds one subface and is no subsegment";
+        }
+    }
+    // The boundary of each facet's subfaces, as a chain of directed edges, is the boundary of
+    // its input triangles (triangulate_facets_3d, the same reference orientation) with every
+    // input edge (p, q) replaced by its chain of subsegments walked from p to q. With every
+    // subface positively oriented in the projection, the winding-number argument then makes the
+    // subfaces tile the facet exactly once, up to the slivers between each segment and its
+    // chain of rounded Steiner points.
+    {
+        std::map<std::uint64_t, std::uint32_t> segment_of;
+        for (std::size_t s = 0; s < segment_count; ++s)
+            segment_of[edge_key(cm.segments[2 * s], cm.segments[2 * s + 1])] =
+                static_cast<std::uint32_t>(s);
+        // The chain of segment s as vertices from `from` to its other end.
+        auto walk = [&](std::uint32_t s, VertIdx from) {
+            std::map<VertIdx, std::vector<VertIdx>> next;
+            for (const auto& piece : chains[s]) {
+                next[piece[0]].push_back(piece[1]);
+                next[piece[1]].push_back(piece[0]);
+            }
+            std::vector<VertIdx> path{from};
+            VertIdx previous = kNone, at = from;
+            while (path.size() <= chains[s].size()) {
+                const auto& options = next[at];
+                VertIdx step = kNone;
+                for (const VertIdx w : options)
+                    if (w != previous) step = w;
+                if (step == kNone) break;
+                previous = at;
+                at = step;
+                path.push_back(at);
+            }
+            return path;
+        };
+        std::vector<std::map<std::pair<VertIdx, VertIdx>, int>> input_directed(plc.facets.size());
+        for (std::uint32_t t = 0; t < input_triangles.triangle_count(); ++t) {
+            const VertIdx* tri = &input_triangles.triangles[3 * std::size_t{t}];
+            for (unsigned k = 0; k < 3; ++k)
+                ++input_directed[input_triangles.facets[t]][{tri[k], tri[(k + 1) % 3]}];
+        }
+        for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
+            std::set<std::pair<VertIdx, VertIdx>> expected;
+            for (const auto& [edge, count] : input_directed[f]) {
+                if (input_directed[f].count({edge.second, edge.first}) != 0) continue;
+                const auto s = segment_of.find(edge_key(edge.first, edge.second));
+                if (s == segment_of.end())
+                    return "facet " + std::to_string(f) + ": boundary edge (" + name(edge.first) +
+                           ", " + name(edge.second) + ") of its input triangles is no segment";
+                const std::vector<VertIdx> path = walk(s->second, edge.first);
+                if (path.back() != edge.second || path.size() != chains[s->second].size() + 1)
+                    return "segment " + std::to_string(s->second) +
+                           ": its subsegments do not lead from one end to the other";
+                for (std::size_t k = 0; k + 1 < path.size(); ++k)
+                    expected.insert({path[k], path[k + 1]});
+            }
+            std::set<std::pair<VertIdx, VertIdx>> boundary;
+            const auto it = directed.find(f);
+            if (it != directed.end())
+                for (const auto& [edge, count] : it->second)
+                    if (it->second.count({edge.second, edge.first}) == 0) boundary.insert(edge);
+            if (boundary != expected)
+                return "facet " + std::to_string(f) +
+                       ": the boundary of its subfaces is not its boundary (split by its "
+                       "subsegments)";
+        }
+    }
+    for (const auto& [face, count] : faces) {
+        if (count == 1 && subface_set.count(face) == 0)
+            return "boundary face (" + name(face[0]) + ", " + name(face[1]) + ", " + name(face[2]) +
+                   ") is no subface";
+    }
+    return "";
+}
+
+}  // namespace
+
+BoundaryConformityReport3 check_boundary_conformity_3d(const Plc3& plc,
+                                                       const ConformingMesh3& mesh) {
+    BoundaryConformityReport3 report;
+    report.problem = check(plc, mesh);
+    report.ok = report.problem.empty();
+    return report;
+}
+
+}  // namespace exactmesh::triangulation
