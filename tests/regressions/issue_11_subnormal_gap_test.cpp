@@ -94,8 +94,8 @@ TEST(Issue11SubnormalGap, issue_11_swap_and_cavity_agree_on_the_gap) {
         options.remove_exterior = false;
         const tri::Cdt2Result cdt =
             tri::constrained_delaunay_2d(tri::Pslg{kGapPoints, kGapSegments, {}, {}}, options);
-        const auto report = tri::check_constrained_delaunay_2d(cdt.mesh, cdt.input_vertex_count,
-                                                               kGapSegments, {});
+        const auto report =
+            tri::check_constrained_delaunay_2d(cdt.mesh, cdt.input_vertex_count, kGapSegments, {});
         EXPECT_TRUE(report.ok) << report.problem;
     }
 }

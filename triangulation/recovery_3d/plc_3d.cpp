@@ -17,6 +17,7 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
+#include "triangulation/mesh/facet_projection_3d.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -54,53 +55,6 @@ struct Names {
         return text;
     }
 };
-
-/// The coordinates kept when axis `drop` is dropped, in the cyclic order (drop+1, drop+2): the
-/// projected orient2d then has the sign of the normal's component along `drop`.
-std::array<double, 2> project(const double* p, int drop) {
-    return {p[(drop + 1) % 3], p[(drop + 2) % 3]};
-}
-
-Sign projected_orient(const double* a, const double* b, const double* c, int drop) {
-    const auto pa = project(a, drop), pb = project(b, drop), pc = project(c, drop);
-    return orient2d(pa.data(), pb.data(), pc.data());
-}
-
-bool collinear_3d(const double* a, const double* b, const double* c) {
-    for (int drop = 0; drop < 3; ++drop) {
-        if (projected_orient(a, b, c, drop) != Sign::Zero) return false;
-    }
-    return true;
-}
-
-/// The axis whose projection keeps triangle abc (not collinear) non-degenerate, preferring the
-/// largest normal component. The approximate normal is computed on coordinates scaled by a
-/// power of two (exact), so the choice is the same for the input scaled by 2^k; exactness does
-/// not depend on it (any axis with a non-zero exact component gives an injective projection).
-int drop_axis(const double* a, const double* b, const double* c) {
-    Sign exact[3];
-    for (int k = 0; k < 3; ++k) exact[k] = projected_orient(a, b, c, k);
-    double largest = 0;
-    for (const double* p : {a, b, c}) {
-        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(p[k]));
-    }
-    const double scale =
-        largest > 0 ? std::ldexp(1.0, std::clamp(-std::ilogb(largest), -1000, 1000)) : 1.0;
-    double d1[3], d2[3];
-    for (int k = 0; k < 3; ++k) {
-        d1[k] = b[k] * scale - a[k] * scale;
-        d2[k] = c[k] * scale - a[k] * scale;
-    }
-    const double normal[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
-                              d1[0] * d2[1] - d1[1] * d2[0]};
-    int best = -1;
-    for (int k = 0; k < 3; ++k) {
-        if (exact[k] == Sign::Zero) continue;
-        if (best < 0 || std::fabs(normal[k]) > std::fabs(normal[best])) best = k;
-    }
-    EM_ASSERT(best >= 0);
-    return best;
-}
 
 /// Lexicographic order of 2D points (monotone along any line: orders collinear points).
 bool less_2d(const std::array<double, 2>& p, const std::array<double, 2>& q) {
@@ -146,8 +100,9 @@ bool segment_meets_triangle(const double* p, const double* q, const double* a, c
     if (sp == sq && sp != Sign::Zero) return false;
     if (sp == Sign::Zero && sq == Sign::Zero) {
         const int drop = drop_axis(a, b, c);
-        const auto pa = project(a, drop), pb = project(b, drop), pc = project(c, drop);
-        const auto pp = project(p, drop), pq = project(q, drop);
+        const auto pa = project_facet_point(a, drop), pb = project_facet_point(b, drop),
+                   pc = project_facet_point(c, drop);
+        const auto pp = project_facet_point(p, drop), pq = project_facet_point(q, drop);
         return triangle_contains_2d(pa, pb, pc, pp) || triangle_contains_2d(pa, pb, pc, pq) ||
                segments_meet_2d(pp, pq, pa, pb) || segments_meet_2d(pp, pq, pb, pc) ||
                segments_meet_2d(pp, pq, pc, pa);
@@ -239,10 +194,10 @@ std::vector<std::array<VertIdx, 2>> facet_edges(const Facet3& facet) {
     const auto edges = facet_edges(plc.facets[f]);
     for (std::size_t i = 0; i < edges.size(); ++i) {
         for (std::size_t j = i + 1; j < edges.size(); ++j) {
-            const auto p = project(plc.point(edges[i][0]), drop);
-            const auto q = project(plc.point(edges[i][1]), drop);
-            const auto r = project(plc.point(edges[j][0]), drop);
-            const auto s = project(plc.point(edges[j][1]), drop);
+            const auto p = project_facet_point(plc.point(edges[i][0]), drop);
+            const auto q = project_facet_point(plc.point(edges[i][1]), drop);
+            const auto r = project_facet_point(plc.point(edges[j][0]), drop);
+            const auto s = project_facet_point(plc.point(edges[j][1]), drop);
             const Sign o1 = orient2d(p.data(), q.data(), r.data());
             const Sign o2 = orient2d(p.data(), q.data(), s.data());
             const Sign o3 = orient2d(r.data(), s.data(), p.data());
@@ -279,18 +234,7 @@ void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out)
         fail("degenerate " + names.facet(f) + ": no polygon with 3 or more corners");
     }
     // The reference corners: the first three non-collinear ones in the order listed.
-    VertIdx ref[3] = {kNone, kNone, kNone};
-    for (const auto& polygon : facet.polygons) {
-        for (const VertIdx v : polygon) {
-            if (ref[0] == kNone) {
-                ref[0] = v;
-            } else if (ref[1] == kNone) {
-                if (v != ref[0]) ref[1] = v;
-            } else if (ref[2] == kNone) {
-                if (!collinear_3d(plc.point(ref[0]), plc.point(ref[1]), plc.point(v))) ref[2] = v;
-            }
-        }
-    }
+    const auto ref = facet_reference_corners(plc, facet);
     if (ref[2] == kNone) fail("degenerate " + names.facet(f) + ": its corners are collinear");
     const double* a = plc.point(ref[0]);
     const double* b = plc.point(ref[1]);
@@ -327,7 +271,7 @@ void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out)
     std::vector<double> xy;
     xy.reserve(2 * corners.size());
     for (const VertIdx v : corners) {
-        const auto p = project(plc.point(v), drop);
+        const auto p = project_facet_point(plc.point(v), drop);
         xy.push_back(p[0]);
         xy.push_back(p[1]);
     }
@@ -338,7 +282,7 @@ void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out)
     }
     std::vector<double> holes;
     for (std::size_t h = 0; h + 2 < facet.holes.size(); h += 3) {
-        const auto p = project(&facet.holes[h], drop);
+        const auto p = project_facet_point(&facet.holes[h], drop);
         holes.push_back(p[0]);
         holes.push_back(p[1]);
     }
