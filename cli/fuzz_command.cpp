@@ -600,7 +600,8 @@ int run_program_fuzz(const FuzzArguments& arguments) {
     options.max_points = arguments.max_points;
     options.pslg_check =
         arguments.conforming ? PslgCheck::Conforming : PslgCheck::ConstrainedDelaunay;
-    options.minimize_budget = std::chrono::seconds(std::llround(arguments.minimize_seconds));
+    options.minimize_budget =
+        std::chrono::milliseconds(std::llround(arguments.minimize_seconds * 1000));
     options.max_minimized = kMaxSavedFailures;
     options.quiet = arguments.quiet;
     if ((arguments.conforming || arguments.convex_hull) && options.kind != FuzzKind::Pslg)

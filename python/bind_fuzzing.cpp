@@ -10,8 +10,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <iostream>
 #include <optional>
@@ -128,9 +128,7 @@ py::dict fuzz(const py::object& adapter, const std::string& kind, std::uint64_t 
     options.pslg_check =
         conforming ? gen::PslgCheck::Conforming : gen::PslgCheck::ConstrainedDelaunay;
     options.convex_hull = convex_hull;
-    options.minimize_budget =
-        std::chrono::duration_cast<std::chrono::seconds>(std::chrono::duration<double>(
-            minimize_seconds > 0 ? std::max(minimize_seconds, 1.0) : 0.0));
+    options.minimize_budget = std::chrono::milliseconds(std::llround(minimize_seconds * 1000));
     options.max_minimized = max_minimized;
     options.quiet = quiet;
 

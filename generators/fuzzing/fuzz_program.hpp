@@ -110,7 +110,7 @@ struct ProgramFuzzOptions {
     std::uint32_t max_points = 1000;  ///< largest input
     PslgCheck pslg_check = PslgCheck::ConstrainedDelaunay;
     bool convex_hull = false;  ///< PSLGs: the output must cover the convex hull (Triangle -c)
-    std::chrono::seconds minimize_budget{60};  ///< per failure
+    std::chrono::milliseconds minimize_budget{60000};  ///< per failure
     std::uint64_t max_minimized = 20;  ///< failures past this many are counted, not minimized
     bool quiet = false;                ///< no progress lines
 };
