@@ -32,8 +32,7 @@
 
 #include "base/errors.hpp"
 #include "cli/commands.hpp"
-#include "cli/fuzz_cases.hpp"
-#include "cli/fuzz_program.hpp"
+#include "cli/external_program.hpp"
 #include "generators/inputs/inputs.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
@@ -87,7 +86,8 @@ struct FuzzArguments {
     std::uint64_t seed = 1;
     std::string out = ".";
     bool quiet = false;
-    // Fuzzing another program (--command): cli/fuzz_program.hpp.
+    // Fuzzing another program (--command): generators/fuzzing/fuzz_program.hpp, with the program
+    // run by cli/external_program.hpp.
     std::string command;
     std::string kind = "points2d";
     std::uint64_t count = 100;
@@ -313,7 +313,7 @@ struct Minimized {
     bool complete = true;  ///< false when the time budget ran out first
 };
 
-/// ddmin (cli/fuzz_cases.hpp) over the points, while the same failure persists.
+/// ddmin (generators/fuzzing/fuzz_cases.hpp) over the points, while the same failure persists.
 Minimized minimize(const Case& c, const std::vector<double>& xy, const Failure& failure,
                    bool inject_fault, Clock::time_point give_up) {
     const DdminResult small = ddmin(
@@ -600,7 +600,8 @@ int run_program_fuzz(const FuzzArguments& arguments) {
     options.max_points = arguments.max_points;
     options.pslg_check =
         arguments.conforming ? PslgCheck::Conforming : PslgCheck::ConstrainedDelaunay;
-    options.minimize_budget = std::chrono::seconds(std::llround(arguments.minimize_seconds));
+    options.minimize_budget =
+        std::chrono::milliseconds(std::llround(arguments.minimize_seconds * 1000));
     options.max_minimized = kMaxSavedFailures;
     options.quiet = arguments.quiet;
     if ((arguments.conforming || arguments.convex_hull) && options.kind != FuzzKind::Pslg)

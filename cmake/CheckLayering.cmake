@@ -11,9 +11,11 @@
 # include only themselves and the families listed before them (DESIGN.md: one way inside a
 # layer too): checks rely on the mesh types alone, never on the algorithms they check.
 # generators: topology (edges of a mesh) serves every family; the stretched generators come
-# before mesh_2d, whose registry lists them (metric-delaunay, advancing-layers).
+# before mesh_2d, whose registry lists them (metric-delaunay, advancing-layers); fuzzing (the
+# drivers that judge other programs on the inputs) comes last.
 set(families_triangulation mesh checks delaunay constrained modification recovery_3d)
-set(families_generators topology sizing boundary boundary_3d stretched mesh_2d inputs adaptation)
+set(families_generators topology sizing boundary boundary_3d stretched mesh_2d inputs adaptation
+    fuzzing)
 set(allowed_base "base")
 set(allowed_predicates "base|predicates")
 set(allowed_triangulation "base|predicates|triangulation")

@@ -13,6 +13,7 @@ namespace exactmesh::python {
 void bind_predicates(pybind11::module_& m);
 void bind_triangulation(pybind11::module_& m);
 void bind_generators(pybind11::module_& m);
+void bind_fuzzing(pybind11::module_& m);
 
 /// A constrained triangulation (cdt(), mesh()) as a dict of numpy arrays that take over its
 /// vectors: points, triangles, neighbors, input_vertex_count, merged_into, pieces,

@@ -36,4 +36,5 @@ PYBIND11_MODULE(_exactmesh, m) {
     exactmesh::python::bind_predicates(m);
     exactmesh::python::bind_triangulation(m);
     exactmesh::python::bind_generators(m);
+    exactmesh::python::bind_fuzzing(m);
 }

@@ -34,15 +34,16 @@ from ._exactmesh import (  # noqa: F401  (re-exported)
     points_3d,
     orient3d,
 )
+from ._fuzzing import FuzzFailure, FuzzSummary, fuzz  # noqa: F401  (re-exported)
 from ._meshio import from_meshio as _from_meshio
 from ._meshio import to_meshio as _to_meshio
 from ._sizes import size_arguments as _size_arguments
 
 __all__ = [
-    "CheckResult", "Error", "GeometryError", "InputError", "InternalError", "Mesh",
-    "Tetrahedralization", "Triangulation", "cdt", "check_delaunay", "check_mesh",
-    "check_tetrahedralization", "check_triangulation", "distributions_2d", "distributions_3d",
-    "domain", "domains", "from_meshio",
+    "CheckResult", "Error", "FuzzFailure", "FuzzSummary", "GeometryError", "InputError",
+    "InternalError", "Mesh", "Tetrahedralization", "Triangulation", "cdt", "check_delaunay",
+    "check_mesh", "check_tetrahedralization", "check_triangulation", "distributions_2d",
+    "distributions_3d", "domain", "domains", "from_meshio", "fuzz",
     "generators", "in_ellipse", "incircle", "insphere", "mesh", "orient2d", "orient3d",
     "points_2d", "points_3d", "quality", "tetrahedralize", "triangulate",
 ]

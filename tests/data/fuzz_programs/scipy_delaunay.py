@@ -47,7 +47,12 @@ def main(argv):
         sys.exit(__doc__)
     points, first = read_node(argv[1])
     dimension = points.shape[1]
-    simplices = Delaunay(points).simplices if len(points) > dimension else np.zeros((0, dimension + 1), int)
+    try:
+        simplices = Delaunay(points).simplices if len(points) > dimension else np.zeros((0, dimension + 1), int)
+    except Exception as error:  # noqa: BLE001  (Qhull's messages run to dozens of lines)
+        # The first line says what went wrong; it is the last stderr line, the one a crash
+        # report quotes.
+        sys.exit(f"{type(error).__name__}: {str(error).strip().splitlines()[0]}")
     with open(argv[2], "w", encoding="ascii") as ele:
         ele.write(f"{len(simplices)} {dimension + 1} 0\n")
         for number, simplex in enumerate(simplices):

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// What both modes of `exactmesh fuzz` share: the case random numbers, the case sizes, the
-// delta-debugging minimizer [Zeller, Hildebrandt 2002, ddmin] over any list of removable units
-// (points, or vertices and segments), the shell quoting of paths and the progress line.
+// What every fuzzing driver shares (both modes of `exactmesh fuzz`, exactmesh.fuzz in Python):
+// the case random numbers, the case sizes, the delta-debugging minimizer [Zeller, Hildebrandt
+// 2002, ddmin] over any list of removable units (points, or vertices and segments) and the
+// progress line.
 #pragma once
 
 #include <algorithm>
@@ -17,7 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace exactmesh::cli {
+namespace exactmesh::generators {
 
 using FuzzClock = std::chrono::steady_clock;
 
@@ -119,16 +120,13 @@ inline std::vector<double> kept_coordinates(std::span<const double> coordinates,
     return out;
 }
 
-/// The text as one shell word: unchanged when it is plain, else in single quotes.
-std::string shell_word(const std::string& text);
-
 inline std::string format_seconds(double seconds) {
     std::ostringstream text;
     text << std::fixed << std::setprecision(1) << seconds << " s";
     return text.str();
 }
 
-/// A progress line to stderr at most every `interval` (issue 16, "Long runs"): a long run says
+/// A progress line at most every `interval` (issue 16, "Long runs"): a long run says
 /// what is done and what remains; `quiet` turns it off.
 class ProgressLine {
   public:
@@ -152,4 +150,4 @@ class ProgressLine {
     FuzzClock::time_point start_, last_;
 };
 
-}  // namespace exactmesh::cli
+}  // namespace exactmesh::generators

@@ -3,24 +3,25 @@
 // (generators/inputs: 2D points, PSLGs, 3D points) are given to a program under test, its output
 // is checked exactly (triangulation/checks: Delaunay, constrained Delaunay after Chew, conforming
 // mesh, Delaunay tetrahedralization) and every failing input is minimized by ddmin
-// (cli/fuzz_cases.hpp) with the program as the oracle. The driver takes the program as a
-// std::function, so a caller other than `exactmesh fuzz --command` (the Python module) can pass
-// its own; ExternalProgram runs a shell command on Triangle/TetGen files.
+// (generators/fuzzing/fuzz_cases.hpp) with the program as the oracle. The driver takes the
+// program as a std::function and knows nothing of processes or files: `exactmesh fuzz --command`
+// passes a shell command on Triangle/TetGen files (cli/external_program.hpp), the Python module
+// (exactmesh.fuzz) a Python callable.
 #pragma once
 
 #include <array>
 #include <chrono>
 #include <cstdint>
-#include <filesystem>
 #include <functional>
 #include <iosfwd>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
-#include "cli/fuzz_cases.hpp"
+#include "generators/fuzzing/fuzz_cases.hpp"
 
-namespace exactmesh::cli {
+namespace exactmesh::generators {
 
 enum class FuzzKind { Points2d, Pslg, Points3d };
 
@@ -55,7 +56,11 @@ struct ProgramOutput {
     /// PSLGs: the constrained edges (2·#P into `points`) when the program reports them (the
     /// pieces a Triangle/`exactmesh cdt` output .poly lists); empty: the input's segments.
     std::vector<std::uint32_t> pieces;
-    std::uint32_t first_cell = 1;  ///< how messages number the cells (the .ele's base)
+    std::uint32_t first_cell = 1;    ///< how messages number the cells (the .ele's base)
+    std::uint32_t first_vertex = 1;  ///< how messages number the input's points (the file's base)
+    /// 3D: the order messages list a cell's corners in, the producer's (its corner k is
+    /// cells[4t + corner_order[k]]; a TetGen .ele passes io::kTetgenFileCorners).
+    std::array<std::uint8_t, 4> corner_order{0, 1, 2, 3};
     /// False: the producer does not orient its cells (Qhull, scipy.spatial.Delaunay); each cell
     /// is then put in the expected orientation by the exact orient2d/orient3d before the checks
     /// (a flat cell is left as it is, and the checks report it).
@@ -74,14 +79,14 @@ enum class Verdict {
     Passed,
     Refused,   ///< nonzero exit on an input that has no triangulation (all collinear/coplanar)
     Failed,    ///< finished, but the output is missing, unreadable or not exactly right
-    Crashed,   ///< nonzero exit (or killed by a signal)
+    Crashed,   ///< nonzero exit (or killed by a signal), or an exception
     TimedOut,  ///< killed after the time limit
 };
 const char* verdict_name(Verdict verdict);
 
 struct Judgement {
     Verdict verdict = Verdict::Passed;
-    std::string detail;  ///< the check's first problem, in the input's 1-based numbering
+    std::string detail;  ///< the check's first problem, numbered as ProgramOutput says
     bool bad() const { return verdict != Verdict::Passed && verdict != Verdict::Refused; }
 };
 
@@ -105,7 +110,7 @@ struct ProgramFuzzOptions {
     std::uint32_t max_points = 1000;  ///< largest input
     PslgCheck pslg_check = PslgCheck::ConstrainedDelaunay;
     bool convex_hull = false;  ///< PSLGs: the output must cover the convex hull (Triangle -c)
-    std::chrono::seconds minimize_budget{60};  ///< per failure
+    std::chrono::milliseconds minimize_budget{60000};  ///< per failure
     std::uint64_t max_minimized = 20;  ///< failures past this many are counted, not minimized
     bool quiet = false;                ///< no progress lines
 };
@@ -136,34 +141,4 @@ ProgramFuzzSummary fuzz_program(const ProgramUnderTest& program, const ProgramFu
                                 const std::function<void(const ProgramFuzzFailure&)>& on_failure,
                                 std::ostream& progress);
 
-/// A shell command run on files: `{in}` becomes the input file (a Triangle .node for points2d,
-/// .poly for pslg, a TetGen .node for points3d, 1-based), `{out}` the output file the program
-/// must write, both quoted for the shell. The output is read as a Triangle .ele (2D) or TetGen
-/// .ele (3D); a .node beside it (same name, extension .node) gives the output's vertices and,
-/// for PSLGs, a .poly beside it the constrained pieces, as `exactmesh check` reads them.
-struct ExternalCommand {
-    std::string command;                      ///< with {in} and {out}
-    std::string output = "{dir}/output.ele";  ///< {dir}: the scratch folder, {stem}: {in}
-                                              ///< without its extension
-    std::chrono::milliseconds timeout{10000};
-    bool orient = false;  ///< the program's cells are not oriented (ProgramOutput::oriented)
-};
-
-/// The program under test for `command`: each run gets a fresh scratch folder under `scratch`,
-/// runs `/bin/sh -c` in its own process group (killed whole on timeout), stdout and stderr kept
-/// in files there.
-ProgramUnderTest external_program(const ExternalCommand& command,
-                                  const std::filesystem::path& scratch);
-
-/// The input file name for a kind: input.node or input.poly.
-std::string input_file_name(FuzzKind kind);
-/// Writes the input as the program reads it.
-void write_fuzz_input(const std::filesystem::path& path, const FuzzInput& input);
-/// The command with {in}, {out} replaced by the quoted paths.
-std::string substitute_command(const std::string& command, const std::string& in,
-                               const std::string& out);
-/// The output path for `output` with {dir} and {stem}.
-std::string output_path(const std::string& output, const std::filesystem::path& dir,
-                        const std::filesystem::path& in);
-
-}  // namespace exactmesh::cli
+}  // namespace exactmesh::generators
