@@ -85,6 +85,7 @@ struct AdaptArguments {
     double time = 0;
     bool quality = false;
     bool stats = false;
+    PictureArguments picture;  ///< --view, --shade (2D .svg)
 };
 
 /// The most cycles, steps and sweeps: far beyond what converges; more is a typo.
@@ -246,6 +247,7 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
             "initial mesh already");
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
+    io::SvgOptions svg = picture_options(arguments.picture, format, "");
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
     if (given_mesh)
         refuse_to_overwrite_inputs({arguments.input, arguments.ele, arguments.field_file}, files);
@@ -366,8 +368,8 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
     const std::vector<double>& result_values = run.values();
     const auto named = run.counters();
     io::OutputSet set;
-    stage_constrained_result(set, result, files, format, base,
-                             title + " (adapted, " + arguments.method + ")", result_values);
+    svg.title = title + " (adapted, " + arguments.method + ")";
+    stage_constrained_result(set, result, files, format, base, svg, result_values);
     commit_outputs(set);
     std::cout << "vertices: " << result.mesh.vertex_count() << '\n'
               << "triangles: " << result.mesh.triangle_count() << '\n';
@@ -399,6 +401,7 @@ void run_adapt_3d(const AdaptArguments& arguments, const gen::AnalyticField* fie
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
     if (format == OutputFormat::Svg) throw InputError(output.string() + ": no .svg in 3D");
+    picture_options(arguments.picture, format, "");  // refuses --view and --shade
     const std::vector<fs::path> files = output_files(output, format, {".face", ".neigh", ".node"});
     tri::Tetrahedralization3 mesh;
     std::uint32_t base = 0, ele_base = 0;
@@ -670,6 +673,7 @@ void add_adapt_command(CLI::App& app) {
     command->add_option("--dt", arguments->dt, "The time step of --steps")->capture_default_str();
     command->add_option("--time", arguments->time, "The field's (first) time t")
         ->capture_default_str();
+    add_picture_options(*command, arguments->picture);
     command->add_flag("--quality", arguments->quality, "2D: print the quality report");
     command->add_flag("--stats", arguments->stats,
                       "Print the adaptation's counters, predicate stages and construct_seconds "

@@ -29,6 +29,7 @@ namespace tri = exactmesh::triangulation;
 struct CdtArguments : CommandArguments, OrderArguments {
     std::string recovery = "swap";
     bool convex_hull = false;
+    PictureArguments picture;
 };
 
 /// The input as a PSLG: a .poly, or a .node (points only).
@@ -46,6 +47,9 @@ void run_cdt(const CdtArguments& arguments) {
     const OutputFormat format = output_format(output);
     const std::vector<fs::path> files = output_files(output, format, {".neigh", ".node", ".poly"});
     refuse_to_overwrite_inputs({arguments.input, io::poly_node_path(arguments.input)}, files);
+    const io::SvgOptions svg = picture_options(
+        arguments.picture, format,
+        fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")");
     const io::PolyFile poly = read_input(arguments.input);
     const std::uint32_t base = poly.vertices.first_index;
     warn_unused_region_areas(poly, arguments.input,
@@ -67,9 +71,7 @@ void run_cdt(const CdtArguments& arguments) {
 
     print_warnings(result.warnings);
     io::OutputSet set;
-    stage_constrained_result(
-        set, result, files, format, base,
-        fs::path(arguments.input).filename().string() + " (cdt, " + arguments.recovery + ")");
+    stage_constrained_result(set, result, files, format, base, svg);
     commit_outputs(set);
     const tri::Triangulation2& mesh = result.mesh;
     std::cout << "vertices: " << mesh.vertex_count() << '\n'
@@ -101,6 +103,7 @@ void add_cdt_command(CLI::App& app) {
         "--convex-hull", arguments->convex_hull,
         "Keep the triangles outside the segments (Triangle's -c); holes are still removed");
     add_order_options(*command, *arguments, "Vertex insertion order");
+    add_picture_options(*command, arguments->picture);
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
                    "the construction alone, without file I/O");
     command->callback([arguments] { run_cdt(*arguments); });

@@ -60,6 +60,7 @@ struct MeshArguments {
     std::string layers;         ///< --layers FIRST_HEIGHT,GROWTH[,MAX_LAYERS]
     bool quads = false;         ///< --quads
     bool omesh = false;         ///< --o-mesh
+    PictureArguments picture;   ///< --view, --shade
 };
 
 /// The most --smooth sweeps: Laplacian smoothing converges within tens of sweeps, and each
@@ -159,6 +160,7 @@ void run_mesh(const MeshArguments& arguments) {
     }
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);
+    io::SvgOptions svg = picture_options(arguments.picture, format, "");
     if (arguments.quads && format == OutputFormat::Ele) {
         throw InputError(output.string() +
                          ": a .ele file holds triangles only; --quads needs a .msh or .vtu "
@@ -287,7 +289,8 @@ void run_mesh(const MeshArguments& arguments) {
                                                       final_result.mesh.mesh.triangles, *metric);
     }
     io::OutputSet set;
-    stage_constrained_result(set, final_result.mesh, files, format, base, title + label, {},
+    svg.title = title + label;
+    stage_constrained_result(set, final_result.mesh, files, format, base, svg, {},
                              final_result.quads);
     commit_outputs(set);
     const tri::Triangulation2& mesh = final_result.mesh.mesh;
@@ -431,6 +434,7 @@ void add_mesh_command(CLI::App& app) {
                       "about each wall (a ring of normal lines, stopped at the layer where its "
                       "cells turn isotropic; where two rings overlap the coarser cells removed) "
                       "instead of stacks advanced one by one; the rest filled the same way");
+    add_picture_options(*command, arguments->picture);
     command->add_flag(
         "--quality", arguments->quality,
         "Print the quality report: angles, angle histogram, radius-edge ratio, size conformity "

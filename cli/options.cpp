@@ -54,6 +54,23 @@ void add_algorithm_option(CLI::App& command, std::string& algorithm,
 
 }  // namespace detail
 
+void add_picture_options(CLI::App& command, PictureArguments& picture) {
+    command
+        .add_option("--view", picture.view,
+                    ".svg only: draw the window X0 <= x <= X1, Y0 <= y <= Y1 (a zoom): the "
+                    "picture's viewBox is the window, triangles outside it are left out and "
+                    "the others clipped; line widths follow the triangles in the window")
+        ->type_name("X0,Y0,X1,Y1")
+        ->check(CLI::Validator([](std::string& text) { return check_view_text(text); }, ""));
+    command
+        .add_option("--shade", picture.shade,
+                    ".svg only: fill the triangles by their smallest angle (5-degree classes, "
+                    "red below 15, blue near 60) with a colour bar (min-angle), or in one "
+                    "colour (none)")
+        ->check(CLI::IsMember({"none", "min-angle"}))
+        ->capture_default_str();
+}
+
 void add_stats_flag(CLI::App& command, bool& stats, const std::string& what,
                     const std::string& timed) {
     command.add_flag("--stats", stats, "Print " + what + " and construct_seconds (" + timed + ")");

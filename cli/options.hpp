@@ -50,6 +50,16 @@ void add_order_options(CLI::App& command, OrderArguments& order, const std::stri
 template <class Registry>
 void add_algorithm_option(CLI::App& command, std::string& algorithm, const Registry& registry);
 
+/// The picture options of a command that writes .svg (`--view`, `--shade`), as given.
+struct PictureArguments {
+    std::string view;            ///< "X0,Y0,X1,Y1" or empty
+    std::string shade = "none";  ///< none | min-angle
+};
+
+/// `--view X0,Y0,X1,Y1` (checked at parse time: four finite numbers, X0 < X1, Y0 < Y1) and
+/// `--shade {none, min-angle}`.
+void add_picture_options(CLI::App& command, PictureArguments& picture);
+
 /// `--stats`: "Print <what> and construct_seconds (<timed>)".
 void add_stats_flag(CLI::App& command, bool& stats, const std::string& what,
                     const std::string& timed);

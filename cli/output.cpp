@@ -139,9 +139,58 @@ std::string check_unsigned_text(const std::string& text, std::uint64_t max) {
     return "";
 }
 
+namespace {
+
+/// Reads "X0,Y0,X1,Y1" into `values`: "" on success, else why not.
+std::string read_view_fields(const std::string& text, double (&values)[4]) {
+    const char* at = text.data();
+    const char* const end = text.data() + text.size();
+    for (int k = 0; k < 4; ++k) {
+        const auto [stop, error] = std::from_chars(at, end, values[k]);
+        if (error == std::errc::result_out_of_range)
+            return "'" + text + "': a coordinate is beyond the range of doubles";
+        const bool last = k == 3;
+        if (error != std::errc{} || (last ? stop != end : stop == end || *stop != ','))
+            return "'" + text + "' is not four comma-separated numbers X0,Y0,X1,Y1";
+        at = last ? stop : stop + 1;
+    }
+    return "";
+}
+
+}  // namespace
+
+io::SvgWindow parse_view(const std::string& text) {
+    double values[4] = {};
+    std::string problem = read_view_fields(text, values);
+    if (problem.empty())
+        problem = io::svg_window_problem({values[0], values[1], values[2], values[3]});
+    if (!problem.empty()) throw InputError("--view: " + problem);
+    return {values[0], values[1], values[2], values[3]};
+}
+
+std::string check_view_text(const std::string& text) {
+    double values[4] = {};
+    if (std::string problem = read_view_fields(text, values); !problem.empty()) return problem;
+    return io::svg_window_problem({values[0], values[1], values[2], values[3]});
+}
+
+io::SvgOptions picture_options(const PictureArguments& picture, OutputFormat format,
+                               const std::string& title) {
+    io::SvgOptions svg;
+    svg.title = title;
+    if (format != OutputFormat::Svg) {
+        if (!picture.view.empty() || picture.shade != "none")
+            throw InputError("--view and --shade draw .svg pictures; the output is not a .svg");
+        return svg;
+    }
+    if (!picture.view.empty()) svg.view = parse_view(picture.view);
+    if (picture.shade == "min-angle") svg.shade = io::SvgShade::MinAngle;
+    return svg;
+}
+
 void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
-                              std::uint32_t base, const std::string& svg_title,
+                              std::uint32_t base, const io::SvgOptions& svg_options,
                               std::span<const double> vertex_field,
                               std::span<const triangulation::VertIdx> quads) {
     namespace fs = std::filesystem;
@@ -176,8 +225,7 @@ void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Resul
             set.stage(output, io::format_vtu(mesh.xy, mesh.triangles, base, vertex_field, quads));
             return;
         case OutputFormat::Svg: {
-            io::SvgOptions svg;
-            svg.title = svg_title;
+            io::SvgOptions svg = svg_options;
             svg.segments = result.pieces;
             // A picture: each quadrilateral drawn as two triangles.
             std::vector<triangulation::VertIdx> drawn(mesh.triangles);

@@ -13,7 +13,9 @@
 #include <utility>
 #include <vector>
 
+#include "cli/options.hpp"
 #include "io/point_set_2d.hpp"
+#include "io/svg_picture.hpp"
 #include "io/text_file.hpp"
 #include "predicates/stats.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
@@ -73,17 +75,30 @@ auto locating_mark_points(const io::PolyFile& poly, const std::string& file, Wor
 /// conversion to an unsigned type wraps "-1" to 2^64 - 1 and saturates larger numbers.
 std::string check_unsigned_text(const std::string& text, std::uint64_t max);
 
+/// The window of `--view X0,Y0,X1,Y1`: four comma-separated decimal numbers.
+/// @throws InputError naming the problem (not four numbers, not finite, X1 <= X0, Y1 <= Y0).
+io::SvgWindow parse_view(const std::string& text);
+
+/// parse_view's check as a CLI11 validator body: "" when `text` is a usable window, else why.
+std::string check_view_text(const std::string& text);
+
+/// The options of a picture titled `title` from --view and --shade. @throws InputError when
+/// either is given for an output `format` other than .svg (it would be silently ignored).
+io::SvgOptions picture_options(const PictureArguments& picture, OutputFormat format,
+                               const std::string& title);
+
 /// Stages a constrained triangulation (`cdt`, `mesh`) into `set` for `files` (output_files(output,
 /// format,
 /// {".neigh", ".node", ".poly"})): .ele with .neigh, .node (every vertex) and .poly (the pieces,
 /// each marked with its input segment's number); or .msh, .vtu, .svg (with the pieces drawn).
+/// `svg`: the picture's options (picture_options), its segments filled in here.
 /// Numbers vertices, triangles and segments from `base`. `quads` (4·#Q, a mixed mesh) go to .msh
 /// and .vtu as quadrilaterals and to .svg drawn as two triangles each; .ele refuses them.
 /// `vertex_field` (#V, or empty) is the .node's attribute, the .msh's node data and the .vtu's
 /// point array "u". Nothing is in place until commit.
 void stage_constrained_result(io::OutputSet& set, const triangulation::Cdt2Result& result,
                               const std::vector<std::filesystem::path>& files, OutputFormat format,
-                              std::uint32_t base, const std::string& svg_title,
+                              std::uint32_t base, const io::SvgOptions& svg,
                               std::span<const double> vertex_field = {},
                               std::span<const triangulation::VertIdx> quads = {});
 

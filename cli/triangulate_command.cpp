@@ -30,6 +30,7 @@ namespace fs = std::filesystem;
 namespace tri = exactmesh::triangulation;
 
 struct TriangulateArguments : CommandArguments, OrderArguments {
+    PictureArguments picture;
     std::string algorithm = "bowyer-watson";
     std::string location = "auto";
 };
@@ -45,6 +46,9 @@ void run_triangulate(const TriangulateArguments& arguments) {
     const fs::path output = arguments.output;
     const OutputFormat format = output_format(output);  // before any work: fail fast
     const std::vector<fs::path> files = output_files(output, format, {".neigh"});
+    const io::SvgOptions svg = picture_options(
+        arguments.picture, format,
+        fs::path(arguments.input).filename().string() + " (" + arguments.algorithm + ")");
     refuse_to_overwrite_inputs({arguments.input}, files);
     const tri::Delaunay2Function construct = tri::delaunay_2d_algorithm(arguments.algorithm);
     const io::NodeFile nodes = io::read_node(arguments.input);
@@ -66,13 +70,9 @@ void run_triangulate(const TriangulateArguments& arguments) {
         case OutputFormat::Vtu:
             set.stage(output, io::format_vtu(nodes.xy, result.triangles, nodes.first_index));
             break;
-        case OutputFormat::Svg: {
-            io::SvgOptions svg;
-            svg.title =
-                fs::path(arguments.input).filename().string() + " (" + arguments.algorithm + ")";
+        case OutputFormat::Svg:
             set.stage(output, io::format_svg(nodes.xy, result.triangles, svg));
             break;
-        }
     }
     commit_outputs(set);
     std::cout << "triangles: " << result.triangles.size() / 3 << '\n';
@@ -102,6 +102,7 @@ void add_triangulate_command(CLI::App& app) {
                      "(grid for the random order, else walk); tanemura-merriam locates nothing")
         ->check(CLI::IsMember({"auto", "walk", "grid"}))
         ->capture_default_str();
+    add_picture_options(*command, arguments->picture);
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
                    "the construction alone, without file I/O");
     command->callback([arguments] { run_triangulate(*arguments); });

@@ -4,7 +4,7 @@
 
 Usage:
   mesh_bench --benchmark_out=mesh_bench.json --benchmark_out_format=json
-  scripts/mesh_report.py mesh_bench.json --out-dir report [--cli build/release/cli/exactmesh]
+  scripts/mesh_report.py mesh_bench.json --out-dir report
 
 Reads benchmarks named BM_mesh/<mesher>/<domain>/<angle>/<target>[/...] (raw repetitions; the
 medians are computed here: CPU time for ours and CGAL, the manual time for Gmsh, which is Gmsh's
@@ -18,8 +18,8 @@ own CPU time of its 2D meshing) and writes into --out-dir:
   mesh_histograms.png     the corner-angle histograms of every mesher, one panel per domain, at
                           the target nearest 10^5;
   mesh_throughput.png     triangles per second vs triangles, one panel per domain;
-  mesh_<domain>_<generator>.svg (with --cli): each generator on each sample domain at the
-                          domain's own size, drawn by `exactmesh mesh`.
+  mesh.md links the figures of scripts/picture_panels.py (panels_<domain>.png, pictures.md),
+                          which scripts/run writes after it.
 Exits 1 when a benchmark reported an error, after writing.
 """
 
@@ -28,7 +28,6 @@ import json
 import math
 import os
 import statistics
-import subprocess
 import sys
 from collections import defaultdict
 
@@ -352,21 +351,16 @@ def plot_throughput(res, path):
     plt.close(fig)
 
 
-def pictures(cli, res, out_dir, out):
-    generators = [m for m in res.meshers() if m not in PEERS]
-    rows = []
+def pictures(res, out):
+    """Links to scripts/picture_panels.py's figures (scripts/run writes them next): each domain
+    meshed for the picture, every generator side by side, shaded by smallest angle."""
+    out.append("### Pictures\n")
+    out.append("Each domain meshed for the picture (about 2,500 triangles, one size for every "
+               "generator), every generator and Gmsh side by side on one window and scale, "
+               "triangles shaded by their smallest angle, zooms where the detail is: "
+               "[pictures.md](pictures.md) (`scripts/picture_panels.py`).\n")
     for domain in res.domains():
-        row = [domain]
-        for g in generators:
-            svg = f"mesh_{domain}_{g}.svg"
-            done = subprocess.run([cli, "mesh", "--domain", domain, "--generator", g, "-o",
-                                   os.path.join(out_dir, svg)], capture_output=True, text=True)
-            row.append(f'<a href="{svg}"><img src="{svg}" width="220"></a>' if done.returncode == 0
-                       else f"error: {done.stderr.strip()}")
-        rows.append(row)
-    out.append("### Pictures (each domain at its own size function)\n")
-    out.append(table(["domain"] + generators, rows))
-    out.append("")
+        out.append(f"[![{domain}](panels_{domain}.png)](pictures.md#{domain})\n")
 
 
 def plain_inputs(res, out):
@@ -397,7 +391,6 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("json")
     parser.add_argument("--out-dir", default="report")
-    parser.add_argument("--cli")
     args = parser.parse_args()
     with open(args.json) as f:
         data = json.load(f)
@@ -420,8 +413,7 @@ def main():
     out.append("![throughput](mesh_throughput.png)\n")
     domain_tables(res, out)
     plain_inputs(res, out)
-    if args.cli:
-        pictures(args.cli, res, args.out_dir, out)
+    pictures(res, out)
     if res.errors:
         out.append("### Errors\n")
         out += [f"- {e}" for e in res.errors]

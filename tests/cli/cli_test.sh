@@ -1202,6 +1202,45 @@ mesh_min_max_front() {
     mesh --domain naca0012 --generator min-max-front --max-steiner 10 -o "$work/x.ele"
 }
 
+# --view and --shade on every command that writes .svg (issue 18): the viewBox is the window,
+# fewer triangles drawn than the whole mesh, a clipPath, the colour bar; invalid windows and
+# pictures options on a non-.svg output are usage errors that write nothing.
+svg_view() {
+  run 0 triangulate "$data/square_with_center.node" -o "$work/tri.svg" --view 0,0,0.5,1 \
+    --shade min-angle || return
+  grep -q 'viewBox="0 0 500.00 ' "$work/tri.svg" || fail "triangulate --view: viewBox: $(head -c 400 "$work/tri.svg")"
+  grep -q '<clipPath id="view">' "$work/tri.svg" || fail "triangulate --view: no clipPath"
+  grep -q 'smallest angle of each triangle' "$work/tri.svg" || fail "triangulate --shade: no colour bar"
+  run 0 cdt "$data/square_hole_diagonals.poly" -o "$work/cdt.svg" --view 0,0,1,1 &&
+    grep -q '<clipPath id="view">' "$work/cdt.svg" || fail "cdt --view"
+  run 0 mesh --domain key --size 0.05 -o "$work/key.svg" --shade min-angle || return
+  run 0 mesh --domain key --size 0.05 -o "$work/tooth.svg" --shade min-angle --view 1.2,-0.5,1.6,-0.1 || return
+  grep -q 'viewBox="0 0 1000.00 1' "$work/tooth.svg" || fail "mesh --view: viewBox: $(head -c 400 "$work/tooth.svg")"
+  local whole zoom
+  whole=$(grep -o 'Z' "$work/key.svg" | wc -l)
+  zoom=$(grep -o 'Z' "$work/tooth.svg" | wc -l)
+  ((zoom > 0 && 5 * zoom < whole)) || fail "mesh --view: $zoom triangles drawn of $whole"
+  grep -Eq '<desc>[0-9]+ points, [0-9]+ triangles, [1-9][0-9]* in the window' "$work/tooth.svg" ||
+    fail "mesh --view: desc: $(grep '<desc>' "$work/tooth.svg")"
+  run 0 adapt --domain square-with-holes --field 'tanh(20*(y-0.5))' --cycles 1 -o "$work/adapt.svg" \
+    --view 0.25,0.25,0.75,0.75 --shade min-angle &&
+    grep -q '<clipPath id="view">' "$work/adapt.svg" || fail "adapt --view"
+  local view
+  for view in '1,2,3' '0,0,0,1' '1,0,0,1' '0,1,1,0' 'nan,0,1,1' '0,0,inf,1' 'a,b,c,d' '0,0,1,1e999' '0,0,1,1,'; do
+    expect_error 2 '^exactmesh: error: --view: ' mesh --domain key -o "$work/bad.svg" --view "$view"
+    expect_error 2 '^exactmesh: error: --view: ' triangulate "$data/kite.node" -o "$work/bad.svg" --view "$view"
+  done
+  expect_error 2 'X1 \(0\) must be greater than X0 \(1\)' cdt "$data/square_hole_diagonals.poly" \
+    -o "$work/bad.svg" --view 1,0,0,1
+  expect_error 2 'not finite' adapt --domain key --field x --cycles 1 -o "$work/bad.svg" --view 0,0,1,nan
+  expect_error 2 'draw \.svg pictures; the output is not a \.svg' mesh --domain key -o "$work/bad.ele" --view 0,0,1,1
+  expect_error 2 'draw \.svg pictures' triangulate "$data/kite.node" -o "$work/bad.msh" --shade min-angle
+  expect_error 2 'draw \.svg pictures' adapt --domain cube --field x --cycles 1 -o "$work/bad.vtu" --view 0,0,1,1
+  expect_error 2 'shade' mesh --domain key -o "$work/bad.svg" --shade max-angle
+  expect_error 2 'view' tetrahedralize "$data/cube_center.node" -o "$work/bad.ele" --view 0,0,1,1
+  ! compgen -G "$work/bad.*" >/dev/null || fail "a file was written despite an error: $(ls "$work"/bad.*)"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
@@ -1209,7 +1248,7 @@ case "$case_name" in
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
-    mesh_min_max_front)
+    mesh_min_max_front | svg_view)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2
