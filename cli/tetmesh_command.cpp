@@ -24,6 +24,7 @@
 #include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "generators/mesh_3d/delaunay_refinement_3d.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/plc_format.hpp"
 #include "io/tetgen_format.hpp"
@@ -47,6 +48,8 @@ struct TetmeshArguments : CommandArguments {
     std::string domain;
     double domain_size = 0;
     std::uint64_t max_steiner = 0;
+    double radius_edge = 0;  ///< 0: not given
+    double max_volume = 0;   ///< 0: not given
     bool quality = false;
 };
 
@@ -119,9 +122,26 @@ void run_tetmesh(const TetmeshArguments& arguments) {
 
     tri::BoundaryRecovery3Options options;
     options.max_steiner_points = arguments.max_steiner;
-    const auto [result, stats, seconds] =
-        timed_construction([&] { return tri::boundary_recovery_3d(plc, options); });
-    const tri::ConformingMesh3& conforming = result.mesh;
+    const bool refine = arguments.radius_edge > 0 || arguments.max_volume > 0;
+    gen::DelaunayRefinement3Options refinement;
+    refinement.radius_edge_bound = arguments.radius_edge > 0 ? arguments.radius_edge : 2.0;
+    refinement.max_volume = arguments.max_volume;
+    refinement.max_steiner_points = arguments.max_steiner;
+    struct Meshed {
+        tri::BoundaryRecovery3Result recovery;
+        gen::DelaunayRefinement3Counters refinement;
+    };
+    auto [result, stats, seconds] = timed_construction([&] {
+        Meshed meshed{tri::boundary_recovery_3d(plc, options), {}};
+        if (refine) {
+            gen::DelaunayRefinement3Result refined =
+                gen::delaunay_refinement_3d(plc, std::move(meshed.recovery.mesh), refinement);
+            meshed.recovery.mesh = std::move(refined.mesh);
+            meshed.refinement = refined.counters;
+        }
+        return meshed;
+    });
+    const tri::ConformingMesh3& conforming = result.recovery.mesh;
 
     // Exact check before anything is written: a failure is a bug, never the input's fault.
     const tri::BoundaryConformityReport3 report =
@@ -129,6 +149,27 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     if (!report.ok) {
         throw InternalError(source +
                             ": the mesh fails the exact conformity check: " + report.problem);
+    }
+
+    // With refinement: every tetrahedron within the bounds, exactly, except those the
+    // small-input-angle rule spares and those whose splitting point the generator had to reject
+    // (counted: a point equal to an existing vertex, or a cavity that could not stay valid). A
+    // tetrahedron over a bound with no rejected point to explain it is a bug.
+    gen::RefinementQuality3 quality;
+    std::vector<std::string> warnings;
+    if (refine) {
+        quality = gen::check_refinement_quality_3d(conforming, refinement);
+        const std::uint64_t over = quality.over_bound + quality.over_volume;
+        const std::string text = std::to_string(quality.over_bound) +
+                                 " tetrahedra exceed the radius-edge bound and " +
+                                 std::to_string(quality.over_volume) + " the volume bound";
+        if (over != 0 && result.refinement.rejected_points == 0)
+            throw InternalError(source + ": " + text + " after refinement (exact check)");
+        if (over != 0) {
+            warnings.push_back(source + ": " + text + " after refinement: " +
+                               std::to_string(result.refinement.rejected_points) +
+                               " splitting points were rejected");
+        }
     }
 
     const tri::Tetrahedralization3& mesh = conforming.mesh;
@@ -154,13 +195,21 @@ void run_tetmesh(const TetmeshArguments& arguments) {
             break;  // refused above
     }
     commit_outputs(set);
+    print_warnings(warnings);
     std::cout << "vertices: " << mesh.vertex_count() << '\n'
               << "tetrahedra: " << mesh.tet_count() << '\n';
     if (arguments.quality) print_quality_3d(mesh);
     if (arguments.stats) {
-        print_construction_stats(
-            counters_by_name(tri::kBoundaryRecovery3CounterNames, result.counters), stats, seconds,
-            3);
+        auto counters =
+            counters_by_name(tri::kBoundaryRecovery3CounterNames, result.recovery.counters);
+        if (refine) {
+            for (auto& [name, value] :
+                 counters_by_name(gen::kDelaunayRefinement3CounterNames, result.refinement))
+                counters.emplace_back("refinement_" + name, value);
+            counters.emplace_back("spared_small_angle_tets", quality.small_angle);
+            counters.emplace_back("over_bound_tets", quality.over_bound + quality.over_volume);
+        }
+        print_construction_stats(counters, stats, seconds, 3);
     }
 }
 
@@ -192,6 +241,19 @@ void add_tetmesh_command(CLI::App& app) {
         ->add_option("--max-steiner", arguments->max_steiner,
                      "Most Steiner points (0: 100 per input vertex plus 100,000)")
         ->check(whole_number_at_most(UINT32_MAX));
+    command
+        ->add_option("--radius-edge", arguments->radius_edge,
+                     "Delaunay refinement (generators/mesh_3d/delaunay_refinement_3d): split "
+                     "every tetrahedron whose circumradius / shortest edge exceeds B (TetGen "
+                     "-q; 2 when only --max-volume is given). Without --radius-edge and "
+                     "--max-volume the mesh is the recovered one, unrefined")
+        ->type_name("B")
+        ->check(CLI::PositiveNumber);
+    command
+        ->add_option("--max-volume", arguments->max_volume,
+                     "Delaunay refinement: split every tetrahedron of larger volume (TetGen -a)")
+        ->type_name("V")
+        ->check(CLI::PositiveNumber);
     command->add_flag("--quality", arguments->quality,
                       "Print the mesh's quality: dihedral extremes and 10-degree histogram, "
                       "volume-edge, radius-edge, slivers");

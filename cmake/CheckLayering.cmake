@@ -13,7 +13,7 @@
 # generators: topology (edges of a mesh) serves every family; the stretched generators come
 # before mesh_2d, whose registry lists them (metric-delaunay, advancing-layers).
 set(families_triangulation mesh checks delaunay constrained modification recovery_3d)
-set(families_generators topology sizing boundary boundary_3d stretched mesh_2d inputs adaptation)
+set(families_generators topology sizing boundary boundary_3d mesh_3d stretched mesh_2d inputs adaptation)
 set(allowed_base "base")
 set(allowed_predicates "base|predicates")
 set(allowed_triangulation "base|predicates|triangulation")

@@ -1296,6 +1296,33 @@ tetmesh_bad_input() {
   [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
 }
 
+tetmesh_refine() {
+  write_cube_poly "$work/cube.poly"
+  # Radius-edge and volume bounds: counters, the exact check's counts, more tetrahedra.
+  run 0 tetmesh "$work/cube.poly" -o "$work/q.ele" --radius-edge 1.2 --max-volume 0.01 --stats --quality || return
+  local name
+  for name in refinement_circumcenters refinement_subface_splits refinement_segment_splits \
+    refinement_rejected_points refinement_insertions spared_small_angle_tets over_bound_tets; do
+    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "--stats: no '$name: N' line"
+  done
+  grep -q '^over_bound_tets: 0$' "$work/out" || fail "cube: tetrahedra over the bounds: $(cat "$work/out")"
+  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "--stats: no construct_seconds"
+  [[ $(head -n1 "$work/q.ele" | awk '{print $1}') -ge 100 ]] || fail "q.ele: fewer than 100 tetrahedra"
+  awk '/^max_radius_edge:/ { exit !($2 <= 1.2) }' "$work/out" || fail "--quality: max_radius_edge over 1.2"
+  # Input vertices keep their numbers; Steiner points follow them.
+  sed -n 2,9p "$work/q.node" | awk '{print $2, $3, $4}' | tr '\n' ' ' |
+    grep -q '^0 0 0 1 0 0 1 1 0 0 1 0 0 0 1 1 0 1 1 1 1 0 1 1 $' || fail "q.node: input vertices moved"
+  # Every boundary triangle still carries its facet's marker (1..6).
+  awk 'NR > 1 && ($5 < 1 || $5 > 6)' "$work/q.face" | grep -q . && fail "q.face: a face without its marker"
+  run 0 tetmesh --domain box-with-hole -o "$work/box.vtu" --radius-edge 2 --stats || return
+  grep -q '^over_bound_tets: 0$' "$work/out" || fail "box-with-hole: tetrahedra over the bound"
+  # Bad bounds are usage errors; the budget is an input error naming it.
+  expect_error 2 'radius-edge' tetmesh "$work/cube.poly" -o "$work/x.ele" --radius-edge -1
+  expect_error 2 'max-volume' tetmesh "$work/cube.poly" -o "$work/x.ele" --max-volume 0
+  expect_error 2 'budget of 20 exceeded' tetmesh "$work/cube.poly" -o "$work/x.ele" --max-volume 1e-5 --max-steiner 20
+  [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
@@ -1303,7 +1330,7 @@ case "$case_name" in
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
-    mesh_min_max_front | tetmesh | tetmesh_stats | tetmesh_bad_input)
+    mesh_min_max_front | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2
