@@ -59,6 +59,9 @@ std::uint64_t edge_key(VertIdx a, VertIdx b) {
     return (std::uint64_t{a} << 32) | b;
 }
 
+/// How many times a bad tetrahedron's split may be deferred to subsegments or subfaces.
+constexpr std::uint32_t kMaxRetries = 64;
+
 constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
 bool same_point(const double* p, const double* q) {
@@ -219,7 +222,12 @@ class Refinement {
 
     std::deque<std::uint64_t> segment_queue_;
     std::deque<Key3> subface_queue_;
-    std::deque<std::pair<TetIdx, std::array<VertIdx, 4>>> tet_queue_;
+    struct QueuedTet {
+        TetIdx t;
+        std::array<VertIdx, 4> corners;
+        std::uint32_t retries;  ///< times its split was deferred to subsegments or subfaces
+    };
+    std::deque<QueuedTet> tet_queue_;
 
     // Cavity scratch.
     std::vector<std::uint32_t> excluded_;  ///< per tet slot: == cavity_stamp_ when shrunk away
@@ -591,7 +599,7 @@ class Refinement {
                 }
             }
         }
-        tet_queue_.push_back({t, c});
+        tet_queue_.push_back({t, c, 0});
     }
 
     bool is_bad(const std::array<VertIdx, 4>& c) const {
@@ -831,7 +839,8 @@ class Refinement {
     }
 
     /// Tries to split a bad tetrahedron at its circumcentre.
-    void split_tet(TetIdx t) {
+    /// Returns true when the split was deferred: subsegments or subfaces were queued instead.
+    bool split_tet(TetIdx t) {
         const std::array<VertIdx, 4> c{m_.vertex(t, 0), m_.vertex(t, 1), m_.vertex(t, 2),
                                        m_.vertex(t, 3)};
         const std::array<double, 3> center =
@@ -842,7 +851,7 @@ class Refinement {
         for (std::size_t steps = 0;; ++steps) {
             if (steps > 4 * std::size_t{m_.tet_slots()} + 16) {
                 ++counters_.rejected_points;
-                return;
+                return false;
             }
             int exit = -1;
             for (unsigned i = 0; i < 4; ++i) {
@@ -862,14 +871,14 @@ class Refinement {
             if (g == kNone || subfaces_.count(key) != 0) {
                 ++counters_.blocked_circumcenters;
                 subface_queue_.push_front(key);
-                return;
+                return true;
             }
             s = triangulation::tet_of(g);
         }
         for (unsigned k = 0; k < 4; ++k) {
             if (same_point(point(m_.vertex(s, k)), center.data())) {
                 ++counters_.rejected_points;
-                return;
+                return false;
             }
         }
         const Split none;
@@ -879,16 +888,17 @@ class Refinement {
             cavity_ = {s};
             if (queue_encroached_segments(center.data()) ||
                 queue_encroached_subfaces(center.data()))
-                return;
+                return true;
             ++counters_.rejected_points;
-            return;
+            return false;
         }
         // Encroached subsegments first, then subfaces of the cavity (boundary faces and the
         // subfaces that stopped it).
         if (queue_encroached_segments(center.data()) || queue_encroached_subfaces(center.data()))
-            return;
+            return true;
         commit(center, VertexFeature3::Volume, kNone, 0.0, none, {}, {});
         ++counters_.circumcenters;
+        return false;
     }
 
     ConformingMesh3 finish();
@@ -911,14 +921,23 @@ DelaunayRefinement3Result Refinement::run() {
             continue;
         }
         if (tet_queue_.empty()) break;
-        const auto [t, corners] = tet_queue_.front();
+        const QueuedTet next = tet_queue_.front();
         tet_queue_.pop_front();
-        if (m_.is_dead(t) || m_.tet(t) != corners || !is_bad(corners)) continue;
+        const auto& corners = next.corners;
+        if (m_.is_dead(next.t) || m_.tet(next.t) != corners || !is_bad(corners)) continue;
         if (!over_volume(corners) && incidence_.spared(corners)) {
             ++counters_.small_angle_tets;
             continue;
         }
-        split_tet(t);
+        // A deferred tetrahedron comes back after the splits it queued (unless they removed
+        // it); a bounded number of times, so that splits that keep failing cannot loop.
+        if (split_tet(next.t)) {
+            if (next.retries < kMaxRetries) {
+                tet_queue_.push_back({next.t, corners, next.retries + 1});
+            } else {
+                ++counters_.rejected_points;
+            }
+        }
     }
     DelaunayRefinement3Result result;
     result.mesh = finish();
