@@ -643,8 +643,8 @@ class Refinement {
         const VertIdx v = m_.vertex_count();
         std::vector<Subface> pieces;
         std::vector<TetIdx> seeds = tets_with(a, b);
-        facet_cavity(p.data(), subfaces_on_edge(a, b), v, split, pieces, seeds);
-        if (!build_cavity(p.data(), seeds, split)) {
+        if (!facet_cavity(p.data(), subfaces_on_edge(a, b), v, split, pieces, seeds) ||
+            !build_cavity(p.data(), seeds, split)) {
             ++counters_.rejected_points;
             return false;
         }
@@ -657,11 +657,14 @@ class Refinement {
     /// The facet cavities of a point p (to become vertex v) on a facet or segment: from the
     /// `initial` subfaces (holding p or its subsegment), every subface of the same facet reached
     /// across edges that are not subsegments whose circumcircle strictly contains p (exact
-    /// incircle in the facet's projection), as in 2D Bowyer-Watson. Fills split.faces, the edges
+    /// in_equatorial_sphere_3d), as in 2D Bowyer-Watson. Fills split.faces, the edges
     /// inside the cavities (split.exempt), the fan of new subfaces from v to each cavity's
     /// boundary (the facet's orientation kept; the split subsegment skipped) and the seeds (the
     /// tetrahedra on both sides of each cavity subface: p lies inside their circumspheres).
-    void facet_cavity(const double* p, const std::vector<Key3>& initial, VertIdx v, Split& split,
+    /// A grown subface whose fan piece would not have the facet's orientation (p beyond its
+    /// edge in the facet's projection: the facet is not Delaunay there) is dropped from the
+    /// cavity again; returns false when an initial subface would have to go.
+    bool facet_cavity(const double* p, const std::vector<Key3>& initial, VertIdx v, Split& split,
                       std::vector<Subface>& pieces, std::vector<TetIdx>& seeds) const {
         std::vector<Key3> faces = initial;
         std::unordered_set<Key3, Key3Hash> in_set(initial.begin(), initial.end());
@@ -680,40 +683,55 @@ class Refinement {
                 }
             }
         }
-        for (const Key3& k : faces) {
-            const Subface& f = subfaces_.at(k);
-            for (unsigned e = 0; e < 3; ++e) {
-                const VertIdx x = f.oriented[e], y = f.oriented[(e + 1) % 3];
-                const std::uint64_t key = edge_key(x, y);
-                if (key == split.edge) continue;
-                bool inner = false;
-                for (const Key3& other : subfaces_on_edge(x, y)) {
-                    if (other != k && in_set.count(other) != 0 &&
-                        subfaces_.at(other).facet == f.facet)
-                        inner = true;
-                }
-                if (inner) {
-                    split.exempt.insert(key);
-                } else {
-                    pieces.push_back({{x, y, v}, f.facet});
+        while (true) {
+            pieces.clear();
+            split.exempt.clear();
+            std::size_t bad = faces.size();
+            for (std::size_t i = 0; i < faces.size() && bad == faces.size(); ++i) {
+                const Subface& f = subfaces_.at(faces[i]);
+                const int drop = planes_[f.facet].drop;
+                const Sign orientation = triangulation::projected_orient(
+                    point(f.oriented[0]), point(f.oriented[1]), point(f.oriented[2]), drop);
+                for (unsigned e = 0; e < 3; ++e) {
+                    const VertIdx x = f.oriented[e], y = f.oriented[(e + 1) % 3];
+                    const std::uint64_t key = edge_key(x, y);
+                    if (key == split.edge) continue;
+                    bool inner = false;
+                    for (const Key3& other : subfaces_on_edge(x, y)) {
+                        if (other != faces[i] && in_set.count(other) != 0 &&
+                            subfaces_.at(other).facet == f.facet)
+                            inner = true;
+                    }
+                    if (inner) {
+                        split.exempt.insert(key);
+                    } else if (triangulation::projected_orient(point(x), point(y), p, drop) !=
+                               orientation) {
+                        bad = i;
+                        break;
+                    } else {
+                        pieces.push_back({{x, y, v}, f.facet});
+                    }
                 }
             }
+            if (bad == faces.size()) break;
+            if (bad < initial.size()) return false;
+            in_set.erase(faces[bad]);
+            faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(bad));
+        }
+        for (const Key3& k : faces) {
             for (const TetIdx t : tets_with(k[0], k[1], k[2]))
                 if (std::find(seeds.begin(), seeds.end(), t) == seeds.end()) seeds.push_back(t);
         }
         split.faces = std::move(faces);
+        return true;
     }
 
-    /// Whether p lies strictly inside the circumcircle of subface f in its facet's projection.
+    /// Whether p (a point of f's facet, up to rounding) lies strictly inside the circumcircle of
+    /// subface f: inside its equatorial sphere, whose trace on the facet's plane is that circle
+    /// (a projection to a coordinate plane would distort the circle into an ellipse).
     bool in_circumcircle(const Subface& f, const double* p) const {
-        const int drop = planes_[f.facet].drop;
-        const auto a = triangulation::project_facet_point(point(f.oriented[0]), drop);
-        const auto b = triangulation::project_facet_point(point(f.oriented[1]), drop);
-        const auto c = triangulation::project_facet_point(point(f.oriented[2]), drop);
-        const auto q = triangulation::project_facet_point(p, drop);
-        const Sign orientation = predicates::orient2d(a.data(), b.data(), c.data());
-        const Sign inside = predicates::incircle(a.data(), b.data(), c.data(), q.data());
-        return inside != Sign::Zero && inside == orientation;
+        return predicates::in_equatorial_sphere_3d(p, point(f.oriented[0]), point(f.oriented[1]),
+                                                   point(f.oriented[2])) == Sign::Positive;
     }
 
     /// Splits subface `key` (if still one) at its circumcentre, or the subsegments that point
@@ -787,8 +805,8 @@ class Refinement {
                 }
                 initial = subfaces_on_edge(x, y);
             }
-            facet_cavity(c.data(), initial, v, split, pieces, seeds);
-            if (!build_cavity(c.data(), seeds, split)) {
+            if (!facet_cavity(c.data(), initial, v, split, pieces, seeds) ||
+                !build_cavity(c.data(), seeds, split)) {
                 ++counters_.rejected_points;
                 return false;
             }
