@@ -643,8 +643,21 @@ class Refinement {
         const VertIdx v = m_.vertex_count();
         std::vector<Subface> pieces;
         std::vector<TetIdx> seeds = tets_with(a, b);
-        if (!facet_cavity(p.data(), subfaces_on_edge(a, b), v, split, pieces, seeds) ||
-            !build_cavity(p.data(), seeds, split)) {
+        // The facet cavities first; then, when they or the tetrahedra around them fail, only
+        // the subfaces on the subsegment.
+        bool valid = false;
+        for (const bool grow : {true, false}) {
+            split = Split{};
+            split.edge = key;
+            pieces.clear();
+            seeds = tets_with(a, b);
+            if (facet_cavity(p.data(), subfaces_on_edge(a, b), v, split, pieces, seeds, grow) &&
+                build_cavity(p.data(), seeds, split)) {
+                valid = true;
+                break;
+            }
+        }
+        if (!valid) {
             ++counters_.rejected_points;
             return false;
         }
@@ -664,11 +677,13 @@ class Refinement {
     /// A grown subface whose fan piece would not have the facet's orientation (p beyond its
     /// edge in the facet's projection: the facet is not Delaunay there) is dropped from the
     /// cavity again; returns false when an initial subface would have to go.
+    /// With `grow` false the cavities are the initial subfaces alone; false is also returned when
+    /// a cavity's boundary is not one simple chain per facet (a vertex on it twice).
     bool facet_cavity(const double* p, const std::vector<Key3>& initial, VertIdx v, Split& split,
-                      std::vector<Subface>& pieces, std::vector<TetIdx>& seeds) const {
+                      std::vector<Subface>& pieces, std::vector<TetIdx>& seeds, bool grow) const {
         std::vector<Key3> faces = initial;
         std::unordered_set<Key3, Key3Hash> in_set(initial.begin(), initial.end());
-        for (std::size_t i = 0; i < faces.size(); ++i) {
+        for (std::size_t i = 0; grow && i < faces.size(); ++i) {
             const Subface f = subfaces_.at(faces[i]);
             for (unsigned e = 0; e < 3; ++e) {
                 const VertIdx x = f.oriented[e], y = f.oriented[(e + 1) % 3];
@@ -717,6 +732,13 @@ class Refinement {
             if (bad < initial.size()) return false;
             in_set.erase(faces[bad]);
             faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(bad));
+        }
+        // Each vertex starts and ends at most one boundary edge of its facet's cavity.
+        std::unordered_map<std::uint64_t, unsigned> starts, ends;
+        for (const Subface& piece : pieces) {
+            const std::uint64_t facet = std::uint64_t{piece.facet} << 32;
+            if (++starts[facet | piece.oriented[0]] > 1 || ++ends[facet | piece.oriented[1]] > 1)
+                return false;
         }
         for (const Key3& k : faces) {
             for (const TetIdx t : tets_with(k[0], k[1], k[2]))
@@ -805,8 +827,18 @@ class Refinement {
                 }
                 initial = subfaces_on_edge(x, y);
             }
-            if (!facet_cavity(c.data(), initial, v, split, pieces, seeds) ||
-                !build_cavity(c.data(), seeds, split)) {
+            bool valid = false;
+            for (const bool grow : {true, false}) {
+                split = Split{};
+                pieces.clear();
+                seeds.clear();
+                if (facet_cavity(c.data(), initial, v, split, pieces, seeds, grow) &&
+                    build_cavity(c.data(), seeds, split)) {
+                    valid = true;
+                    break;
+                }
+            }
+            if (!valid) {
                 ++counters_.rejected_points;
                 return false;
             }

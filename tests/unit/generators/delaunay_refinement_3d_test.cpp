@@ -158,7 +158,7 @@ TEST(Generators_DelaunayRefinement3d, RandomStarShapedPolyhedraRefineOrStopAtThe
         const Plc3 plc =
             triangulation::random_star(static_cast<std::uint64_t>(seed), 10 + 4 * seed);
         DelaunayRefinement3Options options;
-        options.max_steiner_points = 20000;
+        options.max_steiner_points = 5000;
         try {
             refine_and_check(plc, "random star seed " + std::to_string(seed), options, false);
             ++refined;
