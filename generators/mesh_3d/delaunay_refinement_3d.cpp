@@ -199,6 +199,12 @@ class Refinement {
             if (out_.vertex_feature[v] == VertexFeature3::Segment)
                 parameter_[v] = segment_parameter(v, out_.feature_index[v]);
         }
+        // The working copies above replace these until finish() rebuilds them.
+        out_.mesh = {};
+        out_.subsegments = {};
+        out_.subsegment_segment = {};
+        out_.subfaces = {};
+        out_.subface_facet = {};
     }
 
     DelaunayRefinement3Result run();

@@ -72,8 +72,9 @@ struct DelaunayRefinement3Result {
     DelaunayRefinement3Counters counters;
 };
 
-/// Refines `recovered` (boundary_recovery_3d's result for `plc`) as above. Vertex numbering:
-/// the recovered mesh's vertices keep their indices, refinement's follow them.
+/// Refines `recovered` (boundary_recovery_3d's result for `plc`, or any mesh that passes
+/// check_boundary_conformity_3d for it) as above. Vertex numbering: the recovered mesh's
+/// vertices keep their indices, refinement's follow them (VertexFeature3::Volume inside).
 /// @throws InputError when the options are out of range or the Steiner budget is exceeded.
 DelaunayRefinement3Result delaunay_refinement_3d(const triangulation::Plc3& plc,
                                                  triangulation::ConformingMesh3 recovered,
