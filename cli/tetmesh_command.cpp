@@ -220,7 +220,7 @@ void add_tetmesh_command(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "tetmesh",
         "Tetrahedral mesh of a 3D domain (a piecewise linear complex): conforming Delaunay "
-        "boundary recovery, checked exactly");
+        "boundary recovery, optionally Delaunay refinement, checked exactly");
     command
         ->add_option("input", arguments->input,
                      "The domain's boundary: TetGen .poly or .smesh, .off or .stl")
@@ -239,7 +239,9 @@ void add_tetmesh_command(CLI::App& app) {
                       "facet markers and .neigh beside it), .msh (Gmsh 4.1), .vtu (VTK)");
     command
         ->add_option("--max-steiner", arguments->max_steiner,
-                     "Most Steiner points (0: 100 per input vertex plus 100,000)")
+                     "Most Steiner points of boundary recovery and, separately, of refinement (0: "
+                     "100 per input vertex plus 100,000 for recovery, 1,000 per input vertex plus "
+                     "10^6 for refinement); past it the command stops with an error")
         ->check(whole_number_at_most(UINT32_MAX));
     command
         ->add_option("--radius-edge", arguments->radius_edge,
@@ -257,7 +259,8 @@ void add_tetmesh_command(CLI::App& app) {
     command->add_flag("--quality", arguments->quality,
                       "Print the mesh's quality: dihedral extremes and 10-degree histogram, "
                       "volume-edge, radius-edge, slivers");
-    add_stats_flag(*command, arguments->stats, "the recovery's counters, predicate stages",
+    add_stats_flag(*command, arguments->stats,
+                   "the recovery's and refinement's counters, predicate stages",
                    "the construction alone, without file I/O or the check");
     command->callback([arguments] { run_tetmesh(*arguments); });
 }
