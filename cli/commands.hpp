@@ -52,4 +52,8 @@ void add_swap3d_command(CLI::App& app);
 /// `exactmesh adapt IN.poly|--domain NAME --field EXPR -o OUT [--method M] [--indicator I]
 /// [--cycles K] [--max-vertices N] [--threshold T] [--smooth N] [--quality] [--stats]`.
 void add_adapt_command(CLI::App& app);
+
+/// `exactmesh tetmesh IN.poly|IN.smesh|IN.off|IN.stl|--domain NAME -o OUT[.ele|.msh|.vtu]
+/// [--radius-edge B] [--max-volume V] [--max-steiner N] [--quality] [--stats]`.
+void add_tetmesh_command(CLI::App& app);
 }  // namespace exactmesh::cli

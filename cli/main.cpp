@@ -87,6 +87,7 @@ int main(int argc, char** argv) {
         add_min_max_command(app);
         add_swap3d_command(app);
         add_adapt_command(app);
+        add_tetmesh_command(app);
         try {
             app.parse(argc, argv);
         } catch (const CLI::ParseError& error) {
@@ -98,7 +99,7 @@ int main(int argc, char** argv) {
             return report_error(
                 "a subcommand is required: triangulate, tetrahedralize, cdt, mesh, check, fuzz, "
                 "swap, "
-                "min-max or swap3d (see "
+                "min-max, swap3d, adapt or tetmesh (see "
                 "exactmesh --help)",
                 kExitBadInput);
         }

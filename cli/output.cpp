@@ -16,6 +16,7 @@
 #include "io/svg_picture.hpp"
 #include "io/triangle_format.hpp"
 #include "io/vtk_format.hpp"
+#include "triangulation/checks/quality_3d.hpp"
 
 namespace exactmesh::cli {
 
@@ -294,6 +295,25 @@ void print_construction_stats(const std::vector<std::pair<std::string, std::uint
     print_counters(counters);
     print_predicate_stats(stats, dimension);
     print_construct_seconds(seconds);
+}
+
+void print_quality_3d(const triangulation::Tetrahedralization3& mesh) {
+    const triangulation::QualityStats3 q = triangulation::quality_stats_3d(mesh);
+    const auto precision = std::cout.precision(10);
+    std::cout << "min_dihedral_degrees: " << q.min_dihedral_degrees << '\n'
+              << "max_dihedral_degrees: " << q.max_dihedral_degrees << '\n'
+              << "min_volume_edge: " << q.min_volume_edge << '\n'
+              << "mean_volume_edge: " << q.mean_volume_edge << '\n'
+              << "max_radius_edge: " << q.max_radius_edge << '\n'
+              << "slivers: " << q.slivers << '\n';
+    for (std::size_t b = 0; b < q.dihedral_histogram.size(); ++b) {
+        const auto lo = static_cast<int>(static_cast<double>(b) * q.histogram_bin_degrees);
+        const auto hi = static_cast<int>(static_cast<double>(b + 1) * q.histogram_bin_degrees);
+        std::cout << "dihedral_degrees[" << lo << "," << hi
+                  << (b + 1 == q.dihedral_histogram.size() ? "]" : ")") << ": "
+                  << q.dihedral_histogram[b] << '\n';
+    }
+    std::cout.precision(precision);
 }
 
 }  // namespace exactmesh::cli

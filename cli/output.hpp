@@ -20,6 +20,7 @@
 #include "predicates/stats.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
+#include "triangulation/mesh/tetrahedralization_3d.hpp"
 
 namespace exactmesh::cli {
 
@@ -128,6 +129,10 @@ double seconds_since(std::chrono::steady_clock::time_point start);
 void print_construction_stats(const std::vector<std::pair<std::string, std::uint64_t>>& counters,
                               const predicates::PredicateStats& stats, double seconds,
                               int dimension = 2);
+
+/// The --quality report of a tetrahedralization (triangulation/checks/quality_3d): dihedral
+/// extremes, volume-edge, radius-edge, slivers, the 10-degree dihedral histogram.
+void print_quality_3d(const triangulation::Tetrahedralization3& mesh);
 
 /// What a timed construction returned, with its predicate stages and its wall time.
 template <class Result>

@@ -34,23 +34,6 @@ struct Swap3dArguments : CommandArguments {
     bool quality = false;
 };
 
-void print_quality(const tri::Tetrahedralization3& mesh) {
-    const tri::QualityStats3 q = tri::quality_stats_3d(mesh);
-    std::cout << std::setprecision(10) << "min_dihedral_degrees: " << q.min_dihedral_degrees << '\n'
-              << "max_dihedral_degrees: " << q.max_dihedral_degrees << '\n'
-              << "min_volume_edge: " << q.min_volume_edge << '\n'
-              << "mean_volume_edge: " << q.mean_volume_edge << '\n'
-              << "max_radius_edge: " << q.max_radius_edge << '\n'
-              << "slivers: " << q.slivers << '\n';
-    for (std::size_t b = 0; b < q.dihedral_histogram.size(); ++b) {
-        const auto lo = static_cast<int>(static_cast<double>(b) * q.histogram_bin_degrees);
-        const auto hi = static_cast<int>(static_cast<double>(b + 1) * q.histogram_bin_degrees);
-        std::cout << "dihedral_degrees[" << lo << "," << hi
-                  << (b + 1 == q.dihedral_histogram.size() ? "]" : ")") << ": "
-                  << q.dihedral_histogram[b] << '\n';
-    }
-}
-
 void run_swap3d(const Swap3dArguments& arguments) {
     const fs::path output = arguments.output;
     require_ele_output(output);
@@ -96,7 +79,7 @@ void run_swap3d(const Swap3dArguments& arguments) {
         print_counters(named);
         print_construct_seconds(seconds);
     }
-    if (arguments.quality) print_quality(mesh);
+    if (arguments.quality) print_quality_3d(mesh);
 }
 
 }  // namespace

@@ -14,8 +14,8 @@
 # before mesh_2d, whose registry lists them (metric-delaunay, advancing-layers); fuzzing (the
 # drivers that judge other programs on the inputs) comes last.
 set(families_triangulation mesh checks delaunay constrained modification recovery_3d)
-set(families_generators topology sizing boundary boundary_3d stretched mesh_2d inputs adaptation
-    fuzzing)
+set(families_generators topology sizing boundary boundary_3d mesh_3d stretched mesh_2d inputs
+    adaptation fuzzing)
 set(allowed_base "base")
 set(allowed_predicates "base|predicates")
 set(allowed_triangulation "base|predicates|triangulation")

@@ -214,6 +214,26 @@ void write_tetgen_boundary_faces(const std::filesystem::path& path,
     write_text_file(path, format_tetgen_boundary_faces(tets, neighbors, first_index));
 }
 
+std::string format_tetgen_marked_faces(std::span<const std::uint32_t> faces,
+                                       std::span<const int> markers, std::uint32_t first_index) {
+    const std::size_t count = faces.size() / 3;
+    std::string out;
+    out.reserve(48 * count + 32);
+    append_unsigned(out, count);
+    out += " 1\n";
+    for (std::size_t f = 0; f < count; ++f) {
+        append_unsigned(out, f + first_index);
+        for (unsigned k = 0; k < 3; ++k) {
+            out += ' ';
+            append_unsigned(out, std::uint64_t{faces[3 * f + k]} + first_index);
+        }
+        out += ' ';
+        out += std::to_string(markers[f]);
+        out += '\n';
+    }
+    return out;
+}
+
 std::string format_tetgen_neigh(std::span<const std::uint32_t> neighbors,
                                 std::uint32_t first_index) {
     return format_tet_table(neighbors.size() / 4, first_index, " 4\n",

@@ -42,10 +42,10 @@ inline constexpr std::array<std::uint8_t, 4> kTetgenFileCorners{0, 1, 3, 2};
 
 /// The content of a TetGen .ele file, in exactmesh's orientation and 0-based vertex indices.
 struct TetgenEleFile {
-    std::vector<std::uint32_t> tets;    ///< 4·#T corners: (n1, n2, n4, n3) of each file line
-    std::uint32_t first_index = 0;      ///< number of the first tetrahedron: 0 or 1
+    std::vector<std::uint32_t> tets;  ///< 4·#T corners: (n1, n2, n4, n3) of each file line
+    std::uint32_t first_index = 0;    ///< number of the first tetrahedron: 0 or 1
     bool has_region = false;
-    std::vector<double> regions;        ///< #T region attributes when has_region
+    std::vector<double> regions;  ///< #T region attributes when has_region
 
     std::uint32_t tet_count() const { return static_cast<std::uint32_t>(tets.size() / 4); }
 };
@@ -91,12 +91,22 @@ void write_tetgen_ele(const std::filesystem::path& path, std::span<const std::ui
 std::string format_tetgen_boundary_faces(std::span<const std::uint32_t> tets,
                                          std::span<const std::uint32_t> neighbors,
                                          std::uint32_t first_index);
-void write_tetgen_boundary_faces(const std::filesystem::path& path, std::span<const std::uint32_t> tets,
-                                 std::span<const std::uint32_t> neighbors, std::uint32_t first_index);
+void write_tetgen_boundary_faces(const std::filesystem::path& path,
+                                 std::span<const std::uint32_t> tets,
+                                 std::span<const std::uint32_t> neighbors,
+                                 std::uint32_t first_index);
+
+/// The .face text of a list of faces with markers: `#F 1`, then `<f> <a> <b> <c> <marker>`
+/// (`faces`: 3·#F 0-based vertex indices, written as given; `markers`: #F), numbered from
+/// first_index. `exactmesh tetmesh` writes the subfaces of a PLC's facets this way, each with
+/// its facet's marker (TetGen -p's .face).
+std::string format_tetgen_marked_faces(std::span<const std::uint32_t> faces,
+                                       std::span<const int> markers, std::uint32_t first_index);
 
 /// The .neigh text: `#T 4`, then `<t> <n1> <n2> <n3> <n4>`, neighbor i opposite corner i of the
 /// tetrahedron as format_tetgen_ele writes it, -1 on the boundary.
-std::string format_tetgen_neigh(std::span<const std::uint32_t> neighbors, std::uint32_t first_index);
+std::string format_tetgen_neigh(std::span<const std::uint32_t> neighbors,
+                                std::uint32_t first_index);
 void write_tetgen_neigh(const std::filesystem::path& path, std::span<const std::uint32_t> neighbors,
                         std::uint32_t first_index);
 

@@ -1241,6 +1241,127 @@ svg_view() {
   ! compgen -G "$work/bad.*" >/dev/null || fail "a file was written despite an error: $(ls "$work"/bad.*)"
 }
 
+# A unit cube as a 1-based TetGen .poly with facet markers 1..6 (quadrilateral facets).
+write_cube_poly() {
+  cat >"$1" <<'POLY'
+# cube
+8 3 0 0
+1 0 0 0
+2 1 0 0
+3 1 1 0
+4 0 1 0
+5 0 0 1
+6 1 0 1
+7 1 1 1
+8 0 1 1
+6 1
+1 0 1
+4 1 2 3 4
+1 0 2
+4 5 6 7 8
+1 0 3
+4 1 2 6 5
+1 0 4
+4 2 3 7 6
+1 0 5
+4 3 4 8 7
+1 0 6
+4 4 1 5 8
+0
+POLY
+}
+
+tetmesh() {
+  write_cube_poly "$work/cube.poly"
+  run 0 tetmesh "$work/cube.poly" -o "$work/cube.ele" || return
+  local f
+  for f in ele node face neigh; do [[ -s "$work/cube.$f" ]] || fail "cube.$f missing"; done
+  # Input vertices first, with their numbers and coordinates; 1-based like the input.
+  sed -n 2p "$work/cube.node" | grep -Eq '^1 0 0 0$' || fail "cube.node: vertex 1 is not (0,0,0)"
+  sed -n 9p "$work/cube.node" | grep -Eq '^8 0 1 1$' || fail "cube.node: vertex 8 is not (0,1,1)"
+  sed -n 2p "$work/cube.ele" | grep -q '^1 ' || fail "cube.ele: first tetrahedron is not 1"
+  # Twelve boundary triangles, two per facet, each with its facet's marker.
+  head -n1 "$work/cube.face" | grep -q '^12 1$' || fail "cube.face: expected '12 1': $(head -n1 "$work/cube.face")"
+  local marker
+  for marker in 1 2 3 4 5 6; do
+    [[ $(awk -v m="$marker" 'NR > 1 && $5 == m' "$work/cube.face" | wc -l) -eq 2 ]] ||
+      fail "cube.face: facet $marker does not have 2 triangles"
+  done
+  # The tetrahedra are valid (check accepts a conforming Delaunay mesh of the cube's corners).
+  run 0 check "$work/cube.node" "$work/cube.ele" || fail "check rejected cube.ele"
+  # An .off: the same cube as 12 triangles, 0-based.
+  printf 'OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n' >"$work/cube.off"
+  printf '3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n' >>"$work/cube.off"
+  run 0 tetmesh "$work/cube.off" -o "$work/off.vtu" || return
+  grep -q '<UnstructuredGrid>' "$work/off.vtu" || fail "off.vtu is not a VTK unstructured grid"
+  grep -Eq '^tetrahedra: [1-9][0-9]*$' "$work/out" || fail "no tetrahedra line: $(cat "$work/out")"
+  # Built-in domains, each format.
+  run 0 tetmesh --domain box-with-hole -o "$work/box.msh" || return
+  grep -q '^\$MeshFormat' "$work/box.msh" || fail "box.msh is not Gmsh"
+  run 0 tetmesh --domain box-with-hole -o "$work/box.ele" --quality || return
+  grep -Eq '^min_dihedral_degrees: [0-9.]+$' "$work/out" || fail "--quality: no min_dihedral_degrees"
+  # The box's 24 facet triangles: 12 outer (marker 1), 12 around the cavity (marker 2).
+  [[ $(awk 'NR > 1 && $5 == 2' "$work/box.face" | wc -l) -eq 12 ]] || fail "box.face: cavity faces"
+  run 0 tetmesh --domain ellipsoid --domain-size 0.5 -o "$work/ellipsoid.ele" || return
+}
+
+tetmesh_stats() {
+  run 0 tetmesh --domain box-with-hole -o "$work/s.ele" --stats || return
+  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "--stats: no construct_seconds"
+  local name
+  for name in segments segment_splits shell_splits encroachment_splits facet_splits insertions rounds removed_tets; do
+    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "--stats: no '$name: N' line"
+  done
+  grep -q '^segments: 24$' "$work/out" || fail "--stats: the box has 24 segments: $(cat "$work/out")"
+  grep -q '^removed_tets: [1-9]' "$work/out" || fail "--stats: the cavity's tetrahedra were not removed"
+}
+
+tetmesh_bad_input() {
+  write_cube_poly "$work/cube.poly"
+  # A facet naming a vertex the file lacks: the reader's file:line message, exit 2.
+  sed 's/^4 5 6 7 8$/4 5 6 7 9/' "$work/cube.poly" >"$work/bad.poly"
+  expect_error 2 'bad\.poly:[0-9]+: .*9' tetmesh "$work/bad.poly" -o "$work/x.ele"
+  printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 nan\n3 0 1 2\n' >"$work/nan.off"
+  expect_error 2 'nan\.off:[0-9]+: ' tetmesh "$work/nan.off" -o "$work/x.ele"
+  # An open surface (one facet missing): the PLC check refuses it.
+  printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n' >"$work/open.off"
+  expect_error 2 'surface not closed' tetmesh "$work/open.off" -o "$work/x.ele"
+  expect_error 2 'moon' tetmesh --domain moon -o "$work/x.ele"
+  expect_error 2 'not both' tetmesh "$work/cube.poly" --domain box-with-hole -o "$work/x.ele"
+  expect_error 2 'not both' tetmesh -o "$work/x.ele"
+  expect_error 2 '2D only' tetmesh "$work/cube.poly" -o "$work/x.svg"
+  printf 'solid x\n' >"$work/x.txt"
+  expect_error 2 'x\.txt' tetmesh "$work/x.txt" -o "$work/x.ele"
+  [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
+}
+
+tetmesh_refine() {
+  write_cube_poly "$work/cube.poly"
+  # Radius-edge and volume bounds: counters, the exact check's counts, more tetrahedra.
+  run 0 tetmesh "$work/cube.poly" -o "$work/q.ele" --radius-edge 1.2 --max-volume 0.01 --stats --quality || return
+  local name
+  for name in refinement_circumcenters refinement_subface_splits refinement_segment_splits \
+    refinement_rejected_points refinement_insertions spared_small_angle_tets over_bound_tets; do
+    grep -Eq "^$name: [0-9]+$" "$work/out" || fail "--stats: no '$name: N' line"
+  done
+  grep -q '^over_bound_tets: 0$' "$work/out" || fail "cube: tetrahedra over the bounds: $(cat "$work/out")"
+  grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "--stats: no construct_seconds"
+  [[ $(head -n1 "$work/q.ele" | awk '{print $1}') -ge 100 ]] || fail "q.ele: fewer than 100 tetrahedra"
+  awk '/^max_radius_edge:/ { exit !($2 <= 1.2) }' "$work/out" || fail "--quality: max_radius_edge over 1.2"
+  # Input vertices keep their numbers; Steiner points follow them.
+  sed -n 2,9p "$work/q.node" | awk '{print $2, $3, $4}' | tr '\n' ' ' |
+    grep -q '^0 0 0 1 0 0 1 1 0 0 1 0 0 0 1 1 0 1 1 1 1 0 1 1 $' || fail "q.node: input vertices moved"
+  # Every boundary triangle still carries its facet's marker (1..6).
+  awk 'NR > 1 && ($5 < 1 || $5 > 6)' "$work/q.face" | grep -q . && fail "q.face: a face without its marker"
+  run 0 tetmesh --domain box-with-hole -o "$work/box.vtu" --radius-edge 2 --stats || return
+  grep -q '^over_bound_tets: 0$' "$work/out" || fail "box-with-hole: tetrahedra over the bound"
+  # Bad bounds are usage errors; the budget is an input error naming it.
+  expect_error 2 'radius-edge' tetmesh "$work/cube.poly" -o "$work/x.ele" --radius-edge -1
+  expect_error 2 'max-volume' tetmesh "$work/cube.poly" -o "$work/x.ele" --max-volume 0
+  expect_error 2 'budget of 20 exceeded' tetmesh "$work/cube.poly" -o "$work/x.ele" --max-volume 1e-5 --max-steiner 20
+  [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
@@ -1248,7 +1369,7 @@ case "$case_name" in
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
-    mesh_min_max_front | svg_view)
+    mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

@@ -17,6 +17,7 @@ enum class VertexFeature3 : std::uint8_t {
     Input,    ///< a PLC vertex (index below input_vertex_count)
     Segment,  ///< a Steiner point on input segment feature_index
     Facet,    ///< a Steiner point inside facet feature_index
+    Volume,   ///< a Steiner point inside the domain (Delaunay refinement; feature_index kNone)
 };
 
 struct ConformingMesh3 {

@@ -147,7 +147,7 @@ std::string check(const Plc3& plc, const ConformingMesh3& cm) {
             if (!inside)
                 return "facet vertex " + name(v) + "'s projection lies outside facet " +
                        std::to_string(index);
-        } else {
+        } else if (cm.vertex_feature[v] != VertexFeature3::Volume) {
             return "vertex " + name(v) + " beyond the input has no feature";
         }
     }

@@ -13,6 +13,7 @@
 
 #include "base/errors.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "tests/support/plcs_3d.hpp"
 #include "tests/support/test_scale.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
@@ -20,29 +21,6 @@
 
 namespace exactmesh::triangulation {
 namespace {
-
-Plc3 box(double x, double y, double z) {
-    Plc3 plc;
-    for (int k = 0; k < 8; ++k)
-        plc.xyz.insert(plc.xyz.end(), {(k & 1) * x, ((k >> 1) & 1) * y, ((k >> 2) & 1) * z});
-    const std::vector<std::vector<VertIdx>> faces = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
-                                                     {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
-    for (const auto& face : faces) plc.facets.push_back({{face}, {}, 1});
-    return plc;
-}
-
-Plc3 scaled(Plc3 plc, int exponent) {
-    for (double& x : plc.xyz) x = std::ldexp(x, exponent);
-    for (double& x : plc.holes) x = std::ldexp(x, exponent);
-    for (Facet3& facet : plc.facets)
-        for (double& x : facet.holes) x = std::ldexp(x, exponent);
-    for (Region3& r : plc.regions) {
-        r.x = std::ldexp(r.x, exponent);
-        r.y = std::ldexp(r.y, exponent);
-        r.z = std::ldexp(r.z, exponent);
-    }
-    return plc;
-}
 
 /// The domain's volume (a rounded sum of |det| / 6: for the test's expectations only).
 double volume(const Tetrahedralization3& mesh) {
@@ -345,61 +323,12 @@ TEST(Triangulation_BoundaryRecovery3d, SampleDomains) {
     }
 }
 
-/// A random convex polyhedron: the hull triangles of random points.
-Plc3 random_convex(std::uint64_t seed, int points) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(-1, 1);
-    std::vector<double> xyz;
-    for (int i = 0; i < 3 * points; ++i) xyz.push_back(u(rng));
-    const Delaunay3Result d = delaunay_3d_algorithm("green-sibson")(xyz, {});
-    Plc3 plc;
-    plc.xyz = xyz;
-    for (std::size_t t = 0; t < d.mesh.tets.size(); t += 4)
-        for (unsigned k = 0; k < 4; ++k)
-            if (d.mesh.neighbors[t + k] == kNone)
-                plc.facets.push_back(
-                    {{{d.mesh.tets[t + kFaceVertex[k][0]], d.mesh.tets[t + kFaceVertex[k][1]],
-                       d.mesh.tets[t + kFaceVertex[k][2]]}},
-                     {},
-                     1});
-    return plc;
-}
-
 TEST(Triangulation_BoundaryRecovery3d, RandomConvexPolyhedraAndRandomInteriorFacets) {
     const int count = std::max(2, static_cast<int>(6 * testing::test_scale()));
     for (int seed = 1; seed <= count; ++seed) {
         Plc3 plc = random_convex(static_cast<std::uint64_t>(seed), 10 + 5 * seed);
         recover_and_check(plc, "random convex seed " + std::to_string(seed));
     }
-}
-
-/// A random star-shaped (non-convex) polyhedron: the hull triangles of random directions,
-/// each direction's point moved to a random radius in [0.4, 1]. The triangles stay in the
-/// disjoint cones over the hull triangles, so the surface does not intersect itself.
-Plc3 random_star(std::uint64_t seed, int points) {
-    Plc3 plc = random_convex(seed, points);
-    std::mt19937_64 rng(seed + 1000);
-    std::uniform_real_distribution<double> radius(0.4, 1);
-    for (std::size_t v = 0; v < plc.xyz.size(); v += 3) {
-        const double n = std::sqrt(plc.xyz[v] * plc.xyz[v] + plc.xyz[v + 1] * plc.xyz[v + 1] +
-                                   plc.xyz[v + 2] * plc.xyz[v + 2]);
-        const double r = radius(rng) / n;
-        for (int k = 0; k < 3; ++k) plc.xyz[v + std::size_t(k)] *= r;
-    }
-    // Points inside the hull (not facet corners) would be dangling: drop them from the PLC by
-    // keeping only the corners (renumbered).
-    std::vector<VertIdx> index(plc.vertex_count(), kNone);
-    std::vector<double> xyz;
-    for (Facet3& f : plc.facets)
-        for (VertIdx& v : f.polygons[0]) {
-            if (index[v] == kNone) {
-                index[v] = static_cast<VertIdx>(xyz.size() / 3);
-                xyz.insert(xyz.end(), plc.point(v), plc.point(v) + 3);
-            }
-            v = index[v];
-        }
-    plc.xyz = xyz;
-    return plc;
 }
 
 TEST(Triangulation_BoundaryRecovery3d, RandomStarShapedPolyhedra) {

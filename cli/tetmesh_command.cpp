@@ -1,0 +1,268 @@
+// SPDX-License-Identifier: MIT
+// `exactmesh tetmesh`: a tetrahedral mesh of a 3D domain given as a piecewise linear complex
+// (TetGen .poly/.smesh, .off, .stl, or a built-in sample domain): conforming Delaunay boundary
+// recovery (triangulation/recovery_3d/boundary_recovery_3d), checked exactly before anything
+// is written (check_boundary_conformity_3d: valid positively oriented tetrahedra, every facet and
+// segment present). Output: TetGen .node/.ele/.face (every subface with its facet's marker)/
+// .neigh, or .msh/.vtu by the output's extension; input vertices keep their numbers, Steiner
+// points follow them.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "base/counter_table.hpp"
+#include "base/errors.hpp"
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "cli/output.hpp"
+#include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "generators/mesh_3d/delaunay_refinement_3d.hpp"
+#include "io/gmsh_format.hpp"
+#include "io/plc_format.hpp"
+#include "io/tetgen_format.hpp"
+#include "io/vtk_format.hpp"
+#include "predicates/stats.hpp"
+#include "triangulation/mesh/mesh3.hpp"
+#include "triangulation/mesh/plc_3d.hpp"
+#include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
+#include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
+#include "triangulation/recovery_3d/plc_3d.hpp"
+
+namespace exactmesh::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace tri = exactmesh::triangulation;
+namespace gen = exactmesh::generators;
+
+struct TetmeshArguments : CommandArguments {
+    std::string domain;
+    double domain_size = 0;
+    std::uint64_t max_steiner = 0;
+    double radius_edge = 0;  ///< 0: not given
+    double max_volume = 0;   ///< 0: not given
+    bool quality = false;
+};
+
+/// The faces to write in the .face file: every subface once (a boundary face as seen from
+/// outside, an internal facet's from its first tetrahedron), with its facet's marker.
+void subfaces_with_markers(const tri::ConformingMesh3& conforming, const tri::Plc3& plc,
+                           std::vector<std::uint32_t>& faces, std::vector<int>& markers) {
+    auto key = [](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        std::array<std::uint32_t, 3> k{a, b, c};
+        std::sort(k.begin(), k.end());
+        return (std::uint64_t{k[0]} * 0x9E3779B97F4A7C15ull) ^
+               (std::uint64_t{k[1]} * 0xC2B2AE3D27D4EB4Full) ^ k[2];
+    };
+    std::unordered_multimap<std::uint64_t, std::uint32_t> facet_of;
+    const auto& sub = conforming.subfaces;
+    for (std::size_t s = 0; s < sub.size(); s += 3)
+        facet_of.emplace(key(sub[s], sub[s + 1], sub[s + 2]), static_cast<std::uint32_t>(s / 3));
+    const tri::Tetrahedralization3& mesh = conforming.mesh;
+    for (tri::TetIdx t = 0; t < mesh.tet_count(); ++t) {
+        for (unsigned k = 0; k < 4; ++k) {
+            const tri::TetIdx n = mesh.neighbors[4 * std::size_t{t} + k];
+            if (n != tri::kNone && n < t) continue;  // written from the first tetrahedron
+            const unsigned* lf = tri::kFaceVertex[k];
+            const std::uint32_t a = mesh.tets[4 * std::size_t{t} + lf[0]],
+                                b = mesh.tets[4 * std::size_t{t} + lf[1]],
+                                c = mesh.tets[4 * std::size_t{t} + lf[2]];
+            const auto range = facet_of.equal_range(key(a, b, c));
+            for (auto it = range.first; it != range.second; ++it) {
+                const std::size_t s = 3 * std::size_t{it->second};
+                std::array<std::uint32_t, 3> x{sub[s], sub[s + 1], sub[s + 2]}, y{a, b, c};
+                std::sort(x.begin(), x.end());
+                std::sort(y.begin(), y.end());
+                if (x != y) continue;
+                faces.insert(faces.end(), {a, b, c});
+                markers.push_back(plc.facets[conforming.subface_facet[it->second]].marker);
+                break;
+            }
+        }
+    }
+}
+
+void run_tetmesh(const TetmeshArguments& arguments) {
+    if (arguments.input.empty() == arguments.domain.empty())
+        throw InputError(
+            "give either an input PLC file (.poly, .smesh, .off, .stl) or --domain "
+            "NAME (not both)");
+    const fs::path output = arguments.output;
+    const OutputFormat format = output_format(output);  // before any work: fail fast
+    if (format == OutputFormat::Svg) {
+        throw InputError(output.string() +
+                         ": .svg pictures are 2D only; write tetrahedra as .ele, .msh or .vtu");
+    }
+    const std::vector<fs::path> files = output_files(output, format, {".node", ".face", ".neigh"});
+    if (!arguments.input.empty()) refuse_to_overwrite_inputs({arguments.input}, files);
+
+    tri::Plc3 plc;
+    std::string source;
+    if (!arguments.domain.empty()) {
+        plc = gen::sample_domain_3d(gen::sample_domain_3d_from_name(arguments.domain),
+                                    arguments.domain_size);
+        source = "--domain " + arguments.domain;
+    } else {
+        plc = io::plc_from_file(io::read_plc(arguments.input));
+        source = arguments.input;
+    }
+    const std::uint32_t base = plc.first_index;
+    // A mesh generator's domain must enclose a volume: an open surface would leave the flood
+    // fill nothing to keep (internal facets, edges in more than two triangles, are fine).
+    tri::check_surface_closed_3d(plc, tri::validate_plc_3d(plc));
+
+    tri::BoundaryRecovery3Options options;
+    options.max_steiner_points = arguments.max_steiner;
+    const bool refine = arguments.radius_edge > 0 || arguments.max_volume > 0;
+    gen::DelaunayRefinement3Options refinement;
+    refinement.radius_edge_bound = arguments.radius_edge > 0 ? arguments.radius_edge : 2.0;
+    refinement.max_volume = arguments.max_volume;
+    refinement.max_steiner_points = arguments.max_steiner;
+    struct Meshed {
+        tri::BoundaryRecovery3Result recovery;
+        gen::DelaunayRefinement3Counters refinement;
+    };
+    auto [result, stats, seconds] = timed_construction([&] {
+        Meshed meshed{tri::boundary_recovery_3d(plc, options), {}};
+        if (refine) {
+            gen::DelaunayRefinement3Result refined =
+                gen::delaunay_refinement_3d(plc, std::move(meshed.recovery.mesh), refinement);
+            meshed.recovery.mesh = std::move(refined.mesh);
+            meshed.refinement = refined.counters;
+        }
+        return meshed;
+    });
+    const tri::ConformingMesh3& conforming = result.recovery.mesh;
+
+    // Exact check before anything is written: a failure is a bug, never the input's fault.
+    const tri::BoundaryConformityReport3 report =
+        tri::check_boundary_conformity_3d(plc, conforming);
+    if (!report.ok) {
+        throw InternalError(source +
+                            ": the mesh fails the exact conformity check: " + report.problem);
+    }
+
+    // With refinement: every tetrahedron within the bounds, exactly, except those the
+    // small-input-angle rule spares and those whose splitting point the generator had to reject
+    // (counted: a point equal to an existing vertex, or a cavity that could not stay valid). A
+    // tetrahedron over a bound with no rejected point to explain it is a bug.
+    gen::RefinementQuality3 quality;
+    std::vector<std::string> warnings;
+    if (refine) {
+        quality = gen::check_refinement_quality_3d(conforming, refinement);
+        const std::uint64_t over = quality.over_bound + quality.over_volume;
+        const std::string text = std::to_string(quality.over_bound) +
+                                 " tetrahedra exceed the radius-edge bound and " +
+                                 std::to_string(quality.over_volume) + " the volume bound";
+        if (over != 0 && result.refinement.rejected_points == 0)
+            throw InternalError(source + ": " + text + " after refinement (exact check)");
+        if (over != 0) {
+            warnings.push_back(source + ": " + text + " after refinement: " +
+                               std::to_string(result.refinement.rejected_points) +
+                               " splitting points were rejected");
+        }
+    }
+
+    const tri::Tetrahedralization3& mesh = conforming.mesh;
+    io::OutputSet set;
+    switch (format) {
+        case OutputFormat::Ele: {
+            std::vector<std::uint32_t> faces;
+            std::vector<int> markers;
+            subfaces_with_markers(conforming, plc, faces, markers);
+            set.stage(files[0], io::format_tetgen_ele(mesh.tets, base));
+            set.stage(files[1], io::format_tetgen_node(mesh.xyz, base));
+            set.stage(files[2], io::format_tetgen_marked_faces(faces, markers, base));
+            set.stage(files[3], io::format_tetgen_neigh(mesh.neighbors, base));
+            break;
+        }
+        case OutputFormat::Msh:
+            set.stage(output, io::format_msh_3d(mesh.xyz, mesh.tets));
+            break;
+        case OutputFormat::Vtu:
+            set.stage(output, io::format_vtu_3d(mesh.xyz, mesh.tets, base));
+            break;
+        case OutputFormat::Svg:
+            break;  // refused above
+    }
+    commit_outputs(set);
+    print_warnings(warnings);
+    std::cout << "vertices: " << mesh.vertex_count() << '\n'
+              << "tetrahedra: " << mesh.tet_count() << '\n';
+    if (arguments.quality) print_quality_3d(mesh);
+    if (arguments.stats) {
+        auto counters =
+            counters_by_name(tri::kBoundaryRecovery3CounterNames, result.recovery.counters);
+        if (refine) {
+            for (auto& [name, value] :
+                 counters_by_name(gen::kDelaunayRefinement3CounterNames, result.refinement))
+                counters.emplace_back("refinement_" + name, value);
+            counters.emplace_back("spared_small_angle_tets", quality.small_angle);
+            counters.emplace_back("over_bound_tets", quality.over_bound + quality.over_volume);
+        }
+        print_construction_stats(counters, stats, seconds, 3);
+    }
+}
+
+}  // namespace
+
+void add_tetmesh_command(CLI::App& app) {
+    auto arguments = std::make_shared<TetmeshArguments>();
+    CLI::App* command = app.add_subcommand(
+        "tetmesh",
+        "Tetrahedral mesh of a 3D domain (a piecewise linear complex): conforming Delaunay "
+        "boundary recovery, optionally Delaunay refinement, checked exactly");
+    command
+        ->add_option("input", arguments->input,
+                     "The domain's boundary: TetGen .poly or .smesh, .off or .stl")
+        ->type_name("IN.poly|IN.smesh|IN.off|IN.stl");
+    command
+        ->add_option("--domain", arguments->domain,
+                     "A built-in domain instead of a file: box-with-hole, ellipsoid, wing")
+        ->type_name("NAME");
+    command
+        ->add_option("--domain-size", arguments->domain_size,
+                     "Target edge length of a built-in domain's curved surfaces (default: the "
+                     "domain's own)")
+        ->check(CLI::PositiveNumber);
+    add_output_option(*command, arguments->output,
+                      "Output; the extension picks the format: .ele (TetGen; .node, .face with "
+                      "facet markers and .neigh beside it), .msh (Gmsh 4.1), .vtu (VTK)");
+    command
+        ->add_option("--max-steiner", arguments->max_steiner,
+                     "Most Steiner points of boundary recovery and, separately, of refinement (0: "
+                     "100 per input vertex plus 100,000 for recovery, 1,000 per input vertex plus "
+                     "10^6 for refinement); past it the command stops with an error")
+        ->check(whole_number_at_most(UINT32_MAX));
+    command
+        ->add_option("--radius-edge", arguments->radius_edge,
+                     "Delaunay refinement (generators/mesh_3d/delaunay_refinement_3d): split "
+                     "every tetrahedron whose circumradius / shortest edge exceeds B (TetGen "
+                     "-q; 2 when only --max-volume is given). Without --radius-edge and "
+                     "--max-volume the mesh is the recovered one, unrefined")
+        ->type_name("B")
+        ->check(CLI::PositiveNumber);
+    command
+        ->add_option("--max-volume", arguments->max_volume,
+                     "Delaunay refinement: split every tetrahedron of larger volume (TetGen -a)")
+        ->type_name("V")
+        ->check(CLI::PositiveNumber);
+    command->add_flag("--quality", arguments->quality,
+                      "Print the mesh's quality: dihedral extremes and 10-degree histogram, "
+                      "volume-edge, radius-edge, slivers");
+    add_stats_flag(*command, arguments->stats,
+                   "the recovery's and refinement's counters, predicate stages",
+                   "the construction alone, without file I/O or the check");
+    command->callback([arguments] { run_tetmesh(*arguments); });
+}
+
+}  // namespace exactmesh::cli

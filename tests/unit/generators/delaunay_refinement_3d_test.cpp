@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: MIT
+// Tests of generators/mesh_3d/delaunay_refinement_3d: the sample domains, the same mesh for the
+// domain scaled by 2^600 and 2^-600, a cube (cocircular facets, cospherical corners), and small
+// random convex and star-shaped PLCs; every output checked exactly (check_boundary_conformity_3d:
+// valid positively oriented tetrahedra, every facet and segment present; and
+// check_refinement_quality_3d: every tetrahedron within the bounds unless spared or explained by
+// a rejected point).
+#include "generators/mesh_3d/delaunay_refinement_3d.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "base/errors.hpp"
+#include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "tests/support/plcs_3d.hpp"
+#include "tests/support/test_scale.hpp"
+#include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
+#include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
+
+namespace exactmesh::generators {
+namespace {
+
+using triangulation::ConformingMesh3;
+using triangulation::Plc3;
+
+/// The domain's volume (a rounded sum: for the test's expectations only).
+double volume(const triangulation::Tetrahedralization3& mesh) {
+    double sum = 0;
+    for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
+        const double* p[4];
+        for (unsigned k = 0; k < 4; ++k) p[k] = mesh.point(mesh.tets[t + k]);
+        double u[3], v[3], w[3];
+        for (int k = 0; k < 3; ++k) {
+            u[k] = p[1][k] - p[0][k];
+            v[k] = p[2][k] - p[0][k];
+            w[k] = p[3][k] - p[0][k];
+        }
+        sum += std::fabs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                         u[2] * (v[0] * w[1] - v[1] * w[0])) /
+               6;
+    }
+    return sum;
+}
+
+/// Recovers and refines `plc`, checks the result exactly, and returns it.
+DelaunayRefinement3Result refine_and_check(const Plc3& plc, const std::string& what,
+                                           const DelaunayRefinement3Options& options,
+                                           bool require_all_good = true) {
+    ConformingMesh3 recovered = triangulation::boundary_recovery_3d(plc).mesh;
+    const std::uint32_t recovered_vertices = recovered.mesh.vertex_count();
+    DelaunayRefinement3Result result = delaunay_refinement_3d(plc, std::move(recovered), options);
+    const auto report = triangulation::check_boundary_conformity_3d(plc, result.mesh);
+    EXPECT_TRUE(report.ok) << what << ": " << report.problem;
+    const RefinementQuality3 quality = check_refinement_quality_3d(result.mesh, options);
+    const auto& c = result.counters;
+    std::printf(
+        "%s: %u vertices, %u tets; %llu circumcentres, %llu subface, %llu segment, %llu "
+        "shell splits, %llu rejected, %llu spared tets (check: %llu over, %llu spared)\n",
+        what.c_str(), result.mesh.mesh.vertex_count(), result.mesh.mesh.tet_count(),
+        static_cast<unsigned long long>(c.circumcenters),
+        static_cast<unsigned long long>(c.subface_splits),
+        static_cast<unsigned long long>(c.segment_splits),
+        static_cast<unsigned long long>(c.shell_splits),
+        static_cast<unsigned long long>(c.rejected_points),
+        static_cast<unsigned long long>(c.small_angle_tets),
+        static_cast<unsigned long long>(quality.over_bound),
+        static_cast<unsigned long long>(quality.small_angle));
+    EXPECT_EQ(c.insertions, c.circumcenters + c.subface_splits + c.segment_splits + c.shell_splits);
+    EXPECT_EQ(result.mesh.mesh.vertex_count(), recovered_vertices + c.insertions);
+    if (require_all_good || c.rejected_points == 0) {
+        EXPECT_EQ(quality.over_bound, 0u) << what;
+        EXPECT_EQ(quality.over_volume, 0u) << what;
+    }
+    return result;
+}
+
+TEST(Generators_DelaunayRefinement3d, BoxWithHoleMeetsTheRadiusEdgeBound) {
+    const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
+    for (const double bound : {2.0, 1.5, 1.2}) {
+        DelaunayRefinement3Options options;
+        options.radius_edge_bound = bound;
+        const auto result =
+            refine_and_check(plc, "box-with-hole B=" + std::to_string(bound), options);
+        EXPECT_NEAR(volume(result.mesh.mesh), 0.875, 1e-12);
+        EXPECT_GT(result.counters.insertions, 0u);
+    }
+}
+
+TEST(Generators_DelaunayRefinement3d, BoxWithHoleMeetsTheVolumeBound) {
+    const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
+    DelaunayRefinement3Options options;
+    options.max_volume = 0.002 / testing::test_scale();
+    const auto result = refine_and_check(plc, "box-with-hole volume", options);
+    EXPECT_NEAR(volume(result.mesh.mesh), 0.875, 1e-12);
+    EXPECT_GE(result.mesh.mesh.tet_count(), static_cast<std::uint32_t>(0.875 / options.max_volume));
+}
+
+TEST(Generators_DelaunayRefinement3d, EllipsoidMeetsTheRadiusEdgeBound) {
+    const Plc3 plc = sample_domain_3d(SampleDomain3::Ellipsoid, 0.25);
+    DelaunayRefinement3Options options;
+    const auto result = refine_and_check(plc, "ellipsoid", options);
+    EXPECT_GT(result.counters.circumcenters, 0u);
+}
+
+TEST(Generators_DelaunayRefinement3d, CubeWithCocircularFacets) {
+    // Every facet's corners are cocircular and all eight cospherical: the Delaunay choices are
+    // made by the perturbation, and the facets' circumcentres fall on their diagonals.
+    for (const double bound : {2.0, 1.2, 1.0}) {
+        DelaunayRefinement3Options options;
+        options.radius_edge_bound = bound;
+        const auto result = refine_and_check(triangulation::box(1, 1, 1),
+                                             "cube B=" + std::to_string(bound), options);
+        EXPECT_NEAR(volume(result.mesh.mesh), 1.0, 1e-12);
+    }
+    DelaunayRefinement3Options options;
+    options.max_volume = 1.0 / 64;
+    const auto result = refine_and_check(triangulation::box(1, 1, 1), "cube V=1/64", options);
+    EXPECT_GE(result.mesh.mesh.tet_count(), 64u);
+}
+
+TEST(Generators_DelaunayRefinement3d, ScalingByPowersOfTwoGivesTheSameMesh) {
+    for (const SampleDomain3 d : {SampleDomain3::BoxWithHole, SampleDomain3::Ellipsoid}) {
+        const Plc3 plc = sample_domain_3d(d, 0.4);
+        DelaunayRefinement3Options options;
+        options.radius_edge_bound = 1.5;
+        const auto reference = refine_and_check(plc, "unscaled", options);
+        for (const int e : {600, -600}) {
+            const Plc3 s = triangulation::scaled(plc, e);
+            const auto result = refine_and_check(s, "scaled by 2^" + std::to_string(e), options);
+            EXPECT_EQ(result.mesh.mesh.tets, reference.mesh.mesh.tets) << e;
+            ASSERT_EQ(result.mesh.mesh.xyz.size(), reference.mesh.mesh.xyz.size());
+            for (std::size_t i = 0; i < result.mesh.mesh.xyz.size(); ++i)
+                ASSERT_EQ(result.mesh.mesh.xyz[i], std::ldexp(reference.mesh.mesh.xyz[i], e)) << i;
+        }
+    }
+}
+
+TEST(Generators_DelaunayRefinement3d, RandomConvexPolyhedra) {
+    const int count = std::max(2, static_cast<int>(6 * testing::test_scale()));
+    for (int seed = 1; seed <= count; ++seed) {
+        const Plc3 plc =
+            triangulation::random_convex(static_cast<std::uint64_t>(seed), 10 + 4 * seed);
+        DelaunayRefinement3Options options;
+        options.max_steiner_points = 200000;
+        // Random hulls have small angles between facets: points may be rejected (counted), and
+        // then only tetrahedra they explain may stay over the bound.
+        refine_and_check(plc, "random convex seed " + std::to_string(seed), options, false);
+    }
+}
+
+TEST(Generators_DelaunayRefinement3d, RandomStarShapedPolyhedraRefineOrStopAtTheBudget) {
+    const int count = std::max(2, static_cast<int>(6 * testing::test_scale()));
+    int refined = 0;
+    for (int seed = 1; seed <= count; ++seed) {
+        const Plc3 plc =
+            triangulation::random_star(static_cast<std::uint64_t>(seed), 10 + 4 * seed);
+        DelaunayRefinement3Options options;
+        options.max_steiner_points = 5000;
+        try {
+            refine_and_check(plc, "random star seed " + std::to_string(seed), options, false);
+            ++refined;
+        } catch (const InputError& error) {
+            // Small input angles: the budget stops refinement with a message naming it.
+            const std::string message = error.what();
+            EXPECT_NE(message.find("budget"), std::string::npos) << message;
+            std::printf("random star seed %d: %s\n", seed, message.c_str());
+        }
+    }
+    EXPECT_GT(refined, 0);
+}
+
+TEST(Generators_DelaunayRefinement3d, BadOptionsAndTheBudgetAreInputErrors) {
+    const Plc3 plc = triangulation::box(1, 1, 1);
+    ConformingMesh3 recovered = triangulation::boundary_recovery_3d(plc).mesh;
+    DelaunayRefinement3Options options;
+    options.radius_edge_bound = -1;
+    EXPECT_THROW(delaunay_refinement_3d(plc, recovered, options), InputError);
+    options.radius_edge_bound = std::nan("");
+    EXPECT_THROW(delaunay_refinement_3d(plc, recovered, options), InputError);
+    options.radius_edge_bound = 2;
+    options.max_volume = 1e-6;
+    options.max_steiner_points = 10;
+    try {
+        delaunay_refinement_3d(plc, recovered, options);
+        ADD_FAILURE() << "no budget error";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("budget of 10"), std::string::npos)
+            << error.what();
+    }
+}
+
+}  // namespace
+}  // namespace exactmesh::generators
