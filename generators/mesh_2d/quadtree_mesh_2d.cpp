@@ -919,6 +919,17 @@ QuadtreeResult2 QuadtreeMesher::assemble() {
     }
     const auto boundary_segments = static_cast<std::uint32_t>(band_piece.size());
     for (const VertIdx v : free_vertices_) band(v);
+    // Every other input vertex (first occurrences): outside the domain by the exact CDT, but one
+    // within an ulp of a boundary piece can lie exactly on the piece's rounded chain (fuzz
+    // case_26: a slit's end 2e-31 outside the domain, on the chain x = 16 - 4e-15 of the
+    // discretized boundary); the band's CDT then splits the piece there, and the vertex is
+    // kept, as every other generator keeps it. Strictly outside, it goes with the exterior.
+    const tri::Cdt2Result& input_cdt = boundary_.cdt;
+    const auto input_count =
+        std::min<std::size_t>(boundary_.input_vertex_count, input_cdt.merged_into.size());
+    for (VertIdx v = 0; v < input_count; ++v) {
+        if (input_cdt.merged_into[v] == v && !band_of.count(v)) band(v);
+    }
     for (const VertIdx v : outline) band_segments.push_back(band(v));
     // Corners of the band's leaves inside the domain, at least corner_clearance times the
     // leaf's side from every obstacle (a box of that half-width meets none: the leaf's list
@@ -974,9 +985,11 @@ QuadtreeResult2 QuadtreeMesher::assemble() {
     const tri::Cdt2Result band_cdt = triangulate_band({band_xy, band_segments, band_holes, {}},
                                                       boundary_segments, cdt, result_warnings);
     const tri::Cdt2Counters& bc = band_cdt.counters;
-    if (bc.duplicates || bc.intersections || bc.vertices_on_segments || bc.dropped_segments ||
+    // Input vertices on boundary pieces split them (each adds a piece); nothing else may.
+    if (bc.duplicates || bc.intersections || bc.dropped_segments ||
         band_cdt.mesh.xy.size() < band_xy.size() ||
-        band_cdt.pieces.size() != band_segments.size() + 2 * counters_.band_piece_splits) {
+        band_cdt.pieces.size() !=
+            band_segments.size() + 2 * counters_.band_piece_splits + 2 * bc.vertices_on_segments) {
         throw GeometryError(
             "quadtree: the band between the kept leaves and the boundary needs new vertices on "
             "its segments (" +
@@ -991,7 +1004,7 @@ QuadtreeResult2 QuadtreeMesher::assemble() {
         band_vertex.push_back(static_cast<VertIdx>(xy.size() / 2));
         xy.insert(xy.end(), {band_cdt.mesh.point(v)[0], band_cdt.mesh.point(v)[1]});
     }
-    if (counters_.band_piece_splits > 0) {
+    if (counters_.band_piece_splits > 0 || bc.vertices_on_segments > 0) {
         // The boundary pieces the refinement halved: each band segment below
         // boundary_segments is boundary piece band_piece[k]; its chain from the result's pieces.
         std::vector<std::vector<std::array<VertIdx, 2>>> parts(boundary_segments);
