@@ -15,6 +15,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
+#include "cli/progress_output.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/stats.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
@@ -62,6 +63,7 @@ void run_cdt(const CdtArguments& arguments) {
     options.order = tri::insertion_order_from_name(arguments.order);
     options.seed = arguments.seed;
     options.first_index = base;
+    options.progress = progress_printer("cdt", arguments.quiet);
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
 
     const auto [result, stats, seconds] = timed_construction([&] {
@@ -106,6 +108,7 @@ void add_cdt_command(CLI::App& app) {
     add_picture_options(*command, arguments->picture);
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
                    "the construction alone, without file I/O");
+    add_quiet_flag(*command, arguments->quiet);
     command->callback([arguments] { run_cdt(*arguments); });
 }
 

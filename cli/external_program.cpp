@@ -24,6 +24,7 @@
 
 #include "base/errors.hpp"
 #include "io/tetgen_format.hpp"
+#include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
 
 namespace exactmesh::cli {
@@ -82,6 +83,85 @@ std::string output_path(const std::string& output, const fs::path& dir, const fs
     fs::path stem = in;
     stem.replace_extension();
     return replace_all(replace_all(output, "{dir}", dir.string()), "{stem}", stem.string());
+}
+
+namespace {
+
+/// The converter of meshio_conversion_command (no single quote: it is one shell word in quotes).
+constexpr const char* kMeshioConversion = R"PY(
+import sys
+kind, source, target = sys.argv[1:4]
+name = source.rsplit("/", 1)[-1]
+def fail(message):
+    sys.stderr.write(message.replace("\n", " ") + "\n")
+    sys.exit(1)
+try:
+    import meshio
+except ImportError as error:
+    fail("cannot convert " + name + ": no meshio module (" + str(error) + ")")
+def empty_vtu():
+    # meshio 5.0 (Debian 12) fails on a VTU without cells (an IndexError on its empty types):
+    # every Piece with NumberOfCells="0" is read here as no cells.
+    import xml.etree.ElementTree as tree
+    try:
+        pieces = [e for e in tree.parse(source).iter() if str(e.tag).endswith("Piece")]
+    except Exception:
+        return False
+    return bool(pieces) and all(e.get("NumberOfCells") == "0" for e in pieces)
+import contextlib, io
+try:
+    # Quiet: meshio prints its own complaints (the reproducer shows ours).
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+        mesh = meshio.read(source)
+except (Exception, SystemExit) as error:  # meshio 5.0 ends some failures with sys.exit
+    if source.lower().endswith(".vtu") and empty_vtu():
+        with open(target, "w") as ele:
+            ele.write("0 " + ("4" if kind == "tetra" else "3") + " 0\n")
+        sys.exit(0)
+    said = str(error).strip() if isinstance(error, Exception) else ""
+    fail("meshio cannot read " + name + (": " + said if said else ""))
+# No such cells is an empty .ele: right for collinear (coplanar) input, and otherwise judged
+# wrong as any empty output is ("no triangles, but points ... are not collinear").
+blocks = [block.data for block in mesh.cells if block.type == kind]
+count = sum(len(block) for block in blocks)
+dimension = 3 if kind == "tetra" else 2
+if mesh.points.ndim != 2 or mesh.points.shape[1] < dimension:
+    fail(name + ": points of dimension " + str(mesh.points.shape[-1]) + ", not " + str(dimension))
+with open(target[:-4] + ".node", "w") as node:
+    node.write(str(len(mesh.points)) + " " + str(dimension) + " 0 0\n")
+    for index, point in enumerate(mesh.points, 1):
+        node.write(str(index) + " " + " ".join(repr(float(x)) for x in point[:dimension]) + "\n")
+with open(target, "w") as ele:
+    ele.write(str(count) + " " + str(dimension + 1) + " 0\n")
+    index = 1
+    for block in blocks:
+        for cell in block:
+            ele.write(str(index) + " " + " ".join(str(int(v) + 1) for v in cell) + "\n")
+            index += 1
+# 2D: line cells are the constrained pieces, a .poly beside (its vertices: the .node).
+lines = [block.data for block in mesh.cells if block.type == "line"]
+if kind == "triangle" and lines:
+    with open(target[:-4] + ".poly", "w") as poly:
+        poly.write("0 2 0 0\n" + str(sum(len(block) for block in lines)) + " 0\n")
+        index = 1
+        for block in lines:
+            for cell in block:
+                poly.write(str(index) + " " + str(int(cell[0]) + 1) + " " +
+                           str(int(cell[1]) + 1) + "\n")
+                index += 1
+        poly.write("0\n")
+)PY";
+
+}  // namespace
+
+std::string meshio_conversion_command(FuzzKind kind, const std::string& in,
+                                      const std::string& out) {
+    return "/usr/bin/python3 -c " + shell_word(kMeshioConversion) + " " +
+           (kind == FuzzKind::Points3d ? "tetra" : "triangle") + " " + in + " " + out;
+}
+
+bool is_ele_output(const std::string& output) {
+    return io::has_extension(output, ".ele");
 }
 
 namespace {
@@ -200,6 +280,11 @@ void read_program_output(const FuzzInput& input, const fs::path& in, const fs::p
 
 }  // namespace
 
+namespace {
+/// meshio's import alone takes about a second; a conversion is not the program's time.
+constexpr std::chrono::milliseconds kConversionTimeout{60000};
+}  // namespace
+
 ProgramUnderTest external_program(const ExternalCommand& command, const fs::path& scratch) {
     return [command, scratch](const FuzzInput& input) {
         const fs::path dir = scratch / "run";
@@ -219,7 +304,30 @@ ProgramUnderTest external_program(const ExternalCommand& command, const fs::path
             if (const std::string said = tail_of(dir / "program.stderr", 3); !said.empty())
                 output.message += ": " + said;
         }
-        if (run.status == RunStatus::Finished) read_program_output(input, in, out, output);
+        if (run.status == RunStatus::Finished) {
+            if (is_ele_output(out.string())) {
+                read_program_output(input, in, out, output);
+            } else if (!fs::exists(out)) {
+                output.readable = false;
+                output.message = "the program wrote no " + out.filename().string();
+            } else {
+                // Not a Triangle/TetGen .ele: meshio converts it. A failure is an unreadable
+                // output (the program's), not an error of the campaign.
+                const fs::path converted = dir / "converted.ele";
+                const ShellRun conversion =
+                    run_shell(meshio_conversion_command(input.kind, shell_word(out.string()),
+                                                        shell_word(converted.string())),
+                              dir / "convert.stdout", dir / "convert.stderr", kConversionTimeout);
+                if (conversion.status == RunStatus::Finished) {
+                    read_program_output(input, in, converted, output);
+                } else {
+                    output.readable = false;
+                    const std::string said = tail_of(dir / "convert.stderr", 1);
+                    output.message = "cannot convert " + out.filename().string() +
+                                     " with meshio: " + (said.empty() ? conversion.message : said);
+                }
+            }
+        }
         output.oriented = !command.orient;
         return output;
     };

@@ -484,7 +484,10 @@ std::string reproducer_script(const FuzzArguments& arguments, const FuzzInput& i
                               const ProgramFuzzFailure& failure, const fs::path& saved) {
     const std::string in_name = input_file_name(input.kind);
     const std::string in = "$dir/" + in_name;
-    const std::string out = output_path(arguments.output, "$dir", in);
+    const std::string written = output_path(arguments.output, "$dir", in);
+    // Another format than .ele is converted by meshio, as the campaign did, and checked so.
+    const bool convert = !is_ele_output(arguments.output);
+    const std::string out = convert ? "$dir/converted.ele" : written;
     fs::path out_node = out;
     out_node.replace_extension(".node");
     std::error_code error;
@@ -508,10 +511,14 @@ std::string reproducer_script(const FuzzArguments& arguments, const FuzzInput& i
            << "cp \"$here\"/" << shell_word(saved.filename().string()) << " \"" << in
            << "\" || exit 2\n"
            << "echo \"input and output in $dir\"\n"
-           << substitute_command(arguments.command, "\"" + in + "\"", "\"" + out + "\"") << '\n'
+           << substitute_command(arguments.command, "\"" + in + "\"", "\"" + written + "\"") << '\n'
            << "status=$?\n"
            << "if [ $status -ne 0 ]; then echo \"the command exited with status $status\"; exit "
               "$status; fi\n";
+    if (convert) {
+        script << meshio_conversion_command(input.kind, "\"" + written + "\"", "\"" + out + "\"")
+               << " || exit 2\n";
+    }
     if (input.kind == FuzzKind::Pslg) {
         script << shell_word(exe.string()) << " check \"" << in << "\" \"" << out << '"'
                << (arguments.conforming ? " --conforming" : "")
@@ -591,10 +598,10 @@ int run_program_fuzz(const FuzzArguments& arguments) {
         arguments.output.find("{stem}") == std::string::npos)
         throw InputError("--output " + arguments.output +
                          ": must name a file in the scratch folder, by {dir} or {stem}");
-    if (!io::has_extension(arguments.output, ".ele"))
+    if (fs::path(arguments.output).extension().string().size() < 2)
         throw InputError("--output " + arguments.output +
-                         ": only Triangle and TetGen .ele outputs are read (io/ writes .msh and "
-                         ".vtu but has no reader for them)");
+                         ": needs an extension: .ele (Triangle, TetGen) or one meshio reads "
+                         "(.vtu, .msh, ...)");
     options.count = arguments.count;
     options.seed = arguments.seed;
     options.max_points = arguments.max_points;
@@ -673,7 +680,8 @@ void add_fuzz_command(CLI::App& app, int& exit_status) {
         ->add_option("--command", arguments->command,
                      "Fuzz another program: a shell command (run by /bin/sh -c) where {in} is the "
                      "input file (Triangle .node or .poly, TetGen .node, 1-based) and {out} the "
-                     "output file it must write (Triangle .ele, TetGen .ele); do not quote them")
+                     "output file it must write (Triangle .ele, TetGen .ele, or by --output any "
+                     "format meshio reads); do not quote them")
         ->type_name("'PROGRAM {in} {out}'");
     command
         ->add_option("--kind", arguments->kind,
@@ -696,7 +704,9 @@ void add_fuzz_command(CLI::App& app, int& exit_status) {
                      "With --command: where the program writes its output, {dir} being the "
                      "scratch folder and {stem} the input file without its extension (for "
                      "TetGen: '{stem}.1.ele'); a .node beside it gives its vertices, for pslg a "
-                     ".poly beside it its constrained pieces")
+                     ".poly beside it its constrained pieces. Another extension than .ele (.vtu, "
+                     ".msh, anything meshio reads) is converted by meshio (python3-meshio): its "
+                     "points and triangles (tetrahedra for points3d)")
         ->capture_default_str()
         ->type_name("PATH");
     command->add_option("--max-points", arguments->max_points, "With --command: largest input")

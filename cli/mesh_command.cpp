@@ -22,6 +22,7 @@
 #include "cli/metric_file.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
+#include "cli/progress_output.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
@@ -56,6 +57,7 @@ struct MeshArguments {
     std::uint32_t smooth = 0;
     bool quality = false;
     bool stats = false;
+    bool quiet = false;         ///< --quiet: no progress lines
     bool angles_given = false;  ///< --min-angle or --polish-angle on the command line
     std::string layers;         ///< --layers FIRST_HEIGHT,GROWTH[,MAX_LAYERS]
     bool quads = false;         ///< --quads
@@ -237,6 +239,7 @@ void run_mesh(const MeshArguments& arguments) {
     options.size = size;
     options.max_steiner_points = arguments.max_steiner;
     options.cdt.first_index = base;
+    options.cdt.progress = progress_printer("mesh", arguments.quiet);
     options.layers = layer_parameters;
     options.layers.quads = arguments.quads;
     if (arguments.omesh) options.layers.method = gen::LayerMethod2::TruncatedOMesh;
@@ -443,6 +446,7 @@ void add_mesh_command(CLI::App& app) {
         "--stats", arguments->stats,
         "Print work counters, predicate stages and construct_seconds (the generator alone, "
         "without file I/O)");
+    add_quiet_flag(*command, arguments->quiet);
     command->callback([arguments, command] {
         arguments->angles_given =
             command->count("--min-angle") + command->count("--polish-angle") > 0;

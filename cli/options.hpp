@@ -26,6 +26,7 @@ struct CommandArguments {
     std::string input;
     std::string output;
     bool stats = false;
+    bool quiet = false;  ///< --quiet (construction commands): no progress lines on stderr
 };
 
 /// An insertion order and its seed (--order, --seed).

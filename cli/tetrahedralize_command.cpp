@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
+#include "cli/progress_output.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/tetgen_format.hpp"
 #include "io/vtk_format.hpp"
@@ -46,7 +47,8 @@ void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
 
     const tri::Delaunay3Options options{tri::insertion_order_from_name(arguments.order),
-                                        arguments.seed};
+                                        arguments.seed,
+                                        progress_printer("tetrahedralize", arguments.quiet)};
     const auto [result, stats, seconds] =
         timed_construction([&] { return construct(nodes.xyz, options); });
     if (result.coplanar) {
@@ -96,6 +98,7 @@ void add_tetrahedralize_command(CLI::App& app) {
     add_order_options(*command, *arguments, "Insertion order");
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
                    "the construction alone, without file I/O");
+    add_quiet_flag(*command, arguments->quiet);
     command->callback([arguments] { run_tetrahedralize(*arguments); });
 }
 

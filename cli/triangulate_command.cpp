@@ -15,6 +15,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
+#include "cli/progress_output.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/svg_picture.hpp"
 #include "io/triangle_format.hpp"
@@ -54,7 +55,8 @@ void run_triangulate(const TriangulateArguments& arguments) {
     const io::NodeFile nodes = io::read_node(arguments.input);
 
     const tri::Delaunay2Options options{tri::insertion_order_from_name(arguments.order),
-                                        arguments.seed, point_location(arguments.location)};
+                                        arguments.seed, point_location(arguments.location),
+                                        progress_printer("triangulate", arguments.quiet)};
     const auto [result, stats, seconds] =
         timed_construction([&] { return construct(nodes.xy, options); });
 
@@ -105,6 +107,7 @@ void add_triangulate_command(CLI::App& app) {
     add_picture_options(*command, arguments->picture);
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
                    "the construction alone, without file I/O");
+    add_quiet_flag(*command, arguments->quiet);
     command->callback([arguments] { run_triangulate(*arguments); });
 }
 

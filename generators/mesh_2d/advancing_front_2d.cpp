@@ -21,6 +21,7 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "base/progress.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/mesh_2d/domain_mesh_2d.hpp"
 #include "generators/mesh_2d/front_index_2d.hpp"
@@ -102,6 +103,14 @@ class AdvancingFront {
         }
         check_initial_front();
         budget_ = options.max_triangles != 0 ? options.max_triangles : automatic_budget();
+        // The total only when someone asks: the estimate integrates the size over the domain.
+        if (options.cdt.progress) {
+            const double expected = expected_triangle_count(boundary_, options_.size);
+            progress_ = ProgressCounter(
+                options.cdt.progress,
+                expected > 0 ? static_cast<std::uint64_t>(std::min(expected, 1e15)) : 0,
+                "triangles made");
+        }
     }
 
     void run() {
@@ -148,6 +157,7 @@ class AdvancingFront {
     const DomainBoundary2& boundary_;
     const AdvancingFrontOptions2& options_;
     AdvancingFrontCounters2& counters_;
+    ProgressCounter progress_;  ///< triangles made, for options.cdt.progress
     std::vector<double> xy_;
     std::vector<VertIdx> triangles_;
     std::vector<FrontEdge> edges_;
@@ -397,6 +407,7 @@ class AdvancingFront {
         const VertIdx a = edges_[base].a, b = edges_[base].b;
         triangles_.insert(triangles_.end(), {a, b, c});
         ++counters_.triangles;
+        progress_.tick();
         ++(new_point ? counters_.new_points : counters_.reused_points);
         if (c < free_.size() && free_[c] != 0) {  // new points come after the free vertices
             free_[c] = 0;
@@ -718,6 +729,7 @@ class AdvancingFront {
                 triangles_.push_back(global[mesh.triangles[3 * t + k]]);
             ++counters_.closure_triangles;
             ++counters_.triangles;
+            progress_.tick();
         }
         for (EdgeId e = 0; e < edges_.size(); ++e) {
             if (edges_[e].alive) kill_edge(e);

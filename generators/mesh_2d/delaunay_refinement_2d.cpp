@@ -28,6 +28,7 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "base/progress.hpp"
 #include "generators/boundary/region_areas_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/constructions.hpp"
@@ -212,6 +213,8 @@ class Refiner {
     VertIdx initial_vertices_ = 0;
     double sine2_bound_ = 0;  // sin^2(min_angle); 0: no angle criterion
     std::uint64_t budget_ = 0;
+    /// Steiner points inserted, for options.cdt.progress (total: the expected count, below).
+    ProgressCounter progress_;
 
     double asked_sine2_ = 0;  // sin^2(min_angle), also while polishing
     /// Refines until no triangle is bad (true) or `limit` Steiner points exist (false).
@@ -288,6 +291,12 @@ void Refiner::check_domain_and_budget() {
                   ? options_.max_steiner_points
                   : static_cast<std::uint64_t>(
                         std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
+    // About as many Steiner points as equilateral triangles (see the reservation below); 0, for
+    // no size asked, reads as unknown.
+    progress_ =
+        ProgressCounter(options_.cdt.progress,
+                        estimate > 0 ? static_cast<std::uint64_t>(std::min(estimate, 4e9)) : 0,
+                        "Steiner points inserted");
     // Room for the expected mesh: refinement makes about twice the ideal count of equilateral
     // triangles, with half as many vertices as triangles. A hint only, so capped at the budget
     // and at 2^21 vertices (about 200 MB reserved); beyond that the arrays grow as they go.
@@ -594,6 +603,7 @@ void Refiner::split_piece(const PieceToSplit& piece) {
     const VertIdx v = cdt_.split_constrained_edge(e, m.x, m.y);
     if (v >= before) {
         ++counters_.segment_splits;
+        progress_.tick();
         if (on_segment_.size() <= v) on_segment_.resize(v + 1);
         on_segment_[v] = {segment, m.apex, m.shell};
         if (m.apex != kNone) ++counters_.shell_splits;
@@ -640,6 +650,7 @@ bool Refiner::refine(std::uint64_t limit) {
         switch (outcome) {
             case tri::CavityInsertion::Inserted:
                 ++counters_.circumcenters;
+                progress_.tick();
                 counters_.largest_cavity = std::max(
                     counters_.largest_cavity, cdt_.counters().cavity_triangles - replaced_before);
                 process_touched();

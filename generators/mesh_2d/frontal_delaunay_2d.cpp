@@ -22,6 +22,7 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "base/progress.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/boundary/region_areas_2d.hpp"
 #include "predicates/incircle.hpp"
@@ -87,6 +88,8 @@ class Frontal {
     std::uint32_t stamp_ = 0;
     std::vector<TriIdx> stack_, scanned_;
     std::uint64_t budget_ = 0;
+    /// Points inserted, for options.cdt.progress (total: the expected count, set_budget).
+    ProgressCounter progress_;
 
     const double* point(VertIdx v) const { return mesh_.point(v); }
     double size_at(double x, double y) const {
@@ -157,6 +160,10 @@ void Frontal::set_budget() {
     // the equilateral estimate's half. A hint only, capped at 2^21 vertices.
     const double expected =
         std::min({0.6 * estimate, static_cast<double>(budget_), 0x1p21}) + vertices;
+    progress_ = ProgressCounter(
+        options_.cdt.progress,
+        estimate > 0 ? static_cast<std::uint64_t>(std::min(0.6 * estimate, 4e9)) : 0,
+        "Steiner points inserted");
     cdt_.reserve(static_cast<std::uint32_t>(expected));
     status_.reserve(static_cast<std::size_t>(2 * expected));
     version_.reserve(static_cast<std::size_t>(2 * expected));
@@ -355,6 +362,7 @@ void Frontal::step(TriIdx t) {
     switch (cdt_.insert_in_cavity(t, x[0], x[1])) {
         case tri::CavityInsertion::Inserted:
             ++counters_.points_inserted;
+            progress_.tick();
             process_touched();
             return;
         case tri::CavityInsertion::Encroaches:

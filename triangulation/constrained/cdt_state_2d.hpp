@@ -92,6 +92,7 @@ struct CdtState {
         Delaunay2Options d;
         d.order = o.order;
         d.seed = o.seed;
+        d.progress = o.progress;
         return d;
     }
 

@@ -27,6 +27,7 @@
 
 #include "base/counter_table.hpp"
 #include "base/errors.hpp"
+#include "base/progress.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
 #include "triangulation/mesh/triangulation_2d.hpp"
 
@@ -55,6 +56,9 @@ struct Cdt2Options {
     std::uint64_t seed = 1;
     /// Number of the first vertex, segment, hole and region in warnings (1 for 1-based files).
     std::uint32_t first_index = 0;
+    /// Called every 2^14 vertices inserted into the Delaunay triangulation, then (delaunay
+    /// refinement) every 2^14 Steiner points (base/progress.hpp).
+    Progress progress{};
 };
 
 struct Cdt2Counters {

@@ -93,6 +93,7 @@ Delaunay2Result bowyer_watson_2d(std::span<const double> xy, const Delaunay2Opti
         if (t == kNone) continue;  // duplicate, merged
         insert_point(core, cavity, p, t, ++stamp);
         core.note_inserted(p);
+        core.progress.tick();
     }
     return core.take_result();
 }

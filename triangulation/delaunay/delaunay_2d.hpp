@@ -14,6 +14,7 @@
 
 #include "base/counter_table.hpp"
 #include "base/errors.hpp"
+#include "base/progress.hpp"
 #include "triangulation/mesh/mesh2.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 
@@ -30,6 +31,8 @@ struct Delaunay2Options {
     InsertionOrder order = InsertionOrder::Brio;
     std::uint64_t seed = 1;
     PointLocation location = PointLocation::Auto;
+    /// Called every 2^14 points inserted, with the point count as total (base/progress.hpp).
+    Progress progress{};
 };
 
 /// Work counters of one construction (predicate stage counts come from predicates/stats.hpp).

@@ -42,6 +42,7 @@ Delaunay2Core::Delaunay2Core(std::span<const double> xy, const Delaunay2Options&
     : Delaunay2Core(xy,
                     (validate_points_2d(xy), insertion_order_2d(xy, options.order, options.seed))) {
     build_jump_grid(options);
+    progress = ProgressCounter(options.progress, xy.size() / 2, "points inserted");
 }
 
 void Delaunay2Core::build_jump_grid(const Delaunay2Options& options) {

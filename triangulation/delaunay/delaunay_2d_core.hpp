@@ -60,6 +60,9 @@ class Delaunay2Core {
 
     TriIdx last_triangle = kNone;
 
+    /// Points inserted, for options.progress: the insertion loops tick it once per point.
+    ProgressCounter progress;
+
     /// Records that the triangle last_triangle was made by inserting p (for grid location).
     void note_inserted(VertIdx p);
 

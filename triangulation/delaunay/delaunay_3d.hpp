@@ -15,6 +15,7 @@
 
 #include "base/counter_table.hpp"
 #include "base/errors.hpp"
+#include "base/progress.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"  // InsertionOrder
 #include "triangulation/mesh/tetrahedralization_3d.hpp"
 
@@ -23,6 +24,8 @@ namespace exactmesh::triangulation {
 struct Delaunay3Options {
     InsertionOrder order = InsertionOrder::Brio;
     std::uint64_t seed = 1;
+    /// Called every 2^14 points inserted, with the point count as total (base/progress.hpp).
+    Progress progress{};
 };
 
 /// Work counters of one construction (predicate stage counts come from predicates/stats.hpp).

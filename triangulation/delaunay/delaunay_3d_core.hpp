@@ -101,11 +101,13 @@ Delaunay3Result insert_incrementally(std::span<const double> xyz, const Delaunay
     std::vector<bool> skip;
     if (!core.make_first_tet(skip)) return core.coplanar_result(xyz);
     Inserter inserter(core);
+    ProgressCounter progress(options.progress, core.mesh.vertex_count(), "points inserted");
     for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
         if (skip[p]) continue;
         const Delaunay3Core::Location where = core.locate(p);
         if (where.tet == kNone) continue;  // duplicate, merged
         inserter.insert(p, where);
+        progress.tick();
     }
     return core.take_result(xyz);
 }

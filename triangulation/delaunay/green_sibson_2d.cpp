@@ -87,6 +87,7 @@ bool detail::green_sibson_insert_all(Delaunay2Core& core) {
         if (t == kNone) continue;  // duplicate, merged
         inserter.insert(p, t);
         core.note_inserted(p);
+        core.progress.tick();
     }
     return true;
 }

@@ -37,9 +37,9 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-using exactmesh::testing::Input;
-using exactmesh::testing::from_domain;
 using exactmesh::testing::add_loop;
+using exactmesh::testing::from_domain;
+using exactmesh::testing::Input;
 using exactmesh::testing::square_with_hole_and_slit;
 
 using Meshed = em::testing::GeneratedMesh2<gen::AdvancingFrontResult2>;
@@ -364,4 +364,32 @@ TEST(Generators_AdvancingFront, TheWideSearchAloneTriangulatesTheBoundary) {
         EXPECT_EQ(r.counters.triangles, r.mesh.mesh.triangle_count()) << i;
         EXPECT_EQ(r.counters.triangles, r.counters.reused_points) << i;
     }
+}
+
+TEST(Generators_AdvancingFront, ProgressReportsTrianglesAndKeepsTheResult) {
+    // The unit square at size 0.008: several calls of the hook (every 2^14 triangles made), each
+    // with the expected count as total; the mesh is the same without the hook.
+    const Input in = exactmesh::testing::polygon({0, 0, 1, 0, 1, 1, 0, 1});
+    gen::AdvancingFrontOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.008);
+    const auto plain = gen::advancing_front_2d(in.pslg(), options);
+    std::vector<std::uint64_t> done, total;
+    options.cdt.progress.report = [&](std::uint64_t d, std::uint64_t t, const char* what) {
+        EXPECT_EQ(std::string(what), "triangles made");
+        done.push_back(d);
+        total.push_back(t);
+    };
+    const auto hooked = gen::advancing_front_2d(in.pslg(), options);
+    EXPECT_EQ(plain.mesh.mesh.triangles, hooked.mesh.mesh.triangles);
+    EXPECT_EQ(plain.mesh.mesh.xy, hooked.mesh.mesh.xy);
+    const std::uint64_t step = std::uint64_t{1} << em::ProgressCounter::kProgressShift;
+    const std::uint64_t made = hooked.counters.triangles;
+    ASSERT_GE(made, 2 * step);
+    ASSERT_EQ(done.size(), made / step);
+    for (std::size_t k = 0; k < done.size(); ++k) {
+        EXPECT_EQ(done[k], (k + 1) * step);
+        EXPECT_EQ(total[k], total[0]);
+    }
+    EXPECT_GT(total[0], made / 2);
+    EXPECT_LT(total[0], 2 * made);
 }

@@ -33,8 +33,8 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-using exactmesh::testing::Input;
 using exactmesh::testing::from_domain;
+using exactmesh::testing::Input;
 using exactmesh::testing::polygon;
 
 using Refined = em::testing::GeneratedMesh2<gen::RefinementResult2>;
@@ -414,4 +414,33 @@ TEST(Generators_DelaunayRefinement, NoSegmentEnclosesNothing) {
     Input points_only;
     points_only.xy = {0, 0, 1, 0, 0, 1, 1, 1};
     EXPECT_THROW(gen::delaunay_refinement_2d(points_only.pslg()), em::InputError);
+}
+
+TEST(Generators_DelaunayRefinement, ProgressReportsSteinerPointsAndKeepsTheResult) {
+    // The unit square at size 0.004: about 10^5 Steiner points, so several calls of the hook
+    // (every 2^14), each with the expected count as total; the mesh is the same without it.
+    const Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+    gen::RefinementOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.004);
+    const auto plain = gen::delaunay_refinement_2d(in.pslg(), options);
+    std::vector<std::uint64_t> done, total;
+    options.cdt.progress.report = [&](std::uint64_t d, std::uint64_t t, const char* what) {
+        EXPECT_EQ(std::string(what), "Steiner points inserted");
+        done.push_back(d);
+        total.push_back(t);
+    };
+    const auto hooked = gen::delaunay_refinement_2d(in.pslg(), options);
+    EXPECT_EQ(plain.mesh.mesh.triangles, hooked.mesh.mesh.triangles);
+    EXPECT_EQ(plain.mesh.mesh.xy, hooked.mesh.mesh.xy);
+    const std::uint64_t step = std::uint64_t{1} << em::ProgressCounter::kProgressShift;
+    const std::uint64_t steiner = hooked.counters.steiner_points();
+    ASSERT_GE(steiner, 2 * step);
+    ASSERT_EQ(done.size(), steiner / step);
+    for (std::size_t k = 0; k < done.size(); ++k) {
+        EXPECT_EQ(done[k], (k + 1) * step);
+        EXPECT_EQ(total[k], total[0]);
+    }
+    // The estimate (equilateral triangles of the size over the square) is within a factor 2.
+    EXPECT_GT(total[0], steiner / 2);
+    EXPECT_LT(total[0], 2 * steiner);
 }

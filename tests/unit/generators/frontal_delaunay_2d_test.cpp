@@ -35,8 +35,8 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-using exactmesh::testing::Input;
 using exactmesh::testing::from_domain;
+using exactmesh::testing::Input;
 using exactmesh::testing::polygon;
 
 using Meshed = em::testing::GeneratedMesh2<gen::FrontalDelaunayResult2>;
@@ -438,4 +438,32 @@ TEST(Generators_FrontalDelaunay, A1e300SquareIsTheUnitSquareScaled) {
     ASSERT_EQ(b.result.mesh.mesh.xy.size(), a.result.mesh.mesh.xy.size());
     for (std::size_t i = 0; i < a.result.mesh.mesh.xy.size(); ++i)
         EXPECT_EQ(b.result.mesh.mesh.xy[i], std::ldexp(a.result.mesh.mesh.xy[i], 996)) << i;
+}
+
+TEST(Generators_FrontalDelaunay, ProgressReportsPointsAndKeepsTheResult) {
+    // The unit square at size 0.005: several calls of the hook (every 2^14 points inserted),
+    // each with the expected count as total; the mesh is the same without the hook.
+    const Input in = exactmesh::testing::polygon({0, 0, 1, 0, 1, 1, 0, 1});
+    gen::FrontalDelaunayOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.005);
+    const auto plain = gen::frontal_delaunay_2d(in.pslg(), options);
+    std::vector<std::uint64_t> done, total;
+    options.cdt.progress.report = [&](std::uint64_t d, std::uint64_t t, const char* what) {
+        EXPECT_EQ(std::string(what), "Steiner points inserted");
+        done.push_back(d);
+        total.push_back(t);
+    };
+    const auto hooked = gen::frontal_delaunay_2d(in.pslg(), options);
+    EXPECT_EQ(plain.mesh.mesh.triangles, hooked.mesh.mesh.triangles);
+    EXPECT_EQ(plain.mesh.mesh.xy, hooked.mesh.mesh.xy);
+    const std::uint64_t step = std::uint64_t{1} << em::ProgressCounter::kProgressShift;
+    const std::uint64_t inserted = hooked.counters.points_inserted;
+    ASSERT_GE(inserted, 2 * step);
+    ASSERT_EQ(done.size(), inserted / step);
+    for (std::size_t k = 0; k < done.size(); ++k) {
+        EXPECT_EQ(done[k], (k + 1) * step);
+        EXPECT_EQ(total[k], total[0]);
+    }
+    EXPECT_GT(total[0], inserted / 2);
+    EXPECT_LT(total[0], 2 * inserted);
 }
