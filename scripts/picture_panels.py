@@ -96,16 +96,17 @@ def data_lines(path):
                 yield fields
 
 
-def read_node(path):
+def read_node(path, dimension=2):
+    """Vertices of a Triangle (dimension 2) or TetGen (3) .node, and the first index."""
     lines = data_lines(path)
     count = int(next(lines)[0])
-    xy = np.empty((count, 2))
+    xy = np.empty((count, dimension))
     first = None
     for k in range(count):
         fields = next(lines)
         if first is None:
             first = int(fields[0])
-        xy[k] = float(fields[1]), float(fields[2])
+        xy[k] = [float(v) for v in fields[1:1 + dimension]]
     return xy, first
 
 

@@ -28,6 +28,9 @@ import tempfile
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import picture_panels  # noqa: E402  (the shared .node/.ele readers)
+
 # Per domain: the tetmesh options (besides --radius-edge 2), TetGen's hole points, the slices
 # (axis 0/1/2 = x/y/z, the plane's coordinate, a caption) and, per slice, the window drawn
 # (None: the whole cut).
@@ -67,36 +70,15 @@ CLASSES = 14  # 5 degrees each, 0 to 70 (a regular tetrahedron: 70.53)
 # picture_panels.py does for the 2D smallest angle.
 
 
-def strip(line):
-    return line.split("#", 1)[0].split()
-
-
-def data_lines(path):
-    with open(path) as f:
-        for line in f:
-            fields = strip(line)
-            if fields:
-                yield fields
-
-
 def read_node(path):
     """Vertices of a TetGen .node (N x 3) and the first index."""
-    lines = data_lines(path)
-    count = int(next(lines)[0])
-    xyz = np.empty((count, 3))
-    first = None
-    for k in range(count):
-        fields = next(lines)
-        if first is None:
-            first = int(fields[0])
-        xyz[k] = [float(v) for v in fields[1:4]]
-    return xyz, first
+    return picture_panels.read_node(path, 3)
 
 
 def read_cells(path, first, corners):
     """The first `corners` vertex numbers of each element of a TetGen .ele or .face, and the
     .face's markers (the column after them, 0 when absent)."""
-    lines = data_lines(path)
+    lines = picture_panels.data_lines(path)
     header = next(lines)
     count = int(header[0])
     cells = np.empty((count, corners), dtype=np.int64)

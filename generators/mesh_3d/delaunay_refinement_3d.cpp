@@ -21,43 +21,26 @@
 #include "predicates/tet_quality_3d.hpp"
 #include "triangulation/mesh/facet_projection_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
+#include "triangulation/mesh/vertex_keys_3d.hpp"
 
 namespace exactmesh::generators {
 
 using predicates::Sign;
 using triangulation::ConformingMesh3;
+using triangulation::edge_key;
 using triangulation::FaceIdx;
+using triangulation::Key3;
+using triangulation::Key3Hash;
 using triangulation::kFaceVertex;
 using triangulation::kNone;
 using triangulation::Plc3;
+using triangulation::sorted3;
 using triangulation::TetIdx;
 using triangulation::TetMesh3;
 using triangulation::VertexFeature3;
 using triangulation::VertIdx;
 
 namespace {
-
-using Key3 = std::array<VertIdx, 3>;
-
-struct Key3Hash {
-    std::size_t operator()(const Key3& k) const noexcept {
-        std::uint64_t h = k[0];
-        h = h * 0x9E3779B97F4A7C15ull + k[1];
-        h = h * 0x9E3779B97F4A7C15ull + k[2];
-        return static_cast<std::size_t>(h ^ (h >> 29));
-    }
-};
-
-Key3 sorted3(VertIdx a, VertIdx b, VertIdx c) {
-    Key3 k{a, b, c};
-    std::sort(k.begin(), k.end());
-    return k;
-}
-
-std::uint64_t edge_key(VertIdx a, VertIdx b) {
-    if (a > b) std::swap(a, b);
-    return (std::uint64_t{a} << 32) | b;
-}
 
 /// How many times a bad tetrahedron's split may be deferred to subsegments or subfaces.
 constexpr std::uint32_t kMaxRetries = 64;

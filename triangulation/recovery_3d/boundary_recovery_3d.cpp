@@ -23,6 +23,7 @@
 #include "triangulation/delaunay/delaunay_3d.hpp"
 #include "triangulation/mesh/facet_projection_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
+#include "triangulation/mesh/vertex_keys_3d.hpp"
 #include "triangulation/recovery_3d/plc_3d.hpp"
 
 namespace exactmesh::triangulation {
@@ -31,29 +32,7 @@ using predicates::Sign;
 
 namespace {
 
-using Key3 = std::array<VertIdx, 3>;
-
-struct Key3Hash {
-    std::size_t operator()(const Key3& k) const noexcept {
-        std::uint64_t h = k[0];
-        h = h * 0x9E3779B97F4A7C15ull + k[1];
-        h = h * 0x9E3779B97F4A7C15ull + k[2];
-        return static_cast<std::size_t>(h ^ (h >> 29));
-    }
-};
-
 using FaceSet = std::unordered_set<Key3, Key3Hash>;
-
-Key3 sorted3(VertIdx a, VertIdx b, VertIdx c) {
-    Key3 k{a, b, c};
-    std::sort(k.begin(), k.end());
-    return k;
-}
-
-std::uint64_t edge_key(VertIdx a, VertIdx b) {
-    if (a > b) std::swap(a, b);
-    return (std::uint64_t{a} << 32) | b;
-}
 
 /// Exact coordinates as a key (bit patterns; +0 and -0 merged).
 struct PointKey {
