@@ -248,6 +248,36 @@ def run_gmsh(xy, segments, spec, strength, algorithm, work):
     return (nodes, triangles, boundary), None
 
 
+def run_cgal(tool, domain, xy, segments, spec, strength, work):
+    """CGAL's Delaunay_mesher_2 (bench/cgal_mesh_2d, mesh_bench's peer) on the same boundary
+    pieces as Gmsh, the same size file and the angle bound of our Delaunay refinement (20.7
+    degrees); hole points from the sample domain."""
+    segments = np.asarray(segments)
+    used = np.unique(segments)
+    number = {int(v): k for k, v in enumerate(used)}
+    poly = os.path.join(work, "cgal.poly")
+    with open(poly, "w") as f:
+        f.write(f"{len(used)} 2 0 0\n")
+        for k, v in enumerate(used):
+            f.write(f"{k} {xy[v][0]!r} {xy[v][1]!r}\n")
+        f.write(f"{len(segments)} 0\n")
+        for k, (a, b) in enumerate(segments):
+            f.write(f"{k} {number[int(a)]} {number[int(b)]}\n")
+        f.write("0\n")
+    size_file = os.path.join(work, "cgal_size.txt")
+    with open(size_file, "w") as f:
+        f.write(size_text(spec, strength))
+    out = os.path.join(work, "cgal")
+    done = subprocess.run([tool, poly, size_file, "20.7", out, "--domain", domain],
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        return None, (done.stderr.strip().splitlines() or ["cgal_mesh_2d failed"])[-1]
+    nodes, first = read_node(out + ".node")
+    triangles = read_ele(out + ".ele", first)
+    boundary = [(number[int(a)], number[int(b)]) for a, b in segments]
+    return (nodes, triangles, boundary), None
+
+
 def mesh_all(cli, domain, generators, spec, strength, work):
     """Every generator on `domain` with the size file of `spec` at `strength`."""
     size_file = os.path.join(work, "size.txt")
@@ -406,6 +436,8 @@ def main():
     parser.add_argument("--domains", nargs="*", default=list(DOMAINS))
     parser.add_argument("--generators", nargs="*", default=GENERATORS)
     parser.add_argument("--no-gmsh", action="store_true", help="leave Gmsh out")
+    parser.add_argument("--cgal", default=None,
+                        help="bench/cgal_mesh_2d (CGAL's mesher as a command); none: no CGAL panel")
     parser.add_argument("--markdown", default="pictures.md",
                         help="the Markdown page listing the figures, in --out-dir")
     args = parser.parse_args()
@@ -422,18 +454,26 @@ def main():
                  "as Distance and MathEval fields.", ""]
     else:
         page += ["Gmsh is not installed here: its panels are left out.", ""]
-    page += ["CGAL's Delaunay_mesher_2 is in the benchmark (report/mesh.md) but not in these "
-             "figures: it runs inside bench/mesh_bench and writes no mesh file.", ""]
+    use_cgal = args.cgal is not None and os.path.exists(args.cgal)
+    if use_cgal:
+        page += ["CGAL's Delaunay_mesher_2 (`bench/cgal_mesh_2d`, the peer of `mesh_bench`) "
+                 "meshes the same boundary with the same size file and a 20.7-degree bound.", ""]
+    else:
+        page += ["CGAL's panel is left out (bench/cgal_mesh_2d not built: no CGAL).", ""]
     for domain in args.domains:
         spec = DOMAINS[domain]["size"]
         with tempfile.TemporaryDirectory() as work:
             strength, meshes = calibrated_meshes(args.cli, domain, args.generators, spec,
                                                  args.target, work)
             size_line = " / ".join(size_text(spec, strength).strip().splitlines())
+            boundary = next((m["mesh"] for m in meshes
+                             if m["name"] == "advancing-front" and m["mesh"]), None)
+            boundary = boundary or next((m["mesh"] for m in meshes if m["mesh"]), None)
+            if use_cgal:
+                mesh, error = (run_cgal(args.cgal, domain, boundary[0], boundary[2], spec,
+                                        strength, work) if boundary else (None, "no boundary"))
+                meshes.append({"name": "cgal", "mesh": mesh, "error": error})
             if use_gmsh:
-                boundary = next((m["mesh"] for m in meshes
-                                 if m["name"] == "advancing-front" and m["mesh"]), None)
-                boundary = boundary or next((m["mesh"] for m in meshes if m["mesh"]), None)
                 for name, algorithm in GMSH.items():
                     mesh, error = (run_gmsh(boundary[0], boundary[2], spec, strength, algorithm,
                                             work) if boundary else (None, "no boundary"))
