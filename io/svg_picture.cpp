@@ -83,12 +83,15 @@ std::vector<PicturePoint> clip_polygon(std::vector<PicturePoint> polygon, long d
     // Each side as (axis, bound, keep-below).
     const std::array<std::tuple<int, long double, bool>, 4> sides{
         {{0, lo, false}, {0, hi_x, true}, {1, lo, false}, {1, hi_y, true}}};
-    for (const auto& [axis, bound, below] : sides) {
+    for (const auto& side : sides) {
+        // Plain copies, not structured bindings: clang 14 (the fuzz and sanitizer builds)
+        // cannot capture a structured binding in a lambda.
+        const int axis = std::get<0>(side);
+        const long double bound = std::get<1>(side);
+        const bool below = std::get<2>(side);
         if (polygon.empty()) break;
         std::vector<PicturePoint> kept;
-        const auto coordinate = [axis = axis](const PicturePoint& p) {
-            return axis == 0 ? p.x : p.y;
-        };
+        const auto coordinate = [axis](const PicturePoint& p) { return axis == 0 ? p.x : p.y; };
         const auto inside = [&](const PicturePoint& p) {
             return below ? coordinate(p) <= bound : coordinate(p) >= bound;
         };
