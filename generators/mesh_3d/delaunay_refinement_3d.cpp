@@ -22,6 +22,7 @@
 #include "triangulation/mesh/facet_projection_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
 #include "triangulation/mesh/vertex_keys_3d.hpp"
+#include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
 
 namespace exactmesh::generators {
 
@@ -301,32 +302,9 @@ class Refinement {
         return false;
     }
 
-    /// The concentric-shell parameter (as boundary_recovery_3d: a power of two nearest half the
-    /// subsegment's length from the apex, measured on the segment's direction scaled by a power
-    /// of two); NaN when it does not fall strictly inside.
     double shell_parameter(std::uint32_t s, double t_apex, double t_far) const {
-        const double* p = point(out_.segments[2 * s]);
-        const double* q = point(out_.segments[2 * s + 1]);
-        double d[3], largest = 0;
-        for (int k = 0; k < 3; ++k) {
-            d[k] = q[k] - p[k];
-            if (!std::isfinite(d[k])) return std::nan("");
-            largest = std::max(largest, std::fabs(d[k]));
-        }
-        const int e = std::ilogb(largest);
-        double norm2 = 0;
-        for (int k = 0; k < 3; ++k) {
-            const double x = std::ldexp(d[k], -e);
-            norm2 += x * x;
-        }
-        const double length = std::sqrt(norm2);
-        const double piece = std::fabs(t_far - t_apex) * length;
-        if (!(piece > 0x1p-900)) return std::nan("");
-        const double offset =
-            std::ldexp(1.0, static_cast<int>(std::lround(std::log2(piece / 2)))) / length;
-        const double t = t_far > t_apex ? t_apex + offset : t_apex - offset;
-        const bool between = t_far > t_apex ? (t > t_apex && t < t_far) : (t < t_apex && t > t_far);
-        return between ? t : std::nan("");
+        return triangulation::concentric_shell_parameter(
+            point(out_.segments[2 * s]), point(out_.segments[2 * s + 1]), t_apex, t_far);
     }
 
     // --- locating --------------------------------------------------------------------------

@@ -222,35 +222,9 @@ class Recovery {
         return false;
     }
 
-    /// The concentric-shell parameter [Ruppert95 §4, Shewchuk97 §3.4]: the point at the power
-    /// of two nearest half the subsegment's length from the apex (parameter t_apex, 0 or 1),
-    /// towards t_far; NaN when the lengths leave the comfortable double range. The length is
-    /// measured on the segment's direction scaled by a power of two, so the parameter is the
-    /// same for the input scaled by 2^k (the radius is a power of two up to the parameter's
-    /// rounding: shells about one apex stay concentric to 2^-50 relative).
     double shell_parameter(std::uint32_t s, double t_apex, double t_far) const {
-        const double* p = point(segments_[s][0]);
-        const double* q = point(segments_[s][1]);
-        double d[3], largest = 0;
-        for (int k = 0; k < 3; ++k) {
-            d[k] = q[k] - p[k];
-            if (!std::isfinite(d[k])) return std::nan("");
-            largest = std::max(largest, std::fabs(d[k]));
-        }
-        const int e = std::ilogb(largest);
-        double norm2 = 0;
-        for (int k = 0; k < 3; ++k) {
-            const double x = std::ldexp(d[k], -e);
-            norm2 += x * x;
-        }
-        const double length = std::sqrt(norm2);  // in [1, 2 sqrt(3)): the segment over 2^e
-        const double piece = std::fabs(t_far - t_apex) * length;
-        if (!(piece > 0x1p-900)) return std::nan("");
-        const double offset =
-            std::ldexp(1.0, static_cast<int>(std::lround(std::log2(piece / 2)))) / length;
-        const double t = t_far > t_apex ? t_apex + offset : t_apex - offset;
-        const bool between = t_far > t_apex ? (t > t_apex && t < t_far) : (t < t_apex && t > t_far);
-        return between ? t : std::nan("");
+        return concentric_shell_parameter(point(segments_[s][0]), point(segments_[s][1]), t_apex,
+                                          t_far);
     }
 
     void split_subsegment(std::size_t i, bool encroached) {
@@ -710,6 +684,29 @@ BoundaryRecovery3Result Recovery::run() {
 }
 
 }  // namespace
+
+double concentric_shell_parameter(const double* p, const double* q, double t_apex, double t_far) {
+    double d[3], largest = 0;
+    for (int k = 0; k < 3; ++k) {
+        d[k] = q[k] - p[k];
+        if (!std::isfinite(d[k])) return std::nan("");
+        largest = std::max(largest, std::fabs(d[k]));
+    }
+    const int e = std::ilogb(largest);
+    double norm2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double x = std::ldexp(d[k], -e);
+        norm2 += x * x;
+    }
+    const double length = std::sqrt(norm2);  // in [1, 2 sqrt(3)): the segment over 2^e
+    const double piece = std::fabs(t_far - t_apex) * length;
+    if (!(piece > 0x1p-900)) return std::nan("");
+    const double offset =
+        std::ldexp(1.0, static_cast<int>(std::lround(std::log2(piece / 2)))) / length;
+    const double t = t_far > t_apex ? t_apex + offset : t_apex - offset;
+    const bool between = t_far > t_apex ? (t > t_apex && t < t_far) : (t < t_apex && t > t_far);
+    return between ? t : std::nan("");
+}
 
 BoundaryRecovery3Result boundary_recovery_3d(const Plc3& plc,
                                              const BoundaryRecovery3Options& options) {

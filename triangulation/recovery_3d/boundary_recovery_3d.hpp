@@ -62,6 +62,14 @@ struct BoundaryRecovery3Result {
     BoundaryRecovery3Counters counters;
 };
 
+/// The concentric-shell split parameter of segment p -> q [Ruppert95 §4, Shewchuk97 §3.4]: the
+/// point at the power of two nearest half the subsegment [t_apex, t_far]'s length from the apex
+/// (t_apex 0 or 1), towards t_far; NaN when the lengths leave the comfortable double range or
+/// the point does not fall strictly inside. The length is measured on the segment's direction
+/// scaled by a power of two, so the parameter is the same for the input scaled by 2^k. Shared
+/// by boundary recovery and 3D Delaunay refinement.
+double concentric_shell_parameter(const double* p, const double* q, double t_apex, double t_far);
+
 /// The conforming Delaunay tetrahedralization of the PLC's domain (see above).
 /// @throws InputError from validate_plc_3d (bad or self-intersecting PLC), when the vertices
 ///         are coplanar, when a facet corner lies inside one of the facet's segments, when the
