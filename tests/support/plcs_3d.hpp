@@ -11,8 +11,29 @@
 #include "triangulation/delaunay/delaunay_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
 #include "triangulation/mesh/plc_3d.hpp"
+#include "triangulation/mesh/tetrahedralization_3d.hpp"
 
 namespace exactmesh::triangulation {
+
+/// The mesh's volume (a rounded sum of |det| / 6: for tests' expectations only, at moderate
+/// scales).
+inline double mesh_volume(const Tetrahedralization3& mesh) {
+    double sum = 0;
+    for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
+        const double* p[4];
+        for (unsigned k = 0; k < 4; ++k) p[k] = mesh.point(mesh.tets[t + k]);
+        double u[3], v[3], w[3];
+        for (int k = 0; k < 3; ++k) {
+            u[k] = p[1][k] - p[0][k];
+            v[k] = p[2][k] - p[0][k];
+            w[k] = p[3][k] - p[0][k];
+        }
+        sum += std::fabs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                         u[2] * (v[0] * w[1] - v[1] * w[0])) /
+               6;
+    }
+    return sum;
+}
 
 /// The box [0, x] x [0, y] x [0, z], one quadrilateral facet per side (marker 1).
 inline Plc3 box(double x, double y, double z) {

@@ -26,25 +26,6 @@ namespace {
 using triangulation::ConformingMesh3;
 using triangulation::Plc3;
 
-/// The domain's volume (a rounded sum: for the test's expectations only).
-double volume(const triangulation::Tetrahedralization3& mesh) {
-    double sum = 0;
-    for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
-        const double* p[4];
-        for (unsigned k = 0; k < 4; ++k) p[k] = mesh.point(mesh.tets[t + k]);
-        double u[3], v[3], w[3];
-        for (int k = 0; k < 3; ++k) {
-            u[k] = p[1][k] - p[0][k];
-            v[k] = p[2][k] - p[0][k];
-            w[k] = p[3][k] - p[0][k];
-        }
-        sum += std::fabs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                         u[2] * (v[0] * w[1] - v[1] * w[0])) /
-               6;
-    }
-    return sum;
-}
-
 /// Recovers and refines `plc`, checks the result exactly, and returns it.
 DelaunayRefinement3Result refine_and_check(const Plc3& plc, const std::string& what,
                                            const DelaunayRefinement3Options& options,
@@ -84,7 +65,7 @@ TEST(Generators_DelaunayRefinement3d, BoxWithHoleMeetsTheRadiusEdgeBound) {
         options.radius_edge_bound = bound;
         const auto result =
             refine_and_check(plc, "box-with-hole B=" + std::to_string(bound), options);
-        EXPECT_NEAR(volume(result.mesh.mesh), 0.875, 1e-12);
+        EXPECT_NEAR(triangulation::mesh_volume(result.mesh.mesh), 0.875, 1e-12);
         EXPECT_GT(result.counters.insertions, 0u);
     }
 }
@@ -94,7 +75,7 @@ TEST(Generators_DelaunayRefinement3d, BoxWithHoleMeetsTheVolumeBound) {
     DelaunayRefinement3Options options;
     options.max_volume = 0.002 / testing::test_scale();
     const auto result = refine_and_check(plc, "box-with-hole volume", options);
-    EXPECT_NEAR(volume(result.mesh.mesh), 0.875, 1e-12);
+    EXPECT_NEAR(triangulation::mesh_volume(result.mesh.mesh), 0.875, 1e-12);
     EXPECT_GE(result.mesh.mesh.tet_count(), static_cast<std::uint32_t>(0.875 / options.max_volume));
 }
 
@@ -113,7 +94,7 @@ TEST(Generators_DelaunayRefinement3d, CubeWithCocircularFacets) {
         options.radius_edge_bound = bound;
         const auto result = refine_and_check(triangulation::box(1, 1, 1),
                                              "cube B=" + std::to_string(bound), options);
-        EXPECT_NEAR(volume(result.mesh.mesh), 1.0, 1e-12);
+        EXPECT_NEAR(triangulation::mesh_volume(result.mesh.mesh), 1.0, 1e-12);
     }
     DelaunayRefinement3Options options;
     options.max_volume = 1.0 / 64;

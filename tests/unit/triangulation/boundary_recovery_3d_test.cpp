@@ -22,25 +22,6 @@
 namespace exactmesh::triangulation {
 namespace {
 
-/// The domain's volume (a rounded sum of |det| / 6: for the test's expectations only).
-double volume(const Tetrahedralization3& mesh) {
-    double sum = 0;
-    for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
-        const double* p[4];
-        for (unsigned k = 0; k < 4; ++k) p[k] = mesh.point(mesh.tets[t + k]);
-        double u[3], v[3], w[3];
-        for (int k = 0; k < 3; ++k) {
-            u[k] = p[1][k] - p[0][k];
-            v[k] = p[2][k] - p[0][k];
-            w[k] = p[3][k] - p[0][k];
-        }
-        sum += std::fabs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                         u[2] * (v[0] * w[1] - v[1] * w[0])) /
-               6;
-    }
-    return sum;
-}
-
 BoundaryRecovery3Result recover_and_check(const Plc3& plc, const std::string& what,
                                           const BoundaryRecovery3Options& options = {}) {
     BoundaryRecovery3Result result = boundary_recovery_3d(plc, options);
@@ -64,7 +45,7 @@ BoundaryRecovery3Result recover_and_check(const Plc3& plc, const std::string& wh
 
 TEST(Triangulation_BoundaryRecovery3d, CubeIsRecoveredAndFillsItsVolume) {
     const auto result = recover_and_check(box(1, 1, 1), "cube");
-    EXPECT_DOUBLE_EQ(volume(result.mesh.mesh), 1.0);
+    EXPECT_DOUBLE_EQ(mesh_volume(result.mesh.mesh), 1.0);
     EXPECT_EQ(result.mesh.subsegments.size() / 2, result.mesh.subsegment_segment.size());
 }
 
@@ -79,7 +60,7 @@ TEST(Triangulation_BoundaryRecovery3d, BoxWithABoxHoleHasTheHoleRemoved) {
     }
     plc.holes = {1.5, 1.5, 1.5};
     const auto result = recover_and_check(plc, "box with box hole");
-    EXPECT_NEAR(volume(result.mesh.mesh), 26.0, 1e-9);
+    EXPECT_NEAR(mesh_volume(result.mesh.mesh), 26.0, 1e-9);
     EXPECT_GT(result.counters.removed_tets, 0u);
 }
 
@@ -103,7 +84,7 @@ TEST(Triangulation_BoundaryRecovery3d, CoplanarFacetsFacetHolesAndIsolatedCorner
                   {{{10, 11, 15, 14}}, {}, 6},
                   {{{11, 8, 12, 15}}, {}, 6}};
     const auto result = recover_and_check(plc, "box with a tunnel");
-    EXPECT_NEAR(volume(result.mesh.mesh), 24.0, 1e-9);
+    EXPECT_NEAR(mesh_volume(result.mesh.mesh), 24.0, 1e-9);
     for (const double e : {600.0, -600.0}) {
         const Plc3 s = scaled(plc, static_cast<int>(e));
         const auto r = boundary_recovery_3d(s);
@@ -137,7 +118,7 @@ TEST(Triangulation_BoundaryRecovery3d, SchonhardtPrismNeedsSteinerPointsAndIsRec
     // The prism's volume is less than the convex hull's: the reflex edges were kept.
     Plc3 hull = schonhardt(std::acos(-1.0) / 6);
     const Delaunay3Result d = delaunay_3d_algorithm("green-sibson")(hull.xyz, {});
-    EXPECT_LT(volume(result.mesh.mesh), volume(d.mesh) * (1 - 1e-6));
+    EXPECT_LT(mesh_volume(result.mesh.mesh), mesh_volume(d.mesh) * (1 - 1e-6));
     EXPECT_GT(result.counters.removed_tets, 0u);
 }
 
@@ -182,7 +163,7 @@ TEST(Triangulation_BoundaryRecovery3d, SmallDihedralAngleRecoversOrStopsAtTheBud
             const auto result =
                 recover_and_check(plc, "hinged facet h=" + std::to_string(h), options);
             // Both regions are kept, each with its attribute, and they fill the cube.
-            EXPECT_NEAR(volume(result.mesh.mesh), 1.0, 1e-12);
+            EXPECT_NEAR(mesh_volume(result.mesh.mesh), 1.0, 1e-12);
             ASSERT_EQ(result.mesh.tet_attributes.size(), result.mesh.mesh.tet_count());
             double below = 0;
             for (std::size_t t = 0; t < result.mesh.tet_attributes.size(); ++t) {
@@ -193,7 +174,7 @@ TEST(Triangulation_BoundaryRecovery3d, SmallDihedralAngleRecoversOrStopsAtTheBud
                     one.xyz = result.mesh.mesh.xyz;
                     one.tets.assign(result.mesh.mesh.tets.begin() + 4 * long(t),
                                     result.mesh.mesh.tets.begin() + 4 * long(t) + 4);
-                    below += volume(one);
+                    below += mesh_volume(one);
                 }
             }
             EXPECT_NEAR(below, h / 2, 1e-12);
