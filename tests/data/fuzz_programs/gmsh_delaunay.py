@@ -13,18 +13,12 @@ import sys
 
 import gmsh
 
+import node_file
+
 
 def read_node(path):
-    rows = []
-    with open(path, encoding="ascii") as node:
-        for line in node:
-            line = line.split("#", 1)[0].split()
-            if line:
-                rows.append(line)
-    count, dimension = int(rows[0][0]), int(rows[0][1]) if len(rows[0]) > 1 else 2
-    first = int(rows[1][0]) if count else 1
-    coordinates = [float(v) for row in rows[1:1 + count] for v in row[1:1 + dimension]]
-    return coordinates, dimension, first
+    points, dimension, first = node_file.read_node(path)
+    return [v for point in points for v in point], dimension, first
 
 
 def main(argv):

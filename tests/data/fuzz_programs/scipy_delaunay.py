@@ -15,18 +15,12 @@ from fractions import Fraction
 import numpy as np
 from scipy.spatial import Delaunay
 
+import node_file
+
 
 def read_node(path):
-    rows = []
-    with open(path, encoding="ascii") as node:
-        for line in node:
-            line = line.split("#", 1)[0].split()
-            if line:
-                rows.append(line)
-    count, dimension = int(rows[0][0]), int(rows[0][1]) if len(rows[0]) > 1 else 2
-    first = int(rows[1][0]) if count else 1
-    points = [[float(v) for v in row[1:1 + dimension]] for row in rows[1:1 + count]]
-    return np.array(points, dtype=float).reshape(count, dimension), first
+    points, dimension, first = node_file.read_node(path)
+    return np.array(points, dtype=float).reshape(len(points), dimension), first
 
 
 def determinant_sign(rows):
