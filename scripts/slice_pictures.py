@@ -225,18 +225,7 @@ def colours():
     return [ramp(0.8 * (k + 0.5) / CLASSES) for k in range(CLASSES)]
 
 
-def save_png(fig, path, dpi):
-    """The figure as a palette PNG, the dpi lowered until the file is under 300 kB."""
-    from PIL import Image
-
-    while True:
-        fig.savefig(path, dpi=dpi)
-        with Image.open(path) as image:
-            image.convert("RGB").quantize(colors=256, method=Image.Quantize.FASTOCTREE).save(
-                path, optimize=True)
-        if os.path.getsize(path) <= 300_000 or dpi <= 50:
-            return dpi
-        dpi = int(dpi * 0.9)
+save_png = picture_panels.save_png  # palette PNG under 300 kB, as the 2D panels
 
 
 def figure(rows, slices, title, path_base, dpi=120):
