@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/dot_sign_3d.hpp"
 #include "predicates/incircle.hpp"
@@ -1005,6 +1006,54 @@ ConformingMesh3 Refinement::finish() {
     return result;
 }
 
+/// A volume bound that asks for far more points than the budget fails at once with the
+/// estimate, not after the budget's insertions (each exact, minutes at 10^6): every tetrahedron
+/// is at most max_volume, so the mesh has at least domain volume / max_volume of them, and a
+/// Delaunay tetrahedralization has about 6.5 per vertex; refused when a sixth of that lower
+/// bound exceeds the budget. Volumes are summed on coordinates scaled by one power of two and
+/// compared in logarithms, so nothing overflows or underflows at 2^+-600.
+void refuse_volume_bound_far_over_budget(const ConformingMesh3& recovered,
+                                         const DelaunayRefinement3Options& options) {
+    if (!(options.max_volume > 0)) return;
+    const auto& m = recovered.mesh;
+    double largest = 0;
+    for (const double x : m.xyz) largest = std::max(largest, std::fabs(x));
+    if (!(largest > 0) || !std::isfinite(largest)) return;
+    const int e = std::ilogb(largest);
+    double six_volumes = 0;  // sum of |det| over the tetrahedra, coordinates scaled by 2^-e
+    for (TetIdx t = 0; t < m.tet_count(); ++t) {
+        double q[4][3];
+        for (unsigned k = 0; k < 4; ++k) {
+            const double* p = m.point(m.tets[4 * std::size_t{t} + k]);
+            for (int i = 0; i < 3; ++i) q[k][i] = std::ldexp(p[i], -e);
+        }
+        double u[3], v[3], w[3];
+        for (int i = 0; i < 3; ++i) {
+            u[i] = q[1][i] - q[0][i];
+            v[i] = q[2][i] - q[0][i];
+            w[i] = q[3][i] - q[0][i];
+        }
+        six_volumes +=
+            std::fabs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                      u[2] * (v[0] * w[1] - v[1] * w[0]));
+    }
+    if (!(six_volumes > 0)) return;
+    const std::uint64_t budget = options.max_steiner_points != 0
+                                     ? options.max_steiner_points
+                                     : 1000 * std::uint64_t{recovered.input_vertex_count} + 1000000;
+    // log2(tetrahedra) >= log2(six_volumes / 6) + 3e - log2(max_volume).
+    const double log2_tets = std::log2(six_volumes / 6) + 3.0 * e - std::log2(options.max_volume);
+    const double points = std::exp2(std::min(log2_tets, 1000.0)) / 6.5;
+    if (points > 6.0 * static_cast<double>(budget)) {
+        throw InputError("delaunay refinement 3d: Steiner point budget of " +
+                         std::to_string(budget) + " exceeded at once: the volume bound " +
+                         format_number(options.max_volume) + " asks for about " +
+                         format_approximate(points, 3) +
+                         " Steiner points (domain volume / bound / 6.5 per vertex); raise the "
+                         "bound or the budget");
+    }
+}
+
 }  // namespace
 
 DelaunayRefinement3Result delaunay_refinement_3d(const Plc3& plc, ConformingMesh3 recovered,
@@ -1018,6 +1067,7 @@ DelaunayRefinement3Result delaunay_refinement_3d(const Plc3& plc, ConformingMesh
     if (!std::isfinite(options.max_volume)) {
         throw InputError("delaunay refinement 3d: the volume bound must be finite");
     }
+    refuse_volume_bound_far_over_budget(recovered, options);
     Refinement refinement(plc, std::move(recovered), options);
     return refinement.run();
 }

@@ -155,6 +155,25 @@ TEST(Generators_DelaunayRefinement3d, RandomStarShapedPolyhedraRefineOrStopAtThe
     EXPECT_GT(refined, 0);
 }
 
+TEST(Generators_DelaunayRefinement3d, VolumeBoundFarOverTheBudgetFailsAtOnceAtEveryScale) {
+    // A unit cube at 10^-12: about 1.5e11 Steiner points against a budget of about 10^6; refused
+    // before any insertion, with the estimate, the same at 2^300 (the bound scaled by 2^900).
+    for (const int e : {0, 300, -300}) {
+        const Plc3 plc = triangulation::scaled(triangulation::box(1, 1, 1), e);
+        ConformingMesh3 recovered = triangulation::boundary_recovery_3d(plc).mesh;
+        DelaunayRefinement3Options options;
+        options.max_volume = std::ldexp(1e-12, 3 * e);
+        try {
+            delaunay_refinement_3d(plc, std::move(recovered), options);
+            ADD_FAILURE() << "2^" << e << ": refined";
+        } catch (const InputError& error) {
+            const std::string message = error.what();
+            EXPECT_NE(message.find("exceeded at once"), std::string::npos) << message;
+            EXPECT_NE(message.find("1.54e+11"), std::string::npos) << message;
+        }
+    }
+}
+
 TEST(Generators_DelaunayRefinement3d, BadOptionsAndTheBudgetAreInputErrors) {
     const Plc3 plc = triangulation::box(1, 1, 1);
     ConformingMesh3 recovered = triangulation::boundary_recovery_3d(plc).mesh;
