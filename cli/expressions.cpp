@@ -61,7 +61,8 @@ generators::MetricField2 metric_from_expression(const std::string& text) {
     const std::string refusal =
         "--metric '" + text +
         "' is neither a readable metric file (.node with 3 or 4 "
-        "attributes and its .ele) nor three expressions 'M11;M12;M22' in x and y";
+        "attributes and its .ele) nor three expressions 'M11;M12;M22' or four "
+        "'DIR_X;DIR_Y;SIZE_ALONG;ASPECT_RATIO' in x and y";
     std::vector<std::string> parts(1);
     for (const char letter : text) {
         if (letter == ';')
@@ -69,27 +70,32 @@ generators::MetricField2 metric_from_expression(const std::string& text) {
         else
             parts.back() += letter;
     }
-    if (parts.size() != 3)
+    if (parts.size() != 3 && parts.size() != 4)
         throw InputError(refusal + " (" + std::to_string(parts.size()) + " parts)");
-    static constexpr const char* kNames[3] = {"M11", "M12", "M22"};
-    std::shared_ptr<Evaluator> entries[3];
-    for (int k = 0; k < 3; ++k) {
-        entries[k] =
-            compile(parts[static_cast<std::size_t>(k)], 2,
-                    refusal + ": " + kNames[k] + " '" + parts[static_cast<std::size_t>(k)] + "': ");
+    // Three parts: a matrix; four: a stretching vector (sizes, so a domain scaled by 2^k takes
+    // its sizes scaled by 2^k, where a matrix would need 2^-2k).
+    const bool stretching = parts.size() == 4;
+    static constexpr const char* kMatrixNames[3] = {"M11", "M12", "M22"};
+    static constexpr const char* kStretchingNames[4] = {"DIR_X", "DIR_Y", "SIZE_ALONG",
+                                                        "ASPECT_RATIO"};
+    std::vector<std::shared_ptr<Evaluator>> entries;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        const char* name = stretching ? kStretchingNames[k] : kMatrixNames[k];
+        entries.push_back(compile(parts[k], 2, refusal + ": " + name + " '" + parts[k] + "': "));
     }
     return generators::MetricField2::analytic(
-        [m11 = entries[0], m12 = entries[1], m22 = entries[2], text](double x, double y) {
-            double value[3];
-            const std::shared_ptr<Evaluator>* all[3] = {&m11, &m12, &m22};
-            for (int k = 0; k < 3; ++k) {
-                Evaluator& evaluator = **all[k];
+        [entries, text, stretching](double x, double y) {
+            double value[4] = {};
+            for (std::size_t k = 0; k < entries.size(); ++k) {
+                Evaluator& evaluator = *entries[k];
                 evaluator.v[0] = x;
                 evaluator.v[1] = y;
                 value[k] = evaluator.parser.Eval();
             }
             try {
-                return generators::metric_from_matrix(value[0], value[1], value[2]);
+                return stretching ? generators::metric_from_stretching(value[0], value[1], value[2],
+                                                                       value[3])
+                                  : generators::metric_from_matrix(value[0], value[1], value[2]);
             } catch (const InputError& error) {
                 throw InputError("--metric '" + text + "' at (" + format_number(x) + ", " +
                                  format_number(y) + "): " + error.what());

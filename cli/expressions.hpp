@@ -3,7 +3,8 @@
 //  - `--size EXPR` of `mesh` and `adapt`: a size function s(x, y) ("0.01 + 0.1 * sqrt(x^2 +
 //    y^2)") as an analytic generators::SizeFunction, and `--size` as a whole (a number, a size
 //    file or an expression);
-//  - `--metric EXPR` of `mesh`: a metric field 'M11;M12;M22', three expressions in x and y, as an
+//  - `--metric EXPR` of `mesh`: a metric field 'M11;M12;M22' (three expressions in x and y) or
+//    'DIR_X;DIR_Y;SIZE_ALONG;ASPECT_RATIO' (a stretching vector, four), as an
 //    analytic generators::MetricField2 (and `--metric` as a whole: an expression or a metric
 //    file, cli/metric_file.hpp);
 //  - `--field EXPR` of `adapt`: a scalar field u(x, y, z, t), the solver's stand-in of issue 13
@@ -31,10 +32,12 @@ generators::SizeFunction size_from_expression(const std::string& expression);
 generators::SizeFunction size_from_option(const std::string& text);
 
 /// 'M11;M12;M22': three expressions in x and y (muParser's syntax, as for --size) separated by
-/// ';', the entries of a symmetric positive definite matrix at (x, y).
-/// @throws InputError naming the text (and muParser's message) when it is not three expressions
-///         in x and y; the field itself throws InputError "--metric '...' at (x, y): metric
-///         (M11, M12, M22) = (...) is not positive definite ..." where its matrix is not.
+/// ';', the entries of a symmetric positive definite matrix at (x, y); or
+/// 'DIR_X;DIR_Y;SIZE_ALONG;ASPECT_RATIO': four, a stretching vector (metric_from_stretching:
+/// sizes, which scale with the domain).
+/// @throws InputError naming the text (and muParser's message) when it is not three or four
+///         expressions in x and y; the field itself throws InputError "--metric '...' at (x, y):
+///         metric (M11, M12, M22) = (...) is not positive definite ..." where its matrix is not.
 generators::MetricField2 metric_from_expression(const std::string& text);
 
 /// `--metric` of `mesh`: a metric file (cli/metric_file.hpp) when a file of that name exists,

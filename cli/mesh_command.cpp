@@ -31,6 +31,7 @@
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "generators/sizing/size_function.hpp"
+#include "generators/stretched/metric_conditioning_2d.hpp"
 #include "generators/stretched/metric_quality_2d.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
@@ -53,6 +54,8 @@ struct MeshArguments {
     double polish_angle = -1;
     std::string size;
     std::string metric;  ///< --metric EXPR|FILE (for now: the stretched-mesh quality report)
+    std::string metric_smoothing;  ///< --metric-smoothing PASSES[,WEIGHT]
+    double metric_gradation = 0;   ///< --metric-gradation BETA
     std::uint64_t max_steiner = 0;
     std::uint32_t smooth = 0;
     bool quality = false;
@@ -114,6 +117,58 @@ std::vector<std::string> ignored_options(const gen::MeshGenerator2& generator,
                 " (its mesh carries none; delaunay-refinement and frontal carry them)");
     }
     return warnings;
+}
+
+/// --metric-smoothing PASSES[,WEIGHT] and --metric-gradation BETA, checked; they need --metric
+/// and a generator that meshes to it.
+gen::MetricConditioning2 metric_conditioning(const MeshArguments& arguments,
+                                             const gen::MeshGenerator2& generator) {
+    gen::MetricConditioning2 conditioning;
+    conditioning.gradation = arguments.metric_gradation;
+    if (!arguments.metric_smoothing.empty()) {
+        const std::string& text = arguments.metric_smoothing;
+        const std::size_t comma = text.find(',');
+        const std::string passes = text.substr(0, comma);
+        std::size_t used = 0;
+        long value = -1;
+        try {
+            value = std::stol(passes, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != passes.size() || value < 1 || value > gen::kMaxMetricConditioningPasses) {
+            throw InputError("--metric-smoothing '" + text +
+                             "': PASSES must be a whole number in [1, " +
+                             std::to_string(gen::kMaxMetricConditioningPasses) + "]");
+        }
+        conditioning.smoothing_passes = static_cast<int>(value);
+        if (comma != std::string::npos) {
+            const std::string weight = text.substr(comma + 1);
+            double w = -1;
+            try {
+                w = std::stod(weight, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used != weight.size() || !(w >= 0 && w <= 1)) {
+                throw InputError("--metric-smoothing '" + text +
+                                 "': WEIGHT must be a number in [0, 1]");
+            }
+            conditioning.smoothing_weight = w;
+        }
+    }
+    gen::check_metric_conditioning(conditioning);
+    if (conditioning.active()) {
+        if (arguments.metric.empty())
+            throw InputError("--metric-smoothing and --metric-gradation need --metric");
+        if (!generator.honours.contains(gen::MeshOption::Metric)) {
+            throw InputError(
+                "--metric-smoothing and --metric-gradation condition the metric a "
+                "generator meshes to: --generator " +
+                std::string(generator.name) + " does not use --metric");
+        }
+    }
+    return conditioning;
 }
 
 void run_mesh(const MeshArguments& arguments) {
@@ -185,6 +240,7 @@ void run_mesh(const MeshArguments& arguments) {
             inputs.insert(inputs.end(), {arguments.metric, metric_ele_path(arguments.metric)});
         if (!inputs.empty()) refuse_to_overwrite_inputs(inputs, files);
     }
+    const gen::MetricConditioning2 conditioning = metric_conditioning(arguments, generator);
     // Read (and check) the metric before any meshing: a bad --metric fails at once.
     std::optional<gen::MetricField2> metric;
     if (!arguments.metric.empty()) {
@@ -252,6 +308,7 @@ void run_mesh(const MeshArguments& arguments) {
 
     const std::string file =
         arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
+    gen::MetricConditioningCounters2 conditioning_counters;
     const auto [result, stats, seconds] = timed_construction([&] {
         // A generator that needs a size and was given none takes the input's own spacing at its
         // vertices, graded away from them (timed: it is part of the construction).
@@ -259,6 +316,22 @@ void run_mesh(const MeshArguments& arguments) {
             size = locating_mark_points(poly, file,
                                         [&] { return gen::graded_size_from_boundary(domain); });
             options.size = size;
+        }
+        if (conditioning.active()) {
+            // Smoothing and gradation act on a background mesh: a metric file's own, else a
+            // first mesh of the domain made with the raw field (BAMG's way; timed with the
+            // construction, as it is part of it).
+            gen::ConditionedMetricField2 conditioned;
+            if (metric->background() != nullptr) {
+                conditioned = gen::condition_metric_field_2d(*metric, conditioning);
+            } else {
+                const gen::MeshRun2 first = locating_mark_points(
+                    poly, file, [&] { return generator.run_on_domain(domain, options); });
+                conditioned = gen::condition_metric_field_2d(
+                    *metric, first.mesh.mesh.xy, first.mesh.mesh.triangles, conditioning);
+            }
+            conditioning_counters = conditioned.counters;
+            options.metric = std::move(conditioned.field);
         }
         return locating_mark_points(poly, file,
                                     [&] { return generator.run_on_domain(domain, options); });
@@ -288,8 +361,9 @@ void run_mesh(const MeshArguments& arguments) {
     // definite somewhere on the mesh is an input error that leaves no files behind.
     std::optional<gen::MetricQualityReport2> metric_report;
     if (metric && arguments.quality) {
-        metric_report = gen::metric_quality_report_2d(final_result.mesh.mesh.xy,
-                                                      final_result.mesh.mesh.triangles, *metric);
+        // Against the field the generator meshed to (the conditioned one when conditioned).
+        metric_report = gen::metric_quality_report_2d(
+            final_result.mesh.mesh.xy, final_result.mesh.mesh.triangles, *options.metric);
     }
     io::OutputSet set;
     svg.title = title + label;
@@ -319,7 +393,7 @@ void run_mesh(const MeshArguments& arguments) {
                       << "quality.quad_mean_aspect_ratio: " << quads.mean_aspect_ratio << '\n';
         }
         if (metric_report) {
-            std::cout << "quality.metric: " << metric->describe() << '\n'
+            std::cout << "quality.metric: " << options.metric->describe() << '\n'
                       << gen::metric_quality_report_text(*metric_report);
         }
         if (arguments.smooth > 0) {
@@ -332,6 +406,11 @@ void run_mesh(const MeshArguments& arguments) {
     }
     if (arguments.stats) {
         print_stats(result, stats, seconds);
+        if (conditioning.active()) {
+            for (const auto& [name, value] :
+                 counters_by_name(gen::kMetricConditioningCounterNames, conditioning_counters))
+                std::cout << "metric_" << name << ": " << value << '\n';
+        }
         if (arguments.smooth > 0) print_smoothing_stats(smoothing, smooth_seconds);
     }
 }
@@ -412,11 +491,28 @@ void add_mesh_command(CLI::App& app) {
                      "metric edge lengths, metric shape, largest angles, aspect ratios), for any "
                      "generator: 'M11;M12;M22', three expressions in x and y (muParser, as "
                      "--size) giving a symmetric positive definite matrix, e.g. "
-                     "'1e4;0;1' (edges 0.01 long in x, 1 in y); or a metric file: a Triangle "
+                     "'1e4;0;1' (edges 0.01 long in x, 1 in y); or four, a stretching vector "
+                     "'DIR_X;DIR_Y;SIZE_ALONG;ASPECT_RATIO', e.g. '1;0;1;100' (edges 1 long in x, "
+                     "0.01 in y; sizes scale with the domain); or a metric file: a Triangle "
                      ".node whose vertices carry 3 attributes M11 M12 M22 or 4 (a stretching "
                      "vector) DIR_X DIR_Y SIZE_ALONG ASPECT_RATIO, with its .ele beside it "
                      "(log-Euclidean interpolation inside, nearest boundary value outside)")
         ->type_name("EXPR|FILE");
+    command
+        ->add_option("--metric-smoothing", arguments->metric_smoothing,
+                     "metric-delaunay only: before meshing, PASSES log-Euclidean smoothing passes "
+                     "of the metric over a background mesh's edges, each moving a vertex's metric "
+                     "WEIGHT (default 0.5) of the way to its neighbours' mean; the background "
+                     "mesh is the metric file's own, else a first mesh made with the raw metric")
+        ->type_name("PASSES[,WEIGHT]");
+    command
+        ->add_option("--metric-gradation", arguments->metric_gradation,
+                     "metric-delaunay only: before meshing (after --metric-smoothing), "
+                     "H-correction of the metric on the same background mesh: sizes grow by at "
+                     "most a factor 1 + BETA per unit of metric length, in every direction; "
+                     "0: off")
+        ->type_name("BETA")
+        ->capture_default_str();
     command
         ->add_option(
             "--layers", arguments->layers,

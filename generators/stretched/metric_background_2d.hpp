@@ -45,6 +45,10 @@ class BackgroundMetricMesh2 {
 
     std::uint32_t vertex_count() const { return geometry_.vertex_count(); }
     std::uint32_t triangle_count() const { return geometry_.triangle_count(); }
+    /// The vertices (2·#V), their metrics (#V) and the triangles (3·#T) it was built from.
+    const std::vector<double>& xy() const { return xy_; }
+    const std::vector<Metric2>& metrics() const { return metrics_; }
+    const std::vector<std::uint32_t>& triangles() const { return triangles_; }
 
   private:
     BackgroundSizeMesh2 geometry_;  // validation, location and boundary edges (sizes unused)

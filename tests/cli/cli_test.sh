@@ -1165,6 +1165,27 @@ mesh_metric_delaunay() {
   done
   grep -Eq '^quality.above_150_degrees: 0 of [0-9]+ triangles$' "$work/out" || fail "flat triangles: $(cat "$work/out")"
   expect_error 2 "needs --layers" mesh --domain naca0012 --generator stretched-delaunay -o "$work/x.ele"
+  # The metric smoothed and graded on a first mesh (a jump in size from 0.01 to 0.2 at x = 0.5,
+  # given as a stretching vector), its counters; bad values and combinations refused.
+  run 0 mesh --domain square-with-holes --generator metric-delaunay -o "$work/mg.ele" --stats \
+    --quality --metric '1;0;x<0.5?0.01:0.2;1' --metric-smoothing 2,0.3 --metric-gradation 0.3 || return
+  for counter in background_vertices background_triangles smoothing_passes gradation_passes gradation_corrections; do
+    grep -Eq "^metric_$counter: [1-9][0-9]*$" "$work/out" || fail "no metric_$counter: $(cat "$work/out")"
+  done
+  grep -Eq '^metric_gradation_converged: 1$' "$work/out" || fail "gradation did not converge: $(cat "$work/out")"
+  grep -Eq '^quality.metric: background mesh: ' "$work/out" || fail "not measured in the graded metric: $(cat "$work/out")"
+  expect_error 2 "--metric-smoothing '0,2': PASSES" mesh --domain key --generator metric-delaunay \
+    -o "$work/x.ele" --metric '1;0;0.1;1' --metric-smoothing 0,2
+  expect_error 2 "--metric-smoothing '3,2': WEIGHT must be a number in \[0, 1\]" mesh --domain key \
+    --generator metric-delaunay -o "$work/x.ele" --metric '1;0;0.1;1' --metric-smoothing 3,2
+  expect_error 2 "metric gradation -1: must be finite and >= 0" mesh --domain key \
+    --generator metric-delaunay -o "$work/x.ele" --metric '1;0;0.1;1' --metric-gradation -1
+  expect_error 2 "need --metric" mesh --domain key --generator metric-delaunay -o "$work/x.ele" \
+    --metric-gradation 0.2
+  expect_error 2 "--generator frontal does not use --metric" mesh --domain key --generator frontal \
+    -o "$work/x.ele" --metric '1;0;0.1;1' --metric-gradation 0.2
+  expect_error 2 "ASPECT_RATIO" mesh --domain key --generator metric-delaunay -o "$work/x.ele" \
+    --metric '1;0;0.1;1;2'
   expect_error 2 "--quads applies to --generator advancing-layers only, not stretched-delaunay" \
     mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 --quads -o "$work/x.vtu"
 }
