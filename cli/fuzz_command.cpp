@@ -33,6 +33,7 @@
 #include "base/errors.hpp"
 #include "cli/commands.hpp"
 #include "cli/external_program.hpp"
+#include "cli/fuzz_shards.hpp"
 #include "generators/inputs/inputs.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
@@ -98,6 +99,10 @@ struct FuzzArguments {
     bool convex_hull = false;
     bool orient = false;
     double minimize_seconds = 60;
+    // Shards (issue 17, cli/fuzz_shards.hpp).
+    std::string shard;               ///< --shard I/N
+    unsigned jobs = 0;               ///< --jobs N: N local shards
+    std::vector<std::string> merge;  ///< --merge DIR...: shard folders to merge into --out
 };
 
 /// Every 2D Delaunay algorithm of the registry, compared with each other.
@@ -404,15 +409,87 @@ fs::path prepare_out_dir(const FuzzArguments& arguments) {
 }
 
 int run_program_fuzz(const FuzzArguments& arguments);
+FuzzKind kind_from_name(const std::string& name);
+
+/// The shard of this run: --shard I/N, else the whole campaign (0/1).
+FuzzShard shard_of(const FuzzArguments& arguments) {
+    return arguments.shard.empty() ? FuzzShard{} : parse_fuzz_shard(arguments.shard);
+}
+
+/// A double as a command-line word that reads back the same.
+std::string exact_word(double value) {
+    std::ostringstream text;
+    text << std::setprecision(17) << value;
+    return text.str();
+}
+
+/// The arguments a --jobs child runs with (before its --shard, --out and --quiet).
+std::vector<std::string> shard_arguments(const FuzzArguments& arguments) {
+    std::vector<std::string> words = {"exactmesh", "fuzz", "--seed",
+                                      std::to_string(arguments.seed)};
+    if (arguments.minutes_given)
+        words.insert(words.end(), {"--minutes", exact_word(arguments.minutes)});
+    if (arguments.command.empty()) return words;
+    words.insert(words.end(), {"--command", arguments.command, "--kind", arguments.kind, "--count",
+                               std::to_string(arguments.count), "--timeout",
+                               exact_word(arguments.timeout), "--output", arguments.output,
+                               "--max-points", std::to_string(arguments.max_points),
+                               "--minimize-seconds", exact_word(arguments.minimize_seconds)});
+    if (arguments.conforming) words.emplace_back("--conforming");
+    if (arguments.convex_hull) words.emplace_back("--convex-hull");
+    if (arguments.orient) words.emplace_back("--orient");
+    return words;
+}
+
+/// --jobs N: the N shards as child processes, then their merge into --out.
+int run_fuzz_jobs(const FuzzArguments& arguments) {
+    if (arguments.jobs > kMaxFuzzJobs) {
+        throw InputError("--jobs " + std::to_string(arguments.jobs) + ": at most " +
+                         std::to_string(kMaxFuzzJobs) + " local shards");
+    }
+    if (!arguments.shard.empty())
+        throw InputError("--jobs runs its own shards: not with --shard " + arguments.shard);
+    if (!arguments.command.empty())
+        kind_from_name(arguments.kind);  // refused before forking
+    else if (!arguments.minutes_given)
+        throw InputError(
+            "fuzz needs --minutes M (a campaign over our own algorithms) or "
+            "--command 'PROGRAM {in} {out}' (another program)");
+    const fs::path out = prepare_out_dir(arguments);
+    if (!arguments.quiet) {
+        std::cerr << "fuzz: " << arguments.jobs << " shards in " << (out / "shard-*").string()
+                  << std::endl;
+    }
+    const std::vector<int> statuses =
+        run_fuzz_shard_processes(shard_arguments(arguments), arguments.jobs, out);
+    std::vector<fs::path> folders;
+    int worst = kExitSuccess;
+    for (std::size_t i = 0; i < statuses.size(); ++i) {
+        const fs::path folder = out / ("shard-" + std::to_string(i));
+        folders.push_back(folder);
+        if (statuses[i] == kExitSuccess || statuses[i] == kExitCheckFailed) continue;
+        std::cout << "fuzz: shard " << i << "/" << statuses.size() << " exited with status "
+                  << statuses[i] << "; its output: " << (folder / "fuzz.log").string() << '\n';
+        worst = std::max(worst, statuses[i] == kExitBadInput ? kExitBadInput : kExitInternalError);
+    }
+    if (worst != kExitSuccess) return worst;
+    return merge_fuzz_shards(folders, out, std::cout);
+}
 
 int run_fuzz(const FuzzArguments& arguments) {
     // Bad arguments are reported before any work (exit 2 through InputError).
+    if (!arguments.merge.empty()) {
+        std::vector<fs::path> folders(arguments.merge.begin(), arguments.merge.end());
+        return merge_fuzz_shards(folders, arguments.out, std::cout);
+    }
+    if (arguments.jobs > 0) return run_fuzz_jobs(arguments);
     if (!arguments.command.empty()) return run_program_fuzz(arguments);
     if (!arguments.minutes_given)
         throw InputError(
             "fuzz needs --minutes M (a campaign over our own algorithms) or "
             "--command 'PROGRAM {in} {out}' (another program)");
     check_minutes(arguments.minutes);
+    const FuzzShard shard = shard_of(arguments);
     const fs::path out_dir = prepare_out_dir(arguments);
     const char* inject = std::getenv(kInjectFaultVariable);
     const bool inject_fault = inject != nullptr && std::string_view(inject) == "1";
@@ -423,7 +500,8 @@ int run_fuzz(const FuzzArguments& arguments) {
     ProgressLine progress(arguments.quiet);
     std::uint64_t cases = 0, points = 0, failures = 0;
     std::array<std::uint64_t, std::size(gen::kAllDistributions)> per_distribution{};
-    std::uint64_t seed = arguments.seed;
+    const std::uint64_t first_seed = shard.first_seed(arguments.seed);
+    std::uint64_t seed = first_seed;
     auto elapsed = [start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
     while (Clock::now() < deadline) {
         const Case c = make_case(seed);
@@ -448,10 +526,14 @@ int run_fuzz(const FuzzArguments& arguments) {
                       << format_seconds(arguments.minutes * 60) << ", " << cases << " cases, "
                       << points << " points, " << failures << " failures" << std::endl;
         }
-        ++seed;
+        seed += shard.count;
     }
     std::cout << "fuzz: " << cases << " cases";
-    if (cases > 0) std::cout << " (case seeds " << arguments.seed << ".." << seed - 1 << ")";
+    if (cases > 0) {
+        std::cout << " (case seeds " << first_seed << ".." << seed - shard.count;
+        if (shard.count > 1) std::cout << " every " << shard.count << ", shard " << arguments.shard;
+        std::cout << ")";
+    }
     std::cout << ", " << points << " points, " << failures << " failures in "
               << format_seconds(elapsed()) << '\n';
     std::cout << "fuzz: cases per distribution:";
@@ -460,6 +542,18 @@ int run_fuzz(const FuzzArguments& arguments) {
                   << per_distribution[d];
     }
     std::cout << '\n';
+    if (!arguments.shard.empty()) {
+        FuzzShardSummary summary{"campaign", arguments.shard, {}};
+        summary.numbers = {{"cases", static_cast<double>(cases)},
+                           {"bad", static_cast<double>(failures)},
+                           {"points", static_cast<double>(points)},
+                           {"seconds", elapsed()}};
+        if (cases > 0) {
+            summary.numbers["first_seed"] = static_cast<double>(first_seed);
+            summary.numbers["last_seed"] = static_cast<double>(seed - shard.count);
+        }
+        write_fuzz_shard_summary(out_dir, summary);
+    }
     return failures > 0 ? kExitCheckFailed : kExitSuccess;
 }
 
@@ -602,8 +696,10 @@ int run_program_fuzz(const FuzzArguments& arguments) {
         throw InputError("--output " + arguments.output +
                          ": needs an extension: .ele (Triangle, TetGen) or one meshio reads "
                          "(.vtu, .msh, ...)");
-    options.count = arguments.count;
-    options.seed = arguments.seed;
+    const FuzzShard shard = shard_of(arguments);
+    options.count = shard.share(arguments.count);
+    options.seed = shard.first_seed(arguments.seed);
+    options.seed_stride = shard.count;
     options.max_points = arguments.max_points;
     options.pslg_check =
         arguments.conforming ? PslgCheck::Conforming : PslgCheck::ConstrainedDelaunay;
@@ -631,7 +727,11 @@ int run_program_fuzz(const FuzzArguments& arguments) {
     std::cout << "fuzz: " << summary.run << " inputs";
     if (summary.run > 0)
         std::cout << " (" << arguments.kind << ", case seeds " << summary.first_seed << ".."
-                  << summary.last_seed << ")";
+                  << summary.last_seed
+                  << (shard.count > 1
+                          ? " every " + std::to_string(shard.count) + ", shard " + arguments.shard
+                          : std::string())
+                  << ")";
     std::cout << ", " << summary.passed << " passed, " << summary.failed << " failed, "
               << summary.crashed << " crashed, " << summary.timed_out << " timed out, "
               << summary.refused << " refused in " << format_seconds(summary.seconds) << '\n';
@@ -639,6 +739,20 @@ int run_program_fuzz(const FuzzArguments& arguments) {
     for (const auto& [name, tally] : summary.per_distribution)
         std::cout << ' ' << name << ' ' << tally[1] << '/' << tally[0];
     std::cout << '\n';
+    if (!arguments.shard.empty()) {
+        FuzzShardSummary shard_summary{arguments.kind, arguments.shard, {}};
+        const auto number = [](std::uint64_t n) { return static_cast<double>(n); };
+        shard_summary.numbers = {
+            {"cases", number(summary.run)},           {"bad", number(summary.bad())},
+            {"passed", number(summary.passed)},       {"refused", number(summary.refused)},
+            {"failed", number(summary.failed)},       {"crashed", number(summary.crashed)},
+            {"timed_out", number(summary.timed_out)}, {"seconds", summary.seconds}};
+        if (summary.run > 0) {
+            shard_summary.numbers["first_seed"] = number(summary.first_seed);
+            shard_summary.numbers["last_seed"] = number(summary.last_seed);
+        }
+        write_fuzz_shard_summary(out_dir, shard_summary);
+    }
     return summary.bad() > 0 ? kExitCheckFailed : kExitSuccess;
 }
 
@@ -666,7 +780,10 @@ void add_fuzz_command(CLI::App& app, int& exit_status) {
                                                        : "must be a non-negative integer";
         },
         "", "non-negative");
-    command->add_option("--seed", arguments->seed, "First case seed (cases use seed, seed+1, ...)")
+    command
+        ->add_option("--seed", arguments->seed,
+                     "First case seed (cases use seed, seed+1, ...; shard I/N: seed+I, seed+I+N, "
+                     "...)")
         ->check(non_negative)
         ->capture_default_str();
     command
@@ -729,6 +846,26 @@ void add_fuzz_command(CLI::App& app, int& exit_status) {
                      "With --command: time budget of each minimization")
         ->capture_default_str()
         ->type_name("SECONDS");
+    command
+        ->add_option("--shard", arguments->shard,
+                     "Run shard I of N (0 <= I < N) of the campaign: case seeds seed+I, "
+                     "seed+I+N, ... (with --count C, this shard's share of the C cases); writes "
+                     "fuzz-summary.txt in --out for --merge. For batch systems, e.g. a Slurm "
+                     "array: --shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT")
+        ->type_name("I/N");
+    command
+        ->add_option("--jobs", arguments->jobs,
+                     "Run N shards at once as child processes (one per core: N = nproc), each "
+                     "in OUT/shard-I with its output in OUT/shard-I/fuzz.log, then merge them "
+                     "(failure files copied into --out, one summary); 0: one process")
+        ->check(non_negative)
+        ->type_name("N");
+    command
+        ->add_option("--merge", arguments->merge,
+                     "Merge shard folders (made by --shard or --jobs, here or on other machines) "
+                     "into --out: counts summed, failure files copied, one summary; exit 1 when "
+                     "any shard found a failure")
+        ->type_name("DIR...");
     command->callback([arguments, minutes, &exit_status] {
         arguments->minutes_given = minutes->count() > 0;
         exit_status = run_fuzz(*arguments);

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <utility>
 
+#include "base/errors.hpp"
 #include "generators/inputs/inputs.hpp"
 #include "generators/inputs/inputs_3d.hpp"
 #include "generators/inputs/pslg_inputs.hpp"
@@ -266,6 +267,7 @@ Judgement judge_output(const FuzzInput& input, const ProgramOutput& output, Pslg
 ProgramFuzzSummary fuzz_program(const ProgramUnderTest& program, const ProgramFuzzOptions& options,
                                 const std::function<void(const ProgramFuzzFailure&)>& on_failure,
                                 std::ostream& progress) {
+    if (options.seed_stride == 0) throw InputError("fuzz: the case seed stride must be at least 1");
     ProgramFuzzSummary summary;
     summary.first_seed = options.seed;
     ProgressLine line(options.quiet);
@@ -277,7 +279,8 @@ ProgramFuzzSummary fuzz_program(const ProgramUnderTest& program, const ProgramFu
     };
     for (std::uint64_t i = 0; i < options.count; ++i) {
         if (options.minutes > 0 && FuzzClock::now() >= deadline) break;
-        const FuzzInput input = make_fuzz_input(options.kind, options.seed + i, options.max_points);
+        const FuzzInput input = make_fuzz_input(
+            options.kind, options.seed + i * options.seed_stride, options.max_points);
         const Judgement judgement = judge(input);
         ++summary.run;
         summary.last_seed = input.seed;

@@ -107,6 +107,7 @@ struct ProgramFuzzOptions {
     std::uint64_t count = 100;        ///< inputs to run
     double minutes = 0;               ///< > 0: stop after this long, even before `count`
     std::uint64_t seed = 1;           ///< first case seed
+    std::uint64_t seed_stride = 1;    ///< case k has seed + k * seed_stride (shards: their count)
     std::uint32_t max_points = 1000;  ///< largest input
     PslgCheck pslg_check = PslgCheck::ConstrainedDelaunay;
     bool convex_hull = false;  ///< PSLGs: the output must cover the convex hull (Triangle -c)
@@ -134,7 +135,7 @@ struct ProgramFuzzSummary {
     std::uint64_t bad() const { return failed + crashed + timed_out; }
 };
 
-/// Runs `program` on options.count inputs (case seeds seed, seed + 1, ...), judges each, and
+/// Runs `program` on options.count inputs (case seeds seed, seed + stride, ...), judges each, and
 /// minimizes each bad one with `program` as the oracle (the same verdict must persist), handing
 /// it to `on_failure`. Progress lines go to `progress` every 2 s unless options.quiet.
 ProgramFuzzSummary fuzz_program(const ProgramUnderTest& program, const ProgramFuzzOptions& options,
