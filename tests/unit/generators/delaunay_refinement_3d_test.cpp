@@ -182,6 +182,17 @@ TEST(Generators_DelaunayRefinement3d, BadOptionsAndTheBudgetAreInputErrors) {
     EXPECT_THROW(delaunay_refinement_3d(plc, recovered, options), InputError);
     options.radius_edge_bound = std::nan("");
     EXPECT_THROW(delaunay_refinement_3d(plc, recovered, options), InputError);
+    // Below 1 circumcentre insertion may shorten edges without end: refused at once.
+    for (const double bound : {0.999, 0.9, 0.5}) {
+        options.radius_edge_bound = bound;
+        try {
+            delaunay_refinement_3d(plc, recovered, options);
+            ADD_FAILURE() << "bound " << bound << " accepted";
+        } catch (const InputError& error) {
+            EXPECT_NE(std::string(error.what()).find("is below 1"), std::string::npos)
+                << error.what();
+        }
+    }
     options.radius_edge_bound = 2;
     options.max_volume = 1e-6;
     options.max_steiner_points = 10;
