@@ -167,8 +167,9 @@ struct StarFrame {
 long double smallest_angle(const std::array<Vec, 4>& corners, unsigned moving, const Vec& x) {
     std::array<Vec, 4> p = corners;
     p[moving] = x;
+    // orient3d's positive orientation is a negative a . (b x c) [Shewchuk97].
     const Vec a = sub(p[1], p[0]), b = sub(p[2], p[0]), c = sub(p[3], p[0]);
-    if (dot(a, cross(b, c)) <= 0) return -1;
+    if (dot(a, cross(b, c)) >= 0) return -1;
     static constexpr unsigned kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2},
                                               {1, 2, 0, 3}, {1, 3, 2, 0}, {2, 3, 0, 1}};
     long double smallest = kPi;
@@ -256,6 +257,38 @@ std::vector<Vec> candidate_offsets(const StarFrame& frame) {
             out.push_back({gradient[0] * step, gradient[1] * step, gradient[2] * step});
         }
     }
+    // A compass search on the rounded smallest angle: where two or more angles are active
+    // (a max-min optimum along every single gradient), a step along one of the 26 lattice
+    // directions that raises them all can still exist. Halves the step when none improves.
+    Vec x{0, 0, 0};
+    long double best = star_smallest_angle(frame, x);
+    long double step = shortest / 4;
+    for (int iteration = 0; iteration < 24 && step > shortest * 0x1p-12L; ++iteration) {
+        Vec next = x;
+        long double next_value = best;
+        for (int dx = -1; dx <= 1; ++dx) {
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dz = -1; dz <= 1; ++dz) {
+                    if (dx == 0 && dy == 0 && dz == 0) continue;
+                    const long double scale =
+                        step / std::sqrt(static_cast<long double>(dx * dx + dy * dy + dz * dz));
+                    const Vec y{x[0] + dx * scale, x[1] + dy * scale, x[2] + dz * scale};
+                    const long double value = star_smallest_angle(frame, y);
+                    if (value > next_value) {
+                        next_value = value;
+                        next = y;
+                    }
+                }
+            }
+        }
+        if (next_value > best) {
+            x = next;
+            best = next_value;
+        } else {
+            step /= 2;
+        }
+    }
+    if (x[0] != 0 || x[1] != 0 || x[2] != 0) out.push_back(x);
     return out;
 }
 

@@ -11,9 +11,11 @@
 //     of a subface: every 2-2 swap (which trades two boundary subfaces) is refused;
 //  2. smoothing of their interior Steiner vertices (VertexFeature3::Volume; input, segment and
 //     facet vertices never move): a few candidate positions (the neighbours' centroid, halfway
-//     to it, and steps along the ascent direction of the star's smallest dihedral angle) are
-//     computed in doubles in a frame scaled by a power of two (so that the result is the same
-//     for the mesh scaled by any power of two) and rounded once; the best one (exact) is taken
+//     to it, steps along the ascent direction of the star's smallest dihedral angle, and the
+//     end of a compass search over 26 directions on that angle, which gets past the max-min
+//     points where several angles are active) are computed in long double in a frame centred
+//     at the vertex and scaled by a power of two (so that the result is the same for the mesh
+//     scaled by any power of two) and rounded once; the best one (exact) is taken
 //     when every tetrahedron of the star stays positively oriented (exact orient3d) and the
 //     star's smallest dihedral angle strictly increases (exact, angle_comparisons_3d).
 // Decision on the refinement's bounds: with `keep_bounds` (the default), a swap or a move is
