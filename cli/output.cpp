@@ -297,19 +297,19 @@ void print_construction_stats(const std::vector<std::pair<std::string, std::uint
     print_construct_seconds(seconds);
 }
 
-void print_quality_3d(const triangulation::Tetrahedralization3& mesh) {
+void print_quality_3d(const triangulation::Tetrahedralization3& mesh, const std::string& prefix) {
     const triangulation::QualityStats3 q = triangulation::quality_stats_3d(mesh);
     const auto precision = std::cout.precision(10);
-    std::cout << "min_dihedral_degrees: " << q.min_dihedral_degrees << '\n'
-              << "max_dihedral_degrees: " << q.max_dihedral_degrees << '\n'
-              << "min_volume_edge: " << q.min_volume_edge << '\n'
-              << "mean_volume_edge: " << q.mean_volume_edge << '\n'
-              << "max_radius_edge: " << q.max_radius_edge << '\n'
-              << "slivers: " << q.slivers << '\n';
+    std::cout << prefix << "min_dihedral_degrees: " << q.min_dihedral_degrees << '\n'
+              << prefix << "max_dihedral_degrees: " << q.max_dihedral_degrees << '\n'
+              << prefix << "min_volume_edge: " << q.min_volume_edge << '\n'
+              << prefix << "mean_volume_edge: " << q.mean_volume_edge << '\n'
+              << prefix << "max_radius_edge: " << q.max_radius_edge << '\n'
+              << prefix << "slivers: " << q.slivers << '\n';
     for (std::size_t b = 0; b < q.dihedral_histogram.size(); ++b) {
         const auto lo = static_cast<int>(static_cast<double>(b) * q.histogram_bin_degrees);
         const auto hi = static_cast<int>(static_cast<double>(b + 1) * q.histogram_bin_degrees);
-        std::cout << "dihedral_degrees[" << lo << "," << hi
+        std::cout << prefix << "dihedral_degrees[" << lo << "," << hi
                   << (b + 1 == q.dihedral_histogram.size() ? "]" : ")") << ": "
                   << q.dihedral_histogram[b] << '\n';
     }

@@ -132,7 +132,8 @@ void print_construction_stats(const std::vector<std::pair<std::string, std::uint
 
 /// The --quality report of a tetrahedralization (triangulation/checks/quality_3d): dihedral
 /// extremes, volume-edge, radius-edge, slivers, the 10-degree dihedral histogram.
-void print_quality_3d(const triangulation::Tetrahedralization3& mesh);
+void print_quality_3d(const triangulation::Tetrahedralization3& mesh,
+                      const std::string& prefix = "");
 
 /// What a timed construction returned, with its predicate stages and its wall time.
 template <class Result>

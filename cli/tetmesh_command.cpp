@@ -5,7 +5,9 @@
 // is written (check_boundary_conformity_3d: valid positively oriented tetrahedra, every facet and
 // segment present). Output: TetGen .node/.ele/.face (every subface with its facet's marker)/
 // .neigh, or .msh/.vtu by the output's extension; input vertices keep their numbers, Steiner
-// points follow them.
+// points follow them. After refinement, sliver removal (generators/mesh_3d/sliver_removal_3d)
+// unless --no-sliver-removal; --quality then reports the mesh before it (prefixed
+// before_sliver_removal_) and after it.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -25,6 +27,7 @@
 #include "cli/output.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
 #include "generators/mesh_3d/delaunay_refinement_3d.hpp"
+#include "generators/mesh_3d/sliver_removal_3d.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/plc_format.hpp"
 #include "io/tetgen_format.hpp"
@@ -51,6 +54,7 @@ struct TetmeshArguments : CommandArguments {
     double radius_edge = 0;  ///< 0: not given
     double max_volume = 0;   ///< 0: not given
     bool quality = false;
+    bool no_sliver_removal = false;
 };
 
 /// The faces to write in the .face file: every subface once (a boundary face as seen from
@@ -127,17 +131,30 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     refinement.radius_edge_bound = arguments.radius_edge > 0 ? arguments.radius_edge : 2.0;
     refinement.max_volume = arguments.max_volume;
     refinement.max_steiner_points = arguments.max_steiner;
+    const bool remove_slivers = refine && !arguments.no_sliver_removal;
+    gen::SliverRemoval3Options sliver_options;
+    sliver_options.radius_edge_bound = refinement.radius_edge_bound;
+    sliver_options.max_volume = refinement.max_volume;
     struct Meshed {
         tri::BoundaryRecovery3Result recovery;
         gen::DelaunayRefinement3Counters refinement;
+        gen::SliverRemoval3Counters slivers;
+        tri::Tetrahedralization3 before_sliver_removal;  ///< kept for --quality only
     };
     auto [result, stats, seconds] = timed_construction([&] {
-        Meshed meshed{tri::boundary_recovery_3d(plc, options), {}};
+        Meshed meshed{tri::boundary_recovery_3d(plc, options), {}, {}, {}};
         if (refine) {
             gen::DelaunayRefinement3Result refined =
                 gen::delaunay_refinement_3d(plc, std::move(meshed.recovery.mesh), refinement);
             meshed.recovery.mesh = std::move(refined.mesh);
             meshed.refinement = refined.counters;
+        }
+        if (remove_slivers) {
+            if (arguments.quality) meshed.before_sliver_removal = meshed.recovery.mesh.mesh;
+            gen::SliverRemoval3Result improved =
+                gen::sliver_removal_3d(std::move(meshed.recovery.mesh), sliver_options);
+            meshed.recovery.mesh = std::move(improved.mesh);
+            meshed.slivers = improved.counters;
         }
         return meshed;
     });
@@ -154,7 +171,9 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     // With refinement: every tetrahedron within the bounds, exactly, except those the
     // small-input-angle rule spares and those whose splitting point the generator had to reject
     // (counted: a point equal to an existing vertex, or a cavity that could not stay valid). A
-    // tetrahedron over a bound with no rejected point to explain it is a bug.
+    // tetrahedron over a bound with no rejected point to explain it is a bug. Sliver removal
+    // never raises the count of tetrahedra over the bounds (keep_bounds), so this holds after
+    // it too.
     gen::RefinementQuality3 quality;
     std::vector<std::string> warnings;
     if (refine) {
@@ -198,7 +217,11 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     print_warnings(warnings);
     std::cout << "vertices: " << mesh.vertex_count() << '\n'
               << "tetrahedra: " << mesh.tet_count() << '\n';
-    if (arguments.quality) print_quality_3d(mesh);
+    if (arguments.quality) {
+        if (remove_slivers)
+            print_quality_3d(result.before_sliver_removal, "before_sliver_removal_");
+        print_quality_3d(mesh);
+    }
     if (arguments.stats) {
         auto counters =
             counters_by_name(tri::kBoundaryRecovery3CounterNames, result.recovery.counters);
@@ -208,6 +231,11 @@ void run_tetmesh(const TetmeshArguments& arguments) {
                 counters.emplace_back("refinement_" + name, value);
             counters.emplace_back("spared_small_angle_tets", quality.small_angle);
             counters.emplace_back("over_bound_tets", quality.over_bound + quality.over_volume);
+        }
+        if (remove_slivers) {
+            for (auto& [name, value] :
+                 counters_by_name(gen::kSliverRemoval3CounterNames, result.slivers))
+                counters.emplace_back("sliver_removal_" + name, value);
         }
         print_construction_stats(counters, stats, seconds, 3);
     }
@@ -256,9 +284,16 @@ void add_tetmesh_command(CLI::App& app) {
                      "Delaunay refinement: split every tetrahedron of larger volume (TetGen -a)")
         ->type_name("V")
         ->check(CLI::PositiveNumber);
+    command->add_flag("--no-sliver-removal", arguments->no_sliver_removal,
+                      "Keep the refined mesh as Delaunay refinement leaves it: no sliver removal "
+                      "(generators/mesh_3d/sliver_removal_3d: MaxMinDihedral edge-face swapping "
+                      "keeping subfaces and subsegments, smoothing of interior Steiner points, "
+                      "on tetrahedra with a dihedral angle below 15 degrees; on by default after "
+                      "refinement)");
     command->add_flag("--quality", arguments->quality,
                       "Print the mesh's quality: dihedral extremes and 10-degree histogram, "
-                      "volume-edge, radius-edge, slivers");
+                      "volume-edge, radius-edge, slivers (after sliver removal; the same before "
+                      "it prefixed before_sliver_removal_)");
     add_stats_flag(*command, arguments->stats,
                    "the recovery's and refinement's counters, predicate stages",
                    "the construction alone, without file I/O or the check");

@@ -1376,6 +1376,19 @@ tetmesh_refine() {
   awk 'NR > 1 && ($5 < 1 || $5 > 6)' "$work/q.face" | grep -q . && fail "q.face: a face without its marker"
   run 0 tetmesh --domain box-with-hole -o "$work/box.vtu" --radius-edge 2 --stats || return
   grep -q '^over_bound_tets: 0$' "$work/out" || fail "box-with-hole: tetrahedra over the bound"
+  # Refinement then sliver removal (on by default): its counters, the quality before and after.
+  run 0 tetmesh --domain box-with-hole --max-volume 0.0025 -o "$work/r.ele" --stats --quality || return
+  for name in flips_32 moves_accepted slivers_before slivers_after; do
+    grep -Eq "^sliver_removal_$name: [0-9]+$" "$work/out" || fail "--stats: no 'sliver_removal_$name: N' line"
+  done
+  grep -Eq '^sliver_removal_slivers_before: [1-9]' "$work/out" || fail "sliver removal found no sliver"
+  grep -q '^sliver_removal_slivers_after: 0$' "$work/out" || fail "slivers left: $(cat "$work/out")"
+  grep -Eq '^before_sliver_removal_dihedral_degrees\[0,10\): [1-9]' "$work/out" ||
+    fail "--quality: no angle below 10 degrees before sliver removal"
+  grep -q '^dihedral_degrees\[0,10): 0$' "$work/out" || fail "--quality: angles below 10 degrees left"
+  run 0 tetmesh --domain box-with-hole --max-volume 0.0025 -o "$work/n.ele" --stats --no-sliver-removal || return
+  grep -q '^sliver_removal_' "$work/out" && fail "--no-sliver-removal still printed sliver removal counters"
+  grep -Eq '^over_bound_tets: 0$' "$work/out" || fail "box-with-hole: tetrahedra over the bounds"
   # Bad bounds are usage errors; the budget is an input error naming it.
   expect_error 2 'radius-edge' tetmesh "$work/cube.poly" -o "$work/x.ele" --radius-edge -1
   expect_error 2 'max-volume' tetmesh "$work/cube.poly" -o "$work/x.ele" --max-volume 0

@@ -25,8 +25,10 @@
 // Comparisons are exact (angle_comparisons_3d), so "strictly" holds for the real angles.
 #include "triangulation/modification/edge_face_swap_3d.hpp"
 
+#include <algorithm>
 #include <array>
 #include <deque>
+#include <initializer_list>
 #include <string>
 
 #include "base/enum_names.hpp"
@@ -124,7 +126,69 @@ bool locally_delaunay_sos(const TetMesh3& mesh, FaceIdx f) {
     return !delaunay_wants(mesh, f);
 }
 
+void SwapLocks3::add_face(VertIdx a, VertIdx b, VertIdx c) {
+    std::array<VertIdx, 3> key{a, b, c};
+    std::sort(key.begin(), key.end());
+    faces_.push_back(key);
+}
+
+void SwapLocks3::add_edge(VertIdx a, VertIdx b) {
+    edges_.push_back({std::min(a, b), std::max(a, b)});
+}
+
+void SwapLocks3::finish() {
+    std::sort(faces_.begin(), faces_.end());
+    faces_.erase(std::unique(faces_.begin(), faces_.end()), faces_.end());
+    std::sort(edges_.begin(), edges_.end());
+    edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
+}
+
+bool SwapLocks3::face_locked(VertIdx a, VertIdx b, VertIdx c) const {
+    std::array<VertIdx, 3> key{a, b, c};
+    std::sort(key.begin(), key.end());
+    return std::binary_search(faces_.begin(), faces_.end(), key);
+}
+
+bool SwapLocks3::edge_locked(VertIdx a, VertIdx b) const {
+    return std::binary_search(edges_.begin(), edges_.end(),
+                              std::array<VertIdx, 2>{std::min(a, b), std::max(a, b)});
+}
+
+bool flip_removes_locked(const TetMesh3& mesh, const FlipPlan3& plan, const SwapLocks3& locks) {
+    auto has_all = [](const Tet& t, std::initializer_list<VertIdx> vs) {
+        for (const VertIdx v : vs) {
+            if (std::find(t.begin(), t.end(), v) == t.end()) return false;
+        }
+        return true;
+    };
+    auto in_made = [&](std::initializer_list<VertIdx> vs) {
+        for (unsigned i = 0; i < plan.made_count; ++i) {
+            if (has_all(plan.made[i], vs)) return true;
+        }
+        return false;
+    };
+    for (unsigned i = 0; i < plan.old_count; ++i) {
+        const Tet t = mesh.tet(plan.old[i]);
+        for (unsigned k = 0; k < 4; ++k) {
+            const unsigned* lf = kFaceVertex[k];
+            const VertIdx a = t[lf[0]], b = t[lf[1]], c = t[lf[2]];
+            if (locks.face_locked(a, b, c) && !in_made({a, b, c})) return true;
+        }
+        for (unsigned j = 0; j < 4; ++j) {
+            for (unsigned k = j + 1; k < 4; ++k) {
+                if (locks.edge_locked(t[j], t[k]) && !in_made({t[j], t[k]})) return true;
+            }
+        }
+    }
+    return false;
+}
+
 EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion) {
+    return swap_faces_3d(mesh, criterion, SwapConstraints3{});
+}
+
+EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion,
+                                   const SwapConstraints3& constraints) {
     EdgeFaceSwapCounters counters;
     std::vector<std::uint8_t> queued(mesh.adj.size(), 0);
     std::deque<FaceIdx> queue;
@@ -134,8 +198,14 @@ EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion) {
         queued[f] = 1;
         queue.push_back(f);
     };
-    for (FaceIdx f = 0; f < mesh.adj.size(); ++f) {
-        if (!mesh.is_dead(f / 4) && mesh.adj[f] != kNone && mesh.adj[f] > f) push(f);
+    if (constraints.seeds.empty()) {
+        for (FaceIdx f = 0; f < mesh.adj.size(); ++f) {
+            if (!mesh.is_dead(f / 4) && mesh.adj[f] != kNone && mesh.adj[f] > f) push(f);
+        }
+    } else {
+        for (const FaceIdx f : constraints.seeds) {
+            if (f < mesh.adj.size() && !mesh.is_dead(f / 4)) push(f);
+        }
     }
     std::vector<TetIdx> created;
     FlipPlan plan;
@@ -158,8 +228,17 @@ EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion) {
             }
             if (!quality_prefers(mesh, criterion, plan)) continue;
         }
+        if (constraints.locks != nullptr && flip_removes_locked(mesh, plan, *constraints.locks)) {
+            ++counters.locked;
+            continue;
+        }
+        if (constraints.accept && !constraints.accept(plan)) {
+            ++counters.vetoed;
+            continue;
+        }
         apply_flip_3d(mesh, plan, created);
         count_flip(counters, plan.kind);
+        if (constraints.on_flip) constraints.on_flip(plan, created);
         // Every face of the new tetrahedra, the ones between them too: a face between two new
         // tetrahedra is where a later 4-4 swap through them is seen from (its other faces see
         // other point sets), and the swap that would undo this one is simply never preferred.

@@ -21,10 +21,15 @@
 //  - VolumeEdge: the smallest volume-edge quality among the new tetrahedra is strictly larger.
 // Termination of each criterion: proofs/invariants/edge_face_swapping_3d.md (and the .cpp).
 // Works on any tetrahedralization (convex hull or not): the domain and its boundary never change.
+// The constrained variant (SwapConstraints3) keeps locked faces and edges (a conforming mesh's
+// subfaces and subsegments), starts from given faces only, and lets the caller veto a swap and
+// follow each one (sliver_removal_3d).
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -54,6 +59,10 @@ struct EdgeFaceSwapCounters {
     /// Delaunay only, counted after the loop: interior faces still not locally Delaunay (SoS),
     /// each with no valid swap. Zero exactly when the result is the Delaunay tetrahedralization.
     std::uint64_t stalled_faces = 0;
+    /// Constrained swapping: valid swaps refused because they remove a locked face or edge.
+    std::uint64_t locked = 0;
+    /// Constrained swapping: swaps the criterion preferred but the caller's veto refused.
+    std::uint64_t vetoed = 0;
 
     std::uint64_t flips() const { return flips_23 + flips_32 + flips_44 + flips_22; }
 };
@@ -62,13 +71,53 @@ struct EdgeFaceSwapCounters {
 /// order.
 inline constexpr std::array kEdgeFaceSwapCounterNames =
     EM_COUNTER_TABLE(EdgeFaceSwapCounters, faces_examined, edges_examined, flips_23, flips_32,
-                     flips_44, flips_22, not_flippable, stalled_faces);
+                     flips_44, flips_22, not_flippable, stalled_faces, locked, vetoed);
 static_assert(counter_table_complete(kEdgeFaceSwapCounterNames));
 
 /// Swaps until no face wants a swap under `criterion`.
 /// The flips themselves are flip_3d's (plan_flip_3d, apply_flip_3d).
 /// @pre mesh valid (make_tet_mesh_3d). Vertex indices are the SoS ranks.
 EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion);
+
+/// Faces and edges that a constrained swap never removes, as sorted vertex tuples (any
+/// orientation locks the face). Call finish() after the last add and before any query.
+class SwapLocks3 {
+  public:
+    void add_face(VertIdx a, VertIdx b, VertIdx c);
+    void add_edge(VertIdx a, VertIdx b);
+    void finish();
+    bool face_locked(VertIdx a, VertIdx b, VertIdx c) const;
+    bool edge_locked(VertIdx a, VertIdx b) const;
+    bool empty() const { return faces_.empty() && edges_.empty(); }
+
+  private:
+    std::vector<std::array<VertIdx, 3>> faces_;
+    std::vector<std::array<VertIdx, 2>> edges_;
+};
+
+/// Whether the flip removes a locked face or edge: a face (edge) of an old tetrahedron that is
+/// no face (edge) of a new one. A 2-2 swap always removes its two domain-boundary faces.
+bool flip_removes_locked(const TetMesh3& mesh, const FlipPlan3& plan, const SwapLocks3& locks);
+
+/// The constraints of a constrained swapping run; every member is optional.
+struct SwapConstraints3 {
+    /// Swaps removing one of these faces or edges are refused (counted as `locked`).
+    const SwapLocks3* locks = nullptr;
+    /// The faces examined first (then only the new tetrahedra's faces); empty: every interior
+    /// face. Dead and boundary faces among them are skipped.
+    std::span<const FaceIdx> seeds;
+    /// Asked after the criterion prefers a swap and before it is made; false refuses it
+    /// (counted as `vetoed`).
+    std::function<bool(const FlipPlan3&)> accept;
+    /// Told after each swap: the plan and the new tetrahedra's slots (created[i] holds
+    /// plan.made[i]; the first plan.old_count of them reuse plan.old's slots in order).
+    std::function<void(const FlipPlan3&, const std::vector<TetIdx>&)> on_flip;
+};
+
+/// swap_faces_3d under `constraints`.
+/// @pre as swap_faces_3d; criterion is not Delaunay when seeds are given.
+EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion,
+                                   const SwapConstraints3& constraints);
 
 /// Convenience: make_tet_mesh_3d, swap_faces_3d, to_tetrahedralization_3d into `mesh`.
 /// @throws InputError as make_tet_mesh_3d.

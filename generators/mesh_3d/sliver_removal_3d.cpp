@@ -1,0 +1,433 @@
+// SPDX-License-Identifier: MIT
+// Sliver removal: constrained MaxMinDihedral swapping and smoothing of interior Steiner
+// vertices (see sliver_removal_3d.hpp).
+#include "generators/mesh_3d/sliver_removal_3d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "predicates/angle_comparisons_3d.hpp"
+#include "predicates/orient3d.hpp"
+#include "predicates/tet_quality_3d.hpp"
+#include "triangulation/mesh/flip_3d.hpp"
+#include "triangulation/modification/edge_face_swap_3d.hpp"
+
+namespace exactmesh::generators {
+
+namespace {
+
+namespace tri = exactmesh::triangulation;
+using predicates::compare_dihedral;
+using predicates::Dihedral;
+using predicates::Sign;
+using predicates::TetCorners;
+using tri::FaceIdx;
+using tri::kNone;
+using tri::Tet;
+using tri::TetIdx;
+using tri::TetMesh3;
+using tri::VertIdx;
+
+constexpr long double kPi = 3.141592653589793238462643383279502884L;
+
+TetCorners corners_of(const TetMesh3& mesh, const Tet& t) {
+    return {mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])};
+}
+
+/// The smallest of the dihedral angles `angles` (exact; the first on ties).
+Dihedral smallest_of(const std::vector<Dihedral>& angles) {
+    Dihedral best = angles.front();
+    for (std::size_t i = 1; i < angles.size(); ++i) {
+        if (compare_dihedral(angles[i], best) == Sign::Negative) best = angles[i];
+    }
+    return best;
+}
+
+/// The working state: the mesh, the region attribute per slot, the bounds.
+struct Work {
+    TetMesh3 mesh;
+    std::vector<double> slot_attributes;  ///< per slot; empty without regions
+    const SliverRemoval3Options* options = nullptr;
+    long double threshold_radians = 0;
+
+    bool over_bounds(const TetCorners& p) const {
+        if (predicates::compare_radius_edge_3d(p[0], p[1], p[2], p[3],
+                                               options->radius_edge_bound) == Sign::Positive)
+            return true;
+        return options->max_volume > 0 &&
+               predicates::compare_tet_volume_3d(p[0], p[1], p[2], p[3], options->max_volume) ==
+                   Sign::Positive;
+    }
+
+    /// Whether tetrahedron t has a dihedral angle below the threshold (rounded: a selection,
+    /// not a decision; the long double angle is the same for the mesh scaled by 2^k).
+    bool below_threshold(TetIdx t) const {
+        const TetCorners p = corners_of(mesh, mesh.tet(t));
+        return predicates::dihedral_radians(predicates::smallest_dihedral(p)) < threshold_radians;
+    }
+
+    std::vector<TetIdx> bad_tets() const {
+        std::vector<TetIdx> bad;
+        for (TetIdx t = 0; t < mesh.tet_slots(); ++t) {
+            if (!mesh.is_dead(t) && below_threshold(t)) bad.push_back(t);
+        }
+        return bad;
+    }
+};
+
+// ---- Swapping ----
+
+/// The subfaces and subsegments, and every edge of a subface.
+tri::SwapLocks3 conforming_locks(const tri::ConformingMesh3& conforming) {
+    tri::SwapLocks3 locks;
+    const auto& sub = conforming.subfaces;
+    for (std::size_t s = 0; s + 2 < sub.size(); s += 3) {
+        locks.add_face(sub[s], sub[s + 1], sub[s + 2]);
+        locks.add_edge(sub[s], sub[s + 1]);
+        locks.add_edge(sub[s + 1], sub[s + 2]);
+        locks.add_edge(sub[s + 2], sub[s]);
+    }
+    const auto& seg = conforming.subsegments;
+    for (std::size_t s = 0; s + 1 < seg.size(); s += 2) locks.add_edge(seg[s], seg[s + 1]);
+    locks.finish();
+    return locks;
+}
+
+/// One swapping pass from the faces of the tetrahedra below the threshold; the number of swaps.
+std::uint64_t swap_pass(Work& work, const tri::SwapLocks3& locks, SliverRemoval3Counters& c) {
+    std::vector<FaceIdx> seeds;
+    for (const TetIdx t : work.bad_tets()) {
+        for (unsigned k = 0; k < 4; ++k) seeds.push_back(4 * t + k);
+    }
+    if (seeds.empty()) return 0;
+    tri::SwapConstraints3 constraints;
+    constraints.locks = &locks;
+    constraints.seeds = seeds;
+    if (work.options->keep_bounds) {
+        constraints.accept = [&work](const tri::FlipPlan3& plan) {
+            unsigned before = 0, after = 0;
+            for (unsigned i = 0; i < plan.old_count; ++i)
+                before += work.over_bounds(corners_of(work.mesh, work.mesh.tet(plan.old[i])));
+            for (unsigned i = 0; i < plan.made_count; ++i)
+                after += work.over_bounds(corners_of(work.mesh, plan.made[i]));
+            return after <= before;
+        };
+    }
+    if (!work.slot_attributes.empty()) {
+        // The old tetrahedra of a swap share faces that are no subfaces, so they lie in one
+        // region: the new ones take its attribute (slot created[0] is old[0]'s, unchanged).
+        constraints.on_flip = [&work](const tri::FlipPlan3&, const std::vector<TetIdx>& created) {
+            work.slot_attributes.resize(work.mesh.tet_slots(), 0.0);
+            const double attribute = work.slot_attributes[created.front()];
+            for (const TetIdx t : created) work.slot_attributes[t] = attribute;
+        };
+    }
+    const tri::EdgeFaceSwapCounters s =
+        tri::swap_faces_3d(work.mesh, tri::SwapCriterion3::MaxMinDihedral, constraints);
+    c.flips_23 += s.flips_23;
+    c.flips_32 += s.flips_32;
+    c.flips_44 += s.flips_44;
+    c.swaps_locked += s.locked;
+    c.swaps_vetoed += s.vetoed;
+    EM_ASSERT(s.flips_22 == 0);
+    return s.flips();
+}
+
+// ---- Smoothing ----
+
+using Vec = std::array<long double, 3>;
+
+Vec sub(const Vec& a, const Vec& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+Vec cross(const Vec& a, const Vec& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+long double dot(const Vec& a, const Vec& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// The star of a vertex in a frame centred at the vertex and scaled by a power of two (the
+/// largest neighbour offset in [1/2, 1)): each star tetrahedron's corners, the moving one
+/// at slot `moving`. Offsets are rounded differences times 2^-exponent, so the frame's numbers
+/// are the same for the mesh scaled by any power of two.
+struct StarFrame {
+    std::vector<std::array<Vec, 4>> tets;
+    std::vector<unsigned> moving;
+    std::vector<Vec> neighbours;
+    int exponent = 0;
+};
+
+/// The six dihedral angles' minimum of the tetrahedron with its moving corner at x (long
+/// double; an inverted or flat one gives -1).
+long double smallest_angle(const std::array<Vec, 4>& corners, unsigned moving, const Vec& x) {
+    std::array<Vec, 4> p = corners;
+    p[moving] = x;
+    // orient3d's positive orientation is a negative a . (b x c) [Shewchuk97].
+    const Vec a = sub(p[1], p[0]), b = sub(p[2], p[0]), c = sub(p[3], p[0]);
+    if (dot(a, cross(b, c)) >= 0) return -1;
+    static constexpr unsigned kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2},
+                                              {1, 2, 0, 3}, {1, 3, 2, 0}, {2, 3, 0, 1}};
+    long double smallest = kPi;
+    for (const auto& edge : kEdges) {
+        const Vec e = sub(p[edge[1]], p[edge[0]]);
+        const Vec u = sub(p[edge[2]], p[edge[0]]);
+        const Vec w = sub(p[edge[3]], p[edge[0]]);
+        const Vec n1 = cross(e, u), n2 = cross(e, w);
+        const long double det = std::fabs(dot(e, cross(u, w)));
+        smallest = std::min(smallest, std::atan2(std::sqrt(dot(e, e)) * det, dot(n1, n2)));
+    }
+    return smallest;
+}
+
+long double star_smallest_angle(const StarFrame& frame, const Vec& x) {
+    long double smallest = kPi;
+    for (std::size_t i = 0; i < frame.tets.size(); ++i)
+        smallest = std::min(smallest, smallest_angle(frame.tets[i], frame.moving[i], x));
+    return smallest;
+}
+
+StarFrame star_frame(const TetMesh3& mesh, VertIdx v, const std::vector<TetIdx>& star) {
+    StarFrame frame;
+    const double* p = mesh.point(v);
+    std::vector<VertIdx> others;
+    for (const TetIdx t : star) {
+        for (unsigned k = 0; k < 4; ++k) {
+            const VertIdx w = mesh.vertex(t, k);
+            if (w != v) others.push_back(w);
+        }
+    }
+    std::sort(others.begin(), others.end());
+    others.erase(std::unique(others.begin(), others.end()), others.end());
+    double largest = 0;
+    for (const VertIdx w : others) {
+        for (int i = 0; i < 3; ++i) largest = std::max(largest, std::fabs(mesh.point(w)[i] - p[i]));
+    }
+    std::frexp(largest, &frame.exponent);
+    auto local = [&](VertIdx w) -> Vec {
+        if (w == v) return {0, 0, 0};
+        Vec q;
+        for (int i = 0; i < 3; ++i)
+            q[static_cast<std::size_t>(i)] = std::ldexp(mesh.point(w)[i] - p[i], -frame.exponent);
+        return q;
+    };
+    for (const VertIdx w : others) frame.neighbours.push_back(local(w));
+    for (const TetIdx t : star) {
+        std::array<Vec, 4> c;
+        for (unsigned k = 0; k < 4; ++k) c[k] = local(mesh.vertex(t, k));
+        frame.tets.push_back(c);
+        frame.moving.push_back(mesh.slot_of(t, v));
+    }
+    return frame;
+}
+
+/// Candidate offsets (in the frame) of the moving vertex.
+std::vector<Vec> candidate_offsets(const StarFrame& frame) {
+    std::vector<Vec> out;
+    Vec centroid{0, 0, 0};
+    long double shortest = 4;
+    for (const Vec& q : frame.neighbours) {
+        for (int i = 0; i < 3; ++i)
+            centroid[static_cast<std::size_t>(i)] += q[static_cast<std::size_t>(i)];
+        shortest = std::min(shortest, std::sqrt(dot(q, q)));
+    }
+    const auto n = static_cast<long double>(frame.neighbours.size());
+    for (auto& x : centroid) x /= n;
+    out.push_back(centroid);
+    out.push_back({centroid[0] / 2, centroid[1] / 2, centroid[2] / 2});
+    // The ascent direction of the star's smallest angle, by central differences (the smallest
+    // angle is piecewise smooth; its gradient is the active angle's).
+    const long double h = shortest * 0x1p-20L;
+    Vec gradient{0, 0, 0};
+    for (std::size_t i = 0; i < 3; ++i) {
+        Vec plus{0, 0, 0}, minus{0, 0, 0};
+        plus[i] = h;
+        minus[i] = -h;
+        gradient[i] =
+            (star_smallest_angle(frame, plus) - star_smallest_angle(frame, minus)) / (2 * h);
+    }
+    const long double length = std::sqrt(dot(gradient, gradient));
+    if (length > 0 && std::isfinite(length)) {
+        for (int k = 1; k <= 6; ++k) {
+            const long double step = std::ldexp(shortest, -k) / length;
+            out.push_back({gradient[0] * step, gradient[1] * step, gradient[2] * step});
+        }
+    }
+    // A compass search on the rounded smallest angle: where two or more angles are active
+    // (a max-min optimum along every single gradient), a step along one of the 26 lattice
+    // directions that raises them all can still exist. Halves the step when none improves.
+    Vec x{0, 0, 0};
+    long double best = star_smallest_angle(frame, x);
+    long double step = shortest / 4;
+    for (int iteration = 0; iteration < 24 && step > shortest * 0x1p-12L; ++iteration) {
+        Vec next = x;
+        long double next_value = best;
+        for (int dx = -1; dx <= 1; ++dx) {
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dz = -1; dz <= 1; ++dz) {
+                    if (dx == 0 && dy == 0 && dz == 0) continue;
+                    const long double scale =
+                        step / std::sqrt(static_cast<long double>(dx * dx + dy * dy + dz * dz));
+                    const Vec y{x[0] + dx * scale, x[1] + dy * scale, x[2] + dz * scale};
+                    const long double value = star_smallest_angle(frame, y);
+                    if (value > next_value) {
+                        next_value = value;
+                        next = y;
+                    }
+                }
+            }
+        }
+        if (next_value > best) {
+            x = next;
+            best = next_value;
+        } else {
+            step /= 2;
+        }
+    }
+    if (x[0] != 0 || x[1] != 0 || x[2] != 0) out.push_back(x);
+    return out;
+}
+
+/// The smallest exact dihedral angle of the star with v at `at` (nullopt-like: false when a
+/// tetrahedron is not positively oriented). `corners` keeps the pointers alive.
+bool star_smallest_exact(const TetMesh3& mesh, const std::vector<TetIdx>& star, VertIdx v,
+                         const double* at, std::vector<Dihedral>& scratch, Dihedral& smallest) {
+    scratch.clear();
+    for (const TetIdx t : star) {
+        TetCorners p = corners_of(mesh, mesh.tet(t));
+        p[mesh.slot_of(t, v)] = at;
+        if (predicates::orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
+        scratch.push_back(predicates::smallest_dihedral(p));
+    }
+    smallest = smallest_of(scratch);
+    return true;
+}
+
+unsigned star_over_bounds(const Work& work, const std::vector<TetIdx>& star, VertIdx v,
+                          const double* at) {
+    unsigned over = 0;
+    for (const TetIdx t : star) {
+        TetCorners p = corners_of(work.mesh, work.mesh.tet(t));
+        p[work.mesh.slot_of(t, v)] = at;
+        over += work.over_bounds(p);
+    }
+    return over;
+}
+
+/// Tries to move the Volume vertex v; true when it moved.
+bool smooth_vertex(Work& work, VertIdx v, SliverRemoval3Counters& c) {
+    TetMesh3& mesh = work.mesh;
+    const std::vector<TetIdx> star = tri::vertex_star(mesh, v);
+    if (star.empty()) return false;
+    const StarFrame frame = star_frame(mesh, v, star);
+    const std::vector<Vec> offsets = candidate_offsets(frame);
+    const double* p = mesh.point(v);
+    std::vector<std::array<double, 3>> points;
+    for (const Vec& d : offsets) {
+        std::array<double, 3> q;
+        for (std::size_t i = 0; i < 3; ++i)
+            q[i] = p[i] + std::ldexp(static_cast<double>(d[i]), frame.exponent);
+        if (q[0] == p[0] && q[1] == p[1] && q[2] == p[2]) continue;
+        if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2])) continue;
+        points.push_back(q);
+    }
+    std::vector<Dihedral> scratch;
+    Dihedral current{};
+    const bool valid = star_smallest_exact(mesh, star, v, p, scratch, current);
+    EM_ASSERT(valid);
+    // The improving candidates with their smallest angles (each Dihedral points into `points`,
+    // which no longer grows), best first by exact comparison.
+    std::vector<std::pair<Dihedral, std::size_t>> improving;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        Dihedral smallest{};
+        if (!star_smallest_exact(mesh, star, v, points[i].data(), scratch, smallest)) continue;
+        if (compare_dihedral(smallest, current) == Sign::Positive)
+            improving.push_back({smallest, i});
+    }
+    if (improving.empty()) {
+        ++c.moves_rejected;
+        return false;
+    }
+    std::stable_sort(improving.begin(), improving.end(), [](const auto& a, const auto& b) {
+        return compare_dihedral(a.first, b.first) == Sign::Positive;
+    });
+    const unsigned over_before = work.options->keep_bounds ? star_over_bounds(work, star, v, p) : 0;
+    for (const auto& [smallest, i] : improving) {
+        if (work.options->keep_bounds &&
+            star_over_bounds(work, star, v, points[i].data()) > over_before)
+            continue;
+        for (std::size_t k = 0; k < 3; ++k) mesh.xyz[3 * std::size_t{v} + k] = points[i][k];
+        ++c.moves_accepted;
+        return true;
+    }
+    ++c.moves_vetoed;
+    return false;
+}
+
+/// One smoothing pass over the Volume vertices of the tetrahedra below the threshold; the
+/// number of moves.
+std::uint64_t smooth_pass(Work& work, const std::vector<tri::VertexFeature3>& features,
+                          SliverRemoval3Counters& c) {
+    std::vector<VertIdx> vertices;
+    for (const TetIdx t : work.bad_tets()) {
+        for (unsigned k = 0; k < 4; ++k) {
+            const VertIdx v = work.mesh.vertex(t, k);
+            if (features[v] == tri::VertexFeature3::Volume) vertices.push_back(v);
+        }
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    std::uint64_t moves = 0;
+    for (const VertIdx v : vertices) moves += smooth_vertex(work, v, c) ? 1 : 0;
+    return moves;
+}
+
+}  // namespace
+
+SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
+                                       const SliverRemoval3Options& options) {
+    if (!(options.threshold_degrees > 0 && options.threshold_degrees < 90))
+        throw InputError("sliver removal: the threshold must be in (0, 90) degrees, not " +
+                         std::to_string(options.threshold_degrees));
+    if (!(options.radius_edge_bound > 0) || !std::isfinite(options.radius_edge_bound) ||
+        !std::isfinite(options.max_volume))
+        throw InputError("sliver removal: the bounds must be finite and B > 0");
+    if (conforming.vertex_feature.size() != conforming.mesh.vertex_count())
+        throw InputError("sliver removal: one vertex feature per vertex is needed");
+
+    Work work;
+    work.options = &options;
+    work.threshold_radians = static_cast<long double>(options.threshold_degrees) * kPi / 180;
+    work.mesh = tri::make_tet_mesh_3d(conforming.mesh);
+    work.slot_attributes = conforming.tet_attributes;
+    SliverRemoval3Result result;
+    SliverRemoval3Counters& c = result.counters;
+    c.slivers_before = work.bad_tets().size();
+    const tri::SwapLocks3 locks = conforming_locks(conforming);
+    for (unsigned round = 0; round < options.rounds; ++round) {
+        ++c.rounds;
+        const std::uint64_t swaps = swap_pass(work, locks, c);
+        const std::uint64_t moves = smooth_pass(work, conforming.vertex_feature, c);
+        if (swaps == 0 && moves == 0) break;
+    }
+    c.slivers_after = work.bad_tets().size();
+
+    // Back to the exchange type: live slots in order, attributes alike.
+    std::vector<double> attributes;
+    if (!work.slot_attributes.empty()) {
+        work.slot_attributes.resize(work.mesh.tet_slots(), 0.0);
+        for (TetIdx t = 0; t < work.mesh.tet_slots(); ++t) {
+            if (!work.mesh.is_dead(t)) attributes.push_back(work.slot_attributes[t]);
+        }
+    }
+    conforming.mesh = tri::to_tetrahedralization_3d(work.mesh);
+    conforming.tet_attributes = std::move(attributes);
+    result.mesh = std::move(conforming);
+    return result;
+}
+
+}  // namespace exactmesh::generators
