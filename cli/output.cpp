@@ -52,6 +52,12 @@ constexpr StageRow kStages3d[] = {
     {"insphere", &Stats::insphere},
     {"compare_dihedral", &Stats::compare_dihedral},
     {"compare_volume_edge", &Stats::compare_volume_edge},
+    {"dot_sign_3d", &Stats::dot_sign_3d},
+    {"compare_radius_edge_3d", &Stats::compare_radius_edge_3d},
+    {"compare_tet_volume_3d", &Stats::compare_tet_volume_3d},
+    {"in_equatorial_sphere_3d", &Stats::in_equatorial_sphere_3d},
+    {"compare_angle_60_3d", &Stats::compare_angle_60_3d},
+    {"compare_lengths_3d", &Stats::compare_lengths_3d},
 };
 
 }  // namespace

@@ -6,36 +6,35 @@
 
 #include <cmath>
 
+#include "predicates/filter_constants.hpp"
+#include "predicates/relative_filter.hpp"
+#include "predicates/stats.hpp"
+
 namespace exactmesh::predicates {
 
 std::optional<Sign> dot_sign_3d_filter(const double* p, const double* a, const double* b) {
-    // Scale by the power of two that brings the largest coordinate near 1: exact, and the
-    // sign of the dot product does not change. Each difference then carries a relative error
-    // of at most 2^-53, each product 2^-52 more, the sum of three 3 * 2^-53 of the sum of the
-    // absolute values of the products: the bound below (8 * 2^-53 of that sum) is ample.
-    double largest = 0;
-    for (const double* q : {p, a, b}) {
-        for (int k = 0; k < 3; ++k) largest = std::fmax(largest, std::fabs(q[k]));
-    }
-    if (largest == 0) return Sign::Zero;
-    const int e = std::ilogb(largest);
-    double sum = 0, magnitude = 0;
-    for (int k = 0; k < 3; ++k) {
-        const double u = std::ldexp(a[k], -e) - std::ldexp(p[k], -e);
-        const double v = std::ldexp(b[k], -e) - std::ldexp(p[k], -e);
-        sum += u * v;
-        magnitude += std::fabs(u * v);
-    }
-    // Below this the products may be subnormal (lost bits): leave it to the exact stage.
-    if (magnitude < 0x1p-900) return std::nullopt;
-    const double bound = 0x1p-50 * magnitude;
-    if (sum > bound) return Sign::Positive;
-    if (sum < -bound) return Sign::Negative;
-    return std::nullopt;
+    // The differences are rounded once from the input, then scaled by the power of two that
+    // brings the largest to [1, 2) (exact inside the window; the sign does not change). Each
+    // monomial of the computed sum goes through 5 roundings (two differences, the product, two
+    // sums), and so does its permanent; Gappa proves dot_sign_3d_filter_eps for that count
+    // (proofs/gappa/dot_sign_3d_filter.g, proofs/invariants/filters.md). Every nonzero scaled
+    // difference is at least the window 2^-400, so no product underflows (degree 2 and the
+    // bound: 2 (400 + 52) + 50 <= 1022, relative_filter.hpp).
+    using detail::difference;
+    double d[6] = {a[0] - p[0], a[1] - p[1], a[2] - p[2], b[0] - p[0], b[1] - p[1], b[2] - p[2]};
+    if (!detail::scale_differences(d, dot_sign_3d_filter_window_min)) return std::nullopt;
+    const auto sum = difference(d[0]) * difference(d[3]) + difference(d[1]) * difference(d[4]) +
+                     difference(d[2]) * difference(d[5]);
+    return detail::certified<dot_sign_3d_filter_roundings>(sum, dot_sign_3d_filter_eps);
 }
 
 Sign dot_sign_3d(const double* p, const double* a, const double* b) {
-    if (const auto s = dot_sign_3d_filter(p, a, b)) return *s;
+    EM_STAT(dot_sign_3d, calls);
+    if (const auto s = dot_sign_3d_filter(p, a, b)) {
+        EM_STAT(dot_sign_3d, filter);
+        return *s;
+    }
+    EM_STAT(dot_sign_3d, gmp);
     mpq_class sum = 0;
     for (int k = 0; k < 3; ++k) sum += (mpq_class(a[k]) - p[k]) * (mpq_class(b[k]) - p[k]);
     const int s = sgn(sum);

@@ -2,8 +2,9 @@
 // dot_sign_3d(p, a, b): the exact sign of (a - p) . (b - p), i.e. whether p lies inside
 // (Negative), on (Zero) or outside (Positive) the sphere with diameter ab (Thales): the
 // encroachment test of 3D Delaunay refinement and boundary recovery [Shewchuk97 §3.4, in 3D].
-// Stages: a double filter on coordinates scaled by a power of two (so nothing overflows or
-// underflows between 2^-500 and 2^500 relative spreads), then GMP rationals.
+// Stages: a relative double filter on the differences scaled by a power of two (Gappa-proven
+// constant, proofs/gappa/dot_sign_3d_filter.g; it abstains when a nonzero difference is below
+// 2^-400 of the largest), then GMP rationals.
 #pragma once
 
 #include <optional>

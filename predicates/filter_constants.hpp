@@ -65,6 +65,32 @@ inline constexpr long double within_rounding_filter_eps = 0x1p-61L;
 inline constexpr long double angle_comparisons_3d_filter_factor = 0x1p+0L;
 inline constexpr int angle_comparisons_3d_filter_max_roundings = 64;
 
+// Relative filters with the rounding count in the type (predicates/relative_filter.hpp): each
+// eps is the least power of two Gappa proves in proofs/gappa/<name>.g for the largest of the
+// filter's counts below, and the CTest test proofs.<name> requires the script to state its goal
+// for every count listed here; the code static_asserts that each term's count is at most the
+// count it is certified with. The window: every nonzero scaled difference (the largest in
+// [1, 2)) is at least window_min, so nothing underflows up to degree 9 (argument in
+// relative_filter.hpp and proofs/invariants/filters.md).
+// proofs/gappa/dot_sign_3d_filter.g (predicates/dot_sign_3d.cpp)
+inline constexpr double dot_sign_3d_filter_eps = 0x1p-50;
+inline constexpr int dot_sign_3d_filter_roundings = 5;
+inline constexpr double dot_sign_3d_filter_window_min = 0x1p-400;
+// proofs/gappa/tet_quality_3d_*_filter.g (predicates/tet_quality_3d.cpp)
+inline constexpr double tet_quality_3d_filter_window_min = 0x1p-50;
+inline constexpr double tet_quality_3d_lengths_filter_eps = 0x1p-50;
+inline constexpr int tet_quality_3d_lengths_filter_roundings = 6;
+inline constexpr double tet_quality_3d_angle_filter_eps = 0x1p-49;
+inline constexpr int tet_quality_3d_angle_dot_roundings = 5;
+inline constexpr int tet_quality_3d_angle_filter_roundings = 12;
+inline constexpr double tet_quality_3d_volume_filter_eps = 0x1p-49;
+inline constexpr int tet_quality_3d_volume_det_roundings = 8;
+inline constexpr int tet_quality_3d_volume_filter_roundings = 9;
+inline constexpr double tet_quality_3d_equatorial_filter_eps = 0x1p-48;
+inline constexpr int tet_quality_3d_equatorial_filter_roundings = 19;
+inline constexpr double tet_quality_3d_radius_edge_filter_eps = 0x1p-48;
+inline constexpr int tet_quality_3d_radius_edge_filter_roundings = 28;
+
 // triangle_area_sign's stage A (predicates/triangle_area.cpp) certifies r = fl(det - bound)
 // when |r| > eps (|p| + |q|) + result_eps (|det| + |bound|) + floor, all computed, the
 // differences scaled to a largest magnitude in [1, 2). proofs/gappa/triangle_area_filter.g; the

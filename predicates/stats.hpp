@@ -29,6 +29,10 @@ struct PredicateStats {
     StageCounts compare_angles, compare_lengths, corner_dot_sign, direction_dot_sign;
     StageCounts within_rounding_of_segment, compare_dihedral, compare_volume_edge;
     StageCounts in_ellipse, compare_metric_lengths;
+    /// dot_sign_3d and the refinement decisions of tet_quality_3d: filter (a relative double
+    /// filter) or gmp.
+    StageCounts dot_sign_3d, compare_radius_edge_3d, compare_tet_volume_3d;
+    StageCounts in_equatorial_sphere_3d, compare_angle_60_3d, compare_lengths_3d;
 };
 
 /// True when the library was built with EXACTMESH_PREDICATE_STATS.

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Exact refinement decisions in scaled GMP integers (see tet_quality_3d.hpp).
+// Refinement decisions: a relative double filter, then exact in scaled GMP integers (see
+// tet_quality_3d.hpp).
 #include "predicates/tet_quality_3d.hpp"
 
 #include <gmpxx.h>
@@ -8,6 +9,13 @@
 #include <array>
 #include <climits>
 #include <cmath>
+#include <cstddef>
+#include <optional>
+
+#include "predicates/filter_constants.hpp"
+#include "predicates/power_of_two.hpp"
+#include "predicates/relative_filter.hpp"
+#include "predicates/stats.hpp"
 
 namespace exactmesh::predicates {
 
@@ -79,10 +87,8 @@ void shift_pair(mpz_class& left, mpz_class& right, long s) {
     }
 }
 
-}  // namespace
-
-Sign compare_radius_edge_3d(const double* a, const double* b, const double* c, const double* d,
-                            double bound) {
+Sign compare_radius_edge_3d_exact(const double* a, const double* b, const double* c,
+                                  const double* d, double bound) {
     int k = 0;
     const auto p = to_integers<4>({a, b, c, d}, k);
     const Vec u = sub(p[1], p[0]), v = sub(p[2], p[0]), w = sub(p[3], p[0]);
@@ -103,8 +109,8 @@ Sign compare_radius_edge_3d(const double* a, const double* b, const double* c, c
     return sign_of(left - right);
 }
 
-Sign compare_tet_volume_3d(const double* a, const double* b, const double* c, const double* d,
-                           double max_volume) {
+Sign compare_tet_volume_3d_exact(const double* a, const double* b, const double* c, const double* d,
+                                 double max_volume) {
     int k = 0;
     const auto p = to_integers<4>({a, b, c, d}, k);
     const Vec u = sub(p[1], p[0]), v = sub(p[2], p[0]), w = sub(p[3], p[0]);
@@ -119,7 +125,8 @@ Sign compare_tet_volume_3d(const double* a, const double* b, const double* c, co
     return sign_of(det - right);
 }
 
-Sign in_equatorial_sphere_3d(const double* p, const double* a, const double* b, const double* c) {
+Sign in_equatorial_sphere_3d_exact(const double* p, const double* a, const double* b,
+                                   const double* c) {
     int k = 0;
     const auto x = to_integers<4>({p, a, b, c}, k);
     const Vec u = sub(x[2], x[1]), v = sub(x[3], x[1]), q = sub(x[0], x[1]);
@@ -130,7 +137,7 @@ Sign in_equatorial_sphere_3d(const double* p, const double* a, const double* b, 
     return sign_of(dot(q, big) - dot(n, n) * dot(q, q));
 }
 
-Sign compare_angle_60_3d(const double* apex, const double* p, const double* q) {
+Sign compare_angle_60_3d_exact(const double* apex, const double* p, const double* q) {
     int k = 0;
     const auto x = to_integers<3>({apex, p, q}, k);
     const Vec u = sub(x[1], x[0]), v = sub(x[2], x[0]);
@@ -140,11 +147,219 @@ Sign compare_angle_60_3d(const double* apex, const double* p, const double* q) {
     return sign_of(4 * uv * uv - dot(u, u) * dot(v, v));
 }
 
-Sign compare_lengths_3d(const double* a, const double* b, const double* c, const double* d) {
+Sign compare_lengths_3d_exact(const double* a, const double* b, const double* c, const double* d) {
     int k = 0;
     const auto x = to_integers<4>({a, b, c, d}, k);
     const Vec u = sub(x[1], x[0]), v = sub(x[3], x[2]);
     return sign_of(dot(u, u) - dot(v, v));
+}
+
+// The filters (relative_filter.hpp): differences rounded once and scaled by one power of two,
+// each decision a Term whose rounding count the type carries and whose eps Gappa proves
+// (proofs/gappa/tet_quality_3d_*_filter.g). Every filtered polynomial has degree at most 9 in
+// the scaled differences (counting the bound's m^2 as one: a multiple of 2^-52 in [1, 4)), and
+// 9 (50 + 52) + 48 <= 1022 with the window 2^-50: nothing underflows, eps P is normal.
+
+template <int R>
+using Vec3 = std::array<detail::Term<R>, 3>;
+
+template <int R, int S>
+auto cross_terms(const Vec3<R>& a, const Vec3<S>& b) {
+    using Out = Vec3<R + S + 2>;
+    return Out{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+template <int R, int S>
+auto dot_terms(const Vec3<R>& a, const Vec3<S>& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+/// Differences d[3 i .. 3 i + 2] as the i-th vector.
+template <std::size_t N>
+Vec3<1> vector_at(const double (&d)[N], std::size_t i) {
+    return {detail::difference(d[3 * i]), detail::difference(d[3 * i + 1]),
+            detail::difference(d[3 * i + 2])};
+}
+/// The rounded differences x - y, three per pair, into `out` from position 3 i.
+template <std::size_t N>
+void put_difference(double (&out)[N], std::size_t i, const double* x, const double* y) {
+    for (std::size_t k = 0; k < 3; ++k) out[3 * i + k] = x[k] - y[k];
+}
+
+}  // namespace
+
+std::optional<Sign> compare_radius_edge_3d_filter(const double* a, const double* b, const double* c,
+                                                  const double* d, double bound) {
+    // B = m 2^e with m in [1, 2); |e| <= 64 keeps 2^(2|e|) far from overflow (beyond: GMP).
+    if (!(bound > 0) || !std::isfinite(bound)) return std::nullopt;
+    const int e = binary_exponent(bound);
+    if (e < -64 || e > 64) return std::nullopt;
+    const double m = PowerOfTwo(-e)(bound);
+    double diff[18];
+    put_difference(diff, 0, b, a);
+    put_difference(diff, 1, c, a);
+    put_difference(diff, 2, d, a);
+    put_difference(diff, 3, c, b);
+    put_difference(diff, 4, d, b);
+    put_difference(diff, 5, d, c);
+    if (!detail::scale_differences(diff, tet_quality_3d_filter_window_min)) return std::nullopt;
+    const Vec3<1> u = vector_at(diff, 0), v = vector_at(diff, 1), w = vector_at(diff, 2);
+    const auto vw = cross_terms(v, w), wu = cross_terms(w, u), uv = cross_terms(u, v);
+    const auto det = dot_terms(u, vw);
+    const auto uu = dot_terms(u, u), vv = dot_terms(v, v), ww = dot_terms(w, w);
+    using Num = decltype(uu * vw[0] + vv * wu[0] + ww * uv[0]);
+    const std::array<Num, 3> num{uu * vw[0] + vv * wu[0] + ww * uv[0],
+                                 uu * vw[1] + vv * wu[1] + ww * uv[1],
+                                 uu * vw[2] + vv * wu[2] + ww * uv[2]};
+    // R^2 > B^2 l^2  <=>  |num|^2 > 4 det^2 m^2 2^(2e) l^2: the power of two goes to the side
+    // it enlarges, so nothing shrinks towards underflow.
+    const double left_power = PowerOfTwo(e < 0 ? -2 * e : 0)(1.0);
+    const double right_power = PowerOfTwo(e > 0 ? 2 * e : 0)(1.0);
+    const auto left =
+        detail::scaled(num[0] * num[0] + num[1] * num[1] + num[2] * num[2], left_power);
+    const auto det_bound = detail::scaled(det * det, 4.0) * detail::rounded_constant(m * m);
+    // sign(R - B l_min) = sign(max over the edges of F_e), F_e = left - det_bound l_e^2: Positive
+    // as soon as one F_e is certified positive, Negative when all six are certified negative.
+    bool all_negative = true;
+    for (std::size_t i = 0; i < 6; ++i) {
+        const Vec3<1> edge = vector_at(diff, i);
+        const auto value = left - detail::scaled(det_bound * dot_terms(edge, edge), right_power);
+        const auto s = detail::certified<tet_quality_3d_radius_edge_filter_roundings>(
+            value, tet_quality_3d_radius_edge_filter_eps);
+        if (s == Sign::Positive) return Sign::Positive;
+        all_negative = all_negative && s == Sign::Negative;
+    }
+    if (all_negative) return Sign::Negative;
+    return std::nullopt;
+}
+
+std::optional<Sign> compare_tet_volume_3d_filter(const double* a, const double* b, const double* c,
+                                                 const double* d, double max_volume) {
+    if (!(max_volume > 0) || !std::isfinite(max_volume)) return std::nullopt;
+    double diff[9];
+    put_difference(diff, 0, b, a);
+    put_difference(diff, 1, c, a);
+    put_difference(diff, 2, d, a);
+    const auto shift = detail::scale_differences(diff, tet_quality_3d_filter_window_min);
+    if (!shift) return std::nullopt;
+    const Vec3<1> u = vector_at(diff, 0), v = vector_at(diff, 1), w = vector_at(diff, 2);
+    // Scaled units: det' = det 2^(3 shift) and V' = V 2^(3 shift); |det'| <= |u| |v| |w| < 42
+    // (scaled differences below 2, the exact ones below 2 (1 + 2^-53)).
+    const auto det = dot_terms(u, cross_terms(v, w));
+    const int volume_exponent = binary_exponent(max_volume) + 3 * *shift;
+    if (volume_exponent >= 3) return Sign::Negative;  // 6 V' >= 48 > |det'|
+    const auto det_sign = detail::certified<tet_quality_3d_volume_det_roundings>(
+        det, tet_quality_3d_volume_filter_eps);
+    if (!det_sign) return std::nullopt;
+    if (volume_exponent < -900) {
+        // 6 V' < 6 2^-899; |det'| >= |det| - eps P > |det| / 2 >= 2^-801 when certified so.
+        const double magnitude = std::fabs(det.value);
+        if (magnitude >= 0x1p-800 &&
+            magnitude > 2 * tet_quality_3d_volume_filter_eps * det.permanent)
+            return Sign::Positive;
+        return std::nullopt;
+    }
+    const double volume = std::ldexp(max_volume, 3 * *shift);  // normal: exact
+    const auto value =
+        detail::signed_by(det, *det_sign == Sign::Negative) - detail::rounded_constant(6 * volume);
+    return detail::certified<tet_quality_3d_volume_filter_roundings>(
+        value, tet_quality_3d_volume_filter_eps);
+}
+
+std::optional<Sign> in_equatorial_sphere_3d_filter(const double* p, const double* a,
+                                                   const double* b, const double* c) {
+    double diff[9];
+    put_difference(diff, 0, b, a);
+    put_difference(diff, 1, c, a);
+    put_difference(diff, 2, p, a);
+    if (!detail::scale_differences(diff, tet_quality_3d_filter_window_min)) return std::nullopt;
+    const Vec3<1> u = vector_at(diff, 0), v = vector_at(diff, 1), q = vector_at(diff, 2);
+    const auto n = cross_terms(u, v);
+    const auto vn = cross_terms(v, n), nu = cross_terms(n, u);
+    const auto uu = dot_terms(u, u), vv = dot_terms(v, v);
+    using Big = decltype(uu * vn[0] + vv * nu[0]);
+    const std::array<Big, 3> big{uu * vn[0] + vv * nu[0], uu * vn[1] + vv * nu[1],
+                                 uu * vn[2] + vv * nu[2]};
+    const auto value = dot_terms(q, big) - dot_terms(n, n) * dot_terms(q, q);
+    return detail::certified<tet_quality_3d_equatorial_filter_roundings>(
+        value, tet_quality_3d_equatorial_filter_eps);
+}
+
+std::optional<Sign> compare_angle_60_3d_filter(const double* apex, const double* p,
+                                               const double* q) {
+    double diff[6];
+    put_difference(diff, 0, p, apex);
+    put_difference(diff, 1, q, apex);
+    if (!detail::scale_differences(diff, tet_quality_3d_filter_window_min)) return std::nullopt;
+    const Vec3<1> u = vector_at(diff, 0), v = vector_at(diff, 1);
+    const auto uv = dot_terms(u, v);
+    const auto uv_sign =
+        detail::certified<tet_quality_3d_angle_dot_roundings>(uv, tet_quality_3d_angle_filter_eps);
+    if (uv_sign != Sign::Positive) return uv_sign;  // Negative: at least 90 degrees; or unsure
+    const auto value = detail::scaled(uv * uv, 4.0) - dot_terms(u, u) * dot_terms(v, v);
+    return detail::certified<tet_quality_3d_angle_filter_roundings>(
+        value, tet_quality_3d_angle_filter_eps);
+}
+
+std::optional<Sign> compare_lengths_3d_filter(const double* a, const double* b, const double* c,
+                                              const double* d) {
+    double diff[6];
+    put_difference(diff, 0, b, a);
+    put_difference(diff, 1, d, c);
+    if (!detail::scale_differences(diff, tet_quality_3d_filter_window_min)) return std::nullopt;
+    const Vec3<1> u = vector_at(diff, 0), v = vector_at(diff, 1);
+    return detail::certified<tet_quality_3d_lengths_filter_roundings>(
+        dot_terms(u, u) - dot_terms(v, v), tet_quality_3d_lengths_filter_eps);
+}
+
+Sign compare_radius_edge_3d(const double* a, const double* b, const double* c, const double* d,
+                            double bound) {
+    EM_STAT(compare_radius_edge_3d, calls);
+    if (const auto s = compare_radius_edge_3d_filter(a, b, c, d, bound)) {
+        EM_STAT(compare_radius_edge_3d, filter);
+        return *s;
+    }
+    EM_STAT(compare_radius_edge_3d, gmp);
+    return compare_radius_edge_3d_exact(a, b, c, d, bound);
+}
+
+Sign compare_tet_volume_3d(const double* a, const double* b, const double* c, const double* d,
+                           double max_volume) {
+    EM_STAT(compare_tet_volume_3d, calls);
+    if (const auto s = compare_tet_volume_3d_filter(a, b, c, d, max_volume)) {
+        EM_STAT(compare_tet_volume_3d, filter);
+        return *s;
+    }
+    EM_STAT(compare_tet_volume_3d, gmp);
+    return compare_tet_volume_3d_exact(a, b, c, d, max_volume);
+}
+
+Sign in_equatorial_sphere_3d(const double* p, const double* a, const double* b, const double* c) {
+    EM_STAT(in_equatorial_sphere_3d, calls);
+    if (const auto s = in_equatorial_sphere_3d_filter(p, a, b, c)) {
+        EM_STAT(in_equatorial_sphere_3d, filter);
+        return *s;
+    }
+    EM_STAT(in_equatorial_sphere_3d, gmp);
+    return in_equatorial_sphere_3d_exact(p, a, b, c);
+}
+
+Sign compare_angle_60_3d(const double* apex, const double* p, const double* q) {
+    EM_STAT(compare_angle_60_3d, calls);
+    if (const auto s = compare_angle_60_3d_filter(apex, p, q)) {
+        EM_STAT(compare_angle_60_3d, filter);
+        return *s;
+    }
+    EM_STAT(compare_angle_60_3d, gmp);
+    return compare_angle_60_3d_exact(apex, p, q);
+}
+
+Sign compare_lengths_3d(const double* a, const double* b, const double* c, const double* d) {
+    EM_STAT(compare_lengths_3d, calls);
+    if (const auto s = compare_lengths_3d_filter(a, b, c, d)) {
+        EM_STAT(compare_lengths_3d, filter);
+        return *s;
+    }
+    EM_STAT(compare_lengths_3d, gmp);
+    return compare_lengths_3d_exact(a, b, c, d);
 }
 
 }  // namespace exactmesh::predicates

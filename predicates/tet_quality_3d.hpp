@@ -6,8 +6,14 @@
 // evaluated exactly in GMP integers on the coordinates scaled by one power of two (each finite
 // double is an integer times 2^k for the smallest exponent k among them), so nothing overflows
 // or underflows and the answer is the same for the input scaled by any power of two (while the
-// bounds scale with it). Slow (tens of microseconds) and obviously correct; no filter yet.
+// bounds scale with it). Slow (tens of microseconds) and obviously correct, so each test first
+// runs a relative double filter (*_filter, predicates/relative_filter.hpp): the polynomial on
+// the differences scaled by a power of two with its permanent, the constant proven by Gappa
+// (proofs/gappa/tet_quality_3d_*_filter.g); it abstains near ties, when a nonzero difference is
+// below 2^-50 of the largest, and (radius-edge) for bounds outside [2^-64, 2^65).
 #pragma once
+
+#include <optional>
 
 #include "predicates/sign.hpp"
 
@@ -34,5 +40,18 @@ Sign compare_angle_60_3d(const double* apex, const double* p, const double* q);
 
 /// Sign of |a - b| - |c - d|.
 Sign compare_lengths_3d(const double* a, const double* b, const double* c, const double* d);
+
+/// The filter stages of the five tests above: the exact answer when the double filter certifies
+/// it, std::nullopt otherwise (the public functions then decide in GMP integers).
+std::optional<Sign> compare_radius_edge_3d_filter(const double* a, const double* b, const double* c,
+                                                  const double* d, double bound);
+std::optional<Sign> compare_tet_volume_3d_filter(const double* a, const double* b, const double* c,
+                                                 const double* d, double max_volume);
+std::optional<Sign> in_equatorial_sphere_3d_filter(const double* p, const double* a,
+                                                   const double* b, const double* c);
+std::optional<Sign> compare_angle_60_3d_filter(const double* apex, const double* p,
+                                               const double* q);
+std::optional<Sign> compare_lengths_3d_filter(const double* a, const double* b, const double* c,
+                                              const double* d);
 
 }  // namespace exactmesh::predicates

@@ -4,7 +4,8 @@
 # filters").
 #
 #   cmake -DNAME=<proof name> -DCONSTANT=<constant> [-DMINIMALITY_NAME=<script>]
-#         [-DMAX_ROUNDINGS=<constant>] [-DGAPPA=<gappa>] [-DOUT_DIR=<dir>]
+#         [-DMAX_ROUNDINGS=<constant>] [-DROUNDINGS=<constant>[,<constant>...]]
+#         [-DGAPPA=<gappa>] [-DOUT_DIR=<dir>]
 #         -P proofs/check_relative_constants.cmake
 #
 # 1. reads CONSTANT from the header (the single source of truth); it must be a power of two
@@ -16,6 +17,10 @@
 # 4. with MAX_ROUNDINGS (a filter that counts its roundings k, u = 2^-64, and abstains above the
 #    header's `inline constexpr int <MAX_ROUNDINGS> = n;`): requires the script to state both
 #    goals of every k = 1..n, so that a larger n in the header without a proof of it fails.
+# 5. with ROUNDINGS (filters whose terms carry their rounding count in the type, u = 2^-53,
+#    predicates/relative_filter.hpp): for each header constant `inline constexpr int <c> = n;`
+#    the script must state both goals for n factors, so that a count the code is certified
+#    with is a count Gappa proves.
 cmake_minimum_required(VERSION 3.25)
 
 include("${CMAKE_CURRENT_LIST_DIR}/gappa_common.cmake")
@@ -55,6 +60,24 @@ if(DEFINED MAX_ROUNDINGS)
     if(above EQUAL -1 OR below EQUAL -1)
       message(FATAL_ERROR "${MAX_ROUNDINGS} = ${max_roundings} but ${script} proves no goal for "
                           "k = ${k} roundings")
+    endif()
+  endforeach()
+endif()
+if(DEFINED ROUNDINGS)
+  string(REPLACE "," ";" rounding_constants "${ROUNDINGS}")
+  file(READ "${script}" text)
+  foreach(constant_name IN LISTS rounding_constants)
+    file(STRINGS "${header}" lines REGEX "inline constexpr int ${constant_name} = [0-9]+;")
+    list(LENGTH lines count)
+    if(NOT count EQUAL 1 OR NOT lines MATCHES "${constant_name} = ([0-9]+)")
+      message(FATAL_ERROR "${header}: expected one definition `inline constexpr int "
+                          "${constant_name} = <n>;`, found ${count}")
+    endif()
+    set(n ${CMAKE_MATCH_1})
+    string(FIND "${text}" "value${n} - 1 - @EPS@ * bound${n} <= 0" above)
+    string(FIND "${text}" "1 - value${n} - @EPS@ * bound${n} <= 0" below)
+    if(above EQUAL -1 OR below EQUAL -1)
+      message(FATAL_ERROR "${constant_name} = ${n} but ${script} proves no goal for ${n} roundings")
     endif()
   endforeach()
 endif()

@@ -63,6 +63,46 @@ TEST(Predicates_DotSign3d, AgreesWithRationalsOnRandomAndNearSphericalPoints) {
     EXPECT_GT(zeros, 0);
 }
 
+TEST(Predicates_DotSign3d, TheFilterAgreesWithRationalsAndDecidesMostRandomInputs) {
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const int n = 4000;
+    int decided = 0;
+    for (int i = 0; i < n; ++i) {
+        double p[3], a[3], b[3];
+        for (int k = 0; k < 3; ++k) {
+            p[k] = u(rng);
+            a[k] = u(rng);
+            b[k] = u(rng);
+        }
+        const Sign expected = reference_dot(p, a, b);
+        for (const int e : {0, 600, -600}) {
+            double ps[3], as[3], bs[3];
+            for (int k = 0; k < 3; ++k) {
+                ps[k] = std::ldexp(p[k], e);
+                as[k] = std::ldexp(a[k], e);
+                bs[k] = std::ldexp(b[k], e);
+            }
+            const auto f = dot_sign_3d_filter(ps, as, bs);
+            if (f) {
+                ASSERT_EQ(*f, expected) << i << " 2^" << e;
+            }
+            if (f && e == 0) ++decided;
+        }
+    }
+    EXPECT_GE(decided, n * 95 / 100);
+    // Outside the window (a nonzero difference below 2^-400 of the largest) the filter abstains
+    // and the rationals decide; an exact tie (Thales) is never the filter's.
+    const double p[3] = {0, 0, 0}, a[3] = {1, 0, 0}, b[3] = {0x1p-450, 1, 0};
+    EXPECT_FALSE(dot_sign_3d_filter(p, a, b));
+    EXPECT_EQ(dot_sign_3d(p, a, b), Sign::Positive);
+    const double q[3] = {0, 4, 0}, l[3] = {-5, 0, 0}, r[3] = {5, 0, 0};
+    const double on[3] = {3, 4, 0};
+    EXPECT_FALSE(dot_sign_3d_filter(on, l, r));
+    EXPECT_EQ(dot_sign_3d(on, l, r), Sign::Zero);
+    EXPECT_EQ(dot_sign_3d(q, l, r), Sign::Negative);
+}
+
 TEST(Predicates_TriangleCircumcenter3d, MatchesTheExact2dCircumcenterInCoordinatePlanes) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(-10, 10);

@@ -1,12 +1,23 @@
 // SPDX-License-Identifier: MIT
 // Tests of predicates/tet_quality_3d: known values, exact ties, and the same signs for the
-// points scaled by 2^600 and 2^-600 (the bounds scaled with them).
+// points scaled by 2^600 and 2^-600 (the bounds scaled with them); the double filters against
+// GMP rationals on random, near-tie and scaled inputs, and how often they decide.
 #include "predicates/tet_quality_3d.hpp"
 
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "predicates/dot_sign_3d.hpp"
+#include "predicates/stats.hpp"
+#include "tests/support/test_scale.hpp"
 
 namespace exactmesh::predicates {
 namespace {
@@ -87,6 +98,347 @@ TEST(Predicates_TetQuality3d, AngleBelowSixtyDegreesAndLengths) {
     const P tiny_b = scaled(b, -600), tiny_d = scaled({1, 1, 1.0000000001}, -600);
     EXPECT_EQ(compare_lengths_3d(a.data(), tiny_b.data(), a.data(), tiny_d.data()), Sign::Positive);
 }
+
+// GMP-rational references, written from the definitions (independent of the library's code).
+using Q3 = std::array<mpq_class, 3>;
+
+Q3 rational(const P& p) {
+    return {mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])};
+}
+Q3 minus(const Q3& a, const Q3& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+mpq_class dot(const Q3& a, const Q3& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Q3 cross(const Q3& a, const Q3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Sign sign_q(const mpq_class& x) {
+    return sgn(x) > 0 ? Sign::Positive : sgn(x) < 0 ? Sign::Negative : Sign::Zero;
+}
+
+Sign reference_radius_edge(const P& a, const P& b, const P& c, const P& d, double bound) {
+    const Q3 qa = rational(a), qb = rational(b), qc = rational(c), qd = rational(d);
+    const Q3 u = minus(qb, qa), v = minus(qc, qa), w = minus(qd, qa);
+    // The circumcentre o - a solves 2 (u, v, w) . x = (|u|^2, |v|^2, |w|^2); by Cramer's rule
+    // x = (|u|^2 v x w + |v|^2 w x u + |w|^2 u x v) / (2 det).
+    const mpq_class det = dot(u, cross(v, w));
+    const Q3 vw = cross(v, w), wu = cross(w, u), uv = cross(u, v);
+    Q3 x;
+    for (int k = 0; k < 3; ++k)
+        x[k] = (dot(u, u) * vw[k] + dot(v, v) * wu[k] + dot(w, w) * uv[k]) / (2 * det);
+    const mpq_class r2 = dot(x, x);
+    mpq_class l2 = dot(u, u);
+    for (const Q3& e : {v, w, minus(qc, qb), minus(qd, qb), minus(qd, qc)})
+        l2 = std::min(l2, dot(e, e));
+    const mpq_class b2 = mpq_class(bound) * mpq_class(bound);
+    return sign_q(r2 - b2 * l2);
+}
+
+Sign reference_volume(const P& a, const P& b, const P& c, const P& d, double max_volume) {
+    const Q3 qa = rational(a);
+    const mpq_class det =
+        dot(minus(rational(b), qa), cross(minus(rational(c), qa), minus(rational(d), qa)));
+    return sign_q(abs(det) / 6 - mpq_class(max_volume));
+}
+
+Sign reference_equatorial(const P& p, const P& a, const P& b, const P& c) {
+    // The centre o = a + s u + t v with (o - a) . u = |u|^2 / 2, (o - a) . v = |v|^2 / 2.
+    const Q3 qa = rational(a), u = minus(rational(b), qa), v = minus(rational(c), qa);
+    const mpq_class uu = dot(u, u), uv = dot(u, v), vv = dot(v, v);
+    const mpq_class den = 2 * (uu * vv - uv * uv);
+    const mpq_class s = (uu * vv - vv * uv) / den, t = (uu * vv - uu * uv) / den;
+    Q3 o;
+    for (int k = 0; k < 3; ++k) o[k] = qa[k] + s * u[k] + t * v[k];
+    const Q3 ra = minus(qa, o), rp = minus(rational(p), o);
+    return sign_q(dot(ra, ra) - dot(rp, rp));
+}
+
+Sign reference_angle_60(const P& apex, const P& p, const P& q) {
+    const Q3 o = rational(apex), u = minus(rational(p), o), v = minus(rational(q), o);
+    const mpq_class uv = dot(u, v);
+    if (sgn(uv) <= 0) return Sign::Negative;
+    return sign_q(4 * uv * uv - dot(u, u) * dot(v, v));
+}
+
+Sign reference_lengths(const P& a, const P& b, const P& c, const P& d) {
+    const Q3 u = minus(rational(b), rational(a)), v = minus(rational(d), rational(c));
+    return sign_q(dot(u, u) - dot(v, v));
+}
+
+/// One test case of each kind: its points, its bound, and how the bound scales with 2^e.
+struct Case {
+    enum Kind { RadiusEdge, Volume, Equatorial, Angle60, Lengths, DotSign } kind;
+    std::array<P, 4> points;
+    double bound = 0;
+};
+
+Sign reference(const Case& c) {
+    const auto& x = c.points;
+    switch (c.kind) {
+        case Case::RadiusEdge:
+            return reference_radius_edge(x[0], x[1], x[2], x[3], c.bound);
+        case Case::Volume:
+            return reference_volume(x[0], x[1], x[2], x[3], c.bound);
+        case Case::Equatorial:
+            return reference_equatorial(x[0], x[1], x[2], x[3]);
+        case Case::Angle60:
+            return reference_angle_60(x[0], x[1], x[2]);
+        case Case::Lengths:
+            return reference_lengths(x[0], x[1], x[2], x[3]);
+        case Case::DotSign: {
+            const Q3 p = rational(x[0]);
+            return sign_q(dot(minus(rational(x[1]), p), minus(rational(x[2]), p)));
+        }
+    }
+    return Sign::Zero;
+}
+
+Sign evaluate(const Case& c) {
+    const auto& x = c.points;
+    switch (c.kind) {
+        case Case::RadiusEdge:
+            return compare_radius_edge_3d(x[0].data(), x[1].data(), x[2].data(), x[3].data(),
+                                          c.bound);
+        case Case::Volume:
+            return compare_tet_volume_3d(x[0].data(), x[1].data(), x[2].data(), x[3].data(),
+                                         c.bound);
+        case Case::Equatorial:
+            return in_equatorial_sphere_3d(x[0].data(), x[1].data(), x[2].data(), x[3].data());
+        case Case::Angle60:
+            return compare_angle_60_3d(x[0].data(), x[1].data(), x[2].data());
+        case Case::Lengths:
+            return compare_lengths_3d(x[0].data(), x[1].data(), x[2].data(), x[3].data());
+        case Case::DotSign:
+            return dot_sign_3d(x[0].data(), x[1].data(), x[2].data());
+    }
+    return Sign::Zero;
+}
+
+std::optional<Sign> filter(const Case& c) {
+    const auto& x = c.points;
+    switch (c.kind) {
+        case Case::RadiusEdge:
+            return compare_radius_edge_3d_filter(x[0].data(), x[1].data(), x[2].data(), x[3].data(),
+                                                 c.bound);
+        case Case::Volume:
+            return compare_tet_volume_3d_filter(x[0].data(), x[1].data(), x[2].data(), x[3].data(),
+                                                c.bound);
+        case Case::Equatorial:
+            return in_equatorial_sphere_3d_filter(x[0].data(), x[1].data(), x[2].data(),
+                                                  x[3].data());
+        case Case::Angle60:
+            return compare_angle_60_3d_filter(x[0].data(), x[1].data(), x[2].data());
+        case Case::Lengths:
+            return compare_lengths_3d_filter(x[0].data(), x[1].data(), x[2].data(), x[3].data());
+        case Case::DotSign:
+            return dot_sign_3d_filter(x[0].data(), x[1].data(), x[2].data());
+    }
+    return std::nullopt;
+}
+
+/// The case scaled by 2^e: points by 2^e, a volume bound by 2^(3e), a radius-edge bound not.
+Case scaled_case(Case c, int e) {
+    for (P& p : c.points) p = scaled(p, e);
+    if (c.kind == Case::Volume) c.bound = std::ldexp(c.bound, 3 * e);
+    return c;
+}
+
+constexpr const char* kKindNames[] = {"radius-edge", "volume",  "equatorial",
+                                      "angle-60",    "lengths", "dot-sign"};
+
+/// Every case and its scalings by 2^e, e in {-600, -300, -7, 0, 5, 300, 600} (volumes to
+/// 2^(+-300)): the public test and
+/// (when it decides) the filter against the reference; returns how many unscaled cases the
+/// filter decided.
+int check_cases(const std::vector<Case>& cases) {
+    int decided = 0;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const Sign expected = reference(cases[i]);
+        for (const int e : {0, -600, -300, -7, 5, 300, 600}) {
+            // A volume scales by 2^(3e): 2^(+-1800) is no double, so volumes go to 2^(+-300).
+            if (cases[i].kind == Case::Volume && std::abs(e) > 300) continue;
+            const Case c = scaled_case(cases[i], e);
+            const auto f = filter(c);
+            if (f) {
+                EXPECT_EQ(*f, expected) << kKindNames[c.kind] << " case " << i << " at 2^" << e;
+            }
+            if (f && e == 0) ++decided;
+            EXPECT_EQ(evaluate(c), expected)
+                << kKindNames[c.kind] << " case " << i << " at 2^" << e;
+            if (::testing::Test::HasFailure()) return decided;
+        }
+    }
+    return decided;
+}
+
+int case_count(int base) {
+    return std::max(20, static_cast<int>(base * exactmesh::testing::test_scale()));
+}
+
+P random_point(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    return {unit(rng), unit(rng), unit(rng)};
+}
+
+TEST(Predicates_TetQuality3d, FiltersAgreeWithRationalsAndDecideMostRandomInputs) {
+    std::mt19937_64 rng(15);
+    std::uniform_real_distribution<double> ratio(0.6, 3.0), volume(0.0, 0.4);
+    const int n = case_count(400);
+    for (int kind = Case::RadiusEdge; kind <= Case::DotSign; ++kind) {
+        std::vector<Case> cases;
+        for (int i = 0; i < n; ++i) {
+            Case c{static_cast<Case::Kind>(kind),
+                   {random_point(rng), random_point(rng), random_point(rng), random_point(rng)},
+                   0};
+            if (kind == Case::RadiusEdge) c.bound = ratio(rng);
+            if (kind == Case::Volume) c.bound = volume(rng) * 0.1 + 1e-9;
+            cases.push_back(c);
+        }
+        const int decided = check_cases(cases);
+        ASSERT_FALSE(HasFailure());
+        // Generic inputs: the filter decides the large majority (ties and near ties are rare).
+        EXPECT_GE(decided, n * 95 / 100) << kKindNames[kind] << ": " << decided << " of " << n;
+    }
+}
+
+/// x rounded to a neighbour: -1 the next double down, 0 itself, +1 the next up.
+double nudged(double x, int direction) {
+    if (direction == 0) return x;
+    return std::nextafter(x, direction > 0 ? INFINITY : -INFINITY);
+}
+
+TEST(Predicates_TetQuality3d, FiltersAgreeWithRationalsOnExactTiesAndTheirNeighbours) {
+    std::mt19937_64 rng(16);
+    std::uniform_int_distribution<int> offset(-1000, 1000), nudge(-1, 1), coordinate(0, 2),
+        vertex(0, 3);
+    std::vector<Case> cases;
+    auto translate = [&](std::array<P, 4> points, double unit) {
+        // A random translation and unit (exact: small integers times a power of two), then one
+        // coordinate of one point moved by an ulp or not at all.
+        const P shift{double(offset(rng)), double(offset(rng)), double(offset(rng))};
+        for (P& p : points)
+            for (int k = 0; k < 3; ++k)
+                p[static_cast<unsigned>(k)] =
+                    (p[static_cast<unsigned>(k)] + shift[static_cast<unsigned>(k)]) * unit;
+        double& x =
+            points[static_cast<unsigned>(vertex(rng))][static_cast<unsigned>(coordinate(rng))];
+        x = nudged(x, nudge(rng));
+        return points;
+    };
+    const int n = case_count(60);
+    // Radius-edge ties: the box-corner tetrahedron with edges a, b, c on the axes has R =
+    // sqrt(a^2 + b^2 + c^2) / 2, l = min(a, b, c): Pythagorean quadruples give dyadic ratios.
+    const std::array<std::array<double, 4>, 5> quadruples{
+        {{1, 2, 2, 1.5}, {2, 3, 6, 1.75}, {1, 4, 8, 4.5}, {4, 4, 7, 1.125}, {2, 6, 9, 2.75}}};
+    for (int i = 0; i < n; ++i) {
+        const auto& q = quadruples[static_cast<unsigned>(i) % quadruples.size()];
+        std::array<P, 4> corner{P{0, 0, 0}, P{q[0], 0, 0}, P{0, q[1], 0}, P{0, 0, q[2]}};
+        std::shuffle(corner.begin(), corner.end(), rng);
+        cases.push_back({Case::RadiusEdge, translate(corner, 0.25), nudged(q[3], nudge(rng))});
+    }
+    // Volume ties: integer tetrahedra with det divisible by 3, so that |det| / 6 is a double.
+    std::uniform_int_distribution<int> small(-9, 9);
+    while (cases.size() < static_cast<std::size_t>(2 * n)) {
+        std::array<P, 4> t;
+        for (P& p : t) p = {double(small(rng)), double(small(rng)), double(small(rng))};
+        const Q3 u = minus(rational(t[1]), rational(t[0])),
+                 v = minus(rational(t[2]), rational(t[0])),
+                 w = minus(rational(t[3]), rational(t[0]));
+        const mpq_class det = abs(dot(u, cross(v, w)));
+        if (sgn(det) == 0 || det.get_num() % 3 != 0) continue;
+        const double bound = mpq_class(det / 6).get_d();
+        cases.push_back({Case::Volume, translate(t, 0.5), nudged(bound * 0.125, nudge(rng))});
+    }
+    // Equatorial sphere: right triangle a = 0, b = (2x, 0, 0), c = (0, 2y, 0) (centre (x, y, 0),
+    // radius^2 x^2 + y^2) and p = centre + (i, j, k) with i^2 + j^2 + k^2 = x^2 + y^2.
+    while (cases.size() < static_cast<std::size_t>(3 * n)) {
+        const int x = small(rng), y = small(rng), i = small(rng), j = small(rng), k = small(rng);
+        if (x == 0 || y == 0 || x * x + y * y != i * i + j * j + k * k) continue;
+        std::array<P, 4> t{P{double(x + i), double(y + j), double(k)}, P{0, 0, 0}, P{2.0 * x, 0, 0},
+                           P{0, 2.0 * y, 0}};
+        std::shuffle(t.begin() + 1, t.end(), rng);
+        cases.push_back({Case::Equatorial, translate(t, 1.0 / 1024), 0});
+    }
+    // 60 degrees: the equilateral triangle (s, 0, 0), (0, s, 0), (0, 0, s) and the regular
+    // tetrahedron (0,0,0), (s,s,0), (s,0,s), (0,s,s), seen from any vertex.
+    for (int i = 0; i < n; ++i) {
+        const double s = double(1 + i % 7);
+        std::array<P, 4> t = i % 2 == 0
+                                 ? std::array<P, 4>{P{s, 0, 0}, P{0, s, 0}, P{0, 0, s}, P{0, 0, 0}}
+                                 : std::array<P, 4>{P{0, 0, 0}, P{s, s, 0}, P{s, 0, s}, P{0, s, s}};
+        std::shuffle(t.begin(), t.begin() + 3, rng);
+        cases.push_back({Case::Angle60, translate(t, 0.75), 0});
+    }
+    // Equal lengths: Pythagorean triples against an axis segment.
+    const std::array<std::array<double, 3>, 4> triples{
+        {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {20, 21, 29}}};
+    for (int i = 0; i < n; ++i) {
+        const auto& t = triples[static_cast<unsigned>(i) % triples.size()];
+        cases.push_back(
+            {Case::Lengths,
+             translate({P{0, 0, 0}, P{t[0], t[1], 0}, P{1, 1, 1}, P{1, 1, 1 + t[2]}}, 0.125), 0});
+        // Thales: p on the sphere with diameter ab.
+        cases.push_back(
+            {Case::DotSign,
+             translate({P{t[0], t[1], 0}, P{-t[2], 0, 0}, P{t[2], 0, 0}, P{0, 0, 0}}, 0.5), 0});
+    }
+    int zeros = 0;
+    for (const Case& c : cases) zeros += reference(c) == Sign::Zero;
+    check_cases(cases);
+    EXPECT_GT(zeros, n) << "the exact ties are kept by about a third of the cases";
+}
+
+TEST(Predicates_TetQuality3d, FiltersAbstainOnTiesAndOutsideTheirWindow) {
+    // An exact tie is never decided by a filter (it would have to answer Zero).
+    const P a{0, 0, 0}, b{3, 0, 0}, c{0, 2, 0}, d{0, 0, 1};
+    EXPECT_FALSE(compare_tet_volume_3d_filter(a.data(), b.data(), c.data(), d.data(), 1.0));
+    const P e{2, 0, 0}, f{0, 2, 0};
+    EXPECT_FALSE(compare_radius_edge_3d_filter(a.data(), e.data(), f.data(), d.data(), 1.5));
+    // A difference below 2^-50 of the largest: GMP decides, rightly.
+    const P near{1, 0x1p-60, 0}, far{1, 0, 0}, g{0, 0, 0}, h{0, 1, 0};
+    EXPECT_FALSE(compare_lengths_3d_filter(g.data(), near.data(), g.data(), far.data()));
+    EXPECT_EQ(compare_lengths_3d(g.data(), near.data(), g.data(), far.data()), Sign::Positive);
+    EXPECT_FALSE(compare_angle_60_3d_filter(g.data(), near.data(), h.data()));
+    // Radius-edge bounds beyond [2^-64, 2^65): GMP.
+    const P t0{0, 0, 0}, t1{1, 0, 0}, t2{0, 1, 0}, t3{0, 0, 1};
+    EXPECT_FALSE(
+        compare_radius_edge_3d_filter(t0.data(), t1.data(), t2.data(), t3.data(), 0x1p100));
+    EXPECT_EQ(compare_radius_edge_3d(t0.data(), t1.data(), t2.data(), t3.data(), 0x1p100),
+              Sign::Negative);
+    EXPECT_EQ(compare_radius_edge_3d(t0.data(), t1.data(), t2.data(), t3.data(), 0x1p-100),
+              Sign::Positive);
+    // Huge and tiny volume bounds are decided at once (or certified) without overflow.
+    EXPECT_EQ(compare_tet_volume_3d_filter(t0.data(), t1.data(), t2.data(), t3.data(), 1e300),
+              Sign::Negative);
+    EXPECT_EQ(compare_tet_volume_3d_filter(t0.data(), t1.data(), t2.data(), t3.data(), 1e-300),
+              Sign::Positive);
+    EXPECT_EQ(compare_tet_volume_3d(t0.data(), t1.data(), t2.data(), t3.data(), 0x1p-1074),
+              Sign::Positive);
+}
+
+#if defined(EXACTMESH_PREDICATE_STATS)
+TEST(Predicates_TetQuality3d, StatsCountTheFilterAndTheExactStage) {
+    reset_thread_stats();
+    std::mt19937_64 rng(17);
+    for (int i = 0; i < 100; ++i) {
+        const P a = random_point(rng), b = random_point(rng), c = random_point(rng),
+                d = random_point(rng);
+        compare_radius_edge_3d(a.data(), b.data(), c.data(), d.data(), 1.5);
+        compare_lengths_3d(a.data(), b.data(), c.data(), d.data());
+    }
+    const P o{0, 0, 0}, x{3, 0, 0}, y{0, 2, 0}, z{0, 0, 1};
+    compare_tet_volume_3d(o.data(), x.data(), y.data(), z.data(), 1.0);  // a tie: GMP
+    const PredicateStats& s = thread_stats();
+    EXPECT_EQ(s.compare_radius_edge_3d.calls, 100u);
+    EXPECT_EQ(s.compare_radius_edge_3d.calls,
+              s.compare_radius_edge_3d.filter + s.compare_radius_edge_3d.gmp);
+    EXPECT_GE(s.compare_radius_edge_3d.filter, 95u);
+    EXPECT_EQ(s.compare_lengths_3d.calls, s.compare_lengths_3d.filter + s.compare_lengths_3d.gmp);
+    EXPECT_EQ(s.compare_tet_volume_3d.gmp, 1u);
+}
+#endif
 
 }  // namespace
 }  // namespace exactmesh::predicates

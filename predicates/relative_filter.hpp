@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// Relative floating-point filters with the rounding count in the type (internal to predicates/):
+// the double stages of dot_sign_3d and tet_quality_3d. The model and its proof are in
+// proofs/invariants/filters.md, "Relative filters" and "dot_sign_3d and tet_quality_3d".
+//
+// A Term<R> holds a computed value and its computed permanent (the same expression on absolute
+// values, every subtraction made an addition) of a polynomial in coordinate differences; R is
+// the most roundings on any monomial's path [Higham02 §3.1]: a rounded difference 1, a sum or
+// difference one more than its larger operand, a product the sum of its operands' and one, a
+// scaling by a power of two none. The permanent goes through the same operations, so it carries
+// the same count. With no underflow and no overflow, |fl(E) - E| <= eps fl(P) whenever
+// |prod_{i<=R} (1 + d_i) - 1| <= eps prod_{j<=R} (1 + e_j) for all |d_i|, |e_j| <= 2^-53, which
+// Gappa proves for each filter's eps and R (proofs/gappa/<filter>.g); `certified` asks R to be
+// no more than the count proven, at compile time.
+//
+// No underflow: every difference is rounded from the input once (a subnormal difference is
+// exact), then all are scaled by one power of two so that the largest lies in [1, 2), and the
+// filter answers only when every nonzero scaled difference is at least 2^-w (the window). Such a
+// difference is an integer multiple of Q = 2^(-w-52); sums and products of multiples of Q^i and
+// Q^j round to multiples of Q^max(i,j) and Q^(i+j) (rounding to a coarser grid of powers of two
+// keeps the multiple; on a finer one the value is representable), so a nonzero computed value of
+// degree j is at least Q^j, and a product of degree j <= J is normal (no underflow error) when
+// J (w + 52) <= 1022. The bound eps fl(P) must be normal too (P >= Q^J when nonzero):
+// J (w + 52) - log2(eps) <= 1022. No overflow: scaled differences are below 2, so a value of
+// degree 9 is far below 2^100.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+
+#include "predicates/power_of_two.hpp"
+#include "predicates/sign.hpp"
+
+namespace exactmesh::predicates::detail {
+
+template <int R>
+struct Term {
+    double value;
+    double permanent;
+};
+
+/// A rounded (and exactly scaled) coordinate difference.
+inline Term<1> difference(double d) noexcept {
+    return {d, std::fabs(d)};
+}
+/// A nonnegative double computed with one rounding (a constant times a bound).
+inline Term<1> rounded_constant(double x) noexcept {
+    return {x, x};
+}
+
+template <int R, int S>
+Term<std::max(R, S) + 1> operator+(const Term<R>& a, const Term<S>& b) noexcept {
+    return {a.value + b.value, a.permanent + b.permanent};
+}
+template <int R, int S>
+Term<std::max(R, S) + 1> operator-(const Term<R>& a, const Term<S>& b) noexcept {
+    return {a.value - b.value, a.permanent + b.permanent};
+}
+template <int R, int S>
+Term<R + S + 1> operator*(const Term<R>& a, const Term<S>& b) noexcept {
+    return {a.value * b.value, a.permanent * b.permanent};
+}
+/// Times a power of two that neither overflows nor underflows: exact, no rounding.
+template <int R>
+Term<R> scaled(const Term<R>& a, double power) noexcept {
+    return {a.value * power, a.permanent * power};
+}
+/// The negation when `negative`: exact.
+template <int R>
+Term<R> signed_by(const Term<R>& a, bool negative) noexcept {
+    return {negative ? -a.value : a.value, a.permanent};
+}
+
+/// sign(E) when |fl(E)| > eps fl(P), proven for at most `ProvenRoundings` roundings.
+template <int ProvenRoundings, int R>
+std::optional<Sign> certified(const Term<R>& t, double eps) noexcept {
+    static_assert(R <= ProvenRoundings, "the Gappa proof covers fewer roundings than this term");
+    const double bound = eps * t.permanent;
+    if (t.value > bound) return Sign::Positive;
+    if (-t.value > bound) return Sign::Negative;
+    return std::nullopt;
+}
+
+/// Scales the N rounded differences in `d` by the power of two that brings the largest
+/// magnitude to [1, 2), in place, and returns the shift; std::nullopt (nothing to filter) when
+/// they are all zero, one is not finite, or a nonzero one ends below `window_min` (a power of
+/// two: see the header comment).
+template <std::size_t N>
+std::optional<int> scale_differences(double (&d)[N], double window_min) noexcept {
+    double largest = 0;
+    for (const double x : d) largest = std::max(largest, std::fabs(x));
+    if (largest == 0 || !std::isfinite(largest)) return std::nullopt;  // NaN fails both ways
+    const int shift = unit_shift(largest);
+    const PowerOfTwo unit(shift);
+    for (double& x : d) {
+        x = unit(x);
+        if (x != 0 && std::fabs(x) < window_min) return std::nullopt;
+    }
+    return shift;
+}
+
+}  // namespace exactmesh::predicates::detail

@@ -1,0 +1,106 @@
+# proofs/gappa/tet_quality_3d_radius_edge_filter.g: Gappa proof of the double filter of
+# exactmesh::predicates::compare_radius_edge_3d (predicates/tet_quality_3d.cpp).
+#
+# Proves: |num|^2 2^a - 4 det^2 m^2 l^2 2^b (num = |u|^2 (v x w) + |v|^2 (w x u) + |w|^2 (u x v),
+#   det = u . (v x w), the bound B = m 2^e, m in [1, 2), l^2 one squared edge length, a and b
+#   powers of two that make the comparison that of R^2 with B^2 l^2), computed in double, is
+#   within tet_quality_3d_radius_edge_filter_eps times its computed permanent of its exact value.
+#   Roundings per monomial: 28 (num 12, |num|^2 27; det 8, det^2 17, times m^2 (one rounding) 19,
+#   times l^2 (5) 25; the final difference 28). The degree-8 polynomial needs no chaining of
+#   per-operation lemmas here: the per-monomial model reduces it to one product of 28 factors.
+#
+# Model (proofs/invariants/filters.md, "Relative filters" and "dot_sign_3d and
+# tet_quality_3d"): inside the filter's window nothing underflows or overflows, so every
+# operation rounds to nearest with a relative error delta, |delta| <= u = 2^-53, and the
+# computed value is the sum of the exact monomials M (products of exact coordinate
+# differences, and the constants), each multiplied by one factor (1 + delta) per rounding on
+# its path [Higham02 §3.1]; the computed permanent is the sum of |M| with factors of its own
+# roundings, and eps (a power of two) multiplies it exactly. The verdict |value| > eps
+# permanent is sound when, for every monomial, |prod_{i<=k} (1 + d_i) - 1| <= eps
+# prod_{j<=k} (1 + e_j), k the most roundings on a path (value and permanent go through the
+# same operations): summed over the monomials, |computed - exact| <= eps computed
+# permanent. Sharing of roundings between value and permanent is ignored: independent
+# factors cover it. valueK and boundK below have K factors; the goals are stated for the
+# counts the code uses (the header's *_roundings constants, checked by the CTest test).
+#
+# Placeholder, filled in from predicates/filter_constants.hpp by
+# proofs/check_relative_constants.cmake (CTest test proofs.tet_quality_3d_radius_edge_filter), which requires eps
+# to be a power of two that Gappa proves while eps / 2 fails: the least power of two this
+# model allows for the largest count.
+#     @EPS@        tet_quality_3d_radius_edge_filter_eps
+#@ -Eprecision=200
+#@ -Echange-threshold=0
+#@ -Eno-auto-dichotomy
+
+# u = 2^-53; value_k, bound_k: k roundings.
+value1 = 1 + d1;
+bound1 = 1 + e1;
+value2 = value1 * (1 + d2);
+bound2 = bound1 * (1 + e2);
+value3 = value2 * (1 + d3);
+bound3 = bound2 * (1 + e3);
+value4 = value3 * (1 + d4);
+bound4 = bound3 * (1 + e4);
+value5 = value4 * (1 + d5);
+bound5 = bound4 * (1 + e5);
+value6 = value5 * (1 + d6);
+bound6 = bound5 * (1 + e6);
+value7 = value6 * (1 + d7);
+bound7 = bound6 * (1 + e7);
+value8 = value7 * (1 + d8);
+bound8 = bound7 * (1 + e8);
+value9 = value8 * (1 + d9);
+bound9 = bound8 * (1 + e9);
+value10 = value9 * (1 + d10);
+bound10 = bound9 * (1 + e10);
+value11 = value10 * (1 + d11);
+bound11 = bound10 * (1 + e11);
+value12 = value11 * (1 + d12);
+bound12 = bound11 * (1 + e12);
+value13 = value12 * (1 + d13);
+bound13 = bound12 * (1 + e13);
+value14 = value13 * (1 + d14);
+bound14 = bound13 * (1 + e14);
+value15 = value14 * (1 + d15);
+bound15 = bound14 * (1 + e15);
+value16 = value15 * (1 + d16);
+bound16 = bound15 * (1 + e16);
+value17 = value16 * (1 + d17);
+bound17 = bound16 * (1 + e17);
+value18 = value17 * (1 + d18);
+bound18 = bound17 * (1 + e18);
+value19 = value18 * (1 + d19);
+bound19 = bound18 * (1 + e19);
+value20 = value19 * (1 + d20);
+bound20 = bound19 * (1 + e20);
+value21 = value20 * (1 + d21);
+bound21 = bound20 * (1 + e21);
+value22 = value21 * (1 + d22);
+bound22 = bound21 * (1 + e22);
+value23 = value22 * (1 + d23);
+bound23 = bound22 * (1 + e23);
+value24 = value23 * (1 + d24);
+bound24 = bound23 * (1 + e24);
+value25 = value24 * (1 + d25);
+bound25 = bound24 * (1 + e25);
+value26 = value25 * (1 + d26);
+bound26 = bound25 * (1 + e26);
+value27 = value26 * (1 + d27);
+bound27 = bound26 * (1 + e27);
+value28 = value27 * (1 + d28);
+bound28 = bound27 * (1 + e28);
+
+{ |d1| <= 1b-53 /\ |d2| <= 1b-53 /\ |d3| <= 1b-53 /\ |d4| <= 1b-53 /\ |d5| <= 1b-53 /\
+  |d6| <= 1b-53 /\ |d7| <= 1b-53 /\ |d8| <= 1b-53 /\ |d9| <= 1b-53 /\ |d10| <= 1b-53 /\
+  |d11| <= 1b-53 /\ |d12| <= 1b-53 /\ |d13| <= 1b-53 /\ |d14| <= 1b-53 /\ |d15| <= 1b-53 /\
+  |d16| <= 1b-53 /\ |d17| <= 1b-53 /\ |d18| <= 1b-53 /\ |d19| <= 1b-53 /\ |d20| <= 1b-53 /\
+  |d21| <= 1b-53 /\ |d22| <= 1b-53 /\ |d23| <= 1b-53 /\ |d24| <= 1b-53 /\ |d25| <= 1b-53 /\
+  |d26| <= 1b-53 /\ |d27| <= 1b-53 /\ |d28| <= 1b-53 /\ |e1| <= 1b-53 /\ |e2| <= 1b-53 /\
+  |e3| <= 1b-53 /\ |e4| <= 1b-53 /\ |e5| <= 1b-53 /\ |e6| <= 1b-53 /\ |e7| <= 1b-53 /\
+  |e8| <= 1b-53 /\ |e9| <= 1b-53 /\ |e10| <= 1b-53 /\ |e11| <= 1b-53 /\ |e12| <= 1b-53 /\
+  |e13| <= 1b-53 /\ |e14| <= 1b-53 /\ |e15| <= 1b-53 /\ |e16| <= 1b-53 /\ |e17| <= 1b-53 /\
+  |e18| <= 1b-53 /\ |e19| <= 1b-53 /\ |e20| <= 1b-53 /\ |e21| <= 1b-53 /\ |e22| <= 1b-53 /\
+  |e23| <= 1b-53 /\ |e24| <= 1b-53 /\ |e25| <= 1b-53 /\ |e26| <= 1b-53 /\ |e27| <= 1b-53 /\
+  |e28| <= 1b-53
+  ->
+     value28 - 1 - @EPS@ * bound28 <= 0 /\ 1 - value28 - @EPS@ * bound28 <= 0 }
