@@ -24,6 +24,7 @@
 // filter is inconclusive: GMP rationals.
 #include "predicates/angle_comparisons_3d.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -31,6 +32,7 @@
 #include "predicates/exact_range.hpp"
 #include "predicates/exact_reference.hpp"
 #include "predicates/filter_constants.hpp"
+#include "predicates/scaled_integers.hpp"
 #include "predicates/stats.hpp"
 
 namespace exactmesh::predicates {
@@ -132,17 +134,30 @@ mpq_class exact_dot(const ExactVector& a, const ExactVector& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
-void exact_dihedral_terms(const Dihedral& a, mpq_class& d, mpq_class& norms) {
+/// d = n1 . n2 and N = |n1|^2 |n2|^2 of the dihedral at edge (i, j), n1 and n2 the normals of
+/// its two faces, on integer corners: v holds the 4 corners' 12 coordinates (scaled).
+void integer_dihedral_terms(const Dihedral& a, const mpz_class* v, mpz_class& d, mpz_class& norms) {
     unsigned k = 0;
     while (k == a.i || k == a.j) ++k;
     unsigned l = k + 1;
     while (l == a.i || l == a.j) ++l;
-    const double* o = a.p[a.i];
-    const ExactVector e = exact_difference(a.p[a.j], o);
-    const ExactVector n1 = exact_cross(e, exact_difference(a.p[k], o));
-    const ExactVector n2 = exact_cross(e, exact_difference(a.p[l], o));
-    d = exact_dot(n1, n2);
-    norms = exact_dot(n1, n1) * exact_dot(n2, n2);
+    using IntVector = std::array<mpz_class, 3>;
+    const auto diff = [&](unsigned p, unsigned o) {
+        return IntVector{v[3 * p] - v[3 * o], v[3 * p + 1] - v[3 * o + 1],
+                         v[3 * p + 2] - v[3 * o + 2]};
+    };
+    const auto cross = [](const IntVector& x, const IntVector& y) {
+        return IntVector{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
+                         x[0] * y[1] - x[1] * y[0]};
+    };
+    const auto dot = [](const IntVector& x, const IntVector& y) {
+        return mpz_class(x[0] * y[0] + x[1] * y[1] + x[2] * y[2]);
+    };
+    const IntVector e = diff(a.j, a.i);
+    const IntVector n1 = cross(e, diff(k, a.i));
+    const IntVector n2 = cross(e, diff(l, a.i));
+    d = dot(n1, n2);
+    norms = dot(n1, n1) * dot(n2, n2);
 }
 
 /// sign(cos a - cos b) from the signs of d_a, d_b and of X = d_a^2 N_b - d_b^2 N_a.
@@ -243,12 +258,25 @@ Sign compare_dihedral(const Dihedral& a, const Dihedral& b) {
         }
     }
     EM_STAT(compare_dihedral, gmp);
-    mpq_class da, na, db, nb;
-    exact_dihedral_terms(a, da, na);
-    exact_dihedral_terms(b, db, nb);
-    const Sign sa = reference::sign_of(da), sb = reference::sign_of(db);
-    const Sign x = reference::sign_of(da * da * nb - db * db * na);
-    return -cosine_order(sa, sb, x);
+    // Both tetrahedra's corners as integers on one power-of-two scale (homogeneous terms of
+    // degree 4 and 8: the signs below are those of the real values).
+    std::array<double, 24> xyz{};
+    for (unsigned k = 0; k < 4; ++k) {
+        for (unsigned i = 0; i < 3; ++i) {
+            xyz[3 * k + i] = a.p[k][i];
+            xyz[12 + 3 * k + i] = b.p[k][i];
+        }
+    }
+    const std::array<mpz_class, 24> v = detail::scaled_integers<24>(xyz);
+    mpz_class da, na, db, nb;
+    integer_dihedral_terms(a, v.data(), da, na);
+    integer_dihedral_terms(b, v.data() + 12, db, nb);
+    const auto sign = [](const mpz_class& x) {
+        const int s = sgn(x);
+        return s > 0 ? Sign::Positive : (s < 0 ? Sign::Negative : Sign::Zero);
+    };
+    const Sign x = sign(da * da * nb - db * db * na);
+    return -cosine_order(sign(da), sign(db), x);
 }
 
 Dihedral smallest_dihedral(const TetCorners& p) {

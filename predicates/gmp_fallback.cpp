@@ -8,6 +8,8 @@
 // cycles on a conforming run whose coordinates span 1e-322..1e231 (perf, 2026-11-23).
 #include "predicates/gmp_fallback.hpp"
 
+#include "predicates/scaled_integers.hpp"
+
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -21,35 +23,11 @@ namespace exactmesh::predicates {
 
 namespace {
 
+using detail::scaled_integers;
+
 Sign sign_of(const mpz_class& x) {
     const int s = sgn(x);
     return s > 0 ? Sign::Positive : (s < 0 ? Sign::Negative : Sign::Zero);
-}
-
-/// The N input coordinates of one call as integers, all scaled by the same power of two:
-/// 2^-least (INT_MAX when every coordinate is 0), stored in `least_out` when given.
-template <std::size_t N>
-std::array<mpz_class, N> scaled_integers(const std::array<double, N>& x, int* least_out = nullptr) {
-    std::array<std::int64_t, N> mantissa{};
-    std::array<int, N> exponent{};
-    int least = INT_MAX;
-    for (std::size_t i = 0; i < N; ++i) {
-        if (x[i] == 0.0) continue;
-        int e = 0;
-        const double f = std::frexp(x[i], &e);  // x = f·2^e, 0.5 <= |f| < 1: f·2^53 is an integer
-        mantissa[i] = static_cast<std::int64_t>(std::ldexp(f, 53));
-        exponent[i] = e - 53;
-        least = std::min(least, exponent[i]);
-    }
-    std::array<mpz_class, N> out;
-    for (std::size_t i = 0; i < N; ++i) {
-        if (mantissa[i] == 0) continue;  // stays 0
-        out[i] = static_cast<long>(mantissa[i]);
-        mpz_mul_2exp(out[i].get_mpz_t(), out[i].get_mpz_t(),
-                     static_cast<mp_bitcnt_t>(exponent[i] - least));
-    }
-    if (least_out != nullptr) *least_out = least;
-    return out;
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ using tri::TetIdx;
 using tri::TetMesh3;
 using tri::VertIdx;
 
-constexpr long double kPi = 3.141592653589793238462643383279502884L;
+constexpr double kPi = 3.141592653589793238462643383279502884;
 
 TetCorners corners_of(const TetMesh3& mesh, const Tet& t) {
     return {mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])};
@@ -52,7 +52,7 @@ struct Work {
     TetMesh3 mesh;
     std::vector<double> slot_attributes;  ///< per slot; empty without regions
     const SliverRemoval3Options* options = nullptr;
-    long double threshold_radians = 0;
+    double threshold_radians = 0;
 
     bool over_bounds(const TetCorners& p) const {
         if (predicates::compare_radius_edge_3d(p[0], p[1], p[2], p[3],
@@ -64,10 +64,19 @@ struct Work {
     }
 
     /// Whether tetrahedron t has a dihedral angle below the threshold (rounded: a selection,
-    /// not a decision; the long double angle is the same for the mesh scaled by 2^k).
+    /// not a decision; the double angle is the same for the mesh scaled by 2^k).
     bool below_threshold(TetIdx t) const {
         const TetCorners p = corners_of(mesh, mesh.tet(t));
-        return predicates::dihedral_radians(predicates::smallest_dihedral(p)) < threshold_radians;
+        // The six rounded angles, no exact comparison: finding the exact smallest first (five
+        // filtered comparisons, ties in GMP) was a third of sliver removal's time.
+        for (unsigned i = 0; i < 4; ++i) {
+            for (unsigned j = i + 1; j < 4; ++j) {
+                if (static_cast<double>(predicates::dihedral_radians(
+                        predicates::Dihedral{p, i, j})) < threshold_radians)
+                    return true;
+            }
+        }
+        return false;
     }
 
     std::vector<TetIdx> bad_tets() const {
@@ -139,7 +148,7 @@ std::uint64_t swap_pass(Work& work, const tri::SwapLocks3& locks, SliverRemoval3
 
 // ---- Smoothing ----
 
-using Vec = std::array<long double, 3>;
+using Vec = std::array<double, 3>;
 
 Vec sub(const Vec& a, const Vec& b) {
     return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
@@ -147,7 +156,7 @@ Vec sub(const Vec& a, const Vec& b) {
 Vec cross(const Vec& a, const Vec& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-long double dot(const Vec& a, const Vec& b) {
+double dot(const Vec& a, const Vec& b) {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
@@ -162,9 +171,18 @@ struct StarFrame {
     int exponent = 0;
 };
 
-/// The six dihedral angles' minimum of the tetrahedron with its moving corner at x (long
-/// double; an inverted or flat one gives -1).
-long double smallest_angle(const std::array<Vec, 4>& corners, unsigned moving, const Vec& x) {
+/// A pseudo-angle of atan2(y, x) for y >= 0: 1 - x / (|x| + y), in [0, 2], increasing with the
+/// angle over [0, pi] (0 when both are 0). The search below only takes minima and compares them,
+/// so an increasing function of the angle steers it the same way as the angle, at a fraction of
+/// atan2's cost (atan2 was 40% of tetmesh's time on the wing).
+double pseudo_angle(double y, double x) {
+    const double r = std::fabs(x) + y;
+    return r > 0 ? 1 - x / r : 0;
+}
+
+/// The six dihedral angles' minimum, as pseudo_angle, of the tetrahedron with its moving
+/// corner at x (an inverted or flat one gives -1).
+double smallest_angle(const std::array<Vec, 4>& corners, unsigned moving, const Vec& x) {
     std::array<Vec, 4> p = corners;
     p[moving] = x;
     // orient3d's positive orientation is a negative a . (b x c) [Shewchuk97].
@@ -172,20 +190,20 @@ long double smallest_angle(const std::array<Vec, 4>& corners, unsigned moving, c
     if (dot(a, cross(b, c)) >= 0) return -1;
     static constexpr unsigned kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2},
                                               {1, 2, 0, 3}, {1, 3, 2, 0}, {2, 3, 0, 1}};
-    long double smallest = kPi;
+    double smallest = 2;
     for (const auto& edge : kEdges) {
         const Vec e = sub(p[edge[1]], p[edge[0]]);
         const Vec u = sub(p[edge[2]], p[edge[0]]);
         const Vec w = sub(p[edge[3]], p[edge[0]]);
         const Vec n1 = cross(e, u), n2 = cross(e, w);
-        const long double det = std::fabs(dot(e, cross(u, w)));
-        smallest = std::min(smallest, std::atan2(std::sqrt(dot(e, e)) * det, dot(n1, n2)));
+        const double det = std::fabs(dot(e, cross(u, w)));
+        smallest = std::min(smallest, pseudo_angle(std::sqrt(dot(e, e)) * det, dot(n1, n2)));
     }
     return smallest;
 }
 
-long double star_smallest_angle(const StarFrame& frame, const Vec& x) {
-    long double smallest = kPi;
+double star_smallest_angle(const StarFrame& frame, const Vec& x) {
+    double smallest = 2;
     for (std::size_t i = 0; i < frame.tets.size(); ++i)
         smallest = std::min(smallest, smallest_angle(frame.tets[i], frame.moving[i], x));
     return smallest;
@@ -229,19 +247,19 @@ StarFrame star_frame(const TetMesh3& mesh, VertIdx v, const std::vector<TetIdx>&
 std::vector<Vec> candidate_offsets(const StarFrame& frame) {
     std::vector<Vec> out;
     Vec centroid{0, 0, 0};
-    long double shortest = 4;
+    double shortest = 4;
     for (const Vec& q : frame.neighbours) {
         for (int i = 0; i < 3; ++i)
             centroid[static_cast<std::size_t>(i)] += q[static_cast<std::size_t>(i)];
         shortest = std::min(shortest, std::sqrt(dot(q, q)));
     }
-    const auto n = static_cast<long double>(frame.neighbours.size());
+    const auto n = static_cast<double>(frame.neighbours.size());
     for (auto& x : centroid) x /= n;
     out.push_back(centroid);
     out.push_back({centroid[0] / 2, centroid[1] / 2, centroid[2] / 2});
     // The ascent direction of the star's smallest angle, by central differences (the smallest
     // angle is piecewise smooth; its gradient is the active angle's).
-    const long double h = shortest * 0x1p-20L;
+    const double h = shortest * 0x1p-20;
     Vec gradient{0, 0, 0};
     for (std::size_t i = 0; i < 3; ++i) {
         Vec plus{0, 0, 0}, minus{0, 0, 0};
@@ -250,10 +268,10 @@ std::vector<Vec> candidate_offsets(const StarFrame& frame) {
         gradient[i] =
             (star_smallest_angle(frame, plus) - star_smallest_angle(frame, minus)) / (2 * h);
     }
-    const long double length = std::sqrt(dot(gradient, gradient));
+    const double length = std::sqrt(dot(gradient, gradient));
     if (length > 0 && std::isfinite(length)) {
         for (int k = 1; k <= 6; ++k) {
-            const long double step = std::ldexp(shortest, -k) / length;
+            const double step = std::ldexp(shortest, -k) / length;
             out.push_back({gradient[0] * step, gradient[1] * step, gradient[2] * step});
         }
     }
@@ -261,19 +279,19 @@ std::vector<Vec> candidate_offsets(const StarFrame& frame) {
     // (a max-min optimum along every single gradient), a step along one of the 26 lattice
     // directions that raises them all can still exist. Halves the step when none improves.
     Vec x{0, 0, 0};
-    long double best = star_smallest_angle(frame, x);
-    long double step = shortest / 4;
-    for (int iteration = 0; iteration < 24 && step > shortest * 0x1p-12L; ++iteration) {
+    double best = star_smallest_angle(frame, x);
+    double step = shortest / 4;
+    for (int iteration = 0; iteration < 24 && step > shortest * 0x1p-12; ++iteration) {
         Vec next = x;
-        long double next_value = best;
+        double next_value = best;
         for (int dx = -1; dx <= 1; ++dx) {
             for (int dy = -1; dy <= 1; ++dy) {
                 for (int dz = -1; dz <= 1; ++dz) {
                     if (dx == 0 && dy == 0 && dz == 0) continue;
-                    const long double scale =
-                        step / std::sqrt(static_cast<long double>(dx * dx + dy * dy + dz * dz));
+                    const double scale =
+                        step / std::sqrt(static_cast<double>(dx * dx + dy * dy + dz * dz));
                     const Vec y{x[0] + dx * scale, x[1] + dy * scale, x[2] + dz * scale};
-                    const long double value = star_smallest_angle(frame, y);
+                    const double value = star_smallest_angle(frame, y);
                     if (value > next_value) {
                         next_value = value;
                         next = y;
@@ -339,30 +357,47 @@ bool smooth_vertex(Work& work, VertIdx v, SliverRemoval3Counters& c) {
     Dihedral current{};
     const bool valid = star_smallest_exact(mesh, star, v, p, scratch, current);
     EM_ASSERT(valid);
-    // The improving candidates with their smallest angles (each Dihedral points into `points`,
-    // which no longer grows), best first by exact comparison.
-    std::vector<std::pair<Dihedral, std::size_t>> improving;
+    // Candidates in the order of their approximate smallest angle (the frame's double
+    // values: scale-free, a heuristic only), best first, those not approximately better than
+    // the current star skipped; the first that strictly raises the exact smallest angle (and
+    // keeps the bounds) is taken. Exact evaluation of every candidate, then an exact sort, cost
+    // most of tetmesh's time (2.2 of 2.4 s on box-with-hole at 35,000 tetrahedra).
+    const auto approximate = [&](const std::array<double, 3>& q) {
+        Vec x;
+        for (std::size_t i = 0; i < 3; ++i)
+            x[i] =
+                std::ldexp(static_cast<double>(q[i]) - static_cast<double>(p[i]), -frame.exponent);
+        return star_smallest_angle(frame, x);
+    };
+    const double now = star_smallest_angle(frame, Vec{0, 0, 0});
+    std::vector<std::pair<double, std::size_t>> order;
     for (std::size_t i = 0; i < points.size(); ++i) {
-        Dihedral smallest{};
-        if (!star_smallest_exact(mesh, star, v, points[i].data(), scratch, smallest)) continue;
-        if (compare_dihedral(smallest, current) == Sign::Positive)
-            improving.push_back({smallest, i});
+        const double value = approximate(points[i]);
+        if (value > now) order.push_back({value, i});
     }
-    if (improving.empty()) {
+    std::stable_sort(order.begin(), order.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    if (order.empty()) {
         ++c.moves_rejected;
         return false;
     }
-    std::stable_sort(improving.begin(), improving.end(), [](const auto& a, const auto& b) {
-        return compare_dihedral(a.first, b.first) == Sign::Positive;
-    });
     const unsigned over_before = work.options->keep_bounds ? star_over_bounds(work, star, v, p) : 0;
-    for (const auto& [smallest, i] : improving) {
+    bool improving = false;
+    for (const auto& [value, i] : order) {
+        Dihedral smallest{};
+        if (!star_smallest_exact(mesh, star, v, points[i].data(), scratch, smallest)) continue;
+        if (compare_dihedral(smallest, current) != Sign::Positive) continue;
+        improving = true;
         if (work.options->keep_bounds &&
             star_over_bounds(work, star, v, points[i].data()) > over_before)
             continue;
         for (std::size_t k = 0; k < 3; ++k) mesh.xyz[3 * std::size_t{v} + k] = points[i][k];
         ++c.moves_accepted;
         return true;
+    }
+    if (!improving) {
+        ++c.moves_rejected;
+        return false;
     }
     ++c.moves_vetoed;
     return false;
@@ -401,7 +436,7 @@ SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
 
     Work work;
     work.options = &options;
-    work.threshold_radians = static_cast<long double>(options.threshold_degrees) * kPi / 180;
+    work.threshold_radians = static_cast<double>(options.threshold_degrees) * kPi / 180;
     work.mesh = tri::make_tet_mesh_3d(conforming.mesh);
     work.slot_attributes = conforming.tet_attributes;
     SliverRemoval3Result result;

@@ -13,7 +13,7 @@
 //     facet vertices never move): a few candidate positions (the neighbours' centroid, halfway
 //     to it, steps along the ascent direction of the star's smallest dihedral angle, and the
 //     end of a compass search over 26 directions on that angle, which gets past the max-min
-//     points where several angles are active) are computed in long double in a frame centred
+//     points where several angles are active) are computed in doubles in a frame centred
 //     at the vertex and scaled by a power of two (so that the result is the same for the mesh
 //     scaled by any power of two) and rounded once; the best one (exact) is taken
 //     when every tetrahedron of the star stays positively oriented (exact orient3d) and the
