@@ -29,10 +29,15 @@ namespace {
 using triangulation::ConformingMesh3;
 using triangulation::Plc3;
 
-/// The size for a nominal h0: coarser (up to twice) when EXACTMESH_TEST_SCALE asks for less work.
-double test_size(double h0) {
+/// How much coarser the sizes are when EXACTMESH_TEST_SCALE asks for less work (at most 1.25:
+/// the meshes then have half as many tetrahedra; coarser, the domains' features dominate).
+double size_factor() {
     const double scale = exactmesh::testing::test_scale();
-    return scale < 1 ? h0 * std::min(2.0, 1 / std::cbrt(scale)) : h0;
+    return scale < 1 ? std::min(1.25, 1 / std::cbrt(scale)) : 1.0;
+}
+
+double test_size(double h0) {
+    return h0 * size_factor();
 }
 
 FrontalDelaunay3Options options_for(double h) {
@@ -124,8 +129,9 @@ TEST(Generators_FrontalDelaunay3d, SampleDomainsConformingAtTheSize) {
         const Plc3 plc = sample_domain_3d(c.domain, h);
         const FrontalDelaunay3Result result = mesh_and_check(plc, h, name);
         const std::uint32_t tets = result.mesh.mesh.tet_count();
-        EXPECT_GT(tets, 1000u) << name;
-        EXPECT_GT(result.counters.interior_points, 100u) << name;
+        const double fewer = std::pow(size_factor(), 3);
+        EXPECT_GT(tets, 1000 / fewer) << name;
+        EXPECT_GT(static_cast<double>(result.counters.interior_points), 100 / fewer) << name;
         const EdgeShares shares = edge_shares(result.mesh.mesh, h);
         std::printf("%s: %zu edges, %.3f in [0.5, 1.5] h, %.3f in [0.7, 1.4] h\n", name.c_str(),
                     shares.edges, shares.within_half, shares.within_tight);
