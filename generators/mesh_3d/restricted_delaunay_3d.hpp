@@ -284,7 +284,10 @@ class RestrictedDelaunay3 {
 
     /// Bowyer-Watson cavity of p from `seeds` that never crosses a subface outside `split`,
     /// shrunk until valid (see the header). Returns false when a seed would have to go.
-    bool build_cavity(const double* p, const std::vector<TetIdx>& seeds, const Split& split) {
+    /// With `required` (not kNone): false as soon as the grown cavity misses that tetrahedron
+    /// (shrinking only removes tetrahedra, so it could not come back).
+    bool build_cavity(const double* p, const std::vector<TetIdx>& seeds, const Split& split,
+                      TetIdx required = kNone) {
         if (excluded_.size() < m_.tet_slots()) excluded_.resize(m_.tet_slots(), 0);
         ++cavity_stamp_;
         std::vector<TetIdx> seed_list = seeds;
@@ -317,6 +320,7 @@ class RestrictedDelaunay3 {
                     cavity_.push_back(u);
                 }
             }
+            if (required != kNone && !in_attempt(required)) return false;
             const TetIdx bad = first_violation(p, seed_list, split);
             if (bad == kNone) {
                 if (shrunk) ++counters_.shrunk_cavities;
