@@ -57,6 +57,27 @@ generators::SizeFunction size_from_expression(const std::string& expression) {
         "expression " + expression);
 }
 
+generators::SizeFunction3 size3_from_option(const std::string& text) {
+    double uniform = 0;
+    if (generators::parse_uniform_size(text, uniform))
+        return generators::SizeFunction3::uniform(uniform);
+    std::error_code error;
+    if (std::filesystem::exists(text, error)) {
+        throw InputError("--size '" + text +
+                         "': size files are 2D only; give a number or an expression in x, y, z");
+    }
+    auto evaluator = compile(
+        text, 3, "--size '" + text + "' is neither a number > 0 nor an expression in x, y and z: ");
+    return generators::SizeFunction3::analytic(
+        [evaluator](double x, double y, double z) {
+            evaluator->v[0] = x;
+            evaluator->v[1] = y;
+            evaluator->v[2] = z;
+            return evaluator->parser.Eval();
+        },
+        "expression " + text);
+}
+
 generators::MetricField2 metric_from_expression(const std::string& text) {
     const std::string refusal =
         "--metric '" + text +

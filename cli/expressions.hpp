@@ -15,6 +15,7 @@
 
 #include "generators/adaptation/vertex_field.hpp"
 #include "generators/sizing/size_function.hpp"
+#include "generators/sizing/size_function_3d.hpp"
 #include "generators/stretched/metric_field_2d.hpp"
 
 namespace exactmesh::cli {
@@ -30,6 +31,11 @@ generators::SizeFunction size_from_expression(const std::string& expression);
 /// cannot be read is reported as such, not as a bad expression), else an expression in x and y.
 /// @throws InputError (io::FormatError for a bad file) naming the text.
 generators::SizeFunction size_from_option(const std::string& text);
+
+/// `--size` of `tetmesh`: a number (uniform), else an expression in x, y and z (muParser's
+/// syntax, as for the 2D --size). Size files are 2D only: an existing file is refused.
+/// @throws InputError naming the text (and muParser's message).
+generators::SizeFunction3 size3_from_option(const std::string& text);
 
 /// 'M11;M12;M22': three expressions in x and y (muParser's syntax, as for --size) separated by
 /// ';', the entries of a symmetric positive definite matrix at (x, y); or

@@ -7,7 +7,9 @@
 // .neigh, or .msh/.vtu by the output's extension; input vertices keep their numbers, Steiner
 // points follow them. After refinement, sliver removal (generators/mesh_3d/sliver_removal_3d)
 // unless --no-sliver-removal; --quality then reports the mesh before it (prefixed
-// before_sliver_removal_) and after it.
+// before_sliver_removal_) and after it. --generator frontal replaces Delaunay refinement by
+// frontal Delaunay insertion at --size (generators/mesh_3d/frontal_delaunay_3d), followed by
+// sliver removal as well.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -25,10 +27,12 @@
 #include "base/counter_table.hpp"
 #include "base/errors.hpp"
 #include "cli/commands.hpp"
+#include "cli/expressions.hpp"
 #include "cli/options.hpp"
 #include "cli/output.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
 #include "generators/mesh_3d/delaunay_refinement_3d.hpp"
+#include "generators/mesh_3d/frontal_delaunay_3d.hpp"
 #include "generators/mesh_3d/sliver_removal_3d.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/plc_format.hpp"
@@ -57,6 +61,8 @@ struct TetmeshArguments : CommandArguments {
     double max_volume = 0;   ///< 0: not given
     bool quality = false;
     bool no_sliver_removal = false;
+    std::string generator = "delaunay-refinement";
+    std::string size;  ///< empty: not given
 };
 
 /// The faces to write in the .face file: every subface once (a boundary face as seen from
@@ -126,26 +132,56 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     // fill nothing to keep (internal facets, edges in more than two triangles, are fine).
     tri::check_surface_closed_3d(plc, tri::validate_plc_3d(plc));
 
+    // The generator and its size, checked before any work.
+    const bool frontal = arguments.generator == "frontal";
+    if (!frontal && arguments.generator != "delaunay-refinement") {
+        throw InputError("--generator '" + arguments.generator +
+                         "' is not a 3D generator; the generators are: delaunay-refinement, "
+                         "frontal");
+    }
+    gen::FrontalDelaunay3Options frontal_options;
+    if (frontal) {
+        if (arguments.size.empty())
+            throw InputError("--generator frontal needs --size NUM|EXPR (the target edge length)");
+        if (arguments.radius_edge > 0 || arguments.max_volume > 0)
+            throw InputError(
+                "--radius-edge and --max-volume are Delaunay refinement's bounds; --generator "
+                "frontal takes --size");
+        frontal_options.size = size3_from_option(arguments.size);
+        frontal_options.max_steiner_points = arguments.max_steiner;
+    } else if (!arguments.size.empty()) {
+        throw InputError(
+            "--size is for --generator frontal; Delaunay refinement takes --max-volume (and "
+            "--radius-edge)");
+    }
+
     tri::BoundaryRecovery3Options options;
     options.max_steiner_points = arguments.max_steiner;
-    const bool refine = arguments.radius_edge > 0 || arguments.max_volume > 0;
+    const bool refine = !frontal && (arguments.radius_edge > 0 || arguments.max_volume > 0);
     gen::DelaunayRefinement3Options refinement;
     refinement.radius_edge_bound = arguments.radius_edge > 0 ? arguments.radius_edge : 2.0;
     refinement.max_volume = arguments.max_volume;
     refinement.max_steiner_points = arguments.max_steiner;
-    const bool remove_slivers = refine && !arguments.no_sliver_removal;
+    const bool remove_slivers = (refine || frontal) && !arguments.no_sliver_removal;
     gen::SliverRemoval3Options sliver_options;
     sliver_options.radius_edge_bound = refinement.radius_edge_bound;
     sliver_options.max_volume = refinement.max_volume;
     struct Meshed {
         tri::BoundaryRecovery3Result recovery;
         gen::DelaunayRefinement3Counters refinement;
+        gen::FrontalDelaunay3Counters frontal;
         gen::SliverRemoval3Counters slivers;
         tri::Tetrahedralization3 before_sliver_removal;  ///< kept for --quality only
         double sliver_seconds = 0;  ///< sliver removal's share of construct_seconds
     };
     auto [result, stats, seconds] = timed_construction([&] {
-        Meshed meshed{tri::boundary_recovery_3d(plc, options), {}, {}, {}, 0};
+        Meshed meshed{tri::boundary_recovery_3d(plc, options), {}, {}, {}, {}, 0};
+        if (frontal) {
+            gen::FrontalDelaunay3Result meshed_frontal =
+                gen::frontal_delaunay_3d(plc, std::move(meshed.recovery.mesh), frontal_options);
+            meshed.recovery.mesh = std::move(meshed_frontal.mesh);
+            meshed.frontal = meshed_frontal.counters;
+        }
         if (refine) {
             gen::DelaunayRefinement3Result refined =
                 gen::delaunay_refinement_3d(plc, std::move(meshed.recovery.mesh), refinement);
@@ -237,6 +273,11 @@ void run_tetmesh(const TetmeshArguments& arguments) {
             counters.emplace_back("spared_small_angle_tets", quality.small_angle);
             counters.emplace_back("over_bound_tets", quality.over_bound + quality.over_volume);
         }
+        if (frontal) {
+            for (auto& [name, value] :
+                 counters_by_name(gen::kFrontalDelaunay3CounterNames, result.frontal))
+                counters.emplace_back("frontal_" + name, value);
+        }
         if (remove_slivers) {
             for (auto& [name, value] :
                  counters_by_name(gen::kSliverRemoval3CounterNames, result.slivers))
@@ -294,6 +335,18 @@ void add_tetmesh_command(CLI::App& app) {
                      "Delaunay refinement: split every tetrahedron of larger volume (TetGen -a)")
         ->type_name("V")
         ->check(CLI::PositiveNumber);
+    command
+        ->add_option("--generator", arguments->generator,
+                     "The mesh generator after boundary recovery: delaunay-refinement (the "
+                     "default; runs when --radius-edge or --max-volume is given) or frontal "
+                     "(generators/mesh_3d/frontal_delaunay_3d: Rebay's frontal point placement "
+                     "with Bowyer-Watson insertion; needs --size)")
+        ->type_name("NAME");
+    command
+        ->add_option("--size", arguments->size,
+                     "--generator frontal: the target edge length, a number or an expression in "
+                     "x, y, z (muParser: '0.05 + 0.1 * sqrt(x^2 + y^2 + z^2)')")
+        ->type_name("NUM|EXPR");
     command->add_flag("--no-sliver-removal", arguments->no_sliver_removal,
                       "Keep the refined mesh as Delaunay refinement leaves it: no sliver removal "
                       "(generators/mesh_3d/sliver_removal_3d: MaxMinDihedral edge-face swapping "

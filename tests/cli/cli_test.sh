@@ -1396,6 +1396,40 @@ tetmesh_refine() {
   [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
 }
 
+tetmesh_frontal() {
+  write_cube_poly "$work/cube.poly"
+  # Frontal insertion at a uniform size, then sliver removal; the exact conformity check runs
+  # before writing. Counters, input vertices kept, edges near the size.
+  run 0 tetmesh "$work/cube.poly" --generator frontal --size 0.2 -o "$work/f.ele" --stats --quality || return
+  local name
+  for name in segment_splits subface_splits interior_points accepted_tets estimated_points; do
+    grep -Eq "^frontal_$name: [0-9]+$" "$work/out" || fail "--stats: no 'frontal_$name: N' line"
+  done
+  grep -Eq '^frontal_interior_points: [1-9]' "$work/out" || fail "frontal: no interior point"
+  grep -Eq '^sliver_removal_rounds: [0-9]+$' "$work/out" || fail "frontal: no sliver removal"
+  grep -q '^dihedral_degrees\[0,10): 0$' "$work/out" || fail "frontal: angles below 10 degrees left"
+  [[ $(head -n1 "$work/f.ele" | awk '{print $1}') -ge 300 ]] || fail "f.ele: fewer than 300 tetrahedra"
+  sed -n 2,9p "$work/f.node" | awk '{print $2, $3, $4}' | tr '\n' ' ' |
+    grep -q '^0 0 0 1 0 0 1 1 0 0 1 0 0 0 1 1 0 1 1 1 1 0 1 1 $' || fail "f.node: input vertices moved"
+  # Every edge of the mesh between 0.5 and 1.5 times the size, bar a few.
+  awk 'FNR == NR { if (FNR > 1) { x[$1] = $2; y[$1] = $3; z[$1] = $4 } next }
+       FNR > 1 { for (i = 2; i <= 5; ++i) for (j = i + 1; j <= 5; ++j) {
+         l = sqrt((x[$i]-x[$j])^2 + (y[$i]-y[$j])^2 + (z[$i]-z[$j])^2) / 0.2;
+         n++; if (l >= 0.5 && l <= 1.5) k++ } }
+       END { exit !(k >= 0.9 * n) }' "$work/f.node" "$work/f.ele" || fail "f: edges far from the size"
+  # A size expression in x, y, z; a built-in domain.
+  run 0 tetmesh --domain ellipsoid --domain-size 0.3 --generator frontal --size '0.15 + 0.1 * abs(z)' -o "$work/e.vtu" || return
+  # The generator's name, the size's presence and kind are checked before any work.
+  expect_error 2 'delaunay-refinement, frontal' tetmesh "$work/cube.poly" --generator octree --size 0.2 -o "$work/x.ele"
+  expect_error 2 'needs --size' tetmesh "$work/cube.poly" --generator frontal -o "$work/x.ele"
+  expect_error 2 'is for --generator frontal' tetmesh "$work/cube.poly" --size 0.2 -o "$work/x.ele"
+  expect_error 2 'takes --size' tetmesh "$work/cube.poly" --generator frontal --size 0.2 --max-volume 0.1 -o "$work/x.ele"
+  expect_error 2 'expression in x, y and z' tetmesh "$work/cube.poly" --generator frontal --size 'w + 1' -o "$work/x.ele"
+  expect_error 2 'budget of 1000 exceeded at once: the size uniform 0.001 asks for about' \
+    tetmesh "$work/cube.poly" --generator frontal --size 0.001 --max-steiner 1000 -o "$work/x.ele"
+  [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
@@ -1403,7 +1437,7 @@ case "$case_name" in
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
-    mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine)
+    mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine | tetmesh_frontal)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

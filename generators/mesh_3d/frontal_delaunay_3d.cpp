@@ -1,0 +1,455 @@
+// SPDX-License-Identifier: MIT
+// Frontal Delaunay tetrahedral mesh generation (see frontal_delaunay_3d.hpp).
+//
+// State beside the restricted Delaunay machinery (restricted_delaunay_3d.hpp): per tetrahedron
+// slot a status (waiting, active, accepted), a version that grows whenever an insertion reuses
+// the slot, and the key R / f; a binary heap of (key, slot, version) for the active
+// tetrahedra, whose stale entries are skipped when popped. Loop: pop the worst active
+// tetrahedron; place its point from its front face; insert it (then classify the new
+// tetrahedra and activate the waiting ones beside accepted ones) or reject it (then accept the
+// tetrahedron and activate its waiting neighbours).
+#include "generators/mesh_3d/frontal_delaunay_3d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <string>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "base/number_text.hpp"
+#include "generators/mesh_3d/restricted_delaunay_3d.hpp"
+
+namespace exactmesh::generators {
+
+using namespace restricted_3d;  // NOLINT: the shared machinery and its aliases
+
+namespace {
+
+enum class Status : std::uint8_t { Waiting, Active, Accepted };
+
+struct ActiveEntry {
+    double key;  // R / f: larger first
+    TetIdx t;
+    std::uint32_t version;
+    bool operator<(const ActiveEntry& o) const { return key < o.key || (key == o.key && t > o.t); }
+};
+
+constexpr double kRegularCircumradius = 0.61237243569579452;  // sqrt(3/8): edge 1
+constexpr double kSqrt2 = 1.4142135623730951;
+
+using Vec = std::array<double, 3>;
+
+Vec sub(const Vec& p, const Vec& q) {
+    return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+}
+double dot(const Vec& p, const Vec& q) {
+    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+}
+Vec cross(const Vec& p, const Vec& q) {
+    return {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
+}
+double norm(const Vec& p) {
+    return std::sqrt(dot(p, p));
+}
+
+/// The circumcentre of the triangle 0, u, v (relative to its first corner).
+Vec triangle_center(const Vec& u, const Vec& v) {
+    const Vec n = cross(u, v);
+    const double uu = dot(u, u), vv = dot(v, v), nn = dot(n, n);
+    const Vec w{uu * v[0] - vv * u[0], uu * v[1] - vv * u[1], uu * v[2] - vv * u[2]};
+    const Vec c = cross(w, n);
+    return {c[0] / (2 * nn), c[1] / (2 * nn), c[2] / (2 * nn)};
+}
+
+/// The circumcentre of the tetrahedron 0, u, v, w (relative to its first corner).
+Vec tet_center(const Vec& u, const Vec& v, const Vec& w) {
+    const Vec vw = cross(v, w), wu = cross(w, u), uv = cross(u, v);
+    const double det2 = 2 * dot(u, vw);
+    const double uu = dot(u, u), vv = dot(v, v), ww = dot(w, w);
+    Vec c;
+    for (int i = 0; i < 3; ++i) c[i] = (uu * vw[i] + vv * wu[i] + ww * uv[i]) / det2;
+    return c;
+}
+
+class Frontal final : public RestrictedDelaunay3 {
+  public:
+    Frontal(const Plc3& plc, ConformingMesh3 recovered, const FrontalDelaunay3Options& options,
+            std::uint64_t budget, int exponent)
+        : RestrictedDelaunay3(plc, std::move(recovered), budget, "frontal delaunay 3d"),
+          options_(options),
+          exponent_(exponent) {}
+
+    FrontalDelaunay3Result run();
+    FrontalDelaunay3Counters result_counters;
+
+  private:
+    const FrontalDelaunay3Options& options_;
+    int exponent_;  ///< differences are measured in units of 2^exponent_ (near the size)
+    bool interior_ = false;
+    FrontalDelaunay3Counters& fc_ = result_counters;
+    std::vector<Status> status_;
+    std::vector<std::uint32_t> version_;
+    std::vector<double> key_;
+    std::priority_queue<ActiveEntry> heap_;
+    std::vector<TetIdx> created_;
+
+    /// v's position relative to `origin`, in units of 2^exponent_ (exact scaling).
+    Vec relative(const double* p, const double* origin) const {
+        return {std::ldexp(p[0] - origin[0], -exponent_), std::ldexp(p[1] - origin[1], -exponent_),
+                std::ldexp(p[2] - origin[2], -exponent_)};
+    }
+    /// The size at p in units of 2^exponent_.
+    double size_at(const Vec& p) const {
+        return std::ldexp(options_.size(p[0], p[1], p[2]), -exponent_);
+    }
+    Vec centroid(std::initializer_list<VertIdx> vertices) const {
+        Vec c{0, 0, 0};
+        for (const VertIdx v : vertices)
+            for (int i = 0; i < 3; ++i) c[i] += point(v)[i];
+        const double n = static_cast<double>(vertices.size());
+        return {c[0] / n, c[1] / n, c[2] / n};
+    }
+
+    void grow_slots() {
+        const std::size_t slots = m_.tet_slots();
+        if (status_.size() < slots) {
+            status_.resize(slots, Status::Waiting);
+            version_.resize(slots, 0);
+            key_.resize(slots, 0);
+        }
+    }
+
+    void on_created(TetIdx t) override {
+        grow_slots();
+        ++version_[t];
+        if (interior_) {
+            created_.push_back(t);
+            return;
+        }
+        // Boundary fitting: queue the subfaces and subsegments of t over the size.
+        for (unsigned k = 0; k < 4; ++k) {
+            const Key3 key = face_key(t, k);
+            if (subfaces_.count(key) == 0) continue;
+            const double* a = point(key[0]);
+            const Vec u = relative(point(key[1]), a), v = relative(point(key[2]), a);
+            const double r = norm(triangle_center(u, v));
+            if (r > size_at(centroid({key[0], key[1], key[2]})) / kSqrt2)
+                subface_queue_.push_back(key);
+        }
+        for (const auto& e : kEdges) {
+            const VertIdx a = m_.vertex(t, e[0]), b = m_.vertex(t, e[1]);
+            const std::uint64_t key = edge_key(a, b);
+            if (subsegments_.count(key) == 0) continue;
+            if (norm(relative(point(b), point(a))) > kSqrt2 * size_at(centroid({a, b})))
+                segment_queue_.push_back(key);
+        }
+    }
+
+    /// Writes key_ and status_ of a live tetrahedron (accepted or waiting).
+    void classify(TetIdx t) {
+        const double* a = point(m_.vertex(t, 0));
+        const Vec u = relative(point(m_.vertex(t, 1)), a), v = relative(point(m_.vertex(t, 2)), a),
+                  w = relative(point(m_.vertex(t, 3)), a);
+        const double radius = norm(tet_center(u, v, w));
+        const double f =
+            kRegularCircumradius *
+            size_at(centroid({m_.vertex(t, 0), m_.vertex(t, 1), m_.vertex(t, 2), m_.vertex(t, 3)}));
+        const double key = radius / f;
+        key_[t] = std::isnan(key) ? INFINITY : key;
+        status_[t] = key_[t] <= options_.acceptance ? Status::Accepted : Status::Waiting;
+    }
+
+    bool is_front_face(TetIdx t, unsigned k) const {
+        const FaceIdx g = m_.adj[4 * t + k];
+        return g == kNone || is_subface(t, k) ||
+               status_[triangulation::tet_of(g)] == Status::Accepted;
+    }
+
+    bool on_front(TetIdx t) const {
+        for (unsigned k = 0; k < 4; ++k)
+            if (is_front_face(t, k)) return true;
+        return false;
+    }
+
+    void activate(TetIdx t) {
+        if (status_[t] != Status::Waiting) return;
+        status_[t] = Status::Active;
+        heap_.push({key_[t], t, version_[t]});
+    }
+
+    void activate_neighbours(TetIdx t) {
+        for (unsigned k = 0; k < 4; ++k) {
+            const FaceIdx g = m_.adj[4 * t + k];
+            if (g != kNone && !is_subface(t, k)) activate(triangulation::tet_of(g));
+        }
+    }
+
+    void accept(TetIdx t) {
+        status_[t] = Status::Accepted;
+        ++fc_.forced_accepts;
+        activate_neighbours(t);
+    }
+
+    /// Rebay's point for front face k of t (see the header), or a non-finite point.
+    std::array<double, 3> place(TetIdx t, unsigned k) const {
+        const unsigned* lf = triangulation::kFaceVertex[k];
+        const double* a = point(m_.vertex(t, lf[0]));
+        const Vec u = relative(point(m_.vertex(t, lf[1])), a);
+        const Vec v = relative(point(m_.vertex(t, lf[2])), a);
+        const Vec w = relative(point(m_.vertex(t, k)), a);  // the apex: the inner side
+        const Vec m = triangle_center(u, v);
+        const double r = norm(m);
+        Vec n = cross(u, v);
+        const double length = norm(n);
+        for (double& x : n) x /= length;
+        if (dot(n, w) < 0)
+            for (double& x : n) x = -x;
+        const Vec c = tet_center(u, v, w);
+        const double q = dot(sub(c, m), n);
+        const double radius = norm(c);
+        Vec absolute_m;
+        for (int i = 0; i < 3; ++i) absolute_m[i] = a[i] + std::ldexp(m[i], exponent_);
+        const double f = kRegularCircumradius * size_at(absolute_m);
+        double d;
+        if (q >= r) {
+            const double rho = std::min(std::max(f, r), (r * r + q * q) / (2 * q));
+            d = std::min(rho + std::sqrt(std::max(0.0, rho * rho - r * r)), q);
+        } else {
+            // The circumcentre lies closer to the face than r (or behind it): the face is
+            // large for the size. Rebay's distance, kept inside the circumsphere (whose far
+            // point on the normal is at q + R) by half.
+            const double rho = std::max(f, r);
+            d = std::min(rho + std::sqrt(std::max(0.0, rho * rho - r * r)), 0.5 * (q + radius));
+        }
+        std::array<double, 3> x;
+        for (int i = 0; i < 3; ++i) x[i] = a[i] + std::ldexp(m[i] + d * n[i], exponent_);
+        return x;
+    }
+
+    /// The front face of t with the smallest circumradius, or 4.
+    unsigned front_face(TetIdx t) const {
+        unsigned best = 4;
+        double best_radius = INFINITY;
+        for (unsigned k = 0; k < 4; ++k) {
+            if (!is_front_face(t, k)) continue;
+            const unsigned* lf = triangulation::kFaceVertex[k];
+            const double* a = point(m_.vertex(t, lf[0]));
+            const double r = norm(triangle_center(relative(point(m_.vertex(t, lf[1])), a),
+                                                  relative(point(m_.vertex(t, lf[2])), a)));
+            if (best == 4 || r < best_radius) {
+                best = k;
+                best_radius = r;
+            }
+        }
+        return best;
+    }
+
+    /// Whether p lies strictly inside the equatorial sphere of a subface or the diametral
+    /// sphere of a subsegment of the cavity (exact).
+    bool encroaches_cavity(const double* p) const {
+        for (const TetIdx t : cavity_) {
+            for (unsigned k = 0; k < 4; ++k) {
+                const Key3 key = face_key(t, k);
+                if (subfaces_.count(key) != 0 &&
+                    predicates::in_equatorial_sphere_3d(p, point(key[0]), point(key[1]),
+                                                        point(key[2])) == Sign::Positive)
+                    return true;
+            }
+            for (const auto& e : kEdges) {
+                const VertIdx a = m_.vertex(t, e[0]), b = m_.vertex(t, e[1]);
+                if (subsegments_.count(edge_key(a, b)) != 0 &&
+                    predicates::dot_sign_3d(p, point(a), point(b)) == Sign::Negative)
+                    return true;
+            }
+        }
+        return false;
+    }
+
+    /// Some vertex of the cavity closer to p than min_distance h(p)?
+    bool too_close(const double* p) const {
+        const double limit = options_.min_distance * size_at({p[0], p[1], p[2]});
+        for (const TetIdx t : cavity_) {
+            for (unsigned k = 0; k < 4; ++k) {
+                const Vec d = relative(point(m_.vertex(t, k)), p);
+                if (dot(d, d) < limit * limit) return true;
+            }
+        }
+        return false;
+    }
+
+    void step(TetIdx t);
+    void fit_boundary();
+};
+
+void Frontal::fit_boundary() {
+    for (TetIdx t = 0; t < m_.tet_slots(); ++t)
+        if (!m_.is_dead(t)) examine(t);
+    while (!segment_queue_.empty() || !subface_queue_.empty()) {
+        if (!segment_queue_.empty()) {
+            const std::uint64_t key = segment_queue_.front();
+            segment_queue_.pop_front();
+            split_subsegment(key);
+            continue;
+        }
+        const Key3 key = subface_queue_.front();
+        subface_queue_.pop_front();
+        split_subface(key);
+    }
+    fc_.segment_splits = counters_.segment_splits + counters_.shell_splits;
+    fc_.subface_splits = counters_.subface_splits;
+    fc_.boundary_rejections = counters_.rejected_points;
+}
+
+void Frontal::step(TetIdx t) {
+    const unsigned k = front_face(t);
+    if (k == 4) {
+        status_[t] = Status::Waiting;  // its accepted neighbours went away since it was queued
+        return;
+    }
+    const std::array<double, 3> x = place(t, k);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) {
+        ++fc_.rejected_cavity;
+        accept(t);
+        return;
+    }
+    TetIdx s = kNone;
+    Key3 blocking{};
+    if (walk_to(t, x.data(), s, blocking) != Walk::Reached) {
+        ++fc_.rejected_outside;
+        accept(t);
+        return;
+    }
+    for (unsigned i = 0; i < 4; ++i) {
+        if (same_point(point(m_.vertex(s, i)), x.data())) {
+            ++fc_.rejected_too_close;
+            accept(t);
+            return;
+        }
+    }
+    const Split none;
+    // t must go: x is inside its circumsphere by construction, and a cavity shrunk away from
+    // t would leave it active with the same point to place.
+    if (!build_cavity(x.data(), {s}, none, t) || !in_attempt(t)) {
+        ++fc_.rejected_cavity;
+        accept(t);
+        return;
+    }
+    if (encroaches_cavity(x.data())) {
+        ++fc_.rejected_encroach;
+        accept(t);
+        return;
+    }
+    if (options_.min_distance > 0 && too_close(x.data())) {
+        ++fc_.rejected_too_close;
+        accept(t);
+        return;
+    }
+    created_.clear();
+    commit(x, VertexFeature3::Volume, kNone, 0.0, none, {}, {});
+    ++fc_.interior_points;
+    for (const TetIdx u : created_) classify(u);
+    for (const TetIdx u : created_) {
+        if (status_[u] == Status::Accepted) {
+            activate_neighbours(u);
+        } else if (on_front(u)) {
+            activate(u);
+        }
+    }
+}
+
+FrontalDelaunay3Result Frontal::run() {
+    fit_boundary();
+    interior_ = true;
+    queue_encroachment_ = false;
+    grow_slots();
+    for (TetIdx t = 0; t < m_.tet_slots(); ++t)
+        if (!m_.is_dead(t)) classify(t);
+    for (TetIdx t = 0; t < m_.tet_slots(); ++t)
+        if (!m_.is_dead(t) && status_[t] != Status::Accepted && on_front(t)) activate(t);
+    while (!heap_.empty()) {
+        const ActiveEntry top = heap_.top();
+        heap_.pop();
+        if (m_.is_dead(top.t) || top.version != version_[top.t] ||
+            status_[top.t] != Status::Active) {
+            ++fc_.stale_pops;
+            continue;
+        }
+        ++fc_.active_pops;
+        step(top.t);
+    }
+    for (TetIdx t = 0; t < m_.tet_slots(); ++t) {
+        if (m_.is_dead(t)) continue;
+        classify(t);
+        if (status_[t] == Status::Accepted) ++fc_.accepted_tets;
+    }
+    fc_.cavity_tets = counters_.cavity_tets;
+    FrontalDelaunay3Result result;
+    result.mesh = finish();
+    result.counters = fc_;
+    return result;
+}
+
+/// The size's estimate of the Steiner points: the regular tetrahedra of edge h(centroid) that
+/// fill each recovered tetrahedron (h^3 / (6 sqrt 2) each), summed, over about 5 tetrahedra per
+/// vertex; differences scaled by 2^-exponent and the sum capped, so nothing overflows.
+double estimate_points(const ConformingMesh3& recovered, const SizeFunction3& size, int exponent) {
+    const auto& m = recovered.mesh;
+    double tets = 0;
+    for (TetIdx t = 0; t < m.tet_count(); ++t) {
+        const double* p[4];
+        Vec centroid{0, 0, 0};
+        for (unsigned k = 0; k < 4; ++k) {
+            p[k] = m.point(m.tets[4 * std::size_t{t} + k]);
+            for (int i = 0; i < 3; ++i) centroid[i] += p[k][i] / 4;
+        }
+        Vec d[3];
+        for (unsigned k = 0; k < 3; ++k)
+            for (int i = 0; i < 3; ++i) d[k][i] = std::ldexp(p[k + 1][i] - p[0][i], -exponent);
+        const double six_volume = std::fabs(dot(d[0], cross(d[1], d[2])));
+        const double h = std::ldexp(size(centroid[0], centroid[1], centroid[2]), -exponent);
+        const double log2_count =
+            std::log2(six_volume / 6) - 3 * std::log2(h) + std::log2(6 * kSqrt2);
+        tets += std::exp2(std::min(log2_count, 200.0));
+    }
+    return std::min(tets / 5, 1e300);
+}
+
+}  // namespace
+
+FrontalDelaunay3Result frontal_delaunay_3d(const Plc3& plc, ConformingMesh3 recovered,
+                                           const FrontalDelaunay3Options& options) {
+    if (!options.size.defined())
+        throw InputError("frontal delaunay 3d: a size (target edge length) is required");
+    if (!(options.acceptance >= 1 && options.acceptance <= 4))
+        throw InputError("frontal delaunay 3d: the acceptance must be in [1, 4], got " +
+                         format_number(options.acceptance));
+    if (!(options.min_distance >= 0 && options.min_distance < 1))
+        throw InputError("frontal delaunay 3d: the minimum distance must be in [0, 1), got " +
+                         format_number(options.min_distance));
+    if (recovered.mesh.vertex_count() == 0)
+        throw InputError("frontal delaunay 3d: the domain has no vertex");
+    // The unit of the measures: the power of two at the size at the first vertex (exact
+    // scaling, so decisions are the same for the input and size times 2^k).
+    const double* first = recovered.mesh.point(0);
+    const int exponent = std::ilogb(options.size(first[0], first[1], first[2]));
+    const double estimate = estimate_points(recovered, options.size, exponent);
+    const std::uint64_t budget =
+        options.max_steiner_points != 0
+            ? options.max_steiner_points
+            : static_cast<std::uint64_t>(std::min(
+                  std::max({1e6, 1000.0 * recovered.input_vertex_count, 8 * estimate}), 4e9));
+    if (estimate > static_cast<double>(budget)) {
+        throw InputError("frontal delaunay 3d: Steiner point budget of " + std::to_string(budget) +
+                         " exceeded at once: the size " + options.size.describe() +
+                         " asks for about " + format_approximate(estimate, 3) +
+                         " points (domain volume / (h^3 / (6 sqrt 2)) / 5 per vertex); raise "
+                         "the size or the budget");
+    }
+    Frontal frontal(plc, std::move(recovered), options, budget, exponent);
+    frontal.result_counters.estimated_points =
+        static_cast<std::uint64_t>(std::min(estimate, 1.8e19));
+    return frontal.run();
+}
+
+}  // namespace exactmesh::generators

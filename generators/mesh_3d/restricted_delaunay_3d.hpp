@@ -1,0 +1,880 @@
+// SPDX-License-Identifier: MIT
+// Internal to generators/mesh_3d: incremental Bowyer-Watson insertion restricted to a PLC's
+// domain [Shewchuk98 §3; Si15 §3], shared by delaunay_refinement_3d and frontal_delaunay_3d.
+// The cavity of a point grows through faces whose far tetrahedron has it strictly inside its
+// circumsphere (exact insphere), never across a subface other than the ones being split; it
+// is then shrunk until star-shaped from the point (exact orient3d on every kept boundary face)
+// and until it keeps every subface, subsegment and vertex outside the split ones; an insertion
+// whose seed would have to go is rejected (counted). Subsegments split at midpoints or
+// concentric-shell points, subfaces at circumcentres with Bowyer-Watson facet cavities; the
+// subsegments and subfaces a new tetrahedron's vertices encroach are queued (when enabled).
+// Invariants: every subface stays a face, every subsegment an edge, every tetrahedron positive.
+// Decisions: orient3d, insphere, orient2d on facet projections, dot_sign_3d,
+// in_equatorial_sphere_3d. Constructions: triangle_circumcenter_3d, point_on_segment_3d.
+// Not part of the installed API: the class is the generators' common machinery.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "generators/mesh_3d/delaunay_refinement_3d.hpp"
+#include "predicates/constructions.hpp"
+#include "predicates/dot_sign_3d.hpp"
+#include "predicates/insphere.hpp"
+#include "predicates/orient3d.hpp"
+#include "predicates/tet_quality_3d.hpp"
+#include "triangulation/mesh/facet_projection_3d.hpp"
+#include "triangulation/mesh/mesh3.hpp"
+#include "triangulation/mesh/plc_3d.hpp"
+#include "triangulation/mesh/vertex_keys_3d.hpp"
+#include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
+
+namespace exactmesh::generators::restricted_3d {
+
+using predicates::Sign;
+using triangulation::ConformingMesh3;
+using triangulation::edge_key;
+using triangulation::FaceIdx;
+using triangulation::Key3;
+using triangulation::Key3Hash;
+using triangulation::kFaceVertex;
+using triangulation::kNone;
+using triangulation::Plc3;
+using triangulation::sorted3;
+using triangulation::TetIdx;
+using triangulation::TetMesh3;
+using triangulation::VertexFeature3;
+using triangulation::VertIdx;
+
+inline constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+inline bool same_point(const double* p, const double* q) {
+    return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+}
+
+/// A subface: its corners in the facet's orientation, and its facet.
+struct Subface {
+    Key3 oriented;
+    std::uint32_t facet;
+};
+
+/// The mesh being refined, its subfaces and subsegments, and point insertion restricted to
+/// the domain. Generators derive from it and receive each new tetrahedron in on_created().
+class RestrictedDelaunay3 {
+  public:
+    /// `recovered` passes check_boundary_conformity_3d for `plc`; `budget`: most insertions
+    /// before InputError; `name`: the generator named in error messages.
+    RestrictedDelaunay3(const Plc3& plc, ConformingMesh3 recovered, std::uint64_t budget,
+                        std::string name)
+        : out_(std::move(recovered)), budget_(budget), name_(std::move(name)) {
+        const std::uint32_t n = out_.mesh.vertex_count();
+        // The working mesh, with twin face slots.
+        m_.xyz = std::move(out_.mesh.xyz);
+        const TetIdx count = out_.mesh.tet_count();
+        m_.tv = out_.mesh.tets;
+        m_.adj.assign(m_.tv.size(), kNone);
+        for (TetIdx t = 0; t < count; ++t) {
+            for (unsigned k = 0; k < 4; ++k) {
+                const TetIdx u = out_.mesh.neighbors[4 * std::size_t{t} + k];
+                if (u == kNone) continue;
+                for (unsigned j = 0; j < 4; ++j) {
+                    if (out_.mesh.neighbors[4 * std::size_t{u} + j] == t) {
+                        m_.adj[4 * t + k] = 4 * u + j;
+                        break;
+                    }
+                }
+                EM_ASSERT(m_.adj[4 * t + k] != kNone);
+            }
+        }
+        attributes_ = std::move(out_.tet_attributes);
+        vertex_tet_.assign(n, kNone);
+        for (TetIdx t = 0; t < count; ++t)
+            for (unsigned k = 0; k < 4; ++k) vertex_tet_[m_.vertex(t, k)] = t;
+        for (std::size_t i = 0; i < out_.subsegments.size(); i += 2) {
+            subsegments_.emplace(edge_key(out_.subsegments[i], out_.subsegments[i + 1]),
+                                 out_.subsegment_segment[i / 2]);
+        }
+        for (std::size_t i = 0; i < out_.subfaces.size(); i += 3) {
+            add_subface({{out_.subfaces[i], out_.subfaces[i + 1], out_.subfaces[i + 2]},
+                         out_.subface_facet[i / 3]});
+        }
+        planes_.reserve(plc.facets.size());
+        for (const auto& facet : plc.facets)
+            planes_.push_back(triangulation::facet_plane(plc, facet));
+        vertex_segments_.resize(out_.input_vertex_count);
+        for (std::uint32_t s = 0; 2 * s + 1 < out_.segments.size(); ++s) {
+            vertex_segments_[out_.segments[2 * s]].push_back(s);
+            vertex_segments_[out_.segments[2 * s + 1]].push_back(s);
+        }
+        parameter_.assign(n, 0.0);
+        for (VertIdx v = out_.input_vertex_count; v < n; ++v) {
+            if (out_.vertex_feature[v] == VertexFeature3::Segment)
+                parameter_[v] = segment_parameter(v, out_.feature_index[v]);
+        }
+        // The working copies above replace these until finish() rebuilds them.
+        out_.mesh = {};
+        out_.subsegments = {};
+        out_.subsegment_segment = {};
+        out_.subfaces = {};
+        out_.subface_facet = {};
+    }
+
+    DelaunayRefinement3Result run();
+
+    virtual ~RestrictedDelaunay3() = default;
+    RestrictedDelaunay3(const RestrictedDelaunay3&) = delete;
+    RestrictedDelaunay3& operator=(const RestrictedDelaunay3&) = delete;
+
+  protected:
+    ConformingMesh3 out_;  ///< features and segments; the mesh itself lives in m_
+    TetMesh3 m_;
+    std::uint64_t budget_ = 0;
+    std::string name_;
+    DelaunayRefinement3Counters counters_;
+
+    std::vector<double> attributes_;
+    std::vector<TetIdx> vertex_tet_;
+    std::vector<double> parameter_;
+    std::unordered_map<std::uint64_t, std::uint32_t> subsegments_;
+    std::unordered_map<Key3, Subface, Key3Hash> subfaces_;
+    std::unordered_multimap<std::uint64_t, Key3> edge_subfaces_;
+    std::vector<triangulation::FacetPlane> planes_;
+    std::vector<std::vector<std::uint32_t>> vertex_segments_;
+
+    std::deque<std::uint64_t> segment_queue_;
+    std::deque<Key3> subface_queue_;
+    /// Whether new tetrahedra queue the subfaces and subsegments their vertices encroach.
+    bool queue_encroachment_ = true;
+
+    // Cavity scratch.
+    std::vector<std::uint32_t> excluded_;  ///< per tet slot: == cavity_stamp_ when shrunk away
+    std::uint32_t cavity_stamp_ = 0;
+    std::vector<TetIdx> cavity_;
+
+    const double* point(VertIdx v) const { return m_.point(v); }
+
+    // --- subface bookkeeping -------------------------------------------------------------
+
+    void add_subface(const Subface& s) {
+        const Key3 key = sorted3(s.oriented[0], s.oriented[1], s.oriented[2]);
+        subfaces_.emplace(key, s);
+        for (unsigned i = 0; i < 3; ++i)
+            edge_subfaces_.emplace(edge_key(key[i], key[(i + 1) % 3]), key);
+    }
+
+    void remove_subface(const Key3& key) {
+        subfaces_.erase(key);
+        for (unsigned i = 0; i < 3; ++i) {
+            const auto range = edge_subfaces_.equal_range(edge_key(key[i], key[(i + 1) % 3]));
+            for (auto it = range.first; it != range.second; ++it) {
+                if (it->second == key) {
+                    edge_subfaces_.erase(it);
+                    break;
+                }
+            }
+        }
+    }
+
+    std::vector<Key3> subfaces_on_edge(VertIdx a, VertIdx b) const {
+        std::vector<Key3> out;
+        const auto range = edge_subfaces_.equal_range(edge_key(a, b));
+        for (auto it = range.first; it != range.second; ++it) out.push_back(it->second);
+        return out;
+    }
+
+    Key3 face_key(TetIdx t, unsigned k) const {
+        const unsigned* lf = kFaceVertex[k];
+        return sorted3(m_.vertex(t, lf[0]), m_.vertex(t, lf[1]), m_.vertex(t, lf[2]));
+    }
+
+    bool is_subface(TetIdx t, unsigned k) const { return subfaces_.count(face_key(t, k)) != 0; }
+
+    // --- segments --------------------------------------------------------------------------
+
+    /// The parameter of segment vertex v along segment s, from its coordinates (rounded; it
+    /// only positions later split points, computed from the segment's ends). The differences
+    /// are scaled by a power of two first, so no square overflows or underflows.
+    double segment_parameter(VertIdx v, std::uint32_t s) const {
+        const double* p = point(out_.segments[2 * s]);
+        const double* q = point(out_.segments[2 * s + 1]);
+        double d[3], w[3], largest = 0;
+        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(q[k] - p[k]));
+        const int e = std::ilogb(largest);
+        double dd = 0, dw = 0;
+        for (int k = 0; k < 3; ++k) {
+            d[k] = std::ldexp(q[k] - p[k], -e);
+            w[k] = std::ldexp(point(v)[k] - p[k], -e);
+            dd += d[k] * d[k];
+            dw += d[k] * w[k];
+        }
+        return std::clamp(dw / dd, 0.0, 1.0);
+    }
+
+    double parameter_of(VertIdx v, std::uint32_t s) const {
+        if (v == out_.segments[2 * s]) return 0.0;
+        if (v == out_.segments[2 * s + 1]) return 1.0;
+        return parameter_[v];
+    }
+
+    bool acute_apex(VertIdx apex, std::uint32_t s) const {
+        const VertIdx far =
+            out_.segments[2 * s] == apex ? out_.segments[2 * s + 1] : out_.segments[2 * s];
+        for (const std::uint32_t other : vertex_segments_[apex]) {
+            if (other == s) continue;
+            const VertIdx end = out_.segments[2 * other] == apex ? out_.segments[2 * other + 1]
+                                                                 : out_.segments[2 * other];
+            if (predicates::dot_sign_3d(point(apex), point(far), point(end)) == Sign::Positive)
+                return true;
+        }
+        return false;
+    }
+
+    double shell_parameter(std::uint32_t s, double t_apex, double t_far) const {
+        return triangulation::concentric_shell_parameter(
+            point(out_.segments[2 * s]), point(out_.segments[2 * s + 1]), t_apex, t_far);
+    }
+
+    // --- locating --------------------------------------------------------------------------
+
+    /// The live tetrahedra holding vertex v (its star, by adjacency from vertex_tet_).
+    std::vector<TetIdx> star(VertIdx v) const {
+        std::vector<TetIdx> out{vertex_tet_[v]};
+        EM_ASSERT(out[0] != kNone && m_.slot_of(out[0], v) < 4);
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            const TetIdx t = out[i];
+            const unsigned sv = m_.slot_of(t, v);
+            for (unsigned k = 0; k < 4; ++k) {
+                if (k == sv) continue;
+                const FaceIdx g = m_.adj[4 * t + k];
+                if (g == kNone) continue;
+                const TetIdx u = triangulation::tet_of(g);
+                if (std::find(out.begin(), out.end(), u) == out.end()) out.push_back(u);
+            }
+        }
+        return out;
+    }
+
+    std::vector<TetIdx> tets_with(VertIdx a, VertIdx b, VertIdx c = kNone) const {
+        std::vector<TetIdx> out;
+        for (const TetIdx t : star(a))
+            if (m_.slot_of(t, b) < 4 && (c == kNone || m_.slot_of(t, c) < 4)) out.push_back(t);
+        return out;
+    }
+
+    // --- cavities --------------------------------------------------------------------------
+
+    struct Split {
+        std::vector<Key3> faces;                   ///< subfaces the point splits (crossed, dropped)
+        std::uint64_t edge = ~0ull;                ///< the subsegment it splits, if any
+        std::unordered_set<std::uint64_t> exempt;  ///< edges inside the facet cavities: may go
+    };
+
+    bool is_split_face(const Split& split, const Key3& key) const {
+        return std::find(split.faces.begin(), split.faces.end(), key) != split.faces.end();
+    }
+
+    /// Bowyer-Watson cavity of p from `seeds` that never crosses a subface outside `split`,
+    /// shrunk until valid (see the header). Returns false when a seed would have to go.
+    /// With `required` (not kNone): false as soon as the grown cavity misses that tetrahedron
+    /// (shrinking only removes tetrahedra, so it could not come back).
+    bool build_cavity(const double* p, const std::vector<TetIdx>& seeds, const Split& split,
+                      TetIdx required = kNone) {
+        if (excluded_.size() < m_.tet_slots()) excluded_.resize(m_.tet_slots(), 0);
+        ++cavity_stamp_;
+        std::vector<TetIdx> seed_list = seeds;
+        bool shrunk = false;
+        while (true) {
+            // Grow from the seeds (marks of this attempt in attempt_stamp_; the tetrahedra shrunk
+            // away stay excluded_ under this insertion's stamp).
+            cavity_.clear();
+            const std::uint32_t mark = cavity_stamp_;
+            ++attempt_;
+            for (const TetIdx t : seed_list) {
+                if (attempt_mark_(t)) continue;
+                set_attempt_(t);
+                cavity_.push_back(t);
+            }
+            for (std::size_t i = 0; i < cavity_.size(); ++i) {
+                const TetIdx t = cavity_[i];
+                for (unsigned k = 0; k < 4; ++k) {
+                    const FaceIdx g = m_.adj[4 * t + k];
+                    if (g == kNone) continue;
+                    const TetIdx u = triangulation::tet_of(g);
+                    if (attempt_mark_(u) || excluded_[u] == mark) continue;
+                    const Key3 key = face_key(t, k);
+                    if (subfaces_.count(key) != 0 && !is_split_face(split, key)) continue;
+                    if (predicates::insphere(point(m_.vertex(u, 0)), point(m_.vertex(u, 1)),
+                                             point(m_.vertex(u, 2)), point(m_.vertex(u, 3)),
+                                             p) != Sign::Positive)
+                        continue;
+                    set_attempt_(u);
+                    cavity_.push_back(u);
+                }
+            }
+            if (required != kNone && !in_attempt(required)) return false;
+            const TetIdx bad = first_violation(p, seed_list, split);
+            if (bad == kNone) {
+                if (shrunk) ++counters_.shrunk_cavities;
+                return true;
+            }
+            if (bad == kNone - 1) return false;
+            excluded_[bad] = mark;
+            shrunk = true;
+        }
+    }
+
+    // Per-attempt marks (a second stamp array).
+    std::vector<std::uint32_t> attempt_stamp_;
+    std::uint32_t attempt_ = 0;
+    bool attempt_mark_(TetIdx t) {
+        if (attempt_stamp_.size() < m_.tet_slots()) attempt_stamp_.resize(m_.tet_slots(), 0);
+        return attempt_stamp_[t] == attempt_;
+    }
+    void set_attempt_(TetIdx t) { attempt_stamp_[t] = attempt_; }
+    bool in_attempt(TetIdx t) const {
+        return t < attempt_stamp_.size() && attempt_stamp_[t] == attempt_;
+    }
+
+    /// kNone when the cavity is valid; else a non-seed cavity tetrahedron to remove, or
+    /// kNone - 1 when only a seed could be removed.
+    TetIdx first_violation(const double* p, const std::vector<TetIdx>& seeds, const Split& split) {
+        auto removable = [&](TetIdx t) {
+            return std::find(seeds.begin(), seeds.end(), t) == seeds.end() ? t : kNone - 1;
+        };
+        std::unordered_set<std::uint64_t> boundary_edges;
+        std::unordered_set<VertIdx> boundary_vertices;
+        for (const TetIdx t : cavity_) {
+            for (unsigned k = 0; k < 4; ++k) {
+                const FaceIdx g = m_.adj[4 * t + k];
+                const Key3 key = face_key(t, k);
+                if (g != kNone && in_attempt(triangulation::tet_of(g))) {
+                    if (subfaces_.count(key) != 0 && !is_split_face(split, key)) {
+                        const TetIdx first = removable(t);
+                        return first != kNone - 1 ? first : removable(triangulation::tet_of(g));
+                    }
+                    continue;
+                }
+                if (is_split_face(split, key)) continue;  // a boundary subface being split
+                const unsigned* lf = kFaceVertex[k];
+                if (predicates::orient3d(point(m_.vertex(t, lf[0])), point(m_.vertex(t, lf[1])),
+                                         point(m_.vertex(t, lf[2])), p) != Sign::Positive)
+                    return removable(t);
+                for (unsigned i = 0; i < 3; ++i) {
+                    boundary_edges.insert(edge_key(key[i], key[(i + 1) % 3]));
+                    boundary_vertices.insert(key[i]);
+                }
+            }
+        }
+        for (const TetIdx t : cavity_) {
+            for (unsigned k = 0; k < 4; ++k)
+                if (boundary_vertices.count(m_.vertex(t, k)) == 0) return removable(t);
+            for (const auto& e : kEdges) {
+                const std::uint64_t key = edge_key(m_.vertex(t, e[0]), m_.vertex(t, e[1]));
+                if (key == split.edge || split.exempt.count(key) != 0) continue;
+                const bool kept_edge =
+                    subsegments_.count(key) != 0 || edge_subfaces_.count(key) != 0;
+                if (kept_edge && boundary_edges.count(key) == 0) return removable(t);
+            }
+        }
+        return kNone;
+    }
+
+    /// Replaces the cavity (built by build_cavity for p) by the tetrahedra joining p to its
+    /// boundary, updates the subfaces and subsegments of `split`, queues what to check.
+    VertIdx commit(const std::array<double, 3>& p, VertexFeature3 feature, std::uint32_t index,
+                   double parameter, const Split& split, const std::vector<Subface>& new_subfaces,
+                   const std::vector<std::pair<std::uint64_t, std::uint32_t>>& new_subsegments) {
+        if (counters_.insertions >= budget_) {
+            throw InputError(
+                name_ + ": Steiner point budget of " + std::to_string(budget_) + " exceeded (" +
+                std::to_string(counters_.circumcenters) + " circumcentres, " +
+                std::to_string(counters_.subface_splits) + " subface and " +
+                std::to_string(counters_.segment_splits + counters_.shell_splits) +
+                " subsegment splits, " + std::to_string(counters_.rejected_points) +
+                " rejected points): small input angles, or a bound too tight to reach");
+        }
+        const VertIdx v = m_.vertex_count();
+        m_.xyz.insert(m_.xyz.end(), p.begin(), p.end());
+        out_.vertex_feature.push_back(feature);
+        out_.feature_index.push_back(index);
+        parameter_.push_back(parameter);
+        vertex_tet_.push_back(kNone);
+        ++counters_.insertions;
+        counters_.cavity_tets += cavity_.size();
+
+        struct BoundaryFace {
+            std::array<VertIdx, 3> corners;
+            FaceIdx outside;
+            double attribute;
+        };
+        std::vector<BoundaryFace> faces;
+        for (const TetIdx t : cavity_) {
+            for (unsigned k = 0; k < 4; ++k) {
+                const FaceIdx g = m_.adj[4 * t + k];
+                if (g != kNone && in_attempt(triangulation::tet_of(g))) continue;
+                if (is_split_face(split, face_key(t, k))) continue;
+                const unsigned* lf = kFaceVertex[k];
+                faces.push_back({{m_.vertex(t, lf[0]), m_.vertex(t, lf[1]), m_.vertex(t, lf[2])},
+                                 g,
+                                 attributes_.empty() ? 0.0 : attributes_[t]});
+            }
+        }
+        for (const TetIdx t : cavity_) {
+            attempt_stamp_[t] = 0;
+            m_.kill_tet(t);
+        }
+        std::unordered_map<std::uint64_t, FaceIdx> open;
+        std::vector<TetIdx> created;
+        for (const BoundaryFace& f : faces) {
+            const TetIdx t = m_.new_tet();
+            if (attributes_.size() < m_.tet_slots() && !attributes_.empty())
+                attributes_.resize(m_.tet_slots(), 0.0);
+            if (!attributes_.empty()) attributes_[t] = f.attribute;
+            const std::size_t s = 4 * std::size_t{t};
+            m_.tv[s] = f.corners[0];
+            m_.tv[s + 1] = f.corners[1];
+            m_.tv[s + 2] = f.corners[2];
+            m_.tv[s + 3] = v;
+            m_.adj[s + 3] = f.outside;
+            if (f.outside != kNone) m_.adj[f.outside] = static_cast<FaceIdx>(s + 3);
+            for (unsigned j = 0; j < 3; ++j) {
+                m_.adj[s + j] = kNone;
+                const std::uint64_t key = edge_key(f.corners[(j + 1) % 3], f.corners[(j + 2) % 3]);
+                const auto [it, added] = open.emplace(key, static_cast<FaceIdx>(s + j));
+                if (!added) {
+                    EM_ASSERT(it->second != kNone);
+                    m_.link(it->second, static_cast<FaceIdx>(s + j));
+                    it->second = kNone;
+                }
+            }
+            for (unsigned k = 0; k < 4; ++k) vertex_tet_[m_.tv[s + k]] = t;
+            created.push_back(t);
+        }
+        // Subfaces and subsegments.
+        for (const Key3& key : split.faces) remove_subface(key);
+        for (const Subface& s : new_subfaces) add_subface(s);
+        if (split.edge != ~0ull) subsegments_.erase(split.edge);
+        for (const auto& [key, segment] : new_subsegments) subsegments_.emplace(key, segment);
+        std::unordered_set<Key3, Key3Hash> new_faces;
+        std::unordered_set<std::uint64_t> new_edges;
+        for (const TetIdx t : created) {
+            for (unsigned k = 0; k < 4; ++k) new_faces.insert(face_key(t, k));
+            for (const auto& e : kEdges)
+                new_edges.insert(edge_key(m_.vertex(t, e[0]), m_.vertex(t, e[1])));
+        }
+        for (const Subface& s : new_subfaces)
+            EM_ASSERT(new_faces.count(sorted3(s.oriented[0], s.oriented[1], s.oriented[2])) != 0);
+        for (const auto& entry : new_subsegments) EM_ASSERT(new_edges.count(entry.first) != 0);
+        for (const TetIdx t : created) examine(t);
+        return v;
+    }
+
+    // --- queues ----------------------------------------------------------------------------
+
+    /// A new tetrahedron: the generator's hook (after the encroachment queues).
+    virtual void on_created(TetIdx t) = 0;
+
+    /// Queues the subfaces and subsegments of t its other vertices encroach (when enabled),
+    /// then hands t to on_created.
+    void examine(TetIdx t) {
+        if (!queue_encroachment_) {
+            on_created(t);
+            return;
+        }
+        const std::array<VertIdx, 4> c{m_.vertex(t, 0), m_.vertex(t, 1), m_.vertex(t, 2),
+                                       m_.vertex(t, 3)};
+        for (unsigned k = 0; k < 4; ++k) {
+            const Key3 key = face_key(t, k);
+            if (subfaces_.count(key) == 0) continue;
+            if (predicates::in_equatorial_sphere_3d(point(c[k]), point(key[0]), point(key[1]),
+                                                    point(key[2])) == Sign::Positive) {
+                subface_queue_.push_back(key);
+                ++counters_.encroached_subfaces;
+            }
+        }
+        for (const auto& e : kEdges) {
+            const std::uint64_t key = edge_key(c[e[0]], c[e[1]]);
+            if (subsegments_.count(key) == 0) continue;
+            for (unsigned k = 0; k < 4; ++k) {
+                if (k == e[0] || k == e[1]) continue;
+                if (predicates::dot_sign_3d(point(c[k]), point(c[e[0]]), point(c[e[1]])) ==
+                    Sign::Negative) {
+                    segment_queue_.push_back(key);
+                    ++counters_.encroached_segments;
+                    break;
+                }
+            }
+        }
+        on_created(t);
+    }
+
+    // --- splits ----------------------------------------------------------------------------
+
+    /// Splits subsegment `key` (if still one). Returns whether a point was inserted.
+    bool split_subsegment(std::uint64_t key) {
+        const auto found = subsegments_.find(key);
+        if (found == subsegments_.end()) return false;
+        const std::uint32_t s = found->second;
+        const VertIdx a = static_cast<VertIdx>(key >> 32), b = static_cast<VertIdx>(key);
+        const double ta = parameter_of(a, s), tb = parameter_of(b, s);
+        const bool apex_a = a < out_.input_vertex_count && acute_apex(a, s);
+        const bool apex_b = b < out_.input_vertex_count && acute_apex(b, s);
+        double t = std::nan("");
+        if (apex_a != apex_b) t = apex_a ? shell_parameter(s, ta, tb) : shell_parameter(s, tb, ta);
+        const bool shell = !std::isnan(t);
+        if (!shell) t = 0.5 * ta + 0.5 * tb;
+        const std::array<double, 3> p = predicates::point_on_segment_3d(
+            point(out_.segments[2 * s]), point(out_.segments[2 * s + 1]), t);
+        if (same_point(p.data(), point(a)) || same_point(p.data(), point(b))) {
+            ++counters_.rejected_points;  // the subsegment is as short as doubles resolve
+            return false;
+        }
+        Split split;
+        split.edge = key;
+        const VertIdx v = m_.vertex_count();
+        std::vector<Subface> pieces;
+        std::vector<TetIdx> seeds = tets_with(a, b);
+        // The facet cavities first; then, when they or the tetrahedra around them fail, only
+        // the subfaces on the subsegment.
+        bool valid = false;
+        for (const bool grow : {true, false}) {
+            split = Split{};
+            split.edge = key;
+            pieces.clear();
+            seeds = tets_with(a, b);
+            if (facet_cavity(p.data(), subfaces_on_edge(a, b), v, split, pieces, seeds, grow) &&
+                build_cavity(p.data(), seeds, split)) {
+                valid = true;
+                break;
+            }
+        }
+        if (!valid) {
+            ++counters_.rejected_points;
+            return false;
+        }
+        commit(p, VertexFeature3::Segment, s, t, split, pieces,
+               {{edge_key(a, v), s}, {edge_key(v, b), s}});
+        ++(shell ? counters_.shell_splits : counters_.segment_splits);
+        return true;
+    }
+
+    /// The facet cavities of a point p (to become vertex v) on a facet or segment: from the
+    /// `initial` subfaces (holding p or its subsegment), every subface of the same facet reached
+    /// across edges that are not subsegments whose circumcircle strictly contains p (exact
+    /// in_equatorial_sphere_3d), as in 2D Bowyer-Watson. Fills split.faces, the edges
+    /// inside the cavities (split.exempt), the fan of new subfaces from v to each cavity's
+    /// boundary (the facet's orientation kept; the split subsegment skipped) and the seeds (the
+    /// tetrahedra on both sides of each cavity subface: p lies inside their circumspheres).
+    /// A grown subface whose fan piece would not have the facet's orientation (p beyond its
+    /// edge in the facet's projection: the facet is not Delaunay there) is dropped from the
+    /// cavity again; returns false when an initial subface would have to go.
+    /// With `grow` false the cavities are the initial subfaces alone; false is also returned when
+    /// a cavity's boundary is not one simple chain per facet (a vertex on it twice).
+    bool facet_cavity(const double* p, const std::vector<Key3>& initial, VertIdx v, Split& split,
+                      std::vector<Subface>& pieces, std::vector<TetIdx>& seeds, bool grow) const {
+        std::vector<Key3> faces = initial;
+        std::unordered_set<Key3, Key3Hash> in_set(initial.begin(), initial.end());
+        for (std::size_t i = 0; grow && i < faces.size(); ++i) {
+            const Subface f = subfaces_.at(faces[i]);
+            for (unsigned e = 0; e < 3; ++e) {
+                const VertIdx x = f.oriented[e], y = f.oriented[(e + 1) % 3];
+                const std::uint64_t key = edge_key(x, y);
+                if (key == split.edge || subsegments_.count(key) != 0) continue;
+                for (const Key3& k : subfaces_on_edge(x, y)) {
+                    if (in_set.count(k) != 0) continue;
+                    const Subface& g = subfaces_.at(k);
+                    if (g.facet != f.facet || !in_circumcircle(g, p)) continue;
+                    in_set.insert(k);
+                    faces.push_back(k);
+                }
+            }
+        }
+        while (true) {
+            pieces.clear();
+            split.exempt.clear();
+            std::size_t bad = faces.size();
+            for (std::size_t i = 0; i < faces.size() && bad == faces.size(); ++i) {
+                const Subface& f = subfaces_.at(faces[i]);
+                const int drop = planes_[f.facet].drop;
+                const Sign orientation = triangulation::projected_orient(
+                    point(f.oriented[0]), point(f.oriented[1]), point(f.oriented[2]), drop);
+                for (unsigned e = 0; e < 3; ++e) {
+                    const VertIdx x = f.oriented[e], y = f.oriented[(e + 1) % 3];
+                    const std::uint64_t key = edge_key(x, y);
+                    if (key == split.edge) continue;
+                    bool inner = false;
+                    for (const Key3& other : subfaces_on_edge(x, y)) {
+                        if (other != faces[i] && in_set.count(other) != 0 &&
+                            subfaces_.at(other).facet == f.facet)
+                            inner = true;
+                    }
+                    if (inner) {
+                        split.exempt.insert(key);
+                    } else if (triangulation::projected_orient(point(x), point(y), p, drop) !=
+                               orientation) {
+                        bad = i;
+                        break;
+                    } else {
+                        pieces.push_back({{x, y, v}, f.facet});
+                    }
+                }
+            }
+            if (bad == faces.size()) break;
+            if (bad < initial.size()) return false;
+            in_set.erase(faces[bad]);
+            faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(bad));
+        }
+        // Each vertex starts and ends at most one boundary edge of its facet's cavity.
+        std::unordered_map<std::uint64_t, unsigned> starts, ends;
+        for (const Subface& piece : pieces) {
+            const std::uint64_t facet = std::uint64_t{piece.facet} << 32;
+            if (++starts[facet | piece.oriented[0]] > 1 || ++ends[facet | piece.oriented[1]] > 1)
+                return false;
+        }
+        for (const Key3& k : faces) {
+            for (const TetIdx t : tets_with(k[0], k[1], k[2]))
+                if (std::find(seeds.begin(), seeds.end(), t) == seeds.end()) seeds.push_back(t);
+        }
+        split.faces = std::move(faces);
+        return true;
+    }
+
+    /// Whether p (a point of f's facet, up to rounding) lies strictly inside the circumcircle of
+    /// subface f: inside its equatorial sphere, whose trace on the facet's plane is that circle
+    /// (a projection to a coordinate plane would distort the circle into an ellipse).
+    bool in_circumcircle(const Subface& f, const double* p) const {
+        return predicates::in_equatorial_sphere_3d(p, point(f.oriented[0]), point(f.oriented[1]),
+                                                   point(f.oriented[2])) == Sign::Positive;
+    }
+
+    /// Splits subface `key` (if still one) at its circumcentre, or the subsegments that point
+    /// encroaches or lies beyond. Returns whether a point was inserted.
+    bool split_subface(const Key3& key) {
+        const auto found = subfaces_.find(key);
+        if (found == subfaces_.end()) return false;
+        const Subface face = found->second;
+        const int drop = planes_[face.facet].drop;
+        const std::array<double, 3> c = predicates::triangle_circumcenter_3d(
+            point(face.oriented[0]), point(face.oriented[1]), point(face.oriented[2]));
+        // Walk in the facet's projection from the subface to the one holding c.
+        Subface at = face;
+        for (std::size_t steps = 0;; ++steps) {
+            if (steps > subfaces_.size() + 8) {
+                ++counters_.rejected_points;
+                return false;
+            }
+            const VertIdx* o = at.oriented.data();
+            const Sign orientation =
+                triangulation::projected_orient(point(o[0]), point(o[1]), point(o[2]), drop);
+            int outside = -1, zeros = 0, zero_edge = -1;
+            for (int i = 0; i < 3; ++i) {
+                const Sign s = triangulation::projected_orient(point(o[i]), point(o[(i + 1) % 3]),
+                                                               c.data(), drop);
+                if (s == Sign::Zero) {
+                    ++zeros;
+                    zero_edge = i;
+                } else if (s != orientation) {
+                    outside = i;
+                    break;
+                }
+            }
+            if (outside >= 0) {
+                const VertIdx x = o[outside], y = o[(outside + 1) % 3];
+                if (subsegments_.count(edge_key(x, y)) != 0) {
+                    segment_queue_.push_front(edge_key(x, y));
+                    ++counters_.encroached_segments;
+                    return false;
+                }
+                const Key3 here = sorted3(o[0], o[1], o[2]);
+                bool moved = false;
+                for (const Key3& k : subfaces_on_edge(x, y)) {
+                    const Subface& next = subfaces_.at(k);
+                    if (k == here || next.facet != at.facet) continue;
+                    at = next;
+                    moved = true;
+                    break;
+                }
+                if (!moved) {
+                    ++counters_.rejected_points;
+                    return false;
+                }
+                continue;
+            }
+            if (zeros >= 2) {  // on a vertex in projection
+                ++counters_.rejected_points;
+                return false;
+            }
+            Split split;
+            std::vector<TetIdx> seeds;
+            const VertIdx v = m_.vertex_count();
+            std::vector<Subface> pieces;
+            std::vector<Key3> initial{sorted3(o[0], o[1], o[2])};
+            if (zeros == 1) {
+                const VertIdx x = o[zero_edge], y = o[(zero_edge + 1) % 3];
+                if (subsegments_.count(edge_key(x, y)) != 0) {
+                    segment_queue_.push_front(edge_key(x, y));
+                    ++counters_.encroached_segments;
+                    return false;
+                }
+                initial = subfaces_on_edge(x, y);
+            }
+            bool valid = false;
+            for (const bool grow : {true, false}) {
+                split = Split{};
+                pieces.clear();
+                seeds.clear();
+                if (facet_cavity(c.data(), initial, v, split, pieces, seeds, grow) &&
+                    build_cavity(c.data(), seeds, split)) {
+                    valid = true;
+                    break;
+                }
+            }
+            if (!valid) {
+                ++counters_.rejected_points;
+                return false;
+            }
+            // A subsegment of the cavity that c encroaches is split instead.
+            if (queue_encroached_segments(c.data())) return false;
+            commit(c, VertexFeature3::Facet, at.facet, 0.0, split, pieces, {});
+            ++counters_.subface_splits;
+            return true;
+        }
+    }
+
+    /// Queues (at the front) the subsegments among the cavity's edges that p encroaches
+    /// (strictly inside the diametral sphere); returns whether there was one.
+    bool queue_encroached_segments(const double* p) {
+        bool any = false;
+        for (const TetIdx t : cavity_) {
+            for (const auto& e : kEdges) {
+                const VertIdx a = m_.vertex(t, e[0]), b = m_.vertex(t, e[1]);
+                const std::uint64_t key = edge_key(a, b);
+                if (subsegments_.count(key) == 0) continue;
+                if (predicates::dot_sign_3d(p, point(a), point(b)) == Sign::Negative) {
+                    segment_queue_.push_front(key);
+                    ++counters_.encroached_segments;
+                    any = true;
+                }
+            }
+        }
+        return any;
+    }
+
+    /// Queues (at the front) the subfaces among the cavity's faces that p encroaches (strictly
+    /// inside the equatorial sphere); returns whether there was one.
+    bool queue_encroached_subfaces(const double* p) {
+        bool any = false;
+        for (const TetIdx u : cavity_) {
+            for (unsigned k = 0; k < 4; ++k) {
+                const Key3 key = face_key(u, k);
+                if (subfaces_.count(key) == 0) continue;
+                if (predicates::in_equatorial_sphere_3d(p, point(key[0]), point(key[1]),
+                                                        point(key[2])) == Sign::Positive) {
+                    subface_queue_.push_front(key);
+                    ++counters_.encroached_subfaces;
+                    any = true;
+                }
+            }
+        }
+        return any;
+    }
+
+    /// Tries to split a bad tetrahedron at its circumcentre.
+    /// Returns true when the split was deferred: subsegments or subfaces were queued instead.
+    /// The outcome of walk_to.
+    enum class Walk { Reached, Blocked, Failed };
+
+    /// Visibility walk from tetrahedron `from` towards p (exact orient3d, rotating the first
+    /// face tried so that it cannot cycle); stopped by a subface or the domain boundary
+    /// (Blocked, with that face in `blocking`). Reached: p is in or on tetrahedron `at`.
+    Walk walk_to(TetIdx from, const double* p, TetIdx& at, Key3& blocking) const {
+        TetIdx s = from;
+        std::uint32_t rotation = 0;
+        for (std::size_t steps = 0;; ++steps) {
+            if (steps > 4 * std::size_t{m_.tet_slots()} + 16) return Walk::Failed;
+            int exit = -1;
+            for (unsigned i = 0; i < 4; ++i) {
+                const unsigned k = (i + rotation) & 3u;
+                const unsigned* lf = kFaceVertex[k];
+                if (predicates::orient3d(point(m_.vertex(s, lf[0])), point(m_.vertex(s, lf[1])),
+                                         point(m_.vertex(s, lf[2])), p) == Sign::Negative) {
+                    exit = static_cast<int>(k);
+                    break;
+                }
+            }
+            ++rotation;
+            if (exit < 0) {
+                at = s;
+                return Walk::Reached;
+            }
+            const Key3 key = face_key(s, static_cast<unsigned>(exit));
+            const FaceIdx g = m_.adj[4 * s + static_cast<unsigned>(exit)];
+            if (g == kNone || subfaces_.count(key) != 0) {
+                blocking = key;
+                return Walk::Blocked;
+            }
+            s = triangulation::tet_of(g);
+        }
+    }
+
+    /// The mesh in ConformingMesh3 form (live tetrahedra renumbered in slot order).
+    ConformingMesh3 finish() const {
+        ConformingMesh3 result;
+        const TetIdx slots = m_.tet_slots();
+        std::vector<TetIdx> new_index(slots, kNone);
+        TetIdx kept = 0;
+        for (TetIdx t = 0; t < slots; ++t)
+            if (!m_.is_dead(t)) new_index[t] = kept++;
+        result.mesh.tets.reserve(4 * std::size_t{kept});
+        result.mesh.neighbors.reserve(4 * std::size_t{kept});
+        for (TetIdx t = 0; t < slots; ++t) {
+            if (m_.is_dead(t)) continue;
+            for (unsigned k = 0; k < 4; ++k) {
+                result.mesh.tets.push_back(m_.vertex(t, k));
+                const FaceIdx g = m_.adj[4 * t + k];
+                result.mesh.neighbors.push_back(g == kNone ? kNone
+                                                           : new_index[triangulation::tet_of(g)]);
+            }
+            if (!attributes_.empty()) result.tet_attributes.push_back(attributes_[t]);
+        }
+        result.mesh.xyz = m_.xyz;
+        result.input_vertex_count = out_.input_vertex_count;
+        result.vertex_feature = out_.vertex_feature;
+        result.feature_index = out_.feature_index;
+        result.segments = out_.segments;
+        // Subsegments and subfaces in a deterministic order.
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> subsegments(subsegments_.begin(),
+                                                                         subsegments_.end());
+        std::sort(subsegments.begin(), subsegments.end());
+        for (const auto& [key, segment] : subsegments) {
+            result.subsegments.insert(result.subsegments.end(),
+                                      {static_cast<VertIdx>(key >> 32), static_cast<VertIdx>(key)});
+            result.subsegment_segment.push_back(segment);
+        }
+        std::vector<std::pair<Key3, Subface>> subfaces(subfaces_.begin(), subfaces_.end());
+        std::sort(subfaces.begin(), subfaces.end(),
+                  [](const auto& x, const auto& y) { return x.first < y.first; });
+        for (const auto& [key, face] : subfaces) {
+            result.subfaces.insert(result.subfaces.end(), face.oriented.begin(),
+                                   face.oriented.end());
+            result.subface_facet.push_back(face.facet);
+        }
+        return result;
+    }
+
+    /// A volume bound that asks for far more points than the budget fails at once with the
+    /// estimate, not after the budget's insertions (each exact, minutes at 10^6): every tetrahedron
+    /// is at most max_volume, so the mesh has at least domain volume / max_volume of them, and a
+    /// Delaunay tetrahedralization has about 6.5 per vertex; refused when a sixth of that lower
+};
+
+}  // namespace exactmesh::generators::restricted_3d
