@@ -38,6 +38,10 @@ struct Delaunay2Options {
     /// with the brio order and walk location; the other algorithms and orders run sequentially
     /// (their counters then report threads = 1).
     unsigned threads = 1;
+    /// Parallel only: a BRIO round of fewer than this many points per thread is inserted
+    /// sequentially (its ranges would be mostly border). Tests lower it to run the parallel
+    /// rounds on small inputs; the triangles do not depend on it.
+    std::uint32_t parallel_round_minimum = 2048;
 };
 
 /// Work counters of one construction (predicate stage counts come from predicates/stats.hpp).

@@ -30,10 +30,6 @@ namespace {
 
 using predicates::Sign;
 
-/// Rounds smaller than this many points per thread are inserted sequentially: their ranges
-/// would be mostly boundary.
-constexpr std::uint32_t kMinRoundPointsPerThread = 2048;
-
 /// A half-open range of Hilbert keys (64-bit so that the last range can end past 2^32 - 1).
 struct KeyRange {
     std::uint64_t low = 0, high = 0;
@@ -477,7 +473,7 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     std::size_t first_parallel = 0;
     while (first_parallel + 1 < round_begin.size() &&
            round_begin[first_parallel + 1] - round_begin[first_parallel] <
-               kMinRoundPointsPerThread * threads) {
+               std::uint64_t{options.parallel_round_minimum} * threads) {
         ++first_parallel;
     }
     const std::uint32_t prefix_end =

@@ -180,3 +180,33 @@ TEST(Triangulation_ParallelBowyerWatson2d, OtherOrdersRunSequentially) {
     options.order = tri::InsertionOrder::Random;
     EXPECT_EQ(tri::bowyer_watson_2d(xy, options).counters.threads, 1u);
 }
+
+TEST(Triangulation_ParallelBowyerWatson2d, TinyRoundsOnSmallInputs) {
+    // Parallel rounds from 4 points per thread: most cavities meet a border or the hull, so
+    // deferral, the second curve and the tail all run, on every distribution (with the
+    // quadratic parabola too) and sizes 5..800.
+    const int seeds = std::max(2, static_cast<int>(12 * test_scale()));
+    for (const gen::Distribution d : gen::kAllDistributions) {
+        for (int seed = 0; seed < seeds; ++seed) {
+            const auto n = static_cast<std::uint32_t>(5 + seed * 997 % 800);
+            const std::vector<double> xy =
+                gen::generate_points_2d(d, n, static_cast<std::uint64_t>(seed));
+            const tri::Delaunay2Result sequential = build(xy, 1);
+            const auto expected = tri::canonical_triangles_2d(sequential.triangles);
+            for (unsigned threads = 2; threads <= 4; ++threads) {
+                tri::Delaunay2Options options;
+                options.threads = threads;
+                options.parallel_round_minimum = 4;
+                options.seed = static_cast<std::uint64_t>(seed);
+                const tri::Delaunay2Result r = tri::bowyer_watson_2d(xy, options);
+                const std::string where =
+                    std::string(gen::distribution_name(d)) + " n=" + std::to_string(n) + " seed " +
+                    std::to_string(seed) + ", " + std::to_string(threads) + " threads";
+                ASSERT_EQ(tri::canonical_triangles_2d(r.triangles), expected) << where;
+                ASSERT_EQ(r.merged_into, sequential.merged_into) << where;
+                ASSERT_TRUE(tri::check_delaunay_2d(xy, r.triangles).ok) << where;
+                expect_mutual_neighbours(r, where);
+            }
+        }
+    }
+}
