@@ -4,6 +4,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
@@ -306,13 +307,19 @@ class ParallelConstruction {
   public:
     ParallelConstruction(detail::Delaunay2Core& core, unsigned threads)
         : core_(core),
-          keys_{hilbert_keys_2d(core.mesh.xy), hilbert_keys_2d(core.mesh.xy, kSecondCurveShift)},
-          shared_{core.mesh, keys_[0].data(), core.input_index, core.merged_into},
+          shared_{core.mesh, nullptr, core.input_index, core.merged_into},
           workers_(threads),
           // More partitions than hardware threads still give the same triangles; the arena
           // only runs them on the threads there are.
           arena_(std::min(static_cast<int>(threads), tbb::this_task_arena::max_concurrency())) {
         const std::uint32_t n = core.mesh.vertex_count();
+        const std::span<const double> xy = core.mesh.xy;
+        // The two curves' keys side by side (a tenth of the sequential construction's time).
+        arena_.execute([&] {
+            tbb::parallel_invoke([&] { keys_[0] = hilbert_keys_2d(xy); },
+                                 [&] { keys_[1] = hilbert_keys_2d(xy, kSecondCurveShift); });
+        });
+        shared_.keys = keys_[0].data();
         for (Worker& worker : workers_) worker.starting_at.assign(n + 1, kNone);
         sequential_.owns_all = true;
         sequential_.starting_at.assign(n + 1, kNone);
