@@ -44,6 +44,13 @@ struct Shared {
     const std::uint32_t* keys = nullptr;  ///< per mesh vertex: the key of this pass's curve
     const std::vector<VertIdx>& input_index;
     std::vector<VertIdx>& merged_into;
+    /// Per triangle slot: the mark of the last insertion attempt that visited it. A worker
+    /// writes only the slots of its triangles; it reads those and the mixed ones, which no one
+    /// writes during a pass (and marks are unique, so another worker's old mark never matches).
+    std::vector<std::uint64_t>* stamp = nullptr;
+    /// Per vertex (+1 for kInfinite): the new triangle on edge v -> * of the current insertion.
+    /// A worker writes only the entries of cavity boundary vertices, which are in its range.
+    std::vector<TriIdx>* starting_at = nullptr;
 };
 
 enum class Outcome { Inserted, Merged, Deferred };
@@ -63,10 +70,10 @@ struct Worker {
     std::vector<TriIdx> cavity;
     std::vector<BoundaryEdge> boundary;
     std::vector<TriIdx> created;
-    std::vector<std::uint32_t> stamp;  ///< per triangle slot: the insertion that visited it
-    std::uint32_t stamp_value = 0;
-    std::vector<TriIdx> starting_at;  ///< per vertex (+1 for kInfinite): new triangle on v -> *
-    TriIdx last = kNone;              ///< where the next walk starts (a triangle of ours)
+    /// This worker's marks in the shared stamps: index, index + stride, index + 2 stride, ...
+    /// (stride = the number of workers), so that no two workers ever use the same mark.
+    std::uint64_t next_mark = 0, mark_stride = 1;
+    TriIdx last = kNone;  ///< where the next walk starts (a triangle of ours)
     std::uint64_t rng_state = 0x9E3779B97F4A7C15ull;
 
     std::span<const VertIdx> points;  ///< this pass's points, in Hilbert order
@@ -196,8 +203,14 @@ struct Worker {
                 }
             }
         }
-        if (stamp.size() < mesh.triangle_slots()) stamp.resize(2 * mesh.triangle_slots(), 0);
-        const std::uint32_t mark = ++stamp_value;
+        std::vector<std::uint64_t>& stamp = *shared.stamp;
+        if (stamp.size() < mesh.triangle_slots()) {
+            EM_ASSERT(owns_all);  // workers find it sized for the pass
+            stamp.resize(2 * static_cast<std::size_t>(mesh.triangle_slots()), 0);
+        }
+        next_mark += mark_stride;
+        const std::uint64_t mark = next_mark;
+        std::vector<TriIdx>& starting_at = *shared.starting_at;
         cavity.clear();
         boundary.clear();
         created.clear();
@@ -320,9 +333,17 @@ class ParallelConstruction {
                                  [&] { keys_[1] = hilbert_keys_2d(xy, kSecondCurveShift); });
         });
         shared_.keys = keys_[0].data();
-        for (Worker& worker : workers_) worker.starting_at.assign(n + 1, kNone);
+        starting_at_.assign(n + 1, kNone);
+        shared_.starting_at = &starting_at_;
+        shared_.stamp = &stamp_;
+        const std::size_t stride = workers_.size() + 1;
+        for (std::size_t w = 0; w < workers_.size(); ++w) {
+            workers_[w].next_mark = w;
+            workers_[w].mark_stride = stride;
+        }
         sequential_.owns_all = true;
-        sequential_.starting_at.assign(n + 1, kNone);
+        sequential_.next_mark = workers_.size();
+        sequential_.mark_stride = stride;
     }
 
     /// Inserts `points` one by one (the prefix and the tail).
@@ -363,10 +384,10 @@ class ParallelConstruction {
             mesh.tv.resize(3 * static_cast<std::size_t>(worker.fresh_end), kNone);
             mesh.twin.resize(3 * static_cast<std::size_t>(worker.fresh_end), kNone);
         }
+        if (stamp_.size() < mesh.triangle_slots())
+            stamp_.resize(mesh.triangle_slots() + mesh.triangle_slots() / 4, 0);
         for (Worker& worker : workers_) {
             find_start(worker);
-            if (worker.stamp.size() < mesh.triangle_slots())
-                worker.stamp.resize(mesh.triangle_slots() + mesh.triangle_slots() / 4, 0);
         }
         arena_.execute([&] {
             tbb::parallel_for(
@@ -442,6 +463,8 @@ class ParallelConstruction {
 
     detail::Delaunay2Core& core_;
     std::vector<std::uint32_t> keys_[2];
+    std::vector<std::uint64_t> stamp_;
+    std::vector<TriIdx> starting_at_;
     Shared shared_;
     std::vector<Worker> workers_;
     Worker sequential_;
