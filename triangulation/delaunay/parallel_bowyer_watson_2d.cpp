@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <thread>
 #include <vector>
@@ -243,6 +244,9 @@ struct Worker {
             free_slots.push_back(t);
         }
         for (const BoundaryEdge& b : boundary) {
+            // The entries of starting_at this writes are its own vertices' (cavity triangles
+            // are ours), so no other worker touches them during the pass.
+            EM_ASSERT(owns_vertex(shared, b.origin) && owns_vertex(shared, b.destination));
             const TriIdx t = allocate(mesh);
             created.push_back(t);
             mesh.tv[3 * t] = b.origin;
@@ -329,9 +333,17 @@ class ParallelConstruction {
         const std::span<const double> xy = core.mesh.xy;
         // The two curves' keys side by side (a tenth of the sequential construction's time).
         arena_.execute([&] {
-            tbb::parallel_invoke([&] { keys_[0] = hilbert_keys_2d(xy); },
-                                 [&] { keys_[1] = hilbert_keys_2d(xy, kSecondCurveShift); });
+            tbb::parallel_invoke(
+                [&] {
+                    keys_[0] = hilbert_keys_2d(xy);
+                    finished_.fetch_add(1, std::memory_order_release);
+                },
+                [&] {
+                    keys_[1] = hilbert_keys_2d(xy, kSecondCurveShift);
+                    finished_.fetch_add(1, std::memory_order_release);
+                });
         });
+        (void)finished_.load(std::memory_order_acquire);  // as in pass(), for ThreadSanitizer
         shared_.keys = keys_[0].data();
         starting_at_.assign(n + 1, kNone);
         shared_.starting_at = &starting_at_;
@@ -389,14 +401,21 @@ class ParallelConstruction {
         for (Worker& worker : workers_) {
             find_start(worker);
         }
+        // The release/acquire pairs on pass_epoch_ and finished_ repeat what the task scheduler
+        // already guarantees (the setup above happens before each worker, each worker before
+        // what follows), in a form ThreadSanitizer sees: libtbb is not instrumented.
+        pass_epoch_.fetch_add(1, std::memory_order_release);
         arena_.execute([&] {
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(0, count, 1),
                 [&](const tbb::blocked_range<std::size_t>& r) {
+                    (void)pass_epoch_.load(std::memory_order_acquire);
                     for (std::size_t w = r.begin(); w != r.end(); ++w) workers_[w].run(shared_);
+                    finished_.fetch_add(1, std::memory_order_release);
                 },
                 tbb::simple_partitioner());
         });
+        (void)finished_.load(std::memory_order_acquire);
         std::vector<VertIdx> deferred;
         for (Worker& worker : workers_) {
             for (std::size_t i = worker.deferred.size(); i < worker.points.size(); ++i)
@@ -464,6 +483,7 @@ class ParallelConstruction {
     detail::Delaunay2Core& core_;
     std::vector<std::uint32_t> keys_[2];
     std::vector<std::uint64_t> stamp_;
+    std::atomic<std::uint64_t> pass_epoch_{0}, finished_{0};
     std::vector<TriIdx> starting_at_;
     Shared shared_;
     std::vector<Worker> workers_;
