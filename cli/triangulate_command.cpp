@@ -34,6 +34,7 @@ struct TriangulateArguments : CommandArguments, OrderArguments {
     PictureArguments picture;
     std::string algorithm = "bowyer-watson";
     std::string location = "auto";
+    unsigned threads = 1;
 };
 
 tri::PointLocation point_location(const std::string& name) {
@@ -56,7 +57,8 @@ void run_triangulate(const TriangulateArguments& arguments) {
 
     const tri::Delaunay2Options options{tri::insertion_order_from_name(arguments.order),
                                         arguments.seed, point_location(arguments.location),
-                                        progress_printer("triangulate", arguments.quiet)};
+                                        progress_printer("triangulate", arguments.quiet),
+                                        arguments.threads};
     const auto [result, stats, seconds] =
         timed_construction([&] { return construct(nodes.xy, options); });
 
@@ -103,6 +105,14 @@ void add_triangulate_command(CLI::App& app) {
                      "insertion, grid (jump to a recent insertion nearby, then walk), or auto "
                      "(grid for the random order, else walk); tanemura-merriam locates nothing")
         ->check(CLI::IsMember({"auto", "walk", "grid"}))
+        ->capture_default_str();
+    command
+        ->add_option("--threads", arguments->threads,
+                     "Threads of bowyer-watson with the brio order (oneTBB; the same triangles "
+                     "for every count): 1 runs the sequential code, 0 every hardware thread; "
+                     "the other algorithms and orders run sequentially. --stats prints the "
+                     "count used and the parallel rounds' counters")
+        ->check(whole_number_at_most(1024))
         ->capture_default_str();
     add_picture_options(*command, arguments->picture);
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",

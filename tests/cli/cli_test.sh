@@ -189,6 +189,34 @@ point_location() {
   expect_error 2 'foo not in' triangulate "$work/random.node" -o "$work/x.ele" --location foo
 }
 
+# --threads: bowyer-watson on 1 to 3 threads and on every core (0) gives the same triangles;
+# --stats names the count and the parallel counters; a count above 1024 is a usage error.
+threads() {
+  # 40000 points from the Park-Miller generator (as point_location), enough for parallel rounds.
+  awk 'BEGIN { n = 40000; s = 4711; print n, 2, 0, 0
+    for (i = 1; i <= n; i++) {
+      s = (s * 16807) % 2147483647; x = s / 2147483647
+      s = (s * 16807) % 2147483647; y = s / 2147483647
+      printf "%d %.17g %.17g\n", i, x, y } }' >"$work/many.node"
+  local threads
+  for threads in 1 2 3 0; do
+    run 0 triangulate "$work/many.node" -o "$work/t$threads.ele" --threads "$threads" --stats || return
+    expect_stats 40000 orient2d threads sequential_prefix parallel_rounds parallel_points \
+      deferred_points sequential_tail
+    canonical "$work/t$threads.ele" >"$work/t$threads.triangles"
+    cmp -s "$work/t1.triangles" "$work/t$threads.triangles" ||
+      fail "--threads $threads: a different triangulation than --threads 1"
+  done
+  run 0 triangulate "$work/many.node" -o "$work/x.ele" --threads 2 --stats || return
+  grep -q '^threads: 2$' "$work/out" || fail "--threads 2: --stats does not print 'threads: 2'"
+  awk '/^parallel_points: / { exit !($2 > 20000) }' "$work/out" ||
+    fail "--threads 2: fewer than half of the points inserted in parallel"
+  run 0 triangulate "$work/many.node" -o "$work/x.ele" --stats || return
+  grep -q '^threads: 1$' "$work/out" || fail "default: --stats does not print 'threads: 1'"
+  run 0 check "$work/many.node" "$work/t2.ele" || fail "check rejected the 2-thread output"
+  expect_error 2 'threads' triangulate "$work/many.node" -o "$work/x.ele" --threads 5000
+}
+
 bad_input() {
   expect_error 2 'nan\.node:[0-9]+: non-finite y coordinate .nan.' \
     triangulate "$data/nan.node" -o "$work/x.ele"
@@ -1437,7 +1465,8 @@ case "$case_name" in
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
-    mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine | tetmesh_frontal)
+    mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine | \
+    tetmesh_frontal | threads)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Differential campaign: our three 2D Delaunay algorithms against CGAL's
+// Differential campaign: our three 2D Delaunay algorithms (Bowyer-Watson also on 2, 3 and 4
+// threads) against CGAL's
 // Delaunay_triangulation_2 (Epick), compared by DESIGN.md's rules: identical triangles where
 // the Delaunay triangulation is unique; otherwise both exactly Delaunay, same vertex set, same
 // triangle count and the same "strict" edges (hull edges and edges whose two triangles are not
@@ -15,6 +16,7 @@
 #include <cstdlib>
 #include <map>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -96,9 +98,24 @@ struct Algorithm {
     const char* name;
     tri::Delaunay2Function build;
 };
+/// Bowyer-Watson on `Threads` threads (parallel_bowyer_watson_2d.hpp), with parallel rounds from
+/// 8 points per thread so that the campaign's small inputs run them too.
+template <unsigned Threads>
+tri::Delaunay2Result bowyer_watson_threads(std::span<const double> xy,
+                                           const tri::Delaunay2Options& options) {
+    tri::Delaunay2Options parallel = options;
+    parallel.order = tri::InsertionOrder::Brio;
+    parallel.threads = Threads;
+    parallel.parallel_round_minimum = 8;
+    return tri::bowyer_watson_2d(xy, parallel);
+}
+
 const Algorithm kAlgorithms[] = {{"bowyer-watson", &tri::bowyer_watson_2d},
                                  {"green-sibson", &tri::green_sibson_2d},
-                                 {"tanemura-merriam", &tri::tanemura_merriam_2d}};
+                                 {"tanemura-merriam", &tri::tanemura_merriam_2d},
+                                 {"bowyer-watson --threads 2", &bowyer_watson_threads<2>},
+                                 {"bowyer-watson --threads 3", &bowyer_watson_threads<3>},
+                                 {"bowyer-watson --threads 4", &bowyer_watson_threads<4>}};
 
 /// Compares every algorithm (in a seed-chosen order) with CGAL on xy; returns disagreements.
 int compare_with_cgal(const std::vector<double>& xy, std::uint64_t seed, const std::string& label) {
@@ -132,7 +149,8 @@ int compare_with_cgal(const std::vector<double>& xy, std::uint64_t seed, const s
         }
         if (!problem.empty()) {
             ++disagreements;
-            ADD_FAILURE() << label << ", " << algorithm.name << " (seed " << seed << "): " << problem;
+            ADD_FAILURE() << label << ", " << algorithm.name << " (seed " << seed
+                          << "): " << problem;
         }
     }
     return disagreements;
@@ -165,25 +183,28 @@ TEST(Differential_Delaunay2VsCgal, SeededCampaignOverAllDistributions) {
     int cases = 0, disagreements = 0;
     for (const gen::Distribution d : gen::kAllDistributions) {
         for (int seed = 0; seed < seeds; ++seed) {
-            const std::uint32_t n = seed % 10 == 9 ? 2000u : 3u + static_cast<std::uint32_t>(seed * 37 % 300);
-            const std::vector<double> xy = gen::generate_points_2d(d, n, static_cast<std::uint64_t>(seed));
+            const std::uint32_t n =
+                seed % 10 == 9 ? 2000u : 3u + static_cast<std::uint32_t>(seed * 37 % 300);
+            const std::vector<double> xy =
+                gen::generate_points_2d(d, n, static_cast<std::uint64_t>(seed));
             disagreements += compare_with_cgal(
                 xy, static_cast<std::uint64_t>(seed),
                 std::string(gen::distribution_name(d)) + " n=" + std::to_string(n));
             ++cases;
         }
     }
-    std::printf("differential campaign: %d cases x 3 algorithms, %d disagreements\n", cases,
+    std::printf("differential campaign: %d cases x 6 algorithm runs, %d disagreements\n", cases,
                 disagreements);
     EXPECT_EQ(disagreements, 0);
 }
 
 TEST(Differential_Delaunay2VsCgal, DelaunatorCorpusFixtures) {
     // Point sets from ../shared/corpus/delaunator (JSON arrays of [x, y]).
-    const char* files[] = {"issue13", "issue43", "issue44", "robustness1", "robustness2",
-                           "robustness3", "robustness4", "ukraine"};
+    const char* files[] = {"issue13",     "issue43",     "issue44",     "robustness1",
+                           "robustness2", "robustness3", "robustness4", "ukraine"};
     for (const char* name : files) {
-        const std::string path = std::string(EXACTMESH_CORPUS_DIR) + "/delaunator/" + name + ".json";
+        const std::string path =
+            std::string(EXACTMESH_CORPUS_DIR) + "/delaunator/" + name + ".json";
         FILE* f = std::fopen(path.c_str(), "r");
         ASSERT_NE(f, nullptr) << "missing corpus file " << path;
         std::string text;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "triangulation/delaunay/delaunay_2d_core.hpp"
+#include "triangulation/delaunay/parallel_bowyer_watson_2d.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -77,6 +78,12 @@ void insert_point(detail::Delaunay2Core& core, Cavity& cavity, VertIdx p, TriIdx
 }  // namespace
 
 Delaunay2Result bowyer_watson_2d(std::span<const double> xy, const Delaunay2Options& options) {
+    // The parallel construction partitions the BRIO rounds; other orders run sequentially.
+    if (options.threads != 1 && options.order == InsertionOrder::Brio &&
+        options.location != PointLocation::Grid) {
+        const unsigned threads = resolve_thread_count(options.threads);
+        if (threads > 1) return parallel_bowyer_watson_2d(xy, options, threads);
+    }
     detail::Delaunay2Core core(xy, options);
     std::vector<bool> skip;
     if (!core.make_first_triangle(skip)) {

@@ -33,24 +33,40 @@ struct Delaunay2Options {
     PointLocation location = PointLocation::Auto;
     /// Called every 2^14 points inserted, with the point count as total (base/progress.hpp).
     Progress progress{};
+    /// Threads of bowyer-watson (parallel_bowyer_watson_2d.hpp): 1 runs the sequential code,
+    /// 0 every hardware thread. The output is the same triangulation for every count. Used only
+    /// with the brio order and walk location; the other algorithms and orders run sequentially
+    /// (their counters then report threads = 1).
+    unsigned threads = 1;
+    /// Parallel only: a BRIO round of fewer than this many points per thread is inserted
+    /// sequentially (its ranges would be mostly border). Tests lower it to run the parallel
+    /// rounds on small inputs; the triangles do not depend on it.
+    std::uint32_t parallel_round_minimum = 2048;
 };
 
 /// Work counters of one construction (predicate stage counts come from predicates/stats.hpp).
 struct Delaunay2Counters {
-    std::uint64_t points = 0;            ///< input points
-    std::uint64_t duplicates = 0;        ///< input points merged into an earlier identical one
-    std::uint64_t orient_calls = 0;      ///< orient2d evaluations made by the algorithm
-    std::uint64_t incircle_calls = 0;    ///< incircle evaluations made by the algorithm
-    std::uint64_t walk_steps = 0;        ///< triangles visited by point location
-    std::uint64_t cavity_triangles = 0;  ///< Bowyer-Watson: triangles removed, summed
-    std::uint64_t flips = 0;             ///< Green-Sibson: Lawson flips
-    std::uint64_t candidates = 0;        ///< Tanemura-Merriam: candidate points examined
+    std::uint64_t points = 0;             ///< input points
+    std::uint64_t duplicates = 0;         ///< input points merged into an earlier identical one
+    std::uint64_t orient_calls = 0;       ///< orient2d evaluations made by the algorithm
+    std::uint64_t incircle_calls = 0;     ///< incircle evaluations made by the algorithm
+    std::uint64_t walk_steps = 0;         ///< triangles visited by point location
+    std::uint64_t cavity_triangles = 0;   ///< Bowyer-Watson: triangles removed, summed
+    std::uint64_t flips = 0;              ///< Green-Sibson: Lawson flips
+    std::uint64_t candidates = 0;         ///< Tanemura-Merriam: candidate points examined
+    std::uint64_t threads = 1;            ///< threads of the construction
+    std::uint64_t sequential_prefix = 0;  ///< parallel: points inserted before the parallel rounds
+    std::uint64_t parallel_rounds = 0;    ///< parallel: passes of the threads over their partitions
+    std::uint64_t parallel_points = 0;    ///< parallel: points inserted (or merged) by the threads
+    std::uint64_t deferred_points = 0;  ///< parallel: insertions put off (a point may count twice)
+    std::uint64_t sequential_tail = 0;  ///< parallel: deferred points inserted at the end
 };
 
 /// The name table of Delaunay2Counters (base/counter_table.hpp): --stats prints it in this order.
 inline constexpr std::array kDelaunay2CounterNames =
     EM_COUNTER_TABLE(Delaunay2Counters, points, duplicates, orient_calls, incircle_calls,
-                     walk_steps, cavity_triangles, flips, candidates);
+                     walk_steps, cavity_triangles, flips, candidates, threads, sequential_prefix,
+                     parallel_rounds, parallel_points, deferred_points, sequential_tail);
 static_assert(counter_table_complete(kDelaunay2CounterNames));
 
 /// The Delaunay triangulation in the caller's vertex numbering.

@@ -62,11 +62,11 @@ void radix_sort_by_key(std::vector<std::uint64_t>& items, std::vector<std::uint6
 
 }  // namespace
 
-namespace {
+namespace {}  // namespace
 
 /// Hilbert keys of all points on a 2^16 grid over their bounding box, computed in input order
 /// (sequential reads) so that the shuffled rounds only gather 4-byte keys.
-std::vector<std::uint32_t> hilbert_keys(std::span<const double> xy) {
+std::vector<std::uint32_t> hilbert_keys_2d(std::span<const double> xy, std::uint32_t cell_shift) {
     const std::size_t n = xy.size() / 2;
     std::vector<std::uint32_t> keys(n);
     if (n == 0) return keys;
@@ -85,10 +85,13 @@ std::vector<std::uint32_t> hilbert_keys(std::span<const double> xy) {
         return static_cast<std::uint32_t>(std::clamp(t, 0.0, 1.0) * 65535.0);
     };
     for (std::size_t i = 0; i < n; ++i) {
-        keys[i] = hilbert_key(cell(xy[2 * i], min_x, half_x), cell(xy[2 * i + 1], min_y, half_y));
+        keys[i] = hilbert_key((cell(xy[2 * i], min_x, half_x) + cell_shift) & 0xFFFFu,
+                              (cell(xy[2 * i + 1], min_y, half_y) + cell_shift) & 0xFFFFu);
     }
     return keys;
 }
+
+namespace {
 
 void sort_by_keys(std::span<const std::uint32_t> keys, std::span<std::uint32_t> indices,
                   std::vector<std::uint64_t>& keyed, std::vector<std::uint64_t>& scratch) {
@@ -223,12 +226,12 @@ void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indice
         subset[2 * k] = xy[2 * indices[k]];
         subset[2 * k + 1] = xy[2 * indices[k] + 1];
     }
-    reorder_by_keys(hilbert_keys(subset), indices);
+    reorder_by_keys(hilbert_keys_2d(subset), indices);
 }
 
 std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
                                               std::uint64_t seed) {
-    return insertion_order(xy.size() / 2, order, seed, [xy] { return hilbert_keys(xy); });
+    return insertion_order(xy.size() / 2, order, seed, [xy] { return hilbert_keys_2d(xy); });
 }
 
 std::vector<std::uint32_t> insertion_order_3d(std::span<const double> xyz, InsertionOrder order,

@@ -105,7 +105,13 @@ TEST(CounterTable, MacroNamesEachRowAfterItsMember) {
         exactmesh::counter("walk_steps", &D::walk_steps),
         exactmesh::counter("cavity_triangles", &D::cavity_triangles),
         exactmesh::counter("flips", &D::flips),
-        exactmesh::counter("candidates", &D::candidates)};
+        exactmesh::counter("candidates", &D::candidates),
+        exactmesh::counter("threads", &D::threads),
+        exactmesh::counter("sequential_prefix", &D::sequential_prefix),
+        exactmesh::counter("parallel_rounds", &D::parallel_rounds),
+        exactmesh::counter("parallel_points", &D::parallel_points),
+        exactmesh::counter("deferred_points", &D::deferred_points),
+        exactmesh::counter("sequential_tail", &D::sequential_tail)};
     static_assert(same_rows(tri::kDelaunay2CounterNames, kDelaunay2Before));
-    EXPECT_EQ(tri::kDelaunay2CounterNames.size(), 8u);
+    EXPECT_EQ(tri::kDelaunay2CounterNames.size(), 14u);
 }

@@ -1,0 +1,562 @@
+// SPDX-License-Identifier: MIT
+// Multicore Bowyer-Watson 2D (see parallel_bowyer_watson_2d.hpp).
+#include "triangulation/delaunay/parallel_bowyer_watson_2d.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "predicates/incircle.hpp"
+#include "predicates/orient2d.hpp"
+#include "predicates/sos.hpp"
+#include "triangulation/delaunay/delaunay_2d_core.hpp"
+#include "triangulation/mesh/spatial_sort.hpp"
+
+namespace exactmesh::triangulation {
+
+unsigned resolve_thread_count(unsigned threads) {
+    if (threads != 0) return threads;
+    return std::max(1u, static_cast<unsigned>(tbb::this_task_arena::max_concurrency()));
+}
+
+namespace {
+
+using predicates::Sign;
+
+/// A half-open range of Hilbert keys (64-bit so that the last range can end past 2^32 - 1).
+struct KeyRange {
+    std::uint64_t low = 0, high = 0;
+};
+
+/// What the threads share. During a pass each thread writes only: tv and twin of triangles of
+/// its partition (and slots of its own free list and fresh range), the twin half-edge of a
+/// mixed triangle facing its cavity, and merged_into of its own points.
+struct Shared {
+    TriMesh2& mesh;
+    const std::uint32_t* keys = nullptr;  ///< per mesh vertex: the key of this pass's curve
+    const std::vector<VertIdx>& input_index;
+    std::vector<VertIdx>& merged_into;
+    /// Per triangle slot: the mark of the last insertion attempt that visited it. A worker
+    /// writes only the slots of its triangles; it reads those and the mixed ones, which no one
+    /// writes during a pass (and marks are unique, so another worker's old mark never matches).
+    std::vector<std::uint64_t>* stamp = nullptr;
+    /// Per vertex (+1 for kInfinite): the new triangle on edge v -> * of the current insertion.
+    /// A worker writes only the entries of cavity boundary vertices, which are in its range.
+    std::vector<TriIdx>* starting_at = nullptr;
+};
+
+enum class Outcome { Inserted, Merged, Deferred };
+
+/// One thread's partition, allocator, scratch and counters (kept from pass to pass, so a thread
+/// reuses the slots it freed, near where it works).
+struct Worker {
+    KeyRange range;
+    bool owns_all = false;  ///< the sequential prefix and tail: every triangle is ours
+    std::vector<TriIdx> free_slots;
+    TriIdx fresh_next = 0, fresh_end = 0;
+
+    struct BoundaryEdge {
+        EdgeIdx inside, outside;
+        VertIdx origin, destination;
+    };
+    std::vector<TriIdx> cavity;
+    std::vector<BoundaryEdge> boundary;
+    std::vector<TriIdx> created;
+    /// This worker's marks in the shared stamps: index, index + stride, index + 2 stride, ...
+    /// (stride = the number of workers), so that no two workers ever use the same mark.
+    std::uint64_t next_mark = 0, mark_stride = 1;
+    TriIdx last = kNone;  ///< where the next walk starts (a triangle of ours)
+    std::uint64_t rng_state = 0x9E3779B97F4A7C15ull;
+
+    std::span<const VertIdx> points;  ///< this pass's points, in Hilbert order
+    std::size_t start = 0;            ///< the point whose walk found `last`
+    std::vector<VertIdx> deferred;
+    Delaunay2Counters counters{};
+
+    bool owns_vertex(const Shared& shared, VertIdx v) const {
+        if (owns_all) return true;
+        if (v == kInfinite) return false;
+        const std::uint64_t key = shared.keys[v];
+        return key >= range.low && key < range.high;
+    }
+    bool owns(const Shared& shared, TriIdx t) const {
+        if (owns_all) return true;
+        const VertIdx* v = &shared.mesh.tv[3 * t];
+        return owns_vertex(shared, v[0]) && owns_vertex(shared, v[1]) && owns_vertex(shared, v[2]);
+    }
+
+    std::uint32_t random_offset() {
+        rng_state ^= rng_state << 13;
+        rng_state ^= rng_state >> 7;
+        rng_state ^= rng_state << 17;
+        return static_cast<std::uint32_t>(rng_state % 3);
+    }
+
+    Sign orient(const Shared& shared, VertIdx a, VertIdx b, VertIdx c) {
+        ++counters.orient_calls;
+        const TriMesh2& mesh = shared.mesh;
+        return predicates::orient2d(mesh.point(a), mesh.point(b), mesh.point(c));
+    }
+
+    /// The same test as Delaunay2Core::conflict, counted here (the core's counters are not
+    /// shared between threads).
+    bool conflict(const Shared& shared, TriIdx t, VertIdx p) {
+        const TriMesh2& mesh = shared.mesh;
+        const VertIdx* v = &mesh.tv[3 * t];
+        for (int k = 0; k < 3; ++k) {
+            if (v[k] == kInfinite) {
+                const VertIdx a = v[(k + 1) % 3], b = v[(k + 2) % 3];
+                const Sign s = orient(shared, a, b, p);
+                if (s != Sign::Zero) return s == Sign::Positive;
+                const double* pa = mesh.point(a);
+                const double* pb = mesh.point(b);
+                const double* pp = mesh.point(p);
+                const int c = pa[0] != pb[0] ? 0 : 1;
+                return (pa[c] < pp[c] && pp[c] < pb[c]) || (pb[c] < pp[c] && pp[c] < pa[c]);
+            }
+        }
+        ++counters.incircle_calls;
+        const Sign s = predicates::incircle(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                            mesh.point(p));
+        if (s != Sign::Zero) return s == Sign::Positive;
+        const std::vector<VertIdx>& index = shared.input_index;
+        return predicates::incircle_sos(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                        mesh.point(p), index[v[0]], index[v[1]], index[v[2]],
+                                        index[p]) == Sign::Positive;
+    }
+
+    TriIdx allocate(TriMesh2& mesh) {
+        if (!free_slots.empty()) {
+            const TriIdx t = free_slots.back();
+            free_slots.pop_back();
+            return t;
+        }
+        if (fresh_next < fresh_end) return fresh_next++;
+        // Only the sequential worker may grow the arrays: no thread runs beside it.
+        EM_ASSERT(owns_all);
+        const TriIdx t = mesh.triangle_slots();
+        mesh.tv.resize(mesh.tv.size() + 3, kNone);
+        mesh.twin.resize(mesh.twin.size() + 3, kNone);
+        return t;
+    }
+
+    /// Visibility walk from `last` (as Delaunay2Core::walk_to) that gives up on leaving the
+    /// partition: then kNone.
+    TriIdx walk(const Shared& shared, VertIdx p) {
+        const TriMesh2& mesh = shared.mesh;
+        TriIdx t = last;
+        if (mesh.is_infinite(t)) {
+            // Only the sequential worker owns infinite triangles: step across the hull edge.
+            for (unsigned k = 0; k < 3; ++k) {
+                const EdgeIdx e = 3 * t + k;
+                if (mesh.tv[e] != kInfinite && mesh.tv[next_edge(e)] != kInfinite) {
+                    t = triangle_of(mesh.twin[e]);
+                    break;
+                }
+            }
+        }
+        for (;;) {
+            ++counters.walk_steps;
+            if (mesh.is_infinite(t)) break;  // entered across a hull edge that sees p
+            const std::uint32_t r = random_offset();
+            bool moved = false;
+            for (std::uint32_t k = 0; k < 3; ++k) {
+                const EdgeIdx e = 3 * t + (r + k) % 3;
+                if (orient(shared, mesh.origin(e), mesh.destination(e), p) == Sign::Negative) {
+                    const TriIdx u = triangle_of(mesh.twin[e]);
+                    if (!owns(shared, u)) return kNone;
+                    t = u;
+                    moved = true;
+                    break;
+                }
+            }
+            if (!moved) break;
+        }
+        return t;
+    }
+
+    /// Inserts p (Bowyer-Watson, as bowyer_watson_2d's insert_point) when its walk and cavity
+    /// stay in the partition; else changes nothing and returns Deferred.
+    Outcome insert(Shared& shared, VertIdx p) {
+        TriMesh2& mesh = shared.mesh;
+        if (last == kNone) return Outcome::Deferred;
+        const TriIdx seed = walk(shared, p);
+        if (seed == kNone) return Outcome::Deferred;
+        if (!mesh.is_infinite(seed)) {
+            for (unsigned k = 0; k < 3; ++k) {
+                const VertIdx v = mesh.tv[3 * seed + k];
+                const double* a = mesh.point(v);
+                const double* b = mesh.point(p);
+                if (a[0] == b[0] && a[1] == b[1]) {
+                    shared.merged_into[shared.input_index[p]] = shared.input_index[v];
+                    ++counters.duplicates;
+                    last = seed;
+                    return Outcome::Merged;
+                }
+            }
+        }
+        std::vector<std::uint64_t>& stamp = *shared.stamp;
+        if (stamp.size() < mesh.triangle_slots()) {
+            EM_ASSERT(owns_all);  // workers find it sized for the pass
+            stamp.resize(2 * static_cast<std::size_t>(mesh.triangle_slots()), 0);
+        }
+        next_mark += mark_stride;
+        const std::uint64_t mark = next_mark;
+        std::vector<TriIdx>& starting_at = *shared.starting_at;
+        cavity.clear();
+        boundary.clear();
+        created.clear();
+        stamp[seed] = mark;
+        cavity.push_back(seed);
+        // Breadth first over the connected conflict region [Watson81]. A neighbour of a
+        // triangle of ours is ours or mixed (they share two vertices), so reading it is safe;
+        // a mixed one may bound the cavity but not join it.
+        for (std::size_t i = 0; i < cavity.size(); ++i) {
+            const TriIdx t = cavity[i];
+            for (unsigned k = 0; k < 3; ++k) {
+                const EdgeIdx e = 3 * t + k;
+                const EdgeIdx f = mesh.twin[e];
+                const TriIdx u = triangle_of(f);
+                if (stamp[u] == mark) continue;
+                if (conflict(shared, u, p)) {
+                    if (!owns(shared, u)) return Outcome::Deferred;
+                    stamp[u] = mark;
+                    cavity.push_back(u);
+                } else {
+                    boundary.push_back({e, f, mesh.origin(e), mesh.destination(e)});
+                }
+            }
+        }
+        counters.cavity_triangles += cavity.size();
+        const std::uint32_t n = mesh.vertex_count();
+        auto slot = [n](VertIdx v) { return v == kInfinite ? n : v; };
+        for (const TriIdx t : cavity) {
+            mesh.tv[3 * t] = mesh.tv[3 * t + 1] = mesh.tv[3 * t + 2] = kNone;
+            free_slots.push_back(t);
+        }
+        for (const BoundaryEdge& b : boundary) {
+            // The entries of starting_at this writes are its own vertices' (cavity triangles
+            // are ours), so no other worker touches them during the pass.
+            EM_ASSERT(owns_vertex(shared, b.origin) && owns_vertex(shared, b.destination));
+            const TriIdx t = allocate(mesh);
+            created.push_back(t);
+            mesh.tv[3 * t] = b.origin;
+            mesh.tv[3 * t + 1] = b.destination;
+            mesh.tv[3 * t + 2] = p;
+            mesh.link(3 * t, b.outside);
+            starting_at[slot(b.origin)] = t;
+        }
+        for (std::size_t i = 0; i < created.size(); ++i) {
+            const TriIdx t = created[i];
+            const TriIdx u = starting_at[slot(boundary[i].destination)];
+            mesh.link(3 * t + 1, 3 * u + 2);
+        }
+        last = created.front();
+        return Outcome::Inserted;
+    }
+
+    /// Inserts this pass's points from points[start] (whose walk found `last` in the
+    /// partition) to the end, then back from points[start - 1] to the first, so that each walk
+    /// is short; the deferred ones go to `deferred`, sorted as `points`.
+    void run(Shared& shared) {
+        deferred.clear();
+        if (last == kNone) {
+            deferred.assign(points.begin(), points.end());
+            counters.deferred_points += deferred.size();
+            return;
+        }
+        std::vector<VertIdx> put_off_before;
+        TriIdx anchor = kNone;
+        auto insert_counted = [&](std::size_t i, std::vector<VertIdx>& into) {
+            if (insert(shared, points[i]) == Outcome::Deferred) {
+                into.push_back(points[i]);
+            } else {
+                ++counters.parallel_points;
+            }
+        };
+        for (std::size_t i = start; i < points.size(); ++i) {
+            insert_counted(i, deferred);
+            if (i == start) anchor = last;
+        }
+        // Back to the start: the anchor slot is ours (made or reused by this worker only).
+        if (anchor != kNone && !shared.mesh.is_dead(anchor) && owns(shared, anchor)) last = anchor;
+        for (std::size_t i = start; i-- > 0;) insert_counted(i, put_off_before);
+        std::reverse(put_off_before.begin(), put_off_before.end());
+        deferred.insert(deferred.begin(), put_off_before.begin(), put_off_before.end());
+        counters.deferred_points += deferred.size();
+    }
+};
+
+void add_work_counters(Delaunay2Counters& to, const Delaunay2Counters& from) {
+    to.duplicates += from.duplicates;
+    to.orient_calls += from.orient_calls;
+    to.incircle_calls += from.incircle_calls;
+    to.walk_steps += from.walk_steps;
+    to.cavity_triangles += from.cavity_triangles;
+    to.parallel_points += from.parallel_points;
+    to.deferred_points += from.deferred_points;
+}
+
+/// The second pass's curve: the Hilbert curve of the grid moved by 0.382 of its width (the golden
+/// section, far from dyadic and third fractions) along both axes (wrapping around). Its ranges'
+/// borders are not the dyadic lines of the first curve's (which a transposed curve would share: its
+/// quarters are the same quadrants), so the points deferred along the first borders mostly lie
+/// inside them.
+constexpr std::uint32_t kSecondCurveShift = 25033;  // 2^16 (1 - 0.618...)
+
+/// Sorts vertices by (key, vertex).
+void sort_by_key(const std::vector<std::uint32_t>& keys, std::vector<VertIdx>& points) {
+    std::sort(points.begin(), points.end(), [&keys](VertIdx u, VertIdx v) {
+        return keys[u] < keys[v] || (keys[u] == keys[v] && u < v);
+    });
+}
+
+class ParallelConstruction {
+  public:
+    ParallelConstruction(detail::Delaunay2Core& core, unsigned threads)
+        : core_(core),
+          shared_{core.mesh, nullptr, core.input_index, core.merged_into},
+          workers_(threads),
+          // More partitions than hardware threads still give the same triangles; the arena
+          // only runs them on the threads there are.
+          arena_(std::min(static_cast<int>(threads), tbb::this_task_arena::max_concurrency())) {
+        const std::uint32_t n = core.mesh.vertex_count();
+        const std::span<const double> xy = core.mesh.xy;
+        // The two curves' keys side by side (a tenth of the sequential construction's time).
+        arena_.execute([&] {
+            tbb::parallel_invoke(
+                [&] {
+                    keys_[0] = hilbert_keys_2d(xy);
+                    finished_.fetch_add(1, std::memory_order_release);
+                },
+                [&] {
+                    keys_[1] = hilbert_keys_2d(xy, kSecondCurveShift);
+                    finished_.fetch_add(1, std::memory_order_release);
+                });
+        });
+        (void)finished_.load(std::memory_order_acquire);  // as in pass(), for ThreadSanitizer
+        shared_.keys = keys_[0].data();
+        starting_at_.assign(n + 1, kNone);
+        shared_.starting_at = &starting_at_;
+        shared_.stamp = &stamp_;
+        const std::size_t stride = workers_.size() + 1;
+        for (std::size_t w = 0; w < workers_.size(); ++w) {
+            workers_[w].next_mark = w;
+            workers_[w].mark_stride = stride;
+        }
+        sequential_.owns_all = true;
+        sequential_.next_mark = workers_.size();
+        sequential_.mark_stride = stride;
+    }
+
+    /// Inserts `points` one by one (the prefix and the tail).
+    void insert_sequentially(std::span<const VertIdx> points) {
+        sequential_.last = core_.last_triangle;
+        for (const VertIdx p : points) {
+            const Outcome outcome = sequential_.insert(shared_, p);
+            EM_ASSERT(outcome != Outcome::Deferred);
+            core_.progress.tick();
+        }
+        core_.last_triangle = sequential_.last;
+    }
+
+    /// One pass: `points` (sorted by the keys of `curve`) cut by `bounds` (T + 1 increasing
+    /// keys of that curve, first 0, last
+    /// 2^32) into the workers' ranges; returns the deferred points, sorted by key.
+    std::vector<VertIdx> pass(std::span<const VertIdx> points, int curve,
+                              const std::vector<std::uint64_t>& bounds) {
+        TriMesh2& mesh = core_.mesh;
+        const std::vector<std::uint32_t>& keys = keys_[curve];
+        shared_.keys = keys.data();
+        const std::size_t count = workers_.size();
+        // Each insertion frees its cavity (k triangles) before making k + 2: two fresh slots
+        // per point cover a worker's whole list, so the arrays need not grow during the pass.
+        std::size_t begin = 0;
+        for (std::size_t w = 0; w < count; ++w) {
+            Worker& worker = workers_[w];
+            worker.range = {bounds[w], bounds[w + 1]};
+            std::size_t end = begin;
+            while (end < points.size() && keys[points[end]] < worker.range.high) ++end;
+            worker.points = points.subspan(begin, end - begin);
+            begin = end;
+            for (TriIdx t = worker.fresh_next; t < worker.fresh_end; ++t)
+                worker.free_slots.push_back(t);
+            const std::size_t needed = 2 * worker.points.size() + 2;
+            worker.fresh_next = mesh.triangle_slots();
+            worker.fresh_end = static_cast<TriIdx>(worker.fresh_next + needed);
+            mesh.tv.resize(3 * static_cast<std::size_t>(worker.fresh_end), kNone);
+            mesh.twin.resize(3 * static_cast<std::size_t>(worker.fresh_end), kNone);
+        }
+        if (stamp_.size() < mesh.triangle_slots())
+            stamp_.resize(mesh.triangle_slots() + mesh.triangle_slots() / 4, 0);
+        for (Worker& worker : workers_) {
+            find_start(worker);
+        }
+        // The release/acquire pairs on pass_epoch_ and finished_ repeat what the task scheduler
+        // already guarantees (the setup above happens before each worker, each worker before
+        // what follows), in a form ThreadSanitizer sees: libtbb is not instrumented.
+        pass_epoch_.fetch_add(1, std::memory_order_release);
+        arena_.execute([&] {
+            tbb::parallel_for(
+                tbb::blocked_range<std::size_t>(0, count, 1),
+                [&](const tbb::blocked_range<std::size_t>& r) {
+                    (void)pass_epoch_.load(std::memory_order_acquire);
+                    for (std::size_t w = r.begin(); w != r.end(); ++w) workers_[w].run(shared_);
+                    finished_.fetch_add(1, std::memory_order_release);
+                },
+                tbb::simple_partitioner());
+        });
+        (void)finished_.load(std::memory_order_acquire);
+        std::vector<VertIdx> deferred;
+        for (Worker& worker : workers_) {
+            for (std::size_t i = worker.deferred.size(); i < worker.points.size(); ++i)
+                core_.progress.tick();
+            deferred.insert(deferred.end(), worker.deferred.begin(), worker.deferred.end());
+            if (worker.last != kNone) core_.last_triangle = worker.last;
+        }
+        ++core_.counters.parallel_rounds;
+        return deferred;
+    }
+
+    /// The keys of `curve` at the fractions i / T of `points` (i = 1..T-1), framed by 0 and
+    /// 2^32: the ranges of a pass, about equal in points.
+    std::vector<std::uint64_t> bounds(std::span<const VertIdx> points, int curve) const {
+        const std::size_t count = workers_.size();
+        std::vector<std::uint32_t> sorted(points.size());
+        for (std::size_t k = 0; k < points.size(); ++k) sorted[k] = keys_[curve][points[k]];
+        std::vector<std::uint64_t> out{0};
+        for (std::size_t i = 1; i < count; ++i) {
+            const auto at = std::min(points.size() * i / count, points.size() - 1);
+            if (points.empty()) {
+                out.push_back(0);
+                continue;
+            }
+            std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(at),
+                             sorted.end());
+            out.push_back(sorted[at]);
+        }
+        out.push_back(std::uint64_t{1} << 32);
+        return out;
+    }
+
+    const std::vector<std::uint32_t>& keys(int curve) const { return keys_[curve]; }
+
+    void finish_counters() {
+        for (const Worker& worker : workers_) add_work_counters(core_.counters, worker.counters);
+        add_work_counters(core_.counters, sequential_.counters);
+    }
+
+  private:
+    /// A triangle of the worker's partition to start its walks from, and the point it was found
+    /// for: the (sequential, read-only) walk to one of its points, tried at the middle of the
+    /// list first (farthest from the ranges' ends along the curve), then at fractions 1/4, 3/4,
+    /// 1/8, ...; kNone when none of 32 tries lands in the partition (then its points wait).
+    void find_start(Worker& worker) {
+        worker.last = kNone;
+        worker.start = 0;
+        const std::size_t size = worker.points.size();
+        if (size == 0) return;
+        for (std::size_t denominator = 2, tries = 0; tries < 32; denominator *= 2) {
+            for (std::size_t numerator = 1; numerator < denominator && tries < 32;
+                 numerator += 2, ++tries) {
+                const std::size_t i = size * numerator / denominator;
+                const TriIdx t = core_.walk_to(worker.points[i]);
+                if (worker.owns(shared_, t)) {
+                    worker.last = t;
+                    worker.start = i;
+                    return;
+                }
+            }
+            if (denominator >= size) break;
+        }
+    }
+
+    detail::Delaunay2Core& core_;
+    std::vector<std::uint32_t> keys_[2];
+    std::vector<std::uint64_t> stamp_;
+    std::atomic<std::uint64_t> pass_epoch_{0}, finished_{0};
+    std::vector<TriIdx> starting_at_;
+    Shared shared_;
+    std::vector<Worker> workers_;
+    Worker sequential_;
+    tbb::task_arena arena_;
+};
+
+/// Merges two lists of vertices sorted by (key, vertex).
+std::vector<VertIdx> merge_by_key(const std::vector<std::uint32_t>& keys,
+                                  std::span<const VertIdx> a, std::span<const VertIdx> b) {
+    std::vector<VertIdx> out(a.size() + b.size());
+    std::merge(a.begin(), a.end(), b.begin(), b.end(), out.begin(),
+               [&keys](VertIdx u, VertIdx v) { return keys[u] < keys[v]; });
+    return out;
+}
+
+}  // namespace
+
+Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
+                                          const Delaunay2Options& options, unsigned threads) {
+    EM_ASSERT(threads >= 1);
+    Delaunay2Options brio = options;
+    brio.order = InsertionOrder::Brio;
+    brio.location = PointLocation::Walk;
+    detail::Delaunay2Core core(xy, brio);
+    core.counters.threads = threads;
+    std::vector<bool> skip;
+    if (!core.make_first_triangle(skip)) return core.collinear_result();
+    const std::uint32_t n = core.mesh.vertex_count();
+
+    // The BRIO rounds as insertion_order_2d made them: [n/2, n), [n/4, n/2), ... down to 64
+    // points, each sorted by Hilbert key; everything before the first large round is prefix.
+    std::vector<std::uint32_t> round_begin;
+    for (std::uint32_t end = n; end > 64; end /= 2) round_begin.push_back(end / 2);
+    std::reverse(round_begin.begin(), round_begin.end());
+    round_begin.push_back(n);
+    std::size_t first_parallel = 0;
+    while (first_parallel + 1 < round_begin.size() &&
+           round_begin[first_parallel + 1] - round_begin[first_parallel] <
+               std::uint64_t{options.parallel_round_minimum} * threads) {
+        ++first_parallel;
+    }
+    const std::uint32_t prefix_end =
+        first_parallel + 1 < round_begin.size() ? round_begin[first_parallel] : n;
+
+    ParallelConstruction construction(core, threads);
+    auto unskipped = [&skip](std::uint32_t begin, std::uint32_t end) {
+        std::vector<VertIdx> out;
+        for (VertIdx p = begin; p < end; ++p) {
+            if (!skip[p]) out.push_back(p);
+        }
+        return out;
+    };
+    const std::vector<VertIdx> prefix = unskipped(0, prefix_end);
+    construction.insert_sequentially(prefix);
+    core.counters.sequential_prefix = prefix.size();
+
+    std::vector<VertIdx> pending;
+    for (std::size_t r = first_parallel; r + 1 < round_begin.size(); ++r) {
+        const std::vector<VertIdx> round = unskipped(round_begin[r], round_begin[r + 1]);
+        const std::vector<VertIdx> points = merge_by_key(construction.keys(0), pending, round);
+        std::vector<VertIdx> deferred =
+            construction.pass(points, 0, construction.bounds(points, 0));
+        // The points deferred along the first curve's borders lie inside the ranges of the
+        // second curve.
+        sort_by_key(construction.keys(1), deferred);
+        pending = construction.pass(deferred, 1, construction.bounds(points, 1));
+        sort_by_key(construction.keys(0), pending);
+    }
+    construction.insert_sequentially(pending);
+    core.counters.sequential_tail = pending.size();
+    construction.finish_counters();
+    return core.take_result();
+}
+
+}  // namespace exactmesh::triangulation
