@@ -4,6 +4,8 @@
 // Gaussian-cluster, grid (cocircular), duplicate and near-collinear inputs, at 2^+-600.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -107,7 +109,9 @@ TEST(Triangulation_ParallelBowyerWatson2d, SameTrianglesAsSequentialOnEveryDistr
 TEST(Triangulation_ParallelBowyerWatson2d, RunsInParallelAndDefersFew) {
     // 10^5 uniform points on 2 threads: most points go through the threads, and the
     // sequential tail is a small fraction (the deferral rule is deterministic).
-    const std::uint32_t n = scaled(1e5);
+    // At least 2 x 10^4 at every EXACTMESH_TEST_SCALE: below 2 x 2,048 points per round (the
+    // default parallel_round_minimum) no round goes to the threads.
+    const std::uint32_t n = std::max<std::uint32_t>(scaled(1e5), 20000);
     const std::vector<double> xy = gen::generate_points_2d(gen::Distribution::Uniform, n, 3);
     const tri::Delaunay2Result r = build(xy, 2);
     EXPECT_GT(r.counters.parallel_points, n / 2);
