@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// What the stretched-mesh generator tests share (stretched Delaunay, min-max front): a sample
+// What the stretched-mesh generator tests share (stretched and metric Delaunay, min-max front,
+// metric conditioning): a square with a hole, a sample
 // domain's PSLG scaled by 2^k, the exact validity of a mesh of it, and the aspect ratios of the
 // triangles on its walls. Test support, not a library algorithm.
 #pragma once
@@ -19,6 +20,18 @@
 #include "triangulation/mesh/triangulation_2d.hpp"
 
 namespace exactmesh::testing {
+
+/// The square [0, s]^2 with a square hole [0.4 s, 0.6 s]^2 (the metric Delaunay tests' domain).
+struct SquareWithHole {
+    std::vector<double> xy;
+    std::vector<triangulation::VertIdx> segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+    std::vector<double> holes;
+    explicit SquareWithHole(double s)
+        : xy{0,       0,       s,       0,       s,       s,       0,       s,
+             0.4 * s, 0.4 * s, 0.6 * s, 0.4 * s, 0.6 * s, 0.6 * s, 0.4 * s, 0.6 * s},
+          holes{0.5 * s, 0.5 * s} {}
+    triangulation::Pslg pslg() const { return {xy, segments, holes, {}}; }
+};
 
 /// A sample domain's PSLG (pslg_fixtures_2d's Input), every coordinate scaled by 2^k.
 inline Input scaled_sample_domain(generators::SampleDomain d, int k,

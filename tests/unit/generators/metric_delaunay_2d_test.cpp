@@ -20,6 +20,7 @@
 #include "generators/stretched/metric_delaunay_2d.hpp"
 #include "generators/stretched/metric_field_2d.hpp"
 #include "generators/stretched/metric_quality_2d.hpp"
+#include "tests/support/stretched_domains_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 
 namespace gen = exactmesh::generators;
@@ -27,17 +28,7 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-/// The square [0, s]^2 with a square hole [0.4 s, 0.6 s]^2.
-struct Domain {
-    std::vector<double> xy;
-    std::vector<tri::VertIdx> segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
-    std::vector<double> holes;
-    explicit Domain(double s)
-        : xy{0,       0,       s,       0,       s,       s,       0,       s,
-             0.4 * s, 0.4 * s, 0.6 * s, 0.4 * s, 0.6 * s, 0.6 * s, 0.4 * s, 0.6 * s},
-          holes{0.5 * s, 0.5 * s} {}
-    tri::Pslg pslg() const { return {xy, segments, holes, {}}; }
-};
+using Domain = exactmesh::testing::SquareWithHole;
 
 gen::MetricDelaunayResult2 run(const Domain& domain, const gen::MetricField2& metric) {
     const gen::MeshDomain2 mesh_domain(domain.pslg());
