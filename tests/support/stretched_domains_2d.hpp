@@ -12,8 +12,11 @@
 #include <utility>
 #include <vector>
 
+#include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/sizing/size_function.hpp"
+#include "generators/stretched/metric_delaunay_2d.hpp"
+#include "generators/stretched/metric_field_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
@@ -32,6 +35,24 @@ struct SquareWithHole {
           holes{0.5 * s, 0.5 * s} {}
     triangulation::Pslg pslg() const { return {xy, segments, holes, {}}; }
 };
+
+/// metric_delaunay_2d of `domain` in `metric`.
+inline generators::MetricDelaunayResult2 metric_delaunay_of(
+    const SquareWithHole& domain, const generators::MetricField2& metric) {
+    const generators::MeshDomain2 mesh_domain(domain.pslg());
+    generators::MetricDelaunayOptions2 options;
+    options.metric = metric;
+    return generators::metric_delaunay_2d(mesh_domain, options);
+}
+
+/// The mesh is exactly valid (conforming, segments as chains) and keeps the input vertices.
+inline void expect_valid_metric_mesh(const SquareWithHole& domain,
+                                     const generators::MetricDelaunayResult2& r) {
+    const triangulation::CheckReport report = triangulation::detail::check_constrained_mesh_2d(
+        r.mesh.mesh, r.mesh.input_vertex_count, domain.segments, r.mesh.pieces, {}, false);
+    EXPECT_TRUE(report.ok) << report.problem;
+    for (std::size_t i = 0; i < domain.xy.size(); ++i) EXPECT_EQ(r.mesh.mesh.xy[i], domain.xy[i]);
+}
 
 /// A sample domain's PSLG (pslg_fixtures_2d's Input), every coordinate scaled by 2^k.
 inline Input scaled_sample_domain(generators::SampleDomain d, int k,

@@ -27,14 +27,10 @@ namespace {
 
 using Domain = exactmesh::testing::SquareWithHole;
 
+/// metric_delaunay_2d of the domain, checked exactly.
 gen::MetricDelaunayResult2 run(const Domain& domain, const gen::MetricField2& metric) {
-    const gen::MeshDomain2 mesh_domain(domain.pslg());
-    gen::MetricDelaunayOptions2 options;
-    options.metric = metric;
-    gen::MetricDelaunayResult2 r = gen::metric_delaunay_2d(mesh_domain, options);
-    const tri::CheckReport report = tri::detail::check_constrained_mesh_2d(
-        r.mesh.mesh, r.mesh.input_vertex_count, domain.segments, r.mesh.pieces, {}, false);
-    EXPECT_TRUE(report.ok) << report.problem;
+    gen::MetricDelaunayResult2 r = exactmesh::testing::metric_delaunay_of(domain, metric);
+    exactmesh::testing::expect_valid_metric_mesh(domain, r);
     return r;
 }
 

@@ -30,19 +30,8 @@ namespace {
 
 using Domain = exactmesh::testing::SquareWithHole;
 
-gen::MetricDelaunayResult2 run(const Domain& domain, const gen::MetricField2& metric) {
-    const gen::MeshDomain2 mesh_domain(domain.pslg());
-    gen::MetricDelaunayOptions2 options;
-    options.metric = metric;
-    return gen::metric_delaunay_2d(mesh_domain, options);
-}
-
-void expect_valid(const Domain& domain, const gen::MetricDelaunayResult2& r) {
-    const tri::CheckReport report = tri::detail::check_constrained_mesh_2d(
-        r.mesh.mesh, r.mesh.input_vertex_count, domain.segments, r.mesh.pieces, {}, false);
-    EXPECT_TRUE(report.ok) << report.problem;
-    for (std::size_t i = 0; i < domain.xy.size(); ++i) EXPECT_EQ(r.mesh.mesh.xy[i], domain.xy[i]);
-}
+using exactmesh::testing::expect_valid_metric_mesh;
+using exactmesh::testing::metric_delaunay_of;
 
 /// Sizes h1 along (cos a, sin a) and h2 across, scaled by `scale`.
 gen::MetricField2 stretched(double h1, double h2, double angle, double scale = 1) {
@@ -59,8 +48,8 @@ TEST(MetricDelaunay2d, IsotropicAndAxisAlignedMetricsGiveUnitEdges) {
     for (const auto& [field, least_share] :
          {std::pair{stretched(0.04, 0.04, 0), 0.95}, std::pair{stretched(0.2, 0.002, 0), 0.95},
           std::pair{stretched(0.002, 0.2, 0), 0.95}}) {
-        const gen::MetricDelaunayResult2 r = run(domain, field);
-        expect_valid(domain, r);
+        const gen::MetricDelaunayResult2 r = metric_delaunay_of(domain, field);
+        expect_valid_metric_mesh(domain, r);
         const gen::MetricQualityReport2 q =
             gen::metric_quality_report_2d(r.mesh.mesh.xy, r.mesh.mesh.triangles, field);
         EXPECT_GE(q.unit_length_share, least_share) << field.describe();
@@ -79,8 +68,8 @@ TEST(MetricDelaunay2d, RotatedAndVaryingMetricsGiveValidMeshes) {
         },
         "a boundary layer along y = 0.2");
     for (const gen::MetricField2* field : {&rotated, &layer}) {
-        const gen::MetricDelaunayResult2 r = run(domain, *field);
-        expect_valid(domain, r);
+        const gen::MetricDelaunayResult2 r = metric_delaunay_of(domain, *field);
+        expect_valid_metric_mesh(domain, r);
         const gen::MetricQualityReport2 q =
             gen::metric_quality_report_2d(r.mesh.mesh.xy, r.mesh.mesh.triangles, *field);
         // Measured 2026-12-02: most edges are unit edges; the rest sit where the square's
@@ -92,12 +81,14 @@ TEST(MetricDelaunay2d, RotatedAndVaryingMetricsGiveValidMeshes) {
 
 TEST(MetricDelaunay2d, ScaledDomainAndMetricGiveTheSameMeshScaled) {
     const Domain unit(1);
-    const gen::MetricDelaunayResult2 reference = run(unit, stretched(0.1, 0.01, 0.3));
+    const gen::MetricDelaunayResult2 reference =
+        metric_delaunay_of(unit, stretched(0.1, 0.01, 0.3));
     for (const int k : {600, -600}) {
         const double s = std::ldexp(1.0, k);
         const Domain scaled(s);
-        const gen::MetricDelaunayResult2 r = run(scaled, stretched(0.1, 0.01, 0.3, s));
-        expect_valid(scaled, r);
+        const gen::MetricDelaunayResult2 r =
+            metric_delaunay_of(scaled, stretched(0.1, 0.01, 0.3, s));
+        expect_valid_metric_mesh(scaled, r);
         EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
         ASSERT_EQ(r.mesh.mesh.xy.size(), reference.mesh.mesh.xy.size());
         for (std::size_t i = 0; i < r.mesh.mesh.xy.size(); ++i) {
@@ -141,8 +132,8 @@ TEST(MetricDelaunay2d, CurvedBoundaryLayerGivesUnitEdges) {
     // not change it); about 3,000 triangles.
     const Domain unit = plain_square(1);
     const gen::MetricField2 field = circle_layer(0.0005);
-    const gen::MetricDelaunayResult2 reference = run(unit, field);
-    expect_valid(unit, reference);
+    const gen::MetricDelaunayResult2 reference = metric_delaunay_of(unit, field);
+    expect_valid_metric_mesh(unit, reference);
     const gen::MetricQualityReport2 q =
         gen::metric_quality_report_2d(reference.mesh.mesh.xy, reference.mesh.mesh.triangles, field);
     EXPECT_GE(q.unit_length_share, 0.95) << q.edges << " edges";
@@ -152,8 +143,8 @@ TEST(MetricDelaunay2d, CurvedBoundaryLayerGivesUnitEdges) {
     for (const int k : {600, -600}) {
         const double s = std::ldexp(1.0, k);
         const Domain scaled = plain_square(s);
-        const gen::MetricDelaunayResult2 r = run(scaled, circle_layer(0.0005, s));
-        expect_valid(scaled, r);
+        const gen::MetricDelaunayResult2 r = metric_delaunay_of(scaled, circle_layer(0.0005, s));
+        expect_valid_metric_mesh(scaled, r);
         EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
         ASSERT_EQ(r.mesh.mesh.xy.size(), reference.mesh.mesh.xy.size());
         for (std::size_t i = 0; i < r.mesh.mesh.xy.size(); ++i) {
@@ -165,7 +156,7 @@ TEST(MetricDelaunay2d, CurvedBoundaryLayerGivesUnitEdges) {
 TEST(MetricDelaunay2d, TooFineAMetricIsRefusedAtOnceWithItsEstimate) {
     const Domain domain(1);
     try {
-        run(domain, stretched(1e-6, 1e-7, 0));
+        metric_delaunay_of(domain, stretched(1e-6, 1e-7, 0));
         FAIL() << "no error";
     } catch (const exactmesh::InputError& e) {
         EXPECT_NE(std::string(e.what()).find("asks for about"), std::string::npos) << e.what();
