@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <iomanip>
 #include <set>
 #include <sstream>
@@ -69,15 +68,14 @@ FuzzShard parse_fuzz_shard(const std::string& text) {
 }
 
 void write_fuzz_shard_summary(const fs::path& dir, const FuzzShardSummary& summary) {
-    const fs::path file = dir / kFuzzSummaryFile;
-    std::ofstream out(file);
-    out << "# exactmesh fuzz shard summary (merged by exactmesh fuzz --merge)\n"
-        << "kind " << summary.kind << '\n'
-        << "shard " << summary.shard << '\n';
+    std::ostringstream text;
+    text << "# exactmesh fuzz shard summary (merged by exactmesh fuzz --merge)\n"
+         << "kind " << summary.kind << '\n'
+         << "shard " << summary.shard << '\n';
     for (const auto& [key, value] : summary.numbers)
-        out << key << ' ' << number_text(value) << '\n';
-    out.close();
-    if (!out) throw InputError(file.string() + ": cannot write the shard summary");
+        text << key << ' ' << number_text(value) << '\n';
+    // All or nothing (a temporary file renamed into place): a merge never reads half a summary.
+    io::write_text_file(dir / kFuzzSummaryFile, text.str());
 }
 
 FuzzShardSummary read_fuzz_shard_summary(const fs::path& dir) {

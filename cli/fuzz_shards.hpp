@@ -3,7 +3,8 @@
 // independent seeded shards. Shard I of N (`--shard I/N`) runs the case seeds seed + I,
 // seed + I + N, seed + I + 2N, ...: the shards' seeds are disjoint and together they are the
 // campaign's seeds seed, seed + 1, ... (with --count C, the C cases split between them). A shard
-// saves its failures in its own folder (--out) and writes there fuzz-summary.txt, its counts.
+// saves its failures in its own folder (--out) and writes there fuzz-summary.txt, its counts
+// (all or nothing: io::write_text_file).
 // `--jobs N` runs the N shards as child processes of this program, each in OUT/shard-I with its
 // output in OUT/shard-I/fuzz.log, waits for them and merges them; `--merge DIR...` merges shard
 // folders made anywhere (other machines, a batch system's array jobs) into --out: the counts
