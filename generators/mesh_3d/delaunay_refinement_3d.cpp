@@ -115,13 +115,6 @@ class Refinement final : public RestrictedDelaunay3 {
 
     DelaunayRefinement3Result run();
 
-    static std::uint64_t steiner_budget(const ConformingMesh3& recovered,
-                                        const DelaunayRefinement3Options& options) {
-        return options.max_steiner_points != 0
-                   ? options.max_steiner_points
-                   : 1000 * std::uint64_t{recovered.input_vertex_count} + 1000000;
-    }
-
   private:
     DelaunayRefinement3Options options_;
     SegmentIncidence incidence_{out_, m_.xyz};
@@ -264,9 +257,7 @@ void refuse_volume_bound_far_over_budget(const ConformingMesh3& recovered,
                       u[2] * (v[0] * w[1] - v[1] * w[0]));
     }
     if (!(six_volumes > 0)) return;
-    const std::uint64_t budget = options.max_steiner_points != 0
-                                     ? options.max_steiner_points
-                                     : 1000 * std::uint64_t{recovered.input_vertex_count} + 1000000;
+    const std::uint64_t budget = steiner_budget_3d(recovered, options.max_steiner_points);
     // log2(tetrahedra) >= log2(six_volumes / 6) + 3e - log2(max_volume).
     const double log2_tets = std::log2(six_volumes / 6) + 3.0 * e - std::log2(options.max_volume);
     const double points = std::exp2(std::min(log2_tets, 1000.0)) / 6.5;
@@ -306,7 +297,7 @@ DelaunayRefinement3Result delaunay_refinement_3d(const Plc3& plc, ConformingMesh
         throw InputError("delaunay refinement 3d: the volume bound must be finite");
     }
     refuse_volume_bound_far_over_budget(recovered, options);
-    const std::uint64_t budget = Refinement::steiner_budget(recovered, options);
+    const std::uint64_t budget = steiner_budget_3d(recovered, options.max_steiner_points);
     Refinement refinement(plc, std::move(recovered), options, budget);
     return refinement.run();
 }

@@ -434,11 +434,7 @@ FrontalDelaunay3Result frontal_delaunay_3d(const Plc3& plc, ConformingMesh3 reco
     const double* first = recovered.mesh.point(0);
     const int exponent = std::ilogb(options.size(first[0], first[1], first[2]));
     const double estimate = estimate_points(recovered, options.size, exponent);
-    const std::uint64_t budget =
-        options.max_steiner_points != 0
-            ? options.max_steiner_points
-            : static_cast<std::uint64_t>(std::min(
-                  std::max({1e6, 1000.0 * recovered.input_vertex_count, 8 * estimate}), 4e9));
+    const std::uint64_t budget = steiner_budget_3d(recovered, options.max_steiner_points);
     if (estimate > static_cast<double>(budget)) {
         throw InputError("frontal delaunay 3d: Steiner point budget of " + std::to_string(budget) +
                          " exceeded at once: the size " + options.size.describe() +

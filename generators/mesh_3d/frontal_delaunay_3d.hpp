@@ -58,9 +58,10 @@ struct FrontalDelaunay3Options {
     double acceptance = 1.3;
     /// Reject a point closer than this times h to a vertex of its cavity. In [0, 1).
     double min_distance = 0.55;
-    /// Most Steiner points (boundary and interior); 0: the larger of 10^6, 1,000 per input
-    /// vertex and 8 times the estimate (domain volume / regular tetrahedron volume / 5).
-    /// A size whose estimate exceeds the budget fails at once with InputError naming it.
+    /// Most Steiner points (boundary and interior); 0: 10^6 plus 1,000 per input vertex
+    /// (restricted_3d::steiner_budget_3d, as Delaunay refinement). A size whose estimate
+    /// (domain volume / regular tetrahedron volume / 5 per vertex) exceeds the budget fails at
+    /// once with InputError naming both; the budget does not grow with the estimate.
     std::uint64_t max_steiner_points = 0;
 };
 

@@ -57,6 +57,14 @@ using triangulation::VertIdx;
 
 inline constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
+/// The Steiner point budget of the 3D generators: `requested` when given (not 0), else 10^6
+/// plus 1,000 per input vertex. It does not grow with a size's own estimate: a size or volume
+/// bound that asks for more is refused at once (with its estimate) instead of filling memory.
+inline std::uint64_t steiner_budget_3d(const ConformingMesh3& recovered, std::uint64_t requested) {
+    return requested != 0 ? requested
+                          : 1000 * std::uint64_t{recovered.input_vertex_count} + 1000000;
+}
+
 inline bool same_point(const double* p, const double* q) {
     return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
 }

@@ -178,6 +178,24 @@ TEST(Generators_FrontalDelaunay3d, BudgetErrors) {
             EXPECT_NE(text.find("asks for about 1.48e+12"), std::string::npos) << text;
         }
     }
+    // The automatic budget (10^6 plus 1,000 per input vertex) does not grow with the estimate:
+    // a size asking for 1.48e9 points (hours and terabytes; it used to get a budget of 4e9 and
+    // ran out of memory) is refused at once.
+    {
+        const triangulation::ConformingMesh3 recovered =
+            triangulation::boundary_recovery_3d(plc).mesh;
+        const std::string budget =
+            std::to_string(1000000 + 1000 * std::uint64_t{recovered.input_vertex_count});
+        try {
+            frontal_delaunay_3d(plc, recovered, options_for(1e-3));
+            ADD_FAILURE() << "no budget error with the automatic budget";
+        } catch (const InputError& error) {
+            const std::string text = error.what();
+            EXPECT_NE(text.find("budget of " + budget + " exceeded at once"), std::string::npos)
+                << text;
+            EXPECT_NE(text.find("asks for about 1.48e+09"), std::string::npos) << text;
+        }
+    }
     // A budget below what the mesh needs but above the estimate's refusal: stops while running.
     FrontalDelaunay3Options options = options_for(0.2);
     options.max_steiner_points = 150;
