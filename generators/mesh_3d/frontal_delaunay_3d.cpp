@@ -392,8 +392,11 @@ FrontalDelaunay3Result Frontal::run() {
 
 /// The size's estimate of the Steiner points: the regular tetrahedra of edge h(centroid) that
 /// fill each recovered tetrahedron (h^3 / (6 sqrt 2) each), summed, over about 5 tetrahedra per
-/// vertex; differences scaled by 2^-exponent and the sum capped, so nothing overflows.
-double estimate_points(const ConformingMesh3& recovered, const SizeFunction3& size, int exponent) {
+/// vertex. Each tetrahedron's edge vectors are scaled by the power of two of its own largest
+/// difference and the count is formed in logarithms, so a domain at 2^600 with a size of 0.1
+/// (a count near 2^1800) gives a huge estimate, not an overflow (it used to give NaN, which no
+/// budget refused: 10^6 segment splits in a minute). The sum is capped at 1e300.
+double estimate_points(const ConformingMesh3& recovered, const SizeFunction3& size) {
     const auto& m = recovered.mesh;
     double tets = 0;
     for (TetIdx t = 0; t < m.tet_count(); ++t) {
@@ -403,14 +406,23 @@ double estimate_points(const ConformingMesh3& recovered, const SizeFunction3& si
             p[k] = m.point(m.tets[4 * std::size_t{t} + k]);
             for (int i = 0; i < 3; ++i) centroid[i] += p[k][i] / 4;
         }
+        double largest = 0;
+        for (unsigned k = 1; k < 4; ++k)
+            for (int i = 0; i < 3; ++i)
+                largest = std::max(largest, std::fabs(p[k][i] / 2 - p[0][i] / 2));
+        if (!(largest > 0)) continue;
+        const int exponent = std::ilogb(largest);
         Vec d[3];
         for (unsigned k = 0; k < 3; ++k)
-            for (int i = 0; i < 3; ++i) d[k][i] = std::ldexp(p[k + 1][i] - p[0][i], -exponent);
+            for (int i = 0; i < 3; ++i)
+                d[k][i] = std::ldexp(p[k + 1][i] / 2 - p[0][i] / 2, -exponent);
         const double six_volume = std::fabs(dot(d[0], cross(d[1], d[2])));
-        const double h = std::ldexp(size(centroid[0], centroid[1], centroid[2]), -exponent);
-        const double log2_count =
-            std::log2(six_volume / 6) - 3 * std::log2(h) + std::log2(6 * kSqrt2);
-        tets += std::exp2(std::min(log2_count, 200.0));
+        if (!(six_volume > 0)) continue;
+        // Volume = six_volume / 6 * 2^(3 (exponent + 1)) (the halves undone).
+        const double h = size(centroid[0], centroid[1], centroid[2]);
+        const double log2_count = std::log2(six_volume / 6) + 3.0 * (exponent + 1) -
+                                  3 * std::log2(h) + std::log2(6 * kSqrt2);
+        tets += std::exp2(std::min(log2_count, 1000.0));
     }
     return std::min(tets / 5, 1e300);
 }
@@ -433,7 +445,7 @@ FrontalDelaunay3Result frontal_delaunay_3d(const Plc3& plc, ConformingMesh3 reco
     // scaling, so decisions are the same for the input and size times 2^k).
     const double* first = recovered.mesh.point(0);
     const int exponent = std::ilogb(options.size(first[0], first[1], first[2]));
-    const double estimate = estimate_points(recovered, options.size, exponent);
+    const double estimate = estimate_points(recovered, options.size);
     const std::uint64_t budget = steiner_budget_3d(recovered, options.max_steiner_points);
     if (estimate > static_cast<double>(budget)) {
         throw InputError("frontal delaunay 3d: Steiner point budget of " + std::to_string(budget) +

@@ -196,6 +196,17 @@ TEST(Generators_FrontalDelaunay3d, BudgetErrors) {
             EXPECT_NE(text.find("asks for about 1.48e+09"), std::string::npos) << text;
         }
     }
+    // The domain at 2^600 with the unscaled size 0.1 asks for about 2^1800 points: the
+    // estimate is formed in logarithms per tetrahedron (it overflowed to NaN, which no budget
+    // refused, and a minute of segment splits followed).
+    try {
+        const Plc3 huge = triangulation::scaled(plc, 600);
+        frontal_delaunay_3d(huge, triangulation::boundary_recovery_3d(huge).mesh, options_for(0.1));
+        ADD_FAILURE() << "no budget error at 2^600 with size 0.1";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("exceeded at once"), std::string::npos)
+            << error.what();
+    }
     // A budget below what the mesh needs but above the estimate's refusal: stops while running.
     FrontalDelaunay3Options options = options_for(0.2);
     options.max_steiner_points = 150;
