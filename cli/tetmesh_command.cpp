@@ -127,6 +127,9 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         plc = io::plc_from_file(io::read_plc(arguments.input));
         source = arguments.input;
     }
+    // A free vertex on a segment or a facet becomes part of it (as Triangle does in 2D).
+    tri::validate_plc_3d_input(plc);
+    tri::embed_free_vertices_3d(plc);
     const std::uint32_t base = plc.first_index;
     // A mesh generator's domain must enclose a volume: an open surface would leave the flood
     // fill nothing to keep (internal facets, edges in more than two triangles, are fine).
@@ -225,6 +228,12 @@ void run_tetmesh(const TetmeshArguments& arguments) {
                                  std::to_string(quality.over_volume) + " the volume bound";
         if (over != 0 && result.refinement.rejected_points == 0)
             throw InternalError(source + ": " + text + " after refinement (exact check)");
+        if (quality.unresolvable != 0) {
+            warnings.push_back(source + ": " + std::to_string(quality.unresolvable) +
+                               " tetrahedra over the radius-edge bound were left: each has an "
+                               "edge finer than doubles resolve at its place (below 2^-44 of its "
+                               "coordinates), where no rounded point can improve it");
+        }
         if (over != 0) {
             warnings.push_back(source + ": " + text + " after refinement: " +
                                std::to_string(result.refinement.rejected_points) +
@@ -271,6 +280,7 @@ void run_tetmesh(const TetmeshArguments& arguments) {
                  counters_by_name(gen::kDelaunayRefinement3CounterNames, result.refinement))
                 counters.emplace_back("refinement_" + name, value);
             counters.emplace_back("spared_small_angle_tets", quality.small_angle);
+            counters.emplace_back("spared_unresolvable_tets", quality.unresolvable);
             counters.emplace_back("over_bound_tets", quality.over_bound + quality.over_volume);
         }
         if (frontal) {

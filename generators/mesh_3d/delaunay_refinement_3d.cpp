@@ -34,6 +34,27 @@ namespace {
 constexpr std::uint32_t kMaxRetries = 64;
 
 /// The segments of a ConformingMesh3 seen from its vertices (the small-angle rule).
+/// Refinement cannot mend a tetrahedron whose shortest edge is finer than doubles resolve at
+/// its place: below 2^-44 of its largest coordinate magnitude (about 2^8 units in the last
+/// place), circumcentres round to a grid too coarse to make well-shaped tetrahedra (a free
+/// vertex 1e-30 above a facet vertex at 0.5 drove refinement into its budget for minutes). Such
+/// a tetrahedron is spared, like the small-input-angle rule. The test is exact and scale-free:
+/// each rounded coordinate difference is compared with a power of two (rounding is monotone, so
+/// |fl(d)| < 2^e implies |d| < 2^e), taken from the exponent of the largest magnitude.
+bool finer_than_doubles_resolve(const double* const (&p)[4]) {
+    double largest = 0;
+    for (const double* q : p)
+        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(q[k]));
+    if (!(largest > 0)) return false;
+    const double threshold = std::ldexp(1.0, std::ilogb(largest) - 44);
+    for (const auto& e : kEdges) {
+        bool below = true;
+        for (int k = 0; k < 3 && below; ++k) below = std::fabs(p[e[1]][k] - p[e[0]][k]) < threshold;
+        if (below) return true;
+    }
+    return false;
+}
+
 class SegmentIncidence {
   public:
     /// `xyz`: the coordinates (mesh.mesh.xyz, or the refinement's working copy).
@@ -136,6 +157,11 @@ class Refinement final : public RestrictedDelaunay3 {
                predicates::compare_tet_volume_3d(a, b, d, e, options_.max_volume) == Sign::Positive;
     }
 
+    bool unresolvable(const std::array<VertIdx, 4>& c) const {
+        const double* const p[4] = {point(c[0]), point(c[1]), point(c[2]), point(c[3])};
+        return finer_than_doubles_resolve(p);
+    }
+
     bool over_volume(const std::array<VertIdx, 4>& c) const {
         return options_.max_volume > 0 &&
                predicates::compare_tet_volume_3d(point(c[0]), point(c[1]), point(c[2]), point(c[3]),
@@ -211,6 +237,10 @@ DelaunayRefinement3Result Refinement::run() {
         if (m_.is_dead(next.t) || m_.tet(next.t) != corners || !is_bad(corners)) continue;
         if (!over_volume(corners) && incidence_.spared(corners)) {
             ++counters_.small_angle_tets;
+            continue;
+        }
+        if (unresolvable(corners)) {
+            ++counters_.unresolvable_tets;
             continue;
         }
         // A deferred tetrahedron comes back after the splits it queued (unless they removed
@@ -318,7 +348,12 @@ RefinementQuality3 check_refinement_quality_3d(const ConformingMesh3& mesh,
         if (predicates::compare_radius_edge_3d(a, b, d, e, options.radius_edge_bound) !=
             Sign::Positive)
             continue;
-        ++(incidence.spared(c) ? report.small_angle : report.over_bound);
+        if (incidence.spared(c)) {
+            ++report.small_angle;
+        } else {
+            const double* const p[4] = {a, b, d, e};
+            ++(finer_than_doubles_resolve(p) ? report.unresolvable : report.over_bound);
+        }
     }
     return report;
 }

@@ -12,7 +12,9 @@
 //     the bound, unless the circumcentre encroaches a subsegment or subface of its cavity, or
 //     lies beyond a subface (the walk towards it is blocked): then those are split instead.
 //     A tetrahedron whose shortest edge joins vertices of two segments that meet at an input
-//     vertex at less than 60 degrees is not split (the small-input-angle rule).
+//     vertex at less than 60 degrees is not split (the small-input-angle rule), nor one with an
+//     edge below 2^-44 of its coordinates' magnitude (finer than doubles resolve there: its
+//     circumcentre would round onto a grid too coarse to improve it).
 // Insertion is Bowyer-Watson restricted to the domain: the cavity grows through faces whose
 // far tetrahedron has the point strictly inside its circumsphere, never across a subface (other
 // than the ones being split); it is then shrunk until it is star-shaped from the point (every
@@ -57,14 +59,16 @@ struct DelaunayRefinement3Counters {
     std::uint64_t rejected_points = 0;        ///< insertions whose cavity could not be kept valid
     std::uint64_t shrunk_cavities = 0;        ///< cavities shrunk to stay star-shaped/conforming
     std::uint64_t small_angle_tets = 0;       ///< bad tetrahedra spared by the small-angle rule
+    std::uint64_t unresolvable_tets = 0;      ///< bad tetrahedra spared: an edge finer than doubles
+                                              ///< resolve there (below 2^-44 of the coordinates)
     std::uint64_t cavity_tets = 0;            ///< tetrahedra replaced, summed over insertions
     std::uint64_t insertions = 0;             ///< Steiner points added by refinement
 };
 
-inline constexpr std::array kDelaunayRefinement3CounterNames =
-    EM_COUNTER_TABLE(DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits,
-                     shell_splits, encroached_segments, encroached_subfaces, blocked_circumcenters,
-                     rejected_points, shrunk_cavities, small_angle_tets, cavity_tets, insertions);
+inline constexpr std::array kDelaunayRefinement3CounterNames = EM_COUNTER_TABLE(
+    DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits, shell_splits,
+    encroached_segments, encroached_subfaces, blocked_circumcenters, rejected_points,
+    shrunk_cavities, small_angle_tets, unresolvable_tets, cavity_tets, insertions);
 static_assert(counter_table_complete(kDelaunayRefinement3CounterNames));
 
 struct DelaunayRefinement3Result {
@@ -84,6 +88,8 @@ DelaunayRefinement3Result delaunay_refinement_3d(const triangulation::Plc3& plc,
 struct RefinementQuality3 {
     std::uint64_t over_bound = 0;   ///< tetrahedra with radius-edge > B not spared
     std::uint64_t small_angle = 0;  ///< tetrahedra with radius-edge > B spared by the rule
+    /// tetrahedra with radius-edge > B spared for an edge finer than doubles resolve there
+    std::uint64_t unresolvable = 0;
     std::uint64_t over_volume = 0;  ///< tetrahedra over the volume bound (0 when none)
 };
 

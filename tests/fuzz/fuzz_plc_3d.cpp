@@ -55,8 +55,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Keep the checks' inputs small: the fuzzer looks for crashes, not for slow inputs.
     if (file.facets.size() > 256 || file.vertex_count() > 1024) return 0;
     try {
-        const tri::Plc3 plc = exactmesh::io::plc_from_file(std::move(file));
-        const tri::SurfaceTriangles3 surface = tri::validate_plc_3d(plc);
+        tri::Plc3 plc = exactmesh::io::plc_from_file(std::move(file));
+        tri::validate_plc_3d_input(plc);
+        const std::uint32_t polygons_before = [&plc] {
+            std::uint32_t count = 0;
+            for (const auto& facet : plc.facets)
+                count += static_cast<std::uint32_t>(facet.polygons.size());
+            return count;
+        }();
+        const tri::FreeVertexEmbedding3 embedded = tri::embed_free_vertices_3d(plc);
+        std::uint32_t polygons_after = 0;
+        for (const auto& facet : plc.facets)
+            polygons_after += static_cast<std::uint32_t>(facet.polygons.size());
+        if (polygons_after < polygons_before + embedded.on_facets)
+            fail("embedding free vertices lost a facet polygon");
+        // Embedded, no free vertex is left on the surface: validate_plc_3d must not refuse one.
+        tri::SurfaceTriangles3 surface;
+        try {
+            surface = tri::validate_plc_3d(plc);
+        } catch (const exactmesh::InputError& e) {
+            if (std::string(e.what()).find("in no facet polygon") != std::string::npos)
+                fail((std::string("a free vertex was left on the surface: ") + e.what()).c_str());
+            throw;
+        }
         for (const tri::VertIdx v : surface.triangles) {
             if (v >= plc.vertex_count()) fail("a surface triangle names a vertex out of range");
         }

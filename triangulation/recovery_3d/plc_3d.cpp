@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
+#include <map>
 #include <string>
 #include <utility>
 
@@ -333,6 +335,116 @@ void check_finite_points(std::span<const double> values, const std::string& what
     }
 }
 
+/// Axis-aligned box of a few points: selects candidates only (every decision is exact).
+struct Box3 {
+    double lo[3], hi[3];
+    bool contains(const double* p) const {
+        return lo[0] <= p[0] && p[0] <= hi[0] && lo[1] <= p[1] && p[1] <= hi[1] && lo[2] <= p[2] &&
+               p[2] <= hi[2];
+    }
+};
+
+Box3 box_of(std::initializer_list<const double*> points) {
+    Box3 b{};
+    bool first = true;
+    for (const double* p : points) {
+        for (int k = 0; k < 3; ++k) {
+            b.lo[k] = first ? p[k] : std::min(b.lo[k], p[k]);
+            b.hi[k] = first ? p[k] : std::max(b.hi[k], p[k]);
+        }
+        first = false;
+    }
+    return b;
+}
+
+/// p lies strictly inside segment ab (a != b), exactly: collinear in every coordinate
+/// projection, and strictly between a and b along an axis where they differ.
+bool strictly_inside_segment_3d(const double* a, const double* b, const double* p) {
+    if (!collinear_3d(a, b, p)) return false;
+    for (int k = 0; k < 3; ++k) {
+        if (a[k] != b[k]) return std::min(a[k], b[k]) < p[k] && p[k] < std::max(a[k], b[k]);
+    }
+    return false;
+}
+
+/// Where the free vertices on the surface lie: on a segment (its ends, smaller index first),
+/// or in the areas of facets.
+struct SurfacePlacement3 {
+    VertIdx vertex = kNone;
+    std::array<VertIdx, 2> segment{kNone, kNone};  ///< kNone: not on a segment
+    std::vector<std::uint32_t> facets;             ///< when not on a segment
+};
+
+std::vector<SurfacePlacement3> free_vertices_on_surface(const Plc3& plc) {
+    const std::uint32_t n = plc.vertex_count();
+    std::vector<bool> used(n, false);
+    for (const Facet3& facet : plc.facets) {
+        for (const auto& polygon : facet.polygons) {
+            for (const VertIdx v : polygon) used[v] = true;
+        }
+    }
+    std::vector<VertIdx> free;
+    for (VertIdx v = 0; v < n; ++v) {
+        if (!used[v]) free.push_back(v);
+    }
+    std::vector<SurfacePlacement3> placements;
+    if (free.empty()) return placements;
+    std::vector<std::array<VertIdx, 2>> segments;
+    for (const Facet3& facet : plc.facets) {
+        for (const auto& e : facet_edges(facet)) {
+            segments.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
+        }
+    }
+    std::sort(segments.begin(), segments.end());
+    segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
+    std::vector<Box3> segment_boxes;
+    segment_boxes.reserve(segments.size());
+    for (const auto& e : segments)
+        segment_boxes.push_back(box_of({plc.point(e[0]), plc.point(e[1])}));
+    const SurfaceTriangles3 surface = triangulate_facets_3d(plc);
+    std::vector<Box3> triangle_boxes;
+    triangle_boxes.reserve(surface.triangle_count());
+    for (std::uint32_t t = 0; t < surface.triangle_count(); ++t) {
+        const VertIdx* tv = &surface.triangles[3 * std::size_t{t}];
+        triangle_boxes.push_back(box_of({plc.point(tv[0]), plc.point(tv[1]), plc.point(tv[2])}));
+    }
+    for (const VertIdx v : free) {
+        const double* p = plc.point(v);
+        SurfacePlacement3 placement;
+        placement.vertex = v;
+        for (std::size_t i = 0; i < segments.size(); ++i) {
+            if (!segment_boxes[i].contains(p)) continue;
+            if (strictly_inside_segment_3d(plc.point(segments[i][0]), plc.point(segments[i][1]),
+                                           p)) {
+                placement.segment = segments[i];
+                break;
+            }
+        }
+        if (placement.segment[0] == kNone) {
+            for (std::uint32_t t = 0; t < surface.triangle_count(); ++t) {
+                if (!triangle_boxes[t].contains(p)) continue;
+                const VertIdx* tv = &surface.triangles[3 * std::size_t{t}];
+                const double* a = plc.point(tv[0]);
+                const double* b = plc.point(tv[1]);
+                const double* c = plc.point(tv[2]);
+                if (orient3d(a, b, c, p) != Sign::Zero) continue;
+                const int drop = drop_axis(a, b, c);
+                if (!triangle_contains_2d(
+                        project_facet_point(a, drop), project_facet_point(b, drop),
+                        project_facet_point(c, drop), project_facet_point(p, drop)))
+                    continue;
+                const std::uint32_t f = surface.facets[t];
+                if (std::find(placement.facets.begin(), placement.facets.end(), f) ==
+                    placement.facets.end())
+                    placement.facets.push_back(f);
+            }
+            if (placement.facets.empty()) continue;
+        }
+        placements.push_back(std::move(placement));
+    }
+    return placements;
+}
+
 }  // namespace
 
 void validate_plc_3d_input(const Plc3& plc) {
@@ -578,8 +690,85 @@ void check_surface_closed_3d(const Plc3& plc, const SurfaceTriangles3& surface) 
     }
 }
 
+FreeVertexEmbedding3 embed_free_vertices_3d(Plc3& plc) {
+    FreeVertexEmbedding3 done;
+    const std::vector<SurfacePlacement3> placements = free_vertices_on_surface(plc);
+    if (placements.empty()) return done;
+    // Each segment's new vertices in order from its first end (smaller index) to its second:
+    // along an axis where the ends differ, the coordinates are monotone on the line.
+    std::map<std::array<VertIdx, 2>, std::vector<VertIdx>> on_segment;
+    for (const SurfacePlacement3& placement : placements) {
+        if (placement.segment[0] != kNone) {
+            on_segment[placement.segment].push_back(placement.vertex);
+            ++done.on_segments;
+        } else {
+            for (const std::uint32_t f : placement.facets)
+                plc.facets[f].polygons.push_back({placement.vertex});
+            ++done.on_facets;
+        }
+    }
+    for (auto& [segment, chain] : on_segment) {
+        const double* a = plc.point(segment[0]);
+        const double* b = plc.point(segment[1]);
+        int axis = 0;
+        while (a[axis] == b[axis]) ++axis;
+        const bool increasing = a[axis] < b[axis];
+        std::sort(chain.begin(), chain.end(), [&](VertIdx u, VertIdx w) {
+            return increasing ? plc.point(u)[axis] < plc.point(w)[axis]
+                              : plc.point(u)[axis] > plc.point(w)[axis];
+        });
+    }
+    // The chain between u and w, in the direction u -> w.
+    const auto chain_between = [&on_segment](VertIdx u, VertIdx w) -> std::vector<VertIdx> {
+        const auto it = on_segment.find({std::min(u, w), std::max(u, w)});
+        if (it == on_segment.end()) return {};
+        std::vector<VertIdx> chain = it->second;
+        if (u > w) std::reverse(chain.begin(), chain.end());
+        return chain;
+    };
+    for (Facet3& facet : plc.facets) {
+        std::vector<std::vector<VertIdx>> polygons;
+        for (const auto& polygon : facet.polygons) {
+            const std::size_t n = polygon.size();
+            if (n == 2) {
+                // A segment inside the facet: one 2-corner polygon per piece.
+                std::vector<VertIdx> path{polygon[0]};
+                for (const VertIdx v : chain_between(polygon[0], polygon[1])) path.push_back(v);
+                path.push_back(polygon[1]);
+                for (std::size_t k = 0; k + 1 < path.size(); ++k)
+                    polygons.push_back({path[k], path[k + 1]});
+            } else if (n >= 3) {
+                std::vector<VertIdx> loop;
+                for (std::size_t k = 0; k < n; ++k) {
+                    loop.push_back(polygon[k]);
+                    for (const VertIdx v : chain_between(polygon[k], polygon[(k + 1) % n]))
+                        loop.push_back(v);
+                }
+                polygons.push_back(std::move(loop));
+            } else {
+                polygons.push_back(polygon);
+            }
+        }
+        facet.polygons = std::move(polygons);
+    }
+    return done;
+}
+
 SurfaceTriangles3 validate_plc_3d(const Plc3& plc) {
     validate_plc_3d_input(plc);
+    const std::vector<SurfacePlacement3> stray = free_vertices_on_surface(plc);
+    if (!stray.empty()) {
+        const Names names{plc};
+        const SurfacePlacement3& first = stray.front();
+        fail("vertex " + names.vertex(first.vertex) + " " +
+             format_point(plc.point(first.vertex), 3) + " lies " +
+             (first.segment[0] != kNone
+                  ? "inside segment " + names.edge(first.segment[0], first.segment[1])
+                  : "in " + names.facet(first.facets.front())) +
+             " but in no facet polygon: list it in the facet (a corner of the polygon edge, or "
+             "a 1-corner polygon), or embed it with embed_free_vertices_3d (exactmesh tetmesh "
+             "does)");
+    }
     SurfaceTriangles3 surface = triangulate_facets_3d(plc);
     check_surface_self_intersection_3d(plc, surface);
     return surface;

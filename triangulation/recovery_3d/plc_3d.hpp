@@ -55,8 +55,27 @@ void check_surface_self_intersection_3d(const Plc3& plc, const SurfaceTriangles3
 /// enclose a volume.
 void check_surface_closed_3d(const Plc3& plc, const SurfaceTriangles3& surface);
 
+/// What embed_free_vertices_3d did.
+struct FreeVertexEmbedding3 {
+    std::uint32_t on_segments = 0;  ///< free vertices inserted into the polygon edges they lie on
+    std::uint32_t on_facets = 0;    ///< free vertices added to a facet as 1-corner polygons
+};
+
+/// Makes every free vertex (one in no facet polygon) that lies on the PLC's surface part of it,
+/// as Triangle does with a vertex on a segment and TetGen with a point on a facet: a vertex
+/// strictly inside a polygon edge (a segment) is inserted into that edge in every facet
+/// polygon that has the edge (a 2-corner polygon is cut in two); a vertex inside a facet's area
+/// (closed, off every segment) is added to the facet as a 1-corner polygon (an isolated point
+/// of the facet). Free vertices off the surface are left as they are. Exact: orient2d on the
+/// coordinate projections, orient3d, coordinate comparisons; boxes only select candidates.
+/// Without it such a vertex is refused by validate_plc_3d (a facet's triangulation cannot
+/// contain it, so no tetrahedralization could keep both).
+/// @pre validate_plc_3d_input(plc) passed.
+FreeVertexEmbedding3 embed_free_vertices_3d(Plc3& plc);
+
 /// validate_plc_3d_input, triangulate_facets_3d and check_surface_self_intersection_3d; returns
 /// the surface triangles. Closedness is checked separately (check_surface_closed_3d).
+/// @throws InputError also when a free vertex lies on the surface (see embed_free_vertices_3d).
 SurfaceTriangles3 validate_plc_3d(const Plc3& plc);
 
 }  // namespace exactmesh::triangulation

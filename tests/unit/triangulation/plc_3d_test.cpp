@@ -7,10 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "base/errors.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
@@ -361,6 +363,80 @@ TEST(Triangulation_Plc3, LargeSurfaceIsCheckedByTheGrid) {
     Plc3 broken = plc;
     broken.xyz[2] = -1.0;  // vertex 0, the pole (0, 0, 0.5), now below the other pole
     EXPECT_NE(outcome(broken).validity.find("self-intersecting surface"), std::string::npos);
+}
+
+/// The unit cube with free vertices (in no facet polygon) appended after its 8 corners.
+Plc3 cube_with_free(const std::vector<std::array<double, 3>>& free) {
+    Plc3 plc = cube();
+    for (const auto& p : free) plc.xyz.insert(plc.xyz.end(), p.begin(), p.end());
+    return plc;
+}
+
+TEST(Triangulation_Plc3, FreeVerticesOnTheSurfaceAreRefusedByName) {
+    // On segment (0, 1) (shared by two facets) and in the bottom facet: no facet triangulation
+    // holds them, so the PLC is refused, naming the vertex and where it lies.
+    const std::string on_segment = outcome(cube_with_free({{0.5, 0, 0}})).validity;
+    EXPECT_NE(on_segment.find("vertex 8 (0.5, 0, 0) lies inside segment (0, 1)"), std::string::npos)
+        << on_segment;
+    const std::string in_facet = outcome(cube_with_free({{0.25, 0.5, 0}})).validity;
+    EXPECT_NE(in_facet.find("lies in facet"), std::string::npos) << in_facet;
+    // Off the surface by one unit in the last place, or inside: nothing to refuse.
+    EXPECT_EQ(outcome(cube_with_free({{0.5, 0.5, std::nextafter(0.0, 1.0)}})).validity, "");
+    EXPECT_EQ(outcome(cube_with_free({{0.5, 0.5, 0.5}})).validity, "");
+}
+
+TEST(Triangulation_Plc3, EmbeddingFreeVerticesSplitsSegmentsAndAddsFacetPoints) {
+    // Two vertices on segment (0, 1), listed against its direction; one on the edge x = y = 1
+    // (vertices 3 and 7); one in the top facet; one inside the cube; one off it.
+    const std::vector<std::array<double, 3>> free = {{0.75, 0, 0},   {0.25, 0, 0},    {1, 1, 0.5},
+                                                     {0.5, 0.25, 1}, {0.5, 0.5, 0.5}, {2, 2, 2}};
+    for (const int e : {0, 600, -600}) {
+        Plc3 plc = scaled(cube_with_free(free), e);
+        const std::size_t polygons_before = [&plc] {
+            std::size_t n = 0;
+            for (const Facet3& f : plc.facets) n += f.polygons.size();
+            return n;
+        }();
+        const FreeVertexEmbedding3 done = embed_free_vertices_3d(plc);
+        EXPECT_EQ(done.on_segments, 3u) << "2^" << e;
+        EXPECT_EQ(done.on_facets, 1u) << "2^" << e;
+        std::size_t polygons_after = 0;
+        for (const Facet3& f : plc.facets) polygons_after += f.polygons.size();
+        EXPECT_EQ(polygons_after, polygons_before + 1);
+        // Facet {0, 1, 3, 2} (the bottom, z = 0) now runs 0, 9, 8, 1, 3, 2: the chain of
+        // segment (0, 1) in order from 0 to 1.
+        EXPECT_EQ(plc.facets[4].polygons[0], (std::vector<VertIdx>{0, 9, 8, 1, 3, 2}));
+        // Facet {0, 4, 5, 1} (y = 0) has the chain in the direction 1 -> 0.
+        EXPECT_EQ(plc.facets[2].polygons[0], (std::vector<VertIdx>{0, 4, 5, 1, 8, 9}));
+        // The edge (3, 7) is in facets {1, 5, 7, 3} and {2, 3, 7, 6}.
+        EXPECT_EQ(plc.facets[1].polygons[0], (std::vector<VertIdx>{1, 5, 7, 10, 3}));
+        EXPECT_EQ(plc.facets[3].polygons[0], (std::vector<VertIdx>{2, 3, 10, 7, 6}));
+        EXPECT_EQ(plc.facets[5].polygons.back(), (std::vector<VertIdx>{11}));
+        // Embedded, the PLC is valid and closed, and every facet triangulation uses its points.
+        const Outcome o = outcome(plc);
+        EXPECT_EQ(o.validity, "");
+        EXPECT_EQ(o.closedness, "");
+        for (const VertIdx v : {8u, 9u, 10u, 11u}) {
+            EXPECT_NE(std::find(o.triangles.begin(), o.triangles.end(), v), o.triangles.end())
+                << "vertex " << v << " at 2^" << e;
+        }
+        // A second embedding finds nothing left to do.
+        const FreeVertexEmbedding3 again = embed_free_vertices_3d(plc);
+        EXPECT_EQ(again.on_segments + again.on_facets, 0u);
+    }
+}
+
+TEST(Triangulation_Plc3, EmbeddingCutsASegmentInsideAFacet) {
+    // A 2-corner polygon (a segment inside the bottom facet) from (0.25, 0.25) to (0.75, 0.75)
+    // with a free vertex at its middle: the segment becomes two.
+    Plc3 plc = cube_with_free({{0.25, 0.25, 0}, {0.75, 0.75, 0}, {0.5, 0.5, 0}});
+    plc.facets[4].polygons.push_back({8, 9});
+    const FreeVertexEmbedding3 done = embed_free_vertices_3d(plc);
+    EXPECT_EQ(done.on_segments, 1u);
+    ASSERT_EQ(plc.facets[4].polygons.size(), 3u);
+    EXPECT_EQ(plc.facets[4].polygons[1], (std::vector<VertIdx>{8, 10}));
+    EXPECT_EQ(plc.facets[4].polygons[2], (std::vector<VertIdx>{10, 9}));
+    EXPECT_EQ(outcome(plc).validity, "");
 }
 
 }  // namespace
