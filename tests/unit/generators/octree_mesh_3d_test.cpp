@@ -27,9 +27,9 @@
 namespace exactmesh::generators {
 namespace {
 
+using predicates::Sign;
 using triangulation::ConformingMesh3;
 using triangulation::Plc3;
-using predicates::Sign;
 
 /// Coarser sizes when EXACTMESH_TEST_SCALE asks for less work, at most 1.25 times, and never
 /// above `ceiling`: the box-with-hole needs leaves of 1/16 (h < 1/8) to have a core.
@@ -126,6 +126,35 @@ TEST(Generators_OctreeMesh3d, BoxWithHoleUniformAndGraded) {
             "graded"),
         "box-with-hole graded");
     EXPECT_GE(graded.counters.max_level, 5u);
+    // A size that drops fourfold in one corner: leaves two levels finer there, which the 2:1
+    // balance must grade (balance splits), with finer core neighbours across faces and edges.
+    const OctreeMesh3Result step = mesh_and_check(
+        plc,
+        SizeFunction3::analytic(
+            [h](double x, double y, double z) { return x < 0.2 && y < 0.2 && z < 0.2 ? h / 4 : h; },
+            "step"),
+        "box-with-hole step");
+    EXPECT_GT(step.counters.balance_splits, 0u);
+    EXPECT_GE(step.counters.max_level, 6u);
+}
+
+TEST(Generators_OctreeMesh3d, RootCubeIsAlignedToHalfItsPowerOfTwoEdge) {
+    // A box straddling zero: the root [-1, 1]^3 (edge 2, aligned to 1).
+    const Octree3 centred({-1, -0.75, -0.5}, {1, 0.75, 0.5});
+    EXPECT_EQ(centred.root_edge(), 2.0);
+    EXPECT_EQ(centred.corner(), (std::array<double, 3>{-1, -1, -1}));
+    const Octree3 offset({0.3, 0.3, 0.3}, {0.9, 0.5, 0.4});
+    EXPECT_EQ(offset.root_edge(), 1.0);
+    EXPECT_EQ(offset.corner(), (std::array<double, 3>{0, 0, 0}));
+    // Scaled by 2^k: the root scaled by 2^k.
+    for (const int e : {600, -600}) {
+        const Octree3 scaled({std::ldexp(0.3, e), std::ldexp(0.3, e), std::ldexp(0.3, e)},
+                             {std::ldexp(0.9, e), std::ldexp(0.5, e), std::ldexp(0.4, e)});
+        EXPECT_EQ(scaled.root_edge(), std::ldexp(1.0, e));
+        EXPECT_EQ(scaled.corner()[0], 0.0);
+    }
+    // Too far from the origin for exact grid coordinates: refused.
+    EXPECT_THROW(Octree3({1e12, 0, 0}, {1e12 + 1, 1, 1}), InputError);
 }
 
 TEST(Generators_OctreeMesh3d, EllipsoidUniformAndGraded) {
