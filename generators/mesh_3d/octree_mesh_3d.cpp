@@ -20,6 +20,7 @@
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "predicates/orient3d.hpp"
+#include "triangulation/mesh/flip_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
 
 namespace exactmesh::generators {
@@ -564,37 +565,16 @@ class OctreeMesher {
             }
         }
         result_.counters.template_vertices = mesh.vertex_count() - band_count;
-        connect_neighbours(mesh);
-        fill_features(out, band_count);
-    }
-
-    static void connect_neighbours(tri::Tetrahedralization3& mesh) {
-        struct FaceHash {
-            std::size_t operator()(const std::array<VertIdx, 3>& f) const {
-                return static_cast<std::size_t>((std::uint64_t{f[0]} * 0x9E3779B97F4A7C15ull) ^
-                                                (std::uint64_t{f[1]} * 0xC2B2AE3D27D4EB4Full) ^
-                                                f[2]);
-            }
-        };
-        mesh.neighbors.assign(mesh.tets.size(), kNone);
-        std::unordered_map<std::array<VertIdx, 3>, std::uint32_t, FaceHash> open;
-        open.reserve(mesh.tets.size());
-        for (std::uint32_t t = 0; t < mesh.tet_count(); ++t) {
-            for (unsigned k = 0; k < 4; ++k) {
-                std::array<VertIdx, 3> face{};
-                for (unsigned j = 0; j < 3; ++j)
-                    face[j] = mesh.tets[4 * std::size_t{t} + tri::kFaceVertex[k][j]];
-                std::sort(face.begin(), face.end());
-                const std::uint32_t slot = 4 * t + k;
-                const auto [it, added] = open.emplace(face, slot);
-                if (added) continue;
-                if (it->second == kNone)
-                    throw InternalError("octree mesh 3d: a face shared by three tetrahedra");
-                mesh.neighbors[slot] = it->second / 4;
-                mesh.neighbors[it->second] = t;
-                it->second = kNone;
-            }
+        // Neighbours by shared faces; link_neighbors_3d also checks every tetrahedron positive
+        // and every face in at most two (exact): a failure here is a bug, not the input's.
+        mesh.neighbors.clear();
+        try {
+            tri::link_neighbors_3d(mesh);
+        } catch (const InputError& error) {
+            throw InternalError(std::string("octree mesh 3d: the merged mesh is not valid: ") +
+                                error.what());
         }
+        fill_features(out, band_count);
     }
 
     /// The PLC's features from the band's: interface corners, segments and facets are not

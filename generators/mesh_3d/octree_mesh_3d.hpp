@@ -34,9 +34,10 @@
 //     every face use the same triangles, so the mesh is conforming. Every template
 //     tetrahedron is made positive by exact orient3d (zero is an InternalError).
 //  5. Merge: the band's vertices first (so the PLC's vertices keep their indices), template
-//     vertices deduplicated by exact coordinates; neighbours by shared faces (a face in three
-//     tetrahedra is an InternalError); the PLC's segments, subsegments and subfaces from the
-//     band (interface ones dropped, their vertices become Volume).
+//     vertices deduplicated by exact coordinates; neighbours by shared faces (link_neighbors_3d:
+//     a face in three tetrahedra or a non-positive one is an InternalError); the PLC's segments,
+//     subsegments and subfaces from the band (interface ones dropped, their vertices become
+//     Volume).
 // Not done: region attributes (refused: InputError); sliver removal is the caller's (the CLI
 // runs sliver_removal_3d on the merged mesh). Cost: O(leaves) octree work with hash lookups,
 // plus the band's recovery and frontal meshing.

@@ -18,6 +18,7 @@
 
 #include "base/errors.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "generators/mesh_3d/sliver_removal_3d.hpp"
 #include "predicates/orient3d.hpp"
 #include "tests/support/plcs_3d.hpp"
 #include "tests/support/test_scale.hpp"
@@ -117,7 +118,15 @@ OctreeMesh3Result mesh_and_check(const Plc3& plc, const SizeFunction3& size,
 TEST(Generators_OctreeMesh3d, BoxWithHoleUniformAndGraded) {
     const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
     const double h = test_size(0.08, 0.12);
-    mesh_and_check(plc, SizeFunction3::uniform(h), "box-with-hole uniform");
+    const OctreeMesh3Result uniform =
+        mesh_and_check(plc, SizeFunction3::uniform(h), "box-with-hole uniform");
+    // Sliver removal applies to the merged mesh (the command runs it): still conforming, no
+    // tetrahedron left below its threshold here.
+    const SliverRemoval3Result improved = sliver_removal_3d(uniform.mesh);
+    const auto report = triangulation::check_boundary_conformity_3d(plc, improved.mesh);
+    EXPECT_TRUE(report.ok) << report.problem;
+    EXPECT_GT(improved.counters.slivers_before, 0u);
+    EXPECT_EQ(improved.counters.slivers_after, 0u);
     // Finer near the corner at the origin: leaves of several levels, hanging corners.
     const OctreeMesh3Result graded = mesh_and_check(
         plc,
