@@ -9,7 +9,9 @@
 // unless --no-sliver-removal; --quality then reports the mesh before it (prefixed
 // before_sliver_removal_) and after it. --generator frontal replaces Delaunay refinement by
 // frontal Delaunay insertion at --size (generators/mesh_3d/frontal_delaunay_3d), followed by
-// sliver removal as well.
+// sliver removal as well. --generator octree meshes by a 2:1 balanced octree at --size
+// (generators/mesh_3d/octree_mesh_3d: core leaves cut by templates, the band at the boundary
+// meshed by recovery and frontal insertion), followed by sliver removal.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -33,6 +35,7 @@
 #include "generators/boundary_3d/sample_domains_3d.hpp"
 #include "generators/mesh_3d/delaunay_refinement_3d.hpp"
 #include "generators/mesh_3d/frontal_delaunay_3d.hpp"
+#include "generators/mesh_3d/octree_mesh_3d.hpp"
 #include "generators/mesh_3d/sliver_removal_3d.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/plc_format.hpp"
@@ -137,35 +140,41 @@ void run_tetmesh(const TetmeshArguments& arguments) {
 
     // The generator and its size, checked before any work.
     const bool frontal = arguments.generator == "frontal";
-    if (!frontal && arguments.generator != "delaunay-refinement") {
+    const bool octree = arguments.generator == "octree";
+    if (!frontal && !octree && arguments.generator != "delaunay-refinement") {
         throw InputError("--generator '" + arguments.generator +
                          "' is not a 3D generator; the generators are: delaunay-refinement, "
-                         "frontal");
+                         "frontal, octree");
     }
     gen::FrontalDelaunay3Options frontal_options;
-    if (frontal) {
+    gen::OctreeMesh3Options octree_options;
+    if (frontal || octree) {
         if (arguments.size.empty())
-            throw InputError("--generator frontal needs --size NUM|EXPR (the target edge length)");
+            throw InputError("--generator " + arguments.generator +
+                             " needs --size NUM|EXPR (the target edge length)");
         if (arguments.radius_edge > 0 || arguments.max_volume > 0)
             throw InputError(
-                "--radius-edge and --max-volume are Delaunay refinement's bounds; --generator "
-                "frontal takes --size");
+                "--radius-edge and --max-volume are Delaunay refinement's bounds; --generator " +
+                arguments.generator + " takes --size");
         frontal_options.size = size3_from_option(arguments.size);
         frontal_options.max_steiner_points = arguments.max_steiner;
+        octree_options.size = frontal_options.size;
+        octree_options.max_steiner_points = arguments.max_steiner;
     } else if (!arguments.size.empty()) {
         throw InputError(
-            "--size is for --generator frontal; Delaunay refinement takes --max-volume (and "
-            "--radius-edge)");
+            "--size is for --generator frontal or octree; Delaunay refinement takes --max-volume "
+            "(and --radius-edge)");
     }
 
     tri::BoundaryRecovery3Options options;
     options.max_steiner_points = arguments.max_steiner;
-    const bool refine = !frontal && (arguments.radius_edge > 0 || arguments.max_volume > 0);
+    const bool refine =
+        !frontal && !octree && (arguments.radius_edge > 0 || arguments.max_volume > 0);
     gen::DelaunayRefinement3Options refinement;
     refinement.radius_edge_bound = arguments.radius_edge > 0 ? arguments.radius_edge : 2.0;
     refinement.max_volume = arguments.max_volume;
     refinement.max_steiner_points = arguments.max_steiner;
-    const bool remove_slivers = (refine || frontal) && !arguments.no_sliver_removal;
+    const bool remove_slivers = (refine || frontal || octree) && !arguments.no_sliver_removal;
     gen::SliverRemoval3Options sliver_options;
     sliver_options.radius_edge_bound = refinement.radius_edge_bound;
     sliver_options.max_volume = refinement.max_volume;
@@ -173,17 +182,27 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         tri::BoundaryRecovery3Result recovery;
         gen::DelaunayRefinement3Counters refinement;
         gen::FrontalDelaunay3Counters frontal;
+        gen::OctreeMesh3Counters octree;
+        tri::BoundaryRecovery3Counters octree_band_recovery;  ///< the octree's band
         gen::SliverRemoval3Counters slivers;
         tri::Tetrahedralization3 before_sliver_removal;  ///< kept for --quality only
         double sliver_seconds = 0;  ///< sliver removal's share of construct_seconds
     };
     auto [result, stats, seconds] = timed_construction([&] {
-        Meshed meshed{tri::boundary_recovery_3d(plc, options), {}, {}, {}, {}, 0};
+        Meshed meshed{tri::boundary_recovery_3d(plc, options), {}, {}, {}, {}, {}, {}, 0};
         if (frontal) {
             gen::FrontalDelaunay3Result meshed_frontal =
                 gen::frontal_delaunay_3d(plc, std::move(meshed.recovery.mesh), frontal_options);
             meshed.recovery.mesh = std::move(meshed_frontal.mesh);
             meshed.frontal = meshed_frontal.counters;
+        }
+        if (octree) {
+            gen::OctreeMesh3Result meshed_octree =
+                gen::octree_mesh_3d(plc, meshed.recovery.mesh, octree_options);
+            meshed.recovery.mesh = std::move(meshed_octree.mesh);
+            meshed.octree = meshed_octree.counters;
+            meshed.octree_band_recovery = meshed_octree.band_recovery;
+            meshed.frontal = meshed_octree.band_frontal;
         }
         if (refine) {
             gen::DelaunayRefinement3Result refined =
@@ -288,6 +307,17 @@ void run_tetmesh(const TetmeshArguments& arguments) {
                  counters_by_name(gen::kFrontalDelaunay3CounterNames, result.frontal))
                 counters.emplace_back("frontal_" + name, value);
         }
+        if (octree) {
+            for (auto& [name, value] :
+                 counters_by_name(gen::kOctreeMesh3CounterNames, result.octree))
+                counters.emplace_back("octree_" + name, value);
+            for (auto& [name, value] :
+                 counters_by_name(tri::kBoundaryRecovery3CounterNames, result.octree_band_recovery))
+                counters.emplace_back("octree_band_recovery_" + name, value);
+            for (auto& [name, value] :
+                 counters_by_name(gen::kFrontalDelaunay3CounterNames, result.frontal))
+                counters.emplace_back("octree_band_frontal_" + name, value);
+        }
         if (remove_slivers) {
             for (auto& [name, value] :
                  counters_by_name(gen::kSliverRemoval3CounterNames, result.slivers))
@@ -350,12 +380,16 @@ void add_tetmesh_command(CLI::App& app) {
                      "The mesh generator after boundary recovery: delaunay-refinement (the "
                      "default; runs when --radius-edge or --max-volume is given) or frontal "
                      "(generators/mesh_3d/frontal_delaunay_3d: Rebay's frontal point placement "
-                     "with Bowyer-Watson insertion; needs --size)")
+                     "with Bowyer-Watson insertion; needs --size) or octree "
+                     "(generators/mesh_3d/octree_mesh_3d: a 2:1 balanced octree at the size, "
+                     "core leaves cut by templates, the band at the boundary meshed by recovery "
+                     "and frontal insertion; needs --size)")
         ->type_name("NAME");
     command
-        ->add_option("--size", arguments->size,
-                     "--generator frontal: the target edge length, a number or an expression in "
-                     "x, y, z (muParser: '0.05 + 0.1 * sqrt(x^2 + y^2 + z^2)')")
+        ->add_option(
+            "--size", arguments->size,
+            "--generator frontal or octree: the target edge length, a number or an expression in "
+            "x, y, z (muParser: '0.05 + 0.1 * sqrt(x^2 + y^2 + z^2)')")
         ->type_name("NUM|EXPR");
     command->add_flag("--no-sliver-removal", arguments->no_sliver_removal,
                       "Keep the refined mesh as Delaunay refinement leaves it: no sliver removal "

@@ -1448,13 +1448,41 @@ tetmesh_frontal() {
   # A size expression in x, y, z; a built-in domain.
   run 0 tetmesh --domain ellipsoid --domain-size 0.3 --generator frontal --size '0.15 + 0.1 * abs(z)' -o "$work/e.vtu" || return
   # The generator's name, the size's presence and kind are checked before any work.
-  expect_error 2 'delaunay-refinement, frontal' tetmesh "$work/cube.poly" --generator octree --size 0.2 -o "$work/x.ele"
+  expect_error 2 'delaunay-refinement, frontal, octree' tetmesh "$work/cube.poly" --generator quadtree --size 0.2 -o "$work/x.ele"
   expect_error 2 'needs --size' tetmesh "$work/cube.poly" --generator frontal -o "$work/x.ele"
   expect_error 2 'is for --generator frontal' tetmesh "$work/cube.poly" --size 0.2 -o "$work/x.ele"
   expect_error 2 'takes --size' tetmesh "$work/cube.poly" --generator frontal --size 0.2 --max-volume 0.1 -o "$work/x.ele"
   expect_error 2 'expression in x, y and z' tetmesh "$work/cube.poly" --generator frontal --size 'w + 1' -o "$work/x.ele"
   expect_error 2 'budget of 1000 exceeded at once: the size uniform 0.001 asks for about' \
     tetmesh "$work/cube.poly" --generator frontal --size 0.001 --max-steiner 1000 -o "$work/x.ele"
+  [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
+}
+
+tetmesh_octree() {
+  # The octree generator on the built-in box-with-hole: core leaves cut by templates, the band
+  # meshed by recovery and frontal insertion, sliver removal after; the exact conformity check
+  # runs before writing. Counters, input vertices kept and numbered first, facet markers.
+  run 0 tetmesh --domain box-with-hole --generator octree --size 0.1 --stats -o "$work/o.ele" || return
+  local name
+  for name in leaves balance_splits core_leaves core_components interface_facets band_tets template_tets estimated_leaves; do
+    grep -Eq "^octree_$name: [0-9]+$" "$work/out" || fail "--stats: no 'octree_$name: N' line"
+  done
+  grep -Eq '^octree_core_leaves: [1-9]' "$work/out" || fail "octree: no core leaf"
+  grep -Eq '^octree_template_tets: [1-9]' "$work/out" || fail "octree: no template tetrahedron"
+  grep -Eq '^octree_band_frontal_accepted_tets: [1-9]' "$work/out" || fail "octree: no band frontal counters"
+  grep -Eq '^sliver_removal_rounds: [0-9]+$' "$work/out" || fail "octree: no sliver removal"
+  [[ $(head -n1 "$work/o.ele" | awk '{print $1}') -ge 10000 ]] || fail "o.ele: fewer than 10000 tetrahedra"
+  sed -n 2,3p "$work/o.node" | awk '{print $2, $3, $4}' | tr '\n' ' ' |
+    grep -q '^0 0 0 1 0 0 $' || fail "o.node: input vertices moved"
+  awk 'NR > 1 && $1 !~ /^#/ { m[$5] = 1 } END { exit !(m[1] && m[2]) }' "$work/o.face" || fail "o.face: facet markers 1 and 2 missing"
+  # A size expression; a .vtu output.
+  run 0 tetmesh --domain ellipsoid --domain-size 0.15 --generator octree --size '0.08 + 0.05 * abs(x)' -o "$work/e.vtu" || return
+  # Errors before any work: no size, a bad size, the leaf budget.
+  expect_error 2 'needs --size' tetmesh --domain box-with-hole --generator octree -o "$work/x.ele"
+  expect_error 2 'takes --size' tetmesh --domain box-with-hole --generator octree --size 0.1 --max-volume 0.1 -o "$work/x.ele"
+  expect_error 2 'size' tetmesh --domain box-with-hole --generator octree --size 0 -o "$work/x.ele"
+  expect_error 2 'size' tetmesh --domain box-with-hole --generator octree --size=-0.1 -o "$work/x.ele"
+  expect_error 2 'leaf budget of 1000000 exceeded at once' tetmesh --domain box-with-hole --generator octree --size 0.001 -o "$work/x.ele"
   [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
 }
 
@@ -1466,7 +1494,7 @@ case "$case_name" in
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
     mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine | \
-    tetmesh_frontal | threads)
+    tetmesh_frontal | tetmesh_octree | threads)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

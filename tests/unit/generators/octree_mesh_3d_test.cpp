@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: MIT
+// Tests of generators/mesh_3d/octree_mesh_3d (and octree_3d): box-with-hole and the ellipsoid
+// at a uniform and a graded size, every output checked exactly by check_boundary_conformity_3d
+// (positive tetrahedra by exact orient3d, mutual neighbours, every subsegment and subface
+// present, the boundary made of subfaces), input vertices kept, the domain's volume, a core,
+// 2:1 balance of the octree, every face in at most two tetrahedra; the identical mesh for the
+// input and size scaled by 2^600 and 2^-600; size and budget errors.
+#include "generators/mesh_3d/octree_mesh_3d.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "base/errors.hpp"
+#include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "generators/mesh_3d/sliver_removal_3d.hpp"
+#include "predicates/orient3d.hpp"
+#include "tests/support/plcs_3d.hpp"
+#include "tests/support/test_scale.hpp"
+#include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
+#include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
+
+namespace exactmesh::generators {
+namespace {
+
+using predicates::Sign;
+using triangulation::ConformingMesh3;
+using triangulation::Plc3;
+
+/// Coarser sizes when EXACTMESH_TEST_SCALE asks for less work, at most 1.25 times, and never
+/// above `ceiling`: the box-with-hole needs leaves of 1/16 (h < 1/8) to have a core.
+double test_size(double h0, double ceiling) {
+    const double scale = exactmesh::testing::test_scale();
+    const double factor = scale < 1 ? std::min(1.25, 1 / std::cbrt(scale)) : 1.0;
+    return std::min(h0 * factor, ceiling);
+}
+
+OctreeMesh3Options options_for(SizeFunction3 size) {
+    OctreeMesh3Options options;
+    options.size = std::move(size);
+    return options;
+}
+
+/// Every leaf's neighbours across faces, edges and corners are at most one level coarser.
+void expect_balanced(const Octree3& octree) {
+    std::size_t violations = 0;
+    for (const OctreeCell3& cell : octree.leaves()) {
+        for (int d = 0; d < 27; ++d) {
+            if (d == 13) continue;
+            const std::uint32_t n = octree.find_leaf(cell.level, std::int64_t{cell.i} + d % 3 - 1,
+                                                     std::int64_t{cell.j} + (d / 3) % 3 - 1,
+                                                     std::int64_t{cell.k} + d / 9 - 1);
+            if (n == Octree3::kOutside || n == Octree3::kFiner) continue;
+            if (octree.leaves()[n].level + 1 < cell.level) ++violations;
+        }
+    }
+    EXPECT_EQ(violations, 0u) << "2:1 balance";
+}
+
+/// Every face of the mesh in one or two tetrahedra, and every tetrahedron positive (exact).
+void expect_conforming(const triangulation::Tetrahedralization3& mesh) {
+    std::map<std::array<std::uint32_t, 3>, int> faces;
+    std::size_t flat = 0;
+    for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
+        const std::uint32_t* v = &mesh.tets[t];
+        if (predicates::orient3d(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                 mesh.point(v[3])) != Sign::Positive)
+            ++flat;
+        for (unsigned k = 0; k < 4; ++k) {
+            std::array<std::uint32_t, 3> f{v[(k + 1) % 4], v[(k + 2) % 4], v[(k + 3) % 4]};
+            std::sort(f.begin(), f.end());
+            ++faces[f];
+        }
+    }
+    EXPECT_EQ(flat, 0u) << "tetrahedra not positively oriented";
+    std::size_t over = 0;
+    for (const auto& [face, count] : faces) over += count > 2;
+    EXPECT_EQ(over, 0u) << "faces in more than two tetrahedra";
+}
+
+OctreeMesh3Result mesh_and_check(const Plc3& plc, const SizeFunction3& size,
+                                 const std::string& what) {
+    const ConformingMesh3 recovered = triangulation::boundary_recovery_3d(plc).mesh;
+    const double domain_volume = triangulation::mesh_volume(recovered.mesh);
+    OctreeMesh3Result result = octree_mesh_3d(plc, recovered, options_for(size));
+    const auto report = triangulation::check_boundary_conformity_3d(plc, result.mesh);
+    EXPECT_TRUE(report.ok) << what << ": " << report.problem;
+    EXPECT_EQ(result.mesh.input_vertex_count, plc.vertex_count()) << what;
+    for (std::size_t i = 0; i < plc.xyz.size(); ++i)
+        EXPECT_EQ(result.mesh.mesh.xyz[i], plc.xyz[i]) << what << " coordinate " << i;
+    EXPECT_NEAR(triangulation::mesh_volume(result.mesh.mesh), domain_volume, 1e-9 * domain_volume)
+        << what;
+    expect_conforming(result.mesh.mesh);
+    expect_balanced(result.octree);
+    const auto& c = result.counters;
+    EXPECT_GT(c.core_leaves, 0u) << what;
+    EXPECT_GT(c.template_tets, 0u) << what;
+    EXPECT_EQ(c.template_tets + c.band_tets, result.mesh.mesh.tet_count()) << what;
+    std::printf(
+        "%s (%s): %u vertices, %u tets; %llu leaves (%llu core in %llu components, %llu balance "
+        "splits), %llu interface squares, %llu band tets, %llu template tets\n",
+        what.c_str(), size.describe().c_str(), result.mesh.mesh.vertex_count(),
+        result.mesh.mesh.tet_count(), static_cast<unsigned long long>(c.leaves),
+        static_cast<unsigned long long>(c.core_leaves),
+        static_cast<unsigned long long>(c.core_components),
+        static_cast<unsigned long long>(c.balance_splits),
+        static_cast<unsigned long long>(c.interface_facets),
+        static_cast<unsigned long long>(c.band_tets),
+        static_cast<unsigned long long>(c.template_tets));
+    return result;
+}
+
+TEST(Generators_OctreeMesh3d, BoxWithHoleUniformAndGraded) {
+    const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
+    const double h = test_size(0.08, 0.12);
+    const OctreeMesh3Result uniform =
+        mesh_and_check(plc, SizeFunction3::uniform(h), "box-with-hole uniform");
+    // Sliver removal applies to the merged mesh (the command runs it): still conforming, no
+    // tetrahedron left below its threshold here.
+    const SliverRemoval3Result improved = sliver_removal_3d(uniform.mesh);
+    const auto report = triangulation::check_boundary_conformity_3d(plc, improved.mesh);
+    EXPECT_TRUE(report.ok) << report.problem;
+    EXPECT_GT(improved.counters.slivers_before, 0u);
+    EXPECT_EQ(improved.counters.slivers_after, 0u);
+    // Finer near the corner at the origin: leaves of several levels, hanging corners.
+    const OctreeMesh3Result graded = mesh_and_check(
+        plc,
+        SizeFunction3::analytic(
+            [h](double x, double y, double z) { return h * (0.5 + 0.8 * (x + y + z) / 3); },
+            "graded"),
+        "box-with-hole graded");
+    EXPECT_GE(graded.counters.max_level, 5u);
+    // A size that drops fourfold in one corner: leaves two levels finer there, which the 2:1
+    // balance must grade (balance splits), with finer core neighbours across faces and edges.
+    const OctreeMesh3Result step = mesh_and_check(
+        plc,
+        SizeFunction3::analytic(
+            [h](double x, double y, double z) { return x < 0.2 && y < 0.2 && z < 0.2 ? h / 4 : h; },
+            "step"),
+        "box-with-hole step");
+    EXPECT_GT(step.counters.balance_splits, 0u);
+    EXPECT_GE(step.counters.max_level, 6u);
+}
+
+TEST(Generators_OctreeMesh3d, RootCubeIsAlignedToHalfItsPowerOfTwoEdge) {
+    // A box straddling zero: the root [-1, 1]^3 (edge 2, aligned to 1).
+    const Octree3 centred({-1, -0.75, -0.5}, {1, 0.75, 0.5});
+    EXPECT_EQ(centred.root_edge(), 2.0);
+    EXPECT_EQ(centred.corner(), (std::array<double, 3>{-1, -1, -1}));
+    const Octree3 offset({0.3, 0.3, 0.3}, {0.9, 0.5, 0.4});
+    EXPECT_EQ(offset.root_edge(), 1.0);
+    EXPECT_EQ(offset.corner(), (std::array<double, 3>{0, 0, 0}));
+    // Scaled by 2^k: the root scaled by 2^k.
+    for (const int e : {600, -600}) {
+        const Octree3 scaled({std::ldexp(0.3, e), std::ldexp(0.3, e), std::ldexp(0.3, e)},
+                             {std::ldexp(0.9, e), std::ldexp(0.5, e), std::ldexp(0.4, e)});
+        EXPECT_EQ(scaled.root_edge(), std::ldexp(1.0, e));
+        EXPECT_EQ(scaled.corner()[0], 0.0);
+    }
+    // Too far from the origin for exact grid coordinates: refused.
+    EXPECT_THROW(Octree3({1e12, 0, 0}, {1e12 + 1, 1, 1}), InputError);
+}
+
+TEST(Generators_OctreeMesh3d, EllipsoidUniformAndGraded) {
+    const double h = test_size(0.1, 0.12);
+    const Plc3 plc = sample_domain_3d(SampleDomain3::Ellipsoid, h);
+    mesh_and_check(plc, SizeFunction3::uniform(h), "ellipsoid uniform");
+    mesh_and_check(plc,
+                   SizeFunction3::analytic(
+                       [h](double x, double, double) { return h * (0.6 + 0.4 * std::fabs(x)); },
+                       "graded in x"),
+                   "ellipsoid graded");
+}
+
+TEST(Generators_OctreeMesh3d, ScaledByPowersOfTwoGivesTheScaledMesh) {
+    const double h = test_size(0.1, 0.12);
+    const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
+    const OctreeMesh3Result reference =
+        mesh_and_check(plc, SizeFunction3::uniform(h), "box-with-hole unscaled");
+    for (const int e : {600, -600}) {
+        const Plc3 s = triangulation::scaled(plc, e);
+        const ConformingMesh3 recovered = triangulation::boundary_recovery_3d(s).mesh;
+        const OctreeMesh3Result result =
+            octree_mesh_3d(s, recovered, options_for(SizeFunction3::uniform(std::ldexp(h, e))));
+        EXPECT_TRUE(triangulation::check_boundary_conformity_3d(s, result.mesh).ok) << e;
+        ASSERT_EQ(result.mesh.mesh.tets, reference.mesh.mesh.tets) << "scaled by 2^" << e;
+        ASSERT_EQ(result.mesh.mesh.xyz.size(), reference.mesh.mesh.xyz.size());
+        for (std::size_t i = 0; i < result.mesh.mesh.xyz.size(); ++i)
+            ASSERT_EQ(result.mesh.mesh.xyz[i], std::ldexp(reference.mesh.mesh.xyz[i], e)) << i;
+        EXPECT_EQ(result.mesh.subfaces, reference.mesh.subfaces);
+        EXPECT_EQ(result.counters.core_leaves, reference.counters.core_leaves);
+        EXPECT_EQ(result.counters.estimated_leaves, reference.counters.estimated_leaves);
+    }
+}
+
+TEST(Generators_OctreeMesh3d, SizeAndBudgetErrors) {
+    const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
+    const ConformingMesh3 recovered = triangulation::boundary_recovery_3d(plc).mesh;
+    // No size, a zero or negative size (uniform: refused when made; analytic: when evaluated).
+    EXPECT_THROW(octree_mesh_3d(plc, recovered, OctreeMesh3Options{}), InputError);
+    EXPECT_THROW(SizeFunction3::uniform(0), InputError);
+    EXPECT_THROW(SizeFunction3::uniform(-0.1), InputError);
+    EXPECT_THROW(octree_mesh_3d(plc, recovered,
+                                options_for(SizeFunction3::analytic(
+                                    [](double, double, double) { return -0.1; }, "negative"))),
+                 InputError);
+    EXPECT_THROW(octree_mesh_3d(plc, recovered,
+                                options_for(SizeFunction3::analytic(
+                                    [](double, double, double) { return 0.0; }, "zero"))),
+                 InputError);
+    // The budget: refused at once from the estimate (before any octree is built) ...
+    OctreeMesh3Options options = options_for(SizeFunction3::uniform(1e-3));
+    options.max_leaves = 100000;
+    try {
+        octree_mesh_3d(plc, recovered, options);
+        ADD_FAILURE() << "no budget error";
+    } catch (const InputError& error) {
+        const std::string text = error.what();
+        EXPECT_NE(text.find("leaf budget of 100000 exceeded at once"), std::string::npos) << text;
+        EXPECT_NE(text.find("about 1e+09 leaves"), std::string::npos) << text;
+    }
+    // ... and while refining, when the estimate passes but the leaves do not.
+    options = options_for(SizeFunction3::uniform(0.1));
+    options.max_leaves = 2000;
+    try {
+        octree_mesh_3d(plc, recovered, options);
+        ADD_FAILURE() << "no budget error while refining";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("leaf budget of 2000 exceeded while refining"),
+                  std::string::npos)
+            << error.what();
+    }
+    // Regions are not supported yet.
+    Plc3 with_region = plc;
+    with_region.regions.push_back({0.1, 0.1, 0.1, 1, -1});
+    EXPECT_THROW(octree_mesh_3d(with_region, recovered, options_for(SizeFunction3::uniform(0.1))),
+                 InputError);
+}
+
+}  // namespace
+}  // namespace exactmesh::generators
