@@ -5,11 +5,16 @@
 #pragma once
 
 #include <benchmark/benchmark.h>
-#include <malloc.h>  // mallopt, malloc_trim: the heap regime
+#include <malloc.h>        // mallopt, malloc_trim: the heap regime
+#include <spawn.h>         // posix_spawn: peers run as processes
+#include <sys/resource.h>  // rusage
+#include <sys/wait.h>      // wait4: a peer's own maximum resident set
+#include <unistd.h>        // environ
 
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -58,6 +63,27 @@ inline void after_construction() {
 inline void add_peak_memory_context() {
     benchmark::AddCustomContext("exactmesh_peak_memory",
                                 "peak live heap bytes (operator new, malloc_usable_size)");
+}
+
+struct ProcessRun {
+    bool ok = false;           ///< started, and exited with status 0
+    double max_rss_bytes = 0;  ///< the largest resident set of the process tree (ru_maxrss)
+};
+
+/// Runs `command` through /bin/sh (a peer program) and waits for it with wait4, whose rusage
+/// holds the largest resident set of that shell and of the programs it waited for. The
+/// benchmark's own heap and earlier peers do not count, as they would with
+/// getrusage(RUSAGE_CHILDREN), which keeps the maximum over every child waited for so far.
+inline ProcessRun run_shell_command(const std::string& command) {
+    std::string shell = "/bin/sh", flag = "-c", text = command;
+    char* argv[] = {shell.data(), flag.data(), text.data(), nullptr};
+    pid_t pid = 0;
+    if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, argv, environ) != 0) return {};
+    int status = 0;
+    rusage usage{};
+    if (wait4(pid, &status, 0, &usage) != pid) return {};
+    return {WIFEXITED(status) && WEXITSTATUS(status) == 0,
+            static_cast<double>(usage.ru_maxrss) * 1024.0};
 }
 
 /// The context line naming the compiler and its version.
