@@ -29,8 +29,8 @@
 // dihedrals_below_20 (of the 6 #T angles), slivers (below 5 degrees with radius-edge <= 2),
 // max_radius_edge, mean_volume_edge; memory: peak_heap_bytes for exactmesh (peak live heap of
 // the construction, bench/heap_accounting.cpp) and peak_rss_bytes for a peer (its process's
-// maximum resident set, bench_support's run_shell_command: everything the program holds, input and
-// libraries included, so the two are not the same measure).
+// maximum resident set, measured by GNU time in bench_support's run_shell_command: everything the
+// program holds, input and libraries included, so the two are not the same measure).
 #include <benchmark/benchmark.h>
 #include <unistd.h>  // getpid: a scratch directory per process
 
