@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // What the benchmark binaries share: the pinned seeds of their inputs, the heap regime of the
 // constructions they time, the context lines of their JSON (build type, compiler, peak memory
-// rule) and the run of Google Benchmark that ends their main().
+// rule), peer programs run as processes with their peak memory (run_shell_command) and the run
+// of Google Benchmark that ends their main().
 #pragma once
 
 #include <benchmark/benchmark.h>

@@ -376,5 +376,8 @@ int main(int argc, char** argv) {
     register_all();
     benchmark::AddCustomContext("exactmesh_build_type", EXACTMESH_BENCH_BUILD_TYPE);
     exactmesh::bench::add_peak_memory_context();
+    benchmark::AddCustomContext("exactmesh_peer_peak_memory",
+                                "peak_rss_bytes: the peer process's maximum resident set "
+                                "(/usr/bin/time %M; 0 without it)");
     return exactmesh::bench::run_benchmarks(argc, argv);
 }
