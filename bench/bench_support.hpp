@@ -1,15 +1,21 @@
 // SPDX-License-Identifier: MIT
 // What the benchmark binaries share: the pinned seeds of their inputs, the heap regime of the
 // constructions they time, the context lines of their JSON (build type, compiler, peak memory
-// rule) and the run of Google Benchmark that ends their main().
+// rule), peer programs run as processes with their peak memory (run_shell_command) and the run
+// of Google Benchmark that ends their main().
 #pragma once
 
 #include <benchmark/benchmark.h>
-#include <malloc.h>  // mallopt, malloc_trim: the heap regime
+#include <malloc.h>    // mallopt, malloc_trim: the heap regime
+#include <spawn.h>     // posix_spawn: peers run as processes
+#include <sys/wait.h>  // waitpid
+#include <unistd.h>    // environ, access, unlink
 
 #include <cstdint>
 #include <cstdlib>
+#include <fstream>
 #include <limits>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -58,6 +64,47 @@ inline void after_construction() {
 inline void add_peak_memory_context() {
     benchmark::AddCustomContext("exactmesh_peak_memory",
                                 "peak live heap bytes (operator new, malloc_usable_size)");
+}
+
+struct ProcessRun {
+    bool ok = false;           ///< started, and exited with status 0
+    double max_rss_bytes = 0;  ///< the command's largest resident set; 0 without /usr/bin/time
+};
+
+/// Runs `command` through /bin/sh (a peer program) under GNU time (/usr/bin/time -f %M, Debian
+/// package `time`), which reports the largest resident set of what it waited for. Not wait4 on
+/// our own child, nor getrusage(RUSAGE_CHILDREN): a child started by posix_spawn or fork from
+/// this process inherits our peak resident set into its own at exec (the kernel keeps the larger
+/// of the old and new image's), so every peer would read at least the benchmark's own peak;
+/// /usr/bin/time is a fresh small image, so what it reports is the peer's. Without
+/// /usr/bin/time the command runs alone and max_rss_bytes stays 0.
+inline ProcessRun run_shell_command(const std::string& command) {
+    char rss_file[] = "/tmp/exactmesh_bench_rss_XXXXXX";
+    const int fd = mkstemp(rss_file);
+    const bool timed = fd >= 0 && access("/usr/bin/time", X_OK) == 0;
+    if (fd >= 0) close(fd);
+    std::vector<std::string> words = {"/bin/sh", "-c", command};
+    if (timed) words.insert(words.begin(), {"/usr/bin/time", "-f", "%M", "-o", rss_file});
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    ProcessRun run;
+    pid_t pid = 0;
+    if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) == 0) {
+        int status = 0;
+        if (waitpid(pid, &status, 0) == pid) run.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    }
+    if (timed) {
+        // The last line is the number; a failed command adds "Command exited ..." before it.
+        std::ifstream text(rss_file);
+        std::string line, last;
+        while (std::getline(text, line))
+            if (!line.empty()) last = line;
+        if (!last.empty() && last.find_first_not_of("0123456789") == std::string::npos)
+            run.max_rss_bytes = std::stod(last) * 1024.0;
+    }
+    if (fd >= 0) unlink(rss_file);
+    return run;
 }
 
 /// The context line naming the compiler and its version.
