@@ -107,6 +107,7 @@ class RestrictedDelaunay3 {
         vertex_tet_.assign(n, kNone);
         for (TetIdx t = 0; t < count; ++t)
             for (unsigned k = 0; k < 4; ++k) vertex_tet_[m_.vertex(t, k)] = t;
+        find_non_manifold_vertices();
         for (std::size_t i = 0; i < out_.subsegments.size(); i += 2) {
             subsegments_.emplace(edge_key(out_.subsegments[i], out_.subsegments[i + 1]),
                                  out_.subsegment_segment[i / 2]);
@@ -153,6 +154,10 @@ class RestrictedDelaunay3 {
 
     std::vector<double> attributes_;
     std::vector<TetIdx> vertex_tet_;
+    /// Vertices whose star falls in several pieces (the domain touches itself there: two boxes
+    /// sharing only an edge or a corner): a live tetrahedron of each piece but vertex_tet_'s.
+    /// A walk by adjacency from one tetrahedron meets only its own piece.
+    std::unordered_map<VertIdx, std::vector<TetIdx>> other_pieces_;
     std::vector<double> parameter_;
     std::unordered_map<std::uint64_t, std::uint32_t> subsegments_;
     std::unordered_map<Key3, Subface, Key3Hash> subfaces_;
@@ -269,7 +274,68 @@ class RestrictedDelaunay3 {
     StarWalk start_walk(VertIdx v, unsigned which) const {
         EM_ASSERT(vertex_tet_[v] != kNone && m_.slot_of(vertex_tet_[v], v) < 4);
         walk_mark_[which][vertex_tet_[v]] = walk_epoch_;
-        return StarWalk{v, {vertex_tet_[v]}, 0};
+        StarWalk walk{v, {vertex_tet_[v]}, 0};
+        const auto pieces = other_pieces_.find(v);
+        if (pieces != other_pieces_.end()) {
+            for (const TetIdx t : pieces->second) {
+                if (m_.is_dead(t) || m_.slot_of(t, v) >= 4 || walk_mark_[which][t] == walk_epoch_)
+                    continue;
+                walk_mark_[which][t] = walk_epoch_;
+                walk.met.push_back(t);
+            }
+        }
+        return walk;
+    }
+
+    /// Records the pieces of v's star: vertex_tet_[v]'s, and one for each further piece met by
+    /// the live tetrahedra holding v among its recorded pieces and `candidates`.
+    void note_pieces(VertIdx v, const std::vector<TetIdx>& candidates) {
+        new_walk_epoch();
+        std::vector<TetIdx> roots;
+        const auto walk_from = [&](TetIdx t) {
+            if (t == kNone || m_.is_dead(t) || m_.slot_of(t, v) >= 4 ||
+                walk_mark_[0][t] == walk_epoch_)
+                return;
+            roots.push_back(t);
+            walk_mark_[0][t] = walk_epoch_;
+            StarWalk walk{v, {t}, 0};
+            while (!walk.done()) step(walk, 0);
+        };
+        walk_from(vertex_tet_[v]);
+        const auto known = other_pieces_.find(v);
+        if (known != other_pieces_.end()) {
+            const std::vector<TetIdx> old = known->second;
+            for (const TetIdx t : old) walk_from(t);
+        }
+        for (const TetIdx t : candidates) walk_from(t);
+        if (roots.size() <= 1) {
+            other_pieces_.erase(v);
+        } else {
+            other_pieces_[v].assign(roots.begin() + 1, roots.end());
+        }
+    }
+
+    /// Finds the vertices of the starting mesh whose star is in several pieces (its
+    /// tetrahedra outnumber one adjacency walk's) and records their pieces.
+    void find_non_manifold_vertices() {
+        std::vector<std::uint32_t> incident(vertex_tet_.size(), 0);
+        for (TetIdx t = 0; t < m_.tet_slots(); ++t) {
+            if (m_.is_dead(t)) continue;
+            for (unsigned k = 0; k < 4; ++k) ++incident[m_.vertex(t, k)];
+        }
+        std::unordered_map<VertIdx, std::vector<TetIdx>> split;
+        for (VertIdx v = 0; v < vertex_tet_.size(); ++v) {
+            if (incident[v] != 0 && star(v).size() != incident[v]) split[v] = {};
+        }
+        if (split.empty()) return;
+        for (TetIdx t = 0; t < m_.tet_slots(); ++t) {
+            if (m_.is_dead(t)) continue;
+            for (unsigned k = 0; k < 4; ++k) {
+                const auto it = split.find(m_.vertex(t, k));
+                if (it != split.end()) it->second.push_back(t);
+            }
+        }
+        for (const auto& [v, tets] : split) note_pieces(v, tets);
     }
 
     /// Expands the next tetrahedron of the walk.
@@ -519,7 +585,15 @@ class RestrictedDelaunay3 {
                     it->second = kNone;
                 }
             }
-            for (unsigned k = 0; k < 4; ++k) vertex_tet_[m_.tv[s + k]] = t;
+            for (unsigned k = 0; k < 4; ++k) {
+                const VertIdx w = m_.tv[s + k];
+                // A star in pieces keeps the piece vertex_tet_ pointed into (note_pieces below
+                // drops it again if it was this cavity's).
+                const auto pieces = other_pieces_.find(w);
+                if (pieces != other_pieces_.end() && vertex_tet_[w] != t)
+                    pieces->second.push_back(vertex_tet_[w]);
+                vertex_tet_[w] = t;
+            }
             created.push_back(t);
         }
         // Subfaces and subsegments.
@@ -534,6 +608,28 @@ class RestrictedDelaunay3 {
             for (const auto& e : kEdges)
                 new_edges.insert(edge_key(m_.vertex(t, e[0]), m_.vertex(t, e[1])));
         }
+        // Stars in several pieces: the corners already known to have them get the new
+        // tetrahedra as candidates; the new vertex has several when its cavity had (a point on
+        // an edge where the domain touches itself).
+        if (!other_pieces_.empty()) {
+            std::vector<VertIdx> split_corners;
+            for (const TetIdx t : created) {
+                for (unsigned k = 0; k < 4; ++k) {
+                    const VertIdx w = m_.vertex(t, k);
+                    if (other_pieces_.count(w) != 0 &&
+                        std::find(split_corners.begin(), split_corners.end(), w) ==
+                            split_corners.end())
+                        split_corners.push_back(w);
+                }
+            }
+            for (const VertIdx w : split_corners) {
+                std::vector<TetIdx> candidates;
+                for (const TetIdx t : created)
+                    if (m_.slot_of(t, w) < 4) candidates.push_back(t);
+                note_pieces(w, candidates);
+            }
+        }
+        if (!created.empty() && star(v).size() != created.size()) note_pieces(v, created);
         for (const Subface& s : new_subfaces)
             EM_ASSERT(new_faces.count(sorted3(s.oriented[0], s.oriented[1], s.oriented[2])) != 0);
         for (const auto& entry : new_subsegments) EM_ASSERT(new_edges.count(entry.first) != 0);

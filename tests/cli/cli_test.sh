@@ -1462,7 +1462,7 @@ tetmesh_octree() {
   # The octree generator on the built-in box-with-hole: core leaves cut by templates, the band
   # meshed by recovery and frontal insertion, sliver removal after; the exact conformity check
   # runs before writing. Counters, input vertices kept and numbered first, facet markers.
-  run 0 tetmesh --domain box-with-hole --generator octree --size 0.1 --stats -o "$work/o.ele" || return
+  run 0 tetmesh --domain box-with-hole --generator octree --size 0.06 --stats -o "$work/o.ele" || return
   local name
   for name in leaves balance_splits core_leaves core_components interface_facets band_tets template_tets estimated_leaves; do
     grep -Eq "^octree_$name: [0-9]+$" "$work/out" || fail "--stats: no 'octree_$name: N' line"

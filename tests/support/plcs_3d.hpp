@@ -3,6 +3,7 @@
 // box, scaling by a power of two, random convex and random star-shaped polyhedra.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -43,6 +44,36 @@ inline Plc3 box(double x, double y, double z) {
     const std::vector<std::vector<VertIdx>> faces = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
                                                      {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
     for (const auto& face : faces) plc.facets.push_back({{face}, {}, 1});
+    return plc;
+}
+
+/// Two unit cubes that touch only along an edge (the second at (1, 1, 0)) or only at a corner
+/// (at (1, 1, 1)): a valid domain whose boundary is not a manifold there (the touching edge is
+/// in four boundary faces; the corner's star is in two pieces). Shared points are one vertex.
+inline Plc3 cubes_touching(bool along_an_edge) {
+    Plc3 plc;
+    std::vector<std::array<double, 3>> points;
+    const auto index = [&](const std::array<double, 3>& p) {
+        for (std::size_t i = 0; i < points.size(); ++i)
+            if (points[i] == p) return static_cast<VertIdx>(i);
+        points.push_back(p);
+        plc.xyz.insert(plc.xyz.end(), p.begin(), p.end());
+        return static_cast<VertIdx>(points.size() - 1);
+    };
+    const std::vector<std::vector<VertIdx>> faces = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                                     {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+    const std::array<double, 3> second = {1, 1, along_an_edge ? 0.0 : 1.0};
+    for (const std::array<double, 3>& origin : {std::array<double, 3>{0, 0, 0}, second}) {
+        VertIdx corner[8];
+        for (int k = 0; k < 8; ++k)
+            corner[k] = index(
+                {(k & 1) + origin[0], ((k >> 1) & 1) + origin[1], ((k >> 2) & 1) + origin[2]});
+        for (const auto& face : faces) {
+            std::vector<VertIdx> polygon;
+            for (const VertIdx k : face) polygon.push_back(corner[k]);
+            plc.facets.push_back({{polygon}, {}, 1});
+        }
+    }
     return plc;
 }
 

@@ -148,7 +148,10 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
                         static_cast<TetIdx>(f / 4), {face[0], face[1], face[2]});
         }
     }
-    // The boundary: every directed boundary edge matched by its reverse exactly once.
+    // The boundary: every directed boundary edge matched by its reverse as often as it is used.
+    // Once each where the boundary is a manifold surface; a domain that touches itself along an
+    // edge (two boxes sharing only an edge) has that edge in four boundary faces, twice in each
+    // direction, and is still closed.
     struct Half {
         VertIdx from, to;
         std::uint32_t facet;
@@ -165,14 +168,29 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
     };
     std::vector<Half> sorted = halves;
     std::sort(sorted.begin(), sorted.end(), less);
-    for (std::size_t i = 0; i + 1 < sorted.size(); ++i) {
-        if (sorted[i].from == sorted[i + 1].from && sorted[i].to == sorted[i + 1].to) {
+    for (std::size_t i = 0; i < sorted.size();) {
+        std::size_t j = i;
+        while (j < sorted.size() && sorted[j].from == sorted[i].from &&
+               sorted[j].to == sorted[i].to)
+            ++j;
+        const Half reverse{sorted[i].to, sorted[i].from, 0};
+        const auto lo = std::lower_bound(sorted.begin(), sorted.end(), reverse, less);
+        const auto hi = std::upper_bound(lo, sorted.end(), reverse, less);
+        if (hi - lo != static_cast<std::ptrdiff_t>(j - i) && hi != lo) {
+            return fail(report,
+                        "boundary edge (" + name(sorted[i].from) + ", " + name(sorted[i].to) +
+                            ") is used " + std::to_string(j - i) + " times in one direction and " +
+                            std::to_string(hi - lo) + " in the other (the boundary is not closed)",
+                        sorted[i].facet / 4, {sorted[i].from, sorted[i].to});
+        }
+        if (options.convex_boundary && j - i > 1) {
             return fail(report,
                         "boundary edge (" + name(sorted[i].from) + ", " + name(sorted[i].to) +
                             ") is used twice in the same direction (the boundary is not a manifold "
                             "surface)",
                         sorted[i].facet / 4, {sorted[i].from, sorted[i].to});
         }
+        i = j;
     }
     for (const Half& h : halves) {
         const Half reverse{h.to, h.from, 0};

@@ -3,8 +3,10 @@
 // tetrahedron strictly positively oriented (exact orient3d), vertex indices in range and
 // distinct, each face shared by at most two tetrahedra, neighbor links mutual and across the
 // same face in opposite orientations (and present exactly where a face is shared), the boundary
-// faces a closed surface (each boundary edge in exactly two boundary faces). Optionally the
-// boundary locally convex at every edge (then, being closed, it is the convex hull's boundary).
+// faces a closed surface (each directed boundary edge used as often as its reverse: once each
+// on a manifold boundary, twice each where the domain touches itself along an edge). Optionally
+// the boundary manifold and locally convex at every edge (then, being closed, it is the convex
+// hull's boundary).
 // The Delaunay check lives in check_3d (delaunay_3d's side); this file is topology only.
 #pragma once
 

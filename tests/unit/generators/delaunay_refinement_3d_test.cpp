@@ -161,6 +161,22 @@ TEST(Generators_DelaunayRefinement3d, FeaturesFinerThanDoublesResolveAreSparedNo
     EXPECT_EQ(q.unresolvable + q.over_bound + q.small_angle, 0u);
 }
 
+TEST(Generators_DelaunayRefinement3d, DomainsTouchingThemselvesAlongAnEdgeOrAtACorner) {
+    // Two cubes sharing only an edge, or only a corner: stars of the shared vertices (and of
+    // the points refinement puts on the shared edge) fall in two pieces, which a walk by
+    // adjacency does not cross. Refinement used to find no tetrahedron on a subface there
+    // (InternalError), and the topology check refused the edge in four boundary faces.
+    for (const bool edge : {true, false}) {
+        const Plc3 plc = triangulation::cubes_touching(edge);
+        DelaunayRefinement3Options options;
+        options.max_volume = 0.002;
+        const auto result = refine_and_check(
+            plc, edge ? "cubes sharing an edge" : "cubes sharing a corner", options);
+        EXPECT_NEAR(triangulation::mesh_volume(result.mesh.mesh), 2.0, 1e-12);
+        EXPECT_GT(result.counters.segment_splits, 0u);
+    }
+}
+
 TEST(Generators_DelaunayRefinement3d, ScalingByPowersOfTwoGivesTheSameMesh) {
     for (const SampleDomain3 d : {SampleDomain3::BoxWithHole, SampleDomain3::Ellipsoid}) {
         const Plc3 plc = sample_domain_3d(d, 0.4);

@@ -141,6 +141,17 @@ TEST(Generators_FrontalDelaunay3d, SampleDomainsConformingAtTheSize) {
     }
 }
 
+TEST(Generators_FrontalDelaunay3d, DomainsTouchingThemselvesAlongAnEdgeOrAtACorner) {
+    // Stars of the shared vertices in two pieces (used to end in an InternalError: a split
+    // subface with no tetrahedron found on it).
+    for (const bool edge : {true, false}) {
+        const auto result =
+            mesh_and_check(triangulation::cubes_touching(edge), 0.2,
+                           edge ? "cubes sharing an edge" : "cubes sharing a corner");
+        EXPECT_GT(result.counters.interior_points, 0u);
+    }
+}
+
 TEST(Generators_FrontalDelaunay3d, ScaledByPowersOfTwoGivesTheScaledMesh) {
     const double h = test_size(0.15);
     const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole, h);

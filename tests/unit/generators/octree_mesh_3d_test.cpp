@@ -33,7 +33,8 @@ using triangulation::ConformingMesh3;
 using triangulation::Plc3;
 
 /// Coarser sizes when EXACTMESH_TEST_SCALE asks for less work, at most 1.25 times, and never
-/// above `ceiling`: the box-with-hole needs leaves of 1/16 (h < 1/8) to have a core.
+/// above `ceiling`: the box-with-hole needs leaves of 1/16 to have a core (leaves split while
+/// their edge exceeds 1.8 h: h in [0.035, 0.069)).
 double test_size(double h0, double ceiling) {
     const double scale = exactmesh::testing::test_scale();
     const double factor = scale < 1 ? std::min(1.25, 1 / std::cbrt(scale)) : 1.0;
@@ -117,7 +118,7 @@ OctreeMesh3Result mesh_and_check(const Plc3& plc, const SizeFunction3& size,
 
 TEST(Generators_OctreeMesh3d, BoxWithHoleUniformAndGraded) {
     const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
-    const double h = test_size(0.08, 0.12);
+    const double h = test_size(0.06, 0.065);
     const OctreeMesh3Result uniform =
         mesh_and_check(plc, SizeFunction3::uniform(h), "box-with-hole uniform");
     // Sliver removal applies to the merged mesh (the command runs it): still conforming, no
@@ -177,8 +178,18 @@ TEST(Generators_OctreeMesh3d, EllipsoidUniformAndGraded) {
                    "ellipsoid graded");
 }
 
+TEST(Generators_OctreeMesh3d, DomainsTouchingThemselvesAlongAnEdgeOrAtACorner) {
+    // The band of a core made of leaves that meet at an edge or a corner touches itself there,
+    // as do these domains: stars in two pieces (the graded box-with-hole above ended in an
+    // InternalError before the pieces were kept).
+    for (const bool edge : {true, false}) {
+        mesh_and_check(triangulation::cubes_touching(edge), SizeFunction3::uniform(0.2),
+                       edge ? "cubes sharing an edge" : "cubes sharing a corner");
+    }
+}
+
 TEST(Generators_OctreeMesh3d, ScaledByPowersOfTwoGivesTheScaledMesh) {
-    const double h = test_size(0.1, 0.12);
+    const double h = test_size(0.06, 0.065);
     const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
     const OctreeMesh3Result reference =
         mesh_and_check(plc, SizeFunction3::uniform(h), "box-with-hole unscaled");
@@ -225,13 +236,15 @@ TEST(Generators_OctreeMesh3d, SizeAndBudgetErrors) {
         EXPECT_NE(text.find("about 1e+09 leaves"), std::string::npos) << text;
     }
     // ... and while refining, when the estimate passes but the leaves do not.
-    options = options_for(SizeFunction3::uniform(0.1));
-    options.max_leaves = 2000;
+    // (h = 0.069: leaves split while their edge exceeds 1.8 h = 0.1242, so the unit box ends
+    // with 4,096 leaves of 1/16, above the estimate's box volume / h^3 = 3,044.)
+    options = options_for(SizeFunction3::uniform(0.069));
+    options.max_leaves = 3500;
     try {
         octree_mesh_3d(plc, recovered, options);
         ADD_FAILURE() << "no budget error while refining";
     } catch (const InputError& error) {
-        EXPECT_NE(std::string(error.what()).find("leaf budget of 2000 exceeded while refining"),
+        EXPECT_NE(std::string(error.what()).find("leaf budget of 3500 exceeded while refining"),
                   std::string::npos)
             << error.what();
     }
