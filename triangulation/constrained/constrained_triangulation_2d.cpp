@@ -163,24 +163,36 @@ CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
         }
     }
     if (beyond_hull) return reject(CavityInsertion::Outside);
+    // One pass over the boundary: a duplicate vertex first (whatever else is found), then a hull
+    // edge p does not see (Outside), then the encroached constrained edges. p's side of an
+    // unconstrained edge between two finite triangles is not computed: the Delaunay lemma puts p
+    // strictly inside it (p in the inner circle, not in the outer one; a point of the open chord
+    // lies strictly inside both circles), so orient2d is asked only where it can fail.
+    bool outside = false;
     for (const EdgeIdx e : cdt.boundary) {
-        if (cdt.core.same_point(cdt.mesh.origin(e), p)) return reject(CavityInsertion::Duplicate);
-    }
-    for (const EdgeIdx e : cdt.boundary) {
-        const VertIdx u = cdt.mesh.origin(e), v = cdt.mesh.destination(e);
+        const VertIdx u = cdt.mesh.origin(e);
+        if (cdt.core.same_point(u, p)) {
+            cdt.encroached_edges.clear();
+            return reject(CavityInsertion::Duplicate);
+        }
+        const bool constrained = cdt.segment_of[e] != kNone;
+        if (!constrained && !cdt.mesh.is_infinite(triangle_of(cdt.mesh.twin[e]))) continue;
+        const VertIdx v = cdt.mesh.destination(e);
         const Sign side = cdt.core.orient(u, v, p);
-        if (cdt.segment_of[e] != kNone) {
+        if (constrained) {
             if (side != Sign::Positive ||
                 predicates::corner_dot_sign(cdt.mesh.point(p), cdt.mesh.point(u),
                                             cdt.mesh.point(v)) != Sign::Positive) {
                 cdt.encroached_edges.push_back(e);
             }
         } else if (side != Sign::Positive) {
-            // Only on the line of a hull edge beyond its ends (exterior kept): the Delaunay lemma
-            // puts p strictly inside every other unconstrained boundary edge.
-            EM_ASSERT(cdt.mesh.is_infinite(triangle_of(cdt.mesh.twin[e])));
-            return reject(CavityInsertion::Outside);
+            // Only on the line of a hull edge beyond its ends (exterior kept).
+            outside = true;
         }
+    }
+    if (outside) {
+        cdt.encroached_edges.clear();
+        return reject(CavityInsertion::Outside);
     }
     if (!cdt.encroached_edges.empty()) return reject(CavityInsertion::Encroaches);
 
