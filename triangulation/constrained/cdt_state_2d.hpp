@@ -82,7 +82,6 @@ struct CdtState {
     std::uint32_t stamp = 0;
     std::vector<TriIdx> cavity;
     std::vector<EdgeIdx> boundary;  // cavity boundary, half-edges inside the cavity
-    std::vector<EdgeIdx> cycle;     // the same, in order around the cavity
     std::vector<EdgeIdx> encroached_edges;
     std::vector<FanEdge> fan;  // the cavity's new triangles, in order
     std::vector<TriIdx> fan_slots;

@@ -75,32 +75,33 @@ void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
     // The boundary in order: from each boundary edge u -> v, turn about v through the cavity to
     // the next boundary edge leaving v. A cavity with an interior vertex or pinched at a vertex
     // would not close after cdt.boundary.size() edges (never seen: the Delaunay lemma excludes it).
+    // Each edge goes straight into the fan (what the new triangle keeps of it).
+    TriMesh2& mesh = cdt.mesh;
+    const std::uint32_t* segment_of = cdt.segment_of.data();
+    const std::uint32_t* stamp = cdt.cavity_stamp.data();
+    const std::uint32_t current_stamp = cdt.stamp;
     auto on_boundary = [&](EdgeIdx g) {
-        return cdt.segment_of[g] != kNone ||
-               cdt.cavity_stamp[triangle_of(cdt.mesh.twin[g])] != cdt.stamp;
+        return segment_of[g] != kNone || stamp[triangle_of(mesh.twin[g])] != current_stamp;
     };
-    cdt.cycle.clear();
-    EdgeIdx current = cdt.boundary.front();
+    std::vector<FanEdge>& fan = cdt.fan;
+    fan.clear();
+    const std::size_t boundary_size = cdt.boundary.size(), cavity_size = cdt.cavity.size();
+    const EdgeIdx first = cdt.boundary.front();
+    EdgeIdx current = first;
     do {
-        cdt.cycle.push_back(current);
-        EM_ASSERT(cdt.cycle.size() <= cdt.boundary.size());
+        fan.push_back({mesh.origin(current), mesh.destination(current), mesh.twin[current],
+                       segment_of[current]});
+        EM_ASSERT(fan.size() <= boundary_size);
         EdgeIdx g = next_edge(current);
         std::size_t turns = 0;
         while (!on_boundary(g)) {
-            g = next_edge(cdt.mesh.twin[g]);
-            EM_ASSERT(++turns <= cdt.cavity.size());
+            g = next_edge(mesh.twin[g]);
+            EM_ASSERT(++turns <= cavity_size);
         }
         current = g;
-    } while (current != cdt.boundary.front());
-    EM_ASSERT(cdt.cycle.size() == cdt.boundary.size());
-    EM_ASSERT(cdt.cycle.size() == cdt.cavity.size() + 2);
+    } while (current != first);
+    EM_ASSERT(fan.size() == boundary_size && fan.size() == cavity_size + 2);
 
-    std::vector<FanEdge>& fan = cdt.fan;
-    fan.clear();
-    for (const EdgeIdx e : cdt.cycle) {
-        fan.push_back(
-            {cdt.mesh.origin(e), cdt.mesh.destination(e), cdt.mesh.twin[e], cdt.segment_of[e]});
-    }
     const CdtState::Side side = cdt.side_of(t);
     const std::size_t n = fan.size();
     std::vector<TriIdx>& slots = cdt.fan_slots;
@@ -112,13 +113,17 @@ void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
         cdt.link_outer(3 * s, fan[i].outer, fan[i].segment);
         cdt.put_on_side(s, side);
     }
+    // (v_i -> p) of triangle i meets (p -> u_{i+1}) of the next, u_{i+1} = v_i; the spokes
+    // are unconstrained.
+    std::uint32_t* segments = cdt.segment_of.data();
     for (std::size_t i = 0; i < n; ++i) {
-        // (v_i -> p) of triangle i meets (p -> u_{i+1}) of the next, u_{i+1} = v_i.
-        cdt.link_inner(3 * slots[i] + 1, 3 * slots[(i + 1) % n] + 2);
+        const EdgeIdx e = 3 * slots[i] + 1, f = 3 * slots[i + 1 == n ? 0 : i + 1] + 2;
+        mesh.link(e, f);
+        segments[e] = segments[f] = kNone;
     }
     cdt.core.last_triangle = slots[0];
     ++cdt.edit_counters.cavity_insertions;
-    cdt.edit_counters.cavity_triangles += cdt.cavity.size();
+    cdt.edit_counters.cavity_triangles += cavity_size;
 }
 
 CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
@@ -496,6 +501,10 @@ ConstrainedTriangulation2::ConstrainedTriangulation2(const Pslg& pslg, const Cdt
     o.state.emplace(Pslg{o.xy, o.segments, o.holes, o.regions}, o.options);
     state_ = &*o.state;
     detail::CdtState& cdt = *state_;
+    mesh_ = &cdt.mesh;
+    segment_of_ = &cdt.segment_of;
+    removed_ = &cdt.removed;
+    touched_ = &cdt.touched;
     if (detail::triangulate_vertices(cdt)) {
         detail::recover_segments(cdt, options.recovery == SegmentRecovery::Cavity
                                           ? detail::recover_by_cavity
@@ -512,15 +521,6 @@ ConstrainedTriangulation2::ConstrainedTriangulation2(ConstrainedTriangulation2&&
 ConstrainedTriangulation2& ConstrainedTriangulation2::operator=(
     ConstrainedTriangulation2&&) noexcept = default;
 
-const TriMesh2& ConstrainedTriangulation2::mesh() const {
-    return state_->mesh;
-}
-std::uint32_t ConstrainedTriangulation2::segment_of(EdgeIdx e) const {
-    return state_->segment_of[e];
-}
-bool ConstrainedTriangulation2::in_domain(TriIdx t) const {
-    return state_->in_domain(t);
-}
 double ConstrainedTriangulation2::attribute(TriIdx t) const {
     return state_->attribute.empty() ? 0.0 : state_->attribute[t];
 }
@@ -556,12 +556,6 @@ std::span<const EdgeIdx> ConstrainedTriangulation2::encroached_edges() const {
 VertIdx ConstrainedTriangulation2::split_constrained_edge(EdgeIdx e, double x, double y) {
     return detail::split_constrained_edge(*state_, e, x, y);
 }
-std::span<const TriIdx> ConstrainedTriangulation2::touched() const {
-    return state_->touched;
-}
-void ConstrainedTriangulation2::clear_touched() {
-    state_->touched.clear();
-}
 void ConstrainedTriangulation2::reserve(std::uint32_t vertices) {
     detail::reserve(*state_, vertices);
 }
@@ -573,6 +567,10 @@ Cdt2Result ConstrainedTriangulation2::take_result() && {
     Cdt2Result result = detail::finish(*state_);
     owned_.reset();
     state_ = nullptr;
+    mesh_ = nullptr;
+    segment_of_ = nullptr;
+    removed_ = nullptr;
+    touched_ = nullptr;
     return result;
 }
 
