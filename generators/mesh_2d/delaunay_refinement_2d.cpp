@@ -357,7 +357,18 @@ Badness Refiner::evaluate(TriIdx t) {
     const ScaledTriangle scaled = scaled_triangle(p);
     const double* length2 = scaled.length2;  // edge k: v[k] - v[k+1], scaled
     double size_key = 0;
-    if (options_.size.bounded()) {
+    if (options_.size.is_uniform()) {
+        // One size for all three edges: the largest key is the longest edge's (division by one
+        // positive number is monotone, so these are the bits the loop below would give).
+        const double s = options_.size(p[0][0], p[0][1]);
+        if (!(s > 0)) {
+            const double where[2] = {0.5 * (p[0][0] + p[1][0]), 0.5 * (p[0][1] + p[1][1])};
+            throw InputError("size function: not a number > 0 at " + format_point(where) + " (" +
+                             options_.size.describe() + ")");
+        }
+        const double scaled_size = predicates::PowerOfTwo(scaled.shift)(s);
+        size_key = std::max({length2[0], length2[1], length2[2]}) / (scaled_size * scaled_size);
+    } else if (options_.size.bounded()) {
         for (int k = 0; k < 3; ++k) {
             // The size at the edge's midpoint, kept per half-edge: an edge keeps it while its
             // triangle on either side is not rewritten (a cavity's boundary edges, and each new
