@@ -102,23 +102,43 @@ void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
     } while (current != first);
     EM_ASSERT(fan.size() == boundary_size && fan.size() == cavity_size + 2);
 
-    const CdtState::Side side = cdt.side_of(t);
     const std::size_t n = fan.size();
     std::vector<TriIdx>& slots = cdt.fan_slots;
     slots.assign(cdt.cavity.begin(), cdt.cavity.end());
     while (slots.size() < n) slots.push_back(cdt.new_triangle());
-    for (std::size_t i = 0; i < n; ++i) {
-        const TriIdx s = slots[i];
-        cdt.set(s, fan[i].u, fan[i].v, p);
-        cdt.link_outer(3 * s, fan[i].outer, fan[i].segment);
-        cdt.put_on_side(s, side);
-    }
-    // (v_i -> p) of triangle i meets (p -> u_{i+1}) of the next, u_{i+1} = v_i; the spokes
-    // are unconstrained.
+    // What set, link_outer, put_on_side and link_inner do, in the same order, on the arrays
+    // directly (the fan is most of the writes of a refinement): each triangle (u_i, v_i, p)
+    // keeps its outer edge and its constraint, takes t's side of the domain, and is touched.
+    const std::uint8_t removed = cdt.removed[t];
+    const bool attributed = !cdt.attribute.empty();
+    const double attribute = attributed ? cdt.attribute[t] : 0.0;
+    VertIdx* tv = mesh.tv.data();
+    EdgeIdx* twin = mesh.twin.data();
+    EdgeIdx* vertex_edge = cdt.vertex_edge.data();
     std::uint32_t* segments = cdt.segment_of.data();
     for (std::size_t i = 0; i < n; ++i) {
+        const TriIdx s = slots[i];
+        const EdgeIdx e = 3 * s;
+        const FanEdge& edge = fan[i];
+        tv[e] = edge.u;
+        tv[e + 1] = edge.v;
+        tv[e + 2] = p;
+        if (edge.u != kInfinite) vertex_edge[edge.u] = e;
+        if (edge.v != kInfinite) vertex_edge[edge.v] = e + 1;
+        vertex_edge[p] = e + 2;
+        twin[e] = edge.outer;
+        twin[edge.outer] = e;
+        segments[e] = edge.segment;
+        cdt.removed[s] = removed;
+        if (attributed) cdt.attribute[s] = attribute;
+    }
+    cdt.touched.insert(cdt.touched.end(), slots.begin(), slots.end());
+    // (v_i -> p) of triangle i meets (p -> u_{i+1}) of the next, u_{i+1} = v_i; the spokes
+    // are unconstrained.
+    for (std::size_t i = 0; i < n; ++i) {
         const EdgeIdx e = 3 * slots[i] + 1, f = 3 * slots[i + 1 == n ? 0 : i + 1] + 2;
-        mesh.link(e, f);
+        twin[e] = f;
+        twin[f] = e;
         segments[e] = segments[f] = kNone;
     }
     cdt.core.last_triangle = slots[0];

@@ -125,12 +125,6 @@ Sign Delaunay2Core::incircle_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d) con
                                     input_index[a], input_index[b], input_index[c], input_index[d]);
 }
 
-bool Delaunay2Core::same_point(VertIdx a, VertIdx b) const {
-    const double* p = mesh.point(a);
-    const double* q = mesh.point(b);
-    return p[0] == q[0] && p[1] == q[1];
-}
-
 bool Delaunay2Core::strictly_between(VertIdx a, VertIdx b, VertIdx p) const {
     const double* pa = mesh.point(a);
     const double* pb = mesh.point(b);

@@ -52,7 +52,11 @@ class Delaunay2Core {
     }
     /// True when the finite points a, b, p are collinear and p lies strictly between a and b.
     bool strictly_between(VertIdx a, VertIdx b, VertIdx p) const;
-    bool same_point(VertIdx a, VertIdx b) const;
+    bool same_point(VertIdx a, VertIdx b) const {
+        const double* p = mesh.point(a);
+        const double* q = mesh.point(b);
+        return p[0] == q[0] && p[1] == q[1];
+    }
 
     /// Builds the first triangle and its three infinite neighbours from the first three
     /// non-collinear points in insertion order; records duplicates met on the way. Returns
