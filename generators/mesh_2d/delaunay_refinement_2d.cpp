@@ -202,7 +202,7 @@ class Refiner {
     std::vector<PieceToSplit> forced_;
     /// Tests the constrained edges of domain triangle t (just evaluated as `badness`) for
     /// encroachment by their apexes and queues those encroached.
-    void queue_encroached_pieces(TriIdx t, const Badness& badness);
+    inline void queue_encroached_pieces(TriIdx t, const Badness& badness);
     std::vector<std::uint32_t> version_;  // per triangle slot
     bool cache_sizes_ = false;         // a size function dearer than a constant: edge_size_ is kept
     std::vector<double> edge_size_;    // per half-edge: the size at its midpoint; 0: unknown
@@ -417,11 +417,13 @@ Badness Refiner::evaluate(TriIdx t) {
         for (int k = 1; k < 3; ++k) {
             if (length2[k] < length2[shortest]) shortest = k;
         }
+        static constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
+        const int next = kNext[shortest], prev = kPrev[shortest];
         const double cross = scaled.cross;
-        const double product = length2[(shortest + 1) % 3] * length2[(shortest + 2) % 3];
+        const double product = length2[next] * length2[prev];
         const double sine2 = cross * cross / product;
         if (sine2 < sine2_bound_ || sine2 < polish_sine2_) {
-            if (small_angle_rule(v[shortest], v[(shortest + 1) % 3], v[(shortest + 2) % 3])) {
+            if (small_angle_rule(v[shortest], v[next], v[prev])) {
                 if (sine2 < asked_sine2_) ++counters_.small_angle_skips;
             } else if (sine2 < sine2_bound_) {
                 key = std::max(key, sine2 > 0 ? sine2_bound_ / sine2 : INFINITY);
@@ -442,6 +444,12 @@ Badness Refiner::evaluate(TriIdx t) {
 }
 
 void Refiner::queue_encroached_pieces(TriIdx t, const Badness& badness) {
+    // Most triangles have no constrained edge: one test for the three.
+    const EdgeIdx first = 3 * t;
+    if (cdt_.segment_of(first) == kNone && cdt_.segment_of(first + 1) == kNone &&
+        cdt_.segment_of(first + 2) == kNone) {
+        return;
+    }
     for (unsigned k = 0; k < 3; ++k) {
         const EdgeIdx e = 3 * t + k;
         if (cdt_.segment_of(e) != kNone && encroached_from(e)) {
