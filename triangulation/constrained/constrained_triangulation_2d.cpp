@@ -72,40 +72,39 @@ std::uint32_t new_cavity_stamp(CdtState& cdt) {
 /// cdt.boundary, p strictly left of each) by the fan of triangles (u_i, v_i, p) around p, the
 /// new triangles on t's side of the domain.
 void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
-    // The boundary in order: from each boundary edge u -> v, turn about v through the cavity to
-    // the next boundary edge leaving v. A cavity with an interior vertex or pinched at a vertex
-    // would not close after cdt.boundary.size() edges (never seen: the Delaunay lemma excludes it).
-    // Each edge goes straight into the fan (what the new triangle keeps of it).
+    // The boundary in order: after each boundary edge u -> v, the boundary edge leaving v. p sees
+    // every boundary edge strictly from inside, so the boundary is one simple polygon around p
+    // and each vertex starts exactly one boundary edge: a per-vertex table of the edge leaving it
+    // (written for every origin before it is read, so it needs no clearing) orders the edges in
+    // one pass, where turning about each vertex through the cavity's triangles cost a third of
+    // the fan's work. A cavity pinched at a vertex or with an interior vertex would not close
+    // after cdt.boundary.size() edges, or close early (never seen: the Delaunay lemma excludes
+    // it). Each edge goes straight into the fan (what the new triangle keeps of it).
     TriMesh2& mesh = cdt.mesh;
     const std::uint32_t* segment_of = cdt.segment_of.data();
-    const std::uint32_t* stamp = cdt.cavity_stamp.data();
-    const std::uint32_t current_stamp = cdt.stamp;
-    auto on_boundary = [&](EdgeIdx g) {
-        return segment_of[g] != kNone || stamp[triangle_of(mesh.twin[g])] != current_stamp;
-    };
+    const std::vector<EdgeIdx>& boundary = cdt.boundary;
+    const std::size_t boundary_size = boundary.size(), cavity_size = cdt.cavity.size();
+    std::vector<std::uint32_t>& leaving = cdt.boundary_leaving;
+    if (leaving.size() < mesh.vertex_count()) leaving.resize(mesh.vertex_count());
+    for (std::size_t i = 0; i < boundary_size; ++i) {
+        leaving[mesh.origin(boundary[i])] = static_cast<std::uint32_t>(i);
+    }
     std::vector<FanEdge>& fan = cdt.fan;
     fan.clear();
-    const std::size_t boundary_size = cdt.boundary.size(), cavity_size = cdt.cavity.size();
-    const EdgeIdx first = cdt.boundary.front();
-    EdgeIdx current = first;
+    std::uint32_t current = 0;
     do {
-        fan.push_back({mesh.origin(current), mesh.destination(current), mesh.twin[current],
-                       segment_of[current]});
-        EM_ASSERT(fan.size() <= boundary_size);
-        EdgeIdx g = next_edge(current);
-        std::size_t turns = 0;
-        while (!on_boundary(g)) {
-            g = next_edge(mesh.twin[g]);
-            EM_ASSERT(++turns <= cavity_size);
-        }
-        current = g;
-    } while (current != first);
+        EM_ASSERT(current < boundary_size && fan.size() < boundary_size);
+        const EdgeIdx e = boundary[current];
+        const VertIdx v = mesh.destination(e);
+        fan.push_back({mesh.origin(e), v, mesh.twin[e], segment_of[e]});
+        current = leaving[v];
+    } while (current != 0);
     EM_ASSERT(fan.size() == boundary_size && fan.size() == cavity_size + 2);
 
     const std::size_t n = fan.size();
     std::vector<TriIdx>& slots = cdt.fan_slots;
     slots.assign(cdt.cavity.begin(), cdt.cavity.end());
-    while (slots.size() < n) slots.push_back(cdt.new_triangle());
+    if (slots.size() < n) cdt.new_triangles(n - slots.size(), slots);
     // What set, link_outer, put_on_side and link_inner do, in the same order, on the arrays
     // directly (the fan is most of the writes of a refinement): each triangle (u_i, v_i, p)
     // keeps its outer edge and its constraint, takes t's side of the domain, and is touched.
