@@ -58,7 +58,9 @@ struct ScaledTriangle {
     int shift;          ///< the scaling: 2^shift
 };
 
-ScaledTriangle scaled_triangle(const double* const p[3]) {
+// Inlined into its callers: evaluate runs it for every new triangle, and returning the struct
+// through memory cost a fifth of it.
+[[gnu::always_inline]] inline ScaledTriangle scaled_triangle(const double* const p[3]) {
     ScaledTriangle r;
     double largest = 0;
     for (int k = 0; k < 3; ++k) {
@@ -202,7 +204,7 @@ class Refiner {
     std::vector<PieceToSplit> forced_;
     /// Tests the constrained edges of domain triangle t (just evaluated as `badness`) for
     /// encroachment by their apexes and queues those encroached.
-    void queue_encroached_pieces(TriIdx t, const Badness& badness);
+    inline void queue_encroached_pieces(TriIdx t, const Badness& badness);
     std::vector<std::uint32_t> version_;  // per triangle slot
     bool cache_sizes_ = false;         // a size function dearer than a constant: edge_size_ is kept
     std::vector<double> edge_size_;    // per half-edge: the size at its midpoint; 0: unknown
@@ -357,7 +359,18 @@ Badness Refiner::evaluate(TriIdx t) {
     const ScaledTriangle scaled = scaled_triangle(p);
     const double* length2 = scaled.length2;  // edge k: v[k] - v[k+1], scaled
     double size_key = 0;
-    if (options_.size.bounded()) {
+    if (options_.size.is_uniform()) {
+        // One size for all three edges: the largest key is the longest edge's (division by one
+        // positive number is monotone, so these are the bits the loop below would give).
+        const double s = options_.size(p[0][0], p[0][1]);
+        if (!(s > 0)) {
+            const double where[2] = {0.5 * (p[0][0] + p[1][0]), 0.5 * (p[0][1] + p[1][1])};
+            throw InputError("size function: not a number > 0 at " + format_point(where) + " (" +
+                             options_.size.describe() + ")");
+        }
+        const double scaled_size = predicates::PowerOfTwo(scaled.shift)(s);
+        size_key = std::max({length2[0], length2[1], length2[2]}) / (scaled_size * scaled_size);
+    } else if (options_.size.bounded()) {
         for (int k = 0; k < 3; ++k) {
             // The size at the edge's midpoint, kept per half-edge: an edge keeps it while its
             // triangle on either side is not rewritten (a cavity's boundary edges, and each new
@@ -406,11 +419,13 @@ Badness Refiner::evaluate(TriIdx t) {
         for (int k = 1; k < 3; ++k) {
             if (length2[k] < length2[shortest]) shortest = k;
         }
+        static constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
+        const int next = kNext[shortest], prev = kPrev[shortest];
         const double cross = scaled.cross;
-        const double product = length2[(shortest + 1) % 3] * length2[(shortest + 2) % 3];
+        const double product = length2[next] * length2[prev];
         const double sine2 = cross * cross / product;
         if (sine2 < sine2_bound_ || sine2 < polish_sine2_) {
-            if (small_angle_rule(v[shortest], v[(shortest + 1) % 3], v[(shortest + 2) % 3])) {
+            if (small_angle_rule(v[shortest], v[next], v[prev])) {
                 if (sine2 < asked_sine2_) ++counters_.small_angle_skips;
             } else if (sine2 < sine2_bound_) {
                 key = std::max(key, sine2 > 0 ? sine2_bound_ / sine2 : INFINITY);
@@ -431,6 +446,12 @@ Badness Refiner::evaluate(TriIdx t) {
 }
 
 void Refiner::queue_encroached_pieces(TriIdx t, const Badness& badness) {
+    // Most triangles have no constrained edge: one test for the three.
+    const EdgeIdx first = 3 * t;
+    if (cdt_.segment_of(first) == kNone && cdt_.segment_of(first + 1) == kNone &&
+        cdt_.segment_of(first + 2) == kNone) {
+        return;
+    }
     for (unsigned k = 0; k < 3; ++k) {
         const EdgeIdx e = 3 * t + k;
         if (cdt_.segment_of(e) != kNone && encroached_from(e)) {

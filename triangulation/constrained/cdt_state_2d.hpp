@@ -82,9 +82,9 @@ struct CdtState {
     std::uint32_t stamp = 0;
     std::vector<TriIdx> cavity;
     std::vector<EdgeIdx> boundary;  // cavity boundary, half-edges inside the cavity
-    std::vector<EdgeIdx> cycle;     // the same, in order around the cavity
     std::vector<EdgeIdx> encroached_edges;
-    std::vector<FanEdge> fan;  // the cavity's new triangles, in order
+    std::vector<FanEdge> fan;                     // the cavity's new triangles, in order
+    std::vector<std::uint32_t> boundary_leaving;  // per vertex: scratch of write_fan
     std::vector<TriIdx> fan_slots;
     ConstrainedTriangulation2Counters edit_counters;
 
@@ -107,6 +107,11 @@ struct CdtState {
         const TriIdx t = mesh.new_triangle();
         grow_slots();
         return t;
+    }
+    /// new_triangle `count` times, into `slots` (one growth of each array).
+    void new_triangles(std::size_t count, std::vector<TriIdx>& slots) {
+        mesh.new_triangles(count, slots);
+        grow_slots();
     }
     /// The per-slot arrays follow mesh's slots (after mesh.new_triangle, also the flip kernel's).
     void grow_slots() {

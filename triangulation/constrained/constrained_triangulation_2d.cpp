@@ -72,53 +72,77 @@ std::uint32_t new_cavity_stamp(CdtState& cdt) {
 /// cdt.boundary, p strictly left of each) by the fan of triangles (u_i, v_i, p) around p, the
 /// new triangles on t's side of the domain.
 void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
-    // The boundary in order: from each boundary edge u -> v, turn about v through the cavity to
-    // the next boundary edge leaving v. A cavity with an interior vertex or pinched at a vertex
-    // would not close after cdt.boundary.size() edges (never seen: the Delaunay lemma excludes it).
-    auto on_boundary = [&](EdgeIdx g) {
-        return cdt.segment_of[g] != kNone ||
-               cdt.cavity_stamp[triangle_of(cdt.mesh.twin[g])] != cdt.stamp;
-    };
-    cdt.cycle.clear();
-    EdgeIdx current = cdt.boundary.front();
-    do {
-        cdt.cycle.push_back(current);
-        EM_ASSERT(cdt.cycle.size() <= cdt.boundary.size());
-        EdgeIdx g = next_edge(current);
-        std::size_t turns = 0;
-        while (!on_boundary(g)) {
-            g = next_edge(cdt.mesh.twin[g]);
-            EM_ASSERT(++turns <= cdt.cavity.size());
-        }
-        current = g;
-    } while (current != cdt.boundary.front());
-    EM_ASSERT(cdt.cycle.size() == cdt.boundary.size());
-    EM_ASSERT(cdt.cycle.size() == cdt.cavity.size() + 2);
-
+    // The boundary in order: after each boundary edge u -> v, the boundary edge leaving v. p sees
+    // every boundary edge strictly from inside, so the boundary is one simple polygon around p
+    // and each vertex starts exactly one boundary edge: a per-vertex table of the edge leaving it
+    // (written for every origin before it is read, so it needs no clearing) orders the edges in
+    // one pass, where turning about each vertex through the cavity's triangles cost a third of
+    // the fan's work. A cavity pinched at a vertex or with an interior vertex would not close
+    // after cdt.boundary.size() edges, or close early (never seen: the Delaunay lemma excludes
+    // it). Each edge goes straight into the fan (what the new triangle keeps of it).
+    TriMesh2& mesh = cdt.mesh;
+    const std::uint32_t* segment_of = cdt.segment_of.data();
+    const std::vector<EdgeIdx>& boundary = cdt.boundary;
+    const std::size_t boundary_size = boundary.size(), cavity_size = cdt.cavity.size();
+    std::vector<std::uint32_t>& leaving = cdt.boundary_leaving;
+    if (leaving.size() < mesh.vertex_count()) leaving.resize(mesh.vertex_count());
+    for (std::size_t i = 0; i < boundary_size; ++i) {
+        leaving[mesh.origin(boundary[i])] = static_cast<std::uint32_t>(i);
+    }
     std::vector<FanEdge>& fan = cdt.fan;
     fan.clear();
-    for (const EdgeIdx e : cdt.cycle) {
-        fan.push_back(
-            {cdt.mesh.origin(e), cdt.mesh.destination(e), cdt.mesh.twin[e], cdt.segment_of[e]});
-    }
-    const CdtState::Side side = cdt.side_of(t);
+    std::uint32_t current = 0;
+    do {
+        EM_ASSERT(current < boundary_size && fan.size() < boundary_size);
+        const EdgeIdx e = boundary[current];
+        const VertIdx v = mesh.destination(e);
+        fan.push_back({mesh.origin(e), v, mesh.twin[e], segment_of[e]});
+        current = leaving[v];
+    } while (current != 0);
+    EM_ASSERT(fan.size() == boundary_size && fan.size() == cavity_size + 2);
+
     const std::size_t n = fan.size();
     std::vector<TriIdx>& slots = cdt.fan_slots;
     slots.assign(cdt.cavity.begin(), cdt.cavity.end());
-    while (slots.size() < n) slots.push_back(cdt.new_triangle());
+    if (slots.size() < n) cdt.new_triangles(n - slots.size(), slots);
+    // What set, link_outer, put_on_side and link_inner do, in the same order, on the arrays
+    // directly (the fan is most of the writes of a refinement): each triangle (u_i, v_i, p)
+    // keeps its outer edge and its constraint, takes t's side of the domain, and is touched.
+    const std::uint8_t removed = cdt.removed[t];
+    const bool attributed = !cdt.attribute.empty();
+    const double attribute = attributed ? cdt.attribute[t] : 0.0;
+    VertIdx* tv = mesh.tv.data();
+    EdgeIdx* twin = mesh.twin.data();
+    EdgeIdx* vertex_edge = cdt.vertex_edge.data();
+    std::uint32_t* segments = cdt.segment_of.data();
     for (std::size_t i = 0; i < n; ++i) {
         const TriIdx s = slots[i];
-        cdt.set(s, fan[i].u, fan[i].v, p);
-        cdt.link_outer(3 * s, fan[i].outer, fan[i].segment);
-        cdt.put_on_side(s, side);
+        const EdgeIdx e = 3 * s;
+        const FanEdge& edge = fan[i];
+        tv[e] = edge.u;
+        tv[e + 1] = edge.v;
+        tv[e + 2] = p;
+        if (edge.u != kInfinite) vertex_edge[edge.u] = e;
+        if (edge.v != kInfinite) vertex_edge[edge.v] = e + 1;
+        vertex_edge[p] = e + 2;
+        twin[e] = edge.outer;
+        twin[edge.outer] = e;
+        segments[e] = edge.segment;
+        cdt.removed[s] = removed;
+        if (attributed) cdt.attribute[s] = attribute;
     }
+    cdt.touched.insert(cdt.touched.end(), slots.begin(), slots.end());
+    // (v_i -> p) of triangle i meets (p -> u_{i+1}) of the next, u_{i+1} = v_i; the spokes
+    // are unconstrained.
     for (std::size_t i = 0; i < n; ++i) {
-        // (v_i -> p) of triangle i meets (p -> u_{i+1}) of the next, u_{i+1} = v_i.
-        cdt.link_inner(3 * slots[i] + 1, 3 * slots[(i + 1) % n] + 2);
+        const EdgeIdx e = 3 * slots[i] + 1, f = 3 * slots[i + 1 == n ? 0 : i + 1] + 2;
+        twin[e] = f;
+        twin[f] = e;
+        segments[e] = segments[f] = kNone;
     }
     cdt.core.last_triangle = slots[0];
     ++cdt.edit_counters.cavity_insertions;
-    cdt.edit_counters.cavity_triangles += cdt.cavity.size();
+    cdt.edit_counters.cavity_triangles += cavity_size;
 }
 
 CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
@@ -163,24 +187,36 @@ CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
         }
     }
     if (beyond_hull) return reject(CavityInsertion::Outside);
+    // One pass over the boundary: a duplicate vertex first (whatever else is found), then a hull
+    // edge p does not see (Outside), then the encroached constrained edges. p's side of an
+    // unconstrained edge between two finite triangles is not computed: the Delaunay lemma puts p
+    // strictly inside it (p in the inner circle, not in the outer one; a point of the open chord
+    // lies strictly inside both circles), so orient2d is asked only where it can fail.
+    bool outside = false;
     for (const EdgeIdx e : cdt.boundary) {
-        if (cdt.core.same_point(cdt.mesh.origin(e), p)) return reject(CavityInsertion::Duplicate);
-    }
-    for (const EdgeIdx e : cdt.boundary) {
-        const VertIdx u = cdt.mesh.origin(e), v = cdt.mesh.destination(e);
+        const VertIdx u = cdt.mesh.origin(e);
+        if (cdt.core.same_point(u, p)) {
+            cdt.encroached_edges.clear();
+            return reject(CavityInsertion::Duplicate);
+        }
+        const bool constrained = cdt.segment_of[e] != kNone;
+        if (!constrained && !cdt.mesh.is_infinite(triangle_of(cdt.mesh.twin[e]))) continue;
+        const VertIdx v = cdt.mesh.destination(e);
         const Sign side = cdt.core.orient(u, v, p);
-        if (cdt.segment_of[e] != kNone) {
+        if (constrained) {
             if (side != Sign::Positive ||
                 predicates::corner_dot_sign(cdt.mesh.point(p), cdt.mesh.point(u),
                                             cdt.mesh.point(v)) != Sign::Positive) {
                 cdt.encroached_edges.push_back(e);
             }
         } else if (side != Sign::Positive) {
-            // Only on the line of a hull edge beyond its ends (exterior kept): the Delaunay lemma
-            // puts p strictly inside every other unconstrained boundary edge.
-            EM_ASSERT(cdt.mesh.is_infinite(triangle_of(cdt.mesh.twin[e])));
-            return reject(CavityInsertion::Outside);
+            // Only on the line of a hull edge beyond its ends (exterior kept).
+            outside = true;
         }
+    }
+    if (outside) {
+        cdt.encroached_edges.clear();
+        return reject(CavityInsertion::Outside);
     }
     if (!cdt.encroached_edges.empty()) return reject(CavityInsertion::Encroaches);
 
@@ -484,6 +520,10 @@ ConstrainedTriangulation2::ConstrainedTriangulation2(const Pslg& pslg, const Cdt
     o.state.emplace(Pslg{o.xy, o.segments, o.holes, o.regions}, o.options);
     state_ = &*o.state;
     detail::CdtState& cdt = *state_;
+    mesh_ = &cdt.mesh;
+    segment_of_ = &cdt.segment_of;
+    removed_ = &cdt.removed;
+    touched_ = &cdt.touched;
     if (detail::triangulate_vertices(cdt)) {
         detail::recover_segments(cdt, options.recovery == SegmentRecovery::Cavity
                                           ? detail::recover_by_cavity
@@ -500,15 +540,6 @@ ConstrainedTriangulation2::ConstrainedTriangulation2(ConstrainedTriangulation2&&
 ConstrainedTriangulation2& ConstrainedTriangulation2::operator=(
     ConstrainedTriangulation2&&) noexcept = default;
 
-const TriMesh2& ConstrainedTriangulation2::mesh() const {
-    return state_->mesh;
-}
-std::uint32_t ConstrainedTriangulation2::segment_of(EdgeIdx e) const {
-    return state_->segment_of[e];
-}
-bool ConstrainedTriangulation2::in_domain(TriIdx t) const {
-    return state_->in_domain(t);
-}
 double ConstrainedTriangulation2::attribute(TriIdx t) const {
     return state_->attribute.empty() ? 0.0 : state_->attribute[t];
 }
@@ -544,12 +575,6 @@ std::span<const EdgeIdx> ConstrainedTriangulation2::encroached_edges() const {
 VertIdx ConstrainedTriangulation2::split_constrained_edge(EdgeIdx e, double x, double y) {
     return detail::split_constrained_edge(*state_, e, x, y);
 }
-std::span<const TriIdx> ConstrainedTriangulation2::touched() const {
-    return state_->touched;
-}
-void ConstrainedTriangulation2::clear_touched() {
-    state_->touched.clear();
-}
 void ConstrainedTriangulation2::reserve(std::uint32_t vertices) {
     detail::reserve(*state_, vertices);
 }
@@ -561,6 +586,10 @@ Cdt2Result ConstrainedTriangulation2::take_result() && {
     Cdt2Result result = detail::finish(*state_);
     owned_.reset();
     state_ = nullptr;
+    mesh_ = nullptr;
+    segment_of_ = nullptr;
+    removed_ = nullptr;
+    touched_ = nullptr;
     return result;
 }
 

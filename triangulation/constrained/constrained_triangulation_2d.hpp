@@ -80,11 +80,14 @@ class ConstrainedTriangulation2 {
     /// vertices [0, input_vertex_count()) are the input's, in an internal order
     /// (input_index()); later ones were added (intersections, then edits) and keep their number
     /// in the result. Valid until the next edit.
-    const TriMesh2& mesh() const;
+    const TriMesh2& mesh() const { return *mesh_; }
     /// The input segment carried by half-edge e, or kNone when e is not constrained.
-    std::uint32_t segment_of(EdgeIdx e) const;
+    std::uint32_t segment_of(EdgeIdx e) const { return (*segment_of_)[e]; }
     /// A live, finite triangle inside the domain (not exterior, not in a hole).
-    bool in_domain(TriIdx t) const;
+    bool in_domain(TriIdx t) const {
+        return !mesh_->is_dead(t) && !mesh_->is_infinite(t) &&
+               (removed_->empty() || (*removed_)[t] == 0);
+    }
     /// The regional attribute of triangle t (0 outside every region, and without regions), as
     /// Cdt2Result::triangle_attributes will give it; kept through every edit.
     double attribute(TriIdx t) const;
@@ -142,8 +145,8 @@ class ConstrainedTriangulation2 {
     /// Every triangle slot written by edits since the last clear_touched() (with repeats;
     /// some may be dead or rewritten again since): where to look for new bad triangles and
     /// newly encroached edges.
-    std::span<const TriIdx> touched() const;
-    void clear_touched();
+    std::span<const TriIdx> touched() const { return *touched_; }
+    void clear_touched() { touched_->clear(); }
 
     const ConstrainedTriangulation2Counters& counters() const;
 
@@ -156,6 +159,13 @@ class ConstrainedTriangulation2 {
     struct Owned;
     std::unique_ptr<Owned> owned_;
     detail::CdtState* state_ = nullptr;
+    // The state's arrays that the refinement reads per triangle, for the inline readers above
+    // (an out-of-line call each was a tenth of the refinement's work on new triangles). The
+    // vectors live in *owned_, which never moves.
+    const TriMesh2* mesh_ = nullptr;
+    const std::vector<std::uint32_t>* segment_of_ = nullptr;
+    const std::vector<std::uint8_t>* removed_ = nullptr;
+    std::vector<TriIdx>* touched_ = nullptr;
 };
 
 }  // namespace exactmesh::triangulation

@@ -119,19 +119,10 @@ Sign Delaunay2Core::orient(VertIdx a, VertIdx b, VertIdx c) {
     return predicates::orient2d(mesh.point(a), mesh.point(b), mesh.point(c));
 }
 
-Sign Delaunay2Core::incircle(VertIdx a, VertIdx b, VertIdx c, VertIdx d) {
-    ++counters.incircle_calls;
+Sign Delaunay2Core::incircle_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d) const {
     // The caller's indices are loaded only for the rare exact tie.
-    const Sign s = predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d));
-    if (s != Sign::Zero) return s;
     return predicates::incircle_sos(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d),
                                     input_index[a], input_index[b], input_index[c], input_index[d]);
-}
-
-bool Delaunay2Core::same_point(VertIdx a, VertIdx b) const {
-    const double* p = mesh.point(a);
-    const double* q = mesh.point(b);
-    return p[0] == q[0] && p[1] == q[1];
 }
 
 bool Delaunay2Core::strictly_between(VertIdx a, VertIdx b, VertIdx p) const {
@@ -143,17 +134,14 @@ bool Delaunay2Core::strictly_between(VertIdx a, VertIdx b, VertIdx p) const {
     return (pa[k] < pp[k] && pp[k] < pb[k]) || (pb[k] < pp[k] && pp[k] < pa[k]);
 }
 
-bool Delaunay2Core::conflict(TriIdx t, VertIdx p) {
+bool Delaunay2Core::conflict_infinite(TriIdx t, VertIdx p) {
     const VertIdx* v = &mesh.tv[3 * t];
-    for (int k = 0; k < 3; ++k) {
-        if (v[k] == kInfinite) {
-            const VertIdx a = v[(k + 1) % 3], b = v[(k + 2) % 3];
-            const Sign s = orient(a, b, p);
-            if (s != Sign::Zero) return s == Sign::Positive;
-            return strictly_between(a, b, p);
-        }
-    }
-    return incircle(v[0], v[1], v[2], p) == Sign::Positive;
+    int k = 0;
+    while (v[k] != kInfinite) ++k;
+    const VertIdx a = v[(k + 1) % 3], b = v[(k + 2) % 3];
+    const Sign s = orient(a, b, p);
+    if (s != Sign::Zero) return s == Sign::Positive;
+    return strictly_between(a, b, p);
 }
 
 std::uint32_t Delaunay2Core::random_offset() {

@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "predicates/incircle.hpp"
 #include "predicates/sign.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
 #include "triangulation/mesh/mesh2.hpp"
@@ -32,13 +33,30 @@ class Delaunay2Core {
     /// Exact orientation of three finite mesh vertices.
     Sign orient(VertIdx a, VertIdx b, VertIdx c);
     /// Perturbed incircle of four finite mesh vertices (ties broken by the caller's indices).
-    Sign incircle(VertIdx a, VertIdx b, VertIdx c, VertIdx d);
+    /// Inline (the filter's stage too): Bowyer-Watson cavities call it for every triangle they
+    /// meet, and the call cost a fifth of the filter's work.
+    Sign incircle(VertIdx a, VertIdx b, VertIdx c, VertIdx d) {
+        ++counters.incircle_calls;
+        const Sign s =
+            predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d));
+        return s != Sign::Zero ? s : incircle_tie(a, b, c, d);
+    }
     /// True when p lies in the perturbed circumcircle of t (for an infinite triangle (a, b, inf):
     /// beyond the hull edge ab, or strictly inside the segment ab).
-    bool conflict(TriIdx t, VertIdx p);
+    bool conflict(TriIdx t, VertIdx p) {
+        const VertIdx* v = &mesh.tv[3 * t];
+        if (v[0] == kInfinite || v[1] == kInfinite || v[2] == kInfinite) {
+            return conflict_infinite(t, p);
+        }
+        return incircle(v[0], v[1], v[2], p) == Sign::Positive;
+    }
     /// True when the finite points a, b, p are collinear and p lies strictly between a and b.
     bool strictly_between(VertIdx a, VertIdx b, VertIdx p) const;
-    bool same_point(VertIdx a, VertIdx b) const;
+    bool same_point(VertIdx a, VertIdx b) const {
+        const double* p = mesh.point(a);
+        const double* q = mesh.point(b);
+        return p[0] == q[0] && p[1] == q[1];
+    }
 
     /// Builds the first triangle and its three infinite neighbours from the first three
     /// non-collinear points in insertion order; records duplicates met on the way. Returns
@@ -67,6 +85,11 @@ class Delaunay2Core {
     void note_inserted(VertIdx p);
 
   private:
+    /// incircle's exact tie (the four points cocircular): the symbolic perturbation.
+    Sign incircle_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d) const;
+    /// conflict for an infinite triangle.
+    bool conflict_infinite(TriIdx t, VertIdx p);
+
     /// Multi-level grid over the bounding box: for each cell of each level, a triangle made by
     /// the last insertion inside it. Levels 0..depth_, level l has 2^l x 2^l cells.
     struct JumpGrid {

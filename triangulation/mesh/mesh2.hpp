@@ -77,6 +77,24 @@ struct TriMesh2 {
         return t;
     }
 
+    /// `count` new slots appended to `slots`, the ones `count` calls of new_triangle would give,
+    /// in the same order, with one growth of each array.
+    void new_triangles(std::size_t count, std::vector<TriIdx>& slots) {
+        std::size_t appended = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!free_triangles.empty()) {
+                slots.push_back(free_triangles.back());
+                free_triangles.pop_back();
+            } else {
+                slots.push_back(triangle_slots() + static_cast<TriIdx>(appended++));
+            }
+        }
+        if (appended == 0) return;
+        tv.resize(tv.size() + 3 * appended, kNone);
+        twin.resize(twin.size() + 3 * appended, kNone);
+        if (!flags.empty()) flags.resize(flags.size() + 3 * appended, 0);
+    }
+
     void kill_triangle(TriIdx t) {
         tv[3 * t] = tv[3 * t + 1] = tv[3 * t + 2] = kNone;
         free_triangles.push_back(t);
