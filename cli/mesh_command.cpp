@@ -365,6 +365,15 @@ void run_mesh(const MeshArguments& arguments) {
         metric_report = gen::metric_quality_report_2d(
             final_result.mesh.mesh.xy, final_result.mesh.mesh.triangles, *options.metric);
     }
+    // Without --metric, a generator that makes its own metrics (stretched-delaunay) is measured
+    // against them, log-Euclidean linear in its triangles (the unit-edge share of issue 14).
+    std::optional<gen::MetricQualityReport2> own_metric_report;
+    if (!metric && arguments.quality && !final_result.vertex_metrics.empty()) {
+        const tri::Triangulation2& own = final_result.mesh.mesh;
+        own_metric_report = gen::metric_quality_report_2d(
+            own.xy, own.triangles,
+            gen::MetricField2::background_mesh(own.xy, final_result.vertex_metrics, own.triangles));
+    }
     io::OutputSet set;
     svg.title = title + label;
     stage_constrained_result(set, final_result.mesh, files, format, base, svg, {},
@@ -395,6 +404,10 @@ void run_mesh(const MeshArguments& arguments) {
         if (metric_report) {
             std::cout << "quality.metric: " << options.metric->describe() << '\n'
                       << gen::metric_quality_report_text(*metric_report);
+        }
+        if (own_metric_report) {
+            std::cout << "quality.metric: the generator's own per-vertex metrics\n"
+                      << gen::metric_quality_report_text(*own_metric_report);
         }
         if (arguments.smooth > 0) {
             const tri::Triangulation2& unsmoothed = result.mesh.mesh;

@@ -47,6 +47,9 @@ struct MeshRun2 {
     /// beside mesh.mesh.triangles and numbered like them; empty for a triangle mesh.
     std::vector<triangulation::VertIdx> quads;
     std::vector<std::pair<std::string, std::uint64_t>> counters;
+    /// #V: the metric each vertex was meshed to, when the generator makes its own (stretched
+    /// Delaunay: the smoothed stretching of its structured cells); empty otherwise.
+    std::vector<Metric2> vertex_metrics;
 };
 
 /// The options and input features a generator may honour (MeshGenerator2::honours). A caller
