@@ -44,6 +44,17 @@ std::uint64_t point_budget(const StretchedDelaunayOptions2& o) {
 
 constexpr std::uint32_t kNoComponent = 0xFFFFFFFFu;
 
+/// The size across of a staggered layer's metric over the spacing between layers: 2 / sqrt 3
+/// (the height of an equilateral triangle is sqrt 3 / 2 of its side).
+constexpr double kStaggeredAcross = 1.1547005383792515;
+
+/// The length of wall side i (from vertex i to the next), scale-free.
+double side_length(const tri::Triangulation2& mesh, const WallLoop2& wall, std::size_t i) {
+    const double* p = mesh.point(wall.vertices[i]);
+    const double* q = mesh.point(wall.vertices[(i + 1) % wall.vertices.size()]);
+    return scale_free_norm(q[0] - p[0], q[1] - p[1]);
+}
+
 /// A point the mesher adds, and what step 3 needs of it.
 struct AddedPoint {
     double x = 0, y = 0;
@@ -137,10 +148,14 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
         height_factor[k] = height_factor[k - 1] + power;
         power *= o.growth;
     }
-    // The budget before any work: the layers each normal would get.
+    // The budget before any work: the layers each normal would get (an upper bound: the
+    // staggered layers stop sooner, at sqrt(3)/2 of the larger of the two spacings).
     std::uint64_t count = 0;
     for (const WallLoop2& wall : walls) {
-        for (const double spacing : wall.spacing) {
+        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
+            const double spacing =
+                o.staggered_layers ? std::max(wall.spacing[i], side_length(domain_mesh, wall, i))
+                                   : wall.spacing[i];
             for (std::size_t k = 1; k < height_factor.size(); ++k) {
                 if (!(o.first_height * thickness_factor[k] < spacing)) break;
                 ++count;
@@ -158,25 +173,50 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
     // A layer point's neighbours on its normal lie t_k below and growth t_k above it: the
     // metric's size across is their geometric mean, so both edges measure about 1 (1 / sqrt g
     // and sqrt g; with t_k itself the upper one measured g, and the cells' diagonals sqrt(1 +
-    // g^2), beyond sqrt 2: 70% of the edges were unit, 76% now on the NACA 0012).
-    const double across_factor = std::sqrt(o.growth);
+    // g^2), beyond sqrt 2: 70% of the edges were unit, 76% then on the NACA 0012). Staggered,
+    // the layers' points are half a spacing apart along the wall from those of the layers
+    // below and above, and the size across is 2 / sqrt 3 of that mean: a cell's two slanted
+    // sides then measure sqrt(1/4 + 3/4) = 1, like its side along the layer, so the triangles
+    // are equilateral in the point's metric (the unstaggered cells' diagonals measured sqrt 2
+    // at best, sqrt(1 + g) with the geometric mean: 79% unit edges).
+    const double across_factor =
+        std::sqrt(o.growth) * (o.staggered_layers ? kStaggeredAcross : 1.0);
+    // A layer is isotropic when its thickness reaches the spacing (unstaggered: square cells)
+    // or sqrt 3 / 2 of it (staggered: equilateral triangles): the layers end there.
+    const double stop_factor = o.staggered_layers ? 1 / kStaggeredAcross : 1.0;
     constexpr std::size_t kNoPoint = ~std::size_t{0};
     for (std::uint32_t c = 0; c < walls.size(); ++c) {
         const WallLoop2& wall = walls[c];
         // column[i][k - 1]: the point of normal i in layer k (the columns end where a normal
         // stopped).
         std::vector<std::vector<std::size_t>> column(wall.vertices.size());
-        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
+        const std::size_t nw = wall.vertices.size();
+        for (std::size_t i = 0; i < nw; ++i) {
+            // The foot and direction of slot i's even layers (the wall vertex and its normal)
+            // and, staggered, of its odd ones (the midpoint of the side to the next vertex and
+            // the mean of the two normals; halving and adding are exact under power-of-two
+            // scaling, so the point is still built scale-exactly).
             const double* p = domain_mesh.point(wall.vertices[i]);
-            const std::array<double, 2>& n = wall.normals[i];
+            const double* q = domain_mesh.point(wall.vertices[(i + 1) % nw]);
+            const std::array<double, 2> mid_foot = {0.5 * p[0] + 0.5 * q[0],
+                                                    0.5 * p[1] + 0.5 * q[1]};
+            const std::array<double, 2> mid_normal =
+                unit_vector(wall.normals[i][0] + wall.normals[(i + 1) % nw][0],
+                            wall.normals[i][1] + wall.normals[(i + 1) % nw][1]);
+            const double mid_spacing = side_length(domain_mesh, wall, i);
             for (std::size_t k = 1; k < height_factor.size(); ++k) {
+                const bool shifted = o.staggered_layers && k % 2 == 1;
+                if (shifted && mid_normal[0] == 0 && mid_normal[1] == 0) break;  // a cusp
+                const double* foot = shifted ? mid_foot.data() : p;
+                const std::array<double, 2>& n = shifted ? mid_normal : wall.normals[i];
+                const double spacing = shifted ? mid_spacing : wall.spacing[i];
                 const double thickness = o.first_height * thickness_factor[k];
                 // Aspect ratio about 1 reached: the layers end here.
-                if (!(thickness < wall.spacing[i])) break;
+                if (!(thickness < stop_factor * spacing)) break;
                 const double height = o.first_height * height_factor[k];
                 AddedPoint a;
-                a.x = std::fma(height, n[0], p[0]);
-                a.y = std::fma(height, n[1], p[1]);
+                a.x = std::fma(height, n[0], foot[0]);
+                a.y = std::fma(height, n[1], foot[1]);
                 ++counters.omesh_points;
                 if (!strictly_inside(domain_mesh, locator, a.x, a.y)) {
                     ++counters.outside_domain;
@@ -186,7 +226,7 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
                 a.layer = static_cast<int>(k);
                 a.thickness = thickness;
                 a.across = thickness * across_factor;
-                a.spacing = wall.spacing[i];
+                a.spacing = spacing;
                 a.tx = -n[1];
                 a.ty = n[0];
                 column[i].push_back(points.size());
@@ -196,7 +236,6 @@ std::vector<AddedPoint> omesh_points(const tri::Triangulation2& domain_mesh,
         // The spacing along the wall of each point's own structured cell: the mean distance to
         // the points of the same layer on the neighbouring normals (wider than at the wall
         // about a convex nose, narrower in a concave part), the wall's where neither exists.
-        const std::size_t nw = wall.vertices.size();
         for (std::size_t i = 0; i < nw; ++i) {
             for (std::size_t k = 0; k < column[i].size(); ++k) {
                 AddedPoint& a = points[column[i][k]];
@@ -221,10 +260,12 @@ Metric2 omesh_metric(const AddedPoint& p) {
     return metric_from_stretching(p.tx, p.ty, p.spacing, p.spacing / p.across);
 }
 
-/// The stretching of wall vertex i: the wall's spacing along it, the first height across.
-Metric2 wall_metric(const WallLoop2& wall, std::size_t i, double first_height) {
+/// The stretching of wall vertex i: the wall's spacing along it, the first height across (times
+/// 2 / sqrt 3 when the layers are staggered: the first layer's cells equilateral).
+Metric2 wall_metric(const WallLoop2& wall, std::size_t i, const StretchedDelaunayOptions2& o) {
     const std::array<double, 2>& n = wall.normals[i];
-    const double aspect = wall.spacing[i] / first_height;
+    const double across = o.first_height * (o.staggered_layers ? kStaggeredAcross : 1.0);
+    const double aspect = wall.spacing[i] / across;
     return aspect > 1 ? metric_from_stretching(-n[1], n[0], wall.spacing[i], aspect)
                       : isotropic(wall.spacing[i]);
 }
@@ -236,7 +277,8 @@ Metric2 wall_metric(const WallLoop2& wall, std::size_t i, double first_height) {
 /// the unfiltered set, so it does not depend on the order.
 std::vector<AddedPoint> drop_overlaps(const tri::Triangulation2& domain_mesh,
                                       std::span<const WallLoop2> walls,
-                                      std::vector<AddedPoint> points, double first_height,
+                                      std::vector<AddedPoint> points,
+                                      const StretchedDelaunayOptions2& o,
                                       StretchedDelaunayCounters2& counters) {
     if (walls.size() < 2) return points;
     // Tags: i < points.size() an O-mesh point, else a wall vertex.
@@ -256,7 +298,7 @@ std::vector<AddedPoint> drop_overlaps(const tri::Triangulation2& domain_mesh,
         for (std::size_t i = 0; i < walls[c].vertices.size(); ++i) {
             const double* p = domain_mesh.point(walls[c].vertices[i]);
             sorted.add(p[0], p[1], static_cast<std::uint32_t>(metric_of.size()));
-            metric_of.push_back(wall_metric(walls[c], i, first_height));
+            metric_of.push_back(wall_metric(walls[c], i, o));
             thickness_of.push_back(0);
             component_of.push_back(c);
             largest = std::max(largest, walls[c].spacing[i]);
@@ -400,6 +442,38 @@ void flip_side(tri::Triangulation2& mesh, tri::TriIdx t, unsigned k, tri::TriIdx
     relink(n_qr, t, u);
 }
 
+/// Below this mean ratio in its metric, a triangle is flat there (1: equilateral).
+constexpr double kFlatMetricShape = 0.5;
+
+/// The mean ratio 4 sqrt(3) area / sum of squared edge lengths of the triangle with corners
+/// `corner` in the log-Euclidean mean of its corners' metrics, on the edges mapped to the
+/// metric's unit frame and scaled by a power of two (no square overflows or underflows; the
+/// same value for the mesh and metrics scaled by 2^k). A selection, not a sign: the swap it
+/// allows is still decided exactly.
+double metric_shape(const tri::Triangulation2& mesh, std::span<const Metric2> metrics,
+                    const tri::VertIdx* corner) {
+    const std::array<Metric2, 3> at = {metrics[corner[0]], metrics[corner[1]], metrics[corner[2]]};
+    static constexpr double kThirds[3] = {1, 1, 1};
+    const Metric2 mean = log_euclidean_mean(at, kThirds);
+    double ex[3], ey[3];
+    double largest = 0;
+    for (unsigned k = 0; k < 3; ++k) {
+        const double* a = mesh.point(corner[k]);
+        const double* b = mesh.point(corner[(k + 1) % 3]);
+        metric_map(mean, b[0] - a[0], b[1] - a[1], ex[k], ey[k]);
+        largest = std::max({largest, std::fabs(ex[k]), std::fabs(ey[k])});
+    }
+    const predicates::PowerOfTwo scale(predicates::unit_shift(largest));
+    double squares = 0;
+    for (unsigned k = 0; k < 3; ++k) {
+        ex[k] = scale(ex[k]);
+        ey[k] = scale(ey[k]);
+        squares += ex[k] * ex[k] + ey[k] * ey[k];
+    }
+    const double area = 0.5 * (ex[0] * ey[1] - ey[0] * ex[1]);
+    return squares > 0 ? 4.0 * 1.7320508075688772 * area / squares : 0.0;
+}
+
 /// The larger of two corners (exact compare_angles).
 predicates::Corner larger_corner(const predicates::Corner& a, const predicates::Corner& b) {
     return predicates::compare_angles(a, b) == Sign::Negative ? b : a;
@@ -414,7 +488,12 @@ predicates::Corner larger_corner(const predicates::Corner& a, const predicates::
 /// [Babuska-Aziz76; BarthJespersen "The design and application of upwind schemes on
 /// unstructured meshes" 1989] applied only there. Every decision is exact (orient2d,
 /// compare_angles); every swap decreases the largest angle of a pair, so passes end.
-std::uint64_t swap_out_flat_triangles(tri::Triangulation2& mesh) {
+///
+/// With staggered layers the triangles of a stretched cell are equilateral in their metric and
+/// their Euclidean largest angle is near 180 degrees by design (an isosceles triangle of base s
+/// and height sqrt(3)/2 s / aspect ratio): only the triangles flat in their metric as well
+/// (metric_shape below kFlatMetricShape) are swapped then; `metrics` empty: every one.
+std::uint64_t swap_out_flat_triangles(tri::Triangulation2& mesh, std::span<const Metric2> metrics) {
     static constexpr double kOrigin[2] = {0, 0}, kRight[2] = {1, 0};
     static constexpr double kAt150[2] = {-0.8660254037844386, 0.5};
     const predicates::Corner reference{kOrigin, kRight, kAt150};
@@ -428,6 +507,10 @@ std::uint64_t swap_out_flat_triangles(tri::Triangulation2& mesh) {
             const predicates::Corner largest =
                 predicates::largest_corner(corner_point[0], corner_point[1], corner_point[2]);
             if (predicates::compare_angles(largest, reference) != Sign::Positive) continue;
+            if (!metrics.empty() &&
+                !(metric_shape(mesh, metrics, &mesh.triangles[3 * std::size_t{t}]) <
+                  kFlatMetricShape))
+                continue;
             unsigned apex = 0;
             while (corner_point[apex] != largest.o) ++apex;
             const unsigned k = (apex + 1) % 3;  // the side opposite the largest angle
@@ -481,8 +564,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
 
     // Steps 1 and 2.
     std::vector<AddedPoint> omesh = omesh_points(located, locator, walls, options, counters);
-    if (!omesh.empty())
-        omesh = drop_overlaps(located, walls, std::move(omesh), options.first_height, counters);
+    if (!omesh.empty()) omesh = drop_overlaps(located, walls, std::move(omesh), options, counters);
     const std::vector<AddedPoint> far =
         far_field_points(located, locator, boundary.xy, omesh, size, options, counters);
 
@@ -513,9 +595,8 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
     for (const WallLoop2& wall : walls) {
         for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
             // No layers (max_layers 0): the wall is boundary like any other, sized isotropically.
-            metrics[wall.vertices[i]] = options.max_layers > 0
-                                            ? wall_metric(wall, i, options.first_height)
-                                            : isotropic(wall.spacing[i]);
+            metrics[wall.vertices[i]] =
+                options.max_layers > 0 ? wall_metric(wall, i, options) : isotropic(wall.spacing[i]);
             weights[wall.vertices[i]] = 0;
         }
     }
@@ -554,7 +635,9 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
             counters.reswaps += swapped.swaps;
             counters.swap_budget_hits += swapped.budget_stops;
         }
-        counters.flat_swaps = swap_out_flat_triangles(mesh);
+        counters.flat_swaps = swap_out_flat_triangles(mesh, options.staggered_layers
+                                                                ? std::span<const Metric2>(metrics)
+                                                                : std::span<const Metric2>());
     }
     return {std::move(out), std::move(metrics), counters};
 }

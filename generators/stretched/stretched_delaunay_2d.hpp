@@ -7,7 +7,10 @@
 //     heights first_height (growth^k - 1) / (growth - 1), k = 1..max_layers, each point rounded
 //     once from the wall vertex (fma), a normal stopped when its layer's thickness reaches the
 //     wall's tangential spacing there (cells of aspect ratio about 1) or its point leaves the
-//     domain;
+//     domain; staggered (the default), the odd layers sit on the sides' midpoints along the
+//     mean of the two normals, half a spacing along the wall from the even ones, and a normal
+//     stops at sqrt 3 / 2 of the spacing: the cells' triangles are equilateral in step 3's
+//     metric;
 //  2. filtering: O-mesh points not strictly inside the domain (exact orient2d on the domain's
 //     CDT) go, as do points with a finer point of another component's O-mesh inside either
 //     one's unit stretching ellipse (overlapping O-meshes: the finer kept); far-field points
@@ -18,9 +21,9 @@
 //  3. a metric per point: an O-mesh point's stretching (sizes its structured cell's spacing
 //     along the wall, the mean distance to the same layer's points on the neighbouring normals,
 //     and its layer's thickness times sqrt(growth) across it, the geometric mean
-//     of its distances to the points below and above it: metric_from_stretching), the wall's
-//     own at the wall vertices (first_height across), the far-field size's isotropic metric
-//     elsewhere;
+//     of its distances to the points below and above it, times 2 / sqrt 3 when staggered:
+//     metric_from_stretching), the wall's own at the wall vertices (first_height across, times
+//     2 / sqrt 3 when staggered), the far-field size's isotropic metric elsewhere;
 //  4. the Euclidean constrained Delaunay triangulation of every point with the boundary's
 //     pieces (constrained_delaunay_2d, holes and exterior removed);
 //  5. the metrics smoothed over that triangulation (smooth_vertex_metrics), progressively:
@@ -71,6 +74,13 @@ struct StretchedDelaunayOptions2 {
     double growth = 1.2;
     /// The most layers per wall normal (>= 0).
     int max_layers = 40;
+    /// Staggered layers: the odd layers' points on the midpoints of the wall's sides (along the
+    /// mean of the two normals), half a spacing along the wall from the even layers', and the
+    /// metric's size across 2 / sqrt 3 of the layer spacing, so that each structured cell's
+    /// triangles are equilateral in it; the layers end at a thickness of sqrt 3 / 2 of the
+    /// spacing (equilateral triangles). False: every layer on the wall vertices' normals, the
+    /// cells split by their diagonals (79% unit edges on the NACA 0012).
+    bool staggered_layers = true;
     /// Passes of averaging the wall normals with their neighbours' along each wall (>= 0).
     int normal_smoothing_passes = 2;
     /// Passes of smooth_vertex_metrics (step 5, >= 0).
