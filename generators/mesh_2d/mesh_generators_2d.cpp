@@ -322,6 +322,7 @@ MeshRun2 run_stretched_delaunay(const MeshDomain2& domain, const MeshOptions2& o
     stretched.max_layers = static_cast<int>(options.layers.max_layers);
     stretched.far_field_size = options.size;
     stretched.max_points = options.max_steiner_points;
+    stretched.wake_length = options.wake_length;
     StretchedDelaunayResult2 result = stretched_delaunay_2d(domain, stretched);
     return {std::move(result.mesh), {}, counter_list(result.counters), std::move(result.metrics)};
 }

@@ -37,6 +37,8 @@ struct MeshOptions2 {
     std::optional<MetricField2> metric;
     /// The boundary layers (advancing-layers only: --layers, --quads).
     LayerParameters2 layers;
+    /// The wake behind each trailing edge, in chords (stretched-delaunay only: --wake); 0: none.
+    double wake_length = 0;
 };
 
 /// A generator's mesh (caller's numbering, pieces, warnings) and its work counters in the order

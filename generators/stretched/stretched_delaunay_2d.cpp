@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <set>
 #include <span>
 #include <string>
@@ -64,6 +65,7 @@ struct AddedPoint {
     double across = 0;                       ///< its metric's size across the wall (O-mesh)
     double spacing = 0;                      ///< the wall's tangential spacing at its normal
     double tx = 1, ty = 0;                   ///< the wall's direction at its normal
+    bool wake = false;                       ///< a wake point (of its component's wake)
 };
 
 /// True when (x, y) lies strictly inside the domain: in a triangle of its CDT (exact orient2d
@@ -130,6 +132,7 @@ void check_options(const StretchedDelaunayOptions2& o) {
         fail("point move limit", o.point_move_limit);
     if (!(o.far_field_spacing > 0 && o.far_field_spacing <= 1))
         fail("far-field spacing", o.far_field_spacing);
+    if (!(o.wake_length >= 0) || !std::isfinite(o.wake_length)) fail("wake length", o.wake_length);
 }
 
 /// Step 1 and the first filter: every wall's O-mesh points strictly inside the domain.
@@ -328,6 +331,218 @@ std::vector<AddedPoint> drop_overlaps(const tri::Triangulation2& domain_mesh,
     return kept;
 }
 
+/// A wall's trailing edge: its rearmost vertex (largest x, then smallest y; the flow is taken
+/// along +x, as in the built-in airfoil domains) when the wall turns there by a sharp convex
+/// corner of the solid (exact orient2d: convex; exact compare_angles: the solid's angle below
+/// 90 degrees), with the corner's outward bisector and the component's chord (the largest
+/// distance from it to a vertex of the wall, scale-free).
+struct TrailingEdge {
+    std::size_t vertex = 0;  ///< index in the wall loop
+    std::array<double, 2> direction{};
+    double chord = 0;
+};
+
+std::optional<TrailingEdge> trailing_edge(const tri::Triangulation2& mesh, const WallLoop2& wall) {
+    const std::size_t n = wall.vertices.size();
+    if (n < 3) return std::nullopt;
+    std::size_t rear = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+        const double* p = mesh.point(wall.vertices[i]);
+        const double* r = mesh.point(wall.vertices[rear]);
+        if (p[0] > r[0] || (p[0] == r[0] && p[1] < r[1])) rear = i;
+    }
+    const double* a = mesh.point(wall.vertices[(rear + n - 1) % n]);
+    const double* v = mesh.point(wall.vertices[rear]);
+    const double* b = mesh.point(wall.vertices[(rear + 1) % n]);
+    // The wall runs with the domain on its left, so a convex corner of the solid turns right.
+    if (predicates::orient2d(a, v, b) != Sign::Negative) return std::nullopt;
+    static constexpr double kOrigin[2] = {0, 0}, kRight[2] = {1, 0}, kUp[2] = {0, 1};
+    const predicates::Corner right_angle{kOrigin, kRight, kUp};
+    if (predicates::compare_angles(predicates::Corner{v, a, b}, right_angle) != Sign::Negative)
+        return std::nullopt;
+    const std::array<double, 2> to_a = unit_vector(a[0] - v[0], a[1] - v[1]);
+    const std::array<double, 2> to_b = unit_vector(b[0] - v[0], b[1] - v[1]);
+    const std::array<double, 2> direction = unit_vector(-(to_a[0] + to_b[0]), -(to_a[1] + to_b[1]));
+    if (direction[0] == 0 && direction[1] == 0) return std::nullopt;
+    TrailingEdge edge{rear, direction, 0};
+    for (const tri::VertIdx w : wall.vertices) {
+        const double* p = mesh.point(w);
+        edge.chord = std::max(edge.chord, scale_free_norm(p[0] - v[0], p[1] - v[1]));
+    }
+    return edge;
+}
+
+/// The wake behind each wall's trailing edge [Mavriplis90 §3: a wake region of stretched
+/// points behind each trailing edge]: stations along the corner's bisector from the trailing
+/// edge, the first one wall spacing away, each `growth` times farther apart than the last (at
+/// most the far-field size there), each with a centre point and staggered layers on both sides
+/// like an O-mesh's (the odd layers half a station ahead), its first height growing by
+/// growth^2 per station from first_height: the stretching along the wake decreases by a factor
+/// growth per station, and the wake ends where it turns isotropic, after wake_length chords, or
+/// where its centre leaves the domain. Points not strictly inside the domain go, as do points
+/// with another component's O-mesh point, a wall vertex or a boundary point inside either one's
+/// unit ellipse (the other components' O-meshes and the boundary win) and points with a finer point
+/// of another wake inside either one's ellipse; then the O-mesh points of the wake's own component
+/// with a kept wake point inside either one's ellipse go (the wake replaces the trailing edge's fan
+/// of normals, whose cells are stretched across the wake).
+std::vector<AddedPoint> wake_points(const tri::Triangulation2& domain_mesh,
+                                    const DomainLocator2& locator, std::span<const WallLoop2> walls,
+                                    std::span<const double> boundary_xy,
+                                    std::vector<AddedPoint>& omesh, const SizeFunction& size,
+                                    const StretchedDelaunayOptions2& o,
+                                    StretchedDelaunayCounters2& counters) {
+    std::vector<AddedPoint> points;
+    std::vector<std::uint32_t> wake_of;
+    const double across_factor =
+        std::sqrt(o.growth) * (o.staggered_layers ? kStaggeredAcross : 1.0);
+    const double stop_factor = o.staggered_layers ? 1 / kStaggeredAcross : 1.0;
+    const double first_across = o.staggered_layers ? kStaggeredAcross : 1.0;
+    std::uint32_t wakes = 0;
+    for (const WallLoop2& wall : walls) {
+        const std::optional<TrailingEdge> edge = trailing_edge(domain_mesh, wall);
+        if (!edge) continue;
+        ++counters.trailing_edges;
+        const auto component = static_cast<std::uint32_t>(&wall - walls.data());
+        const std::uint32_t wake = wakes++;
+        const double* v = domain_mesh.point(wall.vertices[edge->vertex]);
+        const std::array<double, 2>& d = edge->direction;
+        const std::array<double, 2> normal = {-d[1], d[0]};
+        const double length = o.wake_length * edge->chord;
+        double distance = 0, station = wall.spacing[edge->vertex], first = o.first_height;
+        while (true) {
+            distance += station;
+            if (!(distance <= length)) break;
+            const double cx = std::fma(distance, d[0], v[0]);
+            const double cy = std::fma(distance, d[1], v[1]);
+            station = std::min(station, size(cx, cy));
+            if (!(first < stop_factor * station)) break;  // isotropic: the far field's
+            if (!strictly_inside(domain_mesh, locator, cx, cy)) break;
+            // The centre (layer 0) and the layers on both sides; points of the odd layers half
+            // a station ahead when staggered.
+            double height = 0, thickness = first;
+            for (int k = 0; k <= o.max_layers; ++k) {
+                if (k > 0) {
+                    if (!(thickness < stop_factor * station)) break;
+                    height += thickness;
+                }
+                const double ahead = o.staggered_layers && k % 2 == 1 ? 0.5 * station : 0.0;
+                for (const double side : {1.0, -1.0}) {
+                    if (k == 0 && side < 0) continue;
+                    AddedPoint a;
+                    const double along = distance + ahead;
+                    a.x = std::fma(side * height, normal[0], std::fma(along, d[0], v[0]));
+                    a.y = std::fma(side * height, normal[1], std::fma(along, d[1], v[1]));
+                    a.component = component;
+                    a.wake = true;
+                    a.layer = k;
+                    a.thickness = k == 0 ? 0 : thickness;
+                    a.across = k == 0 ? first * first_across : thickness * across_factor;
+                    a.spacing = std::max(station, a.across);
+                    a.tx = d[0];
+                    a.ty = d[1];
+                    ++counters.wake_points;
+                    points.push_back(a);
+                    wake_of.push_back(wake);
+                    if (points.size() > point_budget(o)) {
+                        throw InputError("stretched Delaunay: the wake (length " +
+                                         format_number(o.wake_length) +
+                                         " chords) asks for more than " +
+                                         std::to_string(point_budget(o)) + " points");
+                    }
+                }
+                if (k > 0) thickness *= o.growth;
+            }
+            station *= o.growth;
+            first *= o.growth * o.growth;
+        }
+    }
+    if (points.empty()) return points;
+    // The filter: the O-meshes, the wall vertices and the boundary win; between wakes, the
+    // finer point (a thinner layer, then a lower wake).
+    SortedPoints sorted;
+    std::vector<Metric2> metric_of;
+    double largest = 0;
+    for (const AddedPoint& p : omesh) {
+        sorted.add(p.x, p.y, static_cast<std::uint32_t>(metric_of.size()));
+        metric_of.push_back(omesh_metric(p));
+        largest = std::max({largest, p.spacing, p.across});
+    }
+    for (std::size_t i = 0; i + 1 < boundary_xy.size(); i += 2) {
+        const double h = size(boundary_xy[i], boundary_xy[i + 1]);
+        sorted.add(boundary_xy[i], boundary_xy[i + 1],
+                   static_cast<std::uint32_t>(metric_of.size()));
+        metric_of.push_back(isotropic(h));
+        largest = std::max(largest, h);
+    }
+    for (const WallLoop2& wall : walls) {
+        for (std::size_t i = 0; i < wall.vertices.size(); ++i) {
+            const double* p = domain_mesh.point(wall.vertices[i]);
+            sorted.add(p[0], p[1], static_cast<std::uint32_t>(metric_of.size()));
+            metric_of.push_back(wall_metric(wall, i, o));
+            largest = std::max(largest, wall.spacing[i]);
+        }
+    }
+    const auto others = static_cast<std::uint32_t>(metric_of.size());
+    for (const AddedPoint& p : points) {
+        sorted.add(p.x, p.y, static_cast<std::uint32_t>(metric_of.size()));
+        metric_of.push_back(omesh_metric(p));
+        largest = std::max({largest, p.spacing, p.across});
+    }
+    sorted.sort();
+    std::vector<AddedPoint> kept;
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        const AddedPoint& p = points[i];
+        const Metric2& own = metric_of[others + i];
+        const bool drop =
+            !strictly_inside(domain_mesh, locator, p.x, p.y) ||
+            sorted.any_near(p.x, p.y, largest, [&](double x, double y, std::uint32_t q) {
+                if (q < omesh.size() && omesh[q].component == p.component) return false;
+                if (q >= others) {
+                    const std::uint32_t j = q - others;
+                    if (wake_of[j] == wake_of[i]) return false;
+                    const bool finer =
+                        points[j].thickness < p.thickness ||
+                        (points[j].thickness == p.thickness && wake_of[j] < wake_of[i]);
+                    if (!finer) return false;
+                }
+                const double dx = x - p.x, dy = y - p.y;
+                return metric_length(own, dx, dy) < 1 || metric_length(metric_of[q], dx, dy) < 1;
+            });
+        if (drop) {
+            ++counters.wake_dropped;
+        } else {
+            kept.push_back(p);
+        }
+    }
+    // The trailing edges' fans give way to their wakes.
+    SortedPoints kept_sorted;
+    double largest_kept = 0;
+    for (std::uint32_t i = 0; i < kept.size(); ++i) {
+        kept_sorted.add(kept[i].x, kept[i].y, i);
+        largest_kept = std::max({largest_kept, kept[i].spacing, kept[i].across});
+    }
+    kept_sorted.sort();
+    std::vector<AddedPoint> omesh_kept;
+    for (std::uint32_t i = 0; i < omesh.size(); ++i) {
+        const AddedPoint& p = omesh[i];
+        const double radius = std::max({largest_kept, p.spacing, p.across});
+        const bool drop =
+            kept_sorted.any_near(p.x, p.y, radius, [&](double x, double y, std::uint32_t q) {
+                if (kept[q].component != p.component) return false;
+                const double dx = x - p.x, dy = y - p.y;
+                return metric_length(metric_of[i], dx, dy) < 1 ||
+                       metric_length(omesh_metric(kept[q]), dx, dy) < 1;
+            });
+        if (drop) {
+            ++counters.wake_omesh_dropped;
+        } else {
+            omesh_kept.push_back(p);
+        }
+    }
+    omesh = std::move(omesh_kept);
+    return kept;
+}
+
 /// The far field: the centres of the leaves of a quadtree over the domain's bounding square,
 /// a cell split while it is wider than the size at its centre; kept strictly inside the domain
 /// and at least far_field_spacing sizes from every point of `near`.
@@ -335,7 +550,7 @@ std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
                                          const DomainLocator2& locator,
                                          std::span<const double> boundary_xy,
                                          std::span<const AddedPoint> omesh,
-                                         const SizeFunction& size,
+                                         std::span<const AddedPoint> wake, const SizeFunction& size,
                                          const StretchedDelaunayOptions2& o,
                                          StretchedDelaunayCounters2& counters) {
     double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x;
@@ -376,6 +591,7 @@ std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
     for (std::size_t i = 0; i + 1 < boundary_xy.size(); i += 2)
         near.add(boundary_xy[i], boundary_xy[i + 1], 0);
     for (const AddedPoint& p : omesh) near.add(p.x, p.y, 0);
+    for (const AddedPoint& p : wake) near.add(p.x, p.y, 0);
     near.sort();
     std::vector<AddedPoint> kept;
     for (const auto& centre : centres) {
@@ -565,8 +781,12 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
     // Steps 1 and 2.
     std::vector<AddedPoint> omesh = omesh_points(located, locator, walls, options, counters);
     if (!omesh.empty()) omesh = drop_overlaps(located, walls, std::move(omesh), options, counters);
+    const std::vector<AddedPoint> wake =
+        options.wake_length > 0
+            ? wake_points(located, locator, walls, boundary.xy, omesh, size, options, counters)
+            : std::vector<AddedPoint>{};
     const std::vector<AddedPoint> far =
-        far_field_points(located, locator, boundary.xy, omesh, size, options, counters);
+        far_field_points(located, locator, boundary.xy, omesh, wake, size, options, counters);
 
     // Every point once, exactly: the boundary's, then the O-meshes', then the far field's.
     std::vector<double> xy = boundary.xy;
@@ -575,7 +795,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
     for (std::size_t i = 0; i + 1 < xy.size(); i += 2) seen.insert({xy[i], xy[i + 1]});
     std::vector<AddedPoint> added;
     for (const std::vector<AddedPoint>* list :
-         std::array<const std::vector<AddedPoint>*, 2>{&omesh, &far}) {
+         std::array<const std::vector<AddedPoint>*, 3>{&omesh, &wake, &far}) {
         for (const AddedPoint& p : *list) {
             if (!seen.insert({p.x, p.y}).second) {
                 ++counters.duplicates;

@@ -16,8 +16,15 @@
 //     one's unit stretching ellipse (overlapping O-meshes: the finer kept); far-field points
 //     (the centres of a quadtree's leaves refined to the far-field size) are kept only strictly
 //     inside the domain and farther than `far_field_spacing` sizes from every O-mesh and
-//     boundary point. No wake region of its own: a wake is refined by giving the far-field size
-//     function a line source behind the trailing edge;
+//     boundary point (and wake point). With wake_length > 0, a wake behind each trailing edge
+//     (a wall's rearmost vertex when it is a convex corner sharper than 90 degrees, exact
+//     orient2d and compare_angles): stations along the corner's bisector, each growth times
+//     farther apart, with a centre point and staggered layers on both sides whose first height
+//     grows by growth^2 per station (the stretching falls by growth per station), ending where
+//     it turns isotropic, after wake_length chords or outside the domain; its points give way
+//     to the boundary, the wall vertices, other components' O-meshes and finer points of other
+//     wakes, and its own component's O-mesh points near it give way to it (the trailing edge's
+//     fan of normals, stretched across the wake);
 //  3. a metric per point: an O-mesh point's stretching (sizes its structured cell's spacing
 //     along the wall, the mean distance to the same layer's points on the neighbouring normals,
 //     and its layer's thickness times sqrt(growth) across it, the geometric mean
@@ -97,6 +104,11 @@ struct StretchedDelaunayOptions2 {
     /// A far-field point is dropped when an O-mesh or boundary point lies closer than this many
     /// far-field sizes (finite in (0, 1]).
     double far_field_spacing = 0.7;
+    /// The wake behind each trailing edge (a wall's rearmost vertex, largest x, when it is a
+    /// convex corner sharper than 90 degrees): its length in chords of its component (finite
+    /// >= 0; 0, the default: no wake). A strip of stretched points along the corner's bisector,
+    /// ending sooner where it turns isotropic or leaves the domain (wake_points).
+    double wake_length = 0;
     /// The most points of the O-meshes, and of the far field, each (0: kStretchedPointBudget);
     /// counted before the points are made (an InputError beyond it).
     std::uint64_t max_points = 0;
@@ -118,12 +130,17 @@ struct StretchedDelaunayCounters2 {
     std::uint64_t smoothing_moves = 0;       ///< point moves kept
     std::uint64_t smoothing_refused = 0;     ///< point moves that would invert a triangle
     std::uint64_t flat_swaps = 0;            ///< min-max swaps of triangles above 150 degrees
+    std::uint64_t trailing_edges = 0;        ///< walls with a wake (wake_length > 0)
+    std::uint64_t wake_points = 0;           ///< wake points computed
+    std::uint64_t wake_dropped = 0;          ///< of those, outside or too near another point
+    std::uint64_t wake_omesh_dropped = 0;    ///< O-mesh points near their own component's wake
 };
 
 inline constexpr std::array kStretchedDelaunayCounterNames = EM_COUNTER_TABLE(
     StretchedDelaunayCounters2, components, wall_vertices, omesh_points, outside_domain,
     overlap_dropped, far_field_candidates, far_field_dropped, duplicates, points, swaps, reswaps,
-    swap_budget_hits, smoothing_moves, smoothing_refused, flat_swaps);
+    swap_budget_hits, smoothing_moves, smoothing_refused, flat_swaps, trailing_edges, wake_points,
+    wake_dropped, wake_omesh_dropped);
 static_assert(counter_table_complete(kStretchedDelaunayCounterNames));
 
 struct StretchedDelaunayResult2 {

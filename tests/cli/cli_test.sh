@@ -1198,6 +1198,18 @@ mesh_metric_delaunay() {
   # Staggered layers: most edges unit in that metric (measured 87%; 76% unstaggered).
   grep -Eq '^quality.metric_edge_length: .*, (8[0-9]|9[0-9])\.[0-9]+% in \[1/sqrt2, sqrt2\]\)$' "$work/out" || fail "unit-edge share: $(cat "$work/out")"
   expect_error 2 "needs --layers" mesh --domain naca0012 --generator stretched-delaunay -o "$work/x.ele"
+  # A wake behind the trailing edge: its counters; refused elsewhere and when negative.
+  run 0 mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 --wake 2 \
+    -o "$work/sdw.ele" --stats || return
+  grep -Eq '^trailing_edges: 1$' "$work/out" || fail "no trailing edge: $(cat "$work/out")"
+  grep -Eq '^wake_points: [1-9][0-9]*$' "$work/out" || fail "no wake points: $(cat "$work/out")"
+  for counter in wake_dropped wake_omesh_dropped; do
+    grep -Eq "^$counter: [0-9]+$" "$work/out" || fail "no $counter: $(cat "$work/out")"
+  done
+  expect_error 2 "--wake applies to --generator stretched-delaunay only, not frontal" \
+    mesh --domain naca0012 --generator frontal --wake 2 -o "$work/x.ele"
+  expect_error 2 "--wake -1: a length in chords" \
+    mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 --wake -1 -o "$work/x.ele"
   # The metric smoothed and graded on a first mesh (a jump in size from 0.01 to 0.2 at x = 0.5,
   # given as a stretching vector), its counters; bad values and combinations refused.
   run 0 mesh --domain square-with-holes --generator metric-delaunay -o "$work/mg.ele" --stats \

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <limits>
 #include <set>
 #include <span>
 #include <string>
@@ -25,6 +26,7 @@
 #include "generators/stretched/metric_field_2d.hpp"
 #include "generators/stretched/metric_quality_2d.hpp"
 #include "generators/stretched/stretched_delaunay_2d.hpp"
+#include "generators/stretched/wall_loops_2d.hpp"
 #include "tests/support/stretched_domains_2d.hpp"
 #include "tests/support/test_scale.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
@@ -177,6 +179,120 @@ TEST(StretchedDelaunay2d, StaggeredLayersGiveMoreUnitEdgesThanUnstaggered) {
     EXPECT_EQ(before.above_150_degrees, 0u);
 }
 
+/// The mesh with a wake of `chords` chords behind each trailing edge, the domain and sizes
+/// scaled by 2^k.
+gen::StretchedDelaunayResult2 run_wake(gen::SampleDomain d, int k, double chords) {
+    const Domain domain = scaled(d, k);
+    const gen::MeshDomain2 mesh_domain(domain.pslg());
+    gen::StretchedDelaunayOptions2 options;
+    options.first_height = std::ldexp(1e-4, k);
+    options.wake_length = chords;
+    gen::StretchedDelaunayResult2 r = gen::stretched_delaunay_2d(mesh_domain, options);
+    expect_valid(domain, r);
+    return r;
+}
+
+/// Mesh vertices strictly behind x0 (downstream of a trailing edge at x0), within |y - y0| <
+/// band, whose metric is stretched along the x axis (the wake's direction, within 30 degrees)
+/// by an aspect ratio of at least `aspect`.
+std::size_t stretched_points_behind(const gen::StretchedDelaunayResult2& r, double x0, double y0,
+                                    double x1, double band, double aspect) {
+    const tri::Triangulation2& mesh = r.mesh.mesh;
+    std::size_t count = 0;
+    for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v) {
+        const double* p = mesh.point(v);
+        if (!(p[0] > x0 && p[0] < x1 && std::fabs(p[1] - y0) < band)) continue;
+        // Sizes along x and along y: the metric lengths of the unit vectors are 1 / size.
+        const double along = 1 / gen::metric_length(r.metrics[v], 1, 0);
+        const double across = 1 / gen::metric_length(r.metrics[v], 0, 1);
+        if (along >= aspect * across) ++count;
+    }
+    return count;
+}
+
+TEST(StretchedDelaunay2d, WakesFollowEachTrailingEdge) {
+    // The NACA 0012's trailing edge is (1, 0); without a wake nothing behind it is stretched
+    // along the flow beyond the O-mesh, with one of 2 chords a strip of stretched points is.
+    const gen::StretchedDelaunayResult2 none = run_wake(gen::SampleDomain::Naca0012, 0, 0);
+    const gen::StretchedDelaunayResult2 wake = run_wake(gen::SampleDomain::Naca0012, 0, 2);
+    EXPECT_EQ(none.counters.trailing_edges, 0u);
+    EXPECT_EQ(none.counters.wake_points, 0u);
+    EXPECT_EQ(wake.counters.trailing_edges, 1u);
+    EXPECT_GT(wake.counters.wake_points, wake.counters.wake_dropped);
+    EXPECT_GT(wake.counters.wake_omesh_dropped, 0u);  // the trailing edge fan's
+    print("naca0012, wake 2 chords", wake, 0, 0);
+    const std::size_t behind = stretched_points_behind(wake, 1.05, 0, 3, 0.05, 5);
+    EXPECT_GT(behind, 100u);
+    EXPECT_EQ(stretched_points_behind(none, 1.05, 0, 3, 0.05, 5), 0u);
+    EXPECT_EQ(stretched_points_behind(wake, 3.2, 0, 1e9, 1e9, 5), 0u);  // within 2 chords
+    EXPECT_GT(wake.mesh.mesh.vertex_count(), none.mesh.mesh.vertex_count());
+    // The three-element domain: a wake behind each element that has a sharp rear corner.
+    const gen::StretchedDelaunayResult2 three = run_wake(gen::SampleDomain::ThreeElement, 0, 1);
+    print("three-element, wake 1 chord", three, 0, 0);
+    EXPECT_EQ(three.counters.trailing_edges, 3u);
+    EXPECT_GT(three.counters.wake_points, three.counters.wake_dropped);
+    // Behind each element's rearmost vertex, along its corner's bisector: wake points stretched
+    // along the bisector (aspect ratio 5 or more) within a tenth of a chord of the line.
+    const Domain domain = scaled(gen::SampleDomain::ThreeElement, 0);
+    const gen::MeshDomain2 mesh_domain(domain.pslg());
+    const tri::Triangulation2& boundary = mesh_domain.triangulation().mesh;
+    const std::vector<gen::WallLoop2> walls = gen::wall_loops_2d(boundary);
+    ASSERT_EQ(walls.size(), 3u);
+    for (const gen::WallLoop2& wall : walls) {
+        const std::size_t n = wall.vertices.size();
+        std::size_t rear = 0;
+        double chord = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double* p = boundary.point(wall.vertices[i]);
+            const double* r = boundary.point(wall.vertices[rear]);
+            if (p[0] > r[0] || (p[0] == r[0] && p[1] < r[1])) rear = i;
+        }
+        const double* v = boundary.point(wall.vertices[rear]);
+        const double* a = boundary.point(wall.vertices[(rear + n - 1) % n]);
+        const double* b = boundary.point(wall.vertices[(rear + 1) % n]);
+        for (const tri::VertIdx w : wall.vertices) {
+            const double* p = boundary.point(w);
+            chord = std::max(chord, std::hypot(p[0] - v[0], p[1] - v[1]));
+        }
+        const double la = std::hypot(a[0] - v[0], a[1] - v[1]);
+        const double lb = std::hypot(b[0] - v[0], b[1] - v[1]);
+        double dx = -((a[0] - v[0]) / la + (b[0] - v[0]) / lb);
+        double dy = -((a[1] - v[1]) / la + (b[1] - v[1]) / lb);
+        const double ld = std::hypot(dx, dy);
+        dx /= ld;
+        dy /= ld;
+        std::size_t stretched_behind = 0;
+        const tri::Triangulation2& mesh = three.mesh.mesh;
+        for (tri::VertIdx u = 0; u < mesh.vertex_count(); ++u) {
+            const double* p = mesh.point(u);
+            const double along = (p[0] - v[0]) * dx + (p[1] - v[1]) * dy;
+            const double off = (p[0] - v[0]) * -dy + (p[1] - v[1]) * dx;
+            if (!(along > 0 && along < chord && std::fabs(off) < 0.1 * chord)) continue;
+            const double size_along = 1 / gen::metric_length(three.metrics[u], dx, dy);
+            const double size_across = 1 / gen::metric_length(three.metrics[u], -dy, dx);
+            if (size_along >= 5 * size_across) ++stretched_behind;
+        }
+        std::cout << "trailing edge (" << v[0] << ", " << v[1] << "), chord " << chord << ": "
+                  << stretched_behind << " stretched points behind it\n";
+        EXPECT_GT(stretched_behind, 20u);
+    }
+}
+
+TEST(StretchedDelaunay2d, WakeScaledGivesTheSameMeshScaled) {
+    const gen::StretchedDelaunayResult2 reference = run_wake(gen::SampleDomain::Naca0012, 0, 2);
+    for (const int k : {600, -600}) {
+        const gen::StretchedDelaunayResult2 r = run_wake(gen::SampleDomain::Naca0012, k, 2);
+        EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
+        ASSERT_EQ(r.mesh.mesh.xy.size(), reference.mesh.mesh.xy.size());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < r.mesh.mesh.xy.size(); ++i)
+            differ += r.mesh.mesh.xy[i] != std::ldexp(reference.mesh.mesh.xy[i], k) ? 1 : 0;
+        EXPECT_EQ(differ, 0u) << "2^" << k;
+        EXPECT_EQ(r.counters.wake_points, reference.counters.wake_points);
+        EXPECT_EQ(r.counters.wake_dropped, reference.counters.wake_dropped);
+    }
+}
+
 TEST(StretchedDelaunay2d, SwapsChangeTheEuclideanTriangulation) {
     const Domain domain = scaled(gen::SampleDomain::Naca0012, 0);
     const gen::MeshDomain2 mesh_domain(domain.pslg());
@@ -274,6 +390,12 @@ TEST(StretchedDelaunay2d, BadOptionsAreInputErrors) {
     options.first_height = 1e-3;
     options.growth = 0.5;
     EXPECT_THROW(gen::stretched_delaunay_2d(mesh_domain, options), exactmesh::InputError);
+    options.growth = 1.2;
+    options.wake_length = -1;
+    EXPECT_THROW(gen::stretched_delaunay_2d(mesh_domain, options), exactmesh::InputError);
+    options.wake_length = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(gen::stretched_delaunay_2d(mesh_domain, options), exactmesh::InputError);
+    options.wake_length = 0;
     // An airfoil of 4000 wall vertices with 10000 uniform layers of 1e-9 each: 4 10^7 points,
     // refused before any point is made.
     const Domain fine = scaled(gen::SampleDomain::Naca0012, 0, gen::SizeFunction::uniform(5e-4));
