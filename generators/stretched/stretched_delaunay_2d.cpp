@@ -49,6 +49,9 @@ constexpr std::uint32_t kNoComponent = 0xFFFFFFFFu;
 /// (the height of an equilateral triangle is sqrt 3 / 2 of its side).
 constexpr double kStaggeredAcross = 1.1547005383792515;
 
+/// A far-field point's metric size over its quadtree leaf's side: (1 + sqrt 2) / 2.
+constexpr double kFarFieldSizePerSide = 1.2071067811865475;
+
 /// The length of wall side i (from vertex i to the next), scale-free.
 double side_length(const tri::Triangulation2& mesh, const WallLoop2& wall, std::size_t i) {
     const double* p = mesh.point(wall.vertices[i]);
@@ -567,7 +570,7 @@ std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
         int depth;
     };
     std::vector<Cell> stack{{lo_x, lo_y, std::max(hi_x - lo_x, hi_y - lo_y), 0}};
-    std::vector<std::array<double, 2>> centres;
+    std::vector<std::array<double, 3>> centres;  // x, y, the leaf's side
     while (!stack.empty()) {
         const Cell cell = stack.back();
         stack.pop_back();
@@ -579,7 +582,7 @@ std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
                 stack.push_back({cell.x + dx, cell.y + dy, half, cell.depth + 1});
             continue;
         }
-        centres.push_back({cx, cy});
+        centres.push_back({cx, cy, cell.side});
         if (centres.size() > point_budget(o)) {
             throw InputError("stretched Delaunay: the far-field size (" + size.describe() +
                              ") asks for more than " +
@@ -609,6 +612,11 @@ std::vector<AddedPoint> far_field_points(const tri::Triangulation2& domain_mesh,
         AddedPoint a;
         a.x = x;
         a.y = y;
+        // Its metric, like an O-mesh point's, from its own cell (step 3): isotropic, the leaf's
+        // side times (1 + sqrt 2) / 2, so that a uniform patch's sides and diagonals (side and
+        // side sqrt 2 long) measure 0.83 and 1.17, both unit; the size asked for would measure
+        // sides from 0.5 (leaves are half to all of it wide) and miss the unit range.
+        a.spacing = centre[2] * kFarFieldSizePerSide;
         kept.push_back(a);
     }
     return kept;
@@ -824,7 +832,7 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
         const AddedPoint& p = added[i];
         const std::size_t v = boundary_count + i;
         if (p.component == kNoComponent) {
-            metrics[v] = isotropic(size(p.x, p.y));
+            metrics[v] = isotropic(p.spacing);
         } else {
             metrics[v] = omesh_metric(p);
             weights[v] = 0.5 * p.layer / (p.layer + 4.0);

@@ -30,7 +30,9 @@
 //     and its layer's thickness times sqrt(growth) across it, the geometric mean
 //     of its distances to the points below and above it, times 2 / sqrt 3 when staggered:
 //     metric_from_stretching), the wall's own at the wall vertices (first_height across, times
-//     2 / sqrt 3 when staggered), the far-field size's isotropic metric elsewhere;
+//     2 / sqrt 3 when staggered), a far-field point's from its quadtree leaf (isotropic,
+//     (1 + sqrt 2) / 2 times the leaf's side: the leaf grid's sides and diagonals both unit),
+//     the far-field size's isotropic metric at the other boundary vertices;
 //  4. the Euclidean constrained Delaunay triangulation of every point with the boundary's
 //     pieces (constrained_delaunay_2d, holes and exterior removed);
 //  5. the metrics smoothed over that triangulation (smooth_vertex_metrics), progressively:
