@@ -65,6 +65,7 @@ struct MeshArguments {
     std::string layers;         ///< --layers FIRST_HEIGHT,GROWTH[,MAX_LAYERS]
     bool quads = false;         ///< --quads
     bool omesh = false;         ///< --o-mesh
+    double wake = 0;            ///< --wake LENGTH (chords; 0: none)
     PictureArguments picture;   ///< --view, --shade
 };
 
@@ -200,6 +201,13 @@ void run_mesh(const MeshArguments& arguments) {
         throw InputError("--quads applies to --generator advancing-layers only, not " +
                          std::string(generator.name));
     }
+    if (arguments.wake != 0 && generator.name != "stretched-delaunay") {
+        throw InputError("--wake applies to --generator stretched-delaunay only, not " +
+                         std::string(generator.name));
+    }
+    if (!(arguments.wake >= 0) || !std::isfinite(arguments.wake))
+        throw InputError("--wake " + format_number(arguments.wake) +
+                         ": a length in chords, finite and >= 0");
     if (arguments.omesh && generator.name != "advancing-layers") {
         throw InputError("--o-mesh applies to --generator advancing-layers only, not " +
                          std::string(generator.name));
@@ -300,6 +308,7 @@ void run_mesh(const MeshArguments& arguments) {
     options.layers.quads = arguments.quads;
     if (arguments.omesh) options.layers.method = gen::LayerMethod2::TruncatedOMesh;
     options.metric = metric;
+    options.wake_length = arguments.wake;
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
     print_warnings(ignored_options(generator, arguments, poly));
     // The domain's constrained triangulation, built once (by the first step that needs it) for
@@ -365,6 +374,15 @@ void run_mesh(const MeshArguments& arguments) {
         metric_report = gen::metric_quality_report_2d(
             final_result.mesh.mesh.xy, final_result.mesh.mesh.triangles, *options.metric);
     }
+    // Without --metric, a generator that makes its own metrics (stretched-delaunay) is measured
+    // against them, log-Euclidean linear in its triangles (the unit-edge share of issue 14).
+    std::optional<gen::MetricQualityReport2> own_metric_report;
+    if (!metric && arguments.quality && !final_result.vertex_metrics.empty()) {
+        const tri::Triangulation2& own = final_result.mesh.mesh;
+        own_metric_report = gen::metric_quality_report_2d(
+            own.xy, own.triangles,
+            gen::MetricField2::background_mesh(own.xy, final_result.vertex_metrics, own.triangles));
+    }
     io::OutputSet set;
     svg.title = title + label;
     stage_constrained_result(set, final_result.mesh, files, format, base, svg, {},
@@ -395,6 +413,10 @@ void run_mesh(const MeshArguments& arguments) {
         if (metric_report) {
             std::cout << "quality.metric: " << options.metric->describe() << '\n'
                       << gen::metric_quality_report_text(*metric_report);
+        }
+        if (own_metric_report) {
+            std::cout << "quality.metric: the generator's own per-vertex metrics\n"
+                      << gen::metric_quality_report_text(*own_metric_report);
         }
         if (arguments.smooth > 0) {
             const tri::Triangulation2& unsmoothed = result.mesh.mesh;
@@ -533,6 +555,13 @@ void add_mesh_command(CLI::App& app) {
                       "about each wall (a ring of normal lines, stopped at the layer where its "
                       "cells turn isotropic; where two rings overlap the coarser cells removed) "
                       "instead of stacks advanced one by one; the rest filled the same way");
+    command->add_option(
+        "--wake", arguments->wake,
+        "stretched-delaunay only: a wake behind each trailing edge (a wall's rearmost vertex, "
+        "largest x, when it is a convex corner sharper than 90 degrees), LENGTH chords of its "
+        "element long at most: stretched points along the corner's bisector, stations growing "
+        "by the --layers growth, staggered layers on both sides thickening by growth^2 per "
+        "station, ending where they turn isotropic or leave the domain; 0 (the default): none");
     add_picture_options(*command, arguments->picture);
     command->add_flag(
         "--quality", arguments->quality,

@@ -37,6 +37,8 @@ struct MeshOptions2 {
     std::optional<MetricField2> metric;
     /// The boundary layers (advancing-layers only: --layers, --quads).
     LayerParameters2 layers;
+    /// The wake behind each trailing edge, in chords (stretched-delaunay only: --wake); 0: none.
+    double wake_length = 0;
 };
 
 /// A generator's mesh (caller's numbering, pieces, warnings) and its work counters in the order
@@ -47,6 +49,9 @@ struct MeshRun2 {
     /// beside mesh.mesh.triangles and numbered like them; empty for a triangle mesh.
     std::vector<triangulation::VertIdx> quads;
     std::vector<std::pair<std::string, std::uint64_t>> counters;
+    /// #V: the metric each vertex was meshed to, when the generator makes its own (stretched
+    /// Delaunay: the smoothed stretching of its structured cells); empty otherwise.
+    std::vector<Metric2> vertex_metrics;
 };
 
 /// The options and input features a generator may honour (MeshGenerator2::honours). A caller

@@ -7,20 +7,32 @@
 //     heights first_height (growth^k - 1) / (growth - 1), k = 1..max_layers, each point rounded
 //     once from the wall vertex (fma), a normal stopped when its layer's thickness reaches the
 //     wall's tangential spacing there (cells of aspect ratio about 1) or its point leaves the
-//     domain;
+//     domain; staggered (the default), the odd layers sit on the sides' midpoints along the
+//     mean of the two normals, half a spacing along the wall from the even ones, and a normal
+//     stops at sqrt 3 / 2 of the spacing: the cells' triangles are equilateral in step 3's
+//     metric;
 //  2. filtering: O-mesh points not strictly inside the domain (exact orient2d on the domain's
 //     CDT) go, as do points with a finer point of another component's O-mesh inside either
 //     one's unit stretching ellipse (overlapping O-meshes: the finer kept); far-field points
 //     (the centres of a quadtree's leaves refined to the far-field size) are kept only strictly
 //     inside the domain and farther than `far_field_spacing` sizes from every O-mesh and
-//     boundary point. No wake region of its own: a wake is refined by giving the far-field size
-//     function a line source behind the trailing edge;
+//     boundary point (and wake point). With wake_length > 0, a wake behind each trailing edge
+//     (a wall's rearmost vertex when it is a convex corner sharper than 90 degrees, exact
+//     orient2d and compare_angles): stations along the corner's bisector, each growth times
+//     farther apart, with a centre point and staggered layers on both sides whose first height
+//     grows by growth^2 per station (the stretching falls by growth per station), ending where
+//     it turns isotropic, after wake_length chords or outside the domain; its points give way
+//     to the boundary, the wall vertices, other components' O-meshes and finer points of other
+//     wakes, and its own component's O-mesh points near it give way to it (the trailing edge's
+//     fan of normals, stretched across the wake);
 //  3. a metric per point: an O-mesh point's stretching (sizes its structured cell's spacing
 //     along the wall, the mean distance to the same layer's points on the neighbouring normals,
 //     and its layer's thickness times sqrt(growth) across it, the geometric mean
-//     of its distances to the points below and above it: metric_from_stretching), the wall's
-//     own at the wall vertices (first_height across), the far-field size's isotropic metric
-//     elsewhere;
+//     of its distances to the points below and above it, times 2 / sqrt 3 when staggered:
+//     metric_from_stretching), the wall's own at the wall vertices (first_height across, times
+//     2 / sqrt 3 when staggered), a far-field point's from its quadtree leaf (isotropic,
+//     (1 + sqrt 2) / 2 times the leaf's side: the leaf grid's sides and diagonals both unit),
+//     the far-field size's isotropic metric at the other boundary vertices;
 //  4. the Euclidean constrained Delaunay triangulation of every point with the boundary's
 //     pieces (constrained_delaunay_2d, holes and exterior removed);
 //  5. the metrics smoothed over that triangulation (smooth_vertex_metrics), progressively:
@@ -71,6 +83,13 @@ struct StretchedDelaunayOptions2 {
     double growth = 1.2;
     /// The most layers per wall normal (>= 0).
     int max_layers = 40;
+    /// Staggered layers: the odd layers' points on the midpoints of the wall's sides (along the
+    /// mean of the two normals), half a spacing along the wall from the even layers', and the
+    /// metric's size across 2 / sqrt 3 of the layer spacing, so that each structured cell's
+    /// triangles are equilateral in it; the layers end at a thickness of sqrt 3 / 2 of the
+    /// spacing (equilateral triangles). False: every layer on the wall vertices' normals, the
+    /// cells split by their diagonals (79% unit edges on the NACA 0012).
+    bool staggered_layers = true;
     /// Passes of averaging the wall normals with their neighbours' along each wall (>= 0).
     int normal_smoothing_passes = 2;
     /// Passes of smooth_vertex_metrics (step 5, >= 0).
@@ -87,6 +106,11 @@ struct StretchedDelaunayOptions2 {
     /// A far-field point is dropped when an O-mesh or boundary point lies closer than this many
     /// far-field sizes (finite in (0, 1]).
     double far_field_spacing = 0.7;
+    /// The wake behind each trailing edge (a wall's rearmost vertex, largest x, when it is a
+    /// convex corner sharper than 90 degrees): its length in chords of its component (finite
+    /// >= 0; 0, the default: no wake). A strip of stretched points along the corner's bisector,
+    /// ending sooner where it turns isotropic or leaves the domain (wake_points).
+    double wake_length = 0;
     /// The most points of the O-meshes, and of the far field, each (0: kStretchedPointBudget);
     /// counted before the points are made (an InputError beyond it).
     std::uint64_t max_points = 0;
@@ -108,12 +132,17 @@ struct StretchedDelaunayCounters2 {
     std::uint64_t smoothing_moves = 0;       ///< point moves kept
     std::uint64_t smoothing_refused = 0;     ///< point moves that would invert a triangle
     std::uint64_t flat_swaps = 0;            ///< min-max swaps of triangles above 150 degrees
+    std::uint64_t trailing_edges = 0;        ///< walls with a wake (wake_length > 0)
+    std::uint64_t wake_points = 0;           ///< wake points computed
+    std::uint64_t wake_dropped = 0;          ///< of those, outside or too near another point
+    std::uint64_t wake_omesh_dropped = 0;    ///< O-mesh points near their own component's wake
 };
 
 inline constexpr std::array kStretchedDelaunayCounterNames = EM_COUNTER_TABLE(
     StretchedDelaunayCounters2, components, wall_vertices, omesh_points, outside_domain,
     overlap_dropped, far_field_candidates, far_field_dropped, duplicates, points, swaps, reswaps,
-    swap_budget_hits, smoothing_moves, smoothing_refused, flat_swaps);
+    swap_budget_hits, smoothing_moves, smoothing_refused, flat_swaps, trailing_edges, wake_points,
+    wake_dropped, wake_omesh_dropped);
 static_assert(counter_table_complete(kStretchedDelaunayCounterNames));
 
 struct StretchedDelaunayResult2 {

