@@ -2,7 +2,7 @@
 // One case of fuzz_tetmesh_3d, decoded and run once for the libFuzzer target and for the
 // release-build test that replays its seeds and saved findings
 // (tests/unit/generators/tetmesh_3d_fuzz_cases_test.cpp): a small PLC of one of four forms
-// (a box, a prism over a convex 3-6-gon, a box with a box-shaped hole at a gap of 2^-1..2^-45 of
+// (a box, a prism over a convex 3-6-gon, a box with a box-shaped hole at a gap of 2^-2..2^-45 of
 // its side, a star-shaped polyhedron: a subdivided octahedron with random vertex radii), with up
 // to 6 free vertices inside, on facets, on edges, or 1e-12..1e-300 off a facet, an edge or a
 // corner, every coordinate times 2^k (k in [-600, 600]); then the pipeline of `exactmesh
@@ -166,13 +166,14 @@ inline void decode_prism(ByteReader& in, triangulation::Plc3& plc) {
     }
 }
 
-/// An outer box and a box-shaped hole whose low x side lies a gap of side * 2^-(1 + byte % 45)
-/// from the outer box's (so gaps reach far below what refinement can resolve in its budget).
+/// An outer box and a box-shaped hole whose low x side lies a gap of side * 2^-(2 + byte % 44)
+/// from the outer box's (so gaps reach far below what refinement can resolve in its budget); its
+/// high x side at the middle (so at most a quarter of the side from the gap).
 inline void decode_box_with_hole(ByteReader& in, triangulation::Plc3& plc) {
     const double a = side(in), b = side(in), c = side(in);
-    const double gap = std::ldexp(a, -(1 + in.byte() % 45));
+    const double gap = std::ldexp(a, -(2 + in.byte() % 44));
     add_box(plc, {0, 0, 0}, {a, b, c});
-    const double x1 = std::max(a / 2, 2 * gap);
+    const double x1 = a / 2;
     add_box(plc, {gap, b / 4, c / 4}, {x1, 3 * b / 4, 3 * c / 4});
     plc.holes = {(gap + x1) / 2, b / 2, c / 2};
 }
