@@ -66,6 +66,7 @@ struct MeshArguments {
     bool quads = false;         ///< --quads
     bool omesh = false;         ///< --o-mesh
     double wake = 0;            ///< --wake LENGTH (chords; 0: none)
+    bool staggered = false;     ///< --staggered-layers
     PictureArguments picture;   ///< --view, --shade
 };
 
@@ -201,6 +202,10 @@ void run_mesh(const MeshArguments& arguments) {
         throw InputError("--quads applies to --generator advancing-layers only, not " +
                          std::string(generator.name));
     }
+    if (arguments.staggered && generator.name != "stretched-delaunay") {
+        throw InputError("--staggered-layers applies to --generator stretched-delaunay only, not " +
+                         std::string(generator.name));
+    }
     if (arguments.wake != 0 && generator.name != "stretched-delaunay") {
         throw InputError("--wake applies to --generator stretched-delaunay only, not " +
                          std::string(generator.name));
@@ -309,6 +314,7 @@ void run_mesh(const MeshArguments& arguments) {
     if (arguments.omesh) options.layers.method = gen::LayerMethod2::TruncatedOMesh;
     options.metric = metric;
     options.wake_length = arguments.wake;
+    options.staggered_layers = arguments.staggered;
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
     print_warnings(ignored_options(generator, arguments, poly));
     // The domain's constrained triangulation, built once (by the first step that needs it) for
@@ -562,6 +568,13 @@ void add_mesh_command(CLI::App& app) {
         "element long at most: stretched points along the corner's bisector, stations growing "
         "by the --layers growth, staggered layers on both sides thickening by growth^2 per "
         "station, ending where they turn isotropic or leave the domain; 0 (the default): none");
+    command->add_flag(
+        "--staggered-layers", arguments->staggered,
+        "stretched-delaunay only: stagger the O-mesh layers (odd layers half a cell along the "
+        "wall) so that each cell's triangles are equilateral in the metric: about 96% of edges "
+        "of unit metric length instead of 80-85%, but stretched triangles with a largest angle "
+        "near 180 degrees (the default keeps right-angled cells: none above 150 degrees in the "
+        "layers)");
     add_picture_options(*command, arguments->picture);
     command->add_flag(
         "--quality", arguments->quality,

@@ -323,6 +323,7 @@ MeshRun2 run_stretched_delaunay(const MeshDomain2& domain, const MeshOptions2& o
     stretched.far_field_size = options.size;
     stretched.max_points = options.max_steiner_points;
     stretched.wake_length = options.wake_length;
+    stretched.staggered_layers = options.staggered_layers;
     StretchedDelaunayResult2 result = stretched_delaunay_2d(domain, stretched);
     return {std::move(result.mesh), {}, counter_list(result.counters), std::move(result.metrics)};
 }

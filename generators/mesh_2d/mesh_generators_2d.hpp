@@ -39,6 +39,8 @@ struct MeshOptions2 {
     LayerParameters2 layers;
     /// The wake behind each trailing edge, in chords (stretched-delaunay only: --wake); 0: none.
     double wake_length = 0;
+    /// Staggered O-mesh layers (stretched-delaunay only: --staggered-layers).
+    bool staggered_layers = false;
 };
 
 /// A generator's mesh (caller's numbering, pieces, warnings) and its work counters in the order

@@ -7,7 +7,7 @@
 //     heights first_height (growth^k - 1) / (growth - 1), k = 1..max_layers, each point rounded
 //     once from the wall vertex (fma), a normal stopped when its layer's thickness reaches the
 //     wall's tangential spacing there (cells of aspect ratio about 1) or its point leaves the
-//     domain; staggered (the default), the odd layers sit on the sides' midpoints along the
+//     domain; staggered (an option), the odd layers sit on the sides' midpoints along the
 //     mean of the two normals, half a spacing along the wall from the even ones, and a normal
 //     stops at sqrt 3 / 2 of the spacing: the cells' triangles are equilateral in step 3's
 //     metric;
@@ -89,7 +89,7 @@ struct StretchedDelaunayOptions2 {
     /// triangles are equilateral in it; the layers end at a thickness of sqrt 3 / 2 of the
     /// spacing (equilateral triangles). False: every layer on the wall vertices' normals, the
     /// cells split by their diagonals (79% unit edges on the NACA 0012).
-    bool staggered_layers = true;
+    bool staggered_layers = false;
     /// Passes of averaging the wall normals with their neighbours' along each wall (>= 0).
     int normal_smoothing_passes = 2;
     /// Passes of smooth_vertex_metrics (step 5, >= 0).

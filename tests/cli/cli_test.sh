@@ -1193,11 +1193,13 @@ mesh_metric_delaunay() {
   done
   # Without --metric, --quality measures it against its own per-vertex metrics.
   run 0 mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 -o "$work/sd.ele" \
-    --quality || return
+    --quality --staggered-layers || return
   grep -Fq "quality.metric: the generator's own per-vertex metrics" "$work/out" || fail "no own-metric report: $(cat "$work/out")"
   # Staggered layers and the far field's own metric: most edges unit (measured 95.8%; 75.8% before).
   grep -Eq '^quality.metric_edge_length: .*, (9[0-9])\.[0-9]+% in \[1/sqrt2, sqrt2\]\)$' "$work/out" || fail "unit-edge share: $(cat "$work/out")"
   expect_error 2 "needs --layers" mesh --domain naca0012 --generator stretched-delaunay -o "$work/x.ele"
+  expect_error 2 "--staggered-layers applies to --generator stretched-delaunay only" \
+    mesh --domain naca0012 --generator frontal --staggered-layers -o "$work/x.ele"
   # A wake behind the trailing edge: its counters; refused elsewhere and when negative.
   run 0 mesh --domain naca0012 --generator stretched-delaunay --layers 1e-4,1.2 --wake 2 \
     -o "$work/sdw.ele" --stats || return
