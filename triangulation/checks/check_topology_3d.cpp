@@ -99,8 +99,12 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
         std::sort(key.begin(), key.end());
         entries.push_back({key, static_cast<std::uint32_t>(f)});
     }
+    // Field by field: std::array's comparisons went through memcmp, most of the sort's time.
     std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
-        return x.key != y.key ? x.key < y.key : x.facet < y.facet;
+        if (x.key[0] != y.key[0]) return x.key[0] < y.key[0];
+        if (x.key[1] != y.key[1]) return x.key[1] < y.key[1];
+        if (x.key[2] != y.key[2]) return x.key[2] < y.key[2];
+        return x.facet < y.facet;
     });
     std::vector<std::uint32_t> shared_with(mesh.tets.size(), kNone);
     for (std::size_t i = 0; i < entries.size();) {
