@@ -74,9 +74,13 @@ std::optional<Sign> small_integer_stage_b(const double* diff) noexcept {
     for (int i = 0; i < 12; ++i) largest = std::max(largest, std::fabs(diff[i]));
     if (largest == 0) return Sign::Zero;
     const int shift = 7 - std::ilogb(largest);  // largest scaled into [2^7, 2^8)
+    // One multiplication by 2^shift when that is a normal double (exact: a product by a power
+    // of two is, short of underflow, which the check below catches), else ldexp each.
+    const bool normal_scale = shift >= -1022 && shift <= 1023;
+    const double scale = normal_scale ? std::ldexp(1.0, shift) : 0.0;
     double x[12];
     for (int i = 0; i < 12; ++i) {
-        x[i] = std::ldexp(diff[i], shift);
+        x[i] = normal_scale ? diff[i] * scale : std::ldexp(diff[i], shift);
         // A non-integer, or a difference lost below the subnormals, is not such a point set.
         if (x[i] != std::trunc(x[i]) || (x[i] == 0) != (diff[i] == 0)) return std::nullopt;
     }
@@ -136,6 +140,14 @@ Sign insphere_exact(const double* a, const double* b, const double* c, const dou
             exact = exact && tail[3 * r + k] == 0.0;
         }
     }
+    if (exact) {
+        // Cospherical lattice points (the exact calls of 3D refinement on boxes): decided
+        // exactly at once, before the two-term stage that could not certify their zero.
+        if (const auto s = small_integer_stage_b(diff)) {
+            EM_STAT(insphere, exact_differences);
+            return *s;
+        }
+    }
     const double aex = diff[0], aey = diff[1], aez = diff[2], bex = diff[3], bey = diff[4];
     const double bez = diff[5], cex = diff[6], cey = diff[7], cez = diff[8], dex = diff[9];
     const double dey = diff[10], dez = diff[11];
@@ -164,7 +176,6 @@ Sign insphere_exact(const double* a, const double* b, const double* c, const dou
             return sign_of(det_b);
         }
         EM_STAT(insphere, exact_differences);
-        if (const auto s = small_integer_stage_b(diff)) return *s;
         return exact_stage_b(diff);
     }
     if (adaptive::certified(det_b, adaptive::isp_errbound_b * permanent + two_term_bound)) {
