@@ -79,10 +79,45 @@ struct Work {
         return false;
     }
 
+    /// below_threshold per slot, remembered with the slot's vertices and kept while none of them
+    /// moves (bad_tets runs six times over the whole mesh, and swaps and moves change few
+    /// tetrahedra: the angles were a quarter of sliver removal's instructions).
+    struct Remembered {
+        std::array<VertIdx, 4> vertices{kNone, kNone, kNone, kNone};
+        std::uint64_t at = 0;  ///< the move count + 1 when computed
+        bool below = false;
+    };
+    mutable std::vector<Remembered> remembered;
+    std::vector<std::uint64_t> moved_at;  ///< per vertex: the move count after its last move
+    std::uint64_t moves = 0;
+
+    void move_vertex(VertIdx v, const std::array<double, 3>& to) {
+        for (std::size_t k = 0; k < 3; ++k) mesh.xyz[3 * std::size_t{v} + k] = to[k];
+        if (moved_at.size() <= v) moved_at.resize(mesh.vertex_count(), 0);
+        moved_at[v] = ++moves;
+    }
+
+    bool below_threshold_remembered(TetIdx t) const {
+        if (remembered.size() < mesh.tet_slots()) remembered.resize(mesh.tet_slots());
+        Remembered& r = remembered[t];
+        const Tet tet = mesh.tet(t);
+        bool valid = r.at != 0;
+        for (unsigned k = 0; k < 4 && valid; ++k) {
+            valid =
+                r.vertices[k] == tet[k] && (tet[k] >= moved_at.size() || moved_at[tet[k]] < r.at);
+        }
+        if (!valid) {
+            r.vertices = {tet[0], tet[1], tet[2], tet[3]};
+            r.at = moves + 1;
+            r.below = below_threshold(t);
+        }
+        return r.below;
+    }
+
     std::vector<TetIdx> bad_tets() const {
         std::vector<TetIdx> bad;
         for (TetIdx t = 0; t < mesh.tet_slots(); ++t) {
-            if (!mesh.is_dead(t) && below_threshold(t)) bad.push_back(t);
+            if (!mesh.is_dead(t) && below_threshold_remembered(t)) bad.push_back(t);
         }
         return bad;
     }
@@ -410,7 +445,7 @@ bool smooth_vertex(Work& work, VertIdx v, SliverRemoval3Counters& c) {
         if (work.options->keep_bounds &&
             star_over_bounds(work, star, v, points[i].data()) > over_before)
             continue;
-        for (std::size_t k = 0; k < 3; ++k) mesh.xyz[3 * std::size_t{v} + k] = points[i][k];
+        work.move_vertex(v, points[i]);
         ++c.moves_accepted;
         return true;
     }
