@@ -24,13 +24,16 @@
 // filter is inconclusive: GMP rationals.
 #include "predicates/angle_comparisons_3d.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
 #include "predicates/exact_range.hpp"
 #include "predicates/exact_reference.hpp"
+#include "predicates/expansion.hpp"
 #include "predicates/filter_constants.hpp"
 #include "predicates/scaled_integers.hpp"
 #include "predicates/stats.hpp"
@@ -234,6 +237,57 @@ bool rescaled_copy(const TetCorners& a, const TetCorners& b, int degree, double*
         out);
 }
 
+__extension__ typedef __int128 Int128;  // GCC and Clang (the supported compilers)
+
+/// d = n1 . n2 and N = |n1|^2 |n2|^2 of dihedral angle `a` (as integer_dihedral_terms) when its
+/// three edge vectors from corner i are exact doubles and integers below 2^6 times one power of
+/// two (lattice tetrahedra, whose angles tie: 90, 60, 45 degrees), on those integers: cos^2 =
+/// d^2 / N is the same for the tetrahedron scaled by any factor, so each tetrahedron takes its
+/// own. Then |n| components < 2^13, |d| < 2^28, N < 2^56, and d_a^2 N_b < 2^112: exact in
+/// 64- and 128-bit integers. False otherwise.
+bool small_integer_dihedral_terms(const Dihedral& a, std::int64_t& d, Int128& norms) {
+    unsigned k = 0;
+    while (k == a.i || k == a.j) ++k;
+    unsigned l = k + 1;
+    while (l == a.i || l == a.j) ++l;
+    const double* o = a.p[a.i];
+    const unsigned rows[3] = {a.j, k, l};
+    double x[9];
+    double largest = 0;
+    for (unsigned r = 0; r < 3; ++r) {
+        for (unsigned c = 0; c < 3; ++c) {
+            double tail = 0;
+            two_diff(a.p[rows[r]][c], o[c], x[3 * r + c], tail);
+            if (tail != 0 || !std::isfinite(x[3 * r + c])) return false;
+            largest = std::max(largest, std::fabs(x[3 * r + c]));
+        }
+    }
+    if (largest == 0) return false;
+    const int shift = 5 - std::ilogb(largest);  // largest scaled into [2^5, 2^6)
+    std::int64_t v[9];
+    for (unsigned i = 0; i < 9; ++i) {
+        const double y = std::ldexp(x[i], shift);
+        if (y != std::trunc(y) || (y == 0) != (x[i] == 0)) return false;
+        v[i] = static_cast<std::int64_t>(y);
+    }
+    using IntVector = std::array<std::int64_t, 3>;
+    const auto cross = [](const std::int64_t* p, const std::int64_t* q) {
+        return IntVector{p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2],
+                         p[0] * q[1] - p[1] * q[0]};
+    };
+    const auto dot = [](const IntVector& p, const IntVector& q) {
+        return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+    };
+    const IntVector n1 = cross(v, v + 3), n2 = cross(v, v + 6);
+    d = dot(n1, n2);
+    norms = Int128{dot(n1, n1)} * Int128{dot(n2, n2)};
+    return true;
+}
+
+Sign sign_of_integer(Int128 x) {
+    return x > 0 ? Sign::Positive : (x < 0 ? Sign::Negative : Sign::Zero);
+}
+
 }  // namespace
 
 std::optional<Sign> compare_dihedral_filter(const Dihedral& a, const Dihedral& b) {
@@ -256,6 +310,13 @@ Sign compare_dihedral(const Dihedral& a, const Dihedral& b) {
             EM_STAT(compare_dihedral, filter);
             return *s;
         }
+    }
+    std::int64_t sda = 0, sdb = 0;
+    Int128 sna = 0, snb = 0;
+    if (small_integer_dihedral_terms(a, sda, sna) && small_integer_dihedral_terms(b, sdb, snb)) {
+        EM_STAT(compare_dihedral, exact_differences);
+        const Sign x = sign_of_integer(Int128{sda} * sda * snb - Int128{sdb} * sdb * sna);
+        return -cosine_order(sign_of_integer(sda), sign_of_integer(sdb), x);
     }
     EM_STAT(compare_dihedral, gmp);
     // Both tetrahedra's corners as integers on one power-of-two scale (homogeneous terms of

@@ -736,6 +736,21 @@ std::array<double, 3> circumcenter_exact(const double* a, const double* b, const
 
 std::array<double, 3> triangle_circumcenter_3d(const double* a, const double* b, const double* c) {
     require_finite_points("circumcenter", {a, b, c}, 3);
+    for (unsigned k = 0; k < 3; ++k) {
+        if (a[k] != b[k] || b[k] != c[k]) continue;
+        // In a coordinate plane (facets of boxes): the circumcentre lies in that plane and is
+        // the 2D circumcentre of the other two coordinates, exactly, so its correctly rounded
+        // coordinates are the 2D construction's, whose fast paths avoid the rationals (50,000
+        // instructions a call). The plane's coordinate is exact; -0 becomes +0 as above.
+        const unsigned i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+        const double a2[2] = {a[i], a[j]}, b2[2] = {b[i], b[j]}, c2[2] = {c[i], c[j]};
+        const std::array<double, 2> center = circumcenter(a2, b2, c2);
+        std::array<double, 3> result;
+        result[i] = center[0];
+        result[j] = center[1];
+        result[k] = a[k] == 0 ? 0.0 : a[k];
+        return result;
+    }
     return triangle_circumcenter3_rational(a, b, c);
 }
 

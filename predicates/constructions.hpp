@@ -53,8 +53,10 @@ std::array<double, 3> circumcenter(const double* a, const double* b, const doubl
 
 /// 3D circumcenter of the triangle a, b, c (the centre of its circumcircle, in its plane),
 /// correctly rounded per coordinate: c + ((|u|^2 v - |v|^2 u) x (u x v)) / (2 |u x v|^2) with
-/// u = a - c, v = b - c, evaluated exactly in GMP rationals and rounded once by MPFR (exact path
-/// only: boundary recovery calls it once per missing subface, far from any hot loop).
+/// u = a - c, v = b - c, evaluated exactly in GMP rationals and rounded once by MPFR; a triangle
+/// in a coordinate plane (its three points share a coordinate) goes to the 2D circumcenter of
+/// the other two coordinates (the same exact point, with its fast paths: 3D refinement splits
+/// subfaces of boxes by the thousand).
 /// @throws GeometryError on non-finite input, collinear points (exact: u x v = 0) or overflow.
 std::array<double, 3> triangle_circumcenter_3d(const double* a, const double* b, const double* c);
 

@@ -12,7 +12,10 @@
 #include <cstddef>
 #include <optional>
 
+#include "predicates/expansion.hpp"
 #include "predicates/filter_constants.hpp"
+#include "predicates/incircle.hpp"
+#include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 #include "predicates/relative_filter.hpp"
 #include "predicates/stats.hpp"
@@ -135,6 +138,66 @@ Sign in_equatorial_sphere_3d_exact(const double* p, const double* a, const doubl
     // |q|^2 - 2 q . (centre - a) < 0  <=>  |n|^2 |q|^2 - q . X < 0.
     const Vec big = add(scale(dot(u, u), cross(v, n)), scale(dot(v, v), cross(n, u)));
     return sign_of(dot(q, big) - dot(n, n) * dot(q, q));
+}
+
+/// in_equatorial_sphere_3d_exact's polynomial when the nine differences b - a, c - a, p - a
+/// are exact doubles and integers below 2^7 times one power of two (lattice points: the ties
+/// of refined boxes off their facets' planes). Scaled by that power of two (exact, checked),
+/// every intermediate is an integer below 2^53 (n < 2^15, v x n and n x u < 2^23, |u|^2 < 2^16,
+/// big < 2^40, q . big < 2^49, |n|^2 |q|^2 < 2^48, the difference < 2^50), so plain doubles
+/// evaluate it exactly at any scale. nullopt otherwise.
+std::optional<Sign> in_equatorial_sphere_3d_small_integers(const double* p, const double* a,
+                                                           const double* b, const double* c) {
+    double d[9];
+    const double* rows[3] = {b, c, p};
+    double largest = 0;
+    for (int r = 0; r < 3; ++r) {
+        for (int k = 0; k < 3; ++k) {
+            double tail = 0;
+            two_diff(rows[r][k], a[k], d[3 * r + k], tail);
+            if (tail != 0 || !std::isfinite(d[3 * r + k])) return std::nullopt;
+            largest = std::max(largest, std::fabs(d[3 * r + k]));
+        }
+    }
+    if (largest == 0) return Sign::Zero;
+    const int shift = 6 - std::ilogb(largest);  // largest scaled into [2^6, 2^7)
+    for (double& x : d) {
+        const double y = std::ldexp(x, shift);
+        if (y != std::trunc(y) || (y == 0) != (x == 0)) return std::nullopt;
+        x = y;
+    }
+    using V = std::array<double, 3>;
+    const auto cross = [](const V& x, const V& y) {
+        return V{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+    };
+    const auto dot = [](const V& x, const V& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+    const V u{d[0], d[1], d[2]}, v{d[3], d[4], d[5]}, q{d[6], d[7], d[8]};
+    const V n = cross(u, v), vn = cross(v, n), nu = cross(n, u);
+    const double uu = dot(u, u), vv = dot(v, v);
+    const V big{uu * vn[0] + vv * nu[0], uu * vn[1] + vv * nu[1], uu * vn[2] + vv * nu[2]};
+    const double value = dot(q, big) - dot(n, n) * dot(q, q);
+    return value > 0 ? Sign::Positive : value < 0 ? Sign::Negative : Sign::Zero;
+}
+
+/// in_equatorial_sphere_3d for four points with one coordinate exactly equal (a facet in a
+/// coordinate plane, as on boxes): the sphere's trace on that plane is the triangle's
+/// circumcircle and p lies in the plane, so p is inside the sphere exactly when it is inside the
+/// circle: the 2D incircle of the other two coordinates, times the triangle's 2D orientation
+/// (both exact, on expansions: most exact calls are such ties, and GMP took 20,000
+/// instructions each). nullopt when no coordinate is shared.
+std::optional<Sign> in_equatorial_sphere_3d_planar(const double* p, const double* a,
+                                                   const double* b, const double* c) {
+    for (int k = 0; k < 3; ++k) {
+        if (p[k] != a[k] || b[k] != a[k] || c[k] != a[k]) continue;
+        const int i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+        const double pp[2] = {p[i], p[j]}, aa[2] = {a[i], a[j]}, bb[2] = {b[i], b[j]},
+                     cc[2] = {c[i], c[j]};
+        const int orientation = static_cast<int>(orient2d(aa, bb, cc));
+        const int inside = static_cast<int>(incircle(aa, bb, cc, pp));
+        const int s = orientation * inside;
+        return s > 0 ? Sign::Positive : s < 0 ? Sign::Negative : Sign::Zero;
+    }
+    return std::nullopt;
 }
 
 Sign compare_angle_60_3d_exact(const double* apex, const double* p, const double* q) {
@@ -336,6 +399,14 @@ Sign in_equatorial_sphere_3d(const double* p, const double* a, const double* b, 
     EM_STAT(in_equatorial_sphere_3d, calls);
     if (const auto s = in_equatorial_sphere_3d_filter(p, a, b, c)) {
         EM_STAT(in_equatorial_sphere_3d, filter);
+        return *s;
+    }
+    if (const auto s = in_equatorial_sphere_3d_planar(p, a, b, c)) {
+        EM_STAT(in_equatorial_sphere_3d, expansion);
+        return *s;
+    }
+    if (const auto s = in_equatorial_sphere_3d_small_integers(p, a, b, c)) {
+        EM_STAT(in_equatorial_sphere_3d, exact_differences);
         return *s;
     }
     EM_STAT(in_equatorial_sphere_3d, gmp);

@@ -31,7 +31,9 @@ Sign compare_tet_volume_3d(const double* a, const double* b, const double* c, co
 
 /// Whether p lies inside the equatorial (diametral) sphere of triangle a, b, c, the smallest
 /// sphere through a, b, c (its centre the triangle's circumcentre): Positive strictly inside,
-/// Zero on it, Negative outside. @pre a, b, c not collinear.
+/// Zero on it, Negative outside. @pre a, b, c not collinear. Four points with one coordinate
+/// equal (a facet in a coordinate plane) are decided, after the filter, by the 2D incircle and
+/// orient2d on the other two coordinates (exact expansions), not in GMP.
 Sign in_equatorial_sphere_3d(const double* p, const double* a, const double* b, const double* c);
 
 /// Sign of cos(angle p-apex-q) - 1/2: Positive when the angle at `apex` between p and q is

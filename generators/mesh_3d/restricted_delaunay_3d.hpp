@@ -69,6 +69,75 @@ inline bool same_point(const double* p, const double* q) {
     return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
 }
 
+/// An open-addressing hash table of 64-bit keys (edge keys), cleared in O(1) by an epoch: the
+/// scratch sets and maps of one insertion, reused so that no insertion allocates (node-based
+/// std::unordered_set/map allocated per key: a tenth of refinement's instructions in malloc
+/// and free). Only membership and lookup are asked, never an order.
+template <class Value>
+class FlatKeyMap64 {
+  public:
+    /// Forgets every key.
+    void clear() {
+        if (++epoch_ == 0) {
+            for (Slot& slot : slots_) slot.epoch = 0;
+            epoch_ = 1;
+        }
+        size_ = 0;
+    }
+
+    /// The value of `key`, inserted as `value` when missing; second: whether it was inserted.
+    std::pair<Value*, bool> emplace(std::uint64_t key, Value value) {
+        if (2 * (size_ + 1) > slots_.size()) grow();
+        std::size_t i = position(key);
+        while (slots_[i].epoch == epoch_) {
+            if (slots_[i].key == key) return {&slots_[i].value, false};
+            i = (i + 1) & (slots_.size() - 1);
+        }
+        slots_[i] = {key, value, epoch_};
+        ++size_;
+        return {&slots_[i].value, true};
+    }
+
+    bool contains(std::uint64_t key) const {
+        if (slots_.empty()) return false;
+        std::size_t i = position(key);
+        while (slots_[i].epoch == epoch_) {
+            if (slots_[i].key == key) return true;
+            i = (i + 1) & (slots_.size() - 1);
+        }
+        return false;
+    }
+
+  private:
+    struct Slot {
+        std::uint64_t key = 0;
+        Value value{};
+        std::uint32_t epoch = 0;
+    };
+    std::vector<Slot> slots_;
+    std::size_t size_ = 0;
+    std::uint32_t epoch_ = 1;
+
+    std::size_t position(std::uint64_t key) const {
+        return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (slots_.size() - 1);
+    }
+
+    void grow() {
+        std::vector<Slot> old = std::move(slots_);
+        slots_.assign(std::max<std::size_t>(64, 2 * old.size()), Slot{});
+        const std::uint32_t live = epoch_;
+        epoch_ = 1;
+        size_ = 0;
+        for (const Slot& slot : old) {
+            if (slot.epoch != live) continue;
+            std::size_t i = position(slot.key);
+            while (slots_[i].epoch == epoch_) i = (i + 1) & (slots_.size() - 1);
+            slots_[i] = {slot.key, slot.value, epoch_};
+            ++size_;
+        }
+    }
+};
+
 /// A subface: its corners in the facet's orientation, and its facet.
 struct Subface {
     Key3 oriented;
@@ -211,7 +280,23 @@ class RestrictedDelaunay3 {
         return sorted3(m_.vertex(t, lf[0]), m_.vertex(t, lf[1]), m_.vertex(t, lf[2]));
     }
 
-    bool is_subface(TetIdx t, unsigned k) const { return subfaces_.count(face_key(t, k)) != 0; }
+    /// Whether v can be a corner of a subface or an end of a subsegment: Volume points never
+    /// are (subfaces and subsegments are split only at Segment and Facet points), and most
+    /// vertices of a refined mesh are Volume points, so most lookups end here.
+    bool on_boundary(VertIdx v) const { return out_.vertex_feature[v] != VertexFeature3::Volume; }
+
+    /// Whether the face with sorted corners `key` is a subface.
+    bool is_subface_key(const Key3& key) const {
+        return on_boundary(key[0]) && on_boundary(key[1]) && on_boundary(key[2]) &&
+               subfaces_.count(key) != 0;
+    }
+
+    /// Whether edge a b is a subsegment.
+    bool is_subsegment(VertIdx a, VertIdx b) const {
+        return on_boundary(a) && on_boundary(b) && subsegments_.count(edge_key(a, b)) != 0;
+    }
+
+    bool is_subface(TetIdx t, unsigned k) const { return is_subface_key(face_key(t, k)); }
 
     // --- segments --------------------------------------------------------------------------
 
@@ -440,11 +525,8 @@ class RestrictedDelaunay3 {
                     const TetIdx u = triangulation::tet_of(g);
                     if (attempt_mark_(u) || excluded_[u] == mark) continue;
                     const Key3 key = face_key(t, k);
-                    if (subfaces_.count(key) != 0 && !is_split_face(split, key)) continue;
-                    if (predicates::insphere(point(m_.vertex(u, 0)), point(m_.vertex(u, 1)),
-                                             point(m_.vertex(u, 2)), point(m_.vertex(u, 3)),
-                                             p) != Sign::Positive)
-                        continue;
+                    if (is_subface_key(key) && !is_split_face(split, key)) continue;
+                    if (!inside_sphere(u, p, mark)) continue;
                     set_attempt_(u);
                     cavity_.push_back(u);
                 }
@@ -460,6 +542,25 @@ class RestrictedDelaunay3 {
             shrunk = true;
         }
     }
+
+    /// insphere(u, p) > 0, asked once per tetrahedron and call of build_cavity (stamp `mark`):
+    /// the shrinking loop regrows the cavity several times and a tetrahedron beside it is met
+    /// from each of its faces on the cavity, and cospherical ties cost an exact evaluation.
+    bool inside_sphere(TetIdx u, const double* p, std::uint32_t mark) {
+        if (sphere_stamp_.size() < m_.tet_slots()) {
+            sphere_stamp_.resize(m_.tet_slots(), 0);
+            sphere_inside_.resize(m_.tet_slots(), 0);
+        }
+        if (sphere_stamp_[u] != mark) {
+            sphere_stamp_[u] = mark;
+            sphere_inside_[u] = predicates::insphere(point(m_.vertex(u, 0)), point(m_.vertex(u, 1)),
+                                                     point(m_.vertex(u, 2)), point(m_.vertex(u, 3)),
+                                                     p) == Sign::Positive;
+        }
+        return sphere_inside_[u] != 0;
+    }
+    std::vector<std::uint32_t> sphere_stamp_;
+    std::vector<std::uint8_t> sphere_inside_;
 
     // Per-attempt marks (a second stamp array).
     std::vector<std::uint32_t> attempt_stamp_;
@@ -479,14 +580,20 @@ class RestrictedDelaunay3 {
         auto removable = [&](TetIdx t) {
             return std::find(seeds.begin(), seeds.end(), t) == seeds.end() ? t : kNone - 1;
         };
-        std::unordered_set<std::uint64_t> boundary_edges;
-        std::unordered_set<VertIdx> boundary_vertices;
+        FlatKeyMap64<std::uint8_t>& boundary_edges = boundary_edges_;
+        boundary_edges.clear();
+        if (boundary_vertex_mark_.size() < m_.vertex_count())
+            boundary_vertex_mark_.resize(m_.vertex_count(), 0);
+        if (++boundary_epoch_ == 0) {
+            std::fill(boundary_vertex_mark_.begin(), boundary_vertex_mark_.end(), 0u);
+            boundary_epoch_ = 1;
+        }
         for (const TetIdx t : cavity_) {
             for (unsigned k = 0; k < 4; ++k) {
                 const FaceIdx g = m_.adj[4 * t + k];
                 const Key3 key = face_key(t, k);
                 if (g != kNone && in_attempt(triangulation::tet_of(g))) {
-                    if (subfaces_.count(key) != 0 && !is_split_face(split, key)) {
+                    if (is_subface_key(key) && !is_split_face(split, key)) {
                         const TetIdx first = removable(t);
                         return first != kNone - 1 ? first : removable(triangulation::tet_of(g));
                     }
@@ -498,24 +605,30 @@ class RestrictedDelaunay3 {
                                          point(m_.vertex(t, lf[2])), p) != Sign::Positive)
                     return removable(t);
                 for (unsigned i = 0; i < 3; ++i) {
-                    boundary_edges.insert(edge_key(key[i], key[(i + 1) % 3]));
-                    boundary_vertices.insert(key[i]);
+                    boundary_edges.emplace(edge_key(key[i], key[(i + 1) % 3]), 0);
+                    boundary_vertex_mark_[key[i]] = boundary_epoch_;
                 }
             }
         }
         for (const TetIdx t : cavity_) {
             for (unsigned k = 0; k < 4; ++k)
-                if (boundary_vertices.count(m_.vertex(t, k)) == 0) return removable(t);
+                if (boundary_vertex_mark_[m_.vertex(t, k)] != boundary_epoch_) return removable(t);
             for (const auto& e : kEdges) {
-                const std::uint64_t key = edge_key(m_.vertex(t, e[0]), m_.vertex(t, e[1]));
+                const VertIdx a = m_.vertex(t, e[0]), b = m_.vertex(t, e[1]);
+                if (!on_boundary(a) || !on_boundary(b)) continue;  // no kept edge
+                const std::uint64_t key = edge_key(a, b);
                 if (key == split.edge || split.exempt.count(key) != 0) continue;
                 const bool kept_edge =
                     subsegments_.count(key) != 0 || edge_subfaces_.count(key) != 0;
-                if (kept_edge && boundary_edges.count(key) == 0) return removable(t);
+                if (kept_edge && !boundary_edges.contains(key)) return removable(t);
             }
         }
         return kNone;
     }
+    FlatKeyMap64<std::uint8_t> boundary_edges_;        ///< first_violation's scratch
+    std::vector<std::uint32_t> boundary_vertex_mark_;  ///< == boundary_epoch_: on the boundary
+    std::uint32_t boundary_epoch_ = 0;
+    FlatKeyMap64<FaceIdx> open_edges_;  ///< commit's scratch: new faces not yet linked
 
     /// Replaces the cavity (built by build_cavity for p) by the tetrahedra joining p to its
     /// boundary, updates the subfaces and subsegments of `split`, queues what to check.
@@ -561,7 +674,8 @@ class RestrictedDelaunay3 {
             attempt_stamp_[t] = 0;
             m_.kill_tet(t);
         }
-        std::unordered_map<std::uint64_t, FaceIdx> open;
+        FlatKeyMap64<FaceIdx>& open = open_edges_;
+        open.clear();
         std::vector<TetIdx> created;
         for (const BoundaryFace& f : faces) {
             const TetIdx t = m_.new_tet();
@@ -578,11 +692,11 @@ class RestrictedDelaunay3 {
             for (unsigned j = 0; j < 3; ++j) {
                 m_.adj[s + j] = kNone;
                 const std::uint64_t key = edge_key(f.corners[(j + 1) % 3], f.corners[(j + 2) % 3]);
-                const auto [it, added] = open.emplace(key, static_cast<FaceIdx>(s + j));
+                const auto [slot, added] = open.emplace(key, static_cast<FaceIdx>(s + j));
                 if (!added) {
-                    EM_ASSERT(it->second != kNone);
-                    m_.link(it->second, static_cast<FaceIdx>(s + j));
-                    it->second = kNone;
+                    EM_ASSERT(*slot != kNone);
+                    m_.link(*slot, static_cast<FaceIdx>(s + j));
+                    *slot = kNone;
                 }
             }
             for (unsigned k = 0; k < 4; ++k) {
@@ -601,13 +715,6 @@ class RestrictedDelaunay3 {
         for (const Subface& s : new_subfaces) add_subface(s);
         if (split.edge != ~0ull) subsegments_.erase(split.edge);
         for (const auto& [key, segment] : new_subsegments) subsegments_.emplace(key, segment);
-        std::unordered_set<Key3, Key3Hash> new_faces;
-        std::unordered_set<std::uint64_t> new_edges;
-        for (const TetIdx t : created) {
-            for (unsigned k = 0; k < 4; ++k) new_faces.insert(face_key(t, k));
-            for (const auto& e : kEdges)
-                new_edges.insert(edge_key(m_.vertex(t, e[0]), m_.vertex(t, e[1])));
-        }
         // Stars in several pieces: the corners already known to have them get the new
         // tetrahedra as candidates; the new vertex has several when its cavity had (a point on
         // an edge where the domain touches itself).
@@ -630,9 +737,20 @@ class RestrictedDelaunay3 {
             }
         }
         if (!created.empty() && star(v).size() != created.size()) note_pieces(v, created);
+        // Every new subface is a face, and every new subsegment an edge, of a new tetrahedron:
+        // one holds all its vertices (any three vertices of a tetrahedron make a face).
+        const auto created_with = [&](VertIdx a, VertIdx b, VertIdx c) {
+            return std::any_of(created.begin(), created.end(), [&](TetIdx t) {
+                return m_.slot_of(t, a) < 4 && m_.slot_of(t, b) < 4 && m_.slot_of(t, c) < 4;
+            });
+        };
         for (const Subface& s : new_subfaces)
-            EM_ASSERT(new_faces.count(sorted3(s.oriented[0], s.oriented[1], s.oriented[2])) != 0);
-        for (const auto& entry : new_subsegments) EM_ASSERT(new_edges.count(entry.first) != 0);
+            EM_ASSERT(created_with(s.oriented[0], s.oriented[1], s.oriented[2]));
+        for (const auto& entry : new_subsegments) {
+            const auto a = static_cast<VertIdx>(entry.first >> 32);
+            const auto b = static_cast<VertIdx>(entry.first);
+            EM_ASSERT(created_with(a, b, b));
+        }
         for (const TetIdx t : created) examine(t);
         return v;
     }
@@ -653,7 +771,7 @@ class RestrictedDelaunay3 {
                                        m_.vertex(t, 3)};
         for (unsigned k = 0; k < 4; ++k) {
             const Key3 key = face_key(t, k);
-            if (subfaces_.count(key) == 0) continue;
+            if (!is_subface_key(key)) continue;
             if (predicates::in_equatorial_sphere_3d(point(c[k]), point(key[0]), point(key[1]),
                                                     point(key[2])) == Sign::Positive) {
                 subface_queue_.push_back(key);
@@ -661,8 +779,8 @@ class RestrictedDelaunay3 {
             }
         }
         for (const auto& e : kEdges) {
+            if (!is_subsegment(c[e[0]], c[e[1]])) continue;
             const std::uint64_t key = edge_key(c[e[0]], c[e[1]]);
-            if (subsegments_.count(key) == 0) continue;
             for (unsigned k = 0; k < 4; ++k) {
                 if (k == e[0] || k == e[1]) continue;
                 if (predicates::dot_sign_3d(point(c[k]), point(c[e[0]]), point(c[e[1]])) ==
@@ -916,8 +1034,8 @@ class RestrictedDelaunay3 {
         for (const TetIdx t : cavity_) {
             for (const auto& e : kEdges) {
                 const VertIdx a = m_.vertex(t, e[0]), b = m_.vertex(t, e[1]);
+                if (!is_subsegment(a, b)) continue;
                 const std::uint64_t key = edge_key(a, b);
-                if (subsegments_.count(key) == 0) continue;
                 if (predicates::dot_sign_3d(p, point(a), point(b)) == Sign::Negative) {
                     segment_queue_.push_front(key);
                     ++counters_.encroached_segments;
@@ -935,7 +1053,7 @@ class RestrictedDelaunay3 {
         for (const TetIdx u : cavity_) {
             for (unsigned k = 0; k < 4; ++k) {
                 const Key3 key = face_key(u, k);
-                if (subfaces_.count(key) == 0) continue;
+                if (!is_subface_key(key)) continue;
                 if (predicates::in_equatorial_sphere_3d(p, point(key[0]), point(key[1]),
                                                         point(key[2])) == Sign::Positive) {
                     subface_queue_.push_front(key);
@@ -977,7 +1095,7 @@ class RestrictedDelaunay3 {
             }
             const Key3 key = face_key(s, static_cast<unsigned>(exit));
             const FaceIdx g = m_.adj[4 * s + static_cast<unsigned>(exit)];
-            if (g == kNone || subfaces_.count(key) != 0) {
+            if (g == kNone || is_subface_key(key)) {
                 blocking = key;
                 return Walk::Blocked;
             }

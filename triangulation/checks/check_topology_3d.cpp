@@ -8,6 +8,7 @@
 
 #include "predicates/orient3d.hpp"
 #include "triangulation/mesh/flip_3d.hpp"
+#include "triangulation/mesh/vertex_keys_3d.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -92,16 +93,24 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
         std::array<VertIdx, 3> key;
         std::uint32_t facet;
     };
-    std::vector<Entry> entries;
-    entries.reserve(mesh.tets.size());
+    // Sorted as pairs of 64-bit words, (k0 k1, k2 facet): the same order as (key, facet), two
+    // integer comparisons each (std::array's went through memcmp, most of the sort's time).
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> packed;
+    packed.reserve(mesh.tets.size());
     for (std::size_t f = 0; f < mesh.tets.size(); ++f) {
-        auto key = face_of(mesh, f / 4, f % 4);
-        std::sort(key.begin(), key.end());
-        entries.push_back({key, static_cast<std::uint32_t>(f)});
+        const auto corners = face_of(mesh, f / 4, f % 4);
+        const Key3 key = sorted3(corners[0], corners[1], corners[2]);
+        packed.push_back(
+            {(std::uint64_t{key[0]} << 32) | key[1], (std::uint64_t{key[2]} << 32) | f});
     }
-    std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
-        return x.key != y.key ? x.key < y.key : x.facet < y.facet;
-    });
+    std::sort(packed.begin(), packed.end());
+    std::vector<Entry> entries;
+    entries.reserve(packed.size());
+    for (const auto& [high, low] : packed) {
+        entries.push_back({{static_cast<VertIdx>(high >> 32), static_cast<VertIdx>(high),
+                            static_cast<VertIdx>(low >> 32)},
+                           static_cast<std::uint32_t>(low)});
+    }
     std::vector<std::uint32_t> shared_with(mesh.tets.size(), kNone);
     for (std::size_t i = 0; i < entries.size();) {
         std::size_t j = i + 1;

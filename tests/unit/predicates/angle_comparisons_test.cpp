@@ -311,6 +311,51 @@ TEST(Predicates_AngleComparisons3d, AgreeWithGmpOnRandomTurnedAndScaledTetrahedr
     EXPECT_EQ(dihedral[1].answered, 0);
 }
 
+TEST(Predicates_AngleComparisons3d, DihedralsOfLatticeTetrahedraAgreeWithGmp) {
+    // Tetrahedra on a small integer lattice (their dihedral angles tie: 90, 60, 45 degrees),
+    // translated (exact), one coordinate sometimes moved by an ulp, at 2^0, 2^600 and 2^-600:
+    // the small-integer stage and, beyond its range, GMP, against the rational reference.
+    Rng rng(11);
+    std::uniform_int_distribution<int> small(-3, 3), wide(-40, 40);
+    int ties = 0, cases = 0;
+    auto lattice_tet = [&](bool widely) {
+        for (;;) {
+            Tet t;
+            for (P3& p : t) {
+                for (double& x : p) x = double(widely ? wide(rng) : small(rng)) + 512;
+            }
+            const Sign s = pr::orient3d(t[0].data(), t[1].data(), t[2].data(), t[3].data());
+            if (s == Sign::Zero) continue;
+            if (s == Sign::Negative) std::swap(t[0], t[1]);
+            return t;
+        }
+    };
+    for (int n = 0; n < 400; ++n) {
+        const Tet a = lattice_tet(n % 5 == 4);
+        Tet b = n % 3 == 0 ? a : lattice_tet(false);
+        if (n % 7 == 6) {
+            b[n % 4][n % 3] = ulps(b[n % 4][n % 3], 1);
+            if (pr::orient3d(b[0].data(), b[1].data(), b[2].data(), b[3].data()) != Sign::Positive)
+                continue;
+        }
+        for (unsigned e = 0; e < 6; ++e) {
+            const unsigned i = e < 3 ? 0 : (e < 5 ? 1 : 2), j = e < 3 ? e + 1 : (e < 5 ? e - 1 : 3);
+            const unsigned f = (e + static_cast<unsigned>(n)) % 6;
+            const unsigned k = f < 3 ? 0 : (f < 5 ? 1 : 2), l = f < 3 ? f + 1 : (f < 5 ? f - 1 : 3);
+            for (const int scale : {0, 600, -600}) {
+                const Tet as = scaled(a, scale), bs = scaled(b, scale);
+                const auto ca = corners(as), cb = corners(bs);
+                const Sign ref = pr::reference::compare_dihedral(ca.data(), i, j, cb.data(), k, l);
+                ASSERT_EQ(pr::compare_dihedral({ca, i, j}, {cb, k, l}), ref)
+                    << n << " edge " << e << " scale " << scale;
+                ties += ref == Sign::Zero;
+                ++cases;
+            }
+        }
+    }
+    EXPECT_GT(ties, cases / 20);
+}
+
 TEST(Predicates_TriangleArea, AgreesWithGmpOnRandomTiedAndScaledInputs) {
     Rng rng(5);
     for (int n = 0; n < 3000; ++n) {

@@ -122,8 +122,27 @@ TEST(Predicates_TriangleCircumcenter3d, MatchesTheExact2dCircumcenterInCoordinat
             EXPECT_EQ(center[static_cast<unsigned>(i1)], expected[0]) << i;
             EXPECT_EQ(center[static_cast<unsigned>(i2)], expected[1]) << i;
             EXPECT_EQ(center[static_cast<unsigned>(drop)], level) << i;
+            for (const int e : {600, -600}) {  // the same point scaled by 2^e
+                double as[3], bs[3], cs[3];
+                for (int k = 0; k < 3; ++k) {
+                    as[k] = std::ldexp(a[k], e);
+                    bs[k] = std::ldexp(b[k], e);
+                    cs[k] = std::ldexp(c[k], e);
+                }
+                const std::array<double, 3> scaled = triangle_circumcenter_3d(as, bs, cs);
+                for (unsigned k = 0; k < 3; ++k) EXPECT_EQ(scaled[k], std::ldexp(center[k], e));
+            }
         }
     }
+    // A plane through -0: the coordinate comes back as +0, like every exact zero.
+    const double a[3] = {1, -0.0, 0}, b[3] = {3, -0.0, 1}, c[3] = {1, -0.0, 4};
+    const std::array<double, 3> center = triangle_circumcenter_3d(a, b, c);
+    EXPECT_FALSE(std::signbit(center[1]));
+    EXPECT_EQ(center[1], 0.0);
+    EXPECT_EQ(center[0], 1.25);  // equidistant from (1, 0), (3, 1), (1, 4) in (x, z): (5/4, 2)
+    EXPECT_EQ(center[2], 2.0);
+    const double d[3] = {2, 5, 2}, e[3] = {4, 5, 4}, f[3] = {7, 5, 7};
+    EXPECT_THROW(triangle_circumcenter_3d(d, e, f), GeometryError);  // collinear in the plane
 }
 
 TEST(Predicates_TriangleCircumcenter3d, ExactOnATiltedTriangleAndScalesByPowersOfTwo) {

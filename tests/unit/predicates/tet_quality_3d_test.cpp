@@ -390,6 +390,101 @@ TEST(Predicates_TetQuality3d, FiltersAgreeWithRationalsOnExactTiesAndTheirNeighb
     EXPECT_GT(zeros, n) << "the exact ties are kept by about a third of the cases";
 }
 
+TEST(Predicates_TetQuality3d, EquatorialSphereInACoordinatePlaneAgreesWithRationals) {
+    // Four points with one coordinate equal go to the 2D incircle (not GMP): cocircular
+    // lattice points (exact ties), their ulp neighbours and random points, in each coordinate
+    // plane, translated, and scaled by 2^600 and 2^-600.
+    std::mt19937_64 rng(18);
+    std::uniform_int_distribution<int> small(-9, 9), nudge(-1, 1), which(0, 3);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const int n = case_count(200);
+    int ties = 0, checked = 0;
+    for (int i = 0; i < n; ++i) {
+        std::array<std::array<double, 2>, 4> flat;  // p, a, b, c in the plane
+        if (i % 2 == 0) {
+            const int x = small(rng), y = small(rng), u = small(rng), v = small(rng);
+            const int w = small(rng);
+            if (x == 0 || y == 0) continue;
+            // a = 0, b = (2x, 0), c = (0, 2y): centre (x, y); p = centre + (u, v) when on the
+            // circle, else a random lattice point.
+            const bool on = x * x + y * y == u * u + v * v;
+            flat = {{{double(x + u), on ? double(y + v) : double(w)},
+                     {0, 0},
+                     {2.0 * x, 0},
+                     {0, 2.0 * y}}};
+            auto& coordinate =
+                flat[static_cast<unsigned>(which(rng))][static_cast<unsigned>(which(rng) % 2)];
+            coordinate = nudged(coordinate, nudge(rng));
+        } else {
+            for (auto& q : flat) q = {unit(rng), unit(rng)};
+        }
+        const int k = i % 3;
+        const double level = double(small(rng)) / 8;
+        for (const int e : {0, 600, -600}) {
+            std::array<P, 4> t;
+            for (unsigned j = 0; j < 4; ++j) {
+                P q;
+                q[static_cast<unsigned>(k)] = level;
+                q[static_cast<unsigned>((k + 1) % 3)] = flat[j][0] + 3;
+                q[static_cast<unsigned>((k + 2) % 3)] = flat[j][1] - 5;
+                t[j] = scaled(q, e);
+            }
+            const P& a = t[1];
+            const P& b = t[2];
+            const P& c = t[3];
+            const double* pa = a.data();
+            const double* pb = b.data();
+            const double* pc = c.data();
+            const Sign expected = reference_equatorial(t[0], a, b, c);
+            ties += expected == Sign::Zero;
+            ++checked;
+            EXPECT_EQ(in_equatorial_sphere_3d(t[0].data(), pa, pb, pc), expected)
+                << "case " << i << " plane " << k << " scale 2^" << e;
+            EXPECT_EQ(in_equatorial_sphere_3d(t[0].data(), pb, pc, pa), expected);
+            EXPECT_EQ(in_equatorial_sphere_3d(t[0].data(), pb, pa, pc), expected);
+        }
+    }
+    EXPECT_GT(checked, n);
+    EXPECT_GT(ties, 0) << "some lattice points lie on their circle";
+}
+
+TEST(Predicates_TetQuality3d, EquatorialSphereOnLatticeTiesAgreesWithRationals) {
+    // Lattice points on a right triangle's equatorial sphere, off its plane, with differences up
+    // to the bound of the small-integer stage (2^7) and beyond it, ulp neighbours, any scale.
+    std::mt19937_64 rng(19);
+    std::uniform_int_distribution<int> half(1, 60), offset(-60, 60), nudge(-1, 1), which(0, 3);
+    const int n = case_count(300);
+    int ties = 0;
+    for (int found = 0; found < n;) {
+        const int x = half(rng), y = half(rng), i = offset(rng), j = offset(rng);
+        const int rest = x * x + y * y - i * i - j * j;
+        if (rest < 0) continue;
+        const int k = static_cast<int>(std::lround(std::sqrt(double(rest))));
+        if (k * k != rest) continue;
+        ++found;
+        // a = 0, b = (2x, 0, 0), c = (0, 2y, 0), p = (x + i, y + j, k); a shifted to (3, -5, 7).
+        std::array<P, 4> t{P{double(x + i) + 3, double(y + j) - 5, double(k) + 7}, P{3, -5, 7},
+                           P{2.0 * x + 3, -5, 7}, P{3, 2.0 * y - 5, 7}};
+        if (found % 3 == 1) {
+            auto& coordinate =
+                t[static_cast<unsigned>(which(rng))][static_cast<unsigned>(which(rng) % 3)];
+            coordinate = nudged(coordinate, nudge(rng));
+        }
+        const Sign expected = reference_equatorial(t[0], t[1], t[2], t[3]);
+        ties += expected == Sign::Zero;
+        for (const int e : {0, 600, -600}) {
+            std::array<P, 4> s;
+            for (unsigned m = 0; m < 4; ++m) s[m] = scaled(t[m], e);
+            EXPECT_EQ(in_equatorial_sphere_3d(s[0].data(), s[1].data(), s[2].data(), s[3].data()),
+                      expected)
+                << "x " << x << " y " << y << " at 2^" << e;
+            EXPECT_EQ(in_equatorial_sphere_3d(s[0].data(), s[3].data(), s[1].data(), s[2].data()),
+                      expected);
+        }
+    }
+    EXPECT_GT(ties, n / 2);
+}
+
 TEST(Predicates_TetQuality3d, FiltersAbstainOnTiesAndOutsideTheirWindow) {
     // An exact tie is never decided by a filter (it would have to answer Zero).
     const P a{0, 0, 0}, b{3, 0, 0}, c{0, 2, 0}, d{0, 0, 1};
