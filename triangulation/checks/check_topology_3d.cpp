@@ -89,28 +89,7 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
         }
     }
     // Faces by vertex set: shared by at most two, and linked exactly when shared.
-    struct Entry {
-        std::array<VertIdx, 3> key;
-        std::uint32_t facet;
-    };
-    // Sorted as pairs of 64-bit words, (k0 k1, k2 facet): the same order as (key, facet), two
-    // integer comparisons each (std::array's went through memcmp, most of the sort's time).
-    std::vector<std::pair<std::uint64_t, std::uint64_t>> packed;
-    packed.reserve(mesh.tets.size());
-    for (std::size_t f = 0; f < mesh.tets.size(); ++f) {
-        const auto corners = face_of(mesh, f / 4, f % 4);
-        const Key3 key = sorted3(corners[0], corners[1], corners[2]);
-        packed.push_back(
-            {(std::uint64_t{key[0]} << 32) | key[1], (std::uint64_t{key[2]} << 32) | f});
-    }
-    std::sort(packed.begin(), packed.end());
-    std::vector<Entry> entries;
-    entries.reserve(packed.size());
-    for (const auto& [high, low] : packed) {
-        entries.push_back({{static_cast<VertIdx>(high >> 32), static_cast<VertIdx>(high),
-                            static_cast<VertIdx>(low >> 32)},
-                           static_cast<std::uint32_t>(low)});
-    }
+    const std::vector<KeyedFace3> entries = sorted_faces_3d(mesh.tets);
     std::vector<std::uint32_t> shared_with(mesh.tets.size(), kNone);
     for (std::size_t i = 0; i < entries.size();) {
         std::size_t j = i + 1;
@@ -120,10 +99,10 @@ TopologyReport3 check_topology_3d(const Tetrahedralization3& mesh, TopologyOptio
             return fail(report,
                         "face (" + name(key[0]) + ", " + name(key[1]) + ", " + name(key[2]) +
                             ") is shared by " + name(j - i) + " tetrahedra",
-                        entries[i].facet / 4, {key[0], key[1], key[2]});
+                        entries[i].face / 4, {key[0], key[1], key[2]});
         }
         if (j - i == 2) {
-            const std::uint32_t f = entries[i].facet, g = entries[i + 1].facet;
+            const std::uint32_t f = entries[i].face, g = entries[i + 1].face;
             auto back = face_of(mesh, g / 4, g % 4);
             std::swap(back[1], back[2]);
             if (!same_oriented(face_of(mesh, f / 4, f % 4), back)) {

@@ -3,6 +3,8 @@
 // a point (see flip_3d.hpp).
 #include "triangulation/mesh/flip_3d.hpp"
 
+#include "triangulation/mesh/vertex_keys_3d.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -87,32 +89,7 @@ void validate_tets(const std::vector<double>& xyz, const std::vector<VertIdx>& t
 /// adj from the vertex lists: facets sorted by their face's vertex set.
 std::vector<FaceIdx> link_facets(const std::vector<VertIdx>& tets, std::uint32_t first_vertex,
                                  std::uint32_t first_tet) {
-    struct Entry {
-        std::array<VertIdx, 3> key;
-        FaceIdx facet;
-    };
-    // Sorted as pairs of 64-bit words, (k0 k1, k2 facet): the same order as (key, facet), two
-    // integer comparisons each (std::array's went through memcmp, most of the sort's time).
-    std::vector<std::pair<std::uint64_t, std::uint64_t>> packed;
-    packed.reserve(tets.size());
-    for (std::size_t f = 0; f < tets.size(); ++f) {
-        const std::size_t t = f / 4;
-        const unsigned* lf = kFaceVertex[f % 4];
-        VertIdx key[3] = {tets[4 * t + lf[0]], tets[4 * t + lf[1]], tets[4 * t + lf[2]]};
-        if (key[0] > key[1]) std::swap(key[0], key[1]);
-        if (key[1] > key[2]) std::swap(key[1], key[2]);
-        if (key[0] > key[1]) std::swap(key[0], key[1]);
-        packed.push_back(
-            {(std::uint64_t{key[0]} << 32) | key[1], (std::uint64_t{key[2]} << 32) | f});
-    }
-    std::sort(packed.begin(), packed.end());
-    std::vector<Entry> entries;
-    entries.reserve(packed.size());
-    for (const auto& [high, low] : packed) {
-        entries.push_back({{static_cast<VertIdx>(high >> 32), static_cast<VertIdx>(high),
-                            static_cast<VertIdx>(low >> 32)},
-                           static_cast<FaceIdx>(low)});
-    }
+    const std::vector<KeyedFace3> entries = sorted_faces_3d(tets);
     std::vector<FaceIdx> adj(tets.size(), kNone);
     for (std::size_t i = 0; i < entries.size();) {
         std::size_t j = i + 1;
@@ -123,14 +100,14 @@ std::vector<FaceIdx> link_facets(const std::vector<VertIdx>& tets, std::uint32_t
                              std::to_string(std::uint64_t{k[1]} + first_vertex) + ", " +
                              std::to_string(std::uint64_t{k[2]} + first_vertex) +
                              ") is shared by " + std::to_string(j - i) + " tetrahedra (" +
-                             std::to_string(entries[i].facet / 4 + first_tet) + ", " +
-                             std::to_string(entries[i + 1].facet / 4 + first_tet) + ", " +
-                             std::to_string(entries[i + 2].facet / 4 + first_tet) +
+                             std::to_string(entries[i].face / 4 + first_tet) + ", " +
+                             std::to_string(entries[i + 1].face / 4 + first_tet) + ", " +
+                             std::to_string(entries[i + 2].face / 4 + first_tet) +
                              "): overlapping tetrahedra");
         }
         if (j - i == 2) {
-            adj[entries[i].facet] = entries[i + 1].facet;
-            adj[entries[i + 1].facet] = entries[i].facet;
+            adj[entries[i].face] = entries[i + 1].face;
+            adj[entries[i + 1].face] = entries[i].face;
         }
         i = j;
     }
@@ -562,14 +539,6 @@ void TetStar3::grow_stamps(const TetMesh3& mesh) {
     if (stamp.size() < mesh.tet_slots()) stamp.resize(mesh.tet_slots() + mesh.tet_slots() / 2, 0u);
 }
 
-namespace {
-
-/// Key of the undirected edge (a, b).
-inline std::uint64_t edge_key(VertIdx a, VertIdx b) {
-    return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
-}
-
-}  // namespace
 
 template <bool kBoundary>
 void TetStar3::glue(std::uint64_t key, FaceIdx face) {
