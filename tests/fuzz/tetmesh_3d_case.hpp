@@ -15,7 +15,7 @@
 // tetrahedron over it is allowed only when refinement rejected points). InputError and
 // GeometryError are accepted outcomes; any other exception is a failure.
 //
-// Byte layout (bytes past the end read as 0): 0 form (% 4), 1 generator (% 3), 2 generator
+// Byte layout (bytes past the end read as 0): 0 form (% 5), 1 generator (% 3), 2 generator
 // parameter, 3-4 the scale exponent (little endian, % 1201 - 600), then the form's bytes, then
 // the free vertex count (% 7) and 7 bytes per free vertex (kind, facet, 3 weights or edge
 // position, offset exponent and signs).
@@ -45,7 +45,7 @@
 
 namespace exactmesh::fuzz {
 
-enum class TetmeshForm : std::uint8_t { Box, Prism, BoxWithHole, Star, Count };
+enum class TetmeshForm : std::uint8_t { Box, Prism, BoxWithHole, Star, TouchingBoxes, Count };
 enum class TetmeshGenerator : std::uint8_t { Refinement, Frontal, Octree, Count };
 
 inline const char* tetmesh_form_name(TetmeshForm form) {
@@ -56,6 +56,8 @@ inline const char* tetmesh_form_name(TetmeshForm form) {
             return "prism";
         case TetmeshForm::BoxWithHole:
             return "box-with-hole";
+        case TetmeshForm::TouchingBoxes:
+            return "touching-boxes";
         default:
             return "star";
     }
@@ -164,6 +166,40 @@ inline void decode_prism(ByteReader& in, triangulation::Plc3& plc) {
         const unsigned j = (i + 1) % n;
         add_facet(plc, {bottom[i], bottom[j], top[j], top[i]});
     }
+}
+
+/// Two boxes that touch only along an edge (byte even) or only at a corner (odd): [0, a] x
+/// [0, b] x [0, c] and, from its corner (a, b, 0) or (a, b, c), a second box of its own sides.
+/// The domain's boundary is not a manifold there (the stars of the shared vertices, and of
+/// points later put on the shared edge, fall in two pieces); shared corners are one vertex.
+inline void decode_touching_boxes(ByteReader& in, triangulation::Plc3& plc) {
+    const bool along_an_edge = in.byte() % 2 == 0;
+    const double a = side(in), b = side(in), c = side(in);
+    add_box(plc, {0, 0, 0}, {a, b, c});
+    const std::array<double, 3> lo{a, b, along_an_edge ? 0.0 : c};
+    const std::array<double, 3> hi{a + side(in), b + side(in), along_an_edge ? c : c + side(in)};
+    const std::uint32_t first = plc.vertex_count();
+    add_box(plc, lo, hi);
+    // The second box's corners that coincide with the first's are renumbered to them and their
+    // copies dropped (a PLC may not repeat a point).
+    std::vector<std::uint32_t> remap(8);
+    std::vector<double> kept(plc.xyz.begin(), plc.xyz.begin() + 3 * std::size_t{first});
+    for (std::uint32_t i = 0; i < 8; ++i) {
+        const double* p = plc.point(first + i);
+        remap[i] = triangulation::kNone;
+        for (std::uint32_t v = 0; v < first; ++v) {
+            const double* q = plc.point(v);
+            if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) remap[i] = v;
+        }
+        if (remap[i] == triangulation::kNone) {
+            remap[i] = static_cast<std::uint32_t>(kept.size() / 3);
+            kept.insert(kept.end(), p, p + 3);
+        }
+    }
+    plc.xyz = std::move(kept);
+    for (std::size_t f = plc.facets.size() - 6; f < plc.facets.size(); ++f)
+        for (auto& polygon : plc.facets[f].polygons)
+            for (auto& v : polygon) v = remap[v - first];
 }
 
 /// An outer box and a box-shaped hole whose low x side lies a gap of side * 2^-(2 + byte % 44)
@@ -310,6 +346,9 @@ inline TetmeshCase decode_tetmesh_case(const std::uint8_t* data, std::size_t siz
         case TetmeshForm::BoxWithHole:
             tetmesh_detail::decode_box_with_hole(in, c.plc);
             break;
+        case TetmeshForm::TouchingBoxes:
+            tetmesh_detail::decode_touching_boxes(in, c.plc);
+            break;
         default:
             tetmesh_detail::decode_star(in, c.plc);
             break;
@@ -335,8 +374,10 @@ inline TetmeshCase decode_tetmesh_case(const std::uint8_t* data, std::size_t siz
 /// A description of the case that reproduces it: the form, the generator and its parameter,
 /// the scale, every vertex (%a) and facet.
 inline std::string describe_tetmesh_case(const TetmeshCase& c) {
-    std::string out = std::string("form ") + tetmesh_form_name(c.form) + ", generator " +
-                      tetmesh_generator_name(c.generator);
+    std::string out = "form ";
+    out += tetmesh_form_name(c.form);
+    out += ", generator ";
+    out += tetmesh_generator_name(c.generator);
     char text[200];
     if (c.generator == TetmeshGenerator::Refinement)
         std::snprintf(text, sizeof text, ", radius-edge bound %.17g", c.radius_edge_bound);
@@ -355,8 +396,10 @@ inline std::string describe_tetmesh_case(const TetmeshCase& c) {
     out += "facets (" + std::to_string(c.plc.facets.size()) + "):";
     for (const triangulation::Facet3& facet : c.plc.facets) {
         out += " [";
-        for (std::size_t i = 0; i < facet.polygons.front().size(); ++i)
-            out += (i ? " " : "") + std::to_string(facet.polygons.front()[i]);
+        for (std::size_t i = 0; i < facet.polygons.front().size(); ++i) {
+            if (i != 0) out += ' ';
+            out += std::to_string(facet.polygons.front()[i]);
+        }
         out += "]";
     }
     out += "\n";

@@ -39,8 +39,9 @@ std::vector<std::filesystem::path> saved_cases() {
 
 TEST(Generators_TetmeshFuzzCases, SeedsAndFindingsPassEveryCheck) {
     const std::vector<std::filesystem::path> paths = saved_cases();
-    ASSERT_GE(paths.size(), 24u) << "the seeds of scripts/fuzz_smoke are missing";
+    ASSERT_GE(paths.size(), 30u) << "the seeds of scripts/fuzz_smoke are missing";
     std::array<int, static_cast<std::size_t>(fz::TetmeshGenerator::Count)> meshed{};
+    std::array<int, static_cast<std::size_t>(fz::TetmeshForm::Count)> meshed_forms{};
     for (const auto& path : paths) {
         std::ifstream in(path, std::ios::binary);
         const std::vector<std::uint8_t> data{std::istreambuf_iterator<char>(in),
@@ -50,11 +51,17 @@ TEST(Generators_TetmeshFuzzCases, SeedsAndFindingsPassEveryCheck) {
         const fz::TetmeshOutcome outcome = fz::run_tetmesh_case(c);
         EXPECT_EQ(outcome.failure, "") << path << "\n" << fz::describe_tetmesh_case(c);
         EXPECT_TRUE(outcome.meshed || !outcome.error.empty()) << path;
-        if (outcome.meshed) ++meshed[static_cast<std::size_t>(c.generator)];
+        if (outcome.meshed) {
+            ++meshed[static_cast<std::size_t>(c.generator)];
+            ++meshed_forms[static_cast<std::size_t>(c.form)];
+        }
     }
     // The seeds reach the end of the pipeline with every generator, not only its errors.
     for (std::size_t g = 0; g < meshed.size(); ++g)
         EXPECT_GT(meshed[g], 0) << fz::tetmesh_generator_name(static_cast<fz::TetmeshGenerator>(g));
+    // ... and with every form (touching boxes: stars in two pieces at the shared edge or corner).
+    for (std::size_t f = 0; f < meshed_forms.size(); ++f)
+        EXPECT_GT(meshed_forms[f], 0) << fz::tetmesh_form_name(static_cast<fz::TetmeshForm>(f));
 }
 
 TEST(Generators_TetmeshFuzzCases, DecodingIsTotalAndScaled) {
