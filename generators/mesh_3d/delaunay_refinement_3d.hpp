@@ -92,7 +92,7 @@ inline double tet_volume_bound_3d(double global_bound, double region_bound) {
 inline double tet_volume_bound_3d(const triangulation::ConformingMesh3& mesh,
                                   triangulation::TetIdx t, double global_bound) {
     return tet_volume_bound_3d(global_bound,
-                               mesh.tet_max_volume.empty() ? 0.0 : mesh.tet_max_volume[t]);
+                               t < mesh.tet_max_volume.size() ? mesh.tet_max_volume[t] : 0.0);
 }
 
 /// Refines `recovered` (boundary_recovery_3d's result for `plc`, or any mesh that passes
