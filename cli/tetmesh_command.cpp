@@ -11,7 +11,9 @@
 // frontal Delaunay insertion at --size (generators/mesh_3d/frontal_delaunay_3d), followed by
 // sliver removal as well. --generator octree meshes by a 2:1 balanced octree at --size
 // (generators/mesh_3d/octree_mesh_3d: core leaves cut by templates, the band at the boundary
-// meshed by recovery and frontal insertion), followed by sliver removal.
+// meshed by recovery and frontal insertion), followed by sliver removal. Region volume bounds
+// of a .poly/.smesh (TetGen's region list) are applied by Delaunay refinement, which then runs
+// even without --radius-edge or --max-volume (as TetGen's -a does with region constraints).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -168,8 +170,12 @@ void run_tetmesh(const TetmeshArguments& arguments) {
 
     tri::BoundaryRecovery3Options options;
     options.max_steiner_points = arguments.max_steiner;
-    const bool refine =
-        !frontal && !octree && (arguments.radius_edge > 0 || arguments.max_volume > 0);
+    // Region volume bounds (boundary recovery floods them into the tetrahedra) make refinement
+    // run, as a global --max-volume does; frontal insertion follows --size only.
+    const bool region_bounds = std::any_of(plc.regions.begin(), plc.regions.end(),
+                                           [](const tri::Region3& r) { return r.max_volume > 0; });
+    const bool refine = !frontal && !octree &&
+                        (arguments.radius_edge > 0 || arguments.max_volume > 0 || region_bounds);
     gen::DelaunayRefinement3Options refinement;
     refinement.radius_edge_bound = arguments.radius_edge > 0 ? arguments.radius_edge : 2.0;
     refinement.max_volume = arguments.max_volume;
@@ -239,6 +245,11 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     // it too.
     gen::RefinementQuality3 quality;
     std::vector<std::string> warnings;
+    if (frontal && region_bounds) {
+        warnings.push_back(source +
+                           ": the region volume bounds are applied by Delaunay refinement only; "
+                           "--generator frontal follows --size and ignores them");
+    }
     if (refine) {
         quality = gen::check_refinement_quality_3d(conforming, refinement);
         const std::uint64_t over = quality.over_bound + quality.over_volume;
@@ -366,13 +377,15 @@ void add_tetmesh_command(CLI::App& app) {
         ->add_option("--radius-edge", arguments->radius_edge,
                      "Delaunay refinement (generators/mesh_3d/delaunay_refinement_3d): split "
                      "every tetrahedron whose circumradius / shortest edge exceeds B (TetGen "
-                     "-q; 2 when only --max-volume is given). Without --radius-edge and "
-                     "--max-volume the mesh is the recovered one, unrefined")
+                     "-q; 2 when only volume bounds are given). Without --radius-edge, "
+                     "--max-volume and region volume bounds in the input the mesh is the "
+                     "recovered one, unrefined")
         ->type_name("B")
         ->check(CLI::PositiveNumber);
     command
         ->add_option("--max-volume", arguments->max_volume,
-                     "Delaunay refinement: split every tetrahedron of larger volume (TetGen -a)")
+                     "Delaunay refinement: split every tetrahedron of larger volume (TetGen -a); "
+                     "region volume bounds of the input apply too, the smaller of the two")
         ->type_name("V")
         ->check(CLI::PositiveNumber);
     command

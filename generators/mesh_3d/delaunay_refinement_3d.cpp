@@ -148,13 +148,19 @@ class Refinement final : public RestrictedDelaunay3 {
 
     void on_created(TetIdx t) override { tet_queue_.push_back({t, m_.tet(t), 0}); }
 
-    bool is_bad(const std::array<VertIdx, 4>& c) const {
+    /// Tetrahedron t's volume bound (0: none): the global one and its region's, the smaller.
+    double volume_bound(TetIdx t) const {
+        return tet_volume_bound_3d(options_.max_volume,
+                                   max_volumes_.empty() ? 0.0 : max_volumes_[t]);
+    }
+
+    /// Whether tetrahedron t (corners c) exceeds its radius-edge or volume bound (exact).
+    bool is_bad(TetIdx t, const std::array<VertIdx, 4>& c) const {
         const double *a = point(c[0]), *b = point(c[1]), *d = point(c[2]), *e = point(c[3]);
         if (predicates::compare_radius_edge_3d(a, b, d, e, options_.radius_edge_bound) ==
             Sign::Positive)
             return true;
-        return options_.max_volume > 0 &&
-               predicates::compare_tet_volume_3d(a, b, d, e, options_.max_volume) == Sign::Positive;
+        return over_volume(t, c);
     }
 
     bool unresolvable(const std::array<VertIdx, 4>& c) const {
@@ -162,10 +168,10 @@ class Refinement final : public RestrictedDelaunay3 {
         return finer_than_doubles_resolve(p);
     }
 
-    bool over_volume(const std::array<VertIdx, 4>& c) const {
-        return options_.max_volume > 0 &&
-               predicates::compare_tet_volume_3d(point(c[0]), point(c[1]), point(c[2]), point(c[3]),
-                                                 options_.max_volume) == Sign::Positive;
+    bool over_volume(TetIdx t, const std::array<VertIdx, 4>& c) const {
+        const double bound = volume_bound(t);
+        return bound > 0 && predicates::compare_tet_volume_3d(point(c[0]), point(c[1]), point(c[2]),
+                                                              point(c[3]), bound) == Sign::Positive;
     }
 
     bool split_tet(TetIdx t) {
@@ -234,8 +240,8 @@ DelaunayRefinement3Result Refinement::run() {
         const QueuedTet next = tet_queue_.front();
         tet_queue_.pop_front();
         const auto& corners = next.corners;
-        if (m_.is_dead(next.t) || m_.tet(next.t) != corners || !is_bad(corners)) continue;
-        if (!over_volume(corners) && incidence_.spared(corners)) {
+        if (m_.is_dead(next.t) || m_.tet(next.t) != corners || !is_bad(next.t, corners)) continue;
+        if (!over_volume(next.t, corners) && incidence_.spared(corners)) {
             ++counters_.small_angle_tets;
             continue;
         }
@@ -259,18 +265,35 @@ DelaunayRefinement3Result Refinement::run() {
     return result;
 }
 
-/// bound exceeds the budget. Volumes are summed on coordinates scaled by one power of two and
-/// compared in logarithms, so nothing overflows or underflows at 2^+-600.
+/// A volume bound that asks for far more points than the budget fails at once with the
+/// estimate, not after the budget's insertions (each exact, minutes at 10^6): every tetrahedron
+/// is at most its bound, so the mesh has at least the sum over the recovered tetrahedra of
+/// volume / bound of them (with per-region bounds each tetrahedron divides by its own; one
+/// without a bound counts nothing), and a Delaunay tetrahedralization has about 6.5 per vertex;
+/// refused when a sixth of that lower bound exceeds the budget. Volumes are taken on
+/// coordinates scaled by one power of two, each quotient kept as a double times a power of two
+/// and summed at a common exponent, the total compared in logarithms: nothing overflows or
+/// underflows at 2^+-600, whatever the bounds' magnitudes.
 void refuse_volume_bound_far_over_budget(const ConformingMesh3& recovered,
                                          const DelaunayRefinement3Options& options) {
-    if (!(options.max_volume > 0)) return;
+    const bool region_bounds =
+        std::any_of(recovered.tet_max_volume.begin(), recovered.tet_max_volume.end(),
+                    [](double bound) { return bound > 0; });
+    if (!(options.max_volume > 0) && !region_bounds) return;
     const auto& m = recovered.mesh;
     double largest = 0;
     for (const double x : m.xyz) largest = std::max(largest, std::fabs(x));
     if (!(largest > 0) || !std::isfinite(largest)) return;
     const int e = std::ilogb(largest);
-    double six_volumes = 0;  // sum of |det| over the tetrahedra, coordinates scaled by 2^-e
+    // tets = sum of (six_volume_t / 6 / mantissa_t) * 2^(3e - exponent_t), bound_t =
+    // mantissa_t * 2^exponent_t; kept as sum * 2^sum_exponent.
+    double sum = 0;
+    int sum_exponent = 0;
+    double smallest_bound = 0;
     for (TetIdx t = 0; t < m.tet_count(); ++t) {
+        const double bound = tet_volume_bound_3d(recovered, t, options.max_volume);
+        if (!(bound > 0)) continue;
+        if (!(smallest_bound > 0) || bound < smallest_bound) smallest_bound = bound;
         double q[4][3];
         for (unsigned k = 0; k < 4; ++k) {
             const double* p = m.point(m.tets[4 * std::size_t{t} + k]);
@@ -282,21 +305,44 @@ void refuse_volume_bound_far_over_budget(const ConformingMesh3& recovered,
             v[i] = q[2][i] - q[0][i];
             w[i] = q[3][i] - q[0][i];
         }
-        six_volumes +=
+        const double six_volume =
             std::fabs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
                       u[2] * (v[0] * w[1] - v[1] * w[0]));
+        if (!(six_volume > 0)) continue;
+        int bound_exponent = 0;
+        const double mantissa = std::frexp(bound, &bound_exponent);
+        const double term = six_volume / 6 / mantissa;
+        const int term_exponent = 3 * e - bound_exponent;
+        if (!(sum > 0)) {
+            sum = term;
+            sum_exponent = term_exponent;
+        } else if (term_exponent > sum_exponent) {
+            sum = std::ldexp(sum, sum_exponent - term_exponent) + term;
+            sum_exponent = term_exponent;
+        } else {
+            sum += std::ldexp(term, term_exponent - sum_exponent);
+        }
     }
-    if (!(six_volumes > 0)) return;
+    if (!(sum > 0)) return;
     const std::uint64_t budget = steiner_budget_3d(recovered, options.max_steiner_points);
-    // log2(tetrahedra) >= log2(six_volumes / 6) + 3e - log2(max_volume).
-    const double log2_tets = std::log2(six_volumes / 6) + 3.0 * e - std::log2(options.max_volume);
+    const double log2_tets = std::log2(sum) + sum_exponent;
     const double points = std::exp2(std::min(log2_tets, 1000.0)) / 6.5;
     if (points > 6.0 * static_cast<double>(budget)) {
+        std::string bounds;
+        if (!region_bounds) {
+            bounds = "the volume bound " + format_number(options.max_volume) + " asks";
+        } else if (options.max_volume > 0) {
+            bounds = "the volume bound " + format_number(options.max_volume) +
+                     " with the region volume bounds (smallest in force " +
+                     format_number(smallest_bound) + ") ask";
+        } else {
+            bounds =
+                "the region volume bounds (smallest " + format_number(smallest_bound) + ") ask";
+        }
         throw InputError("delaunay refinement 3d: Steiner point budget of " +
-                         std::to_string(budget) + " exceeded at once: the volume bound " +
-                         format_number(options.max_volume) + " asks for about " +
+                         std::to_string(budget) + " exceeded at once: " + bounds + " for about " +
                          format_approximate(points, 3) +
-                         " Steiner points (domain volume / bound / 6.5 per vertex); raise the "
+                         " Steiner points (sum of volume / bound / 6.5 per vertex); raise the "
                          "bound or the budget");
     }
 }
@@ -326,6 +372,17 @@ DelaunayRefinement3Result delaunay_refinement_3d(const Plc3& plc, ConformingMesh
     if (!std::isfinite(options.max_volume)) {
         throw InputError("delaunay refinement 3d: the volume bound must be finite");
     }
+    if (!recovered.tet_max_volume.empty()) {
+        if (recovered.tet_max_volume.size() != recovered.mesh.tet_count()) {
+            throw InputError(
+                "delaunay refinement 3d: the region volume bounds need one value per "
+                "tetrahedron");
+        }
+        for (const double bound : recovered.tet_max_volume) {
+            if (!std::isfinite(bound))
+                throw InputError("delaunay refinement 3d: a region volume bound is not finite");
+        }
+    }
     refuse_volume_bound_far_over_budget(recovered, options);
     const std::uint64_t budget = steiner_budget_3d(recovered, options.max_steiner_points);
     Refinement refinement(plc, std::move(recovered), options, budget);
@@ -342,8 +399,8 @@ RefinementQuality3 check_refinement_quality_3d(const ConformingMesh3& mesh,
                                        m.tets[4 * std::size_t{t} + 2],
                                        m.tets[4 * std::size_t{t} + 3]};
         const double *a = m.point(c[0]), *b = m.point(c[1]), *d = m.point(c[2]), *e = m.point(c[3]);
-        if (options.max_volume > 0 &&
-            predicates::compare_tet_volume_3d(a, b, d, e, options.max_volume) == Sign::Positive)
+        const double bound = tet_volume_bound_3d(mesh, t, options.max_volume);
+        if (bound > 0 && predicates::compare_tet_volume_3d(a, b, d, e, bound) == Sign::Positive)
             ++report.over_volume;
         if (predicates::compare_radius_edge_3d(a, b, d, e, options.radius_edge_bound) !=
             Sign::Positive)

@@ -41,7 +41,9 @@ namespace exactmesh::generators {
 struct DelaunayRefinement3Options {
     /// B: tetrahedra with circumradius / shortest edge > B are split (> 0; TetGen -q's 2).
     double radius_edge_bound = 2.0;
-    /// Tetrahedra of larger volume are split; <= 0: no bound.
+    /// Tetrahedra of larger volume are split; <= 0: no bound. The recovered mesh's per-region
+    /// bounds (ConformingMesh3::tet_max_volume, from Region3::max_volume) apply as well: each
+    /// tetrahedron is held to the smaller of the two that are set (tet_volume_bound_3d).
     double max_volume = 0;
     /// Most Steiner points added by refinement; 0 takes 1,000 per input vertex plus 10^6.
     /// Exceeding it raises InputError naming the budget.
@@ -76,10 +78,30 @@ struct DelaunayRefinement3Result {
     DelaunayRefinement3Counters counters;
 };
 
+/// The volume bound of one tetrahedron: the smaller of the global bound and its region's bound,
+/// each only when > 0 (TetGen's -a with region volume constraints); 0 when neither is set. The
+/// smaller of two doubles is one of them, so the exact volume test sees the bound as given.
+inline double tet_volume_bound_3d(double global_bound, double region_bound) {
+    if (!(region_bound > 0)) return global_bound > 0 ? global_bound : 0;
+    if (!(global_bound > 0)) return region_bound;
+    return global_bound < region_bound ? global_bound : region_bound;
+}
+
+/// The volume bound of tetrahedron t of `mesh` under `global_bound` (tet_volume_bound_3d with
+/// its region's bound, when the mesh carries per-region bounds).
+inline double tet_volume_bound_3d(const triangulation::ConformingMesh3& mesh,
+                                  triangulation::TetIdx t, double global_bound) {
+    return tet_volume_bound_3d(global_bound,
+                               t < mesh.tet_max_volume.size() ? mesh.tet_max_volume[t] : 0.0);
+}
+
 /// Refines `recovered` (boundary_recovery_3d's result for `plc`, or any mesh that passes
-/// check_boundary_conformity_3d for it) as above. Vertex numbering: the recovered mesh's
-/// vertices keep their indices, refinement's follow them (VertexFeature3::Volume inside).
-/// @throws InputError when the options are out of range or the Steiner budget is exceeded.
+/// check_boundary_conformity_3d for it) as above; per-region volume bounds carried by
+/// `recovered` (tet_max_volume) are applied with options.max_volume. Vertex numbering: the
+/// recovered mesh's vertices keep their indices, refinement's follow them (VertexFeature3::Volume
+/// inside).
+/// @throws InputError when the options or a region bound are out of range, or the Steiner budget
+/// is exceeded (at once when the volume bounds' estimate exceeds it).
 DelaunayRefinement3Result delaunay_refinement_3d(const triangulation::Plc3& plc,
                                                  triangulation::ConformingMesh3 recovered,
                                                  const DelaunayRefinement3Options& options = {});
@@ -90,11 +112,12 @@ struct RefinementQuality3 {
     std::uint64_t small_angle = 0;  ///< tetrahedra with radius-edge > B spared by the rule
     /// tetrahedra with radius-edge > B spared for an edge finer than doubles resolve there
     std::uint64_t unresolvable = 0;
-    std::uint64_t over_volume = 0;  ///< tetrahedra over the volume bound (0 when none)
+    std::uint64_t over_volume = 0;  ///< tetrahedra over their volume bound (0 when none)
 };
 
-/// Exact check of every tetrahedron of `mesh` against B (and the volume bound when > 0), with
-/// the small-input-angle rule of delaunay_refinement_3d (`mesh` as it returns it).
+/// Exact check of every tetrahedron of `mesh` against B and its volume bound (the global one
+/// and its region's, tet_volume_bound_3d), with the small-input-angle rule of
+/// delaunay_refinement_3d (`mesh` as it returns it).
 RefinementQuality3 check_refinement_quality_3d(const triangulation::ConformingMesh3& mesh,
                                                const DelaunayRefinement3Options& options);
 

@@ -173,6 +173,7 @@ class RestrictedDelaunay3 {
             }
         }
         attributes_ = std::move(out_.tet_attributes);
+        max_volumes_ = std::move(out_.tet_max_volume);
         vertex_tet_.assign(n, kNone);
         for (TetIdx t = 0; t < count; ++t)
             for (unsigned k = 0; k < 4; ++k) vertex_tet_[m_.vertex(t, k)] = t;
@@ -222,6 +223,9 @@ class RestrictedDelaunay3 {
     DelaunayRefinement3Counters counters_;
 
     std::vector<double> attributes_;
+    /// Per tetrahedron slot, its region's volume bound (<= 0: none); empty when no region has
+    /// one. Carried through cavities like attributes_.
+    std::vector<double> max_volumes_;
     std::vector<TetIdx> vertex_tet_;
     /// Vertices whose star falls in several pieces (the domain touches itself there: two boxes
     /// sharing only an edge or a corner): a live tetrahedron of each piece but vertex_tet_'s.
@@ -657,6 +661,7 @@ class RestrictedDelaunay3 {
             std::array<VertIdx, 3> corners;
             FaceIdx outside;
             double attribute;
+            double max_volume;
         };
         std::vector<BoundaryFace> faces;
         for (const TetIdx t : cavity_) {
@@ -667,7 +672,8 @@ class RestrictedDelaunay3 {
                 const unsigned* lf = kFaceVertex[k];
                 faces.push_back({{m_.vertex(t, lf[0]), m_.vertex(t, lf[1]), m_.vertex(t, lf[2])},
                                  g,
-                                 attributes_.empty() ? 0.0 : attributes_[t]});
+                                 attributes_.empty() ? 0.0 : attributes_[t],
+                                 max_volumes_.empty() ? 0.0 : max_volumes_[t]});
             }
         }
         for (const TetIdx t : cavity_) {
@@ -682,6 +688,9 @@ class RestrictedDelaunay3 {
             if (attributes_.size() < m_.tet_slots() && !attributes_.empty())
                 attributes_.resize(m_.tet_slots(), 0.0);
             if (!attributes_.empty()) attributes_[t] = f.attribute;
+            if (max_volumes_.size() < m_.tet_slots() && !max_volumes_.empty())
+                max_volumes_.resize(m_.tet_slots(), 0.0);
+            if (!max_volumes_.empty()) max_volumes_[t] = f.max_volume;
             const std::size_t s = 4 * std::size_t{t};
             m_.tv[s] = f.corners[0];
             m_.tv[s + 1] = f.corners[1];
@@ -1122,6 +1131,7 @@ class RestrictedDelaunay3 {
                                                            : new_index[triangulation::tet_of(g)]);
             }
             if (!attributes_.empty()) result.tet_attributes.push_back(attributes_[t]);
+            if (!max_volumes_.empty()) result.tet_max_volume.push_back(max_volumes_[t]);
         }
         result.mesh.xyz = m_.xyz;
         result.input_vertex_count = out_.input_vertex_count;
@@ -1147,11 +1157,6 @@ class RestrictedDelaunay3 {
         }
         return result;
     }
-
-    /// A volume bound that asks for far more points than the budget fails at once with the
-    /// estimate, not after the budget's insertions (each exact, minutes at 10^6): every tetrahedron
-    /// is at most max_volume, so the mesh has at least domain volume / max_volume of them, and a
-    /// Delaunay tetrahedralization has about 6.5 per vertex; refused when a sixth of that lower
 };
 
 }  // namespace exactmesh::generators::restricted_3d

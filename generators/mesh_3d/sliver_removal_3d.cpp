@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "generators/mesh_3d/delaunay_refinement_3d.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/tet_quality_3d.hpp"
@@ -47,20 +48,28 @@ Dihedral smallest_of(const std::vector<Dihedral>& angles) {
     return best;
 }
 
-/// The working state: the mesh, the region attribute per slot, the bounds.
+/// The working state: the mesh, the region attribute and volume bound per slot, the bounds.
 struct Work {
     TetMesh3 mesh;
-    std::vector<double> slot_attributes;  ///< per slot; empty without regions
+    std::vector<double> slot_attributes;   ///< per slot; empty without regions
+    std::vector<double> slot_max_volumes;  ///< per slot; empty when no region has a bound
     const SliverRemoval3Options* options = nullptr;
     double threshold_radians = 0;
 
-    bool over_bounds(const TetCorners& p) const {
+    /// The volume bound of the tetrahedron in slot t, or of one made from it by a swap (the
+    /// global bound and its region's, the smaller; 0: none), as delaunay_refinement_3d rules.
+    double volume_bound(TetIdx t) const {
+        return tet_volume_bound_3d(options->max_volume,
+                                   t < slot_max_volumes.size() ? slot_max_volumes[t] : 0.0);
+    }
+
+    /// Whether corners p exceed B or the volume bound `max_volume` (> 0; else none), exactly.
+    bool over_bounds(const TetCorners& p, double max_volume) const {
         if (predicates::compare_radius_edge_3d(p[0], p[1], p[2], p[3],
                                                options->radius_edge_bound) == Sign::Positive)
             return true;
-        return options->max_volume > 0 &&
-               predicates::compare_tet_volume_3d(p[0], p[1], p[2], p[3], options->max_volume) ==
-                   Sign::Positive;
+        return max_volume > 0 && predicates::compare_tet_volume_3d(p[0], p[1], p[2], p[3],
+                                                                   max_volume) == Sign::Positive;
     }
 
     /// Whether tetrahedron t has a dihedral angle below the threshold (rounded: a selection,
@@ -152,22 +161,30 @@ std::uint64_t swap_pass(Work& work, const tri::SwapLocks3& locks, SliverRemoval3
     constraints.locks = &locks;
     constraints.seeds = seeds;
     if (work.options->keep_bounds) {
+        // The old tetrahedra lie in one region (see on_flip below): the new ones are held to
+        // its volume bound.
         constraints.accept = [&work](const tri::FlipPlan3& plan) {
             unsigned before = 0, after = 0;
             for (unsigned i = 0; i < plan.old_count; ++i)
-                before += work.over_bounds(corners_of(work.mesh, work.mesh.tet(plan.old[i])));
+                before += work.over_bounds(corners_of(work.mesh, work.mesh.tet(plan.old[i])),
+                                           work.volume_bound(plan.old[i]));
+            const double made_bound = work.volume_bound(plan.old[0]);
             for (unsigned i = 0; i < plan.made_count; ++i)
-                after += work.over_bounds(corners_of(work.mesh, plan.made[i]));
+                after += work.over_bounds(corners_of(work.mesh, plan.made[i]), made_bound);
             return after <= before;
         };
     }
-    if (!work.slot_attributes.empty()) {
+    if (!work.slot_attributes.empty() || !work.slot_max_volumes.empty()) {
         // The old tetrahedra of a swap share faces that are no subfaces, so they lie in one
-        // region: the new ones take its attribute (slot created[0] is old[0]'s, unchanged).
+        // region: the new ones take its attribute and volume bound (slot created[0] is old[0]'s,
+        // unchanged).
         constraints.on_flip = [&work](const tri::FlipPlan3&, const std::vector<TetIdx>& created) {
-            work.slot_attributes.resize(work.mesh.tet_slots(), 0.0);
-            const double attribute = work.slot_attributes[created.front()];
-            for (const TetIdx t : created) work.slot_attributes[t] = attribute;
+            for (std::vector<double>* values : {&work.slot_attributes, &work.slot_max_volumes}) {
+                if (values->empty()) continue;
+                values->resize(work.mesh.tet_slots(), 0.0);
+                const double value = (*values)[created.front()];
+                for (const TetIdx t : created) (*values)[t] = value;
+            }
         };
     }
     const tri::EdgeFaceSwapCounters s =
@@ -385,7 +402,7 @@ unsigned star_over_bounds(const Work& work, const std::vector<TetIdx>& star, Ver
     for (const TetIdx t : star) {
         TetCorners p = corners_of(work.mesh, work.mesh.tet(t));
         p[work.mesh.slot_of(t, v)] = at;
-        over += work.over_bounds(p);
+        over += work.over_bounds(p, work.volume_bound(t));
     }
     return over;
 }
@@ -487,12 +504,16 @@ SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
         throw InputError("sliver removal: the bounds must be finite and B > 0");
     if (conforming.vertex_feature.size() != conforming.mesh.vertex_count())
         throw InputError("sliver removal: one vertex feature per vertex is needed");
+    if (!conforming.tet_max_volume.empty() &&
+        conforming.tet_max_volume.size() != conforming.mesh.tet_count())
+        throw InputError("sliver removal: one region volume bound per tetrahedron is needed");
 
     Work work;
     work.options = &options;
     work.threshold_radians = static_cast<double>(options.threshold_degrees) * kPi / 180;
     work.mesh = tri::make_tet_mesh_3d(conforming.mesh);
     work.slot_attributes = conforming.tet_attributes;
+    work.slot_max_volumes = conforming.tet_max_volume;
     SliverRemoval3Result result;
     SliverRemoval3Counters& c = result.counters;
     c.slivers_before = work.bad_tets().size();
@@ -505,16 +526,21 @@ SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
     }
     c.slivers_after = work.bad_tets().size();
 
-    // Back to the exchange type: live slots in order, attributes alike.
-    std::vector<double> attributes;
-    if (!work.slot_attributes.empty()) {
-        work.slot_attributes.resize(work.mesh.tet_slots(), 0.0);
+    // Back to the exchange type: live slots in order, attributes and volume bounds alike.
+    const auto live_values = [&work](std::vector<double>& slots) {
+        std::vector<double> values;
+        if (slots.empty()) return values;
+        slots.resize(work.mesh.tet_slots(), 0.0);
         for (TetIdx t = 0; t < work.mesh.tet_slots(); ++t) {
-            if (!work.mesh.is_dead(t)) attributes.push_back(work.slot_attributes[t]);
+            if (!work.mesh.is_dead(t)) values.push_back(slots[t]);
         }
-    }
+        return values;
+    };
+    std::vector<double> attributes = live_values(work.slot_attributes);
+    std::vector<double> max_volumes = live_values(work.slot_max_volumes);
     conforming.mesh = tri::to_tetrahedralization_3d(work.mesh);
     conforming.tet_attributes = std::move(attributes);
+    conforming.tet_max_volume = std::move(max_volumes);
     result.mesh = std::move(conforming);
     return result;
 }

@@ -20,7 +20,9 @@
 //     star's smallest dihedral angle strictly increases (exact, angle_comparisons_3d).
 // Decision on the refinement's bounds: with `keep_bounds` (the default), a swap or a move is
 // also refused when it raises the number of its tetrahedra over the radius-edge bound B (or
-// the volume bound) above the number among the ones it replaces (exact, tet_quality_3d). So the
+// the volume bound: the global one and the tetrahedron's region's, the smaller, as
+// delaunay_refinement_3d applies them) above the number among the ones it replaces (exact,
+// tet_quality_3d). So the
 // mesh's count of tetrahedra over the bounds never grows: a mesh that met the bounds still
 // does. It is no longer Delaunay; the input vertices, the subfaces, the subsegments and the
 // region attributes are kept. Termination: every swap and move strictly raises the sorted
@@ -45,7 +47,7 @@ struct SliverRemoval3Options {
     /// Keep the count of tetrahedra over the bounds below from growing (see above).
     bool keep_bounds = true;
     double radius_edge_bound = 2.0;  ///< B (> 0)
-    double max_volume = 0;           ///< <= 0: no volume bound
+    double max_volume = 0;           ///< <= 0: no global volume bound (region bounds still apply)
 };
 
 struct SliverRemoval3Counters {

@@ -1443,6 +1443,72 @@ tetmesh_refine() {
   [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
 }
 
+# Two unit cubes side by side (an internal facet at x = 1), TetGen's region list with a volume
+# bound per region: write_two_regions_poly FILE LEFT_BOUND RIGHT_BOUND.
+write_two_regions_poly() {
+  local file=$1 left_bound=$2 right_bound=$3
+  {
+    printf '# two unit cubes, an internal facet at x = 1, two regions\n12 3 0 0\n'
+    local i=1 x y z
+    for z in 0 1; do for y in 0 1; do for x in 0 1 2; do
+      printf '%d %d %d %d\n' "$i" "$x" "$y" "$z"; i=$((i + 1))
+    done; done; done
+    printf '11 1\n'
+    local f
+    for f in '1 4 10 7 1' '2 5 11 8 3' '3 6 12 9 2' '1 2 8 7 1' '2 3 9 8 1' '4 5 11 10 1' \
+      '5 6 12 11 1' '1 2 5 4 1' '2 3 6 5 1' '7 8 11 10 1' '8 9 12 11 1'; do
+      set -- $f
+      printf '1 0 %d\n4 %d %d %d %d\n' "$5" "$1" "$2" "$3" "$4"
+    done
+    printf '0\n2\n1 0.5 0.5 0.5 1 %s\n2 1.5 0.5 0.5 2 %s\n' "$left_bound" "$right_bound"
+  } >"$file"
+}
+
+# region_volumes NODE ELE: "<tets left> <tets right> <largest volume left> <largest right>", the
+# side by the centroid's x (rounded volumes: a report, the exact check is the command's own).
+region_volumes() {
+  awk 'FNR == 1 || /^#/ { next }
+    FILENAME ~ /node$/ { X[$1] = $2; Y[$1] = $3; Z[$1] = $4; next }
+    { a = $2; b = $3; c = $4; d = $5
+      ux = X[b] - X[a]; uy = Y[b] - Y[a]; uz = Z[b] - Z[a]
+      vx = X[c] - X[a]; vy = Y[c] - Y[a]; vz = Z[c] - Z[a]
+      wx = X[d] - X[a]; wy = Y[d] - Y[a]; wz = Z[d] - Z[a]
+      v = (ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)) / 6
+      if (v < 0) v = -v
+      k = (X[a] + X[b] + X[c] + X[d]) / 4 < 1 ? 0 : 1
+      n[k]++; if (v > m[k]) m[k] = v }
+    END { printf "%d %d %.17g %.17g\n", n[0], n[1], m[0], m[1] }' "$1" "$2"
+}
+
+tetmesh_regions() {
+  # Region volume bounds (TetGen's -a with region constraints): refinement runs without
+  # --max-volume, each region within its own bound, checked exactly before writing.
+  write_two_regions_poly "$work/two.poly" 0.001 0.01
+  run 0 tetmesh "$work/two.poly" -o "$work/r.ele" --stats || return
+  grep -Eq '^refinement_insertions: [1-9][0-9]*$' "$work/out" || fail "region bounds: no refinement: $(cat "$work/out")"
+  grep -q '^over_bound_tets: 0$' "$work/out" || fail "region bounds: tetrahedra over them: $(cat "$work/out")"
+  local left right left_max right_max
+  read -r left right left_max right_max < <(region_volumes "$work/r.node" "$work/r.ele")
+  awk -v m="$left_max" 'BEGIN { exit !(m <= 0.001 * (1 + 1e-9)) }' || fail "left region: a tetrahedron of volume $left_max"
+  awk -v m="$right_max" 'BEGIN { exit !(m <= 0.01 * (1 + 1e-9)) }' || fail "right region: a tetrahedron of volume $right_max"
+  [[ $left -gt $((4 * right)) ]] || fail "the fine region has $left tetrahedra, the coarse one $right"
+  # A global bound applies on top: the smaller of the two in each region.
+  run 0 tetmesh "$work/two.poly" -o "$work/g.ele" --max-volume 0.004 --stats || return
+  grep -q '^over_bound_tets: 0$' "$work/out" || fail "global + region bounds: tetrahedra over them"
+  read -r left right left_max right_max < <(region_volumes "$work/g.node" "$work/g.ele")
+  awk -v m="$right_max" 'BEGIN { exit !(m <= 0.004 * (1 + 1e-9)) }' || fail "--max-volume 0.004: a right tetrahedron of volume $right_max"
+  awk -v m="$left_max" 'BEGIN { exit !(m <= 0.001 * (1 + 1e-9)) }' || fail "--max-volume 0.004: a left tetrahedron of volume $left_max"
+  # Frontal insertion follows --size and says it ignores the region bounds.
+  run 0 tetmesh "$work/two.poly" --generator frontal --size 0.3 -o "$work/f.ele" || return
+  grep -q 'warning: .*region volume bounds are applied by Delaunay refinement only' "$work/err" ||
+    fail "frontal: no warning about the region bounds: $(cat "$work/err")"
+  # A region bound far over the budget is refused at once with the estimate.
+  write_two_regions_poly "$work/tiny.poly" 1e-12 0.01
+  expect_error 2 'exceeded at once: the region volume bounds \(smallest 1e-12\) ask for about 1\.54e\+11' \
+    tetmesh "$work/tiny.poly" -o "$work/x.ele"
+  [[ ! -e "$work/x.ele" ]] || fail "x.ele written for a refused bound"
+}
+
 tetmesh_frontal() {
   write_cube_poly "$work/cube.poly"
   # Frontal insertion at a uniform size, then sliver removal; the exact conformity check runs
@@ -1512,7 +1578,7 @@ case "$case_name" in
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
-    mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine | \
+    mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine | tetmesh_regions | \
     tetmesh_frontal | tetmesh_octree | threads)
     "$case_name" ;;
   *)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Small PLCs shared by the 3D tests (boundary recovery, Delaunay refinement): an axis-aligned
-// box, scaling by a power of two, random convex and random star-shaped polyhedra.
+// box, a box cut into two regions with volume bounds, scaling by a power of two, random convex
+// and random star-shaped polyhedra.
 #pragma once
 
 #include <array>
@@ -77,7 +78,34 @@ inline Plc3 cubes_touching(bool along_an_edge) {
     return plc;
 }
 
-/// The PLC scaled by 2^exponent (vertices, hole and region points).
+/// The box [0, 2] x [0, 1] x [0, 1] cut by an internal facet at x = 1 (marker 3) into two unit
+/// cubes: region attribute 1 with volume bound `left_bound` on the left, attribute 2 with
+/// `right_bound` on the right (<= 0: no bound).
+inline Plc3 two_regions_box(double left_bound, double right_bound) {
+    Plc3 plc;
+    // Vertex 6 * z + 3 * y + i is (i, y, z).
+    for (int z = 0; z < 2; ++z)
+        for (int y = 0; y < 2; ++y)
+            for (int i = 0; i < 3; ++i)
+                plc.xyz.insert(plc.xyz.end(), {static_cast<double>(i), static_cast<double>(y),
+                                               static_cast<double>(z)});
+    const auto v = [](int i, int y, int z) { return static_cast<VertIdx>(6 * z + 3 * y + i); };
+    plc.facets.push_back({{{v(0, 0, 0), v(0, 1, 0), v(0, 1, 1), v(0, 0, 1)}}, {}, 1});
+    plc.facets.push_back({{{v(2, 0, 0), v(2, 0, 1), v(2, 1, 1), v(2, 1, 0)}}, {}, 1});
+    plc.facets.push_back({{{v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1)}}, {}, 3});
+    for (int i = 0; i < 2; ++i) {
+        plc.facets.push_back({{{v(i, 0, 0), v(i + 1, 0, 0), v(i + 1, 0, 1), v(i, 0, 1)}}, {}, 1});
+        plc.facets.push_back({{{v(i, 1, 0), v(i, 1, 1), v(i + 1, 1, 1), v(i + 1, 1, 0)}}, {}, 1});
+        plc.facets.push_back({{{v(i, 0, 0), v(i, 1, 0), v(i + 1, 1, 0), v(i + 1, 0, 0)}}, {}, 1});
+        plc.facets.push_back({{{v(i, 0, 1), v(i + 1, 0, 1), v(i + 1, 1, 1), v(i, 1, 1)}}, {}, 1});
+    }
+    plc.regions.push_back({0.5, 0.5, 0.5, 1, left_bound});
+    plc.regions.push_back({1.5, 0.5, 0.5, 2, right_bound});
+    return plc;
+}
+
+/// The PLC scaled by 2^exponent (vertices, hole and region points; region volume bounds by
+/// 2^(3 exponent)).
 inline Plc3 scaled(Plc3 plc, int exponent) {
     for (double& x : plc.xyz) x = std::ldexp(x, exponent);
     for (double& x : plc.holes) x = std::ldexp(x, exponent);
@@ -87,6 +115,7 @@ inline Plc3 scaled(Plc3 plc, int exponent) {
         r.x = std::ldexp(r.x, exponent);
         r.y = std::ldexp(r.y, exponent);
         r.z = std::ldexp(r.z, exponent);
+        if (r.max_volume > 0) r.max_volume = std::ldexp(r.max_volume, 3 * exponent);
     }
     return plc;
 }

@@ -38,6 +38,10 @@ struct ConformingMesh3 {
     std::vector<std::uint32_t> subface_facet;
     /// #T region attribute per tetrahedron (0 outside every region); empty without regions.
     std::vector<double> tet_attributes;
+    /// #T volume bound per tetrahedron, its region's Region3::max_volume (<= 0: none, as outside
+    /// every region); empty when no region has a bound. Delaunay refinement applies it (TetGen's
+    /// -a with region volume constraints), together with a global bound when one is given.
+    std::vector<double> tet_max_volume;
 };
 
 }  // namespace exactmesh::triangulation

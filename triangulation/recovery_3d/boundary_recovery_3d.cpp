@@ -580,17 +580,28 @@ class Recovery {
         return kNone;
     }
 
+    /// A region's values, written into every tetrahedron a flood reaches.
+    struct RegionValues {
+        std::vector<double>* attributes;
+        std::vector<double>* max_volumes;  ///< nullptr: no region has a bound
+        double attribute;
+        double max_volume;
+    };
+
     /// Marks every tetrahedron reached from the seeds without crossing a subface.
     void flood(std::vector<TetIdx> stack, const FaceSet& subface_set,
-               std::vector<std::uint8_t>& mark, std::uint8_t value, std::vector<double>* attributes,
-               double attribute) const {
+               std::vector<std::uint8_t>& mark, std::uint8_t value,
+               const RegionValues* region = nullptr) const {
         const auto& m = mesh_.mesh;
         while (!stack.empty()) {
             const TetIdx t = stack.back();
             stack.pop_back();
             if (mark[t] == value) continue;
             mark[t] = value;
-            if (attributes != nullptr) (*attributes)[t] = attribute;
+            if (region != nullptr) {
+                (*region->attributes)[t] = region->attribute;
+                if (region->max_volumes != nullptr) (*region->max_volumes)[t] = region->max_volume;
+            }
             for (unsigned k = 0; k < 4; ++k) {
                 const TetIdx n = m.neighbors[4 * t + k];
                 if (n == kNone || mark[n] == value) continue;
@@ -624,17 +635,26 @@ class Recovery {
             const TetIdx t = locate(&plc_.holes[h]);
             if (t != kNone) seeds.push_back(t);
         }
-        flood(seeds, subface_set, removed, 1, nullptr, 0);
+        flood(seeds, subface_set, removed, 1);
+        // Region attributes and volume bounds by the same flood (a later region point in the
+        // same region overrides an earlier one, as TetGen does).
         std::vector<double> attributes;
+        std::vector<double> max_volumes;
         if (!plc_.regions.empty()) {
             attributes.assign(count, 0.0);
+            const bool bounded =
+                std::any_of(plc_.regions.begin(), plc_.regions.end(),
+                            [](const Region3& region) { return region.max_volume > 0; });
+            if (bounded) max_volumes.assign(count, -1.0);
             std::vector<std::uint8_t> seen(count, 0);
             for (const Region3& region : plc_.regions) {
                 const double p[3] = {region.x, region.y, region.z};
                 const TetIdx t = locate(p);
                 if (t == kNone || removed[t]) continue;
                 std::fill(seen.begin(), seen.end(), 0);
-                flood({t}, subface_set, seen, 1, &attributes, region.attribute);
+                const RegionValues values{&attributes, bounded ? &max_volumes : nullptr,
+                                          region.attribute, region.max_volume};
+                flood({t}, subface_set, seen, 1, &values);
             }
         }
         ConformingMesh3 out;
@@ -654,6 +674,7 @@ class Recovery {
                 out.mesh.neighbors.push_back(n == kNone ? kNone : new_index[n]);
             }
             if (!attributes.empty()) out.tet_attributes.push_back(attributes[t]);
+            if (!max_volumes.empty()) out.tet_max_volume.push_back(max_volumes[t]);
         }
         out.input_vertex_count = plc_.vertex_count();
         out.vertex_feature = feature_;

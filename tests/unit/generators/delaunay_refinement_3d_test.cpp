@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Tests of generators/mesh_3d/delaunay_refinement_3d: the sample domains, the same mesh for the
 // domain scaled by 2^600 and 2^-600, a cube (cocircular facets, cospherical corners), and small
-// random convex and star-shaped PLCs; every output checked exactly (check_boundary_conformity_3d:
+// random convex and star-shaped PLCs, a box cut into two regions with their own volume bounds;
+// every output checked exactly (check_boundary_conformity_3d:
 // valid positively oriented tetrahedra, every facet and segment present; and
 // check_refinement_quality_3d: every tetrahedron within the bounds unless spared or explained by
 // a rejected point).
@@ -18,6 +19,7 @@
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "predicates/tet_quality_3d.hpp"
 #include "tests/support/plcs_3d.hpp"
 #include "tests/support/test_scale.hpp"
 #include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
@@ -278,6 +280,121 @@ TEST(Generators_DelaunayRefinement3d, BadOptionsAndTheBudgetAreInputErrors) {
         EXPECT_NE(std::string(error.what()).find("budget of 10"), std::string::npos)
             << error.what();
     }
+}
+
+/// Checks a refined two_regions_box (scaled by 2^e) region by region: every tetrahedron carries
+/// attribute 1 or 2, lies on its region's side of x = 2^e (exact coordinate comparisons), carries
+/// its region's bound `region_bounds[attribute - 1]` and is within `in_force[attribute - 1]`
+/// (exact compare_tet_volume_3d). Returns the count of tetrahedra per region.
+std::array<std::uint32_t, 2> check_regions(const ConformingMesh3& mesh, int e,
+                                           const std::array<double, 2>& region_bounds,
+                                           const std::array<double, 2>& in_force) {
+    const auto& m = mesh.mesh;
+    EXPECT_EQ(mesh.tet_attributes.size(), m.tet_count());
+    EXPECT_EQ(mesh.tet_max_volume.size(), m.tet_count());
+    std::array<std::uint32_t, 2> counts{0, 0};
+    if (mesh.tet_attributes.size() != m.tet_count() || mesh.tet_max_volume.size() != m.tet_count())
+        return counts;
+    const double middle = std::ldexp(1.0, e);
+    for (std::uint32_t t = 0; t < m.tet_count(); ++t) {
+        const double attribute = mesh.tet_attributes[t];
+        EXPECT_TRUE(attribute == 1 || attribute == 2) << attribute;
+        const unsigned r = attribute == 1 ? 0 : 1;
+        ++counts[r];
+        EXPECT_EQ(mesh.tet_max_volume[t], region_bounds[r]) << t;
+        const double* p[4];
+        for (unsigned k = 0; k < 4; ++k) {
+            p[k] = m.point(m.tets[4 * std::size_t{t} + k]);
+            EXPECT_TRUE(r == 0 ? p[k][0] <= middle : p[k][0] >= middle)
+                << "tetrahedron " << t << " of region " << attribute << " crosses x = 2^" << e;
+        }
+        EXPECT_NE(predicates::compare_tet_volume_3d(p[0], p[1], p[2], p[3], in_force[r]),
+                  predicates::Sign::Positive)
+            << "tetrahedron " << t << " of region " << attribute << " over " << in_force[r];
+    }
+    return counts;
+}
+
+TEST(Generators_DelaunayRefinement3d, RegionVolumeBoundsHoldInEachRegion) {
+    // Two unit cubes, bounds 0.001 and 0.01 (TetGen's region list), no global bound.
+    const Plc3 plc = triangulation::two_regions_box(0.001, 0.01);
+    const DelaunayRefinement3Options options;
+    const auto result = refine_and_check(plc, "two regions 0.001 | 0.01", options);
+    const auto counts = check_regions(result.mesh, 0, {0.001, 0.01}, {0.001, 0.01});
+    std::printf("two regions: %u tets at 0.001, %u at 0.01\n", counts[0], counts[1]);
+    // The fine cube needs at least 1,000 tetrahedra, the coarse one at least 100.
+    EXPECT_GE(counts[0], 1000u);
+    EXPECT_GT(counts[0], 4 * counts[1]);
+    // The quality check applies each tetrahedron's own bound: under a global 0.001 the coarse
+    // cube's tetrahedra are over it.
+    DelaunayRefinement3Options global = options;
+    global.max_volume = 0.001;
+    EXPECT_GT(check_refinement_quality_3d(result.mesh, global).over_volume, 0u);
+    EXPECT_EQ(check_refinement_quality_3d(result.mesh, options).over_volume, 0u);
+}
+
+TEST(Generators_DelaunayRefinement3d, GlobalVolumeBoundAppliesOnTopOfRegionBounds) {
+    // Global 0.004: the smaller bound holds in each region (0.001 left, 0.004 right, where the
+    // region asks only 0.01); a region without a bound takes the global one.
+    DelaunayRefinement3Options options;
+    options.max_volume = 0.004;
+    const auto both = refine_and_check(triangulation::two_regions_box(0.001, 0.01),
+                                       "two regions 0.001 | 0.01, global 0.004", options);
+    check_regions(both.mesh, 0, {0.001, 0.01}, {0.001, 0.004});
+    const auto one = refine_and_check(triangulation::two_regions_box(0.001, -1),
+                                      "two regions 0.001 | none, global 0.004", options);
+    check_regions(one.mesh, 0, {0.001, -1}, {0.001, 0.004});
+}
+
+TEST(Generators_DelaunayRefinement3d, RegionVolumeBoundsScaleByPowersOfTwo) {
+    // The domain scaled by 2^k and the bounds by 2^3k: the same mesh scaled. (Volumes of a
+    // domain at 2^+-600 are 2^+-1800, beyond doubles, so no volume bound exists there; 2^+-300
+    // puts the bounds at 2^+-900.)
+    const Plc3 plc = triangulation::two_regions_box(0.001, 0.01);
+    const DelaunayRefinement3Options options;
+    const auto reference = refine_and_check(plc, "two regions unscaled", options);
+    for (const int e : {300, -300}) {
+        const Plc3 s = triangulation::scaled(plc, e);
+        const auto result =
+            refine_and_check(s, "two regions scaled by 2^" + std::to_string(e), options);
+        EXPECT_EQ(result.mesh.mesh.tets, reference.mesh.mesh.tets) << e;
+        EXPECT_EQ(result.mesh.tet_attributes, reference.mesh.tet_attributes) << e;
+        ASSERT_EQ(result.mesh.mesh.xyz.size(), reference.mesh.mesh.xyz.size());
+        for (std::size_t i = 0; i < result.mesh.mesh.xyz.size(); ++i)
+            ASSERT_EQ(result.mesh.mesh.xyz[i], std::ldexp(reference.mesh.mesh.xyz[i], e)) << i;
+        check_regions(result.mesh, e, {std::ldexp(0.001, 3 * e), std::ldexp(0.01, 3 * e)},
+                      {std::ldexp(0.001, 3 * e), std::ldexp(0.01, 3 * e)});
+    }
+}
+
+TEST(Generators_DelaunayRefinement3d, RegionVolumeBoundFarOverTheBudgetFailsAtOnce) {
+    // A unit cube bounded at 10^-12 beside one at 0.01: about 1.54e11 Steiner points, refused
+    // before any insertion with the estimate, at every scale.
+    for (const int e : {0, 300, -300}) {
+        const Plc3 plc = triangulation::scaled(triangulation::two_regions_box(1e-12, 0.01), e);
+        ConformingMesh3 recovered = triangulation::boundary_recovery_3d(plc).mesh;
+        try {
+            delaunay_refinement_3d(plc, std::move(recovered), {});
+            ADD_FAILURE() << "2^" << e << ": refined";
+        } catch (const InputError& error) {
+            const std::string message = error.what();
+            EXPECT_NE(message.find("exceeded at once"), std::string::npos) << message;
+            EXPECT_NE(message.find("region volume bounds"), std::string::npos) << message;
+            EXPECT_NE(message.find("1.54e+11"), std::string::npos) << message;
+        }
+    }
+}
+
+TEST(Generators_DelaunayRefinement3d, BadRegionVolumeBoundsAreInputErrors) {
+    const Plc3 plc = triangulation::two_regions_box(0.01, 0.01);
+    const ConformingMesh3 recovered = triangulation::boundary_recovery_3d(plc).mesh;
+    ASSERT_EQ(recovered.tet_max_volume.size(), recovered.mesh.tet_count());
+    ConformingMesh3 infinite = recovered;
+    infinite.tet_max_volume[0] = INFINITY;
+    EXPECT_THROW(delaunay_refinement_3d(plc, infinite, {}), InputError);
+    ConformingMesh3 short_list = recovered;
+    short_list.tet_max_volume.pop_back();
+    EXPECT_THROW(delaunay_refinement_3d(plc, short_list, {}), InputError);
 }
 
 }  // namespace

@@ -217,5 +217,46 @@ TEST(Generators_SliverRemoval3d, BadOptionsAreInputErrors) {
     EXPECT_THROW(sliver_removal_3d(mesh, options), InputError);
 }
 
+TEST(Generators_SliverRemoval3d, RegionVolumeBoundsAreKept) {
+    // Two regions with their own volume bounds (0.001 and 0.01): sliver removal counts each
+    // tetrahedron against its own region's bound, so a refined mesh within them stays within
+    // them; every tetrahedron keeps its region's attribute and bound.
+    const Plc3 plc = triangulation::two_regions_box(0.001, 0.01);
+    const DelaunayRefinement3Options refine;
+    DelaunayRefinement3Result refined =
+        delaunay_refinement_3d(plc, triangulation::boundary_recovery_3d(plc).mesh, refine);
+    ASSERT_EQ(check_refinement_quality_3d(refined.mesh, refine).over_volume, 0u);
+    // This mesh has no dihedral angle below 15 degrees; a 35-degree threshold gives sliver
+    // removal swaps and moves to make (and to veto).
+    SliverRemoval3Options options;
+    options.threshold_degrees = 35;
+    const auto result = sliver_removal_3d(std::move(refined.mesh), options);
+    EXPECT_GT(result.counters.flips_23 + result.counters.flips_32 + result.counters.flips_44 +
+                  result.counters.moves_accepted,
+              0u);
+    const auto report = triangulation::check_boundary_conformity_3d(plc, result.mesh);
+    EXPECT_TRUE(report.ok) << report.problem;
+    const auto& m = result.mesh.mesh;
+    ASSERT_EQ(result.mesh.tet_attributes.size(), m.tet_count());
+    ASSERT_EQ(result.mesh.tet_max_volume.size(), m.tet_count());
+    for (std::uint32_t t = 0; t < m.tet_count(); ++t) {
+        const double attribute = result.mesh.tet_attributes[t];
+        EXPECT_EQ(result.mesh.tet_max_volume[t], attribute == 1 ? 0.001 : 0.01) << t;
+    }
+    const RefinementQuality3 quality = check_refinement_quality_3d(result.mesh, refine);
+    EXPECT_EQ(quality.over_volume, 0u);
+    EXPECT_EQ(quality.over_bound, 0u);
+    const auto& c = result.counters;
+    std::printf(
+        "two regions: %llu tets below 35 degrees before, %llu after; %llu swaps, %llu vetoed; "
+        "%llu moves, %llu vetoed\n",
+        static_cast<unsigned long long>(c.slivers_before),
+        static_cast<unsigned long long>(c.slivers_after),
+        static_cast<unsigned long long>(c.flips_23 + c.flips_32 + c.flips_44),
+        static_cast<unsigned long long>(c.swaps_vetoed),
+        static_cast<unsigned long long>(c.moves_accepted),
+        static_cast<unsigned long long>(c.moves_vetoed));
+}
+
 }  // namespace
 }  // namespace exactmesh::generators

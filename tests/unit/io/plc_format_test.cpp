@@ -159,6 +159,38 @@ TEST(Io_PlcFormat, ReadsAndRejectsSmesh) {
               "t.smesh:7: a facet needs at least 1 corner, got 0");
 }
 
+TEST(Io_PlcFormat, RegionVolumeBoundsReachThePlc) {
+    // TetGen's region list `<#> x y z attribute [max volume]` in a .poly and in a .smesh: the
+    // bound is kept (-1 when omitted) and plc_from_file hands it to Region3::max_volume.
+    const triangulation::Plc3 poly =
+        io::plc_from_file(io::parse_tetgen_poly_3d(kCubePoly, "cube.poly", "cube.node"));
+    ASSERT_EQ(poly.regions.size(), 2u);
+    EXPECT_EQ(poly.regions[0].attribute, 7);
+    EXPECT_EQ(poly.regions[0].max_volume, 0.01);
+    EXPECT_EQ(poly.regions[1].attribute, 8);
+    EXPECT_EQ(poly.regions[1].max_volume, -1);
+    const char* smesh =
+        "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 0\n3 0 2 1\n3 0 1 3\n3 1 2 3\n"
+        "3 0 3 2\n0\n2\n0 0.1 0.1 0.1 5 1e-3\n1 0.2 0.1 0.1 -6\n";
+    const io::PlcFile file = io::parse_smesh(smesh, "t.smesh", "t.node");
+    EXPECT_EQ(file.regions, (std::vector<double>{0.1, 0.1, 0.1, 5, 1e-3, 0.2, 0.1, 0.1, -6, -1}));
+    const triangulation::Plc3 plc = io::plc_from_file(file);
+    ASSERT_EQ(plc.regions.size(), 2u);
+    EXPECT_EQ(plc.regions[0].x, 0.1);
+    EXPECT_EQ(plc.regions[0].attribute, 5);
+    EXPECT_EQ(plc.regions[0].max_volume, 1e-3);
+    EXPECT_EQ(plc.regions[1].attribute, -6);
+    EXPECT_EQ(plc.regions[1].max_volume, -1);
+    // A bound that is no number names its line.
+    EXPECT_NE(format_error([&] {
+                  io::parse_smesh(
+                      "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 0\n3 0 2 1\n"
+                      "3 0 1 3\n3 1 2 3\n3 0 3 2\n0\n1\n0 0.1 0.1 0.1 5 x\n",
+                      "t.smesh", "t.node");
+              }).find("t.smesh:13:"),
+              std::string::npos);
+}
+
 constexpr const char* kCubeOff = R"(OFF
 # the unit cube
 8 6 12

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -399,6 +400,27 @@ TEST(Triangulation_BoundaryRecovery3d, TheCheckRejectsAMissingSubface) {
         EXPECT_FALSE(report.ok);
         break;
     }
+}
+
+TEST(Triangulation_BoundaryRecovery3d, RegionVolumeBoundsFloodLikeAttributes) {
+    // A bound on the left region only: its tetrahedra carry it, the right ones none (-1).
+    const auto result = recover_and_check(two_regions_box(0.001, -1), "two regions 0.001 | none");
+    const auto& mesh = result.mesh;
+    ASSERT_EQ(mesh.tet_attributes.size(), mesh.mesh.tet_count());
+    ASSERT_EQ(mesh.tet_max_volume.size(), mesh.mesh.tet_count());
+    std::array<int, 2> seen{0, 0};
+    for (std::size_t t = 0; t < mesh.tet_attributes.size(); ++t) {
+        const double a = mesh.tet_attributes[t];
+        ASSERT_TRUE(a == 1 || a == 2) << a;
+        ++seen[a == 1 ? 0 : 1];
+        EXPECT_EQ(mesh.tet_max_volume[t], a == 1 ? 0.001 : -1) << t;
+    }
+    EXPECT_GT(seen[0], 0);
+    EXPECT_GT(seen[1], 0);
+    // Without any bound there is no per-tetrahedron list; the attributes stay.
+    const auto unbounded = recover_and_check(two_regions_box(-1, 0), "two regions, no bounds");
+    EXPECT_TRUE(unbounded.mesh.tet_max_volume.empty());
+    EXPECT_EQ(unbounded.mesh.tet_attributes.size(), unbounded.mesh.mesh.tet_count());
 }
 
 }  // namespace
