@@ -99,8 +99,12 @@ struct GmshMesh {
     std::vector<triangulation::VertIdx> triangles;
 };
 
-/// Reads the triangles (element type 2) of an ASCII MSH 2.2 file, oriented counter-clockwise.
-inline void read_msh2(const std::filesystem::path& file, GmshMesh& mesh) {
+/// Reads an ASCII MSH 2.2 file: each node's coordinates to `node(x, y, z)` in file order (its
+/// index is the number of nodes before it), then each element of `type` (2 triangle, 4
+/// tetrahedron) to `element(v)`, v its `corners` node indices.
+template <class Node, class Element>
+void read_msh2_elements(const std::filesystem::path& file, long type, std::size_t corners,
+                        Node node, Element element) {
     std::ifstream in(file);
     std::string line;
     std::map<long, triangulation::VertIdx> index;
@@ -112,33 +116,48 @@ inline void read_msh2(const std::filesystem::path& file, GmshMesh& mesh) {
                 long id;
                 double x, y, z;
                 in >> id >> x >> y >> z;
-                index[id] = static_cast<triangulation::VertIdx>(mesh.xy.size() / 2);
-                mesh.xy.push_back(x);
-                mesh.xy.push_back(y);
+                index[id] = static_cast<triangulation::VertIdx>(i);
+                node(x, y, z);
             }
         } else if (line == "$Elements") {
             std::size_t count = 0;
             in >> count;
             std::getline(in, line);
+            std::vector<triangulation::VertIdx> v(corners);
             for (std::size_t i = 0; i < count; ++i) {
                 std::getline(in, line);
                 std::istringstream fields(line);
-                long id, type, tags;
-                fields >> id >> type >> tags;
+                long id, element_type, tags;
+                fields >> id >> element_type >> tags;
                 for (long k = 0; k < tags; ++k) fields >> id;
-                if (type != 2) continue;
-                long a, b, c;
-                fields >> a >> b >> c;
-                const triangulation::VertIdx v[3] = {index.at(a), index.at(b), index.at(c)};
-                const double* p = &mesh.xy[2 * v[0]];
-                const double* q = &mesh.xy[2 * v[1]];
-                const double* r = &mesh.xy[2 * v[2]];
-                const bool ccw = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]) > 0;
-                mesh.triangles.insert(mesh.triangles.end(),
-                                      {v[0], ccw ? v[1] : v[2], ccw ? v[2] : v[1]});
+                if (element_type != type) continue;
+                for (std::size_t k = 0; k < corners; ++k) {
+                    long n;
+                    fields >> n;
+                    v[k] = index.at(n);
+                }
+                element(v);
             }
         }
     }
+}
+
+/// Reads the triangles (element type 2) of an ASCII MSH 2.2 file, oriented counter-clockwise.
+inline void read_msh2(const std::filesystem::path& file, GmshMesh& mesh) {
+    read_msh2_elements(
+        file, 2, 3,
+        [&mesh](double x, double y, double) {
+            mesh.xy.push_back(x);
+            mesh.xy.push_back(y);
+        },
+        [&mesh](const std::vector<triangulation::VertIdx>& v) {
+            const double* p = &mesh.xy[2 * v[0]];
+            const double* q = &mesh.xy[2 * v[1]];
+            const double* r = &mesh.xy[2 * v[2]];
+            const bool ccw = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]) > 0;
+            mesh.triangles.insert(mesh.triangles.end(),
+                                  {v[0], ccw ? v[1] : v[2], ccw ? v[2] : v[1]});
+        });
 }
 
 /// Throws std::runtime_error with the error lines of gmsh's log (or its last line).
@@ -291,41 +310,17 @@ inline double gmsh_log_cpu(const std::filesystem::path& log, const std::string& 
 /// (a zero-volume one is kept as written).
 inline triangulation::Tetrahedralization3 read_msh2_tets(const std::filesystem::path& file) {
     triangulation::Tetrahedralization3 mesh;
-    std::ifstream in(file);
-    std::string line;
-    std::map<long, triangulation::VertIdx> index;
-    while (std::getline(in, line)) {
-        if (line == "$Nodes") {
-            std::size_t count = 0;
-            in >> count;
-            for (std::size_t i = 0; i < count; ++i) {
-                long id;
-                double x, y, z;
-                in >> id >> x >> y >> z;
-                index[id] = static_cast<triangulation::VertIdx>(mesh.xyz.size() / 3);
-                mesh.xyz.insert(mesh.xyz.end(), {x, y, z});
-            }
-        } else if (line == "$Elements") {
-            std::size_t count = 0;
-            in >> count;
-            std::getline(in, line);
-            for (std::size_t i = 0; i < count; ++i) {
-                std::getline(in, line);
-                std::istringstream fields(line);
-                long id, type, tags;
-                fields >> id >> type >> tags;
-                for (long k = 0; k < tags; ++k) fields >> id;
-                if (type != 4) continue;
-                long a, b, c, d;
-                fields >> a >> b >> c >> d;
-                triangulation::VertIdx v[4] = {index.at(a), index.at(b), index.at(c), index.at(d)};
-                if (predicates::orient3d(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
-                                         mesh.point(v[3])) == predicates::Sign::Negative)
-                    std::swap(v[2], v[3]);
-                mesh.tets.insert(mesh.tets.end(), v, v + 4);
-            }
-        }
-    }
+    read_msh2_elements(
+        file, 4, 4,
+        [&mesh](double x, double y, double z) {
+            mesh.xyz.insert(mesh.xyz.end(), {x, y, z});
+        },
+        [&mesh](std::vector<triangulation::VertIdx> v) {
+            if (predicates::orient3d(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                     mesh.point(v[3])) == predicates::Sign::Negative)
+                std::swap(v[2], v[3]);
+            mesh.tets.insert(mesh.tets.end(), v.begin(), v.end());
+        });
     return mesh;
 }
 
