@@ -183,7 +183,8 @@ inline void decode_touching_boxes(ByteReader& in, triangulation::Plc3& plc) {
     // The second box's corners that coincide with the first's are renumbered to them and their
     // copies dropped (a PLC may not repeat a point).
     std::vector<std::uint32_t> remap(8);
-    std::vector<double> kept(plc.xyz.begin(), plc.xyz.begin() + 3 * std::size_t{first});
+    std::vector<double> kept(plc.xyz.begin(),
+                             plc.xyz.begin() + 3 * static_cast<std::ptrdiff_t>(first));
     for (std::uint32_t i = 0; i < 8; ++i) {
         const double* p = plc.point(first + i);
         remap[i] = triangulation::kNone;
