@@ -726,7 +726,8 @@ class RestrictedDelaunay3 {
         for (const auto& [key, segment] : new_subsegments) subsegments_.emplace(key, segment);
         // Stars in several pieces: the corners already known to have them get the new
         // tetrahedra as candidates; the new vertex has several when its cavity had (a point on
-        // an edge where the domain touches itself).
+        // an edge where the domain touches itself, whose ends are then known already: with none
+        // known, no star is in pieces and this costs nothing on the insertion path).
         if (!other_pieces_.empty()) {
             std::vector<VertIdx> split_corners;
             for (const TetIdx t : created) {
@@ -744,8 +745,8 @@ class RestrictedDelaunay3 {
                     if (m_.slot_of(t, w) < 4) candidates.push_back(t);
                 note_pieces(w, candidates);
             }
+            if (!created.empty() && star(v).size() != created.size()) note_pieces(v, created);
         }
-        if (!created.empty() && star(v).size() != created.size()) note_pieces(v, created);
         // Every new subface is a face, and every new subsegment an edge, of a new tetrahedron:
         // one holds all its vertices (any three vertices of a tetrahedron make a face).
         const auto created_with = [&](VertIdx a, VertIdx b, VertIdx c) {
