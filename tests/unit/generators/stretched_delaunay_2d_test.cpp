@@ -27,6 +27,7 @@
 #include "generators/stretched/metric_quality_2d.hpp"
 #include "generators/stretched/stretched_delaunay_2d.hpp"
 #include "generators/stretched/wall_loops_2d.hpp"
+#include "tests/support/scaled_coordinates.hpp"
 #include "tests/support/stretched_domains_2d.hpp"
 #include "tests/support/test_scale.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
@@ -284,11 +285,8 @@ TEST(StretchedDelaunay2d, WakeScaledGivesTheSameMeshScaled) {
     for (const int k : {600, -600}) {
         const gen::StretchedDelaunayResult2 r = run_wake(gen::SampleDomain::Naca0012, k, 2);
         EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
-        ASSERT_EQ(r.mesh.mesh.xy.size(), reference.mesh.mesh.xy.size());
-        std::size_t differ = 0;
-        for (std::size_t i = 0; i < r.mesh.mesh.xy.size(); ++i)
-            differ += r.mesh.mesh.xy[i] != std::ldexp(reference.mesh.mesh.xy[i], k) ? 1 : 0;
-        EXPECT_EQ(differ, 0u) << "2^" << k;
+        EXPECT_TRUE(
+            exactmesh::testing::coordinates_scaled_by(r.mesh.mesh.xy, reference.mesh.mesh.xy, k));
         EXPECT_EQ(r.counters.wake_points, reference.counters.wake_points);
         EXPECT_EQ(r.counters.wake_dropped, reference.counters.wake_dropped);
     }
@@ -338,31 +336,33 @@ TEST(StretchedDelaunay2d, SwapsChangeTheEuclideanTriangulation) {
     EXPECT_GT(changed, 0u);
 }
 
-gen::StretchedDelaunayResult2 run_scaled(int k, bool given_size) {
+gen::StretchedDelaunayResult2 run_scaled(int k, bool given_size, bool staggered) {
     const Domain domain = scaled(gen::SampleDomain::Naca0012, k);
     const gen::MeshDomain2 mesh_domain(domain.pslg());
     gen::StretchedDelaunayOptions2 options;
     options.first_height = std::ldexp(1e-3, k);
     if (given_size) options.far_field_size = gen::SizeFunction::uniform(std::ldexp(0.25, k));
+    options.staggered_layers = staggered;
     gen::StretchedDelaunayResult2 r = gen::stretched_delaunay_2d(mesh_domain, options);
     expect_valid(domain, r);
     return r;
 }
 
 TEST(StretchedDelaunay2d, ScaledDomainGivesTheSameMeshScaled) {
-    // The far-field size graded from the boundary (scaled with it), then a given one.
-    for (const bool given_size : {false, true}) {
-        const gen::StretchedDelaunayResult2 reference = run_scaled(0, given_size);
-        for (const int k : {600, -600}) {
-            const gen::StretchedDelaunayResult2 r = run_scaled(k, given_size);
-            EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles) << "2^" << k;
-            ASSERT_EQ(r.mesh.mesh.xy.size(), reference.mesh.mesh.xy.size());
-            std::size_t differ = 0;
-            for (std::size_t i = 0; i < r.mesh.mesh.xy.size(); ++i)
-                differ += r.mesh.mesh.xy[i] != std::ldexp(reference.mesh.mesh.xy[i], k) ? 1 : 0;
-            EXPECT_EQ(differ, 0u) << "2^" << k;
-            EXPECT_EQ(r.counters.swaps, reference.counters.swaps);
-            EXPECT_EQ(r.counters.smoothing_moves, reference.counters.smoothing_moves);
+    // The far-field size graded from the boundary (scaled with it), then a given one; right-
+    // angled cells (the default), then staggered layers.
+    for (const bool staggered : {false, true}) {
+        for (const bool given_size : {false, true}) {
+            const gen::StretchedDelaunayResult2 reference = run_scaled(0, given_size, staggered);
+            for (const int k : {600, -600}) {
+                const gen::StretchedDelaunayResult2 r = run_scaled(k, given_size, staggered);
+                EXPECT_EQ(r.mesh.mesh.triangles, reference.mesh.mesh.triangles)
+                    << "2^" << k << (staggered ? " staggered" : "");
+                EXPECT_TRUE(exactmesh::testing::coordinates_scaled_by(r.mesh.mesh.xy,
+                                                                      reference.mesh.mesh.xy, k));
+                EXPECT_EQ(r.counters.swaps, reference.counters.swaps);
+                EXPECT_EQ(r.counters.smoothing_moves, reference.counters.smoothing_moves);
+            }
         }
     }
 }
