@@ -38,6 +38,7 @@
 #include "generators/mesh_3d/delaunay_refinement_3d.hpp"
 #include "generators/mesh_3d/frontal_delaunay_3d.hpp"
 #include "generators/mesh_3d/octree_mesh_3d.hpp"
+#include "generators/mesh_3d/size_conformity_3d.hpp"
 #include "generators/mesh_3d/sliver_removal_3d.hpp"
 #include "io/gmsh_format.hpp"
 #include "io/plc_format.hpp"
@@ -301,6 +302,15 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         if (remove_slivers)
             print_quality_3d(result.before_sliver_removal, "before_sliver_removal_");
         print_quality_3d(mesh);
+        if (frontal || octree) {
+            // Edge length over --size at its midpoint, once per edge.
+            const gen::SizeConformity3 c = gen::size_conformity_3d(mesh, frontal_options.size);
+            const auto precision = std::cout.precision(6);
+            std::cout << "size_conformity: min " << c.min << " median " << c.median << " mean "
+                      << c.mean << " max " << c.max << " (edge length / size at its midpoint, "
+                      << c.edges << " edges, " << 100 * c.within << "% in [0.7, 1.4])\n";
+            std::cout.precision(precision);
+        }
     }
     if (arguments.stats) {
         auto counters =
