@@ -233,6 +233,9 @@ class OctreeMesher {
             const double h = options_.size(centre[0], centre[1], centre[2]);
             estimate += (step[0] / h) * (step[1] / h) * (step[2] / h);
         }
+        // Capped like the other 3D estimates, so that a domain at 2^600 with an unscaled size
+        // reads "about 1e+300", not "infinity" (and a NaN from a flat box counts as huge).
+        if (!(estimate <= 1e300)) estimate = 1e300;
         result_.counters.estimated_leaves = static_cast<std::uint64_t>(std::min(estimate, 1.8e19));
         if (estimate > static_cast<double>(budget)) {
             throw InputError("octree mesh 3d: leaf budget of " + std::to_string(budget) +
