@@ -14,6 +14,11 @@ CLI::Validator whole_number_at_most(std::uint64_t max) {
                           max == std::numeric_limits<std::uint64_t>::max() ? "UINT64" : "UINT");
 }
 
+CLI::Validator finite_positive_number() {
+    return CLI::Validator([](std::string& text) { return check_positive_number_text(text); },
+                          "NUMBER > 0");
+}
+
 void add_seed_option(CLI::App& command, std::uint64_t& seed) {
     command.add_option("--seed", seed, "Seed of the random and brio orders")
         ->check(whole_number_at_most(std::numeric_limits<std::uint64_t>::max()))

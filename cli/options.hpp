@@ -18,6 +18,10 @@ namespace exactmesh::cli {
 /// (check_unsigned_text: CLI11's own conversion wraps "-1" and saturates larger numbers).
 CLI::Validator whole_number_at_most(std::uint64_t max);
 
+/// A CLI11 check that the option's text is a finite number > 0 (check_positive_number_text:
+/// CLI11's PositiveNumber lets "nan" through and names the range with 300 digits).
+CLI::Validator finite_positive_number();
+
 /// `--seed S`: the seed of the random and brio insertion orders, any 64-bit unsigned value.
 void add_seed_option(CLI::App& command, std::uint64_t& seed);
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <span>
@@ -143,6 +144,18 @@ std::string check_unsigned_text(const std::string& text, std::uint64_t max) {
     }
     if (error != std::errc{} || stop != end)
         return "'" + text + "' is not an integer in [0, " + std::to_string(max) + "]";
+    return "";
+}
+
+std::string check_positive_number_text(const std::string& text) {
+    double value = 0;
+    const char* const end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, value);
+    if (error == std::errc::result_out_of_range)
+        return "'" + text + "' is beyond the range of doubles (expected a finite number > 0)";
+    if (error != std::errc{} || stop != end || text.empty())
+        return "'" + text + "' is not a number (expected a finite number > 0)";
+    if (!std::isfinite(value) || !(value > 0)) return "'" + text + "' is not a finite number > 0";
     return "";
 }
 

@@ -75,6 +75,9 @@ auto locating_mark_points(const io::PolyFile& poly, const std::string& file, Wor
 /// body: "" when `text` is a whole decimal integer in [0, max], else the reason. CLI11's own
 /// conversion to an unsigned type wraps "-1" to 2^64 - 1 and saturates larger numbers.
 std::string check_unsigned_text(const std::string& text, std::uint64_t max);
+/// "" when `text` is a whole decimal number (as strtod reads it, all of it) that is finite and
+/// > 0; else why not.
+std::string check_positive_number_text(const std::string& text);
 
 /// The window of `--view X0,Y0,X1,Y1`: four comma-separated decimal numbers.
 /// @throws InputError naming the problem (not four numbers, not finite, X1 <= X0, Y1 <= Y0).

@@ -133,13 +133,19 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         plc = io::plc_from_file(io::read_plc(arguments.input));
         source = arguments.input;
     }
-    // A free vertex on a segment or a facet becomes part of it (as Triangle does in 2D).
-    tri::validate_plc_3d_input(plc);
-    tri::embed_free_vertices_3d(plc);
+    // The checks' messages name vertices and facets (with their lines); the file is named here.
+    try {
+        // A free vertex on a segment or a facet becomes part of it (as Triangle does in 2D).
+        tri::validate_plc_3d_input(plc);
+        tri::embed_free_vertices_3d(plc);
+        // A mesh generator's domain must enclose a volume: an open surface would leave the
+        // flood fill nothing to keep (internal facets, edges in more than two triangles, are
+        // fine).
+        tri::check_surface_closed_3d(plc, tri::validate_plc_3d(plc));
+    } catch (const InputError& error) {
+        throw InputError(source + ": " + error.what());
+    }
     const std::uint32_t base = plc.first_index;
-    // A mesh generator's domain must enclose a volume: an open surface would leave the flood
-    // fill nothing to keep (internal facets, edges in more than two triangles, are fine).
-    tri::check_surface_closed_3d(plc, tri::validate_plc_3d(plc));
 
     // The generator and its size, checked before any work.
     const bool frontal = arguments.generator == "frontal";
@@ -373,7 +379,7 @@ void add_tetmesh_command(CLI::App& app) {
         ->add_option("--domain-size", arguments->domain_size,
                      "Target edge length of a built-in domain's curved surfaces (default: the "
                      "domain's own)")
-        ->check(CLI::PositiveNumber);
+        ->check(finite_positive_number());
     add_output_option(*command, arguments->output,
                       "Output; the extension picks the format: .ele (TetGen; .node, .face with "
                       "facet markers and .neigh beside it), .msh (Gmsh 4.1), .vtu (VTK)");
@@ -391,13 +397,13 @@ void add_tetmesh_command(CLI::App& app) {
                      "--max-volume and region volume bounds in the input the mesh is the "
                      "recovered one, unrefined")
         ->type_name("B")
-        ->check(CLI::PositiveNumber);
+        ->check(finite_positive_number());
     command
         ->add_option("--max-volume", arguments->max_volume,
                      "Delaunay refinement: split every tetrahedron of larger volume (TetGen -a); "
                      "region volume bounds of the input apply too, the smaller of the two")
         ->type_name("V")
-        ->check(CLI::PositiveNumber);
+        ->check(finite_positive_number());
     command
         ->add_option("--generator", arguments->generator,
                      "The mesh generator after boundary recovery: delaunay-refinement (the "

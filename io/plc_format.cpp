@@ -356,6 +356,7 @@ float little_endian_float(const unsigned char* bytes) {
 PlcFile parse_binary_stl(std::string_view bytes, const std::string& file_name,
                          std::uint64_t count) {
     PlcFile plc;
+    plc.facet_lines_are_triangles = true;
     VertexMerger merger(plc);
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     for (std::uint64_t t = 0; t < count; ++t) {

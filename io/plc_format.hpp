@@ -41,6 +41,7 @@ struct PlcFile {
     std::vector<double> regions;  ///< 5·#R: x, y, z, attribute, maximum volume (-1: none)
     std::vector<std::uint64_t> hole_lines;    ///< #H: the line of each volume hole
     std::vector<std::uint64_t> region_lines;  ///< #R: the line of each region
+    bool facet_lines_are_triangles = false;   ///< binary STL: PlcFacetRecord::line is its number
 
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xyz.size() / 3); }
 };
@@ -87,7 +88,10 @@ inline triangulation::Plc3 plc_from_file(PlcFile file) {
     plc.xyz = std::move(file.xyz);
     plc.first_index = file.first_index;
     plc.facets.reserve(file.facets.size());
+    plc.facet_origin.reserve(file.facets.size());
+    plc.facet_origin_kind = file.facet_lines_are_triangles ? "triangle" : "line";
     for (PlcFacetRecord& record : file.facets) {
+        plc.facet_origin.push_back(record.line);
         triangulation::Facet3 facet;
         facet.polygons = std::move(record.polygons);
         facet.holes = std::move(record.holes);

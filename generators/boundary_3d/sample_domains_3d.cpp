@@ -10,6 +10,7 @@
 
 #include "base/enum_names.hpp"
 #include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "generators/boundary/sample_domains.hpp"
 
 namespace exactmesh::generators {
@@ -58,9 +59,26 @@ Plc3 box_with_hole() {
     return plc;
 }
 
+/// Most surface vertices a built-in domain's sampling may make: finer surfaces take minutes
+/// and gigabytes before meshing starts, so they are refused at once with the estimate.
+constexpr double kMaxSampleSurfaceVertices = 1e6;
+
+void check_surface_estimate(const char* domain, double size, double vertices) {
+    if (vertices <= kMaxSampleSurfaceVertices) return;
+    constexpr double kHuge = 1e300;  // inf and beyond: no estimate to print
+    throw InputError(std::string(domain) + ": a surface size of " + format_number(size) +
+                     (vertices > kHuge ? std::string(" asks for far more than 1e300")
+                                       : " asks for about " + format_approximate(vertices, 3)) +
+                     " surface vertices, more than " +
+                     format_approximate(kMaxSampleSurfaceVertices) + "; give a larger size");
+}
+
 Plc3 ellipsoid(double size) {
     constexpr long double kAxes[3] = {1.0L, 0.75L, 0.5L};
-    const int n = std::max(1, static_cast<int>(std::ceil(std::numbers::pi / 2 / size)));
+    // 4 n^2 + 2 lattice points on the octahedron's faces, n subdivisions of each edge.
+    const double subdivisions = std::max(1.0, std::ceil(std::numbers::pi / 2 / size));
+    check_surface_estimate("ellipsoid", size, 4 * subdivisions * subdivisions + 2);
+    const int n = static_cast<int>(subdivisions);
     Plc3 plc;
     // Lattice points (i, j, k), |i| + |j| + |k| = n, shared by the octants that touch them.
     std::map<std::array<int, 3>, VertIdx> index;
@@ -126,6 +144,9 @@ std::vector<std::vector<std::uint32_t>> segment_loops(const DomainPslg& pslg) {
 }
 
 Plc3 wing(double size) {
+    // The section's airfoil (perimeter about 2.04 chords) sampled at `size`, on both walls.
+    constexpr double kAirfoilPerimeter = 2.04;
+    if (size > 0) check_surface_estimate("wing", size, 2 * std::ceil(kAirfoilPerimeter / size));
     const DomainPslg section = sample_domain(
         SampleDomain::Naca0012, size > 0 ? SizeFunction::uniform(size) : SizeFunction{});
     const auto loops = segment_loops(section);
@@ -179,6 +200,12 @@ SampleDomain3 sample_domain_3d_from_name(std::string_view name) {
 }
 
 triangulation::Plc3 sample_domain_3d(SampleDomain3 d, double size) {
+    if (!std::isfinite(size)) {
+        throw InputError(
+            "3D sample domain: the surface size must be a finite number (<= 0: the "
+            "domain's own), got " +
+            format_number(size));
+    }
     switch (d) {
         case SampleDomain3::BoxWithHole:
             return box_with_hole();

@@ -34,6 +34,8 @@ SampleDomain3 sample_domain_3d_from_name(std::string_view name);
 /// ellipsoid's triangles, the wing section's sampling (a uniform size in the 2D domain); <= 0
 /// takes the domain's default (0.1 for the ellipsoid, the 2D naca0012 domain's graded size for
 /// the wing). The box has no curved surface and ignores it.
+/// @throws InputError for a NaN or infinite size, or one that asks for more than 10^6 surface
+/// vertices (with the estimate), before any sampling.
 triangulation::Plc3 sample_domain_3d(SampleDomain3 d, double size = 0);
 
 }  // namespace exactmesh::generators

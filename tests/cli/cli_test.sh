@@ -1393,7 +1393,17 @@ tetmesh_bad_input() {
   expect_error 2 'nan\.off:[0-9]+: ' tetmesh "$work/nan.off" -o "$work/x.ele"
   # An open surface (one facet missing): the PLC check refuses it.
   printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n' >"$work/open.off"
-  expect_error 2 'surface not closed' tetmesh "$work/open.off" -o "$work/x.ele"
+  expect_error 2 'open\.off: surface not closed: .*facet 0 \(line 7\)' tetmesh "$work/open.off" -o "$work/x.ele"
+  # A non-planar facet: the file, the facet's line, the vertex off its plane.
+  sed 's/^3 1 1 0$/3 1 1 0.125/' "$work/cube.poly" >"$work/bent.poly"
+  expect_error 2 'bent\.poly: facet [0-9]+ \(line [0-9]+\) is not planar' tetmesh "$work/bent.poly" -o "$work/x.ele"
+  # Numbers CLI11's own check lets through (nan) or names with 300 digits (0).
+  expect_error 2 "--max-volume: 'nan' is not a finite number > 0" tetmesh --domain box-with-hole --max-volume nan -o "$work/x.ele"
+  expect_error 2 "--radius-edge: '0' is not a finite number > 0" tetmesh --domain box-with-hole --radius-edge 0 -o "$work/x.ele"
+  expect_error 2 "--domain-size: 'inf' is not a finite number > 0" tetmesh --domain ellipsoid --domain-size inf -o "$work/x.ele"
+  # A surface sampling finer than 10^6 vertices is refused at once with its estimate.
+  expect_error 2 'ellipsoid: a surface size of 1e-300 asks for far more than 1e300' tetmesh --domain ellipsoid --domain-size 1e-300 -o "$work/x.ele"
+  expect_error 2 'wing: a surface size of 1e-07 asks for about 4.08e\+07 surface vertices' tetmesh --domain wing --domain-size 1e-7 -o "$work/x.ele"
   expect_error 2 'moon' tetmesh --domain moon -o "$work/x.ele"
   expect_error 2 'not both' tetmesh "$work/cube.poly" --domain box-with-hole -o "$work/x.ele"
   expect_error 2 'not both' tetmesh -o "$work/x.ele"

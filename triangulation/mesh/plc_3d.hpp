@@ -41,6 +41,10 @@ struct Plc3 {
     std::vector<double> holes;      ///< 3·#H points inside volume holes
     std::vector<Region3> regions;   ///< #R region points
     std::uint32_t first_index = 0;  ///< numbering of vertices and facets in messages: 0 or 1
+    /// Where each facet came from, for messages (empty: nowhere to point to): its line in the
+    /// file, or its triangle number in a binary STL file (facet_origin_kind "triangle").
+    std::vector<std::uint64_t> facet_origin;
+    const char* facet_origin_kind = "line";
 
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xyz.size() / 3); }
     const double* point(VertIdx v) const { return xyz.data() + 3 * static_cast<std::size_t>(v); }

@@ -36,7 +36,15 @@ struct Names {
         return std::to_string(std::uint64_t{v} + plc.first_index);
     }
     std::string facet(std::uint32_t f) const {
-        return "facet " + std::to_string(std::uint64_t{f} + plc.first_index);
+        std::string text = "facet " + std::to_string(std::uint64_t{f} + plc.first_index);
+        if (f < plc.facet_origin.size() && plc.facet_origin[f] != 0) {
+            text += " (";
+            text += plc.facet_origin_kind;
+            text += ' ';
+            text += std::to_string(plc.facet_origin[f]);
+            text += ')';
+        }
+        return text;
     }
     std::string edge(VertIdx a, VertIdx b) const {
         std::string text(1, '(');

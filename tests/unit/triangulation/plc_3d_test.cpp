@@ -323,7 +323,8 @@ TEST(Triangulation_Plc3, FilesReadByIoAreCheckedInTheirOwnNumbering) {
     const Outcome result = scale_invariant_outcome(plc);
     EXPECT_EQ(result.validity, "");
     EXPECT_EQ(result.closedness,
-              "surface not closed: edge (9, 10) of facet 6 lies in only one surface triangle");
+              "surface not closed: edge (9, 10) of facet 6 (line 26) lies in only one surface "
+              "triangle");
     // A closed OFF tetrahedron, 0-based.
     const Plc3 tetrahedron = io::plc_from_file(io::parse_off(
         "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", "t.off"));
