@@ -144,7 +144,19 @@ bool clockwise(const Loop& loop, const std::vector<double>& xy) {
                           &xy[2 * loop[(lowest + 1) % n]]) == pred::Sign::Negative;
 }
 
-enum class Stop : std::uint8_t { Active, AspectRatio, Size, Collision, Neighbour, MaxLayers };
+enum class Stop : std::uint8_t {
+    Active,
+    AspectRatio,
+    Size,
+    Collision,
+    Neighbour,
+    MaxLayers,
+    Unresolvable
+};
+
+/// No layer is built when the first is thinner than 2^-kUnresolvableExponent of the walls'
+/// largest coordinate (the 3D generators spare tetrahedra below the same fraction).
+constexpr int kUnresolvableExponent = 44;
 
 struct Stack {
     VertIdx base = kNone;
@@ -346,6 +358,14 @@ class LayerBuilder {
                 probe_xy_[2 * s] = std::fma(probe, stacks_[s].direction.x, p[0]);
                 probe_xy_[2 * s + 1] = std::fma(probe, stacks_[s].direction.y, p[1]);
             }
+            // A first layer thinner than 2^-44 of the walls' largest coordinate is a few ulps
+            // thick somewhere: no stack is built (at 1e-14 to 1e-16 on the NACA 0012 the fill
+            // then overlapped the thin cells and steps). All or none, so that no thin steps
+            // are left. Scale-invariant: both sides scale.
+            if (k == 0 && h < std::ldexp(largest_wall_coordinate(), -kUnresolvableExponent)) {
+                for (std::uint32_t s = 0; s < stacks_.size(); ++s) stop(s, Stop::Unresolvable);
+                break;
+            }
             std::vector<std::uint8_t> candidate(stacks_.size(), 0);
             bool any = false;
             for (std::uint32_t s = 0; s < stacks_.size(); ++s) {
@@ -388,6 +408,16 @@ class LayerBuilder {
             resolve_conflicts(candidate, k == 0);
             commit(candidate);
         }
+    }
+
+    /// The largest coordinate magnitude of a stack's wall vertex.
+    double largest_wall_coordinate() const {
+        double largest = 0;
+        for (const Stack& stack : stacks_) {
+            const double* p = &xy_[2 * static_cast<std::size_t>(stack.base)];
+            largest = std::max({largest, std::abs(p[0]), std::abs(p[1])});
+        }
+        return largest;
     }
 
     /// In a fan (stacks sharing a wall vertex, consecutive), the stacks that stay at the wall
@@ -438,6 +468,9 @@ class LayerBuilder {
                 break;
             case Stop::MaxLayers:
                 ++counters_.stopped_max_layers;
+                break;
+            case Stop::Unresolvable:
+                ++counters_.stopped_unresolvable;
                 break;
             case Stop::Active:
                 break;

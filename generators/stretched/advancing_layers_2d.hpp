@@ -105,6 +105,8 @@ struct AdvancingLayersCounters2 {
     std::uint64_t stopped_collision = 0;
     std::uint64_t stopped_neighbour = 0;  ///< a neighbour stopped more than two layers below
     std::uint64_t stopped_max_layers = 0;
+    std::uint64_t stopped_unresolvable =
+        0;  ///< all, when the first layer is under 2^-44 of the walls' coordinates
     std::uint64_t crossing_tests = 0;   ///< segment pairs and point-in-cell tests decided exactly
     std::uint64_t layer_quads = 0;      ///< layer cells (quadrilaterals, split or kept)
     std::uint64_t layer_triangles = 0;  ///< triangles of the layers (steps, fans, split quads)
@@ -127,10 +129,10 @@ struct AdvancingLayersCounters2 {
 inline constexpr std::array kAdvancingLayersCounterNames = EM_COUNTER_TABLE(
     AdvancingLayersCounters2, wall_loops, wall_vertices, stacks, fan_corners, merged_corners,
     layers, layer_points, stopped_aspect_ratio, stopped_size, stopped_collision, stopped_neighbour,
-    stopped_max_layers, crossing_tests, layer_quads, layer_triangles, fill_triangles,
-    fill_min_max_swaps, quads, triangles, max_wall_aspect_ratio, omesh_rings, omesh_cells,
-    omesh_min_ring_layers, omesh_max_ring_layers, omesh_removed_overlap, omesh_removed_fold,
-    omesh_removed_step);
+    stopped_max_layers, stopped_unresolvable, crossing_tests, layer_quads, layer_triangles,
+    fill_triangles, fill_min_max_swaps, quads, triangles, max_wall_aspect_ratio, omesh_rings,
+    omesh_cells, omesh_min_ring_layers, omesh_max_ring_layers, omesh_removed_overlap,
+    omesh_removed_fold, omesh_removed_step);
 static_assert(counter_table_complete(kAdvancingLayersCounterNames));
 
 struct AdvancingLayersResult2 {

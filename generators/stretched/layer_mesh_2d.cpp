@@ -2,10 +2,13 @@
 // The shared last phase of the layered generators (see layer_mesh_2d.hpp).
 #include "generators/stretched/layer_mesh_2d.hpp"
 
+#include "base/number_text.hpp"
+
 #include <memory>
 #include <string>
 
 #include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
@@ -184,6 +187,20 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
         }
         return;
     }
+    // Every stack stopped before its first layer: the walls are meshed by the fill alone, and
+    // the user asked for layers (given with the mesh's warnings below).
+    std::string no_layer_warning;
+    if (layered && counters.stacks > 0 && counters.layer_points == 0) {
+        no_layer_warning =
+            ("advancing layers: no layer was built (of " + std::to_string(counters.stacks) +
+             " stacks, " + std::to_string(counters.stopped_unresolvable) +
+             " stopped as the first layer is thinner than 2^-44 of the walls' largest "
+             "coordinate, " +
+             std::to_string(counters.stopped_collision) + " by a collision, " +
+             std::to_string(counters.stopped_size) + " by the size, " +
+             std::to_string(counters.stopped_aspect_ratio) + " by the aspect ratio; first height " +
+             format_number(options.layers.first_height) + ")");
+    }
     if (fill_mesh.counters.intersections > 0 || fill_mesh.counters.vertices_on_segments > 0) {
         throw GeometryError(
             "advancing layers: the last layer's front crosses itself or the "
@@ -248,6 +265,7 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
     mesh.input_vertex_count = cdt.input_vertex_count;
     mesh.merged_into = cdt.merged_into;
     mesh.warnings = cdt.warnings;
+    if (!no_layer_warning.empty()) mesh.warnings.push_back(std::move(no_layer_warning));
     mesh.counters = cdt.counters;
 
     // The aspect ratio reached at the wall: a wall piece over the first height, where both of
@@ -265,7 +283,8 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
                                       options.layers.first_height);
         }
     }
-    counters.max_wall_aspect_ratio = static_cast<std::uint64_t>(std::floor(best));
+    // Capped at 2^63: a first height of 1e-300 beside wall pieces of 0.01 would not convert.
+    counters.max_wall_aspect_ratio = static_cast<std::uint64_t>(std::min(std::floor(best), 0x1p63));
 
     const MixedMeshCheck2 check =
         check_mixed_mesh_2d(mesh.mesh.xy, triangles, result.quads, mesh.pieces);

@@ -291,6 +291,41 @@ TEST(Generators_AdvancingLayers2, ScaledBy2ToThePlusMinus600GivesTheSameMeshScal
     }
 }
 
+TEST(Generators_AdvancingLayers2, AFirstHeightDoublesCannotPlaceBuildsNoLayerAndWarns) {
+    // On the NACA 0012 (coordinates up to 1) a first height of 1e-14 to 1e-16 moved points by a
+    // few ulps near the trailing edge and not at all elsewhere; the fill then overlapped the
+    // layer cells (the mesh failed its check). Below 2^-44 of the walls' largest coordinate no
+    // stack is built, at any scale; 2^-43 still builds layers.
+    const Input naca = exactmesh::testing::from_domain(
+        gen::sample_domain(gen::SampleDomain::Naca0012, gen::SizeFunction::uniform(0.05)));
+    // The walls' largest coordinate: the trailing edge at x = 1 (the far field's box is larger,
+    // but it is no wall).
+    const double largest = 1.0;
+    for (const int e : {-600, 0, 600}) {
+        SCOPED_TRACE("scale 2^" + std::to_string(e));
+        Input scaled = naca;
+        for (double& c : scaled.xy) c = std::ldexp(c, e);
+        for (double& c : scaled.holes) c = std::ldexp(c, e);
+        for (const double height : {1e-15, 1e-100 * largest, 0x1.fp-45 * largest}) {
+            SCOPED_TRACE(::testing::Message() << "first height " << height);
+            const gen::AdvancingLayersResult2 r =
+                run(scaled, std::ldexp(height, e), 1.2, false, 60);
+            EXPECT_EQ(r.counters.layer_points, 0u);
+            EXPECT_EQ(r.counters.stopped_unresolvable, r.counters.stacks);
+            ASSERT_FALSE(r.mesh.warnings.empty());
+            EXPECT_NE(r.mesh.warnings.back().find("no layer was built"), std::string::npos)
+                << r.mesh.warnings.back();
+            expect_valid(r);
+            expect_input_kept(r, scaled);
+        }
+        const gen::AdvancingLayersResult2 thin =
+            run(scaled, std::ldexp(0x1p-43 * largest, e), 1.2, false, 60);
+        EXPECT_GT(thin.counters.layer_points, 0u);
+        EXPECT_EQ(thin.counters.stopped_unresolvable, 0u);
+        expect_valid(thin);
+    }
+}
+
 TEST(Generators_AdvancingLayers2, OpposingWallsCloserThanTheLayersStopByCollision) {
     // Two square holes 0.02 apart; alone, their layers would grow about 0.1 thick.
     Input in = square(1);
