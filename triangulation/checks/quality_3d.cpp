@@ -9,6 +9,7 @@
 
 #include "base/errors.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
+#include "predicates/power_of_two.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -116,8 +117,22 @@ QualityStats3 quality_stats_3d(const Tetrahedralization3& mesh, const QualityOpt
     constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
     long double min_angle = 180, max_angle = 0, min_q = 2, sum_q = 0, max_ratio = 0;
     for (std::size_t t = 0; t < stats.tets; ++t) {
-        const TetCorners p{mesh.point(mesh.tets[4 * t]), mesh.point(mesh.tets[4 * t + 1]),
-                           mesh.point(mesh.tets[4 * t + 2]), mesh.point(mesh.tets[4 * t + 3])};
+        // The corners scaled by the power of two that brings their largest coordinate to
+        // [1, 2) (exact): the angles' long double products then stay in range whatever the
+        // mesh's scale, even where long double is double, and a mesh scaled by 2^k gives the
+        // same bits.
+        double corners[4][3];
+        double largest = 0;
+        for (int r = 0; r < 4; ++r) {
+            const double* point = mesh.point(mesh.tets[4 * t + static_cast<std::size_t>(r)]);
+            for (int i = 0; i < 3; ++i) largest = std::max(largest, std::fabs(point[i]));
+        }
+        const predicates::PowerOfTwo unit(predicates::unit_shift(largest));
+        for (int r = 0; r < 4; ++r) {
+            const double* point = mesh.point(mesh.tets[4 * t + static_cast<std::size_t>(r)]);
+            for (int i = 0; i < 3; ++i) corners[r][i] = unit(point[i]);
+        }
+        const TetCorners p{corners[0], corners[1], corners[2], corners[3]};
         long double smallest = 180;
         for (const auto& e : kEdges) {
             const long double degrees = dihedral_radians(Dihedral{p, e[0], e[1]}) * 180 / kPi;

@@ -10,9 +10,10 @@
 // with a bounded ratio are exactly the slivers that refinement cannot remove [Cheng et al.,
 // "Sliver exudation", J. ACM 47(5), 2000]. Needles and caps (a large ratio) are not slivers.
 // The radius-edge ratios have a histogram too (bins of `radius_edge_bin_width` up to
-// `radius_edge_histogram_max`, one open bin above), computed on each tetrahedron's edge vectors
-// rescaled by a power of two to a largest component in [1, 2): no square overflows or
-// underflows, and the mesh scaled by 2^k (k in -600..600) gives the same bits.
+// `radius_edge_histogram_max`, one open bin above). Every measure is computed on the corners
+// scaled by a power of two to a largest coordinate in [1, 2), the ratio on edge vectors rescaled
+// the same way: no square overflows or underflows, and the mesh scaled by 2^k (k in -600..600)
+// gives the same bits.
 // Statistics only: no decision anywhere depends on these rounded numbers.
 #pragma once
 

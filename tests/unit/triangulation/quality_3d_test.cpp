@@ -196,7 +196,7 @@ TEST(Triangulation_Quality3, HistogramsAreScaleInvariantAtTwoToThePlusMinus600) 
     // The Delaunay tetrahedralization of random points (its tetrahedra include flat-ish ones at
     // the hull) and the same mesh with every coordinate times 2^600 and 2^-600 (exact): the same
     // histograms, counts and extremes, bit for bit. Squared lengths at 2^1200 or 2^-1200 would
-    // overflow or underflow a double; the rescaled edge vectors never do.
+    // overflow or underflow a double; the rescaled corners never do.
     const auto points = static_cast<std::size_t>(std::max(50.0, 2000 * em::testing::test_scale()));
     std::mt19937_64 rng(15);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
