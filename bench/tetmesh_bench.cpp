@@ -42,12 +42,12 @@
 // Peers are run with manual time; one that is not installed (tetgen, gmsh on PATH; cgal_mesh_3d
 // beside this binary, built with EXACTMESH_WITH_CGAL) or that fails is a skip, not a failure.
 // Counters, measured by the same code on every mesh (triangulation/checks/quality_3d): tets,
-// tets_per_second (of the timed construction), min/max_dihedral_degrees, dihedrals_below_10 and
-// dihedrals_below_20 (of the 6 #T angles) and their shares (_share: of the 6 #T), slivers (below
-// 5 degrees with radius-edge <= 2), max_radius_edge, radius_edge_over_2 and its share of #T,
-// mean_volume_edge; with EXACTMESH_TETMESH_BENCH_HISTOGRAMS=1 also the histograms, counters
-// dihedral_bin_<k> (10-degree bins, k = 0..17) and radius_edge_bin_<k> (0.2-wide bins, k = 0..19,
-// then k = 20 for [4, inf)), for scripts/tetmesh_report.py; memory: peak_heap_bytes for
+// tets_per_second (over the mean time of the iterations), min/max_dihedral_degrees,
+// dihedrals_below_10 and dihedrals_below_20 (of the 6 #T angles) and their shares (_share: of the 6
+// #T), slivers (below 5 degrees with radius-edge <= 2), max_radius_edge, radius_edge_over_2 and its
+// share of #T, mean_volume_edge; with EXACTMESH_TETMESH_BENCH_HISTOGRAMS=1 also the histograms,
+// counters dihedral_bin_<k> (10-degree bins, k = 0..17) and radius_edge_bin_<k> (0.2-wide bins, k =
+// 0..19, then k = 20 for [4, inf)), for scripts/tetmesh_report.py; memory: peak_heap_bytes for
 // exactmesh's rows (peak live heap of the construction, bench/heap_accounting.cpp) and
 // peak_rss_bytes for a peer (its process's maximum resident set, measured by GNU time in
 // bench_support's run_shell_command: everything the program holds, input and libraries
@@ -236,6 +236,11 @@ void set_target_counters(benchmark::State& state, const DomainCase& domain, doub
     state.counters["tets_over_target"] = target > 0 ? tets / target : 0;
 }
 
+/// The mean of `runs` iteration times (0 without one): tets_per_second's time.
+double mean_seconds(double total, std::uint64_t runs) {
+    return runs > 0 ? total / static_cast<double>(runs) : 0;
+}
+
 /// One timed in-process construction per iteration, its peak heap and quality counters.
 void run_in_process(benchmark::State& state,
                     const std::function<tri::Tetrahedralization3()>& construct) {
@@ -396,7 +401,8 @@ void bm_tetgen(benchmark::State& state, DomainCase domain, double max_volume) {
     // No -Q: TetGen then prints its phase timings, which give the construction without I/O.
     const std::string command = "tetgen -pq2a" + number_text(max_volume) + " '" + poly.string() +
                                 "' > '" + log.string() + "' 2>&1";
-    double seconds = 0, rss = 0;
+    double seconds = 0, rss = 0, total_seconds = 0;
+    std::uint64_t runs = 0;
     for (auto _ : state) {
         const exactmesh::bench::ProcessRun run = exactmesh::bench::run_shell_command(command);
         if (!run.ok) {
@@ -408,9 +414,11 @@ void bm_tetgen(benchmark::State& state, DomainCase domain, double max_volume) {
         const double output = log_seconds(log, "Output seconds:");
         seconds = total - (std::isnan(output) ? 0.0 : output);
         state.SetIterationTime(seconds);
+        total_seconds += seconds;
+        ++runs;
     }
     const tri::Tetrahedralization3 mesh = read_node_ele(scratch.dir / "domain.1");
-    set_quality_counters(state, mesh, seconds);
+    set_quality_counters(state, mesh, mean_seconds(total_seconds, runs));
     set_target_counters(state, domain, max_volume, static_cast<double>(mesh.tet_count()));
     state.counters["peak_rss_bytes"] = rss;
 }
@@ -450,7 +458,8 @@ void bm_cgal_mesh_3(benchmark::State& state, DomainCase domain, double max_volum
             if (!exactmesh::bench::run_shell_command(command(size, false)).ok) return 0.0;
             return static_cast<double>(read_node_ele(scratch.dir / "mesh").tet_count());
         });
-    double seconds = 0, rss = 0, domain_seconds = 0, optimize_seconds = 0;
+    double seconds = 0, rss = 0, domain_seconds = 0, optimize_seconds = 0, total_seconds = 0;
+    std::uint64_t runs = 0;
     for (auto _ : state) {
         const exactmesh::bench::ProcessRun run =
             exactmesh::bench::run_shell_command(command(cell_size, optimize));
@@ -467,9 +476,11 @@ void bm_cgal_mesh_3(benchmark::State& state, DomainCase domain, double max_volum
             log_seconds(log, "perturb_seconds:") + log_seconds(log, "exude_seconds:");
         seconds = domain_seconds + log_seconds(log, "refine_seconds:") + optimize_seconds;
         state.SetIterationTime(seconds);
+        total_seconds += seconds;
+        ++runs;
     }
     const tri::Tetrahedralization3 mesh = read_node_ele(scratch.dir / "mesh");
-    set_quality_counters(state, mesh, seconds);
+    set_quality_counters(state, mesh, mean_seconds(total_seconds, runs));
     set_target_counters(state, domain, max_volume, static_cast<double>(mesh.tet_count()));
     state.counters["peak_rss_bytes"] = rss;
     state.counters["cgal_domain_seconds"] = domain_seconds;
@@ -506,7 +517,8 @@ void bm_gmsh(benchmark::State& state, DomainCase domain, double max_volume, bool
         }
     });
     exactmesh::bench::GmshMesh3 last;
-    double seconds = 0;
+    double seconds = 0, total_seconds = 0;
+    std::uint64_t runs = 0;
     for (auto _ : state) {
         try {
             last = exactmesh::bench::run_gmsh_geo_3d(geo(size, optimize), scratch.dir);
@@ -516,12 +528,14 @@ void bm_gmsh(benchmark::State& state, DomainCase domain, double max_volume, bool
         }
         seconds = last.cpu_seconds_3d + (optimize ? last.cpu_seconds_optimize : 0.0);
         state.SetIterationTime(seconds);
+        total_seconds += seconds;
+        ++runs;
     }
     if (last.mesh.tet_count() == 0) {
         state.SkipWithError("gmsh wrote no tetrahedra");
         return;
     }
-    set_quality_counters(state, last.mesh, seconds);
+    set_quality_counters(state, last.mesh, mean_seconds(total_seconds, runs));
     set_target_counters(state, domain, max_volume, static_cast<double>(last.mesh.tet_count()));
     state.counters["peak_rss_bytes"] = last.max_rss_bytes;
     state.counters["gmsh_2d_cpu_seconds"] = last.cpu_seconds_2d;
