@@ -332,6 +332,18 @@ void print_quality_3d(const triangulation::Tetrahedralization3& mesh, const std:
                   << (b + 1 == q.dihedral_histogram.size() ? "]" : ")") << ": "
                   << q.dihedral_histogram[b] << '\n';
     }
+    // Radius-edge bins [lo, hi), the last one [max, inf): flat tetrahedra have an infinite ratio.
+    std::cout << prefix << "radius_edge_over_2: " << q.over_radius_edge_bound << '\n';
+    const std::size_t last = q.radius_edge_histogram.size() - 1;
+    for (std::size_t b = 0; b <= last; ++b) {
+        std::cout << prefix << "radius_edge[" << static_cast<double>(b) * q.radius_edge_bin_width
+                  << ",";
+        if (b == last)
+            std::cout << "inf";
+        else
+            std::cout << static_cast<double>(b + 1) * q.radius_edge_bin_width;
+        std::cout << "): " << q.radius_edge_histogram[b] << '\n';
+    }
     std::cout.precision(precision);
 }
 

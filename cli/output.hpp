@@ -134,7 +134,8 @@ void print_construction_stats(const std::vector<std::pair<std::string, std::uint
                               int dimension = 2);
 
 /// The --quality report of a tetrahedralization (triangulation/checks/quality_3d): dihedral
-/// extremes, volume-edge, radius-edge, slivers, the 10-degree dihedral histogram.
+/// extremes, volume-edge, radius-edge, slivers, the 10-degree dihedral histogram, the count of
+/// radius-edge ratios over 2 and their histogram (bins of 0.2 up to 4, then [4, inf)).
 void print_quality_3d(const triangulation::Tetrahedralization3& mesh,
                       const std::string& prefix = "");
 

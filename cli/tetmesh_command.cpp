@@ -428,7 +428,8 @@ void add_tetmesh_command(CLI::App& app) {
                       "refinement)");
     command->add_flag("--quality", arguments->quality,
                       "Print the mesh's quality: dihedral extremes and 10-degree histogram, "
-                      "volume-edge, radius-edge, slivers (after sliver removal; the same before "
+                      "volume-edge, radius-edge (largest, count over 2, histogram of 0.2-wide "
+                      "bins up to 4), slivers (after sliver removal; the same before "
                       "it prefixed before_sliver_removal_)");
     add_stats_flag(*command, arguments->stats,
                    "the recovery's and refinement's counters, predicate stages",

@@ -695,12 +695,14 @@ swap3d_criteria() {
     grep -Eq "^$name: [0-9.e+-]+$" "$work/out" || fail "swap3d --quality: no '$name: value' line"
   done
   [[ $(grep -c '^dihedral_degrees\[' "$work/out") -eq 18 ]] || fail "swap3d --quality: expected 18 histogram bins"
+  [[ $(grep -c '^radius_edge\[' "$work/out") -eq 21 ]] || fail "swap3d --quality: expected 21 radius-edge bins"
+  grep -Eq '^radius_edge_over_2: [0-9]+$' "$work/out" || fail "swap3d --quality: no radius_edge_over_2 line"
   for criterion in max-min-dihedral min-max-dihedral volume-edge; do
     run 0 swap3d "$data/stall7.node" "$data/stall7_placing.ele" -o "$work/$criterion.ele" --criterion "$criterion" \
       --stats --quality || continue
     grep -q "^criterion: $criterion$" "$work/out" || fail "swap3d: criterion line for $criterion"
     ! grep -q '^stalled_faces' "$work/out" || fail "swap3d: stalled_faces is a Delaunay counter"
-    if grep -Ev '^[a-z_0-9]+(\[[0-9]+,[0-9]+[])])?: [^ ]+$' "$work/out" | grep -q .; then
+    if grep -Ev '^[a-z_0-9]+(\[[0-9.]+,([0-9.]+|inf)[])])?: [^ ]+$' "$work/out" | grep -q .; then
       fail "swap3d --stats --quality: a line is not 'name: value'"
     fi
   done
@@ -1426,6 +1428,10 @@ tetmesh_refine() {
   grep -Eq '^construct_seconds: [0-9]+\.[0-9]+$' "$work/out" || fail "--stats: no construct_seconds"
   [[ $(head -n1 "$work/q.ele" | awk '{print $1}') -ge 100 ]] || fail "q.ele: fewer than 100 tetrahedra"
   awk '/^max_radius_edge:/ { exit !($2 <= 1.2) }' "$work/out" || fail "--quality: max_radius_edge over 1.2"
+  # The radius-edge histogram agrees with the bound: no ratio over 1.2, so nothing from [1.2, 1.4) on.
+  grep -q '^radius_edge_over_2: 0$' "$work/out" || fail "--quality: radius_edge_over_2 not 0"
+  awk -F'[][,):]+' '/^radius_edge\[/ && $2 >= 1.2 && $NF != " 0" { bad = 1 } END { exit bad }' "$work/out" ||
+    fail "--quality: radius-edge ratios of 1.2 and more counted: $(grep '^radius_edge' "$work/out")"
   # Input vertices keep their numbers; Steiner points follow them.
   sed -n 2,9p "$work/q.node" | awk '{print $2, $3, $4}' | tr '\n' ' ' |
     grep -q '^0 0 0 1 0 0 1 1 0 0 1 0 0 0 1 1 0 1 1 1 1 0 1 1 $' || fail "q.node: input vertices moved"
