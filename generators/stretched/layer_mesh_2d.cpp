@@ -2,10 +2,11 @@
 // The shared last phase of the layered generators (see layer_mesh_2d.hpp).
 #include "generators/stretched/layer_mesh_2d.hpp"
 
-#include "base/number_text.hpp"
-
+#include <algorithm>
+#include <array>
 #include <memory>
 #include <string>
+#include <unordered_set>
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
@@ -286,8 +287,40 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
     // Capped at 2^63: a first height of 1e-300 beside wall pieces of 0.01 would not convert.
     counters.max_wall_aspect_ratio = static_cast<std::uint64_t>(std::min(std::floor(best), 0x1p63));
 
-    const MixedMeshCheck2 check =
-        check_mixed_mesh_2d(mesh.mesh.xy, triangles, result.quads, mesh.pieces);
+    MixedMeshCheck2 check = check_mixed_mesh_2d(mesh.mesh.xy, triangles, result.quads, mesh.pieces);
+    // A piece in no cell may lie in a hole: a segment sticking into it stays a piece (as in
+    // every generator's output), split by the fill where a free vertex lies on it. Such a piece
+    // lies on a piece of the domain with no domain triangle on either side (exact orient2d).
+    if (!check.missing_pieces.empty()) {
+        std::unordered_set<std::uint64_t> domain_edges;
+        for (std::size_t e = 0; e < cdt.mesh.triangles.size(); ++e) {
+            domain_edges.insert(
+                edge_key(cdt.mesh.triangles[e], cdt.mesh.triangles[e - e % 3 + (e % 3 + 1) % 3]));
+        }
+        std::vector<std::array<VertIdx, 2>> outside;
+        for (std::size_t p = 0; p < cdt.pieces.size() / 2; ++p) {
+            const VertIdx a = cdt.pieces[2 * p], b = cdt.pieces[2 * p + 1];
+            if (domain_edges.count(edge_key(a, b)) == 0) outside.push_back({a, b});
+        }
+        const auto point = [&](VertIdx v) {
+            return &mesh.mesh.xy[2 * static_cast<std::size_t>(v)];
+        };
+        // Whether v lies on the closed segment ab (exact: collinear, then within its box).
+        const auto on = [&](VertIdx v, const std::array<VertIdx, 2>& ab) {
+            const double *a = point(ab[0]), *b = point(ab[1]), *q = point(v);
+            return pred::orient2d(a, b, q) == pred::Sign::Zero && std::min(a[0], b[0]) <= q[0] &&
+                   q[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= q[1] &&
+                   q[1] <= std::max(a[1], b[1]);
+        };
+        std::vector<VertIdx> missing;
+        for (std::size_t i = 0; i < check.missing_pieces.size(); i += 2) {
+            const VertIdx a = check.missing_pieces[i], b = check.missing_pieces[i + 1];
+            const bool in_hole = std::any_of(outside.begin(), outside.end(),
+                                             [&](const auto& o) { return on(a, o) && on(b, o); });
+            if (!in_hole) missing.insert(missing.end(), {a, b});
+        }
+        check.missing_pieces = std::move(missing);
+    }
     if (!check.ok())
         throw GeometryError("advancing layers: the mixed mesh fails its check: " + check.summary());
 }

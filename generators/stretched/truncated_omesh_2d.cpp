@@ -290,7 +290,8 @@ class OMeshBuilder {
         return false;
     }
 
-    /// Whether the quad meets a boundary segment or vertex of the domain.
+    /// Whether the quad meets a boundary segment or a vertex of the domain (on a segment or
+    /// free).
     bool meets_boundary(const Quad& q) {
         const auto [lo, hi] = box(q);
         bool found = false;
@@ -303,6 +304,10 @@ class OMeshBuilder {
                                           point(q[(k + 1) % 4]), point(a), point(b));
             }
             found = found || contains(q, a) || contains(q, b);
+        });
+        // A vertex on no segment (a free input vertex) inside the cell would be left out.
+        free_vertex_grid_->query(lo.data(), hi.data(), [&](std::uint32_t v) {
+            if (!found && contains(q, v)) found = true;
         });
         return found;
     }
@@ -345,6 +350,11 @@ class OMeshBuilder {
         piece_grid_ = std::make_unique<BucketGrid>(x0, y0, bucket);
         for (std::uint32_t p = 0; p < domain_.pieces.size() / 2; ++p)
             piece_grid_->insert(p, point(domain_.pieces[2 * p]), point(domain_.pieces[2 * p + 1]));
+        std::vector<std::uint8_t> on_piece(base_, 0);
+        for (const VertIdx v : domain_.pieces) on_piece[v] = 1;
+        free_vertex_grid_ = std::make_unique<BucketGrid>(x0, y0, bucket);
+        for (VertIdx v = 0; v < base_; ++v)
+            if (!on_piece[v]) free_vertex_grid_->insert(v, point(v), point(v));
         BucketGrid cells(x0, y0, bucket);
         std::vector<std::array<std::uint32_t, 2>> cell_at(cells_);
         for (std::uint32_t j = 0; j < height_.size(); ++j) {
@@ -423,6 +433,7 @@ class OMeshBuilder {
     std::vector<std::uint32_t> height_;   ///< per column: the layers kept
     std::uint32_t cells_ = 0;
     std::unique_ptr<BucketGrid> piece_grid_;
+    std::unique_ptr<BucketGrid> free_vertex_grid_;  ///< domain vertices on no segment
 };
 
 }  // namespace

@@ -326,6 +326,48 @@ TEST(Generators_AdvancingLayers2, AFirstHeightDoublesCannotPlaceBuildsNoLayerAnd
     }
 }
 
+TEST(Generators_AdvancingLayers2, FreeVerticesBesideTheWallAndSegmentsIntoTheHoleAreKept) {
+    // A hostile-input campaign found two failures on a square with a circular hole: the
+    // truncated O-mesh laid cells over a free vertex beside the wall (the vertex was left out
+    // of the mesh, silently), and a segment from inside the hole out across the wall left its
+    // inner piece in no cell, which the mixed mesh check took for a missing boundary piece.
+    Input in = square(1);
+    add_circle(in, 0, 0, 0.25, 32);
+    // Free vertices a first layer (and a few) above the wall, between two wall vertices.
+    for (const double r : {0.2505, 0.252, 0.26}) {
+        const double a = 2 * std::numbers::pi * 0.5 / 32;
+        in.xy.insert(in.xy.end(), {r * std::cos(a), r * std::sin(a)});
+    }
+    // A segment from inside the hole (x = 0.1) out to x = 0.7.
+    const auto first = static_cast<std::uint32_t>(in.xy.size() / 2);
+    in.xy.insert(in.xy.end(), {0.1, -0.05, 0.7, -0.05});
+    in.segments.insert(in.segments.end(), {first, first + 1});
+    for (const gen::LayerMethod2 method :
+         {gen::LayerMethod2::AdvancingLayers, gen::LayerMethod2::TruncatedOMesh}) {
+        SCOPED_TRACE(method == gen::LayerMethod2::TruncatedOMesh ? "O-mesh" : "layers");
+        const gen::AdvancingLayersResult2 r = run(in, 1e-3, 1.2, false, 60, {}, method);
+        EXPECT_GT(r.counters.layer_points, 0u);
+        // Valid, but for the segment's piece inside the hole (x from 0.1 to the wall), which
+        // stays a piece of the output (as in every generator's) in no cell.
+        gen::MixedMeshCheck2 check =
+            gen::check_mixed_mesh_2d(r.mesh.mesh.xy, r.mesh.mesh.triangles, r.quads, r.mesh.pieces);
+        ASSERT_EQ(check.missing_pieces.size(), 2u);
+        for (const tri::VertIdx v : check.missing_pieces) {
+            EXPECT_EQ(r.mesh.mesh.xy[2 * v + 1], -0.05);
+            EXPECT_LT(r.mesh.mesh.xy[2 * v], 0.25);
+        }
+        check.missing_pieces.clear();
+        EXPECT_TRUE(check.ok()) << check.summary();
+        // Every input vertex but the segment's end inside the hole is in some cell.
+        const tri::Triangulation2& mesh = r.mesh.mesh;
+        std::set<tri::VertIdx> used(mesh.triangles.begin(), mesh.triangles.end());
+        for (tri::VertIdx v = 0; v < first; ++v)
+            EXPECT_TRUE(used.count(v)) << "input vertex " << v << " is in no cell";
+        EXPECT_TRUE(used.count(first + 1));
+        EXPECT_FALSE(used.count(first));
+    }
+}
+
 TEST(Generators_AdvancingLayers2, OpposingWallsCloserThanTheLayersStopByCollision) {
     // Two square holes 0.02 apart; alone, their layers would grow about 0.1 thick.
     Input in = square(1);
