@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "base/errors.hpp"
@@ -289,34 +290,40 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
 
     MixedMeshCheck2 check = check_mixed_mesh_2d(mesh.mesh.xy, triangles, result.quads, mesh.pieces);
     // A piece in no cell may lie in a hole: a segment sticking into it stays a piece (as in
-    // every generator's output), split by the fill where a free vertex lies on it. Such a piece
-    // lies on a piece of the domain with no domain triangle on either side (exact orient2d).
+    // every generator's output), split by the fill where a vertex lies within rounding of it.
+    // Such a piece comes from the same input segment as a piece of the domain with no domain
+    // triangle on either side, and lies within that piece's bounding box (the chain is
+    // collinear within rounding, so the box orders it; exact comparisons of coordinates).
     if (!check.missing_pieces.empty()) {
         std::unordered_set<std::uint64_t> domain_edges;
         for (std::size_t e = 0; e < cdt.mesh.triangles.size(); ++e) {
             domain_edges.insert(
                 edge_key(cdt.mesh.triangles[e], cdt.mesh.triangles[e - e % 3 + (e % 3 + 1) % 3]));
         }
-        std::vector<std::array<VertIdx, 2>> outside;
-        for (std::size_t p = 0; p < cdt.pieces.size() / 2; ++p) {
-            const VertIdx a = cdt.pieces[2 * p], b = cdt.pieces[2 * p + 1];
-            if (domain_edges.count(edge_key(a, b)) == 0) outside.push_back({a, b});
+        std::unordered_map<std::uint64_t, std::uint32_t> mesh_piece_segment;
+        for (std::size_t p = 0; p < mesh.pieces.size() / 2; ++p) {
+            mesh_piece_segment.emplace(edge_key(mesh.pieces[2 * p], mesh.pieces[2 * p + 1]),
+                                       mesh.piece_segment[p]);
         }
         const auto point = [&](VertIdx v) {
             return &mesh.mesh.xy[2 * static_cast<std::size_t>(v)];
         };
-        // Whether v lies on the closed segment ab (exact: collinear, then within its box).
-        const auto on = [&](VertIdx v, const std::array<VertIdx, 2>& ab) {
-            const double *a = point(ab[0]), *b = point(ab[1]), *q = point(v);
-            return pred::orient2d(a, b, q) == pred::Sign::Zero && std::min(a[0], b[0]) <= q[0] &&
-                   q[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= q[1] &&
-                   q[1] <= std::max(a[1], b[1]);
+        const auto in_box = [&](VertIdx v, VertIdx c, VertIdx d) {
+            const double *q = point(v), *a = point(c), *b = point(d);
+            return std::min(a[0], b[0]) <= q[0] && q[0] <= std::max(a[0], b[0]) &&
+                   std::min(a[1], b[1]) <= q[1] && q[1] <= std::max(a[1], b[1]);
         };
         std::vector<VertIdx> missing;
         for (std::size_t i = 0; i < check.missing_pieces.size(); i += 2) {
             const VertIdx a = check.missing_pieces[i], b = check.missing_pieces[i + 1];
-            const bool in_hole = std::any_of(outside.begin(), outside.end(),
-                                             [&](const auto& o) { return on(a, o) && on(b, o); });
+            const auto origin = mesh_piece_segment.find(edge_key(a, b));
+            bool in_hole = false;
+            for (std::size_t p = 0; p < cdt.pieces.size() / 2 && !in_hole; ++p) {
+                const VertIdx c = cdt.pieces[2 * p], d = cdt.pieces[2 * p + 1];
+                in_hole =
+                    origin != mesh_piece_segment.end() && cdt.piece_segment[p] == origin->second &&
+                    domain_edges.count(edge_key(c, d)) == 0 && in_box(a, c, d) && in_box(b, c, d);
+            }
             if (!in_hole) missing.insert(missing.end(), {a, b});
         }
         check.missing_pieces = std::move(missing);
