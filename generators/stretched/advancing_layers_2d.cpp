@@ -13,6 +13,8 @@
 #include <numbers>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
+#include <vector>
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
@@ -753,6 +755,41 @@ std::string MixedMeshCheck2::summary() const {
            std::to_string(overused_edges.size() / 2) + " edges in more than two cells, " +
            std::to_string(open_edges.size() / 2) + " open edges off the boundary, " +
            std::to_string(missing_pieces.size() / 2) + " missing boundary pieces";
+}
+
+void exempt_pieces_in_holes_2d(MixedMeshCheck2& check, const tri::Cdt2Result& domain,
+                               std::span<const double> xy, std::span<const VertIdx> pieces,
+                               std::span<const std::uint32_t> piece_segment) {
+    if (check.missing_pieces.empty()) return;
+    const auto key = [](VertIdx a, VertIdx b) {
+        return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+    };
+    std::unordered_set<std::uint64_t> domain_edges;
+    const std::vector<VertIdx>& triangles = domain.mesh.triangles;
+    for (std::size_t e = 0; e < triangles.size(); ++e)
+        domain_edges.insert(key(triangles[e], triangles[e - e % 3 + (e % 3 + 1) % 3]));
+    std::unordered_map<std::uint64_t, std::uint32_t> segment_of;
+    for (std::size_t p = 0; p < pieces.size() / 2 && p < piece_segment.size(); ++p)
+        segment_of.emplace(key(pieces[2 * p], pieces[2 * p + 1]), piece_segment[p]);
+    const auto in_box = [&](VertIdx v, VertIdx c, VertIdx d) {
+        const double *q = &xy[2 * std::size_t{v}], *a = &xy[2 * std::size_t{c}],
+                     *b = &xy[2 * std::size_t{d}];
+        return std::min(a[0], b[0]) <= q[0] && q[0] <= std::max(a[0], b[0]) &&
+               std::min(a[1], b[1]) <= q[1] && q[1] <= std::max(a[1], b[1]);
+    };
+    std::vector<VertIdx> missing;
+    for (std::size_t i = 0; i + 1 < check.missing_pieces.size(); i += 2) {
+        const VertIdx a = check.missing_pieces[i], b = check.missing_pieces[i + 1];
+        const auto origin = segment_of.find(key(a, b));
+        bool in_hole = false;
+        for (std::size_t p = 0; p < domain.pieces.size() / 2 && !in_hole; ++p) {
+            const VertIdx c = domain.pieces[2 * p], d = domain.pieces[2 * p + 1];
+            in_hole = origin != segment_of.end() && domain.piece_segment[p] == origin->second &&
+                      domain_edges.count(key(c, d)) == 0 && in_box(a, c, d) && in_box(b, c, d);
+        }
+        if (!in_hole) missing.insert(missing.end(), {a, b});
+    }
+    check.missing_pieces = std::move(missing);
 }
 
 MixedMeshCheck2 check_mixed_mesh_2d(std::span<const double> xy, std::span<const VertIdx> triangles,

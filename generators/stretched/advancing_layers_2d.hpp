@@ -184,6 +184,18 @@ MixedMeshCheck2 check_mixed_mesh_2d(std::span<const double> xy,
                                     std::span<const triangulation::VertIdx> quads,
                                     std::span<const triangulation::VertIdx> pieces);
 
+/// Removes from check.missing_pieces the pieces that lie in a hole of the domain: a segment
+/// sticking into a hole stays a piece of every generator's output but is in no cell. Such a
+/// piece (pieces[2p], pieces[2p + 1], from input segment piece_segment[p]) comes from the same
+/// input segment as a piece of `domain` (the domain's constrained triangulation, holes removed)
+/// with no domain triangle on either side, and lies in that piece's bounding box (a fill may
+/// split it at a vertex within rounding of it; the chain is collinear within rounding, so the
+/// box orders it; exact comparisons of coordinates).
+void exempt_pieces_in_holes_2d(MixedMeshCheck2& check, const triangulation::Cdt2Result& domain,
+                               std::span<const double> xy,
+                               std::span<const triangulation::VertIdx> pieces,
+                               std::span<const std::uint32_t> piece_segment);
+
 /// Measures of quadrilaterals for the quality report (the shared report measures triangles):
 /// their corner angles (degrees) and aspect ratios (longest side over shortest), in doubles on
 /// vectors scaled by a power of two (no overflow at 2^600); a report, not a decision.

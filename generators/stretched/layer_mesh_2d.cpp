@@ -6,7 +6,6 @@
 #include <array>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "base/errors.hpp"
@@ -289,45 +288,8 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
     counters.max_wall_aspect_ratio = static_cast<std::uint64_t>(std::min(std::floor(best), 0x1p63));
 
     MixedMeshCheck2 check = check_mixed_mesh_2d(mesh.mesh.xy, triangles, result.quads, mesh.pieces);
-    // A piece in no cell may lie in a hole: a segment sticking into it stays a piece (as in
-    // every generator's output), split by the fill where a vertex lies within rounding of it.
-    // Such a piece comes from the same input segment as a piece of the domain with no domain
-    // triangle on either side, and lies within that piece's bounding box (the chain is
-    // collinear within rounding, so the box orders it; exact comparisons of coordinates).
-    if (!check.missing_pieces.empty()) {
-        std::unordered_set<std::uint64_t> domain_edges;
-        for (std::size_t e = 0; e < cdt.mesh.triangles.size(); ++e) {
-            domain_edges.insert(
-                edge_key(cdt.mesh.triangles[e], cdt.mesh.triangles[e - e % 3 + (e % 3 + 1) % 3]));
-        }
-        std::unordered_map<std::uint64_t, std::uint32_t> mesh_piece_segment;
-        for (std::size_t p = 0; p < mesh.pieces.size() / 2; ++p) {
-            mesh_piece_segment.emplace(edge_key(mesh.pieces[2 * p], mesh.pieces[2 * p + 1]),
-                                       mesh.piece_segment[p]);
-        }
-        const auto point = [&](VertIdx v) {
-            return &mesh.mesh.xy[2 * static_cast<std::size_t>(v)];
-        };
-        const auto in_box = [&](VertIdx v, VertIdx c, VertIdx d) {
-            const double *q = point(v), *a = point(c), *b = point(d);
-            return std::min(a[0], b[0]) <= q[0] && q[0] <= std::max(a[0], b[0]) &&
-                   std::min(a[1], b[1]) <= q[1] && q[1] <= std::max(a[1], b[1]);
-        };
-        std::vector<VertIdx> missing;
-        for (std::size_t i = 0; i < check.missing_pieces.size(); i += 2) {
-            const VertIdx a = check.missing_pieces[i], b = check.missing_pieces[i + 1];
-            const auto origin = mesh_piece_segment.find(edge_key(a, b));
-            bool in_hole = false;
-            for (std::size_t p = 0; p < cdt.pieces.size() / 2 && !in_hole; ++p) {
-                const VertIdx c = cdt.pieces[2 * p], d = cdt.pieces[2 * p + 1];
-                in_hole =
-                    origin != mesh_piece_segment.end() && cdt.piece_segment[p] == origin->second &&
-                    domain_edges.count(edge_key(c, d)) == 0 && in_box(a, c, d) && in_box(b, c, d);
-            }
-            if (!in_hole) missing.insert(missing.end(), {a, b});
-        }
-        check.missing_pieces = std::move(missing);
-    }
+    // A segment sticking into a hole stays a piece, in no cell.
+    exempt_pieces_in_holes_2d(check, cdt, mesh.mesh.xy, mesh.pieces, mesh.piece_segment);
     if (!check.ok())
         throw GeometryError("advancing layers: the mixed mesh fails its check: " + check.summary());
 }
