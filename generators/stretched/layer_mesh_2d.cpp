@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "base/errors.hpp"
@@ -126,12 +127,25 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
         fill_segment_origin.push_back(cdt.piece_segment[p]);
     }
     std::vector<VertIdx> front;
+    // Where a stack stopped at the wall the front runs along a wall piece; the fill may split
+    // it (at a vertex within rounding of it that the domain's triangulation did not put on
+    // the input segment), so the output takes the wall's pieces from the fill there.
+    std::unordered_map<std::uint64_t, std::uint32_t> wall_piece_segment;
+    for (std::size_t p = 0; p < cdt.pieces.size() / 2; ++p) {
+        const VertIdx a = cdt.pieces[2 * p], b = cdt.pieces[2 * p + 1];
+        if (region.is_wall_piece(a, b))
+            wall_piece_segment.emplace(edge_key(a, b), cdt.piece_segment[p]);
+    }
+    std::vector<std::uint32_t> front_wall_origin;  // per fill segment: the wall's input segment
+    front_wall_origin.assign(fill_segment_origin.size(), kNone);
     for (const std::vector<VertIdx>& loop : region.fronts) {
         for (std::size_t k = 0; k < loop.size(); ++k) {
             const VertIdx a = loop[k], b = loop[(k + 1) % loop.size()];
             front.insert(front.end(), {a, b});
             fill_segments.insert(fill_segments.end(), {a, b});
             fill_segment_origin.push_back(kNone);
+            const auto wall = wall_piece_segment.find(edge_key(a, b));
+            front_wall_origin.push_back(wall == wall_piece_segment.end() ? kNone : wall->second);
         }
     }
 
@@ -236,8 +250,15 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
     counters.quads = result.quads.size() / 4;
     mesh.mesh.neighbors = triangle_neighbors(triangles);
     // The pieces: the fill's (the front left out: it lies inside), then the walls.
+    std::unordered_set<std::uint64_t> walls_from_fill;
     for (std::size_t p = 0; p < fill_mesh.pieces.size() / 2; ++p) {
-        const std::uint32_t origin = fill_segment_origin[fill_mesh.piece_segment[p]];
+        const std::uint32_t segment = fill_mesh.piece_segment[p];
+        std::uint32_t origin = fill_segment_origin[segment];
+        if (origin == kNone && front_wall_origin[segment] != kNone) {
+            origin = front_wall_origin[segment];
+            walls_from_fill.insert(
+                edge_key(fill_segments[2 * segment], fill_segments[2 * segment + 1]));
+        }
         if (origin == kNone) continue;
         mesh.pieces.insert(mesh.pieces.end(),
                            {fill_mesh.pieces[2 * p], fill_mesh.pieces[2 * p + 1]});
@@ -245,7 +266,7 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
     }
     for (std::size_t p = 0; p < cdt.pieces.size() / 2; ++p) {
         const VertIdx a = cdt.pieces[2 * p], b = cdt.pieces[2 * p + 1];
-        if (!region.is_wall_piece(a, b)) continue;
+        if (!region.is_wall_piece(a, b) || walls_from_fill.count(edge_key(a, b)) != 0) continue;
         mesh.pieces.insert(mesh.pieces.end(), {a, b});
         mesh.piece_segment.push_back(cdt.piece_segment[p]);
     }
