@@ -528,9 +528,11 @@ class RestrictedDelaunay3 {
                     if (g == kNone) continue;
                     const TetIdx u = triangulation::tet_of(g);
                     if (attempt_mark_(u) || excluded_[u] == mark) continue;
+                    // The sphere first: asked once per tetrahedron and call, while the
+                    // subface lookup (a hash of the face) came once per face and round.
+                    if (!inside_sphere(u, p, mark)) continue;
                     const Key3 key = face_key(t, k);
                     if (is_subface_key(key) && !is_split_face(split, key)) continue;
-                    if (!inside_sphere(u, p, mark)) continue;
                     set_attempt_(u);
                     cavity_.push_back(u);
                 }
