@@ -336,11 +336,13 @@ void Frontal::step(TetIdx t) {
     // thousands of tetrahedra (and most such points were rejected after growing).
     const TetIdx first_two[2] = {s, t};
     if (encroaches(x.data(), first_two)) {
+        ++fc_.early_rejections;
         ++fc_.rejected_encroach;
         accept(t);
         return;
     }
     if (options_.min_distance > 0 && too_close(x.data(), first_two)) {
+        ++fc_.early_rejections;
         ++fc_.rejected_too_close;
         accept(t);
         return;
@@ -402,6 +404,7 @@ FrontalDelaunay3Result Frontal::run() {
         if (status_[t] == Status::Accepted) ++fc_.accepted_tets;
     }
     fc_.cavity_tets = counters_.cavity_tets;
+    fc_.batched_removals = counters_.batched_removals;
     FrontalDelaunay3Result result;
     result.mesh = finish();
     result.counters = fc_;

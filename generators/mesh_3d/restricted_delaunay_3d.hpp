@@ -546,6 +546,7 @@ class RestrictedDelaunay3 {
             if (bad == kNone - 1) return false;
             excluded_[bad] = mark;
             for (const TetIdx u : violations_) excluded_[u] = mark;
+            if (violations_.size() > 1) counters_.batched_removals += violations_.size() - 1;
             shrunk = true;
         }
     }
