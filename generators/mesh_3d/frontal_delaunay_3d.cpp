@@ -268,9 +268,10 @@ class Frontal final : public RestrictedDelaunay3 {
     }
 
     /// Some vertex of `tets` (the cavity, or some of its tetrahedra) closer to p than
-    /// min_distance h(p)?
-    bool too_close(const double* p, std::span<const TetIdx> tets) const {
-        const double limit = options_.min_distance * size_at({p[0], p[1], p[2]});
+    /// `fraction` h(p) (min_distance h(p) by default)?
+    bool too_close(const double* p, std::span<const TetIdx> tets, double fraction = -1) const {
+        const double limit =
+            (fraction < 0 ? options_.min_distance : fraction) * size_at({p[0], p[1], p[2]});
         for (const TetIdx t : tets) {
             for (unsigned k = 0; k < 4; ++k) {
                 const Vec d = relative(point(m_.vertex(t, k)), p);
@@ -278,6 +279,14 @@ class Frontal final : public RestrictedDelaunay3 {
             }
         }
         return false;
+    }
+
+    /// A boundary split point within 2^-20 h of a vertex of its cavity is refused: the
+    /// circumcentres of two subfaces that shared a circumcircle (the second left behind when
+    /// the first one's facet cavity could not grow) landed a few ulps apart on the wing's
+    /// walls, and their edge (1e-15 h) made tetrahedra with dihedral angles of 1e-16 degrees.
+    bool boundary_point_allowed(const double* p) const override {
+        return !too_close(p, cavity_, 0x1p-20);
     }
 
     void step(TetIdx t);

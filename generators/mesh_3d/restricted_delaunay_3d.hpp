@@ -790,6 +790,10 @@ class RestrictedDelaunay3 {
     /// A new tetrahedron: the generator's hook (after the encroachment queues).
     virtual void on_created(TetIdx t) = 0;
 
+    /// The generator's veto on a subsegment or subface split point p whose cavity (cavity_) is
+    /// built: false rejects it (counted in rejected_points).
+    virtual bool boundary_point_allowed(const double* /*p*/) const { return true; }
+
     /// Queues the subfaces and subsegments of t its other vertices encroach (when enabled),
     /// then hands t to on_created.
     void examine(TetIdx t) {
@@ -864,7 +868,7 @@ class RestrictedDelaunay3 {
                 break;
             }
         }
-        if (!valid) {
+        if (!valid || !boundary_point_allowed(p.data())) {
             ++counters_.rejected_points;
             return false;
         }
@@ -1045,7 +1049,7 @@ class RestrictedDelaunay3 {
                     break;
                 }
             }
-            if (!valid) {
+            if (!valid || !boundary_point_allowed(c.data())) {
                 ++counters_.rejected_points;
                 return false;
             }
