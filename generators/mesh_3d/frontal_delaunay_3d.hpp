@@ -31,11 +31,16 @@
 // Invariants: every subface stays a face, every subsegment an edge, every tetrahedron positively
 // oriented; every input vertex kept. Every step inserts a point or accepts a tetrahedron, so the
 // loop ends within the Steiner budget. Cost: a heap of active tetrahedra with lazy deletion,
-// and cavities of about 17 tetrahedra on the box-with-hole and ellipsoid (measured). Known
-// limit: where the recovered mesh has flat tetrahedra with huge circumspheres (the wing's
-// finely sampled, extruded airfoil against coarse walls: R / f up to ~800), cavities reach
-// hundreds of tetrahedra and many are rejected after growing: the wing at h 0.1 took 126 s
-// for 36k vertices where Delaunay refinement takes 3 s for 40k (not solved yet).
+// and cavities of about 17 tetrahedra on the box-with-hole and ellipsoid (measured). Where the
+// recovered mesh has flat tetrahedra with huge circumspheres (the wing's finely sampled,
+// extruded airfoil against coarse walls: R / f up to ~800), cavities grow to hundreds or
+// thousands of tetrahedra and most such points are rejected: a point that encroaches a
+// subface or subsegment of its seed or front tetrahedron, or comes too close to one of their
+// vertices, is rejected before its cavity grows, and a cavity sheds all its tetrahedra facing
+// away from the point in one round (restricted_delaunay_3d), with the same mesh; the wing at
+// h 0.1 went from 126-200 s to 24 s (README "Known gaps"). Boundary split points within 2^-20 h
+// of a vertex of their cavity are refused (they made edges of 1e-15 h). Known limit: the
+// flat tetrahedra whose point is rejected are accepted (Rebay's rule) and stay in the output.
 #pragma once
 
 #include <array>
