@@ -60,6 +60,8 @@ struct DelaunayRefinement3Counters {
     std::uint64_t blocked_circumcenters = 0;  ///< circumcentres beyond a subface (it is split)
     std::uint64_t rejected_points = 0;        ///< insertions whose cavity could not be kept valid
     std::uint64_t shrunk_cavities = 0;        ///< cavities shrunk to stay star-shaped/conforming
+    std::uint64_t batched_removals = 0;       ///< tetrahedra shrunk away beside the first of
+                                              ///< their round (all facing away from the point)
     std::uint64_t small_angle_tets = 0;       ///< bad tetrahedra spared by the small-angle rule
     std::uint64_t unresolvable_tets = 0;      ///< bad tetrahedra spared: an edge finer than doubles
                                               ///< resolve there (below 2^-44 of the coordinates)
@@ -67,10 +69,11 @@ struct DelaunayRefinement3Counters {
     std::uint64_t insertions = 0;             ///< Steiner points added by refinement
 };
 
-inline constexpr std::array kDelaunayRefinement3CounterNames = EM_COUNTER_TABLE(
-    DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits, shell_splits,
-    encroached_segments, encroached_subfaces, blocked_circumcenters, rejected_points,
-    shrunk_cavities, small_angle_tets, unresolvable_tets, cavity_tets, insertions);
+inline constexpr std::array kDelaunayRefinement3CounterNames =
+    EM_COUNTER_TABLE(DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits,
+                     shell_splits, encroached_segments, encroached_subfaces, blocked_circumcenters,
+                     rejected_points, shrunk_cavities, batched_removals, small_angle_tets,
+                     unresolvable_tets, cavity_tets, insertions);
 static_assert(counter_table_complete(kDelaunayRefinement3CounterNames));
 
 struct DelaunayRefinement3Result {

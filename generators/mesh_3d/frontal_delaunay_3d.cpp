@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <queue>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -246,9 +247,9 @@ class Frontal final : public RestrictedDelaunay3 {
     }
 
     /// Whether p lies strictly inside the equatorial sphere of a subface or the diametral
-    /// sphere of a subsegment of the cavity (exact).
-    bool encroaches_cavity(const double* p) const {
-        for (const TetIdx t : cavity_) {
+    /// sphere of a subsegment of `tets` (the cavity, or some of its tetrahedra; exact).
+    bool encroaches(const double* p, std::span<const TetIdx> tets) const {
+        for (const TetIdx t : tets) {
             for (unsigned k = 0; k < 4; ++k) {
                 const Key3 key = face_key(t, k);
                 if (subfaces_.count(key) != 0 &&
@@ -266,16 +267,26 @@ class Frontal final : public RestrictedDelaunay3 {
         return false;
     }
 
-    /// Some vertex of the cavity closer to p than min_distance h(p)?
-    bool too_close(const double* p) const {
-        const double limit = options_.min_distance * size_at({p[0], p[1], p[2]});
-        for (const TetIdx t : cavity_) {
+    /// Some vertex of `tets` (the cavity, or some of its tetrahedra) closer to p than
+    /// `fraction` h(p) (min_distance h(p) by default)?
+    bool too_close(const double* p, std::span<const TetIdx> tets, double fraction = -1) const {
+        const double limit =
+            (fraction < 0 ? options_.min_distance : fraction) * size_at({p[0], p[1], p[2]});
+        for (const TetIdx t : tets) {
             for (unsigned k = 0; k < 4; ++k) {
                 const Vec d = relative(point(m_.vertex(t, k)), p);
                 if (dot(d, d) < limit * limit) return true;
             }
         }
         return false;
+    }
+
+    /// A boundary split point within 2^-20 h of a vertex of its cavity is refused: the
+    /// circumcentres of two subfaces that shared a circumcircle (the second left behind when
+    /// the first one's facet cavity could not grow) landed a few ulps apart on the wing's
+    /// walls, and their edge (1e-15 h) made tetrahedra with dihedral angles of 1e-16 degrees.
+    bool boundary_point_allowed(const double* p) const override {
+        return !too_close(p, cavity_, 0x1p-20);
     }
 
     void step(TetIdx t);
@@ -327,6 +338,24 @@ void Frontal::step(TetIdx t) {
             return;
         }
     }
+    // s (the seed, never removed) and t (required) are in every cavity that can be committed,
+    // so a subface or subsegment of theirs that x encroaches, or a vertex of theirs too close
+    // to x, rejects x whatever the cavity: asked first, the same rejections (the same mesh)
+    // without growing the cavity, which beside flat recovered tetrahedra has hundreds or
+    // thousands of tetrahedra (and most such points were rejected after growing).
+    const TetIdx first_two[2] = {s, t};
+    if (encroaches(x.data(), first_two)) {
+        ++fc_.early_rejections;
+        ++fc_.rejected_encroach;
+        accept(t);
+        return;
+    }
+    if (options_.min_distance > 0 && too_close(x.data(), first_two)) {
+        ++fc_.early_rejections;
+        ++fc_.rejected_too_close;
+        accept(t);
+        return;
+    }
     const Split none;
     // t must go: x is inside its circumsphere by construction, and a cavity shrunk away from
     // t would leave it active with the same point to place.
@@ -335,12 +364,12 @@ void Frontal::step(TetIdx t) {
         accept(t);
         return;
     }
-    if (encroaches_cavity(x.data())) {
+    if (encroaches(x.data(), cavity_)) {
         ++fc_.rejected_encroach;
         accept(t);
         return;
     }
-    if (options_.min_distance > 0 && too_close(x.data())) {
+    if (options_.min_distance > 0 && too_close(x.data(), cavity_)) {
         ++fc_.rejected_too_close;
         accept(t);
         return;
@@ -384,6 +413,7 @@ FrontalDelaunay3Result Frontal::run() {
         if (status_[t] == Status::Accepted) ++fc_.accepted_tets;
     }
     fc_.cavity_tets = counters_.cavity_tets;
+    fc_.batched_removals = counters_.batched_removals;
     FrontalDelaunay3Result result;
     result.mesh = finish();
     result.counters = fc_;

@@ -31,11 +31,16 @@
 // Invariants: every subface stays a face, every subsegment an edge, every tetrahedron positively
 // oriented; every input vertex kept. Every step inserts a point or accepts a tetrahedron, so the
 // loop ends within the Steiner budget. Cost: a heap of active tetrahedra with lazy deletion,
-// and cavities of about 17 tetrahedra on the box-with-hole and ellipsoid (measured). Known
-// limit: where the recovered mesh has flat tetrahedra with huge circumspheres (the wing's
-// finely sampled, extruded airfoil against coarse walls: R / f up to ~800), cavities reach
-// hundreds of tetrahedra and many are rejected after growing: the wing at h 0.1 took 126 s
-// for 36k vertices where Delaunay refinement takes 3 s for 40k (not solved yet).
+// and cavities of about 17 tetrahedra on the box-with-hole and ellipsoid (measured). Where the
+// recovered mesh has flat tetrahedra with huge circumspheres (the wing's finely sampled,
+// extruded airfoil against coarse walls: R / f up to ~800), cavities grow to hundreds or
+// thousands of tetrahedra and most such points are rejected: a point that encroaches a
+// subface or subsegment of its seed or front tetrahedron, or comes too close to one of their
+// vertices, is rejected before its cavity grows, and a cavity sheds all its tetrahedra facing
+// away from the point in one round (restricted_delaunay_3d), with the same mesh; the wing at
+// h 0.1 went from 126-200 s to 24 s (README "Known gaps"). Boundary split points within 2^-20 h
+// of a vertex of their cavity are refused (they made edges of 1e-15 h). Known limit: the
+// flat tetrahedra whose point is rejected are accepted (Rebay's rule) and stay in the output.
 #pragma once
 
 #include <array>
@@ -77,15 +82,21 @@ struct FrontalDelaunay3Counters {
     std::uint64_t rejected_too_close = 0;   ///< closer than min_distance h to a cavity vertex
     std::uint64_t rejected_cavity = 0;      ///< its cavity could not stay star-shaped/conforming
     std::uint64_t boundary_rejections = 0;  ///< boundary-fitting splits that were rejected
+    std::uint64_t early_rejections = 0;     ///< of the encroaching and too close points, those
+                                            ///< found by their seed or front tetrahedron alone,
+                                            ///< before their cavity was grown
+    std::uint64_t batched_removals = 0;     ///< cavity tetrahedra shrunk away beside the first
+                                            ///< of their round (one regrowth for all)
     std::uint64_t cavity_tets = 0;          ///< tetrahedra replaced, summed over insertions
     std::uint64_t accepted_tets = 0;        ///< output tetrahedra within the acceptance
     std::uint64_t estimated_points = 0;     ///< the size's estimate (the budget's basis)
 };
 
-inline constexpr std::array kFrontalDelaunay3CounterNames = EM_COUNTER_TABLE(
-    FrontalDelaunay3Counters, segment_splits, subface_splits, interior_points, active_pops,
-    stale_pops, forced_accepts, rejected_outside, rejected_encroach, rejected_too_close,
-    rejected_cavity, boundary_rejections, cavity_tets, accepted_tets, estimated_points);
+inline constexpr std::array kFrontalDelaunay3CounterNames =
+    EM_COUNTER_TABLE(FrontalDelaunay3Counters, segment_splits, subface_splits, interior_points,
+                     active_pops, stale_pops, forced_accepts, rejected_outside, rejected_encroach,
+                     rejected_too_close, rejected_cavity, boundary_rejections, early_rejections,
+                     batched_removals, cavity_tets, accepted_tets, estimated_points);
 static_assert(counter_table_complete(kFrontalDelaunay3CounterNames));
 
 struct FrontalDelaunay3Result {

@@ -169,6 +169,35 @@ TEST(Generators_FrontalDelaunay3d, ScaledByPowersOfTwoGivesTheScaledMesh) {
     }
 }
 
+TEST(Generators_FrontalDelaunay3d, FinelySampledWingSectionRejectsEarlyAndShrinksInBatches) {
+    // The wing's section sampled at a quarter of the size: recovery leaves flat tetrahedra
+    // against it, whose huge circumspheres give cavities of hundreds of tetrahedra (the CLI's
+    // wing at --size 0.1 took minutes). Points that encroach their seed's or front
+    // tetrahedron's subfaces are rejected before the cavity grows, and a cavity sheds every
+    // tetrahedron facing away from its point in one round (restricted_delaunay_3d's
+    // first_violation); both reached here, the mesh conforming and the same at 2^+-600.
+    const double h = test_size(0.3);
+    const Plc3 plc = sample_domain_3d(SampleDomain3::Wing, h / 4);
+    const FrontalDelaunay3Result reference = mesh_and_check(plc, h, "wing, section at h/4");
+    const auto& c = reference.counters;
+    std::printf("wing, section at h/4: %llu early rejections, %llu batched removals\n",
+                static_cast<unsigned long long>(c.early_rejections),
+                static_cast<unsigned long long>(c.batched_removals));
+    EXPECT_GT(c.early_rejections, 0u);
+    EXPECT_LE(c.early_rejections, c.rejected_encroach + c.rejected_too_close);
+    EXPECT_GT(c.batched_removals, 0u);
+    EXPECT_GT(static_cast<double>(c.interior_points), 100 / std::pow(size_factor(), 3));
+    for (const int e : {600, -600}) {
+        const Plc3 s = triangulation::scaled(plc, e);
+        const FrontalDelaunay3Result result = frontal_delaunay_3d(
+            s, triangulation::boundary_recovery_3d(s).mesh, options_for(std::ldexp(h, e)));
+        EXPECT_TRUE(triangulation::check_boundary_conformity_3d(s, result.mesh).ok) << e;
+        exactmesh::testing::expect_scaled_mesh(result.mesh, reference.mesh, e);
+        EXPECT_EQ(result.counters.early_rejections, c.early_rejections) << e;
+        EXPECT_EQ(result.counters.batched_removals, c.batched_removals) << e;
+    }
+}
+
 TEST(Generators_FrontalDelaunay3d, BudgetErrors) {
     const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole, 0.2);
     // A size asking for far more points than the budget: refused at once, with the estimate,
