@@ -137,6 +137,11 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     try {
         // A free vertex on a segment or a facet becomes part of it (as Triangle does in 2D).
         tri::validate_plc_3d_input(plc);
+        // A facet whose corners were rounded off their plane (a rotated box) becomes the
+        // triangles of its projection, as TetGen meshes it; a warning names it.
+        std::vector<std::string> split = tri::split_nonplanar_facets_3d(plc);
+        for (std::string& warning : split) warning = source + ": " + warning;
+        print_warnings(split);
         tri::embed_free_vertices_3d(plc);
         // A mesh generator's domain must enclose a volume: an open surface would leave the
         // flood fill nothing to keep (internal facets, edges in more than two triangles, are

@@ -1396,9 +1396,15 @@ tetmesh_bad_input() {
   # An open surface (one facet missing): the PLC check refuses it.
   printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n' >"$work/open.off"
   expect_error 2 'open\.off: surface not closed: .*facet 0 \(line 7\)' tetmesh "$work/open.off" -o "$work/x.ele"
-  # A non-planar facet: the file, the facet's line, the vertex off its plane.
+  # A non-planar facet (a corner lifted off its plane): split into triangles with a warning
+  # naming the file, the facet's line and the vertex off its plane; the mesh passes its check.
   sed 's/^3 1 1 0$/3 1 1 0.125/' "$work/cube.poly" >"$work/bent.poly"
-  expect_error 2 'bent\.poly: facet [0-9]+ \(line [0-9]+\) is not planar' tetmesh "$work/bent.poly" -o "$work/x.ele"
+  run 0 tetmesh "$work/bent.poly" --max-volume 0.05 -o "$work/bent.ele" || return
+  grep -Eq '^exactmesh: warning: .*bent\.poly: facet 1 \(line [0-9]+\) is not planar \(vertex [0-9]+ is off the plane of vertices .*\): split into the 2 triangles' "$work/err" ||
+    fail "no split warning for bent.poly: $(cat "$work/err")"
+  # Lifted so far that the facet's projection crosses itself: refused, naming the facet.
+  sed 's/^3 1 1 0$/3 -1 -1 0.5/' "$work/cube.poly" >"$work/twisted.poly"
+  expect_error 2 'twisted\.poly: .*facet [0-9]+ \(line [0-9]+\)' tetmesh "$work/twisted.poly" -o "$work/x.ele"
   # Numbers CLI11's own check lets through (nan) or names with 300 digits (0).
   expect_error 2 "--max-volume: 'nan' is not a finite number > 0" tetmesh --domain box-with-hole --max-volume nan -o "$work/x.ele"
   expect_error 2 "--radius-edge: '0' is not a finite number > 0" tetmesh --domain box-with-hole --radius-edge 0 -o "$work/x.ele"

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <string>
@@ -221,8 +222,9 @@ std::vector<std::array<VertIdx, 2>> facet_edges(const Facet3& facet) {
     fail(names.facet(f) + ": its polygons cross (the planar triangulation needs new vertices)");
 }
 
-/// Triangulates facet f into `out` (see triangulate_facets_3d).
-void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out) {
+/// Checks facet f's polygons (corners, no corner repeated consecutively, one with an area,
+/// not all collinear) and returns its reference corners.
+std::array<VertIdx, 3> checked_reference_corners(const Plc3& plc, std::uint32_t f) {
     const Names names{plc};
     const Facet3& facet = plc.facets[f];
     bool has_area_polygon = false;
@@ -246,29 +248,28 @@ void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out)
     // The reference corners: the first three non-collinear ones in the order listed.
     const auto ref = facet_reference_corners(plc, facet);
     if (ref[2] == kNone) fail("degenerate " + names.facet(f) + ": its corners are collinear");
+    return ref;
+}
+
+/// A corner of facet f off the plane of its reference corners (exact orient3d), or kNone.
+VertIdx off_plane_corner(const Plc3& plc, std::uint32_t f, const std::array<VertIdx, 3>& ref) {
     const double* a = plc.point(ref[0]);
     const double* b = plc.point(ref[1]);
     const double* c = plc.point(ref[2]);
-    for (const auto& polygon : facet.polygons) {
-        for (const VertIdx v : polygon) {
-            if (orient3d(a, b, c, plc.point(v)) != Sign::Zero) {
-                fail(names.facet(f) + " is not planar: vertex " + names.vertex(v) +
-                     " is off the plane of vertices " + names.vertex(ref[0]) + ", " +
-                     names.vertex(ref[1]) + ", " + names.vertex(ref[2]));
-            }
-        }
+    for (const auto& polygon : plc.facets[f].polygons) {
+        for (const VertIdx v : polygon)
+            if (orient3d(a, b, c, plc.point(v)) != Sign::Zero) return v;
     }
-    if (facet.polygons.size() == 1 && facet.polygons[0].size() == 3 && facet.holes.empty()) {
-        // A triangle (STL, OFF, most .smesh facets) is its own triangulation; it is the
-        // reference triangle, so its orientation is the facet's.
-        out.triangles.insert(out.triangles.end(), facet.polygons[0].begin(),
-                             facet.polygons[0].end());
-        out.facets.push_back(f);
-        return;
-    }
-    const int drop = drop_axis(a, b, c);
-    const bool flip = projected_orient(a, b, c, drop) == Sign::Negative;
+    return kNone;
+}
 
+/// The triangles (global corners, 3 per triangle) of facet f's polygons and holes projected
+/// along axis `drop`: the constrained Delaunay triangulation of the projection, no vertex added,
+/// every corner used; reversed when `flip`.
+std::vector<VertIdx> projected_facet_triangles(const Plc3& plc, std::uint32_t f, int drop,
+                                               bool flip) {
+    const Names names{plc};
+    const Facet3& facet = plc.facets[f];
     std::vector<VertIdx> corners;
     for (const auto& polygon : facet.polygons)
         corners.insert(corners.end(), polygon.begin(), polygon.end());
@@ -324,14 +325,43 @@ void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out)
                  " lies outside the facet's area (outside its polygons or in a hole)");
         }
     }
+    std::vector<VertIdx> triangles;
+    triangles.reserve(3 * std::size_t{count});
     for (std::uint32_t t = 0; t < count; ++t) {
         const VertIdx* tv = &cdt.mesh.triangles[3 * std::size_t{t}];
         const VertIdx v0 = corners[tv[0]], v1 = corners[tv[1]], v2 = corners[tv[2]];
-        out.triangles.push_back(v0);
-        out.triangles.push_back(flip ? v2 : v1);
-        out.triangles.push_back(flip ? v1 : v2);
-        out.facets.push_back(f);
+        triangles.insert(triangles.end(), {v0, flip ? v2 : v1, flip ? v1 : v2});
     }
+    return triangles;
+}
+
+/// Triangulates facet f into `out` (see triangulate_facets_3d).
+void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out) {
+    const Names names{plc};
+    const Facet3& facet = plc.facets[f];
+    const auto ref = checked_reference_corners(plc, f);
+    const VertIdx off = off_plane_corner(plc, f, ref);
+    if (off != kNone) {
+        fail(names.facet(f) + " is not planar: vertex " + names.vertex(off) +
+             " is off the plane of vertices " + names.vertex(ref[0]) + ", " + names.vertex(ref[1]) +
+             ", " + names.vertex(ref[2]));
+    }
+    if (facet.polygons.size() == 1 && facet.polygons[0].size() == 3 && facet.holes.empty()) {
+        // A triangle (STL, OFF, most .smesh facets) is its own triangulation; it is the
+        // reference triangle, so its orientation is the facet's.
+        out.triangles.insert(out.triangles.end(), facet.polygons[0].begin(),
+                             facet.polygons[0].end());
+        out.facets.push_back(f);
+        return;
+    }
+    const double* a = plc.point(ref[0]);
+    const double* b = plc.point(ref[1]);
+    const double* c = plc.point(ref[2]);
+    const int drop = drop_axis(a, b, c);
+    const bool flip = projected_orient(a, b, c, drop) == Sign::Negative;
+    const std::vector<VertIdx> triangles = projected_facet_triangles(plc, f, drop, flip);
+    out.triangles.insert(out.triangles.end(), triangles.begin(), triangles.end());
+    out.facets.insert(out.facets.end(), triangles.size() / 3, f);
 }
 
 void check_finite_points(std::span<const double> values, const std::string& what) {
@@ -760,6 +790,50 @@ FreeVertexEmbedding3 embed_free_vertices_3d(Plc3& plc) {
         facet.polygons = std::move(polygons);
     }
     return done;
+}
+
+std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc) {
+    std::vector<std::string> warnings;
+    const auto facet_count = static_cast<std::uint32_t>(plc.facets.size());
+    std::vector<Facet3> added;
+    std::vector<std::uint64_t> added_origin;
+    for (std::uint32_t f = 0; f < facet_count; ++f) {
+        const auto ref = checked_reference_corners(plc, f);
+        const VertIdx off = off_plane_corner(plc, f, ref);
+        if (off == kNone) continue;
+        const double* a = plc.point(ref[0]);
+        const double* b = plc.point(ref[1]);
+        const double* c = plc.point(ref[2]);
+        const int drop = drop_axis(a, b, c);
+        const bool flip = projected_orient(a, b, c, drop) == Sign::Negative;
+        const std::vector<VertIdx> triangles = projected_facet_triangles(plc, f, drop, flip);
+        const Names names{plc};
+        static constexpr const char* kPlanes[3] = {"yz", "zx", "xy"};
+        warnings.push_back(names.facet(f) + " is not planar (vertex " + names.vertex(off) +
+                           " is off the plane of vertices " + names.vertex(ref[0]) + ", " +
+                           names.vertex(ref[1]) + ", " + names.vertex(ref[2]) +
+                           "): split into the " + std::to_string(triangles.size() / 3) +
+                           " triangles of its constrained Delaunay triangulation in the " +
+                           kPlanes[drop] + " plane, each a facet with its marker");
+        const int marker = plc.facets[f].marker;
+        const std::uint64_t origin = f < plc.facet_origin.size() ? plc.facet_origin[f] : 0;
+        for (std::size_t t = 0; t < triangles.size(); t += 3) {
+            Facet3 triangle;
+            triangle.polygons.push_back({triangles[t], triangles[t + 1], triangles[t + 2]});
+            triangle.marker = marker;
+            if (t == 0) {
+                plc.facets[f] = std::move(triangle);
+            } else {
+                added.push_back(std::move(triangle));
+                added_origin.push_back(origin);
+            }
+        }
+    }
+    plc.facets.insert(plc.facets.end(), std::make_move_iterator(added.begin()),
+                      std::make_move_iterator(added.end()));
+    if (!plc.facet_origin.empty())
+        plc.facet_origin.insert(plc.facet_origin.end(), added_origin.begin(), added_origin.end());
+    return warnings;
 }
 
 SurfaceTriangles3 validate_plc_3d(const Plc3& plc) {

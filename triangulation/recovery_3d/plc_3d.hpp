@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "triangulation/mesh/mesh2.hpp"
@@ -72,6 +73,19 @@ struct FreeVertexEmbedding3 {
 /// contain it, so no tetrahedralization could keep both).
 /// @pre validate_plc_3d_input(plc) passed.
 FreeVertexEmbedding3 embed_free_vertices_3d(Plc3& plc);
+
+/// Replaces every facet whose corners do not lie in one plane (exact orient3d; a facet of a
+/// rotated box whose corners were rounded to doubles is one) by the triangles of its polygons'
+/// constrained Delaunay triangulation in the coordinate plane that its first three
+/// non-collinear corners project to best (its holes removed, no vertex added), each triangle a
+/// facet with the facet's marker and origin; the first keeps the facet's index, the others are
+/// appended. As TetGen triangulates every facet in a projection. Returns one warning per facet
+/// split. The triangles are planar and conforming; the surface is the polygon's triangulation,
+/// which no choice of a plane could make flat.
+/// @throws InputError when a non-planar facet's projection crosses itself (or as
+///         triangulate_facets_3d does for a bad polygon).
+/// @pre validate_plc_3d_input(plc) passed.
+std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc);
 
 /// validate_plc_3d_input, triangulate_facets_3d and check_surface_self_intersection_3d; returns
 /// the surface triangles. Closedness is checked separately (check_surface_closed_3d).

@@ -12,6 +12,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/errors.hpp"
@@ -184,6 +185,69 @@ TEST(Triangulation_Plc3, NonPlanarFacetIsNamed) {
     const Outcome result = scale_invariant_outcome(plc);
     EXPECT_EQ(result.validity,
               "facet 0 is not planar: vertex 4 is off the plane of vertices 0, 2, 6");
+}
+
+TEST(Triangulation_Plc3, NonPlanarFacetsAreSplitIntoTheTrianglesOfTheirProjection) {
+    // A cube rotated about (1, 2, 3) with its corners rounded to doubles: its quadrilaterals
+    // are off their planes by an ulp or so (validate_plc_3d refuses them); split, every facet
+    // is a triangle, the PLC is valid and closed, markers and origins follow, at any scale.
+    Plc3 plc = cube();
+    const double axis[3] = {1 / std::sqrt(14.0), 2 / std::sqrt(14.0), 3 / std::sqrt(14.0)};
+    const double c = std::cos(0.7), s = std::sin(0.7);
+    for (std::size_t v = 0; v < 8; ++v) {
+        double* p = &plc.xyz[3 * v];
+        const double dot = axis[0] * p[0] + axis[1] * p[1] + axis[2] * p[2];
+        const double cross[3] = {axis[1] * p[2] - axis[2] * p[1], axis[2] * p[0] - axis[0] * p[2],
+                                 axis[0] * p[1] - axis[1] * p[0]};
+        double q[3];
+        for (int k = 0; k < 3; ++k) q[k] = p[k] * c + cross[k] * s + axis[k] * dot * (1 - c);
+        std::copy(q, q + 3, p);
+    }
+    for (std::size_t f = 0; f < plc.facets.size(); ++f) {
+        plc.facets[f].marker = static_cast<int>(f + 10);
+        plc.facet_origin.push_back(100 + f);
+    }
+    ASSERT_NE(outcome(plc).validity.find("is not planar"), std::string::npos);
+    const auto split_at = [](Plc3 copy) {
+        const std::vector<std::string> warnings = split_nonplanar_facets_3d(copy);
+        return std::make_pair(copy, warnings);
+    };
+    const auto [split, warnings] = split_at(plc);
+    EXPECT_GE(warnings.size(), 1u);
+    for (const std::string& warning : warnings)
+        EXPECT_NE(warning.find("split into the 2 triangles"), std::string::npos) << warning;
+    EXPECT_EQ(split.facets.size(), 6 + warnings.size());
+    EXPECT_EQ(split.facet_origin.size(), split.facets.size());
+    for (std::size_t f = 0; f < split.facets.size(); ++f) {
+        const std::size_t original = split.facet_origin[f] - 100;
+        EXPECT_EQ(split.facets[f].marker, static_cast<int>(original + 10));
+    }
+    const Outcome result = outcome(split);
+    EXPECT_EQ(result.validity, "");
+    EXPECT_EQ(result.closedness, "");
+    EXPECT_EQ(result.triangles.size(), 3u * 12);
+    // The same split at 2^+-600 (the projection's axis and the 2D triangulation are exact).
+    for (const int e : {600, -600}) {
+        const auto [big, big_warnings] = split_at(scaled(plc, e));
+        EXPECT_EQ(big_warnings.size(), warnings.size());
+        EXPECT_EQ(outcome(big), result);
+    }
+    // A planar PLC is left as it is.
+    Plc3 flat = cube();
+    EXPECT_TRUE(split_nonplanar_facets_3d(flat).empty());
+    EXPECT_EQ(flat.facets.size(), 6u);
+}
+
+TEST(Triangulation_Plc3, ANonPlanarFacetWhoseProjectionCrossesItselfIsRefused) {
+    // Corner 6 of facet {0, 2, 6, 4} (x = 0) pulled to (0.5, -1, 0.5): in the yz projection
+    // the quadrilateral's edges 2-6 and 4-0 cross, so no triangulation of it is a surface.
+    Plc3 plc = cube();
+    plc.xyz[3 * 6 + 0] = 0.5;
+    plc.xyz[3 * 6 + 1] = -1;
+    plc.xyz[3 * 6 + 2] = 0.5;
+    const std::string message =
+        error_message<InputError>([&] { (void)split_nonplanar_facets_3d(plc); });
+    EXPECT_NE(message.find("facet 0"), std::string::npos) << message;
 }
 
 TEST(Triangulation_Plc3, FacetWithAHoleIsAnAnnulus) {
