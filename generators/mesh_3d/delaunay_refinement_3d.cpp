@@ -10,6 +10,7 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "generators/mesh_3d/gap_estimate_3d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/dot_sign_3d.hpp"
 #include "predicates/incircle.hpp"
@@ -385,6 +386,7 @@ DelaunayRefinement3Result delaunay_refinement_3d(const Plc3& plc, ConformingMesh
     }
     refuse_volume_bound_far_over_budget(recovered, options);
     const std::uint64_t budget = steiner_budget_3d(recovered, options.max_steiner_points);
+    refuse_gaps_far_over_budget_3d(plc, budget, "delaunay refinement 3d");
     Refinement refinement(plc, std::move(recovered), options, budget);
     return refinement.run();
 }

@@ -19,6 +19,7 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "generators/mesh_3d/gap_estimate_3d.hpp"
 #include "generators/mesh_3d/restricted_delaunay_3d.hpp"
 
 namespace exactmesh::generators {
@@ -484,6 +485,7 @@ FrontalDelaunay3Result frontal_delaunay_3d(const Plc3& plc, ConformingMesh3 reco
                          " points (domain volume / (h^3 / (6 sqrt 2)) / 5 per vertex); raise "
                          "the size or the budget");
     }
+    refuse_gaps_far_over_budget_3d(plc, budget, "frontal delaunay 3d");
     Frontal frontal(plc, std::move(recovered), options, budget, exponent);
     frontal.result_counters.estimated_points =
         static_cast<std::uint64_t>(std::min(estimate, 1.8e19));

@@ -19,6 +19,8 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "generators/mesh_3d/gap_estimate_3d.hpp"
+#include "generators/mesh_3d/restricted_delaunay_3d.hpp"
 #include "predicates/orient3d.hpp"
 #include "triangulation/mesh/flip_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
@@ -654,6 +656,9 @@ OctreeMesh3Result octree_mesh_3d(const tri::Plc3& plc, const tri::ConformingMesh
             "octree mesh 3d: region attributes are not supported yet (issue 15); use "
             "--generator frontal or delaunay-refinement");
     if (plc.xyz.empty()) throw InputError("octree mesh 3d: the PLC has no vertex");
+    refuse_gaps_far_over_budget_3d(
+        plc, restricted_3d::steiner_budget_3d(recovered, options.max_steiner_points),
+        "octree mesh 3d");
     OctreeMesher mesher(plc, recovered, options);
     return mesher.run();
 }

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// The points a narrow gap of a PLC asks for, estimated before any 3D generator runs (issue 15).
+// Two facets a distance g apart (a box-shaped hole 1e-9 from the outer wall) make every
+// generator split their subfaces until they are about g wide: about area / g^2 points, 10^17 at
+// g = 1e-9 on a unit box, which refinement used to chase into its Steiner budget for a minute.
+
+// The estimate: for each triangle t of the facets' triangulation (triangulate_facets_3d), the
+// triangles that share no vertex with it and come nearer than its longest edge L_t (searched
+// within one cell of a grid of the median L, so a lower estimate where features are farther);
+// with none, t counts area_t / (4 L_t^2); with some, t is sampled at the centres of its k^2
+// congruent sub-triangles (k = L_t / distance, at most 16), each counting its area / (4 f^2), f
+// the distance from its centre to those triangles, capped by L_t and floored at 2^-44 of the
+// coordinates' magnitude (the generators spare tetrahedra with edges below that fraction, so no
+// finer feature is chased): about the surface points that resolve f (a disc of radius f per
+// point). Measured on a unit box with a box-shaped hole g from its wall (1/2 x 1/2 facing):
+// g = 1e-2 and 1e-3 estimate 1,350 and 125,000 points where refinement (radius-edge 2) makes
+// 1,490 and 135,761 vertices.
+// Scale-invariant: computed on coordinates scaled by one power of two (exact) that brings the
+// largest to [1, 2), so no square overflows or underflows at 2^+-600 (a gap below 2^-511 of the
+// extent floors at 2^-44 anyway). A decision of how much work to accept, not of geometry:
+// computed in doubles (the distances round; the refusal has a factor of 6 of margin).
+// Cost: O(T k), T surface triangles, k those near each (a uniform grid of the median edge).
+#pragma once
+
+#include <cstdint>
+
+#include "triangulation/mesh/plc_3d.hpp"
+
+namespace exactmesh::generators {
+
+struct GapEstimate3 {
+    double points = 0;            ///< sum over the surface triangles of area / (4 f^2)
+    double smallest_feature = 0;  ///< the least f, in the input's units (0: no triangle)
+};
+
+/// The estimate for a PLC that passed validate_plc_3d.
+GapEstimate3 gap_estimate_3d(const triangulation::Plc3& plc);
+
+/// Throws InputError, prefixed by `who`, when the estimate exceeds 6 times `budget` (Steiner
+/// points), naming the estimate and the smallest feature; does nothing otherwise.
+void refuse_gaps_far_over_budget_3d(const triangulation::Plc3& plc, std::uint64_t budget,
+                                    const char* who);
+
+}  // namespace exactmesh::generators

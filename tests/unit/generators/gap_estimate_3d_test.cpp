@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+// Tests of generators/mesh_3d/gap_estimate_3d: a narrow gap between a box-shaped hole and the
+// outer wall is estimated close to what refinement makes, the same at 2^+-600, and a gap far
+// past the budget is refused at once by every 3D generator (it used to run for a minute).
+#include "generators/mesh_3d/gap_estimate_3d.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "base/errors.hpp"
+#include "generators/mesh_3d/delaunay_refinement_3d.hpp"
+#include "generators/mesh_3d/frontal_delaunay_3d.hpp"
+#include "generators/mesh_3d/octree_mesh_3d.hpp"
+#include "tests/support/error_message.hpp"
+#include "tests/support/plcs_3d.hpp"
+#include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
+
+namespace exactmesh::generators {
+namespace {
+
+namespace tri = exactmesh::triangulation;
+
+/// The unit cube with a box-shaped hole [g, 1/2] x [1/4, 3/4]^2: its low x side g from the
+/// outer wall x = 0 (a 1/2 x 1/2 face across the gap).
+tri::Plc3 box_with_gap(double g) {
+    tri::Plc3 plc = tri::box(1, 1, 1);
+    const double lo[3] = {g, 0.25, 0.25}, hi[3] = {0.5, 0.75, 0.75};
+    for (int k = 0; k < 8; ++k) {
+        plc.xyz.insert(plc.xyz.end(), {k & 1 ? hi[0] : lo[0], (k >> 1) & 1 ? hi[1] : lo[1],
+                                       (k >> 2) & 1 ? hi[2] : lo[2]});
+    }
+    const std::vector<std::vector<tri::VertIdx>> faces = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                                          {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+    for (auto face : faces) {
+        for (tri::VertIdx& v : face) v += 8;
+        plc.facets.push_back({{face}, {}, 2});
+    }
+    plc.holes = {0.3, 0.5, 0.5};
+    return plc;
+}
+
+TEST(Generators_GapEstimate3d, CloseToWhatRefinementMakesAndScaleInvariant) {
+    // g = 1/64: refinement at radius-edge 2 adds a few hundred to a thousand vertices.
+    const tri::Plc3 plc = box_with_gap(1.0 / 64);
+    const GapEstimate3 estimate = gap_estimate_3d(plc);
+    EXPECT_EQ(estimate.smallest_feature, 1.0 / 64);
+    DelaunayRefinement3Options options;
+    options.radius_edge_bound = 2;
+    const auto refined = delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
+    const double vertices = static_cast<double>(refined.mesh.mesh.vertex_count());
+    EXPECT_GT(estimate.points, vertices / 3) << vertices;
+    EXPECT_LT(estimate.points, vertices * 3) << vertices;
+    for (const int e : {600, -600}) {
+        const GapEstimate3 scaled = gap_estimate_3d(tri::scaled(plc, e));
+        EXPECT_EQ(scaled.points, estimate.points) << e;
+        EXPECT_EQ(scaled.smallest_feature, std::ldexp(estimate.smallest_feature, e)) << e;
+    }
+    // The box alone: its nearest parts sharing no vertex are triangles of adjacent sides
+    // (1/sqrt 3 apart), each triangle counting a few points at most.
+    const GapEstimate3 plain = gap_estimate_3d(tri::box(1, 1, 1));
+    EXPECT_LT(plain.points, 12.0);
+    EXPECT_GT(plain.smallest_feature, 0.5);
+}
+
+TEST(Generators_GapEstimate3d, AGapFarPastTheBudgetIsRefusedAtOnceByEveryGenerator) {
+    for (const int e : {0, 600, -600}) {
+        SCOPED_TRACE("scale 2^" + std::to_string(e));
+        const tri::Plc3 plc = tri::scaled(box_with_gap(1e-9), e);
+        EXPECT_GT(gap_estimate_3d(plc).points, 1e17);
+        const tri::ConformingMesh3 recovered = tri::boundary_recovery_3d(plc).mesh;
+        const std::string refinement = testing::error_message<InputError>([&] {
+            DelaunayRefinement3Options options;
+            options.radius_edge_bound = 2;
+            (void)delaunay_refinement_3d(plc, recovered, options);
+        });
+        EXPECT_NE(refinement.find("delaunay refinement 3d: Steiner point budget of 1016000 "
+                                  "exceeded at once: facets "),
+                  std::string::npos)
+            << refinement;
+        const double size = std::ldexp(0.25, e);
+        const std::string frontal = testing::error_message<InputError>([&] {
+            FrontalDelaunay3Options options;
+            options.size = SizeFunction3::uniform(size);
+            (void)frontal_delaunay_3d(plc, recovered, options);
+        });
+        EXPECT_NE(frontal.find("frontal delaunay 3d: Steiner point budget"), std::string::npos)
+            << frontal;
+        const std::string octree = testing::error_message<InputError>([&] {
+            OctreeMesh3Options options;
+            options.size = SizeFunction3::uniform(size);
+            (void)octree_mesh_3d(plc, recovered, options);
+        });
+        EXPECT_NE(octree.find("octree mesh 3d: Steiner point budget"), std::string::npos) << octree;
+    }
+}
+
+}  // namespace
+}  // namespace exactmesh::generators
