@@ -354,12 +354,9 @@ void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out)
         out.facets.push_back(f);
         return;
     }
-    const double* a = plc.point(ref[0]);
-    const double* b = plc.point(ref[1]);
-    const double* c = plc.point(ref[2]);
-    const int drop = drop_axis(a, b, c);
-    const bool flip = projected_orient(a, b, c, drop) == Sign::Negative;
-    const std::vector<VertIdx> triangles = projected_facet_triangles(plc, f, drop, flip);
+    const FacetPlane plane = facet_plane(plc, facet);
+    const std::vector<VertIdx> triangles =
+        projected_facet_triangles(plc, f, plane.drop, plane.flip);
     out.triangles.insert(out.triangles.end(), triangles.begin(), triangles.end());
     out.facets.insert(out.facets.end(), triangles.size() / 3, f);
 }
@@ -801,12 +798,9 @@ std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc) {
         const auto ref = checked_reference_corners(plc, f);
         const VertIdx off = off_plane_corner(plc, f, ref);
         if (off == kNone) continue;
-        const double* a = plc.point(ref[0]);
-        const double* b = plc.point(ref[1]);
-        const double* c = plc.point(ref[2]);
-        const int drop = drop_axis(a, b, c);
-        const bool flip = projected_orient(a, b, c, drop) == Sign::Negative;
-        const std::vector<VertIdx> triangles = projected_facet_triangles(plc, f, drop, flip);
+        const FacetPlane plane = facet_plane(plc, plc.facets[f]);
+        const std::vector<VertIdx> triangles =
+            projected_facet_triangles(plc, f, plane.drop, plane.flip);
         const Names names{plc};
         static constexpr const char* kPlanes[3] = {"yz", "zx", "xy"};
         warnings.push_back(names.facet(f) + " is not planar (vertex " + names.vertex(off) +
@@ -814,7 +808,7 @@ std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc) {
                            names.vertex(ref[1]) + ", " + names.vertex(ref[2]) +
                            "): split into the " + std::to_string(triangles.size() / 3) +
                            " triangles of its constrained Delaunay triangulation in the " +
-                           kPlanes[drop] + " plane, each a facet with its marker");
+                           kPlanes[plane.drop] + " plane, each a facet with its marker");
         const int marker = plc.facets[f].marker;
         const std::uint64_t origin = f < plc.facet_origin.size() ? plc.facet_origin[f] : 0;
         for (std::size_t t = 0; t < triangles.size(); t += 3) {
