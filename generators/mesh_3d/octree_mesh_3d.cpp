@@ -307,8 +307,21 @@ class OctreeMesher {
                 }
             }
         }
+        // Free vertices (in no facet polygon) inside the domain must be band vertices too: a
+        // core leaf's templates would leave one out (or, on an interface square, make the
+        // band's PLC refuse it). Each is a point box.
+        std::vector<std::uint8_t> in_facet(plc_.vertex_count(), 0);
+        for (const auto& facet : plc_.facets)
+            for (const auto& polygon : facet.polygons)
+                for (const VertIdx v : polygon) in_facet[v] = 1;
+        for (VertIdx v = 0; v < plc_.vertex_count(); ++v) {
+            if (in_facet[v]) continue;
+            const double* p = plc_.point(v);
+            boxes.push_back({Point{p[0], p[1], p[2]}, Point{p[0], p[1], p[2]}});
+        }
+        const std::size_t items = boxes.size();  // facets, then free vertices
         const int levels = std::clamp(
-            static_cast<int>(std::ceil(std::log2(std::cbrt(static_cast<double>(facets))))), 0, 6);
+            static_cast<int>(std::ceil(std::log2(std::cbrt(static_cast<double>(items))))), 0, 6);
         const std::int64_t buckets = std::int64_t{1} << levels;
         const double root = octree().root_edge();
         auto bucket = [&](double x, std::size_t a) {
@@ -320,7 +333,7 @@ class OctreeMesher {
         auto bucket_key = [&](std::int64_t x, std::int64_t y, std::int64_t z) {
             return (x * buckets + y) * buckets + z;
         };
-        for (std::size_t f = 0; f < facets; ++f) {
+        for (std::size_t f = 0; f < items; ++f) {
             for (std::int64_t x = bucket(boxes[f][0][0], 0); x <= bucket(boxes[f][1][0], 0); ++x)
                 for (std::int64_t y = bucket(boxes[f][0][1], 1); y <= bucket(boxes[f][1][1], 1);
                      ++y)
@@ -329,7 +342,7 @@ class OctreeMesher {
                         grid[bucket_key(x, y, z)].push_back(static_cast<std::uint32_t>(f));
         }
         std::vector<std::uint8_t> candidate(leaf_count, 0);
-        std::vector<std::uint32_t> seen_stamp(facets, kNone);
+        std::vector<std::uint32_t> seen_stamp(items, kNone);
         for (std::uint32_t l = 0; l < leaf_count; ++l) {
             const double e = octree().cell_edge(leaf(l).level);
             const Point lo = leaf_min(l);

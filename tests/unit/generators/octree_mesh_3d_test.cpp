@@ -189,6 +189,28 @@ TEST(Generators_OctreeMesh3d, DomainsTouchingThemselvesAlongAnEdgeOrAtACorner) {
     }
 }
 
+TEST(Generators_OctreeMesh3d, FreeVerticesInsideAreBandVertices) {
+    // Free vertices inside the unit cube, one on an octree leaf's face plane (x = 1/4 at
+    // h = 0.1: the interface squares of the core lie on multiples of 1/16): the band's PLC
+    // refused it as "in a facet but in no facet polygon", and one inside a core leaf would have
+    // been left out by the templates. Leaves near a free vertex are band leaves now.
+    Plc3 plc = triangulation::box(1, 1, 1);
+    plc.xyz.insert(plc.xyz.end(), {0.5, 0.5, 0.5, 0.25, 0.3, 0.7, 0.3125, 0.40625, 0.6});
+    const OctreeMesh3Result result =
+        mesh_and_check(plc, SizeFunction3::uniform(0.1), "cube with free vertices inside");
+    std::vector<bool> used(result.mesh.mesh.vertex_count(), false);
+    for (const triangulation::VertIdx v : result.mesh.mesh.tets) used[v] = true;
+    for (triangulation::VertIdx v = 8; v < 11; ++v)
+        EXPECT_TRUE(used[v]) << "free vertex " << v << " left out";
+    for (const int e : {600, -600}) {
+        const Plc3 s = triangulation::scaled(plc, e);
+        const OctreeMesh3Result scaled =
+            octree_mesh_3d(s, triangulation::boundary_recovery_3d(s).mesh,
+                           options_for(SizeFunction3::uniform(std::ldexp(0.1, e))));
+        exactmesh::testing::expect_scaled_mesh(scaled.mesh, result.mesh, e);
+    }
+}
+
 TEST(Generators_OctreeMesh3d, ScaledByPowersOfTwoGivesTheScaledMesh) {
     const double h = test_size(0.06, 0.065);
     const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
