@@ -35,27 +35,6 @@ namespace {
 constexpr std::uint32_t kMaxRetries = 64;
 
 /// The segments of a ConformingMesh3 seen from its vertices (the small-angle rule).
-/// Refinement cannot mend a tetrahedron whose shortest edge is finer than doubles resolve at
-/// its place: below 2^-44 of its largest coordinate magnitude (about 2^8 units in the last
-/// place), circumcentres round to a grid too coarse to make well-shaped tetrahedra (a free
-/// vertex 1e-30 above a facet vertex at 0.5 drove refinement into its budget for minutes). Such
-/// a tetrahedron is spared, like the small-input-angle rule. The test is exact and scale-free:
-/// each rounded coordinate difference is compared with a power of two (rounding is monotone, so
-/// |fl(d)| < 2^e implies |d| < 2^e), taken from the exponent of the largest magnitude.
-bool finer_than_doubles_resolve(const double* const (&p)[4]) {
-    double largest = 0;
-    for (const double* q : p)
-        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(q[k]));
-    if (!(largest > 0)) return false;
-    const double threshold = std::ldexp(1.0, std::ilogb(largest) - 44);
-    for (const auto& e : kEdges) {
-        bool below = true;
-        for (int k = 0; k < 3 && below; ++k) below = std::fabs(p[e[1]][k] - p[e[0]][k]) < threshold;
-        if (below) return true;
-    }
-    return false;
-}
-
 class SegmentIncidence {
   public:
     /// `xyz`: the coordinates (mesh.mesh.xyz, or the refinement's working copy).
@@ -166,7 +145,7 @@ class Refinement final : public RestrictedDelaunay3 {
 
     bool unresolvable(const std::array<VertIdx, 4>& c) const {
         const double* const p[4] = {point(c[0]), point(c[1]), point(c[2]), point(c[3])};
-        return finer_than_doubles_resolve(p);
+        return tet_finer_than_doubles_resolve_3d(p);
     }
 
     bool over_volume(TetIdx t, const std::array<VertIdx, 4>& c) const {
@@ -391,6 +370,20 @@ DelaunayRefinement3Result delaunay_refinement_3d(const Plc3& plc, ConformingMesh
     return refinement.run();
 }
 
+bool tet_finer_than_doubles_resolve_3d(const double* const (&p)[4]) {
+    double largest = 0;
+    for (const double* q : p)
+        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(q[k]));
+    if (!(largest > 0)) return false;
+    const double threshold = std::ldexp(1.0, std::ilogb(largest) - 44);
+    for (const auto& e : kEdges) {
+        bool below = true;
+        for (int k = 0; k < 3 && below; ++k) below = std::fabs(p[e[1]][k] - p[e[0]][k]) < threshold;
+        if (below) return true;
+    }
+    return false;
+}
+
 RefinementQuality3 check_refinement_quality_3d(const ConformingMesh3& mesh,
                                                const DelaunayRefinement3Options& options) {
     RefinementQuality3 report;
@@ -411,7 +404,7 @@ RefinementQuality3 check_refinement_quality_3d(const ConformingMesh3& mesh,
             ++report.small_angle;
         } else {
             const double* const p[4] = {a, b, d, e};
-            ++(finer_than_doubles_resolve(p) ? report.unresolvable : report.over_bound);
+            ++(tet_finer_than_doubles_resolve_3d(p) ? report.unresolvable : report.over_bound);
         }
     }
     return report;

@@ -81,6 +81,15 @@ struct DelaunayRefinement3Result {
     DelaunayRefinement3Counters counters;
 };
 
+/// Refinement cannot mend a tetrahedron whose shortest edge is finer than doubles resolve at
+/// its place: below 2^-44 of its largest coordinate magnitude (about 2^8 units in the last
+/// place), circumcentres round to a grid too coarse to make well-shaped tetrahedra (a free
+/// vertex 1e-30 above a facet vertex at 0.5 drove refinement into its budget for minutes). Such
+/// a tetrahedron is spared, like the small-input-angle rule. The test is exact and scale-free:
+/// each rounded coordinate difference is compared with a power of two (rounding is monotone, so
+/// |fl(d)| < 2^e implies |d| < 2^e), taken from the exponent of the largest magnitude.
+bool tet_finer_than_doubles_resolve_3d(const double* const (&p)[4]);
+
 /// The volume bound of one tetrahedron: the smaller of the global bound and its region's bound,
 /// each only when > 0 (TetGen's -a with region volume constraints); 0 when neither is set. The
 /// smaller of two doubles is one of them, so the exact volume test sees the bound as given.

@@ -64,13 +64,22 @@ struct Work {
     }
 
     /// Whether corners p exceed B or the volume bound `max_volume` (> 0; else none), exactly.
-    bool over_bounds(const TetCorners& p, double max_volume) const {
+    /// 0 within the bounds; 1 over the radius-edge bound with an edge finer than doubles
+    /// resolve (refinement spares those: tet_finer_than_doubles_resolve_3d); kOverBound
+    /// otherwise. Sums compared before and after a change keep the count over the bounds and
+    /// never trade a spared tetrahedron for one refinement would have split (the command's
+    /// exact check then called that a bug).
+    unsigned over_bounds(const TetCorners& p, double max_volume) const {
+        if (max_volume > 0 &&
+            predicates::compare_tet_volume_3d(p[0], p[1], p[2], p[3], max_volume) == Sign::Positive)
+            return kOverBound;
         if (predicates::compare_radius_edge_3d(p[0], p[1], p[2], p[3],
-                                               options->radius_edge_bound) == Sign::Positive)
-            return true;
-        return max_volume > 0 && predicates::compare_tet_volume_3d(p[0], p[1], p[2], p[3],
-                                                                   max_volume) == Sign::Positive;
+                                               options->radius_edge_bound) != Sign::Positive)
+            return 0;
+        const double* const corners[4] = {p[0], p[1], p[2], p[3]};
+        return tet_finer_than_doubles_resolve_3d(corners) ? 1 : kOverBound;
     }
+    static constexpr unsigned kOverBound = 1u << 16;
 
     /// Whether tetrahedron t has a dihedral angle below the threshold (rounded: a selection,
     /// not a decision; the double angle is the same for the mesh scaled by 2^k).

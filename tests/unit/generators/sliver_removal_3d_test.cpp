@@ -204,6 +204,29 @@ TEST(Generators_SliverRemoval3d, ScalingByPowersOfTwoGivesTheSameMesh) {
     EXPECT_GT(moves, 0u);
 }
 
+TEST(Generators_SliverRemoval3d, SparedTetrahedraAreNotTradedForOnesOverTheBound) {
+    // A free vertex an ulp below the top facet of the unit cube (z = 1 - 2^-53): refinement
+    // spares the tetrahedra with an edge finer than doubles resolve there. Sliver removal kept
+    // the count over the bounds but swapped a spared tetrahedron for one with no such edge,
+    // which the command's exact check then took for a bug (an internal error, exit 3). Now a
+    // spared tetrahedron counts less than one refinement would have split.
+    Plc3 plc = triangulation::box(1, 1, 1);
+    plc.xyz.insert(plc.xyz.end(), {0.3, 0.6, 1 - 0x1p-53});
+    DelaunayRefinement3Options refinement;
+    const ConformingMesh3 refined =
+        delaunay_refinement_3d(plc, triangulation::boundary_recovery_3d(plc).mesh, refinement).mesh;
+    const RefinementQuality3 q0 = check_refinement_quality_3d(refined, refinement);
+    ASSERT_GT(q0.unresolvable, 0u);
+    EXPECT_EQ(q0.over_bound, 0u);
+    SliverRemoval3Options options;
+    options.radius_edge_bound = refinement.radius_edge_bound;
+    const SliverRemoval3Result improved = sliver_removal_3d(refined, options);
+    EXPECT_TRUE(triangulation::check_boundary_conformity_3d(plc, improved.mesh).ok);
+    const RefinementQuality3 q1 = check_refinement_quality_3d(improved.mesh, refinement);
+    EXPECT_EQ(q1.over_bound, 0u);
+    EXPECT_LE(q1.unresolvable, q0.unresolvable);
+}
+
 TEST(Generators_SliverRemoval3d, BadOptionsAreInputErrors) {
     const Plc3 plc = triangulation::box(1, 1, 1);
     const ConformingMesh3 mesh = triangulation::boundary_recovery_3d(plc).mesh;
