@@ -55,13 +55,13 @@ struct Approx {
     int roundings;
 };
 
-Approx operator+(const Approx& a, const Approx& b) {
+[[gnu::always_inline]] inline Approx operator+(const Approx& a, const Approx& b) {
     return {a.value + b.value, a.magnitude + b.magnitude, std::max(a.roundings, b.roundings) + 1};
 }
-Approx operator-(const Approx& a, const Approx& b) {
+[[gnu::always_inline]] inline Approx operator-(const Approx& a, const Approx& b) {
     return {a.value - b.value, a.magnitude + b.magnitude, std::max(a.roundings, b.roundings) + 1};
 }
-Approx operator*(const Approx& a, const Approx& b) {
+[[gnu::always_inline]] inline Approx operator*(const Approx& a, const Approx& b) {
     return {a.value * b.value, a.magnitude * b.magnitude, a.roundings + b.roundings + 1};
 }
 
@@ -85,7 +85,8 @@ struct Vector3 {
 };
 
 /// p - o in long double; `in_window` turns false when a nonzero difference leaves the window.
-Vector3 difference(const double* p, const double* o, bool& in_window) {
+[[gnu::always_inline]] inline Vector3 difference(const double* p, const double* o,
+                                                 bool& in_window) {
     Vector3 r;
     Approx* c[3] = {&r.x, &r.y, &r.z};
     for (int i = 0; i < 3; ++i) {
@@ -97,10 +98,10 @@ Vector3 difference(const double* p, const double* o, bool& in_window) {
     return r;
 }
 
-Vector3 cross(const Vector3& a, const Vector3& b) {
+[[gnu::always_inline]] inline Vector3 cross(const Vector3& a, const Vector3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-Approx dot(const Vector3& a, const Vector3& b) {
+[[gnu::always_inline]] inline Approx dot(const Vector3& a, const Vector3& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
