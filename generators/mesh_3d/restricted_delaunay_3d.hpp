@@ -359,11 +359,22 @@ class RestrictedDelaunay3 {
         std::size_t next = 0;
         bool done() const { return next == met.size(); }
     };
+    mutable std::array<StarWalk, 3> tets_with_walks_;  ///< tets_with's scratch
 
     StarWalk start_walk(VertIdx v, unsigned which) const {
+        StarWalk walk;
+        restart_walk(walk, v, which);
+        return walk;
+    }
+
+    /// start_walk into `walk`, whose vector keeps its capacity (tets_with's scratch walks: their
+    /// allocations were a third of tets_with's instructions).
+    void restart_walk(StarWalk& walk, VertIdx v, unsigned which) const {
         EM_ASSERT(vertex_tet_[v] != kNone && m_.slot_of(vertex_tet_[v], v) < 4);
         walk_mark_[which][vertex_tet_[v]] = walk_epoch_;
-        StarWalk walk{v, {vertex_tet_[v]}, 0};
+        walk.v = v;
+        walk.met.assign(1, vertex_tet_[v]);
+        walk.next = 0;
         const auto pieces = other_pieces_.find(v);
         if (pieces != other_pieces_.end()) {
             for (const TetIdx t : pieces->second) {
@@ -373,7 +384,6 @@ class RestrictedDelaunay3 {
                 walk.met.push_back(t);
             }
         }
-        return walk;
     }
 
     /// Records the pieces of v's star: vertex_tet_[v]'s, and one for each further piece met by
@@ -467,8 +477,8 @@ class RestrictedDelaunay3 {
         new_walk_epoch();
         const unsigned n = c == kNone ? 2 : 3;
         const VertIdx corners[3] = {a, b, c};
-        StarWalk walks[3];
-        for (unsigned w = 0; w < n; ++w) walks[w] = start_walk(corners[w], w);
+        std::array<StarWalk, 3>& walks = tets_with_walks_;
+        for (unsigned w = 0; w < n; ++w) restart_walk(walks[w], corners[w], w);
         unsigned finished = n;
         while (finished == n) {
             for (unsigned w = 0; w < n; ++w) {
