@@ -906,7 +906,11 @@ class RestrictedDelaunay3 {
     bool facet_cavity(const double* p, const std::vector<Key3>& initial, VertIdx v, Split& split,
                       std::vector<Subface>& pieces, std::vector<TetIdx>& seeds, bool grow) const {
         std::vector<Key3> faces = initial;
-        std::unordered_set<Key3, Key3Hash> in_set(initial.begin(), initial.end());
+        // Membership by a scan of `faces` (a facet cavity holds a few subfaces; the node-based
+        // set and maps here were most of refinement's allocations).
+        const auto in_set = [&faces](const Key3& k) {
+            return std::find(faces.begin(), faces.end(), k) != faces.end();
+        };
         for (std::size_t i = 0; grow && i < faces.size(); ++i) {
             const Subface f = subfaces_.at(faces[i]);
             for (unsigned e = 0; e < 3; ++e) {
@@ -914,10 +918,9 @@ class RestrictedDelaunay3 {
                 const std::uint64_t key = edge_key(x, y);
                 if (key == split.edge || subsegments_.count(key) != 0) continue;
                 for (const Key3& k : subfaces_on_edge(x, y)) {
-                    if (in_set.count(k) != 0) continue;
+                    if (in_set(k)) continue;
                     const Subface& g = subfaces_.at(k);
                     if (g.facet != f.facet || !in_circumcircle(g, p)) continue;
-                    in_set.insert(k);
                     faces.push_back(k);
                 }
             }
@@ -937,7 +940,7 @@ class RestrictedDelaunay3 {
                     if (key == split.edge) continue;
                     bool inner = false;
                     for (const Key3& other : subfaces_on_edge(x, y)) {
-                        if (other != faces[i] && in_set.count(other) != 0 &&
+                        if (other != faces[i] && in_set(other) &&
                             subfaces_.at(other).facet == f.facet)
                             inner = true;
                     }
@@ -954,15 +957,18 @@ class RestrictedDelaunay3 {
             }
             if (bad == faces.size()) break;
             if (bad < initial.size()) return false;
-            in_set.erase(faces[bad]);
             faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(bad));
         }
         // Each vertex starts and ends at most one boundary edge of its facet's cavity.
-        std::unordered_map<std::uint64_t, unsigned> starts, ends;
+        std::vector<std::uint64_t> starts, ends;
         for (const Subface& piece : pieces) {
             const std::uint64_t facet = std::uint64_t{piece.facet} << 32;
-            if (++starts[facet | piece.oriented[0]] > 1 || ++ends[facet | piece.oriented[1]] > 1)
-                return false;
+            starts.push_back(facet | piece.oriented[0]);
+            ends.push_back(facet | piece.oriented[1]);
+        }
+        for (std::vector<std::uint64_t>* keys : {&starts, &ends}) {
+            std::sort(keys->begin(), keys->end());
+            if (std::adjacent_find(keys->begin(), keys->end()) != keys->end()) return false;
         }
         for (const Key3& k : faces) {
             for (const TetIdx t : tets_with(k[0], k[1], k[2]))
