@@ -376,6 +376,30 @@ Dihedral smallest_dihedral(const TetCorners& p) {
     return Dihedral{p, kEdges[best][0], kEdges[best][1]};
 }
 
+bool every_dihedral_compares(const TetCorners& p, const Dihedral& bound, Sign wanted) {
+    // compare_dihedral(angle, bound) for the six angles in turn, the bound's filter terms
+    // computed once; the first angle that does not compare as wanted ends it.
+    DihedralTerms bound_terms{};
+    bool bound_window = true;
+    if constexpr (kLongDoubleFilter) bound_terms = dihedral_terms(bound, bound_window);
+    for (unsigned e = 0; e < 6; ++e) {
+        const Dihedral angle{p, kEdges[e][0], kEdges[e][1]};
+        std::optional<Sign> s;
+        if (kLongDoubleFilter && bound_window) {
+            bool window = true;
+            const DihedralTerms terms = dihedral_terms(angle, window);
+            if (window) s = terms_filter(terms, bound_terms);
+            if (s) {
+                EM_STAT(compare_dihedral, calls);
+                EM_STAT(compare_dihedral, filter);
+            }
+        }
+        if (!s) s = compare_dihedral(angle, bound);
+        if (*s != wanted) return false;
+    }
+    return true;
+}
+
 Dihedral largest_dihedral(const TetCorners& p) {
     Dihedral best{p, 0, 1};
     for (int e = 1; e < 6; ++e) {
