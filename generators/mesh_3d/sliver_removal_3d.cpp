@@ -404,6 +404,20 @@ bool star_smallest_exact(const TetMesh3& mesh, const std::vector<TetIdx>& star, 
     return true;
 }
 
+/// Whether the star with v at `at` is positively oriented and its smallest exact dihedral angle
+/// exceeds `current`: every angle of every tetrahedron does (the same answer as
+/// star_smallest_exact then compare_dihedral, stopping at the first angle that does not).
+bool star_improves(const TetMesh3& mesh, const std::vector<TetIdx>& star, VertIdx v,
+                   const double* at, const Dihedral& current) {
+    for (const TetIdx t : star) {
+        TetCorners p = corners_of(mesh, mesh.tet(t));
+        p[mesh.slot_of(t, v)] = at;
+        if (predicates::orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
+        if (!predicates::every_dihedral_compares(p, current, Sign::Positive)) return false;
+    }
+    return true;
+}
+
 unsigned star_over_bounds(const Work& work, const std::vector<TetIdx>& star, VertIdx v,
                           const double* at) {
     unsigned over = 0;
@@ -463,9 +477,7 @@ bool smooth_vertex(Work& work, VertIdx v, SliverRemoval3Counters& c) {
     const unsigned over_before = work.options->keep_bounds ? star_over_bounds(work, star, v, p) : 0;
     bool improving = false;
     for (const auto& [value, i] : order) {
-        Dihedral smallest{};
-        if (!star_smallest_exact(mesh, star, v, points[i].data(), scratch, smallest)) continue;
-        if (compare_dihedral(smallest, current) != Sign::Positive) continue;
+        if (!star_improves(mesh, star, v, points[i].data(), current)) continue;
         improving = true;
         if (work.options->keep_bounds &&
             star_over_bounds(work, star, v, points[i].data()) > over_before)
