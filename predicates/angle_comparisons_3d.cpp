@@ -55,13 +55,13 @@ struct Approx {
     int roundings;
 };
 
-Approx operator+(const Approx& a, const Approx& b) {
+[[gnu::always_inline]] inline Approx operator+(const Approx& a, const Approx& b) {
     return {a.value + b.value, a.magnitude + b.magnitude, std::max(a.roundings, b.roundings) + 1};
 }
-Approx operator-(const Approx& a, const Approx& b) {
+[[gnu::always_inline]] inline Approx operator-(const Approx& a, const Approx& b) {
     return {a.value - b.value, a.magnitude + b.magnitude, std::max(a.roundings, b.roundings) + 1};
 }
-Approx operator*(const Approx& a, const Approx& b) {
+[[gnu::always_inline]] inline Approx operator*(const Approx& a, const Approx& b) {
     return {a.value * b.value, a.magnitude * b.magnitude, a.roundings + b.roundings + 1};
 }
 
@@ -85,7 +85,8 @@ struct Vector3 {
 };
 
 /// p - o in long double; `in_window` turns false when a nonzero difference leaves the window.
-Vector3 difference(const double* p, const double* o, bool& in_window) {
+[[gnu::always_inline]] inline Vector3 difference(const double* p, const double* o,
+                                                 bool& in_window) {
     Vector3 r;
     Approx* c[3] = {&r.x, &r.y, &r.z};
     for (int i = 0; i < 3; ++i) {
@@ -97,10 +98,10 @@ Vector3 difference(const double* p, const double* o, bool& in_window) {
     return r;
 }
 
-Vector3 cross(const Vector3& a, const Vector3& b) {
+[[gnu::always_inline]] inline Vector3 cross(const Vector3& a, const Vector3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-Approx dot(const Vector3& a, const Vector3& b) {
+[[gnu::always_inline]] inline Approx dot(const Vector3& a, const Vector3& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
@@ -204,22 +205,26 @@ constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3
 
 namespace {
 
+/// The filter of compare_dihedral on the two angles' terms (both in the window).
+std::optional<Sign> terms_filter(const DihedralTerms& ta, const DihedralTerms& tb) {
+    bool certain = true;
+    const Sign da = filtered_sign(ta.d, certain);
+    const Sign db = filtered_sign(tb.d, certain);
+    Sign x = Sign::Zero;
+    if (certain && da == db && da != Sign::Zero) {
+        x = filtered_sign(ta.d * ta.d * tb.norms - tb.d * tb.d * ta.norms, certain);
+    }
+    if (certain) return -cosine_order(da, db, x);
+    return std::nullopt;
+}
+
 /// The filter of compare_dihedral; `window` false when a difference left the window.
 std::optional<Sign> dihedral_filter(const Dihedral& a, const Dihedral& b, bool& window) {
     window = true;
     if constexpr (kLongDoubleFilter) {
         const DihedralTerms ta = dihedral_terms(a, window);
         const DihedralTerms tb = dihedral_terms(b, window);
-        if (window) {
-            bool certain = true;
-            const Sign da = filtered_sign(ta.d, certain);
-            const Sign db = filtered_sign(tb.d, certain);
-            Sign x = Sign::Zero;
-            if (certain && da == db && da != Sign::Zero) {
-                x = filtered_sign(ta.d * ta.d * tb.norms - tb.d * tb.d * ta.norms, certain);
-            }
-            if (certain) return -cosine_order(da, db, x);
-        }
+        if (window) return terms_filter(ta, tb);
     }
     return std::nullopt;
 }
@@ -341,12 +346,58 @@ Sign compare_dihedral(const Dihedral& a, const Dihedral& b) {
 }
 
 Dihedral smallest_dihedral(const TetCorners& p) {
-    Dihedral best{p, 0, 1};
-    for (int e = 1; e < 6; ++e) {
-        const Dihedral candidate{p, kEdges[e][0], kEdges[e][1]};
-        if (compare_dihedral(candidate, best) == Sign::Negative) best = candidate;
+    // compare_dihedral five times, with each angle's filter terms computed once (the best's were
+    // computed again at every comparison: 10 evaluations for 6 angles, a fifth of sliver
+    // removal's instructions). The filter sees the same terms, so it decides the same; where it
+    // abstains (or a difference left the window), compare_dihedral decides.
+    std::array<DihedralTerms, 6> terms{};
+    std::array<bool, 6> window{};
+    if constexpr (kLongDoubleFilter) {
+        for (unsigned e = 0; e < 6; ++e) {
+            window[e] = true;
+            terms[e] = dihedral_terms(Dihedral{p, kEdges[e][0], kEdges[e][1]}, window[e]);
+        }
     }
-    return best;
+    unsigned best = 0;
+    for (unsigned e = 1; e < 6; ++e) {
+        const Dihedral candidate{p, kEdges[e][0], kEdges[e][1]};
+        std::optional<Sign> s;
+        if (kLongDoubleFilter && window[e] && window[best]) {
+            s = terms_filter(terms[e], terms[best]);
+            if (s) {
+                EM_STAT(compare_dihedral, calls);
+                EM_STAT(compare_dihedral, filter);
+            }
+        }
+        // (compare_dihedral counts the comparisons the cached filter left undecided.)
+        if (!s) s = compare_dihedral(candidate, Dihedral{p, kEdges[best][0], kEdges[best][1]});
+        if (*s == Sign::Negative) best = e;
+    }
+    return Dihedral{p, kEdges[best][0], kEdges[best][1]};
+}
+
+bool every_dihedral_compares(const TetCorners& p, const Dihedral& bound, Sign wanted) {
+    // compare_dihedral(angle, bound) for the six angles in turn, the bound's filter terms
+    // computed once; the first angle that does not compare as wanted ends it.
+    DihedralTerms bound_terms{};
+    bool bound_window = true;
+    if constexpr (kLongDoubleFilter) bound_terms = dihedral_terms(bound, bound_window);
+    for (unsigned e = 0; e < 6; ++e) {
+        const Dihedral angle{p, kEdges[e][0], kEdges[e][1]};
+        std::optional<Sign> s;
+        if (kLongDoubleFilter && bound_window) {
+            bool window = true;
+            const DihedralTerms terms = dihedral_terms(angle, window);
+            if (window) s = terms_filter(terms, bound_terms);
+            if (s) {
+                EM_STAT(compare_dihedral, calls);
+                EM_STAT(compare_dihedral, filter);
+            }
+        }
+        if (!s) s = compare_dihedral(angle, bound);
+        if (*s != wanted) return false;
+    }
+    return true;
 }
 
 Dihedral largest_dihedral(const TetCorners& p) {

@@ -36,6 +36,10 @@ Sign compare_dihedral(const Dihedral& a, const Dihedral& b);
 Dihedral smallest_dihedral(const TetCorners& p);
 Dihedral largest_dihedral(const TetCorners& p);
 
+/// Whether compare_dihedral(angle, bound) == wanted for all six dihedral angles of `p` (every
+/// angle above `bound`: Positive; below: Negative), exactly; stops at the first that is not.
+bool every_dihedral_compares(const TetCorners& p, const Dihedral& bound, Sign wanted);
+
 /// Sign of q(a) - q(b) for the volume-edge quality, exact. @pre both positively oriented.
 Sign compare_volume_edge(const TetCorners& a, const TetCorners& b);
 

@@ -7,6 +7,10 @@
 // power of two when that is exact (detail::rescale_into_safe_range), else GMP.
 #include "predicates/incircle.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
 #include "predicates/adaptive_bounds.hpp"
 #include "predicates/exact_range.hpp"
 #include "predicates/expansion.hpp"
@@ -50,6 +54,36 @@ Expansion<12> det3_xy1(const double* p, const double* q, const double* r) noexce
              lift_times(bd, compressed(minor_xy(ad, cd)))) +
             lift_times(cd, compressed(minor_xy(ad, bd))))
         .sign();
+}
+
+/// exact_stage_b's determinant when the six differences are integers below 2^12 times one
+/// power of two (cocircular lattice points, the ties of in_equatorial_sphere_3d's planar stage
+/// in 3D refinement on boxes: ~2,600 instructions each in expansions). Scaled by that power of
+/// two (exact: the results are integers below 2^12, checked), every minor is below 2^25, every
+/// lift below 2^25, every term below 2^50 and the sum below 2^52: integers that plain doubles
+/// hold exactly, at any scale. nullopt when the differences are not such integers.
+std::optional<Sign> small_integer_stage_b(const double* diff) noexcept {
+    double largest = 0;
+    for (int i = 0; i < 6; ++i) largest = std::max(largest, std::fabs(diff[i]));
+    if (largest == 0) return Sign::Zero;
+    const int shift = 11 - std::ilogb(largest);  // largest scaled into [2^11, 2^12)
+    // One multiplication by 2^shift when that is a normal double (exact short of underflow,
+    // which the check below catches), else ldexp each.
+    const bool normal_scale = shift >= -1022 && shift <= 1023;
+    const double scale = normal_scale ? std::ldexp(1.0, shift) : 0.0;
+    double x[6];
+    for (int i = 0; i < 6; ++i) {
+        x[i] = normal_scale ? diff[i] * scale : std::ldexp(diff[i], shift);
+        if (x[i] != std::trunc(x[i]) || (x[i] == 0) != (diff[i] == 0)) return std::nullopt;
+    }
+    auto minor = [](const double* p, const double* q) { return p[0] * q[1] - q[0] * p[1]; };
+    auto lift = [](const double* p) { return p[0] * p[0] + p[1] * p[1]; };
+    const double* ad = x;
+    const double* bd = x + 2;
+    const double* cd = x + 4;
+    const double det =
+        (lift(ad) * minor(bd, cd) - lift(bd) * minor(ad, cd)) + lift(cd) * minor(ad, bd);
+    return det > 0 ? Sign::Positive : det < 0 ? Sign::Negative : Sign::Zero;
 }
 
 /// det [x y w 1] over rows a, b, c, d, expanded along the lift column w.
@@ -100,6 +134,7 @@ Sign incircle_exact(const double* a, const double* b, const double* c, const dou
             return sign_of(det_b);
         }
         EM_STAT(incircle, exact_differences);
+        if (const auto s = small_integer_stage_b(diff)) return *s;
         return exact_stage_b(diff);
     }
     if (adaptive::certified(det_b, adaptive::icc_errbound_b * permanent + two_term_bound)) {

@@ -30,8 +30,9 @@ struct PredicateStats {
     StageCounts within_rounding_of_segment, compare_dihedral, compare_volume_edge;
     StageCounts in_ellipse, compare_metric_lengths;
     /// dot_sign_3d and the refinement decisions of tet_quality_3d: filter (a relative double
-    /// filter) or gmp; in_equatorial_sphere_3d also expansion (four points in one coordinate
-    /// plane: the 2D incircle and orient2d).
+    /// filter) or gmp; dot_sign_3d also expansion (exact products of the exact differences);
+    /// in_equatorial_sphere_3d also expansion (four points in one coordinate plane: the 2D
+    /// incircle and orient2d).
     StageCounts dot_sign_3d, compare_radius_edge_3d, compare_tet_volume_3d;
     StageCounts in_equatorial_sphere_3d, compare_angle_60_3d, compare_lengths_3d;
 };

@@ -359,11 +359,22 @@ class RestrictedDelaunay3 {
         std::size_t next = 0;
         bool done() const { return next == met.size(); }
     };
+    mutable std::array<StarWalk, 3> tets_with_walks_;  ///< tets_with's scratch
 
     StarWalk start_walk(VertIdx v, unsigned which) const {
+        StarWalk walk;
+        restart_walk(walk, v, which);
+        return walk;
+    }
+
+    /// start_walk into `walk`, whose vector keeps its capacity (tets_with's scratch walks: their
+    /// allocations were a third of tets_with's instructions).
+    void restart_walk(StarWalk& walk, VertIdx v, unsigned which) const {
         EM_ASSERT(vertex_tet_[v] != kNone && m_.slot_of(vertex_tet_[v], v) < 4);
         walk_mark_[which][vertex_tet_[v]] = walk_epoch_;
-        StarWalk walk{v, {vertex_tet_[v]}, 0};
+        walk.v = v;
+        walk.met.assign(1, vertex_tet_[v]);
+        walk.next = 0;
         const auto pieces = other_pieces_.find(v);
         if (pieces != other_pieces_.end()) {
             for (const TetIdx t : pieces->second) {
@@ -373,7 +384,6 @@ class RestrictedDelaunay3 {
                 walk.met.push_back(t);
             }
         }
-        return walk;
     }
 
     /// Records the pieces of v's star: vertex_tet_[v]'s, and one for each further piece met by
@@ -467,8 +477,8 @@ class RestrictedDelaunay3 {
         new_walk_epoch();
         const unsigned n = c == kNone ? 2 : 3;
         const VertIdx corners[3] = {a, b, c};
-        StarWalk walks[3];
-        for (unsigned w = 0; w < n; ++w) walks[w] = start_walk(corners[w], w);
+        std::array<StarWalk, 3>& walks = tets_with_walks_;
+        for (unsigned w = 0; w < n; ++w) restart_walk(walks[w], corners[w], w);
         unsigned finished = n;
         while (finished == n) {
             for (unsigned w = 0; w < n; ++w) {
@@ -896,7 +906,11 @@ class RestrictedDelaunay3 {
     bool facet_cavity(const double* p, const std::vector<Key3>& initial, VertIdx v, Split& split,
                       std::vector<Subface>& pieces, std::vector<TetIdx>& seeds, bool grow) const {
         std::vector<Key3> faces = initial;
-        std::unordered_set<Key3, Key3Hash> in_set(initial.begin(), initial.end());
+        // Membership by a scan of `faces` (a facet cavity holds a few subfaces; the node-based
+        // set and maps here were most of refinement's allocations).
+        const auto in_set = [&faces](const Key3& k) {
+            return std::find(faces.begin(), faces.end(), k) != faces.end();
+        };
         for (std::size_t i = 0; grow && i < faces.size(); ++i) {
             const Subface f = subfaces_.at(faces[i]);
             for (unsigned e = 0; e < 3; ++e) {
@@ -904,10 +918,9 @@ class RestrictedDelaunay3 {
                 const std::uint64_t key = edge_key(x, y);
                 if (key == split.edge || subsegments_.count(key) != 0) continue;
                 for (const Key3& k : subfaces_on_edge(x, y)) {
-                    if (in_set.count(k) != 0) continue;
+                    if (in_set(k)) continue;
                     const Subface& g = subfaces_.at(k);
                     if (g.facet != f.facet || !in_circumcircle(g, p)) continue;
-                    in_set.insert(k);
                     faces.push_back(k);
                 }
             }
@@ -927,7 +940,7 @@ class RestrictedDelaunay3 {
                     if (key == split.edge) continue;
                     bool inner = false;
                     for (const Key3& other : subfaces_on_edge(x, y)) {
-                        if (other != faces[i] && in_set.count(other) != 0 &&
+                        if (other != faces[i] && in_set(other) &&
                             subfaces_.at(other).facet == f.facet)
                             inner = true;
                     }
@@ -944,15 +957,18 @@ class RestrictedDelaunay3 {
             }
             if (bad == faces.size()) break;
             if (bad < initial.size()) return false;
-            in_set.erase(faces[bad]);
             faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(bad));
         }
         // Each vertex starts and ends at most one boundary edge of its facet's cavity.
-        std::unordered_map<std::uint64_t, unsigned> starts, ends;
+        std::vector<std::uint64_t> starts, ends;
         for (const Subface& piece : pieces) {
             const std::uint64_t facet = std::uint64_t{piece.facet} << 32;
-            if (++starts[facet | piece.oriented[0]] > 1 || ++ends[facet | piece.oriented[1]] > 1)
-                return false;
+            starts.push_back(facet | piece.oriented[0]);
+            ends.push_back(facet | piece.oriented[1]);
+        }
+        for (std::vector<std::uint64_t>* keys : {&starts, &ends}) {
+            std::sort(keys->begin(), keys->end());
+            if (std::adjacent_find(keys->begin(), keys->end()) != keys->end()) return false;
         }
         for (const Key3& k : faces) {
             for (const TetIdx t : tets_with(k[0], k[1], k[2]))

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -230,9 +232,10 @@ struct StarFrame {
     std::vector<unsigned> moving;
     std::vector<Vec> neighbours;
     int exponent = 0;
-    /// The tetrahedron to evaluate first: the last one found at or below a floor (see
-    /// star_smallest_angle). Only the order of evaluation, never a value, depends on it.
-    mutable std::size_t first = 0;
+    /// The order in which star_smallest_angle evaluates the tetrahedra: each one found at or
+    /// below a floor moves to the front (the tetrahedra that ruled out recent candidates rule
+    /// out most of the next ones). Only the order of evaluation, never a value, depends on it.
+    mutable std::vector<std::uint32_t> order;
 };
 
 /// A pseudo-angle of atan2(y, x) for y >= 0: 1 - x / (|x| + y), in [0, 2], increasing with the
@@ -273,16 +276,19 @@ double smallest_angle(const std::array<Vec, 4>& corners, unsigned moving, const 
 /// with `floor`, as soon as one tetrahedron is at or below it, that tetrahedron's value: exact
 /// above `floor`, else at or below it. The search only asks whether a value beats the best so
 /// far, so stopping at the first tetrahedron that rules it out gives the same decisions at a
-/// fraction of the work (the tetrahedron that ruled out the last one is tried first: the active
-/// one, usually). The minimum does not depend on the order (no NaN arises in the frame).
+/// fraction of the work (the tetrahedra that ruled out recent candidates are tried first: the
+/// active ones, usually; on box-with-hole this cut the tetrahedra evaluated from 7.7 to 3.1 per
+/// call, and those of rejected candidates from 6.5 to 1.7). The minimum does not depend on the
+/// order (no NaN arises in the frame).
 double star_smallest_angle(const StarFrame& frame, const Vec& x, double floor = -2) {
     double smallest = 2;
     const std::size_t n = frame.tets.size();
     for (std::size_t j = 0; j < n; ++j) {
-        const std::size_t i = (frame.first + j) % n;
+        const std::size_t i = frame.order[j];
         smallest = std::min(smallest, smallest_angle(frame.tets[i], frame.moving[i], x, floor));
         if (smallest <= floor) {
-            frame.first = i;
+            const auto at = frame.order.begin() + static_cast<std::ptrdiff_t>(j);
+            std::rotate(frame.order.begin(), at, at + 1);
             return smallest;
         }
     }
@@ -320,6 +326,8 @@ StarFrame star_frame(const TetMesh3& mesh, VertIdx v, const std::vector<TetIdx>&
         frame.tets.push_back(c);
         frame.moving.push_back(mesh.slot_of(t, v));
     }
+    frame.order.resize(frame.tets.size());
+    std::iota(frame.order.begin(), frame.order.end(), std::uint32_t{0});
     return frame;
 }
 
@@ -405,6 +413,20 @@ bool star_smallest_exact(const TetMesh3& mesh, const std::vector<TetIdx>& star, 
     return true;
 }
 
+/// Whether the star with v at `at` is positively oriented and its smallest exact dihedral angle
+/// exceeds `current`: every angle of every tetrahedron does (the same answer as
+/// star_smallest_exact then compare_dihedral, stopping at the first angle that does not).
+bool star_improves(const TetMesh3& mesh, const std::vector<TetIdx>& star, VertIdx v,
+                   const double* at, const Dihedral& current) {
+    for (const TetIdx t : star) {
+        TetCorners p = corners_of(mesh, mesh.tet(t));
+        p[mesh.slot_of(t, v)] = at;
+        if (predicates::orient3d(p[0], p[1], p[2], p[3]) != Sign::Positive) return false;
+        if (!predicates::every_dihedral_compares(p, current, Sign::Positive)) return false;
+    }
+    return true;
+}
+
 unsigned star_over_bounds(const Work& work, const std::vector<TetIdx>& star, VertIdx v,
                           const double* at) {
     unsigned over = 0;
@@ -464,9 +486,7 @@ bool smooth_vertex(Work& work, VertIdx v, SliverRemoval3Counters& c) {
     const unsigned over_before = work.options->keep_bounds ? star_over_bounds(work, star, v, p) : 0;
     bool improving = false;
     for (const auto& [value, i] : order) {
-        Dihedral smallest{};
-        if (!star_smallest_exact(mesh, star, v, points[i].data(), scratch, smallest)) continue;
-        if (compare_dihedral(smallest, current) != Sign::Positive) continue;
+        if (!star_improves(mesh, star, v, points[i].data(), current)) continue;
         improving = true;
         if (work.options->keep_bounds &&
             star_over_bounds(work, star, v, points[i].data()) > over_before)

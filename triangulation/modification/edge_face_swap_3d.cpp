@@ -82,9 +82,17 @@ bool quality_prefers(const TetMesh3& mesh, SwapCriterion3 criterion, const FlipP
                 }
                 return best;
             };
+            // The new extreme beats the old one exactly when every angle of every new
+            // tetrahedron does: checked angle by angle, stopping at the first that does not
+            // (most plans fail early; the new extreme itself cost a fifth of sliver removal).
             const Dihedral before = extreme(old, plan.old_count);
-            const Dihedral after = extreme(plan.made, plan.made_count);
-            return compare_dihedral(after, before) == (min ? Sign::Positive : Sign::Negative);
+            const Sign wanted = min ? Sign::Positive : Sign::Negative;
+            for (unsigned i = 0; i < plan.made_count; ++i) {
+                if (!predicates::every_dihedral_compares(corners(mesh, plan.made[i]), before,
+                                                         wanted))
+                    return false;
+            }
+            return true;
         }
         case SwapCriterion3::VolumeEdge: {
             auto worst = [&](const std::array<Tet, 4>& set, unsigned count) {

@@ -392,3 +392,64 @@ TEST(Predicates_TriangleArea, AgreesWithGmpOnRandomTiedAndScaledInputs) {
     EXPECT_EQ(pr::triangle_area_sign(a.data(), b.data(), c.data(), ulps(6.0, 1)), Sign::Negative);
     EXPECT_EQ(pr::triangle_area_sign(a.data(), b.data(), c.data(), ulps(6.0, -1)), Sign::Positive);
 }
+
+TEST(Predicates_AngleComparisons3d, SmallestAndEveryDihedralAgreeWithGmp) {
+    // smallest_dihedral (cached filter terms) and every_dihedral_compares (the bound's terms
+    // cached) against the rational reference, on lattice tetrahedra (ties) and random ones, at
+    // 2^0, 2^600 and 2^-600.
+    Rng rng(13);
+    std::uniform_int_distribution<int> small(-3, 3);
+    auto tet = [&](int n) {
+        if (n % 2 == 0) return random_tet(rng);
+        for (;;) {
+            Tet t;
+            for (P3& p : t) {
+                for (double& x : p) x = double(small(rng)) + 64;
+            }
+            const Sign s = pr::orient3d(t[0].data(), t[1].data(), t[2].data(), t[3].data());
+            if (s == Sign::Zero) continue;
+            if (s == Sign::Negative) std::swap(t[0], t[1]);
+            return t;
+        }
+    };
+    constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+    int all_true = 0, all_false = 0;
+    for (int n = 0; n < 300; ++n) {
+        const Tet a = tet(n), b = tet(n / 2);
+        const unsigned be = static_cast<unsigned>(n) % 6;
+        for (const int scale : {0, 600, -600}) {
+            const Tet as = scaled(a, scale), bs = scaled(b, scale);
+            const auto ca = corners(as), cb = corners(bs);
+            // The smallest: no angle below it, and none tied with it before it.
+            const pr::Dihedral smallest = pr::smallest_dihedral(ca);
+            unsigned at = 6;
+            for (unsigned e = 0; e < 6; ++e) {
+                if (kEdges[e][0] == smallest.i && kEdges[e][1] == smallest.j) at = e;
+            }
+            ASSERT_LT(at, 6u);
+            for (unsigned e = 0; e < 6; ++e) {
+                const Sign s = pr::reference::compare_dihedral(
+                    ca.data(), kEdges[e][0], kEdges[e][1], ca.data(), smallest.i, smallest.j);
+                ASSERT_NE(s, Sign::Negative) << n << " scale " << scale;
+                if (e < at) {
+                    ASSERT_EQ(s, Sign::Positive) << n << " scale " << scale;
+                }
+            }
+            // Every angle of a against an angle of b.
+            const pr::Dihedral bound{cb, kEdges[be][0], kEdges[be][1]};
+            for (const Sign wanted : {Sign::Positive, Sign::Negative}) {
+                bool expected = true;
+                for (unsigned e = 0; e < 6; ++e) {
+                    expected = expected && pr::reference::compare_dihedral(
+                                               ca.data(), kEdges[e][0], kEdges[e][1], cb.data(),
+                                               bound.i, bound.j) == wanted;
+                }
+                ASSERT_EQ(pr::every_dihedral_compares(ca, bound, wanted), expected)
+                    << n << " scale " << scale;
+                (expected ? all_true : all_false) += 1;
+            }
+        }
+    }
+    EXPECT_GT(all_true, 0);
+    EXPECT_GT(all_false, 0);
+}

@@ -63,6 +63,41 @@ TEST(Predicates_DotSign3d, AgreesWithRationalsOnRandomAndNearSphericalPoints) {
     EXPECT_GT(zeros, 0);
 }
 
+TEST(Predicates_DotSign3d, NearRightAnglesWithInexactDifferencesAgreeWithRationals) {
+    // b - p nearly perpendicular to a - p, the differences rounded (p far from a and b in
+    // magnitude, or a tiny offset): the filter abstains and the expansion stage decides; then
+    // the same inputs at 2^600 and 2^-600 (GMP).
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int undecided = 0;
+    for (int i = 0; i < 4000; ++i) {
+        double p[3], a[3], b[3];
+        for (int k = 0; k < 3; ++k) {
+            p[k] = u(rng) * (i % 3 == 0 ? 0x1p-40 : 1.0);
+            a[k] = u(rng);
+        }
+        const double r[3] = {u(rng), u(rng), u(rng)};
+        const double d[3] = {a[0] - p[0], a[1] - p[1], a[2] - p[2]};
+        const double v[3] = {d[1] * r[2] - d[2] * r[1], d[2] * r[0] - d[0] * r[2],
+                             d[0] * r[1] - d[1] * r[0]};
+        for (int k = 0; k < 3; ++k) b[k] = p[k] + v[k];
+        if (i % 2 == 1) b[i % 3] = std::nextafter(b[i % 3], i % 4 == 1 ? -2.0 : 2.0);
+        const Sign expected = reference_dot(p, a, b);
+        undecided += !dot_sign_3d_filter(p, a, b).has_value();
+        ASSERT_EQ(dot_sign_3d(p, a, b), expected) << i;
+        for (const int e : {600, -600}) {
+            double ps[3], as[3], bs[3];
+            for (int k = 0; k < 3; ++k) {
+                ps[k] = std::ldexp(p[k], e);
+                as[k] = std::ldexp(a[k], e);
+                bs[k] = std::ldexp(b[k], e);
+            }
+            ASSERT_EQ(dot_sign_3d(ps, as, bs), expected) << i << " 2^" << e;
+        }
+    }
+    EXPECT_GT(undecided, 100);  // the cases reach the exact stages
+}
+
 TEST(Predicates_DotSign3d, TheFilterAgreesWithRationalsAndDecidesMostRandomInputs) {
     std::mt19937_64 rng(8);
     std::uniform_real_distribution<double> u(-1, 1);
