@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <thread>
 #include <vector>
@@ -141,16 +142,17 @@ struct Worker {
             return t;
         }
         if (fresh_next < fresh_end) return fresh_next++;
-        // Only the sequential worker may grow the arrays: no thread runs beside it.
-        EM_ASSERT(owns_all);
-        const TriIdx t = mesh.triangle_slots();
+        // Only the sequential worker may grow the arrays (its fresh range is then the arrays'
+        // tail): no thread runs beside it.
+        EM_ASSERT(owns_all && fresh_end == mesh.triangle_slots());
         mesh.tv.resize(mesh.tv.size() + 3, kNone);
         mesh.twin.resize(mesh.twin.size() + 3, kNone);
-        return t;
+        ++fresh_end;
+        return fresh_next++;
     }
 
     /// Visibility walk from `last` (as Delaunay2Core::walk_to) that gives up on leaving the
-    /// partition: then kNone.
+    /// partition: then kNone, and `last` becomes the last triangle of ours it crossed.
     TriIdx walk(const Shared& shared, VertIdx p) {
         const TriMesh2& mesh = shared.mesh;
         TriIdx t = last;
@@ -173,7 +175,13 @@ struct Worker {
                 const EdgeIdx e = 3 * t + (r + k) % 3;
                 if (orient(shared, mesh.origin(e), mesh.destination(e), p) == Sign::Negative) {
                     const TriIdx u = triangle_of(mesh.twin[e]);
-                    if (!owns(shared, u)) return kNone;
+                    if (!owns(shared, u)) {
+                        // The next points lie near p: their walks start here, not again from
+                        // where this one did (which, for points along a border, crossed most
+                        // of the partition each time).
+                        last = t;
+                        return kNone;
+                    }
                     t = u;
                     moved = true;
                     break;
@@ -228,7 +236,10 @@ struct Worker {
                 const TriIdx u = triangle_of(f);
                 if (stamp[u] == mark) continue;
                 if (conflict(shared, u, p)) {
-                    if (!owns(shared, u)) return Outcome::Deferred;
+                    if (!owns(shared, u)) {
+                        last = seed;  // ours and untouched: near the next points
+                        return Outcome::Deferred;
+                    }
                     stamp[u] = mark;
                     cavity.push_back(u);
                 } else {
@@ -331,7 +342,12 @@ class ParallelConstruction {
           arena_(std::min(static_cast<int>(threads), tbb::this_task_arena::max_concurrency())) {
         const std::uint32_t n = core.mesh.vertex_count();
         const std::span<const double> xy = core.mesh.xy;
-        // The two curves' keys side by side (a tenth of the sequential construction's time).
+        TriMesh2& mesh = core.mesh;
+        high_water_ = mesh.triangle_slots();
+        // The passes hand out about 2 (n + deferred points) fresh slots: sized once here
+        // (growing by passes copied the arrays and left their first touch, page faults
+        // included, to the calling thread between passes), beside the two curves' keys.
+        const std::size_t slots = high_water_ + 2 * std::size_t{n} + n / 8 + 64 * threads;
         arena_.execute([&] {
             tbb::parallel_invoke(
                 [&] {
@@ -340,6 +356,18 @@ class ParallelConstruction {
                 },
                 [&] {
                     keys_[1] = hilbert_keys_2d(xy, kSecondCurveShift);
+                    finished_.fetch_add(1, std::memory_order_release);
+                },
+                [&] {
+                    mesh.tv.resize(3 * slots, kNone);
+                    finished_.fetch_add(1, std::memory_order_release);
+                },
+                [&] {
+                    mesh.twin.resize(3 * slots, kNone);
+                    finished_.fetch_add(1, std::memory_order_release);
+                },
+                [&] {
+                    stamp_.assign(slots, 0);
                     finished_.fetch_add(1, std::memory_order_release);
                 });
         });
@@ -361,12 +389,16 @@ class ParallelConstruction {
     /// Inserts `points` one by one (the prefix and the tail).
     void insert_sequentially(std::span<const VertIdx> points) {
         sequential_.last = core_.last_triangle;
+        sequential_.fresh_next = high_water_;
+        sequential_.fresh_end = core_.mesh.triangle_slots();
         for (const VertIdx p : points) {
             const Outcome outcome = sequential_.insert(shared_, p);
             EM_ASSERT(outcome != Outcome::Deferred);
             core_.progress.tick();
         }
         core_.last_triangle = sequential_.last;
+        high_water_ = sequential_.fresh_next;
+        sequential_.fresh_end = sequential_.fresh_next;
     }
 
     /// One pass: `points` (sorted by the keys of `curve`) cut by `bounds` (T + 1 increasing
@@ -391,13 +423,17 @@ class ParallelConstruction {
             for (TriIdx t = worker.fresh_next; t < worker.fresh_end; ++t)
                 worker.free_slots.push_back(t);
             const std::size_t needed = 2 * worker.points.size() + 2;
-            worker.fresh_next = mesh.triangle_slots();
+            worker.fresh_next = high_water_;
             worker.fresh_end = static_cast<TriIdx>(worker.fresh_next + needed);
-            mesh.tv.resize(3 * static_cast<std::size_t>(worker.fresh_end), kNone);
-            mesh.twin.resize(3 * static_cast<std::size_t>(worker.fresh_end), kNone);
+            high_water_ = worker.fresh_end;
         }
-        if (stamp_.size() < mesh.triangle_slots())
-            stamp_.resize(mesh.triangle_slots() + mesh.triangle_slots() / 4, 0);
+        if (mesh.triangle_slots() < high_water_) {
+            // Rare: more deferred points than the first sizing allowed for.
+            const std::size_t slots = high_water_ + high_water_ / 8;
+            mesh.tv.resize(3 * slots, kNone);
+            mesh.twin.resize(3 * slots, kNone);
+        }
+        if (stamp_.size() < mesh.triangle_slots()) stamp_.resize(mesh.triangle_slots(), 0);
         for (Worker& worker : workers_) {
             find_start(worker);
         }
@@ -405,6 +441,7 @@ class ParallelConstruction {
         // already guarantees (the setup above happens before each worker, each worker before
         // what follows), in a form ThreadSanitizer sees: libtbb is not instrumented.
         pass_epoch_.fetch_add(1, std::memory_order_release);
+        const auto started = std::chrono::steady_clock::now();
         arena_.execute([&] {
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(0, count, 1),
@@ -416,6 +453,7 @@ class ParallelConstruction {
                 tbb::simple_partitioner());
         });
         (void)finished_.load(std::memory_order_acquire);
+        core_.counters.parallel_microseconds += detail::microseconds_since(started);
         std::vector<VertIdx> deferred;
         for (Worker& worker : workers_) {
             for (std::size_t i = worker.deferred.size(); i < worker.points.size(); ++i)
@@ -450,6 +488,12 @@ class ParallelConstruction {
 
     const std::vector<std::uint32_t>& keys(int curve) const { return keys_[curve]; }
 
+    /// Drops the unused slots at the arrays' end (all dead).
+    void trim() {
+        core_.mesh.tv.resize(3 * static_cast<std::size_t>(high_water_));
+        core_.mesh.twin.resize(3 * static_cast<std::size_t>(high_water_));
+    }
+
     void finish_counters() {
         for (const Worker& worker : workers_) add_work_counters(core_.counters, worker.counters);
         add_work_counters(core_.counters, sequential_.counters);
@@ -483,6 +527,9 @@ class ParallelConstruction {
     detail::Delaunay2Core& core_;
     std::vector<std::uint32_t> keys_[2];
     std::vector<std::uint64_t> stamp_;
+    /// Slots below it were handed out (some are dead or still free); the arrays' slots from it
+    /// on are unused (dead).
+    TriIdx high_water_ = 0;
     std::atomic<std::uint64_t> pass_epoch_{0}, finished_{0};
     std::vector<TriIdx> starting_at_;
     Shared shared_;
@@ -508,7 +555,10 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     Delaunay2Options brio = options;
     brio.order = InsertionOrder::Brio;
     brio.location = PointLocation::Walk;
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point phase = Clock::now();
     detail::Delaunay2Core core(xy, brio);
+    core.counters.order_microseconds = detail::microseconds_since(phase);
     core.counters.threads = threads;
     std::vector<bool> skip;
     if (!core.make_first_triangle(skip)) return core.collinear_result();
@@ -529,7 +579,9 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     const std::uint32_t prefix_end =
         first_parallel + 1 < round_begin.size() ? round_begin[first_parallel] : n;
 
+    phase = Clock::now();
     ParallelConstruction construction(core, threads);
+    core.counters.keys_microseconds = detail::microseconds_since(phase);
     auto unskipped = [&skip](std::uint32_t begin, std::uint32_t end) {
         std::vector<VertIdx> out;
         for (VertIdx p = begin; p < end; ++p) {
@@ -537,10 +589,13 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
         }
         return out;
     };
+    phase = Clock::now();
     const std::vector<VertIdx> prefix = unskipped(0, prefix_end);
     construction.insert_sequentially(prefix);
     core.counters.sequential_prefix = prefix.size();
+    std::uint64_t sequential = detail::microseconds_since(phase);
 
+    phase = Clock::now();
     std::vector<VertIdx> pending;
     for (std::size_t r = first_parallel; r + 1 < round_begin.size(); ++r) {
         const std::vector<VertIdx> round = unskipped(round_begin[r], round_begin[r + 1]);
@@ -553,10 +608,19 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
         pending = construction.pass(deferred, 1, construction.bounds(points, 1));
         sort_by_key(construction.keys(0), pending);
     }
+    // The rounds' time less the threads' passes: what the calling thread does alone.
+    core.counters.partition_microseconds =
+        detail::microseconds_since(phase) - core.counters.parallel_microseconds;
+    phase = Clock::now();
     construction.insert_sequentially(pending);
     core.counters.sequential_tail = pending.size();
+    core.counters.sequential_microseconds = sequential + detail::microseconds_since(phase);
+    construction.trim();
     construction.finish_counters();
-    return core.take_result();
+    phase = Clock::now();
+    Delaunay2Result result = core.take_result();
+    result.counters.result_microseconds = detail::microseconds_since(phase);
+    return result;
 }
 
 }  // namespace exactmesh::triangulation
