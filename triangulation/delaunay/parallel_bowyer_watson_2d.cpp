@@ -49,7 +49,9 @@ struct Shared {
     /// Per triangle slot: the mark of the last insertion attempt that visited it. A worker
     /// writes only the slots of its triangles; it reads those and the mixed ones, which no one
     /// writes during a pass (and marks are unique, so another worker's old mark never matches).
-    std::vector<std::uint64_t>* stamp = nullptr;
+    /// 32 bits (half the cache lines of 64): ParallelConstruction::keep_marks_in_range
+    /// restarts the marks before they could wrap.
+    std::vector<std::uint32_t>* stamp = nullptr;
     /// Per vertex (+1 for kInfinite): the new triangle on edge v -> * of the current insertion.
     /// A worker writes only the entries of cavity boundary vertices, which are in its range.
     std::vector<TriIdx>* starting_at = nullptr;
@@ -59,7 +61,10 @@ enum class Outcome { Inserted, Merged, Deferred };
 
 /// One thread's partition, allocator, scratch and counters (kept from pass to pass, so a thread
 /// reuses the slots it freed, near where it works).
-struct Worker {
+/// Aligned to whole cache-line pairs: the counters and marks one worker writes on every
+/// predicate and insertion must not share a line (or the adjacent-line prefetch pair) with what
+/// the next worker reads on every triangle (its range).
+struct alignas(128) Worker {
     KeyRange range;
     bool owns_all = false;  ///< the sequential prefix and tail: every triangle is ours
     std::vector<TriIdx> free_slots;
@@ -212,13 +217,14 @@ struct Worker {
                 }
             }
         }
-        std::vector<std::uint64_t>& stamp = *shared.stamp;
+        std::vector<std::uint32_t>& stamp = *shared.stamp;
         if (stamp.size() < mesh.triangle_slots()) {
             EM_ASSERT(owns_all);  // workers find it sized for the pass
             stamp.resize(2 * static_cast<std::size_t>(mesh.triangle_slots()), 0);
         }
         next_mark += mark_stride;
-        const std::uint64_t mark = next_mark;
+        EM_ASSERT(next_mark <= UINT32_MAX);
+        const auto mark = static_cast<std::uint32_t>(next_mark);
         std::vector<TriIdx>& starting_at = *shared.starting_at;
         cavity.clear();
         boundary.clear();
@@ -376,18 +382,34 @@ class ParallelConstruction {
         starting_at_.assign(n + 1, kNone);
         shared_.starting_at = &starting_at_;
         shared_.stamp = &stamp_;
+        sequential_.owns_all = true;
+        restart_marks();
+    }
+
+    /// Worker w's marks are w + k (T + 1), the sequential worker's T + k (T + 1), k >= 1.
+    void restart_marks() {
         const std::size_t stride = workers_.size() + 1;
         for (std::size_t w = 0; w < workers_.size(); ++w) {
             workers_[w].next_mark = w;
             workers_[w].mark_stride = stride;
         }
-        sequential_.owns_all = true;
         sequential_.next_mark = workers_.size();
         sequential_.mark_stride = stride;
     }
 
+    /// Clears the stamps and restarts the marks when `attempts` more insertions by one worker
+    /// could take a mark past 32 bits (never below about 4·10^9 / (T + 1) insertions).
+    void keep_marks_in_range(std::size_t attempts) {
+        std::uint64_t highest = sequential_.next_mark;
+        for (const Worker& worker : workers_) highest = std::max(highest, worker.next_mark);
+        if (highest + (workers_.size() + 1) * (attempts + 1) <= UINT32_MAX) return;
+        std::fill(stamp_.begin(), stamp_.end(), 0u);
+        restart_marks();
+    }
+
     /// Inserts `points` one by one (the prefix and the tail).
     void insert_sequentially(std::span<const VertIdx> points) {
+        keep_marks_in_range(points.size());
         sequential_.last = core_.last_triangle;
         sequential_.fresh_next = high_water_;
         sequential_.fresh_end = core_.mesh.triangle_slots();
@@ -434,6 +456,9 @@ class ParallelConstruction {
             mesh.twin.resize(3 * slots, kNone);
         }
         if (stamp_.size() < mesh.triangle_slots()) stamp_.resize(mesh.triangle_slots(), 0);
+        std::size_t attempts = 0;
+        for (const Worker& worker : workers_) attempts = std::max(attempts, worker.points.size());
+        keep_marks_in_range(attempts);
         for (Worker& worker : workers_) {
             find_start(worker);
         }
@@ -526,7 +551,7 @@ class ParallelConstruction {
 
     detail::Delaunay2Core& core_;
     std::vector<std::uint32_t> keys_[2];
-    std::vector<std::uint64_t> stamp_;
+    std::vector<std::uint32_t> stamp_;
     /// Slots below it were handed out (some are dead or still free); the arrays' slots from it
     /// on are unused (dead).
     TriIdx high_water_ = 0;
