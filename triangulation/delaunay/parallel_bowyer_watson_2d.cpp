@@ -339,13 +339,12 @@ void sort_by_key(const std::vector<std::uint32_t>& keys, std::vector<VertIdx>& p
 
 class ParallelConstruction {
   public:
-    ParallelConstruction(detail::Delaunay2Core& core, unsigned threads)
+    /// `arena` runs the T = `threads` partitions (on fewer threads if it has fewer).
+    ParallelConstruction(detail::Delaunay2Core& core, unsigned threads, tbb::task_arena& arena)
         : core_(core),
           shared_{core.mesh, nullptr, core.input_index, core.merged_into},
           workers_(threads),
-          // More partitions than hardware threads still give the same triangles; the arena
-          // only runs them on the threads there are.
-          arena_(std::min(static_cast<int>(threads), tbb::this_task_arena::max_concurrency())) {
+          arena_(arena) {
         const std::uint32_t n = core.mesh.vertex_count();
         const std::span<const double> xy = core.mesh.xy;
         TriMesh2& mesh = core.mesh;
@@ -357,11 +356,11 @@ class ParallelConstruction {
         arena_.execute([&] {
             tbb::parallel_invoke(
                 [&] {
-                    keys_[0] = hilbert_keys_2d(xy);
+                    keys_[0] = hilbert_keys_2d(xy, 0, true);
                     finished_.fetch_add(1, std::memory_order_release);
                 },
                 [&] {
-                    keys_[1] = hilbert_keys_2d(xy, kSecondCurveShift);
+                    keys_[1] = hilbert_keys_2d(xy, kSecondCurveShift, true);
                     finished_.fetch_add(1, std::memory_order_release);
                 },
                 [&] {
@@ -560,7 +559,7 @@ class ParallelConstruction {
     Shared shared_;
     std::vector<Worker> workers_;
     Worker sequential_;
-    tbb::task_arena arena_;
+    tbb::task_arena& arena_;
 };
 
 /// Merges two lists of vertices sorted by (key, vertex).
@@ -577,12 +576,20 @@ std::vector<VertIdx> merge_by_key(const std::vector<std::uint32_t>& keys,
 Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
                                           const Delaunay2Options& options, unsigned threads) {
     EM_ASSERT(threads >= 1);
-    Delaunay2Options brio = options;
-    brio.order = InsertionOrder::Brio;
-    brio.location = PointLocation::Walk;
     using Clock = std::chrono::steady_clock;
     Clock::time_point phase = Clock::now();
-    detail::Delaunay2Core core(xy, brio);
+    // More partitions than hardware threads still give the same triangles; the arena only runs
+    // them on the threads there are.
+    tbb::task_arena arena(
+        std::min(static_cast<int>(threads), tbb::this_task_arena::max_concurrency()));
+    // The BRIO order of the sequential construction, its keys and rounds computed on the
+    // arena's threads (the same permutation).
+    validate_points_2d(xy);
+    std::vector<VertIdx> order;
+    arena.execute(
+        [&] { order = insertion_order_2d(xy, InsertionOrder::Brio, options.seed, true); });
+    detail::Delaunay2Core core(xy, std::move(order));
+    core.progress = ProgressCounter(options.progress, xy.size() / 2, "points inserted");
     core.counters.order_microseconds = detail::microseconds_since(phase);
     core.counters.threads = threads;
     std::vector<bool> skip;
@@ -605,7 +612,7 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
         first_parallel + 1 < round_begin.size() ? round_begin[first_parallel] : n;
 
     phase = Clock::now();
-    ParallelConstruction construction(core, threads);
+    ParallelConstruction construction(core, threads, arena);
     core.counters.keys_microseconds = detail::microseconds_since(phase);
     auto unskipped = [&skip](std::uint32_t begin, std::uint32_t end) {
         std::vector<VertIdx> out;
