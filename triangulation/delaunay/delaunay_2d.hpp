@@ -61,9 +61,9 @@ struct Delaunay2Counters {
     std::uint64_t deferred_points = 0;  ///< parallel: insertions put off (a point may count twice)
     std::uint64_t sequential_tail = 0;  ///< parallel: deferred points inserted at the end
     // Wall-clock phases of bowyer-watson (sequential and parallel), in microseconds: measured,
-    // not work, so they differ from run to run; the others read 0.
-    std::uint64_t order_microseconds = 0;       ///< validation, BRIO order, copy into the mesh
-    std::uint64_t keys_microseconds = 0;        ///< parallel: the two curves' Hilbert keys
+    // not work, so they differ from run to run; the other algorithms leave them at 0.
+    std::uint64_t order_microseconds = 0;  ///< validation, BRIO order (parallel: also mesh arrays)
+    std::uint64_t keys_microseconds = 0;   ///< parallel: the curves' keys by mesh vertex
     std::uint64_t sequential_microseconds = 0;  ///< one-thread insertions (parallel: prefix, tail)
     std::uint64_t partition_microseconds = 0;   ///< parallel: merging, sorting, ranges, starts
     std::uint64_t parallel_microseconds = 0;    ///< parallel: the threads' passes

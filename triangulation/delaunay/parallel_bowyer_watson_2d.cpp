@@ -7,6 +7,7 @@
 #include <tbb/parallel_invoke.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <atomic>
@@ -330,6 +331,52 @@ void add_work_counters(Delaunay2Counters& to, const Delaunay2Counters& from) {
 /// inside them.
 constexpr std::uint32_t kSecondCurveShift = 25033;  // 2^16 (1 - 0.618...)
 
+/// What is computed on the arena before the mesh exists: the BRIO order, both curves' keys (in
+/// the caller's order) and the mesh arrays sized for every pass (tv kNone: dead slots).
+struct Prepared {
+    std::vector<VertIdx> order;
+    std::vector<std::uint32_t> keys[2];
+    std::vector<VertIdx> tv;
+    std::vector<EdgeIdx> twin;
+    std::vector<std::uint32_t> stamp;
+};
+
+Prepared prepare(std::span<const double> xy, std::uint64_t seed, unsigned threads,
+                 tbb::task_arena& arena) {
+    const std::size_t n = xy.size() / 2;
+    // The passes hand out about 2 (n + deferred points) fresh slots: sized once, here, beside
+    // the order (growing pass by pass copied the arrays and left their first touch, page
+    // faults included, to the calling thread between passes).
+    const std::size_t slots = 4 + 2 * n + n / 8 + 64 * std::size_t{threads};
+    Prepared out;
+    // The release/acquire pair repeats the task group's guarantee for ThreadSanitizer (libtbb
+    // is not instrumented), as in ParallelConstruction::pass.
+    std::atomic<int> finished{0};
+    arena.execute([&] {
+        tbb::task_group group;
+        group.run([&] {
+            out.keys[1] = hilbert_keys_2d(xy, kSecondCurveShift, true);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        group.run([&] {
+            out.tv.assign(3 * slots, kNone);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        group.run([&] {
+            out.twin.assign(3 * slots, kNone);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        group.run([&] {
+            out.stamp.assign(slots, 0u);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        out.order = insertion_order_2d(xy, InsertionOrder::Brio, seed, true, &out.keys[0]);
+        group.wait();
+    });
+    (void)finished.load(std::memory_order_acquire);
+    return out;
+}
+
 /// Sorts vertices by (key, vertex).
 void sort_by_key(const std::vector<std::uint32_t>& keys, std::vector<VertIdx>& points) {
     std::sort(points.begin(), points.end(), [&keys](VertIdx u, VertIdx v) {
@@ -339,42 +386,36 @@ void sort_by_key(const std::vector<std::uint32_t>& keys, std::vector<VertIdx>& p
 
 class ParallelConstruction {
   public:
-    /// `arena` runs the T = `threads` partitions (on fewer threads if it has fewer).
-    ParallelConstruction(detail::Delaunay2Core& core, unsigned threads, tbb::task_arena& arena)
+    /// `arena` runs the T = `threads` partitions (on fewer threads if it has fewer); `prepared`
+    /// (of the same points and T) gives its arrays and keys.
+    ParallelConstruction(detail::Delaunay2Core& core, unsigned threads, tbb::task_arena& arena,
+                         Prepared& prepared)
         : core_(core),
           shared_{core.mesh, nullptr, core.input_index, core.merged_into},
           workers_(threads),
           arena_(arena) {
         const std::uint32_t n = core.mesh.vertex_count();
-        const std::span<const double> xy = core.mesh.xy;
         TriMesh2& mesh = core.mesh;
+        // The prepared arrays take the first triangles' entries and replace the mesh's.
         high_water_ = mesh.triangle_slots();
-        // The passes hand out about 2 (n + deferred points) fresh slots: sized once here
-        // (growing by passes copied the arrays and left their first touch, page faults
-        // included, to the calling thread between passes), beside the two curves' keys.
-        const std::size_t slots = high_water_ + 2 * std::size_t{n} + n / 8 + 64 * threads;
+        EM_ASSERT(prepared.tv.size() >= mesh.tv.size() && prepared.stamp.size() >= high_water_);
+        std::copy(mesh.tv.begin(), mesh.tv.end(), prepared.tv.begin());
+        std::copy(mesh.twin.begin(), mesh.twin.end(), prepared.twin.begin());
+        mesh.tv.swap(prepared.tv);
+        mesh.twin.swap(prepared.twin);
+        stamp_.swap(prepared.stamp);
+        // The keys by mesh vertex (they were computed in the caller's order).
+        for (std::vector<std::uint32_t>& keys : keys_) keys.resize(n);
         arena_.execute([&] {
-            tbb::parallel_invoke(
-                [&] {
-                    keys_[0] = hilbert_keys_2d(xy, 0, true);
-                    finished_.fetch_add(1, std::memory_order_release);
-                },
-                [&] {
-                    keys_[1] = hilbert_keys_2d(xy, kSecondCurveShift, true);
-                    finished_.fetch_add(1, std::memory_order_release);
-                },
-                [&] {
-                    mesh.tv.resize(3 * slots, kNone);
-                    finished_.fetch_add(1, std::memory_order_release);
-                },
-                [&] {
-                    mesh.twin.resize(3 * slots, kNone);
-                    finished_.fetch_add(1, std::memory_order_release);
-                },
-                [&] {
-                    stamp_.assign(slots, 0);
-                    finished_.fetch_add(1, std::memory_order_release);
-                });
+            tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 1 << 14),
+                              [&](const tbb::blocked_range<std::uint32_t>& r) {
+                                  for (std::uint32_t v = r.begin(); v != r.end(); ++v) {
+                                      const VertIdx i = core.input_index[v];
+                                      keys_[0][v] = prepared.keys[0][i];
+                                      keys_[1][v] = prepared.keys[1][i];
+                                  }
+                                  finished_.fetch_add(1, std::memory_order_release);
+                              });
         });
         (void)finished_.load(std::memory_order_acquire);  // as in pass(), for ThreadSanitizer
         shared_.keys = keys_[0].data();
@@ -585,10 +626,8 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     // The BRIO order of the sequential construction, its keys and rounds computed on the
     // arena's threads (the same permutation).
     validate_points_2d(xy);
-    std::vector<VertIdx> order;
-    arena.execute(
-        [&] { order = insertion_order_2d(xy, InsertionOrder::Brio, options.seed, true); });
-    detail::Delaunay2Core core(xy, std::move(order));
+    Prepared prepared = prepare(xy, options.seed, threads, arena);
+    detail::Delaunay2Core core(xy, std::move(prepared.order));
     core.progress = ProgressCounter(options.progress, xy.size() / 2, "points inserted");
     core.counters.order_microseconds = detail::microseconds_since(phase);
     core.counters.threads = threads;
@@ -612,7 +651,7 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
         first_parallel + 1 < round_begin.size() ? round_begin[first_parallel] : n;
 
     phase = Clock::now();
-    ParallelConstruction construction(core, threads, arena);
+    ParallelConstruction construction(core, threads, arena, prepared);
     core.counters.keys_microseconds = detail::microseconds_since(phase);
     auto unskipped = [&skip](std::uint32_t begin, std::uint32_t end) {
         std::vector<VertIdx> out;

@@ -228,7 +228,8 @@ void sort_brio_rounds(std::span<const std::uint32_t> keys, std::vector<std::uint
 /// points' Hilbert keys (`keys()`, computed only then).
 template <class Keys>
 std::vector<std::uint32_t> insertion_order(std::size_t n, InsertionOrder order, std::uint64_t seed,
-                                           Keys keys, bool parallel = false) {
+                                           Keys keys, bool parallel = false,
+                                           std::vector<std::uint32_t>* keys_out = nullptr) {
     if (parallel && order == InsertionOrder::Brio) {
         // The shuffle (one random stream: sequential) beside the keys.
         std::vector<std::uint32_t> perm;
@@ -236,6 +237,7 @@ std::vector<std::uint32_t> insertion_order(std::size_t n, InsertionOrder order, 
         tbb::parallel_invoke([&] { perm = shuffled(n, order, seed); },
                              [&] { point_keys = keys(); });
         sort_brio_rounds(point_keys, perm, true);
+        if (keys_out != nullptr) *keys_out = std::move(point_keys);
         return perm;
     }
     std::vector<std::uint32_t> perm = shuffled(n, order, seed);
@@ -268,10 +270,12 @@ void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indice
 }
 
 std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
-                                              std::uint64_t seed, bool parallel) {
+                                              std::uint64_t seed, bool parallel,
+                                              std::vector<std::uint32_t>* keys) {
+    EM_ASSERT(keys == nullptr || (parallel && order == InsertionOrder::Brio));
     return insertion_order(
         xy.size() / 2, order, seed, [xy, parallel] { return hilbert_keys_2d(xy, 0, parallel); },
-        parallel);
+        parallel, keys);
 }
 
 std::vector<std::uint32_t> insertion_order_3d(std::span<const double> xyz, InsertionOrder order,

@@ -21,9 +21,10 @@ InsertionOrder insertion_order_from_name(std::string_view name);
 
 /// A permutation of 0..n-1 (n = xy.size()/2): the order in which to insert the points. With
 /// `parallel`, the Brio order's keys and rounds are computed on every thread of the current
-/// oneTBB arena (the same permutation).
+/// oneTBB arena (the same permutation); then `keys`, if given, receives hilbert_keys_2d(xy).
 std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
-                                              std::uint64_t seed, bool parallel = false);
+                                              std::uint64_t seed, bool parallel = false,
+                                              std::vector<std::uint32_t>* keys = nullptr);
 
 /// The position of each point (n = xy.size()/2) along the Hilbert curve of a 2^16 x 2^16 grid
 /// over the points' bounding box: the keys by which the BRIO rounds of insertion_order_2d are
