@@ -2,6 +2,7 @@
 // Bowyer-Watson 2D (see bowyer_watson_2d.hpp).
 #include "triangulation/delaunay/bowyer_watson_2d.hpp"
 
+#include <chrono>
 #include <vector>
 
 #include "triangulation/delaunay/delaunay_2d_core.hpp"
@@ -84,13 +85,17 @@ Delaunay2Result bowyer_watson_2d(std::span<const double> xy, const Delaunay2Opti
         const unsigned threads = resolve_thread_count(options.threads);
         if (threads > 1) return parallel_bowyer_watson_2d(xy, options, threads);
     }
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point phase = Clock::now();
     detail::Delaunay2Core core(xy, options);
+    core.counters.order_microseconds = detail::microseconds_since(phase);
     std::vector<bool> skip;
     if (!core.make_first_triangle(skip)) {
         // All points collinear (or fewer than three distinct): no triangle. Duplicates still
         // map to their first occurrence.
         return core.collinear_result();
     }
+    phase = Clock::now();
     Cavity cavity;
     cavity.starting_at.assign(core.mesh.vertex_count() + 1, kNone);
     std::uint32_t stamp = 0;
@@ -102,7 +107,11 @@ Delaunay2Result bowyer_watson_2d(std::span<const double> xy, const Delaunay2Opti
         core.note_inserted(p);
         core.progress.tick();
     }
-    return core.take_result();
+    core.counters.sequential_microseconds = detail::microseconds_since(phase);
+    phase = Clock::now();
+    Delaunay2Result result = core.take_result();
+    result.counters.result_microseconds = detail::microseconds_since(phase);
+    return result;
 }
 
 }  // namespace exactmesh::triangulation

@@ -60,13 +60,22 @@ struct Delaunay2Counters {
     std::uint64_t parallel_points = 0;    ///< parallel: points inserted (or merged) by the threads
     std::uint64_t deferred_points = 0;  ///< parallel: insertions put off (a point may count twice)
     std::uint64_t sequential_tail = 0;  ///< parallel: deferred points inserted at the end
+    // Wall-clock phases of bowyer-watson (sequential and parallel), in microseconds: measured,
+    // not work, so they differ from run to run; the other algorithms leave them at 0.
+    std::uint64_t order_microseconds = 0;  ///< validation, BRIO order (parallel: also mesh arrays)
+    std::uint64_t keys_microseconds = 0;   ///< parallel: the curves' keys by mesh vertex
+    std::uint64_t sequential_microseconds = 0;  ///< one-thread insertions (parallel: prefix, tail)
+    std::uint64_t partition_microseconds = 0;   ///< parallel: merging, sorting, ranges, starts
+    std::uint64_t parallel_microseconds = 0;    ///< parallel: the threads' passes
+    std::uint64_t result_microseconds = 0;      ///< numbering and compaction of the result
 };
 
 /// The name table of Delaunay2Counters (base/counter_table.hpp): --stats prints it in this order.
-inline constexpr std::array kDelaunay2CounterNames =
-    EM_COUNTER_TABLE(Delaunay2Counters, points, duplicates, orient_calls, incircle_calls,
-                     walk_steps, cavity_triangles, flips, candidates, threads, sequential_prefix,
-                     parallel_rounds, parallel_points, deferred_points, sequential_tail);
+inline constexpr std::array kDelaunay2CounterNames = EM_COUNTER_TABLE(
+    Delaunay2Counters, points, duplicates, orient_calls, incircle_calls, walk_steps,
+    cavity_triangles, flips, candidates, threads, sequential_prefix, parallel_rounds,
+    parallel_points, deferred_points, sequential_tail, order_microseconds, keys_microseconds,
+    sequential_microseconds, partition_microseconds, parallel_microseconds, result_microseconds);
 static_assert(counter_table_complete(kDelaunay2CounterNames));
 
 /// The Delaunay triangulation in the caller's vertex numbering.

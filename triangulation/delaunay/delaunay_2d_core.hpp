@@ -4,6 +4,7 @@
 // first triangle, and the conversion to the caller's numbering.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -16,6 +17,13 @@
 namespace exactmesh::triangulation::detail {
 
 using predicates::Sign;
+
+/// Wall-clock microseconds since `start`, for the *_microseconds phase counters.
+inline std::uint64_t microseconds_since(std::chrono::steady_clock::time_point start) {
+    return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
+                                          std::chrono::steady_clock::now() - start)
+                                          .count());
+}
 
 class Delaunay2Core {
   public:

@@ -7,9 +7,11 @@
 #include <tbb/parallel_invoke.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <thread>
 #include <vector>
@@ -48,7 +50,9 @@ struct Shared {
     /// Per triangle slot: the mark of the last insertion attempt that visited it. A worker
     /// writes only the slots of its triangles; it reads those and the mixed ones, which no one
     /// writes during a pass (and marks are unique, so another worker's old mark never matches).
-    std::vector<std::uint64_t>* stamp = nullptr;
+    /// 32 bits (half the cache lines of 64): ParallelConstruction::keep_marks_in_range
+    /// restarts the marks before they could wrap.
+    std::vector<std::uint32_t>* stamp = nullptr;
     /// Per vertex (+1 for kInfinite): the new triangle on edge v -> * of the current insertion.
     /// A worker writes only the entries of cavity boundary vertices, which are in its range.
     std::vector<TriIdx>* starting_at = nullptr;
@@ -58,7 +62,10 @@ enum class Outcome { Inserted, Merged, Deferred };
 
 /// One thread's partition, allocator, scratch and counters (kept from pass to pass, so a thread
 /// reuses the slots it freed, near where it works).
-struct Worker {
+/// Aligned to whole cache-line pairs: the counters and marks one worker writes on every
+/// predicate and insertion must not share a line (or the adjacent-line prefetch pair) with what
+/// the next worker reads on every triangle (its range).
+struct alignas(128) Worker {
     KeyRange range;
     bool owns_all = false;  ///< the sequential prefix and tail: every triangle is ours
     std::vector<TriIdx> free_slots;
@@ -141,16 +148,17 @@ struct Worker {
             return t;
         }
         if (fresh_next < fresh_end) return fresh_next++;
-        // Only the sequential worker may grow the arrays: no thread runs beside it.
-        EM_ASSERT(owns_all);
-        const TriIdx t = mesh.triangle_slots();
+        // Only the sequential worker may grow the arrays (its fresh range is then the arrays'
+        // tail): no thread runs beside it.
+        EM_ASSERT(owns_all && fresh_end == mesh.triangle_slots());
         mesh.tv.resize(mesh.tv.size() + 3, kNone);
         mesh.twin.resize(mesh.twin.size() + 3, kNone);
-        return t;
+        ++fresh_end;
+        return fresh_next++;
     }
 
     /// Visibility walk from `last` (as Delaunay2Core::walk_to) that gives up on leaving the
-    /// partition: then kNone.
+    /// partition: then kNone, and `last` becomes the last triangle of ours it crossed.
     TriIdx walk(const Shared& shared, VertIdx p) {
         const TriMesh2& mesh = shared.mesh;
         TriIdx t = last;
@@ -173,7 +181,13 @@ struct Worker {
                 const EdgeIdx e = 3 * t + (r + k) % 3;
                 if (orient(shared, mesh.origin(e), mesh.destination(e), p) == Sign::Negative) {
                     const TriIdx u = triangle_of(mesh.twin[e]);
-                    if (!owns(shared, u)) return kNone;
+                    if (!owns(shared, u)) {
+                        // The next points lie near p: their walks start here, not again from
+                        // where this one did (which, for points along a border, crossed most
+                        // of the partition each time).
+                        last = t;
+                        return kNone;
+                    }
                     t = u;
                     moved = true;
                     break;
@@ -204,13 +218,14 @@ struct Worker {
                 }
             }
         }
-        std::vector<std::uint64_t>& stamp = *shared.stamp;
+        std::vector<std::uint32_t>& stamp = *shared.stamp;
         if (stamp.size() < mesh.triangle_slots()) {
             EM_ASSERT(owns_all);  // workers find it sized for the pass
             stamp.resize(2 * static_cast<std::size_t>(mesh.triangle_slots()), 0);
         }
         next_mark += mark_stride;
-        const std::uint64_t mark = next_mark;
+        EM_ASSERT(next_mark <= UINT32_MAX);
+        const auto mark = static_cast<std::uint32_t>(next_mark);
         std::vector<TriIdx>& starting_at = *shared.starting_at;
         cavity.clear();
         boundary.clear();
@@ -228,7 +243,10 @@ struct Worker {
                 const TriIdx u = triangle_of(f);
                 if (stamp[u] == mark) continue;
                 if (conflict(shared, u, p)) {
-                    if (!owns(shared, u)) return Outcome::Deferred;
+                    if (!owns(shared, u)) {
+                        last = seed;  // ours and untouched: near the next points
+                        return Outcome::Deferred;
+                    }
                     stamp[u] = mark;
                     cavity.push_back(u);
                 } else {
@@ -313,6 +331,52 @@ void add_work_counters(Delaunay2Counters& to, const Delaunay2Counters& from) {
 /// inside them.
 constexpr std::uint32_t kSecondCurveShift = 25033;  // 2^16 (1 - 0.618...)
 
+/// What is computed on the arena before the mesh exists: the BRIO order, both curves' keys (in
+/// the caller's order) and the mesh arrays sized for every pass (tv kNone: dead slots).
+struct Prepared {
+    std::vector<VertIdx> order;
+    std::vector<std::uint32_t> keys[2];
+    std::vector<VertIdx> tv;
+    std::vector<EdgeIdx> twin;
+    std::vector<std::uint32_t> stamp;
+};
+
+Prepared prepare(std::span<const double> xy, std::uint64_t seed, unsigned threads,
+                 tbb::task_arena& arena) {
+    const std::size_t n = xy.size() / 2;
+    // The passes hand out about 2 (n + deferred points) fresh slots: sized once, here, beside
+    // the order (growing pass by pass copied the arrays and left their first touch, page
+    // faults included, to the calling thread between passes).
+    const std::size_t slots = 4 + 2 * n + n / 8 + 64 * std::size_t{threads};
+    Prepared out;
+    // The release/acquire pair repeats the task group's guarantee for ThreadSanitizer (libtbb
+    // is not instrumented), as in ParallelConstruction::pass.
+    std::atomic<int> finished{0};
+    arena.execute([&] {
+        tbb::task_group group;
+        group.run([&] {
+            out.keys[1] = hilbert_keys_2d(xy, kSecondCurveShift, true);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        group.run([&] {
+            out.tv.assign(3 * slots, kNone);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        group.run([&] {
+            out.twin.assign(3 * slots, kNone);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        group.run([&] {
+            out.stamp.assign(slots, 0u);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        out.order = insertion_order_2d(xy, InsertionOrder::Brio, seed, true, &out.keys[0]);
+        group.wait();
+    });
+    (void)finished.load(std::memory_order_acquire);
+    return out;
+}
+
 /// Sorts vertices by (key, vertex).
 void sort_by_key(const std::vector<std::uint32_t>& keys, std::vector<VertIdx>& points) {
     std::sort(points.begin(), points.end(), [&keys](VertIdx u, VertIdx v) {
@@ -322,51 +386,81 @@ void sort_by_key(const std::vector<std::uint32_t>& keys, std::vector<VertIdx>& p
 
 class ParallelConstruction {
   public:
-    ParallelConstruction(detail::Delaunay2Core& core, unsigned threads)
+    /// `arena` runs the T = `threads` partitions (on fewer threads if it has fewer); `prepared`
+    /// (of the same points and T) gives its arrays and keys.
+    ParallelConstruction(detail::Delaunay2Core& core, unsigned threads, tbb::task_arena& arena,
+                         Prepared& prepared)
         : core_(core),
           shared_{core.mesh, nullptr, core.input_index, core.merged_into},
           workers_(threads),
-          // More partitions than hardware threads still give the same triangles; the arena
-          // only runs them on the threads there are.
-          arena_(std::min(static_cast<int>(threads), tbb::this_task_arena::max_concurrency())) {
+          arena_(arena) {
         const std::uint32_t n = core.mesh.vertex_count();
-        const std::span<const double> xy = core.mesh.xy;
-        // The two curves' keys side by side (a tenth of the sequential construction's time).
+        TriMesh2& mesh = core.mesh;
+        // The prepared arrays take the first triangles' entries and replace the mesh's.
+        high_water_ = mesh.triangle_slots();
+        EM_ASSERT(prepared.tv.size() >= mesh.tv.size() && prepared.stamp.size() >= high_water_);
+        std::copy(mesh.tv.begin(), mesh.tv.end(), prepared.tv.begin());
+        std::copy(mesh.twin.begin(), mesh.twin.end(), prepared.twin.begin());
+        mesh.tv.swap(prepared.tv);
+        mesh.twin.swap(prepared.twin);
+        stamp_.swap(prepared.stamp);
+        // The keys by mesh vertex (they were computed in the caller's order).
+        for (std::vector<std::uint32_t>& keys : keys_) keys.resize(n);
         arena_.execute([&] {
-            tbb::parallel_invoke(
-                [&] {
-                    keys_[0] = hilbert_keys_2d(xy);
-                    finished_.fetch_add(1, std::memory_order_release);
-                },
-                [&] {
-                    keys_[1] = hilbert_keys_2d(xy, kSecondCurveShift);
-                    finished_.fetch_add(1, std::memory_order_release);
-                });
+            tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 1 << 14),
+                              [&](const tbb::blocked_range<std::uint32_t>& r) {
+                                  for (std::uint32_t v = r.begin(); v != r.end(); ++v) {
+                                      const VertIdx i = core.input_index[v];
+                                      keys_[0][v] = prepared.keys[0][i];
+                                      keys_[1][v] = prepared.keys[1][i];
+                                  }
+                                  finished_.fetch_add(1, std::memory_order_release);
+                              });
         });
         (void)finished_.load(std::memory_order_acquire);  // as in pass(), for ThreadSanitizer
         shared_.keys = keys_[0].data();
         starting_at_.assign(n + 1, kNone);
         shared_.starting_at = &starting_at_;
         shared_.stamp = &stamp_;
+        sequential_.owns_all = true;
+        restart_marks();
+    }
+
+    /// Worker w's marks are w + k (T + 1), the sequential worker's T + k (T + 1), k >= 1.
+    void restart_marks() {
         const std::size_t stride = workers_.size() + 1;
         for (std::size_t w = 0; w < workers_.size(); ++w) {
             workers_[w].next_mark = w;
             workers_[w].mark_stride = stride;
         }
-        sequential_.owns_all = true;
         sequential_.next_mark = workers_.size();
         sequential_.mark_stride = stride;
     }
 
+    /// Clears the stamps and restarts the marks when `attempts` more insertions by one worker
+    /// could take a mark past 32 bits (never below about 4·10^9 / (T + 1) insertions).
+    void keep_marks_in_range(std::size_t attempts) {
+        std::uint64_t highest = sequential_.next_mark;
+        for (const Worker& worker : workers_) highest = std::max(highest, worker.next_mark);
+        if (highest + (workers_.size() + 1) * (attempts + 1) <= UINT32_MAX) return;
+        std::fill(stamp_.begin(), stamp_.end(), 0u);
+        restart_marks();
+    }
+
     /// Inserts `points` one by one (the prefix and the tail).
     void insert_sequentially(std::span<const VertIdx> points) {
+        keep_marks_in_range(points.size());
         sequential_.last = core_.last_triangle;
+        sequential_.fresh_next = high_water_;
+        sequential_.fresh_end = core_.mesh.triangle_slots();
         for (const VertIdx p : points) {
             const Outcome outcome = sequential_.insert(shared_, p);
             EM_ASSERT(outcome != Outcome::Deferred);
             core_.progress.tick();
         }
         core_.last_triangle = sequential_.last;
+        high_water_ = sequential_.fresh_next;
+        sequential_.fresh_end = sequential_.fresh_next;
     }
 
     /// One pass: `points` (sorted by the keys of `curve`) cut by `bounds` (T + 1 increasing
@@ -391,13 +485,20 @@ class ParallelConstruction {
             for (TriIdx t = worker.fresh_next; t < worker.fresh_end; ++t)
                 worker.free_slots.push_back(t);
             const std::size_t needed = 2 * worker.points.size() + 2;
-            worker.fresh_next = mesh.triangle_slots();
+            worker.fresh_next = high_water_;
             worker.fresh_end = static_cast<TriIdx>(worker.fresh_next + needed);
-            mesh.tv.resize(3 * static_cast<std::size_t>(worker.fresh_end), kNone);
-            mesh.twin.resize(3 * static_cast<std::size_t>(worker.fresh_end), kNone);
+            high_water_ = worker.fresh_end;
         }
-        if (stamp_.size() < mesh.triangle_slots())
-            stamp_.resize(mesh.triangle_slots() + mesh.triangle_slots() / 4, 0);
+        if (mesh.triangle_slots() < high_water_) {
+            // Rare: more deferred points than the first sizing allowed for.
+            const std::size_t slots = high_water_ + high_water_ / 8;
+            mesh.tv.resize(3 * slots, kNone);
+            mesh.twin.resize(3 * slots, kNone);
+        }
+        if (stamp_.size() < mesh.triangle_slots()) stamp_.resize(mesh.triangle_slots(), 0);
+        std::size_t attempts = 0;
+        for (const Worker& worker : workers_) attempts = std::max(attempts, worker.points.size());
+        keep_marks_in_range(attempts);
         for (Worker& worker : workers_) {
             find_start(worker);
         }
@@ -405,6 +506,7 @@ class ParallelConstruction {
         // already guarantees (the setup above happens before each worker, each worker before
         // what follows), in a form ThreadSanitizer sees: libtbb is not instrumented.
         pass_epoch_.fetch_add(1, std::memory_order_release);
+        const auto started = std::chrono::steady_clock::now();
         arena_.execute([&] {
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(0, count, 1),
@@ -416,6 +518,7 @@ class ParallelConstruction {
                 tbb::simple_partitioner());
         });
         (void)finished_.load(std::memory_order_acquire);
+        core_.counters.parallel_microseconds += detail::microseconds_since(started);
         std::vector<VertIdx> deferred;
         for (Worker& worker : workers_) {
             for (std::size_t i = worker.deferred.size(); i < worker.points.size(); ++i)
@@ -450,6 +553,12 @@ class ParallelConstruction {
 
     const std::vector<std::uint32_t>& keys(int curve) const { return keys_[curve]; }
 
+    /// Drops the unused slots at the arrays' end (all dead).
+    void trim() {
+        core_.mesh.tv.resize(3 * static_cast<std::size_t>(high_water_));
+        core_.mesh.twin.resize(3 * static_cast<std::size_t>(high_water_));
+    }
+
     void finish_counters() {
         for (const Worker& worker : workers_) add_work_counters(core_.counters, worker.counters);
         add_work_counters(core_.counters, sequential_.counters);
@@ -482,13 +591,16 @@ class ParallelConstruction {
 
     detail::Delaunay2Core& core_;
     std::vector<std::uint32_t> keys_[2];
-    std::vector<std::uint64_t> stamp_;
+    std::vector<std::uint32_t> stamp_;
+    /// Slots below it were handed out (some are dead or still free); the arrays' slots from it
+    /// on are unused (dead).
+    TriIdx high_water_ = 0;
     std::atomic<std::uint64_t> pass_epoch_{0}, finished_{0};
     std::vector<TriIdx> starting_at_;
     Shared shared_;
     std::vector<Worker> workers_;
     Worker sequential_;
-    tbb::task_arena arena_;
+    tbb::task_arena& arena_;
 };
 
 /// Merges two lists of vertices sorted by (key, vertex).
@@ -505,10 +617,19 @@ std::vector<VertIdx> merge_by_key(const std::vector<std::uint32_t>& keys,
 Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
                                           const Delaunay2Options& options, unsigned threads) {
     EM_ASSERT(threads >= 1);
-    Delaunay2Options brio = options;
-    brio.order = InsertionOrder::Brio;
-    brio.location = PointLocation::Walk;
-    detail::Delaunay2Core core(xy, brio);
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point phase = Clock::now();
+    // More partitions than hardware threads still give the same triangles; the arena only runs
+    // them on the threads there are.
+    tbb::task_arena arena(
+        std::min(static_cast<int>(threads), tbb::this_task_arena::max_concurrency()));
+    // The BRIO order of the sequential construction, its keys and rounds computed on the
+    // arena's threads (the same permutation).
+    validate_points_2d(xy);
+    Prepared prepared = prepare(xy, options.seed, threads, arena);
+    detail::Delaunay2Core core(xy, std::move(prepared.order));
+    core.progress = ProgressCounter(options.progress, xy.size() / 2, "points inserted");
+    core.counters.order_microseconds = detail::microseconds_since(phase);
     core.counters.threads = threads;
     std::vector<bool> skip;
     if (!core.make_first_triangle(skip)) return core.collinear_result();
@@ -529,7 +650,9 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     const std::uint32_t prefix_end =
         first_parallel + 1 < round_begin.size() ? round_begin[first_parallel] : n;
 
-    ParallelConstruction construction(core, threads);
+    phase = Clock::now();
+    ParallelConstruction construction(core, threads, arena, prepared);
+    core.counters.keys_microseconds = detail::microseconds_since(phase);
     auto unskipped = [&skip](std::uint32_t begin, std::uint32_t end) {
         std::vector<VertIdx> out;
         for (VertIdx p = begin; p < end; ++p) {
@@ -537,10 +660,13 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
         }
         return out;
     };
+    phase = Clock::now();
     const std::vector<VertIdx> prefix = unskipped(0, prefix_end);
     construction.insert_sequentially(prefix);
     core.counters.sequential_prefix = prefix.size();
+    std::uint64_t sequential = detail::microseconds_since(phase);
 
+    phase = Clock::now();
     std::vector<VertIdx> pending;
     for (std::size_t r = first_parallel; r + 1 < round_begin.size(); ++r) {
         const std::vector<VertIdx> round = unskipped(round_begin[r], round_begin[r + 1]);
@@ -553,10 +679,19 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
         pending = construction.pass(deferred, 1, construction.bounds(points, 1));
         sort_by_key(construction.keys(0), pending);
     }
+    // The rounds' time less the threads' passes: what the calling thread does alone.
+    core.counters.partition_microseconds =
+        detail::microseconds_since(phase) - core.counters.parallel_microseconds;
+    phase = Clock::now();
     construction.insert_sequentially(pending);
     core.counters.sequential_tail = pending.size();
+    core.counters.sequential_microseconds = sequential + detail::microseconds_since(phase);
+    construction.trim();
     construction.finish_counters();
-    return core.take_result();
+    phase = Clock::now();
+    Delaunay2Result result = core.take_result();
+    result.counters.result_microseconds = detail::microseconds_since(phase);
+    return result;
 }
 
 }  // namespace exactmesh::triangulation

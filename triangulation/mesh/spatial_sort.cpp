@@ -4,6 +4,10 @@
 // orders points; no geometric decision depends on it, so quantisation is harmless.
 #include "triangulation/mesh/spatial_sort.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <numeric>
 #include <random>
@@ -66,7 +70,8 @@ namespace {}  // namespace
 
 /// Hilbert keys of all points on a 2^16 grid over their bounding box, computed in input order
 /// (sequential reads) so that the shuffled rounds only gather 4-byte keys.
-std::vector<std::uint32_t> hilbert_keys_2d(std::span<const double> xy, std::uint32_t cell_shift) {
+std::vector<std::uint32_t> hilbert_keys_2d(std::span<const double> xy, std::uint32_t cell_shift,
+                                           bool parallel) {
     const std::size_t n = xy.size() / 2;
     std::vector<std::uint32_t> keys(n);
     if (n == 0) return keys;
@@ -84,9 +89,19 @@ std::vector<std::uint32_t> hilbert_keys_2d(std::span<const double> xy, std::uint
         const double t = (v / 2 - lo / 2) / half_span;
         return static_cast<std::uint32_t>(std::clamp(t, 0.0, 1.0) * 65535.0);
     };
-    for (std::size_t i = 0; i < n; ++i) {
-        keys[i] = hilbert_key((cell(xy[2 * i], min_x, half_x) + cell_shift) & 0xFFFFu,
-                              (cell(xy[2 * i + 1], min_y, half_y) + cell_shift) & 0xFFFFu);
+    auto compute = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            keys[i] = hilbert_key((cell(xy[2 * i], min_x, half_x) + cell_shift) & 0xFFFFu,
+                                  (cell(xy[2 * i + 1], min_y, half_y) + cell_shift) & 0xFFFFu);
+        }
+    };
+    if (parallel) {
+        // Each point's key alone: any split gives the same keys.
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, n, 1 << 14),
+            [&](const tbb::blocked_range<std::size_t>& r) { compute(r.begin(), r.end()); });
+    } else {
+        compute(0, n);
     }
     return keys;
 }
@@ -184,25 +199,50 @@ std::vector<std::uint32_t> shuffled(std::size_t n, InsertionOrder order, std::ui
 
 /// BRIO: rounds [0, n/2^k) ... [n/4, n/2), [n/2, n) of the shuffled `perm`, each sorted by key;
 /// the first round stays small (at most 64 points) and random.
-void sort_brio_rounds(std::span<const std::uint32_t> keys, std::vector<std::uint32_t>& perm) {
-    std::vector<std::uint64_t> keyed, scratch;
-    std::size_t end = perm.size();
-    while (end > 64) {
-        const std::size_t begin = end / 2;
-        sort_by_keys(keys, std::span<std::uint32_t>(perm).subspan(begin, end - begin), keyed,
+void sort_brio_rounds(std::span<const std::uint32_t> keys, std::vector<std::uint32_t>& perm,
+                      bool parallel) {
+    std::vector<std::size_t> ends;
+    for (std::size_t end = perm.size(); end > 64; end /= 2) ends.push_back(end);
+    auto sort_round = [&](std::size_t r, std::vector<std::uint64_t>& keyed,
+                          std::vector<std::uint64_t>& scratch) {
+        const std::size_t begin = ends[r] / 2;
+        sort_by_keys(keys, std::span<std::uint32_t>(perm).subspan(begin, ends[r] - begin), keyed,
                      scratch);
-        end = begin;
+    };
+    if (parallel) {
+        // The rounds are disjoint: the largest (half the points) on one thread, the others
+        // (the other half) beside it.
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ends.size(), 1),
+                          [&](const tbb::blocked_range<std::size_t>& rounds) {
+                              std::vector<std::uint64_t> keyed, scratch;
+                              for (std::size_t r = rounds.begin(); r != rounds.end(); ++r)
+                                  sort_round(r, keyed, scratch);
+                          });
+        return;
     }
+    std::vector<std::uint64_t> keyed, scratch;
+    for (std::size_t r = 0; r < ends.size(); ++r) sort_round(r, keyed, scratch);
 }
 
 /// The order of n points: shuffled() for Given and Random; for Brio, sort_brio_rounds with the
 /// points' Hilbert keys (`keys()`, computed only then).
 template <class Keys>
 std::vector<std::uint32_t> insertion_order(std::size_t n, InsertionOrder order, std::uint64_t seed,
-                                           Keys keys) {
+                                           Keys keys, bool parallel = false,
+                                           std::vector<std::uint32_t>* keys_out = nullptr) {
+    if (parallel && order == InsertionOrder::Brio) {
+        // The shuffle (one random stream: sequential) beside the keys.
+        std::vector<std::uint32_t> perm;
+        std::vector<std::uint32_t> point_keys;
+        tbb::parallel_invoke([&] { perm = shuffled(n, order, seed); },
+                             [&] { point_keys = keys(); });
+        sort_brio_rounds(point_keys, perm, true);
+        if (keys_out != nullptr) *keys_out = std::move(point_keys);
+        return perm;
+    }
     std::vector<std::uint32_t> perm = shuffled(n, order, seed);
     if (order != InsertionOrder::Brio) return perm;
-    sort_brio_rounds(keys(), perm);
+    sort_brio_rounds(keys(), perm, false);
     return perm;
 }
 
@@ -230,8 +270,12 @@ void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indice
 }
 
 std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
-                                              std::uint64_t seed) {
-    return insertion_order(xy.size() / 2, order, seed, [xy] { return hilbert_keys_2d(xy); });
+                                              std::uint64_t seed, bool parallel,
+                                              std::vector<std::uint32_t>* keys) {
+    EM_ASSERT(keys == nullptr || (parallel && order == InsertionOrder::Brio));
+    return insertion_order(
+        xy.size() / 2, order, seed, [xy, parallel] { return hilbert_keys_2d(xy, 0, parallel); },
+        parallel, keys);
 }
 
 std::vector<std::uint32_t> insertion_order_3d(std::span<const double> xyz, InsertionOrder order,

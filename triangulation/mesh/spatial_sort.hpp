@@ -19,17 +19,21 @@ enum class InsertionOrder { Given, Random, Brio };
 /// @throws InputError naming the unknown name and the known ones.
 InsertionOrder insertion_order_from_name(std::string_view name);
 
-/// A permutation of 0..n-1 (n = xy.size()/2): the order in which to insert the points.
+/// A permutation of 0..n-1 (n = xy.size()/2): the order in which to insert the points. With
+/// `parallel`, the Brio order's keys and rounds are computed on every thread of the current
+/// oneTBB arena (the same permutation); then `keys`, if given, receives hilbert_keys_2d(xy).
 std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
-                                              std::uint64_t seed);
+                                              std::uint64_t seed, bool parallel = false,
+                                              std::vector<std::uint32_t>* keys = nullptr);
 
 /// The position of each point (n = xy.size()/2) along the Hilbert curve of a 2^16 x 2^16 grid
 /// over the points' bounding box: the keys by which the BRIO rounds of insertion_order_2d are
 /// sorted (the same keys for any permutation of the same points). With a `cell_shift`, the grid
 /// cells are first moved by that many cells along both axes, wrapping around: another curve,
-/// whose ranges have other borders (parallel_bowyer_watson_2d's second pass).
-std::vector<std::uint32_t> hilbert_keys_2d(std::span<const double> xy,
-                                           std::uint32_t cell_shift = 0);
+/// whose ranges have other borders (parallel_bowyer_watson_2d's second pass). With `parallel`,
+/// computed on every thread of the current oneTBB arena (the same keys).
+std::vector<std::uint32_t> hilbert_keys_2d(std::span<const double> xy, std::uint32_t cell_shift = 0,
+                                           bool parallel = false);
 
 /// Sorts `indices` in place along a Hilbert curve over the bounding box of their points.
 void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indices);

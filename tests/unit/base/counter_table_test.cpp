@@ -111,7 +111,13 @@ TEST(CounterTable, MacroNamesEachRowAfterItsMember) {
         exactmesh::counter("parallel_rounds", &D::parallel_rounds),
         exactmesh::counter("parallel_points", &D::parallel_points),
         exactmesh::counter("deferred_points", &D::deferred_points),
-        exactmesh::counter("sequential_tail", &D::sequential_tail)};
+        exactmesh::counter("sequential_tail", &D::sequential_tail),
+        exactmesh::counter("order_microseconds", &D::order_microseconds),
+        exactmesh::counter("keys_microseconds", &D::keys_microseconds),
+        exactmesh::counter("sequential_microseconds", &D::sequential_microseconds),
+        exactmesh::counter("partition_microseconds", &D::partition_microseconds),
+        exactmesh::counter("parallel_microseconds", &D::parallel_microseconds),
+        exactmesh::counter("result_microseconds", &D::result_microseconds)};
     static_assert(same_rows(tri::kDelaunay2CounterNames, kDelaunay2Before));
-    EXPECT_EQ(tri::kDelaunay2CounterNames.size(), 14u);
+    EXPECT_EQ(tri::kDelaunay2CounterNames.size(), 20u);
 }

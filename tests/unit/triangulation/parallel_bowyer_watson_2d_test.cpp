@@ -17,6 +17,7 @@
 #include "triangulation/checks/compare_triangulations_2d.hpp"
 #include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/delaunay/parallel_bowyer_watson_2d.hpp"
+#include "triangulation/mesh/spatial_sort.hpp"
 
 namespace tri = exactmesh::triangulation;
 namespace gen = exactmesh::generators;
@@ -117,6 +118,18 @@ TEST(Triangulation_ParallelBowyerWatson2d, RunsInParallelAndDefersFew) {
     EXPECT_GT(r.counters.parallel_points, n / 2);
     EXPECT_LT(r.counters.sequential_tail, n / 20);
     EXPECT_GE(r.counters.parallel_rounds, 2u);
+}
+
+TEST(Triangulation_ParallelBowyerWatson2d, ParallelOrderIsTheSequentialOne) {
+    // The construction's BRIO order and both curves' keys computed on every thread: the same
+    // as one thread's (more points than one chunk of keys, so that several threads take part).
+    const std::uint32_t n = std::max<std::uint32_t>(scaled(2e5), 70000);
+    const std::vector<double> xy = gen::generate_points_2d(gen::Distribution::Gaussian, n, 11);
+    EXPECT_EQ(tri::insertion_order_2d(xy, tri::InsertionOrder::Brio, 5, true),
+              tri::insertion_order_2d(xy, tri::InsertionOrder::Brio, 5, false));
+    EXPECT_EQ(tri::hilbert_keys_2d(xy, 25033, true), tri::hilbert_keys_2d(xy, 25033, false));
+    EXPECT_EQ(tri::insertion_order_2d(xy, tri::InsertionOrder::Random, 5, true),
+              tri::insertion_order_2d(xy, tri::InsertionOrder::Random, 5, false));
 }
 
 TEST(Triangulation_ParallelBowyerWatson2d, DeterministicForAThreadCount) {
