@@ -21,9 +21,9 @@
 #include <string>
 
 #include "generators/boundary/mesh_domain_2d.hpp"
-#include "generators/mesh_2d/frontal_delaunay_2d.hpp"
 #include "generators/stretched/advancing_layers_2d.hpp"
 #include "io/triangle_format.hpp"
+#include "tests/support/frontal_fill_2d.hpp"
 #include "triangulation/checks/check_conforming_2d.hpp"
 
 namespace {
@@ -32,13 +32,7 @@ namespace gen = exactmesh::generators;
 namespace io = exactmesh::io;
 namespace tri = exactmesh::triangulation;
 
-tri::Cdt2Result frontal_fill(const gen::MeshDomain2& domain, const gen::SizeFunction& size,
-                             std::uint64_t budget) {
-    gen::FrontalDelaunayOptions2 frontal;
-    frontal.size = size;
-    frontal.max_steiner_points = budget;
-    return std::move(gen::frontal_delaunay_2d(domain, frontal).mesh);
-}
+using exactmesh::testing::frontal_fill;
 
 TEST(Issue14, HostileWallsGiveConformingLayeredMeshes) {
     for (const int seed : {2005, 2012, 2026, 2032}) {

@@ -25,11 +25,11 @@
 
 #include "base/errors.hpp"
 #include "generators/boundary/sample_domains.hpp"
-#include "generators/mesh_2d/frontal_delaunay_2d.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/stretched/truncated_omesh_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
+#include "tests/support/frontal_fill_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
 #include "tests/support/test_scale.hpp"
 
@@ -57,13 +57,7 @@ Input square(double half) {
     return in;
 }
 
-tri::Cdt2Result frontal_fill(const gen::MeshDomain2& domain, const gen::SizeFunction& size,
-                             std::uint64_t budget) {
-    gen::FrontalDelaunayOptions2 frontal;
-    frontal.size = size;
-    frontal.max_steiner_points = budget;
-    return std::move(gen::frontal_delaunay_2d(domain, frontal).mesh);
-}
+using exactmesh::testing::frontal_fill;
 
 gen::AdvancingLayersResult2 run(const Input& in, double height, double growth, bool quads,
                                 std::uint32_t max_layers = 60, gen::SizeFunction size = {},

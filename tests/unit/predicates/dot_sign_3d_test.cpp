@@ -24,6 +24,20 @@ Sign reference_dot(const double* p, const double* a, const double* b) {
     return sgn(sum) > 0 ? Sign::Positive : sgn(sum) < 0 ? Sign::Negative : Sign::Zero;
 }
 
+/// dot_sign_3d on the points scaled by 2^600 and 2^-600 gives `expected` (case `i`).
+void expect_sign_at_extreme_scales(const double* p, const double* a, const double* b, Sign expected,
+                                   int i) {
+    for (const int e : {600, -600}) {
+        double ps[3], as[3], bs[3];
+        for (int k = 0; k < 3; ++k) {
+            ps[k] = std::ldexp(p[k], e);
+            as[k] = std::ldexp(a[k], e);
+            bs[k] = std::ldexp(b[k], e);
+        }
+        ASSERT_EQ(dot_sign_3d(ps, as, bs), expected) << i << " 2^" << e;
+    }
+}
+
 TEST(Predicates_DotSign3d, AgreesWithRationalsOnRandomAndNearSphericalPoints) {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-1, 1);
@@ -49,16 +63,8 @@ TEST(Predicates_DotSign3d, AgreesWithRationalsOnRandomAndNearSphericalPoints) {
         const Sign expected = reference_dot(p, a, b);
         zeros += expected == Sign::Zero;
         ASSERT_EQ(dot_sign_3d(p, a, b), expected) << i;
-        // Scaled by 2^600 and 2^-600: the same sign.
-        for (const int e : {600, -600}) {
-            double ps[3], as[3], bs[3];
-            for (int k = 0; k < 3; ++k) {
-                ps[k] = std::ldexp(p[k], e);
-                as[k] = std::ldexp(a[k], e);
-                bs[k] = std::ldexp(b[k], e);
-            }
-            ASSERT_EQ(dot_sign_3d(ps, as, bs), expected) << i << " 2^" << e;
-        }
+        expect_sign_at_extreme_scales(p, a, b, expected, i);
+        if (::testing::Test::HasFatalFailure()) return;
     }
     EXPECT_GT(zeros, 0);
 }
@@ -85,15 +91,8 @@ TEST(Predicates_DotSign3d, NearRightAnglesWithInexactDifferencesAgreeWithRationa
         const Sign expected = reference_dot(p, a, b);
         undecided += !dot_sign_3d_filter(p, a, b).has_value();
         ASSERT_EQ(dot_sign_3d(p, a, b), expected) << i;
-        for (const int e : {600, -600}) {
-            double ps[3], as[3], bs[3];
-            for (int k = 0; k < 3; ++k) {
-                ps[k] = std::ldexp(p[k], e);
-                as[k] = std::ldexp(a[k], e);
-                bs[k] = std::ldexp(b[k], e);
-            }
-            ASSERT_EQ(dot_sign_3d(ps, as, bs), expected) << i << " 2^" << e;
-        }
+        expect_sign_at_extreme_scales(p, a, b, expected, i);
+        if (::testing::Test::HasFatalFailure()) return;
     }
     EXPECT_GT(undecided, 100);  // the cases reach the exact stages
 }
