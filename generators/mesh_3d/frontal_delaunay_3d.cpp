@@ -485,7 +485,7 @@ FrontalDelaunay3Result frontal_delaunay_3d(const Plc3& plc, ConformingMesh3 reco
                          " points (domain volume / (h^3 / (6 sqrt 2)) / 5 per vertex); raise "
                          "the size or the budget");
     }
-    refuse_gaps_far_over_budget_3d(plc, budget, "frontal delaunay 3d");
+    if (options.estimate_gaps) refuse_gaps_far_over_budget_3d(plc, budget, "frontal delaunay 3d");
     Frontal frontal(plc, std::move(recovered), options, budget, exponent);
     frontal.result_counters.estimated_points =
         static_cast<std::uint64_t>(std::min(estimate, 1.8e19));

@@ -68,6 +68,10 @@ struct FrontalDelaunay3Options {
     /// (domain volume / regular tetrahedron volume / 5 per vertex) exceeds the budget fails at
     /// once with InputError naming both; the budget does not grow with the estimate.
     std::uint64_t max_steiner_points = 0;
+    /// Refuse a PLC whose narrow gaps ask for far more than the budget (gap_estimate_3d)
+    /// before meshing; octree_mesh_3d, which asked it of the input already, turns it off for
+    /// its band.
+    bool estimate_gaps = true;
 };
 
 struct FrontalDelaunay3Counters {
