@@ -105,7 +105,7 @@ double triangle_squared_distance(const std::array<Vec, 3>& t, const std::array<V
 }
 
 /// Cells a triangle may cover in the grid before it counts as large (kept out of the grid).
-constexpr std::int64_t kMaxCellsPerTriangle = 512;
+constexpr double kMaxCellsPerTriangle = 512;
 /// A triangle with a close feature is sampled at up to this many points per side (squared).
 constexpr int kMaxSamplesPerSide = 16;
 
@@ -137,9 +137,10 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
     // bound, so a refusal is never wrong).
     std::vector<double> sorted = longest;
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    const double cell = sorted[sorted.size() / 2];
-    // The floor: 2^-44 of the scaled coordinates' magnitude (in [1, 2)).
+    // The floor: 2^-44 of the scaled coordinates' magnitude (in [1, 2)). Cells are no finer
+    // (no feature below it counts), so cell indices stay below 2^46.
     const double floor = 0x1p-44;
+    const double cell = std::max(sorted[sorted.size() / 2], floor);
     auto box_of = [&](std::uint32_t t, double margin) {
         std::array<std::int64_t, 6> box{};
         for (int axis = 0; axis < 3; ++axis) {
@@ -153,26 +154,28 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
         }
         return box;
     };
+    // In doubles: a large triangle over tiny cells spans more than 2^63 of them.
     auto cells_in = [](const std::array<std::int64_t, 6>& box) {
-        return (box[3] - box[0] + 1) * (box[4] - box[1] + 1) * (box[5] - box[2] + 1);
+        return (static_cast<double>(box[3] - box[0]) + 1) *
+               (static_cast<double>(box[4] - box[1]) + 1) *
+               (static_cast<double>(box[5] - box[2]) + 1);
     };
     auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
-        // Scaled coordinates are below 2 and cells at least 2^-44 or so: 21 bits per axis.
+        // Scaled coordinates are below 2 and cells at least 2^-44: indices below 2^46, kept
+        // to 21 bits per axis (a wrap only adds candidates, never loses one).
         return (static_cast<std::uint64_t>(x & 0x1fffff) << 42) |
                (static_cast<std::uint64_t>(y & 0x1fffff) << 21) |
                static_cast<std::uint64_t>(z & 0x1fffff);
     };
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
     std::vector<bool> in_grid(count, false);
-    if (cell > 0) {
-        for (std::uint32_t t = 0; t < count; ++t) {
-            const auto box = box_of(t, 0);
-            if (cells_in(box) > kMaxCellsPerTriangle) continue;
-            in_grid[t] = true;
-            for (std::int64_t x = box[0]; x <= box[3]; ++x)
-                for (std::int64_t y = box[1]; y <= box[4]; ++y)
-                    for (std::int64_t z = box[2]; z <= box[5]; ++z) grid[key(x, y, z)].push_back(t);
-        }
+    for (std::uint32_t t = 0; t < count; ++t) {
+        const auto box = box_of(t, 0);
+        if (cells_in(box) > kMaxCellsPerTriangle) continue;
+        in_grid[t] = true;
+        for (std::int64_t x = box[0]; x <= box[3]; ++x)
+            for (std::int64_t y = box[1]; y <= box[4]; ++y)
+                for (std::int64_t z = box[2]; z <= box[5]; ++z) grid[key(x, y, z)].push_back(t);
     }
     std::vector<std::uint32_t> seen(count, 0);
     std::vector<std::uint32_t> near;
