@@ -1402,6 +1402,11 @@ tetmesh_bad_input() {
   run 0 tetmesh "$work/bent.poly" --max-volume 0.05 -o "$work/bent.ele" || return
   grep -Eq '^exactmesh: warning: .*bent\.poly: facet 1 \(line [0-9]+\) is not planar \(vertex [0-9]+ is off the plane of vertices .*\): split into the 2 triangles' "$work/err" ||
     fail "no split warning for bent.poly: $(cat "$work/err")"
+  # Rotated unit cubes (every facet an ulp off its plane): split and meshed, checked exactly.
+  local k
+  for k in 1 2 3 4 5; do
+    run 0 tetmesh "$data/rotated/cube_$k.poly" --max-volume 0.0005 -o "$work/rot.ele" || return
+  done
   # Lifted so far that the facet's projection crosses itself: refused, naming the facet.
   sed 's/^3 1 1 0$/3 -1 -1 0.5/' "$work/cube.poly" >"$work/twisted.poly"
   expect_error 2 'twisted\.poly: .*facet [0-9]+ \(line [0-9]+\)' tetmesh "$work/twisted.poly" -o "$work/x.ele"
