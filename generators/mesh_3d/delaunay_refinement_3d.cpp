@@ -11,6 +11,7 @@
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "generators/mesh_3d/gap_estimate_3d.hpp"
+#include "generators/mesh_3d/small_angle_rule_3d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/dot_sign_3d.hpp"
 #include "predicates/incircle.hpp"
@@ -34,79 +35,6 @@ namespace {
 /// How many times a bad tetrahedron's split may be deferred to subsegments or subfaces.
 constexpr std::uint32_t kMaxRetries = 64;
 
-/// The segments of a ConformingMesh3 seen from its vertices (the small-angle rule).
-class SegmentIncidence {
-  public:
-    /// `xyz`: the coordinates (mesh.mesh.xyz, or the refinement's working copy).
-    SegmentIncidence(const ConformingMesh3& mesh, const std::vector<double>& xyz)
-        : mesh_(mesh), xyz_(xyz) {
-        at_input_.resize(mesh.input_vertex_count);
-        for (std::uint32_t s = 0; 2 * s + 1 < mesh.segments.size(); ++s) {
-            at_input_[mesh.segments[2 * s]].push_back(s);
-            at_input_[mesh.segments[2 * s + 1]].push_back(s);
-        }
-    }
-
-    /// The segments v lies on (an input vertex: those ending at it).
-    std::vector<std::uint32_t> segments_of(VertIdx v) const {
-        if (v < mesh_.input_vertex_count) return at_input_[v];
-        if (mesh_.vertex_feature[v] == VertexFeature3::Segment) return {mesh_.feature_index[v]};
-        return {};
-    }
-
-    /// Whether u and w lie on two segments that meet at an input vertex (neither u nor w) at
-    /// less than 60 degrees, one of them at least a Steiner point (an edge between two input
-    /// vertices is the input's own, which refinement does not shorten).
-    bool small_angle_pair(VertIdx u, VertIdx w) const {
-        if (u < mesh_.input_vertex_count && w < mesh_.input_vertex_count) return false;
-        for (const std::uint32_t s1 : segments_of(u)) {
-            for (const std::uint32_t s2 : segments_of(w)) {
-                if (s1 == s2) continue;
-                for (unsigned i = 0; i < 2; ++i) {
-                    const VertIdx apex = mesh_.segments[2 * s1 + i];
-                    const VertIdx far1 = mesh_.segments[2 * s1 + 1 - i];
-                    VertIdx far2 = kNone;
-                    if (mesh_.segments[2 * s2] == apex) far2 = mesh_.segments[2 * s2 + 1];
-                    if (mesh_.segments[2 * s2 + 1] == apex) far2 = mesh_.segments[2 * s2];
-                    if (far2 == kNone || apex == u || apex == w) continue;
-                    if (predicates::compare_angle_60_3d(point(apex), point(far1), point(far2)) ==
-                        Sign::Positive)
-                        return true;
-                }
-            }
-        }
-        return false;
-    }
-
-    /// The small-input-angle rule for tetrahedron corners p (4 vertex indices): a shortest edge
-    /// (exact) joins a small_angle_pair.
-    bool spared(const std::array<VertIdx, 4>& p) const {
-        const SegmentIncidence& m = *this;
-        unsigned shortest = 0;
-        for (unsigned e = 1; e < 6; ++e) {
-            if (predicates::compare_lengths_3d(m.point(p[kEdges[e][0]]), m.point(p[kEdges[e][1]]),
-                                               m.point(p[kEdges[shortest][0]]),
-                                               m.point(p[kEdges[shortest][1]])) == Sign::Negative)
-                shortest = e;
-        }
-        for (unsigned e = 0; e < 6; ++e) {
-            if (e != shortest &&
-                predicates::compare_lengths_3d(m.point(p[kEdges[e][0]]), m.point(p[kEdges[e][1]]),
-                                               m.point(p[kEdges[shortest][0]]),
-                                               m.point(p[kEdges[shortest][1]])) != Sign::Zero)
-                continue;
-            if (small_angle_pair(p[kEdges[e][0]], p[kEdges[e][1]])) return true;
-        }
-        return false;
-    }
-
-  private:
-    const ConformingMesh3& mesh_;
-    const std::vector<double>& xyz_;
-    std::vector<std::vector<std::uint32_t>> at_input_;
-    const double* point(VertIdx v) const { return xyz_.data() + 3 * std::size_t{v}; }
-};
-
 class Refinement final : public RestrictedDelaunay3 {
   public:
     Refinement(const Plc3& plc, ConformingMesh3 recovered,
@@ -118,7 +46,7 @@ class Refinement final : public RestrictedDelaunay3 {
 
   private:
     DelaunayRefinement3Options options_;
-    SegmentIncidence incidence_{out_, m_.xyz};
+    SmallInputAngleRule3 small_angles_{out_, m_.xyz};
     struct QueuedTet {
         TetIdx t;
         std::array<VertIdx, 4> corners;
@@ -180,7 +108,7 @@ class Refinement final : public RestrictedDelaunay3 {
             }
         }
         const Split none;
-        if (!build_cavity(center.data(), {s}, none)) {
+        if (!build_cavity(center.data(), {s}, none, t)) {
             // The centre on a face of its tetrahedron that cannot be crossed: it encroaches that
             // subface (or one of its subsegments), split instead.
             cavity_ = {s};
@@ -221,7 +149,7 @@ DelaunayRefinement3Result Refinement::run() {
         tet_queue_.pop_front();
         const auto& corners = next.corners;
         if (m_.is_dead(next.t) || m_.tet(next.t) != corners || !is_bad(next.t, corners)) continue;
-        if (!over_volume(next.t, corners) && incidence_.spared(corners)) {
+        if (!over_volume(next.t, corners) && small_angles_.spares(corners)) {
             ++counters_.small_angle_tets;
             continue;
         }
@@ -387,7 +315,7 @@ bool tet_finer_than_doubles_resolve_3d(const double* const (&p)[4]) {
 RefinementQuality3 check_refinement_quality_3d(const ConformingMesh3& mesh,
                                                const DelaunayRefinement3Options& options) {
     RefinementQuality3 report;
-    const SegmentIncidence incidence(mesh, mesh.mesh.xyz);
+    const SmallInputAngleRule3 small_angles(mesh, mesh.mesh.xyz);
     const auto& m = mesh.mesh;
     for (TetIdx t = 0; t < m.tet_count(); ++t) {
         const std::array<VertIdx, 4> c{m.tets[4 * std::size_t{t}], m.tets[4 * std::size_t{t} + 1],
@@ -400,7 +328,7 @@ RefinementQuality3 check_refinement_quality_3d(const ConformingMesh3& mesh,
         if (predicates::compare_radius_edge_3d(a, b, d, e, options.radius_edge_bound) !=
             Sign::Positive)
             continue;
-        if (incidence.spared(c)) {
+        if (small_angles.spares(c)) {
             ++report.small_angle;
         } else {
             const double* const p[4] = {a, b, d, e};

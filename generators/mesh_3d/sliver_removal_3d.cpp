@@ -13,6 +13,7 @@
 
 #include "base/errors.hpp"
 #include "generators/mesh_3d/delaunay_refinement_3d.hpp"
+#include "generators/mesh_3d/small_angle_rule_3d.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/tet_quality_3d.hpp"
@@ -56,6 +57,8 @@ struct Work {
     std::vector<double> slot_attributes;   ///< per slot; empty without regions
     std::vector<double> slot_max_volumes;  ///< per slot; empty when no region has a bound
     const SliverRemoval3Options* options = nullptr;
+    /// refinement's small-input-angle rule on the mesh's segments (over_bounds)
+    const SmallInputAngleRule3* small_angles = nullptr;
     double threshold_radians = 0;
 
     /// The volume bound of the tetrahedron in slot t, or of one made from it by a swap (the
@@ -65,19 +68,21 @@ struct Work {
                                    t < slot_max_volumes.size() ? slot_max_volumes[t] : 0.0);
     }
 
-    /// Whether corners p exceed B or the volume bound `max_volume` (> 0; else none), exactly.
-    /// 0 within the bounds; 1 over the radius-edge bound with an edge finer than doubles
-    /// resolve (refinement spares those: tet_finer_than_doubles_resolve_3d); kOverBound
-    /// otherwise. Sums compared before and after a change keep the count over the bounds and
-    /// never trade a spared tetrahedron for one refinement would have split (the command's
-    /// exact check then called that a bug).
-    unsigned over_bounds(const TetCorners& p, double max_volume) const {
+    /// Whether the tetrahedron with vertices `v` at corners p exceeds B or the volume bound
+    /// `max_volume` (> 0; else none), exactly. 0 within the bounds; 1 over the radius-edge
+    /// bound where refinement spares it (the small-input-angle rule, or an edge finer than
+    /// doubles resolve: tet_finer_than_doubles_resolve_3d); kOverBound otherwise. Sums compared
+    /// before and after a change keep the count over the bounds and never trade a spared
+    /// tetrahedron for one refinement would have split (the command's exact check,
+    /// check_refinement_quality_3d, then called that a bug: tests/data/rotated/cube_11.poly).
+    unsigned over_bounds(const Tet& v, const TetCorners& p, double max_volume) const {
         if (max_volume > 0 &&
             predicates::compare_tet_volume_3d(p[0], p[1], p[2], p[3], max_volume) == Sign::Positive)
             return kOverBound;
         if (predicates::compare_radius_edge_3d(p[0], p[1], p[2], p[3],
                                                options->radius_edge_bound) != Sign::Positive)
             return 0;
+        if (small_angles != nullptr && small_angles->spares(v, p)) return 1;
         const double* const corners[4] = {p[0], p[1], p[2], p[3]};
         return tet_finer_than_doubles_resolve_3d(corners) ? 1 : kOverBound;
     }
@@ -177,11 +182,13 @@ std::uint64_t swap_pass(Work& work, const tri::SwapLocks3& locks, SliverRemoval3
         constraints.accept = [&work](const tri::FlipPlan3& plan) {
             unsigned before = 0, after = 0;
             for (unsigned i = 0; i < plan.old_count; ++i)
-                before += work.over_bounds(corners_of(work.mesh, work.mesh.tet(plan.old[i])),
+                before += work.over_bounds(work.mesh.tet(plan.old[i]),
+                                           corners_of(work.mesh, work.mesh.tet(plan.old[i])),
                                            work.volume_bound(plan.old[i]));
             const double made_bound = work.volume_bound(plan.old[0]);
             for (unsigned i = 0; i < plan.made_count; ++i)
-                after += work.over_bounds(corners_of(work.mesh, plan.made[i]), made_bound);
+                after += work.over_bounds(plan.made[i], corners_of(work.mesh, plan.made[i]),
+                                          made_bound);
             return after <= before;
         };
     }
@@ -431,9 +438,10 @@ unsigned star_over_bounds(const Work& work, const std::vector<TetIdx>& star, Ver
                           const double* at) {
     unsigned over = 0;
     for (const TetIdx t : star) {
-        TetCorners p = corners_of(work.mesh, work.mesh.tet(t));
+        const Tet vertices = work.mesh.tet(t);
+        TetCorners p = corners_of(work.mesh, vertices);
         p[work.mesh.slot_of(t, v)] = at;
-        over += work.over_bounds(p, work.volume_bound(t));
+        over += work.over_bounds(vertices, p, work.volume_bound(t));
     }
     return over;
 }
@@ -541,6 +549,8 @@ SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
     work.options = &options;
     work.threshold_radians = static_cast<double>(options.threshold_degrees) * kPi / 180;
     work.mesh = tri::make_tet_mesh_3d(conforming.mesh);
+    const SmallInputAngleRule3 small_angles(conforming, work.mesh.xyz);
+    work.small_angles = &small_angles;
     work.slot_attributes = conforming.tet_attributes;
     work.slot_max_volumes = conforming.tet_max_volume;
     SliverRemoval3Result result;

@@ -1407,6 +1407,10 @@ tetmesh_bad_input() {
   for k in 1 2 3 4 5; do
     run 0 tetmesh "$data/rotated/cube_$k.poly" --max-volume 0.0005 -o "$work/rot.ele" || return
   done
+  # A circumcentre whose cavity could not keep its tetrahedron went in anyway, leaving the
+  # tetrahedron over the bound: an internal error (exit 3). Now a rejected point, with a warning.
+  run 0 tetmesh "$data/rotated/cube_11.poly" --radius-edge 2 -o "$work/rot.ele" || return
+  grep -q 'splitting points were rejected' "$work/err" || fail "no rejection warning for cube_11: $(cat "$work/err")"
   # Lifted so far that the facet's projection crosses itself: refused, naming the facet.
   sed 's/^3 1 1 0$/3 -1 -1 0.5/' "$work/cube.poly" >"$work/twisted.poly"
   expect_error 2 'twisted\.poly: .*facet [0-9]+ \(line [0-9]+\)' tetmesh "$work/twisted.poly" -o "$work/x.ele"

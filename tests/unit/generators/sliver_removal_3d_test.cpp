@@ -94,6 +94,8 @@ Improved improve_and_check(const Plc3& plc, const std::string& what,
     const RefinementQuality3 q0 = check_refinement_quality_3d(before, refinement);
     const RefinementQuality3 q1 = check_refinement_quality_3d(after, refinement);
     EXPECT_LE(q1.over_bound + q1.small_angle, q0.over_bound + q0.small_angle) << what;
+    // Nor is a tetrahedron refinement spares (small input angles) traded for one it would split.
+    EXPECT_LE(q1.over_bound, q0.over_bound) << what;
     EXPECT_LE(q1.over_volume, q0.over_volume) << what;
     // Strictly better smallest dihedral angle, exactly.
     EXPECT_EQ(predicates::compare_dihedral(smallest_dihedral_of(after.mesh),
