@@ -322,10 +322,12 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
         const gen::MeshDomain2 domain(pslg, mesh_options.cdt);
         const std::string file =
             arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
-        if (generator.needs_size && !mesh_options.size.bounded())
-            mesh_options.size = gen::graded_size_from_boundary(domain);
-        gen::MeshRun2 generated = locating_mark_points(
-            poly, file, [&] { return generator.run_on_domain(domain, mesh_options); });
+        gen::MeshRun2 generated = naming_the_input(file, [&] {
+            if (generator.needs_size && !mesh_options.size.bounded())
+                mesh_options.size = gen::graded_size_from_boundary(domain);
+            return locating_mark_points(
+                poly, file, [&] { return generator.run_on_domain(domain, mesh_options); });
+        });
         print_warnings(generated.mesh.warnings);
         initial = std::move(generated.mesh);
     }

@@ -67,8 +67,10 @@ void run_cdt(const CdtArguments& arguments) {
     const tri::Pslg pslg{poly.vertices.xy, poly.segments, poly.holes, poly.regions};
 
     const auto [result, stats, seconds] = timed_construction([&] {
-        return locating_mark_points(poly, arguments.input,
-                                    [&] { return tri::constrained_delaunay_2d(pslg, options); });
+        return naming_the_input(arguments.input, [&] {
+            return locating_mark_points(
+                poly, arguments.input, [&] { return tri::constrained_delaunay_2d(pslg, options); });
+        });
     });
 
     print_warnings(result.warnings);

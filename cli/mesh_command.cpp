@@ -325,31 +325,33 @@ void run_mesh(const MeshArguments& arguments) {
         arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;
     gen::MetricConditioningCounters2 conditioning_counters;
     const auto [result, stats, seconds] = timed_construction([&] {
-        // A generator that needs a size and was given none takes the input's own spacing at its
-        // vertices, graded away from them (timed: it is part of the construction).
-        if (generator.needs_size && !size.bounded()) {
-            size = locating_mark_points(poly, file,
-                                        [&] { return gen::graded_size_from_boundary(domain); });
-            options.size = size;
-        }
-        if (conditioning.active()) {
-            // Smoothing and gradation act on a background mesh: a metric file's own, else a
-            // first mesh of the domain made with the raw field (BAMG's way; timed with the
-            // construction, as it is part of it).
-            gen::ConditionedMetricField2 conditioned;
-            if (metric->background() != nullptr) {
-                conditioned = gen::condition_metric_field_2d(*metric, conditioning);
-            } else {
-                const gen::MeshRun2 first = locating_mark_points(
-                    poly, file, [&] { return generator.run_on_domain(domain, options); });
-                conditioned = gen::condition_metric_field_2d(
-                    *metric, first.mesh.mesh.xy, first.mesh.mesh.triangles, conditioning);
+        return naming_the_input(file, [&] {
+            // A generator that needs a size and was given none takes the input's own spacing at its
+            // vertices, graded away from them (timed: it is part of the construction).
+            if (generator.needs_size && !size.bounded()) {
+                size = locating_mark_points(poly, file,
+                                            [&] { return gen::graded_size_from_boundary(domain); });
+                options.size = size;
             }
-            conditioning_counters = conditioned.counters;
-            options.metric = std::move(conditioned.field);
-        }
-        return locating_mark_points(poly, file,
-                                    [&] { return generator.run_on_domain(domain, options); });
+            if (conditioning.active()) {
+                // Smoothing and gradation act on a background mesh: a metric file's own, else a
+                // first mesh of the domain made with the raw field (BAMG's way; timed with the
+                // construction, as it is part of it).
+                gen::ConditionedMetricField2 conditioned;
+                if (metric->background() != nullptr) {
+                    conditioned = gen::condition_metric_field_2d(*metric, conditioning);
+                } else {
+                    const gen::MeshRun2 first = locating_mark_points(
+                        poly, file, [&] { return generator.run_on_domain(domain, options); });
+                    conditioned = gen::condition_metric_field_2d(
+                        *metric, first.mesh.mesh.xy, first.mesh.mesh.triangles, conditioning);
+                }
+                conditioning_counters = conditioned.counters;
+                options.metric = std::move(conditioned.field);
+            }
+            return locating_mark_points(poly, file,
+                                        [&] { return generator.run_on_domain(domain, options); });
+        });
     });
 
     // Optional Laplacian smoothing, timed and reported apart from the generator.

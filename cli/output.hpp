@@ -10,9 +10,11 @@
 #include <initializer_list>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "cli/options.hpp"
 #include "io/point_set_2d.hpp"
 #include "io/svg_picture.hpp"
@@ -68,6 +70,26 @@ auto locating_mark_points(const io::PolyFile& poly, const std::string& file, Wor
         return work();
     } catch (const triangulation::AmbiguousMarkPoint& error) {
         rethrow_at_line(error, poly, file);
+    }
+}
+
+/// `work()` (a command's construction from its input `file`), with an InputError or
+/// GeometryError whose message does not name `file` rethrown with "file: " in front: a
+/// generator's refusal ("segment 4: its piece ... is too short to split", a Steiner budget)
+/// then names the file it is about, as the readers' errors do. The exception's class is kept
+/// as the command's exit status sees it (InputError or GeometryError: exit 2).
+template <class Work>
+auto naming_the_input(const std::string& file, Work&& work) {
+    try {
+        return work();
+    } catch (const InputError& error) {
+        if (file.empty() || std::string_view(error.what()).find(file) != std::string_view::npos)
+            throw;
+        throw InputError(file + ": " + error.what());
+    } catch (const GeometryError& error) {
+        if (file.empty() || std::string_view(error.what()).find(file) != std::string_view::npos)
+            throw;
+        throw GeometryError(file + ": " + error.what());
     }
 }
 

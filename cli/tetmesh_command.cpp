@@ -207,37 +207,39 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         double sliver_seconds = 0;  ///< sliver removal's share of construct_seconds
     };
     auto [result, stats, seconds] = timed_construction([&] {
-        Meshed meshed{tri::boundary_recovery_3d(plc, options), {}, {}, {}, {}, {}, {}, 0};
-        if (frontal) {
-            gen::FrontalDelaunay3Result meshed_frontal =
-                gen::frontal_delaunay_3d(plc, std::move(meshed.recovery.mesh), frontal_options);
-            meshed.recovery.mesh = std::move(meshed_frontal.mesh);
-            meshed.frontal = meshed_frontal.counters;
-        }
-        if (octree) {
-            gen::OctreeMesh3Result meshed_octree =
-                gen::octree_mesh_3d(plc, meshed.recovery.mesh, octree_options);
-            meshed.recovery.mesh = std::move(meshed_octree.mesh);
-            meshed.octree = meshed_octree.counters;
-            meshed.octree_band_recovery = meshed_octree.band_recovery;
-            meshed.frontal = meshed_octree.band_frontal;
-        }
-        if (refine) {
-            gen::DelaunayRefinement3Result refined =
-                gen::delaunay_refinement_3d(plc, std::move(meshed.recovery.mesh), refinement);
-            meshed.recovery.mesh = std::move(refined.mesh);
-            meshed.refinement = refined.counters;
-        }
-        if (remove_slivers) {
-            if (arguments.quality) meshed.before_sliver_removal = meshed.recovery.mesh.mesh;
-            const auto start = std::chrono::steady_clock::now();
-            gen::SliverRemoval3Result improved =
-                gen::sliver_removal_3d(std::move(meshed.recovery.mesh), sliver_options);
-            meshed.sliver_seconds = seconds_since(start);
-            meshed.recovery.mesh = std::move(improved.mesh);
-            meshed.slivers = improved.counters;
-        }
-        return meshed;
+        return naming_the_input(source, [&] {
+            Meshed meshed{tri::boundary_recovery_3d(plc, options), {}, {}, {}, {}, {}, {}, 0};
+            if (frontal) {
+                gen::FrontalDelaunay3Result meshed_frontal =
+                    gen::frontal_delaunay_3d(plc, std::move(meshed.recovery.mesh), frontal_options);
+                meshed.recovery.mesh = std::move(meshed_frontal.mesh);
+                meshed.frontal = meshed_frontal.counters;
+            }
+            if (octree) {
+                gen::OctreeMesh3Result meshed_octree =
+                    gen::octree_mesh_3d(plc, meshed.recovery.mesh, octree_options);
+                meshed.recovery.mesh = std::move(meshed_octree.mesh);
+                meshed.octree = meshed_octree.counters;
+                meshed.octree_band_recovery = meshed_octree.band_recovery;
+                meshed.frontal = meshed_octree.band_frontal;
+            }
+            if (refine) {
+                gen::DelaunayRefinement3Result refined =
+                    gen::delaunay_refinement_3d(plc, std::move(meshed.recovery.mesh), refinement);
+                meshed.recovery.mesh = std::move(refined.mesh);
+                meshed.refinement = refined.counters;
+            }
+            if (remove_slivers) {
+                if (arguments.quality) meshed.before_sliver_removal = meshed.recovery.mesh.mesh;
+                const auto start = std::chrono::steady_clock::now();
+                gen::SliverRemoval3Result improved =
+                    gen::sliver_removal_3d(std::move(meshed.recovery.mesh), sliver_options);
+                meshed.sliver_seconds = seconds_since(start);
+                meshed.recovery.mesh = std::move(improved.mesh);
+                meshed.slivers = improved.counters;
+            }
+            return meshed;
+        });
     });
     const tri::ConformingMesh3& conforming = result.recovery.mesh;
 

@@ -537,6 +537,13 @@ hostile_messages() {
   grep -q $'\x1b' "$work/err" && fail "an escape byte reached the terminal"
   mkdir "$work/dir.size"
   expect_error 2 'dir\.size: is a directory' mesh --domain key -o "$work/x.ele" --size "$work/dir.size"
+  # A generator's refusal names the input file: a vertex 1e-308 from a corner, joined to it by a
+  # segment (refinement cannot follow it in doubles), and a tetrahedron whose facets meet at 45
+  # degrees with a Steiner budget too small for it.
+  printf '5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 1e-308 1e-308\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 1 5\n0\n' >"$work/tiny.poly"
+  expect_error 2 'tiny\.poly: segment [0-9]+: its piece .* is too short to split: its split point rounds to one of its ends' mesh "$work/tiny.poly" -o "$work/x.ele"
+  printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0.3 0.3 0.3\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' >"$work/wedge.off"
+  expect_error 2 'wedge\.off: delaunay refinement 3d: Steiner point budget of 20 exceeded' tetmesh "$work/wedge.off" --max-volume 0.0001 --max-steiner 20 -o "$work/x.ele"
 }
 
 # canonical_tets <file.ele>: each tetrahedron's vertices sorted, the lines sorted: equal for
