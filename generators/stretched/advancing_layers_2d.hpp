@@ -105,8 +105,10 @@ struct AdvancingLayersCounters2 {
     std::uint64_t stopped_collision = 0;
     std::uint64_t stopped_neighbour = 0;  ///< a neighbour stopped more than two layers below
     std::uint64_t stopped_max_layers = 0;
-    std::uint64_t stopped_unresolvable =
-        0;  ///< all, when the first layer is under 2^-44 of the walls' coordinates
+    /// Advancing layers: all stacks, when the first layer is under 2^-44 of the walls'
+    /// coordinates. Truncated O-mesh: the columns cut because a layer point lay within rounding
+    /// of the front (omesh_removed_unresolvable).
+    std::uint64_t stopped_unresolvable = 0;
     std::uint64_t crossing_tests = 0;   ///< segment pairs and point-in-cell tests decided exactly
     std::uint64_t layer_quads = 0;      ///< layer cells (quadrilaterals, split or kept)
     std::uint64_t layer_triangles = 0;  ///< triangles of the layers (steps, fans, split quads)
@@ -124,6 +126,10 @@ struct AdvancingLayersCounters2 {
                                               ///< the boundary (gap under the local spacing)
     std::uint64_t omesh_removed_fold = 0;  ///< cells removed where normal lines fold (non-convex)
     std::uint64_t omesh_removed_step = 0;  ///< cells removed to keep steps of at most 2 layers
+    /// Cells removed where a point of the front (or a vertex) lay within rounding of a front
+    /// edge (or boundary piece) strictly between its ends, which the fill's constrained
+    /// triangulation would bend through it (first heights near 2^-40 of the coordinates).
+    std::uint64_t omesh_removed_unresolvable = 0;
 };
 
 inline constexpr std::array kAdvancingLayersCounterNames = EM_COUNTER_TABLE(
@@ -132,7 +138,7 @@ inline constexpr std::array kAdvancingLayersCounterNames = EM_COUNTER_TABLE(
     stopped_max_layers, stopped_unresolvable, crossing_tests, layer_quads, layer_triangles,
     fill_triangles, fill_min_max_swaps, quads, triangles, max_wall_aspect_ratio, omesh_rings,
     omesh_cells, omesh_min_ring_layers, omesh_max_ring_layers, omesh_removed_overlap,
-    omesh_removed_fold, omesh_removed_step);
+    omesh_removed_fold, omesh_removed_step, omesh_removed_unresolvable);
 static_assert(counter_table_complete(kAdvancingLayersCounterNames));
 
 struct AdvancingLayersResult2 {

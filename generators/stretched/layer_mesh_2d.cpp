@@ -205,7 +205,17 @@ void finish_layered_mesh_2d(const MeshDomain2& domain, const AdvancingLayersOpti
     // Every stack stopped before its first layer: the walls are meshed by the fill alone, and
     // the user asked for layers (given with the mesh's warnings below).
     std::string no_layer_warning;
-    if (layered && counters.stacks > 0 && counters.layer_points == 0) {
+    if (layered && counters.stacks > 0 && counters.layer_points == 0 &&
+        options.layers.method == LayerMethod2::TruncatedOMesh) {
+        no_layer_warning =
+            ("truncated O-mesh: no layer was built (of " + std::to_string(counters.stacks) +
+             " columns, " + std::to_string(counters.stopped_unresolvable) +
+             " cut where a layer point lay within rounding of the front, " +
+             std::to_string(counters.omesh_removed_fold + counters.omesh_removed_overlap +
+                            counters.omesh_removed_step) +
+             " cells removed at folds, overlaps and steps; first height " +
+             format_number(options.layers.first_height) + ")");
+    } else if (layered && counters.stacks > 0 && counters.layer_points == 0) {
         no_layer_warning =
             ("advancing layers: no layer was built (of " + std::to_string(counters.stacks) +
              " stacks, " + std::to_string(counters.stopped_unresolvable) +

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The truncated structured O-mesh (see truncated_omesh_2d.hpp): the rings and their points
-// (OMeshBuilder::make_rings), the cuts (cut_folds, cut_overlaps, cut_steps), then the region
-// for the shared fill and merge (region).
+// (OMeshBuilder::make_rings), the cuts (cut_folds, cut_overlaps, cut_steps, cut_unresolvable),
+// then the region for the shared fill and merge (region).
 #include "generators/stretched/truncated_omesh_2d.hpp"
 
 #include <algorithm>
@@ -10,13 +10,16 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "generators/stretched/layer_mesh_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/orient2d.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
 
 namespace exactmesh::generators {
 
@@ -51,6 +54,13 @@ struct Ring {
 /// A cell or a guard: four corners, counter-clockwise, with their ids.
 using Quad = std::array<VertIdx, 4>;
 
+/// A point of a ring by its normal line (stack) and layer (0: the wall vertex).
+using LinePoint = std::array<std::uint32_t, 2>;
+
+std::uint64_t edge_key(VertIdx a, VertIdx b) {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+}
+
 class OMeshBuilder {
   public:
     OMeshBuilder(const tri::Cdt2Result& domain, const LayerParameters2& parameters,
@@ -63,9 +73,11 @@ class OMeshBuilder {
     void build() {
         make_rings();
         if (cells_ == 0) return;
+        grid_frame();
         cut_folds();
         cut_overlaps();
         cut_steps();
+        cut_unresolvable();
     }
 
     /// The points used, the cells kept, the fronts and the stacks' layers.
@@ -90,15 +102,10 @@ class OMeshBuilder {
             std::vector<VertIdx> front;
             for (std::uint32_t i = 0; i < n; ++i) {
                 const std::uint32_t s = ring.first_stack + i;
-                const std::uint32_t left = height_[ring.first_stack + (i + n - 1) % n];
-                const std::uint32_t right = height_[s];
-                r.stack_layers.emplace_back(id(s, 0), std::max(left, right));
-                // Along the normal line from the left column's top to the right column's.
-                for (std::uint32_t k = left;; k = left < right ? k + 1 : k - 1) {
-                    front.push_back(id(s, k));
-                    if (k == right) break;
-                }
+                r.stack_layers.emplace_back(id(s, 0),
+                                            std::max(height_[previous_stack(s)], height_[s]));
             }
+            for (const auto& [s, k] : front_of(ring)) front.push_back(id(s, k));
             for (std::uint32_t i = 0; i < n; ++i) {
                 const std::uint32_t s = ring.first_stack + i, t = ring.first_stack + (i + 1) % n;
                 for (std::uint32_t k = 0; k < height_[s]; ++k) {
@@ -121,6 +128,33 @@ class OMeshBuilder {
     std::uint32_t next_stack(std::uint32_t s) const {
         const Ring& ring = rings_[ring_of_[s]];
         return s + 1 == ring.first_stack + ring.size() ? ring.first_stack : s + 1;
+    }
+    std::uint32_t previous_stack(std::uint32_t s) const {
+        const Ring& ring = rings_[ring_of_[s]];
+        return s == ring.first_stack ? ring.first_stack + ring.size() - 1 : s - 1;
+    }
+    /// The ring's front: along each normal line from the top of the column on its left to the
+    /// top of the column on its right, then to the next line along the right column's top.
+    std::vector<LinePoint> front_of(const Ring& ring) const {
+        std::vector<LinePoint> front;
+        for (std::uint32_t s = ring.first_stack; s < ring.first_stack + ring.size(); ++s) {
+            const std::uint32_t left = height_[previous_stack(s)], right = height_[s];
+            for (std::uint32_t k = left;; k = left < right ? k + 1 : k - 1) {
+                front.push_back({s, k});
+                if (k == right) break;
+            }
+        }
+        return front;
+    }
+    /// The layer of point v (0 for the domain's vertices).
+    std::uint32_t layer_of(VertIdx v) const { return v < base_ ? 0 : point_layer_[v - base_]; }
+    /// Whether point v is in the fill's domain: a domain vertex, or a layer point of a kept
+    /// cell (guards never are).
+    bool in_use(VertIdx v) const {
+        if (v < base_) return true;
+        const std::uint32_t s = point_stack_[v - base_];
+        return s != kNone &&
+               point_layer_[v - base_] <= std::max(height_[previous_stack(s)], height_[s]);
     }
     VertIdx point_id(std::uint32_t s, std::uint32_t k) const {
         const Ring& ring = rings_[ring_of_[s]];
@@ -194,6 +228,8 @@ class OMeshBuilder {
                 for (std::uint32_t k = 1; k <= K; ++k) {
                     candidates_.push_back(std::fma(heights[k], d[0], p[0]));
                     candidates_.push_back(std::fma(heights[k], d[1], p[1]));
+                    point_stack_.push_back(ring.first_stack + i);
+                    point_layer_.push_back(k);
                 }
                 height_[ring.first_stack + i] = K;
             }
@@ -212,6 +248,8 @@ class OMeshBuilder {
                         const std::array<double, 2>& d = ring.wall.normals[s - ring.first_stack];
                         candidates_.push_back(std::fma(reach, d[0], p[0]));
                         candidates_.push_back(std::fma(reach, d[1], p[1]));
+                        point_stack_.push_back(kNone);
+                        point_layer_.push_back(0);
                     }
                 }
             }
@@ -328,25 +366,32 @@ class OMeshBuilder {
         return i == j || next_stack(i) == j || next_stack(j) == i;
     }
 
-    /// Removes every kept cell whose guard or self meets the boundary, and
-    /// the coarser of every two kept cells (different rings, or columns not side by side) where
-    /// the guard of one or the cell meets the other.
-    void cut_overlaps() {
-        // The bucket size: the median wall spacing, at most 2048 buckets across the domain.
+    /// The bucket grids' origin and bucket size: the median wall spacing, at most 2048 buckets
+    /// across the domain.
+    void grid_frame() {
         std::vector<double> spacings;
         for (const Ring& ring : rings_)
             spacings.insert(spacings.end(), ring.wall.spacing.begin(), ring.wall.spacing.end());
         std::nth_element(spacings.begin(), spacings.begin() + spacings.size() / 2, spacings.end());
         const std::vector<double>& xy = domain_.mesh.xy;
-        double x0 = xy[0], y0 = xy[1], extent = 0;
+        double extent = 0;
+        x0_ = xy[0];
+        y0_ = xy[1];
         for (std::size_t v = 0; v < xy.size() / 2; ++v) {
-            x0 = std::min(x0, xy[2 * v]);
-            y0 = std::min(y0, xy[2 * v + 1]);
+            x0_ = std::min(x0_, xy[2 * v]);
+            y0_ = std::min(y0_, xy[2 * v + 1]);
         }
         for (std::size_t v = 0; v < xy.size() / 2; ++v)
-            extent = std::max({extent, xy[2 * v] - x0, xy[2 * v + 1] - y0});
-        double bucket = std::max(spacings[spacings.size() / 2], extent / 2048);
-        if (!(bucket > 0)) bucket = 1;
+            extent = std::max({extent, xy[2 * v] - x0_, xy[2 * v + 1] - y0_});
+        bucket_ = std::max(spacings[spacings.size() / 2], extent / 2048);
+        if (!(bucket_ > 0)) bucket_ = 1;
+    }
+
+    /// Removes every kept cell whose guard or self meets the boundary, and
+    /// the coarser of every two kept cells (different rings, or columns not side by side) where
+    /// the guard of one or the cell meets the other.
+    void cut_overlaps() {
+        const double x0 = x0_, y0 = y0_, bucket = bucket_;
         piece_grid_ = std::make_unique<BucketGrid>(x0, y0, bucket);
         for (std::uint32_t p = 0; p < domain_.pieces.size() / 2; ++p)
             piece_grid_->insert(p, point(domain_.pieces[2 * p]), point(domain_.pieces[2 * p + 1]));
@@ -423,14 +468,113 @@ class OMeshBuilder {
         }
     }
 
+    /// Whether the fill's constrained triangulation may bend segment a - b through vertex w (the
+    /// chain rule bend_candidate of triangulation/constrained/cdt_conforming_2d.cpp, for a
+    /// segment that is its own piece): w within rounding of the segment
+    /// (predicates::within_rounding_of_segment, 2^-40 of w's largest coordinate) and strictly
+    /// between a and b along it. Exact.
+    bool bends(VertIdx w, VertIdx a, VertIdx b) {
+        ++counters_.crossing_tests;
+        const double *pa = point(a), *pb = point(b), *pw = point(w);
+        if (!pred::within_rounding_of_segment(pw, pa, pb)) return false;
+        const pred::Sign from_a = pred::direction_dot_sign(pa, pw, pa, pb);
+        return from_a != pred::Sign::Zero && from_a == pred::direction_dot_sign(pw, pb, pa, pb);
+    }
+
+    /// Lowers columns until no vertex of the fill's domain (the domain's vertices and the layer
+    /// points in use) lies within rounding of a segment of the fill (the fronts' edges and the
+    /// domain's pieces off the walls) strictly between its ends (bends): the fill's constrained
+    /// triangulation would bend that segment through the vertex and cut the front short. With a
+    /// first height h of about 2^-40 of the coordinates or less (1e-12 beside x = 0.99 on the
+    /// NACA 0012: the allowance is 9.1e-13), the first layer point of a normal line that tilts
+    /// over the wall piece beside it, where the front runs along that piece (its column cut to
+    /// the wall at a sharp trailing edge), lies within rounding of the piece. Of the vertex and
+    /// the segment's ends, the layer point on the highest layer goes (the vertex on a tie):
+    /// both columns beside its normal line are cut below it; pairs of domain vertices only are
+    /// the domain's own and left to the fill (as without layers). Repeated with the steps
+    /// evened again until no pair is left; heights only fall, so it ends.
+    void cut_unresolvable() {
+        std::unordered_set<std::uint64_t> wall_pieces;
+        for (const Ring& ring : rings_) {
+            const std::vector<VertIdx>& wall = ring.wall.vertices;
+            for (std::size_t k = 0; k < wall.size(); ++k)
+                wall_pieces.insert(edge_key(wall[k], wall[(k + 1) % wall.size()]));
+        }
+        std::vector<std::array<VertIdx, 2>> boundary;
+        for (std::size_t p = 0; p < domain_.pieces.size() / 2; ++p) {
+            const VertIdx a = domain_.pieces[2 * p], b = domain_.pieces[2 * p + 1];
+            if (wall_pieces.count(edge_key(a, b)) == 0) boundary.push_back({a, b});
+        }
+        BucketGrid vertices(x0_, y0_, bucket_);
+        for (VertIdx v = 0; v < base_; ++v) vertices.insert(v, point(v), point(v));
+        for (std::uint32_t c = 0; c < point_stack_.size(); ++c) {
+            const VertIdx v = base_ + c;
+            if (point_stack_[c] != kNone) vertices.insert(v, point(v), point(v));
+        }
+        std::vector<std::uint8_t> cut_here(height_.size(), 0);
+        for (;;) {
+            std::vector<std::array<VertIdx, 2>> segments = boundary;
+            for (const Ring& ring : rings_) {
+                const std::vector<LinePoint> front = front_of(ring);
+                for (std::size_t k = 0; k < front.size(); ++k) {
+                    const LinePoint& p = front[k];
+                    const LinePoint& q = front[(k + 1) % front.size()];
+                    segments.push_back({point_id(p[0], p[1]), point_id(q[0], q[1])});
+                }
+            }
+            std::vector<std::uint32_t> cut_at = height_;
+            bool found = false;
+            for (const auto& [a, b] : segments) {
+                const double *pa = point(a), *pb = point(b);
+                // A vertex within rounding of the segment lies within 2^-40 (1 + 2^-40) of the
+                // ends' largest coordinate of its box: the box widened by 2^-38 of it (its
+                // rounding included) holds it.
+                const double largest = std::max(
+                    {std::fabs(pa[0]), std::fabs(pa[1]), std::fabs(pb[0]), std::fabs(pb[1])});
+                const double margin = std::max(std::ldexp(largest, -38), 0x1p-1060);
+                const double lo[2] = {std::min(pa[0], pb[0]) - margin,
+                                      std::min(pa[1], pb[1]) - margin};
+                const double hi[2] = {std::max(pa[0], pb[0]) + margin,
+                                      std::max(pa[1], pb[1]) + margin};
+                vertices.query(lo, hi, [&](std::uint32_t w) {
+                    if (w == a || w == b || !in_use(w)) return;
+                    VertIdx highest = w;
+                    for (const VertIdx end : {a, b})
+                        if (layer_of(end) > layer_of(highest)) highest = end;
+                    const std::uint32_t k = layer_of(highest);
+                    if (k == 0 || !bends(w, a, b)) return;
+                    const std::uint32_t s = point_stack_[highest - base_];
+                    for (const std::uint32_t column : {previous_stack(s), s}) {
+                        if (cut_at[column] >= k) {
+                            cut_at[column] = k - 1;
+                            found = true;
+                        }
+                    }
+                });
+            }
+            if (!found) break;
+            for (std::uint32_t j = 0; j < height_.size(); ++j) {
+                if (cut_at[j] < height_[j]) {
+                    cut(j, cut_at[j], counters_.omesh_removed_unresolvable);
+                    if (!cut_here[j]) ++counters_.stopped_unresolvable;
+                    cut_here[j] = 1;
+                }
+            }
+            cut_steps();
+        }
+    }
+
     const tri::Cdt2Result& domain_;
     const LayerParameters2& parameters_;
     AdvancingLayersCounters2& counters_;
     const VertIdx base_;
     std::vector<Ring> rings_;
-    std::vector<std::uint32_t> ring_of_;  ///< per stack (and column): its ring
-    std::vector<double> candidates_;      ///< layer points, then guard points (ids from base_)
-    std::vector<std::uint32_t> height_;   ///< per column: the layers kept
+    std::vector<std::uint32_t> ring_of_;      ///< per stack (and column): its ring
+    std::vector<double> candidates_;          ///< layer points, then guard points (ids from base_)
+    std::vector<std::uint32_t> point_stack_;  ///< per candidate: its normal line (kNone: a guard)
+    std::vector<std::uint32_t> point_layer_;  ///< per candidate: its layer
+    std::vector<std::uint32_t> height_;       ///< per column: the layers kept
+    double x0_ = 0, y0_ = 0, bucket_ = 1;     ///< the bucket grids' origin and bucket size
     std::uint32_t cells_ = 0;
     std::unique_ptr<BucketGrid> piece_grid_;
     std::unique_ptr<BucketGrid> free_vertex_grid_;  ///< domain vertices on no segment
@@ -451,6 +595,16 @@ AdvancingLayersResult2 truncated_omesh_2d(const MeshDomain2& domain,
     for (const auto& [base, layers] : region.stack_layers)
         counters.layers = std::max<std::uint64_t>(counters.layers, layers);
     layer_mesh::finish_layered_mesh_2d(domain, options, region, result);
+    if (counters.omesh_removed_unresolvable > 0) {
+        result.mesh.warnings.push_back(
+            "truncated O-mesh: " + std::to_string(counters.omesh_removed_unresolvable) +
+            " cells of " + std::to_string(counters.stopped_unresolvable) +
+            " columns removed where a layer point lay within rounding (2^-40 of its "
+            "coordinates) of the front, beside which the fill would bend the front; first "
+            "height " +
+            format_number(options.layers.first_height) +
+            " is about as thin as doubles resolve beside the wall");
+    }
     return result;
 }
 

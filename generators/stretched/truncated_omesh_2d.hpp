@@ -30,6 +30,14 @@
 //    stays at least about a local spacing from the other rings' cells and the boundary.
 //    Every decision is exact (orient2d, segments_conflict, compare_angles); lengths only
 //    place the guards and the truncation (scale-free norms).
+//  - Rounding: the fill's constrained triangulation bends a segment through a vertex within
+//    rounding of it (2^-40 of the vertex's coordinates, the chain rule of
+//    proofs/invariants/constrained_delaunay.md §4). Columns are cut until no vertex of the
+//    fill's domain (a domain vertex or a layer point in use) lies within rounding of a front
+//    edge or boundary piece strictly between its ends (first heights near 2^-40 of the
+//    coordinates: 1e-12 beside the NACA 0012's trailing edge); the layer point on the highest
+//    layer of the three goes, the steps are evened again, repeated until none is left; a
+//    warning says how many cells went (omesh_removed_unresolvable).
 //  - The layer cells are kept as quadrilaterals or split (layer_mesh::split_quad); the rest is
 //    meshed by the fill generator from the staircase front of every ring, as for advancing
 //    layers (layer_mesh::finish_layered_mesh_2d), and the mixed mesh checked exactly.
