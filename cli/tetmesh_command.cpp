@@ -140,6 +140,21 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         // A facet whose corners were rounded off their plane (a rotated box) becomes the
         // triangles of its projection, as TetGen meshes it; a warning names it.
         std::vector<std::string> split = tri::split_nonplanar_facets_3d(plc);
+        // A free vertex within rounding of a segment or facet (a point of a rotated box's edge
+        // or facet, rounded off it) becomes part of it, and the facets it joins are split.
+        const tri::FreeVertexEmbedding3 near = tri::attach_free_vertices_near_surface_3d(plc);
+        if (!near.vertices.empty()) {
+            std::string names;
+            for (const tri::VertIdx v : near.vertices)
+                names += (names.empty() ? "" : ", ") +
+                         std::to_string(std::uint64_t{v} + plc.first_index);
+            split.push_back(
+                "free vertices within rounding of the surface (2^-48 of their coordinates) "
+                "made part of it, as if on it: " +
+                names);
+            std::vector<std::string> again = tri::split_nonplanar_facets_3d(plc);
+            split.insert(split.end(), again.begin(), again.end());
+        }
         for (std::string& warning : split) warning = source + ": " + warning;
         print_warnings(split);
         tri::embed_free_vertices_3d(plc);

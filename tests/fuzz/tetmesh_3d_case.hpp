@@ -6,7 +6,8 @@
 // its side, a star-shaped polyhedron: a subdivided octahedron with random vertex radii), with up
 // to 6 free vertices inside, on facets, on edges, or 1e-12..1e-300 off a facet, an edge or a
 // corner, every coordinate times 2^k (k in [-600, 600]); then the pipeline of `exactmesh
-// tetmesh`: validate_plc_3d_input, split_nonplanar_facets_3d, embed_free_vertices_3d,
+// tetmesh`: validate_plc_3d_input, split_nonplanar_facets_3d, attach_free_vertices_near_surface_3d
+// (then split_nonplanar_facets_3d again), embed_free_vertices_3d,
 // validate_plc_3d,
 // check_surface_closed_3d, boundary_recovery_3d, one generator (delaunay_refinement_3d with B in
 // [1, 3], frontal_delaunay_3d or octree_mesh_3d with a size of 1/1..1/4 of the box's largest
@@ -425,6 +426,9 @@ inline TetmeshOutcome run_tetmesh_case(const TetmeshCase& c) {
         tri::validate_plc_3d_input(plc);
         out.stage = "split_nonplanar_facets_3d";
         (void)tri::split_nonplanar_facets_3d(plc);
+        out.stage = "attach_free_vertices_near_surface_3d";
+        if (!tri::attach_free_vertices_near_surface_3d(plc).vertices.empty())
+            (void)tri::split_nonplanar_facets_3d(plc);
         out.stage = "embed_free_vertices_3d";
         tri::embed_free_vertices_3d(plc);
         if (plc.xyz != input_xyz) {

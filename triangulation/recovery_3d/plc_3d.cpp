@@ -480,6 +480,199 @@ std::vector<SurfacePlacement3> free_vertices_on_surface(const Plc3& plc) {
     return placements;
 }
 
+/// The box of points within w of p (w >= 0) in each coordinate, its corners rounded outward
+/// (one step past the rounded sum), so that it holds the exact box. Rounding and the steps
+/// commute with scaling by a power of two (normal numbers): the same box, scaled.
+Box3 grown_box(const double* p, double w) {
+    Box3 b{};
+    for (int k = 0; k < 3; ++k) {
+        b.lo[k] = std::nextafter(p[k] - w, -std::numeric_limits<double>::infinity());
+        b.hi[k] = std::nextafter(p[k] + w, std::numeric_limits<double>::infinity());
+    }
+    return b;
+}
+
+bool boxes_meet(const Box3& a, const Box3& b) {
+    for (int k = 0; k < 3; ++k)
+        if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
+    return true;
+}
+
+/// The half-width of the box within which a free vertex counts as on a feature: 2^-48 of the
+/// largest coordinate magnitude of the vertex and the feature's corners (16 units in the last
+/// place at that magnitude; the rounding noise of points computed on the feature is under 1).
+double near_tolerance(std::initializer_list<const double*> points) {
+    double largest = 0;
+    for (const double* p : points)
+        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(p[k]));
+    if (!(largest > 0)) return 0;
+    return std::ldexp(1.0, std::ilogb(largest) - 48);
+}
+
+/// The plane through a, b, c (not collinear) meets box b (exact orient3d at its corners).
+bool plane_meets_box(const double* a, const double* b, const double* c, const Box3& box) {
+    bool negative = false, positive = false;
+    for (int corner = 0; corner < 8; ++corner) {
+        const double q[3] = {corner & 1 ? box.hi[0] : box.lo[0], corner & 2 ? box.hi[1] : box.lo[1],
+                             corner & 4 ? box.hi[2] : box.lo[2]};
+        const Sign s = orient3d(a, b, c, q);
+        if (s == Sign::Zero) return true;
+        (s == Sign::Negative ? negative : positive) = true;
+        if (negative && positive) return true;
+    }
+    return false;
+}
+
+/// Closed segment ab meets box `box` (exact): by separating axes, the coordinate intervals
+/// overlap and, in each coordinate-plane projection where the segment is not a point, the
+/// line through its projection does not leave every projected box corner strictly on one side.
+bool segment_meets_box(const double* a, const double* b, const Box3& box) {
+    if (!boxes_meet(box_of({a, b}), box)) return false;
+    for (int drop = 0; drop < 3; ++drop) {
+        const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+        if (a[i] == b[i] && a[j] == b[j]) continue;
+        const double pa[2] = {a[i], a[j]}, pb[2] = {b[i], b[j]};
+        bool negative = false, positive = false;
+        for (int corner = 0; corner < 4; ++corner) {
+            const double q[2] = {corner & 1 ? box.hi[i] : box.lo[i],
+                                 corner & 2 ? box.hi[j] : box.lo[j]};
+            const Sign s = orient2d(pa, pb, q);
+            if (s != Sign::Positive) negative = true;
+            if (s != Sign::Negative) positive = true;
+        }
+        if (!(negative && positive)) return false;
+    }
+    return true;
+}
+
+/// The free vertices off the surface but within rounding of it (near_tolerance): inside the
+/// box of a segment's point (not of its ends), or of a facet triangle's plane with the vertex
+/// in the triangle's projection. Same form as free_vertices_on_surface.
+std::vector<SurfacePlacement3> free_vertices_near_surface(const Plc3& plc) {
+    const std::uint32_t n = plc.vertex_count();
+    std::vector<bool> used(n, false);
+    for (const Facet3& facet : plc.facets)
+        for (const auto& polygon : facet.polygons)
+            for (const VertIdx v : polygon) used[v] = true;
+    std::vector<SurfacePlacement3> placements;
+    std::vector<std::array<VertIdx, 2>> segments;
+    for (const Facet3& facet : plc.facets) {
+        for (const auto& e : facet_edges(facet))
+            segments.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
+    }
+    std::sort(segments.begin(), segments.end());
+    segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
+    std::vector<VertIdx> free;
+    for (VertIdx v = 0; v < n; ++v)
+        if (!used[v]) free.push_back(v);
+    if (free.empty()) return placements;
+    const SurfaceTriangles3 surface = triangulate_facets_3d(plc);
+    for (const VertIdx v : free) {
+        const double* p = plc.point(v);
+        SurfacePlacement3 placement;
+        placement.vertex = v;
+        for (const auto& e : segments) {
+            const double* a = plc.point(e[0]);
+            const double* b = plc.point(e[1]);
+            const Box3 box = grown_box(p, near_tolerance({p, a, b}));
+            if (box.contains(a) || box.contains(b)) continue;  // beside a corner: left free
+            if (segment_meets_box(a, b, box)) {
+                placement.segment = e;
+                break;
+            }
+        }
+        if (placement.segment[0] == kNone) {
+            for (std::uint32_t t = 0; t < surface.triangle_count(); ++t) {
+                const VertIdx* tv = &surface.triangles[3 * std::size_t{t}];
+                const double* a = plc.point(tv[0]);
+                const double* b = plc.point(tv[1]);
+                const double* c = plc.point(tv[2]);
+                const Box3 box = grown_box(p, near_tolerance({p, a, b, c}));
+                if (!boxes_meet(box_of({a, b, c}), box) || !plane_meets_box(a, b, c, box)) continue;
+                const int drop = drop_axis(a, b, c);
+                if (!triangle_contains_2d(
+                        project_facet_point(a, drop), project_facet_point(b, drop),
+                        project_facet_point(c, drop), project_facet_point(p, drop)))
+                    continue;
+                const std::uint32_t f = surface.facets[t];
+                if (std::find(placement.facets.begin(), placement.facets.end(), f) ==
+                    placement.facets.end())
+                    placement.facets.push_back(f);
+            }
+            if (placement.facets.empty()) continue;
+        }
+        placements.push_back(std::move(placement));
+    }
+    return placements;
+}
+
+/// Inserts each placed vertex into its segment (in every facet polygon that has it) or adds it
+/// to its facets as a 1-corner polygon.
+FreeVertexEmbedding3 apply_placements(Plc3& plc, const std::vector<SurfacePlacement3>& placements) {
+    FreeVertexEmbedding3 done;
+    if (placements.empty()) return done;
+    // Each segment's new vertices in order from its first end (smaller index) to its second:
+    // along an axis where the ends differ, the coordinates are monotone on the line.
+    std::map<std::array<VertIdx, 2>, std::vector<VertIdx>> on_segment;
+    for (const SurfacePlacement3& placement : placements) {
+        if (placement.segment[0] != kNone) {
+            on_segment[placement.segment].push_back(placement.vertex);
+            done.vertices.push_back(placement.vertex);
+            ++done.on_segments;
+        } else {
+            for (const std::uint32_t f : placement.facets)
+                plc.facets[f].polygons.push_back({placement.vertex});
+            done.vertices.push_back(placement.vertex);
+            ++done.on_facets;
+        }
+    }
+    for (auto& [segment, chain] : on_segment) {
+        const double* a = plc.point(segment[0]);
+        const double* b = plc.point(segment[1]);
+        int axis = 0;
+        while (a[axis] == b[axis]) ++axis;
+        const bool increasing = a[axis] < b[axis];
+        std::sort(chain.begin(), chain.end(), [&](VertIdx u, VertIdx w) {
+            return increasing ? plc.point(u)[axis] < plc.point(w)[axis]
+                              : plc.point(u)[axis] > plc.point(w)[axis];
+        });
+    }
+    // The chain between u and w, in the direction u -> w.
+    const auto chain_between = [&on_segment](VertIdx u, VertIdx w) -> std::vector<VertIdx> {
+        const auto it = on_segment.find({std::min(u, w), std::max(u, w)});
+        if (it == on_segment.end()) return {};
+        std::vector<VertIdx> chain = it->second;
+        if (u > w) std::reverse(chain.begin(), chain.end());
+        return chain;
+    };
+    for (Facet3& facet : plc.facets) {
+        std::vector<std::vector<VertIdx>> polygons;
+        for (const auto& polygon : facet.polygons) {
+            const std::size_t n = polygon.size();
+            if (n == 2) {
+                // A segment inside the facet: one 2-corner polygon per piece.
+                std::vector<VertIdx> path{polygon[0]};
+                for (const VertIdx v : chain_between(polygon[0], polygon[1])) path.push_back(v);
+                path.push_back(polygon[1]);
+                for (std::size_t k = 0; k + 1 < path.size(); ++k)
+                    polygons.push_back({path[k], path[k + 1]});
+            } else if (n >= 3) {
+                std::vector<VertIdx> loop;
+                for (std::size_t k = 0; k < n; ++k) {
+                    loop.push_back(polygon[k]);
+                    for (const VertIdx v : chain_between(polygon[k], polygon[(k + 1) % n]))
+                        loop.push_back(v);
+                }
+                polygons.push_back(std::move(loop));
+            } else {
+                polygons.push_back(polygon);
+            }
+        }
+        facet.polygons = std::move(polygons);
+    }
+    return done;
+}
+
 }  // namespace
 
 void validate_plc_3d_input(const Plc3& plc) {
@@ -726,67 +919,11 @@ void check_surface_closed_3d(const Plc3& plc, const SurfaceTriangles3& surface) 
 }
 
 FreeVertexEmbedding3 embed_free_vertices_3d(Plc3& plc) {
-    FreeVertexEmbedding3 done;
-    const std::vector<SurfacePlacement3> placements = free_vertices_on_surface(plc);
-    if (placements.empty()) return done;
-    // Each segment's new vertices in order from its first end (smaller index) to its second:
-    // along an axis where the ends differ, the coordinates are monotone on the line.
-    std::map<std::array<VertIdx, 2>, std::vector<VertIdx>> on_segment;
-    for (const SurfacePlacement3& placement : placements) {
-        if (placement.segment[0] != kNone) {
-            on_segment[placement.segment].push_back(placement.vertex);
-            ++done.on_segments;
-        } else {
-            for (const std::uint32_t f : placement.facets)
-                plc.facets[f].polygons.push_back({placement.vertex});
-            ++done.on_facets;
-        }
-    }
-    for (auto& [segment, chain] : on_segment) {
-        const double* a = plc.point(segment[0]);
-        const double* b = plc.point(segment[1]);
-        int axis = 0;
-        while (a[axis] == b[axis]) ++axis;
-        const bool increasing = a[axis] < b[axis];
-        std::sort(chain.begin(), chain.end(), [&](VertIdx u, VertIdx w) {
-            return increasing ? plc.point(u)[axis] < plc.point(w)[axis]
-                              : plc.point(u)[axis] > plc.point(w)[axis];
-        });
-    }
-    // The chain between u and w, in the direction u -> w.
-    const auto chain_between = [&on_segment](VertIdx u, VertIdx w) -> std::vector<VertIdx> {
-        const auto it = on_segment.find({std::min(u, w), std::max(u, w)});
-        if (it == on_segment.end()) return {};
-        std::vector<VertIdx> chain = it->second;
-        if (u > w) std::reverse(chain.begin(), chain.end());
-        return chain;
-    };
-    for (Facet3& facet : plc.facets) {
-        std::vector<std::vector<VertIdx>> polygons;
-        for (const auto& polygon : facet.polygons) {
-            const std::size_t n = polygon.size();
-            if (n == 2) {
-                // A segment inside the facet: one 2-corner polygon per piece.
-                std::vector<VertIdx> path{polygon[0]};
-                for (const VertIdx v : chain_between(polygon[0], polygon[1])) path.push_back(v);
-                path.push_back(polygon[1]);
-                for (std::size_t k = 0; k + 1 < path.size(); ++k)
-                    polygons.push_back({path[k], path[k + 1]});
-            } else if (n >= 3) {
-                std::vector<VertIdx> loop;
-                for (std::size_t k = 0; k < n; ++k) {
-                    loop.push_back(polygon[k]);
-                    for (const VertIdx v : chain_between(polygon[k], polygon[(k + 1) % n]))
-                        loop.push_back(v);
-                }
-                polygons.push_back(std::move(loop));
-            } else {
-                polygons.push_back(polygon);
-            }
-        }
-        facet.polygons = std::move(polygons);
-    }
-    return done;
+    return apply_placements(plc, free_vertices_on_surface(plc));
+}
+
+FreeVertexEmbedding3 attach_free_vertices_near_surface_3d(Plc3& plc) {
+    return apply_placements(plc, free_vertices_near_surface(plc));
 }
 
 std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc) {

@@ -60,6 +60,7 @@ void check_surface_closed_3d(const Plc3& plc, const SurfaceTriangles3& surface);
 struct FreeVertexEmbedding3 {
     std::uint32_t on_segments = 0;  ///< free vertices inserted into the polygon edges they lie on
     std::uint32_t on_facets = 0;    ///< free vertices added to a facet as 1-corner polygons
+    std::vector<VertIdx> vertices;  ///< those vertices, in index order
 };
 
 /// Makes every free vertex (one in no facet polygon) that lies on the PLC's surface part of it,
@@ -73,6 +74,23 @@ struct FreeVertexEmbedding3 {
 /// contain it, so no tetrahedralization could keep both).
 /// @pre validate_plc_3d_input(plc) passed.
 FreeVertexEmbedding3 embed_free_vertices_3d(Plc3& plc);
+
+/// Makes every free vertex that lies off the surface but within rounding of it part of the
+/// surface, as embed_free_vertices_3d does for one exactly on it: within 2^-48 of the largest
+/// coordinate magnitude (of it and the feature; 16 units in the last place there) of a point of
+/// a segment, not of its ends, it is inserted into that segment; else within that of the plane
+/// of a facet triangle (triangulate_facets_3d), inside the triangle's projection, it is added
+/// to the facet as a 1-corner polygon. Such a vertex (a point of a rotated box's facet or edge,
+/// rounded off it) was a free vertex inside (or outside) the domain closer to the facet than
+/// the rounding noise of every split point there: whether a point split on the facet beside it
+/// lay above or below it was decided by rounding, so splits beside it were rejected and the
+/// tetrahedra over the unsplit subfaces drove Delaunay refinement into its Steiner budget.
+/// The facets it joins are then no longer planar: split_nonplanar_facets_3d splits them (run it
+/// after this). Exact: orient3d and orient2d at the corners of a box rounded outward, which
+/// scales with the input (the same decision at 2^+-600). Vertices beside a corner (the box
+/// holds a segment's end) are left free.
+/// @pre split_nonplanar_facets_3d(plc) passed (the facets are planar).
+FreeVertexEmbedding3 attach_free_vertices_near_surface_3d(Plc3& plc);
 
 /// Replaces every facet whose corners do not lie in one plane (exact orient3d; a facet of a
 /// rotated box whose corners were rounded to doubles is one) by the triangles of its polygons'
