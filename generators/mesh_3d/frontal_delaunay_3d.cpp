@@ -423,7 +423,7 @@ FrontalDelaunay3Result Frontal::run() {
 
 /// The size's estimate of the Steiner points: the regular tetrahedra of edge h(centroid) that
 /// fill each recovered tetrahedron (h^3 / (6 sqrt 2) each), summed, over about 5 tetrahedra per
-/// vertex. Each tetrahedron's edge vectors are scaled by the power of two of its own largest
+/// vertex; or the surface's points (below), when more. Each tetrahedron's edge vectors are scaled by the power of two of its own largest
 /// difference and the count is formed in logarithms, so a domain at 2^600 with a size of 0.1
 /// (a count near 2^1800) gives a huge estimate, not an overflow (it used to give NaN, which no
 /// budget refused: 10^6 segment splits in a minute). The sum is capped at 1e300.
@@ -455,7 +455,55 @@ double estimate_points(const ConformingMesh3& recovered, const SizeFunction3& si
                                   3 * std::log2(h) + std::log2(6 * kSqrt2);
         tets += std::exp2(std::min(log2_count, 1000.0));
     }
-    return std::min(tets / 5, 1e300);
+    // The surface: frontal insertion places points on the subfaces at the size too, about one
+    // per equilateral triangle of edge h(centroid) and a half (sqrt(3)/4 h^2 each, two per
+    // point), whatever the volume behind them: a needle (a tetrahedron with an edge 2^31 long
+    // over a unit triangle) has a volume of 1/6 but a surface of 2^31, which the volume term
+    // missed (frontal insertion then ran for minutes). Scaled like the volume term.
+    double surface_points = 0;
+    for (std::size_t f = 0; f + 2 < recovered.subfaces.size(); f += 3) {
+        const double* p[3] = {m.point(recovered.subfaces[f]), m.point(recovered.subfaces[f + 1]),
+                              m.point(recovered.subfaces[f + 2])};
+        double largest = 0;
+        Vec centroid{0, 0, 0};
+        for (unsigned k = 0; k < 3; ++k) {
+            for (int i = 0; i < 3; ++i) centroid[i] += p[k][i] / 3;
+            if (k > 0)
+                for (int i = 0; i < 3; ++i)
+                    largest = std::max(largest, std::fabs(p[k][i] / 2 - p[0][i] / 2));
+        }
+        if (!(largest > 0)) continue;
+        const int exponent = std::ilogb(largest);
+        Vec d[2];
+        for (unsigned k = 0; k < 2; ++k)
+            for (int i = 0; i < 3; ++i)
+                d[k][i] = std::ldexp(p[k + 1][i] / 2 - p[0][i] / 2, -exponent);
+        const Vec n = cross(d[0], d[1]);
+        const double twice_area = std::sqrt(dot(n, n));
+        if (!(twice_area > 0)) continue;
+        // Area = twice_area / 2 * 2^(2 (exponent + 1)).
+        const double h = size(centroid[0], centroid[1], centroid[2]);
+        const double log2_count = std::log2(twice_area / 2) + 2.0 * (exponent + 1) -
+                                  2 * std::log2(h) - std::log2(std::sqrt(3.0) / 4) - 1;
+        surface_points += std::exp2(std::min(log2_count, 1000.0));
+    }
+    // The segments likewise: a point every h along each subsegment (a needle's facets are thin:
+    // its edges 2^31 long at size 4096 ask for 1.5 10^6 points where its area asks for 150).
+    double segment_points = 0;
+    for (std::size_t e = 0; e + 1 < recovered.subsegments.size(); e += 2) {
+        const double* a = m.point(recovered.subsegments[e]);
+        const double* b = m.point(recovered.subsegments[e + 1]);
+        double largest = 0;
+        for (int i = 0; i < 3; ++i) largest = std::max(largest, std::fabs(b[i] / 2 - a[i] / 2));
+        if (!(largest > 0)) continue;
+        const int exponent = std::ilogb(largest);
+        Vec d;
+        for (int i = 0; i < 3; ++i) d[i] = std::ldexp(b[i] / 2 - a[i] / 2, -exponent);
+        const double h = size(a[0] / 2 + b[0] / 2, a[1] / 2 + b[1] / 2, a[2] / 2 + b[2] / 2);
+        const double log2_count = std::log2(std::sqrt(dot(d, d))) + (exponent + 1) - std::log2(h);
+        segment_points += std::exp2(std::min(log2_count, 1000.0));
+    }
+    return std::min(std::max({tets / 5, surface_points, segment_points}), 1e300);
 }
 
 }  // namespace
@@ -482,8 +530,9 @@ FrontalDelaunay3Result frontal_delaunay_3d(const Plc3& plc, ConformingMesh3 reco
         throw InputError("frontal delaunay 3d: Steiner point budget of " + std::to_string(budget) +
                          " exceeded at once: the size " + options.size.describe() +
                          " asks for about " + format_approximate(estimate, 3) +
-                         " points (domain volume / (h^3 / (6 sqrt 2)) / 5 per vertex); raise "
-                         "the size or the budget");
+                         " points (the most of: domain volume / (h^3 / (6 sqrt 2)) / 5 per vertex, "
+                         "surface area / (sqrt(3) / 4 h^2) / 2, segment length / h); raise the "
+                         "size or the budget");
     }
     if (options.estimate_gaps) refuse_gaps_far_over_budget_3d(plc, budget, "frontal delaunay 3d");
     Frontal frontal(plc, std::move(recovered), options, budget, exponent);
