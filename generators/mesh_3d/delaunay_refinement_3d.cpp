@@ -46,7 +46,7 @@ class Refinement final : public RestrictedDelaunay3 {
 
   private:
     DelaunayRefinement3Options options_;
-    SmallInputAngleRule3 small_angles_{out_, m_.xyz};
+    SmallInputAngleRule3 small_angles_{out_, m_.xyz, sharp_};
     struct QueuedTet {
         TetIdx t;
         std::array<VertIdx, 4> corners;

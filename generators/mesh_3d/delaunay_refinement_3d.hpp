@@ -12,7 +12,10 @@
 //     the bound, unless the circumcentre encroaches a subsegment or subface of its cavity, or
 //     lies beyond a subface (the walk towards it is blocked): then those are split instead.
 //     A tetrahedron whose shortest edge joins vertices of two segments that meet at an input
-//     vertex at less than 60 degrees is not split (the small-input-angle rule), nor one with an
+//     vertex at less than 60 degrees, or of two facets that meet at an input segment at a
+//     dihedral angle below 60 degrees (sharp facets, SharpFacets3: a point on one does not
+//     split the other's subfaces, nor the segment between them, by encroachment), is not split
+//     (the small-input-angle rule, SmallInputAngleRule3), nor one with an
 //     edge below 2^-44 of its coordinates' magnitude (finer than doubles resolve there: its
 //     circumcentre would round onto a grid too coarse to improve it).
 // Insertion is Bowyer-Watson restricted to the domain: the cavity grows through faces whose

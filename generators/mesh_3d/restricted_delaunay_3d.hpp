@@ -27,6 +27,7 @@
 
 #include "base/errors.hpp"
 #include "generators/mesh_3d/delaunay_refinement_3d.hpp"
+#include "generators/mesh_3d/small_angle_rule_3d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/dot_sign_3d.hpp"
 #include "predicates/insphere.hpp"
@@ -186,6 +187,7 @@ class RestrictedDelaunay3 {
             add_subface({{out_.subfaces[i], out_.subfaces[i + 1], out_.subfaces[i + 2]},
                          out_.subface_facet[i / 3]});
         }
+        sharp_ = SharpFacets3(out_, m_.xyz);
         planes_.reserve(plc.facets.size());
         for (const auto& facet : plc.facets)
             planes_.push_back(triangulation::facet_plane(plc, facet));
@@ -237,6 +239,9 @@ class RestrictedDelaunay3 {
     std::unordered_multimap<std::uint64_t, Key3> edge_subfaces_;
     std::vector<triangulation::FacetPlane> planes_;
     std::vector<std::vector<std::uint32_t>> vertex_segments_;
+    /// Facets meeting at a segment at below 60 degrees: their encroachment of each other (and of
+    /// the segment between them) splits nothing, since each split would encroach the other.
+    SharpFacets3 sharp_;
 
     std::deque<std::uint64_t> segment_queue_;
     std::deque<Key3> subface_queue_;
@@ -819,6 +824,8 @@ class RestrictedDelaunay3 {
         for (unsigned k = 0; k < 4; ++k) {
             const Key3 key = face_key(t, k);
             if (!is_subface_key(key)) continue;
+            if (!sharp_.empty() && sharp_.shields_subface(out_, c[k], subfaces_.at(key).facet))
+                continue;
             if (predicates::in_equatorial_sphere_3d(point(c[k]), point(key[0]), point(key[1]),
                                                     point(key[2])) == Sign::Positive) {
                 subface_queue_.push_back(key);
@@ -830,6 +837,8 @@ class RestrictedDelaunay3 {
             const std::uint64_t key = edge_key(c[e[0]], c[e[1]]);
             for (unsigned k = 0; k < 4; ++k) {
                 if (k == e[0] || k == e[1]) continue;
+                if (!sharp_.empty() && sharp_.shields_segment(out_, c[k], subsegments_.at(key)))
+                    continue;
                 if (predicates::dot_sign_3d(point(c[k]), point(c[e[0]]), point(c[e[1]])) ==
                     Sign::Negative) {
                     segment_queue_.push_back(key);
@@ -1072,8 +1081,9 @@ class RestrictedDelaunay3 {
                 ++counters_.rejected_points;
                 return false;
             }
-            // A subsegment of the cavity that c encroaches is split instead.
-            if (queue_encroached_segments(c.data())) return false;
+            // A subsegment of the cavity that c encroaches is split instead (unless the
+            // facet is sharp at it: points on the facet do not split it).
+            if (queue_encroached_segments(c.data(), at.facet)) return false;
             commit(c, VertexFeature3::Facet, at.facet, 0.0, split, pieces, {});
             ++counters_.subface_splits;
             return true;
@@ -1081,14 +1091,16 @@ class RestrictedDelaunay3 {
     }
 
     /// Queues (at the front) the subsegments among the cavity's edges that p encroaches
-    /// (strictly inside the diametral sphere); returns whether there was one.
-    bool queue_encroached_segments(const double* p) {
+    /// (strictly inside the diametral sphere); returns whether there was one. p a point of
+    /// `facet` (kNone: inside the domain) skips the subsegments it is sharp at.
+    bool queue_encroached_segments(const double* p, std::uint32_t facet = kNone) {
         bool any = false;
         for (const TetIdx t : cavity_) {
             for (const auto& e : kEdges) {
                 const VertIdx a = m_.vertex(t, e[0]), b = m_.vertex(t, e[1]);
                 if (!is_subsegment(a, b)) continue;
                 const std::uint64_t key = edge_key(a, b);
+                if (facet != kNone && sharp_.shields_segment(subsegments_.at(key), facet)) continue;
                 if (predicates::dot_sign_3d(p, point(a), point(b)) == Sign::Negative) {
                     segment_queue_.push_front(key);
                     ++counters_.encroached_segments;

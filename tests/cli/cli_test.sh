@@ -1418,6 +1418,14 @@ tetmesh_bad_input() {
   # tetrahedron over the bound: an internal error (exit 3). Now a rejected point, with a warning.
   run 0 tetmesh "$data/rotated/cube_11.poly" --radius-edge 2 -o "$work/rot.ele" || return
   grep -q 'splitting points were rejected' "$work/err" || fail "no rejection warning for cube_11: $(cat "$work/err")"
+  # Facets at 45 degrees (a triangular prism, issue 15): their subfaces encroached each
+  # other into the Steiner budget. Facets meeting below 60 degrees are sharp now: no splits
+  # between them, the tetrahedra at their segment spared (and checked so, exactly).
+  printf 'OFF\n6 5 0\n0 0 0\n1 0 0\n1 1 0\n0 0 1\n1 0 1\n1 1 1\n3 0 2 1\n3 3 4 5\n4 0 1 4 3\n4 1 2 5 4\n4 2 0 3 5\n' >"$work/wedge.off"
+  run 0 tetmesh "$work/wedge.off" --max-volume 0.01 --max-steiner 100000 --stats -o "$work/wedge.ele" || return
+  grep -Eq '^vertices: [0-9]{1,3}$' "$work/out" || fail "wedge: too many vertices: $(cat "$work/out")"
+  run 0 tetmesh "$work/wedge.off" --max-volume 0.01 --radius-edge 1.2 --stats --quality -o "$work/wedge.ele" || return
+  grep -Eq '^spared_small_angle_tets: [1-9]' "$work/out" || fail "wedge: nothing spared: $(cat "$work/out")"
   # Lifted so far that the facet's projection crosses itself: refused, naming the facet.
   sed 's/^3 1 1 0$/3 -1 -1 0.5/' "$work/cube.poly" >"$work/twisted.poly"
   expect_error 2 'twisted\.poly: .*facet [0-9]+ \(line [0-9]+\)' tetmesh "$work/twisted.poly" -o "$work/x.ele"
