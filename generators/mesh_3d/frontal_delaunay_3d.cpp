@@ -423,10 +423,11 @@ FrontalDelaunay3Result Frontal::run() {
 
 /// The size's estimate of the Steiner points: the regular tetrahedra of edge h(centroid) that
 /// fill each recovered tetrahedron (h^3 / (6 sqrt 2) each), summed, over about 5 tetrahedra per
-/// vertex; or the surface's points (below), when more. Each tetrahedron's edge vectors are scaled by the power of two of its own largest
-/// difference and the count is formed in logarithms, so a domain at 2^600 with a size of 0.1
-/// (a count near 2^1800) gives a huge estimate, not an overflow (it used to give NaN, which no
-/// budget refused: 10^6 segment splits in a minute). The sum is capped at 1e300.
+/// vertex; or the surface's points (below), when more. Each tetrahedron's edge vectors are scaled
+/// by the power of two of its own largest difference and the count is formed in logarithms, so a
+/// domain at 2^600 with a size of 0.1 (a count near 2^1800) gives a huge estimate, not an overflow
+/// (it used to give NaN, which no budget refused: 10^6 segment splits in a minute). The sum is
+/// capped at 1e300.
 double estimate_points(const ConformingMesh3& recovered, const SizeFunction3& size) {
     const auto& m = recovered.mesh;
     double tets = 0;

@@ -3,6 +3,7 @@
 #include "generators/mesh_3d/small_angle_rule_3d.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <unordered_map>
 #include <utility>
@@ -204,9 +205,8 @@ std::vector<std::uint32_t> SmallInputAngleRule3::segments_of(tri::VertIdx v) con
     return {};
 }
 
-bool SmallInputAngleRule3::small_angle_pair(tri::VertIdx u, tri::VertIdx w) const {
-    if (u < mesh_.input_vertex_count && w < mesh_.input_vertex_count) return false;
-    if (sharp_.sharp_pair(mesh_, u, w)) return true;
+template <class AngleTest>
+bool SmallInputAngleRule3::meet_at_apex(tri::VertIdx u, tri::VertIdx w, AngleTest&& below) const {
     for (const std::uint32_t s1 : segments_of(u)) {
         for (const std::uint32_t s2 : segments_of(w)) {
             if (s1 == s2) continue;
@@ -217,13 +217,40 @@ bool SmallInputAngleRule3::small_angle_pair(tri::VertIdx u, tri::VertIdx w) cons
                 if (mesh_.segments[2 * s2] == apex) far2 = mesh_.segments[2 * s2 + 1];
                 if (mesh_.segments[2 * s2 + 1] == apex) far2 = mesh_.segments[2 * s2];
                 if (far2 == tri::kNone || apex == u || apex == w) continue;
-                if (predicates::compare_angle_60_3d(point(apex), point(far1), point(far2)) ==
-                    Sign::Positive)
-                    return true;
+                if (below(point(apex), point(far1), point(far2))) return true;
             }
         }
     }
     return false;
+}
+
+bool SmallInputAngleRule3::small_angle_pair(tri::VertIdx u, tri::VertIdx w) const {
+    if (u < mesh_.input_vertex_count && w < mesh_.input_vertex_count) return false;
+    if (sharp_.sharp_pair(mesh_, u, w)) return true;
+    return meet_at_apex(u, w, [](const double* o, const double* a, const double* b) {
+        return predicates::compare_angle_60_3d(o, a, b) == Sign::Positive;
+    });
+}
+
+bool SmallInputAngleRule3::narrow_angle_pair(tri::VertIdx u, tri::VertIdx w) const {
+    if (u < mesh_.input_vertex_count && w < mesh_.input_vertex_count) return false;
+    return meet_at_apex(u, w, [](const double* o, const double* a, const double* b) {
+        double largest = 0;
+        for (int k = 0; k < 3; ++k)
+            largest =
+                std::max({largest, std::fabs(a[k] / 2 - o[k] / 2), std::fabs(b[k] / 2 - o[k] / 2)});
+        if (!(largest > 0)) return false;
+        const int e = std::ilogb(largest);
+        double v[3], x[3];
+        for (int k = 0; k < 3; ++k) {
+            v[k] = std::ldexp(a[k] / 2 - o[k] / 2, -e);
+            x[k] = std::ldexp(b[k] / 2 - o[k] / 2, -e);
+        }
+        const double dot = v[0] * x[0] + v[1] * x[1] + v[2] * x[2];
+        const double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        const double xx = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+        return dot > 0 && 4 * dot * dot > 3 * vv * xx;  // cos^2 > 3/4: below 30 degrees
+    });
 }
 
 bool SmallInputAngleRule3::spares(const std::array<tri::VertIdx, 4>& p) const {

@@ -82,6 +82,19 @@ class SmallInputAngleRule3 {
     /// refinement does not shorten).
     bool small_angle_pair(triangulation::VertIdx u, triangulation::VertIdx w) const;
 
+    /// Whether u and w lie on two input segments that meet at an input vertex (neither u nor w)
+    /// at less than 30 degrees, one of them at least a Steiner point: a point on one does not
+    /// split the other's subsegments by encroachment (each split would encroach the first
+    /// again, down to the apex: a needle's two long edges 5e-10 radians apart ran 10^6
+    /// subsegment splits into the Steiner budget). A choice of what to split, not a validity
+    /// decision (refinement spares the tetrahedra between such segments by small_angle_pair):
+    /// the angle is taken in doubles on the input vertices' differences scaled by a power of
+    /// two (the same at 2^+-600), so an angle within rounding of 30 degrees may go either way.
+    /// Below 30, not 60: the split diagonals of a rotated box's facets meet its edges at 45
+    /// degrees, where shell splitting ends by itself and the splits keep the corners' tetrahedra
+    /// well shaped.
+    bool narrow_angle_pair(triangulation::VertIdx u, triangulation::VertIdx w) const;
+
     /// Whether the tetrahedron with corners `corners` is spared: one of its shortest edges
     /// (exact length comparisons) joins a small_angle_pair.
     bool spares(const std::array<triangulation::VertIdx, 4>& corners) const;
@@ -98,6 +111,10 @@ class SmallInputAngleRule3 {
     std::vector<std::vector<std::uint32_t>> at_input_;  ///< segments ending at each input vertex
     SharpFacets3 sharp_;
 
+    /// Whether u and w lie on two input segments meeting at an input vertex (neither u nor w)
+    /// whose angle there `below(apex, far1, far2)` accepts.
+    template <class AngleTest>
+    bool meet_at_apex(triangulation::VertIdx u, triangulation::VertIdx w, AngleTest&& below) const;
     /// The input segments v lies on (an input vertex: those ending at it).
     std::vector<std::uint32_t> segments_of(triangulation::VertIdx v) const;
     const double* point(triangulation::VertIdx v) const { return xyz_.data() + 3 * std::size_t{v}; }

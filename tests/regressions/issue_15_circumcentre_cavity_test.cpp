@@ -34,7 +34,8 @@ TEST(Issue15, EveryTetrahedronLeftOverTheBoundHasARejectedPoint) {
     refinement.radius_edge_bound = 2;
     const gen::DelaunayRefinement3Result refined =
         gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, refinement);
-    const gen::RefinementQuality3 before = gen::check_refinement_quality_3d(refined.mesh, refinement);
+    const gen::RefinementQuality3 before =
+        gen::check_refinement_quality_3d(refined.mesh, refinement);
     EXPECT_LE(before.over_bound, refined.counters.rejected_points);
     EXPECT_EQ(before.over_volume, 0u);
 
@@ -42,7 +43,8 @@ TEST(Issue15, EveryTetrahedronLeftOverTheBoundHasARejectedPoint) {
     gen::SliverRemoval3Options options;
     options.radius_edge_bound = refinement.radius_edge_bound;
     const gen::SliverRemoval3Result improved = gen::sliver_removal_3d(refined.mesh, options);
-    const gen::RefinementQuality3 after = gen::check_refinement_quality_3d(improved.mesh, refinement);
+    const gen::RefinementQuality3 after =
+        gen::check_refinement_quality_3d(improved.mesh, refinement);
     EXPECT_LE(after.over_bound, before.over_bound);
     EXPECT_LE(after.over_bound, refined.counters.rejected_points);
 }

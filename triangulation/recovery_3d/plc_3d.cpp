@@ -402,6 +402,17 @@ bool strictly_inside_segment_3d(const double* a, const double* b, const double* 
     return false;
 }
 
+/// Adds facet f (once) to `facets` when p, a point of the plane of its triangle (a, b, c) up
+/// to rounding, projects into the triangle in its best coordinate plane.
+void add_facet_holding(const double* a, const double* b, const double* c, const double* p,
+                       std::uint32_t f, std::vector<std::uint32_t>& facets) {
+    const int drop = drop_axis(a, b, c);
+    if (!triangle_contains_2d(project_facet_point(a, drop), project_facet_point(b, drop),
+                              project_facet_point(c, drop), project_facet_point(p, drop)))
+        return;
+    if (std::find(facets.begin(), facets.end(), f) == facets.end()) facets.push_back(f);
+}
+
 /// Where the free vertices on the surface lie: on a segment (its ends, smaller index first),
 /// or in the areas of facets.
 struct SurfacePlacement3 {
@@ -463,15 +474,7 @@ std::vector<SurfacePlacement3> free_vertices_on_surface(const Plc3& plc) {
                 const double* b = plc.point(tv[1]);
                 const double* c = plc.point(tv[2]);
                 if (orient3d(a, b, c, p) != Sign::Zero) continue;
-                const int drop = drop_axis(a, b, c);
-                if (!triangle_contains_2d(
-                        project_facet_point(a, drop), project_facet_point(b, drop),
-                        project_facet_point(c, drop), project_facet_point(p, drop)))
-                    continue;
-                const std::uint32_t f = surface.facets[t];
-                if (std::find(placement.facets.begin(), placement.facets.end(), f) ==
-                    placement.facets.end())
-                    placement.facets.push_back(f);
+                add_facet_holding(a, b, c, p, surface.facets[t], placement.facets);
             }
             if (placement.facets.empty()) continue;
         }
@@ -589,15 +592,7 @@ std::vector<SurfacePlacement3> free_vertices_near_surface(const Plc3& plc) {
                 const double* c = plc.point(tv[2]);
                 const Box3 box = grown_box(p, near_tolerance({p, a, b, c}));
                 if (!boxes_meet(box_of({a, b, c}), box) || !plane_meets_box(a, b, c, box)) continue;
-                const int drop = drop_axis(a, b, c);
-                if (!triangle_contains_2d(
-                        project_facet_point(a, drop), project_facet_point(b, drop),
-                        project_facet_point(c, drop), project_facet_point(p, drop)))
-                    continue;
-                const std::uint32_t f = surface.facets[t];
-                if (std::find(placement.facets.begin(), placement.facets.end(), f) ==
-                    placement.facets.end())
-                    placement.facets.push_back(f);
+                add_facet_holding(a, b, c, p, surface.facets[t], placement.facets);
             }
             if (placement.facets.empty()) continue;
         }
