@@ -516,9 +516,14 @@ class RestrictedDelaunay3 {
         std::vector<Key3> faces;                   ///< subfaces the point splits (crossed, dropped)
         std::uint64_t edge = ~0ull;                ///< the subsegment it splits, if any
         std::unordered_set<std::uint64_t> exempt;  ///< edges inside the facet cavities: may go
+        /// `faces` as a set when there are many (a needle's facet cavity holds the whole facet:
+        /// a scan per cavity face made first_violation quadratic); empty otherwise.
+        std::unordered_set<Key3, Key3Hash> face_set;
     };
+    static constexpr std::size_t kScannedFaces = 32;
 
     bool is_split_face(const Split& split, const Key3& key) const {
+        if (!split.face_set.empty()) return split.face_set.count(key) != 0;
         return std::find(split.faces.begin(), split.faces.end(), key) != split.faces.end();
     }
 
@@ -925,9 +930,17 @@ class RestrictedDelaunay3 {
                       std::vector<Subface>& pieces, std::vector<TetIdx>& seeds, bool grow) const {
         std::vector<Key3> faces = initial;
         // Membership by a scan of `faces` (a facet cavity holds a few subfaces; the node-based
-        // set and maps here were most of refinement's allocations).
-        const auto in_set = [&faces](const Key3& k) {
-            return std::find(faces.begin(), faces.end(), k) != faces.end();
+        // set and maps here were most of refinement's allocations), and by a hash set once it
+        // holds more than kScannedFaces: on a needle's facets every subface's circumcircle holds
+        // the point, the cavity takes the whole facet, and scans made each cavity quadratic
+        // (frontal insertion on a needle at a size 2^20 took 359 s, nearly all in these scans).
+        std::unordered_set<Key3, Key3Hash> indexed;  // faces[0, synced)
+        std::size_t synced = 0;
+        const auto in_set = [&](const Key3& k) {
+            if (faces.size() <= kScannedFaces)
+                return std::find(faces.begin(), faces.end(), k) != faces.end();
+            for (; synced < faces.size(); ++synced) indexed.insert(faces[synced]);
+            return indexed.count(k) != 0;
         };
         for (std::size_t i = 0; grow && i < faces.size(); ++i) {
             const Subface f = subfaces_.at(faces[i]);
@@ -975,6 +988,10 @@ class RestrictedDelaunay3 {
             }
             if (bad == faces.size()) break;
             if (bad < initial.size()) return false;
+            if (bad < synced) {
+                indexed.erase(faces[bad]);
+                --synced;
+            }
             faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(bad));
         }
         // Each vertex starts and ends at most one boundary edge of its facet's cavity.
@@ -993,6 +1010,8 @@ class RestrictedDelaunay3 {
                 if (std::find(seeds.begin(), seeds.end(), t) == seeds.end()) seeds.push_back(t);
         }
         split.faces = std::move(faces);
+        if (split.faces.size() > kScannedFaces)
+            split.face_set.insert(split.faces.begin(), split.faces.end());
         return true;
     }
 
