@@ -524,7 +524,10 @@ class OMeshBuilder {
             }
             std::vector<std::uint32_t> cut_at = height_;
             bool found = false;
-            for (const auto& [a, b] : segments) {
+            for (const auto& segment : segments) {
+                // Named copies, not structured bindings: a lambda below uses them (clang 14
+                // refuses to capture a binding).
+                const VertIdx a = segment[0], b = segment[1];
                 const double *pa = point(a), *pb = point(b);
                 // A vertex within rounding of the segment lies within 2^-40 (1 + 2^-40) of the
                 // ends' largest coordinate of its box: the box widened by 2^-38 of it (its
