@@ -46,7 +46,6 @@ class Refinement final : public RestrictedDelaunay3 {
 
   private:
     DelaunayRefinement3Options options_;
-    SmallInputAngleRule3 small_angles_{out_, m_.xyz, sharp_};
     struct QueuedTet {
         TetIdx t;
         std::array<VertIdx, 4> corners;
@@ -149,7 +148,7 @@ DelaunayRefinement3Result Refinement::run() {
         tet_queue_.pop_front();
         const auto& corners = next.corners;
         if (m_.is_dead(next.t) || m_.tet(next.t) != corners || !is_bad(next.t, corners)) continue;
-        if (!over_volume(next.t, corners) && small_angles_.spares(corners)) {
+        if (!over_volume(next.t, corners) && small_angles_->spares(corners)) {
             ++counters_.small_angle_tets;
             continue;
         }

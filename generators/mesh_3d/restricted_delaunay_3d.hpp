@@ -244,7 +244,9 @@ class RestrictedDelaunay3 {
     /// Facets meeting at a segment at below 60 degrees: their encroachment of each other (and of
     /// the segment between them) splits nothing, since each split would encroach the other.
     SharpFacets3 sharp_;
-    /// Segments meeting at an input vertex at below 30 degrees: a point on one does not split
+    /// The small-input-angle rule on this mesh (its sharp facets sharp_): refinement's sparing
+    /// (SmallInputAngleRule3::spares) and, below, segments meeting at an input vertex at below
+    /// 30 degrees: a point on one does not split
     /// the other's subsegments by encroachment (SmallInputAngleRule3::narrow_angle_pair; a
     /// needle's two long edges 5e-10 radians apart ran 10^6 subsegment splits into the Steiner
     /// budget, 130 s); refinement spares the tetrahedra between them.

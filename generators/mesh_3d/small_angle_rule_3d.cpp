@@ -199,9 +199,10 @@ SmallInputAngleRule3::SmallInputAngleRule3(const tri::ConformingMesh3& mesh,
     }
 }
 
-std::vector<std::uint32_t> SmallInputAngleRule3::segments_of(tri::VertIdx v) const {
+std::span<const std::uint32_t> SmallInputAngleRule3::segments_of(tri::VertIdx v) const {
     if (v < mesh_.input_vertex_count) return at_input_[v];
-    if (mesh_.vertex_feature[v] == tri::VertexFeature3::Segment) return {mesh_.feature_index[v]};
+    if (mesh_.vertex_feature[v] == tri::VertexFeature3::Segment)
+        return {&mesh_.feature_index[v], 1};  // no copy: this is asked per bad tetrahedron
     return {};
 }
 

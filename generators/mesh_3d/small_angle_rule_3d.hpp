@@ -116,7 +116,7 @@ class SmallInputAngleRule3 {
     template <class AngleTest>
     bool meet_at_apex(triangulation::VertIdx u, triangulation::VertIdx w, AngleTest&& below) const;
     /// The input segments v lies on (an input vertex: those ending at it).
-    std::vector<std::uint32_t> segments_of(triangulation::VertIdx v) const;
+    std::span<const std::uint32_t> segments_of(triangulation::VertIdx v) const;
     const double* point(triangulation::VertIdx v) const { return xyz_.data() + 3 * std::size_t{v}; }
 };
 
