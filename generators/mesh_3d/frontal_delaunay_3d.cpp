@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <span>
 #include <string>
@@ -421,6 +422,24 @@ FrontalDelaunay3Result Frontal::run() {
     return result;
 }
 
+constexpr int kCoincident = std::numeric_limits<int>::min();
+
+/// The differences p[k] - p[0] (k = 1 .. n - 1) into d[k - 1], halved and divided by the power
+/// of two that brings the largest into [1, 2), so that no product of them overflows or
+/// underflows at 2^+-600; returns that scale s (a length is |d| 2^s), or kCoincident when the
+/// points coincide.
+int scaled_differences(const double* const* p, unsigned n, Vec* d) {
+    double largest = 0;
+    for (unsigned k = 1; k < n; ++k)
+        for (int i = 0; i < 3; ++i)
+            largest = std::max(largest, std::fabs(p[k][i] / 2 - p[0][i] / 2));
+    if (!(largest > 0)) return kCoincident;
+    const int exponent = std::ilogb(largest);
+    for (unsigned k = 1; k < n; ++k)
+        for (int i = 0; i < 3; ++i) d[k - 1][i] = std::ldexp(p[k][i] / 2 - p[0][i] / 2, -exponent);
+    return exponent + 1;
+}
+
 /// The size's estimate of the Steiner points: the regular tetrahedra of edge h(centroid) that
 /// fill each recovered tetrahedron (h^3 / (6 sqrt 2) each), summed, over about 5 tetrahedra per
 /// vertex; or the surface's points (below), when more. Each tetrahedron's edge vectors are scaled
@@ -438,22 +457,15 @@ double estimate_points(const ConformingMesh3& recovered, const SizeFunction3& si
             p[k] = m.point(m.tets[4 * std::size_t{t} + k]);
             for (int i = 0; i < 3; ++i) centroid[i] += p[k][i] / 4;
         }
-        double largest = 0;
-        for (unsigned k = 1; k < 4; ++k)
-            for (int i = 0; i < 3; ++i)
-                largest = std::max(largest, std::fabs(p[k][i] / 2 - p[0][i] / 2));
-        if (!(largest > 0)) continue;
-        const int exponent = std::ilogb(largest);
         Vec d[3];
-        for (unsigned k = 0; k < 3; ++k)
-            for (int i = 0; i < 3; ++i)
-                d[k][i] = std::ldexp(p[k + 1][i] / 2 - p[0][i] / 2, -exponent);
+        const int scale = scaled_differences(p, 4, d);
+        if (scale == kCoincident) continue;
         const double six_volume = std::fabs(dot(d[0], cross(d[1], d[2])));
         if (!(six_volume > 0)) continue;
-        // Volume = six_volume / 6 * 2^(3 (exponent + 1)) (the halves undone).
+        // Volume = six_volume / 6 * 2^(3 scale).
         const double h = size(centroid[0], centroid[1], centroid[2]);
-        const double log2_count = std::log2(six_volume / 6) + 3.0 * (exponent + 1) -
-                                  3 * std::log2(h) + std::log2(6 * kSqrt2);
+        const double log2_count =
+            std::log2(six_volume / 6) + 3.0 * scale - 3 * std::log2(h) + std::log2(6 * kSqrt2);
         tets += std::exp2(std::min(log2_count, 1000.0));
     }
     // The surface: frontal insertion places points on the subfaces at the size too, about one
@@ -465,43 +477,33 @@ double estimate_points(const ConformingMesh3& recovered, const SizeFunction3& si
     for (std::size_t f = 0; f + 2 < recovered.subfaces.size(); f += 3) {
         const double* p[3] = {m.point(recovered.subfaces[f]), m.point(recovered.subfaces[f + 1]),
                               m.point(recovered.subfaces[f + 2])};
-        double largest = 0;
         Vec centroid{0, 0, 0};
-        for (unsigned k = 0; k < 3; ++k) {
+        for (unsigned k = 0; k < 3; ++k)
             for (int i = 0; i < 3; ++i) centroid[i] += p[k][i] / 3;
-            if (k > 0)
-                for (int i = 0; i < 3; ++i)
-                    largest = std::max(largest, std::fabs(p[k][i] / 2 - p[0][i] / 2));
-        }
-        if (!(largest > 0)) continue;
-        const int exponent = std::ilogb(largest);
         Vec d[2];
-        for (unsigned k = 0; k < 2; ++k)
-            for (int i = 0; i < 3; ++i)
-                d[k][i] = std::ldexp(p[k + 1][i] / 2 - p[0][i] / 2, -exponent);
+        const int scale = scaled_differences(p, 3, d);
+        if (scale == kCoincident) continue;
         const Vec n = cross(d[0], d[1]);
         const double twice_area = std::sqrt(dot(n, n));
         if (!(twice_area > 0)) continue;
-        // Area = twice_area / 2 * 2^(2 (exponent + 1)).
+        // Area = twice_area / 2 * 2^(2 scale).
         const double h = size(centroid[0], centroid[1], centroid[2]);
-        const double log2_count = std::log2(twice_area / 2) + 2.0 * (exponent + 1) -
-                                  2 * std::log2(h) - std::log2(std::sqrt(3.0) / 4) - 1;
+        const double log2_count = std::log2(twice_area / 2) + 2.0 * scale - 2 * std::log2(h) -
+                                  std::log2(std::sqrt(3.0) / 4) - 1;
         surface_points += std::exp2(std::min(log2_count, 1000.0));
     }
     // The segments likewise: a point every h along each subsegment (a needle's facets are thin:
     // its edges 2^31 long at size 4096 ask for 1.5 10^6 points where its area asks for 150).
     double segment_points = 0;
     for (std::size_t e = 0; e + 1 < recovered.subsegments.size(); e += 2) {
-        const double* a = m.point(recovered.subsegments[e]);
-        const double* b = m.point(recovered.subsegments[e + 1]);
-        double largest = 0;
-        for (int i = 0; i < 3; ++i) largest = std::max(largest, std::fabs(b[i] / 2 - a[i] / 2));
-        if (!(largest > 0)) continue;
-        const int exponent = std::ilogb(largest);
-        Vec d;
-        for (int i = 0; i < 3; ++i) d[i] = std::ldexp(b[i] / 2 - a[i] / 2, -exponent);
+        const double* p[2] = {m.point(recovered.subsegments[e]),
+                              m.point(recovered.subsegments[e + 1])};
+        Vec d[1];
+        const int scale = scaled_differences(p, 2, d);
+        if (scale == kCoincident) continue;
+        const double *a = p[0], *b = p[1];
         const double h = size(a[0] / 2 + b[0] / 2, a[1] / 2 + b[1] / 2, a[2] / 2 + b[2] / 2);
-        const double log2_count = std::log2(std::sqrt(dot(d, d))) + (exponent + 1) - std::log2(h);
+        const double log2_count = std::log2(std::sqrt(dot(d[0], d[0]))) + scale - std::log2(h);
         segment_points += std::exp2(std::min(log2_count, 1000.0));
     }
     return std::min(std::max({tets / 5, surface_points, segment_points}), 1e300);

@@ -74,7 +74,8 @@ struct Work {
     /// doubles resolve: tet_finer_than_doubles_resolve_3d); kOverBound otherwise. Sums compared
     /// before and after a change keep the count over the bounds and never trade a spared
     /// tetrahedron for one refinement would have split (the command's exact check,
-    /// check_refinement_quality_3d, then called that a bug: tests/data/rotated/cube_11.poly).
+    /// check_refinement_quality_3d, then called that a bug; regression_issue_15_hostile_inputs_test
+    /// on cube_free_2.poly fails without the small-angle rule here).
     unsigned over_bounds(const Tet& v, const TetCorners& p, double max_volume) const {
         if (max_volume > 0 &&
             predicates::compare_tet_volume_3d(p[0], p[1], p[2], p[3], max_volume) == Sign::Positive)
@@ -187,8 +188,8 @@ std::uint64_t swap_pass(Work& work, const tri::SwapLocks3& locks, SliverRemoval3
                                            work.volume_bound(plan.old[i]));
             const double made_bound = work.volume_bound(plan.old[0]);
             for (unsigned i = 0; i < plan.made_count; ++i)
-                after += work.over_bounds(plan.made[i], corners_of(work.mesh, plan.made[i]),
-                                          made_bound);
+                after +=
+                    work.over_bounds(plan.made[i], corners_of(work.mesh, plan.made[i]), made_bound);
             return after <= before;
         };
     }
