@@ -152,8 +152,7 @@ void run_tetmesh(const TetmeshArguments& arguments) {
                 "free vertices within rounding of the surface (2^-48 of their coordinates) "
                 "made part of it, as if on it: " +
                 names);
-            std::vector<std::string> again = tri::split_nonplanar_facets_3d(plc);
-            split.insert(split.end(), again.begin(), again.end());
+            split.insert(split.end(), near.split_warnings.begin(), near.split_warnings.end());
         }
         for (std::string& warning : split) warning = source + ": " + warning;
         print_warnings(split);

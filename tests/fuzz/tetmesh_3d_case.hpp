@@ -427,8 +427,7 @@ inline TetmeshOutcome run_tetmesh_case(const TetmeshCase& c) {
         out.stage = "split_nonplanar_facets_3d";
         (void)tri::split_nonplanar_facets_3d(plc);
         out.stage = "attach_free_vertices_near_surface_3d";
-        if (!tri::attach_free_vertices_near_surface_3d(plc).vertices.empty())
-            (void)tri::split_nonplanar_facets_3d(plc);
+        (void)tri::attach_free_vertices_near_surface_3d(plc);
         out.stage = "embed_free_vertices_3d";
         tri::embed_free_vertices_3d(plc);
         if (plc.xyz != input_xyz) {

@@ -104,7 +104,6 @@ tri::Plc3 rotated_cube(const std::string& name, int exponent, std::vector<tri::V
     tri::validate_plc_3d_input(plc);
     (void)tri::split_nonplanar_facets_3d(plc);
     attached = tri::attach_free_vertices_near_surface_3d(plc).vertices;
-    if (!attached.empty()) (void)tri::split_nonplanar_facets_3d(plc);
     tri::embed_free_vertices_3d(plc);
     tri::check_surface_closed_3d(plc, tri::validate_plc_3d(plc));
     return plc;

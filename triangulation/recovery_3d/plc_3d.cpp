@@ -918,7 +918,9 @@ FreeVertexEmbedding3 embed_free_vertices_3d(Plc3& plc) {
 }
 
 FreeVertexEmbedding3 attach_free_vertices_near_surface_3d(Plc3& plc) {
-    return apply_placements(plc, free_vertices_near_surface(plc));
+    FreeVertexEmbedding3 attached = apply_placements(plc, free_vertices_near_surface(plc));
+    if (!attached.vertices.empty()) attached.split_warnings = split_nonplanar_facets_3d(plc);
+    return attached;
 }
 
 std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc) {

@@ -61,6 +61,9 @@ struct FreeVertexEmbedding3 {
     std::uint32_t on_segments = 0;  ///< free vertices inserted into the polygon edges they lie on
     std::uint32_t on_facets = 0;    ///< free vertices added to a facet as 1-corner polygons
     std::vector<VertIdx> vertices;  ///< those vertices, in index order
+    /// attach_free_vertices_near_surface_3d: split_nonplanar_facets_3d's warnings for the
+    /// facets the attached vertices bent off their planes
+    std::vector<std::string> split_warnings;
 };
 
 /// Makes every free vertex (one in no facet polygon) that lies on the PLC's surface part of it,
@@ -85,8 +88,9 @@ FreeVertexEmbedding3 embed_free_vertices_3d(Plc3& plc);
 /// the rounding noise of every split point there: whether a point split on the facet beside it
 /// lay above or below it was decided by rounding, so splits beside it were rejected and the
 /// tetrahedra over the unsplit subfaces drove Delaunay refinement into its Steiner budget.
-/// The facets it joins are then no longer planar: split_nonplanar_facets_3d splits them (run it
-/// after this). Exact: orient3d and orient2d at the corners of a box rounded outward, which
+/// The facets it joins are then no longer planar: they are split here by
+/// split_nonplanar_facets_3d (its warnings in split_warnings), so the facets are planar after
+/// it as before. Exact: orient3d and orient2d at the corners of a box rounded outward, which
 /// scales with the input (the same decision at 2^+-600). Vertices beside a corner (the box
 /// holds a segment's end) are left free.
 /// @pre split_nonplanar_facets_3d(plc) passed (the facets are planar).
