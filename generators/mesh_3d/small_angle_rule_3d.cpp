@@ -40,6 +40,25 @@ std::uint64_t pair_key(std::uint32_t f, std::uint32_t g) {
     return (std::uint64_t{f} << 32) | g;
 }
 
+/// The squared distance of c from line ab over |ab|^2, in doubles on differences scaled by a
+/// power of two (the same at 2^+-600): a choice between candidates, never a decision.
+double scaled_distance_to_line(const double* a, const double* b, const double* c) {
+    double largest = 0;
+    for (int k = 0; k < 3; ++k)
+        largest = std::max({largest, std::fabs(a[k]), std::fabs(b[k]), std::fabs(c[k])});
+    if (!(largest > 0)) return 0;
+    const int e = std::ilogb(largest);
+    double u[3], v[3];
+    for (int k = 0; k < 3; ++k) {
+        u[k] = std::ldexp(b[k], -e) - std::ldexp(a[k], -e);
+        v[k] = std::ldexp(c[k], -e) - std::ldexp(a[k], -e);
+    }
+    const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2],
+                 z = u[0] * v[1] - u[1] * v[0];
+    const double uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    return uu > 0 ? (x * x + y * y + z * z) / uu : 0;
+}
+
 void sort_unique(std::vector<std::uint32_t>& v) {
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
@@ -103,11 +122,21 @@ SharpFacets3::SharpFacets3(const tri::ConformingMesh3& mesh, const std::vector<d
                 return compare_half_planes(a, b, point(c), point(z), kRef90) == Sign::Negative;
             };
             if (std::any_of(found.begin(), found.end(), same_side)) continue;
+            // The input vertex of the facet on that side farthest from the segment's line (a
+            // choice in doubles; the decisions are exact): a vertex within rounding of the line
+            // (a free vertex attached to the segment's neighbour on the same cube edge, an ulp
+            // off it) would give a half-plane rounding turns anywhere.
+            tri::VertIdx best = tri::kNone;
+            double best_distance = -1;
             for (const tri::VertIdx c : facet_inputs[f]) {
                 if (tri::collinear_3d(a, b, point(c)) || !same_side(c)) continue;
-                found.push_back(c);
-                break;
+                const double distance = scaled_distance_to_line(a, b, point(c));
+                if (distance > best_distance) {
+                    best_distance = distance;
+                    best = c;
+                }
             }
+            if (best != tri::kNone) found.push_back(best);
         }
     }
     for (const auto& [key, reps] : sides) segment_facets_[key.first].push_back(key.second);
