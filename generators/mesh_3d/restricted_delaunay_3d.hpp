@@ -34,6 +34,7 @@
 #include "predicates/insphere.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/tet_quality_3d.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
 #include "triangulation/mesh/facet_projection_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
 #include "triangulation/mesh/plc_3d.hpp"
@@ -1086,7 +1087,15 @@ class RestrictedDelaunay3 {
             std::vector<TetIdx> seeds;
             const VertIdx v = m_.vertex_count();
             std::vector<Subface> pieces;
+            // The facet cavity grows from the subface holding c (both subfaces at an edge c lies
+            // on); when that fails, it is the starting subfaces alone. A point within rounding
+            // of an edge that is not a subsegment (in the projection; the 2D chain rule's square
+            // of half-width 2^-40 of the point) tries both subfaces at that edge before the one
+            // alone: the centre of four cocircular points (a square's edge midpoints) rounded an
+            // ulp off their diagonal went into one subface alone, and the other's centre, an ulp
+            // away, made an edge of 1e-16 (a rotated cube).
             std::vector<Key3> initial{sorted3(o[0], o[1], o[2])};
+            std::vector<Key3> beside;
             if (zeros == 1) {
                 const VertIdx x = o[zero_edge], y = o[(zero_edge + 1) % 3];
                 if (subsegments_.count(edge_key(x, y)) != 0) {
@@ -1095,13 +1104,26 @@ class RestrictedDelaunay3 {
                     return false;
                 }
                 initial = subfaces_on_edge(x, y);
+            } else {
+                const auto cp = triangulation::project_facet_point(c.data(), drop);
+                for (int i = 0; i < 3 && beside.empty(); ++i) {
+                    const VertIdx x = o[i], y = o[(i + 1) % 3];
+                    if (subsegments_.count(edge_key(x, y)) != 0) continue;
+                    const auto xp = triangulation::project_facet_point(point(x), drop);
+                    const auto yp = triangulation::project_facet_point(point(y), drop);
+                    if (predicates::within_rounding_of_segment(cp.data(), xp.data(), yp.data()))
+                        beside = subfaces_on_edge(x, y);
+                }
             }
+            const std::pair<const std::vector<Key3>*, bool> attempts[] = {
+                {&initial, true}, {&beside, true}, {&beside, false}, {&initial, false}};
             bool valid = false;
-            for (const bool grow : {true, false}) {
+            for (const auto& [start, grow] : attempts) {
+                if (start->empty()) continue;
                 split = Split{};
                 pieces.clear();
                 seeds.clear();
-                if (facet_cavity(c.data(), initial, v, split, pieces, seeds, grow) &&
+                if (facet_cavity(c.data(), *start, v, split, pieces, seeds, grow) &&
                     build_cavity(c.data(), seeds, split)) {
                     valid = true;
                     break;
