@@ -251,17 +251,12 @@ std::array<VertIdx, 3> checked_reference_corners(const Plc3& plc, std::uint32_t 
     return ref;
 }
 
-/// A corner of facet f off the plane of its reference corners (exact orient3d), or kNone.
-VertIdx off_plane_corner(const Plc3& plc, std::uint32_t f, const std::array<VertIdx, 3>& ref) {
-    const double* a = plc.point(ref[0]);
-    const double* b = plc.point(ref[1]);
-    const double* c = plc.point(ref[2]);
-    for (const auto& polygon : plc.facets[f].polygons) {
-        for (const VertIdx v : polygon)
-            if (orient3d(a, b, c, plc.point(v)) != Sign::Zero) return v;
-    }
-    return kNone;
-}
+/// A corner of facet f farther from the plane of its reference corners than rounding explains
+/// (kNone when every corner is within rounding of it; see off_plane_beyond_rounding below);
+/// `plane`: the three corners whose plane it is, in index order.
+VertIdx off_plane_beyond_rounding(const Plc3& plc, std::uint32_t f,
+                                  const std::array<VertIdx, 3>& ref,
+                                  std::array<VertIdx, 3>& plane);
 
 /// The triangles (global corners, 3 per triangle) of facet f's polygons and holes projected
 /// along axis `drop`: the constrained Delaunay triangulation of the projection, no vertex added,
@@ -340,11 +335,12 @@ void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out)
     const Names names{plc};
     const Facet3& facet = plc.facets[f];
     const auto ref = checked_reference_corners(plc, f);
-    const VertIdx off = off_plane_corner(plc, f, ref);
+    std::array<VertIdx, 3> corners{};
+    const VertIdx off = off_plane_beyond_rounding(plc, f, ref, corners);
     if (off != kNone) {
         fail(names.facet(f) + " is not planar: vertex " + names.vertex(off) +
-             " is off the plane of vertices " + names.vertex(ref[0]) + ", " + names.vertex(ref[1]) +
-             ", " + names.vertex(ref[2]));
+             " is off the plane of vertices " + names.vertex(corners[0]) + ", " +
+             names.vertex(corners[1]) + ", " + names.vertex(corners[2]));
     }
     if (facet.polygons.size() == 1 && facet.polygons[0].size() == 3 && facet.holes.empty()) {
         // A triangle (STL, OFF, most .smesh facets) is its own triangulation; it is the
@@ -546,6 +542,89 @@ bool segment_meets_box(const double* a, const double* b, const Box3& box) {
         if (!(negative && positive)) return false;
     }
     return true;
+}
+
+/// Three corners of facet f spanning a wide triangle, whose plane rounding tilts least: the
+/// corner farthest from the first, the one farthest from that, then the one farthest from
+/// their line. A choice (doubles on coordinates scaled by a power of two: the same at
+/// 2^+-600), not a decision; `ref` (the reference corners) when the doubles see the corners
+/// collinear.
+std::array<VertIdx, 3> wide_corners(const Plc3& plc, std::uint32_t f,
+                                    const std::array<VertIdx, 3>& ref) {
+    std::vector<VertIdx> corners;
+    for (const auto& polygon : plc.facets[f].polygons)
+        corners.insert(corners.end(), polygon.begin(), polygon.end());
+    double largest = 0;
+    for (const VertIdx v : corners)
+        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(plc.point(v)[k]));
+    if (!(largest > 0)) return ref;
+    const int e = std::ilogb(largest);
+    const auto difference = [&](VertIdx u, VertIdx w) {
+        std::array<double, 3> d{};
+        for (int k = 0; k < 3; ++k)
+            d[k] = std::ldexp(plc.point(w)[k], -e) - std::ldexp(plc.point(u)[k], -e);
+        return d;
+    };
+    const auto norm2 = [](const std::array<double, 3>& d) {
+        return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    };
+    const auto farthest = [&](VertIdx from) {
+        VertIdx best = from;
+        double best_d = 0;
+        for (const VertIdx v : corners) {
+            const double d = norm2(difference(from, v));
+            if (d > best_d) {
+                best_d = d;
+                best = v;
+            }
+        }
+        return best;
+    };
+    const VertIdx a = farthest(corners.front());
+    const VertIdx b = farthest(a);
+    const std::array<double, 3> ab = difference(a, b);
+    VertIdx c = kNone;
+    double best = 0;
+    for (const VertIdx v : corners) {
+        const std::array<double, 3> av = difference(a, v);
+        const std::array<double, 3> cross{ab[1] * av[2] - ab[2] * av[1],
+                                          ab[2] * av[0] - ab[0] * av[2],
+                                          ab[0] * av[1] - ab[1] * av[0]};
+        const double d = norm2(cross);
+        if (d > best) {
+            best = d;
+            c = v;
+        }
+    }
+    if (c == kNone || a == b) return ref;
+    return {a, b, c};
+}
+
+/// A facet corner within 2^-46 of the largest coordinate magnitude (of it and the reference
+/// corners; 4 times near_tolerance, so that a vertex attached to a facet by
+/// attach_free_vertices_near_surface_3d keeps it whole) of the plane of three corners spanning a wide triangle
+/// (wide_corners) counts as on it: a rotated box's facet, its corners rounded an ulp off one plane, stays one facet,
+/// triangulated in its projection like a planar one, its inner edges free to flip (splitting it
+/// into triangles made their diagonals segments: small input angles the input does not have,
+/// where refinement ran into its Steiner budget). Exact (orient3d at the corners of a box
+/// rounded outward, which scales with the input).
+VertIdx off_plane_beyond_rounding(const Plc3& plc, std::uint32_t f,
+                                  const std::array<VertIdx, 3>& ref,
+                                  std::array<VertIdx, 3>& plane) {
+    plane = wide_corners(plc, f, ref);
+    const double* a = plc.point(plane[0]);
+    const double* b = plc.point(plane[1]);
+    const double* c = plc.point(plane[2]);
+    std::sort(plane.begin(), plane.end());
+    for (const auto& polygon : plc.facets[f].polygons) {
+        for (const VertIdx v : polygon) {
+            const double* p = plc.point(v);
+            if (orient3d(a, b, c, p) == Sign::Zero) continue;
+            if (!plane_meets_box(a, b, c, grown_box(p, 4 * near_tolerance({p, a, b, c}))))
+                return v;
+        }
+    }
+    return kNone;
 }
 
 /// The free vertices off the surface but within rounding of it (near_tolerance): inside the
@@ -930,7 +1009,8 @@ std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc) {
     std::vector<std::uint64_t> added_origin;
     for (std::uint32_t f = 0; f < facet_count; ++f) {
         const auto ref = checked_reference_corners(plc, f);
-        const VertIdx off = off_plane_corner(plc, f, ref);
+        std::array<VertIdx, 3> corners{};
+        const VertIdx off = off_plane_beyond_rounding(plc, f, ref, corners);
         if (off == kNone) continue;
         const FacetPlane plane = facet_plane(plc, plc.facets[f]);
         const std::vector<VertIdx> triangles =
@@ -938,8 +1018,8 @@ std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc) {
         const Names names{plc};
         static constexpr const char* kPlanes[3] = {"yz", "zx", "xy"};
         warnings.push_back(names.facet(f) + " is not planar (vertex " + names.vertex(off) +
-                           " is off the plane of vertices " + names.vertex(ref[0]) + ", " +
-                           names.vertex(ref[1]) + ", " + names.vertex(ref[2]) +
+                           " is off the plane of vertices " + names.vertex(corners[0]) + ", " +
+                           names.vertex(corners[1]) + ", " + names.vertex(corners[2]) +
                            "): split into the " + std::to_string(triangles.size() / 3) +
                            " triangles of its constrained Delaunay triangulation in the " +
                            kPlanes[plane.drop] + " plane, each a facet with its marker");

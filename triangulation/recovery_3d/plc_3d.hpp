@@ -38,8 +38,12 @@ void validate_plc_3d_input(const Plc3& plc);
 
 /// Triangulates every facet in its plane by the 2D constrained Delaunay triangulation
 /// (triangulation/constrained) after dropping the coordinate of the largest normal component.
+/// A facet whose corners lie within rounding of one plane (2^-46 of their largest coordinate
+/// magnitude from the plane of three corners spanning a wide triangle: a rotated box's facet,
+/// its corners rounded an ulp off it) counts as planar and is triangulated the same way.
 /// @pre validate_plc_3d_input(plc) passed.
-/// @throws InputError naming the facet: not coplanar (with the vertex off the plane), degenerate
+/// @throws InputError naming the facet: not coplanar beyond rounding (with the vertex off the
+///         plane), degenerate
 ///         (no polygon of 3 corners, collinear corners, a polygon repeating a vertex, no area
 ///         left after the holes), polygons that cross (naming the two edges), a hole point on
 ///         a polygon edge, a corner outside the facet's area (a dangling point or segment).
@@ -88,16 +92,19 @@ FreeVertexEmbedding3 embed_free_vertices_3d(Plc3& plc);
 /// the rounding noise of every split point there: whether a point split on the facet beside it
 /// lay above or below it was decided by rounding, so splits beside it were rejected and the
 /// tetrahedra over the unsplit subfaces drove Delaunay refinement into its Steiner budget.
-/// The facets it joins are then no longer planar: they are split here by
-/// split_nonplanar_facets_3d (its warnings in split_warnings), so the facets are planar after
-/// it as before. Exact: orient3d and orient2d at the corners of a box rounded outward, which
+/// A facet it joins stays within rounding of its plane as a rule (the vertex is within 2^-48
+/// of it, the facet's tolerance is 2^-46); one that does not is split here by
+/// split_nonplanar_facets_3d (its warnings in split_warnings), so the facets are planar (within
+/// rounding) after it as before. Exact: orient3d and orient2d at the corners of a box rounded outward, which
 /// scales with the input (the same decision at 2^+-600). Vertices beside a corner (the box
 /// holds a segment's end) are left free.
 /// @pre split_nonplanar_facets_3d(plc) passed (the facets are planar).
 FreeVertexEmbedding3 attach_free_vertices_near_surface_3d(Plc3& plc);
 
-/// Replaces every facet whose corners do not lie in one plane (exact orient3d; a facet of a
-/// rotated box whose corners were rounded to doubles is one) by the triangles of its polygons'
+/// Replaces every facet whose corners do not lie within rounding of one plane (the rule of
+/// triangulate_facets_3d, exact; a facet of a rotated box whose corners were rounded to
+/// doubles is within it and stays whole: splitting it made its diagonals segments, small input
+/// angles the input does not have) by the triangles of its polygons'
 /// constrained Delaunay triangulation in the coordinate plane that its first three
 /// non-collinear corners project to best (its holes removed, no vertex added), each triangle a
 /// facet with the facet's marker and origin; the first keeps the facet's index, the others are
