@@ -17,6 +17,7 @@
 #include "io/plc_format.hpp"
 #include "tests/support/error_message.hpp"
 #include "tests/support/plcs_3d.hpp"
+#include "triangulation/checks/quality_3d.hpp"
 #include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
 #include "triangulation/recovery_3d/plc_3d.hpp"
 
@@ -177,5 +178,47 @@ TEST(Issue15, issue_15_sliver_removal_keeps_the_small_angle_rule) {
             gen::check_refinement_quality_3d(improved.mesh, options);
         EXPECT_EQ(quality.over_bound, 0u) << exponent;
         EXPECT_EQ(quality.over_volume, 0u) << exponent;
+    }
+}
+
+TEST(Issue15, issue_15_rotated_facets_stay_whole) {
+    // cube_free_4, 5, 6 (scripts/rotated_cubes.py 33, 11, 6 at 2^0): free vertices attached an
+    // ulp off facets and edges. When every facet an ulp off its plane was split into triangles,
+    // their diagonals became segments, and a free vertex 0.064 from a cube edge made facet
+    // corners of 5.7 and 10 degrees: refinement ran a shell cascade into the corner, then about
+    // 70,000 splits within 1e-7 of it, into the Steiner budget (1,011,000 insertions, 57 s;
+    // cube_free_5 past 60 s; cube_free_6 ended with tetrahedra spared as sharp, 0.57 degrees).
+    // Facets within rounding of a plane now stay whole: each meshes with under 1,000 vertices,
+    // no tetrahedron over a bound or spared, and at least 15 degrees after sliver removal.
+    for (const char* name : {"cube_free_4.poly", "cube_free_5.poly", "cube_free_6.poly"}) {
+        for (const int exponent : {0, 300, -300}) {
+            tri::Plc3 input = io::plc_from_file(io::read_plc(
+                std::string(EXACTMESH_SOURCE_DIR) + "/tests/data/rotated/" + name));
+            input = tri::scaled(input, exponent);
+            tri::validate_plc_3d_input(input);
+            EXPECT_TRUE(tri::split_nonplanar_facets_3d(input).empty()) << name << exponent;
+            std::vector<tri::VertIdx> attached;
+            const tri::Plc3 plc = rotated_cube(name, exponent, attached);
+            EXPECT_EQ(attached.size(), 2u) << name << exponent;
+            EXPECT_EQ(plc.facets.size(), 6u) << name << exponent;  // none split
+            gen::DelaunayRefinement3Options options;
+            options.max_volume = std::ldexp(0.0005, 3 * exponent);
+            options.max_steiner_points = 20000;
+            const auto refined =
+                gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
+            EXPECT_LT(refined.mesh.mesh.vertex_count(), 1000u) << name << exponent;
+            gen::SliverRemoval3Options sliver;
+            sliver.radius_edge_bound = options.radius_edge_bound;
+            sliver.max_volume = options.max_volume;
+            const auto improved = gen::sliver_removal_3d(refined.mesh, sliver);
+            const gen::RefinementQuality3 quality =
+                gen::check_refinement_quality_3d(improved.mesh, options);
+            EXPECT_EQ(quality.over_bound + quality.over_volume + quality.small_angle +
+                          quality.unresolvable,
+                      0u)
+                << name << exponent;
+            EXPECT_GE(tri::quality_stats_3d(improved.mesh.mesh).min_dihedral_degrees, 15.0)
+                << name << exponent;
+        }
     }
 }
