@@ -55,11 +55,16 @@ tri::Plc3 split_along(tri::Plc3 plc, unsigned diagonals) {
     return plc;
 }
 
+/// `exactmesh tetmesh --radius-edge 2` without sliver removal.
+gen::DelaunayRefinement3Result refined_at_2(const tri::Plc3& plc,
+                                            gen::DelaunayRefinement3Options& refinement) {
+    refinement.radius_edge_bound = 2;
+    return gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, refinement);
+}
+
 void expect_every_tetrahedron_over_the_bound_rejected(const tri::Plc3& plc, unsigned diagonals) {
     gen::DelaunayRefinement3Options refinement;
-    refinement.radius_edge_bound = 2;
-    const gen::DelaunayRefinement3Result refined =
-        gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, refinement);
+    const gen::DelaunayRefinement3Result refined = refined_at_2(plc, refinement);
     const gen::RefinementQuality3 before =
         gen::check_refinement_quality_3d(refined.mesh, refinement);
     EXPECT_LE(before.over_bound, refined.counters.rejected_points) << diagonals;
@@ -89,9 +94,7 @@ TEST(Issue15, ARotatedCubeKeptWholeMeetsTheBound) {
     tri::Plc3 plc = cube_11();
     EXPECT_TRUE(tri::split_nonplanar_facets_3d(plc).empty());
     gen::DelaunayRefinement3Options refinement;
-    refinement.radius_edge_bound = 2;
-    const gen::DelaunayRefinement3Result refined =
-        gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, refinement);
+    const gen::DelaunayRefinement3Result refined = refined_at_2(plc, refinement);
     const gen::RefinementQuality3 quality =
         gen::check_refinement_quality_3d(refined.mesh, refinement);
     EXPECT_EQ(quality.over_bound, 0u);

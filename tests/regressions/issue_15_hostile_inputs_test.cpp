@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -110,6 +111,30 @@ tri::Plc3 rotated_cube(const std::string& name, int exponent, std::vector<tri::V
     return plc;
 }
 
+/// `exactmesh tetmesh --max-volume V` on a prepared PLC: recovery, refinement (at most
+/// `max_steiner` points; 0: the default budget), sliver removal with the same bounds.
+struct Meshed3 {
+    std::uint32_t refined_vertices = 0;
+    tri::ConformingMesh3 mesh;
+    gen::RefinementQuality3 quality;
+};
+Meshed3 mesh_with_volume_bound(const tri::Plc3& plc, double max_volume,
+                               std::uint64_t max_steiner = 0) {
+    gen::DelaunayRefinement3Options options;
+    options.max_volume = max_volume;
+    options.max_steiner_points = max_steiner;
+    const auto refined =
+        gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
+    gen::SliverRemoval3Options sliver;
+    sliver.radius_edge_bound = options.radius_edge_bound;
+    sliver.max_volume = options.max_volume;
+    Meshed3 out;
+    out.refined_vertices = refined.mesh.mesh.vertex_count();
+    out.mesh = gen::sliver_removal_3d(refined.mesh, sliver).mesh;
+    out.quality = gen::check_refinement_quality_3d(out.mesh, options);
+    return out;
+}
+
 }  // namespace
 
 TEST(Issue15, issue_15_free_vertex_an_ulp_off_a_facet_is_part_of_it) {
@@ -166,18 +191,9 @@ TEST(Issue15, issue_15_sliver_removal_keeps_the_small_angle_rule) {
         std::vector<tri::VertIdx> attached;
         const tri::Plc3 plc = rotated_cube("cube_free_2.poly", exponent, attached);
         EXPECT_EQ(attached, (std::vector<tri::VertIdx>{8})) << exponent;
-        gen::DelaunayRefinement3Options options;
-        options.max_volume = std::ldexp(0.0005, 3 * exponent);
-        const auto refined =
-            gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
-        gen::SliverRemoval3Options sliver;
-        sliver.radius_edge_bound = options.radius_edge_bound;
-        sliver.max_volume = options.max_volume;
-        const auto improved = gen::sliver_removal_3d(refined.mesh, sliver);
-        const gen::RefinementQuality3 quality =
-            gen::check_refinement_quality_3d(improved.mesh, options);
-        EXPECT_EQ(quality.over_bound, 0u) << exponent;
-        EXPECT_EQ(quality.over_volume, 0u) << exponent;
+        const Meshed3 meshed = mesh_with_volume_bound(plc, std::ldexp(0.0005, 3 * exponent));
+        EXPECT_EQ(meshed.quality.over_bound, 0u) << exponent;
+        EXPECT_EQ(meshed.quality.over_volume, 0u) << exponent;
     }
 }
 
@@ -201,23 +217,15 @@ TEST(Issue15, issue_15_rotated_facets_stay_whole) {
             const tri::Plc3 plc = rotated_cube(name, exponent, attached);
             EXPECT_EQ(attached.size(), 2u) << name << exponent;
             EXPECT_EQ(plc.facets.size(), 6u) << name << exponent;  // none split
-            gen::DelaunayRefinement3Options options;
-            options.max_volume = std::ldexp(0.0005, 3 * exponent);
-            options.max_steiner_points = 20000;
-            const auto refined =
-                gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
-            EXPECT_LT(refined.mesh.mesh.vertex_count(), 1000u) << name << exponent;
-            gen::SliverRemoval3Options sliver;
-            sliver.radius_edge_bound = options.radius_edge_bound;
-            sliver.max_volume = options.max_volume;
-            const auto improved = gen::sliver_removal_3d(refined.mesh, sliver);
-            const gen::RefinementQuality3 quality =
-                gen::check_refinement_quality_3d(improved.mesh, options);
+            const Meshed3 meshed =
+                mesh_with_volume_bound(plc, std::ldexp(0.0005, 3 * exponent), 20000);
+            EXPECT_LT(meshed.refined_vertices, 1000u) << name << exponent;
+            const gen::RefinementQuality3& quality = meshed.quality;
             EXPECT_EQ(quality.over_bound + quality.over_volume + quality.small_angle +
                           quality.unresolvable,
                       0u)
                 << name << exponent;
-            EXPECT_GE(tri::quality_stats_3d(improved.mesh.mesh).min_dihedral_degrees, 15.0)
+            EXPECT_GE(tri::quality_stats_3d(meshed.mesh.mesh).min_dihedral_degrees, 15.0)
                 << name << exponent;
         }
     }
