@@ -226,8 +226,11 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
         // A close feature faces only part of t (the outer wall's triangle beside a small
         // hole): t is sampled at the centres of its k^2 congruent sub-triangles, each with
         // the distance from its centre to the near triangles (capped and floored as f).
-        const int k = std::clamp(static_cast<int>(std::ceil(longest[t] / std::sqrt(nearest))), 1,
-                                 kMaxSamplesPerSide);
+        // Clamped as a double: the ratio can exceed any int (1.9e11 from a fuzzed PLC, an
+        // undefined conversion), or be infinite when the nearest distance is 0.
+        const double ratio = std::ceil(longest[t] / std::sqrt(nearest));
+        const int k = !(ratio < kMaxSamplesPerSide) ? kMaxSamplesPerSide
+                                                    : std::max(1, static_cast<int>(ratio));
         const double piece = area / (static_cast<double>(k) * k);
         auto sample = [&](double a, double b) {
             const Vec p = {triangles[t][0][0] + a * e1[0] + b * e2[0],
