@@ -54,6 +54,20 @@ PointKey point_key(const double* p) {
     return k;
 }
 
+/// Whether p and q differ in every coordinate by at most 2^-44 of `magnitude` (the largest
+/// coordinate magnitude of the points they were constructed from: their rounding noise scales
+/// with it, not with their own size; a hexagon's centre at the origin is a circumcentre of
+/// about 1e-16 computed from corners of about 1). A choice of which points to add, not a
+/// validity decision: the differences are taken in doubles (their rounding scales with the
+/// input: the same answer at 2^+-600; an overflow to infinity answers false, as it should).
+bool within_rounding_3d(const double* p, const double* q, double magnitude) {
+    if (!(magnitude > 0)) return true;
+    const double threshold = std::ldexp(1.0, std::ilogb(magnitude) - 44);
+    for (int k = 0; k < 3; ++k)
+        if (std::max(p[k], q[k]) - std::min(p[k], q[k]) > threshold) return false;
+    return true;
+}
+
 struct Subsegment {
     VertIdx a, b;
     std::uint32_t segment;
@@ -477,6 +491,7 @@ class Recovery {
         for (std::uint32_t f = 0; f < plc_.facets.size(); ++f) {
             FacetTriangulation facet = triangulate_facet(f, by_segment, facet_subs);
             const int drop = planes_[f].drop;
+            const std::size_t facet_pending = pending.size();
             match_mesh_faces(facet, facet_subs, drop);
             bool swept = false, vertex_encroached = false;
             std::set<std::pair<double, double>> projections;
@@ -534,6 +549,21 @@ class Recovery {
                     return projections.count({pq[0], pq[1]}) != 0;
                 };
                 if (projected_taken(next.p)) continue;
+                // Cocircular subfaces (a regular polygon's triangles, a square's) share their
+                // circumcentre, rounded differently for each: one point for them this round,
+                // not several an ulp apart (a rotated hexagonal prism got two Steiner points
+                // 4e-16 apart, an edge no refinement can improve).
+                double magnitude = 0;
+                for (const VertIdx corner : {a, b, c})
+                    for (int k = 0; k < 3; ++k)
+                        magnitude = std::max(magnitude, std::fabs(point(corner)[k]));
+                const auto near_pending = [&](const Pending& other) {
+                    return other.facet == f &&
+                           within_rounding_3d(next.p.data(), other.p.data(), magnitude);
+                };
+                if (std::any_of(pending.begin() + static_cast<std::ptrdiff_t>(facet_pending),
+                                pending.end(), near_pending))
+                    continue;
                 const PointKey key = point_key(next.p.data());
                 if (points_.count(key) != 0 || !pending_keys.insert(key).second) continue;
                 const auto pq = project_facet_point(next.p.data(), drop);
