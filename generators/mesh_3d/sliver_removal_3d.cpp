@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <numeric>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -17,7 +19,9 @@
 #include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/tet_quality_3d.hpp"
+#include "triangulation/mesh/facet_projection_3d.hpp"
 #include "triangulation/mesh/flip_3d.hpp"
+#include "triangulation/mesh/vertex_keys_3d.hpp"
 #include "triangulation/modification/edge_face_swap_3d.hpp"
 
 namespace exactmesh::generators {
@@ -532,6 +536,158 @@ std::uint64_t smooth_pass(Work& work, const std::vector<tri::VertexFeature3>& fe
 
 }  // namespace
 
+// ---- Folds of a facet ----
+
+/// Removes the tetrahedra whose two boundary faces are subfaces of one facet sharing an edge
+/// that is no subsegment ("folds": flat across a facet whose corners are within rounding of a
+/// plane, not in it, so no flip can reach them: both faces are constrained). Each becomes two
+/// subfaces, its other two faces, when (exact) its edge ab is in no other tetrahedron, the
+/// opposite edge cd in no subface, and both new subfaces have, in every coordinate projection
+/// where the two old ones agree strictly, that same strict orientation: then they tile the
+/// same quadrilateral of the facet's projection, which is what its exact check asks. The
+/// boundary moves by the tetrahedron's volume, within rounding of the facet (the facet is
+/// one only within rounding: any triangulation of its corners is as good). Returns the count.
+std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
+    auto& m = conforming.mesh;
+    const TetIdx count = m.tet_count();
+    std::unordered_map<tri::Key3, std::size_t, tri::Key3Hash> subface_of;
+    std::unordered_map<std::uint64_t, unsigned> subface_edges;
+    for (std::size_t i = 0; 3 * i + 2 < conforming.subfaces.size(); ++i) {
+        const VertIdx* f = &conforming.subfaces[3 * i];
+        subface_of.emplace(tri::sorted3(f[0], f[1], f[2]), i);
+        for (unsigned k = 0; k < 3; ++k) ++subface_edges[tri::edge_key(f[k], f[(k + 1) % 3])];
+    }
+    std::unordered_set<std::uint64_t> subsegments;
+    for (std::size_t i = 0; i + 1 < conforming.subsegments.size(); i += 2)
+        subsegments.insert(tri::edge_key(conforming.subsegments[i], conforming.subsegments[i + 1]));
+    // Tetrahedra per edge, for "ab in no other tetrahedron".
+    std::unordered_map<std::uint64_t, unsigned> edge_tets;
+    for (TetIdx t = 0; t < count; ++t) {
+        const VertIdx* v = &m.tets[4 * std::size_t{t}];
+        for (unsigned i = 0; i < 4; ++i)
+            for (unsigned j = i + 1; j < 4; ++j) ++edge_tets[tri::edge_key(v[i], v[j])];
+    }
+    std::vector<std::uint8_t> removed(count, 0);
+    std::vector<std::size_t> dropped_subfaces;
+    std::vector<VertIdx> added_subfaces;
+    std::vector<std::uint32_t> added_facets;
+    std::uint64_t folds = 0;
+    for (TetIdx t = 0; t < count; ++t) {
+        const VertIdx* v = &m.tets[4 * std::size_t{t}];
+        std::array<std::size_t, 2> subs{};
+        std::array<unsigned, 2> opposite{};
+        unsigned found = 0;
+        for (unsigned k = 0; k < 4 && found <= 2; ++k) {
+            if (m.neighbors[4 * std::size_t{t} + k] != kNone) continue;
+            const auto it = subface_of.find(
+                tri::sorted3(v[(k + 1) % 4], v[(k + 2) % 4], v[(k + 3) % 4]));
+            if (it == subface_of.end()) continue;
+            if (found < 2) {
+                subs[found] = it->second;
+                opposite[found] = k;
+            }
+            ++found;
+        }
+        if (found != 2) continue;
+        const std::uint32_t facet = conforming.subface_facet[subs[0]];
+        if (conforming.subface_facet[subs[1]] != facet) continue;
+        // The subfaces miss c and d (the opposite corners); they share a and b.
+        const VertIdx c = v[opposite[0]], d = v[opposite[1]];
+        VertIdx a = kNone, b = kNone;
+        for (unsigned k = 0; k < 4; ++k) {
+            if (k == opposite[0] || k == opposite[1]) continue;
+            (a == kNone ? a : b) = v[k];
+        }
+        const std::uint64_t ab = tri::edge_key(a, b), cd = tri::edge_key(c, d);
+        if (subsegments.count(ab) != 0 || edge_tets.at(ab) != 1 || subface_edges.count(cd) != 0)
+            continue;
+        // Neighbours across the two new subfaces must stay: no two folds side by side.
+        bool next_to_removed = false;
+        for (unsigned k = 0; k < 4; ++k) {
+            const TetIdx u = m.neighbors[4 * std::size_t{t} + k];
+            next_to_removed = next_to_removed || (u != kNone && u < t && removed[u]);
+        }
+        if (next_to_removed) continue;
+        const VertIdx* s0 = &conforming.subfaces[3 * subs[0]];
+        const VertIdx* s1 = &conforming.subfaces[3 * subs[1]];
+        std::array<std::array<VertIdx, 3>, 2> fresh{{{a, c, d}, {b, c, d}}};
+        // Each new subface's corner order is chosen on the first projection where the old two
+        // agree; every such projection must then agree with it.
+        bool oriented = false, ok = true;
+        for (int drop = 0; drop < 3 && ok; ++drop) {
+            const Sign o0 =
+                tri::projected_orient(m.point(s0[0]), m.point(s0[1]), m.point(s0[2]), drop);
+            const Sign o1 =
+                tri::projected_orient(m.point(s1[0]), m.point(s1[1]), m.point(s1[2]), drop);
+            if (o0 == Sign::Zero || o0 != o1) continue;
+            for (auto& f : fresh) {
+                Sign o = tri::projected_orient(m.point(f[0]), m.point(f[1]), m.point(f[2]), drop);
+                if (!oriented && o != Sign::Zero && o != o0) {
+                    std::swap(f[1], f[2]);
+                    o = o0;
+                }
+                ok = ok && o == o0;
+            }
+            oriented = true;
+        }
+        if (!oriented || !ok) continue;
+        removed[t] = 1;
+        ++folds;
+        dropped_subfaces.push_back(subs[0]);
+        dropped_subfaces.push_back(subs[1]);
+        for (const auto& f : fresh) {
+            added_subfaces.insert(added_subfaces.end(), f.begin(), f.end());
+            added_facets.push_back(facet);
+            for (unsigned k = 0; k < 3; ++k) ++subface_edges[tri::edge_key(f[k], f[(k + 1) % 3])];
+        }
+    }
+    if (folds == 0) return 0;
+    // The subfaces: the dropped ones out, the new ones appended.
+    std::sort(dropped_subfaces.begin(), dropped_subfaces.end());
+    std::vector<VertIdx> subfaces;
+    std::vector<std::uint32_t> facets;
+    for (std::size_t i = 0; i < conforming.subface_facet.size(); ++i) {
+        if (std::binary_search(dropped_subfaces.begin(), dropped_subfaces.end(), i)) continue;
+        subfaces.insert(subfaces.end(), conforming.subfaces.begin() + 3 * i,
+                        conforming.subfaces.begin() + 3 * i + 3);
+        facets.push_back(conforming.subface_facet[i]);
+    }
+    subfaces.insert(subfaces.end(), added_subfaces.begin(), added_subfaces.end());
+    facets.insert(facets.end(), added_facets.begin(), added_facets.end());
+    conforming.subfaces = std::move(subfaces);
+    conforming.subface_facet = std::move(facets);
+    // The tetrahedra: compacted, neighbours renumbered (kNone across a removed one).
+    std::vector<TetIdx> renumber(count, kNone);
+    TetIdx next = 0;
+    for (TetIdx t = 0; t < count; ++t)
+        if (!removed[t]) renumber[t] = next++;
+    std::vector<VertIdx> tets;
+    std::vector<TetIdx> neighbors;
+    tets.reserve(4 * std::size_t{next});
+    neighbors.reserve(4 * std::size_t{next});
+    const auto keep = [&](std::vector<double>& values) {
+        if (values.empty()) return;
+        std::vector<double> kept;
+        kept.reserve(next);
+        for (TetIdx t = 0; t < count; ++t)
+            if (!removed[t]) kept.push_back(values[t]);
+        values = std::move(kept);
+    };
+    for (TetIdx t = 0; t < count; ++t) {
+        if (removed[t]) continue;
+        for (unsigned k = 0; k < 4; ++k) {
+            tets.push_back(m.tets[4 * std::size_t{t} + k]);
+            const TetIdx u = m.neighbors[4 * std::size_t{t} + k];
+            neighbors.push_back(u == kNone ? kNone : renumber[u]);
+        }
+    }
+    m.tets = std::move(tets);
+    m.neighbors = std::move(neighbors);
+    keep(conforming.tet_attributes);
+    keep(conforming.tet_max_volume);
+    return folds;
+}
+
 SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
                                        const SliverRemoval3Options& options) {
     if (!(options.threshold_degrees > 0 && options.threshold_degrees < 90))
@@ -546,6 +702,10 @@ SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
         conforming.tet_max_volume.size() != conforming.mesh.tet_count())
         throw InputError("sliver removal: one region volume bound per tetrahedron is needed");
 
+    SliverRemoval3Result result;
+    SliverRemoval3Counters& c = result.counters;
+    c.folds_removed = remove_boundary_folds(conforming);
+
     Work work;
     work.options = &options;
     work.threshold_radians = static_cast<double>(options.threshold_degrees) * kPi / 180;
@@ -554,8 +714,6 @@ SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
     work.small_angles = &small_angles;
     work.slot_attributes = conforming.tet_attributes;
     work.slot_max_volumes = conforming.tet_max_volume;
-    SliverRemoval3Result result;
-    SliverRemoval3Counters& c = result.counters;
     c.slivers_before = work.bad_tets().size();
     const tri::SwapLocks3 locks = conforming_locks(conforming);
     for (unsigned round = 0; round < options.rounds; ++round) {

@@ -62,11 +62,14 @@ struct SliverRemoval3Counters {
     std::uint64_t moves_vetoed = 0;    ///< vertices whose improving candidates all broke a bound
     std::uint64_t slivers_before = 0;  ///< tetrahedra below the threshold before
     std::uint64_t slivers_after = 0;   ///< and after
+    /// tetrahedra removed first as folds: flat between two subfaces of one facet (see
+    /// remove_boundary_folds in sliver_removal_3d.cpp)
+    std::uint64_t folds_removed = 0;
 };
 
 inline constexpr std::array kSliverRemoval3CounterNames = EM_COUNTER_TABLE(
     SliverRemoval3Counters, rounds, flips_23, flips_32, flips_44, swaps_locked, swaps_vetoed,
-    moves_accepted, moves_rejected, moves_vetoed, slivers_before, slivers_after);
+    moves_accepted, moves_rejected, moves_vetoed, slivers_before, slivers_after, folds_removed);
 static_assert(counter_table_complete(kSliverRemoval3CounterNames));
 
 struct SliverRemoval3Result {
