@@ -220,9 +220,11 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         tri::Tetrahedralization3 before_sliver_removal;  ///< kept for --quality only
         double sliver_seconds = 0;  ///< sliver removal's share of construct_seconds
     };
+    std::vector<std::string> recovery_warnings;
     auto [result, stats, seconds] = timed_construction([&] {
         return naming_the_input(source, [&] {
-            Meshed meshed{tri::boundary_recovery_3d(plc, options), {}, {}, {}, {}, {}, {}, 0};
+            Meshed meshed{tri::boundary_recovery_3d_whole_facets(plc, options, recovery_warnings),
+                          {}, {}, {}, {}, {}, {}, 0};
             if (frontal) {
                 gen::FrontalDelaunay3Result meshed_frontal =
                     gen::frontal_delaunay_3d(plc, std::move(meshed.recovery.mesh), frontal_options);
@@ -256,6 +258,8 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         });
     });
     const tri::ConformingMesh3& conforming = result.recovery.mesh;
+    for (std::string& warning : recovery_warnings) warning = source + ": " + warning;
+    print_warnings(recovery_warnings);
 
     // Exact check before anything is written: a failure is a bug, never the input's fault.
     const tri::BoundaryConformityReport3 report =

@@ -453,7 +453,9 @@ inline TetmeshOutcome run_tetmesh_case(const TetmeshCase& c) {
         out.stage = "boundary_recovery_3d";
         tri::BoundaryRecovery3Options recovery_options;
         recovery_options.max_steiner_points = kTetmeshRecoverySteiner;
-        tri::BoundaryRecovery3Result recovered = tri::boundary_recovery_3d(plc, recovery_options);
+        std::vector<std::string> recovery_warnings;
+        tri::BoundaryRecovery3Result recovered =
+            tri::boundary_recovery_3d_whole_facets(plc, recovery_options, recovery_warnings);
         out.failure = tetmesh_detail::check_mesh(plc, input_xyz, recovered.mesh, "recovered mesh");
         if (!out.failure.empty()) return out;
 

@@ -257,3 +257,38 @@ TEST(Issue15, issue_15_cocircular_facet_triangles_get_one_steiner_point) {
         }
     }
 }
+
+TEST(Issue15, issue_15_whole_facets_fall_back_to_split_ones) {
+    // scripts/rotated_shapes.py L 28 0: a rotated L-shaped prism with two free vertices attached
+    // an ulp off its facets. With its facets kept whole (each within rounding of a plane),
+    // boundary recovery kept adding points on one side facet and never recovered its
+    // triangles (past 10^5 points, minutes). boundary_recovery_3d_whole_facets stops at its
+    // cap, splits the facets that are not exactly planar and recovers the split PLC, with a
+    // warning; the mesh is conforming and refinement meets its bound.
+    for (const int exponent : {0, 300, -300}) {
+        std::vector<tri::VertIdx> attached;
+        tri::Plc3 plc = rotated_cube("l_prism_28.poly", exponent, attached);
+        EXPECT_EQ(plc.facets.size(), 8u) << exponent;
+        std::vector<std::string> warnings;
+        tri::BoundaryRecovery3Result recovered =
+            tri::boundary_recovery_3d_whole_facets(plc, {}, warnings);
+        ASSERT_FALSE(warnings.empty()) << exponent;
+        EXPECT_NE(warnings.front().find("ran past 5056 Steiner points"), std::string::npos)
+            << warnings.front();
+        EXPECT_GT(plc.facets.size(), 8u) << exponent;  // split
+        EXPECT_TRUE(tri::check_boundary_conformity_3d(plc, recovered.mesh).ok) << exponent;
+        gen::DelaunayRefinement3Options options;
+        options.max_volume = std::ldexp(0.002, 3 * exponent);
+        const auto refined = gen::delaunay_refinement_3d(plc, std::move(recovered.mesh), options);
+        const gen::RefinementQuality3 quality =
+            gen::check_refinement_quality_3d(refined.mesh, options);
+        EXPECT_EQ(quality.over_bound + quality.over_volume + quality.unresolvable, 0u)
+            << exponent;
+    }
+    // An exactly planar PLC goes straight through, nothing split, no warning.
+    tri::Plc3 cube = tri::box(1, 1, 1);
+    std::vector<std::string> warnings;
+    (void)tri::boundary_recovery_3d_whole_facets(cube, {}, warnings);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_EQ(cube.facets.size(), 6u);
+}

@@ -766,4 +766,27 @@ BoundaryRecovery3Result boundary_recovery_3d(const Plc3& plc,
     return recovery.run();
 }
 
+BoundaryRecovery3Result boundary_recovery_3d_whole_facets(Plc3& plc,
+                                                          const BoundaryRecovery3Options& options,
+                                                          std::vector<std::string>& warnings) {
+    Plc3 split = plc;
+    if (split_nonplanar_facets_3d(split, true).empty()) return boundary_recovery_3d(plc, options);
+    const std::uint64_t cap = 4096 + 64 * std::uint64_t{plc.vertex_count()};
+    BoundaryRecovery3Options capped = options;
+    capped.max_steiner_points =
+        options.max_steiner_points != 0 ? std::min(options.max_steiner_points, cap) : cap;
+    try {
+        return boundary_recovery_3d(plc, capped);
+    } catch (const InputError&) {
+        // Also a budget the caller set: the split PLC then runs into it again, with its message.
+    }
+    std::vector<std::string> split_warnings = split_nonplanar_facets_3d(plc, true);
+    warnings.push_back("boundary recovery with the facets within rounding of a plane kept "
+                       "whole ran past " +
+                       std::to_string(capped.max_steiner_points) +
+                       " Steiner points: those facets are split into their triangles");
+    warnings.insert(warnings.end(), split_warnings.begin(), split_warnings.end());
+    return boundary_recovery_3d(plc, options);
+}
+
 }  // namespace exactmesh::triangulation

@@ -25,6 +25,8 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "base/counter_table.hpp"
 #include "triangulation/mesh/conforming_mesh_3d.hpp"
@@ -79,5 +81,18 @@ double concentric_shell_parameter(const double* p, const double* q, double t_ape
 ///         a missing subface admits no new point (neither seen on any test input).
 BoundaryRecovery3Result boundary_recovery_3d(const Plc3& plc,
                                              const BoundaryRecovery3Options& options = {});
+
+/// boundary_recovery_3d for a PLC whose facets within rounding of a plane are whole (see
+/// triangulate_facets_3d). On such a crumpled facet (corners an ulp off one plane), the
+/// projection's triangles can stay missing from the tetrahedralization however many points are
+/// added (a rotated L-shaped prism with an attached free vertex: past 10^5 points, minutes).
+/// So, when some facet is not exactly planar, recovery first runs with at most 4,096 plus 64
+/// per input vertex Steiner points (fewer when `options` asks so); past them, those facets are
+/// split into their triangles (split_nonplanar_facets_3d(plc, true): `plc` changes, its split
+/// warnings and one naming the budget are appended to `warnings`) and recovery runs again with
+/// `options`. A PLC whose facets are all exactly planar goes straight to boundary_recovery_3d.
+BoundaryRecovery3Result boundary_recovery_3d_whole_facets(Plc3& plc,
+                                                          const BoundaryRecovery3Options& options,
+                                                          std::vector<std::string>& warnings);
 
 }  // namespace exactmesh::triangulation

@@ -1002,7 +1002,7 @@ FreeVertexEmbedding3 attach_free_vertices_near_surface_3d(Plc3& plc) {
     return attached;
 }
 
-std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc) {
+std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc, bool within_rounding_too) {
     std::vector<std::string> warnings;
     const auto facet_count = static_cast<std::uint32_t>(plc.facets.size());
     std::vector<Facet3> added;
@@ -1010,7 +1010,15 @@ std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc) {
     for (std::uint32_t f = 0; f < facet_count; ++f) {
         const auto ref = checked_reference_corners(plc, f);
         std::array<VertIdx, 3> corners{};
-        const VertIdx off = off_plane_beyond_rounding(plc, f, ref, corners);
+        VertIdx off = off_plane_beyond_rounding(plc, f, ref, corners);
+        if (off == kNone && within_rounding_too) {
+            const double* a = plc.point(corners[0]);
+            const double* b = plc.point(corners[1]);
+            const double* c = plc.point(corners[2]);
+            for (const auto& polygon : plc.facets[f].polygons)
+                for (const VertIdx v : polygon)
+                    if (off == kNone && orient3d(a, b, c, plc.point(v)) != Sign::Zero) off = v;
+        }
         if (off == kNone) continue;
         const FacetPlane plane = facet_plane(plc, plc.facets[f]);
         const std::vector<VertIdx> triangles =

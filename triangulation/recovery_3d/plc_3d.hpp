@@ -113,8 +113,10 @@ FreeVertexEmbedding3 attach_free_vertices_near_surface_3d(Plc3& plc);
 /// which no choice of a plane could make flat.
 /// @throws InputError when a non-planar facet's projection crosses itself (or as
 ///         triangulate_facets_3d does for a bad polygon).
+/// With `within_rounding_too`, a facet whose corners are within rounding of a plane but not
+/// exactly in one is split as well (boundary_recovery_3d_whole_facets' fallback).
 /// @pre validate_plc_3d_input(plc) passed.
-std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc);
+std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc, bool within_rounding_too = false);
 
 /// validate_plc_3d_input, triangulate_facets_3d and check_surface_self_intersection_3d; returns
 /// the surface triangles. Closedness is checked separately (check_surface_closed_3d).
