@@ -551,30 +551,22 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
     auto& m = conforming.mesh;
     const TetIdx count = m.tet_count();
     std::unordered_map<tri::Key3, std::size_t, tri::Key3Hash> subface_of;
-    std::unordered_map<std::uint64_t, unsigned> subface_edges;
     for (std::size_t i = 0; 3 * i + 2 < conforming.subfaces.size(); ++i) {
         const VertIdx* f = &conforming.subfaces[3 * i];
         subface_of.emplace(tri::sorted3(f[0], f[1], f[2]), i);
-        for (unsigned k = 0; k < 3; ++k) ++subface_edges[tri::edge_key(f[k], f[(k + 1) % 3])];
     }
-    std::unordered_set<std::uint64_t> subsegments;
-    for (std::size_t i = 0; i + 1 < conforming.subsegments.size(); i += 2)
-        subsegments.insert(tri::edge_key(conforming.subsegments[i], conforming.subsegments[i + 1]));
-    // Tetrahedra per edge, for "ab in no other tetrahedron".
-    std::unordered_map<std::uint64_t, unsigned> edge_tets;
+    // The candidates: two boundary faces that are subfaces of one facet. They are rare, so the
+    // edge counts below are taken for their edges alone (counting every edge of a 10^6
+    // tetrahedron mesh would be a pass of hash insertions on every sliver removal).
+    struct Fold {
+        TetIdx t;
+        std::array<std::size_t, 2> subs;
+        VertIdx a, b, c, d;  ///< the subfaces share a b; c and d are the corners opposite them
+    };
+    std::vector<Fold> folds;
     for (TetIdx t = 0; t < count; ++t) {
         const VertIdx* v = &m.tets[4 * std::size_t{t}];
-        for (unsigned i = 0; i < 4; ++i)
-            for (unsigned j = i + 1; j < 4; ++j) ++edge_tets[tri::edge_key(v[i], v[j])];
-    }
-    std::vector<std::uint8_t> removed(count, 0);
-    std::vector<std::size_t> dropped_subfaces;
-    std::vector<VertIdx> added_subfaces;
-    std::vector<std::uint32_t> added_facets;
-    std::uint64_t folds = 0;
-    for (TetIdx t = 0; t < count; ++t) {
-        const VertIdx* v = &m.tets[4 * std::size_t{t}];
-        std::array<std::size_t, 2> subs{};
+        Fold fold{t, {}, kNone, kNone, kNone, kNone};
         std::array<unsigned, 2> opposite{};
         unsigned found = 0;
         for (unsigned k = 0; k < 4 && found <= 2; ++k) {
@@ -583,33 +575,65 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
                 tri::sorted3(v[(k + 1) % 4], v[(k + 2) % 4], v[(k + 3) % 4]));
             if (it == subface_of.end()) continue;
             if (found < 2) {
-                subs[found] = it->second;
+                fold.subs[found] = it->second;
                 opposite[found] = k;
             }
             ++found;
         }
-        if (found != 2) continue;
-        const std::uint32_t facet = conforming.subface_facet[subs[0]];
-        if (conforming.subface_facet[subs[1]] != facet) continue;
-        // The subfaces miss c and d (the opposite corners); they share a and b.
-        const VertIdx c = v[opposite[0]], d = v[opposite[1]];
-        VertIdx a = kNone, b = kNone;
-        for (unsigned k = 0; k < 4; ++k) {
-            if (k == opposite[0] || k == opposite[1]) continue;
-            (a == kNone ? a : b) = v[k];
-        }
-        const std::uint64_t ab = tri::edge_key(a, b), cd = tri::edge_key(c, d);
-        if (subsegments.count(ab) != 0 || edge_tets.at(ab) != 1 || subface_edges.count(cd) != 0)
+        if (found != 2 ||
+            conforming.subface_facet[fold.subs[0]] != conforming.subface_facet[fold.subs[1]])
+            continue;
+        fold.c = v[opposite[0]];
+        fold.d = v[opposite[1]];
+        for (unsigned k = 0; k < 4; ++k)
+            if (k != opposite[0] && k != opposite[1]) (fold.a == kNone ? fold.a : fold.b) = v[k];
+        folds.push_back(fold);
+    }
+    if (folds.empty()) return 0;
+    std::unordered_map<std::uint64_t, unsigned> ab_tets, cd_subfaces;
+    for (const Fold& fold : folds) {
+        ab_tets.emplace(tri::edge_key(fold.a, fold.b), 0);
+        cd_subfaces.emplace(tri::edge_key(fold.c, fold.d), 0);
+    }
+    const auto count_in = [](std::unordered_map<std::uint64_t, unsigned>& counts,
+                             std::uint64_t key) {
+        const auto it = counts.find(key);
+        if (it != counts.end()) ++it->second;
+    };
+    for (TetIdx t = 0; t < count; ++t) {
+        const VertIdx* v = &m.tets[4 * std::size_t{t}];
+        for (unsigned i = 0; i < 4; ++i)
+            for (unsigned j = i + 1; j < 4; ++j) count_in(ab_tets, tri::edge_key(v[i], v[j]));
+    }
+    for (std::size_t i = 0; 3 * i + 2 < conforming.subfaces.size(); ++i) {
+        const VertIdx* f = &conforming.subfaces[3 * i];
+        for (unsigned k = 0; k < 3; ++k) count_in(cd_subfaces, tri::edge_key(f[k], f[(k + 1) % 3]));
+    }
+    std::unordered_set<std::uint64_t> subsegments;
+    for (std::size_t i = 0; i + 1 < conforming.subsegments.size(); i += 2)
+        subsegments.insert(tri::edge_key(conforming.subsegments[i], conforming.subsegments[i + 1]));
+
+    std::vector<std::uint8_t> removed(count, 0);
+    std::vector<std::size_t> dropped_subfaces;
+    std::vector<VertIdx> added_subfaces;
+    std::vector<std::uint32_t> added_facets;
+    std::uint64_t removed_count = 0;
+    for (const Fold& fold : folds) {
+        const TetIdx t = fold.t;
+        const VertIdx a = fold.a, b = fold.b, c = fold.c, d = fold.d;
+        const std::uint64_t ab = tri::edge_key(a, b);
+        if (subsegments.count(ab) != 0 || ab_tets.at(ab) != 1 ||
+            cd_subfaces.at(tri::edge_key(c, d)) != 0)
             continue;
         // Neighbours across the two new subfaces must stay: no two folds side by side.
         bool next_to_removed = false;
         for (unsigned k = 0; k < 4; ++k) {
             const TetIdx u = m.neighbors[4 * std::size_t{t} + k];
-            next_to_removed = next_to_removed || (u != kNone && u < t && removed[u]);
+            next_to_removed = next_to_removed || (u != kNone && removed[u]);
         }
         if (next_to_removed) continue;
-        const VertIdx* s0 = &conforming.subfaces[3 * subs[0]];
-        const VertIdx* s1 = &conforming.subfaces[3 * subs[1]];
+        const VertIdx* s0 = &conforming.subfaces[3 * fold.subs[0]];
+        const VertIdx* s1 = &conforming.subfaces[3 * fold.subs[1]];
         std::array<std::array<VertIdx, 3>, 2> fresh{{{a, c, d}, {b, c, d}}};
         // Each new subface's corner order is chosen on the first projection where the old two
         // agree; every such projection must then agree with it.
@@ -632,16 +656,18 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
         }
         if (!oriented || !ok) continue;
         removed[t] = 1;
-        ++folds;
-        dropped_subfaces.push_back(subs[0]);
-        dropped_subfaces.push_back(subs[1]);
+        ++removed_count;
+        dropped_subfaces.push_back(fold.subs[0]);
+        dropped_subfaces.push_back(fold.subs[1]);
+        const std::uint32_t facet = conforming.subface_facet[fold.subs[0]];
         for (const auto& f : fresh) {
             added_subfaces.insert(added_subfaces.end(), f.begin(), f.end());
             added_facets.push_back(facet);
-            for (unsigned k = 0; k < 3; ++k) ++subface_edges[tri::edge_key(f[k], f[(k + 1) % 3])];
+            for (unsigned k = 0; k < 3; ++k)
+                count_in(cd_subfaces, tri::edge_key(f[k], f[(k + 1) % 3]));
         }
     }
-    if (folds == 0) return 0;
+    if (removed_count == 0) return 0;
     // The subfaces: the dropped ones out, the new ones appended.
     std::sort(dropped_subfaces.begin(), dropped_subfaces.end());
     std::vector<VertIdx> subfaces;
@@ -685,7 +711,7 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
     m.neighbors = std::move(neighbors);
     keep(conforming.tet_attributes);
     keep(conforming.tet_max_volume);
-    return folds;
+    return removed_count;
 }
 
 SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,

@@ -769,8 +769,7 @@ BoundaryRecovery3Result boundary_recovery_3d(const Plc3& plc,
 BoundaryRecovery3Result boundary_recovery_3d_whole_facets(Plc3& plc,
                                                           const BoundaryRecovery3Options& options,
                                                           std::vector<std::string>& warnings) {
-    Plc3 split = plc;
-    if (split_nonplanar_facets_3d(split, true).empty()) return boundary_recovery_3d(plc, options);
+    if (facets_exactly_planar_3d(plc)) return boundary_recovery_3d(plc, options);
     const std::uint64_t cap = 4096 + 64 * std::uint64_t{plc.vertex_count()};
     BoundaryRecovery3Options capped = options;
     capped.max_steiner_points =

@@ -251,12 +251,11 @@ std::array<VertIdx, 3> checked_reference_corners(const Plc3& plc, std::uint32_t 
     return ref;
 }
 
-/// A corner of facet f farther from the plane of its reference corners than rounding explains
-/// (kNone when every corner is within rounding of it; see off_plane_beyond_rounding below);
-/// `plane`: the three corners whose plane it is, in index order.
-VertIdx off_plane_beyond_rounding(const Plc3& plc, std::uint32_t f,
-                                  const std::array<VertIdx, 3>& ref,
-                                  std::array<VertIdx, 3>& plane);
+/// A corner of facet f off the plane of three of its corners (`plane`, set to them in index
+/// order): beyond rounding of it, or with `exactly` off it at all (exact orient3d); kNone when
+/// there is none. See off_plane_corner below.
+VertIdx off_plane_corner(const Plc3& plc, std::uint32_t f, const std::array<VertIdx, 3>& ref,
+                         std::array<VertIdx, 3>& plane, bool exactly = false);
 
 /// The triangles (global corners, 3 per triangle) of facet f's polygons and holes projected
 /// along axis `drop`: the constrained Delaunay triangulation of the projection, no vertex added,
@@ -336,7 +335,7 @@ void triangulate_facet(const Plc3& plc, std::uint32_t f, SurfaceTriangles3& out)
     const Facet3& facet = plc.facets[f];
     const auto ref = checked_reference_corners(plc, f);
     std::array<VertIdx, 3> corners{};
-    const VertIdx off = off_plane_beyond_rounding(plc, f, ref, corners);
+    const VertIdx off = off_plane_corner(plc, f, ref, corners);
     if (off != kNone) {
         fail(names.facet(f) + " is not planar: vertex " + names.vertex(off) +
              " is off the plane of vertices " + names.vertex(corners[0]) + ", " +
@@ -600,17 +599,16 @@ std::array<VertIdx, 3> wide_corners(const Plc3& plc, std::uint32_t f,
     return {a, b, c};
 }
 
-/// A facet corner within 2^-46 of the largest coordinate magnitude (of it and the reference
-/// corners; 4 times near_tolerance, so that a vertex attached to a facet by
-/// attach_free_vertices_near_surface_3d keeps it whole) of the plane of three corners spanning a wide triangle
-/// (wide_corners) counts as on it: a rotated box's facet, its corners rounded an ulp off one plane, stays one facet,
-/// triangulated in its projection like a planar one, its inner edges free to flip (splitting it
-/// into triangles made their diagonals segments: small input angles the input does not have,
-/// where refinement ran into its Steiner budget). Exact (orient3d at the corners of a box
-/// rounded outward, which scales with the input).
-VertIdx off_plane_beyond_rounding(const Plc3& plc, std::uint32_t f,
-                                  const std::array<VertIdx, 3>& ref,
-                                  std::array<VertIdx, 3>& plane) {
+/// Unless `exactly`, a facet corner within 2^-46 of the largest coordinate magnitude (of it and
+/// the three corners; 4 times near_tolerance, so that a vertex attached to a facet by
+/// attach_free_vertices_near_surface_3d keeps it whole) of the plane of three corners spanning
+/// a wide triangle (wide_corners) counts as on it: a rotated box's facet, its corners rounded an
+/// ulp off one plane, stays one facet, triangulated in its projection like a planar one, its
+/// inner edges free to flip (splitting it into triangles made their diagonals segments: small
+/// input angles the input does not have, where refinement ran into its Steiner budget). Exact
+/// (orient3d at the corners of a box rounded outward, which scales with the input).
+VertIdx off_plane_corner(const Plc3& plc, std::uint32_t f, const std::array<VertIdx, 3>& ref,
+                         std::array<VertIdx, 3>& plane, bool exactly) {
     plane = wide_corners(plc, f, ref);
     const double* a = plc.point(plane[0]);
     const double* b = plc.point(plane[1]);
@@ -620,7 +618,8 @@ VertIdx off_plane_beyond_rounding(const Plc3& plc, std::uint32_t f,
         for (const VertIdx v : polygon) {
             const double* p = plc.point(v);
             if (orient3d(a, b, c, p) == Sign::Zero) continue;
-            if (!plane_meets_box(a, b, c, grown_box(p, 4 * near_tolerance({p, a, b, c}))))
+            if (exactly ||
+                !plane_meets_box(a, b, c, grown_box(p, 4 * near_tolerance({p, a, b, c}))))
                 return v;
         }
     }
@@ -1002,6 +1001,15 @@ FreeVertexEmbedding3 attach_free_vertices_near_surface_3d(Plc3& plc) {
     return attached;
 }
 
+bool facets_exactly_planar_3d(const Plc3& plc) {
+    for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
+        std::array<VertIdx, 3> corners{};
+        if (off_plane_corner(plc, f, checked_reference_corners(plc, f), corners, true) != kNone)
+            return false;
+    }
+    return true;
+}
+
 std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc, bool within_rounding_too) {
     std::vector<std::string> warnings;
     const auto facet_count = static_cast<std::uint32_t>(plc.facets.size());
@@ -1010,15 +1018,7 @@ std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc, bool within_roundi
     for (std::uint32_t f = 0; f < facet_count; ++f) {
         const auto ref = checked_reference_corners(plc, f);
         std::array<VertIdx, 3> corners{};
-        VertIdx off = off_plane_beyond_rounding(plc, f, ref, corners);
-        if (off == kNone && within_rounding_too) {
-            const double* a = plc.point(corners[0]);
-            const double* b = plc.point(corners[1]);
-            const double* c = plc.point(corners[2]);
-            for (const auto& polygon : plc.facets[f].polygons)
-                for (const VertIdx v : polygon)
-                    if (off == kNone && orient3d(a, b, c, plc.point(v)) != Sign::Zero) off = v;
-        }
+        const VertIdx off = off_plane_corner(plc, f, ref, corners, within_rounding_too);
         if (off == kNone) continue;
         const FacetPlane plane = facet_plane(plc, plc.facets[f]);
         const std::vector<VertIdx> triangles =

@@ -118,6 +118,11 @@ FreeVertexEmbedding3 attach_free_vertices_near_surface_3d(Plc3& plc);
 /// @pre validate_plc_3d_input(plc) passed.
 std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc, bool within_rounding_too = false);
 
+/// Whether every facet's corners lie exactly in one plane (exact orient3d): false when some
+/// facet is planar only within rounding (see triangulate_facets_3d).
+/// @throws InputError as triangulate_facets_3d does for a degenerate polygon.
+bool facets_exactly_planar_3d(const Plc3& plc);
+
 /// validate_plc_3d_input, triangulate_facets_3d and check_surface_self_intersection_3d; returns
 /// the surface triangles. Closedness is checked separately (check_surface_closed_3d).
 /// @throws InputError also when a free vertex lies on the surface (see embed_free_vertices_3d).
