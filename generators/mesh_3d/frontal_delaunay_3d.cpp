@@ -22,6 +22,7 @@
 #include "base/number_text.hpp"
 #include "generators/mesh_3d/gap_estimate_3d.hpp"
 #include "generators/mesh_3d/restricted_delaunay_3d.hpp"
+#include "generators/mesh_3d/scaled_differences_3d.hpp"
 
 namespace exactmesh::generators {
 
@@ -420,24 +421,6 @@ FrontalDelaunay3Result Frontal::run() {
     result.mesh = finish();
     result.counters = fc_;
     return result;
-}
-
-constexpr int kCoincident = std::numeric_limits<int>::min();
-
-/// The differences p[k] - p[0] (k = 1 .. n - 1) into d[k - 1], halved and divided by the power
-/// of two that brings the largest into [1, 2), so that no product of them overflows or
-/// underflows at 2^+-600; returns that scale s (a length is |d| 2^s), or kCoincident when the
-/// points coincide.
-int scaled_differences(const double* const* p, unsigned n, Vec* d) {
-    double largest = 0;
-    for (unsigned k = 1; k < n; ++k)
-        for (int i = 0; i < 3; ++i)
-            largest = std::max(largest, std::fabs(p[k][i] / 2 - p[0][i] / 2));
-    if (!(largest > 0)) return kCoincident;
-    const int exponent = std::ilogb(largest);
-    for (unsigned k = 1; k < n; ++k)
-        for (int i = 0; i < 3; ++i) d[k - 1][i] = std::ldexp(p[k][i] / 2 - p[0][i] / 2, -exponent);
-    return exponent + 1;
 }
 
 /// The size's estimate of the Steiner points: the regular tetrahedra of edge h(centroid) that

@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "generators/mesh_3d/scaled_differences_3d.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/tet_quality_3d.hpp"
 #include "triangulation/mesh/facet_projection_3d.hpp"
@@ -40,19 +41,14 @@ std::uint64_t pair_key(std::uint32_t f, std::uint32_t g) {
     return (std::uint64_t{f} << 32) | g;
 }
 
-/// The squared distance of c from line ab over |ab|^2, in doubles on differences scaled by a
-/// power of two (the same at 2^+-600): a choice between candidates, never a decision.
+/// The squared distance of c from line ab over |ab|^2, in doubles on scaled differences (the
+/// same at 2^+-600): a choice between candidates, never a decision.
 double scaled_distance_to_line(const double* a, const double* b, const double* c) {
-    double largest = 0;
-    for (int k = 0; k < 3; ++k)
-        largest = std::max({largest, std::fabs(a[k]), std::fabs(b[k]), std::fabs(c[k])});
-    if (!(largest > 0)) return 0;
-    const int e = std::ilogb(largest);
-    double u[3], v[3];
-    for (int k = 0; k < 3; ++k) {
-        u[k] = std::ldexp(b[k], -e) - std::ldexp(a[k], -e);
-        v[k] = std::ldexp(c[k], -e) - std::ldexp(a[k], -e);
-    }
+    const double* const p[3] = {a, b, c};
+    std::array<double, 3> d[2];
+    if (scaled_differences(p, 3, d) == kCoincident) return 0;
+    const auto& u = d[0];
+    const auto& v = d[1];
     const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2],
                  z = u[0] * v[1] - u[1] * v[0];
     const double uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
@@ -265,17 +261,11 @@ bool SmallInputAngleRule3::small_angle_pair(tri::VertIdx u, tri::VertIdx w) cons
 bool SmallInputAngleRule3::narrow_angle_pair(tri::VertIdx u, tri::VertIdx w) const {
     if (u < mesh_.input_vertex_count && w < mesh_.input_vertex_count) return false;
     return meet_at_apex(u, w, [](const double* o, const double* a, const double* b) {
-        double largest = 0;
-        for (int k = 0; k < 3; ++k)
-            largest =
-                std::max({largest, std::fabs(a[k] / 2 - o[k] / 2), std::fabs(b[k] / 2 - o[k] / 2)});
-        if (!(largest > 0)) return false;
-        const int e = std::ilogb(largest);
-        double v[3], x[3];
-        for (int k = 0; k < 3; ++k) {
-            v[k] = std::ldexp(a[k] / 2 - o[k] / 2, -e);
-            x[k] = std::ldexp(b[k] / 2 - o[k] / 2, -e);
-        }
+        const double* const p[3] = {o, a, b};
+        std::array<double, 3> d[2];
+        if (scaled_differences(p, 3, d) == kCoincident) return false;
+        const auto& v = d[0];
+        const auto& x = d[1];
         const double dot = v[0] * x[0] + v[1] * x[1] + v[2] * x[2];
         const double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
         const double xx = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
