@@ -557,9 +557,8 @@ class Recovery {
                 for (const VertIdx corner : {a, b, c})
                     for (int k = 0; k < 3; ++k)
                         magnitude = std::max(magnitude, std::fabs(point(corner)[k]));
-                const auto near_pending = [&](const Pending& other) {
-                    return other.facet == f &&
-                           within_rounding_3d(next.p.data(), other.p.data(), magnitude);
+                const auto near_pending = [&](const Pending& other) {  // this facet's
+                    return within_rounding_3d(next.p.data(), other.p.data(), magnitude);
                 };
                 if (std::any_of(pending.begin() + static_cast<std::ptrdiff_t>(facet_pending),
                                 pending.end(), near_pending))

@@ -545,23 +545,26 @@ bool segment_meets_box(const double* a, const double* b, const Box3& box) {
 
 /// Three corners of facet f spanning a wide triangle, whose plane rounding tilts least: the
 /// corner farthest from the first, the one farthest from that, then the one farthest from
-/// their line. A choice (doubles on coordinates scaled by a power of two: the same at
-/// 2^+-600), not a decision; `ref` (the reference corners) when the doubles see the corners
-/// collinear.
+/// their line. A choice (doubles on halved differences scaled by the power of two of the
+/// largest difference from the first corner: the same at 2^+-600, and a facet far smaller than
+/// its coordinates keeps its differences), not a decision; `ref` (the reference corners) when
+/// the doubles see the corners collinear.
 std::array<VertIdx, 3> wide_corners(const Plc3& plc, std::uint32_t f,
                                     const std::array<VertIdx, 3>& ref) {
     std::vector<VertIdx> corners;
     for (const auto& polygon : plc.facets[f].polygons)
         corners.insert(corners.end(), polygon.begin(), polygon.end());
+    const double* origin = plc.point(corners.front());
     double largest = 0;
     for (const VertIdx v : corners)
-        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(plc.point(v)[k]));
+        for (int k = 0; k < 3; ++k)
+            largest = std::max(largest, std::fabs(plc.point(v)[k] / 2 - origin[k] / 2));
     if (!(largest > 0)) return ref;
     const int e = std::ilogb(largest);
     const auto difference = [&](VertIdx u, VertIdx w) {
         std::array<double, 3> d{};
         for (int k = 0; k < 3; ++k)
-            d[k] = std::ldexp(plc.point(w)[k], -e) - std::ldexp(plc.point(u)[k], -e);
+            d[k] = std::ldexp(plc.point(w)[k] / 2 - plc.point(u)[k] / 2, -e);
         return d;
     };
     const auto norm2 = [](const std::array<double, 3>& d) {
