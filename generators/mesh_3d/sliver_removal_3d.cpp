@@ -534,8 +534,6 @@ std::uint64_t smooth_pass(Work& work, const std::vector<tri::VertexFeature3>& fe
     return moves;
 }
 
-}  // namespace
-
 // ---- Folds of a facet ----
 
 /// Removes the tetrahedra whose two boundary faces are subfaces of one facet sharing an edge
@@ -713,6 +711,8 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
     keep(conforming.tet_max_volume);
     return removed_count;
 }
+
+}  // namespace
 
 SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
                                        const SliverRemoval3Options& options) {
