@@ -87,7 +87,9 @@ BoundaryRecovery3Result boundary_recovery_3d(const Plc3& plc,
 /// projection's triangles can stay missing from the tetrahedralization however many points are
 /// added (a rotated L-shaped prism with an attached free vertex: past 10^5 points, minutes).
 /// So, when some facet is not exactly planar, recovery first runs with at most 4,096 plus 64
-/// per input vertex Steiner points (fewer when `options` asks so); past them, those facets are
+/// per input vertex Steiner points (fewer when `options` asks so), and its result is checked
+/// exactly (check_boundary_conformity_3d: a vertex attached 2e-88 beside a whole facet's corner
+/// left its subfaces not tiling it); past them, or when it does not conform, those facets are
 /// split into their triangles (split_nonplanar_facets_3d(plc, true): `plc` changes, its split
 /// warnings and one naming the budget are appended to `warnings`) and recovery runs again with
 /// `options`. A PLC whose facets are all exactly planar goes straight to boundary_recovery_3d.
