@@ -104,8 +104,138 @@ double triangle_squared_distance(const std::array<Vec, 3>& t, const std::array<V
     return best;
 }
 
-/// Cells a triangle may cover in the grid before it counts as large (kept out of the grid).
-constexpr double kMaxCellsPerTriangle = 512;
+/// A box of the scaled coordinates.
+struct Box {
+    Vec lo{INFINITY, INFINITY, INFINITY};
+    Vec hi{-INFINITY, -INFINITY, -INFINITY};
+};
+
+Box box_of(const std::array<Vec, 3>& triangle) {
+    Box box;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int k = 0; k < 3; ++k) {
+            box.lo[axis] = std::min(box.lo[axis], triangle[k][axis]);
+            box.hi[axis] = std::max(box.hi[axis], triangle[k][axis]);
+        }
+    }
+    return box;
+}
+
+/// The squared distance between two boxes (0 when they meet): at most that of any two points
+/// of theirs.
+double box_squared_distance(const Box& a, const Box& b) {
+    double sum = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double d = std::max({a.lo[axis] - b.hi[axis], 0.0, b.lo[axis] - a.hi[axis]});
+        sum += d * d;
+    }
+    return sum;
+}
+
+/// A bounding-box tree over the scaled triangles, for nearest-triangle queries that visit
+/// only the boxes nearer than the best distance so far. Before it, the estimate compared each
+/// triangle with every triangle of a grid's neighbouring cells and sampled against all those
+/// near it: the wing's walls are fans of long triangles, each near almost every other, which
+/// took 4 10^5 triangle distances and 10^8 point-triangle distances, about a second.
+class TriangleTree {
+  public:
+    explicit TriangleTree(const std::vector<std::array<Vec, 3>>& triangles)
+        : triangles_(triangles), order_(triangles.size()) {
+        for (std::uint32_t t = 0; t < order_.size(); ++t) order_[t] = t;
+        nodes_.reserve(triangles.size());
+        if (order_.empty()) return;
+        nodes_.emplace_back();
+        build(0, 0, static_cast<std::uint32_t>(order_.size()));
+    }
+
+    /// Lowers `best` (a squared distance) to distance(u) for each triangle u with take(u)
+    /// whose box is nearer than best by bound(box); bound(box) must be at most distance(u)
+    /// for every u in the box. `found` becomes the u of the last lowering.
+    template <class Bound, class Take, class Distance>
+    void nearest(double& best, std::uint32_t& found, const Bound& bound, const Take& take,
+                 const Distance& distance) const {
+        if (nodes_.empty()) return;
+        std::array<std::uint32_t, 64> stack{};
+        std::size_t depth = 0;
+        stack[depth++] = 0;
+        while (depth > 0) {
+            const Node& node = nodes_[stack[--depth]];
+            if (!(bound(node.box) < best)) continue;
+            if (node.count > 0) {
+                for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+                    const std::uint32_t u = order_[i];
+                    if (!take(u)) continue;
+                    const double d = distance(triangles_[u]);
+                    if (d < best) {
+                        best = d;
+                        found = u;
+                    }
+                }
+                continue;
+            }
+            // The nearer child last, so that it is visited first.
+            const std::uint32_t left = node.first, right = node.first + 1;
+            const bool left_nearer = bound(nodes_[left].box) < bound(nodes_[right].box);
+            stack[depth++] = left_nearer ? right : left;
+            stack[depth++] = left_nearer ? left : right;
+        }
+    }
+
+  private:
+    static constexpr std::uint32_t kLeafSize = 4;
+    struct Node {
+        Box box;
+        std::uint32_t first = 0;  ///< the first of `order_` (a leaf) or the left child
+        std::uint32_t count = 0;  ///< triangles of a leaf; 0 for an inner node
+    };
+
+    // Fills node `index` with [begin, end) of `order_`. Children are made in pairs, so a
+    // node's right child follows its left one; the depth stays below 64 since every split
+    // halves the range (median split).
+    void build(std::uint32_t index, std::uint32_t begin, std::uint32_t end) {
+        Box box, centres;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const auto& tri = triangles_[order_[i]];
+            const Box own = box_of(tri);
+            for (int axis = 0; axis < 3; ++axis) {
+                const double centre = tri[0][axis] + tri[1][axis] + tri[2][axis];
+                centres.lo[axis] = std::min(centres.lo[axis], centre);
+                centres.hi[axis] = std::max(centres.hi[axis], centre);
+                box.lo[axis] = std::min(box.lo[axis], own.lo[axis]);
+                box.hi[axis] = std::max(box.hi[axis], own.hi[axis]);
+            }
+        }
+        nodes_[index].box = box;
+        if (end - begin <= kLeafSize) {
+            nodes_[index].first = begin;
+            nodes_[index].count = end - begin;
+            return;
+        }
+        int axis = 0;
+        for (int a = 1; a < 3; ++a)
+            if (centres.hi[a] - centres.lo[a] > centres.hi[axis] - centres.lo[axis]) axis = a;
+        const std::uint32_t middle = begin + (end - begin) / 2;
+        std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
+                         [&](std::uint32_t a, std::uint32_t b) {
+                             const auto& ta = triangles_[a];
+                             const auto& tb = triangles_[b];
+                             return ta[0][axis] + ta[1][axis] + ta[2][axis] <
+                                    tb[0][axis] + tb[1][axis] + tb[2][axis];
+                         });
+        const auto left = static_cast<std::uint32_t>(nodes_.size());
+        nodes_.emplace_back();
+        nodes_.emplace_back();
+        nodes_[index].first = left;
+        build(left, begin, middle);
+        build(left + 1, middle, end);
+    }
+
+    const std::vector<std::array<Vec, 3>>& triangles_;
+    std::vector<std::uint32_t> order_;
+    std::vector<Node> nodes_;
+};
+
+constexpr std::uint32_t kNone = ~std::uint32_t{0};
 /// A triangle with a close feature is sampled at up to this many points per side (squared).
 constexpr int kMaxSamplesPerSide = 16;
 
@@ -132,54 +262,10 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
             l2 = std::max(l2, squared_distance(triangles[t][k], triangles[t][(k + 1) % 3]));
         longest[t] = std::sqrt(l2);
     }
-    // The grid: cells of the median longest edge; a feature farther than one cell from a
-    // triangle is not looked for (the estimate then takes the triangle's own size: a lower
-    // bound, so a refusal is never wrong).
-    std::vector<double> sorted = longest;
-    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    // The floor: 2^-44 of the scaled coordinates' magnitude (in [1, 2)). Cells are no finer
-    // (no feature below it counts), so cell indices stay below 2^46.
+    // The floor: 2^-44 of the scaled coordinates' magnitude (in [1, 2)): no feature below it
+    // counts.
     const double floor = 0x1p-44;
-    const double cell = std::max(sorted[sorted.size() / 2], floor);
-    auto box_of = [&](std::uint32_t t, double margin) {
-        std::array<std::int64_t, 6> box{};
-        for (int axis = 0; axis < 3; ++axis) {
-            double lo = triangles[t][0][axis], hi = lo;
-            for (int k = 1; k < 3; ++k) {
-                lo = std::min(lo, triangles[t][k][axis]);
-                hi = std::max(hi, triangles[t][k][axis]);
-            }
-            box[axis] = static_cast<std::int64_t>(std::floor((lo - margin) / cell));
-            box[axis + 3] = static_cast<std::int64_t>(std::floor((hi + margin) / cell));
-        }
-        return box;
-    };
-    // In doubles: a large triangle over tiny cells spans more than 2^63 of them.
-    auto cells_in = [](const std::array<std::int64_t, 6>& box) {
-        return (static_cast<double>(box[3] - box[0]) + 1) *
-               (static_cast<double>(box[4] - box[1]) + 1) *
-               (static_cast<double>(box[5] - box[2]) + 1);
-    };
-    auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
-        // Scaled coordinates are below 2 and cells at least 2^-44: indices below 2^46, kept
-        // to 21 bits per axis (a wrap only adds candidates, never loses one).
-        return (static_cast<std::uint64_t>(x & 0x1fffff) << 42) |
-               (static_cast<std::uint64_t>(y & 0x1fffff) << 21) |
-               static_cast<std::uint64_t>(z & 0x1fffff);
-    };
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
-    std::vector<bool> in_grid(count, false);
-    for (std::uint32_t t = 0; t < count; ++t) {
-        const auto box = box_of(t, 0);
-        if (cells_in(box) > kMaxCellsPerTriangle) continue;
-        in_grid[t] = true;
-        for (std::int64_t x = box[0]; x <= box[3]; ++x)
-            for (std::int64_t y = box[1]; y <= box[4]; ++y)
-                for (std::int64_t z = box[2]; z <= box[5]; ++z) grid[key(x, y, z)].push_back(t);
-    }
-    std::vector<std::uint32_t> seen(count, 0);
-    std::vector<std::uint32_t> near;
-    std::uint32_t epoch = 0;
+    const TriangleTree tree(triangles);
     double smallest = INFINITY;
     for (std::uint32_t t = 0; t < count; ++t) {
         const Vec e1 = sub(triangles[t][1], triangles[t][0]);
@@ -188,44 +274,33 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
                             e1[0] * e2[1] - e1[1] * e2[0]};
         const double area = 0.5 * std::sqrt(dot(normal, normal));
         const double own = std::max(longest[t], floor);
-        // The triangles sharing no vertex with t and nearer than its longest edge.
-        near.clear();
+        // The nearest triangle sharing no vertex with t, if nearer than t's longest edge.
+        const VertIdx* tv = &surface.triangles[3 * std::size_t{t}];
+        auto apart = [&](std::uint32_t u) {
+            const VertIdx* uv = &surface.triangles[3 * std::size_t{u}];
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j)
+                    if (tv[i] == uv[j]) return false;
+            return true;
+        };
+        const Box t_box = box_of(triangles[t]);
         double nearest = longest[t] * longest[t];
-        if (in_grid[t]) {
-            ++epoch;
-            const auto box = box_of(t, std::min(cell, longest[t]));
-            const VertIdx* tv = &surface.triangles[3 * std::size_t{t}];
-            for (std::int64_t x = box[0]; x <= box[3]; ++x) {
-                for (std::int64_t y = box[1]; y <= box[4]; ++y) {
-                    for (std::int64_t z = box[2]; z <= box[5]; ++z) {
-                        const auto found = grid.find(key(x, y, z));
-                        if (found == grid.end()) continue;
-                        for (const std::uint32_t u : found->second) {
-                            if (u == t || seen[u] == epoch) continue;
-                            seen[u] = epoch;
-                            const VertIdx* uv = &surface.triangles[3 * std::size_t{u}];
-                            bool shares = false;
-                            for (int i = 0; i < 3; ++i)
-                                for (int j = 0; j < 3; ++j) shares = shares || tv[i] == uv[j];
-                            if (shares) continue;
-                            const double d2 = triangle_squared_distance(triangles[t], triangles[u]);
-                            if (d2 < longest[t] * longest[t]) {
-                                near.push_back(u);
-                                nearest = std::min(nearest, d2);
-                            }
-                        }
-                    }
-                }
-            }
-        }
+        std::uint32_t nearest_triangle = kNone;
+        tree.nearest(
+            nearest, nearest_triangle,
+            [&](const Box& box) { return box_squared_distance(t_box, box); }, apart,
+            [&](const std::array<Vec, 3>& u) {
+                return triangle_squared_distance(triangles[t], u);
+            });
         smallest = std::min(smallest, std::max(std::sqrt(nearest), floor));
-        if (near.empty()) {
+        if (!(nearest < longest[t] * longest[t])) {
             estimate.points += area / (4 * own * own);
             continue;
         }
         // A close feature faces only part of t (the outer wall's triangle beside a small
         // hole): t is sampled at the centres of its k^2 congruent sub-triangles, each with
-        // the distance from its centre to the near triangles (capped and floored as f).
+        // the distance from its centre to the triangles sharing no vertex with t (capped and
+        // floored as f).
         // Clamped as a double: the ratio can exceed any int (1.9e11 from a fuzzed PLC, an
         // undefined conversion), or be infinite when the nearest distance is 0.
         const double ratio = std::ceil(longest[t] / std::sqrt(nearest));
@@ -236,12 +311,16 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
             const Vec p = {triangles[t][0][0] + a * e1[0] + b * e2[0],
                            triangles[t][0][1] + a * e1[1] + b * e2[1],
                            triangles[t][0][2] + a * e1[2] + b * e2[2]};
-            double best = own * own;
-            for (const std::uint32_t u : near) {
-                best = std::min(best, squared_distance(p, closest_on_triangle(p, triangles[u][0],
-                                                                              triangles[u][1],
-                                                                              triangles[u][2])));
-            }
+            const Box p_box{p, p};
+            auto distance = [&](const std::array<Vec, 3>& u) {
+                return squared_distance(p, closest_on_triangle(p, u[0], u[1], u[2]));
+            };
+            // Started from the previous sample's nearest triangle (the same least distance,
+            // found with fewer boxes opened).
+            double best = std::min(own * own, distance(triangles[nearest_triangle]));
+            tree.nearest(
+                best, nearest_triangle,
+                [&](const Box& box) { return box_squared_distance(p_box, box); }, apart, distance);
             const double f = std::max(std::sqrt(best), floor);
             estimate.points += piece / (4 * f * f);
         };
