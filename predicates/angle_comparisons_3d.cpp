@@ -482,6 +482,27 @@ long double dihedral_radians(const Dihedral& a) {
     return std::atan2(sine, dt(crs(e, u), crs(e, w)));
 }
 
+bool dihedral_below_rounded(const Dihedral& a, long double cos_squared) {
+    unsigned k = 0;
+    while (k == a.i || k == a.j) ++k;
+    unsigned l = k + 1;
+    while (l == a.i || l == a.j) ++l;
+    const double* o = a.p[a.i];
+    using V = std::array<long double, 3>;
+    const auto diff = [o](const double* p) {
+        return V{static_cast<long double>(p[0]) - o[0], static_cast<long double>(p[1]) - o[1],
+                 static_cast<long double>(p[2]) - o[2]};
+    };
+    const auto crs = [](const V& x, const V& y) {
+        return V{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+    };
+    const auto dt = [](const V& x, const V& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+    const V e = diff(a.p[a.j]);
+    const V n1 = crs(e, diff(a.p[k])), n2 = crs(e, diff(a.p[l]));
+    const long double d = dt(n1, n2);
+    return d > 0 && d * d > cos_squared * (dt(n1, n1) * dt(n2, n2));
+}
+
 long double volume_edge_quality(const TetCorners& p) {
     bool in_window = true;
     const VolumeEdgeTerms t = volume_edge_terms(p, in_window);

@@ -53,6 +53,13 @@ std::optional<Sign> compare_volume_edge_filter(const TetCorners& a, const TetCor
 /// atan2(|e| |det(e, u, w)|, n1 . n2) in long double.
 long double dihedral_radians(const Dihedral& a);
 
+/// Whether the dihedral angle is below the acute angle T with cos^2 T = `cos_squared`, rounded
+/// (a selection, never a decision): n1 . n2 > 0 and (n1 . n2)^2 > cos^2 T |n1|^2 |n2|^2 in
+/// long double, where no product over- or underflows for double corners, so the answer is the
+/// same for the corners scaled by any power of two. The same angles as dihedral_radians(a) < T
+/// but for the roundings near T, at a tenth of its cost (no atan2).
+bool dihedral_below_rounded(const Dihedral& a, long double cos_squared);
+
 /// q = 12 sqrt(3) D / L^(3/2) in long double (1 for the regular tetrahedron), rounded.
 long double volume_edge_quality(const TetCorners& p);
 
