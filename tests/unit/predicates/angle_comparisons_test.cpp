@@ -453,3 +453,47 @@ TEST(Predicates_AngleComparisons3d, SmallestAndEveryDihedralAgreeWithGmp) {
     EXPECT_GT(all_true, 0);
     EXPECT_GT(all_false, 0);
 }
+
+TEST(Predicates_AngleComparisons3d, DihedralBelowRoundedAgreesWithTheAngleAndScales) {
+    // dihedral_below_rounded(a, cos^2 T) against dihedral_radians(a) < T, away from T (both
+    // round), on random tetrahedra and flattened ones (a corner pulled toward the opposite
+    // face: angles near 0 and 180 degrees); the same answer at every scale.
+    Rng rng(17);
+    int below = 0, cases = 0;
+    for (const double degrees : {5.0, 15.0, 40.0, 80.0}) {
+        const long double threshold =
+            static_cast<long double>(degrees) * 3.14159265358979323846L / 180;
+        const long double cos_squared = std::cos(threshold) * std::cos(threshold);
+        for (int n = 0; n < 400; ++n) {
+            Tet t = random_tet(rng);
+            if (n % 2 == 1) {
+                const double f = std::ldexp(1.0, -(n % 40));
+                for (int k = 0; k < 3; ++k)
+                    t[0][k] = t[1][k] + f * (t[0][k] - t[1][k]) +
+                              (1 - f) * ((t[2][k] + t[3][k]) / 2 - t[1][k]);
+                if (pr::orient3d(t[0].data(), t[1].data(), t[2].data(), t[3].data()) == Sign::Zero)
+                    continue;
+            }
+            for (unsigned i = 0; i < 4; ++i) {
+                for (unsigned j = i + 1; j < 4; ++j) {
+                    const auto c = corners(t);
+                    const long double angle = pr::dihedral_radians({c, i, j});
+                    const bool answer = pr::dihedral_below_rounded({c, i, j}, cos_squared);
+                    if (std::fabs(angle - threshold) > 1e-12L) {
+                        ASSERT_EQ(answer, angle < threshold) << n << " " << degrees;
+                        ++cases;
+                        below += answer ? 1 : 0;
+                    }
+                    for (const int s : kScales) {
+                        const Tet ts = scaled(t, s);
+                        ASSERT_EQ(pr::dihedral_below_rounded({corners(ts), i, j}, cos_squared),
+                                  answer)
+                            << n << " scale " << s;
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(below, cases / 20);
+    EXPECT_LT(below, cases - cases / 20);
+}
