@@ -542,6 +542,90 @@ bool circumcenter2_double_double(const double* p, const double* q, const double*
            certify_dd(c[1], ny, pny, h, ph, result[1]);
 }
 
+// ---------------------------------------------------------------------------------------------
+// Stage 0 of the 3D circumcenter (exact differences p = a - d, q = b - d, r = c - d): the same
+// double-double scheme. X = d + N / (2 H), H = p . (q x r), N = |p|^2 (q x r) + |q|^2 (r x p) +
+// |r|^2 (p x q) (Cramer's rule: the adjugate's columns are the three cross products). With
+// u = 2^-53 and the helpers' bounds (sum_of_products 3.1 u^2 (|ab| + |cd|); times 3.2 u^2 |A b|;
+// plus 3.1 u^2 (|x| + |y|); times_dd 8.1 u^2 |A B|; norm3 6.3 u^2 |p|^2; each beyond the
+// operands' own errors carried through), to first order:
+//  - each cross product's coordinate C_k within 3.1 u^2 P_Ck, P_Ck = |q_y r_z| + |q_z r_y| (etc.);
+//  - |H~ - H| <= 12.5 u^2 P_H, P_H = sum |p_k| P_Ck (products 6.3, two sums 6.2);
+//  - |N~_k - N_k| <= 23.7 u^2 P_Nk, P_Nk = |p|^2 P_Ck + |q|^2 P_Dk + |r|^2 P_Ek (products
+//    8.1 + 6.3 + 3.1, two sums 6.2);
+// so with certify_dd's quotient (25 u^2 |Q|, halved) and final rounding (2 u^2 |x|),
+// |x~ - x| <= u^2 (13 |Q| + (11.9 P_N + 6.3 |Q| P_H) / |H| + 2 |x|): certify_dd's
+// E = 2^-100 (|Q| + (P_N + |Q| P_H) / |H| + |x|) is over 4.9 times every term. Range: every
+// nonzero difference in [2^-150, 2^150]: they are multiples of 2^-202, so every nonzero product
+// of two and every cross product is a multiple of 2^-404 and every product the scheme forms is
+// 0 or above 2^-808 (normal: every two_product exact, every rounding relative), none above
+// 2^610; |H| >= 2^-500 and > 2^-40 P_H (second-order terms negligible); certify_dd's ranges.
+
+bool in_filter_range_3d(double v) noexcept {
+    const double m = std::fabs(v);
+    return m == 0.0 || (m >= 0x1p-150 && m <= 0x1p150);
+}
+
+DoubleDouble plus(const DoubleDouble& x, const DoubleDouble& y) noexcept {
+    double s, se;
+    two_sum(x.hi, y.hi, s, se);
+    DoubleDouble r;
+    two_sum(s, se + (x.lo + y.lo), r.hi, r.lo);
+    return r;
+}
+
+/// A B for double-doubles, within 8.1 u^2 |A B| beyond the operands' errors.
+DoubleDouble times_dd(const DoubleDouble& a, const DoubleDouble& b) noexcept {
+    double m, me;
+    two_product(a.hi, b.hi, m, me);
+    DoubleDouble r;
+    two_sum(m, me + (a.hi * b.lo + a.lo * b.hi), r.hi, r.lo);
+    return r;
+}
+
+/// |p|^2 within 6.3 u^2 |p|^2.
+DoubleDouble norm3(const double* p) noexcept {
+    double z, ze;
+    two_product(p[2], p[2], z, ze);
+    return plus(sum_of_products(p[0], p[0], p[1], p[1], 1.0), DoubleDouble{z, ze});
+}
+
+/// x cross y, each coordinate within 3.1 u^2 of its permanent (`permanent`).
+void cross_dd(const double* x, const double* y, DoubleDouble* out, double* permanent) noexcept {
+    for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        out[k] = sum_of_products(x[i], y[j], x[j], y[i], -1.0);
+        permanent[k] = std::fabs(x[i] * y[j]) + std::fabs(x[j] * y[i]);
+    }
+}
+
+/// Stage 0 for exact differences p = a - d, q = b - d, r = c - d; true with all three
+/// coordinates certified.
+bool circumcenter3_double_double(const double* p, const double* q, const double* r, const double* d,
+                                 std::array<double, 3>& result) noexcept {
+    for (const double* v : {p, q, r}) {
+        for (int k = 0; k < 3; ++k) {
+            if (!in_filter_range_3d(v[k])) return false;
+        }
+    }
+    DoubleDouble c[3], e[3], f[3];  // q x r, r x p, p x q
+    double pc[3], pe[3], pf[3];
+    cross_dd(q, r, c, pc);
+    cross_dd(r, p, e, pe);
+    cross_dd(p, q, f, pf);
+    const DoubleDouble h = plus(plus(times(c[0], p[0]), times(c[1], p[1])), times(c[2], p[2]));
+    const double ph = std::fabs(p[0]) * pc[0] + std::fabs(p[1]) * pc[1] + std::fabs(p[2]) * pc[2];
+    if (!(std::fabs(h.hi) > 0x1p-40 * ph) || !(std::fabs(h.hi) >= 0x1p-500)) return false;
+    const DoubleDouble np = norm3(p), nq = norm3(q), nr = norm3(r);
+    for (int k = 0; k < 3; ++k) {
+        const DoubleDouble n =
+            plus(plus(times_dd(np, c[k]), times_dd(nq, e[k])), times_dd(nr, f[k]));
+        const double pn = np.hi * pc[k] + nq.hi * pe[k] + nr.hi * pf[k];
+        if (!certify_dd(d[k], n, pn, h, ph, result[static_cast<std::size_t>(k)])) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -659,6 +743,12 @@ std::array<double, 3> circumcenter(const double* a, const double* b, const doubl
         const double* pa = translated[0];
         const double* pb = translated[1];
         const double* pc = translated[2];
+        if (circumcenter3_double_double(pa, pb, pc, d, result)) {
+            ++this_thread_stats.calls;
+            ++this_thread_stats.fast;
+            ++this_thread_stats.double_double;
+            return result;
+        }
         const Expansion<24> den = twice(det_xyz(pa, pb, pc));
         if (fast.certify(scale(den, d[0]) + det_w_uv(pa, pb, pc, 1, 2), den, 4, result[0]) &&
             fast.certify(scale(den, d[1]) - det_w_uv(pa, pb, pc, 0, 2), den, 4, result[1]) &&

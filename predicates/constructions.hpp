@@ -105,7 +105,7 @@ struct ConstructionStats {
     std::uint64_t calls = 0;
     std::uint64_t fast = 0;  ///< every coordinate certified on the fast path
     std::uint64_t double_double =
-        0;  ///< of those, by the double-double stage (2D, exact differences)
+        0;  ///< of those, by the double-double stage (2D and 3D, exact differences)
     std::uint64_t neighbour_steps = 0;    ///< coordinates certified at q's neighbour, not q
     std::uint64_t exact_range = 0;        ///< inputs or result outside the expansion-safe range
     std::uint64_t exact_uncertified = 0;  ///< in range, but neither q nor its neighbour certified

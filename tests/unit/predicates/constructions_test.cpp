@@ -5,6 +5,7 @@
 // MPFR exponent range being restored, and the fast-path certification rate.
 #include "predicates/constructions.hpp"
 #include "predicates/orient2d.hpp"
+#include "predicates/orient3d.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -768,15 +769,56 @@ TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTria
                 }
                 if (pr::orient2d(a.data(), b.data(), c.data()) == pr::Sign::Zero) continue;
                 ++calls;
-                ASSERT_EQ(pr::circumcenter(a.data(), b.data(), c.data()), pr::circumcenter_exact(a.data(), b.data(), c.data()))
+                ASSERT_EQ(pr::circumcenter(a.data(), b.data(), c.data()),
+                          pr::circumcenter_exact(a.data(), b.data(), c.data()))
                     << offset << " " << spread << " " << i;
             }
         }
     }
     const pr::ConstructionStats& s = pr::construction_stats();
     std::printf("[ stats    ] mesh-like: calls %llu double-double %llu fast %llu\n",
-                static_cast<unsigned long long>(s.calls), static_cast<unsigned long long>(s.double_double),
+                static_cast<unsigned long long>(s.calls),
+                static_cast<unsigned long long>(s.double_double),
                 static_cast<unsigned long long>(s.fast));
     EXPECT_EQ(s.calls, static_cast<std::uint64_t>(calls));
     EXPECT_GE(static_cast<double>(s.double_double), 0.9 * calls);
+}
+
+TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTetrahedra) {
+    // The 3D stage on small tetrahedra at magnitudes from 1e-3 to 1e6, well shaped, flat (d
+    // close to the plane of abc) and nearly degenerate in one edge: every result equals the
+    // exact path's, and the stage certifies nearly all of those it may take.
+    Inputs in(271828);
+    pr::reset_construction_stats();
+    int calls = 0;
+    for (const double offset : {1e-3, 0.5, 1.0, 3.0, 1e3, 1e6}) {
+        for (const double spread : {1e-9, 1e-4, 1e-1}) {
+            for (int i = 0; i < 3000; ++i) {
+                const auto near = [&] { return offset + in.uniform() * spread; };
+                P3 a = in.point<3>(near), b = in.point<3>(near), c = in.point<3>(near),
+                   d = in.point<3>(near);
+                if (i % 4 == 3) {  // flat: d close to the plane of abc
+                    const double s = in.uniform(0.0, 1.0), t = in.uniform(0.0, 1.0 - s);
+                    for (int k = 0; k < 3; ++k)
+                        d[k] = a[k] + s * (b[k] - a[k]) + t * (c[k] - a[k]) +
+                               (k == 2 ? spread * 1e-3 : 0);
+                } else if (i % 4 == 2) {  // a short edge: b within 1e-3 spread of a
+                    for (int k = 0; k < 3; ++k) b[k] = a[k] + (b[k] - a[k]) * 1e-3;
+                }
+                if (pr::orient3d(a.data(), b.data(), c.data(), d.data()) == pr::Sign::Zero)
+                    continue;
+                ++calls;
+                ASSERT_EQ(pr::circumcenter(a.data(), b.data(), c.data(), d.data()),
+                          pr::circumcenter_exact(a.data(), b.data(), c.data(), d.data()))
+                    << offset << " " << spread << " " << i;
+            }
+        }
+    }
+    const pr::ConstructionStats& s = pr::construction_stats();
+    std::printf("[ stats    ] mesh-like 3D: calls %llu double-double %llu fast %llu\n",
+                static_cast<unsigned long long>(s.calls),
+                static_cast<unsigned long long>(s.double_double),
+                static_cast<unsigned long long>(s.fast));
+    EXPECT_EQ(s.calls, static_cast<std::uint64_t>(calls));
+    EXPECT_GE(static_cast<double>(s.double_double), 0.8 * calls);
 }
