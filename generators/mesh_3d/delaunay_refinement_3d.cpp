@@ -177,7 +177,9 @@ DelaunayRefinement3Result Refinement::run() {
 /// is at most its bound, so the mesh has at least the sum over the recovered tetrahedra of
 /// volume / bound of them (with per-region bounds each tetrahedron divides by its own; one
 /// without a bound counts nothing), and a Delaunay tetrahedralization has about 6.5 per vertex;
-/// refused when a sixth of that lower bound exceeds the budget. Volumes are taken on
+/// refused when that estimate exceeds the budget (refinement made 1.35 to 8 times its points on
+/// the sample domains at V = 10^-3 and 2.44 10^-5; a margin of 6 let a bound asking for 5 times
+/// the budget run a million insertions into it). Volumes are taken on
 /// coordinates scaled by one power of two, each quotient kept as a double times a power of two
 /// and summed at a common exponent, the total compared in logarithms: nothing overflows or
 /// underflows at 2^+-600, whatever the bounds' magnitudes.
@@ -234,7 +236,7 @@ void refuse_volume_bound_far_over_budget(const ConformingMesh3& recovered,
     const std::uint64_t budget = steiner_budget_3d(recovered, options.max_steiner_points);
     const double log2_tets = std::log2(sum) + sum_exponent;
     const double points = std::exp2(std::min(log2_tets, 1000.0)) / 6.5;
-    if (points > 6.0 * static_cast<double>(budget)) {
+    if (points > static_cast<double>(budget)) {
         std::string bounds;
         if (!region_bounds) {
             bounds = "the volume bound " + format_number(options.max_volume) + " asks";

@@ -337,7 +337,7 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
 
 void refuse_gaps_far_over_budget_3d(const Plc3& plc, std::uint64_t budget, const char* who) {
     const GapEstimate3 estimate = gap_estimate_3d(plc);
-    if (!(estimate.points > 6.0 * static_cast<double>(budget))) return;
+    if (!(estimate.points > static_cast<double>(budget))) return;
     throw InputError(std::string(who) + ": Steiner point budget of " + std::to_string(budget) +
                      " exceeded at once: facets " +
                      format_approximate(estimate.smallest_feature, 3) +

@@ -249,6 +249,24 @@ TEST(Generators_DelaunayRefinement3d, VolumeBoundFarOverTheBudgetFailsAtOnceAtEv
     }
 }
 
+TEST(Generators_DelaunayRefinement3d, VolumeBoundAFewTimesOverTheBudgetFailsAtOnce) {
+    // box-with-hole at V = 2.65e-8: the estimate (5.08e6 points) is about 5 times the default
+    // budget; with a margin of 6 it ran a million insertions (22 s) into it. Refinement makes
+    // 1.35-8 times the estimate's points on the sample domains, so the budget itself refuses.
+    const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
+    ConformingMesh3 recovered = triangulation::boundary_recovery_3d(plc).mesh;
+    DelaunayRefinement3Options options;
+    options.max_volume = 2.65e-8;
+    try {
+        delaunay_refinement_3d(plc, std::move(recovered), options);
+        ADD_FAILURE() << "refined";
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("exceeded at once"), std::string::npos) << message;
+        EXPECT_NE(message.find("5.08e+06"), std::string::npos) << message;
+    }
+}
+
 TEST(Generators_DelaunayRefinement3d, BadOptionsAndTheBudgetAreInputErrors) {
     const Plc3 plc = triangulation::box(1, 1, 1);
     ConformingMesh3 recovered = triangulation::boundary_recovery_3d(plc).mesh;

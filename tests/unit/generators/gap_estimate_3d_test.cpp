@@ -86,6 +86,28 @@ TEST(Generators_GapEstimate3d, AGapBesideATriangleFarLargerThanMostIsFound) {
     }
 }
 
+TEST(Generators_GapEstimate3d, TheBudgetItselfRefusesAndAGapWithinItPasses) {
+    // Two 0.2-wide box holes 1e-4 apart: about 2e6 points against a budget of 1,024,000, which
+    // refinement ran into for 52 s when the refusal had a margin of 6. One 0.1-wide hole 1e-4
+    // from a wall: 4.94e5, within the budget (refinement makes 1.01e6 points, TetGen 1.02e6).
+    tri::Plc3 two = tri::box(1, 1, 1);
+    add_box_hole(two, {0.2, 0.2, 0.2}, 0.2);
+    add_box_hole(two, {0.4 + 1e-4, 0.2, 0.2}, 0.2);
+    const std::string message = testing::error_message<InputError>(
+        [&] { refuse_gaps_far_over_budget_3d(two, 1024000, "refinement"); });
+    EXPECT_NE(message.find("refinement: Steiner point budget of 1024000 exceeded at once: facets "
+                           "0.0001 apart"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("about 2e+06 points"), std::string::npos) << message;
+    tri::Plc3 one = tri::box(1, 1, 1);
+    add_box_hole(one, {1e-4, 0.4, 0.4}, 0.1);
+    const GapEstimate3 estimate = gap_estimate_3d(one);
+    EXPECT_GT(estimate.points, 4.9e5);
+    EXPECT_LT(estimate.points, 5e5);
+    EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(one, 1016000, "refinement"));
+}
+
 TEST(Generators_GapEstimate3d, CloseToWhatRefinementMakesAndScaleInvariant) {
     // g = 1/64: refinement at radius-edge 2 adds a few hundred to a thousand vertices.
     const tri::Plc3 plc = box_with_gap(1.0 / 64);
