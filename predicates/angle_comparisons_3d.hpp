@@ -60,6 +60,16 @@ long double dihedral_radians(const Dihedral& a);
 /// but for the roundings near T, at a tenth of its cost (no atan2).
 bool dihedral_below_rounded(const Dihedral& a, long double cos_squared);
 
+/// Whether any of the six dihedral angles of the tetrahedron is below the acute angle T with
+/// cos^2 T = `cos_squared`, rounded (a selection, never a decision): from the four face normals
+/// at once (cos of the angle at edge ij = -n_k . n_l / (|n_k| |n_l|), k and l the other two
+/// corners) in doubles on the corner differences scaled by a power of two, the same answer for
+/// the corners scaled by 2^k while the largest difference stays in [2^-1000, 2^1000]; outside
+/// that, or where a scaled difference or normal comes near the double range's bottom,
+/// dihedral_below_rounded per edge (the two may differ within rounding of T). A sixth of the
+/// work of six dihedral_below_rounded calls.
+bool any_dihedral_below_rounded(const TetCorners& p, long double cos_squared);
+
 /// q = 12 sqrt(3) D / L^(3/2) in long double (1 for the regular tetrahedron), rounded.
 long double volume_edge_quality(const TetCorners& p);
 

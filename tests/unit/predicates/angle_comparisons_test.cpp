@@ -455,11 +455,12 @@ TEST(Predicates_AngleComparisons3d, SmallestAndEveryDihedralAgreeWithGmp) {
 }
 
 TEST(Predicates_AngleComparisons3d, DihedralBelowRoundedAgreesWithTheAngleAndScales) {
+    // (and any_dihedral_below_rounded with the smallest of the six)
     // dihedral_below_rounded(a, cos^2 T) against dihedral_radians(a) < T, away from T (both
     // round), on random tetrahedra and flattened ones (a corner pulled toward the opposite
     // face: angles near 0 and 180 degrees); the same answer at every scale.
     Rng rng(17);
-    int below = 0, cases = 0;
+    int below = 0, cases = 0, any_below = 0, any_cases = 0;
     for (const double degrees : {5.0, 15.0, 40.0, 80.0}) {
         const long double threshold =
             static_cast<long double>(degrees) * 3.14159265358979323846L / 180;
@@ -474,6 +475,20 @@ TEST(Predicates_AngleComparisons3d, DihedralBelowRoundedAgreesWithTheAngleAndSca
                 if (pr::orient3d(t[0].data(), t[1].data(), t[2].data(), t[3].data()) == Sign::Zero)
                     continue;
             }
+            // any_dihedral_below_rounded against the smallest angle, away from T.
+            long double smallest = 10;
+            for (unsigned i = 0; i < 4; ++i)
+                for (unsigned j = i + 1; j < 4; ++j)
+                    smallest = std::min(smallest, pr::dihedral_radians({corners(t), i, j}));
+            const bool any = pr::any_dihedral_below_rounded(corners(t), cos_squared);
+            if (std::fabs(smallest - threshold) > 1e-9L) {
+                ASSERT_EQ(any, smallest < threshold) << n << " " << degrees;
+                ++any_cases;
+                any_below += any ? 1 : 0;
+            }
+            for (const int s : kScales)
+                ASSERT_EQ(pr::any_dihedral_below_rounded(corners(scaled(t, s)), cos_squared), any)
+                    << n << " scale " << s;
             for (unsigned i = 0; i < 4; ++i) {
                 for (unsigned j = i + 1; j < 4; ++j) {
                     const auto c = corners(t);
@@ -496,4 +511,6 @@ TEST(Predicates_AngleComparisons3d, DihedralBelowRoundedAgreesWithTheAngleAndSca
     }
     EXPECT_GT(below, cases / 20);
     EXPECT_LT(below, cases - cases / 20);
+    EXPECT_GT(any_below, any_cases / 20);
+    EXPECT_LT(any_below, any_cases - any_cases / 20);
 }
