@@ -686,6 +686,15 @@ class RestrictedDelaunay3 {
     std::vector<std::uint32_t> boundary_vertex_mark_;  ///< == boundary_epoch_: on the boundary
     std::uint32_t boundary_epoch_ = 0;
     FlatKeyMap64<FaceIdx> open_edges_;  ///< commit's scratch: new faces not yet linked
+    /// A face of the cavity's boundary (commit's scratch, kept for its capacity).
+    struct BoundaryFace {
+        std::array<VertIdx, 3> corners;
+        FaceIdx outside;
+        double attribute;
+        double max_volume;
+    };
+    std::vector<BoundaryFace> commit_faces_;
+    std::vector<TetIdx> commit_created_;  ///< commit's new tetrahedra (scratch)
 
     /// Replaces the cavity (built by build_cavity for p) by the tetrahedra joining p to its
     /// boundary, updates the subfaces and subsegments of `split`, queues what to check.
@@ -710,13 +719,8 @@ class RestrictedDelaunay3 {
         ++counters_.insertions;
         counters_.cavity_tets += cavity_.size();
 
-        struct BoundaryFace {
-            std::array<VertIdx, 3> corners;
-            FaceIdx outside;
-            double attribute;
-            double max_volume;
-        };
-        std::vector<BoundaryFace> faces;
+        std::vector<BoundaryFace>& faces = commit_faces_;
+        faces.clear();
         for (const TetIdx t : cavity_) {
             for (unsigned k = 0; k < 4; ++k) {
                 const FaceIdx g = m_.adj[4 * t + k];
@@ -735,7 +739,8 @@ class RestrictedDelaunay3 {
         }
         FlatKeyMap64<FaceIdx>& open = open_edges_;
         open.clear();
-        std::vector<TetIdx> created;
+        std::vector<TetIdx>& created = commit_created_;
+        created.clear();
         for (const BoundaryFace& f : faces) {
             const TetIdx t = m_.new_tet();
             if (attributes_.size() < m_.tet_slots() && !attributes_.empty())
