@@ -14,6 +14,7 @@
 #include <set>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "predicates/orient3d.hpp"
 #include "tests/support/placing_tetrahedralization_3d.hpp"
 #include "triangulation/checks/check_topology_3d.hpp"
@@ -453,3 +454,35 @@ TEST(Triangulation_Flip3, RewritesChainAndRecycleSlots) {
 }
 
 }  // namespace
+
+TEST(Triangulation_Flip3, GivenNeighborsAreCheckedForFacesSharedWithoutALink) {
+    // make_tet_mesh_3d with a neighbor list: the links it gives are kept when consistent; a
+    // face two tetrahedra share with no link (an interior pair unlinked, or a tetrahedron
+    // repeated with no neighbors: its faces on the boundary faces and linked faces of its
+    // twin) is refused, as without a neighbor list.
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<double> xyz(3 * 40);
+    for (double& x : xyz) x = unit(rng);
+    tri::Tetrahedralization3 mesh = em_placing(xyz);
+    mesh.neighbors.clear();
+    const tri::TetMesh3 linked = tri::make_tet_mesh_3d(mesh);
+    for (std::size_t f = 0; f < linked.adj.size(); ++f)
+        mesh.neighbors.push_back(linked.adj[f] == kNone ? kNone : linked.adj[f] / 4);
+    EXPECT_EQ(tri::make_tet_mesh_3d(mesh).adj, linked.adj);
+    // An interior pair unlinked.
+    std::size_t interior = 0;
+    while (linked.adj[interior] == kNone) ++interior;
+    tri::Tetrahedralization3 unlinked = mesh;
+    unlinked.neighbors[interior] = kNone;
+    unlinked.neighbors[linked.adj[interior]] = kNone;
+    EXPECT_THROW(tri::make_tet_mesh_3d(unlinked), exactmesh::InputError);
+    // Every tetrahedron repeated once in turn, with no neighbors.
+    for (TetIdx t = 0; t < mesh.tet_count(); ++t) {
+        tri::Tetrahedralization3 twice = mesh;
+        twice.tets.insert(twice.tets.end(), mesh.tets.begin() + 4 * t,
+                          mesh.tets.begin() + 4 * t + 4);
+        twice.neighbors.insert(twice.neighbors.end(), 4, kNone);
+        EXPECT_THROW(tri::make_tet_mesh_3d(twice), exactmesh::InputError) << t;
+    }
+}
