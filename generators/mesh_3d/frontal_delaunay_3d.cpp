@@ -520,7 +520,8 @@ FrontalDelaunay3Result frontal_delaunay_3d(const Plc3& plc, ConformingMesh3 reco
                          "surface area / (sqrt(3) / 4 h^2) / 2, segment length / h); raise the "
                          "size or the budget");
     }
-    if (options.estimate_gaps) refuse_gaps_far_over_budget_3d(plc, budget, "frontal delaunay 3d");
+    if (options.estimate_gaps)
+        refuse_gaps_far_over_budget_3d(plc, budget, "frontal delaunay 3d", 6.0);
     Frontal frontal(plc, std::move(recovered), options, budget, exponent);
     frontal.result_counters.estimated_points =
         static_cast<std::uint64_t>(std::min(estimate, 1.8e19));

@@ -335,9 +335,10 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
     return estimate;
 }
 
-void refuse_gaps_far_over_budget_3d(const Plc3& plc, std::uint64_t budget, const char* who) {
+void refuse_gaps_far_over_budget_3d(const Plc3& plc, std::uint64_t budget, const char* who,
+                                    double margin) {
     const GapEstimate3 estimate = gap_estimate_3d(plc);
-    if (!(estimate.points > static_cast<double>(budget))) return;
+    if (!(estimate.points > margin * static_cast<double>(budget))) return;
     throw InputError(std::string(who) + ": Steiner point budget of " + std::to_string(budget) +
                      " exceeded at once: facets " +
                      format_approximate(estimate.smallest_feature, 3) +

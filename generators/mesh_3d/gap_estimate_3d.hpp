@@ -17,10 +17,12 @@
 // Scale-invariant: computed on coordinates scaled by one power of two (exact) that brings the
 // largest to [1, 2), so no square overflows or underflows at 2^+-600 (a gap below 2^-511 of the
 // extent floors at 2^-44 anyway). A decision of how much work to accept, not of geometry:
-// computed in doubles (the distances round). The estimate stayed below every count measured
-// (refinement made 1.1 to 7 times its points on the sample domains, box-shaped holes 1e-4 to
-// 1e-2 from a wall or from each other, needles), so it is refused at the budget itself: with a
-// margin of 6, two holes 1e-4 apart (estimate 2e6) ran 52 s into a budget of 1.02e6.
+// computed in doubles (the distances round). The estimate stayed below every count Delaunay
+// refinement made (1.1 to 7 times its points on the sample domains, box-shaped holes 1e-4 to
+// 1e-2 from a wall or from each other, needles), so refinement refuses at the budget itself
+// (margin 1: with a margin of 6, two holes 1e-4 apart, estimate 2e6, ran 52 s into a budget of
+// 1.02e6). Frontal insertion and the octree need not resolve a gap (they split what encroaches,
+// at the size: the same two holes at size 0.1 take 1,963 vertices), so they keep a margin of 6.
 // Cost: nearest-triangle queries in a bounding-box tree of the T surface triangles, one per
 // triangle and one per sample (at most 256 per triangle); the wing's 672 triangles, fans of
 // long thin ones on its walls, take 0.17 s (1.06 s with the grid of cells of the median edge
@@ -41,9 +43,9 @@ struct GapEstimate3 {
 /// The estimate for a PLC that passed validate_plc_3d.
 GapEstimate3 gap_estimate_3d(const triangulation::Plc3& plc);
 
-/// Throws InputError, prefixed by `who`, when the estimate exceeds `budget` (Steiner
-/// points), naming the estimate and the smallest feature; does nothing otherwise.
+/// Throws InputError, prefixed by `who`, when the estimate exceeds `margin` times `budget`
+/// (Steiner points), naming the estimate and the smallest feature; does nothing otherwise.
 void refuse_gaps_far_over_budget_3d(const triangulation::Plc3& plc, std::uint64_t budget,
-                                    const char* who);
+                                    const char* who, double margin);
 
 }  // namespace exactmesh::generators

@@ -94,7 +94,7 @@ TEST(Generators_GapEstimate3d, TheBudgetItselfRefusesAndAGapWithinItPasses) {
     add_box_hole(two, {0.2, 0.2, 0.2}, 0.2);
     add_box_hole(two, {0.4 + 1e-4, 0.2, 0.2}, 0.2);
     const std::string message = testing::error_message<InputError>(
-        [&] { refuse_gaps_far_over_budget_3d(two, 1024000, "refinement"); });
+        [&] { refuse_gaps_far_over_budget_3d(two, 1024000, "refinement", 1.0); });
     EXPECT_NE(message.find("refinement: Steiner point budget of 1024000 exceeded at once: facets "
                            "0.0001 apart"),
               std::string::npos)
@@ -105,7 +105,9 @@ TEST(Generators_GapEstimate3d, TheBudgetItselfRefusesAndAGapWithinItPasses) {
     const GapEstimate3 estimate = gap_estimate_3d(one);
     EXPECT_GT(estimate.points, 4.9e5);
     EXPECT_LT(estimate.points, 5e5);
-    EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(one, 1016000, "refinement"));
+    EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(one, 1016000, "refinement", 1.0));
+    // Frontal insertion and the octree keep a margin of 6 (they need not resolve the gap).
+    EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(two, 1024000, "frontal", 6.0));
 }
 
 TEST(Generators_GapEstimate3d, CloseToWhatRefinementMakesAndScaleInvariant) {
