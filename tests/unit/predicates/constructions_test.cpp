@@ -749,6 +749,18 @@ TEST(Predicates_Constructions, FastPathCertifiesNearlyAllRandomInputs) {
     EXPECT_EQ(pr::construction_stats().fast, 0u);
 }
 
+/// Prints the construction counters of a mesh-like run of `calls` calls and checks that every
+/// call was counted and at least `share` of them certified by the double-double stage.
+void expect_double_double_share(const char* label, int calls, double share) {
+    const pr::ConstructionStats& s = pr::construction_stats();
+    std::printf("[ stats    ] %s: calls %llu double-double %llu fast %llu\n", label,
+                static_cast<unsigned long long>(s.calls),
+                static_cast<unsigned long long>(s.double_double),
+                static_cast<unsigned long long>(s.fast));
+    EXPECT_EQ(s.calls, static_cast<std::uint64_t>(calls));
+    EXPECT_GE(static_cast<double>(s.double_double), share * calls);
+}
+
 }  // namespace
 
 TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTriangles) {
@@ -775,13 +787,7 @@ TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTria
             }
         }
     }
-    const pr::ConstructionStats& s = pr::construction_stats();
-    std::printf("[ stats    ] mesh-like: calls %llu double-double %llu fast %llu\n",
-                static_cast<unsigned long long>(s.calls),
-                static_cast<unsigned long long>(s.double_double),
-                static_cast<unsigned long long>(s.fast));
-    EXPECT_EQ(s.calls, static_cast<std::uint64_t>(calls));
-    EXPECT_GE(static_cast<double>(s.double_double), 0.9 * calls);
+    expect_double_double_share("mesh-like", calls, 0.9);
 }
 
 TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTetrahedra) {
@@ -814,11 +820,5 @@ TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTetr
             }
         }
     }
-    const pr::ConstructionStats& s = pr::construction_stats();
-    std::printf("[ stats    ] mesh-like 3D: calls %llu double-double %llu fast %llu\n",
-                static_cast<unsigned long long>(s.calls),
-                static_cast<unsigned long long>(s.double_double),
-                static_cast<unsigned long long>(s.fast));
-    EXPECT_EQ(s.calls, static_cast<std::uint64_t>(calls));
-    EXPECT_GE(static_cast<double>(s.double_double), 0.8 * calls);
+    expect_double_double_share("mesh-like 3D", calls, 0.8);
 }
