@@ -18,6 +18,8 @@
 //   exactmesh_octree   recovery + octree_mesh_3d at h + sliver removal (--generator octree);
 //   tetgen             `tetgen -pq2a<V>` on the PLC as a .poly: its "Total running seconds"
 //                      minus "Output seconds" (CPU; includes its default mesh optimization);
+//   tetgen_no_optimization  `tetgen -pq2a<V>O0`: the same without its optimization, the peer
+//                      of the exactmesh row (refinement alone) as tetgen is of exactmesh_slivers;
 //   cgal_mesh_3        bench/cgal_mesh_3d_tool.cpp on the same .poly: domain construction +
 //                      make_mesh_3 (CPU), no Lloyd/ODT/perturb/exude; cell_radius_edge_ratio 2,
 //                      cell_size s, facet_size = edge_size = cell_size, facet_angle 25,
@@ -390,7 +392,7 @@ tri::Tetrahedralization3 read_node_ele(const fs::path& stem) {
     return mesh;
 }
 
-void bm_tetgen(benchmark::State& state, DomainCase domain, double max_volume) {
+void bm_tetgen(benchmark::State& state, DomainCase domain, double max_volume, bool optimize) {
     if (!on_path("tetgen")) {
         state.SkipWithError("tetgen not found on PATH");
         return;
@@ -399,8 +401,8 @@ void bm_tetgen(benchmark::State& state, DomainCase domain, double max_volume) {
     const fs::path poly = scratch.dir / "domain.poly", log = scratch.dir / "tetgen.log";
     std::ofstream(poly) << poly_text(plc_of(domain.domain));
     // No -Q: TetGen then prints its phase timings, which give the construction without I/O.
-    const std::string command = "tetgen -pq2a" + number_text(max_volume) + " '" + poly.string() +
-                                "' > '" + log.string() + "' 2>&1";
+    const std::string command = "tetgen -pq2a" + number_text(max_volume) + (optimize ? "" : "O0") +
+                                " '" + poly.string() + "' > '" + log.string() + "' 2>&1";
     double seconds = 0, rss = 0, total_seconds = 0;
     std::uint64_t runs = 0;
     for (auto _ : state) {
@@ -583,9 +585,13 @@ void register_all() {
             benchmark::RegisterBenchmark(name("exactmesh_octree").c_str(), &bm_size_driven, domain,
                                          v, SizeGenerator::Octree)
                 ->Unit(benchmark::kMillisecond);
-            benchmark::RegisterBenchmark(name("tetgen").c_str(), &bm_tetgen, domain, v)
-                ->Unit(benchmark::kMillisecond)
-                ->UseManualTime();
+            for (const bool optimize : {true, false}) {
+                benchmark::RegisterBenchmark(
+                    name(optimize ? "tetgen" : "tetgen_no_optimization").c_str(), &bm_tetgen,
+                    domain, v, optimize)
+                    ->Unit(benchmark::kMillisecond)
+                    ->UseManualTime();
+            }
             for (const bool optimize : {false, true}) {
                 benchmark::RegisterBenchmark(
                     name(optimize ? "cgal_mesh_3_optimized" : "cgal_mesh_3").c_str(),
