@@ -454,9 +454,10 @@ struct DoubleDouble {
     double hi, lo;
 };
 
-bool in_filter_range(double v) noexcept {
+/// v is 0 or its magnitude is within [1 / limit, limit] (limit a power of two).
+bool in_filter_range(double v, double limit = 0x1p300) noexcept {
     const double m = std::fabs(v);
-    return m == 0.0 || (m >= 0x1p-300 && m <= 0x1p300);
+    return m == 0.0 || (m >= 1 / limit && m <= limit);
 }
 
 /// a b + c d (sign +1) or a b - c d (sign -1), as hi + lo within 3.1 u^2 (|ab| + |cd|).
@@ -480,12 +481,18 @@ DoubleDouble times(const DoubleDouble& a, double b) noexcept {
     return r;
 }
 
-DoubleDouble minus(const DoubleDouble& x, const DoubleDouble& y) noexcept {
+/// x + y, within 3.1 u^2 (|x| + |y|) beyond the operands' errors.
+DoubleDouble plus(const DoubleDouble& x, const DoubleDouble& y) noexcept {
     double s, se;
-    two_sum(x.hi, -y.hi, s, se);
+    two_sum(x.hi, y.hi, s, se);
     DoubleDouble r;
-    two_sum(s, se + (x.lo - y.lo), r.hi, r.lo);
+    two_sum(s, se + (x.lo + y.lo), r.hi, r.lo);
     return r;
+}
+
+/// x - y: plus with y negated (the same roundings as subtracting each part).
+DoubleDouble minus(const DoubleDouble& x, const DoubleDouble& y) noexcept {
+    return plus(x, DoubleDouble{-y.hi, -y.lo});
 }
 
 /// One coordinate: c + N / (2 H); false when not certified (then nothing is known).
@@ -561,19 +568,6 @@ bool circumcenter2_double_double(const double* p, const double* q, const double*
 // 0 or above 2^-808 (normal: every two_product exact, every rounding relative), none above
 // 2^610; |H| >= 2^-500 and > 2^-40 P_H (second-order terms negligible); certify_dd's ranges.
 
-bool in_filter_range_3d(double v) noexcept {
-    const double m = std::fabs(v);
-    return m == 0.0 || (m >= 0x1p-150 && m <= 0x1p150);
-}
-
-DoubleDouble plus(const DoubleDouble& x, const DoubleDouble& y) noexcept {
-    double s, se;
-    two_sum(x.hi, y.hi, s, se);
-    DoubleDouble r;
-    two_sum(s, se + (x.lo + y.lo), r.hi, r.lo);
-    return r;
-}
-
 /// A B for double-doubles, within 8.1 u^2 |A B| beyond the operands' errors.
 DoubleDouble times_dd(const DoubleDouble& a, const DoubleDouble& b) noexcept {
     double m, me;
@@ -605,7 +599,7 @@ bool circumcenter3_double_double(const double* p, const double* q, const double*
                                  std::array<double, 3>& result) noexcept {
     for (const double* v : {p, q, r}) {
         for (int k = 0; k < 3; ++k) {
-            if (!in_filter_range_3d(v[k])) return false;
+            if (!in_filter_range(v[k], 0x1p150)) return false;
         }
     }
     DoubleDouble c[3], e[3], f[3];  // q x r, r x p, p x q
