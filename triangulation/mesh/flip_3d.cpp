@@ -196,11 +196,8 @@ TetMesh3 make_tet_mesh_3d(const Tetrahedralization3& mesh) {
         }
         for (std::size_t f = 0; f < out.adj.size(); ++f) {
             if (out.adj[f] == kNone || out.adj[f] < f) continue;
-            const unsigned* lf = kFaceVertex[f % 4];
-            const VertIdx* v = &mesh.tets[f - f % 4];
-            if (!on_boundary[v[lf[0]]] || !on_boundary[v[lf[1]]] || !on_boundary[v[lf[2]]])
-                continue;
             const Key3 key = key_of(f);
+            if (!on_boundary[key[0]] || !on_boundary[key[1]] || !on_boundary[key[2]]) continue;
             const auto at = std::lower_bound(boundary.begin(), boundary.end(), key,
                                              [](const std::pair<Key3, FaceIdx>& entry,
                                                 const Key3& k) { return entry.first < k; });
