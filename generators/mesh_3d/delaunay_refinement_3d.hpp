@@ -65,6 +65,8 @@ struct DelaunayRefinement3Counters {
     std::uint64_t shrunk_cavities = 0;        ///< cavities shrunk to stay star-shaped/conforming
     std::uint64_t batched_removals = 0;       ///< tetrahedra shrunk away beside the first of
                                               ///< their round (all facing away from the point)
+    std::uint64_t forced_cavity_tets = 0;     ///< tetrahedra taken into a cavity past their
+                                              ///< spheres: a seed's face did not see the point
     std::uint64_t small_angle_tets = 0;       ///< bad tetrahedra spared by the small-angle rule
     std::uint64_t unresolvable_tets = 0;      ///< bad tetrahedra spared: an edge finer than doubles
                                               ///< resolve there (below 2^-44 of the coordinates)
@@ -75,8 +77,8 @@ struct DelaunayRefinement3Counters {
 inline constexpr std::array kDelaunayRefinement3CounterNames =
     EM_COUNTER_TABLE(DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits,
                      shell_splits, encroached_segments, encroached_subfaces, blocked_circumcenters,
-                     rejected_points, shrunk_cavities, batched_removals, small_angle_tets,
-                     unresolvable_tets, cavity_tets, insertions);
+                     rejected_points, shrunk_cavities, batched_removals, forced_cavity_tets,
+                     small_angle_tets, unresolvable_tets, cavity_tets, insertions);
 static_assert(counter_table_complete(kDelaunayRefinement3CounterNames));
 
 struct DelaunayRefinement3Result {

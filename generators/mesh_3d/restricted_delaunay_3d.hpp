@@ -539,6 +539,7 @@ class RestrictedDelaunay3 {
         if (excluded_.size() < m_.tet_slots()) excluded_.resize(m_.tet_slots(), 0);
         ++cavity_stamp_;
         std::vector<TetIdx> seed_list = seeds;
+        std::size_t forced = 0;  // seeds added for other seeds' faces that p does not see
         bool shrunk = false;
         while (true) {
             // Grow from the seeds (marks of this attempt in attempt_stamp_; the tetrahedra shrunk
@@ -573,7 +574,25 @@ class RestrictedDelaunay3 {
                 if (shrunk) ++counters_.shrunk_cavities;
                 return true;
             }
-            if (bad == kNone - 1) return false;
+            if (bad == kNone - 1) {
+                // A seed's face that p does not see is no reason to give up while the
+                // tetrahedron behind it can become a seed too: p within rounding of the face's
+                // plane, rounded onto a segment or facet beside a flat tetrahedron of boundary
+                // points coplanar before rounding (a thin hole's facet through the midpoints of
+                // a turned cube's edges: the shell split failed every time and refinement ran
+                // into its budget). A bounded number, never across a subface.
+                const FaceIdx g = blind_face_ == kNone ? kNone : m_.adj[blind_face_];
+                if (g == kNone || forced >= kMaxForced) return false;
+                if (is_subface_key(face_key(blind_face_ / 4, blind_face_ % 4))) return false;
+                const TetIdx u = triangulation::tet_of(g);
+                if (std::find(seed_list.begin(), seed_list.end(), u) != seed_list.end())
+                    return false;
+                seed_list.push_back(u);
+                excluded_[u] = 0;
+                ++forced;
+                ++counters_.forced_cavity_tets;
+                continue;
+            }
             excluded_[bad] = mark;
             for (const TetIdx u : violations_) excluded_[u] = mark;
             if (violations_.size() > 1) counters_.batched_removals += violations_.size() - 1;
@@ -629,6 +648,7 @@ class RestrictedDelaunay3 {
             return std::find(seeds.begin(), seeds.end(), t) == seeds.end() ? t : kNone - 1;
         };
         violations_.clear();
+        blind_face_ = kNone;
         FlatKeyMap64<std::uint8_t>& boundary_edges = boundary_edges_;
         boundary_edges.clear();
         if (boundary_vertex_mark_.size() < m_.vertex_count())
@@ -655,7 +675,10 @@ class RestrictedDelaunay3 {
                 if (predicates::orient3d(point(m_.vertex(t, lf[0])), point(m_.vertex(t, lf[1])),
                                          point(m_.vertex(t, lf[2])), p) != Sign::Positive) {
                     const TetIdx bad = removable(t);
-                    if (bad == kNone - 1) return bad;
+                    if (bad == kNone - 1) {
+                        blind_face_ = 4 * t + k;
+                        return bad;
+                    }
                     violations_.push_back(bad);
                     break;  // t goes: its other faces need no look
                 }
@@ -682,6 +705,10 @@ class RestrictedDelaunay3 {
         return kNone;
     }
     std::vector<TetIdx> violations_;                   ///< first_violation's batch
+    /// first_violation's seed face (4 t + k) that does not see p, when that is why it gave up.
+    FaceIdx blind_face_ = kNone;
+    /// Most seeds build_cavity adds behind seeds' faces that p does not see.
+    static constexpr std::size_t kMaxForced = 64;
     FlatKeyMap64<std::uint8_t> boundary_edges_;        ///< first_violation's scratch
     std::vector<std::uint32_t> boundary_vertex_mark_;  ///< == boundary_epoch_: on the boundary
     std::uint32_t boundary_epoch_ = 0;

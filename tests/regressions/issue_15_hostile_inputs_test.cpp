@@ -292,3 +292,32 @@ TEST(Issue15, issue_15_whole_facets_fall_back_to_split_ones) {
     EXPECT_TRUE(warnings.empty());
     EXPECT_EQ(cube.facets.size(), 6u);
 }
+
+TEST(Issue15, issue_15_turned_thin_hole_splits_beside_flat_boundary_tetrahedra) {
+    // tests/data/rotated/needle_hole_1.poly: a 0.8 x 0.001 x 0.001 box hole in the unit cube,
+    // turned by a rotation. The hole's long facets lie (before the rotation) in planes through
+    // the midpoints of the cube's edges and facets, so refinement's Steiner points there make
+    // flat tetrahedra of boundary points coplanar within rounding. A split point rounded onto
+    // a hole edge beside one lies on the wrong side of the flat tetrahedron's far face: the
+    // cavity (that tetrahedron a seed) was rejected every time, and the same shell split came
+    // back until the budget (113 s at V = 0.001, 10^6 points). Such a face now takes the
+    // tetrahedron behind it into the cavity as a seed.
+    for (const int exponent : {0, 300, -300}) {
+        std::vector<tri::VertIdx> attached;
+        const tri::Plc3 plc = rotated_cube("needle_hole_1.poly", exponent, attached);
+        gen::DelaunayRefinement3Options options;
+        options.max_volume = std::ldexp(0.001, 3 * exponent);
+        options.max_steiner_points = 20000;
+        const auto refined =
+            gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
+        EXPECT_GT(refined.counters.forced_cavity_tets, 0u) << exponent;
+        EXPECT_EQ(refined.counters.rejected_points, 0u) << exponent;
+        // TetGen -pq2a0.001: 5,460 points.
+        EXPECT_LT(refined.mesh.mesh.vertex_count(), 8000u) << exponent;
+        const gen::RefinementQuality3 quality =
+            gen::check_refinement_quality_3d(refined.mesh, options);
+        EXPECT_EQ(quality.over_bound + quality.over_volume + quality.unresolvable, 0u)
+            << exponent;
+        EXPECT_TRUE(tri::check_boundary_conformity_3d(plc, refined.mesh).ok) << exponent;
+    }
+}
