@@ -11,7 +11,10 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "predicates/orient3d.hpp"
 #include "predicates/power_of_two.hpp"
+#include "triangulation/mesh/facet_projection_3d.hpp"
+#include "triangulation/mesh/vertex_keys_3d.hpp"
 #include "triangulation/recovery_3d/plc_3d.hpp"
 
 namespace exactmesh::generators {
@@ -236,16 +239,66 @@ class TriangleTree {
 };
 
 constexpr std::uint32_t kNone = ~std::uint32_t{0};
+
+/// Which sides of each facet the domain lies on: bit 1 the side where orient3d of the facet's
+/// reference corners and a point is positive, bit 2 the negative one. Read from the recovered
+/// mesh (the tetrahedron on each subface, by the sign of its far corner); both bits when no
+/// mesh is given or a facet's every tetrahedron there is flat against it.
+std::vector<std::uint8_t> domain_sides(const Plc3& plc,
+                                       const triangulation::ConformingMesh3* recovered) {
+    std::vector<std::uint8_t> sides(plc.facets.size(), 3);
+    if (recovered == nullptr) return sides;
+    const auto& m = recovered->mesh;
+    const std::size_t subface_count = recovered->subface_facet.size();
+    std::vector<std::pair<triangulation::Key3, std::uint32_t>> subfaces(subface_count);
+    for (std::size_t f = 0; f < subface_count; ++f) {
+        const std::uint32_t facet = recovered->subface_facet[f];
+        if (facet >= plc.facets.size()) return sides;
+        subfaces[f] = {triangulation::sorted3(recovered->subfaces[3 * f],
+                                              recovered->subfaces[3 * f + 1],
+                                              recovered->subfaces[3 * f + 2]),
+                       facet};
+    }
+    std::sort(subfaces.begin(), subfaces.end());
+    std::vector<std::array<VertIdx, 3>> reference(plc.facets.size());
+    for (std::size_t f = 0; f < plc.facets.size(); ++f)
+        reference[f] = triangulation::facet_reference_corners(plc, plc.facets[f]);
+    std::vector<std::uint8_t> seen(plc.facets.size(), 0);
+    for (triangulation::TetIdx t = 0; t < m.tet_count(); ++t) {
+        const VertIdx* c = &m.tets[4 * std::size_t{t}];
+        for (unsigned k = 0; k < 4; ++k) {
+            const triangulation::Key3 key =
+                triangulation::sorted3(c[(k + 1) % 4], c[(k + 2) % 4], c[(k + 3) % 4]);
+            const auto it = std::lower_bound(
+                subfaces.begin(), subfaces.end(), key,
+                [](const auto& entry, const triangulation::Key3& k3) { return entry.first < k3; });
+            if (it == subfaces.end() || it->first != key) continue;
+            const auto& ref = reference[it->second];
+            const predicates::Sign side =
+                predicates::orient3d(plc.point(ref[0]), plc.point(ref[1]), plc.point(ref[2]),
+                                     m.point(c[k]));
+            if (side != predicates::Sign::Zero)
+                seen[it->second] |= side == predicates::Sign::Positive ? 1 : 2;
+        }
+    }
+    for (std::size_t f = 0; f < sides.size(); ++f)
+        if (seen[f] != 0) sides[f] = seen[f];
+    return sides;
+}
 /// A triangle with a close feature is sampled at up to this many points per side (squared).
 constexpr int kMaxSamplesPerSide = 16;
 
 }  // namespace
 
-GapEstimate3 gap_estimate_3d(const Plc3& plc) {
+GapEstimate3 gap_estimate_3d(const Plc3& plc, const triangulation::ConformingMesh3* recovered) {
     GapEstimate3 estimate;
     const triangulation::SurfaceTriangles3 surface = triangulation::triangulate_facets_3d(plc);
     const std::uint32_t count = surface.triangle_count();
     if (count == 0) return estimate;
+    const std::vector<std::uint8_t> sides = domain_sides(plc, recovered);
+    // Each one-sided facet's unit normal, oriented as orient3d's positive side of its reference
+    // corners, and a point of it (scaled coordinates, defined below).
+    std::vector<std::pair<Vec, Vec>> planes(plc.facets.size());
     double largest = 0;
     for (const double x : plc.xyz) largest = std::max(largest, std::fabs(x));
     const int shift = predicates::unit_shift(largest);
@@ -262,6 +315,39 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
             l2 = std::max(l2, squared_distance(triangles[t][k], triangles[t][(k + 1) % 3]));
         longest[t] = std::sqrt(l2);
     }
+    for (std::size_t f = 0; f < plc.facets.size(); ++f) {
+        if (sides[f] == 3) continue;
+        const auto ref = triangulation::facet_reference_corners(plc, plc.facets[f]);
+        Vec q[3];
+        for (int k = 0; k < 3; ++k) {
+            const double* p = plc.point(ref[k]);
+            q[k] = {unit(p[0]), unit(p[1]), unit(p[2])};
+        }
+        const Vec u = sub(q[1], q[0]), v = sub(q[2], q[0]);
+        // orient3d(a, b, c, d) > 0 when d is below the plane seen counter-clockwise from above,
+        // that is on the side of -(b - a) x (c - a).
+        Vec n = {-(u[1] * v[2] - u[2] * v[1]), -(u[2] * v[0] - u[0] * v[2]),
+                 -(u[0] * v[1] - u[1] * v[0])};
+        const double length = std::sqrt(dot(n, n));
+        for (double& x : n) x /= length;
+        planes[f] = {n, q[0]};
+    }
+    // A triangle u faces t across the domain unless u lies wholly on a side of t's facet
+    // without the domain (the far wall of a thin hole, seen from the near one), or the other
+    // way round. A corner within 2^-40 of the plane (scaled coordinates in [1, 2)) counts as
+    // facing. Doubles: this decides how much work to accept, not geometry (exact orient3d
+    // here, on walls of coplanar corners, was a third of the wing's refinement at V = 0.1).
+    auto faces_across_domain = [&](std::uint32_t from, std::uint32_t to) {
+        const std::uint32_t facet = surface.facets[from];
+        if (sides[facet] == 3) return true;
+        const auto& [normal, origin] = planes[facet];
+        for (int i = 0; i < 3; ++i) {
+            const double height = dot(normal, sub(triangles[to][i], origin));
+            if (std::fabs(height) <= 0x1p-40 || (sides[facet] & (height > 0 ? 1 : 2)) != 0)
+                return true;
+        }
+        return false;
+    };
     // The floor: 2^-44 of the scaled coordinates' magnitude (in [1, 2)): no feature below it
     // counts.
     const double floor = 0x1p-44;
@@ -281,7 +367,7 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
             for (int i = 0; i < 3; ++i)
                 for (int j = 0; j < 3; ++j)
                     if (tv[i] == uv[j]) return false;
-            return true;
+            return faces_across_domain(t, u) && faces_across_domain(u, t);
         };
         const Box t_box = box_of(triangles[t]);
         double nearest = longest[t] * longest[t];
@@ -335,9 +421,10 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc) {
     return estimate;
 }
 
-void refuse_gaps_far_over_budget_3d(const Plc3& plc, std::uint64_t budget, const char* who,
-                                    double margin) {
-    const GapEstimate3 estimate = gap_estimate_3d(plc);
+void refuse_gaps_far_over_budget_3d(const Plc3& plc,
+                                    const triangulation::ConformingMesh3& recovered,
+                                    std::uint64_t budget, const char* who, double margin) {
+    const GapEstimate3 estimate = gap_estimate_3d(plc, &recovered);
     if (!(estimate.points > margin * static_cast<double>(budget))) return;
     throw InputError(std::string(who) + ": Steiner point budget of " + std::to_string(budget) +
                      " exceeded at once: facets " +

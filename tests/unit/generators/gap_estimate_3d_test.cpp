@@ -93,8 +93,10 @@ TEST(Generators_GapEstimate3d, TheBudgetItselfRefusesAndAGapWithinItPasses) {
     tri::Plc3 two = tri::box(1, 1, 1);
     add_box_hole(two, {0.2, 0.2, 0.2}, 0.2);
     add_box_hole(two, {0.4 + 1e-4, 0.2, 0.2}, 0.2);
-    const std::string message = testing::error_message<InputError>(
-        [&] { refuse_gaps_far_over_budget_3d(two, 1024000, "refinement", 1.0); });
+    const tri::ConformingMesh3 two_recovered = tri::boundary_recovery_3d(two).mesh;
+    const std::string message = testing::error_message<InputError>([&] {
+        refuse_gaps_far_over_budget_3d(two, two_recovered, 1024000, "refinement", 1.0);
+    });
     EXPECT_NE(message.find("refinement: Steiner point budget of 1024000 exceeded at once: facets "
                            "0.0001 apart"),
               std::string::npos)
@@ -105,9 +107,50 @@ TEST(Generators_GapEstimate3d, TheBudgetItselfRefusesAndAGapWithinItPasses) {
     const GapEstimate3 estimate = gap_estimate_3d(one);
     EXPECT_GT(estimate.points, 4.9e5);
     EXPECT_LT(estimate.points, 5e5);
-    EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(one, 1016000, "refinement", 1.0));
+    EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(one, tri::boundary_recovery_3d(one).mesh,
+                                                   1016000, "refinement", 1.0));
     // Frontal insertion and the octree keep a margin of 6 (they need not resolve the gap).
-    EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(two, 1024000, "frontal", 6.0));
+    EXPECT_NO_THROW(
+        refuse_gaps_far_over_budget_3d(two, two_recovered, 1024000, "frontal", 6.0));
+}
+
+TEST(Generators_GapEstimate3d, WallsFacingEachOtherAcrossAHoleAskForNothing) {
+    // A 1/2 x 1/16 x 1e-4 box hole in the unit cube (scripts/rotated_holes.py 1 0 unturned):
+    // its two large walls are 1e-4 apart across the hole, which no generator resolves (no point
+    // sees the far wall). Counted, they asked for 1.6e6 points and refinement refused a domain
+    // it meshes with 44,210 vertices (TetGen: 43,127). With the recovered mesh's sides they
+    // count nothing (the hole's 1e-4-wide sides, at right angles to them, still count, a few
+    // points each).
+    tri::Plc3 plc = tri::box(1, 1, 1);
+    const auto first = static_cast<tri::VertIdx>(plc.vertex_count());
+    const double lo[3] = {0.25, 0.25, 0.5}, side[3] = {0.5, 0.0625, 1e-4};
+    for (int k = 0; k < 8; ++k) {
+        plc.xyz.insert(plc.xyz.end(), {lo[0] + (k & 1 ? side[0] : 0),
+                                       lo[1] + ((k >> 1) & 1 ? side[1] : 0),
+                                       lo[2] + ((k >> 2) & 1 ? side[2] : 0)});
+    }
+    const std::vector<std::vector<tri::VertIdx>> faces = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                                          {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+    for (auto face : faces) {
+        for (tri::VertIdx& v : face) v += first;
+        plc.facets.push_back({{face}, {}, 2});
+    }
+    plc.holes = {0.5, 0.28, 0.5 + 5e-5};
+    const GapEstimate3 blind = gap_estimate_3d(plc);
+    EXPECT_GT(blind.points, 1e6);
+    for (const int e : {0, 600, -600}) {
+        const tri::Plc3 scaled = tri::scaled(plc, e);
+        const tri::ConformingMesh3 recovered = tri::boundary_recovery_3d(scaled).mesh;
+        const GapEstimate3 sided = gap_estimate_3d(scaled, &recovered);
+        EXPECT_LT(sided.points, 1e4) << e;
+        EXPECT_NO_THROW(
+            refuse_gaps_far_over_budget_3d(scaled, recovered, 1016000, "refinement", 1.0));
+    }
+    // Two walls 1e-4 apart through the domain (the hole's side 1e-4 from the outer wall) still
+    // count, with the sides known.
+    const tri::Plc3 gap = box_with_gap(1e-4);
+    const tri::ConformingMesh3 gap_recovered = tri::boundary_recovery_3d(gap).mesh;
+    EXPECT_EQ(gap_estimate_3d(gap, &gap_recovered).points, gap_estimate_3d(gap).points);
 }
 
 TEST(Generators_GapEstimate3d, CloseToWhatRefinementMakesAndScaleInvariant) {
