@@ -321,3 +321,21 @@ TEST(Issue15, issue_15_turned_thin_hole_splits_beside_flat_boundary_tetrahedra) 
         EXPECT_TRUE(tri::check_boundary_conformity_3d(plc, refined.mesh).ok) << exponent;
     }
 }
+
+TEST(Issue15, issue_15_holes_touching_within_rounding_are_refused_at_once) {
+    // tests/data/rotated/touching_holes_17.poly: two box holes sharing part of a facet plane,
+    // turned by a rotation, so their facets are 1e-17 apart instead of touching: the exact
+    // intersection test passed, and boundary recovery split a segment beside the other hole's
+    // corner without end (past 60 s). Now refused by the PLC check, at every scale.
+    for (const int exponent : {0, 600, -600}) {
+        tri::Plc3 plc = io::plc_from_file(io::read_plc(
+            std::string(EXACTMESH_SOURCE_DIR) + "/tests/data/rotated/touching_holes_17.poly"));
+        plc = tri::scaled(plc, exponent);
+        tri::validate_plc_3d_input(plc);
+        const std::string message =
+            error_message<InputError>([&] { (void)tri::validate_plc_3d(plc); });
+        EXPECT_NE(message.find("self-touching surface: vertex 26 of facet 19 (line 75)"),
+                  std::string::npos)
+            << exponent << ": " << message;
+    }
+}

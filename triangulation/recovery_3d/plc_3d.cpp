@@ -829,6 +829,67 @@ SurfaceTriangles3 triangulate_facets_3d(const Plc3& plc) {
     return surface;
 }
 
+/// The half-width within which corner p counts as touching triangle abc: 2^-48 of the larger of
+/// p's largest coordinate magnitude and that of abc's corner of least magnitude, the rounding
+/// noise of input computed at that place (a turned box's corners), not of the triangle's far
+/// corners: a needle's vertex (0, 1, 0) lies 4.7e-10 from its edge to (1, 2^31, 0), exactly
+/// and on purpose, far beyond the noise of anything near 1.
+double contact_tolerance(const double* p, const double* a, const double* b, const double* c) {
+    const auto magnitude = [](const double* q) {
+        return std::max({std::fabs(q[0]), std::fabs(q[1]), std::fabs(q[2])});
+    };
+    const double local = std::max(magnitude(p), std::min({magnitude(a), magnitude(b),
+                                                          magnitude(c)}));
+    if (!(local > 0)) return 0;
+    return std::ldexp(1.0, std::ilogb(local) - 48);
+}
+
+/// A corner of triangle ta (not one of tb's) within rounding of tb (contact_tolerance: the box
+/// around it meets an edge of tb away from tb's corners, or tb's plane inside tb's
+/// projection), or the other way round; kNone when there is none, else
+/// that corner, with `near` the triangle it lies beside. Exact (orient3d, orient2d on boxes
+/// rounded outward), like the free vertices' attachment: two facets meeting within rounding
+/// (holes whose facets touch, turned by a rotation) pass the exact intersection test, and
+/// boundary recovery then split a segment beside the other facet's corner without end.
+VertIdx corner_within_rounding(const Plc3& plc, const VertIdx* ta, const VertIdx* tb,
+                               const VertIdx*& near) {
+    for (const auto& [from, to] : {std::pair{ta, tb}, std::pair{tb, ta}}) {
+        const double* a = plc.point(to[0]);
+        const double* b = plc.point(to[1]);
+        const double* c = plc.point(to[2]);
+        const Box3 triangle_box = box_of({a, b, c});
+        for (int i = 0; i < 3; ++i) {
+            const VertIdx v = from[i];
+            if (v == to[0] || v == to[1] || v == to[2]) continue;
+            const double* p = plc.point(v);
+            const Box3 box = grown_box(p, contact_tolerance(p, a, b, c));
+            if (!boxes_meet(triangle_box, box)) continue;
+            bool beside = false;
+            for (int k = 0; k < 3 && !beside; ++k) {
+                const double* e0 = plc.point(to[k]);
+                const double* e1 = plc.point(to[(k + 1) % 3]);
+                if (box.contains(e0) || box.contains(e1)) {
+                    beside = true;  // within rounding of a corner
+                } else if (segment_meets_box(e0, e1, box)) {
+                    beside = true;
+                }
+            }
+            if (!beside && plane_meets_box(a, b, c, box)) {
+                const int drop = drop_axis(a, b, c);
+                beside = triangle_contains_2d(project_facet_point(a, drop),
+                                              project_facet_point(b, drop),
+                                              project_facet_point(c, drop),
+                                              project_facet_point(p, drop));
+            }
+            if (beside) {
+                near = to;
+                return v;
+            }
+        }
+    }
+    return kNone;
+}
+
 void check_surface_self_intersection_3d(const Plc3& plc, const SurfaceTriangles3& surface) {
     const std::uint32_t count = surface.triangle_count();
     if (count < 2) return;
@@ -853,6 +914,15 @@ void check_surface_self_intersection_3d(const Plc3& plc, const SurfaceTriangles3
                 box[k] = std::min(box[k], p[k]);
                 box[3 + k] = std::max(box[3 + k], p[k]);
             }
+        }
+        // Grown by the rounding tolerance (corner_within_rounding), so that triangles within
+        // rounding of each other are paired too.
+        const VertIdx* tv = &surface.triangles[3 * std::size_t{t}];
+        const double w =
+            near_tolerance({plc.point(tv[0]), plc.point(tv[1]), plc.point(tv[2])});
+        for (int k = 0; k < 3; ++k) {
+            box[k] = std::nextafter(box[k] - w, -std::numeric_limits<double>::infinity());
+            box[3 + k] = std::nextafter(box[3 + k] + w, std::numeric_limits<double>::infinity());
         }
         for (int k = 0; k < 3; ++k) {
             lo[k] = std::min(lo[k], box[k]);
@@ -958,6 +1028,19 @@ void check_surface_self_intersection_3d(const Plc3& plc, const SurfaceTriangles3
                          names.facet(fb) + " intersect (triangle " + names.triangle(va) + " of " +
                          names.facet(fa) + " and triangle " + names.triangle(vb) + " of " +
                          names.facet(fb) + ")");
+                }
+                const VertIdx* near = nullptr;
+                const VertIdx corner = corner_within_rounding(plc, va, vb, near);
+                if (corner != kNone) {
+                    const std::uint32_t f_corner = near == vb ? surface.facets[ta]
+                                                              : surface.facets[tb];
+                    const std::uint32_t f_near = near == vb ? surface.facets[tb]
+                                                            : surface.facets[ta];
+                    fail("self-touching surface: vertex " + names.vertex(corner) + " of " +
+                         names.facet(f_corner) + " lies within rounding of triangle " +
+                         names.triangle(near) + " of " + names.facet(f_near) +
+                         " (closer than 2^-48 of the coordinates there) without being a corner of it: "
+                         "the facets touch or overlap as far as doubles tell");
                 }
             }
         }

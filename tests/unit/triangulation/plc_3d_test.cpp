@@ -179,6 +179,33 @@ TEST(Triangulation_Plc3, SharedVertexWithPiercingEdgeIntersects) {
               "facet 0 and triangle (0, 3, 4) of facet 1)");
 }
 
+TEST(Triangulation_Plc3, FacetsTouchingWithinRoundingAreRefused) {
+    // A triangle whose corner lies 1e-17 above the unit square's interior (or beside its edge)
+    // passes the exact test, but no tetrahedralization resolves such a contact: boundary
+    // recovery split a segment beside another facet's corner without end (two box holes whose
+    // facets touch, turned by a rotation: past a minute). Refused, the same at 2^+-600; 1e-13
+    // above it, far beyond rounding at 0.5, is fine.
+    for (const double height : {1e-17, 1e-13}) {
+        Plc3 plc;
+        plc.xyz = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, height, 2, 2, 1, 2, 0.5, 1};
+        plc.facets = {{{{0, 1, 2, 3}}, {}, 0}, {{{4, 5, 6}}, {}, 0}};
+        const Outcome result = scale_invariant_outcome(plc);
+        if (height > 1e-15) {
+            EXPECT_EQ(result.validity, "");
+            continue;
+        }
+        EXPECT_EQ(result.validity,
+                  "self-touching surface: vertex 4 of facet 1 lies within rounding of triangle "
+                  "(0, 2, 3) of facet 0 (closer than 2^-48 of the coordinates there) without "
+                  "being a corner of it: the facets touch or overlap as far as doubles tell");
+        // Beside the square's edge y = 0, outside the square.
+        plc.xyz[13] = -1e-17;
+        EXPECT_NE(scale_invariant_outcome(plc).validity.find("vertex 4 of facet 1 lies within "
+                                                             "rounding of triangle"),
+                  std::string::npos);
+    }
+}
+
 TEST(Triangulation_Plc3, NonPlanarFacetIsNamed) {
     Plc3 plc = cube();
     plc.xyz[3 * 4 + 0] = 0x1p-40;  // corner 4 of facet 0 ({0, 2, 6, 4}) off the plane x = 0
