@@ -9,6 +9,11 @@
 // points, far from Delaunay (the mesh-motion scenario). Timed: Delaunay edge-face swapping back
 // to the Delaunay tetrahedralization of the moved points (TetMesh3 construction included).
 // Counters: flips/pt, flips/s (swaps per second), stalled (faces left not locally Delaunay).
+// BM_max_min_dihedral/perturbed/<n>/<removal>: the same moved meshes, MaxMinDihedral edge-face
+// swapping (removal 0), or then edge removal (edge_removal_3d, rings of 3 to 7) on the edges of
+// every tetrahedron whose smallest dihedral angle is below 15 degrees and the face swaps again
+// (removal 1): what edge removal buys (counters min_dihedral_degrees and below_10, the
+// tetrahedra with an angle under 10 degrees) and what it costs (the time, same start).
 // BM_vertex_removal/uniform/<n>: from CGAL's tetrahedralization of n uniform points, remove
 // n/10 random interior vertices one by one; counters removals/s, flips/removal, star/removal.
 // The fitted exponent: Complexity() (oAuto) per family, or the slope of log time on log n.
@@ -26,7 +31,9 @@
 
 #include "bench/bench_support.hpp"
 #include "predicates/orient3d.hpp"
+#include "predicates/angle_comparisons_3d.hpp"
 #include "triangulation/modification/edge_face_swap_3d.hpp"
+#include "triangulation/modification/edge_removal_3d.hpp"
 #include "triangulation/modification/vertex_removal_3d.hpp"
 
 namespace {
@@ -119,6 +126,52 @@ void swap_benchmark(benchmark::State& state) {
     state.SetComplexityN(n);
 }
 
+/// The smallest dihedral angle of tetrahedron t, in degrees (rounded: a selection and a report).
+double smallest_degrees(const tri::TetMesh3& mesh, tri::TetIdx t) {
+    const tri::Tet q = mesh.tet(t);
+    const exactmesh::predicates::TetCorners p{mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]),
+                                              mesh.point(q[3])};
+    return static_cast<double>(exactmesh::predicates::dihedral_radians(
+               exactmesh::predicates::smallest_dihedral(p))) *
+           180 / M_PI;
+}
+
+void max_min_benchmark(benchmark::State& state) {
+    const auto n = static_cast<std::uint32_t>(state.range(0));
+    const bool removal = state.range(1) != 0;
+    const tri::Tetrahedralization3& start = perturbed_start(n);
+    double seconds = 0, smallest = 0;
+    std::uint64_t below_10 = 0, removals = 0;
+    for (auto _ : state) {
+        const auto begin = std::chrono::steady_clock::now();
+        tri::TetMesh3 mesh = tri::make_tet_mesh_3d(start);
+        tri::swap_faces_3d(mesh, tri::SwapCriterion3::MaxMinDihedral);
+        if (removal) {
+            std::vector<tri::TetIdx> bad;
+            for (tri::TetIdx t = 0; t < mesh.tet_slots(); ++t)
+                if (!mesh.is_dead(t) && smallest_degrees(mesh, t) < 15) bad.push_back(t);
+            removals = tri::remove_edges_3d(mesh, tri::SwapCriterion3::MaxMinDihedral, bad, {})
+                           .edge_removals;
+            tri::swap_faces_3d(mesh, tri::SwapCriterion3::MaxMinDihedral);
+        }
+        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+        state.PauseTiming();
+        smallest = 180;
+        below_10 = 0;
+        for (tri::TetIdx t = 0; t < mesh.tet_slots(); ++t) {
+            if (mesh.is_dead(t)) continue;
+            const double angle = smallest_degrees(mesh, t);
+            smallest = std::min(smallest, angle);
+            below_10 += angle < 10 ? 1 : 0;
+        }
+        state.ResumeTiming();
+    }
+    state.counters["min_dihedral_degrees"] = smallest;
+    state.counters["below_10"] = static_cast<double>(below_10);
+    state.counters["edge_removals"] = static_cast<double>(removals);
+    state.counters["seconds"] = seconds / static_cast<double>(state.iterations());
+}
+
 void removal_benchmark(benchmark::State& state) {
     const auto n = static_cast<std::uint32_t>(state.range(0));
     const tri::Tetrahedralization3& start = delaunay_start(n);
@@ -163,6 +216,10 @@ BENCHMARK(swap_benchmark)
     ->Arg(1000)->Arg(3162)->Arg(10000)->Arg(31623)->Arg(100000)
     ->Unit(benchmark::kMillisecond)
     ->Complexity();
+BENCHMARK(max_min_benchmark)
+    ->Name("BM_max_min_dihedral/perturbed")
+    ->ArgsProduct({{10000, 100000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(removal_benchmark)
     ->Name("BM_vertex_removal/uniform")
     ->Arg(1000)->Arg(3162)->Arg(10000)->Arg(31623)->Arg(100000)

@@ -23,6 +23,7 @@
 #include "triangulation/mesh/flip_3d.hpp"
 #include "triangulation/mesh/vertex_keys_3d.hpp"
 #include "triangulation/modification/edge_face_swap_3d.hpp"
+#include "triangulation/modification/edge_removal_3d.hpp"
 
 namespace exactmesh::generators {
 
@@ -214,7 +215,15 @@ std::uint64_t swap_pass(Work& work, const tri::SwapLocks3& locks, SliverRemoval3
     c.swaps_locked += s.locked;
     c.swaps_vetoed += s.vetoed;
     EM_ASSERT(s.flips_22 == 0);
-    return s.flips();
+    // Then the edges of the tetrahedra still below the threshold, by edge removal (rings of up
+    // to 7, which the face swaps above do not reach): the same locks, bounds and regions.
+    const std::vector<TetIdx> still = work.bad_tets();
+    const tri::EdgeRemovalCounters e =
+        tri::remove_edges_3d(work.mesh, tri::SwapCriterion3::MaxMinDihedral, still, constraints);
+    c.edge_removals += e.edge_removals;
+    c.swaps_locked += e.locked;
+    c.swaps_vetoed += e.vetoed;
+    return s.flips() + e.edge_removals;
 }
 
 // ---- Smoothing ----

@@ -8,7 +8,10 @@
 //     the faces of those tetrahedra: a swap is made when the smallest dihedral angle among its
 //     new tetrahedra is strictly larger than among the old ones (exact), and never when it
 //     removes a subface (boundary or interior facet) or an edge that is a subsegment or an edge
-//     of a subface: every 2-2 swap (which trades two boundary subfaces) is refused;
+//     of a subface: every 2-2 swap (which trades two boundary subfaces) is refused; then
+//     edge removal (edge_removal_3d: the ring of 3 to 7 tetrahedra around an unlocked edge of a
+//     tetrahedron still below the threshold replaced by the best triangulation of its link,
+//     when every new tetrahedron beats the worst old one), under the same rules;
 //  2. smoothing of their interior Steiner vertices (VertexFeature3::Volume; input, segment and
 //     facet vertices never move): a few candidate positions (the neighbours' centroid, halfway
 //     to it, steps along the ascent direction of the star's smallest dihedral angle, and the
@@ -55,6 +58,9 @@ struct SliverRemoval3Counters {
     std::uint64_t flips_23 = 0;  ///< swaps made, by kind
     std::uint64_t flips_32 = 0;
     std::uint64_t flips_44 = 0;
+    /// edges removed (triangulation/modification/edge_removal_3d: rings of 3 to 7 around an
+    /// edge of a tetrahedron still below the threshold after the face swaps)
+    std::uint64_t edge_removals = 0;
     std::uint64_t swaps_locked = 0;    ///< preferred swaps refused: a subface or subsegment
     std::uint64_t swaps_vetoed = 0;    ///< preferred swaps refused by the bounds
     std::uint64_t moves_accepted = 0;  ///< smoothing moves made
@@ -68,7 +74,8 @@ struct SliverRemoval3Counters {
 };
 
 inline constexpr std::array kSliverRemoval3CounterNames = EM_COUNTER_TABLE(
-    SliverRemoval3Counters, rounds, flips_23, flips_32, flips_44, swaps_locked, swaps_vetoed,
+    SliverRemoval3Counters, rounds, flips_23, flips_32, flips_44, edge_removals, swaps_locked,
+    swaps_vetoed,
     moves_accepted, moves_rejected, moves_vetoed, slivers_before, slivers_after, folds_removed);
 static_assert(counter_table_complete(kSliverRemoval3CounterNames));
 

@@ -81,10 +81,16 @@ std::vector<TetIdx> vertex_star(const TetMesh3& mesh, VertIdx v);
 
 // ---- Flips at an arbitrary face, planned then made (edge-face swapping, vertex removal) ----
 
-enum class FlipKind3 { None, Flip23, Flip32, Flip44, Flip22 };
+enum class FlipKind3 { None, Flip23, Flip32, Flip44, Flip22, EdgeRemoval };
+
+/// Most tetrahedra around an edge that edge removal replaces (triangulation/modification/
+/// edge_removal_3d): rings of up to 7, as in Shewchuk's experiments, where larger rings rarely
+/// gave a better triangulation.
+inline constexpr unsigned kMaxEdgeRemovalRing = 7;
 
 /// Adds one to the counter of `kind` in `counters`: the members flips_23, flips_32, flips_44,
-/// and flips_22 where the counters have one (a kind without a member is not counted).
+/// and flips_22 and edge_removals where the counters have one (a kind without a member is not
+/// counted).
 template <class Counters>
 void count_flip(Counters& counters, FlipKind3 kind) {
     if (kind == FlipKind3::Flip23) ++counters.flips_23;
@@ -92,6 +98,9 @@ void count_flip(Counters& counters, FlipKind3 kind) {
     if (kind == FlipKind3::Flip44) ++counters.flips_44;
     if constexpr (requires { counters.flips_22; }) {
         if (kind == FlipKind3::Flip22) ++counters.flips_22;
+    }
+    if constexpr (requires { counters.edge_removals; }) {
+        if (kind == FlipKind3::EdgeRemoval) ++counters.edge_removals;
     }
 }
 
@@ -106,11 +115,14 @@ void count_flip(Counters& counters, FlipKind3 kind) {
 ///                              ->  (y, z, e, d), (z, x, e, d) and the same two from the far
 ///                                  side's face (x, y, w) seen from xywd        [edge de]
 ///   2-2: as 4-4 with xy on the boundary and only xyzd, xyze around it.
+///   edge removal (triangulation/modification/edge_removal_3d): the n <= kMaxEdgeRemovalRing
+///   tetrahedra around an interior edge ab replaced by 2 (n - 2): a triangulation of the ring of
+///   its link, each triangle joined to a and to b.
 struct FlipPlan3 {
     FlipKind3 kind = FlipKind3::None;
-    std::array<TetIdx, 4> old{};
+    std::array<TetIdx, kMaxEdgeRemovalRing> old{};
     unsigned old_count = 0;
-    std::array<Tet, 4> made{};
+    std::array<Tet, 2 * (kMaxEdgeRemovalRing - 2)> made{};
     unsigned made_count = 0;
 };
 

@@ -29,6 +29,7 @@
 #include <array>
 #include <deque>
 #include <initializer_list>
+#include <span>
 #include <string>
 
 #include "base/enum_names.hpp"
@@ -65,13 +66,13 @@ TetCorners corners(const TetMesh3& mesh, const Tet& t) {
 
 /// Whether the quality criterion strictly prefers the plan's new tetrahedra.
 bool quality_prefers(const TetMesh3& mesh, SwapCriterion3 criterion, const FlipPlan& plan) {
-    std::array<Tet, 4> old{};
+    std::array<Tet, kMaxEdgeRemovalRing> old{};
     for (unsigned i = 0; i < plan.old_count; ++i) old[i] = mesh.tet(plan.old[i]);
     switch (criterion) {
         case SwapCriterion3::MaxMinDihedral:
         case SwapCriterion3::MinMaxDihedral: {
             const bool min = criterion == SwapCriterion3::MaxMinDihedral;
-            auto extreme = [&](const std::array<Tet, 4>& set, unsigned count) {
+            auto extreme = [&](const std::span<const Tet> set, unsigned count) {
                 Dihedral best = min ? smallest_dihedral(corners(mesh, set[0]))
                                     : largest_dihedral(corners(mesh, set[0]));
                 for (unsigned i = 1; i < count; ++i) {
@@ -95,7 +96,7 @@ bool quality_prefers(const TetMesh3& mesh, SwapCriterion3 criterion, const FlipP
             return true;
         }
         case SwapCriterion3::VolumeEdge: {
-            auto worst = [&](const std::array<Tet, 4>& set, unsigned count) {
+            auto worst = [&](const std::span<const Tet> set, unsigned count) {
                 TetCorners best = corners(mesh, set[0]);
                 for (unsigned i = 1; i < count; ++i) {
                     const TetCorners c = corners(mesh, set[i]);
