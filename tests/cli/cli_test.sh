@@ -712,7 +712,22 @@ swap3d_criteria() {
     if grep -Ev '^[a-z_0-9]+(\[[0-9.]+,([0-9.]+|inf)[])])?: [^ ]+$' "$work/out" | grep -q .; then
       fail "swap3d --stats --quality: a line is not 'name: value'"
     fi
+    # With edge removal: counted; under max-min-dihedral never a smaller smallest angle (every
+    # removal after the face swaps' fixpoint raises the sorted smallest angles).
+    local without
+    without=$(sed -n 's/^min_dihedral_degrees: //p' "$work/out")
+    run 0 swap3d "$data/stall7.node" "$data/stall7_placing.ele" -o "$work/$criterion-er.ele" \
+      --criterion "$criterion" --edge-removal --stats --quality || continue
+    grep -Eq '^edge_removals: [0-9]+$' "$work/out" || fail "swap3d --edge-removal: no edge_removals line"
+    if [[ $criterion == max-min-dihedral ]]; then
+      local with
+      with=$(sed -n 's/^min_dihedral_degrees: //p' "$work/out")
+      awk -v a="$with" -v b="$without" 'BEGIN { exit !(a + 0 >= b + 0) }' ||
+        fail "swap3d --edge-removal: smallest angle $with below $without without it"
+    fi
   done
+  expect_error 2 'edge-removal needs a quality criterion' \
+    swap3d "$data/stall7.node" "$data/stall7_placing.ele" -o "$work/x.ele" --edge-removal
 }
 
 swap3d_bad_input() {
