@@ -192,6 +192,17 @@ bool flip_removes_locked(const TetMesh3& mesh, const FlipPlan3& plan, const Swap
     return false;
 }
 
+ConstrainedFlip3 apply_constrained_flip_3d(TetMesh3& mesh, const FlipPlan3& plan,
+                                           const SwapConstraints3& constraints,
+                                           std::vector<TetIdx>& created) {
+    if (constraints.locks != nullptr && flip_removes_locked(mesh, plan, *constraints.locks))
+        return ConstrainedFlip3::Locked;
+    if (constraints.accept && !constraints.accept(plan)) return ConstrainedFlip3::Vetoed;
+    apply_flip_3d(mesh, plan, created);
+    if (constraints.on_flip) constraints.on_flip(plan, created);
+    return ConstrainedFlip3::Made;
+}
+
 EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion) {
     return swap_faces_3d(mesh, criterion, SwapConstraints3{});
 }
@@ -237,17 +248,11 @@ EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion,
             }
             if (!quality_prefers(mesh, criterion, plan)) continue;
         }
-        if (constraints.locks != nullptr && flip_removes_locked(mesh, plan, *constraints.locks)) {
-            ++counters.locked;
-            continue;
-        }
-        if (constraints.accept && !constraints.accept(plan)) {
-            ++counters.vetoed;
-            continue;
-        }
-        apply_flip_3d(mesh, plan, created);
+        const ConstrainedFlip3 outcome = apply_constrained_flip_3d(mesh, plan, constraints, created);
+        if (outcome == ConstrainedFlip3::Locked) ++counters.locked;
+        if (outcome == ConstrainedFlip3::Vetoed) ++counters.vetoed;
+        if (outcome != ConstrainedFlip3::Made) continue;
         count_flip(counters, plan.kind);
-        if (constraints.on_flip) constraints.on_flip(plan, created);
         // Every face of the new tetrahedra, the ones between them too: a face between two new
         // tetrahedra is where a later 4-4 swap through them is seen from (its other faces see
         // other point sets), and the swap that would undo this one is simply never preferred.

@@ -114,6 +114,16 @@ struct SwapConstraints3 {
     std::function<void(const FlipPlan3&, const std::vector<TetIdx>&)> on_flip;
 };
 
+/// What apply_constrained_flip_3d did with a planned flip.
+enum class ConstrainedFlip3 { Made, Locked, Vetoed };
+
+/// Makes the planned flip unless it removes one of `constraints`' locked faces or edges
+/// (Locked) or the caller's accept refuses it (Vetoed); when made, its new tetrahedra's slots
+/// go to `created` and on_flip is told. The one gate of swap_faces_3d and remove_edges_3d.
+ConstrainedFlip3 apply_constrained_flip_3d(TetMesh3& mesh, const FlipPlan3& plan,
+                                           const SwapConstraints3& constraints,
+                                           std::vector<TetIdx>& created);
+
 /// swap_faces_3d under `constraints`.
 /// @pre as swap_faces_3d; criterion is not Delaunay when seeds are given.
 EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion,

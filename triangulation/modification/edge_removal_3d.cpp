@@ -246,18 +246,11 @@ EdgeRemovalCounters remove_edges_3d(TetMesh3& mesh, SwapCriterion3 criterion,
             if (constraints.locks != nullptr && constraints.locks->edge_locked(a, b)) continue;
             ++counters.edges_examined;
             if (!plan_edge_removal_3d(mesh, t, a, b, criterion, plan)) continue;
-            if (constraints.locks != nullptr &&
-                flip_removes_locked(mesh, plan, *constraints.locks)) {
-                ++counters.locked;
-                continue;
-            }
-            if (constraints.accept && !constraints.accept(plan)) {
-                ++counters.vetoed;
-                continue;
-            }
-            apply_flip_3d(mesh, plan, created);
-            ++counters.edge_removals;
-            if (constraints.on_flip) constraints.on_flip(plan, created);
+            const ConstrainedFlip3 outcome =
+                apply_constrained_flip_3d(mesh, plan, constraints, created);
+            if (outcome == ConstrainedFlip3::Locked) ++counters.locked;
+            if (outcome == ConstrainedFlip3::Vetoed) ++counters.vetoed;
+            if (outcome == ConstrainedFlip3::Made) ++counters.edge_removals;
         }
     }
     return counters;
