@@ -245,6 +245,7 @@ constexpr std::uint32_t kNone = ~std::uint32_t{0};
 /// mesh (the tetrahedron on each subface, by the sign of its far corner); both bits when no
 /// mesh is given or a facet's every tetrahedron there is flat against it.
 std::vector<std::uint8_t> domain_sides(const Plc3& plc,
+                                       const std::vector<std::array<VertIdx, 3>>& reference,
                                        const triangulation::ConformingMesh3* recovered) {
     std::vector<std::uint8_t> sides(plc.facets.size(), 3);
     if (recovered == nullptr) return sides;
@@ -260,9 +261,6 @@ std::vector<std::uint8_t> domain_sides(const Plc3& plc,
                        facet};
     }
     std::sort(subfaces.begin(), subfaces.end());
-    std::vector<std::array<VertIdx, 3>> reference(plc.facets.size());
-    for (std::size_t f = 0; f < plc.facets.size(); ++f)
-        reference[f] = triangulation::facet_reference_corners(plc, plc.facets[f]);
     std::vector<std::uint8_t> seen(plc.facets.size(), 0);
     for (triangulation::TetIdx t = 0; t < m.tet_count(); ++t) {
         const VertIdx* c = &m.tets[4 * std::size_t{t}];
@@ -295,7 +293,10 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc, const triangulation::ConformingMes
     const triangulation::SurfaceTriangles3 surface = triangulation::triangulate_facets_3d(plc);
     const std::uint32_t count = surface.triangle_count();
     if (count == 0) return estimate;
-    const std::vector<std::uint8_t> sides = domain_sides(plc, recovered);
+    std::vector<std::array<VertIdx, 3>> reference(plc.facets.size());
+    for (std::size_t f = 0; f < plc.facets.size(); ++f)
+        reference[f] = triangulation::facet_reference_corners(plc, plc.facets[f]);
+    std::vector<std::uint8_t> sides = domain_sides(plc, reference, recovered);
     // Each one-sided facet's unit normal, oriented as orient3d's positive side of its reference
     // corners, and a point of it (scaled coordinates, defined below).
     std::vector<std::pair<Vec, Vec>> planes(plc.facets.size());
@@ -317,18 +318,29 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc, const triangulation::ConformingMes
     }
     for (std::size_t f = 0; f < plc.facets.size(); ++f) {
         if (sides[f] == 3) continue;
-        const auto ref = triangulation::facet_reference_corners(plc, plc.facets[f]);
         Vec q[3];
         for (int k = 0; k < 3; ++k) {
-            const double* p = plc.point(ref[k]);
+            const double* p = plc.point(reference[f][k]);
             q[k] = {unit(p[0]), unit(p[1]), unit(p[2])};
         }
-        const Vec u = sub(q[1], q[0]), v = sub(q[2], q[0]);
+        // The two edge vectors each scaled by a power of two to a largest component in
+        // [1, 2) (the normal's direction unchanged): a facet 2^-600 of the extent wide would
+        // make their cross product underflow.
+        Vec u = sub(q[1], q[0]), v = sub(q[2], q[0]);
+        for (Vec* w : {&u, &v}) {
+            const double big = std::max({std::fabs((*w)[0]), std::fabs((*w)[1]), std::fabs((*w)[2])});
+            if (big > 0)
+                for (double& x : *w) x = std::ldexp(x, -std::ilogb(big));
+        }
         // orient3d(a, b, c, d) > 0 when d is below the plane seen counter-clockwise from above,
         // that is on the side of -(b - a) x (c - a).
         Vec n = {-(u[1] * v[2] - u[2] * v[1]), -(u[2] * v[0] - u[0] * v[2]),
                  -(u[0] * v[1] - u[1] * v[0])};
         const double length = std::sqrt(dot(n, n));
+        if (!(length > 0) || !std::isfinite(length)) {
+            sides[f] = 3;  // no plane to tell the sides by: both count
+            continue;
+        }
         for (double& x : n) x /= length;
         planes[f] = {n, q[0]};
     }
