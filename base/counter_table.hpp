@@ -124,6 +124,17 @@ constexpr bool counter_table_complete(const std::array<CounterName<Counters>, N>
         EM_DETAIL_COUNTER_EXPAND1(EM_DETAIL_COUNTER_EXPAND1(__VA_ARGS__))))
 #define EM_DETAIL_COUNTER_EXPAND1(...) __VA_ARGS__
 
+/// Adds every counted field of `from` to `into` (derived rows are computed, not stored): the
+/// totals of several runs of one construction.
+template <class Counters, std::size_t N>
+void add_counters(const std::array<CounterName<Counters>, N>& table, Counters& into,
+                  const Counters& from) {
+    for (const CounterName<Counters>& row : table) {
+        if (row.field != nullptr) into.*(row.field) += from.*(row.field);
+        if (row.narrow_field != nullptr) into.*(row.narrow_field) += from.*(row.narrow_field);
+    }
+}
+
 /// The counters as (name, value) pairs, in the table's order.
 template <class Counters, std::size_t N>
 std::vector<std::pair<std::string, std::uint64_t>> counters_by_name(

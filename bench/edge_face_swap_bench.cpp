@@ -151,7 +151,7 @@ void max_min_benchmark(benchmark::State& state) {
             for (tri::TetIdx t = 0; t < mesh.tet_slots(); ++t)
                 if (!mesh.is_dead(t) && smallest_degrees(mesh, t) < 15) bad.push_back(t);
             removals = tri::remove_edges_3d(mesh, tri::SwapCriterion3::MaxMinDihedral, bad, {})
-                           .edge_removals;
+                           .removals;
             tri::swap_faces_3d(mesh, tri::SwapCriterion3::MaxMinDihedral);
         }
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();

@@ -4,6 +4,7 @@
 // report (triangulation/checks/quality_3d).
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
@@ -71,24 +72,35 @@ void run_swap3d(const Swap3dArguments& arguments) {
     tri::TetMesh3 work = tri::make_tet_mesh_3d(mesh);
     tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(work, criterion);
     tri::EdgeRemovalCounters removal;
-    // Edge removal on every edge, then the face swaps again, until no edge goes: each step
-    // strictly improves the sorted qualities (edge_removal_3d.hpp), so the loop ends.
-    while (arguments.edge_removal) {
-        std::vector<tri::TetIdx> live;
+    // Edge removal on every edge, then the face swaps from the tetrahedra it made, then edge
+    // removal on the edges of everything made since, until no edge goes (an edge whose ring
+    // changed is an edge of a new tetrahedron). Each step strictly improves the sorted
+    // qualities (edge_removal_3d.hpp), so the loop ends.
+    if (arguments.edge_removal) {
+        std::vector<tri::TetIdx> made, next;
+        tri::SwapConstraints3 follow;
+        follow.on_flip = [&made](const tri::FlipPlan3&, const std::vector<tri::TetIdx>& created) {
+            made.insert(made.end(), created.begin(), created.end());
+        };
         for (tri::TetIdx t = 0; t < work.tet_slots(); ++t)
-            if (!work.is_dead(t)) live.push_back(t);
-        const tri::EdgeRemovalCounters round = tri::remove_edges_3d(work, criterion, live, {});
-        removal.edges_examined += round.edges_examined;
-        removal.edge_removals += round.edge_removals;
-        if (round.edge_removals == 0) break;
-        const tri::EdgeFaceSwapCounters more = tri::swap_faces_3d(work, criterion);
-        counters.faces_examined += more.faces_examined;
-        counters.edges_examined += more.edges_examined;
-        counters.flips_23 += more.flips_23;
-        counters.flips_32 += more.flips_32;
-        counters.flips_44 += more.flips_44;
-        counters.flips_22 += more.flips_22;
-        counters.not_flippable += more.not_flippable;
+            if (!work.is_dead(t)) next.push_back(t);
+        while (true) {
+            made.clear();
+            const tri::EdgeRemovalCounters round = tri::remove_edges_3d(work, criterion, next, follow);
+            add_counters(tri::kEdgeRemovalCounterNames, removal, round);
+            if (round.removals == 0) break;
+            std::vector<tri::FaceIdx> seeds;
+            for (const tri::TetIdx t : made)
+                for (unsigned k = 0; k < 4; ++k) seeds.push_back(4 * t + k);
+            next = made;
+            tri::SwapConstraints3 swaps = follow;
+            swaps.seeds = seeds;
+            add_counters(tri::kEdgeFaceSwapCounterNames, counters,
+                         tri::swap_faces_3d(work, criterion, swaps));
+            next.insert(next.end(), made.begin(), made.end());
+            std::sort(next.begin(), next.end());
+            next.erase(std::unique(next.begin(), next.end()), next.end());
+        }
     }
     mesh = tri::to_tetrahedralization_3d(work);
     const double seconds = seconds_since(start);
@@ -104,8 +116,9 @@ void run_swap3d(const Swap3dArguments& arguments) {
             std::erase_if(named, [](const auto& c) { return c.first == "stalled_faces"; });
         print_counters(named);
         if (arguments.edge_removal) {
-            std::cout << "edge_removal_edges_examined: " << removal.edges_examined << '\n';
-            std::cout << "edge_removals: " << removal.edge_removals << '\n';
+            auto removal_named = counters_by_name(tri::kEdgeRemovalCounterNames, removal);
+            for (auto& [name, value] : removal_named) name = "edge_removal_" + name;
+            print_counters(removal_named);
         }
         print_construct_seconds(seconds);
     }

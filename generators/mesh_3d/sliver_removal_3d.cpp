@@ -220,10 +220,10 @@ std::uint64_t swap_pass(Work& work, const tri::SwapLocks3& locks, SliverRemoval3
     const std::vector<TetIdx> still = work.bad_tets();
     const tri::EdgeRemovalCounters e =
         tri::remove_edges_3d(work.mesh, tri::SwapCriterion3::MaxMinDihedral, still, constraints);
-    c.edge_removals += e.edge_removals;
+    c.edge_removals += e.removals;
     c.swaps_locked += e.locked;
     c.swaps_vetoed += e.vetoed;
-    return s.flips() + e.edge_removals;
+    return s.flips() + e.removals;
 }
 
 // ---- Smoothing ----

@@ -718,7 +718,7 @@ swap3d_criteria() {
     without=$(sed -n 's/^min_dihedral_degrees: //p' "$work/out")
     run 0 swap3d "$data/stall7.node" "$data/stall7_placing.ele" -o "$work/$criterion-er.ele" \
       --criterion "$criterion" --edge-removal --stats --quality || continue
-    grep -Eq '^edge_removals: [0-9]+$' "$work/out" || fail "swap3d --edge-removal: no edge_removals line"
+    grep -Eq '^edge_removal_removals: [0-9]+$' "$work/out" || fail "swap3d --edge-removal: no edge_removal_removals line"
     if [[ $criterion == max-min-dihedral ]]; then
       local with
       with=$(sed -n 's/^min_dihedral_degrees: //p' "$work/out")

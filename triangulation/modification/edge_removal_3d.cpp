@@ -250,7 +250,7 @@ EdgeRemovalCounters remove_edges_3d(TetMesh3& mesh, SwapCriterion3 criterion,
                 apply_constrained_flip_3d(mesh, plan, constraints, created);
             if (outcome == ConstrainedFlip3::Locked) ++counters.locked;
             if (outcome == ConstrainedFlip3::Vetoed) ++counters.vetoed;
-            if (outcome == ConstrainedFlip3::Made) ++counters.edge_removals;
+            if (outcome == ConstrainedFlip3::Made) ++counters.removals;
         }
     }
     return counters;

@@ -26,13 +26,13 @@ namespace exactmesh::triangulation {
 
 struct EdgeRemovalCounters {
     std::uint64_t edges_examined = 0;  ///< unlocked edges tried
-    std::uint64_t edge_removals = 0;   ///< edges removed
+    std::uint64_t removals = 0;        ///< edges removed
     std::uint64_t locked = 0;          ///< removals refused: a locked face or edge would go
     std::uint64_t vetoed = 0;          ///< removals the caller's accept refused
 };
 
 inline constexpr std::array kEdgeRemovalCounterNames = EM_COUNTER_TABLE(
-    EdgeRemovalCounters, edges_examined, edge_removals, locked, vetoed);
+    EdgeRemovalCounters, edges_examined, removals, locked, vetoed);
 static_assert(counter_table_complete(kEdgeRemovalCounterNames));
 
 /// The removal of edge (a, b) of live tetrahedron t into `plan` (kind EdgeRemoval): the best

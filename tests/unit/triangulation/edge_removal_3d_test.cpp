@@ -181,7 +181,7 @@ TEST(Triangulation_EdgeRemoval3, TheBestTriangulationOfTheRingIsChosen) {
 
             const tri::EdgeRemovalCounters counters = tri::remove_edges_3d(
                 mesh, tri::SwapCriterion3::MaxMinDihedral, std::vector<tri::TetIdx>{0}, {});
-            EXPECT_EQ(counters.edge_removals, 1u);
+            EXPECT_EQ(counters.removals, 1u);
             expect_valid(mesh);
             double after = 0;
             for (tri::TetIdx t = 0; t < mesh.tet_slots(); ++t) {
@@ -229,7 +229,7 @@ TEST(Triangulation_EdgeRemoval3, EveryCriterionImprovesItsOwnQuality) {
             }
         }
         EXPECT_EQ(tri::remove_edges_3d(mesh, criterion, std::vector<tri::TetIdx>{0}, {})
-                      .edge_removals,
+                      .removals,
                   1u);
         expect_valid(mesh);
     }
@@ -265,19 +265,19 @@ TEST(Triangulation_EdgeRemoval3, LocksVetoesRingsPastSevenAndBoundaryEdgesAreLef
     for (tri::TetIdx t = 0; t < mesh.tet_slots(); ++t) all.push_back(t);
     tri::EdgeRemovalCounters c =
         tri::remove_edges_3d(mesh, tri::SwapCriterion3::MaxMinDihedral, all, constraints);
-    EXPECT_EQ(c.edge_removals, 0u);
+    EXPECT_EQ(c.removals, 0u);
     tri::SwapLocks3 face_lock;
     face_lock.add_face(0, 1, 2);
     face_lock.finish();
     constraints.locks = &face_lock;
     c = tri::remove_edges_3d(mesh, tri::SwapCriterion3::MaxMinDihedral, all, constraints);
-    EXPECT_EQ(c.edge_removals, 0u);
+    EXPECT_EQ(c.removals, 0u);
     EXPECT_GE(c.locked, 1u);
     // The caller's veto.
     constraints.locks = nullptr;
     constraints.accept = [](const tri::FlipPlan3&) { return false; };
     c = tri::remove_edges_3d(mesh, tri::SwapCriterion3::MaxMinDihedral, all, constraints);
-    EXPECT_EQ(c.edge_removals, 0u);
+    EXPECT_EQ(c.removals, 0u);
     EXPECT_GE(c.vetoed, 1u);
     // Eight around the edge: not planned.
     const tri::TetMesh3 eight = first_ring(8, false, 0);
