@@ -288,7 +288,8 @@ constexpr int kMaxSamplesPerSide = 16;
 
 }  // namespace
 
-GapEstimate3 gap_estimate_3d(const Plc3& plc, const triangulation::ConformingMesh3* recovered) {
+GapEstimate3 gap_estimate_3d(const Plc3& plc, const triangulation::ConformingMesh3* recovered,
+                             double enough) {
     GapEstimate3 estimate;
     const triangulation::SurfaceTriangles3 surface = triangulation::triangulate_facets_3d(plc);
     const std::uint32_t count = surface.triangle_count();
@@ -364,47 +365,75 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc, const triangulation::ConformingMes
     // counts.
     const double floor = 0x1p-44;
     const TriangleTree tree(triangles);
+    // First pass: each triangle's nearest triangle sharing no vertex with it (if nearer than
+    // its longest edge), and an upper bound of the estimate from those distances alone.
+    std::vector<double> nearest(count);
+    std::vector<std::uint32_t> nearest_triangle(count, kNone);
+    std::vector<double> area(count);
+    std::vector<Vec> edge1(count), edge2(count);
     double smallest = INFINITY;
-    for (std::uint32_t t = 0; t < count; ++t) {
-        const Vec e1 = sub(triangles[t][1], triangles[t][0]);
-        const Vec e2 = sub(triangles[t][2], triangles[t][0]);
-        const Vec normal = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                            e1[0] * e2[1] - e1[1] * e2[0]};
-        const double area = 0.5 * std::sqrt(dot(normal, normal));
-        const double own = std::max(longest[t], floor);
-        // The nearest triangle sharing no vertex with t, if nearer than t's longest edge.
+    double upper = 0;
+    auto apart_from = [&](std::uint32_t t) {
         const VertIdx* tv = &surface.triangles[3 * std::size_t{t}];
-        auto apart = [&](std::uint32_t u) {
+        return [&, t, tv](std::uint32_t u) {
             const VertIdx* uv = &surface.triangles[3 * std::size_t{u}];
             for (int i = 0; i < 3; ++i)
                 for (int j = 0; j < 3; ++j)
                     if (tv[i] == uv[j]) return false;
             return faces_across_domain(t, u) && faces_across_domain(u, t);
         };
+    };
+    for (std::uint32_t t = 0; t < count; ++t) {
+        edge1[t] = sub(triangles[t][1], triangles[t][0]);
+        edge2[t] = sub(triangles[t][2], triangles[t][0]);
+        const Vec& e1 = edge1[t];
+        const Vec& e2 = edge2[t];
+        const Vec normal = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                            e1[0] * e2[1] - e1[1] * e2[0]};
+        area[t] = 0.5 * std::sqrt(dot(normal, normal));
+        const double own = std::max(longest[t], floor);
         const Box t_box = box_of(triangles[t]);
-        double nearest = longest[t] * longest[t];
-        std::uint32_t nearest_triangle = kNone;
+        nearest[t] = longest[t] * longest[t];
         tree.nearest(
-            nearest, nearest_triangle,
-            [&](const Box& box) { return box_squared_distance(t_box, box); }, apart,
+            nearest[t], nearest_triangle[t],
+            [&](const Box& box) { return box_squared_distance(t_box, box); }, apart_from(t),
             [&](const std::array<Vec, 3>& u) {
                 return triangle_squared_distance(triangles[t], u);
             });
-        smallest = std::min(smallest, std::max(std::sqrt(nearest), floor));
-        if (!(nearest < longest[t] * longest[t])) {
-            estimate.points += area / (4 * own * own);
+        smallest = std::min(smallest, std::max(std::sqrt(nearest[t]), floor));
+        if (!(nearest[t] < longest[t] * longest[t])) {
+            estimate.points += area[t] / (4 * own * own);
+            upper += area[t] / (4 * own * own);
             continue;
         }
+        // Every sample below lies within rounding (2^-48 of the scaled coordinates) of t, so
+        // its distance f is at least this one's, less that: its area / (4 f^2) bounds t's share.
+        const double low = std::max(std::sqrt(nearest[t]) - 0x1p-46, floor);
+        upper += area[t] / (4 * low * low);
+    }
+    if (!(upper > enough)) {
+        estimate.points = upper;
+        estimate.smallest_feature = std::ldexp(smallest, -shift);
+        estimate.upper_bound_only = true;
+        return estimate;
+    }
+    for (std::uint32_t t = 0; t < count; ++t) {
+        if (nearest_triangle[t] == kNone || !(nearest[t] < longest[t] * longest[t])) continue;
+        const double own = std::max(longest[t], floor);
+        const Vec& e1 = edge1[t];
+        const Vec& e2 = edge2[t];
+        const auto apart = apart_from(t);
+        std::uint32_t start = nearest_triangle[t];
         // A close feature faces only part of t (the outer wall's triangle beside a small
         // hole): t is sampled at the centres of its k^2 congruent sub-triangles, each with
         // the distance from its centre to the triangles sharing no vertex with t (capped and
         // floored as f).
         // Clamped as a double: the ratio can exceed any int (1.9e11 from a fuzzed PLC, an
         // undefined conversion), or be infinite when the nearest distance is 0.
-        const double ratio = std::ceil(longest[t] / std::sqrt(nearest));
+        const double ratio = std::ceil(longest[t] / std::sqrt(nearest[t]));
         const int k = !(ratio < kMaxSamplesPerSide) ? kMaxSamplesPerSide
                                                     : std::max(1, static_cast<int>(ratio));
-        const double piece = area / (static_cast<double>(k) * k);
+        const double piece = area[t] / (static_cast<double>(k) * k);
         auto sample = [&](double a, double b) {
             const Vec p = {triangles[t][0][0] + a * e1[0] + b * e2[0],
                            triangles[t][0][1] + a * e1[1] + b * e2[1],
@@ -415,9 +444,9 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc, const triangulation::ConformingMes
             };
             // Started from the previous sample's nearest triangle (the same least distance,
             // found with fewer boxes opened).
-            double best = std::min(own * own, distance(triangles[nearest_triangle]));
+            double best = std::min(own * own, distance(triangles[start]));
             tree.nearest(
-                best, nearest_triangle,
+                best, start,
                 [&](const Box& box) { return box_squared_distance(p_box, box); }, apart, distance);
             const double f = std::max(std::sqrt(best), floor);
             estimate.points += piece / (4 * f * f);
@@ -436,8 +465,9 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc, const triangulation::ConformingMes
 void refuse_gaps_far_over_budget_3d(const Plc3& plc,
                                     const triangulation::ConformingMesh3& recovered,
                                     std::uint64_t budget, const char* who, double margin) {
-    const GapEstimate3 estimate = gap_estimate_3d(plc, &recovered);
-    if (!(estimate.points > margin * static_cast<double>(budget))) return;
+    const double limit = margin * static_cast<double>(budget);
+    const GapEstimate3 estimate = gap_estimate_3d(plc, &recovered, limit);
+    if (!(estimate.points > limit)) return;
     throw InputError(std::string(who) + ": Steiner point budget of " + std::to_string(budget) +
                      " exceeded at once: facets " +
                      format_approximate(estimate.smallest_feature, 3) +

@@ -153,6 +153,30 @@ TEST(Generators_GapEstimate3d, WallsFacingEachOtherAcrossAHoleAskForNothing) {
     EXPECT_EQ(gap_estimate_3d(gap, &gap_recovered).points, gap_estimate_3d(gap).points);
 }
 
+TEST(Generators_GapEstimate3d, TheFirstPassBoundsTheSampledEstimate) {
+    // A caller comparing with a limit skips the samples when the first pass's bound (each
+    // triangle at the distance of its nearest triangle) is within it; the bound is at least the
+    // sampled estimate, and a limit below it takes the samples, with the same result as no limit.
+    for (const double gap : {1e-9, 1e-4, 1.0 / 64}) {
+        for (const int e : {0, 600, -600}) {
+            const tri::Plc3 plc = tri::scaled(box_with_gap(gap), e);
+            const GapEstimate3 sampled = gap_estimate_3d(plc);
+            EXPECT_FALSE(sampled.upper_bound_only);
+            const GapEstimate3 bound = gap_estimate_3d(plc, nullptr, INFINITY);
+            EXPECT_TRUE(bound.upper_bound_only);
+            EXPECT_GE(bound.points, sampled.points) << gap << " " << e;
+            EXPECT_EQ(bound.smallest_feature, sampled.smallest_feature) << gap << " " << e;
+            const GapEstimate3 below = gap_estimate_3d(plc, nullptr, bound.points / 2);
+            EXPECT_FALSE(below.upper_bound_only);
+            EXPECT_EQ(below.points, sampled.points) << gap << " " << e;
+        }
+    }
+    // The sample domain of three small holes: the bound and the samples agree on refusing a
+    // budget of 10^6 (about 2.5 10^13 points).
+    const tri::Plc3 holes = three_small_holes();
+    EXPECT_GT(gap_estimate_3d(holes, nullptr, 1e6).points, 1e13);
+}
+
 TEST(Generators_GapEstimate3d, CloseToWhatRefinementMakesAndScaleInvariant) {
     // g = 1/64: refinement at radius-edge 2 adds a few hundred to a thousand vertices.
     const tri::Plc3 plc = box_with_gap(1.0 / 64);
