@@ -8,6 +8,7 @@
 // otherwise the crossed edges are removed by the chosen recovery. Local indices in the walk:
 // crossed half-edge h runs from x (right of a->b) to y (left of a->b).
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <deque>
 #include <span>
@@ -183,6 +184,50 @@ void split_at_intersection(CdtState& cdt, const Piece& piece, EdgeIdx h) {
     const VertIdx u = cdt.mesh.origin(h), v = cdt.mesh.destination(h);
     const std::uint32_t other = cdt.segment_of[h];
     const std::array<double, 2> p = crossing_point(cdt, piece, u, v, other);
+    // The crossing rounded a few ulps from an end w of one piece that lies within rounding of the
+    // other's segment (a T-junction whose end was rounded off the segment it ends on): the other
+    // bends through w instead, as bend_through_near_vertices bends a piece through a near apex.
+    // Inserted, the crossing would leave a piece a few ulps long between it and w, a feature no
+    // refinement can split (every generator refused such inputs). Ulps of each coordinate, not
+    // the chain rule's 2^-40 of |w|: a feature 1e-61 wide beside y = 4e-5 is resolvable near
+    // x = 0 and keeps its crossing.
+    const auto near = [&](VertIdx w) {
+        const double* q = cdt.mesh.point(w);
+        if (q[0] == p[0] && q[1] == p[1]) return false;  // the same point: both split there
+        for (int k = 0; k < 2; ++k) {
+            const double m = std::max(std::fabs(q[k]), std::fabs(p[k]));
+            if (!(std::fabs(q[k] - p[k]) <= 4 * (std::nextafter(m, INFINITY) - m))) return false;
+        }
+        return true;
+    };
+    for (const VertIdx w : {a, b}) {
+        if (!near(w) || !bend_candidate(cdt, other, u, v, w)) continue;
+        cdt.segment_of[h] = cdt.segment_of[cdt.mesh.twin[h]] = kNone;
+        const std::vector<std::uint32_t> also = cdt.release_shared(u, v);
+        ++cdt.result.counters.vertices_on_segments;
+        cdt.result.warnings.push_back(cdt.vertex_name(w) + " lies within rounding of segment " +
+                                      cdt.segment_name(other) + "; the segment bends through it");
+        std::vector<std::pair<VertIdx, VertIdx>> released{{u, v}};
+        restore_delaunay(cdt, released);
+        for (const std::uint32_t s : also) {
+            cdt.work.push_back({u, w, s});
+            cdt.work.push_back({w, v, s});
+        }
+        cdt.work.push_back({u, w, other});
+        cdt.work.push_back({w, v, other});
+        cdt.work.push_back({a, b, piece.segment});
+        return;
+    }
+    for (const VertIdx w : {u, v}) {
+        if (!near(w) || !bend_candidate(cdt, piece.segment, a, b, w)) continue;
+        ++cdt.result.counters.vertices_on_segments;
+        cdt.result.warnings.push_back(cdt.vertex_name(w) + " lies within rounding of segment " +
+                                      cdt.segment_name(piece.segment) +
+                                      "; the segment bends through it");
+        cdt.work.push_back({w, b, piece.segment});
+        cdt.work.push_back({a, w, piece.segment});
+        return;
+    }
     // The rounded point may equal a vertex (then both segments bend through it).
     const VertIdx candidate = cdt.add_vertex(p[0], p[1]);
     cdt.core.last_triangle = triangle_of(h);

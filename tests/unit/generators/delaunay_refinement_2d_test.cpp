@@ -374,6 +374,38 @@ TEST(Generators_DelaunayRefinement, UlpWideFeatureOfTheTriangulationIsBentThroug
     EXPECT_TRUE(r.check.ok) << r.check.problem;
 }
 
+TEST(Generators_DelaunayRefinement, TJunctionEndRoundedOffItsSegmentBendsTheSegment) {
+    // A hostile-input campaign (T-junctions: segment 8 starts at vertex 11, a + t (b - a) on
+    // segment 5 rounded, a few ulps off it on the side away from segment 8's far end): the
+    // crossing of 5 and 8 was inserted one ulp from vertex 11, and every generator refused the
+    // ulp-long piece between them ("too short to split"). Segment 5 now bends through vertex 11,
+    // which lies within rounding of it (the chain rule), and no crossing is made. At 2^0, 2^+-600
+    // (0-based numbers below: vertex 10, segments 4 and 7).
+    const std::vector<double> xy = {
+        0.1, 0.2, 1.8933400837616632, 0.2, 1.8933400837616632, 1.5219540423197266, 0.1,
+        1.5219540423197266, 0.9698320402809886, 0.545851576936372, 0.10081007840982964,
+        1.0762156785287487, 0.5611707632285803, 0.7952575535043469, 1.462455400782757,
+        0.6933008622965482, 0.3005636091390238, 0.9543060991241246, 0.5890404078006172,
+        1.2600954145655805, 0.33559823241351394, 0.9329244686097542, 0.8424543458772532,
+        0.9116147609929062};
+    const std::vector<std::uint32_t> segments = {0, 1, 1, 2, 2, 3, 3, 0,
+                                                 4, 5, 6, 7, 8, 9, 10, 11};
+    for (const int e : {0, 600, -600}) {
+        Input in{xy, segments, {}, {}};
+        for (double& x : in.xy) x = std::ldexp(x, e);
+        const Refined r = refine(in, gen::RefinementOptions2{}, false);
+        EXPECT_TRUE(r.check.ok) << e << ": " << r.check.problem;
+        const auto& warnings = r.result.mesh.warnings;
+        EXPECT_NE(std::find(warnings.begin(), warnings.end(),
+                            "vertex 10 lies within rounding of segment 4; the segment bends "
+                            "through it"),
+                  warnings.end())
+            << e;
+        for (const std::string& w : warnings)
+            EXPECT_EQ(w.find("segments 7 and 4 cross"), std::string::npos) << e << ": " << w;
+    }
+}
+
 TEST(Generators_DelaunayRefinement, SubnormalDomainWithASizeRefinesOrFailsClearly) {
     // fuzz_mesh_generators_2d (tests/data/fuzz/mesh_generators_2d_refinement_subnormal_box.bin):
     // a quadrilateral with its diagonals at coordinates up to 7.3e-304, size 2^-5 of that: the
