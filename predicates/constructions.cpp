@@ -620,6 +620,82 @@ bool circumcenter3_double_double(const double* p, const double* q, const double*
     return true;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Stage 0 for differences that are not exact doubles (coordinates of one sign change, or of
+// magnitudes more than a factor 2 apart: tetrahedra beside a coordinate plane, a third of the
+// wing's circumcentres took the 576-term raw path for that alone). Each difference is kept
+// exactly as a double-double p = p_hi + p_lo (two_diff), and the same scheme runs on them with
+// double-double products throughout. With the helpers' bounds (times_dd 8.1 u^2 |A B|, plus
+// 3.1 u^2 (|x| + |y|), each beyond the operands' own errors carried through), to first order:
+//  - C_k = x_i y_j - x_j y_i: two times_dd and one plus, within 11.2 u^2 P_Ck;
+//  - |p|^2: three times_dd and two plus, within 14.3 u^2 |p|^2;
+//  - H = sum p_k C_k: each product within (8.1 + 11.2) u^2 |p_k| P_Ck, two sums 6.2: 25.5 u^2 P_H;
+//  - N_k: each product within (8.1 + 14.3 + 11.2) u^2 |p|^2 P_Ck, two sums 6.2: 39.8 u^2 P_Nk;
+// so with certify_dd's quotient (25 u^2 |Q|, halved) and final rounding (2 u^2 |x|),
+// |x~ - x| <= u^2 (12.5 |Q| + (19.9 P_N + 12.8 |Q| P_H) / |H| + 2 |x|): certify_dd's
+// E = 2^-100 (|Q| + (P_N + |Q| P_H) / |H| + |x|) is over 3.2 times every term (the permanents
+// are taken on the high parts, within a factor 1 + 4u of the exact ones). Range: every input
+// coordinate 0 or of magnitude in [2^-150, 2^150]: each is a multiple of 2^-202, so are both
+// parts of every difference (two_diff's error is exact), and every value the scheme forms is a
+// sum of products of at most four of them: 0 or above 2^-808 (normal: every two_product exact,
+// every rounding relative), none above 2^610; certify_dd's ranges as before.
+
+/// A double-double difference a - b, exact.
+DoubleDouble exact_difference(double a, double b) noexcept {
+    DoubleDouble r;
+    two_diff(a, b, r.hi, r.lo);
+    return r;
+}
+
+/// x cross y for double-double vectors, each coordinate within 11.2 u^2 of its permanent.
+void cross_dd2(const DoubleDouble* x, const DoubleDouble* y, DoubleDouble* out,
+               double* permanent) noexcept {
+    for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        out[k] = minus(times_dd(x[i], y[j]), times_dd(x[j], y[i]));
+        permanent[k] = std::fabs(x[i].hi * y[j].hi) + std::fabs(x[j].hi * y[i].hi);
+    }
+}
+
+/// |p|^2 of a double-double vector, within 14.3 u^2 |p|^2.
+DoubleDouble norm3_dd(const DoubleDouble* p) noexcept {
+    return plus(plus(times_dd(p[0], p[0]), times_dd(p[1], p[1])), times_dd(p[2], p[2]));
+}
+
+/// Stage 0 on the inputs themselves (see above); true with all three coordinates certified.
+bool circumcenter3_double_double_inexact(const double* a, const double* b, const double* c,
+                                         const double* d, std::array<double, 3>& result) noexcept {
+    for (const double* v : {a, b, c, d}) {
+        for (int k = 0; k < 3; ++k) {
+            if (!in_filter_range(v[k], 0x1p150)) return false;
+        }
+    }
+    DoubleDouble p[3], q[3], r[3];
+    for (int k = 0; k < 3; ++k) {
+        p[k] = exact_difference(a[k], d[k]);
+        q[k] = exact_difference(b[k], d[k]);
+        r[k] = exact_difference(c[k], d[k]);
+    }
+    DoubleDouble cq[3], e[3], f[3];  // q x r, r x p, p x q
+    double pc[3], pe[3], pf[3];
+    cross_dd2(q, r, cq, pc);
+    cross_dd2(r, p, e, pe);
+    cross_dd2(p, q, f, pf);
+    const DoubleDouble h =
+        plus(plus(times_dd(cq[0], p[0]), times_dd(cq[1], p[1])), times_dd(cq[2], p[2]));
+    const double ph =
+        std::fabs(p[0].hi) * pc[0] + std::fabs(p[1].hi) * pc[1] + std::fabs(p[2].hi) * pc[2];
+    if (!(std::fabs(h.hi) > 0x1p-40 * ph) || !(std::fabs(h.hi) >= 0x1p-500)) return false;
+    const DoubleDouble np = norm3_dd(p), nq = norm3_dd(q), nr = norm3_dd(r);
+    for (int k = 0; k < 3; ++k) {
+        const DoubleDouble n =
+            plus(plus(times_dd(np, cq[k]), times_dd(nq, e[k])), times_dd(nr, f[k]));
+        const double pn = np.hi * pc[k] + nq.hi * pe[k] + nr.hi * pf[k];
+        if (!certify_dd(d[k], n, pn, h, ph, result[static_cast<std::size_t>(k)])) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -751,6 +827,12 @@ std::array<double, 3> circumcenter(const double* a, const double* b, const doubl
             return result;
         }
     } else {
+        if (circumcenter3_double_double_inexact(a, b, c, d, result)) {
+            ++this_thread_stats.calls;
+            ++this_thread_stats.fast;
+            ++this_thread_stats.double_double;
+            return result;
+        }
         // det [x y z 1] expanded along the column of ones (as in orient3d's stage C).
         const Expansion<96> den =
             twice((det_xyz(a, b, c) - det_xyz(a, b, d)) + (det_xyz(a, c, d) - det_xyz(b, c, d)));

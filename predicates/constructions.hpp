@@ -10,7 +10,8 @@
 // exact), ~50k in 3D (~22k); the exact path ~48k (2D) and ~190k (3D). Segments as 2D.
 //
 // Paths, per call (all coordinates of one point take the same path):
-//  - Stage 0 (2D circumcenters whose differences to c are exact doubles): double-double
+//  - Stage 0 (2D circumcenters whose differences to c are exact doubles; 3D circumcenters
+//    whatever their differences, kept as exact double-doubles when they round): double-double
 //    arithmetic with a proven error bound (constructions.cpp), accepted when the exact value
 //    cannot lie beyond a midpoint of the candidate: ~20x cheaper than the fast path below,
 //    which decides whatever it leaves.

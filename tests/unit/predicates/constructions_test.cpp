@@ -822,3 +822,37 @@ TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTetr
     }
     expect_double_double_share("mesh-like 3D", calls, 0.8);
 }
+
+TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedWhereDifferencesRound) {
+    // Small tetrahedra whose coordinate differences are not doubles: around a coordinate plane
+    // (coordinates of both signs, offset 0) and beside one (offsets 1e-3 to 1 with spreads up to
+    // ten times the offset), well shaped, flat and with a short edge. The double-double stage on
+    // the inputs themselves must equal the exact path every time and take most of them.
+    Inputs in(161803);
+    pr::reset_construction_stats();
+    int calls = 0;
+    for (const double offset : {0.0, 1e-3, 0.25, 1.0}) {
+        for (const double spread : {1e-6, 1e-2, 1.0, 10.0}) {
+            for (int i = 0; i < 2500; ++i) {
+                const auto near = [&] { return offset + in.uniform(-0.5, 0.5) * spread; };
+                P3 a = in.point<3>(near), b = in.point<3>(near), c = in.point<3>(near),
+                   d = in.point<3>(near);
+                if (i % 4 == 3) {  // flat: d close to the plane of abc
+                    const double s = in.uniform(0.0, 1.0), t = in.uniform(0.0, 1.0 - s);
+                    for (int k = 0; k < 3; ++k)
+                        d[k] = a[k] + s * (b[k] - a[k]) + t * (c[k] - a[k]) +
+                               (k == 2 ? spread * 1e-3 : 0);
+                } else if (i % 4 == 2) {  // a short edge
+                    for (int k = 0; k < 3; ++k) b[k] = a[k] + (b[k] - a[k]) * 1e-3;
+                }
+                if (pr::orient3d(a.data(), b.data(), c.data(), d.data()) == pr::Sign::Zero)
+                    continue;
+                ++calls;
+                ASSERT_EQ(pr::circumcenter(a.data(), b.data(), c.data(), d.data()),
+                          pr::circumcenter_exact(a.data(), b.data(), c.data(), d.data()))
+                    << offset << " " << spread << " " << i;
+            }
+        }
+    }
+    expect_double_double_share("rounded differences 3D", calls, 0.8);
+}
