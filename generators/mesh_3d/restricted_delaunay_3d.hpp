@@ -141,6 +141,102 @@ class FlatKeyMap64 {
     }
 };
 
+/// An open-addressing hash map of 64-bit keys (edge keys) that keeps its keys, with erase
+/// (tombstones): the subsegments, asked for nearly every edge a cavity meets (most are none:
+/// std::unordered_map's prime-modulo bucket and node chase were a twentieth of refinement).
+template <class Value>
+class KeyMap64 {
+  public:
+    /// Inserts `key` with `value` when missing; whether it was inserted.
+    bool emplace(std::uint64_t key, Value value) {
+        if (2 * (size_ + tombstones_ + 1) > slots_.size()) rehash();
+        std::size_t i = position(key);
+        std::size_t free = kNoSlot;
+        while (slots_[i].state != State::Empty) {
+            if (slots_[i].state == State::Full && slots_[i].key == key) return false;
+            if (slots_[i].state == State::Erased && free == kNoSlot) free = i;
+            i = (i + 1) & (slots_.size() - 1);
+        }
+        if (free != kNoSlot) {
+            i = free;
+            --tombstones_;
+        }
+        slots_[i] = {key, value, State::Full};
+        ++size_;
+        return true;
+    }
+
+    /// The value of `key`, or nullptr.
+    const Value* find(std::uint64_t key) const {
+        if (slots_.empty()) return nullptr;
+        std::size_t i = position(key);
+        while (slots_[i].state != State::Empty) {
+            if (slots_[i].state == State::Full && slots_[i].key == key) return &slots_[i].value;
+            i = (i + 1) & (slots_.size() - 1);
+        }
+        return nullptr;
+    }
+
+    std::size_t count(std::uint64_t key) const { return find(key) != nullptr ? 1 : 0; }
+
+    const Value& at(std::uint64_t key) const {
+        const Value* value = find(key);
+        if (value == nullptr) throw InternalError("KeyMap64::at: missing key");
+        return *value;
+    }
+
+    void erase(std::uint64_t key) {
+        if (slots_.empty()) return;
+        std::size_t i = position(key);
+        while (slots_[i].state != State::Empty) {
+            if (slots_[i].state == State::Full && slots_[i].key == key) {
+                slots_[i].state = State::Erased;
+                --size_;
+                ++tombstones_;
+                return;
+            }
+            i = (i + 1) & (slots_.size() - 1);
+        }
+    }
+
+    /// Every entry, in no particular order.
+    std::vector<std::pair<std::uint64_t, Value>> entries() const {
+        std::vector<std::pair<std::uint64_t, Value>> out;
+        out.reserve(size_);
+        for (const Slot& slot : slots_)
+            if (slot.state == State::Full) out.emplace_back(slot.key, slot.value);
+        return out;
+    }
+
+  private:
+    enum class State : std::uint8_t { Empty, Full, Erased };
+    struct Slot {
+        std::uint64_t key = 0;
+        Value value{};
+        State state = State::Empty;
+    };
+    static constexpr std::size_t kNoSlot = ~std::size_t{0};
+    std::vector<Slot> slots_;
+    std::size_t size_ = 0;
+    std::size_t tombstones_ = 0;
+
+    std::size_t position(std::uint64_t key) const {
+        return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (slots_.size() - 1);
+    }
+
+    /// Twice the live entries' room (at least 64 slots), tombstones dropped.
+    void rehash() {
+        std::vector<Slot> old = std::move(slots_);
+        std::size_t capacity = 64;
+        while (capacity < 4 * (size_ + 1)) capacity *= 2;
+        slots_.assign(capacity, Slot{});
+        size_ = 0;
+        tombstones_ = 0;
+        for (const Slot& slot : old)
+            if (slot.state == State::Full) emplace(slot.key, slot.value);
+    }
+};
+
 /// A subface: its corners in the facet's orientation, and its facet.
 struct Subface {
     Key3 oriented;
@@ -237,7 +333,7 @@ class RestrictedDelaunay3 {
     /// A walk by adjacency from one tetrahedron meets only its own piece.
     std::unordered_map<VertIdx, std::vector<TetIdx>> other_pieces_;
     std::vector<double> parameter_;
-    std::unordered_map<std::uint64_t, std::uint32_t> subsegments_;
+    KeyMap64<std::uint32_t> subsegments_;
     std::unordered_map<Key3, Subface, Key3Hash> subfaces_;
     std::unordered_multimap<std::uint64_t, Key3> edge_subfaces_;
     std::vector<triangulation::FacetPlane> planes_;
@@ -704,7 +800,7 @@ class RestrictedDelaunay3 {
         }
         return kNone;
     }
-    std::vector<TetIdx> violations_;                   ///< first_violation's batch
+    std::vector<TetIdx> violations_;  ///< first_violation's batch
     /// first_violation's seed face (4 t + k) that does not see p, when that is why it gave up.
     FaceIdx blind_face_ = kNone;
     /// Most seeds build_cavity adds behind seeds' faces that p does not see.
@@ -903,9 +999,9 @@ class RestrictedDelaunay3 {
 
     /// Splits subsegment `key` (if still one). Returns whether a point was inserted.
     bool split_subsegment(std::uint64_t key) {
-        const auto found = subsegments_.find(key);
-        if (found == subsegments_.end()) return false;
-        const std::uint32_t s = found->second;
+        const std::uint32_t* found = subsegments_.find(key);
+        if (found == nullptr) return false;
+        const std::uint32_t s = *found;
         const VertIdx a = static_cast<VertIdx>(key >> 32), b = static_cast<VertIdx>(key);
         const double ta = parameter_of(a, s), tb = parameter_of(b, s);
         const bool apex_a = a < out_.input_vertex_count && acute_apex(a, s);
@@ -1279,8 +1375,7 @@ class RestrictedDelaunay3 {
         result.feature_index = out_.feature_index;
         result.segments = out_.segments;
         // Subsegments and subfaces in a deterministic order.
-        std::vector<std::pair<std::uint64_t, std::uint32_t>> subsegments(subsegments_.begin(),
-                                                                         subsegments_.end());
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> subsegments = subsegments_.entries();
         std::sort(subsegments.begin(), subsegments.end());
         for (const auto& [key, segment] : subsegments) {
             result.subsegments.insert(result.subsegments.end(),
