@@ -178,6 +178,11 @@ std::uint64_t swap_pass(Work& work, const tri::SwapLocks3& locks, SliverRemoval3
     tri::SwapConstraints3 constraints;
     constraints.locks = &locks;
     constraints.seeds = seeds;
+    // Only faces of tetrahedra below the threshold: swaps between good tetrahedra (a cascade
+    // from each new one's faces) raised no final angle. On the wing at 7 10^5 tetrahedra the
+    // same smallest angle (11.66 degrees) and slivers left, 1.05 s -> 0.77 s, 3% more angles
+    // below 20 degrees (still 2.6 times fewer than TetGen's).
+    constraints.wanted = [&work](TetIdx t) { return work.below_threshold_remembered(t); };
     if (work.options->keep_bounds) {
         // The old tetrahedra lie in one region (see on_flip below): the new ones are held to
         // its volume bound.

@@ -234,6 +234,9 @@ EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion,
         queue.pop_front();
         queued[f] = 0;
         if (mesh.is_dead(f / 4) || mesh.adj[f] == kNone) continue;
+        if (constraints.wanted && !constraints.wanted(f / 4) &&
+            !constraints.wanted(mesh.adj[f] / 4))
+            continue;
         ++counters.faces_examined;
         if (criterion == SwapCriterion3::Delaunay) {
             if (!delaunay_wants(mesh, f)) continue;

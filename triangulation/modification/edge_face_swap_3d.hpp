@@ -112,6 +112,10 @@ struct SwapConstraints3 {
     /// Told after each swap: the plan and the new tetrahedra's slots (created[i] holds
     /// plan.made[i]; the first plan.old_count of them reuse plan.old's slots in order).
     std::function<void(const FlipPlan3&, const std::vector<TetIdx>&)> on_flip;
+    /// When set, swap_faces_3d examines a face only when this holds for one of its two
+    /// tetrahedra (sliver removal: a tetrahedron below its angle threshold), and skips the
+    /// others before planning anything.
+    std::function<bool(TetIdx)> wanted;
 };
 
 /// What apply_constrained_flip_3d did with a planned flip.

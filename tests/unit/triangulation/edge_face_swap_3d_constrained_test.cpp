@@ -150,3 +150,20 @@ TEST(Triangulation_EdgeFaceSwap3Constrained, SeedsLimitWhereSwappingStarts) {
     EXPECT_EQ(counters.flips_23, 1u);
     expect_valid(mesh);
 }
+
+TEST(Triangulation_EdgeFaceSwap3Constrained, OnlyFacesOfWantedTetrahedraAreExamined) {
+    // `wanted` false for both tetrahedra of the shared face: it is skipped before any plan (no
+    // face examined, nothing swaps); true for one of them: the 2-3 swap is made as without it.
+    for (const tri::TetIdx chosen : {tri::TetIdx{0}, tri::TetIdx{1}}) {
+        tri::TetMesh3 mesh = two_across_a_face();
+        tri::SwapConstraints3 constraints;
+        constraints.wanted = [](tri::TetIdx) { return false; };
+        auto counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::MaxMinDihedral, constraints);
+        EXPECT_EQ(counters.faces_examined, 0u);
+        EXPECT_EQ(counters.flips(), 0u);
+        constraints.wanted = [chosen](tri::TetIdx t) { return t == chosen; };
+        counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::MaxMinDihedral, constraints);
+        EXPECT_EQ(counters.flips_23, 1u) << chosen;
+        expect_valid(mesh);
+    }
+}
