@@ -593,6 +593,29 @@ void cross_dd(const double* x, const double* y, DoubleDouble* out, double* perma
     }
 }
 
+/// Cramer's rule's pieces for X = d + N / (2 H) (see above): the cross products q x r, r x p,
+/// p x q with their permanents, |p|^2, |q|^2, |r|^2, and H with its permanent.
+struct Cramer3 {
+    DoubleDouble c[3], e[3], f[3];
+    double pc[3], pe[3], pf[3];
+    DoubleDouble np, nq, nr;
+    DoubleDouble h;
+    double ph;
+};
+
+/// The three coordinates of d + N / (2 H), each by certify_dd; false unless H is far enough
+/// from 0 (the ranges above) and every coordinate is certified.
+bool certify_cramer3(const double* d, const Cramer3& m, std::array<double, 3>& result) noexcept {
+    if (!(std::fabs(m.h.hi) > 0x1p-40 * m.ph) || !(std::fabs(m.h.hi) >= 0x1p-500)) return false;
+    for (int k = 0; k < 3; ++k) {
+        const DoubleDouble n =
+            plus(plus(times_dd(m.np, m.c[k]), times_dd(m.nq, m.e[k])), times_dd(m.nr, m.f[k]));
+        const double pn = m.np.hi * m.pc[k] + m.nq.hi * m.pe[k] + m.nr.hi * m.pf[k];
+        if (!certify_dd(d[k], n, pn, m.h, m.ph, result[static_cast<std::size_t>(k)])) return false;
+    }
+    return true;
+}
+
 /// Stage 0 for exact differences p = a - d, q = b - d, r = c - d; true with all three
 /// coordinates certified.
 bool circumcenter3_double_double(const double* p, const double* q, const double* r, const double* d,
@@ -602,22 +625,16 @@ bool circumcenter3_double_double(const double* p, const double* q, const double*
             if (!in_filter_range(v[k], 0x1p150)) return false;
         }
     }
-    DoubleDouble c[3], e[3], f[3];  // q x r, r x p, p x q
-    double pc[3], pe[3], pf[3];
-    cross_dd(q, r, c, pc);
-    cross_dd(r, p, e, pe);
-    cross_dd(p, q, f, pf);
-    const DoubleDouble h = plus(plus(times(c[0], p[0]), times(c[1], p[1])), times(c[2], p[2]));
-    const double ph = std::fabs(p[0]) * pc[0] + std::fabs(p[1]) * pc[1] + std::fabs(p[2]) * pc[2];
-    if (!(std::fabs(h.hi) > 0x1p-40 * ph) || !(std::fabs(h.hi) >= 0x1p-500)) return false;
-    const DoubleDouble np = norm3(p), nq = norm3(q), nr = norm3(r);
-    for (int k = 0; k < 3; ++k) {
-        const DoubleDouble n =
-            plus(plus(times_dd(np, c[k]), times_dd(nq, e[k])), times_dd(nr, f[k]));
-        const double pn = np.hi * pc[k] + nq.hi * pe[k] + nr.hi * pf[k];
-        if (!certify_dd(d[k], n, pn, h, ph, result[static_cast<std::size_t>(k)])) return false;
-    }
-    return true;
+    Cramer3 m;
+    cross_dd(q, r, m.c, m.pc);
+    cross_dd(r, p, m.e, m.pe);
+    cross_dd(p, q, m.f, m.pf);
+    m.h = plus(plus(times(m.c[0], p[0]), times(m.c[1], p[1])), times(m.c[2], p[2]));
+    m.ph = std::fabs(p[0]) * m.pc[0] + std::fabs(p[1]) * m.pc[1] + std::fabs(p[2]) * m.pc[2];
+    m.np = norm3(p);
+    m.nq = norm3(q);
+    m.nr = norm3(r);
+    return certify_cramer3(d, m, result);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -676,24 +693,17 @@ bool circumcenter3_double_double_inexact(const double* a, const double* b, const
         q[k] = exact_difference(b[k], d[k]);
         r[k] = exact_difference(c[k], d[k]);
     }
-    DoubleDouble cq[3], e[3], f[3];  // q x r, r x p, p x q
-    double pc[3], pe[3], pf[3];
-    cross_dd2(q, r, cq, pc);
-    cross_dd2(r, p, e, pe);
-    cross_dd2(p, q, f, pf);
-    const DoubleDouble h =
-        plus(plus(times_dd(cq[0], p[0]), times_dd(cq[1], p[1])), times_dd(cq[2], p[2]));
-    const double ph =
-        std::fabs(p[0].hi) * pc[0] + std::fabs(p[1].hi) * pc[1] + std::fabs(p[2].hi) * pc[2];
-    if (!(std::fabs(h.hi) > 0x1p-40 * ph) || !(std::fabs(h.hi) >= 0x1p-500)) return false;
-    const DoubleDouble np = norm3_dd(p), nq = norm3_dd(q), nr = norm3_dd(r);
-    for (int k = 0; k < 3; ++k) {
-        const DoubleDouble n =
-            plus(plus(times_dd(np, cq[k]), times_dd(nq, e[k])), times_dd(nr, f[k]));
-        const double pn = np.hi * pc[k] + nq.hi * pe[k] + nr.hi * pf[k];
-        if (!certify_dd(d[k], n, pn, h, ph, result[static_cast<std::size_t>(k)])) return false;
-    }
-    return true;
+    Cramer3 m;
+    cross_dd2(q, r, m.c, m.pc);
+    cross_dd2(r, p, m.e, m.pe);
+    cross_dd2(p, q, m.f, m.pf);
+    m.h = plus(plus(times_dd(m.c[0], p[0]), times_dd(m.c[1], p[1])), times_dd(m.c[2], p[2]));
+    m.ph = std::fabs(p[0].hi) * m.pc[0] + std::fabs(p[1].hi) * m.pc[1] +
+           std::fabs(p[2].hi) * m.pc[2];
+    m.np = norm3_dd(p);
+    m.nq = norm3_dd(q);
+    m.nr = norm3_dd(r);
+    return certify_cramer3(d, m, result);
 }
 
 }  // namespace

@@ -761,6 +761,21 @@ void expect_double_double_share(const char* label, int calls, double share) {
     EXPECT_GE(static_cast<double>(s.double_double), share * calls);
 }
 
+/// A small tetrahedron of points from `near`: every fourth one flat (d close to the plane of
+/// abc, 1e-3 spread above it), every fourth another with a short edge (b within 1e-3 spread of a).
+template <class Near>
+std::array<P3, 4> mesh_like_tetrahedron(Inputs& in, const Near& near, double spread, int i) {
+    P3 a = in.point<3>(near), b = in.point<3>(near), c = in.point<3>(near), d = in.point<3>(near);
+    if (i % 4 == 3) {
+        const double s = in.uniform(0.0, 1.0), t = in.uniform(0.0, 1.0 - s);
+        for (int k = 0; k < 3; ++k)
+            d[k] = a[k] + s * (b[k] - a[k]) + t * (c[k] - a[k]) + (k == 2 ? spread * 1e-3 : 0);
+    } else if (i % 4 == 2) {
+        for (int k = 0; k < 3; ++k) b[k] = a[k] + (b[k] - a[k]) * 1e-3;
+    }
+    return {a, b, c, d};
+}
+
 }  // namespace
 
 TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTriangles) {
@@ -801,16 +816,7 @@ TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTetr
         for (const double spread : {1e-9, 1e-4, 1e-1}) {
             for (int i = 0; i < 3000; ++i) {
                 const auto near = [&] { return offset + in.uniform() * spread; };
-                P3 a = in.point<3>(near), b = in.point<3>(near), c = in.point<3>(near),
-                   d = in.point<3>(near);
-                if (i % 4 == 3) {  // flat: d close to the plane of abc
-                    const double s = in.uniform(0.0, 1.0), t = in.uniform(0.0, 1.0 - s);
-                    for (int k = 0; k < 3; ++k)
-                        d[k] = a[k] + s * (b[k] - a[k]) + t * (c[k] - a[k]) +
-                               (k == 2 ? spread * 1e-3 : 0);
-                } else if (i % 4 == 2) {  // a short edge: b within 1e-3 spread of a
-                    for (int k = 0; k < 3; ++k) b[k] = a[k] + (b[k] - a[k]) * 1e-3;
-                }
+                const auto [a, b, c, d] = mesh_like_tetrahedron(in, near, spread, i);
                 if (pr::orient3d(a.data(), b.data(), c.data(), d.data()) == pr::Sign::Zero)
                     continue;
                 ++calls;
@@ -835,16 +841,7 @@ TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedWhereDifferenc
         for (const double spread : {1e-6, 1e-2, 1.0, 10.0}) {
             for (int i = 0; i < 2500; ++i) {
                 const auto near = [&] { return offset + in.uniform(-0.5, 0.5) * spread; };
-                P3 a = in.point<3>(near), b = in.point<3>(near), c = in.point<3>(near),
-                   d = in.point<3>(near);
-                if (i % 4 == 3) {  // flat: d close to the plane of abc
-                    const double s = in.uniform(0.0, 1.0), t = in.uniform(0.0, 1.0 - s);
-                    for (int k = 0; k < 3; ++k)
-                        d[k] = a[k] + s * (b[k] - a[k]) + t * (c[k] - a[k]) +
-                               (k == 2 ? spread * 1e-3 : 0);
-                } else if (i % 4 == 2) {  // a short edge
-                    for (int k = 0; k < 3; ++k) b[k] = a[k] + (b[k] - a[k]) * 1e-3;
-                }
+                const auto [a, b, c, d] = mesh_like_tetrahedron(in, near, spread, i);
                 if (pr::orient3d(a.data(), b.data(), c.data(), d.data()) == pr::Sign::Zero)
                     continue;
                 ++calls;
