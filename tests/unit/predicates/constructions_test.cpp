@@ -776,6 +776,32 @@ std::array<P3, 4> mesh_like_tetrahedron(Inputs& in, const Near& near, double spr
     return {a, b, c, d};
 }
 
+/// circumcenter against circumcenter_exact on `count` mesh_like_tetrahedron tetrahedra for each
+/// offset and spread, their coordinates drawn by draw(offset, spread); the calls made (coplanar
+/// draws skipped). Stops the test at the first difference.
+template <class Draw>
+int expect_tetrahedra_correctly_rounded(Inputs& in, std::initializer_list<double> offsets,
+                                        std::initializer_list<double> spreads, int count,
+                                        const Draw& draw) {
+    int calls = 0;
+    for (const double offset : offsets) {
+        for (const double spread : spreads) {
+            for (int i = 0; i < count; ++i) {
+                const auto near = [&] { return draw(offset, spread); };
+                const auto [a, b, c, d] = mesh_like_tetrahedron(in, near, spread, i);
+                if (pr::orient3d(a.data(), b.data(), c.data(), d.data()) == pr::Sign::Zero)
+                    continue;
+                ++calls;
+                const auto fast = pr::circumcenter(a.data(), b.data(), c.data(), d.data());
+                const auto exact = pr::circumcenter_exact(a.data(), b.data(), c.data(), d.data());
+                EXPECT_EQ(fast, exact) << offset << " " << spread << " " << i;
+                if (fast != exact) return calls;
+            }
+        }
+    }
+    return calls;
+}
+
 }  // namespace
 
 TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTriangles) {
@@ -811,21 +837,9 @@ TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTetr
     // exact path's, and the stage certifies nearly all of those it may take.
     Inputs in(271828);
     pr::reset_construction_stats();
-    int calls = 0;
-    for (const double offset : {1e-3, 0.5, 1.0, 3.0, 1e3, 1e6}) {
-        for (const double spread : {1e-9, 1e-4, 1e-1}) {
-            for (int i = 0; i < 3000; ++i) {
-                const auto near = [&] { return offset + in.uniform() * spread; };
-                const auto [a, b, c, d] = mesh_like_tetrahedron(in, near, spread, i);
-                if (pr::orient3d(a.data(), b.data(), c.data(), d.data()) == pr::Sign::Zero)
-                    continue;
-                ++calls;
-                ASSERT_EQ(pr::circumcenter(a.data(), b.data(), c.data(), d.data()),
-                          pr::circumcenter_exact(a.data(), b.data(), c.data(), d.data()))
-                    << offset << " " << spread << " " << i;
-            }
-        }
-    }
+    const int calls = expect_tetrahedra_correctly_rounded(
+        in, {1e-3, 0.5, 1.0, 3.0, 1e3, 1e6}, {1e-9, 1e-4, 1e-1}, 3000,
+        [&](double offset, double spread) { return offset + in.uniform() * spread; });
     expect_double_double_share("mesh-like 3D", calls, 0.8);
 }
 
@@ -836,20 +850,8 @@ TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedWhereDifferenc
     // the inputs themselves must equal the exact path every time and take most of them.
     Inputs in(161803);
     pr::reset_construction_stats();
-    int calls = 0;
-    for (const double offset : {0.0, 1e-3, 0.25, 1.0}) {
-        for (const double spread : {1e-6, 1e-2, 1.0, 10.0}) {
-            for (int i = 0; i < 2500; ++i) {
-                const auto near = [&] { return offset + in.uniform(-0.5, 0.5) * spread; };
-                const auto [a, b, c, d] = mesh_like_tetrahedron(in, near, spread, i);
-                if (pr::orient3d(a.data(), b.data(), c.data(), d.data()) == pr::Sign::Zero)
-                    continue;
-                ++calls;
-                ASSERT_EQ(pr::circumcenter(a.data(), b.data(), c.data(), d.data()),
-                          pr::circumcenter_exact(a.data(), b.data(), c.data(), d.data()))
-                    << offset << " " << spread << " " << i;
-            }
-        }
-    }
+    const int calls = expect_tetrahedra_correctly_rounded(
+        in, {0.0, 1e-3, 0.25, 1.0}, {1e-6, 1e-2, 1.0, 10.0}, 2500,
+        [&](double offset, double spread) { return offset + in.uniform(-0.5, 0.5) * spread; });
     expect_double_double_share("rounded differences 3D", calls, 0.8);
 }
