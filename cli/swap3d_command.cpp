@@ -92,12 +92,11 @@ void run_swap3d(const Swap3dArguments& arguments) {
             std::vector<tri::FaceIdx> seeds;
             for (const tri::TetIdx t : made)
                 for (unsigned k = 0; k < 4; ++k) seeds.push_back(4 * t + k);
-            next = made;
             tri::SwapConstraints3 swaps = follow;
             swaps.seeds = seeds;
             add_counters(tri::kEdgeFaceSwapCounterNames, counters,
                          tri::swap_faces_3d(work, criterion, swaps));
-            next.insert(next.end(), made.begin(), made.end());
+            next = made;  // the removals' tetrahedra, then the swaps' (slots may repeat)
             std::sort(next.begin(), next.end());
             next.erase(std::unique(next.begin(), next.end()), next.end());
         }
