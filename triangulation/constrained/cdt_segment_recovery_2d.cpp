@@ -8,8 +8,8 @@
 // otherwise the crossed edges are removed by the chosen recovery. Local indices in the walk:
 // crossed half-edge h runs from x (right of a->b) to y (left of a->b).
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <deque>
 #include <span>
 #include <string>
@@ -92,6 +92,20 @@ void split_piece_at_vertex(CdtState& cdt, const Piece& piece, VertIdx v) {
                                   " passes through " + cdt.vertex_name(v) + "; split there");
     cdt.work.push_back({v, piece.b, piece.segment});
     cdt.work.push_back({piece.a, v, piece.segment});
+}
+
+/// The constrained edge u - v (of segment `other` and the segments `also` sharing it), released,
+/// made locally Delaunay again, and its two parts through w queued for every one of them.
+void release_and_split(CdtState& cdt, VertIdx u, VertIdx v, VertIdx w, std::uint32_t other,
+                       const std::vector<std::uint32_t>& also) {
+    std::vector<std::pair<VertIdx, VertIdx>> released{{u, v}};
+    restore_delaunay(cdt, released);
+    for (const std::uint32_t s : also) {
+        cdt.work.push_back({u, w, s});
+        cdt.work.push_back({w, v, s});
+    }
+    cdt.work.push_back({u, w, other});
+    cdt.work.push_back({w, v, other});
 }
 
 void split_at_intersection(CdtState& cdt, const Piece& piece, EdgeIdx h);
@@ -200,30 +214,22 @@ void split_at_intersection(CdtState& cdt, const Piece& piece, EdgeIdx h) {
         }
         return true;
     };
+    const auto note_bend = [&](VertIdx w, std::uint32_t segment) {
+        ++cdt.result.counters.vertices_on_segments;
+        cdt.result.warnings.push_back(cdt.vertex_name(w) + " lies within rounding of segment " +
+                                      cdt.segment_name(segment) + "; the segment bends through it");
+    };
     for (const VertIdx w : {a, b}) {
         if (!near(w) || !bend_candidate(cdt, other, u, v, w)) continue;
         cdt.segment_of[h] = cdt.segment_of[cdt.mesh.twin[h]] = kNone;
-        const std::vector<std::uint32_t> also = cdt.release_shared(u, v);
-        ++cdt.result.counters.vertices_on_segments;
-        cdt.result.warnings.push_back(cdt.vertex_name(w) + " lies within rounding of segment " +
-                                      cdt.segment_name(other) + "; the segment bends through it");
-        std::vector<std::pair<VertIdx, VertIdx>> released{{u, v}};
-        restore_delaunay(cdt, released);
-        for (const std::uint32_t s : also) {
-            cdt.work.push_back({u, w, s});
-            cdt.work.push_back({w, v, s});
-        }
-        cdt.work.push_back({u, w, other});
-        cdt.work.push_back({w, v, other});
+        note_bend(w, other);
+        release_and_split(cdt, u, v, w, other, cdt.release_shared(u, v));
         cdt.work.push_back({a, b, piece.segment});
         return;
     }
     for (const VertIdx w : {u, v}) {
         if (!near(w) || !bend_candidate(cdt, piece.segment, a, b, w)) continue;
-        ++cdt.result.counters.vertices_on_segments;
-        cdt.result.warnings.push_back(cdt.vertex_name(w) + " lies within rounding of segment " +
-                                      cdt.segment_name(piece.segment) +
-                                      "; the segment bends through it");
+        note_bend(w, piece.segment);
         cdt.work.push_back({w, b, piece.segment});
         cdt.work.push_back({a, w, piece.segment});
         return;
@@ -263,14 +269,7 @@ void split_at_intersection(CdtState& cdt, const Piece& piece, EdgeIdx h) {
     }
     // u - v, no longer constrained, may not be locally Delaunay (the new vertex need not be
     // next to it): restore before recovering the four pieces.
-    std::vector<std::pair<VertIdx, VertIdx>> released{{u, v}};
-    restore_delaunay(cdt, released);
-    for (const std::uint32_t s : also) {
-        cdt.work.push_back({u, at, s});
-        cdt.work.push_back({at, v, s});
-    }
-    cdt.work.push_back({u, at, other});
-    cdt.work.push_back({at, v, other});
+    release_and_split(cdt, u, v, at, other, also);
     cdt.work.push_back({at, b, piece.segment});
     cdt.work.push_back({a, at, piece.segment});
 }
