@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Unit tests of the hash maps of generators/mesh_3d/restricted_delaunay_3d.hpp (the generators
-// built on it are tested through delaunay_refinement_3d, frontal_delaunay_3d and octree_mesh_3d).
-#include "generators/mesh_3d/restricted_delaunay_3d.hpp"
+// Unit tests of generators/mesh_3d/edge_key_maps.hpp (the maps of the 3D generators' insertion,
+// restricted_delaunay_3d.hpp, tested through the generators as well).
+#include "generators/mesh_3d/edge_key_maps.hpp"
 
 #include <gtest/gtest.h>
 

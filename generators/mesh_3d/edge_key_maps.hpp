@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: MIT
+// Open-addressing hash maps of 64-bit edge keys for the 3D generators' insertion
+// (restricted_delaunay_3d.hpp): FlatKeyMap64, per-insertion scratch cleared in O(1), and
+// KeyMap64, a lasting map with erase. Both hash by one multiply and probe linearly.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "base/errors.hpp"
+
+namespace exactmesh::generators::restricted_3d {
+
+/// An open-addressing hash table of 64-bit keys (edge keys), cleared in O(1) by an epoch: the
+/// scratch sets and maps of one insertion, reused so that no insertion allocates (node-based
+/// std::unordered_set/map allocated per key: a tenth of refinement's instructions in malloc
+/// and free). Only membership and lookup are asked, never an order.
+template <class Value>
+class FlatKeyMap64 {
+  public:
+    /// Forgets every key.
+    void clear() {
+        if (++epoch_ == 0) {
+            for (Slot& slot : slots_) slot.epoch = 0;
+            epoch_ = 1;
+        }
+        size_ = 0;
+    }
+
+    /// The value of `key`, inserted as `value` when missing; second: whether it was inserted.
+    std::pair<Value*, bool> emplace(std::uint64_t key, Value value) {
+        if (2 * (size_ + 1) > slots_.size()) grow();
+        std::size_t i = position(key);
+        while (slots_[i].epoch == epoch_) {
+            if (slots_[i].key == key) return {&slots_[i].value, false};
+            i = (i + 1) & (slots_.size() - 1);
+        }
+        slots_[i] = {key, value, epoch_};
+        ++size_;
+        return {&slots_[i].value, true};
+    }
+
+    bool contains(std::uint64_t key) const {
+        if (slots_.empty()) return false;
+        std::size_t i = position(key);
+        while (slots_[i].epoch == epoch_) {
+            if (slots_[i].key == key) return true;
+            i = (i + 1) & (slots_.size() - 1);
+        }
+        return false;
+    }
+
+  private:
+    struct Slot {
+        std::uint64_t key = 0;
+        Value value{};
+        std::uint32_t epoch = 0;
+    };
+    std::vector<Slot> slots_;
+    std::size_t size_ = 0;
+    std::uint32_t epoch_ = 1;
+
+    std::size_t position(std::uint64_t key) const {
+        return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (slots_.size() - 1);
+    }
+
+    void grow() {
+        std::vector<Slot> old = std::move(slots_);
+        slots_.assign(std::max<std::size_t>(64, 2 * old.size()), Slot{});
+        const std::uint32_t live = epoch_;
+        epoch_ = 1;
+        size_ = 0;
+        for (const Slot& slot : old) {
+            if (slot.epoch != live) continue;
+            std::size_t i = position(slot.key);
+            while (slots_[i].epoch == epoch_) i = (i + 1) & (slots_.size() - 1);
+            slots_[i] = {slot.key, slot.value, epoch_};
+            ++size_;
+        }
+    }
+};
+
+/// An open-addressing hash map of 64-bit keys (edge keys) that keeps its keys, with erase
+/// (tombstones): the subsegments, asked for nearly every edge a cavity meets (most are none:
+/// std::unordered_map's prime-modulo bucket and node chase were a twentieth of refinement).
+template <class Value>
+class KeyMap64 {
+  public:
+    /// Inserts `key` with `value` when missing; whether it was inserted.
+    bool emplace(std::uint64_t key, Value value) {
+        if (2 * (size_ + tombstones_ + 1) > slots_.size()) rehash();
+        std::size_t i = position(key);
+        std::size_t free = kNoSlot;
+        while (slots_[i].state != State::Empty) {
+            if (slots_[i].state == State::Full && slots_[i].key == key) return false;
+            if (slots_[i].state == State::Erased && free == kNoSlot) free = i;
+            i = (i + 1) & (slots_.size() - 1);
+        }
+        if (free != kNoSlot) {
+            i = free;
+            --tombstones_;
+        }
+        slots_[i] = {key, value, State::Full};
+        ++size_;
+        return true;
+    }
+
+    /// The value of `key`, or nullptr.
+    const Value* find(std::uint64_t key) const {
+        if (slots_.empty()) return nullptr;
+        std::size_t i = position(key);
+        while (slots_[i].state != State::Empty) {
+            if (slots_[i].state == State::Full && slots_[i].key == key) return &slots_[i].value;
+            i = (i + 1) & (slots_.size() - 1);
+        }
+        return nullptr;
+    }
+
+    std::size_t count(std::uint64_t key) const { return find(key) != nullptr ? 1 : 0; }
+
+    const Value& at(std::uint64_t key) const {
+        const Value* value = find(key);
+        if (value == nullptr) throw InternalError("KeyMap64::at: missing key");
+        return *value;
+    }
+
+    void erase(std::uint64_t key) {
+        if (slots_.empty()) return;
+        std::size_t i = position(key);
+        while (slots_[i].state != State::Empty) {
+            if (slots_[i].state == State::Full && slots_[i].key == key) {
+                slots_[i].state = State::Erased;
+                --size_;
+                ++tombstones_;
+                return;
+            }
+            i = (i + 1) & (slots_.size() - 1);
+        }
+    }
+
+    /// Every entry, in no particular order.
+    std::vector<std::pair<std::uint64_t, Value>> entries() const {
+        std::vector<std::pair<std::uint64_t, Value>> out;
+        out.reserve(size_);
+        for (const Slot& slot : slots_)
+            if (slot.state == State::Full) out.emplace_back(slot.key, slot.value);
+        return out;
+    }
+
+  private:
+    enum class State : std::uint8_t { Empty, Full, Erased };
+    struct Slot {
+        std::uint64_t key = 0;
+        Value value{};
+        State state = State::Empty;
+    };
+    static constexpr std::size_t kNoSlot = ~std::size_t{0};
+    std::vector<Slot> slots_;
+    std::size_t size_ = 0;
+    std::size_t tombstones_ = 0;
+
+    std::size_t position(std::uint64_t key) const {
+        return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (slots_.size() - 1);
+    }
+
+    /// Twice the live entries' room (at least 64 slots), tombstones dropped.
+    void rehash() {
+        std::vector<Slot> old = std::move(slots_);
+        std::size_t capacity = 64;
+        while (capacity < 4 * (size_ + 1)) capacity *= 2;
+        slots_.assign(capacity, Slot{});
+        size_ = 0;
+        tombstones_ = 0;
+        for (const Slot& slot : old)
+            if (slot.state == State::Full) emplace(slot.key, slot.value);
+    }
+};
+
+}  // namespace exactmesh::generators::restricted_3d
