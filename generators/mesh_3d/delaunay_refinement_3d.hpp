@@ -67,6 +67,9 @@ struct DelaunayRefinement3Counters {
                                               ///< their round (all facing away from the point)
     std::uint64_t forced_cavity_tets = 0;     ///< tetrahedra taken into a cavity past their
                                               ///< spheres: a seed's face did not see the point
+    std::uint64_t walk_seeded_cavities = 0;   ///< circumcentre cavities retried from the walk's
+                                              ///< tetrahedra (t and its centre not connected by
+                                              ///< tetrahedra in conflict)
     std::uint64_t small_angle_tets = 0;       ///< bad tetrahedra spared by the small-angle rule
     std::uint64_t unresolvable_tets = 0;      ///< bad tetrahedra spared: an edge finer than doubles
                                               ///< resolve there (below 2^-44 of the coordinates)
@@ -78,7 +81,7 @@ inline constexpr std::array kDelaunayRefinement3CounterNames =
     EM_COUNTER_TABLE(DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits,
                      shell_splits, encroached_segments, encroached_subfaces, blocked_circumcenters,
                      rejected_points, shrunk_cavities, batched_removals, forced_cavity_tets,
-                     small_angle_tets, unresolvable_tets, cavity_tets, insertions);
+                     walk_seeded_cavities, small_angle_tets, unresolvable_tets, cavity_tets, insertions);
 static_assert(counter_table_complete(kDelaunayRefinement3CounterNames));
 
 struct DelaunayRefinement3Result {

@@ -1153,12 +1153,15 @@ class RestrictedDelaunay3 {
 
     /// Visibility walk from tetrahedron `from` towards p (exact orient3d, rotating the first
     /// face tried so that it cannot cycle); stopped by a subface or the domain boundary
-    /// (Blocked, with that face in `blocking`). Reached: p is in or on tetrahedron `at`.
-    Walk walk_to(TetIdx from, const double* p, TetIdx& at, Key3& blocking) const {
+    /// (Blocked, with that face in `blocking`). Reached: p is in or on tetrahedron `at`. With
+    /// `path`, every tetrahedron visited is appended to it, `from` and `at` included.
+    Walk walk_to(TetIdx from, const double* p, TetIdx& at, Key3& blocking,
+                 std::vector<TetIdx>* path = nullptr) const {
         TetIdx s = from;
         std::uint32_t rotation = 0;
         for (std::size_t steps = 0;; ++steps) {
             if (steps > 4 * std::size_t{m_.tet_slots()} + 16) return Walk::Failed;
+            if (path != nullptr) path->push_back(s);
             int exit = -1;
             for (unsigned i = 0; i < 4; ++i) {
                 const unsigned k = (i + rotation) & 3u;

@@ -5,7 +5,7 @@
 // every output checked exactly (check_boundary_conformity_3d:
 // valid positively oriented tetrahedra, every facet and segment present; and
 // check_refinement_quality_3d: every tetrahedron within the bounds unless spared or explained by
-// a rejected point).
+// a rejected point), and the wing's circumcentres cut off by tetrahedra out of conflict.
 #include "generators/mesh_3d/delaunay_refinement_3d.hpp"
 
 #include <gtest/gtest.h>
@@ -91,6 +91,28 @@ TEST(Generators_DelaunayRefinement3d, EllipsoidMeetsTheRadiusEdgeBound) {
     DelaunayRefinement3Options options;
     const auto result = refine_and_check(plc, "ellipsoid", options);
     EXPECT_GT(result.counters.circumcenters, 0u);
+}
+
+TEST(Generators_DelaunayRefinement3d, CircumcentresCutOffByTetrahedraOutOfConflictAreInserted) {
+    // On the wing at V = 0.01 the cavity grown from the tetrahedron holding one circumcentre
+    // missed the tetrahedron it belongs to: tetrahedra whose spheres leave the centre out lie
+    // between them (left by shrunk cavities), no subface among them. The centre was rejected;
+    // at 7 10^5 tetrahedra such rejections left 2 tetrahedra over the radius-edge bound. The
+    // cavity seeded with the walk's tetrahedra inserts it, the same at 2^+-300 (V scaled by
+    // 2^+-900).
+    const Plc3 plc = sample_domain_3d(SampleDomain3::Wing);
+    DelaunayRefinement3Options options;
+    options.max_volume = 0.01;
+    const auto reference = refine_and_check(plc, "wing V=0.01", options);
+    EXPECT_GT(reference.counters.walk_seeded_cavities, 0u);
+    EXPECT_EQ(reference.counters.rejected_points, 0u);
+    for (const int e : {300, -300}) {
+        DelaunayRefinement3Options scaled_options = options;
+        scaled_options.max_volume = std::ldexp(options.max_volume, 3 * e);
+        const auto result = refine_and_check(triangulation::scaled(plc, e),
+                                             "wing scaled by 2^" + std::to_string(e), scaled_options);
+        exactmesh::testing::expect_scaled_mesh(result.mesh, reference.mesh, e);
+    }
 }
 
 TEST(Generators_DelaunayRefinement3d, CubeWithCocircularFacets) {
