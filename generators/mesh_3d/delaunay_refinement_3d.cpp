@@ -83,9 +83,9 @@ class Refinement final : public RestrictedDelaunay3 {
 
     /// The cavity of t's circumcentre p seeded with every tetrahedron of the walk from t to p,
     /// when the cavity grown from p's own tetrahedron alone fails (it misses t) and p
-    /// encroaches nothing of that tetrahedron (the centre would have been rejected). Where shrunk cavities
-    /// left tetrahedra that are not Delaunay, the tetrahedra in conflict with p need not be
-    /// connected: on the wing at 7 10^5 tetrahedra the walk from t crossed up to seven
+    /// encroaches nothing of that tetrahedron (the centre would have been rejected). Where shrunk
+    /// cavities left tetrahedra that are not Delaunay, the tetrahedra in conflict with p need not
+    /// be connected: on the wing at 7 10^5 tetrahedra the walk from t crossed up to seven
     /// tetrahedra whose spheres leave p out, no subface among them, and 9 centres were rejected,
     /// leaving 2 tetrahedra over the radius-edge bound. The walk's tetrahedra are taken whatever
     /// their spheres, so t goes with its centre; the cavity must still be star-shaped from p and

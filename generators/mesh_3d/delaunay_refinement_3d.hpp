@@ -77,11 +77,11 @@ struct DelaunayRefinement3Counters {
     std::uint64_t insertions = 0;             ///< Steiner points added by refinement
 };
 
-inline constexpr std::array kDelaunayRefinement3CounterNames =
-    EM_COUNTER_TABLE(DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits,
-                     shell_splits, encroached_segments, encroached_subfaces, blocked_circumcenters,
-                     rejected_points, shrunk_cavities, batched_removals, forced_cavity_tets,
-                     walk_seeded_cavities, small_angle_tets, unresolvable_tets, cavity_tets, insertions);
+inline constexpr std::array kDelaunayRefinement3CounterNames = EM_COUNTER_TABLE(
+    DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits, shell_splits,
+    encroached_segments, encroached_subfaces, blocked_circumcenters, rejected_points,
+    shrunk_cavities, batched_removals, forced_cavity_tets, walk_seeded_cavities, small_angle_tets,
+    unresolvable_tets, cavity_tets, insertions);
 static_assert(counter_table_complete(kDelaunayRefinement3CounterNames));
 
 struct DelaunayRefinement3Result {

@@ -109,8 +109,8 @@ TEST(Generators_DelaunayRefinement3d, CircumcentresCutOffByTetrahedraOutOfConfli
     for (const int e : {300, -300}) {
         DelaunayRefinement3Options scaled_options = options;
         scaled_options.max_volume = std::ldexp(options.max_volume, 3 * e);
-        const auto result = refine_and_check(triangulation::scaled(plc, e),
-                                             "wing scaled by 2^" + std::to_string(e), scaled_options);
+        const auto result = refine_and_check(
+            triangulation::scaled(plc, e), "wing scaled by 2^" + std::to_string(e), scaled_options);
         exactmesh::testing::expect_scaled_mesh(result.mesh, reference.mesh, e);
     }
 }
