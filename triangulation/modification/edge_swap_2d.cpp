@@ -232,29 +232,48 @@ Corner larger(const Corner& x, const Corner& y) {
     return compare_angles(y, x) == Sign::Positive ? y : x;
 }
 
-/// The plane interpolating `values` over the counter-clockwise triangle (p, q, r): its gradient.
+/// The plane interpolating `values` over the counter-clockwise triangle (p, q, r): its gradient,
+/// with every coordinate multiplied by `unit` (a power of two) first.
 std::array<double, 2> gradient(const TriMesh2& mesh, std::span<const double> values, VertIdx p,
-                               VertIdx q, VertIdx r) {
+                               VertIdx q, VertIdx r, double unit) {
     const double* a = mesh.point(p);
     const double* b = mesh.point(q);
     const double* c = mesh.point(r);
-    const double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+    const double ax = a[0] * unit, ay = a[1] * unit;
+    const double bx = b[0] * unit - ax, by = b[1] * unit - ay;
+    const double cx = c[0] * unit - ax, cy = c[1] * unit - ay;
     const double fb = values[q] - values[p], fc = values[r] - values[p];
     const double area2 = bx * cy - by * cx;
     return {(fb * cy - fc * by) / area2, (fc * bx - fb * cx) / area2};
 }
 
-/// The cost of edge (p, q) with apex `left` on its left and `right` on its right. Computed with
-/// the endpoints in increasing index order, so the same edge and apexes always give the same
-/// double (the termination argument needs a function of the edge, not of how it is reached).
+/// The power of two by which data-dependent costs multiply the coordinates. JND, |n . (g1 -
+/// g2)|, is homogeneous of degree -1 in the coordinates: computed on coordinates scaled by
+/// 2^-e, e the exponent of the largest magnitude, the mesh scaled by 2^k gives the same doubles
+/// (no area or gradient overflows or underflows at 2^+-600), and the decisions, exact sums of
+/// those costs, are those of the unscaled mesh (a uniform power of two leaves every sum's sign
+/// alone). ABN compares the planes' normals (-gx, -gy, 1), in which the coordinates' units
+/// matter (scaling x and y but not the values turns the planes): it takes them as given.
+double cost_unit(std::span<const double> xy, DataCost cost) {
+    if (cost == DataCost::AngleBetweenNormals) return 1.0;
+    double largest = 0;
+    for (const double x : xy) largest = std::max(largest, std::fabs(x));
+    if (!(largest > 0) || !std::isfinite(largest)) return 1.0;
+    return std::ldexp(1.0, -std::ilogb(largest));
+}
+
+/// The cost of edge (p, q) with apex `left` on its left and `right` on its right, coordinates
+/// multiplied by `unit` (cost_unit). Computed with the endpoints in increasing index order, so
+/// the same edge and apexes always give the same double (the termination argument needs a
+/// function of the edge, not of how it is reached).
 double canonical_edge_cost(const TriMesh2& mesh, const DataDependent& criterion, VertIdx p,
-                           VertIdx q, VertIdx left, VertIdx right) {
+                           VertIdx q, VertIdx left, VertIdx right, double unit) {
     if (p > q) {
         std::swap(p, q);
         std::swap(left, right);
     }
-    const auto g1 = gradient(mesh, criterion.values, p, q, left);
-    const auto g2 = gradient(mesh, criterion.values, q, p, right);
+    const auto g1 = gradient(mesh, criterion.values, p, q, left, unit);
+    const auto g2 = gradient(mesh, criterion.values, q, p, right, unit);
     if (criterion.cost == DataCost::AngleBetweenNormals) {
         // Normals (-gx, -gy, 1); the angle between them as atan2(|n1 x n2|, n1 . n2), accurate
         // for small angles too.
@@ -264,7 +283,7 @@ double canonical_edge_cost(const TriMesh2& mesh, const DataDependent& criterion,
     }
     const double* a = mesh.point(p);
     const double* b = mesh.point(q);
-    const double ex = b[0] - a[0], ey = b[1] - a[1];
+    const double ex = b[0] * unit - a[0] * unit, ey = b[1] * unit - a[1] * unit;
     const double length = std::sqrt(ex * ex + ey * ey);
     return std::fabs(ey * (g1[0] - g2[0]) - ex * (g1[1] - g2[1])) / length;
 }
@@ -495,6 +514,7 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion) {
                              " is not finite (" + format_number(criterion.values[v]) + ")");
         }
     }
+    const double unit = cost_unit(mesh.xy, criterion.cost);
     return swap_loop(mesh, true, [&](const TriMesh2& work, const Quad& q) {
         // The outer apexes across the four sides, read before anything changes.
         const VertIdx o_bc = outer_apex(work, next_edge(q.e));
@@ -503,7 +523,8 @@ EdgeSwapCounters swap_edges_2d(Triangulation2& mesh, DataDependent criterion) {
         const VertIdx o_db = outer_apex(work, prev_edge(q.f));
         std::array<double, 5> before{}, after{};
         auto cost = [&](VertIdx p, VertIdx r, VertIdx left, VertIdx right) {
-            return right == kNone ? 0.0 : canonical_edge_cost(work, criterion, p, r, left, right);
+            return right == kNone ? 0.0
+                                  : canonical_edge_cost(work, criterion, p, r, left, right, unit);
         };
         before = {cost(q.a, q.b, q.c, q.d), cost(q.b, q.c, q.a, o_bc), cost(q.c, q.a, q.b, o_ca),
                   cost(q.a, q.d, q.b, o_ad), cost(q.d, q.b, q.a, o_db)};

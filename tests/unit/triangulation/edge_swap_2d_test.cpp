@@ -63,7 +63,8 @@ void expect_consistent(const tri::Triangulation2& mesh) {
             if (u == tri::kNone) continue;
             bool found = false;
             for (unsigned j = 0; j < 3; ++j) {
-                found |= mesh.neighbors[3 * u + j] == t && mesh.triangles[3 * u + j] == v[(k + 1) % 3] &&
+                found |= mesh.neighbors[3 * u + j] == t &&
+                         mesh.triangles[3 * u + j] == v[(k + 1) % 3] &&
                          mesh.triangles[3 * u + (j + 1) % 3] == v[k];
             }
             ASSERT_TRUE(found) << "triangle " << t << " slot " << k;
@@ -122,10 +123,12 @@ double total_length(const tri::Triangulation2& mesh) {
 TEST(Triangulation_EdgeSwap2, DelaunayFromSweepIsDelaunay2dOnRandomPoints) {
     const double scale = test_scale();
     for (const std::uint32_t n : {3u, 10u, 100u, 1000u, 20000u}) {
-        const auto count = std::max<std::uint32_t>(3, static_cast<std::uint32_t>(n * std::min(1.0, scale)));
+        const auto count =
+            std::max<std::uint32_t>(3, static_cast<std::uint32_t>(n * std::min(1.0, scale)));
         for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-            expect_sweep_swaps_to_delaunay(uniform(count, seed),
-                                           "uniform n=" + std::to_string(count) + " seed=" + std::to_string(seed));
+            expect_sweep_swaps_to_delaunay(
+                uniform(count, seed),
+                "uniform n=" + std::to_string(count) + " seed=" + std::to_string(seed));
         }
     }
 }
@@ -134,9 +137,9 @@ TEST(Triangulation_EdgeSwap2, DelaunayFromSweepIsDelaunay2dOnDegenerateFamilies)
     using em::generators::Distribution;
     // Cocircular quadruples (grids, circles) and collinear runs: the SoS incircle makes the
     // answer unique, and swapping finds the same one as delaunay_2d.
-    for (const Distribution d : {Distribution::Grid, Distribution::Cocircular,
-                                 Distribution::NearCollinear, Distribution::Gaussian,
-                                 Distribution::Huge, Distribution::Tiny}) {
+    for (const Distribution d :
+         {Distribution::Grid, Distribution::Cocircular, Distribution::NearCollinear,
+          Distribution::Gaussian, Distribution::Huge, Distribution::Tiny}) {
         for (const std::uint32_t n : {5u, 50u, 500u}) {
             const auto xy = em::generators::generate_points_2d(d, n, 11);
             expect_sweep_swaps_to_delaunay(
@@ -145,9 +148,18 @@ TEST(Triangulation_EdgeSwap2, DelaunayFromSweepIsDelaunay2dOnDegenerateFamilies)
     }
     // A 3x3 grid fan of every orientation, and points on one circle.
     std::vector<double> circle;
-    for (const auto& [x, y] : std::vector<std::pair<int, int>>{
-             {5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4},
-             {0, -5}, {3, -4}, {4, -3}}) {
+    for (const auto& [x, y] : std::vector<std::pair<int, int>>{{5, 0},
+                                                               {4, 3},
+                                                               {3, 4},
+                                                               {0, 5},
+                                                               {-3, 4},
+                                                               {-4, 3},
+                                                               {-5, 0},
+                                                               {-4, -3},
+                                                               {-3, -4},
+                                                               {0, -5},
+                                                               {3, -4},
+                                                               {4, -3}}) {
         circle.insert(circle.end(), {double(x), double(y)});
     }
     expect_sweep_swaps_to_delaunay(circle, "12 cocircular points");
@@ -162,8 +174,8 @@ TEST(Triangulation_EdgeSwap2, DelaunayFromEveryTriangulationOfSmallSets) {
     for (int i = 0; i < random_sets; ++i) {
         sets.push_back(integer_points(5 + i % 4, i % 2 ? 6 : 1000, rng));
     }
-    sets.push_back({0, 0, 1, 0, 2, 0, 0, 1, 1, 1, 2, 1, 0, 2, 1, 2, 2, 2});   // 3x3 grid
-    sets.push_back({5, 0, 3, 4, 0, 5, -3, 4, -5, 0, -4, -3, 0, -5, 4, -3});    // cocircular
+    sets.push_back({0, 0, 1, 0, 2, 0, 0, 1, 1, 1, 2, 1, 0, 2, 1, 2, 2, 2});  // 3x3 grid
+    sets.push_back({5, 0, 3, 4, 0, 5, -3, 4, -5, 0, -4, -3, 0, -5, 4, -3});  // cocircular
     std::size_t starts = 0;
     for (const auto& xy : sets) {
         const Triangles expected = canonical_triangles(tri::bowyer_watson_2d(xy).triangles);
@@ -227,12 +239,12 @@ TEST(Triangulation_EdgeSwap2, EveryCriterionImprovesItsMeasureAndStopsStable) {
             EXPECT_LT(total_length(mesh), total_length(start));
             EXPECT_EQ(tri::swap_edges_2d(mesh, tri::MinTotalLength{}).swaps, 0u);
         }
-        for (const tri::DataCost cost : {tri::DataCost::AngleBetweenNormals,
-                                         tri::DataCost::JumpInNormalDerivatives}) {
+        for (const tri::DataCost cost :
+             {tri::DataCost::AngleBetweenNormals, tri::DataCost::JumpInNormalDerivatives}) {
             std::vector<double> values;
             for (std::size_t v = 0; v < xy.size() / 2; ++v) {
-                values.push_back(std::tanh(8.0 * (xy[2 * v] - 0.5 * xy[2 * v + 1]) /
-                                           (round % 2 ? 1.0 : 40.0)));
+                values.push_back(
+                    std::tanh(8.0 * (xy[2 * v] - 0.5 * xy[2 * v + 1]) / (round % 2 ? 1.0 : 40.0)));
             }
             tri::Triangulation2 mesh = start;
             const auto counters = tri::swap_edges_2d(mesh, tri::DataDependent{values, cost});
@@ -259,10 +271,11 @@ TEST(Triangulation_EdgeSwap2, DataDependentHandExamples) {
     std::mt19937_64 rng(3);
     const auto xy2 = integer_points(200, 64, rng);
     std::vector<double> linear;
-    for (std::size_t v = 0; v < xy2.size() / 2; ++v) linear.push_back(2 * xy2[2 * v] - 3 * xy2[2 * v + 1]);
+    for (std::size_t v = 0; v < xy2.size() / 2; ++v)
+        linear.push_back(2 * xy2[2 * v] - 3 * xy2[2 * v + 1]);
     const tri::Triangulation2 sweep = em::generators::sweep_triangulation_2d(xy2);
-    for (const tri::DataCost cost : {tri::DataCost::AngleBetweenNormals,
-                                     tri::DataCost::JumpInNormalDerivatives}) {
+    for (const tri::DataCost cost :
+         {tri::DataCost::AngleBetweenNormals, tri::DataCost::JumpInNormalDerivatives}) {
         tri::Triangulation2 copy = sweep;
         EXPECT_EQ(tri::swap_edges_2d(copy, tri::DataDependent{linear, cost}).swaps, 0u);
     }
@@ -275,6 +288,31 @@ TEST(Triangulation_EdgeSwap2, DataDependentHandExamples) {
         FAIL() << "NaN value accepted";
     } catch (const em::InputError& e) {
         EXPECT_NE(std::string(e.what()).find("vertex 1"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Triangulation_EdgeSwap2, JumpInNormalDerivativesIsScaleInvariant) {
+    // JND costs are homogeneous in the coordinates: the mesh scaled by 2^+-600 (same data) makes
+    // the same swaps. Its triangles' doubled areas there are 2^+-1200 times the unscaled ones,
+    // beyond doubles, which left every edge unswapped before the costs took coordinates scaled
+    // by the exponent of the largest one.
+    const auto xy = uniform(400, 11);
+    std::vector<double> values;
+    for (std::size_t v = 0; v < xy.size() / 2; ++v)
+        values.push_back(std::tanh(8.0 * (xy[2 * v] - 0.5 * xy[2 * v + 1])));
+    const tri::Triangulation2 start = em::generators::sweep_triangulation_2d(xy);
+    tri::Triangulation2 reference = start;
+    const auto counters = tri::swap_edges_2d(
+        reference, tri::DataDependent{values, tri::DataCost::JumpInNormalDerivatives});
+    EXPECT_GT(counters.swaps, 0u);
+    for (const int k : {600, -600, 3, -3}) {
+        tri::Triangulation2 mesh = start;
+        for (double& x : mesh.xy) x = std::ldexp(x, k);
+        const auto scaled = tri::swap_edges_2d(
+            mesh, tri::DataDependent{values, tri::DataCost::JumpInNormalDerivatives});
+        EXPECT_EQ(scaled.swaps, counters.swaps) << "2^" << k;
+        EXPECT_EQ(canonical_triangles(mesh.triangles), canonical_triangles(reference.triangles))
+            << "2^" << k;
     }
 }
 
@@ -298,7 +336,8 @@ TEST(Triangulation_EdgeSwap2, MinMaxAngleSwappingStopsInALocalOptimum) {
     EXPECT_EQ(orc::compare_exact_angles(orc::largest_exact_angle(xy, cut.triangles), optimum), 0);
     EXPECT_GT(orc::compare_exact_angles(local, optimum), 0);
     const double local_degrees = std::atan2(local.cross.get_d(), local.dot.get_d()) * 180 / M_PI;
-    const double optimum_degrees = std::atan2(optimum.cross.get_d(), optimum.dot.get_d()) * 180 / M_PI;
+    const double optimum_degrees =
+        std::atan2(optimum.cross.get_d(), optimum.dot.get_d()) * 180 / M_PI;
     EXPECT_NEAR(local_degrees, 126.869898, 1e-5);
     EXPECT_NEAR(optimum_degrees, 113.198591, 1e-5);
 }
@@ -325,7 +364,8 @@ TEST(Triangulation_EdgeSwap2, ConstrainedEdgesAreNeverSwapped) {
                 const tri::VertIdx w = mesh.triangles[3 * u + j];
                 if (w != a && w != b) d = w;
             }
-            EXPECT_NE(em::predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d)),
+            EXPECT_NE(em::predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c),
+                                               mesh.point(d)),
                       em::predicates::Sign::Positive);
         }
     }
@@ -333,7 +373,8 @@ TEST(Triangulation_EdgeSwap2, ConstrainedEdgesAreNeverSwapped) {
 
 TEST(Triangulation_EdgeSwap2, CollinearAndTinyInputs) {
     // Collinear points: no triangle, nothing to swap. One triangle: no interior edge.
-    for (auto xy : {std::vector<double>{0, 0, 1, 1, 2, 2, 3, 3}, std::vector<double>{0, 0, 1, 0, 0, 1}}) {
+    for (auto xy :
+         {std::vector<double>{0, 0, 1, 1, 2, 2, 3, 3}, std::vector<double>{0, 0, 1, 0, 0, 1}}) {
         tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
         EXPECT_EQ(tri::swap_edges_2d(mesh, tri::Delaunay{}).swaps, 0u);
         EXPECT_EQ(tri::swap_edges_2d(mesh, tri::MinMaxAngle{}).edges_tested, 0u);
@@ -343,9 +384,10 @@ TEST(Triangulation_EdgeSwap2, CollinearAndTinyInputs) {
     for (int i = 0; i < 10; ++i) xy.insert(xy.end(), {double(i), 0.0});
     xy.insert(xy.end(), {4.5, 3.0, 4.5, -0.5});
     expect_sweep_swaps_to_delaunay(xy, "collinear row with apexes");
-    for (auto* run : {+[](tri::Triangulation2& m) { return tri::swap_edges_2d(m, tri::MinMaxAngle{}); },
-                      +[](tri::Triangulation2& m) { return tri::swap_edges_2d(m, tri::MaxMinAngle{}); },
-                      +[](tri::Triangulation2& m) { return tri::swap_edges_2d(m, tri::MinTotalLength{}); }}) {
+    for (auto* run :
+         {+[](tri::Triangulation2& m) { return tri::swap_edges_2d(m, tri::MinMaxAngle{}); },
+          +[](tri::Triangulation2& m) { return tri::swap_edges_2d(m, tri::MaxMinAngle{}); },
+          +[](tri::Triangulation2& m) { return tri::swap_edges_2d(m, tri::MinTotalLength{}); }}) {
         tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
         run(mesh);
         expect_consistent(mesh);
