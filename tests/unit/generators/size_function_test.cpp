@@ -382,12 +382,22 @@ TEST(Generators_SizeFunction, QuadtreeErrors) {
     gen::QuadtreeSizeOptions shallow;
     shallow.max_depth = 4;
     expect_error(field, shallow, "size quadtree: a cell at the maximum depth 4");
+    // Over the budget: by the up-front estimate of the cell-factor rule (at once), or, with the
+    // tolerance rule alone (no estimate), while the tree is built.
     gen::QuadtreeSizeOptions few;
     few.max_leaves = 100;
+    expect_error(field, few, "size quadtree: the size field asks for about ");
+    few.cell_factor = 0;
+    few.tolerance = 1e-4;
     expect_error(field, few, "size quadtree: more than 100 leaves");
+    // A uniform size of 3e-4 on the unit square: 4^12 leaves, refused before any is built
+    // (it took 5.7 s and 850 MB to reach the budget of 2^22).
+    expect_error(gen::SizeFunction::uniform(3e-4), {},
+                 "size quadtree: the size field asks for about 1.68e+07 leaves");
+    // The message names a sample where the field is not > 0 (the estimate's first).
     const gen::SizeFunction hole =
         gen::SizeFunction::analytic([](double x, double) { return x - 0.5; }, "x - 0.5");
-    expect_error(hole, {}, "size quadtree: the size field is -0.5");
+    expect_error(hole, {}, "size quadtree: the size field is -0.49");
 }
 
 // ---- smoothing ----
