@@ -3,7 +3,8 @@
 // adaptive predicates, their exact stages alone and CGAL's Epick kernel, each over the same
 // streamed query tuples in the same loop [Shewchuk97 §4]; plus two_product, Dekker vs std::fma.
 //
-// Names: BM_<predicate>/<variant>/<workload> and BM_two_product/<variant>. Every benchmark
+// Names: BM_<predicate>/<variant>/<workload>, BM_within_rounding/<variant>/near_origin and
+// BM_two_product/<variant>. Every benchmark
 // reports the counter ns_per_call (CPU time per predicate call); scripts/predicate_ratios.py
 // turns the JSON into the README's ratio table.
 //
@@ -27,6 +28,7 @@
 
 #include "base/enum_names.hpp"
 #include "bench/bench_support.hpp"
+#include "predicates/exact_reference.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/in_ellipse.hpp"
 #include "predicates/incircle.hpp"
@@ -34,6 +36,7 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/sign.hpp"
+#include "predicates/within_rounding_of_segment.hpp"
 
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -585,6 +588,49 @@ void bm_two_product(benchmark::State& state) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// within_rounding_of_segment where its filter cannot decide: a vertex w far smaller than the
+// ends of a segment whose line passes through the origin, a few ulps off it (a crossing or split
+// point near the origin, coordinates from 2^-990 to 2^990). Rows: the predicate, its exact stage
+// alone (GMP integers on one power-of-two scale) and the rational GMP reference
+// (predicates/exact_reference), 2^14 cases streamed in order.
+
+const std::vector<std::array<double, 6>>& within_cases() {
+    static const std::vector<std::array<double, 6>> cases = [] {
+        std::vector<std::array<double, 6>> v;
+        Random rng(0x71791u);
+        while (v.size() < (std::size_t{1} << 14)) {
+            const double big = std::ldexp(1.0, rng.offset(990));
+            const double small = big * std::ldexp(1.0, -20 - static_cast<int>(rng.uniform(0, 880)));
+            const double ax = -big * rng.uniform(0.5, 1), ay = -big * rng.uniform(0.5, 1);
+            const double k = std::ldexp(1.0, rng.offset(3));
+            const double r = rng.uniform(-1, 1) * small / big;
+            const std::array<double, 6> c{ax * r, nudge(ay * r, rng.offset(3)), ax, ay, -k * ax,
+                                          -k * ay};
+            if (!pred::within_rounding_of_segment_filter(c.data(), c.data() + 2, c.data() + 4))
+                v.push_back(c);
+        }
+        return v;
+    }();
+    return cases;
+}
+
+template <bool (*Within)(const double*, const double*, const double*)>
+void bm_within(benchmark::State& state) {
+    const std::vector<std::array<double, 6>>& cases = within_cases();
+    std::size_t cursor = 0, inside = 0;
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < kChunk; ++i) {
+            const double* c = cases[cursor + i].data();
+            inside += Within(c, c + 2, c + 4) ? 1 : 0;
+        }
+        cursor += kChunk;
+        if (cursor == cases.size()) cursor = 0;
+    }
+    benchmark::DoNotOptimize(inside);
+    report(state);
+}
+
+// ---------------------------------------------------------------------------------------------
 
 template <Predicate P>
 void register_predicate() {
@@ -614,6 +660,15 @@ int main(int argc, char** argv) {
     register_predicate<Predicate::orient3d>();
     register_predicate<Predicate::insphere>();
     register_predicate<Predicate::in_ellipse>();
+    benchmark::RegisterBenchmark("BM_within_rounding/exactmesh/near_origin",
+                                 &bm_within<&pred::within_rounding_of_segment>)
+        ->Unit(benchmark::kNanosecond);
+    benchmark::RegisterBenchmark("BM_within_rounding/exactmesh_exact/near_origin",
+                                 &bm_within<&pred::within_rounding_of_segment_exact>)
+        ->Unit(benchmark::kNanosecond);
+    benchmark::RegisterBenchmark("BM_within_rounding/gmp_rationals/near_origin",
+                                 &bm_within<&pred::reference::within_rounding_of_segment>)
+        ->Unit(benchmark::kNanosecond);
     benchmark::RegisterBenchmark("BM_two_product/dekker", &bm_two_product<&dekker_tail>)
         ->Unit(benchmark::kNanosecond);
     benchmark::RegisterBenchmark("BM_two_product/fma", &bm_two_product<&fma_tail>)

@@ -3,7 +3,7 @@
 // around w meets the closed segment [s0, s1], exactly: the rule by which constrained
 // triangulations bend a segment through a constructed vertex and their checks accept one
 // (proofs/invariants/constrained_delaunay.md §4). Stages: a long double filter
-// (proofs/gappa/within_rounding_filter.g), then GMP.
+// (proofs/gappa/within_rounding_filter.g), then GMP integers.
 #pragma once
 
 #include <optional>
@@ -26,5 +26,8 @@ bool within_rounding_of_segment(const double* w, const double* s0, const double*
 /// The long double filter (stage A): the answer when certified, std::nullopt otherwise.
 std::optional<bool> within_rounding_of_segment_filter(const double* w, const double* s0,
                                                       const double* s1);
+
+/// The exact stage alone (stage B): GMP integers on one power-of-two scale.
+bool within_rounding_of_segment_exact(const double* w, const double* s0, const double* s1);
 
 }  // namespace exactmesh::predicates

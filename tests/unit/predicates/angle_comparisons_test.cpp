@@ -124,6 +124,7 @@ void check_within(const P2& w, const P2& s0, const P2& s1, FilterCount& count, c
     const bool ref = pr::reference::within_rounding_of_segment(w.data(), s0.data(), s1.data());
     ASSERT_EQ(pr::within_rounding_of_segment(w.data(), s0.data(), s1.data()), ref) << what;
     ASSERT_EQ(pr::within_rounding_of_segment(w.data(), s1.data(), s0.data()), ref) << what;
+    ASSERT_EQ(pr::within_rounding_of_segment_exact(w.data(), s0.data(), s1.data()), ref) << what;
     ++count.cases;
     if (const auto f = pr::within_rounding_of_segment_filter(w.data(), s0.data(), s1.data())) {
         ++count.answered;
@@ -240,6 +241,38 @@ TEST(Predicates_WithinRounding, AgreesWithGmpNearTheSquaresBoundary) {
     }
     // The long double filter decides all but the closest calls, at every scale.
     for (const FilterCount& f : at_scale) EXPECT_GT(f.answered, f.cases * 95 / 100);
+}
+
+TEST(Predicates_WithinRounding, ExactStageAgreesWithGmpWhereTheFilterCannotDecide) {
+    // A vertex w far smaller than the segment's ends, a few ulps off the segment through it
+    // (a crossing or split point near the origin): the half-width 2^-40 |w| is far below the
+    // rounding of the cross product's terms, so the filter gives up and the exact stage
+    // decides; coordinates from 1e-300 to 1e300, subnormal half-widths included.
+    Rng rng(7);
+    FilterCount count;
+    int inside = 0, outside = 0;  // decided by the exact stage
+    for (int n = 0; n < 4000; ++n) {
+        const double big = std::ldexp(1.0, static_cast<int>(uniform(rng, -990, 990)));
+        const double small = big * std::ldexp(1.0, -static_cast<int>(uniform(rng, 20, 900)));
+        // s1 a power-of-two multiple of -s0: the segment's line passes through the origin.
+        const P2 s0{-big * uniform(rng, 0.5, 1), -big * uniform(rng, 0.5, 1)};
+        const double k = std::ldexp(1.0, static_cast<int>(uniform(rng, -3, 3)));
+        const P2 s1{-k * s0[0], -k * s0[1]};
+        // The point s0 r (r about small / big, either sign) rounded, then nudged a few ulps.
+        const double r = uniform(rng, -1, 1) * small / big;
+        P2 w{s0[0] * r, s0[1] * r};
+        const int ulps = static_cast<int>(uniform(rng, -3, 4));
+        for (int i = 0; i < std::abs(ulps); ++i)
+            w[1] = std::nextafter(w[1], ulps > 0 ? HUGE_VAL : -HUGE_VAL);
+        if (ulps == 0) w[1] = w[1] + std::fabs(w[1]) * std::ldexp(1.0, -39);
+        check_within(w, s0, s1, count, "near the origin on a long segment");
+        const bool within = pr::within_rounding_of_segment(w.data(), s0.data(), s1.data());
+        (within ? inside : outside) +=
+            pr::within_rounding_of_segment_filter(w.data(), s0.data(), s1.data()) ? 0 : 1;
+    }
+    // The exact stage decided both ways.
+    EXPECT_GT(inside, 100) << count.answered << " of " << count.cases << " by the filter";
+    EXPECT_GT(outside, 100) << count.answered << " of " << count.cases << " by the filter";
 }
 
 namespace {
