@@ -19,17 +19,20 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "base/counter_table.hpp"
 #include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "cli/commands.hpp"
 #include "cli/expressions.hpp"
 #include "cli/options.hpp"
@@ -68,7 +71,8 @@ struct TetmeshArguments : CommandArguments {
     bool quality = false;
     bool no_sliver_removal = false;
     std::string generator = "delaunay-refinement";
-    std::string size;  ///< empty: not given
+    std::string size;                         ///< empty: not given
+    std::optional<double> feature_gradation;  ///< not given: the generators' default, 0.5
 };
 
 /// The faces to write in the .face file: every subface once (a boundary face as seen from
@@ -188,10 +192,19 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         frontal_options.max_steiner_points = arguments.max_steiner;
         octree_options.size = frontal_options.size;
         octree_options.max_steiner_points = arguments.max_steiner;
+        if (const std::optional<double> g = arguments.feature_gradation) {
+            if (!(*g >= 0) || !std::isfinite(*g))
+                throw InputError("--feature-gradation must be a finite number >= 0, not " +
+                                 format_number(*g));
+            frontal_options.feature_gradation = *g;
+            octree_options.feature_gradation = *g;
+        }
     } else if (!arguments.size.empty()) {
         throw InputError(
             "--size is for --generator frontal or octree; Delaunay refinement takes --max-volume "
             "(and --radius-edge)");
+    } else if (arguments.feature_gradation) {
+        throw InputError("--feature-gradation is for --generator frontal or octree");
     }
 
     tri::BoundaryRecovery3Options options;
@@ -214,6 +227,7 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         tri::BoundaryRecovery3Result recovery;
         gen::DelaunayRefinement3Counters refinement;
         gen::FrontalDelaunay3Counters frontal;
+        gen::SizeFunction3 size;  ///< the size frontal insertion followed (graded), for --quality
         gen::OctreeMesh3Counters octree;
         tri::BoundaryRecovery3Counters octree_band_recovery;  ///< the octree's band
         gen::SliverRemoval3Counters slivers;
@@ -224,12 +238,20 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     auto [result, stats, seconds] = timed_construction([&] {
         return naming_the_input(source, [&] {
             Meshed meshed{tri::boundary_recovery_3d_whole_facets(plc, options, recovery_warnings),
-                          {}, {}, {}, {}, {}, {}, 0};
+                          {},
+                          {},
+                          frontal_options.size,
+                          {},
+                          {},
+                          {},
+                          {},
+                          0};
             if (frontal) {
                 gen::FrontalDelaunay3Result meshed_frontal =
                     gen::frontal_delaunay_3d(plc, std::move(meshed.recovery.mesh), frontal_options);
                 meshed.recovery.mesh = std::move(meshed_frontal.mesh);
                 meshed.frontal = meshed_frontal.counters;
+                meshed.size = meshed_frontal.size;
             }
             if (octree) {
                 gen::OctreeMesh3Result meshed_octree =
@@ -334,8 +356,9 @@ void run_tetmesh(const TetmeshArguments& arguments) {
             print_quality_3d(result.before_sliver_removal, "before_sliver_removal_");
         print_quality_3d(mesh);
         if (frontal || octree) {
-            // Edge length over --size at its midpoint, once per edge.
-            const gen::SizeConformity3 c = gen::size_conformity_3d(mesh, frontal_options.size);
+            // Edge length over the size followed at its midpoint (frontal: --size graded to the
+            // input's feature sizes), once per edge.
+            const gen::SizeConformity3 c = gen::size_conformity_3d(mesh, result.size);
             const auto precision = std::cout.precision(6);
             std::cout << "size_conformity: min " << c.min << " median " << c.median << " mean "
                       << c.mean << " max " << c.max << " (edge length / size at its midpoint, "
@@ -445,6 +468,14 @@ void add_tetmesh_command(CLI::App& app) {
             "--generator frontal or octree: the target edge length, a number or an expression in "
             "x, y, z (muParser: '0.05 + 0.1 * sqrt(x^2 + y^2 + z^2)')")
         ->type_name("NUM|EXPR");
+    command
+        ->add_option("--feature-gradation", arguments->feature_gradation,
+                     "--generator frontal or octree: grade the size down to the input's free "
+                     "vertices whose nearest feature (another vertex, a facet) is closer than "
+                     "the size / sqrt 2 (and any vertex's closer than the size / 1024): "
+                     "min(size, f + G |x - v|) (generators/mesh_3d/feature_size_3d; default "
+                     "0.5, 0 = the size as given)")
+        ->type_name("G");
     command->add_flag("--no-sliver-removal", arguments->no_sliver_removal,
                       "Keep the refined mesh as Delaunay refinement leaves it: no sliver removal "
                       "(generators/mesh_3d/sliver_removal_3d: MaxMinDihedral edge-face swapping "

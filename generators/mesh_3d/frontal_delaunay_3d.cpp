@@ -20,6 +20,7 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "generators/mesh_3d/feature_size_3d.hpp"
 #include "generators/mesh_3d/gap_estimate_3d.hpp"
 #include "generators/mesh_3d/restricted_delaunay_3d.hpp"
 #include "generators/mesh_3d/scaled_differences_3d.hpp"
@@ -495,9 +496,17 @@ double estimate_points(const ConformingMesh3& recovered, const SizeFunction3& si
 }  // namespace
 
 FrontalDelaunay3Result frontal_delaunay_3d(const Plc3& plc, ConformingMesh3 recovered,
-                                           const FrontalDelaunay3Options& options) {
-    if (!options.size.defined())
+                                           const FrontalDelaunay3Options& given) {
+    if (!given.size.defined())
         throw InputError("frontal delaunay 3d: a size (target edge length) is required");
+    if (!(given.feature_gradation >= 0) || !std::isfinite(given.feature_gradation))
+        throw InputError(
+            "frontal delaunay 3d: the feature gradation must be a finite number >= "
+            "0, got " +
+            format_number(given.feature_gradation));
+    FrontalDelaunay3Options options = given;
+    if (given.feature_gradation > 0)
+        options.size = feature_graded_size_3d(plc, given.size, given.feature_gradation);
     if (!(options.acceptance >= 1 && options.acceptance <= 4))
         throw InputError("frontal delaunay 3d: the acceptance must be in [1, 4], got " +
                          format_number(options.acceptance));
@@ -525,7 +534,9 @@ FrontalDelaunay3Result frontal_delaunay_3d(const Plc3& plc, ConformingMesh3 reco
     Frontal frontal(plc, std::move(recovered), options, budget, exponent);
     frontal.result_counters.estimated_points =
         static_cast<std::uint64_t>(std::min(estimate, 1.8e19));
-    return frontal.run();
+    FrontalDelaunay3Result result = frontal.run();
+    result.size = options.size;
+    return result;
 }
 
 }  // namespace exactmesh::generators

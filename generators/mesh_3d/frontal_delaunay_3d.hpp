@@ -72,6 +72,9 @@ struct FrontalDelaunay3Options {
     /// before meshing; octree_mesh_3d, which asked it of the input already, turns it off for
     /// its band.
     bool estimate_gaps = true;
+    /// Grade the size down to the PLC's local feature sizes (feature_graded_size_3d) with this
+    /// gradation; 0: follow `size` as given. octree_mesh_3d turns it off for its band.
+    double feature_gradation = 0.5;
 };
 
 struct FrontalDelaunay3Counters {
@@ -106,6 +109,8 @@ static_assert(counter_table_complete(kFrontalDelaunay3CounterNames));
 struct FrontalDelaunay3Result {
     triangulation::ConformingMesh3 mesh;
     FrontalDelaunay3Counters counters;
+    /// The size followed: options.size, graded to the feature sizes unless turned off.
+    SizeFunction3 size;
 };
 
 /// Meshes the domain of `recovered` (boundary_recovery_3d's result for `plc`, or any mesh that

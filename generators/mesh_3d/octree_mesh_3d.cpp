@@ -497,6 +497,7 @@ class OctreeMesher {
         frontal_options.size = options_.size;
         frontal_options.max_steiner_points = options_.max_steiner_points;
         frontal_options.estimate_gaps = false;  // octree_mesh_3d asked it of the input
+        frontal_options.feature_gradation = options_.feature_gradation;
         FrontalDelaunay3Result frontal =
             frontal_delaunay_3d(band_plc_, std::move(recovered.mesh), frontal_options);
         result_.band_frontal = frontal.counters;

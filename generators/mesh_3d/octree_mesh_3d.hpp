@@ -66,6 +66,10 @@ struct OctreeMesh3Options {
     std::uint64_t max_leaves = 0;
     /// The band's Steiner budget (boundary recovery and frontal insertion); 0: their defaults.
     std::uint64_t max_steiner_points = 0;
+    /// The band's frontal insertion grades the size down to the band PLC's local feature sizes
+    /// (feature_graded_size_3d: free vertices of the input finer than the size) with this
+    /// gradation; 0: the size as given. The leaves follow the size as given.
+    double feature_gradation = 0.5;
 };
 
 struct OctreeMesh3Counters {

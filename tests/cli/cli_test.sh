@@ -1599,6 +1599,8 @@ tetmesh_frontal() {
   expect_error 2 'needs --size' tetmesh "$work/cube.poly" --generator frontal -o "$work/x.ele"
   expect_error 2 'is for --generator frontal' tetmesh "$work/cube.poly" --size 0.2 -o "$work/x.ele"
   expect_error 2 'takes --size' tetmesh "$work/cube.poly" --generator frontal --size 0.2 --max-volume 0.1 -o "$work/x.ele"
+  expect_error 2 'feature-gradation must be a finite number >= 0, not -1' tetmesh "$work/cube.poly" --generator frontal --size 0.2 --feature-gradation -1 -o "$work/x.ele"
+  expect_error 2 'feature-gradation is for --generator frontal or octree' tetmesh "$work/cube.poly" --feature-gradation 0.5 -o "$work/x.ele"
   expect_error 2 'expression in x, y and z' tetmesh "$work/cube.poly" --generator frontal --size 'w + 1' -o "$work/x.ele"
   expect_error 2 'budget of 1000 exceeded at once: the size uniform 0.001 asks for about' \
     tetmesh "$work/cube.poly" --generator frontal --size 0.001 --max-steiner 1000 -o "$work/x.ele"
