@@ -148,18 +148,11 @@ TEST(Triangulation_EdgeSwap2, DelaunayFromSweepIsDelaunay2dOnDegenerateFamilies)
     }
     // A 3x3 grid fan of every orientation, and points on one circle.
     std::vector<double> circle;
-    for (const auto& [x, y] : std::vector<std::pair<int, int>>{{5, 0},
-                                                               {4, 3},
-                                                               {3, 4},
-                                                               {0, 5},
-                                                               {-3, 4},
-                                                               {-4, 3},
-                                                               {-5, 0},
-                                                               {-4, -3},
-                                                               {-3, -4},
-                                                               {0, -5},
-                                                               {3, -4},
-                                                               {4, -3}}) {
+    // clang-format off
+    for (const auto& [x, y] : std::vector<std::pair<int, int>>{
+             {5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4},
+             {0, -5}, {3, -4}, {4, -3}}) {
+        // clang-format on
         circle.insert(circle.end(), {double(x), double(y)});
     }
     expect_sweep_swaps_to_delaunay(circle, "12 cocircular points");
