@@ -153,7 +153,81 @@ void check_gradation(double gradation) {
     }
 }
 
+/// The distance from p to the closed segment qr, in a frame scaled by the power of two of the
+/// largest coordinate difference (no square overflows or underflows; exact scaling by 2^k).
+double point_segment_distance(const double* p, const double* q, const double* r) {
+    const double ux = p[0] - q[0], uy = p[1] - q[1], dx = r[0] - q[0], dy = r[1] - q[1];
+    const double largest = std::max({std::fabs(ux), std::fabs(uy), std::fabs(dx), std::fabs(dy)});
+    if (!(largest > 0)) return 0;
+    const int e = predicates::binary_exponent(largest);
+    const predicates::PowerOfTwo down(-e);
+    const double a = down(ux), b = down(uy), c = down(dx), d = down(dy);
+    const double length2 = c * c + d * d;
+    const double t = length2 > 0 ? std::clamp((a * c + b * d) / length2, 0.0, 1.0) : 0.0;
+    return predicates::PowerOfTwo(e)(std::hypot(a - t * c, b - t * d));
+}
+
+/// A free vertex lowers the size when its feature is below this fraction of the size there,
+/// any vertex below kFar of it (graded_to_fine_features).
+constexpr double kFiner = 0.7071067811865476;
+constexpr double kFar = 0x1p-10;
+
 }  // namespace
+
+SizeFunction graded_to_fine_features(const MeshDomain2& domain_of, const SizeFunction& size,
+                                     double gradation) {
+    check_gradation(gradation);
+    if (!size.bounded()) return size;
+    const tri::Cdt2Result& domain = domain_of.triangulation();
+    const tri::Triangulation2& mesh = domain.mesh;
+    const std::size_t n = mesh.vertex_count();
+    // f_v: the shortest CDT edge at v, and the distance to each segment piece opposite v in a
+    // triangle of the domain (a vertex 1e-12 off a segment sits in the triangle over it).
+    const BoundarySpacing spacing = boundary_spacing(domain);
+    std::vector<double> feature = spacing.shortest;
+    std::vector<std::uint8_t> on_segment(n, 0);
+    for (const tri::VertIdx v : domain.pieces) on_segment[v] = 1;
+    const bool flagged = !mesh.constrained.empty();
+    for (std::size_t t = 0; flagged && 3 * t < mesh.triangles.size(); ++t) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            // Edge k joins corners k and k + 1; corner k + 2 is opposite it.
+            if (mesh.constrained[3 * t + k] == 0) continue;
+            const tri::VertIdx q = mesh.triangles[3 * t + k];
+            const tri::VertIdx r = mesh.triangles[3 * t + (k + 1) % 3];
+            const tri::VertIdx v = mesh.triangles[3 * t + (k + 2) % 3];
+            feature[v] = std::min(
+                feature[v], point_segment_distance(mesh.point(v), mesh.point(q), mesh.point(r)));
+        }
+    }
+    std::vector<double> xy, sizes;
+    std::vector<std::uint8_t> seen(n, 0);
+    for (const tri::VertIdx v : mesh.triangles) {
+        if (seen[v] != 0) continue;
+        seen[v] = 1;
+        const double* p = mesh.point(v);
+        // No feature below 2^-44 of the vertex's own coordinates counts (about 2^8 units in the
+        // last place: the generators leave such triangles as they are), nor below 2^8 times the
+        // least normal double (subnormal sizes are not chased).
+        const double floor =
+            std::max(std::ldexp(std::max(std::fabs(p[0]), std::fabs(p[1])), -44), 0x1p-1014);
+        const double f = std::max(feature[v], floor);
+        const double h = size(p[0], p[1]);
+        if (on_segment[v] == 0 ? f < kFiner * h : f < kFar * h) {
+            xy.insert(xy.end(), {p[0], p[1]});
+            sizes.push_back(f);
+        }
+    }
+    if (sizes.empty()) return size;
+    const std::size_t sites = sizes.size();
+    auto field = std::make_shared<const GradedSites>(std::move(xy), std::move(sizes), gradation);
+    std::ostringstream description;
+    description << size.describe() << ", graded to " << sites
+                << " vertices' fine features (gradation " << gradation << ")";
+    return SizeFunction::analytic(
+               [field, size](double x, double y) { return std::min(size(x, y), (*field)(x, y)); },
+               description.str())
+        .marked_steep();
+}
 
 SizeFunction graded_size_from_boundary(const tri::Pslg& pslg, const tri::Cdt2Options& cdt,
                                        double gradation) {

@@ -46,4 +46,18 @@ SizeFunction graded_size_from_boundary(const triangulation::Pslg& pslg,
 SizeFunction graded_size_from_boundary(const MeshDomain2& domain,
                                        double gradation = kDefaultGradation);
 
+/// `size` graded down to the domain's fine features, as the 3D generators do
+/// (generators/mesh_3d/feature_size_3d): h'(x) = min(h(x), min over the sources v of
+/// f_v + g |x - v|), f_v the vertex's shortest edge in the domain's CDT and its distance to each
+/// segment piece opposite it in a triangle, at least 2^-44 of its coordinates; the sources are
+/// the free vertices (on no segment) with f_v < h(v) / sqrt 2 and any vertex with f_v below
+/// h(v) / 1024. Free vertices 1e-9 apart, or 1e-12 off a segment, otherwise sit in triangles of
+/// 1e-6 degrees and less in the front and quadtree generators' meshes. A vertex on a segment
+/// near another segment is not a source unless 1024 times finer than the size (the input's
+/// own spacing, which the boundary's discretization follows). Scale-free as the size above.
+/// The size itself when unbounded or when no vertex is a source.
+/// @throws InputError as graded_size_from_boundary.
+SizeFunction graded_to_fine_features(const MeshDomain2& domain, const SizeFunction& size,
+                                     double gradation = kDefaultGradation);
+
 }  // namespace exactmesh::generators

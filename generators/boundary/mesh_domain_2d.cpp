@@ -17,7 +17,8 @@ tri::Cdt2Options domain_cdt_options(tri::Cdt2Options cdt) {
 }
 
 MeshDomain2::MeshDomain2(const tri::Pslg& pslg, const tri::Cdt2Options& cdt)
-    : pslg_(pslg), domain_options_(domain_cdt_options(cdt)),
+    : pslg_(pslg),
+      domain_options_(domain_cdt_options(cdt)),
       numbered_(has_region_areas(pslg.regions)) {}
 
 const tri::Cdt2Result& MeshDomain2::triangulation() const {

@@ -57,8 +57,8 @@ class Builder {
         const Curve2 circle = [centre, radius](double u) {
             return Point{centre[0] + radius * std::cos(u), centre[1] + radius * std::sin(u)};
         };
-        std::vector<double> u = discretize_curve_parameters(circle, 0.0, 2 * std::numbers::pi,
-                                                            size, 8);
+        std::vector<double> u =
+            discretize_curve_parameters(circle, 0.0, 2 * std::numbers::pi, size, 8);
         std::vector<Point> points;
         for (const double p : u) points.push_back(circle(p));
         points.pop_back();  // u = 2 pi is u = 0
@@ -124,9 +124,7 @@ DomainPslg key(const SizeFunction& size) {
     outline.insert(outline.end(), teeth.begin(), teeth.end());
     // The ring's outer arc from angle -a0 down through pi back to a0 - 2 pi, i.e. (cut, -h) to
     // (cut, h) the long way round; both ends are already there.
-    const Curve2 ring = [r](double u) {
-        return Point{r * std::cos(u), r * std::sin(u)};
-    };
+    const Curve2 ring = [r](double u) { return Point{r * std::cos(u), r * std::sin(u)}; };
     const std::vector<double> arc =
         discretize_curve_parameters(ring, -a0, a0 - 2 * std::numbers::pi, size, 16);
     outline.push_back({cut, -h});

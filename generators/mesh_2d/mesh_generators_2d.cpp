@@ -206,7 +206,17 @@ MeshRun2 run_delaunay_refinement(const MeshDomain2& domain, const MeshOptions2& 
     return {std::move(result.mesh), {}, counter_list(result.counters), {}};
 }
 
-MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& options) {
+/// The options with the size graded down to the domain's fine features (free vertices far
+/// closer to another feature than the size: graded_to_fine_features), as the generators that
+/// place points at the size follow it; Delaunay refinement needs no such grading.
+MeshOptions2 with_fine_features(const MeshDomain2& domain, const MeshOptions2& options) {
+    MeshOptions2 graded = options;
+    graded.size = graded_to_fine_features(domain, options.size);
+    return graded;
+}
+
+MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& given) {
+    const MeshOptions2 options = with_fine_features(domain, given);
     check_size_budget(domain, options, true);
     QuadtreeOptions2 quadtree;
     quadtree.size = options.size;
@@ -217,7 +227,8 @@ MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& options) {
     return {std::move(result.mesh), {}, counter_list(result.counters), {}};
 }
 
-MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& options) {
+MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& given) {
+    const MeshOptions2 options = with_fine_features(domain, given);
     check_size_budget(domain, options, false);
     AdvancingFrontOptions2 front;
     front.size = options.size;
@@ -234,7 +245,8 @@ MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& opti
     return {std::move(result.mesh), {}, counter_list(result.counters), {}};
 }
 
-MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
+MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptions2& given) {
+    const MeshOptions2 options = with_fine_features(domain, given);
     check_size_budget(domain, options, false);
     AdvancingFrontDelaunayOptions2 front;
     front.size = options.size;
@@ -250,7 +262,8 @@ MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptio
     return {std::move(result.mesh), {}, counter_list(result.counters), {}};
 }
 
-MeshRun2 run_frontal_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
+MeshRun2 run_frontal_delaunay(const MeshDomain2& domain, const MeshOptions2& given) {
+    const MeshOptions2 options = with_fine_features(domain, given);
     check_size_budget(domain, options, true);
     FrontalDelaunayOptions2 frontal;
     frontal.size = options.size;
@@ -286,10 +299,11 @@ MeshRun2 run_metric_delaunay(const MeshDomain2& domain, const MeshOptions2& opti
     if (options.metric) {
         metric.metric = *options.metric;
     } else if (options.size.bounded()) {
-        // No metric: the isotropic metric of the size (unit metric length = the size's length),
-        // under the size budget every generator checks.
-        check_size_budget(domain, options, true);
-        const SizeFunction size = options.size;
+        // No metric: the isotropic metric of the size (unit metric length = the size's length,
+        // graded to the domain's fine features), under the size budget every generator checks.
+        const MeshOptions2 graded = with_fine_features(domain, options);
+        check_size_budget(domain, graded, true);
+        const SizeFunction size = graded.size;
         metric.metric =
             MetricField2::analytic([size](double x, double y) { return isotropic(size(x, y)); },
                                    "isotropic, the size " + size.describe());

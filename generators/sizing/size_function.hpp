@@ -146,6 +146,16 @@ class SizeFunction {
     const BackgroundSizeMesh2* background_mesh() const { return background_.get(); }
     const SizeQuadtree2* quadtree() const { return quadtree_.get(); }
     const SmoothedSizeGrid2* smoothing_grid() const { return smoothed_.get(); }
+    /// Whether the size drops far below its usual values over short distances (a size graded
+    /// down to fine features: graded_to_fine_features), so that a boundary's discretization
+    /// must sample it adaptively rather than uniformly.
+    bool is_steep() const { return steep_; }
+    /// The same function marked steep.
+    SizeFunction marked_steep() const {
+        SizeFunction s = *this;
+        s.steep_ = true;
+        return s;
+    }
 
   private:
     static constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -160,6 +170,7 @@ class SizeFunction {
     std::shared_ptr<const SizeQuadtree2> quadtree_;
     std::shared_ptr<const SmoothedSizeGrid2> smoothed_;
     std::string description_;
+    bool steep_ = false;
     double evaluate(double x, double y) const;
     /// quadtree() and smoothed(): a function of `kind` described as `field`, which must be
     /// bounded (InputError "<what>: the size field is unbounded (none)"), evaluated by a Grid
