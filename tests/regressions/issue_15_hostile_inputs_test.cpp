@@ -6,6 +6,7 @@
 // practice an octahedron; 0.001 sampled 10^7 vertices for minutes).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -99,7 +100,8 @@ namespace {
 
 /// tests/data/rotated/NAME (scripts/rotated_cubes.py, rotated_shapes.py: a rotated unit cube or
 /// prism with free vertices placed on its facets and edges before the rotation, an ulp off them
-/// after it), scaled by 2^exponent, through the PLC steps of `exactmesh tetmesh`; the attached vertices in `attached`.
+/// after it), scaled by 2^exponent, through the PLC steps of `exactmesh tetmesh`; the attached
+/// vertices in `attached`.
 tri::Plc3 rotated_cube(const std::string& name, int exponent, std::vector<tri::VertIdx>& attached) {
     tri::Plc3 plc = io::plc_from_file(
         io::read_plc(std::string(EXACTMESH_SOURCE_DIR) + "/tests/data/rotated/" + name));
@@ -209,8 +211,8 @@ TEST(Issue15, issue_15_rotated_facets_stay_whole) {
     // no tetrahedron over a bound or spared, and at least 15 degrees after sliver removal.
     for (const char* name : {"cube_free_4.poly", "cube_free_5.poly", "cube_free_6.poly"}) {
         for (const int exponent : {0, 300, -300}) {
-            tri::Plc3 input = io::plc_from_file(io::read_plc(
-                std::string(EXACTMESH_SOURCE_DIR) + "/tests/data/rotated/" + name));
+            tri::Plc3 input = io::plc_from_file(
+                io::read_plc(std::string(EXACTMESH_SOURCE_DIR) + "/tests/data/rotated/" + name));
             input = tri::scaled(input, exponent);
             tri::validate_plc_3d_input(input);
             EXPECT_TRUE(tri::split_nonplanar_facets_3d(input).empty()) << name << exponent;
@@ -282,8 +284,7 @@ TEST(Issue15, issue_15_whole_facets_fall_back_to_split_ones) {
         const auto refined = gen::delaunay_refinement_3d(plc, std::move(recovered.mesh), options);
         const gen::RefinementQuality3 quality =
             gen::check_refinement_quality_3d(refined.mesh, options);
-        EXPECT_EQ(quality.over_bound + quality.over_volume + quality.unresolvable, 0u)
-            << exponent;
+        EXPECT_EQ(quality.over_bound + quality.over_volume + quality.unresolvable, 0u) << exponent;
     }
     // An exactly planar PLC goes straight through, nothing split, no warning.
     tri::Plc3 cube = tri::box(1, 1, 1);
@@ -316,8 +317,7 @@ TEST(Issue15, issue_15_turned_thin_hole_splits_beside_flat_boundary_tetrahedra) 
         EXPECT_LT(refined.mesh.mesh.vertex_count(), 8000u) << exponent;
         const gen::RefinementQuality3 quality =
             gen::check_refinement_quality_3d(refined.mesh, options);
-        EXPECT_EQ(quality.over_bound + quality.over_volume + quality.unresolvable, 0u)
-            << exponent;
+        EXPECT_EQ(quality.over_bound + quality.over_volume + quality.unresolvable, 0u) << exponent;
         EXPECT_TRUE(tri::check_boundary_conformity_3d(plc, refined.mesh).ok) << exponent;
     }
 }
@@ -338,4 +338,41 @@ TEST(Issue15, issue_15_holes_touching_within_rounding_are_refused_at_once) {
                   std::string::npos)
             << exponent << ": " << message;
     }
+}
+
+TEST(Issue15, issue_15_hole_points_on_facets_or_removing_everything_are_input_errors) {
+    // A volume hole point on a facet (inside it, on its edge, at its corner), a hole inside the
+    // only region, and a hole at the region point: each ended in an internal error (exit 3,
+    // "the mesh fails the exact conformity check: facet corner 0 is not a mesh vertex") after
+    // the flood removed every tetrahedron. Now one InputError naming the point and the facet, or
+    // saying the domain is empty.
+    const auto with_hole = [](double x, double y, double z) {
+        tri::Plc3 plc = tri::box(1, 1, 1);
+        plc.holes = {x, y, z};
+        return plc;
+    };
+    for (const auto& [x, y, z] :
+         {std::array<double, 3>{0.5, 0.5, 1}, std::array<double, 3>{0.5, 0, 0},
+          std::array<double, 3>{0, 0, 0}}) {
+        const std::string message =
+            error_message<InputError>([&] { tri::boundary_recovery_3d(with_hole(x, y, z)); });
+        EXPECT_NE(message.find("volume hole point 0 ("), std::string::npos) << message;
+        EXPECT_NE(message.find("names neither side"), std::string::npos) << message;
+    }
+    const std::string empty =
+        error_message<InputError>([&] { tri::boundary_recovery_3d(with_hole(0.5, 0.5, 0.5)); });
+    EXPECT_NE(empty.find("the domain is empty"), std::string::npos) << empty;
+    tri::Plc3 region = with_hole(0.25, 0.5, 0.5);
+    region.regions.push_back({0.25, 0.5, 0.5, 7, 0.01});
+    EXPECT_NE(error_message<InputError>([&] {
+                  tri::boundary_recovery_3d(region);
+              }).find("the domain is empty"),
+              std::string::npos);
+    // A region point on a facet names neither side either.
+    tri::Plc3 on_facet = tri::box(1, 1, 1);
+    on_facet.regions.push_back({0.5, 1, 0.5, 7, 0.01});
+    EXPECT_NE(error_message<InputError>([&] {
+                  tri::boundary_recovery_3d(on_facet);
+              }).find("region point 0 (0.5, 1, 0.5) lies on facet"),
+              std::string::npos);
 }

@@ -12,9 +12,11 @@
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "base/errors.hpp"
+#include "base/number_text.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/dot_sign_3d.hpp"
 #include "predicates/orient2d.hpp"
@@ -644,7 +646,55 @@ class Recovery {
         }
     }
 
+    /// Whether p lies in the closed subface (a, b, c), exactly: coplanar (orient3d zero) and
+    /// inside in a coordinate projection where the triangle is not flat (orient2d).
+    bool on_subface(const double* p, VertIdx a, VertIdx b, VertIdx c) const {
+        const auto& m = mesh_.mesh;
+        const double *pa = m.point(a), *pb = m.point(b), *pc = m.point(c);
+        if (predicates::orient3d(pa, pb, pc, p) != Sign::Zero) return false;
+        for (int drop = 0; drop < 3; ++drop) {
+            const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+            const double qa[2] = {pa[i], pa[j]}, qb[2] = {pb[i], pb[j]}, qc[2] = {pc[i], pc[j]},
+                         qp[2] = {p[i], p[j]};
+            const Sign area = predicates::orient2d(qa, qb, qc);
+            if (area == Sign::Zero) continue;
+            for (const auto& [u, v] : {std::pair{qa, qb}, std::pair{qb, qc}, std::pair{qc, qa}}) {
+                const Sign side = predicates::orient2d(u, v, qp);
+                if (side != Sign::Zero && side != area) return false;
+            }
+            return true;
+        }
+        return false;
+    }
+
+    /// A volume hole or region point on a subface names neither side of its facet (a hole there
+    /// removed both, or nothing): an InputError naming the point and the facet, as the 2D
+    /// generators refuse a hole on a segment.
+    void refuse_points_on_facets(const std::vector<VertIdx>& subfaces,
+                                 const std::vector<std::uint32_t>& owners) const {
+        const auto check = [&](const double* p, const std::string& what) {
+            for (std::size_t t = 0; t + 2 < subfaces.size(); t += 3) {
+                if (!on_subface(p, subfaces[t], subfaces[t + 1], subfaces[t + 2])) continue;
+                throw InputError("boundary recovery: " + what + " (" + format_point(p) +
+                                 ") lies on " + facet_name(owners[t / 3]) +
+                                 ", so it names neither side of it; move it into the region "
+                                 "it is meant for");
+            }
+        };
+        for (std::size_t h = 0; h + 2 < plc_.holes.size(); h += 3)
+            check(&plc_.holes[h], "volume hole point " + std::to_string(h / 3 + plc_.first_index));
+        for (std::size_t r = 0; r < plc_.regions.size(); ++r) {
+            const double p[3] = {plc_.regions[r].x, plc_.regions[r].y, plc_.regions[r].z};
+            check(p, "region point " + std::to_string(r + plc_.first_index));
+        }
+    }
+
+    static std::string format_point(const double* p) {
+        return format_number(p[0]) + ", " + format_number(p[1]) + ", " + format_number(p[2]);
+    }
+
     ConformingMesh3 carve(std::vector<VertIdx> subfaces, std::vector<std::uint32_t> owners) {
+        refuse_points_on_facets(subfaces, owners);
         FaceSet subface_set;
         for (std::size_t t = 0; t < subfaces.size(); t += 3)
             subface_set.insert(sorted3(subfaces[t], subfaces[t + 1], subfaces[t + 2]));
@@ -693,6 +743,14 @@ class Recovery {
         for (TetIdx t = 0; t < count; ++t)
             if (!removed[t]) new_index[t] = kept++;
         counters_.removed_tets = count - kept;
+        if (kept == 0) {
+            throw InputError(
+                "boundary recovery: the domain is empty: " +
+                (plc_.holes.empty()
+                     ? std::string("the facets enclose no volume")
+                     : std::string("the volume hole points remove every region the facets "
+                                   "enclose")));
+        }
         out.mesh.xyz = xyz_;
         out.mesh.tets.reserve(4 * std::size_t{kept});
         out.mesh.neighbors.reserve(4 * std::size_t{kept});
@@ -787,9 +845,10 @@ BoundaryRecovery3Result boundary_recovery_3d_whole_facets(Plc3& plc,
         why = "ran past " + std::to_string(capped.max_steiner_points) + " Steiner points";
     }
     std::vector<std::string> split_warnings = split_nonplanar_facets_3d(plc, true);
-    warnings.push_back("boundary recovery with the facets within rounding of a plane kept "
-                       "whole " +
-                       why + ": those facets are split into their triangles");
+    warnings.push_back(
+        "boundary recovery with the facets within rounding of a plane kept "
+        "whole " +
+        why + ": those facets are split into their triangles");
     warnings.insert(warnings.end(), split_warnings.begin(), split_warnings.end());
     return boundary_recovery_3d(plc, options);
 }
