@@ -12,9 +12,11 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "base/errors.hpp"
 #include "cli/commands.hpp"
+#include "io/plc_format.hpp"
 #include "io/tetgen_format.hpp"
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
@@ -23,6 +25,10 @@
 #include "triangulation/checks/check_conforming_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
 #include "triangulation/mesh/constrained_flags_2d.hpp"
+#include "triangulation/mesh/flip_3d.hpp"
+#include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
+#include "triangulation/recovery_3d/conforming_mesh_from_faces_3d.hpp"
+#include "triangulation/recovery_3d/plc_3d.hpp"
 
 namespace exactmesh::cli {
 
@@ -111,7 +117,92 @@ int run_check_3d(const CheckArguments& arguments) {
     return kExitCheckFailed;
 }
 
+/// Whether `path` is a 3D PLC: .smesh, .off, .stl, or a .poly of dimension 3.
+bool is_plc_3d(const std::string& path) {
+    if (io::has_extension(path, ".smesh") || io::has_extension(path, ".off") ||
+        io::has_extension(path, ".stl"))
+        return true;
+    return io::has_extension(path, ".poly") && io::read_node_dimension(path) == 3;
+}
+
+/// IN.poly (3D), .smesh, .off or .stl against a TetGen .ele with its .node (and .face, the
+/// faces on facets, when it exists) beside it: the exact check that the tetrahedra are a
+/// conforming mesh of the PLC (triangulation/recovery_3d/check_boundary_conformity_3d), after
+/// the PLC is prepared as `exactmesh tetmesh` prepares it and the mesh's segment and facet
+/// vertices are read back (conforming_mesh_from_faces_3d).
+int run_plc_check_3d(const CheckArguments& arguments) {
+    namespace fs = std::filesystem;
+    tri::Plc3 plc = io::plc_from_file(io::read_plc(arguments.node_path));
+    try {
+        tri::prepare_plc_for_meshing_3d(plc);
+    } catch (const InputError& error) {
+        throw InputError(arguments.node_path + ": " + error.what());
+    }
+    fs::path node_path = arguments.ele_path, face_path = arguments.ele_path;
+    node_path.replace_extension(".node");
+    face_path.replace_extension(".face");
+    if (!fs::exists(node_path))
+        throw InputError(node_path.string() +
+                         ": no such file (a mesh's vertices are read from the .node beside "
+                         "its .ele)");
+    const io::TetgenNodeFile nodes = io::read_tetgen_node(node_path);
+    const io::TetgenEleFile ele =
+        io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
+    const auto fail = [&](const std::string& problem) {
+        std::cout << "not ok: " << arguments.ele_path << ": " << problem << '\n';
+        return kExitCheckFailed;
+    };
+    if (nodes.vertex_count() < plc.vertex_count())
+        return fail(node_path.string() + " has " + std::to_string(nodes.vertex_count()) +
+                    " vertices, fewer than the " + std::to_string(plc.vertex_count()) +
+                    " of the input");
+    for (std::size_t i = 0; i < plc.xyz.size(); ++i) {
+        if (nodes.xyz[i] != plc.xyz[i])
+            return fail("input vertex " + std::to_string(i / 3 + plc.first_index) +
+                        " moved or is missing (the mesh's first vertices are the input's)");
+    }
+    tri::Tetrahedralization3 mesh;
+    mesh.xyz = nodes.xyz;
+    mesh.tets = ele.tets;
+    try {
+        tri::link_neighbors_3d(
+            mesh, tri::Check3Numbering{nodes.first_index, ele.first_index, io::kTetgenFileCorners});
+    } catch (const InputError& error) {
+        return fail(error.what());  // an inverted, flat or overlapping tetrahedron
+    }
+    std::vector<tri::VertIdx> faces;
+    if (fs::exists(face_path)) {
+        faces = io::read_tetgen_face(face_path, nodes.first_index, nodes.vertex_count()).faces;
+    } else {
+        // Without a .face, the mesh's boundary faces (a PLC without internal facets).
+        for (std::size_t t = 0; 4 * t < mesh.tets.size(); ++t)
+            for (unsigned k = 0; k < 4; ++k)
+                if (mesh.neighbors[4 * t + k] == tri::kNone)
+                    for (const unsigned c : tri::kFaceVertex[k])
+                        faces.push_back(mesh.tets[4 * t + c]);
+    }
+    const std::uint32_t tets = ele.tet_count();
+    tri::ConformingMeshReading3 reading =
+        tri::conforming_mesh_from_faces_3d(plc, std::move(mesh), faces);
+    if (!reading.problem.empty()) return fail(reading.problem + " (vertices numbered from 0)");
+    const tri::BoundaryConformityReport3 report =
+        tri::check_boundary_conformity_3d(plc, reading.mesh);
+    if (!report.ok) return fail(report.problem + " (vertices numbered from 0)");
+    std::cout << "ok: " << tets << " tetrahedra, exact conforming mesh of the PLC ("
+              << plc.facets.size()
+              << " facets each a union of mesh faces, every segment a chain of edges, no "
+                 "inverted or overlapping tetrahedron)\n";
+    return kExitSuccess;
+}
+
 int run_check(const CheckArguments& arguments) {
+    if (is_plc_3d(arguments.node_path)) {
+        if (arguments.conforming || arguments.convex_hull)
+            throw InputError(
+                "--conforming and --convex-hull are for 2D meshes (a 3D PLC's mesh "
+                "is checked for conformity always)");
+        return run_plc_check_3d(arguments);
+    }
     if (io::has_extension(arguments.node_path, ".poly")) return run_constrained_check(arguments);
     if (arguments.conforming)
         throw InputError("--conforming needs an IN.poly (the domain's segments)");

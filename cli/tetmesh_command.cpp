@@ -139,32 +139,9 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     }
     // The checks' messages name vertices and facets (with their lines); the file is named here.
     try {
-        // A free vertex on a segment or a facet becomes part of it (as Triangle does in 2D).
-        tri::validate_plc_3d_input(plc);
-        // A facet whose corners were rounded off their plane (a rotated box) becomes the
-        // triangles of its projection, as TetGen meshes it; a warning names it.
-        std::vector<std::string> split = tri::split_nonplanar_facets_3d(plc);
-        // A free vertex within rounding of a segment or facet (a point of a rotated box's edge
-        // or facet, rounded off it) becomes part of it, and the facets it joins are split.
-        const tri::FreeVertexEmbedding3 near = tri::attach_free_vertices_near_surface_3d(plc);
-        if (!near.vertices.empty()) {
-            std::string names;
-            for (const tri::VertIdx v : near.vertices)
-                names += (names.empty() ? "" : ", ") +
-                         std::to_string(std::uint64_t{v} + plc.first_index);
-            split.push_back(
-                "free vertices within rounding of the surface (2^-48 of their coordinates) "
-                "made part of it, as if on it: " +
-                names);
-            split.insert(split.end(), near.split_warnings.begin(), near.split_warnings.end());
-        }
-        for (std::string& warning : split) warning = source + ": " + warning;
-        print_warnings(split);
-        tri::embed_free_vertices_3d(plc);
-        // A mesh generator's domain must enclose a volume: an open surface would leave the
-        // flood fill nothing to keep (internal facets, edges in more than two triangles, are
-        // fine).
-        tri::check_surface_closed_3d(plc, tri::validate_plc_3d(plc));
+        std::vector<std::string> warnings = tri::prepare_plc_for_meshing_3d(plc);
+        for (std::string& warning : warnings) warning = source + ": " + warning;
+        print_warnings(warnings);
     } catch (const InputError& error) {
         throw InputError(source + ": " + error.what());
     }

@@ -141,6 +141,36 @@ TetgenEleFile read_tetgen_ele(const std::filesystem::path& path, std::uint32_t v
     return parse_tetgen_ele_lines(lines, vertex_first_index, vertex_count);
 }
 
+TetgenFaceFile read_tetgen_face(const std::filesystem::path& path, std::uint32_t vertex_first_index,
+                                std::uint32_t vertex_count) {
+    static constexpr detail::RecordName kFaces{"face", "faces"};
+    TextLines lines(path);
+    detail::read_header(lines, "<#faces> <boundary marker 0|1>");
+    detail::expect_header_fields(lines, 2, "header", "#faces, boundary marker");
+    const auto& header = lines.fields();
+    const std::uint64_t count = lines.parse_unsigned(header[0], "face count", 4 * kMaxTets);
+    TetgenFaceFile file;
+    if (header.size() > 1) file.has_markers = detail::parse_flag(lines, header[1], "marker flag");
+    const std::uint64_t expected = file.has_markers ? 5 : 4;
+    const std::string names = file.has_markers ? "number, 3 nodes, marker" : "number, 3 nodes";
+    const detail::VertexNumbers nodes(vertex_first_index, vertex_count, "node number", "points");
+    file.faces.reserve(3 * lines.plausible_records(count, 8));
+    for (std::uint64_t i = 0; i < count; ++i) {
+        detail::next_record(lines, i, count, kFaces);
+        expect_field_count(lines, expected, names);
+        const auto& fields = lines.fields();
+        expect_record_number(lines, fields[0], "face", i, file.first_index);
+        for (int k = 1; k <= 3; ++k) file.faces.push_back(nodes.parse(lines, fields[k]));
+        if (file.has_markers) {
+            const std::int64_t marker =
+                lines.parse_signed(fields[4], "boundary marker", INT32_MIN, INT32_MAX);
+            file.markers.push_back(static_cast<std::int32_t>(marker));
+        }
+    }
+    expect_end(lines, count, kFaces);
+    return file;
+}
+
 std::string format_tetgen_node(std::span<const double> xyz, std::uint32_t first_index,
                                std::span<const double> attribute) {
     const std::size_t count = xyz.size() / 3;

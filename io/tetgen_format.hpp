@@ -64,6 +64,23 @@ TetgenNodeFile parse_tetgen_node(std::string_view text, const std::string& file_
 /// @throws FormatError on a missing or malformed header, or a dimension other than 2 and 3.
 unsigned read_node_dimension(const std::filesystem::path& path);
 
+/// A TetGen .face file: faces as 3 node numbers each (0-based after reading) and their markers.
+struct TetgenFaceFile {
+    std::vector<std::uint32_t> faces;  ///< 3·#F corners, in file order
+    std::uint32_t first_index = 0;     ///< number of the first face: 0 or 1
+    bool has_markers = false;
+    std::vector<std::int32_t> markers;  ///< #F boundary markers when has_markers
+
+    std::uint32_t face_count() const { return static_cast<std::uint32_t>(faces.size() / 3); }
+};
+
+/// Reads `<#faces> <boundary marker 0|1>` and `<number> <n1> <n2> <n3> [marker]` lines (what
+/// `exactmesh tetmesh` and TetGen -p write); node numbers must lie in the .node file's numbering
+/// [vertex_first_index, vertex_first_index + vertex_count).
+/// @throws FormatError "file:line: problem" on any malformed input.
+TetgenFaceFile read_tetgen_face(const std::filesystem::path& path, std::uint32_t vertex_first_index,
+                                std::uint32_t vertex_count);
+
 /// Reads `<#tetrahedra> <nodes per tetrahedron 4|10> <region attribute 0|1>` and
 /// `<number> <n1> <n2> <n3> <n4> [6 more nodes] [region]` lines; node numbers must lie in the
 /// .node file's numbering [vertex_first_index, vertex_first_index + vertex_count).

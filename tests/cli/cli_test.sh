@@ -1635,6 +1635,28 @@ tetmesh_octree() {
   [[ ! -e "$work/x.ele" ]] || fail "x.ele written for bad input"
 }
 
+tetmesh_check() {
+  write_cube_poly "$work/cube.poly"
+  # Every generator's mesh of the cube is checked exactly against the PLC: ok, exit 0.
+  local args
+  for args in "--radius-edge 2" "--generator frontal --size 0.3" "--generator octree --size 0.3"; do
+    # shellcheck disable=SC2086
+    run 0 tetmesh "$work/cube.poly" -o "$work/c.ele" $args || return
+    run 0 check "$work/cube.poly" "$work/c.ele" &&
+      grep -Eq '^ok: [0-9]+ tetrahedra, exact conforming mesh of the PLC' "$work/out" ||
+      fail "check cube.poly c.ele ($args): $(cat "$work/out")"
+  done
+  # A tetrahedron left out: its faces are no facet pieces; exit 1 naming the problem.
+  awk 'NR == 1 { print $1 - 1, $2, $3; next } NR == 2 { next } { $1 = $1 - 1; print }' "$work/c.ele" >"$work/d.ele"
+  cp "$work/c.node" "$work/d.node"
+  cp "$work/c.face" "$work/d.face"
+  run 1 check "$work/cube.poly" "$work/d.ele" &&
+    grep -q '^not ok: ' "$work/out" || fail "check of a mesh with a tetrahedron left out: $(cat "$work/out")"
+  # No .node beside the .ele: one clear error.
+  cp "$work/c.ele" "$work/lonely.ele"
+  expect_error 2 'lonely.node: no such file' check "$work/cube.poly" "$work/lonely.ele"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
@@ -1643,7 +1665,7 @@ case "$case_name" in
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
     mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine | tetmesh_regions | \
-    tetmesh_frontal | tetmesh_octree | threads)
+    tetmesh_frontal | tetmesh_octree | tetmesh_check | threads)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

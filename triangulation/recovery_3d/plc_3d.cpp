@@ -838,8 +838,8 @@ double contact_tolerance(const double* p, const double* a, const double* b, cons
     const auto magnitude = [](const double* q) {
         return std::max({std::fabs(q[0]), std::fabs(q[1]), std::fabs(q[2])});
     };
-    const double local = std::max(magnitude(p), std::min({magnitude(a), magnitude(b),
-                                                          magnitude(c)}));
+    const double local =
+        std::max(magnitude(p), std::min({magnitude(a), magnitude(b), magnitude(c)}));
     if (!(local > 0)) return 0;
     return std::ldexp(1.0, std::ilogb(local) - 48);
 }
@@ -876,10 +876,9 @@ VertIdx corner_within_rounding(const Plc3& plc, const VertIdx* ta, const VertIdx
             }
             if (!beside && plane_meets_box(a, b, c, box)) {
                 const int drop = drop_axis(a, b, c);
-                beside = triangle_contains_2d(project_facet_point(a, drop),
-                                              project_facet_point(b, drop),
-                                              project_facet_point(c, drop),
-                                              project_facet_point(p, drop));
+                beside = triangle_contains_2d(
+                    project_facet_point(a, drop), project_facet_point(b, drop),
+                    project_facet_point(c, drop), project_facet_point(p, drop));
             }
             if (beside) {
                 near = to;
@@ -918,8 +917,7 @@ void check_surface_self_intersection_3d(const Plc3& plc, const SurfaceTriangles3
         // Grown by the rounding tolerance (corner_within_rounding), so that triangles within
         // rounding of each other are paired too.
         const VertIdx* tv = &surface.triangles[3 * std::size_t{t}];
-        const double w =
-            near_tolerance({plc.point(tv[0]), plc.point(tv[1]), plc.point(tv[2])});
+        const double w = near_tolerance({plc.point(tv[0]), plc.point(tv[1]), plc.point(tv[2])});
         for (int k = 0; k < 3; ++k) {
             box[k] = std::nextafter(box[k] - w, -std::numeric_limits<double>::infinity());
             box[3 + k] = std::nextafter(box[3 + k] + w, std::numeric_limits<double>::infinity());
@@ -1032,14 +1030,15 @@ void check_surface_self_intersection_3d(const Plc3& plc, const SurfaceTriangles3
                 const VertIdx* near = nullptr;
                 const VertIdx corner = corner_within_rounding(plc, va, vb, near);
                 if (corner != kNone) {
-                    const std::uint32_t f_corner = near == vb ? surface.facets[ta]
-                                                              : surface.facets[tb];
-                    const std::uint32_t f_near = near == vb ? surface.facets[tb]
-                                                            : surface.facets[ta];
+                    const std::uint32_t f_corner =
+                        near == vb ? surface.facets[ta] : surface.facets[tb];
+                    const std::uint32_t f_near =
+                        near == vb ? surface.facets[tb] : surface.facets[ta];
                     fail("self-touching surface: vertex " + names.vertex(corner) + " of " +
                          names.facet(f_corner) + " lies within rounding of triangle " +
                          names.triangle(near) + " of " + names.facet(f_near) +
-                         " (closer than 2^-48 of the coordinates there) without being a corner of it: "
+                         " (closer than 2^-48 of the coordinates there) without being a corner of "
+                         "it: "
                          "the facets touch or overlap as far as doubles tell");
                 }
             }
@@ -1094,6 +1093,33 @@ bool facets_exactly_planar_3d(const Plc3& plc) {
             return false;
     }
     return true;
+}
+
+std::vector<std::string> prepare_plc_for_meshing_3d(Plc3& plc) {
+    // A free vertex on a segment or a facet becomes part of it (as Triangle does in 2D).
+    validate_plc_3d_input(plc);
+    // A facet whose corners were rounded off their plane (a rotated box) becomes the
+    // triangles of its projection, as TetGen meshes it; a warning names it.
+    std::vector<std::string> warnings = split_nonplanar_facets_3d(plc);
+    // A free vertex within rounding of a segment or facet (a point of a rotated box's edge
+    // or facet, rounded off it) becomes part of it, and the facets it joins are split.
+    const FreeVertexEmbedding3 near = attach_free_vertices_near_surface_3d(plc);
+    if (!near.vertices.empty()) {
+        std::string names;
+        for (const VertIdx v : near.vertices)
+            names +=
+                (names.empty() ? "" : ", ") + std::to_string(std::uint64_t{v} + plc.first_index);
+        warnings.push_back(
+            "free vertices within rounding of the surface (2^-48 of their coordinates) made "
+            "part of it, as if on it: " +
+            names);
+        warnings.insert(warnings.end(), near.split_warnings.begin(), near.split_warnings.end());
+    }
+    embed_free_vertices_3d(plc);
+    // A mesh generator's domain must enclose a volume: an open surface would leave the flood
+    // fill nothing to keep (internal facets, edges in more than two triangles, are fine).
+    check_surface_closed_3d(plc, validate_plc_3d(plc));
+    return warnings;
 }
 
 std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc, bool within_rounding_too) {

@@ -123,6 +123,13 @@ std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc, bool within_roundi
 /// @throws InputError as triangulate_facets_3d does for a degenerate polygon.
 bool facets_exactly_planar_3d(const Plc3& plc);
 
+/// The preparation every 3D generator's input gets (`exactmesh tetmesh`), and `exactmesh check`
+/// gives a PLC before checking a mesh of it: validate_plc_3d_input, split_nonplanar_facets_3d,
+/// attach_free_vertices_near_surface_3d, embed_free_vertices_3d, then validate_plc_3d and
+/// check_surface_closed_3d. Returns the warnings (facets split, vertices attached), unprefixed.
+/// @throws InputError as those do.
+std::vector<std::string> prepare_plc_for_meshing_3d(Plc3& plc);
+
 /// validate_plc_3d_input, triangulate_facets_3d and check_surface_self_intersection_3d; returns
 /// the surface triangles. Closedness is checked separately (check_surface_closed_3d).
 /// @throws InputError also when a free vertex lies on the surface (see embed_free_vertices_3d).
