@@ -88,6 +88,16 @@ std::optional<bool> within_rounding_of_segment_filter(const double* w, const dou
     return std::nullopt;
 }
 
+bool within_rounding_of_segment_3d(const double* w, const double* s0, const double* s1) {
+    for (int drop = 0; drop < 3; ++drop) {
+        const int i = (drop + 1) % 3, j = (drop + 2) % 3;  // triangulation's facet projection
+        const double pw[2] = {w[i], w[j]}, p0[2] = {s0[i], s0[j]}, p1[2] = {s1[i], s1[j]};
+        if (p0[0] == p1[0] && p0[1] == p1[1]) continue;
+        if (!within_rounding_of_segment(pw, p0, p1)) return false;
+    }
+    return true;
+}
+
 bool within_rounding_of_segment(const double* w, const double* s0, const double* s1) {
     EM_STAT(within_rounding_of_segment, calls);
     if (const auto r = within_rounding_of_segment_filter(w, s0, s1)) {

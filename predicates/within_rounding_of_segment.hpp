@@ -23,6 +23,11 @@ namespace exactmesh::predicates {
 /// is not subnormal. Coordinates finite.
 bool within_rounding_of_segment(const double* w, const double* s0, const double* s1);
 
+/// The 3D form, as the checks of 3D meshes use it: w is within rounding of the segment
+/// [s0, s1] in each coordinate projection (dropping x, y or z) where the segment is not a
+/// point.
+bool within_rounding_of_segment_3d(const double* w, const double* s0, const double* s1);
+
 /// The long double filter (stage A): the answer when certified, std::nullopt otherwise.
 std::optional<bool> within_rounding_of_segment_filter(const double* w, const double* s0,
                                                       const double* s1);

@@ -52,19 +52,6 @@ std::string name(VertIdx v) {
     return std::to_string(v);
 }
 
-/// Whether vertex w lies within rounding of segment [s0, s1] in every coordinate projection
-/// where the segment is not a single point.
-bool within_rounding_3d(const double* w, const double* s0, const double* s1) {
-    for (int drop = 0; drop < 3; ++drop) {
-        const auto pw = project_facet_point(w, drop);
-        const auto p0 = project_facet_point(s0, drop);
-        const auto p1 = project_facet_point(s1, drop);
-        if (p0 == p1) continue;
-        if (!predicates::within_rounding_of_segment(pw.data(), p0.data(), p1.data())) return false;
-    }
-    return true;
-}
-
 /// The tetrahedra at each vertex of a tetrahedron list, as one array sliced per vertex.
 class VertexTets {
   public:
@@ -168,8 +155,9 @@ std::string check(const Plc3& plc, const ConformingMesh3& cm) {
         const std::uint32_t index = cm.feature_index[v];
         if (cm.vertex_feature[v] == VertexFeature3::Segment) {
             if (index >= segment_count) return "vertex " + name(v) + ": unknown segment";
-            if (!within_rounding_3d(mesh.point(v), mesh.point(cm.segments[2 * index]),
-                                    mesh.point(cm.segments[2 * index + 1])))
+            if (!predicates::within_rounding_of_segment_3d(mesh.point(v),
+                                                           mesh.point(cm.segments[2 * index]),
+                                                           mesh.point(cm.segments[2 * index + 1])))
                 return "segment vertex " + name(v) + " is not within rounding of its segment";
         } else if (cm.vertex_feature[v] == VertexFeature3::Facet) {
             if (index >= plc.facets.size()) return "vertex " + name(v) + ": unknown facet";

@@ -22,19 +22,6 @@ namespace {
 
 using predicates::Sign;
 
-/// Within rounding of segment [s0, s1] in every coordinate projection where it is not a point
-/// (check_boundary_conformity_3d's rule).
-bool within_rounding_3d(const double* w, const double* s0, const double* s1) {
-    for (int drop = 0; drop < 3; ++drop) {
-        const auto pw = project_facet_point(w, drop);
-        const auto p0 = project_facet_point(s0, drop);
-        const auto p1 = project_facet_point(s1, drop);
-        if (p0 == p1) continue;
-        if (!predicates::within_rounding_of_segment(pw.data(), p0.data(), p1.data())) return false;
-    }
-    return true;
-}
-
 /// Whether q's projection lies in the closed triangle (a, b, c)'s projection (exact).
 bool in_projected_triangle(const double* q, const double* a, const double* b, const double* c,
                            int drop) {
@@ -156,8 +143,8 @@ ConformingMeshReading3 conforming_mesh_from_faces_3d(const Plc3& plc, Tetrahedra
             bool near = true;
             for (int k = 0; k < 3 && near; ++k)
                 near = w[k] >= boxes[s].lo[k] - slack && w[k] <= boxes[s].hi[k] + slack;
-            if (near && within_rounding_3d(w, plc.point(cm.segments[2 * s]),
-                                           plc.point(cm.segments[2 * s + 1])))
+            if (near && predicates::within_rounding_of_segment_3d(
+                            w, plc.point(cm.segments[2 * s]), plc.point(cm.segments[2 * s + 1])))
                 near_segments[s].push_back(v);
         }
     }
