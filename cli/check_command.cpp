@@ -229,13 +229,18 @@ void add_check_command(CLI::App& app, int& exit_status) {
     CLI::App* command = app.add_subcommand(
         "check",
         "Exact check that IN.ele is a Delaunay triangulation (a Delaunay tetrahedralization when "
-        "IN.node has "
-        "dimension 3) of the points of IN.node, or a "
-        "constrained Delaunay triangulation of IN.poly (vertices added by `exactmesh cdt` are read "
-        "from the .node beside IN.ele, its constrained edges from the .poly beside it)");
-    command->add_option("node", arguments->node_path, "Input: a Triangle .node or .poly file")
+        "IN.node has dimension 3) of the points of IN.node, or a constrained Delaunay "
+        "triangulation of IN.poly (vertices added by `exactmesh cdt` are read from the .node "
+        "beside IN.ele, its constrained edges from the .poly beside it), or, with a 3D PLC "
+        "(.poly of dimension 3, .smesh, .off, .stl), a conforming tetrahedral mesh of it (the "
+        ".node and .face beside IN.ele: valid tetrahedra, every facet a union of faces, every "
+        "segment a chain of edges, the input's vertices first and unmoved)");
+    command
+        ->add_option("node", arguments->node_path,
+                     "Input: a Triangle .node or .poly file, or a 3D PLC (.poly, .smesh, .off, "
+                     ".stl)")
         ->required()
-        ->type_name("IN.node|IN.poly");
+        ->type_name("IN.node|IN.poly|IN.smesh|IN.off|IN.stl");
     command
         ->add_option("ele", arguments->ele_path,
                      "Triangles: a Triangle .ele file (tetrahedra: a TetGen .ele file)")
