@@ -38,6 +38,22 @@ inline bool collinear_3d(const double* a, const double* b, const double* c) {
     return true;
 }
 
+/// Whether q's projection lies in the closed triangle (a, b, c)'s projection (dropping axis
+/// `drop`), exactly (orient2d); either orientation of the triangle.
+inline bool in_projected_triangle(const double* q, const double* a, const double* b,
+                                  const double* c, int drop) {
+    const auto pq = project_facet_point(q, drop);
+    const std::array<std::array<double, 2>, 3> t{
+        project_facet_point(a, drop), project_facet_point(b, drop), project_facet_point(c, drop)};
+    predicates::Sign sides[3];
+    for (unsigned k = 0; k < 3; ++k)
+        sides[k] = predicates::orient2d(t[k].data(), t[(k + 1) % 3].data(), pq.data());
+    using predicates::Sign;
+    return (sides[0] != Sign::Negative && sides[1] != Sign::Negative &&
+            sides[2] != Sign::Negative) ||
+           (sides[0] != Sign::Positive && sides[1] != Sign::Positive && sides[2] != Sign::Positive);
+}
+
 /// The axis whose projection keeps triangle abc (not collinear) non-degenerate, preferring the
 /// largest normal component. The approximate normal is computed on coordinates scaled by a
 /// power of two (exact; the exponent clamped so that subnormal coordinates cannot scale to

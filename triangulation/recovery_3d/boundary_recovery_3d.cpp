@@ -647,24 +647,12 @@ class Recovery {
     }
 
     /// Whether p lies in the closed subface (a, b, c), exactly: coplanar (orient3d zero) and
-    /// inside in a coordinate projection where the triangle is not flat (orient2d).
+    /// inside it in a coordinate projection where it is not flat (drop_axis).
     bool on_subface(const double* p, VertIdx a, VertIdx b, VertIdx c) const {
         const auto& m = mesh_.mesh;
         const double *pa = m.point(a), *pb = m.point(b), *pc = m.point(c);
-        if (predicates::orient3d(pa, pb, pc, p) != Sign::Zero) return false;
-        for (int drop = 0; drop < 3; ++drop) {
-            const int i = (drop + 1) % 3, j = (drop + 2) % 3;
-            const double qa[2] = {pa[i], pa[j]}, qb[2] = {pb[i], pb[j]}, qc[2] = {pc[i], pc[j]},
-                         qp[2] = {p[i], p[j]};
-            const Sign area = predicates::orient2d(qa, qb, qc);
-            if (area == Sign::Zero) continue;
-            for (const auto& [u, v] : {std::pair{qa, qb}, std::pair{qb, qc}, std::pair{qc, qa}}) {
-                const Sign side = predicates::orient2d(u, v, qp);
-                if (side != Sign::Zero && side != area) return false;
-            }
-            return true;
-        }
-        return false;
+        return predicates::orient3d(pa, pb, pc, p) == Sign::Zero &&
+               in_projected_triangle(p, pa, pb, pc, drop_axis(pa, pb, pc));
     }
 
     /// A volume hole or region point on a subface names neither side of its facet (a hole there
@@ -675,8 +663,8 @@ class Recovery {
         const auto check = [&](const double* p, const std::string& what) {
             for (std::size_t t = 0; t + 2 < subfaces.size(); t += 3) {
                 if (!on_subface(p, subfaces[t], subfaces[t + 1], subfaces[t + 2])) continue;
-                throw InputError("boundary recovery: " + what + " (" + format_point(p) +
-                                 ") lies on " + facet_name(owners[t / 3]) +
+                throw InputError("boundary recovery: " + what + " " + format_point(p, 3) +
+                                 " lies on " + facet_name(owners[t / 3]) +
                                  ", so it names neither side of it; move it into the region "
                                  "it is meant for");
             }
@@ -687,10 +675,6 @@ class Recovery {
             const double p[3] = {plc_.regions[r].x, plc_.regions[r].y, plc_.regions[r].z};
             check(p, "region point " + std::to_string(r + plc_.first_index));
         }
-    }
-
-    static std::string format_point(const double* p) {
-        return format_number(p[0]) + ", " + format_number(p[1]) + ", " + format_number(p[2]);
     }
 
     ConformingMesh3 carve(std::vector<VertIdx> subfaces, std::vector<std::uint32_t> owners) {

@@ -162,21 +162,12 @@ std::string check(const Plc3& plc, const ConformingMesh3& cm) {
         } else if (cm.vertex_feature[v] == VertexFeature3::Facet) {
             if (index >= plc.facets.size()) return "vertex " + name(v) + ": unknown facet";
             const int drop = planes[index].drop;
-            const auto q = project_facet_point(mesh.point(v), drop);
             bool inside = false;
             for (std::uint32_t t = 0; t < input_triangles.triangle_count() && !inside; ++t) {
                 if (input_triangles.facets[t] != index) continue;
                 const VertIdx* tri = &input_triangles.triangles[3 * std::size_t{t}];
-                Sign sides[3];
-                for (unsigned k = 0; k < 3; ++k) {
-                    const auto a = project_facet_point(plc.point(tri[k]), drop);
-                    const auto b = project_facet_point(plc.point(tri[(k + 1) % 3]), drop);
-                    sides[k] = predicates::orient2d(a.data(), b.data(), q.data());
-                }
-                inside = (sides[0] != Sign::Negative && sides[1] != Sign::Negative &&
-                          sides[2] != Sign::Negative) ||
-                         (sides[0] != Sign::Positive && sides[1] != Sign::Positive &&
-                          sides[2] != Sign::Positive);
+                inside = in_projected_triangle(mesh.point(v), plc.point(tri[0]), plc.point(tri[1]),
+                                               plc.point(tri[2]), drop);
             }
             if (!inside)
                 return "facet vertex " + name(v) + "'s projection lies outside facet " +

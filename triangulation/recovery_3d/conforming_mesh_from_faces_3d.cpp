@@ -22,20 +22,6 @@ namespace {
 
 using predicates::Sign;
 
-/// Whether q's projection lies in the closed triangle (a, b, c)'s projection (exact).
-bool in_projected_triangle(const double* q, const double* a, const double* b, const double* c,
-                           int drop) {
-    const auto pq = project_facet_point(q, drop);
-    const std::array<std::array<double, 2>, 3> t{
-        project_facet_point(a, drop), project_facet_point(b, drop), project_facet_point(c, drop)};
-    Sign sides[3];
-    for (unsigned k = 0; k < 3; ++k)
-        sides[k] = predicates::orient2d(t[k].data(), t[(k + 1) % 3].data(), pq.data());
-    return (sides[0] != Sign::Negative && sides[1] != Sign::Negative &&
-            sides[2] != Sign::Negative) ||
-           (sides[0] != Sign::Positive && sides[1] != Sign::Positive && sides[2] != Sign::Positive);
-}
-
 /// The distance from w to the line through a and b, in doubles on differences scaled by a
 /// power of two (a reading of which segment a point is on, not a decision of the check).
 double line_distance(const double* w, const double* a, const double* b) {
