@@ -923,6 +923,10 @@ class RestrictedDelaunay3 {
                 }
             }
         }
+        // The segment p splits, if it does: a subsegment of it on a cavity's boundary would make
+        // a piece of three points of one line (see below).
+        const std::uint32_t* split_segment =
+            split.edge == ~0ull ? nullptr : subsegments_.find(split.edge);
         while (true) {
             pieces.clear();
             split.exempt.clear();
@@ -942,10 +946,19 @@ class RestrictedDelaunay3 {
                             subfaces_.at(other).facet == f.facet)
                             inner = true;
                     }
+                    // A subsegment of the segment p splits cannot bound a piece: p on that
+                    // segment's line is exactly inside no circumcircle through the two ends of
+                    // another of its pieces (the line meets the circle there only), so a subface
+                    // grown across it came from p's rounding off the line. Its piece would be
+                    // three points of one line, rounded apart (a needle beside a subsegment
+                    // 1e-12 long whose fan then left a segment vertex out of the other facet).
+                    const std::uint32_t* on_segment =
+                        split_segment == nullptr ? nullptr : subsegments_.find(key);
                     if (inner) {
                         split.exempt.insert(key);
-                    } else if (triangulation::projected_orient(point(x), point(y), p, drop) !=
-                               orientation) {
+                    } else if ((on_segment != nullptr && *on_segment == *split_segment) ||
+                               triangulation::projected_orient(point(x), point(y), p, drop) !=
+                                   orientation) {
                         bad = i;
                         break;
                     } else {
