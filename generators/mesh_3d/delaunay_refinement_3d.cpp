@@ -317,7 +317,10 @@ DelaunayRefinement3Result delaunay_refinement_3d(const Plc3& plc, ConformingMesh
     }
     refuse_volume_bound_far_over_budget(recovered, options);
     const std::uint64_t budget = steiner_budget_3d(recovered, options.max_steiner_points);
-    refuse_gaps_far_over_budget_3d(plc, recovered, budget, "delaunay refinement 3d", 1.0);
+    refuse_gaps_far_over_budget_3d(plc, recovered, budget, "delaunay refinement 3d",
+                                   kRefinementGapMargin,
+                                   "refinement makes up to 2.3 times the estimate between "
+                                   "parallel walls");
     Refinement refinement(plc, std::move(recovered), options, budget);
     return refinement.run();
 }

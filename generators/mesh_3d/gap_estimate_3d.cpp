@@ -262,7 +262,8 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc, const triangulation::ConformingMes
 
 void refuse_gaps_far_over_budget_3d(const Plc3& plc,
                                     const triangulation::ConformingMesh3& recovered,
-                                    std::uint64_t budget, const char* who, double margin) {
+                                    std::uint64_t budget, const char* who, double margin,
+                                    const char* margin_reason) {
     const double limit = margin * static_cast<double>(budget);
     const GapEstimate3 estimate = gap_estimate_3d(plc, &recovered, limit);
     if (!(estimate.points > limit)) return;
@@ -273,7 +274,9 @@ void refuse_gaps_far_over_budget_3d(const Plc3& plc,
                      "for about " +
                      format_approximate(estimate.points, 3) +
                      " points (the surface's area over 4 f^2, f the distance to the nearest such "
-                     "part); widen the gap or raise the budget");
+                     "part; refused above " +
+                     format_approximate(margin, 3) + " times the budget: " + margin_reason +
+                     "); widen the gap or raise the budget");
 }
 
 }  // namespace exactmesh::generators
