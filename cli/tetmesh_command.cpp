@@ -257,6 +257,8 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         });
     });
     const tri::ConformingMesh3& conforming = result.recovery.mesh;
+    recovery_warnings.insert(recovery_warnings.end(), result.recovery.warnings.begin(),
+                             result.recovery.warnings.end());
     for (std::string& warning : recovery_warnings) warning = source + ": " + warning;
     print_warnings(recovery_warnings);
 

@@ -411,3 +411,29 @@ TEST(Issue15, issue_15_free_vertices_beside_a_turned_edge_settle) {
         }
     }
 }
+
+TEST(Issue15, issue_15_points_outside_the_domain_are_named_in_warnings) {
+    // A free vertex, a volume hole point and a region point outside the unit cube were dropped
+    // without a word (TetGen ignores them too); each is now named in a warning, and the mesh
+    // is the cube's alone. A hole point inside stays silent.
+    tri::Plc3 plc = tri::box(1, 1, 1);
+    plc.first_index = 1;
+    plc.xyz.insert(plc.xyz.end(), {2, 2, 2});
+    plc.holes = {3, 3, 3};
+    plc.regions.push_back({0.5, 0.5, 0.5, 7, 0});
+    plc.regions.push_back({-1, 0.5, 0.5, 8, 0});
+    const tri::BoundaryRecovery3Result recovered = tri::boundary_recovery_3d(plc);
+    ASSERT_EQ(recovered.warnings.size(), 3u);
+    EXPECT_EQ(recovered.warnings[0], "volume hole point 1 (3, 3, 3) lies outside the domain: ignored");
+    EXPECT_EQ(recovered.warnings[1],
+              "region point 2 (-1, 0.5, 0.5) lies outside the domain or in a hole: ignored");
+    EXPECT_EQ(recovered.warnings[2],
+              "input vertices outside the domain or in a hole, left out of the mesh (kept in its "
+              "vertex list): 9");
+    EXPECT_TRUE(tri::check_boundary_conformity_3d(plc, recovered.mesh).ok);
+    for (const double attribute : recovered.mesh.tet_attributes) EXPECT_EQ(attribute, 7.0);
+    plc.xyz.resize(3 * 8);
+    plc.holes.clear();
+    plc.regions.pop_back();
+    EXPECT_TRUE(tri::boundary_recovery_3d(plc).warnings.empty());
+}

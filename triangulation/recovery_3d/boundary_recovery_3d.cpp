@@ -118,6 +118,7 @@ class Recovery {
     std::vector<FacetPlane> planes_;
     std::uint64_t budget_ = 0;
     BoundaryRecovery3Counters counters_;
+    std::vector<std::string> warnings_;  ///< carve's: input points the domain leaves unused
 
     Delaunay3Result mesh_;
     std::unordered_set<std::uint64_t> edges_;
@@ -695,15 +696,35 @@ class Recovery {
                     seeds.push_back(t);
             }
         }
+        flood(seeds, subface_set, removed, 1);
+        // Hole points after the outside: one there (or beyond the hull) changes nothing and is
+        // named in a warning, as TetGen ignores it.
+        seeds.clear();
         for (std::size_t h = 0; h + 2 < plc_.holes.size(); h += 3) {
             const TetIdx t = locate(&plc_.holes[h]);
-            if (t != kNone) seeds.push_back(t);
+            if (t != kNone && removed[t] == 0) {
+                seeds.push_back(t);
+            } else {
+                warnings_.push_back("volume hole point " +
+                                    std::to_string(h / 3 + plc_.first_index) + " " +
+                                    format_point(&plc_.holes[h], 3) +
+                                    " lies outside the domain: ignored");
+            }
         }
         flood(seeds, subface_set, removed, 1);
         // Region attributes and volume bounds by the same flood (a later region point in the
         // same region overrides an earlier one, as TetGen does).
         std::vector<double> attributes;
         std::vector<double> max_volumes;
+        for (std::size_t r = 0; r < plc_.regions.size(); ++r) {
+            const double p[3] = {plc_.regions[r].x, plc_.regions[r].y, plc_.regions[r].z};
+            const TetIdx t = locate(p);
+            if (t == kNone || removed[t] != 0) {
+                warnings_.push_back("region point " + std::to_string(r + plc_.first_index) + " " +
+                                    format_point(p, 3) +
+                                    " lies outside the domain or in a hole: ignored");
+            }
+        }
         if (!plc_.regions.empty()) {
             attributes.assign(count, 0.0);
             const bool bounded =
@@ -748,6 +769,24 @@ class Recovery {
             if (!attributes.empty()) out.tet_attributes.push_back(attributes[t]);
             if (!max_volumes.empty()) out.tet_max_volume.push_back(max_volumes[t]);
         }
+        // Input vertices in no kept tetrahedron: free vertices outside the domain or in a hole.
+        std::vector<std::uint8_t> used(plc_.vertex_count(), 0);
+        for (const VertIdx v : out.mesh.tets)
+            if (v < used.size()) used[v] = 1;
+        std::string unused;
+        std::size_t unused_count = 0;
+        for (VertIdx v = 0; v < used.size(); ++v) {
+            if (used[v] != 0) continue;
+            if (++unused_count <= 10)
+                unused += (unused.empty() ? "" : ", ") + std::to_string(v + plc_.first_index);
+        }
+        if (unused_count != 0) {
+            warnings_.push_back(
+                "input vertices outside the domain or in a hole, left out of the mesh (kept in "
+                "its vertex list): " +
+                unused +
+                (unused_count > 10 ? ", ... (" + std::to_string(unused_count) + " in all)" : ""));
+        }
         out.input_vertex_count = plc_.vertex_count();
         out.vertex_feature = feature_;
         out.feature_index = feature_index_;
@@ -773,6 +812,7 @@ BoundaryRecovery3Result Recovery::run() {
     BoundaryRecovery3Result result;
     result.mesh = carve(std::move(subfaces), std::move(owners));
     result.counters = counters_;
+    result.warnings = std::move(warnings_);
     return result;
 }
 

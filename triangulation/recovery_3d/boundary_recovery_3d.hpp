@@ -62,6 +62,10 @@ static_assert(counter_table_complete(kBoundaryRecovery3CounterNames));
 struct BoundaryRecovery3Result {
     ConformingMesh3 mesh;
     BoundaryRecovery3Counters counters;
+    /// Input points the domain leaves unused, one line each: hole and region points outside
+    /// the domain (or a region point in a hole), input vertices outside it or in a hole (TetGen
+    /// ignores them silently).
+    std::vector<std::string> warnings;
 };
 
 /// The concentric-shell split parameter of segment p -> q [Ruppert95 §4, Shewchuk97 §3.4]: the
