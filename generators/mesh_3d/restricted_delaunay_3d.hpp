@@ -170,8 +170,8 @@ class RestrictedDelaunay3 {
     std::unordered_map<VertIdx, std::vector<TetIdx>> other_pieces_;
     std::vector<double> parameter_;
     KeyMap64<std::uint32_t> subsegments_;
-    std::unordered_map<Key3, Subface, Key3Hash> subfaces_;
-    std::unordered_multimap<std::uint64_t, Key3> edge_subfaces_;
+    Key3Map<Subface> subfaces_;
+    EdgeSubfaces edge_subfaces_;
     std::vector<triangulation::FacetPlane> planes_;
     std::vector<std::vector<std::uint32_t>> vertex_segments_;
     /// Facets meeting at a segment at below 60 degrees: their encroachment of each other (and of
@@ -203,26 +203,18 @@ class RestrictedDelaunay3 {
         const Key3 key = sorted3(s.oriented[0], s.oriented[1], s.oriented[2]);
         subfaces_.emplace(key, s);
         for (unsigned i = 0; i < 3; ++i)
-            edge_subfaces_.emplace(edge_key(key[i], key[(i + 1) % 3]), key);
+            edge_subfaces_.add(edge_key(key[i], key[(i + 1) % 3]), key[(i + 2) % 3]);
     }
 
     void remove_subface(const Key3& key) {
         subfaces_.erase(key);
-        for (unsigned i = 0; i < 3; ++i) {
-            const auto range = edge_subfaces_.equal_range(edge_key(key[i], key[(i + 1) % 3]));
-            for (auto it = range.first; it != range.second; ++it) {
-                if (it->second == key) {
-                    edge_subfaces_.erase(it);
-                    break;
-                }
-            }
-        }
+        for (unsigned i = 0; i < 3; ++i)
+            edge_subfaces_.remove(edge_key(key[i], key[(i + 1) % 3]), key[(i + 2) % 3]);
     }
 
     std::vector<Key3> subfaces_on_edge(VertIdx a, VertIdx b) const {
         std::vector<Key3> out;
-        const auto range = edge_subfaces_.equal_range(edge_key(a, b));
-        for (auto it = range.first; it != range.second; ++it) out.push_back(it->second);
+        edge_subfaces_.for_each(edge_key(a, b), [&](VertIdx c) { out.push_back(sorted3(a, b, c)); });
         return out;
     }
 
@@ -630,7 +622,7 @@ class RestrictedDelaunay3 {
                 const std::uint64_t key = edge_key(a, b);
                 if (key == split.edge || split.exempt.count(key) != 0) continue;
                 const bool kept_edge =
-                    subsegments_.count(key) != 0 || edge_subfaces_.count(key) != 0;
+                    subsegments_.count(key) != 0 || edge_subfaces_.contains(key);
                 if (kept_edge && !boundary_edges.contains(key)) return removable(t);
             }
         }
@@ -1006,9 +998,9 @@ class RestrictedDelaunay3 {
     /// Splits subface `key` (if still one) at its circumcentre, or the subsegments that point
     /// encroaches or lies beyond. Returns whether a point was inserted.
     bool split_subface(const Key3& key) {
-        const auto found = subfaces_.find(key);
-        if (found == subfaces_.end()) return false;
-        const Subface face = found->second;
+        const Subface* found = subfaces_.find(key);
+        if (found == nullptr) return false;
+        const Subface face = *found;
         const int drop = planes_[face.facet].drop;
         const std::array<double, 3> c = predicates::triangle_circumcenter_3d(
             point(face.oriented[0]), point(face.oriented[1]), point(face.oriented[2]));
@@ -1234,7 +1226,7 @@ class RestrictedDelaunay3 {
                                       {static_cast<VertIdx>(key >> 32), static_cast<VertIdx>(key)});
             result.subsegment_segment.push_back(segment);
         }
-        std::vector<std::pair<Key3, Subface>> subfaces(subfaces_.begin(), subfaces_.end());
+        std::vector<std::pair<Key3, Subface>> subfaces = subfaces_.entries();
         std::sort(subfaces.begin(), subfaces.end(),
                   [](const auto& x, const auto& y) { return x.first < y.first; });
         for (const auto& [key, face] : subfaces) {
