@@ -642,9 +642,27 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
         if (next_to_removed) continue;
         const VertIdx* s0 = &conforming.subfaces[3 * fold.subs[0]];
         const VertIdx* s1 = &conforming.subfaces[3 * fold.subs[1]];
-        std::array<std::array<VertIdx, 3>, 2> fresh{{{a, c, d}, {b, c, d}}};
-        // Each new subface's corner order is chosen on the first projection where the old two
-        // agree; every such projection must then agree with it.
+        // The new subfaces keep the quadrilateral's edges as the old ones direct them: the one
+        // at corner p (a or b) runs p -> d when the old subface holding p and d does, so its
+        // corner order is fixed by the old ones, not by the geometry. Every coordinate
+        // projection where the old two agree strictly must then give both new ones that same
+        // strict orientation: a quadrilateral not convex there (reflex at a or b) turns one of
+        // them over. (Choosing each new subface's order to match the first such projection
+        // matched it by construction: a fold removed across a reflex corner overlapped the
+        // facet's next subface, a directed edge in two subfaces, and `tetmesh` stopped with an
+        // internal error on a turned cube with free vertices beside an edge, frontal at 0.1.)
+        const VertIdx* with_d = std::find(s0, s0 + 3, d) != s0 + 3 ? s0 : s1;
+        const auto runs = [](const VertIdx* f, VertIdx x, VertIdx y) {
+            for (unsigned k = 0; k < 3; ++k)
+                if (f[k] == x && f[(k + 1) % 3] == y) return true;
+            return false;
+        };
+        std::array<std::array<VertIdx, 3>, 2> fresh;
+        for (unsigned i = 0; i < 2; ++i) {
+            const VertIdx p = i == 0 ? a : b;
+            fresh[i] = runs(with_d, p, d) ? std::array<VertIdx, 3>{p, d, c}
+                                          : std::array<VertIdx, 3>{p, c, d};
+        }
         bool oriented = false, ok = true;
         for (int drop = 0; drop < 3 && ok; ++drop) {
             const Sign o0 =
@@ -652,13 +670,9 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
             const Sign o1 =
                 tri::projected_orient(m.point(s1[0]), m.point(s1[1]), m.point(s1[2]), drop);
             if (o0 == Sign::Zero || o0 != o1) continue;
-            for (auto& f : fresh) {
-                Sign o = tri::projected_orient(m.point(f[0]), m.point(f[1]), m.point(f[2]), drop);
-                if (!oriented && o != Sign::Zero && o != o0) {
-                    std::swap(f[1], f[2]);
-                    o = o0;
-                }
-                ok = ok && o == o0;
+            for (const auto& f : fresh) {
+                ok = ok && tri::projected_orient(m.point(f[0]), m.point(f[1]), m.point(f[2]),
+                                                 drop) == o0;
             }
             oriented = true;
         }

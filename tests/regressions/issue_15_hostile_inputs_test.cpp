@@ -15,6 +15,7 @@
 #include "base/errors.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
 #include "generators/mesh_3d/delaunay_refinement_3d.hpp"
+#include "generators/mesh_3d/frontal_delaunay_3d.hpp"
 #include "generators/mesh_3d/sliver_removal_3d.hpp"
 #include "io/plc_format.hpp"
 #include "tests/support/error_message.hpp"
@@ -436,4 +437,32 @@ TEST(Issue15, issue_15_points_outside_the_domain_are_named_in_warnings) {
     plc.holes.clear();
     plc.regions.pop_back();
     EXPECT_TRUE(tri::boundary_recovery_3d(plc).warnings.empty());
+}
+
+TEST(Issue15, issue_15_boundary_folds_keep_the_facets_tiled) {
+    // tests/data/hostile_3d/rotated_cube_free_vertices_boundary_folds.poly (a hostile-input
+    // campaign's free.44): a turned cube with free vertices beside an edge, in a row, at a
+    // corner and within rounding of facets. Frontal insertion at size 0.1 leaves about 88
+    // folds, tetrahedra whose two boundary faces are subfaces of one facet; sliver removal
+    // removes each by turning the facet's quadrilateral to its other diagonal. The new
+    // subfaces' corner order had been chosen to match the old ones' projected orientation, which
+    // made the convexity test pass always: a fold across a reflex corner overlapped the next
+    // subface (a directed edge in two subfaces) and `tetmesh` stopped with an internal error.
+    // The order now follows the quadrilateral's edges, and a reflex corner keeps its fold.
+    for (const int exponent : {0, 300, -300}) {
+        std::vector<tri::VertIdx> attached;
+        const tri::Plc3 plc = rotated_cube("rotated_cube_free_vertices_boundary_folds.poly",
+                                           exponent, attached, "hostile_3d");
+        gen::FrontalDelaunay3Options options;
+        options.size = gen::SizeFunction3::uniform(std::ldexp(0.1, exponent));
+        gen::FrontalDelaunay3Result meshed =
+            gen::frontal_delaunay_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
+        ASSERT_TRUE(tri::check_boundary_conformity_3d(plc, meshed.mesh).ok) << exponent;
+        const gen::SliverRemoval3Result improved =
+            gen::sliver_removal_3d(std::move(meshed.mesh), gen::SliverRemoval3Options{});
+        EXPECT_GT(improved.counters.folds_removed, 50u) << exponent;
+        const tri::BoundaryConformityReport3 report =
+            tri::check_boundary_conformity_3d(plc, improved.mesh);
+        EXPECT_TRUE(report.ok) << exponent << " " << report.problem;
+    }
 }
