@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <map>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -138,30 +137,15 @@ class Recovery {
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xyz_.size() / 3); }
 
     void collect_segments() {
-        std::map<std::uint64_t, std::uint32_t> index;
-        facet_segments_.resize(plc_.facets.size());
+        PlcSegments3 segments = plc_segments_3d(plc_);
+        segments_ = std::move(segments.ends);
+        facet_segments_ = std::move(segments.segments_of_facet);
         vertex_segments_.resize(plc_.vertex_count());
-        for (std::uint32_t f = 0; f < plc_.facets.size(); ++f) {
-            for (const auto& polygon : plc_.facets[f].polygons) {
-                const std::size_t n = polygon.size();
-                if (n < 2) continue;
-                const std::size_t edges = n == 2 ? 1 : n;
-                for (std::size_t k = 0; k < edges; ++k) {
-                    VertIdx a = polygon[k], b = polygon[(k + 1) % n];
-                    if (a > b) std::swap(a, b);
-                    const auto [it, added] =
-                        index.emplace(edge_key(a, b), static_cast<std::uint32_t>(segments_.size()));
-                    if (added) {
-                        segments_.push_back({a, b});
-                        subs_.push_back({a, b, it->second});
-                        vertex_segments_[a].push_back(it->second);
-                        vertex_segments_[b].push_back(it->second);
-                    }
-                    auto& list = facet_segments_[f];
-                    if (std::find(list.begin(), list.end(), it->second) == list.end())
-                        list.push_back(it->second);
-                }
-            }
+        for (std::uint32_t s = 0; s < segments_.size(); ++s) {
+            const auto [a, b] = segments_[s];
+            subs_.push_back({a, b, s});
+            vertex_segments_[a].push_back(s);
+            vertex_segments_[b].push_back(s);
         }
         counters_.segments = segments_.size();
     }

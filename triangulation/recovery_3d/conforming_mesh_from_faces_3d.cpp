@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,29 +65,18 @@ ConformingMeshReading3 conforming_mesh_from_faces_3d(const Plc3& plc, Tetrahedra
     cm.feature_index.assign(n, kNone);
     for (VertIdx v = 0; v < std::min(n, inputs); ++v) cm.vertex_feature[v] = VertexFeature3::Input;
 
-    // Segments as boundary recovery numbers them, and the facets holding each segment and each
-    // input vertex.
-    std::map<std::uint64_t, std::uint32_t> segment_index;
-    std::vector<std::vector<std::uint32_t>> facets_of_segment, facets_of_vertex(inputs);
-    const auto add_unique = [](std::vector<std::uint32_t>& list, std::uint32_t value) {
-        if (std::find(list.begin(), list.end(), value) == list.end()) list.push_back(value);
-    };
+    // Segments as boundary recovery numbers them (plc_segments_3d), the facets holding each
+    // segment and each input vertex.
+    PlcSegments3 segments = plc_segments_3d(plc);
+    for (const auto& [a, b] : segments.ends) cm.segments.insert(cm.segments.end(), {a, b});
+    const std::vector<std::vector<std::uint32_t>>& facets_of_segment = segments.facets_of_segment;
+    std::vector<std::vector<std::uint32_t>> facets_of_vertex(inputs);
     for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
         for (const auto& polygon : plc.facets[f].polygons) {
-            for (const VertIdx v : polygon) add_unique(facets_of_vertex[v], f);
-            const std::size_t m = polygon.size();
-            if (m < 2) continue;
-            for (std::size_t k = 0; k < (m == 2 ? 1 : m); ++k) {
-                VertIdx a = polygon[k], b = polygon[(k + 1) % m];
-                if (a > b) std::swap(a, b);
-                const auto [it, added] =
-                    segment_index.emplace((std::uint64_t{a} << 32) | b,
-                                          static_cast<std::uint32_t>(cm.segments.size() / 2));
-                if (added) {
-                    cm.segments.insert(cm.segments.end(), {a, b});
-                    facets_of_segment.emplace_back();
-                }
-                add_unique(facets_of_segment[it->second], f);
+            for (const VertIdx v : polygon) {
+                if (std::find(facets_of_vertex[v].begin(), facets_of_vertex[v].end(), f) ==
+                    facets_of_vertex[v].end())
+                    facets_of_vertex[v].push_back(f);
             }
         }
     }

@@ -1184,4 +1184,32 @@ SurfaceTriangles3 validate_plc_3d(const Plc3& plc) {
     return surface;
 }
 
+PlcSegments3 plc_segments_3d(const Plc3& plc) {
+    PlcSegments3 out;
+    std::map<std::uint64_t, std::uint32_t> index;
+    out.segments_of_facet.resize(plc.facets.size());
+    const auto add_unique = [](std::vector<std::uint32_t>& list, std::uint32_t value) {
+        if (std::find(list.begin(), list.end(), value) == list.end()) list.push_back(value);
+    };
+    for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
+        for (const auto& polygon : plc.facets[f].polygons) {
+            const std::size_t n = polygon.size();
+            if (n < 2) continue;
+            for (std::size_t k = 0; k < (n == 2 ? 1 : n); ++k) {
+                VertIdx a = polygon[k], b = polygon[(k + 1) % n];
+                if (a > b) std::swap(a, b);
+                const auto [it, added] = index.emplace((std::uint64_t{a} << 32) | b,
+                                                       static_cast<std::uint32_t>(out.ends.size()));
+                if (added) {
+                    out.ends.push_back({a, b});
+                    out.facets_of_segment.emplace_back();
+                }
+                add_unique(out.facets_of_segment[it->second], f);
+                add_unique(out.segments_of_facet[f], it->second);
+            }
+        }
+    }
+    return out;
+}
+
 }  // namespace exactmesh::triangulation

@@ -12,6 +12,7 @@
 // is exact because dropping a coordinate is): scaling every coordinate by 2^k changes nothing.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -134,5 +135,16 @@ std::vector<std::string> prepare_plc_for_meshing_3d(Plc3& plc);
 /// the surface triangles. Closedness is checked separately (check_surface_closed_3d).
 /// @throws InputError also when a free vertex lies on the surface (see embed_free_vertices_3d).
 SurfaceTriangles3 validate_plc_3d(const Plc3& plc);
+
+/// The PLC's segments as boundary recovery, and everything built on its result (the
+/// ConformingMesh3's `segments` and `feature_index`), numbers them: each polygon edge of each
+/// facet (a polygon of two vertices is one segment) in facet and polygon order, first
+/// occurrence first, its ends sorted.
+struct PlcSegments3 {
+    std::vector<std::array<VertIdx, 2>> ends;
+    std::vector<std::vector<std::uint32_t>> facets_of_segment;  ///< facets holding it, in order
+    std::vector<std::vector<std::uint32_t>> segments_of_facet;  ///< in order of first meeting
+};
+PlcSegments3 plc_segments_3d(const Plc3& plc);
 
 }  // namespace exactmesh::triangulation
