@@ -10,11 +10,13 @@
 #include <memory>
 #include <numeric>
 #include <sstream>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "base/errors.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
+#include "generators/boundary/narrow_wedges_2d.hpp"
 #include "predicates/power_of_two.hpp"
 
 namespace exactmesh::generators {
@@ -187,6 +189,32 @@ SizeFunction graded_to_fine_features(const MeshDomain2& domain_of, const SizeFun
     std::vector<double> feature = spacing.shortest;
     std::vector<std::uint8_t> on_segment(n, 0);
     for (const tri::VertIdx v : domain.pieces) on_segment[v] = 1;
+    // A piece across a narrow wedge from v (narrow_wedges_2d: v on the wedge's other segment) is
+    // no feature of v: the generators leave such wedges unresolved, and a fan's segments 1e-9
+    // radians apart graded the size to 1e-9 at their ends (10^7 triangles asked for).
+    std::vector<std::array<tri::VertIdx, 2>> ends(domain_of.pslg().segments.size() / 2);
+    for (std::size_t s = 0; s < ends.size(); ++s)
+        ends[s] = {domain_of.pslg().segments[2 * s], domain_of.pslg().segments[2 * s + 1]};
+    const std::vector<std::uint64_t> narrow = narrow_wedges_2d(domain_of.pslg().xy, ends);
+    std::unordered_map<std::uint64_t, std::uint32_t> segment_of_piece;
+    std::vector<std::vector<std::uint32_t>> segments_at(narrow.empty() ? 0 : n);
+    const auto edge_key = [](tri::VertIdx a, tri::VertIdx b) {
+        return a < b ? std::uint64_t{a} << 32 | b : std::uint64_t{b} << 32 | a;
+    };
+    for (std::size_t p = 0; !narrow.empty() && 2 * p + 1 < domain.pieces.size(); ++p) {
+        const tri::VertIdx a = domain.pieces[2 * p], b = domain.pieces[2 * p + 1];
+        const std::uint32_t segment = domain.piece_segment[p];
+        segment_of_piece.emplace(edge_key(a, b), segment);
+        for (const tri::VertIdx v : {a, b}) segments_at[v].push_back(segment);
+    }
+    const auto across_narrow_wedge = [&](tri::VertIdx v, tri::VertIdx q, tri::VertIdx r) {
+        if (narrow.empty()) return false;
+        const auto piece = segment_of_piece.find(edge_key(q, r));
+        if (piece == segment_of_piece.end()) return false;
+        for (const std::uint32_t s : segments_at[v])
+            if (narrow_wedge_pair(narrow, s, piece->second)) return true;
+        return false;
+    };
     const bool flagged = !mesh.constrained.empty();
     for (std::size_t t = 0; flagged && 3 * t < mesh.triangles.size(); ++t) {
         for (std::size_t k = 0; k < 3; ++k) {
@@ -195,6 +223,7 @@ SizeFunction graded_to_fine_features(const MeshDomain2& domain_of, const SizeFun
             const tri::VertIdx q = mesh.triangles[3 * t + k];
             const tri::VertIdx r = mesh.triangles[3 * t + (k + 1) % 3];
             const tri::VertIdx v = mesh.triangles[3 * t + (k + 2) % 3];
+            if (across_narrow_wedge(v, q, r)) continue;
             feature[v] = std::min(
                 feature[v], point_segment_distance(mesh.point(v), mesh.point(q), mesh.point(r)));
         }

@@ -22,6 +22,7 @@
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
+#include "generators/boundary/narrow_wedges_2d.hpp"
 #include "generators/mesh_2d/domain_mesh_2d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/orient2d.hpp"
@@ -237,6 +238,7 @@ class QuadtreeMesher {
     std::vector<std::uint8_t> bordering_;  // per boundary piece: the domain on a side
     std::vector<VertIdx> free_vertices_;   // isolated input vertices inside the domain
     std::vector<Obstacle> obstacles_;
+    std::vector<std::uint64_t> narrow_pairs_;  ///< narrow_wedges_2d of the input segments
     // Per leaf (indexed by node), after distribute(): its obstacles in leaf_obstacles_.
     std::vector<std::uint32_t> leaf_begin_, leaf_end_, leaf_obstacles_;
     std::vector<std::uint8_t> kept_;
@@ -285,6 +287,10 @@ Obstacle QuadtreeMesher::obstacle(VertIdx a, VertIdx b, const std::vector<double
 void QuadtreeMesher::collect_obstacles(const std::vector<double>& chords_xy,
                                        const std::vector<VertIdx>& chords) {
     obstacles_.clear();
+    std::vector<std::array<VertIdx, 2>> ends(boundary_.input_segments.size() / 2);
+    for (std::size_t s = 0; s < ends.size(); ++s)
+        ends[s] = {boundary_.input_segments[2 * s], boundary_.input_segments[2 * s + 1]};
+    narrow_pairs_ = narrow_wedges_2d(boundary_.xy, ends);
     for (std::size_t p = 0; 2 * p + 1 < boundary_.pieces.size(); ++p) {
         if (!bordering_[p]) continue;
         obstacles_.push_back(
@@ -312,6 +318,11 @@ bool QuadtreeMesher::separates(std::uint32_t n, const std::vector<std::uint32_t>
     };
     auto apart = [&](const Obstacle& f, const Obstacle& g) {
         if (f.segment == g.segment && f.segment != kNoNode) return false;
+        // Pieces of a narrow wedge's two segments are not separated (narrow_wedges_2d): the
+        // band's CDT keeps them, and leaves as small as the wedge is wide ran past 1.6e7.
+        if (f.segment != kNoNode && g.segment != kNoNode &&
+            narrow_wedge_pair(narrow_pairs_, f.segment, g.segment))
+            return false;
         return f.va != g.va && f.va != g.vb && f.vb != g.va && f.vb != g.vb;
     };
     std::vector<std::uint32_t> features;
