@@ -317,10 +317,7 @@ DelaunayRefinement3Result delaunay_refinement_3d(const Plc3& plc, ConformingMesh
     }
     refuse_volume_bound_far_over_budget(recovered, options);
     const std::uint64_t budget = steiner_budget_3d(recovered, options.max_steiner_points);
-    refuse_gaps_far_over_budget_3d(plc, recovered, budget, "delaunay refinement 3d",
-                                   kRefinementGapMargin,
-                                   "refinement makes up to 2.3 times the estimate between "
-                                   "parallel walls");
+    refuse_gaps_far_over_budget_3d(plc, recovered, budget, "delaunay refinement 3d");
     Refinement refinement(plc, std::move(recovered), options, budget);
     return refinement.run();
 }

@@ -530,8 +530,7 @@ FrontalDelaunay3Result frontal_delaunay_3d(const Plc3& plc, ConformingMesh3 reco
                          "size or the budget");
     }
     if (options.estimate_gaps)
-        refuse_gaps_far_over_budget_3d(plc, recovered, budget, "frontal delaunay 3d", 6.0,
-                                       "frontal insertion need not resolve a gap");
+        refuse_gaps_far_over_budget_3d(plc, recovered, budget, "frontal delaunay 3d");
     Frontal frontal(plc, std::move(recovered), options, budget, exponent);
     frontal.result_counters.estimated_points =
         static_cast<std::uint64_t>(std::min(estimate, 1.8e19));

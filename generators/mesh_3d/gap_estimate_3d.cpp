@@ -262,9 +262,8 @@ GapEstimate3 gap_estimate_3d(const Plc3& plc, const triangulation::ConformingMes
 
 void refuse_gaps_far_over_budget_3d(const Plc3& plc,
                                     const triangulation::ConformingMesh3& recovered,
-                                    std::uint64_t budget, const char* who, double margin,
-                                    const char* margin_reason) {
-    const double limit = margin * static_cast<double>(budget);
+                                    std::uint64_t budget, const char* who) {
+    const double limit = kGapMargin3 * static_cast<double>(budget);
     const GapEstimate3 estimate = gap_estimate_3d(plc, &recovered, limit);
     if (!(estimate.points > limit)) return;
     throw InputError(std::string(who) + ": Steiner point budget of " + std::to_string(budget) +
@@ -275,8 +274,9 @@ void refuse_gaps_far_over_budget_3d(const Plc3& plc,
                      format_approximate(estimate.points, 3) +
                      " points (the surface's area over 4 f^2, f the distance to the nearest such "
                      "part; refused above " +
-                     format_approximate(margin, 3) + " times the budget: " + margin_reason +
-                     "); widen the gap or raise the budget");
+                     format_approximate(kGapMargin3, 3) +
+                     " times the budget: the generators make up to 2.3 times the estimate "
+                     "between parallel walls); widen the gap or raise the budget");
 }
 
 }  // namespace exactmesh::generators

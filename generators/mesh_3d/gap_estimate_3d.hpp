@@ -20,10 +20,13 @@
 // computed in doubles (the distances round). The estimate stayed below every count Delaunay
 // refinement made (1.1 to 7 times its points on the sample domains, box-shaped holes 1e-4 to
 // 1e-2 from a wall or from each other, needles), up to 2.3 times between parallel walls, so
-// refinement refuses where 2.2 times the estimate exceeds the budget (kRefinementGapMargin: with
-// a margin of 6, two holes 1e-4 apart, estimate 2e6, ran 52 s into a budget of 1.02e6; with 1, a
-// slab 0.001 thick, estimate 5e5, ran 120 s into it). Frontal insertion and the octree need not resolve a gap (they split what encroaches,
-// at the size: the same two holes at size 0.1 take 1,963 vertices), so they keep a margin of 6.
+// every generator refuses where 2.2 times the estimate exceeds the budget (kGapMargin3: with a
+// margin of 6, two holes 1e-4 apart, estimate 2e6, ran 52 s into a budget of 1.02e6; with 1, a
+// slab 0.001 thick, estimate 5e5, ran 120 s into it). Frontal insertion and the octree split
+// what encroaches at the size, so they resolve a gap as refinement does (a turned plate 0.001
+// thick at size 0.1: 1.43e6 tetrahedra, refinement's count; a slab region, 120 s and more), but
+// not between walls whose triangulations line up (two unturned box holes 1e-4 apart at size
+// 0.1: 1,963 vertices, refused by the margin all the same: raise the budget there).
 // Cost: nearest-triangle queries in a bounding-box tree of the T surface triangles, one per
 // triangle and one per sample (at most 256 per triangle); the wing's 672 triangles, fans of
 // long thin ones on its walls, take 0.17 s with the samples (1.06 s with the grid of cells of
@@ -60,19 +63,19 @@ GapEstimate3 gap_estimate_3d(const triangulation::Plc3& plc,
                              const triangulation::ConformingMesh3* recovered = nullptr,
                              double enough = -1);
 
+/// Every 3D generator's margin: between parallel walls refinement makes 2.0 to 2.3 times the
+/// estimate (a 0.1-wide box hole 1e-4 from a wall: estimate 4.94e5, 1.01e6 points, TetGen
+/// 1.02e6; a slab region 0.001 thick across a unit cube: 5.0e5, past 1.01e6 at its budget after
+/// 120 s, TetGen 1.16e6 in 72 s; a plate 0.004 thick alone: 31,250, 63,021, TetGen 63,269), and
+/// frontal insertion and the octree as many on turned walls, so a PLC is refused where 2.2 times
+/// the estimate exceeds the budget.
+inline constexpr double kGapMargin3 = 0.45;
+
 /// Throws InputError, prefixed by `who`, when the estimate (with the recovered mesh's sides)
-/// exceeds `margin` times `budget` (Steiner points), naming the estimate, the smallest
-/// feature and the margin with `margin_reason`; does nothing otherwise.
+/// exceeds kGapMargin3 times `budget` (Steiner points), naming the estimate, the smallest
+/// feature and the margin; does nothing otherwise.
 void refuse_gaps_far_over_budget_3d(const triangulation::Plc3& plc,
                                     const triangulation::ConformingMesh3& recovered,
-                                    std::uint64_t budget, const char* who, double margin,
-                                    const char* margin_reason);
-
-/// Delaunay refinement's margin: between parallel walls it makes 2.0 to 2.3 times the estimate
-/// (a 0.1-wide box hole 1e-4 from a wall: estimate 4.94e5, 1.01e6 points, TetGen 1.02e6; a
-/// slab region 0.001 thick across a unit cube: 5.0e5, past 1.01e6 at its budget after 120 s,
-/// TetGen 1.16e6 in 72 s; a plate 0.004 thick alone: 31,250, 63,021, TetGen 63,269), so it
-/// refuses where 2.2 times the estimate exceeds the budget.
-inline constexpr double kRefinementGapMargin = 0.45;
+                                    std::uint64_t budget, const char* who);
 
 }  // namespace exactmesh::generators

@@ -673,7 +673,7 @@ OctreeMesh3Result octree_mesh_3d(const tri::Plc3& plc, const tri::ConformingMesh
     if (plc.xyz.empty()) throw InputError("octree mesh 3d: the PLC has no vertex");
     refuse_gaps_far_over_budget_3d(
         plc, recovered, restricted_3d::steiner_budget_3d(recovered, options.max_steiner_points),
-        "octree mesh 3d", 6.0, "the octree's band need not resolve a gap");
+        "octree mesh 3d");
     OctreeMesher mesher(plc, recovered, options);
     return mesher.run();
 }

@@ -96,15 +96,16 @@ TEST(Generators_GapEstimate3d, TheBudgetItselfRefusesAndAGapWithinItPasses) {
     add_box_hole(two, {0.4 + 1e-4, 0.2, 0.2}, 0.2);
     const tri::ConformingMesh3 two_recovered = tri::boundary_recovery_3d(two).mesh;
     const std::string message = testing::error_message<InputError>([&] {
-        refuse_gaps_far_over_budget_3d(two, two_recovered, 1024000, "refinement",
-                                       kRefinementGapMargin, "why");
+        refuse_gaps_far_over_budget_3d(two, two_recovered, 1024000, "refinement");
     });
     EXPECT_NE(message.find("refinement: Steiner point budget of 1024000 exceeded at once: facets "
                            "0.0001 apart"),
               std::string::npos)
         << message;
     EXPECT_NE(message.find("about 2e+06 points"), std::string::npos) << message;
-    EXPECT_NE(message.find("refused above 0.45 times the budget: why)"), std::string::npos)
+    EXPECT_NE(message.find("refused above 0.45 times the budget: the generators make up to 2.3 "
+                           "times the estimate between parallel walls)"),
+              std::string::npos)
         << message;
     tri::Plc3 one = tri::box(1, 1, 1);
     add_box_hole(one, {1e-4, 0.4, 0.4}, 0.1);
@@ -112,17 +113,12 @@ TEST(Generators_GapEstimate3d, TheBudgetItselfRefusesAndAGapWithinItPasses) {
     EXPECT_GT(estimate.points, 4.9e5);
     EXPECT_LT(estimate.points, 5e5);
     EXPECT_THROW(refuse_gaps_far_over_budget_3d(one, tri::boundary_recovery_3d(one).mesh,
-                                                1016000, "refinement", kRefinementGapMargin,
-                                                "why"),
+                                                1016000, "refinement"),
                  InputError);
     tri::Plc3 smaller = tri::box(1, 1, 1);
     add_box_hole(smaller, {1e-4, 0.4, 0.4}, 0.05);
     EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(
-        smaller, tri::boundary_recovery_3d(smaller).mesh, 1016000, "refinement",
-        kRefinementGapMargin, "why"));
-    // Frontal insertion and the octree keep a margin of 6 (they need not resolve the gap).
-    EXPECT_NO_THROW(
-        refuse_gaps_far_over_budget_3d(two, two_recovered, 1024000, "frontal", 6.0, "why"));
+        smaller, tri::boundary_recovery_3d(smaller).mesh, 1016000, "refinement"));
 }
 
 TEST(Generators_GapEstimate3d, WallsFacingEachOtherAcrossAHoleAskForNothing) {
@@ -154,8 +150,7 @@ TEST(Generators_GapEstimate3d, WallsFacingEachOtherAcrossAHoleAskForNothing) {
         const tri::ConformingMesh3 recovered = tri::boundary_recovery_3d(scaled).mesh;
         const GapEstimate3 sided = gap_estimate_3d(scaled, &recovered);
         EXPECT_LT(sided.points, 1e4) << e;
-        EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(scaled, recovered, 1016000, "refinement",
-                                                       kRefinementGapMargin, "why"));
+        EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(scaled, recovered, 1016000, "refinement"));
     }
     // Two walls 1e-4 apart through the domain (the hole's side 1e-4 from the outer wall) still
     // count, with the sides known.
