@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Open-addressing hash maps for the 3D generators' insertion (restricted_delaunay_3d.hpp):
-// FlatKeyMap64, per-insertion scratch of 64-bit edge keys cleared in O(1); KeyMap64, a lasting
-// map of edge keys with erase; Key3Map, a lasting map of sorted vertex triples (subfaces) with
-// erase; EdgeSubfaces, the subfaces at each edge. All hash by multiplies and probe linearly.
+// FlatKeyMap64, per-insertion scratch of 64-bit edge keys cleared in O(1); TombstoneMap, a
+// lasting map with erase, as KeyMap64 (edge keys) and Key3Map (sorted vertex triples: subfaces);
+// EdgeSubfaces, the subfaces at each edge. All hash by multiplies and probe linearly.
 #pragma once
 
 #include <algorithm>
@@ -87,116 +87,13 @@ class FlatKeyMap64 {
     }
 };
 
-/// An open-addressing hash map of 64-bit keys (edge keys) that keeps its keys, with erase
-/// (tombstones): the subsegments, asked for nearly every edge a cavity meets (most are none:
-/// std::unordered_map's prime-modulo bucket and node chase were a twentieth of refinement).
-template <class Value>
-class KeyMap64 {
+/// An open-addressing hash map that keeps its keys, with erase (tombstones); `Hash` gives a
+/// 64-bit hash whose bits from the 20th up pick the slot. Used as KeyMap64 and Key3Map below.
+template <class Key, class Value, class Hash>
+class TombstoneMap {
   public:
     /// Inserts `key` with `value` when missing; whether it was inserted.
-    bool emplace(std::uint64_t key, Value value) {
-        if (2 * (size_ + tombstones_ + 1) > slots_.size()) rehash();
-        std::size_t i = position(key);
-        std::size_t free = kNoSlot;
-        while (slots_[i].state != State::Empty) {
-            if (slots_[i].state == State::Full && slots_[i].key == key) return false;
-            if (slots_[i].state == State::Erased && free == kNoSlot) free = i;
-            i = (i + 1) & (slots_.size() - 1);
-        }
-        if (free != kNoSlot) {
-            i = free;
-            --tombstones_;
-        }
-        slots_[i] = {key, value, State::Full};
-        ++size_;
-        return true;
-    }
-
-    /// The value of `key`, or nullptr.
-    const Value* find(std::uint64_t key) const {
-        if (slots_.empty()) return nullptr;
-        std::size_t i = position(key);
-        while (slots_[i].state != State::Empty) {
-            if (slots_[i].state == State::Full && slots_[i].key == key) return &slots_[i].value;
-            i = (i + 1) & (slots_.size() - 1);
-        }
-        return nullptr;
-    }
-    Value* find(std::uint64_t key) {
-        return const_cast<Value*>(std::as_const(*this).find(key));
-    }
-
-    std::size_t count(std::uint64_t key) const { return find(key) != nullptr ? 1 : 0; }
-
-    const Value& at(std::uint64_t key) const {
-        const Value* value = find(key);
-        if (value == nullptr) throw InternalError("KeyMap64::at: missing key");
-        return *value;
-    }
-
-    void erase(std::uint64_t key) {
-        if (slots_.empty()) return;
-        std::size_t i = position(key);
-        while (slots_[i].state != State::Empty) {
-            if (slots_[i].state == State::Full && slots_[i].key == key) {
-                slots_[i].state = State::Erased;
-                --size_;
-                ++tombstones_;
-                return;
-            }
-            i = (i + 1) & (slots_.size() - 1);
-        }
-    }
-
-    /// Every entry, in no particular order.
-    std::vector<std::pair<std::uint64_t, Value>> entries() const {
-        std::vector<std::pair<std::uint64_t, Value>> out;
-        out.reserve(size_);
-        for (const Slot& slot : slots_)
-            if (slot.state == State::Full) out.emplace_back(slot.key, slot.value);
-        return out;
-    }
-
-  private:
-    enum class State : std::uint8_t { Empty, Full, Erased };
-    struct Slot {
-        std::uint64_t key = 0;
-        Value value{};
-        State state = State::Empty;
-    };
-    static constexpr std::size_t kNoSlot = ~std::size_t{0};
-    std::vector<Slot> slots_;
-    std::size_t size_ = 0;
-    std::size_t tombstones_ = 0;
-
-    std::size_t position(std::uint64_t key) const {
-        return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (slots_.size() - 1);
-    }
-
-    /// Twice the live entries' room (at least 64 slots), tombstones dropped.
-    void rehash() {
-        std::vector<Slot> old = std::move(slots_);
-        std::size_t capacity = 64;
-        while (capacity < 4 * (size_ + 1)) capacity *= 2;
-        slots_.assign(capacity, Slot{});
-        size_ = 0;
-        tombstones_ = 0;
-        for (const Slot& slot : old)
-            if (slot.state == State::Full) emplace(slot.key, slot.value);
-    }
-};
-
-/// An open-addressing hash map of sorted vertex triples (subface keys, sorted3) with erase
-/// (tombstones): the subfaces, asked for nearly every face a cavity meets. std::unordered_map's
-/// node chase, its memcmp of keys and its node allocations were a third of refinement's time on
-/// thin domains, whose insertions are mostly subface splits.
-template <class Value>
-class Key3Map {
-  public:
-    using Key3 = triangulation::Key3;
-
-    /// Inserts `key` with `value` when missing; whether it was inserted.
-    bool emplace(const Key3& key, const Value& value) {
+    bool emplace(const Key& key, const Value& value) {
         if (2 * (size_ + tombstones_ + 1) > slots_.size()) rehash();
         std::size_t i = position(key);
         std::size_t free = kNoSlot;
@@ -217,7 +114,7 @@ class Key3Map {
     }
 
     /// The value of `key`, or nullptr.
-    const Value* find(const Key3& key) const {
+    const Value* find(const Key& key) const {
         if (slots_.empty()) return nullptr;
         std::size_t i = position(key);
         while (slots_[i].state != State::Empty) {
@@ -226,16 +123,17 @@ class Key3Map {
         }
         return nullptr;
     }
+    Value* find(const Key& key) { return const_cast<Value*>(std::as_const(*this).find(key)); }
 
-    std::size_t count(const Key3& key) const { return find(key) != nullptr ? 1 : 0; }
+    std::size_t count(const Key& key) const { return find(key) != nullptr ? 1 : 0; }
 
-    const Value& at(const Key3& key) const {
+    const Value& at(const Key& key) const {
         const Value* value = find(key);
-        if (value == nullptr) throw InternalError("Key3Map::at: missing key");
+        if (value == nullptr) throw InternalError("TombstoneMap::at: missing key");
         return *value;
     }
 
-    void erase(const Key3& key) {
+    void erase(const Key& key) {
         if (slots_.empty()) return;
         std::size_t i = position(key);
         while (slots_[i].state != State::Empty) {
@@ -252,8 +150,8 @@ class Key3Map {
     std::size_t size() const { return size_; }
 
     /// Every entry, in no particular order.
-    std::vector<std::pair<Key3, Value>> entries() const {
-        std::vector<std::pair<Key3, Value>> out;
+    std::vector<std::pair<Key, Value>> entries() const {
+        std::vector<std::pair<Key, Value>> out;
         out.reserve(size_);
         for (const Slot& slot : slots_)
             if (slot.state == State::Full) out.emplace_back(slot.key, slot.value);
@@ -263,7 +161,7 @@ class Key3Map {
   private:
     enum class State : std::uint8_t { Empty, Full, Erased };
     struct Slot {
-        Key3 key{};
+        Key key{};
         State state = State::Empty;
         Value value{};
     };
@@ -272,10 +170,8 @@ class Key3Map {
     std::size_t size_ = 0;
     std::size_t tombstones_ = 0;
 
-    std::size_t position(const Key3& key) const {
-        std::uint64_t h = (std::uint64_t{key[0]} << 32 | key[1]) * 0x9E3779B97F4A7C15ull;
-        h = (h ^ key[2]) * 0xC2B2AE3D27D4EB4Full;
-        return static_cast<std::size_t>(h >> 20) & (slots_.size() - 1);
+    std::size_t position(const Key& key) const {
+        return static_cast<std::size_t>(Hash{}(key) >> 20) & (slots_.size() - 1);
     }
 
     /// Twice the live entries' room (at least 64 slots), tombstones dropped.
@@ -290,6 +186,29 @@ class Key3Map {
             if (slot.state == State::Full) emplace(slot.key, slot.value);
     }
 };
+
+struct EdgeKeyHash64 {
+    std::uint64_t operator()(std::uint64_t key) const { return key * 0x9E3779B97F4A7C15ull; }
+};
+struct Key3Hash64 {
+    std::uint64_t operator()(const triangulation::Key3& key) const {
+        const std::uint64_t h = (std::uint64_t{key[0]} << 32 | key[1]) * 0x9E3779B97F4A7C15ull;
+        return (h ^ key[2]) * 0xC2B2AE3D27D4EB4Full;
+    }
+};
+
+/// 64-bit edge keys to values, with erase: the subsegments, asked for nearly every edge a
+/// cavity meets (most are none: std::unordered_map's prime-modulo bucket and node chase were a
+/// twentieth of refinement).
+template <class Value>
+using KeyMap64 = TombstoneMap<std::uint64_t, Value, EdgeKeyHash64>;
+
+/// Sorted vertex triples (subface keys, sorted3) to values, with erase: the subfaces, asked for
+/// nearly every face a cavity meets. std::unordered_map's node chase, its memcmp of keys and its
+/// node allocations were a third of refinement's time on thin domains, whose insertions are
+/// mostly subface splits.
+template <class Value>
+using Key3Map = TombstoneMap<triangulation::Key3, Value, Key3Hash64>;
 
 /// The subfaces at each edge, as the third corners of the subfaces holding it (the subface is
 /// sorted3 of the edge's ends and the third): two at an edge inside a facet, one per facet at a
