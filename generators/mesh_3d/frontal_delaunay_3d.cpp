@@ -314,6 +314,7 @@ void Frontal::fit_boundary() {
     fc_.segment_splits = counters_.segment_splits + counters_.shell_splits;
     fc_.subface_splits = counters_.subface_splits;
     fc_.boundary_rejections = counters_.rejected_points;
+    fc_.longest_edge_subfaces = counters_.longest_edge_subfaces;
 }
 
 void Frontal::step(TetIdx t) {

@@ -89,6 +89,9 @@ struct FrontalDelaunay3Counters {
     std::uint64_t rejected_too_close = 0;   ///< closer than min_distance h to a cavity vertex
     std::uint64_t rejected_cavity = 0;      ///< its cavity could not stay star-shaped/conforming
     std::uint64_t boundary_rejections = 0;  ///< boundary-fitting splits that were rejected
+    /// boundary fitting: subfaces whose circumcentre was a vertex already, split at their
+    /// longest edge instead
+    std::uint64_t longest_edge_subfaces = 0;
     std::uint64_t early_rejections = 0;     ///< of the encroaching and too close points, those
                                             ///< found by their seed or front tetrahedron alone,
                                             ///< before their cavity was grown
@@ -102,8 +105,9 @@ struct FrontalDelaunay3Counters {
 inline constexpr std::array kFrontalDelaunay3CounterNames =
     EM_COUNTER_TABLE(FrontalDelaunay3Counters, segment_splits, subface_splits, interior_points,
                      active_pops, stale_pops, forced_accepts, rejected_outside, rejected_encroach,
-                     rejected_too_close, rejected_cavity, boundary_rejections, early_rejections,
-                     batched_removals, cavity_tets, accepted_tets, estimated_points);
+                     rejected_too_close, rejected_cavity, boundary_rejections,
+                     longest_edge_subfaces, early_rejections, batched_removals, cavity_tets,
+                     accepted_tets, estimated_points);
 static_assert(counter_table_complete(kFrontalDelaunay3CounterNames));
 
 struct FrontalDelaunay3Result {

@@ -1002,8 +1002,9 @@ class RestrictedDelaunay3 {
         if (found == nullptr) return false;
         const Subface face = *found;
         const int drop = planes_[face.facet].drop;
-        const std::array<double, 3> c = predicates::triangle_circumcenter_3d(
+        std::array<double, 3> c = predicates::triangle_circumcenter_3d(
             point(face.oriented[0]), point(face.oriented[1]), point(face.oriented[2]));
+        bool at_midpoint = false;  // c moved to the longest edge's midpoint (see below)
         // Walk in the facet's projection from the subface to the one holding c.
         Subface at = face;
         for (std::size_t steps = 0;; ++steps) {
@@ -1049,6 +1050,35 @@ class RestrictedDelaunay3 {
                 continue;
             }
             if (zeros >= 2) {  // on a vertex in projection
+                // The circumcentre is a vertex already: the subface was left out of that
+                // vertex's facet cavity (dropped there, the facet not Delaunay) and can never be
+                // split at it. A needle rod 1e5 times longer than wide retried such subfaces
+                // 53,000 times on its way into the Steiner budget. Its longest edge is split
+                // instead: the subsegment, or the edge's midpoint as a facet point.
+                if (!at_midpoint) {
+                    at_midpoint = true;
+                    ++counters_.longest_edge_subfaces;
+                    unsigned longest = 0;
+                    double length = -1;
+                    for (unsigned e = 0; e < 3; ++e) {
+                        const double* p = point(face.oriented[e]);
+                        const double* q = point(face.oriented[(e + 1) % 3]);
+                        double l = 0;
+                        for (int k = 0; k < 3; ++k) l = std::max(l, std::fabs(q[k] - p[k]));
+                        if (l > length) length = l, longest = e;
+                    }
+                    const VertIdx x = face.oriented[longest];
+                    const VertIdx y = face.oriented[(longest + 1) % 3];
+                    if (subsegments_.count(edge_key(x, y)) != 0) {
+                        segment_queue_.push_front(edge_key(x, y));
+                        ++counters_.encroached_segments;
+                        return false;
+                    }
+                    for (int k = 0; k < 3; ++k) c[k] = 0.5 * point(x)[k] + 0.5 * point(y)[k];
+                    at = face;
+                    steps = 0;
+                    continue;
+                }
                 ++counters_.rejected_points;
                 return false;
             }

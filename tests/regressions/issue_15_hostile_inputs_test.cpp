@@ -443,8 +443,9 @@ TEST(Issue15, issue_15_points_outside_the_domain_are_named_in_warnings) {
 TEST(Issue15, issue_15_boundary_folds_keep_the_facets_tiled) {
     // tests/data/hostile_3d/rotated_cube_free_vertices_boundary_folds.poly (a hostile-input
     // campaign's free.44): a turned cube with free vertices beside an edge, in a row, at a
-    // corner and within rounding of facets. Frontal insertion at size 0.1 leaves about 88
-    // folds, tetrahedra whose two boundary faces are subfaces of one facet; sliver removal
+    // corner and within rounding of facets. Frontal insertion at size 0.1 leaves folds (88, and
+    // 20 since unsplittable subfaces split their longest edge), tetrahedra whose two boundary
+    // faces are subfaces of one facet; sliver removal
     // removes each by turning the facet's quadrilateral to its other diagonal. The new
     // subfaces' corner order had been chosen to match the old ones' projected orientation, which
     // made the convexity test pass always: a fold across a reflex corner overlapped the next
@@ -459,9 +460,14 @@ TEST(Issue15, issue_15_boundary_folds_keep_the_facets_tiled) {
         gen::FrontalDelaunay3Result meshed =
             gen::frontal_delaunay_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
         ASSERT_TRUE(tri::check_boundary_conformity_3d(plc, meshed.mesh).ok) << exponent;
+        // Subfaces whose circumcentre was a vertex already (left out of its facet cavity) were
+        // rejected again and again; they split their longest edge now (a needle rod 1e5 times
+        // longer than wide, tests/data/hostile_3d/rotated_rod_aspect_1e5_budget.poly: 364,623
+        // rejections and 158 s into the budget, then 120,426 and 51 s; TetGen meshes it).
+        EXPECT_GT(meshed.counters.longest_edge_subfaces, 0u) << exponent;
         const gen::SliverRemoval3Result improved =
             gen::sliver_removal_3d(std::move(meshed.mesh), gen::SliverRemoval3Options{});
-        EXPECT_GT(improved.counters.folds_removed, 50u) << exponent;
+        EXPECT_GT(improved.counters.folds_removed, 10u) << exponent;
         const tri::BoundaryConformityReport3 report =
             tri::check_boundary_conformity_3d(plc, improved.mesh);
         EXPECT_TRUE(report.ok) << exponent << " " << report.problem;
