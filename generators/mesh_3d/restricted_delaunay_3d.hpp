@@ -15,6 +15,7 @@
 #pragma once
 
 #include <algorithm>
+#include <climits>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -41,6 +42,7 @@
 #include "triangulation/mesh/plc_3d.hpp"
 #include "triangulation/mesh/vertex_keys_3d.hpp"
 #include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
+#include "triangulation/recovery_3d/plc_3d.hpp"
 
 namespace exactmesh::generators::restricted_3d {
 
@@ -126,6 +128,37 @@ class RestrictedDelaunay3 {
         planes_.reserve(plc.facets.size());
         for (const auto& facet : plc.facets)
             planes_.push_back(triangulation::facet_plane(plc, facet));
+        // Each facet's largest input triangle: the plane its Steiner points must lie on within
+        // rounding (its first corners may be within rounding of collinear).
+        // Areas as (exponent, mantissa) of the cross product on differences scaled by a power
+        // of two: compared exactly alike for the PLC scaled by 2^k (no square overflows).
+        facet_triangle_.assign(plc.facets.size(), {kNone, kNone, kNone});
+        std::vector<std::pair<long, double>> largest_area(plc.facets.size(), {LONG_MIN, 0.0});
+        const triangulation::SurfaceTriangles3 triangles = triangulation::triangulate_facets_3d(plc);
+        for (std::uint32_t t = 0; t < triangles.triangle_count(); ++t) {
+            const VertIdx* c = &triangles.triangles[3 * std::size_t{t}];
+            const double *a = plc.point(c[0]), *b = plc.point(c[1]), *d = plc.point(c[2]);
+            double u[3], w[3], largest = 0;
+            for (int k = 0; k < 3; ++k) {
+                u[k] = b[k] - a[k], w[k] = d[k] - a[k];
+                largest = std::max({largest, std::fabs(u[k]), std::fabs(w[k])});
+            }
+            const int shift = predicates::unit_shift(largest);
+            const predicates::PowerOfTwo unit(shift);
+            for (int k = 0; k < 3; ++k) u[k] = unit(u[k]), w[k] = unit(w[k]);
+            const double normal[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                                      u[0] * w[1] - u[1] * w[0]};
+            const double scaled = std::fabs(normal[0]) + std::fabs(normal[1]) + std::fabs(normal[2]);
+            int exponent = 0;
+            const double mantissa = std::frexp(scaled, &exponent);
+            const std::pair<long, double> area{scaled > 0 ? long{exponent} - 2L * shift : LONG_MIN,
+                                               mantissa};
+            const std::uint32_t f = triangles.facets[t];
+            if (facet_triangle_[f][0] == kNone || area > largest_area[f]) {
+                largest_area[f] = area;
+                facet_triangle_[f] = {c[0], c[1], c[2]};
+            }
+        }
         vertex_segments_.resize(out_.input_vertex_count);
         for (std::uint32_t s = 0; 2 * s + 1 < out_.segments.size(); ++s) {
             vertex_segments_[out_.segments[2 * s]].push_back(s);
@@ -173,6 +206,15 @@ class RestrictedDelaunay3 {
     Key3Map<Subface> subfaces_;
     EdgeSubfaces edge_subfaces_;
     std::vector<triangulation::FacetPlane> planes_;
+    std::vector<std::array<VertIdx, 3>> facet_triangle_;  ///< per facet, its largest input triangle
+
+    /// Whether p lies off facet f's plane beyond rounding (beyond_rounding_of_plane with the
+    /// facet's largest input triangle).
+    bool off_facet_plane(const double* p, std::uint32_t f) const {
+        const auto& t = facet_triangle_[f];
+        if (t[0] == kNone) return false;
+        return triangulation::beyond_rounding_of_plane(p, point(t[0]), point(t[1]), point(t[2]));
+    }
     std::vector<std::vector<std::uint32_t>> vertex_segments_;
     /// Facets meeting at a segment at below 60 degrees: their encroachment of each other (and of
     /// the segment between them) splits nothing, since each split would encroach the other.
@@ -1005,6 +1047,35 @@ class RestrictedDelaunay3 {
         std::array<double, 3> c = predicates::triangle_circumcenter_3d(
             point(face.oriented[0]), point(face.oriented[1]), point(face.oriented[2]));
         bool at_midpoint = false;  // c moved to the longest edge's midpoint (see below)
+        // The subface's longest edge instead of its circumcentre: the subsegment is queued
+        // (false), or c becomes the edge's midpoint, a point of the facet within rounding (true).
+        const auto longest_edge_instead = [&]() {
+            at_midpoint = true;
+            ++counters_.longest_edge_subfaces;
+            unsigned longest = 0;
+            double length = -1;
+            for (unsigned e = 0; e < 3; ++e) {
+                const double* p = point(face.oriented[e]);
+                const double* q = point(face.oriented[(e + 1) % 3]);
+                double l = 0;
+                for (int k = 0; k < 3; ++k) l = std::max(l, std::fabs(q[k] - p[k]));
+                if (l > length) length = l, longest = e;
+            }
+            const VertIdx x = face.oriented[longest];
+            const VertIdx y = face.oriented[(longest + 1) % 3];
+            if (subsegments_.count(edge_key(x, y)) != 0) {
+                segment_queue_.push_front(edge_key(x, y));
+                ++counters_.encroached_segments;
+                return false;
+            }
+            for (int k = 0; k < 3; ++k) c[k] = 0.5 * point(x)[k] + 0.5 * point(y)[k];
+            return true;
+        };
+        // A needle subface (a side 1e-12 long beside a segment, its corners rounded off the
+        // facet's plane by 1e-17) has its own plane tilted from the facet's, and its circumcentre
+        // lay 2e-9 off the facet on a turned cube: a facet vertex beyond rounding of its facet
+        // (the exact check of `exactmesh check` found a face on no facet).
+        if (off_facet_plane(c.data(), face.facet) && !longest_edge_instead()) return false;
         // Walk in the facet's projection from the subface to the one holding c.
         Subface at = face;
         for (std::size_t steps = 0;; ++steps) {
@@ -1056,25 +1127,7 @@ class RestrictedDelaunay3 {
                 // 53,000 times on its way into the Steiner budget. Its longest edge is split
                 // instead: the subsegment, or the edge's midpoint as a facet point.
                 if (!at_midpoint) {
-                    at_midpoint = true;
-                    ++counters_.longest_edge_subfaces;
-                    unsigned longest = 0;
-                    double length = -1;
-                    for (unsigned e = 0; e < 3; ++e) {
-                        const double* p = point(face.oriented[e]);
-                        const double* q = point(face.oriented[(e + 1) % 3]);
-                        double l = 0;
-                        for (int k = 0; k < 3; ++k) l = std::max(l, std::fabs(q[k] - p[k]));
-                        if (l > length) length = l, longest = e;
-                    }
-                    const VertIdx x = face.oriented[longest];
-                    const VertIdx y = face.oriented[(longest + 1) % 3];
-                    if (subsegments_.count(edge_key(x, y)) != 0) {
-                        segment_queue_.push_front(edge_key(x, y));
-                        ++counters_.encroached_segments;
-                        return false;
-                    }
-                    for (int k = 0; k < 3; ++k) c[k] = 0.5 * point(x)[k] + 0.5 * point(y)[k];
+                    if (!longest_edge_instead()) return false;
                     at = face;
                     steps = 0;
                     continue;

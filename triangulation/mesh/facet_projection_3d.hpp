@@ -13,6 +13,7 @@
 
 #include "base/errors.hpp"
 #include "predicates/orient2d.hpp"
+#include "predicates/power_of_two.hpp"
 #include "triangulation/mesh/plc_3d.hpp"
 
 namespace exactmesh::triangulation {
@@ -82,6 +83,34 @@ inline int drop_axis(const double* a, const double* b, const double* c) {
     }
     EM_ASSERT(best >= 0);
     return best;
+}
+
+/// Whether p lies farther from the plane through a, b and c than rounding explains: more than
+/// 2^-40 of the largest coordinate magnitude among the four (a facet's Steiner points are
+/// rounded once from points of its plane; attached free vertices lie within 2^-48 of their
+/// coordinates). Doubles on differences scaled by one power of two (a classification, the same
+/// for the points scaled by 2^k); false when a, b and c are collinear in doubles.
+inline bool beyond_rounding_of_plane(const double* p, const double* a, const double* b,
+                                     const double* c) {
+    double u[3], v[3], w[3];
+    double largest = 0, magnitude = 0;
+    for (int k = 0; k < 3; ++k) {
+        u[k] = b[k] - a[k];
+        v[k] = c[k] - a[k];
+        w[k] = p[k] - a[k];
+        largest = std::max({largest, std::fabs(u[k]), std::fabs(v[k]), std::fabs(w[k])});
+        magnitude = std::max({magnitude, std::fabs(p[k]), std::fabs(a[k]), std::fabs(b[k]),
+                              std::fabs(c[k])});
+    }
+    if (!(largest > 0) || !std::isfinite(largest)) return false;
+    const predicates::PowerOfTwo unit(predicates::unit_shift(largest));
+    for (int k = 0; k < 3; ++k) u[k] = unit(u[k]), v[k] = unit(v[k]), w[k] = unit(w[k]);
+    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                         u[0] * v[1] - u[1] * v[0]};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(length > 0)) return false;
+    const double distance = std::fabs(n[0] * w[0] + n[1] * w[1] + n[2] * w[2]) / length;
+    return distance > std::ldexp(unit(magnitude), -40);
 }
 
 /// A facet's reference corners: the first three non-collinear ones in the order listed

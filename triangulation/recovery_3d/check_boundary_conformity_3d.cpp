@@ -162,16 +162,21 @@ std::string check(const Plc3& plc, const ConformingMesh3& cm) {
         } else if (cm.vertex_feature[v] == VertexFeature3::Facet) {
             if (index >= plc.facets.size()) return "vertex " + name(v) + ": unknown facet";
             const int drop = planes[index].drop;
-            bool inside = false;
-            for (std::uint32_t t = 0; t < input_triangles.triangle_count() && !inside; ++t) {
+            const VertIdx* holder = nullptr;
+            for (std::uint32_t t = 0; t < input_triangles.triangle_count() && !holder; ++t) {
                 if (input_triangles.facets[t] != index) continue;
                 const VertIdx* tri = &input_triangles.triangles[3 * std::size_t{t}];
-                inside = in_projected_triangle(mesh.point(v), plc.point(tri[0]), plc.point(tri[1]),
-                                               plc.point(tri[2]), drop);
+                if (in_projected_triangle(mesh.point(v), plc.point(tri[0]), plc.point(tri[1]),
+                                          plc.point(tri[2]), drop))
+                    holder = tri;
             }
-            if (!inside)
+            if (holder == nullptr)
                 return "facet vertex " + name(v) + "'s projection lies outside facet " +
                        std::to_string(index);
+            if (beyond_rounding_of_plane(mesh.point(v), plc.point(holder[0]),
+                                         plc.point(holder[1]), plc.point(holder[2])))
+                return "facet vertex " + name(v) + " lies off facet " + std::to_string(index) +
+                       "'s plane beyond rounding";
         } else if (cm.vertex_feature[v] != VertexFeature3::Volume) {
             return "vertex " + name(v) + " beyond the input has no feature";
         }

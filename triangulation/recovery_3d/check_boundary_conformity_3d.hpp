@@ -17,8 +17,9 @@
 //  - every Steiner vertex lies within rounding of its recorded feature: a segment vertex
 //    within_rounding_of_segment in each coordinate projection where its segment is not a point;
 //    a facet vertex's projection (the facet's drop axis) inside the facet's input triangles
-//    (triangulate_facets_3d), exactly. (Its distance from the facet's plane, a rounding error,
-//    is not checked.)
+//    (triangulate_facets_3d), exactly, and the vertex within rounding of that triangle's plane
+//    (beyond_rounding_of_plane: 2^-40 of the coordinates, in doubles; a subface circumcentre
+//    2e-9 off its facet passed when the distance was not checked).
 // No tetrahedron then has a subface's interior crossing it: the subfaces are faces of a valid
 // tetrahedralization, whose tetrahedra have disjoint interiors and meet only in shared faces,
 // so a face's interior meets no tetrahedron's interior.
