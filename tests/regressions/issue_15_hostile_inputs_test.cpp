@@ -445,8 +445,8 @@ TEST(Issue15, issue_15_boundary_folds_keep_the_facets_tiled) {
     // campaign's free.44): a turned cube with free vertices beside an edge, in a row, at a
     // corner and within rounding of facets. Frontal insertion at size 0.1 leaves folds (88, and
     // 20 since unsplittable subfaces split their longest edge), tetrahedra whose two boundary
-    // faces are subfaces of one facet; sliver removal
-    // removes each by turning the facet's quadrilateral to its other diagonal. The new
+    // faces are subfaces of one facet; sliver removal removes each by turning the facet's
+    // quadrilateral to its other diagonal. The new
     // subfaces' corner order had been chosen to match the old ones' projected orientation, which
     // made the convexity test pass always: a fold across a reflex corner overlapped the next
     // subface (a directed edge in two subfaces) and `tetmesh` stopped with an internal error.
