@@ -64,6 +64,8 @@ struct DelaunayRefinement3Counters {
     std::uint64_t rejected_points = 0;        ///< insertions whose cavity could not be kept valid
     std::uint64_t longest_edge_subfaces = 0;  ///< subfaces whose circumcentre was a vertex
                                               ///< already, split at their longest edge instead
+    std::uint64_t projected_circumcentres = 0;  ///< subface circumcentres off the facet's plane
+                                                ///< beyond rounding, moved onto it
     std::uint64_t shrunk_cavities = 0;        ///< cavities shrunk to stay star-shaped/conforming
     std::uint64_t batched_removals = 0;       ///< tetrahedra shrunk away beside the first of
                                               ///< their round (all facing away from the point)
@@ -82,7 +84,7 @@ struct DelaunayRefinement3Counters {
 inline constexpr std::array kDelaunayRefinement3CounterNames = EM_COUNTER_TABLE(
     DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits, shell_splits,
     encroached_segments, encroached_subfaces, blocked_circumcenters, rejected_points,
-    longest_edge_subfaces, shrunk_cavities, batched_removals, forced_cavity_tets, walk_seeded_cavities, small_angle_tets,
+    longest_edge_subfaces, projected_circumcentres, shrunk_cavities, batched_removals, forced_cavity_tets, walk_seeded_cavities, small_angle_tets,
     unresolvable_tets, cavity_tets, insertions);
 static_assert(counter_table_complete(kDelaunayRefinement3CounterNames));
 
