@@ -88,7 +88,7 @@ inline int drop_axis(const double* a, const double* b, const double* c) {
 /// Whether p lies farther from the plane through a, b and c than rounding explains: more than
 /// 2^-40 of the largest coordinate magnitude among the four (a facet's Steiner points are
 /// rounded once from points of its plane; attached free vertices lie within 2^-48 of their
-/// coordinates). Doubles on differences scaled by one power of two (a classification, the same
+/// coordinates), plus the uncertainty of the plane's normal for a needle triangle. Doubles on differences scaled by one power of two (a classification, the same
 /// for the points scaled by 2^k); false when a, b and c are collinear in doubles.
 inline bool beyond_rounding_of_plane(const double* p, const double* a, const double* b,
                                      const double* c) {
@@ -110,7 +110,12 @@ inline bool beyond_rounding_of_plane(const double* p, const double* a, const dou
     const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (!(length > 0)) return false;
     const double distance = std::fabs(n[0] * w[0] + n[1] * w[1] + n[2] * w[2]) / length;
-    return distance > std::ldexp(unit(magnitude), -40);
+    // The normal's direction is known to about eps |u| |v| / |n| (the cross product of two
+    // nearly parallel sides cancels: a needle input triangle 1 by 4.4e-5 tilts it by 2.5e-12),
+    // which moves the distance by that times |w|: allowed too, with a margin.
+    const auto norm = [](const double* x) { return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); };
+    const double conditioning = norm(u) * norm(v) / length * norm(w);
+    return distance > std::ldexp(unit(magnitude), -40) + std::ldexp(conditioning, -44);
 }
 
 /// A facet's reference corners: the first three non-collinear ones in the order listed
