@@ -462,7 +462,7 @@ TEST(Issue15, issue_15_boundary_folds_keep_the_facets_tiled) {
         ASSERT_TRUE(tri::check_boundary_conformity_3d(plc, meshed.mesh).ok) << exponent;
         // Subfaces whose circumcentre was a vertex already (left out of its facet cavity) were
         // rejected again and again; they split their longest edge now (a needle rod 1e5 times
-        // longer than wide, tests/data/hostile_3d/rotated_rod_aspect_1e5_budget.poly: 364,623
+        // longer than wide, tests/data/hostile_3d/rotated_rod_aspect_1e5.poly: 364,623
         // rejections and 158 s into the budget, then 120,426 and 51 s; TetGen meshes it).
         EXPECT_GT(meshed.counters.longest_edge_subfaces, 0u) << exponent;
         const gen::SliverRemoval3Result improved =
