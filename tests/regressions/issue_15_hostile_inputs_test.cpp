@@ -141,6 +141,22 @@ Meshed3 mesh_with_volume_bound(const tri::Plc3& plc, double max_volume,
     return out;
 }
 
+/// tests/data/hostile_3d/NAME prepared at 2^exponent (rotated_cube) and refined with the
+/// default bounds (radius-edge 2) within 20,000 Steiner points.
+struct RefinedHostile3 {
+    tri::Plc3 plc;
+    gen::DelaunayRefinement3Result refined;
+};
+RefinedHostile3 refine_hostile(const std::string& name, int exponent) {
+    std::vector<tri::VertIdx> attached;
+    RefinedHostile3 out{rotated_cube(name, exponent, attached, "hostile_3d"), {}};
+    gen::DelaunayRefinement3Options options;
+    options.max_steiner_points = 20000;
+    out.refined = gen::delaunay_refinement_3d(out.plc, tri::boundary_recovery_3d(out.plc).mesh,
+                                              options);
+    return out;
+}
+
 }  // namespace
 
 TEST(Issue15, issue_15_free_vertex_an_ulp_off_a_facet_is_part_of_it) {
@@ -396,19 +412,14 @@ TEST(Issue15, issue_15_free_vertices_beside_a_turned_edge_settle) {
           "rotated_cube_free_vertex_4e-11_off_an_edge.poly",
           "rotated_cube_five_free_vertices_assertion.poly"}) {
         for (const int exponent : {0, 300, -300}) {
-            std::vector<tri::VertIdx> attached;
-            const tri::Plc3 plc = rotated_cube(name, exponent, attached, "hostile_3d");
-            gen::DelaunayRefinement3Options options;
-            options.max_steiner_points = 20000;
-            const auto refined =
-                gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
+            const auto [plc, refined] = refine_hostile(name, exponent);
             EXPECT_LT(refined.mesh.mesh.vertex_count(), 1500u) << name << exponent;
             for (std::size_t i = 0; i < plc.xyz.size(); ++i)
                 ASSERT_EQ(refined.mesh.mesh.xyz[i], plc.xyz[i]) << name << exponent;
             EXPECT_TRUE(tri::check_boundary_conformity_3d(plc, refined.mesh).ok)
                 << name << exponent;
             const gen::RefinementQuality3 quality =
-                gen::check_refinement_quality_3d(refined.mesh, options);
+                gen::check_refinement_quality_3d(refined.mesh, {});
             EXPECT_EQ(quality.over_bound + quality.over_volume, 0u) << name << exponent;
         }
     }
@@ -520,12 +531,7 @@ TEST(Issue15, issue_15_subface_circumcentres_stay_on_their_facet) {
     for (const char* name : {"rotated_cube_free_vertices_off_plane_circumcentres.poly",
                              "cube_free_vertices_1e-14_off_an_edge.poly"}) {
         for (const int exponent : {0, 300, -300}) {
-            std::vector<tri::VertIdx> attached;
-            const tri::Plc3 plc = rotated_cube(name, exponent, attached, "hostile_3d");
-            gen::DelaunayRefinement3Options options;
-            options.max_steiner_points = 20000;
-            const auto refined =
-                gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
+            const auto [plc, refined] = refine_hostile(name, exponent);
             EXPECT_GT(refined.counters.projected_circumcentres, 0u) << name << exponent;
             EXPECT_LT(refined.mesh.mesh.vertex_count(), 3000u) << name << exponent;
             const tri::BoundaryConformityReport3 report =
