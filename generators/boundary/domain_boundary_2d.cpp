@@ -60,8 +60,11 @@ std::vector<double> equal_integral_parameters(const std::vector<double>& u,
     return points;
 }
 
-/// InputError when the integral asks for more than 2^30 pieces (or is not finite).
-void check_piece_count(double total, const Curve2& curve, double u0, const SizeFunction& size) {
+/// InputError when the integral asks for more than 2^30 pieces (or is not finite), or for more
+/// new points than `max_points` (a generator's Steiner budget, 0 for none: the pieces less one
+/// are the points the curve adds).
+void check_piece_count(double total, const Curve2& curve, double u0, const SizeFunction& size,
+                       std::uint64_t max_points) {
     if (!std::isfinite(total) || total > double{1 << 30}) {
         throw InputError(
             "boundary discretization: the size function asks for more than 2^30 pieces on one "
@@ -69,12 +72,21 @@ void check_piece_count(double total, const Curve2& curve, double u0, const SizeF
             format_number(size(curve(u0)[0], curve(u0)[1])) + " near (" +
             format_number(curve(u0)[0]) + ", " + format_number(curve(u0)[1]) + "))");
     }
+    if (max_points != 0 && total > static_cast<double>(max_points) + 1) {
+        throw InputError("boundary discretization: the size function asks for more than " +
+                         std::to_string(max_points) +
+                         " boundary points, over the Steiner point budget (size " +
+                         format_number(size(curve(u0)[0], curve(u0)[1])) + " near (" +
+                         format_number(curve(u0)[0]) + ", " + format_number(curve(u0)[1]) +
+                         ")): give a larger size or raise --max-steiner");
+    }
 }
 
 /// discretize_curve_parameters with a first sample count (doubled until there are 8 samples per
 /// piece).
 std::vector<double> spaced_parameters(const Curve2& curve, double u0, double u1,
-                                      const SizeFunction& size, int min_pieces, int samples) {
+                                      const SizeFunction& size, int min_pieces, int samples,
+                                      std::uint64_t max_points = 0) {
     for (;;) {
         std::vector<double> u(static_cast<std::size_t>(samples) + 1), cumulative(u.size(), 0.0);
         Point previous = curve(u0);
@@ -89,7 +101,7 @@ std::vector<double> spaced_parameters(const Curve2& curve, double u0, double u1,
             previous = p;
         }
         const double total = cumulative.back();
-        check_piece_count(total, curve, u0, size);
+        check_piece_count(total, curve, u0, size, max_points);
         const int pieces = std::max(min_pieces, static_cast<int>(std::ceil(total - 1e-9)));
         if (pieces * 8 > samples && samples < (1 << 24)) {
             samples = std::min(1 << 24, pieces * 16);
@@ -105,7 +117,8 @@ std::vector<double> spaced_parameters(const Curve2& curve, double u0, double u1,
 /// boundary layer's metric along a side that crosses it) costs samples there only, where the
 /// uniform sampling above pays for the smallest size over the whole piece.
 std::vector<double> adaptive_spaced_parameters(const Curve2& curve, double u0, double u1,
-                                               const SizeFunction& size, int min_pieces) {
+                                               const SizeFunction& size, int min_pieces,
+                                               std::uint64_t max_points) {
     struct Sample {
         double u;
         Point p;
@@ -140,6 +153,12 @@ std::vector<double> adaptive_spaced_parameters(const Curve2& curve, double u0, d
             }
             u.push_back(in.b.u);
             cumulative.push_back(cumulative.back() + (std::isfinite(mid.s) ? length / mid.s : 0.0));
+            // Over the budget as the integral grows: each sample costs a size evaluation (a
+            // background mesh's point location), so a size asking for millions of points is
+            // refused at the budget, not after 2^24 samples (fuzz_adaptation_2d,
+            // tests/data/fuzz/adaptation_2d_oom_narrow.bin: 87 s).
+            if (max_points != 0 && cumulative.back() > static_cast<double>(max_points) + 1)
+                check_piece_count(cumulative.back(), curve, u0, size, max_points);
             // A size far below its values at the start intervals' ends would bisect for minutes
             // before the piece count's check: the samples are capped as the uniform sampling's.
             if (u.size() > std::size_t{1} << 24) {
@@ -151,7 +170,7 @@ std::vector<double> adaptive_spaced_parameters(const Curve2& curve, double u0, d
             }
         }
         left = right;
-        check_piece_count(cumulative.back(), curve, u0, size);
+        check_piece_count(cumulative.back(), curve, u0, size, max_points);
     }
     const int pieces = std::max(min_pieces, static_cast<int>(std::ceil(cumulative.back() - 1e-9)));
     return equal_integral_parameters(u, cumulative, pieces, u0, u1);
@@ -489,7 +508,7 @@ DomainBoundary2 discretize_domain_boundary(const tri::Pslg& pslg, const SizeFunc
 
 namespace {
 DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& piece_size,
-                           bool adaptive);
+                           bool adaptive, std::uint64_t max_points);
 }  // namespace
 
 void restore_input_terms(const DomainBoundary2& boundary, tri::Cdt2Result& mesh) {
@@ -523,22 +542,25 @@ void restore_input_terms(const DomainBoundary2& boundary, tri::Cdt2Result& mesh)
     mesh.counters.delaunay_flips += flips;
 }
 
-DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size) {
+DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size,
+                                           std::uint64_t max_points) {
     // A steep size (graded down to fine features) is sampled adaptively: the uniform samples,
     // about 16 per piece at the ends' sizes, step over a dip to 1e-12 beside a free vertex.
     return discretize(
-        domain, [&size](const double*, const double*) { return size; }, size.is_steep());
+        domain, [&size](const double*, const double*) { return size; }, size.is_steep(),
+        max_points);
 }
 
 DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain,
-                                           const PieceSizeFunction& piece_size) {
-    return discretize(domain, piece_size, true);
+                                           const PieceSizeFunction& piece_size,
+                                           std::uint64_t max_points) {
+    return discretize(domain, piece_size, true, max_points);
 }
 
 namespace {
 
 DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& piece_size,
-                           bool adaptive) {
+                           bool adaptive, std::uint64_t max_points) {
     const tri::Pslg& pslg = domain.pslg();
     const tri::Cdt2Options& options = domain.domain_options();
     DomainBoundary2 boundary;
@@ -573,6 +595,7 @@ DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& p
         piece_keys.insert(undirected_key(pieces[2 * p], pieces[2 * p + 1]));
     std::vector<bool> bent_around(mesh.triangle_count(), false);
 
+    std::uint64_t placed = 0;  // new boundary points so far (max_points)
     // Points along u - v spaced by the size (ends included); the first sample count estimated
     // from the sizes at the ends and the middle.
     const auto spaced = [&](tri::VertIdx u, tri::VertIdx v, std::uint32_t segment) {
@@ -605,9 +628,19 @@ DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& p
         const int samples = static_cast<int>(std::clamp(16 * estimate + 16, 16.0, double{1 << 24}));
         std::vector<Point> points;
         const std::vector<double> parameters =
-            adaptive ? adaptive_spaced_parameters(line, 0.0, 1.0, size, 1)
-                     : spaced_parameters(line, 0.0, 1.0, size, 1, samples);
+            adaptive ? adaptive_spaced_parameters(line, 0.0, 1.0, size, 1, max_points)
+                     : spaced_parameters(line, 0.0, 1.0, size, 1, samples, max_points);
         for (const double t : parameters) points.push_back(line(t));
+        // The points of every piece so far against the budget (each piece's sampling stops at
+        // the whole budget).
+        placed += points.size() - 2;
+        if (max_points != 0 && placed > max_points) {
+            throw InputError("boundary discretization: the size function asks for more than " +
+                             std::to_string(max_points) +
+                             " boundary points, over the Steiner point budget (" + std::to_string(placed) +
+                             " by segment " + std::to_string(segment + options.first_index) +
+                             "): give a larger size or raise --max-steiner");
+        }
         return points;
     };
     const auto append = [&](std::vector<tri::VertIdx>& chain, const std::vector<Point>& kept) {

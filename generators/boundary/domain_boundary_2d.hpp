@@ -71,7 +71,11 @@ DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
                                            const SizeFunction& size,
                                            const triangulation::Cdt2Options& cdt = {});
 /// The same from the domain's triangulation, built once (MeshDomain2::triangulation, copied).
-DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size);
+/// @param max_points the generator's Steiner budget (0: none but the 2^30 pieces and 2^24
+///        samples per segment): a size asking for more new boundary points is refused with an
+///        InputError as soon as the sampling's integral passes it.
+DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size,
+                                           std::uint64_t max_points = 0);
 
 /// A mesh built over the boundary's points and pieces (a new PSLG: the frontal and metric
 /// generators) put back into the input's terms: its pieces' input segments, its vertex count, its
@@ -89,7 +93,8 @@ using PieceSizeFunction = std::function<SizeFunction(const double* a, const doub
 /// The same discretization with the size of each piece given by piece_size(a, b) (a and b its
 /// ends' coordinates); the isotropic overload passes the same size for every piece.
 DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain,
-                                           const PieceSizeFunction& piece_size);
+                                           const PieceSizeFunction& piece_size,
+                                           std::uint64_t max_points = 0);
 
 /// Per vertex of a domain's CDT (constrained_delaunay_2d with the exterior removed): the mean
 /// length of the boundary pieces at it (of all its edges where no piece ends there; 0 for a

@@ -770,8 +770,8 @@ AdvancingFrontResult2 advancing_front_2d(const tri::Pslg& pslg,
 AdvancingFrontResult2 advancing_front_2d(const MeshDomain2& domain,
                                          const AdvancingFrontOptions2& options) {
     validate(options);
-    return advancing_front_from_boundary_2d(discretize_domain_boundary(domain, options.size),
-                                            options);
+    return advancing_front_from_boundary_2d(
+        discretize_domain_boundary(domain, options.size, options.max_boundary_points), options);
 }
 
 AdvancingFrontResult2 advancing_front_from_boundary_2d(const DomainBoundary2& boundary,

@@ -67,6 +67,10 @@ struct AdvancingFrontOptions2 {
     /// (0: automatic, 8 times the count the size function asks for on the domain, plus 4 per
     /// boundary edge and 4096).
     std::uint64_t max_triangles = 0;
+    /// A size asking for more new boundary points than this is refused (InputError) as the
+    /// boundary is sampled (0: no limit but the discretization's own); the front's own budget
+    /// above closes the front instead. The registry passes --max-steiner.
+    std::uint64_t max_boundary_points = 0;
     /// The initial constrained Delaunay triangulation of the PSLG (domain_boundary_2d).
     triangulation::Cdt2Options cdt;
 };

@@ -645,7 +645,8 @@ AdvancingFrontDelaunayResult2 advancing_front_delaunay_2d(
         throw InputError("advancing front Delaunay: placement tolerance " +
                          std::to_string(options.placement_tolerance) + " is not in (0, 1)");
     }
-    const DomainBoundary2 boundary = discretize_domain_boundary(domain, options.size);
+    const DomainBoundary2 boundary =
+        discretize_domain_boundary(domain, options.size, options.max_boundary_points);
     AdvancingFrontDelaunayResult2 result;
     std::uint64_t budget = options.max_new_points;
     const std::uint64_t room = std::uint64_t{kNone} / 4 - boundary.xy.size() / 2;

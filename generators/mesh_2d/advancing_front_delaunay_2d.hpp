@@ -49,6 +49,10 @@ struct AdvancingFrontDelaunayOptions2 {
     /// Stop placing points after this many (0: automatic, 8 times the estimated element count
     /// plus 10^5); the remaining front is then closed by constrained Delaunay triangulation.
     std::uint64_t max_new_points = 0;
+    /// A size asking for more new boundary points than this is refused (InputError) as the
+    /// boundary is sampled (0: no limit but the discretization's own); the front's own budget
+    /// above closes the front instead. The registry passes --max-steiner.
+    std::uint64_t max_boundary_points = 0;
     /// The domain's constrained Delaunay triangulation (recovery Swap or Cavity).
     triangulation::Cdt2Options cdt;
 };

@@ -235,6 +235,7 @@ MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& give
     // The shared budget counts Steiner points; a triangle adds about half a point.
     front.max_triangles =
         std::min(options.max_steiner_points, std::numeric_limits<std::uint64_t>::max() / 2) * 2;
+    front.max_boundary_points = options.max_steiner_points;
     front.cdt = options.cdt;
     AdvancingFrontResult2 result = advancing_front_2d(domain, front);
     if (result.counters.closure_triangles > 0) {
@@ -251,6 +252,7 @@ MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptio
     AdvancingFrontDelaunayOptions2 front;
     front.size = options.size;
     front.max_new_points = options.max_steiner_points;
+    front.max_boundary_points = options.max_steiner_points;
     front.cdt = options.cdt;
     AdvancingFrontDelaunayResult2 result = advancing_front_delaunay_2d(domain, front);
     if (result.counters.closure_triangles > 0) {

@@ -774,7 +774,7 @@ MetricDelaunayResult2 metric_delaunay_2d(const MeshDomain2& domain,
                     return 1.0 / metric_length(field(x, y), u[0], u[1]);
                 },
                 "the metric's size along a boundary piece");
-        });
+        }, options.max_steiner_points);
     const std::uint64_t boundary_points = boundary.xy.size() / 2 - boundary.cdt.mesh.xy.size() / 2;
     // The means' memo: a small direct-mapped table (2^10 slots, 56 kB) that stays in the
     // first-level caches. Callgrind counted 32% fewer instructions with 64 slots per estimated

@@ -489,7 +489,8 @@ MinMaxFrontResult2 min_max_front_2d(const MeshDomain2& domain, const MinMaxFront
         options.size.bounded() ? options.size : graded_size_from_boundary(domain);
 
     // Step 1: the boundary split to the size, its constrained Delaunay triangulation.
-    const DomainBoundary2 boundary = discretize_domain_boundary(domain, size);
+    const DomainBoundary2 boundary =
+        discretize_domain_boundary(domain, size, options.max_steiner_points);
     counters.boundary_points = boundary.xy.size() / 2 - boundary.cdt.mesh.xy.size() / 2;
     const tri::Pslg& pslg = domain.pslg();
     // As the frontal and metric generators build it (a vertex within rounding of a piece

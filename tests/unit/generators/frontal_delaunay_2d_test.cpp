@@ -364,9 +364,19 @@ TEST(Generators_FrontalDelaunay, SubnormalPointsWithoutSegmentsAreAClearError) {
 TEST(Generators_FrontalDelaunay, BudgetStopsWithGeometryError) {
     const Input square = polygon({0, 0, 1, 0, 1, 1, 0, 1});
     gen::FrontalDelaunayOptions2 options;
-    options.size = gen::SizeFunction::uniform(0.01);
+    // 76 boundary points within the budget of 100, about 400 inside: the front's error.
+    options.size = gen::SizeFunction::uniform(0.05);
     options.max_steiner_points = 100;
     EXPECT_THROW(gen::frontal_delaunay_2d(square.pslg(), options), em::GeometryError);
+    // 396 boundary points: refused as the boundary is sampled, naming the budget.
+    options.size = gen::SizeFunction::uniform(0.01);
+    try {
+        gen::frontal_delaunay_2d(square.pslg(), options);
+        ADD_FAILURE() << "meshed over the budget";
+    } catch (const em::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("more than 100 boundary points"), std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(Generators_FrontalDelaunay, CounterListNamesEveryCounter) {
