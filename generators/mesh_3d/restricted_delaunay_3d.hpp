@@ -130,35 +130,8 @@ class RestrictedDelaunay3 {
             planes_.push_back(triangulation::facet_plane(plc, facet));
         // Each facet's largest input triangle: the plane its Steiner points must lie on within
         // rounding (its first corners may be within rounding of collinear).
-        // Areas as (exponent, mantissa) of the cross product on differences scaled by a power
-        // of two: compared exactly alike for the PLC scaled by 2^k (no square overflows).
-        facet_triangle_.assign(plc.facets.size(), {kNone, kNone, kNone});
-        std::vector<std::pair<long, double>> largest_area(plc.facets.size(), {LONG_MIN, 0.0});
-        const triangulation::SurfaceTriangles3 triangles = triangulation::triangulate_facets_3d(plc);
-        for (std::uint32_t t = 0; t < triangles.triangle_count(); ++t) {
-            const VertIdx* c = &triangles.triangles[3 * std::size_t{t}];
-            const double *a = plc.point(c[0]), *b = plc.point(c[1]), *d = plc.point(c[2]);
-            double u[3], w[3], largest = 0;
-            for (int k = 0; k < 3; ++k) {
-                u[k] = b[k] - a[k], w[k] = d[k] - a[k];
-                largest = std::max({largest, std::fabs(u[k]), std::fabs(w[k])});
-            }
-            const int shift = predicates::unit_shift(largest);
-            const predicates::PowerOfTwo unit(shift);
-            for (int k = 0; k < 3; ++k) u[k] = unit(u[k]), w[k] = unit(w[k]);
-            const double normal[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
-                                      u[0] * w[1] - u[1] * w[0]};
-            const double scaled = std::fabs(normal[0]) + std::fabs(normal[1]) + std::fabs(normal[2]);
-            int exponent = 0;
-            const double mantissa = std::frexp(scaled, &exponent);
-            const std::pair<long, double> area{scaled > 0 ? long{exponent} - 2L * shift : LONG_MIN,
-                                               mantissa};
-            const std::uint32_t f = triangles.facets[t];
-            if (facet_triangle_[f][0] == kNone || area > largest_area[f]) {
-                largest_area[f] = area;
-                facet_triangle_[f] = {c[0], c[1], c[2]};
-            }
-        }
+        facet_triangle_ = triangulation::facet_largest_triangles_3d(
+            plc, triangulation::triangulate_facets_3d(plc));
         vertex_segments_.resize(out_.input_vertex_count);
         for (std::uint32_t s = 0; 2 * s + 1 < out_.segments.size(); ++s) {
             vertex_segments_[out_.segments[2 * s]].push_back(s);
@@ -649,8 +622,14 @@ class RestrictedDelaunay3 {
         for (const TetIdx t : cavity_) {
             for (unsigned k = 0; k < 4; ++k) {
                 const FaceIdx g = m_.adj[4 * t + k];
-                const Key3 key = face_key(t, k);
+                const unsigned* lf = kFaceVertex[k];
                 if (g != kNone && in_attempt(triangulation::tet_of(g))) {
+                    // A face inside the cavity matters only as a subface, whose corners are
+                    // all on the surface: most are not, and need no sorted key.
+                    if (!on_boundary(m_.vertex(t, lf[0])) || !on_boundary(m_.vertex(t, lf[1])) ||
+                        !on_boundary(m_.vertex(t, lf[2])))
+                        continue;
+                    const Key3 key = face_key(t, k);
                     if (is_subface_key(key) && !is_split_face(split, key)) {
                         // The batch first; the crossing is met again next round if it stays.
                         if (!violations_.empty()) return violations_.front();
@@ -659,8 +638,8 @@ class RestrictedDelaunay3 {
                     }
                     continue;
                 }
+                const Key3 key = face_key(t, k);
                 if (is_split_face(split, key)) continue;  // a boundary subface being split
-                const unsigned* lf = kFaceVertex[k];
                 if (predicates::orient3d(point(m_.vertex(t, lf[0])), point(m_.vertex(t, lf[1])),
                                          point(m_.vertex(t, lf[2])), p) != Sign::Positive) {
                     const TetIdx bad = removable(t);
@@ -672,7 +651,10 @@ class RestrictedDelaunay3 {
                     break;  // t goes: its other faces need no look
                 }
                 for (unsigned i = 0; i < 3; ++i) {
-                    boundary_edges.emplace(edge_key(key[i], key[(i + 1) % 3]), 0);
+                    // Only edges of two surface vertices are looked up below (a kept edge's
+                    // ends are on the surface): a cavity inside the volume hashes none.
+                    if (on_boundary(key[i]) && on_boundary(key[(i + 1) % 3]))
+                        boundary_edges.emplace(edge_key(key[i], key[(i + 1) % 3]), 0);
                     boundary_vertex_mark_[key[i]] = boundary_epoch_;
                 }
             }

@@ -165,37 +165,35 @@ ConformingMeshReading3 conforming_mesh_from_faces_3d(const Plc3& plc, Tetrahedra
     // A facet vertex lies within rounding of its facet's plane: the projection test alone
     // would take (1, 0.5, 0.5) for a point of the facet y = 0. In doubles, on differences
     // scaled by a power of two; a reading, not a decision the check rests on.
-    // The plane of each facet from its largest input triangle: the first three non-collinear
-    // corners can be within rounding of collinear (a free vertex attached to an edge), where
-    // their cross product is rounding noise.
+    // The plane of each facet from its largest input triangle (facet_largest_triangles_3d, as
+    // Delaunay refinement's): the first three non-collinear corners can be within rounding of
+    // collinear (a free vertex attached to an edge), where their cross product is rounding noise.
+    const std::vector<std::array<VertIdx, 3>> largest_triangle =
+        facet_largest_triangles_3d(plc, triangles);
     std::vector<std::array<double, 6>> plane_of(plc.facets.size());  // unit normal, a point
     for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
-        double best = -1;
-        for (const std::uint32_t t : triangles_of[f]) {
-            const VertIdx* c = &triangles.triangles[3 * std::size_t{t}];
-            const double* a = plc.point(c[0]);
-            const double* b = plc.point(c[1]);
-            const double* d = plc.point(c[2]);
-            double u[3], w[3], largest = 0;
-            for (int k = 0; k < 3; ++k) {
-                u[k] = b[k] - a[k];
-                w[k] = d[k] - a[k];
-                largest = std::max({largest, std::fabs(u[k]), std::fabs(w[k])});
-            }
-            if (!(largest > 0)) continue;
-            const int e = std::ilogb(largest);
-            for (int k = 0; k < 3; ++k) {
-                u[k] = std::ldexp(u[k], -e);
-                w[k] = std::ldexp(w[k], -e);
-            }
-            const double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
-                                   u[0] * w[1] - u[1] * w[0]};
-            const double length = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
-            // Compared at the triangle's own scale: its area relative to its longest edge.
-            if (!(length > best)) continue;
-            best = length;
-            plane_of[f] = {nrm[0] / length, nrm[1] / length, nrm[2] / length, a[0], a[1], a[2]};
+        const VertIdx* c = largest_triangle[f].data();
+        if (c[0] == kNone) continue;
+        const double* a = plc.point(c[0]);
+        const double* b = plc.point(c[1]);
+        const double* d = plc.point(c[2]);
+        double u[3], w[3], largest = 0;
+        for (int k = 0; k < 3; ++k) {
+            u[k] = b[k] - a[k];
+            w[k] = d[k] - a[k];
+            largest = std::max({largest, std::fabs(u[k]), std::fabs(w[k])});
         }
+        if (!(largest > 0)) continue;
+        const int e = std::ilogb(largest);
+        for (int k = 0; k < 3; ++k) {
+            u[k] = std::ldexp(u[k], -e);
+            w[k] = std::ldexp(w[k], -e);
+        }
+        const double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                               u[0] * w[1] - u[1] * w[0]};
+        const double length = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+        if (!(length > 0)) continue;
+        plane_of[f] = {nrm[0] / length, nrm[1] / length, nrm[2] / length, a[0], a[1], a[2]};
     }
     // The distance of v from facet f's plane over the magnitude of the coordinates involved.
     const auto plane_distance = [&](std::uint32_t f, VertIdx v) {

@@ -6,6 +6,7 @@
 #include "triangulation/recovery_3d/plc_3d.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <array>
 #include <cmath>
 #include <initializer_list>
@@ -19,6 +20,7 @@
 #include "base/number_text.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/orient3d.hpp"
+#include "predicates/power_of_two.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 #include "triangulation/mesh/facet_projection_3d.hpp"
 
@@ -1210,6 +1212,38 @@ PlcSegments3 plc_segments_3d(const Plc3& plc) {
         }
     }
     return out;
+}
+
+std::vector<std::array<VertIdx, 3>> facet_largest_triangles_3d(const Plc3& plc,
+                                                               const SurfaceTriangles3& surface) {
+    std::vector<std::array<VertIdx, 3>> largest_triangle(plc.facets.size(),
+                                                         {kNone, kNone, kNone});
+    std::vector<std::pair<long, double>> largest_area(plc.facets.size(), {LONG_MIN, 0.0});
+    for (std::uint32_t t = 0; t < surface.triangle_count(); ++t) {
+        const VertIdx* c = &surface.triangles[3 * std::size_t{t}];
+        const double *a = plc.point(c[0]), *b = plc.point(c[1]), *d = plc.point(c[2]);
+        double u[3], w[3], largest = 0;
+        for (int k = 0; k < 3; ++k) {
+            u[k] = b[k] - a[k], w[k] = d[k] - a[k];
+            largest = std::max({largest, std::fabs(u[k]), std::fabs(w[k])});
+        }
+        const int shift = predicates::unit_shift(largest);
+        const predicates::PowerOfTwo unit(shift);
+        for (int k = 0; k < 3; ++k) u[k] = unit(u[k]), w[k] = unit(w[k]);
+        const double normal[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                                  u[0] * w[1] - u[1] * w[0]};
+        const double scaled = std::fabs(normal[0]) + std::fabs(normal[1]) + std::fabs(normal[2]);
+        int exponent = 0;
+        const double mantissa = std::frexp(scaled, &exponent);
+        const std::pair<long, double> area{scaled > 0 ? long{exponent} - 2L * shift : LONG_MIN,
+                                           mantissa};
+        const std::uint32_t f = surface.facets[t];
+        if (largest_triangle[f][0] == kNone || area > largest_area[f]) {
+            largest_area[f] = area;
+            largest_triangle[f] = {c[0], c[1], c[2]};
+        }
+    }
+    return largest_triangle;
 }
 
 }  // namespace exactmesh::triangulation

@@ -50,6 +50,16 @@ void validate_plc_3d_input(const Plc3& plc);
 ///         a polygon edge, a corner outside the facet's area (a dangling point or segment).
 SurfaceTriangles3 triangulate_facets_3d(const Plc3& plc);
 
+/// Per facet, its input triangle (of `surface`) of largest area, or {kNone, kNone, kNone} for a
+/// facet with none: the plane a facet's Steiner points must lie on within rounding, where its
+/// first corners may be within rounding of collinear (a free vertex attached to an edge). Areas
+/// are compared as (exponent, mantissa) of the cross product's 1-norm on differences scaled by
+/// a power of two: exactly alike for the PLC scaled by 2^k, no square overflows; ties keep the
+/// first triangle. Used by Delaunay refinement (its facet planes) and by the reading of a mesh
+/// back onto the PLC (conforming_mesh_from_faces_3d), so both measure against the same plane.
+std::vector<std::array<VertIdx, 3>> facet_largest_triangles_3d(const Plc3& plc,
+                                                               const SurfaceTriangles3& surface);
+
 /// Throws InputError naming the two facets (and their triangles) when two surface triangles of
 /// different facets meet other than in a shared vertex or a shared edge. Exact (orient3d, and
 /// orient2d on a projection for coplanar pairs); a uniform grid limits the pairs tested.
