@@ -538,14 +538,25 @@ TEST(Issue15, issue_15_subface_circumcentres_stay_on_their_facet) {
                 tri::check_boundary_conformity_3d(plc, refined.mesh);
             EXPECT_TRUE(report.ok) << name << exponent << " " << report.problem;
             // A facet vertex moved 2^-30 of its coordinates off its facet fails the check.
+            // The check names that vertex and the plane, not some other problem the move made.
             tri::ConformingMesh3 moved = refined.mesh;
+            tri::VertIdx spoilt = tri::kNone;
             for (tri::VertIdx v = moved.input_vertex_count; v < moved.mesh.vertex_count(); ++v) {
                 if (moved.vertex_feature[v] != tri::VertexFeature3::Facet) continue;
                 double* x = &moved.mesh.xyz[3 * std::size_t{v}];
                 x[0] += std::ldexp(std::fabs(x[0]) + std::fabs(x[1]) + std::fabs(x[2]), -30);
+                spoilt = v;
                 break;
             }
-            EXPECT_FALSE(tri::check_boundary_conformity_3d(plc, moved).ok) << name << exponent;
+            ASSERT_NE(spoilt, tri::kNone) << name << exponent;
+            const tri::BoundaryConformityReport3 spoilt_report =
+                tri::check_boundary_conformity_3d(plc, moved);
+            EXPECT_FALSE(spoilt_report.ok) << name << exponent;
+            EXPECT_NE(spoilt_report.problem.find("facet vertex " + std::to_string(spoilt) + " "),
+                      std::string::npos)
+                << name << exponent << " " << spoilt_report.problem;
+            EXPECT_NE(spoilt_report.problem.find("plane beyond rounding"), std::string::npos)
+                << name << exponent << " " << spoilt_report.problem;
         }
     }
 }

@@ -97,6 +97,14 @@ TEST(Triangulation_ConformingMeshFromFaces3d, AttachedFreeVerticesAndTurnedFacet
     EXPECT_EQ(read_back(plc, refined(plc, 0.003)), "");
 }
 
+/// Whether `problem` names vertex v inside a face's parentheses ("(a, b, v)").
+bool names_vertex(const std::string& problem, VertIdx v) {
+    const std::string n = std::to_string(v);
+    for (const std::string& form : {"(" + n + ",", " " + n + ",", " " + n + ")"})
+        if (problem.find(form) != std::string::npos) return true;
+    return false;
+}
+
 TEST(Triangulation_ConformingMeshFromFaces3d, SpoiltMeshesFail) {
     Plc3 plc = gen::sample_domain_3d(gen::SampleDomain3::BoxWithHole);
     prepare_plc_for_meshing_3d(plc);
@@ -105,36 +113,47 @@ TEST(Triangulation_ConformingMeshFromFaces3d, SpoiltMeshesFail) {
     // A facet vertex moved off its facet (inward, by a hundredth): its faces lie on no facet.
     {
         ConformingMesh3 moved = good;
+        VertIdx spoilt = kNone;
         for (VertIdx v = good.input_vertex_count; v < good.mesh.vertex_count(); ++v) {
             if (good.vertex_feature[v] != VertexFeature3::Facet) continue;
             for (int k = 0; k < 3; ++k) {
                 double& x = moved.mesh.xyz[3 * std::size_t{v} + static_cast<unsigned>(k)];
                 x = 0.99 * x + 0.005;
             }
+            spoilt = v;
             break;
         }
-        EXPECT_NE(read_back(plc, moved), "");
+        ASSERT_NE(spoilt, kNone);
+        // The problem named is a face of the moved vertex that lies on no facet.
+        const std::string problem = read_back(plc, moved);
+        EXPECT_NE(problem.find("lies on no facet"), std::string::npos) << problem;
+        EXPECT_TRUE(names_vertex(problem, spoilt)) << spoilt << ": " << problem;
     }
     // A subface left out of the faces: a boundary face that is no subface.
     {
         ConformingMesh3 fewer = good;
         fewer.subfaces.resize(fewer.subfaces.size() - 3);
-        EXPECT_NE(read_back(plc, fewer), "");
+        const std::string problem = read_back(plc, fewer);
+        EXPECT_NE(problem.find("facet"), std::string::npos) << problem;
     }
     // A face that lies on no facet: one through a vertex inside the domain.
     {
         ConformingMesh3 extra = good;
         bool added = false;
+        VertIdx inner = kNone;
         for (std::size_t t = 0; 4 * t < good.mesh.tets.size() && !added; ++t) {
             const VertIdx* v = &good.mesh.tets[4 * t];
             for (unsigned k = 0; k < 4 && !added; ++k) {
                 if (good.vertex_feature[v[k]] != VertexFeature3::Volume) continue;
                 extra.subfaces.insert(extra.subfaces.end(), {v[k], v[(k + 1) % 4], v[(k + 2) % 4]});
+                inner = v[k];
                 added = true;
             }
         }
         ASSERT_TRUE(added);
-        EXPECT_NE(read_back(plc, extra), "");
+        const std::string problem = read_back(plc, extra);
+        EXPECT_NE(problem.find("lies on no facet"), std::string::npos) << problem;
+        EXPECT_TRUE(names_vertex(problem, inner)) << inner << ": " << problem;
     }
     // A tetrahedron left out: a hole in the mesh, whose faces are no subfaces.
     {
@@ -142,7 +161,8 @@ TEST(Triangulation_ConformingMeshFromFaces3d, SpoiltMeshesFail) {
         holed.mesh.tets.erase(holed.mesh.tets.begin(), holed.mesh.tets.begin() + 4);
         holed.mesh.neighbors.clear();
         link_neighbors_3d(holed.mesh);
-        EXPECT_NE(read_back(plc, holed), "");
+        const std::string problem = read_back(plc, holed);
+        EXPECT_NE(problem.find("is not a mesh face"), std::string::npos) << problem;
     }
 }
 
