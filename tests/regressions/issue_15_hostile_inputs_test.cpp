@@ -24,6 +24,7 @@
 #include "triangulation/checks/quality_3d.hpp"
 #include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
 #include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
+#include "triangulation/recovery_3d/conforming_mesh_from_faces_3d.hpp"
 #include "triangulation/recovery_3d/plc_3d.hpp"
 
 namespace {
@@ -557,6 +558,30 @@ TEST(Issue15, issue_15_subface_circumcentres_stay_on_their_facet) {
                 << name << exponent << " " << spoilt_report.problem;
             EXPECT_NE(spoilt_report.problem.find("plane beyond rounding"), std::string::npos)
                 << name << exponent << " " << spoilt_report.problem;
+        }
+    }
+}
+
+// `exactmesh check` read the refined meshes of a cube with free vertices 1e-14 from an edge as
+// not conforming ("subface ... is not oriented like facet 1"): its reading took a facet point
+// 1.03e-14 off the edge for a point of the edge (64 units in the last place were accepted) and
+// the strip of faces along the edge for faces of the other facet. Read back from the vertices,
+// tetrahedra and subfaces alone (as from the files), the meshes now pass, at every scale.
+TEST(Issue15, issue_15_check_reads_facet_points_beside_an_edge) {
+    for (const int exponent : {0, 300, -300}) {
+        std::vector<tri::VertIdx> attached;
+        const tri::Plc3 plc =
+            rotated_cube("cube_free_vertices_1e-14_off_an_edge.poly", exponent, attached,
+                         "hostile_3d");
+        for (const double volume : {0.01, 0.001}) {
+            const Meshed3 meshed = mesh_with_volume_bound(plc, std::ldexp(volume, 3 * exponent));
+            ASSERT_TRUE(tri::check_boundary_conformity_3d(plc, meshed.mesh).ok) << exponent;
+            const tri::ConformingMeshReading3 reading =
+                tri::conforming_mesh_from_faces_3d(plc, meshed.mesh.mesh, meshed.mesh.subfaces);
+            EXPECT_EQ(reading.problem, "") << exponent << " " << volume;
+            const tri::BoundaryConformityReport3 report =
+                tri::check_boundary_conformity_3d(plc, reading.mesh);
+            EXPECT_TRUE(report.ok) << exponent << " " << volume << " " << report.problem;
         }
     }
 }

@@ -21,16 +21,24 @@ namespace {
 
 using predicates::Sign;
 
-/// The distance from w to the line through a and b, in doubles on differences scaled by a
-/// power of two (a reading of which segment a point is on, not a decision of the check).
-double line_distance(const double* w, const double* a, const double* b) {
-    double d[3], u[3], largest = 0;
+/// Whether w lies on the line through a and b up to its own rounding and the rounding of the
+/// test (a reading of which segment a point is on, not a decision of the check). In doubles on
+/// differences scaled by a power of two: a point rounded once from the line is within
+/// 0.87 ulp(|w|) <= 2^-52 |w|_max sqrt 3 of it; the computed distance errs by a few units of
+/// |w - a| (the differences' and the cross product's rounding). Accepted: 2^-50 |w|_max +
+/// 2^-48 |w - a|_max. The former bound, 2^-46 |w|_max, took a facet point 1.03e-14 off a unit
+/// cube's edge for a point of it (cube_free_vertices_1e-14_off_an_edge.poly) and could miss a
+/// point near the origin on a long segment.
+bool on_segment_line(const double* w, const double* a, const double* b) {
+    double d[3], u[3], largest = 0, reach = 0, magnitude = 0;
     for (int k = 0; k < 3; ++k) {
         d[k] = b[k] - a[k];
         u[k] = w[k] - a[k];
         largest = std::max({largest, std::fabs(d[k]), std::fabs(u[k])});
+        reach = std::max(reach, std::fabs(u[k]));
+        magnitude = std::max(magnitude, std::fabs(w[k]));
     }
-    if (!(largest > 0)) return 0;
+    if (!(largest > 0)) return true;
     const int e = std::ilogb(largest);
     for (int k = 0; k < 3; ++k) {
         d[k] = std::ldexp(d[k], -e);
@@ -39,7 +47,11 @@ double line_distance(const double* w, const double* a, const double* b) {
     const double c[3] = {u[1] * d[2] - u[2] * d[1], u[2] * d[0] - u[0] * d[2],
                          u[0] * d[1] - u[1] * d[0]};
     const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    return std::ldexp(std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / length, e);
+    const double distance = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / length;
+    // In units of 2^e: the bound's terms scaled alike (no underflow of the small one matters:
+    // it only loosens the test by the smallest subnormal).
+    const double bound = std::ldexp(magnitude, -50 - e) + std::ldexp(reach, -48 - e);
+    return distance <= bound;
 }
 
 std::string face_text(const VertIdx* f) {
@@ -123,8 +135,7 @@ ConformingMeshReading3 conforming_mesh_from_faces_3d(const Plc3& plc, Tetrahedra
         }
     }
     // Each segment's chain: its ends and the vertices within rounding of it that lie on its
-    // line up to a few units in the last place (2^-46 of their coordinates: rounded points of
-    // the segment), in order along its largest coordinate. A facet point merely within
+    // line up to their rounding (on_segment_line: rounded points of the segment), in order along its largest coordinate. A facet point merely within
     // rounding of a segment beside it (refinement near a small angle puts some there, farther
     // from the line than that) stays a facet vertex.
     std::vector<std::vector<VertIdx>> chains(segment_count);
@@ -135,8 +146,7 @@ ConformingMeshReading3 conforming_mesh_from_faces_3d(const Plc3& plc, Tetrahedra
         std::vector<VertIdx>& chain = chains[s];
         for (const VertIdx v : near_segments[s]) {
             const double* w = mesh.point(v);
-            const double m = std::max({std::fabs(w[0]), std::fabs(w[1]), std::fabs(w[2])});
-            if (line_distance(w, pa, pb) <= std::ldexp(m, -46)) chain.push_back(v);
+            if (on_segment_line(w, pa, pb)) chain.push_back(v);
         }
         int axis = 0;
         for (int k = 1; k < 3; ++k)
@@ -282,6 +292,12 @@ ConformingMeshReading3 conforming_mesh_from_faces_3d(const Plc3& plc, Tetrahedra
                 if (v >= inputs && cm.vertex_feature[v] == VertexFeature3::Facet &&
                     (cm.feature_index[v] == kNone || cm.feature_index[v] == f)) {
                     ok = holds(f, v);
+                    distance = std::max(distance, plane_distance(f, v));
+                } else if (v >= inputs && cm.vertex_feature[v] == VertexFeature3::Segment) {
+                    // A segment vertex counts too: read within rounding of a segment, it may
+                    // lie 1e-14 off it on one of the segment's facets, and a face of three such
+                    // vertices (a strip along a cube's edge beside a free vertex as close to it,
+                    // cube_free_vertices_1e-14_off_an_edge.poly) took the first facet.
                     distance = std::max(distance, plane_distance(f, v));
                 }
             }
