@@ -106,14 +106,17 @@ bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
     mesh_options.cdt = domain.cdt;
     const bool budget = options.max_vertices > 0;
     const double most = static_cast<double>(options.max_vertices);
-    // The generator's own budget far above the reruns' reach (they scale the size for counts up
-    // to a few times the budget): a size that asks for more, as a steep grading to fine
-    // features can along the boundary, ends in the generator's error at once, not after
+    // The generator's boundary at twice the vertex budget (a boundary asking for more could
+    // not be brought under it by the reruns): a size that asks for more, as a steep grading to
+    // fine features can along the boundary, ends in the generator's error at once, not after
     // millions of size evaluations (fuzz_adaptation_2d, tests/data/fuzz/
-    // adaptation_2d_oom_narrow.bin).
+    // adaptation_2d_oom_narrow.bin: 87 s). Its Steiner budget stays automatic: a given one
+    // makes its size check (check_size_budget) sample the size field finely, 2^18 evaluations,
+    // which on that case's background mesh (GMP orientation tests at coordinates 1e-319 to
+    // 1e252) ran out of memory under the fuzzer's sanitizers.
     if (budget)
-        mesh_options.max_steiner_points =
-            std::min<std::uint64_t>(options.max_vertices, std::uint64_t{1} << 58) * 8;
+        mesh_options.max_boundary_points =
+            2 * std::min<std::uint64_t>(options.max_vertices, std::uint64_t{1} << 58);
     double scale = 1;
     if (budget) {
         // The estimate counts triangles of an ideal (equilateral) mesh, a lower bound; a mesh has

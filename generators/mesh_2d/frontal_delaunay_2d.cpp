@@ -473,7 +473,9 @@ FrontalDelaunayResult2 frontal_delaunay_2d(const MeshDomain2& domain,
     FrontalDelaunayOptions2 sized = options;
     sized.size = size_with_region_areas(domain, options.size);
     DomainBoundary2 boundary =
-        discretize_domain_boundary(domain, sized.size, options.max_steiner_points);
+        discretize_domain_boundary(domain, sized.size,
+                                   options.max_boundary_points != 0 ? options.max_boundary_points
+                                                                    : options.max_steiner_points);
     const std::uint64_t boundary_points = boundary.xy.size() / 2 - boundary.cdt.mesh.xy.size() / 2;
     // The rebuilt PSLG's warnings (none but merged duplicates, already reported) are dropped.
     Frontal frontal(domain.pslg(), sized, std::move(boundary), cdt);

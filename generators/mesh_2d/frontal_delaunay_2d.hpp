@@ -59,6 +59,9 @@ struct FrontalDelaunayOptions2 {
     /// Stop with GeometryError after this many Steiner points (0: automatic, at least 10^6 and
     /// 16 times the element count the size function asks for).
     std::uint64_t max_steiner_points = 0;
+    /// A size asking for more new boundary points than this is refused (InputError) as the
+    /// boundary is sampled (0: the budget above).
+    std::uint64_t max_boundary_points = 0;
 };
 
 struct FrontalDelaunayCounters2 {

@@ -215,6 +215,12 @@ MeshOptions2 with_fine_features(const MeshDomain2& domain, const MeshOptions2& o
     return graded;
 }
 
+/// MeshOptions2::max_boundary_points, or the Steiner budget when it is 0.
+std::uint64_t boundary_budget(const MeshOptions2& options) {
+    return options.max_boundary_points != 0 ? options.max_boundary_points
+                                            : options.max_steiner_points;
+}
+
 MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& given) {
     const MeshOptions2 options = with_fine_features(domain, given);
     check_size_budget(domain, options, true);
@@ -223,6 +229,7 @@ MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& given) {
     quadtree.cdt = options.cdt;
     // The shared budget counts Steiner points; a leaf adds about one vertex.
     quadtree.max_leaves = options.max_steiner_points;
+    quadtree.max_boundary_points = options.max_boundary_points;
     QuadtreeResult2 result = quadtree_mesh_2d(domain, quadtree);
     return {std::move(result.mesh), {}, counter_list(result.counters), {}};
 }
@@ -235,7 +242,7 @@ MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& give
     // The shared budget counts Steiner points; a triangle adds about half a point.
     front.max_triangles =
         std::min(options.max_steiner_points, std::numeric_limits<std::uint64_t>::max() / 2) * 2;
-    front.max_boundary_points = options.max_steiner_points;
+    front.max_boundary_points = boundary_budget(options);
     front.cdt = options.cdt;
     AdvancingFrontResult2 result = advancing_front_2d(domain, front);
     if (result.counters.closure_triangles > 0) {
@@ -252,7 +259,7 @@ MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptio
     AdvancingFrontDelaunayOptions2 front;
     front.size = options.size;
     front.max_new_points = options.max_steiner_points;
-    front.max_boundary_points = options.max_steiner_points;
+    front.max_boundary_points = boundary_budget(options);
     front.cdt = options.cdt;
     AdvancingFrontDelaunayResult2 result = advancing_front_delaunay_2d(domain, front);
     if (result.counters.closure_triangles > 0) {
@@ -270,6 +277,7 @@ MeshRun2 run_frontal_delaunay(const MeshDomain2& domain, const MeshOptions2& giv
     FrontalDelaunayOptions2 frontal;
     frontal.size = options.size;
     frontal.max_steiner_points = options.max_steiner_points;
+    frontal.max_boundary_points = options.max_boundary_points;
     frontal.cdt = options.cdt;
     FrontalDelaunayResult2 result = frontal_delaunay_2d(domain, frontal);
     return {std::move(result.mesh), {}, counter_list(result.counters), {}};

@@ -32,6 +32,11 @@ struct MeshOptions2 {
     double min_angle = kGuaranteedMinAngle;  ///< degrees (Delaunay refinement)
     double polish_angle = -1;  ///< Delaunay refinement's polish (RefinementOptions2), -1: automatic
     std::uint64_t max_steiner_points = 0;  ///< 0: the generator's automatic budget
+    /// The most new boundary points a generator that splits the boundary to the size before
+    /// meshing (quadtree, both advancing fronts, frontal) may place, refused as the boundary is
+    /// sampled (0: max_steiner_points). Global remeshing sets it below its generator's Steiner
+    /// budget: each boundary sample is a size evaluation.
+    std::uint64_t max_boundary_points = 0;
     triangulation::Cdt2Options cdt;        ///< numbering, recovery of the initial CDT
     /// The metric field of the stretched generators (issue 14: --metric); none otherwise.
     std::optional<MetricField2> metric;

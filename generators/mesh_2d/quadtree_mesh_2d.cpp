@@ -1079,7 +1079,8 @@ QuadtreeResult2 QuadtreeMesher::run() {
             "clearance in [1/16, 4], corner_clearance 0 or in [1/16, 1/2], band_min_angle in [0, "
             "30], piece_factor 0 or in [1, 64]");
     }
-    boundary_ = discretize_domain_boundary(domain_, o.size, o.max_leaves);
+    boundary_ = discretize_domain_boundary(
+        domain_, o.size, o.max_boundary_points != 0 ? o.max_boundary_points : o.max_leaves);
     // Automatic: 64 leaves per triangle the size asks for and per boundary piece (features
     // between segments refine far below the size: crossings at small angles need thousands),
     // at least 2^16, at most 2^24. A domain whose features are far finer than any such count

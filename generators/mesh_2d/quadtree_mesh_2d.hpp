@@ -73,6 +73,9 @@ struct QuadtreeOptions2 {
     /// InputError when the tree would have more leaves (0: automatic, 64 per triangle the size
     /// asks for (expected_triangle_count) and per boundary piece, in [2^16, 2^24]).
     std::uint64_t max_leaves = 0;
+    /// A size asking for more new boundary points than this is refused (InputError) as the
+    /// boundary is sampled (0: the budget above).
+    std::uint64_t max_boundary_points = 0;
     /// The domain's constrained Delaunay triangulation and the band's (recovery Swap or Cavity).
     triangulation::Cdt2Options cdt;
 };

@@ -2,12 +2,12 @@
 // Issue 11, hostile PSLGs (a campaign of 2026-12-05): fans of segments from one vertex 1e-9 to
 // 1e-3 radians apart, of different lengths, inside a box. Conforming to both sides of such a
 // wedge needs pieces as short as it is wide all along it: 2D Delaunay refinement ran past its
-// budget of 10^6 points (about 4 s; every generator but min-max-front stopped there, since
-// they grade the size with it) and the quadtree past 1.6 10^7 leaves (16 s). Wedges below a
-// degree (narrow_wedges_2d) are now left unresolved: a vertex across one does not encroach, the
-// skinny triangles spanning it stay, and the quadtree does not separate them. Every generator
-// meshes these fans in milliseconds, checked exactly, the same at 2^+-600; a fan 3 degrees apart
-// is resolved as before.
+// budget of 10^6 points (about 4 s), the quadtree past 1.6 10^7 leaves (16 s), and the metric
+// generators' fine-feature grading asked for 10^7 triangles. Wedges below a degree
+// (narrow_wedges_2d) are not separated by the quadtree nor graded to: those generators mesh
+// these fans in milliseconds, checked exactly, the same at 2^+-600. Delaunay refinement
+// resolves them or ends at its budget with its error (a rule leaving them in refinement made a
+// fuzzed adaptation case 450 times slower, and was withdrawn).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "generators/boundary/narrow_wedges_2d.hpp"
-#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
@@ -67,24 +66,20 @@ TEST(Issue11NarrowWedges, issue_11_fans_of_tiny_angles_mesh_with_every_generator
                     if (exponent == 0) triangles = run.mesh.mesh.triangle_count();
                     EXPECT_EQ(run.mesh.mesh.triangle_count(), triangles) << exponent;
                 } catch (const std::exception& e) {
-                    ADD_FAILURE() << exponent << ": " << e.what();
+                    // Delaunay refinement resolves every wedge (its narrow-wedge rule was
+                    // withdrawn: see the README's known gaps) and may end at its budget.
+                    const bool budget = std::string(e.what()).find("Steiner points") !=
+                                        std::string::npos;
+                    EXPECT_TRUE(name == "delaunay-refinement" && budget)
+                        << exponent << ": " << e.what();
                 }
             }
         }
     }
 }
 
-TEST(Issue11NarrowWedges, issue_11_wedges_above_a_degree_are_resolved_as_before) {
-    // Three degrees apart: no narrow wedge, the pieces are split until no vertex encroaches.
-    const em::testing::Input wide = fan(3 * 3.14159265358979323846 / 180, 0);
-    const gen::RefinementResult2 resolved = gen::delaunay_refinement_2d(wide.pslg(), {});
-    EXPECT_EQ(resolved.counters.narrow_wedge_skips, 0u);
-    EXPECT_GT(resolved.counters.segment_splits, 20u);
-    // A thousandth of a radian: narrow, left.
+TEST(Issue11NarrowWedges, issue_11_narrow_wedge_pairs) {
     const em::testing::Input narrow = fan(1e-3, 0);
-    const gen::RefinementResult2 left = gen::delaunay_refinement_2d(narrow.pslg(), {});
-    EXPECT_GT(left.counters.narrow_wedge_skips, 0u);
-    EXPECT_LT(left.counters.steiner_points(), 2000u);
     // The pairs: neighbours within a degree, also across the fan (the first and the last are
     // 3e-3 apart), never a box side.
     std::vector<std::array<tri::VertIdx, 2>> ends;
