@@ -157,8 +157,65 @@ SharpFacets3::SharpFacets3(const tri::ConformingMesh3& mesh, const std::vector<d
         }
         sort_unique(sharp_at_[s]);
     }
+    add_segments_near_facets(mesh, xyz);
+    for (auto& facets : sharp_at_) sort_unique(facets);
     std::sort(pairs_.begin(), pairs_.end());
     pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
+}
+
+void SharpFacets3::add_segments_near_facets(const tri::ConformingMesh3& mesh,
+                                            const std::vector<double>& xyz) {
+    const auto point = [&](tri::VertIdx v) { return xyz.data() + 3 * std::size_t{v}; };
+    const tri::VertIdx inputs = mesh.input_vertex_count;
+    const std::uint32_t segment_count = static_cast<std::uint32_t>(mesh.segments.size() / 2);
+    // The subfaces at each input vertex (their facet's sector there).
+    std::vector<std::vector<std::size_t>> subfaces_at(inputs);
+    for (std::size_t i = 0; 3 * i + 2 < mesh.subfaces.size(); ++i)
+        for (unsigned k = 0; k < 3; ++k)
+            if (mesh.subfaces[3 * i + k] < inputs) subfaces_at[mesh.subfaces[3 * i + k]].push_back(i);
+    // sin^2 of kSegmentFacetDegrees.
+    const double sine = std::sin(kSegmentFacetDegrees * 3.14159265358979323846 / 180);
+    const double sine2 = sine * sine;
+    for (std::uint32_t s = 0; s < segment_count; ++s) {
+        const auto& own = segment_facets_[s];
+        for (unsigned end = 0; end < 2; ++end) {
+            const tri::VertIdx apex = mesh.segments[2 * s + end];
+            const tri::VertIdx other = mesh.segments[2 * s + 1 - end];
+            if (apex >= inputs) continue;
+            for (const std::size_t i : subfaces_at[apex]) {
+                const std::uint32_t f = mesh.subface_facet[i];
+                if (std::find(own.begin(), own.end(), f) != own.end()) continue;
+                unsigned at = 0;
+                while (mesh.subfaces[3 * i + at] != apex) ++at;
+                const double* const p[4] = {point(apex), point(mesh.subfaces[3 * i + (at + 1) % 3]),
+                                            point(mesh.subfaces[3 * i + (at + 2) % 3]),
+                                            point(other)};
+                std::array<double, 3> d[3];
+                if (scaled_differences(p, 4, d) == kCoincident) continue;
+                const auto cross = [](const std::array<double, 3>& u,
+                                      const std::array<double, 3>& v) {
+                    return std::array<double, 3>{u[1] * v[2] - u[2] * v[1],
+                                                 u[2] * v[0] - u[0] * v[2],
+                                                 u[0] * v[1] - u[1] * v[0]};
+                };
+                const auto dot = [](const std::array<double, 3>& u,
+                                    const std::array<double, 3>& v) {
+                    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+                };
+                const std::array<double, 3> n = cross(d[0], d[1]);
+                // The segment's direction over the subface's sector (seen along n), at less
+                // than the angle from its plane. (Beside the sector, within the angle of one of
+                // its sides, is not counted: that is a segment at a small angle to the side,
+                // whose encroachment narrow_angle_pair already spares, and counting it changed
+                // the wing's trailing edge, sparing more tetrahedra there.)
+                if (!(dot(cross(d[0], d[2]), n) > 0 && dot(cross(d[2], d[1]), n) > 0)) continue;
+                const double along = dot(d[2], n);
+                if (!(along * along < sine2 * dot(d[2], d[2]) * dot(n, n))) continue;
+                sharp_at_[s].push_back(f);
+                for (const std::uint32_t g : own) pairs_.push_back(pair_key(f, g));
+            }
+        }
+    }
 }
 
 bool SharpFacets3::sharp(std::uint32_t f, std::uint32_t g) const {

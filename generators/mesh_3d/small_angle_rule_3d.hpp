@@ -7,7 +7,9 @@
 // segments [Si15 §3.3]): two facets meeting at an input segment at a dihedral angle below 60
 // degrees are "sharp"; encroachment between them splits nothing (each split on one would
 // encroach the other, a cascade into the segment without end: issue 15), and a tetrahedron whose
-// shortest edge joins points of two sharp facets is spared like the segment rule's.
+// shortest edge joins points of two sharp facets is spared like the segment rule's. A segment
+// that runs over a facet at less than 30 degrees from a common end makes the facet sharp with
+// the segment's facets (the same cascade, into the vertex).
 #pragma once
 
 #include <array>
@@ -55,7 +57,20 @@ class SharpFacets3 {
     bool sharp_pair(const triangulation::ConformingMesh3& mesh, triangulation::VertIdx u,
                     triangulation::VertIdx w) const;
 
+    /// The angle below which a segment and a facet meeting at one of its ends (the segment
+    /// running over the facet's sector there, not on the facet) count as sharp.
+    static constexpr double kSegmentFacetDegrees = 30;
+
   private:
+    /// Segments that run over a facet at a small angle from a common vertex (the segment not on
+    /// the facet; kSegmentFacetDegrees, in doubles on scaled differences: a choice of what to
+    /// split, like SmallInputAngleRule3::narrow_angle_pair): each split of the facet's subfaces
+    /// by the segment's points, and of the segment by the facet's, would encroach the other
+    /// again, down to the vertex (random star-shaped PLCs put a third of their points within
+    /// 1e-9 of such vertices, some an ulp apart). The facet and each facet of the segment
+    /// become a sharp pair, and the facet is sharp at the segment.
+    void add_segments_near_facets(const triangulation::ConformingMesh3& mesh,
+                                  const std::vector<double>& xyz);
     std::vector<std::vector<std::uint32_t>> segment_facets_;  ///< per segment: facets at it
     std::vector<std::vector<std::uint32_t>> input_facets_;    ///< per input vertex
     std::vector<std::vector<std::uint32_t>> sharp_at_;        ///< per segment: facets sharp there

@@ -64,15 +64,18 @@ TEST(Triangulation_ConformingMeshFromFaces3d, GeneratorsMeshesReadBackAndPass) {
             "")
             << name << " octree";
     }
-    // Random star-shaped PLCs (small input angles). Seeds 5 and 6 are misread (README, known
-    // gaps): refinement beside their small angles leaves flat subfaces of three points of one
-    // segment and facet points within rounding of a segment, which the reading cannot tell
-    // from pieces of it; it then reports a face on no facet (never a wrong "ok": the check
-    // itself decides).
-    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    // Random star-shaped PLCs (small input angles). Seeds 5 and 6 were misread: refinement
+    // encroached, from segments running over a facet at 9 to 28 degrees from a common vertex,
+    // the facet's subfaces and back into that vertex, and put a third of the points within 1e-9
+    // of it, some an ulp apart (faces of three such points the reading cannot place). Such a
+    // segment and facet are now a sharp pair (SharpFacets3): 182 and 146 vertices, not 534 and
+    // 580, and they read back. Seed 9 still cascades at 38 to 42 degrees (README, known gaps).
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
         Plc3 plc = random_star(seed, 14);
         prepare_plc_for_meshing_3d(plc);
-        EXPECT_EQ(read_back(plc, refined(plc, 0.002)), "") << "star " << seed;
+        const ConformingMesh3 cm = refined(plc, 0.002);
+        EXPECT_EQ(read_back(plc, cm), "") << "star " << seed;
+        EXPECT_LT(cm.mesh.vertex_count(), 400u) << "star " << seed;
     }
 }
 
