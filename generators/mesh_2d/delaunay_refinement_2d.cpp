@@ -171,6 +171,10 @@ struct SegmentVertex {
     int shell = 0;
 };
 
+/// The triangles the conflict zones may hold, in all, per budgeted Steiner point (and per
+/// initial triangle slot): about ten times what the sample domains need.
+constexpr std::uint64_t kCavityWorkPerPoint = 64;
+
 class Refiner {
   public:
     Refiner(const tri::Pslg& pslg, const RefinementOptions2& options)
@@ -215,6 +219,9 @@ class Refiner {
     VertIdx initial_vertices_ = 0;
     double sine2_bound_ = 0;  // sin^2(min_angle); 0: no angle criterion
     std::uint64_t budget_ = 0;
+    /// Triangles the conflict zones may hold in all, inserted or rejected (kCavityWorkPerPoint
+    /// per budgeted point and per triangle slot of the initial triangulation; spend_budget).
+    std::uint64_t cavity_work_budget_ = 0;
     /// Steiner points inserted, for options.cdt.progress (total: the expected count, below).
     ProgressCounter progress_;
 
@@ -293,6 +300,8 @@ void Refiner::check_domain_and_budget() {
                   ? options_.max_steiner_points
                   : static_cast<std::uint64_t>(
                         std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
+    cavity_work_budget_ =
+        kCavityWorkPerPoint * (budget_ + static_cast<std::uint64_t>(mesh_.triangle_slots()));
     // About as many Steiner points as equilateral triangles (see the reservation below); 0, for
     // no size asked, reads as unknown.
     progress_ =
@@ -513,6 +522,24 @@ void Refiner::initial_queue() {
 }
 
 void Refiner::spend_budget() {
+    // A healthy refinement's conflict zones hold about 4 to 8 triangles per point. Where
+    // segments meet at tiny angles (five segments 1e-1 to 1e-10 radians apart,
+    // tests/data/hostile_2d/fan_five_segments_refinement_slow.poly), the circumcentres of the
+    // slivers spanning a wedge lie far along it: their conflict zones grow with the point count
+    // and are rejected at a segment, and the run took 447 s to reach the point budget. The zones'
+    // total size is bounded as the point count is.
+    const tri::ConstrainedTriangulation2Counters& edits = cdt_.counters();
+    const std::uint64_t work = edits.cavity_triangles + edits.rejected_cavity_triangles;
+    if (work > cavity_work_budget_) {
+        throw GeometryError(
+            "delaunay refinement: the conflict zones held more than " +
+            std::to_string(cavity_work_budget_) + " triangles (" +
+            std::to_string(kCavityWorkPerPoint) + " per budgeted Steiner point) after " +
+            std::to_string(counters_.steiner_points()) +
+            " Steiner points; stopped: segments meeting at tiny angles (a fan of nearly parallel "
+            "segments) put the circumcentres of the slivers across their wedges far along them; "
+            "resolving a wedge takes about 1 / angle points");
+    }
     if (counters_.steiner_points() >= budget_) {
         char angle[32];
         std::snprintf(angle, sizeof angle, "%g", options_.min_angle);

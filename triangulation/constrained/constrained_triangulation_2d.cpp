@@ -152,6 +152,8 @@ CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
     auto reject = [&](CavityInsertion why) {
         cdt.remove_last_vertex();
         ++cdt.edit_counters.rejected_insertions;
+        if (why != CavityInsertion::NotInConflict)
+            cdt.edit_counters.rejected_cavity_triangles += cdt.cavity.size();
         return why;
     };
     if (!cdt.core.conflict(t, p)) return reject(CavityInsertion::NotInConflict);

@@ -48,6 +48,8 @@ struct ConstrainedTriangulation2Counters {
     std::uint64_t cavity_insertions = 0;    ///< points inserted by insert_in_cavity
     std::uint64_t cavity_triangles = 0;     ///< triangles replaced by those insertions, summed
     std::uint64_t rejected_insertions = 0;  ///< insert_in_cavity calls that changed nothing
+    /// triangles in the conflict zones of rejected insertions (grown, then given up), summed
+    std::uint64_t rejected_cavity_triangles = 0;
     std::uint64_t edge_splits = 0;          ///< constrained edges split at a new vertex
     std::uint64_t edge_bends = 0;           ///< constrained edges split at an existing vertex
     std::uint64_t split_flips = 0;          ///< Lawson flips after edge splits
