@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/boundary/narrow_wedges_2d.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "tests/support/generated_mesh_2d.hpp"
@@ -89,4 +90,31 @@ TEST(Issue11NarrowWedges, issue_11_narrow_wedge_pairs) {
     EXPECT_EQ(pairs.size(), 6u);
     EXPECT_TRUE(gen::narrow_wedge_pair(pairs, 4, 7));
     EXPECT_FALSE(gen::narrow_wedge_pair(pairs, 0, 1));
+}
+
+// tests/data/hostile_2d/fan_five_segments_refinement_slow.poly: five segments 1e-1 to 1e-10
+// radians apart. Delaunay refinement's time grew as the square of its points (447 s to its
+// 10^6-point budget): the circumcentres of the slivers spanning a wedge lie far along it, and
+// their conflict zones, rejected at a segment, grew with the mesh. Their total size is bounded
+// at 64 triangles per budgeted Steiner point; under a budget of 20,000 points the run ends with
+// that error, naming it, long before the points run out.
+TEST(Issue11NarrowWedges, issue_11_conflict_zones_across_a_fan_are_bounded) {
+    em::testing::Input in;
+    in.xy = {-1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, 1.0,
+             0.20178732563700774, -0.01688552758506856,
+             0.3306520814478112, -0.3892915540905705,
+             0.3216007026127559, -0.3631337319237456,
+             0.3169128589775397, -0.3495646045517436,
+             0.28371873857693725, -0.25364331724636413,
+             0.2761104262532651, -0.2316575190072306};
+    in.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 4, 6, 4, 7, 4, 8, 4, 9};
+    gen::MeshOptions2 options;
+    options.max_steiner_points = 20000;
+    try {
+        (void)gen::find_mesh_generator_2d("delaunay-refinement").run(in.pslg(), options);
+        ADD_FAILURE() << "refined the fan within 20,000 points";
+    } catch (const em::GeometryError& e) {
+        EXPECT_NE(std::string(e.what()).find("conflict zones held more than"), std::string::npos)
+            << e.what();
+    }
 }
