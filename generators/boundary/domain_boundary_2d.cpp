@@ -60,6 +60,15 @@ std::vector<double> equal_integral_parameters(const std::vector<double>& u,
     return points;
 }
 
+/// The refusal of a size that asks for more new boundary points than `max_points`; `where`
+/// names the size and place, or the count so far.
+InputError boundary_budget_error(std::uint64_t max_points, const std::string& where) {
+    return InputError("boundary discretization: the size function asks for more than " +
+                      std::to_string(max_points) +
+                      " boundary points, over the Steiner point budget (" + where +
+                      "): give a larger size or raise --max-steiner");
+}
+
 /// InputError when the integral asks for more than 2^30 pieces (or is not finite), or for more
 /// new points than `max_points` (a generator's Steiner budget, 0 for none: the pieces less one
 /// are the points the curve adds).
@@ -73,12 +82,9 @@ void check_piece_count(double total, const Curve2& curve, double u0, const SizeF
             format_number(curve(u0)[0]) + ", " + format_number(curve(u0)[1]) + "))");
     }
     if (max_points != 0 && total > static_cast<double>(max_points) + 1) {
-        throw InputError("boundary discretization: the size function asks for more than " +
-                         std::to_string(max_points) +
-                         " boundary points, over the Steiner point budget (size " +
-                         format_number(size(curve(u0)[0], curve(u0)[1])) + " near (" +
-                         format_number(curve(u0)[0]) + ", " + format_number(curve(u0)[1]) +
-                         ")): give a larger size or raise --max-steiner");
+        throw boundary_budget_error(
+            max_points, "size " + format_number(size(curve(u0)[0], curve(u0)[1])) + " near (" +
+                            format_number(curve(u0)[0]) + ", " + format_number(curve(u0)[1]) + ")");
     }
 }
 
@@ -635,11 +641,9 @@ DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& p
         // the whole budget).
         placed += points.size() - 2;
         if (max_points != 0 && placed > max_points) {
-            throw InputError("boundary discretization: the size function asks for more than " +
-                             std::to_string(max_points) +
-                             " boundary points, over the Steiner point budget (" + std::to_string(placed) +
-                             " by segment " + std::to_string(segment + options.first_index) +
-                             "): give a larger size or raise --max-steiner");
+            throw boundary_budget_error(max_points,
+                                        std::to_string(placed) + " by segment " +
+                                            std::to_string(segment + options.first_index));
         }
         return points;
     };

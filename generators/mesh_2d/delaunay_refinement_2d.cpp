@@ -300,8 +300,11 @@ void Refiner::check_domain_and_budget() {
                   ? options_.max_steiner_points
                   : static_cast<std::uint64_t>(
                         std::min(std::max({1e6, 64 * features, 16 * estimate}), 4e9));
-    cavity_work_budget_ =
-        kCavityWorkPerPoint * (budget_ + static_cast<std::uint64_t>(mesh_.triangle_slots()));
+    // Saturated: a --max-steiner near 2^64 must not wrap the product into a small bound.
+    const std::uint64_t counted = budget_ + static_cast<std::uint64_t>(mesh_.triangle_slots());
+    cavity_work_budget_ = counted < budget_ || counted > UINT64_MAX / kCavityWorkPerPoint
+                              ? UINT64_MAX
+                              : kCavityWorkPerPoint * counted;
     // About as many Steiner points as equilateral triangles (see the reservation below); 0, for
     // no size asked, reads as unknown.
     progress_ =
