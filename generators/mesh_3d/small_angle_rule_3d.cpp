@@ -155,7 +155,6 @@ SharpFacets3::SharpFacets3(const tri::ConformingMesh3& mesh, const std::vector<d
                 sharp_at_[s].push_back(facets[j]);
             }
         }
-        sort_unique(sharp_at_[s]);
     }
     add_segments_near_facets(mesh, xyz);
     for (auto& facets : sharp_at_) sort_unique(facets);
@@ -208,6 +207,10 @@ void SharpFacets3::add_segments_near_facets(const tri::ConformingMesh3& mesh,
                 // its sides, is not counted: that is a segment at a small angle to the side,
                 // whose encroachment narrow_angle_pair already spares, and counting it changed
                 // the wing's trailing edge, sparing more tetrahedra there.)
+                // Open sectors: a direction on a side (a segment beside the facet's edge, seen
+                // from above: the wing's trailing edge) is left to narrow_angle_pair. A direction
+                // exactly on a ray to a Steiner point refinement put at the apex would count
+                // before refinement and not after; no such input is known.
                 if (!(dot(cross(d[0], d[2]), n) > 0 && dot(cross(d[2], d[1]), n) > 0)) continue;
                 const double along = dot(d[2], n);
                 if (!(along * along < sine2 * dot(d[2], d[2]) * dot(n, n))) continue;
