@@ -930,6 +930,54 @@ std::array<double, 3> triangle_circumcenter_3d(const double* a, const double* b,
     return triangle_circumcenter3_rational(a, b, c);
 }
 
+std::array<double, 3> triangle_circumcenter_on_plane_3d(const double* a, const double* b,
+                                                        const double* c, const double* p,
+                                                        const double* q, const double* r) {
+    require_finite_points("circumcenter on a plane", {a, b, c, p, q, r}, 3);
+    // Origin at c, unknown y = x - c: 2 y . u = |u|^2, 2 y . v = |v|^2, n . y = n . (p - c).
+    mpq_class u[3], v[3], e[3], f[3];
+    for (int k = 0; k < 3; ++k) {
+        u[k] = mpq_class(a[k]) - c[k];
+        v[k] = mpq_class(b[k]) - c[k];
+        e[k] = mpq_class(q[k]) - p[k];
+        f[k] = mpq_class(r[k]) - p[k];
+    }
+    const mpq_class n[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2],
+                            e[0] * f[1] - e[1] * f[0]};
+    if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0)
+        fail("circumcenter on a plane", "the plane's points are collinear", {p, q, r}, 3);
+    mpq_class m[3][3], w[3];
+    for (int k = 0; k < 3; ++k) {
+        m[0][k] = 2 * u[k];
+        m[1][k] = 2 * v[k];
+        m[2][k] = n[k];
+    }
+    w[0] = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    w[1] = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    w[2] = n[0] * (mpq_class(p[0]) - c[0]) + n[1] * (mpq_class(p[1]) - c[1]) +
+           n[2] * (mpq_class(p[2]) - c[2]);
+    const mpq_class det = det3(m);
+    if (sgn(det) == 0) {
+        fail("circumcenter on a plane",
+             "the triangle's projection onto the plane is flat (no point of the plane is "
+             "equidistant from its corners)",
+             {a, b, c, p, q, r}, 3);
+    }
+    std::array<double, 3> result;
+    for (int k = 0; k < 3; ++k) {
+        mpq_class mk[3][3];
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) mk[i][j] = j == k ? w[i] : m[i][j];
+        }
+        const mpq_class coordinate = c[k] + det3(mk) / det;
+        if (!round_to_double(coordinate, result[static_cast<unsigned>(k)])) {
+            fail("circumcenter on a plane", "the point overflows the double range",
+                 {a, b, c, p, q, r}, 3);
+        }
+    }
+    return result;
+}
+
 std::array<double, 3> point_on_segment_3d(const double* p, const double* q, double t) {
     require_finite_points("point_on_segment", {p, q}, 3);
     if (!std::isfinite(t)) {

@@ -189,27 +189,20 @@ class RestrictedDelaunay3 {
         return triangulation::beyond_rounding_of_plane(p, point(t[0]), point(t[1]), point(t[2]));
     }
 
-    /// p moved along the normal of facet f's largest input triangle onto its plane (doubles on
-    /// differences scaled by a power of two: a Steiner point's placement, not a decision).
-    std::array<double, 3> onto_facet_plane(const double* p, std::uint32_t f) const {
-        const auto& t = facet_triangle_[f];
-        const double *a = point(t[0]), *b = point(t[1]), *c = point(t[2]);
-        double u[3], v[3], w[3], largest = 0;
-        for (int k = 0; k < 3; ++k) {
-            u[k] = b[k] - a[k], v[k] = c[k] - a[k], w[k] = p[k] - a[k];
-            largest = std::max({largest, std::fabs(u[k]), std::fabs(v[k]), std::fabs(w[k])});
+    /// The point of facet f's plane (through its largest input triangle) equidistant from
+    /// subface `face`'s corners, correctly rounded from the corners and the facet's vertices
+    /// (predicates::triangle_circumcenter_on_plane_3d). nullopt when no such point exists (the
+    /// subface's projection onto the plane is flat).
+    std::optional<std::array<double, 3>> circumcentre_on_facet_plane(const Subface& face) const {
+        const auto& t = facet_triangle_[face.facet];
+        if (t[0] == kNone) return std::nullopt;
+        try {
+            return predicates::triangle_circumcenter_on_plane_3d(
+                point(face.oriented[0]), point(face.oriented[1]), point(face.oriented[2]),
+                point(t[0]), point(t[1]), point(t[2]));
+        } catch (const GeometryError&) {
+            return std::nullopt;
         }
-        const int shift = predicates::unit_shift(largest);
-        const predicates::PowerOfTwo unit(shift), back(-shift);
-        for (int k = 0; k < 3; ++k) u[k] = unit(u[k]), v[k] = unit(v[k]), w[k] = unit(w[k]);
-        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                             u[0] * v[1] - u[1] * v[0]};
-        const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-        std::array<double, 3> q{p[0], p[1], p[2]};
-        if (!(nn > 0)) return q;
-        const double s = (n[0] * w[0] + n[1] * w[1] + n[2] * w[2]) / nn;
-        for (int k = 0; k < 3; ++k) q[k] = a[k] + back(w[k] - s * n[k]);
-        return q;
     }
     std::vector<std::vector<std::uint32_t>> vertex_segments_;
     /// Facets meeting at a segment at below 60 degrees: their encroachment of each other (and of
@@ -1082,12 +1075,16 @@ class RestrictedDelaunay3 {
         // (the exact check of `exactmesh check` found a face on no facet). Splitting the longest
         // edge there instead split the segment beside it down to nothing (20,000 subsegment
         // splits, 77 s, on another turned cube).
-        // It is moved onto the facet's plane along the normal (the tilt moves the centre far
-        // less than the subface's size); should that still be off, the longest edge is split.
+        // It is replaced by the point of the facet's plane equidistant from the subface's
+        // corners, constructed from the corners and the facet's vertices and rounded once (the
+        // tilt moves the centre far less than the subface's size); should that still be off
+        // (or not exist), the longest edge is split.
         if (off_facet_plane(c.data(), face.facet)) {
-            c = onto_facet_plane(c.data(), face.facet);
+            const auto on_plane = circumcentre_on_facet_plane(face);
             ++counters_.projected_circumcentres;
-            if (off_facet_plane(c.data(), face.facet) && !longest_edge_instead()) return false;
+            if (on_plane) c = *on_plane;
+            if ((!on_plane || off_facet_plane(c.data(), face.facet)) && !longest_edge_instead())
+                return false;
         }
         // Walk in the facet's projection from the subface to the one holding c.
         Subface at = face;

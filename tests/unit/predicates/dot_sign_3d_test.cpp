@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Tests of predicates/dot_sign_3d (against GMP rationals) and of the constructions boundary
 // recovery adds to predicates/constructions: triangle_circumcenter_3d (against the existing 2D
-// exact path on triangles in coordinate planes, and the equidistance of the exact value) and
-// point_on_segment_3d.
+// exact path on triangles in coordinate planes, and the equidistance of the exact value),
+// triangle_circumcenter_on_plane_3d (against the triangle's own circumcentre on the plane and an
+// independent exact formula off it) and point_on_segment_3d.
 #include "predicates/dot_sign_3d.hpp"
 
 #include <gmpxx.h>
@@ -14,6 +15,7 @@
 
 #include "base/errors.hpp"
 #include "predicates/constructions.hpp"
+#include "predicates/orient3d.hpp"
 
 namespace exactmesh::predicates {
 namespace {
@@ -199,6 +201,82 @@ TEST(Predicates_TriangleCircumcenter3d, ExactOnATiltedTriangleAndScalesByPowersO
     }
     const double d[3] = {1, 1, 1};
     EXPECT_THROW(triangle_circumcenter_3d(a, d, d), GeometryError);
+}
+
+/// Whether r is the double nearest to x (no neighbour of r is nearer).
+bool nearest_double(double r, const mpq_class& x) {
+    const mpq_class error = abs(mpq_class(r) - x);
+    return error <= abs(mpq_class(std::nextafter(r, -INFINITY)) - x) &&
+           error <= abs(mpq_class(std::nextafter(r, INFINITY)) - x);
+}
+
+/// The point of the plane p + s (q - p) + t (r - p) equidistant from a, b, c, exactly: a 2x2
+/// system in (s, t), independent of the construction's 3x3 one.
+std::array<mpq_class, 3> reference_on_plane(const double* a, const double* b, const double* c,
+                                            const double* p, const double* q, const double* r) {
+    mpq_class u[3], v[3], e[3], f[3], pc[3];
+    for (int k = 0; k < 3; ++k) {
+        u[k] = mpq_class(a[k]) - c[k];
+        v[k] = mpq_class(b[k]) - c[k];
+        e[k] = mpq_class(q[k]) - p[k];
+        f[k] = mpq_class(r[k]) - p[k];
+        pc[k] = mpq_class(p[k]) - c[k];
+    }
+    const auto dot = [](const mpq_class* x, const mpq_class* y) -> mpq_class {
+        return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+    };
+    // 2 (pc + s e + t f) . u = u . u, and the same with v.
+    const mpq_class m00 = 2 * dot(e, u), m01 = 2 * dot(f, u), m10 = 2 * dot(e, v),
+                    m11 = 2 * dot(f, v);
+    const mpq_class r0 = dot(u, u) - 2 * dot(pc, u), r1 = dot(v, v) - 2 * dot(pc, v);
+    const mpq_class det = m00 * m11 - m01 * m10;
+    const mpq_class s = (r0 * m11 - m01 * r1) / det, t = (m00 * r1 - r0 * m10) / det;
+    return {mpq_class(p[0] + s * e[0] + t * f[0]), mpq_class(p[1] + s * e[1] + t * f[1]),
+            mpq_class(p[2] + s * e[2] + t * f[2])};
+}
+
+TEST(Predicates_TriangleCircumcenterOnPlane3d, CircumcentreOnThePlaneAndCorrectlyRoundedOffIt) {
+    std::mt19937_64 rng(11);
+    std::uniform_int_distribution<int> grid(-1 << 20, 1 << 20);
+    // Points of the plane z = x + y on a grid of 2^-16 (every sum exact).
+    const auto on_plane = [&](double* x) {
+        x[0] = std::ldexp(grid(rng), -16);
+        x[1] = std::ldexp(grid(rng), -16);
+        x[2] = x[0] + x[1];
+    };
+    for (int i = 0; i < 200; ++i) {
+        double a[3], b[3], c[3], p[3], q[3], r[3];
+        for (double* x : {a, b, c, p, q, r}) on_plane(x);
+        if (orient3d(a, b, c, p) != Sign::Zero) ADD_FAILURE() << "not coplanar";
+        // On the plane: the triangle's own circumcentre, rounded the same.
+        const auto center = triangle_circumcenter_on_plane_3d(a, b, c, p, q, r);
+        EXPECT_EQ(center, triangle_circumcenter_3d(a, b, c)) << i;
+        // Corners rounded off the plane by an ulp or a few: the exact point of the plane,
+        // rounded once (against an independent formula), and scaled by 2^+-600 exactly.
+        for (double* x : {a, b, c}) {
+            x[2] = std::nextafter(x[2], (i & 1) ? INFINITY : -INFINITY);
+            x[0] = std::nextafter(std::nextafter(x[0], INFINITY), INFINITY);
+        }
+        const auto moved = triangle_circumcenter_on_plane_3d(a, b, c, p, q, r);
+        const auto exact = reference_on_plane(a, b, c, p, q, r);
+        for (unsigned k = 0; k < 3; ++k) EXPECT_TRUE(nearest_double(moved[k], exact[k])) << i;
+        for (const int e : {600, -600}) {
+            double s[6][3];
+            const double* in[6] = {a, b, c, p, q, r};
+            for (int j = 0; j < 6; ++j)
+                for (int k = 0; k < 3; ++k) s[j][k] = std::ldexp(in[j][k], e);
+            const auto scaled = triangle_circumcenter_on_plane_3d(s[0], s[1], s[2], s[3], s[4], s[5]);
+            for (unsigned k = 0; k < 3; ++k) EXPECT_EQ(scaled[k], std::ldexp(moved[k], e)) << i;
+        }
+    }
+    // Collinear plane points, a triangle standing on the plane (flat projection), non-finite.
+    const double o[3] = {0, 0, 0}, x1[3] = {1, 0, 0}, x2[3] = {2, 0, 0}, y1[3] = {0, 1, 0},
+                 z1[3] = {0, 0, 1}, nan[3] = {NAN, 0, 0};
+    EXPECT_THROW(triangle_circumcenter_on_plane_3d(o, y1, z1, o, x1, x2), GeometryError);
+    EXPECT_THROW(triangle_circumcenter_on_plane_3d(o, x1, z1, o, x1, y1), GeometryError);
+    EXPECT_THROW(triangle_circumcenter_on_plane_3d(nan, x1, z1, o, x1, y1), GeometryError);
+    const auto flat = triangle_circumcenter_on_plane_3d(o, x1, y1, o, x1, y1);
+    EXPECT_EQ(flat, (std::array<double, 3>{0.5, 0.5, 0}));
 }
 
 TEST(Predicates_PointOnSegment3d, CorrectlyRoundedAndScaleInvariant) {
