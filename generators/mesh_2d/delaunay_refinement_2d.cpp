@@ -29,6 +29,7 @@
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "base/progress.hpp"
+#include "generators/boundary/narrow_wedges_2d.hpp"
 #include "generators/boundary/region_areas_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/constructions.hpp"
@@ -185,7 +186,8 @@ class Refiner {
           cdt_(region_areas_ ? tri::Pslg{pslg.xy, pslg.segments, pslg.holes, numbered_regions_}
                              : pslg,
                options.cdt),
-          mesh_(cdt_.mesh()) {}
+          mesh_(cdt_.mesh()),
+          segment_count_(static_cast<std::uint32_t>(pslg.segments.size() / 2)) {}
 
     RefinementResult2 run();
 
@@ -199,6 +201,7 @@ class Refiner {
     std::vector<double> numbered_regions_;
     tri::ConstrainedTriangulation2 cdt_;
     const tri::TriMesh2& mesh_;  // the triangulation's, valid across edits
+    std::uint32_t segment_count_;  // input segments (cdt_.segment_ends numbers them)
     RefinementCounters2 counters_;
     BucketQueue<BadTriangle> bad_;
     /// Pieces a vertex encroaches (split when no bad triangle is worse than the triangle of the
@@ -261,6 +264,20 @@ class Refiner {
                                             // pieces (radians) when below 60 degrees, else 0
     bool small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const;
     void find_small_input_angles();
+    /// Narrow wedges (narrow_wedges_2d: two segments from one end vertex less than a degree
+    /// apart): a vertex on one does not encroach the other's pieces, and a skinny triangle
+    /// whose shortest edge joins the two is left.
+    std::vector<std::uint64_t> narrow_pairs_;
+    std::vector<std::vector<std::uint32_t>> segments_at_;  // per initial vertex, with narrow_pairs_
+    void find_narrow_wedges();
+    bool narrow_pair(std::uint32_t a, std::uint32_t b) const;
+    /// Whether vertex w lies on a segment (a Steiner point on it, or an end of it) that makes a
+    /// narrow wedge with `segment`.
+    bool in_narrow_wedge_with(VertIdx w, std::uint32_t segment) const;
+    /// Whether edge u - v joins the two segments of a narrow wedge, neither end being their
+    /// common vertex.
+    bool joins_narrow_wedge(VertIdx u, VertIdx v) const;
+    std::span<const std::uint32_t> segments_of(VertIdx w) const;  // with narrow_pairs_
     void spend_budget();
     const double* point(VertIdx v) const { return mesh_.point(v); }
 };
@@ -351,6 +368,50 @@ void Refiner::find_small_input_angles() {
     }
 }
 
+void Refiner::find_narrow_wedges() {
+    std::vector<std::array<VertIdx, 2>> ends(segment_count_);
+    for (std::uint32_t s = 0; s < segment_count_; ++s) ends[s] = cdt_.segment_ends(s);
+    narrow_pairs_ = narrow_wedges_2d(mesh_.xy, ends);
+    if (narrow_pairs_.empty()) return;
+    segments_at_.assign(initial_vertices_, {});
+    for (std::uint32_t s = 0; s < segment_count_; ++s) {
+        for (const VertIdx v : ends[s])
+            if (v < initial_vertices_) segments_at_[v].push_back(s);
+    }
+}
+
+bool Refiner::narrow_pair(std::uint32_t a, std::uint32_t b) const {
+    return a != kNone && b != kNone && narrow_wedge_pair(narrow_pairs_, a, b);
+}
+
+std::span<const std::uint32_t> Refiner::segments_of(VertIdx w) const {
+    if (w < initial_vertices_) return segments_at_[w];
+    if (w < on_segment_.size() && on_segment_[w].segment != kNone)
+        return {&on_segment_[w].segment, 1};
+    return {};
+}
+
+bool Refiner::in_narrow_wedge_with(VertIdx w, std::uint32_t segment) const {
+    if (narrow_pairs_.empty()) return false;
+    for (const std::uint32_t s : segments_of(w))
+        if (narrow_pair(s, segment)) return true;
+    return false;
+}
+
+bool Refiner::joins_narrow_wedge(VertIdx u, VertIdx v) const {
+    if (narrow_pairs_.empty()) return false;
+    const auto ends_at = [&](std::uint32_t segment, VertIdx x) {
+        const auto ends = cdt_.segment_ends(segment);
+        return ends[0] == x || ends[1] == x;
+    };
+    for (const std::uint32_t a : segments_of(u)) {
+        for (const std::uint32_t b : segments_of(v)) {
+            if (narrow_pair(a, b) && !ends_at(b, u) && !ends_at(a, v)) return true;
+        }
+    }
+    return false;
+}
+
 bool Refiner::small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const {
     // Both ends of the shortest edge u - v on the same concentric shell about the same apex,
     // on different segments, and the third vertex w that apex: the triangle's smallest angle is
@@ -358,6 +419,9 @@ bool Refiner::small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const {
     // farther away) is split: the midpoints between shells make the angle's wedge into
     // triangles no worse than the input angle, and never approach the apex (its own pieces are
     // split on shells only, and rejected circumcenters do not split them: leave_at_small_angle).
+    // In a narrow wedge: the shortest edge joins its two segments (neither end their common
+    // vertex), so the triangle spans the wedge and is as skinny as the wedge is narrow.
+    if (joins_narrow_wedge(u, v)) return true;
     const SegmentVertex* su = u < on_segment_.size() ? &on_segment_[u] : nullptr;
     const SegmentVertex* sv = v < on_segment_.size() ? &on_segment_[v] : nullptr;
     if (su == nullptr || sv == nullptr || su->apex == kNone) return false;
@@ -478,7 +542,17 @@ bool Refiner::encroached_from(EdgeIdx e) {
     // circle of e (a right or obtuse angle).
     ++counters_.encroachment_tests;
     const VertIdx a = mesh_.origin(e), b = mesh_.destination(e), w = mesh_.tv[tri::prev_edge(e)];
-    return predicates::corner_dot_sign(point(w), point(a), point(b)) != Sign::Positive;
+    if (predicates::corner_dot_sign(point(w), point(a), point(b)) == Sign::Positive) return false;
+    // A vertex across a narrow wedge does not encroach (find_narrow_wedges): splitting there
+    // would go on down the wedge until pieces are as short as it is wide.
+    if (!narrow_pairs_.empty() && in_narrow_wedge_with(w, cdt_.segment_of(e))) {
+        const auto ends = cdt_.segment_ends(cdt_.segment_of(e));
+        if (w != ends[0] && w != ends[1]) {
+            ++counters_.narrow_wedge_skips;
+            return false;
+        }
+    }
+    return true;
 }
 
 void Refiner::process_touched() {
@@ -802,6 +876,7 @@ RefinementResult2 Refiner::run() {
     }
     // Apexes of small input angles: two pieces at a vertex less than 60 degrees apart.
     find_small_input_angles();
+    find_narrow_wedges();
     if (options_.min_angle > 0) {
         const double s = std::sin(options_.min_angle * 3.14159265358979323846 / 180.0);
         sine2_bound_ = s * s;

@@ -88,6 +88,8 @@ struct RefinementCounters2 {
     std::uint64_t encroachment_tests = 0;      ///< corner_dot_sign calls of the refinement
     std::uint64_t bad_triangles = 0;           ///< bad triangles queued (with repeats)
     std::uint64_t small_angle_skips = 0;       ///< skinny triangles left at small input angles
+    /// encroachments not acted on: the vertex and the piece on two segments of a narrow wedge
+    std::uint64_t narrow_wedge_skips = 0;
     std::uint64_t unsplittable = 0;      ///< bad triangles whose circumcenter rounds onto a vertex
     std::uint64_t cavity_triangles = 0;  ///< triangles replaced by circumcenter insertions
     std::uint64_t largest_cavity = 0;    ///< the most triangles one insertion replaced
@@ -113,6 +115,7 @@ inline constexpr std::array kRefinementCounterNames{
     counter("rejected_circumcenters", &RefinementCounters2::rejected_circumcenters),
     counter("bad_triangles_queued", &RefinementCounters2::bad_triangles),
     counter("small_angle_skips", &RefinementCounters2::small_angle_skips),
+    counter("narrow_wedge_skips", &RefinementCounters2::narrow_wedge_skips),
     counter("unsplittable", &RefinementCounters2::unsplittable),
     counter("cavity_triangles", &RefinementCounters2::cavity_triangles),
     counter("largest_cavity", &RefinementCounters2::largest_cavity),

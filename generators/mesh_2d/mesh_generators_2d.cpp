@@ -57,23 +57,79 @@ class SizeSampler {
     /// triangle at the smallest of them would count for at least 2^-12 of the budget: only
     /// such a triangle can move the estimate toward the budget, and splitting every graded
     /// triangle resolved the whole size field (an airfoil's check cost as much as meshing it).
+    /// Depth first, children in order, each triangle's count the sum of its children's in
+    /// order, on an explicit stack rather than by recursion: under AddressSanitizer each
+    /// allocation records its call stack (30 frames) in a depot that is never freed, and with
+    /// a recursive call per child every path down the subdivision was a new stack for each
+    /// GMP allocation of the size's point location (a fuzzed adaptation case,
+    /// tests/data/fuzz/adaptation_2d_oom_narrow.bin, grew that depot to 2.8 GB in 20 s).
     double triangle(const std::array<double, 2>& p, const std::array<double, 2>& q,
-                    const std::array<double, 2>& r, double sp, double sq, double sr, int depth) {
-        const double sc = at((p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3);
-        const double lo = std::min({sp, sq, sr, sc}), hi = std::max({sp, sq, sr, sc});
-        if (hi > 2 * lo && depth < 12 && evaluations_ < kSplitEvaluations &&
-            total_ <= stop_above_ && count_at(p, q, r, lo) >= 0x1p-12 * stop_above_) {
-            auto mid = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
-                return std::array<double, 2>{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
-            };
-            const auto pq = mid(p, q), qr = mid(q, r), rp = mid(r, p);
-            const double spq = at(pq[0], pq[1]), sqr = at(qr[0], qr[1]), srp = at(rp[0], rp[1]);
-            return triangle(p, pq, rp, sp, spq, srp, depth + 1) +
-                   triangle(pq, q, qr, spq, sq, sqr, depth + 1) +
-                   triangle(rp, qr, r, srp, sqr, sr, depth + 1) +
-                   triangle(pq, qr, rp, spq, sqr, srp, depth + 1);
+                    const std::array<double, 2>& r, double sp, double sq, double sr) {
+        using Point = std::array<double, 2>;
+        struct Frame {
+            std::array<Point, 3> corner;
+            std::array<double, 3> size;
+            int depth = 0;
+            unsigned next_child = 4;  // 4: not split (or every child done)
+            std::array<Point, 3> mid{};  // pq, qr, rp when split
+            std::array<double, 3> mid_size{};
+            double sum = 0;
+        };
+        std::array<Frame, kMaxDepth + 1> stack;
+        int top = 0;
+        double result = 0;
+        // Samples the centroid of the frame just pushed; splits it or counts it.
+        const auto enter = [&](Frame& f) {
+            const auto& [a, b, c] = f.corner;
+            const double sc = at((a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3);
+            const double lo = std::min({f.size[0], f.size[1], f.size[2], sc});
+            const double hi = std::max({f.size[0], f.size[1], f.size[2], sc});
+            if (hi > 2 * lo && f.depth < kMaxDepth && evaluations_ < kSplitEvaluations &&
+                total_ <= stop_above_ && count_at(a, b, c, lo) >= 0x1p-12 * stop_above_) {
+                const auto mid = [](const Point& u, const Point& v) {
+                    return Point{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
+                };
+                f.mid = {mid(a, b), mid(b, c), mid(c, a)};
+                for (unsigned k = 0; k < 3; ++k) f.mid_size[k] = at(f.mid[k][0], f.mid[k][1]);
+                f.next_child = 0;
+                f.sum = 0;
+                return;
+            }
+            f.next_child = 4;
+            f.sum = count_at(a, b, c, hi);
+        };
+        stack[0].corner = {p, q, r};
+        stack[0].size = {sp, sq, sr};
+        stack[0].depth = 0;
+        enter(stack[0]);
+        while (top >= 0) {
+            Frame& f = stack[static_cast<std::size_t>(top)];
+            if (f.next_child < 4) {
+                const unsigned k = f.next_child++;
+                const auto& [a, b, c] = f.corner;
+                const auto& [ab, bc, ca] = f.mid;
+                const auto& [sab, sbc, sca] = f.mid_size;
+                Frame& child = stack[static_cast<std::size_t>(top + 1)];
+                switch (k) {
+                    case 0: child.corner = {a, ab, ca}, child.size = {f.size[0], sab, sca}; break;
+                    case 1: child.corner = {ab, b, bc}, child.size = {sab, f.size[1], sbc}; break;
+                    case 2: child.corner = {ca, bc, c}, child.size = {sca, sbc, f.size[2]}; break;
+                    default: child.corner = {ab, bc, ca}, child.size = {sab, sbc, sca}; break;
+                }
+                child.depth = f.depth + 1;
+                ++top;
+                enter(child);
+                continue;
+            }
+            const double count = f.sum;
+            --top;
+            if (top >= 0) {
+                stack[static_cast<std::size_t>(top)].sum += count;
+            } else {
+                result = count;
+            }
         }
-        return count_at(p, q, r, hi);
+        return result;
     }
 
     /// Equilateral triangles of side s in (p, q, r) (triangles_of_side: no square of a
@@ -88,6 +144,7 @@ class SizeSampler {
 
   private:
     static constexpr std::uint64_t kSplitEvaluations = 1u << 18;
+    static constexpr int kMaxDepth = 12;
     const SizeFunction& size_;
     double stop_above_;
     double total_ = 0;
@@ -113,7 +170,7 @@ double minimum_triangle_count(const tri::Triangulation2& domain, const SizeFunct
             corner[k] = {domain.xy[2 * v], domain.xy[2 * v + 1]};
             s[k] = at_vertex[v];
         }
-        sampler.add(sampler.triangle(corner[0], corner[1], corner[2], s[0], s[1], s[2], 0));
+        sampler.add(sampler.triangle(corner[0], corner[1], corner[2], s[0], s[1], s[2]));
     }
     return sampler.total();
 }
