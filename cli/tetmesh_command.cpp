@@ -14,6 +14,7 @@
 // meshed by recovery and frontal insertion), followed by sliver removal. Region volume bounds
 // of a .poly/.smesh (TetGen's region list) are applied by Delaunay refinement, which then runs
 // even without --radius-edge or --max-volume (as TetGen's -a does with region constraints).
+// Region attributes go to the .ele (TetGen -A's column) from every generator.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -278,10 +279,11 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     // it too.
     gen::RefinementQuality3 quality;
     std::vector<std::string> warnings;
-    if (frontal && region_bounds) {
+    if ((frontal || octree) && region_bounds) {
         warnings.push_back(source +
                            ": the region volume bounds are applied by Delaunay refinement only; "
-                           "--generator frontal follows --size and ignores them");
+                           "--generator " +
+                           arguments.generator + " follows --size and ignores them");
     }
     if (refine) {
         quality = gen::check_refinement_quality_3d(conforming, refinement);
@@ -305,13 +307,17 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     }
 
     const tri::Tetrahedralization3& mesh = conforming.mesh;
+    EM_ASSERT(conforming.tet_attributes.empty() ||
+              conforming.tet_attributes.size() == mesh.tet_count());
     io::OutputSet set;
     switch (format) {
         case OutputFormat::Ele: {
             std::vector<std::uint32_t> faces;
             std::vector<int> markers;
             subfaces_with_markers(conforming, plc, faces, markers);
-            set.stage(files[0], io::format_tetgen_ele(mesh.tets, base));
+            // Region attributes (a .poly/.smesh with regions; every generator carries them
+            // through) as TetGen -A writes them: one column after the corners.
+            set.stage(files[0], io::format_tetgen_ele(mesh.tets, base, conforming.tet_attributes));
             set.stage(files[1], io::format_tetgen_node(mesh.xyz, base));
             set.stage(files[2], io::format_tetgen_marked_faces(faces, markers, base));
             set.stage(files[3], io::format_tetgen_neigh(mesh.neighbors, base));

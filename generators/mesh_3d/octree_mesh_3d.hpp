@@ -40,9 +40,14 @@
 //     a face in three tetrahedra or a non-positive one is an InternalError); the PLC's segments,
 //     subsegments and subfaces from the band (interface ones dropped, their vertices become
 //     Volume).
-// Not done: region attributes (refused: InputError); sliver removal is the caller's (the CLI
-// runs sliver_removal_3d on the merged mesh). Cost: O(leaves) octree work with hash lookups,
-// plus the band's recovery and frontal meshing.
+//  6. Regions (TetGen's region list): each region point is located in the merged mesh (exact
+//     orient3d, closed) and its attribute and volume bound flood across faces that are not
+//     subfaces (triangulation/recovery_3d/region_flood_3d, as boundary recovery's carve), so
+//     every tetrahedron, template or band, carries its region's attribute (0 outside every
+//     region; a later point in the same region overrides an earlier one).
+// Not done: sliver removal is the caller's (the CLI runs sliver_removal_3d on the merged
+// mesh). Cost: O(leaves) octree work with hash lookups, plus the band's recovery and frontal
+// meshing, plus O(#T) per region point.
 #pragma once
 
 #include <array>
@@ -102,8 +107,11 @@ struct OctreeMesh3Result {
 
 /// Meshes the domain of `plc` as above. `recovered` is boundary_recovery_3d's result for `plc`
 /// (used to classify the core's components as inside). The PLC's vertices keep their indices.
-/// @throws InputError when the size is undefined or not > 0 where evaluated, the PLC has
-///         regions, or a budget is exceeded (the leaf budget at once when the estimate does).
+/// The result's mesh carries tet_attributes (and tet_max_volume when a region has a bound) when
+/// the PLC has regions; a region point outside the domain or in a hole is ignored (boundary
+/// recovery, which made `recovered` of the same domain, warns of it).
+/// @throws InputError when the size is undefined or not > 0 where evaluated, or a budget is
+///         exceeded (the leaf budget at once when the estimate does).
 OctreeMesh3Result octree_mesh_3d(const triangulation::Plc3& plc,
                                  const triangulation::ConformingMesh3& recovered,
                                  const OctreeMesh3Options& options);
