@@ -20,6 +20,7 @@
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "generators/mesh_3d/gap_estimate_3d.hpp"
+#include "generators/mesh_3d/region_volumes_3d.hpp"
 #include "generators/mesh_3d/restricted_delaunay_3d.hpp"
 #include "predicates/orient3d.hpp"
 #include "triangulation/mesh/flip_3d.hpp"
@@ -679,8 +680,15 @@ OctreeMesh3Result octree_mesh_3d(const tri::Plc3& plc, const tri::ConformingMesh
     refuse_gaps_far_over_budget_3d(
         plc, recovered, restricted_3d::steiner_budget_3d(recovered, options.max_steiner_points),
         "octree mesh 3d");
-OctreeMesher mesher(plc, recovered, options);
-    return mesher.run();
+    // Region volume bounds (Region3::max_volume, flooded into the recovered tetrahedra) cap
+    // the size in their regions: the leaves, the band's frontal insertion and the estimate
+    // all follow the capped size.
+    OctreeMesh3Options capped = options;
+    capped.size = size_with_region_volumes_3d(options.size, recovered);
+    OctreeMesher mesher(plc, recovered, capped);
+    OctreeMesh3Result result = mesher.run();
+    result.size = capped.size;
+    return result;
 }
 
 }  // namespace exactmesh::generators

@@ -1582,6 +1582,14 @@ tetmesh_regions() {
   # Every generator writes the region attribute column (TetGen -A), each tetrahedron its side's.
   region_attributes_match "$work/r.node" "$work/r.ele" 1 2 || fail "refinement: r.ele's region attributes"
   region_attributes_match "$work/f.node" "$work/f.ele" 1 2 || fail "frontal: f.ele's region attributes"
+  # The octree takes each region's bound as a size (the regular tetrahedron's edge): the
+  # finer-bounded cube gets more tetrahedra, each on its side; those over their bound counted.
+  run 0 tetmesh "$work/two.poly" --generator octree --size 0.3 --stats -o "$work/ob.ele" || return
+  grep -Eq '^over_region_bound_tets: [0-9]+$' "$work/out" || fail "octree: no over_region_bound_tets line"
+  region_attributes_match "$work/ob.node" "$work/ob.ele" 1 2 || fail "octree bounds: ob.ele's region attributes"
+  read -r left right left_max right_max < <(region_volumes "$work/ob.node" "$work/ob.ele")
+  [[ $left -ge 1000 && $left -gt $((2 * right)) ]] || fail "octree bounds: $left tetrahedra left (bound 0.001), $right right"
+  run 0 check "$work/two.poly" "$work/ob.ele" && grep -q '^ok: ' "$work/out" || fail "check two.poly ob.ele: $(cat "$work/out")"
   write_two_regions_poly "$work/plain.poly" -1 -1
   run 0 tetmesh "$work/plain.poly" --generator octree --size 0.1 --stats -o "$work/o.ele" || return
   grep -Eq '^octree_core_leaves: [1-9]' "$work/out" || fail "octree regions: no core leaf"

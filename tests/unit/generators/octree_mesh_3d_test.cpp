@@ -6,7 +6,8 @@
 // 2:1 balance of the octree, every face in at most two tetrahedra; the identical mesh for the
 // input and size scaled by 2^600 and 2^-600; size and budget errors; region attributes on a
 // box cut in two (each tetrahedron on its region's side of the cut, exactly; at 2^+-600; a
-// later region point overriding; points in a hole or outside ignored).
+// later region point overriding; points in a hole or outside ignored); a region volume bound
+// capping the size (the regular tetrahedron's edge, exact under 2^(3k) scaling), at 2^+-300.
 #include "generators/mesh_3d/octree_mesh_3d.hpp"
 
 #include <gtest/gtest.h>
@@ -20,8 +21,10 @@
 
 #include "base/errors.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "generators/mesh_3d/region_volumes_3d.hpp"
 #include "generators/mesh_3d/sliver_removal_3d.hpp"
 #include "predicates/orient3d.hpp"
+#include "predicates/tet_quality_3d.hpp"
 #include "tests/support/plcs_3d.hpp"
 #include "tests/support/scaled_mesh_3d.hpp"
 #include "tests/support/test_scale.hpp"
@@ -356,6 +359,71 @@ TEST(Generators_OctreeMesh3d, TwoRegionsCarryTheirAttributes) {
                        options_for(SizeFunction3::uniform(h)));
     EXPECT_EQ(later.mesh.mesh.tets, reference.mesh.mesh.tets);
     expect_region_sides(later, 0, 5, 2);
+}
+
+TEST(Generators_OctreeMesh3d, RegularTetEdgeOfVolume) {
+    // The regular tetrahedron of edge 1 has volume 1 / (6 sqrt 2).
+    EXPECT_NEAR(regular_tet_edge_of_volume(1 / (6 * std::sqrt(2.0))), 1.0, 1e-15);
+    EXPECT_NEAR(regular_tet_edge_of_volume(0.001), std::cbrt(6 * std::sqrt(2.0) * 0.001), 1e-15);
+    EXPECT_TRUE(std::isinf(regular_tet_edge_of_volume(0)));
+    EXPECT_TRUE(std::isinf(regular_tet_edge_of_volume(-1)));
+    // The volume times 2^(3k): the same bits times 2^k, also across the exponent's thirds.
+    for (const double v : {0.001, 0.3, 1.0, 5.0, 7.9, 1e-300, 1e300})
+        for (const int k : {1, -1, 2, 300, -300})
+            if (std::isfinite(std::ldexp(v, 3 * k)) && std::ldexp(v, 3 * k) > 1e-300) {
+                EXPECT_EQ(regular_tet_edge_of_volume(std::ldexp(v, 3 * k)),
+                          std::ldexp(regular_tet_edge_of_volume(v), k))
+                    << v << " 2^" << 3 * k;
+            }
+}
+
+TEST(Generators_OctreeMesh3d, RegionVolumeBoundsCapTheSize) {
+    // The left cube bounded at V = 3e-4 (a_V = cbrt(6 sqrt(2) V) = 0.137), the right one not,
+    // at size 0.2: the left cube follows a_V, the right one h.
+    const double bound = 3e-4, h = 0.2;
+    const Plc3 plc = triangulation::two_regions_box(bound, -1);
+    const OctreeMesh3Result result = mesh_and_check(plc, SizeFunction3::uniform(h), "bounded");
+    const double a = regular_tet_edge_of_volume(bound);
+    EXPECT_EQ(result.size(0.5, 0.5, 0.5), a);
+    EXPECT_EQ(result.size(1.5, 0.5, 0.5), h);
+    EXPECT_EQ(result.size(1.0, 0.5, 0.5), a);  // on the cut: the smaller
+    EXPECT_EQ(result.size(3.0, 0.5, 0.5), h);  // outside the domain
+    const auto templates = expect_region_sides(result, 0, 1, 2);
+    EXPECT_GT(templates[0], 0u);
+    const ConformingMesh3& mesh = result.mesh;
+    ASSERT_EQ(mesh.tet_max_volume.size(), mesh.mesh.tet_count());
+    std::array<std::uint32_t, 2> count{0, 0};
+    std::uint32_t over = 0;
+    for (std::uint32_t t = 0; t < mesh.mesh.tet_count(); ++t) {
+        const bool left = mesh.tet_attributes[t] == 1;
+        ++count[left ? 0 : 1];
+        EXPECT_EQ(mesh.tet_max_volume[t], left ? bound : -1.0) << t;
+        if (!left) continue;
+        const std::uint32_t* v = &mesh.mesh.tets[4 * std::size_t{t}];
+        over += predicates::compare_tet_volume_3d(mesh.mesh.point(v[0]), mesh.mesh.point(v[1]),
+                                                  mesh.mesh.point(v[2]), mesh.mesh.point(v[3]),
+                                                  bound) == Sign::Positive;
+    }
+    std::printf("bounded left cube: %u tetrahedra (mean volume %.3g V), %u over V; right: %u\n",
+                count[0], 1.0 / count[0] / bound, over, count[1]);
+    // The size is a_V, not a bound on every volume: on average the left tetrahedra are within
+    // V (the unit cube over V is 3,333), and the unbounded cube at h = 1.46 a_V is far coarser.
+    EXPECT_GE(count[0], static_cast<std::uint32_t>(1 / bound));
+    EXPECT_GT(count[0], 2 * count[1]);
+    // Scaled by 2^+-300 (the bound by 2^+-900): the scaled mesh, the same regions and bounds.
+    for (const int e : {300, -300}) {
+        const Plc3 s = triangulation::scaled(plc, e);
+        const OctreeMesh3Result scaled =
+            octree_mesh_3d(s, triangulation::boundary_recovery_3d(s).mesh,
+                           options_for(SizeFunction3::uniform(std::ldexp(h, e))));
+        exactmesh::testing::expect_scaled_mesh(scaled.mesh, mesh, e);
+        EXPECT_EQ(scaled.mesh.tet_attributes, mesh.tet_attributes) << e;
+        ASSERT_EQ(scaled.mesh.tet_max_volume.size(), mesh.tet_max_volume.size());
+        for (std::size_t t = 0; t < mesh.tet_max_volume.size(); ++t)
+            ASSERT_EQ(scaled.mesh.tet_max_volume[t],
+                      mesh.tet_max_volume[t] > 0 ? std::ldexp(mesh.tet_max_volume[t], 3 * e) : -1.0)
+                << t;
+    }
 }
 
 TEST(Generators_OctreeMesh3d, RegionPointsInAHoleOrOutsideAreWarnedAndIgnored) {
