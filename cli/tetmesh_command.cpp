@@ -13,7 +13,9 @@
 // (generators/mesh_3d/octree_mesh_3d: core leaves cut by templates, the band at the boundary
 // meshed by recovery and frontal insertion), followed by sliver removal. Region volume bounds
 // of a .poly/.smesh (TetGen's region list) are applied by Delaunay refinement, which then runs
-// even without --radius-edge or --max-volume (as TetGen's -a does with region constraints).
+// even without --radius-edge or --max-volume (as TetGen's -a does with region constraints); the
+// octree takes them as sizes (the regular tetrahedron's edge) and says how many tetrahedra
+// exceed them. Region attributes go to the .ele (TetGen -A's column) from every generator.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -48,6 +50,7 @@
 #include "io/tetgen_format.hpp"
 #include "io/vtk_format.hpp"
 #include "predicates/stats.hpp"
+#include "predicates/tet_quality_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
 #include "triangulation/mesh/plc_3d.hpp"
 #include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
@@ -237,6 +240,7 @@ void run_tetmesh(const TetmeshArguments& arguments) {
                 meshed.octree = meshed_octree.counters;
                 meshed.octree_band_recovery = meshed_octree.band_recovery;
                 meshed.frontal = meshed_octree.band_frontal;
+                meshed.size = meshed_octree.size;  // capped by the region volume bounds
             }
             if (refine) {
                 gen::DelaunayRefinement3Result refined =
@@ -283,6 +287,29 @@ void run_tetmesh(const TetmeshArguments& arguments) {
                            ": the region volume bounds are applied by Delaunay refinement only; "
                            "--generator frontal follows --size and ignores them");
     }
+    // The octree takes each region's bound V as a size (the regular tetrahedron's edge), which
+    // holds the typical tetrahedron near V but not every one: counted exactly and said.
+    std::uint64_t over_region_bounds = 0;
+    if (octree && region_bounds) {
+        const tri::Tetrahedralization3& m = conforming.mesh;
+        for (tri::TetIdx t = 0; t < m.tet_count(); ++t) {
+            const double bound = gen::tet_volume_bound_3d(conforming, t, 0);
+            if (!(bound > 0)) continue;
+            const std::uint32_t* v = &m.tets[4 * std::size_t{t}];
+            if (predicates::compare_tet_volume_3d(m.point(v[0]), m.point(v[1]), m.point(v[2]),
+                                                  m.point(v[3]),
+                                                  bound) == predicates::Sign::Positive)
+                ++over_region_bounds;
+        }
+        if (over_region_bounds != 0) {
+            warnings.push_back(source + ": " + std::to_string(over_region_bounds) + " of " +
+                               std::to_string(m.tet_count()) +
+                               " tetrahedra exceed their region's volume bound: --generator "
+                               "octree follows each bound as a size (the edge of the regular "
+                               "tetrahedron of that volume); --generator delaunay-refinement "
+                               "holds every tetrahedron to it");
+        }
+    }
     if (refine) {
         quality = gen::check_refinement_quality_3d(conforming, refinement);
         const std::uint64_t over = quality.over_bound + quality.over_volume;
@@ -305,13 +332,17 @@ void run_tetmesh(const TetmeshArguments& arguments) {
     }
 
     const tri::Tetrahedralization3& mesh = conforming.mesh;
+    EM_ASSERT(conforming.tet_attributes.empty() ||
+              conforming.tet_attributes.size() == mesh.tet_count());
     io::OutputSet set;
     switch (format) {
         case OutputFormat::Ele: {
             std::vector<std::uint32_t> faces;
             std::vector<int> markers;
             subfaces_with_markers(conforming, plc, faces, markers);
-            set.stage(files[0], io::format_tetgen_ele(mesh.tets, base));
+            // Region attributes (a .poly/.smesh with regions; every generator carries them
+            // through) as TetGen -A writes them: one column after the corners.
+            set.stage(files[0], io::format_tetgen_ele(mesh.tets, base, conforming.tet_attributes));
             set.stage(files[1], io::format_tetgen_node(mesh.xyz, base));
             set.stage(files[2], io::format_tetgen_marked_faces(faces, markers, base));
             set.stage(files[3], io::format_tetgen_neigh(mesh.neighbors, base));
@@ -365,6 +396,7 @@ void run_tetmesh(const TetmeshArguments& arguments) {
             for (auto& [name, value] :
                  counters_by_name(gen::kOctreeMesh3CounterNames, result.octree))
                 counters.emplace_back("octree_" + name, value);
+            if (region_bounds) counters.emplace_back("over_region_bound_tets", over_region_bounds);
             for (auto& [name, value] :
                  counters_by_name(tri::kBoundaryRecovery3CounterNames, result.octree_band_recovery))
                 counters.emplace_back("octree_band_recovery_" + name, value);

@@ -93,10 +93,11 @@ TetgenEleFile parse_tetgen_ele_lines(TextLines& lines, std::uint32_t vertex_firs
 }
 
 /// A per-tetrahedron TetGen table (.ele, .neigh): "<count><header_rest>", then a line per
-/// tetrahedron, its number and append_value(out, t, k) for its 4 slots k in TetGen's order.
+/// tetrahedron, its number and append_value(out, t, k) for its 4 slots k in TetGen's order,
+/// then " <attributes[t]>" when `attributes` is not empty (.ele's region attribute).
 template <class AppendValue>
 std::string format_tet_table(std::size_t count, std::uint32_t first_index, const char* header_rest,
-                             AppendValue&& append_value) {
+                             AppendValue&& append_value, std::span<const double> attributes = {}) {
     std::string out;
     out.reserve(48 * count + 32);
     append_unsigned(out, count);
@@ -106,6 +107,10 @@ std::string format_tet_table(std::size_t count, std::uint32_t first_index, const
         for (const unsigned k : kTetGenCorner) {
             out += ' ';
             append_value(out, t, k);
+        }
+        if (!attributes.empty()) {
+            out += ' ';
+            append_double(out, attributes[t]);
         }
         out += '\n';
     }
@@ -198,11 +203,14 @@ void write_tetgen_node(const std::filesystem::path& path, std::span<const double
     write_text_file(path, format_tetgen_node(xyz, first_index));
 }
 
-std::string format_tetgen_ele(std::span<const std::uint32_t> tets, std::uint32_t first_index) {
-    return format_tet_table(tets.size() / 4, first_index, " 4 0\n",
-                            [&](std::string& out, std::size_t t, unsigned k) {
-                                append_unsigned(out, std::uint64_t{tets[4 * t + k]} + first_index);
-                            });
+std::string format_tetgen_ele(std::span<const std::uint32_t> tets, std::uint32_t first_index,
+                              std::span<const double> attributes) {
+    return format_tet_table(
+        tets.size() / 4, first_index, attributes.empty() ? " 4 0\n" : " 4 1\n",
+        [&](std::string& out, std::size_t t, unsigned k) {
+            append_unsigned(out, std::uint64_t{tets[4 * t + k]} + first_index);
+        },
+        attributes);
 }
 
 void write_tetgen_ele(const std::filesystem::path& path, std::span<const std::uint32_t> tets,

@@ -97,8 +97,10 @@ void write_tetgen_node(const std::filesystem::path& path, std::span<const double
                        std::uint32_t first_index);
 
 /// `#T 4 0` and the tetrahedra (exactmesh orientation in, TetGen's written), tetrahedra and
-/// vertices numbered from first_index.
-std::string format_tetgen_ele(std::span<const std::uint32_t> tets, std::uint32_t first_index);
+/// vertices numbered from first_index. With `attributes` (#T region attributes, as TetGen -A
+/// writes them) the header is `#T 4 1` and each line ends with its tetrahedron's attribute.
+std::string format_tetgen_ele(std::span<const std::uint32_t> tets, std::uint32_t first_index,
+                              std::span<const double> attributes = {});
 void write_tetgen_ele(const std::filesystem::path& path, std::span<const std::uint32_t> tets,
                       std::uint32_t first_index);
 

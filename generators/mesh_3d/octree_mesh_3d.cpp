@@ -20,10 +20,12 @@
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
 #include "generators/mesh_3d/gap_estimate_3d.hpp"
+#include "generators/mesh_3d/region_volumes_3d.hpp"
 #include "generators/mesh_3d/restricted_delaunay_3d.hpp"
 #include "predicates/orient3d.hpp"
 #include "triangulation/mesh/flip_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
+#include "triangulation/recovery_3d/region_flood_3d.hpp"
 
 namespace exactmesh::generators {
 
@@ -454,6 +456,9 @@ class OctreeMesher {
 
     void mesh_band() {
         band_plc_ = plc_;
+        // Regions are assigned on the merged mesh (merge); in the band's PLC a region point on
+        // an interface square would be refused as naming neither side of a facet.
+        band_plc_.regions.clear();
         // Phase A: the corners of every core leaf and piece, on exact axis lines, so each
         // interface square lists every such corner on its perimeter (hanging corners).
         VertexTable corner_table(corner_xyz_);
@@ -601,6 +606,11 @@ class OctreeMesher {
                                 error.what());
         }
         fill_features(out, band_count);
+        // Regions on the merged mesh: its subfaces are the PLC's (interface squares dropped),
+        // so a flood from each region point covers its whole region, core and band alike. The
+        // domain is the recovered one, so a region point outside it was already named in
+        // boundary recovery's warnings: these are the same and are not repeated.
+        tri::assign_regions_3d(plc_, out);
     }
 
     /// The PLC's features from the band's: interface corners, segments and facets are not
@@ -666,16 +676,19 @@ OctreeMesh3Result octree_mesh_3d(const tri::Plc3& plc, const tri::ConformingMesh
                                  const OctreeMesh3Options& options) {
     if (!options.size.defined())
         throw InputError("octree mesh 3d: no size given (the target edge length h)");
-    if (!plc.regions.empty())
-        throw InputError(
-            "octree mesh 3d: region attributes are not supported yet (issue 15); use "
-            "--generator frontal or delaunay-refinement");
     if (plc.xyz.empty()) throw InputError("octree mesh 3d: the PLC has no vertex");
     refuse_gaps_far_over_budget_3d(
         plc, recovered, restricted_3d::steiner_budget_3d(recovered, options.max_steiner_points),
         "octree mesh 3d");
-    OctreeMesher mesher(plc, recovered, options);
-    return mesher.run();
+    // Region volume bounds (Region3::max_volume, flooded into the recovered tetrahedra) cap
+    // the size in their regions: the leaves, the band's frontal insertion and the estimate
+    // all follow the capped size.
+    OctreeMesh3Options capped = options;
+    capped.size = size_with_region_volumes_3d(options.size, recovered);
+    OctreeMesher mesher(plc, recovered, capped);
+    OctreeMesh3Result result = mesher.run();
+    result.size = capped.size;
+    return result;
 }
 
 }  // namespace exactmesh::generators

@@ -40,9 +40,20 @@
 //     a face in three tetrahedra or a non-positive one is an InternalError); the PLC's segments,
 //     subsegments and subfaces from the band (interface ones dropped, their vertices become
 //     Volume).
-// Not done: region attributes (refused: InputError); sliver removal is the caller's (the CLI
-// runs sliver_removal_3d on the merged mesh). Cost: O(leaves) octree work with hash lookups,
-// plus the band's recovery and frontal meshing.
+//  6. Regions (TetGen's region list): each region point is located in the merged mesh (exact
+//     orient3d, closed) and its attribute and volume bound flood across faces that are not
+//     subfaces (triangulation/recovery_3d/region_flood_3d, as boundary recovery's carve), so
+//     every tetrahedron, template or band, carries its region's attribute (0 outside every
+//     region; a later point in the same region overrides an earlier one). A region's volume
+//     bound V caps the size there at a_V = cbrt(6 sqrt(2) V), the regular tetrahedron's edge
+//     (region_volumes_3d: the region found in `recovered` by exact location), wherever the
+//     size is evaluated: leaf centres, the estimate, the band's frontal insertion. The mesh
+//     follows a_V as it follows h: its tetrahedra are not held to V (a core leaf of edge
+//     1.8 a_V has template tetrahedra of 0.24 a_V^3 = 2.1 V); Delaunay refinement is the
+//     generator that bounds every volume exactly.
+// Not done: sliver removal is the caller's (the CLI runs sliver_removal_3d on the merged
+// mesh). Cost: O(leaves) octree work with hash lookups, plus the band's recovery and frontal
+// meshing, plus O(#T) per region point.
 #pragma once
 
 #include <array>
@@ -98,12 +109,17 @@ struct OctreeMesh3Result {
     FrontalDelaunay3Counters band_frontal;
     Octree3 octree;
     std::vector<std::uint8_t> core;  ///< per octree leaf: 1 when core
+    /// The size followed: options.size, capped in regions with a volume bound (see above).
+    SizeFunction3 size;
 };
 
 /// Meshes the domain of `plc` as above. `recovered` is boundary_recovery_3d's result for `plc`
 /// (used to classify the core's components as inside). The PLC's vertices keep their indices.
-/// @throws InputError when the size is undefined or not > 0 where evaluated, the PLC has
-///         regions, or a budget is exceeded (the leaf budget at once when the estimate does).
+/// The result's mesh carries tet_attributes (and tet_max_volume when a region has a bound) when
+/// the PLC has regions; a region point outside the domain or in a hole is ignored (boundary
+/// recovery, which made `recovered` of the same domain, warns of it).
+/// @throws InputError when the size is undefined or not > 0 where evaluated, or a budget is
+///         exceeded (the leaf budget at once when the estimate does).
 OctreeMesh3Result octree_mesh_3d(const triangulation::Plc3& plc,
                                  const triangulation::ConformingMesh3& recovered,
                                  const OctreeMesh3Options& options);

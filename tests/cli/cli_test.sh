@@ -1544,6 +1544,19 @@ region_volumes() {
     END { printf "%d %d %.17g %.17g\n", n[0], n[1], m[0], m[1] }' "$1" "$2"
 }
 
+# region_attributes_match NODE ELE LEFT RIGHT: the .ele carries one attribute column (header
+# "#T 4 1") and each tetrahedron's attribute is LEFT when its centroid's x is below 1, else RIGHT
+# (the centroid of a tetrahedron with corners on either side of the cut at x = 1 could not be
+# told apart: none may exist, as each region's tetrahedra lie on its side).
+region_attributes_match() {
+  awk -v left="$3" -v right="$4" 'FNR == 1 && FILENAME !~ /node$/ { if ($3 != 1) bad = 1 }
+    FNR == 1 || /^#/ { next }
+    FILENAME ~ /node$/ { X[$1] = $2; next }
+    { n++; want = (X[$2] + X[$3] + X[$4] + X[$5]) / 4 < 1 ? left : right
+      if (NF != 6 || $6 != want) bad = 1 }
+    END { exit bad || n == 0 }' "$1" "$2"
+}
+
 tetmesh_regions() {
   # Region volume bounds (TetGen's -a with region constraints): refinement runs without
   # --max-volume, each region within its own bound, checked exactly before writing.
@@ -1566,6 +1579,24 @@ tetmesh_regions() {
   run 0 tetmesh "$work/two.poly" --generator frontal --size 0.3 -o "$work/f.ele" || return
   grep -q 'warning: .*region volume bounds are applied by Delaunay refinement only' "$work/err" ||
     fail "frontal: no warning about the region bounds: $(cat "$work/err")"
+  # Every generator writes the region attribute column (TetGen -A), each tetrahedron its side's.
+  region_attributes_match "$work/r.node" "$work/r.ele" 1 2 || fail "refinement: r.ele's region attributes"
+  region_attributes_match "$work/f.node" "$work/f.ele" 1 2 || fail "frontal: f.ele's region attributes"
+  # The octree takes each region's bound as a size (the regular tetrahedron's edge): the
+  # finer-bounded cube gets more tetrahedra, each on its side; those over their bound counted.
+  run 0 tetmesh "$work/two.poly" --generator octree --size 0.3 --stats -o "$work/ob.ele" || return
+  grep -Eq '^over_region_bound_tets: [0-9]+$' "$work/out" || fail "octree: no over_region_bound_tets line"
+  region_attributes_match "$work/ob.node" "$work/ob.ele" 1 2 || fail "octree bounds: ob.ele's region attributes"
+  read -r left right left_max right_max < <(region_volumes "$work/ob.node" "$work/ob.ele")
+  [[ $left -ge 1000 && $left -gt $((2 * right)) ]] || fail "octree bounds: $left tetrahedra left (bound 0.001), $right right"
+  run 0 check "$work/two.poly" "$work/ob.ele" && grep -q '^ok: ' "$work/out" || fail "check two.poly ob.ele: $(cat "$work/out")"
+  write_two_regions_poly "$work/plain.poly" -1 -1
+  run 0 tetmesh "$work/plain.poly" --generator octree --size 0.1 --stats -o "$work/o.ele" || return
+  grep -Eq '^octree_core_leaves: [1-9]' "$work/out" || fail "octree regions: no core leaf"
+  region_attributes_match "$work/o.node" "$work/o.ele" 1 2 || fail "octree: o.ele's region attributes: $(head -n3 "$work/o.ele")"
+  run 0 check "$work/plain.poly" "$work/o.ele" &&
+    grep -Eq '^ok: [0-9]+ tetrahedra, exact conforming mesh of the PLC' "$work/out" ||
+    fail "check plain.poly o.ele: $(cat "$work/out")"
   # A region bound far over the budget is refused at once with the estimate.
   write_two_regions_poly "$work/tiny.poly" 1e-12 0.01
   expect_error 2 'exceeded at once: the region volume bounds \(smallest 1e-12\) ask for about 1\.54e\+11' \

@@ -27,6 +27,7 @@
 #include "triangulation/mesh/vertex_keys_3d.hpp"
 #include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
 #include "triangulation/recovery_3d/plc_3d.hpp"
+#include "triangulation/recovery_3d/region_flood_3d.hpp"
 
 namespace exactmesh::triangulation {
 
@@ -34,7 +35,7 @@ using predicates::Sign;
 
 namespace {
 
-using FaceSet = std::unordered_set<Key3, Key3Hash>;
+using FaceSet = FaceSet3;
 
 /// Exact coordinates as a key (bit patterns; +0 and -0 merged).
 struct PointKey {
@@ -581,56 +582,6 @@ class Recovery {
         return true;
     }
 
-    /// The tetrahedron holding p (closed), or kNone.
-    TetIdx locate(const double* p) const {
-        const auto& m = mesh_.mesh;
-        for (TetIdx t = 0; t < m.tet_count(); ++t) {
-            bool in = true;
-            for (unsigned k = 0; k < 4 && in; ++k) {
-                const unsigned* lf = kFaceVertex[k];
-                in = predicates::orient3d(m.point(m.tets[4 * t + lf[0]]),
-                                          m.point(m.tets[4 * t + lf[1]]),
-                                          m.point(m.tets[4 * t + lf[2]]), p) != Sign::Negative;
-            }
-            if (in) return t;
-        }
-        return kNone;
-    }
-
-    /// A region's values, written into every tetrahedron a flood reaches.
-    struct RegionValues {
-        std::vector<double>* attributes;
-        std::vector<double>* max_volumes;  ///< nullptr: no region has a bound
-        double attribute;
-        double max_volume;
-    };
-
-    /// Marks every tetrahedron reached from the seeds without crossing a subface.
-    void flood(std::vector<TetIdx> stack, const FaceSet& subface_set,
-               std::vector<std::uint8_t>& mark, std::uint8_t value,
-               const RegionValues* region = nullptr) const {
-        const auto& m = mesh_.mesh;
-        while (!stack.empty()) {
-            const TetIdx t = stack.back();
-            stack.pop_back();
-            if (mark[t] == value) continue;
-            mark[t] = value;
-            if (region != nullptr) {
-                (*region->attributes)[t] = region->attribute;
-                if (region->max_volumes != nullptr) (*region->max_volumes)[t] = region->max_volume;
-            }
-            for (unsigned k = 0; k < 4; ++k) {
-                const TetIdx n = m.neighbors[4 * t + k];
-                if (n == kNone || mark[n] == value) continue;
-                const unsigned* lf = kFaceVertex[k];
-                if (subface_set.count(sorted3(m.tets[4 * t + lf[0]], m.tets[4 * t + lf[1]],
-                                              m.tets[4 * t + lf[2]])) != 0)
-                    continue;
-                stack.push_back(n);
-            }
-        }
-    }
-
     /// Whether p lies in the closed subface (a, b, c), exactly: coplanar (orient3d zero) and
     /// inside it in a coordinate projection where it is not flat (drop_axis).
     bool on_subface(const double* p, VertIdx a, VertIdx b, VertIdx c) const {
@@ -664,9 +615,7 @@ class Recovery {
 
     ConformingMesh3 carve(std::vector<VertIdx> subfaces, std::vector<std::uint32_t> owners) {
         refuse_points_on_facets(subfaces, owners);
-        FaceSet subface_set;
-        for (std::size_t t = 0; t < subfaces.size(); t += 3)
-            subface_set.insert(sorted3(subfaces[t], subfaces[t + 1], subfaces[t + 2]));
+        const FaceSet subface_set = face_set_3d(subfaces);
         const auto& m = mesh_.mesh;
         const TetIdx count = m.tet_count();
         std::vector<std::uint8_t> removed(count, 0);
@@ -680,12 +629,12 @@ class Recovery {
                     seeds.push_back(t);
             }
         }
-        flood(seeds, subface_set, removed, 1);
+        flood_tetrahedra_3d(m, subface_set, seeds, removed, 1);
         // Hole points after the outside: one there (or beyond the hull) changes nothing and is
         // named in a warning, as TetGen ignores it.
         seeds.clear();
         for (std::size_t h = 0; h + 2 < plc_.holes.size(); h += 3) {
-            const TetIdx t = locate(&plc_.holes[h]);
+            const TetIdx t = locate_closed_tetrahedron_3d(m, &plc_.holes[h]);
             if (t != kNone && removed[t] == 0) {
                 seeds.push_back(t);
             } else {
@@ -695,37 +644,13 @@ class Recovery {
                                     " lies outside the domain: ignored");
             }
         }
-        flood(seeds, subface_set, removed, 1);
+        flood_tetrahedra_3d(m, subface_set, seeds, removed, 1);
         // Region attributes and volume bounds by the same flood (a later region point in the
         // same region overrides an earlier one, as TetGen does).
-        std::vector<double> attributes;
-        std::vector<double> max_volumes;
-        for (std::size_t r = 0; r < plc_.regions.size(); ++r) {
-            const double p[3] = {plc_.regions[r].x, plc_.regions[r].y, plc_.regions[r].z};
-            const TetIdx t = locate(p);
-            if (t == kNone || removed[t] != 0) {
-                warnings_.push_back("region point " + std::to_string(r + plc_.first_index) + " " +
-                                    format_point(p, 3) +
-                                    " lies outside the domain or in a hole: ignored");
-            }
-        }
-        if (!plc_.regions.empty()) {
-            attributes.assign(count, 0.0);
-            const bool bounded =
-                std::any_of(plc_.regions.begin(), plc_.regions.end(),
-                            [](const Region3& region) { return region.max_volume > 0; });
-            if (bounded) max_volumes.assign(count, -1.0);
-            std::vector<std::uint8_t> seen(count, 0);
-            for (const Region3& region : plc_.regions) {
-                const double p[3] = {region.x, region.y, region.z};
-                const TetIdx t = locate(p);
-                if (t == kNone || removed[t]) continue;
-                std::fill(seen.begin(), seen.end(), 0);
-                const RegionValues values{&attributes, bounded ? &max_volumes : nullptr,
-                                          region.attribute, region.max_volume};
-                flood({t}, subface_set, seen, 1, &values);
-            }
-        }
+        RegionAssignment3 regions = assign_regions_3d(plc_, m, subface_set, removed);
+        warnings_.insert(warnings_.end(), regions.warnings.begin(), regions.warnings.end());
+        const std::vector<double>& attributes = regions.attributes;
+        const std::vector<double>& max_volumes = regions.max_volumes;
         ConformingMesh3 out;
         std::vector<TetIdx> new_index(count, kNone);
         TetIdx kept = 0;

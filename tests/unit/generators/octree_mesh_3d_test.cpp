@@ -4,7 +4,10 @@
 // (positive tetrahedra by exact orient3d, mutual neighbours, every subsegment and subface
 // present, the boundary made of subfaces), input vertices kept, the domain's volume, a core,
 // 2:1 balance of the octree, every face in at most two tetrahedra; the identical mesh for the
-// input and size scaled by 2^600 and 2^-600; size and budget errors.
+// input and size scaled by 2^600 and 2^-600; size and budget errors; region attributes on a
+// box cut in two (each tetrahedron on its region's side of the cut, exactly; at 2^+-600; a
+// later region point overriding; points in a hole or outside ignored); a region volume bound
+// capping the size (the regular tetrahedron's edge, exact under 2^(3k) scaling), at 2^+-300.
 #include "generators/mesh_3d/octree_mesh_3d.hpp"
 
 #include <gtest/gtest.h>
@@ -18,8 +21,10 @@
 
 #include "base/errors.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
+#include "generators/mesh_3d/region_volumes_3d.hpp"
 #include "generators/mesh_3d/sliver_removal_3d.hpp"
 #include "predicates/orient3d.hpp"
+#include "predicates/tet_quality_3d.hpp"
 #include "tests/support/plcs_3d.hpp"
 #include "tests/support/scaled_mesh_3d.hpp"
 #include "tests/support/test_scale.hpp"
@@ -267,11 +272,191 @@ TEST(Generators_OctreeMesh3d, SizeAndBudgetErrors) {
                   std::string::npos)
             << error.what();
     }
-    // Regions are not supported yet.
-    Plc3 with_region = plc;
-    with_region.regions.push_back({0.1, 0.1, 0.1, 1, -1});
-    EXPECT_THROW(octree_mesh_3d(with_region, recovered, options_for(SizeFunction3::uniform(0.1))),
-                 InputError);
+}
+
+/// The tetrahedra of `mesh` whose attribute is `attribute`, as a mesh of their own (for volumes).
+triangulation::Tetrahedralization3 with_attribute(const ConformingMesh3& mesh, double attribute) {
+    triangulation::Tetrahedralization3 part;
+    part.xyz = mesh.mesh.xyz;
+    for (std::size_t t = 0; t < mesh.tet_attributes.size(); ++t)
+        if (mesh.tet_attributes[t] == attribute)
+            part.tets.insert(part.tets.end(), mesh.mesh.tets.begin() + 4 * std::ptrdiff_t(t),
+                             mesh.mesh.tets.begin() + 4 * std::ptrdiff_t(t + 1));
+    return part;
+}
+
+/// Checks a mesh of two_regions_box scaled by 2^e independently of the flood: every tetrahedron
+/// carries attribute `left` or `right`, and all its corners lie on that attribute's side of the
+/// plane x = 2^e or on it, with at least one strictly on that side (exact orient3d against
+/// three points of the plane; the left side's sign is the origin's). Returns the count of
+/// template tetrahedra (those after the band's in the merged list) per side.
+std::array<std::uint32_t, 2> expect_region_sides(const OctreeMesh3Result& result, int e,
+                                                 double left, double right) {
+    const ConformingMesh3& mesh = result.mesh;
+    const auto& m = mesh.mesh;
+    std::array<std::uint32_t, 2> templates{0, 0};
+    EXPECT_EQ(mesh.tet_attributes.size(), m.tet_count()) << "2^" << e;
+    if (mesh.tet_attributes.size() != m.tet_count()) return templates;
+    const double one = std::ldexp(1.0, e);
+    const double a[3] = {one, 0, 0}, b[3] = {one, one, 0}, c[3] = {one, 0, one};
+    const double origin[3] = {0, 0, 0};
+    const Sign left_side = predicates::orient3d(a, b, c, origin);
+    EXPECT_NE(left_side, Sign::Zero);
+    std::uint32_t wrong = 0;
+    for (std::uint32_t t = 0; t < m.tet_count(); ++t) {
+        const double attribute = mesh.tet_attributes[t];
+        EXPECT_TRUE(attribute == left || attribute == right)
+            << "tetrahedron " << t << ": " << attribute << " at 2^" << e;
+        const Sign side = attribute == left ? left_side : Sign(-static_cast<int>(left_side));
+        bool strictly = false;
+        for (unsigned k = 0; k < 4; ++k) {
+            const Sign s = predicates::orient3d(a, b, c, m.point(m.tets[4 * std::size_t{t} + k]));
+            if (s == side) strictly = true;
+            if (s != side && s != Sign::Zero) ++wrong;
+        }
+        if (!strictly) ++wrong;
+        if (t >= result.counters.band_tets) ++templates[attribute == left ? 0 : 1];
+    }
+    EXPECT_EQ(wrong, 0u) << "tetrahedra on the wrong side of x = 2^" << e << " for their attribute";
+    return templates;
+}
+
+TEST(Generators_OctreeMesh3d, TwoRegionsCarryTheirAttributes) {
+    // The box [0, 2] x [0, 1]^2 cut at x = 1 by an internal facet; region 1 left, 2 right.
+    const Plc3 plc = triangulation::two_regions_box(-1, -1);
+    const double h = test_size(0.1, 0.11);
+    const OctreeMesh3Result reference =
+        mesh_and_check(plc, SizeFunction3::uniform(h), "two regions");
+    EXPECT_TRUE(reference.mesh.tet_max_volume.empty());  // no region has a bound
+    const auto templates = expect_region_sides(reference, 0, 1, 2);
+    // Both cubes have a core: their template tetrahedra got the attribute by the flood.
+    EXPECT_GT(templates[0], 0u);
+    EXPECT_GT(templates[1], 0u);
+    EXPECT_NEAR(triangulation::mesh_volume(with_attribute(reference.mesh, 1)), 1.0, 1e-9);
+    EXPECT_NEAR(triangulation::mesh_volume(with_attribute(reference.mesh, 2)), 1.0, 1e-9);
+    // Sliver removal (the command runs it) keeps each tetrahedron's attribute on its side.
+    OctreeMesh3Result improved = reference;
+    improved.mesh = sliver_removal_3d(reference.mesh).mesh;
+    improved.counters.band_tets = improved.mesh.mesh.tet_count();  // no template split known
+    expect_region_sides(improved, 0, 1, 2);
+    // Scaled by 2^+-600: the scaled mesh with the same attributes.
+    for (const int e : {600, -600}) {
+        const Plc3 s = triangulation::scaled(plc, e);
+        const OctreeMesh3Result scaled =
+            octree_mesh_3d(s, triangulation::boundary_recovery_3d(s).mesh,
+                           options_for(SizeFunction3::uniform(std::ldexp(h, e))));
+        EXPECT_TRUE(triangulation::check_boundary_conformity_3d(s, scaled.mesh).ok) << e;
+        exactmesh::testing::expect_scaled_mesh(scaled.mesh, reference.mesh, e);
+        EXPECT_EQ(scaled.mesh.tet_attributes, reference.mesh.tet_attributes) << e;
+        expect_region_sides(scaled, e, 1, 2);
+    }
+    // A later region point in the same region overrides an earlier one (TetGen's order): the
+    // same mesh, the left cube now 5.
+    Plc3 overridden = plc;
+    overridden.regions.push_back({0.25, 0.75, 0.125, 5, -1});
+    const OctreeMesh3Result later =
+        octree_mesh_3d(overridden, triangulation::boundary_recovery_3d(overridden).mesh,
+                       options_for(SizeFunction3::uniform(h)));
+    EXPECT_EQ(later.mesh.mesh.tets, reference.mesh.mesh.tets);
+    expect_region_sides(later, 0, 5, 2);
+}
+
+TEST(Generators_OctreeMesh3d, RegularTetEdgeOfVolume) {
+    // The regular tetrahedron of edge 1 has volume 1 / (6 sqrt 2).
+    EXPECT_NEAR(regular_tet_edge_of_volume(1 / (6 * std::sqrt(2.0))), 1.0, 1e-15);
+    EXPECT_NEAR(regular_tet_edge_of_volume(0.001), std::cbrt(6 * std::sqrt(2.0) * 0.001), 1e-15);
+    EXPECT_TRUE(std::isinf(regular_tet_edge_of_volume(0)));
+    EXPECT_TRUE(std::isinf(regular_tet_edge_of_volume(-1)));
+    // The volume times 2^(3k): the same bits times 2^k, also across the exponent's thirds.
+    for (const double v : {0.001, 0.3, 1.0, 5.0, 7.9, 1e-300, 1e300})
+        for (const int k : {1, -1, 2, 300, -300})
+            if (std::isfinite(std::ldexp(v, 3 * k)) && std::ldexp(v, 3 * k) > 1e-300) {
+                EXPECT_EQ(regular_tet_edge_of_volume(std::ldexp(v, 3 * k)),
+                          std::ldexp(regular_tet_edge_of_volume(v), k))
+                    << v << " 2^" << 3 * k;
+            }
+}
+
+TEST(Generators_OctreeMesh3d, RegionVolumeBoundsCapTheSize) {
+    // The left cube bounded at V = 3e-4 (a_V = cbrt(6 sqrt(2) V) = 0.137), the right one not,
+    // at size 0.2: the left cube follows a_V, the right one h.
+    const double bound = 3e-4, h = 0.2;
+    const Plc3 plc = triangulation::two_regions_box(bound, -1);
+    const OctreeMesh3Result result = mesh_and_check(plc, SizeFunction3::uniform(h), "bounded");
+    const double a = regular_tet_edge_of_volume(bound);
+    EXPECT_EQ(result.size(0.5, 0.5, 0.5), a);
+    EXPECT_EQ(result.size(1.5, 0.5, 0.5), h);
+    EXPECT_EQ(result.size(1.0, 0.5, 0.5), a);  // on the cut: the smaller
+    EXPECT_EQ(result.size(3.0, 0.5, 0.5), h);  // outside the domain
+    const auto templates = expect_region_sides(result, 0, 1, 2);
+    EXPECT_GT(templates[0], 0u);
+    const ConformingMesh3& mesh = result.mesh;
+    ASSERT_EQ(mesh.tet_max_volume.size(), mesh.mesh.tet_count());
+    std::array<std::uint32_t, 2> count{0, 0};
+    std::uint32_t over = 0;
+    for (std::uint32_t t = 0; t < mesh.mesh.tet_count(); ++t) {
+        const bool left = mesh.tet_attributes[t] == 1;
+        ++count[left ? 0 : 1];
+        EXPECT_EQ(mesh.tet_max_volume[t], left ? bound : -1.0) << t;
+        if (!left) continue;
+        const std::uint32_t* v = &mesh.mesh.tets[4 * std::size_t{t}];
+        over += predicates::compare_tet_volume_3d(mesh.mesh.point(v[0]), mesh.mesh.point(v[1]),
+                                                  mesh.mesh.point(v[2]), mesh.mesh.point(v[3]),
+                                                  bound) == Sign::Positive;
+    }
+    std::printf("bounded left cube: %u tetrahedra (mean volume %.3g V), %u over V; right: %u\n",
+                count[0], 1.0 / count[0] / bound, over, count[1]);
+    // The size is a_V, not a bound on every volume: on average the left tetrahedra are within
+    // V (the unit cube over V is 3,333), and the unbounded cube at h = 1.46 a_V is far coarser.
+    EXPECT_GE(count[0], static_cast<std::uint32_t>(1 / bound));
+    EXPECT_GT(count[0], 2 * count[1]);
+    // Scaled by 2^+-300 (the bound by 2^+-900): the scaled mesh, the same regions and bounds.
+    for (const int e : {300, -300}) {
+        const Plc3 s = triangulation::scaled(plc, e);
+        const OctreeMesh3Result scaled =
+            octree_mesh_3d(s, triangulation::boundary_recovery_3d(s).mesh,
+                           options_for(SizeFunction3::uniform(std::ldexp(h, e))));
+        exactmesh::testing::expect_scaled_mesh(scaled.mesh, mesh, e);
+        EXPECT_EQ(scaled.mesh.tet_attributes, mesh.tet_attributes) << e;
+        ASSERT_EQ(scaled.mesh.tet_max_volume.size(), mesh.tet_max_volume.size());
+        for (std::size_t t = 0; t < mesh.tet_max_volume.size(); ++t)
+            ASSERT_EQ(scaled.mesh.tet_max_volume[t],
+                      mesh.tet_max_volume[t] > 0 ? std::ldexp(mesh.tet_max_volume[t], 3 * e) : -1.0)
+                << t;
+    }
+}
+
+TEST(Generators_OctreeMesh3d, RegionPointsInAHoleOrOutsideAreWarnedAndIgnored) {
+    // Box-with-hole (the hole [0.25, 0.75]^3): one region point in the hole, one outside the
+    // box, one in the domain. Boundary recovery warns of the two (the octree meshes the same
+    // domain and does not repeat them); every tetrahedron gets the third one's attribute.
+    Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
+    plc.regions.push_back({0.5, 0.5, 0.5, 9, -1});
+    plc.regions.push_back({2, 2, 2, 8, -1});
+    plc.regions.push_back({0.1, 0.1, 0.1, 4, -1});
+    const triangulation::BoundaryRecovery3Result recovered =
+        triangulation::boundary_recovery_3d(plc);
+    std::size_t region_warnings = 0;
+    for (const std::string& warning : recovered.warnings)
+        region_warnings +=
+            warning.find("region point") != std::string::npos &&
+            warning.find("lies outside the domain or in a hole: ignored") != std::string::npos;
+    EXPECT_EQ(region_warnings, 2u);
+    const double h = test_size(0.06, 0.065);
+    const OctreeMesh3Result result =
+        octree_mesh_3d(plc, recovered.mesh, options_for(SizeFunction3::uniform(h)));
+    EXPECT_TRUE(triangulation::check_boundary_conformity_3d(plc, result.mesh).ok);
+    EXPECT_GT(result.counters.core_leaves, 0u);
+    ASSERT_EQ(result.mesh.tet_attributes.size(), result.mesh.mesh.tet_count());
+    EXPECT_TRUE(std::all_of(result.mesh.tet_attributes.begin(), result.mesh.tet_attributes.end(),
+                            [](double a) { return a == 4; }));
+    // Only the two ignored points: every tetrahedron outside every region, attribute 0.
+    plc.regions.pop_back();
+    const OctreeMesh3Result none =
+        octree_mesh_3d(plc, recovered.mesh, options_for(SizeFunction3::uniform(h)));
+    ASSERT_EQ(none.mesh.tet_attributes.size(), none.mesh.mesh.tet_count());
+    EXPECT_TRUE(std::all_of(none.mesh.tet_attributes.begin(), none.mesh.tet_attributes.end(),
+                            [](double a) { return a == 0; }));
 }
 
 }  // namespace

@@ -102,6 +102,13 @@ TEST(Io_TetGen, EleRoundTripSwapsToTetGensOrientation) {
     const io::TetgenEleFile back = io::parse_tetgen_ele(text, "t.ele", 1, 5);
     EXPECT_EQ(back.tets, kTets);
     EXPECT_EQ(back.first_index, 1u);
+    // Region attributes (TetGen -A): a fifth column, read back as regions.
+    const std::vector<double> attributes{2, -0.5};
+    const std::string with_regions = io::format_tetgen_ele(kTets, 1, attributes);
+    EXPECT_EQ(with_regions, "2 4 1\n1 1 2 4 3 2\n2 2 1 5 3 -0.5\n");
+    const io::TetgenEleFile regions_back = io::parse_tetgen_ele(with_regions, "r.ele", 1, 5);
+    EXPECT_EQ(regions_back.tets, kTets);
+    EXPECT_EQ(regions_back.regions, attributes);
     // Ten-node tetrahedra keep their corners; a region attribute is read.
     const io::TetgenEleFile quadratic =
         io::parse_tetgen_ele("1 10 1\n0 0 1 3 2 4 4 4 4 4 4 -2.5\n", "q.ele", 0, 5);
