@@ -48,11 +48,12 @@ class BoundedRegions {
                     lo_[a] = std::min(lo_[a], p[a]);
                     hi_[a] = std::max(hi_[a], p[a]);
                 }
-        // About one tetrahedron per cell: a cube root of the count per axis, at most 64.
+        // About one tetrahedron per cell: a cube root of the count per axis, at most 64;
+        // coarser while the lists would hold more than 16 entries per tetrahedron (long
+        // slivers of a recovered mesh span many cells: memory would grow as their count
+        // times the cells), as BucketGrid2 does in 2D.
         cells_ = std::clamp(static_cast<int>(std::cbrt(static_cast<double>(tets_.size()))), 1, 64);
-        grid_.resize(static_cast<std::size_t>(cells_) * cells_ * cells_);
-        for (std::uint32_t i = 0; i < tets_.size(); ++i) {
-            std::array<int, 3> from{}, to{};
+        const auto range = [&](std::uint32_t i, std::array<int, 3>& from, std::array<int, 3>& to) {
             for (std::size_t a = 0; a < 3; ++a) {
                 double tmin = tets_[i].corners[0][a], tmax = tmin;
                 for (const auto& p : tets_[i].corners) {
@@ -62,6 +63,21 @@ class BoundedRegions {
                 from[a] = cell(tmin, a);
                 to[a] = cell(tmax, a);
             }
+        };
+        for (; cells_ > 1; cells_ /= 2) {
+            std::uint64_t entries = 0;
+            for (std::uint32_t i = 0; i < tets_.size(); ++i) {
+                std::array<int, 3> from{}, to{};
+                range(i, from, to);
+                entries += std::uint64_t(to[0] - from[0] + 1) * std::uint64_t(to[1] - from[1] + 1) *
+                           std::uint64_t(to[2] - from[2] + 1);
+            }
+            if (entries <= 16 * std::uint64_t{tets_.size()} + 4096) break;
+        }
+        grid_.resize(static_cast<std::size_t>(cells_) * cells_ * cells_);
+        for (std::uint32_t i = 0; i < tets_.size(); ++i) {
+            std::array<int, 3> from{}, to{};
+            range(i, from, to);
             for (int x = from[0]; x <= to[0]; ++x)
                 for (int y = from[1]; y <= to[1]; ++y)
                     for (int z = from[2]; z <= to[2]; ++z) grid_[index(x, y, z)].push_back(i);
