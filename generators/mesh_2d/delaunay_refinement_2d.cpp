@@ -897,6 +897,7 @@ RefinementResult2 Refiner::run() {
     polish();
     const tri::ConstrainedTriangulation2Counters& edits = cdt_.counters();
     counters_.cavity_triangles = edits.cavity_triangles;
+    counters_.rejected_cavity_triangles = edits.rejected_cavity_triangles;
     counters_.circumcenter_exact = predicates::construction_stats().exact_range +
                                    predicates::construction_stats().exact_uncertified;
     RefinementResult2 result;

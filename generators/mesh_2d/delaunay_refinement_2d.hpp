@@ -93,6 +93,9 @@ struct RefinementCounters2 {
     std::uint64_t unsplittable = 0;      ///< bad triangles whose circumcenter rounds onto a vertex
     std::uint64_t cavity_triangles = 0;  ///< triangles replaced by circumcenter insertions
     std::uint64_t largest_cavity = 0;    ///< the most triangles one insertion replaced
+    /// triangles of the conflict zones of insertions rejected at a segment (with
+    /// cavity_triangles, the work bounded at 64 per budgeted Steiner point)
+    std::uint64_t rejected_cavity_triangles = 0;
     std::uint64_t flips = 0;             ///< Lawson flips (initial triangulation and splits)
     std::uint64_t polish_points = 0;     ///< Steiner points of the polish
     std::uint64_t polish_stopped = 0;    ///< 1: the polish's budget ran out
@@ -119,6 +122,7 @@ inline constexpr std::array kRefinementCounterNames{
     counter("unsplittable", &RefinementCounters2::unsplittable),
     counter("cavity_triangles", &RefinementCounters2::cavity_triangles),
     counter("largest_cavity", &RefinementCounters2::largest_cavity),
+    counter("rejected_cavity_triangles", &RefinementCounters2::rejected_cavity_triangles),
     counter("delaunay_flips", &RefinementCounters2::flips),
     counter("circumcenter_exact_path", &RefinementCounters2::circumcenter_exact),
     counter("orient_calls", &RefinementCounters2::orient_calls),

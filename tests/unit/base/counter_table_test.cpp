@@ -73,9 +73,9 @@ TEST(CounterTable, GeneratorTablesKeepTheirNames) {
     r.segment_splits = 4;
     r.flips = 9;
     const auto refinement = gen::counter_list(r);
-    ASSERT_EQ(refinement.size(), 19u);
+    ASSERT_EQ(refinement.size(), 20u);
     EXPECT_EQ(refinement.front(), (std::pair<std::string, std::uint64_t>{"steiner_points", 7}));
-    EXPECT_EQ(refinement[12], (std::pair<std::string, std::uint64_t>{"delaunay_flips", 9}));
+    EXPECT_EQ(refinement[13], (std::pair<std::string, std::uint64_t>{"delaunay_flips", 9}));
     EXPECT_EQ(refinement.back().first, "polish_stopped");
     gen::QuadtreeCounters2 q;
     q.depth = 5;
