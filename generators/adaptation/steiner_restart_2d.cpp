@@ -180,11 +180,34 @@ bool steiner_restart_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& opt
     if (!budget || kept < options.max_vertices) {
         const triangulation::Pslg pslg{state.mesh.xy, segments, state.holes, {}};
         for (std::uint32_t run = 0; run < kSteinerBudgetRuns; ++run) {
+            // A factor that overflowed (an estimate of infinity: a mesh spanning 1e-309 to
+            // 3e231, whose areas overflow even in its unit scale) cannot bring the size under
+            // the budget: a budget stop, not a size refused by its scaling.
+            if (!std::isfinite(factor)) break;
             RefinementOptions2 refinement;
             refinement.min_angle = kGuaranteedMinAngle;
             refinement.size = factor == 1 ? size : size.scaled(factor);
-            RefinementResult2 result = delaunay_refinement_2d(pslg, refinement);
+            // Under a vertex budget, refinement's own Steiner budget is a few times the room
+            // left, and a run that reaches it (or whose size asks for more at once) is redone
+            // coarser: the estimate above takes the size at the old mesh's vertices, and a size
+            // interpolated across long spared triangles (a narrow wedge's) can ask for far more
+            // (a fuzzed case asked refinement for 1.9e14 triangles and ran to 24 GB).
+            if (budget)
+                refinement.max_steiner_points =
+                    kSteinerRunBudgetFactor * std::uint64_t{options.max_vertices - kept};
+            std::optional<RefinementResult2> attempt;
+            try {
+                attempt = delaunay_refinement_2d(pslg, refinement);
+            } catch (const RefinementBudgetError&) {
+                if (!budget) throw;
+            }
             ++counters.refinement_runs;
+            if (!attempt) {
+                factor *= 2;
+                ++counters.budget_retries;
+                continue;
+            }
+            RefinementResult2 result = std::move(*attempt);
             const std::uint32_t count = result.mesh.mesh.vertex_count();
             if (!budget || count <= options.max_vertices) {
                 refined = std::move(result);

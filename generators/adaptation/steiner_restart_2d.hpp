@@ -36,7 +36,9 @@
 // factor until the refinement fits it. The first factor makes an estimate of the refinement's
 // vertex count (the domain's area over the equilateral triangles of the size, one per vertex)
 // fit the budget; a run that still ends above it is redone with the factor grown by the square
-// root of the ratio of the points it added to the room left (times 1.05), at most
+// root of the ratio of the points it added to the room left (times 1.05), and a run that
+// reaches its own Steiner budget (kSteinerRunBudgetFactor times the room left; or whose size
+// asks refinement for more than that at once) with the factor doubled, at most
 // kSteinerBudgetRuns runs; if none fits (or the derefined mesh has no room left), the cycle
 // keeps the derefined mesh unrefined and counts a budget stop. Invariants after a cycle
 // (check_adaptive_mesh_2d): a valid constrained Delaunay triangulation whose constrained edges
@@ -63,6 +65,10 @@ inline constexpr double kSteinerMaxFactor = 4.0;
 inline constexpr std::uint32_t kSteinerDerefinePasses = 3;
 /// Refinement runs per cycle under a vertex budget (the first and the coarser retries).
 inline constexpr std::uint32_t kSteinerBudgetRuns = 4;
+/// Under a vertex budget, each refinement run's Steiner budget is this many times the room
+/// left (budget minus the vertices kept); a run that reaches it is redone with the size's
+/// factor doubled.
+inline constexpr std::uint32_t kSteinerRunBudgetFactor = 4;
 
 struct SteinerRestartCounters2 {
     std::uint64_t cycles = 0;

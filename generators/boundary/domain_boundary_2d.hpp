@@ -120,8 +120,8 @@ SizeFunction size_from_boundary(const triangulation::Pslg& pslg,
 /// budgets): over the triangles of boundary.cdt, area / (area of an equilateral triangle at the
 /// smallest size sampled at the corners and the centroid), a triangle split in four while it is
 /// wider than 8 such sizes and holds more than 16 (at most 8 levels), so that a small size inside
-/// a large triangle of the CDT is not missed. A rough estimate (double precision), 0 for an
-/// unbounded size.
+/// a large triangle of the CDT is not missed, and none split further after 2^18 size
+/// evaluations. A rough estimate (double precision), 0 for an unbounded size.
 double expected_triangle_count(const DomainBoundary2& boundary, const SizeFunction& size);
 
 /// A split point of the input segment s0 - s1 that the exact checks accept on its chain

@@ -313,6 +313,17 @@ void Refiner::check_domain_and_budget() {
         std::max(equilateral_count_in_box(options_.size, lo_x, lo_y, hi_x, hi_y), regional);
     const double features =
         static_cast<double>(initial_vertices_) + static_cast<double>(mesh_.triangle_slots());
+    // A size asking for more than the automatic budget could hold is refused before any point
+    // is inserted (a fuzzed Steiner restart on a size interpolated across a narrow wedge's
+    // spared triangles asked for 1.9e14 and ran to 24 GB).
+    if (options_.max_steiner_points == 0 && estimate > kAutomaticRefinementTriangles) {
+        throw RefinementBudgetError(
+            "delaunay refinement: the size asks for about " + format_number(estimate) +
+            " triangles over the domain's bounding box, more than the automatic Steiner budget "
+            "can hold (" + format_number(kAutomaticRefinementTriangles) +
+            "); stopped before refining: give a larger size, or a --max-steiner budget to try "
+            "anyway");
+    }
     budget_ = options_.max_steiner_points != 0
                   ? options_.max_steiner_points
                   : static_cast<std::uint64_t>(
@@ -608,7 +619,7 @@ void Refiner::spend_budget() {
     const tri::ConstrainedTriangulation2Counters& edits = cdt_.counters();
     const std::uint64_t work = edits.cavity_triangles + edits.rejected_cavity_triangles;
     if (work > cavity_work_budget_) {
-        throw GeometryError(
+        throw RefinementBudgetError(
             "delaunay refinement: the conflict zones held more than " +
             std::to_string(cavity_work_budget_) + " triangles (" +
             std::to_string(kCavityWorkPerPoint) + " per budgeted Steiner point) after " +
@@ -623,7 +634,7 @@ void Refiner::spend_budget() {
         // Two causes look alike here: gaps or strips far narrower than the domain (nested
         // squares 1e-5 apart need millions of points at any angle), and an angle the input's
         // small angles make unreachable; name both, the budget first.
-        throw GeometryError(
+        throw RefinementBudgetError(
             "delaunay refinement: more than " + std::to_string(budget_) +
             " Steiner points; stopped (" +
             (options_.max_steiner_points != 0 ? "the --max-steiner budget"

@@ -43,6 +43,7 @@
 #include <cstdint>
 
 #include "base/counter_table.hpp"
+#include "base/errors.hpp"
 #include "generators/sizing/size_function.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 
@@ -139,6 +140,19 @@ struct RefinementResult2 {
     RefinementCounters2 counters;
 };
 
+/// Refinement stopped by a budget: the Steiner points, the conflict-zone work bounded with
+/// them, or, under the automatic budget, a size that asks for more triangles than that budget
+/// could hold, refused before any point is inserted. A GeometryError, so callers that do not
+/// tell budgets apart see no change; Steiner restart catches it to coarsen its size and retry.
+/// Under the automatic Steiner budget, the most triangles a size may ask for over the domain's
+/// bounding box (equilateral_count_in_box): the budget is 16 times that count, at most 4e9.
+inline constexpr double kAutomaticRefinementTriangles = 4e9 / 16;
+
+class RefinementBudgetError : public GeometryError {
+  public:
+    using GeometryError::GeometryError;
+};
+
 /// Refines the domain the PSLG's segments enclose (holes and exterior removed as
 /// constrained_delaunay_2d removes them). A region of pslg.regions with a maximum area A > 0
 /// (its 4th number) bounds the area of each of its triangles by A, decided exactly
@@ -146,8 +160,11 @@ struct RefinementResult2 {
 /// @throws InputError on bad input (as constrained_delaunay_2d), a polish angle above
 ///         kMaxMinAngle or NaN, a negative or non-finite polish fraction, a min_angle outside
 ///         [0, kMaxMinAngle], or when the segments enclose no region.
-/// @throws GeometryError when the Steiner point budget is exhausted, or a piece becomes too
-///         short to split in double precision.
+/// @throws RefinementBudgetError (a GeometryError) when the Steiner point budget or the
+///         conflict-zone work is exhausted, or at once when the size asks for more than
+///         kAutomaticRefinementTriangles triangles over the bounding box without
+///         max_steiner_points; GeometryError when a piece becomes too short to split in
+///         double precision.
 RefinementResult2 delaunay_refinement_2d(const triangulation::Pslg& pslg,
                                          const RefinementOptions2& options = {});
 
