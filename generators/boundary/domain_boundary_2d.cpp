@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -22,6 +23,7 @@
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "generators/sizing/triangle_subdivision_2d.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/orient2d.hpp"
@@ -374,37 +376,44 @@ namespace {
 /// fuzzed local remeshing case spent 37 s here, 4^8 splits of each of its domain triangles.
 constexpr std::uint64_t kEstimateEvaluations = std::uint64_t{1} << 18;
 
-/// expected_triangle_count on one triangle (p, q, r), splitting it as documented there;
-/// `evaluations` counts the size evaluations of the whole count.
+/// expected_triangle_count on one triangle (p, q, r), splitting it as documented there (depth
+/// first on an explicit stack: subdivision_sum_2d); `evaluations` counts the size evaluations
+/// of the whole count.
 double triangle_estimate(const SizeFunction& size, const std::array<double, 2>& p,
                          const std::array<double, 2>& q, const std::array<double, 2>& r,
-                         int depth, std::uint64_t& evaluations) {
-    evaluations += 4;
-    const double h = std::min({size(p[0], p[1]), size(q[0], q[1]), size(r[0], r[1]),
-                               size((p[0] + q[0] + r[0]) / 3, (p[1] + q[1] + r[1]) / 3)});
-    if (!(h > 0) || !std::isfinite(h)) return 0;
-    // Lengths scaled exactly by the power of two that brings h to [1, 2): no product
-    // overflows or underflows at any scale, and the count is the same at every scale.
-    const int shift = -std::ilogb(h);
-    const auto scaled = [shift](double d) { return std::ldexp(d, shift); };
-    const double area = 0.5 * std::fabs(scaled(q[0] - p[0]) * scaled(r[1] - p[1]) -
-                                        scaled(q[1] - p[1]) * scaled(r[0] - p[0]));
-    if (!(area > 0)) return 0;
-    const double scaled_h = scaled(h);
-    const double width =
-        std::max({std::hypot(q[0] - p[0], q[1] - p[1]), std::hypot(r[0] - q[0], r[1] - q[1]),
-                  std::hypot(p[0] - r[0], p[1] - r[1])});
-    const double count = area / (0.43 * scaled_h * scaled_h);
-    if (depth >= 8 || width <= 8 * h || count <= 16 || evaluations >= kEstimateEvaluations)
-        return count;
-    auto mid = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
-        return std::array<double, 2>{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
+                         std::uint64_t& evaluations) {
+    using Point = std::array<double, 2>;
+    using Node = std::array<Point, 3>;
+    const auto visit = [&](const Node& n, int depth,
+                           std::array<Node, 4>& children) -> std::optional<double> {
+        const auto& [a, b, c] = n;
+        evaluations += 4;
+        const double h =
+            std::min({size(a[0], a[1]), size(b[0], b[1]), size(c[0], c[1]),
+                      size((a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3)});
+        if (!(h > 0) || !std::isfinite(h)) return 0.0;
+        // Lengths scaled exactly by the power of two that brings h to [1, 2): no product
+        // overflows or underflows at any scale, and the count is the same at every scale.
+        const int shift = -std::ilogb(h);
+        const auto scaled = [shift](double d) { return std::ldexp(d, shift); };
+        const double area = 0.5 * std::fabs(scaled(b[0] - a[0]) * scaled(c[1] - a[1]) -
+                                            scaled(b[1] - a[1]) * scaled(c[0] - a[0]));
+        if (!(area > 0)) return 0.0;
+        const double scaled_h = scaled(h);
+        const double width =
+            std::max({std::hypot(b[0] - a[0], b[1] - a[1]), std::hypot(c[0] - b[0], c[1] - b[1]),
+                      std::hypot(a[0] - c[0], a[1] - c[1])});
+        const double count = area / (0.43 * scaled_h * scaled_h);
+        if (depth >= 8 || width <= 8 * h || count <= 16 || evaluations >= kEstimateEvaluations)
+            return count;
+        const auto mid = [](const Point& u, const Point& v) {
+            return Point{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
+        };
+        const Point ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+        children = {Node{a, ab, ca}, Node{ab, b, bc}, Node{ca, bc, c}, Node{ab, bc, ca}};
+        return std::nullopt;
     };
-    const auto pq = mid(p, q), qr = mid(q, r), rp = mid(r, p);
-    return triangle_estimate(size, p, pq, rp, depth + 1, evaluations) +
-           triangle_estimate(size, pq, q, qr, depth + 1, evaluations) +
-           triangle_estimate(size, rp, qr, r, depth + 1, evaluations) +
-           triangle_estimate(size, pq, qr, rp, depth + 1, evaluations);
+    return subdivision_sum_2d(Node{p, q, r}, visit);
 }
 
 }  // namespace
@@ -420,7 +429,7 @@ double expected_triangle_count(const DomainBoundary2& boundary, const SizeFuncti
             const double* p = mesh.point(mesh.triangles[3 * t + k]);
             corner[k] = {p[0], p[1]};
         }
-        estimate += triangle_estimate(size, corner[0], corner[1], corner[2], 0, evaluations);
+        estimate += triangle_estimate(size, corner[0], corner[1], corner[2], evaluations);
     }
     return estimate;
 }

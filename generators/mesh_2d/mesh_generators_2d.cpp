@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "base/enum_names.hpp"
@@ -21,6 +22,7 @@
 #include "generators/mesh_2d/quadtree_mesh_2d.hpp"
 #include "generators/stretched/metric_delaunay_2d.hpp"
 #include "generators/stretched/min_max_front_2d.hpp"
+#include "generators/sizing/triangle_subdivision_2d.hpp"
 #include "generators/stretched/stretched_delaunay_2d.hpp"
 
 namespace exactmesh::generators {
@@ -57,79 +59,36 @@ class SizeSampler {
     /// triangle at the smallest of them would count for at least 2^-12 of the budget: only
     /// such a triangle can move the estimate toward the budget, and splitting every graded
     /// triangle resolved the whole size field (an airfoil's check cost as much as meshing it).
-    /// Depth first, children in order, each triangle's count the sum of its children's in
-    /// order, on an explicit stack rather than by recursion: under AddressSanitizer each
-    /// allocation records its call stack (30 frames) in a depot that is never freed, and with
-    /// a recursive call per child every path down the subdivision was a new stack for each
-    /// GMP allocation of the size's point location (a fuzzed adaptation case,
-    /// tests/data/fuzz/adaptation_2d_oom_narrow.bin, grew that depot to 2.8 GB in 20 s).
+    /// Depth first on an explicit stack (subdivision_sum_2d: recursion made AddressSanitizer's
+    /// stack depot grow with every path down the subdivision).
     double triangle(const std::array<double, 2>& p, const std::array<double, 2>& q,
                     const std::array<double, 2>& r, double sp, double sq, double sr) {
         using Point = std::array<double, 2>;
-        struct Frame {
+        struct Node {
             std::array<Point, 3> corner;
             std::array<double, 3> size;
-            int depth = 0;
-            unsigned next_child = 4;  // 4: not split (or every child done)
-            std::array<Point, 3> mid{};  // pq, qr, rp when split
-            std::array<double, 3> mid_size{};
-            double sum = 0;
         };
-        std::array<Frame, kMaxDepth + 1> stack;
-        int top = 0;
-        double result = 0;
-        // Samples the centroid of the frame just pushed; splits it or counts it.
-        const auto enter = [&](Frame& f) {
-            const auto& [a, b, c] = f.corner;
+        const auto visit = [&](const Node& n, int depth,
+                               std::array<Node, 4>& children) -> std::optional<double> {
+            const auto& [a, b, c] = n.corner;
             const double sc = at((a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3);
-            const double lo = std::min({f.size[0], f.size[1], f.size[2], sc});
-            const double hi = std::max({f.size[0], f.size[1], f.size[2], sc});
-            if (hi > 2 * lo && f.depth < kMaxDepth && evaluations_ < kSplitEvaluations &&
-                total_ <= stop_above_ && count_at(a, b, c, lo) >= 0x1p-12 * stop_above_) {
-                const auto mid = [](const Point& u, const Point& v) {
-                    return Point{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
-                };
-                f.mid = {mid(a, b), mid(b, c), mid(c, a)};
-                for (unsigned k = 0; k < 3; ++k) f.mid_size[k] = at(f.mid[k][0], f.mid[k][1]);
-                f.next_child = 0;
-                f.sum = 0;
-                return;
-            }
-            f.next_child = 4;
-            f.sum = count_at(a, b, c, hi);
+            const double lo = std::min({n.size[0], n.size[1], n.size[2], sc});
+            const double hi = std::max({n.size[0], n.size[1], n.size[2], sc});
+            if (!(hi > 2 * lo && depth < kMaxDepth && evaluations_ < kSplitEvaluations &&
+                  total_ <= stop_above_ && count_at(a, b, c, lo) >= 0x1p-12 * stop_above_))
+                return count_at(a, b, c, hi);
+            const auto mid = [](const Point& u, const Point& v) {
+                return Point{0.5 * u[0] + 0.5 * v[0], 0.5 * u[1] + 0.5 * v[1]};
+            };
+            const Point ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+            const double sab = at(ab[0], ab[1]), sbc = at(bc[0], bc[1]), sca = at(ca[0], ca[1]);
+            children = {Node{{a, ab, ca}, {n.size[0], sab, sca}},
+                        Node{{ab, b, bc}, {sab, n.size[1], sbc}},
+                        Node{{ca, bc, c}, {sca, sbc, n.size[2]}},
+                        Node{{ab, bc, ca}, {sab, sbc, sca}}};
+            return std::nullopt;
         };
-        stack[0].corner = {p, q, r};
-        stack[0].size = {sp, sq, sr};
-        stack[0].depth = 0;
-        enter(stack[0]);
-        while (top >= 0) {
-            Frame& f = stack[static_cast<std::size_t>(top)];
-            if (f.next_child < 4) {
-                const unsigned k = f.next_child++;
-                const auto& [a, b, c] = f.corner;
-                const auto& [ab, bc, ca] = f.mid;
-                const auto& [sab, sbc, sca] = f.mid_size;
-                Frame& child = stack[static_cast<std::size_t>(top + 1)];
-                switch (k) {
-                    case 0: child.corner = {a, ab, ca}, child.size = {f.size[0], sab, sca}; break;
-                    case 1: child.corner = {ab, b, bc}, child.size = {sab, f.size[1], sbc}; break;
-                    case 2: child.corner = {ca, bc, c}, child.size = {sca, sbc, f.size[2]}; break;
-                    default: child.corner = {ab, bc, ca}, child.size = {sab, sbc, sca}; break;
-                }
-                child.depth = f.depth + 1;
-                ++top;
-                enter(child);
-                continue;
-            }
-            const double count = f.sum;
-            --top;
-            if (top >= 0) {
-                stack[static_cast<std::size_t>(top)].sum += count;
-            } else {
-                result = count;
-            }
-        }
-        return result;
+        return subdivision_sum_2d(Node{{p, q, r}, {sp, sq, sr}}, visit);
     }
 
     /// Equilateral triangles of side s in (p, q, r) (triangles_of_side: no square of a
