@@ -129,6 +129,21 @@ std::array<double, 2> circumcenter2_rational(const double* a, const double* b, c
     return result;
 }
 
+/// origin + the solution of M x = w by Cramer's rule (det = det3(M), nonzero), each coordinate
+/// rounded once; false when one overflows the double range.
+bool cramer_rounded(const mpq_class m[3][3], const mpq_class w[3], const mpq_class& det,
+                    const double* origin, std::array<double, 3>& result) {
+    for (int k = 0; k < 3; ++k) {
+        mpq_class mk[3][3];
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) mk[i][j] = j == k ? w[i] : m[i][j];
+        }
+        const mpq_class coordinate = origin[k] + det3(mk) / det;
+        if (!round_to_double(coordinate, result[static_cast<unsigned>(k)])) return false;
+    }
+    return true;
+}
+
 /// Finite, non-coplanar input. Origin at d; Cramer's rule on 2 P u = w, P's rows p - d.
 std::array<double, 3> circumcenter3_rational(const double* a, const double* b, const double* c,
                                              const double* d) {
@@ -140,16 +155,8 @@ std::array<double, 3> circumcenter3_rational(const double* a, const double* b, c
     }
     const mpq_class twice_det = 2 * det3(p);
     std::array<double, 3> result;
-    for (int k = 0; k < 3; ++k) {
-        mpq_class m[3][3];
-        for (int r = 0; r < 3; ++r) {
-            for (int j = 0; j < 3; ++j) m[r][j] = j == k ? w[r] : p[r][j];
-        }
-        const mpq_class coordinate = d[k] + det3(m) / twice_det;
-        if (!round_to_double(coordinate, result[static_cast<unsigned>(k)])) {
-            fail("circumcenter", "the circumcenter overflows the double range", {a, b, c, d}, 3);
-        }
-    }
+    if (!cramer_rounded(p, w, twice_det, d, result))
+        fail("circumcenter", "the circumcenter overflows the double range", {a, b, c, d}, 3);
     return result;
 }
 
@@ -964,17 +971,9 @@ std::array<double, 3> triangle_circumcenter_on_plane_3d(const double* a, const d
              {a, b, c, p, q, r}, 3);
     }
     std::array<double, 3> result;
-    for (int k = 0; k < 3; ++k) {
-        mpq_class mk[3][3];
-        for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 3; ++j) mk[i][j] = j == k ? w[i] : m[i][j];
-        }
-        const mpq_class coordinate = c[k] + det3(mk) / det;
-        if (!round_to_double(coordinate, result[static_cast<unsigned>(k)])) {
-            fail("circumcenter on a plane", "the point overflows the double range",
-                 {a, b, c, p, q, r}, 3);
-        }
-    }
+    if (!cramer_rounded(m, w, det, c, result))
+        fail("circumcenter on a plane", "the point overflows the double range",
+             {a, b, c, p, q, r}, 3);
     return result;
 }
 
