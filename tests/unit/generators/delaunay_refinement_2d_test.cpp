@@ -324,6 +324,44 @@ TEST(Generators_DelaunayRefinement, BudgetStopsWithGeometryError) {
     }
 }
 
+TEST(Generators_DelaunayRefinement, BudgetErrorsAreRefinementBudgetErrors) {
+    // The explicit budget's error is a RefinementBudgetError (Steiner restart coarsens on it).
+    gen::RefinementOptions2 options;
+    options.size = gen::SizeFunction::uniform(0.01);
+    options.max_steiner_points = 100;
+    EXPECT_THROW(gen::delaunay_refinement_2d(polygon({0, 0, 1, 0, 1, 1, 0, 1}).pslg(), options),
+                 gen::RefinementBudgetError);
+    // Under the automatic budget a size asking for more than kAutomaticRefinementTriangles is
+    // refused before any point is inserted, naming the estimate, at every scale (a size of
+    // 2^-20 asks for about 5.3e12 equilateral triangles in the unit square).
+    for (const int exponent : {0, 600, -600}) {
+        Input in = polygon({0, 0, 1, 0, 1, 1, 0, 1});
+        for (double& x : in.xy) x = std::ldexp(x, exponent);
+        gen::RefinementOptions2 fine;
+        fine.size = gen::SizeFunction::uniform(std::ldexp(0x1p-20, exponent));
+        try {
+            gen::delaunay_refinement_2d(in.pslg(), fine);
+            ADD_FAILURE() << "no RefinementBudgetError at 2^" << exponent;
+        } catch (const gen::RefinementBudgetError& error) {
+            EXPECT_NE(std::string(error.what()).find("the size asks for about"), std::string::npos)
+                << error.what();
+        }
+    }
+    // With an explicit budget the same size is not refused at once: the run starts and stops
+    // at that budget.
+    gen::RefinementOptions2 bounded;
+    bounded.size = gen::SizeFunction::uniform(0x1p-20);
+    bounded.max_steiner_points = 1000;
+    try {
+        gen::delaunay_refinement_2d(polygon({0, 0, 1, 0, 1, 1, 0, 1}).pslg(), bounded);
+        ADD_FAILURE() << "no budget error";
+    } catch (const gen::RefinementBudgetError& error) {
+        EXPECT_NE(std::string(error.what()).find("more than 1000 Steiner points"),
+                  std::string::npos)
+            << error.what();
+    }
+}
+
 TEST(Generators_DelaunayRefinement, TinyInputAnglesDoNotRefineTowardsTheirApex) {
     // Two inner segments from (0.2, 0.5) at 1, 0.3 and 0.05 degrees apart, in the unit square.
     // Regression: circumcenters of skinny triangles at the apex split its pieces on ever smaller
