@@ -43,17 +43,10 @@ struct ActiveEntry {
 constexpr double kRegularCircumradius = 0.61237243569579452;  // sqrt(3/8): edge 1
 constexpr double kSqrt2 = 1.4142135623730951;
 
-using Vec = std::array<double, 3>;
-
-Vec sub(const Vec& p, const Vec& q) {
-    return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-}
-double dot(const Vec& p, const Vec& q) {
-    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
-}
-Vec cross(const Vec& p, const Vec& q) {
-    return {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
-}
+using vec3::cross;
+using vec3::dot;
+using vec3::sub;
+using vec3::Vec;
 double norm(const Vec& p) {
     return std::sqrt(dot(p, p));
 }

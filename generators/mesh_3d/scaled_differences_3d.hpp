@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Point differences scaled by a power of two, for the choices the 3D generators make in doubles
+// Point differences scaled by a power of two, and the vector arithmetic on them (vec3), for the
+// choices the 3D generators make in doubles
 // (which size, which vertex, which pair to split: never a validity decision). Halved before the
 // subtraction and brought into [1, 2) by the largest, so that no difference overflows and no
 // product of them overflows or underflows at 2^+-600; scaling the input by a power of two
@@ -30,5 +31,19 @@ inline int scaled_differences(const double* const* p, unsigned n, std::array<dou
         for (int i = 0; i < 3; ++i) d[k - 1][i] = std::ldexp(p[k][i] / 2 - p[0][i] / 2, -exponent);
     return exponent + 1;
 }
+
+/// Vector arithmetic in doubles on such differences (placements and selections only).
+namespace vec3 {
+using Vec = std::array<double, 3>;
+inline Vec sub(const Vec& p, const Vec& q) {
+    return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+}
+inline double dot(const Vec& p, const Vec& q) {
+    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+}
+inline Vec cross(const Vec& p, const Vec& q) {
+    return {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
+}
+}  // namespace vec3
 
 }  // namespace exactmesh::generators

@@ -15,6 +15,7 @@
 
 #include "base/errors.hpp"
 #include "generators/mesh_3d/delaunay_refinement_3d.hpp"
+#include "generators/mesh_3d/scaled_differences_3d.hpp"
 #include "generators/mesh_3d/small_angle_rule_3d.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
 #include "predicates/orient3d.hpp"
@@ -233,17 +234,10 @@ std::uint64_t swap_pass(Work& work, const tri::SwapLocks3& locks, SliverRemoval3
 
 // ---- Smoothing ----
 
-using Vec = std::array<double, 3>;
-
-Vec sub(const Vec& a, const Vec& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec cross(const Vec& a, const Vec& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec& a, const Vec& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using vec3::cross;
+using vec3::dot;
+using vec3::sub;
+using vec3::Vec;
 
 /// The star of a vertex in a frame centred at the vertex and scaled by a power of two (the
 /// largest neighbour offset in [1/2, 1)): each star tetrahedron's corners, the moving one

@@ -191,16 +191,8 @@ void SharpFacets3::add_segments_near_facets(const tri::ConformingMesh3& mesh,
                                             point(other)};
                 std::array<double, 3> d[3];
                 if (scaled_differences(p, 4, d) == kCoincident) continue;
-                const auto cross = [](const std::array<double, 3>& u,
-                                      const std::array<double, 3>& v) {
-                    return std::array<double, 3>{u[1] * v[2] - u[2] * v[1],
-                                                 u[2] * v[0] - u[0] * v[2],
-                                                 u[0] * v[1] - u[1] * v[0]};
-                };
-                const auto dot = [](const std::array<double, 3>& u,
-                                    const std::array<double, 3>& v) {
-                    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-                };
+                using vec3::cross;
+                using vec3::dot;
                 const std::array<double, 3> n = cross(d[0], d[1]);
                 // The segment's direction over the subface's sector (seen along n), at less
                 // than the angle from its plane. (Beside the sector, within the angle of one of
