@@ -106,6 +106,8 @@ struct Vector3 {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
+constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
 /// The pieces of a dihedral angle: d = n1 . n2 and N = |n1|^2 |n2|^2.
 struct DihedralTerms {
     Approx d, norms;
@@ -122,6 +124,35 @@ DihedralTerms dihedral_terms(const Dihedral& a, bool& in_window) {
     const Vector3 w = difference(a.p[l], o, in_window);
     const Vector3 n1 = cross(e, u), n2 = cross(e, w);
     return {dot(n1, n2), dot(n1, n1) * dot(n2, n2)};
+}
+
+/// The six angles' terms of tetrahedron p, in kEdges order, from its four face area vectors:
+/// with n_k = (b - a) x (c - a) over the face opposite corner k in the order (1,2,3), (0,3,2),
+/// (0,1,3), (0,2,1) (consistently oriented), the angle at edge ij with the other corners k < l
+/// has d = -n_k . n_l and N = |n_k|^2 |n_l|^2: the same polynomials as dihedral_terms' (its
+/// e x u and e x w are n_l and n_k up to signs whose product is -1, as an expansion of both
+/// shows), from 4 cross products instead of 12. The filter certifies
+/// each value by its own magnitude and rounding count (header comment; the counts are the same
+/// as dihedral_terms'), so the decisions are the same; `in_window` covers all five differences.
+std::array<DihedralTerms, 6> tet_dihedral_terms(const TetCorners& p, bool& in_window) {
+    const Vector3 e1 = difference(p[1], p[0], in_window);
+    const Vector3 e2 = difference(p[2], p[0], in_window);
+    const Vector3 e3 = difference(p[3], p[0], in_window);
+    const Vector3 e21 = difference(p[2], p[1], in_window);
+    const Vector3 e31 = difference(p[3], p[1], in_window);
+    const std::array<Vector3, 4> n{cross(e21, e31), cross(e3, e2), cross(e1, e3), cross(e2, e1)};
+    std::array<Approx, 4> norm;
+    for (std::size_t k = 0; k < 4; ++k) norm[k] = dot(n[k], n[k]);
+    std::array<DihedralTerms, 6> terms;
+    for (std::size_t e = 0; e < 6; ++e) {
+        std::size_t k = 0;
+        while (k == kEdges[e][0] || k == kEdges[e][1]) ++k;
+        std::size_t l = k + 1;
+        while (l == kEdges[e][0] || l == kEdges[e][1]) ++l;
+        const Approx d = dot(n[k], n[l]);
+        terms[e] = {{-d.value, d.magnitude, d.roundings}, norm[k] * norm[l]};
+    }
+    return terms;
 }
 
 using reference::exact;
@@ -200,7 +231,6 @@ void exact_volume_edge_terms(const TetCorners& p, mpq_class& volume6, mpq_class&
               exact_dot(bd, bd) + exact_dot(cd, cd);
 }
 
-constexpr unsigned kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
 }  // namespace
 
@@ -352,18 +382,13 @@ Dihedral smallest_dihedral(const TetCorners& p) {
     // removal's instructions). The filter sees the same terms, so it decides the same; where it
     // abstains (or a difference left the window), compare_dihedral decides.
     std::array<DihedralTerms, 6> terms{};
-    std::array<bool, 6> window{};
-    if constexpr (kLongDoubleFilter) {
-        for (unsigned e = 0; e < 6; ++e) {
-            window[e] = true;
-            terms[e] = dihedral_terms(Dihedral{p, kEdges[e][0], kEdges[e][1]}, window[e]);
-        }
-    }
+    bool window = true;
+    if constexpr (kLongDoubleFilter) terms = tet_dihedral_terms(p, window);
     unsigned best = 0;
     for (unsigned e = 1; e < 6; ++e) {
         const Dihedral candidate{p, kEdges[e][0], kEdges[e][1]};
         std::optional<Sign> s;
-        if (kLongDoubleFilter && window[e] && window[best]) {
+        if (kLongDoubleFilter && window) {
             s = terms_filter(terms[e], terms[best]);
             if (s) {
                 EM_STAT(compare_dihedral, calls);
@@ -381,15 +406,17 @@ bool every_dihedral_compares(const TetCorners& p, const Dihedral& bound, Sign wa
     // compare_dihedral(angle, bound) for the six angles in turn, the bound's filter terms
     // computed once; the first angle that does not compare as wanted ends it.
     DihedralTerms bound_terms{};
-    bool bound_window = true;
-    if constexpr (kLongDoubleFilter) bound_terms = dihedral_terms(bound, bound_window);
+    std::array<DihedralTerms, 6> terms{};
+    bool window = true;
+    if constexpr (kLongDoubleFilter) {
+        bound_terms = dihedral_terms(bound, window);
+        if (window) terms = tet_dihedral_terms(p, window);
+    }
     for (unsigned e = 0; e < 6; ++e) {
         const Dihedral angle{p, kEdges[e][0], kEdges[e][1]};
         std::optional<Sign> s;
-        if (kLongDoubleFilter && bound_window) {
-            bool window = true;
-            const DihedralTerms terms = dihedral_terms(angle, window);
-            if (window) s = terms_filter(terms, bound_terms);
+        if (kLongDoubleFilter && window) {
+            s = terms_filter(terms[e], bound_terms);
             if (s) {
                 EM_STAT(compare_dihedral, calls);
                 EM_STAT(compare_dihedral, filter);

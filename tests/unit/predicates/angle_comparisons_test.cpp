@@ -427,12 +427,24 @@ TEST(Predicates_TriangleArea, AgreesWithGmpOnRandomTiedAndScaledInputs) {
 }
 
 TEST(Predicates_AngleComparisons3d, SmallestAndEveryDihedralAgreeWithGmp) {
-    // smallest_dihedral (cached filter terms) and every_dihedral_compares (the bound's terms
-    // cached) against the rational reference, on lattice tetrahedra (ties) and random ones, at
-    // 2^0, 2^600 and 2^-600.
+    // smallest_dihedral and every_dihedral_compares (the six angles' filter terms from the face
+    // area vectors, the bound's cached) against the rational reference, on lattice tetrahedra
+    // (ties), random ones and slivers, at 2^0, 2^600 and 2^-600.
     Rng rng(13);
     std::uniform_int_distribution<int> small(-3, 3);
     auto tet = [&](int n) {
+        if (n % 4 == 2) {
+            // A sliver: corner 3 moved to within a few ulps of the plane of the other three
+            // (the filters abstain on its small and large angles).
+            Tet t = random_tet(rng);
+            const double w = 0.25 + 0.5 * std::ldexp(double(rng() % 1024), -10);
+            for (std::size_t i = 0; i < 3; ++i)
+                t[3][i] = w * t[0][i] + (0.75 - w) * t[1][i] + 0.25 * t[2][i] +
+                          std::ldexp(double(small(rng)), -50);
+            const Sign s = pr::orient3d(t[0].data(), t[1].data(), t[2].data(), t[3].data());
+            if (s == Sign::Negative) std::swap(t[0], t[1]);
+            if (s != Sign::Zero) return t;
+        }
         if (n % 2 == 0) return random_tet(rng);
         for (;;) {
             Tet t;
