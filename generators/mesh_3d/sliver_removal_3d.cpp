@@ -142,11 +142,39 @@ struct Work {
         return r.below;
     }
 
-    std::vector<TetIdx> bad_tets() const {
+    /// The tetrahedra below the threshold when bad_tets last ran, and those made or changed
+    /// since (the tetrahedra a swap creates, the star of a moved vertex): no other tetrahedron
+    /// can have crossed the threshold in between.
+    std::vector<TetIdx> last_bad;
+    std::vector<TetIdx> touched;
+    bool scanned = false;
+
+    void touch(const std::vector<TetIdx>& tets) {
+        touched.insert(touched.end(), tets.begin(), tets.end());
+    }
+
+    /// The live tetrahedra below the threshold, in slot order: the whole mesh the first time,
+    /// then last_bad and touched (the same list a scan of the whole mesh gives, without
+    /// reading its 10^6 slots six times per round: a tenth of sliver removal's time).
+    std::vector<TetIdx> bad_tets() {
         std::vector<TetIdx> bad;
-        for (TetIdx t = 0; t < mesh.tet_slots(); ++t) {
-            if (!mesh.is_dead(t) && below_threshold_remembered(t)) bad.push_back(t);
+        if (!scanned) {
+            for (TetIdx t = 0; t < mesh.tet_slots(); ++t) {
+                if (!mesh.is_dead(t) && below_threshold_remembered(t)) bad.push_back(t);
+            }
+            scanned = true;
+        } else {
+            std::vector<TetIdx> candidates = std::move(last_bad);
+            candidates.insert(candidates.end(), touched.begin(), touched.end());
+            std::sort(candidates.begin(), candidates.end());
+            candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+            for (const TetIdx t : candidates) {
+                if (t < mesh.tet_slots() && !mesh.is_dead(t) && below_threshold_remembered(t))
+                    bad.push_back(t);
+            }
         }
+        touched.clear();
+        last_bad = bad;
         return bad;
     }
 };
@@ -200,19 +228,18 @@ std::uint64_t swap_pass(Work& work, const tri::SwapLocks3& locks, SliverRemoval3
             return after <= before;
         };
     }
-    if (!work.slot_attributes.empty() || !work.slot_max_volumes.empty()) {
-        // The old tetrahedra of a swap share faces that are no subfaces, so they lie in one
-        // region: the new ones take its attribute and volume bound (slot created[0] is old[0]'s,
-        // unchanged).
-        constraints.on_flip = [&work](const tri::FlipPlan3&, const std::vector<TetIdx>& created) {
-            for (std::vector<double>* values : {&work.slot_attributes, &work.slot_max_volumes}) {
-                if (values->empty()) continue;
-                values->resize(work.mesh.tet_slots(), 0.0);
-                const double value = (*values)[created.front()];
-                for (const TetIdx t : created) (*values)[t] = value;
-            }
-        };
-    }
+    // The old tetrahedra of a swap share faces that are no subfaces, so they lie in one
+    // region: the new ones take its attribute and volume bound (slot created[0] is old[0]'s,
+    // unchanged).
+    constraints.on_flip = [&work](const tri::FlipPlan3&, const std::vector<TetIdx>& created) {
+        work.touch(created);
+        for (std::vector<double>* values : {&work.slot_attributes, &work.slot_max_volumes}) {
+            if (values->empty()) continue;
+            values->resize(work.mesh.tet_slots(), 0.0);
+            const double value = (*values)[created.front()];
+            for (const TetIdx t : created) (*values)[t] = value;
+        }
+    };
     const tri::EdgeFaceSwapCounters s =
         tri::swap_faces_3d(work.mesh, tri::SwapCriterion3::MaxMinDihedral, constraints);
     c.flips_23 += s.flips_23;
@@ -239,13 +266,21 @@ using vec3::dot;
 using vec3::sub;
 using vec3::Vec;
 
+/// A tetrahedron of a star in the frame below: its corners (the moving one at slot `moving`,
+/// the origin), and what does not depend on where the moving corner goes: the area vector of
+/// the face opposite it (area_vector below) and that vector's squared length.
+struct StarTet {
+    std::array<Vec, 4> corners;
+    unsigned moving = 0;
+    Vec fixed_area{0, 0, 0};
+    double fixed_area_squared = 0;
+};
+
 /// The star of a vertex in a frame centred at the vertex and scaled by a power of two (the
-/// largest neighbour offset in [1/2, 1)): each star tetrahedron's corners, the moving one
-/// at slot `moving`. Offsets are rounded differences times 2^-exponent, so the frame's numbers
-/// are the same for the mesh scaled by any power of two.
+/// largest neighbour offset in [1/2, 1)). Offsets are rounded differences times 2^-exponent,
+/// so the frame's numbers are the same for the mesh scaled by any power of two.
 struct StarFrame {
-    std::vector<std::array<Vec, 4>> tets;
-    std::vector<unsigned> moving;
+    std::vector<StarTet> tets;
     std::vector<Vec> neighbours;
     int exponent = 0;
     /// The order in which star_smallest_angle evaluates the tetrahedra: each one found at or
@@ -254,35 +289,58 @@ struct StarFrame {
     mutable std::vector<std::uint32_t> order;
 };
 
-/// A pseudo-angle of atan2(y, x) for y >= 0: 1 - x / (|x| + y), in [0, 2], increasing with the
-/// angle over [0, pi] (0 when both are 0). The search below only takes minima and compares them,
-/// so an increasing function of the angle steers it the same way as the angle, at a fraction of
-/// atan2's cost (atan2 was 40% of tetmesh's time on the wing).
-double pseudo_angle(double y, double x) {
-    const double r = std::fabs(x) + y;
-    return r > 0 ? 1 - x / r : 0;
+/// The corners of the face opposite corner k, in the order whose cross product
+/// (b - a) x (c - a) points into the tetrahedron for every k when it is positively oriented
+/// (then the four area vectors sum to zero, and each one's dot product with its opposite
+/// corner minus the face's first corner is six times the volume).
+constexpr unsigned kFaceCorners[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+/// Twice the area of the face opposite corner k, as an inward vector (kFaceCorners).
+Vec area_vector(const std::array<Vec, 4>& p, unsigned k) {
+    const unsigned* f = kFaceCorners[k];
+    return cross(sub(p[f[1]], p[f[0]]), sub(p[f[2]], p[f[0]]));
 }
 
-/// The six dihedral angles' minimum, as pseudo_angle, of the tetrahedron with its moving
-/// corner at x (an inverted or flat one gives -1). Returns as soon as an angle is at or below
-/// `floor`: the result is exact when above `floor`, else some value at or below it.
-double smallest_angle(const std::array<Vec, 4>& corners, unsigned moving, const Vec& x,
-                      double floor) {
-    std::array<Vec, 4> p = corners;
-    p[moving] = x;
-    // orient3d's positive orientation is a negative a . (b x c) [Shewchuk97].
-    const Vec a = sub(p[1], p[0]), b = sub(p[2], p[0]), c = sub(p[3], p[0]);
-    if (dot(a, cross(b, c)) >= 0) return -1;
-    static constexpr unsigned kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2},
-                                              {1, 2, 0, 3}, {1, 3, 2, 0}, {2, 3, 0, 1}};
+/// The six dihedral angles' minimum, as an increasing function of the angle, of the
+/// tetrahedron with its moving corner at x (an inverted or flat one gives -1). Returns as soon
+/// as an angle is at or below `floor`: the result is exact when above `floor`, else some
+/// value at or below it. The function: with N_k, N_l the area vectors of the two faces at edge
+/// e and V the volume, cos = -N_k . N_l / (|N_k| |N_l|) and |N_k x N_l| = 6 V |e|, so
+/// s = |e|^2 (6V)^2 / (|N_k|^2 |N_l|^2) is sin^2 of the angle; the value is s for an acute
+/// angle and 2 - s for an obtuse one, in [0, 2] and increasing over [0, pi]. No square root and
+/// full relative precision near 0 (the slivers' angles). The search below only takes minima
+/// and compares them, so an increasing function of the angle steers it as the angle would
+/// (atan2 of each angle was 40% of tetmesh's time on the wing; the pseudo-angle that replaced
+/// it took two cross products and a triple product per edge, and the star evaluations were
+/// still 42% of sliver removal's instructions at 10^5 tetrahedra on the wing).
+double smallest_angle(const StarTet& tet, const Vec& x, double floor) {
+    std::array<Vec, 4> p = tet.corners;
+    p[tet.moving] = x;
+    const unsigned m = tet.moving;
+    const double six_volume = dot(tet.fixed_area, sub(x, p[kFaceCorners[m][0]]));
+    if (!(six_volume > 0)) return -1;
+    std::array<Vec, 4> area;
+    std::array<double, 4> area_squared;
+    for (unsigned k = 0; k < 4; ++k) {
+        if (k == m) {
+            area[k] = tet.fixed_area;
+            area_squared[k] = tet.fixed_area_squared;
+        } else {
+            area[k] = area_vector(p, k);
+            area_squared[k] = dot(area[k], area[k]);
+        }
+    }
+    // Edge (i, j) and the two corners k, l off it: its faces are those opposite k and l.
+    static constexpr unsigned kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                              {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+    const double volume_squared = six_volume * six_volume;
     double smallest = 2;
     for (const auto& edge : kEdges) {
         const Vec e = sub(p[edge[1]], p[edge[0]]);
-        const Vec u = sub(p[edge[2]], p[edge[0]]);
-        const Vec w = sub(p[edge[3]], p[edge[0]]);
-        const Vec n1 = cross(e, u), n2 = cross(e, w);
-        const double det = std::fabs(dot(e, cross(u, w)));
-        smallest = std::min(smallest, pseudo_angle(std::sqrt(dot(e, e)) * det, dot(n1, n2)));
+        const double s =
+            dot(e, e) * volume_squared / (area_squared[edge[2]] * area_squared[edge[3]]);
+        const double value = dot(area[edge[2]], area[edge[3]]) < 0 ? s : 2 - s;
+        smallest = std::min(smallest, value);
         if (smallest <= floor) return smallest;
     }
     return smallest;
@@ -301,7 +359,7 @@ double star_smallest_angle(const StarFrame& frame, const Vec& x, double floor = 
     const std::size_t n = frame.tets.size();
     for (std::size_t j = 0; j < n; ++j) {
         const std::size_t i = frame.order[j];
-        smallest = std::min(smallest, smallest_angle(frame.tets[i], frame.moving[i], x, floor));
+        smallest = std::min(smallest, smallest_angle(frame.tets[i], x, floor));
         if (smallest <= floor) {
             const auto at = frame.order.begin() + static_cast<std::ptrdiff_t>(j);
             std::rotate(frame.order.begin(), at, at + 1);
@@ -337,10 +395,12 @@ StarFrame star_frame(const TetMesh3& mesh, VertIdx v, const std::vector<TetIdx>&
     };
     for (const VertIdx w : others) frame.neighbours.push_back(local(w));
     for (const TetIdx t : star) {
-        std::array<Vec, 4> c;
-        for (unsigned k = 0; k < 4; ++k) c[k] = local(mesh.vertex(t, k));
-        frame.tets.push_back(c);
-        frame.moving.push_back(mesh.slot_of(t, v));
+        StarTet tet;
+        for (unsigned k = 0; k < 4; ++k) tet.corners[k] = local(mesh.vertex(t, k));
+        tet.moving = mesh.slot_of(t, v);
+        tet.fixed_area = area_vector(tet.corners, tet.moving);
+        tet.fixed_area_squared = dot(tet.fixed_area, tet.fixed_area);
+        frame.tets.push_back(tet);
     }
     frame.order.resize(frame.tets.size());
     std::iota(frame.order.begin(), frame.order.end(), std::uint32_t{0});
@@ -509,6 +569,7 @@ bool smooth_vertex(Work& work, VertIdx v, SliverRemoval3Counters& c) {
             star_over_bounds(work, star, v, points[i].data()) > over_before)
             continue;
         work.move_vertex(v, points[i]);
+        work.touch(star);
         ++c.moves_accepted;
         return true;
     }
@@ -665,8 +726,8 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
                 tri::projected_orient(m.point(s1[0]), m.point(s1[1]), m.point(s1[2]), drop);
             if (o0 == Sign::Zero || o0 != o1) continue;
             for (const auto& f : fresh) {
-                ok = ok && tri::projected_orient(m.point(f[0]), m.point(f[1]), m.point(f[2]),
-                                                 drop) == o0;
+                ok = ok &&
+                     tri::projected_orient(m.point(f[0]), m.point(f[1]), m.point(f[2]), drop) == o0;
             }
             oriented = true;
         }

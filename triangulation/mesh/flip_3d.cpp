@@ -142,6 +142,10 @@ TetMesh3 make_tet_mesh_3d(const Tetrahedralization3& mesh) {
         }
         const std::size_t count = mesh.tets.size() / 4;
         out.adj.assign(mesh.tets.size(), kNone);
+        // Each link is checked once, from its lower tetrahedron, which sets both sides; the
+        // higher one's side must then be set already (it points back at a face that pointed at
+        // it). Checking from both sides read every neighbour's corners twice, in random order:
+        // a sixth of sliver removal's time at 7 10^5 tetrahedra.
         for (std::size_t f = 0; f < mesh.tets.size(); ++f) {
             const TetIdx u = mesh.neighbors[f];
             if (u == kNone) continue;
@@ -151,13 +155,17 @@ TetMesh3 make_tet_mesh_3d(const Tetrahedralization3& mesh) {
                                  std::to_string(u) + " across face " + std::to_string(f % 4) +
                                  " is not another tetrahedron");
             }
-            const OrientedFace mine = outward_face(out.tet(static_cast<TetIdx>(t)), f % 4);
-            bool found = false;
-            for (unsigned j = 0; j < 4 && !found; ++j) {
-                if (mesh.neighbors[4 * std::size_t{u} + j] == t &&
-                    outward_face(out.tet(u), j) == reversed(mine)) {
-                    out.adj[f] = 4 * u + j;
-                    found = true;
+            bool found = u < t && out.adj[f] != kNone && out.adj[f] / 4 == u;
+            if (u > t) {
+                const OrientedFace mine = outward_face(out.tet(static_cast<TetIdx>(t)), f % 4);
+                for (unsigned j = 0; j < 4 && !found; ++j) {
+                    const std::size_t g = 4 * std::size_t{u} + j;
+                    if (mesh.neighbors[g] == t && out.adj[g] == kNone &&
+                        outward_face(out.tet(u), j) == reversed(mine)) {
+                        out.adj[f] = static_cast<FaceIdx>(g);
+                        out.adj[g] = static_cast<FaceIdx>(f);
+                        found = true;
+                    }
                 }
             }
             if (!found) {
