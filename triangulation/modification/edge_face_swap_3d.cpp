@@ -150,15 +150,26 @@ void SwapLocks3::finish() {
     faces_.erase(std::unique(faces_.begin(), faces_.end()), faces_.end());
     std::sort(edges_.begin(), edges_.end());
     edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
+    marked_.clear();
+    const auto mark = [this](VertIdx v) {
+        if (v >= marked_.size()) marked_.resize(std::size_t{v} + 1, 0);
+        marked_[v] = 1;
+    };
+    for (const auto& face : faces_)
+        for (const VertIdx v : face) mark(v);
+    for (const auto& edge : edges_)
+        for (const VertIdx v : edge) mark(v);
 }
 
 bool SwapLocks3::face_locked(VertIdx a, VertIdx b, VertIdx c) const {
+    if (!marked(a) || !marked(b) || !marked(c)) return false;
     std::array<VertIdx, 3> key{a, b, c};
     std::sort(key.begin(), key.end());
     return std::binary_search(faces_.begin(), faces_.end(), key);
 }
 
 bool SwapLocks3::edge_locked(VertIdx a, VertIdx b) const {
+    if (!marked(a) || !marked(b)) return false;
     return std::binary_search(edges_.begin(), edges_.end(),
                               std::array<VertIdx, 2>{std::min(a, b), std::max(a, b)});
 }

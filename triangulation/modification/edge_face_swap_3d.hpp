@@ -91,8 +91,12 @@ class SwapLocks3 {
     bool empty() const { return faces_.empty() && edges_.empty(); }
 
   private:
+    bool marked(VertIdx v) const { return v < marked_.size() && marked_[v] != 0; }
     std::vector<std::array<VertIdx, 3>> faces_;
     std::vector<std::array<VertIdx, 2>> edges_;
+    /// Per vertex: whether it is a corner of a locked face or edge. Tested before the sorted
+    /// lists are searched: most faces and edges of a mesh have a corner off every lock.
+    std::vector<std::uint8_t> marked_;
 };
 
 /// Whether the flip removes a locked face or edge: a face (edge) of an old tetrahedron that is
