@@ -311,6 +311,10 @@ void run_adapt_2d(const AdaptArguments& arguments, const gen::AnalyticField* fie
     } else {
         poly = io::read_poly(arguments.input);
         title = fs::path(arguments.input).filename().string();
+        // The domain below carries no regions: say so rather than drop a bound silently.
+        warn_unused_region_areas(poly, arguments.input,
+                                 "adapt meshes the domain without its regions; the field's "
+                                 "indicator decides the sizes");
     }
     const std::uint32_t base = poly.vertices.first_index;
     mesh_options.size = size;

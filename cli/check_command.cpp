@@ -16,6 +16,7 @@
 
 #include "base/errors.hpp"
 #include "cli/commands.hpp"
+#include "io/format_error.hpp"
 #include "io/plc_format.hpp"
 #include "io/tetgen_format.hpp"
 #include "io/text_file.hpp"
@@ -78,6 +79,18 @@ int run_constrained_check(const CheckArguments& arguments) {
     // The constrained checks are local: only the hull's topology sees a triangle left out.
     tri::CheckReport report;
     if (arguments.convex_hull) report = tri::check_topology_2d(mesh.xy, mesh.triangles, numbering);
+    if (!report.ok && !input.holes.empty()) {
+        // The hull check wants one boundary loop around a disk; the holes a hole point removes
+        // leave more loops, so a correct `cdt --convex-hull` output failed it. Refused (exit 2)
+        // rather than failed falsely (exit 1).
+        throw io::FormatError(arguments.node_path, input.hole_lines.front(),
+                              "--convex-hull is checked only where the mesh covers the convex "
+                              "hull as one disk, and this PSLG has " +
+                                  std::to_string(input.holes.size() / 2) + " hole point(s) (" +
+                                  report.problem +
+                                  "); check without --convex-hull (constrained Delaunay, input "
+                                  "vertices kept)");
+    }
     if (report.ok)
         report = arguments.conforming
                      ? tri::check_conforming_mesh_2d(mesh, input.vertices.vertex_count(),

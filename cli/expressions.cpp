@@ -25,6 +25,12 @@ struct Evaluator {
     double v[4] = {0, 0, 0, 0};
 };
 
+/// An expression as messages show it: control bytes escaped, cut after 200 characters (a
+/// 40 kB expression was echoed whole, twice, in one error line).
+std::string shown(const std::string& expression) {
+    return io::printable(expression, 200);
+}
+
 /// `expression` parsed over the first `count` of x, y, z, t.
 /// @throws InputError: `refusal` followed by muParser's message.
 std::shared_ptr<Evaluator> compile(const std::string& expression, int count,
@@ -45,7 +51,7 @@ std::shared_ptr<Evaluator> compile(const std::string& expression, int count,
 
 generators::SizeFunction size_from_expression(const std::string& expression) {
     auto evaluator = compile(expression, 2,
-                             "--size '" + expression +
+                             "--size '" + shown(expression) +
                                  "' is neither a number > 0, a readable size file, nor an " +
                                  "expression in x and y: ");
     return generators::SizeFunction::analytic(
@@ -54,7 +60,7 @@ generators::SizeFunction size_from_expression(const std::string& expression) {
             evaluator->v[1] = y;
             return evaluator->parser.Eval();
         },
-        "expression " + expression);
+        "expression " + shown(expression));
 }
 
 generators::SizeFunction3 size3_from_option(const std::string& text) {
@@ -63,11 +69,12 @@ generators::SizeFunction3 size3_from_option(const std::string& text) {
         return generators::SizeFunction3::uniform(uniform);
     std::error_code error;
     if (std::filesystem::exists(text, error)) {
-        throw InputError("--size '" + text +
+        throw InputError("--size '" + shown(text) +
                          "': size files are 2D only; give a number or an expression in x, y, z");
     }
     auto evaluator = compile(
-        text, 3, "--size '" + text + "' is neither a number > 0 nor an expression in x, y and z: ");
+        text, 3,
+        "--size '" + shown(text) + "' is neither a number > 0 nor an expression in x, y and z: ");
     return generators::SizeFunction3::analytic(
         [evaluator](double x, double y, double z) {
             evaluator->v[0] = x;
@@ -75,12 +82,12 @@ generators::SizeFunction3 size3_from_option(const std::string& text) {
             evaluator->v[2] = z;
             return evaluator->parser.Eval();
         },
-        "expression " + text);
+        "expression " + shown(text));
 }
 
 generators::MetricField2 metric_from_expression(const std::string& text) {
     const std::string refusal =
-        "--metric '" + text +
+        "--metric '" + shown(text) +
         "' is neither a readable metric file (.node with 3 or 4 "
         "attributes and its .ele) nor three expressions 'M11;M12;M22' or four "
         "'DIR_X;DIR_Y;SIZE_ALONG;ASPECT_RATIO' in x and y";
@@ -102,7 +109,8 @@ generators::MetricField2 metric_from_expression(const std::string& text) {
     std::vector<std::shared_ptr<Evaluator>> entries;
     for (std::size_t k = 0; k < parts.size(); ++k) {
         const char* name = stretching ? kStretchingNames[k] : kMatrixNames[k];
-        entries.push_back(compile(parts[k], 2, refusal + ": " + name + " '" + parts[k] + "': "));
+        entries.push_back(
+            compile(parts[k], 2, refusal + ": " + name + " '" + shown(parts[k]) + "': "));
     }
     return generators::MetricField2::analytic(
         [entries, text, stretching](double x, double y) {
@@ -118,11 +126,11 @@ generators::MetricField2 metric_from_expression(const std::string& text) {
                                                                        value[3])
                                   : generators::metric_from_matrix(value[0], value[1], value[2]);
             } catch (const InputError& error) {
-                throw InputError("--metric '" + text + "' at (" + format_number(x) + ", " +
+                throw InputError("--metric '" + shown(text) + "' at (" + format_number(x) + ", " +
                                  format_number(y) + "): " + error.what());
             }
         },
-        "expression " + text);
+        "expression " + shown(text));
 }
 
 generators::MetricField2 metric_from_option(const std::string& text) {
@@ -132,8 +140,9 @@ generators::MetricField2 metric_from_option(const std::string& text) {
 }
 
 generators::AnalyticField field_from_expression(const std::string& expression) {
-    auto evaluator = compile(
-        expression, 4, "--field '" + expression + "' is not an expression in x, y, z and t: ");
+    auto evaluator =
+        compile(expression, 4,
+                "--field '" + shown(expression) + "' is not an expression in x, y, z and t: ");
     return {expression, [evaluator](double x, double y, double z, double t) {
                 evaluator->v[0] = x;
                 evaluator->v[1] = y;

@@ -5,9 +5,11 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <map>
+#include <memory>
 #include <utility>
 
 #include "io/format_error.hpp"
@@ -305,8 +307,8 @@ void expect_keywords(TextLines& lines, std::initializer_list<std::string_view> w
     if (!match) lines.fail_quoting_line(std::string("expected '") + what + "'");
 }
 
-PlcFile parse_ascii_stl(std::string_view text, const std::string& file_name) {
-    TextLines lines(text, file_name);
+/// An ASCII STL, a line at a time (from memory or streamed from a file).
+PlcFile parse_ascii_stl_lines(TextLines& lines) {
     PlcFile plc;
     VertexMerger merger(plc);
     if (!lines.next_data_line() || lines.fields()[0] != "solid") {
@@ -413,30 +415,69 @@ PlcFile read_off(const std::filesystem::path& path) {
     return parse_off_lines(lines);
 }
 
-PlcFile parse_stl(std::string_view bytes, const std::string& file_name) {
-    if (bytes.size() >= 84) {
-        const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-        const std::uint64_t count = std::uint64_t{data[80]} | (std::uint64_t{data[81]} << 8) |
-                                    (std::uint64_t{data[82]} << 16) |
-                                    (std::uint64_t{data[83]} << 24);
-        if (bytes.size() == 84 + 50 * count) return parse_binary_stl(bytes, file_name, count);
-    }
+namespace {
+
+/// The triangle count of a binary STL's head (84 bytes or more).
+std::uint64_t binary_stl_count(std::string_view head) {
+    const auto* data = reinterpret_cast<const unsigned char*>(head.data());
+    return std::uint64_t{data[80]} | (std::uint64_t{data[81]} << 8) |
+           (std::uint64_t{data[82]} << 16) | (std::uint64_t{data[83]} << 24);
+}
+
+/// Whether `head` (the start of a file) can start an ASCII STL: 'solid' after an optional UTF-8
+/// byte order mark and blanks (a head of blanks alone is left to the line reader to judge).
+bool starts_like_ascii_stl(std::string_view head) {
+    if (head.substr(0, 3) == "\xEF\xBB\xBF") head.remove_prefix(3);
     std::size_t start = 0;
-    while (start < bytes.size() && (bytes[start] == ' ' || bytes[start] == '\t' ||
-                                    bytes[start] == '\r' || bytes[start] == '\n')) {
+    while (start < head.size() && (head[start] == ' ' || head[start] == '\t' ||
+                                   head[start] == '\r' || head[start] == '\n')) {
         ++start;
     }
-    if (bytes.substr(start, 5) != "solid") {
-        throw FormatError(file_name, 0,
-                          "neither an ASCII STL file (starting with 'solid') nor a binary one (84 "
-                          "+ 50 x count bytes, count at byte 80), " +
-                              detail::plural(bytes.size(), "byte", "bytes") + " long");
-    }
-    return parse_ascii_stl(bytes, file_name);
+    return start == head.size() || head.substr(start, 5) == "solid";
+}
+
+[[noreturn]] void fail_neither_stl(const std::string& file_name, const std::string& length) {
+    throw FormatError(file_name, 0,
+                      "neither an ASCII STL file (starting with 'solid') nor a binary one (84 + "
+                      "50 x count bytes, count at byte 80), " +
+                          length);
+}
+
+}  // namespace
+
+PlcFile parse_stl(std::string_view bytes, const std::string& file_name) {
+    if (bytes.size() >= 84 && bytes.size() == 84 + 50 * binary_stl_count(bytes))
+        return parse_binary_stl(bytes, file_name, binary_stl_count(bytes));
+    if (!starts_like_ascii_stl(bytes.substr(0, 4096)))
+        fail_neither_stl(file_name, detail::plural(bytes.size(), "byte", "bytes") + " long");
+    TextLines lines(bytes, file_name);
+    return parse_ascii_stl_lines(lines);
 }
 
 PlcFile read_stl(const std::filesystem::path& path) {
-    return parse_stl(read_text_file(path), path.string());
+    // The head and the file's size decide: a binary file (exactly 84 + 50 x count bytes) is
+    // read whole, anything else is streamed as ASCII a line at a time, so that /dev/zero or a
+    // large file that is no STL fails at its start instead of being read into memory first
+    // (1 GB and 2.6 s for /dev/zero before). A binary STL must be a regular file: its size is
+    // what tells it apart.
+    TextLines lines(path);  // the open errors (missing, a directory) of every reader
+    std::error_code ec;
+    const bool regular = std::filesystem::is_regular_file(path, ec);
+    const std::uint64_t size = regular ? std::filesystem::file_size(path, ec) : 0;
+    std::string head;
+    {
+        std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(path.c_str(), "rb"),
+                                                           &std::fclose);
+        if (in) {
+            head.resize(regular ? 84 : 0);
+            head.resize(std::fread(head.data(), 1, head.size(), in.get()));
+        }
+    }
+    if (regular && !ec && head.size() == 84 && size == 84 + 50 * binary_stl_count(head))
+        return parse_stl(read_text_file(path, size), path.string());
+    if (regular && !starts_like_ascii_stl(head))
+        fail_neither_stl(path.string(), detail::plural(size, "byte", "bytes") + " long");
+    return parse_ascii_stl_lines(lines);
 }
 
 PlcFile read_plc(const std::filesystem::path& path) {

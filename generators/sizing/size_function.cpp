@@ -372,6 +372,8 @@ std::string at_line(std::string_view name, int line) {
 
 SizeFunction parse_size_sources(std::string_view text, std::string_view name) {
     SizeText t;
+    // A UTF-8 byte order mark (an editor's) is skipped, as the mesh files' readers skip it.
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     std::istringstream in{std::string(text)};
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {

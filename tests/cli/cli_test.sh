@@ -1688,6 +1688,43 @@ tetmesh_check() {
   expect_error 2 'lonely.node: no such file' check "$work/cube.poly" "$work/lonely.ele"
 }
 
+# The hostile-file campaign of 2026-12-06 (scripts/hostile_files.py, tests/data/hostile_files):
+# each finding's input, fixed. /dev/zero as an .stl fails at its first line, without reading
+# 1 GB first; a byte order mark starts an ASCII STL and a size file as it starts a .node; a
+# size asking for 5e300 boundary pieces is refused at once (it sampled 2^24 points, 3.4 s and
+# 400 MB, without --max-steiner); adapt says that it ignores a region's maximum area; check
+# --convex-hull refuses (exit 2), not fails (exit 1), a correct mesh with holes; an expression
+# is cut in messages.
+hostile_files() {
+  local dir=$data/hostile_files
+  ln -s /dev/zero "$work/zero.stl"
+  expect_error 2 'zero\.stl:1: a NUL byte at column 1' tetmesh "$work/zero.stl" -o "$work/x.ele"
+  expect_error 2 'zero\.stl:1: a NUL byte at column 1' check "$work/zero.stl" "$work/x.ele"
+  run 0 tetmesh "$dir/cube_ascii_with_bom.stl" -o "$work/bom.ele" || return
+  run 0 check "$dir/cube_ascii_with_bom.stl" "$work/bom.ele" || return
+  run 0 mesh --domain key --size "$dir/size_with_bom.txt" -o "$work/bom2.ele" || return
+  local generator start
+  for generator in frontal quadtree advancing-front metric-delaunay; do
+    start=$(date +%s%N)
+    expect_error 2 'strip_1e300_by_1e-300\.poly: boundary discretization: the size function asks for more than 2\^30 pieces' \
+      mesh "$dir/strip_1e300_by_1e-300.poly" --generator "$generator" --size 0.2 -o "$work/x.ele"
+    (($(date +%s%N) - start < 1000000000)) || fail "strip, $generator: refused after more than 1 s"
+  done
+  run 0 adapt "$dir/square_hole_tiny_region_area.poly" --field x --cycles 0 -o "$work/a.ele" || return
+  grep -q 'square_hole_tiny_region_area\.poly:23: region maximum areas are not applied (adapt' "$work/err" ||
+    fail "adapt: no warning about the region's area: $(cat "$work/err")"
+  expect_error 2 'region volume|maximum areas ask for' mesh "$dir/square_hole_tiny_region_area.poly" -o "$work/x.ele"
+  run 0 cdt "$dir/square_hole_tiny_region_area.poly" --convex-hull -o "$work/c.ele" || return
+  expect_error 2 'square_hole_tiny_region_area\.poly:21: --convex-hull is checked only where .*boundary has more than one loop' \
+    check "$dir/square_hole_tiny_region_area.poly" "$work/c.ele" --convex-hull
+  run 0 check "$dir/square_hole_tiny_region_area.poly" "$work/c.ele" || return
+  local long
+  long="0.1$(printf '+0%.0s' {1..5000})x"
+  expect_error 2 "^exactmesh: error: --size '0\.1\+0\+0.{100,250}' is neither" mesh --domain key --size "$long" -o "$work/x.ele"
+  [[ $(wc -c <"$work/err") -lt 1000 ]] || fail "a long expression echoed whole: $(wc -c <"$work/err") bytes"
+  [[ ! -e $work/x.ele ]] || fail "x.ele written for bad input"
+}
+
 case "$case_name" in
   triangulate_all_algorithms | output_formats | stats | point_location | bad_input | \
     check_rejects_non_delaunay | cdt | mesh | swap_criteria | min_max | swap_bad_input | swap3d_criteria | \
@@ -1696,7 +1733,7 @@ case "$case_name" in
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
     mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine | tetmesh_regions | \
-    tetmesh_frontal | tetmesh_octree | tetmesh_check | threads)
+    tetmesh_frontal | tetmesh_octree | tetmesh_check | threads | hostile_files)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

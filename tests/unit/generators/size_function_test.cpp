@@ -80,6 +80,8 @@ TEST(Generators_SizeFunction, ParsesNumbersAndFiles) {
     EXPECT_NEAR(f(1, 2.5), 0.5, 1e-15);  // 0.65 capped
     EXPECT_NEAR(f(1, 1.9), 0.1 * (1 + 0.04) + 0.2 * (1 + 0.95), 1e-15);
     EXPECT_EQ(gen::parse_size_sources("uniform 0.125\n", "u")(3, 3), 0.125);
+    // A UTF-8 byte order mark is skipped, as the mesh files' readers skip it.
+    EXPECT_EQ(gen::parse_size_sources("\xEF\xBB\xBFuniform 0.125\r\n", "u")(3, 3), 0.125);
 }
 
 TEST(Generators_SizeFunction, FileErrorsNameTheLine) {

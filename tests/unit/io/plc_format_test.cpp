@@ -308,6 +308,27 @@ TEST(Io_PlcFormat, ReadsBinaryStl) {
               "b.stl: binary STL triangle 1: corner 3 has a non-finite coordinate");
 }
 
+TEST(Io_PlcFormat, AsciiStlMayStartWithAByteOrderMark) {
+    const io::PlcFile plc = io::parse_stl("\xEF\xBB\xBF" + std::string(kTwoTrianglesStl), "s.stl");
+    EXPECT_EQ(plc.vertex_count(), 4u);
+    EXPECT_EQ(plc.facets.size(), 2u);
+    const auto path = std::filesystem::temp_directory_path() / "exactmesh_bom_test.stl";
+    {
+        std::ofstream out(path, std::ios::binary);
+        out << "\xEF\xBB\xBF" << kTwoTrianglesStl;
+    }
+    EXPECT_EQ(io::read_stl(path).facets.size(), 2u);
+    std::filesystem::remove(path);
+}
+
+// A device or a large file that is no STL fails on its first line, streamed: /dev/zero was read
+// whole up to the 1 GB limit first (2.6 s).
+TEST(Io_PlcFormat, StlFromADeviceFailsAtItsFirstLine) {
+    if (!std::filesystem::exists("/dev/zero")) GTEST_SKIP() << "no /dev/zero";
+    EXPECT_EQ(format_error([] { io::read_stl("/dev/zero"); }),
+              "/dev/zero:1: a NUL byte at column 1 (binary data, not a text mesh file)");
+}
+
 TEST(Io_PlcFormat, MalformedStlFilesAreNamed) {
     EXPECT_EQ(format_error([&] { io::parse_stl("hello", "s.stl"); }),
               "s.stl: neither an ASCII STL file (starting with 'solid') nor a binary one (84 + 50 "
