@@ -107,39 +107,23 @@ struct Work {
                                                       threshold_cos_squared);
     }
 
-    /// below_threshold per slot, remembered with the slot's vertices and kept while none of them
-    /// moves (bad_tets runs six times over the whole mesh, and swaps and moves change few
-    /// tetrahedra: the angles were a quarter of sliver removal's instructions).
-    struct Remembered {
-        std::array<VertIdx, 4> vertices{kNone, kNone, kNone, kNone};
-        std::uint64_t at = 0;  ///< the move count + 1 when computed
-        bool below = false;
-    };
-    mutable std::vector<Remembered> remembered;
-    std::vector<std::uint64_t> moved_at;  ///< per vertex: the move count after its last move
-    std::uint64_t moves = 0;
+    /// below_threshold per slot: 0 not known, 1 below, 2 not below. A slot's entry is forgotten
+    /// when a swap makes a tetrahedron in it or a corner of its tetrahedron moves (touch): only
+    /// those change (bad_tets runs six times per round, and swaps and moves change few
+    /// tetrahedra: the angles were a quarter of sliver removal's instructions). One byte per
+    /// slot (the entries had held the slot's corners and a move count, checked against every
+    /// corner's last move: a tenth of the face swaps' time went to those reads).
+    mutable std::vector<std::uint8_t> below_state;
 
     void move_vertex(VertIdx v, const std::array<double, 3>& to) {
         for (std::size_t k = 0; k < 3; ++k) mesh.xyz[3 * std::size_t{v} + k] = to[k];
-        if (moved_at.size() <= v) moved_at.resize(mesh.vertex_count(), 0);
-        moved_at[v] = ++moves;
     }
 
     bool below_threshold_remembered(TetIdx t) const {
-        if (remembered.size() < mesh.tet_slots()) remembered.resize(mesh.tet_slots());
-        Remembered& r = remembered[t];
-        const Tet tet = mesh.tet(t);
-        bool valid = r.at != 0;
-        for (unsigned k = 0; k < 4 && valid; ++k) {
-            valid =
-                r.vertices[k] == tet[k] && (tet[k] >= moved_at.size() || moved_at[tet[k]] < r.at);
-        }
-        if (!valid) {
-            r.vertices = {tet[0], tet[1], tet[2], tet[3]};
-            r.at = moves + 1;
-            r.below = below_threshold(t);
-        }
-        return r.below;
+        if (below_state.size() < mesh.tet_slots()) below_state.resize(mesh.tet_slots(), 0);
+        std::uint8_t& state = below_state[t];
+        if (state == 0) state = below_threshold(t) ? 1 : 2;
+        return state == 1;
     }
 
     /// The tetrahedra below the threshold when bad_tets last ran, and those made or changed
@@ -149,8 +133,12 @@ struct Work {
     std::vector<TetIdx> touched;
     bool scanned = false;
 
+    /// Tetrahedra made by a swap, or the star of a vertex after it moved: their entries are
+    /// forgotten, and bad_tets looks at them again.
     void touch(const std::vector<TetIdx>& tets) {
         touched.insert(touched.end(), tets.begin(), tets.end());
+        for (const TetIdx t : tets)
+            if (t < below_state.size()) below_state[t] = 0;
     }
 
     /// The live tetrahedra below the threshold, in slot order: the whole mesh the first time,
