@@ -155,7 +155,7 @@ TetMesh3 make_tet_mesh_3d(const Tetrahedralization3& mesh) {
                 const std::size_t ahead = mesh.neighbors[f + kAhead];
                 if (ahead < count && ahead > (f + kAhead) / 4) {
                     __builtin_prefetch(&mesh.neighbors[4 * ahead]);
-                    __builtin_prefetch(&mesh.tets[4 * ahead]);
+                    __builtin_prefetch(&out.tv[4 * ahead]);
                     __builtin_prefetch(&out.adj[4 * ahead], 1);
                 }
             }
