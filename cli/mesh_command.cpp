@@ -320,6 +320,9 @@ void run_mesh(const MeshArguments& arguments) {
     // The domain's constrained triangulation, built once (by the first step that needs it) for
     // the default size, the size budget and the generator.
     const gen::MeshDomain2 domain(pslg, options.cdt);
+    if (domain.hull_segments())
+        print_warnings(
+            {arguments.input + ": no segments: the domain is the convex hull of the vertices"});
 
     const std::string file =
         arguments.input.empty() ? "--domain " + arguments.domain : arguments.input;

@@ -16,10 +16,40 @@ tri::Cdt2Options domain_cdt_options(tri::Cdt2Options cdt) {
     return cdt;
 }
 
+namespace {
+
+/// The edges of the convex hull of the PSLG's vertices (its segments ignored), each once, in
+/// the input's numbering: the boundary edges of their Delaunay triangulation (duplicates
+/// merged into the first, the hull's collinear vertices on it). Empty when the points are
+/// collinear.
+std::vector<tri::VertIdx> convex_hull_edges(const tri::Pslg& pslg, tri::Cdt2Options options) {
+    tri::validate_pslg(pslg);
+    options.remove_exterior = false;
+    const tri::Cdt2Result hull =
+        tri::constrained_delaunay_2d(tri::Pslg{pslg.xy, {}, {}, {}}, options);
+    std::vector<tri::VertIdx> edges;
+    const tri::Triangulation2& mesh = hull.mesh;
+    for (tri::TriIdx t = 0; t < mesh.triangle_count(); ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            if (mesh.neighbors[3 * std::size_t{t} + k] != tri::kNone) continue;
+            edges.push_back(mesh.triangles[3 * std::size_t{t} + k]);
+            edges.push_back(mesh.triangles[3 * std::size_t{t} + (k + 1) % 3]);
+        }
+    }
+    return edges;
+}
+
+}  // namespace
+
 MeshDomain2::MeshDomain2(const tri::Pslg& pslg, const tri::Cdt2Options& cdt)
     : pslg_(pslg),
       domain_options_(domain_cdt_options(cdt)),
-      numbered_(has_region_areas(pslg.regions)) {}
+      numbered_(has_region_areas(pslg.regions)) {
+    if (pslg.segments.empty()) {
+        hull_segments_ = convex_hull_edges(pslg, domain_options_);
+        pslg_.segments = hull_segments_;
+    }
+}
 
 const tri::Cdt2Result& MeshDomain2::triangulation() const {
     return *shared_triangulation();

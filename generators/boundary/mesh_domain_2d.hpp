@@ -22,7 +22,11 @@ class MeshDomain2 {
   public:
     /// Keeps `pslg` (its spans: the caller's arrays must outlive the domain) and `cdt`, and
     /// builds nothing yet: a run that needs no domain (Delaunay refinement without a size)
-    /// pays for none.
+    /// pays for none. A PSLG without segments is its convex hull, as Triangle and `cdt` take
+    /// it: the hull's edges become its segments here (the one Delaunay triangulation built
+    /// then), so every generator meshes the same domain (some had meshed the hull, others
+    /// had refused the PSLG as enclosing no region). Collinear points keep no segment.
+    /// @throws InputError as validate_pslg when the PSLG has no segments.
     explicit MeshDomain2(const triangulation::Pslg& pslg,
                          const triangulation::Cdt2Options& cdt = {});
     MeshDomain2(const MeshDomain2&) = delete;
@@ -46,8 +50,11 @@ class MeshDomain2 {
     /// True when the triangulation's attributes are region numbers (some region has an area).
     bool attributes_are_region_numbers() const { return numbered_; }
     bool built() const { return cdt_ != nullptr; }
+    /// True when the PSLG had no segments and its convex hull's edges are its segments.
+    bool hull_segments() const { return !hull_segments_.empty(); }
 
   private:
+    std::vector<triangulation::VertIdx> hull_segments_;  ///< pslg_.segments' storage then
     triangulation::Pslg pslg_;
     triangulation::Cdt2Options domain_options_;
     bool numbered_ = false;

@@ -1723,6 +1723,15 @@ hostile_files() {
   expect_error 2 "^exactmesh: error: --size '0\.1\+0\+0.{100,250}' is neither" mesh --domain key --size "$long" -o "$work/x.ele"
   [[ $(wc -c <"$work/err") -lt 1000 ]] || fail "a long expression echoed whole: $(wc -c <"$work/err") bytes"
   [[ ! -e $work/x.ele ]] || fail "x.ele written for bad input"
+  # A PSLG without segments is its convex hull for every generator (some refused it as
+  # enclosing no region, others meshed the hull), as for cdt; each mesh passes the check.
+  for generator in delaunay-refinement frontal quadtree advancing-front advancing-front-delaunay \
+    min-max-front metric-delaunay; do
+    run 0 mesh "$dir/no_segments.poly" --generator "$generator" --size 0.2 -o "$work/h.ele" || return
+    grep -q 'no_segments\.poly: no segments: the domain is the convex hull of the vertices' "$work/err" ||
+      fail "no segments, $generator: no warning: $(cat "$work/err")"
+    run 0 check "$dir/no_segments.poly" "$work/h.ele" --conforming || return
+  done
 }
 
 case "$case_name" in
