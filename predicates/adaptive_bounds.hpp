@@ -30,6 +30,13 @@ inline constexpr double isp_errbound_c = (71.0 + 1408.0 * kEpsilon) * kEpsilon *
 inline constexpr double icc_errbound_two_term = 128.0 * kEpsilon * kEpsilon;
 inline constexpr double isp_errbound_two_term = 512.0 * kEpsilon * kEpsilon;
 
+// in_ellipse's two-term stage (predicates/two_term.hpp, in_ellipse_two_term) evaluates the
+// determinant of the exact differences: |hi + lo - Det| is at most 138.32 u^2 times the
+// permanent in the exact differences (proofs/gappa/two_term_in_ellipse.g); the constant is more
+// than 2 times that after the rounding of the differences and of the permanent computed from
+// them, and of fl(hi + lo) (proofs/invariants/filters.md, "Two-term stage of in_ellipse").
+inline constexpr double in_ellipse_errbound_two_term = 512.0 * kEpsilon * kEpsilon;
+
 /// True when |det| certainly exceeds the error bound (the sign of det is then exact).
 inline bool certified(double det, double errbound) { return det >= errbound || -det >= errbound; }
 

@@ -1,13 +1,20 @@
 // SPDX-License-Identifier: MIT
-// Exact stages of in_ellipse (in_ellipse.hpp). q(v) = M11 vx^2 + 2 M12 vx vy + M22 vy^2 is an
-// exact expansion of at most 12 components (three products of three doubles); the determinant is
-// expanded along the lift column, as incircle's stages are. Any symmetric M is accepted: the
-// determinant's sign is exact for it; the geometry needs M positive definite.
+// Exact stages of in_ellipse (in_ellipse.hpp). First the determinant of the exact differences
+// (each kept as its two_diff pair) in two terms, certified by its Gappa-proven error bound
+// (proofs/gappa/two_term_in_ellipse.g); then expansions: q(v) = M11 vx^2 + 2 M12 vx vy + M22 vy^2
+// is an exact expansion of at most 12 components (three products of three doubles); the
+// determinant is expanded along the lift column, as incircle's stages are. Any symmetric M is
+// accepted: the determinant's sign is exact for it; the geometry needs M positive definite.
 #include "predicates/in_ellipse.hpp"
 
+#include <cmath>
+#include <optional>
+
+#include "predicates/adaptive_bounds.hpp"
 #include "predicates/exact_range.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/gmp_fallback.hpp"
+#include "predicates/two_term.hpp"
 
 namespace exactmesh::predicates {
 
@@ -57,21 +64,60 @@ Expansion<12> det3_xy1(const double* p, const double* q, const double* r) noexce
         .sign();
 }
 
-/// The expansion stages, for coordinates and M that are expansion-safe together.
+/// The two-term stage: the sign of det [p-d, q(p-d)] over the exact differences
+/// diff[i] = (hi, lo) when its double-double value certainly exceeds its error, else nullopt.
+/// |hi + lo - Det| <= 138.32 u^2 P, P the permanent in the exact differences
+/// (proofs/gappa/two_term_in_ellipse.g); the permanent computed from the rounded differences,
+/// times in_ellipse_errbound_two_term, is at least twice that (the same script, its last goal;
+/// proofs/invariants/filters.md, "Two-term stage of in_ellipse").
+std::optional<Sign> two_term_sign(const detail::TwoTerm* diff, const double* m) noexcept {
+    const double m11 = m[0], m12x2 = 2.0 * m[1], m22 = m[2];
+    const detail::TwoTerm det = detail::in_ellipse_two_term(diff, m11, m12x2, m22);
+    // The permanent, in the order the proof counts: 4 roundings in a lift monomial, 2 in a minor
+    // monomial, 1 for their product and 2 for the sum of the three terms.
+    const double am11 = std::fabs(m11), am12x2 = std::fabs(m12x2), am22 = std::fabs(m22);
+    const auto lift = [&](double x, double y) {
+        return (am11 * (x * x) + am12x2 * std::fabs(x * y)) + am22 * (y * y);
+    };
+    const auto minor = [](double px, double py, double qx, double qy) {
+        return std::fabs(px * qy) + std::fabs(qx * py);
+    };
+    const double adx = diff[0].hi, ady = diff[1].hi, bdx = diff[2].hi, bdy = diff[3].hi;
+    const double cdx = diff[4].hi, cdy = diff[5].hi;
+    const double permanent =
+        (lift(adx, ady) * minor(bdx, bdy, cdx, cdy) + lift(bdx, bdy) * minor(cdx, cdy, adx, ady)) +
+        lift(cdx, cdy) * minor(adx, ady, bdx, bdy);
+    // K u^2 is a power of two: the product is exact unless it falls below the normal range,
+    // where a rounded-down bound would no longer be one (then the expansions decide).
+    const double bound = adaptive::in_ellipse_errbound_two_term * permanent;
+    if (!(bound >= 0x1p-1022)) return std::nullopt;
+    const double value = det.hi + det.lo;
+    if (adaptive::certified(value, bound)) return sign_of(value);
+    return std::nullopt;
+}
+
+/// The stages after the filter, for coordinates and M that are expansion-safe together: the
+/// two-term stage, then the expansions.
 Sign expansion_sign(const double* a, const double* b, const double* c, const double* d,
                     const double* m) noexcept {
-    double diff[6];
+    detail::TwoTerm pairs[6];
     const double* rows[3] = {a, b, c};
     bool exact = true;
     for (int r = 0; r < 3; ++r) {
         for (int k = 0; k < 2; ++k) {
-            double tail = 0.0;
-            two_diff(rows[r][k], d[k], diff[2 * r + k], tail);
-            exact = exact && tail == 0.0;
+            detail::TwoTerm& p = pairs[2 * r + k];
+            two_diff(rows[r][k], d[k], p.hi, p.lo);
+            exact = exact && p.lo == 0.0;
         }
+    }
+    if (const auto s = two_term_sign(pairs, m)) {
+        EM_STAT(in_ellipse, adaptive);
+        return *s;
     }
     if (exact) {
         EM_STAT(in_ellipse, exact_differences);
+        const double diff[6] = {pairs[0].hi, pairs[1].hi, pairs[2].hi,
+                                pairs[3].hi, pairs[4].hi, pairs[5].hi};
         return exact_differences_sign(diff, m);
     }
     EM_STAT(in_ellipse, expansion);

@@ -10,9 +10,11 @@
 // symmetric M (the geometric reading needs M positive definite); with M the identity it is
 // incircle, bit for bit in its sign. Positive scaling of M never changes the sign.
 // Stages: A, a filter whose bound is proven in proofs/gappa/in_ellipse_filter.g
-// (proofs/invariants/filters.md §6); then expansion arithmetic (the difference form when the
-// differences are exact, else the raw det [x y q(p) 1]); coordinates or M outside the
-// expansion-safe range scaled into it by powers of two when exact, else GMP integers.
+// (proofs/invariants/filters.md §6); then the determinant of the exact differences in two terms
+// (double-double), certified by the bound of proofs/gappa/two_term_in_ellipse.g; then expansion
+// arithmetic (the difference form when the differences are exact, else the raw
+// det [x y q(p) 1]); coordinates or M outside the expansion-safe range scaled into it by powers
+// of two when exact, else GMP integers.
 #pragma once
 
 #include <algorithm>

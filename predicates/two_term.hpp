@@ -2,12 +2,14 @@
 // Two-term (double-double) evaluation of polynomials in doubles with a-priori error bounds:
 // each operation keeps its value as hi + lo, hi from an error-free transformation and lo the
 // rounded sum of the tails [Dekker71; Ogita, Rump, Oishi 2005, Dot2]. Used by incircle and
-// insphere to decide the determinant of the rounded differences to about u^2 (u = 2^-53) of its
+// insphere to decide the determinant of the rounded differences, and by in_ellipse the
+// determinant of the exact differences (each a two_diff pair), to about u^2 (u = 2^-53) of its
 // permanent, before any expansion. The bounds (E, H, L below, in units of the permanent P of the
 // value: |hi + lo - X| <= E u^2 P, |hi| <= H P, |lo| <= L u P) are derived in
-// proofs/invariants/filters.md, "Two-term stage" (by hand; the instances used by incircle and
-// insphere are re-proved, tighter, by proofs/gappa/two_term_*.g); they need no underflow and no
-// overflow, which the expansion-safe range check guarantees. Internal to predicates/.
+// proofs/invariants/filters.md, "Two-term stage" (by hand; the instances used by incircle,
+// insphere and in_ellipse are re-proved, tighter, by proofs/gappa/two_term_*.g); they need no
+// underflow and no overflow, which the expansion-safe range check guarantees. Internal to
+// predicates/.
 #pragma once
 
 #include "predicates/expansion.hpp"
@@ -61,6 +63,13 @@ inline TwoTerm two_term_product(const TwoTerm& y, const TwoTerm& z) noexcept {
     double hi, e;
     two_product(y.hi, z.hi, hi, e);
     return {hi, e + (y.hi * z.lo + y.lo * z.hi)};
+}
+
+/// x + y (lemma D, n = 2).
+inline TwoTerm two_term_sum(const TwoTerm& x, const TwoTerm& y) noexcept {
+    double hi, e;
+    two_sum(x.hi, y.hi, hi, e);
+    return {hi, (x.lo + y.lo) + e};
 }
 
 /// x + y + z (lemma D, n = 3).
@@ -125,6 +134,31 @@ inline TwoTerm insphere_stage_b(const double* diff) noexcept {
                         -two_term_product(two_term_sum_of_squares(cex, cey, cez), dab),
                         two_term_product(two_term_sum_of_squares(bex, bey, bez), cda),
                         -two_term_product(two_term_sum_of_squares(aex, aey, aez), bcd));
+}
+
+/// in_ellipse's two-term stage: det [p-d, q(p-d)], q(v) = m11 vx^2 + m12x2 vx vy + m22 vy^2
+/// (m12x2 = 2 M12), over the EXACT differences diff = (adx, ady, bdx, bdy, cdx, cdy), each the
+/// pair (hi, lo) of two_diff, along the lift column as in_ellipse_fast: within 138.32 u^2 of its
+/// permanent in the exact differences (Gappa, proofs/gappa/two_term_in_ellipse.g). Every lift
+/// monomial is a product of two pairs scaled by its metric entry, every minor the sum of two
+/// products of pairs.
+inline TwoTerm in_ellipse_two_term(const TwoTerm* diff, double m11, double m12x2,
+                                   double m22) noexcept {
+    const auto lift = [&](const TwoTerm& x, const TwoTerm& y) {
+        return two_term_sum(two_term_scale(two_term_product(x, x), m11),
+                            two_term_scale(two_term_product(x, y), m12x2),
+                            two_term_scale(two_term_product(y, y), m22));
+    };
+    // px qy - qx py
+    const auto minor = [](const TwoTerm& px, const TwoTerm& py, const TwoTerm& qx,
+                          const TwoTerm& qy) {
+        return two_term_sum(two_term_product(px, qy), -two_term_product(qx, py));
+    };
+    const TwoTerm &adx = diff[0], &ady = diff[1], &bdx = diff[2], &bdy = diff[3];
+    const TwoTerm &cdx = diff[4], &cdy = diff[5];
+    return two_term_sum(two_term_product(lift(adx, ady), minor(bdx, bdy, cdx, cdy)),
+                        two_term_product(lift(bdx, bdy), minor(cdx, cdy, adx, ady)),
+                        two_term_product(lift(cdx, cdy), minor(adx, ady, bdx, bdy)));
 }
 
 }  // namespace exactmesh::predicates::detail

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 # Checks one two-term constant of predicates/adaptive_bounds.hpp (icc_errbound_two_term,
-# isp_errbound_two_term) against its Gappa proof proofs/gappa/<name>.g; the model and the steps
-# done by hand are in proofs/invariants/filters.md ("Two-term stage").
+# isp_errbound_two_term, in_ellipse_errbound_two_term) against its Gappa proof
+# proofs/gappa/<name>.g; the model and the steps done by hand are in
+# proofs/invariants/filters.md ("Two-term stage").
 #
 #   cmake -DNAME=<proof name> -DCONSTANT=<constant> [-DGAPPA=<gappa>] [-DOUT_DIR=<dir>]
 #         -P proofs/check_two_term_constants.cmake

@@ -3,7 +3,8 @@
 // random points under random metrics with condition numbers up to 10^12, points on an ellipse
 // rounded to doubles (the near-degenerate cases stretched meshes produce), exact ties and their
 // symbolic perturbation, the identity metric against incircle and compare_lengths, and extreme
-// magnitudes of the coordinates and of the metric.
+// magnitudes of the coordinates and of the metric. The two-term stage (on the exact differences)
+// against its proven bound, and the stage counters where the build has them.
 #include <gtest/gtest.h>
 
 #include <gmpxx.h>
@@ -15,6 +16,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "base/errors.hpp"
@@ -25,6 +27,8 @@
 #include "predicates/incircle.hpp"
 #include "predicates/metric_lengths.hpp"
 #include "predicates/sos.hpp"
+#include "predicates/stats.hpp"
+#include "predicates/two_term.hpp"
 #include "tests/support/test_scale.hpp"
 
 namespace pr = exactmesh::predicates;
@@ -131,6 +135,154 @@ TEST(InEllipse, PointsOnAnEllipseRoundedToDoublesMatchTheReference) {
         }
     }
     EXPECT_GT(abstained, 0);  // the exact stages were exercised
+}
+
+/// Four points on one ellipse (centre in [0, 100)^2, random direction, sizes h1 in [1, 2) and
+/// h1 10^-k, k in [0, 6]: condition numbers up to 10^12), each coordinate rounded once, and the
+/// ellipse's metric rounded entry by entry; then d moved by `ulps` representable doubles in x.
+std::array<Point, 4> points_on_an_ellipse(std::mt19937_64& rng, Metric& m, int ulps) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double pi = std::acos(-1.0);
+    const double theta = 2.0 * pi * unit(rng), h1 = 1.0 + unit(rng);
+    const double h2 = h1 * std::pow(10.0, -6.0 * unit(rng));
+    const Point o{unit(rng) * 100.0, unit(rng) * 100.0};
+    const double c = std::cos(theta), s = std::sin(theta);
+    std::array<double, 4> t{};
+    for (double& x : t) x = 2.0 * pi * unit(rng);
+    std::sort(t.begin(), t.end());
+    std::array<Point, 4> p{};
+    for (int k = 0; k < 4; ++k) {
+        const double u = h1 * std::cos(t[k]), v = h2 * std::sin(t[k]);
+        p[k] = {o[0] + c * u - s * v, o[1] + s * u + c * v};
+    }
+    for (int k = 0; k < std::abs(ulps); ++k) {
+        p[3][0] = std::nextafter(p[3][0], ulps > 0 ? 1e300 : -1e300);
+    }
+    m = metric_of(theta, h1, h2);
+    return p;
+}
+
+TEST(InEllipse, TwoTermStageIsWithinItsProvenBound) {
+    // |hi + lo - Det| <= 138.3125 u^2 P over the exact differences (proofs/gappa/
+    // two_term_in_ellipse.g), P the permanent: on random points (differences mostly inexact, so
+    // the tails matter), rounded ellipse points and integer ties (Det = 0), under metrics with
+    // condition numbers up to 10^12.
+    using pr::reference::exact;
+    std::mt19937_64 rng(141);
+    std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+    std::uniform_int_distribution<int> small(-3, 3);
+    const mpq_class bound_units = mpq_class(138.3125) * mpq_class(0x1p-53) * mpq_class(0x1p-53);
+    double worst = 0.0;  // observed |hi + lo - Det| / (u^2 P)
+    for (long i = 0; i < scaled(20000); ++i) {
+        Metric m{};
+        std::array<Point, 4> p{};
+        switch (i % 3) {
+            case 0:
+                m = random_metric(rng);
+                for (Point& x : p) x = {coordinate(rng), coordinate(rng) * 1e-3};
+                break;
+            case 1:
+                p = points_on_an_ellipse(rng, m, 0);
+                break;
+            default:
+                m = {1, 0, 4};
+                for (Point& x : p) x = {double(small(rng)), double(small(rng))};
+                break;
+        }
+        pr::detail::TwoTerm pairs[6];
+        mpq_class x[6];
+        for (int r = 0; r < 3; ++r) {
+            for (int k = 0; k < 2; ++k) {
+                pr::two_diff(p[r][k], p[3][k], pairs[2 * r + k].hi, pairs[2 * r + k].lo);
+                x[2 * r + k] = exact(p[r][k]) - exact(p[3][k]);
+            }
+        }
+        const pr::detail::TwoTerm t =
+            pr::detail::in_ellipse_two_term(pairs, m[0], 2.0 * m[1], m[2]);
+        const mpq_class m11 = exact(m[0]), m12x2 = 2 * exact(m[1]), m22 = exact(m[2]);
+        mpq_class det = 0, permanent = 0;
+        for (int r = 0; r < 3; ++r) {
+            const mpq_class &vx = x[2 * r], &vy = x[2 * r + 1];
+            const mpq_class &px = x[(2 * r + 2) % 6], &py = x[(2 * r + 3) % 6];
+            const mpq_class &qx = x[(2 * r + 4) % 6], &qy = x[(2 * r + 5) % 6];
+            det += (m11 * vx * vx + m12x2 * vx * vy + m22 * vy * vy) * (px * qy - qx * py);
+            permanent += (abs(m11 * vx * vx) + abs(m12x2 * vx * vy) + abs(m22 * vy * vy)) *
+                         (abs(px * qy) + abs(qx * py));
+        }
+        const mpq_class error = abs(exact(t.hi) + exact(t.lo) - det);
+        ASSERT_LE(error, bound_units * permanent) << "case " << i;
+        if (permanent > 0) {
+            const mpq_class ratio = error / (permanent * mpq_class(0x1p-53) * mpq_class(0x1p-53));
+            worst = std::max(worst, ratio.get_d());
+        }
+    }
+    EXPECT_LT(worst, 138.3125);
+    RecordProperty("worst_error_in_u2_permanent", std::to_string(worst));
+}
+
+TEST(InEllipse, TheTwoTermStageDecidesRoundedEllipsePointsAtEveryScale) {
+    // Rounded ellipse points, and the same with d moved by up to 4 ulps (random near-degenerate
+    // inputs), at 2^0 and with the points scaled by 2^+-600 and the metric by 2^+-500 (the
+    // rescaled copy): every sign matches the reference. With stage counters, the two-term stage
+    // decides nearly every call the filter leaves, at every scale; no call reaches GMP.
+    std::mt19937_64 rng(2027);
+    std::uniform_int_distribution<int> ulps(-4, 4);
+    const std::array<std::array<int, 2>, 5> scales = {
+        {{0, 0}, {-600, -500}, {600, 500}, {-600, 500}, {600, -500}}};
+    pr::reset_thread_stats();
+    long calls = 0;
+    for (long i = 0; i < scaled(4000); ++i) {
+        Metric m{};
+        const std::array<Point, 4> p = points_on_an_ellipse(rng, m, i % 2 == 0 ? 0 : ulps(rng));
+        const Sign want = reference(p[0], p[1], p[2], p[3], m);
+        for (const auto& [k, j] : scales) {
+            std::array<Point, 4> q = p;
+            for (Point& x : q) x = {std::ldexp(x[0], k), std::ldexp(x[1], k)};
+            const Metric n{std::ldexp(m[0], j), std::ldexp(m[1], j), std::ldexp(m[2], j)};
+            EXPECT_EQ(full(q[0], q[1], q[2], q[3], n), want) << "2^" << k << ", M 2^" << j;
+            ++calls;
+        }
+    }
+    const pr::StageCounts c = pr::thread_stats().in_ellipse;
+    if (pr::stats_enabled()) {
+        EXPECT_EQ(c.calls, static_cast<std::uint64_t>(calls));
+        EXPECT_EQ(c.calls, c.filter + c.exact_differences + c.adaptive + c.expansion + c.gmp);
+        EXPECT_EQ(c.gmp, 0u);
+        EXPECT_GT(c.rescaled, 0u);
+        const std::uint64_t left = c.calls - c.filter;
+        EXPECT_GT(left, c.calls / 4) << "the filter must abstain on most of these";
+        EXPECT_GE(c.adaptive * 1000, left * 999) << "adaptive " << c.adaptive << " of " << left;
+        RecordProperty("calls_filter_adaptive_exact_differences_expansion",
+                       std::to_string(c.calls) + " " + std::to_string(c.filter) + " " +
+                           std::to_string(c.adaptive) + " " + std::to_string(c.exact_differences) +
+                           " " + std::to_string(c.expansion));
+    } else {
+        EXPECT_EQ(c.calls, 0u);
+    }
+}
+
+TEST(InEllipse, TheTwoTermStageLeavesTiesAndTinyBoundsToTheExpansions) {
+    // Integer ties (Det = 0) can never be certified; and where the stage's bound would fall
+    // below the normal range (differences 2^-210 and a metric of 2^-100, all of few bits, so
+    // expansion-safe without rescaling), it must stand aside rather than trust a rounded bound.
+    pr::reset_thread_stats();
+    const Metric m{1, 0, 4};
+    EXPECT_EQ(expect_agreement({10, 0}, {6, 4}, {-6, 4}, {0, -5}, m), Sign::Zero);
+    const pr::StageCounts ties = pr::thread_stats().in_ellipse;
+    const double t = 0x1p-210;
+    const Metric tiny_metric{0x1p-100, 0x1p-102, 0x1p-101};
+    const Point a{t, 0}, b{0, t}, c{-t, 0}, d{0, -t / 2};
+    const Sign want = reference(a, b, c, d, tiny_metric);
+    EXPECT_NE(want, Sign::Zero);
+    EXPECT_EQ(full(a, b, c, d, tiny_metric), want);
+    const pr::StageCounts after = pr::thread_stats().in_ellipse;
+    if (pr::stats_enabled()) {
+        EXPECT_EQ(ties.adaptive, 0u);
+        EXPECT_GT(ties.exact_differences, 0u);
+        EXPECT_EQ(after.adaptive, 0u);
+        EXPECT_EQ(after.rescaled, 0u);
+        EXPECT_GT(after.exact_differences, ties.exact_differences);
+    }
 }
 
 TEST(InEllipse, TheIdentityMetricIsIncircleOnRandomAndDegenerateInputs) {
