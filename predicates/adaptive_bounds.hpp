@@ -2,8 +2,12 @@
 // Error bounds of the adaptive stages B and C [Shewchuk97 §4.2-4.5, Lemmas 3-5 and the
 // bounds of predicates.c's *adapt routines], eps = 2^-53. Stage B: the determinant of the
 // rounded differences is exact, so only the rounding of the differences is bounded. Stage C:
-// first-order tail terms are added in floating point. Valid without underflow, which the
-// expansion-safe range check before these stages guarantees (proofs/invariants/filters.md).
+// first-order tail terms are added in floating point. Valid without underflow: the
+// expansion-safe range check before these stages keeps every value of the determinants and of
+// the permanents a multiple of 2^-1074 (exact below 2^-1022, relatively rounded above), but
+// the bound itself, a constant near 2^-50 or 2^-100 times a permanent, can fall below 2^-1022,
+// where its rounding is no longer relative: certified() then refuses it
+// (proofs/invariants/filters.md).
 // B and C are Shewchuk's and not re-proved here; the two-term constants are checked by Gappa
 // (proofs/gappa/two_term_*.g, CTest proofs.two_term_*).
 #pragma once
@@ -37,7 +41,12 @@ inline constexpr double isp_errbound_two_term = 512.0 * kEpsilon * kEpsilon;
 // them, and of fl(hi + lo) (proofs/invariants/filters.md, "Two-term stage of in_ellipse").
 inline constexpr double in_ellipse_errbound_two_term = 512.0 * kEpsilon * kEpsilon;
 
-/// True when |det| certainly exceeds the error bound (the sign of det is then exact).
-inline bool certified(double det, double errbound) { return det >= errbound || -det >= errbound; }
+/// True when |det| certainly exceeds the error bound (the sign of det is then exact). A bound
+/// below the normal range (2^-1022) certifies nothing: its own rounding may have lowered it by
+/// more than the relative margin the proofs give it (integer points scaled by 2^-250 are
+/// expansion-safe, and their permanents of degree 4 make such bounds); the exact stages decide.
+inline bool certified(double det, double errbound) {
+    return errbound >= 0x1p-1022 && (det >= errbound || -det >= errbound);
+}
 
 }  // namespace exactmesh::predicates::adaptive

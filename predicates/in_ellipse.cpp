@@ -88,9 +88,9 @@ std::optional<Sign> two_term_sign(const detail::TwoTerm* diff, const double* m) 
         (lift(adx, ady) * minor(bdx, bdy, cdx, cdy) + lift(bdx, bdy) * minor(cdx, cdy, adx, ady)) +
         lift(cdx, cdy) * minor(adx, ady, bdx, bdy);
     // K u^2 is a power of two: the product is exact unless it falls below the normal range,
-    // where a rounded-down bound would no longer be one (then the expansions decide).
+    // where a rounded-down bound would no longer be one (certified() refuses it, and the
+    // expansions decide).
     const double bound = adaptive::in_ellipse_errbound_two_term * permanent;
-    if (!(bound >= 0x1p-1022)) return std::nullopt;
     const double value = det.hi + det.lo;
     if (adaptive::certified(value, bound)) return sign_of(value);
     return std::nullopt;

@@ -632,3 +632,56 @@ TEST(Predicates_Insphere, AgreesWithGmpOnRandomAndDegenerateInputs) {
     std::printf("  insphere total: %ld cases\n", h.total_cases());
     h.expect_no_disagreement();
 }
+
+TEST(Predicates_AdaptiveStages, TinyPermanentsInsideTheSafeRangeAgreeWithGmp) {
+    // Coordinates that are few-bit integers or 53-bit ones (their differences rounded) times
+    // the smallest power of two the expansion-safe range admits for the predicate's degree
+    // (2^-537, 2^-358, 2^-268, 2^-214): the stages B, C and two-term run on them directly, and
+    // their error bounds (a constant near 2^-50 or 2^-100 times a permanent down to 2^-1070)
+    // fall below 2^-1022, where their rounding is no longer relative (certified() refuses them
+    // since 2026-12-06). Every sign against the rational reference, ties included.
+    std::mt19937_64 rng(29);
+    const auto coordinate = [&](int degree) {
+        const int lowest = -(1074 / degree);
+        double x = 0;
+        switch (rng() % 4) {
+            case 0:
+                x = static_cast<double>(static_cast<int>(rng() % 9) - 4);
+                break;  // grid
+            case 1:
+                x = 0x1p53 - static_cast<double>(1 + 2 * (rng() % 8));
+                break;  // 53 bits
+            case 2:
+                x = -static_cast<double>(1 + rng() % 3);
+                break;
+            default:
+                x = 0x1p52 + static_cast<double>(rng() % 16);
+                break;
+        }
+        return std::ldexp(x, lowest);
+    };
+    int zeros = 0;
+    for (int n = 0; n < 20000; ++n) {
+        double p2[4][2], p3[5][3];
+        for (auto& p : p2)
+            for (double& x : p) x = coordinate(n % 2 == 0 ? 2 : 4);
+        for (auto& p : p3)
+            for (double& x : p) x = coordinate(n % 2 == 0 ? 3 : 5);
+        if (n % 2 == 0) {
+            ASSERT_EQ(pr::orient2d(p2[0], p2[1], p2[2]),
+                      pr::reference::orient2d(p2[0], p2[1], p2[2]))
+                << n;
+            ASSERT_EQ(pr::orient3d(p3[0], p3[1], p3[2], p3[3]),
+                      pr::reference::orient3d(p3[0], p3[1], p3[2], p3[3]))
+                << n;
+        } else {
+            const Sign in = pr::incircle(p2[0], p2[1], p2[2], p2[3]);
+            ASSERT_EQ(in, pr::reference::incircle(p2[0], p2[1], p2[2], p2[3])) << n;
+            zeros += in == Sign::Zero;
+            ASSERT_EQ(pr::insphere(p3[0], p3[1], p3[2], p3[3], p3[4]),
+                      pr::reference::insphere(p3[0], p3[1], p3[2], p3[3], p3[4]))
+                << n;
+        }
+    }
+    EXPECT_GT(zeros, 0);
+}
