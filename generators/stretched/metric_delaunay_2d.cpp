@@ -567,8 +567,8 @@ tri::EdgeSwapCounters quad_swaps(tri::Triangulation2& mesh, const VertexMetrics&
     return c;
 }
 
-/// The edges at each vertex of a mesh as (triangle, local corner) pairs: the star of v is
-/// star[start[v] .. start[v + 1]).
+/// The corners of each vertex of a mesh: the slots 3 t + k holding v are
+/// corner[start[v] .. start[v + 1]), in the order of their triangles.
 struct Stars {
     std::vector<std::uint32_t> start;
     std::vector<std::uint32_t> corner;  ///< 3 t + k with mesh.triangles[3 t + k] == v
@@ -592,7 +592,8 @@ double length_defect(double l) {
 }
 
 /// The vertices that relocate_vertices left where they were, each with a hash of its star's
-/// triangle stamps then (0: none; valid in the stamps' era).
+/// triangle stamps then (0: none; valid in the stamps' era). A collision of two hashes can only
+/// leave a vertex untried, the same way on every run.
 struct RelocationMemory {
     std::vector<std::uint64_t> stars;
     std::uint32_t era = 0;
