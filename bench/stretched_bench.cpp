@@ -13,7 +13,13 @@
 //   circle100   (square only) a boundary layer curved around the circle of radius 0.3 about
 //               (0.5, 0.5): 0.05 along the circle's tangent, 0.0005 + 0.3 |r - 0.3| across (aspect
 //               ratio 100 on the circle), M = R diag(1/h_n^2, 1/h_t^2) R^T with R's first column
-//               the radial direction (x - 0.5, y - 0.5) / r.
+//               the radial direction (x - 0.5, y - 0.5) / r;
+//   circle1000  (square only) the same with 0.00005 + 0.3 |r - 0.3| across (aspect ratio 1000 on
+//               the circle: a chord of one cell sags by 21 layer thicknesses there);
+//   turning100  (square only, ours only: Gmsh 4.8.4's BAMG aborts on it, an assertion in
+//               FindTriangleContening, 2026-12-06) sizes 0.02 along and 0.0002 across the
+//               circles about (0.5, 0.5) everywhere (aspect ratio 100 turning about the centre;
+//               about 570,000 triangles).
 // Timed: ours everything from the PSLG to the finished mesh, in process (CPU time, the boundary's
 // discretization included); Gmsh its own "Done meshing 2D" CPU time (its 1D meshing of the
 // segments excluded, which favours it), as manual time. Each repetition runs at least 0.5 s of
@@ -98,7 +104,9 @@ struct MetricCase {
     std::string name;
     double m11 = 0, m12 = 0, m22 = 0;  ///< constant metrics
     bool layer = false;
-    bool circle = false;  ///< the curved layer (square only)
+    bool circle = false;           ///< the curved layer (square only)
+    double circle_first = 0.0005;  ///< the curved layer's size across on the circle
+    bool turning = false;          ///< the turning field (square only, no peer)
 };
 
 const std::vector<MetricCase>& metric_cases() {
@@ -111,16 +119,19 @@ const std::vector<MetricCase>& metric_cases() {
              false},
             {"layer1000", 0, 0, 0, true},
             {"circle100", 0, 0, 0, false, true},
+            {"circle1000", 0, 0, 0, false, true, 0.00005},
+            {"turning100", 0, 0, 0, false, false, 0, true},
         };
     }();
     return cases;
 }
 
-/// The circle100 metric's entries at (x, y), as gmsh_field writes them for Gmsh: the radial
-/// direction (dx, dy) / r with r^2 + 1e-30 (the centre gets the tangential size both ways).
-std::array<double, 3> circle_matrix(double x, double y) {
+/// The circle100 (first = 0.0005) and circle1000 (0.00005) metrics' entries at (x, y), as
+/// gmsh_field writes them for Gmsh: the radial direction (dx, dy) / r with r^2 + 1e-30 (the
+/// centre gets the tangential size both ways).
+std::array<double, 3> circle_matrix(double x, double y, double first) {
     const double dx = x - 0.5, dy = y - 0.5, r2 = dx * dx + dy * dy + 1e-30;
-    const double hn = 0.0005 + 0.3 * std::fabs(std::sqrt(r2) - 0.3), ht = 0.05;
+    const double hn = first + 0.3 * std::fabs(std::sqrt(r2) - 0.3), ht = 0.05;
     const double across = 1 / (hn * hn) - 1 / (ht * ht);
     return {1 / (ht * ht) + dx * dx / r2 * across, dx * dy / r2 * across,
             1 / (ht * ht) + dy * dy / r2 * across};
@@ -129,11 +140,27 @@ std::array<double, 3> circle_matrix(double x, double y) {
 gen::MetricField2 field_of(const MetricCase& m, double layer_y) {
     if (m.circle) {
         return gen::MetricField2::analytic(
-            [](double x, double y) {
-                const std::array<double, 3> e = circle_matrix(x, y);
+            [first = m.circle_first](double x, double y) {
+                const std::array<double, 3> e = circle_matrix(x, y, first);
                 return gen::metric_from_matrix(e[0], e[1], e[2]);
             },
             "circle boundary layer");
+    }
+    if (m.turning) {
+        return gen::MetricField2::analytic(
+            [](double x, double y) {
+                // 0.0002 across the circles about the centre (radially), 0.02 along them.
+                const double dx = x - 0.5, dy = y - 0.5, r = std::hypot(dx, dy);
+                gen::Metric2 metric;
+                metric.h1 = 0.0002;
+                metric.h2 = 0.02;
+                if (r > 0) {
+                    metric.c = dx / r;
+                    metric.s = dy / r;
+                }
+                return metric;
+            },
+            "turning field");
     }
     if (!m.layer) return gen::MetricField2::uniform(gen::metric_from_matrix(m.m11, m.m12, m.m22));
     return gen::MetricField2::analytic(
@@ -149,7 +176,10 @@ std::string gmsh_field(const MetricCase& m, double layer_y) {
     if (m.circle) {
         // circle_matrix written with x and y.
         const char* r2 = "((x-0.5)^2+(y-0.5)^2+1e-30)";
-        const std::string across = "(1/(0.0005+0.3*Fabs(Sqrt(" + std::string(r2) + ")-0.3))^2-400)";
+        char first[32];
+        std::snprintf(first, sizeof first, "%.17g", m.circle_first);
+        const std::string across =
+            "(1/(" + std::string(first) + "+0.3*Fabs(Sqrt(" + std::string(r2) + ")-0.3))^2-400)";
         std::snprintf(text, sizeof text,
                       "Field[1] = MathEvalAniso;\nField[1].M11 = \"400+(x-0.5)^2/%s*%s\";\n"
                       "Field[1].M12 = \"(x-0.5)*(y-0.5)/%s*%s\";\n"
@@ -449,9 +479,9 @@ int main(int argc, char** argv) {
     for (const Domain& d : domains) {
         for (const MetricCase& m : metric_cases()) {
             if (d.name == "three-element" && !m.layer) continue;
-            if (d.name != "square" && m.circle) continue;
-            register_side_by_side("BM_metric", "gmsh-bamg", "/" + d.name + "/" + m.name, gmsh,
-                                  BM_metric_exactmesh, BM_metric_gmsh, &d, &m);
+            if (d.name != "square" && (m.circle || m.turning)) continue;
+            register_side_by_side("BM_metric", "gmsh-bamg", "/" + d.name + "/" + m.name,
+                                  gmsh && !m.turning, BM_metric_exactmesh, BM_metric_gmsh, &d, &m);
         }
     }
     static const std::vector<Domain> airfoils = {naca0012(), three_element()};

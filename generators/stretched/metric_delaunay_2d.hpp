@@ -10,7 +10,10 @@
 //     length in the log-Euclidean mean of its ends' metrics, as metric_quality_report_2d measures
 //     edges: measured in each end's own metric, a chord of a curved layer counts its small
 //     component across both ends' directions at the layer's thickness) proposes the point halfway
-//     along it in the field sampled at 8 points (a thin layer it crosses gets the point); a
+//     along it in the field sampled at 8 points (a thin layer it crosses gets the point), or,
+//     where the layer turns so fast that a chord of one cell sags by more than half a layer,
+//     the point on the column across the layer through the edge's finer end (an edge across the
+//     layer) or on the arc through its ends (an edge along it); a
 //     proposal is dropped when a vertex of the triangle holding it or of that triangle's
 //     neighbours lies closer than `min_spacing` (measured the same way); the others are
 //     inserted, in Hilbert order, by Bowyer-Watson in the plane
@@ -29,7 +32,12 @@
 //     than 1/sqrt 2 removed (remove_vertices_2d, an independent set; skipped when the triangles
 //     carry region attributes), each followed by the swaps of step 4, until a round changes
 //     fewer than 0.5% of the vertices; then passes of point smoothing and swaps
-//     (metric_mesh_edits_2d.hpp).
+//     (metric_mesh_edits_2d.hpp);
+//  6. up to 10 rounds of the final optimization: each vertex with an edge outside
+//     [1/sqrt 2, sqrt 2] moved by pattern search (steps along its metric's principal directions)
+//     to the place with the most unit edges (then the smallest sum of ln(l)^2), kept only when
+//     its triangles stay counter-clockwise (exact orient2d); then the swaps of step 4 and the
+//     splits of step 5; until a round changes fewer than 0.1% of the vertices.
 // Every input vertex and segment survives (the segments as chains of pieces, the boundary's
 // points within rounding of them, as for every generator here). Metric lengths are computed
 // without squared lengths (metric_length: hypot in the metric's frame; log forms of sizes in
@@ -65,6 +73,14 @@ struct MetricDelaunayOptions2 {
     /// centroid of the neighbours, at most 0.3 in the metric, kept only when no triangle
     /// inverts, exact), each followed by swaps; 0: none.
     int smoothing_passes = 2;
+    /// Where the field turns so fast that the chord of one cell along a layer sags by more than
+    /// half the layer's thickness, points go on columns across the layer and on arcs along it
+    /// (proposal_point in the .cpp): the only arrangement such a layer's cells fit in.
+    bool turning_columns = true;
+    /// Most rounds of the final optimization (vertex relocation by pattern search towards unit
+    /// edges, swaps, splits of the edges still long); rounds stop when one changes fewer than
+    /// 0.1% of the vertices. 0: none.
+    int optimization_rounds = 10;
     triangulation::Cdt2Options cdt;
 };
 
@@ -72,23 +88,26 @@ struct MetricDelaunayOptions2 {
 inline constexpr std::uint64_t kDefaultMetricPointBudget = std::uint64_t{1} << 26;
 
 struct MetricDelaunayCounters2 {
-    std::uint64_t boundary_points = 0;     ///< points added on the boundary's pieces
-    std::uint64_t passes = 0;              ///< insertion passes
-    std::uint64_t proposals = 0;           ///< edge midpoints proposed
-    std::uint64_t too_close = 0;           ///< proposals dropped by the spacing test
-    std::uint64_t inserted = 0;            ///< points inserted
-    std::uint64_t rejected = 0;            ///< proposals the insertion refused (on a segment, ...)
-    std::uint64_t cavity_corrections = 0;  ///< cavities reduced to be star-shaped
-    std::uint64_t swaps = 0;               ///< in-ellipse swaps
-    std::uint64_t swap_budget_hits = 0;    ///< edges whose swap budget ran out
-    std::uint64_t smoothing_moves = 0;     ///< point moves kept
-    std::uint64_t late_splits = 0;         ///< long edges split after the first swaps
-    std::uint64_t late_removals = 0;       ///< vertices removed at short edges after them
+    std::uint64_t boundary_points = 0;      ///< points added on the boundary's pieces
+    std::uint64_t passes = 0;               ///< insertion passes
+    std::uint64_t proposals = 0;            ///< edge midpoints proposed
+    std::uint64_t too_close = 0;            ///< proposals dropped by the spacing test
+    std::uint64_t inserted = 0;             ///< points inserted
+    std::uint64_t rejected = 0;             ///< proposals the insertion refused (on a segment, ...)
+    std::uint64_t cavity_corrections = 0;   ///< cavities reduced to be star-shaped
+    std::uint64_t swaps = 0;                ///< in-ellipse swaps
+    std::uint64_t swap_budget_hits = 0;     ///< edges whose swap budget ran out
+    std::uint64_t smoothing_moves = 0;      ///< point moves kept
+    std::uint64_t late_splits = 0;          ///< long edges split after the first swaps
+    std::uint64_t late_removals = 0;        ///< vertices removed at short edges after them
+    std::uint64_t optimization_rounds = 0;  ///< rounds of the final optimization
+    std::uint64_t relocations = 0;          ///< vertex moves of the final optimization
 };
 
-inline constexpr std::array kMetricDelaunayCounterNames = EM_COUNTER_TABLE(
-    MetricDelaunayCounters2, boundary_points, passes, proposals, too_close, inserted, rejected,
-    cavity_corrections, swaps, swap_budget_hits, smoothing_moves, late_splits, late_removals);
+inline constexpr std::array kMetricDelaunayCounterNames =
+    EM_COUNTER_TABLE(MetricDelaunayCounters2, boundary_points, passes, proposals, too_close,
+                     inserted, rejected, cavity_corrections, swaps, swap_budget_hits,
+                     smoothing_moves, late_splits, late_removals, optimization_rounds, relocations);
 static_assert(counter_table_complete(kMetricDelaunayCounterNames));
 
 struct MetricDelaunayResult2 {
