@@ -444,6 +444,14 @@ class RestrictedDelaunay3 {
     /// walked in turns and the first one complete is filtered, so the work is at most a few
     /// times the smallest star (a subface's corner can be a vertex with thousands).
     std::vector<TetIdx> tets_with(VertIdx a, VertIdx b, VertIdx c = kNone) const {
+        std::vector<TetIdx> out;
+        tets_with(out, a, b, c);
+        return out;
+    }
+
+    /// tets_with into `out` (cleared first; its capacity kept by callers that loop).
+    void tets_with(std::vector<TetIdx>& out, VertIdx a, VertIdx b, VertIdx c = kNone) const {
+        out.clear();
         new_walk_epoch();
         const unsigned n = c == kNone ? 2 : 3;
         const VertIdx corners[3] = {a, b, c};
@@ -459,13 +467,11 @@ class RestrictedDelaunay3 {
                 step(walks[w], w);
             }
         }
-        std::vector<TetIdx> out;
         for (const TetIdx t : walks[finished].met) {
             if (m_.slot_of(t, a) < 4 && m_.slot_of(t, b) < 4 &&
                 (c == kNone || m_.slot_of(t, c) < 4))
                 out.push_back(t);
         }
-        return out;
     }
 
     // --- cavities --------------------------------------------------------------------------
@@ -885,10 +891,11 @@ class RestrictedDelaunay3 {
             return false;
         }
         Split split;
-        split.edge = key;
         const VertIdx v = m_.vertex_count();
         std::vector<Subface> pieces;
-        std::vector<TetIdx> seeds = tets_with(a, b);
+        const std::vector<TetIdx> around = tets_with(a, b);
+        const std::vector<Key3> on_edge = subfaces_on_edge(a, b);
+        std::vector<TetIdx> seeds;
         // The facet cavities first; then, when they or the tetrahedra around them fail, only
         // the subfaces on the subsegment.
         bool valid = false;
@@ -896,8 +903,8 @@ class RestrictedDelaunay3 {
             split = Split{};
             split.edge = key;
             pieces.clear();
-            seeds = tets_with(a, b);
-            if (facet_cavity(p.data(), subfaces_on_edge(a, b), v, split, pieces, seeds, grow) &&
+            seeds = around;
+            if (facet_cavity(p.data(), on_edge, v, split, pieces, seeds, grow) &&
                 build_cavity(p.data(), seeds, split)) {
                 valid = true;
                 break;
@@ -947,12 +954,13 @@ class RestrictedDelaunay3 {
                 const VertIdx x = f.oriented[e], y = f.oriented[(e + 1) % 3];
                 const std::uint64_t key = edge_key(x, y);
                 if (key == split.edge || subsegments_.count(key) != 0) continue;
-                for (const Key3& k : subfaces_on_edge(x, y)) {
-                    if (in_set(k)) continue;
+                edge_subfaces_.for_each(key, [&](VertIdx third) {
+                    const Key3 k = sorted3(x, y, third);
+                    if (in_set(k)) return;
                     const Subface& g = subfaces_.at(k);
-                    if (g.facet != f.facet || !in_circumcircle(g, p)) continue;
+                    if (g.facet != f.facet || !in_circumcircle(g, p)) return;
                     faces.push_back(k);
-                }
+                });
             }
         }
         // The segment p splits, if it does: a subsegment of it on a cavity's boundary would make
@@ -973,11 +981,12 @@ class RestrictedDelaunay3 {
                     const std::uint64_t key = edge_key(x, y);
                     if (key == split.edge) continue;
                     bool inner = false;
-                    for (const Key3& other : subfaces_on_edge(x, y)) {
+                    edge_subfaces_.for_each(key, [&](VertIdx third) {
+                        const Key3 other = sorted3(x, y, third);
                         if (other != faces[i] && in_set(other) &&
                             subfaces_.at(other).facet == f.facet)
                             inner = true;
-                    }
+                    });
                     // A subsegment of the segment p splits cannot bound a piece: p on that
                     // segment's line is exactly inside no circumcircle through the two ends of
                     // another of its pieces (the line meets the circle there only), so a subface
@@ -1017,8 +1026,10 @@ class RestrictedDelaunay3 {
             std::sort(keys->begin(), keys->end());
             if (std::adjacent_find(keys->begin(), keys->end()) != keys->end()) return false;
         }
+        std::vector<TetIdx>& around = facet_cavity_tets_;
         for (const Key3& k : faces) {
-            for (const TetIdx t : tets_with(k[0], k[1], k[2]))
+            tets_with(around, k[0], k[1], k[2]);
+            for (const TetIdx t : around)
                 if (std::find(seeds.begin(), seeds.end(), t) == seeds.end()) seeds.push_back(t);
         }
         split.faces = std::move(faces);
@@ -1026,6 +1037,8 @@ class RestrictedDelaunay3 {
             split.face_set.insert(split.faces.begin(), split.faces.end());
         return true;
     }
+
+    mutable std::vector<TetIdx> facet_cavity_tets_;  ///< facet_cavity's scratch (tets_with)
 
     /// Whether p (a point of f's facet, up to rounding) lies strictly inside the circumcircle of
     /// subface f: inside its equatorial sphere, whose trace on the facet's plane is that circle
