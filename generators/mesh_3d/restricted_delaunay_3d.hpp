@@ -259,6 +259,29 @@ class RestrictedDelaunay3 {
     /// vertices of a refined mesh are Volume points, so most lookups end here.
     bool on_boundary(VertIdx v) const { return out_.vertex_feature[v] != VertexFeature3::Volume; }
 
+    /// Bit k set when corner k of tetrahedron t is on_boundary: a face can be a subface only
+    /// with its three corners' bits, an edge a subsegment only with both ends' (one feature
+    /// lookup per corner, and no sorted key, for the many faces and edges that cannot be).
+    unsigned boundary_corners(TetIdx t) const {
+        unsigned mask = 0;
+        for (unsigned k = 0; k < 4; ++k)
+            if (on_boundary(m_.vertex(t, k))) mask |= 1u << k;
+        return mask;
+    }
+    /// The number of corners in a boundary_corners mask (a table: std::popcount is a library
+    /// call without -mpopcnt).
+    static unsigned corner_count(unsigned mask) {
+        constexpr unsigned char kCount[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+        return kCount[mask & 0xfu];
+    }
+    /// Whether face k (opposite corner k) of a tetrahedron with boundary_corners `mask` has
+    /// its three corners on the boundary.
+    static bool boundary_face(unsigned mask, unsigned k) { return (mask | (1u << k)) == 0xfu; }
+    /// Whether edge e (kEdges[e]) has both ends on the boundary.
+    static bool boundary_edge(unsigned mask, const unsigned (&e)[2]) {
+        return ((mask >> e[0]) & (mask >> e[1]) & 1u) != 0;
+    }
+
     /// Whether the face with sorted corners `key` is a subface.
     bool is_subface_key(const Key3& key) const {
         return on_boundary(key[0]) && on_boundary(key[1]) && on_boundary(key[2]) &&
@@ -836,11 +859,17 @@ class RestrictedDelaunay3 {
             on_created(t);
             return;
         }
+        const unsigned mask = boundary_corners(t);
+        if (corner_count(mask) < 2) {  // no face or edge with all its corners on the surface
+            on_created(t);
+            return;
+        }
         const std::array<VertIdx, 4> c{m_.vertex(t, 0), m_.vertex(t, 1), m_.vertex(t, 2),
                                        m_.vertex(t, 3)};
         for (unsigned k = 0; k < 4; ++k) {
+            if (!boundary_face(mask, k)) continue;
             const Key3 key = face_key(t, k);
-            if (!is_subface_key(key)) continue;
+            if (subfaces_.count(key) == 0) continue;
             if (!sharp_.empty() && sharp_.shields_subface(out_, c[k], subfaces_.at(key).facet))
                 continue;
             if (predicates::in_equatorial_sphere_3d(point(c[k]), point(key[0]), point(key[1]),
@@ -850,8 +879,9 @@ class RestrictedDelaunay3 {
             }
         }
         for (const auto& e : kEdges) {
-            if (!is_subsegment(c[e[0]], c[e[1]])) continue;
+            if (!boundary_edge(mask, e)) continue;
             const std::uint64_t key = edge_key(c[e[0]], c[e[1]]);
+            if (subsegments_.count(key) == 0) continue;
             for (unsigned k = 0; k < 4; ++k) {
                 if (k == e[0] || k == e[1]) continue;
                 if (!sharp_.empty() && sharp_.shields_segment(out_, c[k], subsegments_.at(key)))
@@ -1223,10 +1253,13 @@ class RestrictedDelaunay3 {
     bool queue_encroached_segments(const double* p, std::uint32_t facet = kNone) {
         bool any = false;
         for (const TetIdx t : cavity_) {
+            const unsigned mask = boundary_corners(t);
+            if (corner_count(mask) < 2) continue;
             for (const auto& e : kEdges) {
+                if (!boundary_edge(mask, e)) continue;
                 const VertIdx a = m_.vertex(t, e[0]), b = m_.vertex(t, e[1]);
-                if (!is_subsegment(a, b)) continue;
                 const std::uint64_t key = edge_key(a, b);
+                if (subsegments_.count(key) == 0) continue;
                 if (facet != kNone && sharp_.shields_segment(subsegments_.at(key), facet)) continue;
                 if (predicates::dot_sign_3d(p, point(a), point(b)) == Sign::Negative) {
                     segment_queue_.push_front(key);
@@ -1243,9 +1276,12 @@ class RestrictedDelaunay3 {
     bool queue_encroached_subfaces(const double* p) {
         bool any = false;
         for (const TetIdx u : cavity_) {
+            const unsigned mask = boundary_corners(u);
+            if (corner_count(mask) < 3) continue;
             for (unsigned k = 0; k < 4; ++k) {
+                if (!boundary_face(mask, k)) continue;
                 const Key3 key = face_key(u, k);
-                if (!is_subface_key(key)) continue;
+                if (subfaces_.count(key) == 0) continue;
                 if (predicates::in_equatorial_sphere_3d(p, point(key[0]), point(key[1]),
                                                         point(key[2])) == Sign::Positive) {
                     subface_queue_.push_front(key);
