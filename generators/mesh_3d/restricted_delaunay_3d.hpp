@@ -502,16 +502,24 @@ class RestrictedDelaunay3 {
     struct Split {
         std::vector<Key3> faces;                   ///< subfaces the point splits (crossed, dropped)
         std::uint64_t edge = ~0ull;                ///< the subsegment it splits, if any
-        std::unordered_set<std::uint64_t> exempt;  ///< edges inside the facet cavities: may go
+        /// Edges inside the facet cavities (they may go), once per cavity subface holding one:
+        /// a list, as `faces` (a node-based set here made most of facet_cavity's allocations).
+        std::vector<std::uint64_t> exempt;
         /// `faces` as a set when there are many (a needle's facet cavity holds the whole facet:
         /// a scan per cavity face made first_violation quadratic); empty otherwise.
         std::unordered_set<Key3, Key3Hash> face_set;
+        std::unordered_set<std::uint64_t> exempt_set;  ///< `exempt` as a set, likewise
     };
     static constexpr std::size_t kScannedFaces = 32;
 
     bool is_split_face(const Split& split, const Key3& key) const {
         if (!split.face_set.empty()) return split.face_set.count(key) != 0;
         return std::find(split.faces.begin(), split.faces.end(), key) != split.faces.end();
+    }
+
+    bool is_exempt(const Split& split, std::uint64_t key) const {
+        if (!split.exempt_set.empty()) return split.exempt_set.count(key) != 0;
+        return std::find(split.exempt.begin(), split.exempt.end(), key) != split.exempt.end();
     }
 
     /// Bowyer-Watson cavity of p from `seeds` that never crosses a subface outside `split`,
@@ -689,7 +697,7 @@ class RestrictedDelaunay3 {
                 const VertIdx a = m_.vertex(t, e[0]), b = m_.vertex(t, e[1]);
                 if (!on_boundary(a) || !on_boundary(b)) continue;  // no kept edge
                 const std::uint64_t key = edge_key(a, b);
-                if (key == split.edge || split.exempt.count(key) != 0) continue;
+                if (key == split.edge || is_exempt(split, key)) continue;
                 const bool kept_edge =
                     subsegments_.count(key) != 0 || edge_subfaces_.contains(key);
                 if (kept_edge && !boundary_edges.contains(key)) return removable(t);
@@ -1026,7 +1034,7 @@ class RestrictedDelaunay3 {
                     const std::uint32_t* on_segment =
                         split_segment == nullptr ? nullptr : subsegments_.find(key);
                     if (inner) {
-                        split.exempt.insert(key);
+                        split.exempt.push_back(key);
                     } else if ((on_segment != nullptr && *on_segment == *split_segment) ||
                                triangulation::projected_orient(point(x), point(y), p, drop) !=
                                    orientation) {
@@ -1046,7 +1054,10 @@ class RestrictedDelaunay3 {
             faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(bad));
         }
         // Each vertex starts and ends at most one boundary edge of its facet's cavity.
-        std::vector<std::uint64_t> starts, ends;
+        std::vector<std::uint64_t>& starts = piece_starts_;
+        std::vector<std::uint64_t>& ends = piece_ends_;
+        starts.clear();
+        ends.clear();
         for (const Subface& piece : pieces) {
             const std::uint64_t facet = std::uint64_t{piece.facet} << 32;
             starts.push_back(facet | piece.oriented[0]);
@@ -1065,10 +1076,13 @@ class RestrictedDelaunay3 {
         split.faces = std::move(faces);
         if (split.faces.size() > kScannedFaces)
             split.face_set.insert(split.faces.begin(), split.faces.end());
+        if (split.exempt.size() > 2 * kScannedFaces)
+            split.exempt_set.insert(split.exempt.begin(), split.exempt.end());
         return true;
     }
 
     mutable std::vector<TetIdx> facet_cavity_tets_;  ///< facet_cavity's scratch (tets_with)
+    mutable std::vector<std::uint64_t> piece_starts_, piece_ends_;  ///< facet_cavity's scratch
 
     /// Whether p (a point of f's facet, up to rounding) lies strictly inside the circumcircle of
     /// subface f: inside its equatorial sphere, whose trace on the facet's plane is that circle
