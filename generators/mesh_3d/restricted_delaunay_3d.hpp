@@ -222,7 +222,17 @@ class RestrictedDelaunay3 {
     bool queue_encroachment_ = true;
 
     // Cavity scratch.
-    std::vector<std::uint32_t> excluded_;  ///< per tet slot: == cavity_stamp_ when shrunk away
+    /// Per tet slot, build_cavity's marks side by side (one cache line per tetrahedron met, not
+    /// one per array): `attempt` == attempt_ while in the cavity of the current attempt,
+    /// `excluded` == cavity_stamp_ when shrunk away, `sphere` == cavity_stamp_ when `inside`
+    /// holds insphere(tetrahedron, p) > 0 for the current point.
+    struct CavityMarks {
+        std::uint32_t attempt = 0;
+        std::uint32_t excluded = 0;
+        std::uint32_t sphere = 0;
+        std::uint32_t inside = 0;
+    };
+    std::vector<CavityMarks> marks_;
     std::uint32_t cavity_stamp_ = 0;
     std::vector<TetIdx> cavity_;
 
@@ -528,14 +538,15 @@ class RestrictedDelaunay3 {
     /// (shrinking only removes tetrahedra, so it could not come back).
     bool build_cavity(const double* p, const std::vector<TetIdx>& seeds, const Split& split,
                       TetIdx required = kNone) {
-        if (excluded_.size() < m_.tet_slots()) excluded_.resize(m_.tet_slots(), 0);
+        // The mesh does not change while a cavity is built: the marks cover every slot now.
+        if (marks_.size() < m_.tet_slots()) marks_.resize(m_.tet_slots());
         ++cavity_stamp_;
         std::vector<TetIdx> seed_list = seeds;
         std::size_t forced = 0;  // seeds added for other seeds' faces that p does not see
         bool shrunk = false;
         while (true) {
-            // Grow from the seeds (marks of this attempt in attempt_stamp_; the tetrahedra shrunk
-            // away stay excluded_ under this insertion's stamp).
+            // Grow from the seeds (marks of this attempt in CavityMarks::attempt; the tetrahedra
+            // shrunk away stay excluded under this insertion's stamp).
             cavity_.clear();
             const std::uint32_t mark = cavity_stamp_;
             ++attempt_;
@@ -550,12 +561,16 @@ class RestrictedDelaunay3 {
                     const FaceIdx g = m_.adj[4 * t + k];
                     if (g == kNone) continue;
                     const TetIdx u = triangulation::tet_of(g);
-                    if (attempt_mark_(u) || excluded_[u] == mark) continue;
+                    if (attempt_mark_(u) || marks_[u].excluded == mark) continue;
                     // The sphere first: asked once per tetrahedron and call, while the
                     // subface lookup (a hash of the face) came once per face and round.
                     if (!inside_sphere(u, p, mark)) continue;
-                    const Key3 key = face_key(t, k);
-                    if (is_subface_key(key) && !is_split_face(split, key)) continue;
+                    const unsigned* lf = kFaceVertex[k];
+                    if (on_boundary(m_.vertex(t, lf[0])) && on_boundary(m_.vertex(t, lf[1])) &&
+                        on_boundary(m_.vertex(t, lf[2]))) {
+                        const Key3 key = face_key(t, k);
+                        if (subfaces_.count(key) != 0 && !is_split_face(split, key)) continue;
+                    }
                     set_attempt_(u);
                     cavity_.push_back(u);
                 }
@@ -580,13 +595,13 @@ class RestrictedDelaunay3 {
                 if (std::find(seed_list.begin(), seed_list.end(), u) != seed_list.end())
                     return false;
                 seed_list.push_back(u);
-                excluded_[u] = 0;
+                marks_[u].excluded = 0;
                 ++forced;
                 ++counters_.forced_cavity_tets;
                 continue;
             }
-            excluded_[bad] = mark;
-            for (const TetIdx u : violations_) excluded_[u] = mark;
+            marks_[bad].excluded = mark;
+            for (const TetIdx u : violations_) marks_[u].excluded = mark;
             if (violations_.size() > 1) counters_.batched_removals += violations_.size() - 1;
             shrunk = true;
         }
@@ -596,32 +611,21 @@ class RestrictedDelaunay3 {
     /// the shrinking loop regrows the cavity several times and a tetrahedron beside it is met
     /// from each of its faces on the cavity, and cospherical ties cost an exact evaluation.
     bool inside_sphere(TetIdx u, const double* p, std::uint32_t mark) {
-        if (sphere_stamp_.size() < m_.tet_slots()) {
-            sphere_stamp_.resize(m_.tet_slots(), 0);
-            sphere_inside_.resize(m_.tet_slots(), 0);
+        CavityMarks& marks = marks_[u];
+        if (marks.sphere != mark) {
+            marks.sphere = mark;
+            marks.inside = predicates::insphere(point(m_.vertex(u, 0)), point(m_.vertex(u, 1)),
+                                                point(m_.vertex(u, 2)), point(m_.vertex(u, 3)),
+                                                p) == Sign::Positive;
         }
-        if (sphere_stamp_[u] != mark) {
-            sphere_stamp_[u] = mark;
-            sphere_inside_[u] = predicates::insphere(point(m_.vertex(u, 0)), point(m_.vertex(u, 1)),
-                                                     point(m_.vertex(u, 2)), point(m_.vertex(u, 3)),
-                                                     p) == Sign::Positive;
-        }
-        return sphere_inside_[u] != 0;
+        return marks.inside != 0;
     }
-    std::vector<std::uint32_t> sphere_stamp_;
-    std::vector<std::uint8_t> sphere_inside_;
 
-    // Per-attempt marks (a second stamp array).
-    std::vector<std::uint32_t> attempt_stamp_;
+    // Per-attempt marks (CavityMarks::attempt; build_cavity sized marks_).
     std::uint32_t attempt_ = 0;
-    bool attempt_mark_(TetIdx t) {
-        if (attempt_stamp_.size() < m_.tet_slots()) attempt_stamp_.resize(m_.tet_slots(), 0);
-        return attempt_stamp_[t] == attempt_;
-    }
-    void set_attempt_(TetIdx t) { attempt_stamp_[t] = attempt_; }
-    bool in_attempt(TetIdx t) const {
-        return t < attempt_stamp_.size() && attempt_stamp_[t] == attempt_;
-    }
+    bool attempt_mark_(TetIdx t) const { return marks_[t].attempt == attempt_; }
+    void set_attempt_(TetIdx t) { marks_[t].attempt = attempt_; }
+    bool in_attempt(TetIdx t) const { return t < marks_.size() && marks_[t].attempt == attempt_; }
 
     /// kNone when the cavity is valid; else a non-seed cavity tetrahedron to remove, or
     /// kNone - 1 when only a seed could be removed. violations_ then holds every tetrahedron
@@ -762,7 +766,7 @@ class RestrictedDelaunay3 {
             }
         }
         for (const TetIdx t : cavity_) {
-            attempt_stamp_[t] = 0;
+            marks_[t].attempt = 0;
             m_.kill_tet(t);
         }
         FlatKeyMap64<FaceIdx>& open = open_edges_;
