@@ -524,7 +524,8 @@ class RestrictedDelaunay3 {
 
     bool is_split_face(const Split& split, const Key3& key) const {
         if (!split.face_set.empty()) return split.face_set.count(key) != 0;
-        return std::find(split.faces.begin(), split.faces.end(), key) != split.faces.end();
+        return std::any_of(split.faces.begin(), split.faces.end(),
+                           [&](const Key3& face) { return same_key(face, key); });
     }
 
     bool is_exempt(const Split& split, std::uint64_t key) const {
@@ -986,7 +987,8 @@ class RestrictedDelaunay3 {
         std::size_t synced = 0;
         const auto in_set = [&](const Key3& k) {
             if (faces.size() <= kScannedFaces)
-                return std::find(faces.begin(), faces.end(), k) != faces.end();
+                return std::any_of(faces.begin(), faces.end(),
+                                   [&](const Key3& face) { return same_key(face, k); });
             for (; synced < faces.size(); ++synced) indexed.insert(faces[synced]);
             return indexed.count(k) != 0;
         };
@@ -1025,7 +1027,7 @@ class RestrictedDelaunay3 {
                     bool inner = false;
                     edge_subfaces_.for_each(key, [&](VertIdx third) {
                         const Key3 other = sorted3(x, y, third);
-                        if (other != faces[i] && in_set(other) &&
+                        if (!same_key(other, faces[i]) && in_set(other) &&
                             subfaces_.at(other).facet == f.facet)
                             inner = true;
                     });
