@@ -95,8 +95,7 @@ class Refinement final : public RestrictedDelaunay3 {
         if (walk_to(t, p, s, blocking, &path) != Walk::Reached || path.size() > kMaxWalkSeeds)
             return false;
         ++counters_.walk_seeded_cavities;
-        const Split none;
-        return build_cavity(p, path, none, t);
+        return build_cavity(p, path, no_split(), t);
     }
     static constexpr std::size_t kMaxWalkSeeds = 64;
 
@@ -125,8 +124,8 @@ class Refinement final : public RestrictedDelaunay3 {
                 return false;
             }
         }
-        const Split none;
-        if (!build_cavity(center.data(), {s}, none, t)) {
+        const Split& none = no_split();
+        if (!build_cavity(center.data(), s, none, t)) {
             // The centre on a face of its tetrahedron that cannot be crossed: it encroaches that
             // subface (or one of its subsegments), split instead.
             cavity_ = {s};

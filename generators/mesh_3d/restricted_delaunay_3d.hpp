@@ -539,10 +539,30 @@ class RestrictedDelaunay3 {
     /// (shrinking only removes tetrahedra, so it could not come back).
     bool build_cavity(const double* p, const std::vector<TetIdx>& seeds, const Split& split,
                       TetIdx required = kNone) {
+        seed_list_.assign(seeds.begin(), seeds.end());
+        return grow_cavity(p, split, required);
+    }
+
+    /// build_cavity from one seed (no vector made per call).
+    bool build_cavity(const double* p, TetIdx seed, const Split& split, TetIdx required = kNone) {
+        seed_list_.assign(1, seed);
+        return grow_cavity(p, split, required);
+    }
+
+    /// A Split of nothing: a point inside the domain.
+    static const Split& no_split() {
+        static const Split none;
+        return none;
+    }
+
+    std::vector<TetIdx> seed_list_;  ///< build_cavity's seeds (scratch, kept for its capacity)
+
+    /// build_cavity from the seeds in seed_list_ (which it may extend).
+    bool grow_cavity(const double* p, const Split& split, TetIdx required) {
         // The mesh does not change while a cavity is built: the marks cover every slot now.
         if (marks_.size() < m_.tet_slots()) marks_.resize(m_.tet_slots());
         ++cavity_stamp_;
-        std::vector<TetIdx> seed_list = seeds;
+        std::vector<TetIdx>& seed_list = seed_list_;
         std::size_t forced = 0;  // seeds added for other seeds' faces that p does not see
         bool shrunk = false;
         while (true) {
