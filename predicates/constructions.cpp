@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "base/errors.hpp"
@@ -705,8 +706,8 @@ bool circumcenter3_double_double_inexact(const double* a, const double* b, const
     cross_dd2(r, p, m.e, m.pe);
     cross_dd2(p, q, m.f, m.pf);
     m.h = plus(plus(times_dd(m.c[0], p[0]), times_dd(m.c[1], p[1])), times_dd(m.c[2], p[2]));
-    m.ph = std::fabs(p[0].hi) * m.pc[0] + std::fabs(p[1].hi) * m.pc[1] +
-           std::fabs(p[2].hi) * m.pc[2];
+    m.ph =
+        std::fabs(p[0].hi) * m.pc[0] + std::fabs(p[1].hi) * m.pc[1] + std::fabs(p[2].hi) * m.pc[2];
     m.np = norm3_dd(p);
     m.nq = norm3_dd(q);
     m.nr = norm3_dd(r);
@@ -972,20 +973,57 @@ std::array<double, 3> triangle_circumcenter_on_plane_3d(const double* a, const d
     }
     std::array<double, 3> result;
     if (!cramer_rounded(m, w, det, c, result))
-        fail("circumcenter on a plane", "the point overflows the double range",
-             {a, b, c, p, q, r}, 3);
+        fail("circumcenter on a plane", "the point overflows the double range", {a, b, c, p, q, r},
+             3);
     return result;
 }
+
+namespace {
+
+/// Whether |x| is 0 or within [2^-450, 2^500]: two such doubles have an error-free Dekker (or
+/// FMA) product, since the partial products stay above 2^-1022 (the exponents sum to at least
+/// -900, the low halves' product at least 2^-900-106) and below 2^1000 (the splitting needs
+/// |x| < 2^995).
+bool product_safe(double x) {
+    const double a = std::fabs(x);
+    return a == 0.0 || (a >= 0x1p-450 && a <= 0x1p500);
+}
+
+/// p + t (q - p) when it is a double, shown by error-free transformations (each tail zero: the
+/// difference, the product and the sum are then the exact values), which is then its own
+/// correct rounding (0 as +0, as the rational path rounds it); nullopt otherwise. Split points
+/// of 3D refinement are mostly such (a segment parallel to an axis keeps two coordinates,
+/// midpoints of dyadic ends are exact): each spared an MPFR rounding of three rationals.
+std::optional<double> exact_point_on_segment_coordinate(double p, double q, double t) {
+    if (q == p) return p == 0.0 ? 0.0 : p;
+    double d = 0, d_tail = 0;
+    two_diff(q, p, d, d_tail);
+    if (d_tail != 0.0 || !product_safe(d) || !product_safe(t)) return std::nullopt;
+    double m = 0, m_tail = 0;
+    two_product(t, d, m, m_tail);
+    if (m_tail != 0.0) return std::nullopt;
+    double s = 0, s_tail = 0;
+    two_sum(p, m, s, s_tail);
+    if (s_tail != 0.0 || !std::isfinite(s)) return std::nullopt;
+    return s == 0.0 ? 0.0 : s;
+}
+
+}  // namespace
 
 std::array<double, 3> point_on_segment_3d(const double* p, const double* q, double t) {
     require_finite_points("point_on_segment", {p, q}, 3);
     if (!std::isfinite(t)) {
         fail("point_on_segment", "the parameter is not finite", {p, q}, 3);
     }
-    const mpq_class s(t);
     std::array<double, 3> result;
+    std::optional<mpq_class> s;  // t as a rational, made only when a coordinate needs it
     for (unsigned k = 0; k < 3; ++k) {
-        const mpq_class coordinate = p[k] + s * (mpq_class(q[k]) - p[k]);
+        if (const auto coordinate = exact_point_on_segment_coordinate(p[k], q[k], t)) {
+            result[k] = *coordinate;
+            continue;
+        }
+        if (!s) s.emplace(t);
+        const mpq_class coordinate = p[k] + *s * (mpq_class(q[k]) - p[k]);
         if (!round_to_double(coordinate, result[k])) {
             fail("point_on_segment", "the point overflows the double range", {p, q}, 3);
         }

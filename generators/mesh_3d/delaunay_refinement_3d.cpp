@@ -61,13 +61,11 @@ class Refinement final : public RestrictedDelaunay3 {
                                    max_volumes_.empty() ? 0.0 : max_volumes_[t]);
     }
 
-    /// Whether tetrahedron t (corners c) exceeds its radius-edge or volume bound (exact).
-    bool is_bad(TetIdx t, const std::array<VertIdx, 4>& c) const {
-        const double *a = point(c[0]), *b = point(c[1]), *d = point(c[2]), *e = point(c[3]);
-        if (predicates::compare_radius_edge_3d(a, b, d, e, options_.radius_edge_bound) ==
-            Sign::Positive)
-            return true;
-        return over_volume(t, c);
+    /// Whether the tetrahedron with corners c exceeds the radius-edge bound (exact).
+    bool over_radius_edge(const std::array<VertIdx, 4>& c) const {
+        return predicates::compare_radius_edge_3d(point(c[0]), point(c[1]), point(c[2]),
+                                                  point(c[3]),
+                                                  options_.radius_edge_bound) == Sign::Positive;
     }
 
     bool unresolvable(const std::array<VertIdx, 4>& c) const {
@@ -97,8 +95,7 @@ class Refinement final : public RestrictedDelaunay3 {
         if (walk_to(t, p, s, blocking, &path) != Walk::Reached || path.size() > kMaxWalkSeeds)
             return false;
         ++counters_.walk_seeded_cavities;
-        const Split none;
-        return build_cavity(p, path, none, t);
+        return build_cavity(p, path, no_split(), t);
     }
     static constexpr std::size_t kMaxWalkSeeds = 64;
 
@@ -127,8 +124,8 @@ class Refinement final : public RestrictedDelaunay3 {
                 return false;
             }
         }
-        const Split none;
-        if (!build_cavity(center.data(), {s}, none, t)) {
+        const Split& none = no_split();
+        if (!build_cavity(center.data(), s, none, t)) {
             // The centre on a face of its tetrahedron that cannot be crossed: it encroaches that
             // subface (or one of its subsegments), split instead.
             cavity_ = {s};
@@ -170,8 +167,12 @@ DelaunayRefinement3Result Refinement::run() {
         const QueuedTet next = tet_queue_.front();
         tet_queue_.pop_front();
         const auto& corners = next.corners;
-        if (m_.is_dead(next.t) || m_.tet(next.t) != corners || !is_bad(next.t, corners)) continue;
-        if (!over_volume(next.t, corners) && small_angles_->spares(corners)) {
+        if (m_.is_dead(next.t) || m_.tet(next.t) != corners) continue;
+        // Bad: over its volume bound or its radius-edge bound, the volume asked first (half
+        // the radius-edge test's cost, and its answer is needed below) and asked once.
+        const bool over = over_volume(next.t, corners);
+        if (!over && !over_radius_edge(corners)) continue;
+        if (!over && small_angles_->spares(corners)) {
             ++counters_.small_angle_tets;
             continue;
         }

@@ -354,10 +354,10 @@ void Frontal::step(TetIdx t) {
         accept(t);
         return;
     }
-    const Split none;
+    const Split& none = no_split();
     // t must go: x is inside its circumsphere by construction, and a cavity shrunk away from
     // t would leave it active with the same point to place.
-    if (!build_cavity(x.data(), {s}, none, t) || !in_attempt(t)) {
+    if (!build_cavity(x.data(), s, none, t) || !in_attempt(t)) {
         ++fc_.rejected_cavity;
         accept(t);
         return;

@@ -222,7 +222,17 @@ class RestrictedDelaunay3 {
     bool queue_encroachment_ = true;
 
     // Cavity scratch.
-    std::vector<std::uint32_t> excluded_;  ///< per tet slot: == cavity_stamp_ when shrunk away
+    /// Per tet slot, build_cavity's marks side by side (one cache line per tetrahedron met, not
+    /// one per array): `attempt` == attempt_ while in the cavity of the current attempt,
+    /// `excluded` == cavity_stamp_ when shrunk away, `sphere` == cavity_stamp_ when `inside`
+    /// holds insphere(tetrahedron, p) > 0 for the current point.
+    struct CavityMarks {
+        std::uint32_t attempt = 0;
+        std::uint32_t excluded = 0;
+        std::uint32_t sphere = 0;
+        std::uint32_t inside = 0;
+    };
+    std::vector<CavityMarks> marks_;
     std::uint32_t cavity_stamp_ = 0;
     std::vector<TetIdx> cavity_;
 
@@ -258,6 +268,29 @@ class RestrictedDelaunay3 {
     /// are (subfaces and subsegments are split only at Segment and Facet points), and most
     /// vertices of a refined mesh are Volume points, so most lookups end here.
     bool on_boundary(VertIdx v) const { return out_.vertex_feature[v] != VertexFeature3::Volume; }
+
+    /// Bit k set when corner k of tetrahedron t is on_boundary: a face can be a subface only
+    /// with its three corners' bits, an edge a subsegment only with both ends' (one feature
+    /// lookup per corner, and no sorted key, for the many faces and edges that cannot be).
+    unsigned boundary_corners(TetIdx t) const {
+        unsigned mask = 0;
+        for (unsigned k = 0; k < 4; ++k)
+            if (on_boundary(m_.vertex(t, k))) mask |= 1u << k;
+        return mask;
+    }
+    /// The number of corners in a boundary_corners mask (a table: std::popcount is a library
+    /// call without -mpopcnt).
+    static unsigned corner_count(unsigned mask) {
+        constexpr unsigned char kCount[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+        return kCount[mask & 0xfu];
+    }
+    /// Whether face k (opposite corner k) of a tetrahedron with boundary_corners `mask` has
+    /// its three corners on the boundary.
+    static bool boundary_face(unsigned mask, unsigned k) { return (mask | (1u << k)) == 0xfu; }
+    /// Whether edge e (kEdges[e]) has both ends on the boundary.
+    static bool boundary_edge(unsigned mask, const unsigned (&e)[2]) {
+        return ((mask >> e[0]) & (mask >> e[1]) & 1u) != 0;
+    }
 
     /// Whether the face with sorted corners `key` is a subface.
     bool is_subface_key(const Key3& key) const {
@@ -444,6 +477,14 @@ class RestrictedDelaunay3 {
     /// walked in turns and the first one complete is filtered, so the work is at most a few
     /// times the smallest star (a subface's corner can be a vertex with thousands).
     std::vector<TetIdx> tets_with(VertIdx a, VertIdx b, VertIdx c = kNone) const {
+        std::vector<TetIdx> out;
+        tets_with(out, a, b, c);
+        return out;
+    }
+
+    /// tets_with into `out` (cleared first; its capacity kept by callers that loop).
+    void tets_with(std::vector<TetIdx>& out, VertIdx a, VertIdx b, VertIdx c = kNone) const {
+        out.clear();
         new_walk_epoch();
         const unsigned n = c == kNone ? 2 : 3;
         const VertIdx corners[3] = {a, b, c};
@@ -459,13 +500,11 @@ class RestrictedDelaunay3 {
                 step(walks[w], w);
             }
         }
-        std::vector<TetIdx> out;
         for (const TetIdx t : walks[finished].met) {
             if (m_.slot_of(t, a) < 4 && m_.slot_of(t, b) < 4 &&
                 (c == kNone || m_.slot_of(t, c) < 4))
                 out.push_back(t);
         }
-        return out;
     }
 
     // --- cavities --------------------------------------------------------------------------
@@ -473,16 +512,25 @@ class RestrictedDelaunay3 {
     struct Split {
         std::vector<Key3> faces;                   ///< subfaces the point splits (crossed, dropped)
         std::uint64_t edge = ~0ull;                ///< the subsegment it splits, if any
-        std::unordered_set<std::uint64_t> exempt;  ///< edges inside the facet cavities: may go
+        /// Edges inside the facet cavities (they may go), once per cavity subface holding one:
+        /// a list, as `faces` (a node-based set here made most of facet_cavity's allocations).
+        std::vector<std::uint64_t> exempt;
         /// `faces` as a set when there are many (a needle's facet cavity holds the whole facet:
         /// a scan per cavity face made first_violation quadratic); empty otherwise.
         std::unordered_set<Key3, Key3Hash> face_set;
+        std::unordered_set<std::uint64_t> exempt_set;  ///< `exempt` as a set, likewise
     };
     static constexpr std::size_t kScannedFaces = 32;
 
     bool is_split_face(const Split& split, const Key3& key) const {
         if (!split.face_set.empty()) return split.face_set.count(key) != 0;
-        return std::find(split.faces.begin(), split.faces.end(), key) != split.faces.end();
+        return std::any_of(split.faces.begin(), split.faces.end(),
+                           [&](const Key3& face) { return same_key(face, key); });
+    }
+
+    bool is_exempt(const Split& split, std::uint64_t key) const {
+        if (!split.exempt_set.empty()) return split.exempt_set.count(key) != 0;
+        return std::find(split.exempt.begin(), split.exempt.end(), key) != split.exempt.end();
     }
 
     /// Bowyer-Watson cavity of p from `seeds` that never crosses a subface outside `split`,
@@ -491,14 +539,35 @@ class RestrictedDelaunay3 {
     /// (shrinking only removes tetrahedra, so it could not come back).
     bool build_cavity(const double* p, const std::vector<TetIdx>& seeds, const Split& split,
                       TetIdx required = kNone) {
-        if (excluded_.size() < m_.tet_slots()) excluded_.resize(m_.tet_slots(), 0);
+        seed_list_.assign(seeds.begin(), seeds.end());
+        return grow_cavity(p, split, required);
+    }
+
+    /// build_cavity from one seed (no vector made per call).
+    bool build_cavity(const double* p, TetIdx seed, const Split& split, TetIdx required = kNone) {
+        seed_list_.assign(1, seed);
+        return grow_cavity(p, split, required);
+    }
+
+    /// A Split of nothing: a point inside the domain.
+    static const Split& no_split() {
+        static const Split none;
+        return none;
+    }
+
+    std::vector<TetIdx> seed_list_;  ///< build_cavity's seeds (scratch, kept for its capacity)
+
+    /// build_cavity from the seeds in seed_list_ (which it may extend).
+    bool grow_cavity(const double* p, const Split& split, TetIdx required) {
+        // The mesh does not change while a cavity is built: the marks cover every slot now.
+        if (marks_.size() < m_.tet_slots()) marks_.resize(m_.tet_slots());
         ++cavity_stamp_;
-        std::vector<TetIdx> seed_list = seeds;
+        std::vector<TetIdx>& seed_list = seed_list_;
         std::size_t forced = 0;  // seeds added for other seeds' faces that p does not see
         bool shrunk = false;
         while (true) {
-            // Grow from the seeds (marks of this attempt in attempt_stamp_; the tetrahedra shrunk
-            // away stay excluded_ under this insertion's stamp).
+            // Grow from the seeds (marks of this attempt in CavityMarks::attempt; the tetrahedra
+            // shrunk away stay excluded under this insertion's stamp).
             cavity_.clear();
             const std::uint32_t mark = cavity_stamp_;
             ++attempt_;
@@ -513,12 +582,16 @@ class RestrictedDelaunay3 {
                     const FaceIdx g = m_.adj[4 * t + k];
                     if (g == kNone) continue;
                     const TetIdx u = triangulation::tet_of(g);
-                    if (attempt_mark_(u) || excluded_[u] == mark) continue;
+                    if (attempt_mark_(u) || marks_[u].excluded == mark) continue;
                     // The sphere first: asked once per tetrahedron and call, while the
                     // subface lookup (a hash of the face) came once per face and round.
                     if (!inside_sphere(u, p, mark)) continue;
-                    const Key3 key = face_key(t, k);
-                    if (is_subface_key(key) && !is_split_face(split, key)) continue;
+                    const unsigned* lf = kFaceVertex[k];
+                    if (on_boundary(m_.vertex(t, lf[0])) && on_boundary(m_.vertex(t, lf[1])) &&
+                        on_boundary(m_.vertex(t, lf[2]))) {
+                        const Key3 key = face_key(t, k);
+                        if (subfaces_.count(key) != 0 && !is_split_face(split, key)) continue;
+                    }
                     set_attempt_(u);
                     cavity_.push_back(u);
                 }
@@ -543,13 +616,13 @@ class RestrictedDelaunay3 {
                 if (std::find(seed_list.begin(), seed_list.end(), u) != seed_list.end())
                     return false;
                 seed_list.push_back(u);
-                excluded_[u] = 0;
+                marks_[u].excluded = 0;
                 ++forced;
                 ++counters_.forced_cavity_tets;
                 continue;
             }
-            excluded_[bad] = mark;
-            for (const TetIdx u : violations_) excluded_[u] = mark;
+            marks_[bad].excluded = mark;
+            for (const TetIdx u : violations_) marks_[u].excluded = mark;
             if (violations_.size() > 1) counters_.batched_removals += violations_.size() - 1;
             shrunk = true;
         }
@@ -559,32 +632,21 @@ class RestrictedDelaunay3 {
     /// the shrinking loop regrows the cavity several times and a tetrahedron beside it is met
     /// from each of its faces on the cavity, and cospherical ties cost an exact evaluation.
     bool inside_sphere(TetIdx u, const double* p, std::uint32_t mark) {
-        if (sphere_stamp_.size() < m_.tet_slots()) {
-            sphere_stamp_.resize(m_.tet_slots(), 0);
-            sphere_inside_.resize(m_.tet_slots(), 0);
+        CavityMarks& marks = marks_[u];
+        if (marks.sphere != mark) {
+            marks.sphere = mark;
+            marks.inside = predicates::insphere(point(m_.vertex(u, 0)), point(m_.vertex(u, 1)),
+                                                point(m_.vertex(u, 2)), point(m_.vertex(u, 3)),
+                                                p) == Sign::Positive;
         }
-        if (sphere_stamp_[u] != mark) {
-            sphere_stamp_[u] = mark;
-            sphere_inside_[u] = predicates::insphere(point(m_.vertex(u, 0)), point(m_.vertex(u, 1)),
-                                                     point(m_.vertex(u, 2)), point(m_.vertex(u, 3)),
-                                                     p) == Sign::Positive;
-        }
-        return sphere_inside_[u] != 0;
+        return marks.inside != 0;
     }
-    std::vector<std::uint32_t> sphere_stamp_;
-    std::vector<std::uint8_t> sphere_inside_;
 
-    // Per-attempt marks (a second stamp array).
-    std::vector<std::uint32_t> attempt_stamp_;
+    // Per-attempt marks (CavityMarks::attempt; build_cavity sized marks_).
     std::uint32_t attempt_ = 0;
-    bool attempt_mark_(TetIdx t) {
-        if (attempt_stamp_.size() < m_.tet_slots()) attempt_stamp_.resize(m_.tet_slots(), 0);
-        return attempt_stamp_[t] == attempt_;
-    }
-    void set_attempt_(TetIdx t) { attempt_stamp_[t] = attempt_; }
-    bool in_attempt(TetIdx t) const {
-        return t < attempt_stamp_.size() && attempt_stamp_[t] == attempt_;
-    }
+    bool attempt_mark_(TetIdx t) const { return marks_[t].attempt == attempt_; }
+    void set_attempt_(TetIdx t) { marks_[t].attempt = attempt_; }
+    bool in_attempt(TetIdx t) const { return t < marks_.size() && marks_[t].attempt == attempt_; }
 
     /// kNone when the cavity is valid; else a non-seed cavity tetrahedron to remove, or
     /// kNone - 1 when only a seed could be removed. violations_ then holds every tetrahedron
@@ -660,7 +722,7 @@ class RestrictedDelaunay3 {
                 const VertIdx a = m_.vertex(t, e[0]), b = m_.vertex(t, e[1]);
                 if (!on_boundary(a) || !on_boundary(b)) continue;  // no kept edge
                 const std::uint64_t key = edge_key(a, b);
-                if (key == split.edge || split.exempt.count(key) != 0) continue;
+                if (key == split.edge || is_exempt(split, key)) continue;
                 const bool kept_edge =
                     subsegments_.count(key) != 0 || edge_subfaces_.contains(key);
                 if (kept_edge && !boundary_edges.contains(key)) return removable(t);
@@ -725,7 +787,7 @@ class RestrictedDelaunay3 {
             }
         }
         for (const TetIdx t : cavity_) {
-            attempt_stamp_[t] = 0;
+            marks_[t].attempt = 0;
             m_.kill_tet(t);
         }
         FlatKeyMap64<FaceIdx>& open = open_edges_;
@@ -830,11 +892,17 @@ class RestrictedDelaunay3 {
             on_created(t);
             return;
         }
+        const unsigned mask = boundary_corners(t);
+        if (corner_count(mask) < 2) {  // no face or edge with all its corners on the surface
+            on_created(t);
+            return;
+        }
         const std::array<VertIdx, 4> c{m_.vertex(t, 0), m_.vertex(t, 1), m_.vertex(t, 2),
                                        m_.vertex(t, 3)};
         for (unsigned k = 0; k < 4; ++k) {
+            if (!boundary_face(mask, k)) continue;
             const Key3 key = face_key(t, k);
-            if (!is_subface_key(key)) continue;
+            if (subfaces_.count(key) == 0) continue;
             if (!sharp_.empty() && sharp_.shields_subface(out_, c[k], subfaces_.at(key).facet))
                 continue;
             if (predicates::in_equatorial_sphere_3d(point(c[k]), point(key[0]), point(key[1]),
@@ -844,8 +912,9 @@ class RestrictedDelaunay3 {
             }
         }
         for (const auto& e : kEdges) {
-            if (!is_subsegment(c[e[0]], c[e[1]])) continue;
+            if (!boundary_edge(mask, e)) continue;
             const std::uint64_t key = edge_key(c[e[0]], c[e[1]]);
+            if (subsegments_.count(key) == 0) continue;
             for (unsigned k = 0; k < 4; ++k) {
                 if (k == e[0] || k == e[1]) continue;
                 if (!sharp_.empty() && sharp_.shields_segment(out_, c[k], subsegments_.at(key)))
@@ -885,10 +954,11 @@ class RestrictedDelaunay3 {
             return false;
         }
         Split split;
-        split.edge = key;
         const VertIdx v = m_.vertex_count();
         std::vector<Subface> pieces;
-        std::vector<TetIdx> seeds = tets_with(a, b);
+        const std::vector<TetIdx> around = tets_with(a, b);
+        const std::vector<Key3> on_edge = subfaces_on_edge(a, b);
+        std::vector<TetIdx> seeds;
         // The facet cavities first; then, when they or the tetrahedra around them fail, only
         // the subfaces on the subsegment.
         bool valid = false;
@@ -896,8 +966,8 @@ class RestrictedDelaunay3 {
             split = Split{};
             split.edge = key;
             pieces.clear();
-            seeds = tets_with(a, b);
-            if (facet_cavity(p.data(), subfaces_on_edge(a, b), v, split, pieces, seeds, grow) &&
+            seeds = around;
+            if (facet_cavity(p.data(), on_edge, v, split, pieces, seeds, grow) &&
                 build_cavity(p.data(), seeds, split)) {
                 valid = true;
                 break;
@@ -937,7 +1007,8 @@ class RestrictedDelaunay3 {
         std::size_t synced = 0;
         const auto in_set = [&](const Key3& k) {
             if (faces.size() <= kScannedFaces)
-                return std::find(faces.begin(), faces.end(), k) != faces.end();
+                return std::any_of(faces.begin(), faces.end(),
+                                   [&](const Key3& face) { return same_key(face, k); });
             for (; synced < faces.size(); ++synced) indexed.insert(faces[synced]);
             return indexed.count(k) != 0;
         };
@@ -947,12 +1018,13 @@ class RestrictedDelaunay3 {
                 const VertIdx x = f.oriented[e], y = f.oriented[(e + 1) % 3];
                 const std::uint64_t key = edge_key(x, y);
                 if (key == split.edge || subsegments_.count(key) != 0) continue;
-                for (const Key3& k : subfaces_on_edge(x, y)) {
-                    if (in_set(k)) continue;
+                edge_subfaces_.for_each(key, [&](VertIdx third) {
+                    const Key3 k = sorted3(x, y, third);
+                    if (in_set(k)) return;
                     const Subface& g = subfaces_.at(k);
-                    if (g.facet != f.facet || !in_circumcircle(g, p)) continue;
+                    if (g.facet != f.facet || !in_circumcircle(g, p)) return;
                     faces.push_back(k);
-                }
+                });
             }
         }
         // The segment p splits, if it does: a subsegment of it on a cavity's boundary would make
@@ -973,11 +1045,12 @@ class RestrictedDelaunay3 {
                     const std::uint64_t key = edge_key(x, y);
                     if (key == split.edge) continue;
                     bool inner = false;
-                    for (const Key3& other : subfaces_on_edge(x, y)) {
-                        if (other != faces[i] && in_set(other) &&
+                    edge_subfaces_.for_each(key, [&](VertIdx third) {
+                        const Key3 other = sorted3(x, y, third);
+                        if (!same_key(other, faces[i]) && in_set(other) &&
                             subfaces_.at(other).facet == f.facet)
                             inner = true;
-                    }
+                    });
                     // A subsegment of the segment p splits cannot bound a piece: p on that
                     // segment's line is exactly inside no circumcircle through the two ends of
                     // another of its pieces (the line meets the circle there only), so a subface
@@ -987,7 +1060,7 @@ class RestrictedDelaunay3 {
                     const std::uint32_t* on_segment =
                         split_segment == nullptr ? nullptr : subsegments_.find(key);
                     if (inner) {
-                        split.exempt.insert(key);
+                        split.exempt.push_back(key);
                     } else if ((on_segment != nullptr && *on_segment == *split_segment) ||
                                triangulation::projected_orient(point(x), point(y), p, drop) !=
                                    orientation) {
@@ -1007,7 +1080,10 @@ class RestrictedDelaunay3 {
             faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(bad));
         }
         // Each vertex starts and ends at most one boundary edge of its facet's cavity.
-        std::vector<std::uint64_t> starts, ends;
+        std::vector<std::uint64_t>& starts = piece_starts_;
+        std::vector<std::uint64_t>& ends = piece_ends_;
+        starts.clear();
+        ends.clear();
         for (const Subface& piece : pieces) {
             const std::uint64_t facet = std::uint64_t{piece.facet} << 32;
             starts.push_back(facet | piece.oriented[0]);
@@ -1017,15 +1093,22 @@ class RestrictedDelaunay3 {
             std::sort(keys->begin(), keys->end());
             if (std::adjacent_find(keys->begin(), keys->end()) != keys->end()) return false;
         }
+        std::vector<TetIdx>& around = facet_cavity_tets_;
         for (const Key3& k : faces) {
-            for (const TetIdx t : tets_with(k[0], k[1], k[2]))
+            tets_with(around, k[0], k[1], k[2]);
+            for (const TetIdx t : around)
                 if (std::find(seeds.begin(), seeds.end(), t) == seeds.end()) seeds.push_back(t);
         }
         split.faces = std::move(faces);
         if (split.faces.size() > kScannedFaces)
             split.face_set.insert(split.faces.begin(), split.faces.end());
+        if (split.exempt.size() > 2 * kScannedFaces)
+            split.exempt_set.insert(split.exempt.begin(), split.exempt.end());
         return true;
     }
+
+    mutable std::vector<TetIdx> facet_cavity_tets_;  ///< facet_cavity's scratch (tets_with)
+    mutable std::vector<std::uint64_t> piece_starts_, piece_ends_;  ///< facet_cavity's scratch
 
     /// Whether p (a point of f's facet, up to rounding) lies strictly inside the circumcircle of
     /// subface f: inside its equatorial sphere, whose trace on the facet's plane is that circle
@@ -1210,10 +1293,13 @@ class RestrictedDelaunay3 {
     bool queue_encroached_segments(const double* p, std::uint32_t facet = kNone) {
         bool any = false;
         for (const TetIdx t : cavity_) {
+            const unsigned mask = boundary_corners(t);
+            if (corner_count(mask) < 2) continue;
             for (const auto& e : kEdges) {
+                if (!boundary_edge(mask, e)) continue;
                 const VertIdx a = m_.vertex(t, e[0]), b = m_.vertex(t, e[1]);
-                if (!is_subsegment(a, b)) continue;
                 const std::uint64_t key = edge_key(a, b);
+                if (subsegments_.count(key) == 0) continue;
                 if (facet != kNone && sharp_.shields_segment(subsegments_.at(key), facet)) continue;
                 if (predicates::dot_sign_3d(p, point(a), point(b)) == Sign::Negative) {
                     segment_queue_.push_front(key);
@@ -1230,9 +1316,12 @@ class RestrictedDelaunay3 {
     bool queue_encroached_subfaces(const double* p) {
         bool any = false;
         for (const TetIdx u : cavity_) {
+            const unsigned mask = boundary_corners(u);
+            if (corner_count(mask) < 3) continue;
             for (unsigned k = 0; k < 4; ++k) {
+                if (!boundary_face(mask, k)) continue;
                 const Key3 key = face_key(u, k);
-                if (!is_subface_key(key)) continue;
+                if (subfaces_.count(key) == 0) continue;
                 if (predicates::in_equatorial_sphere_3d(p, point(key[0]), point(key[1]),
                                                         point(key[2])) == Sign::Positive) {
                     subface_queue_.push_front(key);

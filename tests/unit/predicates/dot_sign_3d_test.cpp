@@ -265,7 +265,8 @@ TEST(Predicates_TriangleCircumcenterOnPlane3d, CircumcentreOnThePlaneAndCorrectl
             const double* in[6] = {a, b, c, p, q, r};
             for (int j = 0; j < 6; ++j)
                 for (int k = 0; k < 3; ++k) s[j][k] = std::ldexp(in[j][k], e);
-            const auto scaled = triangle_circumcenter_on_plane_3d(s[0], s[1], s[2], s[3], s[4], s[5]);
+            const auto scaled =
+                triangle_circumcenter_on_plane_3d(s[0], s[1], s[2], s[3], s[4], s[5]);
             for (unsigned k = 0; k < 3; ++k) EXPECT_EQ(scaled[k], std::ldexp(moved[k], e)) << i;
         }
     }
@@ -302,6 +303,56 @@ TEST(Predicates_PointOnSegment3d, CorrectlyRoundedAndScaleInvariant) {
         const auto s = point_on_segment_3d(ps, qs, t);
         for (unsigned k = 0; k < 3; ++k) EXPECT_EQ(s[k], std::ldexp(r[k], e));
     }
+}
+
+/// Split points certified exact by error-free transformations (an axis-parallel coordinate,
+/// dyadic ends and parameters) and ones that need the rational path, near the fast path's range
+/// guards (2^-450, 2^500) too: each coordinate the correct rounding of p + t (q - p), 0 as +0.
+TEST(Predicates_PointOnSegment3d, ExactShortcutAgreesWithRationalRounding) {
+    std::mt19937_64 random(15);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> pick(0, 5);
+    const auto check = [](const double* p, const double* q, double t) {
+        const auto r = point_on_segment_3d(p, q, t);
+        for (unsigned k = 0; k < 3; ++k) {
+            const mpq_class exact = mpq_class(p[k]) + mpq_class(t) * (mpq_class(q[k]) - p[k]);
+            const mpq_class error = abs(mpq_class(r[k]) - exact);
+            EXPECT_LE(error, abs(mpq_class(std::nextafter(r[k], -INFINITY)) - exact));
+            EXPECT_LE(error, abs(mpq_class(std::nextafter(r[k], INFINITY)) - exact));
+            if (r[k] == 0) {
+                EXPECT_FALSE(std::signbit(r[k]));
+            }
+        }
+    };
+    for (int i = 0; i < 20000; ++i) {
+        double p[3], q[3];
+        const int scale = std::array<int, 6>{0, -449, -451, 499, 501, -40}[pick(random) % 6];
+        for (int k = 0; k < 3; ++k) {
+            p[k] = std::ldexp(unit(random), scale);
+            switch (pick(random)) {
+                case 0:
+                    q[k] = p[k];
+                    break;  // parallel
+                case 1:
+                    q[k] = std::ldexp(std::round(unit(random) * 64), scale - 6);
+                    break;
+                case 2:
+                    q[k] = -p[k];
+                    break;  // through 0
+                default:
+                    q[k] = std::ldexp(unit(random), scale);
+                    break;
+            }
+            if (pick(random) == 0) p[k] = std::ldexp(std::round(unit(random) * 64), scale - 6);
+        }
+        const double t =
+            std::array<double, 6>{0.5, 0.25, 0.75, 1.0 / 3.0, 0.0, unit(random)}[pick(random) % 6];
+        check(p, q, std::fabs(t));
+    }
+    const double zero[3] = {-0.0, 0.0, -0.0}, minus[3] = {-1.0, -0.0, 0x1p-1074};
+    check(zero, zero, 0.5);
+    check(minus, zero, 1.0);
+    check(zero, minus, 0.5);
 }
 
 }  // namespace

@@ -685,3 +685,36 @@ TEST(Predicates_AdaptiveStages, TinyPermanentsInsideTheSafeRangeAgreeWithGmp) {
     }
     EXPECT_GT(zeros, 0);
 }
+
+// insphere's exact stages on cospherical sets whose differences do not round exactly: an
+// extruded strip's six corners (three points of a circle in xy, arbitrary doubles, at two
+// heights) lie on one sphere, as on the sample wing; each fifth point also moved by an ulp
+// either way, and the set shifted so that coordinates span 0 to 2^-300 (past the integer
+// stage's 192-bit span: the raw expansion decides those), every answer against GMP.
+TEST(Predicates_Insphere, CosphericalStripCornersAgreeWithRationals) {
+    std::mt19937_64 rng(1515);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    int zeros = 0;
+    for (int n = 0; n < 4000; ++n) {
+        const double z[2] = {std::ldexp(unit(rng), -3), 0.75 + 0.125 * unit(rng)};
+        double xy[3][2];
+        for (auto& p : xy)
+            for (double& x : p) x = unit(rng);
+        double p[6][3];
+        for (int i = 0; i < 6; ++i) {
+            p[i][0] = xy[i % 3][0];
+            p[i][1] = xy[i % 3][1];
+            p[i][2] = z[i / 3];
+        }
+        if (n % 4 == 1) p[5][n % 3] = std::nextafter(p[5][n % 3], n % 2 == 0 ? 2.0 : -2.0);
+        if (n % 4 == 3) {
+            for (auto& q : p) q[0] = std::ldexp(q[0], -300);
+        }
+        const double *a = p[n % 6], *b = p[(n + 1) % 6], *c = p[(n + 2) % 6];
+        const double *d = p[(n + 3) % 6], *e = p[(n + 5) % 6];
+        const Sign s = pr::insphere(a, b, c, d, e);
+        ASSERT_EQ(s, pr::reference::insphere(a, b, c, d, e)) << n;
+        zeros += s == Sign::Zero;
+    }
+    EXPECT_GT(zeros, 0);
+}
