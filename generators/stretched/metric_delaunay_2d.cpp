@@ -903,9 +903,16 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
         for (tri::VertIdx v = 0; v < mesh.vertex_count(); ++v)
             at.push_back(options_.metric(mesh.point(v)[0], mesh.point(v)[1]));
         SwapMemory memory;
-        tri::EdgeSwapCounters swapped = quad_swaps(mesh, at, memory);
-        result.counters.swaps = swapped.swaps;
-        result.counters.swap_budget_hits = swapped.budget_stops;
+        // The quadrilateral swaps in the metric, counted (after every pass that moves or adds
+        // points).
+        const auto swap_counted = [&] {
+            const tri::EdgeSwapCounters swapped = quad_swaps(mesh, at, memory);
+            result.counters.swaps += swapped.swaps;
+            result.counters.swap_budget_hits += swapped.budget_stops;
+        };
+        result.counters.swaps = 0;
+        result.counters.swap_budget_hits = 0;
+        swap_counted();
         // Rounds of splits of the edges still long and removals at the edges too short, each
         // followed by swaps. After the insertion passes in a metric that varies (and rotates),
         // vertices lie near the middle of long edges, where the spacing test keeps the edge from
@@ -920,18 +927,14 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
                                  options_.min_spacing, options_.turning_columns, memory);
             result.counters.late_splits += split;
             if (split > 0) {
-                swapped = quad_swaps(mesh, at, memory);
-                result.counters.swaps += swapped.swaps;
-                result.counters.swap_budget_hits += swapped.budget_stops;
+                swap_counted();
             }
             std::uint64_t removed = 0;
             if (out.triangle_attributes.empty()) {
                 removed = remove_short_edges(mesh, at, first_inserted, memory);
                 result.counters.late_removals += removed;
                 if (removed > 0) {
-                    swapped = quad_swaps(mesh, at, memory);
-                    result.counters.swaps += swapped.swaps;
-                    result.counters.swap_budget_hits += swapped.budget_stops;
+                    swap_counted();
                 }
             }
             // Each round changes fewer vertices; 0.5% of them is not worth another (on a
@@ -963,9 +966,7 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
                     }
                 }
             }
-            swapped = quad_swaps(mesh, at, memory);
-            result.counters.swaps += swapped.swaps;
-            result.counters.swap_budget_hits += swapped.budget_stops;
+            swap_counted();
         }
         // The final optimization: rounds of vertex relocation towards unit edges, swaps and
         // splits of the edges still long, until a round changes under 0.1% of the vertices.
@@ -975,18 +976,14 @@ MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
             const std::uint64_t moved =
                 relocate_vertices(mesh, at, options_.metric, first_inserted, memory, settled);
             result.counters.relocations += moved;
-            swapped = quad_swaps(mesh, at, memory);
-            result.counters.swaps += swapped.swaps;
-            result.counters.swap_budget_hits += swapped.budget_stops;
+            swap_counted();
             std::uint64_t split = 0;
             if (result.counters.inserted + result.counters.late_splits < budget) {
                 split = split_long_edges(mesh, at, out.triangle_attributes, options_.metric,
                                          options_.min_spacing, options_.turning_columns, memory);
                 result.counters.late_splits += split;
                 if (split > 0) {
-                    swapped = quad_swaps(mesh, at, memory);
-                    result.counters.swaps += swapped.swaps;
-                    result.counters.swap_budget_hits += swapped.budget_stops;
+                    swap_counted();
                 }
             }
             if (1000 * (moved + split) <= mesh.vertex_count()) break;
