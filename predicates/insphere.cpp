@@ -20,6 +20,7 @@
 #include "predicates/exact_range.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/gmp_fallback.hpp"
+#include "predicates/scaled_integers.hpp"
 #include "predicates/two_term.hpp"
 
 namespace exactmesh::predicates {
@@ -175,26 +176,15 @@ constexpr int kIntegerStageBits = 192;
     for (const double* p : points) {
         for (int k = 0; k < 3; ++k) {
             if (p[k] == 0) continue;
-            const int top = std::ilogb(p[k]);
-            low = std::min(low, top - 52);
-            high = std::max(high, top);
+            low = std::min(low, detail::least_set_bit_exponent(p[k]));
+            high = std::max(high, std::ilogb(p[k]));
         }
     }
     if (low == INT_MAX) return Sign::Zero;  // five times the origin
     if (high - low > kIntegerStageBits) return std::nullopt;
     thread_local InsphereIntegers z;
-    for (int j = 0; j < 5; ++j) {
-        for (int k = 0; k < 3; ++k) {
-            const double w = points[j][k];
-            if (w == 0) {
-                mpz_set_ui(z.x[j][k], 0);
-                continue;
-            }
-            const int e_w = std::ilogb(w) - 52;
-            mpz_set_d(z.x[j][k], std::ldexp(w, -e_w));  // |w 2^-e_w| < 2^53: exact
-            mpz_mul_2exp(z.x[j][k], z.x[j][k], static_cast<mp_bitcnt_t>(e_w - low));
-        }
-    }
+    for (int j = 0; j < 5; ++j)
+        for (int k = 0; k < 3; ++k) detail::set_scaled_integer(z.x[j][k], points[j][k], low);
     for (int r = 0; r < 4; ++r) {
         for (int k = 0; k < 3; ++k) mpz_sub(z.m[r][k], z.x[r][k], z.x[4][k]);
         mpz_mul(z.lift[r], z.m[r][0], z.m[r][0]);

@@ -44,4 +44,22 @@ inline std::array<mpz_class, N> scaled_integers(const std::array<double, N>& x,
     return out;
 }
 
+/// The least exponent k with x an integer multiple of 2^k (x finite, non-zero).
+inline int least_set_bit_exponent(double x) {
+    return std::ilogb(x) - 52;
+}
+
+/// z = w / 2^k exactly, in place (no allocation once z has room): w finite and an integer
+/// multiple of 2^k (k at most least_set_bit_exponent(w)), or 0. For exact stages that keep
+/// their integers between calls (thread-local mpz_t), where scaled_integers would allocate.
+inline void set_scaled_integer(mpz_ptr z, double w, int k) {
+    if (w == 0) {
+        mpz_set_ui(z, 0);
+        return;
+    }
+    const int e = least_set_bit_exponent(w);
+    mpz_set_d(z, std::ldexp(w, -e));  // |w 2^-e| < 2^53: exact
+    mpz_mul_2exp(z, z, static_cast<mp_bitcnt_t>(e - k));
+}
+
 }  // namespace exactmesh::predicates::detail

@@ -18,6 +18,7 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/power_of_two.hpp"
 #include "predicates/relative_filter.hpp"
+#include "predicates/scaled_integers.hpp"
 #include "predicates/stats.hpp"
 
 namespace exactmesh::predicates {
@@ -26,17 +27,12 @@ namespace {
 
 using Vec = std::array<mpz_class, 3>;
 
-/// The lowest exponent k with x an integer multiple of 2^k (x finite, non-zero).
-int low_exponent(double x) {
-    return std::ilogb(x) - 52;
-}
+using detail::least_set_bit_exponent;
 
 /// x / 2^k as an exact integer (x an integer multiple of 2^k).
 mpz_class scaled_integer(double x, int k) {
-    if (x == 0) return 0;
-    const int e = low_exponent(x);
-    mpz_class z(std::ldexp(x, -e));  // |z| < 2^53: exact
-    mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), static_cast<unsigned long>(e - k));
+    mpz_class z;
+    detail::set_scaled_integer(z.get_mpz_t(), x, k);
     return z;
 }
 
@@ -46,7 +42,7 @@ std::array<Vec, N> to_integers(const std::array<const double*, N>& points, int& 
     k = INT_MAX;
     for (const double* p : points)
         for (int i = 0; i < 3; ++i)
-            if (p[i] != 0) k = std::min(k, low_exponent(p[i]));
+            if (p[i] != 0) k = std::min(k, least_set_bit_exponent(p[i]));
     if (k == INT_MAX) k = 0;
     std::array<Vec, N> out;
     for (std::size_t j = 0; j < N; ++j)
@@ -77,7 +73,7 @@ Sign sign_of(const mpz_class& x) {
 
 /// x = m 2^e with m an integer (|m| < 2^53): splits a non-zero finite double.
 void split_double(double x, mpz_class& m, int& e) {
-    e = low_exponent(x);
+    e = least_set_bit_exponent(x);
     m = mpz_class(std::ldexp(x, -e));
 }
 
@@ -179,19 +175,9 @@ Sign in_equatorial_sphere_3d_exact(const double* p, const double* a, const doubl
     int k = INT_MAX;
     for (const double* point : points)
         for (int i = 0; i < 3; ++i)
-            if (point[i] != 0) k = std::min(k, low_exponent(point[i]));
-    for (int j = 0; j < 4; ++j) {
-        for (int i = 0; i < 3; ++i) {
-            const double w = points[j][i];
-            if (w == 0) {
-                mpz_set_ui(z.x[j][i], 0);
-                continue;
-            }
-            const int e = low_exponent(w);
-            mpz_set_d(z.x[j][i], std::ldexp(w, -e));  // |w 2^-e| < 2^53: exact
-            mpz_mul_2exp(z.x[j][i], z.x[j][i], static_cast<mp_bitcnt_t>(e - k));
-        }
-    }
+            if (point[i] != 0) k = std::min(k, least_set_bit_exponent(point[i]));
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 3; ++i) detail::set_scaled_integer(z.x[j][i], points[j][i], k);
     for (int i = 0; i < 3; ++i) {
         mpz_sub(z.u[i], z.x[2][i], z.x[1][i]);
         mpz_sub(z.v[i], z.x[3][i], z.x[1][i]);
