@@ -167,15 +167,15 @@ tri::Tetrahedralization3 refine(const tri::Plc3& plc, double max_volume, bool re
     gen::DelaunayRefinement3Options options;
     options.radius_edge_bound = 2.0;
     options.max_volume = max_volume;
-    auto refined =
-        gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options).mesh;
     if (remove_slivers) {
+        // As `exactmesh tetmesh` runs it: refinement hands its working mesh over.
         gen::SliverRemoval3Options sliver_options;
         sliver_options.radius_edge_bound = 2.0;
         sliver_options.max_volume = max_volume;
-        refined = gen::sliver_removal_3d(std::move(refined), sliver_options).mesh;
+        options.sliver_removal = sliver_options;
     }
-    return std::move(refined.mesh);
+    return std::move(
+        gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options).mesh.mesh);
 }
 
 /// exactmesh's count at (domain, V) without sliver removal: the target of size matching,

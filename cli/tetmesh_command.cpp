@@ -242,13 +242,20 @@ void run_tetmesh(const TetmeshArguments& arguments) {
                 meshed.frontal = meshed_octree.band_frontal;
                 meshed.size = meshed_octree.size;  // capped by the region volume bounds
             }
+            // Refinement hands its working mesh to sliver removal unless --quality wants the
+            // mesh in between.
+            const bool slivers_in_refinement = refine && remove_slivers && !arguments.quality;
             if (refine) {
+                gen::DelaunayRefinement3Options refine_options = refinement;
+                if (slivers_in_refinement) refine_options.sliver_removal = sliver_options;
                 gen::DelaunayRefinement3Result refined =
-                    gen::delaunay_refinement_3d(plc, std::move(meshed.recovery.mesh), refinement);
+                    gen::delaunay_refinement_3d(plc, std::move(meshed.recovery.mesh), refine_options);
                 meshed.recovery.mesh = std::move(refined.mesh);
                 meshed.refinement = refined.counters;
+                meshed.slivers = refined.slivers;
+                meshed.sliver_seconds = refined.sliver_seconds;
             }
-            if (remove_slivers) {
+            if (remove_slivers && !slivers_in_refinement) {
                 if (arguments.quality) meshed.before_sliver_removal = meshed.recovery.mesh.mesh;
                 const auto start = std::chrono::steady_clock::now();
                 gen::SliverRemoval3Result improved =

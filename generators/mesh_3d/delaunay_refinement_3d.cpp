@@ -3,6 +3,7 @@
 #include "generators/mesh_3d/delaunay_refinement_3d.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -191,8 +192,19 @@ DelaunayRefinement3Result Refinement::run() {
         }
     }
     DelaunayRefinement3Result result;
-    result.mesh = finish();
     result.counters = counters_;
+    if (!options_.sliver_removal) {
+        result.mesh = finish();
+        return result;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    auto [conforming, linked] = take_linked();
+    SliverRemoval3Result improved =
+        sliver_removal_3d(std::move(conforming), std::move(linked), *options_.sliver_removal);
+    result.sliver_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.mesh = std::move(improved.mesh);
+    result.slivers = improved.counters;
     return result;
 }
 

@@ -34,8 +34,10 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "base/counter_table.hpp"
+#include "generators/mesh_3d/sliver_removal_3d.hpp"
 #include "triangulation/mesh/conforming_mesh_3d.hpp"
 #include "triangulation/mesh/plc_3d.hpp"
 
@@ -51,6 +53,11 @@ struct DelaunayRefinement3Options {
     /// Most Steiner points added by refinement; 0 takes 1,000 per input vertex plus 10^6.
     /// Exceeding it raises InputError naming the budget.
     std::uint64_t max_steiner_points = 0;
+    /// When set, sliver_removal_3d with these options runs on the refined mesh before it is
+    /// returned, taking the working mesh over as it is (its linked entry): the same result as
+    /// calling it on the returned mesh (but for the numbering of the tetrahedra it makes),
+    /// without the Tetrahedralization3 in between and its linking.
+    std::optional<SliverRemoval3Options> sliver_removal;
 };
 
 struct DelaunayRefinement3Counters {
@@ -91,6 +98,9 @@ static_assert(counter_table_complete(kDelaunayRefinement3CounterNames));
 struct DelaunayRefinement3Result {
     triangulation::ConformingMesh3 mesh;
     DelaunayRefinement3Counters counters;
+    /// Sliver removal's counters and time (steady clock) when options.sliver_removal is set.
+    SliverRemoval3Counters slivers;
+    double sliver_seconds = 0;
 };
 
 /// Refinement cannot mend a tetrahedron whose shortest edge is finer than doubles resolve at

@@ -605,14 +605,37 @@ std::uint64_t smooth_pass(Work& work, const std::vector<tri::VertexFeature3>& fe
 /// where the two old ones agree strictly, that same strict orientation: then they tile the
 /// same quadrilateral of the facet's projection, which is what its exact check asks. The
 /// boundary moves by the tetrahedron's volume, within rounding of the facet (the facet is
-/// one only within rounding: any triangulation of its corners is as good). Returns the count.
-std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
-    auto& m = conforming.mesh;
-    const TetIdx count = m.tet_count();
+/// one only within rounding: any triangulation of its corners is as good). Works on the mesh
+/// in working form `m` (conforming's tetrahedra): a removed tetrahedron's slot dies and its
+/// neighbours' faces become boundary faces. Returns the count.
+std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming, TetMesh3& m) {
+    const TetIdx count = m.tet_slots();
+    const auto face_key = [&m](TetIdx t, unsigned k) {
+        const VertIdx* v = &m.tv[4 * std::size_t{t}];
+        return tri::sorted3(v[(k + 1) % 4], v[(k + 2) % 4], v[(k + 3) % 4]);
+    };
+    const auto neighbour = [&m](TetIdx t, unsigned k) {
+        const FaceIdx twin = m.adj[4 * std::size_t{t} + k];
+        return twin == kNone ? kNone : tri::tet_of(twin);
+    };
+    // Only a tetrahedron with two faces on the boundary can be a fold, and only their faces
+    // are looked up among the subfaces (a map of every subface was a twentieth of sliver
+    // removal's time on the wing, where no fold is found).
+    std::vector<TetIdx> two_boundary_faces;
     std::unordered_map<tri::Key3, std::size_t, tri::Key3Hash> subface_of;
+    for (TetIdx t = 0; t < count; ++t) {
+        if (m.is_dead(t)) continue;
+        const FaceIdx* u = &m.adj[4 * std::size_t{t}];
+        if ((u[0] == kNone) + (u[1] == kNone) + (u[2] == kNone) + (u[3] == kNone) < 2) continue;
+        two_boundary_faces.push_back(t);
+        for (unsigned k = 0; k < 4; ++k)
+            if (u[k] == kNone) subface_of.emplace(face_key(t, k), kNone);
+    }
+    if (two_boundary_faces.empty()) return 0;
     for (std::size_t i = 0; 3 * i + 2 < conforming.subfaces.size(); ++i) {
         const VertIdx* f = &conforming.subfaces[3 * i];
-        subface_of.emplace(tri::sorted3(f[0], f[1], f[2]), i);
+        const auto it = subface_of.find(tri::sorted3(f[0], f[1], f[2]));
+        if (it != subface_of.end() && it->second == kNone) it->second = i;
     }
     // The candidates: two boundary faces that are subfaces of one facet. They are rare, so the
     // edge counts below are taken for their edges alone (counting every edge of a 10^6
@@ -623,16 +646,15 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
         VertIdx a, b, c, d;  ///< the subfaces share a b; c and d are the corners opposite them
     };
     std::vector<Fold> folds;
-    for (TetIdx t = 0; t < count; ++t) {
-        const VertIdx* v = &m.tets[4 * std::size_t{t}];
+    for (const TetIdx t : two_boundary_faces) {
+        const VertIdx* v = &m.tv[4 * std::size_t{t}];
         Fold fold{t, {}, kNone, kNone, kNone, kNone};
         std::array<unsigned, 2> opposite{};
         unsigned found = 0;
         for (unsigned k = 0; k < 4 && found <= 2; ++k) {
-            if (m.neighbors[4 * std::size_t{t} + k] != kNone) continue;
-            const auto it =
-                subface_of.find(tri::sorted3(v[(k + 1) % 4], v[(k + 2) % 4], v[(k + 3) % 4]));
-            if (it == subface_of.end()) continue;
+            if (m.adj[4 * std::size_t{t} + k] != kNone) continue;
+            const auto it = subface_of.find(face_key(t, k));
+            if (it == subface_of.end() || it->second == kNone) continue;
             if (found < 2) {
                 fold.subs[found] = it->second;
                 opposite[found] = k;
@@ -660,7 +682,8 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
         if (it != counts.end()) ++it->second;
     };
     for (TetIdx t = 0; t < count; ++t) {
-        const VertIdx* v = &m.tets[4 * std::size_t{t}];
+        if (m.is_dead(t)) continue;
+        const VertIdx* v = &m.tv[4 * std::size_t{t}];
         for (unsigned i = 0; i < 4; ++i)
             for (unsigned j = i + 1; j < 4; ++j) count_in(ab_tets, tri::edge_key(v[i], v[j]));
     }
@@ -687,7 +710,7 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
         // Neighbours across the two new subfaces must stay: no two folds side by side.
         bool next_to_removed = false;
         for (unsigned k = 0; k < 4; ++k) {
-            const TetIdx u = m.neighbors[4 * std::size_t{t} + k];
+            const TetIdx u = neighbour(t, k);
             next_to_removed = next_to_removed || (u != kNone && removed[u]);
         }
         if (next_to_removed) continue;
@@ -755,68 +778,55 @@ std::uint64_t remove_boundary_folds(tri::ConformingMesh3& conforming) {
     facets.insert(facets.end(), added_facets.begin(), added_facets.end());
     conforming.subfaces = std::move(subfaces);
     conforming.subface_facet = std::move(facets);
-    // The tetrahedra: compacted, neighbours renumbered (kNone across a removed one).
-    std::vector<TetIdx> renumber(count, kNone);
-    TetIdx next = 0;
-    for (TetIdx t = 0; t < count; ++t)
-        if (!removed[t]) renumber[t] = next++;
-    std::vector<VertIdx> tets;
-    std::vector<TetIdx> neighbors;
-    tets.reserve(4 * std::size_t{next});
-    neighbors.reserve(4 * std::size_t{next});
-    const auto keep = [&](std::vector<double>& values) {
-        if (values.empty()) return;
-        std::vector<double> kept;
-        kept.reserve(next);
-        for (TetIdx t = 0; t < count; ++t)
-            if (!removed[t]) kept.push_back(values[t]);
-        values = std::move(kept);
-    };
+    // The tetrahedra: each removed one's slot dies, its neighbours' faces become boundary
+    // faces, and a corner whose tetrahedron it was takes a neighbour holding it (every corner
+    // is on a face with a neighbour: two of its faces are not on the boundary).
     for (TetIdx t = 0; t < count; ++t) {
-        if (removed[t]) continue;
+        if (!removed[t]) continue;
+        const Tet v = m.tet(t);
         for (unsigned k = 0; k < 4; ++k) {
-            tets.push_back(m.tets[4 * std::size_t{t} + k]);
-            const TetIdx u = m.neighbors[4 * std::size_t{t} + k];
-            neighbors.push_back(u == kNone ? kNone : renumber[u]);
+            const FaceIdx twin = m.adj[4 * std::size_t{t} + k];
+            if (twin == kNone) continue;
+            for (unsigned j = 0; j < 4; ++j)
+                if (j != k && m.vertex_tet[v[j]] == t) m.vertex_tet[v[j]] = tri::tet_of(twin);
         }
+        for (unsigned k = 0; k < 4; ++k) {
+            const FaceIdx twin = m.adj[4 * std::size_t{t} + k];
+            if (twin != kNone) m.adj[twin] = kNone;
+            m.adj[4 * std::size_t{t} + k] = kNone;
+        }
+        m.kill_tet(t);
     }
-    m.tets = std::move(tets);
-    m.neighbors = std::move(neighbors);
-    keep(conforming.tet_attributes);
-    keep(conforming.tet_max_volume);
     return removed_count;
 }
 
-}  // namespace
-
-SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
-                                       const SliverRemoval3Options& options) {
+void check_options(const SliverRemoval3Options& options) {
     if (!(options.threshold_degrees > 0 && options.threshold_degrees < 90))
         throw InputError("sliver removal: the threshold must be in (0, 90) degrees, not " +
                          std::to_string(options.threshold_degrees));
     if (!(options.radius_edge_bound > 0) || !std::isfinite(options.radius_edge_bound) ||
         !std::isfinite(options.max_volume))
         throw InputError("sliver removal: the bounds must be finite and B > 0");
-    if (conforming.vertex_feature.size() != conforming.mesh.vertex_count())
-        throw InputError("sliver removal: one vertex feature per vertex is needed");
-    if (!conforming.tet_max_volume.empty() &&
-        conforming.tet_max_volume.size() != conforming.mesh.tet_count())
-        throw InputError("sliver removal: one region volume bound per tetrahedron is needed");
+}
 
+/// Both entry points after their checks: `conforming` without its tetrahedra, `linked` holding
+/// them, the region attributes and volume bounds of conforming per slot of `linked`.
+SliverRemoval3Result remove_slivers(tri::ConformingMesh3 conforming, TetMesh3 linked,
+                                    const SliverRemoval3Options& options) {
     SliverRemoval3Result result;
     SliverRemoval3Counters& c = result.counters;
-    c.folds_removed = remove_boundary_folds(conforming);
+    c.folds_removed = remove_boundary_folds(conforming, linked);
 
     Work work;
     work.options = &options;
     const long double threshold_cos =
         std::cos(static_cast<long double>(options.threshold_degrees) * kPi / 180);
     work.threshold_cos_squared = threshold_cos * threshold_cos;
-    work.mesh = tri::make_tet_mesh_3d(conforming.mesh);
+    work.mesh = std::move(linked);
     const SmallInputAngleRule3 small_angles(conforming, work.mesh.xyz);
     work.small_angles = &small_angles;
-    work.slot_attributes = conforming.tet_attributes;
-    work.slot_max_volumes = conforming.tet_max_volume;
+    work.slot_attributes = std::move(conforming.tet_attributes);
+    work.slot_max_volumes = std::move(conforming.tet_max_volume);
     c.slivers_before = work.bad_tets().size();
     const tri::SwapLocks3 locks = conforming_locks(conforming);
     for (unsigned round = 0; round < options.rounds; ++round) {
@@ -839,11 +849,41 @@ SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
     };
     std::vector<double> attributes = live_values(work.slot_attributes);
     std::vector<double> max_volumes = live_values(work.slot_max_volumes);
-    conforming.mesh = tri::to_tetrahedralization_3d(work.mesh);
+    conforming.mesh = tri::to_tetrahedralization_3d(std::move(work.mesh));
     conforming.tet_attributes = std::move(attributes);
     conforming.tet_max_volume = std::move(max_volumes);
     result.mesh = std::move(conforming);
     return result;
+}
+
+}  // namespace
+
+SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming,
+                                       const SliverRemoval3Options& options) {
+    check_options(options);
+    if (conforming.vertex_feature.size() != conforming.mesh.vertex_count())
+        throw InputError("sliver removal: one vertex feature per vertex is needed");
+    if (!conforming.tet_max_volume.empty() &&
+        conforming.tet_max_volume.size() != conforming.mesh.tet_count())
+        throw InputError("sliver removal: one region volume bound per tetrahedron is needed");
+    TetMesh3 linked = tri::make_tet_mesh_3d(std::move(conforming.mesh));
+    conforming.mesh = {};
+    return remove_slivers(std::move(conforming), std::move(linked), options);
+}
+
+SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming, TetMesh3 linked,
+                                       const SliverRemoval3Options& options) {
+    check_options(options);
+    if (conforming.vertex_feature.size() != linked.vertex_count())
+        throw InputError("sliver removal: one vertex feature per vertex is needed");
+    if (linked.vertex_tet.size() != linked.vertex_count() ||
+        linked.adj.size() != linked.tv.size())
+        throw InputError("sliver removal: the linked mesh needs its links and vertex_tet");
+    for (const std::vector<double>* values : {&conforming.tet_attributes, &conforming.tet_max_volume})
+        if (!values->empty() && values->size() != linked.tet_slots())
+            throw InputError("sliver removal: one region value per tetrahedron slot is needed");
+    conforming.mesh = {};
+    return remove_slivers(std::move(conforming), std::move(linked), options);
 }
 
 }  // namespace exactmesh::generators

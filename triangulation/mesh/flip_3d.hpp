@@ -43,9 +43,13 @@ namespace exactmesh::triangulation {
 ///         vertex out of range or repeats one, a face is shared by more than two tetrahedra or
 ///         the given neighbors are inconsistent; messages number tetrahedra and vertices from 0.
 TetMesh3 make_tet_mesh_3d(const Tetrahedralization3& mesh);
+/// The same, taking over the coordinates and tetrahedra of `mesh`.
+TetMesh3 make_tet_mesh_3d(Tetrahedralization3&& mesh);
 
 /// The live tetrahedra, compacted in slot order, with their neighbors.
 Tetrahedralization3 to_tetrahedralization_3d(const TetMesh3& mesh);
+/// The same, compacting `mesh`'s own arrays in place (left empty).
+Tetrahedralization3 to_tetrahedralization_3d(TetMesh3&& mesh);
 
 /// Fills mesh.neighbors from mesh.tets (the face opposite vertex k of t is shared with at most
 /// one other tetrahedron). Checks as make_tet_mesh_3d; `numbering` gives the bases the
