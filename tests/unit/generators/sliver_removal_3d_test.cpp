@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "base/errors.hpp"
 #include "generators/boundary_3d/sample_domains_3d.hpp"
@@ -22,6 +23,7 @@
 #include "tests/support/plcs_3d.hpp"
 #include "tests/support/test_scale.hpp"
 #include "triangulation/checks/quality_3d.hpp"
+#include "triangulation/mesh/flip_3d.hpp"
 #include "triangulation/recovery_3d/boundary_recovery_3d.hpp"
 #include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
 
@@ -281,6 +283,69 @@ TEST(Generators_SliverRemoval3d, RegionVolumeBoundsAreKept) {
         static_cast<unsigned long long>(c.swaps_vetoed),
         static_cast<unsigned long long>(c.moves_accepted),
         static_cast<unsigned long long>(c.moves_vetoed));
+}
+
+TEST(Generators_SliverRemoval3d, InsideRefinementGivesTheSameMeshAsAfterIt) {
+    // DelaunayRefinement3Options::sliver_removal hands refinement's working mesh (dead slots,
+    // its own links) to sliver removal's linked entry; sliver_removal_3d on the returned mesh
+    // links it again from a Tetrahedralization3. The two must agree on every tetrahedron, every
+    // moved point, region values and counters: on the sample domains, and on two regions with
+    // their own volume bounds at a threshold that makes swaps and moves (and vetoes).
+    struct Case {
+        std::string name;
+        Plc3 plc;
+        double max_volume, threshold;
+    };
+    const std::vector<Case> cases{
+        {"box-with-hole", sample_domain_3d(SampleDomain3::BoxWithHole), 0.0025, 15},
+        {"ellipsoid", sample_domain_3d(SampleDomain3::Ellipsoid, 0.25), 0.004, 15},
+        {"wing", sample_domain_3d(SampleDomain3::Wing, 0.1), 0, 15},
+        {"two regions", triangulation::two_regions_box(0.001, 0.01), 0, 35}};
+    for (const Case& k : cases) {
+        DelaunayRefinement3Options refinement;
+        refinement.max_volume = k.max_volume;
+        SliverRemoval3Options options;
+        options.max_volume = k.max_volume;
+        options.threshold_degrees = k.threshold;
+        const ConformingMesh3 recovered = triangulation::boundary_recovery_3d(k.plc).mesh;
+        const SliverRemoval3Result after =
+            sliver_removal_3d(delaunay_refinement_3d(k.plc, recovered, refinement).mesh, options);
+        refinement.sliver_removal = options;
+        const DelaunayRefinement3Result inside =
+            delaunay_refinement_3d(k.plc, recovered, refinement);
+        EXPECT_EQ(inside.mesh.mesh.tets, after.mesh.mesh.tets) << k.name;
+        EXPECT_EQ(inside.mesh.mesh.neighbors, after.mesh.mesh.neighbors) << k.name;
+        EXPECT_EQ(inside.mesh.mesh.xyz, after.mesh.mesh.xyz) << k.name;
+        EXPECT_EQ(inside.mesh.subfaces, after.mesh.subfaces) << k.name;
+        EXPECT_EQ(inside.mesh.tet_attributes, after.mesh.tet_attributes) << k.name;
+        EXPECT_EQ(inside.mesh.tet_max_volume, after.mesh.tet_max_volume) << k.name;
+        const auto& a = inside.slivers;
+        const auto& b = after.counters;
+        EXPECT_EQ(a.flips_23 + a.flips_32 + a.flips_44, b.flips_23 + b.flips_32 + b.flips_44)
+            << k.name;
+        EXPECT_EQ(a.moves_accepted, b.moves_accepted) << k.name;
+        EXPECT_EQ(a.slivers_before, b.slivers_before) << k.name;
+        EXPECT_EQ(a.slivers_after, b.slivers_after) << k.name;
+        EXPECT_GT(a.flips_23 + a.flips_32 + a.flips_44 + a.moves_accepted, 0u) << k.name;
+        const auto report = triangulation::check_boundary_conformity_3d(k.plc, inside.mesh);
+        EXPECT_TRUE(report.ok) << k.name << ": " << report.problem;
+    }
+}
+
+TEST(Generators_SliverRemoval3d, TheLinkedEntryRefusesMismatchedArrays) {
+    const Plc3 plc = triangulation::box(1, 1, 1);
+    ConformingMesh3 mesh = triangulation::boundary_recovery_3d(plc).mesh;
+    const triangulation::TetMesh3 linked = triangulation::make_tet_mesh_3d(mesh.mesh);
+    ConformingMesh3 short_features = mesh;
+    short_features.vertex_feature.pop_back();
+    EXPECT_THROW(sliver_removal_3d(short_features, linked), InputError);
+    ConformingMesh3 short_attributes = mesh;
+    short_attributes.tet_attributes.assign(linked.tet_slots() + 1, 1.0);
+    EXPECT_THROW(sliver_removal_3d(short_attributes, linked), InputError);
+    triangulation::TetMesh3 unlinked = linked;
+    unlinked.vertex_tet.clear();
+    EXPECT_THROW(sliver_removal_3d(mesh, unlinked), InputError);
+    EXPECT_NO_THROW(sliver_removal_3d(mesh, linked));
 }
 
 }  // namespace
