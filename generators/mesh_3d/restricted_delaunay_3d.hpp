@@ -186,7 +186,13 @@ class RestrictedDelaunay3 {
     bool off_facet_plane(const double* p, std::uint32_t f) const {
         const auto& t = facet_triangle_[f];
         if (t[0] == kNone) return false;
-        return triangulation::beyond_rounding_of_plane(p, point(t[0]), point(t[1]), point(t[2]));
+        // 2^-46 of the coordinates, not the exact check's 2^-40: that check measures against
+        // the input triangle holding the point, whose corners may be smaller than the largest
+        // triangle's (a turned cube's face: a subface circumcentre 9.3e-13 off the plane passed
+        // here, 2^-40 of 1.31, and failed there, 2^-40 of 0.91: `tetmesh` stopped with an
+        // internal error). A rounded point of the plane is within 2^-52 of its coordinates.
+        return triangulation::beyond_rounding_of_plane(p, point(t[0]), point(t[1]), point(t[2]),
+                                                       46);
     }
 
     /// The point of facet f's plane (through its largest input triangle) equidistant from

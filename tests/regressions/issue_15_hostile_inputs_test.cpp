@@ -558,6 +558,29 @@ TEST(Issue15, issue_15_subface_circumcentres_stay_on_their_facet) {
     }
 }
 
+TEST(Issue15, issue_15_kept_circumcentres_pass_the_check_against_any_facet_triangle) {
+    // rotated_cube_free_vertices_boundary_folds.poly under --max-volume 0.0043956 (a campaign of
+    // 2026-12-06 comparing `tetmesh` with and without --quality): a subface circumcentre 9.3e-13
+    // off its facet's plane was kept, within 2^-40 of the coordinates of the facet's largest
+    // input triangle (corners up to 1.31), and failed the exact check against the input triangle
+    // holding it (corners up to 0.91): `tetmesh` stopped with an internal error. Refinement now
+    // moves a circumcentre onto the plane beyond 2^-46 of the coordinates.
+    for (const int exponent : {0, 300, -300}) {
+        std::vector<tri::VertIdx> attached;
+        const tri::Plc3 plc =
+            rotated_cube("rotated_cube_free_vertices_boundary_folds.poly", exponent, attached,
+                         "hostile_3d");
+        gen::DelaunayRefinement3Options options;
+        options.max_volume = std::ldexp(0.004395614284589138, 3 * exponent);
+        const gen::DelaunayRefinement3Result refined =
+            gen::delaunay_refinement_3d(plc, tri::boundary_recovery_3d(plc).mesh, options);
+        EXPECT_GT(refined.counters.projected_circumcentres, 0u) << exponent;
+        const tri::BoundaryConformityReport3 report =
+            tri::check_boundary_conformity_3d(plc, refined.mesh);
+        EXPECT_TRUE(report.ok) << exponent << " " << report.problem;
+    }
+}
+
 // `exactmesh check` read the refined meshes of a cube with free vertices 1e-14 from an edge as
 // not conforming ("subface ... is not oriented like facet 1"): its reading took a facet point
 // 1.03e-14 off the edge for a point of the edge (64 units in the last place were accepted) and

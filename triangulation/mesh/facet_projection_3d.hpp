@@ -89,9 +89,11 @@ inline int drop_axis(const double* a, const double* b, const double* c) {
 /// 2^-40 of the largest coordinate magnitude among the four (a facet's Steiner points are
 /// rounded once from points of its plane; attached free vertices lie within 2^-48 of their
 /// coordinates), plus the uncertainty of the plane's normal for a needle triangle. Doubles on differences scaled by one power of two (a classification, the same
-/// for the points scaled by 2^k); false when a, b and c are collinear in doubles.
+/// for the points scaled by 2^k); false when a, b and c are collinear in doubles. A generator
+/// checking its own constructions asks with a larger `bits` (a smaller allowance), so that what
+/// it keeps passes this test against any triangle of the facet (whose corners may be smaller).
 inline bool beyond_rounding_of_plane(const double* p, const double* a, const double* b,
-                                     const double* c) {
+                                     const double* c, int bits = 40) {
     double u[3], v[3], w[3];
     double largest = 0, magnitude = 0;
     for (int k = 0; k < 3; ++k) {
@@ -115,7 +117,7 @@ inline bool beyond_rounding_of_plane(const double* p, const double* a, const dou
     // which moves the distance by that times |w|: allowed too, with a margin.
     const auto norm = [](const double* x) { return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); };
     const double conditioning = norm(u) * norm(v) / length * norm(w);
-    return distance > std::ldexp(unit(magnitude), -40) + std::ldexp(conditioning, -44);
+    return distance > std::ldexp(unit(magnitude), -bits) + std::ldexp(conditioning, -44);
 }
 
 /// A facet's reference corners: the first three non-collinear ones in the order listed
