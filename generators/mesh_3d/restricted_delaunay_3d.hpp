@@ -1256,6 +1256,21 @@ class RestrictedDelaunay3 {
                 }
                 initial = subfaces_on_edge(x, y);
             } else {
+                // Within rounding of a subsegment (the 3D form the exact checks read segment
+                // vertices by) is on it: the subsegment is split instead, even where the facet
+                // is sharp at it. A wedge prism's subface, right-angled at a corner facing the
+                // segment, had its circumcentre an ulp beside the subsegment's midpoint, where
+                // the segment was later split: two vertices an ulp apart, and `exactmesh check`
+                // read the facet point as the segment's.
+                for (int i = 0; i < 3; ++i) {
+                    const VertIdx x = o[i], y = o[(i + 1) % 3];
+                    if (subsegments_.count(edge_key(x, y)) != 0 &&
+                        predicates::within_rounding_of_segment_3d(c.data(), point(x), point(y))) {
+                        segment_queue_.push_front(edge_key(x, y));
+                        ++counters_.encroached_segments;
+                        return false;
+                    }
+                }
                 const auto cp = triangulation::project_facet_point(c.data(), drop);
                 for (int i = 0; i < 3 && beside.empty(); ++i) {
                     const VertIdx x = o[i], y = o[(i + 1) % 3];

@@ -581,6 +581,40 @@ TEST(Issue15, issue_15_kept_circumcentres_pass_the_check_against_any_facet_trian
     }
 }
 
+TEST(Issue15, issue_15_facet_points_within_rounding_of_a_segment_split_it) {
+    // rotated_wedge_circumcentre_beside_a_segment_midpoint.poly (scripts/rotated_shapes.py
+    // wedge 3003 0) under a volume bound of 0.001: a subface right-angled at the corner facing a
+    // subsegment had its circumcentre an ulp beside the subsegment's midpoint, on the wedge's
+    // sharp facet (whose points do not encroach the segment), and was inserted; the midpoint
+    // came later, an ulp away. The internal check passed, but the mesh had an edge of 2.8e-17
+    // and, read back from its faces, the facet point for the segment's (`exactmesh check`: a
+    // subsegment not a mesh edge). A facet point within rounding of a subsegment splits it.
+    for (const int exponent : {0, 300, -300}) {
+        std::vector<tri::VertIdx> attached;
+        const tri::Plc3 plc = rotated_cube("rotated_wedge_circumcentre_beside_a_segment_midpoint.poly",
+                                           exponent, attached, "hostile_3d");
+        const Meshed3 meshed = mesh_with_volume_bound(plc, std::ldexp(0.001, 3 * exponent));
+        ASSERT_TRUE(tri::check_boundary_conformity_3d(plc, meshed.mesh).ok) << exponent;
+        const tri::ConformingMeshReading3 reading =
+            tri::conforming_mesh_from_faces_3d(plc, meshed.mesh.mesh, meshed.mesh.subfaces);
+        EXPECT_EQ(reading.problem, "") << exponent;
+        const tri::BoundaryConformityReport3 report =
+            tri::check_boundary_conformity_3d(plc, reading.mesh);
+        EXPECT_TRUE(report.ok) << exponent << " " << report.problem;
+        // No edge finer than doubles resolve at its place.
+        const auto& m = meshed.mesh.mesh;
+        std::uint64_t fine = 0;
+        for (tri::TetIdx t = 0; t < m.tet_count(); ++t) {
+            const double* const p[4] = {m.point(m.tets[4 * std::size_t{t}]),
+                                        m.point(m.tets[4 * std::size_t{t} + 1]),
+                                        m.point(m.tets[4 * std::size_t{t} + 2]),
+                                        m.point(m.tets[4 * std::size_t{t} + 3])};
+            fine += gen::tet_finer_than_doubles_resolve_3d(p) ? 1 : 0;
+        }
+        EXPECT_EQ(fine, 0u) << exponent;
+    }
+}
+
 // `exactmesh check` read the refined meshes of a cube with free vertices 1e-14 from an edge as
 // not conforming ("subface ... is not oriented like facet 1"): its reading took a facet point
 // 1.03e-14 off the edge for a point of the edge (64 units in the last place were accepted) and
