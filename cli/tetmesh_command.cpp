@@ -248,8 +248,8 @@ void run_tetmesh(const TetmeshArguments& arguments) {
             if (refine) {
                 gen::DelaunayRefinement3Options refine_options = refinement;
                 if (slivers_in_refinement) refine_options.sliver_removal = sliver_options;
-                gen::DelaunayRefinement3Result refined =
-                    gen::delaunay_refinement_3d(plc, std::move(meshed.recovery.mesh), refine_options);
+                gen::DelaunayRefinement3Result refined = gen::delaunay_refinement_3d(
+                    plc, std::move(meshed.recovery.mesh), refine_options);
                 meshed.recovery.mesh = std::move(refined.mesh);
                 meshed.refinement = refined.counters;
                 meshed.slivers = refined.slivers;

@@ -876,10 +876,10 @@ SliverRemoval3Result sliver_removal_3d(tri::ConformingMesh3 conforming, TetMesh3
     check_options(options);
     if (conforming.vertex_feature.size() != linked.vertex_count())
         throw InputError("sliver removal: one vertex feature per vertex is needed");
-    if (linked.vertex_tet.size() != linked.vertex_count() ||
-        linked.adj.size() != linked.tv.size())
+    if (linked.vertex_tet.size() != linked.vertex_count() || linked.adj.size() != linked.tv.size())
         throw InputError("sliver removal: the linked mesh needs its links and vertex_tet");
-    for (const std::vector<double>* values : {&conforming.tet_attributes, &conforming.tet_max_volume})
+    for (const std::vector<double>* values :
+         {&conforming.tet_attributes, &conforming.tet_max_volume})
         if (!values->empty() && values->size() != linked.tet_slots())
             throw InputError("sliver removal: one region value per tetrahedron slot is needed");
     conforming.mesh = {};

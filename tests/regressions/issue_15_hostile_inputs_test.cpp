@@ -567,9 +567,8 @@ TEST(Issue15, issue_15_kept_circumcentres_pass_the_check_against_any_facet_trian
     // moves a circumcentre onto the plane beyond 2^-46 of the coordinates.
     for (const int exponent : {0, 300, -300}) {
         std::vector<tri::VertIdx> attached;
-        const tri::Plc3 plc =
-            rotated_cube("rotated_cube_free_vertices_boundary_folds.poly", exponent, attached,
-                         "hostile_3d");
+        const tri::Plc3 plc = rotated_cube("rotated_cube_free_vertices_boundary_folds.poly",
+                                           exponent, attached, "hostile_3d");
         gen::DelaunayRefinement3Options options;
         options.max_volume = std::ldexp(0.004395614284589138, 3 * exponent);
         const gen::DelaunayRefinement3Result refined =
@@ -591,8 +590,9 @@ TEST(Issue15, issue_15_facet_points_within_rounding_of_a_segment_split_it) {
     // subsegment not a mesh edge). A facet point within rounding of a subsegment splits it.
     for (const int exponent : {0, 300, -300}) {
         std::vector<tri::VertIdx> attached;
-        const tri::Plc3 plc = rotated_cube("rotated_wedge_circumcentre_beside_a_segment_midpoint.poly",
-                                           exponent, attached, "hostile_3d");
+        const tri::Plc3 plc =
+            rotated_cube("rotated_wedge_circumcentre_beside_a_segment_midpoint.poly", exponent,
+                         attached, "hostile_3d");
         const Meshed3 meshed = mesh_with_volume_bound(plc, std::ldexp(0.001, 3 * exponent));
         ASSERT_TRUE(tri::check_boundary_conformity_3d(plc, meshed.mesh).ok) << exponent;
         const tri::ConformingMeshReading3 reading =
@@ -605,10 +605,9 @@ TEST(Issue15, issue_15_facet_points_within_rounding_of_a_segment_split_it) {
         const auto& m = meshed.mesh.mesh;
         std::uint64_t fine = 0;
         for (tri::TetIdx t = 0; t < m.tet_count(); ++t) {
-            const double* const p[4] = {m.point(m.tets[4 * std::size_t{t}]),
-                                        m.point(m.tets[4 * std::size_t{t} + 1]),
-                                        m.point(m.tets[4 * std::size_t{t} + 2]),
-                                        m.point(m.tets[4 * std::size_t{t} + 3])};
+            const double* const p[4] = {
+                m.point(m.tets[4 * std::size_t{t}]), m.point(m.tets[4 * std::size_t{t} + 1]),
+                m.point(m.tets[4 * std::size_t{t} + 2]), m.point(m.tets[4 * std::size_t{t} + 3])};
             fine += gen::tet_finer_than_doubles_resolve_3d(p) ? 1 : 0;
         }
         EXPECT_EQ(fine, 0u) << exponent;

@@ -88,10 +88,11 @@ inline int drop_axis(const double* a, const double* b, const double* c) {
 /// Whether p lies farther from the plane through a, b and c than rounding explains: more than
 /// 2^-40 of the largest coordinate magnitude among the four (a facet's Steiner points are
 /// rounded once from points of its plane; attached free vertices lie within 2^-48 of their
-/// coordinates), plus the uncertainty of the plane's normal for a needle triangle. Doubles on differences scaled by one power of two (a classification, the same
-/// for the points scaled by 2^k); false when a, b and c are collinear in doubles. A generator
-/// checking its own constructions asks with a larger `bits` (a smaller allowance), so that what
-/// it keeps passes this test against any triangle of the facet (whose corners may be smaller).
+/// coordinates), plus the uncertainty of the plane's normal for a needle triangle. Doubles on
+/// differences scaled by one power of two (a classification, the same for the points scaled by
+/// 2^k); false when a, b and c are collinear in doubles. A generator checking its own constructions
+/// asks with a larger `bits` (a smaller allowance), so that what it keeps passes this test against
+/// any triangle of the facet (whose corners may be smaller).
 inline bool beyond_rounding_of_plane(const double* p, const double* a, const double* b,
                                      const double* c, int bits = 40) {
     double u[3], v[3], w[3];

@@ -141,8 +141,7 @@ TetMesh3 make_tet_mesh_3d(Tetrahedralization3&& mesh) {
     } else {
         if (mesh.neighbors.size() != out.tv.size()) {
             throw InputError("neighbor array: " + std::to_string(mesh.neighbors.size()) +
-                             " entries for " + std::to_string(out.tv.size() / 4) +
-                             " tetrahedra");
+                             " entries for " + std::to_string(out.tv.size() / 4) + " tetrahedra");
         }
         const std::size_t count = out.tv.size() / 4;
         out.adj.assign(out.tv.size(), kNone);
