@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <string>
 #include <unordered_map>
@@ -754,6 +755,11 @@ class MetricMesher {
     bool too_close(tri::TriIdx t, const Metric2& m, const LogMetric2& lm, double x, double y);
     /// One pass: proposals at the halfway points of the long edges, inserted in Hilbert order.
     std::uint64_t insertion_pass(std::uint64_t budget);
+    /// The columns of turning layers (turning_layer_columns_2d), inserted in Hilbert order
+    /// with the spacing test, before the passes.
+    void insert_columns(std::uint64_t budget);
+    /// Inserts (x, y) unless it falls outside the domain or too close to a vertex; counts it.
+    bool insert_point(double x, double y);
 
     const MetricDelaunayOptions2& options_;
     DomainBoundary2 boundary_;
@@ -853,40 +859,70 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
     std::uint64_t inserted = 0;
     for (const std::uint32_t i : order) {
         if (counters_.inserted >= budget) break;
-        const double x = proposals[2 * i], y = proposals[2 * i + 1];
-        const tri::TriIdx t = cdt_.locate(x, y);
-        if (cdt_.mesh().is_infinite(t) || !cdt_.in_domain(t)) {
-            ++counters_.rejected;
-            continue;
-        }
-        const Metric2 m = options_.metric(x, y);
-        const LogMetric2 lm = scaled_log_form(m, unit_);
-        if (too_close(t, m, lm, x, y)) {
-            ++counters_.too_close;
-            continue;
-        }
-        double matrix[3];
-        matrix_for_predicate(m, matrix);
-        if (cdt_.insert_in_metric_cavity(t, x, y, matrix) == tri::CavityInsertion::Inserted) {
-            ++counters_.inserted;
-            ++inserted;
-            const tri::VertIdx v = cdt_.mesh().vertex_count() - 1;
-            if (v >= known_.size()) {
-                vertices_.at.resize(v + 1);
-                vertices_.logs.resize(v + 1);
-                known_.resize(v + 1, false);
-            }
-            vertices_.at[v] = m;  // the field's value there, already computed
-            vertices_.logs[v] = lm;
-            known_[v] = true;
-        } else {
-            ++counters_.rejected;
-        }
+        if (insert_point(proposals[2 * i], proposals[2 * i + 1])) ++inserted;
     }
     return inserted;
 }
 
+bool MetricMesher::insert_point(double x, double y) {
+    const tri::TriIdx t = cdt_.locate(x, y);
+    if (cdt_.mesh().is_infinite(t) || !cdt_.in_domain(t)) {
+        ++counters_.rejected;
+        return false;
+    }
+    const Metric2 m = options_.metric(x, y);
+    const LogMetric2 lm = scaled_log_form(m, unit_);
+    if (too_close(t, m, lm, x, y)) {
+        ++counters_.too_close;
+        return false;
+    }
+    double matrix[3];
+    matrix_for_predicate(m, matrix);
+    if (cdt_.insert_in_metric_cavity(t, x, y, matrix) != tri::CavityInsertion::Inserted) {
+        ++counters_.rejected;
+        return false;
+    }
+    ++counters_.inserted;
+    const tri::VertIdx v = cdt_.mesh().vertex_count() - 1;
+    if (v >= known_.size()) {
+        vertices_.at.resize(v + 1);
+        vertices_.logs.resize(v + 1);
+        known_.resize(v + 1, false);
+    }
+    vertices_.at[v] = m;  // the field's value there, already computed
+    vertices_.logs[v] = lm;
+    known_[v] = true;
+    return true;
+}
+
+void MetricMesher::insert_columns(std::uint64_t budget) {
+    if (!options_.layer_columns || options_.metric.is_uniform()) return;
+    std::array<double, 4> box = {boundary_.xy[0], boundary_.xy[1], boundary_.xy[0],
+                                 boundary_.xy[1]};
+    for (std::size_t i = 0; i + 1 < boundary_.xy.size(); i += 2) {
+        box[0] = std::min(box[0], boundary_.xy[i]);
+        box[1] = std::min(box[1], boundary_.xy[i + 1]);
+        box[2] = std::max(box[2], boundary_.xy[i]);
+        box[3] = std::max(box[3], boundary_.xy[i + 1]);
+    }
+    const std::function<bool(double, double)> inside = [this](double x, double y) {
+        const tri::TriIdx t = cdt_.locate(x, y);
+        return !cdt_.mesh().is_infinite(t) && cdt_.in_domain(t);
+    };
+    std::vector<double> points =
+        turning_layer_columns_2d(options_.metric, box, inside, options_.columns, budget);
+    if (points.empty()) return;
+    std::vector<std::uint32_t> order(points.size() / 2);
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    tri::hilbert_sort_2d(points, order);
+    for (const std::uint32_t i : order) {
+        if (counters_.inserted >= budget) break;
+        if (insert_point(points[2 * i], points[2 * i + 1])) ++counters_.column_points;
+    }
+}
+
 MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
+    insert_columns(budget);
     // Each pass at least halves the longest edges; 64 passes reach any metric a double holds.
     for (int pass = 0; pass < 64; ++pass) {
         ++counters_.passes;
