@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <optional>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -737,6 +739,9 @@ class MetricMesher {
         : options_(options),
           boundary_(std::move(boundary)),
           cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions}, cdt_options),
+          holes_(pslg.holes),
+          regions_(pslg.regions),
+          cdt_options_(cdt_options),
           memo_(memo_slots) {
         // The unit of the log forms: the smallest size at the first boundary point.
         const Metric2 first = options_.metric(boundary_.xy[0], boundary_.xy[1]);
@@ -764,6 +769,10 @@ class MetricMesher {
     const MetricDelaunayOptions2& options_;
     DomainBoundary2 boundary_;
     tri::ConstrainedTriangulation2 cdt_;
+    /// The input's holes and regions and the triangulation's options (for insert_columns' copy
+    /// of the boundary's triangulation).
+    std::span<const double> holes_, regions_;
+    tri::Cdt2Options cdt_options_;
     int unit_ = 0;
     MetricFromLogFormMemo memo_;
     VertexMetrics vertices_;
@@ -905,9 +914,18 @@ void MetricMesher::insert_columns(std::uint64_t budget) {
         box[2] = std::max(box[2], boundary_.xy[i]);
         box[3] = std::max(box[3], boundary_.xy[i + 1]);
     }
-    const std::function<bool(double, double)> inside = [this](double x, double y) {
-        const tri::TriIdx t = cdt_.locate(x, y);
-        return !cdt_.mesh().is_infinite(t) && cdt_.in_domain(t);
+    // Whether a point lies in the domain: located in a triangulation of the boundary of its
+    // own, built at the first question (only a field with a turning ridge asks). Locating in
+    // cdt_ itself would move its walks' starting triangle, and with it the later insertions'
+    // choices where a point lies on an edge: a field without columns would get another mesh.
+    std::optional<tri::ConstrainedTriangulation2> probe;
+    const std::function<bool(double, double)> inside = [&](double x, double y) {
+        if (!std::isfinite(x) || !std::isfinite(y)) return false;
+        if (!probe)
+            probe.emplace(tri::Pslg{boundary_.xy, boundary_.pieces, holes_, regions_},
+                          cdt_options_);
+        const tri::TriIdx t = probe->locate(x, y);
+        return !probe->mesh().is_infinite(t) && probe->in_domain(t);
     };
     std::vector<double> points =
         turning_layer_columns_2d(options_.metric, box, inside, options_.columns, budget);

@@ -76,7 +76,9 @@ class Columns {
     bool ridge_minimum(Point p, Point& ridge, double& h_ridge) const;
     /// The sag of the chord of one size along at p over the size across there (the direction
     /// across sampled half a size along on either side).
-    double sag_ratio(Point p) const;
+    double sag_ratio(Point p) const { return sag_ratio(p, at(p)); }
+    /// The same with the field's value at p already sampled.
+    double sag_ratio(Point p, const Across& a) const;
     /// The ridge through r0 traced both ways at quarter sizes along, each step projected back on
     /// the ridge; closed when it comes back to r0.
     std::vector<Point> trace_ridge(Point r0, bool& closed) const;
@@ -159,8 +161,7 @@ bool Columns::ridge_minimum(Point p, Point& ridge, double& h_ridge) const {
     return true;
 }
 
-double Columns::sag_ratio(Point p) const {
-    const Across a = at(p);
+double Columns::sag_ratio(Point p, const Across& a) const {
     if (!a.ok) return 0;
     const double sx = 0.5 * a.along * a.y, sy = 0.5 * a.along * a.x;
     const Across left = at(p.x - sx, p.y + sy);
@@ -330,8 +331,13 @@ std::vector<double> Columns::run() {
             const Point sample = {box_[0] + (i + 0.5) / g * (box_[2] - box_[0]),
                                   box_[1] + (j + 0.5) / g * (box_[3] - box_[1])};
             const Across a = at(sample);
-            // Anisotropic and turning at the sample (a straight layer has no turn at all).
-            if (!a.ok || !(a.along >= 2 * a.h) || !(sag_ratio(sample) > 0)) continue;
+            // Anisotropic and turning at the sample (a straight layer has no turn at all); the
+            // sag over the size across grows towards the ridge as the size across falls (on the
+            // curved layer of aspect ratio 1000, 0.1 at 0.03 from the ridge, 21 on it).
+            if (!a.ok || !(a.along >= 2 * a.h) ||
+                !(sag_ratio(sample, a) > 0.01 * options_.sag_ratio)) {
+                continue;
+            }
             Point r;
             double h;
             if (!ridge_minimum(sample, r, h) || !inside_(r.x, r.y)) continue;
