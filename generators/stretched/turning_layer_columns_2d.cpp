@@ -345,7 +345,8 @@ std::vector<double> Columns::run() {
                                           [&](const Point& k) { return chord_length(r, k) < 1.0; });
             if (seen || !(sag_ratio(r) > options_.sag_ratio)) continue;
             bool closed = false;
-            const std::vector<Point> ridge = resample(trace_ridge(r, closed), closed);
+            const std::vector<Point> traced = trace_ridge(r, closed);
+            const std::vector<Point> ridge = resample(traced, closed);
             if (ridge.size() < 2) continue;
             known.insert(known.end(), ridge.begin(), ridge.end());
             // The columns of each side, then each cut at the first layer where it and a
