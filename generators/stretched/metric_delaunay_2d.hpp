@@ -5,7 +5,10 @@
 // metric specifications", Finite Elem. Anal. Des. 25; the BAMG scheme of Gmsh]:
 //  1. the boundary's pieces split so that each has about unit metric length (the metric's size
 //     along each piece's direction: discretize_domain_boundary with a per-piece size);
-//  2. their constrained Delaunay triangulation, exterior and holes removed;
+//  2. their constrained Delaunay triangulation, exterior and holes removed; where a thin layer of
+//     the field turns so fast that the chord of one cell sags by several layer thicknesses, its
+//     points first, as structured columns across the layer from the ridge of its smallest size
+//     across (turning_layer_columns_2d), inserted as the passes insert theirs;
 //  3. passes over the mesh's unconstrained edges: an edge longer than sqrt 2 in the metric (its
 //     length in the log-Euclidean mean of its ends' metrics, as metric_quality_report_2d measures
 //     edges: measured in each end's own metric, a chord of a curved layer counts its small

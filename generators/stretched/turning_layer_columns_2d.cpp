@@ -204,7 +204,11 @@ std::vector<Point> Columns::trace_ridge(Point r0, bool& closed) const {
             double h_next;
             if (!ridge_minimum({cur.x + step_mid * mx, cur.y + step_mid * my}, next, h_next)) break;
             if (!inside_(next.x, next.y)) break;
-            if (!(sag_ratio(next) >= 0.5 * options_.sag_ratio)) break;
+            // The ridge is followed as long as the layer stays thin, turning or not: columns
+            // along its straight stretches too keep the layers lined up from one turn to the
+            // next (a ridge cut where it stops turning leaves unstructured gaps between pieces).
+            const Across an = at(next);
+            if (!an.ok || !(an.along >= options_.ridge_aspect * an.h)) break;
             if (side > 0 && i >= 8 && chord_length(r0, next) < 0.3) {
                 closed = true;
                 break;

@@ -13,9 +13,10 @@
 //     lies in the domain, and the layer turns there (the chord of one size along sags by more than
 //     `sag_ratio` sizes across, the turning sampled half a size along on either side);
 //  2. each ridge is traced along the layer (steps of a quarter size along, each point projected
-//     back on the ridge by the line search) until it closes on itself, leaves the domain or stops
-//     turning, then resampled at equal metric spacing (unit along, in the metric at each chord's
-//     middle);
+//     back on the ridge by the line search) until it closes on itself, leaves the domain or its
+//     aspect ratio falls below `ridge_aspect` (it is followed where it turns less too, so that
+//     the columns of one turn and the next stay one structure), then resampled at equal metric
+//     spacing (unit along, in the metric at each chord's middle);
 //  3. from each of its points a column is traced both ways across the layer, along the field's
 //     direction across (midpoint rule), with steps of `layer_spacing` in the geometric mean of
 //     the sizes across at their ends, until it leaves the domain or the aspect ratio falls below
@@ -42,6 +43,8 @@ struct TurningLayerColumnsOptions2 {
     /// A ridge is structured where the chord of one size along sags by more than this many
     /// sizes across (21 on the curved layer of aspect ratio 1000, 2.1 at 100).
     double sag_ratio = 4;
+    /// A ridge is followed while its aspect ratio (size along over size across) is at least this.
+    double ridge_aspect = 10;
     /// Metric length across the layer between the points of a column (the quadrilaterals'
     /// diagonals then stay below sqrt 2).
     double layer_spacing = 0.8;
