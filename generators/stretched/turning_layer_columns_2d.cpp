@@ -354,8 +354,14 @@ std::vector<double> Columns::run() {
             if (ridge.size() < 2) continue;
             known.insert(known.end(), ridge.begin(), ridge.end());
             // The columns of each side, then each cut at the first layer where it and a
-            // neighbour stand too close or too far along.
+            // neighbour stand too close or too far along. A column cut where the layer still
+            // turns (a chord sags by half a size across or more) leaves the structure unfinished
+            // there: when that is so of most columns (columns converging on a tight bend), the
+            // ridge gets none, the passes doing better without a ragged edge of columns inside
+            // the turning part.
             const std::size_t n = ridge.size();
+            std::vector<double> points;
+            std::size_t unfinished = 0;
             for (const double side : {1.0, -1.0}) {
                 std::vector<std::vector<Point>> cols(n);
                 for (std::size_t c = 0; c < n; ++c) cols[c] = column(ridge[c], side);
@@ -377,12 +383,17 @@ std::vector<double> Columns::run() {
                     }
                 }
                 for (std::size_t c = 0; c < n; ++c) {
+                    if (keep[c] < cols[c].size() && sag_ratio(cols[c][keep[c]]) >= 0.5) {
+                        ++unfinished;
+                    }
                     for (std::size_t k = 0; k < keep[c]; ++k) {
-                        out.push_back(cols[c][k].x);
-                        out.push_back(cols[c][k].y);
+                        points.push_back(cols[c][k].x);
+                        points.push_back(cols[c][k].y);
                     }
                 }
             }
+            if (unfinished > n) continue;
+            out.insert(out.end(), points.begin(), points.end());
             for (const Point& p : ridge) {
                 out.push_back(p.x);
                 out.push_back(p.y);

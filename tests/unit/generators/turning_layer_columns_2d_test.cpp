@@ -115,6 +115,44 @@ TEST(TurningLayerColumns2d, FieldsWithoutATurningThinLayerGetNone) {
     EXPECT_TRUE(columns_of(gen::MetricField2::uniform(gen::isotropic(0.1))).empty());
 }
 
+TEST(TurningLayerColumns2d, AnArcLeavingTheDomainGetsColumnsOnItsOpenRidge) {
+    // The same layer about (0.5, -0.05): its ridge is an arc that leaves the square through the
+    // bottom side (an open ridge, traced both ways from where it is found).
+    const gen::MetricField2 arc = gen::MetricField2::analytic(
+        [](double x, double y) {
+            const double dx = x - 0.5, dy = y + 0.05, r = std::hypot(dx, dy);
+            gen::Metric2 m;
+            m.h1 = 0.00005 + 0.3 * std::fabs(r - 0.3);
+            m.h2 = 0.05;
+            m.c = dx / r;
+            m.s = dy / r;
+            return m;
+        },
+        "arc layer");
+    const std::vector<double> points = columns_of(arc);
+    EXPECT_GT(points.size(), 2u * 500);
+    for (std::size_t i = 0; i < points.size(); i += 2) {
+        EXPECT_GT(points[i + 1], 0);
+        EXPECT_LT(points[i + 1], 1);
+    }
+}
+
+TEST(TurningLayerColumns2d, ALayerWhoseColumnsConvergeOnATightBendGetsNone) {
+    // Along y = 0.5 + 0.05 sin(4 pi x) (radius of curvature 0.063 at the crests, aspect ratio
+    // 1000): the columns converge or diverge by a quarter within a few layers, where the layer
+    // still turns; a ragged edge of columns there did no better than the passes alone.
+    constexpr double k = 12.566370614359172, a = 0.05;
+    const gen::MetricField2 wave = gen::MetricField2::analytic(
+        [](double x, double y) {
+            const double slope = a * k * std::cos(k * x);
+            const double across = 0.00005 + 0.3 * std::fabs(y - 0.5 - a * std::sin(k * x)) /
+                                                std::sqrt(1 + slope * slope);
+            return gen::metric_from_stretching(1, slope, 0.05, 0.05 / across);
+        },
+        "sine layer");
+    EXPECT_TRUE(columns_of(wave).empty());
+}
+
 TEST(TurningLayerColumns2d, ScaledDomainAndFieldGiveThePointsScaled) {
     const std::vector<double> reference = columns_of(circle_layer(0.00005));
     for (const int k : {600, -600}) {
