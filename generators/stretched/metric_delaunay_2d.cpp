@@ -7,7 +7,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <limits>
+#include <optional>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -736,6 +739,9 @@ class MetricMesher {
         : options_(options),
           boundary_(std::move(boundary)),
           cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions}, cdt_options),
+          holes_(pslg.holes),
+          regions_(pslg.regions),
+          cdt_options_(cdt_options),
           memo_(memo_slots) {
         // The unit of the log forms: the smallest size at the first boundary point.
         const Metric2 first = options_.metric(boundary_.xy[0], boundary_.xy[1]);
@@ -754,10 +760,19 @@ class MetricMesher {
     bool too_close(tri::TriIdx t, const Metric2& m, const LogMetric2& lm, double x, double y);
     /// One pass: proposals at the halfway points of the long edges, inserted in Hilbert order.
     std::uint64_t insertion_pass(std::uint64_t budget);
+    /// The columns of turning layers (turning_layer_columns_2d), inserted in Hilbert order
+    /// with the spacing test, before the passes.
+    void insert_columns(std::uint64_t budget);
+    /// Inserts (x, y) unless it falls outside the domain or too close to a vertex; counts it.
+    bool insert_point(double x, double y);
 
     const MetricDelaunayOptions2& options_;
     DomainBoundary2 boundary_;
     tri::ConstrainedTriangulation2 cdt_;
+    /// The input's holes and regions and the triangulation's options (for insert_columns' copy
+    /// of the boundary's triangulation).
+    std::span<const double> holes_, regions_;
+    tri::Cdt2Options cdt_options_;
     int unit_ = 0;
     MetricFromLogFormMemo memo_;
     VertexMetrics vertices_;
@@ -853,40 +868,79 @@ std::uint64_t MetricMesher::insertion_pass(std::uint64_t budget) {
     std::uint64_t inserted = 0;
     for (const std::uint32_t i : order) {
         if (counters_.inserted >= budget) break;
-        const double x = proposals[2 * i], y = proposals[2 * i + 1];
-        const tri::TriIdx t = cdt_.locate(x, y);
-        if (cdt_.mesh().is_infinite(t) || !cdt_.in_domain(t)) {
-            ++counters_.rejected;
-            continue;
-        }
-        const Metric2 m = options_.metric(x, y);
-        const LogMetric2 lm = scaled_log_form(m, unit_);
-        if (too_close(t, m, lm, x, y)) {
-            ++counters_.too_close;
-            continue;
-        }
-        double matrix[3];
-        matrix_for_predicate(m, matrix);
-        if (cdt_.insert_in_metric_cavity(t, x, y, matrix) == tri::CavityInsertion::Inserted) {
-            ++counters_.inserted;
-            ++inserted;
-            const tri::VertIdx v = cdt_.mesh().vertex_count() - 1;
-            if (v >= known_.size()) {
-                vertices_.at.resize(v + 1);
-                vertices_.logs.resize(v + 1);
-                known_.resize(v + 1, false);
-            }
-            vertices_.at[v] = m;  // the field's value there, already computed
-            vertices_.logs[v] = lm;
-            known_[v] = true;
-        } else {
-            ++counters_.rejected;
-        }
+        if (insert_point(proposals[2 * i], proposals[2 * i + 1])) ++inserted;
     }
     return inserted;
 }
 
+bool MetricMesher::insert_point(double x, double y) {
+    const tri::TriIdx t = cdt_.locate(x, y);
+    if (cdt_.mesh().is_infinite(t) || !cdt_.in_domain(t)) {
+        ++counters_.rejected;
+        return false;
+    }
+    const Metric2 m = options_.metric(x, y);
+    const LogMetric2 lm = scaled_log_form(m, unit_);
+    if (too_close(t, m, lm, x, y)) {
+        ++counters_.too_close;
+        return false;
+    }
+    double matrix[3];
+    matrix_for_predicate(m, matrix);
+    if (cdt_.insert_in_metric_cavity(t, x, y, matrix) != tri::CavityInsertion::Inserted) {
+        ++counters_.rejected;
+        return false;
+    }
+    ++counters_.inserted;
+    const tri::VertIdx v = cdt_.mesh().vertex_count() - 1;
+    if (v >= known_.size()) {
+        vertices_.at.resize(v + 1);
+        vertices_.logs.resize(v + 1);
+        known_.resize(v + 1, false);
+    }
+    vertices_.at[v] = m;  // the field's value there, already computed
+    vertices_.logs[v] = lm;
+    known_[v] = true;
+    return true;
+}
+
+void MetricMesher::insert_columns(std::uint64_t budget) {
+    if (!options_.layer_columns || options_.metric.is_uniform()) return;
+    std::array<double, 4> box = {boundary_.xy[0], boundary_.xy[1], boundary_.xy[0],
+                                 boundary_.xy[1]};
+    for (std::size_t i = 0; i + 1 < boundary_.xy.size(); i += 2) {
+        box[0] = std::min(box[0], boundary_.xy[i]);
+        box[1] = std::min(box[1], boundary_.xy[i + 1]);
+        box[2] = std::max(box[2], boundary_.xy[i]);
+        box[3] = std::max(box[3], boundary_.xy[i + 1]);
+    }
+    // Whether a point lies in the domain: located in a triangulation of the boundary of its
+    // own, built at the first question (only a field with a turning ridge asks). Locating in
+    // cdt_ itself would move its walks' starting triangle, and with it the later insertions'
+    // choices where a point lies on an edge: a field without columns would get another mesh.
+    std::optional<tri::ConstrainedTriangulation2> probe;
+    const std::function<bool(double, double)> inside = [&](double x, double y) {
+        if (!std::isfinite(x) || !std::isfinite(y)) return false;
+        if (!probe)
+            probe.emplace(tri::Pslg{boundary_.xy, boundary_.pieces, holes_, regions_},
+                          cdt_options_);
+        const tri::TriIdx t = probe->locate(x, y);
+        return !probe->mesh().is_infinite(t) && probe->in_domain(t);
+    };
+    std::vector<double> points =
+        turning_layer_columns_2d(options_.metric, box, inside, options_.columns, budget);
+    if (points.empty()) return;
+    std::vector<std::uint32_t> order(points.size() / 2);
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    tri::hilbert_sort_2d(points, order);
+    for (const std::uint32_t i : order) {
+        if (counters_.inserted >= budget) break;
+        if (insert_point(points[2 * i], points[2 * i + 1])) ++counters_.column_points;
+    }
+}
+
 MetricDelaunayResult2 MetricMesher::run(std::uint64_t budget) {
+    insert_columns(budget);
     // Each pass at least halves the longest edges; 64 passes reach any metric a double holds.
     for (int pass = 0; pass < 64; ++pass) {
         ++counters_.passes;

@@ -5,7 +5,10 @@
 // metric specifications", Finite Elem. Anal. Des. 25; the BAMG scheme of Gmsh]:
 //  1. the boundary's pieces split so that each has about unit metric length (the metric's size
 //     along each piece's direction: discretize_domain_boundary with a per-piece size);
-//  2. their constrained Delaunay triangulation, exterior and holes removed;
+//  2. their constrained Delaunay triangulation, exterior and holes removed; where a thin layer of
+//     the field turns so fast that the chord of one cell sags by several layer thicknesses, its
+//     points first, as structured columns across the layer from the ridge of its smallest size
+//     across (turning_layer_columns_2d), inserted as the passes insert theirs;
 //  3. passes over the mesh's unconstrained edges: an edge longer than sqrt 2 in the metric (its
 //     length in the log-Euclidean mean of its ends' metrics, as metric_quality_report_2d measures
 //     edges: measured in each end's own metric, a chord of a curved layer counts its small
@@ -54,6 +57,7 @@
 #include "base/counter_table.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/stretched/metric_field_2d.hpp"
+#include "generators/stretched/turning_layer_columns_2d.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 
 namespace exactmesh::generators {
@@ -77,6 +81,13 @@ struct MetricDelaunayOptions2 {
     /// half the layer's thickness, points go on columns across the layer and on arcs along it
     /// (proposal_point in the .cpp): the only arrangement such a layer's cells fit in.
     bool turning_columns = true;
+    /// Where a thin layer turns so fast that the chord of one cell sags by several layer
+    /// thicknesses (TurningLayerColumnsOptions2::sag_ratio), its points are placed first as
+    /// structured columns across the layer from the curve of its smallest size across
+    /// (turning_layer_columns_2d), lined up from layer to layer; the insertion passes fill the
+    /// rest. Fields without such a layer get no column point (the same mesh either way).
+    bool layer_columns = true;
+    TurningLayerColumnsOptions2 columns;
     /// Most rounds of the final optimization (vertex relocation by pattern search towards unit
     /// edges, swaps, splits of the edges still long); rounds stop when one changes fewer than
     /// 0.1% of the vertices. 0: none.
@@ -89,6 +100,7 @@ inline constexpr std::uint64_t kDefaultMetricPointBudget = std::uint64_t{1} << 2
 
 struct MetricDelaunayCounters2 {
     std::uint64_t boundary_points = 0;      ///< points added on the boundary's pieces
+    std::uint64_t column_points = 0;        ///< points of turning layers' columns inserted
     std::uint64_t passes = 0;               ///< insertion passes
     std::uint64_t proposals = 0;            ///< edge midpoints proposed
     std::uint64_t too_close = 0;            ///< proposals dropped by the spacing test
@@ -105,8 +117,8 @@ struct MetricDelaunayCounters2 {
 };
 
 inline constexpr std::array kMetricDelaunayCounterNames =
-    EM_COUNTER_TABLE(MetricDelaunayCounters2, boundary_points, passes, proposals, too_close,
-                     inserted, rejected, cavity_corrections, swaps, swap_budget_hits,
+    EM_COUNTER_TABLE(MetricDelaunayCounters2, boundary_points, column_points, passes, proposals,
+                     too_close, inserted, rejected, cavity_corrections, swaps, swap_budget_hits,
                      smoothing_moves, late_splits, late_removals, optimization_rounds, relocations);
 static_assert(counter_table_complete(kMetricDelaunayCounterNames));
 
