@@ -30,6 +30,10 @@
 #include <cstddef>
 #include <optional>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "predicates/power_of_two.hpp"
 #include "predicates/sign.hpp"
 
@@ -87,13 +91,54 @@ std::optional<Sign> certified(const Term<R>& t, double eps) noexcept {
 /// magnitude to [1, 2), in place, and returns the shift; std::nullopt (nothing to filter) when
 /// they are all zero, one is not finite, or a nonzero one ends below `window_min` (a power of
 /// two: see the header comment).
+///
+/// With SSE2 (every x86-64) two differences at a time: MAXPD(|x|, m) is |x| > m ? |x| : m, the
+/// scalar std::max(m, |x|) (a NaN skipped alike), MULPD by 2^shift the same exact products,
+/// and the window test the same comparisons (x != 0 true for a NaN, |x| < w false), all made
+/// before one answer instead of an early return (the caller drops `d` on nullopt). The same
+/// bits as the scalar loops below; they were 5% of 3D refinement's instructions (1.7 10^6
+/// calls on the wing at V = 4.46e-5, 16 instructions per difference).
 template <std::size_t N>
 std::optional<int> scale_differences(double (&d)[N], double window_min) noexcept {
+#if defined(__SSE2__)
+    constexpr std::size_t kPairs = N / 2;
+    const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+    __m128d pair_largest = _mm_setzero_pd();
+    for (std::size_t i = 0; i < kPairs; ++i)
+        pair_largest = _mm_max_pd(_mm_and_pd(_mm_loadu_pd(d + 2 * i), magnitude), pair_largest);
+    double largest = std::max(_mm_cvtsd_f64(pair_largest),
+                              _mm_cvtsd_f64(_mm_unpackhi_pd(pair_largest, pair_largest)));
+    if constexpr (N % 2 != 0) largest = std::max(largest, std::fabs(d[N - 1]));
+    if (largest == 0 || !std::isfinite(largest)) return std::nullopt;  // NaN fails both ways
+    const int shift = unit_shift(largest);
+    const PowerOfTwo unit(shift);
+    if (unit.is_multiplication()) {
+        const __m128d factor = _mm_set1_pd(unit.factor());
+        const __m128d window = _mm_set1_pd(window_min);
+        const __m128d zero = _mm_setzero_pd();
+        __m128d below = _mm_setzero_pd();
+        for (std::size_t i = 0; i < kPairs; ++i) {
+            const __m128d x = _mm_mul_pd(_mm_loadu_pd(d + 2 * i), factor);
+            _mm_storeu_pd(d + 2 * i, x);
+            below = _mm_or_pd(below, _mm_and_pd(_mm_cmpneq_pd(x, zero),
+                                                _mm_cmplt_pd(_mm_and_pd(x, magnitude), window)));
+        }
+        bool small = _mm_movemask_pd(below) != 0;
+        if constexpr (N % 2 != 0) {
+            const double x = d[N - 1] * unit.factor();
+            d[N - 1] = x;
+            small = small || (x != 0 && std::fabs(x) < window_min);
+        }
+        if (small) return std::nullopt;
+        return shift;
+    }
+#else
     double largest = 0;
     for (const double x : d) largest = std::max(largest, std::fabs(x));
     if (largest == 0 || !std::isfinite(largest)) return std::nullopt;  // NaN fails both ways
     const int shift = unit_shift(largest);
     const PowerOfTwo unit(shift);
+#endif
     for (double& x : d) {
         x = unit(x);
         if (x != 0 && std::fabs(x) < window_min) return std::nullopt;
