@@ -790,10 +790,12 @@ class RestrictedDelaunay3 {
                                  max_volumes_.empty() ? 0.0 : max_volumes_[t]});
             }
         }
+        // m_.kill_tet on each, its free-list pushes made as one append (a push_back call each).
         for (const TetIdx t : cavity_) {
             marks_[t].attempt = 0;
-            m_.kill_tet(t);
+            m_.tv[4 * std::size_t{t}] = kNone;
         }
+        m_.free_tets.insert(m_.free_tets.end(), cavity_.begin(), cavity_.end());
         FlatKeyMap64<FaceIdx>& open = open_edges_;
         open.clear();
         std::vector<TetIdx>& created = commit_created_;
