@@ -816,9 +816,13 @@ class RestrictedDelaunay3 {
             m_.tv[s + 3] = v;
             m_.adj[s + 3] = f.outside;
             if (f.outside != kNone) m_.adj[f.outside] = static_cast<FaceIdx>(s + 3);
+            // The edge opposite corner j: the other two (a table: the loop is not unrolled, and
+            // (j + 1) % 3 was two multiplications per edge).
+            constexpr unsigned kOthers[3][2] = {{1, 2}, {2, 0}, {0, 1}};
             for (unsigned j = 0; j < 3; ++j) {
                 m_.adj[s + j] = kNone;
-                const std::uint64_t key = edge_key(f.corners[(j + 1) % 3], f.corners[(j + 2) % 3]);
+                const std::uint64_t key =
+                    edge_key(f.corners[kOthers[j][0]], f.corners[kOthers[j][1]]);
                 const auto [slot, added] = open.emplace(key, static_cast<FaceIdx>(s + j));
                 if (!added) {
                     EM_ASSERT(*slot != kNone);
