@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <bit>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -545,7 +545,8 @@ void expect_scaled_alike(const std::array<double, N>& input, double window_min) 
     ASSERT_EQ(shift, expected);
     if (!shift) return;  // the callers drop the differences then
     for (std::size_t i = 0; i < N; ++i)
-        EXPECT_EQ(std::bit_cast<std::uint64_t>(fast[i]), std::bit_cast<std::uint64_t>(reference[i]));
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(fast[i]),
+                  std::bit_cast<std::uint64_t>(reference[i]));
 }
 
 template <std::size_t N>
