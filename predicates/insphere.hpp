@@ -43,10 +43,10 @@ inline double insphere_fast(const double* a, const double* b, const double* c, c
 /// With SSE2 (every x86-64) the same operations two at a time, rows paired in the lanes: each
 /// value is the same rounded sum, difference or product of the same operands as in the scalar
 /// form below (x - y as x + (-y) where a lane pair needs one subtraction and one addition: IEEE
-/// defines the difference so, bit for bit), and the largest magnitude is taken in another order
-/// (exact, and no difference of finite inputs is NaN; a NaN input makes det NaN, refused either
-/// way). So the same signs and the same refusals; the filter was a tenth of 3D refinement's
-/// instructions (4.5 10^6 calls on the wing at V = 4.46e-5).
+/// defines the difference so, bit for bit but for a NaN's sign, which no comparison sees), and the
+/// largest magnitude is taken in another order (exact, and no difference of finite inputs is NaN; a
+/// NaN input makes det NaN, refused either way). So the same signs and the same refusals; the
+/// filter was a tenth of 3D refinement's instructions (4.5 10^6 calls on the wing at V = 4.46e-5).
 inline std::optional<Sign> insphere_filter(const double* a, const double* b, const double* c,
                                            const double* d, const double* e) noexcept {
 #if defined(__SSE2__)

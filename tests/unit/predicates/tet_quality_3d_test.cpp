@@ -583,6 +583,50 @@ TEST(Predicates_TetQuality3d, ScaledDifferencesMatchTheScalarLoopsBitForBit) {
     check_scaling_alike<1>(rng);
 }
 
+TEST(Predicates_TetQuality3d, TermOperationsRoundAsTwoScalarOperations) {
+    // A Term's value and permanent, however stored, are the scalar roundings: difference (d, |d|),
+    // sum and product lane by lane, difference (a - b, |a| + |b| as permanents add), exact
+    // scalings and negations; checked bit for bit, signed zeros and infinities included.
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> exponent(-60, 60), pick(0, 15);
+    const double specials[] = {0.0, -0.0, INFINITY, -INFINITY, NAN, 0x1p-1074};
+    const auto draw = [&] {
+        const int k = pick(rng);
+        return k < 10 ? std::ldexp(unit(rng), exponent(rng)) : specials[k % 6];
+    };
+    // The bits, except that every NaN is one (x + (-y) carries a NaN y's sign flipped, x - y
+    // not: no comparison and so no filter's answer can tell).
+    const auto bits = [](double x) {
+        return std::isnan(x) ? std::uint64_t{1} : std::bit_cast<std::uint64_t>(x);
+    };
+    for (int n = 0; n < 100000; ++n) {
+        const double x = draw(), y = draw(), z = draw();
+        const auto a = detail::difference(x), b = detail::difference(y);
+        const auto c = detail::rounded_constant(std::fabs(z));
+        ASSERT_EQ(bits(a.value()), bits(x));
+        ASSERT_EQ(bits(a.permanent()), bits(std::fabs(x)));
+        ASSERT_EQ(bits(c.permanent()), bits(std::fabs(z)));
+        const auto sum = a + b;
+        const auto difference = a - b;
+        const auto product = a * b;
+        const auto mixed = (a - b) * c;
+        ASSERT_EQ(bits(sum.value()), bits(x + y));
+        ASSERT_EQ(bits(sum.permanent()), bits(std::fabs(x) + std::fabs(y)));
+        ASSERT_EQ(bits(difference.value()), bits(x - y));
+        ASSERT_EQ(bits(difference.permanent()), bits(std::fabs(x) + std::fabs(y)));
+        ASSERT_EQ(bits(product.value()), bits(x * y));
+        ASSERT_EQ(bits(product.permanent()), bits(std::fabs(x) * std::fabs(y)));
+        ASSERT_EQ(bits(mixed.value()), bits((x - y) * std::fabs(z)));
+        ASSERT_EQ(bits(mixed.permanent()), bits((std::fabs(x) + std::fabs(y)) * std::fabs(z)));
+        const auto four = detail::scaled(difference, 4.0);
+        ASSERT_EQ(bits(four.value()), bits((x - y) * 4.0));
+        ASSERT_EQ(bits(detail::signed_by(a, true).value()), bits(-x));
+        ASSERT_EQ(bits(detail::signed_by(a, true).permanent()), bits(std::fabs(x)));
+        ASSERT_EQ(bits(detail::signed_by(a, false).value()), bits(x));
+    }
+}
+
 #if defined(EXACTMESH_PREDICATE_STATS)
 TEST(Predicates_TetQuality3d, StatsCountTheFilterAndTheExactStage) {
     reset_thread_stats();
