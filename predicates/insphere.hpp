@@ -8,6 +8,10 @@
 #include <cmath>
 #include <optional>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "predicates/filter_constants.hpp"
 #include "predicates/sign.hpp"
 #include "predicates/stats.hpp"
@@ -35,8 +39,62 @@ inline double insphere_fast(const double* a, const double* b, const double* c, c
 }
 
 /// Stage A; the evaluation order is the one modelled in proofs/gappa/insphere_filter.g.
+///
+/// With SSE2 (every x86-64) the same operations two at a time, rows paired in the lanes: each
+/// value is the same rounded sum, difference or product of the same operands as in the scalar
+/// form below (x - y as x + (-y) where a lane pair needs one subtraction and one addition: IEEE
+/// defines the difference so, bit for bit but for a NaN's sign, which no comparison sees), and the
+/// largest magnitude is taken in another order (exact, and no difference of finite inputs is NaN; a
+/// NaN input makes det NaN, refused either way). So the same signs and the same refusals; the
+/// filter was a tenth of 3D refinement's instructions (4.5 10^6 calls on the wing at V = 4.46e-5).
 inline std::optional<Sign> insphere_filter(const double* a, const double* b, const double* c,
                                            const double* d, const double* e) noexcept {
+#if defined(__SSE2__)
+    const __m128d ex = _mm_set1_pd(e[0]), ey = _mm_set1_pd(e[1]), ez = _mm_set1_pd(e[2]);
+    const __m128d x01 = _mm_sub_pd(_mm_set_pd(b[0], a[0]), ex);  // (aex, bex)
+    const __m128d x23 = _mm_sub_pd(_mm_set_pd(d[0], c[0]), ex);  // (cex, dex)
+    const __m128d y01 = _mm_sub_pd(_mm_set_pd(b[1], a[1]), ey);
+    const __m128d y23 = _mm_sub_pd(_mm_set_pd(d[1], c[1]), ey);
+    const __m128d z01 = _mm_sub_pd(_mm_set_pd(b[2], a[2]), ez);
+    const __m128d z23 = _mm_sub_pd(_mm_set_pd(d[2], c[2]), ez);
+    const __m128d xac = _mm_unpacklo_pd(x01, x23), xbd = _mm_unpackhi_pd(x01, x23);
+    const __m128d yac = _mm_unpacklo_pd(y01, y23), ybd = _mm_unpackhi_pd(y01, y23);
+    const __m128d zac = _mm_unpacklo_pd(z01, z23), zbd = _mm_unpackhi_pd(z01, z23);
+    const __m128d xca = _mm_shuffle_pd(xac, xac, 1), yca = _mm_shuffle_pd(yac, yac, 1);
+    const __m128d zca = _mm_shuffle_pd(zac, zac, 1), zdb = _mm_shuffle_pd(zbd, zbd, 1);
+    // (ab, cd), (bc, da), (ac, bd).
+    const __m128d ab_cd = _mm_sub_pd(_mm_mul_pd(xac, ybd), _mm_mul_pd(xbd, yac));
+    const __m128d bc_da = _mm_sub_pd(_mm_mul_pd(xbd, yca), _mm_mul_pd(xca, ybd));
+    const __m128d ac_bd = _mm_sub_pd(_mm_mul_pd(x01, y23), _mm_mul_pd(x23, y01));
+    // The first lane's middle term is subtracted (abc, bcd), the second's added (cda, dab).
+    const __m128d negate_first = _mm_set_pd(0.0, -0.0);
+    const __m128d ac_ac = _mm_unpacklo_pd(ac_bd, ac_bd), bd_bd = _mm_unpackhi_pd(ac_bd, ac_bd);
+    // (abc, cda) = (aez bc - bez ac + cez ab, cez da + dez ac + aez cd).
+    const __m128d abc_cda = _mm_add_pd(
+        _mm_add_pd(_mm_mul_pd(zac, bc_da), _mm_xor_pd(_mm_mul_pd(zbd, ac_ac), negate_first)),
+        _mm_mul_pd(zca, ab_cd));
+    // (bcd, dab) = (bez cd - cez bd + dez bc, dez ab + aez bd + bez da).
+    const __m128d bcd_dab = _mm_add_pd(_mm_add_pd(_mm_mul_pd(zbd, _mm_shuffle_pd(ab_cd, ab_cd, 1)),
+                                                  _mm_xor_pd(_mm_mul_pd(zca, bd_bd), negate_first)),
+                                       _mm_mul_pd(zdb, bc_da));
+    // (alift, blift), (clift, dlift).
+    const __m128d lift01 =
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(x01, x01), _mm_mul_pd(y01, y01)), _mm_mul_pd(z01, z01));
+    const __m128d lift23 =
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(x23, x23), _mm_mul_pd(y23, y23)), _mm_mul_pd(z23, z23));
+    // (dlift abc - clift dab, blift cda - alift bcd), then their sum.
+    const __m128d halves = _mm_sub_pd(
+        _mm_mul_pd(_mm_unpackhi_pd(lift23, lift01), abc_cda),
+        _mm_mul_pd(_mm_unpacklo_pd(lift23, lift01), _mm_shuffle_pd(bcd_dab, bcd_dab, 1)));
+    const double det = _mm_cvtsd_f64(halves) + _mm_cvtsd_f64(_mm_unpackhi_pd(halves, halves));
+    const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+    const __m128d largest =
+        _mm_max_pd(_mm_max_pd(_mm_and_pd(x01, magnitude), _mm_and_pd(x23, magnitude)),
+                   _mm_max_pd(_mm_max_pd(_mm_and_pd(y01, magnitude), _mm_and_pd(y23, magnitude)),
+                              _mm_max_pd(_mm_and_pd(z01, magnitude), _mm_and_pd(z23, magnitude))));
+    const double m =
+        std::max(_mm_cvtsd_f64(largest), _mm_cvtsd_f64(_mm_unpackhi_pd(largest, largest)));
+#else
     const double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
     const double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
     const double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
@@ -59,6 +117,7 @@ inline std::optional<Sign> insphere_filter(const double* a, const double* b, con
     const double mz = std::max(std::max(std::fabs(aez), std::fabs(bez)),
                                std::max(std::fabs(cez), std::fabs(dez)));
     const double m = std::max(std::max(mx, my), mz);
+#endif
     const double m2 = m * m;
     const double eps = insphere_filter_eps * m2 * m2 * m;
     if (det > eps || -det > eps) {

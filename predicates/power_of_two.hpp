@@ -36,6 +36,9 @@ class PowerOfTwo {
         return multiply_ ? value * unit_ : std::ldexp(value, shift_);
     }
     int shift() const noexcept { return shift_; }
+    /// Whether operator() is one multiplication, by factor() (2^shift a normal double).
+    bool is_multiplication() const noexcept { return multiply_; }
+    double factor() const noexcept { return unit_; }
 
   private:
     int shift_;

@@ -377,9 +377,9 @@ std::optional<Sign> compare_tet_volume_3d_filter(const double* a, const double* 
     if (!det_sign) return std::nullopt;
     if (volume_exponent < -900) {
         // 6 V' < 6 2^-899; |det'| >= |det| - eps P > |det| / 2 >= 2^-801 when certified so.
-        const double magnitude = std::fabs(det.value);
+        const double magnitude = std::fabs(det.value());
         if (magnitude >= 0x1p-800 &&
-            magnitude > 2 * tet_quality_3d_volume_filter_eps * det.permanent)
+            magnitude > 2 * tet_quality_3d_volume_filter_eps * det.permanent())
             return Sign::Positive;
         return std::nullopt;
     }

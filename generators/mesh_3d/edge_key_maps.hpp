@@ -27,6 +27,23 @@ inline bool same_key(const triangulation::Key3& a, const triangulation::Key3& b)
     return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
 }
 
+/// 64 - log2(slots) for a power-of-two table size: the shift of slot_of_hash.
+inline unsigned hash_shift(std::size_t slots) {
+    unsigned shift = 64;
+    for (std::size_t n = slots; n > 1; n >>= 1) --shift;
+    return shift;
+}
+
+/// The slot of a multiplicative hash: its top bits (Knuth's Fibonacci hashing), where every
+/// bit of the key has mixed in. Bits from the 20th up, as taken before, left the high half of
+/// an edge key (the smaller vertex) out of tables below 2^12 slots (a cavity's edges: those at
+/// one vertex all probed from one slot, three probes a lookup) and out of most of larger ones'
+/// bits. Only the slots change: the maps are asked for membership, never an order (entries()
+/// is sorted by its callers), so the meshes are the same bit for bit.
+inline std::size_t slot_of_hash(std::uint64_t hash, unsigned shift) {
+    return static_cast<std::size_t>(hash >> shift);
+}
+
 /// An open-addressing hash table of 64-bit keys (edge keys), cleared in O(1) by an epoch: the
 /// scratch sets and maps of one insertion, reused so that no insertion allocates (node-based
 /// std::unordered_set/map allocated per key: a tenth of refinement's instructions in malloc
@@ -75,14 +92,16 @@ class FlatKeyMap64 {
     std::vector<Slot> slots_;
     std::size_t size_ = 0;
     std::uint32_t epoch_ = 1;
+    unsigned shift_ = 64;  ///< 64 - log2(slots_.size())
 
     std::size_t position(std::uint64_t key) const {
-        return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (slots_.size() - 1);
+        return slot_of_hash(key * 0x9E3779B97F4A7C15ull, shift_);
     }
 
     void grow() {
         std::vector<Slot> old = std::move(slots_);
         slots_.assign(std::max<std::size_t>(64, 2 * old.size()), Slot{});
+        shift_ = hash_shift(slots_.size());
         const std::uint32_t live = epoch_;
         epoch_ = 1;
         size_ = 0;
@@ -97,7 +116,7 @@ class FlatKeyMap64 {
 };
 
 /// An open-addressing hash map that keeps its keys, with erase (tombstones); `Hash` gives a
-/// 64-bit hash whose bits from the 20th up pick the slot. Used as KeyMap64 and Key3Map below.
+/// 64-bit hash whose top bits pick the slot (slot_of_hash). Used as KeyMap64 and Key3Map below.
 template <class Key, class Value, class Hash>
 class TombstoneMap {
   public:
@@ -179,10 +198,9 @@ class TombstoneMap {
     std::vector<Slot> slots_;
     std::size_t size_ = 0;
     std::size_t tombstones_ = 0;
+    unsigned shift_ = 64;  ///< 64 - log2(slots_.size())
 
-    std::size_t position(const Key& key) const {
-        return static_cast<std::size_t>(Hash{}(key) >> 20) & (slots_.size() - 1);
-    }
+    std::size_t position(const Key& key) const { return slot_of_hash(Hash{}(key), shift_); }
 
     /// Twice the live entries' room (at least 64 slots), tombstones dropped.
     void rehash() {
@@ -190,6 +208,7 @@ class TombstoneMap {
         std::size_t capacity = 64;
         while (capacity < 4 * (size_ + 1)) capacity *= 2;
         slots_.assign(capacity, Slot{});
+        shift_ = hash_shift(capacity);
         size_ = 0;
         tombstones_ = 0;
         for (const Slot& slot : old)

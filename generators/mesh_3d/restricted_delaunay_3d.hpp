@@ -384,6 +384,7 @@ class RestrictedDelaunay3 {
         walk.v = v;
         walk.met.assign(1, vertex_tet_[v]);
         walk.next = 0;
+        if (other_pieces_.empty()) return;  // no star in pieces (no hash of v)
         const auto pieces = other_pieces_.find(v);
         if (pieces != other_pieces_.end()) {
             for (const TetIdx t : pieces->second) {
@@ -684,7 +685,7 @@ class RestrictedDelaunay3 {
             for (unsigned k = 0; k < 4; ++k) {
                 const FaceIdx g = m_.adj[4 * t + k];
                 const unsigned* lf = kFaceVertex[k];
-                if (g != kNone && in_attempt(triangulation::tet_of(g))) {
+                if (g != kNone && attempt_mark_(triangulation::tet_of(g))) {
                     // A face inside the cavity matters only as a subface, whose corners are
                     // all on the surface: most are not, and need no sorted key.
                     if (!on_boundary(m_.vertex(t, lf[0])) || !on_boundary(m_.vertex(t, lf[1])) ||
@@ -699,10 +700,12 @@ class RestrictedDelaunay3 {
                     }
                     continue;
                 }
-                const Key3 key = face_key(t, k);
-                if (is_split_face(split, key)) continue;  // a boundary subface being split
-                if (predicates::orient3d(point(m_.vertex(t, lf[0])), point(m_.vertex(t, lf[1])),
-                                         point(m_.vertex(t, lf[2])), p) != Sign::Positive) {
+                // A boundary subface being split; the sorted key only when some are.
+                if (!split.faces.empty() && is_split_face(split, face_key(t, k))) continue;
+                const VertIdx corner[3] = {m_.vertex(t, lf[0]), m_.vertex(t, lf[1]),
+                                           m_.vertex(t, lf[2])};
+                if (predicates::orient3d(point(corner[0]), point(corner[1]), point(corner[2]),
+                                         p) != Sign::Positive) {
                     const TetIdx bad = removable(t);
                     if (bad == kNone - 1) {
                         blind_face_ = 4 * t + k;
@@ -713,10 +716,11 @@ class RestrictedDelaunay3 {
                 }
                 for (unsigned i = 0; i < 3; ++i) {
                     // Only edges of two surface vertices are looked up below (a kept edge's
-                    // ends are on the surface): a cavity inside the volume hashes none.
-                    if (on_boundary(key[i]) && on_boundary(key[(i + 1) % 3]))
-                        boundary_edges.emplace(edge_key(key[i], key[(i + 1) % 3]), 0);
-                    boundary_vertex_mark_[key[i]] = boundary_epoch_;
+                    // ends are on the surface): a cavity inside the volume hashes none. (A set
+                    // of edges and one of vertices: the corners' order does not matter.)
+                    const VertIdx x = corner[i], y = corner[i == 2 ? 0 : i + 1];
+                    if (on_boundary(x) && on_boundary(y)) boundary_edges.emplace(edge_key(x, y), 0);
+                    boundary_vertex_mark_[x] = boundary_epoch_;
                 }
             }
         }
@@ -783,8 +787,8 @@ class RestrictedDelaunay3 {
         for (const TetIdx t : cavity_) {
             for (unsigned k = 0; k < 4; ++k) {
                 const FaceIdx g = m_.adj[4 * t + k];
-                if (g != kNone && in_attempt(triangulation::tet_of(g))) continue;
-                if (is_split_face(split, face_key(t, k))) continue;
+                if (g != kNone && attempt_mark_(triangulation::tet_of(g))) continue;
+                if (!split.faces.empty() && is_split_face(split, face_key(t, k))) continue;
                 const unsigned* lf = kFaceVertex[k];
                 faces.push_back({{m_.vertex(t, lf[0]), m_.vertex(t, lf[1]), m_.vertex(t, lf[2])},
                                  g,
@@ -792,15 +796,18 @@ class RestrictedDelaunay3 {
                                  max_volumes_.empty() ? 0.0 : max_volumes_[t]});
             }
         }
+        // m_.kill_tet on each, its free-list pushes made as one append (a push_back call each).
         for (const TetIdx t : cavity_) {
             marks_[t].attempt = 0;
-            m_.kill_tet(t);
+            m_.tv[4 * std::size_t{t}] = kNone;
         }
+        m_.free_tets.insert(m_.free_tets.end(), cavity_.begin(), cavity_.end());
         FlatKeyMap64<FaceIdx>& open = open_edges_;
         open.clear();
         std::vector<TetIdx>& created = commit_created_;
-        created.clear();
-        for (const BoundaryFace& f : faces) {
+        created.resize(faces.size());  // one per face, filled in order (no push_back per face)
+        for (std::size_t i = 0; i < faces.size(); ++i) {
+            const BoundaryFace& f = faces[i];
             const TetIdx t = m_.new_tet();
             if (attributes_.size() < m_.tet_slots() && !attributes_.empty())
                 attributes_.resize(m_.tet_slots(), 0.0);
@@ -815,9 +822,13 @@ class RestrictedDelaunay3 {
             m_.tv[s + 3] = v;
             m_.adj[s + 3] = f.outside;
             if (f.outside != kNone) m_.adj[f.outside] = static_cast<FaceIdx>(s + 3);
+            // The edge opposite corner j: the other two (a table: the loop is not unrolled, and
+            // (j + 1) % 3 was two multiplications per edge).
+            constexpr unsigned kOthers[3][2] = {{1, 2}, {2, 0}, {0, 1}};
             for (unsigned j = 0; j < 3; ++j) {
                 m_.adj[s + j] = kNone;
-                const std::uint64_t key = edge_key(f.corners[(j + 1) % 3], f.corners[(j + 2) % 3]);
+                const std::uint64_t key =
+                    edge_key(f.corners[kOthers[j][0]], f.corners[kOthers[j][1]]);
                 const auto [slot, added] = open.emplace(key, static_cast<FaceIdx>(s + j));
                 if (!added) {
                     EM_ASSERT(*slot != kNone);
@@ -828,13 +839,15 @@ class RestrictedDelaunay3 {
             for (unsigned k = 0; k < 4; ++k) {
                 const VertIdx w = m_.tv[s + k];
                 // A star in pieces keeps the piece vertex_tet_ pointed into (note_pieces below
-                // drops it again if it was this cavity's).
-                const auto pieces = other_pieces_.find(w);
-                if (pieces != other_pieces_.end() && vertex_tet_[w] != t)
-                    pieces->second.push_back(vertex_tet_[w]);
+                // drops it again if it was this cavity's). Most meshes have none: no hash then.
+                if (!other_pieces_.empty()) {
+                    const auto pieces = other_pieces_.find(w);
+                    if (pieces != other_pieces_.end() && vertex_tet_[w] != t)
+                        pieces->second.push_back(vertex_tet_[w]);
+                }
                 vertex_tet_[w] = t;
             }
-            created.push_back(t);
+            created[i] = t;
         }
         // Subfaces and subsegments.
         for (const Key3& key : split.faces) remove_subface(key);

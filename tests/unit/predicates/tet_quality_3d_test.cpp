@@ -9,13 +9,16 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <random>
 #include <vector>
 
 #include "predicates/dot_sign_3d.hpp"
+#include "predicates/relative_filter.hpp"
 #include "predicates/stats.hpp"
 #include "tests/support/test_scale.hpp"
 
@@ -516,6 +519,112 @@ TEST(Predicates_TetQuality3d, FiltersAbstainOnTiesAndOutsideTheirWindow) {
               Sign::Positive);
     EXPECT_EQ(compare_tet_volume_3d(t0.data(), t1.data(), t2.data(), t3.data(), 0x1p-1074),
               Sign::Positive);
+}
+
+/// detail::scale_differences as its scalar loops wrote it (the reference for its SSE2 form).
+template <std::size_t N>
+std::optional<int> scale_differences_scalar(double (&d)[N], double window_min) {
+    double largest = 0;
+    for (const double x : d) largest = std::max(largest, std::fabs(x));
+    if (largest == 0 || !std::isfinite(largest)) return std::nullopt;
+    const int shift = -std::ilogb(largest);
+    for (double& x : d) {
+        x = std::ldexp(x, shift);
+        if (x != 0 && std::fabs(x) < window_min) return std::nullopt;
+    }
+    return shift;
+}
+
+template <std::size_t N>
+void expect_scaled_alike(const std::array<double, N>& input, double window_min) {
+    double fast[N], reference[N];
+    std::copy(input.begin(), input.end(), fast);
+    std::copy(input.begin(), input.end(), reference);
+    const auto shift = detail::scale_differences(fast, window_min);
+    const auto expected = scale_differences_scalar(reference, window_min);
+    ASSERT_EQ(shift, expected);
+    if (!shift) return;  // the callers drop the differences then
+    for (std::size_t i = 0; i < N; ++i)
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(fast[i]),
+                  std::bit_cast<std::uint64_t>(reference[i]));
+}
+
+template <std::size_t N>
+void check_scaling_alike(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> exponent(-1074, 1023), pick(0, 11);
+    const double specials[] = {0.0,      -0.0,     0x1p-1074, -0x1p-1074, 0x1p-1022,
+                               0x1p1023, INFINITY, -INFINITY, NAN,        1.0};
+    for (int round = 0; round < 20000; ++round) {
+        std::array<double, N> d{};
+        const int e = exponent(rng);
+        for (double& x : d) {
+            const int kind = pick(rng);
+            if (kind < 8) {
+                x = std::ldexp(unit(rng), std::clamp(e - kind * 8, -1074, 1023));
+            } else if (kind < 10) {
+                x = specials[static_cast<std::size_t>(pick(rng)) % std::size(specials)];
+            } else {
+                x = 0;
+            }
+        }
+        for (const double window : {0x1p-50, 0x1p-10, 0.5}) expect_scaled_alike(d, window);
+    }
+}
+
+TEST(Predicates_TetQuality3d, ScaledDifferencesMatchTheScalarLoopsBitForBit) {
+    // Every filter of tet_quality_3d and dot_sign_3d starts here: the same shift, the same bits
+    // (NaN skipped by the largest, infinities and windows refused alike), for the sizes in use.
+    std::mt19937_64 rng(2026);
+    check_scaling_alike<6>(rng);
+    check_scaling_alike<9>(rng);
+    check_scaling_alike<18>(rng);
+    check_scaling_alike<5>(rng);
+    check_scaling_alike<1>(rng);
+}
+
+TEST(Predicates_TetQuality3d, TermOperationsRoundAsTwoScalarOperations) {
+    // A Term's value and permanent, however stored, are the scalar roundings: difference (d, |d|),
+    // sum and product lane by lane, difference (a - b, |a| + |b| as permanents add), exact
+    // scalings and negations; checked bit for bit, signed zeros and infinities included.
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> exponent(-60, 60), pick(0, 15);
+    const double specials[] = {0.0, -0.0, INFINITY, -INFINITY, NAN, 0x1p-1074};
+    const auto draw = [&] {
+        const int k = pick(rng);
+        return k < 10 ? std::ldexp(unit(rng), exponent(rng)) : specials[k % 6];
+    };
+    // The bits, except that every NaN is one (x + (-y) carries a NaN y's sign flipped, x - y
+    // not: no comparison and so no filter's answer can tell).
+    const auto bits = [](double x) {
+        return std::isnan(x) ? std::uint64_t{1} : std::bit_cast<std::uint64_t>(x);
+    };
+    for (int n = 0; n < 100000; ++n) {
+        const double x = draw(), y = draw(), z = draw();
+        const auto a = detail::difference(x), b = detail::difference(y);
+        const auto c = detail::rounded_constant(std::fabs(z));
+        ASSERT_EQ(bits(a.value()), bits(x));
+        ASSERT_EQ(bits(a.permanent()), bits(std::fabs(x)));
+        ASSERT_EQ(bits(c.permanent()), bits(std::fabs(z)));
+        const auto sum = a + b;
+        const auto difference = a - b;
+        const auto product = a * b;
+        const auto mixed = (a - b) * c;
+        ASSERT_EQ(bits(sum.value()), bits(x + y));
+        ASSERT_EQ(bits(sum.permanent()), bits(std::fabs(x) + std::fabs(y)));
+        ASSERT_EQ(bits(difference.value()), bits(x - y));
+        ASSERT_EQ(bits(difference.permanent()), bits(std::fabs(x) + std::fabs(y)));
+        ASSERT_EQ(bits(product.value()), bits(x * y));
+        ASSERT_EQ(bits(product.permanent()), bits(std::fabs(x) * std::fabs(y)));
+        ASSERT_EQ(bits(mixed.value()), bits((x - y) * std::fabs(z)));
+        ASSERT_EQ(bits(mixed.permanent()), bits((std::fabs(x) + std::fabs(y)) * std::fabs(z)));
+        const auto four = detail::scaled(difference, 4.0);
+        ASSERT_EQ(bits(four.value()), bits((x - y) * 4.0));
+        ASSERT_EQ(bits(detail::signed_by(a, true).value()), bits(-x));
+        ASSERT_EQ(bits(detail::signed_by(a, true).permanent()), bits(std::fabs(x)));
+        ASSERT_EQ(bits(detail::signed_by(a, false).value()), bits(x));
+    }
 }
 
 #if defined(EXACTMESH_PREDICATE_STATS)
