@@ -15,6 +15,7 @@
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/sizing/size_function.hpp"
+#include "generators/stretched/metric_2d.hpp"
 #include "generators/stretched/metric_delaunay_2d.hpp"
 #include "generators/stretched/metric_field_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
@@ -35,6 +36,25 @@ struct SquareWithHole {
           holes{0.5 * s, 0.5 * s} {}
     triangulation::Pslg pslg() const { return {xy, segments, holes, {}}; }
 };
+
+/// A boundary layer curved around the circle of radius 0.3 s about (0.5 s, 0.5 s) (issue 14's
+/// curved layer): size 0.05 s along the circle's tangent, s (first + 0.3 |r / s - 0.3|) across it
+/// (aspect ratio 0.05 / first on the circle), the metric rotating with the tangent.
+inline generators::MetricField2 circle_layer(double first, double s = 1) {
+    return generators::MetricField2::analytic(
+        [first, s](double x, double y) {
+            const double dx = x - 0.5 * s, dy = y - 0.5 * s, r = std::hypot(dx, dy);
+            generators::Metric2 m;
+            m.h1 = s * (first + 0.3 * std::fabs(r / s - 0.3));
+            m.h2 = 0.05 * s;
+            if (r > 0) {
+                m.c = dx / r;
+                m.s = dy / r;
+            }
+            return m;
+        },
+        "circle boundary layer");
+}
 
 /// metric_delaunay_2d of `domain` in `metric`.
 inline generators::MetricDelaunayResult2 metric_delaunay_of(

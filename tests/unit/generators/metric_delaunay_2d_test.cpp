@@ -31,6 +31,7 @@ namespace {
 
 using Domain = exactmesh::testing::SquareWithHole;
 
+using exactmesh::testing::circle_layer;
 using exactmesh::testing::expect_valid_metric_mesh;
 using exactmesh::testing::metric_delaunay_of;
 
@@ -96,25 +97,6 @@ TEST(MetricDelaunay2d, ScaledDomainAndMetricGiveTheSameMeshScaled) {
             EXPECT_EQ(r.mesh.mesh.xy[i], std::ldexp(reference.mesh.mesh.xy[i], k)) << i;
         }
     }
-}
-
-/// A boundary layer curved around the circle of radius 0.3 s about (0.5 s, 0.5 s) (issue 14's
-/// known gap): size 0.05 s along the circle's tangent, s (first + 0.3 |r / s - 0.3|) across it
-/// (aspect ratio 0.05 / first on the circle), the metric rotating with the tangent.
-gen::MetricField2 circle_layer(double first, double s = 1) {
-    return gen::MetricField2::analytic(
-        [first, s](double x, double y) {
-            const double dx = x - 0.5 * s, dy = y - 0.5 * s, r = std::hypot(dx, dy);
-            gen::Metric2 m;
-            m.h1 = s * (first + 0.3 * std::fabs(r / s - 0.3));
-            m.h2 = 0.05 * s;
-            if (r > 0) {
-                m.c = dx / r;
-                m.s = dy / r;
-            }
-            return m;
-        },
-        "circle boundary layer");
 }
 
 /// The square [0, s]^2 (no hole).

@@ -16,28 +16,13 @@
 #include "generators/stretched/metric_2d.hpp"
 #include "generators/stretched/metric_field_2d.hpp"
 #include "generators/stretched/turning_layer_columns_2d.hpp"
+#include "tests/support/stretched_domains_2d.hpp"
 
 namespace gen = exactmesh::generators;
 
 namespace {
 
-/// The curved layer of the metric Delaunay tests: 0.05 s along the circle of radius 0.3 s about
-/// (0.5 s, 0.5 s), s (first + 0.3 |r / s - 0.3|) across.
-gen::MetricField2 circle_layer(double first, double s = 1) {
-    return gen::MetricField2::analytic(
-        [first, s](double x, double y) {
-            const double dx = x - 0.5 * s, dy = y - 0.5 * s, r = std::hypot(dx, dy);
-            gen::Metric2 m;
-            m.h1 = s * (first + 0.3 * std::fabs(r / s - 0.3));
-            m.h2 = 0.05 * s;
-            if (r > 0) {
-                m.c = dx / r;
-                m.s = dy / r;
-            }
-            return m;
-        },
-        "circle boundary layer");
-}
+using exactmesh::testing::circle_layer;
 
 std::vector<double> columns_of(const gen::MetricField2& field, double s = 1) {
     const auto inside = [s](double x, double y) { return x > 0 && x < s && y > 0 && y < s; };
