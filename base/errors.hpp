@@ -36,50 +36,49 @@ struct SourceLocation {
 
 /// Base of every exactmesh exception; carries where it was raised.
 class Error : public std::runtime_error {
-public:
-    explicit Error(const std::string& what,
-                   SourceLocation where = SourceLocation::current())
+  public:
+    explicit Error(const std::string& what, SourceLocation where = SourceLocation::current())
         : std::runtime_error(what), where_(where) {}
     const SourceLocation& where() const noexcept { return where_; }
 
-private:
+  private:
     SourceLocation where_;
 };
 
 /// Bad input: names the file, line and value when they are known.
 class InputError : public Error {
-public:
+  public:
     using Error::Error;
 };
 
 /// A coordinate is NaN or infinite.
 class NonFiniteCoordinate : public InputError {
-public:
+  public:
     NonFiniteCoordinate(const std::string& what, std::uint32_t vertex,
                         SourceLocation where = SourceLocation::current())
         : InputError(what, where), vertex_(vertex) {}
     std::uint32_t vertex() const noexcept { return vertex_; }
 
-private:
+  private:
     std::uint32_t vertex_;
 };
 
 /// A construction (circumcenter, intersection) that has no finite answer.
 class GeometryError : public Error {
-public:
+  public:
     using Error::Error;
 };
 
 /// A broken internal invariant: a bug in exactmesh, never the caller's fault.
 class InternalError : public Error {
-public:
+  public:
     using Error::Error;
 };
 
 }  // namespace exactmesh
 
 /// Always-on O(1) invariant check; throws exactmesh::InternalError naming the condition.
-#define EM_ASSERT(cond)                                                           \
-    do {                                                                          \
+#define EM_ASSERT(cond)                                                            \
+    do {                                                                           \
         if (!(cond)) throw ::exactmesh::InternalError("assertion failed: " #cond); \
     } while (false)

@@ -224,8 +224,8 @@ int main(int argc, char** argv) {
                          ", \"formula\": " + quoted(ad::field_formula(name)) + "}");
     const std::string uniform = uniform_runs(s);
     std::vector<std::string> transient;
-    for (const ad::Method method : {ad::Method::Insertion, ad::Method::HRefinement,
-                                    ad::Method::Steiner, ad::Method::Remesh})
+    for (const ad::Method method :
+         {ad::Method::Insertion, ad::Method::HRefinement, ad::Method::Steiner, ad::Method::Remesh})
         transient.push_back(transient_run(s, method, domain, initial));
     std::ofstream out(argv[1]);
     out << "{\"domain\": \"naca0012\", \"generator\": " << quoted(ad::kGenerator)

@@ -29,11 +29,11 @@
 #include "generators/adaptation/h_adaptation_2d.hpp"
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
 #include "generators/adaptation/interpolation_error.hpp"
-#include "generators/topology/mesh_edges.hpp"
 #include "generators/adaptation/steiner_restart_2d.hpp"
 #include "generators/adaptation/vertex_field.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/topology/mesh_edges.hpp"
 
 namespace exactmesh::bench::adaptation {
 

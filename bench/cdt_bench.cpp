@@ -60,7 +60,8 @@ const gen::PslgInput& input(Workload w, std::uint32_t points, std::uint32_t segm
     const auto key = std::make_tuple(static_cast<int>(w), points, segments);
     auto it = cache.find(key);
     if (it == cache.end()) {
-        const auto d = w == Workload::Chains ? gen::PslgDistribution::Chains : gen::PslgDistribution::Polygon;
+        const auto d =
+            w == Workload::Chains ? gen::PslgDistribution::Chains : gen::PslgDistribution::Polygon;
         it = cache.emplace(key, gen::generate_pslg(d, points, segments, kInputSeed)).first;
     }
     return it->second;
@@ -105,22 +106,26 @@ void BM_cdt_ours(benchmark::State& state, Workload w, tri::SegmentRecovery recov
 
 #if defined(EXACTMESH_WITH_CGAL)
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-using CgalCdt = CGAL::Constrained_Delaunay_triangulation_2<Epick, CGAL::Default, CGAL::Exact_intersections_tag>;
+using CgalCdt =
+    CGAL::Constrained_Delaunay_triangulation_2<Epick, CGAL::Default, CGAL::Exact_intersections_tag>;
 
 void BM_cdt_cgal(benchmark::State& state, Workload w) {
     const auto points = static_cast<std::uint32_t>(state.range(0));
     const auto segments = static_cast<std::uint32_t>(state.range(1));
     const gen::PslgInput& in = input(w, points, segments);
     std::vector<Epick::Point_2> cgal_points;
-    for (std::size_t i = 0; i < in.xy.size(); i += 2) cgal_points.emplace_back(in.xy[i], in.xy[i + 1]);
+    for (std::size_t i = 0; i < in.xy.size(); i += 2)
+        cgal_points.emplace_back(in.xy[i], in.xy[i + 1]);
     std::vector<std::pair<std::size_t, std::size_t>> constraints;
-    for (std::size_t s = 0; s < in.segments.size(); s += 2) constraints.emplace_back(in.segments[s], in.segments[s + 1]);
+    for (std::size_t s = 0; s < in.segments.size(); s += 2)
+        constraints.emplace_back(in.segments[s], in.segments[s + 1]);
     bool first = true;
     double peak = 0, triangles = 0;
     for (auto _ : state) {
         const std::size_t before = first ? start_heap_measurement() : 0;
         auto cdt = std::make_unique<CgalCdt>();
-        cdt->insert_constraints(cgal_points.begin(), cgal_points.end(), constraints.begin(), constraints.end());
+        cdt->insert_constraints(cgal_points.begin(), cgal_points.end(), constraints.begin(),
+                                constraints.end());
         if (first) {
             peak = heap_growth_since(before);
             triangles = static_cast<double>(cdt->number_of_faces());
@@ -149,18 +154,28 @@ void register_all() {
                           {Workload::Polygon, "polygon", 1000000, 100000}};
     for (const Size& s : sizes) {
         const std::string suffix = std::string("/") + s.name;
-        benchmark::RegisterBenchmark(("BM_cdt_swap" + suffix).c_str(), BM_cdt_ours, s.workload, tri::SegmentRecovery::Swap)
-            ->Args({s.points, s.segments})->Unit(benchmark::kMillisecond)->UseRealTime();
-        benchmark::RegisterBenchmark(("BM_cdt_cavity" + suffix).c_str(), BM_cdt_ours, s.workload, tri::SegmentRecovery::Cavity)
-            ->Args({s.points, s.segments})->Unit(benchmark::kMillisecond)->UseRealTime();
+        benchmark::RegisterBenchmark(("BM_cdt_swap" + suffix).c_str(), BM_cdt_ours, s.workload,
+                                     tri::SegmentRecovery::Swap)
+            ->Args({s.points, s.segments})
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        benchmark::RegisterBenchmark(("BM_cdt_cavity" + suffix).c_str(), BM_cdt_ours, s.workload,
+                                     tri::SegmentRecovery::Cavity)
+            ->Args({s.points, s.segments})
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
         if (s.points <= 100000) {
-            benchmark::RegisterBenchmark(("BM_cdt_conforming" + suffix).c_str(), BM_cdt_ours, s.workload,
-                                         tri::SegmentRecovery::Conforming)
-                ->Args({s.points, s.segments})->Unit(benchmark::kMillisecond)->UseRealTime();
+            benchmark::RegisterBenchmark(("BM_cdt_conforming" + suffix).c_str(), BM_cdt_ours,
+                                         s.workload, tri::SegmentRecovery::Conforming)
+                ->Args({s.points, s.segments})
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime();
         }
 #if defined(EXACTMESH_WITH_CGAL)
         benchmark::RegisterBenchmark(("BM_cdt_cgal" + suffix).c_str(), BM_cdt_cgal, s.workload)
-            ->Args({s.points, s.segments})->Unit(benchmark::kMillisecond)->UseRealTime();
+            ->Args({s.points, s.segments})
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
 #endif
     }
 }

@@ -83,9 +83,9 @@ int max_log2_points() {
 /// largest size too; with the plain walk from the last insertion it cost ~sqrt(n) steps per
 /// point, Theta(n^1.5), about 35 s per construction at 2^20, and stopped at 2^16.
 int random_max_log2_points() {
-    static const int value =
-        std::min(log2_from_environment("EXACTMESH_BENCH_RANDOM_MAX_LOG2", max_log2_points(), 10, 22),
-                 max_log2_points());
+    static const int value = std::min(
+        log2_from_environment("EXACTMESH_BENCH_RANDOM_MAX_LOG2", max_log2_points(), 10, 22),
+        max_log2_points());
     return value;
 }
 
@@ -297,8 +297,8 @@ void register_all() {
     }
     // A degenerate input for gift wrapping: on the integer grid every circle through three
     // neighbours passes through a fourth, a candidate the exact incircle decides.
-    register_family({"tanemura-merriam", Distribution::Grid, InsertionOrder::Given, "none"}, 10,
-                    16, benchmark::oNLogN);
+    register_family({"tanemura-merriam", Distribution::Grid, InsertionOrder::Given, "none"}, 10, 16,
+                    benchmark::oNLogN);
     // The adversary (see PointOrder): the parabola by decreasing t, inserted as given, against
     // the same points shuffled; and, for the record, as generated (increasing t), in that order.
     const Distribution parabola = Distribution::Parabola;

@@ -30,8 +30,8 @@
 #include <vector>
 
 #include "bench/bench_support.hpp"
-#include "predicates/orient3d.hpp"
 #include "predicates/angle_comparisons_3d.hpp"
+#include "predicates/orient3d.hpp"
 #include "triangulation/modification/edge_face_swap_3d.hpp"
 #include "triangulation/modification/edge_removal_3d.hpp"
 #include "triangulation/modification/vertex_removal_3d.hpp"
@@ -54,9 +54,10 @@ tri::Tetrahedralization3 cgal_delaunay(const std::vector<double>& xyz) {
     tri::Tetrahedralization3 mesh;
     mesh.xyz = xyz;
     for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
-        std::array<std::uint32_t, 4> t{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
-                                       c->vertex(3)->info()};
-        if (exactmesh::predicates::orient3d(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])) ==
+        std::array<std::uint32_t, 4> t{c->vertex(0)->info(), c->vertex(1)->info(),
+                                       c->vertex(2)->info(), c->vertex(3)->info()};
+        if (exactmesh::predicates::orient3d(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]),
+                                            mesh.point(t[3])) ==
             exactmesh::predicates::Sign::Negative) {
             std::swap(t[0], t[1]);
         }
@@ -96,8 +97,9 @@ const tri::Tetrahedralization3& perturbed_start(std::uint32_t n) {
         bool ok = true;
         for (const tri::TetIdx t : star) {
             const tri::Tet q = mesh.tet(t);
-            ok = ok && exactmesh::predicates::orient3d(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]),
-                                                       mesh.point(q[3])) == exactmesh::predicates::Sign::Positive;
+            ok = ok && exactmesh::predicates::orient3d(mesh.point(q[0]), mesh.point(q[1]),
+                                                       mesh.point(q[2]), mesh.point(q[3])) ==
+                           exactmesh::predicates::Sign::Positive;
         }
         if (!ok) {
             for (int k = 0; k < 3; ++k) mesh.xyz[3 * v + static_cast<std::size_t>(k)] = old[k];
@@ -114,13 +116,15 @@ void swap_benchmark(benchmark::State& state) {
     for (auto _ : state) {
         const auto begin = std::chrono::steady_clock::now();
         tri::TetMesh3 mesh = tri::make_tet_mesh_3d(start);
-        const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
+        const tri::EdgeFaceSwapCounters counters =
+            tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
         benchmark::DoNotOptimize(mesh.tv.data());
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
         flips += counters.flips();
         stalled = counters.stalled_faces;
     }
-    state.counters["flips/pt"] = static_cast<double>(flips) / static_cast<double>(state.iterations()) / n;
+    state.counters["flips/pt"] =
+        static_cast<double>(flips) / static_cast<double>(state.iterations()) / n;
     state.counters["flips/s"] = static_cast<double>(flips) / seconds;
     state.counters["stalled"] = static_cast<double>(stalled);
     state.SetComplexityN(n);
@@ -150,8 +154,8 @@ void max_min_benchmark(benchmark::State& state) {
             std::vector<tri::TetIdx> bad;
             for (tri::TetIdx t = 0; t < mesh.tet_slots(); ++t)
                 if (!mesh.is_dead(t) && smallest_degrees(mesh, t) < 15) bad.push_back(t);
-            removals = tri::remove_edges_3d(mesh, tri::SwapCriterion3::MaxMinDihedral, bad, {})
-                           .removals;
+            removals =
+                tri::remove_edges_3d(mesh, tri::SwapCriterion3::MaxMinDihedral, bad, {}).removals;
             tri::swap_faces_3d(mesh, tri::SwapCriterion3::MaxMinDihedral);
         }
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
@@ -182,7 +186,8 @@ void removal_benchmark(benchmark::State& state) {
         bool inside = true;
         for (const tri::TetIdx t : tri::vertex_star(probe, v)) {
             const unsigned lv = probe.slot_of(t, v);
-            for (unsigned k = 0; k < 4; ++k) inside = inside && (k == lv || probe.adj[4 * t + k] != tri::kNone);
+            for (unsigned k = 0; k < 4; ++k)
+                inside = inside && (k == lv || probe.adj[4 * t + k] != tri::kNone);
         }
         if (inside) interior.push_back(v);
     }
@@ -202,8 +207,9 @@ void removal_benchmark(benchmark::State& state) {
     }
     const auto removed = static_cast<double>(counters.removed);
     state.counters["removals/s"] = removed * static_cast<double>(state.iterations()) / seconds;
-    state.counters["flips/removal"] =
-        static_cast<double>(counters.flips_23 + counters.flips_32 + counters.flips_44 + counters.flips_41) / removed;
+    state.counters["flips/removal"] = static_cast<double>(counters.flips_23 + counters.flips_32 +
+                                                          counters.flips_44 + counters.flips_41) /
+                                      removed;
     state.counters["star/removal"] = static_cast<double>(counters.star_tets) / removed;
     state.counters["cavity"] = static_cast<double>(counters.cavity_fallbacks);
     state.SetComplexityN(n);
@@ -213,7 +219,11 @@ void removal_benchmark(benchmark::State& state) {
 
 BENCHMARK(swap_benchmark)
     ->Name("BM_swap3d_delaunay/perturbed")
-    ->Arg(1000)->Arg(3162)->Arg(10000)->Arg(31623)->Arg(100000)
+    ->Arg(1000)
+    ->Arg(3162)
+    ->Arg(10000)
+    ->Arg(31623)
+    ->Arg(100000)
     ->Unit(benchmark::kMillisecond)
     ->Complexity();
 BENCHMARK(max_min_benchmark)
@@ -222,7 +232,11 @@ BENCHMARK(max_min_benchmark)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(removal_benchmark)
     ->Name("BM_vertex_removal/uniform")
-    ->Arg(1000)->Arg(3162)->Arg(10000)->Arg(31623)->Arg(100000)
+    ->Arg(1000)
+    ->Arg(3162)
+    ->Arg(10000)
+    ->Arg(31623)
+    ->Arg(100000)
     ->Unit(benchmark::kMillisecond)
     ->Complexity();
 

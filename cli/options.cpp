@@ -12,8 +12,7 @@ namespace exactmesh::cli {
 CLI::Validator whole_number_at_most(std::uint64_t max) {
     // No description of its own: CLI11 appends it to the option's type name, and "UINT:UINT"
     // read as two numbers (a hostile-input campaign tried `--max-steiner 0:30000`).
-    return CLI::Validator([max](std::string& text) { return check_unsigned_text(text, max); },
-                          "");
+    return CLI::Validator([max](std::string& text) { return check_unsigned_text(text, max); }, "");
 }
 
 CLI::Validator finite_positive_number() {

@@ -44,8 +44,9 @@ void run_swap3d(const Swap3dArguments& arguments) {
     refuse_to_overwrite_inputs({arguments.input, arguments.ele_path}, {output});
     const tri::SwapCriterion3 criterion = tri::swap_criterion_3d_from_name(arguments.criterion);
     if (arguments.edge_removal && criterion == tri::SwapCriterion3::Delaunay)
-        throw InputError("--edge-removal needs a quality criterion (max-min-dihedral, "
-                         "min-max-dihedral or volume-edge), not delaunay");
+        throw InputError(
+            "--edge-removal needs a quality criterion (max-min-dihedral, "
+            "min-max-dihedral or volume-edge), not delaunay");
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
     const io::TetgenEleFile ele =
         io::read_tetgen_ele(arguments.ele_path, nodes.first_index, nodes.vertex_count());
@@ -86,7 +87,8 @@ void run_swap3d(const Swap3dArguments& arguments) {
             if (!work.is_dead(t)) next.push_back(t);
         while (true) {
             made.clear();
-            const tri::EdgeRemovalCounters round = tri::remove_edges_3d(work, criterion, next, follow);
+            const tri::EdgeRemovalCounters round =
+                tri::remove_edges_3d(work, criterion, next, follow);
             add_counters(tri::kEdgeRemovalCounterNames, removal, round);
             if (round.removals == 0) break;
             std::vector<tri::FaceIdx> seeds;

@@ -30,15 +30,15 @@ struct NodeFile {
 /// The content of a Triangle .poly file: a planar straight-line graph. Vertex and segment
 /// numbers are 0-based in memory; `vertices.first_index` is the file's base for both.
 struct PolyFile {
-    NodeFile vertices;                    ///< the vertex section (or the .node file it names)
-    bool vertices_from_node_file = false; ///< the .poly announced 0 vertices: read from .node
-    std::vector<VertIdx> segments;        ///< 2·#S endpoint indices, 0-based
+    NodeFile vertices;                     ///< the vertex section (or the .node file it names)
+    bool vertices_from_node_file = false;  ///< the .poly announced 0 vertices: read from .node
+    std::vector<VertIdx> segments;         ///< 2·#S endpoint indices, 0-based
     bool has_segment_markers = false;
     std::vector<std::int32_t> segment_markers;  ///< #S when has_segment_markers
-    std::vector<double> holes;            ///< 2·#H points inside holes
-    std::vector<double> regions;          ///< 4·#R: x, y, attribute, maximum area (-1: none)
-    std::vector<std::uint64_t> hole_lines;    ///< #H: the line of each hole (for messages)
-    std::vector<std::uint64_t> region_lines;  ///< #R: the line of each region
+    std::vector<double> holes;                  ///< 2·#H points inside holes
+    std::vector<double> regions;                ///< 4·#R: x, y, attribute, maximum area (-1: none)
+    std::vector<std::uint64_t> hole_lines;      ///< #H: the line of each hole (for messages)
+    std::vector<std::uint64_t> region_lines;    ///< #R: the line of each region
 
     std::uint32_t segment_count() const { return static_cast<std::uint32_t>(segments.size() / 2); }
 };

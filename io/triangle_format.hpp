@@ -49,7 +49,8 @@ PolyFile parse_poly(std::string_view text, const std::string& file_name,
 std::string format_poly(const NodeFile& vertices, std::span<const VertIdx> segments,
                         std::span<const std::int32_t> segment_markers = {});
 void write_poly(const std::filesystem::path& path, const NodeFile& vertices,
-                std::span<const VertIdx> segments, std::span<const std::int32_t> segment_markers = {});
+                std::span<const VertIdx> segments,
+                std::span<const std::int32_t> segment_markers = {});
 
 /// Reads a .ele file: `<#triangles> <nodes per triangle 3|6> <#attributes>`, then
 /// `<number> <v1> <v2> <v3> [3 more nodes] [attributes...]`. Triangles are numbered

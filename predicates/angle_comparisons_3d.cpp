@@ -231,7 +231,6 @@ void exact_volume_edge_terms(const TetCorners& p, mpq_class& volume6, mpq_class&
               exact_dot(bd, bd) + exact_dot(cd, cd);
 }
 
-
 }  // namespace
 
 namespace {

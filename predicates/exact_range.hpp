@@ -7,8 +7,8 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <initializer_list>
 #include <limits>
 #include <string>
@@ -27,7 +27,7 @@ inline int lowest_bit_exponent(double x) noexcept {
     const auto biased = static_cast<int>((bits >> 52) & 0x7FFu);
     std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
     if (biased != 0) mantissa |= std::uint64_t{1} << 52;  // normal: implicit leading bit
-    const int unit = (biased == 0 ? 1 : biased) - 1075;    // exponent of the mantissa's last bit
+    const int unit = (biased == 0 ? 1 : biased) - 1075;   // exponent of the mantissa's last bit
     return unit + std::countr_zero(mantissa);
 }
 

@@ -177,8 +177,9 @@ Expansion<2 * A * B> product(const Expansion<A>& e, const Expansion<B>& f) noexc
     double* next = scratch.components.data();
     int length = 0;
     for (int i = 0; i < f.length; ++i) {
-        term.length = scale_expansion(e.length, e.components.data(),
-                                      f.components[static_cast<unsigned>(i)], term.components.data());
+        term.length =
+            scale_expansion(e.length, e.components.data(), f.components[static_cast<unsigned>(i)],
+                            term.components.data());
         length = expansion_sum(length, sum, term.length, term.components.data(), next);
         std::swap(sum, next);
     }

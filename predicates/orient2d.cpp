@@ -49,8 +49,8 @@ Sign orient2d_exact(const double* a, const double* b, const double* c) {
     }
     // Stage C: add the first-order terms of the difference tails.
     det += (adx * bdy_tail + bdy * adx_tail) - (ady * bdx_tail + bdx * ady_tail);
-    if (adaptive::certified(det, adaptive::ccw_errbound_c * detsum +
-                                     adaptive::result_errbound * std::fabs(det))) {
+    if (adaptive::certified(
+            det, adaptive::ccw_errbound_c * detsum + adaptive::result_errbound * std::fabs(det))) {
         EM_STAT(orient2d, adaptive);
         return sign_of(det);
     }

@@ -6,7 +6,9 @@ namespace exactmesh::predicates {
 
 enum class Sign : int { Negative = -1, Zero = 0, Positive = 1 };
 
-constexpr Sign operator-(Sign s) { return static_cast<Sign>(-static_cast<int>(s)); }
+constexpr Sign operator-(Sign s) {
+    return static_cast<Sign>(-static_cast<int>(s));
+}
 
 constexpr Sign operator*(Sign a, Sign b) {
     return static_cast<Sign>(static_cast<int>(a) * static_cast<int>(b));
@@ -17,6 +19,8 @@ constexpr Sign sign_of(double x) {
     return x > 0.0 ? Sign::Positive : (x < 0.0 ? Sign::Negative : Sign::Zero);
 }
 
-constexpr int to_int(Sign s) { return static_cast<int>(s); }
+constexpr int to_int(Sign s) {
+    return static_cast<int>(s);
+}
 
 }  // namespace exactmesh::predicates

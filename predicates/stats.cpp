@@ -16,8 +16,12 @@ bool stats_enabled() noexcept {
 #endif
 }
 
-PredicateStats& thread_stats() noexcept { return counters; }
+PredicateStats& thread_stats() noexcept {
+    return counters;
+}
 
-void reset_thread_stats() noexcept { counters = PredicateStats{}; }
+void reset_thread_stats() noexcept {
+    counters = PredicateStats{};
+}
 
 }  // namespace exactmesh::predicates

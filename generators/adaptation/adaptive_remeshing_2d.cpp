@@ -14,9 +14,9 @@
 #include "base/number_text.hpp"
 #include "generators/adaptation/field_transfer.hpp"
 #include "generators/adaptation/indicator_size_field.hpp"
-#include "generators/topology/mesh_edges.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/mesh_2d/advancing_front_2d.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "predicates/power_of_two.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
 

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "generators/adaptation/field_transfer.hpp"
-#include "generators/topology/mesh_edges.hpp"
 #include "generators/adaptation/weighted_movement.hpp"
 #include "generators/mesh_2d/laplacian_smoothing_2d.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 

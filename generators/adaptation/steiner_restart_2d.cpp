@@ -11,8 +11,8 @@
 #include "generators/adaptation/derefinement_2d.hpp"
 #include "generators/adaptation/field_transfer.hpp"
 #include "generators/adaptation/indicator_size_field.hpp"
-#include "generators/topology/mesh_edges.hpp"
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "predicates/power_of_two.hpp"
 
 namespace exactmesh::generators {

@@ -31,7 +31,8 @@ std::vector<std::uint64_t> narrow_wedges_2d(
     std::sort(at.begin(), at.end());
     std::vector<std::uint64_t> pairs;
     const auto add = [&](std::uint32_t s, std::uint32_t t) {
-        if (s != t) pairs.push_back(s < t ? std::uint64_t{s} << 32 | t : std::uint64_t{t} << 32 | s);
+        if (s != t)
+            pairs.push_back(s < t ? std::uint64_t{s} << 32 | t : std::uint64_t{t} << 32 | s);
     };
     for (std::size_t begin = 0; begin < at.size();) {
         std::size_t end = begin;

@@ -200,7 +200,7 @@ class Refiner {
     bool region_areas_ = false;
     std::vector<double> numbered_regions_;
     tri::ConstrainedTriangulation2 cdt_;
-    const tri::TriMesh2& mesh_;  // the triangulation's, valid across edits
+    const tri::TriMesh2& mesh_;    // the triangulation's, valid across edits
     std::uint32_t segment_count_;  // input segments (cdt_.segment_ends numbers them)
     RefinementCounters2 counters_;
     BucketQueue<BadTriangle> bad_;
@@ -320,7 +320,8 @@ void Refiner::check_domain_and_budget() {
         throw RefinementBudgetError(
             "delaunay refinement: the size asks for about " + format_number(estimate) +
             " triangles over the domain's bounding box, more than the automatic Steiner budget "
-            "can hold (" + format_number(kAutomaticRefinementTriangles) +
+            "can hold (" +
+            format_number(kAutomaticRefinementTriangles) +
             "); stopped before refining: give a larger size, or a --max-steiner budget to try "
             "anyway");
     }

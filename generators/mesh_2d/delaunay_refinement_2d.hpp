@@ -97,9 +97,9 @@ struct RefinementCounters2 {
     /// triangles of the conflict zones of insertions rejected at a segment (with
     /// cavity_triangles, the work bounded at 64 per budgeted Steiner point)
     std::uint64_t rejected_cavity_triangles = 0;
-    std::uint64_t flips = 0;             ///< Lawson flips (initial triangulation and splits)
-    std::uint64_t polish_points = 0;     ///< Steiner points of the polish
-    std::uint64_t polish_stopped = 0;    ///< 1: the polish's budget ran out
+    std::uint64_t flips = 0;               ///< Lawson flips (initial triangulation and splits)
+    std::uint64_t polish_points = 0;       ///< Steiner points of the polish
+    std::uint64_t polish_stopped = 0;      ///< 1: the polish's budget ran out
     std::uint64_t circumcenter_exact = 0;  ///< circumcenters that needed the exact path
     std::uint64_t orient_calls = 0;
     std::uint64_t incircle_calls = 0;

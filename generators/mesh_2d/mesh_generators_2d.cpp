@@ -20,9 +20,9 @@
 #include "generators/mesh_2d/advancing_front_delaunay_2d.hpp"
 #include "generators/mesh_2d/frontal_delaunay_2d.hpp"
 #include "generators/mesh_2d/quadtree_mesh_2d.hpp"
+#include "generators/sizing/triangle_subdivision_2d.hpp"
 #include "generators/stretched/metric_delaunay_2d.hpp"
 #include "generators/stretched/min_max_front_2d.hpp"
-#include "generators/sizing/triangle_subdivision_2d.hpp"
 #include "generators/stretched/stretched_delaunay_2d.hpp"
 
 namespace exactmesh::generators {
@@ -82,10 +82,9 @@ class SizeSampler {
             };
             const Point ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
             const double sab = at(ab[0], ab[1]), sbc = at(bc[0], bc[1]), sca = at(ca[0], ca[1]);
-            children = {Node{{a, ab, ca}, {n.size[0], sab, sca}},
-                        Node{{ab, b, bc}, {sab, n.size[1], sbc}},
-                        Node{{ca, bc, c}, {sca, sbc, n.size[2]}},
-                        Node{{ab, bc, ca}, {sab, sbc, sca}}};
+            children = {
+                Node{{a, ab, ca}, {n.size[0], sab, sca}}, Node{{ab, b, bc}, {sab, n.size[1], sbc}},
+                Node{{ca, bc, c}, {sca, sbc, n.size[2]}}, Node{{ab, bc, ca}, {sab, sbc, sca}}};
             return std::nullopt;
         };
         return subdivision_sum_2d(Node{{p, q, r}, {sp, sq, sr}}, visit);

@@ -37,7 +37,7 @@ struct MeshOptions2 {
     /// sampled (0: max_steiner_points). Global remeshing sets it below its generator's Steiner
     /// budget: each boundary sample is a size evaluation.
     std::uint64_t max_boundary_points = 0;
-    triangulation::Cdt2Options cdt;        ///< numbering, recovery of the initial CDT
+    triangulation::Cdt2Options cdt;  ///< numbering, recovery of the initial CDT
     /// The metric field of the stretched generators (issue 14: --metric); none otherwise.
     std::optional<MetricField2> metric;
     /// The boundary layers (advancing-layers only: --layers, --quads).

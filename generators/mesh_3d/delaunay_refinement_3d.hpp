@@ -61,38 +61,39 @@ struct DelaunayRefinement3Options {
 };
 
 struct DelaunayRefinement3Counters {
-    std::uint64_t circumcenters = 0;          ///< tetrahedron circumcentres inserted
-    std::uint64_t subface_splits = 0;         ///< subface circumcentres inserted
-    std::uint64_t segment_splits = 0;         ///< subsegment midpoints inserted
-    std::uint64_t shell_splits = 0;           ///< subsegment concentric-shell points inserted
-    std::uint64_t encroached_segments = 0;    ///< subsegment splits queued by encroachment
-    std::uint64_t encroached_subfaces = 0;    ///< subface splits queued by encroachment
-    std::uint64_t blocked_circumcenters = 0;  ///< circumcentres beyond a subface (it is split)
-    std::uint64_t rejected_points = 0;        ///< insertions whose cavity could not be kept valid
-    std::uint64_t longest_edge_subfaces = 0;  ///< subfaces whose circumcentre was a vertex
-                                              ///< already, split at their longest edge instead
+    std::uint64_t circumcenters = 0;            ///< tetrahedron circumcentres inserted
+    std::uint64_t subface_splits = 0;           ///< subface circumcentres inserted
+    std::uint64_t segment_splits = 0;           ///< subsegment midpoints inserted
+    std::uint64_t shell_splits = 0;             ///< subsegment concentric-shell points inserted
+    std::uint64_t encroached_segments = 0;      ///< subsegment splits queued by encroachment
+    std::uint64_t encroached_subfaces = 0;      ///< subface splits queued by encroachment
+    std::uint64_t blocked_circumcenters = 0;    ///< circumcentres beyond a subface (it is split)
+    std::uint64_t rejected_points = 0;          ///< insertions whose cavity could not be kept valid
+    std::uint64_t longest_edge_subfaces = 0;    ///< subfaces whose circumcentre was a vertex
+                                                ///< already, split at their longest edge instead
     std::uint64_t projected_circumcentres = 0;  ///< subface circumcentres off the facet's plane
                                                 ///< beyond rounding, moved onto it
-    std::uint64_t shrunk_cavities = 0;        ///< cavities shrunk to stay star-shaped/conforming
-    std::uint64_t batched_removals = 0;       ///< tetrahedra shrunk away beside the first of
-                                              ///< their round (all facing away from the point)
-    std::uint64_t forced_cavity_tets = 0;     ///< tetrahedra taken into a cavity past their
-                                              ///< spheres: a seed's face did not see the point
-    std::uint64_t walk_seeded_cavities = 0;   ///< circumcentre cavities retried from the walk's
-                                              ///< tetrahedra (t and its centre not connected by
-                                              ///< tetrahedra in conflict)
-    std::uint64_t small_angle_tets = 0;       ///< bad tetrahedra spared by the small-angle rule
-    std::uint64_t unresolvable_tets = 0;      ///< bad tetrahedra spared: an edge finer than doubles
-                                              ///< resolve there (below 2^-44 of the coordinates)
-    std::uint64_t cavity_tets = 0;            ///< tetrahedra replaced, summed over insertions
-    std::uint64_t insertions = 0;             ///< Steiner points added by refinement
+    std::uint64_t shrunk_cavities = 0;          ///< cavities shrunk to stay star-shaped/conforming
+    std::uint64_t batched_removals = 0;         ///< tetrahedra shrunk away beside the first of
+                                                ///< their round (all facing away from the point)
+    std::uint64_t forced_cavity_tets = 0;       ///< tetrahedra taken into a cavity past their
+                                                ///< spheres: a seed's face did not see the point
+    std::uint64_t walk_seeded_cavities = 0;     ///< circumcentre cavities retried from the walk's
+                                                ///< tetrahedra (t and its centre not connected by
+                                                ///< tetrahedra in conflict)
+    std::uint64_t small_angle_tets = 0;         ///< bad tetrahedra spared by the small-angle rule
+    std::uint64_t unresolvable_tets = 0;  ///< bad tetrahedra spared: an edge finer than doubles
+                                          ///< resolve there (below 2^-44 of the coordinates)
+    std::uint64_t cavity_tets = 0;        ///< tetrahedra replaced, summed over insertions
+    std::uint64_t insertions = 0;         ///< Steiner points added by refinement
 };
 
-inline constexpr std::array kDelaunayRefinement3CounterNames = EM_COUNTER_TABLE(
-    DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits, shell_splits,
-    encroached_segments, encroached_subfaces, blocked_circumcenters, rejected_points,
-    longest_edge_subfaces, projected_circumcentres, shrunk_cavities, batched_removals, forced_cavity_tets, walk_seeded_cavities, small_angle_tets,
-    unresolvable_tets, cavity_tets, insertions);
+inline constexpr std::array kDelaunayRefinement3CounterNames =
+    EM_COUNTER_TABLE(DelaunayRefinement3Counters, circumcenters, subface_splits, segment_splits,
+                     shell_splits, encroached_segments, encroached_subfaces, blocked_circumcenters,
+                     rejected_points, longest_edge_subfaces, projected_circumcentres,
+                     shrunk_cavities, batched_removals, forced_cavity_tets, walk_seeded_cavities,
+                     small_angle_tets, unresolvable_tets, cavity_tets, insertions);
 static_assert(counter_table_complete(kDelaunayRefinement3CounterNames));
 
 struct DelaunayRefinement3Result {

@@ -92,22 +92,21 @@ struct FrontalDelaunay3Counters {
     /// boundary fitting: subfaces whose circumcentre was a vertex already, split at their
     /// longest edge instead
     std::uint64_t longest_edge_subfaces = 0;
-    std::uint64_t early_rejections = 0;     ///< of the encroaching and too close points, those
-                                            ///< found by their seed or front tetrahedron alone,
-                                            ///< before their cavity was grown
-    std::uint64_t batched_removals = 0;     ///< cavity tetrahedra shrunk away beside the first
-                                            ///< of their round (one regrowth for all)
-    std::uint64_t cavity_tets = 0;          ///< tetrahedra replaced, summed over insertions
-    std::uint64_t accepted_tets = 0;        ///< output tetrahedra within the acceptance
-    std::uint64_t estimated_points = 0;     ///< the size's estimate (the budget's basis)
+    std::uint64_t early_rejections = 0;  ///< of the encroaching and too close points, those
+                                         ///< found by their seed or front tetrahedron alone,
+                                         ///< before their cavity was grown
+    std::uint64_t batched_removals = 0;  ///< cavity tetrahedra shrunk away beside the first
+                                         ///< of their round (one regrowth for all)
+    std::uint64_t cavity_tets = 0;       ///< tetrahedra replaced, summed over insertions
+    std::uint64_t accepted_tets = 0;     ///< output tetrahedra within the acceptance
+    std::uint64_t estimated_points = 0;  ///< the size's estimate (the budget's basis)
 };
 
-inline constexpr std::array kFrontalDelaunay3CounterNames =
-    EM_COUNTER_TABLE(FrontalDelaunay3Counters, segment_splits, subface_splits, interior_points,
-                     active_pops, stale_pops, forced_accepts, rejected_outside, rejected_encroach,
-                     rejected_too_close, rejected_cavity, boundary_rejections,
-                     longest_edge_subfaces, early_rejections, batched_removals, cavity_tets,
-                     accepted_tets, estimated_points);
+inline constexpr std::array kFrontalDelaunay3CounterNames = EM_COUNTER_TABLE(
+    FrontalDelaunay3Counters, segment_splits, subface_splits, interior_points, active_pops,
+    stale_pops, forced_accepts, rejected_outside, rejected_encroach, rejected_too_close,
+    rejected_cavity, boundary_rejections, longest_edge_subfaces, early_rejections, batched_removals,
+    cavity_tets, accepted_tets, estimated_points);
 static_assert(counter_table_complete(kFrontalDelaunay3CounterNames));
 
 struct FrontalDelaunay3Result {

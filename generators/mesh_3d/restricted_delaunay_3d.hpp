@@ -15,8 +15,8 @@
 #pragma once
 
 #include <algorithm>
-#include <climits>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -261,7 +261,8 @@ class RestrictedDelaunay3 {
 
     std::vector<Key3> subfaces_on_edge(VertIdx a, VertIdx b) const {
         std::vector<Key3> out;
-        edge_subfaces_.for_each(edge_key(a, b), [&](VertIdx c) { out.push_back(sorted3(a, b, c)); });
+        edge_subfaces_.for_each(edge_key(a, b),
+                                [&](VertIdx c) { out.push_back(sorted3(a, b, c)); });
         return out;
     }
 
@@ -517,8 +518,8 @@ class RestrictedDelaunay3 {
     // --- cavities --------------------------------------------------------------------------
 
     struct Split {
-        std::vector<Key3> faces;                   ///< subfaces the point splits (crossed, dropped)
-        std::uint64_t edge = ~0ull;                ///< the subsegment it splits, if any
+        std::vector<Key3> faces;     ///< subfaces the point splits (crossed, dropped)
+        std::uint64_t edge = ~0ull;  ///< the subsegment it splits, if any
         /// Edges inside the facet cavities (they may go), once per cavity subface holding one:
         /// a list, as `faces` (a node-based set here made most of facet_cavity's allocations).
         std::vector<std::uint64_t> exempt;
@@ -704,8 +705,8 @@ class RestrictedDelaunay3 {
                 if (!split.faces.empty() && is_split_face(split, face_key(t, k))) continue;
                 const VertIdx corner[3] = {m_.vertex(t, lf[0]), m_.vertex(t, lf[1]),
                                            m_.vertex(t, lf[2])};
-                if (predicates::orient3d(point(corner[0]), point(corner[1]), point(corner[2]),
-                                         p) != Sign::Positive) {
+                if (predicates::orient3d(point(corner[0]), point(corner[1]), point(corner[2]), p) !=
+                    Sign::Positive) {
                     const TetIdx bad = removable(t);
                     if (bad == kNone - 1) {
                         blind_face_ = 4 * t + k;
@@ -733,8 +734,7 @@ class RestrictedDelaunay3 {
                 if (!on_boundary(a) || !on_boundary(b)) continue;  // no kept edge
                 const std::uint64_t key = edge_key(a, b);
                 if (key == split.edge || is_exempt(split, key)) continue;
-                const bool kept_edge =
-                    subsegments_.count(key) != 0 || edge_subfaces_.contains(key);
+                const bool kept_edge = subsegments_.count(key) != 0 || edge_subfaces_.contains(key);
                 if (kept_edge && !boundary_edges.contains(key)) return removable(t);
             }
         }

@@ -74,10 +74,10 @@ struct SliverRemoval3Counters {
     std::uint64_t folds_removed = 0;
 };
 
-inline constexpr std::array kSliverRemoval3CounterNames = EM_COUNTER_TABLE(
-    SliverRemoval3Counters, rounds, flips_23, flips_32, flips_44, edge_removals, swaps_locked,
-    swaps_vetoed,
-    moves_accepted, moves_rejected, moves_vetoed, slivers_before, slivers_after, folds_removed);
+inline constexpr std::array kSliverRemoval3CounterNames =
+    EM_COUNTER_TABLE(SliverRemoval3Counters, rounds, flips_23, flips_32, flips_44, edge_removals,
+                     swaps_locked, swaps_vetoed, moves_accepted, moves_rejected, moves_vetoed,
+                     slivers_before, slivers_after, folds_removed);
 static_assert(counter_table_complete(kSliverRemoval3CounterNames));
 
 struct SliverRemoval3Result {

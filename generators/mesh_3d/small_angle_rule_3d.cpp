@@ -171,7 +171,8 @@ void SharpFacets3::add_segments_near_facets(const tri::ConformingMesh3& mesh,
     std::vector<std::vector<std::size_t>> subfaces_at(inputs);
     for (std::size_t i = 0; 3 * i + 2 < mesh.subfaces.size(); ++i)
         for (unsigned k = 0; k < 3; ++k)
-            if (mesh.subfaces[3 * i + k] < inputs) subfaces_at[mesh.subfaces[3 * i + k]].push_back(i);
+            if (mesh.subfaces[3 * i + k] < inputs)
+                subfaces_at[mesh.subfaces[3 * i + k]].push_back(i);
     // sin^2 of kSegmentFacetDegrees.
     const double sine = std::sin(kSegmentFacetDegrees * 3.14159265358979323846 / 180);
     const double sine2 = sine * sine;

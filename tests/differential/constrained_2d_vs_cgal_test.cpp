@@ -63,14 +63,16 @@ using exactmesh::testing::test_scale;
 using Edge = std::pair<tri::VertIdx, tri::VertIdx>;
 using Triangle = std::array<tri::VertIdx, 3>;
 
-Edge undirected(tri::VertIdx a, tri::VertIdx b) { return std::minmax(a, b); }
+Edge undirected(tri::VertIdx a, tri::VertIdx b) {
+    return std::minmax(a, b);
+}
 
 struct Summary {
-    std::set<Triangle> triangles;   ///< rotated to the smallest vertex
+    std::set<Triangle> triangles;  ///< rotated to the smallest vertex
     std::set<Edge> constrained;
-    std::set<Edge> strict;          ///< hull, constrained and strictly locally Delaunay edges
-    std::map<Edge, Edge> apexes;    ///< unconstrained interior edge -> its two apexes
-    bool unique = true;             ///< no unconstrained interior edge with a cocircular tie
+    std::set<Edge> strict;        ///< hull, constrained and strictly locally Delaunay edges
+    std::map<Edge, Edge> apexes;  ///< unconstrained interior edge -> its two apexes
+    bool unique = true;           ///< no unconstrained interior edge with a cocircular tie
 };
 
 /// The strict edges whose endpoints and (interior) apexes are all outside `moved`: their
@@ -79,8 +81,9 @@ std::set<Edge> stable_strict(const Summary& s, const std::set<tri::VertIdx>& mov
     std::set<Edge> out;
     for (const Edge& e : s.strict) {
         if (moved.count(e.first) || moved.count(e.second)) continue;
-        if (const auto it = s.apexes.find(e); it != s.apexes.end() &&
-                                              (moved.count(it->second.first) || moved.count(it->second.second))) {
+        if (const auto it = s.apexes.find(e);
+            it != s.apexes.end() &&
+            (moved.count(it->second.first) || moved.count(it->second.second))) {
             continue;
         }
         out.insert(e);
@@ -93,7 +96,8 @@ Summary summarize(const tri::Triangulation2& m) {
     for (tri::TriIdx t = 0; t < m.triangle_count(); ++t) {
         Triangle a{m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]};
         for (int k = 0; k < 3; ++k) {
-            const tri::VertIdx u = a[static_cast<unsigned>(k)], v = a[static_cast<unsigned>(k + 1) % 3];
+            const tri::VertIdx u = a[static_cast<unsigned>(k)],
+                               v = a[static_cast<unsigned>(k + 1) % 3];
             const tri::TriIdx n = m.neighbors[3 * t + static_cast<unsigned>(k)];
             if (m.is_constrained(t, k)) {
                 s.constrained.insert(undirected(u, v));
@@ -111,7 +115,8 @@ Summary summarize(const tri::Triangulation2& m) {
                 if (w != u && w != v) apex = w;
             }
             s.apexes[undirected(u, v)] = {a[static_cast<unsigned>(k + 2) % 3], apex};
-            const auto sign = exactmesh::predicates::incircle(m.point(a[0]), m.point(a[1]), m.point(a[2]), m.point(apex));
+            const auto sign = exactmesh::predicates::incircle(m.point(a[0]), m.point(a[1]),
+                                                              m.point(a[2]), m.point(apex));
             if (sign == exactmesh::predicates::Sign::Zero) {
                 s.unique = false;
             } else {
@@ -134,9 +139,10 @@ struct Campaign {
     int cases = 0;
     int disagreements = 0;
     int unique_cases = 0;
-    int concurrent = 0;  ///< cases with an unrepresentable crossing of 3+ segments: validity only
+    int concurrent = 0;    ///< cases with an unrepresentable crossing of 3+ segments: validity only
     int cgal_invalid = 0;  ///< concurrent cases where CGAL's own output fails the exact check
-    int cgal_skipped = 0;  ///< hull segment through a vertex: ours checked, CGAL not run (it crashes)
+    int cgal_skipped =
+        0;  ///< hull segment through a vertex: ours checked, CGAL not run (it crashes)
     std::uint64_t moved_vertices = 0;  ///< added vertices CGAL placed elsewhere (within kMaxUlps)
     std::uint64_t added_vertices = 0;
     double max_ulps = 0;
@@ -145,18 +151,20 @@ struct Campaign {
 /// CGAL's constrained Delaunay triangulation in our numbering: input vertices by their first
 /// occurrence; CGAL's added vertices matched to ours (`ours`: our output) by coordinates, or
 /// appended. Returns an empty problem string, or what failed.
-std::string cgal_triangulation(const gen::PslgInput& in, const tri::Cdt2Result& ours, tri::Triangulation2& out,
-                               double& max_ulps, int& dimension) {
+std::string cgal_triangulation(const gen::PslgInput& in, const tri::Cdt2Result& ours,
+                               tri::Triangulation2& out, double& max_ulps, int& dimension) {
     std::vector<K::Point_2> points;
     for (std::size_t i = 0; i < in.xy.size(); i += 2) points.emplace_back(in.xy[i], in.xy[i + 1]);
     std::vector<std::pair<std::size_t, std::size_t>> constraints;
-    for (std::size_t s = 0; s < in.segments.size(); s += 2) constraints.emplace_back(in.segments[s], in.segments[s + 1]);
+    for (std::size_t s = 0; s < in.segments.size(); s += 2)
+        constraints.emplace_back(in.segments[s], in.segments[s + 1]);
     CgalCdt cdt;
     // insert_constraints inserts nothing at all when there is no constraint.
     if (constraints.empty()) {
         cdt.insert(points.begin(), points.end());
     } else {
-        cdt.insert_constraints(points.begin(), points.end(), constraints.begin(), constraints.end());
+        cdt.insert_constraints(points.begin(), points.end(), constraints.begin(),
+                               constraints.end());
     }
     dimension = cdt.dimension();
 
@@ -164,7 +172,8 @@ std::string cgal_triangulation(const gen::PslgInput& in, const tri::Cdt2Result& 
     for (const double c : in.xy) scale = std::max(scale, std::fabs(c));
     if (scale == 0) scale = 1;
     std::map<std::pair<double, double>, tri::VertIdx> input_of;
-    for (tri::VertIdx i = static_cast<tri::VertIdx>(in.xy.size() / 2); i-- > 0;) input_of[{in.xy[2 * i], in.xy[2 * i + 1]}] = i;
+    for (tri::VertIdx i = static_cast<tri::VertIdx>(in.xy.size() / 2); i-- > 0;)
+        input_of[{in.xy[2 * i], in.xy[2 * i + 1]}] = i;
     out = tri::Triangulation2{};
     out.xy = ours.mesh.xy;
     const tri::VertIdx first_added = ours.input_vertex_count, ours_end = ours.mesh.vertex_count();
@@ -180,7 +189,8 @@ std::string cgal_triangulation(const gen::PslgInput& in, const tri::Cdt2Result& 
         double best_ulps = kMaxUlps;
         for (tri::VertIdx w = first_added; w < ours_end; ++w) {
             if (taken[w]) continue;
-            const double d = std::max(ulps_apart(x, ours.mesh.xy[2 * w], scale), ulps_apart(y, ours.mesh.xy[2 * w + 1], scale));
+            const double d = std::max(ulps_apart(x, ours.mesh.xy[2 * w], scale),
+                                      ulps_apart(y, ours.mesh.xy[2 * w + 1], scale));
             if (d <= best_ulps) {
                 best = w;
                 best_ulps = d;
@@ -298,10 +308,12 @@ tri::Cdt2Result build(const gen::PslgInput& in, tri::SegmentRecovery recovery, s
 /// `conforming`: false where segments meet at angles of a few ulps (near-collinear input), which
 /// midpoint splitting cannot resolve (it would need about 2^50 splits; ours stops with a
 /// GeometryError after its budget, as documented).
-void compare_case(const gen::PslgInput& in, std::uint64_t seed, const std::string& label, Campaign& campaign,
-                  bool with_conforming = true) {
+void compare_case(const gen::PslgInput& in, std::uint64_t seed, const std::string& label,
+                  Campaign& campaign, bool with_conforming = true) {
     ++campaign.cases;
-    if (std::getenv("EXACTMESH_VERBOSE")) std::fprintf(stderr, "case %s (seed %llu)\n", label.c_str(), static_cast<unsigned long long>(seed));
+    if (std::getenv("EXACTMESH_VERBOSE"))
+        std::fprintf(stderr, "case %s (seed %llu)\n", label.c_str(),
+                     static_cast<unsigned long long>(seed));
     std::string problem;
     auto fail = [&](const std::string& what) {
         if (problem.empty()) problem = what;
@@ -329,9 +341,13 @@ void compare_case(const gen::PslgInput& in, std::uint64_t seed, const std::strin
     const std::vector<tri::VertIdx>& segments = in.segments;
     for (const tri::Cdt2Result* r : {&swap, &cavity, &conforming}) {
         if (r == &conforming && !with_conforming) continue;
-        const auto report = tri::check_constrained_delaunay_2d(r->mesh, r->input_vertex_count, segments);
-        if (!report.ok) fail(std::string(r == &conforming ? "conforming" : r == &swap ? "swap" : "cavity") +
-                             " check: " + report.problem);
+        const auto report =
+            tri::check_constrained_delaunay_2d(r->mesh, r->input_vertex_count, segments);
+        if (!report.ok)
+            fail(std::string(r == &conforming ? "conforming"
+                             : r == &swap     ? "swap"
+                                              : "cavity") +
+                 " check: " + report.problem);
     }
     if (const auto report = tri::check_delaunay_2d(conforming.mesh.xy, conforming.mesh.triangles);
         with_conforming && !report.ok) {
@@ -358,11 +374,13 @@ void compare_case(const gen::PslgInput& in, std::uint64_t seed, const std::strin
     campaign.added_vertices += swap.mesh.vertex_count() - swap.input_vertex_count;
     std::uint32_t distinct = 0;
     for (std::uint32_t i = 0; i < n; ++i) distinct += swap.merged_into[i] == i ? 1u : 0u;
-    const std::uint32_t our_vertices = distinct + swap.mesh.vertex_count() - swap.input_vertex_count;
+    const std::uint32_t our_vertices =
+        distinct + swap.mesh.vertex_count() - swap.input_vertex_count;
     // CGAL's vertex count: its input matches plus its added ones.
     std::set<tri::VertIdx> cgal_vertices;
     for (const tri::VertIdx v : cgal.triangles) cgal_vertices.insert(v);
-    const bool concurrent = swap.counters.intersections > 1 && has_unrepresentable_concurrent_crossing(in);
+    const bool concurrent =
+        swap.counters.intersections > 1 && has_unrepresentable_concurrent_crossing(in);
     if (concurrent) {
         ++campaign.concurrent;
         // CGAL's double-precision intersections can invert triangles here (ours are checked
@@ -371,11 +389,14 @@ void compare_case(const gen::PslgInput& in, std::uint64_t seed, const std::strin
         if (dimension == 2 && !report.ok) ++campaign.cgal_invalid;
     } else if (dimension == 2) {
         std::set<tri::VertIdx> our_used(swap.mesh.triangles.begin(), swap.mesh.triangles.end());
-        if (our_used.size() != our_vertices) fail("ours: " + std::to_string(our_vertices - our_used.size()) + " vertices unused");
+        if (our_used.size() != our_vertices)
+            fail("ours: " + std::to_string(our_vertices - our_used.size()) + " vertices unused");
         if (cgal_vertices.size() != our_vertices) {
-            fail("vertex count " + std::to_string(our_vertices) + " vs CGAL " + std::to_string(cgal_vertices.size()));
+            fail("vertex count " + std::to_string(our_vertices) + " vs CGAL " +
+                 std::to_string(cgal_vertices.size()));
         } else if (cgal.vertex_count() != swap.mesh.vertex_count()) {
-            fail("an added vertex of CGAL's is more than " + std::to_string(kMaxUlps) + " ulps from ours");
+            fail("an added vertex of CGAL's is more than " + std::to_string(kMaxUlps) +
+                 " ulps from ours");
         }
         const Summary theirs = summarize(cgal);
         if (swap.mesh.triangle_count() != cgal.triangle_count()) {
@@ -383,28 +404,35 @@ void compare_case(const gen::PslgInput& in, std::uint64_t seed, const std::strin
                  std::to_string(cgal.triangle_count()));
         }
         if (ours.constrained != theirs.constrained) {
-            fail("constrained edges differ: ours only" + describe(ours.constrained, theirs.constrained) +
-                 "; CGAL only" + describe(theirs.constrained, ours.constrained));
+            fail("constrained edges differ: ours only" +
+                 describe(ours.constrained, theirs.constrained) + "; CGAL only" +
+                 describe(theirs.constrained, ours.constrained));
         }
         // Added vertices CGAL rounded differently: its triangles around them may differ.
         std::set<tri::VertIdx> moved;
         for (tri::VertIdx v = n; v < swap.mesh.vertex_count(); ++v) {
-            if (cgal.xy[2 * v] != swap.mesh.xy[2 * v] || cgal.xy[2 * v + 1] != swap.mesh.xy[2 * v + 1]) moved.insert(v);
+            if (cgal.xy[2 * v] != swap.mesh.xy[2 * v] ||
+                cgal.xy[2 * v + 1] != swap.mesh.xy[2 * v + 1])
+                moved.insert(v);
         }
         campaign.moved_vertices += moved.size();
         if (ours.unique && moved.empty()) {
             ++campaign.unique_cases;
-            if (ours.triangles != theirs.triangles) fail("unique constrained Delaunay triangulation differs from CGAL's");
+            if (ours.triangles != theirs.triangles)
+                fail("unique constrained Delaunay triangulation differs from CGAL's");
         } else {
             const auto report = tri::check_constrained_delaunay_2d(cgal, n, segments);
             if (!report.ok) fail("CGAL's output fails our check: " + report.problem);
-            const std::set<Edge> mine = stable_strict(ours, moved), their = stable_strict(theirs, moved);
+            const std::set<Edge> mine = stable_strict(ours, moved),
+                                 their = stable_strict(theirs, moved);
             std::set<Edge> ours_edges, cgal_edges;
             for (const Triangle& t : ours.triangles) {
-                for (unsigned k = 0; k < 3; ++k) ours_edges.insert(undirected(t[k], t[(k + 1) % 3]));
+                for (unsigned k = 0; k < 3; ++k)
+                    ours_edges.insert(undirected(t[k], t[(k + 1) % 3]));
             }
             for (const Triangle& t : theirs.triangles) {
-                for (unsigned k = 0; k < 3; ++k) cgal_edges.insert(undirected(t[k], t[(k + 1) % 3]));
+                for (unsigned k = 0; k < 3; ++k)
+                    cgal_edges.insert(undirected(t[k], t[(k + 1) % 3]));
             }
             // Every edge strict in one output (away from moved vertices) is in the other.
             if (!std::includes(cgal_edges.begin(), cgal_edges.end(), mine.begin(), mine.end()) ||
@@ -418,8 +446,8 @@ void compare_case(const gen::PslgInput& in, std::uint64_t seed, const std::strin
     }
     if (!problem.empty()) {
         ++campaign.disagreements;
-        ADD_FAILURE() << label << " (seed " << seed << ", " << n << " points, " << in.segments.size() / 2
-                      << " segments): " << problem;
+        ADD_FAILURE() << label << " (seed " << seed << ", " << n << " points, "
+                      << in.segments.size() / 2 << " segments): " << problem;
     }
 }
 
@@ -429,11 +457,16 @@ gen::PslgInput scaled(gen::PslgInput in, int exponent) {
 }
 
 void report(const char* name, const Campaign& c) {
-    std::printf("%s: %d cases (%d compared triangle for triangle; %d validity only: 3+ segments crossing at an "
-                "unrepresentable point, where CGAL's output was invalid %d times; %d checked exactly without CGAL, which crashes on hull segments through vertices), %d disagreements, %llu added vertices (%llu rounded differently by CGAL), max added-vertex "
-                "difference from CGAL %.3g ulps\n",
-                name, c.cases, c.unique_cases, c.concurrent, c.cgal_invalid, c.cgal_skipped, c.disagreements, static_cast<unsigned long long>(c.added_vertices),
-                static_cast<unsigned long long>(c.moved_vertices), c.max_ulps);
+    std::printf(
+        "%s: %d cases (%d compared triangle for triangle; %d validity only: 3+ segments crossing "
+        "at an "
+        "unrepresentable point, where CGAL's output was invalid %d times; %d checked exactly "
+        "without CGAL, which crashes on hull segments through vertices), %d disagreements, %llu "
+        "added vertices (%llu rounded differently by CGAL), max added-vertex "
+        "difference from CGAL %.3g ulps\n",
+        name, c.cases, c.unique_cases, c.concurrent, c.cgal_invalid, c.cgal_skipped,
+        c.disagreements, static_cast<unsigned long long>(c.added_vertices),
+        static_cast<unsigned long long>(c.moved_vertices), c.max_ulps);
 }
 
 }  // namespace
@@ -447,8 +480,8 @@ TEST(Differential_Cdt2VsCgal, TinyPslgsEnumerated) {
     const auto stride = static_cast<std::uint64_t>(std::max(1.0, 1.0 / std::max(scale, 1e-6)));
     for (std::uint32_t v = 3; v <= 5; ++v) {
         for (std::uint64_t index = 0; index < gen::tiny_pslg_count(v); index += stride) {
-            compare_case(gen::tiny_pslg(v, index), index, "tiny " + std::to_string(v) + "/" + std::to_string(index),
-                         campaign);
+            compare_case(gen::tiny_pslg(v, index), index,
+                         "tiny " + std::to_string(v) + "/" + std::to_string(index), campaign);
         }
     }
     std::mt19937_64 rng(2024);
@@ -456,8 +489,8 @@ TEST(Differential_Cdt2VsCgal, TinyPslgsEnumerated) {
     for (std::uint32_t v = 6; v <= 8; ++v) {
         for (int k = 0; k < samples; ++k) {
             const std::uint64_t index = rng() % gen::tiny_pslg_count(v);
-            compare_case(gen::tiny_pslg(v, index), index, "tiny " + std::to_string(v) + "/" + std::to_string(index),
-                         campaign);
+            compare_case(gen::tiny_pslg(v, index), index,
+                         "tiny " + std::to_string(v) + "/" + std::to_string(index), campaign);
         }
     }
     report("tiny PSLGs", campaign);
@@ -471,12 +504,14 @@ TEST(Differential_Cdt2VsCgal, SeededCampaignOverAllPslgDistributions) {
     const int seeds = std::max(2, static_cast<int>(80 * test_scale()));
     for (const gen::PslgDistribution d : gen::kAllPslgDistributions) {
         for (int seed = 0; seed < seeds; ++seed) {
-            const std::uint32_t n = seed % 10 == 9 ? 600u : 10u + static_cast<std::uint32_t>(seed * 37 % 200);
+            const std::uint32_t n =
+                seed % 10 == 9 ? 600u : 10u + static_cast<std::uint32_t>(seed * 37 % 200);
             std::uint32_t segments = 3 + static_cast<std::uint32_t>(seed * 13 % 80);
             if (d == gen::PslgDistribution::Crossing || d == gen::PslgDistribution::NearCollinear) {
                 segments = 2 + static_cast<std::uint32_t>(seed % 12);
             }
-            gen::PslgInput in = gen::generate_pslg(d, n, segments, static_cast<std::uint64_t>(seed));
+            gen::PslgInput in =
+                gen::generate_pslg(d, n, segments, static_cast<std::uint64_t>(seed));
             std::string label = std::string(gen::pslg_distribution_name(d));
             if (seed % 3 == 1) {
                 in = scaled(std::move(in), 500);

@@ -45,16 +45,19 @@ double test_scale() {
 }
 
 /// CGAL's finite tetrahedra of the points `active` (global indices kept), in our orientation.
-tri::Tetrahedralization3 cgal_delaunay(const std::vector<double>& xyz, const std::vector<std::uint32_t>& active) {
+tri::Tetrahedralization3 cgal_delaunay(const std::vector<double>& xyz,
+                                       const std::vector<std::uint32_t>& active) {
     std::vector<std::pair<K::Point_3, std::uint32_t>> points;
-    for (const std::uint32_t v : active) points.emplace_back(K::Point_3(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]), v);
+    for (const std::uint32_t v : active)
+        points.emplace_back(K::Point_3(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]), v);
     CgalDelaunay dt(points.begin(), points.end());
     tri::Tetrahedralization3 mesh;
     mesh.xyz = xyz;
     for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
-        std::array<std::uint32_t, 4> t{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()};
-        if (em::predicates::orient3d(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), mesh.point(t[3])) ==
-            Sign::Negative) {
+        std::array<std::uint32_t, 4> t{c->vertex(0)->info(), c->vertex(1)->info(),
+                                       c->vertex(2)->info(), c->vertex(3)->info()};
+        if (em::predicates::orient3d(mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]),
+                                     mesh.point(t[3])) == Sign::Negative) {
             std::swap(t[0], t[1]);
         }
         mesh.tets.insert(mesh.tets.end(), t.begin(), t.end());
@@ -87,8 +90,8 @@ void insert_point(tri::TetMesh3& mesh, tri::VertIdx v) {
         bool inside = true;
         for (unsigned k = 0; k < 4 && inside; ++k) {
             const auto f = mesh.face(4 * t + k);
-            inside = em::predicates::orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), mesh.point(v)) !=
-                     Sign::Negative;
+            inside = em::predicates::orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]),
+                                              mesh.point(v)) != Sign::Negative;
         }
         if (inside) holding.push_back(t);
     }
@@ -97,10 +100,12 @@ void insert_point(tri::TetMesh3& mesh, tri::VertIdx v) {
     for (const tri::TetIdx t : holding) {
         for (unsigned k = 0; k < 4; ++k) {
             const tri::FaceIdx twin = mesh.adj[4 * t + k];
-            if (twin != tri::kNone && std::find(holding.begin(), holding.end(), twin / 4) != holding.end()) continue;
+            if (twin != tri::kNone &&
+                std::find(holding.begin(), holding.end(), twin / 4) != holding.end())
+                continue;
             const auto f = mesh.face(4 * t + k);
-            if (em::predicates::orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), mesh.point(v)) ==
-                Sign::Positive) {
+            if (em::predicates::orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]),
+                                         mesh.point(v)) == Sign::Positive) {
                 made.push_back({f[0], f[1], f[2], v});
             }
         }
@@ -120,12 +125,14 @@ TEST(Differential_Swap3VsCgal, DelaunayInsertionByFlipsReachesCgalsTetrahedraliz
         tri::TetMesh3 mesh = tri::make_tet_mesh_3d(cgal_delaunay(xyz, first(start)));
         for (tri::VertIdx v = start; v < n + 4; ++v) {
             insert_point(mesh, v);
-            const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
+            const tri::EdgeFaceSwapCounters counters =
+                tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
             ASSERT_EQ(counters.stalled_faces, 0u) << "seed " << seed << " point " << v;
         }
         const tri::Tetrahedralization3 ours = tri::to_tetrahedralization_3d(mesh);
         EXPECT_TRUE(tri::check_topology_3d(ours, {true}).ok);
-        EXPECT_EQ(orc::tet_set(ours.tets), orc::tet_set(cgal_delaunay(xyz, first(n + 4)).tets)) << "seed " << seed;
+        EXPECT_EQ(orc::tet_set(ours.tets), orc::tet_set(cgal_delaunay(xyz, first(n + 4)).tets))
+            << "seed " << seed;
     }
 }
 
@@ -144,7 +151,8 @@ TEST(Differential_Swap3VsCgal, DelaunaySwappingUndoesRandomSwapsUnlessItStalls) 
             if (tri::flip_face_3d(mesh, f) != tri::FlipKind3::None) ++scrambled;
         }
         ASSERT_GT(scrambled, 0u);
-        const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
+        const tri::EdgeFaceSwapCounters counters =
+            tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
         const tri::Tetrahedralization3 ours = tri::to_tetrahedralization_3d(mesh);
         EXPECT_TRUE(tri::check_topology_3d(ours, {true}).ok);
         if (counters.stalled_faces == 0) {
@@ -155,7 +163,8 @@ TEST(Differential_Swap3VsCgal, DelaunaySwappingUndoesRandomSwapsUnlessItStalls) 
         }
     }
     EXPECT_GT(reached, 0);
-    std::printf("scrambled CGAL tetrahedralizations: %d back to CGAL's, %d stalled\n", reached, stalled);
+    std::printf("scrambled CGAL tetrahedralizations: %d back to CGAL's, %d stalled\n", reached,
+                stalled);
 }
 
 TEST(Differential_Swap3VsCgal, VertexRemovalGivesCgalsTetrahedralizationOfTheRest) {
@@ -176,7 +185,8 @@ TEST(Differential_Swap3VsCgal, VertexRemovalGivesCgalsTetrahedralizationOfTheRes
         }
         const tri::Tetrahedralization3 ours = tri::to_tetrahedralization_3d(mesh);
         EXPECT_TRUE(tri::check_topology_3d(ours, {true}).ok);
-        EXPECT_EQ(orc::tet_set(ours.tets), orc::tet_set(cgal_delaunay(xyz, remaining).tets)) << "seed " << seed;
+        EXPECT_EQ(orc::tet_set(ours.tets), orc::tet_set(cgal_delaunay(xyz, remaining).tets))
+            << "seed " << seed;
     }
     EXPECT_EQ(counters.cavity_fallbacks, 0u);
 }
@@ -211,7 +221,8 @@ TEST(Differential_Swap3VsCgal, VertexRemovalOnCubicGridsStaysDelaunay) {
     EXPECT_EQ(local.not_delaunay_sos, 0u);
     const tri::Tetrahedralization3 theirs = cgal_delaunay(xyz, remaining);
     EXPECT_EQ(em::testing::count_local_delaunay_3d(theirs).not_delaunay, 0u);
-    std::vector<std::uint32_t> used(ours.tets.begin(), ours.tets.end()), cgal_used(theirs.tets.begin(), theirs.tets.end());
+    std::vector<std::uint32_t> used(ours.tets.begin(), ours.tets.end()),
+        cgal_used(theirs.tets.begin(), theirs.tets.end());
     std::sort(used.begin(), used.end());
     used.erase(std::unique(used.begin(), used.end()), used.end());
     std::sort(cgal_used.begin(), cgal_used.end());

@@ -53,10 +53,10 @@
 #include "generators/adaptation/h_adaptation_2d.hpp"
 #include "generators/adaptation/h_refinement_2d.hpp"
 #include "generators/adaptation/insertion_adaptation_2d.hpp"
-#include "generators/topology/mesh_edges.hpp"
 #include "generators/adaptation/steiner_restart_2d.hpp"
 #include "generators/adaptation/vertex_field.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
+#include "generators/topology/mesh_edges.hpp"
 #include "tests/fuzz/fuzz_pslg.hpp"
 
 namespace exactmesh::fuzz {

@@ -52,7 +52,8 @@ std::vector<std::array<tri::VertIdx, 3>> canonical(const tri::Triangulation2& m)
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const std::optional<exactmesh::fuzz::FuzzPslg> input = exactmesh::fuzz::decode_pslg(data, size, 2, kMaxPoints);
+    const std::optional<exactmesh::fuzz::FuzzPslg> input =
+        exactmesh::fuzz::decode_pslg(data, size, 2, kMaxPoints);
     if (!input) return 0;
     const std::vector<double>& xy = input->xy;
     const std::vector<tri::VertIdx>& segments = input->segments;
@@ -76,12 +77,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
 
     std::array<tri::Cdt2Result, 2> cdt;
-    const tri::SegmentRecovery recoveries[] = {tri::SegmentRecovery::Swap, tri::SegmentRecovery::Cavity};
+    const tri::SegmentRecovery recoveries[] = {tri::SegmentRecovery::Swap,
+                                               tri::SegmentRecovery::Cavity};
     for (std::size_t k = 0; k < 2; ++k) {
         try {
             cdt[k] = tri::constrained_delaunay_2d(pslg, options(recoveries[k]));
         } catch (const std::exception& e) {
-            fail(xy, segments, std::string(tri::segment_recovery_name(recoveries[k])) + " threw: " + e.what());
+            fail(xy, segments,
+                 std::string(tri::segment_recovery_name(recoveries[k])) + " threw: " + e.what());
         }
     }
     const std::vector<tri::VertIdx>& kept = segments;  // the check follows duplicates' used copies
@@ -89,12 +92,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         // Collinear input has no triangle to carry flags: the check then follows the pieces.
         const auto report = tri::check_constrained_delaunay_2d(
             cdt[k].mesh, cdt[k].input_vertex_count, kept,
-            cdt[k].mesh.triangles.empty() ? std::span<const tri::VertIdx>(cdt[k].pieces) : std::span<const tri::VertIdx>{});
+            cdt[k].mesh.triangles.empty() ? std::span<const tri::VertIdx>(cdt[k].pieces)
+                                          : std::span<const tri::VertIdx>{});
         if (!report.ok) {
-            fail(xy, segments, std::string(tri::segment_recovery_name(recoveries[k])) + ": " + report.problem);
+            fail(xy, segments,
+                 std::string(tri::segment_recovery_name(recoveries[k])) + ": " + report.problem);
         }
         const auto topology = tri::check_topology_2d(cdt[k].mesh.xy, cdt[k].mesh.triangles);
-        if (!topology.ok) fail(xy, segments, std::string(tri::segment_recovery_name(recoveries[k])) + ": " + topology.problem);
+        if (!topology.ok)
+            fail(xy, segments,
+                 std::string(tri::segment_recovery_name(recoveries[k])) + ": " + topology.problem);
     }
     if ((cdt[0].mesh.xy != cdt[1].mesh.xy || canonical(cdt[0].mesh) != canonical(cdt[1].mesh))) {
         fail(xy, segments, "swap and cavity differ");
@@ -112,7 +119,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!delaunay.ok) fail(xy, segments, "conforming is not Delaunay: " + delaunay.problem);
     const auto report = tri::check_constrained_delaunay_2d(
         conforming.mesh, conforming.input_vertex_count, kept,
-        conforming.mesh.triangles.empty() ? std::span<const tri::VertIdx>(conforming.pieces) : std::span<const tri::VertIdx>{});
+        conforming.mesh.triangles.empty() ? std::span<const tri::VertIdx>(conforming.pieces)
+                                          : std::span<const tri::VertIdx>{});
     if (!report.ok) fail(xy, segments, "conforming: " + report.problem);
     return 0;
 }

@@ -31,15 +31,17 @@ namespace tri = exactmesh::triangulation;
 
 constexpr std::size_t kMaxPoints = 24;
 
-[[noreturn]] void fail(const std::vector<double>& xy, const std::vector<tri::VertIdx>& segments, double angle,
-                       const std::string& what) {
-    exactmesh::fuzz::fail_pslg(xy, segments, "fuzz_delaunay_refinement_2d: %s\nangle %g, ", what.c_str(), angle);
+[[noreturn]] void fail(const std::vector<double>& xy, const std::vector<tri::VertIdx>& segments,
+                       double angle, const std::string& what) {
+    exactmesh::fuzz::fail_pslg(xy, segments, "fuzz_delaunay_refinement_2d: %s\nangle %g, ",
+                               what.c_str(), angle);
 }
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const std::optional<exactmesh::fuzz::FuzzPslg> input = exactmesh::fuzz::decode_pslg(data, size, 4, kMaxPoints);
+    const std::optional<exactmesh::fuzz::FuzzPslg> input =
+        exactmesh::fuzz::decode_pslg(data, size, 4, kMaxPoints);
     if (!input) return 0;
     const double angle = data[1] % 34;
     const std::uint8_t size_byte = data[2];
@@ -48,7 +50,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     gen::RefinementOptions2 options;
     options.min_angle = angle;
     options.max_steiner_points = 5000;
-    if (size_byte != 0) options.size = gen::SizeFunction::uniform(std::ldexp(1.0, -(size_byte % 8)));
+    if (size_byte != 0)
+        options.size = gen::SizeFunction::uniform(std::ldexp(1.0, -(size_byte % 8)));
     gen::RefinementResult2 result;
     try {
         result = gen::delaunay_refinement_2d(tri::Pslg{xy, segments, {}, {}}, options);
@@ -59,8 +62,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const std::exception& e) {
         fail(xy, segments, angle, std::string("threw: ") + e.what());
     }
-    const auto report = tri::check_constrained_delaunay_2d(result.mesh.mesh, result.mesh.input_vertex_count, segments,
-                                                           result.mesh.pieces);
+    const auto report = tri::check_constrained_delaunay_2d(
+        result.mesh.mesh, result.mesh.input_vertex_count, segments, result.mesh.pieces);
     if (!report.ok) fail(xy, segments, angle, report.problem);
     return 0;
 }

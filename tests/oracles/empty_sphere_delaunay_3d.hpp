@@ -21,7 +21,8 @@ namespace exactmesh::oracles {
 using TetSet = std::set<std::array<std::uint32_t, 4>>;
 
 /// Over the vertices in `active` only (increasing indices into xyz, which stay the SoS ranks).
-inline TetSet empty_sphere_delaunay_3d(std::span<const double> xyz, const std::vector<std::uint32_t>& active) {
+inline TetSet empty_sphere_delaunay_3d(std::span<const double> xyz,
+                                       const std::vector<std::uint32_t>& active) {
     using predicates::Sign;
     auto p = [&](std::uint32_t v) { return xyz.data() + 3 * std::size_t{v}; };
     TetSet out;
@@ -30,7 +31,8 @@ inline TetSet empty_sphere_delaunay_3d(std::span<const double> xyz, const std::v
         for (std::size_t ib = ia + 1; ib < n; ++ib) {
             for (std::size_t ic = ib + 1; ic < n; ++ic) {
                 for (std::size_t id = ic + 1; id < n; ++id) {
-                    const std::uint32_t a = active[ia], b = active[ib], c = active[ic], d = active[id];
+                    const std::uint32_t a = active[ia], b = active[ib], c = active[ic],
+                                        d = active[id];
                     const Sign s = predicates::orient3d(p(a), p(b), p(c), p(d));
                     if (s == Sign::Zero) continue;
                     std::array<std::uint32_t, 4> t{a, b, c, d};
@@ -39,8 +41,9 @@ inline TetSet empty_sphere_delaunay_3d(std::span<const double> xyz, const std::v
                     for (std::size_t ie = 0; ie < n && empty; ++ie) {
                         const std::uint32_t e = active[ie];
                         if (e == a || e == b || e == c || e == d) continue;
-                        empty = predicates::insphere_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), t[0], t[1], t[2],
-                                                         t[3], e) != Sign::Positive;
+                        empty =
+                            predicates::insphere_sos(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e), t[0],
+                                                     t[1], t[2], t[3], e) != Sign::Positive;
                     }
                     if (empty) out.insert({a, b, c, d});
                 }

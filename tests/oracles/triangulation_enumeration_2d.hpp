@@ -33,8 +33,8 @@ inline int compare_exact_angles(const ExactAngle& x, const ExactAngle& y) {
 }
 
 /// The largest angle of triangle (a, b, c) (any orientation, not degenerate), exactly.
-inline ExactAngle largest_exact_angle(std::span<const double> xy, std::uint32_t a,
-                                      std::uint32_t b, std::uint32_t c) {
+inline ExactAngle largest_exact_angle(std::span<const double> xy, std::uint32_t a, std::uint32_t b,
+                                      std::uint32_t c) {
     using predicates::reference::exact;
     const std::array<std::uint32_t, 3> v{a, b, c};
     ExactAngle best;
@@ -69,7 +69,8 @@ inline ExactAngle largest_exact_angle(std::span<const double> xy,
 /// the points xy (distinct, finite). Collinear points: a segment through a third point is never
 /// an edge. Returns the number of triangulations (0 when all points are collinear).
 inline std::size_t enumerate_triangulations_2d(
-    std::span<const double> xy, const std::function<void(const std::vector<std::uint32_t>&)>& visit) {
+    std::span<const double> xy,
+    const std::function<void(const std::vector<std::uint32_t>&)>& visit) {
     using predicates::Sign;
     const auto n = static_cast<std::uint32_t>(xy.size() / 2);
     auto at = [&](std::uint32_t v) { return xy.data() + 2 * std::size_t{v}; };
@@ -107,8 +108,8 @@ inline std::size_t enumerate_triangulations_2d(
         for (std::size_t j = 0; j < m; ++j) {
             const auto [a, b] = segments[i];
             const auto [c, d] = segments[j];
-            crosses[i * m + j] = orient(a, b, c) * orient(a, b, d) < 0 &&
-                                 orient(c, d, a) * orient(c, d, b) < 0;
+            crosses[i * m + j] =
+                orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0;
         }
     }
     std::vector<std::uint8_t> chosen(m, 0);
@@ -127,7 +128,8 @@ inline std::size_t enumerate_triangulations_2d(
         }
         std::vector<std::vector<std::uint8_t>> edge(n, std::vector<std::uint8_t>(n, 0));
         for (std::size_t i = 0; i < m; ++i) {
-            if (chosen[i]) edge[segments[i][0]][segments[i][1]] = edge[segments[i][1]][segments[i][0]] = 1;
+            if (chosen[i])
+                edge[segments[i][0]][segments[i][1]] = edge[segments[i][1]][segments[i][0]] = 1;
         }
         triangles.clear();
         for (std::uint32_t a = 0; a < n; ++a) {
@@ -204,7 +206,8 @@ inline MinMaxAngleOptimum min_max_angle_by_enumeration(std::span<const double> x
                 cache[key] = largest_exact_angle(xy, v[0], v[1], v[2]);
                 cached[key] = 1;
             }
-            if (worst == nullptr || compare_exact_angles(cache[key], *worst) > 0) worst = &cache[key];
+            if (worst == nullptr || compare_exact_angles(cache[key], *worst) > 0)
+                worst = &cache[key];
         }
         if (worst != nullptr && (first || compare_exact_angles(*worst, best.angle) < 0)) {
             best.angle = *worst;

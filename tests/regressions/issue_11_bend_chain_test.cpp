@@ -31,8 +31,8 @@ namespace tri = exactmesh::triangulation;
 }  // namespace
 
 TEST(Issue11BendChain, issue_11_bend_chain_fuzz_unit) {
-    const auto r = em::testing::replay_mesh_generators_2d(
-        "mesh_generators_2d_front_bend_subnormal.bin", 1000);
+    const auto r =
+        em::testing::replay_mesh_generators_2d("mesh_generators_2d_front_bend_subnormal.bin", 1000);
     EXPECT_EQ(r.generator, "advancing-front");
     ASSERT_TRUE(r.meshed) << r.error;
     EXPECT_TRUE(r.check.ok) << r.check.problem;

@@ -65,8 +65,8 @@ TEST(Issue11NarrowWedges, issue_11_fans_of_tiny_angles_mesh_with_every_generator
                 options.max_steiner_points = 50000;
                 try {
                     const gen::MeshRun2 run = generator.run(in.pslg(), options);
-                    const auto check =
-                        em::testing::check_mesh_of_input(run.mesh, in, generator.delaunay, {}, false);
+                    const auto check = em::testing::check_mesh_of_input(
+                        run.mesh, in, generator.delaunay, {}, false);
                     EXPECT_TRUE(check.ok) << exponent << ": " << check.problem;
                     if (exponent == 0) triangles = run.mesh.mesh.triangle_count();
                     EXPECT_EQ(run.mesh.mesh.triangle_count(), triangles) << exponent;
@@ -115,13 +115,26 @@ TEST(Issue11NarrowWedges, issue_11_fan_of_five_segments_is_refined_with_few_poin
     std::size_t triangles = 0;
     for (const int exponent : {0, 600, -600}) {
         em::testing::Input in;
-        in.xy = {-1.0, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, 1.0,
-                 0.20178732563700774, -0.01688552758506856,
-                 0.3306520814478112, -0.3892915540905705,
-                 0.3216007026127559, -0.3631337319237456,
-                 0.3169128589775397, -0.3495646045517436,
-                 0.28371873857693725, -0.25364331724636413,
-                 0.2761104262532651, -0.2316575190072306};
+        in.xy = {-1.0,
+                 -1.0,
+                 1.0,
+                 -1.0,
+                 1.0,
+                 1.0,
+                 -1.0,
+                 1.0,
+                 0.20178732563700774,
+                 -0.01688552758506856,
+                 0.3306520814478112,
+                 -0.3892915540905705,
+                 0.3216007026127559,
+                 -0.3631337319237456,
+                 0.3169128589775397,
+                 -0.3495646045517436,
+                 0.28371873857693725,
+                 -0.25364331724636413,
+                 0.2761104262532651,
+                 -0.2316575190072306};
         in.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 4, 6, 4, 7, 4, 8, 4, 9};
         for (double& x : in.xy) x = std::ldexp(x, exponent);
         gen::RefinementOptions2 options;

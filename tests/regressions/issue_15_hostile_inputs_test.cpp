@@ -107,8 +107,8 @@ namespace {
 /// vertices in `attached`.
 tri::Plc3 rotated_cube(const std::string& name, int exponent, std::vector<tri::VertIdx>& attached,
                        const std::string& folder = "rotated") {
-    tri::Plc3 plc = io::plc_from_file(io::read_plc(std::string(EXACTMESH_SOURCE_DIR) +
-                                                   "/tests/data/" + folder + "/" + name));
+    tri::Plc3 plc = io::plc_from_file(
+        io::read_plc(std::string(EXACTMESH_SOURCE_DIR) + "/tests/data/" + folder + "/" + name));
     plc = tri::scaled(plc, exponent);
     tri::validate_plc_3d_input(plc);
     (void)tri::split_nonplanar_facets_3d(plc);
@@ -153,8 +153,8 @@ RefinedHostile3 refine_hostile(const std::string& name, int exponent) {
     RefinedHostile3 out{rotated_cube(name, exponent, attached, "hostile_3d"), {}};
     gen::DelaunayRefinement3Options options;
     options.max_steiner_points = 20000;
-    out.refined = gen::delaunay_refinement_3d(out.plc, tri::boundary_recovery_3d(out.plc).mesh,
-                                              options);
+    out.refined =
+        gen::delaunay_refinement_3d(out.plc, tri::boundary_recovery_3d(out.plc).mesh, options);
     return out;
 }
 
@@ -408,10 +408,9 @@ TEST(Issue15, issue_15_free_vertices_beside_a_turned_edge_settle) {
     // about 60 s at the default budget, and with five vertices ended in an internal error (a
     // segment vertex left out of the other facet's fan). Such a cavity stops at the piece now:
     // a few hundred points, in milliseconds.
-    for (const char* name :
-         {"rotated_cube_free_vertex_2e-13_off_an_edge.poly",
-          "rotated_cube_free_vertex_4e-11_off_an_edge.poly",
-          "rotated_cube_five_free_vertices_assertion.poly"}) {
+    for (const char* name : {"rotated_cube_free_vertex_2e-13_off_an_edge.poly",
+                             "rotated_cube_free_vertex_4e-11_off_an_edge.poly",
+                             "rotated_cube_five_free_vertices_assertion.poly"}) {
         for (const int exponent : {0, 300, -300}) {
             const auto [plc, refined] = refine_hostile(name, exponent);
             EXPECT_LT(refined.mesh.mesh.vertex_count(), 1500u) << name << exponent;
@@ -438,7 +437,8 @@ TEST(Issue15, issue_15_points_outside_the_domain_are_named_in_warnings) {
     plc.regions.push_back({-1, 0.5, 0.5, 8, 0});
     const tri::BoundaryRecovery3Result recovered = tri::boundary_recovery_3d(plc);
     ASSERT_EQ(recovered.warnings.size(), 3u);
-    EXPECT_EQ(recovered.warnings[0], "volume hole point 1 (3, 3, 3) lies outside the domain: ignored");
+    EXPECT_EQ(recovered.warnings[0],
+              "volume hole point 1 (3, 3, 3) lies outside the domain: ignored");
     EXPECT_EQ(recovered.warnings[1],
               "region point 2 (-1, 0.5, 0.5) lies outside the domain or in a hole: ignored");
     EXPECT_EQ(recovered.warnings[2],
@@ -494,8 +494,8 @@ TEST(Issue15, issue_15_thin_gaps_are_refused_at_once_by_every_generator) {
     // front, 1 for refinement) though the generators make up to 2.3 times it on such walls.
     // Every generator now refuses where 2.2 times the estimate exceeds the budget, at once.
     for (const char* name : {"rotated_plate_0.00048_thick.poly", "thin_region_slab_slow.poly"}) {
-        tri::Plc3 plc = io::plc_from_file(io::read_plc(std::string(EXACTMESH_SOURCE_DIR) +
-                                                       "/tests/data/hostile_3d/" + name));
+        tri::Plc3 plc = io::plc_from_file(
+            io::read_plc(std::string(EXACTMESH_SOURCE_DIR) + "/tests/data/hostile_3d/" + name));
         (void)tri::prepare_plc_for_meshing_3d(plc);
         const tri::ConformingMesh3 recovered = tri::boundary_recovery_3d(plc).mesh;
         const std::string refinement = error_message<InputError>(
@@ -622,9 +622,8 @@ TEST(Issue15, issue_15_facet_points_within_rounding_of_a_segment_split_it) {
 TEST(Issue15, issue_15_check_reads_facet_points_beside_an_edge) {
     for (const int exponent : {0, 300, -300}) {
         std::vector<tri::VertIdx> attached;
-        const tri::Plc3 plc =
-            rotated_cube("cube_free_vertices_1e-14_off_an_edge.poly", exponent, attached,
-                         "hostile_3d");
+        const tri::Plc3 plc = rotated_cube("cube_free_vertices_1e-14_off_an_edge.poly", exponent,
+                                           attached, "hostile_3d");
         for (const double volume : {0.01, 0.001}) {
             const Meshed3 meshed = mesh_with_volume_bound(plc, std::ldexp(volume, 3 * exponent));
             ASSERT_TRUE(tri::check_boundary_conformity_3d(plc, meshed.mesh).ok) << exponent;

@@ -12,7 +12,8 @@
 
 namespace exactmesh::testing {
 
-inline std::vector<double> integer_points(std::uint32_t n, std::uint32_t range, std::mt19937_64& rng) {
+inline std::vector<double> integer_points(std::uint32_t n, std::uint32_t range,
+                                          std::mt19937_64& rng) {
     std::vector<double> xy;
     std::set<std::pair<double, double>> seen;
     while (xy.size() < 2 * std::size_t{n}) {

@@ -36,12 +36,13 @@ inline LocalDelaunayCount count_local_delaunay_3d(const triangulation::Tetrahedr
             if (!in_t) e = w;
         }
         const std::uint32_t* v = &mesh.tets[4 * t];
-        if (predicates::insphere(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]),
-                                 mesh.point(e)) == Sign::Positive) {
+        if (predicates::insphere(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                 mesh.point(v[3]), mesh.point(e)) == Sign::Positive) {
             ++count.not_delaunay;
         }
-        if (predicates::insphere_sos(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]),
-                                     mesh.point(e), v[0], v[1], v[2], v[3], e) == Sign::Positive) {
+        if (predicates::insphere_sos(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                     mesh.point(v[3]), mesh.point(e), v[0], v[1], v[2], v[3],
+                                     e) == Sign::Positive) {
             ++count.not_delaunay_sos;
         }
     }

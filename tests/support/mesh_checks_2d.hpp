@@ -33,7 +33,8 @@ namespace exactmesh::testing {
 
 /// Even-odd: is (x, y) inside the region the segments enclose? Segments repeated (by their
 /// end points' coordinates, in either direction) count once. Exact crossing decisions.
-inline bool inside_by_segments(double x, double y, std::span<const double> xy, std::span<const std::uint32_t> segments) {
+inline bool inside_by_segments(double x, double y, std::span<const double> xy,
+                               std::span<const std::uint32_t> segments) {
     const double c[2] = {x, y};
     bool inside = false;
     std::set<std::array<double, 4>> seen;
@@ -55,13 +56,15 @@ inline bool inside_by_segments(double x, double y, std::span<const double> xy, s
 }
 
 /// Distance from (x, y) to the nearest segment (double precision).
-inline double distance_to_segments(double x, double y, std::span<const double> xy, std::span<const std::uint32_t> segments) {
+inline double distance_to_segments(double x, double y, std::span<const double> xy,
+                                   std::span<const std::uint32_t> segments) {
     double best = INFINITY;
     for (std::size_t s = 0; s + 1 < segments.size(); s += 2) {
         const double* a = &xy[2 * std::size_t{segments[s]}];
         const double* b = &xy[2 * std::size_t{segments[s + 1]}];
         const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
-        const double t = length2 > 0 ? std::clamp(((x - a[0]) * dx + (y - a[1]) * dy) / length2, 0.0, 1.0) : 0.0;
+        const double t =
+            length2 > 0 ? std::clamp(((x - a[0]) * dx + (y - a[1]) * dy) / length2, 0.0, 1.0) : 0.0;
         best = std::min(best, std::hypot(x - (a[0] + t * dx), y - (a[1] + t * dy)));
     }
     return best;
@@ -70,8 +73,8 @@ inline double distance_to_segments(double x, double y, std::span<const double> x
 struct MeshCheck {
     bool ok = true;
     std::string problem;
-    double min_angle = 180;      ///< degrees, over all triangles
-    double max_size_ratio = 0;   ///< longest edge / size at its midpoint
+    double min_angle = 180;     ///< degrees, over all triangles
+    double max_size_ratio = 0;  ///< longest edge / size at its midpoint
 };
 
 /// The checks above. `input_vertex_count`, `segments`, `pieces` as check_constrained_delaunay_2d
@@ -80,18 +83,22 @@ struct MeshCheck {
 /// inputs with dangling (slit) segments, which skip the outside test.
 /// `delaunay`: false for generators whose meshes need not be Delaunay (quadtree, advancing
 /// front): then check_conforming_mesh_2d (no fold at any vertex) replaces the Delaunay check.
-inline MeshCheck check_quality_mesh(const triangulation::Triangulation2& mesh, std::uint32_t input_vertex_count,
-                                    std::span<const double> input_xy, std::span<const std::uint32_t> segments,
+inline MeshCheck check_quality_mesh(const triangulation::Triangulation2& mesh,
+                                    std::uint32_t input_vertex_count,
+                                    std::span<const double> input_xy,
+                                    std::span<const std::uint32_t> segments,
                                     std::span<const std::uint32_t> pieces,
-                                    const std::function<double(double, double)>& size = {}, bool closed_loops = true,
-                                    bool delaunay = true) {
+                                    const std::function<double(double, double)>& size = {},
+                                    bool closed_loops = true, bool delaunay = true) {
     MeshCheck r;
-    const auto report =
-        delaunay ? triangulation::check_constrained_delaunay_2d(mesh, input_vertex_count, segments, pieces)
-                 : triangulation::check_conforming_mesh_2d(mesh, input_vertex_count, segments, pieces);
+    const auto report = delaunay ? triangulation::check_constrained_delaunay_2d(
+                                       mesh, input_vertex_count, segments, pieces)
+                                 : triangulation::check_conforming_mesh_2d(mesh, input_vertex_count,
+                                                                           segments, pieces);
     if (!report.ok) {
         r.ok = false;
-        r.problem = (delaunay ? "not constrained Delaunay: " : "not a valid mesh of the domain: ") + report.problem;
+        r.problem = (delaunay ? "not constrained Delaunay: " : "not a valid mesh of the domain: ") +
+                    report.problem;
         return r;
     }
     const auto kept = triangulation::check_input_vertices_kept_2d(
@@ -118,7 +125,8 @@ inline MeshCheck check_quality_mesh(const triangulation::Triangulation2& mesh, s
     const double tolerance = std::ldexp(magnitude, -40);
     for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t) {
         const double* p[3];
-        for (int k = 0; k < 3; ++k) p[k] = mesh.point(mesh.triangles[3 * t + static_cast<unsigned>(k)]);
+        for (int k = 0; k < 3; ++k)
+            p[k] = mesh.point(mesh.triangles[3 * t + static_cast<unsigned>(k)]);
         const double cx = (p[0][0] + p[1][0] + p[2][0]) / 3, cy = (p[0][1] + p[1][1] + p[2][1]) / 3;
         if (closed_loops && !inside_by_segments(cx, cy, input_xy, segments) &&
             distance_to_segments(cx, cy, input_xy, segments) > tolerance) {
@@ -131,8 +139,9 @@ inline MeshCheck check_quality_mesh(const triangulation::Triangulation2& mesh, s
             const double* a = p[(k + 1) % 3];
             const double* b = p[(k + 2) % 3];
             const double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
-            r.min_angle = std::min(r.min_angle, std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 /
-                                                    std::numbers::pi);
+            r.min_angle =
+                std::min(r.min_angle, std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) *
+                                          180 / std::numbers::pi);
             const std::uint32_t u = mesh.triangles[3 * t + static_cast<unsigned>(k)];
             const std::uint32_t v = mesh.triangles[3 * t + static_cast<unsigned>((k + 1) % 3)];
             ++edge_count[{std::min(u, v), std::max(u, v)}];
@@ -161,7 +170,8 @@ inline double triangle_min_angle(const triangulation::Triangulation2& mesh, std:
         const double* a = mesh.point(mesh.triangles[3 * t + static_cast<unsigned>((k + 1) % 3)]);
         const double* b = mesh.point(mesh.triangles[3 * t + static_cast<unsigned>((k + 2) % 3)]);
         const double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
-        smallest = std::min(smallest, std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 / std::numbers::pi);
+        smallest = std::min(smallest, std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) *
+                                          180 / std::numbers::pi);
     }
     return smallest;
 }

@@ -23,7 +23,8 @@
 
 namespace exactmesh::testing {
 
-inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::span<const double> xyz) {
+inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(
+    std::span<const double> xyz) {
     using predicates::Sign;
     using triangulation::kFaceVertex;
     using triangulation::Tet;
@@ -43,14 +44,16 @@ inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::spa
     std::sort(order.begin(), order.end(), lex);
     order.erase(std::unique(order.begin(), order.end(),
                             [&](VertIdx a, VertIdx b) {
-                                return p(a)[0] == p(b)[0] && p(a)[1] == p(b)[1] && p(a)[2] == p(b)[2];
+                                return p(a)[0] == p(b)[0] && p(a)[1] == p(b)[1] &&
+                                       p(a)[2] == p(b)[2];
                             }),
                 order.end());
     if (order.size() < 4) return out;
     auto collinear = [&](VertIdx a, VertIdx b, VertIdx c) {
         for (int i = 0; i < 3; ++i) {
             const int j = (i + 1) % 3;
-            const double pa[2] = {p(a)[i], p(a)[j]}, pb[2] = {p(b)[i], p(b)[j]}, pc[2] = {p(c)[i], p(c)[j]};
+            const double pa[2] = {p(a)[i], p(a)[j]}, pb[2] = {p(b)[i], p(b)[j]},
+                         pc[2] = {p(c)[i], p(c)[j]};
             if (predicates::orient2d(pa, pb, pc) != Sign::Zero) return false;
         }
         return true;
@@ -59,7 +62,9 @@ inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::spa
     while (i2 < order.size() && collinear(order[0], order[1], order[i2])) ++i2;
     if (i2 == order.size()) return out;
     std::size_t i3 = i2 + 1;
-    while (i3 < order.size() && predicates::orient3d(p(order[0]), p(order[1]), p(order[i2]), p(order[i3])) == Sign::Zero) ++i3;
+    while (i3 < order.size() &&
+           predicates::orient3d(p(order[0]), p(order[1]), p(order[i2]), p(order[i3])) == Sign::Zero)
+        ++i3;
     if (i3 == order.size()) return out;
     std::vector<Tet> tets;
     std::map<std::array<VertIdx, 3>, int> face_count;
@@ -78,11 +83,13 @@ inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::spa
     auto remove_faces = [&](const Tet& t) {
         for (unsigned k = 0; k < 4; ++k) {
             const unsigned* lf = kFaceVertex[k];
-            if (--face_count[key(t[lf[0]], t[lf[1]], t[lf[2]])] == 0) face_count.erase(key(t[lf[0]], t[lf[1]], t[lf[2]]));
+            if (--face_count[key(t[lf[0]], t[lf[1]], t[lf[2]])] == 0)
+                face_count.erase(key(t[lf[0]], t[lf[1]], t[lf[2]]));
         }
     };
     Tet first{order[0], order[1], order[i2], order[i3]};
-    if (predicates::orient3d(p(first[0]), p(first[1]), p(first[2]), p(first[3])) == Sign::Negative) std::swap(first[0], first[1]);
+    if (predicates::orient3d(p(first[0]), p(first[1]), p(first[2]), p(first[3])) == Sign::Negative)
+        std::swap(first[0], first[1]);
     add(first);
     for (std::size_t i = 2; i < order.size(); ++i) {
         if (i == i2 || i == i3) continue;
@@ -93,7 +100,8 @@ inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::spa
             bool inside = true;
             for (unsigned k = 0; k < 4; ++k) {
                 const unsigned* lf = kFaceVertex[k];
-                signs[t][k] = predicates::orient3d(p(tets[t][lf[0]]), p(tets[t][lf[1]]), p(tets[t][lf[2]]), p(v));
+                signs[t][k] = predicates::orient3d(p(tets[t][lf[0]]), p(tets[t][lf[1]]),
+                                                   p(tets[t][lf[2]]), p(v));
                 inside = inside && signs[t][k] != Sign::Negative;
             }
             if (inside) holding.push_back(t);
@@ -130,7 +138,8 @@ inline triangulation::Tetrahedralization3 placing_tetrahedralization_3d(std::spa
                 for (unsigned k = 0; k < 4; ++k) {
                     const unsigned* lf = kFaceVertex[k];
                     if (signs[t][k] != Sign::Negative) continue;
-                    if (face_count[key(tets[t][lf[0]], tets[t][lf[1]], tets[t][lf[2]])] != 1) continue;
+                    if (face_count[key(tets[t][lf[0]], tets[t][lf[1]], tets[t][lf[2]])] != 1)
+                        continue;
                     made.push_back({tets[t][lf[1]], tets[t][lf[0]], tets[t][lf[2]], v});
                 }
             }

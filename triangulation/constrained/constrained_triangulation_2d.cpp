@@ -413,11 +413,12 @@ VertIdx split_constrained_edge(CdtState& cdt, EdgeIdx e, double x, double y) {
         const double* pa = cdt.mesh.point(a);
         const double* pb = cdt.mesh.point(b);
         if ((x == pa[0] && y == pa[1]) || (x == pb[0] && y == pb[1])) {
-            throw GeometryError("segment " + std::to_string(segment + cdt.options.first_index) +
-                                ": its piece " + format_point(pa) + " - " + format_point(pb) +
-                                " is too short to split: its split point rounds to one of its ends (finer "
-                                "than doubles resolve along the segment; a vertex or segment that "
-                                "close to it is a feature the mesh cannot follow)");
+            throw GeometryError(
+                "segment " + std::to_string(segment + cdt.options.first_index) + ": its piece " +
+                format_point(pa) + " - " + format_point(pb) +
+                " is too short to split: its split point rounds to one of its ends (finer "
+                "than doubles resolve along the segment; a vertex or segment that "
+                "close to it is a feature the mesh cannot follow)");
         }
     }
     const double nx = cdt.mesh.point(a)[1] - cdt.mesh.point(b)[1],

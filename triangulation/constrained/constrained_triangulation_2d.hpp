@@ -50,9 +50,9 @@ struct ConstrainedTriangulation2Counters {
     std::uint64_t rejected_insertions = 0;  ///< insert_in_cavity calls that changed nothing
     /// triangles in the conflict zones of rejected insertions (grown, then given up), summed
     std::uint64_t rejected_cavity_triangles = 0;
-    std::uint64_t edge_splits = 0;          ///< constrained edges split at a new vertex
-    std::uint64_t edge_bends = 0;           ///< constrained edges split at an existing vertex
-    std::uint64_t split_flips = 0;          ///< Lawson flips after edge splits
+    std::uint64_t edge_splits = 0;  ///< constrained edges split at a new vertex
+    std::uint64_t edge_bends = 0;   ///< constrained edges split at an existing vertex
+    std::uint64_t split_flips = 0;  ///< Lawson flips after edge splits
     /// insert_in_metric_cavity: passes that dropped triangles p did not see from its cavity
     std::uint64_t cavity_corrections = 0;
 };

@@ -102,8 +102,8 @@ inline bool beyond_rounding_of_plane(const double* p, const double* a, const dou
         v[k] = c[k] - a[k];
         w[k] = p[k] - a[k];
         largest = std::max({largest, std::fabs(u[k]), std::fabs(v[k]), std::fabs(w[k])});
-        magnitude = std::max({magnitude, std::fabs(p[k]), std::fabs(a[k]), std::fabs(b[k]),
-                              std::fabs(c[k])});
+        magnitude = std::max(
+            {magnitude, std::fabs(p[k]), std::fabs(a[k]), std::fabs(b[k]), std::fabs(c[k])});
     }
     if (!(largest > 0) || !std::isfinite(largest)) return false;
     const predicates::PowerOfTwo unit(predicates::unit_shift(largest));
@@ -116,7 +116,9 @@ inline bool beyond_rounding_of_plane(const double* p, const double* a, const dou
     // The normal's direction is known to about eps |u| |v| / |n| (the cross product of two
     // nearly parallel sides cancels: a needle input triangle 1 by 4.4e-5 tilts it by 2.5e-12),
     // which moves the distance by that times |w|: allowed too, with a margin.
-    const auto norm = [](const double* x) { return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); };
+    const auto norm = [](const double* x) {
+        return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    };
     const double conditioning = norm(u) * norm(v) / length * norm(w);
     return distance > std::ldexp(unit(magnitude), -bits) + std::ldexp(conditioning, -44);
 }

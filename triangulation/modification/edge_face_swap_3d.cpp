@@ -262,7 +262,8 @@ EdgeFaceSwapCounters swap_faces_3d(TetMesh3& mesh, SwapCriterion3 criterion,
             }
             if (!quality_prefers(mesh, criterion, plan)) continue;
         }
-        const ConstrainedFlip3 outcome = apply_constrained_flip_3d(mesh, plan, constraints, created);
+        const ConstrainedFlip3 outcome =
+            apply_constrained_flip_3d(mesh, plan, constraints, created);
         if (outcome == ConstrainedFlip3::Locked) ++counters.locked;
         if (outcome == ConstrainedFlip3::Vetoed) ++counters.vetoed;
         if (outcome != ConstrainedFlip3::Made) continue;

@@ -62,7 +62,8 @@ class Criterion {
         Quality q;
         q.none = false;
         q.tet = p;
-        if (criterion_ == SwapCriterion3::MaxMinDihedral) q.angle = predicates::smallest_dihedral(p);
+        if (criterion_ == SwapCriterion3::MaxMinDihedral)
+            q.angle = predicates::smallest_dihedral(p);
         if (criterion_ == SwapCriterion3::MinMaxDihedral) q.angle = predicates::largest_dihedral(p);
         return q;
     }
@@ -84,9 +85,7 @@ class Criterion {
         return false;
     }
 
-    const Quality& worse(const Quality& x, const Quality& y) const {
-        return better(x, y) ? y : x;
-    }
+    const Quality& worse(const Quality& x, const Quality& y) const { return better(x, y) ? y : x; }
 
     /// Whether tetrahedron p is strictly better than `bound` (not none), stopping early.
     bool beats(const TetCorners& p, const Quality& bound) const {
@@ -161,7 +160,9 @@ bool plan_edge_removal_3d(const TetMesh3& mesh, TetIdx t, VertIdx a, VertIdx b,
         old = rule.worse(old, rule.of(corners(mesh, mesh.tet(ring.tets[i]))));
 
     // Usable triangles (i < j < k) and their two tetrahedra.
-    auto index = [](unsigned i, unsigned j, unsigned k) { return (i * kMaxRing + j) * kMaxRing + k; };
+    auto index = [](unsigned i, unsigned j, unsigned k) {
+        return (i * kMaxRing + j) * kMaxRing + k;
+    };
     std::array<std::int8_t, kMaxRing * kMaxRing * kMaxRing> usable{};  // 0 unknown, 1 yes, -1 no
     auto b_tet = [&](unsigned i, unsigned j, unsigned k) { return Tet{r[i], r[j], r[k], b}; };
     auto a_tet = [&](unsigned i, unsigned j, unsigned k) { return Tet{r[i], r[k], r[j], a}; };

@@ -31,8 +31,8 @@ struct EdgeRemovalCounters {
     std::uint64_t vetoed = 0;          ///< removals the caller's accept refused
 };
 
-inline constexpr std::array kEdgeRemovalCounterNames = EM_COUNTER_TABLE(
-    EdgeRemovalCounters, edges_examined, removals, locked, vetoed);
+inline constexpr std::array kEdgeRemovalCounterNames =
+    EM_COUNTER_TABLE(EdgeRemovalCounters, edges_examined, removals, locked, vetoed);
 static_assert(counter_table_complete(kEdgeRemovalCounterNames));
 
 /// The removal of edge (a, b) of live tetrahedron t into `plan` (kind EdgeRemoval): the best

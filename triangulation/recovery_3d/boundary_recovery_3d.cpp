@@ -638,10 +638,9 @@ class Recovery {
             if (t != kNone && removed[t] == 0) {
                 seeds.push_back(t);
             } else {
-                warnings_.push_back("volume hole point " +
-                                    std::to_string(h / 3 + plc_.first_index) + " " +
-                                    format_point(&plc_.holes[h], 3) +
-                                    " lies outside the domain: ignored");
+                warnings_.push_back(
+                    "volume hole point " + std::to_string(h / 3 + plc_.first_index) + " " +
+                    format_point(&plc_.holes[h], 3) + " lies outside the domain: ignored");
             }
         }
         flood_tetrahedra_3d(m, subface_set, seeds, removed, 1);

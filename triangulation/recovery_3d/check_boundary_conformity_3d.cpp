@@ -173,8 +173,8 @@ std::string check(const Plc3& plc, const ConformingMesh3& cm) {
             if (holder == nullptr)
                 return "facet vertex " + name(v) + "'s projection lies outside facet " +
                        std::to_string(index);
-            if (beyond_rounding_of_plane(mesh.point(v), plc.point(holder[0]),
-                                         plc.point(holder[1]), plc.point(holder[2])))
+            if (beyond_rounding_of_plane(mesh.point(v), plc.point(holder[0]), plc.point(holder[1]),
+                                         plc.point(holder[2])))
                 return "facet vertex " + name(v) + " lies off facet " + std::to_string(index) +
                        "'s plane beyond rounding";
         } else if (cm.vertex_feature[v] != VertexFeature3::Volume) {

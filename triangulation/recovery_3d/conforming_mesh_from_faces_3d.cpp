@@ -135,9 +135,10 @@ ConformingMeshReading3 conforming_mesh_from_faces_3d(const Plc3& plc, Tetrahedra
         }
     }
     // Each segment's chain: its ends and the vertices within rounding of it that lie on its
-    // line up to their rounding (on_segment_line: rounded points of the segment), in order along its largest coordinate. A facet point merely within
-    // rounding of a segment beside it (refinement near a small angle puts some there, farther
-    // from the line than that) stays a facet vertex.
+    // line up to their rounding (on_segment_line: rounded points of the segment), in order along
+    // its largest coordinate. A facet point merely within rounding of a segment beside it
+    // (refinement near a small angle puts some there, farther from the line than that) stays a
+    // facet vertex.
     std::vector<std::vector<VertIdx>> chains(segment_count);
     for (std::size_t s = 0; s < segment_count; ++s) {
         const VertIdx first = cm.segments[2 * s], last = cm.segments[2 * s + 1];

@@ -6,8 +6,8 @@
 #include "triangulation/recovery_3d/plc_3d.hpp"
 
 #include <algorithm>
-#include <climits>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <initializer_list>
 #include <iterator>
@@ -1216,8 +1216,7 @@ PlcSegments3 plc_segments_3d(const Plc3& plc) {
 
 std::vector<std::array<VertIdx, 3>> facet_largest_triangles_3d(const Plc3& plc,
                                                                const SurfaceTriangles3& surface) {
-    std::vector<std::array<VertIdx, 3>> largest_triangle(plc.facets.size(),
-                                                         {kNone, kNone, kNone});
+    std::vector<std::array<VertIdx, 3>> largest_triangle(plc.facets.size(), {kNone, kNone, kNone});
     std::vector<std::pair<long, double>> largest_area(plc.facets.size(), {LONG_MIN, 0.0});
     for (std::uint32_t t = 0; t < surface.triangle_count(); ++t) {
         const VertIdx* c = &surface.triangles[3 * std::size_t{t}];

@@ -106,9 +106,9 @@ FreeVertexEmbedding3 embed_free_vertices_3d(Plc3& plc);
 /// A facet it joins stays within rounding of its plane as a rule (the vertex is within 2^-48
 /// of it, the facet's tolerance is 2^-46); one that does not is split here by
 /// split_nonplanar_facets_3d (its warnings in split_warnings), so the facets are planar (within
-/// rounding) after it as before. Exact: orient3d and orient2d at the corners of a box rounded outward, which
-/// scales with the input (the same decision at 2^+-600). Vertices beside a corner (the box
-/// holds a segment's end) are left free.
+/// rounding) after it as before. Exact: orient3d and orient2d at the corners of a box rounded
+/// outward, which scales with the input (the same decision at 2^+-600). Vertices beside a corner
+/// (the box holds a segment's end) are left free.
 /// @pre split_nonplanar_facets_3d(plc) passed (the facets are planar).
 FreeVertexEmbedding3 attach_free_vertices_near_surface_3d(Plc3& plc);
 

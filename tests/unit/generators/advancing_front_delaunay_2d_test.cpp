@@ -38,8 +38,8 @@ namespace tri = exactmesh::triangulation;
 
 namespace {
 
-using exactmesh::testing::Input;
 using exactmesh::testing::from_domain;
+using exactmesh::testing::Input;
 using exactmesh::testing::polygon;
 
 /// Interior edges (a triangle on both sides, not a piece) whose opposite vertex lies strictly

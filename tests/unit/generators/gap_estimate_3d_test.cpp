@@ -95,9 +95,8 @@ TEST(Generators_GapEstimate3d, TheBudgetItselfRefusesAndAGapWithinItPasses) {
     add_box_hole(two, {0.2, 0.2, 0.2}, 0.2);
     add_box_hole(two, {0.4 + 1e-4, 0.2, 0.2}, 0.2);
     const tri::ConformingMesh3 two_recovered = tri::boundary_recovery_3d(two).mesh;
-    const std::string message = testing::error_message<InputError>([&] {
-        refuse_gaps_far_over_budget_3d(two, two_recovered, 1024000, "refinement");
-    });
+    const std::string message = testing::error_message<InputError>(
+        [&] { refuse_gaps_far_over_budget_3d(two, two_recovered, 1024000, "refinement"); });
     EXPECT_NE(message.find("refinement: Steiner point budget of 1024000 exceeded at once: facets "
                            "0.0001 apart"),
               std::string::npos)
@@ -112,13 +111,13 @@ TEST(Generators_GapEstimate3d, TheBudgetItselfRefusesAndAGapWithinItPasses) {
     const GapEstimate3 estimate = gap_estimate_3d(one);
     EXPECT_GT(estimate.points, 4.9e5);
     EXPECT_LT(estimate.points, 5e5);
-    EXPECT_THROW(refuse_gaps_far_over_budget_3d(one, tri::boundary_recovery_3d(one).mesh,
-                                                1016000, "refinement"),
+    EXPECT_THROW(refuse_gaps_far_over_budget_3d(one, tri::boundary_recovery_3d(one).mesh, 1016000,
+                                                "refinement"),
                  InputError);
     tri::Plc3 smaller = tri::box(1, 1, 1);
     add_box_hole(smaller, {1e-4, 0.4, 0.4}, 0.05);
-    EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(
-        smaller, tri::boundary_recovery_3d(smaller).mesh, 1016000, "refinement"));
+    EXPECT_NO_THROW(refuse_gaps_far_over_budget_3d(smaller, tri::boundary_recovery_3d(smaller).mesh,
+                                                   1016000, "refinement"));
 }
 
 TEST(Generators_GapEstimate3d, WallsFacingEachOtherAcrossAHoleAskForNothing) {
@@ -132,9 +131,9 @@ TEST(Generators_GapEstimate3d, WallsFacingEachOtherAcrossAHoleAskForNothing) {
     const auto first = static_cast<tri::VertIdx>(plc.vertex_count());
     const double lo[3] = {0.25, 0.25, 0.5}, side[3] = {0.5, 0.0625, 1e-4};
     for (int k = 0; k < 8; ++k) {
-        plc.xyz.insert(plc.xyz.end(), {lo[0] + (k & 1 ? side[0] : 0),
-                                       lo[1] + ((k >> 1) & 1 ? side[1] : 0),
-                                       lo[2] + ((k >> 2) & 1 ? side[2] : 0)});
+        plc.xyz.insert(plc.xyz.end(),
+                       {lo[0] + (k & 1 ? side[0] : 0), lo[1] + ((k >> 1) & 1 ? side[1] : 0),
+                        lo[2] + ((k >> 2) & 1 ? side[2] : 0)});
     }
     const std::vector<std::vector<tri::VertIdx>> faces = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
                                                           {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};

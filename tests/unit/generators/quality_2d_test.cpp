@@ -15,7 +15,8 @@ TEST(Generators_Quality2d, HandCheckedTriangles) {
     // Equilateral (0,0) (2,0) (1, sqrt 3) and right isosceles (2,0) (4,0) (2,2).
     const std::vector<double> xy = {0, 0, 2, 0, 1, std::sqrt(3.0), 4, 0, 2, 2};
     const std::vector<std::uint32_t> triangles = {0, 1, 2, 1, 3, 4};
-    const gen::QualityReport2 r = gen::quality_report_2d(xy, triangles, gen::SizeFunction::uniform(2.0));
+    const gen::QualityReport2 r =
+        gen::quality_report_2d(xy, triangles, gen::SizeFunction::uniform(2.0));
     EXPECT_EQ(r.triangles, 2u);
     EXPECT_EQ(r.vertices, 5u);
     EXPECT_NEAR(r.min_angle, 45, 1e-9);

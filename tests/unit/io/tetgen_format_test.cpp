@@ -23,8 +23,9 @@ namespace {
 /// and a second one sharing its face (0, 1, 2).
 const std::vector<double> kXyz{0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1};
 const std::vector<std::uint32_t> kTets{0, 1, 2, 3, 1, 0, 2, 4};
-const std::vector<std::uint32_t> kNeighbors{std::uint32_t(-1), std::uint32_t(-1), std::uint32_t(-1), 1,
-                                         std::uint32_t(-1), std::uint32_t(-1), std::uint32_t(-1), 0};
+const std::vector<std::uint32_t> kNeighbors{
+    std::uint32_t(-1), std::uint32_t(-1), std::uint32_t(-1), 1,
+    std::uint32_t(-1), std::uint32_t(-1), std::uint32_t(-1), 0};
 
 /// Expects parse to throw a FormatError at `line` whose message contains `needle`.
 template <class Parse>
@@ -56,10 +57,13 @@ TEST(Io_TetGen, NodeFilesReadExactlyInEitherBase) {
     EXPECT_EQ(n.attributes, (std::vector<double>{7.5, 0, 1}));
     EXPECT_EQ(n.markers, (std::vector<std::int32_t>{-4, 0, 2}));
     // The header's dimension may be omitted (3 is assumed); formatting round-trips exactly.
-    const io::TetgenNodeFile m = io::parse_tetgen_node("2\n0 1 2 3\n1 0.30000000000000004 5 6\n", "b.node");
+    const io::TetgenNodeFile m =
+        io::parse_tetgen_node("2\n0 1 2 3\n1 0.30000000000000004 5 6\n", "b.node");
     EXPECT_EQ(m.first_index, 0u);
-    EXPECT_EQ(io::parse_tetgen_node(io::format_tetgen_node(n.xyz, n.first_index), "c.node").xyz, n.xyz);
-    EXPECT_EQ(io::parse_tetgen_node(io::format_tetgen_node(m.xyz, m.first_index), "c.node").xyz, m.xyz);
+    EXPECT_EQ(io::parse_tetgen_node(io::format_tetgen_node(n.xyz, n.first_index), "c.node").xyz,
+              n.xyz);
+    EXPECT_EQ(io::parse_tetgen_node(io::format_tetgen_node(m.xyz, m.first_index), "c.node").xyz,
+              m.xyz);
 }
 
 TEST(Io_TetGen, NodeErrorsNameFileLineAndProblem) {

@@ -8,8 +8,8 @@
 //     other edge locally Delaunay) and check_topology_2d (the hull); conforming also passes
 //     check_delaunay_2d. The domain outputs (remove_exterior = true, CDT's "outer"
 //     counterpart) pass check_constrained_delaunay_2d too, without the segment-chain part
-//     (segments with the exterior on both sides, e.g. Hanging's, are removed with it). Swap and cavity return identical
-//     vertices, triangles and constraint flags.
+//     (segments with the exterior on both sides, e.g. Hanging's, are removed with it). Swap and
+//     cavity return identical vertices, triangles and constraint flags.
 //  2. Upstream `<input>__auto_resolve_super` (or `__f64_auto_resolve_super`): CDT after
 //     eraseSuperTriangle() is the triangulation of the convex hull with input numbering, our
 //     remove_exterior = false. Compared: the triangle count, the fixed-edge count (our pieces)
@@ -88,7 +88,8 @@ CorpusInput read_input(const fs::path& path) {
     const std::size_t nv = std::stoul(t[0]), ne = std::stoul(t[1]);
     EXPECT_EQ(t.size(), 2 + 2 * nv + 2 * ne) << path;
     for (std::size_t i = 0; i < 2 * nv; ++i) in.xy.push_back(std::stod(t[2 + i]));
-    for (std::size_t i = 0; i < 2 * ne; ++i) in.segments.push_back(static_cast<tri::VertIdx>(std::stoul(t[2 + 2 * nv + i])));
+    for (std::size_t i = 0; i < 2 * ne; ++i)
+        in.segments.push_back(static_cast<tri::VertIdx>(std::stoul(t[2 + 2 * nv + i])));
     return in;
 }
 
@@ -131,7 +132,8 @@ struct Ours {
 Ours summarize(const tri::Triangulation2& m) {
     Ours s;
     for (tri::TriIdx t = 0; t < m.triangle_count(); ++t) {
-        s.triangles.insert(rotated({m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]}));
+        s.triangles.insert(
+            rotated({m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]}));
         for (int k = 0; k < 3; ++k) {
             const tri::VertIdx u = m.triangles[3 * t + static_cast<unsigned>(k)];
             const tri::VertIdx v = m.triangles[3 * t + static_cast<unsigned>(k + 1) % 3];
@@ -140,10 +142,12 @@ Ours summarize(const tri::Triangulation2& m) {
             if (m.is_constrained(t, k) || n == tri::kNone) continue;
             tri::VertIdx apex = tri::kNone;
             for (unsigned j = 0; j < 3; ++j) {
-                if (m.triangles[3 * n + j] != u && m.triangles[3 * n + j] != v) apex = m.triangles[3 * n + j];
+                if (m.triangles[3 * n + j] != u && m.triangles[3 * n + j] != v)
+                    apex = m.triangles[3 * n + j];
             }
             const double* p = m.xy.data();
-            if (exactmesh::predicates::incircle(p + 2 * m.triangles[3 * t], p + 2 * m.triangles[3 * t + 1],
+            if (exactmesh::predicates::incircle(p + 2 * m.triangles[3 * t],
+                                                p + 2 * m.triangles[3 * t + 1],
                                                 p + 2 * m.triangles[3 * t + 2], p + 2 * apex) ==
                 exactmesh::predicates::Sign::Zero) {
                 s.unique = false;
@@ -174,7 +178,8 @@ tri::Cdt2Result check_all_recoveries(const CorpusInput& in, const std::string& n
         for (const auto recovery : {tri::SegmentRecovery::Swap, tri::SegmentRecovery::Cavity,
                                     tri::SegmentRecovery::Conforming}) {
             if (recovery == tri::SegmentRecovery::Conforming && (domain || !conforming)) continue;
-            const std::string label = name + " " + tri::segment_recovery_name(recovery) + (domain ? " domain" : " hull");
+            const std::string label =
+                name + " " + tri::segment_recovery_name(recovery) + (domain ? " domain" : " hull");
             tri::Cdt2Result r;
             try {
                 r = build(in, recovery, domain);
@@ -186,10 +191,13 @@ tri::Cdt2Result check_all_recoveries(const CorpusInput& in, const std::string& n
             // The domain drops segments with the exterior on both sides (dangling ones): check
             // its edges only there.
             const auto report = tri::check_constrained_delaunay_2d(
-                r.mesh, r.input_vertex_count, domain ? std::span<const tri::VertIdx>{} : std::span<const tri::VertIdx>(in.segments));
+                r.mesh, r.input_vertex_count,
+                domain ? std::span<const tri::VertIdx>{}
+                       : std::span<const tri::VertIdx>(in.segments));
             EXPECT_TRUE(report.ok) << label << ": " << report.problem;
             if (!domain && recovery == tri::SegmentRecovery::Conforming) {
-                const auto delaunay = tri::check_delaunay_2d(r.mesh.xy, r.mesh.triangles);  // topology too
+                const auto delaunay =
+                    tri::check_delaunay_2d(r.mesh.xy, r.mesh.triangles);  // topology too
                 EXPECT_TRUE(delaunay.ok) << label << ": " << delaunay.problem;
             } else if (!domain) {
                 const auto topology = tri::check_topology_2d(r.mesh.xy, r.mesh.triangles);
@@ -198,7 +206,8 @@ tri::Cdt2Result check_all_recoveries(const CorpusInput& in, const std::string& n
             results.push_back(std::move(r));
         }
         EXPECT_EQ(results[0].mesh.xy, results[1].mesh.xy) << name;
-        EXPECT_EQ(summarize(results[0].mesh).triangles, summarize(results[1].mesh).triangles) << name;
+        EXPECT_EQ(summarize(results[0].mesh).triangles, summarize(results[1].mesh).triangles)
+            << name;
         EXPECT_EQ(summarize(results[0].mesh).fixed, summarize(results[1].mesh).fixed) << name;
         if (!domain) swap = std::move(results[0]);
     }
@@ -238,7 +247,8 @@ std::string compare_super(const tri::Cdt2Result& r, const Expected& e, const std
 }
 
 /// Comparison (3): CDT's stage `all` triangles among input vertices must be ours.
-std::string compare_all_stage(const tri::Cdt2Result& r, const Expected& e, const std::string& label) {
+std::string compare_all_stage(const tri::Cdt2Result& r, const Expected& e,
+                              const std::string& label) {
     const Ours ours = summarize(r.mesh);
     if (!ours.unique) return "validity only (cocircular)";
     int checked = 0;
@@ -247,17 +257,20 @@ std::string compare_all_stage(const tri::Cdt2Result& r, const Expected& e, const
         const Triangle input{t[0] - 3, t[1] - 3, t[2] - 3};
         if (std::max({input[0], input[1], input[2]}) >= r.input_vertex_count) continue;
         EXPECT_TRUE(ours.triangles.count(rotated(input)))
-            << label << ": CDT triangle " << input[0] << " " << input[1] << " " << input[2] << " is not ours";
+            << label << ": CDT triangle " << input[0] << " " << input[1] << " " << input[2]
+            << " is not ours";
         ++checked;
     }
     return "all-stage subset (" + std::to_string(checked) + " triangles)";
 }
 
-void print_row(const std::string& name, const CorpusInput& in, const tri::Cdt2Result& r, const std::string& compared) {
-    std::printf("cdt corpus | %-52s | V %5zu S %5zu | T %5u pieces %5zu added %3u dropped %2llu | %s\n", name.c_str(),
-                in.xy.size() / 2, in.segments.size() / 2, r.mesh.triangle_count(), r.piece_segment.size(),
-                r.mesh.vertex_count() - r.input_vertex_count,
-                static_cast<unsigned long long>(r.counters.dropped_segments), compared.c_str());
+void print_row(const std::string& name, const CorpusInput& in, const tri::Cdt2Result& r,
+               const std::string& compared) {
+    std::printf(
+        "cdt corpus | %-52s | V %5zu S %5zu | T %5u pieces %5zu added %3u dropped %2llu | %s\n",
+        name.c_str(), in.xy.size() / 2, in.segments.size() / 2, r.mesh.triangle_count(),
+        r.piece_segment.size(), r.mesh.vertex_count() - r.input_vertex_count,
+        static_cast<unsigned long long>(r.counters.dropped_segments), compared.c_str());
 }
 
 }  // namespace
@@ -265,7 +278,8 @@ void print_row(const std::string& name, const CorpusInput& in, const tri::Cdt2Re
 TEST(Constrained2d_CdtCorpus, EveryInputThroughAllRecoveries) {
     ASSERT_TRUE(fs::is_directory(kCdtDir / "inputs")) << kCdtDir;
     std::vector<fs::path> inputs;
-    for (const auto& entry : fs::directory_iterator(kCdtDir / "inputs")) inputs.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(kCdtDir / "inputs"))
+        inputs.push_back(entry.path());
     std::sort(inputs.begin(), inputs.end());
     EXPECT_EQ(inputs.size(), 36u);
     for (const fs::path& path : inputs) {
@@ -283,14 +297,18 @@ TEST(Constrained2d_CdtCorpus, EveryInputThroughAllRecoveries) {
             if (!fs::exists(ignore)) ignore = expected / (name + "__f64_auto_ignore_super.txt");
             if (r.counters.intersections == 0 && fs::exists(ignore)) {
                 const Expected e = read_expected(ignore);
-                EXPECT_EQ(r.mesh.triangle_count(), e.triangles.size()) << name << " (ignore_super): triangle count";
-                EXPECT_EQ(r.piece_segment.size(), e.fixed.size()) << name << " (ignore_super): fixed-edge count";
+                EXPECT_EQ(r.mesh.triangle_count(), e.triangles.size())
+                    << name << " (ignore_super): triangle count";
+                EXPECT_EQ(r.piece_segment.size(), e.fixed.size())
+                    << name << " (ignore_super): fixed-edge count";
                 compared += ", ignore_super counts";
             }
         } else {
-            for (const char* all : {"__f64_auto_resolve_all.txt", "__f64_as-provided_resolve_all.txt"}) {
+            for (const char* all :
+                 {"__f64_auto_resolve_all.txt", "__f64_as-provided_resolve_all.txt"}) {
                 if (fs::exists(expected / (name + all))) {
-                    compared += ", " + compare_all_stage(r, read_expected(expected / (name + all)), name + all);
+                    compared += ", " + compare_all_stage(r, read_expected(expected / (name + all)),
+                                                         name + all);
                 }
             }
         }
@@ -298,9 +316,9 @@ TEST(Constrained2d_CdtCorpus, EveryInputThroughAllRecoveries) {
         if (name == "cdt") {
             // Two self-loop constraints `0 0`: accepted, dropped with a warning each.
             EXPECT_GE(r.counters.dropped_segments, 2u);
-            const auto zero = std::count_if(r.warnings.begin(), r.warnings.end(), [](const std::string& w) {
-                return w.find("zero length") != std::string::npos;
-            });
+            const auto zero = std::count_if(
+                r.warnings.begin(), r.warnings.end(),
+                [](const std::string& w) { return w.find("zero length") != std::string::npos; });
             EXPECT_GE(zero, 2) << "self-loop constraints should each warn";
         }
     }
@@ -314,23 +332,26 @@ TEST(Constrained2d_CdtCorpus, InlineCasesOfIssues154And174) {
     const Inline cases[] = {
         {"154_1", {{0, 1e38, 1, 1e38}, {}}},
         {"154_2",
-         {{2.0, -2.18933983E-5, -0.0896810815, -2.18407786E-5, -2.19008489E-5, -7.64692231E-6, 8.73939061E-5,
-           0.00568488613, -0.00142463227, -0.00142461748, -7.67273832E-6, 8.7602064E-5, 0.00569847599,
-           -0.00142463227, -2.18156383E-5, -7.6295637E-6},
+         {{2.0, -2.18933983E-5, -0.0896810815, -2.18407786E-5, -2.19008489E-5, -7.64692231E-6,
+           8.73939061E-5, 0.00568488613, -0.00142463227, -0.00142461748, -7.67273832E-6,
+           8.7602064E-5, 0.00569847599, -0.00142463227, -2.18156383E-5, -7.6295637E-6},
           {0, 1}}},
         {"154_3",
-         {{-2.0, 1.47656155, -6.40527344, -40.4999084, 0.0, -7.96960115, -2.00152564, 1.46877956, -2.70361328,
-           -7.99999619, -2.70465064, -7.99901962, -7.97778273, -19.3754253, 7.96885204, -5.37488127, -7.97180128,
-           -39.7499695},
+         {{-2.0, 1.47656155, -6.40527344, -40.4999084, 0.0, -7.96960115, -2.00152564, 1.46877956,
+           -2.70361328, -7.99999619, -2.70465064, -7.99901962, -7.97778273, -19.3754253, 7.96885204,
+           -5.37488127, -7.97180128, -39.7499695},
           {0, 8}}},
     };
     for (const Inline& c : cases) {
         const tri::Cdt2Result r = check_all_recoveries(c.in, c.name);
         const std::string compared =
-            "validity, " + compare_all_stage(r, read_expected(kCdtDir / "expected" / (std::string(c.name) + ".txt")), c.name);
+            "validity, " +
+            compare_all_stage(
+                r, read_expected(kCdtDir / "expected" / (std::string(c.name) + ".txt")), c.name);
         print_row(c.name, c.in, r, compared);
     }
-    EXPECT_EQ(check_all_recoveries({{0, 1e38, 1, 1e38}, {}}, "154_1").mesh.triangle_count(), 0u);  // collinear
+    EXPECT_EQ(check_all_recoveries({{0, 1e38, 1, 1e38}, {}}, "154_1").mesh.triangle_count(),
+              0u);  // collinear
     // #174: a bounding box a few ulps wide.
     const CorpusInput tiny_box{{45802.2779561576462583616375923, 169208.540894783218391239643097,
                                 45802.2779561576317064464092255, 169208.540894783218391239643097,

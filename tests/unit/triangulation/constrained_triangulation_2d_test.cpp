@@ -7,9 +7,9 @@
 
 #include <algorithm>
 #include <array>
-#include <set>
 #include <cmath>
 #include <random>
+#include <set>
 #include <vector>
 
 #include <gmpxx.h>
@@ -41,7 +41,8 @@ Input square_with_hole() {
 }
 
 void expect_valid(const Input& in, const tri::Cdt2Result& r, const char* label) {
-    const auto report = tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments, r.pieces);
+    const auto report =
+        tri::check_constrained_delaunay_2d(r.mesh, r.input_vertex_count, in.segments, r.pieces);
     EXPECT_TRUE(report.ok) << label << ": " << report.problem;
 }
 
@@ -153,7 +154,8 @@ TEST(ConstrainedTriangulation2, SplitsAtRoundedPointsBendByRoundingOnly) {
             ASSERT_NE(e, tri::kNone);
             const double* pa = cdt.mesh().point(a);
             const double* pb = cdt.mesh().point(b);
-            const tri::VertIdx v = cdt.split_constrained_edge(e, 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]));
+            const tri::VertIdx v =
+                cdt.split_constrained_edge(e, 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]));
             EXPECT_NE(cdt.find_edge(a, v), tri::kNone);
             EXPECT_NE(cdt.find_edge(v, b), tri::kNone);
         }
@@ -206,7 +208,8 @@ TEST(ConstrainedTriangulation2, CornerDotSignIsExactNearRightAngles) {
     const double p[2] = {0, 0}, q[2] = {4, 0};
     const double o[2] = {2, 2};
     EXPECT_EQ(em::predicates::corner_dot_sign(o, p, q), em::predicates::Sign::Zero);
-    const double inside[2] = {2, std::nextafter(2.0, 0.0)}, outside[2] = {2, std::nextafter(2.0, 3.0)};
+    const double inside[2] = {2, std::nextafter(2.0, 0.0)},
+                 outside[2] = {2, std::nextafter(2.0, 3.0)};
     EXPECT_EQ(em::predicates::corner_dot_sign(inside, p, q), em::predicates::Sign::Negative);
     EXPECT_EQ(em::predicates::corner_dot_sign(outside, p, q), em::predicates::Sign::Positive);
     // Large offsets: differences not exact in double (GMP stage), against a GMP oracle.
@@ -218,8 +221,10 @@ TEST(ConstrainedTriangulation2, CornerDotSignIsExactNearRightAngles) {
         const double r = 0.5 * std::hypot(b[0] - a[0], b[1] - a[1]);
         const double angle = u(rng) * 3.14159;
         const double c[2] = {m[0] + r * std::cos(angle), m[1] + r * std::sin(angle)};
-        const mpq_class ux = mpq_class(a[0]) - mpq_class(c[0]), uy = mpq_class(a[1]) - mpq_class(c[1]);
-        const mpq_class vx = mpq_class(b[0]) - mpq_class(c[0]), vy = mpq_class(b[1]) - mpq_class(c[1]);
+        const mpq_class ux = mpq_class(a[0]) - mpq_class(c[0]),
+                        uy = mpq_class(a[1]) - mpq_class(c[1]);
+        const mpq_class vx = mpq_class(b[0]) - mpq_class(c[0]),
+                        vy = mpq_class(b[1]) - mpq_class(c[1]);
         const int expected = sgn(ux * vx + uy * vy);
         EXPECT_EQ(static_cast<int>(em::predicates::corner_dot_sign(c, a, b)), expected) << k;
     }

@@ -35,8 +35,9 @@ TEST(Delaunay2Naive, AgreesWithEveryAlgorithmOnRandomAndCocircularSets) {
     for (int k = 0; k < 20; ++k) sets.push_back(random_points(rng, 5 + k * 2));
     // 12 points on the unit circle's exact 12-fold symmetry (cocircular ties) plus the centre,
     // and a duplicate.
-    std::vector<double> ring{1, 0, 0, 1, -1, 0, 0, -1, 0.6, 0.8, -0.6, 0.8, 0.6, -0.8, -0.6, -0.8,
-                             0.8, 0.6, -0.8, 0.6, 0.8, -0.6, -0.8, -0.6, 0, 0, 0.6, 0.8};
+    std::vector<double> ring{1,    0,    0,    1,    -1,   0,    0,   -1,  0.6,  0.8,
+                             -0.6, 0.8,  0.6,  -0.8, -0.6, -0.8, 0.8, 0.6, -0.8, 0.6,
+                             0.8,  -0.6, -0.8, -0.6, 0,    0,    0.6, 0.8};
     sets.push_back(ring);
     for (const auto& xy : sets) {
         const tri::NaiveDelaunay2 oracle = tri::delaunay_2d_naive(xy);
@@ -68,9 +69,9 @@ TEST(Delaunay2Naive, NamesWhatIsWrong) {
     EXPECT_NE(flipped_problem.find("inside its circumcircle"), std::string::npos)
         << flipped_problem;
     const std::vector<std::uint32_t> clockwise{0, 4, 1, 1, 2, 4, 2, 3, 4, 3, 0, 4};
-    EXPECT_NE(tri::compare_with_delaunay_2d_naive(xy, clockwise, oracle)
-                  .find("not counter-clockwise"),
-              std::string::npos);
+    EXPECT_NE(
+        tri::compare_with_delaunay_2d_naive(xy, clockwise, oracle).find("not counter-clockwise"),
+        std::string::npos);
     const std::vector<std::uint32_t> short_by_one{0, 1, 4, 1, 2, 4, 2, 3, 4};
     EXPECT_NE(tri::compare_with_delaunay_2d_naive(xy, short_by_one, oracle).find("expected 4"),
               std::string::npos);

@@ -9,8 +9,8 @@
 #include <limits>
 #include <random>
 #include <set>
-#include <string>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "base/errors.hpp"
@@ -45,14 +45,16 @@ bool has_duplicates(const std::vector<double>& xy) {
 /// have the same triangle count; without duplicates they must be the same triangles.
 void expect_all_agree(const std::vector<double>& xy, const std::string& label) {
     const bool duplicates = has_duplicates(xy);
-    const tri::Delaunay2Result reference = tri::bowyer_watson_2d(xy, {tri::InsertionOrder::Given, 1});
+    const tri::Delaunay2Result reference =
+        tri::bowyer_watson_2d(xy, {tri::InsertionOrder::Given, 1});
     const Triangles expected = canonical_triangles(reference.triangles);
     for (const tri::Delaunay2Algorithm& algorithm : kAlgorithms) {
         for (const tri::InsertionOrder order : kOrders) {
             const tri::Delaunay2Result r = algorithm.build(xy, {order, 7});
             const tri::CheckReport report = tri::check_delaunay_2d(xy, r.triangles);
             ASSERT_TRUE(report.ok) << label << " " << algorithm.name << ": " << report.problem;
-            ASSERT_EQ(r.triangles.size(), reference.triangles.size()) << label << " " << algorithm.name;
+            ASSERT_EQ(r.triangles.size(), reference.triangles.size())
+                << label << " " << algorithm.name;
             ASSERT_EQ(r.merged_into, reference.merged_into) << label << " " << algorithm.name;
             if (!duplicates) {
                 ASSERT_EQ(canonical_triangles(r.triangles), expected)
@@ -63,7 +65,8 @@ void expect_all_agree(const std::vector<double>& xy, const std::string& label) {
                 for (unsigned k = 0; k < 3; ++k) {
                     const tri::TriIdx u = r.neighbors[3 * t + k];
                     if (u == tri::kNone) continue;
-                    const tri::VertIdx a = r.triangles[3 * t + k], b = r.triangles[3 * t + (k + 1) % 3];
+                    const tri::VertIdx a = r.triangles[3 * t + k],
+                                       b = r.triangles[3 * t + (k + 1) % 3];
                     bool found = false;
                     for (unsigned j = 0; j < 3; ++j) {
                         found = found || (r.triangles[3 * u + j] == b &&
@@ -216,7 +219,8 @@ TEST(Triangulation_Delaunay2, CheckRejectsNonDelaunayAndBrokenTopology) {
     const std::vector<tri::VertIdx> diagonal13 = {0, 1, 3, 1, 2, 3};
     const bool first_is_delaunay = tri::check_delaunay_2d(xy, diagonal02).ok;
     EXPECT_NE(first_is_delaunay, tri::check_delaunay_2d(xy, diagonal13).ok);
-    const tri::CheckReport clockwise = tri::check_topology_2d(xy, std::vector<tri::VertIdx>{0, 2, 1, 0, 3, 2});
+    const tri::CheckReport clockwise =
+        tri::check_topology_2d(xy, std::vector<tri::VertIdx>{0, 2, 1, 0, 3, 2});
     EXPECT_FALSE(clockwise.ok);
     EXPECT_EQ(clockwise.triangle, 0u);
     const tri::CheckReport missing = tri::check_topology_2d(xy, std::vector<tri::VertIdx>{0, 1, 2});
@@ -242,9 +246,12 @@ TEST(Triangulation_Check2, NoTrianglesPassOnlyForCollinearPoints) {
     EXPECT_EQ(repeated.vertices, (std::vector<tri::VertIdx>{0, 2, 3})) << repeated.problem;
     // Collinear points (with duplicates), fewer than three distinct points, no points: no
     // triangle is right, and that is what every algorithm returns.
-    const std::vector<std::vector<double>> degenerate = {
-        {0, 0, 2, 2, 1, 1, 2, 2, 3, 3, 0, 0}, {0, 5, 0, 1, 0, 3}, {1, 1, 1, 1, 2, 3},
-        {1, 1, 1, 1}, {7, 7}, {}};
+    const std::vector<std::vector<double>> degenerate = {{0, 0, 2, 2, 1, 1, 2, 2, 3, 3, 0, 0},
+                                                         {0, 5, 0, 1, 0, 3},
+                                                         {1, 1, 1, 1, 2, 3},
+                                                         {1, 1, 1, 1},
+                                                         {7, 7},
+                                                         {}};
     for (const std::vector<double>& xy : degenerate) {
         EXPECT_TRUE(tri::check_delaunay_2d(xy, none).ok) << xy.size();
         for (const tri::Delaunay2Algorithm& algorithm : kAlgorithms) {
@@ -294,12 +301,11 @@ TEST(Triangulation_Check2, MessagesUseTheCallersNumbering) {
     EXPECT_EQ(zero.triangle, one.triangle);
     EXPECT_EQ(zero.vertices, one.vertices);
     const tri::VertIdx* corners = &bad[3 * zero.triangle];
-    EXPECT_EQ(one.problem, "triangle " + std::to_string(zero.triangle + 1) + " (" +
-                               std::to_string(corners[0] + 1) + ", " +
-                               std::to_string(corners[1] + 1) + ", " +
-                               std::to_string(corners[2] + 1) + "): not Delaunay, vertex " +
-                               std::to_string(zero.vertices[0] + 1) +
-                               " lies inside its circumcircle");
+    EXPECT_EQ(one.problem,
+              "triangle " + std::to_string(zero.triangle + 1) + " (" +
+                  std::to_string(corners[0] + 1) + ", " + std::to_string(corners[1] + 1) + ", " +
+                  std::to_string(corners[2] + 1) + "): not Delaunay, vertex " +
+                  std::to_string(zero.vertices[0] + 1) + " lies inside its circumcircle");
 
     // Vertex numbers past 2^32 - 1 in the caller's numbering print in full.
     const tri::CheckReport out_of_range = tri::check_topology_2d(

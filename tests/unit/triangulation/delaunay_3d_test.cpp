@@ -12,8 +12,8 @@
 #include <limits>
 #include <random>
 #include <set>
-#include <string>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "base/errors.hpp"
@@ -71,7 +71,8 @@ tri::Delaunay3Result expect_all_agree(const std::vector<double>& xyz, const std:
     for (const tri::Delaunay3Algorithm& algorithm : kAlgorithms) {
         for (std::size_t o = 0; o < 3; ++o) {
             const tri::Delaunay3Result r = algorithm.build(xyz, {kOrders[o], 7});
-            const std::string what = label + " " + std::string(algorithm.name) + " " + kOrderNames[o];
+            const std::string what =
+                label + " " + std::string(algorithm.name) + " " + kOrderNames[o];
             const tri::Check3Report report = tri::check_delaunay_3d(r.mesh);
             EXPECT_TRUE(report.ok) << what << ": " << report.problem;
             if (!report.ok) return reference;

@@ -51,7 +51,8 @@ std::size_t expect_optimal(const std::vector<double>& xy) {
         EXPECT_TRUE(mesh.triangles.empty()) << describe(xy);
         return 0;
     }
-    EXPECT_EQ(orc::compare_exact_angles(orc::largest_exact_angle(xy, mesh.triangles), optimum.angle), 0)
+    EXPECT_EQ(
+        orc::compare_exact_angles(orc::largest_exact_angle(xy, mesh.triangles), optimum.angle), 0)
         << describe(xy);
     return optimum.triangulations;
 }
@@ -107,10 +108,12 @@ TEST(Triangulation_EdgeCutting2, MatchesExhaustiveEnumerationOnRandomSmallSets) 
 }
 
 TEST(Triangulation_EdgeCutting2, MatchesExhaustiveEnumerationOnUniformDoubles) {
-    const auto seeds = std::max<std::uint64_t>(8, static_cast<std::uint64_t>(120 * std::min(1.0, test_scale())));
+    const auto seeds =
+        std::max<std::uint64_t>(8, static_cast<std::uint64_t>(120 * std::min(1.0, test_scale())));
     for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
         const auto n = static_cast<std::uint32_t>(3 + seed % 8);
-        expect_optimal(em::generators::generate_points_2d(em::generators::Distribution::Uniform, n, seed));
+        expect_optimal(
+            em::generators::generate_points_2d(em::generators::Distribution::Uniform, n, seed));
     }
 }
 
@@ -127,7 +130,8 @@ TEST(Triangulation_EdgeCutting2, MatchesExhaustiveEnumerationOnDegenerateSets) {
         }
     }
     // Cocircular: lattice points on x^2 + y^2 = 25, and subsets of them with the centre.
-    const std::vector<double> circle{5, 0, 4, 3, 3, 4, 0, 5, -3, 4, -4, 3, -5, 0, -4, -3, -3, -4, 0, -5};
+    const std::vector<double> circle{5,  0, 4,  3, 3,  4,  0,  5,  -3, 4,
+                                     -4, 3, -5, 0, -4, -3, -3, -4, 0,  -5};
     sets.push_back(circle);
     for (std::size_t drop = 0; drop < 10; ++drop) {
         std::vector<double> xy;
@@ -160,23 +164,29 @@ TEST(Triangulation_EdgeCutting2, LargerSetsNeverWorseThanDelaunayOrSwapping) {
         ASSERT_TRUE(tri::check_topology_2d(xy, cut.triangles).ok);
         EXPECT_EQ(cut.triangles.size(), delaunay.triangles.size());
         const orc::ExactAngle cut_angle = orc::largest_exact_angle(xy, cut.triangles);
-        EXPECT_LE(orc::compare_exact_angles(cut_angle, orc::largest_exact_angle(xy, delaunay.triangles)), 0);
+        EXPECT_LE(
+            orc::compare_exact_angles(cut_angle, orc::largest_exact_angle(xy, delaunay.triangles)),
+            0);
         tri::Triangulation2 swapped;
         swapped.xy = xy;
         swapped.triangles = delaunay.triangles;
         swapped.neighbors = delaunay.neighbors;
         tri::swap_edges_2d(swapped, tri::MinMaxAngle{});
-        EXPECT_LE(orc::compare_exact_angles(cut_angle, orc::largest_exact_angle(xy, swapped.triangles)), 0);
+        EXPECT_LE(
+            orc::compare_exact_angles(cut_angle, orc::largest_exact_angle(xy, swapped.triangles)),
+            0);
         // From a bad start (the sweep), edge cutting reaches the same optimal value.
         tri::Triangulation2 sweep = em::generators::sweep_triangulation_2d(xy);
         tri::edge_cutting_2d(sweep);
-        EXPECT_EQ(orc::compare_exact_angles(orc::largest_exact_angle(xy, sweep.triangles), cut_angle), 0);
+        EXPECT_EQ(
+            orc::compare_exact_angles(orc::largest_exact_angle(xy, sweep.triangles), cut_angle), 0);
         EXPECT_GT(counters.worst_triangles, 0u);
     }
 }
 
 TEST(Triangulation_EdgeCutting2, ConstrainedEdgesAreKept) {
-    const auto xy = em::generators::generate_points_2d(em::generators::Distribution::Uniform, 300, 7);
+    const auto xy =
+        em::generators::generate_points_2d(em::generators::Distribution::Uniform, 300, 7);
     tri::Triangulation2 mesh = em::generators::sweep_triangulation_2d(xy);
     const auto constrained = em::testing::constrain_every_nth_side(mesh, 11);
     const orc::ExactAngle before = orc::largest_exact_angle(xy, mesh.triangles);

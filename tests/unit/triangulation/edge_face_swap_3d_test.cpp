@@ -54,8 +54,8 @@ void expect_valid(const tri::Tetrahedralization3& mesh, bool convex = true) {
 long double volume6(const tri::Tetrahedralization3& mesh) {
     long double sum = 0;
     for (std::size_t t = 0; t < mesh.tets.size(); t += 4) {
-        const double* p[4] = {mesh.point(mesh.tets[t]), mesh.point(mesh.tets[t + 1]), mesh.point(mesh.tets[t + 2]),
-                              mesh.point(mesh.tets[t + 3])};
+        const double* p[4] = {mesh.point(mesh.tets[t]), mesh.point(mesh.tets[t + 1]),
+                              mesh.point(mesh.tets[t + 2]), mesh.point(mesh.tets[t + 3])};
         long double a[3], b[3], c[3];
         for (int i = 0; i < 3; ++i) {
             a[i] = static_cast<long double>(p[1][i]) - p[0][i];
@@ -79,7 +79,8 @@ TEST(Triangulation_EdgeFaceSwap3, TwoThreeSwapOnANonDelaunayPair) {
     tri::Tetrahedralization3 mesh = from_tets(xyz, {1, 0, 2, 3, 0, 1, 2, 4});
     const auto before = em::testing::count_local_delaunay_3d(mesh);
     ASSERT_EQ(before.not_delaunay, 1u);
-    const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
+    const tri::EdgeFaceSwapCounters counters =
+        tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
     EXPECT_EQ(counters.flips_23, 1u);
     EXPECT_EQ(counters.flips(), 1u);
     EXPECT_EQ(counters.stalled_faces, 0u);
@@ -98,14 +99,16 @@ TEST(Triangulation_EdgeFaceSwap3, ThreeTwoSwapRemovesADegreeThreeEdge) {
     const tri::VertIdx ring[3] = {2, 3, 4};
     for (int i = 0; i < 3; ++i) {
         std::array<tri::VertIdx, 4> t{0, 1, ring[i], ring[(i + 1) % 3]};
-        if (em::predicates::orient3d(&xyz[3 * t[0]], &xyz[3 * t[1]], &xyz[3 * t[2]], &xyz[3 * t[3]]) == Sign::Negative) {
+        if (em::predicates::orient3d(&xyz[3 * t[0]], &xyz[3 * t[1]], &xyz[3 * t[2]],
+                                     &xyz[3 * t[3]]) == Sign::Negative) {
             std::swap(t[2], t[3]);
         }
         tets.insert(tets.end(), t.begin(), t.end());
     }
     tri::Tetrahedralization3 mesh = from_tets(xyz, tets);
     expect_valid(mesh);
-    const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
+    const tri::EdgeFaceSwapCounters counters =
+        tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
     EXPECT_EQ(counters.flips_32, 1u);
     EXPECT_EQ(counters.flips(), 1u);
     EXPECT_EQ(mesh.tet_count(), 2u);
@@ -124,14 +127,17 @@ TEST(Triangulation_EdgeFaceSwap3, DelaunaySwappingFromPlacingReachesTheOracleUnl
         tri::Tetrahedralization3 mesh = em::testing::placing_tetrahedralization_3d(xyz);
         expect_valid(mesh);
         const long double before = volume6(mesh);
-        const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
+        const tri::EdgeFaceSwapCounters counters =
+            tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
         expect_valid(mesh);
-        EXPECT_NEAR(static_cast<double>(volume6(mesh)), static_cast<double>(before), 1e-9 * static_cast<double>(before));
+        EXPECT_NEAR(static_cast<double>(volume6(mesh)), static_cast<double>(before),
+                    1e-9 * static_cast<double>(before));
         const auto local = em::testing::count_local_delaunay_3d(mesh);
         EXPECT_EQ(local.not_delaunay_sos, counters.stalled_faces) << "seed " << seed;
         if (counters.stalled_faces == 0) {
             ++reached;
-            EXPECT_EQ(orc::tet_set(mesh.tets), orc::empty_sphere_delaunay_3d(mesh.xyz)) << "seed " << seed;
+            EXPECT_EQ(orc::tet_set(mesh.tets), orc::empty_sphere_delaunay_3d(mesh.xyz))
+                << "seed " << seed;
         } else {
             ++stalled;
         }
@@ -148,14 +154,19 @@ TEST(Triangulation_EdgeFaceSwap3, CubicGridsAreCosphericalAndCoplanarYetTerminat
         const std::vector<double> xyz = em::testing::cubic_grid_3d(side);
         tri::Tetrahedralization3 mesh = em::testing::placing_tetrahedralization_3d(xyz);
         expect_valid(mesh);
-        const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
+        const tri::EdgeFaceSwapCounters counters =
+            tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
         expect_valid(mesh);
-        EXPECT_EQ(em::testing::count_local_delaunay_3d(mesh).not_delaunay_sos, counters.stalled_faces);
-        std::printf("grid %d^3: %llu flips (2-3 %llu, 3-2 %llu, 4-4 %llu, 2-2 %llu), stalled faces %llu\n", side,
-                    static_cast<unsigned long long>(counters.flips()), static_cast<unsigned long long>(counters.flips_23),
-                    static_cast<unsigned long long>(counters.flips_32), static_cast<unsigned long long>(counters.flips_44),
-                    static_cast<unsigned long long>(counters.flips_22),
-                    static_cast<unsigned long long>(counters.stalled_faces));
+        EXPECT_EQ(em::testing::count_local_delaunay_3d(mesh).not_delaunay_sos,
+                  counters.stalled_faces);
+        std::printf(
+            "grid %d^3: %llu flips (2-3 %llu, 3-2 %llu, 4-4 %llu, 2-2 %llu), stalled faces %llu\n",
+            side, static_cast<unsigned long long>(counters.flips()),
+            static_cast<unsigned long long>(counters.flips_23),
+            static_cast<unsigned long long>(counters.flips_32),
+            static_cast<unsigned long long>(counters.flips_44),
+            static_cast<unsigned long long>(counters.flips_22),
+            static_cast<unsigned long long>(counters.stalled_faces));
         if (counters.stalled_faces == 0 && side <= 3) {
             EXPECT_EQ(orc::tet_set(mesh.tets), orc::empty_sphere_delaunay_3d(mesh.xyz));
         }
@@ -169,8 +180,8 @@ namespace {
 /// order, each point joined to the hull faces it sees). Found by the randomized search over
 /// placing and scrambled starts of 6-12 points (seed 68934 of uniform [0,1)^3, scaled by 1000,
 /// rounded, then minimized by deleting points while the stall persisted).
-const std::vector<double> kStallPoints{272, 488, 373, 833, 336, 531, 306, 268, 221, 495, 194, 12,
-                                       505, 856, 529, 857, 679, 29,  787, 192, 409};
+const std::vector<double> kStallPoints{272, 488, 373, 833, 336, 531, 306, 268, 221, 495, 194,
+                                       12,  505, 856, 529, 857, 679, 29,  787, 192, 409};
 const std::vector<tri::VertIdx> kStallStart{2, 0, 3, 4, 3, 2, 4, 6, 4, 2, 0, 6, 4, 3, 6, 1,
                                             0, 4, 6, 1, 4, 0, 3, 5, 1, 3, 6, 5, 1, 4, 3, 5};
 
@@ -197,7 +208,8 @@ bool face_has_swap(const tri::Tetrahedralization3& mesh, std::size_t t, std::siz
     };
     // Segment pq crosses the interior of triangle abc: p and q strictly on opposite sides of
     // its plane, and the line pq strictly inside the three edges (same nonzero sign).
-    auto crosses = [&](tri::VertIdx p, tri::VertIdx q, tri::VertIdx a, tri::VertIdx b, tri::VertIdx c) {
+    auto crosses = [&](tri::VertIdx p, tri::VertIdx q, tri::VertIdx a, tri::VertIdx b,
+                       tri::VertIdx c) {
         const Sign sp = orient(a, b, c, p), sq = orient(a, b, c, q);
         if (sp == Sign::Zero || sq == Sign::Zero || sp == sq) return false;
         const Sign s1 = orient(p, q, a, b), s2 = orient(p, q, b, c), s3 = orient(p, q, c, a);
@@ -209,14 +221,16 @@ bool face_has_swap(const tri::Tetrahedralization3& mesh, std::size_t t, std::siz
         std::vector<std::size_t> around;
         for (std::size_t w = 0; w < mesh.tet_count(); ++w) {
             const tri::VertIdx* wv = &mesh.tets[4 * w];
-            if (std::find(wv, wv + 4, x) != wv + 4 && std::find(wv, wv + 4, y) != wv + 4) around.push_back(w);
+            if (std::find(wv, wv + 4, x) != wv + 4 && std::find(wv, wv + 4, y) != wv + 4)
+                around.push_back(w);
         }
         if (around.size() == 3) {
             // 3-2: the third tetrahedron must be x y d e, and xy must cross triangle z d e.
             bool third = false;
             for (const std::size_t w : around) {
                 const tri::VertIdx* wv = &mesh.tets[4 * w];
-                third = third || (std::find(wv, wv + 4, d) != wv + 4 && std::find(wv, wv + 4, e) != wv + 4);
+                third = third ||
+                        (std::find(wv, wv + 4, d) != wv + 4 && std::find(wv, wv + 4, e) != wv + 4);
             }
             if (third && crosses(x, y, z, d, e)) return true;
         }
@@ -238,9 +252,12 @@ TEST(Triangulation_EdgeFaceSwap3, DelaunaySwappingCanStallShortOfDelaunay) {
         for (std::size_t b = a + 1; b < n; ++b) {
             for (std::size_t c = b + 1; c < n; ++c) {
                 for (std::size_t d = c + 1; d < n; ++d) {
-                    ASSERT_NE(em::predicates::orient3d(&xyz[3 * a], &xyz[3 * b], &xyz[3 * c], &xyz[3 * d]), Sign::Zero);
+                    ASSERT_NE(em::predicates::orient3d(&xyz[3 * a], &xyz[3 * b], &xyz[3 * c],
+                                                       &xyz[3 * d]),
+                              Sign::Zero);
                     for (std::size_t e = d + 1; e < n; ++e) {
-                        ASSERT_NE(em::predicates::insphere(&xyz[3 * a], &xyz[3 * b], &xyz[3 * c], &xyz[3 * d], &xyz[3 * e]),
+                        ASSERT_NE(em::predicates::insphere(&xyz[3 * a], &xyz[3 * b], &xyz[3 * c],
+                                                           &xyz[3 * d], &xyz[3 * e]),
                                   Sign::Zero);
                     }
                 }
@@ -249,8 +266,10 @@ TEST(Triangulation_EdgeFaceSwap3, DelaunaySwappingCanStallShortOfDelaunay) {
     }
     tri::Tetrahedralization3 mesh = from_tets(xyz, kStallStart);
     expect_valid(mesh);
-    EXPECT_EQ(orc::tet_set(em::testing::placing_tetrahedralization_3d(xyz).tets), orc::tet_set(kStallStart));
-    const tri::EdgeFaceSwapCounters counters = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
+    EXPECT_EQ(orc::tet_set(em::testing::placing_tetrahedralization_3d(xyz).tets),
+              orc::tet_set(kStallStart));
+    const tri::EdgeFaceSwapCounters counters =
+        tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
     expect_valid(mesh);
     EXPECT_GT(counters.flips(), 0u);
     EXPECT_GT(counters.stalled_faces, 0u);
@@ -265,10 +284,11 @@ TEST(Triangulation_EdgeFaceSwap3, DelaunaySwappingCanStallShortOfDelaunay) {
         if (u == tri::kNone || u < f / 4) continue;
         const tri::VertIdx* v = &mesh.tets[4 * (f / 4)];
         const tri::VertIdx e = mesh.tets[4 * std::size_t{u}] + mesh.tets[4 * std::size_t{u} + 1] +
-                               mesh.tets[4 * std::size_t{u} + 2] + mesh.tets[4 * std::size_t{u} + 3] -
+                               mesh.tets[4 * std::size_t{u} + 2] +
+                               mesh.tets[4 * std::size_t{u} + 3] -
                                (v[0] + v[1] + v[2] + v[3] - v[f % 4]);
-        if (em::predicates::insphere(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]),
-                                     mesh.point(e)) != Sign::Positive) {
+        if (em::predicates::insphere(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                     mesh.point(v[3]), mesh.point(e)) != Sign::Positive) {
             continue;
         }
         ++checked;
@@ -281,20 +301,21 @@ TEST(Triangulation_EdgeFaceSwap3, DelaunaySwappingCanStallShortOfDelaunay) {
     const tri::EdgeFaceSwapCounters again = tri::swap_faces_3d(mesh, tri::SwapCriterion3::Delaunay);
     EXPECT_EQ(again.flips(), 0u);
     std::printf("stall: %llu swaps, then %llu faces not locally Delaunay, none swappable\n",
-                static_cast<unsigned long long>(counters.flips()), static_cast<unsigned long long>(counters.stalled_faces));
+                static_cast<unsigned long long>(counters.flips()),
+                static_cast<unsigned long long>(counters.stalled_faces));
 }
 
 namespace {
 
 em::predicates::TetCorners corners_of(const tri::Tetrahedralization3& mesh, std::size_t t) {
-    return {mesh.point(mesh.tets[4 * t]), mesh.point(mesh.tets[4 * t + 1]), mesh.point(mesh.tets[4 * t + 2]),
-            mesh.point(mesh.tets[4 * t + 3])};
+    return {mesh.point(mesh.tets[4 * t]), mesh.point(mesh.tets[4 * t + 1]),
+            mesh.point(mesh.tets[4 * t + 2]), mesh.point(mesh.tets[4 * t + 3])};
 }
 
 /// Sign of (measure vector after) - (measure vector before) in the criterion's lexicographic
 /// order (proofs/invariants/edge_face_swapping_3d.md): positive when after is better.
-int lexicographic_progress(const tri::Tetrahedralization3& before, const tri::Tetrahedralization3& after,
-                           tri::SwapCriterion3 criterion) {
+int lexicographic_progress(const tri::Tetrahedralization3& before,
+                           const tri::Tetrahedralization3& after, tri::SwapCriterion3 criterion) {
     // Per tetrahedron: its worst angle or its quality; sorted worst first; compared in order.
     if (criterion == tri::SwapCriterion3::VolumeEdge) {
         auto sorted = [](const tri::Tetrahedralization3& m) {
@@ -336,8 +357,9 @@ int lexicographic_progress(const tri::Tetrahedralization3& before, const tri::Te
 }  // namespace
 
 TEST(Triangulation_EdgeFaceSwap3, EveryCriterionImprovesItsMeasureAndStopsWithNoImprovingSwap) {
-    const tri::SwapCriterion3 criteria[] = {tri::SwapCriterion3::MaxMinDihedral, tri::SwapCriterion3::MinMaxDihedral,
-                                            tri::SwapCriterion3::VolumeEdge, tri::SwapCriterion3::Delaunay};
+    const tri::SwapCriterion3 criteria[] = {
+        tri::SwapCriterion3::MaxMinDihedral, tri::SwapCriterion3::MinMaxDihedral,
+        tri::SwapCriterion3::VolumeEdge, tri::SwapCriterion3::Delaunay};
     const int cases = std::max(1, static_cast<int>(12 * test_scale()));
     for (int seed = 0; seed < cases; ++seed) {
         const std::uint32_t n = 10 + static_cast<std::uint32_t>(seed * 7 % 40);
@@ -358,7 +380,8 @@ TEST(Triangulation_EdgeFaceSwap3, EveryCriterionImprovesItsMeasureAndStopsWithNo
             }
             tri::Tetrahedralization3 again = mesh;
             const tri::EdgeFaceSwapCounters second = tri::swap_faces_3d(again, criterion);
-            EXPECT_EQ(second.flips(), 0u) << tri::swap_criterion_3d_name(criterion) << " seed " << seed;
+            EXPECT_EQ(second.flips(), 0u)
+                << tri::swap_criterion_3d_name(criterion) << " seed " << seed;
             EXPECT_GT(second.faces_examined, 0u);
         }
     }

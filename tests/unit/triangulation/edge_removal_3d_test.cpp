@@ -12,8 +12,8 @@
 #include <cmath>
 #include <functional>
 #include <optional>
-#include <string>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "predicates/angle_comparisons_3d.hpp"
@@ -29,8 +29,8 @@ namespace {
 /// Edge 0-1 from about (0, 0, -h) to (0, 0, h) with the n tetrahedra around it, its link a ring
 /// of n points near the unit circle (angles and heights jittered, the edge's ends moved by up to
 /// `jitter`), scaled by 2^exponent. Empty when the jitter made some ring tetrahedron turn.
-std::optional<tri::TetMesh3> ring_around_an_edge(unsigned n, double h, double jitter,
-                                                 int exponent, unsigned seed = 1) {
+std::optional<tri::TetMesh3> ring_around_an_edge(unsigned n, double h, double jitter, int exponent,
+                                                 unsigned seed = 1) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(-1, 1);
     std::vector<double> xyz{jitter * unit(rng), jitter * unit(rng), -h,
@@ -73,8 +73,8 @@ tri::TetMesh3 first_ring(unsigned n, bool improvable, int exponent) {
             ring_around_an_edge(n, half_length(seed), jitter_of(seed), 0, seed);
         if (!mesh) continue;
         tri::FlipPlan3 plan;
-        if (improvable && !tri::plan_edge_removal_3d(*mesh, 0, 0, 1,
-                                                     tri::SwapCriterion3::MaxMinDihedral, plan))
+        if (improvable &&
+            !tri::plan_edge_removal_3d(*mesh, 0, 0, 1, tri::SwapCriterion3::MaxMinDihedral, plan))
             continue;
         return *ring_around_an_edge(n, half_length(seed), jitter_of(seed), exponent, seed);
     }
@@ -136,8 +136,7 @@ std::vector<tri::VertIdx> oriented_link(const tri::TetMesh3& mesh, unsigned n) {
 }
 
 void expect_valid(const tri::TetMesh3& mesh) {
-    const tri::TopologyReport3 report =
-        tri::check_topology_3d(tri::to_tetrahedralization_3d(mesh));
+    const tri::TopologyReport3 report = tri::check_topology_3d(tri::to_tetrahedralization_3d(mesh));
     EXPECT_TRUE(report.ok) << report.problem;
 }
 
@@ -201,8 +200,8 @@ TEST(Triangulation_EdgeRemoval3, TheBestTriangulationOfTheRingIsChosen) {
 TEST(Triangulation_EdgeRemoval3, EveryCriterionImprovesItsOwnQuality) {
     // Every new tetrahedron strictly beats the worst old one, exactly: a larger volume-edge
     // quality, or a largest dihedral angle below the old largest.
-    for (const auto criterion : {tri::SwapCriterion3::MinMaxDihedral,
-                                 tri::SwapCriterion3::VolumeEdge}) {
+    for (const auto criterion :
+         {tri::SwapCriterion3::MinMaxDihedral, tri::SwapCriterion3::VolumeEdge}) {
         tri::TetMesh3 mesh = first_ring(6, true, 0);
         const auto corners = [&](const tri::Tet& t) {
             return pred::TetCorners{mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]),
@@ -224,12 +223,10 @@ TEST(Triangulation_EdgeRemoval3, EveryCriterionImprovesItsOwnQuality) {
             if (criterion == tri::SwapCriterion3::VolumeEdge) {
                 EXPECT_EQ(pred::compare_volume_edge(made, worst_tet), pred::Sign::Positive) << i;
             } else {
-                EXPECT_TRUE(pred::every_dihedral_compares(made, widest, pred::Sign::Negative))
-                    << i;
+                EXPECT_TRUE(pred::every_dihedral_compares(made, widest, pred::Sign::Negative)) << i;
             }
         }
-        EXPECT_EQ(tri::remove_edges_3d(mesh, criterion, std::vector<tri::TetIdx>{0}, {})
-                      .removals,
+        EXPECT_EQ(tri::remove_edges_3d(mesh, criterion, std::vector<tri::TetIdx>{0}, {}).removals,
                   1u);
         expect_valid(mesh);
     }
@@ -239,8 +236,8 @@ TEST(Triangulation_EdgeRemoval3, TheSameChoiceAtEveryScale) {
     for (unsigned n = 4; n <= tri::kMaxEdgeRemovalRing; ++n) {
         const tri::TetMesh3 plain = first_ring(n, true, 0);
         tri::FlipPlan3 expected;
-        ASSERT_TRUE(tri::plan_edge_removal_3d(plain, 0, 0, 1,
-                                              tri::SwapCriterion3::MaxMinDihedral, expected));
+        ASSERT_TRUE(tri::plan_edge_removal_3d(plain, 0, 0, 1, tri::SwapCriterion3::MaxMinDihedral,
+                                              expected));
         for (const int e : {600, -600}) {
             const tri::TetMesh3 scaled = first_ring(n, true, e);
             tri::FlipPlan3 plan;

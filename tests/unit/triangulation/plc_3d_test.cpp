@@ -247,8 +247,7 @@ TEST(Triangulation_Plc3, FacetsWithinRoundingOfAPlaneStayWhole) {
         near.xyz[3 * 4 + 0] = 0x1p-47;
         EXPECT_EQ(outcome(scaled(near, e)).validity, "") << e;
         near.xyz[3 * 4 + 0] = 0x1p-44;
-        EXPECT_NE(outcome(scaled(near, e)).validity.find("is not planar"), std::string::npos)
-            << e;
+        EXPECT_NE(outcome(scaled(near, e)).validity.find("is not planar"), std::string::npos) << e;
     }
 }
 

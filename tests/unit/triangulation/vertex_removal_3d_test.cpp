@@ -47,7 +47,8 @@ std::vector<tri::VertIdx> interior_vertices(const tri::TetMesh3& mesh) {
         bool interior = true;
         for (const tri::TetIdx t : tri::vertex_star(mesh, v)) {
             const unsigned lv = mesh.slot_of(t, v);
-            for (unsigned k = 0; k < 4; ++k) interior = interior && (k == lv || mesh.adj[4 * t + k] != tri::kNone);
+            for (unsigned k = 0; k < 4; ++k)
+                interior = interior && (k == lv || mesh.adj[4 * t + k] != tri::kNone);
         }
         if (interior) out.push_back(v);
     }
@@ -88,7 +89,8 @@ TEST(Triangulation_VertexRemoval3, RemovingFromDelaunayGivesTheDelaunayOfTheRest
             EXPECT_EQ(mesh.vertex_tet[v], tri::kNone);
             expect_valid(mesh);
             const tri::Tetrahedralization3 out = tri::to_tetrahedralization_3d(mesh);
-            EXPECT_EQ(orc::tet_set(out.tets), orc::empty_sphere_delaunay_3d(xyz, active_vertices(mesh)))
+            EXPECT_EQ(orc::tet_set(out.tets),
+                      orc::empty_sphere_delaunay_3d(xyz, active_vertices(mesh)))
                 << "seed " << seed << " round " << round << " vertex " << v;
         }
     }
@@ -96,12 +98,16 @@ TEST(Triangulation_VertexRemoval3, RemovingFromDelaunayGivesTheDelaunayOfTheRest
     EXPECT_GT(counters.removed, 0u);
     EXPECT_EQ(counters.flips_41, counters.removed);  // general position: flips alone
     EXPECT_EQ(counters.cavity_fallbacks, 0u);
-    std::printf("removed %llu vertices: 2-3 %llu, 3-2 %llu, 4-4 %llu, 4-1 %llu, cavity %llu, mean star %.1f\n",
-                static_cast<unsigned long long>(counters.removed), static_cast<unsigned long long>(counters.flips_23),
-                static_cast<unsigned long long>(counters.flips_32), static_cast<unsigned long long>(counters.flips_44),
-                static_cast<unsigned long long>(counters.flips_41),
-                static_cast<unsigned long long>(counters.cavity_fallbacks),
-                static_cast<double>(counters.star_tets) / static_cast<double>(counters.removed));
+    std::printf(
+        "removed %llu vertices: 2-3 %llu, 3-2 %llu, 4-4 %llu, 4-1 %llu, cavity %llu, mean star "
+        "%.1f\n",
+        static_cast<unsigned long long>(counters.removed),
+        static_cast<unsigned long long>(counters.flips_23),
+        static_cast<unsigned long long>(counters.flips_32),
+        static_cast<unsigned long long>(counters.flips_44),
+        static_cast<unsigned long long>(counters.flips_41),
+        static_cast<unsigned long long>(counters.cavity_fallbacks),
+        static_cast<double>(counters.star_tets) / static_cast<double>(counters.removed));
 }
 
 TEST(Triangulation_VertexRemoval3, CubicGridDerefinementStaysDelaunayWithTies) {
@@ -117,7 +123,9 @@ TEST(Triangulation_VertexRemoval3, CubicGridDerefinementStaysDelaunayWithTies) {
         expect_valid(mesh);
         // Locally Delaunay by SoS everywhere in a tetrahedralization of the hull: the SoS
         // Delaunay tetrahedralization [Delaunay34 lemma, with the perturbed lifts].
-        EXPECT_EQ(em::testing::count_local_delaunay_3d(tri::to_tetrahedralization_3d(mesh)).not_delaunay_sos, 0u)
+        EXPECT_EQ(em::testing::count_local_delaunay_3d(tri::to_tetrahedralization_3d(mesh))
+                      .not_delaunay_sos,
+                  0u)
             << "vertex " << v;
     }
     EXPECT_EQ(counters.removed, 8u);
@@ -129,8 +137,10 @@ TEST(Triangulation_VertexRemoval3, CubicGridDerefinementStaysDelaunayWithTies) {
     EXPECT_EQ(orc::tet_set(tri::to_tetrahedralization_3d(center).tets),
               orc::empty_sphere_delaunay_3d(small, active_vertices(center)));
     std::printf("grid: 2-3 %llu, 3-2 %llu, 4-4 %llu, 4-1 %llu, cavity %llu\n",
-                static_cast<unsigned long long>(counters.flips_23), static_cast<unsigned long long>(counters.flips_32),
-                static_cast<unsigned long long>(counters.flips_44), static_cast<unsigned long long>(counters.flips_41),
+                static_cast<unsigned long long>(counters.flips_23),
+                static_cast<unsigned long long>(counters.flips_32),
+                static_cast<unsigned long long>(counters.flips_44),
+                static_cast<unsigned long long>(counters.flips_41),
                 static_cast<unsigned long long>(counters.cavity_fallbacks));
 }
 
