@@ -38,6 +38,47 @@ inline double insphere_fast(const double* a, const double* b, const double* c, c
     return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
 }
 
+/// Stage A's decision from the rounded determinant and the largest coordinate difference m.
+inline std::optional<Sign> insphere_filter_decision(double det, double m) noexcept {
+    const double m2 = m * m;
+    const double eps = insphere_filter_eps * m2 * m2 * m;
+    if (det > eps || -det > eps) {
+        if (m >= insphere_filter_min && m <= insphere_filter_max) {
+            return det > 0.0 ? Sign::Positive : Sign::Negative;
+        }
+    }
+    return std::nullopt;
+}
+
+/// Stage A in scalar form, the evaluation order modelled in proofs/gappa/insphere_filter.g
+/// (insphere_filter's form without SSE2, and the reference its SSE2 form is tested against).
+inline std::optional<Sign> insphere_filter_scalar(const double* a, const double* b, const double* c,
+                                                  const double* d, const double* e) noexcept {
+    const double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
+    const double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
+    const double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
+    const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey;
+    const double cd = cex * dey - dex * cey, da = dex * aey - aex * dey;
+    const double ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
+    const double abc = aez * bc - bez * ac + cez * ab;
+    const double bcd = bez * cd - cez * bd + dez * bc;
+    const double cda = cez * da + dez * ac + aez * cd;
+    const double dab = dez * ab + aez * bd + bez * da;
+    const double alift = aex * aex + aey * aey + aez * aez;
+    const double blift = bex * bex + bey * bey + bez * bez;
+    const double clift = cex * cex + cey * cey + cez * cez;
+    const double dlift = dex * dex + dey * dey + dez * dez;
+    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    const double mx = std::max(std::max(std::fabs(aex), std::fabs(bex)),
+                               std::max(std::fabs(cex), std::fabs(dex)));
+    const double my = std::max(std::max(std::fabs(aey), std::fabs(bey)),
+                               std::max(std::fabs(cey), std::fabs(dey)));
+    const double mz = std::max(std::max(std::fabs(aez), std::fabs(bez)),
+                               std::max(std::fabs(cez), std::fabs(dez)));
+    const double m = std::max(std::max(mx, my), mz);
+    return insphere_filter_decision(det, m);
+}
+
 /// Stage A; the evaluation order is the one modelled in proofs/gappa/insphere_filter.g.
 ///
 /// With SSE2 (every x86-64) the same operations two at a time, rows paired in the lanes: each
@@ -94,38 +135,10 @@ inline std::optional<Sign> insphere_filter(const double* a, const double* b, con
                               _mm_max_pd(_mm_and_pd(z01, magnitude), _mm_and_pd(z23, magnitude))));
     const double m =
         std::max(_mm_cvtsd_f64(largest), _mm_cvtsd_f64(_mm_unpackhi_pd(largest, largest)));
+    return insphere_filter_decision(det, m);
 #else
-    const double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
-    const double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
-    const double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
-    const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey;
-    const double cd = cex * dey - dex * cey, da = dex * aey - aex * dey;
-    const double ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
-    const double abc = aez * bc - bez * ac + cez * ab;
-    const double bcd = bez * cd - cez * bd + dez * bc;
-    const double cda = cez * da + dez * ac + aez * cd;
-    const double dab = dez * ab + aez * bd + bez * da;
-    const double alift = aex * aex + aey * aey + aez * aez;
-    const double blift = bex * bex + bey * bey + bez * bez;
-    const double clift = cex * cex + cey * cey + cez * cez;
-    const double dlift = dex * dex + dey * dey + dez * dez;
-    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    const double mx = std::max(std::max(std::fabs(aex), std::fabs(bex)),
-                               std::max(std::fabs(cex), std::fabs(dex)));
-    const double my = std::max(std::max(std::fabs(aey), std::fabs(bey)),
-                               std::max(std::fabs(cey), std::fabs(dey)));
-    const double mz = std::max(std::max(std::fabs(aez), std::fabs(bez)),
-                               std::max(std::fabs(cez), std::fabs(dez)));
-    const double m = std::max(std::max(mx, my), mz);
+    return insphere_filter_scalar(a, b, c, d, e);
 #endif
-    const double m2 = m * m;
-    const double eps = insphere_filter_eps * m2 * m2 * m;
-    if (det > eps || -det > eps) {
-        if (m >= insphere_filter_min && m <= insphere_filter_max) {
-            return det > 0.0 ? Sign::Positive : Sign::Negative;
-        }
-    }
-    return std::nullopt;
 }
 
 /// Stages B-D: always the exact sign. Throws GeometryError on NaN or infinite input.

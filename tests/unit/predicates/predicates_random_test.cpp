@@ -719,43 +719,6 @@ TEST(Predicates_Insphere, CosphericalStripCornersAgreeWithRationals) {
     EXPECT_GT(zeros, 0);
 }
 
-namespace {
-
-/// insphere_filter as its scalar form evaluates it (the reference for its SSE2 form): the same
-/// operations in the same order, the largest difference taken row by row.
-std::optional<Sign> insphere_filter_scalar(const double* a, const double* b, const double* c,
-                                           const double* d, const double* e) {
-    const double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
-    const double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
-    const double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
-    const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey;
-    const double cd = cex * dey - dex * cey, da = dex * aey - aex * dey;
-    const double ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
-    const double abc = aez * bc - bez * ac + cez * ab;
-    const double bcd = bez * cd - cez * bd + dez * bc;
-    const double cda = cez * da + dez * ac + aez * cd;
-    const double dab = dez * ab + aez * bd + bez * da;
-    const double alift = aex * aex + aey * aey + aez * aez;
-    const double blift = bex * bex + bey * bey + bez * bez;
-    const double clift = cex * cex + cey * cey + cez * cez;
-    const double dlift = dex * dex + dey * dey + dez * dez;
-    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    const double mx = std::max(std::max(std::fabs(aex), std::fabs(bex)),
-                               std::max(std::fabs(cex), std::fabs(dex)));
-    const double my = std::max(std::max(std::fabs(aey), std::fabs(bey)),
-                               std::max(std::fabs(cey), std::fabs(dey)));
-    const double mz = std::max(std::max(std::fabs(aez), std::fabs(bez)),
-                               std::max(std::fabs(cez), std::fabs(dez)));
-    const double m = std::max(std::max(mx, my), mz);
-    const double m2 = m * m;
-    const double eps = pr::insphere_filter_eps * m2 * m2 * m;
-    if ((det > eps || -det > eps) && m >= pr::insphere_filter_min && m <= pr::insphere_filter_max)
-        return det > 0.0 ? Sign::Positive : Sign::Negative;
-    return std::nullopt;
-}
-
-}  // namespace
-
 TEST(Predicates_Insphere, FilterDecidesAsItsScalarForm) {
     // Random points, cospherical ones moved by an ulp (det near the filter's bound: a rounding
     // that differed would show), magnitudes at and past the filter's guards, and non-finite
@@ -785,7 +748,7 @@ TEST(Predicates_Insphere, FilterDecidesAsItsScalarForm) {
         }
         if (n % 97 == 0) p[n % 5][n % 3] = specials[static_cast<std::size_t>(n / 97) % 5];
         const auto fast = pr::insphere_filter(p[0], p[1], p[2], p[3], p[4]);
-        ASSERT_EQ(fast, insphere_filter_scalar(p[0], p[1], p[2], p[3], p[4])) << n;
+        ASSERT_EQ(fast, pr::insphere_filter_scalar(p[0], p[1], p[2], p[3], p[4])) << n;
         ++(fast ? decided : refused);
     }
     EXPECT_GT(decided, 100000);
