@@ -199,8 +199,8 @@ DelaunayRefinement3Result Refinement::run() {
     }
     const auto start = std::chrono::steady_clock::now();
     auto [conforming, linked] = take_linked();
-    SliverRemoval3Result improved =
-        sliver_removal_3d(std::move(conforming), std::move(linked), *options_.sliver_removal);
+    SliverRemoval3Result improved = sliver_removal_3d(std::move(conforming), std::move(linked),
+                                                      *options_.sliver_removal, &sharp_);
     result.sliver_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.mesh = std::move(improved.mesh);
