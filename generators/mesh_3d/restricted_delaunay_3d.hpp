@@ -493,6 +493,10 @@ class RestrictedDelaunay3 {
     /// tets_with into `out` (cleared first; its capacity kept by callers that loop).
     void tets_with(std::vector<TetIdx>& out, VertIdx a, VertIdx b, VertIdx c = kNone) const {
         out.clear();
+        if (c != kNone) {
+            face_tets(out, a, b, c);
+            return;
+        }
         new_walk_epoch();
         const unsigned n = c == kNone ? 2 : 3;
         const VertIdx corners[3] = {a, b, c};
@@ -512,6 +516,31 @@ class RestrictedDelaunay3 {
             if (m_.slot_of(t, a) < 4 && m_.slot_of(t, b) < 4 &&
                 (c == kNone || m_.slot_of(t, c) < 4))
                 out.push_back(t);
+        }
+    }
+
+    /// The live tetrahedra holding face abc, into `out`: at most two, the face's sides. The
+    /// three stars are walked in turns only until a tetrahedron holding the face is met; the
+    /// other side is its neighbour across the face (walking the stars to the end, as for an
+    /// edge, was most of facet_cavity's time: a boundary vertex's star holds dozens).
+    void face_tets(std::vector<TetIdx>& out, VertIdx a, VertIdx b, VertIdx c) const {
+        new_walk_epoch();
+        const VertIdx corners[3] = {a, b, c};
+        std::array<StarWalk, 3>& walks = tets_with_walks_;
+        for (unsigned w = 0; w < 3; ++w) restart_walk(walks[w], corners[w], w);
+        while (true) {
+            for (unsigned w = 0; w < 3; ++w) {
+                if (walks[w].done()) return;  // a whole star without the face: none holds it
+                const TetIdx t = walks[w].met[walks[w].next];
+                const unsigned sa = m_.slot_of(t, a), sb = m_.slot_of(t, b), sc = m_.slot_of(t, c);
+                if (sa < 4 && sb < 4 && sc < 4) {
+                    out.push_back(t);
+                    const FaceIdx g = m_.adj[4 * t + (6 - sa - sb - sc)];
+                    if (g != kNone) out.push_back(triangulation::tet_of(g));
+                    return;
+                }
+                step(walks[w], w);
+            }
         }
     }
 
