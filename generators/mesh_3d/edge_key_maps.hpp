@@ -60,13 +60,26 @@ class FlatKeyMap64 {
         size_ = 0;
     }
 
+    /// Forgets every key and uses the first slots only, as many as about `expected` keys need
+    /// (the least power of two from 64 that is at least 4 expected): the table grows to the
+    /// largest cavity met (a facet's thousands of edges), and a small cavity's keys spread over
+    /// all of it missed the cache at nearly every key.
+    void clear(std::size_t expected) {
+        clear();
+        std::size_t wanted = 64;
+        while (wanted < 4 * expected) wanted *= 2;
+        if (wanted > slots_.size()) slots_.assign(wanted, Slot{});  // epoch 0: no key
+        used_ = wanted;
+        shift_ = hash_shift(used_);
+    }
+
     /// The value of `key`, inserted as `value` when missing; second: whether it was inserted.
     std::pair<Value*, bool> emplace(std::uint64_t key, Value value) {
-        if (2 * (size_ + 1) > slots_.size()) grow();
+        if (2 * (size_ + 1) > used_) grow();
         std::size_t i = position(key);
         while (slots_[i].epoch == epoch_) {
             if (slots_[i].key == key) return {&slots_[i].value, false};
-            i = (i + 1) & (slots_.size() - 1);
+            i = (i + 1) & (used_ - 1);
         }
         slots_[i] = {key, value, epoch_};
         ++size_;
@@ -74,11 +87,11 @@ class FlatKeyMap64 {
     }
 
     bool contains(std::uint64_t key) const {
-        if (slots_.empty()) return false;
+        if (used_ == 0) return false;
         std::size_t i = position(key);
         while (slots_[i].epoch == epoch_) {
             if (slots_[i].key == key) return true;
-            i = (i + 1) & (slots_.size() - 1);
+            i = (i + 1) & (used_ - 1);
         }
         return false;
     }
@@ -90,25 +103,28 @@ class FlatKeyMap64 {
         std::uint32_t epoch = 0;
     };
     std::vector<Slot> slots_;
+    std::size_t used_ = 0;  ///< the slots in use: a power of two, at most slots_.size()
     std::size_t size_ = 0;
     std::uint32_t epoch_ = 1;
-    unsigned shift_ = 64;  ///< 64 - log2(slots_.size())
+    unsigned shift_ = 64;  ///< 64 - log2(used_)
 
     std::size_t position(std::uint64_t key) const {
         return slot_of_hash(key * 0x9E3779B97F4A7C15ull, shift_);
     }
 
+    /// Twice the slots in use, the keys put in again.
     void grow() {
-        std::vector<Slot> old = std::move(slots_);
-        slots_.assign(std::max<std::size_t>(64, 2 * old.size()), Slot{});
-        shift_ = hash_shift(slots_.size());
-        const std::uint32_t live = epoch_;
-        epoch_ = 1;
-        size_ = 0;
-        for (const Slot& slot : old) {
-            if (slot.epoch != live) continue;
+        std::vector<Slot> live;
+        for (std::size_t i = 0; i < used_; ++i)
+            if (slots_[i].epoch == epoch_) live.push_back(slots_[i]);
+        const std::size_t wanted = std::max<std::size_t>(64, 2 * used_);
+        if (wanted > slots_.size()) slots_.resize(wanted, Slot{});
+        clear();
+        used_ = wanted;
+        shift_ = hash_shift(used_);
+        for (const Slot& slot : live) {
             std::size_t i = position(slot.key);
-            while (slots_[i].epoch == epoch_) i = (i + 1) & (slots_.size() - 1);
+            while (slots_[i].epoch == epoch_) i = (i + 1) & (used_ - 1);
             slots_[i] = {slot.key, slot.value, epoch_};
             ++size_;
         }

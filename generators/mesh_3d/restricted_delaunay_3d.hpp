@@ -704,7 +704,7 @@ class RestrictedDelaunay3 {
         violations_.clear();
         blind_face_ = kNone;
         FlatKeyMap64<std::uint8_t>& boundary_edges = boundary_edges_;
-        boundary_edges.clear();
+        boundary_edges.clear(cavity_.size());  // edges of surface vertices only: few
         if (boundary_vertex_mark_.size() < m_.vertex_count())
             boundary_vertex_mark_.resize(m_.vertex_count(), 0);
         if (++boundary_epoch_ == 0) {
@@ -832,7 +832,7 @@ class RestrictedDelaunay3 {
         }
         m_.free_tets.insert(m_.free_tets.end(), cavity_.begin(), cavity_.end());
         FlatKeyMap64<FaceIdx>& open = open_edges_;
-        open.clear();
+        open.clear(faces.size() * 3 / 2);  // each edge of the cavity's boundary in two faces
         std::vector<TetIdx>& created = commit_created_;
         created.resize(faces.size());  // one per face, filled in order (no push_back per face)
         for (std::size_t i = 0; i < faces.size(); ++i) {
