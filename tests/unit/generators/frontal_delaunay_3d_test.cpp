@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -196,6 +197,39 @@ TEST(Generators_FrontalDelaunay3d, FinelySampledWingSectionRejectsEarlyAndShrink
         EXPECT_EQ(result.counters.early_rejections, c.early_rejections) << e;
         EXPECT_EQ(result.counters.batched_removals, c.batched_removals) << e;
     }
+}
+
+TEST(Generators_FrontalDelaunay3d, SubfaceCentresBeyondTheFacetSplitTheSubsegmentBetween) {
+    // A flat subface on the wing's far-field side has its circumcentre far beyond the side's
+    // edge; the subsegment split for it must be the one between the subface and its centre.
+    // The walk that left each subface by the first edge the centre lies beyond reached the
+    // piece of the edge at the box's corner instead, and halved it (size 0.08: vertices 0.0078
+    // and 0.016 from two corners; at 0.05 down to 2^-20 of the size, flat tetrahedra of 0.0016
+    // degrees). Now every far-field corner's nearest vertex is a regular step away. The size
+    // is fixed (the cascade needs it), whatever EXACTMESH_TEST_SCALE asks.
+    const double h = 0.08;
+    const Plc3 plc = sample_domain_3d(SampleDomain3::Wing, 0);
+    const FrontalDelaunay3Result result =
+        frontal_delaunay_3d(plc, triangulation::boundary_recovery_3d(plc).mesh, options_for(h));
+    const auto& xyz = result.mesh.mesh.xyz;
+    std::array<double, 3> low{HUGE_VAL, HUGE_VAL, HUGE_VAL}, high{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (std::size_t i = 0; i < xyz.size(); ++i) {
+        low[i % 3] = std::min(low[i % 3], xyz[i]);
+        high[i % 3] = std::max(high[i % 3], xyz[i]);
+    }
+    for (unsigned corner = 0; corner < 8; ++corner) {
+        const std::array<double, 3> c{(corner & 1) ? high[0] : low[0],
+                                      (corner & 2) ? high[1] : low[1],
+                                      (corner & 4) ? high[2] : low[2]};
+        double nearest = HUGE_VAL;
+        for (std::size_t v = 0; 3 * v < xyz.size(); ++v) {
+            const double d =
+                std::hypot(xyz[3 * v] - c[0], xyz[3 * v + 1] - c[1], xyz[3 * v + 2] - c[2]);
+            if (d > 0) nearest = std::min(nearest, d);
+        }
+        EXPECT_GE(nearest, h / 4) << "corner " << corner;
+    }
+    EXPECT_TRUE(triangulation::check_boundary_conformity_3d(plc, result.mesh).ok);
 }
 
 TEST(Generators_FrontalDelaunay3d, BudgetErrors) {
