@@ -530,18 +530,18 @@ bool dihedral_below_rounded(const Dihedral& a, long double cos_squared) {
     return d > 0 && d * d > cos_squared * (dt(n1, n1) * dt(n2, n2));
 }
 
-bool any_dihedral_below_rounded(const TetCorners& p, long double cos_squared) {
-    auto per_edge = [&] {
-        for (unsigned i = 0; i < 4; ++i)
-            for (unsigned j = i + 1; j < 4; ++j)
-                if (dihedral_below_rounded(Dihedral{p, i, j}, cos_squared)) return true;
-        return false;
-    };
-    // The differences in doubles: a subnormal difference is exact and a normal one rounds the
-    // same at every power-of-two scale, so every value below is the same for the corners
-    // scaled by 2^k (and the scaling by 2^-e exact where it matters: a result below 2^-200
-    // goes per edge).
-    using V = std::array<double, 3>;
+namespace {
+
+using RoundedVector = std::array<double, 3>;
+
+/// The four face normals of tetrahedron p (n[k] opposite corner k, consistently oriented:
+/// (1,2,3), (0,3,2), (0,1,3), (0,2,1)) and their squared lengths, in doubles on the corner
+/// differences scaled by a power of two: a subnormal difference is exact and a normal one rounds
+/// the same at every power-of-two scale, so every value is the same for the corners scaled by
+/// 2^k. False (nothing usable) when the largest difference leaves [2^-1000, 2^1000] or a scaled
+/// difference or a normal comes near the double range's bottom.
+bool scaled_face_normals(const TetCorners& p, RoundedVector (&n)[4], double (&norm)[4]) {
+    using V = RoundedVector;
     V e[3];
     double largest = 0;
     for (std::size_t r = 0; r < 3; ++r) {
@@ -550,39 +550,80 @@ bool any_dihedral_below_rounded(const TetCorners& p, long double cos_squared) {
             largest = std::max(largest, std::fabs(e[r][k]));
         }
     }
-    if (!(largest >= 0x1p-1000) || !(largest <= 0x1p1000)) return per_edge();
+    if (!(largest >= 0x1p-1000) || !(largest <= 0x1p1000)) return false;
     // 2^-x with largest in [2^(x-1), 2^x), from the bits (std::frexp and std::ldexp were most
-    // of this function's time).
+    // of any_dihedral_below_rounded's time).
     const auto biased = static_cast<int>((std::bit_cast<std::uint64_t>(largest) >> 52) & 0x7ff);
     const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(2045 - biased) << 52);
     for (auto& row : e) {
         for (double& x : row) {
             x *= scale;
-            if (x != 0 && std::fabs(x) < 0x1p-200) return per_edge();
+            if (x != 0 && std::fabs(x) < 0x1p-200) return false;
         }
     }
     const auto crs = [](const V& x, const V& y) {
         return V{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
     };
-    const auto dt = [](const V& x, const V& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
-    // Consistently oriented face normals, n[k] opposite corner k: (1,2,3), (0,3,2), (0,1,3),
-    // (0,2,1), with e[r] = p[r + 1] - p[0].
     const V e21{e[1][0] - e[0][0], e[1][1] - e[0][1], e[1][2] - e[0][2]};
     const V e31{e[2][0] - e[0][0], e[2][1] - e[0][1], e[2][2] - e[0][2]};
-    const V n[4] = {crs(e21, e31), crs(e[2], e[1]), crs(e[0], e[2]), crs(e[1], e[0])};
-    double norm[4];
+    n[0] = crs(e21, e31);
+    n[1] = crs(e[2], e[1]);
+    n[2] = crs(e[0], e[2]);
+    n[3] = crs(e[1], e[0]);
     for (int k = 0; k < 4; ++k) {
-        norm[k] = dt(n[k], n[k]);
-        if (!(norm[k] >= 0x1p-800)) return per_edge();
+        norm[k] = n[k][0] * n[k][0] + n[k][1] * n[k][1] + n[k][2] * n[k][2];
+        if (!(norm[k] >= 0x1p-800)) return false;
+    }
+    return true;
+}
+
+double rounded_dot(const RoundedVector& x, const RoundedVector& y) {
+    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+
+}  // namespace
+
+bool any_dihedral_below_rounded(const TetCorners& p, long double cos_squared) {
+    RoundedVector n[4];
+    double norm[4];
+    if (!scaled_face_normals(p, n, norm)) {
+        for (unsigned i = 0; i < 4; ++i)
+            for (unsigned j = i + 1; j < 4; ++j)
+                if (dihedral_below_rounded(Dihedral{p, i, j}, cos_squared)) return true;
+        return false;
     }
     const double c2 = static_cast<double>(cos_squared);
     for (int k = 0; k < 4; ++k) {
         for (int l = k + 1; l < 4; ++l) {
-            const double d = -dt(n[k], n[l]);
+            const double d = -rounded_dot(n[k], n[l]);
             if (d > 0 && d * d > c2 * (norm[k] * norm[l])) return true;
         }
     }
     return false;
+}
+
+Dihedral smallest_dihedral_rounded(const TetCorners& p, double* cosine) {
+    RoundedVector n[4];
+    double norm[4];
+    // The edge (i, j) whose faces are those opposite k and l, for (k, l) in loop order.
+    constexpr unsigned kEdgeOf[4][4][2] = {
+        {{}, {2, 3}, {1, 3}, {1, 2}}, {{}, {}, {0, 3}, {0, 2}}, {{}, {}, {}, {0, 1}}, {}};
+    Dihedral best{p, 0, 1};
+    double best_cosine = -2;
+    if (cosine != nullptr) *cosine = best_cosine;
+    if (!scaled_face_normals(p, n, norm)) return best;
+    for (unsigned k = 0; k < 4; ++k) {
+        for (unsigned l = k + 1; l < 4; ++l) {
+            const double c = -rounded_dot(n[k], n[l]) / std::sqrt(norm[k] * norm[l]);
+            if (c > best_cosine) {
+                best_cosine = c;
+                best.i = kEdgeOf[k][l][0];
+                best.j = kEdgeOf[k][l][1];
+            }
+        }
+    }
+    if (cosine != nullptr) *cosine = best_cosine;
+    return best;
 }
 
 long double volume_edge_quality(const TetCorners& p) {

@@ -70,6 +70,15 @@ bool dihedral_below_rounded(const Dihedral& a, long double cos_squared);
 /// work of six dihedral_below_rounded calls.
 bool any_dihedral_below_rounded(const TetCorners& p, long double cos_squared);
 
+/// The dihedral angle of `p` whose rounded cosine (from the face normals as in
+/// any_dihedral_below_rounded) is the largest: a selection, never a decision. It is the
+/// smallest angle or one within rounding of it, and always an angle of `p`: a caller that needs
+/// some angle at least as large as the smallest may use it, and one that needs the smallest
+/// itself compares exactly (smallest_dihedral). Edge (0, 1) where the normals are not usable
+/// (differences beyond [2^-1000, 2^1000], near-degenerate faces). With `cosine`: the rounded
+/// cosine found (-2 for edge (0, 1) then), to pick among several tetrahedra.
+Dihedral smallest_dihedral_rounded(const TetCorners& p, double* cosine = nullptr);
+
 /// q = 12 sqrt(3) D / L^(3/2) in long double (1 for the regular tetrahedron), rounded.
 long double volume_edge_quality(const TetCorners& p);
 

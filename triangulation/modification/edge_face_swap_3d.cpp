@@ -85,7 +85,31 @@ bool quality_prefers(const TetMesh3& mesh, SwapCriterion3 criterion, const FlipP
             };
             // The new extreme beats the old one exactly when every angle of every new
             // tetrahedron does: checked angle by angle, stopping at the first that does not
-            // (most plans fail early; the new extreme itself cost a fifth of sliver removal).
+            // (the new extreme itself cost a fifth of sliver removal).
+            if (min) {
+                // First against the old angle the rounded cosines find smallest: if every new
+                // angle exceeds it, every one exceeds the old smallest angle (at most it), the
+                // same answer without the old extreme's exact comparisons (99% of sliver
+                // removal's plans on the wing pass so; their smallest_dihedral calls were a
+                // fifth of its face swaps' time). Otherwise the exact extreme decides.
+                double guess_cosine = 0;
+                Dihedral guess =
+                    predicates::smallest_dihedral_rounded(corners(mesh, old[0]), &guess_cosine);
+                for (unsigned i = 1; i < plan.old_count; ++i) {
+                    double cosine = 0;
+                    const Dihedral c =
+                        predicates::smallest_dihedral_rounded(corners(mesh, old[i]), &cosine);
+                    if (cosine > guess_cosine) {
+                        guess = c;
+                        guess_cosine = cosine;
+                    }
+                }
+                bool beaten = true;
+                for (unsigned i = 0; i < plan.made_count && beaten; ++i)
+                    beaten = predicates::every_dihedral_compares(corners(mesh, plan.made[i]), guess,
+                                                                 Sign::Positive);
+                if (beaten) return true;
+            }
             const Dihedral before = extreme(old, plan.old_count);
             const Sign wanted = min ? Sign::Positive : Sign::Negative;
             for (unsigned i = 0; i < plan.made_count; ++i) {

@@ -499,6 +499,44 @@ TEST(Predicates_AngleComparisons3d, SmallestAndEveryDihedralAgreeWithGmp) {
     EXPECT_GT(all_false, 0);
 }
 
+TEST(Predicates_AngleComparisons3d, SmallestDihedralRoundedIsWithinRoundingOfTheSmallest) {
+    // smallest_dihedral_rounded picks an angle of the tetrahedron that is the exact smallest
+    // (smallest_dihedral) or within rounding of it, the same edge at every scale, on random and
+    // flattened tetrahedra (angles near 0 and 180 degrees); its cosine is the picked angle's.
+    Rng rng(23);
+    int exact_picks = 0, cases = 0;
+    for (int n = 0; n < 2000; ++n) {
+        Tet t = random_tet(rng);
+        if (n % 2 == 1) {
+            const double f = std::ldexp(1.0, -(n % 40));
+            for (int k = 0; k < 3; ++k)
+                t[0][k] = t[1][k] + f * (t[0][k] - t[1][k]) +
+                          (1 - f) * ((t[2][k] + t[3][k]) / 2 - t[1][k]);
+            if (pr::orient3d(t[0].data(), t[1].data(), t[2].data(), t[3].data()) == Sign::Zero)
+                continue;
+        }
+        const auto c = corners(t);
+        double cosine = 0;
+        const pr::Dihedral pick = pr::smallest_dihedral_rounded(c, &cosine);
+        const pr::Dihedral smallest = pr::smallest_dihedral(c);
+        ++cases;
+        ASSERT_NE(pick.i, pick.j);
+        const long double picked = pr::dihedral_radians(pick);
+        const long double least = pr::dihedral_radians(smallest);
+        ASSERT_LE(std::fabs(picked - least), 1e-6L * (1 + least)) << n;
+        ASSERT_NEAR(std::acos(std::clamp(cosine, -1.0, 1.0)), static_cast<double>(picked),
+                    1e-6 * (1 + static_cast<double>(picked)))
+            << n;
+        if (pr::compare_dihedral(pick, smallest) == Sign::Zero) ++exact_picks;
+        for (const int s : kScales) {
+            const pr::Dihedral scaled_pick = pr::smallest_dihedral_rounded(corners(scaled(t, s)));
+            ASSERT_EQ(scaled_pick.i, pick.i) << n << " scale " << s;
+            ASSERT_EQ(scaled_pick.j, pick.j) << n << " scale " << s;
+        }
+    }
+    EXPECT_GT(exact_picks, cases * 9 / 10);
+}
+
 TEST(Predicates_AngleComparisons3d, DihedralBelowRoundedAgreesWithTheAngleAndScales) {
     // (and any_dihedral_below_rounded with the smallest of the six)
     // dihedral_below_rounded(a, cos^2 T) against dihedral_radians(a) < T, away from T (both
