@@ -299,6 +299,15 @@ Tet random_tet(Rng& rng) {
     }
 }
 
+/// Pulls corner 0 toward the opposite face by 2^-(n % 40) (angles near 0 and 180 degrees);
+/// false when that made the tetrahedron flat.
+bool flatten(Tet& t, int n) {
+    const double f = std::ldexp(1.0, -(n % 40));
+    for (int k = 0; k < 3; ++k)
+        t[0][k] = t[1][k] + f * (t[0][k] - t[1][k]) + (1 - f) * ((t[2][k] + t[3][k]) / 2 - t[1][k]);
+    return pr::orient3d(t[0].data(), t[1].data(), t[2].data(), t[3].data()) != Sign::Zero;
+}
+
 }  // namespace
 
 TEST(Predicates_AngleComparisons3d, AgreeWithGmpOnRandomTurnedAndScaledTetrahedra) {
@@ -507,14 +516,7 @@ TEST(Predicates_AngleComparisons3d, SmallestDihedralRoundedIsWithinRoundingOfThe
     int exact_picks = 0, cases = 0;
     for (int n = 0; n < 2000; ++n) {
         Tet t = random_tet(rng);
-        if (n % 2 == 1) {
-            const double f = std::ldexp(1.0, -(n % 40));
-            for (int k = 0; k < 3; ++k)
-                t[0][k] = t[1][k] + f * (t[0][k] - t[1][k]) +
-                          (1 - f) * ((t[2][k] + t[3][k]) / 2 - t[1][k]);
-            if (pr::orient3d(t[0].data(), t[1].data(), t[2].data(), t[3].data()) == Sign::Zero)
-                continue;
-        }
+        if (n % 2 == 1 && !flatten(t, n)) continue;
         const auto c = corners(t);
         double cosine = 0;
         const pr::Dihedral pick = pr::smallest_dihedral_rounded(c, &cosine);
@@ -550,14 +552,7 @@ TEST(Predicates_AngleComparisons3d, DihedralBelowRoundedAgreesWithTheAngleAndSca
         const long double cos_squared = std::cos(threshold) * std::cos(threshold);
         for (int n = 0; n < 400; ++n) {
             Tet t = random_tet(rng);
-            if (n % 2 == 1) {
-                const double f = std::ldexp(1.0, -(n % 40));
-                for (int k = 0; k < 3; ++k)
-                    t[0][k] = t[1][k] + f * (t[0][k] - t[1][k]) +
-                              (1 - f) * ((t[2][k] + t[3][k]) / 2 - t[1][k]);
-                if (pr::orient3d(t[0].data(), t[1].data(), t[2].data(), t[3].data()) == Sign::Zero)
-                    continue;
-            }
+            if (n % 2 == 1 && !flatten(t, n)) continue;
             // any_dihedral_below_rounded against the smallest angle, away from T.
             long double smallest = 10;
             for (unsigned i = 0; i < 4; ++i)
