@@ -13,6 +13,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -21,23 +22,14 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
 #include "triangulation/delaunay/delaunay_2d_core.hpp"
+#include "triangulation/delaunay/parallel_rounds.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 
 namespace exactmesh::triangulation {
 
-unsigned resolve_thread_count(unsigned threads) {
-    if (threads != 0) return threads;
-    return std::max(1u, static_cast<unsigned>(tbb::this_task_arena::max_concurrency()));
-}
-
 namespace {
 
 using predicates::Sign;
-
-/// A half-open range of Hilbert keys (64-bit so that the last range can end past 2^32 - 1).
-struct KeyRange {
-    std::uint64_t low = 0, high = 0;
-};
 
 /// What the threads share. During a pass each thread writes only: tv and twin of triangles of
 /// its partition (and slots of its own free list and fresh range), the twin half-edge of a
@@ -66,7 +58,7 @@ enum class Outcome { Inserted, Merged, Deferred };
 /// predicate and insertion must not share a line (or the adjacent-line prefetch pair) with what
 /// the next worker reads on every triangle (its range).
 struct alignas(128) Worker {
-    KeyRange range;
+    detail::KeyRange range;
     bool owns_all = false;  ///< the sequential prefix and tail: every triangle is ours
     std::vector<TriIdx> free_slots;
     TriIdx fresh_next = 0, fresh_end = 0;
@@ -92,8 +84,7 @@ struct alignas(128) Worker {
     bool owns_vertex(const Shared& shared, VertIdx v) const {
         if (owns_all) return true;
         if (v == kInfinite) return false;
-        const std::uint64_t key = shared.keys[v];
-        return key >= range.low && key < range.high;
+        return range.holds(shared.keys[v]);
     }
     bool owns(const Shared& shared, TriIdx t) const {
         if (owns_all) return true;
@@ -377,13 +368,6 @@ Prepared prepare(std::span<const double> xy, std::uint64_t seed, unsigned thread
     return out;
 }
 
-/// Sorts vertices by (key, vertex).
-void sort_by_key(const std::vector<std::uint32_t>& keys, std::vector<VertIdx>& points) {
-    std::sort(points.begin(), points.end(), [&keys](VertIdx u, VertIdx v) {
-        return keys[u] < keys[v] || (keys[u] == keys[v] && u < v);
-    });
-}
-
 class ParallelConstruction {
   public:
     /// `arena` runs the T = `threads` partitions (on fewer threads if it has fewer); `prepared`
@@ -406,18 +390,13 @@ class ParallelConstruction {
         stamp_.swap(prepared.stamp);
         // The keys by mesh vertex (they were computed in the caller's order).
         for (std::vector<std::uint32_t>& keys : keys_) keys.resize(n);
-        arena_.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 1 << 14),
-                              [&](const tbb::blocked_range<std::uint32_t>& r) {
-                                  for (std::uint32_t v = r.begin(); v != r.end(); ++v) {
-                                      const VertIdx i = core.input_index[v];
-                                      keys_[0][v] = prepared.keys[0][i];
-                                      keys_[1][v] = prepared.keys[1][i];
-                                  }
-                                  finished_.fetch_add(1, std::memory_order_release);
-                              });
+        runner_.run_chunks(arena_, n, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t v = begin; v != end; ++v) {
+                const VertIdx i = core.input_index[v];
+                keys_[0][v] = prepared.keys[0][i];
+                keys_[1][v] = prepared.keys[1][i];
+            }
         });
-        (void)finished_.load(std::memory_order_acquire);  // as in pass(), for ThreadSanitizer
         shared_.keys = keys_[0].data();
         starting_at_.assign(n + 1, kNone);
         shared_.starting_at = &starting_at_;
@@ -474,14 +453,12 @@ class ParallelConstruction {
         const std::size_t count = workers_.size();
         // Each insertion frees its cavity (k triangles) before making k + 2: two fresh slots
         // per point cover a worker's whole list, so the arrays need not grow during the pass.
-        std::size_t begin = 0;
+        const std::vector<std::span<const VertIdx>> parts =
+            detail::split_by_bounds(keys, points, bounds);
         for (std::size_t w = 0; w < count; ++w) {
             Worker& worker = workers_[w];
             worker.range = {bounds[w], bounds[w + 1]};
-            std::size_t end = begin;
-            while (end < points.size() && keys[points[end]] < worker.range.high) ++end;
-            worker.points = points.subspan(begin, end - begin);
-            begin = end;
+            worker.points = parts[w];
             for (TriIdx t = worker.fresh_next; t < worker.fresh_end; ++t)
                 worker.free_slots.push_back(t);
             const std::size_t needed = 2 * worker.points.size() + 2;
@@ -502,22 +479,8 @@ class ParallelConstruction {
         for (Worker& worker : workers_) {
             find_start(worker);
         }
-        // The release/acquire pairs on pass_epoch_ and finished_ repeat what the task scheduler
-        // already guarantees (the setup above happens before each worker, each worker before
-        // what follows), in a form ThreadSanitizer sees: libtbb is not instrumented.
-        pass_epoch_.fetch_add(1, std::memory_order_release);
         const auto started = std::chrono::steady_clock::now();
-        arena_.execute([&] {
-            tbb::parallel_for(
-                tbb::blocked_range<std::size_t>(0, count, 1),
-                [&](const tbb::blocked_range<std::size_t>& r) {
-                    (void)pass_epoch_.load(std::memory_order_acquire);
-                    for (std::size_t w = r.begin(); w != r.end(); ++w) workers_[w].run(shared_);
-                    finished_.fetch_add(1, std::memory_order_release);
-                },
-                tbb::simple_partitioner());
-        });
-        (void)finished_.load(std::memory_order_acquire);
+        runner_.run(arena_, count, [&](std::size_t w) { workers_[w].run(shared_); });
         core_.counters.parallel_microseconds += detail::microseconds_since(started);
         std::vector<VertIdx> deferred;
         for (Worker& worker : workers_) {
@@ -530,25 +493,9 @@ class ParallelConstruction {
         return deferred;
     }
 
-    /// The keys of `curve` at the fractions i / T of `points` (i = 1..T-1), framed by 0 and
-    /// 2^32: the ranges of a pass, about equal in points.
+    /// The ranges of a pass over `points` along `curve`, about equal in points.
     std::vector<std::uint64_t> bounds(std::span<const VertIdx> points, int curve) const {
-        const std::size_t count = workers_.size();
-        std::vector<std::uint32_t> sorted(points.size());
-        for (std::size_t k = 0; k < points.size(); ++k) sorted[k] = keys_[curve][points[k]];
-        std::vector<std::uint64_t> out{0};
-        for (std::size_t i = 1; i < count; ++i) {
-            const auto at = std::min(points.size() * i / count, points.size() - 1);
-            if (points.empty()) {
-                out.push_back(0);
-                continue;
-            }
-            std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(at),
-                             sorted.end());
-            out.push_back(sorted[at]);
-        }
-        out.push_back(std::uint64_t{1} << 32);
-        return out;
+        return detail::key_range_bounds(keys_[curve], points, workers_.size());
     }
 
     const std::vector<std::uint32_t>& keys(int curve) const { return keys_[curve]; }
@@ -566,27 +513,20 @@ class ParallelConstruction {
 
   private:
     /// A triangle of the worker's partition to start its walks from, and the point it was found
-    /// for: the (sequential, read-only) walk to one of its points, tried at the middle of the
-    /// list first (farthest from the ranges' ends along the curve), then at fractions 1/4, 3/4,
-    /// 1/8, ...; kNone when none of 32 tries lands in the partition (then its points wait).
+    /// for (detail::find_start_index; the walks are sequential and read-only); kNone when none
+    /// lands in the partition.
     void find_start(Worker& worker) {
         worker.last = kNone;
         worker.start = 0;
-        const std::size_t size = worker.points.size();
-        if (size == 0) return;
-        for (std::size_t denominator = 2, tries = 0; tries < 32; denominator *= 2) {
-            for (std::size_t numerator = 1; numerator < denominator && tries < 32;
-                 numerator += 2, ++tries) {
-                const std::size_t i = size * numerator / denominator;
-                const TriIdx t = core_.walk_to(worker.points[i]);
-                if (worker.owns(shared_, t)) {
-                    worker.last = t;
-                    worker.start = i;
-                    return;
-                }
-            }
-            if (denominator >= size) break;
-        }
+        TriIdx found = kNone;
+        const std::optional<std::size_t> start =
+            detail::find_start_index(worker.points.size(), [&](std::size_t i) {
+                found = core_.walk_to(worker.points[i]);
+                return worker.owns(shared_, found);
+            });
+        if (!start) return;
+        worker.last = found;
+        worker.start = *start;
     }
 
     detail::Delaunay2Core& core_;
@@ -595,22 +535,13 @@ class ParallelConstruction {
     /// Slots below it were handed out (some are dead or still free); the arrays' slots from it
     /// on are unused (dead).
     TriIdx high_water_ = 0;
-    std::atomic<std::uint64_t> pass_epoch_{0}, finished_{0};
+    detail::PartitionRunner runner_;
     std::vector<TriIdx> starting_at_;
     Shared shared_;
     std::vector<Worker> workers_;
     Worker sequential_;
     tbb::task_arena& arena_;
 };
-
-/// Merges two lists of vertices sorted by (key, vertex).
-std::vector<VertIdx> merge_by_key(const std::vector<std::uint32_t>& keys,
-                                  std::span<const VertIdx> a, std::span<const VertIdx> b) {
-    std::vector<VertIdx> out(a.size() + b.size());
-    std::merge(a.begin(), a.end(), b.begin(), b.end(), out.begin(),
-               [&keys](VertIdx u, VertIdx v) { return keys[u] < keys[v]; });
-    return out;
-}
 
 }  // namespace
 
@@ -635,20 +566,8 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     if (!core.make_first_triangle(skip)) return core.collinear_result();
     const std::uint32_t n = core.mesh.vertex_count();
 
-    // The BRIO rounds as insertion_order_2d made them: [n/2, n), [n/4, n/2), ... down to 64
-    // points, each sorted by Hilbert key; everything before the first large round is prefix.
-    std::vector<std::uint32_t> round_begin;
-    for (std::uint32_t end = n; end > 64; end /= 2) round_begin.push_back(end / 2);
-    std::reverse(round_begin.begin(), round_begin.end());
-    round_begin.push_back(n);
-    std::size_t first_parallel = 0;
-    while (first_parallel + 1 < round_begin.size() &&
-           round_begin[first_parallel + 1] - round_begin[first_parallel] <
-               std::uint64_t{options.parallel_round_minimum} * threads) {
-        ++first_parallel;
-    }
-    const std::uint32_t prefix_end =
-        first_parallel + 1 < round_begin.size() ? round_begin[first_parallel] : n;
+    const detail::BrioRounds rounds =
+        detail::brio_rounds(n, threads, options.parallel_round_minimum);
 
     phase = Clock::now();
     ParallelConstruction construction(core, threads, arena, prepared);
@@ -661,23 +580,24 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
         return out;
     };
     phase = Clock::now();
-    const std::vector<VertIdx> prefix = unskipped(0, prefix_end);
+    const std::vector<VertIdx> prefix = unskipped(0, rounds.prefix_end);
     construction.insert_sequentially(prefix);
     core.counters.sequential_prefix = prefix.size();
     std::uint64_t sequential = detail::microseconds_since(phase);
 
     phase = Clock::now();
     std::vector<VertIdx> pending;
-    for (std::size_t r = first_parallel; r + 1 < round_begin.size(); ++r) {
-        const std::vector<VertIdx> round = unskipped(round_begin[r], round_begin[r + 1]);
-        const std::vector<VertIdx> points = merge_by_key(construction.keys(0), pending, round);
+    for (std::size_t r = rounds.first_parallel; r + 1 < rounds.begin.size(); ++r) {
+        const std::vector<VertIdx> round = unskipped(rounds.begin[r], rounds.begin[r + 1]);
+        const std::vector<VertIdx> points =
+            detail::merge_by_key(construction.keys(0), pending, round);
         std::vector<VertIdx> deferred =
             construction.pass(points, 0, construction.bounds(points, 0));
         // The points deferred along the first curve's borders lie inside the ranges of the
         // second curve.
-        sort_by_key(construction.keys(1), deferred);
+        detail::sort_by_key(construction.keys(1), deferred);
         pending = construction.pass(deferred, 1, construction.bounds(points, 1));
-        sort_by_key(construction.keys(0), pending);
+        detail::sort_by_key(construction.keys(0), pending);
     }
     // The rounds' time less the threads' passes: what the calling thread does alone.
     core.counters.partition_microseconds =

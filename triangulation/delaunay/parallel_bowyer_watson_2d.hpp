@@ -32,11 +32,9 @@
 #include <span>
 
 #include "triangulation/delaunay/delaunay_2d.hpp"
+#include "triangulation/delaunay/parallel_rounds.hpp"  // resolve_thread_count
 
 namespace exactmesh::triangulation {
-
-/// The thread count `threads` asks for: itself, or every hardware thread for 0 (at least 1).
-unsigned resolve_thread_count(unsigned threads);
 
 /// The Delaunay triangulation of xy (2·#V coordinates) built by `threads` threads (>= 1) over
 /// the BRIO order of options.seed (options.order and options.location are not used). Same

@@ -1,0 +1,432 @@
+// SPDX-License-Identifier: MIT
+// Multicore Bowyer-Watson 3D (see parallel_bowyer_watson_3d.hpp).
+#include "triangulation/delaunay/parallel_bowyer_watson_3d.hpp"
+
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "base/errors.hpp"
+#include "triangulation/delaunay/bowyer_watson_3d_cavity.hpp"
+#include "triangulation/delaunay/delaunay_3d_core.hpp"
+#include "triangulation/mesh/spatial_sort.hpp"
+
+namespace exactmesh::triangulation {
+
+namespace {
+
+/// What the threads share. During a pass each thread writes only: tv and adj of tetrahedra of
+/// its partition (and of the dead slots of its free list), the face slot of a mixed tetrahedron
+/// facing its cavity, and merged_into of its own points.
+struct Shared3 {
+    TetMesh3& mesh;
+    const std::vector<VertIdx>& input_index;
+    std::vector<VertIdx>& merged_into;
+    const std::uint32_t* keys = nullptr;  ///< per mesh vertex: the key of this pass's curve
+};
+
+/// The slots not in use between passes (the calling thread's alone): mesh.free_tets, then fresh
+/// slots from high_water on, the arrays grown (with room to spare) when they run out.
+class SlotPool {
+  public:
+    explicit SlotPool(TetMesh3& mesh) : mesh_(mesh) {}
+
+    TetIdx high_water = 0;  ///< slots from it on were never handed out (dead)
+
+    /// Fills `list` up to `target` slots.
+    void fill(std::vector<TetIdx>& list, std::size_t target) {
+        std::vector<TetIdx>& pool = mesh_.free_tets;
+        while (list.size() < target && !pool.empty()) {
+            list.push_back(pool.back());
+            pool.pop_back();
+        }
+        if (list.size() >= target) return;
+        const std::size_t needed = high_water + (target - list.size());
+        if (needed > mesh_.tet_slots()) {
+            // Rare (more tetrahedra per point than the first sizing allowed for): reserved
+            // exactly, so that the arrays do not double.
+            const std::size_t slots = needed + needed / 16;
+            EM_ASSERT(slots <= kMaxTetSlots);
+            mesh_.tv.reserve(4 * slots);
+            mesh_.adj.reserve(4 * slots);
+            mesh_.tv.resize(4 * slots, kNone);
+            mesh_.adj.resize(4 * slots, kNone);
+        }
+        while (list.size() < target) list.push_back(high_water++);
+    }
+
+    /// Takes back the slots of `list`.
+    void give_back(std::vector<TetIdx>& list) {
+        mesh_.free_tets.insert(mesh_.free_tets.end(), list.begin(), list.end());
+        list.clear();
+    }
+
+  private:
+    TetMesh3& mesh_;
+};
+
+/// A thread's partition as the region of a CavityInserter3: the tetrahedra whose four vertices
+/// have keys in `range`; with `whole`, every tetrahedron (the sequential prefix and tail).
+struct Partition3 {
+    static constexpr bool kPartitioned = true;
+    Shared3& shared;
+    SlotPool& pool;
+    detail::KeyRange range;
+    bool whole = false;
+    std::vector<TetIdx> free_list;
+    TetIdx last_tet = kNone;  ///< where the next walk starts (a tetrahedron of the partition)
+    Delaunay3Counters work{};
+
+    bool owns_vertex(VertIdx v) const {
+        return whole || (v != kInfinite && range.holds(shared.keys[v]));
+    }
+    bool owns(TetIdx t) const {
+        if (whole) return true;
+        const VertIdx* v = &shared.mesh.tv[4 * std::size_t{t}];
+        return owns_vertex(v[0]) && owns_vertex(v[1] & kVertexBits) && owns_vertex(v[2]) &&
+               owns_vertex(v[3]);
+    }
+    detail::ConflictTest3 tests() { return {shared.mesh, shared.input_index.data(), work}; }
+    Delaunay3Counters& counters() { return work; }
+    std::vector<TetIdx>& free_tets() { return free_list; }
+    /// A thread's list was filled before the pass (the arrays must not grow while threads
+    /// run); only the whole mesh, alone, takes more.
+    bool make_room(std::size_t faces) {
+        if (free_list.size() >= faces) return true;
+        if (!whole) return false;
+        pool.fill(free_list, faces + 64);
+        return true;
+    }
+};
+
+enum class Outcome { Inserted, Merged, Deferred };
+
+/// One thread's partition, its insertion scratch, its points of the pass and counters (kept
+/// from pass to pass). Aligned to whole cache-line pairs: what one worker writes on every
+/// predicate must not share a line (or the adjacent-line prefetch pair) with another's.
+struct alignas(128) Worker3 {
+    Worker3(Shared3& shared, SlotPool& pool)
+        : region{shared, pool, {}, false, {}, kNone, {}}, inserter(region, shared.mesh) {}
+
+    Partition3 region;
+    detail::CavityInserter3<Partition3> inserter;
+    std::uint64_t rng_state = 0x9E3779B97F4A7C15ull;
+    std::span<const VertIdx> points;  ///< this pass's points, in curve order
+    std::size_t start = 0;            ///< the point whose walk found region.last_tet
+    std::vector<VertIdx> deferred;
+
+    /// Inserts p (walk, then bowyer_watson_3d's cavity and star) when the walk and the cavity
+    /// stay in the partition; else changes nothing and returns Deferred.
+    Outcome insert(VertIdx p) {
+        TetMesh3& mesh = region.shared.mesh;
+        TetIdx t = region.last_tet;
+        if (t == kNone) return Outcome::Deferred;
+        // Only the whole mesh stands in an infinite tetrahedron: step behind its hull face.
+        if (mesh.is_infinite(t)) t = tet_of(mesh.adj[4 * std::size_t{t} + kInfiniteSlot]);
+        const detail::Location3 where = detail::walk_3d(
+            mesh, t, p, rng_state, region.work, [this](TetIdx u) { return region.owns(u); });
+        // The next points lie near p: their walks start here, whether it went on or not.
+        region.last_tet = t;
+        if (where.tet == kNone) return Outcome::Deferred;
+        const VertIdx same = detail::duplicate_vertex(mesh, where);
+        if (same != kNone) {
+            const std::vector<VertIdx>& index = region.shared.input_index;
+            region.shared.merged_into[index[p]] = index[same];
+            ++region.work.duplicates;
+            return Outcome::Merged;
+        }
+        return inserter.insert(p, where.tet) ? Outcome::Inserted : Outcome::Deferred;
+    }
+
+    /// Inserts this pass's points from points[start] (whose walk found region.last_tet) to the
+    /// end, then back from points[start - 1] to the first, so that each walk is short; the
+    /// deferred ones go to `deferred`, in the order of `points`.
+    void run() {
+        deferred.clear();
+        if (region.last_tet == kNone) {
+            deferred.assign(points.begin(), points.end());
+            region.work.deferred_points += deferred.size();
+            return;
+        }
+        std::vector<VertIdx> put_off_before;
+        TetIdx anchor = kNone;
+        auto insert_counted = [&](std::size_t i, std::vector<VertIdx>& into) {
+            if (insert(points[i]) == Outcome::Deferred) {
+                into.push_back(points[i]);
+            } else {
+                ++region.work.parallel_points;
+            }
+        };
+        for (std::size_t i = start; i < points.size(); ++i) {
+            insert_counted(i, deferred);
+            if (i == start) anchor = region.last_tet;
+        }
+        // Back to the start: the anchor slot is ours (made or reused by this worker only).
+        const TetMesh3& mesh = region.shared.mesh;
+        if (anchor != kNone && !mesh.is_dead(anchor) && region.owns(anchor))
+            region.last_tet = anchor;
+        for (std::size_t i = start; i-- > 0;) insert_counted(i, put_off_before);
+        std::reverse(put_off_before.begin(), put_off_before.end());
+        deferred.insert(deferred.begin(), put_off_before.begin(), put_off_before.end());
+        region.work.deferred_points += deferred.size();
+    }
+};
+
+void add_work_counters(Delaunay3Counters& to, const Delaunay3Counters& from) {
+    to.duplicates += from.duplicates;
+    to.orient_calls += from.orient_calls;
+    to.insphere_calls += from.insphere_calls;
+    to.walk_steps += from.walk_steps;
+    to.cavity_tets += from.cavity_tets;
+    to.parallel_points += from.parallel_points;
+    to.deferred_points += from.deferred_points;
+}
+
+/// The second pass's curve: the Hilbert curve of the grid moved by 0.382 of its width along
+/// every axis (wrapping around), whose ranges' borders are not the first curve's dyadic planes.
+constexpr std::uint32_t kSecondCurveShift = 391;  // 2^10 (1 - 0.618...)
+
+/// Tetrahedron slots made ready before the construction: about 6.7 per uniform point, as
+/// Delaunay3Core reserves, and room for each thread's list.
+std::size_t prepared_slots(std::size_t n, unsigned threads) {
+    return 7 * n + 64 + 1024 * std::size_t{threads};
+}
+
+/// What is computed on the arena before the mesh exists: the BRIO order, both curves' keys (in
+/// the caller's order) and the mesh arrays (tv kNone: dead slots).
+struct Prepared {
+    std::vector<VertIdx> order;
+    std::vector<std::uint32_t> keys[2];
+    std::vector<VertIdx> tv;
+    std::vector<FaceIdx> adj;
+};
+
+Prepared prepare(std::span<const double> xyz, std::uint64_t seed, unsigned threads,
+                 tbb::task_arena& arena) {
+    const std::size_t slots = prepared_slots(xyz.size() / 3, threads);
+    Prepared out;
+    auto make_array = [slots](std::vector<std::uint32_t>& array) {
+        array.reserve(4 * slots);
+        detail::advise_huge_pages(array.data(), array.capacity() * sizeof(std::uint32_t));
+        array.resize(4 * slots, kNone);
+    };
+    // The release/acquire pair repeats the task group's guarantee for ThreadSanitizer (libtbb
+    // is not instrumented), as in PartitionRunner.
+    std::atomic<int> finished{0};
+    arena.execute([&] {
+        tbb::task_group group;
+        group.run([&] {
+            out.keys[1] = hilbert_keys_3d(xyz, kSecondCurveShift, true);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        group.run([&] {
+            make_array(out.tv);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        group.run([&] {
+            make_array(out.adj);
+            finished.fetch_add(1, std::memory_order_release);
+        });
+        out.order = insertion_order_3d(xyz, InsertionOrder::Brio, seed, true, &out.keys[0]);
+        group.wait();
+    });
+    (void)finished.load(std::memory_order_acquire);
+    return out;
+}
+
+class ParallelConstruction3 {
+  public:
+    /// `arena` runs the T = `threads` partitions (on fewer threads if it has fewer); `prepared`
+    /// (of the same points and T) gives its arrays and keys.
+    ParallelConstruction3(detail::Delaunay3Core& core, ProgressCounter& progress, unsigned threads,
+                          tbb::task_arena& arena, Prepared& prepared)
+        : core_(core),
+          progress_(progress),
+          shared_{core.mesh, core.input_index, core.merged_into},
+          pool_(core.mesh),
+          sequential_(shared_, pool_),
+          arena_(arena) {
+        const std::uint32_t n = core.mesh.vertex_count();
+        TetMesh3& mesh = core.mesh;
+        // The prepared arrays take the first tetrahedra's entries and replace the mesh's.
+        pool_.high_water = mesh.tet_slots();
+        EM_ASSERT(prepared.tv.size() >= mesh.tv.size());
+        std::copy(mesh.tv.begin(), mesh.tv.end(), prepared.tv.begin());
+        std::copy(mesh.adj.begin(), mesh.adj.end(), prepared.adj.begin());
+        mesh.tv.swap(prepared.tv);
+        mesh.adj.swap(prepared.adj);
+        // The keys by mesh vertex (they were computed in the caller's order).
+        for (std::vector<std::uint32_t>& keys : keys_) keys.resize(n);
+        runner_.run_chunks(arena_, n, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t v = begin; v != end; ++v) {
+                const VertIdx i = core.input_index[v];
+                keys_[0][v] = prepared.keys[0][i];
+                keys_[1][v] = prepared.keys[1][i];
+            }
+        });
+        shared_.keys = keys_[0].data();
+        for (unsigned w = 0; w < threads; ++w)
+            workers_.push_back(std::make_unique<Worker3>(shared_, pool_));
+        sequential_.region.whole = true;
+    }
+
+    /// Inserts `points` one by one (the prefix and the tail).
+    void insert_sequentially(std::span<const VertIdx> points) {
+        TetIdx t = core_.last_tet;
+        if (t == kNone || core_.mesh.is_dead(t)) {
+            for (t = 0; core_.mesh.is_dead(t); ++t) {
+            }
+        }
+        sequential_.region.last_tet = t;
+        for (const VertIdx p : points) {
+            const Outcome outcome = sequential_.insert(p);
+            EM_ASSERT(outcome != Outcome::Deferred);
+            progress_.tick();
+        }
+        core_.last_tet = sequential_.region.last_tet;
+        pool_.give_back(sequential_.region.free_list);
+    }
+
+    /// One pass: `points` (sorted by the keys of `curve`) cut by `bounds` (T + 1 increasing
+    /// keys of that curve, first 0, last 2^32) into the workers' ranges; returns the deferred
+    /// points, in curve order.
+    std::vector<VertIdx> pass(std::span<const VertIdx> points, int curve,
+                              const std::vector<std::uint64_t>& bounds) {
+        const std::vector<std::uint32_t>& keys = keys_[curve];
+        shared_.keys = keys.data();
+        const std::vector<std::span<const VertIdx>> parts =
+            detail::split_by_bounds(keys, points, bounds);
+        for (std::size_t w = 0; w < workers_.size(); ++w) {
+            Worker3& worker = *workers_[w];
+            worker.region.range = {bounds[w], bounds[w + 1]};
+            worker.points = parts[w];
+            // About 6.7 new tetrahedra per point, and room for the largest cavities' faces; a
+            // worker that runs short defers the rest of its points.
+            if (!worker.points.empty())
+                pool_.fill(worker.region.free_list, 7 * worker.points.size() + 256);
+            find_start(worker);
+        }
+        const auto started = std::chrono::steady_clock::now();
+        runner_.run(arena_, workers_.size(), [&](std::size_t w) { workers_[w]->run(); });
+        core_.counters.parallel_microseconds +=
+            static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
+                                           std::chrono::steady_clock::now() - started)
+                                           .count());
+        std::vector<VertIdx> deferred;
+        for (const std::unique_ptr<Worker3>& worker : workers_) {
+            for (std::size_t i = worker->deferred.size(); i < worker->points.size(); ++i)
+                progress_.tick();
+            deferred.insert(deferred.end(), worker->deferred.begin(), worker->deferred.end());
+            if (worker->region.last_tet != kNone) core_.last_tet = worker->region.last_tet;
+            pool_.give_back(worker->region.free_list);
+        }
+        ++core_.counters.parallel_rounds;
+        return deferred;
+    }
+
+    std::vector<std::uint64_t> bounds(std::span<const VertIdx> points, int curve) const {
+        return detail::key_range_bounds(keys_[curve], points, workers_.size());
+    }
+
+    const std::vector<std::uint32_t>& keys(int curve) const { return keys_[curve]; }
+
+    /// Drops the unused slots at the arrays' end (all dead) and the keys.
+    void finish() {
+        TetMesh3& mesh = core_.mesh;
+        mesh.tv.resize(4 * std::size_t{pool_.high_water});
+        mesh.adj.resize(4 * std::size_t{pool_.high_water});
+        std::vector<TetIdx>().swap(mesh.free_tets);
+        for (std::vector<std::uint32_t>& keys : keys_) std::vector<std::uint32_t>().swap(keys);
+        for (const std::unique_ptr<Worker3>& worker : workers_)
+            add_work_counters(core_.counters, worker->region.work);
+        add_work_counters(core_.counters, sequential_.region.work);
+    }
+
+  private:
+    /// A tetrahedron of the worker's partition to start its walks from, and the point it was
+    /// found for (detail::find_start_index; the walks are sequential and read-only).
+    void find_start(Worker3& worker) {
+        worker.region.last_tet = kNone;
+        worker.start = 0;
+        TetIdx found = kNone;
+        const std::optional<std::size_t> start =
+            detail::find_start_index(worker.points.size(), [&](std::size_t i) {
+                found = core_.walk_to(worker.points[i]).tet;
+                return worker.region.owns(found);
+            });
+        if (!start) return;
+        worker.region.last_tet = found;
+        worker.start = *start;
+    }
+
+    detail::Delaunay3Core& core_;
+    ProgressCounter& progress_;
+    std::vector<std::uint32_t> keys_[2];
+    Shared3 shared_;
+    SlotPool pool_;
+    std::vector<std::unique_ptr<Worker3>> workers_;
+    Worker3 sequential_;
+    detail::PartitionRunner runner_;
+    tbb::task_arena& arena_;
+};
+
+}  // namespace
+
+Delaunay3Result parallel_bowyer_watson_3d(std::span<const double> xyz,
+                                          const Delaunay3Options& options, unsigned threads) {
+    EM_ASSERT(threads >= 1);
+    // More partitions than hardware threads still give the same tetrahedra; the arena only
+    // runs them on the threads there are.
+    tbb::task_arena arena(
+        std::min(static_cast<int>(threads), tbb::this_task_arena::max_concurrency()));
+    validate_points_3d(xyz);
+    Prepared prepared = prepare(xyz, options.seed, threads, arena);
+    detail::Delaunay3Core core(xyz, std::move(prepared.order), 0);
+    core.counters.threads = threads;
+    std::vector<bool> skip;
+    if (!core.make_first_tet(skip)) return core.coplanar_result(xyz);
+    ProgressCounter progress(options.progress, core.mesh.vertex_count(), "points inserted");
+    const std::uint32_t n = core.mesh.vertex_count();
+    const detail::BrioRounds rounds =
+        detail::brio_rounds(n, threads, options.parallel_round_minimum);
+
+    ParallelConstruction3 construction(core, progress, threads, arena, prepared);
+    prepared = Prepared{};
+    auto unskipped = [&skip](std::uint32_t begin, std::uint32_t end) {
+        std::vector<VertIdx> out;
+        for (VertIdx p = begin; p < end; ++p) {
+            if (!skip[p]) out.push_back(p);
+        }
+        return out;
+    };
+    const std::vector<VertIdx> prefix = unskipped(0, rounds.prefix_end);
+    construction.insert_sequentially(prefix);
+    core.counters.sequential_prefix = prefix.size();
+
+    std::vector<VertIdx> pending;
+    for (std::size_t r = rounds.first_parallel; r + 1 < rounds.begin.size(); ++r) {
+        const std::vector<VertIdx> round = unskipped(rounds.begin[r], rounds.begin[r + 1]);
+        const std::vector<VertIdx> points =
+            detail::merge_by_key(construction.keys(0), pending, round);
+        std::vector<VertIdx> deferred =
+            construction.pass(points, 0, construction.bounds(points, 0));
+        // The points deferred along the first curve's borders lie inside the ranges of the
+        // second curve.
+        detail::sort_by_key(construction.keys(1), deferred);
+        pending = construction.pass(deferred, 1, construction.bounds(points, 1));
+        detail::sort_by_key(construction.keys(0), pending);
+    }
+    construction.insert_sequentially(pending);
+    core.counters.sequential_tail = pending.size();
+    construction.finish();
+    return core.take_result(xyz);
+}
+
+}  // namespace exactmesh::triangulation

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: MIT
+// What the multicore Bowyer-Watson constructions (parallel_bowyer_watson_2d, _3d) share, after
+// HXT's partitioned insertion [MarotPellerinRemacle19 §3]: the thread count; the BRIO rounds,
+// split into a sequential prefix and the rounds the threads insert; the ranges of Hilbert keys
+// that cut a round into one partition per thread (integers, no geometry); lists of vertices
+// sorted and merged by key; where in its list a thread starts walking; and running the
+// partitions of a pass on a oneTBB arena in a form ThreadSanitizer follows.
+#pragma once
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "triangulation/mesh/mesh2.hpp"
+
+namespace exactmesh::triangulation {
+
+/// The thread count `threads` asks for: itself, or every hardware thread for 0 (at least 1).
+unsigned resolve_thread_count(unsigned threads);
+
+namespace detail {
+
+/// A half-open range of Hilbert keys (64-bit so that the last range can end past 2^32 - 1).
+struct KeyRange {
+    std::uint64_t low = 0, high = 0;
+    bool holds(std::uint32_t key) const { return key >= low && key < high; }
+};
+
+/// The BRIO rounds as insertion_order made them for n points: [n/2, n), [n/4, n/2), ... down
+/// to 64 points, each sorted by Hilbert key. Rounds of fewer than round_minimum points per
+/// thread (and the first points) are the sequential prefix; the others go to the threads.
+struct BrioRounds {
+    std::vector<std::uint32_t> begin;  ///< round r holds mesh vertices [begin[r], begin[r + 1])
+    std::size_t first_parallel = 0;    ///< the first round the threads insert
+    std::uint32_t prefix_end = 0;      ///< vertices below it are inserted sequentially
+};
+BrioRounds brio_rounds(std::uint32_t n, unsigned threads, std::uint32_t round_minimum);
+
+/// The keys at the fractions i / count of `points` (i = 1..count-1; keys[v] is v's key), framed
+/// by 0 and 2^32: count ranges about equal in points.
+std::vector<std::uint64_t> key_range_bounds(std::span<const std::uint32_t> keys,
+                                            std::span<const VertIdx> points, std::size_t count);
+
+/// `points` (sorted by keys) cut by `bounds` (count + 1 increasing keys, as key_range_bounds):
+/// the points of each range, in order.
+std::vector<std::span<const VertIdx>> split_by_bounds(std::span<const std::uint32_t> keys,
+                                                      std::span<const VertIdx> points,
+                                                      std::span<const std::uint64_t> bounds);
+
+/// Sorts vertices by (key, vertex).
+void sort_by_key(std::span<const std::uint32_t> keys, std::vector<VertIdx>& points);
+
+/// Merges two lists of vertices sorted by (key, vertex).
+std::vector<VertIdx> merge_by_key(std::span<const std::uint32_t> keys, std::span<const VertIdx> a,
+                                  std::span<const VertIdx> b);
+
+/// Where a thread starts: the first index i of its `size` points for which lands_inside(i)
+/// (a read-only walk to point i ends in the thread's partition), tried at the middle of the
+/// list first (farthest from the ranges' ends along the curve), then at fractions 1/4, 3/4,
+/// 1/8, ...; nothing when none of 32 tries lands (then the thread's points wait).
+template <class LandsInside>
+std::optional<std::size_t> find_start_index(std::size_t size, LandsInside&& lands_inside) {
+    if (size == 0) return std::nullopt;
+    for (std::size_t denominator = 2, tries = 0; tries < 32; denominator *= 2) {
+        for (std::size_t numerator = 1; numerator < denominator && tries < 32;
+             numerator += 2, ++tries) {
+            const std::size_t i = size * numerator / denominator;
+            if (lands_inside(i)) return i;
+        }
+        if (denominator >= size) break;
+    }
+    return std::nullopt;
+}
+
+/// Runs the partitions of a pass on an arena, one task per partition.
+/// The release/acquire pairs on the two counters repeat what the task scheduler already
+/// guarantees (what the caller did before happens before each task, each task before what
+/// follows), in a form ThreadSanitizer sees: libtbb is not instrumented.
+class PartitionRunner {
+  public:
+    /// Calls run_partition(w) for w in [0, count), in parallel on `arena`.
+    template <class RunPartition>
+    void run(tbb::task_arena& arena, std::size_t count, RunPartition&& run_partition) {
+        epoch_.fetch_add(1, std::memory_order_release);
+        arena.execute([&] {
+            tbb::parallel_for(
+                tbb::blocked_range<std::size_t>(0, count, 1),
+                [&](const tbb::blocked_range<std::size_t>& r) {
+                    (void)epoch_.load(std::memory_order_acquire);
+                    for (std::size_t w = r.begin(); w != r.end(); ++w) run_partition(w);
+                    finished_.fetch_add(1, std::memory_order_release);
+                },
+                tbb::simple_partitioner());
+        });
+        (void)finished_.load(std::memory_order_acquire);
+    }
+
+    /// Calls body(begin, end) over [0, n) in chunks of 2^14, in parallel on `arena`.
+    template <class Body>
+    void run_chunks(tbb::task_arena& arena, std::size_t n, Body&& body) {
+        epoch_.fetch_add(1, std::memory_order_release);
+        arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1 << 14),
+                              [&](const tbb::blocked_range<std::size_t>& r) {
+                                  (void)epoch_.load(std::memory_order_acquire);
+                                  body(r.begin(), r.end());
+                                  finished_.fetch_add(1, std::memory_order_release);
+                              });
+        });
+        (void)finished_.load(std::memory_order_acquire);
+    }
+
+  private:
+    std::atomic<std::uint64_t> epoch_{0}, finished_{0};
+};
+
+}  // namespace detail
+}  // namespace exactmesh::triangulation
