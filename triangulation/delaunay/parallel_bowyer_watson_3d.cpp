@@ -42,13 +42,25 @@ class SlotPool {
 
     /// Fills `list` up to `target` slots.
     void fill(std::vector<TetIdx>& list, std::size_t target) {
+        const std::size_t missing = take_freed(list, target);
+        const TetIdx first = fresh_range(missing);
+        for (TetIdx t = first; t < high_water; ++t) list.push_back(t);
+    }
+
+    /// Moves freed slots into `list` up to `target`; returns how many are still missing.
+    std::size_t take_freed(std::vector<TetIdx>& list, std::size_t target) {
         std::vector<TetIdx>& pool = mesh_.free_tets;
         while (list.size() < target && !pool.empty()) {
             list.push_back(pool.back());
             pool.pop_back();
         }
-        if (list.size() >= target) return;
-        const std::size_t needed = high_water + (target - list.size());
+        return list.size() < target ? target - list.size() : 0;
+    }
+
+    /// The first of `count` fresh slots [first, high_water), the arrays grown if needed.
+    TetIdx fresh_range(std::size_t count) {
+        const TetIdx first = high_water;
+        const std::size_t needed = high_water + count;
         if (needed > mesh_.tet_slots()) {
             // Rare (more tetrahedra per point than the first sizing allowed for): reserved
             // exactly, so that the arrays do not double.
@@ -59,13 +71,15 @@ class SlotPool {
             mesh_.tv.resize(4 * slots, kNone);
             mesh_.adj.resize(4 * slots, kNone);
         }
-        while (list.size() < target) list.push_back(high_water++);
+        high_water = static_cast<TetIdx>(needed);
+        return first;
     }
 
-    /// Takes back the slots of `list`.
-    void give_back(std::vector<TetIdx>& list) {
+    /// Takes back the slots of `list` and the fresh slots [next, end).
+    void give_back(std::vector<TetIdx>& list, TetIdx& next, TetIdx end) {
         mesh_.free_tets.insert(mesh_.free_tets.end(), list.begin(), list.end());
         list.clear();
+        for (; next < end; ++next) mesh_.free_tets.push_back(next);
     }
 
   private:
@@ -81,6 +95,9 @@ struct Partition3 {
     detail::KeyRange range;
     bool whole = false;
     std::vector<TetIdx> free_list;
+    /// Fresh slots [fresh_next, fresh_end) handed to this partition for the pass, moved to
+    /// free_list only as cavities need them (a list of them all would cost 4 bytes a slot).
+    TetIdx fresh_next = 0, fresh_end = 0;
     TetIdx last_tet = kNone;  ///< where the next walk starts (a tetrahedron of the partition)
     Delaunay3Counters work{};
 
@@ -99,6 +116,8 @@ struct Partition3 {
     /// A thread's list was filled before the pass (the arrays must not grow while threads
     /// run); only the whole mesh, alone, takes more.
     bool make_room(std::size_t faces) {
+        while (free_list.size() < faces && fresh_next < fresh_end)
+            free_list.push_back(fresh_next++);
         if (free_list.size() >= faces) return true;
         if (!whole) return false;
         pool.fill(free_list, faces + 64);
@@ -113,7 +132,7 @@ enum class Outcome { Inserted, Merged, Deferred };
 /// predicate must not share a line (or the adjacent-line prefetch pair) with another's.
 struct alignas(128) Worker3 {
     Worker3(Shared3& shared, SlotPool& pool)
-        : region{shared, pool, {}, false, {}, kNone, {}}, inserter(region, shared.mesh) {}
+        : region{shared, pool, {}, false, {}, 0, 0, kNone, {}}, inserter(region, shared.mesh) {}
 
     Partition3 region;
     detail::CavityInserter3<Partition3> inserter;
@@ -291,7 +310,8 @@ class ParallelConstruction3 {
             progress_.tick();
         }
         core_.last_tet = sequential_.region.last_tet;
-        pool_.give_back(sequential_.region.free_list);
+        pool_.give_back(sequential_.region.free_list, sequential_.region.fresh_next,
+                        sequential_.region.fresh_end);
     }
 
     /// One pass: `points` (sorted by the keys of `curve`) cut by `bounds` (T + 1 increasing
@@ -309,8 +329,13 @@ class ParallelConstruction3 {
             worker.points = parts[w];
             // About 6.7 new tetrahedra per point, and room for the largest cavities' faces; a
             // worker that runs short defers the rest of its points.
-            if (!worker.points.empty())
-                pool_.fill(worker.region.free_list, 7 * worker.points.size() + 256);
+            if (!worker.points.empty()) {
+                Partition3& region = worker.region;
+                const std::size_t missing =
+                    pool_.take_freed(region.free_list, 7 * worker.points.size() + 256);
+                region.fresh_next = pool_.fresh_range(missing);
+                region.fresh_end = pool_.high_water;
+            }
             find_start(worker);
         }
         const auto started = std::chrono::steady_clock::now();
@@ -325,7 +350,8 @@ class ParallelConstruction3 {
                 progress_.tick();
             deferred.insert(deferred.end(), worker->deferred.begin(), worker->deferred.end());
             if (worker->region.last_tet != kNone) core_.last_tet = worker->region.last_tet;
-            pool_.give_back(worker->region.free_list);
+            Partition3& region = worker->region;
+            pool_.give_back(region.free_list, region.fresh_next, region.fresh_end);
         }
         ++core_.counters.parallel_rounds;
         return deferred;
