@@ -36,7 +36,7 @@ using predicates::Sign;
 /// mixed triangle facing its cavity, and merged_into of its own points.
 struct Shared {
     TriMesh2& mesh;
-    const std::uint32_t* keys = nullptr;  ///< per mesh vertex: the key of this pass's curve
+    std::span<const std::uint32_t> keys;  ///< per mesh vertex: the key of this pass's curve
     const std::vector<VertIdx>& input_index;
     std::vector<VertIdx>& merged_into;
     /// Per triangle slot: the mark of the last insertion attempt that visited it. A worker
@@ -280,29 +280,36 @@ struct alignas(128) Worker {
         deferred.clear();
         if (last == kNone) {
             deferred.assign(points.begin(), points.end());
-            counters.deferred_points += deferred.size();
-            return;
+        } else {
+            Sweep sweep{*this, shared};
+            detail::sweep_partition(sweep, points, start, shared.keys, deferred);
         }
-        std::vector<VertIdx> put_off_before;
-        TriIdx anchor = kNone;
-        auto insert_counted = [&](std::size_t i, std::vector<VertIdx>& into) {
-            if (insert(shared, points[i]) == Outcome::Deferred) {
-                into.push_back(points[i]);
-            } else {
-                ++counters.parallel_points;
-            }
-        };
-        for (std::size_t i = start; i < points.size(); ++i) {
-            insert_counted(i, deferred);
-            if (i == start) anchor = last;
-        }
-        // Back to the start: the anchor slot is ours (made or reused by this worker only).
-        if (anchor != kNone && !shared.mesh.is_dead(anchor) && owns(shared, anchor)) last = anchor;
-        for (std::size_t i = start; i-- > 0;) insert_counted(i, put_off_before);
-        std::reverse(put_off_before.begin(), put_off_before.end());
-        deferred.insert(deferred.begin(), put_off_before.begin(), put_off_before.end());
         counters.deferred_points += deferred.size();
     }
+
+    /// The worker as detail::sweep_partition's sweep.
+    struct Sweep {
+        Worker& worker;
+        Shared& shared;
+        TriIdx anchor = kNone;
+
+        bool try_insert(VertIdx p) {
+            if (worker.insert(shared, p) == Outcome::Deferred) return false;
+            ++worker.counters.parallel_points;
+            return true;
+        }
+        bool same_point(VertIdx a, VertIdx b) const {
+            const double* pa = shared.mesh.point(a);
+            const double* pb = shared.mesh.point(b);
+            return pa[0] == pb[0] && pa[1] == pb[1];
+        }
+        void remember_start() { anchor = worker.last; }
+        /// Back to the start: the anchor slot is ours (made or reused by this worker only).
+        void return_to_start() {
+            if (anchor != kNone && !shared.mesh.is_dead(anchor) && worker.owns(shared, anchor))
+                worker.last = anchor;
+        }
+    };
 };
 
 void add_work_counters(Delaunay2Counters& to, const Delaunay2Counters& from) {
@@ -375,7 +382,7 @@ class ParallelConstruction {
     ParallelConstruction(detail::Delaunay2Core& core, unsigned threads, tbb::task_arena& arena,
                          Prepared& prepared)
         : core_(core),
-          shared_{core.mesh, nullptr, core.input_index, core.merged_into},
+          shared_{core.mesh, {}, core.input_index, core.merged_into},
           workers_(threads),
           arena_(arena) {
         const std::uint32_t n = core.mesh.vertex_count();
@@ -397,7 +404,7 @@ class ParallelConstruction {
                 keys_[1][v] = prepared.keys[1][i];
             }
         });
-        shared_.keys = keys_[0].data();
+        shared_.keys = keys_[0];
         starting_at_.assign(n + 1, kNone);
         shared_.starting_at = &starting_at_;
         shared_.stamp = &stamp_;
@@ -449,7 +456,7 @@ class ParallelConstruction {
                               const std::vector<std::uint64_t>& bounds) {
         TriMesh2& mesh = core_.mesh;
         const std::vector<std::uint32_t>& keys = keys_[curve];
-        shared_.keys = keys.data();
+        shared_.keys = keys;
         const std::size_t count = workers_.size();
         // Each insertion frees its cavity (k triangles) before making k + 2: two fresh slots
         // per point cover a worker's whole list, so the arrays need not grow during the pass.

@@ -29,7 +29,7 @@ struct Shared3 {
     TetMesh3& mesh;
     const std::vector<VertIdx>& input_index;
     std::vector<VertIdx>& merged_into;
-    const std::uint32_t* keys = nullptr;  ///< per mesh vertex: the key of this pass's curve
+    std::span<const std::uint32_t> keys;  ///< per mesh vertex: the key of this pass's curve
 };
 
 /// The slots not in use between passes (the calling thread's alone): mesh.free_tets, then fresh
@@ -164,38 +164,42 @@ struct alignas(128) Worker3 {
         return inserter.insert(p, where.tet) ? Outcome::Inserted : Outcome::Deferred;
     }
 
-    /// Inserts this pass's points from points[start] (whose walk found region.last_tet) to the
-    /// end, then back from points[start - 1] to the first, so that each walk is short; the
-    /// deferred ones go to `deferred`, in the order of `points`.
+    /// Inserts this pass's points (detail::sweep_partition); the deferred ones go to
+    /// `deferred`, in the order of `points`.
     void run() {
         deferred.clear();
         if (region.last_tet == kNone) {
             deferred.assign(points.begin(), points.end());
-            region.work.deferred_points += deferred.size();
-            return;
+        } else {
+            Sweep sweep{*this};
+            detail::sweep_partition(sweep, points, start, region.shared.keys, deferred);
         }
-        std::vector<VertIdx> put_off_before;
-        TetIdx anchor = kNone;
-        auto insert_counted = [&](std::size_t i, std::vector<VertIdx>& into) {
-            if (insert(points[i]) == Outcome::Deferred) {
-                into.push_back(points[i]);
-            } else {
-                ++region.work.parallel_points;
-            }
-        };
-        for (std::size_t i = start; i < points.size(); ++i) {
-            insert_counted(i, deferred);
-            if (i == start) anchor = region.last_tet;
-        }
-        // Back to the start: the anchor slot is ours (made or reused by this worker only).
-        const TetMesh3& mesh = region.shared.mesh;
-        if (anchor != kNone && !mesh.is_dead(anchor) && region.owns(anchor))
-            region.last_tet = anchor;
-        for (std::size_t i = start; i-- > 0;) insert_counted(i, put_off_before);
-        std::reverse(put_off_before.begin(), put_off_before.end());
-        deferred.insert(deferred.begin(), put_off_before.begin(), put_off_before.end());
         region.work.deferred_points += deferred.size();
     }
+
+    /// The worker as detail::sweep_partition's sweep.
+    struct Sweep {
+        Worker3& worker;
+        TetIdx anchor = kNone;
+
+        bool try_insert(VertIdx p) {
+            if (worker.insert(p) == Outcome::Deferred) return false;
+            ++worker.region.work.parallel_points;
+            return true;
+        }
+        bool same_point(VertIdx a, VertIdx b) const {
+            const double* pa = worker.region.shared.mesh.point(a);
+            const double* pb = worker.region.shared.mesh.point(b);
+            return pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2];
+        }
+        void remember_start() { anchor = worker.region.last_tet; }
+        /// Back to the start: the anchor slot is ours (made or reused by this worker only).
+        void return_to_start() {
+            const Partition3& region = worker.region;
+            if (anchor != kNone && !region.shared.mesh.is_dead(anchor) && region.owns(anchor))
+                worker.region.last_tet = anchor;
+        }
+    };
 };
 
 void add_work_counters(Delaunay3Counters& to, const Delaunay3Counters& from) {
@@ -268,7 +272,7 @@ class ParallelConstruction3 {
                           tbb::task_arena& arena, Prepared& prepared)
         : core_(core),
           progress_(progress),
-          shared_{core.mesh, core.input_index, core.merged_into},
+          shared_{core.mesh, core.input_index, core.merged_into, {}},
           pool_(core.mesh),
           sequential_(shared_, pool_),
           arena_(arena) {
@@ -290,7 +294,7 @@ class ParallelConstruction3 {
                 keys_[1][v] = prepared.keys[1][i];
             }
         });
-        shared_.keys = keys_[0].data();
+        shared_.keys = keys_[0];
         for (unsigned w = 0; w < threads; ++w)
             workers_.push_back(std::make_unique<Worker3>(shared_, pool_));
         sequential_.region.whole = true;
@@ -320,7 +324,7 @@ class ParallelConstruction3 {
     std::vector<VertIdx> pass(std::span<const VertIdx> points, int curve,
                               const std::vector<std::uint64_t>& bounds) {
         const std::vector<std::uint32_t>& keys = keys_[curve];
-        shared_.keys = keys.data();
+        shared_.keys = keys;
         const std::vector<std::span<const VertIdx>> parts =
             detail::split_by_bounds(keys, points, bounds);
         for (std::size_t w = 0; w < workers_.size(); ++w) {

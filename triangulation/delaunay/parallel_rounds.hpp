@@ -12,6 +12,7 @@
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -78,6 +79,59 @@ std::optional<std::size_t> find_start_index(std::size_t size, LandsInside&& land
         if (denominator >= size) break;
     }
     return std::nullopt;
+}
+
+/// A thread's pass over its points (sorted by (key, vertex), the key of the pass's curve):
+/// from points[start] (whose walk found the thread's start) to the end, then back from the
+/// points before start to the first, so that each walk is short. Copies of one point (equal
+/// coordinates, hence equal keys) are nevertheless tried in the list's order, which is the
+/// sequential construction's insertion order: the copy inserted (the others merge into it) is
+/// the sequential one, and with it the index the symbolic perturbation reads, so that the
+/// result stays the sequential one on degenerate inputs with repeated points. For that, start
+/// moves to the first point of its run of equal keys, the way back takes each run of equal
+/// keys forward, and a point whose earlier copy was deferred in this pass is deferred too
+/// (their walks may end differently). `sweep` provides:
+///   bool try_insert(VertIdx p);          inserts or merges p (true), or defers it (false)
+///   bool same_point(VertIdx a, VertIdx b) const;   equal coordinates
+///   void remember_start();               called after the first point
+///   void return_to_start();              called before the way back
+/// The deferred points go to `deferred`, in the order of `points`.
+template <class Sweep>
+void sweep_partition(Sweep& sweep, std::span<const VertIdx> points, std::size_t start,
+                     std::span<const std::uint32_t> keys, std::vector<VertIdx>& deferred) {
+    deferred.clear();
+    if (points.empty()) return;
+    auto same_run = [&](std::size_t i, std::size_t j) {
+        return keys[points[i]] == keys[points[j]];
+    };
+    while (start > 0 && same_run(start - 1, start)) --start;
+    std::vector<std::size_t> deferred_at;  // positions in points
+    std::size_t run_first_deferred = 0;    // deferred_at entries of the current run start here
+    auto try_point = [&](std::size_t i) {
+        const VertIdx p = points[i];
+        for (std::size_t k = run_first_deferred; k < deferred_at.size(); ++k) {
+            if (sweep.same_point(p, points[deferred_at[k]])) {
+                deferred_at.push_back(i);  // an earlier copy waits: so does this one
+                return;
+            }
+        }
+        if (!sweep.try_insert(p)) deferred_at.push_back(i);
+    };
+    for (std::size_t i = start; i < points.size(); ++i) {
+        if (i == start || !same_run(i - 1, i)) run_first_deferred = deferred_at.size();
+        try_point(i);
+        if (i == start) sweep.remember_start();
+    }
+    sweep.return_to_start();
+    for (std::size_t end = start; end > 0;) {
+        std::size_t begin = end - 1;
+        while (begin > 0 && same_run(begin - 1, begin)) --begin;
+        run_first_deferred = deferred_at.size();
+        for (std::size_t i = begin; i < end; ++i) try_point(i);
+        end = begin;
+    }
+    std::sort(deferred_at.begin(), deferred_at.end());
+    for (const std::size_t i : deferred_at) deferred.push_back(points[i]);
 }
 
 /// Runs the partitions of a pass on an arena, one task per partition.
