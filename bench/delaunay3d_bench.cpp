@@ -165,8 +165,8 @@ void bm_exactmesh(benchmark::State& state, const std::string& algorithm, Distrib
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalDelaunay = CGAL::Delaunay_triangulation_3<Epick>;
 
-void bm_cgal(benchmark::State& state, Distribution3 distribution) {
-    const auto n = static_cast<std::uint32_t>(state.range(0));
+/// input_for with CGAL's copy of the points, converted once.
+const Input& input_with_cgal_points(Distribution3 distribution, std::uint32_t n) {
     Input& input = input_for(distribution, n);
     if (input.points.empty()) {
         for (std::uint32_t i = 0; i < n; ++i) {
@@ -175,6 +175,12 @@ void bm_cgal(benchmark::State& state, Distribution3 distribution) {
                                       input.xyz[3 * std::size_t{i} + 2]);
         }
     }
+    return input;
+}
+
+void bm_cgal(benchmark::State& state, Distribution3 distribution) {
+    const auto n = static_cast<std::uint32_t>(state.range(0));
+    const Input& input = input_with_cgal_points(distribution, n);
     Measurement& m = measurement_for("cgal", distribution, n);
     for (auto _ : state) {
         const bool measure = !m.done;
@@ -206,14 +212,7 @@ using CgalParallelDelaunay = CGAL::Delaunay_triangulation_3<
 /// CGAL's examples) on `threads` threads of a oneTBB arena.
 void bm_cgal_parallel(benchmark::State& state, Distribution3 distribution, int threads) {
     const auto n = static_cast<std::uint32_t>(state.range(0));
-    Input& input = input_for(distribution, n);
-    if (input.points.empty()) {
-        for (std::uint32_t i = 0; i < n; ++i) {
-            input.points.emplace_back(input.xyz[3 * std::size_t{i}],
-                                      input.xyz[3 * std::size_t{i} + 1],
-                                      input.xyz[3 * std::size_t{i} + 2]);
-        }
-    }
+    const Input& input = input_with_cgal_points(distribution, n);
     const CGAL::Bbox_3 box = CGAL::bbox_3(input.points.begin(), input.points.end());
     Measurement& m = measurement_for("cgal_parallel" + std::to_string(threads), distribution, n);
     tbb::task_arena arena(threads);

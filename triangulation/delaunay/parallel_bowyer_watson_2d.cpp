@@ -347,31 +347,12 @@ Prepared prepare(std::span<const double> xy, std::uint64_t seed, unsigned thread
     // faults included, to the calling thread between passes).
     const std::size_t slots = 4 + 2 * n + n / 8 + 64 * std::size_t{threads};
     Prepared out;
-    // The release/acquire pair repeats the task group's guarantee for ThreadSanitizer (libtbb
-    // is not instrumented), as in ParallelConstruction::pass.
-    std::atomic<int> finished{0};
-    arena.execute([&] {
-        tbb::task_group group;
-        group.run([&] {
-            out.keys[1] = hilbert_keys_2d(xy, kSecondCurveShift, true);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        group.run([&] {
-            out.tv.assign(3 * slots, kNone);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        group.run([&] {
-            out.twin.assign(3 * slots, kNone);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        group.run([&] {
-            out.stamp.assign(slots, 0u);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        out.order = insertion_order_2d(xy, InsertionOrder::Brio, seed, true, &out.keys[0]);
-        group.wait();
-    });
-    (void)finished.load(std::memory_order_acquire);
+    detail::run_together(
+        arena,
+        [&] { out.order = insertion_order_2d(xy, InsertionOrder::Brio, seed, true, &out.keys[0]); },
+        [&] { out.keys[1] = hilbert_keys_2d(xy, kSecondCurveShift, true); },
+        [&] { out.tv.assign(3 * slots, kNone); }, [&] { out.twin.assign(3 * slots, kNone); },
+        [&] { out.stamp.assign(slots, 0u); });
     return out;
 }
 
@@ -395,15 +376,7 @@ class ParallelConstruction {
         mesh.tv.swap(prepared.tv);
         mesh.twin.swap(prepared.twin);
         stamp_.swap(prepared.stamp);
-        // The keys by mesh vertex (they were computed in the caller's order).
-        for (std::vector<std::uint32_t>& keys : keys_) keys.resize(n);
-        runner_.run_chunks(arena_, n, [&](std::size_t begin, std::size_t end) {
-            for (std::size_t v = begin; v != end; ++v) {
-                const VertIdx i = core.input_index[v];
-                keys_[0][v] = prepared.keys[0][i];
-                keys_[1][v] = prepared.keys[1][i];
-            }
-        });
+        runner_.keys_by_mesh_vertex(arena_, core.input_index, prepared.keys, keys_);
         shared_.keys = keys_[0];
         starting_at_.assign(n + 1, kNone);
         shared_.starting_at = &starting_at_;
@@ -579,33 +552,13 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     phase = Clock::now();
     ParallelConstruction construction(core, threads, arena, prepared);
     core.counters.keys_microseconds = detail::microseconds_since(phase);
-    auto unskipped = [&skip](std::uint32_t begin, std::uint32_t end) {
-        std::vector<VertIdx> out;
-        for (VertIdx p = begin; p < end; ++p) {
-            if (!skip[p]) out.push_back(p);
-        }
-        return out;
-    };
-    phase = Clock::now();
-    const std::vector<VertIdx> prefix = unskipped(0, rounds.prefix_end);
+    const std::vector<VertIdx> prefix = detail::unskipped_vertices(skip, 0, rounds.prefix_end);
     construction.insert_sequentially(prefix);
     core.counters.sequential_prefix = prefix.size();
     std::uint64_t sequential = detail::microseconds_since(phase);
 
     phase = Clock::now();
-    std::vector<VertIdx> pending;
-    for (std::size_t r = rounds.first_parallel; r + 1 < rounds.begin.size(); ++r) {
-        const std::vector<VertIdx> round = unskipped(rounds.begin[r], rounds.begin[r + 1]);
-        const std::vector<VertIdx> points =
-            detail::merge_by_key(construction.keys(0), pending, round);
-        std::vector<VertIdx> deferred =
-            construction.pass(points, 0, construction.bounds(points, 0));
-        // The points deferred along the first curve's borders lie inside the ranges of the
-        // second curve.
-        detail::sort_by_key(construction.keys(1), deferred);
-        pending = construction.pass(deferred, 1, construction.bounds(points, 1));
-        detail::sort_by_key(construction.keys(0), pending);
-    }
+    const std::vector<VertIdx> pending = detail::run_parallel_rounds(construction, rounds, skip);
     // The rounds' time less the threads' passes: what the calling thread does alone.
     core.counters.partition_microseconds =
         detail::microseconds_since(phase) - core.counters.parallel_microseconds;

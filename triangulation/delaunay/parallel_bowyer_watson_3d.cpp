@@ -240,27 +240,13 @@ Prepared prepare(std::span<const double> xyz, std::uint64_t seed, unsigned threa
         detail::advise_huge_pages(array.data(), array.capacity() * sizeof(std::uint32_t));
         array.resize(4 * slots, kNone);
     };
-    // The release/acquire pair repeats the task group's guarantee for ThreadSanitizer (libtbb
-    // is not instrumented), as in PartitionRunner.
-    std::atomic<int> finished{0};
-    arena.execute([&] {
-        tbb::task_group group;
-        group.run([&] {
-            out.keys[1] = hilbert_keys_3d(xyz, kSecondCurveShift, true);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        group.run([&] {
-            make_array(out.tv);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        group.run([&] {
-            make_array(out.adj);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        out.order = insertion_order_3d(xyz, InsertionOrder::Brio, seed, true, &out.keys[0]);
-        group.wait();
-    });
-    (void)finished.load(std::memory_order_acquire);
+    detail::run_together(
+        arena,
+        [&] {
+            out.order = insertion_order_3d(xyz, InsertionOrder::Brio, seed, true, &out.keys[0]);
+        },
+        [&] { out.keys[1] = hilbert_keys_3d(xyz, kSecondCurveShift, true); },
+        [&] { make_array(out.tv); }, [&] { make_array(out.adj); });
     return out;
 }
 
@@ -276,7 +262,6 @@ class ParallelConstruction3 {
           pool_(core.mesh),
           sequential_(shared_, pool_),
           arena_(arena) {
-        const std::uint32_t n = core.mesh.vertex_count();
         TetMesh3& mesh = core.mesh;
         // The prepared arrays take the first tetrahedra's entries and replace the mesh's.
         pool_.high_water = mesh.tet_slots();
@@ -285,15 +270,7 @@ class ParallelConstruction3 {
         std::copy(mesh.adj.begin(), mesh.adj.end(), prepared.adj.begin());
         mesh.tv.swap(prepared.tv);
         mesh.adj.swap(prepared.adj);
-        // The keys by mesh vertex (they were computed in the caller's order).
-        for (std::vector<std::uint32_t>& keys : keys_) keys.resize(n);
-        runner_.run_chunks(arena_, n, [&](std::size_t begin, std::size_t end) {
-            for (std::size_t v = begin; v != end; ++v) {
-                const VertIdx i = core.input_index[v];
-                keys_[0][v] = prepared.keys[0][i];
-                keys_[1][v] = prepared.keys[1][i];
-            }
-        });
+        runner_.keys_by_mesh_vertex(arena_, core.input_index, prepared.keys, keys_);
         shared_.keys = keys_[0];
         for (unsigned w = 0; w < threads; ++w)
             workers_.push_back(std::make_unique<Worker3>(shared_, pool_));
@@ -429,30 +406,11 @@ Delaunay3Result parallel_bowyer_watson_3d(std::span<const double> xyz,
 
     ParallelConstruction3 construction(core, progress, threads, arena, prepared);
     prepared = Prepared{};
-    auto unskipped = [&skip](std::uint32_t begin, std::uint32_t end) {
-        std::vector<VertIdx> out;
-        for (VertIdx p = begin; p < end; ++p) {
-            if (!skip[p]) out.push_back(p);
-        }
-        return out;
-    };
-    const std::vector<VertIdx> prefix = unskipped(0, rounds.prefix_end);
+    const std::vector<VertIdx> prefix = detail::unskipped_vertices(skip, 0, rounds.prefix_end);
     construction.insert_sequentially(prefix);
     core.counters.sequential_prefix = prefix.size();
 
-    std::vector<VertIdx> pending;
-    for (std::size_t r = rounds.first_parallel; r + 1 < rounds.begin.size(); ++r) {
-        const std::vector<VertIdx> round = unskipped(rounds.begin[r], rounds.begin[r + 1]);
-        const std::vector<VertIdx> points =
-            detail::merge_by_key(construction.keys(0), pending, round);
-        std::vector<VertIdx> deferred =
-            construction.pass(points, 0, construction.bounds(points, 0));
-        // The points deferred along the first curve's borders lie inside the ranges of the
-        // second curve.
-        detail::sort_by_key(construction.keys(1), deferred);
-        pending = construction.pass(deferred, 1, construction.bounds(points, 1));
-        detail::sort_by_key(construction.keys(0), pending);
-    }
+    const std::vector<VertIdx> pending = detail::run_parallel_rounds(construction, rounds, skip);
     construction.insert_sequentially(pending);
     core.counters.sequential_tail = pending.size();
     construction.finish();

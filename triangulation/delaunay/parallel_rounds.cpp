@@ -27,6 +27,15 @@ BrioRounds brio_rounds(std::uint32_t n, unsigned threads, std::uint32_t round_mi
     return rounds;
 }
 
+std::vector<VertIdx> unskipped_vertices(const std::vector<bool>& skip, std::uint32_t begin,
+                                        std::uint32_t end) {
+    std::vector<VertIdx> out;
+    for (VertIdx p = begin; p < end; ++p) {
+        if (!skip[p]) out.push_back(p);
+    }
+    return out;
+}
+
 std::vector<std::uint64_t> key_range_bounds(std::span<const std::uint32_t> keys,
                                             std::span<const VertIdx> points, std::size_t count) {
     std::vector<std::uint32_t> sorted(points.size());

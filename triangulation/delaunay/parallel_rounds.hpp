@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <atomic>
@@ -44,6 +45,10 @@ struct BrioRounds {
     std::uint32_t prefix_end = 0;      ///< vertices below it are inserted sequentially
 };
 BrioRounds brio_rounds(std::uint32_t n, unsigned threads, std::uint32_t round_minimum);
+
+/// The mesh vertices [begin, end) whose `skip` flag is not set (the first simplex's vertices).
+std::vector<VertIdx> unskipped_vertices(const std::vector<bool>& skip, std::uint32_t begin,
+                                        std::uint32_t end);
 
 /// The keys at the fractions i / count of `points` (i = 1..count-1; keys[v] is v's key), framed
 /// by 0 and 2^32: count ranges about equal in points.
@@ -134,6 +139,50 @@ void sweep_partition(Sweep& sweep, std::span<const VertIdx> points, std::size_t 
     for (const std::size_t i : deferred_at) deferred.push_back(points[i]);
 }
 
+/// The parallel rounds of both dimensions: each round's points, with those still pending from
+/// the round before, in two passes: along curve 0, then the points it deferred along curve 1
+/// (whose ranges' borders lie elsewhere, so that they mostly fall inside a range). Returns the
+/// points still pending after the last round (for the sequential tail), sorted by curve 0's
+/// keys. `construction` provides keys(curve) (per mesh vertex), bounds(points, curve) and
+/// pass(points, curve, bounds) (returns the deferred points).
+template <class Construction>
+std::vector<VertIdx> run_parallel_rounds(Construction& construction, const BrioRounds& rounds,
+                                         const std::vector<bool>& skip) {
+    std::vector<VertIdx> pending;
+    for (std::size_t r = rounds.first_parallel; r + 1 < rounds.begin.size(); ++r) {
+        const std::vector<VertIdx> round =
+            unskipped_vertices(skip, rounds.begin[r], rounds.begin[r + 1]);
+        const std::vector<VertIdx> points = merge_by_key(construction.keys(0), pending, round);
+        std::vector<VertIdx> deferred =
+            construction.pass(points, 0, construction.bounds(points, 0));
+        sort_by_key(construction.keys(1), deferred);
+        pending = construction.pass(deferred, 1, construction.bounds(points, 1));
+        sort_by_key(construction.keys(0), pending);
+    }
+    return pending;
+}
+
+/// Runs each of `tasks` as a task of `arena` while the calling thread runs `main_task` there,
+/// and waits for all (the preparation of both constructions: order, keys, mesh arrays). The
+/// release/acquire pairs are PartitionRunner's, for ThreadSanitizer.
+template <class MainTask, class... Tasks>
+void run_together(tbb::task_arena& arena, MainTask&& main_task, Tasks&&... tasks) {
+    std::atomic<int> started{0}, finished{0};
+    started.store(1, std::memory_order_release);
+    arena.execute([&] {
+        tbb::task_group group;
+        (group.run([&] {
+            (void)started.load(std::memory_order_acquire);
+            tasks();
+            finished.fetch_add(1, std::memory_order_release);
+        }),
+         ...);
+        main_task();
+        group.wait();
+    });
+    (void)finished.load(std::memory_order_acquire);
+}
+
 /// Runs the partitions of a pass on an arena, one task per partition.
 /// The release/acquire pairs on the two counters repeat what the task scheduler already
 /// guarantees (what the caller did before happens before each task, each task before what
@@ -170,6 +219,20 @@ class PartitionRunner {
                               });
         });
         (void)finished_.load(std::memory_order_acquire);
+    }
+
+    /// Both curves' keys by mesh vertex (keys[c][v] = keys_by_input[c][input_index[v]]): the
+    /// keys are computed in the caller's order, the passes read them by mesh vertex.
+    void keys_by_mesh_vertex(tbb::task_arena& arena, std::span<const VertIdx> input_index,
+                             const std::vector<std::uint32_t> (&keys_by_input)[2],
+                             std::vector<std::uint32_t> (&keys)[2]) {
+        for (std::vector<std::uint32_t>& curve : keys) curve.resize(input_index.size());
+        run_chunks(arena, input_index.size(), [&](std::size_t begin, std::size_t end) {
+            for (std::size_t v = begin; v != end; ++v) {
+                keys[0][v] = keys_by_input[0][input_index[v]];
+                keys[1][v] = keys_by_input[1][input_index[v]];
+            }
+        });
     }
 
   private:

@@ -64,9 +64,20 @@ void radix_sort_by_key(std::vector<std::uint64_t>& items, std::vector<std::uint6
     }
 }
 
-}  // namespace
+/// compute(begin, end) over [0, n): on every thread of the current oneTBB arena with
+/// `parallel` (each point's key alone: any split gives the same keys), else in one call.
+template <class Compute>
+void compute_in_chunks(std::size_t n, bool parallel, Compute& compute) {
+    if (!parallel) {
+        compute(0, n);
+        return;
+    }
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, n, 1 << 14),
+        [&](const tbb::blocked_range<std::size_t>& r) { compute(r.begin(), r.end()); });
+}
 
-namespace {}  // namespace
+}  // namespace
 
 /// Hilbert keys of all points on a 2^16 grid over their bounding box, computed in input order
 /// (sequential reads) so that the shuffled rounds only gather 4-byte keys.
@@ -95,14 +106,7 @@ std::vector<std::uint32_t> hilbert_keys_2d(std::span<const double> xy, std::uint
                                   (cell(xy[2 * i + 1], min_y, half_y) + cell_shift) & 0xFFFFu);
         }
     };
-    if (parallel) {
-        // Each point's key alone: any split gives the same keys.
-        tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, n, 1 << 14),
-            [&](const tbb::blocked_range<std::size_t>& r) { compute(r.begin(), r.end()); });
-    } else {
-        compute(0, n);
-    }
+    compute_in_chunks(n, parallel, compute);
     return keys;
 }
 
@@ -189,14 +193,7 @@ std::vector<std::uint32_t> hilbert_keys_3d(std::span<const double> xyz, std::uin
                                      (cell(xyz[3 * i + 2], lo[2], half[2]) + cell_shift) & 0x3FFu);
         }
     };
-    if (parallel) {
-        // Each point's key alone: any split gives the same keys.
-        tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, n, 1 << 14),
-            [&](const tbb::blocked_range<std::size_t>& r) { compute(r.begin(), r.end()); });
-    } else {
-        compute(0, n);
-    }
+    compute_in_chunks(n, parallel, compute);
     return keys;
 }
 
