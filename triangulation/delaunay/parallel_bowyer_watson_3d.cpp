@@ -101,14 +101,28 @@ struct Partition3 {
     TetIdx last_tet = kNone;  ///< where the next walk starts (a tetrahedron of the partition)
     Delaunay3Counters work{};
 
+    /// The infinite vertex is every partition's: a tetrahedron still belongs to at most one
+    /// (it has three finite vertices), and a neighbour of one of p's shares three vertices of p
+    /// with it, so it is p's or mixed; points whose cavities meet the hull are then inserted
+    /// by the threads too, not left to the sequential tail.
     bool owns_vertex(VertIdx v) const {
-        return whole || (v != kInfinite && range.holds(shared.keys[v]));
+        return whole || v == kInfinite || range.holds(shared.keys[v]);
     }
     bool owns(TetIdx t) const {
         if (whole) return true;
         const VertIdx* v = &shared.mesh.tv[4 * std::size_t{t}];
         return owns_vertex(v[0]) && owns_vertex(v[1] & kVertexBits) && owns_vertex(v[2]) &&
                owns_vertex(v[3]);
+    }
+    /// The finite tetrahedron a walk from t starts in: t, or the one behind its hull face.
+    TetIdx finite_start(TetIdx t) const {
+        const TetMesh3& mesh = shared.mesh;
+        return mesh.is_infinite(t) ? tet_of(mesh.adj[4 * std::size_t{t} + kInfiniteSlot]) : t;
+    }
+    /// A walk may start from t: it is ours and so is its finite_start (behind a hull face of
+    /// ours may be a mixed tetrahedron, which a walk must not end in).
+    bool can_start(TetIdx t) const {
+        return t != kNone && !shared.mesh.is_dead(t) && owns(t) && owns(finite_start(t));
     }
     detail::ConflictTest3 tests() { return {shared.mesh, shared.input_index.data(), work}; }
     Delaunay3Counters& counters() { return work; }
@@ -145,10 +159,11 @@ struct alignas(128) Worker3 {
     /// stay in the partition; else changes nothing and returns Deferred.
     Outcome insert(VertIdx p) {
         TetMesh3& mesh = region.shared.mesh;
-        TetIdx t = region.last_tet;
-        if (t == kNone) return Outcome::Deferred;
-        // Only the whole mesh stands in an infinite tetrahedron: step behind its hull face.
-        if (mesh.is_infinite(t)) t = tet_of(mesh.adj[4 * std::size_t{t} + kInfiniteSlot]);
+        // A new tetrahedron of the last point, or where the last walk stopped: if infinite, the
+        // one behind its hull face is new too (the face holds the point) or the one the walk
+        // came from, so ours.
+        if (!region.can_start(region.last_tet)) return Outcome::Deferred;
+        TetIdx t = region.finite_start(region.last_tet);
         const detail::Location3 where = detail::walk_3d(
             mesh, t, p, rng_state, region.work, [this](TetIdx u) { return region.owns(u); });
         // The next points lie near p: their walks start here, whether it went on or not.
@@ -196,8 +211,7 @@ struct alignas(128) Worker3 {
         /// Back to the start: the anchor slot is ours (made or reused by this worker only).
         void return_to_start() {
             const Partition3& region = worker.region;
-            if (anchor != kNone && !region.shared.mesh.is_dead(anchor) && region.owns(anchor))
-                worker.region.last_tet = anchor;
+            if (region.can_start(anchor)) worker.region.last_tet = anchor;
         }
     };
 };
@@ -366,7 +380,7 @@ class ParallelConstruction3 {
         const std::optional<std::size_t> start =
             detail::find_start_index(worker.points.size(), [&](std::size_t i) {
                 found = core_.walk_to(worker.points[i]).tet;
-                return worker.region.owns(found);
+                return worker.region.can_start(found);
             });
         if (!start) return;
         worker.region.last_tet = found;
