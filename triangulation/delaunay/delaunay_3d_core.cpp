@@ -58,9 +58,18 @@ void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::
 #endif
 }
 
+namespace {
+
+/// The insertion order of options, once the points are known to be valid.
+std::vector<VertIdx> validated_order(std::span<const double> xyz, const Delaunay3Options& options) {
+    validate_points_3d(xyz);
+    return insertion_order_3d(xyz, options.order, options.seed);
+}
+
+}  // namespace
+
 Delaunay3Core::Delaunay3Core(std::span<const double> xyz, const Delaunay3Options& options)
-    : Delaunay3Core(xyz,
-                    (validate_points_3d(xyz), insertion_order_3d(xyz, options.order, options.seed)),
+    : Delaunay3Core(xyz, validated_order(xyz, options),
                     // About 6.7 tetrahedra per point for uniform points, plus the hull's
                     // infinite ones.
                     7 * (xyz.size() / 3) + 64) {}
