@@ -3,15 +3,17 @@
 // CGAL's Delaunay_triangulation_3<Epick> built from a range (sequential; CGAL spatially sorts
 // the points itself), same points, same run [Watson81, Joe91; DESIGN.md "Benchmarks"].
 //
-// Names: BM_<algo>/<distribution>/<n>, algo in {bowyer_watson, green_sibson, cgal},
-// distribution in {uniform, gaussian}, n = 10^3, 3·10^3, ..., up to EXACTMESH_BENCH3_MAX_POINTS
-// (default 10^6). Each family is fitted with Complexity(oNLogN). Only the construction is
-// timed: inputs are generated once per (distribution, n) with a pinned seed, CGAL's points are
-// converted once, and the result is destroyed with the timer paused (the same for both).
-// Counters, from the first timed construction of each benchmark: walk_steps/pt,
-// insphere_calls/pt, orient_calls/pt, cavity/pt, flips/pt (ours), tets/pt (both: a cross-check),
-// peak_bytes and peak_bytes/pt (both: peak live heap during the construction, with the result
-// alive at the end; bench/heap_accounting.cpp).
+// Names: BM_<algo>/<distribution>/<n>, algo in {bowyer_watson, green_sibson, cgal} (one
+// thread) and, for issue 17's multicore rows, bowyer_watson_2_threads (parallel_bowyer_watson_3d)
+// and cgal_parallel_2_threads (CGAL's Parallel_tag triangulation with its lock grid, run in a
+// oneTBB arena of 2 threads; built when CGAL sees TBB), distribution in {uniform, gaussian},
+// n = 10^3, 3·10^3, ..., up to EXACTMESH_BENCH3_MAX_POINTS (default 10^6). Each family is fitted
+// with Complexity(oNLogN). Only the construction is timed: inputs are generated once per
+// (distribution, n) with a pinned seed, CGAL's points are converted once, and the result is
+// destroyed with the timer paused (the same for both). Counters, from the first timed construction
+// of each benchmark: walk_steps/pt, insphere_calls/pt, orient_calls/pt, cavity/pt, flips/pt (ours),
+// tets/pt (both: a cross-check), peak_bytes and peak_bytes/pt (both: peak live heap during the
+// construction, with the result alive at the end; bench/heap_accounting.cpp).
 //
 // The heap is kept warm (malloc never returns memory to the kernel), as in delaunay2d_bench,
 // unless EXACTMESH_BENCH_COLD_HEAP=1. On a shared machine compare the CPU column: it counts only
@@ -20,6 +22,10 @@
 //   delaunay3d_bench --benchmark_filter='(bowyer_watson|cgal)/(uniform|gaussian)/1000000$'
 //                    --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true
 //                    --benchmark_report_aggregates_only=true
+// and the multicore ones (issue 17) from
+//   delaunay3d_bench --benchmark_filter='(bowyer_watson|cgal).*/uniform/1000000$'
+//                    --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
+// with the real-time column (threads: the CPU column adds up every thread's time).
 // (the README's command; scripts/run runs every algorithm and size with the same repetitions
 // and interleaving, keeping the individual repetitions for its report).
 #include <benchmark/benchmark.h>
@@ -44,6 +50,12 @@
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#if defined(CGAL_LINKED_WITH_TBB)
+#include <CGAL/Delaunay_triangulation_cell_base_3.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_3.h>
+#include <tbb/task_arena.h>
+#endif
 #endif
 
 namespace {
@@ -119,13 +131,14 @@ void set_counters(benchmark::State& state, const Measurement& m, std::uint32_t n
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
 }
 
-void bm_exactmesh(benchmark::State& state, const std::string& algorithm,
-                  Distribution3 distribution) {
+void bm_exactmesh(benchmark::State& state, const std::string& algorithm, Distribution3 distribution,
+                  unsigned threads) {
     const auto n = static_cast<std::uint32_t>(state.range(0));
     const tri::Delaunay3Function construct = tri::delaunay_3d_algorithm(algorithm);
     const Input& input = input_for(distribution, n);
-    const tri::Delaunay3Options options{tri::InsertionOrder::Brio, kOrderSeed};
-    Measurement& m = measurement_for(algorithm, distribution, n);
+    tri::Delaunay3Options options{tri::InsertionOrder::Brio, kOrderSeed};
+    options.threads = threads;
+    Measurement& m = measurement_for(algorithm + std::to_string(threads), distribution, n);
     for (auto _ : state) {
         const bool measure = !m.done;
         const std::size_t heap_before = measure ? start_heap_measurement() : 0;
@@ -152,8 +165,8 @@ void bm_exactmesh(benchmark::State& state, const std::string& algorithm,
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalDelaunay = CGAL::Delaunay_triangulation_3<Epick>;
 
-void bm_cgal(benchmark::State& state, Distribution3 distribution) {
-    const auto n = static_cast<std::uint32_t>(state.range(0));
+/// input_for with CGAL's copy of the points, converted once.
+const Input& input_with_cgal_points(Distribution3 distribution, std::uint32_t n) {
     Input& input = input_for(distribution, n);
     if (input.points.empty()) {
         for (std::uint32_t i = 0; i < n; ++i) {
@@ -162,6 +175,12 @@ void bm_cgal(benchmark::State& state, Distribution3 distribution) {
                                       input.xyz[3 * std::size_t{i} + 2]);
         }
     }
+    return input;
+}
+
+void bm_cgal(benchmark::State& state, Distribution3 distribution) {
+    const auto n = static_cast<std::uint32_t>(state.range(0));
+    const Input& input = input_with_cgal_points(distribution, n);
     Measurement& m = measurement_for("cgal", distribution, n);
     for (auto _ : state) {
         const bool measure = !m.done;
@@ -182,6 +201,42 @@ void bm_cgal(benchmark::State& state, Distribution3 distribution) {
     }
     set_counters(state, m, n);
 }
+
+#if defined(CGAL_LINKED_WITH_TBB)
+using CgalParallelDelaunay = CGAL::Delaunay_triangulation_3<
+    Epick, CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<Epick>,
+                                                CGAL::Delaunay_triangulation_cell_base_3<Epick>,
+                                                CGAL::Parallel_tag>>;
+
+/// CGAL's parallel insertion (a grid of locks over the bounding box, 50 cells per axis as in
+/// CGAL's examples) on `threads` threads of a oneTBB arena.
+void bm_cgal_parallel(benchmark::State& state, Distribution3 distribution, int threads) {
+    const auto n = static_cast<std::uint32_t>(state.range(0));
+    const Input& input = input_with_cgal_points(distribution, n);
+    const CGAL::Bbox_3 box = CGAL::bbox_3(input.points.begin(), input.points.end());
+    Measurement& m = measurement_for("cgal_parallel" + std::to_string(threads), distribution, n);
+    tbb::task_arena arena(threads);
+    for (auto _ : state) {
+        const bool measure = !m.done;
+        const std::size_t heap_before = measure ? start_heap_measurement() : 0;
+        arena.execute([&] {
+            CgalParallelDelaunay::Lock_data_structure locks(box, 50);
+            CgalParallelDelaunay dt(input.points.begin(), input.points.end(), &locks);
+            benchmark::DoNotOptimize(dt.number_of_cells());
+            benchmark::ClobberMemory();
+            state.PauseTiming();
+            if (measure) {
+                m.peak_bytes = heap_growth_since(heap_before);
+                m.tets = static_cast<double>(dt.number_of_finite_cells());
+                m.done = true;
+            }
+        });
+        after_construction();
+        state.ResumeTiming();
+    }
+    set_counters(state, m, n);
+}
+#endif
 #endif
 
 void register_all() {
@@ -196,11 +251,20 @@ void register_all() {
             std::string label = algorithm;
             std::replace(label.begin(), label.end(), '-', '_');
             apply(benchmark::RegisterBenchmark(("BM_" + label + "/" + points).c_str(),
-                                               &bm_exactmesh, std::string(algorithm),
-                                               distribution));
+                                               &bm_exactmesh, std::string(algorithm), distribution,
+                                               1u));
         }
+        apply(benchmark::RegisterBenchmark(("BM_bowyer_watson_2_threads/" + points).c_str(),
+                                           &bm_exactmesh, std::string("bowyer-watson"),
+                                           distribution, 2u)
+                  ->UseRealTime());
 #if defined(EXACTMESH_WITH_CGAL)
         apply(benchmark::RegisterBenchmark(("BM_cgal/" + points).c_str(), &bm_cgal, distribution));
+#if defined(CGAL_LINKED_WITH_TBB)
+        apply(benchmark::RegisterBenchmark(("BM_cgal_parallel_2_threads/" + points).c_str(),
+                                           &bm_cgal_parallel, distribution, 2)
+                  ->UseRealTime());
+#endif
 #endif
     }
 }

@@ -32,6 +32,7 @@ namespace tri = exactmesh::triangulation;
 
 struct TetrahedralizeArguments : CommandArguments, OrderArguments {
     std::string algorithm = "bowyer-watson";
+    unsigned threads = 1;
 };
 
 void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
@@ -46,9 +47,9 @@ void run_tetrahedralize(const TetrahedralizeArguments& arguments) {
     const tri::Delaunay3Function construct = tri::delaunay_3d_algorithm(arguments.algorithm);
     const io::TetgenNodeFile nodes = io::read_tetgen_node(arguments.input);
 
-    const tri::Delaunay3Options options{tri::insertion_order_from_name(arguments.order),
-                                        arguments.seed,
-                                        progress_printer("tetrahedralize", arguments.quiet)};
+    const tri::Delaunay3Options options{
+        tri::insertion_order_from_name(arguments.order), arguments.seed,
+        progress_printer("tetrahedralize", arguments.quiet), arguments.threads};
     const auto [result, stats, seconds] =
         timed_construction([&] { return construct(nodes.xyz, options); });
     if (result.coplanar) {
@@ -96,6 +97,14 @@ void add_tetrahedralize_command(CLI::App& app) {
                       "beside it), .msh (Gmsh 4.1), .vtu (VTK)");
     add_algorithm_option(*command, arguments->algorithm, tri::delaunay_3d_algorithms());
     add_order_options(*command, *arguments, "Insertion order");
+    command
+        ->add_option("--threads", arguments->threads,
+                     "Threads of bowyer-watson with the brio order (oneTBB; the same tetrahedra "
+                     "for every count): 1 runs the sequential code, 0 every hardware thread; "
+                     "green-sibson and the other orders run sequentially. --stats prints the "
+                     "count used and the parallel rounds' counters")
+        ->check(whole_number_at_most(1024))
+        ->capture_default_str();
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
                    "the construction alone, without file I/O");
     add_quiet_flag(*command, arguments->quiet);

@@ -189,8 +189,9 @@ point_location() {
   expect_error 2 'foo not in' triangulate "$work/random.node" -o "$work/x.ele" --location foo
 }
 
-# --threads: bowyer-watson on 1 to 3 threads and on every core (0) gives the same triangles;
-# --stats names the count and the parallel counters; a count above 1024 is a usage error.
+# --threads: bowyer-watson (triangulate, then tetrahedralize) on 1 to 3 threads and on every
+# core (0) gives the same triangles or tetrahedra; --stats names the count and the parallel
+# counters; a count above 1024 is a usage error.
 threads() {
   # 40000 points from the Park-Miller generator (as point_location), enough for parallel rounds.
   awk 'BEGIN { n = 40000; s = 4711; print n, 2, 0, 0
@@ -215,6 +216,32 @@ threads() {
   grep -q '^threads: 1$' "$work/out" || fail "default: --stats does not print 'threads: 1'"
   run 0 check "$work/many.node" "$work/t2.ele" || fail "check rejected the 2-thread output"
   expect_error 2 'threads' triangulate "$work/many.node" -o "$work/x.ele" --threads 5000
+  # tetrahedralize --threads: the same for the 3D construction (tetrahedra compared as sorted
+  # vertex quadruples, the list sorted).
+  awk 'BEGIN { n = 20000; s = 4711; print n, 3, 0, 0
+    for (i = 1; i <= n; i++) {
+      s = (s * 16807) % 2147483647; x = s / 2147483647
+      s = (s * 16807) % 2147483647; y = s / 2147483647
+      s = (s * 16807) % 2147483647; z = s / 2147483647
+      printf "%d %.17g %.17g %.17g\n", i, x, y, z } }' >"$work/many3.node"
+  for threads in 1 2 3 0; do
+    run 0 tetrahedralize "$work/many3.node" -o "$work/k$threads.ele" --threads "$threads" --stats || return
+    expect_stats 20000 orient3d threads sequential_prefix parallel_rounds parallel_points \
+      deferred_points sequential_tail
+    awk 'NR > 1 && NF >= 5 { split($2 " " $3 " " $4 " " $5, v, " ")
+      for (i = 1; i <= 4; i++) for (j = i + 1; j <= 4; j++) if (v[j] + 0 < v[i] + 0) { t = v[i]; v[i] = v[j]; v[j] = t }
+      print v[1], v[2], v[3], v[4] }' "$work/k$threads.ele" | sort >"$work/k$threads.tets"
+    cmp -s "$work/k1.tets" "$work/k$threads.tets" ||
+      fail "tetrahedralize --threads $threads: different tetrahedra than --threads 1"
+  done
+  run 0 tetrahedralize "$work/many3.node" -o "$work/x.ele" --threads 2 --stats || return
+  grep -q '^threads: 2$' "$work/out" || fail "tetrahedralize --threads 2: no 'threads: 2'"
+  awk '/^parallel_points: / { exit !($2 > 10000) }' "$work/out" ||
+    fail "tetrahedralize --threads 2: fewer than half of the points inserted in parallel"
+  run 0 tetrahedralize "$work/many3.node" -o "$work/x.ele" --stats || return
+  grep -q '^threads: 1$' "$work/out" || fail "tetrahedralize default: no 'threads: 1'"
+  run 0 check "$work/many3.node" "$work/k2.ele" || fail "check rejected the 2-thread tetrahedra"
+  expect_error 2 'threads' tetrahedralize "$work/many3.node" -o "$work/x.ele" --threads 5000
 }
 
 bad_input() {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Differential campaign: our two 3D Delaunay algorithms (Bowyer-Watson, Green-Sibson) against
+// Differential campaign: our two 3D Delaunay algorithms (Bowyer-Watson, on 1 to 4 threads, and
+// Green-Sibson) against
 // CGAL's Delaunay_triangulation_3 (Epick), by DESIGN.md's rules lifted to 3D: identical
 // tetrahedra where the Delaunay tetrahedralization is unique; otherwise both exactly Delaunay
 // (ours by check_delaunay_3d), the same vertex set, the same hull vertices, the same strictly
@@ -32,9 +33,11 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <map>
 #include <random>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -173,8 +176,24 @@ struct Algorithm {
     const char* name;
     tri::Delaunay3Function build;
 };
+/// Bowyer-Watson on `Threads` threads (parallel_bowyer_watson_3d.hpp), with parallel rounds from
+/// 8 points per thread so that the campaign's small inputs run them too.
+template <unsigned Threads>
+tri::Delaunay3Result bowyer_watson_threads(std::span<const double> xyz,
+                                           const tri::Delaunay3Options& options) {
+    tri::Delaunay3Options parallel = options;
+    parallel.order = tri::InsertionOrder::Brio;
+    parallel.threads = Threads;
+    parallel.parallel_round_minimum = 8;
+    return tri::bowyer_watson_3d(xyz, parallel);
+}
+
 const Algorithm kAlgorithms[] = {{"bowyer-watson", &tri::bowyer_watson_3d},
-                                 {"green-sibson", &tri::green_sibson_3d}};
+                                 {"green-sibson", &tri::green_sibson_3d},
+                                 {"bowyer-watson --threads 2", &bowyer_watson_threads<2>},
+                                 {"bowyer-watson --threads 3", &bowyer_watson_threads<3>},
+                                 {"bowyer-watson --threads 4", &bowyer_watson_threads<4>}};
+constexpr std::size_t kAlgorithmCount = std::size(kAlgorithms);
 
 struct Tally {
     int cases = 0;
@@ -182,7 +201,7 @@ struct Tally {
     int disagreements = 0;
 };
 
-/// Compares both algorithms (in a seed-chosen order) with CGAL on xyz.
+/// Compares every algorithm (in a seed-chosen order) with CGAL on xyz.
 void compare_with_cgal(const std::vector<double>& xyz, std::uint64_t seed, const std::string& label,
                        Tally& tally) {
     const tri::InsertionOrder orders[] = {tri::InsertionOrder::Given, tri::InsertionOrder::Random,
@@ -191,7 +210,7 @@ void compare_with_cgal(const std::vector<double>& xyz, std::uint64_t seed, const
     Summary reference;
     bool have_reference = false;
     ++tally.cases;
-    for (std::size_t a = 0; a < 2; ++a) {
+    for (std::size_t a = 0; a < kAlgorithmCount; ++a) {
         const Algorithm& algorithm = kAlgorithms[a];
         const tri::Delaunay3Result ours = algorithm.build(xyz, {orders[(seed + a) % 3], seed});
         if (!have_reference) {
@@ -247,8 +266,8 @@ TEST(Differential_Delaunay3VsCgal, SubsetsOfThe3x3x3Grid) {
         compare_with_cgal(xyz, static_cast<std::uint64_t>(c), "3x3x3 subset " + std::to_string(c),
                           tally);
     }
-    std::printf("3x3x3 subsets: %d cases x 2 algorithms, %d unique, %d disagreements\n",
-                tally.cases, tally.unique, tally.disagreements);
+    std::printf("3x3x3 subsets: %d cases x %zu algorithms, %d unique, %d disagreements\n",
+                tally.cases, kAlgorithmCount, tally.unique, tally.disagreements);
     EXPECT_EQ(tally.disagreements, 0);
 }
 
@@ -270,7 +289,7 @@ TEST(Differential_Delaunay3VsCgal, SeededCampaignOverAllDistributions) {
                               tally);
         }
     }
-    std::printf("differential campaign: %d cases x 2 algorithms, %d unique, %d disagreements\n",
-                tally.cases, tally.unique, tally.disagreements);
+    std::printf("differential campaign: %d cases x %zu algorithms, %d unique, %d disagreements\n",
+                tally.cases, kAlgorithmCount, tally.unique, tally.disagreements);
     EXPECT_EQ(tally.disagreements, 0);
 }

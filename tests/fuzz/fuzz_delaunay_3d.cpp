@@ -3,9 +3,11 @@
 // kMaxPoints fuzzed points. Each output must pass the exact check (triangulation/checks/check_3d,
 // with its neighbor array) and keep the points; the two must agree exactly for the same insertion
 // order (shared perturbation, same kept copies of duplicates), and for different orders when no
-// point repeats; small inputs must match the naive empty-sphere oracle (every 4-subset whose
-// perturbed circumsphere is empty). Non-finite input must make both throw NonFiniteCoordinate
-// naming the first bad point. Anything else is __builtin_trap().
+// point repeats; Bowyer-Watson on 2 threads (parallel_bowyer_watson_3d, parallel rounds from 4
+// points per thread) must give exactly the sequential brio order's tetrahedra; small inputs match
+// the naive empty-sphere oracle (every 4-subset whose perturbed circumsphere is empty). Non-finite
+// input must make both throw NonFiniteCoordinate naming the first bad point. Anything else is
+// __builtin_trap().
 //
 // Input layout: the first 8·floor(size/8) bytes are doubles copied bit for bit, x0 y0 z0 x1 ...
 // (a partial last point is dropped). The size % 8 bytes left over are the optional trailer: a
@@ -27,6 +29,7 @@
 #include "tests/fuzz/fuzz_points.hpp"
 #include "tests/oracles/empty_sphere_delaunay_3d.hpp"
 #include "triangulation/checks/check_3d.hpp"
+#include "triangulation/checks/compare_tetrahedralizations_3d.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
 
 namespace {
@@ -129,6 +132,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         results[1].coplanar != results[0].coplanar) {
         fail(xyz, "green-sibson and bowyer-watson differ for the same insertion order");
     }
+    // 2 threads against one, both in the brio order of the same seed (the same kept copies).
+    tri::Delaunay3Options brio{tri::InsertionOrder::Brio, hash >> 8};
+    const tri::Delaunay3Result one_thread = kAlgorithms[0](xyz, brio);
+    brio.threads = 2;
+    brio.parallel_round_minimum = 4;
+    tri::Delaunay3Result two_threads;
+    try {
+        two_threads = kAlgorithms[0](xyz, brio);
+    } catch (const std::exception& e) {
+        fail(xyz, std::string("bowyer-watson --threads 2 threw on finite input: ") + e.what());
+    }
+    if (tri::canonical_tetrahedra_3d(two_threads.mesh.tets) !=
+            tri::canonical_tetrahedra_3d(one_thread.mesh.tets) ||
+        two_threads.merged_into != one_thread.merged_into ||
+        two_threads.coplanar != one_thread.coplanar) {
+        fail(xyz, "bowyer-watson on 2 threads differs from 1 thread");
+    }
+    const tri::Check3Report parallel_report = tri::check_delaunay_3d(two_threads.mesh);
+    if (!parallel_report.ok)
+        fail(xyz, "bowyer-watson --threads 2: check: " + parallel_report.problem);
     if (!has_duplicates(xyz)) {
         const tri::Delaunay3Result again = kAlgorithms[hash % 2](xyz, other);
         if (exactmesh::oracles::tet_set(again.mesh.tets) !=

@@ -26,6 +26,15 @@ struct Delaunay3Options {
     std::uint64_t seed = 1;
     /// Called every 2^14 points inserted, with the point count as total (base/progress.hpp).
     Progress progress{};
+    /// Threads of bowyer-watson (parallel_bowyer_watson_3d.hpp): 1 runs the sequential code,
+    /// 0 every hardware thread. The output is the same tetrahedralization for every count. Used
+    /// only with the brio order; green-sibson and the other orders run sequentially (their
+    /// counters then report threads = 1).
+    unsigned threads = 1;
+    /// Parallel only: a BRIO round of fewer than this many points per thread is inserted
+    /// sequentially (its ranges would be mostly border). Tests lower it to run the parallel
+    /// rounds on small inputs; the tetrahedra do not depend on it.
+    std::uint32_t parallel_round_minimum = 2048;
 };
 
 /// Work counters of one construction (predicate stage counts come from predicates/stats.hpp).
@@ -46,13 +55,23 @@ struct Delaunay3Counters {
     std::uint64_t flips_4_4 = 0;
     std::uint64_t unflippable = 0;  ///< Green-Sibson: non-Delaunay link faces not flippable when
                                     ///< met, tried again later (counted each time)
+    std::uint64_t threads = 1;      ///< threads of the construction
+    std::uint64_t sequential_prefix = 0;  ///< parallel: points inserted before the parallel rounds
+    std::uint64_t parallel_rounds = 0;    ///< parallel: passes of the threads over their partitions
+    std::uint64_t parallel_points = 0;    ///< parallel: points inserted (or merged) by the threads
+    std::uint64_t deferred_points = 0;  ///< parallel: insertions put off (a point may count twice)
+    std::uint64_t sequential_tail = 0;  ///< parallel: deferred points inserted at the end
+    /// Parallel: wall-clock microseconds of the threads' passes (measured, not work: it differs
+    /// from run to run).
+    std::uint64_t parallel_microseconds = 0;
 };
 
 /// The name table of Delaunay3Counters (base/counter_table.hpp): --stats prints it in this order.
-inline constexpr std::array kDelaunay3CounterNames =
-    EM_COUNTER_TABLE(Delaunay3Counters, points, duplicates, orient_calls, insphere_calls,
-                     walk_steps, cavity_tets, outside_hull, splits_1_4, splits_2_6, splits_edge,
-                     flips_2_3, flips_3_2, flips_4_4, unflippable);
+inline constexpr std::array kDelaunay3CounterNames = EM_COUNTER_TABLE(
+    Delaunay3Counters, points, duplicates, orient_calls, insphere_calls, walk_steps, cavity_tets,
+    outside_hull, splits_1_4, splits_2_6, splits_edge, flips_2_3, flips_3_2, flips_4_4, unflippable,
+    threads, sequential_prefix, parallel_rounds, parallel_points, deferred_points, sequential_tail,
+    parallel_microseconds);
 static_assert(counter_table_complete(kDelaunay3CounterNames));
 
 /// The Delaunay tetrahedralization in the caller's vertex numbering. When fewer than four

@@ -46,11 +46,8 @@ void validate_points_3d(std::span<const double> xyz) {
 
 namespace detail {
 
-namespace {
-
-/// Asks the kernel to back the 2 MiB-aligned interior of a large buffer with huge pages: the
-/// mesh arrays are touched in a spatially coherent but scattered way, and with 4 KiB pages the
-/// first-touch faults and TLB misses cost about a fifth of a construction. Only a hint.
+// With 4 KiB pages the first-touch faults and TLB misses of the mesh arrays cost about a fifth
+// of a construction.
 void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
@@ -61,12 +58,26 @@ void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::
 #endif
 }
 
+namespace {
+
+/// The insertion order of options, once the points are known to be valid.
+std::vector<VertIdx> validated_order(std::span<const double> xyz, const Delaunay3Options& options) {
+    validate_points_3d(xyz);
+    return insertion_order_3d(xyz, options.order, options.seed);
+}
+
 }  // namespace
 
-Delaunay3Core::Delaunay3Core(std::span<const double> xyz, const Delaunay3Options& options) {
-    validate_points_3d(xyz);
+Delaunay3Core::Delaunay3Core(std::span<const double> xyz, const Delaunay3Options& options)
+    : Delaunay3Core(xyz, validated_order(xyz, options),
+                    // About 6.7 tetrahedra per point for uniform points, plus the hull's
+                    // infinite ones.
+                    7 * (xyz.size() / 3) + 64) {}
+
+Delaunay3Core::Delaunay3Core(std::span<const double> xyz, std::vector<VertIdx> order,
+                             std::size_t reserved_tets)
+    : input_index(std::move(order)) {
     const auto n = static_cast<std::uint32_t>(xyz.size() / 3);
-    input_index = insertion_order_3d(xyz, options.order, options.seed);
     mesh.xyz.resize(xyz.size());
     for (std::uint32_t v = 0; v < n; ++v) {
         const std::size_t from = 3 * std::size_t{input_index[v]};
@@ -78,10 +89,8 @@ Delaunay3Core::Delaunay3Core(std::span<const double> xyz, const Delaunay3Options
     for (std::uint32_t i = 0; i < n; ++i) merged_into[i] = i;
     counters.points = n;
     star.closed = true;  // kInfinite closes the mesh: every face has a twin
-    // About 6.7 tetrahedra per point for uniform points, plus the hull's infinite ones.
-    const std::size_t expected = 7 * std::size_t{n} + 64;
-    mesh.tv.reserve(4 * expected);
-    mesh.adj.reserve(4 * expected);
+    mesh.tv.reserve(4 * reserved_tets);
+    mesh.adj.reserve(4 * reserved_tets);
     advise_huge_pages(mesh.tv.data(), mesh.tv.capacity() * sizeof(VertIdx));
     advise_huge_pages(mesh.adj.data(), mesh.adj.capacity() * sizeof(FaceIdx));
 }
@@ -97,16 +106,19 @@ Sign Delaunay3Core::orient_replacing(TetIdx t, unsigned k, VertIdx p) {
     return orient(v[f[0]], v[f[1]], v[f[2]], p);
 }
 
-Sign Delaunay3Core::insphere_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p) {
+Sign ConflictTest3::insphere_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p) {
     return predicates::insphere_sos(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d),
                                     mesh.point(p), input_index[a], input_index[b], input_index[c],
                                     input_index[d], input_index[p]);
 }
 
-bool Delaunay3Core::conflict_infinite(TetIdx t, VertIdx p) {
+bool ConflictTest3::conflict_infinite(TetIdx t, VertIdx p) {
     const VertIdx* v = &mesh.tv[4 * std::size_t{t}];
     constexpr unsigned m = kInfiniteSlot;
-    const Sign side = orient_replacing(t, m, p);
+    const unsigned* f = kFaceVertex[m];
+    ++counters.orient_calls;
+    const Sign side = predicates::orient3d(mesh.point(v[f[0]]), mesh.point(v[f[1]]),
+                                           mesh.point(v[f[2]]), mesh.point(p));
     if (side != Sign::Zero) return side == Sign::Positive;
     // p lies in the plane of the hull face: the sphere through the face and the apex x of the
     // finite tetrahedron behind it meets that plane in the face's circumcircle, so the
@@ -123,13 +135,6 @@ bool Delaunay3Core::same_point(VertIdx a, VertIdx b) const {
     const double* p = mesh.point(a);
     const double* q = mesh.point(b);
     return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
-}
-
-std::uint32_t Delaunay3Core::random_offset() {
-    rng_state_ ^= rng_state_ << 13;
-    rng_state_ ^= rng_state_ >> 7;
-    rng_state_ ^= rng_state_ << 17;
-    return static_cast<std::uint32_t>(rng_state_ >> 40) & 3u;
 }
 
 namespace {
@@ -208,56 +213,23 @@ Delaunay3Core::Location Delaunay3Core::walk_to(VertIdx p) {
         for (t = 0; mesh.is_dead(t); ++t) {
         }
     }
-    const VertIdx* const tv = mesh.tv.data();
-    const FaceIdx* const adj = mesh.adj.data();
-    const double* const q = mesh.point(p);
-    // The face we came through has p strictly on this side: the walk does not test it again.
-    FaceIdx entered = kNone;
-    if (tv[4 * std::size_t{t} + kInfiniteSlot] == kInfinite) {
-        t = tet_of(adj[4 * std::size_t{t} + kInfiniteSlot]);
-    }
-    for (;;) {
-        ++counters.walk_steps;
-        const VertIdx* v = &tv[4 * std::size_t{t}];
-        if (v[kInfiniteSlot] == kInfinite) break;  // crossed a hull face that sees p
-        // orient3d inline (the filter decides almost every call): the tetrahedron's corners
-        // are looked up once for its faces.
-        const double* corner[4] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
-                                   mesh.point(v[3])};
-        const std::uint32_t r = random_offset();
-        unsigned zeros = 0;
-        bool moved = false;
-        for (std::uint32_t i = 0; i < 4; ++i) {
-            const unsigned k = (r + i) & 3u;
-            const FaceIdx f = 4 * t + k;
-            if (f == entered) continue;
-            ++counters.orient_calls;
-            const unsigned* face = kFaceVertex[k];
-            const Sign s =
-                predicates::orient3d(corner[face[0]], corner[face[1]], corner[face[2]], q);
-            if (s == Sign::Negative) {
-                entered = adj[f];
-                t = tet_of(entered);
-                moved = true;
-                break;
-            }
-            if (s == Sign::Zero) zeros |= 1u << k;
-        }
-        if (!moved) {
-            last_tet = t;
-            return {t, zeros};
-        }
-    }
+    if (mesh.is_infinite(t)) t = tet_of(mesh.adj[4 * std::size_t{t} + kInfiniteSlot]);
+    const Location where = walk_3d(mesh, t, p, rng_state_, counters, [](TetIdx) { return true; });
     last_tet = t;
-    return {t, 0};
+    return where;
+}
+
+VertIdx duplicate_vertex(const TetMesh3& mesh, const Location3& where) {
+    if (where.zero_faces == 0 || std::popcount(where.zero_faces) != 3) return kNone;
+    // On three face planes of a closed tetrahedron: p is the vertex they share.
+    const unsigned k = static_cast<unsigned>(std::countr_zero(~where.zero_faces & 15u));
+    return mesh.tv[4 * std::size_t{where.tet} + k] & kVertexBits;
 }
 
 Delaunay3Core::Location Delaunay3Core::locate(VertIdx p) {
     const Location where = walk_to(p);
-    if (where.zero_faces != 0 && std::popcount(where.zero_faces) == 3) {
-        // On three face planes of a closed tetrahedron: p is the vertex they share.
-        const unsigned k = static_cast<unsigned>(std::countr_zero(~where.zero_faces & 15u));
-        const VertIdx v = mesh.tv[4 * std::size_t{where.tet} + k];
+    const VertIdx v = duplicate_vertex(mesh, where);
+    if (v != kNone) {
         EM_ASSERT(same_point(v, p));
         merged_into[input_index[p]] = input_index[v];
         ++counters.duplicates;

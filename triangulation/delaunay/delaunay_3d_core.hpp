@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "predicates/insphere.hpp"
+#include "predicates/orient3d.hpp"
 #include "predicates/sign.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
 #include "triangulation/mesh/flip_3d.hpp"
@@ -20,21 +21,14 @@ namespace exactmesh::triangulation::detail {
 
 using predicates::Sign;
 
-class Delaunay3Core {
-  public:
-    /// Validates the input, orders it (options.order) and copies it into mesh.xyz.
-    Delaunay3Core(std::span<const double> xyz, const Delaunay3Options& options);
+/// The exact conflict test of the constructions on `mesh`, counted in `counters`: what
+/// Delaunay3Core calls with its own counters, and each thread of parallel_bowyer_watson_3d with
+/// its own (the tests only read the mesh).
+struct ConflictTest3 {
+    const TetMesh3& mesh;
+    const VertIdx* input_index;  ///< mesh vertex -> caller's index (the perturbation's order)
+    Delaunay3Counters& counters;
 
-    TetMesh3 mesh;
-    std::vector<VertIdx> input_index;  ///< mesh vertex -> caller's index
-    std::vector<VertIdx> merged_into;  ///< caller's index -> caller index of the kept copy
-    Delaunay3Counters counters;
-
-    /// Exact orientation of four finite mesh vertices.
-    Sign orient(VertIdx a, VertIdx b, VertIdx c, VertIdx d);
-    /// orient3d of finite tetrahedron t with its vertex at slot k replaced by p: positive when p
-    /// lies on the same side of face k as that vertex.
-    Sign orient_replacing(TetIdx t, unsigned k, VertIdx p);
     /// Perturbed insphere of four finite mesh vertices (positively oriented) and p: never Zero.
     /// Inline: the filter decides almost every call; the exact tie goes out of line.
     Sign insphere(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p) {
@@ -51,6 +45,106 @@ class Delaunay3Core {
         if (v[3] != kInfinite) return insphere(v[0], v[1], v[2], v[3], p) == Sign::Positive;
         return conflict_infinite(t, p);
     }
+    /// insphere_sos by the caller's indices, for an exact tie.
+    Sign insphere_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p);
+    bool conflict_infinite(TetIdx t, VertIdx p);
+};
+
+/// Where a walk ended: a finite tetrahedron containing p (closed), with bit k of zero_faces set
+/// when p lies on the plane of face k; or an infinite tetrahedron whose hull face sees p strictly
+/// (zero_faces unused); or kNone when the walk was not allowed to go on (walk_3d).
+struct Location3 {
+    TetIdx tet = kNone;
+    unsigned zero_faces = 0;
+};
+
+/// The walk's random face order: a xorshift step of `state`, 2 bits of it.
+inline std::uint32_t walk_random_offset(std::uint64_t& state) {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return static_cast<std::uint32_t>(state >> 40) & 3u;
+}
+
+/// Remembering stochastic visibility walk [Devillers, Pion, Teillaud 2002] from the finite
+/// tetrahedron `t` towards p, entering a neighbour only when may_enter(neighbour): otherwise
+/// it stops, returning kNone, with `t` the last tetrahedron it stood in. On arrival `t` is the
+/// tetrahedron returned. Orientations are counted in counters.orient_calls, steps in walk_steps.
+template <class MayEnter>
+Location3 walk_3d(const TetMesh3& mesh, TetIdx& t, VertIdx p, std::uint64_t& rng,
+                  Delaunay3Counters& counters, MayEnter&& may_enter) {
+    const VertIdx* const tv = mesh.tv.data();
+    const FaceIdx* const adj = mesh.adj.data();
+    const double* const q = mesh.point(p);
+    // The face we came through has p strictly on this side: the walk does not test it again.
+    FaceIdx entered = kNone;
+    for (;;) {
+        ++counters.walk_steps;
+        const VertIdx* v = &tv[4 * std::size_t{t}];
+        if (v[kInfiniteSlot] == kInfinite) return {t, 0};  // crossed a hull face that sees p
+        // orient3d inline (the filter decides almost every call): the tetrahedron's corners
+        // are looked up once for its faces.
+        const double* corner[4] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
+                                   mesh.point(v[3])};
+        const std::uint32_t r = walk_random_offset(rng);
+        unsigned zeros = 0;
+        bool moved = false;
+        for (std::uint32_t i = 0; i < 4; ++i) {
+            const unsigned k = (r + i) & 3u;
+            const FaceIdx f = 4 * t + k;
+            if (f == entered) continue;
+            ++counters.orient_calls;
+            const unsigned* face = kFaceVertex[k];
+            const Sign s =
+                predicates::orient3d(corner[face[0]], corner[face[1]], corner[face[2]], q);
+            if (s == Sign::Negative) {
+                const TetIdx u = tet_of(adj[f]);
+                if (!may_enter(u)) return {kNone, 0};
+                entered = adj[f];
+                t = u;
+                moved = true;
+                break;
+            }
+            if (s == Sign::Zero) zeros |= 1u << k;
+        }
+        if (!moved) return {t, zeros};
+    }
+}
+
+/// The vertex p equals when a walk to p ended on three face planes of a finite tetrahedron
+/// (their shared vertex), else kNone.
+VertIdx duplicate_vertex(const TetMesh3& mesh, const Location3& where);
+
+/// Asks the kernel to back the 2 MiB-aligned interior of a large buffer with huge pages (only a
+/// hint): the mesh arrays are touched in a spatially coherent but scattered way.
+void advise_huge_pages(const void* data, std::size_t bytes);
+
+class Delaunay3Core {
+  public:
+    /// Validates the input, orders it (options.order) and copies it into mesh.xyz.
+    Delaunay3Core(std::span<const double> xyz, const Delaunay3Options& options);
+    /// Copies the validated input into mesh.xyz in `order` (mesh vertex -> caller's index),
+    /// reserving room for `reserved_tets` tetrahedra.
+    Delaunay3Core(std::span<const double> xyz, std::vector<VertIdx> order,
+                  std::size_t reserved_tets);
+
+    TetMesh3 mesh;
+    std::vector<VertIdx> input_index;  ///< mesh vertex -> caller's index
+    std::vector<VertIdx> merged_into;  ///< caller's index -> caller index of the kept copy
+    Delaunay3Counters counters;
+
+    /// Exact orientation of four finite mesh vertices.
+    Sign orient(VertIdx a, VertIdx b, VertIdx c, VertIdx d);
+    /// orient3d of finite tetrahedron t with its vertex at slot k replaced by p: positive when p
+    /// lies on the same side of face k as that vertex.
+    Sign orient_replacing(TetIdx t, unsigned k, VertIdx p);
+    /// ConflictTest3::insphere with the core's counters.
+    Sign insphere(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p) {
+        return tests().insphere(a, b, c, d, p);
+    }
+    /// ConflictTest3::conflict with the core's counters.
+    bool conflict(TetIdx t, VertIdx p) { return tests().conflict(t, p); }
+    ConflictTest3 tests() { return {mesh, input_index.data(), counters}; }
     bool same_point(VertIdx a, VertIdx b) const;
 
     /// Builds the first tetrahedron and its four infinite neighbours from the first four
@@ -58,13 +152,7 @@ class Delaunay3Core {
     /// (then there is no tetrahedron). `skip` receives the four mesh vertices used.
     bool make_first_tet(std::vector<bool>& skip);
 
-    /// Where a walk ended: a finite tetrahedron containing p (closed), with bit k of zero_faces
-    /// set when p lies on the plane of face k; or an infinite tetrahedron whose hull face sees p
-    /// strictly (zero_faces unused).
-    struct Location {
-        TetIdx tet = kNone;
-        unsigned zero_faces = 0;
-    };
+    using Location = Location3;
     /// Remembering stochastic visibility walk [Devillers, Pion, Teillaud 2002] from the last
     /// tetrahedron made. Sets last_tet.
     Location walk_to(VertIdx p);
@@ -83,12 +171,7 @@ class Delaunay3Core {
     TetIdx last_tet = kNone;
 
   private:
-    /// insphere_sos by the caller's indices, for an exact tie.
-    Sign insphere_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p);
-    bool conflict_infinite(TetIdx t, VertIdx p);
-
     std::uint64_t rng_state_ = 0x9E3779B97F4A7C15ull;
-    std::uint32_t random_offset();
 };
 
 /// The incremental construction both 3D algorithms share: the first tetrahedron, then every other

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -21,30 +22,21 @@
 #include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
 #include "triangulation/delaunay/delaunay_2d_core.hpp"
+#include "triangulation/delaunay/parallel_rounds.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 
 namespace exactmesh::triangulation {
 
-unsigned resolve_thread_count(unsigned threads) {
-    if (threads != 0) return threads;
-    return std::max(1u, static_cast<unsigned>(tbb::this_task_arena::max_concurrency()));
-}
-
 namespace {
 
 using predicates::Sign;
-
-/// A half-open range of Hilbert keys (64-bit so that the last range can end past 2^32 - 1).
-struct KeyRange {
-    std::uint64_t low = 0, high = 0;
-};
 
 /// What the threads share. During a pass each thread writes only: tv and twin of triangles of
 /// its partition (and slots of its own free list and fresh range), the twin half-edge of a
 /// mixed triangle facing its cavity, and merged_into of its own points.
 struct Shared {
     TriMesh2& mesh;
-    const std::uint32_t* keys = nullptr;  ///< per mesh vertex: the key of this pass's curve
+    std::span<const std::uint32_t> keys;  ///< per mesh vertex: the key of this pass's curve
     const std::vector<VertIdx>& input_index;
     std::vector<VertIdx>& merged_into;
     /// Per triangle slot: the mark of the last insertion attempt that visited it. A worker
@@ -66,7 +58,7 @@ enum class Outcome { Inserted, Merged, Deferred };
 /// predicate and insertion must not share a line (or the adjacent-line prefetch pair) with what
 /// the next worker reads on every triangle (its range).
 struct alignas(128) Worker {
-    KeyRange range;
+    detail::KeyRange range;
     bool owns_all = false;  ///< the sequential prefix and tail: every triangle is ours
     std::vector<TriIdx> free_slots;
     TriIdx fresh_next = 0, fresh_end = 0;
@@ -92,8 +84,7 @@ struct alignas(128) Worker {
     bool owns_vertex(const Shared& shared, VertIdx v) const {
         if (owns_all) return true;
         if (v == kInfinite) return false;
-        const std::uint64_t key = shared.keys[v];
-        return key >= range.low && key < range.high;
+        return range.holds(shared.keys[v]);
     }
     bool owns(const Shared& shared, TriIdx t) const {
         if (owns_all) return true;
@@ -289,29 +280,36 @@ struct alignas(128) Worker {
         deferred.clear();
         if (last == kNone) {
             deferred.assign(points.begin(), points.end());
-            counters.deferred_points += deferred.size();
-            return;
+        } else {
+            Sweep sweep{*this, shared};
+            detail::sweep_partition(sweep, points, start, shared.keys, deferred);
         }
-        std::vector<VertIdx> put_off_before;
-        TriIdx anchor = kNone;
-        auto insert_counted = [&](std::size_t i, std::vector<VertIdx>& into) {
-            if (insert(shared, points[i]) == Outcome::Deferred) {
-                into.push_back(points[i]);
-            } else {
-                ++counters.parallel_points;
-            }
-        };
-        for (std::size_t i = start; i < points.size(); ++i) {
-            insert_counted(i, deferred);
-            if (i == start) anchor = last;
-        }
-        // Back to the start: the anchor slot is ours (made or reused by this worker only).
-        if (anchor != kNone && !shared.mesh.is_dead(anchor) && owns(shared, anchor)) last = anchor;
-        for (std::size_t i = start; i-- > 0;) insert_counted(i, put_off_before);
-        std::reverse(put_off_before.begin(), put_off_before.end());
-        deferred.insert(deferred.begin(), put_off_before.begin(), put_off_before.end());
         counters.deferred_points += deferred.size();
     }
+
+    /// The worker as detail::sweep_partition's sweep.
+    struct Sweep {
+        Worker& worker;
+        Shared& shared;
+        TriIdx anchor = kNone;
+
+        bool try_insert(VertIdx p) {
+            if (worker.insert(shared, p) == Outcome::Deferred) return false;
+            ++worker.counters.parallel_points;
+            return true;
+        }
+        bool same_point(VertIdx a, VertIdx b) const {
+            const double* pa = shared.mesh.point(a);
+            const double* pb = shared.mesh.point(b);
+            return pa[0] == pb[0] && pa[1] == pb[1];
+        }
+        void remember_start() { anchor = worker.last; }
+        /// Back to the start: the anchor slot is ours (made or reused by this worker only).
+        void return_to_start() {
+            if (anchor != kNone && !shared.mesh.is_dead(anchor) && worker.owns(shared, anchor))
+                worker.last = anchor;
+        }
+    };
 };
 
 void add_work_counters(Delaunay2Counters& to, const Delaunay2Counters& from) {
@@ -349,39 +347,13 @@ Prepared prepare(std::span<const double> xy, std::uint64_t seed, unsigned thread
     // faults included, to the calling thread between passes).
     const std::size_t slots = 4 + 2 * n + n / 8 + 64 * std::size_t{threads};
     Prepared out;
-    // The release/acquire pair repeats the task group's guarantee for ThreadSanitizer (libtbb
-    // is not instrumented), as in ParallelConstruction::pass.
-    std::atomic<int> finished{0};
-    arena.execute([&] {
-        tbb::task_group group;
-        group.run([&] {
-            out.keys[1] = hilbert_keys_2d(xy, kSecondCurveShift, true);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        group.run([&] {
-            out.tv.assign(3 * slots, kNone);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        group.run([&] {
-            out.twin.assign(3 * slots, kNone);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        group.run([&] {
-            out.stamp.assign(slots, 0u);
-            finished.fetch_add(1, std::memory_order_release);
-        });
-        out.order = insertion_order_2d(xy, InsertionOrder::Brio, seed, true, &out.keys[0]);
-        group.wait();
-    });
-    (void)finished.load(std::memory_order_acquire);
+    detail::run_together(
+        arena,
+        [&] { out.order = insertion_order_2d(xy, InsertionOrder::Brio, seed, true, &out.keys[0]); },
+        [&] { out.keys[1] = hilbert_keys_2d(xy, kSecondCurveShift, true); },
+        [&] { out.tv.assign(3 * slots, kNone); }, [&] { out.twin.assign(3 * slots, kNone); },
+        [&] { out.stamp.assign(slots, 0u); });
     return out;
-}
-
-/// Sorts vertices by (key, vertex).
-void sort_by_key(const std::vector<std::uint32_t>& keys, std::vector<VertIdx>& points) {
-    std::sort(points.begin(), points.end(), [&keys](VertIdx u, VertIdx v) {
-        return keys[u] < keys[v] || (keys[u] == keys[v] && u < v);
-    });
 }
 
 class ParallelConstruction {
@@ -391,7 +363,7 @@ class ParallelConstruction {
     ParallelConstruction(detail::Delaunay2Core& core, unsigned threads, tbb::task_arena& arena,
                          Prepared& prepared)
         : core_(core),
-          shared_{core.mesh, nullptr, core.input_index, core.merged_into},
+          shared_{core.mesh, {}, core.input_index, core.merged_into},
           workers_(threads),
           arena_(arena) {
         const std::uint32_t n = core.mesh.vertex_count();
@@ -404,21 +376,8 @@ class ParallelConstruction {
         mesh.tv.swap(prepared.tv);
         mesh.twin.swap(prepared.twin);
         stamp_.swap(prepared.stamp);
-        // The keys by mesh vertex (they were computed in the caller's order).
-        for (std::vector<std::uint32_t>& keys : keys_) keys.resize(n);
-        arena_.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 1 << 14),
-                              [&](const tbb::blocked_range<std::uint32_t>& r) {
-                                  for (std::uint32_t v = r.begin(); v != r.end(); ++v) {
-                                      const VertIdx i = core.input_index[v];
-                                      keys_[0][v] = prepared.keys[0][i];
-                                      keys_[1][v] = prepared.keys[1][i];
-                                  }
-                                  finished_.fetch_add(1, std::memory_order_release);
-                              });
-        });
-        (void)finished_.load(std::memory_order_acquire);  // as in pass(), for ThreadSanitizer
-        shared_.keys = keys_[0].data();
+        runner_.keys_by_mesh_vertex(arena_, core.input_index, prepared.keys, keys_);
+        shared_.keys = keys_[0];
         starting_at_.assign(n + 1, kNone);
         shared_.starting_at = &starting_at_;
         shared_.stamp = &stamp_;
@@ -470,18 +429,16 @@ class ParallelConstruction {
                               const std::vector<std::uint64_t>& bounds) {
         TriMesh2& mesh = core_.mesh;
         const std::vector<std::uint32_t>& keys = keys_[curve];
-        shared_.keys = keys.data();
+        shared_.keys = keys;
         const std::size_t count = workers_.size();
         // Each insertion frees its cavity (k triangles) before making k + 2: two fresh slots
         // per point cover a worker's whole list, so the arrays need not grow during the pass.
-        std::size_t begin = 0;
+        const std::vector<std::span<const VertIdx>> parts =
+            detail::split_by_bounds(keys, points, bounds);
         for (std::size_t w = 0; w < count; ++w) {
             Worker& worker = workers_[w];
             worker.range = {bounds[w], bounds[w + 1]};
-            std::size_t end = begin;
-            while (end < points.size() && keys[points[end]] < worker.range.high) ++end;
-            worker.points = points.subspan(begin, end - begin);
-            begin = end;
+            worker.points = parts[w];
             for (TriIdx t = worker.fresh_next; t < worker.fresh_end; ++t)
                 worker.free_slots.push_back(t);
             const std::size_t needed = 2 * worker.points.size() + 2;
@@ -502,22 +459,8 @@ class ParallelConstruction {
         for (Worker& worker : workers_) {
             find_start(worker);
         }
-        // The release/acquire pairs on pass_epoch_ and finished_ repeat what the task scheduler
-        // already guarantees (the setup above happens before each worker, each worker before
-        // what follows), in a form ThreadSanitizer sees: libtbb is not instrumented.
-        pass_epoch_.fetch_add(1, std::memory_order_release);
         const auto started = std::chrono::steady_clock::now();
-        arena_.execute([&] {
-            tbb::parallel_for(
-                tbb::blocked_range<std::size_t>(0, count, 1),
-                [&](const tbb::blocked_range<std::size_t>& r) {
-                    (void)pass_epoch_.load(std::memory_order_acquire);
-                    for (std::size_t w = r.begin(); w != r.end(); ++w) workers_[w].run(shared_);
-                    finished_.fetch_add(1, std::memory_order_release);
-                },
-                tbb::simple_partitioner());
-        });
-        (void)finished_.load(std::memory_order_acquire);
+        runner_.run(arena_, count, [&](std::size_t w) { workers_[w].run(shared_); });
         core_.counters.parallel_microseconds += detail::microseconds_since(started);
         std::vector<VertIdx> deferred;
         for (Worker& worker : workers_) {
@@ -530,25 +473,9 @@ class ParallelConstruction {
         return deferred;
     }
 
-    /// The keys of `curve` at the fractions i / T of `points` (i = 1..T-1), framed by 0 and
-    /// 2^32: the ranges of a pass, about equal in points.
+    /// The ranges of a pass over `points` along `curve`, about equal in points.
     std::vector<std::uint64_t> bounds(std::span<const VertIdx> points, int curve) const {
-        const std::size_t count = workers_.size();
-        std::vector<std::uint32_t> sorted(points.size());
-        for (std::size_t k = 0; k < points.size(); ++k) sorted[k] = keys_[curve][points[k]];
-        std::vector<std::uint64_t> out{0};
-        for (std::size_t i = 1; i < count; ++i) {
-            const auto at = std::min(points.size() * i / count, points.size() - 1);
-            if (points.empty()) {
-                out.push_back(0);
-                continue;
-            }
-            std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(at),
-                             sorted.end());
-            out.push_back(sorted[at]);
-        }
-        out.push_back(std::uint64_t{1} << 32);
-        return out;
+        return detail::key_range_bounds(keys_[curve], points, workers_.size());
     }
 
     const std::vector<std::uint32_t>& keys(int curve) const { return keys_[curve]; }
@@ -566,27 +493,20 @@ class ParallelConstruction {
 
   private:
     /// A triangle of the worker's partition to start its walks from, and the point it was found
-    /// for: the (sequential, read-only) walk to one of its points, tried at the middle of the
-    /// list first (farthest from the ranges' ends along the curve), then at fractions 1/4, 3/4,
-    /// 1/8, ...; kNone when none of 32 tries lands in the partition (then its points wait).
+    /// for (detail::find_start_index; the walks are sequential and read-only); kNone when none
+    /// lands in the partition.
     void find_start(Worker& worker) {
         worker.last = kNone;
         worker.start = 0;
-        const std::size_t size = worker.points.size();
-        if (size == 0) return;
-        for (std::size_t denominator = 2, tries = 0; tries < 32; denominator *= 2) {
-            for (std::size_t numerator = 1; numerator < denominator && tries < 32;
-                 numerator += 2, ++tries) {
-                const std::size_t i = size * numerator / denominator;
-                const TriIdx t = core_.walk_to(worker.points[i]);
-                if (worker.owns(shared_, t)) {
-                    worker.last = t;
-                    worker.start = i;
-                    return;
-                }
-            }
-            if (denominator >= size) break;
-        }
+        TriIdx found = kNone;
+        const std::optional<std::size_t> start =
+            detail::find_start_index(worker.points.size(), [&](std::size_t i) {
+                found = core_.walk_to(worker.points[i]);
+                return worker.owns(shared_, found);
+            });
+        if (!start) return;
+        worker.last = found;
+        worker.start = *start;
     }
 
     detail::Delaunay2Core& core_;
@@ -595,22 +515,13 @@ class ParallelConstruction {
     /// Slots below it were handed out (some are dead or still free); the arrays' slots from it
     /// on are unused (dead).
     TriIdx high_water_ = 0;
-    std::atomic<std::uint64_t> pass_epoch_{0}, finished_{0};
+    detail::PartitionRunner runner_;
     std::vector<TriIdx> starting_at_;
     Shared shared_;
     std::vector<Worker> workers_;
     Worker sequential_;
     tbb::task_arena& arena_;
 };
-
-/// Merges two lists of vertices sorted by (key, vertex).
-std::vector<VertIdx> merge_by_key(const std::vector<std::uint32_t>& keys,
-                                  std::span<const VertIdx> a, std::span<const VertIdx> b) {
-    std::vector<VertIdx> out(a.size() + b.size());
-    std::merge(a.begin(), a.end(), b.begin(), b.end(), out.begin(),
-               [&keys](VertIdx u, VertIdx v) { return keys[u] < keys[v]; });
-    return out;
-}
 
 }  // namespace
 
@@ -635,50 +546,19 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     if (!core.make_first_triangle(skip)) return core.collinear_result();
     const std::uint32_t n = core.mesh.vertex_count();
 
-    // The BRIO rounds as insertion_order_2d made them: [n/2, n), [n/4, n/2), ... down to 64
-    // points, each sorted by Hilbert key; everything before the first large round is prefix.
-    std::vector<std::uint32_t> round_begin;
-    for (std::uint32_t end = n; end > 64; end /= 2) round_begin.push_back(end / 2);
-    std::reverse(round_begin.begin(), round_begin.end());
-    round_begin.push_back(n);
-    std::size_t first_parallel = 0;
-    while (first_parallel + 1 < round_begin.size() &&
-           round_begin[first_parallel + 1] - round_begin[first_parallel] <
-               std::uint64_t{options.parallel_round_minimum} * threads) {
-        ++first_parallel;
-    }
-    const std::uint32_t prefix_end =
-        first_parallel + 1 < round_begin.size() ? round_begin[first_parallel] : n;
+    const detail::BrioRounds rounds =
+        detail::brio_rounds(n, threads, options.parallel_round_minimum);
 
     phase = Clock::now();
     ParallelConstruction construction(core, threads, arena, prepared);
     core.counters.keys_microseconds = detail::microseconds_since(phase);
-    auto unskipped = [&skip](std::uint32_t begin, std::uint32_t end) {
-        std::vector<VertIdx> out;
-        for (VertIdx p = begin; p < end; ++p) {
-            if (!skip[p]) out.push_back(p);
-        }
-        return out;
-    };
-    phase = Clock::now();
-    const std::vector<VertIdx> prefix = unskipped(0, prefix_end);
+    const std::vector<VertIdx> prefix = detail::unskipped_vertices(skip, 0, rounds.prefix_end);
     construction.insert_sequentially(prefix);
     core.counters.sequential_prefix = prefix.size();
     std::uint64_t sequential = detail::microseconds_since(phase);
 
     phase = Clock::now();
-    std::vector<VertIdx> pending;
-    for (std::size_t r = first_parallel; r + 1 < round_begin.size(); ++r) {
-        const std::vector<VertIdx> round = unskipped(round_begin[r], round_begin[r + 1]);
-        const std::vector<VertIdx> points = merge_by_key(construction.keys(0), pending, round);
-        std::vector<VertIdx> deferred =
-            construction.pass(points, 0, construction.bounds(points, 0));
-        // The points deferred along the first curve's borders lie inside the ranges of the
-        // second curve.
-        sort_by_key(construction.keys(1), deferred);
-        pending = construction.pass(deferred, 1, construction.bounds(points, 1));
-        sort_by_key(construction.keys(0), pending);
-    }
+    const std::vector<VertIdx> pending = detail::run_parallel_rounds(construction, rounds, skip);
     // The rounds' time less the threads' passes: what the calling thread does alone.
     core.counters.partition_microseconds =
         detail::microseconds_since(phase) - core.counters.parallel_microseconds;

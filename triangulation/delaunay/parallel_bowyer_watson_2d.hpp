@@ -8,7 +8,9 @@
 // to it and its whole cavity stay in triangles of p; neighbours of the cavity may also be
 // "mixed" triangles (vertices in several partitions, or infinite), which no thread changes during
 // a pass, so relinking their twin half-edge touches an entry nobody else reads or writes.
-// Otherwise the point is deferred, before anything is changed. A second pass moves the
+// Otherwise the point is deferred, before anything is changed. Copies of one point are tried in
+// the sequential order (detail::sweep_partition), so the copy kept, whose input index the
+// perturbation reads, is the sequential one. A second pass moves the
 // boundaries by half a range and retries the deferred points; what is still deferred joins the
 // next round, and after the last round the few remaining points (near the hull or the last
 // boundaries) are inserted sequentially. New triangles come from per-thread free lists and
@@ -32,11 +34,9 @@
 #include <span>
 
 #include "triangulation/delaunay/delaunay_2d.hpp"
+#include "triangulation/delaunay/parallel_rounds.hpp"  // resolve_thread_count
 
 namespace exactmesh::triangulation {
-
-/// The thread count `threads` asks for: itself, or every hardware thread for 0 (at least 1).
-unsigned resolve_thread_count(unsigned threads);
 
 /// The Delaunay triangulation of xy (2·#V coordinates) built by `threads` threads (>= 1) over
 /// the BRIO order of options.seed (options.order and options.location are not used). Same

@@ -64,9 +64,20 @@ void radix_sort_by_key(std::vector<std::uint64_t>& items, std::vector<std::uint6
     }
 }
 
-}  // namespace
+/// compute(begin, end) over [0, n): on every thread of the current oneTBB arena with
+/// `parallel` (each point's key alone: any split gives the same keys), else in one call.
+template <class Compute>
+void compute_in_chunks(std::size_t n, bool parallel, Compute& compute) {
+    if (!parallel) {
+        compute(0, n);
+        return;
+    }
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, n, 1 << 14),
+        [&](const tbb::blocked_range<std::size_t>& r) { compute(r.begin(), r.end()); });
+}
 
-namespace {}  // namespace
+}  // namespace
 
 /// Hilbert keys of all points on a 2^16 grid over their bounding box, computed in input order
 /// (sequential reads) so that the shuffled rounds only gather 4-byte keys.
@@ -95,14 +106,7 @@ std::vector<std::uint32_t> hilbert_keys_2d(std::span<const double> xy, std::uint
                                   (cell(xy[2 * i + 1], min_y, half_y) + cell_shift) & 0xFFFFu);
         }
     };
-    if (parallel) {
-        // Each point's key alone: any split gives the same keys.
-        tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, n, 1 << 14),
-            [&](const tbb::blocked_range<std::size_t>& r) { compute(r.begin(), r.end()); });
-    } else {
-        compute(0, n);
-    }
+    compute_in_chunks(n, parallel, compute);
     return keys;
 }
 
@@ -159,8 +163,11 @@ std::uint32_t hilbert_key_3d(std::uint32_t x, std::uint32_t y, std::uint32_t z) 
     return spread_3(axes[0]) << 2 | spread_3(axes[1]) << 1 | spread_3(axes[2]);
 }
 
+}  // namespace
+
 /// 3D Hilbert keys of all points on a 2^10 grid per axis over their bounding box.
-std::vector<std::uint32_t> hilbert_keys_3d(std::span<const double> xyz) {
+std::vector<std::uint32_t> hilbert_keys_3d(std::span<const double> xyz, std::uint32_t cell_shift,
+                                           bool parallel) {
     const std::size_t n = xyz.size() / 3;
     std::vector<std::uint32_t> keys(n);
     if (n == 0) return keys;
@@ -179,13 +186,18 @@ std::vector<std::uint32_t> hilbert_keys_3d(std::span<const double> xyz) {
         const double t = (v / 2 - low / 2) / half_span;
         return static_cast<std::uint32_t>(std::clamp(t, 0.0, 1.0) * 1023.0);
     };
-    for (std::size_t i = 0; i < n; ++i) {
-        keys[i] =
-            hilbert_key_3d(cell(xyz[3 * i], lo[0], half[0]), cell(xyz[3 * i + 1], lo[1], half[1]),
-                           cell(xyz[3 * i + 2], lo[2], half[2]));
-    }
+    auto compute = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            keys[i] = hilbert_key_3d((cell(xyz[3 * i], lo[0], half[0]) + cell_shift) & 0x3FFu,
+                                     (cell(xyz[3 * i + 1], lo[1], half[1]) + cell_shift) & 0x3FFu,
+                                     (cell(xyz[3 * i + 2], lo[2], half[2]) + cell_shift) & 0x3FFu);
+        }
+    };
+    compute_in_chunks(n, parallel, compute);
     return keys;
 }
+
+namespace {
 
 /// A random permutation of 0..n-1, or the identity for the given order.
 std::vector<std::uint32_t> shuffled(std::size_t n, InsertionOrder order, std::uint64_t seed) {
@@ -279,8 +291,12 @@ std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, Insert
 }
 
 std::vector<std::uint32_t> insertion_order_3d(std::span<const double> xyz, InsertionOrder order,
-                                              std::uint64_t seed) {
-    return insertion_order(xyz.size() / 3, order, seed, [xyz] { return hilbert_keys_3d(xyz); });
+                                              std::uint64_t seed, bool parallel,
+                                              std::vector<std::uint32_t>* keys) {
+    EM_ASSERT(keys == nullptr || (parallel && order == InsertionOrder::Brio));
+    return insertion_order(
+        xyz.size() / 3, order, seed, [xyz, parallel] { return hilbert_keys_3d(xyz, 0, parallel); },
+        parallel, keys);
 }
 
 void hilbert_sort_3d(std::span<const double> xyz, std::span<std::uint32_t> indices) {

@@ -38,9 +38,17 @@ std::vector<std::uint32_t> hilbert_keys_2d(std::span<const double> xy, std::uint
 /// Sorts `indices` in place along a Hilbert curve over the bounding box of their points.
 void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indices);
 
-/// The same in 3D (n = xyz.size()/3): BRIO rounds sorted along a 3D Hilbert curve.
+/// The same in 3D (n = xyz.size()/3): BRIO rounds sorted along a 3D Hilbert curve; `parallel`
+/// and `keys` (then hilbert_keys_3d(xyz)) as in insertion_order_2d.
 std::vector<std::uint32_t> insertion_order_3d(std::span<const double> xyz, InsertionOrder order,
-                                              std::uint64_t seed);
+                                              std::uint64_t seed, bool parallel = false,
+                                              std::vector<std::uint32_t>* keys = nullptr);
+
+/// The position of each point along the Hilbert curve of a 2^10 x 2^10 x 2^10 grid over the
+/// points' bounding box (the keys of insertion_order_3d's rounds); `cell_shift` and `parallel`
+/// as in hilbert_keys_2d (parallel_bowyer_watson_3d's second curve).
+std::vector<std::uint32_t> hilbert_keys_3d(std::span<const double> xyz,
+                                           std::uint32_t cell_shift = 0, bool parallel = false);
 
 /// Sorts `indices` in place along a 3D Hilbert curve over the bounding box of their points.
 void hilbert_sort_3d(std::span<const double> xyz, std::span<std::uint32_t> indices);

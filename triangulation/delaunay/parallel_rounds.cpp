@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+// What the multicore Bowyer-Watson constructions share (see parallel_rounds.hpp).
+#include "triangulation/delaunay/parallel_rounds.hpp"
+
+#include <algorithm>
+
+namespace exactmesh::triangulation {
+
+unsigned resolve_thread_count(unsigned threads) {
+    if (threads != 0) return threads;
+    return std::max(1u, static_cast<unsigned>(tbb::this_task_arena::max_concurrency()));
+}
+
+namespace detail {
+
+BrioRounds brio_rounds(std::uint32_t n, unsigned threads, std::uint32_t round_minimum) {
+    BrioRounds rounds;
+    for (std::uint32_t end = n; end > 64; end /= 2) rounds.begin.push_back(end / 2);
+    std::reverse(rounds.begin.begin(), rounds.begin.end());
+    rounds.begin.push_back(n);
+    std::size_t& first = rounds.first_parallel;
+    while (first + 1 < rounds.begin.size() &&
+           rounds.begin[first + 1] - rounds.begin[first] < std::uint64_t{round_minimum} * threads) {
+        ++first;
+    }
+    rounds.prefix_end = first + 1 < rounds.begin.size() ? rounds.begin[first] : n;
+    return rounds;
+}
+
+std::vector<VertIdx> unskipped_vertices(const std::vector<bool>& skip, std::uint32_t begin,
+                                        std::uint32_t end) {
+    std::vector<VertIdx> out;
+    for (VertIdx p = begin; p < end; ++p) {
+        if (!skip[p]) out.push_back(p);
+    }
+    return out;
+}
+
+std::vector<std::uint64_t> key_range_bounds(std::span<const std::uint32_t> keys,
+                                            std::span<const VertIdx> points, std::size_t count) {
+    std::vector<std::uint32_t> sorted(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) sorted[k] = keys[points[k]];
+    std::vector<std::uint64_t> out{0};
+    for (std::size_t i = 1; i < count; ++i) {
+        if (points.empty()) {
+            out.push_back(0);
+            continue;
+        }
+        const auto at = std::min(points.size() * i / count, points.size() - 1);
+        std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(at),
+                         sorted.end());
+        out.push_back(sorted[at]);
+    }
+    out.push_back(std::uint64_t{1} << 32);
+    return out;
+}
+
+std::vector<std::span<const VertIdx>> split_by_bounds(std::span<const std::uint32_t> keys,
+                                                      std::span<const VertIdx> points,
+                                                      std::span<const std::uint64_t> bounds) {
+    std::vector<std::span<const VertIdx>> out;
+    std::size_t begin = 0;
+    for (std::size_t w = 0; w + 1 < bounds.size(); ++w) {
+        std::size_t end = begin;
+        while (end < points.size() && keys[points[end]] < bounds[w + 1]) ++end;
+        out.push_back(points.subspan(begin, end - begin));
+        begin = end;
+    }
+    return out;
+}
+
+void sort_by_key(std::span<const std::uint32_t> keys, std::vector<VertIdx>& points) {
+    std::sort(points.begin(), points.end(), [keys](VertIdx u, VertIdx v) {
+        return keys[u] < keys[v] || (keys[u] == keys[v] && u < v);
+    });
+}
+
+std::vector<VertIdx> merge_by_key(std::span<const std::uint32_t> keys, std::span<const VertIdx> a,
+                                  std::span<const VertIdx> b) {
+    std::vector<VertIdx> out(a.size() + b.size());
+    std::merge(a.begin(), a.end(), b.begin(), b.end(), out.begin(), [keys](VertIdx u, VertIdx v) {
+        return keys[u] < keys[v] || (keys[u] == keys[v] && u < v);
+    });
+    return out;
+}
+
+}  // namespace detail
+}  // namespace exactmesh::triangulation
