@@ -5,16 +5,13 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
-#if __has_include(<source_location>)
-#include <source_location>
-#endif
 
 namespace exactmesh {
 
-#if defined(__cpp_lib_source_location)
-using SourceLocation = std::source_location;
-#else
-/// clang 14 with libstdc++ 12 has no std::source_location: the same interface from builtins.
+/// Where an exception was raised: std::source_location's interface from the compilers'
+/// builtins, on every compiler. (std::source_location where the library had it, GCC 12, and this
+/// struct where not, clang 14 with libstdc++ 12, gave exactmesh::Error two layouts: a library
+/// built by one compiler and a caller built by the other disagreed on the exception object.)
 struct SourceLocation {
     const char* file = "";
     const char* function = "";
@@ -32,7 +29,6 @@ struct SourceLocation {
     constexpr const char* function_name() const noexcept { return function; }
     constexpr unsigned line() const noexcept { return line_number; }
 };
-#endif
 
 /// Base of every exactmesh exception; carries where it was raised.
 class Error : public std::runtime_error {
