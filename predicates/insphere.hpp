@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <optional>
 
 #if defined(__SSE2__)
@@ -54,28 +55,13 @@ inline std::optional<Sign> insphere_filter_decision(double det, double m) noexce
 /// (insphere_filter's form without SSE2, and the reference its SSE2 form is tested against).
 inline std::optional<Sign> insphere_filter_scalar(const double* a, const double* b, const double* c,
                                                   const double* d, const double* e) noexcept {
-    const double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
-    const double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
-    const double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
-    const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey;
-    const double cd = cex * dey - dex * cey, da = dex * aey - aex * dey;
-    const double ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
-    const double abc = aez * bc - bez * ac + cez * ab;
-    const double bcd = bez * cd - cez * bd + dez * bc;
-    const double cda = cez * da + dez * ac + aez * cd;
-    const double dab = dez * ab + aez * bd + bez * da;
-    const double alift = aex * aex + aey * aey + aez * aez;
-    const double blift = bex * bex + bey * bey + bez * bez;
-    const double clift = cex * cex + cey * cey + cez * cez;
-    const double dlift = dex * dex + dey * dey + dez * dez;
-    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    const double mx = std::max(std::max(std::fabs(aex), std::fabs(bex)),
-                               std::max(std::fabs(cex), std::fabs(dex)));
-    const double my = std::max(std::max(std::fabs(aey), std::fabs(bey)),
-                               std::max(std::fabs(cey), std::fabs(dey)));
-    const double mz = std::max(std::max(std::fabs(aez), std::fabs(bez)),
-                               std::max(std::fabs(cez), std::fabs(dez)));
-    const double m = std::max(std::max(mx, my), mz);
+    // The same rounded determinant as insphere_fast (the differences are recomputed for their
+    // largest magnitude: the same exact subtractions, which the compiler shares once inlined).
+    const double det = insphere_fast(a, b, c, d, e);
+    double m = 0.0;
+    for (const double* p : {a, b, c, d}) {
+        for (int k = 0; k < 3; ++k) m = std::max(m, std::fabs(p[k] - e[k]));
+    }
     return insphere_filter_decision(det, m);
 }
 
