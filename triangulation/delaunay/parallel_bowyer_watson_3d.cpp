@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -22,6 +23,11 @@ namespace exactmesh::triangulation {
 
 namespace {
 
+/// Flags of Shared3::hints (above the tetrahedron index, which fits in 30 bits).
+constexpr TetIdx kHintStart = 0x40000000u;      ///< the tetrahedron is the point's worker's
+constexpr TetIdx kHintElsewhere = 0x80000000u;  ///< it is not
+static_assert((kMaxTetSlots & (kHintStart | kHintElsewhere)) == 0);
+
 /// What the threads share. During a pass each thread writes only: tv and adj of tetrahedra of
 /// its partition (and of the dead slots of its free list), the face slot of a mixed tetrahedron
 /// facing its cavity, and merged_into of its own points.
@@ -30,6 +36,9 @@ struct Shared3 {
     const std::vector<VertIdx>& input_index;
     std::vector<VertIdx>& merged_into;
     std::span<const std::uint32_t> keys;  ///< per mesh vertex: the key of this pass's curve
+    /// Per mesh vertex: where the last attempt to insert it stopped (kNone: not tried yet),
+    /// written by the thread that tried it, read in a later pass.
+    std::vector<TetIdx> hints;
 };
 
 /// The slots not in use between passes (the calling thread's alone): mesh.free_tets, then fresh
@@ -159,16 +168,20 @@ struct alignas(128) Worker3 {
     /// stay in the partition; else changes nothing and returns Deferred.
     Outcome insert(VertIdx p) {
         TetMesh3& mesh = region.shared.mesh;
-        // A new tetrahedron of the last point, or where the last walk stopped: if infinite, the
-        // one behind its hull face is new too (the face holds the point) or the one the walk
-        // came from, so ours.
-        if (!region.can_start(region.last_tet)) return Outcome::Deferred;
-        TetIdx t = region.finite_start(region.last_tet);
+        const TetIdx hint = region.shared.hints[p];
+        if (!region.whole && hint != kNone && (hint & kHintElsewhere) != 0) {
+            return Outcome::Deferred;  // it lies next to another partition's tetrahedra
+        }
+        TetIdx t = start_for(p);
+        if (t == kNone) return Outcome::Deferred;
         const detail::Location3 where = detail::walk_3d(
             mesh, t, p, rng_state, region.work, [this](TetIdx u) { return region.owns(u); });
         // The next points lie near p: their walks start here, whether it went on or not.
         region.last_tet = t;
-        if (where.tet == kNone) return Outcome::Deferred;
+        if (where.tet == kNone) {
+            region.shared.hints[p] = t;
+            return Outcome::Deferred;
+        }
         const VertIdx same = detail::duplicate_vertex(mesh, where);
         if (same != kNone) {
             const std::vector<VertIdx>& index = region.shared.input_index;
@@ -176,7 +189,59 @@ struct alignas(128) Worker3 {
             ++region.work.duplicates;
             return Outcome::Merged;
         }
-        return inserter.insert(p, where.tet) ? Outcome::Inserted : Outcome::Deferred;
+        if (inserter.insert(p, where.tet)) return Outcome::Inserted;
+        region.shared.hints[p] = where.tet;
+        return Outcome::Deferred;
+    }
+
+    /// The finite tetrahedron p's walk starts from: the last walk's end (a new tetrahedron of the
+    /// last point, or where the last walk stopped: if infinite, the one behind its hull face is
+    /// new too, since the face holds the point, or the one the walk came from, so ours) or,
+    /// when nearer to p, where p's last attempt stopped (a guess from rounded coordinates: any
+    /// start gives the same insertion); kNone when neither may start a walk. A point deferred
+    /// along one curve's border is tried next along the other curve, far from the last point
+    /// there: its walks took 57 steps on average from the last walk's end (10^6 uniform points).
+    TetIdx start_for(VertIdx p) const {
+        const bool last_ok = region.can_start(region.last_tet);
+        const TetIdx hint = region.shared.hints[p];
+        if (hint != kNone && (region.whole || (hint & kHintStart) != 0)) {
+            const TetIdx h = hint & kMaxTetSlots;
+            if (region.can_start(h)) {
+                const TetIdx near = region.finite_start(h);
+                if (!last_ok) return near;
+                const TetIdx last = region.finite_start(region.last_tet);
+                return distance_to(near, p) < distance_to(last, p) ? near : last;
+            }
+        }
+        return last_ok ? region.finite_start(region.last_tet) : kNone;
+    }
+
+    /// Before a pass, with every thread only reading: the hint of each of this pass's points
+    /// (where its last attempt stopped, next to it) flagged kHintStart when that tetrahedron is
+    /// this partition's (then only this thread changes it during the pass), else kHintElsewhere
+    /// (p lies next to another partition's or mixed tetrahedra: it waits without walking);
+    /// dropped when the tetrahedron is dead.
+    void classify_hints() {
+        std::vector<TetIdx>& hints = region.shared.hints;
+        for (const VertIdx p : points) {
+            if (hints[p] == kNone) continue;
+            const TetIdx t = hints[p] & kMaxTetSlots;
+            if (region.shared.mesh.is_dead(t)) {
+                hints[p] = kNone;
+            } else {
+                hints[p] = t | (region.can_start(t) ? kHintStart : kHintElsewhere);
+            }
+        }
+    }
+
+    /// The largest coordinate difference between p and t's first corner (no overflow to a
+    /// decision: only a choice between two starts).
+    double distance_to(TetIdx t, VertIdx p) const {
+        const TetMesh3& mesh = region.shared.mesh;
+        const double* a = mesh.point(mesh.tv[4 * std::size_t{t}]);
+        const double* q = mesh.point(p);
+        return std::max(std::max(std::fabs(a[0] - q[0]), std::fabs(a[1] - q[1])),
+                        std::fabs(a[2] - q[2]));
     }
 
     /// Inserts this pass's points (detail::sweep_partition); the deferred ones go to
@@ -272,7 +337,11 @@ class ParallelConstruction3 {
                           tbb::task_arena& arena, Prepared& prepared)
         : core_(core),
           progress_(progress),
-          shared_{core.mesh, core.input_index, core.merged_into, {}},
+          shared_{core.mesh,
+                  core.input_index,
+                  core.merged_into,
+                  {},
+                  std::vector<TetIdx>(core.mesh.vertex_count(), kNone)},
           pool_(core.mesh),
           sequential_(shared_, pool_),
           arena_(arena) {
@@ -333,6 +402,7 @@ class ParallelConstruction3 {
             }
             find_start(worker);
         }
+        runner_.run(arena_, workers_.size(), [&](std::size_t w) { workers_[w]->classify_hints(); });
         const auto started = std::chrono::steady_clock::now();
         runner_.run(arena_, workers_.size(), [&](std::size_t w) { workers_[w]->run(); });
         core_.counters.parallel_microseconds +=

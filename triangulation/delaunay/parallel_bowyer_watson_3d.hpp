@@ -18,14 +18,19 @@
 // cavity marks in the tetrahedra's vertex slot 1, only on the thread's own). A second pass retries
 // the deferred points along another curve (the grid shifted by 0.382 of its width, wrapping); what
 // is still deferred joins the next round, and after the last round the rest is inserted
-// sequentially. Each thread takes new tetrahedra from its own free list, filled before each pass
-// from the shared pool (the slots freed so far, then fresh slots at the arrays' end): the arrays
-// never grow while threads run; a thread whose list runs short defers the point. Deterministic for
-// a thread count: each thread's work depends only on its partition and on the frozen mixed
-// tetrahedra. Invariant: the Delaunay tetrahedralization under the shared symbolic perturbation (by
-// input index) is unique (proofs/invariants/delaunay_3d.md), so the result has exactly the
-// tetrahedra of the sequential construction (tested canonically); only their numbering differs.
-// Predicates: orient3d (walks, hull faces), insphere + insphere_sos (cavities).
+// sequentially. A deferred point remembers the tetrahedron where its attempt stopped (next to
+// it): its next walk starts there when that is nearer than the thread's last walk and the
+// thread's at the start of the pass; when it is another partition's or mixed then, the point
+// waits without walking (points next to the hull, beside the large mixed tetrahedra there, were
+// tried in every pass, each walk failing after about 50 steps). Each thread takes new tetrahedra
+// from its own free list, filled before each pass from the shared pool (the slots freed so far,
+// then fresh slots at the arrays' end): the arrays never grow while threads run; a thread whose
+// list runs short defers the point. Deterministic for a thread count: each thread's work depends
+// only on its partition and on the frozen mixed tetrahedra. Invariant: the Delaunay
+// tetrahedralization under the shared symbolic perturbation (by input index) is unique
+// (proofs/invariants/delaunay_3d.md), so the result has exactly the tetrahedra of the sequential
+// construction (tested canonically); only their numbering differs. Predicates: orient3d (walks,
+// hull faces), insphere + insphere_sos (cavities).
 #pragma once
 
 #include <span>
