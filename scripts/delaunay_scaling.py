@@ -129,7 +129,7 @@ def plot_scaling(scaling, peer, peer_label, same_threads, kind, path):
             ax.set_ylim(0, 1.1)
         ax.set_xticks(range(1, max_threads + 1))
         finish_axes(ax, f"{dist} points", xlabel="threads",
-                    legend_loc="upper right" if kind == "time" else "lower left")
+                    legend_loc="best" if kind == "time" else "lower left")
     if kind == "time":
         axes[0][0].set_ylabel("median real seconds (thin lines: ours T1 / T, ideal)")
         fig.suptitle("Strong scaling: construction time vs threads")
