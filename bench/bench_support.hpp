@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // What the benchmark binaries share: the pinned seeds of their inputs, the heap regime of the
 // constructions they time, the context lines of their JSON (build type, compiler, peak memory
-// rule), peer programs run as processes with their peak memory (run_shell_command) and the run
-// of Google Benchmark that ends their main().
+// rule), the thread counts and sizes of the strong-scaling rows, peer programs run as processes
+// with their peak memory (run_shell_command) and the run of Google Benchmark that ends their
+// main().
 #pragma once
 
 #include <benchmark/benchmark.h>
@@ -11,12 +12,14 @@
 #include <sys/wait.h>  // waitpid
 #include <unistd.h>    // environ, access, unlink
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #if defined(EXACTMESH_WITH_CGAL)
@@ -121,6 +124,33 @@ inline void add_cgal_context() {
 #if defined(EXACTMESH_WITH_CGAL)
     benchmark::AddCustomContext("exactmesh_cgal", CGAL_VERSION_STR);
 #endif
+}
+
+/// The largest thread count of the strong-scaling rows (issue 17): EXACTMESH_BENCH_MAX_THREADS
+/// when set (clamped to 1..256; more threads than cores oversubscribes them, on purpose or not),
+/// else std::thread::hardware_concurrency() (1 when it is unknown). The rows run T = 1 .. this.
+inline unsigned max_bench_threads() {
+    static const unsigned value = [] {
+        long threads = static_cast<long>(std::thread::hardware_concurrency());
+        if (const char* text = std::getenv("EXACTMESH_BENCH_MAX_THREADS")) {
+            threads = std::atol(text);
+        }
+        return static_cast<unsigned>(std::clamp(threads, 1L, 256L));
+    }();
+    return value;
+}
+
+/// The sizes of the strong-scaling rows: 10^5, 10^6 and 10^7 points, those not above
+/// `max_points` (empty below 10^5: then the rows are not registered).
+inline std::vector<std::int64_t> scaling_sizes(std::int64_t max_points) {
+    std::vector<std::int64_t> out;
+    for (std::int64_t n = 100000; n <= 10000000 && n <= max_points; n *= 10) out.push_back(n);
+    return out;
+}
+
+/// The context line giving the largest thread count of the scaling rows (max_bench_threads).
+inline void add_threads_context() {
+    benchmark::AddCustomContext("exactmesh_max_threads", std::to_string(max_bench_threads()));
 }
 
 /// The rest of main(): Google Benchmark reads its flags from the command line (an unrecognized

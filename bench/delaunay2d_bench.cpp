@@ -24,6 +24,17 @@
 // cross-check), peak_bytes and peak_bytes/pt (both; see bench/heap_accounting.cpp).
 // scripts/delaunay_report.py turns the JSON into report/delaunay2d.md and plots.
 //
+// Strong scaling (issue 17): BM_bowyer_watson_<T>_threads/<distribution>/brio/<n>/real_time
+// (options.threads = T; T = 1 runs the sequential code, T > 1 parallel_bowyer_watson_2d) for T = 1
+// .. EXACTMESH_BENCH_MAX_THREADS (default std::thread::hardware_concurrency()), beside
+// BM_cgal_1_threads/<distribution>/brio/<n>/real_time, CGAL's sequential construction at the same
+// sizes (CGAL has no parallel 2D triangulation), n in {10^5, 10^6, 10^7} up to
+// EXACTMESH_BENCH_SCALING_MAX_POINTS (default 2^EXACTMESH_BENCH_MAX_LOG2: 10^5 and 10^6 at the
+// default 2^20; 10000000 adds the 10^7 row). Timed in real (wall-clock) time, since the CPU
+// column adds up every thread's time. For example
+//   EXACTMESH_BENCH_SCALING_MAX_POINTS=10000000 delaunay2d_bench
+//       --benchmark_filter='_threads/uniform/brio/10000000/' --benchmark_repetitions=3
+//
 // Helper mode (no benchmark runs): `delaunay2d_bench --write_node=<distribution>,<n>,<path>`
 // writes generate_points_2d(distribution, n, kInputSeed) as a Triangle .node file, which the
 // report pictures with `exactmesh triangulate <path> -o picture.svg`.
@@ -74,6 +85,19 @@ int log2_from_environment(const char* variable, int fallback, int lo, int hi) {
 /// 2^10 ... 2^max points: EXACTMESH_BENCH_MAX_LOG2 (default 20), clamped to [10, 22].
 int max_log2_points() {
     static const int value = log2_from_environment("EXACTMESH_BENCH_MAX_LOG2", 20, 10, 22);
+    return value;
+}
+
+/// The strong-scaling rows' sizes stop at EXACTMESH_BENCH_SCALING_MAX_POINTS (default
+/// 2^max_log2_points(), clamped to [0, 10^7]).
+std::int64_t scaling_max_points() {
+    static const std::int64_t value = [] {
+        std::int64_t points = std::int64_t{1} << max_log2_points();
+        if (const char* text = std::getenv("EXACTMESH_BENCH_SCALING_MAX_POINTS")) {
+            points = std::atoll(text);
+        }
+        return std::clamp<std::int64_t>(points, 0, 10000000);
+    }();
     return value;
 }
 
@@ -197,15 +221,17 @@ struct Family {
     tri::InsertionOrder order;
     std::string order_label;
     PointOrder point_order = PointOrder::AsGenerated;
+    unsigned threads = 1;  ///< options.threads (bowyer-watson with brio runs in parallel above 1)
 };
 
 void bm_exactmesh(benchmark::State& state, const Family& family) {
     const auto n = static_cast<std::uint32_t>(state.range(0));
     const tri::Delaunay2Function construct = tri::delaunay_2d_algorithm(family.algorithm);
     const Input& input = input_for(family.distribution, family.point_order, n);
-    const tri::Delaunay2Options options{family.order, kOrderSeed};
-    Measurement& m =
-        measurement_for(family.algorithm, points_name(family.distribution), family.order_label, n);
+    tri::Delaunay2Options options{family.order, kOrderSeed};
+    options.threads = family.threads;
+    Measurement& m = measurement_for(family.algorithm + std::to_string(family.threads),
+                                     points_name(family.distribution), family.order_label, n);
 
     for (auto _ : state) {
         const bool measure = !m.done;
@@ -274,10 +300,34 @@ void register_family(const Family& family, int min_log2, int max_log2, benchmark
         ->Unit(benchmark::kMillisecond);
 }
 
+/// The strong-scaling rows of one distribution (see the header): ours on 1 .. max threads and
+/// CGAL's sequential construction, at the scaling sizes, in wall-clock time.
+void register_scaling(Distribution distribution) {
+    const std::vector<std::int64_t> ns = scaling_sizes(scaling_max_points());
+    if (ns.empty()) return;
+    auto apply = [&ns](benchmark::internal::Benchmark* b) {
+        for (const std::int64_t n : ns) b->Arg(n);
+        b->UseRealTime()->Unit(benchmark::kMillisecond);
+    };
+    const std::string points = points_name(distribution) + "/brio";
+    for (unsigned threads = 1; threads <= max_bench_threads(); ++threads) {
+        Family family{"bowyer-watson", distribution, tri::InsertionOrder::Brio, "brio"};
+        family.threads = threads;
+        const std::string name =
+            "BM_bowyer_watson_" + std::to_string(threads) + "_threads/" + points;
+        apply(benchmark::RegisterBenchmark(name.c_str(), &bm_exactmesh, family));
+    }
+#if defined(EXACTMESH_WITH_CGAL)
+    apply(benchmark::RegisterBenchmark(("BM_cgal_1_threads/" + points).c_str(), &bm_cgal,
+                                       distribution));
+#endif
+}
+
 void register_all() {
     using tri::InsertionOrder;
     const int max_log2 = max_log2_points();
     for (const Distribution distribution : {Distribution::Uniform, Distribution::Gaussian}) {
+        register_scaling(distribution);
         for (const char* algorithm : {"bowyer-watson", "green-sibson"}) {
             register_family({algorithm, distribution, InsertionOrder::Brio, "brio"}, 10, max_log2,
                             benchmark::oNLogN);
@@ -351,6 +401,9 @@ int main(int argc, char** argv) {
     benchmark::AddCustomContext("exactmesh_max_log2_points", std::to_string(max_log2_points()));
     benchmark::AddCustomContext("exactmesh_random_max_log2_points",
                                 std::to_string(random_max_log2_points()));
+    benchmark::AddCustomContext("exactmesh_scaling_max_points",
+                                std::to_string(scaling_max_points()));
+    exactmesh::bench::add_threads_context();
     benchmark::AddCustomContext("exactmesh_heap", cold_heap() ? "cold" : "warm");
     bool interleaved = false;
     for (int i = 1; i < argc; ++i) {

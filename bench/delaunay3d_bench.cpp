@@ -4,30 +4,44 @@
 // the points itself), same points, same run [Watson81, Joe91; DESIGN.md "Benchmarks"].
 //
 // Names: BM_<algo>/<distribution>/<n>, algo in {bowyer_watson, green_sibson, cgal} (one
-// thread) and, for issue 17's multicore rows, bowyer_watson_2_threads (parallel_bowyer_watson_3d)
-// and cgal_parallel_2_threads (CGAL's Parallel_tag triangulation with its lock grid, run in a
-// oneTBB arena of 2 threads; built when CGAL sees TBB), distribution in {uniform, gaussian},
-// n = 10^3, 3·10^3, ..., up to EXACTMESH_BENCH3_MAX_POINTS (default 10^6). Each family is fitted
-// with Complexity(oNLogN). Only the construction is timed: inputs are generated once per
-// (distribution, n) with a pinned seed, CGAL's points are converted once, and the result is
-// destroyed with the timer paused (the same for both). Counters, from the first timed construction
-// of each benchmark: walk_steps/pt, insphere_calls/pt, orient_calls/pt, cavity/pt, flips/pt (ours),
-// tets/pt (both: a cross-check), peak_bytes and peak_bytes/pt (both: peak live heap during the
-// construction, with the result alive at the end; bench/heap_accounting.cpp).
+// thread), distribution in {uniform, gaussian}, n = 10^3, 3·10^3, ..., up to
+// EXACTMESH_BENCH3_MAX_POINTS (default 10^6, at most 10^7). Each family is fitted with
+// Complexity(oNLogN).
+// Strong scaling (issue 17): BM_bowyer_watson_<T>_threads/<distribution>/<n>/real_time
+// (options.threads = T; T = 1 runs the sequential code, T > 1 parallel_bowyer_watson_3d) and
+// BM_cgal_parallel_<T>_threads/<distribution>/<n>/real_time (CGAL's Parallel_tag triangulation
+// with its lock grid, run in a oneTBB arena of T threads; built when CGAL sees TBB), for T = 1 ..
+// EXACTMESH_BENCH_MAX_THREADS (default std::thread::hardware_concurrency()), n in {10^5, 10^6,
+// 10^7} up to EXACTMESH_BENCH3_MAX_POINTS (so 10^7 only when it is set to 10000000). They are
+// timed in real (wall-clock) time: the CPU column adds up every thread's time.
+// scripts/delaunay3d_report.py turns them into the strong-scaling table and plots.
+//
+// Only the construction is timed: inputs are generated once per (distribution, n) with a pinned
+// seed, CGAL's points are converted once, and the result is destroyed with the timer paused (the
+// same for both). Inputs are made on first use, so a filtered run makes only its own. Counters,
+// from the first timed construction of each benchmark: walk_steps/pt, insphere_calls/pt,
+// orient_calls/pt, cavity/pt, flips/pt (ours), tets/pt (both: a cross-check), peak_bytes and
+// peak_bytes/pt (both: peak live heap during the construction, with the result alive at the end;
+// bench/heap_accounting.cpp).
 //
 // The heap is kept warm (malloc never returns memory to the kernel), as in delaunay2d_bench,
-// unless EXACTMESH_BENCH_COLD_HEAP=1. On a shared machine compare the CPU column: it counts only
-// this process's time. The ratios reported in the README (uniform and Gaussian, 10^6 points)
-// come from
+// unless EXACTMESH_BENCH_COLD_HEAP=1. On a shared machine compare the CPU column of the one-thread
+// rows: it counts only this process's time. The ratios reported in the README (uniform and
+// Gaussian, 10^6 points) come from
 //   delaunay3d_bench --benchmark_filter='(bowyer_watson|cgal)/(uniform|gaussian)/1000000$'
 //                    --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true
 //                    --benchmark_report_aggregates_only=true
 // and the multicore ones (issue 17) from
-//   delaunay3d_bench --benchmark_filter='(bowyer_watson|cgal).*/uniform/1000000$'
+//   delaunay3d_bench --benchmark_filter='(bowyer_watson|cgal).*/uniform/1000000($|/)'
 //                    --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
-// with the real-time column (threads: the CPU column adds up every thread's time).
-// (the README's command; scripts/run runs every algorithm and size with the same repetitions
-// and interleaving, keeping the individual repetitions for its report).
+// with the real-time column (the README's command; scripts/run runs every algorithm and size
+// with the same repetitions and interleaving, keeping the individual repetitions for its report).
+// The 10^7-point run with peak memory (ours on 1 and 2 threads, one construction each; about
+// 3 GB of heap and 30-60 s each on the reference machine):
+//   EXACTMESH_BENCH3_MAX_POINTS=10000000 delaunay3d_bench
+//       --benchmark_filter='BM_bowyer_watson_[12]_threads/uniform/10000000/'
+//       --benchmark_out=bench3_1e7.json --benchmark_out_format=json
+// (add cgal_parallel to the filter, '(bowyer_watson|cgal_parallel)_[12]_threads/...', for CGAL's).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -67,16 +81,24 @@ namespace gen = exactmesh::generators;
 namespace tri = exactmesh::triangulation;
 using gen::Distribution3;
 
-/// 10^3, 3·10^3, 10^4, ... up to EXACTMESH_BENCH3_MAX_POINTS (default 10^6).
+/// EXACTMESH_BENCH3_MAX_POINTS (default 10^6), clamped to [10^3, 10^7].
+std::int64_t max_points() {
+    static const std::int64_t value = [] {
+        std::int64_t points = 1000000;
+        if (const char* text = std::getenv("EXACTMESH_BENCH3_MAX_POINTS")) {
+            points = std::clamp<std::int64_t>(std::atoll(text), 1000, 10000000);
+        }
+        return points;
+    }();
+    return value;
+}
+
+/// 10^3, 3·10^3, 10^4, ... up to max_points().
 std::vector<std::int64_t> sizes() {
-    std::int64_t max_points = 1000000;
-    if (const char* text = std::getenv("EXACTMESH_BENCH3_MAX_POINTS")) {
-        max_points = std::clamp<std::int64_t>(std::atoll(text), 1000, 4000000);
-    }
     std::vector<std::int64_t> out;
-    for (std::int64_t n = 1000; n <= max_points; n *= 10) {
+    for (std::int64_t n = 1000; n <= max_points(); n *= 10) {
         out.push_back(n);
-        if (3 * n <= max_points) out.push_back(3 * n);
+        if (3 * n <= max_points()) out.push_back(3 * n);
     }
     return out;
 }
@@ -245,6 +267,14 @@ void register_all() {
         for (const std::int64_t n : ns) b->Arg(n);
         b->Complexity(benchmark::oNLogN)->Unit(benchmark::kMillisecond);
     };
+    // The strong-scaling rows: the scaling sizes only, wall-clock time, no complexity fit (two or
+    // three sizes).
+    const std::vector<std::int64_t> scaling_ns = scaling_sizes(max_points());
+    auto apply_scaling = [&scaling_ns](benchmark::internal::Benchmark* b) {
+        for (const std::int64_t n : scaling_ns) b->Arg(n);
+        b->UseRealTime()->Unit(benchmark::kMillisecond);
+    };
+    const unsigned max_threads = max_bench_threads();
     for (const Distribution3 distribution : {Distribution3::Uniform, Distribution3::Gaussian}) {
         const std::string points(gen::distribution_name(distribution));
         for (const char* algorithm : {"bowyer-watson", "green-sibson"}) {
@@ -254,18 +284,24 @@ void register_all() {
                                                &bm_exactmesh, std::string(algorithm), distribution,
                                                1u));
         }
-        apply(benchmark::RegisterBenchmark(("BM_bowyer_watson_2_threads/" + points).c_str(),
-                                           &bm_exactmesh, std::string("bowyer-watson"),
-                                           distribution, 2u)
-                  ->UseRealTime());
 #if defined(EXACTMESH_WITH_CGAL)
         apply(benchmark::RegisterBenchmark(("BM_cgal/" + points).c_str(), &bm_cgal, distribution));
-#if defined(CGAL_LINKED_WITH_TBB)
-        apply(benchmark::RegisterBenchmark(("BM_cgal_parallel_2_threads/" + points).c_str(),
-                                           &bm_cgal_parallel, distribution, 2)
-                  ->UseRealTime());
 #endif
+        if (scaling_ns.empty()) continue;
+        for (unsigned threads = 1; threads <= max_threads; ++threads) {
+            // Appended rather than "_" + to_string(...): GCC 12 -O3 warns (-Wrestrict, a false
+            // positive) on operator+ of a literal and a temporary string.
+            std::string suffix = "_";
+            suffix += std::to_string(threads) + "_threads/" + points;
+            apply_scaling(benchmark::RegisterBenchmark(("BM_bowyer_watson" + suffix).c_str(),
+                                                       &bm_exactmesh, std::string("bowyer-watson"),
+                                                       distribution, threads));
+#if defined(EXACTMESH_WITH_CGAL) && defined(CGAL_LINKED_WITH_TBB)
+            apply_scaling(benchmark::RegisterBenchmark(("BM_cgal_parallel" + suffix).c_str(),
+                                                       &bm_cgal_parallel, distribution,
+                                                       static_cast<int>(threads)));
 #endif
+        }
     }
 }
 
@@ -279,5 +315,7 @@ int main(int argc, char** argv) {
     benchmark::AddCustomContext("exactmesh_input_seed", std::to_string(kInputSeed));
     exactmesh::bench::add_peak_memory_context();
     exactmesh::bench::add_cgal_context();
+    exactmesh::bench::add_threads_context();
+    benchmark::AddCustomContext("exactmesh_max_points", std::to_string(max_points()));
     return exactmesh::bench::run_benchmarks_with_default_min_time(argc, argv);
 }

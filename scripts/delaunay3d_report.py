@@ -9,7 +9,10 @@ Usage:
 Reads benchmarks named BM_<algo>/<distribution>/<n> (raw repetitions; medians of the CPU time
 computed here) and writes --out-dir/delaunay3d.md: per distribution, median seconds of
 Bowyer-Watson, Green-Sibson and CGAL's Delaunay_triangulation_3 at each n with the speedup over
-CGAL (CGAL time / ours) and peak heap bytes per point; the least-squares exponent of time vs n.
+CGAL (CGAL time / ours) and peak heap bytes per point; the least-squares exponent of time vs n;
+with the rows BM_<algo>_<T>_threads (issue 17), the strong-scaling table of ours on 1..T threads
+beside CGAL's Parallel_tag triangulation on as many, and its plots delaunay3d_scaling_time.png and
+delaunay3d_scaling_efficiency.png (delaunay_scaling.py).
 Exits 1 when a benchmark reported an error, after writing.
 """
 
@@ -20,6 +23,8 @@ import os
 import statistics
 import sys
 from collections import defaultdict
+
+from delaunay_scaling import scaling_section  # scripts/, beside this one
 
 UNIT = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
 ALGOS = ["bowyer_watson", "green_sibson", "cgal"]
@@ -51,7 +56,8 @@ def main():
         key = (parts[0][3:], parts[1], int(parts[2]))
         times[key].append(b["cpu_time"] * UNIT[b["time_unit"]])
         heap[key] = b.get("peak_bytes/pt")
-    med = {k: statistics.median(v) for k, v in times.items()}
+    # The one-thread families; the strong-scaling rows (BM_<algo>_<T>_threads) have their section.
+    med = {k: statistics.median(v) for k, v in times.items() if k[0] in ALGOS}
     out = ["# 3D Delaunay construction\n",
            f"From `{os.path.basename(args.json)}` (host {data['context'].get('host_name', '?')}, "
            f"{data['context'].get('date', '')}). Median CPU seconds of the repetitions; speedup = CGAL's "
@@ -76,10 +82,12 @@ def main():
             if len(pts) >= 2:
                 exps.append(f"{a} {slope(pts):.3f}")
         out.append("Fitted exponent k of time ~ n^k: " + ", ".join(exps) + ".\n")
+    os.makedirs(args.out_dir, exist_ok=True)
+    scaling_section(data["benchmarks"], out, args.out_dir, "delaunay3d", "cgal_parallel",
+                    "CGAL Parallel_tag", same_threads=True)
     if errors:
         out.append("## Errors\n")
         out += [f"- {e}" for e in errors]
-    os.makedirs(args.out_dir, exist_ok=True)
     with open(os.path.join(args.out_dir, "delaunay3d.md"), "w") as f:
         f.write("\n".join(out) + "\n")
     for e in errors:

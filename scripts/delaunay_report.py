@@ -17,6 +17,9 @@ the CPU time, or medians computed here from raw runs), and writes into --out-dir
   delaunay2d_time.png       log-log time vs N, every algorithm and CGAL;
   delaunay2d_ratio.png      time ours / CGAL vs N;
   delaunay2d_parabola.png   the parabola, given (sorted) vs random order;
+  delaunay2d_scaling_time.png, delaunay2d_scaling_efficiency.png (with the rows
+                            BM_bowyer_watson_<T>_threads): strong scaling on 1..T threads beside
+                            CGAL's sequential construction, with its table (delaunay_scaling.py);
   gaussian_200_green_sibson.svg (with --bench and --cli): 200 Gaussian points written as a .node
                             by the bench's helper mode, triangulated by `exactmesh triangulate`.
 Exits 1 when a benchmark reported an error or the triangle counts disagree, after writing.
@@ -30,11 +33,10 @@ import statistics
 import subprocess
 import sys
 
-import matplotlib
+from matplotlib.ticker import FuncFormatter
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
-from matplotlib.ticker import FuncFormatter  # noqa: E402
+from delaunay_scaling import scaling_section  # scripts/, beside this one
+from report_plots import finish_axes, plt, save_figure
 
 DISTRIBUTIONS = ["uniform", "gaussian"]
 # (algo, order) families in table order; cgal last.
@@ -462,20 +464,6 @@ def cross_check(res, out):
 # ------------------------------------------------------------------------------------------
 # Plots
 
-def finish_axes(ax, title):
-    """What every panel has: its title, N on the x axis, a grid and the legend."""
-    ax.set_title(title)
-    ax.set_xlabel("N (points)")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8, loc="upper left")
-
-
-def save_figure(fig, path):
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-
-
 def plot_time(res, path):
     fig, axes = plt.subplots(1, len(DISTRIBUTIONS), figsize=(13, 5.2), sharey=True)
     for ax, dist in zip(axes, DISTRIBUTIONS):
@@ -591,6 +579,8 @@ def main():
     out.append("")
     headline(res, out)
     time_tables(res, out)
+    scaling_section(data.get("benchmarks", []), out, args.out_dir, "delaunay2d", "cgal", "CGAL",
+                    same_threads=False)
     exponent_tables(res, out)
     counter_tables(res, out)
     tanemura_merriam_table(res, out)
