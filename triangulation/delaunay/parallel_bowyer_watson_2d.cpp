@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <thread>
@@ -31,6 +32,12 @@ namespace {
 
 using predicates::Sign;
 
+/// Flags of Shared::hints, above the triangle index (a triangle beyond kHintIndex, past about
+/// 5·10^8 points, is not kept as a hint).
+constexpr TriIdx kHintIndex = 0x3FFFFFFFu;
+constexpr TriIdx kHintStart = 0x40000000u;      ///< the triangle is the point's worker's
+constexpr TriIdx kHintElsewhere = 0x80000000u;  ///< it is not
+
 /// What the threads share. During a pass each thread writes only: tv and twin of triangles of
 /// its partition (and slots of its own free list and fresh range), the twin half-edge of a
 /// mixed triangle facing its cavity, and merged_into of its own points.
@@ -48,6 +55,9 @@ struct Shared {
     /// Per vertex (+1 for kInfinite): the new triangle on edge v -> * of the current insertion.
     /// A worker writes only the entries of cavity boundary vertices, which are in its range.
     std::vector<TriIdx>* starting_at = nullptr;
+    /// Per mesh vertex: where the last attempt to insert it stopped (kNone: not tried yet),
+    /// written by the thread that tried it, read in a later pass (Worker::classify_hints).
+    std::vector<TriIdx>* hints = nullptr;
 };
 
 enum class Outcome { Inserted, Merged, Deferred };
@@ -150,9 +160,9 @@ struct alignas(128) Worker {
 
     /// Visibility walk from `last` (as Delaunay2Core::walk_to) that gives up on leaving the
     /// partition: then kNone, and `last` becomes the last triangle of ours it crossed.
-    TriIdx walk(const Shared& shared, VertIdx p) {
+    TriIdx walk(const Shared& shared, VertIdx p, TriIdx from) {
         const TriMesh2& mesh = shared.mesh;
-        TriIdx t = last;
+        TriIdx t = from;
         if (mesh.is_infinite(t)) {
             // Only the sequential worker owns infinite triangles: step across the hull edge.
             for (unsigned k = 0; k < 3; ++k) {
@@ -193,9 +203,17 @@ struct alignas(128) Worker {
     /// stay in the partition; else changes nothing and returns Deferred.
     Outcome insert(Shared& shared, VertIdx p) {
         TriMesh2& mesh = shared.mesh;
-        if (last == kNone) return Outcome::Deferred;
-        const TriIdx seed = walk(shared, p);
-        if (seed == kNone) return Outcome::Deferred;
+        TriIdx& hint = (*shared.hints)[p];
+        if (!owns_all && hint != kNone && (hint & kHintElsewhere) != 0) {
+            return Outcome::Deferred;  // it lies next to another partition's triangles
+        }
+        const TriIdx from = start_for(shared, p);
+        if (from == kNone) return Outcome::Deferred;
+        const TriIdx seed = walk(shared, p, from);
+        if (seed == kNone) {
+            if (last <= kHintIndex) hint = last;  // where the walk stopped
+            return Outcome::Deferred;
+        }
         if (!mesh.is_infinite(seed)) {
             for (unsigned k = 0; k < 3; ++k) {
                 const VertIdx v = mesh.tv[3 * seed + k];
@@ -236,6 +254,7 @@ struct alignas(128) Worker {
                 if (conflict(shared, u, p)) {
                     if (!owns(shared, u)) {
                         last = seed;  // ours and untouched: near the next points
+                        if (seed <= kHintIndex) hint = seed;
                         return Outcome::Deferred;
                     }
                     stamp[u] = mark;
@@ -271,6 +290,51 @@ struct alignas(128) Worker {
         }
         last = created.front();
         return Outcome::Inserted;
+    }
+
+    /// A triangle of ours p's walk may start from: `last` or, when nearer to p (a guess from
+    /// rounded coordinates: any start gives the same insertion), where p's last attempt
+    /// stopped; kNone when neither may. A point deferred along one curve's border is tried next
+    /// along the other curve, far from the last point there.
+    TriIdx start_for(const Shared& shared, VertIdx p) const {
+        const TriMesh2& mesh = shared.mesh;
+        const TriIdx hint = (*shared.hints)[p];
+        if (hint != kNone && (owns_all || (hint & kHintStart) != 0)) {
+            const TriIdx h = hint & kHintIndex;
+            // Ours at the pass's start, so only this thread has changed it since.
+            if (!mesh.is_dead(h) && owns(shared, h)) {
+                if (last == kNone) return h;
+                return distance_to(shared, h, p) < distance_to(shared, last, p) ? h : last;
+            }
+        }
+        return last;
+    }
+
+    /// The larger coordinate difference between p and a finite corner of t (no overflow to a
+    /// decision: only a choice between two starts).
+    static double distance_to(const Shared& shared, TriIdx t, VertIdx p) {
+        const TriMesh2& mesh = shared.mesh;
+        const VertIdx* v = &mesh.tv[3 * t];
+        const double* a = mesh.point(v[0] != kInfinite ? v[0] : v[1]);
+        const double* q = mesh.point(p);
+        return std::max(std::fabs(a[0] - q[0]), std::fabs(a[1] - q[1]));
+    }
+
+    /// Before a pass, with every thread only reading: the hint of each of this pass's points
+    /// flagged kHintStart when that triangle is this partition's (then only this thread changes
+    /// it during the pass), else kHintElsewhere (p lies next to another partition's or mixed
+    /// triangles: it waits without walking); dropped when the triangle is dead.
+    void classify_hints(Shared& shared) const {
+        std::vector<TriIdx>& hints = *shared.hints;
+        for (const VertIdx p : points) {
+            if (hints[p] == kNone) continue;
+            const TriIdx t = hints[p] & kHintIndex;
+            if (shared.mesh.is_dead(t)) {
+                hints[p] = kNone;
+            } else {
+                hints[p] = t | (owns(shared, t) ? kHintStart : kHintElsewhere);
+            }
+        }
     }
 
     /// Inserts this pass's points from points[start] (whose walk found `last` in the
@@ -381,6 +445,8 @@ class ParallelConstruction {
         starting_at_.assign(n + 1, kNone);
         shared_.starting_at = &starting_at_;
         shared_.stamp = &stamp_;
+        hints_.assign(n, kNone);
+        shared_.hints = &hints_;
         sequential_.owns_all = true;
         restart_marks();
     }
@@ -459,6 +525,7 @@ class ParallelConstruction {
         for (Worker& worker : workers_) {
             find_start(worker);
         }
+        runner_.run(arena_, count, [&](std::size_t w) { workers_[w].classify_hints(shared_); });
         const auto started = std::chrono::steady_clock::now();
         runner_.run(arena_, count, [&](std::size_t w) { workers_[w].run(shared_); });
         core_.counters.parallel_microseconds += detail::microseconds_since(started);
@@ -517,6 +584,7 @@ class ParallelConstruction {
     TriIdx high_water_ = 0;
     detail::PartitionRunner runner_;
     std::vector<TriIdx> starting_at_;
+    std::vector<TriIdx> hints_;
     Shared shared_;
     std::vector<Worker> workers_;
     Worker sequential_;
