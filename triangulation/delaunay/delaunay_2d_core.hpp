@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "base/stopwatch.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/sign.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
@@ -18,12 +19,7 @@ namespace exactmesh::triangulation::detail {
 
 using predicates::Sign;
 
-/// Wall-clock microseconds since `start`, for the *_microseconds phase counters.
-inline std::uint64_t microseconds_since(std::chrono::steady_clock::time_point start) {
-    return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
-                                          std::chrono::steady_clock::now() - start)
-                                          .count());
-}
+using exactmesh::microseconds_since;
 
 class Delaunay2Core {
   public:

@@ -61,9 +61,14 @@ struct Delaunay3Counters {
     std::uint64_t parallel_points = 0;    ///< parallel: points inserted (or merged) by the threads
     std::uint64_t deferred_points = 0;  ///< parallel: insertions put off (a point may count twice)
     std::uint64_t sequential_tail = 0;  ///< parallel: deferred points inserted at the end
-    /// Parallel: wall-clock microseconds of the threads' passes (measured, not work: it differs
-    /// from run to run).
-    std::uint64_t parallel_microseconds = 0;
+    // Wall-clock phases (sequential and parallel bowyer-watson; green-sibson: order, sequential
+    // and result), in microseconds: measured, not work, they differ from run to run.
+    std::uint64_t order_microseconds = 0;  ///< validation, BRIO order (parallel: also mesh arrays)
+    std::uint64_t keys_microseconds = 0;   ///< parallel: the curves' keys by mesh vertex
+    std::uint64_t sequential_microseconds = 0;  ///< one-thread insertions (parallel: prefix, tail)
+    std::uint64_t partition_microseconds = 0;   ///< parallel: merging, sorting, ranges, starts
+    std::uint64_t parallel_microseconds = 0;    ///< parallel: the threads' passes
+    std::uint64_t result_microseconds = 0;      ///< numbering and compaction of the result
 };
 
 /// The name table of Delaunay3Counters (base/counter_table.hpp): --stats prints it in this order.
@@ -71,7 +76,8 @@ inline constexpr std::array kDelaunay3CounterNames = EM_COUNTER_TABLE(
     Delaunay3Counters, points, duplicates, orient_calls, insphere_calls, walk_steps, cavity_tets,
     outside_hull, splits_1_4, splits_2_6, splits_edge, flips_2_3, flips_3_2, flips_4_4, unflippable,
     threads, sequential_prefix, parallel_rounds, parallel_points, deferred_points, sequential_tail,
-    parallel_microseconds);
+    order_microseconds, keys_microseconds, sequential_microseconds, partition_microseconds,
+    parallel_microseconds, result_microseconds);
 static_assert(counter_table_complete(kDelaunay3CounterNames));
 
 /// The Delaunay tetrahedralization in the caller's vertex numbering. When fewer than four

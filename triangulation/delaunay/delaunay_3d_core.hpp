@@ -6,10 +6,12 @@
 // cavities with its own, specialised copy), and the conversion to the caller's numbering.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "base/stopwatch.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/sign.hpp"
@@ -180,9 +182,13 @@ class Delaunay3Core {
 /// merged (coplanar_result).
 template <class Inserter>
 Delaunay3Result insert_incrementally(std::span<const double> xyz, const Delaunay3Options& options) {
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point phase = Clock::now();
     Delaunay3Core core(xyz, options);
+    core.counters.order_microseconds = microseconds_since(phase);
     std::vector<bool> skip;
     if (!core.make_first_tet(skip)) return core.coplanar_result(xyz);
+    phase = Clock::now();
     Inserter inserter(core);
     ProgressCounter progress(options.progress, core.mesh.vertex_count(), "points inserted");
     for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
@@ -192,7 +198,11 @@ Delaunay3Result insert_incrementally(std::span<const double> xyz, const Delaunay
         inserter.insert(p, where);
         progress.tick();
     }
-    return core.take_result(xyz);
+    core.counters.sequential_microseconds = microseconds_since(phase);
+    phase = Clock::now();
+    Delaunay3Result result = core.take_result(xyz);
+    result.counters.result_microseconds = microseconds_since(phase);
+    return result;
 }
 
 }  // namespace exactmesh::triangulation::detail

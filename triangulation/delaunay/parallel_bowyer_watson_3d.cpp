@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "base/stopwatch.hpp"
 #include "triangulation/delaunay/bowyer_watson_3d_cavity.hpp"
 #include "triangulation/delaunay/delaunay_3d_core.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
@@ -402,13 +403,10 @@ class ParallelConstruction3 {
             }
             find_start(worker);
         }
-        runner_.run(arena_, workers_.size(), [&](std::size_t w) { workers_[w]->classify_hints(); });
         const auto started = std::chrono::steady_clock::now();
+        runner_.run(arena_, workers_.size(), [&](std::size_t w) { workers_[w]->classify_hints(); });
         runner_.run(arena_, workers_.size(), [&](std::size_t w) { workers_[w]->run(); });
-        core_.counters.parallel_microseconds +=
-            static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::microseconds>(
-                                           std::chrono::steady_clock::now() - started)
-                                           .count());
+        core_.counters.parallel_microseconds += microseconds_since(started);
         std::vector<VertIdx> deferred;
         for (const std::unique_ptr<Worker3>& worker : workers_) {
             for (std::size_t i = worker->deferred.size(); i < worker->points.size(); ++i)
@@ -473,6 +471,8 @@ class ParallelConstruction3 {
 Delaunay3Result parallel_bowyer_watson_3d(std::span<const double> xyz,
                                           const Delaunay3Options& options, unsigned threads) {
     EM_ASSERT(threads >= 1);
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point phase = Clock::now();
     // More partitions than hardware threads still give the same tetrahedra; the arena only
     // runs them on the threads there are.
     tbb::task_arena arena(
@@ -480,6 +480,7 @@ Delaunay3Result parallel_bowyer_watson_3d(std::span<const double> xyz,
     validate_points_3d(xyz);
     Prepared prepared = prepare(xyz, options.seed, threads, arena);
     detail::Delaunay3Core core(xyz, std::move(prepared.order), 0);
+    core.counters.order_microseconds = microseconds_since(phase);
     core.counters.threads = threads;
     std::vector<bool> skip;
     if (!core.make_first_tet(skip)) return core.coplanar_result(xyz);
@@ -488,17 +489,30 @@ Delaunay3Result parallel_bowyer_watson_3d(std::span<const double> xyz,
     const detail::BrioRounds rounds =
         detail::brio_rounds(n, threads, options.parallel_round_minimum);
 
+    phase = Clock::now();
     ParallelConstruction3 construction(core, progress, threads, arena, prepared);
     prepared = Prepared{};
+    core.counters.keys_microseconds = microseconds_since(phase);
+    phase = Clock::now();
     const std::vector<VertIdx> prefix = detail::unskipped_vertices(skip, 0, rounds.prefix_end);
     construction.insert_sequentially(prefix);
     core.counters.sequential_prefix = prefix.size();
+    const std::uint64_t sequential = microseconds_since(phase);
 
+    phase = Clock::now();
     const std::vector<VertIdx> pending = detail::run_parallel_rounds(construction, rounds, skip);
+    // The rounds' time less the threads' passes: what the calling thread does alone.
+    core.counters.partition_microseconds =
+        microseconds_since(phase) - core.counters.parallel_microseconds;
+    phase = Clock::now();
     construction.insert_sequentially(pending);
     core.counters.sequential_tail = pending.size();
     construction.finish();
-    return core.take_result(xyz);
+    core.counters.sequential_microseconds = sequential + microseconds_since(phase);
+    phase = Clock::now();
+    Delaunay3Result result = core.take_result(xyz);
+    result.counters.result_microseconds = microseconds_since(phase);
+    return result;
 }
 
 }  // namespace exactmesh::triangulation
