@@ -257,27 +257,19 @@ TriIdx Delaunay2Core::walk_to(VertIdx p) {
     return t;
 }
 
-Delaunay2Result Delaunay2Core::take_result() {
+Delaunay2Result Delaunay2Core::take_result(std::size_t chunks, const ChunkRunner& run) {
     Delaunay2Result out;
     out.counters = counters;
     std::vector<VertIdx>& first = input_index;  // mesh vertex -> reported caller index
     if (counters.duplicates > 0) report_first_occurrence(merged_into, first);
     out.merged_into = std::move(merged_into);
     // Number the finite triangles, then compact tv and twin in place (output index <= slot).
-    const std::uint32_t slots = mesh.triangle_slots();
     std::vector<TriIdx> output_index;
-    const TriIdx count = number_finite_cells(mesh, slots, output_index);
-    for (TriIdx t = 0; t < slots; ++t) {
-        const TriIdx o = output_index[t];
-        if (o == kNone) continue;
-        for (unsigned k = 0; k < 3; ++k) {
-            const VertIdx v = mesh.tv[3 * t + k];
-            const EdgeIdx across = mesh.twin[3 * t + k];
-            const TriIdx neighbor = across == kNone ? kNone : output_index[triangle_of(across)];
-            mesh.tv[3 * o + k] = first[v];
-            mesh.twin[3 * o + k] = neighbor;
-        }
-    }
+    const TriIdx count =
+        compact_cells<3>(mesh, mesh.tv, mesh.twin, first, output_index, mesh.triangle_slots(),
+                         chunks, run, [&output_index](EdgeIdx across) {
+                             return across == kNone ? kNone : output_index[triangle_of(across)];
+                         });
     mesh.tv.resize(3 * static_cast<std::size_t>(count));
     mesh.twin.resize(3 * static_cast<std::size_t>(count));
     out.triangles = std::move(mesh.tv);

@@ -13,6 +13,7 @@
 #include "predicates/incircle.hpp"
 #include "predicates/sign.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
+#include "triangulation/delaunay/result_numbering.hpp"
 #include "triangulation/mesh/mesh2.hpp"
 
 namespace exactmesh::triangulation::detail {
@@ -75,8 +76,9 @@ class Delaunay2Core {
     /// whose hull edge sees p; p may equal one of its vertices. Sets last_triangle.
     TriIdx walk_to(VertIdx p);
 
-    /// The finite triangles in the caller's numbering; consumes the mesh.
-    Delaunay2Result take_result();
+    /// The finite triangles in the caller's numbering; consumes the mesh. The compaction runs
+    /// in `chunks` slot ranges by `run` (compact_cells): the same result for any chunks.
+    Delaunay2Result take_result(std::size_t chunks = 1, const ChunkRunner& run = {});
     /// The result for collinear input (no triangle): only duplicates are detected, by sorting.
     Delaunay2Result collinear_result();
 

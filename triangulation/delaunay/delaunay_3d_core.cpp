@@ -238,26 +238,18 @@ Delaunay3Core::Location Delaunay3Core::locate(VertIdx p) {
     return where;
 }
 
-Delaunay3Result Delaunay3Core::take_result(std::span<const double> xyz) {
+Delaunay3Result Delaunay3Core::take_result(std::span<const double> xyz, std::size_t chunks,
+                                           const ChunkRunner& run) {
     Delaunay3Result out;
     out.counters = counters;
     std::vector<VertIdx>& first = input_index;  // mesh vertex -> reported caller index
     if (counters.duplicates > 0) report_first_occurrence(merged_into, first);
     out.merged_into = std::move(merged_into);
     // Number the finite tetrahedra, then compact tv and adj in place (output index <= slot).
-    const std::uint32_t slots = mesh.tet_slots();
     std::vector<TetIdx>& output_index = star.stamp;  // reused
-    const TetIdx count = number_finite_cells(mesh, slots, output_index);
-    for (TetIdx t = 0; t < slots; ++t) {
-        const TetIdx o = output_index[t];
-        if (o == kNone) continue;
-        for (unsigned k = 0; k < 4; ++k) {
-            const VertIdx v = mesh.tv[4 * std::size_t{t} + k];
-            const FaceIdx across = mesh.adj[4 * std::size_t{t} + k];
-            mesh.tv[4 * std::size_t{o} + k] = first[v];
-            mesh.adj[4 * std::size_t{o} + k] = output_index[tet_of(across)];
-        }
-    }
+    const TetIdx count = compact_cells<4>(
+        mesh, mesh.tv, mesh.adj, first, output_index, mesh.tet_slots(), chunks, run,
+        [&output_index](FaceIdx across) { return output_index[tet_of(across)]; });
     mesh.tv.resize(4 * std::size_t{count});
     mesh.adj.resize(4 * std::size_t{count});
     out.mesh.tets = std::move(mesh.tv);

@@ -16,6 +16,7 @@
 #include "predicates/orient3d.hpp"
 #include "predicates/sign.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
+#include "triangulation/delaunay/result_numbering.hpp"
 #include "triangulation/mesh/flip_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
 
@@ -165,8 +166,10 @@ class Delaunay3Core {
     TetStar3 star;
 
     /// The finite tetrahedra in the caller's numbering, with a copy of the caller's points
-    /// `xyz`; consumes the mesh.
-    Delaunay3Result take_result(std::span<const double> xyz);
+    /// `xyz`; consumes the mesh. The compaction runs in `chunks` slot ranges by `run`
+    /// (compact_cells): the same result for any chunks.
+    Delaunay3Result take_result(std::span<const double> xyz, std::size_t chunks = 1,
+                                const ChunkRunner& run = {});
     /// The result for coplanar input (no tetrahedron): only duplicates are detected, by sorting.
     Delaunay3Result coplanar_result(std::span<const double> xyz);
 

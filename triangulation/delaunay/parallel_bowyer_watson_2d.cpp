@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <thread>
 #include <vector>
@@ -637,7 +638,11 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     construction.trim();
     construction.finish_counters();
     phase = Clock::now();
-    Delaunay2Result result = core.take_result();
+    detail::PartitionRunner runner;
+    Delaunay2Result result = core.take_result(
+        threads, [&](std::size_t count, const std::function<void(std::size_t)>& body) {
+            runner.run(arena, count, body);
+        });
     result.counters.result_microseconds = detail::microseconds_since(phase);
     return result;
 }

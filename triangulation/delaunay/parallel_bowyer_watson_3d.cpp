@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -510,7 +511,11 @@ Delaunay3Result parallel_bowyer_watson_3d(std::span<const double> xyz,
     construction.finish();
     core.counters.sequential_microseconds = sequential + microseconds_since(phase);
     phase = Clock::now();
-    Delaunay3Result result = core.take_result(xyz);
+    detail::PartitionRunner runner;
+    Delaunay3Result result = core.take_result(
+        xyz, threads, [&](std::size_t count, const std::function<void(std::size_t)>& body) {
+            runner.run(arena, count, body);
+        });
     result.counters.result_microseconds = microseconds_since(phase);
     return result;
 }
