@@ -489,9 +489,9 @@ class ParallelConstruction {
         sequential_.fresh_end = sequential_.fresh_next;
     }
 
-    /// One pass: `points` (sorted by the keys of `curve`) cut by `bounds` (T + 1 increasing
-    /// keys of that curve, first 0, last
-    /// 2^32) into the workers' ranges; returns the deferred points, sorted by key.
+    /// One pass: `points` (sorted by the keys of `curve`, from bounds[0] on, wrapping) cut by
+    /// `bounds` (T + 1 increasing keys of that curve, as key_range_bounds) into the workers'
+    /// ranges; returns the deferred points, in the order of `points`.
     std::vector<VertIdx> pass(std::span<const VertIdx> points, int curve,
                               const std::vector<std::uint64_t>& bounds) {
         TriMesh2& mesh = core_.mesh;
@@ -542,8 +542,9 @@ class ParallelConstruction {
     }
 
     /// The ranges of a pass over `points` along `curve`, about equal in points.
-    std::vector<std::uint64_t> bounds(std::span<const VertIdx> points, int curve) const {
-        return detail::key_range_bounds(keys_[curve], points, workers_.size());
+    std::vector<std::uint64_t> bounds(std::span<const VertIdx> points, int curve,
+                                      bool shifted) const {
+        return detail::key_range_bounds(keys_[curve], points, workers_.size(), shifted);
     }
 
     const std::vector<std::uint32_t>& keys(int curve) const { return keys_[curve]; }

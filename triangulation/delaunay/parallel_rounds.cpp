@@ -37,21 +37,22 @@ std::vector<VertIdx> unskipped_vertices(const std::vector<bool>& skip, std::uint
 }
 
 std::vector<std::uint64_t> key_range_bounds(std::span<const std::uint32_t> keys,
-                                            std::span<const VertIdx> points, std::size_t count) {
+                                            std::span<const VertIdx> points, std::size_t count,
+                                            bool shifted) {
     std::vector<std::uint32_t> sorted(points.size());
     for (std::size_t k = 0; k < points.size(); ++k) sorted[k] = keys[points[k]];
-    std::vector<std::uint64_t> out{0};
-    for (std::size_t i = 1; i < count; ++i) {
-        if (points.empty()) {
-            out.push_back(0);
-            continue;
-        }
-        const auto at = std::min(points.size() * i / count, points.size() - 1);
+    // The key at the fraction (2 i + shifted) / (2 count) of the points (0 without points).
+    auto key_at = [&](std::size_t i) -> std::uint64_t {
+        if (points.empty()) return 0;
+        const auto at =
+            std::min(points.size() * (2 * i + shifted) / (2 * count), points.size() - 1);
         std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(at),
                          sorted.end());
-        out.push_back(sorted[at]);
-    }
-    out.push_back(std::uint64_t{1} << 32);
+        return sorted[at];
+    };
+    std::vector<std::uint64_t> out{shifted ? key_at(0) : 0};
+    for (std::size_t i = 1; i < count; ++i) out.push_back(key_at(i));
+    out.push_back(out.front() + (std::uint64_t{1} << 32));
     return out;
 }
 
@@ -59,14 +60,26 @@ std::vector<std::span<const VertIdx>> split_by_bounds(std::span<const std::uint3
                                                       std::span<const VertIdx> points,
                                                       std::span<const std::uint64_t> bounds) {
     std::vector<std::span<const VertIdx>> out;
+    // Keys below the first range's low come after the others (the wrapped range).
+    auto position = [&](VertIdx p) {
+        const std::uint64_t key = keys[p];
+        return key < bounds.front() ? key + (std::uint64_t{1} << 32) : key;
+    };
     std::size_t begin = 0;
     for (std::size_t w = 0; w + 1 < bounds.size(); ++w) {
         std::size_t end = begin;
-        while (end < points.size() && keys[points[end]] < bounds[w + 1]) ++end;
+        while (end < points.size() && position(points[end]) < bounds[w + 1]) ++end;
         out.push_back(points.subspan(begin, end - begin));
         begin = end;
     }
     return out;
+}
+
+void rotate_to_bound(std::span<const std::uint32_t> keys, std::vector<VertIdx>& points,
+                     std::uint64_t low) {
+    const auto first = std::partition_point(points.begin(), points.end(),
+                                            [&](VertIdx p) { return keys[p] < low; });
+    std::rotate(points.begin(), first, points.end());
 }
 
 void sort_by_key(std::span<const std::uint32_t> keys, std::vector<VertIdx>& points) {

@@ -30,10 +30,14 @@ unsigned resolve_thread_count(unsigned threads);
 
 namespace detail {
 
-/// A half-open range of Hilbert keys (64-bit so that the last range can end past 2^32 - 1).
+/// A half-open range of Hilbert keys [low, high) (64-bit so that a range can end past
+/// 2^32 - 1), wrapping around: the last range of a shifted pass ends at its first range's low
+/// plus 2^32, and holds the keys from its low on and those below that first low.
 struct KeyRange {
     std::uint64_t low = 0, high = 0;
-    bool holds(std::uint32_t key) const { return key >= low && key < high; }
+    bool holds(std::uint32_t key) const {
+        return static_cast<std::uint32_t>(key - static_cast<std::uint32_t>(low)) < high - low;
+    }
 };
 
 /// The BRIO rounds as insertion_order made them for n points: [n/2, n), [n/4, n/2), ... down
@@ -51,15 +55,23 @@ std::vector<VertIdx> unskipped_vertices(const std::vector<bool>& skip, std::uint
                                         std::uint32_t end);
 
 /// The keys at the fractions i / count of `points` (i = 1..count-1; keys[v] is v's key), framed
-/// by 0 and 2^32: count ranges about equal in points.
+/// by 0 and 2^32: count ranges about equal in points. `shifted`: the keys at the fractions
+/// (i + 1/2) / count (i = 0..count-1), then the first plus 2^32: ranges whose borders lie
+/// half a range along the curve from the unshifted ones, the last wrapping around.
 std::vector<std::uint64_t> key_range_bounds(std::span<const std::uint32_t> keys,
-                                            std::span<const VertIdx> points, std::size_t count);
+                                            std::span<const VertIdx> points, std::size_t count,
+                                            bool shifted = false);
 
-/// `points` (sorted by keys) cut by `bounds` (count + 1 increasing keys, as key_range_bounds):
-/// the points of each range, in order.
+/// `points` (sorted by keys from bounds[0] on, wrapping: rotate_to_bound) cut by `bounds`
+/// (count + 1 increasing keys, as key_range_bounds): the points of each range, in order.
 std::vector<std::span<const VertIdx>> split_by_bounds(std::span<const std::uint32_t> keys,
                                                       std::span<const VertIdx> points,
                                                       std::span<const std::uint64_t> bounds);
+
+/// Rotates `points` (sorted by (key, vertex)) to start at the first key at least `low` (the
+/// order of a shifted pass, whose ranges start there and wrap around).
+void rotate_to_bound(std::span<const std::uint32_t> keys, std::vector<VertIdx>& points,
+                     std::uint64_t low);
 
 /// Sorts vertices by (key, vertex).
 void sort_by_key(std::span<const std::uint32_t> keys, std::vector<VertIdx>& points);
@@ -141,24 +153,36 @@ void sweep_partition(Sweep& sweep, std::span<const VertIdx> points, std::size_t 
 
 /// The parallel rounds of both dimensions: each round's points, with those still pending from
 /// the round before, in two passes: along curve 0, then the points it deferred along curve 1
-/// (whose ranges' borders lie elsewhere, so that they mostly fall inside a range). Returns the
-/// points still pending after the last round (for the sequential tail), sorted by curve 0's
-/// keys. `construction` provides keys(curve) (per mesh vertex), bounds(points, curve) and
+/// (whose ranges' borders lie elsewhere, so that they mostly fall inside a range). After the
+/// last round, two more passes over what is still pending, along curve 0 and then curve 1 with
+/// their ranges shifted by half a range (the last round's borders then lie inside ranges): 10^6
+/// Gaussian points in 3D left 110,605 points to the sequential tail without them (both curves'
+/// borders cross the dense core), 25,961 with them; uniform points 17,881 and 3,115.
+/// Returns the points still pending (for the sequential tail), sorted by curve 0's keys.
+/// `construction` provides keys(curve) (per mesh vertex), bounds(points, curve, shifted) and
 /// pass(points, curve, bounds) (returns the deferred points).
 template <class Construction>
 std::vector<VertIdx> run_parallel_rounds(Construction& construction, const BrioRounds& rounds,
                                          const std::vector<bool>& skip) {
-    std::vector<VertIdx> pending;
+    std::vector<VertIdx> pending, points;
     for (std::size_t r = rounds.first_parallel; r + 1 < rounds.begin.size(); ++r) {
         const std::vector<VertIdx> round =
             unskipped_vertices(skip, rounds.begin[r], rounds.begin[r + 1]);
-        const std::vector<VertIdx> points = merge_by_key(construction.keys(0), pending, round);
+        points = merge_by_key(construction.keys(0), pending, round);
         std::vector<VertIdx> deferred =
-            construction.pass(points, 0, construction.bounds(points, 0));
+            construction.pass(points, 0, construction.bounds(points, 0, false));
         sort_by_key(construction.keys(1), deferred);
-        pending = construction.pass(deferred, 1, construction.bounds(points, 1));
+        pending = construction.pass(deferred, 1, construction.bounds(points, 1, false));
         sort_by_key(construction.keys(0), pending);
     }
+    for (const int curve : {0, 1}) {
+        if (pending.empty()) break;
+        sort_by_key(construction.keys(curve), pending);
+        const std::vector<std::uint64_t> shifted = construction.bounds(points, curve, true);
+        rotate_to_bound(construction.keys(curve), pending, shifted.front());
+        pending = construction.pass(pending, curve, shifted);
+    }
+    sort_by_key(construction.keys(0), pending);
     return pending;
 }
 

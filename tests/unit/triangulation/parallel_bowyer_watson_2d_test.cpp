@@ -17,6 +17,7 @@
 #include "triangulation/checks/compare_triangulations_2d.hpp"
 #include "triangulation/delaunay/bowyer_watson_2d.hpp"
 #include "triangulation/delaunay/parallel_bowyer_watson_2d.hpp"
+#include "triangulation/delaunay/parallel_rounds.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
 
 namespace tri = exactmesh::triangulation;
@@ -226,4 +227,35 @@ TEST(Triangulation_ParallelBowyerWatson2d, TinyRoundsOnSmallInputs) {
             }
         }
     }
+}
+
+TEST(Triangulation_ParallelRounds, ShiftedRangesWrapAroundTheCurve) {
+    // Keys of 8 points (by mesh vertex), listed sorted by key.
+    const std::vector<std::uint32_t> keys = {10, 20, 30, 40, 50, 60, 70, 80};
+    const std::vector<tri::VertIdx> points = {0, 1, 2, 3, 4, 5, 6, 7};
+    const std::uint64_t wrap = std::uint64_t{1} << 32;
+    // Unshifted: 0, the median, 2^32.
+    EXPECT_EQ(tri::detail::key_range_bounds(keys, points, 2),
+              (std::vector<std::uint64_t>{0, 50, wrap}));
+    // Shifted by half a range: the keys at 1/4 and 3/4, then the first plus 2^32.
+    const std::vector<std::uint64_t> shifted = tri::detail::key_range_bounds(keys, points, 2, true);
+    EXPECT_EQ(shifted, (std::vector<std::uint64_t>{30, 70, 30 + wrap}));
+    const tri::detail::KeyRange first{shifted[0], shifted[1]}, last{shifted[1], shifted[2]};
+    for (const std::uint32_t key : keys) {
+        EXPECT_EQ(first.holds(key), key >= 30 && key < 70) << key;
+        EXPECT_EQ(last.holds(key), !first.holds(key)) << key;  // 70, 80 and, wrapping, 10, 20
+    }
+    EXPECT_TRUE(last.holds(0xFFFFFFFFu));
+    EXPECT_TRUE(tri::detail::KeyRange({0, wrap}).holds(0xFFFFFFFFu));
+    EXPECT_FALSE(tri::detail::KeyRange({0, 50}).holds(50));
+    // The pass's order starts at the first range's low and wraps; the split follows it.
+    std::vector<tri::VertIdx> rotated = points;
+    tri::detail::rotate_to_bound(keys, rotated, shifted[0]);
+    EXPECT_EQ(rotated, (std::vector<tri::VertIdx>{2, 3, 4, 5, 6, 7, 0, 1}));
+    const auto parts = tri::detail::split_by_bounds(keys, rotated, shifted);
+    ASSERT_EQ(parts.size(), 2u);
+    EXPECT_EQ(std::vector<tri::VertIdx>(parts[0].begin(), parts[0].end()),
+              (std::vector<tri::VertIdx>{2, 3, 4, 5}));
+    EXPECT_EQ(std::vector<tri::VertIdx>(parts[1].begin(), parts[1].end()),
+              (std::vector<tri::VertIdx>{6, 7, 0, 1}));
 }
