@@ -2,7 +2,9 @@
 // libFuzzer target: the three 2D Delaunay constructions on up to kMaxPoints fuzzed points. Each
 // output must pass the exact check (triangulation/checks/check_2d) and have mutual neighbours; the
 // three must agree (same count and merged_into; same triangles when no point repeats, by the
-// shared symbolic perturbation); small inputs must match the naive empty-circle oracle
+// shared symbolic perturbation); Bowyer-Watson on 2 threads (parallel_bowyer_watson_2d, parallel
+// rounds from 4 points per thread) must give exactly the sequential brio order's triangles and
+// merged_into; small inputs must match the naive empty-circle oracle
 // (tests/oracles). Non-finite input must make every algorithm throw NonFiniteCoordinate naming
 // the first bad point. Anything else is __builtin_trap().
 //
@@ -174,6 +176,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (!duplicates && tri::canonical_triangles_2d(results[a].triangles) != reference) {
             fail(xy, label(a) + ": triangles differ from " + label(0));
         }
+    }
+    // 2 threads against one, both in the brio order of the same seed (the same kept copies).
+    tri::Delaunay2Options brio{tri::InsertionOrder::Brio, hash >> 8};
+    const tri::Delaunay2Result one_thread = kAlgorithms[0].build(xy, brio);
+    brio.threads = 2;
+    brio.parallel_round_minimum = 4;
+    tri::Delaunay2Result two_threads;
+    try {
+        two_threads = kAlgorithms[0].build(xy, brio);
+    } catch (const std::exception& e) {
+        fail(xy, std::string("bowyer-watson --threads 2 threw on finite input: ") + e.what());
+    }
+    if (tri::canonical_triangles_2d(two_threads.triangles) !=
+            tri::canonical_triangles_2d(one_thread.triangles) ||
+        two_threads.merged_into != one_thread.merged_into) {
+        fail(xy, "bowyer-watson on 2 threads differs from 1 thread");
     }
     if (xy.size() / 2 <= kOracleMaxPoints) {
         const exactmesh::triangulation::NaiveDelaunay2 oracle =
