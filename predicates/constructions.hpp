@@ -112,6 +112,15 @@ std::array<double, 3> circumcenter_exact(const double* a, const double* b, const
 std::array<double, 2> segment_intersection_exact(const double* a, const double* b, const double* c,
                                                  const double* d);
 
+namespace detail {
+/// circumcenter (2D) with the double-double stage's exact products by Dekker's algorithm even
+/// where the CPU has FMA (circumcenter takes one fused multiply-add per product there, chosen
+/// at run time): the same bits, for the tests that compare the two.
+std::array<double, 2> circumcenter_without_fma(const double* a, const double* b, const double* c);
+/// Whether circumcenter (2D) takes FMA products on this CPU.
+bool circumcenter_uses_fma() noexcept;
+}  // namespace detail
+
 /// Per-thread counts of which path the constructions took. Always compiled in: one increment
 /// is negligible beside the expansion arithmetic, and the tests check the documented claim
 /// that the fast path handles nearly all inputs in every build.

@@ -831,6 +831,56 @@ TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTria
     expect_double_double_share("mesh-like", calls, 0.9);
 }
 
+TEST(Predicates_Constructions, FmaAndDekkerProductsGiveTheSameCircumcenters) {
+    // The 2D double-double stage takes its exact products by FMA where the CPU has it (runtime
+    // dispatch) and by Dekker's algorithm elsewhere: both products are exact, so every result,
+    // and every decision to certify, must be the same bits, and the exact path's. Mesh-like
+    // triangles at magnitudes 1e-3 to 1e6 (well shaped and skinny), and right triangles whose
+    // circumcentre (the hypotenuse's midpoint) is a rounding midpoint or a few ulps from one.
+    Inputs in(577215);
+    std::printf("[ fma      ] circumcenter takes FMA products: %s\n",
+                pr::detail::circumcenter_uses_fma() ? "yes" : "no (both paths are Dekker's)");
+    const auto expect_same = [](const P2& a, const P2& b, const P2& c) {
+        if (pr::orient2d(a.data(), b.data(), c.data()) == pr::Sign::Zero) return 0;
+        const P2 dispatched = pr::circumcenter(a.data(), b.data(), c.data());
+        const P2 dekker = pr::detail::circumcenter_without_fma(a.data(), b.data(), c.data());
+        const P2 exact = pr::circumcenter_exact(a.data(), b.data(), c.data());
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(dispatched[0]),
+                  std::bit_cast<std::uint64_t>(dekker[0]));
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(dispatched[1]),
+                  std::bit_cast<std::uint64_t>(dekker[1]));
+        EXPECT_EQ(dispatched, exact);
+        return 1;
+    };
+    pr::reset_construction_stats();
+    int calls = 0;
+    for (const double offset : {1e-3, 0.5, 1.0, 3.0, 1e3, 1e6}) {
+        for (const double spread : {1e-9, 1e-4, 1e-1}) {
+            for (int i = 0; i < 2000; ++i) {
+                const auto near = [&] { return offset + in.uniform() * spread; };
+                P2 a = in.point<2>(near), b = in.point<2>(near), c = in.point<2>(near);
+                if (i % 4 == 3) {  // skinny: c close to the segment ab
+                    const double t = in.uniform(0.0, 1.0);
+                    c = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]) + spread * 1e-3};
+                }
+                calls += expect_same(a, b, c);
+            }
+        }
+    }
+    for (int i = 0; i < 4000; ++i) {
+        // Right angle at c = (a_x, b_y): the centre is ((a_x + b_x) / 2, (a_y + b_y) / 2), a
+        // midpoint between two doubles when the sum's last bit is odd; c moved by up to two ulps
+        // puts the centre just beside it.
+        const double ax = 0.5 + in.uniform() * 0.25, ay = 0.5 + in.uniform() * 0.25;
+        const double bx = ax + std::ldexp(in.integer(1, 4096), -53);
+        const double by = ay + std::ldexp(in.integer(1, 4096), -53);
+        double cx = ax, cy = by;
+        for (int step = 0; step < i % 3; ++step) cx = std::nextafter(cx, i % 2 == 0 ? 0.0 : 1.0);
+        calls += expect_same({ax, ay}, {bx, by}, {cx, cy});
+    }
+    expect_double_double_share("fma and dekker", 2 * calls, 0.5);
+}
+
 TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTetrahedra) {
     // The 3D stage on small tetrahedra at magnitudes from 1e-3 to 1e6, well shaped, flat (d
     // close to the plane of abc) and nearly degenerate in one edge: every result equals the
