@@ -588,6 +588,12 @@ void Refiner::process_touched() {
         }
         next_batch();
     }
+    // The new slots' stamps and versions are cold (a cavity's slots are anywhere in the arrays):
+    // asked for all at once, their cache misses overlap instead of stalling one triangle each.
+    for (const TriIdx t : cdt_.touched()) {
+        __builtin_prefetch(&seen_[t], 1);
+        __builtin_prefetch(&version_[t], 1);
+    }
     for (const TriIdx t : cdt_.touched()) {
         if (seen_[t] == batch_) continue;
         seen_[t] = batch_;
