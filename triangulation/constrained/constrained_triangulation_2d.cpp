@@ -165,6 +165,9 @@ void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
 
 CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
     EM_ASSERT(cdt.domain_marked() && !cdt.mesh.is_dead(t) && !cdt.mesh.is_infinite(t));
+    // t's constraints are read first in the growth below (cold: cache misses, as the stamps
+    // and neighbours, see there).
+    __builtin_prefetch(&cdt.segment_of[3 * t]);
     cdt.encroached_edges.clear();
     const VertIdx p = cdt.add_vertex(x, y);
     auto reject = [&](CavityInsertion why) {
@@ -209,7 +212,8 @@ CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
                 }
                 cdt.cavity_stamp[u] = cdt.stamp;
                 cdt.cavity.push_back(u);
-                __builtin_prefetch(&cdt.mesh.twin[3 * u]);  // read when u's turn comes
+                __builtin_prefetch(&cdt.mesh.twin[3 * u]);  // both read when u's turn comes
+                __builtin_prefetch(&cdt.segment_of[3 * u]);
             } else {
                 cdt.boundary.push_back(e);
             }
