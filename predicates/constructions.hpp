@@ -14,7 +14,10 @@
 //    whatever their differences, kept as exact double-doubles when they round): double-double
 //    arithmetic with a proven error bound (constructions.cpp), accepted when the exact value
 //    cannot lie beyond a midpoint of the candidate: ~20x cheaper than the fast path below,
-//    which decides whatever it leaves.
+//    which decides whatever it leaves. In 2D it runs before the input checks (its certificate
+//    implies finite, non-collinear points) and takes its exact products by FMA where the CPU
+//    has it (runtime dispatch; Dekker's elsewhere, the same bits): ~560 instructions a call
+//    with FMA, ~1,010 without.
 //  - Fast path, when detail::expansion_safe(degree, inputs) holds: |coordinates| <= 2^331 (2D,
 //    degree 3) or 2^248 (3D, degree 4) and no product of `degree` factors underflows. Each
 //    coordinate is num / den with num, den determinants in the raw doubles (degree 3 over 2 in
@@ -111,6 +114,15 @@ std::array<double, 3> circumcenter_exact(const double* a, const double* b, const
                                          const double* d);
 std::array<double, 2> segment_intersection_exact(const double* a, const double* b, const double* c,
                                                  const double* d);
+
+namespace detail {
+/// circumcenter (2D) with the double-double stage's exact products by Dekker's algorithm even
+/// where the CPU has FMA (circumcenter takes one fused multiply-add per product there, chosen
+/// at run time): the same bits, for the tests that compare the two.
+std::array<double, 2> circumcenter_without_fma(const double* a, const double* b, const double* c);
+/// Whether circumcenter (2D) takes FMA products on this CPU.
+bool circumcenter_uses_fma() noexcept;
+}  // namespace detail
 
 /// Per-thread counts of which path the constructions took. Always compiled in: one increment
 /// is negligible beside the expansion arithmetic, and the tests check the documented claim

@@ -749,6 +749,34 @@ TEST(Predicates_Constructions, FastPathCertifiesNearlyAllRandomInputs) {
     EXPECT_EQ(pr::construction_stats().fast, 0u);
 }
 
+/// Small triangles as a mesh generator makes them: `count` for each magnitude (offsets 1e-3 to
+/// 1e6) and spread (1e-9 to 1e-1), every fourth skinny (c close to the segment ab), each passed
+/// to visit(a, b, c), which returns false to stop.
+template <class Visit>
+void for_mesh_like_triangles(Inputs& in, int count, const Visit& visit) {
+    for (const double offset : {1e-3, 0.5, 1.0, 3.0, 1e3, 1e6}) {
+        for (const double spread : {1e-9, 1e-4, 1e-1}) {
+            for (int i = 0; i < count; ++i) {
+                const auto near = [&] { return offset + in.uniform() * spread; };
+                P2 a = in.point<2>(near), b = in.point<2>(near), c = in.point<2>(near);
+                if (i % 4 == 3) {
+                    const double t = in.uniform(0.0, 1.0);
+                    c = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]) + spread * 1e-3};
+                }
+                if (!visit(a, b, c)) return;
+            }
+        }
+    }
+}
+
+/// The call, coordinates in hexadecimal floating point (they round-trip).
+std::string call_text(const P2& a, const P2& b, const P2& c) {
+    char text[200];
+    std::snprintf(text, sizeof text, "circumcenter((%a, %a), (%a, %a), (%a, %a))", a[0], a[1], b[0],
+                  b[1], c[0], c[1]);
+    return text;
+}
+
 /// Prints the construction counters of a mesh-like run of `calls` calls and checks that every
 /// call was counted and at least `share` of them certified by the double-double stage.
 void expect_double_double_share(const char* label, int calls, double share) {
@@ -811,24 +839,54 @@ TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTria
     Inputs in(314159);
     pr::reset_construction_stats();
     int calls = 0;
-    for (const double offset : {1e-3, 0.5, 1.0, 3.0, 1e3, 1e6}) {
-        for (const double spread : {1e-9, 1e-4, 1e-1}) {
-            for (int i = 0; i < 4000; ++i) {
-                const auto near = [&] { return offset + in.uniform() * spread; };
-                P2 a = in.point<2>(near), b = in.point<2>(near), c = in.point<2>(near);
-                if (i % 4 == 3) {  // skinny: c close to the segment ab
-                    const double t = in.uniform(0.0, 1.0);
-                    c = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]) + spread * 1e-3};
-                }
-                if (pr::orient2d(a.data(), b.data(), c.data()) == pr::Sign::Zero) continue;
-                ++calls;
-                ASSERT_EQ(pr::circumcenter(a.data(), b.data(), c.data()),
-                          pr::circumcenter_exact(a.data(), b.data(), c.data()))
-                    << offset << " " << spread << " " << i;
-            }
-        }
-    }
+    for_mesh_like_triangles(in, 4000, [&](const P2& a, const P2& b, const P2& c) {
+        if (pr::orient2d(a.data(), b.data(), c.data()) == pr::Sign::Zero) return true;
+        ++calls;
+        const P2 fast = pr::circumcenter(a.data(), b.data(), c.data());
+        const P2 exact = pr::circumcenter_exact(a.data(), b.data(), c.data());
+        EXPECT_EQ(fast, exact) << call_text(a, b, c);
+        return fast == exact;
+    });
     expect_double_double_share("mesh-like", calls, 0.9);
+}
+
+TEST(Predicates_Constructions, FmaAndDekkerProductsGiveTheSameCircumcenters) {
+    // The 2D double-double stage takes its exact products by FMA where the CPU has it (runtime
+    // dispatch) and by Dekker's algorithm elsewhere: both products are exact, so every result,
+    // and every decision to certify, must be the same bits, and the exact path's. Mesh-like
+    // triangles at magnitudes 1e-3 to 1e6 (well shaped and skinny), and right triangles whose
+    // circumcentre (the hypotenuse's midpoint) is a rounding midpoint or a few ulps from one.
+    Inputs in(577215);
+    std::printf("[ fma      ] circumcenter takes FMA products: %s\n",
+                pr::detail::circumcenter_uses_fma() ? "yes" : "no (both paths are Dekker's)");
+    int calls = 0;
+    const auto expect_same = [&](const P2& a, const P2& b, const P2& c) {
+        if (pr::orient2d(a.data(), b.data(), c.data()) == pr::Sign::Zero) return true;
+        ++calls;
+        const P2 dispatched = pr::circumcenter(a.data(), b.data(), c.data());
+        const P2 dekker = pr::detail::circumcenter_without_fma(a.data(), b.data(), c.data());
+        const P2 exact = pr::circumcenter_exact(a.data(), b.data(), c.data());
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(dispatched[0]),
+                  std::bit_cast<std::uint64_t>(dekker[0]));
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(dispatched[1]),
+                  std::bit_cast<std::uint64_t>(dekker[1]));
+        EXPECT_EQ(dispatched, exact) << call_text(a, b, c);
+        return dispatched == dekker && dispatched == exact;
+    };
+    pr::reset_construction_stats();
+    for_mesh_like_triangles(in, 2000, expect_same);
+    for (int i = 0; i < 4000; ++i) {
+        // Right angle at c = (a_x, b_y): the centre is ((a_x + b_x) / 2, (a_y + b_y) / 2), a
+        // midpoint between two doubles when the sum's last bit is odd; c moved by up to two ulps
+        // puts the centre just beside it.
+        const double ax = 0.5 + in.uniform() * 0.25, ay = 0.5 + in.uniform() * 0.25;
+        const double bx = ax + std::ldexp(in.integer(1, 4096), -53);
+        const double by = ay + std::ldexp(in.integer(1, 4096), -53);
+        double cx = ax, cy = by;
+        for (int step = 0; step < i % 3; ++step) cx = std::nextafter(cx, i % 2 == 0 ? 0.0 : 1.0);
+        if (!expect_same({ax, ay}, {bx, by}, {cx, cy})) break;
+    }
+    expect_double_double_share("fma and dekker", 2 * calls, 0.5);
 }
 
 TEST(Predicates_Constructions, DoubleDoubleStageIsCorrectlyRoundedOnMeshLikeTetrahedra) {
