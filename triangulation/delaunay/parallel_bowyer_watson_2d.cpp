@@ -208,7 +208,7 @@ struct alignas(128) Worker {
         if (!owns_all && hint != kNone && (hint & kHintElsewhere) != 0) {
             return Outcome::Deferred;  // it lies next to another partition's triangles
         }
-        const TriIdx from = start_for(shared, p);
+        const TriIdx from = start_for(shared, p, hint);
         if (from == kNone) return Outcome::Deferred;
         const TriIdx seed = walk(shared, p, from);
         if (seed == kNone) {
@@ -295,11 +295,10 @@ struct alignas(128) Worker {
 
     /// A triangle of ours p's walk may start from: `last` or, when nearer to p (a guess from
     /// rounded coordinates: any start gives the same insertion), where p's last attempt
-    /// stopped; kNone when neither may. A point deferred along one curve's border is tried next
-    /// along the other curve, far from the last point there.
-    TriIdx start_for(const Shared& shared, VertIdx p) const {
+    /// stopped (`hint`, p's entry of the hints); kNone when neither may. A point deferred along one
+    /// curve's border is tried next along the other curve, far from the last point there.
+    TriIdx start_for(const Shared& shared, VertIdx p, TriIdx hint) const {
         const TriMesh2& mesh = shared.mesh;
-        const TriIdx hint = (*shared.hints)[p];
         if (hint != kNone && (owns_all || (hint & kHintStart) != 0)) {
             const TriIdx h = hint & kHintIndex;
             // Ours at the pass's start, so only this thread has changed it since.

@@ -174,7 +174,7 @@ struct alignas(128) Worker3 {
         if (!region.whole && hint != kNone && (hint & kHintElsewhere) != 0) {
             return Outcome::Deferred;  // it lies next to another partition's tetrahedra
         }
-        TetIdx t = start_for(p);
+        TetIdx t = start_for(p, hint);
         if (t == kNone) return Outcome::Deferred;
         const detail::Location3 where = detail::walk_3d(
             mesh, t, p, rng_state, region.work, [this](TetIdx u) { return region.owns(u); });
@@ -203,9 +203,9 @@ struct alignas(128) Worker3 {
     /// start gives the same insertion); kNone when neither may start a walk. A point deferred
     /// along one curve's border is tried next along the other curve, far from the last point
     /// there: its walks took 57 steps on average from the last walk's end (10^6 uniform points).
-    TetIdx start_for(VertIdx p) const {
+    /// `hint`: p's entry of the hints (classified before the pass).
+    TetIdx start_for(VertIdx p, TetIdx hint) const {
         const bool last_ok = region.can_start(region.last_tet);
-        const TetIdx hint = region.shared.hints[p];
         if (hint != kNone && (region.whole || (hint & kHintStart) != 0)) {
             const TetIdx h = hint & kMaxTetSlots;
             if (region.can_start(h)) {
