@@ -200,6 +200,21 @@ const Input& input_with_cgal_points(Distribution3 distribution, std::uint32_t n)
     return input;
 }
 
+/// After a timed CGAL construction `dt`, still alive: pauses the timer (the destructor runs
+/// paused) and, on the first construction of `m`, records its peak heap and tetrahedra.
+template <class Triangulation>
+void record_cgal(benchmark::State& state, Measurement& m, const Triangulation& dt, bool measure,
+                 std::size_t heap_before) {
+    benchmark::DoNotOptimize(dt.number_of_cells());
+    benchmark::ClobberMemory();
+    state.PauseTiming();
+    if (measure) {
+        m.peak_bytes = heap_growth_since(heap_before);
+        m.tets = static_cast<double>(dt.number_of_finite_cells());
+        m.done = true;
+    }
+}
+
 void bm_cgal(benchmark::State& state, Distribution3 distribution) {
     const auto n = static_cast<std::uint32_t>(state.range(0));
     const Input& input = input_with_cgal_points(distribution, n);
@@ -208,15 +223,8 @@ void bm_cgal(benchmark::State& state, Distribution3 distribution) {
         const bool measure = !m.done;
         const std::size_t heap_before = measure ? start_heap_measurement() : 0;
         {
-            CgalDelaunay dt(input.points.begin(), input.points.end());
-            benchmark::DoNotOptimize(dt.number_of_cells());
-            benchmark::ClobberMemory();
-            state.PauseTiming();
-            if (measure) {
-                m.peak_bytes = heap_growth_since(heap_before);
-                m.tets = static_cast<double>(dt.number_of_finite_cells());
-                m.done = true;
-            }
+            const CgalDelaunay dt(input.points.begin(), input.points.end());
+            record_cgal(state, m, dt, measure, heap_before);
         }
         after_construction();
         state.ResumeTiming();
@@ -243,15 +251,8 @@ void bm_cgal_parallel(benchmark::State& state, Distribution3 distribution, int t
         const std::size_t heap_before = measure ? start_heap_measurement() : 0;
         arena.execute([&] {
             CgalParallelDelaunay::Lock_data_structure locks(box, 50);
-            CgalParallelDelaunay dt(input.points.begin(), input.points.end(), &locks);
-            benchmark::DoNotOptimize(dt.number_of_cells());
-            benchmark::ClobberMemory();
-            state.PauseTiming();
-            if (measure) {
-                m.peak_bytes = heap_growth_since(heap_before);
-                m.tets = static_cast<double>(dt.number_of_finite_cells());
-                m.done = true;
-            }
+            const CgalParallelDelaunay dt(input.points.begin(), input.points.end(), &locks);
+            record_cgal(state, m, dt, measure, heap_before);
         });
         after_construction();
         state.ResumeTiming();
