@@ -6,8 +6,11 @@
 // Mavriplis97; DESIGN.md "Benchmarks and reports"; issues 6 and 11].
 //
 // Names: BM_mesh/<mesher>/<domain>/<angle>/<target triangles>; mesher is a registry name, `cgal`,
-// `gmsh-delaunay` or `gmsh-frontal`. <angle> is the minimum-angle bound given, in like-for-like
-// pairs of Delaunay refinement and CGAL:
+// `gmsh-delaunay`, `gmsh-frontal` or `delaunay-refinement-rounds-<T>t` (Delaunay refinement in
+// rounds, RefinementOrder::Rounds, on T = 1 .. EXACTMESH_BENCH_MAX_THREADS threads, default the
+// hardware's; wherever the 30-degree bound is, at 30p32 only, real time: its like-for-like
+// row is delaunay-refinement's 30p32, the worst-first order on one thread). <angle> is the
+// minimum-angle bound given, in like-for-like pairs of Delaunay refinement and CGAL:
 //   delaunay-refinement  <t>        bound t, polish off (polish_angle 0)
 //                        <t>p<P>    bound t, then its polish to P = min(t + 10, 32) (the default)
 //   cgal                 <t>, <P>   CGAL's bound t or P (sin^2 of it is its shape bound)
@@ -146,14 +149,19 @@ void report_quality(benchmark::State& state, std::span<const double> xy,
     }
 }
 
-/// polish: Delaunay refinement's polish angle (0: off; ignored by the other generators).
+/// polish: Delaunay refinement's polish angle (0: off; ignored by the other generators);
+/// threads > 0: Delaunay refinement in rounds on that many threads (RefinementOrder::Rounds).
 void BM_mesh_generator(benchmark::State& state, const gen::MeshGenerator2* generator,
-                       gen::SampleDomain d, double angle, double polish) {
+                       gen::SampleDomain d, double angle, double polish, unsigned threads) {
     const Workload& w = workload(d, state.range(0));
     gen::MeshOptions2 options;
     options.min_angle = angle;
     options.polish_angle = polish;
     options.size = w.size;
+    if (threads > 0) {
+        options.refinement_order = gen::RefinementOrder::Rounds;
+        options.threads = threads;
+    }
     gen::MeshRun2 run;
     for (auto _ : state) {
         gen::MeshRun2 next;
@@ -170,7 +178,7 @@ void BM_mesh_generator(benchmark::State& state, const gen::MeshGenerator2* gener
     report_quality(state, run.mesh.mesh.xy, run.mesh.mesh.triangles, w.size);
     for (const auto& [name, value] : run.counters) {
         if (name == "steiner_points" || name == "points_inserted" || name == "new_points" ||
-            name == "polish_points") {
+            name == "polish_points" || name == "rounds" || name == "round_conflicts") {
             state.counters[name] = static_cast<double>(value);
         }
     }
@@ -478,16 +486,30 @@ void register_all() {
                 if (g.name != "delaunay-refinement") {
                     configure(benchmark::RegisterBenchmark((prefix + "none").c_str(),
                                                            BM_mesh_generator, &g, d,
-                                                           gen::kGuaranteedMinAngle, -1.0));
+                                                           gen::kGuaranteedMinAngle, -1.0, 0u));
                     continue;
                 }
                 for (const double angle : bounds) {
                     const double polish = std::min(gen::kMaxPolishAngle, angle + 10);
                     configure(benchmark::RegisterBenchmark((prefix + angle_name(angle)).c_str(),
-                                                           BM_mesh_generator, &g, d, angle, 0.0));
+                                                           BM_mesh_generator, &g, d, angle, 0.0,
+                                                           0u));
                     configure(benchmark::RegisterBenchmark(
                         (prefix + angle_name(angle) + "p" + angle_name(polish)).c_str(),
-                        BM_mesh_generator, &g, d, angle, polish));
+                        BM_mesh_generator, &g, d, angle, polish, 0u));
+                }
+                // The rounds on 1 .. max_bench_threads() threads, beside the worst-first row of
+                // the same bound and polish (issue 17's 30 degrees): real time.
+                if (bounds.back() != 30.0) continue;
+                const double polish = std::min(gen::kMaxPolishAngle, 30.0 + 10);
+                for (unsigned threads = 1; threads <= exactmesh::bench::max_bench_threads();
+                     ++threads) {
+                    configure(benchmark::RegisterBenchmark(
+                                  ("BM_mesh/delaunay-refinement-rounds-" + std::to_string(threads) +
+                                   "t/" + domain + "/30p" + angle_name(polish))
+                                      .c_str(),
+                                  BM_mesh_generator, &g, d, 30.0, polish, threads))
+                        ->UseRealTime();
                 }
             }
 #if defined(EXACTMESH_WITH_CGAL)
@@ -528,6 +550,7 @@ void register_all() {
 int main(int argc, char** argv) {
     register_all();
     benchmark::AddCustomContext("exactmesh_build_type", EXACTMESH_BENCH_BUILD_TYPE);
+    exactmesh::bench::add_threads_context();
     const int status = exactmesh::bench::run_benchmarks(argc, argv);
     if (gmsh_dir_used) {
         std::error_code ignored;

@@ -57,6 +57,8 @@ struct MeshArguments {
     std::string metric_smoothing;  ///< --metric-smoothing PASSES[,WEIGHT]
     double metric_gradation = 0;   ///< --metric-gradation BETA
     std::uint64_t max_steiner = 0;
+    unsigned threads = 1;      ///< --threads (delaunay-refinement)
+    std::string refine_order;  ///< --refine-order (empty: by --threads)
     std::uint32_t smooth = 0;
     bool quality = false;
     bool stats = false;
@@ -112,6 +114,8 @@ std::vector<std::string> ignored_options(const gen::MeshGenerator2& generator,
     ignores(gen::MeshOption::Size, !arguments.size.empty(), "--size " + arguments.size);
     ignores(gen::MeshOption::MaxSteinerPoints, arguments.max_steiner != 0,
             "--max-steiner " + std::to_string(arguments.max_steiner));
+    ignores(gen::MeshOption::Threads, arguments.threads != 1,
+            "--threads " + std::to_string(arguments.threads), " (it runs on one thread)");
     if (!poly.regions.empty()) {
         ignores(gen::MeshOption::RegionAttributes, true,
                 arguments.input + ":" + std::to_string(poly.region_lines[0]) + ": " +
@@ -307,6 +311,12 @@ void run_mesh(const MeshArguments& arguments) {
     options.polish_angle = arguments.polish_angle;
     options.size = size;
     options.max_steiner_points = arguments.max_steiner;
+    options.threads = arguments.threads;
+    // Rounds when asked, or for more than one thread; the worst-first order otherwise.
+    options.refinement_order = arguments.refine_order == "rounds" ||
+                                       (arguments.refine_order.empty() && arguments.threads != 1)
+                                   ? gen::RefinementOrder::Rounds
+                                   : gen::RefinementOrder::WorstFirst;
     options.cdt.first_index = base;
     options.cdt.progress = progress_printer("mesh", arguments.quiet);
     options.layers = layer_parameters;
@@ -509,6 +519,22 @@ void add_mesh_command(CLI::App& app) {
                          std::to_string(tri::kMaxPoints) + ")")
         ->check(whole_number_at_most(tri::kMaxPoints))
         ->capture_default_str();
+    command
+        ->add_option("--threads", arguments->threads,
+                     "Threads of delaunay-refinement (oneTBB): 1 runs the sequential "
+                     "worst-first refinement, 0 every hardware thread; more than one refines in "
+                     "rounds (--refine-order), whose mesh is the same for every thread count. "
+                     "--stats prints the count used and the rounds' counters")
+        ->check(whole_number_at_most(1024))
+        ->capture_default_str();
+    command
+        ->add_option("--refine-order", arguments->refine_order,
+                     "delaunay-refinement's order: worst-first (one point at a time, the worst "
+                     "triangle first; one thread) or rounds (up to 1024 of the worst triangles "
+                     "at once, their cavities found in parallel, inserted unless one meets an "
+                     "earlier one's; the same mesh on any --threads, not worst-first's). "
+                     "Default: worst-first on one thread, rounds on more")
+        ->check(CLI::IsMember({"worst-first", "rounds"}));
     command
         ->add_option(
             "--smooth", arguments->smooth,

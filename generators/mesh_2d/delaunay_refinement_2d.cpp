@@ -22,12 +22,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
+#include <memory>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "base/errors.hpp"
 #include "base/number_text.hpp"
+#include "base/parallel_runner.hpp"
 #include "base/progress.hpp"
 #include "generators/boundary/narrow_wedges_2d.hpp"
 #include "generators/boundary/region_areas_2d.hpp"
@@ -36,6 +40,7 @@
 #include "predicates/power_of_two.hpp"
 #include "predicates/triangle_area.hpp"
 #include "triangulation/constrained/constrained_triangulation_2d.hpp"
+#include "triangulation/delaunay/parallel_rounds.hpp"  // resolve_thread_count
 
 namespace exactmesh::generators {
 
@@ -130,6 +135,12 @@ class BucketQueue {
         while (buckets_[top_].empty()) --top_;
         return top_;
     }
+    /// The entry `depth` places under the top of the worst bucket pop() takes from (what it
+    /// pops `depth` calls later if nothing is pushed meanwhile), or nullptr.
+    const Entry* under_top(std::size_t depth) const {
+        const std::vector<Entry>& bucket = buckets_[top_];
+        return depth < bucket.size() ? &bucket[bucket.size() - 1 - depth] : nullptr;
+    }
     Entry pop() {
         while (buckets_[top_].empty()) --top_;
         const Entry b = buckets_[top_].back();
@@ -154,15 +165,66 @@ class BucketQueue {
     }
 };
 
+/// A set of triangle slots or vertices for one round of RefinementOrder::Rounds, open addressing
+/// over a table sized for the round: a few thousand entries that stay in cache, where per-slot
+/// stamps over the whole mesh cost a cache miss per look-up.
+class RoundSet {
+  public:
+    /// Empties the set, with room for `count` keys at a load below a half.
+    void clear(std::size_t count) {
+        std::size_t size = 64;
+        while (size < 2 * count) size *= 2;
+        if (size > table_.size()) {
+            table_.assign(size, 0);
+            generation_ = 0;
+        }
+        mask_ = table_.size() - 1;
+        if (++generation_ == 0) {  // wrapped: no entry may hold the new generation by accident
+            std::fill(table_.begin(), table_.end(), 0);
+            generation_ = 1;
+        }
+    }
+    bool contains(std::uint32_t key) const {
+        for (std::size_t i = hash(key);; i = (i + 1) & mask_) {
+            const std::uint64_t entry = table_[i];
+            if (entry >> 32 != generation_) return false;
+            if (static_cast<std::uint32_t>(entry) == key) return true;
+        }
+    }
+    void insert(std::uint32_t key) {
+        for (std::size_t i = hash(key);; i = (i + 1) & mask_) {
+            const std::uint64_t entry = table_[i];
+            if (entry >> 32 != generation_) {
+                table_[i] = (std::uint64_t{generation_} << 32) | key;
+                return;
+            }
+            if (static_cast<std::uint32_t>(entry) == key) return;
+        }
+    }
+
+  private:
+    std::vector<std::uint64_t> table_;
+    std::size_t mask_ = 0;
+    std::uint32_t generation_ = 0;
+    std::size_t hash(std::uint32_t key) const {
+        return static_cast<std::size_t>((std::uint64_t{key} * 0x9E3779B97F4A7C15ull) >> 32) & mask_;
+    }
+};
+
 struct PieceToSplit {
     VertIdx a, b;
     bool forced;  // a rejected circumcenter encroaches it: split without testing the apexes
 };
 
-/// The badness evaluate() found: the key (0 when good for every criterion) and its class.
-struct Badness {
-    double key;
-    bool too_big;
+/// What assess() finds of a domain triangle, before anything is queued: its badness key (above
+/// 1: bad), whether an edge is too long, its key as a candidate of the polish (0: none), and
+/// which of its constrained edges its apexes encroach.
+struct Assessment {
+    double key = 0;
+    bool too_big = false;
+    bool in_domain = false;
+    std::uint8_t encroached = 0;  // bit k: half-edge 3t + k
+    float polish_key = 0;
 };
 
 /// Steiner points on segments: which segment, and for shell splits the apex and the shell.
@@ -187,7 +249,13 @@ class Refiner {
                              : pslg,
                options.cdt),
           mesh_(cdt_.mesh()),
-          segment_count_(static_cast<std::uint32_t>(pslg.segments.size() / 2)) {}
+          segment_count_(static_cast<std::uint32_t>(pslg.segments.size() / 2)),
+          threads_(options.order == RefinementOrder::Rounds
+                       ? tri::resolve_thread_count(options.threads)
+                       : 1u) {
+        if (threads_ > 1) arena_ = std::make_unique<tbb::task_arena>(static_cast<int>(threads_));
+        scratch_.resize(threads_);
+    }
 
     RefinementResult2 run();
 
@@ -209,9 +277,12 @@ class Refiner {
     /// split at once).
     BucketQueue<EncroachedPiece> pieces_;
     std::vector<PieceToSplit> forced_;
-    /// Tests the constrained edges of domain triangle t (just evaluated as `badness`) for
-    /// encroachment by their apexes and queues those encroached.
-    inline void queue_encroached_pieces(TriIdx t, const Badness& badness);
+    /// Tests the constrained edges of domain triangle t for encroachment by their apexes
+    /// (Assessment::encroached), counted in `tally`.
+    inline void find_encroached_pieces(TriIdx t, Assessment& a, RefinementCounters2& tally) const;
+    /// Queues what `a` found of triangle t: the bad triangle, the polish's candidate, the
+    /// encroached pieces (by t's key).
+    void queue(TriIdx t, const Assessment& a);
     std::vector<std::uint32_t> version_;  // per triangle slot
     bool cache_sizes_ = false;         // a size function dearer than a constant: edge_size_ is kept
     std::vector<double> edge_size_;    // per half-edge: the size at its midpoint; 0: unknown
@@ -249,8 +320,20 @@ class Refiner {
     void initial_queue();
     /// Triangles written by the last edit: new versions; bad ones and encroached pieces queued.
     void process_touched();
-    Badness evaluate(TriIdx t);
-    bool encroached_from(EdgeIdx e);  // the apex of e's triangle encroaches e
+    /// Badness of domain triangle t (reading only, but for the per-half-edge size cache;
+    /// counted in `tally`): what evaluate queues. Safe on several threads at once on distinct
+    /// triangles when no size is cached (a uniform size or none: parallel_assessment).
+    Assessment assess(TriIdx t, RefinementCounters2& tally);
+    /// assess and queue (without the encroached pieces).
+    void evaluate(TriIdx t) { queue(t, assess(t, counters_)); }
+    /// assess, find_encroached_pieces and queue.
+    void evaluate_with_pieces(TriIdx t) {
+        Assessment a = assess(t, counters_);
+        find_encroached_pieces(t, a, counters_);
+        queue(t, a);
+    }
+    /// the apex of e's triangle encroaches e (counted in `tally`)
+    bool encroached_from(EdgeIdx e, RefinementCounters2& tally) const;
     struct SplitPoint {
         double x = 0, y = 0;
         VertIdx apex = kNone;  // a concentric-shell split about this vertex
@@ -280,6 +363,42 @@ class Refiner {
     std::span<const std::uint32_t> segments_of(VertIdx w) const;  // with narrow_pairs_
     void spend_budget();
     const double* point(VertIdx v) const { return mesh_.point(v); }
+
+    // ---- RefinementOrder::Rounds ------------------------------------------------------------
+    unsigned threads_ = 1;
+    std::unique_ptr<tbb::task_arena> arena_;  // when threads_ > 1
+    PartitionRunner runner_;
+    /// Per thread: its probes' scratch and the circumcentres it computed on the exact path.
+    struct ProbeScratch {
+        tri::CavityProbeScratch cavity;
+        std::uint64_t exact_circumcenters = 0;
+    };
+    std::vector<ProbeScratch> scratch_;
+    std::vector<BadTriangle> round_;        // the round's bad triangles, in the order taken
+    std::vector<tri::CavityProbe> probes_;  // their probes (probes_[i] for round_[i])
+    std::vector<const tri::CavityProbe*> accepted_;  // the probes a round inserts
+    std::vector<BadTriangle> waiting_;               // taken out while forming a round, put back
+    std::vector<Assessment> assessments_;            // a round's new triangles, in touched() order
+    std::vector<RefinementCounters2> tallies_;       // per chunk of a round's fans
+    RoundSet round_vertices_;                        // the vertices of a round's bad triangles
+    /// The slots in the cavities of the points a round inserts, and those beside them (across
+    /// their boundaries).
+    RoundSet claimed_cavities_, claimed_besides_;
+    /// One bad triangle, the worst (RefinementOrder::WorstFirst).
+    void insert_worst();
+    /// One round (RefinementOrder::Rounds) within `limit` Steiner points.
+    void insert_round(std::uint64_t limit);
+    /// The round's circumcentres and their cavities, found on every thread (reading only).
+    void probe_round();
+    /// Whether the probe's cavity and the triangles beside it are as they were when probed: no
+    /// point inserted earlier in the round took one of them into its cavity, nor (for the
+    /// cavity's own triangles) had one beside it.
+    bool unclaimed(const tri::CavityProbe& probe) const;
+    void claim(const tri::CavityProbe& probe);
+    /// What refine does with a popped bad triangle once its circumcentre's insertion has been
+    /// tried (`top`, the outcome, the cavity's size).
+    void after_insertion(const BadTriangle& top, tri::CavityInsertion outcome,
+                         std::uint64_t cavity_size);
 };
 
 void Refiner::check_domain_and_budget() {
@@ -441,7 +560,7 @@ bool Refiner::small_angle_rule(VertIdx u, VertIdx v, VertIdx w) const {
            w == su->apex;
 }
 
-Badness Refiner::evaluate(TriIdx t) {
+Assessment Refiner::assess(TriIdx t, RefinementCounters2& tally) {
     const VertIdx v[3] = {mesh_.tv[3 * t], mesh_.tv[3 * t + 1], mesh_.tv[3 * t + 2]};
     const double* p[3] = {point(v[0]), point(v[1]), point(v[2])};
     const ScaledTriangle scaled = scaled_triangle(p);
@@ -500,6 +619,8 @@ Badness Refiner::evaluate(TriIdx t) {
         }
     }
     double key = size_key;
+    Assessment a;
+    a.in_domain = true;
     if (sine2_bound_ > 0) {
         // sin^2 of the smallest angle: (2 area)^2 over the product of the two longer edges'
         // squared lengths (the smallest angle lies between them).
@@ -514,26 +635,37 @@ Badness Refiner::evaluate(TriIdx t) {
         const double sine2 = cross * cross / product;
         if (sine2 < sine2_bound_ || sine2 < polish_sine2_) {
             if (small_angle_rule(v[shortest], v[next], v[prev])) {
-                if (sine2 < asked_sine2_) ++counters_.small_angle_skips;
+                if (sine2 < asked_sine2_) ++tally.small_angle_skips;
             } else if (sine2 < sine2_bound_) {
                 key = std::max(key, sine2 > 0 ? sine2_bound_ / sine2 : INFINITY);
                 if (key <= 1) key = 1 + 1e-9;  // bad, even if only just
             } else if (key <= 1) {
                 // Good, but below the polish bound: a candidate of the polish.
-                polish_.push_back(
-                    {static_cast<float>(polish_sine2_ / sine2), t, version_[t] & 0x7FFFFFFFu, 0u});
+                a.polish_key = static_cast<float>(polish_sine2_ / sine2);
             }
         }
     }
-    if (key > 1) {
-        bad_.push({static_cast<float>(std::min(key, 1e30)), t, version_[t] & 0x7FFFFFFFu,
-                   size_key > 1 ? 1u : 0u});
-        ++counters_.bad_triangles;
-    }
-    return {key, size_key > 1};
+    a.key = key;
+    a.too_big = size_key > 1;
+    return a;
 }
 
-void Refiner::queue_encroached_pieces(TriIdx t, const Badness& badness) {
+void Refiner::queue(TriIdx t, const Assessment& a) {
+    if (a.polish_key > 0) polish_.push_back({a.polish_key, t, version_[t] & 0x7FFFFFFFu, 0u});
+    if (a.key > 1) {
+        bad_.push({static_cast<float>(std::min(a.key, 1e30)), t, version_[t] & 0x7FFFFFFFu,
+                   a.too_big ? 1u : 0u});
+        ++counters_.bad_triangles;
+    }
+    for (unsigned k = 0; k < 3; ++k) {
+        if ((a.encroached >> k & 1u) == 0) continue;
+        const EdgeIdx e = 3 * t + k;
+        pieces_.push({static_cast<float>(std::min(a.key, 1e30)), mesh_.origin(e),
+                      mesh_.destination(e), a.too_big ? 1u : 0u});
+    }
+}
+
+void Refiner::find_encroached_pieces(TriIdx t, Assessment& a, RefinementCounters2& tally) const {
     // Most triangles have no constrained edge: one test for the three.
     const EdgeIdx first = 3 * t;
     if (cdt_.segment_of(first) == kNone && cdt_.segment_of(first + 1) == kNone &&
@@ -542,17 +674,15 @@ void Refiner::queue_encroached_pieces(TriIdx t, const Badness& badness) {
     }
     for (unsigned k = 0; k < 3; ++k) {
         const EdgeIdx e = 3 * t + k;
-        if (cdt_.segment_of(e) != kNone && encroached_from(e)) {
-            pieces_.push({static_cast<float>(std::min(badness.key, 1e30)), mesh_.origin(e),
-                          mesh_.destination(e), badness.too_big ? 1u : 0u});
-        }
+        if (cdt_.segment_of(e) != kNone && encroached_from(e, tally))
+            a.encroached |= static_cast<std::uint8_t>(1u << k);
     }
 }
 
-bool Refiner::encroached_from(EdgeIdx e) {
+bool Refiner::encroached_from(EdgeIdx e, RefinementCounters2& tally) const {
     // e lies in a domain triangle; its apex encroaches e when it lies in the closed diametral
     // circle of e (a right or obtuse angle).
-    ++counters_.encroachment_tests;
+    ++tally.encroachment_tests;
     const VertIdx a = mesh_.origin(e), b = mesh_.destination(e), w = mesh_.tv[tri::prev_edge(e)];
     if (predicates::corner_dot_sign(point(w), point(a), point(b)) == Sign::Positive) return false;
     // A vertex across a narrow wedge does not encroach (find_narrow_wedges): splitting there
@@ -560,7 +690,7 @@ bool Refiner::encroached_from(EdgeIdx e) {
     if (!narrow_pairs_.empty() && in_narrow_wedge_with(w, cdt_.segment_of(e))) {
         const auto ends = cdt_.segment_ends(cdt_.segment_of(e));
         if (w != ends[0] && w != ends[1]) {
-            ++counters_.narrow_wedge_skips;
+            ++tally.narrow_wedge_skips;
             return false;
         }
     }
@@ -599,7 +729,7 @@ void Refiner::process_touched() {
         seen_[t] = batch_;
         if (!cache_sizes_) ++version_[t];
         if (!cdt_.in_domain(t)) continue;
-        queue_encroached_pieces(t, evaluate(t));
+        evaluate_with_pieces(t);
     }
     cdt_.clear_touched();
 }
@@ -611,7 +741,7 @@ void Refiner::initial_queue() {
     if (cache_sizes_) edge_size_.assign(3 * std::size_t{slots}, 0.0);
     for (TriIdx t = 0; t < slots; ++t) {
         if (!cdt_.in_domain(t)) continue;
-        queue_encroached_pieces(t, evaluate(t));
+        evaluate_with_pieces(t);
     }
     cdt_.clear_touched();
 }
@@ -736,9 +866,10 @@ void Refiner::split_piece(const PieceToSplit& piece) {
     const std::uint32_t segment = cdt_.segment_of(e);
     if (!piece.forced) {
         // Still encroached from a domain side? (The apex may have changed since.)
-        const bool left = cdt_.in_domain(tri::triangle_of(e)) && encroached_from(e);
+        const bool left = cdt_.in_domain(tri::triangle_of(e)) && encroached_from(e, counters_);
         const EdgeIdx f = mesh_.twin[e];
-        if (!left && !(cdt_.in_domain(tri::triangle_of(f)) && encroached_from(f))) return;
+        if (!left && !(cdt_.in_domain(tri::triangle_of(f)) && encroached_from(f, counters_)))
+            return;
     }
     spend_budget();
     const SplitPoint m = split_point(e);
@@ -781,58 +912,244 @@ bool Refiner::refine(std::uint64_t limit) {
         }
         if (bad_.empty()) return true;
         if (counters_.steiner_points() >= limit) return false;
-        const BadTriangle top = bad_.pop();
-        if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t))
-            continue;  // rewritten since
-        spend_budget();
-        const VertIdx v[3] = {mesh_.tv[3 * top.t], mesh_.tv[3 * top.t + 1],
-                              mesh_.tv[3 * top.t + 2]};
-        // The cavity starts from top.t's neighbours: its twins arrive while the circumcentre
-        // is computed.
-        __builtin_prefetch(&mesh_.twin[3 * top.t]);
-        const auto c = predicates::circumcenter(point(v[0]), point(v[1]), point(v[2]));
-        const std::uint64_t replaced_before = cdt_.counters().cavity_triangles;
-        const tri::CavityInsertion outcome = cdt_.insert_in_cavity(top.t, c[0], c[1]);
-        switch (outcome) {
-            case tri::CavityInsertion::Inserted:
-                ++counters_.circumcenters;
-                progress_.tick();
-                counters_.largest_cavity = std::max(
-                    counters_.largest_cavity, cdt_.counters().cavity_triangles - replaced_before);
-                process_touched();
-                break;
-            case tri::CavityInsertion::Encroaches: {
-                ++counters_.rejected_circumcenters;
-                // sqrt of the smallest squared length (as the rules were tuned), scaled.
-                const double* p[3] = {point(v[0]), point(v[1]), point(v[2])};
-                const ScaledTriangle scaled = scaled_triangle(p);
-                const double shortest = std::ldexp(
-                    std::sqrt(std::min({scaled.length2[0], scaled.length2[1], scaled.length2[2]})),
-                    -scaled.shift);
-                bool split = false;
-                for (const EdgeIdx e : cdt_.encroached_edges()) {
-                    // Only skinny triangles are left at small angles; too big ones are split.
-                    if (!top.too_big && leave_at_small_angle(e, shortest)) continue;
-                    forced_.push_back({mesh_.origin(e), mesh_.destination(e), true});
-                    split = true;
-                }
-                if (split) {
-                    bad_.push(top);  // still bad unless the splits rewrite it
-                } else if (below_asked_bound(top.t)) {
-                    ++counters_.small_angle_skips;  // left skinny at a small input angle
-                }
-                break;
-            }
-            case tri::CavityInsertion::Duplicate:
-            case tri::CavityInsertion::NotInConflict:
-            case tri::CavityInsertion::Outside:
-                // A triangle so small that its rounded circumcenter is one of its vertices (or
-                // leaves its circle): nothing to insert; it stays, counted (when it is bad for the
-                // bound asked for, not only for the polish's).
-                if (top.too_big || below_asked_bound(top.t)) ++counters_.unsplittable;
-                break;
+        if (options_.order == RefinementOrder::Rounds) {
+            insert_round(limit);
+        } else {
+            insert_worst();
         }
     }
+}
+
+void Refiner::insert_worst() {
+    const BadTriangle top = bad_.pop();
+    if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t))
+        return;  // rewritten since
+    spend_budget();
+    const VertIdx v[3] = {mesh_.tv[3 * top.t], mesh_.tv[3 * top.t + 1], mesh_.tv[3 * top.t + 2]};
+    // The cavity starts from top.t's neighbours: its twins arrive while the circumcentre is
+    // computed.
+    __builtin_prefetch(&mesh_.twin[3 * top.t]);
+    const auto c = predicates::circumcenter(point(v[0]), point(v[1]), point(v[2]));
+    const std::uint64_t replaced_before = cdt_.counters().cavity_triangles;
+    const tri::CavityInsertion outcome = cdt_.insert_in_cavity(top.t, c[0], c[1]);
+    after_insertion(top, outcome, cdt_.counters().cavity_triangles - replaced_before);
+}
+
+void Refiner::after_insertion(const BadTriangle& top, tri::CavityInsertion outcome,
+                              std::uint64_t cavity_size) {
+    switch (outcome) {
+        case tri::CavityInsertion::Inserted:
+            ++counters_.circumcenters;
+            progress_.tick();
+            counters_.largest_cavity = std::max(counters_.largest_cavity, cavity_size);
+            // (Rounds evaluate the touched triangles once per round.)
+            if (options_.order == RefinementOrder::WorstFirst) process_touched();
+            break;
+        case tri::CavityInsertion::Encroaches: {
+            ++counters_.rejected_circumcenters;
+            // sqrt of the smallest squared length (as the rules were tuned), scaled.
+            const double* p[3] = {point(mesh_.tv[3 * top.t]), point(mesh_.tv[3 * top.t + 1]),
+                                  point(mesh_.tv[3 * top.t + 2])};
+            const ScaledTriangle scaled = scaled_triangle(p);
+            const double shortest = std::ldexp(
+                std::sqrt(std::min({scaled.length2[0], scaled.length2[1], scaled.length2[2]})),
+                -scaled.shift);
+            bool split = false;
+            for (const EdgeIdx e : cdt_.encroached_edges()) {
+                // Only skinny triangles are left at small angles; too big ones are split.
+                if (!top.too_big && leave_at_small_angle(e, shortest)) continue;
+                forced_.push_back({mesh_.origin(e), mesh_.destination(e), true});
+                split = true;
+            }
+            if (split) {
+                bad_.push(top);  // still bad unless the splits rewrite it
+            } else if (below_asked_bound(top.t)) {
+                ++counters_.small_angle_skips;  // left skinny at a small input angle
+            }
+            break;
+        }
+        case tri::CavityInsertion::Duplicate:
+        case tri::CavityInsertion::NotInConflict:
+        case tri::CavityInsertion::Outside:
+            // A triangle so small that its rounded circumcenter is one of its vertices (or
+            // leaves its circle): nothing to insert; it stays, counted (when it is bad for the
+            // bound asked for, not only for the polish's).
+            if (top.too_big || below_asked_bound(top.t)) ++counters_.unsplittable;
+            break;
+    }
+}
+
+void Refiner::insert_round(std::uint64_t limit) {
+    // The round: the bad triangles refine would pop next (one entry per triangle), up to
+    // the round's size and the Steiner points left, while no encroached piece comes first.
+    const std::uint64_t room =
+        std::min<std::uint64_t>(kRefinementRoundSize, limit - counters_.steiner_points());
+    round_vertices_.clear(3 * static_cast<std::size_t>(room));
+    round_.clear();
+    waiting_.clear();
+    next_batch();
+    // A triangle with a vertex of one taken before it waits for the next round: the new
+    // triangles of one insertion are queued together, and their cavities overlap (taken
+    // together, two in five met an earlier one's).
+    while (round_.size() < room && waiting_.size() < room && !bad_.empty()) {
+        if (!pieces_.empty() && pieces_.top_bucket() >= bad_.top_bucket()) break;
+        // The entries of a round are anywhere in the mesh: what the tests below read of them is
+        // asked for a few entries ahead.
+        if (const BadTriangle* ahead = bad_.under_top(8)) {
+            __builtin_prefetch(&version_[ahead->t]);
+            __builtin_prefetch(&seen_[ahead->t]);
+            cdt_.prefetch(ahead->t);
+        }
+        const BadTriangle top = bad_.pop();
+        if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t) ||
+            seen_[top.t] == batch_) {
+            continue;  // rewritten since, or taken already
+        }
+        const VertIdx* v = &mesh_.tv[3 * top.t];
+        if (round_vertices_.contains(v[0]) || round_vertices_.contains(v[1]) ||
+            round_vertices_.contains(v[2])) {
+            waiting_.push_back(top);
+            continue;
+        }
+        for (int k = 0; k < 3; ++k) round_vertices_.insert(v[k]);
+        seen_[top.t] = batch_;
+        round_.push_back(top);
+    }
+    // Back in the queue in the order they came out.
+    for (auto w = waiting_.rbegin(); w != waiting_.rend(); ++w) bad_.push(*w);
+    if (round_.empty()) return;
+    ++counters_.rounds;
+    probe_round();
+    std::size_t cavities = 0, besides = 0;
+    for (std::size_t i = 0; i < round_.size(); ++i) {
+        cavities += probes_[i].cavity.size() + 1;
+        besides += probes_[i].beside.size();
+    }
+    claimed_cavities_.clear(cavities);
+    claimed_besides_.clear(besides);
+    // In the order taken: each point whose cavity is as probed (apart from the cavities of the
+    // points taken before it) goes in, or is rejected as insert_worst rejects it; the others
+    // wait for the next round. The first always goes. The points that go in are inserted
+    // together, their fans written on every thread: the mesh is the one inserting them one
+    // after another would make.
+    accepted_.clear();
+    for (std::size_t i = 0; i < round_.size(); ++i) {
+        const tri::CavityProbe& probe = probes_[i];
+        if (!unclaimed(probe)) {
+            bad_.push(round_[i]);
+            ++counters_.round_conflicts;
+            continue;
+        }
+        spend_budget();
+        if (probe.outcome == tri::CavityInsertion::Inserted) {
+            claim(probe);
+            accepted_.push_back(&probe);
+            after_insertion(round_[i], probe.outcome, probe.cavity.size());
+        } else {
+            after_insertion(round_[i], cdt_.insert_probed(probe), probe.cavity.size());
+        }
+    }
+    // Without a size to cache (a uniform size, or none) the new triangles are assessed on the
+    // thread that wrote them, while they are in its cache (assess only reads them, the vertices
+    // and the constraints), and queued afterwards in the order process_touched queues them: the
+    // same queue either way.
+    const std::size_t chunks = threads_ == 1 ? 1 : 4 * std::size_t{threads_};
+    tri::ConstrainedTriangulation2::FanWritten written;
+    if (!cache_sizes_) {
+        std::size_t fan_triangles = 0;
+        for (const tri::CavityProbe* probe : accepted_) fan_triangles += probe->boundary.size();
+        assessments_.assign(fan_triangles, Assessment{});
+        tallies_.assign(chunks, RefinementCounters2{});
+        // Every new slot is below this (recycled ones are lower still).
+        const std::size_t slots = mesh_.triangle_slots() + 2 * accepted_.size();
+        if (version_.size() < slots) {
+            version_.resize(slots, 0);
+            seen_.resize(slots, 0);
+        }
+        written = [&](std::size_t chunk, std::size_t position, std::span<const TriIdx> fan) {
+            for (std::size_t j = 0; j < fan.size(); ++j) {
+                const TriIdx t = fan[j];
+                ++version_[t];
+                if (!cdt_.in_domain(t)) continue;
+                Assessment& a = assessments_[position + j];
+                a = assess(t, tallies_[chunk]);
+                find_encroached_pieces(t, a, tallies_[chunk]);
+            }
+        };
+    }
+    if (threads_ == 1) {
+        cdt_.insert_probed_apart(accepted_, chunks, {}, written);
+    } else {
+        cdt_.insert_probed_apart(
+            accepted_, chunks,
+            [&](std::size_t count, const std::function<void(std::size_t)>& body) {
+                runner_.run(*arena_, count, body);
+            },
+            written);
+    }
+    if (cache_sizes_) {
+        process_touched();
+        return;
+    }
+    const std::span<const TriIdx> touched = cdt_.touched();
+    for (std::size_t k = 0; k < touched.size(); ++k)
+        if (assessments_[k].in_domain) queue(touched[k], assessments_[k]);
+    for (const RefinementCounters2& tally : tallies_) {
+        counters_.small_angle_skips += tally.small_angle_skips;
+        counters_.encroachment_tests += tally.encroachment_tests;
+        counters_.narrow_wedge_skips += tally.narrow_wedge_skips;
+    }
+    cdt_.clear_touched();
+}
+
+void Refiner::probe_round() {
+    if (probes_.size() < round_.size()) probes_.resize(round_.size());
+    // Every point is probed as the next vertex (only its rank matters: above every vertex).
+    const VertIdx next = mesh_.vertex_count();
+    // The construction counters are per thread: the exact circumcentres of the other threads
+    // are added to the calling thread's at the end (run).
+    const std::thread::id caller = std::this_thread::get_id();
+    const auto probe = [&](std::size_t begin, std::size_t end) {
+        const int index = threads_ > 1 ? tbb::this_task_arena::current_thread_index() : 0;
+        ProbeScratch& scratch =
+            scratch_[index >= 0 && static_cast<unsigned>(index) < threads_ ? index : 0];
+        const predicates::ConstructionStats& stats = predicates::construction_stats();
+        const std::uint64_t exact_before = stats.exact_range + stats.exact_uncertified;
+        for (std::size_t i = begin; i < end; ++i) {
+            const TriIdx t = round_[i].t;
+            const auto c = predicates::circumcenter(
+                point(mesh_.tv[3 * t]), point(mesh_.tv[3 * t + 1]), point(mesh_.tv[3 * t + 2]));
+            cdt_.probe_cavity(t, c[0], c[1], next, probes_[i], scratch.cavity);
+        }
+        if (std::this_thread::get_id() != caller) {
+            scratch.exact_circumcenters +=
+                stats.exact_range + stats.exact_uncertified - exact_before;
+        }
+    };
+    if (threads_ == 1) {
+        probe(0, round_.size());
+    } else {
+        runner_.run_chunks(*arena_, round_.size(), probe, 16);
+    }
+}
+
+bool Refiner::unclaimed(const tri::CavityProbe& probe) const {
+    const auto claimed = [&](TriIdx t) {
+        return claimed_cavities_.contains(t) || claimed_besides_.contains(t);
+    };
+    if (probe.cavity.empty()) return !claimed(probe.start);  // NotInConflict: t alone
+    for (const TriIdx c : probe.cavity)
+        if (claimed(c)) return false;
+    for (const TriIdx beside : probe.beside)
+        if (claimed_cavities_.contains(beside)) return false;
+    return true;
+}
+
+void Refiner::claim(const tri::CavityProbe& probe) {
+    // The fan's two new slots are no one's probe; its outer edges link to the triangles
+    // beside the cavity.
+    for (const TriIdx c : probe.cavity) claimed_cavities_.insert(c);
+    for (const TriIdx beside : probe.beside) claimed_besides_.insert(beside);
 }
 
 bool Refiner::below_asked_bound(TriIdx t) const {
@@ -921,6 +1238,9 @@ RefinementResult2 Refiner::run() {
     counters_.rejected_cavity_triangles = edits.rejected_cavity_triangles;
     counters_.circumcenter_exact = predicates::construction_stats().exact_range +
                                    predicates::construction_stats().exact_uncertified;
+    for (const ProbeScratch& scratch : scratch_)
+        counters_.circumcenter_exact += scratch.exact_circumcenters;
+    counters_.threads = threads_;
     RefinementResult2 result;
     result.mesh = std::move(cdt_).take_result();
     if (region_areas_) {
@@ -954,6 +1274,11 @@ RefinementResult2 delaunay_refinement_2d(const tri::Pslg& pslg, const Refinement
         std::snprintf(fraction, sizeof fraction, "%g", options.polish_fraction);
         throw InputError(std::string("polish fraction ") + fraction +
                          " is not a finite number >= 0");
+    }
+    if (options.order == RefinementOrder::WorstFirst && options.threads != 1) {
+        throw InputError("the worst-first refinement runs on one thread (" +
+                         std::to_string(options.threads) +
+                         " asked): more threads need the rounds order");
     }
     Refiner refiner(pslg, options);
     return refiner.run();

@@ -40,6 +40,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include "base/counter_table.hpp"
@@ -60,6 +61,24 @@ inline constexpr double kMaxMinAngle = 34.0;
 /// terminating on most domains).
 inline constexpr double kMaxPolishAngle = 32.0;
 
+/// The order in which the refinement inserts its points (RefinementOptions2::order).
+enum class RefinementOrder {
+    /// One point at a time, for the worst bad triangle (or encroached piece) first: the
+    /// sequential refinement, on one thread.
+    WorstFirst,
+    /// Rounds: the worst kRefinementRoundSize bad triangles (fewer when an encroached piece
+    /// comes before them) are taken at once; their circumcentres and conflict zones are found
+    /// in parallel by reading the mesh only, then, in the order they were taken, each is
+    /// inserted unless its zone (or a triangle beside it) meets the zone of one inserted before
+    /// it in the round; those wait for the next round. What a round holds never depends on the
+    /// thread count, so neither does the mesh; it is not WorstFirst's mesh (the same criteria
+    /// and guarantee, a different order).
+    Rounds,
+};
+
+/// The most bad triangles one round of RefinementOrder::Rounds takes.
+inline constexpr std::size_t kRefinementRoundSize = 1024;
+
 struct RefinementOptions2 {
     /// Every angle of the mesh at least this (degrees), away from small input angles; 0 turns
     /// the angle criterion off. At most kMaxMinAngle.
@@ -78,6 +97,10 @@ struct RefinementOptions2 {
     double polish_fraction = 0.1;
     /// The initial constrained Delaunay triangulation (recovery Swap or Cavity).
     triangulation::Cdt2Options cdt;
+    RefinementOrder order = RefinementOrder::WorstFirst;
+    /// Threads of the rounds (0: every core); WorstFirst runs on one (any other count is an
+    /// InputError).
+    unsigned threads = 1;
 };
 
 struct RefinementCounters2 {
@@ -103,6 +126,9 @@ struct RefinementCounters2 {
     std::uint64_t circumcenter_exact = 0;  ///< circumcenters that needed the exact path
     std::uint64_t orient_calls = 0;
     std::uint64_t incircle_calls = 0;
+    std::uint64_t rounds = 0;           ///< rounds of RefinementOrder::Rounds
+    std::uint64_t round_conflicts = 0;  ///< bad triangles a round left for the next one
+    std::uint64_t threads = 1;          ///< threads the refinement ran on
     std::uint64_t steiner_points() const { return circumcenters + segment_splits; }
 };
 
@@ -130,7 +156,10 @@ inline constexpr std::array kRefinementCounterNames{
     counter("incircle_calls", &RefinementCounters2::incircle_calls),
     counter("encroachment_tests", &RefinementCounters2::encroachment_tests),
     counter("polish_points", &RefinementCounters2::polish_points),
-    counter("polish_stopped", &RefinementCounters2::polish_stopped)};
+    counter("polish_stopped", &RefinementCounters2::polish_stopped),
+    counter("rounds", &RefinementCounters2::rounds),
+    counter("round_conflicts", &RefinementCounters2::round_conflicts),
+    counter("threads", &RefinementCounters2::threads)};
 static_assert(counter_table_complete(kRefinementCounterNames, 1));
 
 struct RefinementResult2 {
@@ -157,7 +186,8 @@ class RefinementBudgetError : public GeometryError {
 /// constrained_delaunay_2d removes them). A region of pslg.regions with a maximum area A > 0
 /// (its 4th number) bounds the area of each of its triangles by A, decided exactly
 /// (predicates/triangle_area.hpp); the result's triangle_attributes are the regions' own.
-/// @throws InputError on bad input (as constrained_delaunay_2d), a polish angle above
+/// @throws InputError on bad input (as constrained_delaunay_2d), threads other than 1 with the
+///         WorstFirst order, a polish angle above
 ///         kMaxMinAngle or NaN, a negative or non-finite polish fraction, a min_angle outside
 ///         [0, kMaxMinAngle], or when the segments enclose no region.
 /// @throws RefinementBudgetError (a GeometryError) when the Steiner point budget or the

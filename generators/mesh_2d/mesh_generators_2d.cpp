@@ -212,6 +212,8 @@ MeshRun2 run_delaunay_refinement(const MeshDomain2& domain, const MeshOptions2& 
     refinement.size = options.size;
     refinement.max_steiner_points = options.max_steiner_points;
     refinement.cdt = options.cdt;
+    refinement.order = options.refinement_order;
+    refinement.threads = options.threads;
     RefinementResult2 result = delaunay_refinement_2d(pslg, refinement);
     if (result.counters.unsplittable > 0) {
         result.mesh.warnings.push_back(
@@ -377,15 +379,15 @@ MeshRun2 run_min_max_front(const MeshDomain2& domain, const MeshOptions2& option
 }
 
 constexpr std::array kGenerators{
-    MeshGenerator2{
-        "delaunay-refinement",
-        "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
-        "split first; guaranteed minimum angle",
-        true,
-        false,
-        {MeshOption::Size, MeshOption::MinAngle, MeshOption::PolishAngle,
-         MeshOption::MaxSteinerPoints, MeshOption::RegionAttributes, MeshOption::RegionAreas},
-        &run_delaunay_refinement},
+    MeshGenerator2{"delaunay-refinement",
+                   "Ruppert/Shewchuk: circumcenters of the worst triangles, encroached pieces "
+                   "split first; guaranteed minimum angle",
+                   true,
+                   false,
+                   {MeshOption::Size, MeshOption::MinAngle, MeshOption::PolishAngle,
+                    MeshOption::MaxSteinerPoints, MeshOption::RegionAttributes,
+                    MeshOption::RegionAreas, MeshOption::Threads},
+                   &run_delaunay_refinement},
     MeshGenerator2{"quadtree",
                    "Yerry-Shephard/Baehmann: balanced quadtree leaves as 45-45-90 templates, "
                    "the band along the boundary by a refined constrained Delaunay triangulation",
@@ -449,7 +451,7 @@ constexpr std::array kGenerators{
                    &run_min_max_front},
 };
 
-constexpr std::array<EnumName<MeshOption>, 8> kMeshOptionNames{{
+constexpr std::array<EnumName<MeshOption>, 9> kMeshOptionNames{{
     {"--size", MeshOption::Size},
     {"--min-angle", MeshOption::MinAngle},
     {"--polish-angle", MeshOption::PolishAngle},
@@ -458,6 +460,7 @@ constexpr std::array<EnumName<MeshOption>, 8> kMeshOptionNames{{
     {"region maximum areas", MeshOption::RegionAreas},
     {"--metric", MeshOption::Metric},
     {"--layers", MeshOption::Layers},
+    {"--threads", MeshOption::Threads},
 }};
 
 }  // namespace

@@ -46,6 +46,9 @@ struct MeshOptions2 {
     double wake_length = 0;
     /// Staggered O-mesh layers (stretched-delaunay only: --staggered-layers).
     bool staggered_layers = false;
+    /// Delaunay refinement's order and threads (RefinementOptions2; --refine-order, --threads).
+    RefinementOrder refinement_order = RefinementOrder::WorstFirst;
+    unsigned threads = 1;
 };
 
 /// A generator's mesh (caller's numbering, pieces, warnings) and its work counters in the order
@@ -73,6 +76,7 @@ enum class MeshOption : std::uint32_t {
     RegionAreas = 1u << 5,       ///< the regions' maximum areas (the 4th number, > 0)
     Metric = 1u << 6,            ///< MeshOptions2::metric (--metric)
     Layers = 1u << 7,            ///< MeshOptions2::layers (--layers, --quads)
+    Threads = 1u << 8,           ///< MeshOptions2::threads other than 1 (--threads)
 };
 
 /// A set of MeshOption.

@@ -244,6 +244,43 @@ threads() {
   expect_error 2 'threads' tetrahedralize "$work/many3.node" -o "$work/x.ele" --threads 5000
 }
 
+# mesh --threads: Delaunay refinement in rounds gives the same mesh (files byte for byte) on
+# 1, 2, 3 threads and on every core (0); --threads 2 alone means rounds; --stats prints the
+# count and the rounds' counters; check accepts the mesh; worst-first on two threads is a usage
+# error, as a count above 1024; another generator warns that it ignores --threads.
+mesh_threads() {
+  local threads
+  for threads in 1 2 3 0; do
+    run 0 mesh --domain square-with-holes --size 0.01 --min-angle 30 --refine-order rounds \
+      --threads "$threads" -o "$work/r$threads.ele" --stats || return
+    for extension in ele node poly; do
+      cmp -s "$work/r1.$extension" "$work/r$threads.$extension" ||
+        fail "mesh --threads $threads: a different .$extension than on one thread"
+    done
+  done
+  run 0 mesh --domain square-with-holes --size 0.01 --min-angle 30 --threads 2 \
+    -o "$work/two.ele" --stats || return
+  cmp -s "$work/r1.ele" "$work/two.ele" || fail "mesh --threads 2: not the rounds' mesh"
+  grep -q '^threads: 2$' "$work/out" || fail "mesh --threads 2: no 'threads: 2'"
+  awk '/^rounds: / { r = $2 } /^steiner_points: / { s = $2 }
+    END { exit !(r > 0 && s > 4 * r) }' "$work/out" ||
+    fail "mesh --threads 2: no rounds, or fewer than four points per round"
+  run 0 check "$work/two.poly" "$work/two.ele" ||
+    fail "check rejected the two-thread mesh"
+  run 0 mesh --domain square-with-holes --size 0.01 --min-angle 30 -o "$work/w.ele" --stats ||
+    return
+  grep -q '^threads: 1$' "$work/out" || fail "mesh default: no 'threads: 1'"
+  grep -q '^rounds: 0$' "$work/out" || fail "mesh default: not the worst-first refinement"
+  expect_error 2 'worst-first refinement runs on one thread' mesh --domain square-with-holes \
+    --size 0.05 --refine-order worst-first --threads 2 -o "$work/x.ele"
+  expect_error 2 'threads' mesh --domain square-with-holes --size 0.05 --threads 5000 \
+    -o "$work/x.ele"
+  run 0 mesh --domain square-with-holes --size 0.05 --generator frontal --threads 2 \
+    -o "$work/f.ele" || return
+  grep -q -- '--threads 2 ignored' "$work/out" "$work/err" 2>/dev/null ||
+    fail "mesh --generator frontal --threads 2: no warning that --threads is ignored"
+}
+
 bad_input() {
   expect_error 2 'nan\.node:[0-9]+: non-finite y coordinate .nan.' \
     triangulate "$data/nan.node" -o "$work/x.ele"
@@ -1769,7 +1806,7 @@ case "$case_name" in
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
     mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine | tetmesh_regions | \
-    tetmesh_frontal | tetmesh_octree | tetmesh_check | threads | hostile_files)
+    tetmesh_frontal | tetmesh_octree | tetmesh_check | threads | mesh_threads | hostile_files)
     "$case_name" ;;
   *)
     echo "unknown case '$case_name'" >&2

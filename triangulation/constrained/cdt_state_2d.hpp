@@ -38,6 +38,12 @@ struct FanEdge {
     std::uint32_t segment;
 };
 
+/// The scratch of ordering a cavity's boundary into its fan (one per thread that writes fans).
+struct FanScratch {
+    std::vector<FanEdge> fan;            // the cavity's new triangles, in order
+    std::vector<std::uint32_t> leaving;  // per vertex: the boundary edge leaving it
+};
+
 struct CdtState {
     /// pslg's spans must outlive the state (constrained_delaunay_2d: the call; the
     /// ConstrainedTriangulation2: its own copies).
@@ -83,9 +89,11 @@ struct CdtState {
     std::vector<TriIdx> cavity;
     std::vector<EdgeIdx> boundary;  // cavity boundary, half-edges inside the cavity
     std::vector<EdgeIdx> encroached_edges;
-    std::vector<FanEdge> fan;                     // the cavity's new triangles, in order
-    std::vector<std::uint32_t> boundary_leaving;  // per vertex: scratch of write_fan
+    FanScratch fan_scratch;  // write_fan's
     std::vector<TriIdx> fan_slots;
+    std::vector<std::size_t> apart_slot_begin;  // insert_probed_apart: each fan's first slot
+    std::vector<FanScratch> apart_scratch;      // insert_probed_apart: one per chunk
+    CavityProbe probe;  // insert_in_cavity's: its cavity, boundary and encroached edges
     ConstrainedTriangulation2Counters edit_counters;
 
     static Delaunay2Options delaunay_options(const Cdt2Options& o) {

@@ -27,6 +27,8 @@
 #include "base/number_text.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/in_ellipse.hpp"
+#include "predicates/incircle.hpp"
+#include "predicates/orient2d.hpp"
 #include "predicates/sos.hpp"
 #include "triangulation/constrained/cdt_phases_2d.hpp"
 #include "triangulation/constrained/cdt_state_2d.hpp"
@@ -68,31 +70,28 @@ std::uint32_t new_cavity_stamp(CdtState& cdt) {
     return cdt.stamp;
 }
 
-/// Replaces the cavity (cdt.cavity, stamped with cdt.stamp; its boundary half-edges in
-/// cdt.boundary, p strictly left of each) by the fan of triangles (u_i, v_i, p) around p, the
-/// new triangles on t's side of the domain.
-void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
+/// The cavity's boundary (half-edges inside it, p strictly left of each) in order around p, into
+/// scratch.fan: what each new triangle (u_i, v_i, p) keeps of its outer edge.
+void order_fan(const TriMesh2& mesh, const std::uint32_t* segment_of,
+               std::span<const EdgeIdx> boundary, std::size_t cavity_size, FanScratch& scratch) {
     // The boundary in order: after each boundary edge u -> v, the boundary edge leaving v. p sees
     // every boundary edge strictly from inside, so the boundary is one simple polygon around p
     // and each vertex starts exactly one boundary edge: a per-vertex table of the edge leaving it
     // (written for every origin before it is read, so it needs no clearing) orders the edges in
     // one pass, where turning about each vertex through the cavity's triangles cost a third of
     // the fan's work. A cavity pinched at a vertex or with an interior vertex would not close
-    // after cdt.boundary.size() edges, or close early (never seen: the Delaunay lemma excludes
-    // it). Each edge goes straight into the fan (what the new triangle keeps of it).
+    // after boundary.size() edges, or close early (never seen: the Delaunay lemma excludes it).
+    // Each edge goes straight into the fan (what the new triangle keeps of it).
     //
     // A small boundary (nearly every one: about five edges) is ordered by scanning its own
     // origins instead: the table's entries are spread over all vertices, and reading back the
     // ones just written waited on their cache lines for a third of the fan's time (perf, 1.09M
     // triangles). The scan finds the same (unique) edge, so the fan is the same.
-    TriMesh2& mesh = cdt.mesh;
-    const std::uint32_t* segment_of = cdt.segment_of.data();
-    const std::vector<EdgeIdx>& boundary = cdt.boundary;
-    const std::size_t boundary_size = boundary.size(), cavity_size = cdt.cavity.size();
+    const std::size_t boundary_size = boundary.size();
     constexpr std::size_t kScanned = 16;
     const bool scanned = boundary_size <= kScanned;
     VertIdx origins[kScanned];
-    std::vector<std::uint32_t>& leaving = cdt.boundary_leaving;
+    std::vector<std::uint32_t>& leaving = scratch.leaving;
     if (scanned) {
         for (std::size_t i = 0; i < boundary_size; ++i) origins[i] = mesh.origin(boundary[i]);
     } else {
@@ -107,7 +106,7 @@ void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
         while (i < boundary_size && origins[i] != v) ++i;
         return i;  // boundary_size when none: the assertion below stops
     };
-    std::vector<FanEdge>& fan = cdt.fan;
+    std::vector<FanEdge>& fan = scratch.fan;
     fan.clear();
     std::uint32_t current = 0;
     do {
@@ -118,19 +117,22 @@ void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
         current = edge_leaving(v);
     } while (current != 0);
     EM_ASSERT(fan.size() == boundary_size && fan.size() == cavity_size + 2);
+}
 
-    const std::size_t n = fan.size();
-    std::vector<TriIdx>& slots = cdt.fan_slots;
-    slots.assign(cdt.cavity.begin(), cdt.cavity.end());
-    if (slots.size() < n) cdt.new_triangles(n - slots.size(), slots);
+/// Writes the fan (ordered by order_fan) around p into `slots` (fan[i] into slots[i]), the new
+/// triangles on t's side of the domain. `boundary_vertices`: vertex_edge of the fan's boundary
+/// vertices too (p's always; insert_probed_apart writes the others after every fan, in order).
+void write_fan_triangles(CdtState& cdt, TriIdx t, VertIdx p, std::span<const FanEdge> fan,
+                         std::span<const TriIdx> slots, bool boundary_vertices) {
     // What set, link_outer, put_on_side and link_inner do, in the same order, on the arrays
     // directly (the fan is most of the writes of a refinement): each triangle (u_i, v_i, p)
-    // keeps its outer edge and its constraint, takes t's side of the domain, and is touched.
+    // keeps its outer edge and its constraint, takes t's side of the domain.
+    const std::size_t n = fan.size();
     const std::uint8_t removed = cdt.removed[t];
     const bool attributed = !cdt.attribute.empty();
     const double attribute = attributed ? cdt.attribute[t] : 0.0;
-    VertIdx* tv = mesh.tv.data();
-    EdgeIdx* twin = mesh.twin.data();
+    VertIdx* tv = cdt.mesh.tv.data();
+    EdgeIdx* twin = cdt.mesh.twin.data();
     EdgeIdx* vertex_edge = cdt.vertex_edge.data();
     std::uint32_t* segments = cdt.segment_of.data();
     for (std::size_t i = 0; i < n; ++i) {
@@ -140,8 +142,10 @@ void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
         tv[e] = edge.u;
         tv[e + 1] = edge.v;
         tv[e + 2] = p;
-        if (edge.u != kInfinite) vertex_edge[edge.u] = e;
-        if (edge.v != kInfinite) vertex_edge[edge.v] = e + 1;
+        if (boundary_vertices) {
+            if (edge.u != kInfinite) vertex_edge[edge.u] = e;
+            if (edge.v != kInfinite) vertex_edge[edge.v] = e + 1;
+        }
         vertex_edge[p] = e + 2;
         twin[e] = edge.outer;
         twin[edge.outer] = e;
@@ -149,7 +153,6 @@ void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
         cdt.removed[s] = removed;
         if (attributed) cdt.attribute[s] = attribute;
     }
-    cdt.touched.insert(cdt.touched.end(), slots.begin(), slots.end());
     // (v_i -> p) of triangle i meets (p -> u_{i+1}) of the next, u_{i+1} = v_i; the spokes
     // are unconstrained.
     for (std::size_t i = 0; i < n; ++i) {
@@ -158,89 +161,174 @@ void write_fan(CdtState& cdt, TriIdx t, VertIdx p) {
         twin[f] = e;
         segments[e] = segments[f] = kNone;
     }
-    cdt.core.last_triangle = slots[0];
-    ++cdt.edit_counters.cavity_insertions;
-    cdt.edit_counters.cavity_triangles += cavity_size;
 }
 
-CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
+/// Replaces the cavity (its boundary half-edges in `boundary`, p strictly left of each) by the fan
+/// of triangles (u_i, v_i, p) around p, the new triangles on t's side of the domain, touched.
+void write_fan(CdtState& cdt, TriIdx t, VertIdx p, std::span<const TriIdx> cavity,
+               std::span<const EdgeIdx> boundary) {
+    order_fan(cdt.mesh, cdt.segment_of.data(), boundary, cavity.size(), cdt.fan_scratch);
+    const std::size_t n = cdt.fan_scratch.fan.size();
+    std::vector<TriIdx>& slots = cdt.fan_slots;
+    slots.assign(cavity.begin(), cavity.end());
+    if (slots.size() < n) cdt.new_triangles(n - slots.size(), slots);
+    write_fan_triangles(cdt, t, p, cdt.fan_scratch.fan, slots, true);
+    cdt.touched.insert(cdt.touched.end(), slots.begin(), slots.end());
+    cdt.core.last_triangle = slots[0];
+    ++cdt.edit_counters.cavity_insertions;
+    cdt.edit_counters.cavity_triangles += cavity.size();
+}
+
+/// Which triangles a cavity's growth has met. The sequential insertion stamps the state's
+/// per-slot array; a probe (which may run beside others) searches its own list while the cavity
+/// is small (nearly always: about three triangles) and moves to its thread's stamps beyond.
+struct StateStamps {
+    std::vector<std::uint32_t>& stamp;
+    std::uint32_t value;
+    void prefetch(TriIdx u) const { __builtin_prefetch(&stamp[u]); }
+    bool seen(TriIdx u, const std::vector<TriIdx>&) const { return stamp[u] == value; }
+    void add(TriIdx u, const std::vector<TriIdx>&) { stamp[u] = value; }
+};
+
+struct ProbeVisits {
+    static constexpr std::size_t kListed = 16;  // searched in the list up to this size
+    CavityProbeScratch& scratch;
+    std::size_t slots;
+    bool stamped = false;
+    void prefetch(TriIdx u) const {
+        if (stamped) __builtin_prefetch(&scratch.stamp[u]);
+    }
+    bool seen(TriIdx u, const std::vector<TriIdx>& cavity) const {
+        if (stamped) return scratch.stamp[u] == scratch.current;
+        return std::find(cavity.begin(), cavity.end(), u) != cavity.end();
+    }
+    /// u joins `cavity` (pushed after this call).
+    void add(TriIdx u, const std::vector<TriIdx>& cavity) {
+        if (!stamped && cavity.size() >= kListed) {
+            if (scratch.stamp.size() < slots) scratch.stamp.resize(slots, 0);
+            if (++scratch.current == 0) {
+                std::fill(scratch.stamp.begin(), scratch.stamp.end(), 0u);
+                scratch.current = 1;
+            }
+            for (const TriIdx c : cavity) scratch.stamp[c] = scratch.current;
+            stamped = true;
+        }
+        if (stamped) scratch.stamp[u] = scratch.current;
+    }
+};
+
+/// The perturbed conflict of the point q (vertex rank `index`, above every vertex's) with
+/// triangle u, as Delaunay2Core::conflict decides it for a vertex, counted in the probe.
+[[gnu::always_inline]] inline bool probe_conflict(const CdtState& cdt, TriIdx u, const double* q,
+                                                  VertIdx index, CavityProbe& probe) {
+    const TriMesh2& mesh = cdt.mesh;
+    const VertIdx* v = &mesh.tv[3 * u];
+    if (v[0] == kInfinite || v[1] == kInfinite || v[2] == kInfinite) {
+        int k = 0;
+        while (v[k] != kInfinite) ++k;
+        const double* a = mesh.point(v[(k + 1) % 3]);
+        const double* b = mesh.point(v[(k + 2) % 3]);
+        ++probe.orient_calls;
+        const Sign s = predicates::orient2d(a, b, q);
+        if (s != Sign::Zero) return s == Sign::Positive;
+        const int axis = a[0] != b[0] ? 0 : 1;  // strictly between a and b on their line
+        return (a[axis] < q[axis] && q[axis] < b[axis]) || (b[axis] < q[axis] && q[axis] < a[axis]);
+    }
+    ++probe.incircle_calls;
+    const double* a = mesh.point(v[0]);
+    const double* b = mesh.point(v[1]);
+    const double* c = mesh.point(v[2]);
+    Sign s = predicates::incircle(a, b, c, q);
+    if (s == Sign::Zero) {
+        const auto& rank = cdt.core.input_index;
+        s = predicates::incircle_sos(a, b, c, q, rank[v[0]], rank[v[1]], rank[v[2]], index);
+    }
+    return s == Sign::Positive;
+}
+
+/// Fills probe (its x, y set) with what inserting the point from triangle t would do: the
+/// conflict zone grown across unconstrained edges, its boundary, the outcome. Reads only.
+template <class Visits>
+void probe_cavity(const CdtState& cdt, TriIdx t, VertIdx index, CavityProbe& probe,
+                  Visits& visits) {
     EM_ASSERT(cdt.domain_marked() && !cdt.mesh.is_dead(t) && !cdt.mesh.is_infinite(t));
+    const TriMesh2& mesh = cdt.mesh;
     // t's constraints are read first in the growth below (cold: cache misses, as the stamps
     // and neighbours, see there).
     __builtin_prefetch(&cdt.segment_of[3 * t]);
-    cdt.encroached_edges.clear();
-    const VertIdx p = cdt.add_vertex(x, y);
-    auto reject = [&](CavityInsertion why) {
-        cdt.remove_last_vertex();
-        ++cdt.edit_counters.rejected_insertions;
-        if (why != CavityInsertion::NotInConflict)
-            cdt.edit_counters.rejected_cavity_triangles += cdt.cavity.size();
-        return why;
-    };
-    if (!cdt.core.conflict(t, p)) return reject(CavityInsertion::NotInConflict);
-
-    // The conflict zone, grown across unconstrained edges only.
-    new_cavity_stamp(cdt);
-    cdt.cavity.clear();
-    cdt.boundary.clear();
-    cdt.cavity.push_back(t);
-    cdt.cavity_stamp[t] = cdt.stamp;
+    const double q[2] = {probe.x, probe.y};
+    probe.start = t;
+    probe.cavity.clear();
+    probe.boundary.clear();
+    probe.encroached.clear();
+    probe.incircle_calls = probe.orient_calls = 0;
+    if (!probe_conflict(cdt, t, q, index, probe)) {
+        probe.outcome = CavityInsertion::NotInConflict;
+        return;
+    }
+    std::vector<TriIdx>& cavity = probe.cavity;
+    std::vector<EdgeIdx>& boundary = probe.boundary;
+    visits.add(t, cavity);
+    cavity.push_back(t);
     bool beyond_hull = false;
-    for (std::size_t i = 0; i < cdt.cavity.size(); ++i) {
-        const TriIdx c = cdt.cavity[i];
+    for (std::size_t i = 0; i < cavity.size(); ++i) {
+        const TriIdx c = cavity[i];
         // The three neighbours' stamps and vertices are usually cold (the refinement's cavities
         // are anywhere in the arrays): asked for together, their cache misses overlap instead
         // of following one another through the tests below.
         for (unsigned k = 0; k < 3; ++k) {
-            const TriIdx u = triangle_of(cdt.mesh.twin[3 * c + k]);
-            __builtin_prefetch(&cdt.cavity_stamp[u]);
-            __builtin_prefetch(&cdt.mesh.tv[3 * u]);
+            const TriIdx u = triangle_of(mesh.twin[3 * c + k]);
+            visits.prefetch(u);
+            __builtin_prefetch(&mesh.tv[3 * u]);
         }
         for (unsigned k = 0; k < 3; ++k) {
             const EdgeIdx e = 3 * c + k;
-            const TriIdx u = triangle_of(cdt.mesh.twin[e]);
-            if (cdt.cavity_stamp[u] == cdt.stamp) continue;
+            const TriIdx u = triangle_of(mesh.twin[e]);
+            if (visits.seen(u, cavity)) continue;
             if (cdt.segment_of[e] != kNone) {
-                cdt.boundary.push_back(e);
+                boundary.push_back(e);
                 continue;
             }
-            if (cdt.core.conflict(u, p)) {
-                if (cdt.mesh.is_infinite(u)) {
+            if (probe_conflict(cdt, u, q, index, probe)) {
+                if (mesh.is_infinite(u)) {
                     beyond_hull = true;  // outside the convex hull (exterior kept)
-                    cdt.boundary.push_back(e);
+                    boundary.push_back(e);
                     continue;
                 }
-                cdt.cavity_stamp[u] = cdt.stamp;
-                cdt.cavity.push_back(u);
-                __builtin_prefetch(&cdt.mesh.twin[3 * u]);  // both read when u's turn comes
+                visits.add(u, cavity);
+                cavity.push_back(u);
+                __builtin_prefetch(&mesh.twin[3 * u]);  // both read when u's turn comes
                 __builtin_prefetch(&cdt.segment_of[3 * u]);
             } else {
-                cdt.boundary.push_back(e);
+                boundary.push_back(e);
             }
         }
     }
-    if (beyond_hull) return reject(CavityInsertion::Outside);
+    if (beyond_hull) {
+        probe.outcome = CavityInsertion::Outside;
+        return;
+    }
     // One pass over the boundary: a duplicate vertex first (whatever else is found), then a hull
     // edge p does not see (Outside), then the encroached constrained edges. p's side of an
     // unconstrained edge between two finite triangles is not computed: the Delaunay lemma puts p
     // strictly inside it (p in the inner circle, not in the outer one; a point of the open chord
     // lies strictly inside both circles), so orient2d is asked only where it can fail.
     bool outside = false;
-    for (const EdgeIdx e : cdt.boundary) {
-        const VertIdx u = cdt.mesh.origin(e);
-        if (cdt.core.same_point(u, p)) {
-            cdt.encroached_edges.clear();
-            return reject(CavityInsertion::Duplicate);
+    for (const EdgeIdx e : boundary) {
+        const double* u = mesh.point(mesh.origin(e));
+        if (u[0] == q[0] && u[1] == q[1]) {
+            probe.encroached.clear();
+            probe.outcome = CavityInsertion::Duplicate;
+            return;
         }
         const bool constrained = cdt.segment_of[e] != kNone;
-        if (!constrained && !cdt.mesh.is_infinite(triangle_of(cdt.mesh.twin[e]))) continue;
-        const VertIdx v = cdt.mesh.destination(e);
-        const Sign side = cdt.core.orient(u, v, p);
+        if (!constrained && !mesh.is_infinite(triangle_of(mesh.twin[e]))) continue;
+        const double* v = mesh.point(mesh.destination(e));
+        ++probe.orient_calls;
+        const Sign side = predicates::orient2d(u, v, q);
         if (constrained) {
-            if (side != Sign::Positive ||
-                predicates::corner_dot_sign(cdt.mesh.point(p), cdt.mesh.point(u),
-                                            cdt.mesh.point(v)) != Sign::Positive) {
-                cdt.encroached_edges.push_back(e);
+            if (side != Sign::Positive || predicates::corner_dot_sign(q, u, v) != Sign::Positive) {
+                probe.encroached.push_back(e);
             }
         } else if (side != Sign::Positive) {
             // Only on the line of a hull edge beyond its ends (exterior kept).
@@ -248,13 +336,99 @@ CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
         }
     }
     if (outside) {
-        cdt.encroached_edges.clear();
-        return reject(CavityInsertion::Outside);
+        probe.encroached.clear();
+        probe.outcome = CavityInsertion::Outside;
+        return;
     }
-    if (!cdt.encroached_edges.empty()) return reject(CavityInsertion::Encroaches);
+    probe.outcome =
+        probe.encroached.empty() ? CavityInsertion::Inserted : CavityInsertion::Encroaches;
+}
 
-    write_fan(cdt, t, p);
+CavityInsertion insert_probed(CdtState& cdt, const CavityProbe& probe) {
+    cdt.core.counters.incircle_calls += probe.incircle_calls;
+    cdt.core.counters.orient_calls += probe.orient_calls;
+    cdt.encroached_edges.assign(probe.encroached.begin(), probe.encroached.end());
+    if (probe.outcome != CavityInsertion::Inserted) {
+        ++cdt.edit_counters.rejected_insertions;
+        if (probe.outcome != CavityInsertion::NotInConflict)
+            cdt.edit_counters.rejected_cavity_triangles += probe.cavity.size();
+        return probe.outcome;
+    }
+    EM_ASSERT(!cdt.mesh.is_dead(probe.start));
+    const VertIdx p = cdt.add_vertex(probe.x, probe.y);
+    write_fan(cdt, probe.start, p, probe.cavity, probe.boundary);
     return CavityInsertion::Inserted;
+}
+
+void insert_probed_apart(CdtState& cdt, std::span<const CavityProbe* const> probes,
+                         std::size_t chunks, const ChunkRunner& run,
+                         const ConstrainedTriangulation2::FanWritten& written) {
+    const std::size_t n = probes.size();
+    if (n == 0) return;
+    // In order, as insert_probed one after another would: the vertices, then each fan's slots
+    // (its cavity's, then new ones).
+    const VertIdx first = cdt.mesh.vertex_count();
+    std::vector<TriIdx>& slots = cdt.fan_slots;
+    std::vector<std::size_t>& begin = cdt.apart_slot_begin;
+    slots.clear();
+    begin.assign(1, 0);
+    for (const CavityProbe* probe : probes) {
+        EM_ASSERT(probe->outcome == CavityInsertion::Inserted && !cdt.mesh.is_dead(probe->start));
+        cdt.core.counters.incircle_calls += probe->incircle_calls;
+        cdt.core.counters.orient_calls += probe->orient_calls;
+        cdt.add_vertex(probe->x, probe->y);
+        slots.insert(slots.end(), probe->cavity.begin(), probe->cavity.end());
+        cdt.mesh.new_triangles(probe->boundary.size() - probe->cavity.size(), slots);
+        begin.push_back(slots.size());
+        ++cdt.edit_counters.cavity_insertions;
+        cdt.edit_counters.cavity_triangles += probe->cavity.size();
+    }
+    cdt.grow_slots();
+    cdt.encroached_edges.clear();
+    // The fans, in chunks of the list (possibly at once): each writes its own cavity's and new
+    // slots, the twins of the triangles beside its cavity (their own half-edges: no two cavities
+    // share a boundary edge) and its own vertex's vertex_edge.
+    chunks = std::max<std::size_t>(1, std::min(chunks, n));
+    if (cdt.apart_scratch.size() < chunks) cdt.apart_scratch.resize(chunks);
+    const auto body = [&](std::size_t c) {
+        FanScratch& scratch = cdt.apart_scratch[c];
+        for (std::size_t i = c * n / chunks; i < (c + 1) * n / chunks; ++i) {
+            const CavityProbe& probe = *probes[i];
+            order_fan(cdt.mesh, cdt.segment_of.data(), probe.boundary, probe.cavity.size(),
+                      scratch);
+            const std::span<const TriIdx> fan_slots =
+                std::span<const TriIdx>(slots).subspan(begin[i], begin[i + 1] - begin[i]);
+            write_fan_triangles(cdt, probe.start, first + static_cast<VertIdx>(i), scratch.fan,
+                                fan_slots, false);
+            if (written) written(c, begin[i], fan_slots);
+        }
+    };
+    if (run && chunks > 1) {
+        run(chunks, body);
+    } else {
+        for (std::size_t c = 0; c < chunks; ++c) body(c);
+    }
+    // The boundary vertices' vertex_edge as the fans one after another leave it (the last fan
+    // triangle at each vertex), and the touched slots.
+    EdgeIdx* vertex_edge = cdt.vertex_edge.data();
+    const VertIdx* tv = cdt.mesh.tv.data();
+    for (const TriIdx s : slots) {
+        for (unsigned k = 0; k < 2; ++k) {
+            const VertIdx v = tv[3 * s + k];
+            if (v != kInfinite) vertex_edge[v] = 3 * s + k;
+        }
+    }
+    cdt.touched.insert(cdt.touched.end(), slots.begin(), slots.end());
+    cdt.core.last_triangle = slots[begin[n - 1]];
+}
+
+CavityInsertion insert_in_cavity(CdtState& cdt, TriIdx t, double x, double y) {
+    CavityProbe& probe = cdt.probe;
+    probe.x = x;
+    probe.y = y;
+    StateStamps visits{cdt.cavity_stamp, new_cavity_stamp(cdt)};
+    probe_cavity(cdt, t, cdt.mesh.vertex_count(), probe, visits);
+    return insert_probed(cdt, probe);
 }
 
 /// Perturbed in-ellipse conflict of p with the finite triangle u under `metric`.
@@ -388,7 +562,7 @@ CavityInsertion insert_in_metric_cavity(CdtState& cdt, TriIdx t, double x, doubl
             }
         }
     }
-    write_fan(cdt, t, p);
+    write_fan(cdt, t, p, cdt.cavity, cdt.boundary);
     return CavityInsertion::Inserted;
 }
 
@@ -600,6 +774,25 @@ TriIdx ConstrainedTriangulation2::locate(double x, double y) {
 
 CavityInsertion ConstrainedTriangulation2::insert_in_cavity(TriIdx t, double x, double y) {
     return detail::insert_in_cavity(*state_, t, x, y);
+}
+void ConstrainedTriangulation2::probe_cavity(TriIdx t, double x, double y, VertIdx index,
+                                             CavityProbe& probe,
+                                             CavityProbeScratch& scratch) const {
+    probe.x = x;
+    probe.y = y;
+    detail::ProbeVisits visits{scratch, state_->mesh.triangle_slots()};
+    detail::probe_cavity(*state_, t, index, probe, visits);
+    probe.beside.clear();
+    for (const EdgeIdx e : probe.boundary)
+        probe.beside.push_back(triangle_of(state_->mesh.twin[e]));
+}
+CavityInsertion ConstrainedTriangulation2::insert_probed(const CavityProbe& probe) {
+    return detail::insert_probed(*state_, probe);
+}
+void ConstrainedTriangulation2::insert_probed_apart(std::span<const CavityProbe* const> probes,
+                                                    std::size_t chunks, const ChunkRunner& run,
+                                                    const FanWritten& written) {
+    detail::insert_probed_apart(*state_, probes, chunks, run, written);
 }
 CavityInsertion ConstrainedTriangulation2::insert_in_metric_cavity(TriIdx t, double x, double y,
                                                                    const double* metric) {

@@ -20,10 +20,12 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
 
+#include "base/chunk_runner.hpp"
 #include "triangulation/constrained/constrained_2d.hpp"
 #include "triangulation/mesh/mesh2.hpp"
 
@@ -42,6 +44,30 @@ enum class CavityInsertion {
     NotInConflict,  ///< rejected: the start triangle's circumcircle does not hold it
     Outside,        ///< rejected: beyond an unconstrained hull edge of its cavity (never when
                     ///< the start triangle is in the domain: segments enclose it)
+};
+
+/// What insert_in_cavity(t, x, y) would do to the triangulation as it is, found by reading only
+/// (ConstrainedTriangulation2::probe_cavity): the outcome, the conflict zone and its boundary.
+/// Probes of one unchanged triangulation may run on several threads at once (a parallel
+/// refinement's rounds); insert_probed carries one out later if nothing it read has changed.
+struct CavityProbe {
+    CavityInsertion outcome = CavityInsertion::NotInConflict;
+    double x = 0, y = 0;              ///< the point
+    TriIdx start = kNone;             ///< the triangle the cavity grew from
+    std::vector<TriIdx> cavity;       ///< the conflict zone (empty for NotInConflict)
+    std::vector<EdgeIdx> boundary;    ///< its boundary, half-edges inside the cavity
+    std::vector<EdgeIdx> encroached;  ///< Encroaches: as encroached_edges() would list them
+    /// probe_cavity: the triangle across each boundary edge (beside[i] across boundary[i])
+    std::vector<TriIdx> beside;
+    std::uint64_t incircle_calls = 0;
+    std::uint64_t orient_calls = 0;
+};
+
+/// One thread's scratch for probe_cavity: stamps per triangle slot for a large cavity (a small
+/// one is searched in its own list). Owned by the caller, one per thread.
+struct CavityProbeScratch {
+    std::vector<std::uint32_t> stamp;
+    std::uint32_t current = 0;
 };
 
 struct ConstrainedTriangulation2Counters {
@@ -90,6 +116,12 @@ class ConstrainedTriangulation2 {
         return !mesh_->is_dead(t) && !mesh_->is_infinite(t) &&
                (removed_->empty() || (*removed_)[t] == 0);
     }
+    /// Asks for what in_domain(t) and the triangle's vertices read (a hint for loops over cold
+    /// triangles).
+    void prefetch(TriIdx t) const {
+        __builtin_prefetch(&mesh_->tv[3 * t]);
+        if (!removed_->empty()) __builtin_prefetch(&(*removed_)[t]);
+    }
     /// The regional attribute of triangle t (0 outside every region, and without regions), as
     /// Cdt2Result::triangle_attributes will give it; kept through every edit.
     double attribute(TriIdx t) const;
@@ -124,6 +156,30 @@ class ConstrainedTriangulation2 {
     /// the constraints stay valid. Outcomes: Inserted, Duplicate, Encroaches, NotInConflict
     /// (the point is not in t), Outside (beyond the hull).
     CavityInsertion insert_in_metric_cavity(TriIdx t, double x, double y, const double* metric);
+    /// What insert_in_cavity(t, x, y) would do now, into `probe`, reading the triangulation only:
+    /// any number of threads may probe at once while nothing edits it. The point would be vertex
+    /// `index` (its symbolic perturbation's rank: any number above every vertex's, e.g. the next
+    /// vertex number; only the order matters).
+    void probe_cavity(TriIdx t, double x, double y, VertIdx index, CavityProbe& probe,
+                      CavityProbeScratch& scratch) const;
+    /// Carries out a probe (counted as insert_in_cavity counts its outcome: only Inserted
+    /// changes the triangulation; encroached_edges() then lists a rejection's edges). Valid
+    /// while every triangle of the probe's cavity, and each one across its boundary, is as it
+    /// was when probed (the caller's independence rule): the edits since touched neither.
+    CavityInsertion insert_probed(const CavityProbe& probe);
+    /// Carries out probes that each found Inserted, at once: the triangulation is the one
+    /// insert_probed would make of them one after another in this order (the same vertex
+    /// numbers, slots and links). Valid when each is as probed (as insert_probed asks) and their
+    /// cavities lie apart: no triangle of one's cavity is in another's cavity or across its
+    /// boundary. The fans are written in `chunks` ranges of the list, by `run` (possibly at
+    /// once; empty: one after another); after writing each fan, the chunk's thread calls
+    /// written(chunk, position, slots) (when given) with the fan's slots and the position of the
+    /// first in the batch's slots (which touched() then lists, in order): it may read those
+    /// triangles and the ones beside them, which no other fan writes.
+    using FanWritten =
+        std::function<void(std::size_t chunk, std::size_t position, std::span<const TriIdx> slots)>;
+    void insert_probed_apart(std::span<const CavityProbe* const> probes, std::size_t chunks,
+                             const ChunkRunner& run, const FanWritten& written = {});
     /// After insert_in_cavity returned Encroaches: the constrained half-edges (seen from inside
     /// the cavity) whose closed diametral circle holds the point or that it lies beyond.
     std::span<const EdgeIdx> encroached_edges() const;

@@ -440,7 +440,7 @@ class ParallelConstruction {
         mesh.tv.swap(prepared.tv);
         mesh.twin.swap(prepared.twin);
         stamp_.swap(prepared.stamp);
-        runner_.keys_by_mesh_vertex(arena_, core.input_index, prepared.keys, keys_);
+        detail::keys_by_mesh_vertex(runner_, arena_, core.input_index, prepared.keys, keys_);
         shared_.keys = keys_[0];
         starting_at_.assign(n + 1, kNone);
         shared_.starting_at = &starting_at_;

@@ -355,7 +355,7 @@ class ParallelConstruction3 {
         std::copy(mesh.adj.begin(), mesh.adj.end(), prepared.adj.begin());
         mesh.tv.swap(prepared.tv);
         mesh.adj.swap(prepared.adj);
-        runner_.keys_by_mesh_vertex(arena_, core.input_index, prepared.keys, keys_);
+        detail::keys_by_mesh_vertex(runner_, arena_, core.input_index, prepared.keys, keys_);
         shared_.keys = keys_[0];
         for (unsigned w = 0; w < threads; ++w)
             workers_.push_back(std::make_unique<Worker3>(shared_, pool_));

@@ -21,6 +21,7 @@
 #include <span>
 #include <vector>
 
+#include "base/parallel_runner.hpp"
 #include "triangulation/mesh/mesh2.hpp"
 
 namespace exactmesh::triangulation {
@@ -186,82 +187,23 @@ std::vector<VertIdx> run_parallel_rounds(Construction& construction, const BrioR
     return pending;
 }
 
-/// Runs each of `tasks` as a task of `arena` while the calling thread runs `main_task` there,
-/// and waits for all (the preparation of both constructions: order, keys, mesh arrays). The
-/// release/acquire pairs are PartitionRunner's, for ThreadSanitizer.
-template <class MainTask, class... Tasks>
-void run_together(tbb::task_arena& arena, MainTask&& main_task, Tasks&&... tasks) {
-    std::atomic<int> started{0}, finished{0};
-    started.store(1, std::memory_order_release);
-    arena.execute([&] {
-        tbb::task_group group;
-        (group.run([&] {
-            (void)started.load(std::memory_order_acquire);
-            tasks();
-            finished.fetch_add(1, std::memory_order_release);
-        }),
-         ...);
-        main_task();
-        group.wait();
+using exactmesh::PartitionRunner;
+using exactmesh::run_together;
+
+/// Both curves' keys by mesh vertex (keys[c][v] = keys_by_input[c][input_index[v]]): the
+/// keys are computed in the caller's order, the passes read them by mesh vertex.
+inline void keys_by_mesh_vertex(PartitionRunner& runner, tbb::task_arena& arena,
+                                std::span<const VertIdx> input_index,
+                                const std::vector<std::uint32_t> (&keys_by_input)[2],
+                                std::vector<std::uint32_t> (&keys)[2]) {
+    for (std::vector<std::uint32_t>& curve : keys) curve.resize(input_index.size());
+    runner.run_chunks(arena, input_index.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t v = begin; v != end; ++v) {
+            keys[0][v] = keys_by_input[0][input_index[v]];
+            keys[1][v] = keys_by_input[1][input_index[v]];
+        }
     });
-    (void)finished.load(std::memory_order_acquire);
 }
-
-/// Runs the partitions of a pass on an arena, one task per partition.
-/// The release/acquire pairs on the two counters repeat what the task scheduler already
-/// guarantees (what the caller did before happens before each task, each task before what
-/// follows), in a form ThreadSanitizer sees: libtbb is not instrumented.
-class PartitionRunner {
-  public:
-    /// Calls run_partition(w) for w in [0, count), in parallel on `arena`.
-    template <class RunPartition>
-    void run(tbb::task_arena& arena, std::size_t count, RunPartition&& run_partition) {
-        epoch_.fetch_add(1, std::memory_order_release);
-        arena.execute([&] {
-            tbb::parallel_for(
-                tbb::blocked_range<std::size_t>(0, count, 1),
-                [&](const tbb::blocked_range<std::size_t>& r) {
-                    (void)epoch_.load(std::memory_order_acquire);
-                    for (std::size_t w = r.begin(); w != r.end(); ++w) run_partition(w);
-                    finished_.fetch_add(1, std::memory_order_release);
-                },
-                tbb::simple_partitioner());
-        });
-        (void)finished_.load(std::memory_order_acquire);
-    }
-
-    /// Calls body(begin, end) over [0, n) in chunks of 2^14, in parallel on `arena`.
-    template <class Body>
-    void run_chunks(tbb::task_arena& arena, std::size_t n, Body&& body) {
-        epoch_.fetch_add(1, std::memory_order_release);
-        arena.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1 << 14),
-                              [&](const tbb::blocked_range<std::size_t>& r) {
-                                  (void)epoch_.load(std::memory_order_acquire);
-                                  body(r.begin(), r.end());
-                                  finished_.fetch_add(1, std::memory_order_release);
-                              });
-        });
-        (void)finished_.load(std::memory_order_acquire);
-    }
-
-    /// Both curves' keys by mesh vertex (keys[c][v] = keys_by_input[c][input_index[v]]): the
-    /// keys are computed in the caller's order, the passes read them by mesh vertex.
-    void keys_by_mesh_vertex(tbb::task_arena& arena, std::span<const VertIdx> input_index,
-                             const std::vector<std::uint32_t> (&keys_by_input)[2],
-                             std::vector<std::uint32_t> (&keys)[2]) {
-        for (std::vector<std::uint32_t>& curve : keys) curve.resize(input_index.size());
-        run_chunks(arena, input_index.size(), [&](std::size_t begin, std::size_t end) {
-            for (std::size_t v = begin; v != end; ++v) {
-                keys[0][v] = keys_by_input[0][input_index[v]];
-                keys[1][v] = keys_by_input[1][input_index[v]];
-            }
-        });
-    }
-
-  private:
-    std::atomic<std::uint64_t> epoch_{0}, finished_{0};
-};
 
 }  // namespace detail
 }  // namespace exactmesh::triangulation

@@ -11,6 +11,7 @@
 #include <functional>
 #include <vector>
 
+#include "base/chunk_runner.hpp"
 #include "triangulation/mesh/mesh2.hpp"
 
 namespace exactmesh::triangulation::detail {
@@ -31,9 +32,7 @@ inline void report_first_occurrence(std::vector<VertIdx>& merged_into,
     for (VertIdx& v : input_index) v = merged_into[v];
 }
 
-/// Runs body(c) for every chunk c in [0, count), in any order and possibly at once (the
-/// multicore constructions run the chunks on their threads); empty: one after another.
-using ChunkRunner = std::function<void(std::size_t count, const std::function<void(std::size_t)>&)>;
+using exactmesh::ChunkRunner;
 
 /// The result of a mesh of cells of K vertices (triangles K = 3, tetrahedra K = 4) in place:
 /// the live finite cells among the first `slots` numbered consecutively in slot order

@@ -73,10 +73,11 @@ TEST(CounterTable, GeneratorTablesKeepTheirNames) {
     r.segment_splits = 4;
     r.flips = 9;
     const auto refinement = gen::counter_list(r);
-    ASSERT_EQ(refinement.size(), 20u);
+    ASSERT_EQ(refinement.size(), 23u);
     EXPECT_EQ(refinement.front(), (std::pair<std::string, std::uint64_t>{"steiner_points", 7}));
     EXPECT_EQ(refinement[13], (std::pair<std::string, std::uint64_t>{"delaunay_flips", 9}));
-    EXPECT_EQ(refinement.back().first, "polish_stopped");
+    EXPECT_EQ(refinement[19].first, "polish_stopped");
+    EXPECT_EQ(refinement.back().first, "threads");
     gen::QuadtreeCounters2 q;
     q.depth = 5;
     const auto quadtree = gen::counter_list(q);
