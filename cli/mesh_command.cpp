@@ -530,10 +530,10 @@ void add_mesh_command(CLI::App& app) {
     command
         ->add_option("--refine-order", arguments->refine_order,
                      "delaunay-refinement's order: worst-first (one point at a time, the worst "
-                     "triangle first; one thread) or rounds (up to 1024 of the worst triangles "
-                     "at once, their cavities found in parallel, inserted unless one meets an "
-                     "earlier one's; the same mesh on any --threads, not worst-first's). "
-                     "Default: worst-first on one thread, rounds on more")
+                     "triangle first; one thread) or rounds (up to 1024 of the worst triangles, "
+                     "keys within 9%, at once: their cavities found in parallel, inserted "
+                     "unless one meets an earlier one's; the same mesh on any --threads, not "
+                     "worst-first's). Default: worst-first on one thread, rounds on more")
         ->check(CLI::IsMember({"worst-first", "rounds"}));
     command
         ->add_option(

@@ -69,8 +69,18 @@ py::dict mesh(const CoordinateArray& points, const IndexArray& segments,
               const CoordinateArray& holes, const std::string& domain_name,
               const std::string& generator_name, const SizeArgument& size_argument,
               std::optional<double> min_angle, std::optional<double> polish_angle,
-              std::uint64_t max_steiner, const std::string& layers, bool quads, bool o_mesh) {
+              std::uint64_t max_steiner, const std::string& layers, bool quads, bool o_mesh,
+              unsigned threads, const std::string& refine_order) {
     const gen::MeshGenerator2& generator = gen::find_mesh_generator_2d(generator_name);
+    if ((threads != 1 || !refine_order.empty()) &&
+        !generator.honours.contains(gen::MeshOption::Threads)) {
+        throw InputError(
+            "threads and refine_order apply to generator='delaunay-refinement' only; " +
+            generator_name + " runs on one thread");
+    }
+    if (!refine_order.empty() && refine_order != "worst-first" && refine_order != "rounds")
+        throw InputError("refine_order '" + refine_order + "' is not worst-first or rounds");
+    if (threads > 1024) throw InputError("threads " + std::to_string(threads) + " is above 1024");
     if ((min_angle || polish_angle) &&
         !(generator.honours.contains(gen::MeshOption::MinAngle) &&
           generator.honours.contains(gen::MeshOption::PolishAngle))) {
@@ -98,6 +108,11 @@ py::dict mesh(const CoordinateArray& points, const IndexArray& segments,
     if (!std::isfinite(options.min_angle) || !std::isfinite(options.polish_angle))
         throw InputError("min_angle and polish_angle must be finite numbers");
     options.max_steiner_points = max_steiner;
+    options.threads = threads;
+    // As the command: rounds when asked, or for more than one thread.
+    options.refinement_order = refine_order == "rounds" || (refine_order.empty() && threads != 1)
+                                   ? gen::RefinementOrder::Rounds
+                                   : gen::RefinementOrder::WorstFirst;
     if (!layers.empty()) options.layers = gen::parse_layer_parameters(layers);
     options.layers.quads = quads;
     if (o_mesh) options.layers.method = gen::LayerMethod2::TruncatedOMesh;
@@ -202,15 +217,17 @@ void bind_generators(py::module_& m) {
            std::optional<CoordinateArray> size_grid_values,
            std::optional<IndexArray> size_grid_triangles, std::optional<double> min_angle,
            std::optional<double> polish_angle, std::uint64_t max_steiner, const std::string& layers,
-           bool quads, bool o_mesh) {
+           bool quads, bool o_mesh, unsigned threads, const std::string& refine_order) {
             return mesh(points, segments, holes, domain, generator,
                         size_argument(size_uniform, size_sources, std::move(size_grid_points),
                                       std::move(size_grid_values), std::move(size_grid_triangles)),
-                        min_angle, polish_angle, max_steiner, layers, quads, o_mesh);
+                        min_angle, polish_angle, max_steiner, layers, quads, o_mesh, threads,
+                        refine_order);
         },
         "points"_a, "segments"_a, "holes"_a, "domain"_a, "generator"_a, "size_uniform"_a,
         "size_sources"_a, "size_grid_points"_a, "size_grid_values"_a, "size_grid_triangles"_a,
-        "min_angle"_a, "polish_angle"_a, "max_steiner"_a, "layers"_a, "quads"_a, "o_mesh"_a);
+        "min_angle"_a, "polish_angle"_a, "max_steiner"_a, "layers"_a, "quads"_a, "o_mesh"_a,
+        "threads"_a, "refine_order"_a);
     m.def(
         "_quality",
         [](const CoordinateArray& points, const IndexArray& triangles,

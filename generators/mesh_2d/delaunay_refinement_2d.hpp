@@ -66,13 +66,18 @@ enum class RefinementOrder {
     /// One point at a time, for the worst bad triangle (or encroached piece) first: the
     /// sequential refinement, on one thread.
     WorstFirst,
-    /// Rounds: the worst kRefinementRoundSize bad triangles (fewer when an encroached piece
-    /// comes before them) are taken at once; their circumcentres and conflict zones are found
-    /// in parallel by reading the mesh only, then, in the order they were taken, each is
-    /// inserted unless its zone (or a triangle beside it) meets the zone of one inserted before
-    /// it in the round; those wait for the next round. What a round holds never depends on the
-    /// thread count, so neither does the mesh; it is not WorstFirst's mesh (the same criteria
-    /// and guarantee, a different order).
+    /// Rounds: up to kRefinementRoundSize of the worst bad triangles are taken at once: those
+    /// of the worst key's two buckets (keys within 9%; none after an encroached piece that comes
+    /// first), skipping a triangle with a vertex of one already taken (it waits), and a round
+    /// of fewer than 64 is only its first triangle (a worst-first step). Their circumcentres
+    /// and conflict zones are found in parallel by reading the mesh only, then, in the order
+    /// they were taken, each is inserted unless its zone (or a triangle beside it) meets the
+    /// zone of one inserted before it in the round; those wait for the next round. The fans
+    /// are written, and their triangles assessed (without a cached size), in parallel. What a
+    /// round holds never depends on the thread count, so neither does the mesh; it is not
+    /// WorstFirst's mesh (the same criteria and guarantee, a different order: within 0.3% of
+    /// its points on the sample domains, 3-10% more on small domains refined to 30 degrees
+    /// without a size, the same at 25).
     Rounds,
 };
 

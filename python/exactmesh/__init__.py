@@ -205,14 +205,17 @@ def _bounds(points):
 
 def mesh(points=None, segments=None, holes=None, *, domain=None, generator="delaunay-refinement",
          size=None, min_angle=None, polish_angle=None, max_steiner=0, layers=None, quads=False,
-         o_mesh=False):
+         o_mesh=False, threads=1, refine_order=None):
     """A quality mesh of a PSLG (points, segments, holes) or of a built-in domain
     (domain="naca0012", "square-with-holes", "key", "three-element"), as `exactmesh mesh`.
 
     generator: one of exactmesh.generators; size: a number, size-file lines, or a callable
     f(x, y) sampled on a 129 x 129 grid over the domain; min_angle / polish_angle (degrees,
     delaunay-refinement only); layers=(first_height, growth[, max_layers]) for the layered
-    generators, quads=True keeps layer quadrilaterals, o_mesh=True the truncated O-mesh."""
+    generators, quads=True keeps layer quadrilaterals, o_mesh=True the truncated O-mesh;
+    threads (delaunay-refinement; 0: every core): more than one refines in rounds
+    (refine_order="rounds", whose mesh is the same for every thread count; "worst-first", the
+    default on one thread, is sequential)."""
     if domain is not None and (points is not None or segments is not None or holes is not None):
         raise InputError("give either points and segments, or domain= (not both)")
     if domain is None and points is None:
@@ -225,7 +228,7 @@ def mesh(points=None, segments=None, holes=None, *, domain=None, generator="dela
     d = _core._mesh(p, _index_array(segments, 2), _points(holes, 2), domain or "", generator,
                     *sizes, None if min_angle is None else float(min_angle),
                     None if polish_angle is None else float(polish_angle), int(max_steiner),
-                    layer_text, bool(quads), bool(o_mesh))
+                    layer_text, bool(quads), bool(o_mesh), int(threads), refine_order or "")
     return _mesh_from(d, d["segments"], d["delaunay"])
 
 

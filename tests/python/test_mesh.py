@@ -49,6 +49,24 @@ def test_same_mesh_as_the_command(command, tmp_path):
     assert (read_ele(out) == m.triangles).all()
 
 
+def test_rounds_on_two_threads_are_the_command_s_and_one_thread_s(command, tmp_path):
+    out = tmp_path / "swh.ele"
+    subprocess.run([command, "mesh", "--domain", "square-with-holes", "--size", "0.02",
+                    "--min-angle", "30", "--threads", "2", "-o", str(out)],
+                   check=True, capture_output=True)
+    two = exactmesh.mesh(domain="square-with-holes", size=0.02, min_angle=30, threads=2)
+    one = exactmesh.mesh(domain="square-with-holes", size=0.02, min_angle=30, threads=1,
+                         refine_order="rounds")
+    assert (read_node(tmp_path / "swh.node") == two.points).all()
+    assert (read_ele(out) == two.triangles).all()
+    assert (one.points == two.points).all() and (one.triangles == two.triangles).all()
+    assert exactmesh.quality(two.points, two.triangles)["min_angle"] >= 30 - 1e-9
+    with pytest.raises(exactmesh.InputError, match="threads and refine_order apply"):
+        exactmesh.mesh(domain="key", generator="frontal", threads=2)
+    with pytest.raises(exactmesh.InputError, match="worst-first refinement runs on one thread"):
+        exactmesh.mesh(domain="key", threads=2, refine_order="worst-first")
+
+
 def test_min_angle_is_met_away_from_small_input_angles():
     m = exactmesh.mesh(domain="square-with-holes", min_angle=30)
     q = exactmesh.quality(m.points, m.triangles)

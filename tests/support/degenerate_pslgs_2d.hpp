@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 #include "tests/support/pslg_fixtures_2d.hpp"
 
@@ -42,6 +43,30 @@ inline Input vertex_ulps_off_a_segment() {
     Input in = polygon({0, 0, 1, 0.3, 1, 1, 0, 1});
     in.xy.insert(in.xy.end(), {0.5, std::nextafter(0.15, 1.0)});
     return in;
+}
+
+/// A named input of degenerate_pslgs().
+struct NamedInput {
+    const char* name;
+    Input in;
+};
+
+/// The four above by name, the tiny hole with a free vertex 1e-6 above the bottom side.
+inline std::vector<NamedInput> degenerate_pslgs() {
+    std::vector<NamedInput> cases;
+    // Collinear points on the boundary (input vertices on the square's sides: split there).
+    cases.push_back({"points on segments", square_with_points_on_sides()});
+    // Duplicate vertices, a duplicated segment and one given through the copies.
+    cases.push_back({"duplicates", square_with_duplicates()});
+    // A tiny square hole (1e-4) next to a big domain, and a free vertex 1e-6 above a segment.
+    {
+        Input in = square_with_tiny_hole();
+        in.xy.insert(in.xy.end(), {0.6, 1e-6});
+        cases.push_back({"tiny features", in});
+    }
+    // A vertex a few ulps off a skew segment's line (0, 0) - (1, 0.3).
+    cases.push_back({"vertex ulps off a segment", vertex_ulps_off_a_segment()});
+    return cases;
 }
 
 }  // namespace exactmesh::testing

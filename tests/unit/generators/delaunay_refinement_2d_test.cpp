@@ -192,24 +192,7 @@ TEST(Generators_DelaunayRefinement, FiveDegreeInputAngleTerminates) {
 }
 
 TEST(Generators_DelaunayRefinement, DegenerateInputs) {
-    struct Case {
-        const char* name;
-        Input in;
-    };
-    std::vector<Case> cases;
-    // Collinear points on the boundary (input vertices on the square's sides: split there).
-    cases.push_back({"points on segments", em::testing::square_with_points_on_sides()});
-    // Duplicate vertices, a duplicated segment and one given through the copies.
-    cases.push_back({"duplicates", em::testing::square_with_duplicates()});
-    // A tiny square hole (1e-4) next to a big domain, and a free vertex 1e-6 above a segment.
-    {
-        Input in = em::testing::square_with_tiny_hole();
-        in.xy.insert(in.xy.end(), {0.6, 1e-6});
-        cases.push_back({"tiny features", in});
-    }
-    // A vertex a few ulps off a skew segment's line (0, 0) - (1, 0.3).
-    cases.push_back({"vertex ulps off a segment", em::testing::vertex_ulps_off_a_segment()});
-    for (const Case& c : cases) {
+    for (const em::testing::NamedInput& c : em::testing::degenerate_pslgs()) {
         for (const double angle : {20.7, 28.0}) {
             const Refined r = refine(c.in, angle);
             ASSERT_TRUE(r.check.ok) << c.name << " at " << angle << ": " << r.check.problem;

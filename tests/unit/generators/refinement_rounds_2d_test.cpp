@@ -22,7 +22,6 @@
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;
-namespace tri = exactmesh::triangulation;
 
 namespace {
 
@@ -120,26 +119,14 @@ TEST(Generators_RefinementRounds, ThirtyDegreesWithThePolishAsWorstFirst) {
 }
 
 TEST(Generators_RefinementRounds, DegenerateAndCocircularInputs) {
-    struct Case {
-        const char* name;
-        Input in;
-    };
-    std::vector<Case> cases;
-    cases.push_back({"points on segments", em::testing::square_with_points_on_sides()});
-    cases.push_back({"duplicates", em::testing::square_with_duplicates()});
-    {
-        Input in = em::testing::square_with_tiny_hole();
-        in.xy.insert(in.xy.end(), {0.6, 1e-6});
-        cases.push_back({"tiny features", in});
-    }
-    cases.push_back({"vertex ulps off a segment", em::testing::vertex_ulps_off_a_segment()});
+    std::vector<em::testing::NamedInput> cases = em::testing::degenerate_pslgs();
     // Twelve cocircular vertices (radius 5: (±5, 0), (0, ±5), (±3, ±4), (±4, ±3)) as the
     // boundary, with a free vertex at the centre: the first cavities meet exact incircle ties
     // (the symbolic perturbation decides them, with the probed point's rank).
     cases.push_back({"cocircular ring", polygon({5,  0, 4,  3,  3,  4,  0, 5,  -3, 4,  -4, 3,
                                                  -5, 0, -4, -3, -3, -4, 0, -5, 3,  -4, 4,  -3})});
     cases.back().in.xy.insert(cases.back().in.xy.end(), {0, 0});
-    for (const Case& c : cases) {
+    for (const em::testing::NamedInput& c : cases) {
         for (const double angle : {20.7, 28.0}) {
             const std::string what = std::string(c.name) + " at " + std::to_string(angle);
             const Refined r = refine_on_every_thread_count(c.in, rounds(angle), what);
