@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <functional>
 #include <memory>
 #include <span>
@@ -392,6 +393,11 @@ class Refiner {
     std::vector<BadTriangle> taken_;                 // every valid entry taken out, in order
     std::vector<Assessment> assessments_;            // a round's new triangles, in touched() order
     std::vector<RefinementCounters2> tallies_;       // per chunk of a round's fans
+    struct ChunkError {
+        std::exception_ptr error;  // the first assessment that threw in the chunk
+        std::size_t position = 0;  // its triangle's place in touched()
+    };
+    std::vector<ChunkError> errors_;                 // per chunk of a round's fans
     RoundSet round_vertices_;                        // the vertices of a round's bad triangles
     /// The slots in the cavities of the points a round inserts, and those beside them (across
     /// their boundaries).
@@ -1079,30 +1085,48 @@ void Refiner::insert_round(std::uint64_t limit) {
             after_insertion(round_[i], cdt_.insert_probed(probe), probe.cavity.size());
         }
     }
-    // Without a size to cache (a uniform size, or none) the new triangles are assessed on the
-    // thread that wrote them, while they are in its cache (assess only reads them, the vertices
-    // and the constraints), and queued afterwards in the order process_touched queues them: the
-    // same queue either way.
+    // With a size that may be evaluated on several threads at once (every kind but a caller's
+    // function) the new triangles are assessed on the thread that wrote them, while they are in
+    // its cache, and queued afterwards in the order process_touched queues them: the same queue
+    // either way. A fan's triangles forget their cached edge sizes first, then each reads its
+    // own and those of the triangles beside the cavity, which no other fan writes (the size at
+    // an edge's midpoint is the same number from either side, so where it comes from does not
+    // change the mesh). An error (a size not > 0) is kept per chunk and the first in order
+    // thrown after the fans, as one thread would throw it.
     const std::size_t chunks = threads_ == 1 ? 1 : 4 * std::size_t{threads_};
+    const bool assess_in_fans = !cache_sizes_ || options_.size.concurrent();
     tri::ConstrainedTriangulation2::FanWritten written;
-    if (!cache_sizes_) {
+    if (assess_in_fans) {
         std::size_t fan_triangles = 0;
         for (const tri::CavityProbe* probe : accepted_) fan_triangles += probe->boundary.size();
         assessments_.assign(fan_triangles, Assessment{});
         tallies_.assign(chunks, RefinementCounters2{});
+        errors_.assign(chunks, {});
         // Every new slot is below this (recycled ones are lower still).
         const std::size_t slots = mesh_.triangle_slots() + 2 * accepted_.size();
         if (version_.size() < slots) {
             version_.resize(slots, 0);
             seen_.resize(slots, 0);
         }
+        if (cache_sizes_ && edge_size_.size() < 3 * slots) edge_size_.resize(3 * slots, 0.0);
         written = [&](std::size_t chunk, std::size_t position, std::span<const TriIdx> fan) {
+            if (errors_[chunk].error) return;
+            for (const TriIdx t : fan) {
+                ++version_[t];
+                if (cache_sizes_) {
+                    edge_size_[3 * t] = edge_size_[3 * t + 1] = edge_size_[3 * t + 2] = 0.0;
+                }
+            }
             for (std::size_t j = 0; j < fan.size(); ++j) {
                 const TriIdx t = fan[j];
-                ++version_[t];
                 if (!cdt_.in_domain(t)) continue;
                 Assessment& a = assessments_[position + j];
-                a = assess(t, tallies_[chunk]);
+                try {
+                    a = assess(t, tallies_[chunk]);
+                } catch (...) {
+                    errors_[chunk] = {std::current_exception(), position + j};
+                    return;
+                }
                 find_encroached_pieces(t, a, tallies_[chunk]);
             }
         };
@@ -1117,10 +1141,15 @@ void Refiner::insert_round(std::uint64_t limit) {
             },
             written);
     }
-    if (cache_sizes_) {
+    if (!assess_in_fans) {
         process_touched();
         return;
     }
+    const ChunkError* first_error = nullptr;
+    for (const ChunkError& e : errors_)
+        if (e.error && (first_error == nullptr || e.position < first_error->position))
+            first_error = &e;
+    if (first_error != nullptr) std::rethrow_exception(first_error->error);
     const std::span<const TriIdx> touched = cdt_.touched();
     for (std::size_t k = 0; k < touched.size(); ++k)
         if (assessments_[k].in_domain) queue(touched[k], assessments_[k]);

@@ -126,6 +126,10 @@ class SizeFunction {
     bool bounded() const { return kind_ != Kind::None; }
     /// True for a uniform size (then the size is the same everywhere).
     bool is_uniform() const { return kind_ == Kind::Uniform; }
+    /// True when the size may be evaluated on several threads at once: every kind but analytic
+    /// (a caller's function may keep state, as the command's muParser expressions do: each
+    /// writes its variables before evaluating); the others only read what they were built with.
+    bool concurrent() const { return kind_ != Kind::Analytic; }
     /// True for point and line sources (point_sources(), line_sources(), cap(), factor() then
     /// give the whole function: factor * min(cap, sum of the sources)).
     bool is_sources() const { return kind_ == Kind::Sources; }

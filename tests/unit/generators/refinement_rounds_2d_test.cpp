@@ -10,6 +10,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/errors.hpp"
@@ -96,6 +97,29 @@ TEST(Generators_RefinementRounds, SampleDomainsMeetTheBoundsOnEveryThreadCount) 
         }
         // More than one point per round on average: the rounds do find independent cavities.
         EXPECT_GT(r.result.counters.steiner_points(), 2 * r.result.counters.rounds) << name;
+    }
+}
+
+TEST(Generators_RefinementRounds, GradedSizesOfEveryKindOnEveryThreadCount) {
+    // Sources and a background mesh are assessed on the fans' threads (SizeFunction::concurrent),
+    // a caller's function on one thread after them: the same mesh either way, on any count.
+    const Input in = from_domain(gen::sample_domain(gen::SampleDomain::SquareWithHoles));
+    const gen::SizeFunction sources = gen::SizeFunction::sources(
+        {{0.5, 0.5, 0.004, 0.2, 1.0}}, {{0.0, 0.0, 1.0, 0.0, 0.006, 0.3, 1.0}}, 0.05);
+    const gen::SizeFunction analytic = gen::SizeFunction::analytic(
+        [](double x, double y) { return 0.006 + 0.03 * std::hypot(x - 0.5, y - 0.5); },
+        "0.006 + 0.03 |p - (0.5, 0.5)|");
+    const gen::SizeFunction background = gen::SizeFunction::background_mesh(
+        {-1, -1, 2, -1, 2, 2, -1, 2}, {0.004, 0.02, 0.05, 0.02}, {0, 1, 2, 0, 2, 3});
+    EXPECT_TRUE(sources.concurrent());
+    EXPECT_TRUE(background.concurrent());
+    EXPECT_FALSE(analytic.concurrent());
+    for (const auto& [name, size] : {std::pair{"sources", sources}, std::pair{"analytic", analytic},
+                                     std::pair{"background", background}}) {
+        const Refined r = refine_on_every_thread_count(in, rounds(28.0, size), name);
+        EXPECT_GE(r.check.min_angle, 28.0 - kAngleSlack) << name;
+        EXPECT_LE(r.check.max_size_ratio, 1 + 1e-9) << name;
+        EXPECT_GT(r.result.mesh.mesh.triangle_count(), 2000u) << name;
     }
 }
 
