@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Benchmarks from Python (issue 16): the binding's cost over the C++ call, exactmesh against
-scipy.spatial.Delaunay (Qhull) in 2D and 3D, and how many of scipy's outputs on the degenerate
+"""Benchmarks from Python (issue 16): the binding's cost over the C++ call, exactmesh (one thread,
+and every core: threads=0) against scipy.spatial.Delaunay (Qhull, one thread) in 2D and 3D, and how many of scipy's outputs on the degenerate
 inputs are not Delaunay (checked exactly by exactmesh's checks).
 
 Usage: PYTHONPATH=build/release/python bench/python_bench.py [--quick] [--json OUT.json]
@@ -95,14 +95,18 @@ def speed(sizes2, sizes3, repetitions):
     for dim, sizes in ((2, sizes2), (3, sizes3)):
         for n in sizes:
             points = rng.random((n, dim))
-            ours, theirs = [], []
+            ours, ours_all, theirs = [], [], []
             build = exactmesh.triangulate if dim == 2 else exactmesh.tetrahedralize
             for _ in range(repetitions):
                 ours.append(timed(lambda: build(points))[0])
+                ours_all.append(timed(lambda: build(points, threads=0))[0])
                 theirs.append(timed(lambda: scipy.spatial.Delaunay(points))[0])
-            (o, so), (t, st) = median_spread(ours), median_spread(theirs)
+            (o, so), (a, sa), (t, st) = (median_spread(ours), median_spread(ours_all),
+                                         median_spread(theirs))
             rows.append({"dim": dim, "points": n, "exactmesh_s": o, "exactmesh_spread": so,
-                         "scipy_s": t, "scipy_spread": st, "speedup": t / o})
+                         "exactmesh_all_cores_s": a, "exactmesh_all_cores_spread": sa,
+                         "scipy_s": t, "scipy_spread": st, "speedup": t / o,
+                         "speedup_all_cores": t / a})
     return rows
 
 
@@ -148,10 +152,13 @@ def main():
         print(f"| {r['dim']}D | {r['points']:,} | {r['call_s']:.3f} | {r['construct_s']:.3f} | "
               f"{100 * r['overhead']:.2f}% |")
     sp = speed(sizes2, sizes3, reps)
-    print("\n| dim | points | exactmesh (s) | scipy (s) | scipy / exactmesh |\n|---|---|---|---|---|")
+    print("\n| dim | points | exactmesh, 1 thread (s) | exactmesh, every core (s) | scipy (s) | "
+          "scipy / exactmesh (1 thread, every core) |\n|---|---|---|---|---|---|")
     for r in sp:
         print(f"| {r['dim']}D | {r['points']:,} | {r['exactmesh_s']:.3f} (±{100 * r['exactmesh_spread']:.0f}%) "
-              f"| {r['scipy_s']:.3f} (±{100 * r['scipy_spread']:.0f}%) | {r['speedup']:.2f}x |")
+              f"| {r['exactmesh_all_cores_s']:.3f} (±{100 * r['exactmesh_all_cores_spread']:.0f}%) "
+              f"| {r['scipy_s']:.3f} (±{100 * r['scipy_spread']:.0f}%) | {r['speedup']:.2f}x, "
+              f"{r['speedup_all_cores']:.2f}x |")
     rb = robustness(2000 if args.quick else 20000, 1000 if args.quick else 5000)
     print("\n| input | dim | points | scipy.spatial.Delaunay | exactmesh |\n|---|---|---|---|---|")
     for r in rb:

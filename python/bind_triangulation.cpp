@@ -30,12 +30,19 @@ using namespace pybind11::literals;
 
 namespace {
 
+/// threads as the command's --threads: 0 every core, at most 1024.
+unsigned checked_threads(unsigned threads) {
+    if (threads > 1024) throw InputError("threads " + std::to_string(threads) + " is above 1024");
+    return threads;
+}
+
 py::dict triangulate(const CoordinateArray& points, const std::string& algorithm,
-                     const std::string& order, std::uint64_t seed) {
+                     const std::string& order, std::uint64_t seed, unsigned threads) {
     const std::span<const double> xy = coordinates(points, 2, "points");
     const tri::Delaunay2Function build = tri::delaunay_2d_algorithm(algorithm);
-    const tri::Delaunay2Options options{tri::insertion_order_from_name(order), seed,
-                                        tri::PointLocation::Auto};
+    tri::Delaunay2Options options{tri::insertion_order_from_name(order), seed,
+                                  tri::PointLocation::Auto};
+    options.threads = checked_threads(threads);
     tri::Delaunay2Result result;
     double seconds = 0;
     {
@@ -52,10 +59,11 @@ py::dict triangulate(const CoordinateArray& points, const std::string& algorithm
 }
 
 py::dict tetrahedralize(const CoordinateArray& points, const std::string& algorithm,
-                        const std::string& order, std::uint64_t seed) {
+                        const std::string& order, std::uint64_t seed, unsigned threads) {
     const std::span<const double> xyz = coordinates(points, 3, "points");
     const tri::Delaunay3Function build = tri::delaunay_3d_algorithm(algorithm);
-    const tri::Delaunay3Options options{tri::insertion_order_from_name(order), seed};
+    tri::Delaunay3Options options{tri::insertion_order_from_name(order), seed};
+    options.threads = checked_threads(threads);
     tri::Delaunay3Result result;
     double seconds = 0;
     {
@@ -195,8 +203,10 @@ py::dict constrained_result_dict(tri::Cdt2Result&& result, std::vector<tri::Vert
 }
 
 void bind_triangulation(py::module_& m) {
-    m.def("_triangulate", &triangulate, "points"_a, "algorithm"_a, "order"_a, "seed"_a);
-    m.def("_tetrahedralize", &tetrahedralize, "points"_a, "algorithm"_a, "order"_a, "seed"_a);
+    m.def("_triangulate", &triangulate, "points"_a, "algorithm"_a, "order"_a, "seed"_a,
+          "threads"_a);
+    m.def("_tetrahedralize", &tetrahedralize, "points"_a, "algorithm"_a, "order"_a, "seed"_a,
+          "threads"_a);
     m.def("_cdt", &cdt, "points"_a, "segments"_a, "holes"_a, "recovery"_a, "remove_exterior"_a,
           "order"_a, "seed"_a);
     m.def("_check_delaunay", &check_delaunay, "points"_a, "triangles"_a);

@@ -153,20 +153,22 @@ class Mesh:
         return check_mesh(self)
 
 
-def triangulate(points, algorithm="bowyer-watson", order="brio", seed=1):
+def triangulate(points, algorithm="bowyer-watson", order="brio", seed=1, threads=1):
     """The Delaunay triangulation of points (N, 2), exact (symbolic perturbation on ties).
-    algorithm: bowyer-watson, green-sibson or tanemura-merriam; order: given, random, brio."""
+    algorithm: bowyer-watson, green-sibson or tanemura-merriam; order: given, random, brio;
+    threads (bowyer-watson with brio; 0: every core): the same triangles for every count."""
     p = _points(points, 2)
-    d = _core._triangulate(p, algorithm, order, seed)
+    d = _core._triangulate(p, algorithm, order, seed, int(threads))
     return Triangulation(p, d["triangles"], d["neighbors"], d["merged_into"].ravel(),
                          d["counters"], d["construct_seconds"])
 
 
-def tetrahedralize(points, algorithm="bowyer-watson", order="brio", seed=1):
+def tetrahedralize(points, algorithm="bowyer-watson", order="brio", seed=1, threads=1):
     """The Delaunay tetrahedralization of points (N, 3). algorithm: bowyer-watson or
-    green-sibson."""
+    green-sibson; threads (bowyer-watson with brio; 0: every core): the same tetrahedra for
+    every count."""
     p = _points(points, 3)
-    d = _core._tetrahedralize(p, algorithm, order, seed)
+    d = _core._tetrahedralize(p, algorithm, order, seed, int(threads))
     return Tetrahedralization(p, d["tetrahedra"], d["neighbors"], d["merged_into"].ravel(),
                               d["coplanar"], d["counters"], d["construct_seconds"])
 

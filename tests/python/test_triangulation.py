@@ -69,6 +69,26 @@ def test_tetrahedralize_matches_scipy(rng):
         assert simplex_set(t.tetrahedra) == simplex_set(scipy_spatial.Delaunay(points).simplices)
 
 
+def test_threads_give_the_same_simplices(rng):
+    # Enough points for parallel rounds (as cli.threads): 2 and 3 threads against 1, exactly
+    # checked; cocircular lattice points included (ties broken by the same perturbation).
+    lattice = np.array([[i, j] for i in range(60) for j in range(60)], dtype=float) / 59
+    for points in (rng.random((40000, 2)), np.vstack([lattice, rng.random((20000, 2))])):
+        one = exactmesh.triangulate(points)
+        for threads in (2, 3):
+            t = exactmesh.triangulate(points, threads=threads)
+            assert t.counters["threads"] == threads
+            assert simplex_set(t.triangles) == simplex_set(one.triangles)
+        assert exactmesh.check_delaunay(points, t.triangles).ok
+    points = rng.random((20000, 3))
+    one = exactmesh.tetrahedralize(points)
+    t = exactmesh.tetrahedralize(points, threads=2)
+    assert t.counters["threads"] == 2 and t.counters["parallel_points"] > 10000
+    assert simplex_set(t.tetrahedra) == simplex_set(one.tetrahedra)
+    with pytest.raises(exactmesh.InputError, match="above 1024"):
+        exactmesh.triangulate(points[:, :2], threads=5000)
+
+
 def test_tetrahedralize_coplanar_points():
     points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]], dtype=float)
     t = exactmesh.tetrahedralize(points)
