@@ -397,8 +397,8 @@ class Refiner {
         std::exception_ptr error;  // the first assessment that threw in the chunk
         std::size_t position = 0;  // its triangle's place in touched()
     };
-    std::vector<ChunkError> errors_;                 // per chunk of a round's fans
-    RoundSet round_vertices_;                        // the vertices of a round's bad triangles
+    std::vector<ChunkError> errors_;  // per chunk of a round's fans
+    RoundSet round_vertices_;         // the vertices of a round's bad triangles
     /// The slots in the cavities of the points a round inserts, and those beside them (across
     /// their boundaries).
     RoundSet claimed_cavities_, claimed_besides_;
