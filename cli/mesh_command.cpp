@@ -312,11 +312,8 @@ void run_mesh(const MeshArguments& arguments) {
     options.size = size;
     options.max_steiner_points = arguments.max_steiner;
     options.threads = arguments.threads;
-    // Rounds when asked, or for more than one thread; the worst-first order otherwise.
-    options.refinement_order = arguments.refine_order == "rounds" ||
-                                       (arguments.refine_order.empty() && arguments.threads != 1)
-                                   ? gen::RefinementOrder::Rounds
-                                   : gen::RefinementOrder::WorstFirst;
+    options.refinement_order =
+        gen::refinement_order_from_name(arguments.refine_order, arguments.threads);
     options.cdt.first_index = base;
     options.cdt.progress = progress_printer("mesh", arguments.quiet);
     options.layers = layer_parameters;

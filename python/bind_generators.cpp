@@ -78,8 +78,6 @@ py::dict mesh(const CoordinateArray& points, const IndexArray& segments,
             "threads and refine_order apply to generator='delaunay-refinement' only; " +
             generator_name + " runs on one thread");
     }
-    if (!refine_order.empty() && refine_order != "worst-first" && refine_order != "rounds")
-        throw InputError("refine_order '" + refine_order + "' is not worst-first or rounds");
     if (threads > 1024) throw InputError("threads " + std::to_string(threads) + " is above 1024");
     if ((min_angle || polish_angle) &&
         !(generator.honours.contains(gen::MeshOption::MinAngle) &&
@@ -109,10 +107,7 @@ py::dict mesh(const CoordinateArray& points, const IndexArray& segments,
         throw InputError("min_angle and polish_angle must be finite numbers");
     options.max_steiner_points = max_steiner;
     options.threads = threads;
-    // As the command: rounds when asked, or for more than one thread.
-    options.refinement_order = refine_order == "rounds" || (refine_order.empty() && threads != 1)
-                                   ? gen::RefinementOrder::Rounds
-                                   : gen::RefinementOrder::WorstFirst;
+    options.refinement_order = gen::refinement_order_from_name(refine_order, threads);
     if (!layers.empty()) options.layers = gen::parse_layer_parameters(layers);
     options.layers.quads = quads;
     if (o_mesh) options.layers.method = gen::LayerMethod2::TruncatedOMesh;

@@ -36,6 +36,7 @@
 #include "base/progress.hpp"
 #include "generators/boundary/narrow_wedges_2d.hpp"
 #include "generators/boundary/region_areas_2d.hpp"
+#include "generators/mesh_3d/edge_key_maps.hpp"  // FlatKeyMap64
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/power_of_two.hpp"
@@ -174,52 +175,6 @@ class BucketQueue {
         std::memcpy(&bits, &key, sizeof bits);
         const std::size_t level = (bits - 0x3F800000u) >> 19;
         return (b.too_big ? kPerLevel : 0) + std::min<std::size_t>(kPerLevel - 1, level);
-    }
-};
-
-/// A set of triangle slots or vertices for one round of RefinementOrder::Rounds, open addressing
-/// over a table sized for the round: a few thousand entries that stay in cache, where per-slot
-/// stamps over the whole mesh cost a cache miss per look-up.
-class RoundSet {
-  public:
-    /// Empties the set, with room for `count` keys at a load below a half.
-    void clear(std::size_t count) {
-        std::size_t size = 64;
-        while (size < 2 * count) size *= 2;
-        if (size > table_.size()) {
-            table_.assign(size, 0);
-            generation_ = 0;
-        }
-        mask_ = table_.size() - 1;
-        if (++generation_ == 0) {  // wrapped: no entry may hold the new generation by accident
-            std::fill(table_.begin(), table_.end(), 0);
-            generation_ = 1;
-        }
-    }
-    bool contains(std::uint32_t key) const {
-        for (std::size_t i = hash(key);; i = (i + 1) & mask_) {
-            const std::uint64_t entry = table_[i];
-            if (entry >> 32 != generation_) return false;
-            if (static_cast<std::uint32_t>(entry) == key) return true;
-        }
-    }
-    void insert(std::uint32_t key) {
-        for (std::size_t i = hash(key);; i = (i + 1) & mask_) {
-            const std::uint64_t entry = table_[i];
-            if (entry >> 32 != generation_) {
-                table_[i] = (std::uint64_t{generation_} << 32) | key;
-                return;
-            }
-            if (static_cast<std::uint32_t>(entry) == key) return;
-        }
-    }
-
-  private:
-    std::vector<std::uint64_t> table_;
-    std::size_t mask_ = 0;
-    std::uint32_t generation_ = 0;
-    std::size_t hash(std::uint32_t key) const {
-        return static_cast<std::size_t>((std::uint64_t{key} * 0x9E3779B97F4A7C15ull) >> 32) & mask_;
     }
 };
 
@@ -398,9 +353,12 @@ class Refiner {
         std::size_t position = 0;  // its triangle's place in touched()
     };
     std::vector<ChunkError> errors_;  // per chunk of a round's fans
-    RoundSet round_vertices_;         // the vertices of a round's bad triangles
+    /// A set of slots or vertices for one round (the values unused).
+    using RoundSet = restricted_3d::FlatKeyMap64<char>;
+    RoundSet round_vertices_;  // the vertices of a round's bad triangles
     /// The slots in the cavities of the points a round inserts, and those beside them (across
-    /// their boundaries).
+    /// their boundaries): sets (the values unused) sized for the round, which stay in cache
+    /// where per-slot stamps over the whole mesh missed it at every look-up.
     RoundSet claimed_cavities_, claimed_besides_;
     /// One bad triangle, the worst (RefinementOrder::WorstFirst).
     void insert_worst();
@@ -1039,7 +997,7 @@ void Refiner::insert_round(std::uint64_t limit) {
             taken_.push_back(top);
             continue;
         }
-        for (int k = 0; k < 3; ++k) round_vertices_.insert(v[k]);
+        for (int k = 0; k < 3; ++k) round_vertices_.emplace(v[k], 0);
         seen_[top.t] = batch_;
         round_.push_back(top);
         taken_.push_back(top);
@@ -1207,8 +1165,8 @@ bool Refiner::unclaimed(const tri::CavityProbe& probe) const {
 void Refiner::claim(const tri::CavityProbe& probe) {
     // The fan's two new slots are no one's probe; its outer edges link to the triangles
     // beside the cavity.
-    for (const TriIdx c : probe.cavity) claimed_cavities_.insert(c);
-    for (const TriIdx beside : probe.beside) claimed_besides_.insert(beside);
+    for (const TriIdx c : probe.cavity) claimed_cavities_.emplace(c, 0);
+    for (const TriIdx beside : probe.beside) claimed_besides_.emplace(beside, 0);
 }
 
 bool Refiner::below_asked_bound(TriIdx t) const {

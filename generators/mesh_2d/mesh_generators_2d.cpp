@@ -465,6 +465,13 @@ constexpr std::array<EnumName<MeshOption>, 9> kMeshOptionNames{{
 
 }  // namespace
 
+RefinementOrder refinement_order_from_name(std::string_view name, unsigned threads) {
+    if (name.empty()) return threads == 1 ? RefinementOrder::WorstFirst : RefinementOrder::Rounds;
+    if (name == "worst-first") return RefinementOrder::WorstFirst;
+    if (name == "rounds") return RefinementOrder::Rounds;
+    throw InputError("refinement order '" + std::string(name) + "' is not worst-first or rounds");
+}
+
 std::string_view mesh_option_name(MeshOption option) {
     return name_of(kMeshOptionNames, option, "an option");
 }

@@ -162,6 +162,12 @@ void refuse_sample_domain_size_far_over_budget(SampleDomain sample, const SizeFu
 /// The automatic triangle budget of check_size_budget.
 inline constexpr double kAutomaticTriangleBudget = 0x1p26;
 
+/// The refinement order a caller's name asks for ("worst-first", "rounds"), or for "" the
+/// default for `threads`: worst-first on one thread, rounds on more (the command's
+/// --refine-order, the Python module's refine_order).
+/// @throws InputError naming an unknown order.
+RefinementOrder refinement_order_from_name(std::string_view name, unsigned threads);
+
 /// The counters of a Delaunay refinement run, named as `exactmesh mesh --stats` prints them.
 std::vector<std::pair<std::string, std::uint64_t>> counter_list(const RefinementCounters2& c);
 
