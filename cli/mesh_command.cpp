@@ -85,6 +85,8 @@ void print_stats(const gen::MeshRun2& run, const predicates::PredicateStats& sta
               << "intersections: " << cdt.intersections << '\n';
     for (const auto& [name, value] : run.counters) std::cout << name << ": " << value << '\n';
     print_predicate_stats(stats);
+    for (const auto& [name, value] : run.phase_seconds)
+        std::cout << name << ": " << std::fixed << std::setprecision(6) << value << '\n';
     std::cout << "construct_seconds: " << std::fixed << std::setprecision(6) << seconds << '\n';
 }
 

@@ -19,6 +19,7 @@
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -183,16 +184,21 @@ struct PieceToSplit {
     bool forced;  // a rejected circumcenter encroaches it: split without testing the apexes
 };
 
-/// What assess() finds of a domain triangle, before anything is queued: its badness key (above
-/// 1: bad), whether an edge is too long, its key as a candidate of the polish (0: none), and
+/// What assess() finds of a domain triangle, before anything is queued: its badness key (bad:
+/// above 1), whether an edge is too long, its key as a candidate of the polish (0: none), and
 /// which of its constrained edges its apexes encroach.
 struct Assessment {
-    double key = 0;
+    float key = 0;  // the queue's key (at most 1e30), when bad
+    bool bad = false;
     bool too_big = false;
     bool in_domain = false;
     std::uint8_t encroached = 0;  // bit k: half-edge 3t + k
     float polish_key = 0;
+    /// Rounds: the triangle's version when its fan's thread assessed it (queue() reads it
+    /// here rather than in marks_, a cache miss per triangle on the serial thread)
+    std::uint32_t version = 0;
 };
+static_assert(sizeof(Assessment) == 16, "a round's assessments are read on one thread");
 
 /// Steiner points on segments: which segment, and for shell splits the apex and the shell.
 struct SegmentVertex {
@@ -247,13 +253,18 @@ class Refiner {
     /// Tests the constrained edges of domain triangle t for encroachment by their apexes
     /// (Assessment::encroached), counted in `tally`.
     inline void find_encroached_pieces(TriIdx t, Assessment& a, RefinementCounters2& tally) const;
-    /// Queues what `a` found of triangle t: the bad triangle, the polish's candidate, the
-    /// encroached pieces (by t's key).
-    void queue(TriIdx t, const Assessment& a);
-    std::vector<std::uint32_t> version_;  // per triangle slot
-    bool cache_sizes_ = false;         // a size function dearer than a constant: edge_size_ is kept
-    std::vector<double> edge_size_;    // per half-edge: the size at its midpoint; 0: unknown
-    std::vector<std::uint32_t> seen_;  // per triangle slot: batch stamp of process_touched
+    /// Queues what `a` found of triangle t (whose version is `version`): the bad triangle, the
+    /// polish's candidate, the encroached pieces (by t's key).
+    void queue(TriIdx t, const Assessment& a, std::uint32_t version);
+    /// Per triangle slot, side by side (one cache line where two arrays took two): its version
+    /// (a queue entry with an older one is stale) and its batch stamp (process_touched, a round).
+    struct SlotMarks {
+        std::uint32_t version = 0;
+        std::uint32_t seen = 0;
+    };
+    std::vector<SlotMarks> marks_;
+    bool cache_sizes_ = false;       // a size function dearer than a constant: edge_size_ is kept
+    std::vector<double> edge_size_;  // per half-edge: the size at its midpoint; 0: unknown
     std::uint32_t batch_ = 0;
     std::vector<SegmentVertex> on_segment_;  // per vertex
     std::vector<std::uint32_t> degree_;      // per initial vertex: constrained edges at it
@@ -276,7 +287,7 @@ class Refiner {
     void requeue_for_asked_bound();
     void next_batch() {
         if (++batch_ == 0) {
-            std::fill(seen_.begin(), seen_.end(), 0u);
+            for (SlotMarks& m : marks_) m.seen = 0;
             batch_ = 1;
         }
     }
@@ -292,12 +303,12 @@ class Refiner {
     /// triangles when no size is cached (a uniform size or none: parallel_assessment).
     Assessment assess(TriIdx t, RefinementCounters2& tally);
     /// assess and queue (without the encroached pieces).
-    void evaluate(TriIdx t) { queue(t, assess(t, counters_)); }
+    void evaluate(TriIdx t) { queue(t, assess(t, counters_), marks_[t].version); }
     /// assess, find_encroached_pieces and queue.
     void evaluate_with_pieces(TriIdx t) {
         Assessment a = assess(t, counters_);
         find_encroached_pieces(t, a, counters_);
-        queue(t, a);
+        queue(t, a, marks_[t].version);
     }
     /// the apex of e's triangle encroaches e (counted in `tally`)
     bool encroached_from(EdgeIdx e, RefinementCounters2& tally) const;
@@ -352,14 +363,21 @@ class Refiner {
         std::exception_ptr error;  // the first assessment that threw in the chunk
         std::size_t position = 0;  // its triangle's place in touched()
     };
-    std::vector<ChunkError> errors_;  // per chunk of a round's fans
-    /// A set of slots or vertices for one round (the values unused).
-    using RoundSet = restricted_3d::FlatKeyMap64<char>;
-    RoundSet round_vertices_;  // the vertices of a round's bad triangles
-    /// The slots in the cavities of the points a round inserts, and those beside them (across
-    /// their boundaries): sets (the values unused) sized for the round, which stay in cache
-    /// where per-slot stamps over the whole mesh missed it at every look-up.
-    RoundSet claimed_cavities_, claimed_besides_;
+    std::vector<ChunkError> errors_;               // per chunk of a round's fans
+    restricted_3d::FlatFlagSet32 round_vertices_;  // the vertices of a round's bad triangles
+    /// The slots in the cavities of the points a round inserts (flag kInCavity), and those
+    /// beside them, across their boundaries (kBeside): a set sized for the round, which stays in
+    /// cache where per-slot stamps over the whole mesh missed it at every look-up.
+    restricted_3d::FlatFlagSet32 claimed_;
+    static constexpr unsigned kInCavity = 1, kBeside = 2;
+    RoundPhaseSeconds2 round_seconds_;
+    using Clock = std::chrono::steady_clock;
+    /// Adds the time since `start` to `phase` and restarts `start`.
+    static void lap(double& phase, Clock::time_point& start) {
+        const Clock::time_point now = Clock::now();
+        phase += std::chrono::duration<double>(now - start).count();
+        start = now;
+    }
     /// One bad triangle, the worst (RefinementOrder::WorstFirst).
     void insert_worst();
     /// One round (RefinementOrder::Rounds) within `limit` Steiner points.
@@ -442,8 +460,7 @@ void Refiner::check_domain_and_budget() {
         std::min({1.1 * estimate, static_cast<double>(budget_), 0x1p21}) +
         static_cast<double>(mesh_.vertex_count());
     cdt_.reserve(static_cast<std::uint32_t>(expected_vertices));
-    version_.reserve(static_cast<std::size_t>(2 * expected_vertices));
-    seen_.reserve(static_cast<std::size_t>(2 * expected_vertices));
+    marks_.reserve(static_cast<std::size_t>(2 * expected_vertices));
     if (cache_sizes_) edge_size_.reserve(static_cast<std::size_t>(6 * expected_vertices));
     on_segment_.reserve(static_cast<std::size_t>(expected_vertices));
 }
@@ -621,23 +638,22 @@ Assessment Refiner::assess(TriIdx t, RefinementCounters2& tally) {
             }
         }
     }
-    a.key = key;
+    a.key = static_cast<float>(std::min(key, 1e30));
+    a.bad = key > 1;
     a.too_big = size_key > 1;
     return a;
 }
 
-void Refiner::queue(TriIdx t, const Assessment& a) {
-    if (a.polish_key > 0) polish_.push_back({a.polish_key, t, version_[t] & 0x7FFFFFFFu, 0u});
-    if (a.key > 1) {
-        bad_.push({static_cast<float>(std::min(a.key, 1e30)), t, version_[t] & 0x7FFFFFFFu,
-                   a.too_big ? 1u : 0u});
+void Refiner::queue(TriIdx t, const Assessment& a, std::uint32_t version) {
+    if (a.polish_key > 0) polish_.push_back({a.polish_key, t, version & 0x7FFFFFFFu, 0u});
+    if (a.bad) {
+        bad_.push({a.key, t, version & 0x7FFFFFFFu, a.too_big ? 1u : 0u});
         ++counters_.bad_triangles;
     }
     for (unsigned k = 0; k < 3; ++k) {
         if ((a.encroached >> k & 1u) == 0) continue;
         const EdgeIdx e = 3 * t + k;
-        pieces_.push({static_cast<float>(std::min(a.key, 1e30)), mesh_.origin(e),
-                      mesh_.destination(e), a.too_big ? 1u : 0u});
+        pieces_.push({a.key, mesh_.origin(e), mesh_.destination(e), a.too_big ? 1u : 0u});
     }
 }
 
@@ -676,10 +692,7 @@ bool Refiner::encroached_from(EdgeIdx e, RefinementCounters2& tally) const {
 void Refiner::process_touched() {
     next_batch();
     const std::uint32_t slots = mesh_.triangle_slots();
-    if (version_.size() < slots) {
-        version_.resize(slots, 0);
-        seen_.resize(slots, 0);
-    }
+    if (marks_.size() < slots) marks_.resize(slots);
     if (cache_sizes_) {
         if (edge_size_.size() < 3 * std::size_t{slots}) {
             edge_size_.resize(3 * std::size_t{slots}, 0.0);
@@ -687,23 +700,20 @@ void Refiner::process_touched() {
         // First every rewritten slot forgets its edges' sizes, then the triangles are evaluated
         // (a new triangle may take the size its new neighbour has just found).
         for (const TriIdx t : cdt_.touched()) {
-            if (seen_[t] == batch_) continue;
-            seen_[t] = batch_;
-            ++version_[t];
+            if (marks_[t].seen == batch_) continue;
+            marks_[t].seen = batch_;
+            ++marks_[t].version;
             edge_size_[3 * t] = edge_size_[3 * t + 1] = edge_size_[3 * t + 2] = 0.0;
         }
         next_batch();
     }
     // The new slots' stamps and versions are cold (a cavity's slots are anywhere in the arrays):
     // asked for all at once, their cache misses overlap instead of stalling one triangle each.
+    for (const TriIdx t : cdt_.touched()) __builtin_prefetch(&marks_[t], 1);
     for (const TriIdx t : cdt_.touched()) {
-        __builtin_prefetch(&seen_[t], 1);
-        __builtin_prefetch(&version_[t], 1);
-    }
-    for (const TriIdx t : cdt_.touched()) {
-        if (seen_[t] == batch_) continue;
-        seen_[t] = batch_;
-        if (!cache_sizes_) ++version_[t];
+        if (marks_[t].seen == batch_) continue;
+        marks_[t].seen = batch_;
+        if (!cache_sizes_) ++marks_[t].version;
         if (!cdt_.in_domain(t)) continue;
         evaluate_with_pieces(t);
     }
@@ -712,8 +722,7 @@ void Refiner::process_touched() {
 
 void Refiner::initial_queue() {
     const std::uint32_t slots = mesh_.triangle_slots();
-    version_.assign(slots, 0);
-    seen_.assign(slots, 0);
+    marks_.assign(slots, SlotMarks{});
     if (cache_sizes_) edge_size_.assign(3 * std::size_t{slots}, 0.0);
     for (TriIdx t = 0; t < slots; ++t) {
         if (!cdt_.in_domain(t)) continue;
@@ -898,7 +907,7 @@ bool Refiner::refine(std::uint64_t limit) {
 
 void Refiner::insert_worst() {
     const BadTriangle top = bad_.pop();
-    if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t))
+    if (top.version != (marks_[top.t].version & 0x7FFFFFFFu) || !cdt_.in_domain(top.t))
         return;  // rewritten since
     spend_budget();
     const VertIdx v[3] = {mesh_.tv[3 * top.t], mesh_.tv[3 * top.t + 1], mesh_.tv[3 * top.t + 2]};
@@ -960,6 +969,7 @@ void Refiner::insert_round(std::uint64_t limit) {
     // the round's size and the Steiner points left, while no encroached piece comes first.
     const std::uint64_t room =
         std::min<std::uint64_t>(kRefinementRoundSize, limit - counters_.steiner_points());
+    Clock::time_point start = Clock::now();
     round_vertices_.clear(3 * static_cast<std::size_t>(room));
     round_.clear();
     waiting_.clear();
@@ -981,24 +991,23 @@ void Refiner::insert_round(std::uint64_t limit) {
         // The entries of a round are anywhere in the mesh: what the tests below read of them is
         // asked for a few entries ahead.
         if (const BadTriangle* ahead = bad_.under_top(8)) {
-            __builtin_prefetch(&version_[ahead->t]);
-            __builtin_prefetch(&seen_[ahead->t]);
+            __builtin_prefetch(&marks_[ahead->t]);
             cdt_.prefetch(ahead->t);
         }
         const BadTriangle top = bad_.pop();
-        if (top.version != (version_[top.t] & 0x7FFFFFFFu) || !cdt_.in_domain(top.t) ||
-            seen_[top.t] == batch_) {
+        if (top.version != (marks_[top.t].version & 0x7FFFFFFFu) || !cdt_.in_domain(top.t) ||
+            marks_[top.t].seen == batch_) {
             continue;  // rewritten since, or taken already
         }
         const VertIdx* v = &mesh_.tv[3 * top.t];
-        if (round_vertices_.contains(v[0]) || round_vertices_.contains(v[1]) ||
-            round_vertices_.contains(v[2])) {
+        if (round_vertices_.flags(v[0]) != 0 || round_vertices_.flags(v[1]) != 0 ||
+            round_vertices_.flags(v[2]) != 0) {
             waiting_.push_back(top);
             taken_.push_back(top);
             continue;
         }
-        for (int k = 0; k < 3; ++k) round_vertices_.emplace(v[k], 0);
-        seen_[top.t] = batch_;
+        for (int k = 0; k < 3; ++k) round_vertices_.add(v[k], 1);
+        marks_[top.t].seen = batch_;
         round_.push_back(top);
         taken_.push_back(top);
     }
@@ -1011,16 +1020,17 @@ void Refiner::insert_round(std::uint64_t limit) {
                                     [&](const BadTriangle& b) { return b.t == round_[0].t; }));
     }
     for (auto w = waiting_.rbegin(); w != waiting_.rend(); ++w) bad_.push(*w);
+    lap(round_seconds_.form, start);
     if (round_.empty()) return;
     ++counters_.rounds;
     probe_round();
+    lap(round_seconds_.probe, start);
     std::size_t cavities = 0, besides = 0;
     for (std::size_t i = 0; i < round_.size(); ++i) {
         cavities += probes_[i].cavity.size() + 1;
         besides += probes_[i].beside.size();
     }
-    claimed_cavities_.clear(cavities);
-    claimed_besides_.clear(besides);
+    claimed_.clear(cavities + besides);
     // In the order taken: each point whose cavity is as probed (apart from the cavities of the
     // points taken before it) goes in, or is rejected as insert_worst rejects it; the others
     // wait for the next round. The first always goes. The points that go in are inserted
@@ -1051,6 +1061,7 @@ void Refiner::insert_round(std::uint64_t limit) {
     // an edge's midpoint is the same number from either side, so where it comes from does not
     // change the mesh). An error (a size not > 0) is kept per chunk and the first in order
     // thrown after the fans, as one thread would throw it.
+    lap(round_seconds_.accept, start);
     const std::size_t chunks = threads_ == 1 ? 1 : 4 * std::size_t{threads_};
     const bool assess_in_fans = !cache_sizes_ || options_.size.concurrent();
     tri::ConstrainedTriangulation2::FanWritten written;
@@ -1062,15 +1073,12 @@ void Refiner::insert_round(std::uint64_t limit) {
         errors_.assign(chunks, {});
         // Every new slot is below this (recycled ones are lower still).
         const std::size_t slots = mesh_.triangle_slots() + 2 * accepted_.size();
-        if (version_.size() < slots) {
-            version_.resize(slots, 0);
-            seen_.resize(slots, 0);
-        }
+        if (marks_.size() < slots) marks_.resize(slots);
         if (cache_sizes_ && edge_size_.size() < 3 * slots) edge_size_.resize(3 * slots, 0.0);
         written = [&](std::size_t chunk, std::size_t position, std::span<const TriIdx> fan) {
             if (errors_[chunk].error) return;
             for (const TriIdx t : fan) {
-                ++version_[t];
+                ++marks_[t].version;
                 if (cache_sizes_) {
                     edge_size_[3 * t] = edge_size_[3 * t + 1] = edge_size_[3 * t + 2] = 0.0;
                 }
@@ -1086,6 +1094,7 @@ void Refiner::insert_round(std::uint64_t limit) {
                     return;
                 }
                 find_encroached_pieces(t, a, tallies_[chunk]);
+                a.version = marks_[t].version;  // what queue() pushes, read here where it is warm
             }
         };
     }
@@ -1100,9 +1109,12 @@ void Refiner::insert_round(std::uint64_t limit) {
             written);
     }
     if (!assess_in_fans) {
+        lap(round_seconds_.fans, start);
         process_touched();
+        lap(round_seconds_.queue, start);
         return;
     }
+    lap(round_seconds_.fans, start);
     const ChunkError* first_error = nullptr;
     for (const ChunkError& e : errors_)
         if (e.error && (first_error == nullptr || e.position < first_error->position))
@@ -1110,13 +1122,14 @@ void Refiner::insert_round(std::uint64_t limit) {
     if (first_error != nullptr) std::rethrow_exception(first_error->error);
     const std::span<const TriIdx> touched = cdt_.touched();
     for (std::size_t k = 0; k < touched.size(); ++k)
-        if (assessments_[k].in_domain) queue(touched[k], assessments_[k]);
+        if (assessments_[k].in_domain) queue(touched[k], assessments_[k], assessments_[k].version);
     for (const RefinementCounters2& tally : tallies_) {
         counters_.small_angle_skips += tally.small_angle_skips;
         counters_.encroachment_tests += tally.encroachment_tests;
         counters_.narrow_wedge_skips += tally.narrow_wedge_skips;
     }
     cdt_.clear_touched();
+    lap(round_seconds_.queue, start);
 }
 
 void Refiner::probe_round() {
@@ -1151,22 +1164,19 @@ void Refiner::probe_round() {
 }
 
 bool Refiner::unclaimed(const tri::CavityProbe& probe) const {
-    const auto claimed = [&](TriIdx t) {
-        return claimed_cavities_.contains(t) || claimed_besides_.contains(t);
-    };
-    if (probe.cavity.empty()) return !claimed(probe.start);  // NotInConflict: t alone
+    if (probe.cavity.empty()) return claimed_.flags(probe.start) == 0;  // NotInConflict: t alone
     for (const TriIdx c : probe.cavity)
-        if (claimed(c)) return false;
+        if (claimed_.flags(c) != 0) return false;
     for (const TriIdx beside : probe.beside)
-        if (claimed_cavities_.contains(beside)) return false;
+        if ((claimed_.flags(beside) & kInCavity) != 0) return false;
     return true;
 }
 
 void Refiner::claim(const tri::CavityProbe& probe) {
     // The fan's two new slots are no one's probe; its outer edges link to the triangles
     // beside the cavity.
-    for (const TriIdx c : probe.cavity) claimed_cavities_.emplace(c, 0);
-    for (const TriIdx beside : probe.beside) claimed_besides_.emplace(beside, 0);
+    for (const TriIdx c : probe.cavity) claimed_.add(c, kInCavity);
+    for (const TriIdx beside : probe.beside) claimed_.add(beside, kBeside);
 }
 
 bool Refiner::below_asked_bound(TriIdx t) const {
@@ -1184,13 +1194,13 @@ void Refiner::requeue_for_asked_bound() {
     std::vector<TriIdx> keep;
     while (!bad_.empty()) {
         const BadTriangle b = bad_.pop();
-        if (b.version != (version_[b.t] & 0x7FFFFFFFu) || !cdt_.in_domain(b.t)) continue;
+        if (b.version != (marks_[b.t].version & 0x7FFFFFFFu) || !cdt_.in_domain(b.t)) continue;
         if (b.too_big || below_asked_bound(b.t)) keep.push_back(b.t);
     }
     next_batch();
     for (const TriIdx t : keep) {
-        if (seen_[t] == batch_) continue;  // queued twice (a rejected circumcenter requeues)
-        seen_[t] = batch_;
+        if (marks_[t].seen == batch_) continue;  // queued twice (a rejected circumcenter requeues)
+        marks_[t].seen = batch_;
         evaluate(t);
     }
 }
@@ -1200,7 +1210,7 @@ void Refiner::polish() {
     sine2_bound_ = polish_sine2_;
     polish_sine2_ = 0;  // no more candidates
     for (const BadTriangle& b : polish_) {
-        if (b.version != (version_[b.t] & 0x7FFFFFFFu) || !cdt_.in_domain(b.t)) continue;
+        if (b.version != (marks_[b.t].version & 0x7FFFFFFFu) || !cdt_.in_domain(b.t)) continue;
         bad_.push(b);
         ++counters_.bad_triangles;
     }
@@ -1267,10 +1277,19 @@ RefinementResult2 Refiner::run() {
     counters_.orient_calls = result.mesh.counters.orient_calls;
     counters_.incircle_calls = result.mesh.counters.incircle_calls;
     result.counters = counters_;
+    result.round_seconds = round_seconds_;
     return result;
 }
 
 }  // namespace
+
+std::vector<std::pair<std::string, double>> phase_list(const RoundPhaseSeconds2& s) {
+    return {{"round_form_seconds", s.form},
+            {"round_probe_seconds", s.probe},
+            {"round_accept_seconds", s.accept},
+            {"round_fans_seconds", s.fans},
+            {"round_queue_seconds", s.queue}};
+}
 
 RefinementResult2 delaunay_refinement_2d(const tri::Pslg& pslg, const RefinementOptions2& options) {
     if (!(options.min_angle >= 0 && options.min_angle <= kMaxMinAngle)) {

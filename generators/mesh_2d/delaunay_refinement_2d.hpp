@@ -42,6 +42,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "base/counter_table.hpp"
 #include "base/errors.hpp"
@@ -167,11 +170,26 @@ inline constexpr std::array kRefinementCounterNames{
     counter("threads", &RefinementCounters2::threads)};
 static_assert(counter_table_complete(kRefinementCounterNames, 1));
 
+/// Where the rounds of RefinementOrder::Rounds spent their time (wall-clock seconds on the
+/// calling thread; all zero in the WorstFirst order). Not counters: they differ from run to
+/// run, where the counters are the same for every thread count.
+struct RoundPhaseSeconds2 {
+    double form = 0;    ///< taking the rounds' bad triangles off the queue (serial)
+    double probe = 0;   ///< circumcentres and their cavities (every thread)
+    double accept = 0;  ///< accepting the probes in order, rejections carried out (serial)
+    double fans = 0;    ///< writing the fans and assessing their triangles (every thread)
+    double queue = 0;   ///< queueing the new triangles' verdicts (serial)
+};
+
+/// The phases' names as `exactmesh mesh --stats` prints them (round_NAME_seconds), in order.
+std::vector<std::pair<std::string, double>> phase_list(const RoundPhaseSeconds2& s);
+
 struct RefinementResult2 {
     /// The mesh in the caller's numbering: input vertices first (as constrained_delaunay_2d
     /// numbers them), then added ones; exterior and holes removed; pieces and warnings.
     triangulation::Cdt2Result mesh;
     RefinementCounters2 counters;
+    RoundPhaseSeconds2 round_seconds;
 };
 
 /// Refinement stopped by a budget: the Steiner points, the conflict-zone work bounded with

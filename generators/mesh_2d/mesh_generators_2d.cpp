@@ -220,7 +220,9 @@ MeshRun2 run_delaunay_refinement(const MeshDomain2& domain, const MeshOptions2& 
             std::to_string(result.counters.unsplittable) +
             " bad triangles are too small to split in double precision; left as they are");
     }
-    return {std::move(result.mesh), {}, counter_list(result.counters), {}};
+    MeshRun2 run{std::move(result.mesh), {}, counter_list(result.counters), {}, {}};
+    if (result.counters.rounds > 0) run.phase_seconds = phase_list(result.round_seconds);
+    return run;
 }
 
 /// The options with the size graded down to the domain's fine features (free vertices far
@@ -248,7 +250,7 @@ MeshRun2 run_quadtree(const MeshDomain2& domain, const MeshOptions2& given) {
     quadtree.max_leaves = options.max_steiner_points;
     quadtree.max_boundary_points = options.max_boundary_points;
     QuadtreeResult2 result = quadtree_mesh_2d(domain, quadtree);
-    return {std::move(result.mesh), {}, counter_list(result.counters), {}};
+    return {std::move(result.mesh), {}, counter_list(result.counters), {}, {}};
 }
 
 MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& given) {
@@ -267,7 +269,7 @@ MeshRun2 run_advancing_front(const MeshDomain2& domain, const MeshOptions2& give
             "the triangle budget ran out: " + std::to_string(result.counters.closure_triangles) +
             " triangles close the front by its constrained Delaunay triangulation");
     }
-    return {std::move(result.mesh), {}, counter_list(result.counters), {}};
+    return {std::move(result.mesh), {}, counter_list(result.counters), {}, {}};
 }
 
 MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptions2& given) {
@@ -285,7 +287,7 @@ MeshRun2 run_advancing_front_delaunay(const MeshDomain2& domain, const MeshOptio
             " front edges were left to the closure (constrained Delaunay, no new points): " +
             std::to_string(result.counters.closure_triangles) + " triangles");
     }
-    return {std::move(result.mesh), {}, counter_list(result.counters), {}};
+    return {std::move(result.mesh), {}, counter_list(result.counters), {}, {}};
 }
 
 MeshRun2 run_frontal_delaunay(const MeshDomain2& domain, const MeshOptions2& given) {
@@ -297,7 +299,7 @@ MeshRun2 run_frontal_delaunay(const MeshDomain2& domain, const MeshOptions2& giv
     frontal.max_boundary_points = options.max_boundary_points;
     frontal.cdt = options.cdt;
     FrontalDelaunayResult2 result = frontal_delaunay_2d(domain, frontal);
-    return {std::move(result.mesh), {}, counter_list(result.counters), {}};
+    return {std::move(result.mesh), {}, counter_list(result.counters), {}, {}};
 }
 
 /// The fill of advancing-layers: frontal Delaunay over the layers' outside.
@@ -318,7 +320,7 @@ MeshRun2 run_advancing_layers(const MeshDomain2& domain, const MeshOptions2& opt
     layers.max_steiner_points = options.max_steiner_points;
     layers.fill = &frontal_fill;
     AdvancingLayersResult2 result = advancing_layers_2d(domain, layers);
-    return {std::move(result.mesh), std::move(result.quads), counter_list(result.counters), {}};
+    return {std::move(result.mesh), std::move(result.quads), counter_list(result.counters), {}, {}};
 }
 
 MeshRun2 run_metric_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
@@ -342,7 +344,7 @@ MeshRun2 run_metric_delaunay(const MeshDomain2& domain, const MeshOptions2& opti
     metric.max_steiner_points = options.max_steiner_points;
     metric.cdt = options.cdt;
     MetricDelaunayResult2 result = metric_delaunay_2d(domain, metric);
-    return {std::move(result.mesh), {}, counter_list(result.counters), {}};
+    return {std::move(result.mesh), {}, counter_list(result.counters), {}, {}};
 }
 
 MeshRun2 run_stretched_delaunay(const MeshDomain2& domain, const MeshOptions2& options) {
@@ -366,7 +368,8 @@ MeshRun2 run_stretched_delaunay(const MeshDomain2& domain, const MeshOptions2& o
     stretched.wake_length = options.wake_length;
     stretched.staggered_layers = options.staggered_layers;
     StretchedDelaunayResult2 result = stretched_delaunay_2d(domain, stretched);
-    return {std::move(result.mesh), {}, counter_list(result.counters), std::move(result.metrics)};
+    return {
+        std::move(result.mesh), {}, counter_list(result.counters), std::move(result.metrics), {}};
 }
 
 MeshRun2 run_min_max_front(const MeshDomain2& domain, const MeshOptions2& options) {
@@ -375,7 +378,7 @@ MeshRun2 run_min_max_front(const MeshDomain2& domain, const MeshOptions2& option
         min_max_front_2d(domain, {.layers = options.layers,
                                   .size = options.size,
                                   .max_steiner_points = options.max_steiner_points});
-    return {std::move(result.mesh), {}, counter_list(result.counters), {}};
+    return {std::move(result.mesh), {}, counter_list(result.counters), {}, {}};
 }
 
 constexpr std::array kGenerators{

@@ -62,6 +62,9 @@ struct MeshRun2 {
     /// #V: the metric each vertex was meshed to, when the generator makes its own (stretched
     /// Delaunay: the smoothed stretching of its structured cells); empty otherwise.
     std::vector<Metric2> vertex_metrics;
+    /// Seconds of the generator's phases, named (`--stats` prints them after the counters);
+    /// empty when it times none.
+    std::vector<std::pair<std::string, double>> phase_seconds;
 };
 
 /// The options and input features a generator may honour (MeshGenerator2::honours). A caller

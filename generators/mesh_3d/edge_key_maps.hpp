@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Open-addressing hash maps for the 3D generators' insertion (restricted_delaunay_3d.hpp):
-// FlatKeyMap64, per-insertion scratch of 64-bit edge keys cleared in O(1); TombstoneMap, a
+// FlatKeyMap64, per-insertion scratch of 64-bit edge keys cleared in O(1) (FlatFlagSet32, its
+// compact sibling for 32-bit keys with two flag bits); TombstoneMap, a
 // lasting map with erase, as KeyMap64 (edge keys) and Key3Map (sorted vertex triples: subfaces);
 // EdgeSubfaces, the subfaces at each edge. All hash by multiplies and probe linearly.
 #pragma once
@@ -128,6 +129,78 @@ class FlatKeyMap64 {
             slots_[i] = {slot.key, slot.value, epoch_};
             ++size_;
         }
+    }
+};
+
+/// FlatKeyMap64's compact sibling for 32-bit keys (triangle slots, vertices) with two flag bits
+/// each: 8 bytes a slot (a 64-bit key, a value and an epoch took 16), at most half full, cleared
+/// in O(1) by an epoch. A parallel refinement's round asks it about 10^4 keys per round in
+/// order on one thread; at half the bytes its table stays in the level-2 cache.
+class FlatFlagSet32 {
+  public:
+    /// Forgets every key and uses as many slots as about `expected` keys need (the least power
+    /// of two from 64 that is at least twice as many).
+    void clear(std::size_t expected) {
+        if (++epoch_ == kEpochs) {
+            for (Slot& slot : slots_) slot.tag = 0;
+            epoch_ = 1;
+        }
+        size_ = 0;
+        std::size_t wanted = 64;
+        while (wanted < 2 * expected) wanted *= 2;
+        if (wanted > slots_.size()) slots_.resize(wanted, Slot{});  // tag 0: no key
+        used_ = wanted;
+        shift_ = hash_shift(used_);
+    }
+
+    /// The flags of `key` (0 when it is not in the set).
+    unsigned flags(std::uint32_t key) const {
+        if (used_ == 0) return 0;
+        for (std::size_t i = position(key);; i = (i + 1) & (used_ - 1)) {
+            const Slot& slot = slots_[i];
+            if (slot.tag >> 2 != epoch_) return 0;
+            if (slot.key == key) return slot.tag & 3u;
+        }
+    }
+
+    /// Adds `key` (when missing) and ORs `flags` (1, 2 or 3) into its flags.
+    void add(std::uint32_t key, unsigned flags) {
+        if (2 * (size_ + 1) > used_) grow();
+        std::size_t i = position(key);
+        while (slots_[i].tag >> 2 == epoch_) {
+            if (slots_[i].key == key) {
+                slots_[i].tag |= flags;
+                return;
+            }
+            i = (i + 1) & (used_ - 1);
+        }
+        slots_[i] = {key, epoch_ << 2 | flags};
+        ++size_;
+    }
+
+  private:
+    struct Slot {
+        std::uint32_t key = 0;
+        std::uint32_t tag = 0;  ///< epoch << 2 | flags; an older epoch: empty
+    };
+    static constexpr std::uint32_t kEpochs = 1u << 30;
+    std::vector<Slot> slots_;
+    std::size_t used_ = 0;  ///< the slots in use: a power of two, at most slots_.size()
+    std::size_t size_ = 0;
+    std::uint32_t epoch_ = 0;
+    unsigned shift_ = 64;
+
+    std::size_t position(std::uint32_t key) const {
+        return slot_of_hash(std::uint64_t{key} * 0x9E3779B97F4A7C15ull, shift_);
+    }
+
+    /// Twice the slots in use, the keys put in again.
+    void grow() {
+        std::vector<Slot> live;
+        for (std::size_t i = 0; i < used_; ++i)
+            if (slots_[i].tag >> 2 == epoch_) live.push_back(slots_[i]);
+        clear(used_);  // twice used_ slots: clear takes twice the expected count
+        for (const Slot& slot : live) add(slot.key, slot.tag & 3u);
     }
 };
 

@@ -246,7 +246,7 @@ threads() {
 
 # mesh --threads: Delaunay refinement in rounds gives the same mesh (files byte for byte) on
 # 1, 2, 3 threads and on every core (0); --threads 2 alone means rounds; --stats prints the
-# count and the rounds' counters; check accepts the mesh; worst-first on two threads is a usage
+# count, the rounds' counters and phase times; check accepts the mesh; worst-first on two threads is a usage
 # error, as a count above 1024; another generator warns that it ignores --threads.
 mesh_threads() {
   local threads
@@ -265,12 +265,17 @@ mesh_threads() {
   awk '/^rounds: / { r = $2 } /^steiner_points: / { s = $2 }
     END { exit !(r > 0 && s > 4 * r) }' "$work/out" ||
     fail "mesh --threads 2: no rounds, or fewer than four points per round"
+  # The rounds' phase times: five lines, each a number, summing to at most construct_seconds.
+  awk '/^round_(form|probe|accept|fans|queue)_seconds: [0-9.]+$/ { n++; sum += $2 }
+    /^construct_seconds: / { c = $2 } END { exit !(n == 5 && sum <= c) }' "$work/out" ||
+    fail "mesh --threads 2 --stats: not five round_*_seconds within construct_seconds"
   run 0 check "$work/two.poly" "$work/two.ele" ||
     fail "check rejected the two-thread mesh"
   run 0 mesh --domain square-with-holes --size 0.01 --min-angle 30 -o "$work/w.ele" --stats ||
     return
   grep -q '^threads: 1$' "$work/out" || fail "mesh default: no 'threads: 1'"
   grep -q '^rounds: 0$' "$work/out" || fail "mesh default: not the worst-first refinement"
+  ! grep -q '^round_.*_seconds' "$work/out" || fail "mesh default: round phase times printed"
   expect_error 2 'worst-first refinement runs on one thread' mesh --domain square-with-holes \
     --size 0.05 --refine-order worst-first --threads 2 -o "$work/x.ele"
   expect_error 2 'threads' mesh --domain square-with-holes --size 0.05 --threads 5000 \
