@@ -366,18 +366,21 @@ void run_mesh(const MeshArguments& arguments) {
         });
     });
 
-    // Optional Laplacian smoothing, timed and reported apart from the generator.
-    gen::MeshRun2 final_result = result;
+    // Optional Laplacian smoothing, timed and reported apart from the generator, on a copy (the
+    // report compares it with the generator's mesh); without it the mesh is not copied.
+    std::optional<gen::MeshRun2> smoothed;
     gen::SmoothingCounters2 smoothing;
     double smooth_seconds = 0;
     if (arguments.smooth > 0) {
+        smoothed = result;
         gen::SmoothingOptions2 smoothing_options;
         smoothing_options.iterations = arguments.smooth;
         const auto smooth_start = std::chrono::steady_clock::now();
         smoothing = gen::laplacian_smoothing_2d(
-            final_result.mesh.mesh, final_result.mesh.input_vertex_count, smoothing_options);
+            smoothed->mesh.mesh, smoothed->mesh.input_vertex_count, smoothing_options);
         smooth_seconds = seconds_since(smooth_start);
     }
+    const gen::MeshRun2& final_result = smoothed ? *smoothed : result;
     print_warnings(result.mesh.warnings);
     char label[64];
     if (generator.name == "delaunay-refinement") {

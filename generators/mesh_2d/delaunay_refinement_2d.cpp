@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "base/huge_pages.hpp"
 #include "base/number_text.hpp"
 #include "base/parallel_runner.hpp"
 #include "base/progress.hpp"
@@ -462,6 +463,8 @@ void Refiner::check_domain_and_budget() {
     cdt_.reserve(static_cast<std::uint32_t>(expected_vertices));
     marks_.reserve(static_cast<std::size_t>(2 * expected_vertices));
     if (cache_sizes_) edge_size_.reserve(static_cast<std::size_t>(6 * expected_vertices));
+    advise_huge_pages(marks_);
+    advise_huge_pages(edge_size_);
     on_segment_.reserve(static_cast<std::size_t>(expected_vertices));
 }
 

@@ -24,6 +24,7 @@
 #include <utility>
 
 #include "base/errors.hpp"
+#include "base/huge_pages.hpp"
 #include "base/number_text.hpp"
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/in_ellipse.hpp"
@@ -56,6 +57,12 @@ void reserve(CdtState& cdt, std::uint32_t vertices) {
     cdt.removed.reserve(slots);
     if (!cdt.attribute.empty()) cdt.attribute.reserve(slots);
     cdt.cavity_stamp.reserve(slots);
+    for (const auto* array : {&cdt.mesh.tv, &cdt.mesh.twin, &cdt.segment_of, &cdt.vertex_edge,
+                              &cdt.core.input_index, &cdt.core.merged_into, &cdt.cavity_stamp})
+        advise_huge_pages(*array);
+    advise_huge_pages(cdt.mesh.xy);
+    advise_huge_pages(cdt.removed);
+    advise_huge_pages(cdt.attribute);
 }
 
 /// A fresh cavity stamp (cdt.stamp, returned), with a stamp slot for every triangle slot; every

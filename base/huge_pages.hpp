@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// advise_huge_pages: asks the kernel to back a large array's reserved memory with 2 MiB pages
+// (Linux's transparent huge pages; Debian enables them on request, `madvise` mode). A
+// refinement grows its per-triangle and per-vertex arrays into memory reserved up front, and
+// every 4 KiB page it first touches is a page fault: about 65,000 of them at 10^6 triangles,
+// 5-10% of the run under a virtual machine, where a fault costs microseconds. With the advice
+// it takes one fault per 2 MiB. A hint only: without the kernel's support, or on another
+// system, nothing changes.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace exactmesh {
+
+/// Advises huge pages for the whole 2 MiB pages inside [data, data + bytes) (none when the
+/// range holds no aligned 2 MiB page). The memory's contents are unchanged.
+inline void advise_huge_pages(const void* data, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    constexpr std::uintptr_t kHugePage = std::uintptr_t{1} << 21;
+    const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(data);
+    const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1);
+    const std::uintptr_t end = (start + bytes) & ~(kHugePage - 1);
+    if (end > begin) {
+        // A hint: a kernel without transparent huge pages refuses it, and nothing changes.
+        static_cast<void>(madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE));
+    }
+#else
+    static_cast<void>(data);
+    static_cast<void>(bytes);
+#endif
+}
+
+/// advise_huge_pages over a vector's capacity (call after reserve: the advice stays with the
+/// memory, and a reallocation beyond it gets none).
+template <class T, class Allocator>
+void advise_huge_pages(const std::vector<T, Allocator>& v) {
+    advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
+
+}  // namespace exactmesh
