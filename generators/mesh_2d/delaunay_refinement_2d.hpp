@@ -72,7 +72,8 @@ enum class RefinementOrder {
     /// Rounds: up to kRefinementRoundSize of the worst bad triangles are taken at once: those
     /// of the worst key's two buckets (keys within 9%; none after an encroached piece that comes
     /// first), skipping a triangle with a vertex of one already taken (it waits), and a round
-    /// of fewer than 64 is only its first triangle (a worst-first step). Their circumcentres
+    /// of fewer than 64 is only its first triangle (a worst-first step; taken directly when
+    /// the two buckets hold fewer than 64 entries, stale ones included). Their circumcentres
     /// and conflict zones are found in parallel by reading the mesh only, then, in the order
     /// they were taken, each is inserted unless its zone (or a triangle beside it) meets the
     /// zone of one inserted before it in the round; those wait for the next round. The fans
@@ -179,6 +180,8 @@ struct RoundPhaseSeconds2 {
     double accept = 0;  ///< accepting the probes in order, rejections carried out (serial)
     double fans = 0;    ///< writing the fans and assessing their triangles (every thread)
     double queue = 0;   ///< queueing the new triangles' verdicts (serial)
+    /// worst-first steps between rounds, where the worst bad triangles are too few for one
+    double steps = 0;
 };
 
 /// The phases' names as `exactmesh mesh --stats` prints them (round_NAME_seconds), in order.
