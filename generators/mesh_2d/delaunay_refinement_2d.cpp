@@ -236,8 +236,8 @@ class Refiner {
         // The chunks (and so the mesh) follow threads_; the arena has at most as many threads as
         // the machine lends (more made oneTBB warn on stderr, and only shared the cores).
         if (threads_ > 1) {
-            arena_ = std::make_unique<tbb::task_arena>(std::min(
-                static_cast<int>(threads_), tbb::this_task_arena::max_concurrency()));
+            arena_ = std::make_unique<tbb::task_arena>(
+                std::min(static_cast<int>(threads_), tbb::this_task_arena::max_concurrency()));
         }
         scratch_.resize(threads_);
     }

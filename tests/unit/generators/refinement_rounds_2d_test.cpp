@@ -132,9 +132,19 @@ TEST(Generators_RefinementRounds, ThirtyDegreesWithThePolishAsWorstFirst) {
     EXPECT_GE(r.check.min_angle, 30.0 - kAngleSlack);
     EXPECT_LE(r.check.max_size_ratio, 1 + 1e-9);
     EXPECT_GT(r.result.counters.round_conflicts, 0u);
+    // The phases were timed (seconds, every one at least 0; the probes take time in every
+    // round); worst-first times none.
+    const gen::RoundPhaseSeconds2& phases = r.result.round_seconds;
+    for (const double seconds :
+         {phases.form, phases.accept, phases.fans, phases.queue, phases.steps})
+        EXPECT_GE(seconds, 0.0);
+    EXPECT_GT(phases.probe, 0.0);
+    EXPECT_EQ(gen::phase_list(phases).size(), 6u);
     options.order = gen::RefinementOrder::WorstFirst;
     const Refined worst_first = refine(in, options);
     ASSERT_TRUE(worst_first.check.ok) << worst_first.check.problem;
+    for (const auto& [name, seconds] : gen::phase_list(worst_first.result.round_seconds))
+        EXPECT_EQ(seconds, 0.0) << name;
     const double ratio = static_cast<double>(r.result.counters.steiner_points()) /
                          static_cast<double>(worst_first.result.counters.steiner_points());
     EXPECT_GT(ratio, 0.95);
