@@ -367,6 +367,9 @@ CavityInsertion insert_probed(CdtState& cdt, const CavityProbe& probe) {
     return CavityInsertion::Inserted;
 }
 
+/// How many fans ahead insert_probed_apart asks for the slots it will write.
+constexpr std::size_t kFansAhead = 4;
+
 void insert_probed_apart(CdtState& cdt, std::span<const CavityProbe* const> probes,
                          std::size_t chunks, const ChunkRunner& run,
                          const ConstrainedTriangulation2::FanWritten& written) {
@@ -399,7 +402,18 @@ void insert_probed_apart(CdtState& cdt, std::span<const CavityProbe* const> prob
     if (cdt.apart_scratch.size() < chunks) cdt.apart_scratch.resize(chunks);
     const auto body = [&](std::size_t c) {
         FanScratch& scratch = cdt.apart_scratch[c];
-        for (std::size_t i = c * n / chunks; i < (c + 1) * n / chunks; ++i) {
+        const std::size_t end = (c + 1) * n / chunks;
+        for (std::size_t i = c * n / chunks; i < end; ++i) {
+            // A few fans ahead, the slots this chunk will write (their cavity's triangles and
+            // the links beside it): anywhere in the arrays, and last read on the probing thread.
+            if (i + kFansAhead < end) {
+                const CavityProbe& ahead = *probes[i + kFansAhead];
+                for (const TriIdx s : ahead.cavity) {
+                    __builtin_prefetch(&cdt.mesh.tv[3 * s], 1);
+                    __builtin_prefetch(&cdt.mesh.twin[3 * s], 1);
+                }
+                for (const TriIdx s : ahead.beside) __builtin_prefetch(&cdt.mesh.twin[3 * s], 1);
+            }
             const CavityProbe& probe = *probes[i];
             order_fan(cdt.mesh, cdt.segment_of.data(), probe.boundary, probe.cavity.size(),
                       scratch);
