@@ -32,13 +32,13 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "base/flat_tables.hpp"
 #include "base/huge_pages.hpp"
 #include "base/number_text.hpp"
 #include "base/parallel_runner.hpp"
 #include "base/progress.hpp"
 #include "generators/boundary/narrow_wedges_2d.hpp"
 #include "generators/boundary/region_areas_2d.hpp"
-#include "generators/mesh_3d/edge_key_maps.hpp"  // FlatKeyMap64
 #include "predicates/angle_comparisons_2d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/power_of_two.hpp"
@@ -377,12 +377,12 @@ class Refiner {
         std::exception_ptr error;  // the first assessment that threw in the chunk
         std::size_t position = 0;  // its triangle's place in touched()
     };
-    std::vector<ChunkError> errors_;               // per chunk of a round's fans
-    restricted_3d::FlatFlagSet32 round_vertices_;  // the vertices of a round's bad triangles
+    std::vector<ChunkError> errors_;  // per chunk of a round's fans
+    FlatFlagSet32 round_vertices_;    // the vertices of a round's bad triangles
     /// The slots in the cavities of the points a round inserts (flag kInCavity), and those
     /// beside them, across their boundaries (kBeside): a set sized for the round, which stays in
     /// cache where per-slot stamps over the whole mesh missed it at every look-up.
-    restricted_3d::FlatFlagSet32 claimed_;
+    FlatFlagSet32 claimed_;
     static constexpr unsigned kInCavity = 1, kBeside = 2;
     RoundPhaseSeconds2 round_seconds_;
     using Clock = std::chrono::steady_clock;
