@@ -171,10 +171,8 @@ class BucketQueue {
         return b;
     }
 
-    static constexpr std::size_t kPerLevel = kBucketsPerClass;  // keys 1 .. 2^64, 2^(1/16) steps
-
   private:
-    std::vector<Entry> buckets_[2 * kPerLevel];
+    std::vector<Entry> buckets_[2 * kBucketsPerClass];  // keys 1 .. 2^64, 2^(1/16) steps
     std::size_t top_ = 0;
     std::size_t size_ = 0;
     static std::size_t bucket(const Entry& b) {
@@ -184,7 +182,8 @@ class BucketQueue {
         std::uint32_t bits = 0;
         std::memcpy(&bits, &key, sizeof bits);
         const std::size_t level = (bits - 0x3F800000u) >> 19;
-        return (b.too_big ? kPerLevel : 0) + std::min<std::size_t>(kPerLevel - 1, level);
+        return (b.too_big ? kBucketsPerClass : 0) +
+               std::min<std::size_t>(kBucketsPerClass - 1, level);
     }
 };
 
@@ -391,6 +390,17 @@ class Refiner {
         const Clock::time_point now = Clock::now();
         phase += std::chrono::duration<double>(now - start).count();
         start = now;
+    }
+    /// Whether queue entry b is current: its triangle in the domain and not rewritten since b
+    /// was queued (else b is stale).
+    bool current(const BadTriangle& b) const {
+        return b.version == (marks_[b.t].version & 0x7FFFFFFFu) && cdt_.in_domain(b.t);
+    }
+    /// Whether a round (or its worst-first step) may take the queue's next entry: one is left,
+    /// in the buckets from `lowest` up, and no encroached piece comes before it.
+    bool band_goes_on(std::size_t lowest) {
+        return !bad_.empty() && bad_.top_bucket() >= lowest &&
+               (pieces_.empty() || pieces_.top_bucket() < bad_.top_bucket());
     }
     /// One bad triangle, the worst (RefinementOrder::WorstFirst).
     void insert_worst();
@@ -925,9 +935,7 @@ bool Refiner::refine(std::uint64_t limit) {
 
 void Refiner::insert_worst() {
     const BadTriangle top = bad_.pop();
-    if (top.version != (marks_[top.t].version & 0x7FFFFFFFu) || !cdt_.in_domain(top.t))
-        return;  // rewritten since
-    insert_circumcenter(top);
+    if (current(top)) insert_circumcenter(top);  // else rewritten since
 }
 
 void Refiner::insert_circumcenter(const BadTriangle& top) {
@@ -992,14 +1000,6 @@ void Refiner::insert_round(std::uint64_t limit) {
     const std::uint64_t room =
         std::min<std::uint64_t>(kRefinementRoundSize, limit - counters_.steiner_points());
     Clock::time_point start = Clock::now();
-    round_vertices_.clear(3 * static_cast<std::size_t>(room));
-    round_.clear();
-    waiting_.clear();
-    taken_.clear();
-    next_batch();
-    // A triangle with a vertex of one taken before it waits for the next round: the new
-    // triangles of one insertion are queued together, and their cavities overlap (taken
-    // together, two in five met an earlier one's).
     // Only triangles nearly as bad as the worst (kRoundKeyBand, and of its class): a round of
     // all the bad triangles at once inserted a tenth to a fifth more points than worst-first
     // on small domains refined to 30 degrees, whose worst triangles' points fix many others.
@@ -1015,11 +1015,9 @@ void Refiner::insert_round(std::uint64_t limit) {
         // above it dropped), while no encroached piece comes first. (Forming dropped every stale
         // entry of the band, which could lower the next band: the meshes differ from before
         // this rule, not between thread counts.)
-        while (!bad_.empty() && bad_.top_bucket() >= lowest &&
-               (pieces_.empty() || pieces_.top_bucket() < bad_.top_bucket())) {
+        while (band_goes_on(lowest)) {
             const BadTriangle top = bad_.pop();
-            if (top.version != (marks_[top.t].version & 0x7FFFFFFFu) || !cdt_.in_domain(top.t))
-                continue;  // rewritten since
+            if (!current(top)) continue;  // rewritten since
             insert_circumcenter(top);
             process_touched();
             break;
@@ -1027,9 +1025,15 @@ void Refiner::insert_round(std::uint64_t limit) {
         lap(round_seconds_.steps, start);
         return;
     }
-    while (round_.size() < room && waiting_.size() < room && !bad_.empty()) {
-        if (bad_.top_bucket() < lowest) break;
-        if (!pieces_.empty() && pieces_.top_bucket() >= bad_.top_bucket()) break;
+    round_vertices_.clear(3 * static_cast<std::size_t>(room));
+    round_.clear();
+    waiting_.clear();
+    taken_.clear();
+    next_batch();
+    // A triangle with a vertex of one taken before it waits for the next round: the new
+    // triangles of one insertion are queued together, and their cavities overlap (taken
+    // together, two in five met an earlier one's).
+    while (round_.size() < room && waiting_.size() < room && band_goes_on(lowest)) {
         // The entries of a round are anywhere in the mesh: what the tests below read of them is
         // asked for a few entries ahead.
         if (const BadTriangle* ahead = bad_.under_top(8)) {
@@ -1037,10 +1041,7 @@ void Refiner::insert_round(std::uint64_t limit) {
             cdt_.prefetch(ahead->t);
         }
         const BadTriangle top = bad_.pop();
-        if (top.version != (marks_[top.t].version & 0x7FFFFFFFu) || !cdt_.in_domain(top.t) ||
-            marks_[top.t].seen == batch_) {
-            continue;  // rewritten since, or taken already
-        }
+        if (!current(top) || marks_[top.t].seen == batch_) continue;  // stale, or taken already
         const VertIdx* v = &mesh_.tv[3 * top.t];
         if (round_vertices_.flags(v[0]) != 0 || round_vertices_.flags(v[1]) != 0 ||
             round_vertices_.flags(v[2]) != 0) {
@@ -1252,7 +1253,7 @@ void Refiner::requeue_for_asked_bound() {
     std::vector<TriIdx> keep;
     while (!bad_.empty()) {
         const BadTriangle b = bad_.pop();
-        if (b.version != (marks_[b.t].version & 0x7FFFFFFFu) || !cdt_.in_domain(b.t)) continue;
+        if (!current(b)) continue;
         if (b.too_big || below_asked_bound(b.t)) keep.push_back(b.t);
     }
     next_batch();
@@ -1268,7 +1269,7 @@ void Refiner::polish() {
     sine2_bound_ = polish_sine2_;
     polish_sine2_ = 0;  // no more candidates
     for (const BadTriangle& b : polish_) {
-        if (b.version != (marks_[b.t].version & 0x7FFFFFFFu) || !cdt_.in_domain(b.t)) continue;
+        if (!current(b)) continue;
         bad_.push(b);
         ++counters_.bad_triangles;
     }
