@@ -36,6 +36,7 @@
 #include "io/text_file.hpp"
 #include "io/triangle_format.hpp"
 #include "predicates/stats.hpp"
+#include "triangulation/delaunay/parallel_rounds.hpp"  // kMaxThreads
 
 namespace exactmesh::cli {
 
@@ -527,7 +528,7 @@ void add_mesh_command(CLI::App& app) {
                      "worst-first refinement, 0 every hardware thread; more than one refines in "
                      "rounds (--refine-order), whose mesh is the same for every thread count. "
                      "--stats prints the count used and the rounds' counters")
-        ->check(whole_number_at_most(1024))
+        ->check(whole_number_at_most(tri::kMaxThreads))
         ->capture_default_str();
     command
         ->add_option("--refine-order", arguments->refine_order,

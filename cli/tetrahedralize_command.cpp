@@ -22,6 +22,7 @@
 #include "io/vtk_format.hpp"
 #include "predicates/stats.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
+#include "triangulation/delaunay/parallel_rounds.hpp"  // kMaxThreads
 
 namespace exactmesh::cli {
 
@@ -103,7 +104,7 @@ void add_tetrahedralize_command(CLI::App& app) {
                      "for every count): 1 runs the sequential code, 0 every hardware thread; "
                      "green-sibson and the other orders run sequentially. --stats prints the "
                      "count used and the parallel rounds' counters")
-        ->check(whole_number_at_most(1024))
+        ->check(whole_number_at_most(tri::kMaxThreads))
         ->capture_default_str();
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",
                    "the construction alone, without file I/O");

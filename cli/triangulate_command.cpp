@@ -22,6 +22,7 @@
 #include "io/vtk_format.hpp"
 #include "predicates/stats.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
+#include "triangulation/delaunay/parallel_rounds.hpp"  // kMaxThreads
 
 namespace exactmesh::cli {
 
@@ -112,7 +113,7 @@ void add_triangulate_command(CLI::App& app) {
                      "for every count): 1 runs the sequential code, 0 every hardware thread; "
                      "the other algorithms and orders run sequentially. --stats prints the "
                      "count used and the parallel rounds' counters")
-        ->check(whole_number_at_most(1024))
+        ->check(whole_number_at_most(tri::kMaxThreads))
         ->capture_default_str();
     add_picture_options(*command, arguments->picture);
     add_stats_flag(*command, arguments->stats, "work counters, predicate stages",

@@ -78,7 +78,6 @@ py::dict mesh(const CoordinateArray& points, const IndexArray& segments,
             "threads and refine_order apply to generator='delaunay-refinement' only; " +
             generator_name + " runs on one thread");
     }
-    if (threads > 1024) throw InputError("threads " + std::to_string(threads) + " is above 1024");
     if ((min_angle || polish_angle) &&
         !(generator.honours.contains(gen::MeshOption::MinAngle) &&
           generator.honours.contains(gen::MeshOption::PolishAngle))) {
@@ -106,7 +105,7 @@ py::dict mesh(const CoordinateArray& points, const IndexArray& segments,
     if (!std::isfinite(options.min_angle) || !std::isfinite(options.polish_angle))
         throw InputError("min_angle and polish_angle must be finite numbers");
     options.max_steiner_points = max_steiner;
-    options.threads = threads;
+    options.threads = checked_threads(threads);
     options.refinement_order = gen::refinement_order_from_name(refine_order, threads);
     if (!layers.empty()) options.layers = gen::parse_layer_parameters(layers);
     options.layers.quads = quads;

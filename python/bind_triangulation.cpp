@@ -21,6 +21,7 @@
 #include "triangulation/constrained/constrained_2d.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
+#include "triangulation/delaunay/parallel_rounds.hpp"  // kMaxThreads
 #include "triangulation/mesh/constrained_flags_2d.hpp"
 
 namespace exactmesh::python {
@@ -29,12 +30,6 @@ namespace tri = exactmesh::triangulation;
 using namespace pybind11::literals;
 
 namespace {
-
-/// threads as the command's --threads: 0 every core, at most 1024.
-unsigned checked_threads(unsigned threads) {
-    if (threads > 1024) throw InputError("threads " + std::to_string(threads) + " is above 1024");
-    return threads;
-}
 
 py::dict triangulate(const CoordinateArray& points, const std::string& algorithm,
                      const std::string& order, std::uint64_t seed, unsigned threads) {
@@ -186,6 +181,14 @@ py::dict check_constrained(const CoordinateArray& points, const IndexArray& tria
 }
 
 }  // namespace
+
+unsigned checked_threads(unsigned threads) {
+    if (threads > triangulation::kMaxThreads) {
+        throw InputError("threads " + std::to_string(threads) + " is above " +
+                         std::to_string(triangulation::kMaxThreads));
+    }
+    return threads;
+}
 
 py::dict constrained_result_dict(tri::Cdt2Result&& result, std::vector<tri::VertIdx>&& quads) {
     py::list warnings;

@@ -65,6 +65,8 @@ def test_rounds_on_two_threads_are_the_command_s_and_one_thread_s(command, tmp_p
         exactmesh.mesh(domain="key", generator="frontal", threads=2)
     with pytest.raises(exactmesh.InputError, match="worst-first refinement runs on one thread"):
         exactmesh.mesh(domain="key", threads=2, refine_order="worst-first")
+    with pytest.raises(exactmesh.InputError, match="above 1024"):
+        exactmesh.mesh(domain="key", threads=5000)
 
 
 def test_min_angle_is_met_away_from_small_input_angles():

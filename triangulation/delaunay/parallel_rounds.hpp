@@ -26,6 +26,10 @@
 
 namespace exactmesh::triangulation {
 
+/// The most threads a caller may ask for (the command's --threads, the Python module's
+/// threads=): far above any machine's cores, and low enough that per-thread scratch stays small.
+inline constexpr unsigned kMaxThreads = 1024;
+
 /// The thread count `threads` asks for: itself, or every hardware thread for 0 (at least 1).
 unsigned resolve_thread_count(unsigned threads);
 
