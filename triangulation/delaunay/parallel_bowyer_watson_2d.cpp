@@ -562,14 +562,19 @@ class ParallelConstruction {
   private:
     /// A triangle of the worker's partition to start its walks from, and the point it was found
     /// for (detail::find_start_index; the walks are sequential and read-only); kNone when none
-    /// lands in the partition.
+    /// lands in the partition. A point deferred before walks from where its attempt stopped,
+    /// next to it: from the last walk's end, across the sparse points of a second pass, these
+    /// walks took 23 ms of the 36 ms between passes (10^6 uniform points, two threads).
     void find_start(Worker& worker) {
         worker.last = kNone;
         worker.start = 0;
         TriIdx found = kNone;
         const std::optional<std::size_t> start =
             detail::find_start_index(worker.points.size(), [&](std::size_t i) {
-                found = core_.walk_to(worker.points[i]);
+                const VertIdx p = worker.points[i];
+                if (hints_[p] != kNone && !core_.mesh.is_dead(hints_[p] & kHintIndex))
+                    core_.last_triangle = hints_[p] & kHintIndex;
+                found = core_.walk_to(p);
                 return worker.owns(shared_, found);
             });
         if (!start) return;

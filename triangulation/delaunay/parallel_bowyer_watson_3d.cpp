@@ -449,7 +449,12 @@ class ParallelConstruction3 {
         TetIdx found = kNone;
         const std::optional<std::size_t> start =
             detail::find_start_index(worker.points.size(), [&](std::size_t i) {
-                found = core_.walk_to(worker.points[i]).tet;
+                // A point deferred before walks from where its attempt stopped, next to it.
+                const VertIdx p = worker.points[i];
+                const TetIdx hint = shared_.hints[p];
+                if (hint != kNone && !core_.mesh.is_dead(hint & kMaxTetSlots))
+                    core_.last_tet = hint & kMaxTetSlots;
+                found = core_.walk_to(p).tet;
                 return worker.region.can_start(found);
             });
         if (!start) return;
