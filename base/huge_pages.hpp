@@ -4,10 +4,11 @@
 // refinement grows its per-triangle and per-vertex arrays into memory reserved up front, and
 // every 4 KiB page it first touches is a page fault. Measured at 1.09M triangles (square with
 // holes, 30 degrees): 65,000 faults -> 52,000; one thread's time unchanged, two threads'
-// rounds 12% faster (their faults no longer meet in the kernel). A hint only: without the
-// kernel's support, or on another system, nothing changes. Not applied to the Delaunay
-// constructions: with every allocation on huge pages (glibc.malloc.hugetlb=1) the 3D one at
-// 10^6 points was 10% slower (pages compacted and zeroed 2 MiB at a time on first touch).
+// rounds 12% faster (their faults no longer meet in the kernel). The Delaunay constructions
+// advise their mesh arrays (3D, and the 2D points and the parallel 2D construction's arrays),
+// not every allocation: with all of them on huge pages (glibc.malloc.hugetlb=1) the 3D one at
+// 10^6 points was 10% slower (pages compacted and zeroed 2 MiB at a time on first touch). A
+// hint only: without the kernel's support, or on another system, nothing changes.
 #pragma once
 
 #include <cstddef>

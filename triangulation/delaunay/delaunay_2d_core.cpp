@@ -8,6 +8,7 @@
 #include <string>
 
 #include "base/errors.hpp"
+#include "base/huge_pages.hpp"
 #include "base/number_text.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
@@ -99,16 +100,31 @@ void Delaunay2Core::note_inserted(VertIdx p) {
     }
 }
 
-Delaunay2Core::Delaunay2Core(std::span<const double> xy, std::vector<VertIdx> order) {
+Delaunay2Core::Delaunay2Core(std::span<const double> xy, std::vector<VertIdx> order,
+                             const ChunkRunner& run) {
     const std::uint32_t n = static_cast<std::uint32_t>(xy.size() / 2);
     input_index = std::move(order);
+    mesh.xy.reserve(xy.size());
+    advise_huge_pages(mesh.xy);
     mesh.xy.resize(xy.size());
-    for (std::uint32_t v = 0; v < n; ++v) {
-        mesh.xy[2 * v] = xy[2 * input_index[v]];
-        mesh.xy[2 * v + 1] = xy[2 * input_index[v] + 1];
-    }
     merged_into.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) merged_into[i] = i;
+    // In chunks of points, on run's threads when given (the same arrays).
+    constexpr std::uint32_t kChunk = 1u << 16;
+    const std::size_t chunks = (std::size_t{n} + kChunk - 1) / kChunk;
+    const auto gather = [&](std::size_t chunk) {
+        const auto begin = static_cast<std::uint32_t>(chunk * kChunk);
+        const std::uint32_t end = std::min(n, begin + kChunk);
+        for (std::uint32_t v = begin; v < end; ++v) {
+            mesh.xy[2 * v] = xy[2 * input_index[v]];
+            mesh.xy[2 * v + 1] = xy[2 * input_index[v] + 1];
+            merged_into[v] = v;
+        }
+    };
+    if (run && chunks > 1) {
+        run(chunks, gather);
+    } else {
+        for (std::size_t chunk = 0; chunk < chunks; ++chunk) gather(chunk);
+    }
     counters.points = n;
     mesh.tv.reserve(6 * static_cast<std::size_t>(n) + 12);
     mesh.twin.reserve(6 * static_cast<std::size_t>(n) + 12);

@@ -26,9 +26,11 @@ class Delaunay2Core {
   public:
     /// Validates the input, orders it (options.order) and copies it into mesh.xy.
     Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options);
-    /// Same, with mesh vertex v holding the caller's point order[v] (a permutation).
+    /// Same, with mesh vertex v holding the caller's point order[v] (a permutation), copied in
+    /// chunks on `run`'s threads when given.
     /// @pre xy validated (validate_points_2d): the order was computed from it.
-    Delaunay2Core(std::span<const double> xy, std::vector<VertIdx> order);
+    Delaunay2Core(std::span<const double> xy, std::vector<VertIdx> order,
+                  const ChunkRunner& run = {});
 
     TriMesh2 mesh;
     std::vector<VertIdx> input_index;  ///< mesh vertex -> caller's index

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "base/errors.hpp"
+#include "base/huge_pages.hpp"
 #include "base/number_text.hpp"
 #include "predicates/insphere.hpp"
 #include "predicates/orient2d.hpp"
@@ -17,10 +18,6 @@
 #include "predicates/sos.hpp"
 #include "triangulation/delaunay/result_numbering.hpp"
 #include "triangulation/mesh/spatial_sort.hpp"
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace exactmesh::triangulation {
 
@@ -45,18 +42,6 @@ void validate_points_3d(std::span<const double> xyz) {
 }
 
 namespace detail {
-
-// With 4 KiB pages the first-touch faults and TLB misses of the mesh arrays cost about a fifth
-// of a construction.
-void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t bytes) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
-    const auto start = reinterpret_cast<std::uintptr_t>(data);
-    const std::uintptr_t begin = (start + kHuge - 1) & ~(kHuge - 1);
-    const std::uintptr_t end = (start + bytes) & ~(kHuge - 1);
-    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#endif
-}
 
 namespace {
 
@@ -91,8 +76,10 @@ Delaunay3Core::Delaunay3Core(std::span<const double> xyz, std::vector<VertIdx> o
     star.closed = true;  // kInfinite closes the mesh: every face has a twin
     mesh.tv.reserve(4 * reserved_tets);
     mesh.adj.reserve(4 * reserved_tets);
-    advise_huge_pages(mesh.tv.data(), mesh.tv.capacity() * sizeof(VertIdx));
-    advise_huge_pages(mesh.adj.data(), mesh.adj.capacity() * sizeof(FaceIdx));
+    // With 4 KiB pages the first-touch faults and TLB misses of the mesh arrays cost about a
+    // fifth of a construction.
+    advise_huge_pages(mesh.tv);
+    advise_huge_pages(mesh.adj);
 }
 
 Sign Delaunay3Core::orient(VertIdx a, VertIdx b, VertIdx c, VertIdx d) {

@@ -118,10 +118,6 @@ Location3 walk_3d(const TetMesh3& mesh, TetIdx& t, VertIdx p, std::uint64_t& rng
 /// (their shared vertex), else kNone.
 VertIdx duplicate_vertex(const TetMesh3& mesh, const Location3& where);
 
-/// Asks the kernel to back the 2 MiB-aligned interior of a large buffer with huge pages (only a
-/// hint): the mesh arrays are touched in a spatially coherent but scattered way.
-void advise_huge_pages(const void* data, std::size_t bytes);
-
 class Delaunay3Core {
   public:
     /// Validates the input, orders it (options.order) and copies it into mesh.xyz.

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "base/huge_pages.hpp"
 #include "base/stopwatch.hpp"
 #include "triangulation/delaunay/bowyer_watson_3d_cavity.hpp"
 #include "triangulation/delaunay/delaunay_3d_core.hpp"
@@ -318,15 +319,19 @@ Prepared prepare(std::span<const double> xyz, std::uint64_t seed, unsigned threa
     Prepared out;
     auto make_array = [slots](std::vector<std::uint32_t>& array) {
         array.reserve(4 * slots);
-        detail::advise_huge_pages(array.data(), array.capacity() * sizeof(std::uint32_t));
+        advise_huge_pages(array);
         array.resize(4 * slots, kNone);
     };
+    // As in 2D: the random stream beside both curves' keys, then the rounds beside the arrays
+    // (the order as one thread's insertion_order_3d).
+    std::vector<std::uint32_t> position;
     detail::run_together(
         arena,
-        [&] {
-            out.order = insertion_order_3d(xyz, InsertionOrder::Brio, seed, true, &out.keys[0]);
-        },
-        [&] { out.keys[1] = hilbert_keys_3d(xyz, kSecondCurveShift, true); },
+        [&] { position = inverse_permutation(random_permutation(xyz.size() / 3, seed), true); },
+        [&] { out.keys[0] = hilbert_keys_3d(xyz, 0, true); },
+        [&] { out.keys[1] = hilbert_keys_3d(xyz, kSecondCurveShift, true); });
+    detail::run_together(
+        arena, [&] { out.order = brio_order(out.keys[0], position, true); },
         [&] { make_array(out.tv); }, [&] { make_array(out.adj); });
     return out;
 }

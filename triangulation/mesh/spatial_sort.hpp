@@ -19,12 +19,29 @@ enum class InsertionOrder { Given, Random, Brio };
 /// @throws InputError naming the unknown name and the known ones.
 InsertionOrder insertion_order_from_name(std::string_view name);
 
-/// A permutation of 0..n-1 (n = xy.size()/2): the order in which to insert the points. With
-/// `parallel`, the Brio order's keys and rounds are computed on every thread of the current
-/// oneTBB arena (the same permutation); then `keys`, if given, receives hilbert_keys_2d(xy).
+/// A permutation of 0..n-1 (n = xy.size()/2): the order in which to insert the points (Brio:
+/// brio_order(hilbert_keys_2d(xy), inverse_permutation(random_permutation(n, seed)))). With
+/// `parallel`, the Brio order's keys and rounds are computed on every thread of the current oneTBB
+/// arena (the same permutation).
 std::vector<std::uint32_t> insertion_order_2d(std::span<const double> xy, InsertionOrder order,
-                                              std::uint64_t seed, bool parallel = false,
-                                              std::vector<std::uint32_t>* keys = nullptr);
+                                              std::uint64_t seed, bool parallel = false);
+
+/// A uniformly random permutation of 0..n-1 drawn from `seed` (one random stream: sequential).
+std::vector<std::uint32_t> random_permutation(std::size_t n, std::uint64_t seed);
+
+/// The positions of a permutation: inverse[perm[k]] = k (with `parallel`, on every thread of
+/// the current oneTBB arena).
+std::vector<std::uint32_t> inverse_permutation(std::span<const std::uint32_t> perm,
+                                               bool parallel = false);
+
+/// The BRIO order [AmentaChoiRote03] of n = keys.size() points: with point i at position
+/// position[i] of a random permutation, the rounds are the positions [0, n/2^k), ..., [n/4,
+/// n/2), [n/2, n) (n/2^k at most 64, by repeated halving as brio_rounds); each round's points
+/// sorted by key, equal keys by position, but the first round's (random: by position). With
+/// `parallel`, on every thread of the current oneTBB arena (the same order).
+std::vector<std::uint32_t> brio_order(std::span<const std::uint32_t> keys,
+                                      std::span<const std::uint32_t> position,
+                                      bool parallel = false);
 
 /// The position of each point (n = xy.size()/2) along the Hilbert curve of a 2^16 x 2^16 grid
 /// over the points' bounding box: the keys by which the BRIO rounds of insertion_order_2d are
@@ -38,11 +55,10 @@ std::vector<std::uint32_t> hilbert_keys_2d(std::span<const double> xy, std::uint
 /// Sorts `indices` in place along a Hilbert curve over the bounding box of their points.
 void hilbert_sort_2d(std::span<const double> xy, std::span<std::uint32_t> indices);
 
-/// The same in 3D (n = xyz.size()/3): BRIO rounds sorted along a 3D Hilbert curve; `parallel`
-/// and `keys` (then hilbert_keys_3d(xyz)) as in insertion_order_2d.
+/// The same in 3D (n = xyz.size()/3): BRIO rounds sorted along a 3D Hilbert curve
+/// (hilbert_keys_3d); `parallel` as in insertion_order_2d.
 std::vector<std::uint32_t> insertion_order_3d(std::span<const double> xyz, InsertionOrder order,
-                                              std::uint64_t seed, bool parallel = false,
-                                              std::vector<std::uint32_t>* keys = nullptr);
+                                              std::uint64_t seed, bool parallel = false);
 
 /// The position of each point along the Hilbert curve of a 2^10 x 2^10 x 2^10 grid over the
 /// points' bounding box (the keys of insertion_order_3d's rounds); `cell_shift` and `parallel`
