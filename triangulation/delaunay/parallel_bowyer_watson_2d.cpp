@@ -645,6 +645,7 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     phase = Clock::now();
     ParallelConstruction construction(core, threads, arena, prepared);
     core.counters.keys_microseconds = detail::microseconds_since(phase);
+    phase = Clock::now();
     const std::vector<VertIdx> prefix = detail::unskipped_vertices(skip, 0, rounds.prefix_end);
     construction.insert_sequentially(prefix);
     core.counters.sequential_prefix = prefix.size();

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 
 #include <cmath>
 #include <cstdint>
@@ -119,6 +120,24 @@ TEST(Triangulation_ParallelBowyerWatson2d, RunsInParallelAndDefersFew) {
     EXPECT_GT(r.counters.parallel_points, n / 2);
     EXPECT_LT(r.counters.sequential_tail, n / 20);
     EXPECT_GE(r.counters.parallel_rounds, 2u);
+}
+
+TEST(Triangulation_ParallelBowyerWatson2d, PhaseTimesAreDisjointPartsOfTheCall) {
+    // The phases --stats prints (order, keys, sequential, partition, parallel, result) each
+    // time a part of the call: together they fit inside its wall time (the sequential phase
+    // once counted the keys' time again), and the passes have time.
+    const std::uint32_t n = std::max<std::uint32_t>(scaled(2e5), 50000);
+    const std::vector<double> xy = gen::generate_points_2d(gen::Distribution::Uniform, n, 5);
+    const auto start = std::chrono::steady_clock::now();
+    const tri::Delaunay2Result r = build(xy, 2);
+    const auto wall = std::chrono::duration_cast<std::chrono::microseconds>(
+        std::chrono::steady_clock::now() - start);
+    const tri::Delaunay2Counters& c = r.counters;
+    EXPECT_GT(c.parallel_microseconds, 0u);
+    EXPECT_GT(c.keys_microseconds, 0u);
+    EXPECT_LE(c.order_microseconds + c.keys_microseconds + c.sequential_microseconds +
+                  c.partition_microseconds + c.parallel_microseconds + c.result_microseconds,
+              static_cast<std::uint64_t>(wall.count()));
 }
 
 TEST(Triangulation_ParallelBowyerWatson2d, ParallelOrderIsTheSequentialOne) {
