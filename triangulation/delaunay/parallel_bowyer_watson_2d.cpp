@@ -395,13 +395,16 @@ void add_work_counters(Delaunay2Counters& to, const Delaunay2Counters& from) {
 constexpr std::uint32_t kSecondCurveShift = 25033;  // 2^16 (1 - 0.618...)
 
 /// What is computed on the arena before the mesh exists: the BRIO order, both curves' keys (in
-/// the caller's order) and the mesh arrays sized for every pass (tv kNone: dead slots).
+/// the caller's order), the mesh arrays sized for every pass (tv kNone: dead slots) and the
+/// per-vertex arrays (first touched here, beside the order, not by the calling thread alone).
 struct Prepared {
     std::vector<VertIdx> order;
     std::vector<std::uint32_t> keys[2];
     std::vector<VertIdx> tv;
     std::vector<EdgeIdx> twin;
     std::vector<std::uint32_t> stamp;
+    std::vector<TriIdx> starting_at;  ///< n + 1 entries kNone (ParallelConstruction's)
+    std::vector<TriIdx> hints;        ///< n entries kNone
 };
 
 Prepared prepare(std::span<const double> xy, std::uint64_t seed, unsigned threads,
@@ -430,7 +433,11 @@ Prepared prepare(std::span<const double> xy, std::uint64_t seed, unsigned thread
     detail::run_together(
         arena, [&] { out.order = brio_order(out.keys[0], position, true); },
         [&] { make_array(out.tv, 3 * slots, kNone); },
-        [&] { make_array(out.twin, 3 * slots, kNone); }, [&] { make_array(out.stamp, slots, 0u); });
+        [&] { make_array(out.twin, 3 * slots, kNone); }, [&] { make_array(out.stamp, slots, 0u); },
+        [&] {
+            out.starting_at.assign(n + 1, kNone);
+            out.hints.assign(n, kNone);
+        });
     return out;
 }
 
@@ -456,10 +463,12 @@ class ParallelConstruction {
         stamp_.swap(prepared.stamp);
         detail::keys_by_mesh_vertex(runner_, arena_, core.input_index, prepared.keys, keys_);
         shared_.keys = keys_[0];
-        starting_at_.assign(n + 1, kNone);
+        starting_at_.swap(prepared.starting_at);
+        EM_ASSERT(starting_at_.size() == std::size_t{n} + 1);
         shared_.starting_at = &starting_at_;
         shared_.stamp = &stamp_;
-        hints_.assign(n, kNone);
+        hints_.swap(prepared.hints);
+        EM_ASSERT(hints_.size() == n);
         shared_.hints = &hints_;
         sequential_.owns_all = true;
         restart_marks();
