@@ -642,7 +642,7 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     };
     detail::Delaunay2Core core(xy, std::move(prepared.order), on_arena);
     core.progress = ProgressCounter(options.progress, xy.size() / 2, "points inserted");
-    core.counters.order_microseconds = detail::microseconds_since(phase);
+    core.counters.order_microseconds = lap_microseconds(phase);
     core.counters.threads = threads;
     std::vector<bool> skip;
     if (!core.make_first_triangle(skip)) return core.collinear_result();
@@ -651,29 +651,24 @@ Delaunay2Result parallel_bowyer_watson_2d(std::span<const double> xy,
     const detail::BrioRounds rounds =
         detail::brio_rounds(n, threads, options.parallel_round_minimum);
 
-    phase = Clock::now();
     ParallelConstruction construction(core, threads, arena, prepared);
-    core.counters.keys_microseconds = detail::microseconds_since(phase);
-    phase = Clock::now();
+    core.counters.keys_microseconds = lap_microseconds(phase);
     const std::vector<VertIdx> prefix = detail::unskipped_vertices(skip, 0, rounds.prefix_end);
     construction.insert_sequentially(prefix);
     core.counters.sequential_prefix = prefix.size();
-    std::uint64_t sequential = detail::microseconds_since(phase);
+    std::uint64_t sequential = lap_microseconds(phase);
 
-    phase = Clock::now();
     const std::vector<VertIdx> pending = detail::run_parallel_rounds(construction, rounds, skip);
     // The rounds' time less the threads' passes: what the calling thread does alone.
     core.counters.partition_microseconds =
-        detail::microseconds_since(phase) - core.counters.parallel_microseconds;
-    phase = Clock::now();
+        lap_microseconds(phase) - core.counters.parallel_microseconds;
     construction.insert_sequentially(pending);
     core.counters.sequential_tail = pending.size();
-    core.counters.sequential_microseconds = sequential + detail::microseconds_since(phase);
+    core.counters.sequential_microseconds = sequential + lap_microseconds(phase);
     construction.trim();
     construction.finish_counters();
-    phase = Clock::now();
     Delaunay2Result result = core.take_result(threads, on_arena);
-    result.counters.result_microseconds = detail::microseconds_since(phase);
+    result.counters.result_microseconds = lap_microseconds(phase);
     return result;
 }
 

@@ -492,7 +492,7 @@ Delaunay3Result parallel_bowyer_watson_3d(std::span<const double> xyz,
     validate_points_3d(xyz);
     Prepared prepared = prepare(xyz, options.seed, threads, arena);
     detail::Delaunay3Core core(xyz, std::move(prepared.order), 0);
-    core.counters.order_microseconds = microseconds_since(phase);
+    core.counters.order_microseconds = lap_microseconds(phase);
     core.counters.threads = threads;
     std::vector<bool> skip;
     if (!core.make_first_tet(skip)) return core.coplanar_result(xyz);
@@ -501,33 +501,28 @@ Delaunay3Result parallel_bowyer_watson_3d(std::span<const double> xyz,
     const detail::BrioRounds rounds =
         detail::brio_rounds(n, threads, options.parallel_round_minimum);
 
-    phase = Clock::now();
     ParallelConstruction3 construction(core, progress, threads, arena, prepared);
     prepared = Prepared{};
-    core.counters.keys_microseconds = microseconds_since(phase);
-    phase = Clock::now();
+    core.counters.keys_microseconds = lap_microseconds(phase);
     const std::vector<VertIdx> prefix = detail::unskipped_vertices(skip, 0, rounds.prefix_end);
     construction.insert_sequentially(prefix);
     core.counters.sequential_prefix = prefix.size();
-    const std::uint64_t sequential = microseconds_since(phase);
+    const std::uint64_t sequential = lap_microseconds(phase);
 
-    phase = Clock::now();
     const std::vector<VertIdx> pending = detail::run_parallel_rounds(construction, rounds, skip);
     // The rounds' time less the threads' passes: what the calling thread does alone.
     core.counters.partition_microseconds =
-        microseconds_since(phase) - core.counters.parallel_microseconds;
-    phase = Clock::now();
+        lap_microseconds(phase) - core.counters.parallel_microseconds;
     construction.insert_sequentially(pending);
     core.counters.sequential_tail = pending.size();
     construction.finish();
-    core.counters.sequential_microseconds = sequential + microseconds_since(phase);
-    phase = Clock::now();
+    core.counters.sequential_microseconds = sequential + lap_microseconds(phase);
     detail::PartitionRunner runner;
     Delaunay3Result result = core.take_result(
         xyz, threads, [&](std::size_t count, const std::function<void(std::size_t)>& body) {
             runner.run(arena, count, body);
         });
-    result.counters.result_microseconds = microseconds_since(phase);
+    result.counters.result_microseconds = lap_microseconds(phase);
     return result;
 }
 
