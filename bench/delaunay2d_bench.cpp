@@ -35,10 +35,14 @@
 //   EXACTMESH_BENCH_SCALING_MAX_POINTS=10000000 delaunay2d_bench
 //       --benchmark_filter='_threads/uniform/brio/10000000/' --benchmark_repetitions=3
 //
+// The insertion order alone: BM_insertion_order/uniform/hilbert_keys/1000000 (the keys) and
+// BM_insertion_order/uniform/brio_<T>_threads/1000000 (the BRIO order on T = 1, 2 threads).
+//
 // Helper mode (no benchmark runs): `delaunay2d_bench --write_node=<distribution>,<n>,<path>`
 // writes generate_points_2d(distribution, n, kInputSeed) as a Triangle .node file, which the
 // report pictures with `exactmesh triangulate <path> -o picture.svg`.
 #include <benchmark/benchmark.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
@@ -61,6 +65,7 @@
 #include "generators/inputs/inputs.hpp"
 #include "io/triangle_format.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
+#include "triangulation/mesh/spatial_sort.hpp"
 
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -284,6 +289,28 @@ void bm_cgal(benchmark::State& state, Distribution distribution) {
 }
 #endif
 
+/// The insertion order alone (issue 17: the order phase of `--stats`): the Hilbert keys of the
+/// points, and the whole BRIO order (keys, shuffle, rounds) on `threads` threads of an arena.
+void bm_hilbert_keys(benchmark::State& state, Distribution distribution) {
+    const std::vector<double>& xy =
+        input_for(distribution, PointOrder::AsGenerated, static_cast<std::uint32_t>(state.range(0)))
+            .xy;
+    for (auto _ : state) benchmark::DoNotOptimize(tri::hilbert_keys_2d(xy));
+}
+
+void bm_brio_order(benchmark::State& state, Distribution distribution, unsigned threads) {
+    const std::vector<double>& xy =
+        input_for(distribution, PointOrder::AsGenerated, static_cast<std::uint32_t>(state.range(0)))
+            .xy;
+    tbb::task_arena arena(static_cast<int>(threads));
+    for (auto _ : state) {
+        arena.execute([&] {
+            benchmark::DoNotOptimize(
+                tri::insertion_order_2d(xy, tri::InsertionOrder::Brio, 1, threads > 1));
+        });
+    }
+}
+
 std::string algorithm_label(const std::string& registry_name) {
     std::string label = registry_name;
     std::replace(label.begin(), label.end(), '-', '_');
@@ -344,6 +371,19 @@ void register_all() {
             ->Complexity(benchmark::oNLogN)
             ->Unit(benchmark::kMillisecond);
 #endif
+    }
+    // The insertion order alone, at 10^6 uniform points (BM_insertion_order/...).
+    benchmark::RegisterBenchmark("BM_insertion_order/uniform/hilbert_keys", &bm_hilbert_keys,
+                                 Distribution::Uniform)
+        ->Arg(1000000)
+        ->Unit(benchmark::kMillisecond);
+    for (const unsigned threads : {1u, 2u}) {
+        const std::string name =
+            "BM_insertion_order/uniform/brio_" + std::to_string(threads) + "_threads";
+        benchmark::RegisterBenchmark(name.c_str(), &bm_brio_order, Distribution::Uniform, threads)
+            ->Arg(1000000)
+            ->UseRealTime()
+            ->Unit(benchmark::kMillisecond);
     }
     // A degenerate input for gift wrapping: on the integer grid every circle through three
     // neighbours passes through a fourth, a candidate the exact incircle decides.
