@@ -94,6 +94,7 @@ class Recovery {
         for (VertIdx v = 0; v < n; ++v) points_.emplace(point_key(plc.point(v)), v);
         budget_ = options.max_steiner_points != 0 ? options.max_steiner_points
                                                   : 100 * std::uint64_t{n} + 100000;
+        seed_ = options.seed;
         collect_segments();
         reject_corners_on_segments();
         planes_.reserve(plc.facets.size());
@@ -117,6 +118,7 @@ class Recovery {
     std::vector<std::vector<VertIdx>> facet_interior_;
     std::vector<FacetPlane> planes_;
     std::uint64_t budget_ = 0;
+    std::uint64_t seed_ = 1;  ///< the Delaunay tetrahedralizations' insertion-order seed
     BoundaryRecovery3Counters counters_;
     std::vector<std::string> warnings_;  ///< carve's: input points the domain leaves unused
 
@@ -268,7 +270,7 @@ class Recovery {
 
     void build_mesh() {
         ++counters_.rounds;
-        mesh_ = delaunay_3d_algorithm("green-sibson")(xyz_, Delaunay3Options{});
+        mesh_ = delaunay_3d_algorithm("green-sibson")(xyz_, Delaunay3Options{.seed = seed_});
         if (mesh_.coplanar) throw InputError("boundary recovery: the PLC's vertices are coplanar");
         EM_ASSERT(mesh_.counters.duplicates == 0);
         edges_.clear();

@@ -39,6 +39,10 @@ struct BoundaryRecovery3Options {
     /// raises InputError naming the budget and the feature being recovered (PLCs with tiny
     /// input angles may need unbounded refinement).
     std::uint64_t max_steiner_points = 0;
+    /// The insertion order's seed of the Delaunay tetrahedralizations it builds: other seeds
+    /// give the same tetrahedra numbered otherwise (and so the generators after it, which visit
+    /// them in that numbering, other meshes of the same domain).
+    std::uint64_t seed = 1;
 };
 
 struct BoundaryRecovery3Counters {

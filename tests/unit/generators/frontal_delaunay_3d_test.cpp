@@ -232,6 +232,22 @@ TEST(Generators_FrontalDelaunay3d, SubfaceCentresBeyondTheFacetSplitTheSubsegmen
     EXPECT_TRUE(triangulation::check_boundary_conformity_3d(plc, result.mesh).ok);
 }
 
+TEST(Generators_FrontalDelaunay3d, AnyNumberingOfTheRecoveredMeshFitsTheBoundaryInBoundedSteps) {
+    // The recovered mesh numbered by another seed of its Delaunay insertion order (the same
+    // tetrahedra) visits the boundary in another order. With seed 3 the wing at size 0.08 had
+    // a subface whose centre lay beyond a span-wise segment no corner of it encroaches (its facet
+    // not Delaunay there): splitting that segment made more such subfaces, without end (9,567
+    // segment splits in its first 20 s, two segments cut down to 2^-22). Seed 1 takes 3,087.
+    const double h = 0.08;
+    const Plc3 plc = sample_domain_3d(SampleDomain3::Wing, 0);
+    triangulation::BoundaryRecovery3Options recovery;
+    recovery.seed = 3;
+    const FrontalDelaunay3Result result = frontal_delaunay_3d(
+        plc, triangulation::boundary_recovery_3d(plc, recovery).mesh, options_for(h));
+    EXPECT_LT(result.counters.segment_splits, 4000u);
+    EXPECT_TRUE(triangulation::check_boundary_conformity_3d(plc, result.mesh).ok);
+}
+
 TEST(Generators_FrontalDelaunay3d, BudgetErrors) {
     const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole, 0.2);
     // A size asking for far more points than the budget: refused at once, with the estimate,
