@@ -455,14 +455,15 @@ TEST(Issue15, issue_15_points_outside_the_domain_are_named_in_warnings) {
 TEST(Issue15, issue_15_boundary_folds_keep_the_facets_tiled) {
     // tests/data/hostile_3d/rotated_cube_free_vertices_boundary_folds.poly (a hostile-input
     // campaign's free.44): a turned cube with free vertices beside an edge, in a row, at a
-    // corner and within rounding of facets. Frontal insertion at size 0.1 leaves folds (88, and
-    // 20 since unsplittable subfaces split their longest edge), tetrahedra whose two boundary
-    // faces are subfaces of one facet; sliver removal removes each by turning the facet's
-    // quadrilateral to its other diagonal. The new
-    // subfaces' corner order had been chosen to match the old ones' projected orientation, which
-    // made the convexity test pass always: a fold across a reflex corner overlapped the next
-    // subface (a directed edge in two subfaces) and `tetmesh` stopped with an internal error.
-    // The order now follows the quadrilateral's edges, and a reflex corner keeps its fold.
+    // corner and within rounding of facets. Frontal insertion at size 0.1 leaves folds (88, then
+    // 20 since unsplittable subfaces split their longest edge, 3 since boundary fitting splits
+    // the largest first: the same 3 at sizes 0.05 to 0.2 and with the recovery's seeds 1 to 3),
+    // tetrahedra whose two boundary faces are subfaces of one facet; sliver removal removes each
+    // by turning the facet's quadrilateral to its other diagonal. The new subfaces' corner order
+    // had been chosen to match the old ones' projected orientation, which made the convexity
+    // test pass always: a fold across a reflex corner overlapped the next subface (a directed
+    // edge in two subfaces) and `tetmesh` stopped with an internal error. The order now follows
+    // the quadrilateral's edges, and a reflex corner keeps its fold.
     for (const int exponent : {0, 300, -300}) {
         std::vector<tri::VertIdx> attached;
         const tri::Plc3 plc = rotated_cube("rotated_cube_free_vertices_boundary_folds.poly",
@@ -479,7 +480,7 @@ TEST(Issue15, issue_15_boundary_folds_keep_the_facets_tiled) {
         EXPECT_GT(meshed.counters.longest_edge_subfaces, 0u) << exponent;
         const gen::SliverRemoval3Result improved =
             gen::sliver_removal_3d(std::move(meshed.mesh), gen::SliverRemoval3Options{});
-        EXPECT_GT(improved.counters.folds_removed, 10u) << exponent;
+        EXPECT_GT(improved.counters.folds_removed, 0u) << exponent;
         const tri::BoundaryConformityReport3 report =
             tri::check_boundary_conformity_3d(plc, improved.mesh);
         EXPECT_TRUE(report.ok) << exponent << " " << report.problem;
