@@ -741,66 +741,82 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
     }
     const std::uint64_t budget = 8 * std::uint64_t{work.size()} + 1024;
     ct.clear_touched();
-    while (!work.empty()) {
-        const tri::TriIdx t = work.back();
-        work.pop_back();
-        if (!ct.in_domain(t) || !bad(t)) continue;
-        if (counters_.band_circumcenters + counters_.band_piece_splits >= budget) {
-            warnings.push_back("quadtree: the band's refinement stopped after " +
-                               std::to_string(budget) +
-                               " circumcenters; some band triangles keep angles below " +
-                               format_number(options_.band_min_angle) + " degrees");
-            break;
-        }
-        const auto c =
-            predicates::circumcenter(mesh.point(mesh.tv[3 * t]), mesh.point(mesh.tv[3 * t + 1]),
-                                     mesh.point(mesh.tv[3 * t + 2]));
-        const tri::CavityInsertion outcome = ct.insert_in_cavity(t, c[0], c[1]);
-        if (outcome == tri::CavityInsertion::Encroaches) {
-            // Boundary pieces it encroaches are halved (never outline edges), unless the half
-            // would be shorter than the triangle's shortest edge or a quarter of the band
-            // segment it comes from (at most two halvings: the cascade at a small input angle
-            // ends there): then the triangle stays.
-            ++counters_.band_rejected;
-            const double shortest = shortest_edge(t);
-            std::vector<std::array<VertIdx, 2>> split;
-            for (const tri::EdgeIdx e : ct.encroached_edges()) {
-                const std::uint32_t k = ct.segment_of(e);
-                if (k >= boundary_segments) continue;
-                const double* p = mesh.point(mesh.origin(e));
-                const double* q = mesh.point(mesh.destination(e));
-                const double half = 0.5 * std::hypot(q[0] - p[0], q[1] - p[1]);
-                if (half >= shortest && half >= 0.25 * segment_length(k))
-                    split.push_back({mesh.origin(e), mesh.destination(e)});
+    // A band piece that cannot be split (its point rounds to an end, or off its line where no
+    // bend fits: features within rounding of it) ends the refinement, not the mesh: the band
+    // keeps its plain CDT, as below. A free vertex 1e-15 from a segment (a hostile campaign's
+    // near_36) failed the whole mesh for one numbering of the input and meshed for another.
+    bool unsplittable = false;
+    try {
+        while (!work.empty()) {
+            const tri::TriIdx t = work.back();
+            work.pop_back();
+            if (!ct.in_domain(t) || !bad(t)) continue;
+            if (counters_.band_circumcenters + counters_.band_piece_splits >= budget) {
+                warnings.push_back("quadtree: the band's refinement stopped after " +
+                                   std::to_string(budget) +
+                                   " circumcenters; some band triangles keep angles below " +
+                                   format_number(options_.band_min_angle) + " degrees");
+                break;
             }
-            for (const auto& [u, v] : split) {
-                const tri::EdgeIdx e = ct.find_edge(u, v);
-                if (e == tri::kNone) continue;
-                const double* p = mesh.point(u);
-                const double* q = mesh.point(v);
-                const double m[2] = {0.5 * p[0] + 0.5 * q[0], 0.5 * p[1] + 0.5 * q[1]};
-                if ((m[0] == p[0] && m[1] == p[1]) || (m[0] == q[0] && m[1] == q[1])) continue;
-                ct.split_constrained_edge(e, m[0], m[1]);
-                ++counters_.band_piece_splits;
+            const auto c =
+                predicates::circumcenter(mesh.point(mesh.tv[3 * t]), mesh.point(mesh.tv[3 * t + 1]),
+                                         mesh.point(mesh.tv[3 * t + 2]));
+            const tri::CavityInsertion outcome = ct.insert_in_cavity(t, c[0], c[1]);
+            if (outcome == tri::CavityInsertion::Encroaches) {
+                // Boundary pieces it encroaches are halved (never outline edges), unless the half
+                // would be shorter than the triangle's shortest edge or a quarter of the band
+                // segment it comes from (at most two halvings: the cascade at a small input angle
+                // ends there): then the triangle stays.
+                ++counters_.band_rejected;
+                const double shortest = shortest_edge(t);
+                std::vector<std::array<VertIdx, 2>> split;
+                for (const tri::EdgeIdx e : ct.encroached_edges()) {
+                    const std::uint32_t k = ct.segment_of(e);
+                    if (k >= boundary_segments) continue;
+                    const double* p = mesh.point(mesh.origin(e));
+                    const double* q = mesh.point(mesh.destination(e));
+                    const double half = 0.5 * std::hypot(q[0] - p[0], q[1] - p[1]);
+                    if (half >= shortest && half >= 0.25 * segment_length(k))
+                        split.push_back({mesh.origin(e), mesh.destination(e)});
+                }
+                for (const auto& [u, v] : split) {
+                    const tri::EdgeIdx e = ct.find_edge(u, v);
+                    if (e == tri::kNone) continue;
+                    const double* p = mesh.point(u);
+                    const double* q = mesh.point(v);
+                    const double m[2] = {0.5 * p[0] + 0.5 * q[0], 0.5 * p[1] + 0.5 * q[1]};
+                    if ((m[0] == p[0] && m[1] == p[1]) || (m[0] == q[0] && m[1] == q[1])) continue;
+                    ct.split_constrained_edge(e, m[0], m[1]);
+                    ++counters_.band_piece_splits;
+                }
+                if (!split.empty()) {
+                    for (const tri::TriIdx u : ct.touched()) work.push_back(u);
+                    ct.clear_touched();
+                    work.push_back(t);
+                }
+                continue;
             }
-            if (!split.empty()) {
-                for (const tri::TriIdx u : ct.touched()) work.push_back(u);
-                ct.clear_touched();
-                work.push_back(t);
+            if (outcome != tri::CavityInsertion::Inserted) {
+                ++counters_.band_rejected;
+                continue;
             }
-            continue;
+            ++counters_.band_circumcenters;
+            for (const tri::TriIdx u : ct.touched()) work.push_back(u);
+            ct.clear_touched();
         }
-        if (outcome != tri::CavityInsertion::Inserted) {
-            ++counters_.band_rejected;
-            continue;
-        }
-        ++counters_.band_circumcenters;
-        for (const tri::TriIdx u : ct.touched()) work.push_back(u);
-        ct.clear_touched();
+    } catch (const GeometryError& error) {
+        unsplittable = true;
+        warnings.push_back(std::string("quadtree: the band is not refined (a piece of its own "
+                                       "segments could not be split: ") +
+                           error.what() + ")");
     }
     // A segment bent through a vertex within rounding of it (the constructor's and
     // split_constrained_edge's rule for ulp-wide gaps) may share a piece with another segment,
     // and the pieces would no longer tell the chains apart: then the band keeps its plain CDT.
+    if (unsplittable) {
+        counters_.band_circumcenters = counters_.band_piece_splits = counters_.band_rejected = 0;
+        return tri::constrained_delaunay_2d(band, cdt);
+    }
     const bool bent = ct.counters().edge_bends > 0;
     tri::Cdt2Result result = std::move(ct).take_result();
     if (bent || !result.warnings.empty()) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/quadtree_mesh_2d.hpp"
@@ -185,6 +186,73 @@ TEST(Generators_Quadtree2, DegenerateInputs) {
         const Meshed m = mesh(in, gen::SizeFunction::uniform(0.05));
         expect_good(m, in, "offset square");
         EXPECT_LT(m.result.counters.depth_limit, 28u);
+    }
+}
+
+TEST(Generators_Quadtree2, AnUnsplittableBandPieceLeavesTheBandUnrefined) {
+    // A hostile campaign's near_36: free vertices 1e-3 to 1e-15 from a segment, in a box, at
+    // the input's own graded spacing. The band's refinement met a piece 3.6e-14 long whose
+    // split point fits nowhere (features within rounding of it) and the whole mesh failed with
+    // a GeometryError naming a band segment, "segment 244" of a file with five; with the
+    // vertices numbered otherwise it meshed. Now the band keeps its plain CDT, with a warning,
+    // in either numbering and at 2^+-600.
+    const std::vector<double> xy = {-1.0,
+                                    -1.0,
+                                    1.0,
+                                    -1.0,
+                                    1.0,
+                                    1.0,
+                                    -1.0,
+                                    1.0,
+                                    -0.6856928558003721,
+                                    -0.06638108965544753,
+                                    0.21359177142554361,
+                                    -0.4754193016187894,
+                                    -0.3979747118705237,
+                                    -0.1972464158295679,
+                                    0.014406000526850751,
+                                    -0.3848199642479794,
+                                    -0.338843507524112,
+                                    -0.2241449754645718,
+                                    0.03725751808623671,
+                                    -0.39521394210428995,
+                                    -0.47930962616219724,
+                                    -0.1602541801925863,
+                                    -0.053034241478973204,
+                                    -0.354144874947217,
+                                    -0.07249910274450089,
+                                    0.09405009238244655,
+                                    -0.07242749501253977,
+                                    0.09405009772615135};
+    for (const bool reversed : {false, true}) {
+        for (const int exponent : {0, 600, -600}) {
+            Input in;
+            const std::size_t n = xy.size() / 2;
+            for (std::size_t i = 0; i < n; ++i) {
+                const std::size_t v = reversed ? n - 1 - i : i;
+                in.xy.push_back(std::ldexp(xy[2 * v], exponent));
+                in.xy.push_back(std::ldexp(xy[2 * v + 1], exponent));
+            }
+            const auto vertex = [&](std::uint32_t v) {
+                return reversed ? static_cast<std::uint32_t>(n - 1 - v) : v;
+            };
+            for (const auto& [a, b] : {std::pair{0u, 1u}, {1u, 2u}, {2u, 3u}, {3u, 0u}, {4u, 5u}})
+                in.segments.insert(in.segments.end(), {vertex(a), vertex(b)});
+            gen::QuadtreeOptions2 options;
+            options.size = gen::graded_size_from_boundary(in.pslg());
+            const std::string what = std::string(reversed ? "reversed" : "as drawn") + " at 2^" +
+                                     std::to_string(exponent);
+            gen::QuadtreeResult2 result;
+            ASSERT_NO_THROW(result = gen::quadtree_mesh_2d(in.pslg(), options)) << what;
+            EXPECT_EQ(result.counters.band_circumcenters, 0u) << what;
+            ASSERT_FALSE(result.mesh.warnings.empty()) << what;
+            EXPECT_NE(result.mesh.warnings.back().find("the band is not refined"),
+                      std::string::npos)
+                << what << ": " << result.mesh.warnings.back();
+            const Meshed m = em::testing::check_generated_mesh(std::move(result), in, options.size,
+                                                               false, false);
+            EXPECT_TRUE(m.check.ok) << what << ": " << m.check.problem;
+        }
     }
 }
 
