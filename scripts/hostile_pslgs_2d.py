@@ -7,13 +7,17 @@ README's known gaps, "Narrow wedges").
       points, some 1e-2 to 1e-15 rad from parallel), fan (segments from one vertex 1e-1 to
       1e-10 rad apart), near (free vertices 1e-3 to 1e-15 from a segment and from each other),
       ring (near-cocircular free vertices, a chord) and mix (cross and near together), in a
-      box, each at 2^0, 2^600 and 2^-600 (the same bits scaled). Seeded by kind and seed.
+      box, each at 2^0, 2^600 and 2^-600 (the same bits scaled), and each also renumbered
+      (<kind>p_<seed>_s<e>.poly: the vertices in a shuffled order, the segments shuffled and
+      some reversed; the same domain). Seeded by kind and seed.
   scripts/hostile_pslgs_2d.py --run DIR GENERATORS [REGEX] [EXACTMESH]
       meshes every DIR/*.poly (matching REGEX) with each of the comma-separated generators
       (`exactmesh mesh --generator G`), checks each mesh with `exactmesh check` (--conforming
-      for all but delaunay-refinement), prints a line per run, and a SCALE MISMATCH line when
-      one input's triangle counts (or exit codes) differ between its scales. Exit 1 when a
-      check fails, a run exits with neither 0 nor 2 (a clear refusal), or a scale mismatches.
+      for all but delaunay-refinement), prints a line per run, a SCALE MISMATCH line when
+      one input's triangle counts (or exit codes) differ between its scales, and a NUMBERING
+      MISMATCH line when an input and its renumbered copy end differently (one meshed, one
+      refused; triangle counts may differ). Exit 1 when a check fails, a run exits with
+      neither 0 nor 2 (a clear refusal), or a scale or numbering mismatches.
 """
 import collections
 import glob
@@ -111,8 +115,24 @@ def generate(out, seeds):
     for name, fn in kinds.items():
         for s in range(seeds):
             pts, segs = fn(random.Random(f"{name}{s}"))
+            shuffled, renumbered = renumber(pts, segs, random.Random(f"{name}{s}p"))
             for e in (0, 600, -600):
                 write(f"{out}/{name}_{s}_s{e}.poly", pts, segs, e)
+                write(f"{out}/{name}p_{s}_s{e}.poly", shuffled, renumbered, e)
+
+
+def renumber(pts, segs, r):
+    """The same domain with its vertices in a shuffled order, its segments shuffled and about
+    half of them reversed."""
+    order = list(range(len(pts)))
+    r.shuffle(order)
+    new_index = [0] * len(pts)
+    for new, old in enumerate(order):
+        new_index[old] = new
+    renumbered = [(new_index[a], new_index[b]) if r.random() < 0.5 else (new_index[b], new_index[a])
+                  for a, b in segs]
+    r.shuffle(renumbered)
+    return [pts[old] for old in order], renumbered
 
 
 def run(directory, generators, pattern, exe):
@@ -153,6 +173,14 @@ def run(directory, generators, pattern, exe):
         if len(set(by_scale.values())) > 1:
             failed = True
             print("SCALE MISMATCH", base, g, by_scale, flush=True)
+        kind, seed = base.rsplit("_", 1)
+        twin = outcome.get((f"{kind}p_{seed}", g)) if not kind.endswith("p") else None
+        if twin is not None:
+            for scale, (rc, _) in by_scale.items():
+                if scale in twin and twin[scale][0] != rc:
+                    failed = True
+                    print("NUMBERING MISMATCH", base, g, scale, "exit", rc, "renumbered exit",
+                          twin[scale][0], flush=True)
     return 1 if failed else 0
 
 
