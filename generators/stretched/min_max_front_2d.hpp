@@ -113,24 +113,27 @@ struct MinMaxFrontCounters2 {
     std::uint64_t stopped_too_close = 0;
     std::uint64_t stopped_neighbour = 0;  ///< a neighbour stopped more than two layers below
     std::uint64_t stopped_max_layers = 0;
-    std::uint64_t passes = 0;                 ///< isotropic passes (the last inserts nothing)
-    std::uint64_t front_edges = 0;            ///< front edges tried, summed over the passes
-    std::uint64_t front_points = 0;           ///< points inserted by the front
-    std::uint64_t rejected_outside = 0;       ///< blocked walk, on a vertex or constrained edge
-    std::uint64_t rejected_too_close = 0;     ///< too close to an existing point
-    std::uint64_t edge_insertions = 0;        ///< points inserted on an edge (2 -> 4)
-    std::uint64_t delaunay_flips = 0;         ///< Lawson flips after the insertions
-    std::uint64_t min_max_swaps = 0;          ///< min-max swaps, summed over every swapping
-    std::uint64_t triangles = 0;              ///< in the output
+    std::uint64_t passes = 0;              ///< isotropic passes (the last inserts nothing)
+    std::uint64_t front_edges = 0;         ///< front edges tried, summed over the passes
+    std::uint64_t front_points = 0;        ///< points inserted by the front
+    std::uint64_t closure_points = 0;      ///< circumcentres of triangles over the size, inserted
+                                           ///< once a pass of the front inserted nothing
+    std::uint64_t rejected_outside = 0;    ///< blocked walk, on a vertex or constrained edge
+    std::uint64_t rejected_too_close = 0;  ///< too close to an existing point
+    std::uint64_t edge_insertions = 0;     ///< points inserted on an edge (2 -> 4)
+    std::uint64_t delaunay_flips = 0;      ///< Lawson flips after the insertions
+    std::uint64_t min_max_swaps = 0;       ///< min-max swaps, summed over every swapping
+    std::uint64_t triangles = 0;           ///< in the output
     std::uint64_t max_wall_aspect_ratio = 0;  ///< largest wall spacing / first height of a
                                               ///< stack with a layer (floor)
 };
 
-inline constexpr std::array kMinMaxFrontCounterNames = EM_COUNTER_TABLE(
-    MinMaxFrontCounters2, boundary_points, wall_loops, stacks, layers, layer_points,
-    stopped_aspect_ratio, stopped_collision, stopped_too_close, stopped_neighbour,
-    stopped_max_layers, passes, front_edges, front_points, rejected_outside, rejected_too_close,
-    edge_insertions, delaunay_flips, min_max_swaps, triangles, max_wall_aspect_ratio);
+inline constexpr std::array kMinMaxFrontCounterNames =
+    EM_COUNTER_TABLE(MinMaxFrontCounters2, boundary_points, wall_loops, stacks, layers,
+                     layer_points, stopped_aspect_ratio, stopped_collision, stopped_too_close,
+                     stopped_neighbour, stopped_max_layers, passes, front_edges, front_points,
+                     closure_points, rejected_outside, rejected_too_close, edge_insertions,
+                     delaunay_flips, min_max_swaps, triangles, max_wall_aspect_ratio);
 static_assert(counter_table_complete(kMinMaxFrontCounterNames));
 
 struct MinMaxFrontResult2 {

@@ -209,6 +209,61 @@ gen::MinMaxFrontResult2 run_scaled(int k, bool given_size, bool layers) {
     return r;
 }
 
+TEST(MinMaxFront2d, AStalledFrontIsClosedWhateverTheNumbering) {
+    // The hostile campaign's near_29: a box, a free segment, five free vertices, two of them
+    // 2.2e-7 apart, at the size graded from the boundary. The front stalled around the pair
+    // (every front edge's point too close to a vertex) and stopped there: 160 triangles with
+    // big ones around the pair in one numbering of the input, 296 graded to it in another.
+    // Now the triangles still over the size get their circumcentres once a pass inserts
+    // nothing: both numberings graded, within a few triangles of each other.
+    const std::vector<double> xy = {-1,
+                                    -1,
+                                    1,
+                                    -1,
+                                    1,
+                                    1,
+                                    -1,
+                                    1,
+                                    -0.44184035752658063,
+                                    -0.041695426092772214,
+                                    0.3526791932940903,
+                                    -0.08703283356275848,
+                                    -0.21535883259389418,
+                                    -0.05461906676313904,
+                                    -0.20442668320742707,
+                                    -0.0552404135149452,
+                                    -0.3637649103333094,
+                                    -0.046150619589989034,
+                                    -0.8199768686621506,
+                                    -0.6107503529228075,
+                                    -0.819976644838711,
+                                    -0.6107503527866225};
+    const std::vector<std::uint32_t> segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5};
+    std::vector<std::size_t> counts;
+    for (const bool reversed : {false, true}) {
+        Domain domain;
+        const std::uint32_t n = static_cast<std::uint32_t>(xy.size() / 2);
+        const auto vertex = [&](std::uint32_t v) { return reversed ? n - 1 - v : v; };
+        for (std::uint32_t i = 0; i < n; ++i) {
+            domain.xy.push_back(xy[2 * vertex(i)]);
+            domain.xy.push_back(xy[2 * vertex(i) + 1]);
+        }
+        for (const std::uint32_t v : segments) domain.segments.push_back(vertex(v));
+        const gen::MinMaxFrontResult2 r = run(domain, gen::MinMaxFrontOptions2{});
+        expect_valid(domain, r);
+        EXPECT_GT(r.counters.closure_points, 0u) << reversed;
+        // Graded to the pair: vertices within 0.05 of it.
+        std::size_t near = 0;
+        for (std::uint32_t v = 0; v < r.mesh.mesh.vertex_count(); ++v)
+            near += std::hypot(r.mesh.mesh.point(v)[0] - xy[18], r.mesh.mesh.point(v)[1] - xy[19]) <
+                    0.05;
+        EXPECT_GE(near, 20u) << reversed;
+        counts.push_back(r.mesh.mesh.triangle_count());
+    }
+    EXPECT_NEAR(static_cast<double>(counts[0]), static_cast<double>(counts[1]),
+                0.05 * static_cast<double>(counts[0]));
+}
+
 TEST(MinMaxFront2d, ScaledDomainGivesTheSameMeshScaled) {
     for (const bool layers : {false, true}) {
         for (const bool given_size : {false, true}) {
