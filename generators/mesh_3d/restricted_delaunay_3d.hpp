@@ -1184,13 +1184,6 @@ class RestrictedDelaunay3 {
         return m;
     }
 
-    /// Whether a corner of subface f lies in the closed diametral sphere of edge xy (exact).
-    bool encroached_by_corner(const Subface& f, VertIdx x, VertIdx y) const {
-        return std::any_of(f.oriented.begin(), f.oriented.end(), [&](VertIdx w) {
-            return predicates::dot_sign_3d(point(w), point(x), point(y)) != Sign::Positive;
-        });
-    }
-
     /// Splits subface `key` (if still one) at its circumcentre, or the subsegments that point
     /// encroaches or lies beyond. Returns whether a point was inserted.
     bool split_subface(const Key3& key) {
@@ -1283,22 +1276,6 @@ class RestrictedDelaunay3 {
             }
             if (outside >= 0) {
                 const VertIdx x = o[outside], y = o[(outside + 1) % 3];
-                // The lemma holds in a Delaunay facet only; where a cavity had to stay the
-                // starting subfaces alone (the facet not Delaunay there), the subsegment met may
-                // be one no vertex of the subface encroaches. Splitting it did not end: on the
-                // wing at size 0.08 with the recovery's Delaunay numbered by another seed, fans
-                // of flat subfaces from one vertex had their centres beyond a span-wise segment
-                // 0.011 away, and 15,000 splits cut two segments down to 2^-22 (an endless
-                // cascade). Such a subface has its longest edge split instead.
-                if (subsegments_.count(edge_key(x, y)) != 0 && !encroached_by_corner(face, x, y)) {
-                    if (at_midpoint || !longest_edge_instead()) {
-                        ++counters_.rejected_points;
-                        return false;
-                    }
-                    at = face;
-                    steps = 0;
-                    continue;
-                }
                 if (subsegments_.count(edge_key(x, y)) != 0) {
                     segment_queue_.push_front(edge_key(x, y));
                     ++counters_.encroached_segments;

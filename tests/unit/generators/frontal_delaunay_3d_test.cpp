@@ -239,9 +239,10 @@ TEST(Generators_FrontalDelaunay3d, AnyNumberingOfTheRecoveredMeshGivesTheSameBou
     // 0.08 with seed 3 had a subface whose centre lay beyond a span-wise segment no corner of it
     // encroaches (its facet not Delaunay there), and splitting that segment made more such
     // subfaces without end (9,567 segment splits in its first 20 s, two segments cut down to
-    // 2^-22); with seed 2, once that was mended, 11,160 subface splits, flat tetrahedra of
-    // 0.0002 degrees and three times the time. Fitted largest first, every seed splits about as
-    // much, and no tetrahedron is a needle.
+    // 2^-22); with such subfaces splitting their longest edge instead (a rule tried, then
+    // withdrawn: refinement of a needle rod ran past 200 s with it), seed 2 took 11,160 subface
+    // splits and three times the time and left flat tetrahedra of 0.0002 degrees. Fitted
+    // largest first, every seed splits about as much, and no tetrahedron is a needle.
     const double h = 0.08;
     const Plc3 plc = sample_domain_3d(SampleDomain3::Wing, 0);
     std::array<FrontalDelaunay3Counters, 3> counters;
