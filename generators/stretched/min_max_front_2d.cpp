@@ -425,6 +425,29 @@ double over_size(const tri::TriMesh2& m, tri::TriIdx t, const SizeFunction& size
     return longest / (o.acceptance * size_at(size, cx, cy));
 }
 
+/// Inserts q, walked to from triangle `from`, unless outside the domain or too close to a
+/// vertex (min_distance times the size at q) or in a segment piece's diametral circle (each
+/// refusal counted); counts the insertion in `kind`. Returns whether q went in.
+bool insert_point(Inserter& inserter, tri::TriIdx from, const double* q, const SizeFunction& size,
+                  const MinMaxFrontOptions2& o, std::uint64_t budget,
+                  MinMaxFrontCounters2& counters, std::uint64_t& kind) {
+    const Location at = inserter.walk(from, q);
+    if (at.where == Where::Blocked) {
+        ++counters.rejected_outside;
+        return false;
+    }
+    if (inserter.too_close(at.t, q, o.min_distance * size_at(size, q[0], q[1]),
+                           {true, tri::kNone, 0})) {
+        ++counters.rejected_too_close;
+        return false;
+    }
+    if (counters.layer_points + counters.front_points + counters.closure_points >= budget)
+        budget_exceeded(budget);
+    inserter.insert(at, q[0], q[1]);
+    ++kind;
+    return true;
+}
+
 /// Step 3: one pass of the advancing front; returns the points it inserted.
 std::uint64_t front_pass(tri::TriMesh2& m, Inserter& inserter, const SizeFunction& size,
                          const MinMaxFrontOptions2& o, std::uint64_t budget,
@@ -465,21 +488,8 @@ std::uint64_t front_pass(tri::TriMesh2& m, Inserter& inserter, const SizeFunctio
         const double height = kSqrt3Half * size_at(size, mx, my);
         const double q[2] = {std::fma(height, -dy / f.length, mx),
                              std::fma(height, dx / f.length, my)};
-        const Location at = inserter.walk(f.t, q);
-        if (at.where == Where::Blocked) {
-            ++counters.rejected_outside;
-            continue;
-        }
-        if (inserter.too_close(at.t, q, o.min_distance * size_at(size, q[0], q[1]),
-                               {true, tri::kNone, 0})) {
-            ++counters.rejected_too_close;
-            continue;
-        }
-        if (counters.layer_points + counters.front_points + counters.closure_points >= budget)
-            budget_exceeded(budget);
-        inserter.insert(at, q[0], q[1]);
-        ++counters.front_points;
-        ++inserted;
+        if (insert_point(inserter, f.t, q, size, o, budget, counters, counters.front_points))
+            ++inserted;
     }
     return inserted;
 }
@@ -516,21 +526,9 @@ std::uint64_t closure_pass(tri::TriMesh2& m, Inserter& inserter, const SizeFunct
         const std::array<double, 2> c = predicates::circumcenter(
             m.point(f.corners[0]), m.point(f.corners[1]), m.point(f.corners[2]));
         if (!std::isfinite(c[0]) || !std::isfinite(c[1])) continue;
-        const Location at = inserter.walk(f.t, c.data());
-        if (at.where == Where::Blocked) {
-            ++counters.rejected_outside;
-            continue;
-        }
-        if (inserter.too_close(at.t, c.data(), o.min_distance * size_at(size, c[0], c[1]),
-                               {true, tri::kNone, 0})) {
-            ++counters.rejected_too_close;
-            continue;
-        }
-        if (counters.layer_points + counters.front_points + counters.closure_points >= budget)
-            budget_exceeded(budget);
-        inserter.insert(at, c[0], c[1]);
-        ++counters.closure_points;
-        ++inserted;
+        if (insert_point(inserter, f.t, c.data(), size, o, budget, counters,
+                         counters.closure_points))
+            ++inserted;
     }
     return inserted;
 }
