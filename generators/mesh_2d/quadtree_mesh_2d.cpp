@@ -741,12 +741,8 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
     }
     const std::uint64_t budget = 8 * std::uint64_t{work.size()} + 1024;
     ct.clear_touched();
-    // A band piece that cannot be split (its point rounds to an end, or off its line where no
-    // bend fits: features within rounding of it) ends the refinement, not the mesh: the band
-    // keeps its plain CDT, as below. A free vertex 1e-15 from a segment (a hostile campaign's
-    // near_36) failed the whole mesh for one numbering of the input and meshed for another.
-    bool unsplittable = false;
-    try {
+    // Refines the band (Ruppert's circumcenters, encroached boundary pieces halved).
+    const auto refine = [&]() {
         while (!work.empty()) {
             const tri::TriIdx t = work.back();
             work.pop_back();
@@ -756,7 +752,7 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
                                    std::to_string(budget) +
                                    " circumcenters; some band triangles keep angles below " +
                                    format_number(options_.band_min_angle) + " degrees");
-                break;
+                return;
             }
             const auto c =
                 predicates::circumcenter(mesh.point(mesh.tv[3 * t]), mesh.point(mesh.tv[3 * t + 1]),
@@ -804,27 +800,33 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
             for (const tri::TriIdx u : ct.touched()) work.push_back(u);
             ct.clear_touched();
         }
+    };
+    // A band piece that cannot be split (its point rounds to an end, or off its line where no
+    // bend fits: features within rounding of it) ends the refinement, not the mesh: the band
+    // keeps its plain CDT, as below. A free vertex 1e-15 from a segment (a hostile campaign's
+    // near_36) failed the whole mesh for one numbering of the input and meshed for another.
+    const auto unrefined = [&]() {
+        counters_.band_circumcenters = counters_.band_piece_splits = counters_.band_rejected = 0;
+        return tri::constrained_delaunay_2d(band, cdt);
+    };
+    try {
+        refine();
     } catch (const GeometryError& error) {
-        unsplittable = true;
         warnings.push_back(std::string("quadtree: the band is not refined (a piece of its own "
                                        "segments could not be split: ") +
                            error.what() + ")");
+        return unrefined();
     }
     // A segment bent through a vertex within rounding of it (the constructor's and
     // split_constrained_edge's rule for ulp-wide gaps) may share a piece with another segment,
     // and the pieces would no longer tell the chains apart: then the band keeps its plain CDT.
-    if (unsplittable) {
-        counters_.band_circumcenters = counters_.band_piece_splits = counters_.band_rejected = 0;
-        return tri::constrained_delaunay_2d(band, cdt);
-    }
     const bool bent = ct.counters().edge_bends > 0;
     tri::Cdt2Result result = std::move(ct).take_result();
     if (bent || !result.warnings.empty()) {
         warnings.push_back(
             "quadtree: vertices within rounding of the band's segments; the band "
             "is not refined");
-        counters_.band_circumcenters = counters_.band_piece_splits = counters_.band_rejected = 0;
-        return tri::constrained_delaunay_2d(band, cdt);
+        return unrefined();
     }
     return result;
 }
