@@ -94,11 +94,13 @@ class Frontal final : public RestrictedDelaunay3 {
     // Boundary fitting's subfaces and subsegments over the size, by how far over (circumradius
     // or length / the bound), the largest first; encroached ones (the base's queues) go before
     // them. First come, first split, the order followed the recovered mesh's numbering: with
-    // the recovery's Delaunay numbered by seeds 1 to 6 the wing at size 0.08 took 9,940 to
-    // 11,681 subface splits and 2.6 to 13.4 s, its flattest tetrahedron 0.41 to 0.004 degrees
-    // after sliver removal; largest first, 9,346 to 9,356 splits, about 2 s and 5.6 to 6.7
-    // degrees (a split of the largest keeps the facet Delaunay more often: its centre is far
-    // from every vertex).
+    // the recovery's Delaunay numbered by seeds 2 and 3 the wing at size 0.08 never ended (flat
+    // subfaces of a facet not Delaunay there had their centres beyond a segment, which was
+    // split down to 2^-22); seed 1 took 10,064 subface splits and 2.8 s, the flattest
+    // tetrahedron 0.41 degrees after sliver removal (with the runaway stopped by a rule since
+    // withdrawn, seeds 1-6 ranged up to 11,681 splits, 13.4 s and 0.004 degrees). Largest
+    // first, seeds 1-6 take 9,346 to 9,356 splits, about 2 s and 5.6 to 6.7 degrees (a split
+    // of the largest keeps the facet Delaunay more often: its centre is far from every vertex).
     std::priority_queue<std::pair<double, Key3>> oversize_subfaces_;
     std::priority_queue<std::pair<double, std::uint64_t>> oversize_segments_;
 
