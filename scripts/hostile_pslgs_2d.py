@@ -92,13 +92,134 @@ def kind_ring(r):
         segs.append((4, 4 + n//2))
     return pts, segs
 
+def lattice_line(r, pts, segs, lo=-0.9, hi=0.9, steps=(2, 9)):
+    """A segment between two points of a dyadic lattice, with lattice points exactly on it (as
+    free vertices) and returns its endpoints' indices."""
+    m = 2 ** r.randint(3, 12)
+    k = r.randint(*steps)
+    dx, dy = r.randint(-5, 5), r.randint(-5, 5)
+    if dx == 0 and dy == 0:
+        dx = 1
+    span = max(abs(dx), abs(dy)) * k / m
+    if span >= hi - lo:
+        m *= 2 ** math.ceil(math.log2(span / (hi - lo)) + 1)
+    x0 = r.randint(math.ceil(lo * m), math.floor(hi * m))
+    y0 = r.randint(math.ceil(lo * m), math.floor(hi * m))
+    line = [((x0 + j * dx) / m, (y0 + j * dy) / m) for j in range(k + 1)]
+    if any(abs(c) >= 1 for q in line for c in q):
+        return None
+    a = len(pts)
+    pts.append(line[0])
+    pts.append(line[-1])
+    segs.append((a, a + 1))
+    for q in line[1:-1]:
+        if r.random() < 0.5:
+            pts.append(q)  # a free vertex exactly on the segment
+    return a, a + 1, line
+
+
+def kind_touch(r):
+    # exact touching: vertices exactly on segments, segments through vertices, collinear
+    # overlapping segments, T-junctions on the box's sides, a free vertex on a side, the
+    # box's diagonal through lattice vertices
+    pts, segs = [], []
+    box(pts, segs)
+    lines = [lattice_line(r, pts, segs) for _ in range(r.randint(1, 5))]
+    for made in lines:
+        if made is None or r.random() < 0.4:
+            continue
+        a, b, line = made
+        # a collinear segment overlapping this one, or one continuing it through a vertex
+        i, j = sorted(r.sample(range(len(line)), 2))
+        if (i, j) != (0, len(line) - 1):
+            k = len(pts)
+            pts += [line[i], line[j]]
+            segs.append((k, k + 1))
+    for _ in range(r.randint(0, 3)):
+        # a T-junction: a segment ending on a side of the box (no vertex there)
+        side = r.randrange(4)
+        t = r.randint(-15, 15) / 16
+        end = [(t, -1.0), (1.0, t), (t, 1.0), (-1.0, t)][side]
+        inner = [(t, -0.5), (0.5, t), (t, 0.5), (-0.5, t)][side]
+        if r.random() < 0.5:
+            inner = (inner[0] + r.uniform(-0.3, 0.3), inner[1] + r.uniform(-0.3, 0.3))
+        k = len(pts)
+        pts += [end, inner]
+        segs.append((k, k + 1))
+    if r.random() < 0.5:
+        pts.append((r.randint(-7, 7) / 8, 1.0))  # a free vertex on the top side
+    if r.random() < 0.3:
+        segs.append((0, 2))  # the diagonal, corner to corner
+        for j in range(1, r.randint(2, 6)):
+            pts.append((-1 + j / 4, -1 + j / 4))
+    return pts, segs
+
+
+def kind_hole(r):
+    # a hole (a square turned by a Pythagorean angle, exact corners) with segments running
+    # into and across it, free vertices inside it, on its sides and a hair outside
+    pts, segs = [], []
+    box(pts, segs)
+    c, s_ = r.choice([(1.0, 0.0), (0.6, 0.8), (0.8, 0.6), (5 / 13, 12 / 13), (12 / 13, 5 / 13)])
+    h = r.choice([0.125, 0.25, 0.375])
+    cx, cy = r.randint(-4, 4) / 16, r.randint(-4, 4) / 16
+    corners = [(cx + h * (x * c - y * s_), cy + h * (x * s_ + y * c))
+               for x, y in [(-1, -1), (1, -1), (1, 1), (-1, 1)]]
+    k = len(pts)
+    pts += corners
+    segs += [(k, k + 1), (k + 1, k + 2), (k + 2, k + 3), (k + 3, k)]
+    # the marker off the centre, which the segments below cross
+    holes = [(cx + r.uniform(-0.5, 0.5) * h, cy + r.uniform(-0.5, 0.5) * h)]
+    for _ in range(r.randint(0, 3)):
+        a = r.uniform(0, math.pi)
+        L = r.uniform(0.5, 0.9)
+        p = (cx - L * math.cos(a), cy - L * math.sin(a))
+        q = (cx + L * math.cos(a), cy + L * math.sin(a))
+        if max(abs(p[0]), abs(p[1]), abs(q[0]), abs(q[1])) < 1:
+            m = len(pts)
+            pts += [p, q]
+            segs.append((m, m + 1))
+    for _ in range(r.randint(0, 3)):
+        pts.append((cx + r.uniform(-0.5, 0.5) * h, cy + r.uniform(-0.5, 0.5) * h))  # inside
+    for _ in range(r.randint(0, 3)):
+        i = r.randrange(4)
+        t = r.randint(1, 7) / 8
+        a, b = corners[i], corners[(i + 1) % 4]
+        d = r.choice([0.0, 10 ** -r.uniform(6, 15)])
+        pts.append((a[0] + t * (b[0] - a[0]) + d * (cx - a[0]), a[1] + t * (b[1] - a[1]) + d * (cy - a[1])))
+    return pts, segs, holes
+
+
+def kind_thin(r):
+    # a comb: teeth of width 1e-2 to 1e-9 cut into the top of a rectangle, free vertices in
+    # the teeth and a hair from their sides
+    teeth = r.randint(1, 5)
+    width = [10 ** -r.uniform(2, 9) for _ in range(teeth)]
+    outline = [(-1.0, -1.0), (1.0, -1.0), (1.0, 0.0)]
+    free = []
+    xs = sorted(r.uniform(-0.9, 0.9) for _ in range(teeth))
+    for x, w in zip(reversed(xs), reversed(width)):
+        depth = r.uniform(0.1, 0.9)
+        outline += [(x + w, 0.0), (x + w, depth), (x, depth), (x, 0.0)]
+        for _ in range(r.randint(0, 2)):
+            free.append((x + w * r.uniform(0.1, 0.9), depth * r.uniform(0.1, 0.95)))
+    outline += [(-1.0, 0.0)]
+    clean = [outline[0]]
+    for q in outline[1:]:
+        if q != clean[-1]:
+            clean.append(q)
+    pts = clean + free
+    segs = [(i, (i + 1) % len(clean)) for i in range(len(clean))]
+    return pts, segs
+
+
 def kind_mix(r):
     p1, s1 = kind_cross(r)
     p2, s2 = kind_near(r)
     off = len(p1)
     return p1 + p2[4:], s1 + [(a + off - 4, b + off - 4) for a, b in s2[4:]]
 
-def write(path, pts, segs, e):
+def write(path, pts, segs, e, holes=()):
     with open(path, "w") as f:
         f.write(f"{len(pts)} 2 0 0\n")
         for i, (x, y) in enumerate(pts):
@@ -106,19 +227,25 @@ def write(path, pts, segs, e):
         f.write(f"{len(segs)} 0\n")
         for i, (a, b) in enumerate(segs):
             f.write(f"{i+1} {a+1} {b+1}\n")
-        f.write("0\n")
+        f.write(f"{len(holes)}\n")
+        for i, (x, y) in enumerate(holes):
+            f.write(f"{i+1} {math.ldexp(x, e)!r} {math.ldexp(y, e)!r}\n")
 
 
-def generate(out, seeds):
-    kinds = dict(cross=kind_cross, fan=kind_fan, near=kind_near, ring=kind_ring, mix=kind_mix)
+def generate(out, seeds, only=()):
+    kinds = dict(cross=kind_cross, fan=kind_fan, near=kind_near, ring=kind_ring, mix=kind_mix,
+                 touch=kind_touch, hole=kind_hole, thin=kind_thin)
     os.makedirs(out, exist_ok=True)
     for name, fn in kinds.items():
-        for s in range(seeds):
-            pts, segs = fn(random.Random(f"{name}{s}"))
+        if only and name not in only:
+            continue
+        for s in seeds:
+            made = fn(random.Random(f"{name}{s}"))
+            pts, segs, holes = made if len(made) == 3 else (*made, [])
             shuffled, renumbered = renumber(pts, segs, random.Random(f"{name}{s}p"))
             for e in (0, 600, -600):
-                write(f"{out}/{name}_{s}_s{e}.poly", pts, segs, e)
-                write(f"{out}/{name}p_{s}_s{e}.poly", shuffled, renumbered, e)
+                write(f"{out}/{name}_{s}_s{e}.poly", pts, segs, e, holes)
+                write(f"{out}/{name}p_{s}_s{e}.poly", shuffled, renumbered, e, holes)
 
 
 def renumber(pts, segs, r):
@@ -191,7 +318,10 @@ if __name__ == "__main__":
                                                                    "cli", "exactmesh")
         sys.exit(run(sys.argv[2], sys.argv[3].split(","), sys.argv[4] if len(sys.argv) > 4 else "",
                      exe))
-    if len(sys.argv) == 3:
-        generate(sys.argv[1], int(sys.argv[2]))
+    if len(sys.argv) in (3, 4):
+        # SEEDS: a count (0..N-1) or a range FIRST-LAST; KINDS: comma-separated, default all
+        first, _, last = sys.argv[2].partition("-")
+        seeds = range(int(first), int(last) + 1) if last else range(int(first))
+        generate(sys.argv[1], seeds, sys.argv[3].split(",") if len(sys.argv) == 4 else ())
         sys.exit(0)
     sys.exit(__doc__)

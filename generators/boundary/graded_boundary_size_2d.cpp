@@ -280,11 +280,19 @@ SizeFunction graded_size_from_boundary(const MeshDomain2& domain_of, double grad
         sizes.push_back(std::min(spacing.mean[v], spacing.shortest[v]));
     }
     const std::size_t sites = sizes.size();
+    // Sites 1024 times finer than others (a free vertex 1e-15 from a vertex on a segment):
+    // the size dips steeply there, and a boundary piece beside such a site is sampled
+    // adaptively, its elements estimated by their own sizes (SizeFunction::is_steep); counted
+    // by the smallest size, a piece 0.09 long beside a site 6e-15 fine asked for more than
+    // 2^30 pieces (min-max front), a domain for 1.7e9 triangles (advancing front Delaunay).
+    const auto [finest, coarsest] = std::minmax_element(sizes.begin(), sizes.end());
+    const bool steep = *finest < kFar * *coarsest;
     auto field = std::make_shared<const GradedSites>(std::move(xy), std::move(sizes), gradation);
     std::ostringstream description;
     description << "graded from the boundary: " << sites << " vertices, gradation " << gradation;
-    return SizeFunction::analytic([field](double x, double y) { return (*field)(x, y); },
-                                  description.str());
+    SizeFunction graded = SizeFunction::analytic(
+        [field](double x, double y) { return (*field)(x, y); }, description.str());
+    return steep ? graded.marked_steep() : graded;
 }
 
 }  // namespace exactmesh::generators

@@ -56,7 +56,7 @@ double checked_size(const SizeFunction& size, double x, double y) {
 /// of its constrained Delaunay triangulation split in four until its edges are below 8 times
 /// the smallest size sampled at its corners and centroid, at most 8 levels and 2^18 samples in
 /// all (then the smallest sampled size stands for the rest: an overestimate; for a steep size,
-/// SizeFunction::is_steep, the centroid's). For the point budget, not a decision.
+/// SizeFunction::is_steep, the third smallest). For the point budget, not a decision.
 double estimated_elements(const tri::Triangulation2& mesh, const SizeFunction& size) {
     constexpr double kEquilateral = 0.4330127018922193;  // sqrt(3) / 4
     struct Piece {
@@ -78,8 +78,10 @@ double estimated_elements(const tri::Triangulation2& mesh, const SizeFunction& s
             stack.pop_back();
             const auto& p = piece.p;
             const double cx = (p[0] + p[2] + p[4]) / 3, cy = (p[1] + p[3] + p[5]) / 3;
-            double h =
-                std::min({size(cx, cy), size(p[0], p[1]), size(p[2], p[3]), size(p[4], p[5])});
+            std::array<double, 4> sampled = {size(cx, cy), size(p[0], p[1]), size(p[2], p[3]),
+                                             size(p[4], p[5])};
+            std::sort(sampled.begin(), sampled.end());
+            double h = sampled[0];
             samples += 4;
             if (!(h > 0)) return kInfinity;
             const double longest = std::max({std::hypot(p[2] - p[0], p[3] - p[1]),
@@ -87,12 +89,15 @@ double estimated_elements(const tri::Triangulation2& mesh, const SizeFunction& s
                                              std::hypot(p[0] - p[4], p[1] - p[5])});
             if (piece.depth == 8 || longest <= 8 * h || !std::isfinite(h) ||
                 samples > (std::uint64_t{1} << 18)) {
-                // A piece stopped by a limit, not by its size, counts at its centroid's size
-                // when the size is steep (graded down to a fine feature at one corner: the
-                // smallest sample there made a free vertex 1e-12 off a segment ask for 7e18
-                // triangles; a graded dip of that depth needs a few hundred).
-                if (size.is_steep() && !(longest <= 8 * h) && std::isfinite(h))
-                    h = std::max(h, size(cx, cy));
+                // A piece stopped by a limit, not by its size, counts at its third smallest
+                // sample when the size is steep (graded down to a fine feature at one point,
+                // which at most two samples come near: a corner, and the centroid of a sliver
+                // piece whose middle corner it is). The smallest made a free vertex 1e-12 off a
+                // segment ask for 7e18 triangles; the centroid, a vertex 1e-17 off a hole's side
+                // (sliver pieces along the side, centred on it) for 1.7e9 and 4.3e9; a graded
+                // dip of that depth needs a few hundred. An underestimate near such a feature,
+                // which the budget's slack (100,000 points) covers.
+                if (size.is_steep() && !(longest <= 8 * h) && std::isfinite(h)) h = sampled[2];
                 // The area in units of h squared (no overflow or underflow).
                 const double area = 0.5 * std::fabs((p[2] - p[0]) / h * ((p[5] - p[1]) / h) -
                                                     (p[3] - p[1]) / h * ((p[4] - p[0]) / h));

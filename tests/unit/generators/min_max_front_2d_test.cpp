@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "base/errors.hpp"
+#include "generators/boundary/graded_boundary_size_2d.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/mesh_2d/mesh_generators_2d.hpp"
@@ -262,6 +263,71 @@ TEST(MinMaxFront2d, AStalledFrontIsClosedWhateverTheNumbering) {
     }
     EXPECT_NEAR(static_cast<double>(counts[0]), static_cast<double>(counts[1]),
                 0.05 * static_cast<double>(counts[0]));
+}
+
+TEST(MinMaxFront2d, AVertexBesideOneOnAHoleSideGradesTheDefaultSize) {
+    // The hostile campaign's hole_20: a box, a square hole, two free segments across it, a free
+    // vertex exactly on the hole's right side and another 6e-15 from it. The size graded from
+    // the boundary dips to 6e-15 there; the boundary's discretization counted the side's piece
+    // (0.09 long) by that smallest size and refused the default size (more than 2^30 pieces).
+    // The dip marks the size steep: sampled adaptively, the piece takes a few dozen points.
+    const Domain box_with_hole{{-1,
+                                -1,
+                                1,
+                                -1,
+                                1,
+                                1,
+                                -1,
+                                1,
+                                -0.5,
+                                -0.25,
+                                0.25,
+                                -0.25,
+                                0.25,
+                                0.5,
+                                -0.5,
+                                0.5,
+                                0.5306302961950604,
+                                -0.3237048612576066,
+                                -0.7806302961950604,
+                                0.5737048612576066,
+                                -0.6092798606467141,
+                                -0.24264299028140157,
+                                0.35927986064671413,
+                                0.49264299028140157,
+                                -0.057400670454267805,
+                                -0.006209766132469013,
+                                0.05792321165913367,
+                                0.06710669582287183,
+                                0.249999999999964,
+                                0.031250000000036006,
+                                0.24999999999999356,
+                                -0.15624999999999356,
+                                0.25,
+                                -0.15625},
+                               {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4, 8, 9, 10, 11},
+                               {-0.125, 0.125},
+                               {}};
+    EXPECT_TRUE(gen::graded_size_from_boundary(gen::MeshDomain2(box_with_hole.pslg())).is_steep());
+    const Domain plain{{box_with_hole.xy.begin(), box_with_hole.xy.begin() + 16},
+                       {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4},
+                       box_with_hole.holes,
+                       {}};
+    EXPECT_FALSE(gen::graded_size_from_boundary(gen::MeshDomain2(plain.pslg())).is_steep());
+    std::size_t triangles = 0;
+    for (const int k : {0, 600, -600}) {
+        const auto scaled = [k](std::vector<double> c) {
+            for (double& x : c) x = std::ldexp(x, k);
+            return c;
+        };
+        const Domain domain{
+            scaled(box_with_hole.xy), box_with_hole.segments, scaled(box_with_hole.holes), {}};
+        const gen::MinMaxFrontResult2 r = run(domain, gen::MinMaxFrontOptions2{});
+        expect_valid(domain, r);
+        if (k == 0) triangles = r.mesh.mesh.triangle_count();
+        EXPECT_EQ(r.mesh.mesh.triangle_count(), triangles) << k;
+    }
+    EXPECT_LT(triangles, 20000u);
 }
 
 TEST(MinMaxFront2d, ScaledDomainGivesTheSameMeshScaled) {
