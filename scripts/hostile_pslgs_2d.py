@@ -2,14 +2,19 @@
 """Hostile 2D PSLGs and a campaign over them (issue 11's hostile inputs; the figures in the
 README's known gaps, "Narrow wedges").
 
-  scripts/hostile_pslgs_2d.py DIR SEEDS
+  scripts/hostile_pslgs_2d.py DIR SEEDS [KINDS]
       writes DIR/<kind>_<seed>_s<e>.poly for the kinds cross (long segments crossing at generic
       points, some 1e-2 to 1e-15 rad from parallel), fan (segments from one vertex 1e-1 to
       1e-10 rad apart), near (free vertices 1e-3 to 1e-15 from a segment and from each other),
       ring (near-cocircular free vertices, a chord) and mix (cross and near together), in a
       box, each at 2^0, 2^600 and 2^-600 (the same bits scaled), and each also renumbered
       (<kind>p_<seed>_s<e>.poly: the vertices in a shuffled order, the segments shuffled and
-      some reversed; the same domain). Seeded by kind and seed.
+      some reversed; the same domain). Seeded by kind and seed. More kinds: touch (vertices
+      exactly on segments on a dyadic lattice, collinear overlapping segments, T-junctions on
+      the box's sides), hole (a square hole turned by a Pythagorean angle, segments across it,
+      vertices on and a hair off its sides, a hole point) and thin (a comb of fingers 1e-2 to
+      1e-9 wide with free vertices in them). SEEDS: a count N (seeds 0..N-1) or a range
+      FIRST-LAST; KINDS: a comma-separated list (default: all).
   scripts/hostile_pslgs_2d.py --run DIR GENERATORS [REGEX] [EXACTMESH]
       meshes every DIR/*.poly (matching REGEX) with each of the comma-separated generators
       (`exactmesh mesh --generator G`), checks each mesh with `exactmesh check` (--conforming
