@@ -15,6 +15,7 @@
 #include <numbers>
 #include <numeric>
 #include <optional>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -536,6 +537,12 @@ void QuadtreeMesher::split_pieces() {
     for (std::size_t e = 0; 2 * e + 1 < boundary_.front.size(); ++e)
         directed.insert((std::uint64_t{boundary_.front[2 * e]} << 32) | boundary_.front[2 * e + 1]);
     std::vector<std::vector<VertIdx>> chains(boundary_.piece_segment.size());
+    // A midpoint on a point the boundary has (a free vertex 1e-17 off a hole's side, exactly
+    // halfway between the split points the adaptive sampling put around it symmetrically)
+    // would be a second vertex there: the band's CDT found the duplicate and the mesh failed.
+    std::set<std::pair<double, double>> points;
+    for (std::size_t v = 0; 2 * v + 1 < boundary_.xy.size(); ++v)
+        points.emplace(boundary_.xy[2 * v], boundary_.xy[2 * v + 1]);
     bool any = false;
     for (std::size_t p = 0; p < chains.size(); ++p) {
         if (!bordering_[p]) continue;
@@ -560,8 +567,7 @@ void QuadtreeMesher::split_pieces() {
                 &boundary_.xy[2 * std::size_t{pslg_.segments[2 * std::size_t{segment} + 1]}]);
             const double m[2] = {chained ? (*chained)[0] : s.a[0],
                                  chained ? (*chained)[1] : s.a[1]};
-            const bool splittable = chained && !(m[0] == s.a[0] && m[1] == s.a[1]) &&
-                                    !(m[0] == s.b[0] && m[1] == s.b[1]);
+            const bool splittable = chained && !points.count({m[0], m[1]});
             // The smallest leaf a quarter of the piece's length into the domain from its ends
             // and midpoint (small leaves outside the domain do not count).
             const double nx = -0.25 * (s.b[1] - s.a[1]), ny = 0.25 * (s.b[0] - s.a[0]);
@@ -576,6 +582,7 @@ void QuadtreeMesher::split_pieces() {
             }
             const auto mid = static_cast<VertIdx>(boundary_.xy.size() / 2);
             boundary_.xy.insert(boundary_.xy.end(), {m[0], m[1]});
+            points.emplace(m[0], m[1]);
             ++counters_.piece_splits;
             any = true;
             stack.push_back({mid, b});

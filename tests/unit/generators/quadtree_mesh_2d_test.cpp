@@ -20,6 +20,7 @@
 
 #include "base/errors.hpp"
 #include "generators/boundary/graded_boundary_size_2d.hpp"
+#include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/quadtree_mesh_2d.hpp"
@@ -230,6 +231,74 @@ TEST(Generators_Quadtree2, AnUnsplittableBandPieceLeavesTheBandUnrefined) {
             EXPECT_NE(result.mesh.warnings.back().find("the band is not refined"),
                       std::string::npos)
                 << what << ": " << result.mesh.warnings.back();
+            const Meshed m = em::testing::check_generated_mesh(std::move(result), in, options.size,
+                                                               false, false);
+            EXPECT_TRUE(m.check.ok) << what << ": " << m.check.problem;
+        }
+    }
+}
+
+TEST(Generators_Quadtree2, NoBoundaryPieceIsSplitOnAVertex) {
+    // A hostile campaign's hole_17: a square hole turned by (0.6, 0.8) in a box, three free
+    // vertices computed on its sides (1e-17 off them, in the domain), at the size the command
+    // uses by default. The boundary's adaptive sampling put split points symmetrically around
+    // one of them, the quadtree's halving of that piece put its midpoint exactly on the vertex,
+    // and the band's CDT found the duplicate: the mesh failed ("needs new vertices on its
+    // segments (1 duplicates ...)"), in both numberings and at every scale. A midpoint on a
+    // boundary point is not taken.
+    const std::vector<double> xy = {-1,
+                                    -1,
+                                    1,
+                                    -1,
+                                    1,
+                                    1,
+                                    -1,
+                                    1,
+                                    0.19230769230769232,
+                                    -0.28846153846153844,
+                                    0.28846153846153844,
+                                    -0.05769230769230768,
+                                    0.05769230769230768,
+                                    0.038461538461538464,
+                                    -0.038461538461538464,
+                                    -0.19230769230769232,
+                                    0.10576923076923078,
+                                    -0.25240384615384615,
+                                    0.2019230769230769,
+                                    -0.021634615384615377,
+                                    0.08653846153846154,
+                                    0.026442307692307696};
+    const std::vector<double> hole = {0.16014887825376675, -0.14817677739189117};
+    for (const bool reversed : {false, true}) {
+        for (const int exponent : {0, 600, -600}) {
+            Input in;
+            const std::size_t n = xy.size() / 2;
+            for (std::size_t i = 0; i < n; ++i) {
+                const std::size_t v = reversed ? n - 1 - i : i;
+                in.xy.push_back(std::ldexp(xy[2 * v], exponent));
+                in.xy.push_back(std::ldexp(xy[2 * v + 1], exponent));
+            }
+            for (const double c : hole) in.holes.push_back(std::ldexp(c, exponent));
+            const auto vertex = [&](std::uint32_t v) {
+                return reversed ? static_cast<std::uint32_t>(n - 1 - v) : v;
+            };
+            for (const auto& [a, b] : {std::pair{0u, 1u},
+                                       {1u, 2u},
+                                       {2u, 3u},
+                                       {3u, 0u},
+                                       {4u, 5u},
+                                       {5u, 6u},
+                                       {6u, 7u},
+                                       {7u, 4u}})
+                in.segments.insert(in.segments.end(), {vertex(a), vertex(b)});
+            const gen::MeshDomain2 domain(in.pslg());
+            gen::QuadtreeOptions2 options;
+            options.size =
+                gen::graded_to_fine_features(domain, gen::graded_size_from_boundary(domain));
+            const std::string what = std::string(reversed ? "reversed" : "as drawn") + " at 2^" +
+                                     std::to_string(exponent);
+            gen::QuadtreeResult2 result;
+            ASSERT_NO_THROW(result = gen::quadtree_mesh_2d(in.pslg(), options)) << what;
             const Meshed m = em::testing::check_generated_mesh(std::move(result), in, options.size,
                                                                false, false);
             EXPECT_TRUE(m.check.ok) << what << ": " << m.check.problem;
