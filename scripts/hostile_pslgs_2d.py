@@ -13,7 +13,9 @@ README's known gaps, "Narrow wedges").
       exactly on segments on a dyadic lattice, collinear overlapping segments, T-junctions on
       the box's sides), hole (a square hole turned by a Pythagorean angle, segments across it,
       vertices on and a hair off its sides, a hole point) and thin (a comb of fingers 1e-2 to
-      1e-9 wide with free vertices in them). SEEDS: a count N (seeds 0..N-1) or a range
+      1e-9 wide with free vertices in them), odd (free vertices outside the box, a hair and
+      1e6 away, in a hole, on its hole point, on a segment's line beyond its ends, on the box's
+      corners and sides, duplicated, at -0.0). SEEDS: a count N (seeds 0..N-1) or a range
       FIRST-LAST; KINDS: a comma-separated list (default: all).
   scripts/hostile_pslgs_2d.py --run DIR GENERATORS [REGEX] [EXACTMESH]
       meshes every DIR/*.poly (matching REGEX) with each of the comma-separated generators
@@ -218,6 +220,40 @@ def kind_thin(r):
     return pts, segs
 
 
+def kind_odd(r):
+    # free vertices in odd places: outside the box (a hair and far), in a hole, on a hole
+    # point, on a segment's line beyond its end, on the box's corners and sides (duplicates),
+    # duplicated among themselves, at the origin as -0.0
+    pts, segs = [], []
+    box(pts, segs)
+    holes = []
+    if r.random() < 0.5:
+        k = len(pts)
+        pts += [(-0.5, -0.5), (0.0, -0.5), (0.0, 0.0), (-0.5, 0.0)]
+        segs += [(k, k + 1), (k + 1, k + 2), (k + 2, k + 3), (k + 3, k)]
+        holes.append((-0.3, -0.2))
+        pts.append((-0.3, -0.2))  # on the hole point
+        pts.append((-0.25, -0.25))  # inside the hole
+        pts.append((-0.5, -0.25 + 10 ** -r.uniform(6, 15)))  # a hair off the hole's side
+    a = (r.uniform(-0.8, 0.8), r.uniform(0.1, 0.8))
+    b = (r.uniform(-0.8, 0.8), r.uniform(0.1, 0.8))
+    k = len(pts)
+    pts += [a, b]
+    segs.append((k, k + 1))
+    for t in (2.0, -1.0, 1.5):  # on the segment's line, beyond its ends (rounded)
+        q = (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+        if max(abs(q[0]), abs(q[1])) < 1:
+            pts.append(q)
+    pts.append((1.0 + 10 ** -r.uniform(6, 15), r.uniform(-0.9, 0.9)))  # a hair outside
+    pts.append((r.choice([-1, 1]) * 1e6, r.uniform(-1e6, 1e6)))  # far outside
+    pts.append(r.choice([(-1.0, -1.0), (1.0, 1.0)]))  # a corner again
+    pts.append((r.randint(-3, 3) / 4, -1.0))  # on the bottom side
+    q = (r.uniform(-0.9, 0.9), r.uniform(-0.9, 0.0))
+    pts += [q, q]  # duplicated free vertices
+    pts.append((-0.0, -0.0))
+    return pts, segs, holes
+
+
 def kind_mix(r):
     p1, s1 = kind_cross(r)
     p2, s2 = kind_near(r)
@@ -239,7 +275,7 @@ def write(path, pts, segs, e, holes=()):
 
 def generate(out, seeds, only=()):
     kinds = dict(cross=kind_cross, fan=kind_fan, near=kind_near, ring=kind_ring, mix=kind_mix,
-                 touch=kind_touch, hole=kind_hole, thin=kind_thin)
+                 touch=kind_touch, hole=kind_hole, thin=kind_thin, odd=kind_odd)
     os.makedirs(out, exist_ok=True)
     for name, fn in kinds.items():
         if only and name not in only:
