@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -242,6 +243,43 @@ TEST_F(Issue11, issue_11_hole_on_segment_or_vertex_is_an_error) {
                                                free_vertex.holes, free_vertex.regions},
                                      options);
     EXPECT_TRUE(hole_everywhere.mesh.triangles.empty());
+}
+
+// A hole point exactly on a segment but off its pieces (the segment bent at a crossing's
+// rounded point): the hostile campaign's hole_5, two segments through the hole crossing at a
+// small angle, the hole point at the first one's exact midpoint, 1e-17 from the rounded
+// crossing. The domain's CDT removed a sliver beside the crossing (the whole box meshed by cdt,
+// the quadtree and the advancing fronts), the generators that split the pieces again removed
+// a wedge of the hole (refinement, frontal, metric) or failed their check (min-max front).
+// Now every one refuses it, in either order of the segments, at 2^0 and 2^+-600.
+TEST_F(Issue11, issue_11_hole_on_a_segment_off_its_pieces_is_an_error) {
+    for (const int e : {0, 600, -600}) {
+        const auto at = [e](double c) { return std::ldexp(c, e); };
+        std::vector<double> xy = {-1, -1, 1, -1, 1, 1, -1, 1};
+        for (const double c :
+             {0.7944171943358391, -0.30019892669054143, -0.7944171943358391, 0.050198926690541434,
+              0.8150566882066549, -0.3349193383726563, -0.8150566882066549, 0.08491933837265633})
+            xy.push_back(c);
+        for (double& c : xy) c = at(c);
+        const std::vector<double> hole = {0.0, at(-0.125)};
+        for (const bool swapped : {false, true}) {
+            std::vector<tri::VertIdx> segments = {0, 1, 1, 2, 2, 3, 3, 0};
+            const std::vector<tri::VertIdx> crossing = swapped
+                                                           ? std::vector<tri::VertIdx>{6, 7, 4, 5}
+                                                           : std::vector<tri::VertIdx>{4, 5, 6, 7};
+            segments.insert(segments.end(), crossing.begin(), crossing.end());
+            const std::string segment = swapped ? "segment 6" : "segment 5";
+            tri::Cdt2Options options;
+            options.first_index = 1;
+            try {
+                tri::constrained_delaunay_2d(tri::Pslg{xy, segments, hole, {}}, options);
+                ADD_FAILURE() << "accepted at 2^" << e;
+            } catch (const tri::AmbiguousMarkPoint& error) {
+                EXPECT_NE(std::string(error.what()).find("lies on " + segment), std::string::npos)
+                    << error.what();
+            }
+        }
+    }
 }
 
 // Messages at extreme scales printed std::to_string's 300-digit fixed point, "inf" or "-nan".

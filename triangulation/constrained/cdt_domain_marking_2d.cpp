@@ -101,6 +101,38 @@ void require_off_boundary(CdtState& cdt, AmbiguousMarkPoint::Kind kind, std::siz
                 kind, index);
         }
     }
+    // On an input segment itself, off its pieces: a segment split where another crosses it
+    // bends by the crossing's rounding, and a point on the segment between the pieces and the
+    // line (a hole point at two crossing segments' midpoints, 1e-17 from the rounded crossing)
+    // marked a sliver there, which generators that split the pieces again located elsewhere:
+    // some meshed the whole box, others removed a wedge. Such a point lies in a triangle
+    // with a corner on one of the segment's pieces: the segments of the constrained edges of
+    // the triangles around t's corners are tested as given (exact orient2d and bounding box).
+    const auto on_input_segment = [&](std::uint32_t s) {
+        const double* pa = &cdt.pslg.xy[2 * std::size_t{cdt.pslg.segments[2 * std::size_t{s}]}];
+        const double* pb = &cdt.pslg.xy[2 * std::size_t{cdt.pslg.segments[2 * std::size_t{s} + 1]}];
+        return x >= std::min(pa[0], pb[0]) && x <= std::max(pa[0], pb[0]) &&
+               y >= std::min(pa[1], pb[1]) && y <= std::max(pa[1], pb[1]) &&
+               predicates::orient2d(pa, pb, point) == Sign::Zero;
+    };
+    for (unsigned c = 0; c < 3; ++c) {
+        const VertIdx v = cdt.mesh.tv[3 * t + c];
+        if (v == kInfinite) continue;
+        const EdgeIdx first = cdt.vertex_edge[v];
+        EdgeIdx around = first;
+        do {
+            for (unsigned k = 0; k < 3; ++k) {
+                const std::uint32_t s = cdt.segment_of[3 * triangle_of(around) + k];
+                if (s != kNone && s < cdt.pslg.segments.size() / 2 && on_input_segment(s)) {
+                    throw AmbiguousMarkPoint(name + " lies on segment " +
+                                                 std::to_string(s + cdt.options.first_index) +
+                                                 ": " + consequence,
+                                             kind, index);
+                }
+            }
+            around = cdt.mesh.twin[prev_edge(around)];
+        } while (around != first);
+    }
 }
 
 void remove_exterior_and_holes(CdtState& cdt) {
