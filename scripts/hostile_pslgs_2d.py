@@ -23,7 +23,8 @@ README's known gaps, "Narrow wedges").
       for all but delaunay-refinement), prints a line per run, a SCALE MISMATCH line when
       one input's triangle counts (or exit codes) differ between its scales, and a NUMBERING
       MISMATCH line when an input and its renumbered copy end differently (one meshed, one
-      refused; triangle counts may differ). Exit 1 when a check fails, a run exits with
+      refused; triangle counts may differ), and an AREA MISMATCH line when the generators'
+      meshes of one input at 2^0 cover different areas (beyond 1e-9 relative). Exit 1 when a check fails, a run exits with
       neither 0 nor 2 (a clear refusal), or a scale or numbering mismatches.
 """
 import collections
@@ -303,6 +304,21 @@ def renumber(pts, segs, r):
     return [pts[old] for old in order], renumbered
 
 
+def mesh_area(ele):
+    """The area of a mesh written as ELE and the .node beside it (doubles: for the inputs at
+    2^0, whose areas cannot overflow)."""
+    with open(ele[:-4] + ".node") as handle:
+        rows = [line.split() for line in handle if line.strip() and not line.startswith("#")]
+    xy = {int(r[0]): (float(r[1]), float(r[2])) for r in rows[1:1 + int(rows[0][0])]}
+    total = 0.0
+    with open(ele) as handle:
+        rows = [line.split() for line in handle if line.strip() and not line.startswith("#")]
+    for r in rows[1:1 + int(rows[0][0])]:
+        (ax, ay), (bx, by), (cx, cy) = (xy[int(v)] for v in r[1:4])
+        total += 0.5 * ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+    return total
+
+
 def run(directory, generators, pattern, exe):
     files = sorted(glob.glob(directory + "/*.poly"))
     if pattern:
@@ -310,6 +326,7 @@ def run(directory, generators, pattern, exe):
     out = os.path.join(directory, "out")
     os.makedirs(out, exist_ok=True)
     outcome = collections.defaultdict(dict)
+    areas = collections.defaultdict(dict)  # input at 2^0 -> generator -> meshed area
     failed = False
     for f in files:
         stem = os.path.basename(f)[:-5]
@@ -333,6 +350,8 @@ def run(directory, generators, pattern, exe):
                                    timeout=300)
                 check = "ok" if c.returncode == 0 else "CHECK FAILED " + (c.stdout + c.stderr).strip()[:150]
             outcome[(base, g)][scale] = (rc, triangles)
+            if rc == 0 and check == "ok" and scale == "0":
+                areas[base][g] = mesh_area(o)
             bad = not ((rc == 0 and check == "ok") or rc == 2)
             failed |= bad
             print(f"{stem:24s} {g:26s} rc={rc} t={dt:6.2f} triangles={triangles} {check} "
@@ -349,6 +368,14 @@ def run(directory, generators, pattern, exe):
                     failed = True
                     print("NUMBERING MISMATCH", base, g, scale, "exit", rc, "renumbered exit",
                           twin[scale][0], flush=True)
+    # Every generator meshes the same domain: areas equal up to rounding (a hole point decided
+    # differently by two generators removed a wedge in one and nothing in the other).
+    for base, by_generator in sorted(areas.items()):
+        values = list(by_generator.values())
+        if max(values) - min(values) > 1e-9 * max(abs(v) for v in values):
+            failed = True
+            print("AREA MISMATCH", base, {g: round(a, 12) for g, a in by_generator.items()},
+                  flush=True)
     return 1 if failed else 0
 
 

@@ -13,9 +13,11 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/errors.hpp"
@@ -190,6 +192,27 @@ TEST(Generators_Quadtree2, DegenerateInputs) {
     }
 }
 
+/// A hostile campaign's input: `xy`, the segments between the given vertex pairs and the hole
+/// points, its vertices numbered as drawn or in reverse, scaled by 2^exponent.
+Input numbered_and_scaled(const std::vector<double>& xy,
+                          std::initializer_list<std::pair<std::uint32_t, std::uint32_t>> segments,
+                          const std::vector<double>& holes, bool reversed, int exponent) {
+    Input in;
+    const std::size_t n = xy.size() / 2;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t v = reversed ? n - 1 - i : i;
+        in.xy.push_back(std::ldexp(xy[2 * v], exponent));
+        in.xy.push_back(std::ldexp(xy[2 * v + 1], exponent));
+    }
+    for (const double c : holes) in.holes.push_back(std::ldexp(c, exponent));
+    const auto vertex = [&](std::uint32_t v) {
+        return reversed ? static_cast<std::uint32_t>(n - 1 - v) : v;
+    };
+    for (const auto& [a, b] : segments)
+        in.segments.insert(in.segments.end(), {vertex(a), vertex(b)});
+    return in;
+}
+
 TEST(Generators_Quadtree2, AnUnsplittableBandPieceLeavesTheBandUnrefined) {
     // A hostile campaign's near_36: free vertices 1e-3 to 1e-15 from a segment, in a box, at
     // the input's own graded spacing. The band's refinement met a piece 3.6e-14 long whose
@@ -208,18 +231,8 @@ TEST(Generators_Quadtree2, AnUnsplittableBandPieceLeavesTheBandUnrefined) {
          -0.07249910274450089, 0.09405009238244655,  -0.07242749501253977,  0.09405009772615135});
     for (const bool reversed : {false, true}) {
         for (const int exponent : {0, 600, -600}) {
-            Input in;
-            const std::size_t n = xy.size() / 2;
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::size_t v = reversed ? n - 1 - i : i;
-                in.xy.push_back(std::ldexp(xy[2 * v], exponent));
-                in.xy.push_back(std::ldexp(xy[2 * v + 1], exponent));
-            }
-            const auto vertex = [&](std::uint32_t v) {
-                return reversed ? static_cast<std::uint32_t>(n - 1 - v) : v;
-            };
-            for (const auto& [a, b] : {std::pair{0u, 1u}, {1u, 2u}, {2u, 3u}, {3u, 0u}, {4u, 5u}})
-                in.segments.insert(in.segments.end(), {vertex(a), vertex(b)});
+            const Input in = numbered_and_scaled(xy, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}}, {},
+                                                 reversed, exponent);
             gen::QuadtreeOptions2 options;
             options.size = gen::graded_size_from_boundary(in.pslg());
             const std::string what = std::string(reversed ? "reversed" : "as drawn") + " at 2^" +
@@ -271,26 +284,9 @@ TEST(Generators_Quadtree2, NoBoundaryPieceIsSplitOnAVertex) {
     const std::vector<double> hole = {0.16014887825376675, -0.14817677739189117};
     for (const bool reversed : {false, true}) {
         for (const int exponent : {0, 600, -600}) {
-            Input in;
-            const std::size_t n = xy.size() / 2;
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::size_t v = reversed ? n - 1 - i : i;
-                in.xy.push_back(std::ldexp(xy[2 * v], exponent));
-                in.xy.push_back(std::ldexp(xy[2 * v + 1], exponent));
-            }
-            for (const double c : hole) in.holes.push_back(std::ldexp(c, exponent));
-            const auto vertex = [&](std::uint32_t v) {
-                return reversed ? static_cast<std::uint32_t>(n - 1 - v) : v;
-            };
-            for (const auto& [a, b] : {std::pair{0u, 1u},
-                                       {1u, 2u},
-                                       {2u, 3u},
-                                       {3u, 0u},
-                                       {4u, 5u},
-                                       {5u, 6u},
-                                       {6u, 7u},
-                                       {7u, 4u}})
-                in.segments.insert(in.segments.end(), {vertex(a), vertex(b)});
+            const Input in = numbered_and_scaled(
+                xy, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}}, hole,
+                reversed, exponent);
             const gen::MeshDomain2 domain(in.pslg());
             gen::QuadtreeOptions2 options;
             options.size =
