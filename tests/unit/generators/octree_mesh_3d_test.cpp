@@ -216,6 +216,26 @@ TEST(Generators_OctreeMesh3d, FreeVerticesInsideAreBandVertices) {
     }
 }
 
+TEST(Generators_OctreeMesh3d, AFreeVertexFarOutsideLeavesTheTreeTheDomainsBox) {
+    // A hostile campaign's cube with a free vertex 1e6 above it: the octree's box held every
+    // vertex, and the size 0.25 asked for 6.4e7 leaves ("leaf budget exceeded at once") where
+    // the frontal generator and Delaunay refinement mesh it. The box is the facets' now: the
+    // same tree as without the vertex, which no generator keeps (it is outside the domain; the
+    // recovered mesh, and so the band's tetrahedra, differ a little: 638 against 656).
+    Plc3 plc = triangulation::box(1, 1, 1);
+    plc.xyz.insert(plc.xyz.end(), {0.625, 0.1875, 0.5625});
+    const OctreeMesh3Result inside =
+        mesh_and_check(plc, SizeFunction3::uniform(0.25), "cube with a free vertex");
+    plc.xyz.insert(plc.xyz.end(), {0.3125, 0.4375, 1e6});
+    const OctreeMesh3Result far =
+        mesh_and_check(plc, SizeFunction3::uniform(0.25), "cube with a free vertex far above");
+    EXPECT_EQ(far.counters.estimated_leaves, inside.counters.estimated_leaves);
+    EXPECT_EQ(far.counters.core_leaves, inside.counters.core_leaves);
+    EXPECT_NEAR(static_cast<double>(far.mesh.mesh.tet_count()),
+                static_cast<double>(inside.mesh.mesh.tet_count()),
+                0.1 * static_cast<double>(inside.mesh.mesh.tet_count()));
+}
+
 TEST(Generators_OctreeMesh3d, ScaledByPowersOfTwoGivesTheScaledMesh) {
     const double h = test_size(0.06, 0.065);
     const Plc3 plc = sample_domain_3d(SampleDomain3::BoxWithHole);
