@@ -271,6 +271,9 @@ TEST(MinMaxFront2d, AVertexBesideOneOnAHoleSideGradesTheDefaultSize) {
     // the boundary dips to 6e-15 there; the boundary's discretization counted the side's piece
     // (0.09 long) by that smallest size and refused the default size (more than 2^30 pieces).
     // The dip marks the size steep: sampled adaptively, the piece takes a few dozen points.
+    // (The campaign's hole point, the hole's centre, lies exactly on a segment across it: an
+    // ambiguous hole point, refused since; this one is off both, in the strip between them,
+    // and leaves the pair in the domain.)
     const Domain box_with_hole{{-1,
                                 -1,
                                 1,
@@ -306,7 +309,7 @@ TEST(MinMaxFront2d, AVertexBesideOneOnAHoleSideGradesTheDefaultSize) {
                                 0.25,
                                 -0.15625},
                                {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4, 8, 9, 10, 11},
-                               {-0.125, 0.125},
+                               {0.0, 0.2},
                                {}};
     EXPECT_TRUE(gen::graded_size_from_boundary(gen::MeshDomain2(box_with_hole.pslg())).is_steep());
     const Domain plain{{box_with_hole.xy.begin(), box_with_hole.xy.begin() + 16},
