@@ -220,16 +220,15 @@ class OctreeMesher {
         // vertex made one free vertex 1e6 above a unit cube ask for 6.4e7 leaves at size 0.25.
         const double inf = std::numeric_limits<double>::infinity();
         Point lo = {inf, inf, inf}, hi = {-inf, -inf, -inf};
-        for (const tri::Facet3& facet : plc_.facets) {
-            for (const std::vector<VertIdx>& polygon : facet.polygons) {
-                for (const VertIdx v : polygon) {
-                    for (std::size_t a = 0; a < 3; ++a) {
-                        lo[a] = std::min(lo[a], plc_.point(v)[a]);
-                        hi[a] = std::max(hi[a], plc_.point(v)[a]);
-                    }
-                }
+        const auto extend = [&](VertIdx v) {
+            for (std::size_t a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], plc_.point(v)[a]);
+                hi[a] = std::max(hi[a], plc_.point(v)[a]);
             }
-        }
+        };
+        for (const tri::Facet3& facet : plc_.facets)
+            for (const std::vector<VertIdx>& polygon : facet.polygons)
+                for (const VertIdx v : polygon) extend(v);
         result_.octree = Octree3(lo, hi);
         const std::uint64_t budget = options_.max_leaves ? options_.max_leaves : kDefaultMaxLeaves;
         // The estimate: the box's volume over h^3 (every leaf meeting the box has an edge of at
