@@ -12,8 +12,8 @@ README's known gaps, "Narrow wedges").
       some reversed; the same domain). Seeded by kind and seed. More kinds: touch (vertices
       exactly on segments on a dyadic lattice, collinear overlapping segments, T-junctions on
       the box's sides), hole (a square hole turned by a Pythagorean angle, segments across it,
-      vertices on and a hair off its sides, a hole point) and thin (a comb of fingers 1e-2 to
-      1e-9 wide with free vertices in them), odd (free vertices outside the box, a hair and
+      vertices on and a hair off its sides, a hole point), thin (a comb of fingers 1e-2 to
+      1e-9 wide with free vertices in them) and odd (free vertices outside the box, a hair and
       1e6 away, in a hole, on its hole point, on a segment's line beyond its ends, on the box's
       corners and sides, duplicated, at -0.0). SEEDS: a count N (seeds 0..N-1) or a range
       FIRST-LAST; KINDS: a comma-separated list (default: all).
@@ -24,8 +24,9 @@ README's known gaps, "Narrow wedges").
       one input's triangle counts (or exit codes) differ between its scales, and a NUMBERING
       MISMATCH line when an input and its renumbered copy end differently (one meshed, one
       refused; triangle counts may differ), and an AREA MISMATCH line when the generators'
-      meshes of one input at 2^0 cover different areas (beyond 1e-9 relative). Exit 1 when a check fails, a run exits with
-      neither 0 nor 2 (a clear refusal), or a scale or numbering mismatches.
+      meshes of one input at 2^0 cover different areas (beyond 1e-9 relative). Exit 1 when a
+      check fails, a run exits with neither 0 nor 2 (a clear refusal), or a scale, numbering or
+      area mismatches.
 """
 import collections
 import glob
@@ -101,8 +102,9 @@ def kind_ring(r):
     return pts, segs
 
 def lattice_line(r, pts, segs, lo=-0.9, hi=0.9, steps=(2, 9)):
-    """A segment between two points of a dyadic lattice, with lattice points exactly on it (as
-    free vertices) and returns its endpoints' indices."""
+    """Adds a segment between two points of a dyadic lattice and some lattice points exactly on
+    it (free vertices); returns its endpoints' indices and the lattice points along it, or None
+    (nothing added) when they would leave the box."""
     m = 2 ** r.randint(3, 12)
     k = r.randint(*steps)
     dx, dy = r.randint(-5, 5), r.randint(-5, 5)
