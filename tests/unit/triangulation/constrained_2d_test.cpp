@@ -381,6 +381,27 @@ TEST(Constrained2d, ConformingSplitsOfASubnormalSegmentPassTheCheck) {
     expect_valid(in, r, tri::SegmentRecovery::Conforming, true, "subnormal segment");
 }
 
+TEST(Constrained2d, ConformingCascadesOnTwoAxesFlipAFewEdgesPerSplit) {
+    // libFuzzer timeout (CI, 2026-12-07: over 150 s under ASan; 4.2 s without): segments along
+    // the x axis to 1.4e188 and along the y axis to 5.7e170 from a cluster of points 1e-307
+    // across at the origin, where both grade down 1,590 binades. Split depth-first, the y axis's
+    // 1,550 points came each below every earlier one, and each flipped the fan of x-axis points
+    // under it: 622,623 flips and 1.26 million incircle tests, nearly all in GMP, for 3,151
+    // splits. Split by bands of piece size, largest first, both cascades descend together
+    // (15,348 flips).
+    const Input in{{0x0.08c0000004008p-1022, 0x0.000000a000000p-1022, 0x1.0006363630000p+625,
+                    0x1.0400800000000p-975, 0x1.0000000000000p-863, 0x1.3000000000000p+567,
+                    0x1.0f0019ef1ad63p-1017, 0x0.0000003004000p-1022, 0x1.ffffba6000000p-1008,
+                    0x1.7000000400000p-1008},
+                   {0, 1, 0, 2, 2, 3, 3, 0, 4, 0},
+                   {},
+                   {}};
+    const auto r = build(in, tri::SegmentRecovery::Conforming);
+    expect_valid(in, r, tri::SegmentRecovery::Conforming, true, "two cascades");
+    EXPECT_GT(r.counters.conforming_splits, 3000u);  // the grading is needed: 1,590 binades
+    EXPECT_LT(r.counters.delaunay_flips, 8 * r.counters.conforming_splits);
+}
+
 TEST(Constrained2d, ConformingPieceBendsAtAVertexWithinRoundingOfItsSegment) {
     // Segment 1, (0, 2) - (2, 0), passes exactly through (1, 1), but segment 0, (0, 1.3) -
     // (3, 1.8), crosses it first at a rounded point, so its piece from there to (2, 0) misses
