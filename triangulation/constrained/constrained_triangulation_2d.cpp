@@ -603,7 +603,13 @@ bool try_split_at(CdtState& cdt, EdgeIdx e, double x, double y,
     const VertIdx a = cdt.mesh.origin(e), b = cdt.mesh.destination(e), c = cdt.apex(e),
                   d = cdt.apex(f);
     const VertIdx p = cdt.add_vertex(x, y);
-    if (cdt.core.same_point(p, a) || cdt.core.same_point(p, b)) {
+    // The pieces a - p - b must be a chain the check accepts (bend_candidate: p within rounding
+    // of the input segment, strictly between a and b along it). A point moved by ulps off a piece
+    // a few ulps long can land behind a or beyond b along the segment (fuzz_delaunay_refinement_2d,
+    // 2026-12-07: a 45-degree segment split down to pieces of 1-3 ulps at a corner whose
+    // chain then stepped back, and the check found it missing).
+    if (cdt.core.same_point(p, a) || cdt.core.same_point(p, b) ||
+        !bend_candidate(cdt, cdt.segment_of[e], a, b, p)) {
         cdt.remove_last_vertex();
         return false;
     }

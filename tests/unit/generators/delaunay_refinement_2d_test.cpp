@@ -443,6 +443,54 @@ TEST(Generators_DelaunayRefinement, TJunctionEndRoundedOffItsSegmentBendsTheSegm
     }
 }
 
+TEST(Generators_DelaunayRefinement, SplitPointMovedOffAnUlpShortPieceKeepsTheChainOrFails) {
+    // fuzz_delaunay_refinement_2d (2026-12-07): the triangle (0, 0), (1, 0), (0, 1) with its
+    // corner (1, 0) cut by a side 1e-323 long, a square inside across its diagonal, 21 degrees,
+    // size 1/8. The diagonal and the x axis meet at 45 degrees 1e-323 apart, so the refinement
+    // splits both down to pieces of 1-3 ulps near (1, 0); a split point moved by ulps off such a
+    // piece (split_constrained_edge) landed beyond the piece's far end along the diagonal, the
+    // chain stepped back, and the mesh failed its own check ("segment 2 is missing"). Moved
+    // points must now satisfy the chain rule. At 2^0 none does, and no vertex bends the piece:
+    // the feature is finer than doubles resolve at (1, 0), which the error says. At 2^600 the
+    // short side's end is no longer subnormal (constructions near it round differently) and
+    // the run stops at its point budget; at 2^-600 the short side underflows to a point. A
+    // clear error, or a mesh that passes the check; never a broken mesh.
+    const std::vector<double> xy = {0,
+                                    0,
+                                    1,
+                                    0,
+                                    1,
+                                    1e-323,
+                                    0,
+                                    1,
+                                    0.4,
+                                    0.4,
+                                    0.6,
+                                    0.399969482421875,
+                                    0.6,
+                                    0.6,
+                                    0.00022433996200561525,
+                                    0.5998779296875};
+    for (const int e : {0, 600}) {
+        Input in{xy, {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4}, {}, {}};
+        for (double& x : in.xy) x = std::ldexp(x, e);
+        gen::RefinementOptions2 options;
+        options.min_angle = 21;
+        options.size = gen::SizeFunction::uniform(std::ldexp(0.125, e));
+        options.max_steiner_points = 5000;
+        try {
+            const Refined r = refine(in, options, false);
+            EXPECT_TRUE(r.check.ok) << e << ": " << r.check.problem;
+        } catch (const em::GeometryError& error) {
+            const std::string what = error.what();
+            EXPECT_NE(what.find(e == 0 ? "finer than double precision resolves"
+                                       : "more than 5000 Steiner points"),
+                      std::string::npos)
+                << e << ": " << what;
+        }
+    }
+}
+
 TEST(Generators_DelaunayRefinement, SubnormalDomainWithASizeRefinesOrFailsClearly) {
     // fuzz_mesh_generators_2d (tests/data/fuzz/mesh_generators_2d_refinement_subnormal_box.bin):
     // a quadrilateral with its diagonals at coordinates up to 7.3e-304, size 2^-5 of that: the
