@@ -262,6 +262,8 @@ class QuadtreeMesher {
     void distribute_all();
     void split_pieces();
     void replace_pieces(std::vector<std::vector<VertIdx>>& chains);
+    void require_outer_pieces_outside(const std::vector<double>& xy,
+                                      const std::vector<VertIdx>& triangles) const;
     double leaf_side(double x, double y) const {
         return tree_.side(tree_.nodes[tree_.leaf_at(x, y)].level);
     }
@@ -593,6 +595,53 @@ void QuadtreeMesher::split_pieces() {
     if (boundary_.xy.size() / 2 > std::uint64_t{tri::kNone} / 4)
         throw InputError("quadtree: too many boundary points for 32-bit vertex numbers");
     replace_pieces(chains);
+}
+
+/// Every boundary piece without the domain on either side (a dangling segment outside it) is
+/// an edge of the mesh or leaves it alone at both ends, as check_constrained_delaunay_2d
+/// requires; else GeometryError. The band's CDT holds only the bordering pieces, so a
+/// dangling segment within rounding of the boundary is not among its constraints, and the
+/// boundary's rounded split points can fall on its far side: fuzz_mesh_generators_2d
+/// (2026-12-07), segments 1e-133 radians apart meeting at a vertex, one bordering the domain,
+/// the other outside it; a triangle at their common end overlapped the outer one.
+void QuadtreeMesher::require_outer_pieces_outside(const std::vector<double>& xy,
+                                                  const std::vector<VertIdx>& triangles) const {
+    std::unordered_map<VertIdx, std::vector<std::size_t>> triangles_at;  // outer pieces' ends
+    for (std::size_t p = 0; p < bordering_.size(); ++p) {
+        if (bordering_[p]) continue;
+        triangles_at.try_emplace(boundary_.pieces[2 * p]);
+        triangles_at.try_emplace(boundary_.pieces[2 * p + 1]);
+    }
+    if (triangles_at.empty()) return;
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        for (int k = 0; k < 3; ++k) {
+            const auto it = triangles_at.find(triangles[t + static_cast<std::size_t>(k)]);
+            if (it != triangles_at.end()) it->second.push_back(t);
+        }
+    }
+    auto point = [&](VertIdx v) { return &xy[2 * std::size_t{v}]; };
+    for (std::size_t p = 0; p < bordering_.size(); ++p) {
+        if (bordering_[p]) continue;
+        const VertIdx a = boundary_.pieces[2 * p], b = boundary_.pieces[2 * p + 1];
+        for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
+            for (const std::size_t t : triangles_at.at(from)) {
+                std::size_t k = 0;
+                while (triangles[t + k] != from) ++k;
+                const VertIdx x = triangles[t + (k + 1) % 3], y = triangles[t + (k + 2) % 3];
+                if (x == to || y == to) continue;  // an edge of the mesh
+                if (predicates::orient2d(point(from), point(x), point(to)) == Sign::Positive &&
+                    predicates::orient2d(point(from), point(y), point(to)) == Sign::Negative) {
+                    throw GeometryError(
+                        "quadtree: segment " +
+                        std::to_string(boundary_.piece_segment[p] + options_.cdt.first_index) +
+                        " lies outside the domain but within rounding of its boundary near " +
+                        format_point(point(from)) +
+                        ", and the boundary's rounded split points cross it (features finer "
+                        "than doubles resolve there)");
+                }
+            }
+        }
+    }
 }
 
 /// The boundary with chains[p] (vertices from one end of piece p to the other; empty: the piece
@@ -1081,6 +1130,7 @@ QuadtreeResult2 QuadtreeMesher::assemble() {
     counters_.band_triangles = band_cdt.mesh.triangle_count();
     counters_.band_flips = bc.delaunay_flips + bc.recovery_flips;
     for (const VertIdx v : band_cdt.mesh.triangles) triangles.push_back(band_vertex[v]);
+    require_outer_pieces_outside(xy, triangles);
 
     QuadtreeResult2 result;
     result.mesh = domain_mesh_result(boundary_, std::move(xy), std::move(triangles));

@@ -25,6 +25,7 @@
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/inputs/pslg_inputs.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quadtree_mesh_2d.hpp"
 #include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
@@ -421,6 +422,44 @@ TEST(Generators_Quadtree2, SliverFarThinnerThanTheSizeStopsAtTheAutomaticLeafBud
         ADD_FAILURE() << "the sliver was meshed";
     } catch (const em::InputError& e) {
         EXPECT_NE(std::string(e.what()).find("more than 65536 leaves"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(Generators_Quadtree2, OuterSegmentWithinRoundingOfTheBoundaryIsRefusedNotCrossed) {
+    // fuzz_mesh_generators_2d (2026-12-07; tests/data/fuzz/
+    // mesh_generators_2d_quadtree_outer_segment_crossed.bin): a sliver triangle bounded by
+    // segments 0, 1 and 3 and a dangling segment 2 outside it, 1e-133 radians from side 3 and
+    // meeting it at vertex 3. The band's CDT holds only the bordering pieces; a rounded split
+    // point of side 3 fell beyond segment 2, and the triangle at vertex 3 overlapped it: the
+    // mesh failed its check. The mesher now refuses such a mesh with the reason (the other
+    // generators mesh the input; refinement refuses it too, its pieces being unsplittable).
+    Input in;
+    in.xy = {0.0,
+             1.7765824089018436e-307,
+             1.7765824089018436e-307,
+             0.0,
+             -3.0065162379579438e-182,
+             -2.3534373682784387e-185,
+             2.3190164396397318e-52,
+             4.667261458398661e-62,
+             -2.3534373682784387e-185,
+             4.6672614583986525e-62};
+    in.segments = {1, 4, 4, 3, 2, 3, 3, 0};
+    // Through the registry, as the fuzz target and `exactmesh mesh` run it (its size grades to
+    // the input's fine features).
+    gen::MeshOptions2 options;
+    options.size = gen::SizeFunction::uniform(5.7975410990993295e-53);
+    try {
+        const tri::Cdt2Result r =
+            gen::find_mesh_generator_2d("quadtree").run(in.pslg(), options).mesh;
+        const auto report =
+            tri::check_conforming_mesh_2d(r.mesh, r.input_vertex_count, in.segments, r.pieces);
+        EXPECT_TRUE(report.ok) << report.problem;
+    } catch (const em::GeometryError& e) {
+        EXPECT_NE(std::string(e.what()).find("segment 2 lies outside the domain but within "
+                                             "rounding of its boundary"),
+                  std::string::npos)
             << e.what();
     }
 }
