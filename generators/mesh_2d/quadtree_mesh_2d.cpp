@@ -268,7 +268,8 @@ class QuadtreeMesher {
         return tree_.side(tree_.nodes[tree_.leaf_at(x, y)].level);
     }
     void classify();
-    tri::Cdt2Result triangulate_band(const tri::Pslg& band, std::uint32_t boundary_segments,
+    tri::Cdt2Result triangulate_band(const tri::Pslg& band,
+                                     const std::vector<std::uint32_t>& band_piece,
                                      const tri::Cdt2Options& cdt,
                                      std::vector<std::string>& warnings);
     QuadtreeResult2 assemble();
@@ -740,14 +741,18 @@ void QuadtreeMesher::classify() {
 /// The band's constrained Delaunay triangulation; with band_min_angle, then improved by
 /// Bowyer-Watson insertion of the circumcenters (correctly rounded) of its triangles with a
 /// smaller angle, each inserted only when it encroaches no constrained edge of its cavity
-/// (ConstrainedTriangulation2::insert_in_cavity): segments are never split, so the outline
-/// still matches the templates and the pieces the boundary. A budget of insertions (8 per band
-/// triangle) ends the pass with a warning (the mesh stays valid; some angles stay small).
+/// (ConstrainedTriangulation2::insert_in_cavity); a boundary piece one encroaches is halved
+/// instead, at a point on its input segment's chain (chain_point), and the boundary takes the
+/// halves; outline edges are never split, so the outline still matches the templates. A budget of
+/// insertions (8 per band triangle) ends the pass with a warning (the mesh stays valid; some angles
+/// stay small).
 tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
-                                                 std::uint32_t boundary_segments,
+                                                 const std::vector<std::uint32_t>& band_piece,
                                                  const tri::Cdt2Options& cdt,
                                                  std::vector<std::string>& warnings) {
     if (options_.band_min_angle == 0) return tri::constrained_delaunay_2d(band, cdt);
+    // The band's first segments are the boundary pieces band_piece[k]; the rest the outline.
+    const auto boundary_segments = static_cast<std::uint32_t>(band_piece.size());
     tri::ConstrainedTriangulation2 ct(band, cdt);
     if (ct.collinear()) return std::move(ct).take_result();
     const tri::TriMesh2& mesh = ct.mesh();
@@ -836,9 +841,28 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
                     if (e == tri::kNone) continue;
                     const double* p = mesh.point(u);
                     const double* q = mesh.point(v);
-                    const double m[2] = {0.5 * p[0] + 0.5 * q[0], 0.5 * p[1] + 0.5 * q[1]};
-                    if ((m[0] == p[0] && m[1] == p[1]) || (m[0] == q[0] && m[1] == q[1])) continue;
-                    ct.split_constrained_edge(e, m[0], m[1]);
+                    // On the input segment's chain (chain_point), as split_pieces places its
+                    // points: the band's segments are the pieces, whose ends are already off the
+                    // input segment by rounding, and midpoints of midpoints drifted past its
+                    // allowance (a subnormal triangle's side, 1.8 units of 2^-1074 off after a
+                    // few halvings: fuzz_mesh_generators_2d, 2026-12-07; the check found the
+                    // segment missing). Halving first is exact unless the halves are subnormal.
+                    const bool tiny = std::fabs(p[0]) < 0x1p-1000 || std::fabs(q[0]) < 0x1p-1000 ||
+                                      std::fabs(p[1]) < 0x1p-1000 || std::fabs(q[1]) < 0x1p-1000;
+                    const std::array<double, 2> mid =
+                        tiny ? std::array{(p[0] + q[0]) * 0.5, (p[1] + q[1]) * 0.5}
+                             : std::array{0.5 * p[0] + 0.5 * q[0], 0.5 * p[1] + 0.5 * q[1]};
+                    const std::uint32_t segment =
+                        boundary_.piece_segment[band_piece[ct.segment_of(e)]];
+                    const std::optional<std::array<double, 2>> m = chain_point(
+                        mid,
+                        &boundary_.xy[2 * std::size_t{pslg_.segments[2 * std::size_t{segment}]}],
+                        &boundary_
+                             .xy[2 * std::size_t{pslg_.segments[2 * std::size_t{segment} + 1]}]);
+                    if (!m || ((*m)[0] == p[0] && (*m)[1] == p[1]) ||
+                        ((*m)[0] == q[0] && (*m)[1] == q[1]))
+                        continue;
+                    ct.split_constrained_edge(e, (*m)[0], (*m)[1]);
                     ++counters_.band_piece_splits;
                 }
                 if (!split.empty()) {
@@ -1068,7 +1092,7 @@ QuadtreeResult2 QuadtreeMesher::assemble() {
     cdt.first_index = 0;
     const auto band_count = static_cast<VertIdx>(band_vertex.size());
     const tri::Cdt2Result band_cdt = triangulate_band({band_xy, band_segments, band_holes, {}},
-                                                      boundary_segments, cdt, result_warnings);
+                                                      band_piece, cdt, result_warnings);
     const tri::Cdt2Counters& bc = band_cdt.counters;
     // Input vertices on boundary pieces split them (each adds a piece); nothing else may.
     if (bc.duplicates || bc.intersections || bc.dropped_segments ||

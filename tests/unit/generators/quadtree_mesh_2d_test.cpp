@@ -464,4 +464,23 @@ TEST(Generators_Quadtree2, OuterSegmentWithinRoundingOfTheBoundaryIsRefusedNotCr
     }
 }
 
+TEST(Generators_Quadtree2, BandSplitsOfASubnormalSideStayOnItsChain) {
+    // fuzz_mesh_generators_2d (2026-12-07; tests/data/fuzz/
+    // mesh_generators_2d_quadtree_subnormal_chain_drift.bin): a triangle with subnormal
+    // coordinates (sides 3.5e-316 and 1.4e-312) at a size of 8.5e-314. The band's refinement
+    // halved its long side at plain midpoints of the pieces' ends, which were themselves
+    // rounded: after a few halvings the points lay 1.8 units of 2^-1074 off the side, beyond
+    // the rounding the check allows (one unit there), and the side was "missing". The band's
+    // split points are now taken on the input segment's chain, as the boundary's own are.
+    Input in;
+    in.xy = {0.0, 0.0, 3.5226422e-316, 0.0, 2.070238e-317, 1.35807730622e-312};
+    in.segments = {0, 1, 1, 2, 2, 0};
+    gen::MeshOptions2 options;
+    options.size = gen::SizeFunction::uniform(8.487983164e-314);
+    const tri::Cdt2Result r = gen::find_mesh_generator_2d("quadtree").run(in.pslg(), options).mesh;
+    const auto report =
+        tri::check_conforming_mesh_2d(r.mesh, r.input_vertex_count, in.segments, r.pieces);
+    EXPECT_TRUE(report.ok) << report.problem;
+}
+
 }  // namespace
