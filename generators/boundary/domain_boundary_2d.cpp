@@ -523,6 +523,16 @@ std::optional<std::array<double, 2>> chain_point(const std::array<double, 2>& p,
     return q;
 }
 
+std::vector<triangulation::VertIdx> piece_lines(const DomainBoundary2& boundary) {
+    std::vector<triangulation::VertIdx> lines;
+    lines.reserve(boundary.pieces.size());
+    for (const std::uint32_t s : boundary.piece_segment) {
+        lines.push_back(boundary.input_segments[2 * std::size_t{s}]);
+        lines.push_back(boundary.input_segments[2 * std::size_t{s} + 1]);
+    }
+    return lines;
+}
+
 bool in_domain(const DomainBoundary2& boundary, double x, double y) {
     return boundary.locator.locate(boundary.cdt.mesh, x, y) != tri::kNone;
 }

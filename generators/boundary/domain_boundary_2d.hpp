@@ -134,6 +134,12 @@ double expected_triangle_count(const DomainBoundary2& boundary, const SizeFuncti
 std::optional<std::array<double, 2>> chain_point(const std::array<double, 2>& p, const double* s0,
                                                  const double* s1);
 
+/// 2·#P: each boundary piece's input segment's two input vertices (numbers in boundary.xy): the
+/// lines a triangulation whose segments are the pieces measures its chain rule against
+/// (triangulation::Pslg::segment_lines), so that it bends a piece only where the input
+/// segment's check accepts the bend.
+std::vector<triangulation::VertIdx> piece_lines(const DomainBoundary2& boundary);
+
 /// True when (x, y) lies in the domain (closed), by exact orient2d tests on the CDT.
 bool in_domain(const DomainBoundary2& boundary, double x, double y);
 

@@ -69,7 +69,9 @@ class Frontal {
             DomainBoundary2&& boundary, const tri::Cdt2Options& cdt_options)
         : options_(options),
           boundary_(std::move(boundary)),
-          cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions}, cdt_options),
+          cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions,
+                         piece_lines(boundary_)},
+               cdt_options),
           mesh_(cdt_.mesh()) {}
 
     FrontalDelaunayResult2 run();

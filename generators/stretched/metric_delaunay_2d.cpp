@@ -738,7 +738,9 @@ class MetricMesher {
                  std::size_t memo_slots)
         : options_(options),
           boundary_(std::move(boundary)),
-          cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions}, cdt_options),
+          cdt_(tri::Pslg{boundary_.xy, boundary_.pieces, pslg.holes, pslg.regions,
+                         piece_lines(boundary_)},
+               cdt_options),
           holes_(pslg.holes),
           regions_(pslg.regions),
           cdt_options_(cdt_options),
@@ -922,8 +924,9 @@ void MetricMesher::insert_columns(std::uint64_t budget) {
     const std::function<bool(double, double)> inside = [&](double x, double y) {
         if (!std::isfinite(x) || !std::isfinite(y)) return false;
         if (!probe)
-            probe.emplace(tri::Pslg{boundary_.xy, boundary_.pieces, holes_, regions_},
-                          cdt_options_);
+            probe.emplace(
+                tri::Pslg{boundary_.xy, boundary_.pieces, holes_, regions_, piece_lines(boundary_)},
+                cdt_options_);
         const tri::TriIdx t = probe->locate(x, y);
         return !probe->mesh().is_infinite(t) && probe->in_domain(t);
     };

@@ -551,10 +551,11 @@ MinMaxFrontResult2 min_max_front_2d(const MeshDomain2& domain, const MinMaxFront
     const tri::Pslg& pslg = domain.pslg();
     // As the frontal and metric generators build it (a vertex within rounding of a piece
     // becomes a vertex of it: plain constrained_delaunay_2d lost such a chain on fuzzed input).
-    tri::Cdt2Result out = tri::ConstrainedTriangulation2(
-                              tri::Pslg{boundary.xy, boundary.pieces, pslg.holes, pslg.regions},
-                              domain.domain_options())
-                              .take_result();
+    tri::Cdt2Result out =
+        tri::ConstrainedTriangulation2(tri::Pslg{boundary.xy, boundary.pieces, pslg.holes,
+                                                 pslg.regions, piece_lines(boundary)},
+                                       domain.domain_options())
+            .take_result();
     if (out.mesh.triangle_count() == 0)
         throw InputError("min-max front: the segments enclose no region");
     tri::Triangulation2& mesh = out.mesh;

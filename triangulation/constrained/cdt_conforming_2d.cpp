@@ -28,8 +28,8 @@ bool bend_candidate(const CdtState& cdt, std::uint32_t segment, VertIdx a, VertI
     // along the input segment), so that every bend the triangulation makes is a chain the check
     // accepts: w within rounding of the input segment and strictly between a and b along it.
     if (w == kInfinite || w == a || w == b) return false;
-    const double* s0 = cdt.mesh.point(cdt.segment_ends[segment][0]);
-    const double* s1 = cdt.mesh.point(cdt.segment_ends[segment][1]);
+    const double* s0 = cdt.mesh.point(cdt.segment_line[segment][0]);
+    const double* s1 = cdt.mesh.point(cdt.segment_line[segment][1]);
     // The distance test first: it rejects nearly every vertex a piece crosses, by its filter.
     if (!predicates::within_rounding_of_segment(cdt.mesh.point(w), s0, s1)) return false;
     const Sign from_a =
@@ -39,8 +39,8 @@ bool bend_candidate(const CdtState& cdt, std::uint32_t segment, VertIdx a, VertI
     // A piece shared with other segments bends only where each of their chains may bend.
     for (const std::uint32_t other : cdt.shared_segments(a, b)) {
         if (other == segment) continue;
-        const double* t0 = cdt.mesh.point(cdt.segment_ends[other][0]);
-        const double* t1 = cdt.mesh.point(cdt.segment_ends[other][1]);
+        const double* t0 = cdt.mesh.point(cdt.segment_line[other][0]);
+        const double* t1 = cdt.mesh.point(cdt.segment_line[other][1]);
         const Sign o_from_a =
             predicates::direction_dot_sign(cdt.mesh.point(a), cdt.mesh.point(w), t0, t1);
         const Sign o_to_b =

@@ -419,6 +419,11 @@ void prepare_segments(CdtState& cdt) {
     const std::size_t count = cdt.pslg.segments.size() / 2;
     const std::uint32_t n = cdt.input_count;
     cdt.segment_ends.assign(count, {kNone, kNone});
+    cdt.segment_line.assign(count, {kNone, kNone});
+    if (!cdt.pslg.segment_lines.empty() && cdt.pslg.segment_lines.size() != 2 * count)
+        throw InputError("constrained_delaunay_2d: segment_lines holds " +
+                         std::to_string(cdt.pslg.segment_lines.size()) + " indices for " +
+                         std::to_string(count) + " segments");
     // Caller index -> mesh vertex, through duplicate merging.
     std::vector<VertIdx> mesh_of(n);
     for (VertIdx v = 0; v < n; ++v) mesh_of[cdt.core.input_index[v]] = v;
@@ -450,6 +455,16 @@ void prepare_segments(CdtState& cdt) {
         const VertIdx i = cdt.pslg.segments[2 * s], j = cdt.pslg.segments[2 * s + 1];
         cdt.work.push_back({mesh_of[cdt.core.merged_into[i]], mesh_of[cdt.core.merged_into[j]], s});
         cdt.segment_ends[s] = {cdt.work.back().a, cdt.work.back().b};
+        cdt.segment_line[s] = cdt.segment_ends[s];
+        if (!cdt.pslg.segment_lines.empty()) {
+            const VertIdx p = cdt.pslg.segment_lines[2 * s], q = cdt.pslg.segment_lines[2 * s + 1];
+            if (p >= n || q >= n)
+                throw InputError(
+                    "constrained_delaunay_2d: segment_lines names a vertex that "
+                    "does not exist");
+            cdt.segment_line[s] = {mesh_of[cdt.core.merged_into[p]],
+                                   mesh_of[cdt.core.merged_into[q]]};
+        }
     }
     // Process in input order (the work list is a stack).
     std::sort(cdt.work.begin(), cdt.work.end(),

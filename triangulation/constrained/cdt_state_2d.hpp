@@ -69,6 +69,7 @@ struct CdtState {
     // ---- segment recovery ----------------------------------------------------------------------
     std::vector<Piece> work;                           // pieces still to recover (a stack)
     std::vector<std::array<VertIdx, 2>> segment_ends;  // per input segment: its mesh vertices
+    std::vector<std::array<VertIdx, 2>> segment_line;  // per input segment: its chain rule's line
     /// Per edge key: the segments other than segment_of whose chains use the edge (see mark).
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> shared;
     std::vector<TriIdx> flip_stack;

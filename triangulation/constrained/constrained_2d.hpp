@@ -39,6 +39,12 @@ struct Pslg {
     std::span<const VertIdx> segments;  ///< 2·#S endpoint indices into xy
     std::span<const double> holes;      ///< 2·#H points inside holes
     std::span<const double> regions;    ///< 4·#R: x, y, attribute, maximum area (unused here)
+    /// Empty, or 2·#S indices into xy: per segment, the two vertices whose line its chain rule
+    /// measures against (the vertices a segment may bend through: within rounding of that line,
+    /// strictly between the piece's ends along it). Empty: the segment's own ends. A triangulation
+    /// of a split boundary, whose segments are the pieces of input segments, gives each piece its
+    /// input segment's ends, so that its bends are bends the input segment's check accepts.
+    std::span<const VertIdx> segment_lines = {};
 };
 
 enum class SegmentRecovery { Swap, Cavity, Conforming };

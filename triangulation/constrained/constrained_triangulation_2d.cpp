@@ -731,7 +731,7 @@ VertIdx bend_at_apex(CdtState& cdt, EdgeIdx e) {
 
 struct ConstrainedTriangulation2::Owned {
     std::vector<double> xy, holes, regions;
-    std::vector<VertIdx> segments;
+    std::vector<VertIdx> segments, segment_lines;
     Cdt2Options options;
     std::optional<detail::CdtState> state;
 };
@@ -753,8 +753,9 @@ ConstrainedTriangulation2::ConstrainedTriangulation2(const Pslg& pslg, const Cdt
     o.holes.assign(pslg.holes.begin(), pslg.holes.end());
     o.regions.assign(pslg.regions.begin(), pslg.regions.end());
     o.segments.assign(pslg.segments.begin(), pslg.segments.end());
+    o.segment_lines.assign(pslg.segment_lines.begin(), pslg.segment_lines.end());
     o.options = options;
-    o.state.emplace(Pslg{o.xy, o.segments, o.holes, o.regions}, o.options);
+    o.state.emplace(Pslg{o.xy, o.segments, o.holes, o.regions, o.segment_lines}, o.options);
     state_ = &*o.state;
     detail::CdtState& cdt = *state_;
     mesh_ = &cdt.mesh;

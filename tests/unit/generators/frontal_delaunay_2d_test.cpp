@@ -23,11 +23,13 @@
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/inputs/pslg_inputs.hpp"
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
+#include "generators/mesh_2d/mesh_generators_2d.hpp"
 #include "generators/mesh_2d/quality_2d.hpp"
 #include "tests/support/degenerate_pslgs_2d.hpp"
 #include "tests/support/generated_mesh_2d.hpp"
 #include "tests/support/mesh_checks_2d.hpp"
 #include "tests/support/pslg_fixtures_2d.hpp"
+#include "triangulation/checks/check_conforming_2d.hpp"
 
 namespace em = exactmesh;
 namespace gen = exactmesh::generators;
@@ -430,6 +432,44 @@ TEST(Generators_FrontalDelaunay, HugeCrossingQuadrilateralEndsInAValidMesh) {
     EXPECT_EQ(r.result.counters.forced_triangles, 0u);
     EXPECT_EQ(r.result.counters.accepted_triangles, r.result.mesh.mesh.triangle_count());
     EXPECT_LE(r.check.max_size_ratio, kSizeRatioBound);
+}
+
+TEST(Generators_FrontalDelaunay, PiecesBendOnlyWhereTheirInputSegmentMay) {
+    // fuzz_mesh_generators_2d, seed 5 (2026-12-07; tests/data/fuzz/
+    // mesh_generators_2d_frontal_piece_bent_backwards.bin): segment 4-5 leaves vertex 4, 2.4e-185
+    // below segment 0-1, and crosses it at a rounded point 8 with vertex 4's x; it also crosses
+    // 7-4's rounded pieces at 10, 2e-185 above 8 with the same x. The triangulation over the
+    // boundary's pieces bent the vertical piece 8 - 10 through a split point of segment 0-1
+    // 3.4e-77 to its left: between 8 and 10 along the piece, behind 8 along segment 4-5, and the
+    // check found segment 4 missing (frontal and metric Delaunay; the 2026-12-01 binary too).
+    // That triangulation now measures each piece's bends against its input segment's line
+    // (Pslg::segment_lines, piece_lines).
+    Input in;
+    in.xy = {0.0,
+             0.0,
+             1.0,
+             -2.353438274577701e-185,
+             4.6672616416828e-62,
+             -2.353438279440778e-185,
+             2.78135280877724e-310,
+             -2.3532219046382903e-185,
+             4.66726145911182e-62,
+             -2.3534373718238174e-185,
+             0.5937744141545408,
+             0.4,
+             0.6,
+             0.6,
+             0.4,
+             0.6};
+    in.segments = {0, 1, 7, 5, 5, 0, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+    for (const char* name : {"frontal", "metric-delaunay"}) {
+        gen::MeshOptions2 options;
+        options.size = gen::SizeFunction::uniform(0.25);
+        const tri::Cdt2Result r = gen::find_mesh_generator_2d(name).run(in.pslg(), options).mesh;
+        const auto report =
+            tri::check_conforming_mesh_2d(r.mesh, r.input_vertex_count, in.segments, r.pieces);
+        EXPECT_TRUE(report.ok) << name << ": " << report.problem;
+    }
 }
 
 TEST(Generators_FrontalDelaunay, A1e300SquareIsTheUnitSquareScaled) {
