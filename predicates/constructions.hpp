@@ -37,6 +37,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 namespace exactmesh::predicates {
@@ -96,6 +97,14 @@ std::array<double, 3> point_on_segment_3d(const double* p, const double* q, doub
 ///         only an endpoint) or when the segments do not intersect.
 std::array<double, 2> segment_intersection(const double* a, const double* b, const double* c,
                                            const double* d);
+
+/// (a + b) / 2 rounded once: the exact halves summed (one rounding), or, where a half would be
+/// subnormal (and so inexact), the sum (exact there, far from overflow) halved (one rounding).
+/// The split-point coordinate of the constrained triangulation's and the quadtree's pieces.
+inline double rounded_midpoint(double a, double b) noexcept {
+    const bool tiny = std::fabs(a) < 0x1p-1000 || std::fabs(b) < 0x1p-1000;
+    return tiny ? (a + b) * 0.5 : a * 0.5 + b * 0.5;
+}
 
 /// The point of the line through s0 and s1 whose coordinate `axis` (0: x, 1: y) is `value`,
 /// that coordinate kept and the other correctly rounded (exact rational arithmetic, one

@@ -846,12 +846,9 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
                     // input segment by rounding, and midpoints of midpoints drifted past its
                     // allowance (a subnormal triangle's side, 1.8 units of 2^-1074 off after a
                     // few halvings: fuzz_mesh_generators_2d, 2026-12-07; the check found the
-                    // segment missing). Halving first is exact unless the halves are subnormal.
-                    const bool tiny = std::fabs(p[0]) < 0x1p-1000 || std::fabs(q[0]) < 0x1p-1000 ||
-                                      std::fabs(p[1]) < 0x1p-1000 || std::fabs(q[1]) < 0x1p-1000;
-                    const std::array<double, 2> mid =
-                        tiny ? std::array{(p[0] + q[0]) * 0.5, (p[1] + q[1]) * 0.5}
-                             : std::array{0.5 * p[0] + 0.5 * q[0], 0.5 * p[1] + 0.5 * q[1]};
+                    // segment missing).
+                    const std::array<double, 2> mid = {predicates::rounded_midpoint(p[0], q[0]),
+                                                       predicates::rounded_midpoint(p[1], q[1])};
                     const std::uint32_t segment =
                         boundary_.piece_segment[band_piece[ct.segment_of(e)]];
                     const std::optional<std::array<double, 2>> m = chain_point(

@@ -196,9 +196,8 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece, Spli
     // not do: it underflows for a 1e-20 piece at the end of a 1e303 segment.
     auto midpoint_on_input_line = [&](double* out) {
         const int axis = std::fabs(s1[0] - s0[0]) >= std::fabs(s1[1] - s0[1]) ? 0 : 1;
-        const bool tiny = std::fabs(pa[axis]) < 0x1p-1000 || std::fabs(pb[axis]) < 0x1p-1000;
-        const double value = tiny ? (pa[axis] + pb[axis]) * 0.5 : pa[axis] * 0.5 + pb[axis] * 0.5;
-        const auto point = predicates::point_on_line_at(s0, s1, axis, value);
+        const auto point = predicates::point_on_line_at(
+            s0, s1, axis, predicates::rounded_midpoint(pa[axis], pb[axis]));
         out[0] = point[0];
         out[1] = point[1];
     };
@@ -246,12 +245,7 @@ void split_piece(CdtState& cdt, Conforming& conforming, const Piece& piece, Spli
         }
     }
     if (!shell && !on_input_segment) {
-        for (int k = 0; k < 2; ++k) {
-            // Halving first is exact unless the halves are subnormal; then sum first (which
-            // cannot overflow at such magnitudes).
-            const bool tiny = std::fabs(pa[k]) < 0x1p-1000 || std::fabs(pb[k]) < 0x1p-1000;
-            m[k] = tiny ? (pa[k] + pb[k]) * 0.5 : pa[k] * 0.5 + pb[k] * 0.5;
-        }
+        for (int k = 0; k < 2; ++k) m[k] = predicates::rounded_midpoint(pa[k], pb[k]);
     }
     // A rounded midpoint of a piece far across the segment's direction may fall off its way (it
     // moved back by an ulp of a coordinate that the segment's direction weighs 1e60 times
