@@ -16,6 +16,8 @@
 #include "generators/adaptation/indicator_size_field.hpp"
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/mesh_2d/advancing_front_2d.hpp"
+#include "generators/mesh_2d/delaunay_refinement_2d.hpp"
+#include "generators/sizing/size_function.hpp"
 #include "generators/topology/mesh_edges.hpp"
 #include "predicates/power_of_two.hpp"
 #include "triangulation/modification/edge_swap_2d.hpp"
@@ -118,14 +120,20 @@ bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
         mesh_options.max_boundary_points =
             2 * std::min<std::uint64_t>(options.max_vertices, std::uint64_t{1} << 58);
     double scale = 1;
+    // A scaled size is capped at the domain's extent (size_ceiling_2d): a budget that must coarsen
+    // a fine corner by 1e98 would otherwise scale the size of a far corner 1e231 away to infinity
+    // (fuzz_adaptation_2d, tests/data/fuzz/adaptation_2d_size_overflow.bin).
+    const double ceiling = size_ceiling_2d(domain.pslg.xy);
+    const auto scaled_size = [&](double factor) {
+        return factor == 1 ? size : size.scaled(factor, ceiling);
+    };
     if (budget) {
         // The estimate counts triangles of an ideal (equilateral) mesh, a lower bound; a mesh has
         // about half as many vertices as triangles, so asking for at most max_vertices triangles
         // leaves a factor 2 for the generators' worse shapes and their boundary points.
         const tri::Triangulation2& whole = mesh_domain.triangulation().mesh;
         for (int attempt = 0; attempt < 64; ++attempt) {
-            const double estimate =
-                minimum_triangle_count(whole, scale == 1 ? size : size.scaled(scale), 4 * most);
+            const double estimate = minimum_triangle_count(whole, scaled_size(scale), 4 * most);
             if (estimate <= most) break;
             scale *= std::max(1.05, std::sqrt(estimate / most));
             ++counters.budget_scalings;
@@ -133,11 +141,28 @@ bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
     }
     MeshRun2 run;
     for (int attempt = 0;; ++attempt) {
-        mesh_options.size = scale == 1 ? size : size.scaled(scale);
-        run = generator.run_on_domain(mesh_domain, mesh_options);
-        ++counters.generator_runs;
-        const double count = run.mesh.mesh.vertex_count();
-        if (!budget || count <= most) break;
+        mesh_options.size = scaled_size(scale);
+        // Under a budget, a generator's refusal of the size for its count (the boundary's
+        // pieces, refinement's Steiner budget) is an overshoot of unknown excess: the size is
+        // this cycle's own, so it is coarsened by 4 and tried again, not passed on as the
+        // caller's bad input (the estimate above samples the size and can miss a steep part of
+        // it: tests/data/fuzz/adaptation_2d_size_overflow.bin's long side asked for 1e88 pieces).
+        double excess = 0;
+        try {
+            run = generator.run_on_domain(mesh_domain, mesh_options);
+            ++counters.generator_runs;
+            const double count = run.mesh.mesh.vertex_count();
+            if (!budget || count <= most) break;
+            excess = count / most;
+        } catch (const BoundaryBudgetError&) {
+            if (!budget) throw;
+            ++counters.generator_runs;
+            excess = 16;
+        } catch (const RefinementBudgetError&) {
+            if (!budget) throw;
+            ++counters.generator_runs;
+            excess = 16;
+        }
         if (attempt == 7) {
             ++counters.budget_refusals;
             return false;
@@ -145,7 +170,6 @@ bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
         // An area-dominated mesh's count falls as 1 / s^2, a boundary-dominated one's (the
         // quadtree's band) as 1 / s: the first reruns take the square root of the excess, later
         // ones all of it, so that both converge in a few runs.
-        const double excess = count / most;
         scale *= std::max(1.1, 1.05 * (attempt < 2 ? std::sqrt(excess) : excess));
         ++counters.budget_reruns;
     }

@@ -12,6 +12,7 @@
 #include "generators/adaptation/field_transfer.hpp"
 #include "generators/adaptation/indicator_size_field.hpp"
 #include "generators/mesh_2d/delaunay_refinement_2d.hpp"
+#include "generators/sizing/size_function.hpp"
 #include "generators/topology/mesh_edges.hpp"
 #include "predicates/power_of_two.hpp"
 
@@ -186,7 +187,9 @@ bool steiner_restart_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& opt
             if (!std::isfinite(factor)) break;
             RefinementOptions2 refinement;
             refinement.min_angle = kGuaranteedMinAngle;
-            refinement.size = factor == 1 ? size : size.scaled(factor);
+            // Capped at the mesh's extent, as global remeshing's scaled size is.
+            refinement.size =
+                factor == 1 ? size : size.scaled(factor, size_ceiling_2d(state.mesh.xy));
             // Under a vertex budget, refinement's own Steiner budget is a few times the room
             // left, and a run that reaches it (or whose size asks for more at once) is redone
             // coarser: the estimate above takes the size at the old mesh's vertices, and a size

@@ -65,30 +65,41 @@ std::vector<double> equal_integral_parameters(const std::vector<double>& u,
 
 /// The refusal of a size that asks for more new boundary points than `max_points`; `where`
 /// names the size and place, or the count so far.
-InputError boundary_budget_error(std::uint64_t max_points, const std::string& where) {
-    return InputError("boundary discretization: the size function asks for more than " +
-                      std::to_string(max_points) +
-                      " boundary points, over the Steiner point budget (" + where +
-                      "): give a larger size or raise --max-steiner");
+BoundaryBudgetError boundary_budget_error(std::uint64_t max_points, const std::string& where) {
+    return BoundaryBudgetError("boundary discretization: the size function asks for more than " +
+                               std::to_string(max_points) +
+                               " boundary points, over the Steiner point budget (" + where +
+                               "): give a larger size or raise --max-steiner");
 }
+
+/// Where a discretization's integral grows fastest: the sample interval with the most pieces
+/// (its length over the size at its middle), named by the refusals.
+struct DensestSample {
+    double pieces = -1;
+    Point p{0, 0};
+    double size = 0;
+
+    void offer(double interval_pieces, const Point& at, double size_there) {
+        if (interval_pieces > pieces) *this = {interval_pieces, at, size_there};
+    }
+    std::string where() const {
+        return "size " + format_number(size) + " near (" + format_number(p[0]) + ", " +
+               format_number(p[1]) + ")";
+    }
+};
 
 /// InputError when the integral asks for more than 2^30 pieces (or is not finite), or for more
 /// new points than `max_points` (a generator's Steiner budget, 0 for none: the pieces less one
-/// are the points the curve adds).
-void check_piece_count(double total, const Curve2& curve, double u0, const SizeFunction& size,
-                       std::uint64_t max_points) {
+/// are the points the curve adds); either names the densest sample so far.
+void check_piece_count(double total, const DensestSample& densest, std::uint64_t max_points) {
     if (!std::isfinite(total) || total > double{1 << 30}) {
-        throw InputError(
+        throw BoundaryBudgetError(
             "boundary discretization: the size function asks for more than 2^30 pieces on one "
-            "curve or segment (size " +
-            format_number(size(curve(u0)[0], curve(u0)[1])) + " near (" +
-            format_number(curve(u0)[0]) + ", " + format_number(curve(u0)[1]) + "))");
+            "curve or segment (" +
+            densest.where() + ")");
     }
-    if (max_points != 0 && total > static_cast<double>(max_points) + 1) {
-        throw boundary_budget_error(
-            max_points, "size " + format_number(size(curve(u0)[0], curve(u0)[1])) + " near (" +
-                            format_number(curve(u0)[0]) + ", " + format_number(curve(u0)[1]) + ")");
-    }
+    if (max_points != 0 && total > static_cast<double>(max_points) + 1)
+        throw boundary_budget_error(max_points, densest.where());
 }
 
 /// discretize_curve_parameters with a first sample count (doubled until there are 8 samples per
@@ -100,17 +111,21 @@ std::vector<double> spaced_parameters(const Curve2& curve, double u0, double u1,
         std::vector<double> u(static_cast<std::size_t>(samples) + 1), cumulative(u.size(), 0.0);
         Point previous = curve(u0);
         u[0] = u0;
+        DensestSample densest;
         for (int i = 1; i <= samples; ++i) {
             const auto index = static_cast<std::size_t>(i);
             u[index] = u0 + (u1 - u0) * i / samples;
             const Point p = curve(u[index]);
-            const double s = size(0.5 * (p[0] + previous[0]), 0.5 * (p[1] + previous[1]));
+            const Point middle{0.5 * (p[0] + previous[0]), 0.5 * (p[1] + previous[1])};
+            const double s = size(middle[0], middle[1]);
             const double ds = std::hypot(p[0] - previous[0], p[1] - previous[1]);
-            cumulative[index] = cumulative[index - 1] + (std::isfinite(s) ? ds / s : 0.0);
+            const double pieces = std::isfinite(s) ? ds / s : 0.0;
+            densest.offer(pieces, middle, s);
+            cumulative[index] = cumulative[index - 1] + pieces;
             previous = p;
         }
         const double total = cumulative.back();
-        check_piece_count(total, curve, u0, size, max_points);
+        check_piece_count(total, densest, max_points);
         const int pieces = std::max(min_pieces, static_cast<int>(std::ceil(total - 1e-9)));
         if (pieces * 8 > samples && samples < (1 << 24)) {
             samples = std::min(1 << 24, pieces * 16);
@@ -142,6 +157,7 @@ std::vector<double> adaptive_spaced_parameters(const Curve2& curve, double u0, d
         int depth;
     };
     std::vector<double> u{u0}, cumulative{0.0};
+    DensestSample densest;
     std::vector<Interval> stack;
     constexpr int kStart = 64;
     Sample left = sample(u0);
@@ -161,18 +177,20 @@ std::vector<double> adaptive_spaced_parameters(const Curve2& curve, double u0, d
                 continue;
             }
             u.push_back(in.b.u);
-            cumulative.push_back(cumulative.back() + (std::isfinite(mid.s) ? length / mid.s : 0.0));
+            const double pieces = std::isfinite(mid.s) ? length / mid.s : 0.0;
+            densest.offer(pieces, mid.p, mid.s);
+            cumulative.push_back(cumulative.back() + pieces);
             // Over the budget as the integral grows: each sample costs a size evaluation (a
             // background mesh's point location), so a size asking for millions of points is
             // refused at the budget, not after 2^24 samples (fuzz_adaptation_2d,
             // tests/data/fuzz/adaptation_2d_oom_narrow.bin: 87 s). Without a budget the 2^30
             // pieces' limit holds the same way: a segment 1e300 long at a size of 0.2 was
             // refused only after 2^24 samples (3.4 s, 400 MB).
-            check_piece_count(cumulative.back(), curve, u0, size, max_points);
+            check_piece_count(cumulative.back(), densest, max_points);
             // A size far below its values at the start intervals' ends would bisect for minutes
             // before the piece count's check: the samples are capped as the uniform sampling's.
             if (u.size() > std::size_t{1} << 24) {
-                throw InputError(
+                throw BoundaryBudgetError(
                     "boundary discretization: the size function needs more than 2^24 samples on "
                     "one curve or segment (size " +
                     format_number(mid.s) + " near (" + format_number(mid.p[0]) + ", " +
@@ -180,7 +198,7 @@ std::vector<double> adaptive_spaced_parameters(const Curve2& curve, double u0, d
             }
         }
         left = right;
-        check_piece_count(cumulative.back(), curve, u0, size, max_points);
+        check_piece_count(cumulative.back(), densest, max_points);
     }
     const int pieces = std::max(min_pieces, static_cast<int>(std::ceil(cumulative.back() - 1e-9)));
     return equal_integral_parameters(u, cumulative, pieces, u0, u1);
@@ -655,7 +673,7 @@ DomainBoundary2 discretize(const MeshDomain2& domain, const PieceSizeFunction& p
         // A steep size's smallest sample (at a fine feature's end) says nothing of its
         // integral: the adaptive sampling counts the pieces itself.
         if (!adaptive && !(estimate <= double{1 << 30})) {
-            throw InputError(
+            throw BoundaryBudgetError(
                 "boundary discretization: the size function asks for more than 2^30 pieces on "
                 "segment " +
                 std::to_string(segment + options.first_index) + " (size " +

@@ -22,6 +22,7 @@
 #include <optional>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "generators/boundary/mesh_domain_2d.hpp"
 #include "generators/boundary/sample_domains.hpp"
 #include "generators/sizing/size_function.hpp"
@@ -65,6 +66,15 @@ struct DomainBoundary2 {
     DomainLocator2 locator;
 };
 
+/// The discretization's refusal of a size asking for too many boundary pieces: more than 2^30
+/// on one curve or segment, more than 2^24 samples to integrate, or more new points than the
+/// generator's budget. An InputError naming the densest place; a caller that made the size
+/// itself (global remeshing under a vertex budget) coarsens it and tries again.
+class BoundaryBudgetError : public InputError {
+  public:
+    using InputError::InputError;
+};
+
 /// @param size the target edge length (unbounded: the pieces of the CDT are kept as they are).
 /// @throws InputError as constrained_delaunay_2d; InputError when the segments enclose no region.
 DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
@@ -72,8 +82,8 @@ DomainBoundary2 discretize_domain_boundary(const triangulation::Pslg& pslg,
                                            const triangulation::Cdt2Options& cdt = {});
 /// The same from the domain's triangulation, built once (MeshDomain2::triangulation, copied).
 /// @param max_points the generator's Steiner budget (0: none but the 2^30 pieces and 2^24
-///        samples per segment): a size asking for more new boundary points is refused with an
-///        InputError as soon as the sampling's integral passes it.
+///        samples per segment): a size asking for more new boundary points is refused with a
+///        BoundaryBudgetError as soon as the sampling's integral passes it.
 DomainBoundary2 discretize_domain_boundary(const MeshDomain2& domain, const SizeFunction& size,
                                            std::uint64_t max_points = 0);
 

@@ -188,11 +188,32 @@ double SizeFunction::evaluate(double x, double y) const {
     return std::min(s, cap_);
 }
 
-SizeFunction SizeFunction::scaled(double factor) const {
+SizeFunction SizeFunction::scaled(double factor, double ceiling) const {
     require_positive(factor, "size scale factor");
+    if (!(ceiling > 0)) {
+        throw InputError("size ceiling must be > 0 (got " + format_number(ceiling) + ")");
+    }
     SizeFunction f = *this;
     f.factor_ *= factor;
+    f.ceiling_ = std::min(ceiling_, ceiling);
     return f;
+}
+
+double size_ceiling_2d(std::span<const double> xy) {
+    if (xy.size() < 2) return std::numeric_limits<double>::max();
+    double x0 = xy[0], x1 = xy[0], y0 = xy[1], y1 = xy[1];
+    for (std::size_t i = 2; i + 1 < xy.size(); i += 2) {
+        x0 = std::min(x0, xy[i]);
+        x1 = std::max(x1, xy[i]);
+        y0 = std::min(y0, xy[i + 1]);
+        y1 = std::max(y1, xy[i + 1]);
+    }
+    // The halves are exact but for subnormal coordinates (off by half a unit at most); the
+    // ceiling, twice the side, exceeds every edge (at most sqrt(2) sides) by a margin that
+    // covers that rounding.
+    const double half = std::max(0.5 * x1 - 0.5 * x0, 0.5 * y1 - 0.5 * y0);
+    const double ceiling = 4 * half;
+    return std::isfinite(ceiling) && ceiling > 0 ? ceiling : std::numeric_limits<double>::max();
 }
 
 std::string SizeFunction::describe() const {
@@ -227,6 +248,7 @@ std::string SizeFunction::describe() const {
             break;
     }
     if (factor_ != 1.0) text += ", scaled by " + format_number(factor_);
+    if (std::isfinite(ceiling_)) text += ", at most " + format_number(ceiling_);
     return text;
 }
 

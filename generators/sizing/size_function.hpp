@@ -18,13 +18,17 @@
 //    screened Poisson (elliptic) equation with its local minima kept, limited again, bilinear
 //    between the grid's nodes (generators/sizing/size_smoothing_2d.hpp).
 // Every kind can be scaled by a constant factor (benchmarks reach a target element count that
-// way). The text form (`--size NUM|FILE`) is documented at parse_size_sources.
+// way), with an optional ceiling (a budget's scaling reaching sizes beyond the domain: they
+// would overflow to infinity, and a size above the domain's extent asks nothing of a mesh:
+// size_ceiling_2d). The text form (`--size NUM|FILE`) is documented at parse_size_sources.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -119,8 +123,8 @@ class SizeFunction {
     /// The size at (x, y).
     double operator()(double x, double y) const {
         return kind_ == Kind::None      ? kInfinity
-               : kind_ == Kind::Uniform ? factor_ * cap_
-                                        : factor_ * evaluate(x, y);
+               : kind_ == Kind::Uniform ? std::min(factor_ * cap_, ceiling_)
+                                        : std::min(factor_ * evaluate(x, y), ceiling_);
     }
     /// False for the "none" function (no size criterion).
     bool bounded() const { return kind_ != Kind::None; }
@@ -137,8 +141,9 @@ class SizeFunction {
     double cap() const { return cap_; }
     /// The constant factor of scaled() (1 unless scaled).
     double factor() const { return factor_; }
-    /// s * factor (factor finite and > 0).
-    SizeFunction scaled(double factor) const;
+    /// min(s * factor, ceiling) (factor finite and > 0, ceiling > 0; a product that overflows
+    /// takes the ceiling). A ceiling lowers an earlier one, never raises it.
+    SizeFunction scaled(double factor, double ceiling = kInfinity) const;
     /// One line: "uniform 0.1", "sources: 2 point, 1 line, cap 0.5", the analytic description,
     /// "background mesh: 4 vertices, 2 triangles", "quadtree of (...): 120 leaves, depth 7",
     /// "smoothed (...) on a 64 x 64 grid, gradation 0.3, length 0.03".
@@ -167,6 +172,7 @@ class SizeFunction {
     Kind kind_ = Kind::None;
     double cap_ = kInfinity;
     double factor_ = 1.0;
+    double ceiling_ = kInfinity;
     std::vector<PointSource> points_;
     std::vector<LineSource> lines_;
     std::shared_ptr<const std::function<double(double, double)>> analytic_;
@@ -191,6 +197,13 @@ class SizeFunction {
 /// estimate is unknown (a subnormal box, where the cells' areas and s^2 underflow to 0 / 0).
 double equilateral_count_in_box(const SizeFunction& size, double x0, double y0, double x1,
                                 double y1);
+
+/// Twice the larger side of the bounding box of the points `xy` (2·#V, finite; the largest
+/// double when that overflows or is 0): no edge of a mesh of a domain with those points is as long,
+/// so a size at or above it asks nothing of a generator, and a scaled size may be capped there.
+/// Scales with the points by powers of two (halves of coordinates subtracted: no overflow
+/// before the doubling).
+double size_ceiling_2d(std::span<const double> xy);
 
 /// `--size` text: a number (a uniform size), else the content of a size file. The file holds
 /// one item per line; `#` starts a comment; blank lines are ignored:

@@ -172,6 +172,8 @@ struct AdaptationOutcome {
     bool cycle_geometry_error = false;  ///< a generator's GeometryError ended them
     std::uint32_t cycles_run = 0, derefinement_passes = 0;
     std::uint32_t final_vertices = 0;
+    /// Global remeshing's budget counters (RemeshCounters2::budget_reruns, budget_refusals).
+    std::uint64_t remesh_budget_reruns = 0, remesh_budget_refusals = 0;
     std::string problem;
 };
 
@@ -373,8 +375,13 @@ inline AdaptationOutcome run_adaptation_case(const AdaptationCase& c,
                     return gen::insertion_cycle_2d(state, options, source, insertion_counters);
                 case AdaptationMethod::Steiner:
                     return gen::steiner_restart_cycle_2d(state, options, source, steiner);
-                case AdaptationMethod::Remesh:
-                    return gen::remesh_cycle_2d(state, domain, remesher, options, source, remesh);
+                case AdaptationMethod::Remesh: {
+                    const bool changed =
+                        gen::remesh_cycle_2d(state, domain, remesher, options, source, remesh);
+                    out.remesh_budget_reruns = remesh.budget_reruns;
+                    out.remesh_budget_refusals = remesh.budget_refusals;
+                    return changed;
+                }
                 case AdaptationMethod::LocalRemesh:
                     return gen::local_remesh_cycle_2d(state, options, source, local,
                                                       c.local_factor);

@@ -241,3 +241,38 @@ TEST(Generators_AdaptationFuzzCases, GradedSizeAtTinyFeaturesEndsInOneClearError
         EXPECT_GE(out.cycles_run, 1u);
     }
 }
+
+// fuzz_adaptation_2d (campaign of 2026-12-07, seed 2; tests/data/fuzz/
+// adaptation_2d_size_overflow.bin): global remeshing of the triangle (9.1e-322, 0),
+// (-3.1e231, 3.1e-322), (0.0103, -3.4e30) under the target's 4,000-vertex budget. The budget
+// scaled the first mesh's size field by 1.6e98, which sent the far corner's size (1e231) to
+// infinity, and the second cycle ended in an InputError blaming a size the library itself had
+// made ("is infinity ... a size must be finite"). A scaled size is now capped at twice the
+// domain's extent (size_ceiling_2d), where it asks nothing more of a generator. The frontal
+// generator's boundary discretization then refused the size along the long side (1e88 pieces:
+// sizes near 2e129 over 4e217, which the budget's sampled estimate missed); that refusal
+// (BoundaryBudgetError) now counts as an overshoot: the size is coarsened and tried again, and
+// the cycle ends as a budget refusal. Insertion, h-refinement, Steiner restart and local
+// remeshing adapt the mesh.
+TEST(Generators_AdaptationFuzzCases, BudgetScaledSizeStopsAtTheDomainsExtent) {
+    const std::vector<std::uint8_t> raw = saved_input("adaptation_2d_size_overflow.bin");
+    ASSERT_GT(raw.size(), fz::kAdaptationHeader);
+    for (const std::uint8_t method :
+         {std::uint8_t{0}, std::uint8_t{1}, std::uint8_t{2}, std::uint8_t{3}, std::uint8_t{4}}) {
+        std::vector<std::uint8_t> bytes = raw;
+        bytes[1] = method;
+        const auto c = fz::decode_adaptation_case(bytes.data(), bytes.size());
+        ASSERT_TRUE(c.has_value());
+        const fz::AdaptationOutcome out = fz::run_adaptation_case(*c);
+        EXPECT_EQ(out.problem, "") << int{method};
+        EXPECT_TRUE(out.meshed) << int{method};
+        EXPECT_GE(out.cycles_run, 1u) << int{method};
+        EXPECT_EQ(out.expected_error, "") << int{method};
+        if (method == 3) {
+            // The frontal generator's boundary refuses every coarsening (1e88 pieces at
+            // first): eight runs, then the cycle stops at its budget with the mesh unchanged.
+            EXPECT_EQ(out.remesh_budget_reruns, 7u);
+            EXPECT_EQ(out.remesh_budget_refusals, 1u);
+        }
+    }
+}

@@ -709,3 +709,32 @@ TEST(Generators_SizeFunction, BackgroundFarOutsideATinyTriangleTakesItsValue) {
             EXPECT_EQ(values, reference) << "2^" << k;
     }
 }
+
+TEST(Generators_SizeFunction, ScaledSizeIsCappedNeverInfinite) {
+    // A background mesh whose sizes span 1e-300 to 1e231, scaled by 1e98: the far vertex's size
+    // would overflow; with the ceiling it is the ceiling, and the near one is scaled exactly.
+    const std::vector<double> xy = {0, 0, -3e231, 0, 0, -3e30};
+    const gen::SizeFunction size =
+        gen::SizeFunction::background_mesh(xy, {1e-300, 1e231, 1e30}, {0, 1, 2});
+    const double ceiling = gen::size_ceiling_2d(xy);
+    EXPECT_EQ(ceiling, 6e231);
+    const gen::SizeFunction scaled = size.scaled(1e98, ceiling);
+    EXPECT_EQ(scaled(-3e231, 0), ceiling);
+    EXPECT_DOUBLE_EQ(scaled(0, 0), 1e98 * 1e-300);
+    EXPECT_TRUE(std::isinf(size.scaled(1e98)(-3e231, 0)));
+    // A later ceiling lowers an earlier one, never raises it; the description names it.
+    EXPECT_EQ(scaled.scaled(1, 1e300)(-3e231, 0), ceiling);
+    EXPECT_EQ(scaled.scaled(1, 1e200)(-3e231, 0), 1e200);
+    EXPECT_NE(scaled.describe().find("at most"), std::string::npos);
+    // Scale invariance: the ceiling of the points scaled by 2^k is the ceiling scaled by 2^k,
+    // for every k the points allow; a box spanning beyond the largest double saturates.
+    for (const int k : {-600, -1, 1, 60}) {
+        std::vector<double> s = xy;
+        for (double& v : s) v = std::ldexp(v, k);
+        EXPECT_EQ(gen::size_ceiling_2d(s), std::ldexp(ceiling, k)) << k;
+    }
+    EXPECT_EQ(gen::size_ceiling_2d(std::vector<double>{-1.7e308, 0, 1.7e308, 1}),
+              std::numeric_limits<double>::max());
+    EXPECT_EQ(gen::size_ceiling_2d(std::vector<double>{1, 1, 1, 1}),
+              std::numeric_limits<double>::max());
+}
