@@ -14,16 +14,10 @@ namespace {
 
 /// The cavity and its boundary, kept between insertions so they allocate nothing.
 struct Cavity {
-    struct BoundaryEdge {
-        EdgeIdx inside;   ///< half-edge of a cavity triangle
-        EdgeIdx outside;  ///< its twin, in a triangle that stays
-        VertIdx origin, destination;
-    };
     std::vector<TriIdx> triangles;
-    std::vector<BoundaryEdge> boundary;
-    std::vector<TriIdx> created;
+    std::vector<detail::CavityEdge2> boundary;
     std::vector<std::uint32_t> stamp;  ///< per triangle slot: insertion that visited it
-    std::vector<TriIdx> starting_at;   ///< per vertex (+1 for kInfinite): new triangle on v -> *
+    std::vector<TriIdx> starting_at;   ///< per vertex (+1 for kInfinite), connect_star_2d's
 };
 
 void insert_point(detail::Delaunay2Core& core, Cavity& cavity, VertIdx p, TriIdx seed,
@@ -31,7 +25,6 @@ void insert_point(detail::Delaunay2Core& core, Cavity& cavity, VertIdx p, TriIdx
     TriMesh2& mesh = core.mesh;
     cavity.triangles.clear();
     cavity.boundary.clear();
-    cavity.created.clear();
     if (cavity.stamp.size() < mesh.triangle_slots())
         cavity.stamp.resize(2 * mesh.triangle_slots(), 0);
     cavity.stamp[seed] = stamp;
@@ -53,27 +46,10 @@ void insert_point(detail::Delaunay2Core& core, Cavity& cavity, VertIdx p, TriIdx
         }
     }
     core.counters.cavity_triangles += cavity.triangles.size();
-    // Connect p to each boundary edge o -> d: triangle (o, d, p) is counter-clockwise because
-    // the cavity is star-shaped from p. Its edge d -> p meets edge p -> d of the triangle
-    // built on the boundary edge that starts at d.
-    const std::uint32_t n = mesh.vertex_count();
-    auto slot = [n](VertIdx v) { return v == kInfinite ? n : v; };
     for (const TriIdx t : cavity.triangles) mesh.kill_triangle(t);
-    for (const Cavity::BoundaryEdge& b : cavity.boundary) {
-        const TriIdx t = mesh.new_triangle();
-        cavity.created.push_back(t);
-        mesh.tv[3 * t] = b.origin;
-        mesh.tv[3 * t + 1] = b.destination;
-        mesh.tv[3 * t + 2] = p;
-        mesh.link(3 * t, b.outside);
-        cavity.starting_at[slot(b.origin)] = t;
-    }
-    for (std::size_t i = 0; i < cavity.created.size(); ++i) {
-        const TriIdx t = cavity.created[i];
-        const TriIdx u = cavity.starting_at[slot(cavity.boundary[i].destination)];
-        mesh.link(3 * t + 1, 3 * u + 2);
-    }
-    core.last_triangle = cavity.created.front();
+    core.last_triangle = detail::connect_star_2d(
+        mesh, std::span<const detail::CavityEdge2>(cavity.boundary), p,
+        [&mesh] { return mesh.new_triangle(); }, cavity.starting_at);
 }
 
 }  // namespace

@@ -254,6 +254,10 @@ TriIdx Delaunay2Core::walk_to(VertIdx p) {
             }
         }
     }
+    // The edge a step entered by has p strictly on its left (the step left the other triangle
+    // because p was strictly right of it), so it is not tested again: the same walk, about a
+    // third fewer orientation tests.
+    EdgeIdx entered = kNone;
     for (;;) {
         ++counters.walk_steps;
         if (mesh.is_infinite(t)) break;  // entered across a hull edge that sees p: a conflict
@@ -261,8 +265,10 @@ TriIdx Delaunay2Core::walk_to(VertIdx p) {
         bool moved = false;
         for (std::uint32_t k = 0; k < 3; ++k) {
             const EdgeIdx e = 3 * t + (r + k) % 3;
+            if (e == entered) continue;
             if (orient(mesh.origin(e), mesh.destination(e), p) == Sign::Negative) {
-                t = triangle_of(mesh.twin[e]);
+                entered = mesh.twin[e];
+                t = triangle_of(entered);
                 moved = true;
                 break;
             }

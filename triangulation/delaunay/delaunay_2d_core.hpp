@@ -22,6 +22,45 @@ using predicates::Sign;
 
 using exactmesh::microseconds_since;
 
+/// One edge o -> d of a Bowyer-Watson cavity's boundary: `inside` the half-edge of a cavity
+/// triangle, `outside` its twin in a triangle that stays.
+struct CavityEdge2 {
+    EdgeIdx inside, outside;
+    VertIdx origin, destination;
+};
+
+/// Bowyer-Watson's star of p over a cavity's boundary: a triangle (o, d, p) on each boundary
+/// edge o -> d, counter-clockwise because the cavity is star-shaped from p, in boundary order,
+/// its slot from allocate(); linked across o -> d to `outside`, and its edge d -> p to edge
+/// p -> d of the triangle on the boundary edge that starts at d (unique: the boundary is one
+/// closed cycle), found through `starting_at` (per vertex, the last entry for kInfinite: n + 1
+/// entries). Scanning the boundary's origins instead, as the constrained triangulation's fan
+/// does, made 10^6 uniform points' insertion 11% slower (306 -> 340 ms): here the table's
+/// entries are hot (neighbours in BRIO order) and the scan's loop exits mispredict. Returns the
+/// first new triangle.
+template <class Allocate>
+TriIdx connect_star_2d(TriMesh2& mesh, std::span<const CavityEdge2> boundary, VertIdx p,
+                       Allocate&& allocate, std::vector<TriIdx>& starting_at) {
+    const std::uint32_t n = mesh.vertex_count();
+    const auto slot = [n](VertIdx v) { return v == kInfinite ? n : v; };
+    TriIdx first = kNone;
+    for (const CavityEdge2& b : boundary) {
+        const TriIdx t = allocate();
+        mesh.tv[3 * t] = b.origin;
+        mesh.tv[3 * t + 1] = b.destination;
+        mesh.tv[3 * t + 2] = p;
+        mesh.link(3 * t, b.outside);
+        if (first == kNone) first = t;
+        starting_at[slot(b.origin)] = t;
+    }
+    for (const CavityEdge2& b : boundary) {
+        const TriIdx t = starting_at[slot(b.origin)];
+        const TriIdx u = starting_at[slot(b.destination)];
+        mesh.link(3 * t + 1, 3 * u + 2);
+    }
+    return first;
+}
+
 class Delaunay2Core {
   public:
     /// Validates the input, orders it (options.order) and copies it into mesh.xy.

@@ -75,13 +75,8 @@ struct alignas(128) Worker {
     std::vector<TriIdx> free_slots;
     TriIdx fresh_next = 0, fresh_end = 0;
 
-    struct BoundaryEdge {
-        EdgeIdx inside, outside;
-        VertIdx origin, destination;
-    };
     std::vector<TriIdx> cavity;
-    std::vector<BoundaryEdge> boundary;
-    std::vector<TriIdx> created;
+    std::vector<detail::CavityEdge2> boundary;
     /// This worker's marks in the shared stamps: index, index + stride, index + 2 stride, ...
     /// (stride = the number of workers), so that no two workers ever use the same mark.
     std::uint64_t next_mark = 0, mark_stride = 1;
@@ -175,6 +170,7 @@ struct alignas(128) Worker {
                 }
             }
         }
+        EdgeIdx entered = kNone;  // not tested again, as in Delaunay2Core::walk_to
         for (;;) {
             ++counters.walk_steps;
             if (mesh.is_infinite(t)) break;  // entered across a hull edge that sees p
@@ -182,8 +178,10 @@ struct alignas(128) Worker {
             bool moved = false;
             for (std::uint32_t k = 0; k < 3; ++k) {
                 const EdgeIdx e = 3 * t + (r + k) % 3;
+                if (e == entered) continue;
                 if (orient(shared, mesh.origin(e), mesh.destination(e), p) == Sign::Negative) {
-                    const TriIdx u = triangle_of(mesh.twin[e]);
+                    entered = mesh.twin[e];
+                    const TriIdx u = triangle_of(entered);
                     if (!owns(shared, u)) {
                         // The next points lie near p: their walks start here, not again from
                         // where this one did (which, for points along a border, crossed most
@@ -240,7 +238,6 @@ struct alignas(128) Worker {
         std::vector<TriIdx>& starting_at = *shared.starting_at;
         cavity.clear();
         boundary.clear();
-        created.clear();
         stamp[seed] = mark;
         cavity.push_back(seed);
         // Breadth first over the connected conflict region [Watson81]. A neighbour of a
@@ -267,30 +264,17 @@ struct alignas(128) Worker {
             }
         }
         counters.cavity_triangles += cavity.size();
-        const std::uint32_t n = mesh.vertex_count();
-        auto slot = [n](VertIdx v) { return v == kInfinite ? n : v; };
         for (const TriIdx t : cavity) {
             mesh.tv[3 * t] = mesh.tv[3 * t + 1] = mesh.tv[3 * t + 2] = kNone;
             free_slots.push_back(t);
         }
-        for (const BoundaryEdge& b : boundary) {
-            // The entries of starting_at this writes are its own vertices' (cavity triangles
-            // are ours), so no other worker touches them during the pass.
+        // The entries of starting_at the star may write are its own vertices' (cavity triangles
+        // are ours), so no other worker touches them during the pass.
+        for (const detail::CavityEdge2& b : boundary)
             EM_ASSERT(owns_vertex(shared, b.origin) && owns_vertex(shared, b.destination));
-            const TriIdx t = allocate(mesh);
-            created.push_back(t);
-            mesh.tv[3 * t] = b.origin;
-            mesh.tv[3 * t + 1] = b.destination;
-            mesh.tv[3 * t + 2] = p;
-            mesh.link(3 * t, b.outside);
-            starting_at[slot(b.origin)] = t;
-        }
-        for (std::size_t i = 0; i < created.size(); ++i) {
-            const TriIdx t = created[i];
-            const TriIdx u = starting_at[slot(boundary[i].destination)];
-            mesh.link(3 * t + 1, 3 * u + 2);
-        }
-        last = created.front();
+        last = detail::connect_star_2d(
+            mesh, std::span<const detail::CavityEdge2>(boundary), p, [&] { return allocate(mesh); },
+            starting_at);
         return Outcome::Inserted;
     }
 
