@@ -841,8 +841,11 @@ StretchedDelaunayResult2 stretched_delaunay_2d(const MeshDomain2& domain,
 
     // Step 4.
     const tri::Pslg& pslg = domain.pslg();
+    // Each piece bends only where its input segment may (piece_lines: the chain rule measured
+    // against the input segment, as frontal and metric Delaunay triangulate their pieces).
+    const std::vector<tri::VertIdx> lines = piece_lines(boundary);
     tri::Cdt2Result out = tri::constrained_delaunay_2d(
-        tri::Pslg{xy, boundary.pieces, pslg.holes, pslg.regions}, domain.domain_options());
+        tri::Pslg{xy, boundary.pieces, pslg.holes, pslg.regions, lines}, domain.domain_options());
     restore_input_terms(boundary, out);
     tri::Triangulation2& mesh = out.mesh;
     counters.points = mesh.vertex_count();
