@@ -143,26 +143,28 @@ bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
     for (int attempt = 0;; ++attempt) {
         mesh_options.size = scaled_size(scale);
         // Under a budget, a generator's refusal of the size for its count (the boundary's
-        // pieces, refinement's Steiner budget) is an overshoot of unknown excess: the size is
-        // this cycle's own, so it is coarsened by 4 and tried again, not passed on as the
-        // caller's bad input (the estimate above samples the size and can miss a steep part of
-        // it: tests/data/fuzz/adaptation_2d_size_overflow.bin's long side asked for 1e88 pieces).
-        double excess = 0;
+        // pieces over twice the budget, refinement's Steiner budget) ends the cycle as a budget
+        // refusal: the size is this cycle's own, not the caller's bad input (the estimate above
+        // samples the size and can miss a steep part of it: tests/data/fuzz/
+        // adaptation_2d_size_overflow.bin's long side asked for 1e88 pieces). Not rerun
+        // coarser: each refusal costs a sampling of the boundary up to the budget, and eight of
+        // them made tests/data/fuzz/adaptation_2d_oom_narrow.bin six times slower.
+        ++counters.generator_runs;
+        const auto refused = [&] {
+            ++counters.budget_refusals;
+            return false;
+        };
         try {
             run = generator.run_on_domain(mesh_domain, mesh_options);
-            ++counters.generator_runs;
-            const double count = run.mesh.mesh.vertex_count();
-            if (!budget || count <= most) break;
-            excess = count / most;
         } catch (const BoundaryBudgetError&) {
             if (!budget) throw;
-            ++counters.generator_runs;
-            excess = 16;
+            return refused();
         } catch (const RefinementBudgetError&) {
             if (!budget) throw;
-            ++counters.generator_runs;
-            excess = 16;
+            return refused();
         }
+        const double count = run.mesh.mesh.vertex_count();
+        if (!budget || count <= most) break;
         if (attempt == 7) {
             ++counters.budget_refusals;
             return false;
@@ -170,6 +172,7 @@ bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
         // An area-dominated mesh's count falls as 1 / s^2, a boundary-dominated one's (the
         // quadtree's band) as 1 / s: the first reruns take the square root of the excess, later
         // ones all of it, so that both converge in a few runs.
+        const double excess = count / most;
         scale *= std::max(1.1, 1.05 * (attempt < 2 ? std::sqrt(excess) : excess));
         ++counters.budget_reruns;
     }

@@ -15,8 +15,8 @@
 //    bound, so the factor 2 is the margin), then, should the mesh still overshoot, scaled by
 //    the excess vertices / max_vertices (its square root for the first two reruns; times 1.05,
 //    at least 1.1) and run again, at most 8 runs; a generator's refusal of the size for its
-//    count (BoundaryBudgetError, RefinementBudgetError) counts as an excess of 16. The scaled
-//    size is capped at the domain's extent (size_ceiling_2d: it cannot overflow);
+//    count (BoundaryBudgetError, RefinementBudgetError) ends the cycle as a budget refusal.
+//    The scaled size is capped at the domain's extent (size_ceiling_2d: it cannot overflow);
 //  - local remeshing (local_remesh_cycle_2d): a triangle whose size (the mean of its edge
 //    lengths) and wanted size (the mean of its corners' sizes) differ by more than `factor`
 //    either way is removed; each void (a set of removed triangles connected across edges that
