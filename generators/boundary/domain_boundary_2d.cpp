@@ -88,7 +88,7 @@ struct DensestSample {
     }
 };
 
-/// InputError when the integral asks for more than 2^30 pieces (or is not finite), or for more
+/// BoundaryBudgetError when the integral asks for more than 2^30 pieces (or is not finite), or more
 /// new points than `max_points` (a generator's Steiner budget, 0 for none: the pieces less one
 /// are the points the curve adds); either names the densest sample so far.
 void check_piece_count(double total, const DensestSample& densest, std::uint64_t max_points) {

@@ -135,12 +135,14 @@ class SizeFunction {
     /// writes its variables before evaluating); the others only read what they were built with.
     bool concurrent() const { return kind_ != Kind::Analytic; }
     /// True for point and line sources (point_sources(), line_sources(), cap(), factor() then
-    /// give the whole function: factor * min(cap, sum of the sources)).
+    /// give the whole function: factor * min(cap, sum of the sources), at most ceiling()).
     bool is_sources() const { return kind_ == Kind::Sources; }
     /// H: the uniform size (uniform), the cap of the sources (+infinity for none).
     double cap() const { return cap_; }
     /// The constant factor of scaled() (1 unless scaled).
     double factor() const { return factor_; }
+    /// The ceiling of scaled() (+infinity unless given): every value is at most this.
+    double ceiling() const { return ceiling_; }
     /// min(s * factor, ceiling) (factor finite and > 0, ceiling > 0; a product that overflows
     /// takes the ceiling). A ceiling lowers an earlier one, never raises it.
     SizeFunction scaled(double factor, double ceiling = kInfinity) const;
