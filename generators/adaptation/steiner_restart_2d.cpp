@@ -180,6 +180,8 @@ bool steiner_restart_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& opt
     std::optional<RefinementResult2> refined;
     if (!budget || kept < options.max_vertices) {
         const triangulation::Pslg pslg{state.mesh.xy, segments, state.holes, {}};
+        // A scaled size is capped at the mesh's extent, as global remeshing's is.
+        const double ceiling = size_ceiling_2d(state.mesh.xy);
         for (std::uint32_t run = 0; run < kSteinerBudgetRuns; ++run) {
             // A factor that overflowed (an estimate of infinity: a mesh spanning 1e-309 to
             // 3e231, whose areas overflow even in its unit scale) cannot bring the size under
@@ -187,9 +189,7 @@ bool steiner_restart_cycle_2d(AdaptiveMesh2& state, const AdaptationOptions& opt
             if (!std::isfinite(factor)) break;
             RefinementOptions2 refinement;
             refinement.min_angle = kGuaranteedMinAngle;
-            // Capped at the mesh's extent, as global remeshing's scaled size is.
-            refinement.size =
-                factor == 1 ? size : size.scaled(factor, size_ceiling_2d(state.mesh.xy));
+            refinement.size = factor == 1 ? size : size.scaled(factor, ceiling);
             // Under a vertex budget, refinement's own Steiner budget is a few times the room
             // left, and a run that reaches it (or whose size asks for more at once) is redone
             // coarser: the estimate above takes the size at the old mesh's vertices, and a size

@@ -69,7 +69,8 @@ struct DomainBoundary2 {
 /// The discretization's refusal of a size asking for too many boundary pieces: more than 2^30
 /// on one curve or segment, more than 2^24 samples to integrate, or more new points than the
 /// generator's budget. An InputError naming the densest place; a caller that made the size
-/// itself (global remeshing under a vertex budget) coarsens it and tries again.
+/// itself (global remeshing under a vertex budget) ends at its budget on it instead of passing
+/// it on as the user's bad input.
 class BoundaryBudgetError : public InputError {
   public:
     using InputError::InputError;
