@@ -21,12 +21,11 @@ inline double orient2d_fast(const double* a, const double* b, const double* c) n
     return adx * bdy - ady * bdx;
 }
 
-/// Stage A: the sign when the floating-point evaluation certifies it, std::nullopt otherwise.
-/// The evaluation order below is the one modelled in proofs/gappa/orient2d_filter.g.
-inline std::optional<Sign> orient2d_filter(const double* a, const double* b,
-                                           const double* c) noexcept {
-    const double adx = a[0] - c[0], bdx = b[0] - c[0];
-    const double ady = a[1] - c[1], bdy = b[1] - c[1];
+/// Stage A on the differences a - c and b - c, computed by the caller as orient2d_filter
+/// computes them (adx = a[0] - c[0], ...): the same evaluation, so the same proof. A caller
+/// testing one point c against several edges takes each difference once.
+inline std::optional<Sign> orient2d_filter_differences(double adx, double ady, double bdx,
+                                                       double bdy) noexcept {
     const double det = adx * bdy - ady * bdx;
     const double maxx = std::max(std::fabs(adx), std::fabs(bdx));
     const double maxy = std::max(std::fabs(ady), std::fabs(bdy));
@@ -41,6 +40,13 @@ inline std::optional<Sign> orient2d_filter(const double* a, const double* b,
     return std::nullopt;
 }
 
+/// Stage A: the sign when the floating-point evaluation certifies it, std::nullopt otherwise.
+/// The evaluation order below is the one modelled in proofs/gappa/orient2d_filter.g.
+inline std::optional<Sign> orient2d_filter(const double* a, const double* b,
+                                           const double* c) noexcept {
+    return orient2d_filter_differences(a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]);
+}
+
 /// Stages B-D: always the exact sign. Throws GeometryError on NaN or infinite input.
 Sign orient2d_exact(const double* a, const double* b, const double* c);
 
@@ -48,6 +54,18 @@ Sign orient2d_exact(const double* a, const double* b, const double* c);
 inline Sign orient2d(const double* a, const double* b, const double* c) {
     EM_STAT(orient2d, calls);
     if (const auto s = orient2d_filter(a, b, c)) {
+        EM_STAT(orient2d, filter);
+        return *s;
+    }
+    return orient2d_exact(a, b, c);
+}
+
+/// orient2d(a, b, c) given the differences a - c and b - c (orient2d_filter_differences): for
+/// a caller that tests one point c against several edges and takes each difference once.
+inline Sign orient2d_with_differences(const double* a, const double* b, const double* c, double adx,
+                                      double ady, double bdx, double bdy) {
+    EM_STAT(orient2d, calls);
+    if (const auto s = orient2d_filter_differences(adx, ady, bdx, bdy)) {
         EM_STAT(orient2d, filter);
         return *s;
     }

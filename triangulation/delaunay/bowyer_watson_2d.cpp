@@ -2,6 +2,7 @@
 // Bowyer-Watson 2D (see bowyer_watson_2d.hpp).
 #include "triangulation/delaunay/bowyer_watson_2d.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <vector>
 
@@ -12,44 +13,94 @@ namespace exactmesh::triangulation {
 
 namespace {
 
-/// The cavity and its boundary, kept between insertions so they allocate nothing.
-struct Cavity {
-    std::vector<TriIdx> triangles;
-    std::vector<detail::CavityEdge2> boundary;
-    std::vector<std::uint32_t> stamp;  ///< per triangle slot: insertion that visited it
-    std::vector<TriIdx> starting_at;   ///< per vertex (+1 for kInfinite), connect_star_2d's
+/// A triangle of the cavity and its vertices, read before its slot was marked dead.
+struct CavityTriangle {
+    TriIdx triangle;
+    VertIdx v[3];
 };
 
-void insert_point(detail::Delaunay2Core& core, Cavity& cavity, VertIdx p, TriIdx seed,
-                  std::uint32_t stamp) {
+/// The cavity and its boundary, kept between insertions so they allocate nothing.
+struct Cavity {
+    std::vector<CavityTriangle> triangles;
+    std::vector<detail::CavityEdge2> boundary;
+    std::vector<TriIdx> starting_at;  ///< per vertex (+1 for kInfinite), connect_star_2d's
+};
+
+/// New triangle slots: the free list first, then slots past the last one used, made in blocks
+/// (one growth of tv and twin per block, not one per triangle). Slots made and not used stay
+/// dead (tv == kNone); the result's compaction skips them.
+class FreshSlots {
+  public:
+    explicit FreshSlots(TriMesh2& mesh) : mesh_(mesh), next_(mesh.triangle_slots()) {}
+
+    /// Room for `slots` slots in all without another growth.
+    void reserve(std::size_t slots) {
+        if (slots > mesh_.triangle_slots()) grow(slots - mesh_.triangle_slots());
+    }
+
+    TriIdx take() {
+        if (!mesh_.free_triangles.empty()) {
+            const TriIdx t = mesh_.free_triangles.back();
+            mesh_.free_triangles.pop_back();
+            return t;
+        }
+        if (next_ == mesh_.triangle_slots()) grow(std::max<std::size_t>(1024, next_ / 4));
+        return next_++;
+    }
+
+  private:
+    void grow(std::size_t slots) {
+        mesh_.tv.resize(mesh_.tv.size() + 3 * slots, kNone);
+        mesh_.twin.resize(mesh_.twin.size() + 3 * slots, kNone);
+    }
+
+    TriMesh2& mesh_;
+    TriIdx next_;
+};
+
+/// Inserts p, whose walk ended in `seed` (in conflict with p). A cavity triangle is marked dead
+/// (tv[3t] = kNone) when found, so the search needs no visited marks: the conflict test reads
+/// that entry anyway. The star's triangles take the cavity's slots, last found first (the
+/// order a free list gave them before: the same numbering), then fresh ones.
+void insert_point(detail::Delaunay2Core& core, Cavity& cavity, FreshSlots& fresh, VertIdx p,
+                  TriIdx seed) {
     TriMesh2& mesh = core.mesh;
     cavity.triangles.clear();
     cavity.boundary.clear();
-    if (cavity.stamp.size() < mesh.triangle_slots())
-        cavity.stamp.resize(2 * mesh.triangle_slots(), 0);
-    cavity.stamp[seed] = stamp;
-    cavity.triangles.push_back(seed);
+    const auto take = [&mesh, &cavity](TriIdx t) {
+        VertIdx* const v = &mesh.tv[3 * static_cast<std::size_t>(t)];
+        cavity.triangles.push_back({t, {v[0], v[1], v[2]}});
+        v[0] = kNone;
+    };
+    take(seed);
     // Breadth first: the conflict region is connected [Watson81], so its boundary is reached.
     for (std::size_t i = 0; i < cavity.triangles.size(); ++i) {
-        const TriIdx t = cavity.triangles[i];
+        const CavityTriangle c = cavity.triangles[i];
         for (unsigned k = 0; k < 3; ++k) {
-            const EdgeIdx e = 3 * t + k;
+            const EdgeIdx e = 3 * c.triangle + k;
             const EdgeIdx f = mesh.twin[e];
             const TriIdx u = triangle_of(f);
-            if (cavity.stamp[u] == stamp) continue;
+            if (mesh.is_dead(u)) continue;  // in the cavity already
             if (core.conflict(u, p)) {
-                cavity.stamp[u] = stamp;
-                cavity.triangles.push_back(u);
+                take(u);
             } else {
-                cavity.boundary.push_back({e, f, mesh.origin(e), mesh.destination(e)});
+                cavity.boundary.push_back({e, f, c.v[k], c.v[k == 2 ? 0 : k + 1]});
             }
         }
     }
-    core.counters.cavity_triangles += cavity.triangles.size();
-    for (const TriIdx t : cavity.triangles) mesh.kill_triangle(t);
+    const std::size_t removed = cavity.triangles.size();
+    core.counters.cavity_triangles += removed;
+    // Slots the star does not take go to the free list, first found first, dead in full.
+    const std::size_t star = cavity.boundary.size();
+    const std::size_t spare = removed > star ? removed - star : 0;
+    for (std::size_t i = 0; i < spare; ++i) mesh.kill_triangle(cavity.triangles[i].triangle);
+    std::size_t next = removed;
     core.last_triangle = detail::connect_star_2d(
         mesh, std::span<const detail::CavityEdge2>(cavity.boundary), p,
-        [&mesh] { return mesh.new_triangle(); }, cavity.starting_at);
+        [&cavity, &fresh, &next, spare] {
+            return next > spare ? cavity.triangles[--next].triangle : fresh.take();
+        },
+        cavity.starting_at);
 }
 
 }  // namespace
@@ -74,12 +125,14 @@ Delaunay2Result bowyer_watson_2d(std::span<const double> xy, const Delaunay2Opti
     phase = Clock::now();
     Cavity cavity;
     cavity.starting_at.assign(core.mesh.vertex_count() + 1, kNone);
-    std::uint32_t stamp = 0;
+    FreshSlots fresh(core.mesh);
+    // 2n - 2 triangles in all (the infinite ones too) when no point is merged.
+    fresh.reserve(2 * static_cast<std::size_t>(core.mesh.vertex_count()));
     for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
         if (skip[p]) continue;
         const TriIdx t = core.locate(p);
         if (t == kNone) continue;  // duplicate, merged
-        insert_point(core, cavity, p, t, ++stamp);
+        insert_point(core, cavity, fresh, p, t);
         core.note_inserted(p);
         core.progress.tick();
     }
