@@ -13,15 +13,9 @@ namespace exactmesh::triangulation {
 
 namespace {
 
-/// A triangle of the cavity and its vertices, read before its slot was marked dead.
-struct CavityTriangle {
-    TriIdx triangle;
-    VertIdx v[3];
-};
-
 /// The cavity and its boundary, kept between insertions so they allocate nothing.
 struct Cavity {
-    std::vector<CavityTriangle> triangles;
+    std::vector<detail::CavityTriangle2> triangles;
     std::vector<detail::CavityEdge2> boundary;
     std::vector<TriIdx> starting_at;  ///< per vertex (+1 for kInfinite), connect_star_2d's
 };
@@ -58,49 +52,18 @@ class FreshSlots {
     TriIdx next_;
 };
 
-/// Inserts p, whose walk ended in `seed` (in conflict with p). A cavity triangle is marked dead
-/// (tv[3t] = kNone) when found, so the search needs no visited marks: the conflict test reads
-/// that entry anyway. The star's triangles take the cavity's slots, last found first (the
-/// order a free list gave them before: the same numbering), then fresh ones.
+/// Inserts p, whose walk ended in `seed` (in conflict with p).
 void insert_point(detail::Delaunay2Core& core, Cavity& cavity, FreshSlots& fresh, VertIdx p,
                   TriIdx seed) {
     TriMesh2& mesh = core.mesh;
-    cavity.triangles.clear();
-    cavity.boundary.clear();
-    const auto take = [&mesh, &cavity](TriIdx t) {
-        VertIdx* const v = &mesh.tv[3 * static_cast<std::size_t>(t)];
-        cavity.triangles.push_back({t, {v[0], v[1], v[2]}});
-        v[0] = kNone;
-    };
-    take(seed);
-    // Breadth first: the conflict region is connected [Watson81], so its boundary is reached.
-    for (std::size_t i = 0; i < cavity.triangles.size(); ++i) {
-        const CavityTriangle c = cavity.triangles[i];
-        for (unsigned k = 0; k < 3; ++k) {
-            const EdgeIdx e = 3 * c.triangle + k;
-            const EdgeIdx f = mesh.twin[e];
-            const TriIdx u = triangle_of(f);
-            if (mesh.is_dead(u)) continue;  // in the cavity already
-            if (core.conflict(u, p)) {
-                take(u);
-            } else {
-                cavity.boundary.push_back({e, f, c.v[k], c.v[k == 2 ? 0 : k + 1]});
-            }
-        }
-    }
-    const std::size_t removed = cavity.triangles.size();
-    core.counters.cavity_triangles += removed;
-    // Slots the star does not take go to the free list, first found first, dead in full.
-    const std::size_t star = cavity.boundary.size();
-    const std::size_t spare = removed > star ? removed - star : 0;
-    for (std::size_t i = 0; i < spare; ++i) mesh.kill_triangle(cavity.triangles[i].triangle);
-    std::size_t next = removed;
-    core.last_triangle = detail::connect_star_2d(
-        mesh, std::span<const detail::CavityEdge2>(cavity.boundary), p,
-        [&cavity, &fresh, &next, spare] {
-            return next > spare ? cavity.triangles[--next].triangle : fresh.take();
-        },
-        cavity.starting_at);
+    detail::find_cavity_2d(
+        mesh, seed, cavity.triangles, cavity.boundary,
+        [&core, p](TriIdx u) { return core.conflict(u, p); }, [](TriIdx) { return true; });
+    core.counters.cavity_triangles += cavity.triangles.size();
+    core.last_triangle = detail::replace_cavity_2d(
+        mesh, std::span<const detail::CavityTriangle2>(cavity.triangles),
+        std::span<const detail::CavityEdge2>(cavity.boundary), p, [&fresh] { return fresh.take(); },
+        [&mesh](TriIdx t) { mesh.free_triangles.push_back(t); }, cavity.starting_at);
 }
 
 }  // namespace

@@ -48,12 +48,6 @@ struct Shared {
     std::span<const std::uint32_t> keys;  ///< per mesh vertex: the key of this pass's curve
     const std::vector<VertIdx>& input_index;
     std::vector<VertIdx>& merged_into;
-    /// Per triangle slot: the mark of the last insertion attempt that visited it. A worker
-    /// writes only the slots of its triangles; it reads those and the mixed ones, which no one
-    /// writes during a pass (and marks are unique, so another worker's old mark never matches).
-    /// 32 bits (half the cache lines of 64): ParallelConstruction::keep_marks_in_range
-    /// restarts the marks before they could wrap.
-    std::vector<std::uint32_t>* stamp = nullptr;
     /// Per vertex (+1 for kInfinite): the new triangle on edge v -> * of the current insertion.
     /// A worker writes only the entries of cavity boundary vertices, which are in its range.
     std::vector<TriIdx>* starting_at = nullptr;
@@ -66,7 +60,7 @@ enum class Outcome { Inserted, Merged, Deferred };
 
 /// One thread's partition, allocator, scratch and counters (kept from pass to pass, so a thread
 /// reuses the slots it freed, near where it works).
-/// Aligned to whole cache-line pairs: the counters and marks one worker writes on every
+/// Aligned to whole cache-line pairs: the counters and scratch one worker writes on every
 /// predicate and insertion must not share a line (or the adjacent-line prefetch pair) with what
 /// the next worker reads on every triangle (its range).
 struct alignas(128) Worker {
@@ -75,11 +69,8 @@ struct alignas(128) Worker {
     std::vector<TriIdx> free_slots;
     TriIdx fresh_next = 0, fresh_end = 0;
 
-    std::vector<TriIdx> cavity;
+    std::vector<detail::CavityTriangle2> cavity;
     std::vector<detail::CavityEdge2> boundary;
-    /// This worker's marks in the shared stamps: index, index + stride, index + 2 stride, ...
-    /// (stride = the number of workers), so that no two workers ever use the same mark.
-    std::uint64_t next_mark = 0, mark_stride = 1;
     TriIdx last = kNone;  ///< where the next walk starts (a triangle of ours)
     std::uint64_t rng_state = 0x9E3779B97F4A7C15ull;
 
@@ -170,33 +161,15 @@ struct alignas(128) Worker {
                 }
             }
         }
-        EdgeIdx entered = kNone;  // not tested again, as in Delaunay2Core::walk_to
-        for (;;) {
-            ++counters.walk_steps;
-            if (mesh.is_infinite(t)) break;  // entered across a hull edge that sees p
-            const std::uint32_t r = random_offset();
-            bool moved = false;
-            for (std::uint32_t k = 0; k < 3; ++k) {
-                const EdgeIdx e = 3 * t + (r + k) % 3;
-                if (e == entered) continue;
-                if (orient(shared, mesh.origin(e), mesh.destination(e), p) == Sign::Negative) {
-                    entered = mesh.twin[e];
-                    const TriIdx u = triangle_of(entered);
-                    if (!owns(shared, u)) {
-                        // The next points lie near p: their walks start here, not again from
-                        // where this one did (which, for points along a border, crossed most
-                        // of the partition each time).
-                        last = t;
-                        return kNone;
-                    }
-                    t = u;
-                    moved = true;
-                    break;
-                }
-            }
-            if (!moved) break;
-        }
-        return t;
+        // Leaving the partition: the next points lie near p, so their walks start here, not
+        // again from where this one did (which, for points along a border, crossed most of the
+        // partition each time).
+        TriIdx stopped = kNone;
+        const TriIdx found = detail::visibility_walk_2d(
+            mesh, t, p, counters, [this, &shared](TriIdx u) { return owns(shared, u); },
+            [this] { return random_offset(); }, stopped);
+        if (found == kNone) last = stopped;
+        return found;
     }
 
     /// Inserts p (Bowyer-Watson, as bowyer_watson_2d's insert_point) when its walk and cavity
@@ -227,54 +200,25 @@ struct alignas(128) Worker {
                 }
             }
         }
-        std::vector<std::uint32_t>& stamp = *shared.stamp;
-        if (stamp.size() < mesh.triangle_slots()) {
-            EM_ASSERT(owns_all);  // workers find it sized for the pass
-            stamp.resize(2 * static_cast<std::size_t>(mesh.triangle_slots()), 0);
-        }
-        next_mark += mark_stride;
-        EM_ASSERT(next_mark <= UINT32_MAX);
-        const auto mark = static_cast<std::uint32_t>(next_mark);
-        std::vector<TriIdx>& starting_at = *shared.starting_at;
-        cavity.clear();
-        boundary.clear();
-        stamp[seed] = mark;
-        cavity.push_back(seed);
-        // Breadth first over the connected conflict region [Watson81]. A neighbour of a
-        // triangle of ours is ours or mixed (they share two vertices), so reading it is safe;
-        // a mixed one may bound the cavity but not join it.
-        for (std::size_t i = 0; i < cavity.size(); ++i) {
-            const TriIdx t = cavity[i];
-            for (unsigned k = 0; k < 3; ++k) {
-                const EdgeIdx e = 3 * t + k;
-                const EdgeIdx f = mesh.twin[e];
-                const TriIdx u = triangle_of(f);
-                if (stamp[u] == mark) continue;
-                if (conflict(shared, u, p)) {
-                    if (!owns(shared, u)) {
-                        last = seed;  // ours and untouched: near the next points
-                        if (seed <= kHintIndex) hint = seed;
-                        return Outcome::Deferred;
-                    }
-                    stamp[u] = mark;
-                    cavity.push_back(u);
-                } else {
-                    boundary.push_back({e, f, mesh.origin(e), mesh.destination(e)});
-                }
-            }
+        // A neighbour of a triangle of ours is ours or mixed (they share two vertices), so
+        // reading it is safe; a mixed one may bound the cavity but not join it. The cavity's
+        // dead marks are on triangles of ours, which no other worker reads.
+        if (!detail::find_cavity_2d(
+                mesh, seed, cavity, boundary, [&](TriIdx u) { return conflict(shared, u, p); },
+                [&](TriIdx u) { return owns(shared, u); })) {
+            last = seed;  // ours and untouched: near the next points
+            if (seed <= kHintIndex) hint = seed;
+            return Outcome::Deferred;
         }
         counters.cavity_triangles += cavity.size();
-        for (const TriIdx t : cavity) {
-            mesh.tv[3 * t] = mesh.tv[3 * t + 1] = mesh.tv[3 * t + 2] = kNone;
-            free_slots.push_back(t);
-        }
         // The entries of starting_at the star may write are its own vertices' (cavity triangles
         // are ours), so no other worker touches them during the pass.
         for (const detail::CavityEdge2& b : boundary)
             EM_ASSERT(owns_vertex(shared, b.origin) && owns_vertex(shared, b.destination));
-        last = detail::connect_star_2d(
-            mesh, std::span<const detail::CavityEdge2>(boundary), p, [&] { return allocate(mesh); },
-            starting_at);
+        last = detail::replace_cavity_2d(
+            mesh, std::span<const detail::CavityTriangle2>(cavity),
+            std::span<const detail::CavityEdge2>(boundary), p, [&] { return allocate(mesh); },
+            [this](TriIdx t) { free_slots.push_back(t); }, *shared.starting_at);
         return Outcome::Inserted;
     }
 
@@ -386,7 +330,6 @@ struct Prepared {
     std::vector<std::uint32_t> keys[2];
     std::vector<VertIdx> tv;
     std::vector<EdgeIdx> twin;
-    std::vector<std::uint32_t> stamp;
     std::vector<TriIdx> starting_at;  ///< n + 1 entries kNone (ParallelConstruction's)
     std::vector<TriIdx> hints;        ///< n entries kNone
 };
@@ -417,7 +360,7 @@ Prepared prepare(std::span<const double> xy, std::uint64_t seed, unsigned thread
     detail::run_together(
         arena, [&] { out.order = brio_order(out.keys[0], position, true); },
         [&] { make_array(out.tv, 3 * slots, kNone); },
-        [&] { make_array(out.twin, 3 * slots, kNone); }, [&] { make_array(out.stamp, slots, 0u); },
+        [&] { make_array(out.twin, 3 * slots, kNone); },
         [&] {
             out.starting_at.assign(n + 1, kNone);
             out.hints.assign(n, kNone);
@@ -439,49 +382,24 @@ class ParallelConstruction {
         TriMesh2& mesh = core.mesh;
         // The prepared arrays take the first triangles' entries and replace the mesh's.
         high_water_ = mesh.triangle_slots();
-        EM_ASSERT(prepared.tv.size() >= mesh.tv.size() && prepared.stamp.size() >= high_water_);
+        EM_ASSERT(prepared.tv.size() >= mesh.tv.size());
         std::copy(mesh.tv.begin(), mesh.tv.end(), prepared.tv.begin());
         std::copy(mesh.twin.begin(), mesh.twin.end(), prepared.twin.begin());
         mesh.tv.swap(prepared.tv);
         mesh.twin.swap(prepared.twin);
-        stamp_.swap(prepared.stamp);
         detail::keys_by_mesh_vertex(runner_, arena_, core.input_index, prepared.keys, keys_);
         shared_.keys = keys_[0];
         starting_at_.swap(prepared.starting_at);
         EM_ASSERT(starting_at_.size() == std::size_t{n} + 1);
         shared_.starting_at = &starting_at_;
-        shared_.stamp = &stamp_;
         hints_.swap(prepared.hints);
         EM_ASSERT(hints_.size() == n);
         shared_.hints = &hints_;
         sequential_.owns_all = true;
-        restart_marks();
-    }
-
-    /// Worker w's marks are w + k (T + 1), the sequential worker's T + k (T + 1), k >= 1.
-    void restart_marks() {
-        const std::size_t stride = workers_.size() + 1;
-        for (std::size_t w = 0; w < workers_.size(); ++w) {
-            workers_[w].next_mark = w;
-            workers_[w].mark_stride = stride;
-        }
-        sequential_.next_mark = workers_.size();
-        sequential_.mark_stride = stride;
-    }
-
-    /// Clears the stamps and restarts the marks when `attempts` more insertions by one worker
-    /// could take a mark past 32 bits (never below about 4·10^9 / (T + 1) insertions).
-    void keep_marks_in_range(std::size_t attempts) {
-        std::uint64_t highest = sequential_.next_mark;
-        for (const Worker& worker : workers_) highest = std::max(highest, worker.next_mark);
-        if (highest + (workers_.size() + 1) * (attempts + 1) <= UINT32_MAX) return;
-        std::fill(stamp_.begin(), stamp_.end(), 0u);
-        restart_marks();
     }
 
     /// Inserts `points` one by one (the prefix and the tail).
     void insert_sequentially(std::span<const VertIdx> points) {
-        keep_marks_in_range(points.size());
         sequential_.last = core_.last_triangle;
         sequential_.fresh_next = high_water_;
         sequential_.fresh_end = core_.mesh.triangle_slots();
@@ -525,10 +443,6 @@ class ParallelConstruction {
             mesh.tv.resize(3 * slots, kNone);
             mesh.twin.resize(3 * slots, kNone);
         }
-        if (stamp_.size() < mesh.triangle_slots()) stamp_.resize(mesh.triangle_slots(), 0);
-        std::size_t attempts = 0;
-        for (const Worker& worker : workers_) attempts = std::max(attempts, worker.points.size());
-        keep_marks_in_range(attempts);
         for (Worker& worker : workers_) {
             find_start(worker);
         }
@@ -591,7 +505,6 @@ class ParallelConstruction {
 
     detail::Delaunay2Core& core_;
     std::vector<std::uint32_t> keys_[2];
-    std::vector<std::uint32_t> stamp_;
     /// Slots below it were handed out (some are dead or still free); the arrays' slots from it
     /// on are unused (dead).
     TriIdx high_water_ = 0;
