@@ -69,7 +69,7 @@ inline std::uint32_t walk_random_offset(std::uint64_t& state) {
     return static_cast<std::uint32_t>(state >> 40) & 3u;
 }
 
-/// Visibility walk [Devillers, Pion, Teillaud 2002] from the finite
+/// Remembering stochastic visibility walk [Devillers, Pion, Teillaud 2002] from the finite
 /// tetrahedron `t` towards p, entering a neighbour only when may_enter(neighbour): otherwise
 /// it stops, returning kNone, with `t` the last tetrahedron it stood in. On arrival `t` is the
 /// tetrahedron returned. Orientations are counted in counters.orient_calls, steps in walk_steps.
@@ -81,26 +81,15 @@ Location3 walk_3d(const TetMesh3& mesh, TetIdx& t, VertIdx p, std::uint64_t& rng
     const double* const q = mesh.point(p);
     // The face we came through has p strictly on this side: the walk does not test it again.
     FaceIdx entered = kNone;
-    const std::uint64_t deterministic_steps = mesh.tet_slots();
-    std::uint64_t steps = 0;
     for (;;) {
         ++counters.walk_steps;
-        ++steps;
         const VertIdx* v = &tv[4 * std::size_t{t}];
         if (v[kInfiniteSlot] == kInfinite) return {t, 0};  // crossed a hull face that sees p
         // orient3d inline (the filter decides almost every call): the tetrahedron's corners
         // are looked up once for its faces.
         const double* corner[4] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
                                    mesh.point(v[3])};
-        // The faces in a fixed order, from the one after the entered face: in a (perturbed)
-        // Delaunay tetrahedralization the visibility walk never comes back to a tetrahedron
-        // [Edelsbrunner 1990; DPT02 §2], so it needs no random choice. At 10^6 uniform points
-        // the construction took about 8% less time so (random choices mispredict), with 14.47
-        // orientation tests per point against 14.05. Past as many steps as there are slots
-        // (only on a tetrahedralization that is not Delaunay) the order is random again.
-        const std::uint32_t r = steps > deterministic_steps ? walk_random_offset(rng)
-                                : entered == kNone          ? 0u
-                                                            : (entered + 1) & 3u;
+        const std::uint32_t r = walk_random_offset(rng);
         unsigned zeros = 0;
         bool moved = false;
         for (std::uint32_t i = 0; i < 4; ++i) {
