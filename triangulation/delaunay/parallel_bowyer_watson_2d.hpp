@@ -22,9 +22,10 @@
 // wrapping): moving the boundaries along the same curve does not help, since its half and quarter
 // ranges share the dyadic border lines. On 10^6 uniform points and 2 threads about 98.9% of the
 // points go through the threads; the tail (0.35%) is mostly points next to the hull, whose
-// cavities meet long hull triangles spanning ranges. Memory: one stamp and one starting_at array
-// shared by all threads (each writes only entries of its own triangles and vertices), so it
-// does not grow with the thread count. ThreadSanitizer (libtbb uninstrumented; release/acquire
+// cavities meet long hull triangles spanning ranges. Memory: one starting_at array shared by
+// all threads (each writes only entries of its own vertices), so it does not grow with the
+// thread count; a cavity's triangles are marked dead in tv while it grows (own triangles, which
+// no other thread reads) and unmarked when the point is deferred. ThreadSanitizer (libtbb uninstrumented; release/acquire
 // pairs make the task boundaries visible) reports nothing on the unit tests.
 // Invariant: the Delaunay triangulation under the shared symbolic perturbation (by input index)
 // is unique, so the result has exactly the triangles of the sequential construction (tested
