@@ -15,8 +15,7 @@ namespace {
 
 /// The cavity and its boundary, kept between insertions so they allocate nothing.
 struct Cavity {
-    std::vector<detail::CavityTriangle2> triangles;
-    std::vector<detail::CavityEdge2> boundary;
+    detail::Cavity2 region;
     std::vector<TriIdx> starting_at;  ///< per vertex (+1 for kInfinite), connect_star_2d's
 };
 
@@ -56,14 +55,14 @@ class FreshSlots {
 void insert_point(detail::Delaunay2Core& core, Cavity& cavity, FreshSlots& fresh, VertIdx p,
                   TriIdx seed) {
     TriMesh2& mesh = core.mesh;
-    detail::find_cavity_2d(
-        mesh, seed, cavity.triangles, cavity.boundary,
-        [&core, p](TriIdx u) { return core.conflict(u, p); }, [](TriIdx) { return true; });
-    core.counters.cavity_triangles += cavity.triangles.size();
+    cavity.region.find(
+        mesh, seed, [&core, p](TriIdx u) { return core.conflict(u, p); },
+        [](TriIdx) { return true; });
+    core.counters.cavity_triangles += cavity.region.triangles().size();
     core.last_triangle = detail::replace_cavity_2d(
-        mesh, std::span<const detail::CavityTriangle2>(cavity.triangles),
-        std::span<const detail::CavityEdge2>(cavity.boundary), p, [&fresh] { return fresh.take(); },
-        [&mesh](TriIdx t) { mesh.free_triangles.push_back(t); }, cavity.starting_at);
+        mesh, cavity.region.triangles(), cavity.region.boundary(), p,
+        [&fresh] { return fresh.take(); }, [&mesh](TriIdx t) { mesh.free_triangles.push_back(t); },
+        cavity.starting_at);
 }
 
 }  // namespace

@@ -36,43 +36,64 @@ struct CavityTriangle2 {
     VertIdx v[3];
 };
 
-/// Bowyer-Watson's conflict region of p grown from `seed` (in conflict with p), breadth first
-/// (it is connected [Watson81]): its triangles into `cavity`, its boundary edges (o -> d with
-/// the cavity on the left) into `boundary`. `conflict(u)` tells whether p lies in the perturbed
-/// circumcircle of the live triangle u; `may_join(u)` whether u may join (a parallel worker's
-/// partition). A triangle is marked dead (tv[3t] = kNone) when it joins, so the search needs no
-/// visit marks: the conflict test reads that entry anyway. When a triangle in conflict may not
-/// join, the marks are undone and it returns false: the mesh is as it was.
-template <class Conflict, class MayJoin>
-bool find_cavity_2d(TriMesh2& mesh, TriIdx seed, std::vector<CavityTriangle2>& cavity,
-                    std::vector<CavityEdge2>& boundary, Conflict&& conflict, MayJoin&& may_join) {
-    cavity.clear();
-    boundary.clear();
-    const auto join = [&mesh, &cavity](TriIdx t) {
-        VertIdx* const v = &mesh.tv[3 * static_cast<std::size_t>(t)];
-        cavity.push_back({t, {v[0], v[1], v[2]}});
-        v[0] = kNone;
-    };
-    join(seed);
-    for (std::size_t i = 0; i < cavity.size(); ++i) {
-        const CavityTriangle2 c = cavity[i];
-        for (unsigned k = 0; k < 3; ++k) {
-            const EdgeIdx e = 3 * c.triangle + k;
-            const EdgeIdx f = mesh.twin[e];
-            const TriIdx u = triangle_of(f);
-            if (mesh.is_dead(u)) continue;  // in the cavity already
-            if (!conflict(u)) {
-                boundary.push_back({e, f, c.v[k], c.v[k == 2 ? 0 : k + 1]});
-            } else if (may_join(u)) {
-                join(u);
-            } else {
-                for (const CavityTriangle2& t : cavity) mesh.tv[3 * t.triangle] = t.v[0];
-                return false;
+/// A Bowyer-Watson cavity: its triangles and its boundary edges (o -> d with the cavity on the
+/// left), in buffers kept between insertions that grow and never shrink, written through counts
+/// (a vector's growth check per entry cost about a tenth of 2D insertion's instructions).
+class Cavity2 {
+  public:
+    std::span<const CavityTriangle2> triangles() const {
+        return {triangles_.data(), triangle_count_};
+    }
+    std::span<const CavityEdge2> boundary() const { return {boundary_.data(), boundary_count_}; }
+
+    /// The conflict region of p grown from `seed` (in conflict with p), breadth first (it is
+    /// connected [Watson81]). `conflict(u)` tells whether p lies in the perturbed circumcircle
+    /// of the live triangle u; `may_join(u)` whether u may join (a parallel worker's
+    /// partition). A triangle is marked dead (tv[3t] = kNone) when it joins, so the search
+    /// needs no visit marks: the conflict test reads that entry anyway. When a triangle in
+    /// conflict may not join, the marks are undone and it returns false: the mesh is as it was.
+    template <class Conflict, class MayJoin>
+    bool find(TriMesh2& mesh, TriIdx seed, Conflict&& conflict, MayJoin&& may_join) {
+        triangle_count_ = boundary_count_ = 0;
+        reserve(1);
+        join(mesh, seed);
+        for (std::size_t i = 0; i < triangle_count_; ++i) {
+            reserve(3);  // at most three more entries in each buffer
+            const CavityTriangle2 c = triangles_[i];
+            for (unsigned k = 0; k < 3; ++k) {
+                const EdgeIdx e = 3 * c.triangle + k;
+                const EdgeIdx f = mesh.twin[e];
+                const TriIdx u = triangle_of(f);
+                if (mesh.is_dead(u)) continue;  // in the cavity already
+                if (!conflict(u)) {
+                    boundary_[boundary_count_++] = {e, f, c.v[k], c.v[k == 2 ? 0 : k + 1]};
+                } else if (may_join(u)) {
+                    join(mesh, u);
+                } else {
+                    for (const CavityTriangle2& t : triangles()) mesh.tv[3 * t.triangle] = t.v[0];
+                    return false;
+                }
             }
         }
+        return true;
     }
-    return true;
-}
+
+  private:
+    void reserve(std::size_t more) {
+        if (triangles_.size() < triangle_count_ + more)
+            triangles_.resize(2 * triangles_.size() + 16);
+        if (boundary_.size() < boundary_count_ + more) boundary_.resize(2 * boundary_.size() + 16);
+    }
+    void join(TriMesh2& mesh, TriIdx t) {
+        VertIdx* const v = &mesh.tv[3 * static_cast<std::size_t>(t)];
+        triangles_[triangle_count_++] = {t, {v[0], v[1], v[2]}};
+        v[0] = kNone;
+    }
+
+    std::vector<CavityTriangle2> triangles_;
+    std::vector<CavityEdge2> boundary_;
+    std::size_t triangle_count_ = 0, boundary_count_ = 0;
+};
 
 /// Bowyer-Watson's star of p over a cavity's boundary: a triangle (o, d, p) on each boundary
 /// edge o -> d, counter-clockwise because the cavity is star-shaped from p, in boundary order,
@@ -106,7 +127,7 @@ TriIdx connect_star_2d(TriMesh2& mesh, std::span<const CavityEdge2> boundary, Ve
     return first;
 }
 
-/// Replaces the cavity found by find_cavity_2d with p's star (connect_star_2d). The star's
+/// Replaces the cavity found by Cavity2::find with p's star (connect_star_2d). The star's
 /// triangles take the cavity's slots, last found first (the order a free list would give
 /// them), then `allocate()`'s; cavity slots left over are killed and given to `release(t)`,
 /// first found first. Returns the first new triangle.
@@ -186,6 +207,8 @@ TriIdx visibility_walk_2d(const TriMesh2& mesh, TriIdx t, VertIdx p, Delaunay2Co
 }
 
 class Delaunay2Core {
+    static constexpr std::uint32_t kTopBit = 0x80000000u;
+
   public:
     /// Validates the input, orders it (options.order) and copies it into mesh.xy.
     Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options);
@@ -212,12 +235,12 @@ class Delaunay2Core {
         return s != Sign::Zero ? s : incircle_tie(a, b, c, d);
     }
     /// True when p lies in the perturbed circumcircle of t (for an infinite triangle (a, b, inf):
-    /// beyond the hull edge ab, or strictly inside the segment ab).
+    /// beyond the hull edge ab, or strictly inside the segment ab). @pre t is not dead.
     bool conflict(TriIdx t, VertIdx p) {
         const VertIdx* v = &mesh.tv[3 * t];
-        if (v[0] == kInfinite || v[1] == kInfinite || v[2] == kInfinite) {
-            return conflict_infinite(t, p);
-        }
+        // A finite vertex is below 2^31, kInfinite is not: one test for the three.
+        static_assert(kMaxPoints < kTopBit && (kInfinite & kTopBit) != 0);
+        if (((v[0] | v[1] | v[2]) & kTopBit) != 0) return conflict_infinite(t, p);
         return incircle(v[0], v[1], v[2], p) == Sign::Positive;
     }
     /// True when the finite points a, b, p are collinear and p lies strictly between a and b.

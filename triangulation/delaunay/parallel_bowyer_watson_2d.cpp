@@ -69,8 +69,7 @@ struct alignas(128) Worker {
     std::vector<TriIdx> free_slots;
     TriIdx fresh_next = 0, fresh_end = 0;
 
-    std::vector<detail::CavityTriangle2> cavity;
-    std::vector<detail::CavityEdge2> boundary;
+    detail::Cavity2 cavity;
     TriIdx last = kNone;  ///< where the next walk starts (a triangle of ours)
     std::uint64_t rng_state = 0x9E3779B97F4A7C15ull;
 
@@ -203,21 +202,20 @@ struct alignas(128) Worker {
         // A neighbour of a triangle of ours is ours or mixed (they share two vertices), so
         // reading it is safe; a mixed one may bound the cavity but not join it. The cavity's
         // dead marks are on triangles of ours, which no other worker reads.
-        if (!detail::find_cavity_2d(
-                mesh, seed, cavity, boundary, [&](TriIdx u) { return conflict(shared, u, p); },
+        if (!cavity.find(
+                mesh, seed, [&](TriIdx u) { return conflict(shared, u, p); },
                 [&](TriIdx u) { return owns(shared, u); })) {
             last = seed;  // ours and untouched: near the next points
             if (seed <= kHintIndex) hint = seed;
             return Outcome::Deferred;
         }
-        counters.cavity_triangles += cavity.size();
+        counters.cavity_triangles += cavity.triangles().size();
         // The entries of starting_at the star may write are its own vertices' (cavity triangles
         // are ours), so no other worker touches them during the pass.
-        for (const detail::CavityEdge2& b : boundary)
+        for (const detail::CavityEdge2& b : cavity.boundary())
             EM_ASSERT(owns_vertex(shared, b.origin) && owns_vertex(shared, b.destination));
         last = detail::replace_cavity_2d(
-            mesh, std::span<const detail::CavityTriangle2>(cavity),
-            std::span<const detail::CavityEdge2>(boundary), p, [&] { return allocate(mesh); },
+            mesh, cavity.triangles(), cavity.boundary(), p, [&] { return allocate(mesh); },
             [this](TriIdx t) { free_slots.push_back(t); }, *shared.starting_at);
         return Outcome::Inserted;
     }
