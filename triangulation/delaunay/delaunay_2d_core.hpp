@@ -30,6 +30,14 @@ struct CavityEdge2 {
     VertIdx origin, destination;
 };
 
+/// True when one of the three vertices of a live triangle is kInfinite: a finite vertex is
+/// below 2^31 and kInfinite is not, so one test of the top bit covers the three.
+inline bool has_infinite_vertex(const VertIdx* v) {
+    constexpr std::uint32_t kTopBit = 0x80000000u;
+    static_assert(kMaxPoints < kTopBit && (kInfinite & kTopBit) != 0);
+    return ((v[0] | v[1] | v[2]) & kTopBit) != 0;
+}
+
 /// A triangle of a Bowyer-Watson cavity and its vertices, read before its slot was marked dead.
 struct CavityTriangle2 {
     TriIdx triangle;
@@ -173,33 +181,46 @@ TriIdx visibility_walk_2d(const TriMesh2& mesh, TriIdx t, VertIdx p, Delaunay2Co
     for (;;) {
         ++steps;
         const VertIdx* const v = tv + 3 * static_cast<std::size_t>(t);
-        if (v[0] == kInfinite || v[1] == kInfinite || v[2] == kInfinite) break;  // sees p
+        if (has_infinite_vertex(v)) break;  // crossed a hull edge that sees p
         const double* const corner[3] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2])};
         // orient2d(corner[k], corner[k + 1], p) for the edges tested, each difference taken once.
         const double dx[3] = {corner[0][0] - pp[0], corner[1][0] - pp[0], corner[2][0] - pp[0]};
         const double dy[3] = {corner[0][1] - pp[1], corner[1][1] - pp[1], corner[2][1] - pp[1]};
-        const std::uint32_t entered_local = entered == kNone ? 3 : entered - 3 * t;
-        std::uint32_t k = steps > deterministic_steps ? random_offset() : kBefore[entered_local];
-        bool moved = false;
-        for (std::uint32_t i = 0; i < 3; ++i, k = kAfter[k]) {
-            if (k == entered_local) continue;
+        // True when p is strictly right of edge k (corner k to k + 1): beyond it.
+        const auto beyond = [&](std::uint32_t k) {
             ++counters.orient_calls;
             const std::uint32_t j = kAfter[k];
-            if (predicates::orient2d_with_differences(corner[k], corner[j], pp, dx[k], dy[k], dx[j],
-                                                      dy[j]) == Sign::Negative) {
-                const EdgeIdx across = twin[3 * t + k];
-                if (!may_enter(triangle_of(across))) {
-                    counters.walk_steps += steps;
-                    stopped = t;
-                    return kNone;
+            return predicates::orient2d_with_differences(corner[k], corner[j], pp, dx[k], dy[k],
+                                                         dx[j], dy[j]) == Sign::Negative;
+        };
+        std::uint32_t next = 3;  // the edge to cross; 3: none, t holds p
+        if (entered != kNone && steps <= deterministic_steps) {
+            // The two edges other than the entered one, unrolled (the common step).
+            const std::uint32_t j = entered - 3 * t;
+            if (beyond(kBefore[j])) {
+                next = kBefore[j];
+            } else if (beyond(kAfter[j])) {
+                next = kAfter[j];
+            }
+        } else {
+            const std::uint32_t skip = entered == kNone ? 3 : entered - 3 * t;
+            std::uint32_t k = steps > deterministic_steps ? random_offset() : kBefore[3];
+            for (std::uint32_t i = 0; i < 3; ++i, k = kAfter[k]) {
+                if (k != skip && beyond(k)) {
+                    next = k;
+                    break;
                 }
-                entered = across;
-                t = triangle_of(across);
-                moved = true;
-                break;
             }
         }
-        if (!moved) break;
+        if (next == 3) break;
+        const EdgeIdx across = twin[3 * t + next];
+        if (!may_enter(triangle_of(across))) {
+            counters.walk_steps += steps;
+            stopped = t;
+            return kNone;
+        }
+        entered = across;
+        t = triangle_of(across);
     }
     counters.walk_steps += steps;
     stopped = t;
@@ -207,8 +228,6 @@ TriIdx visibility_walk_2d(const TriMesh2& mesh, TriIdx t, VertIdx p, Delaunay2Co
 }
 
 class Delaunay2Core {
-    static constexpr std::uint32_t kTopBit = 0x80000000u;
-
   public:
     /// Validates the input, orders it (options.order) and copies it into mesh.xy.
     Delaunay2Core(std::span<const double> xy, const Delaunay2Options& options);
@@ -238,9 +257,7 @@ class Delaunay2Core {
     /// beyond the hull edge ab, or strictly inside the segment ab). @pre t is not dead.
     bool conflict(TriIdx t, VertIdx p) {
         const VertIdx* v = &mesh.tv[3 * t];
-        // A finite vertex is below 2^31, kInfinite is not: one test for the three.
-        static_assert(kMaxPoints < kTopBit && (kInfinite & kTopBit) != 0);
-        if (((v[0] | v[1] | v[2]) & kTopBit) != 0) return conflict_infinite(t, p);
+        if (has_infinite_vertex(v)) return conflict_infinite(t, p);
         return incircle(v[0], v[1], v[2], p) == Sign::Positive;
     }
     /// True when the finite points a, b, p are collinear and p lies strictly between a and b.
