@@ -255,9 +255,11 @@ TriIdx Delaunay2Core::walk_to(VertIdx p) {
         }
     }
     TriIdx stopped = kNone;
+    // In a fixed order for as many steps as there are slots: the whole walk in a Delaunay
+    // triangulation.
     visibility_walk_2d(
-        mesh, t, p, counters, [](TriIdx) { return true; }, [this] { return random_offset(); },
-        stopped);
+        mesh, t, p, counters, mesh.triangle_slots(), [](TriIdx) { return true; },
+        [this] { return random_offset(); }, stopped);
     last_triangle = stopped;
     return stopped;
 }

@@ -159,21 +159,24 @@ TriIdx replace_cavity_2d(TriMesh2& mesh, std::span<const CavityTriangle2> cavity
 /// triangle containing p (closed), or an infinite one whose hull edge sees p; kNone when
 /// `may_enter(u)` refuses the next triangle u (then `stopped` is the last one entered).
 /// The edge a step entered by has p strictly on its left (the step left the other triangle
-/// because p was strictly right of it), so it is not tested again. The other two are tested in
-/// a fixed order, the edge before the entered one first: in a (perturbed) Delaunay
-/// triangulation this walk never comes back to a triangle [Edelsbrunner 1990, acyclicity of
-/// the in-front relation; DPT02 §2], so it needs no random choice. At 10^6 uniform points
-/// (BRIO) it makes 6.63 orientation tests per point, against 7.32 with the edge after the
-/// entered one first and 6.85 for a random choice, which took 6% longer (its branches
-/// mispredict). Past as many steps as there are slots (only on a triangulation that is not
-/// Delaunay) it starts at `random_offset()`, which ends on any triangulation.
+/// because p was strictly right of it), so it is not tested again. For the first
+/// `fixed_order_steps` steps the other two are tested in a fixed order, the edge before the
+/// entered one first: in a (perturbed) Delaunay triangulation this walk never comes back to a
+/// triangle [Edelsbrunner 1990, acyclicity of the in-front relation; DPT02 §2], so it needs no
+/// random choice. At 10^6 uniform points (BRIO) it makes 6.63 orientation tests per point,
+/// against 7.32 with the edge after the entered one first and 6.85 for a random choice, which
+/// took 6% longer (its branches mispredict). Then each step starts at `random_offset()`, which
+/// ends on any triangulation. The orders end in the same triangle by different paths: the
+/// parallel workers, whose walks must stay in their partition, keep the random order from the
+/// first step (with the fixed one their paths left it far more often: 90,414 deferred points
+/// against 25,386 at 10^6 uniform points on 2 threads).
 template <class MayEnter, class RandomOffset>
 TriIdx visibility_walk_2d(const TriMesh2& mesh, TriIdx t, VertIdx p, Delaunay2Counters& counters,
-                          MayEnter&& may_enter, RandomOffset&& random_offset, TriIdx& stopped) {
+                          std::uint64_t fixed_order_steps, MayEnter&& may_enter,
+                          RandomOffset&& random_offset, TriIdx& stopped) {
     const VertIdx* const tv = mesh.tv.data();
     const EdgeIdx* const twin = mesh.twin.data();
     const double* const pp = mesh.point(p);
-    const std::uint64_t deterministic_steps = mesh.triangle_slots();
     static constexpr std::uint32_t kAfter[4] = {1, 2, 0, 0};   // local edge after k
     static constexpr std::uint32_t kBefore[4] = {2, 0, 1, 1};  // before k; none entered: 1
     std::uint64_t steps = 0;
@@ -194,7 +197,7 @@ TriIdx visibility_walk_2d(const TriMesh2& mesh, TriIdx t, VertIdx p, Delaunay2Co
                                                          dx[j], dy[j]) == Sign::Negative;
         };
         std::uint32_t next = 3;  // the edge to cross; 3: none, t holds p
-        if (entered != kNone && steps <= deterministic_steps) {
+        if (entered != kNone && steps <= fixed_order_steps) {
             // The two edges other than the entered one, unrolled (the common step).
             const std::uint32_t j = entered - 3 * t;
             if (beyond(kBefore[j])) {
@@ -204,7 +207,7 @@ TriIdx visibility_walk_2d(const TriMesh2& mesh, TriIdx t, VertIdx p, Delaunay2Co
             }
         } else {
             const std::uint32_t skip = entered == kNone ? 3 : entered - 3 * t;
-            std::uint32_t k = steps > deterministic_steps ? random_offset() : kBefore[3];
+            std::uint32_t k = steps > fixed_order_steps ? random_offset() : kBefore[3];
             for (std::uint32_t i = 0; i < 3; ++i, k = kAfter[k]) {
                 if (k != skip && beyond(k)) {
                     next = k;

@@ -164,8 +164,9 @@ struct alignas(128) Worker {
         // again from where this one did (which, for points along a border, crossed most of the
         // partition each time).
         TriIdx stopped = kNone;
+        // In the random order from the first step (see visibility_walk_2d).
         const TriIdx found = detail::visibility_walk_2d(
-            mesh, t, p, counters, [this, &shared](TriIdx u) { return owns(shared, u); },
+            mesh, t, p, counters, 0, [this, &shared](TriIdx u) { return owns(shared, u); },
             [this] { return random_offset(); }, stopped);
         if (found == kNone) last = stopped;
         return found;
