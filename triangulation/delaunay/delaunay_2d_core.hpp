@@ -46,7 +46,8 @@ struct CavityTriangle2 {
 
 /// A Bowyer-Watson cavity: its triangles and its boundary edges (o -> d with the cavity on the
 /// left), in buffers kept between insertions that grow and never shrink, written through counts
-/// (a vector's growth check per entry cost about a tenth of 2D insertion's instructions).
+/// (push_back's growth check per entry cost about 74 instructions per point at 10^6 uniform
+/// points, 4% of the insertion's).
 class Cavity2 {
   public:
     std::span<const CavityTriangle2> triangles() const {
