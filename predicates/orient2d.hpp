@@ -50,16 +50,6 @@ inline std::optional<Sign> orient2d_filter(const double* a, const double* b,
 /// Stages B-D: always the exact sign. Throws GeometryError on NaN or infinite input.
 Sign orient2d_exact(const double* a, const double* b, const double* c);
 
-/// The exact sign of orient2d for any finite doubles.
-inline Sign orient2d(const double* a, const double* b, const double* c) {
-    EM_STAT(orient2d, calls);
-    if (const auto s = orient2d_filter(a, b, c)) {
-        EM_STAT(orient2d, filter);
-        return *s;
-    }
-    return orient2d_exact(a, b, c);
-}
-
 /// orient2d(a, b, c) given the differences a - c and b - c (orient2d_filter_differences): for
 /// a caller that tests one point c against several edges and takes each difference once.
 inline Sign orient2d_with_differences(const double* a, const double* b, const double* c, double adx,
@@ -70,6 +60,11 @@ inline Sign orient2d_with_differences(const double* a, const double* b, const do
         return *s;
     }
     return orient2d_exact(a, b, c);
+}
+
+/// The exact sign of orient2d for any finite doubles.
+inline Sign orient2d(const double* a, const double* b, const double* c) {
+    return orient2d_with_differences(a, b, c, a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]);
 }
 
 }  // namespace exactmesh::predicates
