@@ -2,10 +2,10 @@
 // Bowyer-Watson 2D (see bowyer_watson_2d.hpp).
 #include "triangulation/delaunay/bowyer_watson_2d.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "triangulation/delaunay/delaunay_2d_core.hpp"
 #include "triangulation/delaunay/parallel_bowyer_watson_2d.hpp"
 
@@ -19,40 +19,9 @@ struct Cavity {
     std::vector<TriIdx> starting_at;  ///< per vertex (+1 for kInfinite), connect_star_2d's
 };
 
-/// New triangle slots: the free list first, then slots past the last one used, made in blocks
-/// (one growth of tv and twin per block, not one per triangle). Slots made and not used stay
-/// dead (tv == kNone); the result's compaction skips them.
-class FreshSlots {
-  public:
-    explicit FreshSlots(TriMesh2& mesh) : mesh_(mesh), next_(mesh.triangle_slots()) {}
-
-    /// Room for `slots` slots in all without another growth.
-    void reserve(std::size_t slots) {
-        if (slots > mesh_.triangle_slots()) grow(slots - mesh_.triangle_slots());
-    }
-
-    TriIdx take() {
-        if (!mesh_.free_triangles.empty()) {
-            const TriIdx t = mesh_.free_triangles.back();
-            mesh_.free_triangles.pop_back();
-            return t;
-        }
-        if (next_ == mesh_.triangle_slots()) grow(std::max<std::size_t>(1024, next_ / 4));
-        return next_++;
-    }
-
-  private:
-    void grow(std::size_t slots) {
-        mesh_.tv.resize(mesh_.tv.size() + 3 * slots, kNone);
-        mesh_.twin.resize(mesh_.twin.size() + 3 * slots, kNone);
-    }
-
-    TriMesh2& mesh_;
-    TriIdx next_;
-};
-
 /// Inserts p, whose walk ended in `seed` (in conflict with p).
-void insert_point(detail::Delaunay2Core& core, Cavity& cavity, FreshSlots& fresh, VertIdx p,
+/// `fresh` is the next unused slot: each insertion takes two.
+void insert_point(detail::Delaunay2Core& core, Cavity& cavity, TriIdx& fresh, VertIdx p,
                   TriIdx seed) {
     TriMesh2& mesh = core.mesh;
     cavity.region.find(
@@ -61,7 +30,10 @@ void insert_point(detail::Delaunay2Core& core, Cavity& cavity, FreshSlots& fresh
     core.counters.cavity_triangles += cavity.region.triangles().size();
     core.last_triangle = detail::replace_cavity_2d(
         mesh, cavity.region.triangles(), cavity.region.boundary(), p,
-        [&fresh] { return fresh.take(); }, [&mesh](TriIdx t) { mesh.free_triangles.push_back(t); },
+        [&mesh, &fresh] {
+            EM_ASSERT(fresh < mesh.triangle_slots());
+            return fresh++;
+        },
         cavity.starting_at);
 }
 
@@ -87,9 +59,14 @@ Delaunay2Result bowyer_watson_2d(std::span<const double> xy, const Delaunay2Opti
     phase = Clock::now();
     Cavity cavity;
     cavity.starting_at.assign(core.mesh.vertex_count() + 1, kNone);
-    FreshSlots fresh(core.mesh);
-    // 2n - 2 triangles in all (the infinite ones too) when no point is merged.
-    fresh.reserve(2 * static_cast<std::size_t>(core.mesh.vertex_count()));
+    // Each insertion adds two triangles (replace_cavity_2d), so n points make 2n - 2 in all,
+    // the infinite ones included (the first triangle and its three infinite neighbours are 3
+    // points' 4), fewer when points are merged: the arrays are sized once. Slots left over stay
+    // dead (tv == kNone); the result's compaction skips them.
+    TriIdx fresh = core.mesh.triangle_slots();
+    const std::size_t slots = 2 * static_cast<std::size_t>(core.mesh.vertex_count());
+    core.mesh.tv.resize(3 * slots, kNone);
+    core.mesh.twin.resize(3 * slots, kNone);
     for (VertIdx p = 0; p < core.mesh.vertex_count(); ++p) {
         if (skip[p]) continue;
         const TriIdx t = core.locate(p);

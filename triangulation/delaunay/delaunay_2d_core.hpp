@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "base/errors.hpp"
 #include "base/stopwatch.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/orient2d.hpp"
@@ -136,23 +137,20 @@ TriIdx connect_star_2d(TriMesh2& mesh, std::span<const CavityEdge2> boundary, Ve
     return first;
 }
 
-/// Replaces the cavity found by Cavity2::find with p's star (connect_star_2d). The star's
-/// triangles take the cavity's slots, last found first (the order a free list would give
-/// them), then `allocate()`'s; cavity slots left over are killed and given to `release(t)`,
-/// first found first. Returns the first new triangle.
-template <class Allocate, class Release>
+/// Replaces the cavity found by Cavity2::find with p's star (connect_star_2d). The star has
+/// two triangles more than the cavity: the cavity is a disk whose vertices all lie on its
+/// boundary (no vertex leaves a Delaunay triangulation, and the infinite vertex cannot be
+/// inside, p cannot see every hull edge), so by Euler's formula its b boundary edges bound
+/// c = b - 2 triangles. The star's triangles take the cavity's slots, last found first (the
+/// order a free list gave them), then two from `allocate()`. Returns the first new triangle.
+template <class Allocate>
 TriIdx replace_cavity_2d(TriMesh2& mesh, std::span<const CavityTriangle2> cavity,
                          std::span<const CavityEdge2> boundary, VertIdx p, Allocate&& allocate,
-                         Release&& release, std::vector<TriIdx>& starting_at) {
-    const std::size_t spare = cavity.size() > boundary.size() ? cavity.size() - boundary.size() : 0;
-    for (std::size_t i = 0; i < spare; ++i) {
-        const TriIdx t = cavity[i].triangle;
-        mesh.tv[3 * t] = mesh.tv[3 * t + 1] = mesh.tv[3 * t + 2] = kNone;
-        release(t);
-    }
+                         std::vector<TriIdx>& starting_at) {
+    EM_ASSERT(boundary.size() == cavity.size() + 2);
     std::size_t next = cavity.size();
     return connect_star_2d(
-        mesh, boundary, p, [&] { return next > spare ? cavity[--next].triangle : allocate(); },
+        mesh, boundary, p, [&] { return next > 0 ? cavity[--next].triangle : allocate(); },
         starting_at);
 }
 

@@ -59,7 +59,7 @@ struct Shared {
 enum class Outcome { Inserted, Merged, Deferred };
 
 /// One thread's partition, allocator, scratch and counters (kept from pass to pass, so a thread
-/// reuses the slots it freed, near where it works).
+/// reuses the fresh slots a pass left unused, in its free list).
 /// Aligned to whole cache-line pairs: the counters and scratch one worker writes on every
 /// predicate and insertion must not share a line (or the adjacent-line prefetch pair) with what
 /// the next worker reads on every triangle (its range).
@@ -217,7 +217,7 @@ struct alignas(128) Worker {
             EM_ASSERT(owns_vertex(shared, b.origin) && owns_vertex(shared, b.destination));
         last = detail::replace_cavity_2d(
             mesh, cavity.triangles(), cavity.boundary(), p, [&] { return allocate(mesh); },
-            [this](TriIdx t) { free_slots.push_back(t); }, *shared.starting_at);
+            *shared.starting_at);
         return Outcome::Inserted;
     }
 
@@ -421,7 +421,7 @@ class ParallelConstruction {
         const std::vector<std::uint32_t>& keys = keys_[curve];
         shared_.keys = keys;
         const std::size_t count = workers_.size();
-        // Each insertion frees its cavity (k triangles) before making k + 2: two fresh slots
+        // Each insertion writes its star (k + 2 triangles) over its cavity's k: two fresh slots
         // per point cover a worker's whole list, so the arrays need not grow during the pass.
         const std::vector<std::span<const VertIdx>> parts =
             detail::split_by_bounds(keys, points, bounds);
