@@ -140,6 +140,10 @@ bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
         }
     }
     MeshRun2 run;
+    const auto refused = [&counters] {
+        ++counters.budget_refusals;
+        return false;
+    };
     for (int attempt = 0;; ++attempt) {
         mesh_options.size = scaled_size(scale);
         // Under a budget, a generator's refusal of the size for its count (the boundary's
@@ -150,10 +154,6 @@ bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
         // coarser: each refusal costs a sampling of the boundary up to the budget, and eight of
         // them made tests/data/fuzz/adaptation_2d_oom_narrow.bin six times slower.
         ++counters.generator_runs;
-        const auto refused = [&] {
-            ++counters.budget_refusals;
-            return false;
-        };
         try {
             run = generator.run_on_domain(mesh_domain, mesh_options);
         } catch (const BoundaryBudgetError&) {
@@ -165,10 +165,7 @@ bool remesh_cycle_2d(AdaptiveMesh2& state, const RemeshDomain2& domain,
         }
         const double count = run.mesh.mesh.vertex_count();
         if (!budget || count <= most) break;
-        if (attempt == 7) {
-            ++counters.budget_refusals;
-            return false;
-        }
+        if (attempt == 7) return refused();
         // An area-dominated mesh's count falls as 1 / s^2, a boundary-dominated one's (the
         // quadtree's band) as 1 / s: the first reruns take the square root of the excess, later
         // ones all of it, so that both converge in a few runs.
