@@ -57,6 +57,7 @@
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -205,16 +206,18 @@ void BM_mesh_cgal(benchmark::State& state, gen::SampleDomain d, double angle) {
 
 /// The size function as interpreted Gmsh fields (EXACTMESH_MESH_BENCH_GMSH_SIZE=formula, for
 /// comparison: what this bench gave Gmsh before issue 11): Distance fields to each source
-/// (sampled, 4000 points per line), one MathEval of the source formula, Min with the cap; the
-/// whole times the factor. Returns the background field's number, or 0 when the size is of a
-/// kind Gmsh cannot be given this way (analytic).
+/// (sampled, 4000 points per line), one MathEval of the source formula (each source times the
+/// factor), Min with the cap times the factor, at most the ceiling of a scaled size. Returns the
+/// background field's number, or 0 when the size is of a kind Gmsh cannot be given this way
+/// (analytic).
 int write_gmsh_size_field(std::ostream& geo, const gen::SizeFunction& size, int first_point,
                           int first_line) {
     char buffer[1024];
     const double f = size.factor();
+    // The whole function is min(f * min(cap, sum), ceiling) = min(f * sum, top).
+    const double top = std::min(f * size.cap(), size.ceiling());
     if (size.is_uniform()) {
-        std::snprintf(buffer, sizeof buffer, "Field[1] = MathEval; Field[1].F = \"%.17g\";\n",
-                      f * size.cap());
+        std::snprintf(buffer, sizeof buffer, "Field[1] = MathEval; Field[1].F = \"%.17g\";\n", top);
         geo << buffer << "Background Field = 1;\n";
         return 1;
     }
@@ -252,13 +255,13 @@ int write_gmsh_size_field(std::ostream& geo, const gen::SizeFunction& size, int 
     }
     const int sources = ++field;
     geo << "Field[" << sources << "] = MathEval; Field[" << sources << "].F = \"" << sum << "\";\n";
-    if (!std::isfinite(size.cap())) {
+    if (!std::isfinite(top)) {
         geo << "Background Field = " << sources << ";\n";
         return sources;
     }
     const int cap = ++field;
     std::snprintf(buffer, sizeof buffer, "Field[%d] = MathEval; Field[%d].F = \"%.17g\";\n", cap,
-                  cap, f * size.cap());
+                  cap, top);
     geo << buffer;
     const int min = ++field;
     geo << "Field[" << min << "] = Min; Field[" << min << "].FieldsList = {" << sources << ", "
