@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <optional>
@@ -124,6 +125,79 @@ inline std::optional<Sign> insphere_filter(const double* a, const double* b, con
     return insphere_filter_decision(det, m);
 #else
     return insphere_filter_scalar(a, b, c, d, e);
+#endif
+}
+
+/// Stage A of two tests with the same fifth point: insphere_filter_scalar(a0, b0, c0, d0, e) and
+/// insphere_filter_scalar(a1, b1, c1, d1, e), bit for bit.
+///
+/// With SSE2 each lane computes one test's scalar form: every value is the same rounded
+/// difference, product or sum of the same operands in the same order as in insphere_fast (no
+/// contraction: -ffp-contract=off), so the proof of proofs/gappa/insphere_filter.g holds lane by
+/// lane. A construction's cavity search tests two or three neighbours of a tetrahedron at once;
+/// paired, a test takes about half the instructions of insphere_filter's, whose lanes pair the
+/// rows of one test and spend a third of its instructions on shuffles.
+inline std::array<std::optional<Sign>, 2> insphere_filter_pair(const double* a0, const double* b0,
+                                                               const double* c0, const double* d0,
+                                                               const double* a1, const double* b1,
+                                                               const double* c1, const double* d1,
+                                                               const double* e) noexcept {
+#if defined(__SSE2__)
+    const __m128d ex = _mm_set1_pd(e[0]), ey = _mm_set1_pd(e[1]), ez = _mm_set1_pd(e[2]);
+    // Lane 0 holds the first test, lane 1 the second.
+    const auto diff = [](const double* p0, const double* p1, int k, __m128d ek) {
+        return _mm_sub_pd(_mm_set_pd(p1[k], p0[k]), ek);
+    };
+    const __m128d aex = diff(a0, a1, 0, ex), aey = diff(a0, a1, 1, ey), aez = diff(a0, a1, 2, ez);
+    const __m128d bex = diff(b0, b1, 0, ex), bey = diff(b0, b1, 1, ey), bez = diff(b0, b1, 2, ez);
+    const __m128d cex = diff(c0, c1, 0, ex), cey = diff(c0, c1, 1, ey), cez = diff(c0, c1, 2, ez);
+    const __m128d dex = diff(d0, d1, 0, ex), dey = diff(d0, d1, 1, ey), dez = diff(d0, d1, 2, ez);
+    const auto mul = [](__m128d x, __m128d y) { return _mm_mul_pd(x, y); };
+    const auto minor = [&](__m128d px, __m128d qy, __m128d qx, __m128d py) {
+        return _mm_sub_pd(mul(px, qy), mul(qx, py));
+    };
+    // insphere_fast's terms, in its order.
+    const __m128d ab = minor(aex, bey, bex, aey), bc = minor(bex, cey, cex, bey);
+    const __m128d cd = minor(cex, dey, dex, cey), da = minor(dex, aey, aex, dey);
+    const __m128d ac = minor(aex, cey, cex, aey), bd = minor(bex, dey, dex, bey);
+    const __m128d abc = _mm_add_pd(_mm_sub_pd(mul(aez, bc), mul(bez, ac)), mul(cez, ab));
+    const __m128d bcd = _mm_add_pd(_mm_sub_pd(mul(bez, cd), mul(cez, bd)), mul(dez, bc));
+    const __m128d cda = _mm_add_pd(_mm_add_pd(mul(cez, da), mul(dez, ac)), mul(aez, cd));
+    const __m128d dab = _mm_add_pd(_mm_add_pd(mul(dez, ab), mul(aez, bd)), mul(bez, da));
+    const auto lift = [&](__m128d x, __m128d y, __m128d z) {
+        return _mm_add_pd(_mm_add_pd(mul(x, x), mul(y, y)), mul(z, z));
+    };
+    const __m128d alift = lift(aex, aey, aez), blift = lift(bex, bey, bez);
+    const __m128d clift = lift(cex, cey, cez), dlift = lift(dex, dey, dez);
+    const __m128d det = _mm_add_pd(_mm_sub_pd(mul(dlift, abc), mul(clift, dab)),
+                                   _mm_sub_pd(mul(blift, cda), mul(alift, bcd)));
+    // The largest magnitude (max is exact: any order gives it).
+    const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+    const auto abs_max = [&](__m128d x, __m128d y, __m128d z) {
+        return _mm_max_pd(_mm_max_pd(_mm_and_pd(x, magnitude), _mm_and_pd(y, magnitude)),
+                          _mm_and_pd(z, magnitude));
+    };
+    const __m128d m = _mm_max_pd(_mm_max_pd(abs_max(aex, aey, aez), abs_max(bex, bey, bez)),
+                                 _mm_max_pd(abs_max(cex, cey, cez), abs_max(dex, dey, dez)));
+    // insphere_filter_decision lane by lane: eps = ((insphere_filter_eps m2) m2) m.
+    const __m128d m2 = mul(m, m);
+    const __m128d eps = mul(mul(mul(_mm_set1_pd(insphere_filter_eps), m2), m2), m);
+    const __m128d decided = _mm_and_pd(
+        _mm_or_pd(_mm_cmpgt_pd(det, eps), _mm_cmpgt_pd(_mm_xor_pd(det, _mm_set1_pd(-0.0)), eps)),
+        _mm_and_pd(_mm_cmpge_pd(m, _mm_set1_pd(insphere_filter_min)),
+                   _mm_cmple_pd(m, _mm_set1_pd(insphere_filter_max))));
+    const int decided_bits = _mm_movemask_pd(decided);
+    const int positive_bits = _mm_movemask_pd(_mm_cmpgt_pd(det, _mm_setzero_pd()));
+    std::array<std::optional<Sign>, 2> out;
+    for (int lane = 0; lane < 2; ++lane) {
+        if ((decided_bits >> lane) & 1) {
+            out[static_cast<std::size_t>(lane)] =
+                (positive_bits >> lane) & 1 ? Sign::Positive : Sign::Negative;
+        }
+    }
+    return out;
+#else
+    return {insphere_filter_scalar(a0, b0, c0, d0, e), insphere_filter_scalar(a1, b1, c1, d1, e)};
 #endif
 }
 

@@ -99,6 +99,12 @@ Sign ConflictTest3::insphere_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d, Ver
                                     input_index[d], input_index[p]);
 }
 
+Sign ConflictTest3::insphere_unfiltered(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p) {
+    const Sign s = predicates::insphere_exact(mesh.point(a), mesh.point(b), mesh.point(c),
+                                              mesh.point(d), mesh.point(p));
+    return s != Sign::Zero ? s : insphere_tie(a, b, c, d, p);
+}
+
 bool ConflictTest3::conflict_infinite(TetIdx t, VertIdx p) {
     const VertIdx* v = &mesh.tv[4 * std::size_t{t}];
     constexpr unsigned m = kInfiniteSlot;

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "predicates/insphere.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/sign.hpp"
+#include "predicates/stats.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
 #include "triangulation/delaunay/result_numbering.hpp"
 #include "triangulation/mesh/flip_3d.hpp"
@@ -48,8 +50,36 @@ struct ConflictTest3 {
         if (v[3] != kInfinite) return insphere(v[0], v[1], v[2], v[3], p) == Sign::Positive;
         return conflict_infinite(t, p);
     }
+    /// in0 = conflict(u0, p), in1 = conflict(u1, p), as 0 or 1 (u0 may equal u1: counted once).
+    /// Two finite tetrahedra are tested by one paired filter (predicates::insphere_filter_pair,
+    /// the same decisions as insphere's filter), the lanes it leaves undecided exactly.
+    void conflict_pair(TetIdx u0, TetIdx u1, VertIdx p, unsigned& in0, unsigned& in1) {
+        const VertIdx* v = &mesh.tv[4 * std::size_t{u0}];
+        const VertIdx* w = &mesh.tv[4 * std::size_t{u1}];
+        if (v[3] == kInfinite || w[3] == kInfinite) {
+            in0 = conflict(u0, p) ? 1u : 0u;
+            in1 = u1 == u0 ? in0 : conflict(u1, p) ? 1u : 0u;
+            return;
+        }
+        counters.insphere_calls += u1 == u0 ? 1 : 2;
+        const auto s = predicates::insphere_filter_pair(
+            mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]),
+            mesh.point(w[0]), mesh.point(w[1]), mesh.point(w[2]), mesh.point(w[3]), mesh.point(p));
+        for (std::size_t lane = 0; lane < (u1 == u0 ? 1u : 2u); ++lane) {
+            EM_STAT(insphere, calls);
+            if (s[lane]) EM_STAT(insphere, filter);
+        }
+        const Sign s0 = s[0] ? *s[0] : insphere_unfiltered(v[0], v[1], v[2], v[3], p);
+        const Sign s1 = s[1]       ? *s[1]
+                        : u1 == u0 ? s0
+                                   : insphere_unfiltered(w[0], w[1], w[2], w[3], p);
+        in0 = s0 == Sign::Positive ? 1u : 0u;
+        in1 = s1 == Sign::Positive ? 1u : 0u;
+    }
     /// insphere_sos by the caller's indices, for an exact tie.
     Sign insphere_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p);
+    /// The perturbed insphere where the filter gave no answer: the exact stages, then the tie.
+    Sign insphere_unfiltered(VertIdx a, VertIdx b, VertIdx c, VertIdx d, VertIdx p);
     bool conflict_infinite(TetIdx t, VertIdx p);
 };
 

@@ -719,37 +719,80 @@ TEST(Predicates_Insphere, CosphericalStripCornersAgreeWithRationals) {
     EXPECT_GT(zeros, 0);
 }
 
-TEST(Predicates_Insphere, FilterDecidesAsItsScalarForm) {
-    // Random points, cospherical ones moved by an ulp (det near the filter's bound: a rounding
-    // that differed would show), magnitudes at and past the filter's guards, and non-finite
-    // coordinates: the same answer everywhere.
-    std::mt19937_64 rng(4646);
+/// Case n of the insphere filter comparisons: five points, random in [-1, 1]^3 or on the unit
+/// sphere up to rounding and then nudged by ulps (the determinant near the filter's bound: a
+/// rounding that differed would show), a third of them scaled by 2^-520 .. 2^520 (at and past
+/// the filter's guards), and every 97th with a non-finite or extreme coordinate.
+void draw_insphere_filter_case(std::mt19937_64& rng, int n, double (&p)[5][3]) {
+    constexpr std::size_t N = 5, D = 3;
     std::uniform_real_distribution<double> unit(-1.0, 1.0), angle(0.0, 6.283185307179586);
     std::uniform_int_distribution<int> exponent(-520, 520);
     const double specials[] = {INFINITY, -INFINITY, NAN, 0x1p1000, 0x1p-1070};
+    const int scale = n % 3 == 0 ? exponent(rng) : 0;
+    if (n % 2 == 0) {
+        for (auto& q : p)
+            for (double& x : q) x = std::ldexp(unit(rng), scale);
+    } else {
+        for (auto& q : p) {
+            const double t = angle(rng), u = unit(rng), r = std::sqrt(1 - u * u);
+            const double s[3] = {r * std::cos(t), r * std::sin(t), u};
+            for (std::size_t k = 0; k < 3; ++k) q[k] = std::ldexp(s[k], scale);
+        }
+        for (int k = 0; k < n % 4; ++k) {
+            double& x = p[static_cast<std::size_t>(n + k) % N][static_cast<std::size_t>(k) % D];
+            x = std::nextafter(x, k % 2 == 0 ? 4.0 : -4.0);
+        }
+    }
+    if (n % 97 == 0) {
+        p[static_cast<std::size_t>(n) % N][static_cast<std::size_t>(n) % D] =
+            specials[static_cast<std::size_t>(n / 97) % 5];
+    }
+}
+
+TEST(Predicates_Insphere, FilterDecidesAsItsScalarForm) {
+    // The SSE2 form against the scalar one: the same answer everywhere.
+    std::mt19937_64 rng(4646);
     int decided = 0, refused = 0;
     for (int n = 0; n < 400000; ++n) {
         double p[5][3];
-        const int scale = n % 3 == 0 ? exponent(rng) : 0;
-        if (n % 2 == 0) {
-            for (auto& q : p)
-                for (double& x : q) x = std::ldexp(unit(rng), scale);
-        } else {
-            // On the unit sphere up to rounding, then nudged by ulps.
-            for (auto& q : p) {
-                const double t = angle(rng), u = unit(rng), r = std::sqrt(1 - u * u);
-                const double s[3] = {r * std::cos(t), r * std::sin(t), u};
-                for (int k = 0; k < 3; ++k) q[k] = std::ldexp(s[k], scale);
-            }
-            for (int k = 0; k < n % 4; ++k) {
-                double& x = p[static_cast<std::size_t>(n + k) % 5][static_cast<std::size_t>(k) % 3];
-                x = std::nextafter(x, k % 2 == 0 ? 4.0 : -4.0);
-            }
-        }
-        if (n % 97 == 0) p[n % 5][n % 3] = specials[static_cast<std::size_t>(n / 97) % 5];
+        draw_insphere_filter_case(rng, n, p);
         const auto fast = pr::insphere_filter(p[0], p[1], p[2], p[3], p[4]);
         ASSERT_EQ(fast, pr::insphere_filter_scalar(p[0], p[1], p[2], p[3], p[4])) << n;
         ++(fast ? decided : refused);
+    }
+    EXPECT_GT(decided, 100000);
+    EXPECT_GT(refused, 1000);
+}
+
+TEST(Predicates_Insphere, PairFilterDecidesAsTwoScalarForms) {
+    // insphere_filter_pair against insphere_filter_scalar lane by lane: each case paired with
+    // the previous one (another sphere and scale, the same fifth point), so a lane that mixed
+    // its operands with the other's would show, in both lane orders; and paired with itself.
+    std::mt19937_64 rng(4747);
+    double previous[5][3] = {};
+    int decided = 0, refused = 0;
+    for (int n = 0; n < 400000; ++n) {
+        double p[5][3];
+        draw_insphere_filter_case(rng, n, p);
+        const double* e = p[4];
+        const auto first = pr::insphere_filter_scalar(p[0], p[1], p[2], p[3], e);
+        const auto second =
+            pr::insphere_filter_scalar(previous[0], previous[1], previous[2], previous[3], e);
+        const auto paired = pr::insphere_filter_pair(p[0], p[1], p[2], p[3], previous[0],
+                                                     previous[1], previous[2], previous[3], e);
+        ASSERT_EQ(paired[0], first) << n;
+        ASSERT_EQ(paired[1], second) << n;
+        const auto swapped = pr::insphere_filter_pair(previous[0], previous[1], previous[2],
+                                                      previous[3], p[0], p[1], p[2], p[3], e);
+        ASSERT_EQ(swapped[0], second) << n;
+        ASSERT_EQ(swapped[1], first) << n;
+        const auto itself =
+            pr::insphere_filter_pair(p[0], p[1], p[2], p[3], p[0], p[1], p[2], p[3], e);
+        ASSERT_EQ(itself[0], first) << n;
+        ASSERT_EQ(itself[1], first) << n;
+        ++(first ? decided : refused);
+        for (std::size_t i = 0; i < 5; ++i)
+            for (std::size_t k = 0; k < 3; ++k) previous[i][k] = p[i][k];
     }
     EXPECT_GT(decided, 100000);
     EXPECT_GT(refused, 1000);
