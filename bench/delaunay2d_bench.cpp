@@ -35,6 +35,12 @@
 //   EXACTMESH_BENCH_SCALING_MAX_POINTS=10000000 delaunay2d_bench
 //       --benchmark_filter='_threads/uniform/brio/10000000/' --benchmark_repetitions=3
 //
+// The memory floor (issue 17), at the strong-scaling sizes:
+// BM_memory_floor_<memory>/<distribution>/brio/<n>/real_time, memory in {warm, fresh,
+// fresh_huge_pages}: one pass that reads the points in BRIO order and writes what the result
+// holds (bench/memory_floor.hpp), the floor under any construction of that result on this
+// machine; delaunay_report.py leaves them out of its tables.
+//
 // The insertion order alone: BM_insertion_order/uniform/hilbert_keys/1000000/real_time (the
 // keys) and BM_insertion_order/uniform/brio_<T>_threads/1000000/real_time (the BRIO order on
 // T = 1, 2 threads); delaunay_report.py leaves them out of its tables.
@@ -63,6 +69,7 @@
 
 #include "bench/bench_support.hpp"
 #include "bench/heap_accounting.hpp"
+#include "bench/memory_floor.hpp"
 #include "generators/inputs/inputs.hpp"
 #include "io/triangle_format.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
@@ -141,6 +148,8 @@ using CgalPoint = Epick::Point_2;
 /// The points of one (distribution, n), and the same points as CGAL's (made on first use).
 struct Input {
     std::vector<double> xy;
+    std::vector<std::uint32_t> order;  ///< the BRIO insertion order (memory floor rows)
+    std::size_t triangles = 0;         ///< triangles of their Delaunay triangulation
 #if defined(EXACTMESH_WITH_CGAL)
     std::vector<CgalPoint> points;
 #endif
@@ -290,6 +299,21 @@ void bm_cgal(benchmark::State& state, Distribution distribution) {
 }
 #endif
 
+/// The memory floor of the construction of these points (bench/memory_floor.hpp): their BRIO
+/// order and their triangles (one untimed construction, made on first use) set its pass.
+void bm_memory_floor(benchmark::State& state, Distribution distribution, FloorMemory memory) {
+    const auto n = static_cast<std::uint32_t>(state.range(0));
+    Input& input = input_for(distribution, PointOrder::AsGenerated, n);
+    if (input.order.empty()) {
+        input.order = tri::insertion_order_2d(input.xy, tri::InsertionOrder::Brio, kOrderSeed);
+        const tri::Delaunay2Options options{tri::InsertionOrder::Brio, kOrderSeed};
+        input.triangles =
+            tri::delaunay_2d_algorithm("bowyer-watson")(input.xy, options).triangles.size() / 3;
+    }
+    run_memory_floor<2, 3>(state, input.xy, input.order, input.triangles, false, memory);
+    state.counters["triangles/pt"] = static_cast<double>(input.triangles) / n;
+}
+
 /// The insertion order alone (issue 17: the order phase of `--stats`): the Hilbert keys of the
 /// points, and the whole BRIO order (keys, shuffle, rounds) on `threads` threads of an arena.
 void bm_hilbert_keys(benchmark::State& state, Distribution distribution) {
@@ -349,6 +373,12 @@ void register_scaling(Distribution distribution) {
     apply(benchmark::RegisterBenchmark(("BM_cgal_1_threads/" + points).c_str(), &bm_cgal,
                                        distribution));
 #endif
+    for (const FloorMemory memory :
+         {FloorMemory::Warm, FloorMemory::Fresh, FloorMemory::FreshHugePages}) {
+        std::string name = "BM_memory_floor_";
+        name += std::string(floor_memory_name(memory)) + "/" + points;
+        apply(benchmark::RegisterBenchmark(name.c_str(), &bm_memory_floor, distribution, memory));
+    }
 }
 
 void register_all() {

@@ -14,6 +14,11 @@
 // EXACTMESH_BENCH_MAX_THREADS (default std::thread::hardware_concurrency()), n in {10^5, 10^6,
 // 10^7} up to EXACTMESH_BENCH3_MAX_POINTS (so 10^7 only when it is set to 10000000). They are
 // timed in real (wall-clock) time: the CPU column adds up every thread's time.
+// The memory floor (issue 17): BM_memory_floor_<memory>/<distribution>/<n>/real_time at the same
+// sizes, memory in {warm, fresh, fresh_huge_pages}: one pass that reads the points in BRIO order
+// and writes what the result holds (bench/memory_floor.hpp), the floor under any construction of
+// that result on this machine, with its memory warm, first touched, or first touched on 2 MiB
+// pages.
 // scripts/delaunay3d_report.py turns them into the strong-scaling table and plots.
 //
 // Only the construction is timed: inputs are generated once per (distribution, n) with a pinned
@@ -58,8 +63,10 @@
 
 #include "bench/bench_support.hpp"
 #include "bench/heap_accounting.hpp"
+#include "bench/memory_floor.hpp"
 #include "generators/inputs/inputs_3d.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
+#include "triangulation/mesh/spatial_sort.hpp"
 
 #if defined(EXACTMESH_WITH_CGAL)
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -105,6 +112,8 @@ std::vector<std::int64_t> sizes() {
 
 struct Input {
     std::vector<double> xyz;
+    std::vector<std::uint32_t> order;  ///< the BRIO insertion order (memory floor rows)
+    std::size_t tets = 0;              ///< tetrahedra of their Delaunay tetrahedralization
 #if defined(EXACTMESH_WITH_CGAL)
     std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> points;
 #endif
@@ -181,6 +190,21 @@ void bm_exactmesh(benchmark::State& state, const std::string& algorithm, Distrib
         state.ResumeTiming();
     }
     set_counters(state, m, n);
+}
+
+/// The memory floor of the construction of these points (bench/memory_floor.hpp): their BRIO
+/// order and their tetrahedra (one untimed construction, made on first use) set its pass.
+void bm_memory_floor(benchmark::State& state, Distribution3 distribution, FloorMemory memory) {
+    const auto n = static_cast<std::uint32_t>(state.range(0));
+    Input& input = input_for(distribution, n);
+    if (input.order.empty()) {
+        input.order = tri::insertion_order_3d(input.xyz, tri::InsertionOrder::Brio, kOrderSeed);
+        const tri::Delaunay3Options options{tri::InsertionOrder::Brio, kOrderSeed};
+        input.tets =
+            tri::delaunay_3d_algorithm("bowyer-watson")(input.xyz, options).mesh.tet_count();
+    }
+    run_memory_floor<3, 4>(state, input.xyz, input.order, input.tets, true, memory);
+    state.counters["tets/pt"] = static_cast<double>(input.tets) / n;
 }
 
 #if defined(EXACTMESH_WITH_CGAL)
@@ -289,6 +313,13 @@ void register_all() {
         apply(benchmark::RegisterBenchmark(("BM_cgal/" + points).c_str(), &bm_cgal, distribution));
 #endif
         if (scaling_ns.empty()) continue;
+        for (const FloorMemory memory :
+             {FloorMemory::Warm, FloorMemory::Fresh, FloorMemory::FreshHugePages}) {
+            std::string name = "BM_memory_floor_";
+            name += std::string(floor_memory_name(memory)) + "/" + points;
+            apply_scaling(
+                benchmark::RegisterBenchmark(name.c_str(), &bm_memory_floor, distribution, memory));
+        }
         for (unsigned threads = 1; threads <= max_threads; ++threads) {
             // Appended rather than "_" + to_string(...): GCC 12 -O3 warns (-Wrestrict, a false
             // positive) on operator+ of a literal and a temporary string.
