@@ -134,9 +134,10 @@ inline std::optional<Sign> insphere_filter(const double* a, const double* b, con
 /// With SSE2 each lane computes one test's scalar form: every value is the same rounded
 /// difference, product or sum of the same operands in the same order as in insphere_fast (no
 /// contraction: -ffp-contract=off), so the proof of proofs/gappa/insphere_filter.g holds lane by
-/// lane. A construction's cavity search tests two or three neighbours of a tetrahedron at once;
-/// paired, a test takes about half the instructions of insphere_filter's, whose lanes pair the
-/// rows of one test and spend a third of its instructions on shuffles.
+/// lane. The 3D cavity search tests two or three neighbours of a tetrahedron at once: as many
+/// instructions per test as insphere_filter (whose lanes pair the rows of one test), counting
+/// the third test paired with itself, but the two tests' chains of dependent operations run side
+/// by side (Bowyer-Watson 7% faster at 10^6 uniform points).
 inline std::array<std::optional<Sign>, 2> insphere_filter_pair(const double* a0, const double* b0,
                                                                const double* c0, const double* d0,
                                                                const double* a1, const double* b1,
