@@ -135,13 +135,17 @@ Sign Delaunay2Core::orient(VertIdx a, VertIdx b, VertIdx c) {
     return predicates::orient2d(mesh.point(a), mesh.point(b), mesh.point(c));
 }
 
-Sign Delaunay2Core::incircle_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d) const {
+Sign incircle_tie_2d(const TriMesh2& mesh, const std::vector<VertIdx>& input_index, VertIdx a,
+                     VertIdx b, VertIdx c, VertIdx d) {
     // The caller's indices are loaded only for the rare exact tie.
     return predicates::incircle_sos(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d),
                                     input_index[a], input_index[b], input_index[c], input_index[d]);
 }
 
-bool Delaunay2Core::strictly_between(VertIdx a, VertIdx b, VertIdx p) const {
+namespace {
+
+/// True when the finite points a, b, p are collinear and p lies strictly between a and b.
+bool strictly_between_2d(const TriMesh2& mesh, VertIdx a, VertIdx b, VertIdx p) {
     const double* pa = mesh.point(a);
     const double* pb = mesh.point(b);
     const double* pp = mesh.point(p);
@@ -150,21 +154,21 @@ bool Delaunay2Core::strictly_between(VertIdx a, VertIdx b, VertIdx p) const {
     return (pa[k] < pp[k] && pp[k] < pb[k]) || (pb[k] < pp[k] && pp[k] < pa[k]);
 }
 
-bool Delaunay2Core::conflict_infinite(TriIdx t, VertIdx p) {
-    const VertIdx* v = &mesh.tv[3 * t];
+}  // namespace
+
+bool Delaunay2Core::strictly_between(VertIdx a, VertIdx b, VertIdx p) const {
+    return strictly_between_2d(mesh, a, b, p);
+}
+
+bool conflict_infinite_2d(const TriMesh2& mesh, Delaunay2Counters& counters, TriIdx t, VertIdx p) {
+    const VertIdx* v = &mesh.tv[3 * static_cast<std::size_t>(t)];
     int k = 0;
     while (v[k] != kInfinite) ++k;
     const VertIdx a = v[(k + 1) % 3], b = v[(k + 2) % 3];
-    const Sign s = orient(a, b, p);
+    ++counters.orient_calls;
+    const Sign s = predicates::orient2d(mesh.point(a), mesh.point(b), mesh.point(p));
     if (s != Sign::Zero) return s == Sign::Positive;
-    return strictly_between(a, b, p);
-}
-
-std::uint32_t Delaunay2Core::random_offset() {
-    rng_state_ ^= rng_state_ << 13;
-    rng_state_ ^= rng_state_ >> 7;
-    rng_state_ ^= rng_state_ << 17;
-    return static_cast<std::uint32_t>(rng_state_ % 3);
+    return strictly_between_2d(mesh, a, b, p);
 }
 
 bool Delaunay2Core::make_first_triangle(std::vector<bool>& skip) {
@@ -259,7 +263,7 @@ TriIdx Delaunay2Core::walk_to(VertIdx p) {
     // triangulation.
     visibility_walk_2d(
         mesh, t, p, counters, mesh.triangle_slots(), [](TriIdx) { return true; },
-        [this] { return random_offset(); }, stopped);
+        [this] { return walk_random_offset_2d(rng_state_); }, stopped);
     last_triangle = stopped;
     return stopped;
 }

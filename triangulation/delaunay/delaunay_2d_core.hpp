@@ -39,6 +39,41 @@ inline bool has_infinite_vertex(const VertIdx* v) {
     return ((v[0] | v[1] | v[2]) & kTopBit) != 0;
 }
 
+/// The perturbed incircle of four finite mesh vertices, ties broken by the caller's indices
+/// `input_index` (mesh vertex -> caller's index), counted in `counters`. Inline (the filter's
+/// stage too): Bowyer-Watson cavities call it for every triangle they meet, and the call cost a
+/// fifth of the filter's work.
+Sign incircle_tie_2d(const TriMesh2& mesh, const std::vector<VertIdx>& input_index, VertIdx a,
+                     VertIdx b, VertIdx c, VertIdx d);
+inline Sign incircle_2d(const TriMesh2& mesh, const std::vector<VertIdx>& input_index,
+                        Delaunay2Counters& counters, VertIdx a, VertIdx b, VertIdx c, VertIdx d) {
+    ++counters.incircle_calls;
+    const Sign s = predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d));
+    return s != Sign::Zero ? s : incircle_tie_2d(mesh, input_index, a, b, c, d);
+}
+
+/// conflict_2d for an infinite triangle (a, b, inf): p beyond the hull edge ab, or strictly
+/// inside the segment ab.
+bool conflict_infinite_2d(const TriMesh2& mesh, Delaunay2Counters& counters, TriIdx t, VertIdx p);
+
+/// True when p lies in the perturbed circumcircle of the live triangle t (for an infinite
+/// triangle, conflict_infinite_2d): the conflict test of the sequential and the parallel
+/// constructions, counted in `counters`.
+inline bool conflict_2d(const TriMesh2& mesh, const std::vector<VertIdx>& input_index,
+                        Delaunay2Counters& counters, TriIdx t, VertIdx p) {
+    const VertIdx* v = &mesh.tv[3 * static_cast<std::size_t>(t)];
+    if (has_infinite_vertex(v)) return conflict_infinite_2d(mesh, counters, t, p);
+    return incircle_2d(mesh, input_index, counters, v[0], v[1], v[2], p) == Sign::Positive;
+}
+
+/// The 2D walk's random edge: a xorshift step of `state`, reduced mod 3.
+inline std::uint32_t walk_random_offset_2d(std::uint64_t& state) {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return static_cast<std::uint32_t>(state % 3);
+}
+
 /// A triangle of a Bowyer-Watson cavity and its vertices, read before its slot was marked dead.
 struct CavityTriangle2 {
     TriIdx triangle;
@@ -246,22 +281,13 @@ class Delaunay2Core {
 
     /// Exact orientation of three finite mesh vertices.
     Sign orient(VertIdx a, VertIdx b, VertIdx c);
-    /// Perturbed incircle of four finite mesh vertices (ties broken by the caller's indices).
-    /// Inline (the filter's stage too): Bowyer-Watson cavities call it for every triangle they
-    /// meet, and the call cost a fifth of the filter's work.
+    /// Perturbed incircle of four finite mesh vertices (incircle_2d, the core's counters).
     Sign incircle(VertIdx a, VertIdx b, VertIdx c, VertIdx d) {
-        ++counters.incircle_calls;
-        const Sign s =
-            predicates::incircle(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d));
-        return s != Sign::Zero ? s : incircle_tie(a, b, c, d);
+        return incircle_2d(mesh, input_index, counters, a, b, c, d);
     }
-    /// True when p lies in the perturbed circumcircle of t (for an infinite triangle (a, b, inf):
-    /// beyond the hull edge ab, or strictly inside the segment ab). @pre t is not dead.
-    bool conflict(TriIdx t, VertIdx p) {
-        const VertIdx* v = &mesh.tv[3 * t];
-        if (has_infinite_vertex(v)) return conflict_infinite(t, p);
-        return incircle(v[0], v[1], v[2], p) == Sign::Positive;
-    }
+    /// True when p lies in the perturbed circumcircle of t (conflict_2d, the core's counters).
+    /// @pre t is not dead.
+    bool conflict(TriIdx t, VertIdx p) { return conflict_2d(mesh, input_index, counters, t, p); }
     /// True when the finite points a, b, p are collinear and p lies strictly between a and b.
     bool strictly_between(VertIdx a, VertIdx b, VertIdx p) const;
     bool same_point(VertIdx a, VertIdx b) const {
@@ -298,11 +324,6 @@ class Delaunay2Core {
     void note_inserted(VertIdx p);
 
   private:
-    /// incircle's exact tie (the four points cocircular): the symbolic perturbation.
-    Sign incircle_tie(VertIdx a, VertIdx b, VertIdx c, VertIdx d) const;
-    /// conflict for an infinite triangle.
-    bool conflict_infinite(TriIdx t, VertIdx p);
-
     /// Multi-level grid over the bounding box: for each cell of each level, a triangle made by
     /// the last insertion inside it. Levels 0..depth_, level l has 2^l x 2^l cells.
     struct JumpGrid {
@@ -317,7 +338,6 @@ class Delaunay2Core {
     void jump_cell(VertIdx p, std::uint32_t& ix, std::uint32_t& iy) const;
 
     std::uint64_t rng_state_ = 0x9E3779B97F4A7C15ull;
-    std::uint32_t random_offset();
 };
 
 }  // namespace exactmesh::triangulation::detail

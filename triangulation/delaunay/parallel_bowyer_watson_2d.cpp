@@ -89,44 +89,10 @@ struct alignas(128) Worker {
         return owns_vertex(shared, v[0]) && owns_vertex(shared, v[1]) && owns_vertex(shared, v[2]);
     }
 
-    std::uint32_t random_offset() {
-        rng_state ^= rng_state << 13;
-        rng_state ^= rng_state >> 7;
-        rng_state ^= rng_state << 17;
-        return static_cast<std::uint32_t>(rng_state % 3);
-    }
-
-    Sign orient(const Shared& shared, VertIdx a, VertIdx b, VertIdx c) {
-        ++counters.orient_calls;
-        const TriMesh2& mesh = shared.mesh;
-        return predicates::orient2d(mesh.point(a), mesh.point(b), mesh.point(c));
-    }
-
-    /// The same test as Delaunay2Core::conflict, counted here (the core's counters are not
+    /// The conflict test (detail::conflict_2d), counted here (the core's counters are not
     /// shared between threads).
     bool conflict(const Shared& shared, TriIdx t, VertIdx p) {
-        const TriMesh2& mesh = shared.mesh;
-        const VertIdx* v = &mesh.tv[3 * t];
-        for (int k = 0; k < 3; ++k) {
-            if (v[k] == kInfinite) {
-                const VertIdx a = v[(k + 1) % 3], b = v[(k + 2) % 3];
-                const Sign s = orient(shared, a, b, p);
-                if (s != Sign::Zero) return s == Sign::Positive;
-                const double* pa = mesh.point(a);
-                const double* pb = mesh.point(b);
-                const double* pp = mesh.point(p);
-                const int c = pa[0] != pb[0] ? 0 : 1;
-                return (pa[c] < pp[c] && pp[c] < pb[c]) || (pb[c] < pp[c] && pp[c] < pa[c]);
-            }
-        }
-        ++counters.incircle_calls;
-        const Sign s = predicates::incircle(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
-                                            mesh.point(p));
-        if (s != Sign::Zero) return s == Sign::Positive;
-        const std::vector<VertIdx>& index = shared.input_index;
-        return predicates::incircle_sos(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]),
-                                        mesh.point(p), index[v[0]], index[v[1]], index[v[2]],
-                                        index[p]) == Sign::Positive;
+        return detail::conflict_2d(shared.mesh, shared.input_index, counters, t, p);
     }
 
     TriIdx allocate(TriMesh2& mesh) {
@@ -167,7 +133,7 @@ struct alignas(128) Worker {
         // In the random order from the first step (see visibility_walk_2d).
         const TriIdx found = detail::visibility_walk_2d(
             mesh, t, p, counters, 0, [this, &shared](TriIdx u) { return owns(shared, u); },
-            [this] { return random_offset(); }, stopped);
+            [this] { return detail::walk_random_offset_2d(rng_state); }, stopped);
         if (found == kNone) last = stopped;
         return found;
     }
