@@ -39,12 +39,14 @@ inline bool has_infinite_vertex(const VertIdx* v) {
     return ((v[0] | v[1] | v[2]) & kTopBit) != 0;
 }
 
-/// The perturbed incircle of four finite mesh vertices, ties broken by the caller's indices
-/// `input_index` (mesh vertex -> caller's index), counted in `counters`. Inline (the filter's
-/// stage too): Bowyer-Watson cavities call it for every triangle they meet, and the call cost a
-/// fifth of the filter's work.
+/// incircle's exact tie (the four points cocircular): the symbolic perturbation by the
+/// caller's indices `input_index` (mesh vertex -> caller's index).
 Sign incircle_tie_2d(const TriMesh2& mesh, const std::vector<VertIdx>& input_index, VertIdx a,
                      VertIdx b, VertIdx c, VertIdx d);
+
+/// The perturbed incircle of four finite mesh vertices (incircle_tie_2d on an exact tie),
+/// counted in `counters`. Inline (the filter's stage too): Bowyer-Watson cavities call it for
+/// every triangle they meet, and the call cost a fifth of the filter's work.
 inline Sign incircle_2d(const TriMesh2& mesh, const std::vector<VertIdx>& input_index,
                         Delaunay2Counters& counters, VertIdx a, VertIdx b, VertIdx c, VertIdx d) {
     ++counters.incircle_calls;
