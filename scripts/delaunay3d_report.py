@@ -12,7 +12,8 @@ Bowyer-Watson, Green-Sibson and CGAL's Delaunay_triangulation_3 at each n with t
 CGAL (CGAL time / ours) and peak heap bytes per point; the least-squares exponent of time vs n;
 with the rows BM_<algo>_<T>_threads (issue 17), the strong-scaling table of ours on 1..T threads
 beside CGAL's Parallel_tag triangulation on as many, and its plots delaunay3d_scaling_time.png and
-delaunay3d_scaling_efficiency.png (delaunay_scaling.py).
+delaunay3d_scaling_efficiency.png (delaunay_scaling.py); with the rows BM_memory_floor_<memory>,
+the memory floor of the same result beside our one-thread time (delaunay_scaling.floor_section).
 Exits 1 when a benchmark reported an error, after writing.
 """
 
@@ -24,7 +25,7 @@ import statistics
 import sys
 from collections import defaultdict
 
-from delaunay_scaling import scaling_section  # scripts/, beside this one
+from delaunay_scaling import floor_section, scaling_section  # scripts/, beside this one
 
 UNIT = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
 ALGOS = ["bowyer_watson", "green_sibson", "cgal"]
@@ -85,6 +86,7 @@ def main():
     os.makedirs(args.out_dir, exist_ok=True)
     scaling_section(data["benchmarks"], out, args.out_dir, "delaunay3d", "cgal_parallel",
                     "CGAL Parallel_tag", same_threads=True)
+    floor_section(data["benchmarks"], out)
     if errors:
         out.append("## Errors\n")
         out += [f"- {e}" for e in errors]

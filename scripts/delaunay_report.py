@@ -19,7 +19,9 @@ the CPU time, or medians computed here from raw runs), and writes into --out-dir
   delaunay2d_parabola.png   the parabola, given (sorted) vs random order;
   delaunay2d_scaling_time.png, delaunay2d_scaling_efficiency.png (with the rows
                             BM_bowyer_watson_<T>_threads): strong scaling on 1..T threads beside
-                            CGAL's sequential construction, with its table (delaunay_scaling.py);
+                            CGAL's sequential construction, with its table (delaunay_scaling.py),
+                            and with the rows BM_memory_floor_<memory> the memory floor of the
+                            same result beside our one-thread time (floor_section);
   gaussian_200_green_sibson.svg (with --bench and --cli): 200 Gaussian points written as a .node
                             by the bench's helper mode, triangulated by `exactmesh triangulate`.
 Exits 1 when a benchmark reported an error or the triangle counts disagree, after writing.
@@ -35,7 +37,7 @@ import sys
 
 from matplotlib.ticker import FuncFormatter
 
-from delaunay_scaling import scaling_section  # scripts/, beside this one
+from delaunay_scaling import floor_section, scaling_section  # scripts/, beside this one
 from report_plots import finish_axes, plt, save_figure
 
 DISTRIBUTIONS = ["uniform", "gaussian"]
@@ -581,6 +583,7 @@ def main():
     time_tables(res, out)
     scaling_section(data.get("benchmarks", []), out, args.out_dir, "delaunay2d", "cgal", "CGAL",
                     same_threads=False)
+    floor_section(data.get("benchmarks", []), out)
     exponent_tables(res, out)
     counter_tables(res, out)
     tanemura_merriam_table(res, out)

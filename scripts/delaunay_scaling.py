@@ -10,6 +10,11 @@ peer, peak heap bytes per point) and two plots: time vs threads per n, efficienc
 peer is CGAL's Parallel_tag triangulation at the same thread count (3D), or CGAL's sequential
 construction at every thread count (2D, where CGAL has no parallel triangulation). A JSON without
 such rows (older files) gives no section and no plots.
+
+The memory floor section (floor_section) reads the rows BM_memory_floor_<memory>/<distribution>
+[/<order>]/<n>[/real_time] (bench/memory_floor.hpp: memory warm, fresh or fresh_huge_pages) and
+writes, per distribution and n, the floor's median real seconds in each memory, the megabytes it
+writes, our one-thread time and its ratio to the warm and the fresh floor.
 """
 
 import os
@@ -21,32 +26,44 @@ from report_plots import finish_axes, plt, save_figure
 
 NAME = re.compile(r"^BM_(?P<algo>[a-z_]+?)_(?P<threads>\d+)_threads/(?P<dist>[a-z_]+)/"
                   r"(?:[a-z_]+/)?(?P<n>\d+)(?:/real_time)?$")
+FLOOR_NAME = re.compile(r"^BM_memory_floor_(?P<memory>[a-z_]+)/(?P<dist>[a-z_]+)/"
+                        r"(?:[a-z_]+/)?(?P<n>\d+)(?:/real_time)?$")
+FLOOR_MEMORY = ("warm", "fresh", "fresh_huge_pages")
 SECONDS_PER_UNIT = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
 OURS = "bowyer_watson"
+
+
+def median_real_seconds(benchmarks, pattern, key_of):
+    """The median real seconds of the rows whose name matches `pattern`, keyed key_of(match)
+    (the median of the raw repetitions, else the median aggregate), and each key's last entry."""
+    raw, aggregated, entries = {}, {}, {}
+    for entry in benchmarks:
+        match = pattern.match(entry.get("run_name", entry.get("name", "")))
+        if match is None or entry.get("error_occurred"):
+            continue
+        key = key_of(match)
+        seconds = float(entry["real_time"]) * SECONDS_PER_UNIT[entry.get("time_unit", "ns")]
+        if entry.get("run_type") == "aggregate":
+            if entry.get("aggregate_name") != "median":
+                continue
+            aggregated[key] = seconds
+        else:
+            raw.setdefault(key, []).append(seconds)
+        entries[key] = entry
+    seconds = dict(aggregated)
+    seconds.update({key: statistics.median(times) for key, times in raw.items()})
+    return seconds, entries
 
 
 class Scaling:
     """Median real seconds and peak heap bytes per point, keyed (algo, distribution, n, T)."""
 
     def __init__(self, benchmarks):
-        self.seconds, self.peak_per_point = {}, {}
-        raw, aggregated = {}, {}
-        for entry in benchmarks:
-            match = NAME.match(entry.get("run_name", entry.get("name", "")))
-            if match is None or entry.get("error_occurred"):
-                continue
-            key = (match["algo"], match["dist"], int(match["n"]), int(match["threads"]))
-            seconds = float(entry["real_time"]) * SECONDS_PER_UNIT[entry.get("time_unit", "ns")]
-            if entry.get("run_type") == "aggregate":
-                if entry.get("aggregate_name") != "median":
-                    continue
-                aggregated[key] = seconds
-            else:
-                raw.setdefault(key, []).append(seconds)
-            if entry.get("peak_bytes/pt") is not None:
-                self.peak_per_point[key] = entry["peak_bytes/pt"]
-        self.seconds = dict(aggregated)
-        self.seconds.update({key: statistics.median(times) for key, times in raw.items()})
+        self.seconds, entries = median_real_seconds(
+            benchmarks, NAME,
+            lambda m: (m["algo"], m["dist"], int(m["n"]), int(m["threads"])))
+        self.peak_per_point = {key: entry["peak_bytes/pt"] for key, entry in entries.items()
+                               if entry.get("peak_bytes/pt") is not None}
 
     def distributions(self):
         return sorted({d for a, d, _, _ in self.seconds if a == OURS},
@@ -163,3 +180,35 @@ def scaling_section(benchmarks, out, out_dir, prefix, peer, peer_label, same_thr
         plot_scaling(scaling, peer, peer_label, same_threads, kind, os.path.join(out_dir, name))
         out.append(f"![strong scaling: {kind} vs threads]({name})")
         out.append("")
+
+
+def floor_section(benchmarks, out):
+    """Appends the memory floor section to the Markdown lines `out`; nothing without floor
+    rows."""
+    seconds, entries = median_real_seconds(
+        benchmarks, FLOOR_NAME, lambda m: (m["memory"], m["dist"], int(m["n"])))
+    if not seconds:
+        return
+    scaling = Scaling(benchmarks)
+    header = ["distribution", "n"] + [f"floor {memory} s" for memory in FLOOR_MEMORY] + [
+        "MB written", "ours, 1 thread s", "ours / warm floor", "ours / fresh floor"]
+    rows = []
+    for dist, n in sorted({(d, m) for _, d, m in seconds}, key=lambda k: (k[0] != "uniform", k)):
+        floor = {memory: seconds.get((memory, dist, n)) for memory in FLOOR_MEMORY}
+        written = next((entries[(memory, dist, n)].get("MB_written") for memory in FLOOR_MEMORY
+                        if (memory, dist, n) in entries), None)
+        ours = scaling.seconds.get((OURS, dist, n, 1))
+        ratio = lambda f: f"{ours / f:.1f}" if ours and f else "–"  # noqa: E731
+        rows.append([dist, f"{n:,}"] + [fmt(floor[m]) if floor[m] else "–" for m in FLOOR_MEMORY]
+                    + ["–" if written is None else f"{written:.0f}",
+                       fmt(ours) if ours else "–", ratio(floor["warm"]), ratio(floor["fresh"])])
+    out.append("## Memory floor (issue 17)")
+    out.append("")
+    out.append("Rows `BM_memory_floor_<memory>` (bench/memory_floor.hpp): one pass that reads the "
+               "points in BRIO order and writes what the result holds, nothing else, in memory "
+               "that is warm, first touched in the pass, or first touched on 2 MiB pages (as our "
+               "mesh arrays are). Median real seconds; ours / floor = how many times the floor "
+               "our one-thread construction takes.")
+    out.append("")
+    out.append(table(header, rows))
+    out.append("")

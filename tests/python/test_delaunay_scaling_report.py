@@ -106,6 +106,49 @@ def test_2d_scaling_against_cgal_sequential(tmp_path):
         assert 0 < size < 300_000
 
 
+def floor_rows(text):
+    """The memory floor table's rows by (distribution, n), cells stripped."""
+    rows = {}
+    for line in text.split("## Memory floor", 1)[1].splitlines():
+        cells = [c.strip() for c in line.split("|")[1:-1]]
+        if len(cells) == 9 and cells[1][:1].isdigit():
+            rows[(cells[0], cells[1])] = cells
+    return rows
+
+
+def test_memory_floor_beside_our_one_thread_time(tmp_path):
+    # 3D, raw repetitions: ours 2,400 ms on one thread; the floor 50 ms warm, 160 ms fresh,
+    # 700 ms fresh on huge pages (medians of three), 264 MB written.
+    benchmarks = []
+    for rep, (ours, warm, fresh, huge) in enumerate(
+            [(2400.0, 50.0, 150.0, 700.0), (2500.0, 40.0, 160.0, 690.0),
+             (2300.0, 60.0, 170.0, 710.0)]):
+        benchmarks.append(iteration("BM_bowyer_watson_1_threads/uniform/1000000/real_time", rep,
+                                    ours))
+        for memory, ms in (("warm", warm), ("fresh", fresh), ("fresh_huge_pages", huge)):
+            benchmarks.append(iteration(f"BM_memory_floor_{memory}/uniform/1000000/real_time",
+                                        rep, ms, MB_written=263.9))
+    text = run_report(tmp_path, "delaunay3d_report.py", benchmarks, "delaunay3d.md")
+    # n, warm, fresh, fresh huge pages, MB, ours, ours / warm, ours / fresh.
+    assert floor_rows(text)[("uniform", "1,000,000")][2:] == [
+        "0.05", "0.16", "0.7", "264", "2.4", "48.0", "15.0"]
+    # 2D, median aggregates only, a floor without our row: the ratios are left blank.
+    benchmarks = []
+    for kind, scale in (("mean", 1.5), ("median", 1.0)):
+        benchmarks.append(aggregate("BM_bowyer_watson_1_threads/uniform/brio/1000000/real_time",
+                                    kind, 365.0 * scale))
+        benchmarks.append(aggregate("BM_memory_floor_fresh/uniform/brio/1000000/real_time", kind,
+                                    45.0 * scale, MB_written=64.0))
+        benchmarks.append(aggregate("BM_memory_floor_warm/gaussian/brio/1000000/real_time", kind,
+                                    15.0 * scale, MB_written=64.0))
+    text = run_report(tmp_path, "delaunay_report.py", benchmarks, "delaunay2d.md")
+    rows = floor_rows(text)
+    assert rows[("uniform", "1,000,000")][2:] == ["–", "0.045", "–", "64", "0.365", "–", "8.1"]
+    assert rows[("gaussian", "1,000,000")][2:] == ["0.015", "–", "–", "64", "–", "–", "–"]
+    # Uniform first.
+    assert text.index("| uniform | 1,000,000") < text.index("| gaussian | 1,000,000")
+
+
 def test_older_json_without_scaling_rows(tmp_path):
     benchmarks = [iteration("BM_bowyer_watson/uniform/1000", 0, 1.0),
                   iteration("BM_cgal/uniform/1000", 0, 2.0)]
@@ -115,4 +158,5 @@ def test_older_json_without_scaling_rows(tmp_path):
                   iteration("BM_cgal/uniform/brio/1024", 0, 2.0)]
     text = run_report(tmp_path, "delaunay_report.py", benchmarks, "delaunay2d.md")
     assert "Strong scaling" not in text and "time / CGAL" in text
+    assert "Memory floor" not in text
     assert not any(name.endswith(FIGURES) for name in os.listdir(tmp_path))
