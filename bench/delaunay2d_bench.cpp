@@ -373,12 +373,9 @@ void register_scaling(Distribution distribution) {
     apply(benchmark::RegisterBenchmark(("BM_cgal_1_threads/" + points).c_str(), &bm_cgal,
                                        distribution));
 #endif
-    for (const FloorMemory memory :
-         {FloorMemory::Warm, FloorMemory::Fresh, FloorMemory::FreshHugePages}) {
-        std::string name = "BM_memory_floor_";
-        name += std::string(floor_memory_name(memory)) + "/" + points;
+    for_each_memory_floor_row(points, [&](const std::string& name, FloorMemory memory) {
         apply(benchmark::RegisterBenchmark(name.c_str(), &bm_memory_floor, distribution, memory));
-    }
+    });
 }
 
 void register_all() {

@@ -313,13 +313,10 @@ void register_all() {
         apply(benchmark::RegisterBenchmark(("BM_cgal/" + points).c_str(), &bm_cgal, distribution));
 #endif
         if (scaling_ns.empty()) continue;
-        for (const FloorMemory memory :
-             {FloorMemory::Warm, FloorMemory::Fresh, FloorMemory::FreshHugePages}) {
-            std::string name = "BM_memory_floor_";
-            name += std::string(floor_memory_name(memory)) + "/" + points;
+        for_each_memory_floor_row(points, [&](const std::string& name, FloorMemory memory) {
             apply_scaling(
                 benchmark::RegisterBenchmark(name.c_str(), &bm_memory_floor, distribution, memory));
-        }
+        });
         for (unsigned threads = 1; threads <= max_threads; ++threads) {
             // Appended rather than "_" + to_string(...): GCC 12 -O3 warns (-Wrestrict, a false
             // positive) on operator+ of a literal and a temporary string.

@@ -22,28 +22,36 @@
 #include <sys/mman.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <new>
 #include <span>
+#include <string>
 
+#include "base/enum_names.hpp"
 #include "base/huge_pages.hpp"
 
 namespace exactmesh::bench {
 
 enum class FloorMemory { Warm, Fresh, FreshHugePages };
 
-inline const char* floor_memory_name(FloorMemory memory) {
-    switch (memory) {
-        case FloorMemory::Warm:
-            return "warm";
-        case FloorMemory::Fresh:
-            return "fresh";
-        case FloorMemory::FreshHugePages:
-            return "fresh_huge_pages";
+/// The memories' names, in the rows' order (base/enum_names.hpp).
+inline constexpr std::array<EnumName<FloorMemory>, 3> kFloorMemoryNames{
+    {{"warm", FloorMemory::Warm},
+     {"fresh", FloorMemory::Fresh},
+     {"fresh_huge_pages", FloorMemory::FreshHugePages}}};
+
+/// Calls add(name, memory) for each floor row of the points named `points` (a benchmark name's
+/// tail, "uniform/1000000" style): name = BM_memory_floor_<memory>/<points>.
+template <class Add>
+void for_each_memory_floor_row(const std::string& points, Add&& add) {
+    for (const EnumName<FloorMemory>& row : kFloorMemoryNames) {
+        std::string name = "BM_memory_floor_";
+        name += std::string(row.name) + "/" + points;
+        add(name, row.value);
     }
-    return "";
 }
 
 /// One anonymous mapping of `bytes` (its pages untouched), unmapped on destruction.
