@@ -16,6 +16,7 @@
 #include "predicates/sign.hpp"
 #include "triangulation/delaunay/delaunay_2d.hpp"
 #include "triangulation/delaunay/result_numbering.hpp"
+#include "triangulation/delaunay/walk_random.hpp"
 #include "triangulation/mesh/mesh2.hpp"
 
 namespace exactmesh::triangulation::detail {
@@ -66,14 +67,6 @@ inline bool conflict_2d(const TriMesh2& mesh, const std::vector<VertIdx>& input_
     const VertIdx* v = &mesh.tv[3 * static_cast<std::size_t>(t)];
     if (has_infinite_vertex(v)) return conflict_infinite_2d(mesh, counters, t, p);
     return incircle_2d(mesh, input_index, counters, v[0], v[1], v[2], p) == Sign::Positive;
-}
-
-/// The 2D walk's random edge: a xorshift step of `state`, reduced mod 3.
-inline std::uint32_t walk_random_offset_2d(std::uint64_t& state) {
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return static_cast<std::uint32_t>(state % 3);
 }
 
 /// A triangle of a Bowyer-Watson cavity and its vertices, read before its slot was marked dead.

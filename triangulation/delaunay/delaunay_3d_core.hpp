@@ -19,6 +19,7 @@
 #include "predicates/stats.hpp"
 #include "triangulation/delaunay/delaunay_3d.hpp"
 #include "triangulation/delaunay/result_numbering.hpp"
+#include "triangulation/delaunay/walk_random.hpp"
 #include "triangulation/mesh/flip_3d.hpp"
 #include "triangulation/mesh/mesh3.hpp"
 
@@ -90,14 +91,6 @@ struct Location3 {
     TetIdx tet = kNone;
     unsigned zero_faces = 0;
 };
-
-/// The walk's random face order: a xorshift step of `state`, 2 bits of it.
-inline std::uint32_t walk_random_offset(std::uint64_t& state) {
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return static_cast<std::uint32_t>(state >> 40) & 3u;
-}
 
 /// Remembering stochastic visibility walk [Devillers, Pion, Teillaud 2002] from the finite
 /// tetrahedron `t` towards p, entering a neighbour only when may_enter(neighbour): otherwise
