@@ -25,6 +25,7 @@
 #include "generators/boundary/domain_boundary_2d.hpp"
 #include "generators/boundary/narrow_wedges_2d.hpp"
 #include "generators/mesh_2d/domain_mesh_2d.hpp"
+#include "generators/mesh_2d/quadtree_leaf_bound_2d.hpp"
 #include "predicates/constructions.hpp"
 #include "predicates/orient2d.hpp"
 #include "triangulation/checks/check_conforming_2d.hpp"
@@ -111,9 +112,16 @@ class Quadtree {
     int limit = 0;
     std::vector<Node> nodes;
 
-    double x(int level, double i) const { return x0 + std::ldexp(i, exponent - level); }
-    double y(int level, double j) const { return y0 + std::ldexp(j, exponent - level); }
-    double side(int level) const { return std::ldexp(1.0, exponent - level); }
+    /// 2^(exponent - level) for the levels up to limit + 1, where it is a double (set by
+    /// root_square): i·2^(exponent - level) is then exact, as std::ldexp's, without its call.
+    std::array<double, kMaxLevel + 2> sides{};
+
+    double side(int level) const {
+        return level <= limit + 1 ? sides[static_cast<std::size_t>(level)]
+                                  : std::ldexp(1.0, exponent - level);
+    }
+    double x(int level, double i) const { return x0 + i * side(level); }
+    double y(int level, double j) const { return y0 + j * side(level); }
     Box cell(std::uint32_t n) const {
         const Node& c = nodes[n];
         return {x(c.level, c.i), y(c.level, c.j), x(c.level, c.i + 1.0), y(c.level, c.j + 1.0)};
@@ -123,24 +131,22 @@ class Quadtree {
         const double m = clearance * side(nodes[n].level);
         return {b.x0 - m, b.y0 - m, b.x1 + m, b.y1 + m};
     }
-    static std::uint64_t key(int level, std::uint32_t i, std::uint32_t j) {
-        return (std::uint64_t(level) << 58) | (std::uint64_t{i} << 29) | j;
-    }
+    /// The node of the level-`level` cell (i, j), or kNoNode when the tree does not reach it:
+    /// a descent from the root by the cell numbers' bits (no index: 16 M leaves kept a hash
+    /// table of more memory than the nodes, and its rehashing was a tenth of the time).
     std::uint32_t find(int level, std::int64_t i, std::int64_t j) const {
-        if (i < 0 || j < 0 || i >= (std::int64_t{1} << level) || j >= (std::int64_t{1} << level))
-            return kNoNode;
-        const auto it =
-            index_.find(key(level, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)));
-        return it == index_.end() ? kNoNode : it->second;
+        const std::uint32_t n = leaf_or_finer(level, i, j);
+        return n != kNoNode && nodes[n].level == level ? n : kNoNode;
     }
     /// The leaf containing the level-`level` cell (i, j), or an internal node at that level
     /// (the cell is split further), or kNoNode outside the root.
     std::uint32_t leaf_or_finer(int level, std::int64_t i, std::int64_t j) const {
-        for (int k = level; k >= 0; --k) {
-            const std::uint32_t n = find(k, i >> (level - k), j >> (level - k));
-            if (n != kNoNode) return n;
-        }
-        return kNoNode;
+        if (i < 0 || j < 0 || i >= (std::int64_t{1} << level) || j >= (std::int64_t{1} << level))
+            return kNoNode;
+        std::uint32_t n = 0;
+        for (int k = level - 1; k >= 0 && !nodes[n].leaf(); --k)
+            n = nodes[n].child + static_cast<std::uint32_t>(((i >> k) & 1) | (((j >> k) & 1) << 1));
+        return n;
     }
     /// The leaf whose closed cell holds (x, y), a point of the root square (the first one in
     /// the children's order on shared sides).
@@ -156,7 +162,6 @@ class Quadtree {
     std::uint32_t add(int level, std::uint32_t i, std::uint32_t j) {
         const auto n = static_cast<std::uint32_t>(nodes.size());
         nodes.push_back({i, j, level, kNoNode});
-        index_.emplace(key(level, i, j), n);
         return n;
     }
     void split(std::uint32_t n) {
@@ -166,13 +171,6 @@ class Quadtree {
             add(c.level + 1, 2 * c.i + (k & 1), 2 * c.j + (k >> 1));
         nodes[n].child = first;
     }
-    void reserve(std::size_t count) {
-        nodes.reserve(count);
-        index_.reserve(count);
-    }
-
-  private:
-    std::unordered_map<std::uint64_t, std::uint32_t> index_;
 };
 
 /// The root square and the depth limit: corners are multiples of 2^(exponent - limit - 1) no
@@ -207,6 +205,8 @@ Quadtree root_square(double xmin, double ymin, double xmax, double ymax) {
         }
     }
     tree.limit = std::max(tree.limit, 0);
+    for (int level = 0; level <= tree.limit + 1; ++level)
+        tree.sides[static_cast<std::size_t>(level)] = std::ldexp(1.0, tree.exponent - level);
     tree.nodes.push_back({0, 0, 0, kNoNode});
     return tree;
 }
@@ -239,6 +239,8 @@ class QuadtreeMesher {
     std::vector<std::uint8_t> bordering_;  // per boundary piece: the domain on a side
     std::vector<VertIdx> free_vertices_;   // isolated input vertices inside the domain
     std::vector<Obstacle> obstacles_;
+    std::vector<std::uint32_t> features_;                                ///< separates()'s scratch
+    std::array<std::vector<std::uint32_t>, kMaxLevel + 2> level_lists_;  ///< refine()'s scratch
     std::vector<std::uint64_t> narrow_pairs_;  ///< narrow_wedges_2d of the input segments
     // Per leaf (indexed by node), after distribute(): its obstacles in leaf_obstacles_.
     std::vector<std::uint32_t> leaf_begin_, leaf_end_, leaf_obstacles_;
@@ -255,6 +257,7 @@ class QuadtreeMesher {
     void refine(std::uint32_t n, const std::vector<std::uint32_t>& list, bool inside,
                 const std::array<double, 4>& corners);
     void split_counted(std::uint32_t n);
+    void refuse_inseparable_features();
     void balance();
     void obstacles_near(std::uint32_t n, const std::vector<std::uint32_t>& list,
                         std::vector<std::uint32_t>& found);
@@ -413,6 +416,33 @@ void QuadtreeMesher::split_counted(std::uint32_t n) {
                          "many elements)");
     }
     tree_.split(n);
+}
+
+/// Before any split: the feature criterion's lower bound on the leaves (quadtree_leaf_bound_2d)
+/// against the budget, so that pieces far closer together than they are long are refused at
+/// once with the estimate, not after the budget's leaves are built.
+void QuadtreeMesher::refuse_inseparable_features() {
+    std::vector<FeaturePiece2> pieces;
+    for (const Obstacle& o : obstacles_) {
+        if (o.va == tri::kNone || o.segment == kNoNode) continue;  // chords, isolated vertices
+        pieces.push_back({{o.a[0], o.a[1]}, {o.b[0], o.b[1]}, o.va, o.vb, o.segment});
+    }
+    QuadtreeFrame2 frame;
+    frame.x0 = tree_.x0, frame.y0 = tree_.y0, frame.side = tree_.side(0);
+    frame.smallest_side = tree_.side(tree_.limit);
+    frame.margin = std::min(0.25, options_.clearance);
+    const QuadtreeLeafBound2 bound = quadtree_leaf_bound_2d(
+        pieces, frame,
+        [&](std::uint32_t a, std::uint32_t b) { return narrow_wedge_pair(narrow_pairs_, a, b); });
+    counters_.leaf_bound = static_cast<std::uint64_t>(std::min(bound.leaves, 0x1p63));
+    if (bound.leaves > static_cast<double>(max_leaves_)) {
+        throw InputError("quadtree: at least " + format_number(std::floor(bound.leaves)) +
+                         " leaves, more than the budget of " + std::to_string(max_leaves_) +
+                         ": boundary pieces of different segments lie as close as " +
+                         format_number(bound.closest_gap) + " along much longer stretches (near (" +
+                         format_number(bound.densest_x) + ", " + format_number(bound.densest_y) +
+                         ")), and the quadtree separates them with leaves that small");
+    }
 }
 
 /// Top-down: `list` holds the obstacles meeting node n's grown box (so the children's lists
@@ -1179,13 +1209,17 @@ QuadtreeResult2 QuadtreeMesher::run() {
         domain_, o.size, o.max_boundary_points != 0 ? o.max_boundary_points : o.max_leaves);
     // Automatic: 64 leaves per triangle the size asks for and per boundary piece (features
     // between segments refine far below the size: crossings at small angles need thousands),
-    // at least 2^16, at most 2^24. A domain whose features are far finer than any such count
-    // (a sliver of width 1e-299) stops here in milliseconds, not after 2^24 leaves.
-    max_leaves_ = o.max_leaves != 0 ? o.max_leaves
-                                    : static_cast<std::uint64_t>(std::clamp(
-                                          64 * (expected_triangle_count(boundary_, o.size) +
-                                                static_cast<double>(boundary_.pieces.size() / 2)),
-                                          0x1p16, 0x1p24));
+    // at least 2^16, at most 8 per triangle and piece within [2^22, 2^24] (a domain whose
+    // features force far more leaves than the size asks for is refused after 2^22 leaves, 4-7
+    // s, as Delaunay refinement at its 10^6 points, not after 2^24). A domain whose features
+    // are far finer than any such count is refused before the tree by the features' lower
+    // bound on the leaves (refuse_inseparable_features).
+    const double asked = expected_triangle_count(boundary_, o.size) +
+                         static_cast<double>(boundary_.pieces.size() / 2);
+    max_leaves_ = o.max_leaves != 0
+                      ? o.max_leaves
+                      : static_cast<std::uint64_t>(
+                            std::clamp(64 * asked, 0x1p16, std::clamp(8 * asked, 0x1p22, 0x1p24)));
     if (boundary_.front.empty()) {
         throw InputError(
             "quadtree: no segment bounds the domain (a PSLG without segments is "
@@ -1223,6 +1257,7 @@ QuadtreeResult2 QuadtreeMesher::run() {
     const std::vector<double> chords_xy = boundary_.cdt.mesh.xy;
     const std::vector<VertIdx> chords = boundary_.cdt.pieces;
     collect_obstacles(chords_xy, chords);
+    refuse_inseparable_features();
     std::vector<std::uint32_t> all(obstacles_.size());
     std::iota(all.begin(), all.end(), 0u);
     const Box root = tree_.cell(0);

@@ -81,7 +81,9 @@ struct QuadtreeOptions2 {
 };
 
 struct QuadtreeCounters2 {
-    std::uint64_t leaves = 0;           ///< leaves of the balanced tree
+    std::uint64_t leaves = 0;  ///< leaves of the balanced tree
+    /// the features' lower bound on the leaves, before the tree (quadtree_leaf_bound_2d)
+    std::uint64_t leaf_bound = 0;
     std::uint64_t size_splits = 0;      ///< leaves split by the size criterion
     std::uint64_t boundary_splits = 0;  ///< leaves split by the piece-length criterion
     std::uint64_t feature_splits = 0;   ///< leaves split for two boundary features near them
@@ -110,11 +112,11 @@ struct QuadtreeCounters2 {
 /// The counters' names as `exactmesh mesh --stats` prints them, in this order (one row
 /// per field: counter_table_complete).
 inline constexpr std::array kQuadtreeCounterNames =
-    EM_COUNTER_TABLE(QuadtreeCounters2, leaves, size_splits, boundary_splits, feature_splits,
-                     balance_splits, depth, depth_limit, piece_splits, box_tests, domain_queries,
-                     kept_leaves, fan_leaves, template_triangles, kept_components, outline_edges,
-                     band_corners, dropped_corners, band_vertices, band_triangles, band_flips,
-                     band_circumcenters, band_rejected, band_piece_splits);
+    EM_COUNTER_TABLE(QuadtreeCounters2, leaves, leaf_bound, size_splits, boundary_splits,
+                     feature_splits, balance_splits, depth, depth_limit, piece_splits, box_tests,
+                     domain_queries, kept_leaves, fan_leaves, template_triangles, kept_components,
+                     outline_edges, band_corners, dropped_corners, band_vertices, band_triangles,
+                     band_flips, band_circumcenters, band_rejected, band_piece_splits);
 static_assert(counter_table_complete(kQuadtreeCounterNames));
 
 struct QuadtreeResult2 {

@@ -80,9 +80,11 @@ TEST(CounterTable, GeneratorTablesKeepTheirNames) {
     EXPECT_EQ(refinement.back().first, "threads");
     gen::QuadtreeCounters2 q;
     q.depth = 5;
+    q.leaf_bound = 11;
     const auto quadtree = gen::counter_list(q);
-    ASSERT_EQ(quadtree.size(), 23u);
-    EXPECT_EQ(quadtree[5], (std::pair<std::string, std::uint64_t>{"depth", 5}));
+    ASSERT_EQ(quadtree.size(), 24u);
+    EXPECT_EQ(quadtree[1], (std::pair<std::string, std::uint64_t>{"leaf_bound", 11}));
+    EXPECT_EQ(quadtree[6], (std::pair<std::string, std::uint64_t>{"depth", 5}));
     EXPECT_EQ(quadtree.back().first, "band_piece_splits");
     const auto front = gen::counter_list(gen::AdvancingFrontCounters2{});
     ASSERT_EQ(front.size(), 13u);
