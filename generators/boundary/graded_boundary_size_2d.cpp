@@ -92,8 +92,42 @@ class GradedSites {
         return best;
     }
 
+    /// At most the value operator() returns anywhere in the box [x0, x1] x [y0, y1] (the
+    /// exact minimum over the sites of h_v + g·(distance from v to the box), no slack in the
+    /// pruning), but for a few units in the last place of rounding: the size criterion settled
+    /// for a whole box (SizeFunction::lower_bound_in_box).
+    double lower_bound_in_box(double x0, double y0, double x1, double y1) const {
+        double best = kInfinity;
+        std::uint32_t stack[64];
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const Node& node = nodes_[stack[--top]];
+            if (box_bound(node.x0, node.y0, node.x1, node.y1, node.smallest, x0, y0, x1, y1) >=
+                best)
+                continue;
+            if (node.left == kLeaf) {
+                for (std::uint32_t i = node.begin; i < node.end; ++i) {
+                    const double x = xy_[2 * i], y = xy_[2 * i + 1];
+                    best = std::min(best, box_bound(x, y, x, y, sizes_[i], x0, y0, x1, y1));
+                }
+                continue;
+            }
+            stack[top++] = node.left + 1;
+            stack[top++] = node.left;
+        }
+        return best;
+    }
+
   private:
     static constexpr std::uint32_t kLeaf = std::numeric_limits<std::uint32_t>::max();
+    /// smallest + g·(distance between the boxes [a] and [b]).
+    double box_bound(double ax0, double ay0, double ax1, double ay1, double smallest, double bx0,
+                     double by0, double bx1, double by1) const {
+        const double dx = bx1 < ax0 ? ax0 - bx1 : bx0 > ax1 ? bx0 - ax1 : 0;
+        const double dy = by1 < ay0 ? ay0 - by1 : by0 > ay1 ? by0 - ay1 : 0;
+        return smallest + gradation_ * scale_free_norm(dx, dy);
+    }
     struct Node {
         double x0, y0, x1, y1;           ///< the bounding box of its sites
         double smallest;                 ///< the smallest h_v of its sites
@@ -254,7 +288,11 @@ SizeFunction graded_to_fine_features(const MeshDomain2& domain_of, const SizeFun
                 << " vertices' fine features (gradation " << gradation << ")";
     return SizeFunction::analytic(
                [field, size](double x, double y) { return std::min(size(x, y), (*field)(x, y)); },
-               description.str())
+               description.str(),
+               [field, size](double x0, double y0, double x1, double y1) {
+                   return std::min(size.lower_bound_in_box(x0, y0, x1, y1),
+                                   field->lower_bound_in_box(x0, y0, x1, y1));
+               })
         .marked_steep();
 }
 
@@ -291,7 +329,10 @@ SizeFunction graded_size_from_boundary(const MeshDomain2& domain_of, double grad
     std::ostringstream description;
     description << "graded from the boundary: " << sites << " vertices, gradation " << gradation;
     SizeFunction graded = SizeFunction::analytic(
-        [field](double x, double y) { return (*field)(x, y); }, description.str());
+        [field](double x, double y) { return (*field)(x, y); }, description.str(),
+        [field](double x0, double y0, double x1, double y1) {
+            return field->lower_bound_in_box(x0, y0, x1, y1);
+        });
     return steep ? graded.marked_steep() : graded;
 }
 

@@ -239,8 +239,6 @@ class QuadtreeMesher {
     std::vector<std::uint8_t> bordering_;  // per boundary piece: the domain on a side
     std::vector<VertIdx> free_vertices_;   // isolated input vertices inside the domain
     std::vector<Obstacle> obstacles_;
-    std::vector<std::uint32_t> features_;                                ///< separates()'s scratch
-    std::array<std::vector<std::uint32_t>, kMaxLevel + 2> level_lists_;  ///< refine()'s scratch
     std::vector<std::uint64_t> narrow_pairs_;  ///< narrow_wedges_2d of the input segments
     // Per leaf (indexed by node), after distribute(): its obstacles in leaf_obstacles_.
     std::vector<std::uint32_t> leaf_begin_, leaf_end_, leaf_obstacles_;
@@ -255,7 +253,7 @@ class QuadtreeMesher {
     void sample_sizes(std::uint32_t n, double grid[3][3]) const;
     bool separates(std::uint32_t n, const std::vector<std::uint32_t>& list);
     void refine(std::uint32_t n, const std::vector<std::uint32_t>& list, bool inside,
-                const std::array<double, 4>& corners);
+                const std::array<double, 4>& corners, bool settled);
     void split_counted(std::uint32_t n);
     void refuse_inseparable_features();
     void balance();
@@ -448,9 +446,13 @@ void QuadtreeMesher::refuse_inseparable_features() {
 /// Top-down: `list` holds the obstacles meeting node n's grown box (so the children's lists
 /// are filtered from it: their grown boxes lie inside n's, rounding being monotone).
 /// `inside`: n is known to lie inside the domain (its parent's list was empty and it did).
-/// `corners`: the size at n's corners (SW, SE, NW, NE), sampled by its parent.
+/// `corners`: the size at n's corners (SW, SE, NW, NE), sampled by its parent, unless
+/// `settled`: no node of n's subtree is split by the size criterion (n's side is at most
+/// cell_factor times the size's lower bound over n's cell, with a margin for the bound's
+/// rounding: every sample in the subtree would be at least that bound, and every side at most
+/// n's), so its sizes are not sampled and the splits are the ones the samples would make.
 void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& list, bool inside,
-                            const std::array<double, 4>& corners) {
+                            const std::array<double, 4>& corners, bool settled) {
     const int level = tree_.nodes[n].level;
     if (level >= tree_.limit) return;
     const double side = tree_.side(level);
@@ -461,13 +463,23 @@ void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& l
         if (!inside_domain(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1))) return;
         inside = true;
     }
-    double grid[3][3];
-    grid[0][0] = corners[0], grid[0][2] = corners[1], grid[2][0] = corners[2],
-    grid[2][2] = corners[3];
-    sample_sizes(n, grid);
-    double smallest = grid[0][0];
-    for (const auto& row : grid) smallest = std::min({smallest, row[0], row[1], row[2]});
-    bool split = side > options_.cell_factor * smallest;
+    if (!settled &&
+        side <= options_.cell_factor * std::min({corners[0], corners[1], corners[2], corners[3]})) {
+        // Not split by the corners' sizes: perhaps by no size in the subtree.
+        const Box b = tree_.cell(n);
+        const double bound = options_.size.lower_bound_in_box(b.x0, b.y0, b.x1, b.y1);
+        settled = side <= options_.cell_factor * (bound * (1 - 0x1p-40));
+    }
+    double grid[3][3] = {};
+    bool split = false;
+    if (!settled) {
+        grid[0][0] = corners[0], grid[0][2] = corners[1], grid[2][0] = corners[2],
+        grid[2][2] = corners[3];
+        sample_sizes(n, grid);
+        double smallest = grid[0][0];
+        for (const auto& row : grid) smallest = std::min({smallest, row[0], row[1], row[2]});
+        split = side > options_.cell_factor * smallest;
+    }
     if (split) {
         ++counters_.size_splits;
     } else {
@@ -490,7 +502,8 @@ void QuadtreeMesher::refine(std::uint32_t n, const std::vector<std::uint32_t>& l
         obstacles_near(c, list, child_list);
         const unsigned col = (c - first) & 1, row = (c - first) >> 1;
         refine(c, child_list, inside,
-               {grid[row][col], grid[row][col + 1], grid[row + 1][col], grid[row + 1][col + 1]});
+               {grid[row][col], grid[row][col + 1], grid[row + 1][col], grid[row + 1][col + 1]},
+               settled);
     }
 }
 
@@ -1263,7 +1276,8 @@ QuadtreeResult2 QuadtreeMesher::run() {
     const Box root = tree_.cell(0);
     refine(0, all, false,
            {size_at(root.x0, root.y0), size_at(root.x1, root.y0), size_at(root.x0, root.y1),
-            size_at(root.x1, root.y1)});
+            size_at(root.x1, root.y1)},
+           false);
     balance();
     split_pieces();
     collect_obstacles(chords_xy, chords);

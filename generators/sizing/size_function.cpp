@@ -126,6 +126,13 @@ SizeFunction SizeFunction::analytic(std::function<double(double, double)> functi
     return f;
 }
 
+SizeFunction SizeFunction::analytic(std::function<double(double, double)> function,
+                                    std::string description, BoxLowerBound lower_bound) {
+    SizeFunction f = analytic(std::move(function), std::move(description));
+    f.analytic_lower_ = std::make_shared<const BoxLowerBound>(std::move(lower_bound));
+    return f;
+}
+
 SizeFunction SizeFunction::background_mesh(std::vector<double> xy, std::vector<double> sizes,
                                            std::vector<std::uint32_t> triangles) {
     SizeFunction f;

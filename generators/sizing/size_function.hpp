@@ -102,6 +102,11 @@ class SizeFunction {
                                 double cap = std::numeric_limits<double>::infinity());
     /// s = f(x, y); f must return a value > 0 (+infinity allowed) at every point of the domain.
     static SizeFunction analytic(std::function<double(double, double)> f, std::string description);
+    /// At most f anywhere in the box [x0, x1] x [y0, y1], but for a few units in the last place.
+    using BoxLowerBound = std::function<double(double x0, double y0, double x1, double y1)>;
+    /// The same with a lower bound over boxes (lower_bound_in_box).
+    static SizeFunction analytic(std::function<double(double, double)> f, std::string description,
+                                 BoxLowerBound lower_bound);
     /// Linear interpolation of `sizes` over a triangulation (barycentric inside a triangle; at a
     /// point outside every triangle, the value at the nearest point of the triangulation).
     /// `xy`: 2·#V, `sizes`: #V finite > 0, `triangles`: 3·#T counter-clockwise, 0-based.
@@ -125,6 +130,15 @@ class SizeFunction {
         return kind_ == Kind::None      ? kInfinity
                : kind_ == Kind::Uniform ? std::min(factor_ * cap_, ceiling_)
                                         : std::min(factor_ * evaluate(x, y), ceiling_);
+    }
+    /// At most the size anywhere in the box [x0, x1] x [y0, y1], but for a few units in the last
+    /// place: the uniform size, an analytic function's given bound, +infinity for none, 0
+    /// (nothing known) for the other kinds. A generator settles its size criterion over a whole
+    /// box by it, without sampling (the quadtree: the same splits as its samples make).
+    double lower_bound_in_box(double x0, double y0, double x1, double y1) const {
+        if (kind_ == Kind::None || kind_ == Kind::Uniform) return (*this)(x0, y0);
+        if (kind_ != Kind::Analytic || !analytic_lower_) return 0.0;
+        return std::min(factor_ * (*analytic_lower_)(x0, y0, x1, y1), ceiling_);
     }
     /// False for the "none" function (no size criterion).
     bool bounded() const { return kind_ != Kind::None; }
@@ -178,6 +192,7 @@ class SizeFunction {
     std::vector<PointSource> points_;
     std::vector<LineSource> lines_;
     std::shared_ptr<const std::function<double(double, double)>> analytic_;
+    std::shared_ptr<const BoxLowerBound> analytic_lower_;
     std::shared_ptr<const BackgroundSizeMesh2> background_;
     std::shared_ptr<const SizeQuadtree2> quadtree_;
     std::shared_ptr<const SmoothedSizeGrid2> smoothed_;

@@ -16,6 +16,7 @@
 #include <initializer_list>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -485,3 +486,65 @@ TEST(Generators_Quadtree2, BandSplitsOfASubnormalSideStayOnItsChain) {
 }
 
 }  // namespace
+
+TEST(Generators_Quadtree2, SizeLowerBoundOverABoxIsAtMostEverySampleInIt) {
+    // SizeFunction::lower_bound_in_box, which settles the size criterion for a whole subtree:
+    // the graded size from the boundary, the same graded down to fine features, uniform; random
+    // boxes from 1e-6 of the domain to all of it, 64 samples in each (corners included).
+    std::mt19937_64 random(51);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const gen::SampleDomain d : gen::kAllSampleDomains) {
+        const gen::SizeFunction own = gen::sample_domain_size(d);
+        const Input in = from_domain(gen::sample_domain(d, own));
+        const gen::MeshDomain2 domain(in.pslg());
+        const gen::SizeFunction graded = gen::graded_size_from_boundary(domain);
+        const std::vector<gen::SizeFunction> sizes = {
+            graded, gen::graded_to_fine_features(domain, gen::SizeFunction::uniform(0.3)),
+            gen::SizeFunction::uniform(0.05), graded.scaled(0.5, 0.2)};
+        double x0 = in.xy[0], x1 = x0, y0 = in.xy[1], y1 = y0;
+        for (std::size_t i = 0; i < in.xy.size(); i += 2) {
+            x0 = std::min(x0, in.xy[i]), x1 = std::max(x1, in.xy[i]);
+            y0 = std::min(y0, in.xy[i + 1]), y1 = std::max(y1, in.xy[i + 1]);
+        }
+        for (const gen::SizeFunction& size : sizes) {
+            int settled = 0;
+            for (int box = 0; box < 300; ++box) {
+                const double side = (x1 - x0) * std::pow(10.0, -6 * unit(random));
+                const double bx = x0 + (x1 - x0) * unit(random), by = y0 + (y1 - y0) * unit(random);
+                const double bound = size.lower_bound_in_box(bx, by, bx + side, by + side);
+                ASSERT_GT(bound, 0) << gen::sample_domain_name(d) << ": " << size.describe();
+                for (int k = 0; k < 64; ++k) {
+                    const double sx = k < 4 ? (k & 1) : unit(random),
+                                 sy = k < 4 ? (k >> 1) : unit(random);
+                    const double value = size(bx + sx * side, by + sy * side);
+                    ASSERT_LE(bound, value) << gen::sample_domain_name(d) << ": " << size.describe()
+                                            << " box " << bx << " " << by << " side " << side;
+                }
+                settled += bound >= 0.5 * size(bx, by);
+            }
+            EXPECT_GT(settled, 100) << size.describe();  // a bound, not just 0
+        }
+    }
+}
+
+TEST(Generators_Quadtree2, SettledSubtreesMakeTheSameMeshAsSamplingEveryNode) {
+    // The same size without its box lower bound (an analytic function of its values) samples
+    // every node: the same tree, the same mesh, bit for bit.
+    for (const gen::SampleDomain d : gen::kAllSampleDomains) {
+        const gen::SizeFunction own = gen::sample_domain_size(d);
+        const Input in = from_domain(gen::sample_domain(d, own));
+        const gen::SizeFunction graded = gen::graded_size_from_boundary(in.pslg());
+        const gen::SizeFunction opaque = gen::SizeFunction::analytic(
+            [graded](double x, double y) { return graded(x, y); }, "the graded size, opaque");
+        EXPECT_EQ(opaque.lower_bound_in_box(0, 0, 1, 1), 0.0);
+        gen::QuadtreeOptions2 options;
+        options.size = graded;
+        const gen::QuadtreeResult2 fast = gen::quadtree_mesh_2d(in.pslg(), options);
+        options.size = opaque;
+        const gen::QuadtreeResult2 slow = gen::quadtree_mesh_2d(in.pslg(), options);
+        EXPECT_EQ(fast.counters.leaves, slow.counters.leaves) << gen::sample_domain_name(d);
+        EXPECT_EQ(fast.counters.size_splits, slow.counters.size_splits);
+        EXPECT_EQ(fast.mesh.mesh.xy, slow.mesh.mesh.xy) << gen::sample_domain_name(d);
+        EXPECT_EQ(fast.mesh.mesh.triangles, slow.mesh.mesh.triangles) << gen::sample_domain_name(d);
+    }
+}
