@@ -1223,10 +1223,10 @@ QuadtreeResult2 QuadtreeMesher::run() {
     // Automatic: 64 leaves per triangle the size asks for and per boundary piece (features
     // between segments refine far below the size: crossings at small angles need thousands),
     // at least 2^16, at most 8 per triangle and piece within [2^22, 2^24] (a domain whose
-    // features force far more leaves than the size asks for is refused after 2^22 leaves, 4-7
-    // s, as Delaunay refinement at its 10^6 points, not after 2^24). A domain whose features
-    // are far finer than any such count is refused before the tree by the features' lower
-    // bound on the leaves (refuse_inseparable_features).
+    // features force far more leaves than the size asks for is refused after 2^22 leaves, as
+    // Delaunay refinement at its 10^6 points, not after 2^24). A domain whose features are far
+    // finer than any such count is refused before the tree by the features' lower bound on the
+    // leaves (refuse_inseparable_features).
     const double asked = expected_triangle_count(boundary_, o.size) +
                          static_cast<double>(boundary_.pieces.size() / 2);
     max_leaves_ = o.max_leaves != 0
