@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "predicates/exact_range.hpp"
@@ -103,4 +105,32 @@ TEST(Predicates_ExactRange, Orient2dOutOfRangeKeepsTheSignOfTheUnscaledPoints) {
     }
     const double p[2] = {1.0, 0.0}, q[2] = {0x1p-1074, 0.0}, r[2] = {0.5, 0x1p-1074};
     EXPECT_EQ(pr::orient2d(p, q, r), Sign::Negative);
+}
+
+TEST(Predicates_ExactRange, Orient2dScaledPerAxisKeepsTheSignOfTheUnscaledPoints) {
+    // orient2d_exact's first stage scales the differences by a power of two per axis (the
+    // sign of det is unchanged, the filter's Gappa model normalises each axis so): x and y
+    // moved far apart in magnitude, on and a unit off the line y = 2x - 3, against the same
+    // integer points at 2^0. Every scaling is exact (small integers times powers of two).
+    std::uint64_t state = 20261207;
+    auto next = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<int>((state >> 33) % 2001) - 1000;
+    };
+    for (const auto& [kx, ky] :
+         {std::pair{600, -600}, std::pair{-600, 600}, std::pair{600, 600}, std::pair{-600, -600},
+          std::pair{1000, -1000}, std::pair{0, -1020}}) {
+        for (int trial = 0; trial < 2000; ++trial) {
+            double p[3][2];
+            for (auto& q : p) {
+                const int x = next();
+                q[0] = x, q[1] = 2.0 * x - 3 + (trial % 3 == 0 ? 0 : next() % 2);
+            }
+            double s[3][2];
+            for (int i = 0; i < 3; ++i)
+                s[i][0] = std::ldexp(p[i][0], kx), s[i][1] = std::ldexp(p[i][1], ky);
+            ASSERT_EQ(pr::orient2d(s[0], s[1], s[2]), pr::orient2d(p[0], p[1], p[2]))
+                << kx << " " << ky << " trial " << trial;
+        }
+    }
 }
