@@ -53,13 +53,15 @@ std::optional<Sign> filter_scaled_per_axis(double adx, double ady, double bdx,
 }  // namespace
 
 Sign orient2d_exact(const double* a, const double* b, const double* c) {
-    if (const auto s = filter_scaled_per_axis(a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1])) {
-        detail::count_stage(&PredicateStats::orient2d, &StageCounts::rescaled);
-        detail::count_stage(&PredicateStats::orient2d, &StageCounts::filter);
-        return *s;
-    }
     detail::require_finite("orient2d", {a[0], a[1], b[0], b[1], c[0], c[1]});
     if (!detail::expansion_safe(2, {a[0], a[1], b[0], b[1], c[0], c[1]})) {
+        // Only here, off the in-range exact path (near-degenerate inputs at ordinary scales).
+        if (const auto s =
+                filter_scaled_per_axis(a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1])) {
+            detail::count_stage(&PredicateStats::orient2d, &StageCounts::rescaled);
+            detail::count_stage(&PredicateStats::orient2d, &StageCounts::filter);
+            return *s;
+        }
         return detail::out_of_range_sign<6>(
             &PredicateStats::orient2d, 2, {a[0], a[1], b[0], b[1], c[0], c[1]},
             [](const double* s) { return orient2d_filter(s, s + 2, s + 4); },
