@@ -135,9 +135,7 @@ class GradedSites {
     };
 
     double lower_bound(const Node& node, double x, double y) const {
-        const double dx = x < node.x0 ? node.x0 - x : x > node.x1 ? x - node.x1 : 0;
-        const double dy = y < node.y0 ? node.y0 - y : y > node.y1 ? y - node.y1 : 0;
-        return node.smallest + gradation_ * scale_free_norm(dx, dy);
+        return box_bound(node.x0, node.y0, node.x1, node.y1, node.smallest, x, y, x, y);
     }
 
     /// The node of sites order_[begin, end), a leaf until split.
