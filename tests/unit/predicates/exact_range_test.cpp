@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "predicates/exact_range.hpp"
+#include "predicates/exact_reference.hpp"
 #include "predicates/orient2d.hpp"
 #include "predicates/stats.hpp"
 
@@ -133,4 +134,58 @@ TEST(Predicates_ExactRange, Orient2dScaledPerAxisKeepsTheSignOfTheUnscaledPoints
                 << kx << " " << ky << " trial " << trial;
         }
     }
+}
+
+TEST(Predicates_ExactRange, Orient2dOutOfTheFilterRangeMatchesTheExactSign) {
+    // Out of the filter's range, orient2d_exact first filters the differences scaled per axis,
+    // then rescales all six coordinates for its exact stages, or asks GMP. Points on, a unit in
+    // the last place off, and far off lines through points of mixed magnitudes (differences
+    // 2^-700 to 1 of the largest on an axis, around the 2^-484 past which products of scaled
+    // differences underflow; exact and rounded differences), at 2^600 and 2^-600, against the
+    // exact reference (GMP), in two rotations.
+    std::uint64_t state = 52;
+    auto next = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return state >> 11;
+    };
+    auto unit = [&] { return static_cast<double>(next()) * 0x1p-53; };  // [0, 1), 53 bits
+    const int gaps[] = {0, -10, -52, -300, -483, -484, -485, -600, -700};
+    int zeros = 0;
+    for (const int scale : {600, -600}) {
+        for (int trial = 0; trial < 3000; ++trial) {
+            const double gx = std::ldexp(1.0, gaps[next() % 9]);
+            const double gy = std::ldexp(1.0, gaps[next() % 9]);
+            // c, then a and b at offsets on the lattice of c's last place (exact differences)
+            // or anywhere (rounded ones), then b moved onto or beside the line through a and c.
+            double c[2] = {1 + unit(), 1 + unit()};
+            const bool lattice = next() % 2 == 0;
+            auto offset = [&](double g) {
+                const double d = g * (unit() - 0.5);
+                return lattice ? std::ldexp(std::round(std::ldexp(d, 52)), -52) : d;
+            };
+            double a[2] = {c[0] + offset(gx), c[1] + offset(gy)};
+            double b[2] = {c[0] + 2 * (a[0] - c[0]), c[1] + 2 * (a[1] - c[1])};  // on the line
+            switch (next() % 3) {
+                case 0:
+                    break;
+                case 1:
+                    b[1] = std::nextafter(b[1], 3.0);
+                    break;
+                default:
+                    b[0] = c[0] + offset(gx), b[1] = c[1] + offset(gy);
+                    break;
+            }
+            double s[3][2];
+            for (int k = 0; k < 2; ++k) {
+                s[0][k] = std::ldexp(a[k], scale);
+                s[1][k] = std::ldexp(b[k], scale);
+                s[2][k] = std::ldexp(c[k], scale);
+            }
+            const Sign want = pr::reference::orient2d(s[0], s[1], s[2]);
+            ASSERT_EQ(pr::orient2d(s[0], s[1], s[2]), want) << scale << " trial " << trial;
+            ASSERT_EQ(pr::orient2d(s[1], s[2], s[0]), want) << scale << " trial " << trial;
+            zeros += want == Sign::Zero ? 1 : 0;
+        }
+    }
+    EXPECT_GT(zeros, 300);  // exact zeros, which no filter decides, are among them
 }
