@@ -100,9 +100,14 @@ class Cavity2 {
         for (std::size_t i = 0; i < triangle_count_; ++i) {
             reserve(3);  // at most three more entries in each buffer
             const CavityTriangle2 c = triangles_[i];
+            // The three neighbours' vertices asked for at once, before the first test waits
+            // on one of them.
+            const EdgeIdx* const twins = &mesh.twin[3 * static_cast<std::size_t>(c.triangle)];
+            for (unsigned k = 0; k < 3; ++k)
+                __builtin_prefetch(&mesh.tv[3 * static_cast<std::size_t>(triangle_of(twins[k]))]);
             for (unsigned k = 0; k < 3; ++k) {
                 const EdgeIdx e = 3 * c.triangle + k;
-                const EdgeIdx f = mesh.twin[e];
+                const EdgeIdx f = twins[k];
                 const TriIdx u = triangle_of(f);
                 if (mesh.is_dead(u)) continue;  // in the cavity already
                 if (!conflict(u)) {
@@ -128,6 +133,7 @@ class Cavity2 {
         VertIdx* const v = &mesh.tv[3 * static_cast<std::size_t>(t)];
         triangles_[triangle_count_++] = {t, {v[0], v[1], v[2]}};
         v[0] = kNone;
+        __builtin_prefetch(&mesh.twin[3 * static_cast<std::size_t>(t)]);  // read when it is grown
     }
 
     std::vector<CavityTriangle2> triangles_;
@@ -213,6 +219,15 @@ TriIdx visibility_walk_2d(const TriMesh2& mesh, TriIdx t, VertIdx p, Delaunay2Co
     for (;;) {
         ++steps;
         const VertIdx* const v = tv + 3 * static_cast<std::size_t>(t);
+        if (entered != kNone) {
+            // Both triangles the step may go to next, asked for while the tests below wait
+            // on t's corners.
+            const std::uint32_t j = entered - 3 * t;
+            __builtin_prefetch(tv + 3 * static_cast<std::size_t>(
+                                            triangle_of(twin[3 * std::size_t{t} + kBefore[j]])));
+            __builtin_prefetch(tv + 3 * static_cast<std::size_t>(
+                                            triangle_of(twin[3 * std::size_t{t} + kAfter[j]])));
+        }
         if (has_infinite_vertex(v)) break;  // crossed a hull edge that sees p
         const double* const corner[3] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2])};
         // orient2d(corner[k], corner[k + 1], p) for the edges tested, each difference taken once.
