@@ -146,6 +146,8 @@ bool is_plc_3d(const std::string& path) {
 int run_plc_check_3d(const CheckArguments& arguments) {
     namespace fs = std::filesystem;
     tri::Plc3 plc = io::plc_from_file(io::read_plc(arguments.node_path));
+    const std::vector<double> input_xyz = plc.xyz;  // before vertices at one point are merged
+    const auto inputs = static_cast<std::uint32_t>(input_xyz.size() / 3);
     try {
         tri::prepare_plc_for_meshing_3d(plc);
     } catch (const InputError& error) {
@@ -165,18 +167,22 @@ int run_plc_check_3d(const CheckArguments& arguments) {
         std::cout << "not ok: " << arguments.ele_path << ": " << problem << '\n';
         return kExitCheckFailed;
     };
-    if (nodes.vertex_count() < plc.vertex_count())
+    if (nodes.vertex_count() < inputs)
         return fail(node_path.string() + " has " + std::to_string(nodes.vertex_count()) +
-                    " vertices, fewer than the " + std::to_string(plc.vertex_count()) +
-                    " of the input");
-    for (std::size_t i = 0; i < plc.xyz.size(); ++i) {
-        if (nodes.xyz[i] != plc.xyz[i])
+                    " vertices, fewer than the " + std::to_string(inputs) + " of the input");
+    for (std::size_t i = 0; i < input_xyz.size(); ++i) {
+        if (nodes.xyz[i] != input_xyz[i])
             return fail("input vertex " + std::to_string(i / 3 + plc.first_index) +
                         " moved or is missing (the mesh's first vertices are the input's)");
     }
+    // Checked in the merged PLC's numbering (merge_duplicate_vertices_3d): a merged vertex as
+    // the one that stands for it, the Steiner points after the PLC's vertices.
     tri::Tetrahedralization3 mesh;
-    mesh.xyz = nodes.xyz;
+    mesh.xyz = plc.xyz;
+    mesh.xyz.insert(mesh.xyz.end(), nodes.xyz.begin() + 3 * std::ptrdiff_t{inputs},
+                    nodes.xyz.end());
     mesh.tets = ele.tets;
+    for (std::uint32_t& v : mesh.tets) v = plc.from_input_vertex(v);
     try {
         tri::link_neighbors_3d(
             mesh, tri::Check3Numbering{nodes.first_index, ele.first_index, io::kTetgenFileCorners});
@@ -186,6 +192,7 @@ int run_plc_check_3d(const CheckArguments& arguments) {
     std::vector<tri::VertIdx> faces;
     if (fs::exists(face_path)) {
         faces = io::read_tetgen_face(face_path, nodes.first_index, nodes.vertex_count()).faces;
+        for (std::uint32_t& v : faces) v = plc.from_input_vertex(v);
     } else {
         // Without a .face, the mesh's boundary faces (a PLC without internal facets).
         for (std::size_t t = 0; 4 * t < mesh.tets.size(); ++t)

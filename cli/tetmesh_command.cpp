@@ -78,6 +78,23 @@ struct TetmeshArguments : CommandArguments {
     std::optional<double> feature_gradation;  ///< not given: the generators' default, 0.5
 };
 
+/// `mesh` (of `plc`, after merge_duplicate_vertices_3d) in the input's numbering: the input's
+/// vertices (`input_xyz`) first, merged ones included, then the Steiner points; the
+/// tetrahedra's corners renumbered, their neighbours unchanged. Empty when nothing was merged.
+tri::Tetrahedralization3 in_input_numbering(const tri::Tetrahedralization3& mesh,
+                                            const tri::Plc3& plc,
+                                            const std::vector<double>& input_xyz) {
+    tri::Tetrahedralization3 out;
+    if (plc.input_vertex.empty()) return out;
+    out.xyz = input_xyz;
+    out.xyz.insert(out.xyz.end(), mesh.xyz.begin() + 3 * std::ptrdiff_t{plc.vertex_count()},
+                   mesh.xyz.end());
+    out.tets = mesh.tets;
+    for (std::uint32_t& v : out.tets) v = plc.to_input_vertex(v);
+    out.neighbors = mesh.neighbors;
+    return out;
+}
+
 /// The faces to write in the .face file: every subface once (a boundary face as seen from
 /// outside, an internal facet's from its first tetrahedron), with its facet's marker.
 void subfaces_with_markers(const tri::ConformingMesh3& conforming, const tri::Plc3& plc,
@@ -140,6 +157,9 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         plc = io::plc_from_file(io::read_plc(arguments.input));
         source = arguments.input;
     }
+    // The input's own coordinates: a vertex merged into an earlier one at its point is written
+    // back as it was read (-0 stays -0).
+    const std::vector<double> input_xyz = plc.xyz;
     // The checks' messages name vertices and facets (with their lines); the file is named here.
     try {
         std::vector<std::string> warnings = tri::prepare_plc_for_meshing_3d(plc);
@@ -338,15 +358,19 @@ void run_tetmesh(const TetmeshArguments& arguments) {
         }
     }
 
-    const tri::Tetrahedralization3& mesh = conforming.mesh;
     EM_ASSERT(conforming.tet_attributes.empty() ||
-              conforming.tet_attributes.size() == mesh.tet_count());
+              conforming.tet_attributes.size() == conforming.mesh.tet_count());
+    // In the input's numbering: vertices merged at one point (merge_duplicate_vertices_3d) are
+    // written back, unused, and the Steiner points follow them.
+    const tri::Tetrahedralization3 renumbered = in_input_numbering(conforming.mesh, plc, input_xyz);
+    const tri::Tetrahedralization3& mesh = plc.input_vertex.empty() ? conforming.mesh : renumbered;
     io::OutputSet set;
     switch (format) {
         case OutputFormat::Ele: {
             std::vector<std::uint32_t> faces;
             std::vector<int> markers;
             subfaces_with_markers(conforming, plc, faces, markers);
+            for (std::uint32_t& v : faces) v = plc.to_input_vertex(v);
             // Region attributes (a .poly/.smesh with regions; every generator carries them
             // through) as TetGen -A writes them: one column after the corners.
             set.stage(files[0], io::format_tetgen_ele(mesh.tets, base, conforming.tet_attributes));

@@ -6,7 +6,8 @@
       writes DIR/cube_<seed>_s<e>.poly (seeds 0..SEEDS-1) at e = 0, 300 and -300 (the same bits
       scaled): the unit cube's six facets and free vertices exactly on facets and edges at
       multiples of 1/16, inside, a hair (1e-6 to 1e-15) outside a facet and inside another, and
-      1e6 away. No two vertices at one point (3D input refuses them: Known gaps).
+      1e6 away, some twice, and half the time a corner again as a later vertex that one of
+      its facets names instead (vertices at one point are merged, as TetGen merges them).
   scripts/hostile_cubes_3d.py --run DIR [EXACTMESH]
       meshes every DIR/*.poly with `exactmesh tetmesh` (Delaunay refinement --radius-edge 2,
       frontal and octree at size 0.25 x 2^e), checks each mesh with `exactmesh check`, prints
@@ -55,9 +56,14 @@ def cube(r):
         free.append((d(), d(), 1e6))  # far outside
     if r.random() < 0.5:
         free.append((0.5, 0.5, 10 ** -r.uniform(6, 15)))  # a hair inside the bottom facet
-    for p in free:
-        if p not in pts:
-            pts.append(p)
+    # Free vertices at one point are kept (merged by tetmesh with a warning, as TetGen does).
+    pts += free
+    if r.random() < 0.5:
+        # A corner again, as a later vertex, named by one of its facets instead of it.
+        k = r.randrange(8)
+        pts.append(pts[k])
+        facet = r.choice([f for f in facets if k in f])
+        facet[facet.index(k)] = len(pts) - 1
     return pts, facets
 
 

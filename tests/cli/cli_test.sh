@@ -1479,6 +1479,35 @@ tetmesh_stats() {
   grep -q '^removed_tets: [1-9]' "$work/out" || fail "--stats: the cavity's tetrahedra were not removed"
 }
 
+tetmesh_duplicates() {
+  # Vertices at one point are merged, as TetGen merges them: a cube whose vertex 9 repeats
+  # vertex 1, named by one facet instead of it. A warning names both; the .node keeps vertex 9
+  # (unused by every tetrahedron), the Steiner points after it; check accepts the mesh.
+  write_cube_poly "$work/cube.poly"
+  sed -e 's/^8 3 0 0$/9 3 0 0/' -e 's/^8 0 1 1$/8 0 1 1\n9 0 0 0/' -e 's/^4 1 2 3 4$/4 9 2 3 4/' \
+    "$work/cube.poly" >"$work/dup.poly"
+  run 0 tetmesh "$work/dup.poly" --max-volume 0.05 -o "$work/dup.ele" || return
+  grep -Eq '^exactmesh: warning: .*dup\.poly: 1 vertex at the same point as an earlier one merged into it.*: 9 into 1 \(0, 0, 0\)' "$work/err" ||
+    fail "no merge warning for dup.poly: $(cat "$work/err")"
+  sed -n 10p "$work/dup.node" | grep -Eq '^9 0 0 0$' || fail "dup.node: vertex 9 is not (0,0,0)"
+  [[ $(head -n1 "$work/dup.node" | awk '{print $1}') -gt 9 ]] || fail "dup.node: no Steiner point"
+  awk 'NR > 1 && !/^#/ && ($2 == 9 || $3 == 9 || $4 == 9 || $5 == 9)' "$work/dup.ele" | grep -q . &&
+    fail "dup.ele: a tetrahedron uses the merged vertex 9"
+  run 0 check "$work/dup.poly" "$work/dup.ele" || fail "check rejected dup.ele: $(cat "$work/out")"
+  # An .off whose faces each have their own four corners (24 vertices, a cube split at its
+  # seams, as exported meshes often are): meshed, and checked.
+  local f c
+  printf 'OFF\n24 6 0\n' >"$work/seams.off"
+  for f in '0 0 0 1 0 0 1 1 0 0 1 0' '0 0 1 0 1 1 1 1 1 1 0 1' '0 0 0 0 0 1 1 0 1 1 0 0' \
+           '1 0 0 1 0 1 1 1 1 1 1 0' '1 1 0 1 1 1 0 1 1 0 1 0' '0 1 0 0 1 1 0 0 1 0 0 0'; do
+    echo "$f" | awk '{for (i = 1; i <= 12; i += 3) print $i, $(i + 1), $(i + 2)}' >>"$work/seams.off"
+  done
+  for c in 0 4 8 12 16 20; do echo "4 $c $((c + 1)) $((c + 2)) $((c + 3))" >>"$work/seams.off"; done
+  run 0 tetmesh "$work/seams.off" --max-volume 0.05 -o "$work/seams.ele" || return
+  grep -q '16 vertices at the same point' "$work/err" || fail "seams.off: $(cat "$work/err")"
+  run 0 check "$work/seams.off" "$work/seams.ele" || fail "check rejected seams.ele: $(cat "$work/out")"
+}
+
 tetmesh_bad_input() {
   write_cube_poly "$work/cube.poly"
   # A facet naming a vertex the file lacks: the reader's file:line message, exit 2.
@@ -1812,7 +1841,7 @@ case "$case_name" in
     tetrahedralize_bad_input | check_rejects_non_delaunay_3d | mesh_impossible_sizes | hostile_data_loss | hostile_refuse_inputs | \
     hostile_reading | hostile_holes | hostile_swap_validation | hostile_options | hostile_messages | \
     region_areas | adapt | adapt_bad_input | mesh_metric | mesh_metric_delaunay | layers | omesh | \
-    mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_bad_input | tetmesh_refine | tetmesh_regions | \
+    mesh_min_max_front | svg_view | tetmesh | tetmesh_stats | tetmesh_duplicates | tetmesh_bad_input | tetmesh_refine | tetmesh_regions | \
     tetmesh_frontal | tetmesh_octree | tetmesh_check | threads | mesh_threads | hostile_files)
     "$case_name" ;;
   *)

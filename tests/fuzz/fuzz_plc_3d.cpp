@@ -56,6 +56,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (file.facets.size() > 256 || file.vertex_count() > 1024) return 0;
     try {
         tri::Plc3 plc = exactmesh::io::plc_from_file(std::move(file));
+        // As prepare_plc_for_meshing_3d: vertices at one point merged, then validated; the
+        // merged PLC names only its own vertices (or the input's out-of-range ones, refused).
+        const std::uint32_t input_vertices = plc.vertex_count();
+        tri::merge_duplicate_vertices_3d(plc);
+        if (!plc.input_vertex.empty()) {
+            if (plc.merged_vertex.size() != input_vertices) fail("merge lost the input's count");
+            for (tri::VertIdx v = 0; v < plc.vertex_count(); ++v) {
+                if (plc.from_input_vertex(plc.to_input_vertex(v)) != v)
+                    fail("merge's numberings are not inverse on the merged vertices");
+            }
+        }
         tri::validate_plc_3d_input(plc);
         const std::uint32_t polygons_before = [&plc] {
             std::uint32_t count = 0;

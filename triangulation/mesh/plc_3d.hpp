@@ -46,8 +46,32 @@ struct Plc3 {
     std::vector<std::uint64_t> facet_origin;
     const char* facet_origin_kind = "line";
 
+    /// When vertices at one point were merged (merge_duplicate_vertices_3d, as TetGen merges
+    /// them): per vertex, the input's vertex it stands for (the first at its point), and per
+    /// input vertex, the vertex that stands for it. Both empty otherwise.
+    std::vector<VertIdx> input_vertex;
+    std::vector<VertIdx> merged_vertex;
+
     std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(xyz.size() / 3); }
     const double* point(VertIdx v) const { return xyz.data() + 3 * static_cast<std::size_t>(v); }
+    /// A mesh vertex of this PLC (its Steiner points after its vertices) in the input's
+    /// numbering, where the Steiner points follow every input vertex, merged ones included.
+    VertIdx to_input_vertex(VertIdx v) const {
+        if (input_vertex.empty()) return v;
+        if (v < input_vertex.size()) return input_vertex[v];
+        return static_cast<VertIdx>(v - input_vertex.size() + merged_vertex.size());
+    }
+    /// The inverse on mesh vertices: an input-numbered mesh vertex as this PLC numbers it (a
+    /// merged input vertex as the vertex that stands for it).
+    VertIdx from_input_vertex(VertIdx v) const {
+        if (merged_vertex.empty()) return v;
+        if (v < merged_vertex.size()) return merged_vertex[v];
+        return static_cast<VertIdx>(v - merged_vertex.size() + input_vertex.size());
+    }
+    /// Vertex v's number in messages: its input vertex's, counted from first_index.
+    std::uint64_t vertex_number(VertIdx v) const {
+        return std::uint64_t{to_input_vertex(v)} + first_index;
+    }
 };
 
 }  // namespace exactmesh::triangulation

@@ -126,9 +126,7 @@ class Recovery {
     std::unordered_set<std::uint64_t> edges_;
     FaceSet faces_;
 
-    std::string vertex_name(VertIdx v) const {
-        return std::to_string(std::uint64_t{v} + plc_.first_index);
-    }
+    std::string vertex_name(VertIdx v) const { return std::to_string(plc_.vertex_number(v)); }
     std::string segment_name(std::uint32_t s) const {
         return "segment (" + vertex_name(segments_[s][0]) + ", " + vertex_name(segments_[s][1]) +
                ")";
@@ -688,7 +686,7 @@ class Recovery {
         for (VertIdx v = 0; v < used.size(); ++v) {
             if (used[v] != 0) continue;
             if (++unused_count <= 10)
-                unused += (unused.empty() ? "" : ", ") + std::to_string(v + plc_.first_index);
+                unused += (unused.empty() ? "" : ", ") + std::to_string(plc_.vertex_number(v));
         }
         if (unused_count != 0) {
             warnings_.push_back(

@@ -35,9 +35,7 @@ using predicates::Sign;
 /// How the messages name things: in the file's numbering.
 struct Names {
     const Plc3& plc;
-    std::string vertex(VertIdx v) const {
-        return std::to_string(std::uint64_t{v} + plc.first_index);
-    }
+    std::string vertex(VertIdx v) const { return std::to_string(plc.vertex_number(v)); }
     std::string facet(std::uint32_t f) const {
         std::string text = "facet " + std::to_string(std::uint64_t{f} + plc.first_index);
         if (f < plc.facet_origin.size() && plc.facet_origin[f] != 0) {
@@ -1097,20 +1095,100 @@ bool facets_exactly_planar_3d(const Plc3& plc) {
     return true;
 }
 
+std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc) {
+    const std::uint32_t n = plc.vertex_count();
+    if (!plc.input_vertex.empty()) return {};
+    for (const double x : plc.xyz)
+        if (!std::isfinite(x)) return {};  // validate_plc_3d_input names it
+    // Lexicographic order, equal points by index: the first of each run stands for the run.
+    std::vector<VertIdx> order(n);
+    for (VertIdx v = 0; v < n; ++v) order[v] = v;
+    const auto less = [&](VertIdx u, VertIdx v) {
+        const double* p = plc.point(u);
+        const double* q = plc.point(v);
+        for (int k = 0; k < 3; ++k)
+            if (p[k] != q[k]) return p[k] < q[k];
+        return u < v;
+    };
+    std::sort(order.begin(), order.end(), less);
+    std::vector<VertIdx> first(n);
+    std::vector<std::pair<VertIdx, VertIdx>> merged;  // (input vertex, the first at its point)
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const VertIdx v = order[i];
+        first[v] = v;
+        if (i == 0) continue;
+        const double* p = plc.point(order[i - 1]);
+        const double* q = plc.point(v);
+        if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) {
+            first[v] = first[order[i - 1]];
+            merged.emplace_back(v, first[v]);
+        }
+    }
+    if (merged.empty()) return {};
+    std::sort(merged.begin(), merged.end());
+    // The names in the warning are the input's: taken before the numbering changes.
+    const Names names{plc};
+    std::string list;
+    for (std::size_t i = 0; i < merged.size() && i < 10; ++i)
+        list += (i == 0 ? "" : ", ") + names.vertex(merged[i].first) + " into " +
+                names.vertex(merged[i].second) + " " + format_point(plc.point(merged[i].first), 3);
+    if (merged.size() > 10) list += " and " + std::to_string(merged.size() - 10) + " more";
+
+    std::vector<double> xyz;
+    xyz.reserve(3 * (std::size_t{n} - merged.size()));
+    plc.merged_vertex.assign(n, kNone);
+    for (VertIdx v = 0; v < n; ++v) {
+        if (first[v] != v) continue;
+        plc.merged_vertex[v] = static_cast<VertIdx>(plc.input_vertex.size());
+        plc.input_vertex.push_back(v);
+        xyz.insert(xyz.end(), plc.point(v), plc.point(v) + 3);
+    }
+    for (VertIdx v = 0; v < n; ++v) plc.merged_vertex[v] = plc.merged_vertex[first[v]];
+    plc.xyz = std::move(xyz);
+    for (Facet3& facet : plc.facets) {
+        for (std::vector<VertIdx>& polygon : facet.polygons) {
+            // Only the repeats the merge makes are dropped: the input's own (vertex 1 twice
+            // in a row) are left for validate_plc_3d_input to refuse.
+            const auto merged_here = [&](VertIdx a, VertIdx b) {
+                return a != b && a < n && b < n && plc.merged_vertex[a] == plc.merged_vertex[b];
+            };
+            std::vector<VertIdx> corners, original;
+            for (const VertIdx v : polygon) {
+                if (!original.empty() && merged_here(original.back(), v)) continue;
+                original.push_back(v);
+                corners.push_back(v < n ? plc.merged_vertex[v] : v);
+            }
+            // A closed loop: its last corner also comes before its first.
+            while (polygon.size() >= 3 && original.size() > 1 &&
+                   merged_here(original.back(), original.front())) {
+                original.pop_back();
+                corners.pop_back();
+            }
+            polygon = std::move(corners);
+        }
+    }
+    return {std::to_string(merged.size()) + (merged.size() == 1 ? " vertex" : " vertices") +
+            " at the same point as an earlier one merged into it, as TetGen does (the output "
+            "keeps them, unused): " +
+            list};
+}
+
 std::vector<std::string> prepare_plc_for_meshing_3d(Plc3& plc) {
+    // Vertices at one point become one, as TetGen makes them.
+    std::vector<std::string> warnings = merge_duplicate_vertices_3d(plc);
     // A free vertex on a segment or a facet becomes part of it (as Triangle does in 2D).
     validate_plc_3d_input(plc);
     // A facet whose corners were rounded off their plane (a rotated box) becomes the
     // triangles of its projection, as TetGen meshes it; a warning names it.
-    std::vector<std::string> warnings = split_nonplanar_facets_3d(plc);
+    const std::vector<std::string> split = split_nonplanar_facets_3d(plc);
+    warnings.insert(warnings.end(), split.begin(), split.end());
     // A free vertex within rounding of a segment or facet (a point of a rotated box's edge
     // or facet, rounded off it) becomes part of it, and the facets it joins are split.
     const FreeVertexEmbedding3 near = attach_free_vertices_near_surface_3d(plc);
     if (!near.vertices.empty()) {
         std::string names;
         for (const VertIdx v : near.vertices)
-            names +=
-                (names.empty() ? "" : ", ") + std::to_string(std::uint64_t{v} + plc.first_index);
+            names += (names.empty() ? "" : ", ") + std::to_string(plc.vertex_number(v));
         warnings.push_back(
             "free vertices within rounding of the surface (2^-48 of their coordinates) made "
             "part of it, as if on it: " +

@@ -32,6 +32,16 @@ struct SurfaceTriangles3 {
     }
 };
 
+/// Merges vertices at the same point (exactly; -0 equals 0) into the first of them, as TetGen
+/// does ("Point #j is coincident with #i. Ignored!"): the others leave the PLC, the facets'
+/// corners name the first instead (a corner then repeated next to itself in a polygon is
+/// dropped), and Plc3::input_vertex and merged_vertex map between the two numberings (a
+/// mesh's vertices back with Plc3::to_input_vertex; messages keep the input's numbers). Returns
+/// one warning naming the merged vertices; nothing when no two vertices share a point or a
+/// coordinate is not finite (validate_plc_3d_input then says which). Corner indices out of
+/// range are kept as they are, for validate_plc_3d_input to name. At most once per PLC.
+std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc);
+
 /// Checks the PLC's numbers: finite coordinates (vertices, holes, regions), facet corner
 /// indices in range, at least one facet, no two vertices at the same point (exact).
 /// @throws InputError naming the vertex, facet, polygon or point.
@@ -135,7 +145,9 @@ std::vector<std::string> split_nonplanar_facets_3d(Plc3& plc, bool within_roundi
 bool facets_exactly_planar_3d(const Plc3& plc);
 
 /// The preparation every 3D generator's input gets (`exactmesh tetmesh`), and `exactmesh check`
-/// gives a PLC before checking a mesh of it: validate_plc_3d_input, split_nonplanar_facets_3d,
+/// gives a PLC before checking a mesh of it: merge_duplicate_vertices_3d (a mesh of the result
+/// numbers its vertices as the merged PLC does: Plc3::to_input_vertex gives the input's
+/// numbers), validate_plc_3d_input, split_nonplanar_facets_3d,
 /// attach_free_vertices_near_surface_3d, embed_free_vertices_3d, then validate_plc_3d and
 /// check_surface_closed_3d. Returns the warnings (facets split, vertices attached), unprefixed.
 /// @throws InputError as those do.

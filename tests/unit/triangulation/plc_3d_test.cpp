@@ -363,6 +363,56 @@ TEST(Triangulation_Plc3, DegenerateFacetsAreNamed) {
               "degenerate facet 0: polygon 1 repeats vertex 1 at consecutive corners");
 }
 
+TEST(Triangulation_Plc3, VerticesAtOnePointAreMergedAsTetGenMergesThem) {
+    // The cube's vertex 0 again as vertex 3 (-0 for +0), every later vertex one up: facets
+    // naming either, once beside the other (a repeat the merge makes, dropped), give the cube
+    // back, at 2^0 and 2^+-600; the input's numbers stay in messages and in to_input_vertex.
+    for (const int exponent : {0, 600, -600}) {
+        const Plc3 want = scaled(cube(), exponent);
+        Plc3 plc = want;
+        const auto input = [](VertIdx v) { return v < 3 ? v : v + 1; };  // cube's v -> input's
+        for (Facet3& facet : plc.facets)
+            for (VertIdx& v : facet.polygons[0]) v = input(v);
+        plc.xyz.insert(plc.xyz.begin() + 9, {-0.0, 0.0, -0.0});
+        plc.facets[0].polygons[0] = {3, 2, 6 + 1, 4 + 1};     // 0 named as 3
+        plc.facets[2].polygons[0] = {0, 4 + 1, 5 + 1, 1, 3};  // 0 last and first
+        plc.facets[4].polygons[0] = {0, 3, 1, 3 + 1, 2};      // 0 twice in a row
+        const std::vector<std::string> warnings = merge_duplicate_vertices_3d(plc);
+        ASSERT_EQ(warnings.size(), 1u);
+        EXPECT_NE(warnings[0].find("1 vertex at the same point"), std::string::npos) << warnings[0];
+        EXPECT_NE(warnings[0].find("3 into 0"), std::string::npos) << warnings[0];
+        ASSERT_EQ(plc.vertex_count(), 8u);
+        for (std::size_t i = 0; i < want.xyz.size(); ++i)
+            EXPECT_EQ(plc.xyz[i], want.xyz[i]) << exponent << " coordinate " << i;
+        for (std::size_t f = 0; f < want.facets.size(); ++f)
+            EXPECT_EQ(plc.facets[f].polygons, want.facets[f].polygons)
+                << exponent << " facet " << f;
+        for (VertIdx v = 0; v < 8; ++v) {
+            EXPECT_EQ(plc.to_input_vertex(v), input(v));
+            EXPECT_EQ(plc.from_input_vertex(input(v)), v);
+            EXPECT_EQ(plc.vertex_number(v), input(v));
+        }
+        EXPECT_EQ(plc.from_input_vertex(3), 0u);  // the merged one, as the first at its point
+        EXPECT_EQ(plc.to_input_vertex(8), 9u);    // a Steiner point after every input vertex
+        EXPECT_EQ(plc.from_input_vertex(9), 8u);
+        EXPECT_EQ(outcome(plc).validity, "");
+        EXPECT_TRUE(merge_duplicate_vertices_3d(plc).empty());  // once
+    }
+    // The input's own repeat of a vertex stays, and is refused by its input number.
+    Plc3 plc = cube();
+    plc.xyz.insert(plc.xyz.end(), {1, 1, 1});  // vertex 8 at vertex 7
+    plc.facets[5].polygons[0] = {4, 6, 6, 8, 5};
+    ASSERT_EQ(merge_duplicate_vertices_3d(plc).size(), 1u);
+    EXPECT_EQ(plc.facets[5].polygons[0], (std::vector<VertIdx>{4, 6, 6, 7, 5}));
+    EXPECT_EQ(outcome(plc).validity,
+              "degenerate facet 5: polygon 1 repeats vertex 6 at consecutive corners");
+    // Nothing at one point: nothing changes.
+    plc = cube();
+    EXPECT_TRUE(merge_duplicate_vertices_3d(plc).empty());
+    EXPECT_TRUE(plc.input_vertex.empty());
+    EXPECT_EQ(plc.to_input_vertex(9), 9u);
+}
+
 TEST(Triangulation_Plc3, InputErrorsAreNamed) {
     Plc3 plc = cube();
     plc.first_index = 1;
