@@ -1506,6 +1506,14 @@ tetmesh_duplicates() {
   run 0 tetmesh "$work/seams.off" --max-volume 0.05 -o "$work/seams.ele" || return
   grep -q '16 vertices at the same point' "$work/err" || fail "seams.off: $(cat "$work/err")"
   run 0 check "$work/seams.off" "$work/seams.ele" || fail "check rejected seams.ele: $(cat "$work/out")"
+  # A triangle with two corners at one point (as an exported STL's or OFF's) has no area: left
+  # out, with its line.
+  printf 'OFF\n8 13 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n' >"$work/c.off"
+  printf '3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n3 0 1 1\n' >>"$work/c.off"
+  run 0 tetmesh "$work/c.off" -o "$work/c.ele" || return
+  grep -Eq 'c\.off: 1 facet with no area \(corners at fewer than three points\) left out: facet 12 \(line 23\)' "$work/err" ||
+    fail "no zero-area warning for c.off: $(cat "$work/err")"
+  run 0 check "$work/c.off" "$work/c.ele" || fail "check rejected c.ele: $(cat "$work/out")"
 }
 
 tetmesh_bad_input() {

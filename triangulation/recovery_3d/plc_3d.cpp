@@ -1164,6 +1164,12 @@ std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc) {
                 original.pop_back();
                 corners.pop_back();
             }
+            if (polygon.size() >= 3 && corners.size() < 3) {
+                // A loop merged to fewer than three points keeps its corners, so that
+                // drop_zero_area_facets_3d sees it for what it is.
+                corners.clear();
+                for (const VertIdx v : polygon) corners.push_back(v < n ? plc.merged_vertex[v] : v);
+            }
             polygon = std::move(corners);
         }
     }
@@ -1173,9 +1179,49 @@ std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc) {
             list};
 }
 
+std::vector<std::string> drop_zero_area_facets_3d(Plc3& plc) {
+    const std::uint32_t n = plc.vertex_count();
+    const auto distinct = [](std::vector<VertIdx> corners) {
+        std::sort(corners.begin(), corners.end());
+        return static_cast<std::size_t>(std::unique(corners.begin(), corners.end()) -
+                                        corners.begin());
+    };
+    const Names names{plc};
+    std::string list;
+    std::size_t dropped = 0;
+    std::vector<Facet3> kept;
+    std::vector<std::uint64_t> kept_origin;
+    for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
+        const Facet3& facet = plc.facets[f];
+        bool collapsed = false, area = false, in_range = true;
+        for (const std::vector<VertIdx>& polygon : facet.polygons) {
+            for (const VertIdx v : polygon) in_range = in_range && v < n;
+            if (polygon.size() < 3) continue;
+            if (distinct(polygon) < 3)
+                collapsed = true;
+            else
+                area = true;
+        }
+        if (collapsed && !area && in_range) {
+            if (++dropped <= 10) list += (dropped == 1 ? "" : ", ") + names.facet(f);
+            continue;
+        }
+        kept.push_back(facet);
+        if (f < plc.facet_origin.size()) kept_origin.push_back(plc.facet_origin[f]);
+    }
+    if (dropped == 0) return {};
+    if (dropped > 10) list += " and " + std::to_string(dropped - 10) + " more";
+    plc.facets = std::move(kept);
+    if (!plc.facet_origin.empty()) plc.facet_origin = std::move(kept_origin);
+    return {std::to_string(dropped) + (dropped == 1 ? " facet" : " facets") +
+            " with no area (corners at fewer than three points) left out: " + list};
+}
+
 std::vector<std::string> prepare_plc_for_meshing_3d(Plc3& plc) {
-    // Vertices at one point become one, as TetGen makes them.
+    // Vertices at one point become one, as TetGen makes them; facets left with no area go.
     std::vector<std::string> warnings = merge_duplicate_vertices_3d(plc);
+    const std::vector<std::string> zero_area = drop_zero_area_facets_3d(plc);
+    warnings.insert(warnings.end(), zero_area.begin(), zero_area.end());
     // A free vertex on a segment or a facet becomes part of it (as Triangle does in 2D).
     validate_plc_3d_input(plc);
     // A facet whose corners were rounded off their plane (a rotated box) becomes the

@@ -42,6 +42,14 @@ struct SurfaceTriangles3 {
 /// range are kept as they are, for validate_plc_3d_input to name. At most once per PLC.
 std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc);
 
+/// Leaves out the facets with no area: those whose polygons list three or more corners but
+/// name fewer than three vertices each (a triangle of an exported STL with two corners at one
+/// point, or one that merge_duplicate_vertices_3d made so), and no polygon with three distinct
+/// vertices. Their edges are their neighbours' in a closed surface; a facet written with only
+/// 1- or 2-corner polygons, or naming a vertex out of range, is left for validate_plc_3d_input
+/// to refuse. Returns one warning naming them (with their lines); nothing when there is none.
+std::vector<std::string> drop_zero_area_facets_3d(Plc3& plc);
+
 /// Checks the PLC's numbers: finite coordinates (vertices, holes, regions), facet corner
 /// indices in range, at least one facet, no two vertices at the same point (exact).
 /// @throws InputError naming the vertex, facet, polygon or point.
@@ -147,7 +155,7 @@ bool facets_exactly_planar_3d(const Plc3& plc);
 /// The preparation every 3D generator's input gets (`exactmesh tetmesh`), and `exactmesh check`
 /// gives a PLC before checking a mesh of it: merge_duplicate_vertices_3d (a mesh of the result
 /// numbers its vertices as the merged PLC does: Plc3::to_input_vertex gives the input's
-/// numbers), validate_plc_3d_input, split_nonplanar_facets_3d,
+/// numbers), drop_zero_area_facets_3d, validate_plc_3d_input, split_nonplanar_facets_3d,
 /// attach_free_vertices_near_surface_3d, embed_free_vertices_3d, then validate_plc_3d and
 /// check_surface_closed_3d. Returns the warnings (facets split, vertices attached), unprefixed.
 /// @throws InputError as those do.

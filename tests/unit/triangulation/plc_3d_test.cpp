@@ -413,6 +413,44 @@ TEST(Triangulation_Plc3, VerticesAtOnePointAreMergedAsTetGenMergesThem) {
     EXPECT_EQ(plc.to_input_vertex(9), 9u);
 }
 
+TEST(Triangulation_Plc3, FacetsWithNoAreaAreLeftOut) {
+    // A triangle with two corners at one point (as an STL's reader merges them, or as
+    // merge_duplicate_vertices_3d makes it) has no area: left out, with its line; the cube is
+    // left as it was. Facets written with only short polygons, or with a loop beside a
+    // collapsed polygon, stay for validate_plc_3d_input to refuse.
+    Plc3 plc = cube();
+    plc.facet_origin = {10, 11, 12, 13, 14, 15};
+    plc.facets.insert(plc.facets.begin() + 2, Facet3{{{0, 1, 1}}, {}, 7});
+    plc.facet_origin.insert(plc.facet_origin.begin() + 2, 99);
+    plc.facets.push_back({{{2, 3, 2, 3}}, {}, 7});
+    plc.facet_origin.push_back(100);
+    std::vector<std::string> warnings = drop_zero_area_facets_3d(plc);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0],
+              "2 facets with no area (corners at fewer than three points) left out: facet 2 "
+              "(line 99), facet 7 (line 100)");
+    ASSERT_EQ(plc.facets.size(), 6u);
+    for (std::size_t f = 0; f < 6; ++f) {
+        EXPECT_EQ(plc.facets[f].polygons, cube().facets[f].polygons);
+        EXPECT_EQ(plc.facet_origin[f], 10 + f);
+    }
+    EXPECT_EQ(outcome(plc).validity, "");
+    // Made so by the merge: vertex 8 at vertex 1.
+    plc = cube();
+    plc.xyz.insert(plc.xyz.end(), {1, 0, 0});
+    plc.facets.push_back({{{0, 1, 8}}, {}, 7});
+    EXPECT_EQ(merge_duplicate_vertices_3d(plc).size(), 1u);
+    EXPECT_EQ(drop_zero_area_facets_3d(plc).size(), 1u);
+    EXPECT_EQ(plc.facets.size(), 6u);
+    EXPECT_EQ(outcome(plc).validity, "");
+    // Left for validation.
+    plc = cube();
+    plc.facets.push_back({{{0, 1}}, {}, 7});
+    plc.facets.push_back({{{0, 1, 3, 2}, {4, 4, 4}}, {}, 7});
+    EXPECT_TRUE(drop_zero_area_facets_3d(plc).empty());
+    EXPECT_EQ(plc.facets.size(), 8u);
+}
+
 TEST(Triangulation_Plc3, InputErrorsAreNamed) {
     Plc3 plc = cube();
     plc.first_index = 1;
