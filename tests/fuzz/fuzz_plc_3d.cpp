@@ -57,8 +57,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         tri::Plc3 plc = exactmesh::io::plc_from_file(std::move(file));
         // As prepare_plc_for_meshing_3d: vertices at one point merged, facets with no area
-        // left out, then validated; the merged PLC names only its own vertices (or the input's
-        // out-of-range ones, refused).
+        // and repeated facets left out, then validated; the merged PLC names only its own vertices
+        // (or the input's out-of-range ones, refused).
         const std::uint32_t input_vertices = plc.vertex_count();
         tri::merge_duplicate_vertices_3d(plc);
         if (!plc.input_vertex.empty()) {
@@ -69,6 +69,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             }
         }
         tri::drop_zero_area_facets_3d(plc);
+        tri::drop_repeated_facets_3d(plc);
         tri::validate_plc_3d_input(plc);
         const std::uint32_t polygons_before = [&plc] {
             std::uint32_t count = 0;

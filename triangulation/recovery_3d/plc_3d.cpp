@@ -1217,11 +1217,59 @@ std::vector<std::string> drop_zero_area_facets_3d(Plc3& plc) {
             " with no area (corners at fewer than three points) left out: " + list};
 }
 
+std::vector<std::string> drop_repeated_facets_3d(Plc3& plc) {
+    const std::uint32_t n = plc.vertex_count();
+    // A polygon as a key: rotated to start at its least corner, then read in the direction
+    // whose second corner is the smaller.
+    const auto canonical = [](const std::vector<VertIdx>& polygon) {
+        const std::size_t k = polygon.size();
+        const std::size_t start = static_cast<std::size_t>(
+            std::min_element(polygon.begin(), polygon.end()) - polygon.begin());
+        const bool forward = polygon[(start + 1) % k] <= polygon[(start + k - 1) % k];
+        std::vector<VertIdx> key(k);
+        for (std::size_t i = 0; i < k; ++i)
+            key[i] = polygon[forward ? (start + i) % k : (start + k - i) % k];
+        return key;
+    };
+    const Names names{plc};
+    std::map<std::vector<VertIdx>, std::uint32_t> first;
+    std::string list;
+    std::size_t dropped = 0;
+    std::vector<Facet3> kept;
+    std::vector<std::uint64_t> kept_origin;
+    for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
+        const Facet3& facet = plc.facets[f];
+        const bool single = facet.polygons.size() == 1 && facet.holes.empty() &&
+                            facet.polygons[0].size() >= 3 &&
+                            std::all_of(facet.polygons[0].begin(), facet.polygons[0].end(),
+                                        [n](VertIdx v) { return v < n; });
+        if (single) {
+            const auto [it, inserted] = first.emplace(canonical(facet.polygons[0]), f);
+            if (!inserted) {
+                if (++dropped <= 10)
+                    list += (dropped == 1 ? "" : ", ") + names.facet(f) + " repeats " +
+                            names.facet(it->second);
+                continue;
+            }
+        }
+        kept.push_back(facet);
+        if (f < plc.facet_origin.size()) kept_origin.push_back(plc.facet_origin[f]);
+    }
+    if (dropped == 0) return {};
+    if (dropped > 10) list += " and " + std::to_string(dropped - 10) + " more";
+    plc.facets = std::move(kept);
+    if (!plc.facet_origin.empty()) plc.facet_origin = std::move(kept_origin);
+    return {std::to_string(dropped) + (dropped == 1 ? " facet" : " facets") +
+            " repeating an earlier one left out: " + list};
+}
+
 std::vector<std::string> prepare_plc_for_meshing_3d(Plc3& plc) {
     // Vertices at one point become one, as TetGen makes them; facets left with no area go.
     std::vector<std::string> warnings = merge_duplicate_vertices_3d(plc);
-    const std::vector<std::string> zero_area = drop_zero_area_facets_3d(plc);
-    warnings.insert(warnings.end(), zero_area.begin(), zero_area.end());
+    for (const auto& step : {drop_zero_area_facets_3d, drop_repeated_facets_3d}) {
+        const std::vector<std::string> dropped = step(plc);
+        warnings.insert(warnings.end(), dropped.begin(), dropped.end());
+    }
     // A free vertex on a segment or a facet becomes part of it (as Triangle does in 2D).
     validate_plc_3d_input(plc);
     // A facet whose corners were rounded off their plane (a rotated box) becomes the

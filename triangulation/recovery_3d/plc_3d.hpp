@@ -50,6 +50,12 @@ std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc);
 /// to refuse. Returns one warning naming them (with their lines); nothing when there is none.
 std::vector<std::string> drop_zero_area_facets_3d(Plc3& plc);
 
+/// Leaves out each facet that repeats an earlier one: the same single polygon, its corners in
+/// the same cyclic order either way round, and no holes (an exported STL's triangle written
+/// twice). Corner indices out of range leave a facet alone. Returns one warning naming them
+/// (with their lines and the facet each repeats); nothing when there is none.
+std::vector<std::string> drop_repeated_facets_3d(Plc3& plc);
+
 /// Checks the PLC's numbers: finite coordinates (vertices, holes, regions), facet corner
 /// indices in range, at least one facet, no two vertices at the same point (exact).
 /// @throws InputError naming the vertex, facet, polygon or point.
@@ -155,9 +161,10 @@ bool facets_exactly_planar_3d(const Plc3& plc);
 /// The preparation every 3D generator's input gets (`exactmesh tetmesh`), and `exactmesh check`
 /// gives a PLC before checking a mesh of it: merge_duplicate_vertices_3d (a mesh of the result
 /// numbers its vertices as the merged PLC does: Plc3::to_input_vertex gives the input's
-/// numbers), drop_zero_area_facets_3d, validate_plc_3d_input, split_nonplanar_facets_3d,
-/// attach_free_vertices_near_surface_3d, embed_free_vertices_3d, then validate_plc_3d and
-/// check_surface_closed_3d. Returns the warnings (facets split, vertices attached), unprefixed.
+/// numbers), drop_zero_area_facets_3d, drop_repeated_facets_3d, validate_plc_3d_input,
+/// split_nonplanar_facets_3d, attach_free_vertices_near_surface_3d, embed_free_vertices_3d, then
+/// validate_plc_3d and check_surface_closed_3d. Returns the warnings (facets split, vertices
+/// attached), unprefixed.
 /// @throws InputError as those do.
 std::vector<std::string> prepare_plc_for_meshing_3d(Plc3& plc);
 

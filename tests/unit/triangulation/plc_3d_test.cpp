@@ -451,6 +451,28 @@ TEST(Triangulation_Plc3, FacetsWithNoAreaAreLeftOut) {
     EXPECT_EQ(plc.facets.size(), 8u);
 }
 
+TEST(Triangulation_Plc3, RepeatedFacetsAreLeftOut) {
+    // A facet written again (turned, or the other way round) is left out, naming the facet it
+    // repeats; the same corners in another cyclic order (a crossed quadrilateral) are not the
+    // same polygon and stay.
+    Plc3 plc = cube();
+    plc.facet_origin = {10, 11, 12, 13, 14, 15};
+    plc.facets.push_back({{{6, 4, 0, 2}}, {}, 1});  // facet 0 turned
+    plc.facets.push_back({{{5, 4, 0, 1}}, {}, 1});  // facet 2 the other way round
+    plc.facet_origin.insert(plc.facet_origin.end(), {20, 21});
+    const std::vector<std::string> warnings = drop_repeated_facets_3d(plc);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0],
+              "2 facets repeating an earlier one left out: facet 6 (line 20) repeats facet 0 (line "
+              "10), facet 7 (line 21) repeats facet 2 (line 12)");
+    EXPECT_EQ(plc.facets.size(), 6u);
+    EXPECT_EQ(plc.facet_origin, (std::vector<std::uint64_t>{10, 11, 12, 13, 14, 15}));
+    EXPECT_EQ(outcome(plc).validity, "");
+    plc.facets.push_back({{{0, 6, 2, 4}}, {}, 1});
+    EXPECT_TRUE(drop_repeated_facets_3d(plc).empty());
+    EXPECT_EQ(plc.facets.size(), 7u);
+}
+
 TEST(Triangulation_Plc3, InputErrorsAreNamed) {
     Plc3 plc = cube();
     plc.first_index = 1;
