@@ -1098,8 +1098,14 @@ bool facets_exactly_planar_3d(const Plc3& plc) {
 std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc) {
     const std::uint32_t n = plc.vertex_count();
     if (!plc.input_vertex.empty()) return {};
+    // A coordinate that is not finite, or a corner out of range: validate_plc_3d_input names
+    // it in the input's numbering.
     for (const double x : plc.xyz)
-        if (!std::isfinite(x)) return {};  // validate_plc_3d_input names it
+        if (!std::isfinite(x)) return {};
+    for (const Facet3& facet : plc.facets)
+        for (const std::vector<VertIdx>& polygon : facet.polygons)
+            for (const VertIdx v : polygon)
+                if (v >= n) return {};
     // Lexicographic order, equal points by index: the first of each run stands for the run.
     std::vector<VertIdx> order(n);
     for (VertIdx v = 0; v < n; ++v) order[v] = v;
@@ -1150,13 +1156,13 @@ std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc) {
             // Only the repeats the merge makes are dropped: the input's own (vertex 1 twice
             // in a row) are left for validate_plc_3d_input to refuse.
             const auto merged_here = [&](VertIdx a, VertIdx b) {
-                return a != b && a < n && b < n && plc.merged_vertex[a] == plc.merged_vertex[b];
+                return a != b && plc.merged_vertex[a] == plc.merged_vertex[b];
             };
             std::vector<VertIdx> corners, original;
             for (const VertIdx v : polygon) {
                 if (!original.empty() && merged_here(original.back(), v)) continue;
                 original.push_back(v);
-                corners.push_back(v < n ? plc.merged_vertex[v] : v);
+                corners.push_back(plc.merged_vertex[v]);
             }
             // A closed loop: its last corner also comes before its first.
             while (polygon.size() >= 3 && original.size() > 1 &&
@@ -1168,7 +1174,7 @@ std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc) {
                 // A loop merged to fewer than three points keeps its corners, so that
                 // drop_zero_area_facets_3d sees it for what it is.
                 corners.clear();
-                for (const VertIdx v : polygon) corners.push_back(v < n ? plc.merged_vertex[v] : v);
+                for (const VertIdx v : polygon) corners.push_back(plc.merged_vertex[v]);
             }
             polygon = std::move(corners);
         }

@@ -37,9 +37,9 @@ struct SurfaceTriangles3 {
 /// corners name the first instead (a corner then repeated next to itself in a polygon is
 /// dropped), and Plc3::input_vertex and merged_vertex map between the two numberings (a
 /// mesh's vertices back with Plc3::to_input_vertex; messages keep the input's numbers). Returns
-/// one warning naming the merged vertices; nothing when no two vertices share a point or a
-/// coordinate is not finite (validate_plc_3d_input then says which). Corner indices out of
-/// range are kept as they are, for validate_plc_3d_input to name. At most once per PLC.
+/// one warning naming the merged vertices; nothing (and no change) when no two vertices share
+/// a point, a coordinate is not finite or a corner index is out of range (validate_plc_3d_input
+/// then names it in the input's numbering). At most once per PLC.
 std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc);
 
 /// Leaves out the facets with no area: those whose polygons list three or more corners but

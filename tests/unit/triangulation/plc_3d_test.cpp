@@ -406,6 +406,13 @@ TEST(Triangulation_Plc3, VerticesAtOnePointAreMergedAsTetGenMergesThem) {
     EXPECT_EQ(plc.facets[5].polygons[0], (std::vector<VertIdx>{4, 6, 6, 7, 5}));
     EXPECT_EQ(outcome(plc).validity,
               "degenerate facet 5: polygon 1 repeats vertex 6 at consecutive corners");
+    // A corner out of range as well: nothing is merged, and the input's vertex is named.
+    plc = cube();
+    plc.xyz.insert(plc.xyz.end(), {1, 1, 1});
+    plc.facets[0].polygons[0][1] = 12;
+    EXPECT_TRUE(merge_duplicate_vertices_3d(plc).empty());
+    EXPECT_EQ(outcome(plc).validity,
+              "facet 0, polygon 1: vertex 12 out of range (the vertices are numbered 0 to 8)");
     // Nothing at one point: nothing changes.
     plc = cube();
     EXPECT_TRUE(merge_duplicate_vertices_3d(plc).empty());
