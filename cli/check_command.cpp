@@ -25,6 +25,7 @@
 #include "triangulation/checks/check_3d.hpp"
 #include "triangulation/checks/check_conforming_2d.hpp"
 #include "triangulation/checks/check_constrained_2d.hpp"
+#include "triangulation/constrained/check_hull_cover_2d.hpp"
 #include "triangulation/mesh/constrained_flags_2d.hpp"
 #include "triangulation/mesh/flip_3d.hpp"
 #include "triangulation/recovery_3d/check_boundary_conformity_3d.hpp"
@@ -76,21 +77,13 @@ int run_constrained_check(const CheckArguments& arguments) {
     }
     tri::flag_constrained_edges_2d(mesh, constrained_edges);
     const tri::CheckNumbering numbering{base, ele.first_index};
-    // The constrained checks are local: only the hull's topology sees a triangle left out.
+    // The constrained checks are local: only the hull's topology sees a triangle left out. With
+    // hole points the mesh covers the hull less the holes (more than one boundary loop): that
+    // region is compared with the reference's after the local checks (check_hull_cover_2d).
+    const bool hull_less_holes = arguments.convex_hull && !input.holes.empty();
     tri::CheckReport report;
-    if (arguments.convex_hull) report = tri::check_topology_2d(mesh.xy, mesh.triangles, numbering);
-    if (!report.ok && !input.holes.empty()) {
-        // The hull check wants one boundary loop around a disk; the holes a hole point removes
-        // leave more loops, so a correct `cdt --convex-hull` output failed it. Refused (exit 2)
-        // rather than failed falsely (exit 1).
-        throw io::FormatError(arguments.node_path, input.hole_lines.front(),
-                              "--convex-hull is checked only where the mesh covers the convex "
-                              "hull as one disk, and this PSLG has " +
-                                  std::to_string(input.holes.size() / 2) + " hole point(s) (" +
-                                  report.problem +
-                                  "); check without --convex-hull (constrained Delaunay, input "
-                                  "vertices kept)");
-    }
+    if (arguments.convex_hull && !hull_less_holes)
+        report = tri::check_topology_2d(mesh.xy, mesh.triangles, numbering);
     if (report.ok)
         report = arguments.conforming
                      ? tri::check_conforming_mesh_2d(mesh, input.vertices.vertex_count(),
@@ -101,6 +94,8 @@ int run_constrained_check(const CheckArguments& arguments) {
     // includes it).
     if (report.ok && !arguments.conforming)
         report = tri::check_input_vertices_kept_2d(mesh, input.vertices.xy, numbering);
+    if (report.ok && hull_less_holes)
+        report = tri::check_hull_cover_2d(mesh, input.holes, numbering);
     if (report.ok) {
         std::cout << "ok: " << ele.triangle_count() << " triangles, "
                   << (arguments.conforming

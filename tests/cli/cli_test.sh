@@ -1807,8 +1807,8 @@ tetmesh_check() {
 # 1 GB first; a byte order mark starts an ASCII STL and a size file as it starts a .node; a
 # size asking for 5e300 boundary pieces is refused at once (it sampled 2^24 points, 3.4 s and
 # 400 MB, without --max-steiner); adapt says that it ignores a region's maximum area; check
-# --convex-hull refuses (exit 2), not fails (exit 1), a correct mesh with holes; an expression
-# is cut in messages.
+# --convex-hull passes a correct mesh with holes (it refused it, exit 2, until stop 52, and
+# before that failed it); an expression is cut in messages.
 hostile_files() {
   local dir=$data/hostile_files
   ln -s /dev/zero "$work/zero.stl"
@@ -1829,8 +1829,18 @@ hostile_files() {
     fail "adapt: no warning about the region's area: $(cat "$work/err")"
   expect_error 2 'region volume|maximum areas ask for' mesh "$dir/square_hole_tiny_region_area.poly" -o "$work/x.ele"
   run 0 cdt "$dir/square_hole_tiny_region_area.poly" --convex-hull -o "$work/c.ele" || return
-  expect_error 2 'square_hole_tiny_region_area\.poly:21: --convex-hull is checked only where .*boundary has more than one loop' \
-    check "$dir/square_hole_tiny_region_area.poly" "$work/c.ele" --convex-hull
+  # With hole points --convex-hull checks the hull less the holes (check_hull_cover_2d, stop 52).
+  run 0 check "$dir/square_hole_tiny_region_area.poly" "$work/c.ele" --convex-hull || return
+  grep -q '^ok: ' "$work/out" || fail "check --convex-hull with a hole: $(cat "$work/out")"
+  # A mesh that keeps the hole region (made without the hole point) fails (exit 1), naming an
+  # edge of the hole.
+  sed -e 's/^1 0\.5 0\.5$//' "$dir/square_hole_tiny_region_area.poly" |
+    awk '/^1$/ && !done && seen_segments {print "0"; done = 1; next} /^8 0$/ {seen_segments = 1} {print}' \
+      >"$work/no_hole.poly"
+  run 0 cdt "$work/no_hole.poly" --convex-hull -o "$work/kept.ele" || return
+  run 1 check "$dir/square_hole_tiny_region_area.poly" "$work/kept.ele" --convex-hull
+  grep -q 'bounds the convex hull less the holes but not the mesh' "$work/out" ||
+    fail "check --convex-hull passed a kept hole: $(cat "$work/out")"
   run 0 check "$dir/square_hole_tiny_region_area.poly" "$work/c.ele" || return
   local long
   long="0.1$(printf '+0%.0s' {1..5000})x"
