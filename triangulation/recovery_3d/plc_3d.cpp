@@ -13,6 +13,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -1185,6 +1186,36 @@ std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc) {
             list};
 }
 
+namespace {
+
+/// Leaves out the facets for which `why(f)` gives a reason (appended to the facet's name in
+/// the warning), keeping facet_origin in step; one warning "N facets <what> left out: ...",
+/// or nothing when none goes.
+template <class Why>
+std::vector<std::string> drop_facets(Plc3& plc, const char* what, Why&& why) {
+    const Names names{plc};
+    std::string list;
+    std::size_t dropped = 0;
+    std::vector<Facet3> kept;
+    std::vector<std::uint64_t> kept_origin;
+    for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
+        if (const std::optional<std::string> reason = why(f)) {
+            if (++dropped <= 10) list += (dropped == 1 ? "" : ", ") + names.facet(f) + *reason;
+            continue;
+        }
+        kept.push_back(plc.facets[f]);
+        if (f < plc.facet_origin.size()) kept_origin.push_back(plc.facet_origin[f]);
+    }
+    if (dropped == 0) return {};
+    if (dropped > 10) list += " and " + std::to_string(dropped - 10) + " more";
+    plc.facets = std::move(kept);
+    if (!plc.facet_origin.empty()) plc.facet_origin = std::move(kept_origin);
+    return {std::to_string(dropped) + (dropped == 1 ? " facet " : " facets ") + what +
+            " left out: " + list};
+}
+
+}  // namespace
+
 std::vector<std::string> drop_zero_area_facets_3d(Plc3& plc) {
     const std::uint32_t n = plc.vertex_count();
     const auto distinct = [](std::vector<VertIdx> corners) {
@@ -1192,35 +1223,20 @@ std::vector<std::string> drop_zero_area_facets_3d(Plc3& plc) {
         return static_cast<std::size_t>(std::unique(corners.begin(), corners.end()) -
                                         corners.begin());
     };
-    const Names names{plc};
-    std::string list;
-    std::size_t dropped = 0;
-    std::vector<Facet3> kept;
-    std::vector<std::uint64_t> kept_origin;
-    for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
-        const Facet3& facet = plc.facets[f];
-        bool collapsed = false, area = false, in_range = true;
-        for (const std::vector<VertIdx>& polygon : facet.polygons) {
-            for (const VertIdx v : polygon) in_range = in_range && v < n;
-            if (polygon.size() < 3) continue;
-            if (distinct(polygon) < 3)
-                collapsed = true;
-            else
-                area = true;
-        }
-        if (collapsed && !area && in_range) {
-            if (++dropped <= 10) list += (dropped == 1 ? "" : ", ") + names.facet(f);
-            continue;
-        }
-        kept.push_back(facet);
-        if (f < plc.facet_origin.size()) kept_origin.push_back(plc.facet_origin[f]);
-    }
-    if (dropped == 0) return {};
-    if (dropped > 10) list += " and " + std::to_string(dropped - 10) + " more";
-    plc.facets = std::move(kept);
-    if (!plc.facet_origin.empty()) plc.facet_origin = std::move(kept_origin);
-    return {std::to_string(dropped) + (dropped == 1 ? " facet" : " facets") +
-            " with no area (corners at fewer than three points) left out: " + list};
+    return drop_facets(plc, "with no area (corners at fewer than three points)",
+                       [&](std::uint32_t f) -> std::optional<std::string> {
+                           bool collapsed = false, area = false, in_range = true;
+                           for (const std::vector<VertIdx>& polygon : plc.facets[f].polygons) {
+                               for (const VertIdx v : polygon) in_range = in_range && v < n;
+                               if (polygon.size() < 3) continue;
+                               if (distinct(polygon) < 3)
+                                   collapsed = true;
+                               else
+                                   area = true;
+                           }
+                           if (collapsed && !area && in_range) return std::string();
+                           return std::nullopt;
+                       });
 }
 
 std::vector<std::string> drop_repeated_facets_3d(Plc3& plc) {
@@ -1239,34 +1255,18 @@ std::vector<std::string> drop_repeated_facets_3d(Plc3& plc) {
     };
     const Names names{plc};
     std::map<std::vector<VertIdx>, std::uint32_t> first;
-    std::string list;
-    std::size_t dropped = 0;
-    std::vector<Facet3> kept;
-    std::vector<std::uint64_t> kept_origin;
-    for (std::uint32_t f = 0; f < plc.facets.size(); ++f) {
-        const Facet3& facet = plc.facets[f];
-        const bool single = facet.polygons.size() == 1 && facet.holes.empty() &&
-                            facet.polygons[0].size() >= 3 &&
-                            std::all_of(facet.polygons[0].begin(), facet.polygons[0].end(),
-                                        [n](VertIdx v) { return v < n; });
-        if (single) {
-            const auto [it, inserted] = first.emplace(canonical(facet.polygons[0]), f);
-            if (!inserted) {
-                if (++dropped <= 10)
-                    list += (dropped == 1 ? "" : ", ") + names.facet(f) + " repeats " +
-                            names.facet(it->second);
-                continue;
-            }
-        }
-        kept.push_back(facet);
-        if (f < plc.facet_origin.size()) kept_origin.push_back(plc.facet_origin[f]);
-    }
-    if (dropped == 0) return {};
-    if (dropped > 10) list += " and " + std::to_string(dropped - 10) + " more";
-    plc.facets = std::move(kept);
-    if (!plc.facet_origin.empty()) plc.facet_origin = std::move(kept_origin);
-    return {std::to_string(dropped) + (dropped == 1 ? " facet" : " facets") +
-            " repeating an earlier one left out: " + list};
+    return drop_facets(
+        plc, "repeating an earlier one", [&](std::uint32_t f) -> std::optional<std::string> {
+            const Facet3& facet = plc.facets[f];
+            if (facet.polygons.size() != 1 || !facet.holes.empty()) return std::nullopt;
+            const std::vector<VertIdx>& polygon = facet.polygons[0];
+            if (polygon.size() < 3 ||
+                !std::all_of(polygon.begin(), polygon.end(), [n](VertIdx v) { return v < n; }))
+                return std::nullopt;
+            const auto [it, inserted] = first.emplace(canonical(polygon), f);
+            if (inserted) return std::nullopt;
+            return " repeats " + names.facet(it->second);
+        });
 }
 
 std::vector<std::string> prepare_plc_for_meshing_3d(Plc3& plc) {
