@@ -42,6 +42,14 @@ struct Domain {
     }
 };
 
+/// The check of `mesh` against `holes` fails and says `words`.
+void expect_failure(const tri::Triangulation2& mesh, const std::vector<double>& holes,
+                    const std::string& words) {
+    const tri::CheckReport report = tri::check_hull_cover_2d(mesh, holes);
+    EXPECT_FALSE(report.ok);
+    EXPECT_NE(report.problem.find(words), std::string::npos) << report.problem;
+}
+
 }  // namespace
 
 TEST(Triangulation_CheckHullCover2, TheHullLessTheHolesPassesAndEveryOtherRegionFails) {
@@ -52,31 +60,15 @@ TEST(Triangulation_CheckHullCover2, TheHullLessTheHolesPassesAndEveryOtherRegion
         // What `cdt --convex-hull` makes: passes.
         EXPECT_EQ(tri::check_hull_cover_2d(d.mesh(hole), hole).problem, "");
         // The hole region kept: its four edges bound the hull less the holes only.
-        const tri::CheckReport kept = tri::check_hull_cover_2d(d.mesh({}), hole);
-        EXPECT_FALSE(kept.ok);
-        EXPECT_NE(kept.problem.find("bounds the convex hull less the holes but not the mesh"),
-                  std::string::npos)
-            << kept.problem;
+        expect_failure(d.mesh({}), hole, "bounds the convex hull less the holes but not the mesh");
         // The small loop removed too, with no hole point of the check's inside it.
-        const tri::CheckReport removed =
-            tri::check_hull_cover_2d(d.mesh(d.points({2, 2, 0.5, 0.4})), hole);
-        EXPECT_FALSE(removed.ok);
-        EXPECT_NE(removed.problem.find("bounds the mesh but not the convex hull less the holes"),
-                  std::string::npos)
-            << removed.problem;
-        // A hole point on vertex 4, where two constrained edges end: no side.
-        const tri::CheckReport on_vertex =
-            tri::check_hull_cover_2d(d.mesh(hole), d.points({2, 2, 1, 1}));
-        EXPECT_FALSE(on_vertex.ok);
-        EXPECT_NE(on_vertex.problem.find("is vertex 4, where a constrained edge ends"),
-                  std::string::npos)
-            << on_vertex.problem;
-        // On a constrained edge: no side either.
-        const tri::CheckReport on_edge =
-            tri::check_hull_cover_2d(d.mesh(hole), d.points({2, 2, 2, 1}));
-        EXPECT_FALSE(on_edge.ok);
-        EXPECT_NE(on_edge.problem.find("lies on the constrained edge (4, 5)"), std::string::npos)
-            << on_edge.problem;
+        expect_failure(d.mesh(d.points({2, 2, 0.5, 0.4})), hole,
+                       "bounds the mesh but not the convex hull less the holes");
+        // A hole point on vertex 4, where two constrained edges end, or on a constrained edge:
+        // no side.
+        expect_failure(d.mesh(hole), d.points({2, 2, 1, 1}),
+                       "is vertex 4, where a constrained edge ends");
+        expect_failure(d.mesh(hole), d.points({2, 2, 2, 1}), "lies on the constrained edge (4, 5)");
         // On the free vertex 11: one side, the ring removed with the hole.
         const std::vector<double> ring = d.points({2, 2, 3.5, 3.5});
         EXPECT_EQ(tri::check_hull_cover_2d(d.mesh(ring), ring).problem, "");
