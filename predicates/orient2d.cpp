@@ -30,10 +30,11 @@ Expansion<4> minor_xy(const double* p, const double* q) noexcept {
 /// determinant is unchanged (it is multiplied by 2^(kx + ky)), and the filter's proof holds as
 /// it is, since proofs/gappa/orient2d_filter.g normalises each axis by its own power of two
 /// and takes the differences as rounded from the exact ones (a rounded difference that
-/// underflows is exact). Scaling down loses no bit while every nonzero value stays at least
-/// 2^-1022. std::nullopt otherwise (in range, zero, non-finite, or undecided): the stages below.
-/// Before it, six coordinates were rescaled per call (out_of_range_sign), and the quadtree's box
-/// tests of a comb scaled by 2^-600 spent 45% of their time there.
+/// underflows is exact). Scaling down loses no bit while every nonzero difference stays at
+/// least 2^-1022 (one scaled to zero counts as lost). std::nullopt otherwise (in range, zero,
+/// non-finite, or undecided): the stages below. Before it, six coordinates were rescaled per call
+/// (out_of_range_sign), and the quadtree's box tests of a comb scaled by 2^-600 spent 45% of their
+/// time there.
 std::optional<Sign> filter_scaled_per_axis(double adx, double ady, double bdx,
                                            double bdy) noexcept {
     const double maxx = std::max(std::fabs(adx), std::fabs(bdx));
@@ -43,9 +44,11 @@ std::optional<Sign> filter_scaled_per_axis(double adx, double ady, double bdx,
     if (std::min(maxx, maxy) >= orient2d_filter_min && std::max(maxx, maxy) <= orient2d_filter_max)
         return std::nullopt;  // in range: the filter has seen these already
     const PowerOfTwo x(-binary_exponent(maxx)), y(-binary_exponent(maxy));
+    const double unscaled[4] = {adx, ady, bdx, bdy};
     const double d[4] = {x(adx), y(ady), x(bdx), y(bdy)};
-    for (const double v : d) {
-        if (v != 0.0 && std::fabs(v) < 0x1p-1022) return std::nullopt;
+    for (int k = 0; k < 4; ++k) {
+        // A nonzero difference scaled below 2^-1022, or to zero, lost bits: not exact.
+        if (unscaled[k] != 0.0 && std::fabs(d[k]) < 0x1p-1022) return std::nullopt;
     }
     return orient2d_filter_differences(d[0], d[1], d[2], d[3]);
 }
