@@ -752,6 +752,35 @@ FreeVertexEmbedding3 apply_placements(Plc3& plc, const std::vector<SurfacePlacem
 
 }  // namespace
 
+namespace {
+
+/// Per vertex, the lowest-numbered vertex at the same point (exactly; -0 equals 0), itself when
+/// it is the first there: a lexicographic sort, equal points by index, then equal neighbours.
+/// @pre every coordinate finite.
+std::vector<VertIdx> first_at_same_point(const Plc3& plc) {
+    const std::uint32_t n = plc.vertex_count();
+    std::vector<VertIdx> order(n);
+    for (VertIdx v = 0; v < n; ++v) order[v] = v;
+    std::sort(order.begin(), order.end(), [&](VertIdx u, VertIdx v) {
+        const double* p = plc.point(u);
+        const double* q = plc.point(v);
+        for (int k = 0; k < 3; ++k)
+            if (p[k] != q[k]) return p[k] < q[k];
+        return u < v;
+    });
+    std::vector<VertIdx> first(n);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const VertIdx v = order[i];
+        const double* p = i == 0 ? nullptr : plc.point(order[i - 1]);
+        const double* q = plc.point(v);
+        first[v] =
+            p != nullptr && p[0] == q[0] && p[1] == q[1] && p[2] == q[2] ? first[order[i - 1]] : v;
+    }
+    return first;
+}
+
+}  // namespace
+
 void validate_plc_3d_input(const Plc3& plc) {
     const Names names{plc};
     if (plc.xyz.size() % 3 != 0) fail("PLC coordinates are not a multiple of 3 values");
@@ -802,24 +831,12 @@ void validate_plc_3d_input(const Plc3& plc) {
             }
         }
     }
-    // Duplicate points, exactly: lexicographic sort, then equal neighbours.
-    std::vector<VertIdx> order(n);
-    for (VertIdx v = 0; v < n; ++v) order[v] = v;
-    auto less = [&](VertIdx u, VertIdx v) {
-        const double* p = plc.point(u);
-        const double* q = plc.point(v);
-        if (p[0] != q[0]) return p[0] < q[0];
-        if (p[1] != q[1]) return p[1] < q[1];
-        if (p[2] != q[2]) return p[2] < q[2];
-        return u < v;
-    };
-    std::sort(order.begin(), order.end(), less);
-    for (std::size_t i = 1; i < order.size(); ++i) {
-        const double* p = plc.point(order[i - 1]);
-        const double* q = plc.point(order[i]);
-        if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) {
-            fail("vertices " + names.vertex(order[i - 1]) + " and " + names.vertex(order[i]) +
-                 " are the same point " + format_point(p, 3));
+    // Duplicate points, exactly (merge_duplicate_vertices_3d merges them first for tetmesh).
+    const std::vector<VertIdx> first = first_at_same_point(plc);
+    for (VertIdx v = 0; v < n; ++v) {
+        if (first[v] != v) {
+            fail("vertices " + names.vertex(first[v]) + " and " + names.vertex(v) +
+                 " are the same point " + format_point(plc.point(v), 3));
         }
     }
 }
@@ -1107,32 +1124,11 @@ std::vector<std::string> merge_duplicate_vertices_3d(Plc3& plc) {
         for (const std::vector<VertIdx>& polygon : facet.polygons)
             for (const VertIdx v : polygon)
                 if (v >= n) return {};
-    // Lexicographic order, equal points by index: the first of each run stands for the run.
-    std::vector<VertIdx> order(n);
-    for (VertIdx v = 0; v < n; ++v) order[v] = v;
-    const auto less = [&](VertIdx u, VertIdx v) {
-        const double* p = plc.point(u);
-        const double* q = plc.point(v);
-        for (int k = 0; k < 3; ++k)
-            if (p[k] != q[k]) return p[k] < q[k];
-        return u < v;
-    };
-    std::sort(order.begin(), order.end(), less);
-    std::vector<VertIdx> first(n);
+    const std::vector<VertIdx> first = first_at_same_point(plc);
     std::vector<std::pair<VertIdx, VertIdx>> merged;  // (input vertex, the first at its point)
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        const VertIdx v = order[i];
-        first[v] = v;
-        if (i == 0) continue;
-        const double* p = plc.point(order[i - 1]);
-        const double* q = plc.point(v);
-        if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) {
-            first[v] = first[order[i - 1]];
-            merged.emplace_back(v, first[v]);
-        }
-    }
+    for (VertIdx v = 0; v < n; ++v)
+        if (first[v] != v) merged.emplace_back(v, first[v]);
     if (merged.empty()) return {};
-    std::sort(merged.begin(), merged.end());
     // The names in the warning are the input's: taken before the numbering changes.
     const Names names{plc};
     std::string list;
