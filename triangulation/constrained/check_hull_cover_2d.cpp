@@ -106,24 +106,26 @@ CheckReport check_hull_cover_2d(const Triangulation2& mesh, std::span<const doub
         const double q[2] = {holes[2 * h], holes[2 * h + 1]};
         const TriIdx t = locator.locate(reference, q[0], q[1]);
         if (t == kNone) continue;  // outside the hull: the producer ignores it too
+        const auto hole = [&] {
+            return "hole point " + std::to_string(h + numbering.first_vertex) + " " +
+                   format_point(q);
+        };
         for (int k = 0; k < 3; ++k) {
             const VertIdx a = reference.triangles[3 * t + k];
             const VertIdx b = reference.triangles[3 * t + (k + 1) % 3];
-            const std::string hole =
-                "hole point " + std::to_string(h + numbering.first_vertex) + " " + format_point(q);
             // On a vertex a constrained edge ends at, or on a constrained edge: which side is
             // the hole is ambiguous (the producer refuses it). A free vertex has one side.
             if (reference.point(a)[0] == q[0] && reference.point(a)[1] == q[1] &&
                 constrained_end[a] != 0)
-                return fail(hole + " is vertex " + name(a) +
+                return fail(hole() + " is vertex " + name(a) +
                                 ", where a constrained edge ends: it "
                                 "names no side",
                             {a});
             if (reference.is_constrained(t, k) &&
                 predicates::orient2d(reference.point(a), reference.point(b), q) ==
                     predicates::Sign::Zero)
-                return fail(hole + " lies on the constrained edge (" + name(std::min(a, b)) + ", " +
-                                name(std::max(a, b)) + "): it names no side",
+                return fail(hole() + " lies on the constrained edge (" + name(std::min(a, b)) +
+                                ", " + name(std::max(a, b)) + "): it names no side",
                             {a, b});
         }
         if (removed[t] != 0) continue;
