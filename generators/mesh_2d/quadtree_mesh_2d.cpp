@@ -15,6 +15,7 @@
 #include <numbers>
 #include <numeric>
 #include <optional>
+#include <queue>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -817,7 +818,8 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
         }
         return shortest;
     };
-    auto bad = [&](tri::TriIdx t) {
+    // sin^2 of the smallest angle of t (the worse the smaller).
+    auto min_angle_sine2 = [&](tri::TriIdx t) {
         const double* p[3] = {mesh.point(mesh.tv[3 * t]), mesh.point(mesh.tv[3 * t + 1]),
                               mesh.point(mesh.tv[3 * t + 2])};
         // On the edge vectors scaled exactly by a power of two to a largest component in
@@ -837,20 +839,46 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
         const double area2 = edge[0][1] * edge[2][0] - edge[0][0] * edge[2][1];
         const double shortest = std::min({l2[0], l2[1], l2[2]});
         // sin^2(min angle) = l^2 area2^2 / (l0 l1 l2) (area2 = 2A; 4R^2 = l0 l1 l2 / area2^2).
-        return shortest * area2 * area2 < sine2 * l2[0] * l2[1] * l2[2];
+        return shortest * area2 * area2 / (l2[0] * l2[1] * l2[2]);
     };
-    std::vector<tri::TriIdx> work;
+    // The bad triangles, worst first, ties by their vertices: the order, and so the mesh,
+    // depend on the band's geometry only, not on how its triangulation numbered its slots (a
+    // last-in-first-out list of slots did: three-element's smallest angle moved from 24.5 to
+    // 23.0 degrees when the Delaunay insertion order changed). An entry whose slot no longer
+    // holds its vertices is stale.
+    struct Bad {
+        double sine2;
+        std::array<VertIdx, 3> v;  ///< sorted
+        tri::TriIdx t;
+        bool operator<(const Bad& o) const {  // the top is the smallest sine2, then vertices
+            return sine2 != o.sine2 ? sine2 > o.sine2 : v > o.v;
+        }
+    };
+    auto sorted_vertices = [&](tri::TriIdx t) {
+        std::array<VertIdx, 3> v = {mesh.tv[3 * t], mesh.tv[3 * t + 1], mesh.tv[3 * t + 2]};
+        std::sort(v.begin(), v.end());
+        return v;
+    };
+    std::priority_queue<Bad> work;
+    auto assess = [&](tri::TriIdx t) {
+        if (!ct.in_domain(t)) return;
+        const double q = min_angle_sine2(t);
+        if (q < sine2) work.push({q, sorted_vertices(t), t});
+    };
+    std::uint64_t in_domain = 0;
     for (tri::TriIdx t = 0; t < mesh.triangle_slots(); ++t) {
-        if (ct.in_domain(t)) work.push_back(t);
+        in_domain += ct.in_domain(t) ? 1 : 0;
+        assess(t);
     }
-    const std::uint64_t budget = 8 * std::uint64_t{work.size()} + 1024;
+    const std::uint64_t budget = 8 * in_domain + 1024;
     ct.clear_touched();
     // Refines the band (Ruppert's circumcenters, encroached boundary pieces halved).
     const auto refine = [&]() {
         while (!work.empty()) {
-            const tri::TriIdx t = work.back();
-            work.pop_back();
-            if (!ct.in_domain(t) || !bad(t)) continue;
+            const Bad top = work.top();
+            work.pop();
+            const tri::TriIdx t = top.t;
+            if (!ct.in_domain(t) || sorted_vertices(t) != top.v) continue;
             if (counters_.band_circumcenters + counters_.band_piece_splits >= budget) {
                 warnings.push_back("quadtree: the band's refinement stopped after " +
                                    std::to_string(budget) +
@@ -879,6 +907,7 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
                     if (half >= shortest && half >= 0.25 * segment_length(k))
                         split.push_back({mesh.origin(e), mesh.destination(e)});
                 }
+                std::sort(split.begin(), split.end());  // not in the cavity's slot order
                 for (const auto& [u, v] : split) {
                     const tri::EdgeIdx e = ct.find_edge(u, v);
                     if (e == tri::kNone) continue;
@@ -906,9 +935,9 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
                     ++counters_.band_piece_splits;
                 }
                 if (!split.empty()) {
-                    for (const tri::TriIdx u : ct.touched()) work.push_back(u);
+                    for (const tri::TriIdx u : ct.touched()) assess(u);
                     ct.clear_touched();
-                    work.push_back(t);
+                    assess(t);
                 }
                 continue;
             }
@@ -917,7 +946,7 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
                 continue;
             }
             ++counters_.band_circumcenters;
-            for (const tri::TriIdx u : ct.touched()) work.push_back(u);
+            for (const tri::TriIdx u : ct.touched()) assess(u);
             ct.clear_touched();
         }
     };
