@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "triangulation/mesh/spatial_sort.hpp"
+
 namespace exactmesh::triangulation {
 
 unsigned resolve_thread_count(unsigned threads) {
@@ -15,9 +17,9 @@ namespace detail {
 
 BrioRounds brio_rounds(std::uint32_t n, unsigned threads, std::uint32_t round_minimum) {
     BrioRounds rounds;
-    for (std::uint32_t end = n; end > 64; end /= 2) rounds.begin.push_back(end / 2);
-    std::reverse(rounds.begin.begin(), rounds.begin.end());
-    rounds.begin.push_back(n);
+    // The rounds after the first (random, at most 64 points): the first is the prefix's.
+    const std::vector<std::uint32_t> begin = brio_round_begins(n);
+    rounds.begin.assign(begin.begin() + 1, begin.end());
     std::size_t& first = rounds.first_parallel;
     while (first + 1 < rounds.begin.size() &&
            rounds.begin[first + 1] - rounds.begin[first] < std::uint64_t{round_minimum} * threads) {

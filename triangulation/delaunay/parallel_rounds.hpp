@@ -45,9 +45,10 @@ struct KeyRange {
     }
 };
 
-/// The BRIO rounds as insertion_order made them for n points: [n/2, n), [n/4, n/2), ... down
-/// to 64 points, each sorted by Hilbert key. Rounds of fewer than round_minimum points per
-/// thread (and the first points) are the sequential prefix; the others go to the threads.
+/// The BRIO rounds as insertion_order made them for n points (brio_round_begins: [n/8, n),
+/// [n/64, n/8), ... down to 64 points), each sorted by Hilbert key. Rounds of fewer than
+/// round_minimum points per thread (and the first points) are the sequential prefix; the others go
+/// to the threads.
 struct BrioRounds {
     std::vector<std::uint32_t> begin;  ///< round r holds mesh vertices [begin[r], begin[r + 1])
     std::size_t first_parallel = 0;    ///< the first round the threads insert

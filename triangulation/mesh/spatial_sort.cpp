@@ -261,27 +261,35 @@ std::vector<std::uint32_t> inverse_permutation(std::span<const std::uint32_t> pe
 // Each item is (key << 32 | point), the first round's key its position; with `parallel`, the
 // points are dealt in chunks (each chunk's count per round first) and the rounds sorted on the
 // arena.
+std::vector<std::uint32_t> brio_round_begins(std::uint32_t n) {
+    std::vector<std::uint32_t> ends;
+    for (std::uint32_t end = n; end > 64; end >>= kBrioRoundShift) ends.push_back(end);
+    std::vector<std::uint32_t> begin{0};
+    for (auto end = ends.rbegin(); end != ends.rend(); ++end)
+        begin.push_back(*end >> kBrioRoundShift);
+    begin.push_back(n);
+    return begin;
+}
+
 std::vector<std::uint32_t> brio_order(std::span<const std::uint32_t> keys,
                                       std::span<const std::uint32_t> position, bool parallel) {
     const std::size_t n = keys.size();
     EM_ASSERT(position.size() == n);
+    EM_ASSERT(n <= 0xFFFFFFFFu);
     // begin[r] .. begin[r + 1]: round r's positions.
-    std::vector<std::size_t> begin{0};
-    {
-        std::vector<std::size_t> ends;
-        for (std::size_t end = n; end > 64; end /= 2) ends.push_back(end);
-        for (auto end = ends.rbegin(); end != ends.rend(); ++end) begin.push_back(*end / 2);
-        begin.push_back(n);
-    }
+    const std::vector<std::uint32_t> begin = brio_round_begins(static_cast<std::uint32_t>(n));
     const std::size_t rounds = begin.size() - 1;
-    // Round r >= 1 holds the positions [n >> j, n >> (j - 1)) for j = rounds - r (begin's
-    // halvings are n >> j), round 0 those below n >> (rounds - 1). The smallest j with n >> j <=
-    // at: the bit widths of n and at give it or one less (no loop: the rounds are random, and a
-    // loop's exits were mispredicted at about every point).
+    // Round r >= 1 holds the positions [n >> 3j, n >> 3(j - 1)) for j = rounds - r, round 0
+    // those below n >> 3(rounds - 1). The smallest j with n >> 3j <= at (at < n): with d the
+    // difference of the bit widths of n and at, n >> 3j is above at when 3j < d and below when
+    // 3j > d, so j is d / 3 rounded up, or d / 3 + 1 when 3 divides d and n >> d is above at
+    // (no loop: the rounds are random, and a loop's exits were mispredicted at about every
+    // point).
+    static_assert(kBrioRoundShift == 3);
     const std::size_t last_j = rounds - 1;
     auto round_of = [n, last_j](std::size_t at) -> std::size_t {
-        std::size_t j = static_cast<std::size_t>(std::bit_width(n) - std::bit_width(at));
-        j += (n >> j) > at ? 1 : 0;
+        const auto d = static_cast<std::size_t>(std::bit_width(n) - std::bit_width(at));
+        const std::size_t j = d / 3 + (d % 3 != 0 || (n >> d) > at ? 1 : 0);
         return j > last_j ? 0 : last_j + 1 - j;
     };
     auto item = [&](std::size_t i, std::size_t r) {
@@ -345,8 +353,8 @@ std::vector<std::uint32_t> brio_order(std::span<const std::uint32_t> keys,
         }
     };
     if (parallel) {
-        // The rounds are disjoint: the largest (half the points) on one thread, the others
-        // (the other half) beside it.
+        // The rounds are disjoint: the largest (7/8 of the points) on one thread, the others
+        // beside it.
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rounds, 1),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               std::vector<std::uint64_t> scratch;

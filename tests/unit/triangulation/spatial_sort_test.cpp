@@ -88,6 +88,23 @@ TEST(Triangulation_SpatialSort, HilbertKeys3dOfALatticeWalkFromNeighbourToNeighb
     }
 }
 
+TEST(Triangulation_SpatialSort, BrioRoundsGrowByEight) {
+    for (const std::uint32_t n :
+         {0u, 1u, 64u, 65u, 519u, 520u, 1000u, 4096u, 1000000u, 0x3FFFFFFFu}) {
+        const std::vector<std::uint32_t> begin = tri::brio_round_begins(n);
+        ASSERT_GE(begin.size(), 2u) << n;
+        EXPECT_EQ(begin.front(), 0u) << n;
+        EXPECT_EQ(begin.back(), n) << n;
+        EXPECT_LE(begin.size() > 2 ? begin[1] : n, 64u) << n << ": the first round is small";
+        for (std::size_t r = 1; r + 1 < begin.size(); ++r) {
+            EXPECT_EQ(begin[r], begin[r + 1] >> 3) << n << " round " << r;
+            EXPECT_GT(begin[r + 1], 64u) << n << " round " << r;
+        }
+    }
+    EXPECT_EQ(tri::brio_round_begins(1000000u),
+              (std::vector<std::uint32_t>{0, 30, 244, 1953, 15625, 125000, 1000000}));
+}
+
 /// The BRIO order by its definition: the shuffled points' rounds (brio_rounds' cuts), each but
 /// the first sorted by key with a stable sort.
 std::vector<std::uint32_t> reference_brio(const std::vector<std::uint32_t>& keys,
@@ -105,7 +122,8 @@ std::vector<std::uint32_t> reference_brio(const std::vector<std::uint32_t>& keys
 TEST(Triangulation_SpatialSort, BrioOrderIsItsDefinitionOnAnyThreadCount) {
     tbb::task_arena arena(2);
     for (const std::uint32_t n :
-         {0u, 1u, 3u, 64u, 65u, 127u, 128u, 129u, 1000u, 65536u, 65537u, 200001u}) {
+         {0u,   1u,   3u,    64u,   65u,   127u,  128u,   129u,   511u,    512u,    513u,
+          519u, 520u, 1000u, 4095u, 4096u, 4097u, 65536u, 65537u, 200001u, 262143u, 262144u}) {
         const std::vector<double> xy = gen::generate_points_2d(gen::Distribution::Gaussian, n, 7);
         const std::vector<std::uint32_t> keys = tri::hilbert_keys_2d(xy);
         const std::vector<std::uint32_t> order =
