@@ -252,15 +252,6 @@ std::vector<std::uint32_t> inverse_permutation(std::span<const std::uint32_t> pe
     return inverse;
 }
 
-// The points are dealt to their rounds by position in input order (reading the keys in order,
-// where gathering them by the shuffled index missed the cache at every point), sorted by key
-// (stable: equal keys in input order), then each run of equal keys, and the first round, by
-// position: the order of sorting the shuffled points' rounds by key, with a stable sort,
-// exactly (frontal_delaunay_3d on the wing at size 0.08 did not finish in minutes when equal
-// keys, or the rounds, came in another order: an order-sensitive fault there, not fixed here).
-// Each item is (key << 32 | point), the first round's key its position; with `parallel`, the
-// points are dealt in chunks (each chunk's count per round first) and the rounds sorted on the
-// arena.
 std::vector<std::uint32_t> brio_round_begins(std::uint32_t n) {
     std::vector<std::uint32_t> ends;
     for (std::uint32_t end = n; end > 64; end >>= kBrioRoundShift) ends.push_back(end);
@@ -271,6 +262,15 @@ std::vector<std::uint32_t> brio_round_begins(std::uint32_t n) {
     return begin;
 }
 
+// The points are dealt to their rounds by position in input order (reading the keys in order,
+// where gathering them by the shuffled index missed the cache at every point), sorted by key
+// (stable: equal keys in input order), then each run of equal keys, and the first round, by
+// position: the order of sorting the shuffled points' rounds by key, with a stable sort,
+// exactly (frontal_delaunay_3d on the wing at size 0.08 did not finish in minutes when equal
+// keys, or the rounds, came in another order: an order-sensitive fault there, not fixed here).
+// Each item is (key << 32 | point), the first round's key its position; with `parallel`, the
+// points are dealt in chunks (each chunk's count per round first) and the rounds sorted on the
+// arena.
 std::vector<std::uint32_t> brio_order(std::span<const std::uint32_t> keys,
                                       std::span<const std::uint32_t> position, bool parallel) {
     const std::size_t n = keys.size();
