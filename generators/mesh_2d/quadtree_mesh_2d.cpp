@@ -841,17 +841,18 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
         // sin^2(min angle) = l^2 area2^2 / (l0 l1 l2) (area2 = 2A; 4R^2 = l0 l1 l2 / area2^2).
         return shortest * area2 * area2 / (l2[0] * l2[1] * l2[2]);
     };
-    // The bad triangles, worst first, ties by their vertices: the order, and so the mesh,
-    // depend on the band's geometry only, not on how its triangulation numbered its slots (a
-    // last-in-first-out list of slots did: three-element's smallest angle moved from 24.5 to
-    // 23.0 degrees when the Delaunay insertion order changed). An entry whose slot no longer
-    // holds its vertices is stale.
+    // The bad triangles, worst first, ties by their corners' coordinates (sorted): the order,
+    // and so the band's mesh, depend on its geometry only, not on how its triangulation numbered
+    // its slots or the band its vertices (a last-in-first-out list of slots did: three-element's
+    // smallest angle moved from 24.5 to 23.0 degrees when the Delaunay insertion order changed).
+    // An entry whose slot no longer holds its vertices is stale.
     struct Bad {
         double sine2;
-        std::array<VertIdx, 3> v;  ///< sorted
+        std::array<double, 6> corners;  ///< x, y of each corner, sorted
+        std::array<VertIdx, 3> v;       ///< sorted
         tri::TriIdx t;
-        bool operator<(const Bad& o) const {  // the top is the smallest sine2, then vertices
-            return sine2 != o.sine2 ? sine2 > o.sine2 : v > o.v;
+        bool operator<(const Bad& o) const {  // the top is the smallest sine2, then corners
+            return sine2 != o.sine2 ? sine2 > o.sine2 : corners > o.corners;
         }
     };
     auto sorted_vertices = [&](tri::TriIdx t) {
@@ -859,11 +860,18 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
         std::sort(v.begin(), v.end());
         return v;
     };
+    auto sorted_corners = [&](tri::TriIdx t) {
+        std::array<std::array<double, 2>, 3> c;
+        for (unsigned k = 0; k < 3; ++k)
+            c[k] = {mesh.point(mesh.tv[3 * t + k])[0], mesh.point(mesh.tv[3 * t + k])[1]};
+        std::sort(c.begin(), c.end());
+        return std::array<double, 6>{c[0][0], c[0][1], c[1][0], c[1][1], c[2][0], c[2][1]};
+    };
     std::priority_queue<Bad> work;
     auto assess = [&](tri::TriIdx t) {
         if (!ct.in_domain(t)) return;
         const double q = min_angle_sine2(t);
-        if (q < sine2) work.push({q, sorted_vertices(t), t});
+        if (q < sine2) work.push({q, sorted_corners(t), sorted_vertices(t), t});
     };
     std::uint64_t in_domain = 0;
     for (tri::TriIdx t = 0; t < mesh.triangle_slots(); ++t) {
@@ -907,7 +915,16 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
                     if (half >= shortest && half >= 0.25 * segment_length(k))
                         split.push_back({mesh.origin(e), mesh.destination(e)});
                 }
-                std::sort(split.begin(), split.end());  // not in the cavity's slot order
+                // In the order of their ends' coordinates, not the cavity's slot order.
+                const auto ends = [&](const std::array<VertIdx, 2>& e) {
+                    const double* p = mesh.point(e[0]);
+                    const double* q = mesh.point(e[1]);
+                    std::array<std::array<double, 2>, 2> pq = {{{p[0], p[1]}, {q[0], q[1]}}};
+                    std::sort(pq.begin(), pq.end());
+                    return pq;
+                };
+                std::sort(split.begin(), split.end(),
+                          [&](const auto& a, const auto& b) { return ends(a) < ends(b); });
                 for (const auto& [u, v] : split) {
                     const tri::EdgeIdx e = ct.find_edge(u, v);
                     if (e == tri::kNone) continue;
