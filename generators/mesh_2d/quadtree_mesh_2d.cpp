@@ -845,25 +845,21 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
     // and so the band's mesh, depend on its geometry only, not on how its triangulation numbered
     // its slots or the band its vertices (a last-in-first-out list of slots did: three-element's
     // smallest angle moved from 24.5 to 23.0 degrees when the Delaunay insertion order changed).
-    // An entry whose slot no longer holds its vertices is stale.
+    // An entry whose slot no longer has its corners is stale (no two vertices share a point).
     struct Bad {
         double sine2;
         std::array<double, 6> corners;  ///< x, y of each corner, sorted
-        std::array<VertIdx, 3> v;       ///< sorted
         tri::TriIdx t;
         bool operator<(const Bad& o) const {  // the top is the smallest sine2, then corners
             return sine2 != o.sine2 ? sine2 > o.sine2 : corners > o.corners;
         }
     };
-    auto sorted_vertices = [&](tri::TriIdx t) {
-        std::array<VertIdx, 3> v = {mesh.tv[3 * t], mesh.tv[3 * t + 1], mesh.tv[3 * t + 2]};
-        std::sort(v.begin(), v.end());
-        return v;
-    };
     auto sorted_corners = [&](tri::TriIdx t) {
         std::array<std::array<double, 2>, 3> c;
-        for (unsigned k = 0; k < 3; ++k)
-            c[k] = {mesh.point(mesh.tv[3 * t + k])[0], mesh.point(mesh.tv[3 * t + k])[1]};
+        for (unsigned k = 0; k < 3; ++k) {
+            const double* p = mesh.point(mesh.tv[3 * t + k]);
+            c[k] = {p[0], p[1]};
+        }
         std::sort(c.begin(), c.end());
         return std::array<double, 6>{c[0][0], c[0][1], c[1][0], c[1][1], c[2][0], c[2][1]};
     };
@@ -871,7 +867,7 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
     auto assess = [&](tri::TriIdx t) {
         if (!ct.in_domain(t)) return;
         const double q = min_angle_sine2(t);
-        if (q < sine2) work.push({q, sorted_corners(t), sorted_vertices(t), t});
+        if (q < sine2) work.push({q, sorted_corners(t), t});
     };
     std::uint64_t in_domain = 0;
     for (tri::TriIdx t = 0; t < mesh.triangle_slots(); ++t) {
@@ -886,7 +882,7 @@ tri::Cdt2Result QuadtreeMesher::triangulate_band(const tri::Pslg& band,
             const Bad top = work.top();
             work.pop();
             const tri::TriIdx t = top.t;
-            if (!ct.in_domain(t) || sorted_vertices(t) != top.v) continue;
+            if (!ct.in_domain(t) || sorted_corners(t) != top.corners) continue;
             if (counters_.band_circumcenters + counters_.band_piece_splits >= budget) {
                 warnings.push_back("quadtree: the band's refinement stopped after " +
                                    std::to_string(budget) +
