@@ -750,10 +750,6 @@ FreeVertexEmbedding3 apply_placements(Plc3& plc, const std::vector<SurfacePlacem
     return done;
 }
 
-}  // namespace
-
-namespace {
-
 /// Per vertex, the lowest-numbered vertex at the same point (exactly; -0 equals 0), itself when
 /// it is the first there: a lexicographic sort, equal points by index, then equal neighbours.
 /// @pre every coordinate finite.
